@@ -1,0 +1,47 @@
+# minseg-tui: `make run` and `make test` work on a fresh machine.
+# Both create .venv (if needed) and install the package with what it needs.
+
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed
+# AVR=0 skips the firmware cross-build (for a laptop without gcc-avr and without root).
+AVR    ?= 1
+
+.PHONY: run test lint pytest firmware firmware-host-test bench clean
+
+$(STAMP): pyproject.toml
+	@test -x $(PY) || $(PYTHON) -m venv $(VENV) || { echo "error: could not create a virtualenv with $(PYTHON) -m venv (Debian: apt-get install python3-venv)"; exit 2; }
+	$(PY) -m pip install -q --upgrade pip
+	$(PY) -m pip install -q -e '.[dev]'
+	@touch $(STAMP)
+
+run: $(STAMP)
+	$(VENV)/bin/minseg-tui $(ARGS)
+
+lint: $(STAMP)
+	$(VENV)/bin/ruff check minseg_tui tests benchmarks
+	$(VENV)/bin/lint-imports
+
+pytest: $(STAMP)
+	$(PY) -m pytest -q $(PYTEST_ARGS)
+
+firmware-host-test:
+	$(MAKE) -C firmware host-test
+
+firmware:
+ifeq ($(AVR),0)
+	@echo "AVR=0: firmware cross-build for the ATmega2560 not run"
+else
+	@sh firmware/ensure-toolchain.sh
+	$(MAKE) -C firmware
+endif
+
+test: $(STAMP) lint firmware-host-test firmware pytest
+
+bench: $(STAMP)
+	@for b in benchmarks/*.py; do echo "== $$b"; $(PY) $$b || exit 1; done
+
+clean:
+	rm -rf $(VENV) .pytest_cache .ruff_cache
+	-$(MAKE) -C firmware clean

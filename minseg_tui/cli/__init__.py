@@ -1,0 +1,74 @@
+"""The `minseg-tui` command: the TUI by default, headless subcommands beside it.
+
+Each subcommand lives in its own module with ``add_arguments(parser)`` and
+``run(args) -> int``; this table is the only place that lists them.
+Exit codes: 0 ok, 2 bad input or usage, 1 device or other failure.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import importlib.util
+import sys
+from collections.abc import Sequence
+
+from minseg_tui.errors import InputError, MinsegError
+
+SUBCOMMANDS: dict[str, tuple[str, str]] = {
+    "identify": ("minseg_tui.cli.identify", "Tasks 6-15 from a table of steady-state readings (and a step log)"),
+    "analyze": ("minseg_tui.cli.analyze", "model check: what the first-order model gets wrong in a step log"),
+    "ports": ("minseg_tui.cli.ports", "list serial ports and say which looks like a MinSeg"),
+    "sim": ("minseg_tui.cli.sim", "run a virtual MinSeg on a pseudo-terminal"),
+    "report": ("minseg_tui.cli.report", "write a session's report (Markdown, HTML, CSV)"),
+    "tui": ("minseg_tui.cli.tui", "start the lab assistant (the default)"),
+}
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that exits with 2 and one line, as every bad input does here."""
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        self.exit(2, f"{self.prog}: {message} (see {self.prog} --help)\n")
+
+
+def _available() -> dict[str, tuple[str, str]]:
+    found = {}
+    for name, (module, help_text) in SUBCOMMANDS.items():
+        if importlib.util.find_spec(module) is not None:
+            found[name] = (module, help_text)
+    return found
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The parser with every subcommand whose module exists."""
+    parser = _Parser(prog="minseg-tui", description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", parser_class=_Parser)
+    for name, (module, help_text) in _available().items():
+        p = sub.add_parser(name, help=help_text, description=help_text)
+        importlib.import_module(module).add_arguments(p)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the console script; returns the exit code."""
+    args_list = list(sys.argv[1:] if argv is None else argv)
+    available = _available()
+    if "tui" in available and (not args_list or args_list[0].startswith("-") and args_list[0] not in ("-h", "--help")):
+        args_list.insert(0, "tui")
+    parser = build_parser()
+    args = parser.parse_args(args_list)
+    if args.command is None:
+        parser.print_help()
+        return 2
+    module = importlib.import_module(available[args.command][0])
+    try:
+        return int(module.run(args))
+    except InputError as exc:
+        print(f"minseg-tui {args.command}: {exc}", file=sys.stderr)
+        return 2
+    except MinsegError as exc:
+        print(f"minseg-tui {args.command}: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 130

@@ -1,0 +1,1 @@
+"""Reports of a session: Markdown, self-contained HTML and CSV."""
