@@ -1,0 +1,28 @@
+"""The layer contract: model < signals < device < lab < ui|report < cli; no Textual below the UI."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_import_contracts_are_kept():
+    lint = Path(sys.executable).with_name("lint-imports")
+    out = subprocess.run([str(lint)], cwd=ROOT, capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert "2 kept, 0 broken" in out.stdout
+
+
+def test_core_imports_without_textual():
+    code = (
+        "import sys, importlib, pkgutil, minseg_tui\n"
+        "for m in pkgutil.walk_packages(minseg_tui.__path__, 'minseg_tui.'):\n"
+        "    if m.name.split('.')[1] in ('ui', 'cli', '__main__'):\n"
+        "        continue\n"
+        "    importlib.import_module(m.name)\n"
+        "assert not any(k == 'textual' or k.startswith('textual.') for k in sys.modules), 'textual imported'\n"
+        "print('ok')\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr
