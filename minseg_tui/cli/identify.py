@@ -1,0 +1,88 @@
+"""`minseg-tui identify TABLE.csv --R OHMS [--step LOG.csv] [--json]`: Tasks 6-15 headless."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+
+from minseg_tui.lab.files import read_step_log, read_table
+from minseg_tui.model.identify import Identification, identify
+
+
+def _ohms(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a resistance in ohm, got '{text}'") from None
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"expected a positive resistance in ohm, got '{text}'")
+    return value
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Arguments of the identify subcommand."""
+    parser.add_argument("table", metavar="TABLE.csv", help="steady-state readings: u_req,u_ss,omega_ss,i_ss (V, V, rad/s, mA)")
+    parser.add_argument("--R", dest="R", type=_ohms, required=True, metavar="OHMS", help="motor resistance measured in Task 2, ohm")
+    parser.add_argument("--step", metavar="LOG.csv", help="step log (t,u,omega,...) for K, T, J and the model (Tasks 11-15)")
+    parser.add_argument("--json", action="store_true", help="print one JSON object instead of the report")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Read the files, compute, print. InputError reaches the dispatcher (exit 2)."""
+    readings = read_table(args.table)
+    log = read_step_log(args.step) if args.step else None
+    result = identify(readings, args.R, log, source=args.table)
+    if args.json:
+        json.dump(result.to_json(), sys.stdout)
+        sys.stdout.write("\n")
+    else:
+        sys.stdout.write(render(result))
+    return 0
+
+
+def _g(x: float, digits: int = 4) -> str:
+    return f"{x:.{digits}g}"
+
+
+def render(result: Identification) -> str:
+    """The human report: the table of Tasks 4-9, then Tasks 11-15, then what the numbers show."""
+    out = [f"R = {_g(result.R)} ohm (Task 2)", ""]
+    head = ("u_req V", "u_ss V", "omega_ss rad/s", "i_ss mA", "k_v V s/rad", "f N m s/rad")
+    body = [(_g(r.reading.u_req), _g(r.reading.u_ss), _g(r.reading.omega_ss), _g(r.reading.i_ss),
+             _g(r.k_v), _g(r.f, 3)) for r in result.rows]
+    widths = [max(len(h), *(len(b[i]) for b in body)) for i, h in enumerate(head)]
+    out.append("  ".join(h.rjust(w) for h, w in zip(head, widths, strict=True)))
+    out += ["  ".join(c.rjust(w) for c, w in zip(b, widths, strict=True)) for b in body]
+    out += [
+        "",
+        f"k_v = {_g(result.k_v)} V s/rad   (Task 7, median of the rows)",
+        f"k_a = {_g(result.k_a)} N m/A     (Task 8, 0.65 k_v)",
+        f"f   = {_g(result.f, 3)} N m s/rad (Task 9, median of the rows)",
+    ]
+    s = result.step
+    if s is not None:
+        how = {"row": "the table's row", "interpolated": "interpolated in the table",
+               "extrapolated": "extrapolated from the table", "log": "the log's applied voltage"}[s.u_ss_how]
+        t63 = f"{s.T_63 * 1e3:.1f} ms" if s.T_63 is not None else "not read (the speed never reached 63 %)"
+        out += [
+            "",
+            f"Step log: {len(s.steps)} rising step(s); angle from {s.fit.angle_source}, time from {s.fit.time_source}",
+            f"omega_ss = {_g(s.omega_ss)} rad/s, u_ss = {_g(s.u_ss)} V ({how})",
+            f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V (Task 11)",
+            f"T, 63 % reading      = {t63} (Task 12, median over the rising steps)",
+            f"T, least squares     = {s.T * 1e3:.2f} ms, 95 % interval {s.T_ci[0] * 1e3:.2f} to {s.T_ci[1] * 1e3:.2f} ms",
+            "   (fit of the first-order response to every rising step, modelling the measured speed as the",
+            "    mean over each sample interval; the model uses this T)",
+            f"J = T (R f + k_v k_a) / R = {_g(s.J, 3)} kg m^2 (Task 13)",
+            "",
+            f"Model (Task 14): {_g(s.T)} w' = -w + {_g(s.K)} u_A",
+            f"At u_A = 5 V (Task 15): omega = {_g(s.K * 5.0)} rad/s",
+        ]
+    out += ["", "What the numbers show:"]
+    if result.findings:
+        out += [f"- {f.message}" for f in result.findings]
+    else:
+        out.append("- nothing unusual: the rows agree and the step fits the model.")
+    return "\n".join(out) + "\n"

@@ -1,0 +1,188 @@
+"""A recorded step log as data, and where its steps are.
+
+A step log has one row per sample: time ``t`` (s), the voltage on the motor ``u``
+(V, u_A; in force from this row's instant until the next row), the measured speed
+``omega`` (rad/s) and any other columns (``u_req`` V, ``theta`` rad, ``count``,
+``t_us`` us, ...). The files live in :mod:`minseg_tui.lab.files`; this module is the
+data and the arithmetic on it (no I/O).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+from minseg_tui.units import COUNTS_PER_REV
+
+FloatArray = NDArray[np.float64]
+
+
+@dataclass(frozen=True, eq=False)
+class StepLog:
+    """One recorded run.
+
+    t: sample times in s (strictly increasing); u: voltage applied to the motor (u_A) in V,
+    in force from each row's instant on; omega: measured speed in rad/s (as recorded, for
+    instance the mean speed over the previous sample interval); extra: the other columns by
+    name (numbers as float or int arrays, text as str arrays); metadata: ``# key: value``
+    comment lines; source: where it came from (a file name, for messages); lines: the file
+    line (1-based) of each row, or None when the log was not read from a file.
+    """
+
+    t: FloatArray
+    u: FloatArray
+    omega: FloatArray
+    extra: Mapping[str, NDArray] = field(default_factory=dict)
+    metadata: Mapping[str, str] = field(default_factory=dict)
+    source: str = ""
+    lines: NDArray[np.int64] | None = None
+
+    def __post_init__(self) -> None:
+        n = len(self.t)
+        sizes = {"u": len(self.u), "omega": len(self.omega)}
+        sizes.update({k: len(v) for k, v in self.extra.items()})
+        if self.lines is not None:
+            sizes["lines"] = len(self.lines)
+        wrong = {k: v for k, v in sizes.items() if v != n}
+        if wrong:
+            raise ValueError(f"columns differ in length from t ({n}): {wrong}")
+
+    def __len__(self) -> int:
+        return len(self.t)
+
+    @property
+    def columns(self) -> list[str]:
+        """Column names in file order: t, u, omega, then the extra columns."""
+        return ["t", "u", "omega", *self.extra]
+
+    def column(self, name: str) -> NDArray:
+        """A column by name (t, u, omega or an extra one); KeyError if absent."""
+        if name in ("t", "u", "omega"):
+            return getattr(self, name)
+        return self.extra[name]
+
+    def line_of(self, row: int) -> int | None:
+        """File line (1-based) of row ``row`` (0-based), or None without a file."""
+        if self.lines is None or not len(self.lines):
+            return None
+        return int(self.lines[min(max(row, 0), len(self.lines) - 1)])
+
+    @property
+    def ts(self) -> float:
+        """Median sample period in s."""
+        return float(np.median(np.diff(self.t))) if len(self.t) > 1 else float("nan")
+
+    @property
+    def cpr(self) -> int:
+        """Encoder counts per wheel revolution: metadata ``cpr`` if given, else 720."""
+        try:
+            return int(self.metadata.get("cpr", COUNTS_PER_REV))
+        except ValueError:
+            return COUNTS_PER_REV
+
+    def board_time(self) -> FloatArray:
+        """Sample times in s on the board's clock: from ``t_us`` when the log has it.
+
+        ``t_us`` is the board's micros() (uint32, wraps after 71.6 min); it is unwrapped and
+        placed so that the first row keeps its ``t``. Without ``t_us`` this is ``t``.
+        """
+        if "t_us" not in self.extra:
+            return np.asarray(self.t, dtype=float)
+        us = np.asarray(self.extra["t_us"], dtype=np.float64)
+        d = np.mod(np.diff(us), 2.0**32)
+        return float(self.t[0]) + np.concatenate(([0.0], np.cumsum(d))) * 1e-6
+
+    def angle(self) -> tuple[FloatArray, str]:
+        """The wheel angle in rad at each row, and a sentence saying where it came from.
+
+        From ``theta`` if present, else from ``count`` (``cpr`` counts per revolution), else
+        rebuilt from ``omega`` read as the mean speed over each sample interval (the Euler
+        velocity): theta_k = theta_k-1 + omega_k (t_k - t_k-1).
+        """
+        if "theta" in self.extra and self.extra["theta"].dtype.kind in "fi":
+            return np.asarray(self.extra["theta"], dtype=float), "the theta column"
+        if "count" in self.extra and self.extra["count"].dtype.kind in "fi":
+            th = np.asarray(self.extra["count"], dtype=float) * (2.0 * np.pi / self.cpr)
+            return th, "the encoder count"
+        t = self.board_time()
+        dth = np.concatenate(([0.0], np.asarray(self.omega[1:], float) * np.diff(t)))
+        return np.cumsum(dth), "the omega column read as the mean speed over each sample interval"
+
+
+@dataclass(frozen=True)
+class Edge:
+    """A step in the command: rows ``start``..``end`` (0-based) carry the change.
+
+    ``start`` is the first row at the new level (the step happens at t[start]); before and
+    after are the levels in V on either side; rising when after > before.
+    """
+
+    start: int
+    end: int
+    before: float
+    after: float
+
+    @property
+    def rising(self) -> bool:
+        """True for a step up."""
+        return self.after > self.before
+
+
+MIN_STEP_V: float = 0.05
+"""Smallest change of the command, in V, that counts as a step."""
+
+
+def _changes(v: FloatArray, small: float) -> list[tuple[int, int]]:
+    """Runs (first, last) of rows whose change from the previous row exceeds ``small``,
+    grouping consecutive changes of the same sign."""
+    d = np.diff(v)
+    runs: list[tuple[int, int]] = []
+    k = 0
+    while k < d.size:
+        if abs(d[k]) > small:
+            j = k
+            while j + 1 < d.size and abs(d[j + 1]) > small and np.sign(d[j + 1]) == np.sign(d[k]):
+                j += 1
+            runs.append((k + 1, j + 1))
+            k = j + 1
+        else:
+            k += 1
+    return runs
+
+
+def find_edges(u: FloatArray) -> list[Edge]:
+    """Steps in a command ``u`` (V): changes of at least 30 % of its range (and 0.05 V),
+    done within a few rows. A ramp or noise is not a step."""
+    v = np.asarray(u, dtype=float)
+    if v.size < 2:
+        return []
+    span = float(np.max(v) - np.min(v))
+    if span < MIN_STEP_V:
+        return []
+    edges = []
+    for first, last in _changes(v, 0.1 * span):
+        before, after = float(v[first - 1]), float(v[last])
+        if abs(after - before) >= max(0.3 * span, MIN_STEP_V) and last - first < 3:
+            edges.append(Edge(first, last, before, after))
+    return edges
+
+
+def segment_end(u: FloatArray, edge: Edge) -> int:
+    """Last row (0-based, inclusive) at the level the edge reached: the row before the
+    command first departs from that level by more than 3 % of its range, or the last row.
+    (A level, not a per-row change: at a coasting stop the motor voltage slides away.)"""
+    v = np.asarray(u, dtype=float)
+    span = float(np.max(v) - np.min(v))
+    away = np.flatnonzero(np.abs(v[edge.end :] - edge.after) > 0.03 * span)
+    return edge.end + int(away[0]) - 1 if away.size else v.size - 1
+
+
+def command(log: StepLog) -> tuple[FloatArray, str]:
+    """The column whose steps define the experiment: ``u_req`` when the log has it (clean
+    even when the motor coasts), else ``u``; and its name."""
+    if "u_req" in log.extra and log.extra["u_req"].dtype.kind in "fi":
+        return np.asarray(log.extra["u_req"], dtype=float), "u_req"
+    return np.asarray(log.u, dtype=float), "u"

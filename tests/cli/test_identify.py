@@ -1,0 +1,118 @@
+"""`minseg-tui identify` end to end, with real files."""
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from minseg_tui.cli import main
+from minseg_tui.lab.files import write_step_log
+from minseg_tui.model.motor import MotorParams
+from minseg_tui.model.plant import PlantParams, record, square_wave
+from minseg_tui.model.steps import StepLog
+from minseg_tui.signals import timestamp_velocity
+
+MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.325, f=6e-4, J=1.3e-3)
+T_TRUE = 5.0 * 1.3e-3 / (5.0 * 6e-4 + 0.5 * 0.325)
+TABLE = "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,3.6,30\n3.5,3.05,5.5,35\n4.5,4.0,7.2,40\n"
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory):
+    d = tmp_path_factory.mktemp("identify")
+    (d / "table.csv").write_text(TABLE)
+    params = PlantParams(motor=MOTOR, tau_c=0.0, v_drop=0.5)
+    rec = record(params, square_wave(0.0, 4.5, 40, 3, lead=20), ts=0.025, seed=7, jitter_us=2000)
+    log = StepLog(t=rec.t, u=rec.u_A, omega=timestamp_velocity(rec.t, rec.count),
+                  extra={"u_req": rec.u_req, "count": rec.count, "t_us": rec.t_us})
+    write_step_log(d / "log.csv", log, {"source": "plant, seed 7"})
+    return d
+
+
+def test_human_report(files, capsys):
+    code = main(["identify", str(files / "table.csv"), "--R", "5", "--step", str(files / "log.csv")])
+    out = capsys.readouterr().out
+    assert code == 0
+    kv = sorted([(2.1 - 0.15) / 3.6, (3.05 - 0.175) / 5.5, (4.0 - 0.2) / 7.2])[1]
+    assert f"k_v = {kv:.4g} V s/rad" in out
+    assert f"k_a = {0.65 * kv:.4g} N m/A" in out
+    for text in ("u_req V", "T, 63 % reading", "T, least squares", "95 % interval", "the model uses this T",
+                 "J = T (R f + k_v k_a) / R", "w' = -w +", "At u_A = 5 V", "What the numbers show:",
+                 "dry (Coulomb) friction"):
+        assert text in out
+
+
+def test_json_is_one_object_with_the_contract(files, capsys):
+    code = main(["identify", str(files / "table.csv"), "--R", "5", "--step", str(files / "log.csv"), "--json"])
+    out = capsys.readouterr().out
+    assert code == 0 and out.count("\n") == 1
+    j = json.loads(out)
+    assert set(j) == {"R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"}
+    assert set(j["step"]) == {"K", "T", "T_63", "T_ci", "J", "omega_ss"}
+    assert set(j["model"]) == {"T", "K"}
+    assert [set(r) for r in j["rows"]] == [{"u_req", "u_ss", "omega_ss", "i_ss", "k_v", "f"}] * 3
+    assert j["rows"][2]["i_ss"] == 40.0
+    assert j["R"] == 5.0
+    lo, hi = j["step"]["T_ci"]
+    assert lo < j["step"]["T"] < hi and lo < T_TRUE < hi
+    # the table's 4.5 V row says u_ss = 4.0 V: K = omega_ss / 4.0
+    assert j["step"]["K"] == pytest.approx(j["step"]["omega_ss"] / 4.0, rel=1e-12)
+    assert j["omega_at_5V"] == pytest.approx(5 * j["step"]["K"], rel=1e-12)
+
+
+def test_json_without_step(files, capsys):
+    assert main(["identify", str(files / "table.csv"), "--R", "5.3", "--json"]) == 0
+    assert set(json.loads(capsys.readouterr().out)) == {"R", "rows", "k_v", "k_a", "f"}
+
+
+BAD = [
+    ("table.csv", "", [], "table.csv:", "file is empty"),
+    ("table.csv", "u_req,u_ss,omega_ss\n2.5,2,3\n", [], "table.csv:1:", "expected a column i_ss"),
+    ("table.csv", "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,x,30\n", [], "table.csv:2:", "got 'x'"),
+    ("table.csv", "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,3.6,30\n3.5,3,0,35\n", [], "table.csv:3:", "omega_ss > 0"),
+    ("log.csv", "", ["--step"], "log.csv:", "file is empty"),
+    ("log.csv", "t,u\n0,0\n0.1,4\n", ["--step"], "log.csv:1:", "expected a column omega"),
+    ("log.csv", "t,u,omega\n0,0,0\n0.025,4,nan\n", ["--step"], "log.csv:3:", "got 'nan'"),
+    ("log.csv", "t,u,omega\n0,0,0\n0.05,4,1\n0.04,4,1\n", ["--step"], "log.csv:4:", "expected t (s) to increase"),
+    ("log.csv", "t,u,omega\n0,4,0\n0.025,4,1\n", ["--step"], "log.csv:2:", "expected a step"),
+    ("log.csv", "t,u,omega\n0,4,0\n0.025,0,1\n0.05,0,1\n", ["--step"], "log.csv:2:", "expected a rising step"),
+]
+
+
+@pytest.mark.parametrize(("name", "text", "flag", "where", "what"), BAD)
+def test_bad_input_exits_2_with_one_line(tmp_path, capsys, name, text, flag, where, what):
+    (tmp_path / "table.csv").write_text(TABLE)
+    bad = tmp_path / name
+    bad.write_text(text)
+    args = ["identify", str(tmp_path / "table.csv"), "--R", "5"] + ([*flag, str(bad)] if flag else [])
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert err.startswith(f"minseg-tui identify: {tmp_path / where}"), err
+    assert what in err
+
+
+@pytest.mark.parametrize("R", ["0", "-5", "abc", "nan"])
+def test_bad_R_exits_2(files, capsys, R):
+    with pytest.raises(SystemExit) as exc:
+        main(["identify", str(files / "table.csv"), f"--R={R}"])
+    assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "resistance in ohm" in err
+
+
+def test_console_script(files):
+    exe = Path(sys.executable).with_name("minseg-tui")
+    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "minseg_tui"]
+    ok = subprocess.run([*cmd, "identify", str(files / "table.csv"), "--R", "5", "--step", str(files / "log.csv"), "--json"],
+                        capture_output=True, text=True, timeout=60, env={**os.environ, "PYTHONWARNINGS": "error"})
+    assert ok.returncode == 0, ok.stderr
+    assert np.isfinite(json.loads(ok.stdout)["step"]["T"])
+    bad = subprocess.run([*cmd, "identify", str(files / "missing.csv"), "--R", "5"], capture_output=True, text=True, timeout=60)
+    assert bad.returncode == 2 and bad.stdout == ""
+    assert bad.stderr.strip().endswith("missing.csv: cannot read the file (No such file or directory)")
+    assert "Traceback" not in bad.stderr
