@@ -1,0 +1,77 @@
+// Protocol version 1 (firmware/PROTOCOL.md): framing, checksums, number
+// formatting, the line assembler and the command parser.
+// Board-independent: no Arduino or AVR headers, no dynamic memory.
+#ifndef MINSEG_PROTOCOL_H
+#define MINSEG_PROTOCOL_H
+
+#include <stdint.h>
+
+namespace minseg {
+
+static const uint8_t kProtoVersion = 1;
+static const uint8_t kMaxLine = 80;  // longest accepted line, without "\r\n"
+
+// XOR of n bytes: the frame checksum (bytes between '$' and '*').
+uint8_t checksum(const char* s, uint8_t n);
+
+// Decimal text of v into out (no terminator); returns the number of bytes.
+uint8_t format_u32(uint32_t v, char* out);
+uint8_t format_i32(int32_t v, char* out);
+
+// Builds one board line: $NAME,field,...*CS\n. Capacity fits every line the
+// board sends (the longest, $ID, is about 60 bytes).
+class LineWriter {
+ public:
+  static const uint8_t kCap = 88;
+  explicit LineWriter(const char* name);
+  LineWriter& str(const char* s);
+  LineWriter& u32(uint32_t v);
+  LineWriter& i32(int32_t v);
+  // Appends *CS\n; returns the finished line (not NUL-terminated: use len()).
+  const char* finish();
+  uint8_t len() const { return n_; }
+
+ private:
+  void put(char c);
+  char buf_[kCap];
+  uint8_t n_;
+};
+
+// Collects bytes into lines. A '\r' just before '\n' is dropped; a line of
+// more than kMaxLine bytes is discarded whole and reported once at its '\n'.
+class LineAssembler {
+ public:
+  enum Status { kNone, kLine, kOverlong };
+  LineAssembler() : n_(0), overlong_(false), ready_(false) {}
+  Status feed(char c);
+  const char* line() const { return buf_; }  // valid after kLine
+  uint8_t len() const { return n_; }
+
+ private:
+  char buf_[kMaxLine + 2];
+  uint8_t n_;
+  bool overlong_;
+  bool ready_;
+};
+
+enum Err { kOk = 0, kErrChecksum, kErrUnknown, kErrArgs, kErrRange, kErrBusy, kIgnore };
+const char* err_name(Err e);
+
+enum CmdId { kId, kPing, kV, kStep, kStop, kP, kZ, kSup, kZm, kStream, kCmdCount };
+const char* cmd_name(CmdId c);
+
+struct Command {
+  CmdId id;
+  uint8_t nargs;
+  int32_t arg[4];  // ZM: arg[0] = 1 for BRAKE, 0 for COAST; STREAM: 0 or 1
+};
+
+// Parses one host line (without '\n'). Returns kOk and fills cmd, or an
+// error. On kErrArgs/kErrRange/kErrUnknown, detail receives the command name
+// when it is a well-formed name (else ""); detail must hold 12 bytes.
+// An empty line gives kIgnore.
+Err parse_command(const char* line, uint8_t len, Command* cmd, char* detail);
+
+}  // namespace minseg
+
+#endif
