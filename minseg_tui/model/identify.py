@@ -39,7 +39,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy import optimize, stats
 
 from minseg_tui.errors import InputError
 from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
@@ -347,6 +346,8 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
     rss = np.array([prob.solve(T)[0] for T in grid])
     i = int(np.argmin(rss))
     a, b = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
+    from scipy import optimize  # imported here: scipy costs ~0.5 s at start-up
+
     res = optimize.minimize_scalar(lambda x: prob.solve(math.exp(x))[0], bounds=(math.log(a), math.log(b)),
                                    method="bounded", options={"xatol": 1e-7})
     T = math.exp(float(res.x))
@@ -355,6 +356,8 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
     sigma = math.sqrt(rss_min / dof)
     info = prob.info_T(T, coefs)
     se = sigma / math.sqrt(info) if info > 0 else math.inf
+    from scipy import stats
+
     q = float(stats.t.ppf(0.975, dof))
     return TimeConstantFit(
         T=T, ci=(max(T - q * se, 0.0), T + q * se), se=se, sigma=sigma, n_rows=prob.n,

@@ -1,0 +1,204 @@
+"""What a real log has that no cause explains: wild samples, creep, late steps, gaps.
+
+Each is reported for what it is, never forced into a cause:
+
+- a wild sample (a misread count): the whitened residual has one isolated spike (the
+  angle is wrong at one sample and right again at the next); it is repaired in the
+  measured speed before fitting, so it cannot decide the finding;
+- a slow creep after the rise: in the settled part of the driven stretches the residual
+  keeps growing, the same way in most of them;
+- a step that starts between samples: the response to one edge is shifted in time
+  against the others;
+- gaps in the sample times, and a log that starts with the wheel turning.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from minseg_tui.model.check.fit import whiten
+
+FloatArray = NDArray[np.float64]
+
+SPIKE_SIGMAS = 8.0
+"""A wild sample stands out of the whitened residual by this many robust sigmas..."""
+
+SPIKE_ISOLATION = 3.0
+"""...and is this many times larger than its neighbours there."""
+
+
+@dataclass(frozen=True)
+class Anomaly:
+    """One thing the log shows that is not a model effect: kind, row (0-based, or None),
+    time (s, or None), size (in ``unit``) and a sentence for a student."""
+
+    kind: str
+    row: int | None
+    t: float | None
+    size: float
+    unit: str
+    text: str
+
+    def to_dict(self) -> dict[str, object]:
+        return {"kind": self.kind, "row": self.row, "t": self.t, "size": self.size,
+                "unit": self.unit, "text": self.text}
+
+
+def robust_sigma(x: FloatArray) -> float:
+    """1.4826 times the median absolute deviation (a standard deviation that ignores outliers)."""
+    if x.size == 0:
+        return 0.0
+    return float(1.4826 * np.median(np.abs(x - np.median(x))))
+
+
+def find_wild(residual: FloatArray, taps: int, most: int = 10) -> list[int]:
+    """Rows where the measured angle is wild for one sample (isolated whitened spikes).
+
+    The largest spike is taken out first (its leaky tail with it), then the next, so a
+    tail is never mistaken for a second wild sample.
+    """
+    r = np.asarray(residual, dtype=float).copy()
+    e = whiten(r, taps)
+    s = robust_sigma(e)
+    rows: list[int] = []
+    if s <= 0:
+        return rows
+    while len(rows) < most:
+        e = whiten(r, taps)
+        order = np.argsort(-np.abs(e))
+        hit = None
+        for k in order[:20].tolist():
+            if abs(e[k]) <= SPIKE_SIGMAS * s:
+                break
+            nb = [abs(e[j]) for j in (k - 1, k + 1) if 0 <= j < e.size]
+            if not nb or abs(e[k]) > SPIKE_ISOLATION * max(nb):
+                hit = k
+                break
+        if hit is None:
+            break
+        rows.append(hit)
+        r[hit] -= e[hit]
+        if hit + taps < r.size:
+            r[hit + taps] += e[hit]
+    return sorted(rows)
+
+
+def repair(y: FloatArray, residual: FloatArray, rows: list[int], taps: int) -> FloatArray:
+    """The measured speed with wild angles taken out: at row m the angle is off by the
+    whitened residual e_m, which moved the speed up at m and down at m + taps."""
+    e = whiten(residual, taps)
+    out = y.copy()
+    for m in rows:
+        out[m] -= e[m]
+        if m + taps < out.size:
+            out[m + taps] += e[m]
+    return out
+
+
+def wild_anomalies(t: FloatArray, y: FloatArray, residual: FloatArray, rows: list[int],
+                   taps: int) -> list[Anomaly]:
+    """Sentences for the wild rows found."""
+    e = whiten(residual, taps)
+    out = []
+    for m in rows:
+        out.append(Anomaly(
+            "wild_sample", m, float(t[m]), float(e[m]), "rad/s",
+            f"row {m} (t = {t[m]:.3f} s): the speed jumps by {e[m]:+.2f} rad/s for one sample "
+            "and straight back, as a misread encoder count does; it was left out of the fit",
+        ))
+    return out
+
+
+def creep(t: FloatArray, u: FloatArray, residual: FloatArray, pred: FloatArray, T: float,
+          ts: float) -> Anomaly | None:
+    """A slow creep of the speed in the settled part of the driven stretches, if clear."""
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    bounds = np.concatenate(([0], change, [u.size]))
+    settle = max(3, int(np.ceil(5 * T / ts)) + 1)
+    slopes, rel, tstat = [], [], []
+    noise = robust_sigma(np.diff(residual)) / np.sqrt(2.0)
+    for a, b in zip(bounds[:-1], bounds[1:], strict=True):
+        if u[a] == 0 or b - a - settle < 12:
+            continue
+        rows = np.arange(a + settle, b)
+        tt = t[rows] - t[rows].mean()
+        slope = float(np.dot(tt, residual[rows]) / np.dot(tt, tt))
+        level = float(np.mean(np.abs(pred[rows])))
+        if level <= 0:
+            continue
+        slopes.append(slope * np.sign(u[a]))
+        rel.append(slope * np.sign(u[a]) * (t[rows[-1]] - t[rows[0]]) / level)
+        tstat.append(abs(slope) * np.sqrt(np.dot(tt, tt)) / noise if noise > 0 else np.inf)
+    if not slopes:
+        return None
+    s = np.asarray(slopes)
+    r = np.asarray(rel)
+    same = max(np.mean(s > 0), np.mean(s < 0))
+    mean_rel = float(np.mean(r))
+    if r.size >= 3:
+        sure = abs(mean_rel) > 3 * float(np.std(r, ddof=1) / np.sqrt(r.size))
+    else:
+        sure = min(tstat) > 5.0
+    if same >= 0.75 and abs(mean_rel) >= 0.02 and sure:
+        word = "creeps up" if mean_rel > 0 else "sags"
+        return Anomaly(
+            "creep", None, None, 100 * mean_rel, "%",
+            f"after each step has settled the speed still {word} by about {abs(100 * mean_rel):.1f} % "
+            "over the rest of the step (warming up, a battery or a load that changes); "
+            "no first-order model does that, so it is not counted as a cause",
+        )
+    return None
+
+
+def late_steps(t: FloatArray, u: FloatArray, residual: FloatArray, d_shift: FloatArray,
+               shift: float, ts: float) -> list[Anomaly]:
+    """Edges whose response is shifted in time against the others (a step between samples).
+
+    ``d_shift`` is the change of the prediction when every edge is ``shift`` s later; per
+    edge the residual's projection on it (over the next few rows) estimates that edge's
+    own shift.
+    """
+    edges = np.flatnonzero(np.diff(u) != 0) + 1
+    if edges.size < 3:
+        return []
+    est, strength = [], []
+    for e in edges.tolist():
+        rows = np.arange(e, min(e + 6, u.size))
+        den = float(np.dot(d_shift[rows], d_shift[rows]))
+        if den <= 0:
+            est.append(0.0)
+            strength.append(0.0)
+            continue
+        est.append(shift * float(np.dot(d_shift[rows], residual[rows])) / den)
+        strength.append(np.sqrt(den))
+    x = np.asarray(est)
+    med = float(np.median(x))
+    noise = robust_sigma(np.diff(residual)) / np.sqrt(2.0)
+    out = []
+    for e, dx, st in zip(edges.tolist(), x.tolist(), strength, strict=True):
+        off = dx - med
+        # the shift must be a good part of a sample and well above what the noise allows
+        if abs(off) > 0.25 * ts and abs(off) / shift * st > 6 * noise:
+            out.append(Anomaly(
+                "late_step", int(e), float(t[e]), 1e3 * off, "ms",
+                f"the step at row {e} (t = {t[e]:.3f} s) acts about {1e3 * off:+.0f} ms "
+                "from its sample time compared with the others: it started between samples",
+            ))
+    return out
+
+
+def gaps(t: FloatArray, ts: float) -> Anomaly | None:
+    """Sample intervals longer than 1.5 nominal periods (lost samples), if any."""
+    dt = np.diff(t)
+    bad = np.flatnonzero(dt > 1.5 * ts)
+    if bad.size == 0:
+        return None
+    k = int(bad[np.argmax(dt[bad])])
+    return Anomaly(
+        "gap", k + 1, float(t[k + 1]), float(1e3 * dt[k]), "ms",
+        f"{bad.size} gap(s) in the sample times, the longest {1e3 * dt[k]:.0f} ms before row {k + 1} "
+        f"(nominal {1e3 * ts:.1f} ms): samples were lost; the simulation uses the real times",
+    )

@@ -1,0 +1,65 @@
+"""Where a model's simulation deviates: after rising edges, after falling edges, steady state."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+
+REGIONS: tuple[str, ...] = ("after_rising_edges", "after_falling_edges", "steady_state")
+
+
+@dataclass(frozen=True)
+class Deviation:
+    """The residual (measured - simulated, rad/s) in one region: rows, rms and mean."""
+
+    region: str
+    rows: int
+    rms: float
+    mean: float
+
+    def to_dict(self) -> dict[str, object]:
+        return {"region": self.region, "rows": self.rows, "rms": self.rms, "mean": self.mean}
+
+
+def regions(u: FloatArray, T: float, ts: float) -> NDArray[np.int64]:
+    """Region index per row: 0 within 4 T (at least 4 samples) after a rise of |u|,
+    1 after a fall, 2 elsewhere."""
+    out = np.full(u.size, 2, dtype=np.int64)
+    width = max(4, int(np.ceil(4 * T / ts)))
+    for e in (np.flatnonzero(np.diff(u) != 0) + 1).tolist():
+        kind = 0 if abs(u[e]) > abs(u[e - 1]) else 1
+        out[e + 1 : e + 1 + width] = kind
+    return out
+
+
+def deviations(u: FloatArray, residual: FloatArray, T: float, ts: float,
+               keep: NDArray[np.bool_] | None = None) -> list[Deviation]:
+    """The residual summarised per region (rows where ``keep`` is False and regions with no
+    rows are left out)."""
+    reg = regions(u, T, ts)
+    if keep is not None:
+        reg = np.where(keep, reg, -1)
+    out = []
+    for i, name in enumerate(REGIONS):
+        r = residual[reg == i]
+        if r.size:
+            out.append(Deviation(name, int(r.size), float(np.sqrt(np.mean(r * r))), float(np.mean(r))))
+    return out
+
+
+def describe(devs: list[Deviation]) -> str:
+    """One sentence: where the model is worst, against the steady state."""
+    if not devs:
+        return "no rows to compare"
+    worst = max(devs, key=lambda d: d.rms)
+    steady = next((d for d in devs if d.region == "steady_state"), None)
+    words = worst.region.replace("_", " ")
+    if steady is None or worst is steady:
+        return f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
+    ratio = worst.rms / steady.rms if steady.rms > 0 else float("inf")
+    return (f"the model is worst {words}: rms {worst.rms:.3f} rad/s there against "
+            f"{steady.rms:.3f} rad/s in steady state ({ratio:.1f}x)")

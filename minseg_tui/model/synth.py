@@ -1,0 +1,216 @@
+"""Realistic step logs with one hidden effect, for tests, benchmarks and a practice mode.
+
+A log is what a MinSeg board records while a square wave of requested voltages drives
+the motor: Ts = 0.025 s, the encoder's integer counts (720 per revolution), loop jitter
+of the sample instants, the Euler velocity (theta_k - theta_k-1)/Ts with the nominal Ts
+(or the lab's moving average of it). The plant is :func:`minseg_tui.model.plant.record`
+with the effect's :class:`PlantParams`; everything else in it is first order.
+
+Effects (the model check's cause names) and the range a parameter is drawn from:
+
+=================  ======  ===========  ===========================================
+cause              param   range        how it is made
+=================  ======  ===========  ===========================================
+none               -       -            no dry friction, brake at zero command
+coulomb_friction   u_c     0.1-0.4 V    tau_c = u_c k_a / R
+dead_time          delay   10-60 ms     PlantParams.dead_time
+velocity_filter    taps    3-20         omega is the moving average of N Euler values
+coast_on_zero      T_coast 0.3-3 s      zero_mode coast, f = J / T_coast
+second_pole        T2      10-40 ms     PlantParams.T2
+=================  ======  ===========  ===========================================
+
+Messiness a real log has, each optional: one wild sample (a misread count), a slow
+creep of the speed after each rise, one step whose command reaches the motor between
+two samples. Everything random comes from one seeded generator.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+from numpy.typing import NDArray
+
+from minseg_tui.model.plant import Plant, PlantParams, record
+
+TS = 0.025
+"""The board's sample period, s."""
+
+PARAM_RANGES: dict[str, tuple[str, float, float]] = {
+    "coulomb_friction": ("u_c", 0.1, 0.4),
+    "dead_time": ("delay", 0.010, 0.060),
+    "velocity_filter": ("taps", 3, 20),
+    "coast_on_zero": ("T_coast", 0.3, 3.0),
+    "second_pole": ("T2", 0.010, 0.040),
+}
+"""Cause -> (parameter name, low, high): the realistic range a hidden effect is drawn from."""
+
+CAUSES: tuple[str, ...] = ("none", *PARAM_RANGES)
+
+
+@dataclass(frozen=True)
+class SynthLog:
+    """A generated step log and the truth behind it.
+
+    t: board time, s; u: voltage applied to the motor (u_A as the board reports it), V;
+    omega: measured speed, rad/s; count: encoder counts; u_req: requested voltage, V;
+    omega_true: true wheel speed at each sample, rad/s; cause and param: the hidden
+    effect (param None for ``none``); ts: nominal sample period, s; taps: the velocity
+    filter's length (1 for the plain Euler velocity); wild_row, late_step_row, creep:
+    the messiness put in (None/0 when absent).
+    """
+
+    t: NDArray[np.float64]
+    u: NDArray[np.float64]
+    omega: NDArray[np.float64]
+    count: NDArray[np.int64]
+    u_req: NDArray[np.float64]
+    omega_true: NDArray[np.float64]
+    cause: str
+    param: float | None
+    ts: float = TS
+    taps: int = 1
+    wild_row: int | None = None
+    late_step_row: int | None = None
+    creep: float = 0.0
+
+
+def commands(
+    rng: np.random.Generator,
+    amplitudes: tuple[float, ...],
+    duration: float,
+    ts: float = TS,
+    half_period: float = 1.0,
+    lead: float = 0.25,
+) -> NDArray[np.float64]:
+    """Requested voltage per sample (V): rest, then steps 0 -> A -> 0 with A drawn from ``amplitudes``."""
+    n = int(round(duration / ts))
+    out = np.zeros(n)
+    k = int(round(lead / ts))
+    half = max(2, int(round(half_period / ts)))
+    while k < n:
+        out[k : k + half] = float(rng.choice(amplitudes))
+        k += 2 * half
+    return out
+
+
+def plant_for(cause: str, param: float | None) -> PlantParams:
+    """The plant that hides ``cause`` with parameter ``param`` (and nothing else)."""
+    base = PlantParams(tau_c=0.0, v_drop=0.45, v_supply=5.0, zero_mode="brake")
+    m = base.motor
+    if cause in ("none", "velocity_filter"):
+        return base
+    if param is None:
+        raise ValueError(f"{cause} needs a parameter")
+    if cause == "coulomb_friction":
+        return replace(base, tau_c=param * m.k_a / m.R)
+    if cause == "dead_time":
+        return replace(base, dead_time=param)
+    if cause == "second_pole":
+        return replace(base, T2=param)
+    if cause == "coast_on_zero":
+        return replace(base, zero_mode="coast", motor=replace(m, f=m.J / param))
+    raise ValueError(f"unknown cause {cause!r}")
+
+
+def make_log(
+    cause: str = "none",
+    param: float | None = None,
+    seed: int = 0,
+    duration: float = 20.0,
+    amplitudes: tuple[float, ...] = (2.0, 3.0, 4.0),
+    jitter_us: float = 300.0,
+    wild: bool = False,
+    creep: float = 0.0,
+    late_step: bool = False,
+    half_period: float = 1.0,
+) -> SynthLog:
+    """A realistic log with ``cause`` hidden in it (param drawn from its range when None).
+
+    ``wild``: one count misread by 15-60 counts in a steady stretch; ``creep``: the speed
+    creeps up by this fraction (e.g. 0.05) over about a second after each rise; ``late_step``:
+    one step's command reaches the motor 30-70 % of a sample period after its sample.
+    """
+    if cause not in CAUSES:
+        raise ValueError(f"unknown cause {cause!r}; one of {', '.join(CAUSES)}")
+    rng = np.random.default_rng(seed)
+    if cause != "none" and param is None:
+        _, lo, hi = PARAM_RANGES[cause]
+        param = int(rng.integers(int(lo), int(hi) + 1)) if cause == "velocity_filter" else float(rng.uniform(lo, hi))
+    params = plant_for(cause, param)
+    u_req = commands(rng, amplitudes, duration, half_period=half_period)
+    late_row = None
+    if late_step:
+        edges = np.flatnonzero(np.diff(u_req) != 0) + 1
+        late_row = int(edges[rng.integers(1, max(2, edges.size - 1))])
+        frac = float(rng.uniform(0.3, 0.7))
+        t, count, omega_true = _sample_late(params, u_req, seed, jitter_us, late_row, frac)
+    else:
+        rec = record(params, u_req, ts=TS, seed=seed, jitter_us=jitter_us)
+        t, count, omega_true = rec.t, rec.count, rec.omega_true
+    theta = count * (2.0 * math.pi / params.cpr)
+    if creep:
+        theta = _add_creep(theta, u_req, creep)
+        count = np.floor(theta * params.cpr / (2.0 * math.pi) + 1e-9).astype(np.int64)
+    wild_row = None
+    if wild:
+        steady = np.flatnonzero((u_req > 0) & (np.roll(u_req, 10) == u_req))
+        steady = steady[(steady > 10) & (steady < u_req.size - 2)]
+        wild_row = int(rng.choice(steady))
+        count = count.copy()
+        count[wild_row] += int(rng.choice([-1, 1]) * rng.integers(15, 61))
+    taps = int(param) if cause == "velocity_filter" and param is not None else 1
+    omega = _measured(count, params.cpr, taps)
+    u = np.array([params.u_applied(v) for v in u_req])
+    return SynthLog(
+        t=t, u=u, omega=omega, count=count, u_req=u_req, omega_true=omega_true,
+        cause=cause, param=None if param is None else float(param), taps=taps,
+        wild_row=wild_row, late_step_row=late_row, creep=creep,
+    )
+
+
+def _measured(count: NDArray[np.int64], cpr: int, taps: int) -> NDArray[np.float64]:
+    """Euler velocity of the counts with the nominal Ts, averaged over ``taps`` samples, rad/s."""
+    theta = count * (2.0 * math.pi / cpr)
+    euler = np.zeros(theta.size)
+    euler[1:] = np.diff(theta) / TS
+    if taps <= 1:
+        return euler
+    c = np.concatenate(([0.0], np.cumsum(euler)))
+    k = np.arange(1, euler.size + 1)
+    return (c[k] - c[np.maximum(k - taps, 0)]) / taps
+
+
+def _add_creep(theta: NDArray[np.float64], u_req: NDArray[np.float64], creep: float) -> NDArray[np.float64]:
+    """The angle of a wheel whose speed creeps up by ``creep`` (fraction) after each rise."""
+    speed = np.diff(theta, prepend=theta[0])
+    since = np.zeros(theta.size)
+    for k in range(1, theta.size):
+        since[k] = since[k - 1] + 1 if u_req[k - 1] > 0 and u_req[k - 1] == u_req[max(k - 2, 0)] else 0
+    extra = creep * (1.0 - np.exp(-since * TS / 0.8)) * (u_req > 0)
+    return theta[0] + np.cumsum(speed * (1.0 + extra))
+
+
+def _sample_late(
+    params: PlantParams, u_req: NDArray[np.float64], seed: int, jitter_us: float, late_row: int, frac: float
+) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.float64]]:
+    """As :func:`record`, but the command of sample ``late_row`` arrives ``frac`` Ts late."""
+    n = u_req.size
+    rng = np.random.default_rng(seed)
+    plant = Plant(params, seed=seed)
+    lateness = rng.uniform(0.0, jitter_us * 1e-6, n) if jitter_us > 0 else np.zeros(n)
+    t = np.floor((np.arange(n) * TS + lateness) * 1e6 / 4.0) * 4 / 1e6
+    count = np.empty(n, dtype=np.int64)
+    omega = np.empty(n)
+    for k in range(n):
+        plant.advance(t[k] - plant.t)
+        count[k] = plant.count
+        omega[k] = plant.omega
+        if k == late_row:
+            plant.advance(frac * TS)
+        plant.set_command(u_req[k])
+    return t, count, omega
+
+
+__all__ = ["CAUSES", "PARAM_RANGES", "TS", "SynthLog", "commands", "make_log", "plant_for"]

@@ -1,0 +1,181 @@
+"""The model check finds hidden effects in generated logs, and does not cry wolf.
+
+Logs come from minseg_tui.model.synth: the real plant simulation (plant.record), 720-count
+encoder, 300 us loop jitter, steps of 1.55/2.55/3.55 V (u_A) every second. The truth is
+what the generator put in; tolerances are stated per cause.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from minseg_tui.model.check import check
+from minseg_tui.model.check.candidates import Effects
+from minseg_tui.model.check.fit import whiten
+from minseg_tui.model.check.simulate import Stretches, first_order_pieces, second_pole_pieces
+from minseg_tui.model.motor import MotorParams
+from minseg_tui.model.plant import Plant, PlantParams
+from minseg_tui.model.synth import make_log
+
+# cause -> (parameter, absolute tolerance, relative tolerance): |est - true| <= abs + rel * true
+TOLERANCE = {
+    "coulomb_friction": ("u_c", 0.02, 0.05),
+    "dead_time": ("delay", 0.003, 0.05),
+    "velocity_filter": ("taps", 1.0, 0.0),
+    "coast_on_zero": ("T_coast", 0.0, 0.15),
+    "second_pole": ("T2", 0.004, 0.15),
+}
+SEEDS = (101, 102, 103)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+@pytest.mark.parametrize("cause", sorted(TOLERANCE))
+def test_finds_hidden_effect_and_its_parameter(cause, seed):
+    log = make_log(cause, seed=seed)
+    r = check(log.t, log.u, log.omega)
+    assert r.finding.cause == cause, r.finding.evidence
+    name, tol_abs, tol_rel = TOLERANCE[cause]
+    est = r.extended.params[name]
+    assert abs(est - log.param) <= tol_abs + tol_rel * log.param, (est, log.param)
+    # T and K stay those of the motor behind the effect (published T about 0.043 s)
+    assert r.extended.params["T"] == pytest.approx(0.043, rel=0.1)
+    assert r.extended.rmse <= r.baseline.rmse
+
+
+@pytest.mark.parametrize("seed", (1, 2, 3, 4, 5))
+def test_clean_first_order_data_is_none(seed):
+    log = make_log("none", seed=seed, amplitudes=(3.0,) if seed % 2 else (2.0, 3.0, 4.0))
+    r = check(log.t, log.u, log.omega)
+    assert r.finding.cause == "none", r.finding.evidence
+    assert r.extended == r.baseline
+    assert r.baseline.params["T"] == pytest.approx(0.043, rel=0.05)
+    assert r.baseline.params["K"] == pytest.approx(1.98, rel=0.02)
+    assert not r.anomalies
+
+
+@pytest.mark.parametrize(("cause", "seed"), [("none", 7), ("coulomb_friction", 8), ("velocity_filter", 9)])
+def test_wild_sample_does_not_decide_and_is_reported(cause, seed):
+    clean = make_log(cause, seed=seed)
+    messy = make_log(cause, seed=seed, wild=True)
+    assert messy.wild_row is not None
+    a, b = check(clean.t, clean.u, clean.omega), check(messy.t, messy.u, messy.omega)
+    assert b.finding.cause == a.finding.cause == cause
+    for k, v in a.extended.params.items():
+        assert b.extended.params[k] == pytest.approx(v, rel=0.02, abs=1e-3)
+    wild = [x for x in b.anomalies if x.kind == "wild_sample"]
+    assert [x.row for x in wild] == [messy.wild_row]
+
+
+@pytest.mark.parametrize("seed", (11, 12))
+def test_step_between_samples_is_an_anomaly_not_a_cause(seed):
+    log = make_log("none", seed=seed, late_step=True)
+    r = check(log.t, log.u, log.omega)
+    assert r.finding.cause == "none"
+    assert [a.row for a in r.anomalies if a.kind == "late_step"] == [log.late_step_row]
+
+
+@pytest.mark.parametrize("seed", (21, 22))
+def test_slow_creep_is_an_anomaly_not_a_cause(seed):
+    log = make_log("none", seed=seed, creep=0.08)
+    r = check(log.t, log.u, log.omega)
+    assert r.finding.cause == "none"
+    assert [a.kind for a in r.anomalies] == ["creep"]
+
+
+def test_json_shape():
+    log = make_log("dead_time", param=0.03, seed=5)
+    d = check(log.t, log.u, log.omega).to_dict()
+    assert d["baseline"]["model"] == "first_order"
+    assert set(d["baseline"]["params"]) == {"T", "K"}
+    assert set(d["baseline"]) >= {"model", "params", "rmse", "fit_percent"}
+    assert set(d["finding"]) == {"cause", "evidence", "others"}
+    assert d["finding"]["cause"] == "dead_time" and isinstance(d["finding"]["others"], list)
+    assert set(d["extended"]["params"]) == {"T", "K", "delay"}
+    assert "rmse_reduction_percent" in d["gain"]
+    assert d["gain"]["rmse_reduction_percent"] == pytest.approx(
+        100 * (1 - d["extended"]["rmse"] / d["baseline"]["rmse"]))
+
+
+def test_reported_figures_recompute_from_predictions():
+    log = make_log("second_pole", param=0.03, seed=6)
+    r = check(log.t, log.u, log.omega)
+    y = log.omega
+    for fit, pred in ((r.baseline, r.baseline_pred), (r.extended, r.extended_pred)):
+        assert fit.rmse == pytest.approx(math.sqrt(np.mean((y - pred) ** 2)), rel=1e-12)
+        assert fit.fit_percent == pytest.approx(
+            100 * (1 - np.linalg.norm(y - pred) / np.linalg.norm(y - y.mean())), rel=1e-12)
+
+
+# -- the exact simulators against the plant (an independent implementation) ---------------
+
+MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.3, f=1e-3, J=1e-3)  # T = 0.032258 s, K = 1.935
+
+
+def _plant_angles(params, times, values):
+    plant = Plant(params)
+    out = []
+    ends = list(times[1:]) + [times[-1] + 0.3]
+    for t0, t1, v in zip(times, ends, values, strict=True):
+        plant.set_command(v)
+        for tau in np.linspace(t0, t1, 7)[1:]:
+            plant.advance(tau - plant.t)
+            out.append((tau, plant.theta))
+    return np.array(out)
+
+
+@pytest.mark.parametrize("zero_mode", ["brake", "coast"])
+def test_friction_and_coast_simulator_match_the_plant(zero_mode):
+    tau_c = 0.009  # u_c = tau_c R / k_a = 0.15 V
+    p = PlantParams(motor=MOTOR, tau_c=tau_c, v_drop=0.0, v_supply=12.0, zero_mode=zero_mode)
+    times, values = [0.0, 0.2, 0.45, 0.6, 0.9], [3.0, 0.0, 0.1, -2.0, 0.0]
+    ref = _plant_angles(p, times, values)
+    T, K = MOTOR.T, MOTOR.K
+    T_coast = MOTOR.J / MOTOR.f if zero_mode == "coast" else None
+    pieces = first_order_pieces(Stretches(np.array(times), np.array(values)), T, 0.0, u_c=0.15,
+                                T_coast=T_coast)
+    assert K * pieces.angle(ref[:, 0]) == pytest.approx(ref[:, 1], abs=1e-9)
+
+
+def test_second_pole_simulator_matches_the_plant():
+    p = PlantParams(motor=MOTOR, tau_c=0.0, v_drop=0.0, v_supply=12.0, T2=0.012)
+    times, values = [0.0, 0.15, 0.3], [2.0, -1.0, 0.0]
+    ref = _plant_angles(p, times, values)
+    pieces = second_pole_pieces(Stretches(np.array(times), np.array(values)), MOTOR.T, 0.012)
+    # the plant sub-steps its extra pole (20 per T2), so agreement is to its accuracy
+    assert MOTOR.K * pieces.angle(ref[:, 0]) == pytest.approx(ref[:, 1], abs=2e-4)
+
+
+def test_whitening_turns_differenced_noise_white():
+    rng = np.random.default_rng(3)
+    q = rng.uniform(-0.5, 0.5, 20000)
+    for taps in (1, 5):
+        diffed = np.concatenate((q[:taps], q[taps:] - q[:-taps]))
+        e = whiten(diffed, taps)
+        lag = np.corrcoef(diffed[taps:], diffed[:-taps])[0, 1]
+        lag_w = np.corrcoef(e[taps:], e[:-taps])[0, 1]
+        assert lag == pytest.approx(-0.5, abs=0.03)
+        assert abs(lag_w) < 0.1
+
+
+def test_effects_of_parameters():
+    assert Effects.of({"taps": 4.6, "delay": 0.02}) == Effects(taps=5, delay=0.02)
+
+
+@pytest.mark.parametrize("seed", (41, 42))
+def test_two_effects_name_the_main_one_and_list_the_other(seed):
+    from dataclasses import replace
+
+    from minseg_tui.model.plant import record
+    from minseg_tui.model.synth import commands, plant_for
+
+    p = replace(plant_for("coulomb_friction", 0.3), dead_time=0.03)
+    u_req = commands(np.random.default_rng(seed), (2.0, 3.0, 4.0), 20.0)
+    rec = record(p, u_req, seed=seed, jitter_us=300)
+    omega = np.concatenate(([0.0], np.diff(rec.count) * (2 * math.pi / 720) / 0.025))
+    u = np.array([p.u_applied(v) for v in u_req])
+    r = check(rec.t, u, omega)
+    assert r.finding.cause == "coulomb_friction"
+    assert r.extended.params["u_c"] == pytest.approx(0.3, abs=0.02)
+    assert [o.cause for o in r.finding.others] == ["dead_time"]
+    assert r.finding.others[0].params["delay"] == pytest.approx(0.03, abs=0.003)
