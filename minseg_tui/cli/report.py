@@ -1,0 +1,34 @@
+"""`minseg-tui report SESSION [--sessions DIR]`: write a session's report headless.
+
+SESSION is a session folder or a session id under --sessions (default ./sessions).
+Writes report.md and report.html into the session's folder and prints their paths and
+the run CSVs. A missing or damaged session: one line on stderr, exit 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from minseg_tui.lab.session import Session
+from minseg_tui.lab.store import resolve
+from minseg_tui.report.write import write_report
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Arguments of `minseg-tui report`."""
+    parser.add_argument("session", metavar="SESSION", help="a session folder, or a session id under --sessions")
+    parser.add_argument("--sessions", metavar="DIR", type=Path, default=Path("sessions"),
+                        help="folder holding the sessions (default: ./sessions)")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Write the report; 0 on success (InputError -> exit 2 via the CLI)."""
+    folder = resolve(args.session, args.sessions)
+    session = Session.open(folder, readonly=True)
+    written = write_report(session)
+    print(written.markdown)
+    print(written.html)
+    for p in written.runs:
+        print(p)
+    return 0

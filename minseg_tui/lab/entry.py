@@ -1,0 +1,251 @@
+"""What a student types, read as a quantity in SI units, or refused with one line.
+
+A field has a *form unit* (the unit its label shows, e.g. mA for i_ss); a bare number
+is read in that unit. A number with a unit is converted when the unit measures the same
+thing (``0.047 A`` in a mA field is 0.047 A), and refused when it does not (``4.7 V`` in
+a mA field). Values come back in SI: volts, amperes, ohms, rad/s, seconds.
+
+Accepted, for every field:
+
+- a decimal point or a decimal comma: ``4.7``, ``4,7``; a leading ``+``; an exponent
+  (``1.3e-3``, ``1,3e-3``);
+- the unit after the number, with or without a space: ``4.7 V``, `` 4.7V ``, ``47mA``;
+  units are read case-insensitively (``ma``, ``OHM``), with two exceptions that
+  keep their case: ``MΩ`` (megaohm, what an open circuit shows) against ``mΩ``;
+- Ω written as ``Ω`` (U+03A9 or U+2126), ``ohm`` or ``ohms``.
+
+Refused, with a message saying what was expected:
+
+- empty text, text that is not a number, ``nan``, ``inf``, a number too large to be finite;
+- two numbers (``4.7 5.2``, ``1,234.5``, ``4.7.1``);
+- a unit of another quantity (``4.7 V`` for a current) or an unknown unit;
+- a prefix without its unit: ``3k`` is refused (write ``3 kΩ``), because a lone letter
+  after a number is as often a typo as a prefix;
+- a negative number (or zero) where the field cannot be negative (or zero);
+- **a bare number below 1 in a mA field** (``0.047`` for i_ss): the lab's currents are
+  20-50 mA, so such a number is most likely amperes typed without the unit, but it could
+  also be a real reading in mA; rather than guess, it is refused and the message asks for
+  ``47 mA`` or ``0.047 A``. An explicit ``0.047 A`` or ``0.5 mA`` is accepted.
+
+Plausibility is separate from parsing: :class:`Plausible` ranges on a field give warnings
+(data, not refusals), e.g. R outside 1-20 ohm.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from decimal import Decimal
+
+from minseg_tui.errors import InputError
+
+
+@dataclass(frozen=True)
+class Unit:
+    """A unit: its display ``symbol``, what it measures, and ``scale`` (SI value per unit)."""
+
+    symbol: str
+    quantity: str
+    scale: float
+    spellings: tuple[str, ...]
+
+
+_UNITS: tuple[Unit, ...] = (
+    Unit("V", "voltage", 1.0, ("v", "volt", "volts")),
+    Unit("mV", "voltage", 1e-3, ("mv", "millivolt", "millivolts")),
+    Unit("A", "current", 1.0, ("a", "amp", "amps", "ampere", "amperes")),
+    Unit("mA", "current", 1e-3, ("ma", "milliamp", "milliamps", "milliampere", "milliamperes")),
+    Unit("µA", "current", 1e-6, ("µa", "μa", "ua")),
+    Unit("Ω", "resistance", 1.0, ("Ω", "ohm", "ohms")),
+    Unit("kΩ", "resistance", 1e3, ("kΩ", "kohm", "kohms")),
+    Unit("MΩ", "resistance", 1e6, ("MΩ", "Mohm", "Mohms")),
+    Unit("mΩ", "resistance", 1e-3, ("mΩ", "mohm", "mohms")),
+    Unit("rad/s", "angular velocity", 1.0, ("rad/s", "rad/sec", "rads^-1", "rad*s^-1")),
+    Unit("rpm", "angular velocity", 2.0 * math.pi / 60.0, ("rpm", "r/min", "rev/min")),
+    Unit("s", "time", 1.0, ("s", "sec", "secs", "second", "seconds")),
+    Unit("ms", "time", 1e-3, ("ms", "msec")),
+    Unit("min", "time", 60.0, ("min", "mins", "minute", "minutes")),
+    Unit("rad/s/V", "gain", 1.0, ("rad/s/v", "rad/(sv)", "rad/(vs)", "(rad/s)/v", "rad/vs", "rads^-1v^-1")),
+    Unit("V s/rad", "back-emf constant", 1.0, ("vs/rad", "v/(rad/s)", "v/rad/s", "vsrad^-1")),
+    Unit("N m/A", "torque constant", 1.0, ("nm/a", "n/a*m", "nma^-1")),
+    Unit("N m s/rad", "friction coefficient", 1.0, ("nms/rad", "nm/(rad/s)", "nmsrad^-1")),
+    Unit("kg m^2", "inertia", 1.0, ("kgm^2", "kgm2")),
+    Unit("°C", "temperature", 1.0, ("°c", "c", "degc", "deg", "°", "degrees")),
+    Unit("°C/W", "oven gain", 1.0, ("°c/w", "c/w", "k/w", "degc/w", "deg/w")),
+    Unit("%", "percentage", 0.01, ("%", "percent")),
+    Unit("", "number", 1.0, ()),
+)
+
+UNITS: dict[str, Unit] = {u.symbol: u for u in _UNITS}
+"""Every unit by its display symbol (``"mA"``, ``"Ω"``, ``"rad/s"``, ``""`` for a pure number)."""
+
+_CASE_KEPT = {s for u in _UNITS if u.quantity == "resistance" for s in u.spellings if s[0] in "mM"}
+
+_NUMBER = re.compile(
+    r"""^(?P<sign>[+-]?)\s*
+        (?P<mant>\d+(?:[.,]\d*)?|[.,]\d+)
+        (?:[eE](?P<exp>[+-]?\d+))?
+        (?P<rest>.*)$""",
+    re.VERBOSE | re.DOTALL,
+)
+_PREFIXES = {"k", "m", "M", "µ", "u", "G"}
+
+
+class EntryRefused(InputError):
+    """A typed text that is not an acceptable value; ``str()`` is the one-line message."""
+
+
+@dataclass(frozen=True)
+class Parsed:
+    """An accepted entry: ``value`` in SI units, the ``unit`` it was typed in, and a note."""
+
+    value: float
+    unit: str
+    note: str = ""
+
+
+def _normalise_unit(text: str) -> str:
+    """Unit text without spaces, '*', '·', '.', with Ω unified and superscripts spelled out."""
+    t = text.strip().replace("\u2126", "Ω").replace("ω", "Ω") if text else ""
+    t = re.sub(r"[\s*·⋅]", "", t).replace("²", "^2").replace("⁻¹", "^-1")
+    if t in _CASE_KEPT:
+        return t
+    low = t.lower()
+    return low.replace("ω", "Ω")
+
+
+_BY_SPELLING: dict[str, Unit] = {_normalise_unit(s): u for u in _UNITS for s in u.spellings}
+
+
+def _scaled(number: Decimal, scale: float) -> float:
+    """number * scale; exact in decimal for power-of-ten units, so 37.2 mA is 0.0372 A."""
+    exponent = math.log10(scale)
+    if abs(exponent - round(exponent)) < 1e-12:
+        return float(number.scaleb(round(exponent)))
+    return float(number) * scale
+
+
+def lookup_unit(text: str) -> Unit | None:
+    """The unit a typed unit text names, or None when it names none."""
+    key = _normalise_unit(text)
+    if not key:
+        return UNITS[""]
+    return _BY_SPELLING.get(key)
+
+
+def describe(unit: str) -> str:
+    """'a current in mA' for the form unit ``unit`` (a display symbol of :data:`UNITS`)."""
+    u = UNITS[unit]
+    if not u.symbol:
+        return "a number"
+    article = "an" if u.quantity[0] in "aeiou" else "a"
+    return f"{article} {u.quantity} in {u.symbol}"
+
+
+def example(unit: str) -> str:
+    """A typical entry for a field in ``unit``, for messages (e.g. ``47 mA``)."""
+    samples = {
+        "V": "4.1 V", "mV": "4100 mV", "A": "0.047 A", "mA": "47 mA", "Ω": "5.2 Ω",
+        "rad/s": "6.8 rad/s", "s": "0.25 s", "ms": "250 ms", "min": "3.5 min",
+        "rad/s/V": "1.9 rad/s/V", "V s/rad": "0.5 V s/rad", "N m/A": "0.32 N m/A",
+        "N m s/rad": "0.0006 N m s/rad", "kg m^2": "0.0013 kg m^2", "°C": "250 °C",
+        "°C/W": "0.25 °C/W", "%": "50 %", "": "0.5",
+    }
+    return samples.get(unit, f"1 {unit}")
+
+
+def parse_quantity(
+    text: str,
+    unit: str,
+    *,
+    label: str = "",
+    allow_negative: bool = False,
+    allow_zero: bool = True,
+) -> Parsed:
+    """Read ``text`` as a quantity for a field whose form unit is ``unit``; value in SI.
+
+    ``unit`` is a display symbol from :data:`UNITS` (``"mA"``, ``"V"``, ``"Ω"``, ...).
+    Raises :class:`EntryRefused` (an InputError naming ``label``) with a one-line message.
+    """
+    form = UNITS[unit]
+    want = f"expected {describe(unit)} (e.g. {example(unit)})"
+
+    def refuse(why: str) -> EntryRefused:
+        return EntryRefused(label, None, f"{why}; {want}")
+
+    raw = text if text is not None else ""
+    stripped = raw.strip()
+    if not stripped:
+        return _raise(refuse("nothing typed"))
+    m = _NUMBER.match(stripped)
+    if m is None:
+        return _raise(refuse(f"{stripped!r} is not a number"))
+    mant = m.group("mant").replace(",", ".")
+    exact = Decimal(("-" if m.group("sign") == "-" else "") + mant + (f"e{m.group('exp')}" if m.group("exp") else ""))
+    number = float(exact)
+    rest = m.group("rest").strip()
+    if not math.isfinite(number):
+        return _raise(refuse(f"{stripped!r} is not a finite number"))
+    typed = lookup_unit(rest)
+    if typed is None:
+        if re.search(r"\d", rest) and not re.search(r"\^|[a-zA-Z]2", rest):
+            return _raise(refuse(f"{stripped!r} holds more than one number"))
+        if rest in _PREFIXES:
+            return _raise(refuse(f"{stripped!r}: a prefix needs its unit (write e.g. '{number:g} {rest}{form.symbol}')"))
+        return _raise(refuse(f"{rest!r} in {stripped!r} is not a unit this field takes"))
+    if typed.symbol and typed.quantity != form.quantity:
+        return _raise(refuse(f"{stripped!r} is {'an' if typed.quantity[0] in 'aeiou' else 'a'} {typed.quantity}"))
+    note = ""
+    if not typed.symbol:
+        typed = form
+        if form.symbol == "mA" and 0 < abs(number) < 1:
+            return _raise(EntryRefused(
+                label, None,
+                f"{stripped!r} is ambiguous: currents here are 20-50 mA, so this looks like amperes; "
+                f"type '{number * 1000:g} mA' or '{stripped} A' (or '{stripped} mA' if you mean it)",
+            ))
+    elif typed.symbol != form.symbol:
+        note = f"read as {_fmt(number * typed.scale / form.scale)} {form.symbol}"
+    value = _scaled(exact, typed.scale)
+    if value < 0 and not allow_negative:
+        return _raise(refuse(f"{stripped!r} is negative, which this field cannot be (swapped leads? type the magnitude)"))
+    if value == 0 and not allow_zero:
+        return _raise(refuse(f"{stripped!r} is zero, which this field cannot be"))
+    return Parsed(value=value, unit=typed.symbol, note=note)
+
+
+def _raise(exc: EntryRefused) -> Parsed:
+    raise exc
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.4g}"
+
+
+def format_quantity(value: float, unit: str, digits: int = 4) -> str:
+    """``value`` (SI) shown in the form unit ``unit`` with ``digits`` significant digits."""
+    u = UNITS[unit]
+    shown = value / u.scale if u.scale >= 1.0 else value * round(1.0 / u.scale)
+    return f"{shown:.{digits}g} {u.symbol}".rstrip()
+
+
+@dataclass(frozen=True)
+class Plausible:
+    """A range a value (SI) usually lies in; outside it, ``low``/``high`` is the warning.
+
+    ``lo``/``hi`` may be None for an open end. Warnings never refuse an entry.
+    """
+
+    lo: float | None
+    hi: float | None
+    low: str = ""
+    high: str = ""
+
+    def warnings(self, value: float) -> list[str]:
+        """The warning for ``value`` (SI), or none."""
+        if self.lo is not None and value < self.lo and self.low:
+            return [self.low]
+        if self.hi is not None and value > self.hi and self.high:
+            return [self.high]
+        return []

@@ -1,0 +1,288 @@
+"""Recorded runs: the stream written to disk while it arrives, then kept as a step log.
+
+While a run records, raw samples (``seq, t_us, count, u_mV`` as the board sends them) are
+appended to ``runs/<name>.partial`` in chunks, each chunk written and fsynced at most
+:data:`FLUSH_INTERVAL` s after its first sample arrived: a crash or kill -9 loses at most
+that much of the stream. When the run ends (or, after a crash, when the session is opened
+again) the samples become ``runs/<name>.csv``, a step log in the shared format
+(:mod:`minseg_tui.lab.files`), written atomically, with the columns
+
+    t (s, board time from the first sample), u (V, applied: see below), omega (rad/s, mean
+    speed over each sample interval from the count and the board's timestamps),
+    u_req (V), omega_lab (rad/s, the manual's Euler derivative at the nominal period then the
+    20-tap average), theta (rad), count, t_us (board micros), seq.
+
+``u`` is u_A mapped from u_req through the table's u_ss (:func:`applied_voltage`): the
+same mapping Task 11 divides by. Without u_ss in the table u = u_req. The log's metadata
+says which.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import math
+import os
+import time
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from minseg_tui.lab.files import read_step_log, write_step_log
+from minseg_tui.lab.store import atomic_write_bytes, fsync_dir
+from minseg_tui.model.identify import Reading, Row, u_ss_at
+from minseg_tui.model.steps import StepLog
+from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
+from minseg_tui.units import COUNTS_PER_REV
+
+FLUSH_INTERVAL: float = 0.5
+"""Longest time (s) a received sample waits in memory before it is written and fsynced."""
+
+PARTIAL_SUFFIX = ".partial"
+_HEADER = "seq,t_us,count,u_mV"
+
+
+@dataclass(frozen=True)
+class RunInfo:
+    """A recorded run as the session file keeps it.
+
+    name: file stem (``runs/<name>.csv``); kind: ``steps`` (Task 10), ``fast`` or ``free``;
+    ts: nominal sample period (s); samples: rows in the log; dropped: samples lost on the
+    link (gaps in seq); started: ISO time; interrupted: True when recovered after a crash;
+    plan: the step plan as a dict (empty for a free run).
+    """
+
+    name: str
+    file: str
+    kind: str
+    ts: float
+    samples: int
+    dropped: int
+    started: str
+    interrupted: bool = False
+    plan: Mapping[str, float] = field(default_factory=dict)
+
+    def to_json(self) -> dict[str, object]:
+        """JSON-ready dict."""
+        return {"name": self.name, "file": self.file, "kind": self.kind, "ts": self.ts,
+                "samples": self.samples, "dropped": self.dropped, "started": self.started,
+                "interrupted": self.interrupted, "plan": dict(self.plan)}
+
+    @classmethod
+    def from_json(cls, d: Mapping[str, object]) -> RunInfo:
+        """Inverse of :meth:`to_json`."""
+        return cls(
+            name=str(d["name"]), file=str(d["file"]), kind=str(d.get("kind", "free")),
+            ts=float(d.get("ts", 0.025)), samples=int(d.get("samples", 0)),  # type: ignore[arg-type]
+            dropped=int(d.get("dropped", 0)), started=str(d.get("started", "")),  # type: ignore[arg-type]
+            interrupted=bool(d.get("interrupted", False)),
+            plan={str(k): float(v) for k, v in dict(d.get("plan") or {}).items()},  # type: ignore[call-overload]
+        )
+
+
+# -- the applied voltage -----------------------------------------------------------------------
+
+def applied_voltage(u_req: np.ndarray, table: Sequence[tuple[float, float]]) -> tuple[np.ndarray, str]:
+    """u_A (V) for each requested u_req (V), mapped through the table's (u_req, u_ss) pairs,
+    and a sentence for the log's metadata.
+
+    Zero stays zero (driver off); otherwise u_ss is taken from the row with that u_req,
+    interpolated linearly between rows, or beyond the rows the nearest row's driver drop
+    (u_req - u_ss) is subtracted (as Task 11 does), never crossing zero. The sign follows
+    u_req. Without pairs u_A = u_req.
+    """
+    u = np.asarray(u_req, dtype=float)
+    if not table:
+        return u.copy(), "u = u_req: the table has no u_ss yet, so the driver's voltage loss is not known"
+    rows = [Row(reading=Reading(u_req=r, u_ss=s, omega_ss=math.nan, i_ss=math.nan), k_v=math.nan, f=math.nan)
+            for r, s in table]
+    out = np.zeros_like(u)
+    for level in np.unique(np.abs(u)):
+        if level == 0:
+            continue
+        v, _ = u_ss_at(rows, float(level))
+        sel = np.abs(u) == level
+        out[sel] = np.sign(u[sel]) * max(v, 0.0)
+    pairs = ", ".join(f"{r:g} V -> {s:g} V" for r, s in sorted(table))
+    how = (f"u = u_A mapped from u_req through the table's u_ss ({pairs}): the row's value, linear "
+           "between rows, the nearest row's drop beyond them; 0 at u_req = 0")
+    return out, how
+
+
+# -- partial files -----------------------------------------------------------------------------
+
+class Recorder:
+    """Writes one run's samples to ``runs/<name>.partial`` as they arrive.
+
+    Call :meth:`append` (or :meth:`extend`) for each sample, then ``Session.finish_run``.
+    ``clock`` is the monotonic clock deciding when to flush (injectable for tests).
+    """
+
+    def __init__(self, path: Path, header: Mapping[str, object], flush_interval: float = FLUSH_INTERVAL,
+                 clock: Callable[[], float] = time.monotonic) -> None:
+        self.path = Path(path)
+        self.flush_interval = flush_interval
+        self._clock = clock
+        self._buffer: list[str] = []
+        self._first_unflushed: float | None = None
+        self.samples = 0
+        self.closed = False
+        self._fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_APPEND, 0o644)
+        self._write(f"# {json.dumps(dict(header), sort_keys=True)}\n{_HEADER}\n")
+        fsync_dir(self.path.parent)
+
+    @property
+    def name(self) -> str:
+        """The run's name (file stem)."""
+        return self.path.name[: -len(PARTIAL_SUFFIX)]
+
+    def _write(self, text: str) -> None:
+        data = memoryview(text.encode("ascii"))
+        while data:
+            n = os.write(self._fd, data)
+            data = data[n:]
+        os.fsync(self._fd)
+
+    def append(self, seq: int, t_us: int, count: int, u_mV: int) -> None:
+        """One sample as the board sent it: sequence number, board time (us), encoder count,
+        requested voltage (mV) in force from this sample on."""
+        if self.closed:
+            raise ValueError("the run is finished")
+        self._buffer.append(f"{int(seq)},{int(t_us)},{int(count)},{int(u_mV)}\n")
+        self.samples += 1
+        now = self._clock()
+        if self._first_unflushed is None:
+            self._first_unflushed = now
+        if now - self._first_unflushed >= self.flush_interval:
+            self.flush()
+
+    def extend(self, samples: Iterable[object]) -> None:
+        """Append samples with attributes ``seq, t_us, count, u_mV`` (e.g. protocol SampleLine)."""
+        for s in samples:
+            self.append(s.seq, s.t_us, s.count, s.u_mV)  # type: ignore[attr-defined]
+
+    def tick(self) -> None:
+        """Flush if the oldest unwritten sample is older than the flush interval (call this
+        from a timer when samples may stop arriving)."""
+        if self._first_unflushed is not None and self._clock() - self._first_unflushed >= self.flush_interval:
+            self.flush()
+
+    def flush(self) -> None:
+        """Write and fsync every sample received so far."""
+        if self._buffer:
+            self._write("".join(self._buffer))
+            self._buffer.clear()
+        self._first_unflushed = None
+
+    def close(self) -> None:
+        """Flush and close the file (the partial file stays until the run is finished)."""
+        if not self.closed:
+            self.flush()
+            os.close(self._fd)
+            self.closed = True
+
+
+@dataclass(frozen=True)
+class RawRun:
+    """Samples read back from a partial file, and its header (name, kind, ts, plan, started)."""
+
+    header: Mapping[str, object]
+    seq: np.ndarray
+    t_us: np.ndarray
+    count: np.ndarray
+    u_mV: np.ndarray
+
+
+def read_partial(path: Path) -> RawRun:
+    """The samples of a partial file; a torn or malformed line (a crash mid-write) is skipped."""
+    header: dict[str, object] = {}
+    rows: list[tuple[int, int, int, int]] = []
+    text = Path(path).read_bytes().decode("ascii", errors="replace")
+    lines = text.split("\n")
+    if not text.endswith("\n"):
+        lines = lines[:-1]  # the last line was cut by the crash
+    for line in lines:
+        if line.startswith("# "):
+            with contextlib.suppress(ValueError):
+                header = json.loads(line[2:])
+            continue
+        parts = line.split(",")
+        if len(parts) != 4:
+            continue
+        try:
+            rows.append((int(parts[0]), int(parts[1]), int(parts[2]), int(parts[3])))
+        except ValueError:
+            continue
+    arr = np.array(rows, dtype=np.int64).reshape(-1, 4)
+    return RawRun(header=header, seq=arr[:, 0], t_us=arr[:, 1], count=arr[:, 2], u_mV=arr[:, 3])
+
+
+def _unwrap(values: np.ndarray, bits: int = 32) -> np.ndarray:
+    d = np.mod(np.diff(values.astype(np.int64)), 2**bits)
+    return np.concatenate(([0], np.cumsum(d))).astype(np.int64) if values.size else values.astype(np.int64)
+
+
+def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> tuple[StepLog, int]:
+    """The step log of a raw run, and the number of samples lost on the link.
+
+    Samples whose (unwrapped) board time does not increase are dropped (a repeated line).
+    """
+    t_rel = _unwrap(raw.t_us)
+    # keep only samples later than every sample before them (a repeated line is dropped)
+    before = np.concatenate(([-1], np.maximum.accumulate(t_rel)[:-1])) if t_rel.size else t_rel
+    keep = t_rel > before
+    seq_u = _unwrap(raw.seq)[keep]
+    t_rel = t_rel[keep]
+    count = raw.count[keep].astype(np.int64)
+    u_req = raw.u_mV[keep].astype(float) / 1000.0
+    t = t_rel / 1e6
+    dropped = int(np.sum(np.maximum(np.diff(seq_u) - 1, 0))) if seq_u.size > 1 else 0
+    u, how = applied_voltage(u_req, table)
+    theta = angle(count)
+    omega = timestamp_velocity(t, count)
+    omega_lab = lab_velocity(count, ts)
+    meta = {
+        "source": "minseg-tui session recording",
+        "ts": f"{ts:g}",
+        "cpr": str(COUNTS_PER_REV),
+        "u": how,
+        "omega": "mean speed over each sample interval, from the encoder count and the board's timestamps",
+        "omega_lab": f"the manual's estimate: Euler derivative at the nominal Ts = {ts:g} s, then the 20-tap average",
+        "dropped": str(dropped),
+    }
+    for k in ("kind", "started", "plan"):
+        if k in raw.header:
+            meta[k] = json.dumps(raw.header[k]) if not isinstance(raw.header[k], str) else str(raw.header[k])
+    log = StepLog(
+        t=t, u=u, omega=omega,
+        extra={"u_req": u_req, "omega_lab": omega_lab, "theta": theta, "count": count,
+               "t_us": raw.t_us[keep].astype(np.int64), "seq": raw.seq[keep].astype(np.int64)},
+        metadata=meta,
+    )
+    return log, dropped
+
+
+def write_log_atomic(path: Path, log: StepLog) -> None:
+    """Write ``log`` with :func:`minseg_tui.lab.files.write_step_log`, atomically."""
+    path = Path(path)
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.build")
+    try:
+        write_step_log(tmp, log)
+        atomic_write_bytes(path, tmp.read_bytes())
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            tmp.unlink()
+
+
+def remap_log(path: Path, table: Sequence[tuple[float, float]]) -> None:
+    """Recompute the ``u`` column of the run at ``path`` from its u_req with a new table."""
+    log = read_step_log(path, require_step=False)
+    if "u_req" not in log.extra:
+        return
+    u, how = applied_voltage(np.asarray(log.extra["u_req"], dtype=float), table)
+    meta = dict(log.metadata)
+    meta["u"] = how
+    meta.pop("format", None)
+    write_log_atomic(path, StepLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta))

@@ -1,0 +1,52 @@
+"""A :class:`~minseg_tui.report.content.Report` as one self-contained HTML page.
+
+Inline CSS and inline SVG figures only: no scripts, no external style sheets, images or
+fonts, so the file can be mailed or opened offline.
+"""
+
+from __future__ import annotations
+
+from html import escape
+
+from minseg_tui.report.content import Figure, Report, Table
+
+_CSS = """
+body { font-family: sans-serif; max-width: 60em; margin: 2em auto; padding: 0 1em; color: #222; }
+h1 { font-size: 1.5em; } h2 { font-size: 1.2em; border-bottom: 1px solid #ccc; margin-top: 2em; }
+table { border-collapse: collapse; margin: 0.8em 0; }
+th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }
+th { background: #f2f2f2; }
+figure { margin: 1em 0; } figcaption { font-style: italic; color: #555; }
+.byline { color: #555; }
+"""
+
+
+def _table(t: Table) -> str:
+    head = "".join(f"<th>{escape(h)}</th>" for h in t.header)
+    rows = "".join("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in row) + "</tr>" for row in t.rows)
+    return f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"
+
+
+def _figure(f: Figure) -> str:
+    panels = "<br/>".join(p.replace(' xmlns="http://www.w3.org/2000/svg"', "") for p in f.panels)
+    return f"<figure>{panels}<figcaption>{escape(f.caption)}</figcaption></figure>"
+
+
+def render(report: Report) -> str:
+    """The report as an HTML document (text)."""
+    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+           f"<title>{escape(report.title)}</title><style>{_CSS}</style></head><body>",
+           f"<h1>{escape(report.title)}</h1>", f'<p class="byline">{escape(report.byline)}</p>']
+    for sec in report.sections:
+        out.append(f"<h2>{escape(sec.title)}</h2>")
+        for b in sec.blocks:
+            if isinstance(b, Table):
+                out.append(_table(b))
+            elif isinstance(b, Figure):
+                out.append(_figure(b))
+            elif isinstance(b, list):
+                out.append("<ul>" + "".join(f"<li>{escape(str(i))}</li>" for i in b) + "</ul>")
+            else:
+                out.append(f"<p>{escape(str(b))}</p>")
+    out.append("</body></html>")
+    return "\n".join(out)

@@ -1,0 +1,160 @@
+"""Reports from a hand-made session: real files, the session's values in md and html, no external references."""
+
+from __future__ import annotations
+
+import base64
+import re
+from datetime import UTC, datetime, timedelta
+from html import unescape
+from html.parser import HTMLParser
+from pathlib import Path
+
+import numpy as np
+
+from minseg_tui.cli import main
+from minseg_tui.lab.session import Session
+from minseg_tui.lab.steps import step
+from minseg_tui.model.plant import PlantParams, record
+from minseg_tui.report import svg
+from minseg_tui.report.write import write_report
+
+
+class _Clock:
+    def __init__(self) -> None:
+        self.t = datetime(2026, 11, 22, 10, 0, 0, tzinfo=UTC)
+
+    def __call__(self) -> datetime:
+        self.t += timedelta(seconds=1)
+        return self.t
+
+
+ROWS = ((2.5, "2,05 V", "3.82", "29.8 mA"), (3.5, "3.05", "5.81", "33.5"), (4.5, "4.05 V", "7.78", "0.0372 A"))
+
+
+def _session(root: Path) -> Session:
+    s = Session.create(root, ["Ada Lovelace", "Bo Ek"], date="2026-11-22", clock=_Clock())
+    s.enter("R", "5.26 Ω")
+    for lv, u, w, i in ROWS:
+        s.enter(f"u_ss@{lv:g}", u)
+        s.enter(f"omega_ss@{lv:g}", w)
+        s.enter(f"i_ss@{lv:g}", i)
+    s.enter("prep8.T", "a/b")
+    s.enter("prep8.K", "b/c")
+    s.enter("prep10.gain", "2pi/720")
+    s.enter("summary.1", "b")
+    s.enter("summary.5", "b, c")
+    s.enter("summary.unclear", "why the 20-tap filter lags")
+    s.enter("own.T", "0.09 s")
+    s.enter("prep3.notes", "y' = 0 gives y = K c")
+    plan = dict(step("task10").plans)["manual"]
+    n = int(round(plan.duration / plan.ts))
+    u = np.concatenate((np.zeros(20), np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0)))
+    data = record(PlantParams(), u, ts=plan.ts, seed=21, jitter_us=800)
+    rec = s.start_run("steps", plan)
+    for k in range(u.size):
+        rec.append(int(data.seq[k]), int(data.t_us[k]), int(data.count[k]), int(round(u[k] * 1000)))
+    s.finish_run(rec)
+    return s
+
+
+class _Refs(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.tags: list[str] = []
+        self.attrs: list[tuple[str, str | None]] = []
+
+    def handle_starttag(self, tag, attrs):
+        self.tags.append(tag)
+        self.attrs += attrs
+
+
+def test_report_files_hold_the_sessions_values(tmp_path):
+    s = _session(tmp_path)
+    written = write_report(s)
+    s.close()
+    md = written.markdown.read_text(encoding="utf-8")
+    html = written.html.read_text(encoding="utf-8")
+    assert written.markdown == s.folder / "report.md" and written.html == s.folder / "report.html"
+    assert written.runs == (s.folder / "runs" / "steps-1.csv",) and written.runs[0].exists()
+    k_v = sorted([(2.05 - 5.26 * 0.0298) / 3.82, (3.05 - 5.26 * 0.0335) / 5.81, (4.05 - 5.26 * 0.0372) / 7.78])[1]
+    for doc in (md, unescape(html)):
+        for text in ("Ada Lovelace", "2026-11-22", "5.26 Ω", "29.8 mA", "33.5 mA", "37.2 mA", "2.05 V", "3.82 rad/s",
+                     f"{(2.05 - 5.26 * 0.0298) / 3.82:.4g}", f"k_v = {k_v:.4g} V s/rad", f"{0.65 * k_v:.4g} N m/A",
+                     "a/b", "b/c", "upside down", "a system", "the input amplitude; the static gain",
+                     "why the 20-tap filter lags", "y' = 0 gives y = K c", "steps-1", "runs/steps-1.csv",
+                     "T, least squares", "0.09 s", "omega at u_A = 5 V",
+                     "Most likely cause: ", "First-order model fitted to steps-1"):
+            assert text in doc, text
+    ident = s.results().identification
+    assert f"{ident.step.K:.4g} rad/s/V" in md and f"{ident.step.T:.4g} s" in html
+    assert "T_short" in md  # identify's findings land in the warnings
+
+
+def test_html_is_self_contained(tmp_path):
+    s = _session(tmp_path)
+    html = write_report(s).html.read_text(encoding="utf-8")
+    s.close()
+    low = html.lower()
+    for needle in ("http://", "https://", "src=", "href=", "url(", "@import", "<script", "<link", "<img", "<iframe"):
+        assert needle not in low, needle
+    p = _Refs()
+    p.feed(html)
+    assert p.tags.count("svg") == 4  # the run (speed, voltage) and the model check (speed, residual)
+    assert p.tags.count("polyline") == 2 + 2 + 3 + 2  # omega x2, u x2, models x3, residuals x2
+    assert "style" in p.tags and "table" in p.tags
+
+
+def test_markdown_figures_are_inline_svg(tmp_path):
+    s = _session(tmp_path)
+    md = write_report(s).markdown.read_text(encoding="utf-8")
+    s.close()
+    targets = re.findall(r"!\[[^\]]*\]\(([^)]*)\)", md)
+    assert len(targets) == 4
+    for target in targets:
+        assert target.startswith("data:image/svg+xml;base64,")
+        doc = base64.b64decode(target.split(",", 1)[1]).decode("utf-8")
+        assert doc.startswith("<svg") and doc.endswith("</svg>")
+
+
+def test_report_does_not_touch_the_session(tmp_path):
+    s = _session(tmp_path)
+    s.close()
+    before = (s.folder / "session.json").read_bytes()
+    assert main(["report", s.id, "--sessions", str(tmp_path)]) == 0
+    assert (s.folder / "session.json").read_bytes() == before
+    assert (s.folder / "report.md").exists() and (s.folder / "report.html").exists()
+
+
+def test_empty_session_reports_what_is_missing(tmp_path):
+    with Session.create(tmp_path, ["A"], date="2026-11-22") as s:
+        md = write_report(s).markdown.read_text(encoding="utf-8")
+    assert "No step result yet" in md and "R is not entered yet" in md and "No run recorded." in md
+
+
+def test_cli_report(tmp_path, capsys):
+    s = _session(tmp_path)
+    s.close()
+    assert main(["report", str(s.folder)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out == [str(s.folder / "report.md"), str(s.folder / "report.html"), str(s.folder / "runs" / "steps-1.csv")]
+    assert main(["report", "no-such-session", "--sessions", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert "no session found" in err and err.count("\n") == 1
+
+
+def test_refused_entries_are_listed(tmp_path):
+    with Session.create(tmp_path, ["A"]) as s:
+        s.enter("i_ss@2.5", "4.7 V")
+        md = write_report(s).markdown.read_text(encoding="utf-8")
+    assert "refused entry i_ss@2.5: '4.7 V'" in md
+
+
+def test_svg_ticks_and_thinning():
+    assert svg.nice_ticks(0.0, 10.0, 5) == [0.0, 2.0, 4.0, 6.0, 8.0, 10.0]
+    assert svg.nice_ticks(-0.3, 0.3, 3) == [-0.2, 0.0, 0.2]
+    rng = np.random.default_rng(2)
+    x = np.arange(10000.0)
+    y = rng.standard_normal(10000)
+    y[5000] = 50.0
+    tx, ty = svg.thin(x, y, 600)
+    assert tx.size <= 600 and 50.0 in ty and tx[0] == 0 and tx[-1] == 9999
