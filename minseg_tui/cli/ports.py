@@ -1,0 +1,42 @@
+"""`minseg-tui ports`: every serial port, and why it was or was not picked as a MinSeg."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from minseg_tui.device import discovery
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """--json for a machine-readable list."""
+    parser.add_argument("--json", action="store_true", help="print the list as JSON")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Print the ports (best first) with their verdicts; exit 0 even when there are none."""
+    found = discovery.candidates()
+    if args.json:
+        print(json.dumps([c.as_dict() for c in found], indent=2))
+        return 0
+    if not found:
+        print("no serial ports found (use `minseg-tui sim` for a virtual MinSeg)")
+        return 0
+    best = discovery.find_board(found and [_Info(c) for c in found])
+    for c in found:
+        ids = "----:----" if c.vid is None or c.pid is None else f"{c.vid:04X}:{c.pid:04X}"
+        mark = "*" if best is not None and c.device == best.device else " "
+        print(f"{mark} {c.device:<24} {ids}  {c.verdict:<8} {c.reason}")
+    if best is None:
+        print("no MinSeg found: `auto` will use the virtual board")
+    else:
+        print(f"* = what `auto` opens: {best.device}")
+    return 0
+
+
+class _Info:
+    """A Candidate seen as port info again (to pick the best without listing twice)."""
+
+    def __init__(self, c: discovery.Candidate) -> None:
+        self.device, self.vid, self.pid = c.device, c.vid, c.pid
+        self.description, self.manufacturer, self.serial_number = c.description, None, None

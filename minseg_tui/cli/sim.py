@@ -1,0 +1,46 @@
+"""`minseg-tui sim`: a virtual MinSeg on a pseudo-terminal, until Ctrl-C.
+
+It prints the device path; any serial monitor (or `minseg-tui --port PATH`) can open
+it at 500000 baud. Options are the virtual board's settings (seed, parameters, hidden
+effects, faults).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from minseg_tui.device.ptyserver import PtyServer
+from minseg_tui.device.virtual import OPTIONS, VirtualBoard, settings_from
+from minseg_tui.errors import InputError
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """One option per virtual board setting, plus --link for a stable symlink."""
+    for name, opt in OPTIONS.items():
+        flag = f"--{name}"
+        if opt.kind is bool:
+            parser.add_argument(flag, action="store_true", default=None, help=opt.help)
+        else:
+            parser.add_argument(flag, type=str, default=None, metavar=opt.kind.__name__.upper(), help=opt.help)
+    parser.add_argument("--link", metavar="PATH", help="also make a symlink PATH to the device")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Serve until Ctrl-C; exit 0."""
+    values = {name: getattr(args, name) for name in OPTIONS if getattr(args, name) is not None}
+    try:
+        settings = settings_from(values)
+    except ValueError as exc:
+        raise InputError("", None, str(exc)) from None
+    server = PtyServer(VirtualBoard(settings), link_path=args.link)
+    print(server.path, flush=True)
+    if args.link:
+        print(f"(symlink to {server.slave_name})", file=sys.stderr, flush=True)
+    try:
+        server.serve_forever()
+    except KeyboardInterrupt:
+        pass
+    finally:
+        server.stop()
+    return 0

@@ -1,0 +1,667 @@
+"""The link to a MinSeg (real or virtual) over pyserial: handshake, reader, commands, reconnect.
+
+One :class:`Link` per board. A reader thread owns the port; the caller never blocks on
+it except in :meth:`Link.command`, which waits (with a timeout) for the board's reply.
+
+- Samples reach the caller in batches: :meth:`Link.samples` takes everything pending at
+  once as a :class:`SampleBatch` (numpy arrays). The buffer is bounded (``capacity``);
+  if nobody takes samples for that long the oldest go and ``stats.overflow`` counts them.
+- A corrupt line (bad checksum or format) is counted in ``stats.corrupt`` and dropped; a
+  gap in ``seq`` is counted in ``stats.dropped``. Neither ever becomes a sample.
+- ``seq`` and ``t_us`` are unwrapped (uint32 on the wire, int64 here). Each connection
+  (the board resets when the port opens) is an *epoch*: across epochs seq continues at
+  +1 and t_us continues by the host's estimate of the gap (the one place the host clock
+  enters the time base); the encoder count restarts at 0 with the board.
+- Events (:class:`LinkEvent`) say what happened: connected, disconnected, silent, alive,
+  watchdog, step, stepdone, boot, error. Take them with :meth:`Link.events`, or pass
+  ``on_event`` to hear them at once (called from the reader thread: keep it short).
+- A pulled cable (OSError/SerialException) gives a ``disconnected`` event at once; the
+  samples already received stay; the link reopens the same path (or the same USB
+  VID:PID elsewhere) by itself, re-handshakes, restores the sample period, supply and
+  zero mode (never the motor voltage) and says ``connected``.
+- One program per board: an exclusive open (flock) and a lock file naming the program
+  and pid, so a second program gets "in use by minseg-tui (pid N)".
+- Keep-alive: a PING every ``keepalive_s`` (0.25 s), so the board's 1 s watchdog stays
+  quiet while the host lives.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import tempfile
+import threading
+import time
+from collections import deque
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import serial
+from numpy.typing import NDArray
+from serial.serialutil import SerialException
+
+from minseg_tui import signals
+from minseg_tui.device import discovery
+from minseg_tui.device import protocol as P
+from minseg_tui.errors import DeviceError, InputError
+from minseg_tui.model.plant import MeterReading
+
+U32 = 2**32
+EVENT_KINDS = (
+    "connected", "disconnected", "silent", "alive", "watchdog", "step", "stepdone", "boot", "error",
+)
+FLASH_HINT = "flash the firmware shipped with this minseg-tui (make -C firmware upload)"
+
+
+@dataclass(frozen=True)
+class LinkEvent:
+    """Something the session should hear about. kind: one of EVENT_KINDS; t_host: s (monotonic)."""
+
+    kind: str
+    message: str
+    t_host: float
+
+
+@dataclass(frozen=True)
+class SampleBatch:
+    """Samples in arrival order: seq and t_us unwrapped (int64, us), count (int, encoder),
+    u_req (V, in force from the sample on), epoch (connection number), t_host (host
+    monotonic arrival time, s)."""
+
+    seq: NDArray[np.int64]
+    t_us: NDArray[np.int64]
+    count: NDArray[np.int64]
+    u_req: NDArray[np.float64]
+    epoch: NDArray[np.int64]
+    t_host: NDArray[np.float64]
+
+    def __len__(self) -> int:
+        return int(self.seq.size)
+
+    @property
+    def t(self) -> NDArray[np.float64]:
+        """Board time of each sample, s."""
+        return self.t_us / 1e6
+
+    @staticmethod
+    def from_rows(rows: list[tuple[int, int, int, int, int, float]]) -> SampleBatch:
+        """From (seq, t_us, count, u_mV, epoch, t_host) tuples."""
+        if not rows:
+            return SampleBatch.concat([])
+        a = np.array(rows, dtype=np.float64)
+        ints = np.array([r[:5] for r in rows], dtype=np.int64)
+        return SampleBatch(ints[:, 0], ints[:, 1], ints[:, 2], ints[:, 3] / 1000.0, ints[:, 4], a[:, 5])
+
+    @staticmethod
+    def concat(batches: list[SampleBatch]) -> SampleBatch:
+        """One batch from several (an empty batch from none)."""
+        if not batches:
+            e = np.zeros(0, dtype=np.int64)
+            return SampleBatch(e, e, e, np.zeros(0), e, np.zeros(0))
+        return SampleBatch(*(np.concatenate([getattr(b, f) for b in batches]) for f in _FIELDS))
+
+
+_FIELDS = ("seq", "t_us", "count", "u_req", "epoch", "t_host")
+
+
+@dataclass(frozen=True)
+class Motion:
+    """Angle and velocity of a batch: t in s (board time), theta in rad, omega in rad/s."""
+
+    t: NDArray[np.float64]
+    theta: NDArray[np.float64]
+    omega: NDArray[np.float64]
+
+
+def motion(batch: SampleBatch, before: SampleBatch | None = None, window: float = 0.0) -> Motion:
+    """Angle and velocity (board timestamps, :func:`signals.timestamp_velocity`) of a batch.
+
+    ``before`` is what came earlier (only its tail is used), so the first samples of a
+    batch get a velocity too. Velocity restarts (0) at the first sample of each epoch.
+    """
+    n = len(batch)
+    if before is not None and len(before) and n:
+        keep = before.epoch == batch.epoch[0]
+        t_first = batch.t_us[0] / 1e6
+        keep &= before.t_us / 1e6 >= t_first - max(window, 0.0) - 1e-9
+        idx = np.nonzero(keep)[0]
+        if idx.size == 0 and before.epoch[-1] == batch.epoch[0]:
+            idx = np.array([len(before) - 1])
+        elif idx.size and window <= 0:
+            idx = idx[-1:]
+        if idx.size == 0 and before.epoch[-1] == batch.epoch[0]:
+            idx = np.array([len(before) - 1])
+        head = SampleBatch(*(getattr(before, f)[idx] for f in _FIELDS))
+        full = SampleBatch.concat([head, batch])
+    else:
+        full = batch
+    t = full.t_us / 1e6
+    omega = np.zeros(len(full))
+    bounds = np.flatnonzero(np.diff(full.epoch)) + 1
+    for seg in np.split(np.arange(len(full)), bounds):
+        if seg.size:
+            omega[seg] = signals.timestamp_velocity(t[seg], full.count[seg], window)
+    skip = len(full) - n
+    return Motion(t[skip:], signals.angle(full.count[skip:]), omega[skip:])
+
+
+@dataclass
+class LinkStats:
+    """Counters since open: samples kept, dropped (seq gaps), corrupt lines, overflow
+    (samples pushed out of a full buffer), reconnects, lines received."""
+
+    samples: int = 0
+    dropped: int = 0
+    corrupt: int = 0
+    overflow: int = 0
+    reconnects: int = 0
+    lines: int = 0
+
+
+@dataclass
+class _Waiter:
+    name: str
+    done: threading.Event = field(default_factory=threading.Event)
+    reply: P.Message | None = None
+
+
+# -- lock files: who holds a port --------------------------------------------------------
+def lock_path(port: str) -> str:
+    """The lock file for a port (in XDG_RUNTIME_DIR or the temp dir)."""
+    real = port if "://" in port else os.path.realpath(port)
+    base = os.environ.get("XDG_RUNTIME_DIR") or tempfile.gettempdir()
+    return os.path.join(base, "minseg-tui-" + re.sub(r"[^A-Za-z0-9]+", "_", real).strip("_") + ".lock")
+
+
+def _holder(port: str) -> str:
+    try:
+        with open(lock_path(port)) as fh:
+            prog, pid = fh.read().split()[:2]
+        os.kill(int(pid), 0)
+        return f"{prog} (pid {int(pid)})"
+    except (OSError, ValueError):
+        return "another program"
+
+
+def _proto_of(line: str) -> tuple[str, int] | None:
+    """(fw, proto) from a $BOOT or $ID line even if the rest does not parse (other versions)."""
+    m = re.match(r"\$(?:BOOT|ID),([^,*]*),(-?\d+)", line)
+    return (m.group(1), int(m.group(2))) if m else None
+
+
+class Link:
+    """A MinSeg behind a serial port (a device path or a pyserial URL such as minseg://)."""
+
+    def __init__(
+        self,
+        port: str,
+        *,
+        baud: int = P.BAUD,
+        on_event: Callable[[LinkEvent], None] | None = None,
+        keepalive_s: float = 0.25,
+        reply_timeout_s: float = 1.0,
+        boot_wait_s: float = 2.5,
+        silence_s: float = 0.75,
+        reconnect: bool = True,
+        retry_s: float = 0.25,
+        capacity: int = 2_000_000,
+        vid_pid: tuple[int, int] | None = None,
+        program: str = "minseg-tui",
+        board: Any = None,
+    ) -> None:
+        self.port = port
+        self.baud = baud
+        self.on_event = on_event
+        self.keepalive_s = keepalive_s
+        self.reply_timeout_s = reply_timeout_s
+        self.boot_wait_s = boot_wait_s
+        self.silence_s = silence_s
+        self.reconnect = reconnect
+        self.retry_s = retry_s
+        self.vid_pid = vid_pid
+        self.program = program
+        self.board = board  # the VirtualBoard behind a minseg:// URL (for the multimeter), or None
+        self.ident: P.Ident | None = None
+        self.stats = LinkStats()
+        self._ser: Any = None
+        self._port_lock = threading.Lock()
+        self._lock = threading.Lock()
+        self._rows: deque[tuple[int, int, int, int, int, float]] = deque(maxlen=capacity)
+        self._events: deque[LinkEvent] = deque(maxlen=10000)
+        self._waiters: deque[_Waiter] = deque()
+        self._restore: dict[str, str] = {}
+        self._closing = threading.Event()
+        self._thread: threading.Thread | None = None
+        self._clock: Callable[[], float] = time.monotonic
+        self._epoch = -1
+        self._raw: tuple[int, int] | None = None
+        self._last: tuple[int, int, float] | None = None  # last (seq, t_us, t_host) kept
+        self._last_rx = 0.0
+        self._last_tx = 0.0
+        self._silent = False
+        self._gave_up = False
+
+    # -- opening and closing -------------------------------------------------------------
+    def open(self) -> P.Ident:
+        """Open the port, handshake (raises DeviceError) and start the reader."""
+        ser = self._open_port(self.port)
+        try:
+            self.ident = self._handshake(ser)
+        except BaseException:
+            self._close_port(ser)
+            raise
+        self._ser = ser
+        self._new_epoch()
+        self._emit("connected", f"{self.port}: {self.ident.board} {self.ident.fw}, protocol {self.ident.proto}")
+        self._thread = threading.Thread(target=self._run, name=f"minseg-link {self.port}", daemon=True)
+        self._thread.start()
+        return self.ident
+
+    def close(self) -> None:
+        """Stop the motor if possible, stop the reader, release the port and its lock."""
+        if self._closing.is_set():
+            return
+        with contextlib.suppress(Exception):
+            if self._ser is not None:
+                self._write(P.encode(P.Stop()))
+        self._closing.set()
+        if self._thread is not None:
+            self._thread.join(2.0)
+        with self._port_lock:
+            ser, self._ser = self._ser, None
+        if ser is not None:
+            self._close_port(ser)
+        self._fail_waiters()
+
+    def __enter__(self) -> Link:
+        if self._thread is None:
+            self.open()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    @property
+    def connected(self) -> bool:
+        """True while the port is open and the board answered the handshake."""
+        return self._ser is not None
+
+    def _open_port(self, port: str) -> Any:
+        try:
+            ser = serial.serial_for_url(
+                port, baudrate=self.baud, timeout=0.05, write_timeout=1.0, exclusive=True
+            )
+        except SerialException as exc:
+            text = str(exc)
+            if "lock" in text.lower() or "busy" in text.lower():
+                raise DeviceError(
+                    f"{port} is in use by {_holder(port)}: close that program first "
+                    "(one program per board)"
+                ) from None
+            raise DeviceError(f"cannot open {port}: {text}") from None
+        except (OSError, ValueError) as exc:
+            raise DeviceError(f"cannot open {port}: {exc}") from None
+        with contextlib.suppress(OSError), open(lock_path(port), "w") as fh:
+            fh.write(f"{self.program} {os.getpid()}\n")
+        clock = getattr(ser, "board_clock", None)
+        self._clock = clock if callable(clock) else time.monotonic
+        if self.board is None and hasattr(ser, "board"):
+            self.board = ser.board
+        return ser
+
+    def _close_port(self, ser: Any) -> None:
+        with contextlib.suppress(Exception):
+            ser.close()
+        path = lock_path(self.port)
+        try:
+            with open(path) as fh:
+                mine = fh.read().split()[1:2] == [str(os.getpid())]
+            if mine:
+                os.unlink(path)
+        except OSError:
+            pass
+
+    # -- the handshake --------------------------------------------------------------------
+    def _read_lines(self, ser: Any, until: float, want: Callable[[str], bool]) -> str | None:
+        """Read lines until one satisfies ``want`` (returned) or the clock passes ``until``."""
+        buf = b""
+        while self._clock() < until:
+            buf += ser.read(max(1, ser.in_waiting))
+            *lines, buf = buf.split(b"\n")
+            for raw in lines:
+                line = raw.decode("ascii", "replace").rstrip("\r")
+                if want(line):
+                    return line
+        return None
+
+    def _check_version(self, line: str) -> None:
+        got = _proto_of(line)
+        if got is not None and got[1] != P.PROTOCOL_VERSION:
+            fw, proto = got
+            newer = " or update minseg-tui" if proto > P.PROTOCOL_VERSION else ""
+            raise DeviceError(
+                f"{self.port}: the board's firmware ({fw}) speaks protocol {proto}, this "
+                f"minseg-tui speaks protocol {P.PROTOCOL_VERSION}: {FLASH_HINT}{newer}"
+            )
+
+    def _handshake(self, ser: Any) -> P.Ident:
+        """Wait for $BOOT (or any valid line from a running board), then ID and check it."""
+
+        def first(line: str) -> bool:
+            if line.startswith(("$BOOT,", "$ID,")):
+                self._check_version(line)
+            try:
+                P.parse(line)
+            except P.ProtocolError:
+                return False
+            return True
+
+        self._read_lines(ser, self._clock() + self.boot_wait_s, first)
+        for _attempt in range(5):
+            ser.write(P.encode(P.Identify()))
+            self._last_tx = self._clock()
+            got = self._read_lines(ser, self._clock() + self.reply_timeout_s, lambda s: s.startswith("$ID,"))
+            if got is None:
+                continue
+            self._check_version(got)
+            try:
+                ident = P.parse(got)
+            except P.ProtocolError:
+                continue
+            assert isinstance(ident, P.Ident)
+            self._last_rx = self._clock()
+            return ident
+        raise DeviceError(
+            f"no MinSeg answered on {self.port} (no $ID reply to ID): is it the right port, "
+            f"and does the board run the minseg firmware? ({FLASH_HINT})"
+        )
+
+    # -- commands -------------------------------------------------------------------------
+    def command(self, cmd: P.Message | str, timeout: float | None = None) -> P.Message:
+        """Send a command and return the board's reply ($OK, $ERR, $ID or $METER).
+
+        ``cmd`` is a protocol message or a line as a student would type it ("V,2500").
+        Raises DeviceError when not connected or no reply came within the timeout, and
+        InputError for a line that is not a command.
+        """
+        if isinstance(cmd, str):
+            try:
+                cmd = P.parse_command(cmd)
+            except P.ProtocolError as exc:
+                raise InputError("command", None, f"not a MinSeg command: {cmd!r} ({exc})") from None
+        line = P.encode(cmd)
+        name = line[1:].split(b"*")[0].split(b",")[0].decode()
+        waiter = _Waiter("ID" if name == "ID" else name)
+        with self._lock:
+            self._waiters.append(waiter)
+        try:
+            self._write(line)
+        except (SerialException, OSError, DeviceError) as exc:
+            self._drop_waiter(waiter)
+            raise DeviceError(f"{self.port}: cannot send {name}: {exc}") from None
+        if name in ("P", "SUP", "ZM", "STREAM"):
+            self._restore[name] = line.decode().strip()
+        if not waiter.done.wait(self.reply_timeout_s if timeout is None else timeout):
+            self._drop_waiter(waiter)
+            raise DeviceError(f"{self.port}: no reply to {name} from the board")
+        if waiter.reply is None:
+            raise DeviceError(f"{self.port}: the board was disconnected before it answered {name}")
+        return waiter.reply
+
+    def _drop_waiter(self, waiter: _Waiter) -> None:
+        with self._lock, contextlib.suppress(ValueError):
+            self._waiters.remove(waiter)
+
+    def _write(self, data: bytes) -> None:
+        with self._port_lock:
+            ser = self._ser
+            if ser is None:
+                raise DeviceError(f"{self.port} is disconnected")
+            ser.write(data)
+            self._last_tx = self._clock()
+
+    def _ok(self, cmd: P.Message) -> P.Ok:
+        reply = self.command(cmd)
+        if isinstance(reply, P.Err):
+            raise DeviceError(f"{self.port}: the board refused it: {reply.code} {reply.detail}".rstrip())
+        assert isinstance(reply, P.Ok)
+        return reply
+
+    def set_voltage(self, u: float) -> float:
+        """Request u (V) from the next sample on; returns the voltage applied (clamped), V."""
+        return int(self._ok(P.SetVoltage(round(u * 1000))).values[0]) / 1000.0
+
+    def step(self, low: float, high: float, half_period: float, periods: int) -> P.Ok:
+        """Board-timed square wave: levels in V, half period in s, number of periods."""
+        return self._ok(P.Step(round(low * 1000), round(high * 1000), round(half_period * 1000), periods))
+
+    def stop(self) -> P.Ok:
+        """Zero command, abort a step sequence."""
+        return self._ok(P.Stop())
+
+    def set_period(self, ts: float) -> float:
+        """Sample period ts (s); returns the period the board applied, s."""
+        return int(self._ok(P.SetPeriod(round(ts * 1e6))).values[0]) / 1e6
+
+    def zero(self) -> P.Ok:
+        """Zero the encoder count."""
+        return self._ok(P.Zero())
+
+    def set_supply(self, v_supply: float) -> float:
+        """Supply voltage (V) the board divides by for the duty cycle; returns the applied V."""
+        return int(self._ok(P.SetSupply(round(v_supply * 1000))).values[0]) / 1000.0
+
+    def set_zero_mode(self, mode: str) -> P.Ok:
+        """"BRAKE" or "COAST" at zero command."""
+        return self._ok(P.SetZeroMode(mode.upper()))
+
+    def set_stream(self, on: bool) -> P.Ok:
+        """Sample stream on or off."""
+        return self._ok(P.SetStream(on))
+
+    def meter(self) -> MeterReading | None:
+        """The multimeter on M1A/M1B (virtual board only): u_A (V), i (A), R (ohm); else None."""
+        reply = self.command(P.ReadMeter())
+        if not isinstance(reply, P.Meter):
+            return None
+        return MeterReading(u_A=reply.u_mV / 1000.0, i=reply.i_uA / 1e6, R=reply.R_mohm / 1000.0)
+
+    # -- what the caller takes -----------------------------------------------------------
+    def samples(self) -> SampleBatch:
+        """Every sample received since the last call, as one batch (maybe empty)."""
+        with self._lock:
+            rows, self._rows = list(self._rows), deque(maxlen=self._rows.maxlen)
+        return SampleBatch.from_rows(rows)
+
+    def events(self) -> list[LinkEvent]:
+        """Every event since the last call, oldest first."""
+        with self._lock:
+            out = list(self._events)
+            self._events.clear()
+        return out
+
+    def _emit(self, kind: str, message: str) -> None:
+        ev = LinkEvent(kind, message, time.monotonic())
+        with self._lock:
+            self._events.append(ev)
+        if self.on_event is not None:
+            self.on_event(ev)
+
+    # -- the reader ----------------------------------------------------------------------
+    def _run(self) -> None:
+        buf = bytearray()
+        skipping = False
+        while not self._closing.is_set():
+            ser = self._ser
+            if ser is None:
+                if self.reconnect and not self._gave_up:
+                    self._try_reconnect()
+                else:
+                    time.sleep(self.retry_s)
+                buf.clear()
+                skipping = False
+                continue
+            try:
+                data = ser.read(max(1, ser.in_waiting))
+                now = self._clock()
+                if now - self._last_tx >= self.keepalive_s:
+                    self._write(P.encode(P.Ping()))
+            except (SerialException, OSError, DeviceError) as exc:
+                self._lost(exc)
+                continue
+            if data:
+                buf += data
+                while True:
+                    nl = buf.find(b"\n")
+                    if nl < 0:
+                        break
+                    line = bytes(buf[:nl])
+                    del buf[: nl + 1]
+                    if skipping:  # the tail of an over-long line
+                        skipping = False
+                        continue
+                    self._on_line(line)
+                if len(buf) > P.MAX_LINE + 1:
+                    self.stats.corrupt += 1
+                    buf.clear()
+                    skipping = True
+            if now - self._last_rx > self.silence_s and not self._silent:
+                self._silent = True
+                self._emit("silent", f"{self.port}: the board has not answered for {self.silence_s:g} s")
+
+    def _on_line(self, raw: bytes) -> None:
+        self.stats.lines += 1
+        try:
+            msg = P.parse(raw)
+        except P.ProtocolError:
+            if raw.strip(b"\r"):
+                self.stats.corrupt += 1
+            return
+        self._last_rx = self._clock()
+        if self._silent:
+            self._silent = False
+            self._emit("alive", f"{self.port}: the board answers again")
+        if isinstance(msg, P.SampleLine):
+            self._on_sample(msg)
+        elif isinstance(msg, P.Ok | P.Err | P.Ident | P.Meter):
+            self._on_reply(msg)
+        elif isinstance(msg, P.EvWatchdog):
+            self._emit("watchdog", "the board's watchdog stopped the motor (host silent > 1 s)")
+        elif isinstance(msg, P.EvStep):
+            self._emit("step", f"step edge {msg.k} of {msg.n}")
+        elif isinstance(msg, P.EvStepDone):
+            self._emit("stepdone", "step sequence done")
+        elif isinstance(msg, P.Boot):
+            self._new_epoch()
+            self._emit("boot", f"{self.port}: the board restarted ({msg.fw})")
+
+    def _on_reply(self, msg: P.Message) -> None:
+        if isinstance(msg, P.Ok):
+            name = msg.command
+        elif isinstance(msg, P.Ident):
+            name = "ID"
+        elif isinstance(msg, P.Meter):
+            name = "METER"
+        else:
+            assert isinstance(msg, P.Err)
+            name = msg.detail
+        with self._lock:
+            target = next((w for w in self._waiters if w.name == name), None)
+            if target is None and isinstance(msg, P.Err) and self._waiters:
+                target = self._waiters[0]
+            if target is not None:
+                self._waiters.remove(target)
+        if target is not None:
+            target.reply = msg
+            target.done.set()
+
+    def _new_epoch(self) -> None:
+        self._epoch += 1
+        self._raw = None
+
+    def _on_sample(self, s: P.SampleLine) -> None:
+        t_host = time.monotonic()
+        if self._raw is not None:
+            dseq = (s.seq - self._raw[0]) % U32
+            if dseq == 0 or dseq >= U32 // 2:  # a repeat or a jump back: a reset we missed
+                if dseq == 0:
+                    self.stats.corrupt += 1
+                    return
+                self._new_epoch()
+        if self._raw is None:
+            if self._last is None:
+                seq, t_us = s.seq, s.t_us
+            else:
+                gap = max(round((t_host - self._last[2]) * 1e6), 1)
+                seq, t_us = self._last[0] + 1, self._last[1] + gap
+        else:
+            assert self._last is not None
+            dseq = (s.seq - self._raw[0]) % U32
+            self.stats.dropped += dseq - 1
+            seq = self._last[0] + dseq
+            t_us = self._last[1] + (s.t_us - self._raw[1]) % U32
+        self._raw = (s.seq, s.t_us)
+        self._last = (seq, t_us, t_host)
+        with self._lock:
+            if len(self._rows) == self._rows.maxlen:
+                self.stats.overflow += 1
+            self._rows.append((seq, t_us, s.count, s.u_mV, self._epoch, t_host))
+        self.stats.samples += 1
+
+    # -- losing and finding the board -----------------------------------------------------
+    def _fail_waiters(self) -> None:
+        with self._lock:
+            waiters, self._waiters = list(self._waiters), deque()
+        for w in waiters:
+            w.done.set()
+
+    def _lost(self, exc: BaseException) -> None:
+        with self._port_lock:
+            ser, self._ser = self._ser, None
+        if ser is not None:
+            self._close_port(ser)
+        self._fail_waiters()
+        self._emit(
+            "disconnected",
+            f"{self.port}: connection lost ({exc}); everything recorded so far is kept; "
+            "waiting for the board to come back",
+        )
+
+    def _try_reconnect(self) -> None:
+        time.sleep(self.retry_s)
+        paths = [self.port]
+        if self.vid_pid is not None:
+            found = discovery.find_board(vid_pid=self.vid_pid)
+            if found is not None and found.device != self.port:
+                paths.append(found.device)
+        for path in paths:
+            try:
+                ser = self._open_port(path)
+            except DeviceError:
+                continue
+            try:
+                ident = self._handshake(ser)
+            except DeviceError as exc:
+                self._close_port(ser)
+                if "protocol" in str(exc):
+                    self._gave_up = True
+                    self._emit("error", str(exc))
+                return
+            except (SerialException, OSError):
+                self._close_port(ser)
+                continue
+            self.port = path
+            self.ident = ident
+            self._new_epoch()
+            with self._port_lock:
+                self._ser = ser
+            for line in self._restore.values():
+                with contextlib.suppress(SerialException, OSError, DeviceError):
+                    self._write((line + "\n").encode())
+            self.stats.reconnects += 1
+            self._silent = False
+            self._emit("connected", f"{path}: reconnected to {ident.board} {ident.fw}")
+            return

@@ -1,0 +1,428 @@
+"""Protocol 1 of the MinSeg serial link (firmware/PROTOCOL.md): pure parse and format.
+
+Every line, in both directions, is a small frozen dataclass. The lines are data: the
+table ``LINES`` names each kind (its NAME, for ``$EV`` its event tag, its direction and
+its typed fields); one generic parser and one generic formatter serve them all.
+
+Units as on the wire: voltages in mV, times in us or ms as the field names say,
+currents in uA, resistances in milliohm.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass, fields
+from typing import Literal
+
+PROTOCOL_VERSION = 1
+"""The protocol version this host speaks (the `proto` field of $BOOT and $ID)."""
+
+BAUD = 500000
+"""Line rate of the link, baud (8N1)."""
+
+MAX_LINE = 80
+"""Longest line in bytes (without the newline); longer lines are discarded whole."""
+
+ERR_CODES = ("CHECKSUM", "UNKNOWN", "ARGS", "RANGE", "BUSY")
+ZERO_MODES = ("BRAKE", "COAST")
+
+Direction = Literal["board", "host"]
+
+
+class ProtocolError(ValueError):
+    """A line that is not a valid protocol-1 line.
+
+    ``code`` is the $ERR code a board answers with (CHECKSUM, UNKNOWN, ARGS, RANGE);
+    ``detail`` names the command when known.
+    """
+
+    def __init__(self, code: str, detail: str = "", why: str = "") -> None:
+        super().__init__(f"{code}{',' + detail if detail else ''}{': ' + why if why else ''}")
+        self.code = code
+        self.detail = detail
+        self.why = why
+
+
+# -- field types: (parse, format) -------------------------------------------------------
+_INT = re.compile(r"-?[0-9]{1,10}\Z")
+_NAME = re.compile(r"[A-Z]{1,16}\Z")
+_TEXT = re.compile(r"[ -~]*\Z")
+
+
+def _int_in(lo: int, hi: int) -> Callable[[str], int]:
+    def parse(s: str) -> int:
+        if not _INT.match(s):
+            raise ProtocolError("ARGS", why=f"not an integer: {s!r}")
+        v = int(s)
+        if not lo <= v <= hi:
+            raise ProtocolError("RANGE", why=f"{v} outside {lo}..{hi}")
+        return v
+
+    return parse
+
+
+def _choice(options: tuple[str, ...]) -> Callable[[str], str]:
+    def parse(s: str) -> str:
+        if s not in options:
+            raise ProtocolError("ARGS", why=f"expected one of {'/'.join(options)}, got {s!r}")
+        return s
+
+    return parse
+
+
+def _text(s: str) -> str:
+    if not _TEXT.match(s):
+        raise ProtocolError("ARGS", why=f"not printable text: {s!r}")
+    return s
+
+
+def _bit(s: str) -> bool:
+    if s not in ("0", "1"):
+        raise ProtocolError("ARGS", why=f"expected 0 or 1, got {s!r}")
+    return s == "1"
+
+
+def _name(s: str) -> str:
+    if not _NAME.match(s):
+        raise ProtocolError("ARGS", why=f"not a command name: {s!r}")
+    return s
+
+
+def _fmt_bit(v: object) -> str:
+    return "1" if v else "0"
+
+
+_I32 = (-(2**31), 2**31 - 1)
+FIELD_TYPES: dict[str, tuple[Callable[[str], object], Callable[[object], str]]] = {
+    "int": (_int_in(*_I32), str),
+    "u32": (_int_in(0, 2**32 - 1), str),
+    "i32": (_int_in(*_I32), str),
+    "text": (_text, str),
+    "name": (_name, str),
+    "zero": (_choice(ZERO_MODES), str),
+    "err": (_choice(ERR_CODES), str),
+    "bit": (_bit, _fmt_bit),
+}
+
+
+
+
+# -- the lines --------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Boot:
+    """$BOOT: printed once after reset."""
+
+    fw: str
+    proto: int
+
+
+@dataclass(frozen=True)
+class Ident:
+    """$ID: reply to ID. period_us in us, vsupply_mV in mV, zero BRAKE or COAST."""
+
+    fw: str
+    proto: int
+    board: str
+    cpr: int
+    period_us: int
+    vsupply_mV: int
+    zero: str
+
+
+@dataclass(frozen=True)
+class SampleLine:
+    """$S: one sample. seq and t_us wrap as uint32; count int32; u_mV in force from now on."""
+
+    seq: int
+    t_us: int
+    count: int
+    u_mV: int
+
+
+@dataclass(frozen=True)
+class Ok:
+    """$OK: a command was accepted; values are the applied ones, as text."""
+
+    command: str
+    values: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Err:
+    """$ERR: a command was refused; nothing changed."""
+
+    code: str
+    detail: str = ""
+
+
+@dataclass(frozen=True)
+class EvWatchdog:
+    """$EV,WDOG: the host was silent for more than 1000 ms; the motor was stopped."""
+
+
+@dataclass(frozen=True)
+class EvStep:
+    """$EV,STEP: a step sequence reached edge k of n."""
+
+    k: int
+    n: int
+
+
+@dataclass(frozen=True)
+class EvStepDone:
+    """$EV,STEPDONE: the step sequence finished; the motor is at the low level."""
+
+
+@dataclass(frozen=True)
+class Meter:
+    """$METER (virtual board only): u_A in mV, i in uA, R in milliohm, as a multimeter reads."""
+
+    u_mV: int
+    i_uA: int
+    R_mohm: int
+
+
+# host commands
+@dataclass(frozen=True)
+class Identify:
+    """ID: ask for $ID."""
+
+
+@dataclass(frozen=True)
+class Ping:
+    """PING: keep-alive."""
+
+
+@dataclass(frozen=True)
+class SetVoltage:
+    """V: requested voltage in mV (aborts a step sequence)."""
+
+    mV: int
+
+
+@dataclass(frozen=True)
+class Step:
+    """STEP: board-timed square wave, levels in mV, half period in ms, n periods."""
+
+    low_mV: int
+    high_mV: int
+    half_ms: int
+    n: int
+
+
+@dataclass(frozen=True)
+class Stop:
+    """STOP: zero command, abort the step sequence."""
+
+
+@dataclass(frozen=True)
+class SetPeriod:
+    """P: sample period in us."""
+
+    period_us: int
+
+
+@dataclass(frozen=True)
+class Zero:
+    """Z: zero the encoder count."""
+
+
+@dataclass(frozen=True)
+class SetSupply:
+    """SUP: supply voltage in mV used for duty = u / V_supply."""
+
+    mV: int
+
+
+@dataclass(frozen=True)
+class SetZeroMode:
+    """ZM: what a zero command does, BRAKE or COAST."""
+
+    mode: str
+
+
+@dataclass(frozen=True)
+class SetStream:
+    """STREAM: sample stream on or off."""
+
+    on: bool
+
+
+@dataclass(frozen=True)
+class ReadMeter:
+    """METER (virtual board only): ask for a $METER reading."""
+
+
+Message = (
+    Boot | Ident | SampleLine | Ok | Err | EvWatchdog | EvStep | EvStepDone | Meter
+    | Identify | Ping | SetVoltage | Step | Stop | SetPeriod | Zero | SetSupply
+    | SetZeroMode | SetStream | ReadMeter
+)
+
+
+@dataclass(frozen=True)
+class LineKind:
+    """One kind of line: NAME, event tag (for $EV), direction, class and field types.
+
+    A field type ending in ``?`` is an optional last field; ``*`` collects the rest.
+    """
+
+    name: str
+    tag: str | None
+    direction: Direction
+    cls: type
+    types: tuple[str, ...]
+
+
+LINES: tuple[LineKind, ...] = (
+    LineKind("BOOT", None, "board", Boot, ("text", "int")),
+    LineKind("ID", None, "board", Ident, ("text", "int", "text", "int", "int", "int", "zero")),
+    LineKind("S", None, "board", SampleLine, ("u32", "u32", "i32", "int")),
+    LineKind("OK", None, "board", Ok, ("name", "text*")),
+    LineKind("ERR", None, "board", Err, ("err", "text?")),
+    LineKind("EV", "WDOG", "board", EvWatchdog, ()),
+    LineKind("EV", "STEP", "board", EvStep, ("int", "int")),
+    LineKind("EV", "STEPDONE", "board", EvStepDone, ()),
+    LineKind("METER", None, "board", Meter, ("int", "int", "int")),
+    LineKind("ID", None, "host", Identify, ()),
+    LineKind("PING", None, "host", Ping, ()),
+    LineKind("V", None, "host", SetVoltage, ("int",)),
+    LineKind("STEP", None, "host", Step, ("int", "int", "int", "int")),
+    LineKind("STOP", None, "host", Stop, ()),
+    LineKind("P", None, "host", SetPeriod, ("int",)),
+    LineKind("Z", None, "host", Zero, ()),
+    LineKind("SUP", None, "host", SetSupply, ("int",)),
+    LineKind("ZM", None, "host", SetZeroMode, ("zero",)),
+    LineKind("STREAM", None, "host", SetStream, ("bit",)),
+    LineKind("METER", None, "host", ReadMeter, ()),
+)
+
+_BY_KEY: dict[tuple[Direction, str, str | None], LineKind] = {
+    (k.direction, k.name, k.tag): k for k in LINES
+}
+_BY_CLASS: dict[type, LineKind] = {k.cls: k for k in LINES}
+
+
+# -- frames -----------------------------------------------------------------------------
+def checksum(body: str | bytes) -> int:
+    """XOR of every byte of ``body`` (the text between `$` and `*`)."""
+    data = body.encode("ascii") if isinstance(body, str) else body
+    cs = 0
+    for b in data:
+        cs ^= b
+    return cs
+
+
+def frame(name: str, *values: str) -> str:
+    """``$NAME,v1,...*CS`` (no newline)."""
+    body = ",".join((name, *values))
+    return f"${body}*{checksum(body):02X}"
+
+
+def split_frame(line: str | bytes, require_checksum: bool = True) -> list[str]:
+    """Check a line's frame and checksum; return [NAME, field, ...].
+
+    Raises ProtocolError: CHECKSUM for a missing (when required) or wrong checksum,
+    ARGS for anything else malformed. A `\\r` before the end is ignored; the `$` is
+    optional only when the checksum is (host commands).
+    """
+    if isinstance(line, bytes):
+        try:
+            line = line.decode("ascii")
+        except UnicodeDecodeError:
+            raise ProtocolError("ARGS", why="not ASCII") from None
+    line = line.rstrip("\n")
+    if line.endswith("\r"):
+        line = line[:-1]
+    if len(line) > MAX_LINE:
+        raise ProtocolError("ARGS", why="line too long")
+    if line.startswith("$"):
+        line = line[1:]
+    elif require_checksum:
+        raise ProtocolError("ARGS", why="no '$'")
+    if "$" in line:
+        raise ProtocolError("ARGS", why="'$' inside a line")
+    star = line.find("*")
+    if star >= 0:
+        body, cs = line[:star], line[star + 1 :]
+        if len(cs) != 2 or any(c not in "0123456789ABCDEF" for c in cs):
+            raise ProtocolError("CHECKSUM", why=f"bad checksum field {cs!r}")
+        if int(cs, 16) != checksum(body):
+            raise ProtocolError("CHECKSUM", why=f"checksum {cs} != {checksum(body):02X}")
+    elif require_checksum:
+        raise ProtocolError("CHECKSUM", why="no checksum")
+    else:
+        body = line
+    if not _TEXT.match(body) or not body:
+        raise ProtocolError("ARGS", why="empty or not printable")
+    return body.split(",")
+
+
+def _build(kind: LineKind, values: list[str]) -> Message:
+    types = kind.types
+    out: list[object] = []
+    name = kind.name
+    rest = types and types[-1].endswith("*")
+    optional = types and types[-1].endswith("?")
+    fixed = types[:-1] if (rest or optional) else types
+    if len(values) < len(fixed) or (not rest and len(values) > len(types)):
+        raise ProtocolError("ARGS", name, f"expected {len(types)} fields, got {len(values)}")
+    for t, v in zip(fixed, values, strict=False):
+        out.append(FIELD_TYPES[t][0](v))
+    extra = values[len(fixed) :]
+    if rest:
+        parse = FIELD_TYPES[types[-1][:-1]][0]
+        out.append(tuple(parse(v) for v in extra))
+    elif optional and extra:
+        out.append(FIELD_TYPES[types[-1][:-1]][0](extra[0]))
+    return kind.cls(*out)
+
+
+def parse(line: str | bytes, direction: Direction = "board") -> Message:
+    """Parse one line sent in ``direction`` ("board": board to host, "host": a command).
+
+    Board lines must carry a valid checksum; host commands may omit `$` and `*CS`.
+    Raises ProtocolError with the $ERR code a board would answer.
+    """
+    parts = split_frame(line, require_checksum=(direction == "board"))
+    name, values = parts[0], parts[1:]
+    if not _NAME.match(name):
+        raise ProtocolError("UNKNOWN", why=f"not a line name: {name!r}")
+    kind = _BY_KEY.get((direction, name, None))
+    if kind is None and values:
+        kind = _BY_KEY.get((direction, name, values[0]))
+        values = values[1:]
+    if kind is None:
+        raise ProtocolError("UNKNOWN", name)
+    try:
+        return _build(kind, values)
+    except ProtocolError as exc:
+        raise ProtocolError(exc.code, name, exc.why) from None
+
+
+def parse_command(line: str | bytes) -> Message:
+    """Parse a host command as the board does (see :func:`parse`)."""
+    return parse(line, "host")
+
+
+def format_line(msg: Message) -> str:
+    """The line for a message, with `$` and checksum, without the newline."""
+    kind = _BY_CLASS[type(msg)]
+    values: list[str] = [kind.tag] if kind.tag else []
+    for f, t in zip(fields(msg), kind.types, strict=True):
+        v = getattr(msg, f.name)
+        fmt = FIELD_TYPES[t.rstrip("*?")][1]
+        if t.endswith("*"):
+            values.extend(fmt(x) for x in v)
+        elif t.endswith("?"):
+            if v != "":
+                values.append(fmt(v))
+        else:
+            values.append(fmt(v))
+    return frame(kind.name, *values)
+
+
+def encode(msg: Message) -> bytes:
+    """The bytes on the wire for a message: its line and a newline."""
+    return (format_line(msg) + "\n").encode("ascii")

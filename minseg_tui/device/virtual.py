@@ -1,0 +1,554 @@
+"""The virtual MinSeg: the board's firmware behaviour (protocol 1) with the plant behind it.
+
+:class:`VirtualBoard` is the firmware as a state machine on a board clock it does not
+own: a driver moves it forward with :meth:`VirtualBoard.run_until` (board time in s) and
+passes host bytes in with :meth:`VirtualBoard.feed`; the board's output lines collect in
+an outbox read with :meth:`VirtualBoard.take_output`. Two drivers exist: the pyserial URL
+``minseg://`` (real-time or virtual clock, :mod:`minseg_tui.device.protocol_minseg`) and
+the pseudo-terminal server (:mod:`minseg_tui.device.ptyserver`).
+
+Semantics follow firmware/PROTOCOL.md, with these choices written down:
+
+- A voltage command (``V``, ``STOP``) takes effect at the next sample instant, so the
+  ``u_mV`` of every ``$S`` line is exactly the command in force from that sample on.
+  The watchdog stops the motor at once (safety first) and the next ``$S`` shows 0.
+- ``STEP`` starts at the next sample instant with edge 1 (high); each half period is
+  ``round(half_ms / period)`` samples (at least 1), so every edge falls on a sample.
+  The ``$S`` line of an edge comes before its ``$EV,STEP``.
+- ``$EV,WDOG`` is sent once per silence, and only when there was something to stop
+  (a non-zero command or a step sequence).
+- The shortest sample period is 1000 us here (the real board's floor is 2000 us).
+- Duty = |u| / V_supply (the ``SUP`` setting, clamped to 1); the bridge then puts
+  duty x the true supply (``PlantParams.v_supply``) into the driver model, so a wrong
+  ``SUP`` setting shows as a wrong u_A, as on the real board.
+- The extension ``METER`` answers ``$METER,<u_mV>,<i_uA>,<R_mohm>``: the multimeter.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import threading
+import time
+from collections import deque
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from minseg_tui.device import protocol as P
+from minseg_tui.model.motor import MotorParams
+from minseg_tui.model.plant import MeterReading, Plant, PlantParams
+from minseg_tui.units import KA_OVER_KV
+
+FIRMWARE = "minseg-virtual 1.0.0"
+BOARD = "Virtual"
+WATCHDOG_S = 1.0
+PERIOD_LIMITS_US = (1000, 100000)
+HALF_LIMITS_MS = (20, 60000)
+N_LIMITS = (1, 1000)
+SUPPLY_LIMITS_MV = (3000, 12000)
+
+
+@dataclass
+class Faults:
+    """Faults to inject, for tests and practice. Probabilities are per output line.
+
+    garbage: random bytes before a line; truncate: a line cut short; bad_checksum: a
+    digit changed after the checksum was computed; drop: a sample line lost;
+    silent: the board stops answering (no output at all, commands ignored).
+    """
+
+    garbage: float = 0.0
+    truncate: float = 0.0
+    bad_checksum: float = 0.0
+    drop: float = 0.0
+    silent: bool = False
+
+
+@dataclass
+class VirtualSettings:
+    """Everything about a virtual board: the plant, its seed and what the firmware reports.
+
+    jitter_us: loop latency of each sample, uniform in [0, jitter_us] us (seeded);
+    boot_ms: delay from reset to $BOOT, ms; micros0 / seq0: the board's micros() and
+    sequence number at reset (to test uint32 wrap); proto: the protocol version it
+    claims (set it wrong to test the handshake); sup_mV: SUP setting after reset, mV.
+    """
+
+    params: PlantParams = field(default_factory=PlantParams)
+    seed: int = 0
+    jitter_us: float = 40.0
+    boot_ms: float = 0.0
+    micros0: int = 0
+    seq0: int = 0
+    proto: int = P.PROTOCOL_VERSION
+    sup_mV: int = 5000
+    faults: Faults = field(default_factory=Faults)
+
+
+def _clamp(v: int, lo: int, hi: int) -> int:
+    return max(lo, min(hi, v))
+
+
+# -- options by name: the URL query, the `sim` command line -----------------------------
+@dataclass(frozen=True)
+class Option:
+    """A setting reachable by name: where it goes (dotted path), its type and help."""
+
+    path: str
+    kind: type
+    help: str
+
+
+OPTIONS: dict[str, Option] = {
+    "seed": Option("seed", int, "random seed (noise, jitter, faults)"),
+    "R": Option("params.motor.R", float, "armature resistance R, ohm"),
+    "kv": Option("params.motor.k_v", float, "back-emf constant k_v, V s/rad (k_a = 0.65 k_v)"),
+    "ka": Option("params.motor.k_a", float, "torque constant k_a, N m/A"),
+    "f": Option("params.motor.f", float, "viscous friction f, N m s/rad"),
+    "J": Option("params.motor.J", float, "inertia J, kg m^2"),
+    "coulomb": Option("params.tau_c", float, "dry (Coulomb) friction torque, N m (0: none)"),
+    "drop": Option("params.v_drop", float, "voltage the motor driver loses, V"),
+    "supply": Option("params.v_supply", float, "true supply voltage, V"),
+    "coast": Option("params.zero_mode", bool, "coast at zero command after reset (not brake)"),
+    "deadtime": Option("params.dead_time", float, "dead time from command to motor, s"),
+    "pole": Option("params.T2", float, "extra pole on the motor voltage, time constant s"),
+    "jitter": Option("jitter_us", float, "loop latency of each sample, up to us"),
+    "boot": Option("boot_ms", float, "delay from reset to $BOOT, ms"),
+    "micros0": Option("micros0", int, "micros() at reset, us (to test wrap)"),
+    "seq0": Option("seq0", int, "first sequence number (to test wrap)"),
+    "proto": Option("proto", int, "protocol version the board claims"),
+    "garbage": Option("faults.garbage", float, "fault: probability of garbage bytes per line"),
+    "truncate": Option("faults.truncate", float, "fault: probability of a truncated line"),
+    "badcs": Option("faults.bad_checksum", float, "fault: probability of a bad checksum"),
+    "lose": Option("faults.drop", float, "fault: probability a sample line is lost"),
+}
+
+
+def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSettings:
+    """Settings from option names (see OPTIONS) to values; raises ValueError naming a bad one."""
+    flat: dict[str, object] = {}
+    for name, raw in values.items():
+        opt = OPTIONS.get(name)
+        if opt is None:
+            raise ValueError(f"unknown virtual board option {name!r} (known: {', '.join(OPTIONS)})")
+        try:
+            if opt.kind is bool:
+                v: object = raw if isinstance(raw, bool) else str(raw).lower() in ("1", "true", "yes", "")
+            else:
+                v = opt.kind(raw)
+        except (TypeError, ValueError):
+            what = {int: "an integer", float: "a number", bool: "true or false"}[opt.kind]
+            raise ValueError(f"option {name}: expected {what}, got {raw!r}") from None
+        if opt.path == "params.zero_mode":
+            v = "coast" if v else "brake"
+        flat[opt.path] = v
+    motor = {k.split(".")[-1]: v for k, v in flat.items() if k.startswith("params.motor.")}
+    if "k_v" in motor and "k_a" not in motor:
+        motor["k_a"] = KA_OVER_KV * float(motor["k_v"])  # type: ignore[arg-type]
+    base = PlantParams()
+    plant_kw = {k.split(".")[1]: v for k, v in flat.items() if k.startswith("params.") and "motor" not in k}
+    params = dataclasses.replace(base, motor=dataclasses.replace(base.motor, **motor), **plant_kw)
+    faults = Faults(**{k.split(".")[1]: v for k, v in flat.items() if k.startswith("faults.")})
+    top = {k: v for k, v in flat.items() if "." not in k}
+    return VirtualSettings(params=params, faults=faults, **top)  # type: ignore[arg-type]
+
+
+# -- the board --------------------------------------------------------------------------
+@dataclass
+class _StepSeq:
+    low: int
+    high: int
+    half: int  # samples per half period
+    n: int
+    i: int = 0  # samples since the start
+
+
+class VirtualBoard:
+    """The MinSeg firmware, simulated. Board time ``now`` in s since the board was made.
+
+    Thread-safe: every public method takes the board's lock.
+    """
+
+    def __init__(self, settings: VirtualSettings | None = None) -> None:
+        self.settings = settings or VirtualSettings()
+        s = self.settings
+        self.plant = Plant(s.params, seed=s.seed)
+        self._rng = np.random.default_rng([s.seed, 1])  # loop jitter
+        self._fault_rng = np.random.default_rng([s.seed, 2])
+        self.lock = threading.RLock()
+        self.changed = threading.Condition(self.lock)
+        self.now = 0.0
+        self._out = bytearray()
+        self._inbuf = bytearray()
+        self.lines_out = 0
+        self.commands_in = 0
+        self.truth: deque[P.SampleLine] = deque(maxlen=200_000)  # every sample, before faults
+        self.plugged = True  # the USB cable (URL driver: opening an unplugged board fails)
+        self.attached = False  # a port has it open (one program per board)
+        self.reset()
+
+    @property
+    def faults(self) -> Faults:
+        """The faults in force (change the fields at any time)."""
+        return self.settings.faults
+
+    # -- reset and time ------------------------------------------------------------------
+    def reset(self) -> None:
+        """A reset (power-up or DTR on open): firmware state back to defaults, motor off.
+
+        The wheel keeps its physical state; the encoder count restarts at 0.
+        """
+        with self.lock:
+            s = self.settings
+            self.powered = True
+            self._boot_at = self.now
+            self._boot_due: float | None = self.now + s.boot_ms / 1000.0
+            self.period_us = 25000
+            self.sup_mV = s.sup_mV
+            self.stream = True
+            self.u_mV = 0
+            self._pending_mV: int | None = None
+            self._step: _StepSeq | None = None
+            self._seq = s.seq0 & 0xFFFFFFFF
+            self._count0 = self.plant.count
+            self._last_host = self.now
+            self._wdog_fired = False
+            self._inbuf.clear()
+            self._out.clear()  # what was not yet sent is lost in a reset
+            self._set_zero_mode("COAST" if s.params.zero_mode == "coast" else "BRAKE")
+            self._drive(0)
+            self._next_nominal = self._boot_due
+            self._next_sample = self._boot_due + self._jitter()
+
+    def _jitter(self) -> float:
+        j = self.settings.jitter_us
+        return float(self._rng.uniform(0.0, j)) * 1e-6 if j > 0 else 0.0
+
+    @property
+    def booted(self) -> bool:
+        """True once $BOOT has been sent (commands before it are lost, as in a bootloader)."""
+        return self._boot_due is None
+
+    def micros(self, t: float | None = None) -> int:
+        """The board's micros() at board time t (default now): uint32, 4 us resolution."""
+        tt = self.now if t is None else t
+        us = math.floor((tt - self._boot_at) * 1e6 / 4.0 + 1e-6) * 4 + self.settings.micros0
+        return us & 0xFFFFFFFF
+
+    def next_event(self) -> float:
+        """Board time of the next thing the board will do by itself, s."""
+        with self.lock:
+            if not self.powered:
+                return math.inf
+            t = self._boot_due if self._boot_due is not None else self._next_sample
+            if self._watchdog_armed():
+                t = min(t, self._last_host + WATCHDOG_S + 1e-6)
+            return t
+
+    def _watchdog_armed(self) -> bool:
+        return not self._wdog_fired and (
+            self.u_mV != 0 or self._step is not None or bool(self._pending_mV)
+        )
+
+    def run_until(self, t: float, stop_on_output: bool = False) -> None:
+        """Move board time forward to t (s), doing everything due on the way.
+
+        With ``stop_on_output`` it stops early, at the first event that produced output.
+        """
+        with self.lock:
+            while True:
+                nxt = self.next_event()
+                if nxt > t:
+                    break
+                self._advance_plant(nxt)
+                self.now = max(self.now, nxt)
+                before = len(self._out)
+                self._do_event()
+                if stop_on_output and len(self._out) > before:
+                    self.changed.notify_all()
+                    return
+            if t > self.now:
+                self._advance_plant(t)
+                self.now = t
+            if self._out:
+                self.changed.notify_all()
+
+    def _advance_plant(self, t: float) -> None:
+        if t > self.plant.t:
+            self.plant.advance(t - self.plant.t)
+
+    def _do_event(self) -> None:
+        now = self.now
+        if self._boot_due is not None and now >= self._boot_due:
+            self._boot_due = None
+            self._emit(P.Boot(FIRMWARE, self.settings.proto))
+            return
+        if self._watchdog_armed() and now >= self._last_host + WATCHDOG_S:
+            self._wdog_fired = True
+            self._step = None
+            self._pending_mV = None
+            self.u_mV = 0
+            self._drive(0)
+            self._emit(P.EvWatchdog())
+            return
+        if now >= self._next_sample:
+            self._sample()
+
+    def _sample(self) -> None:
+        count = self.plant.count - self._count0
+        count = ((count + 2**31) & 0xFFFFFFFF) - 2**31
+        events: list[P.Message] = []
+        step = self._step
+        if step is not None:
+            if step.i == 2 * step.n * step.half:
+                self.u_mV = step.low
+                self._step = None
+                events.append(P.EvStepDone())
+            elif step.i % step.half == 0:
+                edge = step.i // step.half
+                if edge % 2 == 0:
+                    self.u_mV = step.high
+                    events.append(P.EvStep(edge // 2 + 1, step.n))
+                else:
+                    self.u_mV = step.low
+            step.i += 1
+        elif self._pending_mV is not None:
+            self.u_mV = self._pending_mV
+            self._pending_mV = None
+        self._drive(self.u_mV)
+        t_us = self.micros(self._next_sample)
+        self.truth.append(P.SampleLine(self._seq, t_us, count, self.u_mV))
+        if self.stream and not (self.faults.drop and self._fault_rng.random() < self.faults.drop):
+            self._emit(P.SampleLine(self._seq, t_us, count, self.u_mV))
+        self._seq = (self._seq + 1) & 0xFFFFFFFF
+        for ev in events:
+            self._emit(ev)
+        self._next_nominal += self.period_us * 1e-6
+        self._next_sample = max(self._next_nominal + self._jitter(), self.now + 1e-9)
+
+    # -- the motor driver ----------------------------------------------------------------
+    def _drive(self, u_mV: int) -> None:
+        """Duty = |u| / V_supply (setting), clamped to 1; the bridge gives duty x true supply."""
+        duty = min(abs(u_mV) / self.sup_mV, 1.0)
+        self.plant.set_command(math.copysign(duty * self.plant.params.v_supply, u_mV) if u_mV else 0.0)
+
+    def _set_zero_mode(self, mode: str) -> None:
+        self.zero_mode = mode
+        zm = "coast" if mode == "COAST" else "brake"
+        if self.plant.params.zero_mode != zm:
+            self.plant.params = dataclasses.replace(self.plant.params, zero_mode=zm)
+
+    # -- output --------------------------------------------------------------------------
+    def _emit(self, msg: P.Message) -> None:
+        if self.faults.silent:
+            return
+        line = P.format_line(msg)
+        f, rng = self.faults, self._fault_rng
+        if f.bad_checksum and rng.random() < f.bad_checksum:
+            digits = [i for i, c in enumerate(line[:-3]) if c.isdigit()]
+            if digits:
+                i = digits[int(rng.integers(len(digits)))]
+                line = line[:i] + str((int(line[i]) + 1) % 10) + line[i + 1 :]
+        if f.truncate and rng.random() < f.truncate:
+            line = line[: int(rng.integers(1, len(line)))]
+        data = line.encode("ascii") + b"\n"
+        if f.garbage and rng.random() < f.garbage:
+            data = bytes(rng.integers(0, 256, int(rng.integers(1, 12))).astype(np.uint8)) + data
+        self._out += data
+        self.lines_out += 1
+
+    def take_output(self, max_bytes: int | None = None) -> bytes:
+        """Remove and return what the board has sent (up to max_bytes)."""
+        with self.lock:
+            n = len(self._out) if max_bytes is None else min(max_bytes, len(self._out))
+            data = bytes(self._out[:n])
+            del self._out[:n]
+            return data
+
+    @property
+    def pending_output(self) -> int:
+        """Bytes sent by the board and not yet taken."""
+        return len(self._out)
+
+    # -- input ---------------------------------------------------------------------------
+    def feed(self, data: bytes) -> None:
+        """Bytes from the host, received at board time ``now``; complete lines are served."""
+        with self.lock:
+            if not self.powered or not self.booted or self.faults.silent:
+                return  # a bootloader or a hung board hears nothing
+            self._inbuf += data
+            while True:
+                nl = self._inbuf.find(b"\n")
+                if nl < 0:
+                    if len(self._inbuf) > P.MAX_LINE + 1:
+                        self._inbuf.clear()  # too long: discard; resynchronise at the next \n
+                        self._overlong = True
+                    break
+                raw = bytes(self._inbuf[:nl])
+                del self._inbuf[: nl + 1]
+                if getattr(self, "_overlong", False) or len(raw.rstrip(b"\r")) > P.MAX_LINE:
+                    self._overlong = False
+                    continue
+                self._serve(raw)
+
+    def _serve(self, raw: bytes) -> None:
+        if not raw.strip(b"\r"):
+            return
+        try:
+            cmd = P.parse_command(raw)
+        except P.ProtocolError as exc:
+            self._emit(P.Err(exc.code, exc.detail))
+            return
+        self.commands_in += 1
+        self._last_host = self.now
+        self._wdog_fired = False
+        reply = self._HANDLERS[type(cmd)](self, cmd)
+        self._emit(reply)
+        self.changed.notify_all()
+
+    def _abort_step(self) -> None:
+        self._step = None
+
+    def _cmd_id(self, _c: P.Identify) -> P.Message:
+        return P.Ident(
+            FIRMWARE, self.settings.proto, BOARD, self.plant.params.cpr, self.period_us,
+            self.sup_mV, self.zero_mode,
+        )
+
+    def _cmd_ping(self, _c: P.Ping) -> P.Message:
+        return P.Ok("PING")
+
+    def _cmd_v(self, c: P.SetVoltage) -> P.Message:
+        mv = _clamp(c.mV, -self.sup_mV, self.sup_mV)
+        self._abort_step()
+        self._pending_mV = mv
+        return P.Ok("V", (str(mv),))
+
+    def _cmd_step(self, c: P.Step) -> P.Message:
+        if self._step is not None:
+            return P.Err("BUSY", "STEP")
+        lo = _clamp(c.low_mV, -self.sup_mV, self.sup_mV)
+        hi = _clamp(c.high_mV, -self.sup_mV, self.sup_mV)
+        half = _clamp(c.half_ms, *HALF_LIMITS_MS)
+        n = _clamp(c.n, *N_LIMITS)
+        samples = max(1, round(half * 1000 / self.period_us))
+        self._pending_mV = None
+        self._step = _StepSeq(lo, hi, samples, n)
+        return P.Ok("STEP", (str(lo), str(hi), str(half), str(n)))
+
+    def _cmd_stop(self, _c: P.Stop) -> P.Message:
+        self._abort_step()
+        self._pending_mV = 0
+        return P.Ok("STOP")
+
+    def _cmd_p(self, c: P.SetPeriod) -> P.Message:
+        us = _clamp((c.period_us + 500) // 1000 * 1000, *PERIOD_LIMITS_US)  # half up
+        self._abort_step()
+        last = self._next_nominal - self.period_us * 1e-6
+        self.period_us = us
+        self._next_nominal = max(last + us * 1e-6, self.now)
+        self._next_sample = self._next_nominal + self._jitter()
+        return P.Ok("P", (str(us),))
+
+    def _cmd_z(self, _c: P.Zero) -> P.Message:
+        self._count0 = self.plant.count
+        return P.Ok("Z")
+
+    def _cmd_sup(self, c: P.SetSupply) -> P.Message:
+        self.sup_mV = _clamp(c.mV, *SUPPLY_LIMITS_MV)
+        self._drive(self.u_mV)
+        return P.Ok("SUP", (str(self.sup_mV),))
+
+    def _cmd_zm(self, c: P.SetZeroMode) -> P.Message:
+        self._set_zero_mode(c.mode)
+        self._drive(self.u_mV)
+        return P.Ok("ZM", (c.mode,))
+
+    def _cmd_stream(self, c: P.SetStream) -> P.Message:
+        self.stream = c.on
+        return P.Ok("STREAM", ("1" if c.on else "0",))
+
+    def _cmd_meter(self, _c: P.ReadMeter) -> P.Message:
+        m = self.plant.multimeter()
+        return P.Meter(round(m.u_A * 1000), round(m.i * 1e6), round(m.R * 1000))
+
+    _HANDLERS: dict[type, Callable[[VirtualBoard, P.Message], P.Message]] = {
+        P.Identify: _cmd_id,  # type: ignore[dict-item]
+        P.Ping: _cmd_ping,  # type: ignore[dict-item]
+        P.SetVoltage: _cmd_v,  # type: ignore[dict-item]
+        P.Step: _cmd_step,  # type: ignore[dict-item]
+        P.Stop: _cmd_stop,  # type: ignore[dict-item]
+        P.SetPeriod: _cmd_p,  # type: ignore[dict-item]
+        P.Zero: _cmd_z,  # type: ignore[dict-item]
+        P.SetSupply: _cmd_sup,  # type: ignore[dict-item]
+        P.SetZeroMode: _cmd_zm,  # type: ignore[dict-item]
+        P.SetStream: _cmd_stream,  # type: ignore[dict-item]
+        P.ReadMeter: _cmd_meter,  # type: ignore[dict-item]
+    }
+
+    # -- the cable -----------------------------------------------------------------------
+    def unplug(self) -> None:
+        """Pull the USB cable: the board loses power (motor off), the port fails."""
+        with self.lock:
+            self.plugged = False
+            self.powered = False
+            self._step = None
+            self._pending_mV = None
+            self.u_mV = 0
+            self._drive(0)
+            self._out.clear()
+            self.changed.notify_all()
+
+    def replug(self) -> None:
+        """Plug the cable back in: the port can be opened again (opening resets the board)."""
+        with self.lock:
+            self.plugged = True
+            self.changed.notify_all()
+
+    # -- the multimeter ------------------------------------------------------------------
+    def multimeter(self) -> MeterReading:
+        """What a multimeter on M1A/M1B reads now: u_A (V), i (A), R (ohm)."""
+        with self.lock:
+            return self.plant.multimeter()
+
+
+# -- clocks and the shared boards of the URL scheme ----------------------------------------
+class RealTime:
+    """Board time = host monotonic time since start, s."""
+
+    def __init__(self) -> None:
+        self.t0 = time.monotonic()
+
+    def __call__(self) -> float:
+        """Board time now, s."""
+        return time.monotonic() - self.t0
+
+
+_NAMED: dict[str, VirtualBoard] = {}
+_NAMED_LOCK = threading.Lock()
+
+
+def named_board(name: str, settings: VirtualSettings | None = None) -> VirtualBoard:
+    """The board called ``name`` in this process, made on first use (URL ``name=``).
+
+    Reopening ``minseg://?name=x`` reaches the same board, as replugging a cable does.
+    """
+    with _NAMED_LOCK:
+        board = _NAMED.get(name)
+        if board is None:
+            board = _NAMED[name] = VirtualBoard(settings)
+        return board
+
+
+def forget_board(name: str) -> None:
+    """Drop a named board (tests use fresh names; this frees memory)."""
+    with _NAMED_LOCK:
+        _NAMED.pop(name, None)
+
+
+__all__ = [
+    "BOARD", "FIRMWARE", "Faults", "MotorParams", "OPTIONS", "RealTime", "VirtualBoard",
+    "VirtualSettings", "forget_board", "named_board", "settings_from",
+]

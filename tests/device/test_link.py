@@ -1,0 +1,186 @@
+"""The link against the virtual MinSeg: over the pyserial URL and over a real pty."""
+
+import os
+
+import numpy as np
+import pytest
+
+from minseg_tui.device import protocol as P
+from minseg_tui.device.factory import open_device
+from minseg_tui.device.link import Link, SampleBatch, motion
+from minseg_tui.device.virtual import named_board
+from minseg_tui.errors import DeviceError, InputError
+from minseg_tui.units import RAD_PER_COUNT
+
+from .conftest import wait_for
+
+
+def collect(link, n, timeout=5.0):
+    got = []
+    wait_for(lambda: (got.append(link.samples()) or sum(map(len, got)) >= n), timeout)
+    return SampleBatch.concat(got)
+
+
+def matches_truth(batch, board):
+    """Every kept sample is exactly one the board sent (by its raw seq)."""
+    with board.lock:
+        truth = {s.seq: s for s in board.truth}
+    for seq, t_us, count, u in zip(batch.seq, batch.t_us, batch.count, batch.u_req, strict=True):
+        s = truth[int(seq) % 2**32]
+        assert (s.t_us, s.count, s.u_mV) == (int(t_us) % 2**32, int(count), round(u * 1000))
+
+
+def test_url_link_streams_without_loss(board_name):
+    link = open_device(f"minseg://{board_name}?clock=virtual&seed=2")
+    try:
+        assert link.ident.board == "Virtual" and link.ident.proto == P.PROTOCOL_VERSION
+        assert link.set_voltage(3.0) == 3.0
+        batch = collect(link, 400)
+        assert np.all(np.diff(batch.seq) == 1)
+        assert link.stats.dropped == 0 and link.stats.corrupt == 0
+        matches_truth(batch, link.board)
+        assert link.meter().u_A == pytest.approx(3.0 - 0.45, abs=0.015)
+        assert not [e for e in link.events() if e.kind == "watchdog"]  # keep-alive works
+        reply = link.command("V,99999")
+        assert reply == P.Ok("V", ("5000",))
+        assert isinstance(link.command("STEP,0,1000,60000,10"), P.Ok)
+        assert link.command("STEP,0,1000,60000,10") == P.Err("BUSY", "STEP")
+        with pytest.raises(InputError):
+            link.command("FLY,1")
+    finally:
+        link.close()
+
+
+@pytest.mark.parametrize(
+    "fault", ["garbage=0.2", "truncate=0.2", "bad_checksum=0.2", "drop=0.1"]
+)
+def test_faults_are_counted_and_never_recorded(board_name, fault):
+    link = open_device(f"minseg://{board_name}?clock=virtual&seed=3")
+    try:
+        link.set_voltage(2.0)
+        name, value = fault.split("=")
+        link.samples()
+        setattr(link.board.faults, name, float(value))
+        batch = collect(link, 600)
+        matches_truth(batch, link.board)
+        assert np.all(np.diff(batch.seq) >= 1)
+        if name == "drop":
+            gaps = int(np.sum(np.diff(batch.seq) - 1))
+            assert gaps > 0 and link.stats.dropped >= gaps
+        else:
+            assert link.stats.corrupt > 0
+    finally:
+        link.close()
+
+
+def test_seq_and_time_unwrap(board_name):
+    link = open_device(f"minseg://{board_name}?clock=virtual&micros0=4294000000&seq0=4294967200")
+    try:
+        batch = collect(link, 300)
+        assert np.all(np.diff(batch.seq) == 1) and batch.seq[-1] > 2**32
+        assert np.all(np.diff(batch.t_us) > 20000) and batch.t_us[-1] > 2**32
+    finally:
+        link.close()
+
+
+def test_board_that_stops_answering_is_reported(board_name):
+    link = open_device(f"minseg://{board_name}?clock=virtual", silence_s=0.5)
+    try:
+        link.board.faults.silent = True
+        assert wait_for(lambda: any(e.kind == "silent" for e in link.events()))
+        link.board.faults.silent = False
+        assert wait_for(lambda: any(e.kind == "alive" for e in link.events()))
+    finally:
+        link.close()
+
+
+def test_watchdog_event_when_the_host_stops_pinging(board_name):
+    link = open_device(f"minseg://{board_name}?clock=virtual", keepalive_s=1e9)
+    try:
+        link.set_voltage(2.0)
+        assert wait_for(lambda: any(e.kind == "watchdog" for e in link.events()))
+        assert link.board.u_mV == 0
+    finally:
+        link.close()
+
+
+def test_wrong_protocol_version_gets_a_clear_message():
+    with pytest.raises(DeviceError) as info:
+        open_device("minseg://?clock=virtual&proto=2")
+    text = str(info.value)
+    assert "protocol 2" in text and "protocol 1" in text and "make -C firmware upload" in text
+
+
+def test_second_program_on_a_url_board(board_name):
+    link = open_device(f"minseg://{board_name}?clock=virtual")
+    try:
+        with pytest.raises(DeviceError, match="in use by"):
+            open_device(f"minseg://{board_name}?clock=virtual")
+    finally:
+        link.close()
+
+
+def test_unplug_and_replug_over_the_url(board_name):
+    events = []
+    link = open_device(f"minseg://{board_name}?clock=virtual", on_event=events.append, retry_s=0.01)
+    try:
+        link.set_period(0.01)
+        first = collect(link, 100)
+        board = named_board(board_name)
+        board.unplug()
+        assert wait_for(lambda: any(e.kind == "disconnected" for e in events))
+        kept = SampleBatch.concat([first, link.samples()])
+        board.replug()
+        assert wait_for(lambda: link.stats.reconnects == 1)
+        assert wait_for(lambda: board.period_us == 10000)  # the period was restored
+        after = collect(link, 100)
+        allb = SampleBatch.concat([kept, after])
+        assert set(allb.epoch) == {0, 1}
+        assert np.all(np.diff(allb.seq) >= 1) and np.all(np.diff(allb.t_us) > 0)
+        assert link.stats.dropped == 0 and link.stats.corrupt == 0
+    finally:
+        link.close()
+
+
+def test_link_over_a_real_pty(pty_server):
+    events = []
+    link = Link(pty_server.path, on_event=events.append, retry_s=0.02)
+    ident = link.open()
+    try:
+        assert ident.board == "Virtual"
+        assert link.set_period(0.005) == 0.005
+        link.set_voltage(4.0)
+        before = collect(link, 40, timeout=3)
+        assert np.all(np.diff(before.seq) == 1)
+        mo = motion(before)
+        assert mo.omega[-1] > 1.0  # the wheel is turning
+        # a second program on the same port
+        with pytest.raises(DeviceError, match=f"in use by minseg-tui \\(pid {os.getpid()}\\)"):
+            Link(pty_server.path).open()
+        # pull the cable mid-stream
+        pty_server.unplug()
+        assert wait_for(lambda: any(e.kind == "disconnected" for e in events), timeout=1.0)
+        kept = SampleBatch.concat([before, link.samples()])
+        pty_server.replug()
+        assert wait_for(lambda: link.stats.reconnects == 1, timeout=3.0)
+        after = collect(link, 20, timeout=3)
+        allb = SampleBatch.concat([kept, after])
+        assert np.all(np.diff(allb.seq) >= 1) and np.all(np.diff(allb.t_us) > 0)
+        assert allb.epoch[0] == 0 and allb.epoch[-1] == 1
+        assert np.all(after.u_req == 0.0)  # the motor stays off after a replug
+        assert link.stats.dropped == 0 and link.stats.corrupt == 0
+        assert pty_server.board.period_us == 5000
+    finally:
+        link.close()
+
+
+def test_motion_by_hand():
+    rows = [(0, 0, 0, 0, 0, 0.0), (1, 25000, 10, 0, 0, 0.0), (2, 50000, 30, 0, 0, 0.0),
+            (3, 7000000, 0, 0, 1, 0.0), (4, 7020000, 4, 0, 1, 0.0)]
+    b = SampleBatch.from_rows(rows)
+    mo = motion(b)
+    w = RAD_PER_COUNT
+    assert mo.theta == pytest.approx([0, 10 * w, 30 * w, 0, 4 * w])
+    assert mo.omega == pytest.approx([0, 10 * w / 0.025, 20 * w / 0.025, 0, 4 * w / 0.02])
+    tail = motion(SampleBatch.from_rows(rows[2:3]), before=SampleBatch.from_rows(rows[:2]))
+    assert tail.omega == pytest.approx([20 * w / 0.025])
