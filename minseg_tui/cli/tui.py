@@ -1,0 +1,29 @@
+"""`minseg-tui [--port P] [--sim] [--sessions DIR]`: the lab assistant in the terminal."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from minseg_tui.errors import InputError
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Options of the TUI."""
+    group = parser.add_mutually_exclusive_group()
+    group.add_argument("--port", help="serial port of the board (or a pyserial URL); default: find it")
+    group.add_argument("--sim", action="store_true", help="use the virtual MinSeg even if a board is plugged in")
+    parser.add_argument("--sessions", default="sessions", help="folder of the sessions (default: sessions)")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Start the app; returns 0 when the user quits."""
+    from minseg_tui.ui.app import make_app
+    from minseg_tui.ui.config import UiConfig
+
+    sessions = Path(args.sessions)
+    if sessions.exists() and not sessions.is_dir():
+        raise InputError(str(sessions), None, "--sessions must be a folder")
+    device = "sim" if args.sim else (args.port or "auto")
+    make_app(UiConfig(device=device, sessions=sessions)).run()
+    return 0

@@ -1,0 +1,1 @@
+"""The app's screens: start (new or resume), the lab, help."""

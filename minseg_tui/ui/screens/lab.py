@@ -1,0 +1,128 @@
+"""The lab screen: the manual's parts on the left, the current step on the right."""
+
+from __future__ import annotations
+
+from textual import on
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, VerticalScroll
+from textual.screen import Screen
+from textual.widget import Widget
+from textual.widgets import Footer, OptionList, Static
+from textual.widgets.option_list import Option
+
+from minseg_tui.lab.steps import Step
+from minseg_tui.ui.ports import Lab
+from minseg_tui.ui.widgets.fields import FieldRow
+from minseg_tui.ui.widgets.status import DeviceStatus
+
+_SHORT = {"Preparation": "Prep", "Summary and reflections (section 3.2)": "Summary"}
+
+
+def nav_label(step: Step) -> str:
+    """Short name in the navigator: the title up to its colon, abbreviated."""
+    head = step.title.split(":")[0]
+    for long, short in _SHORT.items():
+        head = head.replace(long, short)
+    return head
+
+
+class StepPane(VerticalScroll):
+    """Title, goal, what to do, the step's own panel (``extra``) and its entries."""
+
+    def __init__(self, step: Step, lab: Lab, extra: Widget | None) -> None:
+        super().__init__(classes="pane")
+        self.step = step
+        self._lab = lab
+        self._extra = extra
+
+    def compose(self) -> ComposeResult:
+        yield Static(self.step.title, classes="title")
+        yield Static("Goal: " + self.step.goal, classes="goal")
+        yield Static("What to do: " + self.step.todo, classes="todo")
+        if self._extra is not None:
+            yield self._extra
+        for f in self.step.fields:
+            yield FieldRow(f, self._lab.text(f.key), self._lab.result(f.key))
+
+
+class LabScreen(Screen[None]):
+    """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves."""
+
+    BINDINGS = [
+        Binding("pagedown,ctrl+n", "next_step", "Next step", priority=True),
+        Binding("pageup,ctrl+b", "prev_step", "Prev step", show=False, priority=True),
+        Binding("ctrl+l", "focus_nav", "Steps", show=False),
+    ]
+
+    def __init__(self, lab: Lab) -> None:
+        super().__init__()
+        self.lab = lab
+
+    def compose(self) -> ComposeResult:
+        yield DeviceStatus()
+        with Horizontal(id="body"):
+            yield OptionList(*[Option(nav_label(s), id=s.id) for s in self.lab.steps], id="nav")
+            yield Static("", classes="pane")
+        yield Footer()
+
+    def on_mount(self) -> None:
+        nav = self.query_one("#nav", OptionList)
+        ids = [s.id for s in self.lab.steps]
+        start = self.lab.current if self.lab.current in ids else ids[0]
+        nav.highlighted = ids.index(start)
+        self.show_step(start)
+
+    @property
+    def step(self) -> Step:
+        """The step on screen."""
+        return self.query(StepPane).last().step
+
+    def show_step(self, step_id: str) -> None:
+        """Put ``step_id`` on the right and remember it in the session."""
+        step = next(s for s in self.lab.steps if s.id == step_id)
+        panes = self.query(StepPane)
+        if panes and panes.last().step.id == step_id:
+            return
+        self.lab.go(step_id)
+        extra = self.app.step_panel(step)  # type: ignore[attr-defined]
+        self.query(".pane").remove()
+        self.query_one("#body").mount(StepPane(step, self.lab, extra))
+
+    @on(OptionList.OptionHighlighted, "#nav")
+    def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
+        if event.option.id:
+            self.show_step(event.option.id)
+
+    @on(OptionList.OptionSelected, "#nav")
+    def _selected(self, event: OptionList.OptionSelected) -> None:
+        self.call_after_refresh(self._focus_first_input)
+
+    def _focus_first_input(self) -> None:
+        rows = self.query(FieldRow)
+        if rows:
+            rows.first().input.focus()
+
+    @on(FieldRow.Typed)
+    def _typed(self, event: FieldRow.Typed) -> None:
+        event.row.show_result(self.lab.enter(event.key, event.text))
+        self.app.entry_stored(event.key)  # type: ignore[attr-defined]
+
+    def _move(self, delta: int) -> None:
+        nav = self.query_one("#nav", OptionList)
+        n = len(self.lab.steps)
+        nav.highlighted = max(0, min(n - 1, (nav.highlighted or 0) + delta))
+
+    def action_next_step(self) -> None:
+        self._move(1)
+
+    def action_prev_step(self) -> None:
+        self._move(-1)
+
+    def action_focus_nav(self) -> None:
+        self.query_one("#nav").focus()
+
+    def go_to(self, step_id: str) -> None:
+        """Move the navigator (and the pane) to ``step_id``."""
+        ids = [s.id for s in self.lab.steps]
+        self.query_one("#nav", OptionList).highlighted = ids.index(step_id)

@@ -1,0 +1,103 @@
+"""An entry row: label, input, and the one-line message the lab gave back."""
+
+from __future__ import annotations
+
+import re
+
+from textual import on
+from textual.app import ComposeResult
+from textual.containers import Horizontal, Vertical
+from textual.message import Message
+from textual.widgets import Input, Label, Static
+
+from minseg_tui.lab.steps import Field
+from minseg_tui.ui.ports import EntryResult
+
+
+def field_id(key: str) -> str:
+    """A DOM id for a session key (ids take letters, digits, '-' and '_')."""
+    return "f-" + re.sub(r"[^A-Za-z0-9_-]", "_", key)
+
+
+class FieldRow(Vertical):
+    """One entry. Enter or leaving the field posts :class:`FieldRow.Typed`; the screen answers
+    with :meth:`show_result`."""
+
+    class Typed(Message):
+        """The group typed ``text`` for ``key``."""
+
+        def __init__(self, row: FieldRow, key: str, text: str) -> None:
+            super().__init__()
+            self.row = row
+            self.key = key
+            self.text = text
+
+    def __init__(self, field: Field, text: str, result: EntryResult | None = None) -> None:
+        super().__init__(id=field_id(field.key), classes="field")
+        self.field = field
+        self._text = text
+        self._result = result
+        self._sent: str | None = text
+
+    def compose(self) -> ComposeResult:
+        unit = f" [{self.field.unit}]" if self.field.unit else ""
+        with Horizontal(classes="field-line"):
+            yield Label(f"{self.field.label}{unit}", classes="field-label")
+            yield Input(value=self._text, classes="field-input", select_on_focus=False,
+                        placeholder=self.field.hint or ("option number(s)" if self.field.options else ""))
+        if self.field.options:
+            yield Static("\n".join(f"  {k + 1}. {o}" for k, o in enumerate(self.field.options)),
+                         classes="field-options")
+        yield Static("", classes="field-msg")
+
+    def on_mount(self) -> None:
+        if self._result is not None:
+            self.show_result(self._result)
+
+    @property
+    def input(self) -> Input:
+        """The text box."""
+        return self.query_one(Input)
+
+    @property
+    def message(self) -> str:
+        """The message shown under the box (plain text)."""
+        return str(self.query_one(".field-msg", Static).render())
+
+    def refresh_from_lab(self, text: str, result: EntryResult | None) -> None:
+        """Show what the lab now holds for this field (after a capture, say)."""
+        self._sent = text
+        self.input.value = text
+        if result is not None:
+            self.show_result(result)
+
+    def show_result(self, result: EntryResult) -> None:
+        """Show the lab's verdict: a refusal, the warnings, or a checker's feedback."""
+        parts = [result.message] if result.message else []
+        parts += list(result.warnings)
+        if result.feedback:
+            parts.append(result.feedback)
+        msgs = self.query(".field-msg")
+        if not msgs:
+            return
+        msgs.first(Static).update(" · ".join(parts))
+        self.set_class(not result.ok, "refused")
+        self.set_class(bool(result.warnings), "warned")
+
+    def _send(self) -> None:
+        text = self.input.value
+        if text == self._sent:
+            return
+        self._sent: str | None = text
+        self.post_message(self.Typed(self, self.field.key, text))
+
+    @on(Input.Submitted)
+    def _submitted(self, event: Input.Submitted) -> None:
+        event.stop()
+        self._sent = None  # Enter always re-sends
+        self._send()
+
+    @on(Input.Blurred)
+    def _blurred(self, event: Input.Blurred) -> None:
+        event.stop()
+        self._send()
