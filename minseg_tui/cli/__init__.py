@@ -40,23 +40,37 @@ def _available() -> dict[str, tuple[str, str]]:
     return found
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The parser with every subcommand whose module exists."""
+def build_parser(selected: str | None = None) -> argparse.ArgumentParser:
+    """The parser; only the ``selected`` subcommand's module is imported (start-up time).
+
+    Every available subcommand is listed with its help line; its own arguments are added
+    only when it is the one being run, so `minseg-tui sim` does not pay for scipy.
+    """
     parser = _Parser(prog="minseg-tui", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", parser_class=_Parser)
     for name, (module, help_text) in _available().items():
         p = sub.add_parser(name, help=help_text, description=help_text)
-        importlib.import_module(module).add_arguments(p)
+        if name == selected:
+            importlib.import_module(module).add_arguments(p)
     return parser
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the console script; returns the exit code."""
-    args_list = list(sys.argv[1:] if argv is None else argv)
+    try:
+        return _main(list(sys.argv[1:] if argv is None else argv))
+    except KeyboardInterrupt:
+        return 130
+
+
+def _main(args_list: list[str]) -> int:
     available = _available()
-    if "tui" in available and (not args_list or args_list[0].startswith("-") and args_list[0] not in ("-h", "--help")):
+    if "tui" in available and (
+        not args_list or (args_list[0].startswith("-") and args_list[0] not in ("-h", "--help"))
+    ):
         args_list.insert(0, "tui")
-    parser = build_parser()
+    selected = args_list[0] if args_list and args_list[0] in available else None
+    parser = build_parser(selected)
     args = parser.parse_args(args_list)
     if args.command is None:
         parser.print_help()
@@ -70,5 +84,3 @@ def main(argv: Sequence[str] | None = None) -> int:
     except MinsegError as exc:
         print(f"minseg-tui {args.command}: {exc}", file=sys.stderr)
         return 1
-    except KeyboardInterrupt:
-        return 130

@@ -390,6 +390,7 @@ class VirtualBoard:
                 del self._inbuf[: nl + 1]
                 if getattr(self, "_overlong", False) or len(raw.rstrip(b"\r")) > P.MAX_LINE:
                     self._overlong = False
+                    self._emit(P.Err("ARGS", ""))  # as the firmware: refused, nothing changes
                     continue
                 self._serve(raw)
 

@@ -140,7 +140,7 @@ def test_zero_and_overlong_command():
     assert abs(samples[-1].count) < 20
     port.write(b"V," + b"1" * 90 + b"\nPING\n")
     replies = [x for x in read_lines(port, 0.001) if not x.startswith("$S")]
-    assert replies == ["$OK,PING*38"]
+    assert replies == ["$ERR,ARGS*6E", "$OK,PING*38"]
 
 
 def test_settings_by_name():
