@@ -23,7 +23,7 @@ from minseg_tui.lab.files import write_step_log
 from minseg_tui.model.check import check
 from minseg_tui.model.check.candidates import Effects, angle
 from minseg_tui.model.check.simulate import Stretches
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import CAUSES, PARAM_RANGES, make_log
 
 ROOT = Path(__file__).resolve().parents[1]

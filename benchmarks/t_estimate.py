@@ -45,7 +45,7 @@ import numpy as np
 from minseg_tui.model.identify import fit_time_constant, rising_steps
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import timestamp_velocity
 
 SEEDS = 300

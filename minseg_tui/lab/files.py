@@ -27,7 +27,7 @@ from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steps import StepLog, command, find_edges
+from minseg_tui.model.steplog import StepLog, command, find_edges
 
 TABLE_COLUMNS: dict[str, str] = {
     "u_req": "V",

@@ -33,7 +33,7 @@ import numpy as np
 from minseg_tui.lab.files import read_step_log, write_step_log
 from minseg_tui.lab.store import atomic_write_bytes, fsync_dir
 from minseg_tui.model.identify import Reading, Row, u_ss_at
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
 from minseg_tui.units import COUNTS_PER_REV
 

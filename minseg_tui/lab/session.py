@@ -60,7 +60,7 @@ from minseg_tui.lab.store import (
 )
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import Identification, Reading, identify
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 
 Clock = Callable[[], datetime]
 

@@ -42,7 +42,7 @@ from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
 from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
-from minseg_tui.model.steps import Edge, StepLog, command, find_edges, segment_end
+from minseg_tui.model.steplog import Edge, StepLog, command, find_edges, segment_end
 from minseg_tui.units import KA_OVER_KV
 
 FloatArray = NDArray[np.float64]

@@ -17,7 +17,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab import steps as lab_steps
 from minseg_tui.lab.entry import format_quantity
 from minseg_tui.lab.session import Session
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 from minseg_tui.report.svg import Line, plot
 
 

@@ -11,7 +11,7 @@ import pytest
 
 from minseg_tui.cli import main
 from minseg_tui.lab.files import write_step_log
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import make_log
 
 NXT = Path(__file__).resolve().parents[3] / "shared" / "data" / "nxt-motor-real"

@@ -13,7 +13,7 @@ from minseg_tui.cli import main
 from minseg_tui.lab.files import write_step_log
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import timestamp_velocity
 
 MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.325, f=6e-4, J=1.3e-3)

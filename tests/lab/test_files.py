@@ -6,7 +6,7 @@ import pytest
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, read_table, write_step_log, write_table
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 
 GOOD_TABLE = "u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,30\n3.5,3.05,5.8,34\n4.5,4.05,7.8,37\n"
 

@@ -9,7 +9,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.model.identify import Reading, identify, steady_state, u_ss_at
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steps import StepLog
+from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import timestamp_velocity
 
 R = 5.0
