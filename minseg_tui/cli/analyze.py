@@ -13,12 +13,11 @@ import json
 import math
 from pathlib import Path
 
-import numpy as np
-
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.report import text
+from minseg_tui.model.steplog import problem
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -29,7 +28,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="write t,omega,baseline,extended (s, rad/s) for every row")
 
 
-def _sample_period(meta: dict[str, str], t: np.ndarray) -> float | None:
+def _sample_period(meta: dict[str, str]) -> float | None:
     """The nominal sample period (s) from a ``# ts:`` / ``# Ts:`` metadata line, if one is there."""
     for key in ("ts", "Ts", "sample_period"):
         if key in meta:
@@ -54,9 +53,11 @@ def write_predictions(path: str, r: CheckResult) -> None:
 def run(args: argparse.Namespace) -> int:
     """Analyse the log; 0 on success (InputError propagates: exit 2 with one line)."""
     log = read_step_log(args.log)
-    if len(log) < 8:
-        raise InputError(log.source, None, f"expected at least 8 rows for the model check, got {len(log)}")
-    result = check(log.t, log.u, log.omega, ts=_sample_period(dict(log.metadata), log.t))
+    ts = _sample_period(dict(log.metadata))
+    refused = problem(log.t, log.u, log.omega, ts)
+    if refused:
+        raise InputError(log.source, None, refused)
+    result = check(log.t, log.u, log.omega, ts=ts)
     if args.predictions:
         try:
             write_predictions(args.predictions, result)

@@ -22,7 +22,7 @@ def run(args: argparse.Namespace) -> int:
     if not found:
         print("no serial ports found (use `minseg-tui sim` for a virtual MinSeg)")
         return 0
-    best = discovery.find_board(found and [_Info(c) for c in found])
+    best = next((c for c in found if c.picked), None)  # found is best first, as find_board reads it
     for c in found:
         ids = "----:----" if c.vid is None or c.pid is None else f"{c.vid:04X}:{c.pid:04X}"
         mark = "*" if best is not None and c.device == best.device else " "
@@ -33,10 +33,3 @@ def run(args: argparse.Namespace) -> int:
         print(f"* = what `auto` opens: {best.device}")
     return 0
 
-
-class _Info:
-    """A Candidate seen as port info again (to pick the best without listing twice)."""
-
-    def __init__(self, c: discovery.Candidate) -> None:
-        self.device, self.vid, self.pid = c.device, c.vid, c.pid
-        self.description, self.manufacturer, self.serial_number = c.description, None, None

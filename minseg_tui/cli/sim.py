@@ -33,7 +33,10 @@ def run(args: argparse.Namespace) -> int:
         settings = settings_from(values)
     except ValueError as exc:
         raise InputError("", None, str(exc)) from None
-    server = PtyServer(VirtualBoard(settings), link_path=args.link)
+    try:
+        server = PtyServer(VirtualBoard(settings), link_path=args.link)
+    except OSError as exc:
+        raise InputError(args.link or "pty", None, f"cannot make the device ({exc.strerror})") from None
     print(server.path, flush=True)
     if args.link:
         print(f"(symlink to {server.slave_name})", file=sys.stderr, flush=True)

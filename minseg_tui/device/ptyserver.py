@@ -59,10 +59,17 @@ class PtyServer:
         self._pending.clear()
         if self.link_path:
             tmp = f"{self.link_path}.new"
-            with contextlib.suppress(FileNotFoundError):
-                os.unlink(tmp)
-            os.symlink(self.slave_name, tmp)
-            os.replace(tmp, self.link_path)
+            try:
+                with contextlib.suppress(FileNotFoundError):
+                    os.unlink(tmp)
+                os.symlink(self.slave_name, tmp)
+                os.replace(tmp, self.link_path)
+            except OSError:
+                with contextlib.suppress(OSError):
+                    os.unlink(tmp)
+                os.close(master)
+                self.master = None
+                raise
 
     # -- the cable -------------------------------------------------------------------------
     def unplug(self) -> None:

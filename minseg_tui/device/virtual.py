@@ -141,6 +141,8 @@ def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSett
         except (TypeError, ValueError):
             what = {int: "an integer", float: "a number", bool: "true or false"}[opt.kind]
             raise ValueError(f"option {name}: expected {what}, got {raw!r}") from None
+        if opt.kind is float and not (math.isfinite(v) and v >= 0):  # type: ignore[arg-type]
+            raise ValueError(f"option {name}: expected a finite number, not negative, got {raw!r}")
         if opt.path == "params.zero_mode":
             v = "coast" if v else "brake"
         flat[opt.path] = v

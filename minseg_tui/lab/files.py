@@ -192,8 +192,8 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
 
     Refuses (InputError naming file and line): an empty file, a missing t/u/omega column,
     a field that is not a finite number in t, u, omega or a known numeric column (u_req,
-    theta, count, t_us, seq, ...), time that does not increase, and, unless
-    ``require_step`` is False, a log in which the command (u_req, else u) never steps.
+    theta, count, t_us, seq, ...), time (t, or t_us modulo 2^32) that does not increase,
+    and, unless ``require_step`` is False, a log in which the command (u_req, else u) never steps.
     Unknown columns are kept: as numbers when every field is one, else as text.
     """
     f = _Csv(Path(path), ",".join(LOG_REQUIRED))
@@ -224,6 +224,12 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
                 extra[name] = values
         else:
             extra[name] = np.array(texts, dtype=str)
+    if "t_us" in extra:  # the board's micros(): increases, wrapping at 2^32
+        still = np.flatnonzero(np.mod(np.diff(extra["t_us"].astype(np.float64)), 2.0**32) == 0)
+        if still.size:
+            k = int(still[0]) + 1
+            raise InputError(f.source, int(lines[k]),
+                             f"expected t_us (us) to increase, got {int(extra['t_us'][k])} again")
     log = StepLog(t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines)
     if require_step:
         cmd, name = command(log)

@@ -42,7 +42,7 @@ from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
 from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
-from minseg_tui.model.steplog import Edge, StepLog, command, find_edges, segment_end
+from minseg_tui.model.steplog import Edge, StepLog, command, find_edges, problem, segment_end
 from minseg_tui.units import KA_OVER_KV
 
 FloatArray = NDArray[np.float64]
@@ -131,6 +131,12 @@ def steady_state(readings: Sequence[Reading], R: float, source: str = "table") -
         Row(reading=r, k_v=kv, f=k_a * r.i_ss * 1e-3 / r.omega_ss)
         for r, kv in zip(readings, k_v_rows, strict=True)
     )
+    for row in rows:
+        if not (math.isfinite(row.k_v) and math.isfinite(row.f)):
+            r = row.reading
+            raise InputError(source, r.line, (
+                f"expected readings of a plausible size (R i_ss = {R * r.i_ss * 1e-3:g} V, "
+                f"omega_ss = {r.omega_ss:g} rad/s), they give k_v = {row.k_v:g} and f = {row.f:g}"))
     f = float(np.median([row.f for row in rows]))
     return rows, k_v, k_a, f
 
@@ -496,13 +502,18 @@ class Identification:
 
 
 def _step_result(log: StepLog, rows: tuple[Row, ...], R: float, k_v: float, k_a: float, f: float) -> tuple[StepResult, list[Finding]]:
-    fit = fit_time_constant(log)
-    steps = rising_steps(log)
-    if fit is None or not steps:
+    if not _windows(log)[0]:
         cmd, name = command(log)
         raise InputError(log.source, log.line_of(0), (
             f"expected a rising step in {name} (V) with at least one sample before it and 5 after it; "
             f"found {sum(e.rising for e in find_edges(cmd))} rising edge(s), none usable"))
+    refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
+    if refused:
+        raise InputError(log.source, None, refused)
+    fit = fit_time_constant(log)
+    steps = rising_steps(log)
+    if fit is None or not steps:  # cannot happen with usable windows; keeps the types honest
+        raise InputError(log.source, None, "expected a usable rising step")
     findings: list[Finding] = []
     u_used, hows = [], []
     for s in steps:

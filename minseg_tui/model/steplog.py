@@ -13,7 +13,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.units import COUNTS_PER_REV
 
@@ -186,3 +186,45 @@ def command(log: StepLog) -> tuple[FloatArray, str]:
     if "u_req" in log.extra and log.extra["u_req"].dtype.kind in "fi":
         return np.asarray(log.extra["u_req"], dtype=float), "u_req"
     return np.asarray(log.u, dtype=float), "u"
+
+
+MIN_ROWS: int = 8
+"""Fewest rows an analysis of a step log works on."""
+
+TS_RANGE: tuple[float, float] = (1e-4, 1.0)
+"""Sample periods (s) an analysis accepts: the board samples every 2-100 ms."""
+
+MAX_MAGNITUDE: float = 1e6
+"""Largest |u| (V) and |omega| (rad/s) an analysis accepts (the lab's are below 10)."""
+
+
+def problem(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None) -> str | None:
+    """Why a step log cannot be analysed (Tasks 11-15, the model check), or None.
+
+    The answer is an 'expected ...' sentence for an InputError. t: sample times, s; u:
+    applied voltage, V; omega: measured speed, rad/s; ts: the nominal sample period, s
+    (default: the median interval of t). Refused: unequal lengths, fewer than MIN_ROWS
+    rows, values that are not finite or not of a plausible size, time that does not
+    increase, a sample period outside TS_RANGE, and a speed that never changes.
+    """
+    t, u, y = (np.asarray(a, dtype=float) for a in (t, u, omega))
+    if not (t.size == u.size == y.size):
+        return f"expected t, u and omega of the same length, got {t.size}, {u.size} and {y.size} rows"
+    if t.size < MIN_ROWS:
+        return f"expected at least {MIN_ROWS} rows to analyse, got {t.size}"
+    for name, v in (("t (s)", t), ("u (V)", u), ("omega (rad/s)", y)):
+        if not np.all(np.isfinite(v)):
+            return f"expected finite numbers in {name}"
+    for name, v in (("u (V)", u), ("omega (rad/s)", y)):
+        if float(np.max(np.abs(v))) > MAX_MAGNITUDE:
+            return f"expected |{name}| below {MAX_MAGNITUDE:g}, got {float(np.max(np.abs(v))):g}"
+    if not np.all(np.diff(t) > 0):
+        return "expected t (s) to increase from row to row"
+    period = float(np.median(np.diff(t))) if ts is None else float(ts)
+    lo, hi = TS_RANGE
+    if not (lo <= period <= hi):
+        return (f"expected a sample period between {lo * 1e3:g} ms and {hi:g} s, got {period:.3g} s "
+                "(is t in seconds?)")
+    if float(np.ptp(y)) == 0.0:
+        return f"expected the speed to change after the steps; omega stays at {float(y[0]):g} rad/s"
+    return None

@@ -74,6 +74,11 @@ def test_clean_log_says_none(tmp_path, capsys):
         ("t,u,omega\n0,0,0\n0.025,1,nan\n", "nan"),
         ("t,u,omega\n0,0,0\n0,1,0\n", "increase"),
         ("t,u,omega\n" + "".join(f"{k * 0.025},1,2\n" for k in range(20)), "step"),
+        ("t,u,omega\n0,0,0\n0.025,1,0\n", "at least 8 rows"),
+        ("t,u,omega\n" + "".join(f"{k * 0.025},{int(k >= 5)},0\n" for k in range(20)), "omega stays at 0"),
+        ("t,u,omega\n" + "".join(f"{k * 25},{int(k >= 5)},{k}\n" for k in range(20)), "sample period"),
+        ("t,u,omega\n" + "".join(f"{k}e-300,{int(k >= 5)},{k}\n" for k in range(20)), "sample period"),
+        ("t,u,omega\n" + "".join(f"{k * 0.025},{int(k >= 5)},{k}e300\n" for k in range(20)), "|omega (rad/s)| below"),
     ],
 )
 def test_bad_input_exits_2_with_one_line(tmp_path, capsys, text, says):

@@ -69,6 +69,13 @@ def test_json_without_step(files, capsys):
     assert set(json.loads(capsys.readouterr().out)) == {"R", "rows", "k_v", "k_a", "f"}
 
 
+
+def _log(dt: float, omega_on: float = 3.0, u_on: float = 4.0) -> str:
+    """12 rows every dt s: a step to u_on V at row 3, the speed omega_on rad/s from row 4."""
+    return "t,u,omega\n" + "".join(
+        f"{k * dt!r},{0.0 if k < 3 else u_on!r},{0.0 if k < 4 else omega_on!r}\n" for k in range(12))
+
+
 BAD = [
     ("table.csv", "", [], "table.csv:", "file is empty"),
     ("table.csv", "u_req,u_ss,omega_ss\n2.5,2,3\n", [], "table.csv:1:", "expected a column i_ss"),
@@ -80,6 +87,13 @@ BAD = [
     ("log.csv", "t,u,omega\n0,0,0\n0.05,4,1\n0.04,4,1\n", ["--step"], "log.csv:4:", "expected t (s) to increase"),
     ("log.csv", "t,u,omega\n0,4,0\n0.025,4,1\n", ["--step"], "log.csv:2:", "expected a step"),
     ("log.csv", "t,u,omega\n0,4,0\n0.025,0,1\n0.05,0,1\n", ["--step"], "log.csv:2:", "expected a rising step"),
+    ("table.csv", "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,3.6,1e308\n", [], "table.csv:2:", "plausible size"),
+    ("log.csv", _log(0.025, omega_on=0.0), ["--step"], "log.csv:", "omega stays at 0"),
+    ("log.csv", _log(25.0), ["--step"], "log.csv:", "sample period"),
+    ("log.csv", _log(1e-300), ["--step"], "log.csv:", "sample period"),
+    ("log.csv", _log(0.025, u_on=1e300), ["--step"], "log.csv:", "|u (V)| below"),
+    ("log.csv", "t,u,omega,t_us\n" + "".join(f"{k * 0.025},{4 * (k >= 3)},{3 * (k >= 4)},{(20 - k) * 25000}\n"
+                                              for k in range(12)), ["--step"], "log.csv:", "sample period"),
 ]
 
 

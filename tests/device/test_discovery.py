@@ -59,6 +59,16 @@ def test_ports_command_lists_every_port(capsys, monkeypatch):
     out = capsys.readouterr().out
     assert all(p.device in out for p in PORTS)
     assert "* = what `auto` opens: /dev/ttyACM0" in out
+
+    def row(device):
+        return next(r for r in out.splitlines() if f" {device} " in r)
+
+    # every port says why it was or was not picked
+    assert "no USB vendor/product id" in row("/dev/ttyS0")
+    assert "1BC7:1201 by Telit is not a known" in row("/dev/ttyACM3")
+    assert "not opened automatically" in row("/dev/ttyUSB0")
+    assert row("/dev/ttyACM0").startswith("* ") and not row("/dev/ttyACM1").startswith("*")
+
     assert ports_cli.run(argparse.Namespace(json=True)) == 0
     data = json.loads(capsys.readouterr().out)
     assert {d["device"]: d["picked"] for d in data}["/dev/ttyUSB1"] is True
@@ -94,6 +104,22 @@ def test_sim_command_bad_option_is_one_line():
                        capture_output=True, text=True, timeout=30)
     assert r.returncode == 2
     assert r.stderr.strip().splitlines() == ["minseg-tui sim: option seed: expected an integer, got 'x'"]
+
+
+@pytest.mark.parametrize(
+    ("args", "says"),
+    [
+        (["--R", "nan"], "option R: expected a finite number, not negative, got 'nan'"),
+        (["--jitter", "-5"], "option jitter: expected a finite number, not negative, got '-5'"),
+        (["--link", "/nonexistent-dir/minseg0"], "/nonexistent-dir/minseg0: cannot make the device"),
+    ],
+)
+def test_sim_command_bad_setting_is_one_line(args, says):
+    r = subprocess.run([sys.executable, "-m", "minseg_tui", "sim", *args],
+                       capture_output=True, text=True, timeout=30)
+    assert r.returncode == 2 and r.stdout == ""
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("minseg-tui sim: ") and says in lines[0], r.stderr
 
 
 @pytest.mark.parametrize("spec", ["virtual", "minseg://?clock=virtual"])

@@ -15,9 +15,11 @@ from minseg_tui.units import RAD_PER_COUNT
 from .conftest import wait_for
 
 
-def collect(link, n, timeout=5.0):
+def collect(link, n, timeout=10.0):
+    """At least ``n`` samples from ``link`` (fails if they do not come within ``timeout`` s)."""
     got = []
-    wait_for(lambda: (got.append(link.samples()) or sum(map(len, got)) >= n), timeout)
+    assert wait_for(lambda: (got.append(link.samples()) or sum(map(len, got)) >= n), timeout), (
+        f"got {sum(map(len, got))} of {n} samples in {timeout} s")
     return SampleBatch.concat(got)
 
 
@@ -150,7 +152,7 @@ def test_link_over_a_real_pty(pty_server):
         assert ident.board == "Virtual"
         assert link.set_period(0.005) == 0.005
         link.set_voltage(4.0)
-        before = collect(link, 40, timeout=3)
+        before = collect(link, 40)
         assert np.all(np.diff(before.seq) == 1)
         mo = motion(before)
         assert mo.omega[-1] > 1.0  # the wheel is turning
@@ -159,11 +161,11 @@ def test_link_over_a_real_pty(pty_server):
             Link(pty_server.path).open()
         # pull the cable mid-stream
         pty_server.unplug()
-        assert wait_for(lambda: any(e.kind == "disconnected" for e in events), timeout=1.0)
+        assert wait_for(lambda: any(e.kind == "disconnected" for e in events))
         kept = SampleBatch.concat([before, link.samples()])
         pty_server.replug()
-        assert wait_for(lambda: link.stats.reconnects == 1, timeout=3.0)
-        after = collect(link, 20, timeout=3)
+        assert wait_for(lambda: link.stats.reconnects == 1)
+        after = collect(link, 20)
         allb = SampleBatch.concat([kept, after])
         assert np.all(np.diff(allb.seq) >= 1) and np.all(np.diff(allb.t_us) > 0)
         assert allb.epoch[0] == 0 and allb.epoch[-1] == 1

@@ -141,12 +141,20 @@ def test_step_log_generous(tmp_path):
         (log_text(header="t,u,omega,u_req", rows=["0,0,0,4.5", "0.025,4,1,4.5", "0.05,4,2,4.5"]), "log.csv:3:", "expected a step in u_req (V)"),
         (log_text(header="t,u,omega,count", rows=["0,0,0,0", "0.025,4,1,1.5.2", "0.05,4,2,3"]), "log.csv:4:", "expected a number for count (counts)"),
         (log_text(rows=["0,0,0", "0.025,4,1,9", "0.05,4,2"]), "log.csv:4:", "expected 3 fields"),
+        (log_text(header="t,u,omega,t_us", rows=["0,0,0,100", "0.025,4,1,25100", "0.05,4,2,25100"]), "log.csv:5:", "expected t_us (us) to increase, got 25100 again"),
     ],
 )
 def test_step_log_bad_input(tmp_path, text, where, what):
     msg = refused(read_step_log, write(tmp_path, "log.csv", text))
     assert msg.startswith(str(tmp_path / where)), msg
     assert what in msg
+
+
+def test_t_us_wrapping_at_2_32_is_not_refused(tmp_path):
+    # 7000 us later, then past 2^32 = 4294967296 to 24704: 296 + 24704 = 25000 us later
+    rows = ["0,0,0,4294960000", "0.025,4,1,4294967000", "0.05,4,2,24704"]
+    log = read_step_log(write(tmp_path, "log.csv", log_text(header="t,u,omega,t_us", rows=rows)))
+    np.testing.assert_allclose(log.board_time(), [0.0, 0.007, 0.032])
 
 
 def test_step_log_without_step_can_be_read_when_asked(tmp_path):

@@ -6,6 +6,7 @@ what the generator put in; tolerances are stated per cause.
 """
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -179,3 +180,27 @@ def test_two_effects_name_the_main_one_and_list_the_other(seed):
     assert r.extended.params["u_c"] == pytest.approx(0.3, abs=0.02)
     assert [o.cause for o in r.finding.others] == ["dead_time"]
     assert r.finding.others[0].params["delay"] == pytest.approx(0.03, abs=0.003)
+
+
+def test_where_it_deviates_with_an_exact_steady_state():
+    from minseg_tui.model.check.deviations import Deviation, describe
+
+    text = describe([Deviation("after_rising_edges", 4, 0.2, 0.1), Deviation("steady_state", 5, 0.0, 0.0)])
+    assert "inf" not in text and "exact in steady state" in text and "0.200 rad/s" in text
+
+
+@pytest.mark.parametrize(
+    ("change", "says"),
+    [
+        ({"omega": 0.0}, "omega stays at 0"),
+        ({"t_scale": 1000.0}, "sample period"),
+        ({"u_scale": 1e300}, "|u (V)| below"),
+    ],
+)
+def test_logs_it_cannot_work_on_are_refused_in_words(change, says):
+    log = make_log("none", seed=1, duration=3.0)
+    t = log.t * change.get("t_scale", 1.0)
+    u = log.u * change.get("u_scale", 1.0)
+    omega = np.full_like(log.omega, change["omega"]) if "omega" in change else log.omega
+    with pytest.raises(ValueError, match=re.escape(says)):
+        check(t, u, omega)

@@ -60,6 +60,6 @@ def describe(devs: list[Deviation]) -> str:
     words = worst.region.replace("_", " ")
     if steady is None or worst is steady:
         return f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
-    ratio = worst.rms / steady.rms if steady.rms > 0 else float("inf")
+    ratio = f"{worst.rms / steady.rms:.1f}x" if steady.rms > 0 else "exact in steady state"
     return (f"the model is worst {words}: rms {worst.rms:.3f} rad/s there against "
-            f"{steady.rms:.3f} rad/s in steady state ({ratio:.1f}x)")
+            f"{steady.rms:.3f} rad/s in steady state ({ratio})")

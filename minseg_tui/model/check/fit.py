@@ -174,11 +174,15 @@ def _param_grid(c: Candidate, prob: Problem) -> FloatArray:
     return np.linspace(c.lo, c.hi, 13)[1:]
 
 
+def _within(grid: FloatArray) -> FloatArray:
+    """A grid of T (s) taken into T_BOUNDS: values outside move to the nearest bound, once."""
+    return np.unique(np.clip(grid, *T_BOUNDS))
+
+
 def fit_candidate(prob: Problem, c: Candidate, base: Fit, extra: Effects | None = None) -> Fit:
     """Fit the baseline plus the candidate's effect (on top of ``extra`` effects, if any)."""
     extra = extra or Effects()
-    tgrid = base.T * np.geomspace(0.25, 4.0, 9)
-    tgrid = tgrid[(tgrid >= T_BOUNDS[0]) & (tgrid <= T_BOUNDS[1])]
+    tgrid = _within(base.T * np.geomspace(0.25, 4.0, 9))
 
     def fx_of(p: float) -> Effects:
         d = {**_asdict(extra), c.param: p}
@@ -186,7 +190,7 @@ def fit_candidate(prob: Problem, c: Candidate, base: Fit, extra: Effects | None 
 
     if c.integer:  # taps: the angle does not depend on it, so simulate once per T
         best = (math.inf, base.T, 1)
-        for T in base.T * np.geomspace(0.2, 2.0, 13):
+        for T in _within(base.T * np.geomspace(0.2, 2.0, 13)):
             top = int(c.hi)
             before = prob.t[0] - prob.ts * np.arange(top, 0, -1)
             theta = angle(prob.st, np.concatenate((before, prob.t)), T, extra, prob.z0)
@@ -197,7 +201,7 @@ def fit_candidate(prob: Problem, c: Candidate, base: Fit, extra: Effects | None 
                     best = (sse, T, taps)
         tries = []
         for p in range(max(int(c.lo), best[2] - 1), min(int(c.hi), best[2] + 1) + 1):
-            tries.append((*_best_T(prob, fx_of(p), best[1] * np.geomspace(0.7, 1.4, 5)), p))
+            tries.append((*_best_T(prob, fx_of(p), _within(best[1] * np.geomspace(0.7, 1.4, 5))), p))
         T, sse, p = min(tries, key=lambda r: r[1])
         _, K = _score(prob, T, fx_of(p))
         return Fit(c.cause, T, K, {c.param: float(p)}, fx_of(p), sse, base.rows)
@@ -210,9 +214,10 @@ def fit_candidate(prob: Problem, c: Candidate, base: Fit, extra: Effects | None 
     def obj(x: FloatArray) -> float:
         p = math.exp(x[1]) if c.log_scale else x[1]
         hi = grid[-1] if c.cause == "coulomb_friction" else c.hi
-        if not (c.lo <= p <= hi):
+        T = math.exp(x[0])
+        if not (c.lo <= p <= hi and T_BOUNDS[0] <= T <= T_BOUNDS[1]):
             return math.inf
-        return _score(prob, math.exp(x[0]), fx_of(p))[0]
+        return _score(prob, T, fx_of(p))[0]
 
     x0 = np.array([math.log(T0), math.log(p0) if c.log_scale else p0])
     step = np.array([0.15, 0.3 if c.log_scale else scale * 0.5])

@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import anomalies as an
-from minseg_tui.model.check.candidates import BY_CAUSE, CANDIDATES, Effects
+from minseg_tui.model.check.candidates import BY_CAUSE, Effects
 from minseg_tui.model.check.decide import COMBINABLE, choose, compare
 from minseg_tui.model.check.deviations import describe, deviations
 from minseg_tui.model.check.evidence import WORDS, evidence
@@ -21,11 +21,13 @@ from minseg_tui.model.check.fit import (
     MAX_FIT_ROWS,
     Fit,
     Problem,
+    fit_all,
     fit_baseline,
     fit_candidate,
 )
 from minseg_tui.model.check.report import CheckResult, Finding, ModelFit, Other, fit_percent, rmse
 from minseg_tui.model.check.search import golden
+from minseg_tui.model.steplog import problem
 
 FloatArray = NDArray[np.float64]
 
@@ -41,8 +43,9 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
     t = np.asarray(t, dtype=float)
     u = np.asarray(u, dtype=float)
     y = np.asarray(omega, dtype=float)
-    if not (t.size == u.size == y.size) or t.size < 8:
-        raise ValueError("t, u and omega must have the same length, at least 8 rows")
+    refused = problem(t, u, y, ts)
+    if refused:
+        raise ValueError(refused)
     ts = float(np.median(np.diff(t))) if ts is None else float(ts)
     full = Problem(t, u, y, ts)
     notes: list[an.Anomaly] = []
@@ -65,7 +68,7 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
     if wild:
         full, head, base = _repaired(full, y - base.predict(full), wild, 1)
 
-    fits = {c.cause: fit_candidate(head, c, base) for c in CANDIDATES}
+    fits = fit_all(head, base)
     cause, verdicts = choose(base, fits, _raw_worse(head, base, fits))
     if cause != "none" and fits[cause].effects.taps > 1:
         # the speed was averaged: look for wild samples again, in the averaged form
@@ -79,7 +82,7 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
                 full, head = orig, orig.head(MAX_FIT_ROWS)
                 base = fit_baseline(head)
             wild = again
-            fits = {c.cause: fit_candidate(head, c, base) for c in CANDIDATES}
+            fits = fit_all(head, base)
             cause, verdicts = choose(base, fits, _raw_worse(head, base, fits))
     ext = fits[cause] if cause != "none" else base
 
