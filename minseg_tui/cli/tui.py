@@ -18,6 +18,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Start the app; returns 0 when the user quits."""
+    from minseg_tui.report.write import write_report
     from minseg_tui.ui.app import make_app
     from minseg_tui.ui.config import UiConfig
 
@@ -25,5 +26,5 @@ def run(args: argparse.Namespace) -> int:
     if sessions.exists() and not sessions.is_dir():
         raise InputError(str(sessions), None, "--sessions must be a folder")
     device = "sim" if args.sim else (args.port or "auto")
-    make_app(UiConfig(device=device, sessions=sessions)).run()
+    make_app(UiConfig(device=device, sessions=sessions), write_report).run()
     return 0

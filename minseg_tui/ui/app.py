@@ -2,13 +2,16 @@
 
 :func:`make_app` is the one way to build it (the CLI and the tests share it). Widgets only
 render; this module moves data between the device/lab layers (through
-:mod:`minseg_tui.ui.ports`) and the screens.
+:mod:`minseg_tui.ui.ports`) and the screens. The device is opened in a worker; a second
+worker drains it into the bounded live buffer (and into the run being recorded) and posts
+coalesced messages, so the event loop never waits on the board.
 """
 
 from __future__ import annotations
 
 import datetime as _dt
 import threading
+import time
 from collections.abc import Callable, Iterable
 
 from textual import on, work
@@ -19,11 +22,13 @@ from textual.widget import Widget
 from textual.worker import get_current_worker
 
 from minseg_tui.errors import MinsegError
+from minseg_tui.lab.steps import step as lab_step
+from minseg_tui.ui.backend import ReportWriter
 from minseg_tui.ui.commands import StepCommands
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.live import LiveBuffer
-from minseg_tui.ui.messages import LinkEvent, SamplesArrived
-from minseg_tui.ui.ports import Device, Lab, Store
+from minseg_tui.ui.messages import DeviceOpened, LinkEvent, SamplesArrived
+from minseg_tui.ui.ports import Device, Event, Lab, Meter, Recording, Store
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.start import StartScreen
@@ -32,18 +37,37 @@ from minseg_tui.ui.widgets.status import DeviceStatus
 KEYS: list[tuple[str, str]] = [
     ("F1", "this help"),
     ("F2", "STOP the motor (works everywhere, always)"),
-    ("F3", "set the step's voltage on the board"),
+    ("F3", "set the next voltage 2.5/3.5/4.5 V (Task 4/5)"),
     ("F4", "capture omega_ss over the settled window"),
     ("F5", "run the step sequence (Task 10)"),
     ("F6", "run it fast: 5 ms board-timed samples"),
-    ("F7", "show the formula behind the table cell"),
-    ("F8", "export the report"),
-    ("PgDn/PgUp", "next / previous step (also Ctrl+N / Ctrl+B)"),
-    ("Ctrl+L", "jump to the list of steps"),
+    ("F7", "the formula behind the table cell"),
+    ("F8", "export the report (Markdown, HTML, CSV)"),
+    ("[ ]", "previous / next step of the log (Tasks 11-15)"),
+    ("z, F9", "zoom to one step / whole log (Tasks 11-15)"),
+    ("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
+    ("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
     ("Tab", "next field; Enter stores what you typed"),
+    ("Space", "tick an answer (summary questions)"),
     ("Ctrl+P", "command palette (go to step, capture, stop...)"),
     ("Ctrl+Q", "quit (the session is already saved)"),
 ]
+
+EVENT_TEXT: dict[str, str] = {
+    "disconnected": "board disconnected — everything recorded is kept",
+    "connected": "board reconnected",
+    "silent": "board silent — no data",
+    "alive": "board answers again",
+    "watchdog": "watchdog stopped the motor",
+    "boot": "board restarted — motor off",
+}
+"""What the status line says at once for a link event (``error`` shows the link's own line)."""
+
+RUN_ENDS = frozenset({"stepdone", "disconnected", "watchdog", "boot", "error"})
+"""Link events after which a run being recorded takes no more samples."""
+
+LAB_PERIOD = 0.025
+"""Sample period restored after a fast run, s (the manual's)."""
 
 
 class LabApp(App[None]):
@@ -55,12 +79,13 @@ class LabApp(App[None]):
     BINDINGS = [
         Binding("f1", "help", "Help"),
         Binding("f2", "stop_motor", "STOP", priority=True),
-        Binding("f3", "set_voltage", "Set V"),
-        Binding("f4", "capture", "Capture"),
+        Binding("f3", "set_voltage", "Set V", show=False),
+        Binding("f4", "capture", "Capture", show=False),
         Binding("f5", "run_steps", "Steps", show=False),
         Binding("f6", "run_fast", "Fast", show=False),
         Binding("f7", "formula", "Formula", show=False),
-        Binding("f8", "export", "Export", show=False),
+        Binding("f8", "export", "Export"),
+        Binding("f9", "zoom_next", "Zoom", show=False),
     ]
 
     def __init__(self, config: UiConfig, store: Store, open_device: Callable[[str], Device]) -> None:
@@ -72,35 +97,53 @@ class LabApp(App[None]):
         self.lab: Lab | None = None
         self.live = LiveBuffer()
         self.motor = "off"
-        self.last_event = ""
+        self.event_text = "connecting…"
+        self.recording: Recording | None = None
+        self.meter_reading: Meter | None = None
+        self.meter_wanted = 0
+        self.exported: tuple[str, ...] = ()
         self._stop = threading.Event()
-        self.run_name: str | None = None
-        self.run_duration = 0.0
-        self.run_period = 0.025
         if not config.animations:
             self.animation_level = "none"
 
     # -- start-up ---------------------------------------------------------------------
     def on_mount(self) -> None:
-        try:
-            self.device = self._open_device(self.config.device)
-        except MinsegError as exc:
-            self.notify(str(exc), title="device", severity="error")
         today = self.config.today or _dt.date.today().isoformat()
         self.push_screen(StartScreen(self.store.list(), today))
-        if self.device is not None:
+        self.set_interval(0.25, self._tick)
+        self._connect(self.config.device)
+
+    @work(thread=True, exclusive=True, group="connect", name="open device")
+    def _connect(self, spec: str) -> None:
+        """Worker: open (and handshake) the device; a real board takes up to 2.5 s."""
+        try:
+            device = self._open_device(spec)
+        except MinsegError as exc:
+            self.post_message(DeviceOpened(None, str(exc)))
+            return
+        self.post_message(DeviceOpened(device, ""))
+
+    @on(DeviceOpened)
+    def _opened(self, event: DeviceOpened) -> None:
+        if event.device is None:
+            self.event_text = "no device: " + event.error
+            self.notify(event.error, title="device", severity="error", timeout=10)
+        else:
+            self.device = event.device
+            self.event_text = ""
             self._stream()
+        self.refresh_status()
 
     def on_screen_resume(self) -> None:
         self.refresh_status()
 
     def refresh_status(self) -> None:
-        """Copy device info, link health and motor state into every status line."""
+        """Copy device info, link health, the last event and the motor into every status line."""
         info = self.device.info if self.device else None
         health = self.device.health() if self.device else None
         for screen in self.screen_stack:
             for w in screen.query(DeviceStatus):
-                w.info, w.health, w.motor = info, health, self.motor
+                w.info, w.health, w.motor, w.event = info, health, self.motor, self.event_text
 
     @on(StartScreen.NewSession)
     def _new(self, event: StartScreen.NewSession) -> None:
@@ -114,86 +157,133 @@ class LabApp(App[None]):
         try:
             self.lab = get()
         except MinsegError as exc:
-            self.notify(str(exc), title="session", severity="error")
+            self.notify(str(exc), title="session", severity="error", timeout=10)
             return
         self.switch_screen(LabScreen(self.lab))
         self.call_after_refresh(self.refresh_status)
+        recovered = getattr(self.lab, "recovered", [])
+        if recovered:
+            self.notify("kept after a crash: " + ", ".join(recovered), title="session")
 
     # -- the stream ---------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="stream", name="device stream")
     def _stream(self) -> None:
-        """Worker thread: drain the device into the bounded buffer and say so (coalesced)."""
+        """Worker thread: drain the device into the live buffer and the run being recorded;
+        say so with one coalesced message per read; poll the virtual multimeter."""
         worker = get_current_worker()
         device = self.device
         assert device is not None
+        next_meter = 0.0
         while not worker.is_cancelled and not self._stop.is_set():
             try:
                 batch = device.read(0.05)
             except MinsegError as exc:
-                self.post_message(LinkEvent("LOST", str(exc)))
+                self.post_message(LinkEvent(Event("error", str(exc))))
                 return
-            if len(batch.t):
+            if len(batch):
                 self.live.extend(batch)
+                rec = self.recording
+                if rec is not None:
+                    rec.append(batch)
+                    if any(ev.kind in RUN_ENDS for ev in batch.events):
+                        rec.end()
                 self.post_message(SamplesArrived(device.health(), self.live.total))
             for ev in batch.events:
                 self.post_message(LinkEvent(ev))
+            now = time.monotonic()
+            if self.meter_wanted and device.info.virtual and now >= next_meter:
+                next_meter = now + 0.25
+                try:
+                    self.meter_reading = device.meter()
+                except MinsegError:
+                    self.meter_reading = None
+
+    def _tick(self) -> None:
+        """A few times a second: the run's samples reach the disk (Recorder.tick)."""
+        rec = self.recording
+        if rec is not None:
+            rec.tick()
 
     @on(SamplesArrived)
     def _samples(self, event: SamplesArrived) -> None:
         for w in self.screen.query(DeviceStatus):
             w.health = event.health
-        if self.run_name is not None:
+        if self.recording is not None:
             self._show_progress()
 
     def _show_progress(self) -> None:
         from minseg_tui.ui.panels import StepRunPanel
 
-        n = self.live.recorded
-        period = self.run_period
-        fraction = min(1.0, n * period / self.run_duration) if self.run_duration > 0 else 0.0
-        for panel in self.screen.query(StepRunPanel):
-            panel.progress(fraction, f"recording {self.run_name}: {n} samples, {n * period:.1f} of {self.run_duration:.1f} s")
-
-    def start_run(self, name: str, period: float) -> None:
-        """Task 10: start the board's step sequence for plan ``name`` and record it."""
-        from minseg_tui.lab.steps import step
-
-        if self.device is None or self.lab is None:
-            self.notify("no device", severity="error")
+        rec = self.recording
+        if rec is None:
             return
-        if self.run_name is not None:
+        duration = rec.plan.duration  # type: ignore[attr-defined]
+        fraction = min(1.0, rec.elapsed / duration) if duration > 0 else 0.0
+        for panel in self.screen.query(StepRunPanel):
+            panel.progress(fraction, f"recording {rec.name}: {rec.samples} samples, "
+                                     f"{rec.elapsed:.1f} of {duration:.1f} s · F2 stops")
+
+    def start_run(self, name: str) -> None:
+        """Task 10: start the board's step sequence for plan ``name`` and record it."""
+        if self.device is None or self.lab is None:
+            self.notify("no device: the run needs the board or the virtual MinSeg", severity="error")
+            return
+        if self.recording is not None:
             self.notify("a run is in progress; F2 stops it", severity="warning")
             return
-        plan = dict(step("task10").plans)[name]
-        self.run_name, self.run_duration, self.run_period = name, plan.duration, plan.ts
-        self.live.start_recording()
-        self.device.run_steps(plan.low, plan.high, plan.half_period, plan.periods, plan.ts)
-        self.motor = f"steps {plan.low:g}/{plan.high:g} V"
-        self.refresh_status()
-
-    def finish_run(self, complete: bool) -> None:
-        """The run ended (STEPDONE) or was stopped: keep what was recorded."""
-        if self.run_name is None:
+        plan = dict(lab_step("task10").plans)[name]
+        try:
+            self.device.stop()
+            self.device.set_period(plan.ts)
+            self.recording = self.lab.start_recording(name)
+            self.device.run_steps(plan.low, plan.high, plan.half_period, plan.periods)
+        except MinsegError as exc:
+            self.notify(str(exc), title="run", severity="error")
+            self.finish_run("could not start")
             return
-        name, self.run_name = self.run_name, None
-        t, count, u = self.live.stop_recording()
-        if self.lab is not None and t.size:
+        self.motor = f"steps 0/{plan.high:g} V"
+        self.refresh_status()
+        self._show_progress()
+
+    def finish_run(self, why: str) -> None:
+        """The run ended (done, stopped, board lost): keep what was recorded."""
+        rec, self.recording = self.recording, None
+        if rec is None or self.lab is None:
+            return
+        try:
+            kept = self.lab.finish_recording(rec)
+        except MinsegError as exc:
+            kept = str(exc)
+        self.notify(f"{why}: {kept}", title="Task 10")
+        from minseg_tui.ui.panels import StepRunPanel
+
+        for panel in self.screen.query(StepRunPanel):
+            panel.progress(1.0 if why == "done" else 0.0, f"{why}: {kept}")
+        if self.device is not None and rec.plan.ts != LAB_PERIOD:  # type: ignore[attr-defined]
             try:
-                self.lab.store_run(name, t, count, u, complete)
-            except MinsegError as exc:
-                self.notify(str(exc), title="run", severity="error")
-        self.notify(f"run {name} {'done' if complete else 'stopped'}: {t.size} samples kept")
-        self.entry_stored(name)
+                self.device.set_period(LAB_PERIOD)
+            except MinsegError:
+                pass
+        self.entry_stored("run")
 
     @on(LinkEvent)
     def _link_event(self, event: LinkEvent) -> None:
-        self.last_event = event.kind
-        if event.kind in ("WDOG", "STEPDONE", "LOST"):
+        kind = event.event.kind
+        if kind == "step":
+            return
+        if kind == "stepdone":
             self.motor = "off"
-            self.finish_run(complete=event.kind == "STEPDONE")
+            self.finish_run("done")
+        elif kind in ("disconnected", "watchdog", "boot", "error"):
+            self.motor = "off"
+            if self.recording is not None:
+                self.finish_run(EVENT_TEXT.get(kind, "stopped"))
+        if kind == "connected" and self.event_text == "":
+            return
+        self.event_text = EVENT_TEXT.get(kind, event.event.message)
         self.refresh_status()
-        if event.kind in ("WDOG", "LOST"):
-            self.notify(event.detail or "the board stopped the motor (watchdog)", severity="warning")
+        if kind in ("disconnected", "watchdog", "error"):
+            self.notify(self.event_text if kind != "error" else event.event.message, severity="warning", timeout=8)
 
     # -- what a step shows besides its entries -------------------------------------------
     def step_panel(self, step: object) -> Widget | None:
@@ -203,10 +293,12 @@ class LabApp(App[None]):
         return panel_for(self, step)  # type: ignore[arg-type]
 
     def entry_stored(self, key: str) -> None:
-        """An entry was saved: panels that depend on entries recompute."""
+        """An entry was saved: panels that depend on entries recompute; the navigator marks."""
         for screen in self.screen_stack:
             for w in screen.query(".recompute"):
                 w.recompute()  # type: ignore[attr-defined]
+            if isinstance(screen, LabScreen):
+                screen.refresh_marks()
 
     def refresh_fields(self) -> None:
         """Show in every entry row what the lab now holds (after a capture)."""
@@ -216,6 +308,7 @@ class LabApp(App[None]):
             return
         for row in self.screen.query(FieldRow):
             row.refresh_from_lab(self.lab.text(row.field.key), self.lab.result(row.field.key))
+        self.entry_stored("capture")
 
     # -- actions -------------------------------------------------------------------------
     def action_help(self) -> None:
@@ -223,16 +316,23 @@ class LabApp(App[None]):
             self.push_screen(HelpScreen(KEYS))
 
     def action_stop_motor(self) -> None:
-        if self.device is not None:
-            self.device.stop()
+        """F2: motor off now; a run in progress keeps what it recorded."""
         self.motor = "off"
-        self.finish_run(complete=False)
+        if self.device is not None:
+            try:
+                self.device.stop()
+            except MinsegError as exc:
+                self.notify(f"{exc} (a board without USB power stops by itself)", severity="warning")
+        if self.recording is not None:
+            self.finish_run("stopped")
+        for w in self.screen.query(".live"):
+            w.level = None  # type: ignore[attr-defined]
         self.refresh_status()
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
 
-    def _panel_action(self, name: str) -> None:
+    def _panel_action(self, name: str, what: str) -> None:
         screen = self._lab_screen()
         if screen is None:
             return
@@ -241,32 +341,49 @@ class LabApp(App[None]):
             if handler is not None:
                 handler()
                 return
-        self.notify("nothing to do for this key on this step", severity="information")
+        self.notify(f"{what} is not part of this step", severity="information")
 
     def action_set_voltage(self) -> None:
-        self._panel_action("set_voltage")
+        self._panel_action("set_voltage", "setting a voltage")
 
     def action_capture(self) -> None:
-        self._panel_action("capture")
+        self._panel_action("capture", "capturing omega_ss")
 
     def action_run_steps(self) -> None:
-        self._panel_action("run_steps")
+        self._panel_action("run_steps", "the step experiment")
 
     def action_run_fast(self) -> None:
-        self._panel_action("run_fast")
+        self._panel_action("run_fast", "the fast step experiment")
 
     def action_formula(self) -> None:
-        self._panel_action("formula")
+        self._panel_action("formula", "a table formula")
+
+    def action_zoom_next(self) -> None:
+        self._panel_action("zoom_next", "zooming the step log")
 
     def action_export(self) -> None:
         if self.lab is None:
+            self.notify("start or resume a session first", severity="warning")
             return
+        self._export()
+
+    @work(thread=True, exclusive=True, group="export", name="report")
+    def _export(self) -> None:
+        """Worker: write the report (it computes every result and figure)."""
+        lab = self.lab
+        assert lab is not None
         try:
-            paths = self.lab.export()
-        except MinsegError as exc:
-            self.notify(str(exc), title="report", severity="error")
+            paths = lab.export()
+        except (MinsegError, OSError) as exc:
+            self.call_from_thread(self.notify, str(exc), title="report", severity="error")
             return
-        self.notify("report written: " + ", ".join(str(p) for p in paths), title="report")
+        self.call_from_thread(self._exported, paths)
+
+    def _exported(self, paths: tuple[str, ...]) -> None:
+        self.exported = paths
+        self.notify("written: " + ", ".join(paths[:2]) + (f" and {len(paths) - 2} run CSV" if len(paths) > 2 else ""),
+                    title="report", timeout=10)
+        self.entry_stored("export")
 
     def go_to_step(self, step_id: str) -> None:
         """Jump to a step (from the palette)."""
@@ -274,40 +391,60 @@ class LabApp(App[None]):
         if screen is not None:
             screen.go_to(step_id)
 
+    def import_log(self) -> None:
+        """Palette: go to the model check, where a log recorded elsewhere can be loaded."""
+        self.go_to_step("model_check")
+        self.call_after_refresh(self._focus_import)
+
+    def _focus_import(self) -> None:
+        for w in self.screen.query("#import-path"):
+            w.focus()
+
     def switch_to_virtual(self) -> None:
         """Drop the board and use the virtual MinSeg."""
         self.action_stop_motor()
         self.workers.cancel_group(self, "stream")
-        if self.device is not None:
-            self.device.close()
-        self.device = self._open_device("sim")
+        old, self.device = self.device, None
+        if old is not None:
+            try:
+                old.close()
+            except MinsegError:
+                pass
         self.live.clear()
-        self._stream()
+        self.event_text = "connecting…"
         self.refresh_status()
+        self._connect("sim")
 
     def get_system_commands(self, screen: Screen) -> Iterable[SystemCommand]:
         yield from super().get_system_commands(screen)
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
+        yield SystemCommand("Set step voltage", "Request the next of 2.5/3.5/4.5 V on the board (F3)", self.action_set_voltage)
         yield SystemCommand("Capture omega_ss", "Mean over the settled window (F4)", self.action_capture)
-        yield SystemCommand("Set step voltage", "Request this step's voltage on the board (F3)", self.action_set_voltage)
-        yield SystemCommand("Run step sequence", "Task 10 on the board (F5)", self.action_run_steps)
-        yield SystemCommand("Run fast step sequence", "5 ms board-timed sampling (F6)", self.action_run_fast)
+        yield SystemCommand("Run step sequence", "Task 10 on the board, 25 ms (F5)", self.action_run_steps)
+        yield SystemCommand("Run fast step sequence", "Task 10 at 5 ms, board-timed (F6)", self.action_run_fast)
         yield SystemCommand("Export report", "Markdown, HTML and CSV into the session folder (F8)", self.action_export)
+        yield SystemCommand("Import a step log", "Load a log recorded elsewhere into the model check", self.import_log)
         yield SystemCommand("Switch to virtual board", "Use the virtual MinSeg instead of the board", self.switch_to_virtual)
-        yield SystemCommand("Help", "The keys (F1)", self.action_help)
+        yield SystemCommand("Keys", "The help screen (F1)", self.action_help)
 
     def on_unmount(self) -> None:
         self._stop.set()
+        if self.recording is not None:
+            self.finish_run("app closed")
         if self.device is not None:
             try:
                 self.device.stop()
+            except MinsegError:
+                pass
+            try:
                 self.device.close()
             except MinsegError:
                 pass
 
 
-def make_app(config: UiConfig) -> LabApp:
-    """The app for ``config``, wired to the real session store and device factory."""
+def make_app(config: UiConfig, writer: ReportWriter | None = None) -> LabApp:
+    """The app for ``config``, wired to the real session store and device factory; ``writer``
+    writes the report (the CLI hands in :func:`minseg_tui.report.write.write_report`)."""
     from minseg_tui.ui.backend import open_device, open_store
 
-    return LabApp(config, open_store(config), lambda spec: open_device(spec, config))
+    return LabApp(config, open_store(config, writer), lambda spec: open_device(spec, config))

@@ -17,43 +17,26 @@ class LiveBuffer:
     The worker thread extends it; the redraw timer takes a snapshot as arrays.
     """
 
-    def __init__(self, size: int = 1200) -> None:
+    def __init__(self, size: int = 4000) -> None:
         self._lock = threading.Lock()
         self._t: deque[float] = deque(maxlen=size)
         self._count: deque[int] = deque(maxlen=size)
         self._u: deque[float] = deque(maxlen=size)
+        self.size = size
         self.total = 0
-        self._rec: list[tuple[float, int, float]] | None = None
 
     def extend(self, batch: Batch) -> None:
-        """Append one batch (called from the worker)."""
+        """Append one batch (called from the worker); only its newest ``size`` samples matter."""
+        n = len(batch)
+        if not n:
+            return
+        k = max(0, n - self.size)
+        t, count, u = batch.t[k:], np.asarray(batch.count)[k:], batch.u_req[k:]
         with self._lock:
-            self._t.extend(batch.t)
-            self._count.extend(batch.count)
-            self._u.extend(batch.u_req)
-            self.total += len(batch.t)
-            if self._rec is not None:
-                self._rec.extend(zip(batch.t, batch.count, batch.u_req, strict=True))
-
-    def start_recording(self) -> None:
-        """Keep every sample from now on (a run), besides the bounded window."""
-        with self._lock:
-            self._rec = []
-
-    @property
-    def recorded(self) -> int:
-        """Samples recorded so far in the current run (0 when not recording)."""
-        with self._lock:
-            return len(self._rec) if self._rec is not None else 0
-
-    def stop_recording(self) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.float64]]:
-        """End the run; its (t, count, u_req) arrays."""
-        with self._lock:
-            rec, self._rec = self._rec or [], None
-        if not rec:
-            return np.zeros(0), np.zeros(0, dtype=np.int64), np.zeros(0)
-        t, c, u = zip(*rec, strict=True)
-        return np.array(t, dtype=float), np.array(c, dtype=np.int64), np.array(u, dtype=float)
+            self._t.extend(t.tolist())
+            self._count.extend(count.tolist())
+            self._u.extend(u.tolist())
+            self.total += n
 
     def clear(self) -> None:
         """Forget everything (new device)."""
@@ -61,6 +44,19 @@ class LiveBuffer:
             self._t.clear()
             self._count.clear()
             self._u.clear()
+
+    def freeze(self, t: NDArray[np.float64], count: NDArray[np.int64], u: NDArray[np.float64]) -> None:
+        """Replace the contents with given arrays (a recorded stream, for pinned screens)."""
+        with self._lock:
+            self.clear_unlocked()
+            self._t.extend(np.asarray(t, dtype=float).tolist())
+            self._count.extend(np.asarray(count).tolist())
+            self._u.extend(np.asarray(u, dtype=float).tolist())
+
+    def clear_unlocked(self) -> None:
+        self._t.clear()
+        self._count.clear()
+        self._u.clear()
 
     def snapshot(self) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.float64]]:
         """Copies of (t, count, u_req) as arrays, oldest first."""

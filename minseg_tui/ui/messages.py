@@ -1,10 +1,10 @@
-"""Messages workers post to the screens: small, and coalesced where they come in floods."""
+"""Messages workers post to the app: small, and coalesced where they come in floods."""
 
 from __future__ import annotations
 
 from textual.message import Message
 
-from minseg_tui.ui.ports import LinkHealth
+from minseg_tui.ui.ports import Device, Event, LinkHealth
 
 
 class SamplesArrived(Message):
@@ -23,9 +23,17 @@ class SamplesArrived(Message):
 
 
 class LinkEvent(Message):
-    """Something the board said or the link did: ``kind`` such as STEP, STEPDONE, WDOG, LOST."""
+    """Something the board said or the link did (see :class:`~minseg_tui.ui.ports.Event`)."""
 
-    def __init__(self, kind: str, detail: str = "") -> None:
+    def __init__(self, event: Event) -> None:
         super().__init__()
-        self.kind = kind
-        self.detail = detail
+        self.event = event
+
+
+class DeviceOpened(Message):
+    """The device worker finished: the device, or None with the one-line ``error``."""
+
+    def __init__(self, device: Device | None, error: str) -> None:
+        super().__init__()
+        self.device = device
+        self.error = error

@@ -1,22 +1,27 @@
-"""The panel each kind of step shows above its entries: live plots, the table, the runs.
+"""The panel each kind of step shows above its entries: live plots, the meter, the table, the
+runs, the results, the model check, the report.
 
-Panels pull arrays from the app's live buffer and results from the lab port, on a timer
-or after an entry; every number comes from :mod:`minseg_tui.signals` or the lab layer.
+Panels pull arrays from the app's live buffer (on a timer, a few times a second, never per
+sample) and views from the lab port (slow ones in a worker); every number comes from
+:mod:`minseg_tui.signals` or the lab layer through :mod:`minseg_tui.ui.backend`.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
+import numpy as np
+from textual import on, work
 from textual.app import ComposeResult
+from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.widget import Widget
-from textual.widgets import DataTable, ProgressBar, Static
+from textual.widgets import DataTable, Input, ProgressBar, Static
 
 from minseg_tui import signals
 from minseg_tui.errors import MinsegError
 from minseg_tui.lab.steps import LEVELS, Step
-from minseg_tui.ui.ports import TableView
+from minseg_tui.ui.ports import CheckView, ResultsView, RunView, TableView
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 
 if TYPE_CHECKING:
@@ -25,32 +30,42 @@ if TYPE_CHECKING:
 PLOT_SPAN = 8.0
 """Seconds of the live stream on screen."""
 
+ZOOM_BEFORE = 0.2
+"""Seconds shown before a rising step when zoomed to it."""
+
 FAST_WHY = (
-    "Why fast sampling matters: the published MinSeg figures give T near 0.04 s, less than "
-    "two 25 ms samples, and the manual's 20-tap average spans 0.5 s. Read at 25 ms with the "
-    "average, the 63 % time mostly measures the filter. At 5 ms, timed by the board, the "
-    "rise itself is visible."
+    "Why 5 ms matters: the published MinSeg figures give T near 0.04 s, under two 25 ms "
+    "samples, and the manual's 20-tap average spans 0.5 s. Read at 25 ms through the "
+    "average, the 63 % time mostly measures the filter; at 5 ms, board-timed, the rise "
+    "itself is visible. Compare the T readings side by side:"
 )
 
 
+def _s(v: float | None) -> str:
+    return "—" if v is None else f"{v:.3f} s"
+
+
 class LivePanel(Vertical):
-    """Angle and speed of the last seconds, the manual's speed beside the timestamp one."""
+    """Angle and speed of the last seconds, the manual's speed beside the timestamp one; the
+    steady-state indicator (Task 4); F3 sets the next voltage; the virtual multimeter."""
 
     def __init__(self, app: LabApp, step: Step) -> None:
         super().__init__(classes="panel live")
         self._lab_app = app
         self.step = step
-        self.steady_text = ""
         self.levels = tuple(dict.fromkeys(f.level for f in step.fields if f.level is not None))
         if not self.levels and "capture_omega" in step.actions:
             self.levels = LEVELS
         self.level: float | None = None
+        self.plots = bool({"live_velocity", "capture_omega"} & set(step.actions))
 
     def compose(self) -> ComposeResult:
-        with Horizontal(classes="plots"):
-            yield TracePlot("angle", "t [s]", "theta [rad]", id="plot-angle")
-            yield TracePlot("speed", "t [s]", "omega [rad/s]", id="plot-speed")
-        yield Static("", id="steady")
+        if self.plots:
+            with Horizontal(classes="plots"):
+                yield TracePlot("angle", "t [s]", "theta [rad]", id="plot-angle")
+                yield TracePlot("speed", "t [s]", "omega [rad/s]", id="plot-speed")
+        if self.levels or "capture_omega" in self.step.actions:
+            yield Static("", id="steady")
         if "meter" in self.step.actions:
             yield MeterPanel(self._lab_app)
 
@@ -59,45 +74,50 @@ class LivePanel(Vertical):
         if self._lab_app.config.refresh > 0:
             self.set_interval(self._lab_app.config.refresh, self.redraw)
 
-    def _arrays(self) -> tuple[Any, Any, Any]:
-        return self._lab_app.live.snapshot()
-
     def redraw(self) -> None:
-        """Replot from the buffer and update the steady-state line (a few times a second)."""
-        t, count, _u = self._arrays()
-        lab = self._lab_app.lab
-        if t.size:
+        """Replot from the buffer and update the indicator (a few times a second)."""
+        t, count, _u = self._lab_app.live.snapshot()
+        if self.plots and t.size > 1:
             keep = t >= t[-1] - PLOT_SPAN
             tt, cc = t[keep], count[keep]
-            theta = signals.angle(cc)
-            w_lab = signals.lab_velocity(cc)
-            w_ts = signals.timestamp_velocity(tt, cc)
             x = tt - tt[0]
-            self.query_one("#plot-angle", TracePlot).show([Trace(x, theta, "theta")])
-            self.query_one("#plot-speed", TracePlot).show(
-                [Trace(x, w_ts, "board timestamps"), Trace(x, w_lab, "manual: Euler + 20-tap")]
-            )
-        if lab is not None and "capture_omega" in self.step.actions:
-            s = lab.steady(t, count)
+            self.query_one("#plot-angle", TracePlot).show([Trace(x, signals.angle(cc), "theta")])
+            self.query_one("#plot-speed", TracePlot).show([
+                Trace(x, signals.timestamp_velocity(tt, cc), "board time"),
+                Trace(x, signals.lab_velocity(cc), "manual", "dot"),
+            ])
+        steady = self.query("#steady")
+        if not steady:
+            return
+        level = "none" if self.level is None else f"{self.level:g} V"
+        keys = "F3 next voltage · F2 stop"
+        if "capture_omega" in self.step.actions and self._lab_app.lab is not None:
+            s = self._lab_app.lab.steady(t, count)
             state = "SETTLED" if s.settled else "not settled"
-            self.steady_text = (f"steady state: {state} · mean {s.mean:.2f} rad/s ± {s.spread:.2f}"
-                                f" over {s.window:.1f} s {s.note}").rstrip()
-            level = "none (F3 sets 2.5 V)" if self.level is None else f"{self.level:g} V (F3 next)"
-            self.query_one("#steady", Static).update(
-                f"{self.steady_text}\nrequested: {level} · F4 captures omega_ss · F2 stops")
-        elif t.size == 0:
-            self.query_one("#steady", Static).update("waiting for samples...")
+            mean = "—" if s.mean != s.mean else f"{s.mean:.2f} ± {s.spread:.2f} rad/s"
+            text = (f"steady: {state} · {mean} over {s.window:g} s {s.note}".rstrip()
+                    + f"\nrequested {level} · {keys} · F4 capture")
+        else:
+            text = f"requested {level} · {keys}"
+        if t.size == 0:
+            text = "waiting for samples…\n" + text
+        steady.first(Static).update(text)
 
     def set_voltage(self) -> None:
-        """F3: request this step's voltage on the board."""
+        """F3: request the next of this step's voltages on the board."""
         device = self._lab_app.device
         if device is None or not self.levels:
-            self._lab_app.notify("no voltage to set on this step")
+            self._lab_app.notify("no voltage to set on this step (Tasks 4-5)")
             return
-        k = -1 if self.level is None else self.levels.index(self.level)
-        self.level = self.levels[(k + 1) % len(self.levels)]
-        device.set_voltage(self.level)
-        self._lab_app.motor = f"{self.level:g} V"
+        k = -1 if self.level not in self.levels else self.levels.index(self.level)
+        level = self.levels[(k + 1) % len(self.levels)]
+        try:
+            device.set_voltage(level)
+        except MinsegError as exc:
+            self._lab_app.notify(str(exc), severity="error")
+            return
+        self.level = level
+        self._lab_app.motor = f"{level:g} V"
         self._lab_app.refresh_status()
         self.redraw()
 
@@ -105,11 +125,12 @@ class LivePanel(Vertical):
         """F4: take omega_ss from the settled window (refused while not settled)."""
         lab = self._lab_app.lab
         if lab is None or "capture_omega" not in self.step.actions:
+            self._lab_app.notify("capturing omega_ss is part of Task 4")
             return
         if self.level is None:
             self._lab_app.notify("set a voltage first (F3)", severity="warning")
             return
-        t, count, _u = self._arrays()
+        t, count, _u = self._lab_app.live.snapshot()
         result = lab.capture_live(self.level, t, count)
         self._lab_app.notify(result.message or f"omega_ss at {self.level:g} V captured",
                              severity="information" if result.ok else "warning")
@@ -117,25 +138,52 @@ class LivePanel(Vertical):
 
 
 class MeterPanel(Static):
-    """The virtual MinSeg's multimeter (blank on a real board: read your own meter)."""
+    """The virtual MinSeg's multimeter (on a real board: read the one on the bench)."""
 
     def __init__(self, app: LabApp) -> None:
-        super().__init__("", classes="panel")
+        super().__init__("", classes="meter")
         self._lab_app = app
 
     def on_mount(self) -> None:
+        self._lab_app.meter_wanted += 1
         self.redraw()
         if self._lab_app.config.refresh > 0:
             self.set_interval(self._lab_app.config.refresh, self.redraw)
 
+    def on_unmount(self) -> None:
+        self._lab_app.meter_wanted -= 1
+
     def redraw(self) -> None:
         device = self._lab_app.device
         if device is None or not device.info.virtual:
-            self.update("Read the multimeter on the bench.")
+            self.update("multimeter: read the one on the bench (M1A-M1B)")
             return
-        m = device.meter()
-        self.update("multimeter (virtual): —" if m is None else
-                    f"multimeter (virtual) on M1A/M1B: {m.u_A:.2f} V · {m.i * 1000:.1f} mA · R {m.R:.2f} Ω")
+        m = self._lab_app.meter_reading
+        self.update("multimeter (virtual, M1A-M1B): reading…" if m is None else
+                    f"multimeter (virtual, M1A-M1B): {m.u_A:.2f} V · {m.i * 1000:.1f} mA · {m.R:.1f} Ω")
+
+
+class ConnectPanel(Static):
+    """Task 1: who the program talks to, and how to change it."""
+
+    def __init__(self, app: LabApp) -> None:
+        super().__init__("", classes="panel recompute")
+        self._lab_app = app
+
+    def on_mount(self) -> None:
+        self.recompute()
+
+    def recompute(self) -> None:
+        d = self._lab_app.device
+        if d is None:
+            text = "No device yet. Ctrl+P → Switch to virtual board to practise."
+        elif d.info.virtual:
+            text = (f"Connected to the VIRTUAL MinSeg ({d.info.firmware})"
+                    + (": no board was found." if d.info.fallback else ".")
+                    + " Plug a board in and restart with --port, or keep practising.")
+        else:
+            text = f"Connected to {d.info.name} on {d.info.port}, firmware {d.info.firmware}."
+        self.update(text)
 
 
 class TablePanel(Vertical):
@@ -166,8 +214,10 @@ class TablePanel(Vertical):
         table.add_columns(*self.view.columns)
         for row in self.view.rows:
             table.add_row(*[c.text for c in row])
-        self.query_one("#results", Static).update(
-            "  ".join(f"{name} = {cell.text}" for name, cell in self.view.results))
+        lines = ["  ".join(f"{name} = {cell.text}" for name, cell in self.view.results)]
+        lines += [f"{label}: yours {own} · computed {comp}" for label, own, comp in self.view.compare
+                  if own != "—"]
+        self.query_one("#results", Static).update("\n".join(lines))
         self.query_one("#warnings", Static).update("\n".join(f"! {w}" for w in self.view.warnings))
 
     def formula(self) -> None:
@@ -184,43 +234,76 @@ class TablePanel(Vertical):
 
 
 class StepRunPanel(Vertical):
-    """Task 10: run the board's step sequence with progress; F2 stops it at once."""
+    """Task 10: run the board's step sequence with progress (F2 stops it at once); the
+    25 ms run beside the 5 ms one, with both T readings next to each other."""
 
     def __init__(self, app: LabApp, step: Step) -> None:
         super().__init__(classes="panel recompute")
         self._lab_app = app
         self.step = step
+        self.views: tuple[RunView, ...] = ()
 
     def compose(self) -> ComposeResult:
-        yield Static("F5 runs 4 steps 0 → 4.5 V (1 s each) at 25 ms; F6 the same at 5 ms. "
-                     "F2 stops the motor at any time.", classes="hint")
+        plans = dict(self.step.plans)
+        m = plans["manual"]
+        yield Static(f"F5: {m.periods} steps 0 → {m.high:g} V, {m.half_period:g} s each, at "
+                     f"{m.ts * 1000:g} ms. F6: the same at {plans['fast'].ts * 1000:g} ms. F2 stops.",
+                     classes="hint")
         yield ProgressBar(total=100, show_eta=False, id="run-progress")
         yield Static("", id="run-status")
-        yield Static(FAST_WHY, classes="para")
         with Horizontal(classes="plots"):
-            yield TracePlot("25 ms, manual filter", "t [s]", "omega [rad/s]", id="plot-slow")
-            yield TracePlot("5 ms, board-timed", "t [s]", "omega [rad/s]", id="plot-fast")
+            yield TracePlot("25 ms run", "t [s]", "omega [rad/s]", id="plot-slow")
+            yield TracePlot("5 ms run", "t [s]", "omega [rad/s]", id="plot-fast")
+        yield Static(FAST_WHY, classes="para")
+        yield Static("", id="t-readings")
 
     def on_mount(self) -> None:
         self.recompute()
 
     def recompute(self) -> None:
-        """Show the runs already recorded (after a resume, too)."""
-        lab = self._lab_app.lab
-        if lab is None:
+        """Show the runs already recorded (after a resume, too); computed in a worker."""
+        if self._lab_app.lab is None or self._lab_app.recording is not None:
             return
-        for name, plot_id in (("manual", "#plot-slow"), ("fast", "#plot-fast")):
-            run = lab.run(name)
-            if run is not None:
-                t, omega = run
-                self.query_one(plot_id, TracePlot).show([Trace(t, omega, name)])
-        self.query_one("#run-status", Static).update(lab.run_status())
+        self._load()
+
+    @work(thread=True, exclusive=True, group="runs")
+    def _load(self) -> None:
+        lab = self._lab_app.lab
+        assert lab is not None
+        views = lab.run_views()
+        self.app.call_from_thread(self._show, views)
+
+    def _show(self, views: tuple[RunView, ...]) -> None:
+        if not self.is_attached:
+            return  # the step changed while the worker ran
+        if not self.query("#t-readings"):
+            self.call_after_refresh(self._show, views)
+            return
+        self.views = views
+        for v in views:
+            plot = self.query_one("#plot-slow" if v.kind == "steps" else "#plot-fast", TracePlot)
+            traces = [Trace(v.t, v.omega, "board time")]
+            if v.kind == "steps":
+                traces.append(Trace(v.t, v.omega_lab, "manual", "dot"))
+            plot.show(traces)
+        rows = [f"{'run':<9}{'T 63% manual':>13}{'T 63%':>9}{'T fit (95% CI)':>24}"]
+        for v in views:
+            ci = f" ({v.T_ci[0]:.3f}..{v.T_ci[1]:.3f})" if v.T_ci else ""
+            rows.append(f"{v.name:<9}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>9}"
+                        f"{_s(v.T_ls) + ci:>24}")
+        if not views:
+            rows.append("no run yet: F5 (25 ms), then F6 (5 ms)")
+        self.query_one("#t-readings", Static).update("\n".join(rows))
+        if self._lab_app.recording is None:
+            runs = ", ".join(f"{v.name} ({v.samples} samples{', interrupted' if v.interrupted else ''})"
+                             for v in views)
+            self.query_one("#run-status", Static).update(runs or "no runs recorded yet")
 
     def run_steps(self) -> None:
-        self._lab_app.start_run("manual", 0.025)
+        self._lab_app.start_run("manual")
 
     def run_fast(self) -> None:
-        self._lab_app.start_run("fast", 0.005)
+        self._lab_app.start_run("fast")
 
     def progress(self, fraction: float, text: str) -> None:
         """Move the bar (0-1) and say where the run is."""
@@ -228,42 +311,219 @@ class StepRunPanel(Vertical):
         self.query_one("#run-status", Static).update(text)
 
 
-class TextPanel(Static):
-    """Results as text lines from the lab (model check, Tasks 11-15)."""
+class StepPlot(TracePlot):
+    """The step log, whole or zoomed to one rising step; [ and ] pick the step, z toggles."""
 
-    def __init__(self, app: LabApp, what: str) -> None:
-        super().__init__("", classes="panel recompute")
+    BINDINGS = [
+        Binding("left_square_bracket", "pick(-1)", "prev step"),
+        Binding("right_square_bracket", "pick(1)", "next step"),
+        Binding("z", "zoom", "zoom"),
+    ]
+    can_focus = True
+
+    def action_pick(self, delta: int) -> None:
+        for p in self.ancestors:
+            if isinstance(p, ResultsPanel):
+                p.pick(delta)
+
+    def action_zoom(self) -> None:
+        for p in self.ancestors:
+            if isinstance(p, ResultsPanel):
+                p.toggle_zoom()
+
+
+class ResultsPanel(Vertical):
+    """Tasks 11-15: the step log plotted, zoom to a step, K, T (63 % and least squares with
+    its interval), J, the model, omega at 5 V, and the group's readings beside them."""
+
+    def __init__(self, app: LabApp, step: Step) -> None:
+        super().__init__(classes="panel recompute results")
         self._lab_app = app
-        self._what = what
+        self.step = step
+        self.view: ResultsView | None = None
+        self.zoom: int | None = 0 if step.id in ("task11", "task12") else None
+
+    def compose(self) -> ComposeResult:
+        yield StepPlot("step log", "t [s]", "omega [rad/s]", id="plot-log")
+        yield Static("", id="zoom-note", classes="hint")
+        yield Static("computing…", id="results-lines")
+        yield Static("", id="compare")
 
     def on_mount(self) -> None:
         self.recompute()
 
     def recompute(self) -> None:
+        if self._lab_app.lab is not None:
+            self._load()
+
+    @work(thread=True, exclusive=True, group="results")
+    def _load(self) -> None:
         lab = self._lab_app.lab
-        if lab is None:
+        assert lab is not None
+        view = lab.results_view(self.step.id)
+        self.app.call_from_thread(self._show, view)
+
+    def _show(self, view: ResultsView) -> None:
+        if not self.is_attached:
+            return  # the step changed while the worker ran
+        if not self.query("#compare"):
+            self.call_after_refresh(self._show, view)
+            return
+        self.view = view
+        if self.zoom is not None and self.zoom >= len(view.steps):
+            self.zoom = 0 if view.steps else None
+        self._plot()
+        lines = list(view.lines) or ["no step result yet"]
+        lines += [f"! {p}" for p in view.problems]
+        self.query_one("#results-lines", Static).update("\n".join(lines))
+        self.query_one("#compare", Static).update(
+            "\n".join(f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare))
+
+    def _plot(self) -> None:
+        v = self.view
+        if v is None:
+            return
+        plot = self.query_one(StepPlot)
+        note = self.query_one("#zoom-note", Static)
+        if v.t.size == 0:
+            plot.show([])
+            note.update("no step run yet (Task 10)")
+            return
+        keep = np.ones(v.t.size, dtype=bool)
+        if self.zoom is not None and v.steps:
+            w = v.steps[self.zoom]
+            keep = (v.t >= w.t0 - ZOOM_BEFORE) & (v.t <= w.t1)
+            note.update(f"run {v.run}: step {self.zoom + 1} of {len(v.steps)}, 63 % at {_s(w.T_63)}"
+                        " · [ ] step · z whole log (F9)")
+        else:
+            note.update(f"run {v.run}: whole log, {len(v.steps)} rising steps · z zooms (F9)")
+        plot.show([Trace(v.t[keep], v.omega[keep], "omega"), Trace(v.t[keep], v.u[keep], "u_A", "dot")])
+
+    def pick(self, delta: int) -> None:
+        """Zoom to the previous/next rising step."""
+        if self.view is None or not self.view.steps:
+            return
+        n = len(self.view.steps)
+        self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
+        self._plot()
+
+    def toggle_zoom(self) -> None:
+        """One step, or the whole log."""
+        self.zoom = None if self.zoom is not None else 0
+        self._plot()
+
+    def zoom_next(self) -> None:
+        """F9: the next step, then the whole log, then the first step again."""
+        if self.view is None or not self.view.steps:
+            return
+        if self.zoom is None:
+            self.zoom = 0
+        elif self.zoom + 1 >= len(self.view.steps):
+            self.zoom = None
+        else:
+            self.zoom += 1
+        self._plot()
+
+
+class ModelCheckPanel(Vertical):
+    """Measured against the first-order model and the extended one, residuals, the named cause
+    with its evidence, the gain; a log recorded elsewhere can be loaded."""
+
+    def __init__(self, app: LabApp) -> None:
+        super().__init__(classes="panel recompute")
+        self._lab_app = app
+        self.view: CheckView | None = None
+
+    def compose(self) -> ComposeResult:
+        with Horizontal(classes="plots"):
+            yield TracePlot("measured vs models", "t [s]", "omega [rad/s]", id="plot-check")
+            yield TracePlot("residual (baseline)", "t [s]", "rad/s", id="plot-residual")
+        yield Static("computing…", id="check-lines")
+        yield Input(placeholder="load a step log (CSV path), Enter", id="import-path")
+        yield Static("", id="import-msg", classes="hint")
+
+    def on_mount(self) -> None:
+        self.recompute()
+
+    def recompute(self) -> None:
+        if self._lab_app.lab is not None:
+            self._load()
+
+    @work(thread=True, exclusive=True, group="check")
+    def _load(self) -> None:
+        lab = self._lab_app.lab
+        assert lab is not None
+        view = lab.check_view()
+        self.app.call_from_thread(self._show, view)
+
+    def _show(self, v: CheckView) -> None:
+        if not self.is_attached:
+            return  # the step changed while the worker ran
+        if not self.query("#check-lines"):
+            self.call_after_refresh(self._show, v)
+            return
+        self.view = v
+        lines = self.query_one("#check-lines", Static)
+        if v.problem:
+            lines.update(f"run {v.run or '—'}: {v.problem}")
+            return
+        self.query_one("#plot-check", TracePlot).show([
+            Trace(v.t, v.omega, "measured"), Trace(v.t, v.baseline, "first order", "dot"),
+            Trace(v.t, v.extended, "extended", "+")])
+        self.query_one("#plot-residual", TracePlot).show([Trace(v.t, v.residual, "measured - model")])
+        lines.update("\n".join([
+            f"run {v.run} · cause: {v.cause}", f"evidence: {v.evidence}",
+            f"extended model: {v.extended_model}", f"gain: {v.gain}"]))
+
+    @on(Input.Submitted, "#import-path")
+    def _import(self, event: Input.Submitted) -> None:
+        event.stop()
+        lab = self._lab_app.lab
+        path = event.value.strip()
+        msg = self.query_one("#import-msg", Static)
+        if lab is None or not path:
+            msg.update("type the path of a step log (t, u, omega columns) and press Enter")
             return
         try:
-            text = getattr(lab, self._what)()
+            text = lab.import_run(path)
         except MinsegError as exc:
-            text = str(exc)
-        self.update(text)
+            msg.update(f"✗ {exc}")
+            return
+        msg.update(text)
+        self._lab_app.entry_stored("import")
+
+
+class ReportPanel(Static):
+    """The summary step: F8 writes the report; the files written."""
+
+    def __init__(self, app: LabApp) -> None:
+        super().__init__("", classes="panel recompute")
+        self._lab_app = app
+
+    def on_mount(self) -> None:
+        self.recompute()
+
+    def recompute(self) -> None:
+        paths = self._lab_app.exported
+        self.update("F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV."
+                    + ("\nwritten:\n" + "\n".join(f"  {p}" for p in paths) if paths else ""))
 
 
 def panel_for(app: LabApp, step: Step) -> Widget | None:
     """The panel of ``step``'s kind, or None."""
     acts = set(step.actions)
-    if acts & {"live_velocity", "capture_omega"}:
+    if acts & {"live_velocity", "capture_omega", "meter"}:
         return LivePanel(app, step)
+    if "connect" in acts:
+        return ConnectPanel(app)
     if step.id == "table":
         return TablePanel(app)
     if "run_steps" in acts:
         return StepRunPanel(app, step)
     if "results" in acts:
-        return TextPanel(app, "results_text")
+        return ResultsPanel(app, step)
     if "model_check" in acts:
-        return TextPanel(app, "model_check_text")
-    if "meter" in acts:
-        return MeterPanel(app)
+        return ModelCheckPanel(app)
+    if step.id == "summary":
+        return ReportPanel(app)
     return None
-

@@ -1,42 +1,26 @@
-"""Pilot tests: start, entries (good and bad), autosave, resume, stop key, help."""
+"""Pilot tests on the quiet device: start, wrong entries for every input kind, choices by
+keys, resume, the stop key, help, palette entries, NO_COLOR."""
 
 from __future__ import annotations
 
+from textual.filter import Monochrome, NoColor
+from textual.widgets import RadioSet, SelectionList
+
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.store import list_sessions
+from minseg_tui.ui.ports import DeviceInfo, LinkHealth
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.fakes import FakeDevice
+from minseg_tui.ui.widgets.status import status_text
+from tests.ui.fakes import QuietDevice
+from tests.ui.helpers import goto, start, type_in
 
 
-async def _start(pilot, names: str = "Ada, Bo") -> None:
-    await pilot.pause()
-    await pilot.press(*names)
-    await pilot.press("enter")
-    await pilot.pause()
-
-
-async def _goto(pilot, app, step_id: str) -> None:
-    app.go_to_step(step_id)
-    await pilot.pause()
-    await pilot.pause()
-
-
-async def _type(pilot, app, key: str, text: str) -> FieldRow:
-    row = app.screen.query_one(f"#{field_id(key)}", FieldRow)
-    row.input.focus()
-    row.input.value = ""
-    await pilot.press(*text) if text else None
-    await pilot.press("enter")
-    await pilot.pause()
-    return row
-
-
-async def test_new_session_lands_in_the_lab_and_saves(make, tmp_path):
-    app = make()
+async def test_new_session_lands_in_the_lab_and_saves(quiet, tmp_path):
+    app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await _start(pilot)
+        await start(pilot)
         assert isinstance(app.screen, LabScreen)
         assert app.screen.step.id == "prep1"
     infos = list_sessions(tmp_path / "sessions")
@@ -44,8 +28,8 @@ async def test_new_session_lands_in_the_lab_and_saves(make, tmp_path):
     assert infos[0].date == "2024-04-16"
 
 
-async def test_empty_names_are_refused_with_a_message(make, tmp_path):
-    app = make()
+async def test_empty_names_are_refused_with_a_message(quiet, tmp_path):
+    app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await pilot.pause()
         await pilot.press("enter")
@@ -55,89 +39,183 @@ async def test_empty_names_are_refused_with_a_message(make, tmp_path):
     assert list_sessions(tmp_path / "sessions") == []
 
 
-async def test_entries_accept_the_lab_forms_and_refuse_the_rest(make, tmp_path):
-    app = make()
+async def test_wrong_entries_for_every_input_kind(quiet, tmp_path):
+    app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await _start(pilot)
-        await _goto(pilot, app, "task2")
-        row = await _type(pilot, app, "R", "abc")
-        assert "not a number" in row.message
-        assert row.has_class("refused")
-        row = await _type(pilot, app, "R", "5,2")
+        await start(pilot)
+        # quantities
+        await goto(pilot, "task2")
+        row = await type_in(pilot, "R", "abc")
+        assert row.message.startswith("✗") and "not a number" in row.message and row.has_class("refused")
+        row = await type_in(pilot, "R", "5,2")
         assert not row.has_class("refused") and row.message == ""
-        row = await _type(pilot, app, "R", "50 Ω")
-        assert "above 20 Ω" in row.message
-        await _goto(pilot, app, "task5")
-        row = await _type(pilot, app, "i_ss@2.5", "4.7 V")
+        row = await type_in(pilot, "R", "50 Ω")
+        assert "above 20 Ω" in row.message and not row.has_class("refused")
+        await goto(pilot, "task5")
+        row = await type_in(pilot, "i_ss@2.5", "4.7 V")
         assert "is a voltage" in row.message and row.has_class("refused")
-        row = await _type(pilot, app, "i_ss@2.5", "0.047")
+        row = await type_in(pilot, "i_ss@2.5", "0.047")
         assert "ambiguous" in row.message
-        row = await _type(pilot, app, "i_ss@3.5", "0.15 A")
+        row = await type_in(pilot, "i_ss@3.5", "0.15 A")
         assert "above 100 mA" in row.message and not row.has_class("refused")
-        row = await _type(pilot, app, "i_ss@4.5", "47 mA")
+        row = await type_in(pilot, "i_ss@4.5", "47 mA")
         assert row.message == ""
-        await _goto(pilot, app, "task4")
-        row = await _type(pilot, app, "u_ss@2.5", "2,1 V")
-        assert row.message == ""
-        row = await _type(pilot, app, "u_ss@3.5", "3.1 A")
+        await goto(pilot, "task4")
+        row = await type_in(pilot, "u_ss@3.5", "3.1 A")
         assert row.has_class("refused")
-    folder = list_sessions(tmp_path / "sessions")[0].path
-    s = Session.open(folder, readonly=True)
+        row = await type_in(pilot, "omega_ss@2.5", "")
+        assert row.has_class("refused")
+        # formulas: an unknown name, a broken expression, a wrong answer with its feedback
+        await goto(pilot, "prep8")
+        row = await type_in(pilot, "prep8.T", "a/x")
+        assert row.has_class("refused") and row.message.startswith("✗")
+        row = await type_in(pilot, "prep8.T", "b/a")
+        assert "upside down" in row.message
+        await goto(pilot, "prep4")
+        row = await type_in(pilot, "prep4.fraction", "1 - exp(")
+        assert row.has_class("refused")
+        # a percentage typed as a fraction
+        await goto(pilot, "prep5")
+        row = await type_in(pilot, "prep5.percent", "0.63")
+        assert "%" in row.message
+        # free text is never refused
+        await goto(pilot, "prep1")
+        row = await type_in(pilot, "prep1.notes", "?? 42 Ω")
+        assert not row.has_class("refused")
+    s = Session.open(list_sessions(tmp_path / "sessions")[0].path, readonly=True)
     # nothing typed is lost, accepted or not
     assert s.entry("R").text == "50 Ω" and abs(s.value("R") - 50.0) < 1e-12
     assert s.entry("i_ss@2.5").text == "0.047" and not s.entry("i_ss@2.5").ok
     assert abs(s.value("i_ss@4.5") - 0.047) < 1e-12
-    assert abs(s.value("u_ss@2.5") - 2.1) < 1e-12
-    assert s.entry("u_ss@3.5").text == "3.1 A"
-    assert s.current_step == "task4"
+    assert s.entry("u_ss@3.5").text == "3.1 A" and not s.entry("u_ss@3.5").ok
+    assert s.entry("prep4.fraction").text == "1 - exp("
+    assert s.entry("prep1.notes").text == "?? 42 Ω"
 
 
-async def test_resume_lands_where_the_group_left_off(make, tmp_path):
-    app = make()
+async def test_summary_answers_are_picked_with_keys(quiet, tmp_path):
+    app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await _start(pilot)
-        await _goto(pilot, app, "task5")
-        await _type(pilot, app, "i_ss@2.5", "31 mA")
-    app.lab.session.close()
-    app2 = make()
+        await start(pilot)
+        await goto(pilot, "summary")
+        radio = app.screen.query_one(f"#{field_id('summary.1')} RadioSet", RadioSet)
+        radio.focus()
+        await pilot.press("down", "enter")
+        await pilot.pause(0.05)
+        assert app.lab.chosen("summary.1") == (1,)
+        row = app.screen.query_one(f"#{field_id('summary.1')}", FieldRow)
+        assert "system" in row.message  # the checker's feedback
+        await pilot.press("up", "enter")  # a single-choice question keeps one answer
+        await pilot.pause(0.05)
+        assert app.lab.chosen("summary.1") == (0,)
+        sel = app.screen.query_one(f"#{field_id('summary.5')} SelectionList", SelectionList)
+        sel.focus()
+        await pilot.press("down", "space", "down", "space")
+        await pilot.pause(0.05)
+        assert app.lab.chosen("summary.5") == (1, 2)
+        await type_in(pilot, "summary.unclear", "why k_a is 0.65 k_v")
+    s = Session.open(list_sessions(tmp_path / "sessions")[0].path, readonly=True)
+    assert s.entry("summary.5").value == (1, 2) and s.entry("summary.unclear").text == "why k_a is 0.65 k_v"
+
+
+async def test_resume_lands_where_the_group_left_off(quiet, tmp_path):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task5")
+        await type_in(pilot, "i_ss@2.5", "31 mA")
+    app.lab.close()
+    app2 = quiet()
     async with app2.run_test(size=(80, 24)) as pilot:
         await pilot.pause()
         app2.screen.query_one("#sessions").focus()
         await pilot.press("enter")
-        await pilot.pause()
-        await pilot.pause()
+        await pilot.pause(0.1)
         assert isinstance(app2.screen, LabScreen)
         assert app2.screen.step.id == "task5"
         row = app2.screen.query_one(f"#{field_id('i_ss@2.5')}", FieldRow)
         assert row.input.value == "31 mA"
 
 
-async def test_stop_key_turns_the_motor_off_from_anywhere(make):
-    dev = FakeDevice(seed=2)
-    app = make(dev)
+async def test_stop_key_turns_the_motor_off_from_anywhere(quiet):
+    dev = QuietDevice(seed=2)
+    app = quiet(dev)
     async with app.run_test(size=(80, 24)) as pilot:
-        await _start(pilot)
-        await _goto(pilot, app, "task4")
+        await start(pilot)
+        await goto(pilot, "task4")
         await pilot.press("f3")
         await pilot.pause()
-        assert dev.commands[-1] == "V 2.5"
-        assert app.motor == "2.5 V"
+        assert dev.commands[-1] == "V 2.5" and app.motor == "2.5 V"
+        await pilot.press("f3")
+        assert dev.commands[-1] == "V 3.5"
         row = app.screen.query_one(f"#{field_id('u_ss@2.5')}", FieldRow)
         row.input.focus()
         await pilot.press("f2")
         await pilot.pause()
         assert dev.commands[-1] == "STOP" and app.motor == "off"
+        await goto(pilot, "prep3")
+        await pilot.press("f2")
+        assert dev.commands[-1] == "STOP"
 
 
-async def test_help_lists_the_keys(make):
-    app = make()
+async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
+    app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await _start(pilot)
+        await start(pilot)
         await pilot.press("f1")
         await pilot.pause()
         assert isinstance(app.screen, HelpScreen)
         text = str(app.screen.query_one("#help-keys").render())
-        assert "F2" in text and "STOP" in text
+        for key in ("F2", "STOP", "F5", "F8", "Ctrl+P"):
+            assert key in text
         await pilot.press("escape")
         await pilot.pause()
         assert isinstance(app.screen, LabScreen)
+        titles = {c.title for c in app.get_system_commands(app.screen)}
+        assert {"Stop motor", "Capture omega_ss", "Run step sequence", "Run fast step sequence",
+                "Export report", "Switch to virtual board", "Import a step log"} <= titles
+        await pilot.press("ctrl+p")
+        await pilot.press(*"Task 10")
+        await pilot.pause(0.3)
+        await pilot.press("enter")
+        await pilot.pause(0.1)
+        assert app.screen.step.id == "task10"
+
+
+async def test_navigator_collapses_and_marks_done_steps(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        nav = app.screen.query_one("#nav")
+        assert nav.size.width <= 16
+        await goto(pilot, "task2")
+        await type_in(pilot, "R", "5.3")
+        assert str(nav.get_option("task2").prompt).startswith("✓")
+        await pilot.press("ctrl+t")
+        await pilot.pause()
+        assert not nav.display
+        await pilot.press("ctrl+t")
+        assert nav.display
+
+
+async def test_no_color_is_respected(quiet, monkeypatch):
+    monkeypatch.setenv("NO_COLOR", "1")
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        assert app.no_color
+        assert any(isinstance(f, Monochrome | NoColor) for f in app._filters)
+        await goto(pilot, "task2")
+        row = await type_in(pilot, "R", "abc")
+        assert row.message.startswith("✗")  # the refusal is in the text, not only in red
+
+
+def test_status_line_fits_80_columns_in_every_state():
+    info = DeviceInfo("Virtual", "minseg-virtual 1.0.0", True, "minseg://", fallback=True)
+    board = DeviceInfo("MinSegMega", "minseg-fw 1.0.0", False, "/dev/serial/by-id/usb-Arduino_Mega_2560-if00")
+    for i in (info, board):
+        for event in ("", "board disconnected — everything recorded is kept", "watchdog stopped the motor"):
+            text = status_text(i, LinkHealth("ok", 12345, 678), "steps 0/4.5 V", event, 78)
+            assert len(text) <= 78, text
+            assert "motor steps" in text
+    assert "no board found" in status_text(info, None, "off")
+    assert "disconnected" in status_text(board, None, "off", "board disconnected — everything recorded is kept", 78)

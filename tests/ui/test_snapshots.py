@@ -1,40 +1,40 @@
-"""Snapshot tests of the screens at 80x24 and 120x40 (fixed date, no stream, no animations)."""
+"""Snapshot tests of every screen at 80x24 and 120x40: a device double that streams nothing,
+a frozen buffer for the live plots, a seeded recorded run, a fixed date, no animations."""
 
 from __future__ import annotations
 
 import pytest
 
-from minseg_tui.ui.ports import Batch
-from tests.ui.conftest import build_app
-from tests.ui.fakes import FakeDevice
+from tests.ui.conftest import quiet_app, settle
+from tests.ui.fakes import METER, frozen_stream
+from tests.ui.helpers import record_step_run
 
 SIZES = [(80, 24), (120, 40)]
 
-
-class QuietDevice(FakeDevice):
-    """No samples: what is on screen does not depend on timing."""
-
-    def read(self, timeout: float) -> Batch:
-        import time
-
-        time.sleep(timeout)
-        return Batch((), (), ())
+TABLE = {"R": "5.3", "u_ss@2.5": "2.05", "omega_ss@2.5": "3.1", "i_ss@2.5": "28 mA",
+         "u_ss@3.5": "3.04", "omega_ss@3.5": "4.9", "i_ss@3.5": "32 mA",
+         "u_ss@4.5": "4.02", "omega_ss@4.5": "6.7", "i_ss@4.5": "36 mA"}
 
 
-def _app(tmp_path):
-    return build_app(tmp_path / "sessions", QuietDevice(seed=0))
-
-
-def _to(step_id: str, entries: dict[str, str] | None = None):
+def _to(step_id: str, entries: dict[str, str] | None = None, run: bool = False, live: bool = False):
     async def run_before(pilot) -> None:
+        app = pilot.app
         await pilot.press(*"Ada, Bo", "enter")
         await pilot.pause()
         for key, text in (entries or {}).items():
-            pilot.app.lab.enter(key, text)
-        pilot.app.go_to_step(step_id)
-        await pilot.pause()
-        await pilot.pause()
+            app.lab.enter(key, text)
+        if run:
+            record_step_run(app.lab.session)
+        if live:
+            app.live.freeze(*frozen_stream())
+        app.meter_reading = METER
+        app.go_to_step(step_id)
+        await settle(pilot)
     return run_before
+
+
+def _app(tmp_path):
+    return quiet_app(tmp_path / "sessions")
 
 
 @pytest.mark.parametrize("size", SIZES)
@@ -43,21 +43,46 @@ def test_start_screen(snap_compare, tmp_path, size):
 
 
 @pytest.mark.parametrize("size", SIZES)
+def test_prep_question_with_feedback(snap_compare, tmp_path, size):
+    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("prep8", {"prep8.T": "b/a", "prep8.K": "c/b"}))
+
+
+@pytest.mark.parametrize("size", SIZES)
 def test_resistance_step_with_a_refused_entry(snap_compare, tmp_path, size):
     assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("task2", {"R": "abc"}))
 
 
 @pytest.mark.parametrize("size", SIZES)
+def test_live_measurement_step(snap_compare, tmp_path, size):
+    assert snap_compare(_app(tmp_path), terminal_size=size,
+                        run_before=_to("task4", {"u_ss@2.5": "2,05 V"}, live=True))
+
+
+@pytest.mark.parametrize("size", SIZES)
 def test_table_step(snap_compare, tmp_path, size):
-    entries = {"R": "5.2", "u_ss@2.5": "2.05", "omega_ss@2.5": "3.1", "i_ss@2.5": "28 mA",
-               "u_ss@3.5": "3.04", "omega_ss@3.5": "4.9", "i_ss@3.5": "32 mA",
-               "u_ss@4.5": "4.02", "omega_ss@4.5": "6.7", "i_ss@4.5": "36 mA"}
-    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("table", entries))
+    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("table", TABLE))
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_step_run(snap_compare, tmp_path, size):
+    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("task10", TABLE, run=True))
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_results_step(snap_compare, tmp_path, size):
+    assert snap_compare(_app(tmp_path), terminal_size=size,
+                        run_before=_to("task12", {**TABLE, "own.T": "0.05 s"}, run=True))
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_model_check(snap_compare, tmp_path, size):
+    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("model_check", TABLE, run=True))
 
 
 @pytest.mark.parametrize("size", SIZES)
 def test_summary_step(snap_compare, tmp_path, size):
-    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("summary", {"summary.1": "2"}))
+    assert snap_compare(_app(tmp_path), terminal_size=size,
+                        run_before=_to("summary", {"summary.1": "b", "summary.5": "b, c"}))
 
 
 @pytest.mark.parametrize("size", SIZES)

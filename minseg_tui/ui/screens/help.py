@@ -9,9 +9,8 @@ from textual.screen import ModalScreen
 from textual.widgets import Static
 
 INTRO = (
-    "minseg-tui guides a group through the DC-motor lab. The left column lists the "
-    "manual's parts in order; the right shows what the step is for, what to do and what "
-    "to type. Everything typed is saved at once. Ctrl+P opens the command palette."
+    "The left column lists the lab's steps in order (✓ done, … started); the right shows "
+    "the goal, what to do and what to type. Everything typed is saved at once."
 )
 
 
@@ -25,9 +24,8 @@ class HelpScreen(ModalScreen[None]):
         self._keys = keys
 
     def compose(self) -> ComposeResult:
-        lines = [f"  {k:<12} {d}" for k, d in self._keys]
+        lines = [f"{k:<10} {d}" for k, d in self._keys]
         with VerticalScroll(id="help"):
-            yield Static("Keys", classes="title")
+            yield Static("Keys — Esc closes", classes="title")
             yield Static(INTRO, classes="para")
             yield Static("\n".join(lines), id="help-keys")
-            yield Static("Esc closes this help.", classes="hint")

@@ -16,15 +16,19 @@ from minseg_tui.ui.ports import Lab
 from minseg_tui.ui.widgets.fields import FieldRow
 from minseg_tui.ui.widgets.status import DeviceStatus
 
-_SHORT = {"Preparation": "Prep", "Summary and reflections (section 3.2)": "Summary"}
+_SHORT = {"Preparation": "Prep", "Summary and reflections (section 3.2)": "Summary", "Tasks 6-9": "Task 6-9",
+          "Model check": "Check"}
+
+MARKS = {"done": "✓", "started": "…", "todo": " ", "info": " "}
+"""The navigator's mark of a step's status (a character, not a colour)."""
 
 
-def nav_label(step: Step) -> str:
-    """Short name in the navigator: the title up to its colon, abbreviated."""
+def nav_label(step: Step, status: str = "todo") -> str:
+    """Short name in the navigator: a status mark and the title up to its colon, abbreviated."""
     head = step.title.split(":")[0]
     for long, short in _SHORT.items():
         head = head.replace(long, short)
-    return head
+    return f"{MARKS.get(status, ' ')} {head}"
 
 
 class StepPane(VerticalScroll):
@@ -43,7 +47,7 @@ class StepPane(VerticalScroll):
         if self._extra is not None:
             yield self._extra
         for f in self.step.fields:
-            yield FieldRow(f, self._lab.text(f.key), self._lab.result(f.key))
+            yield FieldRow(f, self._lab.text(f.key), self._lab.result(f.key), self._lab.chosen(f.key))
 
 
 class LabScreen(Screen[None]):
@@ -53,6 +57,7 @@ class LabScreen(Screen[None]):
         Binding("pagedown,ctrl+n", "next_step", "Next step", priority=True),
         Binding("pageup,ctrl+b", "prev_step", "Prev step", show=False, priority=True),
         Binding("ctrl+l", "focus_nav", "Steps", show=False),
+        Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
     ]
 
     def __init__(self, lab: Lab) -> None:
@@ -62,7 +67,8 @@ class LabScreen(Screen[None]):
     def compose(self) -> ComposeResult:
         yield DeviceStatus()
         with Horizontal(id="body"):
-            yield OptionList(*[Option(nav_label(s), id=s.id) for s in self.lab.steps], id="nav")
+            yield OptionList(*[Option(nav_label(s, self.lab.status(s.id)), id=s.id) for s in self.lab.steps],
+                             id="nav")
             yield Static("", classes="pane")
         yield Footer()
 
@@ -101,11 +107,16 @@ class LabScreen(Screen[None]):
     def _focus_first_input(self) -> None:
         rows = self.query(FieldRow)
         if rows:
-            rows.first().input.focus()
+            rows.first().focus_input()
 
     @on(FieldRow.Typed)
     def _typed(self, event: FieldRow.Typed) -> None:
         event.row.show_result(self.lab.enter(event.key, event.text))
+        self.app.entry_stored(event.key)  # type: ignore[attr-defined]
+
+    @on(FieldRow.Chosen)
+    def _chosen(self, event: FieldRow.Chosen) -> None:
+        event.row.show_result(self.lab.choose(event.key, event.indices))
         self.app.entry_stored(event.key)  # type: ignore[attr-defined]
 
     def _move(self, delta: int) -> None:
@@ -120,7 +131,22 @@ class LabScreen(Screen[None]):
         self._move(-1)
 
     def action_focus_nav(self) -> None:
-        self.query_one("#nav").focus()
+        nav = self.query_one("#nav")
+        nav.display = True
+        nav.focus()
+
+    def action_toggle_nav(self) -> None:
+        """Hide or show the list of steps (more room for the step at 80 columns)."""
+        nav = self.query_one("#nav")
+        nav.display = not nav.display
+
+    def refresh_marks(self) -> None:
+        """Update the status marks in the navigator after an entry or a run."""
+        nav = self.query_one("#nav", OptionList)
+        for k, s in enumerate(self.lab.steps):
+            label = nav_label(s, self.lab.status(s.id))
+            if str(nav.get_option_at_index(k).prompt) != label:
+                nav.replace_option_prompt_at_index(k, label)
 
     def go_to(self, step_id: str) -> None:
         """Move the navigator (and the pane) to ``step_id``."""

@@ -8,7 +8,7 @@ from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
 from textual.message import Message
-from textual.widgets import Input, Label, Static
+from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList, Static
 
 from minseg_tui.lab.steps import Field
 from minseg_tui.ui.ports import EntryResult
@@ -20,8 +20,18 @@ def field_id(key: str) -> str:
 
 
 class FieldRow(Vertical):
-    """One entry. Enter or leaving the field posts :class:`FieldRow.Typed`; the screen answers
-    with :meth:`show_result`."""
+    """One entry. Enter or leaving the field posts :class:`FieldRow.Typed`; a choice field is a
+    list to tick with the keys (arrows, Space or Enter) and posts :class:`FieldRow.Chosen`. The
+    screen answers with :meth:`show_result`."""
+
+    class Chosen(Message):
+        """The group ticked options ``indices`` (0-based) of choice field ``key``."""
+
+        def __init__(self, row: FieldRow, key: str, indices: tuple[int, ...]) -> None:
+            super().__init__()
+            self.row = row
+            self.key = key
+            self.indices = indices
 
     class Typed(Message):
         """The group typed ``text`` for ``key``."""
@@ -32,22 +42,31 @@ class FieldRow(Vertical):
             self.key = key
             self.text = text
 
-    def __init__(self, field: Field, text: str, result: EntryResult | None = None) -> None:
-        super().__init__(id=field_id(field.key), classes="field")
+    def __init__(self, field: Field, text: str, result: EntryResult | None = None,
+                 chosen: tuple[int, ...] = ()) -> None:
+        super().__init__(id=field_id(field.key), classes="field choice" if field.options else "field")
         self.field = field
         self._text = text
         self._result = result
         self._sent: str | None = text
+        self._chosen = tuple(chosen)
 
     def compose(self) -> ComposeResult:
         unit = f" [{self.field.unit}]" if self.field.unit else ""
-        with Horizontal(classes="field-line"):
-            yield Label(f"{self.field.label}{unit}", classes="field-label")
-            yield Input(value=self._text, classes="field-input", select_on_focus=False,
-                        placeholder=self.field.hint or ("option number(s)" if self.field.options else ""))
         if self.field.options:
-            yield Static("\n".join(f"  {k + 1}. {o}" for k, o in enumerate(self.field.options)),
-                         classes="field-options")
+            yield Label(self.field.label + (" (tick all that apply)" if self.field.multiple else ""),
+                        classes="choice-label")
+            if self.field.multiple:
+                yield SelectionList[int](*[(o, k, k in self._chosen) for k, o in enumerate(self.field.options)],
+                                         classes="field-choice")
+            else:
+                yield RadioSet(*[RadioButton(o, value=k in self._chosen) for k, o in enumerate(self.field.options)],
+                               classes="field-choice")
+        else:
+            with Horizontal(classes="field-line"):
+                yield Label(f"{self.field.label}{unit}", classes="field-label")
+                yield Input(value=self._text, classes="field-input", select_on_focus=False,
+                            placeholder=self.field.hint)
         yield Static("", classes="field-msg")
 
     def on_mount(self) -> None:
@@ -59,6 +78,27 @@ class FieldRow(Vertical):
         """The text box."""
         return self.query_one(Input)
 
+    def focus_input(self) -> None:
+        """Focus the text box or the list of options."""
+        for w in self.query(".field-input, .field-choice"):
+            w.focus()
+            return
+
+    def _choose(self, indices: tuple[int, ...]) -> None:
+        if indices != self._chosen:
+            self._chosen = indices
+            self.post_message(self.Chosen(self, self.field.key, indices))
+
+    @on(RadioSet.Changed)
+    def _radio(self, event: RadioSet.Changed) -> None:
+        event.stop()
+        self._choose((event.index,))
+
+    @on(SelectionList.SelectedChanged)
+    def _ticked(self, event: SelectionList.SelectedChanged) -> None:
+        event.stop()
+        self._choose(tuple(sorted(event.selection_list.selected)))
+
     @property
     def message(self) -> str:
         """The message shown under the box (plain text)."""
@@ -66,6 +106,8 @@ class FieldRow(Vertical):
 
     def refresh_from_lab(self, text: str, result: EntryResult | None) -> None:
         """Show what the lab now holds for this field (after a capture, say)."""
+        if self.field.options:
+            return
         self._sent = text
         self.input.value = text
         if result is not None:
@@ -73,14 +115,14 @@ class FieldRow(Vertical):
 
     def show_result(self, result: EntryResult) -> None:
         """Show the lab's verdict: a refusal, the warnings, or a checker's feedback."""
-        parts = [result.message] if result.message else []
-        parts += list(result.warnings)
+        parts = [("✗ " if not result.ok else "") + result.message] if result.message else []
+        parts += [f"! {w}" for w in result.warnings]
         if result.feedback:
             parts.append(result.feedback)
         msgs = self.query(".field-msg")
         if not msgs:
             return
-        msgs.first(Static).update(" · ".join(parts))
+        msgs.first(Static).update("\n".join(parts))
         self.set_class(not result.ok, "refused")
         self.set_class(bool(result.warnings), "warned")
 

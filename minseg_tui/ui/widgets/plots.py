@@ -15,10 +15,13 @@ class Trace:
     x: Sequence[float]
     y: Sequence[float]
     label: str = ""
+    marker: str = "braille"
 
 
 class TracePlot(PlotextPlot):
-    """A plot with a title and axis labels; :meth:`show` replaces what it draws."""
+    """A plot with a title and axis labels; :meth:`show` replaces what it draws.
+
+    Traces differ by marker as well as colour, so they stay apart under NO_COLOR."""
 
     def __init__(self, title: str, xlabel: str, ylabel: str, *, id: str | None = None) -> None:
         super().__init__(id=id)
@@ -46,4 +49,4 @@ class TracePlot(PlotextPlot):
         plt.ylabel(self._ylabel)
         for tr in self.traces:
             if len(tr.x):
-                plt.plot(list(tr.x), list(tr.y), label=tr.label or None, marker="braille")
+                plt.plot(list(tr.x), list(tr.y), label=tr.label or None, marker=tr.marker)

@@ -8,23 +8,37 @@ from textual.widgets import Static
 from minseg_tui.ui.ports import DeviceInfo, LinkHealth
 
 
-def status_text(info: DeviceInfo | None, health: LinkHealth | None, motor: str) -> str:
-    """One line for the top of the screen (plain text; the widget adds no colour of meaning)."""
+def status_text(info: DeviceInfo | None, health: LinkHealth | None, motor: str, event: str = "",
+                width: int = 80) -> str:
+    """One line for the top of the screen, at most ``width`` characters (plain text: the
+    state is in words, never in colour alone). A link event replaces the health counters;
+    what does not fit goes, least important first (firmware, then the port)."""
     if info is None:
-        return "no device"
-    who = "virtual MinSeg — no board found" if info.virtual and info.port == "auto" else (
-        "virtual MinSeg" if info.virtual else f"board {info.name} on {info.port}")
+        return f"{event or 'no device'} · motor {motor}"[:width]
+    if info.virtual:
+        who = "VIRTUAL MinSeg (no board found)" if info.fallback else "VIRTUAL MinSeg"
+        port = ""
+    else:
+        who = f"board {info.name}"
+        port = info.port
     h = health or LinkHealth("ok")
-    return (f"{who} · {info.firmware} · link {h.state} · lost {h.dropped}"
-            f" · bad {h.corrupt} · motor {motor}")
+    link = event or f"link {h.state} · lost {h.dropped} · bad {h.corrupt}"
+    tail = f"motor {motor}"
+    for parts in ((who, port, info.firmware, link, tail), (who, port, link, tail), (who, link, tail)):
+        text = " · ".join(p for p in parts if p)
+        if len(text) <= width:
+            return text
+    return f"{who} · {link}"[: width - len(tail) - 3] + " · " + tail
 
 
 class DeviceStatus(Static):
-    """Always-visible device line; set ``info``, ``health`` and ``motor`` to update it."""
+    """Always-visible device line; set ``info``, ``health``, ``motor`` and ``event``."""
 
     info: reactive[DeviceInfo | None] = reactive(None)
     health: reactive[LinkHealth | None] = reactive(None)
     motor: reactive[str] = reactive("off")
+    event: reactive[str] = reactive("")
 
     def render(self) -> str:
-        return status_text(self.info, self.health, self.motor)
+        width = self.size.width or 78
+        return status_text(self.info, self.health, self.motor, self.event, width)

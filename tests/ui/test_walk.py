@@ -1,0 +1,189 @@
+"""The whole lab on the real virtual MinSeg (real factory, link and URL board, real time):
+new session to exported report; an unplug during a run; kill -9 mid-session and resume."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from minseg_tui.device.virtual import named_board
+from minseg_tui.lab.store import list_sessions
+from minseg_tui.model.motor import PUBLISHED
+from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.status import DeviceStatus
+from tests.ui.conftest import board_url, real_app, settle
+from tests.ui.helpers import goto, start, type_in
+
+
+async def _until(pilot, cond, timeout: float = 15.0) -> None:
+    end = time.monotonic() + timeout
+    while not cond():
+        assert time.monotonic() < end, "timed out"
+        await pilot.pause(0.1)
+
+
+def _status(app) -> str:
+    return str(app.screen.query_one(DeviceStatus).render())
+
+
+async def test_whole_lab_on_the_virtual_minseg(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=4))
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _until(pilot, lambda: app.device is not None)
+        await start(pilot)
+        # Task 2: R from the virtual multimeter
+        await goto(pilot, "task2")
+        await _until(pilot, lambda: app.meter_reading is not None)
+        R = app.meter_reading.R
+        await type_in(pilot, "R", f"{R:.1f}".replace(".", ","))
+        assert abs(app.lab.session.value("R") - PUBLISHED.R) < 0.2
+        # Task 4: each voltage, wait for SETTLED, capture, type u_ss from the meter
+        await goto(pilot, "task4")
+        panel = app.screen.query_one(".live")
+        for level in (2.5, 3.5, 4.5):
+            await pilot.press("f3")
+            assert panel.level == level
+            await pilot.pause(0.3)
+            await _until(pilot, lambda: "SETTLED" in str(app.screen.query_one("#steady").render()))
+            await pilot.press("f4")
+            await pilot.pause(0.05)
+            row = app.screen.query_one(f"#{field_id(f'omega_ss@{level:g}')}", FieldRow)
+            assert row.input.value  # the capture landed in the field
+            app.meter_reading = None
+            await _until(pilot, lambda: app.meter_reading is not None)
+            await type_in(pilot, f"u_ss@{level:g}", f"{app.meter_reading.u_A:.2f} V")
+        # Task 5: the currents from the meter, in mA
+        await goto(pilot, "task5")
+        for level in (2.5, 3.5, 4.5):
+            await pilot.press("f3")
+            await pilot.pause(0.6)
+            app.meter_reading = None
+            await _until(pilot, lambda: app.meter_reading is not None)
+            await type_in(pilot, f"i_ss@{level:g}", f"{app.meter_reading.i * 1000:.1f} mA")
+        await pilot.press("f2")
+        # Tasks 6-9: the table filled itself; k_v near the plant's
+        await goto(pilot, "table")
+        rows = app.lab.session.table()
+        assert all(r.k_v is not None and abs(r.k_v / PUBLISHED.k_v - 1) < 0.1 for r in rows)
+        assert all(r.f is not None and r.f > 0 for r in rows)
+        shown = str(app.screen.query_one("#results").render())
+        assert "k_v = " in shown and "k_a = " in shown
+        # Task 10: the step sequence on the board, recorded as it arrives
+        await goto(pilot, "task10")
+        await pilot.press("f5")
+        await pilot.pause(0.5)
+        assert app.recording is not None
+        await _until(pilot, lambda: app.recording is None, timeout=20)
+        run = app.lab.session.runs[-1]
+        assert run.kind == "steps" and 440 <= run.samples <= 520
+        await pilot.press("f6")
+        await pilot.pause(3.0)
+        await pilot.press("f2")  # stop safely: motor off, what was recorded is kept
+        assert app.recording is None and app.motor == "off"
+        fast = app.lab.session.runs[-1]
+        assert fast.kind == "fast" and fast.samples > 300
+        await settle(pilot)
+        readings = str(app.screen.query_one("#t-readings").render())
+        assert "steps-1" in readings and "fast-1" in readings
+        # Tasks 11-15 use the latest run (the fast one); the group's own K beside the computed
+        await goto(pilot, "task11")
+        await settle(pilot)
+        res = app.lab.session.results()
+        K, T = res.lookup("step.K"), res.lookup("step.T")
+        assert 1.5 < K < 2.1 and 0.03 < T < 0.06
+        await type_in(pilot, "own.K", "1.8")
+        await settle(pilot)
+        assert "yours 1.8" in str(app.screen.query_one("#compare").render())
+        await pilot.press("f9")
+        assert "step 2" in str(app.screen.query_one("#zoom-note").render())
+        # the model check
+        await goto(pilot, "model_check")
+        await settle(pilot)
+        assert "cause:" in str(app.screen.query_one("#check-lines").render())
+        # summary and the report
+        await goto(pilot, "summary")
+        await type_in(pilot, "summary.unclear", "the filter")
+        await pilot.press("f8")
+        await settle(pilot)
+        assert app.exported
+    folder = list_sessions(tmp_path / "sessions")[0].path
+    md = (Path(folder) / "report.md").read_text()
+    assert f"{R:.1f}" in md.replace(",", ".") or f"{R:g}" in md
+    assert "the filter" in md and (Path(folder) / "report.html").exists()
+    assert (Path(folder) / run.file).exists()
+
+
+async def test_unplug_during_a_run_keeps_the_samples(tmp_path):
+    url = board_url(seed=2)
+    name = url.split("//")[1].split("?")[0]
+    app = real_app(tmp_path / "sessions", url)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _until(pilot, lambda: app.device is not None)
+        await start(pilot)
+        await goto(pilot, "task10")
+        await pilot.press("f5")
+        await pilot.pause(2.0)
+        named_board(name).unplug()
+        await _until(pilot, lambda: app.recording is None)
+        assert "board disconnected — everything recorded is kept" in _status(app)
+        run = app.lab.session.runs[-1]
+        assert run.samples >= 60 and app.motor == "off"
+        named_board(name).replug()
+        await _until(pilot, lambda: "reconnected" in _status(app))
+
+
+SCRIPT = """
+import asyncio, sys
+from pathlib import Path
+from minseg_tui.report.write import write_report
+from minseg_tui.ui.app import make_app
+from minseg_tui.ui.config import UiConfig
+from tests.ui.helpers import goto, start, type_in
+
+async def main():
+    app = make_app(UiConfig(device="minseg://kill?clock=real&seed=3", sessions=Path(sys.argv[1]),
+                            today="2024-04-16", animations=False), write_report)
+    async with app.run_test(size=(80, 24)) as pilot:
+        while app.device is None:
+            await pilot.pause(0.05)
+        await start(pilot)
+        await goto(pilot, "task2")
+        await type_in(pilot, "R", "5,3")
+        await goto(pilot, "task5")
+        await type_in(pilot, "i_ss@2.5", "47 mA")
+        await goto(pilot, "task10")
+        await pilot.press("f5")
+        await pilot.pause(2.0)
+        print("READY", flush=True)
+        await asyncio.sleep(60)
+
+asyncio.run(main())
+"""
+
+
+async def test_kill_9_mid_session_and_resume(tmp_path):
+    root = tmp_path / "sessions"
+    proc = subprocess.Popen([sys.executable, "-c", SCRIPT, str(root)], stdout=subprocess.PIPE,
+                            cwd=Path(__file__).parents[2], text=True)
+    try:
+        assert proc.stdout.readline().strip() == "READY"
+    finally:
+        os.kill(proc.pid, signal.SIGKILL)
+        proc.wait()
+    app = real_app(root, board_url(seed=3))
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.pause(0.2)
+        app.screen.query_one("#sessions").focus()
+        await pilot.press("enter")
+        await pilot.pause(0.2)
+        assert isinstance(app.screen, LabScreen) and app.screen.step.id == "task10"
+        s = app.lab.session
+        assert s.entry("R").text == "5,3" and abs(s.value("R") - 5.3) < 1e-12
+        assert s.entry("i_ss@2.5").text == "47 mA"
+        assert s.recovered == ["steps-1"]
+        assert s.runs[0].interrupted and s.runs[0].samples >= 40  # at most the last second lost
