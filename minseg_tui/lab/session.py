@@ -27,7 +27,7 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -78,6 +78,10 @@ class Entry:
     otherwise; unit: the unit it was typed in; message: why it was refused, or a note on
     how it was read (``read as 47 mA``); warnings: plausibility warnings; source: ``typed``,
     ``capture`` or ``meter``; at: ISO time; history: earlier (text, at) pairs, oldest first.
+
+    A refused text never displaces an accepted one: the accepted entry stays in effect and
+    carries the refused attempt in ``refused`` (text, message, at) until something is
+    accepted again, so neither what was typed last nor what was entered before is lost.
     """
 
     key: str
@@ -90,15 +94,24 @@ class Entry:
     source: str = "typed"
     at: str = ""
     history: tuple[tuple[str, str], ...] = ()
+    refused: tuple[str, str, str] | None = None
+
+    @property
+    def typed(self) -> str:
+        """What the field shows: the refused attempt if there is one, else the text in effect."""
+        return self.refused[0] if self.refused else self.text
 
     def to_json(self) -> dict[str, Any]:
         """JSON-ready dict (the session file's form)."""
-        return {
+        out = {
             "text": self.text, "ok": self.ok,
             "value": list(self.value) if isinstance(self.value, tuple) else self.value,
             "unit": self.unit, "message": self.message, "warnings": list(self.warnings),
             "source": self.source, "at": self.at, "history": [list(h) for h in self.history],
         }
+        if self.refused:
+            out["refused"] = list(self.refused)
+        return out
 
     @classmethod
     def from_json(cls, key: str, d: Mapping[str, Any]) -> Entry:
@@ -111,6 +124,7 @@ class Entry:
             message=str(d.get("message", "")), warnings=tuple(str(w) for w in d.get("warnings", [])),
             source=str(d.get("source", "typed")), at=str(d.get("at", "")),
             history=tuple((str(h[0]), str(h[1])) for h in d.get("history", [])),
+            refused=(str(d["refused"][0]), str(d["refused"][1]), str(d["refused"][2])) if d.get("refused") else None,
         )
 
 
@@ -408,12 +422,20 @@ class Session:
         fld = FIELDS[key]
         entry = self._read(fld, text)
         old = self._entries.get(key)
+        at = self._clock().isoformat(timespec="seconds")
+        if not entry.ok and old is not None and old.ok:
+            # keep the accepted entry in effect; remember the refused attempt beside it
+            entry = replace(old, refused=(text, entry.message, at))
+            self._entries[key] = entry
+            self._changed()
+            return entry
         history = (*old.history, (old.text, old.at)) if old is not None else ()
+        if old is not None and old.refused:
+            history = (*history, (old.refused[0], old.refused[2]))
         entry = Entry(key=key, text=text, ok=entry.ok, value=entry.value, unit=entry.unit, message=entry.message,
-                      warnings=entry.warnings, source=source, at=self._clock().isoformat(timespec="seconds"),
-                      history=history)
+                      warnings=entry.warnings, source=source, at=at, history=history)
         self._entries[key] = entry
-        if source != "capture" and key.startswith("omega_ss@"):
+        if entry.ok and source != "capture" and key.startswith("omega_ss@"):
             self._captures.pop(key, None)
         self._changed()
         if key.startswith("u_ss@"):

@@ -152,6 +152,8 @@ def _warnings_section(session: Session) -> Section:
     res = session.results()
     items = [f"{n.source}: {n.message}" for n in session.warnings()]
     items += [f"refused entry {e.key}: {e.text!r} — {e.message}" for e in session.entries.values() if not e.ok]
+    items += [f"refused entry {e.key}: {e.refused[0]!r} — {e.refused[1]} (still using {e.text!r})"
+              for e in session.entries.values() if e.refused]
     items += list(res.problems)
     return Section("Warnings", [items if items else "None."])
 

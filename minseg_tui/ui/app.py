@@ -300,6 +300,11 @@ class LabApp(App[None]):
             if isinstance(screen, LabScreen):
                 screen.refresh_marks()
 
+    def focus_after(self, key: str) -> None:
+        """Put the cursor in the entry that follows field ``key`` on the step (a form's flow)."""
+        if isinstance(self.screen, LabScreen):
+            self.screen.focus_after(key)
+
     def refresh_fields(self) -> None:
         """Show in every entry row what the lab now holds (after a capture)."""
         from minseg_tui.ui.widgets.fields import FieldRow
@@ -440,6 +445,8 @@ class LabApp(App[None]):
                 self.device.close()
             except MinsegError:
                 pass
+        if self.lab is not None:  # saved already; this releases the session's lock
+            self.lab.close()
 
 
 def make_app(config: UiConfig, writer: ReportWriter | None = None) -> LabApp:

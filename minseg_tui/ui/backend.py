@@ -81,6 +81,8 @@ def _fmt(v: float | None, unit: str, digits: int = 4) -> str:
 def _result(e: Entry | None, feedback: str = "") -> EntryResult | None:
     if e is None:
         return None
+    if e.refused:  # a refused attempt over an accepted entry: say so, and what still counts
+        return EntryResult(False, f"{e.refused[1]} (still using {e.text.strip()!r})", tuple(e.warnings), feedback)
     return EntryResult(e.ok, e.message, tuple(e.warnings), feedback)
 
 
@@ -231,7 +233,7 @@ class SessionLab:
     def text(self, key: str) -> str:
         with self.lock:
             e = self.session.entry(key)
-            return e.text if e else ""
+            return e.typed if e else ""
 
     def result(self, key: str) -> EntryResult | None:
         with self.lock:

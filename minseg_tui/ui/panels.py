@@ -22,6 +22,7 @@ from minseg_tui import signals
 from minseg_tui.errors import MinsegError
 from minseg_tui.lab.steps import LEVELS, Step
 from minseg_tui.ui.ports import CheckView, ResultsView, RunView, TableView
+from minseg_tui.ui.widgets.fields import LabInput
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 
 if TYPE_CHECKING:
@@ -135,6 +136,8 @@ class LivePanel(Vertical):
         self._lab_app.notify(result.message or f"omega_ss at {self.level:g} V captured",
                              severity="information" if result.ok else "warning")
         self._lab_app.refresh_fields()
+        if result.ok:  # next comes the multimeter reading at the same voltage
+            self._lab_app.focus_after(f"omega_ss@{self.level:g}")
 
 
 class MeterPanel(Static):
@@ -439,7 +442,7 @@ class ModelCheckPanel(Vertical):
             yield TracePlot("measured vs models", "t [s]", "omega [rad/s]", id="plot-check")
             yield TracePlot("residual (baseline)", "t [s]", "rad/s", id="plot-residual")
         yield Static("computing…", id="check-lines")
-        yield Input(placeholder="load a step log (CSV path), Enter", id="import-path")
+        yield LabInput(placeholder="load a step log (CSV path), Enter", id="import-path")
         yield Static("", id="import-msg", classes="hint")
 
     def on_mount(self) -> None:

@@ -114,13 +114,30 @@ def test_choices_and_formulas(tmp_path):
         assert s.enter("summary.5", "b, c").value == (1, 2)
         assert s.choose("summary.1", [1]).value == (1,)
         refused = s.enter("summary.1", "a, b")
-        assert not refused.ok and "one answer" in refused.message
+        # refused over an accepted answer: the accepted one stays in effect, the attempt is kept
+        assert refused.refused is not None and "one answer" in refused.refused[1]
+        assert refused.typed == "a, b" and s.entry("summary.1").value == (1,)
         assert not s.enter("summary.3", "z").ok
         s.enter("prep8.T", "a/b")
         s.enter("prep8.K", "Kc")
         fb = {f.key: f.status for f in s.feedback("prep8")}
         assert fb == {"prep8.T": "right", "prep8.K": "missing"}
         assert not s.entry("prep8.K").ok and s.entry("prep8.K").text == "Kc"
+
+
+def test_a_refused_entry_never_displaces_an_accepted_one(tmp_path):
+    with Session.create(tmp_path, ["A"]) as s:
+        s.enter("R", "5,3")
+        e = s.enter("R", "5,3 kg")
+        assert e.ok and s.value("R") == 5.3
+        assert e.refused[0] == "5,3 kg" and "expected a resistance" in e.refused[1]
+        folder = s.folder
+    with Session.open(folder) as again:  # the attempt and the value both survive on disk
+        e = again.entry("R")
+        assert again.value("R") == 5.3 and e.typed == "5,3 kg"
+        fixed = again.enter("R", "5.2")
+        assert fixed.refused is None and again.value("R") == 5.2
+        assert [h[0] for h in fixed.history] == ["5,3", "5,3 kg"]
 
 
 # -- results recompute -------------------------------------------------------------------------

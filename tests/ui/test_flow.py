@@ -219,3 +219,31 @@ def test_status_line_fits_80_columns_in_every_state():
             assert "motor steps" in text
     assert "no board found" in status_text(info, None, "off")
     assert "disconnected" in status_text(board, None, "off", "board disconnected — everything recorded is kept", 78)
+
+
+async def test_typing_lands_in_the_step_and_enter_moves_on(quiet, tmp_path):
+    """Palette jump, then typing at once: the text goes into the first entry (never nowhere);
+    Enter on an accepted entry moves to the next one; a refused retype keeps the accepted value."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task4")
+        await pilot.pause(0.1)
+        await pilot.press(*"3,8", "enter")
+        await pilot.pause(0.1)
+        session = app.lab.session
+        assert session.value("omega_ss@2.5") == 3.8
+        assert app.focused is app.screen.query_one(f"#{field_id('u_ss@2.5')}", FieldRow).input
+        await pilot.press(*"2,05 kg", "enter")
+        await pilot.pause(0.1)
+        await goto(pilot, "task2")  # typing on the list of steps goes into the entry too
+        app.screen.query_one("#nav").focus()
+        await pilot.press(*"5,3", "enter")
+        await pilot.pause(0.1)
+        assert session.value("R") == 5.3
+        row = await type_in(pilot, "R", "5,3 kg")
+        assert row.has_class("refused") and "still using '5,3'" in row.message
+        assert session.value("R") == 5.3
+    with Session.open(next(iter(list_sessions(tmp_path / "sessions"))).path) as again:
+        assert again.entry("u_ss@2.5").typed == "2,05 kg"
+        assert again.entry("R").typed == "5,3 kg" and again.value("R") == 5.3

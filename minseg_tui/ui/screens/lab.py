@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from textual import on
+from textual import events, on
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, VerticalScroll
 from textual.screen import Screen
 from textual.widget import Widget
-from textual.widgets import Footer, OptionList, Static
+from textual.widgets import Footer, Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from minseg_tui.lab.steps import Step
@@ -39,6 +39,9 @@ class StepPane(VerticalScroll):
         self.step = step
         self._lab = lab
         self._extra = extra
+        # With entries on the step, Tab goes straight to them (focusing one scrolls it
+        # into view); a pane of text only stays focusable so the keys can scroll it.
+        self.can_focus = not step.fields
 
     def compose(self) -> ComposeResult:
         yield Static(self.step.title, classes="title")
@@ -92,8 +95,11 @@ class LabScreen(Screen[None]):
             return
         self.lab.go(step_id)
         extra = self.app.step_panel(step)  # type: ignore[attr-defined]
+        nav_has_focus = self.focused is self.query_one("#nav")
         self.query(".pane").remove()
         self.query_one("#body").mount(StepPane(step, self.lab, extra))
+        if not nav_has_focus:  # moved with PgDn/PgUp or the palette: land in the first entry
+            self.call_after_refresh(self._focus_first_input)
 
     @on(OptionList.OptionHighlighted, "#nav")
     def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
@@ -105,14 +111,36 @@ class LabScreen(Screen[None]):
         self.call_after_refresh(self._focus_first_input)
 
     def _focus_first_input(self) -> None:
-        rows = self.query(FieldRow)
+        panes = self.query(StepPane)
+        rows = panes.last().query(FieldRow) if panes else None
         if rows:
             rows.first().focus_input()
 
+    def on_key(self, event: events.Key) -> None:
+        """Typing on the list of steps goes into the step's first entry, not nowhere."""
+        if self.focused is not self.query_one("#nav") or not event.is_printable or not event.character:
+            return
+        inputs = self.query(StepPane).last().query(Input)
+        if inputs:
+            event.stop()
+            event.prevent_default()
+            inputs.first().focus()
+            inputs.first().insert_text_at_cursor(event.character)
+
     @on(FieldRow.Typed)
     def _typed(self, event: FieldRow.Typed) -> None:
-        event.row.show_result(self.lab.enter(event.key, event.text))
+        result = self.lab.enter(event.key, event.text)
+        event.row.show_result(result)
         self.app.entry_stored(event.key)  # type: ignore[attr-defined]
+        if result.ok and event.submitted:  # Enter on an accepted entry moves on to the next one
+            self.focus_after(event.key)
+
+    def focus_after(self, key: str) -> None:
+        """Focus the entry after field ``key`` (stays put on the last one)."""
+        rows = list(self.query(FieldRow))
+        keys = [r.field.key for r in rows]
+        if key in keys and keys.index(key) + 1 < len(rows):
+            rows[keys.index(key) + 1].focus_input()
 
     @on(FieldRow.Chosen)
     def _chosen(self, event: FieldRow.Chosen) -> None:
@@ -151,4 +179,6 @@ class LabScreen(Screen[None]):
     def go_to(self, step_id: str) -> None:
         """Move the navigator (and the pane) to ``step_id``."""
         ids = [s.id for s in self.lab.steps]
+        self.show_step(step_id)  # mount the pane now; the highlight below then changes nothing
         self.query_one("#nav", OptionList).highlighted = ids.index(step_id)
+        self.call_after_refresh(self._focus_first_input)

@@ -13,6 +13,7 @@ from textual.widgets import Footer, Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from minseg_tui.ui.ports import SessionSummary
+from minseg_tui.ui.widgets.fields import LabInput
 from minseg_tui.ui.widgets.status import DeviceStatus
 
 
@@ -43,8 +44,8 @@ class StartScreen(Screen[None]):
         yield DeviceStatus()
         with Vertical(id="start"):
             yield Static("New session", classes="title")
-            yield Input(placeholder="group members, e.g. Ada L, Alan T", id="members")
-            yield Input(value=self._today, placeholder="date (YYYY-MM-DD)", id="date")
+            yield LabInput(placeholder="group members, e.g. Ada L, Alan T", id="members")
+            yield LabInput(value=self._today, placeholder="date (YYYY-MM-DD)", id="date")
             yield Static("Enter on the names starts the lab. Tab moves on.", id="start-msg", classes="hint")
             yield Static("Resume a session", classes="title")
             options = [

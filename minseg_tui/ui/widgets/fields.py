@@ -19,6 +19,15 @@ def field_id(key: str) -> str:
     return "f-" + re.sub(r"[^A-Za-z0-9_-]", "_", key)
 
 
+class LabInput(Input):
+    """A text box that blinks its cursor only when the app animates (snapshots stay pinned)."""
+
+    def on_mount(self) -> None:
+        config = getattr(self.app, "config", None)
+        if config is not None and not config.animations:
+            self.cursor_blink = False
+
+
 class FieldRow(Vertical):
     """One entry. Enter or leaving the field posts :class:`FieldRow.Typed`; a choice field is a
     list to tick with the keys (arrows, Space or Enter) and posts :class:`FieldRow.Chosen`. The
@@ -34,13 +43,14 @@ class FieldRow(Vertical):
             self.indices = indices
 
     class Typed(Message):
-        """The group typed ``text`` for ``key``."""
+        """The group typed ``text`` for ``key`` (``submitted``: with Enter, not by leaving)."""
 
-        def __init__(self, row: FieldRow, key: str, text: str) -> None:
+        def __init__(self, row: FieldRow, key: str, text: str, submitted: bool = False) -> None:
             super().__init__()
             self.row = row
             self.key = key
             self.text = text
+            self.submitted = submitted
 
     def __init__(self, field: Field, text: str, result: EntryResult | None = None,
                  chosen: tuple[int, ...] = ()) -> None:
@@ -65,7 +75,7 @@ class FieldRow(Vertical):
         else:
             with Horizontal(classes="field-line"):
                 yield Label(f"{self.field.label}{unit}", classes="field-label")
-                yield Input(value=self._text, classes="field-input", select_on_focus=False,
+                yield LabInput(value=self._text, classes="field-input", select_on_focus=False,
                             placeholder=self.field.hint)
         yield Static("", classes="field-msg")
 
@@ -126,18 +136,18 @@ class FieldRow(Vertical):
         self.set_class(not result.ok, "refused")
         self.set_class(bool(result.warnings), "warned")
 
-    def _send(self) -> None:
+    def _send(self, submitted: bool = False) -> None:
         text = self.input.value
         if text == self._sent:
             return
         self._sent: str | None = text
-        self.post_message(self.Typed(self, self.field.key, text))
+        self.post_message(self.Typed(self, self.field.key, text, submitted))
 
     @on(Input.Submitted)
     def _submitted(self, event: Input.Submitted) -> None:
         event.stop()
         self._sent = None  # Enter always re-sends
-        self._send()
+        self._send(submitted=True)
 
     @on(Input.Blurred)
     def _blurred(self, event: Input.Blurred) -> None:
