@@ -197,7 +197,7 @@ def _model_check_section(session: Session) -> Section | None:
         f"First-order model fitted to {mc.run}: {_params(b.params)}; simulated on the recorded voltage "
         f"it misses by {b.rmse:.3g} rad/s rms (fit {b.fit_percent:.1f} %).",
         f"Where it deviates: {r.where}.",
-        f"Most likely cause: {f.cause}. {f.evidence}",
+        f"Most likely cause: {f.cause}. {f.evidence[:1].upper() + f.evidence[1:]}",
     ]
     items += [f"Also: {o.cause} ({_params(o.params)}): {o.evidence}" for o in f.others]
     if f.cause != "none":

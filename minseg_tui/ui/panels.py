@@ -65,10 +65,16 @@ class LivePanel(Vertical):
             with Horizontal(classes="plots"):
                 yield TracePlot("angle", "t [s]", "theta [rad]", id="plot-angle")
                 yield TracePlot("speed", "t [s]", "omega [rad/s]", id="plot-speed")
+
+    def readout(self) -> Widget | None:
+        """The lines to keep in sight while typing (the steady-state indicator, the requested
+        voltage and keys, the multimeter): the step pane docks them at its bottom."""
+        parts: list[Widget] = []
         if self.levels or "capture_omega" in self.step.actions:
-            yield Static("", id="steady")
+            parts.append(Static("", id="steady"))
         if "meter" in self.step.actions:
-            yield MeterPanel(self._lab_app)
+            parts.append(MeterPanel(self._lab_app))
+        return Vertical(*parts, classes="readout") if parts else None
 
     def on_mount(self) -> None:
         self.redraw()
@@ -87,10 +93,10 @@ class LivePanel(Vertical):
                 Trace(x, signals.timestamp_velocity(tt, cc), "board time"),
                 Trace(x, signals.lab_velocity(cc), "manual", "dot"),
             ])
-        steady = self.query("#steady")
+        steady = self.screen.query("#steady")
         if not steady:
             return
-        level = "none" if self.level is None else f"{self.level:g} V"
+        level = "0 V (motor off)" if self.level is None else f"{self.level:g} V"
         keys = "F3 next voltage · F2 stop"
         if "capture_omega" in self.step.actions and self._lab_app.lab is not None:
             s = self._lab_app.lab.steady(t, count)
@@ -133,8 +139,8 @@ class LivePanel(Vertical):
             return
         t, count, _u = self._lab_app.live.snapshot()
         result = lab.capture_live(self.level, t, count)
-        self._lab_app.notify(result.message or f"omega_ss at {self.level:g} V captured",
-                             severity="information" if result.ok else "warning")
+        if not result.ok:  # a success shows in the field itself; a toast would hide the meter
+            self._lab_app.notify(result.message, severity="warning")
         self._lab_app.refresh_fields()
         if result.ok:  # next comes the multimeter reading at the same voltage
             self._lab_app.focus_after(f"omega_ss@{self.level:g}")

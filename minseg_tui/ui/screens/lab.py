@@ -49,6 +49,10 @@ class StepPane(VerticalScroll):
         yield Static("What to do: " + self.step.todo, classes="todo")
         if self._extra is not None:
             yield self._extra
+            readout = getattr(self._extra, "readout", None)
+            docked = readout() if callable(readout) else None
+            if docked is not None:
+                yield docked
         for f in self.step.fields:
             yield FieldRow(f, self._lab.text(f.key), self._lab.result(f.key), self._lab.chosen(f.key))
 
