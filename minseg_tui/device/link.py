@@ -637,6 +637,7 @@ class Link:
             found = discovery.find_board(vid_pid=self.vid_pid)
             if found is not None and found.device != self.port:
                 paths.append(found.device)
+        mismatch: DeviceError | None = None
         for path in paths:
             try:
                 ser = self._open_port(path)
@@ -644,12 +645,11 @@ class Link:
                 continue
             try:
                 ident = self._handshake(ser)
-            except DeviceError as exc:
+            except DeviceError as exc:  # not our board there (yet): try the next path
                 self._close_port(ser)
                 if "protocol" in str(exc):
-                    self._gave_up = True
-                    self._emit("error", str(exc))
-                return
+                    mismatch = exc
+                continue
             except (SerialException, OSError):
                 self._close_port(ser)
                 continue
@@ -665,3 +665,6 @@ class Link:
             self._silent = False
             self._emit("connected", f"{path}: reconnected to {ident.board} {ident.fw}")
             return
+        if mismatch is not None:  # only a board with another protocol answered: say so, stop
+            self._gave_up = True
+            self._emit("error", str(mismatch))

@@ -29,6 +29,19 @@ SPIKE_SIGMAS = 8.0
 SPIKE_ISOLATION = 3.0
 """...and is this many times larger than its neighbours there."""
 
+LATE_SIGMAS = 5.0
+"""A late step is out of line by this many times the timing error the angle quantum allows."""
+
+
+def moving_rows(y: FloatArray) -> FloatArray:
+    """Rows where the measured speed is not exactly 0 (bool array).
+
+    Quantisation noise exists only where the encoder count changes; a wheel at rest reads
+    exactly 0, and a noise scale taken over those rows too would be far too small (at a
+    5 ms period a wheel at rest for half the log makes the median of |residual| zero).
+    """
+    return np.asarray(y, dtype=float) != 0.0
+
 
 @dataclass(frozen=True)
 class Anomaly:
@@ -54,15 +67,23 @@ def robust_sigma(x: FloatArray) -> float:
     return float(1.4826 * np.median(np.abs(x - np.median(x))))
 
 
-def find_wild(residual: FloatArray, taps: int, most: int = 10) -> list[int]:
+def find_wild(residual: FloatArray, taps: int, most: int = 10, moving: FloatArray | None = None) -> list[int]:
     """Rows where the measured angle is wild for one sample (isolated whitened spikes).
 
-    The largest spike is taken out first (its leaky tail with it), then the next, so a
-    tail is never mistaken for a second wild sample.
+    With ``moving`` (bool per row, see :func:`moving_rows`) the noise scale is taken
+    from the row-to-row changes where the wheel moves (default: e itself, every row). The largest spike is taken out first (its leaky tail with it),
+    then the next, so a tail is never mistaken for a second wild sample.
     """
     r = np.asarray(residual, dtype=float).copy()
     e = whiten(r, taps)
     s = robust_sigma(e)
+    if moving is not None:
+        # the noise is local: row-to-row changes of e where the wheel moves (a slow model
+        # error, as the baseline has on a log with an effect, cancels in the difference)
+        both = np.asarray(moving, dtype=bool)
+        both = both[1:] & both[:-1]
+        if np.count_nonzero(both) >= 10:
+            s = robust_sigma(np.diff(e)[both]) / np.sqrt(2.0)
     rows: list[int] = []
     if s <= 0:
         return rows
@@ -154,19 +175,30 @@ def creep(t: FloatArray, u: FloatArray, residual: FloatArray, pred: FloatArray, 
 
 
 def late_steps(t: FloatArray, u: FloatArray, residual: FloatArray, d_shift: FloatArray,
-               shift: float, ts: float) -> list[Anomaly]:
+               shift: float, ts: float, T: float = 0.0, pred: FloatArray | None = None,
+               angle_noise: float = 0.0) -> list[Anomaly]:
     """Edges whose response is shifted in time against the others (a step between samples).
 
     ``d_shift`` is the change of the prediction when every edge is ``shift`` s later; per
-    edge the residual's projection on it (over the next few rows) estimates that edge's
-    own shift.
+    edge the residual's projection on it estimates that edge's own shift. The projection
+    spans the rise, 3 T (T: the model's time constant, s), and at least 6 rows (6 rows
+    are only 30 ms at a 5 ms period).
+
+    One edge cannot be timed better than the encoder's angle allows: an angle error of
+    ``angle_noise`` (rad, the quantisation noise of the measured angle) over the speed
+    change of the edge (from ``pred``, rad/s). At 25 ms a quarter period is far above
+    that; at 5 ms (a 4.5 V step: about 1 ms per count against 1.25 ms) it is not, so an
+    edge must be out of line by ``LATE_SIGMAS`` such timing errors as well.
     """
     edges = np.flatnonzero(np.diff(u) != 0) + 1
     if edges.size < 3:
         return []
-    est, strength = [], []
+    span = max(6, int(np.ceil(3.0 * T / ts))) if ts > 0 else 6
+    est, strength, resolution = [], [], []
     for e in edges.tolist():
-        rows = np.arange(e, min(e + 6, u.size))
+        rows = np.arange(e, min(e + span, u.size))
+        jump = abs(float(pred[rows[-1]] - pred[e - 1])) if pred is not None else 0.0
+        resolution.append(angle_noise / jump if jump > 0 else 0.0)
         den = float(np.dot(d_shift[rows], d_shift[rows]))
         if den <= 0:
             est.append(0.0)
@@ -178,10 +210,11 @@ def late_steps(t: FloatArray, u: FloatArray, residual: FloatArray, d_shift: Floa
     med = float(np.median(x))
     noise = robust_sigma(np.diff(residual)) / np.sqrt(2.0)
     out = []
-    for e, dx, st in zip(edges.tolist(), x.tolist(), strength, strict=True):
+    for e, dx, st, res_t in zip(edges.tolist(), x.tolist(), strength, resolution, strict=True):
         off = dx - med
-        # the shift must be a good part of a sample and well above what the noise allows
-        if abs(off) > 0.25 * ts and abs(off) / shift * st > 6 * noise:
+        # the shift must be a good part of a sample, well above what the noise allows and
+        # well above the timing the angle quantum allows for this edge
+        if abs(off) > max(0.25 * ts, LATE_SIGMAS * res_t) and abs(off) / shift * st > 6 * noise:
             out.append(Anomaly(
                 "late_step", int(e), float(t[e]), 1e3 * off, "ms",
                 f"the step at row {e} (t = {t[e]:.3f} s) acts about {1e3 * off:+.0f} ms "

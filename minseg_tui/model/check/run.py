@@ -24,6 +24,7 @@ from minseg_tui.model.check.fit import (
     fit_all,
     fit_baseline,
     fit_candidate,
+    whiten,
 )
 from minseg_tui.model.check.report import CheckResult, Finding, ModelFit, Other, fit_percent, rmse
 from minseg_tui.model.check.search import golden
@@ -64,7 +65,8 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
     # first pass: baseline, wild samples out
     head = full.head(MAX_FIT_ROWS)
     base = fit_baseline(head)
-    wild = an.find_wild(y - base.predict(full), 1)
+    moving = an.moving_rows(y)
+    wild = an.find_wild(y - base.predict(full), 1, moving=moving)
     if wild:
         full, head, base = _repaired(full, y - base.predict(full), wild, 1)
 
@@ -74,7 +76,7 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
         # the speed was averaged: look for wild samples again, in the averaged form
         taps = fits[cause].effects.taps
         orig = Problem(t, u, y, ts, full.z0)
-        again = an.find_wild(y - fits[cause].predict(orig), taps)
+        again = an.find_wild(y - fits[cause].predict(orig), taps, moving=moving)
         if again != wild:
             if again:
                 full, head, base = _repaired(orig, y - fits[cause].predict(orig), again, taps)
@@ -121,7 +123,9 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
         found.append(cr)
     shift = 0.5 * ts
     moved = replace(ext, effects=replace(ext.effects, delay=ext.effects.delay + shift))
-    found += an.late_steps(t, u, res, moved.predict(full) - e_pred, shift, ts)
+    taps = ext.effects.taps
+    angle_noise = taps * ts * an.robust_sigma(whiten(res, taps)[moving]) if np.any(moving) else 0.0
+    found += an.late_steps(t, u, res, moved.predict(full) - e_pred, shift, ts, ext.T, e_pred, angle_noise)
     gp = an.gaps(t, ts)
     if gp:
         found.append(gp)

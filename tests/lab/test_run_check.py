@@ -1,0 +1,72 @@
+"""A Task 10 run recorded from the virtual MinSeg, through the real link and session, passes
+the model check cleanly at both sample periods.
+
+The virtual board applies every STEP edge exactly at a sample instant (firmware/PROTOCOL.md),
+so the check must report no step "between samples" and no wild sample; its plant has Coulomb
+friction tau_c = 7.3e-3 N m, i.e. u_c = tau_c R / k_a = 0.119 V at the motor terminals
+(PlantParams.u_coulomb), which the check must name and measure. The run is recorded as the
+TUI does it: STOP, P, Session.start_run, STEP, every sample into the Recorder, finish_run on
+$EV,STEPDONE; the table holds the multimeter's u_ss at 4.5 V, so the log's u is u_A.
+"""
+
+import itertools
+import time
+
+import pytest
+
+from minseg_tui.device.factory import open_device
+from minseg_tui.device.virtual import forget_board
+from minseg_tui.lab.session import Session
+from minseg_tui.lab.steps import RunPlan
+from minseg_tui.model.plant import PlantParams
+
+_names = itertools.count()
+
+
+def record_task10(tmp_path, seed: int, ts: float):
+    """Record the Task 10 plan (0 -> 4.5 V, half period 1.5 s, 4 periods) at period ``ts``
+    from a virtual board with ``seed``; returns the session and the run."""
+    name = f"run-check-{next(_names)}"
+    link = open_device(f"minseg://{name}?clock=virtual&seed={seed}")
+    try:
+        s = Session.create(tmp_path, ["A. Student"])
+        link.set_voltage(4.5)
+        time.sleep(0.05)
+        s.enter("u_ss@4.5", f"{link.meter().u_A:.2f} V")  # the multimeter on M1A/M1B
+        plan = RunPlan(ts=ts)
+        link.stop()
+        link.set_period(plan.ts)
+        rec = s.start_run("fast" if ts != 0.025 else "steps", plan)
+        link.samples()
+        link.step(plan.low, plan.high, plan.half_period, plan.periods)
+        end = time.monotonic() + 30.0
+        done = False
+        while not done and time.monotonic() < end:
+            done = any(e.kind == "stepdone" for e in link.events())
+            b = link.samples()
+            for q, t_us, c, u in zip(b.seq, b.t_us, b.count, b.u_req, strict=True):
+                rec.append(int(q), int(t_us), int(c), round(float(u) * 1000))
+            time.sleep(0.005)
+        assert done, "the step sequence did not finish"
+        info = s.finish_run(rec)
+        assert info is not None and info.dropped == 0
+        return s, info
+    finally:
+        link.close()
+        forget_board(name)
+
+
+@pytest.mark.parametrize("ts", [0.025, 0.005])
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_virtual_task10_run_is_coulomb_without_anomalies(tmp_path, seed, ts):
+    u_c_true = PlantParams().u_coulomb  # 0.119 V
+    s, info = record_task10(tmp_path, seed, ts)
+    assert info.ts == ts and info.samples >= 2 * 4 * round(1.5 / ts)
+    mc = s.model_check(info.name)
+    assert mc.result is not None, mc.problem
+    r = mc.result
+    assert [a.text for a in r.anomalies] == []
+    assert r.finding.cause == "coulomb_friction", r.finding.evidence
+    # u_c within 10 % of the plant's (u_A mapped through the table's u_ss)
+    assert r.extended.params["u_c"] == pytest.approx(u_c_true, rel=0.10)
+    assert r.extended.params["T"] == pytest.approx(0.043, rel=0.05)
