@@ -43,13 +43,15 @@ KEYS: list[tuple[str, str]] = [
     ("F6", "run it fast: 5 ms board-timed samples"),
     ("F7", "the formula behind the table cell"),
     ("F8", "export the report (Markdown, HTML, CSV)"),
-    ("[ ]", "previous / next step of the log (Tasks 11-15)"),
-    ("z, F9", "zoom to one step / whole log (Tasks 11-15)"),
+    ("F9", "zoom the step log: next step, whole log (Tasks 11-15)"),
+    ("Alt+← →", "previous / next step of the log (Tasks 11-15)"),
+    ("Ctrl+← →", "the same, outside a text entry"),
+    ("[ ] z", "the same on the focused plot; z zooms"),
     ("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
     ("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
     ("Tab", "next field; Enter stores what you typed"),
     ("Space", "tick an answer (summary questions)"),
-    ("Ctrl+P", "command palette (go to step, capture, stop...)"),
+    ("Ctrl+P", "command palette (go to a step, pick the run, stop...)"),
     ("Ctrl+Q", "quit (the session is already saved)"),
 ]
 
@@ -62,6 +64,21 @@ EVENT_TEXT: dict[str, str] = {
     "boot": "board restarted — motor off",
 }
 """What the status line says at once for a link event (``error`` shows the link's own line)."""
+
+PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
+    ("f3", "set_voltage", "Set V", "setting a voltage"),
+    ("f4", "capture", "Capture", "capturing omega_ss"),
+    ("f5", "run_steps", "Run", "the step experiment"),
+    ("f6", "run_fast", "Run 5 ms", "the fast step experiment"),
+    ("f7", "formula", "Formula", "a table formula"),
+    ("f9", "zoom_next", "Zoom", "zooming the step log"),
+    ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
+    ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
+)
+"""Keys that act on the current step's panel: (keys, the panel's method, footer label, what it
+is; no label: not in the footer). The footer shows a key on the steps whose panel offers the
+method; elsewhere the key says that it is not part of this step. None is printable, so no key
+is taken from typing in an entry (Ctrl+arrows stay the entry's word moves)."""
 
 RUN_ENDS = frozenset({"stepdone", "disconnected", "watchdog", "boot", "error"})
 """Link events after which a run being recorded takes no more samples."""
@@ -79,13 +96,9 @@ class LabApp(App[None]):
     BINDINGS = [
         Binding("f1", "help", "Help"),
         Binding("f2", "stop_motor", "STOP", priority=True),
-        Binding("f3", "set_voltage", "Set V", show=False),
-        Binding("f4", "capture", "Capture", show=False),
-        Binding("f5", "run_steps", "Steps", show=False),
-        Binding("f6", "run_fast", "Fast", show=False),
-        Binding("f7", "formula", "Formula", show=False),
         Binding("f8", "export", "Export"),
-        Binding("f9", "zoom_next", "Zoom", show=False),
+        *[Binding(keys, f"panel('{method}')", label, show=bool(label)) for keys, method, label, _ in PANEL_KEYS],
+        *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
     ]
 
     def __init__(self, config: UiConfig, store: Store, open_device: Callable[[str], Device]) -> None:
@@ -97,6 +110,8 @@ class LabApp(App[None]):
         self.lab: Lab | None = None
         self.live = LiveBuffer()
         self.motor = "off"
+        self.requested: float | None = None
+        """The voltage last set with F3 (V; None: none, or the motor is off or runs steps)."""
         self.event_text = "connecting…"
         self.recording: Recording | None = None
         self.meter_reading: Meter | None = None
@@ -110,7 +125,6 @@ class LabApp(App[None]):
     def on_mount(self) -> None:
         today = self.config.today or _dt.date.today().isoformat()
         self.push_screen(StartScreen(self.store.list(), today))
-        self.set_interval(0.25, self._tick)
         self._connect(self.config.device)
 
     @work(thread=True, exclusive=True, group="connect", name="open device")
@@ -168,8 +182,9 @@ class LabApp(App[None]):
     # -- the stream ---------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="stream", name="device stream")
     def _stream(self) -> None:
-        """Worker thread: drain the device into the live buffer and the run being recorded;
-        say so with one coalesced message per read; poll the virtual multimeter."""
+        """Worker thread: drain the device into the live buffer and the run being recorded (and
+        flush the run to disk); say so with one coalesced message per read; poll the virtual
+        multimeter."""
         worker = get_current_worker()
         device = self.device
         assert device is not None
@@ -188,6 +203,9 @@ class LabApp(App[None]):
                     if any(ev.kind in RUN_ENDS for ev in batch.events):
                         rec.end()
                 self.post_message(SamplesArrived(device.health(), self.live.total))
+            rec = self.recording
+            if rec is not None:  # the run's samples reach the disk within a second (the flush
+                rec.tick()       # fsyncs: here, never on the UI thread)
             for ev in batch.events:
                 self.post_message(LinkEvent(ev))
             now = time.monotonic()
@@ -197,12 +215,6 @@ class LabApp(App[None]):
                     self.meter_reading = device.meter()
                 except MinsegError:
                     self.meter_reading = None
-
-    def _tick(self) -> None:
-        """A few times a second: the run's samples reach the disk (Recorder.tick)."""
-        rec = self.recording
-        if rec is not None:
-            rec.tick()
 
     @on(SamplesArrived)
     def _samples(self, event: SamplesArrived) -> None:
@@ -242,6 +254,7 @@ class LabApp(App[None]):
             self.finish_run("could not start")
             return
         self.motor = f"steps 0/{plan.high:g} V"
+        self.requested = None
         self.refresh_status()
         self._show_progress()
 
@@ -273,9 +286,11 @@ class LabApp(App[None]):
             return
         if kind == "stepdone":
             self.motor = "off"
+            self.requested = None
             self.finish_run("done")
         elif kind in ("disconnected", "watchdog", "boot", "error"):
             self.motor = "off"
+            self.requested = None
             if self.recording is not None:
                 self.finish_run(EVENT_TEXT.get(kind, "stopped"))
         if kind == "connected" and self.event_text == "":
@@ -323,6 +338,7 @@ class LabApp(App[None]):
     def action_stop_motor(self) -> None:
         """F2: motor off now; a run in progress keeps what it recorded."""
         self.motor = "off"
+        self.requested = None
         if self.device is not None:
             try:
                 self.device.stop()
@@ -330,23 +346,40 @@ class LabApp(App[None]):
                 self.notify(f"{exc} (a board without USB power stops by itself)", severity="warning")
         if self.recording is not None:
             self.finish_run("stopped")
-        for w in self.screen.query(".live"):
-            w.level = None  # type: ignore[attr-defined]
         self.refresh_status()
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
 
-    def _panel_action(self, name: str, what: str) -> None:
+    def _panel_method(self, name: str) -> Callable[[], None] | None:
+        """The current step panel's method ``name``, or None (no lab screen, or not this step)."""
         screen = self._lab_screen()
-        if screen is None:
-            return
-        for w in screen.query(".panel"):
-            handler = getattr(w, name, None)
-            if handler is not None:
-                handler()
-                return
-        self.notify(f"{what} is not part of this step", severity="information")
+        panel = None if screen is None else screen.panel
+        handler = getattr(panel, name, None)
+        offers = getattr(panel, "offers", None)
+        return None if handler is None or (offers is not None and not offers(name)) else handler
+
+    def _panel_action(self, name: str, what: str) -> None:
+        handler = self._panel_method(name)
+        if handler is not None:
+            handler()
+        elif self._lab_screen() is not None:
+            self.action_not_here(what)
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """A panel key is live (and in the footer) only on the steps whose panel has it."""
+        if action == "panel":
+            return self._panel_method(str(parameters[0])) is not None
+        return True
+
+    def action_panel(self, name: str) -> None:
+        handler = self._panel_method(name)
+        if handler is not None:
+            handler()
+
+    def action_not_here(self, what: str) -> None:
+        if self._lab_screen() is not None:
+            self.notify(f"{what} is not part of this step", severity="information")
 
     def action_set_voltage(self) -> None:
         self._panel_action("set_voltage", "setting a voltage")
@@ -395,6 +428,18 @@ class LabApp(App[None]):
         screen = self._lab_screen()
         if screen is not None:
             screen.go_to(step_id)
+
+    def use_run(self, name: str | None) -> None:
+        """Palette: the run Tasks 11-15 and the model check use (None: the latest)."""
+        if self.lab is None:
+            return
+        try:
+            said = self.lab.use_run(name)
+        except MinsegError as exc:
+            self.notify(str(exc), severity="error")
+            return
+        self.notify(said, title="runs")
+        self.entry_stored("run")
 
     def import_log(self) -> None:
         """Palette: go to the model check, where a log recorded elsewhere can be loaded."""

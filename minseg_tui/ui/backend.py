@@ -28,7 +28,7 @@ from minseg_tui.lab import capture as lab_capture
 from minseg_tui.lab import store as lab_store
 from minseg_tui.lab.entry import format_quantity
 from minseg_tui.lab.runs import Recorder
-from minseg_tui.lab.session import Entry, Session
+from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import FIELDS, STEPS, RunPlan, Step, step
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.report import text as check_text
@@ -76,6 +76,26 @@ _FORMULAS = dict(step("table").formulas)
 
 def _fmt(v: float | None, unit: str, digits: int = 4) -> str:
     return "—" if v is None or not math.isfinite(v) else format_quantity(v, unit, digits)
+
+
+TABLE_COLUMNS = ("u\nV", "u_ss\nV", "omega_ss\nrad/s", "i_ss\nmA", "k_v\nV s/rad", "f\nmN m s/rad")
+"""The table's headers: name over unit (the cells hold bare numbers in these units)."""
+
+
+def _num(v: float | None, digits: int) -> str:
+    return "—" if v is None or not math.isfinite(v) else f"{v:.{digits}g}"
+
+
+def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> str:
+    """The formula of a computed cell of row ``r`` with the row's numbers in it (R in ohm,
+    k_a in N m/A, the final one)."""
+    if name == "k_v" and None not in (r.k_v, r.u_ss, r.i_ss, r.omega_ss, R):
+        return (f"k_v = (u_ss - R i_ss) / omega_ss = ({r.u_ss:.3g} V - {R:.3g} Ω × {r.i_ss:.3g} A)"
+                f" / {r.omega_ss:.3g} rad/s = {r.k_v:.4g} V s/rad")
+    if name == "f" and None not in (r.f, r.i_ss, r.omega_ss, k_a):
+        return (f"f = k_a i_ss / omega_ss = {k_a:.4g} N m/A × {r.i_ss:.3g} A / {r.omega_ss:.3g} rad/s"
+                f" = {r.f * 1e3:.4g} mN m s/rad (k_a = 0.65 × median k_v)")
+    return _FORMULAS[name]
 
 
 def _result(e: Entry | None, feedback: str = "") -> EntryResult | None:
@@ -302,28 +322,34 @@ class SessionLab:
 
     # -- Tasks 6-9 ---------------------------------------------------------------------------
     def table(self) -> TableView:
+        """The table with its units in the headers and short cells (it fits the pane at 80
+        columns); each computed cell's formula carries the row's own numbers."""
         with self.lock:
+            R = self.session.value("R")
+            res = self.session.results()
+            ident = res.identification
+            k_a = None if ident is None else ident.k_a
             rows = []
             for r in self.session.table():
                 spread = "" if r.spread is None else f" ±{r.spread:.2f}"
                 rows.append((
-                    Cell(f"{r.level:g} V"),
-                    Cell(_fmt(r.u_ss, "V")),
-                    Cell(_fmt(r.omega_ss, "rad/s") + spread,
-                         "captured: mean over the settled window ± its spread" if r.spread is not None else ""),
-                    Cell(_fmt(r.i_ss, "mA")),
-                    Cell(_fmt(r.k_v, "V s/rad"), _FORMULAS["k_v"]),
-                    Cell(_fmt(r.f, "N m s/rad"), _FORMULAS["f"]),
+                    Cell(f"{r.level:g}", f"u = {r.level:g} V: the voltage requested on the board"),
+                    Cell(_num(r.u_ss, 3), "u_ss: read on the multimeter (V)" if r.u_ss is not None else ""),
+                    Cell(_num(r.omega_ss, 3) + spread,
+                         "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
+                         if r.spread is not None else "omega_ss: typed in (rad/s)" if r.omega_ss is not None else ""),
+                    Cell(_num(None if r.i_ss is None else r.i_ss * 1e3, 3),
+                         "i_ss: read on the multimeter (mA)" if r.i_ss is not None else ""),
+                    Cell(_num(r.k_v, 4), _row_formula("k_v", r, R, k_a)),
+                    Cell(_num(None if r.f is None else r.f * 1e3, 4), _row_formula("f", r, R, k_a)),
                 ))
-            res = self.session.results()
-            ident = res.identification
             results: tuple[tuple[str, Cell], ...] = ()
             if ident is not None:
                 results = (("k_v", Cell(_fmt(ident.k_v, "V s/rad"), _FORMULAS["k_v"])),
                            ("k_a", Cell(_fmt(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
                            ("f", Cell(_fmt(ident.f, "N m s/rad"), _FORMULAS["f"])))
             warnings = tuple(n.message for n in self.session.warnings("table")) + tuple(res.problems)
-            return TableView(("u", "u_ss", "omega_ss", "i_ss", "k_v", "f"), tuple(rows), results,
+            return TableView(TABLE_COLUMNS, tuple(rows), results,
                              tuple(dict.fromkeys(warnings)), self._compare("table"))
 
     def _compare(self, step_id: str) -> tuple[tuple[str, str, str], ...]:
@@ -349,6 +375,8 @@ class SessionLab:
         rec.close()
         with self.lock:
             info = self.session.finish_run(rec.recorder)
+            if info is not None:  # the new run is the one Tasks 11-15 use (an import or a pick is dropped)
+                self.session.select_run(None)
         if info is None:
             return f"run {rec.name}: too few samples, nothing kept"
         return f"run {info.name}: {info.samples} samples kept" + (f", {info.dropped} lost on the link" if info.dropped else "")
@@ -357,6 +385,12 @@ class SessionLab:
         """Names of the recorded runs, oldest first."""
         with self.lock:
             return tuple(r.name for r in self.session.runs)
+
+    def use_run(self, name: str | None) -> str:
+        with self.lock:
+            self.session.select_run(name)
+            run = self.session.step_run()
+        return f"Tasks 11-15 and the model check use run {run.name if run else '— (none yet)'}"
 
     def run_views(self) -> tuple[RunView, ...]:
         """The latest 25 ms run and the latest fast run, with their T readings (worker)."""
@@ -472,7 +506,8 @@ class SessionStore:
 
     def list(self) -> list[SessionSummary]:
         return [SessionSummary(str(s.path), ", ".join(s.members), s.date, s.last_step,
-                               s.damaged or (f"open in process {s.locked_by}" if s.locked_by else ""))
+                               (f"damaged — {s.damaged}" if s.damaged else
+                                f"in use by another minseg-tui (pid {s.locked_by})" if s.locked_by else ""))
                 for s in lab_store.list_sessions(self.root)]
 
     def new(self, members: str, date: str) -> SessionLab:

@@ -55,10 +55,18 @@ class LivePanel(Vertical):
         self._lab_app = app
         self.step = step
         self.levels = tuple(dict.fromkeys(f.level for f in step.fields if f.level is not None))
-        if not self.levels and "capture_omega" in step.actions:
-            self.levels = LEVELS
-        self.level: float | None = None
+        if not self.levels and {"capture_omega", "live_velocity"} & set(step.actions):
+            self.levels = LEVELS  # Task 3 says "set a voltage": F3 steps through the lab's
         self.plots = bool({"live_velocity", "capture_omega"} & set(step.actions))
+
+    @property
+    def level(self) -> float | None:
+        """The voltage requested with F3 (V), kept by the app: it outlives the step on screen."""
+        return self._lab_app.requested
+
+    @level.setter
+    def level(self, value: float | None) -> None:
+        self._lab_app.requested = value
 
     def compose(self) -> ComposeResult:
         if self.plots:
@@ -109,6 +117,11 @@ class LivePanel(Vertical):
         if t.size == 0:
             text = "waiting for samples…\n" + text
         steady.first(Static).update(text)
+
+    def offers(self, action: str) -> bool:
+        """Whether the panel's key ``action`` does something on this step (F3 where there are
+        voltages to set, F4 on Task 4)."""
+        return {"set_voltage": bool(self.levels), "capture": "capture_omega" in self.step.actions}.get(action, True)
 
     def set_voltage(self) -> None:
         """F3: request the next of this step's voltages on the board."""
@@ -172,15 +185,25 @@ class MeterPanel(Static):
                     f"multimeter (virtual, M1A-M1B): {m.u_A:.2f} V · {m.i * 1000:.1f} mA · {m.R:.1f} Ω")
 
 
-class ConnectPanel(Static):
-    """Task 1: who the program talks to, and how to change it."""
+class Recomputing:
+    """Mixin of the panels built from what the lab holds: marked ``panel recompute`` (the app
+    calls :meth:`recompute` after every entry and run) and built once when mounted. Put it
+    before the Textual base: ``class XPanel(Recomputing, Vertical)``."""
 
-    def __init__(self, app: LabApp) -> None:
-        super().__init__("", classes="panel recompute")
+    def __init__(self, app: LabApp, classes: str = "") -> None:
+        super().__init__(classes=f"panel recompute {classes}".rstrip())  # type: ignore[call-arg]
         self._lab_app = app
 
     def on_mount(self) -> None:
         self.recompute()
+
+    def recompute(self) -> None:
+        """Rebuild from the lab's current entries and runs."""
+        raise NotImplementedError
+
+
+class ConnectPanel(Recomputing, Static):
+    """Task 1: who the program talks to, and how to change it."""
 
     def recompute(self) -> None:
         d = self._lab_app.device
@@ -195,39 +218,48 @@ class ConnectPanel(Static):
         self.update(text)
 
 
-class TablePanel(Vertical):
+class TablePanel(Recomputing, Vertical):
     """Tasks 6-9 filling itself; F7 (or Enter on a cell) shows the formula behind the cell."""
 
     def __init__(self, app: LabApp) -> None:
-        super().__init__(classes="panel recompute")
-        self._lab_app = app
+        super().__init__(app)
         self.view: TableView | None = None
 
     def compose(self) -> ComposeResult:
-        yield DataTable(id="table", cursor_type="cell", zebra_stripes=False)
+        yield DataTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
+        yield Static("F7 on a cell: the formula behind it.", id="formula", classes="hint")
         yield Static("", id="results")
         yield Static("", id="warnings")
-        yield Static("F7 on a cell: the formula behind it.", id="formula", classes="hint")
-
-    def on_mount(self) -> None:
-        self.recompute()
 
     def recompute(self) -> None:
-        """Rebuild from the lab's current entries."""
+        """Rebuild from the lab's current entries (in a worker: it computes the results, the
+        step fit on the chosen run included)."""
+        if self._lab_app.lab is not None:
+            self._load()
+
+    @work(thread=True, exclusive=True, group="table")
+    def _load(self) -> None:
         lab = self._lab_app.lab
-        if lab is None:
-            return
-        self.view = lab.table()
+        assert lab is not None
+        view = lab.table()
+        self.app.call_from_thread(self._show, view)
+
+    def _show(self, view: TableView) -> None:
+        if not self.is_attached:
+            return  # the step changed while the worker ran
+        self.view = view
         table = self.query_one(DataTable)
+        cursor = table.cursor_coordinate
         table.clear(columns=True)
-        table.add_columns(*self.view.columns)
-        for row in self.view.rows:
+        table.add_columns(*view.columns)
+        for row in view.rows:
             table.add_row(*[c.text for c in row])
-        lines = ["  ".join(f"{name} = {cell.text}" for name, cell in self.view.results)]
-        lines += [f"{label}: yours {own} · computed {comp}" for label, own, comp in self.view.compare
+        table.move_cursor(row=cursor.row, column=cursor.column, animate=False)
+        lines = ["  ".join(f"{name} = {cell.text}" for name, cell in view.results)]
+        lines += [f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare
                   if own != "—"]
         self.query_one("#results", Static).update("\n".join(lines))
-        self.query_one("#warnings", Static).update("\n".join(f"! {w}" for w in self.view.warnings))
+        self.query_one("#warnings", Static).update("\n".join(f"! {w}" for w in view.warnings))
 
     def formula(self) -> None:
         """Show the formula of the cell under the cursor."""
@@ -242,13 +274,12 @@ class TablePanel(Vertical):
         self.formula()
 
 
-class StepRunPanel(Vertical):
+class StepRunPanel(Recomputing, Vertical):
     """Task 10: run the board's step sequence with progress (F2 stops it at once); the
     25 ms run beside the 5 ms one, with both T readings next to each other."""
 
     def __init__(self, app: LabApp, step: Step) -> None:
-        super().__init__(classes="panel recompute")
-        self._lab_app = app
+        super().__init__(app)
         self.step = step
         self.views: tuple[RunView, ...] = ()
 
@@ -265,9 +296,6 @@ class StepRunPanel(Vertical):
             yield TracePlot("5 ms run", "t [s]", "omega [rad/s]", id="plot-fast")
         yield Static(FAST_WHY, classes="para")
         yield Static("", id="t-readings")
-
-    def on_mount(self) -> None:
-        self.recompute()
 
     def recompute(self) -> None:
         """Show the runs already recorded (after a resume, too); computed in a worker."""
@@ -321,7 +349,8 @@ class StepRunPanel(Vertical):
 
 
 class StepPlot(TracePlot):
-    """The step log, whole or zoomed to one rising step; [ and ] pick the step, z toggles."""
+    """The step log, whole or zoomed to one rising step. Focused, [ and ] pick the step and z
+    toggles; alt+left/right and F9 do the same from anywhere on the step (app keys)."""
 
     BINDINGS = [
         Binding("left_square_bracket", "pick(-1)", "prev step"),
@@ -341,13 +370,12 @@ class StepPlot(TracePlot):
                 p.toggle_zoom()
 
 
-class ResultsPanel(Vertical):
+class ResultsPanel(Recomputing, Vertical):
     """Tasks 11-15: the step log plotted, zoom to a step, K, T (63 % and least squares with
     its interval), J, the model, omega at 5 V, and the group's readings beside them."""
 
     def __init__(self, app: LabApp, step: Step) -> None:
-        super().__init__(classes="panel recompute results")
-        self._lab_app = app
+        super().__init__(app, "results")
         self.step = step
         self.view: ResultsView | None = None
         self.zoom: int | None = 0 if step.id in ("task11", "task12") else None
@@ -357,9 +385,6 @@ class ResultsPanel(Vertical):
         yield Static("", id="zoom-note", classes="hint")
         yield Static("computing…", id="results-lines")
         yield Static("", id="compare")
-
-    def on_mount(self) -> None:
-        self.recompute()
 
     def recompute(self) -> None:
         if self._lab_app.lab is not None:
@@ -403,9 +428,9 @@ class ResultsPanel(Vertical):
             w = v.steps[self.zoom]
             keep = (v.t >= w.t0 - ZOOM_BEFORE) & (v.t <= w.t1)
             note.update(f"run {v.run}: step {self.zoom + 1} of {len(v.steps)}, 63 % at {_s(w.T_63)}"
-                        " · [ ] step · z whole log (F9)")
+                        " · alt+←/→ step · F9 next")
         else:
-            note.update(f"run {v.run}: whole log, {len(v.steps)} rising steps · z zooms (F9)")
+            note.update(f"run {v.run}: whole log, {len(v.steps)} rising steps · F9 zooms")
         plot.show([Trace(v.t[keep], v.omega[keep], "omega"), Trace(v.t[keep], v.u[keep], "u_A", "dot")])
 
     def pick(self, delta: int) -> None:
@@ -415,6 +440,14 @@ class ResultsPanel(Vertical):
         n = len(self.view.steps)
         self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
         self._plot()
+
+    def pick_prev(self) -> None:
+        """alt+left: the previous rising step."""
+        self.pick(-1)
+
+    def pick_next(self) -> None:
+        """alt+right: the next rising step."""
+        self.pick(1)
 
     def toggle_zoom(self) -> None:
         """One step, or the whole log."""
@@ -434,13 +467,12 @@ class ResultsPanel(Vertical):
         self._plot()
 
 
-class ModelCheckPanel(Vertical):
+class ModelCheckPanel(Recomputing, Vertical):
     """Measured against the first-order model and the extended one, residuals, the named cause
     with its evidence, the gain; a log recorded elsewhere can be loaded."""
 
     def __init__(self, app: LabApp) -> None:
-        super().__init__(classes="panel recompute")
-        self._lab_app = app
+        super().__init__(app)
         self.view: CheckView | None = None
 
     def compose(self) -> ComposeResult:
@@ -450,9 +482,6 @@ class ModelCheckPanel(Vertical):
         yield Static("computing…", id="check-lines")
         yield LabInput(placeholder="load a step log (CSV path), Enter", id="import-path")
         yield Static("", id="import-msg", classes="hint")
-
-    def on_mount(self) -> None:
-        self.recompute()
 
     def recompute(self) -> None:
         if self._lab_app.lab is not None:
@@ -502,15 +531,8 @@ class ModelCheckPanel(Vertical):
         self._lab_app.entry_stored("import")
 
 
-class ReportPanel(Static):
+class ReportPanel(Recomputing, Static):
     """The summary step: F8 writes the report; the files written."""
-
-    def __init__(self, app: LabApp) -> None:
-        super().__init__("", classes="panel recompute")
-        self._lab_app = app
-
-    def on_mount(self) -> None:
-        self.recompute()
 
     def recompute(self) -> None:
         paths = self._lab_app.exported

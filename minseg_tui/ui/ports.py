@@ -294,6 +294,10 @@ class Lab(Protocol):
     def runs(self) -> tuple[str, ...]:
         """Names of the recorded runs."""
 
+    def use_run(self, name: str | None) -> str:
+        """Tasks 11-15 and the model check use run ``name`` (None: the latest step run); one
+        line saying which run they use now."""
+
     def run_views(self) -> tuple[RunView, ...]:
         """The latest 25 ms and fast runs with their T readings."""
 
@@ -315,7 +319,8 @@ class Lab(Protocol):
 
 @dataclass(frozen=True)
 class SessionSummary:
-    """A saved session for the resume list: its folder, group, date, the step it is at."""
+    """A saved session for the resume list: its folder, group, date, the step it is at, and
+    why it cannot be opened ("damaged — ...", "in use by ..."; empty when it can)."""
 
     path: str
     members: str

@@ -3,18 +3,21 @@ keys, resume, the stop key, help, palette entries, NO_COLOR."""
 
 from __future__ import annotations
 
+import pytest
 from textual.filter import Monochrome, NoColor
-from textual.widgets import RadioSet, SelectionList
+from textual.widgets import DataTable, RadioSet, SelectionList
 
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.store import list_sessions
-from minseg_tui.ui.ports import DeviceInfo, LinkHealth
+from minseg_tui.ui.ports import Batch, DeviceInfo, LinkHealth
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import status_text
+from tests.ui.conftest import settle
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import goto, start, type_in
+from tests.ui.helpers import goto, record_step_run, start, type_in
+from tests.ui.test_snapshots import TABLE
 
 
 async def test_new_session_lands_in_the_lab_and_saves(quiet, tmp_path):
@@ -136,6 +139,135 @@ async def test_resume_lands_where_the_group_left_off(quiet, tmp_path):
         assert row.input.value == "31 mA"
 
 
+@pytest.mark.parametrize("step_id", ["table", "task4", "task10", "task11", "model_check"])
+async def test_resume_on_a_step_with_a_panel(quiet, step_id):
+    """A session left on a step with a panel resumes there, the panel built once (the list's
+    first highlight on mount used to swap the pane mid-compose and crash the app)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        for key, text in TABLE.items():
+            app.lab.enter(key, text)
+        await goto(pilot, step_id)
+    app.lab.close()
+    app2 = quiet()
+    async with app2.run_test(size=(80, 24)) as pilot:
+        await pilot.pause()
+        app2.screen.query_one("#sessions").focus()
+        await pilot.press("enter")
+        await settle(pilot)
+        assert isinstance(app2.screen, LabScreen) and app2.screen.step.id == step_id
+        assert len(app2.screen.query(".panel")) == 1
+        if step_id == "table":
+            assert app2.screen.query_one("#table", DataTable).row_count == 3
+
+
+async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        for key, text in TABLE.items():
+            app.lab.enter(key, text)
+        record_step_run(app.lab.session)
+        await goto(pilot, "task2")
+        assert not app.screen.active_bindings["f9"].binding.show  # not in the footer where it does nothing
+        await pilot.press("f9", "alt+right")  # says it is not part of this step; nothing breaks
+        await goto(pilot, "task11")
+        await settle(pilot)
+        note = app.screen.query_one("#zoom-note")
+        assert app.screen.active_bindings["f9"].binding.description == "Zoom"
+        own = await type_in(pilot, "own.K", "")
+        assert app.focused is own.input
+        await pilot.press("alt+right")
+        assert "step 2 of" in str(note.render())
+        await pilot.press("left_square_bracket", "z")  # printable keys stay in the entry
+        assert own.input.value == "[z" and "step 2 of" in str(note.render())
+        app.screen.query_one("#nav").focus()
+        await pilot.press("ctrl+right")
+        assert "step 3 of" in str(note.render())
+        await pilot.press("alt+left", "alt+left")
+        assert "step 1 of" in str(note.render())
+        await pilot.press("f9", "f9")
+        assert "step 3 of" in str(note.render())
+
+
+async def test_table_fits_80_columns_and_f7_gives_the_row_formula_with_its_numbers(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        for key, text in TABLE.items():
+            app.lab.enter(key, text)
+        await goto(pilot, "table")
+        await settle(pilot)
+        table = app.screen.query_one("#table", DataTable)
+        assert table.virtual_size.width <= table.size.width  # no sideways scrolling: f is in sight
+        assert [str(c.label).split()[0] for c in table.columns.values()] == ["u", "u_ss", "omega_ss", "i_ss", "k_v", "f"]
+        table.focus()
+        table.move_cursor(row=0, column=4)
+        await pilot.press("f7")
+        text = str(app.screen.query_one("#formula").render())
+        # k_v = (u_ss - R i_ss) / omega_ss with row 1's numbers: (2.05 - 5.3 * 0.028) / 3.1
+        assert "(2.05 V - 5.3 Ω × 0.028 A) / 3.1 rad/s" in text and "0.6134" in text
+        assert str(table.get_cell_at((0, 4))) == "0.6134"
+
+
+async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
+    from minseg_tui.ui.commands import StepCommands
+
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        for key, text in TABLE.items():
+            app.lab.enter(key, text)
+        first, second = record_step_run(app.lab.session, seed=5), record_step_run(app.lab.session, seed=6)
+        texts = [t for t, _, _ in StepCommands(app.screen)._entries()]
+        assert f"Use run {first} for Tasks 11-15" in texts and "Use the latest run for Tasks 11-15" in texts
+        await goto(pilot, "task11")
+        await settle(pilot)
+        assert f"run {second}" in str(app.screen.query_one("#zoom-note").render())
+        app.use_run(first)
+        await settle(pilot)
+        assert f"run {first}" in str(app.screen.query_one("#zoom-note").render())
+        app.use_run(None)
+        assert app.lab.session.step_run().name == second
+        app.use_run(first)
+        rec = app.lab.start_recording("manual")  # a new run recorded: it is the one used
+        rec.append(Batch(seq=range(40), t_us=[25_000 * k for k in range(40)], count=[3 * k for k in range(40)],
+                         u_mV=[4500] * 40))
+        app.lab.finish_recording(rec)
+        assert app.lab.session.step_run().name == rec.name not in (first, second)
+
+
+async def test_going_back_and_changing_r_recomputes_the_table(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        for key, text in TABLE.items():
+            app.lab.enter(key, text)
+        await goto(pilot, "table")
+        await settle(pilot)
+        assert str(app.screen.query_one("#table", DataTable).get_cell_at((0, 4))) == "0.6134"
+        await goto(pilot, "task2")
+        await type_in(pilot, "R", "6 ohm")
+        await goto(pilot, "table")
+        await settle(pilot)
+        # (2.05 V - 6 Ω × 0.028 A) / 3.1 rad/s = 0.6071 V s/rad
+        assert str(app.screen.query_one("#table", DataTable).get_cell_at((0, 4))) == "0.6071"
+
+
+async def test_a_voltage_set_on_task_3_is_still_the_request_on_task_4(quiet):
+    dev = QuietDevice(seed=2)
+    app = quiet(dev)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task3")
+        await pilot.press("f3")  # Task 3 says "set a voltage"
+        assert dev.commands[-1] == "V 2.5"
+        await goto(pilot, "task4")
+        await pilot.press("f3")
+        assert dev.commands[-1] == "V 3.5" and app.motor == "3.5 V"
+
+
 async def test_stop_key_turns_the_motor_off_from_anywhere(quiet):
     dev = QuietDevice(seed=2)
     app = quiet(dev)
@@ -207,6 +339,15 @@ async def test_no_color_is_respected(quiet, monkeypatch):
         await goto(pilot, "task2")
         row = await type_in(pilot, "R", "abc")
         assert row.message.startswith("✗")  # the refusal is in the text, not only in red
+        app.lab.choose("summary.1", [1])
+        app.lab.choose("summary.5", [1, 2])
+        await goto(pilot, "summary")
+        await settle(pilot)
+        radios = app.screen.query_one(f"#{field_id('summary.1')}").query("RadioButton")
+        assert [r.render().plain[1] for r in radios] == [" ", "●", " "]  # the choice, not a colour
+        ticks = app.screen.query_one(f"#{field_id('summary.5')}", FieldRow).query_one(SelectionList)
+        marks = [ticks.render_line(y).text[1] for y in range(ticks.option_count)]
+        assert marks.count("X") == 2 and marks[1] == marks[2] == "X"
 
 
 def test_status_line_fits_80_columns_in_every_state():

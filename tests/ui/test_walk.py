@@ -68,6 +68,7 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         await pilot.press("f2")
         # Tasks 6-9: the table filled itself; k_v near the plant's
         await goto(pilot, "table")
+        await settle(pilot)
         rows = app.lab.session.table()
         assert all(r.k_v is not None and abs(r.k_v / PUBLISHED.k_v - 1) < 0.1 for r in rows)
         assert all(r.f is not None and r.f > 0 for r in rows)

@@ -56,6 +56,14 @@ class StepPane(VerticalScroll):
         for f in self.step.fields:
             yield FieldRow(f, self._lab.text(f.key), self._lab.result(f.key), self._lab.chosen(f.key))
 
+    def on_mount(self) -> None:
+        self.screen.refresh_bindings()  # the footer shows this step's panel keys
+
+    @property
+    def panel(self) -> Widget | None:
+        """The step's own panel (live plots, table, runs, results...), or None."""
+        return self._extra
+
 
 class LabScreen(Screen[None]):
     """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves."""
@@ -70,6 +78,8 @@ class LabScreen(Screen[None]):
     def __init__(self, lab: Lab) -> None:
         super().__init__()
         self.lab = lab
+        self._shown: str | None = None
+        """The step whose pane was last mounted (the DOM may not hold it yet)."""
 
     def compose(self) -> ComposeResult:
         yield DeviceStatus()
@@ -91,12 +101,19 @@ class LabScreen(Screen[None]):
         """The step on screen."""
         return self.query(StepPane).last().step
 
+    @property
+    def panel(self) -> Widget | None:
+        """The panel of the step on screen (the last pane mounted; the one before may still be
+        leaving), or None."""
+        panes = self.query(StepPane)
+        return panes.last().panel if panes else None
+
     def show_step(self, step_id: str) -> None:
         """Put ``step_id`` on the right and remember it in the session."""
         step = next(s for s in self.lab.steps if s.id == step_id)
-        panes = self.query(StepPane)
-        if panes and panes.last().step.id == step_id:
+        if self._shown == step_id:  # not the DOM: a pane mounted with the screen is not in it yet
             return
+        self._shown = step_id
         self.lab.go(step_id)
         extra = self.app.step_panel(step)  # type: ignore[attr-defined]
         nav_has_focus = self.focused is self.query_one("#nav")
@@ -107,6 +124,8 @@ class LabScreen(Screen[None]):
 
     @on(OptionList.OptionHighlighted, "#nav")
     def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
+        if event.option_index != event.option_list.highlighted:
+            return  # stale: the list's first highlight on mount, after a resume moved it on
         if event.option.id:
             self.show_step(event.option.id)
 

@@ -59,7 +59,7 @@ class StartScreen(Screen[None]):
     @staticmethod
     def _label(s: SessionSummary) -> str:
         if s.damaged:
-            return f"{s.path}: damaged — {s.damaged}"
+            return f"{s.path}: {s.damaged}"
         return f"{s.date}  {s.members or '(no names)'}  at {s.step}"
 
     @on(Input.Submitted)

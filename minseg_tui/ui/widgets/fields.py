@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import re
 
+from rich.segment import Segment
 from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
 from textual.message import Message
+from textual.strip import Strip
 from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList, Static
 
 from minseg_tui.lab.steps import Field
@@ -17,6 +19,36 @@ from minseg_tui.ui.ports import EntryResult
 def field_id(key: str) -> str:
     """A DOM id for a session key (ids take letters, digits, '-' and '_')."""
     return "f-" + re.sub(r"[^A-Za-z0-9_-]", "_", key)
+
+
+class Choice(RadioButton):
+    """A radio button whose mark says whether it is chosen without colour (NO_COLOR, a
+    monochrome terminal): ● chosen, blank not."""
+
+    def __init__(self, label: str, value: bool = False) -> None:
+        super().__init__(label, value=value)
+        self._mark()
+
+    def watch_value(self) -> None:
+        self._mark()
+        super().watch_value()
+
+    def _mark(self) -> None:
+        self.BUTTON_INNER = "●" if self.value else " "
+
+
+class Ticks(SelectionList[int]):
+    """A list to tick whose marks say which are ticked without colour: X ticked, blank not."""
+
+    def render_line(self, y: int) -> Strip:
+        strip = super().render_line(y)
+        segments = list(strip)
+        meta = segments[1].style.meta if len(segments) > 1 and segments[1].style else {}
+        if "option" not in meta:
+            return strip
+        ticked = self.get_option_at_index(meta["option"]).value in self.selected
+        segments[1] = Segment("X" if ticked else " ", segments[1].style)
+        return Strip(segments, strip.cell_length)
 
 
 class LabInput(Input):
@@ -67,10 +99,10 @@ class FieldRow(Vertical):
             yield Label(self.field.label + (" (tick all that apply)" if self.field.multiple else ""),
                         classes="choice-label")
             if self.field.multiple:
-                yield SelectionList[int](*[(o, k, k in self._chosen) for k, o in enumerate(self.field.options)],
-                                         classes="field-choice")
+                yield Ticks(*[(o, k, k in self._chosen) for k, o in enumerate(self.field.options)],
+                            classes="field-choice")
             else:
-                yield RadioSet(*[RadioButton(o, value=k in self._chosen) for k, o in enumerate(self.field.options)],
+                yield RadioSet(*[Choice(o, value=k in self._chosen) for k, o in enumerate(self.field.options)],
                                classes="field-choice")
         else:
             with Horizontal(classes="field-line"):
