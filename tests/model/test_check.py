@@ -204,3 +204,28 @@ def test_logs_it_cannot_work_on_are_refused_in_words(change, says):
     omega = np.full_like(log.omega, change["omega"]) if "omega" in change else log.omega
     with pytest.raises(ValueError, match=re.escape(says)):
         check(t, u, omega)
+
+
+def test_a_none_finding_says_which_test_the_best_candidate_failed():
+    """The evidence for `none` names the rule that held the best extension back."""
+    import math
+
+    from minseg_tui.model.check.candidates import Effects
+    from minseg_tui.model.check.decide import PENALTY, Verdict
+    from minseg_tui.model.check.evidence import evidence
+    from minseg_tui.model.check.fit import Fit
+
+    def fit(cause, sse):
+        return Fit(cause, 0.043, 2.0, {}, Effects(), sse, 800)
+
+    base, cand = fit("none", 1.0), fit("dead_time", 0.2)
+    u = np.zeros(3)
+    few = evidence("none", base, base, {"dead_time": Verdict(900.0, 0.10, False)}, {"dead_time": cand}, u)
+    assert "removes only 10.0 %" in few and "at least 25 %" in few
+    threshold = PENALTY * math.log(800)
+    weak = evidence("none", base, base, {"dead_time": Verdict(threshold - 1, 0.78, False)},
+                    {"dead_time": cand}, u)
+    assert "removes 78.0 %" in weak and "criterion gain" in weak and "only" not in weak
+    vetoed = evidence("none", base, base, {"dead_time": Verdict(threshold + 100, 0.78, False)},
+                      {"dead_time": cand}, u)
+    assert "plain speed error worse" in vetoed

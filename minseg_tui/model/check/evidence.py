@@ -7,7 +7,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from minseg_tui.model.check.decide import MIN_REDUCTION, Verdict
+from minseg_tui.model.check.decide import MIN_REDUCTION, PENALTY, Verdict
 from minseg_tui.model.check.fit import Fit
 
 
@@ -71,10 +71,19 @@ def evidence(cause: str, ext: Fit, base: Fit, verdicts: dict[str, Verdict], fits
         if best is None:
             return "the first-order model explains the log"
         name, v = best
+        share = f"{100 * max(v.reduction, 0.0):.1f} %"
+        threshold = PENALTY * math.log(max(fits[name].rows, 2)) if name in fits else 0.0
+        if v.reduction < MIN_REDUCTION:
+            why = (f"removes only {share} of the whitened residual, and a cause needs at least "
+                   f"{100 * MIN_REDUCTION:.0f} %")
+        elif v.d <= threshold:
+            why = (f"removes {share} of the whitened residual, but its criterion gain "
+                   f"{v.d:.0f} is below the {threshold:.0f} a cause needs on a log this long")
+        else:
+            why = (f"removes {share} of the whitened residual but makes the plain speed error "
+                   f"worse or is not the effect it claims (a coast no slower than braking)")
         return (f"the first-order model explains the log down to the encoder's noise: the best "
-                f"extension ({name}) removes only {100 * max(v.reduction, 0.0):.1f} % of the "
-                f"whitened residual, and a cause needs at least {100 * MIN_REDUCTION:.0f} % and "
-                f"a clear information-criterion gain")
+                f"extension ({name}) {why}")
     u_max = float(np.max(np.abs(u))) if u.size else 0.0
     v = verdicts[cause]
     rivals = sorted((f.sse_white, n) for n, f in fits.items() if n != cause)
