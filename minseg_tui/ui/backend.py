@@ -78,6 +78,11 @@ def _fmt(v: float | None, unit: str, digits: int = 4) -> str:
     return "—" if v is None or not math.isfinite(v) else format_quantity(v, unit, digits)
 
 
+def _fmt_milli(v: float | None, unit: str, digits: int = 4) -> str:
+    """``v`` in thousandths of ``unit`` (f in mN m s/rad, as the table's column shows it)."""
+    return "—" if v is None or not math.isfinite(v) else f"{v * 1e3:.{digits}g} m{unit}"
+
+
 TABLE_COLUMNS = ("u\nV", "u_ss\nV", "omega_ss\nrad/s", "i_ss\nmA", "k_v\nV s/rad", "f\nmN m s/rad")
 """The table's headers: name over unit (the cells hold bare numbers in these units)."""
 
@@ -347,7 +352,7 @@ class SessionLab:
             if ident is not None:
                 results = (("k_v", Cell(_fmt(ident.k_v, "V s/rad"), _FORMULAS["k_v"])),
                            ("k_a", Cell(_fmt(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
-                           ("f", Cell(_fmt(ident.f, "N m s/rad"), _FORMULAS["f"])))
+                           ("f", Cell(_fmt_milli(ident.f, "N m s/rad"), _FORMULAS["f"])))
             warnings = tuple(n.message for n in self.session.warnings("table")) + tuple(res.problems)
             return TableView(TABLE_COLUMNS, tuple(rows), results,
                              tuple(dict.fromkeys(warnings)), self._compare("table"))
