@@ -16,8 +16,7 @@ from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import status_text
 from tests.ui.conftest import settle
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import goto, record_step_run, start, type_in
-from tests.ui.test_snapshots import TABLE
+from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, start, type_in
 
 
 async def test_new_session_lands_in_the_lab_and_saves(quiet, tmp_path):
@@ -146,8 +145,7 @@ async def test_resume_on_a_step_with_a_panel(quiet, step_id):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
-        for key, text in TABLE.items():
-            app.lab.enter(key, text)
+        enter_all(app, TABLE)
         await goto(pilot, step_id)
     app.lab.close()
     app2 = quiet()
@@ -166,8 +164,7 @@ async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quie
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
-        for key, text in TABLE.items():
-            app.lab.enter(key, text)
+        enter_all(app, TABLE)
         record_step_run(app.lab.session)
         await goto(pilot, "task2")
         assert not app.screen.active_bindings["f9"].binding.show  # not in the footer where it does nothing
@@ -195,8 +192,7 @@ async def test_table_fits_80_columns_and_f7_gives_the_row_formula_with_its_numbe
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
-        for key, text in TABLE.items():
-            app.lab.enter(key, text)
+        enter_all(app, TABLE)
         await goto(pilot, "table")
         await settle(pilot)
         table = app.screen.query_one("#table", DataTable)
@@ -217,8 +213,7 @@ async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
-        for key, text in TABLE.items():
-            app.lab.enter(key, text)
+        enter_all(app, TABLE)
         first, second = record_step_run(app.lab.session, seed=5), record_step_run(app.lab.session, seed=6)
         texts = [t for t, _, _ in StepCommands(app.screen)._entries()]
         assert f"Use run {first} for Tasks 11-15" in texts and "Use the latest run for Tasks 11-15" in texts
@@ -242,8 +237,7 @@ async def test_going_back_and_changing_r_recomputes_the_table(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
-        for key, text in TABLE.items():
-            app.lab.enter(key, text)
+        enter_all(app, TABLE)
         await goto(pilot, "table")
         await settle(pilot)
         assert str(app.screen.query_one("#table", DataTable).get_cell_at((0, 4))) == "0.6134"

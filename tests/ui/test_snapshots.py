@@ -7,13 +7,10 @@ import pytest
 
 from tests.ui.conftest import quiet_app, settle
 from tests.ui.fakes import METER, frozen_stream
-from tests.ui.helpers import record_step_run
+from tests.ui.helpers import TABLE, enter_all, record_step_run
 
 SIZES = [(80, 24), (120, 40)]
 
-TABLE = {"R": "5.3", "u_ss@2.5": "2.05", "omega_ss@2.5": "3.1", "i_ss@2.5": "28 mA",
-         "u_ss@3.5": "3.04", "omega_ss@3.5": "4.9", "i_ss@3.5": "32 mA",
-         "u_ss@4.5": "4.02", "omega_ss@4.5": "6.7", "i_ss@4.5": "36 mA"}
 
 
 def _to(step_id: str, entries: dict[str, str] | None = None, run: bool = False, live: bool = False):
@@ -21,8 +18,7 @@ def _to(step_id: str, entries: dict[str, str] | None = None, run: bool = False, 
         app = pilot.app
         await pilot.press(*"Ada, Bo", "enter")
         await pilot.pause()
-        for key, text in (entries or {}).items():
-            app.lab.enter(key, text)
+        enter_all(app, entries or {})
         if run:
             record_step_run(app.lab.session)
         if live:
