@@ -21,6 +21,7 @@ run: $(STAMP)
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check minseg_tui tests benchmarks
+	$(VENV)/bin/ruff format --check minseg_tui tests benchmarks
 	$(VENV)/bin/lint-imports
 
 pytest: $(STAMP)

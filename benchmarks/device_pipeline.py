@@ -16,7 +16,11 @@ def lines(n: int) -> list[bytes]:
     count = np.cumsum(rng.integers(0, 5, n))
     out = []
     for k in range(n):
-        out.append(P.format_line(P.SampleLine(k, (k * 2000 + 4294000000) % 2**32, int(count[k]), 4500)).encode())
+        out.append(
+            P.format_line(
+                P.SampleLine(k, (k * 2000 + 4294000000) % 2**32, int(count[k]), 4500)
+            ).encode()
+        )
     return out
 
 

@@ -53,17 +53,21 @@ def confusion(seeds: int) -> None:
     for i, n in enumerate(names):
         print(f"{n:>17} " + " ".join(f"{v:9d}" for v in m[i]))
     acc = np.trace(m) / m.sum()
-    print(f"accuracy {100 * acc:.1f} %   false alarms on clean logs: {m[0, 1:].sum()} of {seeds}"
-          f"   ({el / m.sum():.2f} s per log in process)")
+    print(
+        f"accuracy {100 * acc:.1f} %   false alarms on clean logs: {m[0, 1:].sum()} of {seeds}"
+        f"   ({el / m.sum():.2f} s per log in process)"
+    )
     print("\nParameter errors (correctly named logs): |estimate - truth|")
     for c, errs in errors.items():
         if not errs:
             continue
         p, lo, hi = PARAM_RANGES[c]
         e, q = np.asarray(errs), np.asarray(rel[c])
-        print(f"  {c:>17} {p:>7} (range {lo:g}-{hi:g}): median {np.median(e):.4g}, 90th pct "
-              f"{np.percentile(e, 90):.4g}   relative: median {100 * np.median(q):.1f} %, "
-              f"90th pct {100 * np.percentile(q, 90):.1f} %")
+        print(
+            f"  {c:>17} {p:>7} (range {lo:g}-{hi:g}): median {np.median(e):.4g}, 90th pct "
+            f"{np.percentile(e, 90):.4g}   relative: median {100 * np.median(q):.1f} %, "
+            f"90th pct {100 * np.percentile(q, 90):.1f} %"
+        )
 
 
 def _t63(t: np.ndarray, u: np.ndarray, y: np.ndarray) -> float:
@@ -103,8 +107,9 @@ def cramer_rao(runs: int) -> None:
             return K_ * angle(st, t, T_, Effects())
 
         dT, dK = 1e-6, 1e-6
-        J = np.column_stack(((th(T + dT, K) - th(T - dT, K)) / (2 * dT),
-                             (th(T, K + dK) - th(T, K - dK)) / (2 * dK)))
+        J = np.column_stack(
+            ((th(T + dT, K) - th(T - dT, K)) / (2 * dT), (th(T, K + dK) - th(T, K - dK)) / (2 * dK))
+        )
         w = log.omega_true
         var = (2 * math.pi / 720) ** 2 / 12 + w**2 * (300e-6) ** 2 / 12
         F = (J / var[:, None]).T @ J
@@ -113,18 +118,26 @@ def cramer_rao(runs: int) -> None:
     bound = float(np.median(crb))
     print(f"\nT on {runs} clean logs (true T = {0.04277:.5f} s):")
     print(f"  least squares: mean {np.mean(ts_):.5f} s, spread (sd) {sd * 1e3:.3f} ms")
-    print(f"  Cramer-Rao bound (white noise): {bound * 1e3:.3f} ms  -> ratio {sd / bound:.2f} "
-          "(the baseline fit of the model check; the Task 12 estimator and its 1.2x target: "
-          "benchmarks/t_estimate.py)")
-    print(f"  63 % reading:  mean {np.mean(t63):.5f} s, spread (sd) {np.std(t63, ddof=1) * 1e3:.3f} ms")
+    print(
+        f"  Cramer-Rao bound (white noise): {bound * 1e3:.3f} ms  -> ratio {sd / bound:.2f} "
+        "(the baseline fit of the model check; the Task 12 estimator and its 1.2x target: "
+        "benchmarks/t_estimate.py)"
+    )
+    print(
+        f"  63 % reading:  mean {np.mean(t63):.5f} s, spread (sd) {np.std(t63, ddof=1) * 1e3:.3f} ms"
+    )
 
 
 def _cli_time(path: Path, runs: int) -> list[float]:
     out = []
     for _ in range(runs):
         t0 = time.perf_counter()
-        subprocess.run([sys.executable, "-m", "minseg_tui", "analyze", str(path)], check=True,
-                       stdout=subprocess.DEVNULL, cwd=ROOT)
+        subprocess.run(
+            [sys.executable, "-m", "minseg_tui", "analyze", str(path)],
+            check=True,
+            stdout=subprocess.DEVNULL,
+            cwd=ROOT,
+        )
         out.append(time.perf_counter() - t0)
     return out
 
@@ -135,8 +148,10 @@ def timings(skip_hour: bool) -> None:
         p = Path(d) / "20s.csv"
         write_step_log(p, StepLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count}))
         times = _cli_time(p, 7)
-        print(f"\n20 s log ({log.t.size} rows), `python -m minseg_tui analyze`, Python start included:"
-              f" median {np.median(times):.2f} s, max {max(times):.2f} s (target < 1 s)")
+        print(
+            f"\n20 s log ({log.t.size} rows), `python -m minseg_tui analyze`, Python start included:"
+            f" median {np.median(times):.2f} s, max {max(times):.2f} s (target < 1 s)"
+        )
         if skip_hour:
             return
         t0 = time.perf_counter()
@@ -148,9 +163,11 @@ def timings(skip_hour: bool) -> None:
         p = Path(d) / "hour.csv"
         write_step_log(p, StepLog(t=big.t, u=big.u, omega=big.omega, extra={"count": big.count}))
         cli = _cli_time(p, 1)[0]
-        print(f"one-hour log at 40 Hz ({big.t.size} rows; generated in {gen:.1f} s): check() "
-              f"{inproc:.2f} s in process, the CLI {cli:.2f} s with start and CSV reading "
-              f"(target < 30 s); finding {r.finding.cause}, delay {r.extended.params.get('delay', 0) * 1e3:.1f} ms")
+        print(
+            f"one-hour log at 40 Hz ({big.t.size} rows; generated in {gen:.1f} s): check() "
+            f"{inproc:.2f} s in process, the CLI {cli:.2f} s with start and CSV reading "
+            f"(target < 30 s); finding {r.finding.cause}, delay {r.extended.params.get('delay', 0) * 1e3:.1f} ms"
+        )
 
 
 def main() -> None:

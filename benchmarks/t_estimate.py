@@ -82,8 +82,12 @@ def main() -> int:
     T_ls, T_63, sig, inside, crb_unit = [], [], [], [], []
     for seed in range(SEEDS):
         rec = record(params, cmd, ts=TS, seed=seed, jitter_us=JITTER_US)
-        log = StepLog(t=rec.t, u=rec.u_A, omega=timestamp_velocity(rec.t, rec.count),
-                      extra={"u_req": rec.u_req, "count": rec.count, "t_us": rec.t_us})
+        log = StepLog(
+            t=rec.t,
+            u=rec.u_A,
+            omega=timestamp_velocity(rec.t, rec.count),
+            extra={"u_req": rec.u_req, "count": rec.count, "t_us": rec.t_us},
+        )
         fit = fit_time_constant(log)
         assert fit is not None
         T_ls.append(fit.T)
@@ -100,19 +104,33 @@ def main() -> int:
     crb_q = math.sqrt(float(np.mean(crb_unit))) * q / math.sqrt(12)
     ratio = float(np.std(T_ls, ddof=1)) / crb
 
-    print(f"T estimate over {SEEDS} clean seeded logs: Ts = {TS} s, jitter <= {JITTER_US / 1e3:g} ms, "
-          f"5 rising steps 0 -> {HIGH} V each, true T = {T_true * 1e3:.3f} ms ({elapsed:.1f} s)")
-    print(f"noise on the angle: measured {sigma * 1e3:.3f} mrad (rounding alone q/sqrt(12) = {q / math.sqrt(12) * 1e3:.3f} mrad)")
-    print(f"least squares : mean {T_ls.mean() * 1e3:.3f} ms, bias {(T_ls.mean() - T_true) * 1e3:+.3f} ms, "
-          f"std {np.std(T_ls, ddof=1) * 1e3:.4f} ms")
-    print(f"Cramer-Rao    : sqrt(CRB) {crb * 1e3:.4f} ms at the measured noise ({crb_q * 1e3:.4f} ms at q^2/12)")
-    print(f"LS spread / CRB = {ratio:.3f}  (target <= {TARGET}: {'met' if ratio <= TARGET else 'MISSED'})")
+    print(
+        f"T estimate over {SEEDS} clean seeded logs: Ts = {TS} s, jitter <= {JITTER_US / 1e3:g} ms, "
+        f"5 rising steps 0 -> {HIGH} V each, true T = {T_true * 1e3:.3f} ms ({elapsed:.1f} s)"
+    )
+    print(
+        f"noise on the angle: measured {sigma * 1e3:.3f} mrad (rounding alone q/sqrt(12) = {q / math.sqrt(12) * 1e3:.3f} mrad)"
+    )
+    print(
+        f"least squares : mean {T_ls.mean() * 1e3:.3f} ms, bias {(T_ls.mean() - T_true) * 1e3:+.3f} ms, "
+        f"std {np.std(T_ls, ddof=1) * 1e3:.4f} ms"
+    )
+    print(
+        f"Cramer-Rao    : sqrt(CRB) {crb * 1e3:.4f} ms at the measured noise ({crb_q * 1e3:.4f} ms at q^2/12)"
+    )
+    print(
+        f"LS spread / CRB = {ratio:.3f}  (target <= {TARGET}: {'met' if ratio <= TARGET else 'MISSED'})"
+    )
     print(f"95 % interval coverage: {np.mean(inside) * 100:.1f} % of logs contain the true T")
-    print(f"63 % reading  : mean {T_63.mean() * 1e3:.3f} ms, bias {(T_63.mean() - T_true) * 1e3:+.3f} ms, "
-          f"std {np.std(T_63, ddof=1) * 1e3:.4f} ms ({np.std(T_63, ddof=1) / crb:.1f} x the CRB)")
+    print(
+        f"63 % reading  : mean {T_63.mean() * 1e3:.3f} ms, bias {(T_63.mean() - T_true) * 1e3:+.3f} ms, "
+        f"std {np.std(T_63, ddof=1) * 1e3:.4f} ms ({np.std(T_63, ddof=1) / crb:.1f} x the CRB)"
+    )
     if ratio > TARGET:
-        print("target missed: see the docstring; the rounding noise is not white when the wheel moves "
-              "an almost whole number of counts per sample.")
+        print(
+            "target missed: see the docstring; the rounding noise is not white when the wheel moves "
+            "an almost whole number of counts per sample."
+        )
     return 0
 
 

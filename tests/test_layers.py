@@ -24,5 +24,7 @@ def test_core_imports_without_textual():
         "assert not any(k == 'textual' or k.startswith('textual.') for k in sys.modules), 'textual imported'\n"
         "print('ok')\n"
     )
-    out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=120)
+    out = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=120
+    )
     assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr

@@ -17,8 +17,14 @@ from collections.abc import Sequence
 from minseg_tui.errors import InputError, MinsegError
 
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
-    "identify": ("minseg_tui.cli.identify", "Tasks 6-15 from a table of steady-state readings (and a step log)"),
-    "analyze": ("minseg_tui.cli.analyze", "model check: what the first-order model gets wrong in a step log"),
+    "identify": (
+        "minseg_tui.cli.identify",
+        "Tasks 6-15 from a table of steady-state readings (and a step log)",
+    ),
+    "analyze": (
+        "minseg_tui.cli.analyze",
+        "model check: what the first-order model gets wrong in a step log",
+    ),
     "ports": ("minseg_tui.cli.ports", "list serial ports and say which looks like a MinSeg"),
     "sim": ("minseg_tui.cli.sim", "run a virtual MinSeg on a pseudo-terminal"),
     "report": ("minseg_tui.cli.report", "write a session's report (Markdown, HTML, CSV)"),

@@ -22,10 +22,17 @@ from minseg_tui.model.steplog import problem
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The subcommand's arguments."""
-    parser.add_argument("log", metavar="LOG.csv", help="step log: columns t (s), u (V), omega (rad/s)")
-    parser.add_argument("--json", action="store_true", help="print one JSON object instead of the report")
-    parser.add_argument("--predictions", metavar="OUT.csv",
-                        help="write t,omega,baseline,extended (s, rad/s) for every row")
+    parser.add_argument(
+        "log", metavar="LOG.csv", help="step log: columns t (s), u (V), omega (rad/s)"
+    )
+    parser.add_argument(
+        "--json", action="store_true", help="print one JSON object instead of the report"
+    )
+    parser.add_argument(
+        "--predictions",
+        metavar="OUT.csv",
+        help="write t,omega,baseline,extended (s, rad/s) for every row",
+    )
 
 
 def _sample_period(meta: dict[str, str]) -> float | None:
@@ -62,7 +69,9 @@ def run(args: argparse.Namespace) -> int:
         try:
             write_predictions(args.predictions, result)
         except OSError as exc:
-            raise InputError(args.predictions, None, f"cannot write the predictions: {exc.strerror}") from exc
+            raise InputError(
+                args.predictions, None, f"cannot write the predictions: {exc.strerror}"
+            ) from exc
     if args.json:
         print(json.dumps(result.to_dict(), indent=2))
     else:

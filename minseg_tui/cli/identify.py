@@ -23,10 +23,27 @@ def _ohms(text: str) -> float:
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Arguments of the identify subcommand."""
-    parser.add_argument("table", metavar="TABLE.csv", help="steady-state readings: u_req,u_ss,omega_ss,i_ss (V, V, rad/s, mA)")
-    parser.add_argument("--R", dest="R", type=_ohms, required=True, metavar="OHMS", help="motor resistance measured in Task 2, ohm")
-    parser.add_argument("--step", metavar="LOG.csv", help="step log (t,u,omega,...) for K, T, J and the model (Tasks 11-15)")
-    parser.add_argument("--json", action="store_true", help="print one JSON object instead of the report")
+    parser.add_argument(
+        "table",
+        metavar="TABLE.csv",
+        help="steady-state readings: u_req,u_ss,omega_ss,i_ss (V, V, rad/s, mA)",
+    )
+    parser.add_argument(
+        "--R",
+        dest="R",
+        type=_ohms,
+        required=True,
+        metavar="OHMS",
+        help="motor resistance measured in Task 2, ohm",
+    )
+    parser.add_argument(
+        "--step",
+        metavar="LOG.csv",
+        help="step log (t,u,omega,...) for K, T, J and the model (Tasks 11-15)",
+    )
+    parser.add_argument(
+        "--json", action="store_true", help="print one JSON object instead of the report"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -50,8 +67,17 @@ def render(result: Identification) -> str:
     """The human report: the table of Tasks 4-9, then Tasks 11-15, then what the numbers show."""
     out = [f"R = {_g(result.R)} ohm (Task 2)", ""]
     head = ("u_req V", "u_ss V", "omega_ss rad/s", "i_ss mA", "k_v V s/rad", "f N m s/rad")
-    body = [(_g(r.reading.u_req), _g(r.reading.u_ss), _g(r.reading.omega_ss), _g(r.reading.i_ss),
-             _g(r.k_v), _g(r.f, 3)) for r in result.rows]
+    body = [
+        (
+            _g(r.reading.u_req),
+            _g(r.reading.u_ss),
+            _g(r.reading.omega_ss),
+            _g(r.reading.i_ss),
+            _g(r.k_v),
+            _g(r.f, 3),
+        )
+        for r in result.rows
+    ]
     widths = [max(len(h), *(len(b[i]) for b in body)) for i, h in enumerate(head)]
     out.append("  ".join(h.rjust(w) for h, w in zip(head, widths, strict=True)))
     out += ["  ".join(c.rjust(w) for c, w in zip(b, widths, strict=True)) for b in body]
@@ -63,9 +89,17 @@ def render(result: Identification) -> str:
     ]
     s = result.step
     if s is not None:
-        how = {"row": "the table's row", "interpolated": "interpolated in the table",
-               "extrapolated": "extrapolated from the table", "log": "the log's applied voltage"}[s.u_ss_how]
-        t63 = f"{s.T_63 * 1e3:.1f} ms" if s.T_63 is not None else "not read (the speed never reached 63 %)"
+        how = {
+            "row": "the table's row",
+            "interpolated": "interpolated in the table",
+            "extrapolated": "extrapolated from the table",
+            "log": "the log's applied voltage",
+        }[s.u_ss_how]
+        t63 = (
+            f"{s.T_63 * 1e3:.1f} ms"
+            if s.T_63 is not None
+            else "not read (the speed never reached 63 %)"
+        )
         out += [
             "",
             f"Step log: {len(s.steps)} rising step(s); angle from {s.fit.angle_source}, time from {s.fit.time_source}",

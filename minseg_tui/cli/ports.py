@@ -32,4 +32,3 @@ def run(args: argparse.Namespace) -> int:
     else:
         print(f"* = what `auto` opens: {best.device}")
     return 0
-

@@ -17,9 +17,16 @@ from minseg_tui.report.write import write_report
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Arguments of `minseg-tui report`."""
-    parser.add_argument("session", metavar="SESSION", help="a session folder, or a session id under --sessions")
-    parser.add_argument("--sessions", metavar="DIR", type=Path, default=Path("sessions"),
-                        help="folder holding the sessions (default: ./sessions)")
+    parser.add_argument(
+        "session", metavar="SESSION", help="a session folder, or a session id under --sessions"
+    )
+    parser.add_argument(
+        "--sessions",
+        metavar="DIR",
+        type=Path,
+        default=Path("sessions"),
+        help="folder holding the sessions (default: ./sessions)",
+    )
 
 
 def run(args: argparse.Namespace) -> int:

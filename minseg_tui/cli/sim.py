@@ -22,7 +22,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         if opt.kind is bool:
             parser.add_argument(flag, action="store_true", default=None, help=opt.help)
         else:
-            parser.add_argument(flag, type=str, default=None, metavar=opt.kind.__name__.upper(), help=opt.help)
+            parser.add_argument(
+                flag, type=str, default=None, metavar=opt.kind.__name__.upper(), help=opt.help
+            )
     parser.add_argument("--link", metavar="PATH", help="also make a symlink PATH to the device")
 
 
@@ -36,7 +38,9 @@ def run(args: argparse.Namespace) -> int:
     try:
         server = PtyServer(VirtualBoard(settings), link_path=args.link)
     except OSError as exc:
-        raise InputError(args.link or "pty", None, f"cannot make the device ({exc.strerror})") from None
+        raise InputError(
+            args.link or "pty", None, f"cannot make the device ({exc.strerror})"
+        ) from None
     print(server.path, flush=True)
     if args.link:
         print(f"(symlink to {server.slave_name})", file=sys.stderr, flush=True)

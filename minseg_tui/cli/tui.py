@@ -11,9 +11,15 @@ from minseg_tui.errors import InputError
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of the TUI."""
     group = parser.add_mutually_exclusive_group()
-    group.add_argument("--port", help="serial port of the board (or a pyserial URL); default: find it")
-    group.add_argument("--sim", action="store_true", help="use the virtual MinSeg even if a board is plugged in")
-    parser.add_argument("--sessions", default="sessions", help="folder of the sessions (default: sessions)")
+    group.add_argument(
+        "--port", help="serial port of the board (or a pyserial URL); default: find it"
+    )
+    group.add_argument(
+        "--sim", action="store_true", help="use the virtual MinSeg even if a board is plugged in"
+    )
+    parser.add_argument(
+        "--sessions", default="sessions", help="folder of the sessions (default: sessions)"
+    )
 
 
 def run(args: argparse.Namespace) -> int:

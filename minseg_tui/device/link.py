@@ -51,7 +51,15 @@ from minseg_tui.model.plant import MeterReading
 
 U32 = 2**32
 EVENT_KINDS = (
-    "connected", "disconnected", "silent", "alive", "watchdog", "step", "stepdone", "boot", "error",
+    "connected",
+    "disconnected",
+    "silent",
+    "alive",
+    "watchdog",
+    "step",
+    "stepdone",
+    "boot",
+    "error",
 )
 FLASH_HINT = "flash the firmware shipped with this minseg-tui (make -C firmware upload)"
 
@@ -93,7 +101,9 @@ class SampleBatch:
             return SampleBatch.concat([])
         a = np.array(rows, dtype=np.float64)
         ints = np.array([r[:5] for r in rows], dtype=np.int64)
-        return SampleBatch(ints[:, 0], ints[:, 1], ints[:, 2], ints[:, 3] / 1000.0, ints[:, 4], a[:, 5])
+        return SampleBatch(
+            ints[:, 0], ints[:, 1], ints[:, 2], ints[:, 3] / 1000.0, ints[:, 4], a[:, 5]
+        )
 
     @staticmethod
     def concat(batches: list[SampleBatch]) -> SampleBatch:
@@ -173,7 +183,9 @@ def lock_path(port: str) -> str:
     """The lock file for a port (in XDG_RUNTIME_DIR or the temp dir)."""
     real = port if "://" in port else os.path.realpath(port)
     base = os.environ.get("XDG_RUNTIME_DIR") or tempfile.gettempdir()
-    return os.path.join(base, "minseg-tui-" + re.sub(r"[^A-Za-z0-9]+", "_", real).strip("_") + ".lock")
+    return os.path.join(
+        base, "minseg-tui-" + re.sub(r"[^A-Za-z0-9]+", "_", real).strip("_") + ".lock"
+    )
 
 
 def _holder(port: str) -> str:
@@ -255,8 +267,13 @@ class Link:
             raise
         self._ser = ser
         self._new_epoch()
-        self._emit("connected", f"{self.port}: {self.ident.board} {self.ident.fw}, protocol {self.ident.proto}")
-        self._thread = threading.Thread(target=self._run, name=f"minseg-link {self.port}", daemon=True)
+        self._emit(
+            "connected",
+            f"{self.port}: {self.ident.board} {self.ident.fw}, protocol {self.ident.proto}",
+        )
+        self._thread = threading.Thread(
+            target=self._run, name=f"minseg-link {self.port}", daemon=True
+        )
         self._thread.start()
         return self.ident
 
@@ -363,7 +380,9 @@ class Link:
         for _attempt in range(5):
             ser.write(P.encode(P.Identify()))
             self._last_tx = self._clock()
-            got = self._read_lines(ser, self._clock() + self.reply_timeout_s, lambda s: s.startswith("$ID,"))
+            got = self._read_lines(
+                ser, self._clock() + self.reply_timeout_s, lambda s: s.startswith("$ID,")
+            )
             if got is None:
                 continue
             self._check_version(got)
@@ -391,7 +410,9 @@ class Link:
             try:
                 cmd = P.parse_command(cmd)
             except P.ProtocolError as exc:
-                raise InputError("command", None, f"not a MinSeg command: {cmd!r} ({exc})") from None
+                raise InputError(
+                    "command", None, f"not a MinSeg command: {cmd!r} ({exc})"
+                ) from None
         line = P.encode(cmd)
         name = line[1:].split(b"*")[0].split(b",")[0].decode()
         waiter = _Waiter("ID" if name == "ID" else name)
@@ -426,7 +447,9 @@ class Link:
     def _ok(self, cmd: P.Message) -> P.Ok:
         reply = self.command(cmd)
         if isinstance(reply, P.Err):
-            raise DeviceError(f"{self.port}: the board refused it: {reply.code} {reply.detail}".rstrip())
+            raise DeviceError(
+                f"{self.port}: the board refused it: {reply.code} {reply.detail}".rstrip()
+            )
         assert isinstance(reply, P.Ok)
         return reply
 
@@ -436,7 +459,9 @@ class Link:
 
     def step(self, low: float, high: float, half_period: float, periods: int) -> P.Ok:
         """Board-timed square wave: levels in V, half period in s, number of periods."""
-        return self._ok(P.Step(round(low * 1000), round(high * 1000), round(half_period * 1000), periods))
+        return self._ok(
+            P.Step(round(low * 1000), round(high * 1000), round(half_period * 1000), periods)
+        )
 
     def stop(self) -> P.Ok:
         """Zero command, abort a step sequence."""
@@ -455,7 +480,7 @@ class Link:
         return int(self._ok(P.SetSupply(round(v_supply * 1000))).values[0]) / 1000.0
 
     def set_zero_mode(self, mode: str) -> P.Ok:
-        """"BRAKE" or "COAST" at zero command."""
+        """ "BRAKE" or "COAST" at zero command."""
         return self._ok(P.SetZeroMode(mode.upper()))
 
     def set_stream(self, on: bool) -> P.Ok:
@@ -530,7 +555,9 @@ class Link:
                     skipping = True
             if now - self._last_rx > self.silence_s and not self._silent:
                 self._silent = True
-                self._emit("silent", f"{self.port}: the board has not answered for {self.silence_s:g} s")
+                self._emit(
+                    "silent", f"{self.port}: the board has not answered for {self.silence_s:g} s"
+                )
 
     def _on_line(self, raw: bytes) -> None:
         self.stats.lines += 1

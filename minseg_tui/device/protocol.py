@@ -106,8 +106,6 @@ FIELD_TYPES: dict[str, tuple[Callable[[str], object], Callable[[object], str]]] 
 }
 
 
-
-
 # -- the lines --------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Boot:
@@ -255,9 +253,26 @@ class ReadMeter:
 
 
 Message = (
-    Boot | Ident | SampleLine | Ok | Err | EvWatchdog | EvStep | EvStepDone | Meter
-    | Identify | Ping | SetVoltage | Step | Stop | SetPeriod | Zero | SetSupply
-    | SetZeroMode | SetStream | ReadMeter
+    Boot
+    | Ident
+    | SampleLine
+    | Ok
+    | Err
+    | EvWatchdog
+    | EvStep
+    | EvStepDone
+    | Meter
+    | Identify
+    | Ping
+    | SetVoltage
+    | Step
+    | Stop
+    | SetPeriod
+    | Zero
+    | SetSupply
+    | SetZeroMode
+    | SetStream
+    | ReadMeter
 )
 
 

@@ -135,7 +135,9 @@ def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSett
             raise ValueError(f"unknown virtual board option {name!r} (known: {', '.join(OPTIONS)})")
         try:
             if opt.kind is bool:
-                v: object = raw if isinstance(raw, bool) else str(raw).lower() in ("1", "true", "yes", "")
+                v: object = (
+                    raw if isinstance(raw, bool) else str(raw).lower() in ("1", "true", "yes", "")
+                )
             else:
                 v = opt.kind(raw)
         except (TypeError, ValueError):
@@ -150,7 +152,9 @@ def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSett
     if "k_v" in motor and "k_a" not in motor:
         motor["k_a"] = KA_OVER_KV * float(motor["k_v"])  # type: ignore[arg-type]
     base = PlantParams()
-    plant_kw = {k.split(".")[1]: v for k, v in flat.items() if k.startswith("params.") and "motor" not in k}
+    plant_kw = {
+        k.split(".")[1]: v for k, v in flat.items() if k.startswith("params.") and "motor" not in k
+    }
     params = dataclasses.replace(base, motor=dataclasses.replace(base.motor, **motor), **plant_kw)
     faults = Faults(**{k.split(".")[1]: v for k, v in flat.items() if k.startswith("faults.")})
     top = {k: v for k, v in flat.items() if "." not in k}
@@ -334,7 +338,9 @@ class VirtualBoard:
     def _drive(self, u_mV: int) -> None:
         """Duty = |u| / V_supply (setting), clamped to 1; the bridge gives duty x true supply."""
         duty = min(abs(u_mV) / self.sup_mV, 1.0)
-        self.plant.set_command(math.copysign(duty * self.plant.params.v_supply, u_mV) if u_mV else 0.0)
+        self.plant.set_command(
+            math.copysign(duty * self.plant.params.v_supply, u_mV) if u_mV else 0.0
+        )
 
     def _set_zero_mode(self, mode: str) -> None:
         self.zero_mode = mode
@@ -416,8 +422,13 @@ class VirtualBoard:
 
     def _cmd_id(self, _c: P.Identify) -> P.Message:
         return P.Ident(
-            FIRMWARE, self.settings.proto, BOARD, self.plant.params.cpr, self.period_us,
-            self.sup_mV, self.zero_mode,
+            FIRMWARE,
+            self.settings.proto,
+            BOARD,
+            self.plant.params.cpr,
+            self.period_us,
+            self.sup_mV,
+            self.zero_mode,
         )
 
     def _cmd_ping(self, _c: P.Ping) -> P.Message:
@@ -552,6 +563,15 @@ def forget_board(name: str) -> None:
 
 
 __all__ = [
-    "BOARD", "FIRMWARE", "Faults", "MotorParams", "OPTIONS", "RealTime", "VirtualBoard",
-    "VirtualSettings", "forget_board", "named_board", "settings_from",
+    "BOARD",
+    "FIRMWARE",
+    "Faults",
+    "MotorParams",
+    "OPTIONS",
+    "RealTime",
+    "VirtualBoard",
+    "VirtualSettings",
+    "forget_board",
+    "named_board",
+    "settings_from",
 ]

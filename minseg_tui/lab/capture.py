@@ -41,8 +41,12 @@ class Capture:
     def from_json(cls, d: dict[str, object]) -> Capture:
         """Inverse of :meth:`to_json`."""
         return cls(
-            omega_ss=float(d["omega_ss"]), spread=float(d["spread"]), t0=float(d["t0"]),  # type: ignore[arg-type]
-            t1=float(d["t1"]), n=int(d["n"]), velocity=str(d.get("velocity", "timestamps")),  # type: ignore[arg-type]
+            omega_ss=float(d["omega_ss"]),
+            spread=float(d["spread"]),
+            t0=float(d["t0"]),  # type: ignore[arg-type]
+            t1=float(d["t1"]),
+            n=int(d["n"]),
+            velocity=str(d.get("velocity", "timestamps")),  # type: ignore[arg-type]
         )
 
 
@@ -69,7 +73,9 @@ def _window(t: ArrayLike, omega: ArrayLike, window: float) -> tuple[np.ndarray, 
     return tt[keep], ww[keep], bool(tt[-1] - tt[0] >= window)
 
 
-def steadiness(t: ArrayLike, omega: ArrayLike, window: float = DEFAULT_WINDOW, tol: float = DRIFT_TOL) -> Steadiness:
+def steadiness(
+    t: ArrayLike, omega: ArrayLike, window: float = DEFAULT_WINDOW, tol: float = DRIFT_TOL
+) -> Steadiness:
     """Whether the last ``window`` s of the speed are steady: the fitted line's change over the
     window is below ``tol`` of the mean speed (and below 0.1 rad/s near standstill)."""
     tt, ww, full = _window(t, omega, window)
@@ -83,13 +89,19 @@ def steadiness(t: ArrayLike, omega: ArrayLike, window: float = DEFAULT_WINDOW, t
     return Steadiness(settled, mean, spread, drift, full)
 
 
-def capture(t: ArrayLike, omega: ArrayLike, window: float = DEFAULT_WINDOW, velocity: str = "timestamps") -> Capture:
+def capture(
+    t: ArrayLike, omega: ArrayLike, window: float = DEFAULT_WINDOW, velocity: str = "timestamps"
+) -> Capture:
     """omega_ss as the mean over the last ``window`` s, with its spread; ValueError if fewer
     than 3 samples."""
     tt, ww, _ = _window(t, omega, window)
     if tt.size < 3:
         raise ValueError("fewer than 3 samples to capture from")
     return Capture(
-        omega_ss=float(np.mean(ww)), spread=float(np.std(ww, ddof=1)), t0=float(tt[0]), t1=float(tt[-1]),
-        n=int(tt.size), velocity=velocity,
+        omega_ss=float(np.mean(ww)),
+        spread=float(np.std(ww, ddof=1)),
+        t0=float(tt[0]),
+        t1=float(tt[-1]),
+        n=int(tt.size),
+        velocity=velocity,
     )

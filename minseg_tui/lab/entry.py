@@ -66,7 +66,12 @@ _UNITS: tuple[Unit, ...] = (
     Unit("s", "time", 1.0, ("s", "sec", "secs", "second", "seconds")),
     Unit("ms", "time", 1e-3, ("ms", "msec")),
     Unit("min", "time", 60.0, ("min", "mins", "minute", "minutes")),
-    Unit("rad/s/V", "gain", 1.0, ("rad/s/v", "rad/(sv)", "rad/(vs)", "(rad/s)/v", "rad/vs", "rads^-1v^-1")),
+    Unit(
+        "rad/s/V",
+        "gain",
+        1.0,
+        ("rad/s/v", "rad/(sv)", "rad/(vs)", "(rad/s)/v", "rad/vs", "rads^-1v^-1"),
+    ),
     Unit("V s/rad", "back-emf constant", 1.0, ("vs/rad", "v/(rad/s)", "v/rad/s", "vsrad^-1")),
     Unit("N m/A", "torque constant", 1.0, ("nm/a", "n/a*m", "nma^-1")),
     Unit("N m s/rad", "friction coefficient", 1.0, ("nms/rad", "nm/(rad/s)", "nmsrad^-1")),
@@ -146,11 +151,24 @@ def describe(unit: str) -> str:
 def example(unit: str) -> str:
     """A typical entry for a field in ``unit``, for messages (e.g. ``47 mA``)."""
     samples = {
-        "V": "4.1 V", "mV": "4100 mV", "A": "0.047 A", "mA": "47 mA", "Ω": "5.2 Ω",
-        "rad/s": "6.8 rad/s", "s": "0.25 s", "ms": "250 ms", "min": "3.5 min",
-        "rad/s/V": "1.9 rad/s/V", "V s/rad": "0.5 V s/rad", "N m/A": "0.32 N m/A",
-        "N m s/rad": "0.0006 N m s/rad", "kg m^2": "0.0013 kg m^2", "°C": "250 °C",
-        "°C/W": "0.25 °C/W", "%": "50 %", "": "0.5",
+        "V": "4.1 V",
+        "mV": "4100 mV",
+        "A": "0.047 A",
+        "mA": "47 mA",
+        "Ω": "5.2 Ω",
+        "rad/s": "6.8 rad/s",
+        "s": "0.25 s",
+        "ms": "250 ms",
+        "min": "3.5 min",
+        "rad/s/V": "1.9 rad/s/V",
+        "V s/rad": "0.5 V s/rad",
+        "N m/A": "0.32 N m/A",
+        "N m s/rad": "0.0006 N m s/rad",
+        "kg m^2": "0.0013 kg m^2",
+        "°C": "250 °C",
+        "°C/W": "0.25 °C/W",
+        "%": "50 %",
+        "": "0.5",
     }
     return samples.get(unit, f"1 {unit}")
 
@@ -182,7 +200,11 @@ def parse_quantity(
     if m is None:
         return _raise(refuse(f"{stripped!r} is not a number"))
     mant = m.group("mant").replace(",", ".")
-    exact = Decimal(("-" if m.group("sign") == "-" else "") + mant + (f"e{m.group('exp')}" if m.group("exp") else ""))
+    exact = Decimal(
+        ("-" if m.group("sign") == "-" else "")
+        + mant
+        + (f"e{m.group('exp')}" if m.group("exp") else "")
+    )
     number = float(exact)
     rest = m.group("rest").strip()
     if not math.isfinite(number):
@@ -192,24 +214,39 @@ def parse_quantity(
         if re.search(r"\d", rest) and not re.search(r"\^|[a-zA-Z]2", rest):
             return _raise(refuse(f"{stripped!r} holds more than one number"))
         if rest in _PREFIXES:
-            return _raise(refuse(f"{stripped!r}: a prefix needs its unit (write e.g. '{number:g} {rest}{form.symbol}')"))
+            return _raise(
+                refuse(
+                    f"{stripped!r}: a prefix needs its unit (write e.g. '{number:g} {rest}{form.symbol}')"
+                )
+            )
         return _raise(refuse(f"{rest!r} in {stripped!r} is not a unit this field takes"))
     if typed.symbol and typed.quantity != form.quantity:
-        return _raise(refuse(f"{stripped!r} is {'an' if typed.quantity[0] in 'aeiou' else 'a'} {typed.quantity}"))
+        return _raise(
+            refuse(
+                f"{stripped!r} is {'an' if typed.quantity[0] in 'aeiou' else 'a'} {typed.quantity}"
+            )
+        )
     note = ""
     if not typed.symbol:
         typed = form
         if form.symbol == "mA" and 0 < abs(number) < 1:
-            return _raise(EntryRefused(
-                label, None,
-                f"{stripped!r} is ambiguous: currents here are 20-50 mA, so this looks like amperes; "
-                f"type '{number * 1000:g} mA' or '{stripped} A' (or '{stripped} mA' if you mean it)",
-            ))
+            return _raise(
+                EntryRefused(
+                    label,
+                    None,
+                    f"{stripped!r} is ambiguous: currents here are 20-50 mA, so this looks like amperes; "
+                    f"type '{number * 1000:g} mA' or '{stripped} A' (or '{stripped} mA' if you mean it)",
+                )
+            )
     elif typed.symbol != form.symbol:
         note = f"read as {_fmt(number * typed.scale / form.scale)} {form.symbol}"
     value = _scaled(exact, typed.scale)
     if value < 0 and not allow_negative:
-        return _raise(refuse(f"{stripped!r} is negative, which this field cannot be (swapped leads? type the magnitude)"))
+        return _raise(
+            refuse(
+                f"{stripped!r} is negative, which this field cannot be (swapped leads? type the magnitude)"
+            )
+        )
     if value == 0 and not allow_zero:
         return _raise(refuse(f"{stripped!r} is zero, which this field cannot be"))
     return Parsed(value=value, unit=typed.symbol, note=note)

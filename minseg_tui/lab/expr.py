@@ -18,7 +18,10 @@ from dataclasses import dataclass
 from minseg_tui.errors import InputError
 
 _FUNCS: dict[str, Callable[[float], float]] = {
-    "exp": math.exp, "ln": math.log, "log": math.log, "sqrt": math.sqrt,
+    "exp": math.exp,
+    "ln": math.log,
+    "log": math.log,
+    "sqrt": math.sqrt,
 }
 _CONSTS = {"pi": math.pi, "π": math.pi, "e": math.e}
 
@@ -44,7 +47,14 @@ class Formula:
 
 
 def _prepare(text: str) -> str:
-    t = text.strip().replace("·", "*").replace("×", "*").replace("−", "-").replace("π", "pi").replace("ω", "omega")
+    t = (
+        text.strip()
+        .replace("·", "*")
+        .replace("×", "*")
+        .replace("−", "-")
+        .replace("π", "pi")
+        .replace("ω", "omega")
+    )
     t = re.sub(r"(?<=\d),(?=\d)", ".", t)
     t = t.replace("^", "**")
     # implicit product: a number directly followed by a name or '(' (but not an exponent)
@@ -55,35 +65,64 @@ def _prepare(text: str) -> str:
 
 def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Formula:
     """Read ``text`` as a formula in ``names``; raise :class:`FormulaRefused` with one line."""
-    allowed = f"a number or a formula in {', '.join(names)}" if names else "a number or a formula (pi, e, exp, sqrt allowed)"
+    allowed = (
+        f"a number or a formula in {', '.join(names)}"
+        if names
+        else "a number or a formula (pi, e, exp, sqrt allowed)"
+    )
     if not text or not text.strip():
         raise FormulaRefused(label, None, f"nothing typed; expected {allowed}")
     try:
         tree = ast.parse(_prepare(text), mode="eval")
     except SyntaxError:
-        raise FormulaRefused(label, None, f"{text.strip()!r} cannot be read; expected {allowed} (write products with *)") from None
+        raise FormulaRefused(
+            label,
+            None,
+            f"{text.strip()!r} cannot be read; expected {allowed} (write products with *)",
+        ) from None
     used: set[str] = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
             if node.id not in names and node.id not in _CONSTS and node.id not in _FUNCS:
                 hint = " (write products with *, e.g. K*c)" if len(node.id) > 1 else ""
-                raise FormulaRefused(label, None, f"unknown name {node.id!r}{hint}; expected {allowed}")
+                raise FormulaRefused(
+                    label, None, f"unknown name {node.id!r}{hint}; expected {allowed}"
+                )
             if node.id in names:
                 used.add(node.id)
         elif isinstance(node, ast.Call):
-            if not isinstance(node.func, ast.Name) or node.func.id not in _FUNCS or len(node.args) != 1 or node.keywords:
-                raise FormulaRefused(label, None, f"only exp(x), ln(x), sqrt(x) may be called; expected {allowed}")
+            if (
+                not isinstance(node.func, ast.Name)
+                or node.func.id not in _FUNCS
+                or len(node.args) != 1
+                or node.keywords
+            ):
+                raise FormulaRefused(
+                    label, None, f"only exp(x), ln(x), sqrt(x) may be called; expected {allowed}"
+                )
         elif isinstance(node, ast.Constant):
             if not isinstance(node.value, int | float) or isinstance(node.value, bool):
-                raise FormulaRefused(label, None, f"{text.strip()!r} holds something that is not a number; expected {allowed}")
-        elif not isinstance(node, ast.Expression | ast.BinOp | ast.UnaryOp | ast.Load | ast.operator | ast.unaryop):
-            raise FormulaRefused(label, None, f"{text.strip()!r} is not a formula; expected {allowed}")
+                raise FormulaRefused(
+                    label,
+                    None,
+                    f"{text.strip()!r} holds something that is not a number; expected {allowed}",
+                )
+        elif not isinstance(
+            node, ast.Expression | ast.BinOp | ast.UnaryOp | ast.Load | ast.operator | ast.unaryop
+        ):
+            raise FormulaRefused(
+                label, None, f"{text.strip()!r} is not a formula; expected {allowed}"
+            )
     for node in ast.walk(tree):
-        if isinstance(node, ast.BinOp) and not isinstance(node.op, ast.Add | ast.Sub | ast.Mult | ast.Div | ast.Pow):
+        if isinstance(node, ast.BinOp) and not isinstance(
+            node.op, ast.Add | ast.Sub | ast.Mult | ast.Div | ast.Pow
+        ):
             raise FormulaRefused(label, None, f"only + - * / ^ are allowed; expected {allowed}")
     formula = Formula(text=text.strip(), tree=tree, names=frozenset(used))
     if not names and not math.isfinite(formula.value({})):
-        raise FormulaRefused(label, None, f"{text.strip()!r} is not a finite number; expected {allowed}")
+        raise FormulaRefused(
+            label, None, f"{text.strip()!r} is not a finite number; expected {allowed}"
+        )
     return formula
 
 

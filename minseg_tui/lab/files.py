@@ -95,19 +95,35 @@ class _Csv:
             else:
                 self.rows.append((number, fields))
         if not self.header:
-            raise InputError(self.source, None, f"expected a header row '{expected_header}', the file is empty")
+            raise InputError(
+                self.source, None, f"expected a header row '{expected_header}', the file is empty"
+            )
         if not self.rows:
-            raise InputError(self.source, self.header_line, "expected data rows after the header, found none")
+            raise InputError(
+                self.source, self.header_line, "expected data rows after the header, found none"
+            )
 
     def _check_header(self, expected: str) -> None:
         if len(self.header) == 1 and ";" in self.header[0]:
-            raise InputError(self.source, self.header_line, f"expected columns separated by commas ('{expected}'), got semicolons")
+            raise InputError(
+                self.source,
+                self.header_line,
+                f"expected columns separated by commas ('{expected}'), got semicolons",
+            )
         seen: set[str] = set()
         for name in self.header:
             if not name:
-                raise InputError(self.source, self.header_line, f"expected a name for every column ('{expected}'), found an empty one")
+                raise InputError(
+                    self.source,
+                    self.header_line,
+                    f"expected a name for every column ('{expected}'), found an empty one",
+                )
             if name in seen:
-                raise InputError(self.source, self.header_line, f"expected each column once, '{name}' appears twice")
+                raise InputError(
+                    self.source,
+                    self.header_line,
+                    f"expected each column once, '{name}' appears twice",
+                )
             seen.add(name)
 
     def require(self, required: Mapping[str, str]) -> None:
@@ -115,16 +131,22 @@ class _Csv:
         if missing:
             want = ", ".join(f"{c} ({required[c]})" for c in missing)
             raise InputError(
-                self.source, self.header_line,
+                self.source,
+                self.header_line,
                 f"expected a column {want}; found {','.join(self.header)}",
             )
 
     def check_widths(self) -> None:
         for number, fields in self.rows:
             if len(fields) != len(self.header):
-                hint = " (a decimal comma? write 2.5, not 2,5)" if len(fields) > len(self.header) else ""
+                hint = (
+                    " (a decimal comma? write 2.5, not 2,5)"
+                    if len(fields) > len(self.header)
+                    else ""
+                )
                 raise InputError(
-                    self.source, number,
+                    self.source,
+                    number,
                     f"expected {len(self.header)} fields ({','.join(self.header)}), got {len(fields)}{hint}",
                 )
 
@@ -155,6 +177,7 @@ def _number(text: str, source: str, line: int, name: str, unit: str) -> float:
 
 # -- TABLE.csv ---------------------------------------------------------------------------------
 
+
 def read_table(path: str | Path) -> list[Reading]:
     """The steady-state readings of Tasks 4-5, one Reading per row (i_ss in mA as entered).
 
@@ -168,8 +191,11 @@ def read_table(path: str | Path) -> list[Reading]:
     readings = []
     for k, (number, _) in enumerate(f.rows):
         r = Reading(
-            u_req=float(cols["u_req"][k]), u_ss=float(cols["u_ss"][k]),
-            omega_ss=float(cols["omega_ss"][k]), i_ss=float(cols["i_ss"][k]), line=number,
+            u_req=float(cols["u_req"][k]),
+            u_ss=float(cols["u_ss"][k]),
+            omega_ss=float(cols["omega_ss"][k]),
+            i_ss=float(cols["i_ss"][k]),
+            line=number,
         )
         problem = r.problem()
         if problem:
@@ -186,6 +212,7 @@ def write_table(path: str | Path, readings: list[Reading]) -> None:
 
 
 # -- step logs ---------------------------------------------------------------------------------
+
 
 def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
     """A step log (see the module docstring) as a StepLog, ``source`` the path as given.
@@ -205,7 +232,8 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
     if bad.size:
         k = int(bad[0]) + 1
         raise InputError(
-            f.source, int(lines[k]),
+            f.source,
+            int(lines[k]),
             f"expected t (s) to increase, got {f.rows[k][1][f.header.index('t')]} after "
             f"{f.rows[k - 1][1][f.header.index('t')]} on line {lines[k - 1]}",
         )
@@ -228,15 +256,21 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
         still = np.flatnonzero(np.mod(np.diff(extra["t_us"].astype(np.float64)), 2.0**32) == 0)
         if still.size:
             k = int(still[0]) + 1
-            raise InputError(f.source, int(lines[k]),
-                             f"expected t_us (us) to increase, got {int(extra['t_us'][k])} again")
-    log = StepLog(t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines)
+            raise InputError(
+                f.source,
+                int(lines[k]),
+                f"expected t_us (us) to increase, got {int(extra['t_us'][k])} again",
+            )
+    log = StepLog(
+        t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines
+    )
     if require_step:
         cmd, name = command(log)
         if not find_edges(cmd):
             lo, hi = float(np.min(cmd)), float(np.max(cmd))
             raise InputError(
-                f.source, int(lines[0]),
+                f.source,
+                int(lines[0]),
                 f"expected a step in {name} (V) from here on; it stays between {lo:g} and {hi:g} V "
                 f"up to line {lines[-1]}",
             )
@@ -258,7 +292,9 @@ def _format_column(values: NDArray) -> list[str]:
     return [str(v) for v in values]
 
 
-def write_step_log(path: str | Path, log: StepLog, metadata: Mapping[str, str] | None = None) -> None:
+def write_step_log(
+    path: str | Path, log: StepLog, metadata: Mapping[str, str] | None = None
+) -> None:
     """Write ``log`` as a step log: ``# key: value`` lines (the log's metadata, updated with
     ``metadata``), then the header t,u,omega,<extra columns>, then one row per sample."""
     meta = {"format": "minseg-tui step log 1", **dict(log.metadata), **dict(metadata or {})}

@@ -66,17 +66,29 @@ class RunInfo:
 
     def to_json(self) -> dict[str, object]:
         """JSON-ready dict."""
-        return {"name": self.name, "file": self.file, "kind": self.kind, "ts": self.ts,
-                "samples": self.samples, "dropped": self.dropped, "started": self.started,
-                "interrupted": self.interrupted, "plan": dict(self.plan)}
+        return {
+            "name": self.name,
+            "file": self.file,
+            "kind": self.kind,
+            "ts": self.ts,
+            "samples": self.samples,
+            "dropped": self.dropped,
+            "started": self.started,
+            "interrupted": self.interrupted,
+            "plan": dict(self.plan),
+        }
 
     @classmethod
     def from_json(cls, d: Mapping[str, object]) -> RunInfo:
         """Inverse of :meth:`to_json`."""
         return cls(
-            name=str(d["name"]), file=str(d["file"]), kind=str(d.get("kind", "free")),
-            ts=float(d.get("ts", 0.025)), samples=int(d.get("samples", 0)),  # type: ignore[arg-type]
-            dropped=int(d.get("dropped", 0)), started=str(d.get("started", "")),  # type: ignore[arg-type]
+            name=str(d["name"]),
+            file=str(d["file"]),
+            kind=str(d.get("kind", "free")),
+            ts=float(d.get("ts", 0.025)),
+            samples=int(d.get("samples", 0)),  # type: ignore[arg-type]
+            dropped=int(d.get("dropped", 0)),
+            started=str(d.get("started", "")),  # type: ignore[arg-type]
             interrupted=bool(d.get("interrupted", False)),
             plan={str(k): float(v) for k, v in dict(d.get("plan") or {}).items()},  # type: ignore[call-overload]
         )
@@ -84,7 +96,10 @@ class RunInfo:
 
 # -- the applied voltage -----------------------------------------------------------------------
 
-def applied_voltage(u_req: np.ndarray, table: Sequence[tuple[float, float]]) -> tuple[np.ndarray, str]:
+
+def applied_voltage(
+    u_req: np.ndarray, table: Sequence[tuple[float, float]]
+) -> tuple[np.ndarray, str]:
     """u_A (V) for each requested u_req (V), mapped through the table's (u_req, u_ss) pairs,
     and a sentence for the log's metadata.
 
@@ -95,9 +110,18 @@ def applied_voltage(u_req: np.ndarray, table: Sequence[tuple[float, float]]) -> 
     """
     u = np.asarray(u_req, dtype=float)
     if not table:
-        return u.copy(), "u = u_req: the table has no u_ss yet, so the driver's voltage loss is not known"
-    rows = [Row(reading=Reading(u_req=r, u_ss=s, omega_ss=math.nan, i_ss=math.nan), k_v=math.nan, f=math.nan)
-            for r, s in table]
+        return (
+            u.copy(),
+            "u = u_req: the table has no u_ss yet, so the driver's voltage loss is not known",
+        )
+    rows = [
+        Row(
+            reading=Reading(u_req=r, u_ss=s, omega_ss=math.nan, i_ss=math.nan),
+            k_v=math.nan,
+            f=math.nan,
+        )
+        for r, s in table
+    ]
     out = np.zeros_like(u)
     for level in np.unique(np.abs(u)):
         if level == 0:
@@ -106,12 +130,15 @@ def applied_voltage(u_req: np.ndarray, table: Sequence[tuple[float, float]]) -> 
         sel = np.abs(u) == level
         out[sel] = np.sign(u[sel]) * max(v, 0.0)
     pairs = ", ".join(f"{r:g} V -> {s:g} V" for r, s in sorted(table))
-    how = (f"u = u_A mapped from u_req through the table's u_ss ({pairs}): the row's value, linear "
-           "between rows, the nearest row's drop beyond them; 0 at u_req = 0")
+    how = (
+        f"u = u_A mapped from u_req through the table's u_ss ({pairs}): the row's value, linear "
+        "between rows, the nearest row's drop beyond them; 0 at u_req = 0"
+    )
     return out, how
 
 
 # -- partial files -----------------------------------------------------------------------------
+
 
 class Recorder:
     """Writes one run's samples to ``runs/<name>.partial`` as they arrive.
@@ -120,8 +147,13 @@ class Recorder:
     ``clock`` is the monotonic clock deciding when to flush (injectable for tests).
     """
 
-    def __init__(self, path: Path, header: Mapping[str, object], flush_interval: float = FLUSH_INTERVAL,
-                 clock: Callable[[], float] = time.monotonic) -> None:
+    def __init__(
+        self,
+        path: Path,
+        header: Mapping[str, object],
+        flush_interval: float = FLUSH_INTERVAL,
+        clock: Callable[[], float] = time.monotonic,
+    ) -> None:
         self.path = Path(path)
         self.flush_interval = flush_interval
         self._clock = clock
@@ -166,7 +198,10 @@ class Recorder:
     def tick(self) -> None:
         """Flush if the oldest unwritten sample is older than the flush interval (call this
         from a timer when samples may stop arriving)."""
-        if self._first_unflushed is not None and self._clock() - self._first_unflushed >= self.flush_interval:
+        if (
+            self._first_unflushed is not None
+            and self._clock() - self._first_unflushed >= self.flush_interval
+        ):
             self.flush()
 
     def flush(self) -> None:
@@ -221,7 +256,11 @@ def read_partial(path: Path) -> RawRun:
 
 def _unwrap(values: np.ndarray, bits: int = 32) -> np.ndarray:
     d = np.mod(np.diff(values.astype(np.int64)), 2**bits)
-    return np.concatenate(([0], np.cumsum(d))).astype(np.int64) if values.size else values.astype(np.int64)
+    return (
+        np.concatenate(([0], np.cumsum(d))).astype(np.int64)
+        if values.size
+        else values.astype(np.int64)
+    )
 
 
 def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> tuple[StepLog, int]:
@@ -254,11 +293,23 @@ def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> t
     }
     for k in ("kind", "started", "plan"):
         if k in raw.header:
-            meta[k] = json.dumps(raw.header[k]) if not isinstance(raw.header[k], str) else str(raw.header[k])
+            meta[k] = (
+                json.dumps(raw.header[k])
+                if not isinstance(raw.header[k], str)
+                else str(raw.header[k])
+            )
     log = StepLog(
-        t=t, u=u, omega=omega,
-        extra={"u_req": u_req, "omega_lab": omega_lab, "theta": theta, "count": count,
-               "t_us": raw.t_us[keep].astype(np.int64), "seq": raw.seq[keep].astype(np.int64)},
+        t=t,
+        u=u,
+        omega=omega,
+        extra={
+            "u_req": u_req,
+            "omega_lab": omega_lab,
+            "theta": theta,
+            "count": count,
+            "t_us": raw.t_us[keep].astype(np.int64),
+            "seq": raw.seq[keep].astype(np.int64),
+        },
         metadata=meta,
     )
     return log, dropped

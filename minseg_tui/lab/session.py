@@ -104,10 +104,15 @@ class Entry:
     def to_json(self) -> dict[str, Any]:
         """JSON-ready dict (the session file's form)."""
         out = {
-            "text": self.text, "ok": self.ok,
+            "text": self.text,
+            "ok": self.ok,
             "value": list(self.value) if isinstance(self.value, tuple) else self.value,
-            "unit": self.unit, "message": self.message, "warnings": list(self.warnings),
-            "source": self.source, "at": self.at, "history": [list(h) for h in self.history],
+            "unit": self.unit,
+            "message": self.message,
+            "warnings": list(self.warnings),
+            "source": self.source,
+            "at": self.at,
+            "history": [list(h) for h in self.history],
         }
         if self.refused:
             out["refused"] = list(self.refused)
@@ -117,14 +122,25 @@ class Entry:
     def from_json(cls, key: str, d: Mapping[str, Any]) -> Entry:
         """Inverse of :meth:`to_json`."""
         v = d.get("value")
-        value: float | tuple[int, ...] | None = tuple(int(x) for x in v) if isinstance(v, list) else (
-            float(v) if isinstance(v, int | float) else None)
+        value: float | tuple[int, ...] | None = (
+            tuple(int(x) for x in v)
+            if isinstance(v, list)
+            else (float(v) if isinstance(v, int | float) else None)
+        )
         return cls(
-            key=key, text=str(d["text"]), ok=bool(d["ok"]), value=value, unit=str(d.get("unit", "")),
-            message=str(d.get("message", "")), warnings=tuple(str(w) for w in d.get("warnings", [])),
-            source=str(d.get("source", "typed")), at=str(d.get("at", "")),
+            key=key,
+            text=str(d["text"]),
+            ok=bool(d["ok"]),
+            value=value,
+            unit=str(d.get("unit", "")),
+            message=str(d.get("message", "")),
+            warnings=tuple(str(w) for w in d.get("warnings", [])),
+            source=str(d.get("source", "typed")),
+            at=str(d.get("at", "")),
             history=tuple((str(h[0]), str(h[1])) for h in d.get("history", [])),
-            refused=(str(d["refused"][0]), str(d["refused"][1]), str(d["refused"][2])) if d.get("refused") else None,
+            refused=(str(d["refused"][0]), str(d["refused"][1]), str(d["refused"][2]))
+            if d.get("refused")
+            else None,
         )
 
 
@@ -240,14 +256,20 @@ class Session:
     A session opened with ``readonly=True`` (for reports) takes no lock and never writes.
     """
 
-    def __init__(self, folder: Path, data: dict[str, Any], *, lock: Lock | None, clock: Clock, readonly: bool) -> None:
+    def __init__(
+        self, folder: Path, data: dict[str, Any], *, lock: Lock | None, clock: Clock, readonly: bool
+    ) -> None:
         self.folder = Path(folder)
         self._data = data
         self._lock = lock
         self._clock = clock
         self.readonly = readonly
-        self._entries: dict[str, Entry] = {k: Entry.from_json(k, v) for k, v in data["entries"].items()}
-        self._captures: dict[str, Capture] = {k: Capture.from_json(v) for k, v in data["captures"].items()}
+        self._entries: dict[str, Entry] = {
+            k: Entry.from_json(k, v) for k, v in data["entries"].items()
+        }
+        self._captures: dict[str, Capture] = {
+            k: Capture.from_json(v) for k, v in data["captures"].items()
+        }
         self._runs: list[RunInfo] = [RunInfo.from_json(r) for r in data["runs"]]
         self._results: tuple[object, Results] | None = None
         self._checks: dict[tuple[int, str], ModelCheck] = {}
@@ -258,8 +280,14 @@ class Session:
     # -- life cycle ----------------------------------------------------------------------------
 
     @classmethod
-    def create(cls, root: Path, members: Sequence[str], date: str | None = None,
-               session_id: str | None = None, clock: Clock = _now) -> Session:
+    def create(
+        cls,
+        root: Path,
+        members: Sequence[str],
+        date: str | None = None,
+        session_id: str | None = None,
+        clock: Clock = _now,
+    ) -> Session:
         """A new session folder under ``root`` (created if needed), locked and saved.
 
         ``date`` defaults to today (ISO); the id defaults to ``<date>-<members>``, made
@@ -273,7 +301,11 @@ class Session:
         sid, k = base, 1
         while (root / sid).exists():
             if session_id:
-                raise InputError(str(root / sid), None, "a session with this id exists already; open it or pick another id")
+                raise InputError(
+                    str(root / sid),
+                    None,
+                    "a session with this id exists already; open it or pick another id",
+                )
             k += 1
             sid = f"{base}-{k}"
         folder = root / sid
@@ -282,9 +314,18 @@ class Session:
         lock.acquire()
         stamp = now.isoformat(timespec="seconds")
         data: dict[str, Any] = {
-            "kind": KIND, "schema": SCHEMA, "id": sid, "members": [str(m) for m in members], "date": date,
-            "created": stamp, "modified": stamp, "current_step": STEPS[0].id, "selected_run": None,
-            "entries": {}, "captures": {}, "runs": [],
+            "kind": KIND,
+            "schema": SCHEMA,
+            "id": sid,
+            "members": [str(m) for m in members],
+            "date": date,
+            "created": stamp,
+            "modified": stamp,
+            "current_step": STEPS[0].id,
+            "selected_run": None,
+            "entries": {},
+            "captures": {},
+            "runs": [],
         }
         s = cls(folder, data, lock=lock, clock=clock, readonly=False)
         s.save()
@@ -305,8 +346,11 @@ class Session:
         try:
             data = read_session_file(folder / SESSION_FILE)
             if data["current_step"] not in STEP_INDEX:
-                raise SessionDamaged(str(folder / SESSION_FILE), None,
-                                     f"names an unknown step {data['current_step']!r}; the file is left untouched")
+                raise SessionDamaged(
+                    str(folder / SESSION_FILE),
+                    None,
+                    f"names an unknown step {data['current_step']!r}; the file is left untouched",
+                )
             s = cls(folder, data, lock=lock, clock=clock, readonly=readonly)
             if not readonly:
                 (folder / RUNS_DIR).mkdir(exist_ok=True)
@@ -337,7 +381,9 @@ class Session:
         self._data["captures"] = {k: c.to_json() for k, c in self._captures.items()}
         self._data["runs"] = [r.to_json() for r in self._runs]
         self._data["modified"] = self._clock().isoformat(timespec="seconds")
-        atomic_write_text(self.folder / SESSION_FILE, json.dumps(self._data, indent=1, ensure_ascii=False) + "\n")
+        atomic_write_text(
+            self.folder / SESSION_FILE, json.dumps(self._data, indent=1, ensure_ascii=False) + "\n"
+        )
 
     def _changed(self) -> None:
         self.save()
@@ -432,8 +478,18 @@ class Session:
         history = (*old.history, (old.text, old.at)) if old is not None else ()
         if old is not None and old.refused:
             history = (*history, (old.refused[0], old.refused[2]))
-        entry = Entry(key=key, text=text, ok=entry.ok, value=entry.value, unit=entry.unit, message=entry.message,
-                      warnings=entry.warnings, source=source, at=at, history=history)
+        entry = Entry(
+            key=key,
+            text=text,
+            ok=entry.ok,
+            value=entry.value,
+            unit=entry.unit,
+            message=entry.message,
+            warnings=entry.warnings,
+            source=source,
+            at=at,
+            history=history,
+        )
         self._entries[key] = entry
         if entry.ok and source != "capture" and key.startswith("omega_ss@"):
             self._captures.pop(key, None)
@@ -453,10 +509,23 @@ class Session:
             return Entry(fld.key, text, ok=True)
         try:
             if fld.kind == "quantity":
-                p = parse_quantity(text, fld.unit, label=fld.label, allow_negative=fld.allow_negative,
-                                   allow_zero=fld.allow_zero)
+                p = parse_quantity(
+                    text,
+                    fld.unit,
+                    label=fld.label,
+                    allow_negative=fld.allow_negative,
+                    allow_zero=fld.allow_zero,
+                )
                 warnings = tuple(w for rule in fld.plausible for w in rule.warnings(p.value))
-                return Entry(fld.key, text, ok=True, value=p.value, unit=p.unit, message=p.note, warnings=warnings)
+                return Entry(
+                    fld.key,
+                    text,
+                    ok=True,
+                    value=p.value,
+                    unit=p.unit,
+                    message=p.note,
+                    warnings=warnings,
+                )
             if fld.kind == "formula":
                 f = lab_steps.read_formula(fld, text)
                 value = f.value({}) if not fld.names else None
@@ -465,7 +534,11 @@ class Session:
                 chosen = _parse_choice(text, len(fld.options))
             except ValueError:
                 letters = "/".join(chr(ord("a") + k) for k in range(len(fld.options)))
-                raise InputError(fld.label, None, f"expected {'one or more of' if fld.multiple else 'one of'} {letters}; got {text.strip()!r}") from None
+                raise InputError(
+                    fld.label,
+                    None,
+                    f"expected {'one or more of' if fld.multiple else 'one of'} {letters}; got {text.strip()!r}",
+                ) from None
             if len(chosen) > 1 and not fld.multiple:
                 raise InputError(fld.label, None, f"expected one answer; got {len(chosen)}")
             return Entry(fld.key, text, ok=True, value=chosen)
@@ -511,7 +584,9 @@ class Session:
         required = [f for f in st.fields if not f.optional]
         if not st.fields:
             return "info"
-        if required and all(self._entries.get(f.key) is not None and self._entries[f.key].ok for f in required):
+        if required and all(
+            self._entries.get(f.key) is not None and self._entries[f.key].ok for f in required
+        ):
             return "done"
         if any(f.key in self._entries for f in st.fields):
             return "started" if required else "done"
@@ -519,8 +594,14 @@ class Session:
 
     # -- the table -----------------------------------------------------------------------------
 
-    def capture_omega(self, level: float, t: Sequence[float], omega: Sequence[float],
-                      window: float = DEFAULT_WINDOW, velocity: str = "timestamps") -> Entry:
+    def capture_omega(
+        self,
+        level: float,
+        t: Sequence[float],
+        omega: Sequence[float],
+        window: float = DEFAULT_WINDOW,
+        velocity: str = "timestamps",
+    ) -> Entry:
         """Task 4: capture omega_ss at requested ``level`` (V) as the mean of the last
         ``window`` s of ``omega`` (rad/s) at times ``t`` (s); stores the capture (spread,
         window) and enters omega_ss@level. ValueError with fewer than 3 samples."""
@@ -551,16 +632,25 @@ class Session:
     def table(self) -> list[TableRow]:
         """The table of Tasks 4-9, one row per requested voltage, k_v and f filled when computable."""
         res = self.results()
-        by_level = {r.reading.u_req: r for r in res.identification.rows} if res.identification else {}
+        by_level = (
+            {r.reading.u_req: r for r in res.identification.rows} if res.identification else {}
+        )
         out = []
         for lv in LEVELS:
             cap = self.capture_of(lv)
             row = by_level.get(lv)
-            out.append(TableRow(
-                level=lv, u_ss=self.value(f"u_ss@{lv:g}"), omega_ss=self.value(f"omega_ss@{lv:g}"),
-                spread=cap.spread if cap else None, window=(cap.t0, cap.t1) if cap else None,
-                i_ss=self.value(f"i_ss@{lv:g}"), k_v=row.k_v if row else None, f=row.f if row else None,
-            ))
+            out.append(
+                TableRow(
+                    level=lv,
+                    u_ss=self.value(f"u_ss@{lv:g}"),
+                    omega_ss=self.value(f"omega_ss@{lv:g}"),
+                    spread=cap.spread if cap else None,
+                    window=(cap.t0, cap.t1) if cap else None,
+                    i_ss=self.value(f"i_ss@{lv:g}"),
+                    k_v=row.k_v if row else None,
+                    f=row.f if row else None,
+                )
+            )
         return out
 
     # -- results -------------------------------------------------------------------------------
@@ -569,7 +659,12 @@ class Session:
         """Tasks 6-15 from the current entries and the chosen run (cached until R, a table
         value or the run changes)."""
         run = self.step_run()
-        key = (self.value("R"), tuple(self.readings()), run.name if run else None, self._run_version)
+        key = (
+            self.value("R"),
+            tuple(self.readings()),
+            run.name if run else None,
+            self._run_version,
+        )
         if self._results is not None and self._results[0] == key:
             return self._results[1]
         res = self._compute()
@@ -616,9 +711,17 @@ class Session:
         """The model check (:func:`minseg_tui.model.check.check`) of run ``name`` (default: the
         run Tasks 11-15 use): measured against the first-order model, the named cause, the
         extended model and the gain. Cached until something changes."""
-        run = self.step_run() if name is None else next((r for r in self._runs if r.name == name), None)
+        run = (
+            self.step_run()
+            if name is None
+            else next((r for r in self._runs if r.name == name), None)
+        )
         if run is None:
-            return ModelCheck(None, None, "no step run recorded yet (Task 10)" if name is None else f"no run {name}")
+            return ModelCheck(
+                None,
+                None,
+                "no step run recorded yet (Task 10)" if name is None else f"no run {name}",
+            )
         key = (self._run_version, run.name)
         cached = self._checks.get(key)
         if cached is not None:
@@ -637,7 +740,12 @@ class Session:
         """Plausibility warnings of the entries (of ``step_id``, or all) and, for all or the
         table and results steps, what the numbers show (identify's findings)."""
         keys = {f.key for f in lab_steps.step(step_id).fields} if step_id else None
-        out = [Notice(k, w) for k, e in self._entries.items() if keys is None or k in keys for w in e.warnings]
+        out = [
+            Notice(k, w)
+            for k, e in self._entries.items()
+            if keys is None or k in keys
+            for w in e.warnings
+        ]
         if step_id is None or lab_steps.step(step_id).part in ("Table", "Results", "Step response"):
             res = self.results()
             if res.identification:
@@ -703,14 +811,21 @@ class Session:
         self._changed()
 
     def _new_name(self, kind: str) -> str:
-        taken = {r.name for r in self._runs} | {p.name.split(".")[0] for p in (self.folder / RUNS_DIR).iterdir()}
+        taken = {r.name for r in self._runs} | {
+            p.name.split(".")[0] for p in (self.folder / RUNS_DIR).iterdir()
+        }
         k = 1
         while f"{kind}-{k}" in taken:
             k += 1
         return f"{kind}-{k}"
 
-    def start_run(self, kind: str = "steps", plan: RunPlan | None = None, ts: float | None = None,
-                  flush_interval: float | None = None) -> Recorder:
+    def start_run(
+        self,
+        kind: str = "steps",
+        plan: RunPlan | None = None,
+        ts: float | None = None,
+        flush_interval: float | None = None,
+    ) -> Recorder:
         """Begin recording a run (``steps``/``fast`` for Task 10, ``free`` otherwise); returns
         the Recorder to append samples to. Nothing is lost to a crash beyond its flush interval."""
         if self.readonly:
@@ -718,8 +833,15 @@ class Session:
         name = self._new_name(kind)
         ts_ = ts if ts is not None else (plan.ts if plan else 0.025)
         header = {
-            "name": name, "kind": kind, "ts": ts_, "started": self._clock().isoformat(timespec="seconds"),
-            "plan": {k: float(getattr(plan, k)) for k in ("low", "high", "half_period", "periods", "ts")} if plan else {},
+            "name": name,
+            "kind": kind,
+            "ts": ts_,
+            "started": self._clock().isoformat(timespec="seconds"),
+            "plan": {
+                k: float(getattr(plan, k)) for k in ("low", "high", "half_period", "periods", "ts")
+            }
+            if plan
+            else {},
         }
         kwargs = {} if flush_interval is None else {"flush_interval": flush_interval}
         return Recorder(self.folder / RUNS_DIR / f"{name}{PARTIAL_SUFFIX}", header, **kwargs)
@@ -751,8 +873,14 @@ class Session:
         write_log_atomic(self.folder / file, log)
         plan = raw.header.get("plan") or {}
         info = RunInfo(
-            name=name, file=file, kind=str(raw.header.get("kind", "free")), ts=ts, samples=len(log),
-            dropped=dropped, started=str(raw.header.get("started", "")), interrupted=interrupted,
+            name=name,
+            file=file,
+            kind=str(raw.header.get("kind", "free")),
+            ts=ts,
+            samples=len(log),
+            dropped=dropped,
+            started=str(raw.header.get("started", "")),
+            interrupted=interrupted,
             plan={str(k): float(v) for k, v in dict(plan).items()},  # type: ignore[call-overload]
         )
         self._runs.append(info)
@@ -773,10 +901,25 @@ class Session:
         log = read_step_log(Path(path))
         name = self._new_name("imported")
         file = f"{RUNS_DIR}/{name}.csv"
-        write_log_atomic(self.folder / file, StepLog(t=log.t, u=log.u, omega=log.omega, extra=log.extra,
-                                                     metadata={**log.metadata, "imported_from": str(path)}))
-        info = RunInfo(name=name, file=file, kind="imported", ts=log.ts, samples=len(log), dropped=0,
-                       started=self._clock().isoformat(timespec="seconds"))
+        write_log_atomic(
+            self.folder / file,
+            StepLog(
+                t=log.t,
+                u=log.u,
+                omega=log.omega,
+                extra=log.extra,
+                metadata={**log.metadata, "imported_from": str(path)},
+            ),
+        )
+        info = RunInfo(
+            name=name,
+            file=file,
+            kind="imported",
+            ts=log.ts,
+            samples=len(log),
+            dropped=0,
+            started=self._clock().isoformat(timespec="seconds"),
+        )
         self._runs.append(info)
         self._run_version += 1
         self._changed()

@@ -144,67 +144,95 @@ _MOTOR = ("R", "J", "f", "k_v", "k_a")
 
 _PREPARATION: tuple[Step, ...] = (
     Step(
-        "prep1", "Preparation", "Preparation 1: reading",
+        "prep1",
+        "Preparation",
+        "Preparation 1: reading",
         "Know what a first-order system and its step response are before the lab.",
         "Read sections 2.1 and 2.6 of Ljung & Glad. Nothing to check here; jot down questions.",
         fields=(_note("prep1.notes"),),
     ),
     Step(
-        "prep2", "Preparation", "Preparation 2: the step response solves the equation",
+        "prep2",
+        "Preparation",
+        "Preparation 2: the step response solves the equation",
         "Convince yourself that y(t) = K(1 - e^(-t/T))c satisfies T y' = -y + K u for a step of size c.",
         "Differentiate the proposed y(t), put y and y' into the equation and see that both sides "
         "agree for t > 0; check y(0) = 0 too. Do not solve the equation from scratch.",
         fields=(_note("prep2.notes"),),
     ),
     Step(
-        "prep3", "Preparation", "Preparation 3: where the output settles",
+        "prep3",
+        "Preparation",
+        "Preparation 3: where the output settles",
         "See two ways that the step response ends at K c.",
         "Let t grow without bound in the solution; then, separately, set y' = 0 in the equation "
         "(nothing changes any more in steady state) and solve for y.",
         fields=(_note("prep3.notes"),),
     ),
     Step(
-        "prep4", "Preparation", "Preparation 4: the output after one time constant",
+        "prep4",
+        "Preparation",
+        "Preparation 4: the output after one time constant",
         "Know how far the step response has come at t = T.",
         "Put t = T into y(t) = K(1 - e^(-t/T))c. Type y(T) as a fraction of its final value K c "
         "(a number, or a formula such as 1 - exp(-1)).",
-        fields=(Field("prep4.fraction", "y(T) / (K c)", kind="formula", hint="e.g. 0.5 or 1 - exp(-2)"),),
-        checks=(Check(
-            "prep4.fraction", "1 - exp(-1)", abs_tol=0.005,
-            mistakes=(("exp(-1)", "0.368 is the part still missing at t = T, not the part reached"),),
-            explain="y(T) = K c (1 - e^-1), about 0.632 K c",
-        ),),
+        fields=(
+            Field("prep4.fraction", "y(T) / (K c)", kind="formula", hint="e.g. 0.5 or 1 - exp(-2)"),
+        ),
+        checks=(
+            Check(
+                "prep4.fraction",
+                "1 - exp(-1)",
+                abs_tol=0.005,
+                mistakes=(
+                    ("exp(-1)", "0.368 is the part still missing at t = T, not the part reached"),
+                ),
+                explain="y(T) = K c (1 - e^-1), about 0.632 K c",
+            ),
+        ),
     ),
     Step(
-        "prep5", "Preparation", "Preparation 5: the time constant as a percentage",
+        "prep5",
+        "Preparation",
+        "Preparation 5: the time constant as a percentage",
         "Turn the previous answer into the usual rule for reading T off a plot.",
         "The time constant is the time the output needs to cover a certain share of its total "
         "change after a step. Type that share in percent.",
         fields=(Field("prep5.percent", "share of the final value", unit="%"),),
-        checks=(Check(
-            "prep5.percent", "1 - exp(-1)", abs_tol=0.01,
-            mistakes=(
-                ("exp(-1)", "37 % is what is still missing at t = T"),
-                ("(1 - exp(-1))/100", "that reads as 0.63 %: type the percentage, 63 %"),
+        checks=(
+            Check(
+                "prep5.percent",
+                "1 - exp(-1)",
+                abs_tol=0.01,
+                mistakes=(
+                    ("exp(-1)", "37 % is what is still missing at t = T"),
+                    ("(1 - exp(-1))/100", "that reads as 0.63 %: type the percentage, 63 %"),
+                ),
+                explain="63 %: the output has covered 1 - e^-1 of its change after one T",
             ),
-            explain="63 %: the output has covered 1 - e^-1 of its change after one T",
-        ),),
+        ),
     ),
     Step(
-        "prep6", "Preparation", "Preparation 6: sketch a step response",
+        "prep6",
+        "Preparation",
+        "Preparation 6: sketch a step response",
         "Draw y(t) = K(1 - e^(-t/T))c for K = 3, T = 10, c = 2 and mark t = 10.",
         "Sketch it on paper: it starts at 0 with slope K c / T and levels off at K c. "
         "Type the value at t = 10.",
         fields=(Field("prep6.y10", "y(10)", kind="formula"),),
-        checks=(Check(
-            "prep6.y10", "3*2*(1 - exp(-1))", abs_tol=0.02,
-            mistakes=(
-                ("3*2", "6 is where the curve ends (K c), not its value at t = T"),
-                ("3*(1 - exp(-1))", "the step has size c = 2: multiply by c too"),
-                ("2*(1 - exp(-1))", "the gain K = 3 is missing"),
+        checks=(
+            Check(
+                "prep6.y10",
+                "3*2*(1 - exp(-1))",
+                abs_tol=0.02,
+                mistakes=(
+                    ("3*2", "6 is where the curve ends (K c), not its value at t = T"),
+                    ("3*(1 - exp(-1))", "the step has size c = 2: multiply by c too"),
+                    ("2*(1 - exp(-1))", "the gain K = 3 is missing"),
+                ),
+                explain="y(10) = 6 (1 - e^-1), about 3.79",
             ),
-            explain="y(10) = 6 (1 - e^-1), about 3.79",
-        ),),
+        ),
     ),
     # Preparation 7: Figure 2.1 (the oven's step response) is not in the text we have, so
     # its numbers cannot be checked against the figure. What can be checked is the method,
@@ -214,7 +242,9 @@ _PREPARATION: tuple[Step, ...] = (
     # final temperature is reached (T = t_63 - 4 min). The typical slips (forgetting the
     # 4 min, or not dividing by the power) get their own message.
     Step(
-        "prep7", "Preparation", "Preparation 7: an oven's time constant and gain",
+        "prep7",
+        "Preparation",
+        "Preparation 7: an oven's time constant and gain",
         "Read T and K of a first-order system off a recorded step response.",
         "In Figure 2.1 the heater goes from 0 to 1000 W at t = 4 min. Read the final temperature "
         "and the time at which 63 % of it is reached, then give T and K.",
@@ -226,19 +256,32 @@ _PREPARATION: tuple[Step, ...] = (
         ),
         checks=(
             Check(
-                "prep7.T", "t_63 - 240", rel_tol=0.02, abs_tol=6.0, env=(("t_63", "prep7.t_63"),),
-                mistakes=(("t_63", "the heater came on at t = 4 min, not at 0: count T from there"),),
+                "prep7.T",
+                "t_63 - 240",
+                rel_tol=0.02,
+                abs_tol=6.0,
+                env=(("t_63", "prep7.t_63"),),
+                mistakes=(
+                    ("t_63", "the heater came on at t = 4 min, not at 0: count T from there"),
+                ),
                 explain="T is the time from the step to 63 % of the final value",
             ),
             Check(
-                "prep7.K", "y_final/1000", rel_tol=0.02, env=(("y_final", "prep7.y_final"),),
-                mistakes=(("y_final", "divide the final temperature by the step in power, 1000 W"),),
+                "prep7.K",
+                "y_final/1000",
+                rel_tol=0.02,
+                env=(("y_final", "prep7.y_final"),),
+                mistakes=(
+                    ("y_final", "divide the final temperature by the step in power, 1000 W"),
+                ),
                 explain="K = final temperature / input step (the room is at 0 °C)",
             ),
         ),
     ),
     Step(
-        "prep8", "Preparation", "Preparation 8: T and K from another form",
+        "prep8",
+        "Preparation",
+        "Preparation 8: T and K from another form",
         "Bring a y' + b y = c u into the standard form T y' = -y + K u.",
         "Divide through so that y has coefficient 1, then read off T and K as formulas in a, b, c.",
         fields=(
@@ -246,73 +289,106 @@ _PREPARATION: tuple[Step, ...] = (
             Field("prep8.K", "K", kind="formula", names=("a", "b", "c")),
         ),
         checks=(
-            Check("prep8.T", "a/b", mistakes=(("b/a", "upside down: divide the equation by b"),), explain="T = a/b"),
             Check(
-                "prep8.K", "c/b",
-                mistakes=(("c/a", "divide by b (the coefficient of y), not by a"), ("b/c", "upside down")),
+                "prep8.T",
+                "a/b",
+                mistakes=(("b/a", "upside down: divide the equation by b"),),
+                explain="T = a/b",
+            ),
+            Check(
+                "prep8.K",
+                "c/b",
+                mistakes=(
+                    ("c/a", "divide by b (the coefficient of y), not by a"),
+                    ("b/c", "upside down"),
+                ),
                 explain="K = c/b",
             ),
         ),
     ),
     Step(
-        "prep9", "Preparation", "Preparation 9: read the whole lab",
+        "prep9",
+        "Preparation",
+        "Preparation 9: read the whole lab",
         "Arrive knowing every task and which answers the preparations feed into.",
         "Read through all the steps of this program; the remaining preparations are met on the way.",
         fields=(_note("prep9.notes"),),
     ),
     Step(
-        "prep10", "Preparation", "Preparation 10: counts to radians",
+        "prep10",
+        "Preparation",
+        "Preparation 10: counts to radians",
         "Scale the encoder so one wheel turn (720 counts) reads 2 pi rad.",
         "Give the gain that multiplies a count to give radians (a number or a formula).",
         fields=(Field("prep10.gain", "rad per count", kind="formula"),),
-        checks=(Check(
-            "prep10.gain", "2*pi/720", rel_tol=0.005,
-            mistakes=(
-                ("720/(2*pi)", "upside down: that turns radians into counts"),
-                ("360/720", "that is degrees per count; the lab works in radians"),
-                ("2*pi/48", "48 is per turn of the encoder shaft; the wheel turn gives 720"),
+        checks=(
+            Check(
+                "prep10.gain",
+                "2*pi/720",
+                rel_tol=0.005,
+                mistakes=(
+                    ("720/(2*pi)", "upside down: that turns radians into counts"),
+                    ("360/720", "that is degrees per count; the lab works in radians"),
+                    ("2*pi/48", "48 is per turn of the encoder shaft; the wheel turn gives 720"),
+                ),
+                explain="2 pi / 720, about 0.00873 rad per count (0.5 degree)",
             ),
-            explain="2 pi / 720, about 0.00873 rad per count (0.5 degree)",
-        ),),
+        ),
     ),
     Step(
-        "prep11", "Preparation", "Preparation 11: k_v from steady state",
+        "prep11",
+        "Preparation",
+        "Preparation 11: k_v from steady state",
         "Find the steady-state form of the electrical equation and solve it for k_v.",
         "With L = 0 and everything constant, u_A = R i + k_v omega. Give k_v as a formula in "
         "u_ss, R, i_ss and omega_ss.",
-        fields=(Field("prep11.k_v", "k_v", kind="formula", names=("u_ss", "R", "i_ss", "omega_ss")),),
-        checks=(Check(
-            "prep11.k_v", "(u_ss - R*i_ss)/omega_ss",
-            mistakes=(
-                ("u_ss/omega_ss", "the voltage across R (R i_ss) must come off first"),
-                ("(u_ss + R*i_ss)/omega_ss", "sign: the resistor takes R i_ss away from u_ss"),
+        fields=(
+            Field("prep11.k_v", "k_v", kind="formula", names=("u_ss", "R", "i_ss", "omega_ss")),
+        ),
+        checks=(
+            Check(
+                "prep11.k_v",
+                "(u_ss - R*i_ss)/omega_ss",
+                mistakes=(
+                    ("u_ss/omega_ss", "the voltage across R (R i_ss) must come off first"),
+                    ("(u_ss + R*i_ss)/omega_ss", "sign: the resistor takes R i_ss away from u_ss"),
+                ),
+                explain="k_v = (u_ss - R i_ss) / omega_ss",
             ),
-            explain="k_v = (u_ss - R i_ss) / omega_ss",
-        ),),
+        ),
     ),
     Step(
-        "prep12", "Preparation", "Preparation 12: f from steady state",
+        "prep12",
+        "Preparation",
+        "Preparation 12: f from steady state",
         "Use the mechanical equation at constant speed to get the friction coefficient.",
         "At constant speed omega' = 0, so k_a i = f omega. Give f in k_a, i_ss and omega_ss.",
         fields=(Field("prep12.f", "f", kind="formula", names=("k_a", "i_ss", "omega_ss")),),
-        checks=(Check(
-            "prep12.f", "k_a*i_ss/omega_ss",
-            mistakes=(
-                ("k_a*omega_ss/i_ss", "upside down: torque k_a i_ss over speed"),
-                ("i_ss/omega_ss", "the torque is k_a i_ss, not i_ss"),
+        checks=(
+            Check(
+                "prep12.f",
+                "k_a*i_ss/omega_ss",
+                mistakes=(
+                    ("k_a*omega_ss/i_ss", "upside down: torque k_a i_ss over speed"),
+                    ("i_ss/omega_ss", "the torque is k_a i_ss, not i_ss"),
+                ),
+                explain="f = k_a i_ss / omega_ss",
             ),
-            explain="f = k_a i_ss / omega_ss",
-        ),),
+        ),
     ),
     Step(
-        "prep13", "Preparation", "Preparation 13: one equation for the motor",
+        "prep13",
+        "Preparation",
+        "Preparation 13: one equation for the motor",
         "Eliminate the current between the electrical and the mechanical equation.",
         "Solve the electrical equation (L = 0) for i, put it into k_a i = J omega' + f omega and "
         "multiply by R; you should reach R J omega' = -(R f + k_v k_a) omega + k_a u_A.",
         fields=(_note("prep13.notes"),),
     ),
     Step(
-        "prep14", "Preparation", "Preparation 14: the motor's T and K",
+        "prep14",
+        "Preparation",
+        "Preparation 14: the motor's T and K",
         "Write the motor equation in the form T omega' + omega = K u_A.",
         "Divide the combined equation by (R f + k_v k_a). Give T and K as formulas in R, J, f, k_v, k_a.",
         fields=(
@@ -321,32 +397,45 @@ _PREPARATION: tuple[Step, ...] = (
         ),
         checks=(
             Check(
-                "prep14.T", "R*J/(R*f + k_v*k_a)",
-                mistakes=(("J/(R*f + k_v*k_a)", "R is missing in the numerator: the equation starts with R J omega'"),),
+                "prep14.T",
+                "R*J/(R*f + k_v*k_a)",
+                mistakes=(
+                    (
+                        "J/(R*f + k_v*k_a)",
+                        "R is missing in the numerator: the equation starts with R J omega'",
+                    ),
+                ),
                 explain="T = R J / (R f + k_v k_a)",
             ),
             Check(
-                "prep14.K", "k_a/(R*f + k_v*k_a)",
+                "prep14.K",
+                "k_a/(R*f + k_v*k_a)",
                 mistakes=(("R*k_a/(R*f + k_v*k_a)", "only k_a multiplies u_A"),),
                 explain="K = k_a / (R f + k_v k_a)",
             ),
         ),
     ),
     Step(
-        "prep15", "Preparation", "Preparation 15: J from the time constant",
+        "prep15",
+        "Preparation",
+        "Preparation 15: J from the time constant",
         "Plan how Task 13 turns a measured T into the inertia J.",
         "Solve your T formula for J. Give J in T, R, f, k_v and k_a.",
         fields=(Field("prep15.J", "J", kind="formula", names=("T", "R", "f", "k_v", "k_a")),),
-        checks=(Check(
-            "prep15.J", "T*(R*f + k_v*k_a)/R",
-            mistakes=(("T*R/(R*f + k_v*k_a)", "upside down: J = T (R f + k_v k_a) / R"),),
-            explain="J = T (R f + k_v k_a) / R",
-        ),),
+        checks=(
+            Check(
+                "prep15.J",
+                "T*(R*f + k_v*k_a)/R",
+                mistakes=(("T*R/(R*f + k_v*k_a)", "upside down: J = T (R f + k_v k_a) / R"),),
+                explain="J = T (R f + k_v k_a) / R",
+            ),
+        ),
     ),
 )
 
 _R_PLAUSIBLE = Plausible(
-    1.0, 20.0,
+    1.0,
+    20.0,
     low="below 1 Ω: a short, or the probes touch each other; this motor usually reads 3-6 Ω",
     high="above 20 Ω: a loose motor cable or the current jumper missing; this motor usually reads 3-6 Ω",
 )
@@ -354,60 +443,93 @@ _R_PLAUSIBLE = Plausible(
 
 def _u_ss(level: float) -> Field:
     return Field(
-        f"u_ss@{level:g}", f"u_ss at {level:g} V", unit="V", level=level,
+        f"u_ss@{level:g}",
+        f"u_ss at {level:g} V",
+        unit="V",
+        level=level,
         hint="multimeter on V=, between M1A and M1B",
-        plausible=(Plausible(
-            level - 1.5, level,
-            low=f"more than 1.5 V below the requested {level:g} V: is the voltage really set, and the meter on V=?",
-            high=f"above the requested {level:g} V: the driver only loses voltage; check the meter and the request",
-        ),),
+        plausible=(
+            Plausible(
+                level - 1.5,
+                level,
+                low=f"more than 1.5 V below the requested {level:g} V: is the voltage really set, and the meter on V=?",
+                high=f"above the requested {level:g} V: the driver only loses voltage; check the meter and the request",
+            ),
+        ),
     )
 
 
 def _omega_ss(level: float) -> Field:
     return Field(
-        f"omega_ss@{level:g}", f"omega_ss at {level:g} V", unit="rad/s", level=level, allow_negative=True,
+        f"omega_ss@{level:g}",
+        f"omega_ss at {level:g} V",
+        unit="rad/s",
+        level=level,
+        allow_negative=True,
         hint="captured from the live velocity (or typed)",
-        plausible=(Plausible(
-            0.5, 15.0,
-            low="the wheel hardly turns (or turns backwards): is the motor cable in and the jumper back?",
-            high="faster than this motor goes (about 7 rad/s at 4.5 V): check the counts-to-radians scaling",
-        ),),
+        plausible=(
+            Plausible(
+                0.5,
+                15.0,
+                low="the wheel hardly turns (or turns backwards): is the motor cable in and the jumper back?",
+                high="faster than this motor goes (about 7 rad/s at 4.5 V): check the counts-to-radians scaling",
+            ),
+        ),
     )
 
 
 def _i_ss(level: float) -> Field:
     return Field(
-        f"i_ss@{level:g}", f"i_ss at {level:g} V", unit="mA", level=level,
+        f"i_ss@{level:g}",
+        f"i_ss at {level:g} V",
+        unit="mA",
+        level=level,
         hint="multimeter on mA, in series through the jumper pins",
-        plausible=(Plausible(
-            0.005, 0.100,
-            low="below 5 mA: is the meter in series through the jumper pins, on the mA range?",
-            high="above 100 mA: probably the wrong thing measured or the meter in the wrong mode "
-                 "(expect 20-50 mA)",
-        ),),
+        plausible=(
+            Plausible(
+                0.005,
+                0.100,
+                low="below 5 mA: is the meter in series through the jumper pins, on the mA range?",
+                high="above 100 mA: probably the wrong thing measured or the meter in the wrong mode "
+                "(expect 20-50 mA)",
+            ),
+        ),
     )
 
 
 _LAB: tuple[Step, ...] = (
     Step(
-        "task1", "Set-up", "Task 1: connect the MinSeg",
+        "task1",
+        "Set-up",
+        "Task 1: connect the MinSeg",
         "Have a board (or the virtual MinSeg) talking to this program.",
         "Plug the MinSeg in by USB and pick it, or pick the virtual MinSeg to practise. The program "
         "already runs the board's code: there is nothing to build or download.",
         actions=("connect",),
     ),
     Step(
-        "task2", "Set-up", "Task 2: motor resistance R",
+        "task2",
+        "Set-up",
+        "Task 2: motor resistance R",
         "Measure the armature resistance directly.",
         "Unplug the USB cable so the board has no power. Put the multimeter on Ω and hold the probes "
         "on M1A and M1B (next to the motor cable); wait a few seconds for the value to settle. With "
         "the virtual MinSeg, read its multimeter panel.",
-        fields=(Field("R", "R", unit="Ω", plausible=(_R_PLAUSIBLE,), hint="multimeter on Ω, M1A-M1B, board unpowered"),),
+        fields=(
+            Field(
+                "R",
+                "R",
+                unit="Ω",
+                plausible=(_R_PLAUSIBLE,),
+                hint="multimeter on Ω, M1A-M1B, board unpowered",
+            ),
+        ),
         actions=("meter",),
     ),
     Step(
-        "task3", "Set-up", "Task 3: estimating the speed",
+        "task3",
+        "Set-up",
+        "Task 3: estimating the speed",
         "See how the speed is computed from the encoder angle, and what the manual's estimate costs.",
         "Spin the wheel or set a voltage. The manual's estimate takes the change in angle over one "
         "nominal 25 ms sample and averages the last 20 such values (half a second). Beside it is one "
@@ -415,7 +537,9 @@ _LAB: tuple[Step, ...] = (
         actions=("connect", "live_velocity"),
     ),
     Step(
-        "task4", "Steady state", "Task 4: u_ss and omega_ss",
+        "task4",
+        "Steady state",
+        "Task 4: u_ss and omega_ss",
         "For three requested voltages, record the voltage at the motor and the speed it settles at.",
         "Plug the USB cable back in. For 2.5, 3.5 and 4.5 V: set the voltage, wait until the speed "
         "is steady, capture omega_ss, and type the multimeter's reading u_ss (V=, M1A-M1B). Expect "
@@ -424,7 +548,9 @@ _LAB: tuple[Step, ...] = (
         actions=("capture_omega", "meter"),
     ),
     Step(
-        "task5", "Steady state", "Task 5: i_ss",
+        "task5",
+        "Steady state",
+        "Task 5: i_ss",
         "Record the steady current at the same three voltages.",
         "Pull the current jumper, put the multimeter (mA range) across the two pins, and repeat the "
         "three voltages, typing i_ss each time. Expect 20-50 mA. Put the jumper back afterwards.",
@@ -432,7 +558,9 @@ _LAB: tuple[Step, ...] = (
         actions=("meter",),
     ),
     Step(
-        "table", "Table", "Tasks 6-9: k_v, k_a and f",
+        "table",
+        "Table",
+        "Tasks 6-9: k_v, k_a and f",
         "Turn the table's readings into the motor constants.",
         "The table fills in k_v for each row from Preparation 11, takes the median, sets "
         "k_a = 0.65 k_v, and computes f per row from Preparation 12 with its median. Check the "
@@ -449,7 +577,9 @@ _LAB: tuple[Step, ...] = (
         ),
     ),
     Step(
-        "task10", "Step response", "Task 10: the step experiment",
+        "task10",
+        "Step response",
+        "Task 10: the step experiment",
         "Record the speed while the voltage jumps between 0 and 4.5 V a few times.",
         "Start the run: the board switches the request between 0 and 4.5 V on its own clock and the "
         "program records every sample. You can stop at any time; the motor is switched off. The fast "
@@ -458,17 +588,27 @@ _LAB: tuple[Step, ...] = (
         plans=(("manual", RunPlan()), ("fast", RunPlan(ts=0.005))),
     ),
     Step(
-        "task11", "Results", "Task 11: the static gain K",
+        "task11",
+        "Results",
+        "Task 11: the static gain K",
         "Read the steady speed of the steps and turn it into K from u_A to omega.",
         "Zoom in on one step. Note its final speed and the u_ss you measured at 4.5 V; K is their ratio.",
         fields=(
-            Field("own.omega_step", "your omega_ss in the steps", unit="rad/s", optional=True, compare="step.omega_ss"),
+            Field(
+                "own.omega_step",
+                "your omega_ss in the steps",
+                unit="rad/s",
+                optional=True,
+                compare="step.omega_ss",
+            ),
             Field("own.K", "your K", unit="rad/s/V", optional=True, compare="step.K"),
         ),
         actions=("results",),
     ),
     Step(
-        "task12", "Results", "Task 12: the time constant T",
+        "task12",
+        "Results",
+        "Task 12: the time constant T",
         "Read T off the step response.",
         "On one rising step, find when the speed has covered 63 % of its change; T is the time from "
         "the step to that moment. The program also fits T by least squares, with its interval.",
@@ -476,28 +616,44 @@ _LAB: tuple[Step, ...] = (
         actions=("results",),
     ),
     Step(
-        "task13", "Results", "Task 13: the inertia J",
+        "task13",
+        "Results",
+        "Task 13: the inertia J",
         "Get J from T and the constants of Tasks 2-9.",
         "Use Preparation 15: J = T (R f + k_v k_a) / R.",
         fields=(Field("own.J", "your J", unit="kg m^2", optional=True, compare="step.J"),),
         actions=("results",),
     ),
     Step(
-        "task14", "Results", "Task 14: the model",
+        "task14",
+        "Results",
+        "Task 14: the model",
         "Write the motor as one first-order equation with numbers.",
         "Fill T and K into T omega' = -omega + K u_A.",
         fields=(Field("own.model", "your model", kind="text", optional=True, compare="model"),),
         actions=("results",),
     ),
     Step(
-        "task15", "Results", "Task 15: speed at 5 V",
+        "task15",
+        "Results",
+        "Task 15: speed at 5 V",
         "Use the model to predict.",
         "With u_A = 5 V held, where does the speed settle? (The static gain answers it.)",
-        fields=(Field("own.omega_5", "your omega at 5 V", unit="rad/s", optional=True, compare="omega_at_5V"),),
+        fields=(
+            Field(
+                "own.omega_5",
+                "your omega at 5 V",
+                unit="rad/s",
+                optional=True,
+                compare="omega_at_5V",
+            ),
+        ),
         actions=("results",),
     ),
     Step(
-        "model_check", "Model check", "Model check: what the first-order model misses",
+        "model_check",
+        "Model check",
+        "Model check: what the first-order model misses",
         "Compare the recorded steps with the model's simulation and see where they differ.",
         "The program simulates the model on the recorded voltage and shows the measured speed, the "
         "model's, an extended model's, and the residuals, with the most likely cause named.",
@@ -509,36 +665,80 @@ _LAB: tuple[Step, ...] = (
 _OPTIONS_MSS = ("a model", "a system", "a signal")
 
 _SUMMARY = Step(
-    "summary", "Summary", "Summary and reflections (section 3.2)",
+    "summary",
+    "Summary",
+    "Summary and reflections (section 3.2)",
     "Check the concepts of the lab.",
     "Answer each question; one question takes more than one answer. Then write what is still unclear.",
     fields=(
         Field("summary.1", "The MinSeg DC-motor is", kind="choice", options=_OPTIONS_MSS),
-        Field("summary.2", "The differential equation describing the MinSeg DC-motor is", kind="choice", options=_OPTIONS_MSS),
-        Field("summary.3", "The time-constant describes", kind="choice", options=(
-            "how fast the system reacts to changing inputs",
-            "which constant value the output will converge to",
-        )),
-        Field("summary.4", "The static gain K describes", kind="choice", options=(
-            "the ratio between the output and input amplitudes in steady-state",
-            "the final value of the output",
-        )),
-        Field("summary.5", "The final amplitude of the output depends on", kind="choice", multiple=True, options=(
-            "the time-constant", "the input amplitude", "the static gain",
-        )),
-        Field("summary.6", "A first-order linear differential equation is", kind="choice", options=(
-            "uniquely defined by time-constant and static gain",
-            "not uniquely defined by time-constant and static gain",
-        )),
+        Field(
+            "summary.2",
+            "The differential equation describing the MinSeg DC-motor is",
+            kind="choice",
+            options=_OPTIONS_MSS,
+        ),
+        Field(
+            "summary.3",
+            "The time-constant describes",
+            kind="choice",
+            options=(
+                "how fast the system reacts to changing inputs",
+                "which constant value the output will converge to",
+            ),
+        ),
+        Field(
+            "summary.4",
+            "The static gain K describes",
+            kind="choice",
+            options=(
+                "the ratio between the output and input amplitudes in steady-state",
+                "the final value of the output",
+            ),
+        ),
+        Field(
+            "summary.5",
+            "The final amplitude of the output depends on",
+            kind="choice",
+            multiple=True,
+            options=(
+                "the time-constant",
+                "the input amplitude",
+                "the static gain",
+            ),
+        ),
+        Field(
+            "summary.6",
+            "A first-order linear differential equation is",
+            kind="choice",
+            options=(
+                "uniquely defined by time-constant and static gain",
+                "not uniquely defined by time-constant and static gain",
+            ),
+        ),
         Field("summary.unclear", "Most unclear to me is still", kind="text", optional=True),
     ),
     checks=(
         Check("summary.1", correct=(1,), explain="the motor itself is the system"),
-        Check("summary.2", correct=(0,), explain="the equation describes the system: it is a model"),
+        Check(
+            "summary.2", correct=(0,), explain="the equation describes the system: it is a model"
+        ),
         Check("summary.3", correct=(0,), explain="T sets the speed of the response"),
-        Check("summary.4", correct=(0,), explain="K is output over input in steady state; the final value also needs the input"),
-        Check("summary.5", correct=(1, 2), explain="the final value is K times the input amplitude; T only sets how fast"),
-        Check("summary.6", correct=(0,), explain="in the form T y' = -y + K u, T and K fix the equation"),
+        Check(
+            "summary.4",
+            correct=(0,),
+            explain="K is output over input in steady state; the final value also needs the input",
+        ),
+        Check(
+            "summary.5",
+            correct=(1, 2),
+            explain="the final value is K times the input amplitude; T only sets how fast",
+        ),
+        Check(
+            "summary.6",
+            correct=(0,),
+            explain="in the form T y' = -y + K u, T and K fix the equation",
+        ),
     ),
 )
 
@@ -580,12 +780,21 @@ def _close(a: float, b: float, rel: float, abs_: float) -> bool:
     return math.isfinite(a) and math.isfinite(b) and abs(a - b) <= abs_ + rel * abs(b)
 
 
-def _same(answer: Formula | float, expected: str, names: tuple[str, ...], env: Mapping[str, float],
-          rel: float, abs_: float) -> bool:
+def _same(
+    answer: Formula | float,
+    expected: str,
+    names: tuple[str, ...],
+    env: Mapping[str, float],
+    rel: float,
+    abs_: float,
+) -> bool:
     target = parse_formula(expected, names + tuple(env))
     if isinstance(answer, Formula):
         points = _samples(names) if names else [{}]
-        return all(_close(answer.value({**p, **env}), target.value({**p, **env}), rel, abs_) for p in points)
+        return all(
+            _close(answer.value({**p, **env}), target.value({**p, **env}), rel, abs_)
+            for p in points
+        )
     return _close(answer, target.value(dict(env)), rel, abs_)
 
 
@@ -652,11 +861,27 @@ def validate() -> list[str]:
                 parse_formula(wrong, fld.names + tuple(n for n, _ in c.env))
         except InputError as exc:
             problems.append(f"check {c.key}: {exc}")
-        problems += [f"check {c.key} env uses unknown field {k}" for _, k in c.env if k not in FIELDS]
+        problems += [
+            f"check {c.key} env uses unknown field {k}" for _, k in c.env if k not in FIELDS
+        ]
     return problems
 
 
 __all__ = [
-    "CHECKS", "FIELDS", "FIELD_STEP", "LEVELS", "PARTS", "STEPS", "STEP_INDEX", "Check",
-    "Feedback", "Field", "RunPlan", "Step", "check_answer", "read_formula", "step", "validate",
+    "CHECKS",
+    "FIELDS",
+    "FIELD_STEP",
+    "LEVELS",
+    "PARTS",
+    "STEPS",
+    "STEP_INDEX",
+    "Check",
+    "Feedback",
+    "Field",
+    "RunPlan",
+    "Step",
+    "check_answer",
+    "read_formula",
+    "step",
+    "validate",
 ]

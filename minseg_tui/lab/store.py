@@ -88,8 +88,10 @@ def atomic_write_text(path: Path, text: str) -> None:
 
 def damaged_message(path: Path, why: str) -> str:
     """The one-line message for a damaged session file: what is wrong and what to do."""
-    return (f"{why}; the file is left untouched. Start a new session (this folder is kept), "
-            f"or repair {path.name} by hand (or restore it from a backup) and open it again")
+    return (
+        f"{why}; the file is left untouched. Start a new session (this folder is kept), "
+        f"or repair {path.name} by hand (or restore it from a backup) and open it again"
+    )
 
 
 def read_session_file(path: Path) -> dict[str, Any]:
@@ -104,13 +106,17 @@ def read_session_file(path: Path) -> dict[str, Any]:
     except FileNotFoundError:
         raise SessionMissing(str(path.parent), None, f"no session here (no {path.name})") from None
     except OSError as exc:
-        raise SessionDamaged(str(path), None, damaged_message(path, f"cannot be read ({exc.strerror})")) from None
+        raise SessionDamaged(
+            str(path), None, damaged_message(path, f"cannot be read ({exc.strerror})")
+        ) from None
     try:
         data = json.loads(raw.decode("utf-8"))
     except UnicodeDecodeError:
         raise SessionDamaged(str(path), None, damaged_message(path, "is not UTF-8 text")) from None
     except json.JSONDecodeError as exc:
-        raise SessionDamaged(str(path), exc.lineno, damaged_message(path, f"is not valid JSON ({exc.msg})")) from None
+        raise SessionDamaged(
+            str(path), exc.lineno, damaged_message(path, f"is not valid JSON ({exc.msg})")
+        ) from None
     problem = schema_problem(data)
     if problem:
         raise SessionDamaged(str(path), None, damaged_message(path, problem))
@@ -118,8 +124,15 @@ def read_session_file(path: Path) -> dict[str, Any]:
 
 
 _REQUIRED: dict[str, type | tuple[type, ...]] = {
-    "id": str, "members": list, "date": str, "current_step": str, "entries": dict,
-    "captures": dict, "runs": list, "created": str, "modified": str,
+    "id": str,
+    "members": list,
+    "date": str,
+    "current_step": str,
+    "entries": dict,
+    "captures": dict,
+    "runs": list,
+    "created": str,
+    "modified": str,
 }
 
 
@@ -135,15 +148,24 @@ def schema_problem(data: object) -> str | None:
         if not isinstance(data.get(key), typ):
             return f"has no valid {key!r}"
     for key, e in data["entries"].items():
-        if not isinstance(e, dict) or not isinstance(e.get("text"), str) or not isinstance(e.get("ok"), bool):
+        if (
+            not isinstance(e, dict)
+            or not isinstance(e.get("text"), str)
+            or not isinstance(e.get("ok"), bool)
+        ):
             return f"has a broken entry {key!r}"
     for r in data["runs"]:
-        if not isinstance(r, dict) or not isinstance(r.get("name"), str) or not isinstance(r.get("file"), str):
+        if (
+            not isinstance(r, dict)
+            or not isinstance(r.get("name"), str)
+            or not isinstance(r.get("file"), str)
+        ):
             return "has a broken run record"
     return None
 
 
 # -- the lock ----------------------------------------------------------------------------------
+
 
 def _alive(pid: int) -> bool:
     if pid <= 0:
@@ -183,7 +205,8 @@ class Lock:
                 if owner is not None:
                     raise SessionLocked(
                         f"session {self.path.parent.name} is open in another minseg-tui (pid {owner}); "
-                        f"close that one first (if none is running, delete {self.path})") from None
+                        f"close that one first (if none is running, delete {self.path})"
+                    ) from None
                 with contextlib.suppress(FileNotFoundError):
                     os.unlink(self.path)  # stale: its owner is gone
                 continue
@@ -206,6 +229,7 @@ class Lock:
 
 
 # -- listing -----------------------------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class SessionInfo:
@@ -239,13 +263,30 @@ def list_sessions(root: Path) -> list[SessionInfo]:
         try:
             data = read_session_file(path)
         except InputError as exc:
-            out.append(SessionInfo(folder.name, folder, (), "", "", _mtime(path), damaged=str(exc),
-                                   locked_by=lock_owner(folder)))
+            out.append(
+                SessionInfo(
+                    folder.name,
+                    folder,
+                    (),
+                    "",
+                    "",
+                    _mtime(path),
+                    damaged=str(exc),
+                    locked_by=lock_owner(folder),
+                )
+            )
             continue
-        out.append(SessionInfo(
-            id=data["id"], path=folder, members=tuple(str(m) for m in data["members"]), date=data["date"],
-            last_step=data["current_step"], modified=data["modified"], locked_by=lock_owner(folder),
-        ))
+        out.append(
+            SessionInfo(
+                id=data["id"],
+                path=folder,
+                members=tuple(str(m) for m in data["members"]),
+                date=data["date"],
+                last_step=data["current_step"],
+                modified=data["modified"],
+                locked_by=lock_owner(folder),
+            )
+        )
     out.sort(key=lambda s: s.modified, reverse=True)
     return out
 
@@ -267,4 +308,6 @@ def resolve(session: str, root: Path) -> Path:
     q = Path(root) / session
     if (q / SESSION_FILE).exists():
         return q
-    raise SessionMissing(session, None, f"no session found (looked for {p / SESSION_FILE} and {q / SESSION_FILE})")
+    raise SessionMissing(
+        session, None, f"no session found (looked for {p / SESSION_FILE} and {q / SESSION_FILE})"
+    )

@@ -65,6 +65,7 @@ SHORT_T_SAMPLES: float = 3.0
 
 # -- steady state ------------------------------------------------------------------------------
 
+
 @dataclass(frozen=True)
 class Reading:
     """One row of the table: requested u_req (V), u_ss (V), omega_ss (rad/s), i_ss (mA).
@@ -80,7 +81,12 @@ class Reading:
 
     def problem(self) -> str | None:
         """What is wrong with this row for Tasks 6-9, as an 'expected ...' sentence, or None."""
-        values = {"u_req": self.u_req, "u_ss": self.u_ss, "omega_ss": self.omega_ss, "i_ss": self.i_ss}
+        values = {
+            "u_req": self.u_req,
+            "u_ss": self.u_ss,
+            "omega_ss": self.omega_ss,
+            "i_ss": self.i_ss,
+        }
         for name, v in values.items():
             if not math.isfinite(v):
                 return f"expected a number for {name}, got {v}"
@@ -115,7 +121,9 @@ def _check_R(R: float) -> None:
         raise InputError("--R", None, f"expected a positive resistance in ohm, got {R:g}")
 
 
-def steady_state(readings: Sequence[Reading], R: float, source: str = "table") -> tuple[tuple[Row, ...], float, float, float]:
+def steady_state(
+    readings: Sequence[Reading], R: float, source: str = "table"
+) -> tuple[tuple[Row, ...], float, float, float]:
     """Tasks 6-9: the rows with k_v and f, and the final (median) k_v, k_a = 0.65 k_v and f."""
     _check_R(R)
     if not readings:
@@ -134,9 +142,14 @@ def steady_state(readings: Sequence[Reading], R: float, source: str = "table") -
     for row in rows:
         if not (math.isfinite(row.k_v) and math.isfinite(row.f)):
             r = row.reading
-            raise InputError(source, r.line, (
-                f"expected readings of a plausible size (R i_ss = {R * r.i_ss * 1e-3:g} V, "
-                f"omega_ss = {r.omega_ss:g} rad/s), they give k_v = {row.k_v:g} and f = {row.f:g}"))
+            raise InputError(
+                source,
+                r.line,
+                (
+                    f"expected readings of a plausible size (R i_ss = {R * r.i_ss * 1e-3:g} V, "
+                    f"omega_ss = {r.omega_ss:g} rad/s), they give k_v = {row.k_v:g} and f = {row.f:g}"
+                ),
+            )
     f = float(np.median([row.f for row in rows]))
     return rows, k_v, k_a, f
 
@@ -152,25 +165,52 @@ def table_findings(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> lis
     for i, row in enumerate(rows):
         r = row.reading
         if r.i_ss < 1.0:
-            out.append(Finding("i_ss_units", f"{_row_name(i, r)}: i_ss = {r.i_ss:g} looks like amperes; the table wants mA ({r.i_ss * 1e3:g} mA?)."))
+            out.append(
+                Finding(
+                    "i_ss_units",
+                    f"{_row_name(i, r)}: i_ss = {r.i_ss:g} looks like amperes; the table wants mA ({r.i_ss * 1e3:g} mA?).",
+                )
+            )
         elif r.i_ss > 100.0:
-            out.append(Finding("i_ss_high", f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says you are probably measuring the wrong thing or the meter is in the wrong mode."))
+            out.append(
+                Finding(
+                    "i_ss_high",
+                    f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says you are probably measuring the wrong thing or the meter is in the wrong mode.",
+                )
+            )
         if row.k_v <= 0:
-            out.append(Finding("k_v_nonpositive", f"{_row_name(i, r)}: R i_ss = {R * r.i_ss * 1e-3:.3g} V is not below u_ss = {r.u_ss:g} V, so k_v comes out {row.k_v:.3g}; check R and i_ss."))
+            out.append(
+                Finding(
+                    "k_v_nonpositive",
+                    f"{_row_name(i, r)}: R i_ss = {R * r.i_ss * 1e-3:.3g} V is not below u_ss = {r.u_ss:g} V, so k_v comes out {row.k_v:.3g}; check R and i_ss.",
+                )
+            )
     if len(rows) >= 3:
         for i, row in enumerate(rows):
             dev = (row.k_v - k_v) / k_v if k_v else math.inf
             if abs(dev) > KV_OUTLIER:
-                out.append(Finding("k_v_outlier", (
-                    f"{_row_name(i, row.reading)}: k_v = {row.k_v:.4g} V s/rad is {abs(dev) * 100:.0f} % "
-                    f"{'above' if dev > 0 else 'below'} the median {k_v:.4g}: probably a bad reading "
-                    "(u_ss, omega_ss or i_ss of that row); the median keeps it out of the result.")))
+                out.append(
+                    Finding(
+                        "k_v_outlier",
+                        (
+                            f"{_row_name(i, row.reading)}: k_v = {row.k_v:.4g} V s/rad is {abs(dev) * 100:.0f} % "
+                            f"{'above' if dev > 0 else 'below'} the median {k_v:.4g}: probably a bad reading "
+                            "(u_ss, omega_ss or i_ss of that row); the median keeps it out of the result."
+                        ),
+                    )
+                )
     elif len(rows) == 2:
         a, b = rows[0].k_v, rows[1].k_v
         if abs(a - b) / abs(k_v) > 2 * KV_OUTLIER:
-            out.append(Finding("k_v_disagree", (
-                f"The two rows give k_v = {a:.4g} and {b:.4g} V s/rad, {abs(a - b) / abs(k_v) * 100:.0f} % apart: "
-                "one is probably a bad reading, and with two rows the median cannot tell which. Measure a third voltage.")))
+            out.append(
+                Finding(
+                    "k_v_disagree",
+                    (
+                        f"The two rows give k_v = {a:.4g} and {b:.4g} V s/rad, {abs(a - b) / abs(k_v) * 100:.0f} % apart: "
+                        "one is probably a bad reading, and with two rows the median cannot tell which. Measure a third voltage."
+                    ),
+                )
+            )
     out += _dry_friction(rows, k_a)
     return out
 
@@ -188,15 +228,25 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Finding]:
     slope, intercept = np.polyfit(w, torque, 1)
     line = ""
     if slope > 0 and intercept > 0:
-        line = (f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {slope:.3g} N m s/rad "
-                f"and a dry friction torque tau_c = {intercept:.3g} N m.")
-    return [Finding("dry_friction", (
-        f"f falls with speed, from {f[0]:.3g} at {w[0]:.3g} rad/s to {f[-1]:.3g} N m s/rad at {w[-1]:.3g} rad/s: "
-        "part of the friction is dry (Coulomb) friction, a torque that does not grow with speed. "
-        "The lab's model has viscous friction only, so its f depends on the speed it was measured at." + line))]
+        line = (
+            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {slope:.3g} N m s/rad "
+            f"and a dry friction torque tau_c = {intercept:.3g} N m."
+        )
+    return [
+        Finding(
+            "dry_friction",
+            (
+                f"f falls with speed, from {f[0]:.3g} at {w[0]:.3g} rad/s to {f[-1]:.3g} N m s/rad at {w[-1]:.3g} rad/s: "
+                "part of the friction is dry (Coulomb) friction, a torque that does not grow with speed. "
+                "The lab's model has viscous friction only, so its f depends on the speed it was measured at."
+                + line
+            ),
+        )
+    ]
 
 
 # -- the step response -------------------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class RisingStep:
@@ -298,7 +348,9 @@ class _Problem:
     def __init__(self, log: StepLog, windows: list[_Window]) -> None:
         tb = log.board_time()
         theta, self.angle_source = log.angle()
-        self.time_source = "the board's timestamps (t_us)" if "t_us" in log.extra else "the t column"
+        self.time_source = (
+            "the board's timestamps (t_us)" if "t_us" in log.extra else "the t column"
+        )
         self.taus: list[FloatArray] = []
         self.thetas: list[FloatArray] = []
         self.cols: list[list[int]] = []
@@ -354,8 +406,12 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
     a, b = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
     from scipy import optimize  # imported here: scipy costs ~0.5 s at start-up
 
-    res = optimize.minimize_scalar(lambda x: prob.solve(math.exp(x))[0], bounds=(math.log(a), math.log(b)),
-                                   method="bounded", options={"xatol": 1e-7})
+    res = optimize.minimize_scalar(
+        lambda x: prob.solve(math.exp(x))[0],
+        bounds=(math.log(a), math.log(b)),
+        method="bounded",
+        options={"xatol": 1e-7},
+    )
     T = math.exp(float(res.x))
     rss_min, coefs = prob.solve(T)
     dof = max(prob.n - prob.p, 1)
@@ -366,12 +422,20 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
 
     q = float(stats.t.ppf(0.975, dof))
     return TimeConstantFit(
-        T=T, ci=(max(T - q * se, 0.0), T + q * se), se=se, sigma=sigma, n_rows=prob.n,
-        n_steps=len(windows), angle_source=prob.angle_source, time_source=prob.time_source,
+        T=T,
+        ci=(max(T - q * se, 0.0), T + q * se),
+        se=se,
+        sigma=sigma,
+        n_rows=prob.n,
+        n_steps=len(windows),
+        angle_source=prob.angle_source,
+        time_source=prob.time_source,
     )
 
 
-def _reading_63(t: FloatArray, omega: FloatArray, start: int, post_last: int, w0: float, w_ss: float) -> float | None:
+def _reading_63(
+    t: FloatArray, omega: FloatArray, start: int, post_last: int, w0: float, w_ss: float
+) -> float | None:
     """The manual's reading: time from the step until omega first reaches 63 % of the way
     from w0 to w_ss, interpolated linearly between samples (s)."""
     level = w0 + E63 * (w_ss - w0)
@@ -397,13 +461,19 @@ def rising_steps(log: StepLog) -> list[RisingStep]:
         post = np.arange(e.end + 1, w.post_last + 1)
         w0 = float(np.mean(log.omega[pre]))
         w_ss = float(np.mean(log.omega[post[post.size // 2 :]]))
-        out.append(RisingStep(
-            row=e.start, line=log.line_of(e.start), t=float(log.t[e.start]),
-            u_req=float(e.after) if name == "u_req" else None,
-            u_high=float(np.mean(log.u[e.end : w.post_last])),
-            omega0=w0, omega_ss=w_ss, duration=float(log.t[w.post_last] - log.t[e.start]),
-            T_63=_reading_63(log.t, log.omega, e.start, w.post_last, w0, w_ss),
-        ))
+        out.append(
+            RisingStep(
+                row=e.start,
+                line=log.line_of(e.start),
+                t=float(log.t[e.start]),
+                u_req=float(e.after) if name == "u_req" else None,
+                u_high=float(np.mean(log.u[e.end : w.post_last])),
+                omega0=w0,
+                omega_ss=w_ss,
+                duration=float(log.t[w.post_last] - log.t[e.start]),
+                T_63=_reading_63(log.t, log.omega, e.start, w.post_last, w0, w_ss),
+            )
+        )
     return out
 
 
@@ -484,8 +554,14 @@ class Identification:
         out: dict[str, object] = {
             "R": self.R,
             "rows": [
-                {"u_req": r.reading.u_req, "u_ss": r.reading.u_ss, "omega_ss": r.reading.omega_ss,
-                 "i_ss": r.reading.i_ss, "k_v": r.k_v, "f": r.f}
+                {
+                    "u_req": r.reading.u_req,
+                    "u_ss": r.reading.u_ss,
+                    "omega_ss": r.reading.omega_ss,
+                    "i_ss": r.reading.i_ss,
+                    "k_v": r.k_v,
+                    "f": r.f,
+                }
                 for r in self.rows
             ],
             "k_v": self.k_v,
@@ -494,19 +570,32 @@ class Identification:
         }
         if self.step is not None:
             s = self.step
-            out["step"] = {"K": s.K, "T": s.T, "T_63": s.T_63, "T_ci": [s.T_ci[0], s.T_ci[1]],
-                           "J": s.J, "omega_ss": s.omega_ss}
+            out["step"] = {
+                "K": s.K,
+                "T": s.T,
+                "T_63": s.T_63,
+                "T_ci": [s.T_ci[0], s.T_ci[1]],
+                "J": s.J,
+                "omega_ss": s.omega_ss,
+            }
             out["model"] = {"T": s.T, "K": s.K}
             out["omega_at_5V"] = self.omega_at_5V
         return out
 
 
-def _step_result(log: StepLog, rows: tuple[Row, ...], R: float, k_v: float, k_a: float, f: float) -> tuple[StepResult, list[Finding]]:
+def _step_result(
+    log: StepLog, rows: tuple[Row, ...], R: float, k_v: float, k_a: float, f: float
+) -> tuple[StepResult, list[Finding]]:
     if not _windows(log)[0]:
         cmd, name = command(log)
-        raise InputError(log.source, log.line_of(0), (
-            f"expected a rising step in {name} (V) with at least one sample before it and 5 after it; "
-            f"found {sum(e.rising for e in find_edges(cmd))} rising edge(s), none usable"))
+        raise InputError(
+            log.source,
+            log.line_of(0),
+            (
+                f"expected a rising step in {name} (V) with at least one sample before it and 5 after it; "
+                f"found {sum(e.rising for e in find_edges(cmd))} rising edge(s), none usable"
+            ),
+        )
     refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
     if refused:
         raise InputError(log.source, None, refused)
@@ -531,58 +620,118 @@ def _step_result(log: StepLog, rows: tuple[Row, ...], R: float, k_v: float, k_a:
     how = hows[len(hows) // 2] if len(set(hows)) > 1 else hows[0]
     levels = sorted({s.u_req for s in steps if s.u_req is not None})
     if "log" in hows:
-        findings.append(Finding("u_ss_from_log", (
-            f"The log has no u_req column, so K divides by the applied voltage the log recorded "
-            f"({u_ss:.3g} V) instead of u_ss from the table.")))
+        findings.append(
+            Finding(
+                "u_ss_from_log",
+                (
+                    f"The log has no u_req column, so K divides by the applied voltage the log recorded "
+                    f"({u_ss:.3g} V) instead of u_ss from the table."
+                ),
+            )
+        )
     if "interpolated" in hows or "extrapolated" in hows:
         which = "extrapolated beyond" if "extrapolated" in hows else "interpolated between"
-        findings.append(Finding(f"u_ss_{'extrapolated' if 'extrapolated' in hows else 'interpolated'}", (
-            f"No table row has u_req = {', '.join(f'{v:g}' for v in levels)} V, the step's requested level; "
-            f"u_ss = {u_ss:.3g} V is {which} the table's rows.")))
+        findings.append(
+            Finding(
+                f"u_ss_{'extrapolated' if 'extrapolated' in hows else 'interpolated'}",
+                (
+                    f"No table row has u_req = {', '.join(f'{v:g}' for v in levels)} V, the step's requested level; "
+                    f"u_ss = {u_ss:.3g} V is {which} the table's rows."
+                ),
+            )
+        )
     if len(levels) > 1:
-        findings.append(Finding("several_levels", (
-            f"The rising steps go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
-            "of omega_ss / u_ss over the steps and omega_ss the median of their speeds.")))
+        findings.append(
+            Finding(
+                "several_levels",
+                (
+                    f"The rising steps go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
+                    "of omega_ss / u_ss over the steps and omega_ss the median of their speeds."
+                ),
+            )
+        )
     for s in steps:
         if s.u_req is None:
             continue
         w_table = _omega_ss_at(rows, s.u_req)
         if w_table is not None and abs(s.omega_ss - w_table) > STEP_VS_TABLE * w_table:
-            findings.append(Finding("step_vs_table", (
-                f"The step at t = {s.t:.3g} s settles at {s.omega_ss:.3g} rad/s, but the table gives "
-                f"{w_table:.3g} rad/s at u_req = {s.u_req:g} V ({abs(s.omega_ss / w_table - 1) * 100:.0f} % apart): "
-                "the two experiments do not agree (a different wheel load, battery level, or a misread value).")))
+            findings.append(
+                Finding(
+                    "step_vs_table",
+                    (
+                        f"The step at t = {s.t:.3g} s settles at {s.omega_ss:.3g} rad/s, but the table gives "
+                        f"{w_table:.3g} rad/s at u_req = {s.u_req:g} V ({abs(s.omega_ss / w_table - 1) * 100:.0f} % apart): "
+                        "the two experiments do not agree (a different wheel load, battery level, or a misread value)."
+                    ),
+                )
+            )
             break
     T = fit.T
     reads = [s.T_63 for s in steps if s.T_63 is not None]
     T_63 = float(np.median(reads)) if reads else None
     ts = log.ts
     if T < SHORT_T_SAMPLES * ts:
-        findings.append(Finding("T_short", (
-            f"T = {T * 1e3:.3g} ms is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {ts * 1e3:.3g} ms): "
-            "the speed rises within a few samples, so the 63 % reading measures the sampling and the "
-            "velocity computation as much as the motor. The least-squares T models the sampling and is the one to use.")))
+        findings.append(
+            Finding(
+                "T_short",
+                (
+                    f"T = {T * 1e3:.3g} ms is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {ts * 1e3:.3g} ms): "
+                    "the speed rises within a few samples, so the 63 % reading measures the sampling and the "
+                    "velocity computation as much as the motor. The least-squares T models the sampling and is the one to use."
+                ),
+            )
+        )
     if T_63 is not None and abs(T_63 - T) > 0.25 * T:
-        findings.append(Finding("T_63_differs", (
-            f"The 63 % reading ({T_63 * 1e3:.3g} ms) and the least-squares T ({T * 1e3:.3g} ms) differ by "
-            f"{abs(T_63 / T - 1) * 100:.0f} %. The measured speed is the mean over each sample interval, so "
-            "it lags the true speed by half a sample; a velocity filter lags it more.")))
+        findings.append(
+            Finding(
+                "T_63_differs",
+                (
+                    f"The 63 % reading ({T_63 * 1e3:.3g} ms) and the least-squares T ({T * 1e3:.3g} ms) differ by "
+                    f"{abs(T_63 / T - 1) * 100:.0f} %. The measured speed is the mean over each sample interval, so "
+                    "it lags the true speed by half a sample; a velocity filter lags it more."
+                ),
+            )
+        )
     short = [s for s in steps if s.duration < 5 * T]
     if short:
-        findings.append(Finding("not_settled", (
-            f"{len(short)} step(s) last less than 5 T ({5 * T:.3g} s): the speed may not have settled, "
-            "so omega_ss and K from them are uncertain.")))
+        findings.append(
+            Finding(
+                "not_settled",
+                (
+                    f"{len(short)} step(s) last less than 5 T ({5 * T:.3g} s): the speed may not have settled, "
+                    "so omega_ss and K from them are uncertain."
+                ),
+            )
+        )
     _, skipped = _windows(log)
     if skipped:
-        findings.append(Finding("steps_skipped", (
-            f"{len(skipped)} rising step(s) were too short or too close to the start of the log to use.")))
+        findings.append(
+            Finding(
+                "steps_skipped",
+                (
+                    f"{len(skipped)} rising step(s) were too short or too close to the start of the log to use."
+                ),
+            )
+        )
     J = inertia_from_time_constant(T, R, f, k_v, k_a)
-    result = StepResult(K=K, T=T, T_63=T_63, T_ci=fit.ci, J=J, omega_ss=omega_ss, u_ss=u_ss,
-                        u_ss_how=how, steps=tuple(steps), fit=fit)
+    result = StepResult(
+        K=K,
+        T=T,
+        T_63=T_63,
+        T_ci=fit.ci,
+        J=J,
+        omega_ss=omega_ss,
+        u_ss=u_ss,
+        u_ss_how=how,
+        steps=tuple(steps),
+        fit=fit,
+    )
     return result, findings
 
 
-def identify(readings: Sequence[Reading], R: float, log: StepLog | None = None, source: str = "table") -> Identification:
+def identify(
+    readings: Sequence[Reading], R: float, log: StepLog | None = None, source: str = "table"
+) -> Identification:
     """Tasks 6-15 from the table's readings, the resistance R (ohm) and optionally a step log.
 
     Raises InputError for a bad R, a bad row, or a log without a usable rising step.
@@ -593,4 +742,6 @@ def identify(readings: Sequence[Reading], R: float, log: StepLog | None = None, 
     if log is not None:
         step, more = _step_result(log, rows, R, k_v, k_a, f)
         findings += more
-    return Identification(R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, findings=tuple(findings))
+    return Identification(
+        R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, findings=tuple(findings)
+    )

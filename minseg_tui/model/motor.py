@@ -1,8 +1,8 @@
 """The manual's DC motor (equations 3.1-3.2 with L = 0) and its first-order form (3.7).
 
-    u_A = R i + k_v omega            (V)
-    k_a i = J omega' + f omega       (N m)
-    T omega' = -omega + K u_A,  T = R J / (R f + k_v k_a),  K = k_a / (R f + k_v k_a)
+u_A = R i + k_v omega            (V)
+k_a i = J omega' + f omega       (N m)
+T omega' = -omega + K u_A,  T = R J / (R f + k_v k_a),  K = k_a / (R f + k_v k_a)
 """
 
 from __future__ import annotations

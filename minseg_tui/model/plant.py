@@ -303,8 +303,16 @@ def record(
         omega[k] = plant.omega
         current[k] = plant.current
     return Recording(
-        t=t, t_us=t_us, seq=np.arange(n, dtype=np.int64), count=count, u_req=u, u_A=u_a,
-        omega_true=omega, current=current, params=params, ts=ts,
+        t=t,
+        t_us=t_us,
+        seq=np.arange(n, dtype=np.int64),
+        count=count,
+        u_req=u,
+        u_A=u_a,
+        omega_true=omega,
+        current=current,
+        params=params,
+        ts=ts,
     )
 
 

@@ -209,7 +209,9 @@ def problem(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = Non
     """
     t, u, y = (np.asarray(a, dtype=float) for a in (t, u, omega))
     if not (t.size == u.size == y.size):
-        return f"expected t, u and omega of the same length, got {t.size}, {u.size} and {y.size} rows"
+        return (
+            f"expected t, u and omega of the same length, got {t.size}, {u.size} and {y.size} rows"
+        )
     if t.size < MIN_ROWS:
         return f"expected at least {MIN_ROWS} rows to analyse, got {t.size}"
     for name, v in (("t (s)", t), ("u (V)", u), ("omega (rad/s)", y)):
@@ -223,8 +225,10 @@ def problem(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = Non
     period = float(np.median(np.diff(t))) if ts is None else float(ts)
     lo, hi = TS_RANGE
     if not (lo <= period <= hi):
-        return (f"expected a sample period between {lo * 1e3:g} ms and {hi:g} s, got {period:.3g} s "
-                "(is t in seconds?)")
+        return (
+            f"expected a sample period between {lo * 1e3:g} ms and {hi:g} s, got {period:.3g} s "
+            "(is t in seconds?)"
+        )
     if float(np.ptp(y)) == 0.0:
         return f"expected the speed to change after the steps; omega stays at {float(y[0]):g} rad/s"
     return None

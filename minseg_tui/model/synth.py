@@ -137,7 +137,11 @@ def make_log(
     rng = np.random.default_rng(seed)
     if cause != "none" and param is None:
         _, lo, hi = PARAM_RANGES[cause]
-        param = int(rng.integers(int(lo), int(hi) + 1)) if cause == "velocity_filter" else float(rng.uniform(lo, hi))
+        param = (
+            int(rng.integers(int(lo), int(hi) + 1))
+            if cause == "velocity_filter"
+            else float(rng.uniform(lo, hi))
+        )
     params = plant_for(cause, param)
     u_req = commands(rng, amplitudes, duration, half_period=half_period)
     late_row = None
@@ -164,9 +168,18 @@ def make_log(
     omega = _measured(count, params.cpr, taps)
     u = np.array([params.u_applied(v) for v in u_req])
     return SynthLog(
-        t=t, u=u, omega=omega, count=count, u_req=u_req, omega_true=omega_true,
-        cause=cause, param=None if param is None else float(param), taps=taps,
-        wild_row=wild_row, late_step_row=late_row, creep=creep,
+        t=t,
+        u=u,
+        omega=omega,
+        count=count,
+        u_req=u_req,
+        omega_true=omega_true,
+        cause=cause,
+        param=None if param is None else float(param),
+        taps=taps,
+        wild_row=wild_row,
+        late_step_row=late_row,
+        creep=creep,
     )
 
 
@@ -182,18 +195,27 @@ def _measured(count: NDArray[np.int64], cpr: int, taps: int) -> NDArray[np.float
     return (c[k] - c[np.maximum(k - taps, 0)]) / taps
 
 
-def _add_creep(theta: NDArray[np.float64], u_req: NDArray[np.float64], creep: float) -> NDArray[np.float64]:
+def _add_creep(
+    theta: NDArray[np.float64], u_req: NDArray[np.float64], creep: float
+) -> NDArray[np.float64]:
     """The angle of a wheel whose speed creeps up by ``creep`` (fraction) after each rise."""
     speed = np.diff(theta, prepend=theta[0])
     since = np.zeros(theta.size)
     for k in range(1, theta.size):
-        since[k] = since[k - 1] + 1 if u_req[k - 1] > 0 and u_req[k - 1] == u_req[max(k - 2, 0)] else 0
+        since[k] = (
+            since[k - 1] + 1 if u_req[k - 1] > 0 and u_req[k - 1] == u_req[max(k - 2, 0)] else 0
+        )
     extra = creep * (1.0 - np.exp(-since * TS / 0.8)) * (u_req > 0)
     return theta[0] + np.cumsum(speed * (1.0 + extra))
 
 
 def _sample_late(
-    params: PlantParams, u_req: NDArray[np.float64], seed: int, jitter_us: float, late_row: int, frac: float
+    params: PlantParams,
+    u_req: NDArray[np.float64],
+    seed: int,
+    jitter_us: float,
+    late_row: int,
+    frac: float,
 ) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.float64]]:
     """As :func:`record`, but the command of sample ``late_row`` arrives ``frac`` Ts late."""
     n = u_req.size

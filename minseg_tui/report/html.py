@@ -23,7 +23,9 @@ figure { margin: 1em 0; } figcaption { font-style: italic; color: #555; }
 
 def _table(t: Table) -> str:
     head = "".join(f"<th>{escape(h)}</th>" for h in t.header)
-    rows = "".join("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in row) + "</tr>" for row in t.rows)
+    rows = "".join(
+        "<tr>" + "".join(f"<td>{escape(c)}</td>" for c in row) + "</tr>" for row in t.rows
+    )
     return f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"
 
 
@@ -34,9 +36,13 @@ def _figure(f: Figure) -> str:
 
 def render(report: Report) -> str:
     """The report as an HTML document (text)."""
-    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-           f"<title>{escape(report.title)}</title><style>{_CSS}</style></head><body>",
-           f"<h1>{escape(report.title)}</h1>", f'<p class="byline">{escape(report.byline)}</p>']
+    out = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f"<title>{escape(report.title)}</title><style>{_CSS}</style></head><body>",
+        f"<h1>{escape(report.title)}</h1>",
+        f'<p class="byline">{escape(report.byline)}</p>',
+    ]
     for sec in report.sections:
         out.append(f"<h2>{escape(sec.title)}</h2>")
         for b in sec.blocks:

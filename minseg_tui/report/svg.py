@@ -47,7 +47,9 @@ def _fmt(v: float) -> str:
     return f"{v:.4g}"
 
 
-def thin(x: np.ndarray, y: np.ndarray, max_points: int = MAX_POINTS) -> tuple[np.ndarray, np.ndarray]:
+def thin(
+    x: np.ndarray, y: np.ndarray, max_points: int = MAX_POINTS
+) -> tuple[np.ndarray, np.ndarray]:
     """At most about ``max_points`` points: per bucket the first, min and max (in order)."""
     n = x.size
     if n <= max_points:
@@ -59,15 +61,27 @@ def thin(x: np.ndarray, y: np.ndarray, max_points: int = MAX_POINTS) -> tuple[np
         if b <= a:
             continue
         seg = y[a:b]
-        idx = sorted({a, a + int(np.nanargmin(seg)), a + int(np.nanargmax(seg))}) if np.isfinite(seg).any() else [a]
+        idx = (
+            sorted({a, a + int(np.nanargmin(seg)), a + int(np.nanargmax(seg))})
+            if np.isfinite(seg).any()
+            else [a]
+        )
         keep.extend(idx)
     keep.append(n - 1)
     k = np.array(sorted(set(keep)))
     return x[k], y[k]
 
 
-def plot(lines: Sequence[Line], *, title: str = "", xlabel: str = "", ylabel: str = "",
-         width: int = 720, height: int = 240, show_xlabel: bool = True) -> str:
+def plot(
+    lines: Sequence[Line],
+    *,
+    title: str = "",
+    xlabel: str = "",
+    ylabel: str = "",
+    width: int = 720,
+    height: int = 240,
+    show_xlabel: bool = True,
+) -> str:
     """One panel as an ``<svg>`` element (text)."""
     ml, mr, mt, mb = 62, 14, 24 if title else 10, 40 if show_xlabel else 22
     pw, ph = width - ml - mr, height - mt - mb
@@ -90,10 +104,14 @@ def plot(lines: Sequence[Line], *, title: str = "", xlabel: str = "", ylabel: st
     def sy(v: np.ndarray | float) -> np.ndarray | float:
         return mt + ph - (np.asarray(v) - y0) / (y1 - y0) * ph
 
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-           f'viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="11">']
+    out = [
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+        f'viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="11">'
+    ]
     if title:
-        out.append(f'<text x="{ml}" y="15" font-size="12" font-weight="bold">{escape(title)}</text>')
+        out.append(
+            f'<text x="{ml}" y="15" font-size="12" font-weight="bold">{escape(title)}</text>'
+        )
     out.append(f'<rect x="{ml}" y="{mt}" width="{pw}" height="{ph}" fill="none" stroke="#999"/>')
     for v in nice_ticks(x0, x1, 8):
         px = float(sx(v))
@@ -107,9 +125,13 @@ def plot(lines: Sequence[Line], *, title: str = "", xlabel: str = "", ylabel: st
         py = float(sy(0.0))
         out.append(f'<line x1="{ml}" y1="{py:.1f}" x2="{ml + pw}" y2="{py:.1f}" stroke="#bbb"/>')
     if show_xlabel and xlabel:
-        out.append(f'<text x="{ml + pw / 2}" y="{height - 6}" text-anchor="middle">{escape(xlabel)}</text>')
+        out.append(
+            f'<text x="{ml + pw / 2}" y="{height - 6}" text-anchor="middle">{escape(xlabel)}</text>'
+        )
     if ylabel:
-        out.append(f'<text transform="translate(13,{mt + ph / 2}) rotate(-90)" text-anchor="middle">{escape(ylabel)}</text>')
+        out.append(
+            f'<text transform="translate(13,{mt + ph / 2}) rotate(-90)" text-anchor="middle">{escape(ylabel)}</text>'
+        )
     for k, (ln, x, y) in enumerate(zip(lines, xs, ys, strict=True)):
         color = ln.color or COLORS[k % len(COLORS)]
         ok = np.isfinite(x) & np.isfinite(y)
@@ -118,11 +140,17 @@ def plot(lines: Sequence[Line], *, title: str = "", xlabel: str = "", ylabel: st
             x = np.repeat(x, 2)[1:]
             y = np.repeat(y, 2)[:-1]
         x, y = thin(x, y)
-        pts = " ".join(f"{a:.1f},{b:.1f}" for a, b in zip(np.asarray(sx(x)), np.asarray(sy(y)), strict=True))
+        pts = " ".join(
+            f"{a:.1f},{b:.1f}" for a, b in zip(np.asarray(sx(x)), np.asarray(sy(y)), strict=True)
+        )
         dash = ' stroke-dasharray="5,3"' if ln.dash else ""
-        out.append(f'<polyline fill="none" stroke="{color}" stroke-width="1.2"{dash} points="{pts}"/>')
+        out.append(
+            f'<polyline fill="none" stroke="{color}" stroke-width="1.2"{dash} points="{pts}"/>'
+        )
         lx = ml + 8 + 150 * k
-        out.append(f'<line x1="{lx}" y1="{mt + 10}" x2="{lx + 18}" y2="{mt + 10}" stroke="{color}" stroke-width="2"{dash}/>')
+        out.append(
+            f'<line x1="{lx}" y1="{mt + 10}" x2="{lx + 18}" y2="{mt + 10}" stroke="{color}" stroke-width="2"{dash}/>'
+        )
         out.append(f'<text x="{lx + 22}" y="{mt + 14}">{escape(ln.label)}</text>')
     out.append("</svg>")
     return "".join(out)

@@ -97,11 +97,16 @@ class LabApp(App[None]):
         Binding("f1", "help", "Help"),
         Binding("f2", "stop_motor", "STOP", priority=True),
         Binding("f8", "export", "Export"),
-        *[Binding(keys, f"panel('{method}')", label, show=bool(label)) for keys, method, label, _ in PANEL_KEYS],
+        *[
+            Binding(keys, f"panel('{method}')", label, show=bool(label))
+            for keys, method, label, _ in PANEL_KEYS
+        ],
         *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
     ]
 
-    def __init__(self, config: UiConfig, store: Store, open_device: Callable[[str], Device]) -> None:
+    def __init__(
+        self, config: UiConfig, store: Store, open_device: Callable[[str], Device]
+    ) -> None:
         super().__init__()
         self.config = config
         self.store = store
@@ -205,7 +210,7 @@ class LabApp(App[None]):
                 self.post_message(SamplesArrived(device.health(), self.live.total))
             rec = self.recording
             if rec is not None:  # the run's samples reach the disk within a second (the flush
-                rec.tick()       # fsyncs: here, never on the UI thread)
+                rec.tick()  # fsyncs: here, never on the UI thread)
             for ev in batch.events:
                 self.post_message(LinkEvent(ev))
             now = time.monotonic()
@@ -232,13 +237,18 @@ class LabApp(App[None]):
         duration = rec.plan.duration  # type: ignore[attr-defined]
         fraction = min(1.0, rec.elapsed / duration) if duration > 0 else 0.0
         for panel in self.screen.query(StepRunPanel):
-            panel.progress(fraction, f"recording {rec.name}: {rec.samples} samples, "
-                                     f"{rec.elapsed:.1f} of {duration:.1f} s · F2 stops")
+            panel.progress(
+                fraction,
+                f"recording {rec.name}: {rec.samples} samples, "
+                f"{rec.elapsed:.1f} of {duration:.1f} s · F2 stops",
+            )
 
     def start_run(self, name: str) -> None:
         """Task 10: start the board's step sequence for plan ``name`` and record it."""
         if self.device is None or self.lab is None:
-            self.notify("no device: the run needs the board or the virtual MinSeg", severity="error")
+            self.notify(
+                "no device: the run needs the board or the virtual MinSeg", severity="error"
+            )
             return
         if self.recording is not None:
             self.notify("a run is in progress; F2 stops it", severity="warning")
@@ -298,7 +308,11 @@ class LabApp(App[None]):
         self.event_text = EVENT_TEXT.get(kind, event.event.message)
         self.refresh_status()
         if kind in ("disconnected", "watchdog", "error"):
-            self.notify(self.event_text if kind != "error" else event.event.message, severity="warning", timeout=8)
+            self.notify(
+                self.event_text if kind != "error" else event.event.message,
+                severity="warning",
+                timeout=8,
+            )
 
     # -- what a step shows besides its entries -------------------------------------------
     def step_panel(self, step: object) -> Widget | None:
@@ -343,7 +357,9 @@ class LabApp(App[None]):
             try:
                 self.device.stop()
             except MinsegError as exc:
-                self.notify(f"{exc} (a board without USB power stops by itself)", severity="warning")
+                self.notify(
+                    f"{exc} (a board without USB power stops by itself)", severity="warning"
+                )
         if self.recording is not None:
             self.finish_run("stopped")
         self.refresh_status()
@@ -419,8 +435,13 @@ class LabApp(App[None]):
 
     def _exported(self, paths: tuple[str, ...]) -> None:
         self.exported = paths
-        self.notify("written: " + ", ".join(paths[:2]) + (f" and {len(paths) - 2} run CSV" if len(paths) > 2 else ""),
-                    title="report", timeout=10)
+        self.notify(
+            "written: "
+            + ", ".join(paths[:2])
+            + (f" and {len(paths) - 2} run CSV" if len(paths) > 2 else ""),
+            title="report",
+            timeout=10,
+        )
         self.entry_stored("export")
 
     def go_to_step(self, step_id: str) -> None:
@@ -468,13 +489,35 @@ class LabApp(App[None]):
     def get_system_commands(self, screen: Screen) -> Iterable[SystemCommand]:
         yield from super().get_system_commands(screen)
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
-        yield SystemCommand("Set step voltage", "Request the next of 2.5/3.5/4.5 V on the board (F3)", self.action_set_voltage)
-        yield SystemCommand("Capture omega_ss", "Mean over the settled window (F4)", self.action_capture)
-        yield SystemCommand("Run step sequence", "Task 10 on the board, 25 ms (F5)", self.action_run_steps)
-        yield SystemCommand("Run fast step sequence", "Task 10 at 5 ms, board-timed (F6)", self.action_run_fast)
-        yield SystemCommand("Export report", "Markdown, HTML and CSV into the session folder (F8)", self.action_export)
-        yield SystemCommand("Import a step log", "Load a log recorded elsewhere into the model check", self.import_log)
-        yield SystemCommand("Switch to virtual board", "Use the virtual MinSeg instead of the board", self.switch_to_virtual)
+        yield SystemCommand(
+            "Set step voltage",
+            "Request the next of 2.5/3.5/4.5 V on the board (F3)",
+            self.action_set_voltage,
+        )
+        yield SystemCommand(
+            "Capture omega_ss", "Mean over the settled window (F4)", self.action_capture
+        )
+        yield SystemCommand(
+            "Run step sequence", "Task 10 on the board, 25 ms (F5)", self.action_run_steps
+        )
+        yield SystemCommand(
+            "Run fast step sequence", "Task 10 at 5 ms, board-timed (F6)", self.action_run_fast
+        )
+        yield SystemCommand(
+            "Export report",
+            "Markdown, HTML and CSV into the session folder (F8)",
+            self.action_export,
+        )
+        yield SystemCommand(
+            "Import a step log",
+            "Load a log recorded elsewhere into the model check",
+            self.import_log,
+        )
+        yield SystemCommand(
+            "Switch to virtual board",
+            "Use the virtual MinSeg instead of the board",
+            self.switch_to_virtual,
+        )
         yield SystemCommand("Keys", "The help screen (F1)", self.action_help)
 
     def on_unmount(self) -> None:

@@ -95,11 +95,15 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
     """The formula of a computed cell of row ``r`` with the row's numbers in it (R in ohm,
     k_a in N m/A, the final one)."""
     if name == "k_v" and None not in (r.k_v, r.u_ss, r.i_ss, r.omega_ss, R):
-        return (f"k_v = (u_ss - R i_ss) / omega_ss = ({r.u_ss:.3g} V - {R:.3g} Ω × {r.i_ss:.3g} A)"
-                f" / {r.omega_ss:.3g} rad/s = {r.k_v:.4g} V s/rad")
+        return (
+            f"k_v = (u_ss - R i_ss) / omega_ss = ({r.u_ss:.3g} V - {R:.3g} Ω × {r.i_ss:.3g} A)"
+            f" / {r.omega_ss:.3g} rad/s = {r.k_v:.4g} V s/rad"
+        )
     if name == "f" and None not in (r.f, r.i_ss, r.omega_ss, k_a):
-        return (f"f = k_a i_ss / omega_ss = {k_a:.4g} N m/A × {r.i_ss:.3g} A / {r.omega_ss:.3g} rad/s"
-                f" = {r.f * 1e3:.4g} mN m s/rad (k_a = 0.65 × median k_v)")
+        return (
+            f"f = k_a i_ss / omega_ss = {k_a:.4g} N m/A × {r.i_ss:.3g} A / {r.omega_ss:.3g} rad/s"
+            f" = {r.f * 1e3:.4g} mN m s/rad (k_a = 0.65 × median k_v)"
+        )
     return _FORMULAS[name]
 
 
@@ -107,12 +111,20 @@ def _result(e: Entry | None, feedback: str = "") -> EntryResult | None:
     if e is None:
         return None
     if e.refused:  # a refused attempt over an accepted entry: say so, and what still counts
-        return EntryResult(False, f"{e.refused[1]} (still using {e.text.strip()!r})", tuple(e.warnings), feedback)
+        return EntryResult(
+            False, f"{e.refused[1]} (still using {e.text.strip()!r})", tuple(e.warnings), feedback
+        )
     return EntryResult(e.ok, e.message, tuple(e.warnings), feedback)
 
 
 # -- the device ---------------------------------------------------------------------------
-_STATES = {"connected": "ok", "alive": "ok", "disconnected": "lost", "silent": "silent", "error": "lost"}
+_STATES = {
+    "connected": "ok",
+    "alive": "ok",
+    "disconnected": "lost",
+    "silent": "silent",
+    "error": "lost",
+}
 
 
 class LinkDevice:
@@ -122,8 +134,11 @@ class LinkDevice:
         self.link = link
         ident = link.ident
         self.info = DeviceInfo(
-            name=ident.board if ident else "?", firmware=ident.fw if ident else "?",
-            virtual=link.board is not None, port=link.port, fallback=fallback,
+            name=ident.board if ident else "?",
+            firmware=ident.fw if ident else "?",
+            virtual=link.board is not None,
+            port=link.port,
+            fallback=fallback,
         )
         self._state = "ok" if link.connected else "lost"
 
@@ -337,31 +352,63 @@ class SessionLab:
             rows = []
             for r in self.session.table():
                 spread = "" if r.spread is None else f" ±{r.spread:.2f}"
-                rows.append((
-                    Cell(f"{r.level:g}", f"u = {r.level:g} V: the voltage requested on the board"),
-                    Cell(_num(r.u_ss, 3), "u_ss: read on the multimeter (V)" if r.u_ss is not None else ""),
-                    Cell(_num(r.omega_ss, 3) + spread,
-                         "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
-                         if r.spread is not None else "omega_ss: typed in (rad/s)" if r.omega_ss is not None else ""),
-                    Cell(_num(None if r.i_ss is None else r.i_ss * 1e3, 3),
-                         "i_ss: read on the multimeter (mA)" if r.i_ss is not None else ""),
-                    Cell(_num(r.k_v, 4), _row_formula("k_v", r, R, k_a)),
-                    Cell(_num(None if r.f is None else r.f * 1e3, 4), _row_formula("f", r, R, k_a)),
-                ))
+                rows.append(
+                    (
+                        Cell(
+                            f"{r.level:g}", f"u = {r.level:g} V: the voltage requested on the board"
+                        ),
+                        Cell(
+                            _num(r.u_ss, 3),
+                            "u_ss: read on the multimeter (V)" if r.u_ss is not None else "",
+                        ),
+                        Cell(
+                            _num(r.omega_ss, 3) + spread,
+                            "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
+                            if r.spread is not None
+                            else "omega_ss: typed in (rad/s)"
+                            if r.omega_ss is not None
+                            else "",
+                        ),
+                        Cell(
+                            _num(None if r.i_ss is None else r.i_ss * 1e3, 3),
+                            "i_ss: read on the multimeter (mA)" if r.i_ss is not None else "",
+                        ),
+                        Cell(_num(r.k_v, 4), _row_formula("k_v", r, R, k_a)),
+                        Cell(
+                            _num(None if r.f is None else r.f * 1e3, 4),
+                            _row_formula("f", r, R, k_a),
+                        ),
+                    )
+                )
             results: tuple[tuple[str, Cell], ...] = ()
             if ident is not None:
-                results = (("k_v", Cell(_fmt(ident.k_v, "V s/rad"), _FORMULAS["k_v"])),
-                           ("k_a", Cell(_fmt(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
-                           ("f", Cell(_fmt_milli(ident.f, "N m s/rad"), _FORMULAS["f"])))
-            warnings = tuple(n.message for n in self.session.warnings("table")) + tuple(res.problems)
-            return TableView(TABLE_COLUMNS, tuple(rows), results,
-                             tuple(dict.fromkeys(warnings)), self._compare("table"))
+                results = (
+                    ("k_v", Cell(_fmt(ident.k_v, "V s/rad"), _FORMULAS["k_v"])),
+                    ("k_a", Cell(_fmt(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
+                    ("f", Cell(_fmt_milli(ident.f, "N m s/rad"), _FORMULAS["f"])),
+                )
+            warnings = tuple(n.message for n in self.session.warnings("table")) + tuple(
+                res.problems
+            )
+            return TableView(
+                TABLE_COLUMNS,
+                tuple(rows),
+                results,
+                tuple(dict.fromkeys(warnings)),
+                self._compare("table"),
+            )
 
     def _compare(self, step_id: str) -> tuple[tuple[str, str, str], ...]:
         out = []
         for c in self.session.comparisons(step_id):
-            own = "—" if c.own is None else (c.own if isinstance(c.own, str) else _fmt(c.own, c.unit))
-            comp = "—" if c.computed is None else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, c.unit))
+            own = (
+                "—" if c.own is None else (c.own if isinstance(c.own, str) else _fmt(c.own, c.unit))
+            )
+            comp = (
+                "—"
+                if c.computed is None
+                else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, c.unit))
+            )
             if c.rel_diff is not None:
                 comp += f" ({c.rel_diff:+.0%})"
             out.append((c.label, own, comp))
@@ -380,11 +427,15 @@ class SessionLab:
         rec.close()
         with self.lock:
             info = self.session.finish_run(rec.recorder)
-            if info is not None:  # the new run is the one Tasks 11-15 use (an import or a pick is dropped)
+            if (
+                info is not None
+            ):  # the new run is the one Tasks 11-15 use (an import or a pick is dropped)
                 self.session.select_run(None)
         if info is None:
             return f"run {rec.name}: too few samples, nothing kept"
-        return f"run {info.name}: {info.samples} samples kept" + (f", {info.dropped} lost on the link" if info.dropped else "")
+        return f"run {info.name}: {info.samples} samples kept" + (
+            f", {info.dropped} lost on the link" if info.dropped else ""
+        )
 
     def runs(self) -> tuple[str, ...]:
         """Names of the recorded runs, oldest first."""
@@ -421,10 +472,22 @@ class SessionLab:
                 fit = model_identify.fit_time_constant(log)
             except (InputError, ValueError):
                 fit = None
-            out.append(RunView(
-                r.name, r.kind, r.ts, r.samples, r.interrupted, np.asarray(log.t), np.asarray(log.omega), lab,
-                _t63(log), _t63(replace(log, omega=lab)), fit.T if fit else None, fit.ci if fit else None,
-            ))
+            out.append(
+                RunView(
+                    r.name,
+                    r.kind,
+                    r.ts,
+                    r.samples,
+                    r.interrupted,
+                    np.asarray(log.t),
+                    np.asarray(log.omega),
+                    lab,
+                    _t63(log),
+                    _t63(replace(log, omega=lab)),
+                    fit.T if fit else None,
+                    fit.ci if fit else None,
+                )
+            )
         return tuple(out)
 
     # -- Tasks 11-15 ---------------------------------------------------------------------------
@@ -457,8 +520,14 @@ class SessionLab:
             steps = tuple(StepWindow(s.t, s.t + s.duration, s.T_63) for s in st.steps)
         empty = np.zeros(0)
         return ResultsView(
-            res.run, np.asarray(log.t) if log else empty, np.asarray(log.omega) if log else empty,
-            np.asarray(log.u) if log else empty, steps, tuple(lines), compare, tuple(res.problems),
+            res.run,
+            np.asarray(log.t) if log else empty,
+            np.asarray(log.omega) if log else empty,
+            np.asarray(log.u) if log else empty,
+            steps,
+            tuple(lines),
+            compare,
+            tuple(res.problems),
         )
 
     # -- the model check ---------------------------------------------------------------------------
@@ -470,13 +539,27 @@ class SessionLab:
         if r is None:
             return CheckView(mc.run, problem=mc.problem or "no result")
         f, e = r.finding, r.extended
-        ext = "none needed (the baseline is enough)" if f.cause == "none" else (
-            f"{e.model}: " + ", ".join(f"{k} = {v:.3g}" for k, v in e.params.items()))
-        gain = (f"rmse {r.baseline.rmse:.3f} → {e.rmse:.3f} rad/s ({r.gain.get('rmse_reduction_percent', 0.0):.0f} % lower), "
-                f"fit {r.baseline.fit_percent:.1f} → {e.fit_percent:.1f} %")
+        ext = (
+            "none needed (the baseline is enough)"
+            if f.cause == "none"
+            else (f"{e.model}: " + ", ".join(f"{k} = {v:.3g}" for k, v in e.params.items()))
+        )
+        gain = (
+            f"rmse {r.baseline.rmse:.3f} → {e.rmse:.3f} rad/s ({r.gain.get('rmse_reduction_percent', 0.0):.0f} % lower), "
+            f"fit {r.baseline.fit_percent:.1f} → {e.fit_percent:.1f} %"
+        )
         return CheckView(
-            mc.run, np.asarray(r.t), np.asarray(r.omega), np.asarray(r.baseline_pred), np.asarray(r.extended_pred),
-            np.asarray(r.omega) - np.asarray(r.baseline_pred), f.cause, f.evidence, ext, gain, check_text(r),
+            mc.run,
+            np.asarray(r.t),
+            np.asarray(r.omega),
+            np.asarray(r.baseline_pred),
+            np.asarray(r.extended_pred),
+            np.asarray(r.omega) - np.asarray(r.baseline_pred),
+            f.cause,
+            f.evidence,
+            ext,
+            gain,
+            check_text(r),
         )
 
     def import_run(self, path: str) -> str:
@@ -510,10 +593,22 @@ class SessionStore:
         self.writer = writer
 
     def list(self) -> list[SessionSummary]:
-        return [SessionSummary(str(s.path), ", ".join(s.members), s.date, s.last_step,
-                               (f"damaged — {s.damaged}" if s.damaged else
-                                f"in use by another minseg-tui (pid {s.locked_by})" if s.locked_by else ""))
-                for s in lab_store.list_sessions(self.root)]
+        return [
+            SessionSummary(
+                str(s.path),
+                ", ".join(s.members),
+                s.date,
+                s.last_step,
+                (
+                    f"damaged — {s.damaged}"
+                    if s.damaged
+                    else f"in use by another minseg-tui (pid {s.locked_by})"
+                    if s.locked_by
+                    else ""
+                ),
+            )
+            for s in lab_store.list_sessions(self.root)
+        ]
 
     def new(self, members: str, date: str) -> SessionLab:
         names = [m.strip() for m in members.split(",") if m.strip()]
@@ -528,6 +623,19 @@ def open_store(config: UiConfig, writer: ReportWriter | None = None) -> SessionS
     return SessionStore(Path(config.sessions), writer)
 
 
-__all__ = ["CAPTURE_VELOCITY_WINDOW", "FIELDS", "CheckView", "DeviceError", "LinkDevice", "MinsegError",
-           "Recording", "ResultsView", "RunView", "SessionLab", "SessionStore", "StepWindow", "open_device",
-           "open_store"]
+__all__ = [
+    "CAPTURE_VELOCITY_WINDOW",
+    "FIELDS",
+    "CheckView",
+    "DeviceError",
+    "LinkDevice",
+    "MinsegError",
+    "Recording",
+    "ResultsView",
+    "RunView",
+    "SessionLab",
+    "SessionStore",
+    "StepWindow",
+    "open_device",
+    "open_store",
+]

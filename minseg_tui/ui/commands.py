@@ -19,10 +19,18 @@ class StepCommands(Provider):
         if lab is None:
             return []
         go, use = self.app.go_to_step, self.app.use_run  # type: ignore[attr-defined]
-        return ([(f"Go to: {s.title}", partial(go, s.id), "move to this step") for s in lab.steps]
-                + [(f"Use run {name} for Tasks 11-15", partial(use, name), "the run the results and the model check use")
-                   for name in lab.runs()]
-                + [("Use the latest run for Tasks 11-15", partial(use, None), "the default")])
+        return (
+            [(f"Go to: {s.title}", partial(go, s.id), "move to this step") for s in lab.steps]
+            + [
+                (
+                    f"Use run {name} for Tasks 11-15",
+                    partial(use, name),
+                    "the run the results and the model check use",
+                )
+                for name in lab.runs()
+            ]
+            + [("Use the latest run for Tasks 11-15", partial(use, None), "the default")]
+        )
 
     async def discover(self) -> Hits:
         for text, action, help_text in self._entries():

@@ -45,7 +45,9 @@ class LiveBuffer:
             self._count.clear()
             self._u.clear()
 
-    def freeze(self, t: NDArray[np.float64], count: NDArray[np.int64], u: NDArray[np.float64]) -> None:
+    def freeze(
+        self, t: NDArray[np.float64], count: NDArray[np.int64], u: NDArray[np.float64]
+    ) -> None:
         """Replace the contents with given arrays (a recorded stream, for pinned screens)."""
         with self._lock:
             self.clear_unlocked()
@@ -61,5 +63,8 @@ class LiveBuffer:
     def snapshot(self) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.float64]]:
         """Copies of (t, count, u_req) as arrays, oldest first."""
         with self._lock:
-            return (np.array(self._t, dtype=float), np.array(self._count, dtype=np.int64),
-                    np.array(self._u, dtype=float))
+            return (
+                np.array(self._t, dtype=float),
+                np.array(self._count, dtype=np.int64),
+                np.array(self._u, dtype=float),
+            )

@@ -97,10 +97,12 @@ class LivePanel(Vertical):
             tt, cc = t[keep], count[keep]
             x = tt - tt[0]
             self.query_one("#plot-angle", TracePlot).show([Trace(x, signals.angle(cc), "theta")])
-            self.query_one("#plot-speed", TracePlot).show([
-                Trace(x, signals.timestamp_velocity(tt, cc), "board time"),
-                Trace(x, signals.lab_velocity(cc), "manual", "dot"),
-            ])
+            self.query_one("#plot-speed", TracePlot).show(
+                [
+                    Trace(x, signals.timestamp_velocity(tt, cc), "board time"),
+                    Trace(x, signals.lab_velocity(cc), "manual", "dot"),
+                ]
+            )
         steady = self.screen.query("#steady")
         if not steady:
             return
@@ -110,8 +112,10 @@ class LivePanel(Vertical):
             s = self._lab_app.lab.steady(t, count)
             state = "SETTLED" if s.settled else "not settled"
             mean = "—" if s.mean != s.mean else f"{s.mean:.2f} ± {s.spread:.2f} rad/s"
-            text = (f"steady: {state} · {mean} over {s.window:g} s {s.note}".rstrip()
-                    + f"\nrequested {level} · {keys} · F4 capture")
+            text = (
+                f"steady: {state} · {mean} over {s.window:g} s {s.note}".rstrip()
+                + f"\nrequested {level} · {keys} · F4 capture"
+            )
         else:
             text = f"requested {level} · {keys}"
         if t.size == 0:
@@ -121,7 +125,10 @@ class LivePanel(Vertical):
     def offers(self, action: str) -> bool:
         """Whether the panel's key ``action`` does something on this step (F3 where there are
         voltages to set, F4 on Task 4)."""
-        return {"set_voltage": bool(self.levels), "capture": "capture_omega" in self.step.actions}.get(action, True)
+        return {
+            "set_voltage": bool(self.levels),
+            "capture": "capture_omega" in self.step.actions,
+        }.get(action, True)
 
     def set_voltage(self) -> None:
         """F3: request the next of this step's voltages on the board."""
@@ -181,8 +188,11 @@ class MeterPanel(Static):
             self.update("multimeter: read the one on the bench (M1A-M1B)")
             return
         m = self._lab_app.meter_reading
-        self.update("multimeter (virtual, M1A-M1B): reading…" if m is None else
-                    f"multimeter (virtual, M1A-M1B): {m.u_A:.2f} V · {m.i * 1000:.1f} mA · {m.R:.1f} Ω")
+        self.update(
+            "multimeter (virtual, M1A-M1B): reading…"
+            if m is None
+            else f"multimeter (virtual, M1A-M1B): {m.u_A:.2f} V · {m.i * 1000:.1f} mA · {m.R:.1f} Ω"
+        )
 
 
 class Recomputing:
@@ -210,9 +220,11 @@ class ConnectPanel(Recomputing, Static):
         if d is None:
             text = "No device yet. Ctrl+P → Switch to virtual board to practise."
         elif d.info.virtual:
-            text = (f"Connected to the VIRTUAL MinSeg ({d.info.firmware})"
-                    + (": no board was found." if d.info.fallback else ".")
-                    + " Plug a board in and restart with --port, or keep practising.")
+            text = (
+                f"Connected to the VIRTUAL MinSeg ({d.info.firmware})"
+                + (": no board was found." if d.info.fallback else ".")
+                + " Plug a board in and restart with --port, or keep practising."
+            )
         else:
             text = f"Connected to {d.info.name} on {d.info.port}, firmware {d.info.firmware}."
         self.update(text)
@@ -256,8 +268,11 @@ class TablePanel(Recomputing, Vertical):
             table.add_row(*[c.text for c in row])
         table.move_cursor(row=cursor.row, column=cursor.column, animate=False)
         lines = ["  ".join(f"{name} = {cell.text}" for name, cell in view.results)]
-        lines += [f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare
-                  if own != "—"]
+        lines += [
+            f"{label}: yours {own} · computed {comp}"
+            for label, own, comp in view.compare
+            if own != "—"
+        ]
         self.query_one("#results", Static).update("\n".join(lines))
         self.query_one("#warnings", Static).update("\n".join(f"! {w}" for w in view.warnings))
 
@@ -268,7 +283,9 @@ class TablePanel(Recomputing, Vertical):
         table = self.query_one(DataTable)
         r, c = table.cursor_coordinate
         cell = self.view.rows[r][c]
-        self.query_one("#formula", Static).update(cell.formula or f"{cell.text}: measured, no formula")
+        self.query_one("#formula", Static).update(
+            cell.formula or f"{cell.text}: measured, no formula"
+        )
 
     def on_data_table_cell_selected(self, _event: DataTable.CellSelected) -> None:
         self.formula()
@@ -286,9 +303,11 @@ class StepRunPanel(Recomputing, Vertical):
     def compose(self) -> ComposeResult:
         plans = dict(self.step.plans)
         m = plans["manual"]
-        yield Static(f"F5: {m.periods} steps 0 → {m.high:g} V, {m.half_period:g} s each, at "
-                     f"{m.ts * 1000:g} ms. F6: the same at {plans['fast'].ts * 1000:g} ms. F2 stops.",
-                     classes="hint")
+        yield Static(
+            f"F5: {m.periods} steps 0 → {m.high:g} V, {m.half_period:g} s each, at "
+            f"{m.ts * 1000:g} ms. F6: the same at {plans['fast'].ts * 1000:g} ms. F2 stops.",
+            classes="hint",
+        )
         yield ProgressBar(total=100, show_eta=False, id="run-progress")
         yield Static("", id="run-status")
         with Horizontal(classes="plots"):
@@ -326,14 +345,18 @@ class StepRunPanel(Recomputing, Vertical):
         rows = [f"{'run':<9}{'T 63% manual':>13}{'T 63%':>9}{'T fit (95% CI)':>24}"]
         for v in views:
             ci = f" ({v.T_ci[0]:.3f}..{v.T_ci[1]:.3f})" if v.T_ci else ""
-            rows.append(f"{v.name:<9}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>9}"
-                        f"{_s(v.T_ls) + ci:>24}")
+            rows.append(
+                f"{v.name:<9}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>9}"
+                f"{_s(v.T_ls) + ci:>24}"
+            )
         if not views:
             rows.append("no run yet: F5 (25 ms), then F6 (5 ms)")
         self.query_one("#t-readings", Static).update("\n".join(rows))
         if self._lab_app.recording is None:
-            runs = ", ".join(f"{v.name} ({v.samples} samples{', interrupted' if v.interrupted else ''})"
-                             for v in views)
+            runs = ", ".join(
+                f"{v.name} ({v.samples} samples{', interrupted' if v.interrupted else ''})"
+                for v in views
+            )
             self.query_one("#run-status", Static).update(runs or "no runs recorded yet")
 
     def run_steps(self) -> None:
@@ -411,7 +434,10 @@ class ResultsPanel(Recomputing, Vertical):
         lines += [f"! {p}" for p in view.problems]
         self.query_one("#results-lines", Static).update("\n".join(lines))
         self.query_one("#compare", Static).update(
-            "\n".join(f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare))
+            "\n".join(
+                f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare
+            )
+        )
 
     def _plot(self) -> None:
         v = self.view
@@ -427,11 +453,15 @@ class ResultsPanel(Recomputing, Vertical):
         if self.zoom is not None and v.steps:
             w = v.steps[self.zoom]
             keep = (v.t >= w.t0 - ZOOM_BEFORE) & (v.t <= w.t1)
-            note.update(f"run {v.run}: step {self.zoom + 1} of {len(v.steps)}, 63 % at {_s(w.T_63)}"
-                        " · alt+←/→ step · F9 next")
+            note.update(
+                f"run {v.run}: step {self.zoom + 1} of {len(v.steps)}, 63 % at {_s(w.T_63)}"
+                " · alt+←/→ step · F9 next"
+            )
         else:
             note.update(f"run {v.run}: whole log, {len(v.steps)} rising steps · F9 zooms")
-        plot.show([Trace(v.t[keep], v.omega[keep], "omega"), Trace(v.t[keep], v.u[keep], "u_A", "dot")])
+        plot.show(
+            [Trace(v.t[keep], v.omega[keep], "omega"), Trace(v.t[keep], v.u[keep], "u_A", "dot")]
+        )
 
     def pick(self, delta: int) -> None:
         """Zoom to the previous/next rising step."""
@@ -505,13 +535,26 @@ class ModelCheckPanel(Recomputing, Vertical):
         if v.problem:
             lines.update(f"run {v.run or '—'}: {v.problem}")
             return
-        self.query_one("#plot-check", TracePlot).show([
-            Trace(v.t, v.omega, "measured"), Trace(v.t, v.baseline, "first order", "dot"),
-            Trace(v.t, v.extended, "extended", "+")])
-        self.query_one("#plot-residual", TracePlot).show([Trace(v.t, v.residual, "measured - model")])
-        lines.update("\n".join([
-            f"run {v.run} · cause: {v.cause}", f"evidence: {v.evidence}",
-            f"extended model: {v.extended_model}", f"gain: {v.gain}"]))
+        self.query_one("#plot-check", TracePlot).show(
+            [
+                Trace(v.t, v.omega, "measured"),
+                Trace(v.t, v.baseline, "first order", "dot"),
+                Trace(v.t, v.extended, "extended", "+"),
+            ]
+        )
+        self.query_one("#plot-residual", TracePlot).show(
+            [Trace(v.t, v.residual, "measured - model")]
+        )
+        lines.update(
+            "\n".join(
+                [
+                    f"run {v.run} · cause: {v.cause}",
+                    f"evidence: {v.evidence}",
+                    f"extended model: {v.extended_model}",
+                    f"gain: {v.gain}",
+                ]
+            )
+        )
 
     @on(Input.Submitted, "#import-path")
     def _import(self, event: Input.Submitted) -> None:
@@ -536,8 +579,10 @@ class ReportPanel(Recomputing, Static):
 
     def recompute(self) -> None:
         paths = self._lab_app.exported
-        self.update("F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV."
-                    + ("\nwritten:\n" + "\n".join(f"  {p}" for p in paths) if paths else ""))
+        self.update(
+            "F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV."
+            + ("\nwritten:\n" + "\n".join(f"  {p}" for p in paths) if paths else "")
+        )
 
 
 def panel_for(app: LabApp, step: Step) -> Widget | None:

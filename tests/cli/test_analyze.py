@@ -18,9 +18,11 @@ NXT = Path(__file__).resolve().parents[3] / "shared" / "data" / "nxt-motor-real"
 
 
 def _write(path, log):
-    write_step_log(path, StepLog(t=log.t, u=log.u, omega=log.omega,
-                                 extra={"count": log.count, "u_req": log.u_req}),
-                   {"source": f"synth {log.cause} {log.param}"})
+    write_step_log(
+        path,
+        StepLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count, "u_req": log.u_req}),
+        {"source": f"synth {log.cause} {log.param}"},
+    )
     return path
 
 
@@ -75,10 +77,22 @@ def test_clean_log_says_none(tmp_path, capsys):
         ("t,u,omega\n0,0,0\n0,1,0\n", "increase"),
         ("t,u,omega\n" + "".join(f"{k * 0.025},1,2\n" for k in range(20)), "step"),
         ("t,u,omega\n0,0,0\n0.025,1,0\n", "at least 8 rows"),
-        ("t,u,omega\n" + "".join(f"{k * 0.025},{int(k >= 5)},0\n" for k in range(20)), "omega stays at 0"),
-        ("t,u,omega\n" + "".join(f"{k * 25},{int(k >= 5)},{k}\n" for k in range(20)), "sample period"),
-        ("t,u,omega\n" + "".join(f"{k}e-300,{int(k >= 5)},{k}\n" for k in range(20)), "sample period"),
-        ("t,u,omega\n" + "".join(f"{k * 0.025},{int(k >= 5)},{k}e300\n" for k in range(20)), "|omega (rad/s)| below"),
+        (
+            "t,u,omega\n" + "".join(f"{k * 0.025},{int(k >= 5)},0\n" for k in range(20)),
+            "omega stays at 0",
+        ),
+        (
+            "t,u,omega\n" + "".join(f"{k * 25},{int(k >= 5)},{k}\n" for k in range(20)),
+            "sample period",
+        ),
+        (
+            "t,u,omega\n" + "".join(f"{k}e-300,{int(k >= 5)},{k}\n" for k in range(20)),
+            "sample period",
+        ),
+        (
+            "t,u,omega\n" + "".join(f"{k * 0.025},{int(k >= 5)},{k}e300\n" for k in range(20)),
+            "|omega (rad/s)| below",
+        ),
     ],
 )
 def test_bad_input_exits_2_with_one_line(tmp_path, capsys, text, says):
@@ -114,8 +128,12 @@ def _nxt_counts(sheet):
 def _nxt_logs(tmp_path, sheet):
     a, b = _nxt_counts(sheet)
     w1 = np.concatenate(([0.0], np.diff(a) * RAD / TS))
-    run1 = StepLog(t=np.arange(a.size) * TS, u=np.ones(a.size), omega=w1,
-                   extra={"u_req": np.concatenate(([0.0], np.ones(a.size - 1)))})
+    run1 = StepLog(
+        t=np.arange(a.size) * TS,
+        u=np.ones(a.size),
+        omega=w1,
+        extra={"u_req": np.concatenate(([0.0], np.ones(a.size - 1)))},
+    )
     steady = float(np.median(np.diff(a)[-20:])) * RAD / TS
     w2 = np.concatenate(([steady], np.abs(np.diff(b)) * RAD / TS))
     u2 = np.zeros(w2.size)

@@ -27,27 +27,52 @@ def files(tmp_path_factory):
     (d / "table.csv").write_text(TABLE)
     params = PlantParams(motor=MOTOR, tau_c=0.0, v_drop=0.5)
     rec = record(params, square_wave(0.0, 4.5, 40, 3, lead=20), ts=0.025, seed=7, jitter_us=2000)
-    log = StepLog(t=rec.t, u=rec.u_A, omega=timestamp_velocity(rec.t, rec.count),
-                  extra={"u_req": rec.u_req, "count": rec.count, "t_us": rec.t_us})
+    log = StepLog(
+        t=rec.t,
+        u=rec.u_A,
+        omega=timestamp_velocity(rec.t, rec.count),
+        extra={"u_req": rec.u_req, "count": rec.count, "t_us": rec.t_us},
+    )
     write_step_log(d / "log.csv", log, {"source": "plant, seed 7"})
     return d
 
 
 def test_human_report(files, capsys):
-    code = main(["identify", str(files / "table.csv"), "--R", "5", "--step", str(files / "log.csv")])
+    code = main(
+        ["identify", str(files / "table.csv"), "--R", "5", "--step", str(files / "log.csv")]
+    )
     out = capsys.readouterr().out
     assert code == 0
     kv = sorted([(2.1 - 0.15) / 3.6, (3.05 - 0.175) / 5.5, (4.0 - 0.2) / 7.2])[1]
     assert f"k_v = {kv:.4g} V s/rad" in out
     assert f"k_a = {0.65 * kv:.4g} N m/A" in out
-    for text in ("u_req V", "T, 63 % reading", "T, least squares", "95 % interval", "the model uses this T",
-                 "J = T (R f + k_v k_a) / R", "w' = -w +", "At u_A = 5 V", "What the numbers show:",
-                 "dry (Coulomb) friction"):
+    for text in (
+        "u_req V",
+        "T, 63 % reading",
+        "T, least squares",
+        "95 % interval",
+        "the model uses this T",
+        "J = T (R f + k_v k_a) / R",
+        "w' = -w +",
+        "At u_A = 5 V",
+        "What the numbers show:",
+        "dry (Coulomb) friction",
+    ):
         assert text in out
 
 
 def test_json_is_one_object_with_the_contract(files, capsys):
-    code = main(["identify", str(files / "table.csv"), "--R", "5", "--step", str(files / "log.csv"), "--json"])
+    code = main(
+        [
+            "identify",
+            str(files / "table.csv"),
+            "--R",
+            "5",
+            "--step",
+            str(files / "log.csv"),
+            "--json",
+        ]
+    )
     out = capsys.readouterr().out
     assert code == 0 and out.count("\n") == 1
     j = json.loads(out)
@@ -69,31 +94,63 @@ def test_json_without_step(files, capsys):
     assert set(json.loads(capsys.readouterr().out)) == {"R", "rows", "k_v", "k_a", "f"}
 
 
-
 def _log(dt: float, omega_on: float = 3.0, u_on: float = 4.0) -> str:
     """12 rows every dt s: a step to u_on V at row 3, the speed omega_on rad/s from row 4."""
     return "t,u,omega\n" + "".join(
-        f"{k * dt!r},{0.0 if k < 3 else u_on!r},{0.0 if k < 4 else omega_on!r}\n" for k in range(12))
+        f"{k * dt!r},{0.0 if k < 3 else u_on!r},{0.0 if k < 4 else omega_on!r}\n" for k in range(12)
+    )
 
 
 BAD = [
     ("table.csv", "", [], "table.csv:", "file is empty"),
     ("table.csv", "u_req,u_ss,omega_ss\n2.5,2,3\n", [], "table.csv:1:", "expected a column i_ss"),
     ("table.csv", "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,x,30\n", [], "table.csv:2:", "got 'x'"),
-    ("table.csv", "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,3.6,30\n3.5,3,0,35\n", [], "table.csv:3:", "omega_ss > 0"),
+    (
+        "table.csv",
+        "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,3.6,30\n3.5,3,0,35\n",
+        [],
+        "table.csv:3:",
+        "omega_ss > 0",
+    ),
     ("log.csv", "", ["--step"], "log.csv:", "file is empty"),
     ("log.csv", "t,u\n0,0\n0.1,4\n", ["--step"], "log.csv:1:", "expected a column omega"),
     ("log.csv", "t,u,omega\n0,0,0\n0.025,4,nan\n", ["--step"], "log.csv:3:", "got 'nan'"),
-    ("log.csv", "t,u,omega\n0,0,0\n0.05,4,1\n0.04,4,1\n", ["--step"], "log.csv:4:", "expected t (s) to increase"),
+    (
+        "log.csv",
+        "t,u,omega\n0,0,0\n0.05,4,1\n0.04,4,1\n",
+        ["--step"],
+        "log.csv:4:",
+        "expected t (s) to increase",
+    ),
     ("log.csv", "t,u,omega\n0,4,0\n0.025,4,1\n", ["--step"], "log.csv:2:", "expected a step"),
-    ("log.csv", "t,u,omega\n0,4,0\n0.025,0,1\n0.05,0,1\n", ["--step"], "log.csv:2:", "expected a rising step"),
-    ("table.csv", "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,3.6,1e308\n", [], "table.csv:2:", "plausible size"),
+    (
+        "log.csv",
+        "t,u,omega\n0,4,0\n0.025,0,1\n0.05,0,1\n",
+        ["--step"],
+        "log.csv:2:",
+        "expected a rising step",
+    ),
+    (
+        "table.csv",
+        "u_req,u_ss,omega_ss,i_ss\n2.5,2.1,3.6,1e308\n",
+        [],
+        "table.csv:2:",
+        "plausible size",
+    ),
     ("log.csv", _log(0.025, omega_on=0.0), ["--step"], "log.csv:", "omega stays at 0"),
     ("log.csv", _log(25.0), ["--step"], "log.csv:", "sample period"),
     ("log.csv", _log(1e-300), ["--step"], "log.csv:", "sample period"),
     ("log.csv", _log(0.025, u_on=1e300), ["--step"], "log.csv:", "|u (V)| below"),
-    ("log.csv", "t,u,omega,t_us\n" + "".join(f"{k * 0.025},{4 * (k >= 3)},{3 * (k >= 4)},{(20 - k) * 25000}\n"
-                                              for k in range(12)), ["--step"], "log.csv:", "sample period"),
+    (
+        "log.csv",
+        "t,u,omega,t_us\n"
+        + "".join(
+            f"{k * 0.025},{4 * (k >= 3)},{3 * (k >= 4)},{(20 - k) * 25000}\n" for k in range(12)
+        ),
+        ["--step"],
+        "log.csv:",
+        "sample period",
+    ),
 ]
 
 
@@ -102,7 +159,9 @@ def test_bad_input_exits_2_with_one_line(tmp_path, capsys, name, text, flag, whe
     (tmp_path / "table.csv").write_text(TABLE)
     bad = tmp_path / name
     bad.write_text(text)
-    args = ["identify", str(tmp_path / "table.csv"), "--R", "5"] + ([*flag, str(bad)] if flag else [])
+    args = ["identify", str(tmp_path / "table.csv"), "--R", "5"] + (
+        [*flag, str(bad)] if flag else []
+    )
     assert main(args) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1
@@ -122,11 +181,32 @@ def test_bad_R_exits_2(files, capsys, R):
 def test_console_script(files):
     exe = Path(sys.executable).with_name("minseg-tui")
     cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "minseg_tui"]
-    ok = subprocess.run([*cmd, "identify", str(files / "table.csv"), "--R", "5", "--step", str(files / "log.csv"), "--json"],
-                        capture_output=True, text=True, timeout=60, env={**os.environ, "PYTHONWARNINGS": "error"})
+    ok = subprocess.run(
+        [
+            *cmd,
+            "identify",
+            str(files / "table.csv"),
+            "--R",
+            "5",
+            "--step",
+            str(files / "log.csv"),
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=60,
+        env={**os.environ, "PYTHONWARNINGS": "error"},
+    )
     assert ok.returncode == 0, ok.stderr
     assert np.isfinite(json.loads(ok.stdout)["step"]["T"])
-    bad = subprocess.run([*cmd, "identify", str(files / "missing.csv"), "--R", "5"], capture_output=True, text=True, timeout=60)
+    bad = subprocess.run(
+        [*cmd, "identify", str(files / "missing.csv"), "--R", "5"],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     assert bad.returncode == 2 and bad.stdout == ""
-    assert bad.stderr.strip().endswith("missing.csv: cannot read the file (No such file or directory)")
+    assert bad.stderr.strip().endswith(
+        "missing.csv: cannot read the file (No such file or directory)"
+    )
     assert "Traceback" not in bad.stderr

@@ -35,8 +35,12 @@ PORTS = [
 def test_verdicts_and_order():
     got = {c.device: c.verdict for c in discovery.candidates(PORTS)}
     assert got == {
-        "/dev/ttyS0": "ignored", "/dev/ttyACM3": "ignored", "/dev/ttyUSB0": "possible",
-        "/dev/ttyUSB1": "clone", "/dev/ttyACM0": "board", "/dev/ttyACM1": "board",
+        "/dev/ttyS0": "ignored",
+        "/dev/ttyACM3": "ignored",
+        "/dev/ttyUSB0": "possible",
+        "/dev/ttyUSB1": "clone",
+        "/dev/ttyACM0": "board",
+        "/dev/ttyACM1": "board",
     }
     order = [c.device for c in discovery.candidates(PORTS)]
     assert order[:3] == ["/dev/ttyACM0", "/dev/ttyACM1", "/dev/ttyUSB1"]
@@ -83,7 +87,8 @@ def test_ports_command_on_this_machine(capsys):
 def test_sim_command_serves_a_pty_until_ctrl_c():
     proc = subprocess.Popen(
         [sys.executable, "-m", "minseg_tui", "sim", "--seed", "1", "--coulomb", "0"],
-        stdout=subprocess.PIPE, text=True,
+        stdout=subprocess.PIPE,
+        text=True,
     )
     try:
         path = proc.stdout.readline().strip()
@@ -100,10 +105,16 @@ def test_sim_command_serves_a_pty_until_ctrl_c():
 
 
 def test_sim_command_bad_option_is_one_line():
-    r = subprocess.run([sys.executable, "-m", "minseg_tui", "sim", "--seed", "x"],
-                       capture_output=True, text=True, timeout=30)
+    r = subprocess.run(
+        [sys.executable, "-m", "minseg_tui", "sim", "--seed", "x"],
+        capture_output=True,
+        text=True,
+        timeout=30,
+    )
     assert r.returncode == 2
-    assert r.stderr.strip().splitlines() == ["minseg-tui sim: option seed: expected an integer, got 'x'"]
+    assert r.stderr.strip().splitlines() == [
+        "minseg-tui sim: option seed: expected an integer, got 'x'"
+    ]
 
 
 @pytest.mark.parametrize(
@@ -111,15 +122,24 @@ def test_sim_command_bad_option_is_one_line():
     [
         (["--R", "nan"], "option R: expected a finite number, not negative, got 'nan'"),
         (["--jitter", "-5"], "option jitter: expected a finite number, not negative, got '-5'"),
-        (["--link", "/nonexistent-dir/minseg0"], "/nonexistent-dir/minseg0: cannot make the device"),
+        (
+            ["--link", "/nonexistent-dir/minseg0"],
+            "/nonexistent-dir/minseg0: cannot make the device",
+        ),
     ],
 )
 def test_sim_command_bad_setting_is_one_line(args, says):
-    r = subprocess.run([sys.executable, "-m", "minseg_tui", "sim", *args],
-                       capture_output=True, text=True, timeout=30)
+    r = subprocess.run(
+        [sys.executable, "-m", "minseg_tui", "sim", *args],
+        capture_output=True,
+        text=True,
+        timeout=30,
+    )
     assert r.returncode == 2 and r.stdout == ""
     lines = r.stderr.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith("minseg-tui sim: ") and says in lines[0], r.stderr
+    assert len(lines) == 1 and lines[0].startswith("minseg-tui sim: ") and says in lines[0], (
+        r.stderr
+    )
 
 
 @pytest.mark.parametrize("spec", ["virtual", "minseg://?clock=virtual"])

@@ -18,8 +18,9 @@ from .conftest import wait_for
 def collect(link, n, timeout=10.0):
     """At least ``n`` samples from ``link`` (fails if they do not come within ``timeout`` s)."""
     got = []
-    assert wait_for(lambda: (got.append(link.samples()) or sum(map(len, got)) >= n), timeout), (
-        f"got {sum(map(len, got))} of {n} samples in {timeout} s")
+    assert wait_for(lambda: got.append(link.samples()) or sum(map(len, got)) >= n, timeout), (
+        f"got {sum(map(len, got))} of {n} samples in {timeout} s"
+    )
     return SampleBatch.concat(got)
 
 
@@ -53,9 +54,7 @@ def test_url_link_streams_without_loss(board_name):
         link.close()
 
 
-@pytest.mark.parametrize(
-    "fault", ["garbage=0.2", "truncate=0.2", "bad_checksum=0.2", "drop=0.1"]
-)
+@pytest.mark.parametrize("fault", ["garbage=0.2", "truncate=0.2", "bad_checksum=0.2", "drop=0.1"])
 def test_faults_are_counted_and_never_recorded(board_name, fault):
     link = open_device(f"minseg://{board_name}?clock=virtual&seed=3")
     try:
@@ -177,8 +176,13 @@ def test_link_over_a_real_pty(pty_server):
 
 
 def test_motion_by_hand():
-    rows = [(0, 0, 0, 0, 0, 0.0), (1, 25000, 10, 0, 0, 0.0), (2, 50000, 30, 0, 0, 0.0),
-            (3, 7000000, 0, 0, 1, 0.0), (4, 7020000, 4, 0, 1, 0.0)]
+    rows = [
+        (0, 0, 0, 0, 0, 0.0),
+        (1, 25000, 10, 0, 0, 0.0),
+        (2, 50000, 30, 0, 0, 0.0),
+        (3, 7000000, 0, 0, 1, 0.0),
+        (4, 7020000, 4, 0, 1, 0.0),
+    ]
     b = SampleBatch.from_rows(rows)
     mo = motion(b)
     w = RAD_PER_COUNT

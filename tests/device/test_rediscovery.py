@@ -23,8 +23,13 @@ MEGA = (0x2341, 0x0042)
 
 def test_reconnects_to_the_board_on_a_new_path(monkeypatch):
     server = PtyServer().start()
-    listing = lambda: [fake("/dev/ttyS0"), fake("/dev/ttyACM9", 0x1BC7, 0x1201, "Telit"),  # noqa: E731
-                       fake(server.slave_name, *MEGA, "Arduino")]
+    def listing():
+        return [
+            fake("/dev/ttyS0"),
+            fake("/dev/ttyACM9", 0x1BC7, 0x1201, "Telit"),
+            fake(server.slave_name, *MEGA, "Arduino"),
+        ]
+
     monkeypatch.setattr(discovery, "list_ports", listing)
     events = []
     link = Link(server.path, vid_pid=MEGA, on_event=events.append, retry_s=0.02, boot_wait_s=0.5)
@@ -47,7 +52,7 @@ def test_reconnects_to_the_board_on_a_new_path(monkeypatch):
         assert any(e.kind == "connected" and new in e.message for e in events)
         assert wait_for(lambda: server.board.period_us == 10000)  # the period was restored
         got = []
-        assert wait_for(lambda: (got.append(link.samples()) or sum(map(len, got)) >= 10))
+        assert wait_for(lambda: got.append(link.samples()) or sum(map(len, got)) >= 10)
         after = SampleBatch.concat(got)
         assert np.all(after.epoch == after.epoch[-1]) and after.epoch[-1] >= 1
         assert np.all(np.diff(after.seq) >= 1)

@@ -168,5 +168,11 @@ def test_micros_and_seq_wrap():
     port = vport("jitter=0&micros0=4294917296&seq0=4294967294")
     samples = parsed(read_lines(port, 0.1), P.SampleLine)
     assert [s.seq for s in samples] == [4294967294, 4294967295, 0, 1, 2]
-    assert [s.t_us for s in samples] == [4294917296, 4294942296, 0, 25000, 50000]  # 4294917296 = 2**32 - 50000
+    assert [s.t_us for s in samples] == [
+        4294917296,
+        4294942296,
+        0,
+        25000,
+        50000,
+    ]  # 4294917296 = 2**32 - 50000
     assert math.isfinite(port.board.now)

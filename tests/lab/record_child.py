@@ -16,8 +16,14 @@ import numpy as np
 from minseg_tui.lab.session import Session
 from minseg_tui.model.plant import PlantParams, record
 
-ENTRIES = [("R", "5,3 Ω"), ("u_ss@2.5", "2.05 V"), ("i_ss@2.5", "0.047"), ("i_ss@2.5", "29 mA"),
-           ("prep8.T", "a/b"), ("summary.unclear", "why the filter lags")]
+ENTRIES = [
+    ("R", "5,3 Ω"),
+    ("u_ss@2.5", "2.05 V"),
+    ("i_ss@2.5", "0.047"),
+    ("i_ss@2.5", "29 mA"),
+    ("prep8.T", "a/b"),
+    ("summary.unclear", "why the filter lags"),
+]
 
 
 def main() -> None:
@@ -38,7 +44,12 @@ def main() -> None:
         delay = start + rec_data.t[k] - time.monotonic()
         if delay > 0:
             time.sleep(delay)
-        rec.append(int(rec_data.seq[k]), int(rec_data.t_us[k]), int(rec_data.count[k]), int(round(u[k] * 1000)))
+        rec.append(
+            int(rec_data.seq[k]),
+            int(rec_data.t_us[k]),
+            int(rec_data.count[k]),
+            int(round(u[k] * 1000)),
+        )
         print(f"sent {k} {int(rec_data.t_us[k])}", flush=True)
     time.sleep(60)
 

@@ -33,6 +33,7 @@ def refused(reader, path):
 
 # -- TABLE.csv -----------------------------------------------------------------------------
 
+
 def test_table_reads_rows_with_lines(tmp_path):
     rows = read_table(write(tmp_path, "t.csv", GOOD_TABLE))
     assert rows == [
@@ -61,11 +62,23 @@ def test_table_round_trip(tmp_path):
         ("\n\n# nothing\n", "t.csv:", "the file is empty"),
         ("u_req,u_ss,omega_ss,i_ss\n", "t.csv:1:", "expected data rows"),
         ("u_req,u_ss,omega_ss\n2.5,2,3\n", "t.csv:1:", "expected a column i_ss (mA)"),
-        ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,abc,30\n", "t.csv:2:", "expected a number for omega_ss (rad/s), got 'abc'"),
-        ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,nan\n", "t.csv:2:", "expected a number for i_ss (mA), got 'nan'"),
+        (
+            "u_req,u_ss,omega_ss,i_ss\n2.5,2.05,abc,30\n",
+            "t.csv:2:",
+            "expected a number for omega_ss (rad/s), got 'abc'",
+        ),
+        (
+            "u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,nan\n",
+            "t.csv:2:",
+            "expected a number for i_ss (mA), got 'nan'",
+        ),
         ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,inf\n", "t.csv:2:", "got 'inf'"),
         ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,,30\n", "t.csv:2:", "got an empty field"),
-        ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,30\n3.5,3.05,0,34\n", "t.csv:3:", "expected omega_ss > 0"),
+        (
+            "u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,30\n3.5,3.05,0,34\n",
+            "t.csv:3:",
+            "expected omega_ss > 0",
+        ),
         ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,-3.8,30\n", "t.csv:2:", "expected omega_ss > 0"),
         ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,0\n", "t.csv:2:", "expected i_ss > 0 mA"),
         ("u_req,u_ss,omega_ss,i_ss\n2.5,2,05,3.8,30\n", "t.csv:2:", "decimal comma"),
@@ -81,7 +94,9 @@ def test_table_bad_input(tmp_path, text, where, what):
 
 
 def test_table_not_utf8_and_missing_file(tmp_path):
-    msg = refused(read_table, write(tmp_path, "t.csv", b"u_req,u_ss,omega_ss,i_ss\n2.5,2\xe9,3,4\n"))
+    msg = refused(
+        read_table, write(tmp_path, "t.csv", b"u_req,u_ss,omega_ss,i_ss\n2.5,2\xe9,3,4\n")
+    )
     assert msg.startswith(str(tmp_path / "t.csv:2:")) and "UTF-8" in msg
     msg = refused(read_table, tmp_path / "none.csv")
     assert msg.startswith(str(tmp_path / "none.csv:")) and "cannot read" in msg
@@ -89,6 +104,7 @@ def test_table_not_utf8_and_missing_file(tmp_path):
 
 
 # -- step logs -----------------------------------------------------------------------------
+
 
 def test_step_log_reads_columns_metadata_and_lines(tmp_path):
     text = "# source: plant\n# ts = 0.025\nt,u,omega,u_req,count,note\n0,0,0,0,0,a\n# mid comment\n0.025,4,0,4.5,3,b\n0.05,4,2.5,4.5,10,c\n"
@@ -107,8 +123,14 @@ def test_step_log_reads_columns_metadata_and_lines(tmp_path):
 def test_step_log_round_trip(tmp_path):
     t = np.arange(10) * 0.025 + 1e-6 * np.arange(10)
     log = StepLog(
-        t=t, u=np.where(t > 0.1, 4.05, 0.0), omega=np.linspace(0, 7, 10),
-        extra={"u_req": np.where(t > 0.1, 4.5, 0.0), "count": np.arange(10) * 7, "t_us": np.round(t * 1e6).astype(np.int64)},
+        t=t,
+        u=np.where(t > 0.1, 4.05, 0.0),
+        omega=np.linspace(0, 7, 10),
+        extra={
+            "u_req": np.where(t > 0.1, 4.5, 0.0),
+            "count": np.arange(10) * 7,
+            "t_us": np.round(t * 1e6).astype(np.int64),
+        },
         metadata={"source": "virtual MinSeg, seed 3"},
     )
     write_step_log(tmp_path / "out.csv", log, {"ts": "0.025"})
@@ -133,15 +155,49 @@ def test_step_log_generous(tmp_path):
         (log_text(rows=[]), "log.csv:2:", "expected data rows"),
         (log_text(header="t,u,speed"), "log.csv:2:", "expected a column omega (rad/s)"),
         (log_text(header="time,u,omega"), "log.csv:2:", "expected a column t (s)"),
-        (log_text(rows=["0,0,0", "0.025,x,0", "0.05,4,1"]), "log.csv:4:", "expected a number for u (V), got 'x'"),
-        (log_text(rows=["0,0,0", "0.025,4,NaN", "0.05,4,1"]), "log.csv:4:", "expected a number for omega (rad/s), got 'NaN'"),
-        (log_text(rows=["0,0,0", "0.025,4,0", "0.025,4,1"]), "log.csv:5:", "expected t (s) to increase, got 0.025 after 0.025 on line 4"),
-        (log_text(rows=["0,0,0", "0.05,4,0", "0.025,4,1"]), "log.csv:5:", "expected t (s) to increase"),
-        (log_text(rows=["0,4,0", "0.025,4,1", "0.05,4,2"]), "log.csv:3:", "expected a step in u (V)"),
-        (log_text(header="t,u,omega,u_req", rows=["0,0,0,4.5", "0.025,4,1,4.5", "0.05,4,2,4.5"]), "log.csv:3:", "expected a step in u_req (V)"),
-        (log_text(header="t,u,omega,count", rows=["0,0,0,0", "0.025,4,1,1.5.2", "0.05,4,2,3"]), "log.csv:4:", "expected a number for count (counts)"),
+        (
+            log_text(rows=["0,0,0", "0.025,x,0", "0.05,4,1"]),
+            "log.csv:4:",
+            "expected a number for u (V), got 'x'",
+        ),
+        (
+            log_text(rows=["0,0,0", "0.025,4,NaN", "0.05,4,1"]),
+            "log.csv:4:",
+            "expected a number for omega (rad/s), got 'NaN'",
+        ),
+        (
+            log_text(rows=["0,0,0", "0.025,4,0", "0.025,4,1"]),
+            "log.csv:5:",
+            "expected t (s) to increase, got 0.025 after 0.025 on line 4",
+        ),
+        (
+            log_text(rows=["0,0,0", "0.05,4,0", "0.025,4,1"]),
+            "log.csv:5:",
+            "expected t (s) to increase",
+        ),
+        (
+            log_text(rows=["0,4,0", "0.025,4,1", "0.05,4,2"]),
+            "log.csv:3:",
+            "expected a step in u (V)",
+        ),
+        (
+            log_text(header="t,u,omega,u_req", rows=["0,0,0,4.5", "0.025,4,1,4.5", "0.05,4,2,4.5"]),
+            "log.csv:3:",
+            "expected a step in u_req (V)",
+        ),
+        (
+            log_text(header="t,u,omega,count", rows=["0,0,0,0", "0.025,4,1,1.5.2", "0.05,4,2,3"]),
+            "log.csv:4:",
+            "expected a number for count (counts)",
+        ),
         (log_text(rows=["0,0,0", "0.025,4,1,9", "0.05,4,2"]), "log.csv:4:", "expected 3 fields"),
-        (log_text(header="t,u,omega,t_us", rows=["0,0,0,100", "0.025,4,1,25100", "0.05,4,2,25100"]), "log.csv:5:", "expected t_us (us) to increase, got 25100 again"),
+        (
+            log_text(
+                header="t,u,omega,t_us", rows=["0,0,0,100", "0.025,4,1,25100", "0.05,4,2,25100"]
+            ),
+            "log.csv:5:",
+            "expected t_us (us) to increase, got 25100 again",
+        ),
     ],
 )
 def test_step_log_bad_input(tmp_path, text, where, what):

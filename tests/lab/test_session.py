@@ -42,7 +42,11 @@ def _on_disk(s: Session) -> dict:
 
 
 def _fill_table(s: Session) -> None:
-    for lv, u, w, i in ((2.5, "2.05", "3.8", "29.8 mA"), (3.5, "3.05", "5.8", "33.5"), (4.5, "4.05", "7.8", "37.2")):
+    for lv, u, w, i in (
+        (2.5, "2.05", "3.8", "29.8 mA"),
+        (3.5, "3.05", "5.8", "33.5"),
+        (4.5, "4.05", "7.8", "37.2"),
+    ):
         s.enter(f"u_ss@{lv:g}", u)
         s.enter(f"omega_ss@{lv:g}", w)
         s.enter(f"i_ss@{lv:g}", i)
@@ -62,6 +66,7 @@ def _record_steps(s: Session, seed: int = 3, n_lead: int = 20):
 
 
 # -- autosave ----------------------------------------------------------------------------------
+
 
 def test_create_writes_a_versioned_file(tmp_path):
     s = Session.create(tmp_path, ["Ada", "Bo Ek"], date="2026-11-22", clock=FakeClock())
@@ -142,6 +147,7 @@ def test_a_refused_entry_never_displaces_an_accepted_one(tmp_path):
 
 # -- results recompute -------------------------------------------------------------------------
 
+
 def test_results_follow_the_entries(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:
         _fill_table(s)
@@ -152,7 +158,9 @@ def test_results_follow_the_entries(tmp_path):
         # k_v = (u_ss - R i_ss) / omega_ss, by hand
         assert rows[0].k_v == pytest.approx((2.05 - 5 * 0.0298) / 3.8)
         assert rows[2].k_v == pytest.approx((4.05 - 5 * 0.0372) / 7.8)
-        k_v = sorted([(2.05 - 5 * 0.0298) / 3.8, (3.05 - 5 * 0.0335) / 5.8, (4.05 - 5 * 0.0372) / 7.8])[1]
+        k_v = sorted(
+            [(2.05 - 5 * 0.0298) / 3.8, (3.05 - 5 * 0.0335) / 5.8, (4.05 - 5 * 0.0372) / 7.8]
+        )[1]
         assert s.results().identification.k_v == pytest.approx(k_v)
         first = s.results()
         s.enter("prep8.T", "a/b")  # an unrelated entry keeps the cached results
@@ -184,13 +192,18 @@ def test_capture_mean_spread_and_window(tmp_path):
         assert e.source == "capture" and e.value == pytest.approx(float(f"{np.mean(w[sel]):.4g}"))
         cap = s.capture_of(4.5)
         assert cap.spread == pytest.approx(np.std(w[sel], ddof=1))
-        assert (cap.t0, cap.t1, cap.n) == (pytest.approx(t[sel][0]), pytest.approx(t[-1]), int(sel.sum()))
+        assert (cap.t0, cap.t1, cap.n) == (
+            pytest.approx(t[sel][0]),
+            pytest.approx(t[-1]),
+            int(sel.sum()),
+        )
         assert s.table()[2].spread == cap.spread
         s.enter("omega_ss@4.5", "6.9")  # typed over: the capture no longer describes it
         assert s.capture_of(4.5) is None and s.table()[2].window is None
 
 
 # -- runs --------------------------------------------------------------------------------------
+
 
 def test_finished_run_is_a_step_log_with_applied_voltage(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:
@@ -266,10 +279,13 @@ def test_import_run(tmp_path):
     src.write_text("t,u,omega\n0,0,0\n0.025,4,1\n0.05,4,2\n0.075,4,2.5\n", encoding="utf-8")
     with Session.create(tmp_path / "s", ["A"]) as s:
         info = s.import_run(src)
-        assert info.kind == "imported" and s.load_run(info.name).metadata["imported_from"] == str(src)
+        assert info.kind == "imported" and s.load_run(info.name).metadata["imported_from"] == str(
+            src
+        )
 
 
 # -- resume ------------------------------------------------------------------------------------
+
 
 def test_resume_is_exact(tmp_path):
     clock = FakeClock()
@@ -321,6 +337,7 @@ def test_step_status(tmp_path):
 
 
 # -- atomic writes and damaged files -----------------------------------------------------------
+
 
 def test_a_failed_save_leaves_the_old_file(tmp_path, monkeypatch):
     with Session.create(tmp_path, ["A"]) as s:
@@ -383,11 +400,16 @@ def test_list_sessions(tmp_path):
     listed = list_sessions(tmp_path)
     assert [x.id for x in listed] == [b.id, a.id]  # newest change first
     assert listed[0].members == ("Bo", "Cy") and listed[0].locked_by == os.getpid()
-    assert listed[1].last_step == "task4" and listed[1].locked_by is None and listed[1].date == "2026-11-20"
+    assert (
+        listed[1].last_step == "task4"
+        and listed[1].locked_by is None
+        and listed[1].date == "2026-11-20"
+    )
     b.close()
 
 
 # -- the lock ----------------------------------------------------------------------------------
+
 
 def test_one_program_per_session(tmp_path):
     s = Session.create(tmp_path, ["A"])
@@ -400,9 +422,13 @@ def test_one_program_per_session(tmp_path):
 def test_lock_held_by_a_live_process(tmp_path):
     s = Session.create(tmp_path, ["A"])
     s.close()
-    code = ("import sys, time; from pathlib import Path; from minseg_tui.lab.session import Session; "
-            "s = Session.open(Path(sys.argv[1])); print('open', flush=True); time.sleep(60)")
-    child = subprocess.Popen([sys.executable, "-c", code, str(s.folder)], stdout=subprocess.PIPE, text=True)
+    code = (
+        "import sys, time; from pathlib import Path; from minseg_tui.lab.session import Session; "
+        "s = Session.open(Path(sys.argv[1])); print('open', flush=True); time.sleep(60)"
+    )
+    child = subprocess.Popen(
+        [sys.executable, "-c", code, str(s.folder)], stdout=subprocess.PIPE, text=True
+    )
     try:
         assert child.stdout.readline().strip() == "open"
         with pytest.raises(SessionLocked, match=f"pid {child.pid}"):
@@ -417,7 +443,9 @@ def test_lock_held_by_a_live_process(tmp_path):
 def test_stale_lock_from_dead_pid(tmp_path):
     s = Session.create(tmp_path, ["A"])
     s.close()
-    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
+    dead = subprocess.run(
+        [sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True
+    )
     (s.folder / "lock").write_text(dead.stdout)
     assert store.lock_owner(s.folder) is None
     Session.open(s.folder).close()
@@ -426,10 +454,15 @@ def test_stale_lock_from_dead_pid(tmp_path):
 
 # -- kill -9 mid-recording ---------------------------------------------------------------------
 
+
 def test_kill_9_mid_recording_loses_nothing_typed_and_at_most_a_second(tmp_path):
     env = {**os.environ, "PYTHONPATH": str(HERE.parents[1])}
-    child = subprocess.Popen([sys.executable, str(HERE / "record_child.py"), str(tmp_path)],
-                             stdout=subprocess.PIPE, text=True, env=env)
+    child = subprocess.Popen(
+        [sys.executable, str(HERE / "record_child.py"), str(tmp_path)],
+        stdout=subprocess.PIPE,
+        text=True,
+        env=env,
+    )
     typed: list[str] = []
     last_sent = None
     sid = ""

@@ -22,15 +22,37 @@ def test_data_is_sound():
 def test_every_step_has_own_words_and_the_lab_is_in_order():
     ids = [s.id for s in STEPS]
     assert ids[:15] == [f"prep{k}" for k in range(1, 16)]
-    assert ids[15:] == ["task1", "task2", "task3", "task4", "task5", "table", "task10", "task11",
-                        "task12", "task13", "task14", "task15", "model_check", "summary"]
+    assert ids[15:] == [
+        "task1",
+        "task2",
+        "task3",
+        "task4",
+        "task5",
+        "table",
+        "task10",
+        "task11",
+        "task12",
+        "task13",
+        "task14",
+        "task15",
+        "model_check",
+        "summary",
+    ]
     for s in STEPS:
         assert s.title and s.goal and s.todo, s.id
 
 
 def test_parts_in_order():
-    assert steps.PARTS == ("Preparation", "Set-up", "Steady state", "Table", "Step response", "Results",
-                           "Model check", "Summary")
+    assert steps.PARTS == (
+        "Preparation",
+        "Set-up",
+        "Steady state",
+        "Table",
+        "Step response",
+        "Results",
+        "Model check",
+        "Summary",
+    )
 
 
 def test_table_fields_for_each_level():
@@ -45,7 +67,9 @@ def test_table_fields_for_each_level():
 
 def test_task10_plans():
     plans = dict(step("task10").plans)
-    assert plans["manual"].low == 0.0 and plans["manual"].high == 4.5 and plans["manual"].ts == 0.025
+    assert (
+        plans["manual"].low == 0.0 and plans["manual"].high == 4.5 and plans["manual"].ts == 0.025
+    )
     assert plans["fast"].ts == 0.005
     assert plans["manual"].duration == 2 * 1.5 * 4
 
@@ -156,5 +180,9 @@ def test_checks_at_sample_points_are_seeded_and_positive():
 
 def test_expected_values_by_hand():
     # the numbers the checkers accept, computed here independently
-    assert parse_formula(CHECKS["prep10.gain"].expected).value({}) == pytest.approx(0.0087266, rel=1e-4)
-    assert parse_formula(CHECKS["prep6.y10"].expected).value({}) == pytest.approx(6 * (1 - math.exp(-1)))
+    assert parse_formula(CHECKS["prep10.gain"].expected).value({}) == pytest.approx(
+        0.0087266, rel=1e-4
+    )
+    assert parse_formula(CHECKS["prep6.y10"].expected).value({}) == pytest.approx(
+        6 * (1 - math.exp(-1))
+    )

@@ -55,7 +55,9 @@ def test_clean_first_order_data_is_none(seed):
     assert not r.anomalies
 
 
-@pytest.mark.parametrize(("cause", "seed"), [("none", 7), ("coulomb_friction", 8), ("velocity_filter", 9)])
+@pytest.mark.parametrize(
+    ("cause", "seed"), [("none", 7), ("coulomb_friction", 8), ("velocity_filter", 9)]
+)
 def test_wild_sample_does_not_decide_and_is_reported(cause, seed):
     clean = make_log(cause, seed=seed)
     messy = make_log(cause, seed=seed, wild=True)
@@ -95,7 +97,8 @@ def test_json_shape():
     assert set(d["extended"]["params"]) == {"T", "K", "delay"}
     assert "rmse_reduction_percent" in d["gain"]
     assert d["gain"]["rmse_reduction_percent"] == pytest.approx(
-        100 * (1 - d["extended"]["rmse"] / d["baseline"]["rmse"]))
+        100 * (1 - d["extended"]["rmse"] / d["baseline"]["rmse"])
+    )
 
 
 def test_reported_figures_recompute_from_predictions():
@@ -105,7 +108,8 @@ def test_reported_figures_recompute_from_predictions():
     for fit, pred in ((r.baseline, r.baseline_pred), (r.extended, r.extended_pred)):
         assert fit.rmse == pytest.approx(math.sqrt(np.mean((y - pred) ** 2)), rel=1e-12)
         assert fit.fit_percent == pytest.approx(
-            100 * (1 - np.linalg.norm(y - pred) / np.linalg.norm(y - y.mean())), rel=1e-12)
+            100 * (1 - np.linalg.norm(y - pred) / np.linalg.norm(y - y.mean())), rel=1e-12
+        )
 
 
 # -- the exact simulators against the plant (an independent implementation) ---------------
@@ -133,8 +137,9 @@ def test_friction_and_coast_simulator_match_the_plant(zero_mode):
     ref = _plant_angles(p, times, values)
     T, K = MOTOR.T, MOTOR.K
     T_coast = MOTOR.J / MOTOR.f if zero_mode == "coast" else None
-    pieces = first_order_pieces(Stretches(np.array(times), np.array(values)), T, 0.0, u_c=0.15,
-                                T_coast=T_coast)
+    pieces = first_order_pieces(
+        Stretches(np.array(times), np.array(values)), T, 0.0, u_c=0.15, T_coast=T_coast
+    )
     assert K * pieces.angle(ref[:, 0]) == pytest.approx(ref[:, 1], abs=1e-9)
 
 
@@ -185,7 +190,9 @@ def test_two_effects_name_the_main_one_and_list_the_other(seed):
 def test_where_it_deviates_with_an_exact_steady_state():
     from minseg_tui.model.check.deviations import Deviation, describe
 
-    text = describe([Deviation("after_rising_edges", 4, 0.2, 0.1), Deviation("steady_state", 5, 0.0, 0.0)])
+    text = describe(
+        [Deviation("after_rising_edges", 4, 0.2, 0.1), Deviation("steady_state", 5, 0.0, 0.0)]
+    )
     assert "inf" not in text and "exact in steady state" in text and "0.200 rad/s" in text
 
 
@@ -220,12 +227,26 @@ def test_a_none_finding_says_which_test_the_best_candidate_failed():
 
     base, cand = fit("none", 1.0), fit("dead_time", 0.2)
     u = np.zeros(3)
-    few = evidence("none", base, base, {"dead_time": Verdict(900.0, 0.10, False)}, {"dead_time": cand}, u)
+    few = evidence(
+        "none", base, base, {"dead_time": Verdict(900.0, 0.10, False)}, {"dead_time": cand}, u
+    )
     assert "removes only 10.0 %" in few and "at least 25 %" in few
     threshold = PENALTY * math.log(800)
-    weak = evidence("none", base, base, {"dead_time": Verdict(threshold - 1, 0.78, False)},
-                    {"dead_time": cand}, u)
+    weak = evidence(
+        "none",
+        base,
+        base,
+        {"dead_time": Verdict(threshold - 1, 0.78, False)},
+        {"dead_time": cand},
+        u,
+    )
     assert "removes 78.0 %" in weak and "criterion gain" in weak and "only" not in weak
-    vetoed = evidence("none", base, base, {"dead_time": Verdict(threshold + 100, 0.78, False)},
-                      {"dead_time": cand}, u)
+    vetoed = evidence(
+        "none",
+        base,
+        base,
+        {"dead_time": Verdict(threshold + 100, 0.78, False)},
+        {"dead_time": cand},
+        u,
+    )
     assert "plain speed error worse" in vetoed

@@ -49,7 +49,11 @@ def test_falling_f_is_called_dry_friction_with_the_line_through_the_rows():
 
 def test_constant_f_is_not_dry_friction():
     # i proportional to omega: f the same on every row
-    rows = [Reading(2.5, 2.0, 4.0, 20.0), Reading(3.5, 3.0, 6.0, 30.0), Reading(4.5, 4.0, 8.0, 40.0)]
+    rows = [
+        Reading(2.5, 2.0, 4.0, 20.0),
+        Reading(3.5, 3.0, 6.0, 30.0),
+        Reading(4.5, 4.0, 8.0, 40.0),
+    ]
     assert "dry_friction" not in codes(identify(rows, R))
 
 
@@ -96,7 +100,9 @@ V_DROP = 0.4
 
 
 def plant_log(params, high=4.5, seed=1, with_count=True, half=40, periods=4):
-    rec = record(params, square_wave(0.0, high, half, periods, lead=20), ts=0.025, seed=seed, jitter_us=2000)
+    rec = record(
+        params, square_wave(0.0, high, half, periods, lead=20), ts=0.025, seed=seed, jitter_us=2000
+    )
     extra = {"u_req": rec.u_req, "t_us": rec.t_us}
     if with_count:
         extra["count"] = rec.count
@@ -212,9 +218,15 @@ def test_json_shape(linear_result):
     assert list(identify(TABLE, R).to_json()) == ["R", "rows", "k_v", "k_a", "f"]
 
 
-@pytest.mark.parametrize(("zero_mode", "low", "with_u_req"), [
-    ("coast", 0.0, True), ("coast", 0.0, False), ("brake", 2.5, True), ("coast", 2.5, False),
-])
+@pytest.mark.parametrize(
+    ("zero_mode", "low", "with_u_req"),
+    [
+        ("coast", 0.0, True),
+        ("coast", 0.0, False),
+        ("brake", 2.5, True),
+        ("coast", 2.5, False),
+    ],
+)
 def test_T_recovered_when_the_wheel_coasts_or_keeps_moving(zero_mode, low, with_u_req):
     params = PlantParams(motor=MOTOR, tau_c=7e-3, v_drop=V_DROP, zero_mode=zero_mode)
     rec = record(params, square_wave(low, 4.5, 40, 4, lead=20), ts=0.025, seed=11, jitter_us=2000)

@@ -28,7 +28,11 @@ class _Clock:
         return self.t
 
 
-ROWS = ((2.5, "2,05 V", "3.82", "29.8 mA"), (3.5, "3.05", "5.81", "33.5"), (4.5, "4.05 V", "7.78", "0.0372 A"))
+ROWS = (
+    (2.5, "2,05 V", "3.82", "29.8 mA"),
+    (3.5, "3.05", "5.81", "33.5"),
+    (4.5, "4.05 V", "7.78", "0.0372 A"),
+)
 
 
 def _session(root: Path) -> Session:
@@ -48,7 +52,9 @@ def _session(root: Path) -> Session:
     s.enter("prep3.notes", "y' = 0 gives y = K c")
     plan = dict(step("task10").plans)["manual"]
     n = int(round(plan.duration / plan.ts))
-    u = np.concatenate((np.zeros(20), np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0)))
+    u = np.concatenate(
+        (np.zeros(20), np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
+    )
     data = record(PlantParams(), u, ts=plan.ts, seed=21, jitter_us=800)
     rec = s.start_run("steps", plan)
     for k in range(u.size):
@@ -76,14 +82,41 @@ def test_report_files_hold_the_sessions_values(tmp_path):
     html = written.html.read_text(encoding="utf-8")
     assert written.markdown == s.folder / "report.md" and written.html == s.folder / "report.html"
     assert written.runs == (s.folder / "runs" / "steps-1.csv",) and written.runs[0].exists()
-    k_v = sorted([(2.05 - 5.26 * 0.0298) / 3.82, (3.05 - 5.26 * 0.0335) / 5.81, (4.05 - 5.26 * 0.0372) / 7.78])[1]
+    k_v = sorted(
+        [
+            (2.05 - 5.26 * 0.0298) / 3.82,
+            (3.05 - 5.26 * 0.0335) / 5.81,
+            (4.05 - 5.26 * 0.0372) / 7.78,
+        ]
+    )[1]
     for doc in (md, unescape(html)):
-        for text in ("Ada Lovelace", "2026-11-22", "5.26 Ω", "29.8 mA", "33.5 mA", "37.2 mA", "2.05 V", "3.82 rad/s",
-                     f"{(2.05 - 5.26 * 0.0298) / 3.82:.4g}", f"k_v = {k_v:.4g} V s/rad", f"{0.65 * k_v:.4g} N m/A",
-                     "a/b", "b/c", "upside down", "a system", "the input amplitude; the static gain",
-                     "why the 20-tap filter lags", "y' = 0 gives y = K c", "steps-1", "runs/steps-1.csv",
-                     "T, least squares", "0.09 s", "omega at u_A = 5 V",
-                     "Most likely cause: ", "First-order model fitted to steps-1"):
+        for text in (
+            "Ada Lovelace",
+            "2026-11-22",
+            "5.26 Ω",
+            "29.8 mA",
+            "33.5 mA",
+            "37.2 mA",
+            "2.05 V",
+            "3.82 rad/s",
+            f"{(2.05 - 5.26 * 0.0298) / 3.82:.4g}",
+            f"k_v = {k_v:.4g} V s/rad",
+            f"{0.65 * k_v:.4g} N m/A",
+            "a/b",
+            "b/c",
+            "upside down",
+            "a system",
+            "the input amplitude; the static gain",
+            "why the 20-tap filter lags",
+            "y' = 0 gives y = K c",
+            "steps-1",
+            "runs/steps-1.csv",
+            "T, least squares",
+            "0.09 s",
+            "omega at u_A = 5 V",
+            "Most likely cause: ",
+            "First-order model fitted to steps-1",
+        ):
             assert text in doc, text
     ident = s.results().identification
     assert f"{ident.step.K:.4g} rad/s/V" in md and f"{ident.step.T:.4g} s" in html
@@ -95,11 +128,24 @@ def test_html_is_self_contained(tmp_path):
     html = write_report(s).html.read_text(encoding="utf-8")
     s.close()
     low = html.lower()
-    for needle in ("http://", "https://", "src=", "href=", "url(", "@import", "<script", "<link", "<img", "<iframe"):
+    for needle in (
+        "http://",
+        "https://",
+        "src=",
+        "href=",
+        "url(",
+        "@import",
+        "<script",
+        "<link",
+        "<img",
+        "<iframe",
+    ):
         assert needle not in low, needle
     p = _Refs()
     p.feed(html)
-    assert p.tags.count("svg") == 4  # the run (speed, voltage) and the model check (speed, residual)
+    assert (
+        p.tags.count("svg") == 4
+    )  # the run (speed, voltage) and the model check (speed, residual)
     assert p.tags.count("polyline") == 2 + 2 + 3 + 2  # omega x2, u x2, models x3, residuals x2
     assert "style" in p.tags and "table" in p.tags
 
@@ -136,7 +182,11 @@ def test_cli_report(tmp_path, capsys):
     s.close()
     assert main(["report", str(s.folder)]) == 0
     out = capsys.readouterr().out.splitlines()
-    assert out == [str(s.folder / "report.md"), str(s.folder / "report.html"), str(s.folder / "runs" / "steps-1.csv")]
+    assert out == [
+        str(s.folder / "report.md"),
+        str(s.folder / "report.html"),
+        str(s.folder / "runs" / "steps-1.csv"),
+    ]
     assert main(["report", "no-such-session", "--sessions", str(tmp_path)]) == 2
     err = capsys.readouterr().err
     assert "no session found" in err and err.count("\n") == 1

@@ -30,7 +30,10 @@ def quiet_app(root: Path, device: QuietDevice | None = None) -> LabApp:
 
 
 def real_app(root: Path, url: str) -> LabApp:
-    return make_app(UiConfig(device=url, sessions=root, today=DATE, animations=False, refresh=0.25), write_report)
+    return make_app(
+        UiConfig(device=url, sessions=root, today=DATE, animations=False, refresh=0.25),
+        write_report,
+    )
 
 
 async def settle(pilot, timeout: float = 20.0) -> None:
@@ -49,6 +52,7 @@ async def settle(pilot, timeout: float = 20.0) -> None:
 def quiet(tmp_path: Path):
     def _make(device: QuietDevice | None = None) -> LabApp:
         return quiet_app(tmp_path / "sessions", device)
+
     return _make
 
 

@@ -50,7 +50,9 @@ class QuietDevice:
         self.commands.append("CLOSE")
 
 
-def frozen_stream(seed: int = 3, u: float = 2.5, seconds: float = 4.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def frozen_stream(
+    seed: int = 3, u: float = 2.5, seconds: float = 4.0
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """A recorded stream for pinned screens: the seeded plant at ``u`` V for ``seconds`` s,
     sampled every 25 ms: board time (s), counts, requested V."""
     plant = Plant(PlantParams(), seed=seed)

@@ -6,9 +6,18 @@ from minseg_tui.lab.steps import step
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 
-TABLE = {"R": "5.3", "u_ss@2.5": "2.05", "omega_ss@2.5": "3.1", "i_ss@2.5": "28 mA",
-         "u_ss@3.5": "3.04", "omega_ss@3.5": "4.9", "i_ss@3.5": "32 mA",
-         "u_ss@4.5": "4.02", "omega_ss@4.5": "6.7", "i_ss@4.5": "36 mA"}
+TABLE = {
+    "R": "5.3",
+    "u_ss@2.5": "2.05",
+    "omega_ss@2.5": "3.1",
+    "i_ss@2.5": "28 mA",
+    "u_ss@3.5": "3.04",
+    "omega_ss@3.5": "4.9",
+    "i_ss@3.5": "32 mA",
+    "u_ss@4.5": "4.02",
+    "omega_ss@4.5": "6.7",
+    "i_ss@4.5": "36 mA",
+}
 """A filled Task 4-9 table as a group would type it (R in ohm, the rest per row)."""
 
 

@@ -48,7 +48,11 @@ async def test_wrong_entries_for_every_input_kind(quiet, tmp_path):
         # quantities
         await goto(pilot, "task2")
         row = await type_in(pilot, "R", "abc")
-        assert row.message.startswith("✗") and "not a number" in row.message and row.has_class("refused")
+        assert (
+            row.message.startswith("✗")
+            and "not a number" in row.message
+            and row.has_class("refused")
+        )
         row = await type_in(pilot, "R", "5,2")
         assert not row.has_class("refused") and row.message == ""
         row = await type_in(pilot, "R", "50 Ω")
@@ -116,7 +120,10 @@ async def test_summary_answers_are_picked_with_keys(quiet, tmp_path):
         assert app.lab.chosen("summary.5") == (1, 2)
         await type_in(pilot, "summary.unclear", "why k_a is 0.65 k_v")
     s = Session.open(list_sessions(tmp_path / "sessions")[0].path, readonly=True)
-    assert s.entry("summary.5").value == (1, 2) and s.entry("summary.unclear").text == "why k_a is 0.65 k_v"
+    assert (
+        s.entry("summary.5").value == (1, 2)
+        and s.entry("summary.unclear").text == "why k_a is 0.65 k_v"
+    )
 
 
 async def test_resume_lands_where_the_group_left_off(quiet, tmp_path):
@@ -167,7 +174,9 @@ async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quie
         enter_all(app, TABLE)
         record_step_run(app.lab.session)
         await goto(pilot, "task2")
-        assert not app.screen.active_bindings["f9"].binding.show  # not in the footer where it does nothing
+        assert not app.screen.active_bindings[
+            "f9"
+        ].binding.show  # not in the footer where it does nothing
         await pilot.press("f9", "alt+right")  # says it is not part of this step; nothing breaks
         await goto(pilot, "task11")
         await settle(pilot)
@@ -197,7 +206,14 @@ async def test_table_fits_80_columns_and_f7_gives_the_row_formula_with_its_numbe
         await settle(pilot)
         table = app.screen.query_one("#table", DataTable)
         assert table.virtual_size.width <= table.size.width  # no sideways scrolling: f is in sight
-        assert [str(c.label).split()[0] for c in table.columns.values()] == ["u", "u_ss", "omega_ss", "i_ss", "k_v", "f"]
+        assert [str(c.label).split()[0] for c in table.columns.values()] == [
+            "u",
+            "u_ss",
+            "omega_ss",
+            "i_ss",
+            "k_v",
+            "f",
+        ]
         table.focus()
         table.move_cursor(row=0, column=4)
         await pilot.press("f7")
@@ -214,9 +230,15 @@ async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         enter_all(app, TABLE)
-        first, second = record_step_run(app.lab.session, seed=5), record_step_run(app.lab.session, seed=6)
+        first, second = (
+            record_step_run(app.lab.session, seed=5),
+            record_step_run(app.lab.session, seed=6),
+        )
         texts = [t for t, _, _ in StepCommands(app.screen)._entries()]
-        assert f"Use run {first} for Tasks 11-15" in texts and "Use the latest run for Tasks 11-15" in texts
+        assert (
+            f"Use run {first} for Tasks 11-15" in texts
+            and "Use the latest run for Tasks 11-15" in texts
+        )
         await goto(pilot, "task11")
         await settle(pilot)
         assert f"run {second}" in str(app.screen.query_one("#zoom-note").render())
@@ -227,8 +249,14 @@ async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
         assert app.lab.session.step_run().name == second
         app.use_run(first)
         rec = app.lab.start_recording("manual")  # a new run recorded: it is the one used
-        rec.append(Batch(seq=range(40), t_us=[25_000 * k for k in range(40)], count=[3 * k for k in range(40)],
-                         u_mV=[4500] * 40))
+        rec.append(
+            Batch(
+                seq=range(40),
+                t_us=[25_000 * k for k in range(40)],
+                count=[3 * k for k in range(40)],
+                u_mV=[4500] * 40,
+            )
+        )
         app.lab.finish_recording(rec)
         assert app.lab.session.step_run().name == rec.name not in (first, second)
 
@@ -297,8 +325,15 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
         await pilot.pause()
         assert isinstance(app.screen, LabScreen)
         titles = {c.title for c in app.get_system_commands(app.screen)}
-        assert {"Stop motor", "Capture omega_ss", "Run step sequence", "Run fast step sequence",
-                "Export report", "Switch to virtual board", "Import a step log"} <= titles
+        assert {
+            "Stop motor",
+            "Capture omega_ss",
+            "Run step sequence",
+            "Run fast step sequence",
+            "Export report",
+            "Switch to virtual board",
+            "Import a step log",
+        } <= titles
         await pilot.press("ctrl+p")
         await pilot.press(*"Task 10")
         await pilot.pause(0.3)
@@ -346,14 +381,22 @@ async def test_no_color_is_respected(quiet, monkeypatch):
 
 def test_status_line_fits_80_columns_in_every_state():
     info = DeviceInfo("Virtual", "minseg-virtual 1.0.0", True, "minseg://", fallback=True)
-    board = DeviceInfo("MinSegMega", "minseg-fw 1.0.0", False, "/dev/serial/by-id/usb-Arduino_Mega_2560-if00")
+    board = DeviceInfo(
+        "MinSegMega", "minseg-fw 1.0.0", False, "/dev/serial/by-id/usb-Arduino_Mega_2560-if00"
+    )
     for i in (info, board):
-        for event in ("", "board disconnected — everything recorded is kept", "watchdog stopped the motor"):
+        for event in (
+            "",
+            "board disconnected — everything recorded is kept",
+            "watchdog stopped the motor",
+        ):
             text = status_text(i, LinkHealth("ok", 12345, 678), "steps 0/4.5 V", event, 78)
             assert len(text) <= 78, text
             assert "motor steps" in text
     assert "no board found" in status_text(info, None, "off")
-    assert "disconnected" in status_text(board, None, "off", "board disconnected — everything recorded is kept", 78)
+    assert "disconnected" in status_text(
+        board, None, "off", "board disconnected — everything recorded is kept", 78
+    )
 
 
 async def test_typing_lands_in_the_step_and_enter_moves_on(quiet, tmp_path):

@@ -12,7 +12,6 @@ from tests.ui.helpers import TABLE, enter_all, record_step_run
 SIZES = [(80, 24), (120, 40)]
 
 
-
 def _to(step_id: str, entries: dict[str, str] | None = None, run: bool = False, live: bool = False):
     async def run_before(pilot) -> None:
         app = pilot.app
@@ -26,6 +25,7 @@ def _to(step_id: str, entries: dict[str, str] | None = None, run: bool = False, 
         app.meter_reading = METER
         app.go_to_step(step_id)
         await settle(pilot)
+
     return run_before
 
 
@@ -40,7 +40,11 @@ def test_start_screen(snap_compare, tmp_path, size):
 
 @pytest.mark.parametrize("size", SIZES)
 def test_prep_question_with_feedback(snap_compare, tmp_path, size):
-    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("prep8", {"prep8.T": "b/a", "prep8.K": "c/b"}))
+    assert snap_compare(
+        _app(tmp_path),
+        terminal_size=size,
+        run_before=_to("prep8", {"prep8.T": "b/a", "prep8.K": "c/b"}),
+    )
 
 
 @pytest.mark.parametrize("size", SIZES)
@@ -50,8 +54,11 @@ def test_resistance_step_with_a_refused_entry(snap_compare, tmp_path, size):
 
 @pytest.mark.parametrize("size", SIZES)
 def test_live_measurement_step(snap_compare, tmp_path, size):
-    assert snap_compare(_app(tmp_path), terminal_size=size,
-                        run_before=_to("task4", {"u_ss@2.5": "2,05 V"}, live=True))
+    assert snap_compare(
+        _app(tmp_path),
+        terminal_size=size,
+        run_before=_to("task4", {"u_ss@2.5": "2,05 V"}, live=True),
+    )
 
 
 @pytest.mark.parametrize("size", SIZES)
@@ -61,24 +68,34 @@ def test_table_step(snap_compare, tmp_path, size):
 
 @pytest.mark.parametrize("size", SIZES)
 def test_step_run(snap_compare, tmp_path, size):
-    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("task10", TABLE, run=True))
+    assert snap_compare(
+        _app(tmp_path), terminal_size=size, run_before=_to("task10", TABLE, run=True)
+    )
 
 
 @pytest.mark.parametrize("size", SIZES)
 def test_results_step(snap_compare, tmp_path, size):
-    assert snap_compare(_app(tmp_path), terminal_size=size,
-                        run_before=_to("task12", {**TABLE, "own.T": "0.05 s"}, run=True))
+    assert snap_compare(
+        _app(tmp_path),
+        terminal_size=size,
+        run_before=_to("task12", {**TABLE, "own.T": "0.05 s"}, run=True),
+    )
 
 
 @pytest.mark.parametrize("size", SIZES)
 def test_model_check(snap_compare, tmp_path, size):
-    assert snap_compare(_app(tmp_path), terminal_size=size, run_before=_to("model_check", TABLE, run=True))
+    assert snap_compare(
+        _app(tmp_path), terminal_size=size, run_before=_to("model_check", TABLE, run=True)
+    )
 
 
 @pytest.mark.parametrize("size", SIZES)
 def test_summary_step(snap_compare, tmp_path, size):
-    assert snap_compare(_app(tmp_path), terminal_size=size,
-                        run_before=_to("summary", {"summary.1": "b", "summary.5": "b, c"}))
+    assert snap_compare(
+        _app(tmp_path),
+        terminal_size=size,
+        run_before=_to("summary", {"summary.1": "b", "summary.5": "b, c"}),
+    )
 
 
 @pytest.mark.parametrize("size", SIZES)
@@ -87,4 +104,5 @@ def test_help_screen(snap_compare, tmp_path, size):
         await _to("prep1")(pilot)
         await pilot.press("f1")
         await pilot.pause()
+
     assert snap_compare(_app(tmp_path), terminal_size=size, run_before=run_before)

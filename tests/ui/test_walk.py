@@ -169,8 +169,12 @@ asyncio.run(main())
 
 async def test_kill_9_mid_session_and_resume(tmp_path):
     root = tmp_path / "sessions"
-    proc = subprocess.Popen([sys.executable, "-c", SCRIPT, str(root)], stdout=subprocess.PIPE,
-                            cwd=Path(__file__).parents[2], text=True)
+    proc = subprocess.Popen(
+        [sys.executable, "-c", SCRIPT, str(root)],
+        stdout=subprocess.PIPE,
+        cwd=Path(__file__).parents[2],
+        text=True,
+    )
     try:
         assert proc.stdout.readline().strip() == "READY"
     finally:

@@ -56,8 +56,14 @@ class Anomaly:
     text: str
 
     def to_dict(self) -> dict[str, object]:
-        return {"kind": self.kind, "row": self.row, "t": self.t, "size": self.size,
-                "unit": self.unit, "text": self.text}
+        return {
+            "kind": self.kind,
+            "row": self.row,
+            "t": self.t,
+            "size": self.size,
+            "unit": self.unit,
+            "text": self.text,
+        }
 
 
 def robust_sigma(x: FloatArray) -> float:
@@ -67,7 +73,9 @@ def robust_sigma(x: FloatArray) -> float:
     return float(1.4826 * np.median(np.abs(x - np.median(x))))
 
 
-def find_wild(residual: FloatArray, taps: int, most: int = 10, moving: FloatArray | None = None) -> list[int]:
+def find_wild(
+    residual: FloatArray, taps: int, most: int = 10, moving: FloatArray | None = None
+) -> list[int]:
     """Rows where the measured angle is wild for one sample (isolated whitened spikes).
 
     With ``moving`` (bool per row, see :func:`moving_rows`) the noise scale is taken
@@ -119,22 +127,30 @@ def repair(y: FloatArray, residual: FloatArray, rows: list[int], taps: int) -> F
     return out
 
 
-def wild_anomalies(t: FloatArray, y: FloatArray, residual: FloatArray, rows: list[int],
-                   taps: int) -> list[Anomaly]:
+def wild_anomalies(
+    t: FloatArray, y: FloatArray, residual: FloatArray, rows: list[int], taps: int
+) -> list[Anomaly]:
     """Sentences for the wild rows found."""
     e = whiten(residual, taps)
     out = []
     for m in rows:
-        out.append(Anomaly(
-            "wild_sample", m, float(t[m]), float(e[m]), "rad/s",
-            f"row {m} (t = {t[m]:.3f} s): the speed jumps by {e[m]:+.2f} rad/s for one sample "
-            "and straight back, as a misread encoder count does; it was left out of the fit",
-        ))
+        out.append(
+            Anomaly(
+                "wild_sample",
+                m,
+                float(t[m]),
+                float(e[m]),
+                "rad/s",
+                f"row {m} (t = {t[m]:.3f} s): the speed jumps by {e[m]:+.2f} rad/s for one sample "
+                "and straight back, as a misread encoder count does; it was left out of the fit",
+            )
+        )
     return out
 
 
-def creep(t: FloatArray, u: FloatArray, residual: FloatArray, pred: FloatArray, T: float,
-          ts: float) -> Anomaly | None:
+def creep(
+    t: FloatArray, u: FloatArray, residual: FloatArray, pred: FloatArray, T: float, ts: float
+) -> Anomaly | None:
     """A slow creep of the speed in the settled part of the driven stretches, if clear."""
     change = np.flatnonzero(np.diff(u) != 0) + 1
     bounds = np.concatenate(([0], change, [u.size]))
@@ -166,7 +182,11 @@ def creep(t: FloatArray, u: FloatArray, residual: FloatArray, pred: FloatArray, 
     if same >= 0.75 and abs(mean_rel) >= 0.02 and sure:
         word = "creeps up" if mean_rel > 0 else "sags"
         return Anomaly(
-            "creep", None, None, 100 * mean_rel, "%",
+            "creep",
+            None,
+            None,
+            100 * mean_rel,
+            "%",
             f"after each step has settled the speed still {word} by about {abs(100 * mean_rel):.1f} % "
             "over the rest of the step (warming up, a battery or a load that changes); "
             "no first-order model does that, so it is not counted as a cause",
@@ -174,9 +194,17 @@ def creep(t: FloatArray, u: FloatArray, residual: FloatArray, pred: FloatArray, 
     return None
 
 
-def late_steps(t: FloatArray, u: FloatArray, residual: FloatArray, d_shift: FloatArray,
-               shift: float, ts: float, T: float = 0.0, pred: FloatArray | None = None,
-               angle_noise: float = 0.0) -> list[Anomaly]:
+def late_steps(
+    t: FloatArray,
+    u: FloatArray,
+    residual: FloatArray,
+    d_shift: FloatArray,
+    shift: float,
+    ts: float,
+    T: float = 0.0,
+    pred: FloatArray | None = None,
+    angle_noise: float = 0.0,
+) -> list[Anomaly]:
     """Edges whose response is shifted in time against the others (a step between samples).
 
     ``d_shift`` is the change of the prediction when every edge is ``shift`` s later; per
@@ -215,11 +243,17 @@ def late_steps(t: FloatArray, u: FloatArray, residual: FloatArray, d_shift: Floa
         # the shift must be a good part of a sample, well above what the noise allows and
         # well above the timing the angle quantum allows for this edge
         if abs(off) > max(0.25 * ts, LATE_SIGMAS * res_t) and abs(off) / shift * st > 6 * noise:
-            out.append(Anomaly(
-                "late_step", int(e), float(t[e]), 1e3 * off, "ms",
-                f"the step at row {e} (t = {t[e]:.3f} s) acts about {1e3 * off:+.0f} ms "
-                "from its sample time compared with the others: it started between samples",
-            ))
+            out.append(
+                Anomaly(
+                    "late_step",
+                    int(e),
+                    float(t[e]),
+                    1e3 * off,
+                    "ms",
+                    f"the step at row {e} (t = {t[e]:.3f} s) acts about {1e3 * off:+.0f} ms "
+                    "from its sample time compared with the others: it started between samples",
+                )
+            )
     return out
 
 
@@ -231,7 +265,11 @@ def gaps(t: FloatArray, ts: float) -> Anomaly | None:
         return None
     k = int(bad[np.argmax(dt[bad])])
     return Anomaly(
-        "gap", k + 1, float(t[k + 1]), float(1e3 * dt[k]), "ms",
+        "gap",
+        k + 1,
+        float(t[k + 1]),
+        float(1e3 * dt[k]),
+        "ms",
         f"{bad.size} gap(s) in the sample times, the longest {1e3 * dt[k]:.0f} ms before row {k + 1} "
         f"(nominal {1e3 * ts:.1f} ms): samples were lost; the simulation uses the real times",
     )

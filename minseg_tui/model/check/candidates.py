@@ -36,25 +36,63 @@ class Candidate:
 
 
 CANDIDATES: tuple[Candidate, ...] = (
-    Candidate("coulomb_friction", "u_c", "V", 0.0, 1.5, False,
-              "dry friction: the motor needs u_c volts to break away and stops in finite time"),
-    Candidate("dead_time", "delay", "s", 0.0, 0.15, False,
-              "a pure delay between the command and the motor"),
-    Candidate("velocity_filter", "taps", "samples", 1, 40, True,
-              "the measured speed is a moving average of the Euler velocity over N samples"),
-    Candidate("coast_on_zero", "T_coast", "s", 0.005, 30.0, False,
-              "at zero command the bridge is open and the wheel coasts with its own time constant",
-              log_scale=True),
-    Candidate("second_pole", "T2", "s", 0.0, 0.12, False,
-              "an unmodelled extra pole (for instance the armature's L/R) delays the torque"),
+    Candidate(
+        "coulomb_friction",
+        "u_c",
+        "V",
+        0.0,
+        1.5,
+        False,
+        "dry friction: the motor needs u_c volts to break away and stops in finite time",
+    ),
+    Candidate(
+        "dead_time",
+        "delay",
+        "s",
+        0.0,
+        0.15,
+        False,
+        "a pure delay between the command and the motor",
+    ),
+    Candidate(
+        "velocity_filter",
+        "taps",
+        "samples",
+        1,
+        40,
+        True,
+        "the measured speed is a moving average of the Euler velocity over N samples",
+    ),
+    Candidate(
+        "coast_on_zero",
+        "T_coast",
+        "s",
+        0.005,
+        30.0,
+        False,
+        "at zero command the bridge is open and the wheel coasts with its own time constant",
+        log_scale=True,
+    ),
+    Candidate(
+        "second_pole",
+        "T2",
+        "s",
+        0.0,
+        0.12,
+        False,
+        "an unmodelled extra pole (for instance the armature's L/R) delays the torque",
+    ),
 )
 """Every cause besides ``none``, in the order they are tried."""
 
 BY_CAUSE: dict[str, Candidate] = {c.cause: c for c in CANDIDATES}
 
 NULL_VALUE: dict[str, float] = {
-    "coulomb_friction": 0.0, "dead_time": 0.0, "velocity_filter": 1.0,
-    "coast_on_zero": float("inf"), "second_pole": 0.0,
+    "coulomb_friction": 0.0,
+    "dead_time": 0.0,
+    "velocity_filter": 1.0,
+    "coast_on_zero": float("inf"),
+    "second_pole": 0.0,
 }
 """The parameter value at which each candidate is exactly the first-order model
 (coast_on_zero reduces to it only when T_coast equals T; infinity marks "no value")."""
@@ -79,7 +117,9 @@ class Effects:
         return cls(**kw)  # type: ignore[arg-type]
 
 
-def angle(st: Stretches, t: FloatArray, T: float, fx: Effects, z0: float | None = 0.0) -> FloatArray:
+def angle(
+    st: Stretches, t: FloatArray, T: float, fx: Effects, z0: float | None = 0.0
+) -> FloatArray:
     """Angle at the instants ``t`` (s) for the first-order model with the effects ``fx`` (K = 1).
 
     ``z0`` is the initial speed (K = 1 units, V); None means steady state under the first
@@ -98,8 +138,9 @@ def angle(st: Stretches, t: FloatArray, T: float, fx: Effects, z0: float | None 
     return pieces.angle(t - fx.delay)
 
 
-def response(st: Stretches, t: FloatArray, ts: float, T: float, fx: Effects,
-             z0: float | None = 0.0) -> FloatArray:
+def response(
+    st: Stretches, t: FloatArray, ts: float, T: float, fx: Effects, z0: float | None = 0.0
+) -> FloatArray:
     """The measured speed the model predicts on every row (K = 1), as the board measures it.
 
     The angle is also taken ``taps`` nominal periods before the first row, so a log that

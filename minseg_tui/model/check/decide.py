@@ -52,8 +52,9 @@ def compare(fit: Fit, against: Fit) -> Verdict:
     return Verdict(d, red, d > PENALTY * math.log(n) and red >= MIN_REDUCTION)
 
 
-def choose(base: Fit, fits: dict[str, Fit], vetoed: set[str] | frozenset[str] = frozenset()
-           ) -> tuple[str, dict[str, Verdict]]:
+def choose(
+    base: Fit, fits: dict[str, Fit], vetoed: set[str] | frozenset[str] = frozenset()
+) -> tuple[str, dict[str, Verdict]]:
     """The cause ('none' when no candidate is clear) and every candidate's verdict.
 
     ``vetoed`` candidates (their plain speed residual is worse than the baseline's) are

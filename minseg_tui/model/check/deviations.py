@@ -36,8 +36,9 @@ def regions(u: FloatArray, T: float, ts: float) -> NDArray[np.int64]:
     return out
 
 
-def deviations(u: FloatArray, residual: FloatArray, T: float, ts: float,
-               keep: NDArray[np.bool_] | None = None) -> list[Deviation]:
+def deviations(
+    u: FloatArray, residual: FloatArray, T: float, ts: float, keep: NDArray[np.bool_] | None = None
+) -> list[Deviation]:
     """The residual summarised per region (rows where ``keep`` is False and regions with no
     rows are left out)."""
     reg = regions(u, T, ts)
@@ -47,7 +48,9 @@ def deviations(u: FloatArray, residual: FloatArray, T: float, ts: float,
     for i, name in enumerate(REGIONS):
         r = residual[reg == i]
         if r.size:
-            out.append(Deviation(name, int(r.size), float(np.sqrt(np.mean(r * r))), float(np.mean(r))))
+            out.append(
+                Deviation(name, int(r.size), float(np.sqrt(np.mean(r * r))), float(np.mean(r)))
+            )
     return out
 
 
@@ -59,7 +62,11 @@ def describe(devs: list[Deviation]) -> str:
     steady = next((d for d in devs if d.region == "steady_state"), None)
     words = worst.region.replace("_", " ")
     if steady is None or worst is steady:
-        return f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
+        return (
+            f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
+        )
     ratio = f"{worst.rms / steady.rms:.1f}x" if steady.rms > 0 else "exact in steady state"
-    return (f"the model is worst {words}: rms {worst.rms:.3f} rad/s there against "
-            f"{steady.rms:.3f} rad/s in steady state ({ratio})")
+    return (
+        f"the model is worst {words}: rms {worst.rms:.3f} rad/s there against "
+        f"{steady.rms:.3f} rad/s in steady state ({ratio})"
+    )

@@ -105,8 +105,14 @@ class Problem:
         """The first ``rows`` rows as a problem of their own (same weights)."""
         if rows >= self.y.size:
             return self
-        return Problem(self.t[:rows], self.u[:rows], self.y[:rows], self.ts, self.z0,
-                       self.weights[:rows].copy())
+        return Problem(
+            self.t[:rows],
+            self.u[:rows],
+            self.y[:rows],
+            self.ts,
+            self.z0,
+            self.weights[:rows].copy(),
+        )
 
 
 @dataclass(frozen=True)
@@ -167,7 +173,9 @@ def fit_baseline(prob: Problem) -> Fit:
 
 def _param_grid(c: Candidate, prob: Problem) -> FloatArray:
     if c.cause == "coulomb_friction":
-        top = min(c.hi, 0.9 * float(np.min(np.abs(prob.st.value[prob.st.value != 0]), initial=c.hi)))
+        top = min(
+            c.hi, 0.9 * float(np.min(np.abs(prob.st.value[prob.st.value != 0]), initial=c.hi))
+        )
         return np.linspace(0.0, top, 13)[1:]
     if c.log_scale:
         return np.geomspace(c.lo, c.hi, 14)
@@ -201,7 +209,9 @@ def fit_candidate(prob: Problem, c: Candidate, base: Fit, extra: Effects | None 
                     best = (sse, T, taps)
         tries = []
         for p in range(max(int(c.lo), best[2] - 1), min(int(c.hi), best[2] + 1) + 1):
-            tries.append((*_best_T(prob, fx_of(p), _within(best[1] * np.geomspace(0.7, 1.4, 5))), p))
+            tries.append(
+                (*_best_T(prob, fx_of(p), _within(best[1] * np.geomspace(0.7, 1.4, 5))), p)
+            )
         T, sse, p = min(tries, key=lambda r: r[1])
         _, K = _score(prob, T, fx_of(p))
         return Fit(c.cause, T, K, {c.param: float(p)}, fx_of(p), sse, base.rows)
@@ -249,4 +259,3 @@ def _asdict(fx: Effects) -> dict[str, float]:
 def fit_all(prob: Problem, base: Fit) -> dict[str, Fit]:
     """Every candidate fitted alone on top of the baseline."""
     return {name: fit_candidate(prob, c, base) for name, c in BY_CAUSE.items()}
-

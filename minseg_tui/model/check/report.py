@@ -24,8 +24,12 @@ class ModelFit:
     fit_percent: float
 
     def to_dict(self) -> dict[str, object]:
-        return {"model": self.model, "params": dict(self.params), "rmse": self.rmse,
-                "fit_percent": self.fit_percent}
+        return {
+            "model": self.model,
+            "params": dict(self.params),
+            "rmse": self.rmse,
+            "fit_percent": self.fit_percent,
+        }
 
 
 @dataclass(frozen=True)
@@ -49,8 +53,11 @@ class Finding:
     others: list[Other] = field(default_factory=list)
 
     def to_dict(self) -> dict[str, object]:
-        return {"cause": self.cause, "evidence": self.evidence,
-                "others": [o.to_dict() for o in self.others]}
+        return {
+            "cause": self.cause,
+            "evidence": self.evidence,
+            "others": [o.to_dict() for o in self.others],
+        }
 
 
 @dataclass(frozen=True)
@@ -101,8 +108,15 @@ def fit_percent(y: FloatArray, yhat: FloatArray) -> float:
     return float(100.0 * (1.0 - np.linalg.norm(y - yhat) / den))
 
 
-_UNITS = {"T": "s", "K": "rad/s/V", "u_c": "V", "delay": "s", "taps": "samples",
-          "T_coast": "s", "T2": "s"}
+_UNITS = {
+    "T": "s",
+    "K": "rad/s/V",
+    "u_c": "V",
+    "delay": "s",
+    "taps": "samples",
+    "T_coast": "s",
+    "T2": "s",
+}
 
 
 def _params(p: dict[str, float]) -> str:
@@ -119,8 +133,10 @@ def text(r: CheckResult) -> str:
         f"Where it deviates: {r.where}",
     ]
     for d in r.deviations:
-        lines.append(f"  {d.region.replace('_', ' '):<20} {d.rows:6d} rows  rms {d.rms:.3f} rad/s"
-                     f"  mean {d.mean:+.3f} rad/s")
+        lines.append(
+            f"  {d.region.replace('_', ' '):<20} {d.rows:6d} rows  rms {d.rms:.3f} rad/s"
+            f"  mean {d.mean:+.3f} rad/s"
+        )
     lines.append(f"Cause: {f.cause}")
     lines.append(f"  {f.evidence}")
     for o in f.others:
@@ -128,8 +144,10 @@ def text(r: CheckResult) -> str:
     if f.cause != "none":
         lines.append(f"Extended model ({e.model}): {_params(e.params)}")
         lines.append(f"  rmse {e.rmse:.3f} rad/s, fit {e.fit_percent:.1f} %")
-        lines.append(f"Gain: rmse {r.gain['rmse_reduction_percent']:.1f} % lower, fit "
-                     f"{r.gain['fit_percent_gain']:+.1f} points")
+        lines.append(
+            f"Gain: rmse {r.gain['rmse_reduction_percent']:.1f} % lower, fit "
+            f"{r.gain['fit_percent_gain']:+.1f} points"
+        )
     else:
         lines.append("Extended model: none needed (it is the baseline)")
     if r.anomalies:

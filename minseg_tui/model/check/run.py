@@ -57,10 +57,16 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
         else:
             full.z0 = _initial_speed(full)
             how = "its initial speed was fitted"
-        notes.append(an.Anomaly(
-            "starts_moving", 0, float(t[0]), float(y[min(1, y.size - 1)]), "rad/s",
-            f"the log starts with the wheel already turning; {how}",
-        ))
+        notes.append(
+            an.Anomaly(
+                "starts_moving",
+                0,
+                float(t[0]),
+                float(y[min(1, y.size - 1)]),
+                "rad/s",
+                f"the log starts with the wheel already turning; {how}",
+            )
+        )
 
     # first pass: baseline, wild samples out
     head = full.head(MAX_FIT_ROWS)
@@ -95,15 +101,23 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
     # predictions on every row of the log as given
     b_pred = base.predict(full)
     e_pred = ext.predict(full) if cause != "none" else b_pred
-    baseline = ModelFit("first_order", {"T": base.T, "K": base.K}, rmse(y, b_pred), fit_percent(y, b_pred))
+    baseline = ModelFit(
+        "first_order", {"T": base.T, "K": base.K}, rmse(y, b_pred), fit_percent(y, b_pred)
+    )
     if cause == "none":
         extended = baseline
     else:
-        extended = ModelFit(f"first_order+{cause}", {"T": ext.T, "K": ext.K, **ext.params},
-                            rmse(y, e_pred), fit_percent(y, e_pred))
+        extended = ModelFit(
+            f"first_order+{cause}",
+            {"T": ext.T, "K": ext.K, **ext.params},
+            rmse(y, e_pred),
+            fit_percent(y, e_pred),
+        )
     v = verdicts.get(cause)
     gain = {
-        "rmse_reduction_percent": 100.0 * (1.0 - extended.rmse / baseline.rmse) if baseline.rmse > 0 else 0.0,
+        "rmse_reduction_percent": 100.0 * (1.0 - extended.rmse / baseline.rmse)
+        if baseline.rmse > 0
+        else 0.0,
         "fit_percent_gain": extended.fit_percent - baseline.fit_percent,
         "whitened_reduction_percent": 100.0 * v.reduction if v else 0.0,
         "criterion_gain": v.d if v else 0.0,
@@ -125,30 +139,43 @@ def check(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None)
     moved = replace(ext, effects=replace(ext.effects, delay=ext.effects.delay + shift))
     taps = ext.effects.taps
     angle_noise = taps * ts * an.robust_sigma(whiten(res, taps)[moving]) if np.any(moving) else 0.0
-    found += an.late_steps(t, u, res, moved.predict(full) - e_pred, shift, ts, ext.T, e_pred, angle_noise)
+    found += an.late_steps(
+        t, u, res, moved.predict(full) - e_pred, shift, ts, ext.T, e_pred, angle_noise
+    )
     gp = an.gaps(t, ts)
     if gp:
         found.append(gp)
-    return CheckResult(baseline, finding, extended, gain, devs, describe(devs), found,
-                       t, y, b_pred, e_pred)
+    return CheckResult(
+        baseline, finding, extended, gain, devs, describe(devs), found, t, y, b_pred, e_pred
+    )
 
 
-def _others(head: Problem, base: Fit, ext: Fit, cause: str, u_max: float, most: int = 2) -> list[Other]:
+def _others(
+    head: Problem, base: Fit, ext: Fit, cause: str, u_max: float, most: int = 2
+) -> list[Other]:
     """Further effects on top of the cause, greedily: the best clear one, then again."""
     found: list[Other] = []
     current = ext
     left = set(COMBINABLE[cause])
     while left and len(found) < most:
-        tries = {n: fit_candidate(head, BY_CAUSE[n], current, extra=current.effects) for n in sorted(left)}
+        tries = {
+            n: fit_candidate(head, BY_CAUSE[n], current, extra=current.effects)
+            for n in sorted(left)
+        }
         clear = {n: f for n, f in tries.items() if compare(f, current).clear}
         if not clear:
             break
         name = min(clear, key=lambda n: clear[n].sse_white)
         both = clear[name]
         red = compare(both, current).reduction
-        found.append(Other(name, dict(both.params),
-                           f"{WORDS[name](both, base, u_max)}; on top of {cause} it removes a "
-                           f"further {100 * red:.0f} % of the whitened residual"))
+        found.append(
+            Other(
+                name,
+                dict(both.params),
+                f"{WORDS[name](both, base, u_max)}; on top of {cause} it removes a "
+                f"further {100 * red:.0f} % of the whitened residual",
+            )
+        )
         current = both
         left = (left & COMBINABLE[name]) - {name}
     return found
@@ -167,7 +194,9 @@ def _raw_worse(prob: Problem, base: Fit, fits: dict[str, Fit]) -> set[str]:
     return {name for name, f in fits.items() if sse(f) > ref}
 
 
-def _repaired(full: Problem, residual: FloatArray, rows: list[int], taps: int) -> tuple[Problem, Problem, Fit]:
+def _repaired(
+    full: Problem, residual: FloatArray, rows: list[int], taps: int
+) -> tuple[Problem, Problem, Fit]:
     y2 = an.repair(full.y, residual, rows, taps)
     fixed = Problem(full.t, full.u, y2, full.ts, full.z0)
     head = fixed.head(MAX_FIT_ROWS)

@@ -12,7 +12,9 @@ from numpy.typing import NDArray
 _G = (math.sqrt(5.0) - 1.0) / 2.0
 
 
-def golden(f: Callable[[float], float], a: float, b: float, xatol: float = 2e-3) -> tuple[float, float]:
+def golden(
+    f: Callable[[float], float], a: float, b: float, xatol: float = 2e-3
+) -> tuple[float, float]:
     """(x, f(x)) minimising f on [a, b] by golden-section search (f unimodal there)."""
     c, d = b - _G * (b - a), a + _G * (b - a)
     fc, fd = f(c), f(d)
@@ -28,11 +30,18 @@ def golden(f: Callable[[float], float], a: float, b: float, xatol: float = 2e-3)
     return (c, fc) if fc < fd else (d, fd)
 
 
-def nelder_mead(f: Callable[[NDArray[np.float64]], float], x0: NDArray[np.float64],
-                step: NDArray[np.float64], xatol: float = 1e-3, maxfev: int = 80) -> tuple[NDArray[np.float64], float]:
+def nelder_mead(
+    f: Callable[[NDArray[np.float64]], float],
+    x0: NDArray[np.float64],
+    step: NDArray[np.float64],
+    xatol: float = 1e-3,
+    maxfev: int = 80,
+) -> tuple[NDArray[np.float64], float]:
     """(x, f(x)) from the Nelder-Mead simplex started at x0 with edges ``step`` per axis."""
     n = x0.size
-    pts = [np.asarray(x0, float)] + [np.asarray(x0, float) + np.eye(n)[i] * step[i] for i in range(n)]
+    pts = [np.asarray(x0, float)] + [
+        np.asarray(x0, float) + np.eye(n)[i] * step[i] for i in range(n)
+    ]
     vals = [f(p) for p in pts]
     fev = n + 1
     while fev < maxfev:

@@ -51,8 +51,16 @@ class _Pieces:
     def __init__(self) -> None:
         self.rows: list[tuple[float, float, float, float, float, float, float]] = []
 
-    def add(self, t0: float, th0: float, c: float, a1: float = 0.0, t1: float = 1.0,
-            a2: float = 0.0, t2: float = 1.0) -> None:
+    def add(
+        self,
+        t0: float,
+        th0: float,
+        c: float,
+        a1: float = 0.0,
+        t1: float = 1.0,
+        a2: float = 0.0,
+        t2: float = 1.0,
+    ) -> None:
         self.rows.append((t0, th0, c, a1, t1, a2, t2))
 
     def angle(self, tau: FloatArray) -> FloatArray:
@@ -61,12 +69,17 @@ class _Pieces:
         i = np.clip(np.searchsorted(p[:, 0], tau, side="right") - 1, 0, None)
         q = p[i]
         dt = tau - q[:, 0]
-        return (q[:, 1] + q[:, 2] * dt - q[:, 3] * q[:, 4] * np.expm1(-dt / q[:, 4])
-                - q[:, 5] * q[:, 6] * np.expm1(-dt / q[:, 6]))
+        return (
+            q[:, 1]
+            + q[:, 2] * dt
+            - q[:, 3] * q[:, 4] * np.expm1(-dt / q[:, 4])
+            - q[:, 5] * q[:, 6] * np.expm1(-dt / q[:, 6])
+        )
 
 
-def _first_order_stretch(out: _Pieces, t0: float, w0: float, th0: float, a: float, b: float,
-                         d: float, length: float) -> tuple[float, float]:
+def _first_order_stretch(
+    out: _Pieces, t0: float, w0: float, th0: float, a: float, b: float, d: float, length: float
+) -> tuple[float, float]:
     """w' = -a w + b - d sgn(w) over ``length`` s from (w0, th0); sticks at 0 when |b| <= d.
 
     Adds the pieces to ``out`` and returns (w, theta) at the end.

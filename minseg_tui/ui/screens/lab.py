@@ -16,8 +16,12 @@ from minseg_tui.ui.ports import Lab
 from minseg_tui.ui.widgets.fields import FieldRow
 from minseg_tui.ui.widgets.status import DeviceStatus
 
-_SHORT = {"Preparation": "Prep", "Summary and reflections (section 3.2)": "Summary", "Tasks 6-9": "Task 6-9",
-          "Model check": "Check"}
+_SHORT = {
+    "Preparation": "Prep",
+    "Summary and reflections (section 3.2)": "Summary",
+    "Tasks 6-9": "Task 6-9",
+    "Model check": "Check",
+}
 
 MARKS = {"done": "✓", "started": "…", "todo": " ", "info": " "}
 """The navigator's mark of a step's status (a character, not a colour)."""
@@ -54,7 +58,9 @@ class StepPane(VerticalScroll):
             if docked is not None:
                 yield docked
         for f in self.step.fields:
-            yield FieldRow(f, self._lab.text(f.key), self._lab.result(f.key), self._lab.chosen(f.key))
+            yield FieldRow(
+                f, self._lab.text(f.key), self._lab.result(f.key), self._lab.chosen(f.key)
+            )
 
     def on_mount(self) -> None:
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
@@ -84,8 +90,10 @@ class LabScreen(Screen[None]):
     def compose(self) -> ComposeResult:
         yield DeviceStatus()
         with Horizontal(id="body"):
-            yield OptionList(*[Option(nav_label(s, self.lab.status(s.id)), id=s.id) for s in self.lab.steps],
-                             id="nav")
+            yield OptionList(
+                *[Option(nav_label(s, self.lab.status(s.id)), id=s.id) for s in self.lab.steps],
+                id="nav",
+            )
             yield Static("", classes="pane")
         yield Footer()
 
@@ -141,7 +149,11 @@ class LabScreen(Screen[None]):
 
     def on_key(self, event: events.Key) -> None:
         """Typing on the list of steps goes into the step's first entry, not nowhere."""
-        if self.focused is not self.query_one("#nav") or not event.is_printable or not event.character:
+        if (
+            self.focused is not self.query_one("#nav")
+            or not event.is_printable
+            or not event.character
+        ):
             return
         inputs = self.query(StepPane).last().query(Input)
         if inputs:

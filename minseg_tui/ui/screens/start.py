@@ -46,7 +46,9 @@ class StartScreen(Screen[None]):
             yield Static("New session", classes="title")
             yield LabInput(placeholder="group members, e.g. Ada L, Alan T", id="members")
             yield LabInput(value=self._today, placeholder="date (YYYY-MM-DD)", id="date")
-            yield Static("Enter on the names starts the lab. Tab moves on.", id="start-msg", classes="hint")
+            yield Static(
+                "Enter on the names starts the lab. Tab moves on.", id="start-msg", classes="hint"
+            )
             yield Static("Resume a session", classes="title")
             options = [
                 Option(self._label(s), id=s.path, disabled=bool(s.damaged)) for s in self._sessions

@@ -84,9 +84,16 @@ class FieldRow(Vertical):
             self.text = text
             self.submitted = submitted
 
-    def __init__(self, field: Field, text: str, result: EntryResult | None = None,
-                 chosen: tuple[int, ...] = ()) -> None:
-        super().__init__(id=field_id(field.key), classes="field choice" if field.options else "field")
+    def __init__(
+        self,
+        field: Field,
+        text: str,
+        result: EntryResult | None = None,
+        chosen: tuple[int, ...] = (),
+    ) -> None:
+        super().__init__(
+            id=field_id(field.key), classes="field choice" if field.options else "field"
+        )
         self.field = field
         self._text = text
         self._result = result
@@ -96,19 +103,29 @@ class FieldRow(Vertical):
     def compose(self) -> ComposeResult:
         unit = f" [{self.field.unit}]" if self.field.unit else ""
         if self.field.options:
-            yield Label(self.field.label + (" (tick all that apply)" if self.field.multiple else ""),
-                        classes="choice-label")
+            yield Label(
+                self.field.label + (" (tick all that apply)" if self.field.multiple else ""),
+                classes="choice-label",
+            )
             if self.field.multiple:
-                yield Ticks(*[(o, k, k in self._chosen) for k, o in enumerate(self.field.options)],
-                            classes="field-choice")
+                yield Ticks(
+                    *[(o, k, k in self._chosen) for k, o in enumerate(self.field.options)],
+                    classes="field-choice",
+                )
             else:
-                yield RadioSet(*[Choice(o, value=k in self._chosen) for k, o in enumerate(self.field.options)],
-                               classes="field-choice")
+                yield RadioSet(
+                    *[Choice(o, value=k in self._chosen) for k, o in enumerate(self.field.options)],
+                    classes="field-choice",
+                )
         else:
             with Horizontal(classes="field-line"):
                 yield Label(f"{self.field.label}{unit}", classes="field-label")
-                yield LabInput(value=self._text, classes="field-input", select_on_focus=False,
-                            placeholder=self.field.hint)
+                yield LabInput(
+                    value=self._text,
+                    classes="field-input",
+                    select_on_focus=False,
+                    placeholder=self.field.hint,
+                )
         yield Static("", classes="field-msg")
 
     def on_mount(self) -> None:

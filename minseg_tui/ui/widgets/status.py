@@ -8,8 +8,9 @@ from textual.widgets import Static
 from minseg_tui.ui.ports import DeviceInfo, LinkHealth
 
 
-def status_text(info: DeviceInfo | None, health: LinkHealth | None, motor: str, event: str = "",
-                width: int = 80) -> str:
+def status_text(
+    info: DeviceInfo | None, health: LinkHealth | None, motor: str, event: str = "", width: int = 80
+) -> str:
     """One line for the top of the screen, at most ``width`` characters (plain text: the
     state is in words, never in colour alone). A link event replaces the health counters;
     what does not fit goes, least important first (firmware, the port, then words of the name)."""
@@ -25,8 +26,12 @@ def status_text(info: DeviceInfo | None, health: LinkHealth | None, motor: str, 
     h = health or LinkHealth("ok")
     link = event or f"link {h.state} · lost {h.dropped} · bad {h.corrupt}"
     tail = f"motor {motor}"
-    for parts in ((who, port, info.firmware, link, tail), (who, port, link, tail), (who, link, tail),
-                  (short, link, tail)):
+    for parts in (
+        (who, port, info.firmware, link, tail),
+        (who, port, link, tail),
+        (who, link, tail),
+        (short, link, tail),
+    ):
         text = " · ".join(p for p in parts if p)
         if len(text) <= width:
             return text
