@@ -6,5 +6,5 @@ Importing this package registers the ``minseg://`` URL scheme with pyserial
 
 import serial
 
-if "minseg_tui.device" not in serial.protocol_handler_packages:
-    serial.protocol_handler_packages.append("minseg_tui.device")
+if "minseg_tui.device.url_handler" not in serial.protocol_handler_packages:
+    serial.protocol_handler_packages.append("minseg_tui.device.url_handler")

@@ -460,7 +460,7 @@ class Link:
     def step(self, low: float, high: float, half_period: float, periods: int) -> P.Ok:
         """Board-timed square wave: levels in V, half period in s, number of periods."""
         return self._ok(
-            P.Step(round(low * 1000), round(high * 1000), round(half_period * 1000), periods)
+            P.SquareWave(round(low * 1000), round(high * 1000), round(half_period * 1000), periods)
         )
 
     def stop(self) -> P.Ok:

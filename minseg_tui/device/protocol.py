@@ -200,8 +200,8 @@ class SetVoltage:
 
 
 @dataclass(frozen=True)
-class Step:
-    """STEP: board-timed square wave, levels in mV, half period in ms, n periods."""
+class SquareWave:
+    """STEP (the host command): board-timed square wave, levels in mV, half period in ms, n periods."""
 
     low_mV: int
     high_mV: int
@@ -265,7 +265,7 @@ Message = (
     | Identify
     | Ping
     | SetVoltage
-    | Step
+    | SquareWave
     | Stop
     | SetPeriod
     | Zero
@@ -303,7 +303,7 @@ LINES: tuple[LineKind, ...] = (
     LineKind("ID", None, "host", Identify, ()),
     LineKind("PING", None, "host", Ping, ()),
     LineKind("V", None, "host", SetVoltage, ("int",)),
-    LineKind("STEP", None, "host", Step, ("int", "int", "int", "int")),
+    LineKind("STEP", None, "host", SquareWave, ("int", "int", "int", "int")),
     LineKind("STOP", None, "host", Stop, ()),
     LineKind("P", None, "host", SetPeriod, ("int",)),
     LineKind("Z", None, "host", Zero, ()),

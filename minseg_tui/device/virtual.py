@@ -4,8 +4,8 @@
 own: a driver moves it forward with :meth:`VirtualBoard.run_until` (board time in s) and
 passes host bytes in with :meth:`VirtualBoard.feed`; the board's output lines collect in
 an outbox read with :meth:`VirtualBoard.take_output`. Two drivers exist: the pyserial URL
-``minseg://`` (real-time or virtual clock, :mod:`minseg_tui.device.protocol_minseg`) and
-the pseudo-terminal server (:mod:`minseg_tui.device.ptyserver`).
+``minseg://`` (real-time or virtual clock, :mod:`minseg_tui.device.url_handler.protocol_minseg`)
+and the pseudo-terminal server (:mod:`minseg_tui.device.ptyserver`).
 
 Semantics follow firmware/PROTOCOL.md, with these choices written down:
 
@@ -440,7 +440,7 @@ class VirtualBoard:
         self._pending_mV = mv
         return P.Ok("V", (str(mv),))
 
-    def _cmd_step(self, c: P.Step) -> P.Message:
+    def _cmd_step(self, c: P.SquareWave) -> P.Message:
         if self._step is not None:
             return P.Err("BUSY", "STEP")
         lo = _clamp(c.low_mV, -self.sup_mV, self.sup_mV)
@@ -492,7 +492,7 @@ class VirtualBoard:
         P.Identify: _cmd_id,  # type: ignore[dict-item]
         P.Ping: _cmd_ping,  # type: ignore[dict-item]
         P.SetVoltage: _cmd_v,  # type: ignore[dict-item]
-        P.Step: _cmd_step,  # type: ignore[dict-item]
+        P.SquareWave: _cmd_step,  # type: ignore[dict-item]
         P.Stop: _cmd_stop,  # type: ignore[dict-item]
         P.SetPeriod: _cmd_p,  # type: ignore[dict-item]
         P.Zero: _cmd_z,  # type: ignore[dict-item]
