@@ -96,13 +96,21 @@ static void send(const char *s) {
   for (const char *p = s; *p; ++p) avr_raise_irq(uart_in, (uint8_t)*p);
 }
 
+/* CRC-16/CCITT-FALSE, bit by bit (PROTOCOL.md, "Frame") */
+static unsigned crc16(const char *s, size_t n) {
+  unsigned crc = 0xFFFF;
+  for (size_t i = 0; i < n; ++i) {
+    crc ^= (unsigned)(unsigned char)s[i] << 8;
+    for (int b = 0; b < 8; ++b) crc = (crc & 0x8000u) ? ((crc << 1) ^ 0x1021u) & 0xFFFFu : (crc << 1) & 0xFFFFu;
+  }
+  return crc;
+}
+
 static int checksum_ok(const char *line) {
   const char *star = strrchr(line, '*');
-  if (line[0] != '$' || !star || strlen(star) != 3) return 0;
-  unsigned cs = 0;
-  for (const char *p = line + 1; p < star; ++p) cs ^= (unsigned char)*p;
-  char hex[3];
-  snprintf(hex, sizeof hex, "%02X", cs);
+  if (line[0] != '$' || !star || strlen(star) != 5) return 0;
+  char hex[8];
+  snprintf(hex, sizeof hex, "%04X", crc16(line + 1, (size_t)(star - line - 1)));
   return strcmp(hex, star + 1) == 0;
 }
 
@@ -180,8 +188,8 @@ int main(int argc, char **argv) {
 
   /* 1. boot line */
   run_until_us(5000);
-  expect(n_lines >= 1 && strcmp(lines[0], "$BOOT,minseg-fw 1.0.0,1*11") == 0,
-         "boot line $BOOT,minseg-fw 1.0.0,1*11");
+  expect(n_lines >= 1 && strcmp(lines[0], "$BOOT,minseg-fw 2.0.0,2*0053") == 0,
+         "boot line $BOOT,minseg-fw 2.0.0,2*0053");
 
   /* 2. ID */
   avr_raise_irq(pin_a, 1); /* encoder idle high (pull-ups) */
@@ -190,17 +198,17 @@ int main(int argc, char **argv) {
   send("ID\n");
   run_until_us(now_us + 5000);
   char want_id[96];
-  snprintf(want_id, sizeof want_id, "$ID,minseg-fw 1.0.0,1,%s,720,25000,5000,BRAKE*", profile);
+  snprintf(want_id, sizeof want_id, "$ID,minseg-fw 2.0.0,2,%s,720,25000,5000,BRAKE*", profile);
   int id = find_line(before, "$ID,");
   expect(id >= 0 && strncmp(lines[id], want_id, strlen(want_id)) == 0 && checksum_ok(lines[id]),
-         "reply to ID names firmware, protocol 1 and the profile");
+         "reply to ID names firmware, protocol 2 and the profile");
   if (id >= 0) printf("      %s\n", lines[id]);
 
   /* 3. V and the sample stream */
   before = n_lines;
-  send("$V,2500*7D\n");
+  send("$V,2500*ACE8\n");
   run_until_us(now_us + 5000);
-  expect(find_line(before, "$OK,V,2500*55") >= 0, "V,2500 -> $OK,V,2500*55");
+  expect(find_line(before, "$OK,V,2500*61E5") >= 0, "V,2500 -> $OK,V,2500*61E5");
   run_until_us(now_us + 100000);
   struct sample s[8];
   int ns = 0;
@@ -245,8 +253,8 @@ int main(int argc, char **argv) {
   /* 5. watchdog: silence for more than 1 s */
   before = n_lines;
   run_until_us(now_us + 1200000);
-  int wd = find_line(before, "$EV,WDOG*24");
-  expect(wd >= 0, "host silent: $EV,WDOG*24");
+  int wd = find_line(before, "$EV,WDOG*EBC5");
+  expect(wd >= 0, "host silent: $EV,WDOG*EBC5");
   if (wd >= 0) {
     double after_ms = (double)(line_time_us[wd] - silent_from) / 1000.0;
     printf("      WDOG %.1f ms after the last command\n", after_ms);

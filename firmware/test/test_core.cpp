@@ -101,12 +101,21 @@ struct Rig {
   }
 };
 
-// Independent oracle for expected lines: "$" + body + "*" + XOR in hex + "\n".
+// Independent oracle for the checksum: CRC-16/CCITT-FALSE bit by bit, as the
+// standard defines it (the firmware computes it a byte at a time without a table).
+static unsigned crc16_bitwise(const std::string& body) {
+  unsigned crc = 0xFFFF;
+  for (size_t i = 0; i < body.size(); ++i) {
+    crc ^= static_cast<unsigned>(static_cast<unsigned char>(body[i])) << 8;
+    for (int b = 0; b < 8; ++b) crc = (crc & 0x8000u) ? ((crc << 1) ^ 0x1021u) & 0xFFFFu : (crc << 1) & 0xFFFFu;
+  }
+  return crc;
+}
+
+// Independent oracle for expected lines: "$" + body + "*" + CRC in hex + "\n".
 static std::string framed(const std::string& body) {
-  unsigned cs = 0;
-  for (size_t i = 0; i < body.size(); ++i) cs ^= static_cast<unsigned char>(body[i]);
-  char hex[4];
-  std::snprintf(hex, sizeof hex, "%02X", cs);
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "%04X", crc16_bitwise(body));
   return "$" + body + "*" + hex + "\n";
 }
 
@@ -161,7 +170,7 @@ static std::set<std::string> board_lines_from_sessions() {
     all.push_back(r.cmd("V,2500"));
     all.push_back(r.cmd("P,5000"));
     all.push_back(r.cmd("ZM,COAST"));
-    all.push_back(r.cmd("$V,2500*00"));
+    all.push_back(r.cmd("$V,2500*0000"));
     all.push_back(r.cmd("V,abc"));
   }
   {  // sample 41 at t = 1025032 with count -1234 and u = 4500
@@ -245,17 +254,17 @@ struct HostExpect {
 
 // Expected parse of each golden host line, written out by hand.
 static const HostExpect kHostExpect[] = {
-    {"$ID*0D", kId, 0, {0, 0, 0, 0}},
-    {"$PING*10", kPing, 0, {0, 0, 0, 0}},
-    {"$V,2500*7D", kV, 1, {2500, 0, 0, 0}},
-    {"$V,-4500*56", kV, 1, {-4500, 0, 0, 0}},
-    {"$STEP,0,4500,1000,5*17", kStep, 4, {0, 4500, 1000, 5}},
-    {"$STOP*18", kStop, 0, {0, 0, 0, 0}},
-    {"$P,5000*79", kP, 1, {5000, 0, 0, 0}},
-    {"$Z*5A", kZ, 0, {0, 0, 0, 0}},
-    {"$SUP,9000*73", kSup, 1, {9000, 0, 0, 0}},
-    {"$ZM,COAST*71", kZm, 1, {0, 0, 0, 0}},
-    {"$STREAM,0*00", kStream, 1, {0, 0, 0, 0}},
+    {"$ID*A21B", kId, 0, {0, 0, 0, 0}},
+    {"$PING*6427", kPing, 0, {0, 0, 0, 0}},
+    {"$V,2500*ACE8", kV, 1, {2500, 0, 0, 0}},
+    {"$V,-4500*56D2", kV, 1, {-4500, 0, 0, 0}},
+    {"$STEP,0,4500,1000,5*8433", kStep, 4, {0, 4500, 1000, 5}},
+    {"$STOP*AF2E", kStop, 0, {0, 0, 0, 0}},
+    {"$P,5000*9BD4", kP, 1, {5000, 0, 0, 0}},
+    {"$Z*1A4F", kZ, 0, {0, 0, 0, 0}},
+    {"$SUP,9000*7BE9", kSup, 1, {9000, 0, 0, 0}},
+    {"$ZM,COAST*4CE3", kZm, 1, {0, 0, 0, 0}},
+    {"$STREAM,0*E299", kStream, 1, {0, 0, 0, 0}},
 };
 
 static void test_golden_host_lines(const std::vector<Golden>& golden) {
@@ -336,7 +345,7 @@ static void test_golden_errors(const std::vector<Golden>& golden) {
     r.advance_to(1600001);
     CHECK_MSG(r.ctl.u_mV() == 0, "watchdog fed by: " + cmd);
   }
-  CHECK_EQ(n_err, 9);
+  CHECK_EQ(n_err, 10);
 }
 
 // -------------------------------------------------------------- other tests
@@ -356,7 +365,7 @@ static void test_watchdog() {
   CHECK_EQ(r.ctl.u_mV(), 0);
   CHECK_EQ(r.board.last_u, 0);
   std::string out = r.board.take();
-  CHECK_EQ(out, std::string("$EV,WDOG*24\n"));
+  CHECK_EQ(out, framed("EV,WDOG"));
   r.advance_to(3000000);  // once only
   CHECK(r.board.take().find("WDOG") == std::string::npos);
 
@@ -379,7 +388,7 @@ static void test_watchdog() {
   s.advance_to(1100000);
   CHECK(!s.ctl.step_active());
   CHECK_EQ(s.ctl.u_mV(), 0);
-  CHECK(s.board.take().find("$EV,WDOG*24\n") != std::string::npos);
+  CHECK(s.board.take().find(framed("EV,WDOG")) != std::string::npos);
 
   // idle motor: nothing to stop, no event
   Rig idle(0);
@@ -430,7 +439,7 @@ static void test_clamping() {
   CHECK(r.ctl.brake());
   CHECK_EQ(r.cmd("STREAM,0"), std::string(framed("OK,STREAM,0")));
   CHECK(!r.ctl.streaming());
-  CHECK_EQ(r.cmd("ID"), std::string(framed("ID,minseg-fw 1.0.0,1,MinSegMega,720,25000,4500,BRAKE")));
+  CHECK_EQ(r.cmd("ID"), std::string(framed("ID,minseg-fw 2.0.0,2,MinSegMega,720,25000,4500,BRAKE")));
 }
 
 static void test_bridge_levels() {
@@ -545,7 +554,7 @@ static void test_step_timing() {
   // a second STEP while one runs is refused; V aborts it
   Rig b(0);
   b.cmd("STEP,0,3000,100,5");
-  CHECK_EQ(b.cmd("STEP,0,3000,100,5"), std::string("$ERR,BUSY*74\n"));
+  CHECK_EQ(b.cmd("STEP,0,3000,100,5"), framed("ERR,BUSY"));
   b.advance_to(60000);
   CHECK_EQ(b.ctl.u_mV(), 3000);
   b.cmd("V,1000");
@@ -641,8 +650,8 @@ static void test_line_assembly() {
   // \r\n line ending, lower-case checksum accepted
   for (const char* p = "PING\r\n"; *p; ++p) r.ctl.feed(*p, r.now);
   CHECK_EQ(r.board.take(), framed("OK,PING"));
-  CHECK_EQ(r.cmd("$v,1*00").substr(0, 13), std::string("$ERR,CHECKSUM"));
-  CHECK_EQ(r.cmd("$V,2500*7d"), framed("OK,V,2500"));
+  CHECK_EQ(r.cmd("$v,1*0000").substr(0, 13), std::string("$ERR,CHECKSUM"));
+  CHECK_EQ(r.cmd("$V,2500*ace8"), framed("OK,V,2500"));
   // 80 bytes is accepted (here: a long, wrong command), 81 is discarded whole
   std::string l80 = "V,1" + std::string(77, '0');
   CHECK_EQ(l80.size(), 80u);
@@ -662,8 +671,8 @@ static void test_line_assembly() {
   CHECK_EQ(r.cmd("V, 5"), framed("ERR,ARGS,V"));
   CHECK_EQ(r.cmd("V,-"), framed("ERR,ARGS,V"));
   CHECK_EQ(r.cmd("STEP,0,1,2,3,4"), framed("ERR,ARGS,STEP"));
-  CHECK_EQ(r.cmd("V,2500*7D0"), framed("ERR,CHECKSUM"));
-  CHECK_EQ(r.cmd("V,2500*7"), framed("ERR,CHECKSUM"));
+  CHECK_EQ(r.cmd("V,2500*ACE80"), framed("ERR,CHECKSUM"));
+  CHECK_EQ(r.cmd("V,2500*ACE"), framed("ERR,CHECKSUM"));
 }
 
 static void test_number_format() {
@@ -671,7 +680,13 @@ static void test_number_format() {
   CHECK_EQ(std::string(buf, format_i32(-2147483647 - 1, buf)), std::string("-2147483648"));
   CHECK_EQ(std::string(buf, format_i32(0, buf)), std::string("0"));
   CHECK_EQ(std::string(buf, format_u32(4294967295u, buf)), std::string("4294967295"));
-  CHECK_EQ(checksum("PING", 4), 0x10);
+  CHECK_EQ(checksum("PING", 4), 0x6427);
+  CHECK_EQ(checksum("123456789", 9), 0x29B1);  // the standard check value
+  // every single byte, against the bit-by-bit definition
+  for (int b = 0; b < 256; ++b) {
+    char one = static_cast<char>(b);
+    CHECK_EQ(checksum(&one, 1), crc16_bitwise(std::string(1, one)));
+  }
 }
 
 int main(int argc, char** argv) {

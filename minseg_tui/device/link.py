@@ -378,7 +378,7 @@ class Link:
 
         self._read_lines(ser, self._clock() + self.boot_wait_s, first)
         for _attempt in range(5):
-            ser.write(P.encode(P.Identify()))
+            ser.write(P.IDENTIFY_ANY_VERSION)
             self._last_tx = self._clock()
             got = self._read_lines(
                 ser, self._clock() + self.reply_timeout_s, lambda s: s.startswith("$ID,")

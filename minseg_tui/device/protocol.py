@@ -1,4 +1,4 @@
-"""Protocol 1 of the MinSeg serial link (firmware/PROTOCOL.md): pure parse and format.
+"""Protocol 2 of the MinSeg serial link (firmware/PROTOCOL.md): pure parse and format.
 
 Every line, in both directions, is a small frozen dataclass. The lines are data: the
 table ``LINES`` names each kind (its NAME, for ``$EV`` its event tag, its direction and
@@ -10,13 +10,24 @@ currents in uA, resistances in milliohm.
 
 from __future__ import annotations
 
+import binascii
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, fields
 from typing import Literal
 
-PROTOCOL_VERSION = 1
-"""The protocol version this host speaks (the `proto` field of $BOOT and $ID)."""
+PROTOCOL_VERSION = 2
+"""The protocol version this host speaks (the `proto` field of $BOOT and $ID).
+
+Version 2 replaced version 1's one-byte XOR with a CRC-16 (four hex digits)."""
+
+CHECKSUM_DIGITS = 4
+"""Hex digits of the checksum field (`*HHHH`)."""
+
+IDENTIFY_ANY_VERSION = b"ID\n"
+"""The ID command as every protocol version reads it (a command may omit its checksum, and
+version 1 refused a four-digit one): the handshake sends it so that a board with older
+firmware answers with its version instead of a checksum error."""
 
 BAUD = 500000
 """Line rate of the link, baud (8N1)."""
@@ -31,7 +42,7 @@ Direction = Literal["board", "host"]
 
 
 class ProtocolError(ValueError):
-    """A line that is not a valid protocol-1 line.
+    """A line that is not a valid line of this protocol version.
 
     ``code`` is the $ERR code a board answers with (CHECKSUM, UNKNOWN, ARGS, RANGE);
     ``detail`` names the command when known.
@@ -321,18 +332,20 @@ _BY_CLASS: dict[type, LineKind] = {k.cls: k for k in LINES}
 
 # -- frames -----------------------------------------------------------------------------
 def checksum(body: str | bytes) -> int:
-    """XOR of every byte of ``body`` (the text between `$` and `*`)."""
+    """CRC-16/CCITT-FALSE of ``body`` (the text between `$` and `*`): polynomial 0x1021,
+    initial value 0xFFFF, no reflection, no final XOR (check value 0x29B1 for "123456789").
+
+    It catches every swap of two adjacent bytes and every error burst up to 16 bits,
+    which protocol 1's XOR did not (benchmarks/checksum_strength.py measures both).
+    """
     data = body.encode("ascii") if isinstance(body, str) else body
-    cs = 0
-    for b in data:
-        cs ^= b
-    return cs
+    return binascii.crc_hqx(data, 0xFFFF)
 
 
 def frame(name: str, *values: str) -> str:
-    """``$NAME,v1,...*CS`` (no newline)."""
+    """``$NAME,v1,...*HHHH`` (no newline)."""
     body = ",".join((name, *values))
-    return f"${body}*{checksum(body):02X}"
+    return f"${body}*{checksum(body):04X}"
 
 
 def split_frame(line: str | bytes, require_checksum: bool = True) -> list[str]:
@@ -361,10 +374,10 @@ def split_frame(line: str | bytes, require_checksum: bool = True) -> list[str]:
     star = line.find("*")
     if star >= 0:
         body, cs = line[:star], line[star + 1 :]
-        if len(cs) != 2 or any(c not in "0123456789ABCDEF" for c in cs):
+        if len(cs) != CHECKSUM_DIGITS or any(c not in "0123456789ABCDEF" for c in cs):
             raise ProtocolError("CHECKSUM", why=f"bad checksum field {cs!r}")
         if int(cs, 16) != checksum(body):
-            raise ProtocolError("CHECKSUM", why=f"checksum {cs} != {checksum(body):02X}")
+            raise ProtocolError("CHECKSUM", why=f"checksum {cs} != {checksum(body):04X}")
     elif require_checksum:
         raise ProtocolError("CHECKSUM", why="no checksum")
     else:

@@ -1,4 +1,4 @@
-"""The virtual MinSeg: the board's firmware behaviour (protocol 1) with the plant behind it.
+"""The virtual MinSeg: the board's firmware behaviour (protocol 2) with the plant behind it.
 
 :class:`VirtualBoard` is the firmware as a state machine on a board clock it does not
 own: a driver moves it forward with :meth:`VirtualBoard.run_until` (board time in s) and
@@ -41,7 +41,7 @@ from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import MeterReading, Plant, PlantParams
 from minseg_tui.units import KA_OVER_KV
 
-FIRMWARE = "minseg-virtual 1.0.0"
+FIRMWARE = "minseg-virtual 2.0.0"
 BOARD = "Virtual"
 WATCHDOG_S = 1.0
 PERIOD_LIMITS_US = (1000, 100000)

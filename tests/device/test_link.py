@@ -107,9 +107,9 @@ def test_watchdog_event_when_the_host_stops_pinging(board_name):
 
 def test_wrong_protocol_version_gets_a_clear_message():
     with pytest.raises(DeviceError) as info:
-        open_device("minseg://?clock=virtual&proto=2")
+        open_device("minseg://?clock=virtual&proto=3")
     text = str(info.value)
-    assert "protocol 2" in text and "protocol 1" in text and "make -C firmware upload" in text
+    assert "protocol 3" in text and "protocol 2" in text and "make -C firmware upload" in text
 
 
 def test_second_program_on_a_url_board(board_name):

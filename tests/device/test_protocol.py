@@ -1,4 +1,6 @@
-"""Protocol 1 against the golden lines, both ends: the host parser and the virtual board."""
+"""Protocol 2 against the golden lines, both ends: the host parser and the virtual board."""
+
+import random
 
 import pytest
 
@@ -37,19 +39,20 @@ def test_malformed_commands_get_their_error_code(case):
 
 
 def test_golden_values_by_hand():
-    s = P.parse("$S,4294967295,4294967292,2147483647,-4500*72")
+    s = P.parse("$S,4294967295,4294967292,2147483647,-4500*916B")
     assert s == P.SampleLine(4294967295, 4294967292, 2147483647, -4500)
-    assert P.parse("$EV,STEP,3,10*1F") == P.EvStep(3, 10)
-    assert P.parse("$ERR,ARGS,V*14") == P.Err("ARGS", "V")
-    assert P.parse("$OK,STEP,0,4500,1000,5*3F") == P.Ok("STEP", ("0", "4500", "1000", "5"))
-    assert P.checksum("PING") == 0x10
-    assert P.encode(P.Ping()) == b"$PING*10\n"
+    assert P.parse("$EV,STEP,3,10*9F38") == P.EvStep(3, 10)
+    assert P.parse("$ERR,ARGS,V*DCDA") == P.Err("ARGS", "V")
+    assert P.parse("$OK,STEP,0,4500,1000,5*CD5B") == P.Ok("STEP", ("0", "4500", "1000", "5"))
+    assert P.checksum("PING") == 0x6427
+    assert P.checksum("123456789") == 0x29B1  # the CRC-16/CCITT-FALSE check value
+    assert P.encode(P.Ping()) == b"$PING*6427\n"
 
 
 def test_crlf_and_overlong_lines():
-    assert P.parse("$OK,PING*38\r") == P.Ok("PING")
+    assert P.parse("$OK,PING*6C01\r") == P.Ok("PING")
     with pytest.raises(P.ProtocolError):
-        P.parse("$OK,PING," + "9" * 80 + "*00")
+        P.parse("$OK,PING," + "9" * 80 + "*0000")
 
 
 def test_meter_extension_round_trip():
@@ -86,3 +89,57 @@ def test_virtual_board_accepts_every_golden_command(line):
     reply = [P.parse(x) for x in read_lines(port, 0.001) if not x.startswith("$S")]
     assert reply and isinstance(reply[0], P.Ok | P.Ident)
     port.close()
+
+
+def _corruptions(line: str) -> list[str]:
+    """Every adjacent-byte swap and every loss of a pair of equal bytes, after the `$`."""
+    out = []
+    for i in range(1, len(line) - 1):
+        a, b = line[i], line[i + 1]
+        if a != b:
+            out.append(line[:i] + b + a + line[i + 2 :])
+        else:
+            out.append(line[:i] + line[i + 2 :])
+    return out
+
+
+def _sample_lines() -> list[str]:
+    """Sample lines as a step run sends them (seeded), the most frequent lines on the link."""
+    rng = random.Random(10)
+    out, count = [], 0
+    for seq in range(400):
+        count += rng.randrange(0, 40)
+        u = rng.choice((0, 4500, -4500, 2500, 1100))
+        out.append(P.format_line(P.SampleLine(seq * 97, 1024 + seq * 25000, count, u)))
+    return out
+
+
+def test_swapped_adjacent_bytes_are_always_caught():
+    # a swap is an error burst of at most 16 bits: CRC-16 catches every one
+    lines = golden("board") + _sample_lines()
+    let_through = []
+    for line in lines:
+        for bad in _corruptions(line):
+            if len(bad) == len(line):
+                try:
+                    P.parse(bad)
+                    let_through.append((line, bad))
+                except P.ProtocolError:
+                    pass
+    assert let_through == []
+
+
+def test_lost_pairs_of_equal_bytes_are_caught():
+    lines = golden("board") + _sample_lines()
+    tried, let_through = 0, []
+    for line in lines:
+        for bad in _corruptions(line):
+            if len(bad) == len(line) - 2:
+                tried += 1
+                try:
+                    P.parse(bad)
+                    let_through.append((line, bad))
+                except P.ProtocolError:
+                    pass
+    assert tried > 500
+    assert let_through == []

@@ -17,13 +17,13 @@ def parsed(lines, cls):
 def test_boot_on_open_then_samples_every_25_ms():
     port = vport("jitter=0")
     lines = read_lines(port, 0.1)
-    assert P.parse(lines[0]) == P.Boot("minseg-virtual 1.0.0", 1)
+    assert P.parse(lines[0]) == P.Boot("minseg-virtual 2.0.0", 2)
     samples = parsed(lines, P.SampleLine)
     assert [s.seq for s in samples] == [0, 1, 2, 3, 4]
     assert [s.t_us for s in samples] == [0, 25000, 50000, 75000, 100000]
     port.write(b"ID\n")
     (ident,) = parsed(read_lines(port, 0.001), P.Ident)
-    assert ident == P.Ident("minseg-virtual 1.0.0", 1, "Virtual", 720, 25000, 5000, "BRAKE")
+    assert ident == P.Ident("minseg-virtual 2.0.0", 2, "Virtual", 720, 25000, 5000, "BRAKE")
 
 
 def test_clamping_reports_applied_values():
@@ -140,7 +140,7 @@ def test_zero_and_overlong_command():
     assert abs(samples[-1].count) < 20
     port.write(b"V," + b"1" * 90 + b"\nPING\n")
     replies = [x for x in read_lines(port, 0.001) if not x.startswith("$S")]
-    assert replies == ["$ERR,ARGS*6E", "$OK,PING*38"]
+    assert replies == ["$ERR,ARGS*AB24", "$OK,PING*6C01"]
 
 
 def test_settings_by_name():

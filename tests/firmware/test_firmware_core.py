@@ -65,14 +65,14 @@ def test_core_against_golden_lines(test_binary: Path) -> None:
 
 def test_corrupted_board_line_is_caught(test_binary: Path, tmp_path: Path) -> None:
     text = GOLDEN.read_text()
-    assert "board $OK,PING*38\n" in text
+    assert "board $OK,PING*6C01\n" in text
     bad = tmp_path / "lines.txt"
-    bad.write_text(text.replace("board $OK,PING*38\n", "board $OK,PING*39\n"))
+    bad.write_text(text.replace("board $OK,PING*6C01\n", "board $OK,PING*6C02\n"))
     code, lines = run(test_binary, bad)
     assert code == 1
     closing = CLOSING.match(lines[-1])
     assert closing is not None and int(closing.group(2)) >= 1
-    assert any("$OK,PING*39" in line for line in lines if line.startswith("FAIL"))
+    assert any("$OK,PING*6C02" in line for line in lines if line.startswith("FAIL"))
 
 
 def test_wrong_error_code_is_caught(test_binary: Path, tmp_path: Path) -> None:
@@ -88,7 +88,7 @@ def test_wrong_error_code_is_caught(test_binary: Path, tmp_path: Path) -> None:
 def test_unlisted_host_command_is_caught(test_binary: Path, tmp_path: Path) -> None:
     # a host line the tests have no hand-written expectation for must fail, not pass silently
     bad = tmp_path / "lines.txt"
-    bad.write_text(GOLDEN.read_text().replace("host $Z*5A\n", "host $Z*5A\nhost $V,1*4B\n"))
+    bad.write_text(GOLDEN.read_text().replace("host $Z*1A4F\n", "host $Z*1A4F\nhost $V,1*450B\n"))
     code, lines = run(test_binary, bad)
     assert code == 1
-    assert any("$V,1*4B" in line for line in lines if line.startswith("FAIL"))
+    assert any("$V,1*450B" in line for line in lines if line.startswith("FAIL"))

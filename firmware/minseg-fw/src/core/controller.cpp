@@ -2,7 +2,7 @@
 
 namespace minseg {
 
-const char kFirmware[] = "minseg-fw 1.0.0";
+const char kFirmware[] = "minseg-fw 2.0.0";
 
 int32_t clamp_i32(int32_t v, int32_t lo, int32_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
 

@@ -1,4 +1,4 @@
-// The board's behaviour under protocol 1, independent of the hardware:
+// The board's behaviour under protocol 2, independent of the hardware:
 // command handling with clamping, the sample schedule, the board-timed step
 // sequencer and the host-silence watchdog. No Arduino or AVR headers, no
 // dynamic memory. The AVR build and the host tests drive it through Board.
@@ -11,7 +11,7 @@
 
 namespace minseg {
 
-extern const char kFirmware[];            // "minseg-fw 1.0.0"
+extern const char kFirmware[];            // "minseg-fw 2.0.0"
 static const uint16_t kCountsPerRev = 720;  // x4 decoding, per wheel revolution
 
 // Limits and defaults (PROTOCOL.md, "Host to board").

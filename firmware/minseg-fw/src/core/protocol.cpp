@@ -2,10 +2,21 @@
 
 namespace minseg {
 
-uint8_t checksum(const char* s, uint8_t n) {
-  uint8_t cs = 0;
-  for (uint8_t i = 0; i < n; ++i) cs ^= static_cast<uint8_t>(s[i]);
-  return cs;
+uint16_t crc16_update(uint16_t crc, uint8_t byte) {
+  // One byte of CRC-16 with polynomial 0x1021, MSB first, without a table: the
+  // polynomial's three terms applied to the byte's top nibble and the whole byte.
+  crc = static_cast<uint16_t>((crc >> 8) | (crc << 8));
+  crc ^= byte;
+  crc ^= static_cast<uint16_t>((crc & 0xFFu) >> 4);
+  crc ^= static_cast<uint16_t>(crc << 12);
+  crc ^= static_cast<uint16_t>((crc & 0xFFu) << 5);
+  return crc;
+}
+
+uint16_t checksum(const char* s, uint8_t n) {
+  uint16_t crc = 0xFFFFu;
+  for (uint8_t i = 0; i < n; ++i) crc = crc16_update(crc, static_cast<uint8_t>(s[i]));
+  return crc;
 }
 
 uint8_t format_u32(uint32_t v, char* out) {
@@ -69,10 +80,9 @@ LineWriter& LineWriter::i32(int32_t v) {
 
 const char* LineWriter::finish() {
   static const char kHex[] = "0123456789ABCDEF";
-  uint8_t cs = checksum(buf_ + 1, static_cast<uint8_t>(n_ - 1));
+  uint16_t cs = checksum(buf_ + 1, static_cast<uint8_t>(n_ - 1));
   put('*');
-  put(kHex[cs >> 4]);
-  put(kHex[cs & 0x0F]);
+  for (int8_t shift = 12; shift >= 0; shift -= 4) put(kHex[(cs >> shift) & 0x0F]);
   put('\n');
   return buf_;
 }
@@ -122,7 +132,7 @@ struct CmdSpec {
   uint8_t kind;
 };
 
-// The host commands of protocol 1, indexed by CmdId.
+// The host commands of protocol 2, indexed by CmdId.
 const CmdSpec kCmds[kCmdCount] = {
     {"ID", 0, kNoArgs},   {"PING", 0, kNoArgs}, {"V", 1, kInts},   {"STEP", 4, kInts},
     {"STOP", 0, kNoArgs}, {"P", 1, kInts},      {"Z", 0, kNoArgs}, {"SUP", 1, kInts},
@@ -197,14 +207,17 @@ Err parse_command(const char* line, uint8_t len, Command* cmd, char* detail) {
   // A '$' anywhere but at the start: two lines run together. Malformed.
   for (uint8_t i = 0; i < n; ++i)
     if (s[i] == '$') return kErrArgs;
-  // Optional checksum: '*' followed by exactly two hex digits, then the end.
+  // Optional checksum: '*' followed by exactly four hex digits (either case), then the end.
   for (uint8_t i = 0; i < n; ++i) {
     if (s[i] != '*') continue;
-    if (n - i != 3) return kErrChecksum;
-    int hi = hex_value(s[i + 1]);
-    int lo = hex_value(s[i + 2]);
-    if (hi < 0 || lo < 0) return kErrChecksum;
-    if (checksum(s, i) != static_cast<uint8_t>(hi * 16 + lo)) return kErrChecksum;
+    if (n - i != 1 + kChecksumDigits) return kErrChecksum;
+    uint16_t want = 0;
+    for (uint8_t k = 1; k <= kChecksumDigits; ++k) {
+      int d = hex_value(s[i + k]);
+      if (d < 0) return kErrChecksum;
+      want = static_cast<uint16_t>((want << 4) | static_cast<uint16_t>(d));
+    }
+    if (checksum(s, i) != want) return kErrChecksum;
     n = i;
     break;
   }

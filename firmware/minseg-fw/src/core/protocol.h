@@ -1,4 +1,4 @@
-// Protocol version 1 (firmware/PROTOCOL.md): framing, checksums, number
+// Protocol version 2 (firmware/PROTOCOL.md): framing, checksums, number
 // formatting, the line assembler and the command parser.
 // Board-independent: no Arduino or AVR headers, no dynamic memory.
 #ifndef MINSEG_PROTOCOL_H
@@ -8,11 +8,17 @@
 
 namespace minseg {
 
-static const uint8_t kProtoVersion = 1;
+static const uint8_t kProtoVersion = 2;
 static const uint8_t kMaxLine = 80;  // longest accepted line, without "\r\n"
 
-// XOR of n bytes: the frame checksum (bytes between '$' and '*').
-uint8_t checksum(const char* s, uint8_t n);
+// The frame checksum of n bytes (the bytes between '$' and '*'): CRC-16/CCITT-FALSE,
+// polynomial 0x1021, initial value 0xFFFF, no reflection, no final XOR, sent as four
+// hex digits. It catches every swap of two adjacent bytes and every burst error up
+// to 16 bits (protocol 1's XOR let most of them through). Table-free: a few shifts
+// and XORs per byte, no RAM or flash table.
+uint16_t crc16_update(uint16_t crc, uint8_t byte);
+uint16_t checksum(const char* s, uint8_t n);
+static const uint8_t kChecksumDigits = 4;
 
 // Decimal text of v into out (no terminator); returns the number of bytes.
 uint8_t format_u32(uint32_t v, char* out);
