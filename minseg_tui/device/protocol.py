@@ -56,15 +56,21 @@ class ProtocolError(ValueError):
 
 
 # -- field types: (parse, format) -------------------------------------------------------
-_INT = re.compile(r"-?[0-9]{1,10}\Z")
+_INT = re.compile(r"-?[0-9]+\Z")
 _NAME = re.compile(r"[A-Z]{1,16}\Z")
 _TEXT = re.compile(r"[ -~]*\Z")
+_HEX_DIGITS = frozenset(b"0123456789ABCDEFabcdef")
+
+MAX_COMMAND_NAME = 11
+"""Longest command name the board reads; a longer one is not a name (UNKNOWN, no detail)."""
 
 
 def _int_in(lo: int, hi: int) -> Callable[[str], int]:
     def parse(s: str) -> int:
         if not _INT.match(s):
             raise ProtocolError("ARGS", why=f"not an integer: {s!r}")
+        if len(s.lstrip("-").lstrip("0")) > 10:  # beyond 32 bits, however many digits
+            raise ProtocolError("RANGE", why=f"{s} outside {lo}..{hi}")
         v = int(s)
         if not lo <= v <= hi:
             raise ProtocolError("RANGE", why=f"{v} outside {lo}..{hi}")
@@ -348,12 +354,11 @@ def frame(name: str, *values: str) -> str:
     return f"${body}*{checksum(body):04X}"
 
 
-def split_frame(line: str | bytes, require_checksum: bool = True) -> list[str]:
-    """Check a line's frame and checksum; return [NAME, field, ...].
+def split_frame(line: str | bytes) -> list[str]:
+    """Check a board line's frame and checksum; return [NAME, field, ...].
 
-    Raises ProtocolError: CHECKSUM for a missing (when required) or wrong checksum,
-    ARGS for anything else malformed. A `\\r` before the end is ignored; the `$` is
-    optional only when the checksum is (host commands).
+    Raises ProtocolError: CHECKSUM for a missing or wrong checksum, ARGS for anything else
+    malformed. A `\\r` before the end is ignored.
     """
     if isinstance(line, bytes):
         try:
@@ -365,55 +370,67 @@ def split_frame(line: str | bytes, require_checksum: bool = True) -> list[str]:
         line = line[:-1]
     if len(line) > MAX_LINE:
         raise ProtocolError("ARGS", why="line too long")
-    if line.startswith("$"):
-        line = line[1:]
-    elif require_checksum:
+    if not line.startswith("$"):
         raise ProtocolError("ARGS", why="no '$'")
+    line = line[1:]
     if "$" in line:
         raise ProtocolError("ARGS", why="'$' inside a line")
     star = line.find("*")
-    if star >= 0:
-        body, cs = line[:star], line[star + 1 :]
-        if len(cs) != CHECKSUM_DIGITS or any(c not in "0123456789ABCDEF" for c in cs):
-            raise ProtocolError("CHECKSUM", why=f"bad checksum field {cs!r}")
-        if int(cs, 16) != checksum(body):
-            raise ProtocolError("CHECKSUM", why=f"checksum {cs} != {checksum(body):04X}")
-    elif require_checksum:
+    if star < 0:
         raise ProtocolError("CHECKSUM", why="no checksum")
-    else:
-        body = line
+    body, cs = line[:star], line[star + 1 :]
+    if len(cs) != CHECKSUM_DIGITS or any(c not in "0123456789ABCDEF" for c in cs):
+        raise ProtocolError("CHECKSUM", why=f"bad checksum field {cs!r}")
+    if int(cs, 16) != checksum(body):
+        raise ProtocolError("CHECKSUM", why=f"checksum {cs} != {checksum(body):04X}")
     if not _TEXT.match(body) or not body:
         raise ProtocolError("ARGS", why="empty or not printable")
     return body.split(",")
 
 
 def _build(kind: LineKind, values: list[str]) -> Message:
+    """The message of ``kind`` from its field texts, checked in the firmware's order: fields
+    left to right, a field beyond the last or one of the wrong form is ARGS at once, a
+    number outside its range is RANGE once every field has been read, too few is ARGS."""
     types = kind.types
-    out: list[object] = []
-    name = kind.name
-    rest = types and types[-1].endswith("*")
-    optional = types and types[-1].endswith("?")
+    rest = bool(types) and types[-1].endswith("*")
+    optional = bool(types) and types[-1].endswith("?")
     fixed = types[:-1] if (rest or optional) else types
-    if len(values) < len(fixed) or (not rest and len(values) > len(types)):
-        raise ProtocolError("ARGS", name, f"expected {len(types)} fields, got {len(values)}")
-    for t, v in zip(fixed, values, strict=False):
-        out.append(FIELD_TYPES[t][0](v))
-    extra = values[len(fixed) :]
+    wrong_count = ProtocolError("ARGS", why=f"expected {len(types)} fields, got {len(values)}")
+    out: list[object] = []
+    out_of_range: ProtocolError | None = None
+    for i, v in enumerate(values):
+        if not rest and i >= len(types):
+            raise wrong_count
+        t = fixed[i] if i < len(fixed) else types[-1][:-1]
+        try:
+            out.append(FIELD_TYPES[t][0](v))
+        except ProtocolError as exc:
+            if exc.code != "RANGE":
+                raise
+            out_of_range = out_of_range or exc
+    if len(values) < len(fixed):
+        raise wrong_count
+    if out_of_range is not None:
+        raise out_of_range
+    args = out[: len(fixed)]
     if rest:
-        parse = FIELD_TYPES[types[-1][:-1]][0]
-        out.append(tuple(parse(v) for v in extra))
-    elif optional and extra:
-        out.append(FIELD_TYPES[types[-1][:-1]][0](extra[0]))
-    return kind.cls(*out)
+        args.append(tuple(out[len(fixed) :]))
+    elif optional and len(out) > len(fixed):
+        args.append(out[len(fixed)])
+    return kind.cls(*args)
 
 
 def parse(line: str | bytes, direction: Direction = "board") -> Message:
     """Parse one line sent in ``direction`` ("board": board to host, "host": a command).
 
-    Board lines must carry a valid checksum; host commands may omit `$` and `*CS`.
-    Raises ProtocolError with the $ERR code a board would answer.
+    Board lines must carry a valid checksum; host commands may omit `$` and `*CS` and are
+    read by :func:`parse_command`. Raises ProtocolError with the $ERR code a board would
+    answer.
     """
-    parts = split_frame(line, require_checksum=(direction == "board"))
+    if direction == "host":
+        return parse_command(line)
+    parts = split_frame(line)
     name, values = parts[0], parts[1:]
     if not _NAME.match(name):
         raise ProtocolError("UNKNOWN", why=f"not a line name: {name!r}")
@@ -430,8 +447,47 @@ def parse(line: str | bytes, direction: Direction = "board") -> Message:
 
 
 def parse_command(line: str | bytes) -> Message:
-    """Parse a host command as the board does (see :func:`parse`)."""
-    return parse(line, "host")
+    """Parse one host command (without its newline) exactly as the firmware does: the same
+    checks in the same order, so the same $ERR code and detail (firmware/PROTOCOL.md).
+
+    In order: an optional leading `$`; a `$` anywhere else is ARGS; a `*` must be followed
+    by exactly four hex digits, either case, matching the checksum, else CHECKSUM; the name
+    (up to the first `,`) must be 1-11 upper-case letters, else UNKNOWN without detail; an
+    unknown name is UNKNOWN,<NAME>; a byte outside printable ASCII in the fields is
+    ARGS,<NAME>; then the fields as :func:`_build` reads them (ARGS or RANGE, <NAME>).
+    The board ignores an empty line; here it is ARGS.
+    """
+    s = line.encode("utf-8") if isinstance(line, str) else bytes(line)
+    if not s:
+        raise ProtocolError("ARGS", why="empty command (the board ignores it)")
+    if s[:1] == b"$":
+        s = s[1:]
+    if b"$" in s:
+        raise ProtocolError("ARGS", why="'$' inside a command")
+    star = s.find(b"*")
+    if star >= 0:
+        cs = s[star + 1 :]
+        if len(cs) != CHECKSUM_DIGITS or not _HEX_DIGITS.issuperset(cs):
+            raise ProtocolError("CHECKSUM", why=f"bad checksum field {cs!r}")
+        if int(cs, 16) != checksum(s[:star]):
+            raise ProtocolError("CHECKSUM", why=f"checksum {cs!r} != {checksum(s[:star]):04X}")
+        s = s[:star]
+    comma = s.find(b",")
+    name_bytes = s if comma < 0 else s[:comma]
+    if not (1 <= len(name_bytes) <= MAX_COMMAND_NAME and all(65 <= c <= 90 for c in name_bytes)):
+        raise ProtocolError("UNKNOWN", why=f"not a command name: {name_bytes!r}")
+    name = name_bytes.decode("ascii")
+    kind = _BY_KEY.get(("host", name, None))
+    if kind is None:
+        raise ProtocolError("UNKNOWN", name)
+    fields_text = s[len(name_bytes) :]
+    if any(c < 0x20 or c > 0x7E for c in fields_text):
+        raise ProtocolError("ARGS", name, "not printable")
+    values = fields_text.decode("ascii").split(",")[1:] if fields_text else []
+    try:
+        return _build(kind, values)
+    except ProtocolError as exc:
+        raise ProtocolError(exc.code, name, exc.why) from None
 
 
 def format_line(msg: Message) -> str:

@@ -7,14 +7,22 @@ an outbox read with :meth:`VirtualBoard.take_output`. Two drivers exist: the pys
 ``minseg://`` (real-time or virtual clock, :mod:`minseg_tui.device.url_handler.protocol_minseg`)
 and the pseudo-terminal server (:mod:`minseg_tui.device.ptyserver`).
 
-Semantics follow firmware/PROTOCOL.md, with these choices written down:
+Semantics follow firmware/PROTOCOL.md and the firmware itself: both answer the
+conformance script firmware/golden/conformance.txt byte for byte alike (the firmware in
+simavr, this board in tests/device/test_conformance.py). Written down:
 
-- A voltage command (``V``, ``STOP``) takes effect at the next sample instant, so the
-  ``u_mV`` of every ``$S`` line is exactly the command in force from that sample on.
-  The watchdog stops the motor at once (safety first) and the next ``$S`` shows 0.
+- ``V`` takes effect at the next sample instant, so the ``u_mV`` of every ``$S`` line is
+  exactly the command in force from that sample on. ``STOP``, the watchdog and ``P``
+  during a step sequence stop the motor at once; the next ``$S`` shows 0.
 - ``STEP`` starts at the next sample instant with edge 1 (high); each half period is
-  ``round(half_ms / period)`` samples (at least 1), so every edge falls on a sample.
+  ``half_ms / period`` samples rounded to nearest, halves up (at least 1), so every edge
+  falls on a sample, and ``$OK,STEP`` reports the half period so used.
   The ``$S`` line of an edge comes before its ``$EV,STEP``.
+- Lines are assembled as the firmware does: one ``\\r`` before ``\\n`` is dropped, a line
+  of more than 80 bytes is refused whole with ``$ERR,ARGS``; a reset forgets a partial
+  line. Commands are parsed by :func:`protocol.parse_command`, the firmware's parser.
+- The first sample comes one sample period after ``$BOOT``; ``seq`` advances only while
+  streaming.
 - ``$EV,WDOG`` is sent once per silence, and only when there was something to stop
   (a non-zero command or a step sequence).
 - The shortest sample period is 1000 us here (the real board's floor is 2000 us).
@@ -222,11 +230,12 @@ class VirtualBoard:
             self._last_host = self.now
             self._wdog_fired = False
             self._inbuf.clear()
+            self._overlong = False
             self._out.clear()  # what was not yet sent is lost in a reset
             self._set_zero_mode("COAST" if s.params.zero_mode == "coast" else "BRAKE")
             self._drive(0)
-            self._next_nominal = self._boot_due
-            self._next_sample = self._boot_due + self._jitter()
+            self._next_nominal = self._boot_due + self.period_us * 1e-6
+            self._next_sample = self._next_nominal + self._jitter()
 
     def _jitter(self) -> float:
         j = self.settings.jitter_us
@@ -326,9 +335,10 @@ class VirtualBoard:
         self._drive(self.u_mV)
         t_us = self.micros(self._next_sample)
         self.truth.append(P.SampleLine(self._seq, t_us, count, self.u_mV))
-        if self.stream and not (self.faults.drop and self._fault_rng.random() < self.faults.drop):
-            self._emit(P.SampleLine(self._seq, t_us, count, self.u_mV))
-        self._seq = (self._seq + 1) & 0xFFFFFFFF
+        if self.stream:
+            if not (self.faults.drop and self._fault_rng.random() < self.faults.drop):
+                self._emit(P.SampleLine(self._seq, t_us, count, self.u_mV))
+            self._seq = (self._seq + 1) & 0xFFFFFFFF
         for ev in events:
             self._emit(ev)
         self._next_nominal += self.period_us * 1e-6
@@ -382,33 +392,46 @@ class VirtualBoard:
 
     # -- input ---------------------------------------------------------------------------
     def feed(self, data: bytes) -> None:
-        """Bytes from the host, received at board time ``now``; complete lines are served."""
+        """Bytes from the host, received at board time ``now``; complete lines are served.
+
+        The firmware's line assembler: at most MAX_LINE bytes and one trailing ``\\r`` are
+        kept; a longer line is dropped whole and answered ``$ERR,ARGS`` at its newline.
+        """
         with self.lock:
             if not self.powered or not self.booted or self.faults.silent:
                 return  # a bootloader or a hung board hears nothing
-            self._inbuf += data
-            while True:
-                nl = self._inbuf.find(b"\n")
-                if nl < 0:
-                    if len(self._inbuf) > P.MAX_LINE + 1:
-                        self._inbuf.clear()  # too long: discard; resynchronise at the next \n
+            while data:
+                nl = data.find(b"\n")
+                chunk = data if nl < 0 else data[:nl]
+                if not self._overlong:
+                    if len(self._inbuf) + len(chunk) > P.MAX_LINE + 1:
                         self._overlong = True
+                        self._inbuf.clear()
+                    else:
+                        self._inbuf += chunk
+                if nl < 0:
                     break
-                raw = bytes(self._inbuf[:nl])
-                del self._inbuf[: nl + 1]
-                if getattr(self, "_overlong", False) or len(raw.rstrip(b"\r")) > P.MAX_LINE:
+                data = data[nl + 1 :]
+                line = bytes(self._inbuf)
+                self._inbuf.clear()
+                if line.endswith(b"\r"):
+                    line = line[:-1]
+                if self._overlong or len(line) > P.MAX_LINE:
                     self._overlong = False
-                    self._emit(P.Err("ARGS", ""))  # as the firmware: refused, nothing changes
+                    self._emit(P.Err("ARGS", ""))  # refused whole, nothing changes
                     continue
-                self._serve(raw)
+                self._serve(line)
 
     def _serve(self, raw: bytes) -> None:
-        if not raw.strip(b"\r"):
-            return
+        if not raw:
+            return  # an empty line: no reply
         try:
             cmd = P.parse_command(raw)
+            if isinstance(cmd, P.SquareWave) and self._step is not None:
+                raise P.ProtocolError("BUSY")
         except P.ProtocolError as exc:
-            self._emit(P.Err(exc.code, exc.detail))
+            detail = "" if exc.code in ("CHECKSUM", "BUSY") else exc.detail
+            self._emit(P.Err(exc.code, detail))  # refused: nothing changes, not the watchdog
             return
         self.commands_in += 1
         self._last_host = self.now
@@ -419,6 +442,13 @@ class VirtualBoard:
 
     def _abort_step(self) -> None:
         self._step = None
+
+    def _stop_now(self) -> None:
+        """Zero command at once: no step sequence, nothing pending, the bridge off."""
+        self._step = None
+        self._pending_mV = None
+        self.u_mV = 0
+        self._drive(0)
 
     def _cmd_id(self, _c: P.Identify) -> P.Message:
         return P.Ident(
@@ -441,25 +471,26 @@ class VirtualBoard:
         return P.Ok("V", (str(mv),))
 
     def _cmd_step(self, c: P.SquareWave) -> P.Message:
-        if self._step is not None:
-            return P.Err("BUSY", "STEP")
         lo = _clamp(c.low_mV, -self.sup_mV, self.sup_mV)
         hi = _clamp(c.high_mV, -self.sup_mV, self.sup_mV)
         half = _clamp(c.half_ms, *HALF_LIMITS_MS)
         n = _clamp(c.n, *N_LIMITS)
-        samples = max(1, round(half * 1000 / self.period_us))
+        # whole sample periods, nearest with halves up, at least one (as the firmware)
+        samples = max(1, (half * 1000 + self.period_us // 2) // self.period_us)
         self._pending_mV = None
         self._step = _StepSeq(lo, hi, samples, n)
-        return P.Ok("STEP", (str(lo), str(hi), str(half), str(n)))
+        used_ms = samples * self.period_us // 1000
+        return P.Ok("STEP", (str(lo), str(hi), str(used_ms), str(n)))
 
     def _cmd_stop(self, _c: P.Stop) -> P.Message:
-        self._abort_step()
-        self._pending_mV = 0
+        self._stop_now()
         return P.Ok("STOP")
 
     def _cmd_p(self, c: P.SetPeriod) -> P.Message:
-        us = _clamp((c.period_us + 500) // 1000 * 1000, *PERIOD_LIMITS_US)  # half up
-        self._abort_step()
+        clamped = _clamp(c.period_us, *PERIOD_LIMITS_US)
+        us = (clamped + 500) // 1000 * 1000  # the nearest 1000 us, halves up
+        if self._step is not None:
+            self._stop_now()  # P aborts a step sequence and sets the command to 0
         last = self._next_nominal - self.period_us * 1e-6
         self.period_us = us
         self._next_nominal = max(last + us * 1e-6, self.now)
@@ -471,7 +502,13 @@ class VirtualBoard:
         return P.Ok("Z")
 
     def _cmd_sup(self, c: P.SetSupply) -> P.Message:
-        self.sup_mV = _clamp(c.mV, *SUPPLY_LIMITS_MV)
+        self.sup_mV = lim = _clamp(c.mV, *SUPPLY_LIMITS_MV)
+        self.u_mV = _clamp(self.u_mV, -lim, lim)  # what is in force and what will be
+        if self._pending_mV is not None:
+            self._pending_mV = _clamp(self._pending_mV, -lim, lim)
+        if self._step is not None:
+            self._step.low = _clamp(self._step.low, -lim, lim)
+            self._step.high = _clamp(self._step.high, -lim, lim)
         self._drive(self.u_mV)
         return P.Ok("SUP", (str(self.sup_mV),))
 

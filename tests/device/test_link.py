@@ -47,7 +47,7 @@ def test_url_link_streams_without_loss(board_name):
         reply = link.command("V,99999")
         assert reply == P.Ok("V", ("5000",))
         assert isinstance(link.command("STEP,0,1000,60000,10"), P.Ok)
-        assert link.command("STEP,0,1000,60000,10") == P.Err("BUSY", "STEP")
+        assert link.command("STEP,0,1000,60000,10") == P.Err("BUSY")
         with pytest.raises(InputError):
             link.command("FLY,1")
     finally:

@@ -19,8 +19,9 @@ def test_boot_on_open_then_samples_every_25_ms():
     lines = read_lines(port, 0.1)
     assert P.parse(lines[0]) == P.Boot("minseg-virtual 2.0.0", 2)
     samples = parsed(lines, P.SampleLine)
-    assert [s.seq for s in samples] == [0, 1, 2, 3, 4]
-    assert [s.t_us for s in samples] == [0, 25000, 50000, 75000, 100000]
+    # as the firmware: the first sample one period after $BOOT
+    assert [s.seq for s in samples] == [0, 1, 2, 3]
+    assert [s.t_us for s in samples] == [25000, 50000, 75000, 100000]
     port.write(b"ID\n")
     (ident,) = parsed(read_lines(port, 0.001), P.Ident)
     assert ident == P.Ident("minseg-virtual 2.0.0", 2, "Virtual", 720, 25000, 5000, "BRAKE")
@@ -37,7 +38,8 @@ def test_clamping_reports_applied_values():
         "P,200000": ("P", ("100000",)),
         "SUP,20000": ("SUP", ("12000",)),
         "SUP,1000": ("SUP", ("3000",)),
-        "STEP,-9000,9000,5,0": ("STEP", ("-3000", "3000", "20", "1")),
+        # half 20 ms (the floor) at P = 100 ms is one sample: the half period used is 100 ms
+        "STEP,-9000,9000,5,0": ("STEP", ("-3000", "3000", "100", "1")),
     }
     for cmd, (name, values) in cases.items():
         port.write(cmd.encode() + b"\n")
@@ -49,7 +51,7 @@ def test_clamping_reports_applied_values():
 
 def test_step_edges_fall_on_sample_instants():
     port = vport("jitter=0")
-    read_lines(port, 0.01)  # sample 0 at t=0
+    read_lines(port, 0.01)  # booted at t=0, sample 0 comes at 25 ms
     port.write(b"STEP,0,3000,100,2\n")  # half = 4 samples of 25 ms
     lines = read_lines(port, 0.5)
     samples = parsed(lines, P.SampleLine)
@@ -66,7 +68,7 @@ def test_step_edges_fall_on_sample_instants():
     # a second STEP while one runs is refused
     port.write(b"STEP,0,3000,100,2\nSTEP,0,1000,100,2\n")
     replies = [P.parse(x) for x in read_lines(port, 0.001) if x.startswith(("$OK", "$ERR"))]
-    assert replies == [P.Ok("STEP", ("0", "3000", "100", "2")), P.Err("BUSY", "STEP")]
+    assert replies == [P.Ok("STEP", ("0", "3000", "100", "2")), P.Err("BUSY")]
 
 
 def test_voltage_applies_from_the_next_sample():
@@ -167,12 +169,36 @@ def test_same_seed_same_stream():
 def test_micros_and_seq_wrap():
     port = vport("jitter=0&micros0=4294917296&seq0=4294967294")
     samples = parsed(read_lines(port, 0.1), P.SampleLine)
-    assert [s.seq for s in samples] == [4294967294, 4294967295, 0, 1, 2]
-    assert [s.t_us for s in samples] == [
-        4294917296,
-        4294942296,
-        0,
-        25000,
-        50000,
-    ]  # 4294917296 = 2**32 - 50000
+    assert [s.seq for s in samples] == [4294967294, 4294967295, 0, 1]
+    # micros() at boot is 2**32 - 50000; samples 25 ms apart from one period after boot
+    assert [s.t_us for s in samples] == [4294942296, 0, 25000, 50000]
     assert math.isfinite(port.board.now)
+
+
+def test_stop_and_p_during_a_step_stop_the_motor_at_once():
+    port = vport("jitter=0")
+    read_lines(port, 0.03)
+    port.write(b"V,4000\n")
+    read_lines(port, 0.05)
+    assert port.board.plant.u_req != 0.0
+    port.write(b"STOP\n")
+    read_lines(port, 0.001)  # before the next sample: the bridge is already off
+    assert port.board.plant.u_req == 0.0 and port.board.u_mV == 0
+    port.write(b"STEP,0,4000,1000,5\n")
+    read_lines(port, 0.05)
+    assert port.board.u_mV == 4000
+    port.write(b"P,20000\n")
+    read_lines(port, 0.001)
+    assert port.board.plant.u_req == 0.0 and port.board.u_mV == 0
+    samples = parsed(read_lines(port, 0.1), P.SampleLine)
+    assert samples and all(s.u_mV == 0 for s in samples)
+
+
+def test_a_refused_step_does_not_feed_the_watchdog():
+    port = vport("jitter=0")
+    read_lines(port, 0.001)
+    port.write(b"STEP,0,2000,5000,1\n")
+    read_lines(port, 0.6)
+    port.write(b"STEP,0,2000,5000,1\n")  # $ERR,BUSY: not a command the board accepted
+    lines = read_lines(port, 0.45)
+    assert P.format_line(P.EvWatchdog()) in lines

@@ -1,0 +1,287 @@
+/* Runs the built firmware ELF in simavr against the conformance script,
+ * golden/conformance.txt: commands, hostile ones included, and the exact lines
+ * the board must answer. The virtual MinSeg runs the same script
+ * (tests/device/test_conformance.py), so both boards answer byte for byte
+ * alike. The script's rules are written at its top.
+ *
+ * Host bytes go into the simulated UART 2 per 100 us, slower than simavr 1.6
+ * delivers them (it times the UART without U2X: 40 us a byte), so a long line
+ * reaches the firmware whole, as on a wire, and never overflows simavr's FIFO.
+ * Usage: sim_conformance firmware.elf PROFILE conformance.txt
+ * The libsimavr entry points are declared in simavr_api.h. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "simavr_api.h"
+
+#define FIRMWARE_NAME "minseg-fw 2.0.0"
+#define SETTLE_US 4000
+#define SYNC_MAX_US 200000
+#define BOOT_MAX_US 100000
+#define LINE_CAP 400
+
+static avr_t *avr;
+static avr_irq_t *uart_in;
+static uint32_t uart_flags; /* no echo of the UART output to stdout */
+static uint64_t now_us;     /* simulated time, advanced by a 100 us cycle timer */
+
+/* bytes waiting to go to the board */
+static unsigned char tx[LINE_CAP + 2];
+static size_t tx_len, tx_pos;
+
+/* lines from the board: samples and $BOOT counted, the rest queued */
+#define QUEUE_CAP 64
+static char queue[QUEUE_CAP][LINE_CAP];
+static int q_head, q_len;
+static char cur[LINE_CAP];
+static size_t cur_len;
+static long last_u;
+static int have_u;
+static long samples, boots;
+static int failures;
+
+static unsigned crc16(const char *s, size_t n) { /* CRC-16/CCITT-FALSE, bit by bit */
+  unsigned crc = 0xFFFF;
+  for (size_t i = 0; i < n; ++i) {
+    crc ^= (unsigned)(unsigned char)s[i] << 8;
+    for (int b = 0; b < 8; ++b)
+      crc = (crc & 0x8000u) ? ((crc << 1) ^ 0x1021u) & 0xFFFFu : (crc << 1) & 0xFFFFu;
+  }
+  return crc;
+}
+
+static void on_line(const char *line) {
+  if (strncmp(line, "$S,", 3) == 0) {
+    const char *p = line;
+    for (int commas = 0; *p && commas < 4; ++p)
+      if (*p == ',') ++commas;
+    last_u = strtol(p, NULL, 10);
+    have_u = 1;
+    ++samples;
+  } else if (strncmp(line, "$BOOT,", 6) == 0) {
+    ++boots;
+  } else if (q_len < QUEUE_CAP) {
+    snprintf(queue[(q_head + q_len) % QUEUE_CAP], LINE_CAP, "%s", line);
+    ++q_len;
+  } else {
+    printf("FAIL: more than %d lines not yet expected\n", QUEUE_CAP);
+    exit(1);
+  }
+}
+
+static void on_uart_byte(avr_irq_t *irq, uint32_t value, void *param) {
+  (void)irq;
+  (void)param;
+  char c = (char)value;
+  if (c == '\n') {
+    cur[cur_len] = '\0';
+    on_line(cur);
+    cur_len = 0;
+  } else if (cur_len < LINE_CAP - 1) {
+    cur[cur_len++] = c;
+  }
+}
+
+static avr_cycle_count_t tick(avr_t *a, avr_cycle_count_t when, void *param) {
+  (void)a;
+  (void)param;
+  now_us += 100;
+  for (int k = 0; k < 2 && tx_pos < tx_len; ++k) avr_raise_irq(uart_in, tx[tx_pos++]);
+  return when + 1600; /* 100 us at 16 MHz */
+}
+
+static void run_for_us(uint64_t us) {
+  uint64_t end = now_us + us;
+  while (now_us < end) {
+    int st = avr_run(avr);
+    if (st == cpu_Done || st == cpu_Crashed) {
+      printf("FAIL: simulated CPU stopped (state %d)\n", st);
+      exit(1);
+    }
+  }
+}
+
+static void send_bytes(const unsigned char *s, size_t n) {
+  memcpy(tx, s, n);
+  tx_len = n;
+  tx_pos = 0;
+  while (tx_pos < tx_len) run_for_us(100);
+  run_for_us(SETTLE_US);
+}
+
+static void wait_boot(void) {
+  long before = boots;
+  uint64_t end = now_us + BOOT_MAX_US;
+  while (boots == before && now_us < end) run_for_us(100);
+  if (boots == before) {
+    printf("FAIL: no $BOOT after a reset\n");
+    failures++;
+  }
+}
+
+static void reset_board(void) {
+  avr_reset(avr);
+  avr_ioctl(avr, UART_SET_FLAGS('0'), &uart_flags);
+  avr_cycle_timer_register_usec(avr, 100, tick, NULL); /* a reset clears the timers */
+  cur_len = 0;
+  tx_len = tx_pos = 0;
+  wait_boot();
+}
+
+/* \r \n \t \0 \\ \xHH; returns the number of bytes */
+static size_t unescape(const char *s, unsigned char *out) {
+  size_t n = 0;
+  while (*s && n < LINE_CAP) {
+    if (s[0] == '\\' && s[1]) {
+      char e = s[1];
+      if (e == 'x' && s[2] && s[3]) {
+        char hex[3] = {s[2], s[3], 0};
+        out[n++] = (unsigned char)strtol(hex, NULL, 16);
+        s += 4;
+        continue;
+      }
+      out[n++] = e == 'r' ? '\r' : e == 'n' ? '\n' : e == 't' ? '\t' : e == '0' ? '\0' : e;
+      s += 2;
+    } else {
+      out[n++] = (unsigned char)*s++;
+    }
+  }
+  return n;
+}
+
+/* replace every `from` in s by `to` (in place, s has LINE_CAP bytes) */
+static void replace(char *s, const char *from, const char *to) {
+  char out[LINE_CAP];
+  size_t n = 0, lf = strlen(from), lt = strlen(to);
+  for (const char *p = s; *p && n < LINE_CAP - 1;) {
+    if (strncmp(p, from, lf) == 0 && n + lt < LINE_CAP - 1) {
+      memcpy(out + n, to, lt);
+      n += lt;
+      p += lf;
+    } else {
+      out[n++] = *p++;
+    }
+  }
+  out[n] = '\0';
+  memcpy(s, out, n + 1);
+}
+
+static void expected_line(const char *text, const char *profile, char *want) {
+  size_t len = strlen(text);
+  if (len > LINE_CAP - 1) len = LINE_CAP - 1;
+  memcpy(want, text, len);
+  want[len] = '\0';
+  replace(want, "{fw}", FIRMWARE_NAME);
+  replace(want, "{board}", profile);
+  size_t n = strlen(want);
+  if (n > 6 && strcmp(want + n - 6, "*{crc}") == 0) {
+    unsigned cs = crc16(want + 1, n - 7);
+    snprintf(want + n - 5, LINE_CAP - (n - 5), "%04X", cs);
+  }
+}
+
+static void checkpoint(int number) {
+  while (q_len > 0) {
+    printf("FAIL conformance.txt:%d: not expected: %s\n", number, queue[q_head]);
+    failures++;
+    q_head = (q_head + 1) % QUEUE_CAP;
+    q_len--;
+  }
+}
+
+int main(int argc, char **argv) {
+  if (argc != 4) {
+    fprintf(stderr, "usage: %s firmware.elf PROFILE conformance.txt\n", argv[0]);
+    return 2;
+  }
+  const char *profile = argv[2];
+  FILE *script = fopen(argv[3], "r");
+  if (!script) {
+    fprintf(stderr, "cannot read %s\n", argv[3]);
+    return 2;
+  }
+  static unsigned char fw[1 << 16]; /* elf_firmware_t, zero-initialised */
+  if (elf_read_firmware(argv[1], fw) != 0) {
+    fprintf(stderr, "cannot read %s\n", argv[1]);
+    return 2;
+  }
+  uint32_t freq = 16000000u;
+  memcpy(fw + FW_FREQUENCY_OFFSET, &freq, sizeof freq);
+  avr = avr_make_mcu_by_name("atmega2560");
+  if (!avr) {
+    fprintf(stderr, "simavr has no atmega2560 core\n");
+    return 2;
+  }
+  avr_init(avr);
+  avr_load_firmware(avr, fw);
+  avr_irq_register_notify(avr_io_getirq(avr, UART_GETIRQ('0'), UART_IRQ_OUTPUT), on_uart_byte,
+                          NULL);
+  uart_in = avr_io_getirq(avr, UART_GETIRQ('0'), UART_IRQ_INPUT);
+  avr_ioctl(avr, UART_SET_FLAGS('0'), &uart_flags);
+  avr_cycle_timer_register_usec(avr, 100, tick, NULL);
+  wait_boot();
+
+  char raw[LINE_CAP + 8];
+  int number = 0, steps = 0;
+  while (fgets(raw, sizeof raw, script)) {
+    ++number;
+    raw[strcspn(raw, "\n")] = '\0';
+    if (raw[0] == '\0' || raw[0] == '#') continue;
+    ++steps;
+    unsigned char bytes[LINE_CAP + 2];
+    if (strncmp(raw, ">>", 2) == 0 || raw[0] == '>') {
+      int newline = strncmp(raw, ">>", 2) != 0;
+      const char *arg = raw + (newline ? 1 : 2);
+      if (*arg == ' ') ++arg;
+      checkpoint(number);
+      size_t n = unescape(arg, bytes);
+      if (newline) bytes[n++] = '\n';
+      send_bytes(bytes, n);
+    } else if (strncmp(raw, "< ", 2) == 0) {
+      char want[LINE_CAP];
+      expected_line(raw + 2, profile, want);
+      if (q_len == 0) {
+        printf("FAIL conformance.txt:%d: expected %s, got nothing\n", number, want);
+        failures++;
+      } else {
+        if (strcmp(queue[q_head], want) != 0) {
+          printf("FAIL conformance.txt:%d: expected %s, got %s\n", number, want,
+                 queue[q_head]);
+          failures++;
+        }
+        q_head = (q_head + 1) % QUEUE_CAP;
+        q_len--;
+      }
+    } else if (strncmp(raw, "= ", 2) == 0) {
+      run_for_us((uint64_t)(atof(raw + 2) * 1000.0 + 0.5));
+    } else if (strcmp(raw, "sync") == 0) {
+      long before = samples;
+      uint64_t end = now_us + SYNC_MAX_US;
+      while (samples == before && now_us < end) run_for_us(100);
+      if (samples == before) {
+        printf("FAIL conformance.txt:%d: no sample line within 200 ms\n", number);
+        failures++;
+      }
+    } else if (strncmp(raw, "u ", 2) == 0) {
+      long want = strtol(raw + 2, NULL, 10);
+      if (!have_u || last_u != want) {
+        printf("FAIL conformance.txt:%d: expected the last sample with u = %ld, got %ld\n",
+               number, want, have_u ? last_u : 0L);
+        failures++;
+      }
+    } else if (strcmp(raw, "reset") == 0) {
+      checkpoint(number);
+      reset_board();
+    } else {
+      printf("FAIL conformance.txt:%d: unknown directive %s\n", number, raw);
+      failures++;
+    }
+  }
+  fclose(script);
+  checkpoint(number + 1);
+  printf("conformance (%s): %d steps, %d failed; %ld samples in %.3f s of simulated time\n",
+         profile, steps, failures, samples, (double)now_us / 1e6);
+  return failures == 0 ? 0 : 1;
+}
