@@ -11,21 +11,23 @@ are kept.
 
 Generous where it is unambiguous (a BOM, \\r\\n, whitespace around fields, blank lines,
 column names in any case); anything else is refused with an InputError naming the file,
-the line and what was expected.
+the line and what was expected. Files are streamed in bounded memory
+(:mod:`minseg_tui.lab.csvread`, which also caps lines, bytes and waits); values beyond what
+a MinSeg produces are refused (LIMITS), and so are more rows than a lab produces.
 """
 
 from __future__ import annotations
 
 import csv
-import math
-import re
 from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.csvread import NUMBER, CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog, command, find_edges
 
@@ -51,128 +53,98 @@ LOG_NUMERIC: dict[str, str] = {
 }
 """Optional step-log columns that must hold numbers when present."""
 
-_INT = re.compile(r"^[+-]?\d+$")
-_META = re.compile(r"^#\s*([A-Za-z_][\w.-]*)\s*[:=]\s*(.*?)\s*$")
+MAX_TABLE_ROWS: int = 1000
+"""Most rows a table may have (one per requested voltage; the lab's tables have about ten)."""
+
+MAX_LOG_ROWS: int = 2_000_000
+"""Most rows a step log may have: what the link keeps of one recording, 67 min of samples
+at the board's fastest period of 2 ms."""
+
+LIMITS: dict[str, tuple[float, str]] = {
+    "t": (1e6, "the time of a lab recording (11 days)"),
+    "u": (100.0, "a motor on a lab supply"),
+    "u_req": (100.0, "a motor on a lab supply"),
+    "u_ss": (100.0, "a motor on a lab supply"),
+    "omega": (1e4, "a small DC motor (95 000 rpm)"),
+    "omega_ss": (1e4, "a small DC motor (95 000 rpm)"),
+    "omega_true": (1e4, "a small DC motor (95 000 rpm)"),
+    "omega_lab": (1e4, "a small DC motor (95 000 rpm)"),
+    "theta": (1e9, "the angle of a lab recording"),
+    "count": (1e12, "the encoder count of a lab recording"),
+    "current": (100.0, "a small DC motor"),
+    "i_ss": (1e5, "a small DC motor"),
+}
+"""The largest magnitude, in the column's unit, of each known column, and what that is a
+plausible size for: beyond it a value is no MinSeg's (1e308 in t, 1e300 in theta)."""
+
+UINT32_COLUMNS: dict[str, str] = {"t_us": "the board's micros()", "seq": "the board's counter"}
+"""Columns the board writes as uint32: integers from 0 to 2^32 - 1."""
+
+TS_KEYS: tuple[str, ...] = ("ts", "Ts", "sample_period")
+"""Metadata keys that give the nominal sample period in s (``# ts: 0.025``)."""
+
+TS_AGREE: float = 0.1
+"""How far (relative) the metadata's sample period may be from the t column's median
+interval."""
 
 
-def _read_text(path: Path) -> str:
-    try:
-        raw = path.read_bytes()
-    except IsADirectoryError:
-        raise InputError(str(path), None, "expected a file, got a directory") from None
-    except OSError as exc:
-        raise InputError(str(path), None, f"cannot read the file ({exc.strerror})") from None
-    try:
-        return raw.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        line = raw[: exc.start].count(b"\n") + 1
-        raise InputError(str(path), line, "expected UTF-8 text (a CSV file)") from None
+def _show(value: float) -> str:
+    return f"{value:.15g}"
 
 
-class _Csv:
-    """A CSV file split into comments, a header and data rows, each with its line number."""
-
-    def __init__(self, path: Path, expected_header: str) -> None:
-        self.source = str(path)
-        text = _read_text(path)
-        self.metadata: dict[str, str] = {}
-        self.header: list[str] = []
-        self.header_line = 0
-        self.rows: list[tuple[int, list[str]]] = []
-        for number, line in enumerate(text.splitlines(), start=1):
-            stripped = line.strip()
-            if not stripped:
-                continue
-            if stripped.startswith("#"):
-                m = _META.match(stripped)
-                if m and not self.header:
-                    self.metadata[m.group(1)] = m.group(2)
-                continue
-            fields = [f.strip() for f in next(csv.reader([stripped]))]
-            if not self.header:
-                self.header, self.header_line = [f.lower() for f in fields], number
-                self._check_header(expected_header)
-            else:
-                self.rows.append((number, fields))
-        if not self.header:
-            raise InputError(
-                self.source, None, f"expected a header row '{expected_header}', the file is empty"
-            )
-        if not self.rows:
-            raise InputError(
-                self.source, self.header_line, "expected data rows after the header, found none"
-            )
-
-    def _check_header(self, expected: str) -> None:
-        if len(self.header) == 1 and ";" in self.header[0]:
-            raise InputError(
-                self.source,
-                self.header_line,
-                f"expected columns separated by commas ('{expected}'), got semicolons",
-            )
-        seen: set[str] = set()
-        for name in self.header:
-            if not name:
+def _check_limits(f: CsvColumns, units: Mapping[str, str]) -> None:
+    """Refuse a value no MinSeg produces (LIMITS, UINT32_COLUMNS), naming its line."""
+    for name in f.header:
+        if not f.is_numeric(name):
+            continue
+        v = f.numbers(name)
+        unit = units.get(name, "a number")
+        if name in LIMITS:
+            limit, what = LIMITS[name]
+            bad = np.flatnonzero(np.abs(v) > limit)
+            if bad.size:
+                k = int(bad[0])
                 raise InputError(
-                    self.source,
-                    self.header_line,
-                    f"expected a name for every column ('{expected}'), found an empty one",
+                    f.source,
+                    int(f.lines[k]),
+                    f"expected |{name} ({unit})| below {limit:g}, a plausible size for {what}; "
+                    f"got {_show(float(v[k]))}",
                 )
-            if name in seen:
+        if name in UINT32_COLUMNS:
+            bad = np.flatnonzero((v < 0) | (v > 2.0**32 - 1) | (v != np.floor(v)))
+            if bad.size:
+                k = int(bad[0])
                 raise InputError(
-                    self.source,
-                    self.header_line,
-                    f"expected each column once, '{name}' appears twice",
+                    f.source,
+                    int(f.lines[k]),
+                    f"expected {name} ({unit}) to be {UINT32_COLUMNS[name]}, an integer from 0 "
+                    f"to 4294967295; got {_show(float(v[k]))}",
                 )
-            seen.add(name)
 
-    def require(self, required: Mapping[str, str]) -> None:
-        missing = [c for c in required if c not in self.header]
-        if missing:
-            want = ", ".join(f"{c} ({required[c]})" for c in missing)
+
+def _check_sample_period(f: CsvColumns, t: NDArray[np.float64]) -> None:
+    """A ``# ts:`` header (TS_KEYS) must be a period in s that agrees with the t column."""
+    if t.size < 2:
+        return
+    median = float(np.median(np.diff(t)))
+    for key in TS_KEYS:
+        if key not in f.metadata:
+            continue
+        raw = f.metadata[key]
+        first = raw.split()[0] if raw.split() else ""
+        where = (f.source, f.metadata_lines[key])
+        if not NUMBER.match(first) or not float(first) > 0:
             raise InputError(
-                self.source,
-                self.header_line,
-                f"expected a column {want}; found {','.join(self.header)}",
+                *where, f"expected the sample period in s after '# {key}:', got '{raw}'"
             )
-
-    def check_widths(self) -> None:
-        for number, fields in self.rows:
-            if len(fields) != len(self.header):
-                hint = (
-                    " (a decimal comma? write 2.5, not 2,5)"
-                    if len(fields) > len(self.header)
-                    else ""
-                )
-                raise InputError(
-                    self.source,
-                    number,
-                    f"expected {len(self.header)} fields ({','.join(self.header)}), got {len(fields)}{hint}",
-                )
-
-    def numbers(self, name: str, unit: str) -> NDArray[np.float64]:
-        """Column ``name`` as floats; InputError on text, empty, NaN or infinity."""
-        j = self.header.index(name)
-        out = np.empty(len(self.rows))
-        for k, (number, fields) in enumerate(self.rows):
-            out[k] = _number(fields[j], self.source, number, name, unit)
-        return out
-
-    def lines(self) -> NDArray[np.int64]:
-        return np.array([n for n, _ in self.rows], dtype=np.int64)
-
-
-def _number(text: str, source: str, line: int, name: str, unit: str) -> float:
-    what = f"expected a number for {name} ({unit})"
-    if not text:
-        raise InputError(source, line, f"{what}, got an empty field")
-    try:
-        value = float(text)
-    except ValueError:
-        raise InputError(source, line, f"{what}, got '{text}'") from None
-    if not math.isfinite(value):
-        raise InputError(source, line, f"{what}, got '{text}'")
-    return value
+        ts = float(first)
+        if abs(median / ts - 1.0) > TS_AGREE:
+            raise InputError(
+                *where,
+                f"expected the header '# {key}: {raw}' to agree with the t column, whose median "
+                f"interval is {median:.6g} s ({median / ts:.3g} times the header's): which is "
+                "right? Fix the other",
+            )
 
 
 # -- TABLE.csv ---------------------------------------------------------------------------------
@@ -181,15 +153,22 @@ def _number(text: str, source: str, line: int, name: str, unit: str) -> float:
 def read_table(path: str | Path) -> list[Reading]:
     """The steady-state readings of Tasks 4-5, one Reading per row (i_ss in mA as entered).
 
-    Refuses (InputError): an empty file, a missing column, a field that is not a finite
-    number, and values that give no k_v or f: u_ss, omega_ss or i_ss zero or negative.
+    Refuses (InputError): an empty file, a missing column, a field that is not a number, a
+    value beyond what a MinSeg produces (LIMITS), more than MAX_TABLE_ROWS rows, and values
+    that give no k_v or f: u_ss, omega_ss or i_ss zero or negative.
     """
-    f = _Csv(Path(path), ",".join(TABLE_COLUMNS))
-    f.require(TABLE_COLUMNS)
-    f.check_widths()
-    cols = {name: f.numbers(name, unit) for name, unit in TABLE_COLUMNS.items()}
+    f = read_csv(
+        path,
+        expected_header=",".join(TABLE_COLUMNS),
+        required=TABLE_COLUMNS,
+        numeric=TABLE_COLUMNS,
+        max_rows=MAX_TABLE_ROWS,
+        rows_are="one per requested voltage; a lab table has about ten",
+    )
+    _check_limits(f, TABLE_COLUMNS)
+    cols = {name: f.numbers(name) for name in TABLE_COLUMNS}
     readings = []
-    for k, (number, _) in enumerate(f.rows):
+    for k, number in enumerate(f.lines.tolist()):
         r = Reading(
             u_req=float(cols["u_req"][k]),
             u_ss=float(cols["u_ss"][k]),
@@ -218,40 +197,47 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
     """A step log (see the module docstring) as a StepLog, ``source`` the path as given.
 
     Refuses (InputError naming file and line): an empty file, a missing t/u/omega column,
-    a field that is not a finite number in t, u, omega or a known numeric column (u_req,
-    theta, count, t_us, seq, ...), time (t, or t_us modulo 2^32) that does not increase,
-    and, unless ``require_step`` is False, a log in which the command (u_req, else u) never steps.
-    Unknown columns are kept: as numbers when every field is one, else as text.
+    a field that is not a number in t, u, omega or a known numeric column (u_req, theta,
+    count, t_us, seq, ...), a value beyond what a MinSeg produces (LIMITS, UINT32_COLUMNS),
+    more than MAX_LOG_ROWS rows, time (t, or t_us modulo 2^32) that does not increase, a
+    ``# ts:`` header that disagrees with t, and, unless ``require_step``
+    is False, a log in which the command (u_req, else u) never steps or u is 0 on every
+    row while u_req steps (no voltage on the motor: no K). Unknown columns are kept: as
+    numbers when every field is one, else as text.
     """
-    f = _Csv(Path(path), ",".join(LOG_REQUIRED))
-    f.require(LOG_REQUIRED)
-    f.check_widths()
-    lines = f.lines()
-    t = f.numbers("t", "s")
+    units = {**LOG_REQUIRED, **LOG_NUMERIC}
+    f = read_csv(
+        path,
+        expected_header=",".join(LOG_REQUIRED),
+        required=LOG_REQUIRED,
+        numeric=units,
+        max_rows=MAX_LOG_ROWS,
+        rows_are="what the link keeps of one recording, 67 min at 2 ms",
+    )
+    _check_limits(f, units)
+    lines = f.lines
+    t = f.numbers("t")
     bad = np.flatnonzero(np.diff(t) <= 0)
     if bad.size:
         k = int(bad[0]) + 1
         raise InputError(
             f.source,
             int(lines[k]),
-            f"expected t (s) to increase, got {f.rows[k][1][f.header.index('t')]} after "
-            f"{f.rows[k - 1][1][f.header.index('t')]} on line {lines[k - 1]}",
+            f"expected t (s) to increase, got {_show(float(t[k]))} after "
+            f"{_show(float(t[k - 1]))} on line {lines[k - 1]}",
         )
-    u = f.numbers("u", "V")
-    omega = f.numbers("omega", "rad/s")
-    extra: dict[str, NDArray] = {}
-    for j, name in enumerate(f.header):
+    u = f.numbers("u")
+    omega = f.numbers("omega")
+    extra: dict[str, NDArray[Any]] = {}
+    for name in f.header:
         if name in LOG_REQUIRED:
             continue
-        texts = [fields[j] for _, fields in f.rows]
-        if name in LOG_NUMERIC or all(_is_number(s) for s in texts):
-            values = f.numbers(name, LOG_NUMERIC.get(name, "a number"))
-            if all(_INT.match(s) for s in texts):
-                extra[name] = values.astype(np.int64)
-            else:
-                extra[name] = values
+        if not f.is_numeric(name):
+            extra[name] = f.texts(name)
+        elif f.is_integer(name):
+            extra[name] = f.numbers(name).astype(np.int64)
         else:
-            extra[name] = np.array(texts, dtype=str)
+            extra[name] = f.numbers(name)
     if "t_us" in extra:  # the board's micros(): increases, wrapping at 2^32
         still = np.flatnonzero(np.mod(np.diff(extra["t_us"].astype(np.float64)), 2.0**32) == 0)
         if still.size:
@@ -261,12 +247,14 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
                 int(lines[k]),
                 f"expected t_us (us) to increase, got {int(extra['t_us'][k])} again",
             )
+    _check_sample_period(f, t)
     log = StepLog(
         t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines
     )
     if require_step:
         cmd, name = command(log)
-        if not find_edges(cmd):
+        edges = find_edges(cmd)
+        if not edges:
             lo, hi = float(np.min(cmd)), float(np.max(cmd))
             raise InputError(
                 f.source,
@@ -274,17 +262,17 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
                 f"expected a step in {name} (V) from here on; it stays between {lo:g} and {hi:g} V "
                 f"up to line {lines[-1]}",
             )
+        if name != "u" and not np.any(u):
+            raise InputError(
+                f.source,
+                int(lines[edges[0].start]),
+                "expected u (V, the voltage on the motor) to follow the steps of u_req, the "
+                "first here; it is 0 V on every row (was u left unrecorded?)",
+            )
     return log
 
 
-def _is_number(text: str) -> bool:
-    try:
-        return math.isfinite(float(text))
-    except ValueError:
-        return False
-
-
-def _format_column(values: NDArray) -> list[str]:
+def _format_column(values: NDArray[Any]) -> list[str]:
     if values.dtype.kind in "iu":
         return [str(int(v)) for v in values]
     if values.dtype.kind == "f":
