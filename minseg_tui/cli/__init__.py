@@ -2,7 +2,9 @@
 
 Each subcommand lives in its own module with ``add_arguments(parser)`` and
 ``run(args) -> int``; this table is the only place that lists them.
-Exit codes: 0 ok, 2 bad input or usage, 1 device or other failure.
+Exit codes: 0 ok, 2 bad input or usage (or output that cannot be written), 1 device or
+other failure. A headless command never prints a Python warning: numeric warnings while it
+computes become one note on stderr.
 """
 
 from __future__ import annotations
@@ -10,9 +12,12 @@ from __future__ import annotations
 import argparse
 import importlib
 import importlib.util
+import io
 import os
 import sys
+import warnings
 from collections.abc import Sequence
+from typing import TextIO
 
 from minseg_tui.errors import InputError, MinsegError
 
@@ -87,11 +92,90 @@ def _main(args_list: list[str]) -> int:
         parser.print_help()
         return 2
     module = importlib.import_module(available[args.command][0])
-    try:
+    if args.command == "tui":  # the app reports its own troubles on screen
         return int(module.run(args))
-    except InputError as exc:
-        print(f"minseg-tui {args.command}: {exc}", file=sys.stderr)
-        return 2
-    except MinsegError as exc:
-        print(f"minseg-tui {args.command}: {exc}", file=sys.stderr)
-        return 1
+    out = _Stdout(sys.stdout)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", RuntimeWarning)
+        sys.stdout = out
+        try:
+            code = int(module.run(args))
+            sys.stdout.flush()
+        except InputError as exc:
+            return _fail(args.command, str(exc), 2)
+        except MinsegError as exc:
+            return _fail(args.command, str(exc), 1)
+        except OSError as exc:
+            if exc is not out.failed or isinstance(exc, BrokenPipeError):
+                raise
+            _drop_stdout(out.stream)
+            return _fail(args.command, f"cannot write the output ({exc.strerror})", 2)
+        finally:
+            sys.stdout = out.stream
+    _note_warnings(args.command, caught)
+    return code
+
+
+class _Stdout(io.TextIOBase):
+    """stdout, remembering the error a write or flush of it raised (a full disk, /dev/full),
+    so that the error is told apart from one of a file the command writes."""
+
+    def __init__(self, stream: TextIO) -> None:
+        self.stream = stream
+        self.failed: OSError | None = None
+
+    def write(self, text: str) -> int:
+        try:
+            return self.stream.write(text)
+        except OSError as exc:
+            self.failed = exc
+            raise
+
+    def flush(self) -> None:
+        try:
+            self.stream.flush()
+        except OSError as exc:
+            self.failed = exc
+            raise
+
+    def fileno(self) -> int:
+        return self.stream.fileno()
+
+    def isatty(self) -> bool:
+        return self.stream.isatty()
+
+
+def _fail(command: str, message: str, code: int) -> int:
+    print(f"minseg-tui {command}: {message}", file=sys.stderr)
+    return code
+
+
+def _drop_stdout(stream: TextIO) -> None:
+    """Send what is still buffered for stdout nowhere, so that exit does not fail again."""
+    try:
+        fd = stream.fileno()
+    except (OSError, ValueError):
+        return
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, fd)
+    os.close(devnull)
+
+
+def _note_warnings(command: str, caught: list[warnings.WarningMessage]) -> None:
+    """One line for the numeric warnings (RuntimeWarning, numpy's RankWarning) a computation
+    raised, instead of Python's dump of each; other warnings are shown as Python shows them."""
+    numeric = [w for w in caught if issubclass(w.category, RuntimeWarning)]
+    for w in caught:
+        if w not in numeric:
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+    if not numeric:
+        return
+    caught = numeric
+    first = caught[0]
+    where = f"{os.path.basename(first.filename)}:{first.lineno}"
+    more = f" and {len(caught) - 1} more" if len(caught) > 1 else ""
+    print(
+        f"minseg-tui {command}: note: the computation warned ({first.message} in {where}{more}); "
+        "a figure may rest on an unusual input",
+        file=sys.stderr,
+    )

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import argparse
 import csv
-import json
 import math
 from pathlib import Path
 
+from minseg_tui.cli.output import output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log
 from minseg_tui.model.check import CheckResult, check
@@ -59,6 +59,8 @@ def write_predictions(path: str, r: CheckResult) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Analyse the log; 0 on success (InputError propagates: exit 2 with one line)."""
+    if args.predictions:
+        output_file(args.predictions, {args.log: "the log being analysed"}, "predictions")
     log = read_step_log(args.log)
     ts = _sample_period(dict(log.metadata))
     refused = problem(log.t, log.u, log.omega, ts)
@@ -73,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
                 args.predictions, None, f"cannot write the predictions: {exc.strerror}"
             ) from exc
     if args.json:
-        print(json.dumps(result.to_dict(), indent=2))
+        print_json(result.to_dict(), indent=2)
     else:
         print(text(result))
     return 0

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import sys
 
+from minseg_tui.cli.output import print_json
 from minseg_tui.lab.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify
 
@@ -52,8 +52,7 @@ def run(args: argparse.Namespace) -> int:
     log = read_step_log(args.step) if args.step else None
     result = identify(readings, args.R, log, source=args.table)
     if args.json:
-        json.dump(result.to_json(), sys.stdout)
-        sys.stdout.write("\n")
+        print_json(result.to_json())
     else:
         sys.stdout.write(render(result))
     return 0
