@@ -41,12 +41,13 @@ import time
 from collections import deque
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
 from minseg_tui.device import protocol as P
 from minseg_tui.model.motor import MotorParams
-from minseg_tui.model.plant import MeterReading, Plant, PlantParams
+from minseg_tui.model.plant import MeterReading, Plant, PlantParams, ZeroMode
 from minseg_tui.units import KA_OVER_KV
 
 FIRMWARE = "minseg-virtual 2.0.0"
@@ -102,63 +103,92 @@ def _clamp(v: int, lo: int, hi: int) -> int:
 # -- options by name: the URL query, the `sim` command line -----------------------------
 @dataclass(frozen=True)
 class Option:
-    """A setting reachable by name: where it goes (dotted path), its type and help."""
+    """A setting reachable by name: where it goes (dotted path), its type, help and the
+    range it may take (lo..hi, in the unit of its help): beyond it the simulation would be
+    no MinSeg, or would not run (a boot delay of 30 years, a seed numpy refuses)."""
 
     path: str
     kind: type
     help: str
+    lo: float = 0.0
+    hi: float = math.inf
 
 
+_U32 = 2**32 - 1
 OPTIONS: dict[str, Option] = {
-    "seed": Option("seed", int, "random seed (noise, jitter, faults)"),
-    "R": Option("params.motor.R", float, "armature resistance R, ohm"),
-    "kv": Option("params.motor.k_v", float, "back-emf constant k_v, V s/rad (k_a = 0.65 k_v)"),
-    "ka": Option("params.motor.k_a", float, "torque constant k_a, N m/A"),
-    "f": Option("params.motor.f", float, "viscous friction f, N m s/rad"),
-    "J": Option("params.motor.J", float, "inertia J, kg m^2"),
-    "coulomb": Option("params.tau_c", float, "dry (Coulomb) friction torque, N m (0: none)"),
-    "drop": Option("params.v_drop", float, "voltage the motor driver loses, V"),
-    "supply": Option("params.v_supply", float, "true supply voltage, V"),
+    "seed": Option("seed", int, "random seed (noise, jitter, faults)", 0, 2**63 - 1),
+    "R": Option("params.motor.R", float, "armature resistance R, ohm", 0.1, 100.0),
+    "kv": Option(
+        "params.motor.k_v", float, "back-emf constant k_v, V s/rad (k_a = 0.65 k_v)", 1e-3, 10.0
+    ),
+    "ka": Option("params.motor.k_a", float, "torque constant k_a, N m/A", 1e-3, 10.0),
+    "f": Option("params.motor.f", float, "viscous friction f, N m s/rad", 0.0, 1.0),
+    "J": Option("params.motor.J", float, "inertia J, kg m^2", 1e-7, 1.0),
+    "coulomb": Option(
+        "params.tau_c", float, "dry (Coulomb) friction torque, N m (0: none)", 0.0, 1.0
+    ),
+    "drop": Option("params.v_drop", float, "voltage the motor driver loses, V", 0.0, 5.0),
+    "supply": Option("params.v_supply", float, "true supply voltage, V", 1.0, 24.0),
     "coast": Option("params.zero_mode", bool, "coast at zero command after reset (not brake)"),
-    "deadtime": Option("params.dead_time", float, "dead time from command to motor, s"),
-    "pole": Option("params.T2", float, "extra pole on the motor voltage, time constant s"),
-    "jitter": Option("jitter_us", float, "loop latency of each sample, up to us"),
-    "boot": Option("boot_ms", float, "delay from reset to $BOOT, ms"),
-    "micros0": Option("micros0", int, "micros() at reset, us (to test wrap)"),
-    "seq0": Option("seq0", int, "first sequence number (to test wrap)"),
-    "proto": Option("proto", int, "protocol version the board claims"),
-    "garbage": Option("faults.garbage", float, "fault: probability of garbage bytes per line"),
-    "truncate": Option("faults.truncate", float, "fault: probability of a truncated line"),
-    "badcs": Option("faults.bad_checksum", float, "fault: probability of a bad checksum"),
-    "lose": Option("faults.drop", float, "fault: probability a sample line is lost"),
+    "deadtime": Option("params.dead_time", float, "dead time from command to motor, s", 0.0, 1.0),
+    "pole": Option(
+        "params.T2", float, "extra pole on the motor voltage, time constant s", 0.0, 1.0
+    ),
+    "jitter": Option("jitter_us", float, "loop latency of each sample, up to us", 0.0, 20000.0),
+    "boot": Option("boot_ms", float, "delay from reset to $BOOT, ms", 0.0, 10000.0),
+    "micros0": Option("micros0", int, "micros() at reset, us (to test wrap)", 0, _U32),
+    "seq0": Option("seq0", int, "first sequence number (to test wrap)", 0, _U32),
+    "proto": Option("proto", int, "protocol version the board claims", 0, 255),
+    "garbage": Option(
+        "faults.garbage", float, "fault: probability of garbage bytes per line", 0.0, 1.0
+    ),
+    "truncate": Option(
+        "faults.truncate", float, "fault: probability of a truncated line", 0.0, 1.0
+    ),
+    "badcs": Option("faults.bad_checksum", float, "fault: probability of a bad checksum", 0.0, 1.0),
+    "lose": Option("faults.drop", float, "fault: probability a sample line is lost", 0.0, 1.0),
 }
+
+
+def _out_of_range(name: str, opt: Option, value: float, raw: object) -> str | None:
+    """Why ``value`` is outside the option's range (a ValueError message), or None."""
+    if opt.lo <= value <= opt.hi:
+        return None
+    if opt.kind is int:
+        return f"option {name}: expected an integer from {opt.lo:.0f} to {opt.hi:.0f}, got {raw!r}"
+    if opt.path.startswith("faults."):
+        return f"option {name}: expected a probability from 0 to 1, got {raw!r}"
+    return f"option {name}: expected a number from {opt.lo:g} to {opt.hi:g}, got {raw!r}"
 
 
 def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSettings:
     """Settings from option names (see OPTIONS) to values; raises ValueError naming a bad one."""
-    flat: dict[str, object] = {}
+    flat: dict[str, Any] = {}  # dotted path -> value of the option's kind
     for name, raw in values.items():
         opt = OPTIONS.get(name)
         if opt is None:
             raise ValueError(f"unknown virtual board option {name!r} (known: {', '.join(OPTIONS)})")
+        v: Any
         try:
             if opt.kind is bool:
-                v: object = (
-                    raw if isinstance(raw, bool) else str(raw).lower() in ("1", "true", "yes", "")
-                )
+                v = raw if isinstance(raw, bool) else str(raw).lower() in ("1", "true", "yes", "")
             else:
                 v = opt.kind(raw)
         except (TypeError, ValueError):
             what = {int: "an integer", float: "a number", bool: "true or false"}[opt.kind]
             raise ValueError(f"option {name}: expected {what}, got {raw!r}") from None
-        if opt.kind is float and not (math.isfinite(v) and v >= 0):  # type: ignore[arg-type]
+        if opt.kind is float and not (math.isfinite(v) and v >= 0):
             raise ValueError(f"option {name}: expected a finite number, not negative, got {raw!r}")
+        if opt.kind is not bool:
+            problem = _out_of_range(name, opt, v, raw)
+            if problem:
+                raise ValueError(problem)
         if opt.path == "params.zero_mode":
             v = "coast" if v else "brake"
         flat[opt.path] = v
     motor = {k.split(".")[-1]: v for k, v in flat.items() if k.startswith("params.motor.")}
     if "k_v" in motor and "k_a" not in motor:
-        motor["k_a"] = KA_OVER_KV * float(motor["k_v"])  # type: ignore[arg-type]
+        motor["k_a"] = KA_OVER_KV * float(motor["k_v"])
     base = PlantParams()
     plant_kw = {
         k.split(".")[1]: v for k, v in flat.items() if k.startswith("params.") and "motor" not in k
@@ -166,7 +196,7 @@ def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSett
     params = dataclasses.replace(base, motor=dataclasses.replace(base.motor, **motor), **plant_kw)
     faults = Faults(**{k.split(".")[1]: v for k, v in flat.items() if k.startswith("faults.")})
     top = {k: v for k, v in flat.items() if "." not in k}
-    return VirtualSettings(params=params, faults=faults, **top)  # type: ignore[arg-type]
+    return VirtualSettings(params=params, faults=faults, **top)
 
 
 # -- the board --------------------------------------------------------------------------
@@ -354,7 +384,7 @@ class VirtualBoard:
 
     def _set_zero_mode(self, mode: str) -> None:
         self.zero_mode = mode
-        zm = "coast" if mode == "COAST" else "brake"
+        zm: ZeroMode = "coast" if mode == "COAST" else "brake"
         if self.plant.params.zero_mode != zm:
             self.plant.params = dataclasses.replace(self.plant.params, zero_mode=zm)
 
