@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import argparse
-import json
 
+from minseg_tui.cli.output import print_json
 from minseg_tui.device import discovery
 
 
@@ -17,7 +17,7 @@ def run(args: argparse.Namespace) -> int:
     """Print the ports (best first) with their verdicts; exit 0 even when there are none."""
     found = discovery.candidates()
     if args.json:
-        print(json.dumps([c.as_dict() for c in found], indent=2))
+        print_json([c.as_dict() for c in found], indent=2)
         return 0
     if not found:
         print("no serial ports found (use `minseg-tui sim` for a virtual MinSeg)")

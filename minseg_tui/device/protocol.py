@@ -418,7 +418,8 @@ def _build(kind: LineKind, values: list[str]) -> Message:
         args.append(tuple(out[len(fixed) :]))
     elif optional and len(out) > len(fixed):
         args.append(out[len(fixed)])
-    return kind.cls(*args)
+    msg: Message = kind.cls(*args)
+    return msg
 
 
 def parse(line: str | bytes, direction: Direction = "board") -> Message:
