@@ -33,6 +33,7 @@ from pathlib import Path
 from typing import Any
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab import answers
 from minseg_tui.lab import steps as lab_steps
 from minseg_tui.lab.capture import DEFAULT_WINDOW, Capture, capture
 from minseg_tui.lab.entry import parse_quantity
@@ -527,7 +528,7 @@ class Session:
                     warnings=warnings,
                 )
             if fld.kind == "formula":
-                f = lab_steps.read_formula(fld, text)
+                f = answers.read_formula(fld, text)
                 value = f.value({}) if not fld.names else None
                 return Entry(fld.key, text, ok=True, value=value)
             try:
@@ -554,7 +555,7 @@ class Session:
             fld = FIELDS[key]
             if fld.kind == "formula":
                 try:
-                    out[key] = lab_steps.read_formula(fld, e.text)
+                    out[key] = answers.read_formula(fld, e.text)
                 except InputError:
                     continue
             elif e.value is not None:
@@ -572,7 +573,7 @@ class Session:
                 answer = values.get(chk.key)
                 if isinstance(answer, Formula) and not FIELDS[chk.key].names:
                     answer = answer.value({})
-                out.append(lab_steps.check_answer(chk, answer, values))
+                out.append(answers.check_answer(chk, answer, values))
         return out
 
     def step_status(self, step_id: str) -> str:
