@@ -30,8 +30,9 @@ from pathlib import Path
 
 import numpy as np
 
+from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, write_step_log
-from minseg_tui.lab.store import atomic_write_bytes, fsync_dir
+from minseg_tui.lab.store import RUNS_DIR, atomic_write_bytes, fsync_dir
 from minseg_tui.model.identify import Reading, Row, u_ss_at
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
@@ -337,3 +338,89 @@ def remap_log(path: Path, table: Sequence[tuple[float, float]]) -> None:
     meta["u"] = how
     meta.pop("format", None)
     write_log_atomic(path, StepLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta))
+
+
+# -- the runs of a session folder --------------------------------------------------------------
+
+
+def new_name(folder: Path, kind: str, taken: Iterable[str]) -> str:
+    """The first free ``<kind>-<k>`` among ``taken`` names and the files in ``folder/runs``."""
+    names = set(taken) | {p.name.split(".")[0] for p in (folder / RUNS_DIR).iterdir()}
+    k = 1
+    while f"{kind}-{k}" in names:
+        k += 1
+    return f"{kind}-{k}"
+
+
+def run_header(
+    name: str, kind: str, ts: float, started: str, plan: Mapping[str, float] | None
+) -> dict[str, object]:
+    """The header line of a partial file: name, kind, ts (s), started (ISO) and the plan."""
+    return {"name": name, "kind": kind, "ts": ts, "started": started, "plan": dict(plan or {})}
+
+
+def adopt(
+    folder: Path, partial: Path, table: Sequence[tuple[float, float]], interrupted: bool
+) -> RunInfo | None:
+    """Turn the partial file ``partial`` into ``runs/<name>.csv`` (atomically) under ``folder``
+    and return its record (the partial file stays: the caller removes it once the run is
+    saved in the session). None when it holds fewer than 2 samples."""
+    raw = read_partial(partial)
+    name = partial.name[: -len(PARTIAL_SUFFIX)]
+    if raw.seq.size < 2:
+        return None
+    ts = float(raw.header.get("ts", 0.025))  # type: ignore[arg-type]
+    log, dropped = build_log(raw, table, ts)
+    file = f"{RUNS_DIR}/{name}.csv"
+    write_log_atomic(folder / file, log)
+    plan = raw.header.get("plan") or {}
+    return RunInfo(
+        name=name,
+        file=file,
+        kind=str(raw.header.get("kind", "free")),
+        ts=ts,
+        samples=len(log),
+        dropped=dropped,
+        started=str(raw.header.get("started", "")),
+        interrupted=interrupted,
+        plan={str(k): float(v) for k, v in dict(plan).items()},  # type: ignore[call-overload]
+    )
+
+
+def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
+    """Copy the step log at ``path`` (checked by read_step_log; InputError with file and line
+    if it is not one) into ``folder/runs/<name>.csv``; its record."""
+    log = read_step_log(Path(path))
+    file = f"{RUNS_DIR}/{name}.csv"
+    write_log_atomic(
+        folder / file,
+        StepLog(
+            t=log.t,
+            u=log.u,
+            omega=log.omega,
+            extra=log.extra,
+            metadata={**log.metadata, "imported_from": str(path)},
+        ),
+    )
+    return RunInfo(
+        name=name,
+        file=file,
+        kind="imported",
+        ts=log.ts,
+        samples=len(log),
+        dropped=0,
+        started=started,
+    )
+
+
+def remap_runs(folder: Path, runs: Iterable[RunInfo], table: Sequence[tuple[float, float]]) -> None:
+    """Recompute the ``u`` column of every recorded (not imported) run with a new table."""
+    for r in runs:
+        if r.kind == "imported":
+            continue
+        path = folder / r.file
+        if path.exists():
+            try:
+                remap_log(path, table)
+            except InputError:
+                continue

@@ -7,6 +7,12 @@ included. Derived numbers (Tasks 6-15) are never stored: :meth:`Session.results`
 computes them from the entries and the chosen run with :mod:`minseg_tui.model.identify`,
 so changing an earlier entry changes every later result.
 
+The session holds the state and saves it; its parts are modules of their own:
+:mod:`~minseg_tui.lab.entries` (what was typed, read and revised),
+:mod:`~minseg_tui.lab.results` (Tasks 6-15, the table, the model check),
+:mod:`~minseg_tui.lab.runs` (recording and keeping runs), :mod:`~minseg_tui.lab.store`
+(the files on disk) and :mod:`~minseg_tui.lab.answers` (checking answers).
+
 Units: entries are stored as typed (``text``) and as parsed SI values (``value``: V, A,
 ohm, rad/s, s, ...); the form unit of each field is in :mod:`minseg_tui.lab.steps`.
 
@@ -27,7 +33,6 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -36,17 +41,27 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab import answers
 from minseg_tui.lab import steps as lab_steps
 from minseg_tui.lab.capture import DEFAULT_WINDOW, Capture, capture
-from minseg_tui.lab.entry import parse_quantity
+from minseg_tui.lab.entries import Entry, parsed_values, read_entry, revise
 from minseg_tui.lab.expr import Formula
 from minseg_tui.lab.files import read_step_log
+from minseg_tui.lab.results import (
+    Comparison,
+    ModelCheck,
+    Notice,
+    Results,
+    TableRow,
+    check_run,
+    compute,
+)
 from minseg_tui.lab.runs import (
     PARTIAL_SUFFIX,
     Recorder,
     RunInfo,
-    build_log,
-    read_partial,
-    remap_log,
-    write_log_atomic,
+    adopt,
+    import_log,
+    new_name,
+    remap_runs,
+    run_header,
 )
 from minseg_tui.lab.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
 from minseg_tui.lab.store import (
@@ -59,8 +74,7 @@ from minseg_tui.lab.store import (
     atomic_write_text,
     read_session_file,
 )
-from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.identify import Identification, Reading, identify
+from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog
 
 Clock = Callable[[], datetime]
@@ -70,184 +84,8 @@ def _now() -> datetime:
     return datetime.now(UTC)
 
 
-@dataclass(frozen=True)
-class Entry:
-    """What was typed in one field, and what it was read as.
-
-    key: the field's key; text: exactly as typed; ok: accepted; value: SI float for a
-    quantity (or a formula without names), tuple of option indices for a choice, None
-    otherwise; unit: the unit it was typed in; message: why it was refused, or a note on
-    how it was read (``read as 47 mA``); warnings: plausibility warnings; source: ``typed``,
-    ``capture`` or ``meter``; at: ISO time; history: earlier (text, at) pairs, oldest first.
-
-    A refused text never displaces an accepted one: the accepted entry stays in effect and
-    carries the refused attempt in ``refused`` (text, message, at) until something is
-    accepted again, so neither what was typed last nor what was entered before is lost.
-    """
-
-    key: str
-    text: str
-    ok: bool
-    value: float | tuple[int, ...] | None = None
-    unit: str = ""
-    message: str = ""
-    warnings: tuple[str, ...] = ()
-    source: str = "typed"
-    at: str = ""
-    history: tuple[tuple[str, str], ...] = ()
-    refused: tuple[str, str, str] | None = None
-
-    @property
-    def typed(self) -> str:
-        """What the field shows: the refused attempt if there is one, else the text in effect."""
-        return self.refused[0] if self.refused else self.text
-
-    def to_json(self) -> dict[str, Any]:
-        """JSON-ready dict (the session file's form)."""
-        out = {
-            "text": self.text,
-            "ok": self.ok,
-            "value": list(self.value) if isinstance(self.value, tuple) else self.value,
-            "unit": self.unit,
-            "message": self.message,
-            "warnings": list(self.warnings),
-            "source": self.source,
-            "at": self.at,
-            "history": [list(h) for h in self.history],
-        }
-        if self.refused:
-            out["refused"] = list(self.refused)
-        return out
-
-    @classmethod
-    def from_json(cls, key: str, d: Mapping[str, Any]) -> Entry:
-        """Inverse of :meth:`to_json`."""
-        v = d.get("value")
-        value: float | tuple[int, ...] | None = (
-            tuple(int(x) for x in v)
-            if isinstance(v, list)
-            else (float(v) if isinstance(v, int | float) else None)
-        )
-        return cls(
-            key=key,
-            text=str(d["text"]),
-            ok=bool(d["ok"]),
-            value=value,
-            unit=str(d.get("unit", "")),
-            message=str(d.get("message", "")),
-            warnings=tuple(str(w) for w in d.get("warnings", [])),
-            source=str(d.get("source", "typed")),
-            at=str(d.get("at", "")),
-            history=tuple((str(h[0]), str(h[1])) for h in d.get("history", [])),
-            refused=(str(d["refused"][0]), str(d["refused"][1]), str(d["refused"][2]))
-            if d.get("refused")
-            else None,
-        )
-
-
-@dataclass(frozen=True)
-class Notice:
-    """A warning to show: ``source`` is a field key or a finding code; ``message`` one line."""
-
-    source: str
-    message: str
-
-
-@dataclass(frozen=True)
-class TableRow:
-    """One row of the table of Tasks 4-9 (None where not known yet).
-
-    level: requested u_req (V); u_ss (V); omega_ss (rad/s); spread (rad/s, of the capture);
-    window: (t0, t1) s of the capture; i_ss (A); k_v (V s/rad); f (N m s/rad).
-    """
-
-    level: float
-    u_ss: float | None = None
-    omega_ss: float | None = None
-    spread: float | None = None
-    window: tuple[float, float] | None = None
-    i_ss: float | None = None
-    k_v: float | None = None
-    f: float | None = None
-
-
-@dataclass(frozen=True)
-class Results:
-    """Tasks 6-15 computed now from the entries: ``identification`` (None when the table is
-    not far enough), the run used for Tasks 11-15 (None without one), and ``problems``:
-    one line each for what keeps a result from being computed."""
-
-    identification: Identification | None
-    run: str | None
-    problems: tuple[str, ...] = ()
-
-    def to_json(self) -> dict[str, object] | None:
-        """The --json dict of ``minseg-tui identify`` for these results, or None."""
-        return self.identification.to_json() if self.identification else None
-
-    def lookup(self, path: str) -> float | str | None:
-        """A computed value by path (``k_v``, ``step.K``, ``step.T_63``, ``omega_at_5V``,
-        ``model`` as a sentence); None when not computed."""
-        d = self.to_json()
-        if d is None:
-            return None
-        if path == "model":
-            m = d.get("model")
-            if not isinstance(m, dict):
-                return None
-            return f"{m['T']:.3g} omega' = -omega + {m['K']:.3g} u_A"
-        node: object = d
-        for part in path.split("."):
-            if not isinstance(node, dict) or part not in node:
-                return None
-            node = node[part]
-        return float(node) if isinstance(node, int | float) else None
-
-
-@dataclass(frozen=True)
-class Comparison:
-    """A student's own reading beside the computed value (same SI unit; ``unit`` is the
-    form unit for display); rel_diff = own / computed - 1 when both are numbers."""
-
-    key: str
-    label: str
-    unit: str
-    own: float | str | None
-    computed: float | str | None
-    rel_diff: float | None
-
-
-@dataclass(frozen=True)
-class ModelCheck:
-    """The model check of one run: its name, the result (None when it could not run) and,
-    then, why in one line (``problem``)."""
-
-    run: str | None
-    result: CheckResult | None
-    problem: str = ""
-
-
 def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
-
-
-def _parse_choice(text: str, n: int) -> tuple[int, ...]:
-    """'b', 'B, c', '2', '2 3' -> option indices; ValueError if unreadable."""
-    parts = [p for p in re.split(r"[\s,;]+", text.strip()) if p]
-    out = []
-    for p in parts:
-        if len(p) == 1 and p.isalpha():
-            k = ord(p.lower()) - ord("a")
-        elif p.isdigit():
-            k = int(p) - 1
-        else:
-            raise ValueError(p)
-        if not 0 <= k < n:
-            raise ValueError(p)
-        out.append(k)
-    if not out:
-        raise ValueError(text)
-    return tuple(sorted(set(out)))
 
 
 class Session:
@@ -466,36 +304,22 @@ class Session:
         """Store ``text`` typed in field ``key`` (KeyError for an unknown key) and return the
         entry: accepted with its value, note and warnings, or refused with a one-line message.
         The text is kept either way; the session is saved before this returns."""
-        fld = FIELDS[key]
-        entry = self._read(fld, text)
-        old = self._entries.get(key)
-        at = self._clock().isoformat(timespec="seconds")
-        if not entry.ok and old is not None and old.ok:
-            # keep the accepted entry in effect; remember the refused attempt beside it
-            entry = replace(old, refused=(text, entry.message, at))
-            self._entries[key] = entry
-            self._changed()
-            return entry
-        history = (*old.history, (old.text, old.at)) if old is not None else ()
-        if old is not None and old.refused:
-            history = (*history, (old.refused[0], old.refused[2]))
-        entry = Entry(
-            key=key,
-            text=text,
-            ok=entry.ok,
-            value=entry.value,
-            unit=entry.unit,
-            message=entry.message,
-            warnings=entry.warnings,
-            source=source,
-            at=at,
-            history=history,
+        entry = revise(
+            self._entries.get(key),
+            read_entry(FIELDS[key], text),
+            source,
+            self._clock().isoformat(timespec="seconds"),
         )
         self._entries[key] = entry
-        if entry.ok and source != "capture" and key.startswith("omega_ss@"):
+        if (
+            entry.ok
+            and entry.refused is None
+            and source != "capture"
+            and key.startswith("omega_ss@")
+        ):
             self._captures.pop(key, None)
         self._changed()
-        if key.startswith("u_ss@"):
+        if key.startswith("u_ss@") and entry.refused is None:
             self._remap_runs()
         return entry
 
@@ -503,64 +327,9 @@ class Session:
         """Pick option indices (0-based) of a choice field; saved. Same as typing letters."""
         return self.enter(key, ", ".join(chr(ord("a") + k) for k in options))
 
-    def _read(self, fld: lab_steps.Field, text: str) -> Entry:
-        if fld.kind == "text":
-            return Entry(fld.key, text, ok=True)
-        if not text.strip() and fld.optional:
-            return Entry(fld.key, text, ok=True)
-        try:
-            if fld.kind == "quantity":
-                p = parse_quantity(
-                    text,
-                    fld.unit,
-                    label=fld.label,
-                    allow_negative=fld.allow_negative,
-                    allow_zero=fld.allow_zero,
-                )
-                warnings = tuple(w for rule in fld.plausible for w in rule.warnings(p.value))
-                return Entry(
-                    fld.key,
-                    text,
-                    ok=True,
-                    value=p.value,
-                    unit=p.unit,
-                    message=p.note,
-                    warnings=warnings,
-                )
-            if fld.kind == "formula":
-                f = answers.read_formula(fld, text)
-                value = f.value({}) if not fld.names else None
-                return Entry(fld.key, text, ok=True, value=value)
-            try:
-                chosen = _parse_choice(text, len(fld.options))
-            except ValueError:
-                letters = "/".join(chr(ord("a") + k) for k in range(len(fld.options)))
-                raise InputError(
-                    fld.label,
-                    None,
-                    f"expected {'one or more of' if fld.multiple else 'one of'} {letters}; got {text.strip()!r}",
-                ) from None
-            if len(chosen) > 1 and not fld.multiple:
-                raise InputError(fld.label, None, f"expected one answer; got {len(chosen)}")
-            return Entry(fld.key, text, ok=True, value=chosen)
-        except InputError as exc:
-            return Entry(fld.key, text, ok=False, message=str(exc))
-
     def parsed(self) -> dict[str, object]:
         """Accepted values by key, as checks use them (floats, Formulas, option tuples)."""
-        out: dict[str, object] = {}
-        for key, e in self._entries.items():
-            if not e.ok or key not in FIELDS:
-                continue
-            fld = FIELDS[key]
-            if fld.kind == "formula":
-                try:
-                    out[key] = answers.read_formula(fld, e.text)
-                except InputError:
-                    continue
-            elif e.value is not None:
-                out[key] = e.value
-        return out
+        return parsed_values(self._entries)
 
     def feedback(self, step_id: str | None = None) -> list[Feedback]:
         """The verdict on every checked field of ``step_id`` (default: the current step), or of
@@ -673,40 +442,7 @@ class Session:
         return res
 
     def _compute(self) -> Results:
-        problems: list[str] = []
-        R = self.value("R")
-        if R is None:
-            problems.append("R is not entered yet (Task 2)")
-        readings = []
-        for r in self.readings():
-            why = r.problem()
-            if why:
-                problems.append(f"row {r.u_req:g} V left out: {why}")
-            else:
-                readings.append(r)
-        if not readings:
-            problems.append("no complete row in the table yet (u_ss, omega_ss and i_ss; Tasks 4-5)")
-        run = self.step_run()
-        log: StepLog | None = None
-        if run is not None:
-            try:
-                log = read_step_log(self.folder / run.file)
-            except InputError as exc:
-                problems.append(f"run {run.name} cannot be used: {exc}")
-        if R is None or not readings:
-            return Results(None, run.name if run and log else None, tuple(problems))
-        try:
-            ident = identify(readings, R, log, source="table")
-        except InputError as exc:
-            if log is None:
-                return Results(None, None, (*problems, str(exc)))
-            problems.append(f"run {run.name if run else ''} gives no step result: {exc}")
-            try:
-                ident = identify(readings, R, None, source="table")
-            except InputError as exc2:
-                return Results(None, None, (*problems, str(exc2)))
-            return Results(ident, None, tuple(problems))
-        return Results(ident, run.name if (run and log is not None) else None, tuple(problems))
+        return compute(self.value("R"), self.readings(), self.step_run(), self.folder)
 
     def model_check(self, name: str | None = None) -> ModelCheck:
         """The model check (:func:`minseg_tui.model.check.check`) of run ``name`` (default: the
@@ -727,13 +463,7 @@ class Session:
         cached = self._checks.get(key)
         if cached is not None:
             return cached
-        try:
-            log = read_step_log(self.folder / run.file)
-            result = ModelCheck(run.name, check(log.t, log.u, log.omega, ts=run.ts))
-        except InputError as exc:
-            result = ModelCheck(run.name, None, str(exc))
-        except ValueError as exc:
-            result = ModelCheck(run.name, None, f"run {run.name}: {exc}")
+        result = check_run(self.folder, run)
         self._checks = {key: result}
         return result
 
@@ -812,13 +542,7 @@ class Session:
         self._changed()
 
     def _new_name(self, kind: str) -> str:
-        taken = {r.name for r in self._runs} | {
-            p.name.split(".")[0] for p in (self.folder / RUNS_DIR).iterdir()
-        }
-        k = 1
-        while f"{kind}-{k}" in taken:
-            k += 1
-        return f"{kind}-{k}"
+        return new_name(self.folder, kind, (r.name for r in self._runs))
 
     def start_run(
         self,
@@ -833,17 +557,15 @@ class Session:
             raise InputError(str(self.folder), None, "this session was opened read-only")
         name = self._new_name(kind)
         ts_ = ts if ts is not None else (plan.ts if plan else 0.025)
-        header = {
-            "name": name,
-            "kind": kind,
-            "ts": ts_,
-            "started": self._clock().isoformat(timespec="seconds"),
-            "plan": {
-                k: float(getattr(plan, k)) for k in ("low", "high", "half_period", "periods", "ts")
-            }
+        header = run_header(
+            name,
+            kind,
+            ts_,
+            self._clock().isoformat(timespec="seconds"),
+            {k: float(getattr(plan, k)) for k in ("low", "high", "half_period", "periods", "ts")}
             if plan
-            else {},
-        }
+            else None,
+        )
         kwargs = {} if flush_interval is None else {"flush_interval": flush_interval}
         return Recorder(self.folder / RUNS_DIR / f"{name}{PARTIAL_SUFFIX}", header, **kwargs)
 
@@ -860,30 +582,15 @@ class Session:
         recorder.path.unlink(missing_ok=True)
 
     def _adopt(self, partial: Path, interrupted: bool) -> RunInfo | None:
-        raw = read_partial(partial)
         name = partial.name[: -len(PARTIAL_SUFFIX)]
-        if any(r.name == name for r in self._runs):
-            partial.unlink(missing_ok=True)
-            return None
-        if raw.seq.size < 2:
-            partial.unlink(missing_ok=True)
-            return None
-        ts = float(raw.header.get("ts", 0.025))  # type: ignore[arg-type]
-        log, dropped = build_log(raw, self.table_pairs(), ts)
-        file = f"{RUNS_DIR}/{name}.csv"
-        write_log_atomic(self.folder / file, log)
-        plan = raw.header.get("plan") or {}
-        info = RunInfo(
-            name=name,
-            file=file,
-            kind=str(raw.header.get("kind", "free")),
-            ts=ts,
-            samples=len(log),
-            dropped=dropped,
-            started=str(raw.header.get("started", "")),
-            interrupted=interrupted,
-            plan={str(k): float(v) for k, v in dict(plan).items()},  # type: ignore[call-overload]
+        info = (
+            None
+            if any(r.name == name for r in self._runs)
+            else adopt(self.folder, partial, self.table_pairs(), interrupted)
         )
+        if info is None:
+            partial.unlink(missing_ok=True)
+            return None
         self._runs.append(info)
         self._run_version += 1
         self._changed()
@@ -899,27 +606,11 @@ class Session:
     def import_run(self, path: Path) -> RunInfo:
         """Copy a step log recorded elsewhere into runs/ (checked by read_step_log; InputError
         with file and line if it is not one) for the model check and Tasks 11-15."""
-        log = read_step_log(Path(path))
-        name = self._new_name("imported")
-        file = f"{RUNS_DIR}/{name}.csv"
-        write_log_atomic(
-            self.folder / file,
-            StepLog(
-                t=log.t,
-                u=log.u,
-                omega=log.omega,
-                extra=log.extra,
-                metadata={**log.metadata, "imported_from": str(path)},
-            ),
-        )
-        info = RunInfo(
-            name=name,
-            file=file,
-            kind="imported",
-            ts=log.ts,
-            samples=len(log),
-            dropped=0,
-            started=self._clock().isoformat(timespec="seconds"),
+        info = import_log(
+            self.folder,
+            Path(path),
+            self._new_name("imported"),
+            self._clock().isoformat(timespec="seconds"),
         )
         self._runs.append(info)
         self._run_version += 1
@@ -927,16 +618,7 @@ class Session:
         return info
 
     def _remap_runs(self) -> None:
-        table = self.table_pairs()
-        for r in self._runs:
-            if r.kind == "imported":
-                continue
-            path = self.folder / r.file
-            if path.exists():
-                try:
-                    remap_log(path, table)
-                except InputError:
-                    continue
+        remap_runs(self.folder, self._runs, self.table_pairs())
         self._run_version += 1
 
 
