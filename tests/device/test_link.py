@@ -7,7 +7,8 @@ import pytest
 
 from minseg_tui.device import protocol as P
 from minseg_tui.device.factory import open_device
-from minseg_tui.device.link import Link, SampleBatch, motion
+from minseg_tui.device.link import Link
+from minseg_tui.device.samples import SampleBatch, motion
 from minseg_tui.device.virtual import named_board
 from minseg_tui.errors import DeviceError, InputError
 from minseg_tui.units import RAD_PER_COUNT
