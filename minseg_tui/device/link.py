@@ -20,8 +20,9 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   samples already received stay; the link reopens the same path (or the same USB
   VID:PID elsewhere) by itself, re-handshakes, restores the sample period, supply and
   zero mode (never the motor voltage) and says ``connected``.
-- One program per board: an exclusive open (flock) and a lock file naming the program
-  and pid, so a second program gets "in use by minseg-tui (pid N)".
+- One program per board: the port's lock file (:mod:`minseg_tui.lock`, naming the program
+  and pid, so a second minseg-tui gets "in use by minseg-tui (pid N)") and an exclusive
+  open of the port.
 - Keep-alive: a PING every ``keepalive_s`` (0.25 s), so the board's 1 s watchdog stays
   quiet while the host lives.
 """
@@ -37,6 +38,7 @@ import time
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import serial
@@ -46,6 +48,7 @@ from minseg_tui.device import discovery
 from minseg_tui.device import protocol as P
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.errors import DeviceError, InputError
+from minseg_tui.lock import FileLock, LockHeld
 from minseg_tui.model.plant import MeterReading
 
 U32 = 2**32
@@ -94,22 +97,13 @@ class _Waiter:
 
 # -- lock files: who holds a port --------------------------------------------------------
 def lock_path(port: str) -> str:
-    """The lock file for a port (in XDG_RUNTIME_DIR or the temp dir)."""
-    real = port if "://" in port else os.path.realpath(port)
+    """The lock file of a device path (in XDG_RUNTIME_DIR or the temp dir), named after the
+    path with symlinks resolved, so two names of one port share one lock."""
+    real = os.path.realpath(port)
     base = os.environ.get("XDG_RUNTIME_DIR") or tempfile.gettempdir()
     return os.path.join(
         base, "minseg-tui-" + re.sub(r"[^A-Za-z0-9]+", "_", real).strip("_") + ".lock"
     )
-
-
-def _holder(port: str) -> str:
-    try:
-        with open(lock_path(port)) as fh:
-            prog, pid = fh.read().split()[:2]
-        os.kill(int(pid), 0)
-        return f"{prog} (pid {int(pid)})"
-    except (OSError, ValueError):
-        return "another program"
 
 
 def _proto_of(line: str) -> tuple[str, int] | None:
@@ -153,6 +147,7 @@ class Link:
         self.ident: P.Ident | None = None
         self.stats = LinkStats()
         self._ser: Any = None
+        self._port_files: dict[Any, FileLock] = {}  # the lock file of each open port
         self._port_lock = threading.Lock()
         self._lock = threading.Lock()
         self._rows: deque[tuple[int, int, int, int, int, float]] = deque(maxlen=capacity)
@@ -221,22 +216,40 @@ class Link:
         return self._ser is not None
 
     def _open_port(self, port: str) -> Any:
+        """Take the port's lock file (a device path; a pyserial URL's handler keeps its own
+        one-link rule), then open the port exclusively."""
+        lock = None
+        if "://" not in port:
+            lock = FileLock(Path(lock_path(port)), self.program)
+            try:
+                lock.acquire()
+            except LockHeld as exc:
+                raise DeviceError(
+                    f"{port} is in use by {exc.holder}: close that program first "
+                    "(one program per board)"
+                ) from None
+            except OSError:
+                lock = None  # no writable runtime folder: the exclusive open still guards
         try:
             ser = serial.serial_for_url(
                 port, baudrate=self.baud, timeout=0.05, write_timeout=1.0, exclusive=True
             )
         except SerialException as exc:
+            if lock is not None:
+                lock.release()
             text = str(exc)
             if "lock" in text.lower() or "busy" in text.lower():
                 raise DeviceError(
-                    f"{port} is in use by {_holder(port)}: close that program first "
+                    f"{port} is in use by another program: close that program first "
                     "(one program per board)"
                 ) from None
             raise DeviceError(f"cannot open {port}: {text}") from None
         except (OSError, ValueError) as exc:
+            if lock is not None:
+                lock.release()
             raise DeviceError(f"cannot open {port}: {exc}") from None
-        with contextlib.suppress(OSError), open(lock_path(port), "w") as fh:
-            fh.write(f"{self.program} {os.getpid()}\n")
+        if lock is not None:
+            self._port_files[ser] = lock
         clock = getattr(ser, "board_clock", None)
         self._clock = clock if callable(clock) else time.monotonic
         if self.board is None and hasattr(ser, "board"):
@@ -246,14 +259,9 @@ class Link:
     def _close_port(self, ser: Any) -> None:
         with contextlib.suppress(Exception):
             ser.close()
-        path = lock_path(self.port)
-        try:
-            with open(path) as fh:
-                mine = fh.read().split()[1:2] == [str(os.getpid())]
-            if mine:
-                os.unlink(path)
-        except OSError:
-            pass
+        lock = self._port_files.pop(ser, None)
+        if lock is not None:
+            lock.release()
 
     # -- the handshake --------------------------------------------------------------------
     def _read_lines(self, ser: Any, until: float, want: Callable[[str], bool]) -> str | None:

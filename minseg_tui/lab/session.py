@@ -69,11 +69,12 @@ from minseg_tui.lab.store import (
     RUNS_DIR,
     SCHEMA,
     SESSION_FILE,
-    Lock,
     SessionDamaged,
     atomic_write_text,
     read_session_file,
+    take_lock,
 )
+from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog
 
@@ -96,7 +97,13 @@ class Session:
     """
 
     def __init__(
-        self, folder: Path, data: dict[str, Any], *, lock: Lock | None, clock: Clock, readonly: bool
+        self,
+        folder: Path,
+        data: dict[str, Any],
+        *,
+        lock: FileLock | None,
+        clock: Clock,
+        readonly: bool,
     ) -> None:
         self.folder = Path(folder)
         self._data = data
@@ -149,8 +156,7 @@ class Session:
             sid = f"{base}-{k}"
         folder = root / sid
         (folder / RUNS_DIR).mkdir(parents=True)
-        lock = Lock(folder)
-        lock.acquire()
+        lock = take_lock(folder)
         stamp = now.isoformat(timespec="seconds")
         data: dict[str, Any] = {
             "kind": KIND,
@@ -180,8 +186,7 @@ class Session:
         if not readonly:
             if not (folder / SESSION_FILE).exists():
                 read_session_file(folder / SESSION_FILE)  # raises SessionMissing
-            lock = Lock(folder)
-            lock.acquire()
+            lock = take_lock(folder)
         try:
             data = read_session_file(folder / SESSION_FILE)
             if data["current_step"] not in STEP_INDEX:

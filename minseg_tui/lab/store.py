@@ -2,8 +2,8 @@
 
 A session is a folder ``<sessions>/<id>/`` holding ``session.json`` (what the group
 entered; schema :data:`SCHEMA`), ``runs/<name>.csv`` (recorded runs as step logs),
-``runs/<name>.partial`` while a run is being recorded, ``lock`` (the pid of the program
-that has it open) and the reports.
+``runs/<name>.partial`` while a run is being recorded, ``lock`` (locked by the program
+that has it open, :mod:`minseg_tui.lock`) and the reports.
 
 Every write of a whole file goes to a temporary file in the same folder, is flushed and
 fsynced, replaces the old file with ``os.replace`` and then the folder is fsynced: a crash
@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from minseg_tui.errors import InputError, MinsegError
+from minseg_tui.lock import FileLock, LockHeld, holder
 
 SCHEMA: int = 1
 """Version of session.json's layout; a file with another version is refused."""
@@ -167,65 +168,24 @@ def schema_problem(data: object) -> str | None:
 # -- the lock ----------------------------------------------------------------------------------
 
 
-def _alive(pid: int) -> bool:
-    if pid <= 0:
-        return False
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
-
-
 def lock_owner(folder: Path) -> int | None:
-    """pid of the live program holding the session in ``folder``, or None (no or stale lock)."""
+    """pid of the live program holding the session in ``folder``, or None (nobody holds it;
+    a lock file a dead program left is nobody's)."""
+    who = holder(Path(folder) / LOCK_FILE)
+    return who.pid if who is not None else None
+
+
+def take_lock(folder: Path) -> FileLock:
+    """The session's lock (:class:`minseg_tui.lock.FileLock` on ``<folder>/lock``), taken;
+    SessionLocked naming the program that has it open."""
+    lock = FileLock(Path(folder) / LOCK_FILE)
     try:
-        pid = int((Path(folder) / LOCK_FILE).read_text().split()[0])
-    except (OSError, ValueError, IndexError):
-        return None
-    return pid if _alive(pid) else None
-
-
-class Lock:
-    """One program per session: ``lock`` holds the owner's pid; a dead owner's lock is taken over."""
-
-    def __init__(self, folder: Path) -> None:
-        self.path = Path(folder) / LOCK_FILE
-        self.held = False
-
-    def acquire(self) -> None:
-        """Take the lock or raise SessionLocked naming the pid that holds it."""
-        for _ in range(3):
-            try:
-                fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644)
-            except FileExistsError:
-                owner = lock_owner(self.path.parent)
-                if owner is not None:
-                    raise SessionLocked(
-                        f"session {self.path.parent.name} is open in another minseg-tui (pid {owner}); "
-                        f"close that one first (if none is running, delete {self.path})"
-                    ) from None
-                with contextlib.suppress(FileNotFoundError):
-                    os.unlink(self.path)  # stale: its owner is gone
-                continue
-            try:
-                os.write(fd, f"{os.getpid()}\n".encode())
-                os.fsync(fd)
-            finally:
-                os.close(fd)
-            self.held = True
-            return
-        raise SessionLocked(f"could not take the lock {self.path}; try again")
-
-    def release(self) -> None:
-        """Give the lock back (only if this program holds it)."""
-        if self.held:
-            with contextlib.suppress(OSError):
-                if self.path.read_text().split()[0] == str(os.getpid()):
-                    os.unlink(self.path)
-            self.held = False
+        lock.acquire()
+    except LockHeld as exc:
+        raise SessionLocked(
+            f"session {Path(folder).name} is open in {exc.holder}; close it there first"
+        ) from None
+    return lock
 
 
 # -- listing -----------------------------------------------------------------------------------
