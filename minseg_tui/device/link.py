@@ -21,8 +21,11 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   VID:PID elsewhere) by itself, re-handshakes, restores the sample period, supply and
   zero mode (never the motor voltage) and says ``connected``.
 - One program per board: the port's lock file (:mod:`minseg_tui.lock`, naming the program
-  and pid, so a second minseg-tui gets "in use by minseg-tui (pid N)") and an exclusive
-  open of the port.
+  and pid, so a second minseg-tui gets "in use by minseg-tui (pid N)"), pyserial's
+  ``exclusive=True`` (a flock on the device, for programs that ask) and the tty's
+  exclusive mode (TIOCEXCL: a plain serial monitor's open fails with EBUSY). A pty is a
+  tty like a USB port and gets all three; a ``minseg://`` URL has no device: its handler
+  lets one link at a time attach to a board.
 - Keep-alive: a PING every ``keepalive_s`` (0.25 s), so the board's 1 s watchdog stays
   quiet while the host lives.
 """
@@ -30,9 +33,11 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
 from __future__ import annotations
 
 import contextlib
+import fcntl
 import os
 import re
 import tempfile
+import termios
 import threading
 import time
 from collections import deque
@@ -104,6 +109,23 @@ def lock_path(port: str) -> str:
     return os.path.join(
         base, "minseg-tui-" + re.sub(r"[^A-Za-z0-9]+", "_", real).strip("_") + ".lock"
     )
+
+
+def _exclusive_tty(ser: Any, on: bool) -> None:
+    """Put the tty behind ``ser`` in exclusive mode (TIOCEXCL: any further open(2) of it
+    fails with EBUSY, a plain serial monitor's included; only a program with
+    CAP_SYS_ADMIN gets past it) or back (TIOCNXCL). pyserial's ``exclusive=True`` is a
+    flock, which only programs that ask for one respect. Nothing to do for a pyserial URL
+    (its handler decides) or where the OS has no such mode."""
+    try:
+        fd = ser.fileno()
+    except (AttributeError, OSError, ValueError, SerialException):
+        return
+    request = getattr(termios, "TIOCEXCL" if on else "TIOCNXCL", None)
+    if request is None or not isinstance(fd, int) or not os.isatty(fd):
+        return
+    with contextlib.suppress(OSError):
+        fcntl.ioctl(fd, request)
 
 
 def _proto_of(line: str) -> tuple[str, int] | None:
@@ -250,6 +272,7 @@ class Link:
             raise DeviceError(f"cannot open {port}: {exc}") from None
         if lock is not None:
             self._port_files[ser] = lock
+        _exclusive_tty(ser, True)
         clock = getattr(ser, "board_clock", None)
         self._clock = clock if callable(clock) else time.monotonic
         if self.board is None and hasattr(ser, "board"):
@@ -257,6 +280,7 @@ class Link:
         return ser
 
     def _close_port(self, ser: Any) -> None:
+        _exclusive_tty(ser, False)
         with contextlib.suppress(Exception):
             ser.close()
         lock = self._port_files.pop(ser, None)

@@ -1,6 +1,7 @@
 """The link against the virtual MinSeg: over the pyserial URL and over a real pty."""
 
 import os
+import subprocess
 
 import numpy as np
 import pytest
@@ -191,3 +192,37 @@ def test_motion_by_hand():
     assert mo.omega == pytest.approx([0, 10 * w / 0.025, 20 * w / 0.025, 0, 4 * w / 0.02])
     tail = motion(SampleBatch.from_rows(rows[2:3]), before=SampleBatch.from_rows(rows[:2]))
     assert tail.omega == pytest.approx([20 * w / 0.025])
+
+
+def _as_plain_user() -> None:
+    """preexec_fn: a root test run opens the port as nobody (root may bypass TIOCEXCL)."""
+    if os.geteuid() == 0:
+        os.setgroups([])
+        os.setgid(65534)
+        os.setuid(65534)
+
+
+def _plain_open(path: str) -> str:
+    """What a plain serial monitor gets opening ``path``: 'opened' or the shell's error."""
+    done = subprocess.run(
+        ["/bin/sh", "-c", 'exec 3<>"$1" && echo opened', "sh", path],
+        capture_output=True,
+        text=True,
+        timeout=20,
+        preexec_fn=_as_plain_user,
+    )
+    return (done.stdout + done.stderr).strip()
+
+
+def test_a_plain_serial_monitor_cannot_open_a_port_the_link_holds(pty_server):
+    if os.geteuid() == 0:  # let the plain user reach the pty at all
+        os.chmod(pty_server.slave_name, 0o666)
+    assert _plain_open(pty_server.slave_name) == "opened"  # the control: a free port opens
+    link = Link(pty_server.slave_name, retry_s=0.02)
+    link.open()
+    try:
+        got = _plain_open(pty_server.slave_name)
+        assert "opened" not in got and "busy" in got.lower(), got
+    finally:
+        link.close()
+    assert wait_for(lambda: _plain_open(pty_server.slave_name) == "opened")  # free again
