@@ -7,8 +7,9 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   once as a :class:`~minseg_tui.device.samples.SampleBatch` (numpy arrays). The buffer is
   bounded (``capacity``); if nobody takes samples for that long the oldest go and
   ``stats.overflow`` counts them.
-- A corrupt line (bad checksum or format) is counted in ``stats.corrupt`` and dropped; a
-  gap in ``seq`` is counted in ``stats.dropped``. Neither ever becomes a sample.
+- A corrupt line (bad checksum or format, or a sample whose seq or time no real gap
+  explains: :mod:`minseg_tui.device.timebase`) is counted in ``stats.corrupt`` and
+  dropped; a gap in ``seq`` is counted in ``stats.dropped``. Neither ever becomes a sample.
 - ``seq`` and ``t_us`` are unwrapped (uint32 on the wire, int64 here). Each connection
   (the board resets when the port opens) is an *epoch*: across epochs seq continues at
   +1 and t_us continues by the host's estimate of the gap (the one place the host clock
@@ -52,11 +53,11 @@ from serial.serialutil import SerialException
 from minseg_tui.device import discovery
 from minseg_tui.device import protocol as P
 from minseg_tui.device.samples import SampleBatch
+from minseg_tui.device.timebase import Timeline
 from minseg_tui.errors import DeviceError, InputError
 from minseg_tui.lock import FileLock, LockHeld
 from minseg_tui.model.plant import MeterReading
 
-U32 = 2**32
 EVENT_KINDS = (
     "connected",
     "disconnected",
@@ -179,9 +180,8 @@ class Link:
         self._closing = threading.Event()
         self._thread: threading.Thread | None = None
         self._clock: Callable[[], float] = time.monotonic
-        self._epoch = -1
-        self._raw: tuple[int, int] | None = None
-        self._last: tuple[int, int, float] | None = None  # last (seq, t_us, t_host) kept
+        self._timeline = Timeline()
+        self._bad_lines = 0  # lines that failed the checksum or the format
         self._last_rx = 0.0
         self._last_tx = 0.0
         self._silent = False
@@ -496,6 +496,7 @@ class Link:
                         continue
                     self._on_line(line)
                 if len(buf) > P.MAX_LINE + 1:
+                    self._bad_lines += 1
                     self.stats.corrupt += 1
                     buf.clear()
                     skipping = True
@@ -511,6 +512,7 @@ class Link:
             msg = P.parse(raw)
         except P.ProtocolError:
             if raw.strip(b"\r"):
+                self._bad_lines += 1
                 self.stats.corrupt += 1
             return
         self._last_rx = self._clock()
@@ -552,37 +554,21 @@ class Link:
             target.done.set()
 
     def _new_epoch(self) -> None:
-        self._epoch += 1
-        self._raw = None
+        self._timeline.new_epoch()
 
     def _on_sample(self, s: P.SampleLine) -> None:
-        t_host = time.monotonic()
-        if self._raw is not None:
-            dseq = (s.seq - self._raw[0]) % U32
-            if dseq == 0 or dseq >= U32 // 2:  # a repeat or a jump back: a reset we missed
-                if dseq == 0:
-                    self.stats.corrupt += 1
-                    return
-                self._new_epoch()
-        if self._raw is None:
-            if self._last is None:
-                seq, t_us = s.seq, s.t_us
-            else:
-                gap = max(round((t_host - self._last[2]) * 1e6), 1)
-                seq, t_us = self._last[0] + 1, self._last[1] + gap
-        else:
-            assert self._last is not None
-            dseq = (s.seq - self._raw[0]) % U32
-            self.stats.dropped += dseq - 1
-            seq = self._last[0] + dseq
-            t_us = self._last[1] + (s.t_us - self._raw[1]) % U32
-        self._raw = (s.seq, s.t_us)
-        self._last = (seq, t_us, t_host)
+        tl = self._timeline
+        rows = tl.place(s, self._clock(), time.monotonic())
+        self.stats.dropped = tl.dropped
+        self.stats.corrupt = self._bad_lines + tl.refused + tl.repeated
+        if not rows:
+            return
         with self._lock:
-            if len(self._rows) == self._rows.maxlen:
-                self.stats.overflow += 1
-            self._rows.append((seq, t_us, s.count, s.u_mV, self._epoch, t_host))
-        self.stats.samples += 1
+            for row in rows:
+                if len(self._rows) == self._rows.maxlen:
+                    self.stats.overflow += 1
+                self._rows.append(row)
+        self.stats.samples += len(rows)
 
     # -- losing and finding the board -----------------------------------------------------
     def _fail_waiters(self) -> None:
