@@ -19,8 +19,11 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   ``on_event`` to hear them at once (called from the reader thread: keep it short).
 - A pulled cable (OSError/SerialException) gives a ``disconnected`` event at once; the
   samples already received stay; the link reopens the same path (or the same USB
-  VID:PID elsewhere) by itself, re-handshakes, restores the sample period, supply and
-  zero mode (never the motor voltage) and says ``connected``.
+  VID:PID elsewhere) by itself, re-handshakes, sends STOP, restores the sample period,
+  supply and zero mode and says ``connected``. The motor voltage is never restored (the
+  safe default is motor off): :attr:`Link.u_req` becomes 0 and, if the motor was on, a
+  ``motor`` event says so in one line, for the status line. A ``$BOOT`` mid-stream (the
+  board restarted by itself) does the same.
 - One program per board: the port's lock file (:mod:`minseg_tui.lock`, naming the program
   and pid, so a second minseg-tui gets "in use by minseg-tui (pid N)"), pyserial's
   ``exclusive=True`` (a flock on the device, for programs that ask) and the tty's
@@ -68,6 +71,7 @@ EVENT_KINDS = (
     "stepdone",
     "boot",
     "error",
+    "motor",
 )
 FLASH_HINT = "flash the firmware shipped with this minseg-tui (make -C firmware upload)"
 
@@ -177,6 +181,8 @@ class Link:
         self._events: deque[LinkEvent] = deque(maxlen=10000)
         self._waiters: deque[_Waiter] = deque()
         self._restore: dict[str, str] = {}
+        self._u_req: float | None = 0.0  # V as the host knows it; None: a step sequence runs
+        self._step_low = 0.0  # V, where a step sequence ends
         self._closing = threading.Event()
         self._thread: threading.Thread | None = None
         self._clock: Callable[[], float] = time.monotonic
@@ -378,6 +384,35 @@ class Link:
             raise DeviceError(f"{self.port}: the board was disconnected before it answered {name}")
         return waiter.reply
 
+    def _note_motor(self, ok: P.Ok) -> None:
+        """Follow the requested voltage through the board's replies (V, STEP, STOP), in the
+        reader thread, so a watchdog or restart that comes after a reply wins."""
+        if ok.command == "V" and ok.values:
+            self._u_req = int(ok.values[0]) / 1000.0
+        elif ok.command == "STEP" and ok.values:
+            self._u_req, self._step_low = None, int(ok.values[0]) / 1000.0
+        elif ok.command == "STOP":
+            self._u_req = 0.0
+
+    @property
+    def u_req(self) -> float | None:
+        """The voltage (V) the motor is requested at, as far as the link knows: what the last
+        V asked for, 0 after STOP, the board's watchdog or a restart (a reconnect restores
+        no voltage), None while a board-timed step sequence runs."""
+        return self._u_req
+
+    def _motor_off(self, why: str) -> None:
+        """The board restarted (``why``): its motor is off. Say so if it was not."""
+        was, self._u_req = self._u_req, 0.0
+        if was == 0.0:
+            return
+        before = "running a step sequence" if was is None else f"at {was:g} V"
+        self._emit(
+            "motor",
+            f"motor off after {why}: it was {before} before; nothing is restored, "
+            "set the voltage again",
+        )
+
     def _drop_waiter(self, waiter: _Waiter) -> None:
         with self._lock, contextlib.suppress(ValueError):
             self._waiters.remove(waiter)
@@ -524,17 +559,21 @@ class Link:
         elif isinstance(msg, P.Ok | P.Err | P.Ident | P.Meter):
             self._on_reply(msg)
         elif isinstance(msg, P.EvWatchdog):
+            self._u_req = 0.0
             self._emit("watchdog", "the board's watchdog stopped the motor (host silent > 1 s)")
         elif isinstance(msg, P.EvStep):
             self._emit("step", f"step edge {msg.k} of {msg.n}")
         elif isinstance(msg, P.EvStepDone):
+            self._u_req = self._step_low
             self._emit("stepdone", "step sequence done")
         elif isinstance(msg, P.Boot):
             self._new_epoch()
             self._emit("boot", f"{self.port}: the board restarted ({msg.fw})")
+            self._motor_off("the board's restart")
 
     def _on_reply(self, msg: P.Message) -> None:
         if isinstance(msg, P.Ok):
+            self._note_motor(msg)  # here, in order with the board's events
             name = msg.command
         elif isinstance(msg, P.Ident):
             name = "ID"
@@ -617,12 +656,14 @@ class Link:
             self._new_epoch()
             with self._port_lock:
                 self._ser = ser
-            for line in self._restore.values():
+            # motor off whatever the board did meanwhile; then period, supply, zero mode, stream
+            for line in (P.encode(P.Stop()).decode().strip(), *self._restore.values()):
                 with contextlib.suppress(SerialException, OSError, DeviceError):
                     self._write((line + "\n").encode())
             self.stats.reconnects += 1
             self._silent = False
             self._emit("connected", f"{path}: reconnected to {ident.board} {ident.fw}")
+            self._motor_off("the reconnect")
             return
         if mismatch is not None:  # only a board with another protocol answered: say so, stop
             self._gave_up = True

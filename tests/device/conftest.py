@@ -16,8 +16,10 @@ import serial
 
 import minseg_tui.device  # noqa: F401  (registers minseg://)
 from minseg_tui.device import protocol as P
+from minseg_tui.device.factory import open_device
+from minseg_tui.device.link import Link
 from minseg_tui.device.ptyserver import PtyServer
-from minseg_tui.device.virtual import forget_board
+from minseg_tui.device.virtual import VirtualBoard, forget_board, named_board, settings_from
 
 GOLDEN = Path(__file__).resolve().parents[2] / "firmware" / "golden" / "lines.txt"
 _names = itertools.count()
@@ -150,3 +152,62 @@ def scripted():
     board = ScriptedBoard()
     yield board
     board.close()
+
+
+class Rig:
+    """One virtual MinSeg behind a real serial path: a pty served in real time
+    (:class:`PtyServer`, ``kind="pty"``) or the ``minseg://`` URL with the virtual clock
+    (``kind="url"``). The same device tests run on both (as TCLab's run on TCLab and
+    TCLabModel): ``open()`` gives a Link through the factory, ``board`` is the board,
+    ``unplug()``/``replug()`` pull and plug the cable."""
+
+    def __init__(self, kind: str, name: str, folder: Path, options: dict[str, object]) -> None:
+        self.kind = kind
+        settings = settings_from(options)
+        self.server: PtyServer | None = None
+        if kind == "pty":
+            self.board = VirtualBoard(settings)
+            self.server = PtyServer(self.board, link_path=str(folder / f"{name}.tty")).start()
+            self.port = self.server.path
+        else:
+            self.board = named_board(name, settings)
+            self.port = f"minseg://{name}?clock=virtual"
+
+    def open(self, **link_options: object) -> Link:
+        """A Link to the board, opened and handshaken (options as for :class:`Link`)."""
+        return open_device(self.port, **link_options)
+
+    def unplug(self) -> None:
+        """Pull the cable."""
+        if self.server is not None:
+            self.server.unplug()
+        else:
+            self.board.unplug()
+
+    def replug(self) -> None:
+        """Plug it back in."""
+        if self.server is not None:
+            self.server.replug()
+        else:
+            self.board.replug()
+
+    def stop(self) -> None:
+        if self.server is not None:
+            self.server.stop()
+
+
+@pytest.fixture(params=["pty", "url"])
+def make_rig(request, tmp_path):
+    """``make_rig(**board_options)``: a :class:`Rig` of the parametrised kind."""
+    made: list[tuple[Rig, str]] = []
+
+    def make(**options: object) -> Rig:
+        name = f"rig{next(_names)}"
+        rig = Rig(request.param, name, tmp_path, options)
+        made.append((rig, name))
+        return rig
+
+    yield make
+    for rig, name in made:
+        rig.stop()
+        forget_board(name)
