@@ -1,7 +1,7 @@
 """One program at a time: an exclusive OS lock on a file, held while the file stays open.
 
 The one lock of minseg-tui, for a session folder (``<session>/lock``) and for a serial
-port (a lock file named after the port, see :func:`minseg_tui.device.link.lock_path`).
+port (a lock file named after the port, see :func:`minseg_tui.device.port.lock_path`).
 
 Taking it is ``flock(LOCK_EX | LOCK_NB)`` on the opened file: one atomic step in the
 kernel, so of any number of programs trying at once exactly one gets it. The kernel lets

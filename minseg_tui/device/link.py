@@ -24,12 +24,8 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   safe default is motor off): :attr:`Link.u_req` becomes 0 and, if the motor was on, a
   ``motor`` event says so in one line, for the status line. A ``$BOOT`` mid-stream (the
   board restarted by itself) does the same.
-- One program per board: the port's lock file (:mod:`minseg_tui.lock`, naming the program
-  and pid, so a second minseg-tui gets "in use by minseg-tui (pid N)"), pyserial's
-  ``exclusive=True`` (a flock on the device, for programs that ask) and the tty's
-  exclusive mode (TIOCEXCL: a plain serial monitor's open fails with EBUSY). A pty is a
-  tty like a USB port and gets all three; a ``minseg://`` URL has no device: its handler
-  lets one link at a time attach to a board.
+- One program per board (:mod:`minseg_tui.device.port`): a second minseg-tui gets
+  "in use by minseg-tui (pid N)", a plain serial monitor cannot open the port.
 - Keep-alive: a PING every ``keepalive_s`` (0.25 s), so the board's 1 s watchdog stays
   quiet while the host lives.
 """
@@ -37,28 +33,22 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
 from __future__ import annotations
 
 import contextlib
-import fcntl
-import os
 import re
-import tempfile
-import termios
 import threading
 import time
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
-import serial
 from serial.serialutil import SerialException
 
 from minseg_tui.device import discovery
+from minseg_tui.device import port as port_io
 from minseg_tui.device import protocol as P
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.timebase import Timeline
 from minseg_tui.errors import DeviceError, InputError
-from minseg_tui.lock import FileLock, LockHeld
 from minseg_tui.model.plant import MeterReading
 
 EVENT_KINDS = (
@@ -105,34 +95,6 @@ class _Waiter:
     reply: P.Message | None = None
 
 
-# -- lock files: who holds a port --------------------------------------------------------
-def lock_path(port: str) -> str:
-    """The lock file of a device path (in XDG_RUNTIME_DIR or the temp dir), named after the
-    path with symlinks resolved, so two names of one port share one lock."""
-    real = os.path.realpath(port)
-    base = os.environ.get("XDG_RUNTIME_DIR") or tempfile.gettempdir()
-    return os.path.join(
-        base, "minseg-tui-" + re.sub(r"[^A-Za-z0-9]+", "_", real).strip("_") + ".lock"
-    )
-
-
-def _exclusive_tty(ser: Any, on: bool) -> None:
-    """Put the tty behind ``ser`` in exclusive mode (TIOCEXCL: any further open(2) of it
-    fails with EBUSY, a plain serial monitor's included; only a program with
-    CAP_SYS_ADMIN gets past it) or back (TIOCNXCL). pyserial's ``exclusive=True`` is a
-    flock, which only programs that ask for one respect. Nothing to do for a pyserial URL
-    (its handler decides) or where the OS has no such mode."""
-    try:
-        fd = ser.fileno()
-    except (AttributeError, OSError, ValueError, SerialException):
-        return
-    request = getattr(termios, "TIOCEXCL" if on else "TIOCNXCL", None)
-    if request is None or not isinstance(fd, int) or not os.isatty(fd):
-        return
-    with contextlib.suppress(OSError):
-        fcntl.ioctl(fd, request)
-
-
 def _proto_of(line: str) -> tuple[str, int] | None:
     """(fw, proto) from a $BOOT or $ID line even if the rest does not parse (other versions)."""
     m = re.match(r"\$(?:BOOT|ID),([^,*]*),(-?\d+)", line)
@@ -174,7 +136,7 @@ class Link:
         self.ident: P.Ident | None = None
         self.stats = LinkStats()
         self._ser: Any = None
-        self._port_files: dict[Any, FileLock] = {}  # the lock file of each open port
+        self._opened: dict[Any, port_io.OpenPort] = {}  # each open port and its lock file
         self._port_lock = threading.Lock()
         self._lock = threading.Lock()
         self._rows: deque[tuple[int, int, int, int, int, float]] = deque(maxlen=capacity)
@@ -244,41 +206,10 @@ class Link:
         return self._ser is not None
 
     def _open_port(self, port: str) -> Any:
-        """Take the port's lock file (a device path; a pyserial URL's handler keeps its own
-        one-link rule), then open the port exclusively."""
-        lock = None
-        if "://" not in port:
-            lock = FileLock(Path(lock_path(port)), self.program)
-            try:
-                lock.acquire()
-            except LockHeld as exc:
-                raise DeviceError(
-                    f"{port} is in use by {exc.holder}: close that program first "
-                    "(one program per board)"
-                ) from None
-            except OSError:
-                lock = None  # no writable runtime folder: the exclusive open still guards
-        try:
-            ser = serial.serial_for_url(
-                port, baudrate=self.baud, timeout=0.05, write_timeout=1.0, exclusive=True
-            )
-        except SerialException as exc:
-            if lock is not None:
-                lock.release()
-            text = str(exc)
-            if "lock" in text.lower() or "busy" in text.lower():
-                raise DeviceError(
-                    f"{port} is in use by another program: close that program first "
-                    "(one program per board)"
-                ) from None
-            raise DeviceError(f"cannot open {port}: {text}") from None
-        except (OSError, ValueError) as exc:
-            if lock is not None:
-                lock.release()
-            raise DeviceError(f"cannot open {port}: {exc}") from None
-        if lock is not None:
-            self._port_files[ser] = lock
-        _exclusive_tty(ser, True)
+        """Open the port for this program only (:mod:`minseg_tui.device.port`)."""
+        opened = port_io.open_exclusive(port, self.baud, self.program)
+        ser = opened.ser
+        self._opened[ser] = opened
         clock = getattr(ser, "board_clock", None)
         self._clock = clock if callable(clock) else time.monotonic
         if self.board is None and hasattr(ser, "board"):
@@ -286,22 +217,23 @@ class Link:
         return ser
 
     def _close_port(self, ser: Any) -> None:
-        _exclusive_tty(ser, False)
-        with contextlib.suppress(Exception):
-            ser.close()
-        lock = self._port_files.pop(ser, None)
-        if lock is not None:
-            lock.release()
+        opened = self._opened.pop(ser, None)
+        if opened is not None:
+            port_io.close(opened)
+        else:
+            with contextlib.suppress(Exception):
+                ser.close()
 
     # -- the handshake --------------------------------------------------------------------
     def _read_lines(self, ser: Any, until: float, want: Callable[[str], bool]) -> str | None:
         """Read lines until one satisfies ``want`` (returned) or the clock passes ``until``."""
         buf = b""
         while self._clock() < until:
-            buf += ser.read(max(1, ser.in_waiting))
+            data: bytes = ser.read(max(1, ser.in_waiting))
+            buf += data
             *lines, buf = buf.split(b"\n")
             for raw in lines:
-                line = raw.decode("ascii", "replace").rstrip("\r")
+                line: str = raw.decode("ascii", "replace").rstrip("\r")
                 if want(line):
                     return line
         return None
