@@ -334,14 +334,15 @@ class Link:
         return self._u_req
 
     def _motor_off(self, why: str) -> None:
-        """The board restarted (``why``): its motor is off. Say so if it was not."""
+        """The board restarted (``why``: what happened, said first): its motor is off. Say so
+        if it was not."""
         was, self._u_req = self._u_req, 0.0
         if was == 0.0:
             return
         before = "running a step sequence" if was is None else f"at {was:g} V"
         self._emit(
             "motor",
-            f"motor off after {why}: it was {before} before; nothing is restored, "
+            f"{why}: the motor is off (it was {before}); nothing is restored, "
             "set the voltage again",
         )
 
@@ -501,7 +502,7 @@ class Link:
         elif isinstance(msg, P.Boot):
             self._new_epoch()
             self._emit("boot", f"{self.port}: the board restarted ({msg.fw})")
-            self._motor_off("the board's restart")
+            self._motor_off(f"{self.port}: the board restarted")
 
     def _on_reply(self, msg: P.Message) -> None:
         if isinstance(msg, P.Ok):
@@ -595,7 +596,7 @@ class Link:
             self.stats.reconnects += 1
             self._silent = False
             self._emit("connected", f"{path}: reconnected to {ident.board} {ident.fw}")
-            self._motor_off("the reconnect")
+            self._motor_off(f"{path}: reconnected")
             return
         if mismatch is not None:  # only a board with another protocol answered: say so, stop
             self._gave_up = True
