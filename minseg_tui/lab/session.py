@@ -30,9 +30,12 @@ Typical use::
 
 from __future__ import annotations
 
+import contextlib
 import json
+import os
 import re
 from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -54,24 +57,33 @@ from minseg_tui.lab.results import (
     compute,
 )
 from minseg_tui.lab.runs import (
+    FLUSH_INTERVAL,
     PARTIAL_SUFFIX,
+    RawRun,
     Recorder,
     RunInfo,
-    adopt,
     import_log,
+    keep_run,
     new_name,
+    read_partial,
     remap_runs,
     run_header,
+    ts_of,
 )
+from minseg_tui.lab.schema import KIND, SCHEMA
 from minseg_tui.lab.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
 from minseg_tui.lab.store import (
-    KIND,
     RUNS_DIR,
-    SCHEMA,
     SESSION_FILE,
+    SaveProblem,
     SessionDamaged,
+    SessionNotWritable,
+    atomic_write_bytes,
     atomic_write_text,
+    clean_leftovers,
+    os_reason,
     read_session_file,
+    salvage_session_file,
     take_lock,
 )
 from minseg_tui.lock import FileLock
@@ -89,11 +101,27 @@ def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
 
 
+@dataclass(frozen=True)
+class Moved:
+    """Where :meth:`Session.move_to` put the session, and the run files it could not
+    bring (one line each: the file and why; the run stays listed, its log missing)."""
+
+    folder: Path
+    left_behind: tuple[str, ...] = ()
+
+
 class Session:
     """One group's lab session, saved in its folder after every change.
 
     Create with :meth:`create` or :meth:`open`; close with :meth:`close` (or use ``with``).
-    A session opened with ``readonly=True`` (for reports) takes no lock and never writes.
+    A session opened with ``readonly=True`` (for reports) takes no lock and never writes;
+    if its file breaks the schema, what is sound is shown and :attr:`damaged` says what
+    is not.
+
+    A save that fails (a full disk, a read-only folder, a drive pulled out) never raises
+    and never loses anything: the session keeps working in memory, :attr:`save_problem`
+    says in one line what is wrong and where it will save, every change (and every call
+    of :meth:`save`) tries again, and :meth:`move_to` saves it in another folder.
     """
 
     def __init__(
@@ -120,10 +148,20 @@ class Session:
         self._results: tuple[object, Results] | None = None
         self._checks: dict[tuple[int, str], ModelCheck] = {}
         self._run_version = 0
+        self._problem: SaveProblem | None = None
+        self._unsaved = False
+        self._unkept: list[Recorder] = []  # finished recordings whose log is not written yet
+        self._remap_due = False  # the runs' u column waits for a table change to be written
         self.recovered: list[str] = []
         """Names of runs rebuilt at open from a recording a crash interrupted."""
+        self.recovery_notes: list[str] = []
+        """One line for each thing opening had to mend: leftovers removed, a damaged run
+        header (the run rebuilt without it), a recording that could not be kept yet."""
+        self.damaged: str | None = None
+        """For a read-only session whose file breaks the schema: what was left out, in one
+        line (None when the file is sound)."""
 
-    # -- life cycle ----------------------------------------------------------------------------
+    # -- life cycle and saving -----------------------------------------------------------------
 
     @classmethod
     def create(
@@ -137,31 +175,25 @@ class Session:
         """A new session folder under ``root`` (created if needed), locked and saved.
 
         ``date`` defaults to today (ISO); the id defaults to ``<date>-<members>``, made
-        unique with ``-2``, ``-3``, ...
+        unique with ``-2``, ``-3``, ... SessionNotWritable (one line) when no session can
+        be made under ``root``; a first save that fails is a :attr:`save_problem`.
         """
         root = Path(root)
-        root.mkdir(parents=True, exist_ok=True)
         now = clock()
         date = date or now.date().isoformat()
         base = session_id or _slug(f"{date} {' '.join(members)}") or "session"
-        sid, k = base, 1
-        while (root / sid).exists():
-            if session_id:
-                raise InputError(
-                    str(root / sid),
-                    None,
-                    "a session with this id exists already; open it or pick another id",
-                )
-            k += 1
-            sid = f"{base}-{k}"
-        folder = root / sid
-        (folder / RUNS_DIR).mkdir(parents=True)
-        lock = take_lock(folder)
+        if session_id and _exists(root / session_id):
+            raise InputError(
+                str(root / session_id),
+                None,
+                "a session with this id exists already; open it or pick another id",
+            )
+        folder, lock = _new_folder(root, base)
         stamp = now.isoformat(timespec="seconds")
         data: dict[str, Any] = {
             "kind": KIND,
             "schema": SCHEMA,
-            "id": sid,
+            "id": folder.name,
             "members": [str(m) for m in members],
             "date": date,
             "created": stamp,
@@ -178,15 +210,37 @@ class Session:
 
     @classmethod
     def open(cls, folder: Path, clock: Clock = _now, readonly: bool = False) -> Session:
-        """Open the session in ``folder``: take its lock (SessionLocked if another live
-        program has it), read it (SessionMissing / SessionDamaged with one line; a damaged
-        file is never written over) and rebuild any run a crash interrupted."""
+        """Open the session in ``folder``: take its lock (SessionLocked if another program
+        has it; SessionNotWritable if the folder cannot be written), read it (SessionMissing
+        / SessionDamaged with one line; a damaged file is never written over), remove what
+        a killed program left and rebuild any run a crash interrupted.
+
+        ``readonly=True`` takes no lock and writes nothing; a file that breaks the schema
+        then opens with what is sound in it (:attr:`damaged` says what is not).
+        """
         folder = Path(folder)
-        lock = None
-        if not readonly:
-            if not (folder / SESSION_FILE).exists():
-                read_session_file(folder / SESSION_FILE)  # raises SessionMissing
+        if readonly:
+            data, damaged = salvage_session_file(folder / SESSION_FILE)
+            if data["current_step"] not in STEP_INDEX:
+                damaged = damaged or (
+                    f"{folder / SESSION_FILE}: names an unknown step "
+                    f"{data['current_step']!r}; shown from the first step"
+                )
+                data["current_step"] = STEPS[0].id
+            s = cls(folder, data, lock=None, clock=clock, readonly=True)
+            s.damaged = damaged
+            return s
+        if not _exists(folder / SESSION_FILE):
+            read_session_file(folder / SESSION_FILE)  # raises SessionMissing
+        try:
             lock = take_lock(folder)
+        except OSError as exc:
+            raise SessionNotWritable(
+                str(folder),
+                None,
+                f"the session folder cannot be written ({os_reason(exc)}): open it read-only "
+                "(minseg-tui report) or copy the folder where it can be written",
+            ) from None
         try:
             data = read_session_file(folder / SESSION_FILE)
             if data["current_step"] not in STEP_INDEX:
@@ -195,19 +249,26 @@ class Session:
                     None,
                     f"names an unknown step {data['current_step']!r}; the file is left untouched",
                 )
-            s = cls(folder, data, lock=lock, clock=clock, readonly=readonly)
-            if not readonly:
+            s = cls(folder, data, lock=lock, clock=clock, readonly=False)
+            s.recovery_notes += [
+                f"removed {name}, left by a program that was killed"
+                for name in clean_leftovers(folder)
+            ]
+            with contextlib.suppress(OSError):
                 (folder / RUNS_DIR).mkdir(exist_ok=True)
-                s._recover_runs()
+            s._recover_runs()
         except BaseException:
-            if lock is not None:
-                lock.release()
+            lock.release()
             raise
         return s
 
     def close(self) -> None:
-        """Release the lock (everything is already saved)."""
+        """Try a last save if something is not on disk, and release the lock. What could
+        not be saved is lost with the program: ask :attr:`unsaved` (and offer
+        :meth:`move_to`) before closing."""
         if self._lock is not None:
+            if self.unsaved:
+                self.save()
             self._lock.release()
             self._lock = None
 
@@ -217,20 +278,94 @@ class Session:
     def __exit__(self, *exc: object) -> None:
         self.close()
 
-    def save(self) -> None:
-        """Write session.json atomically (done by every change; call it only after set-up)."""
+    @property
+    def save_problem(self) -> SaveProblem | None:
+        """Why the session is not all on disk (``.line``: one line for the status bar), or
+        None when it is."""
+        return self._problem
+
+    @property
+    def unsaved(self) -> bool:
+        """True while a change, a finished run or a run's new u column is only in memory."""
+        return self._unsaved or bool(self._unkept) or self._remap_due
+
+    def save(self) -> bool:
+        """Write everything not yet on disk: runs kept since the last save that worked,
+        session.json (atomically), the runs' u column after a table change. True when all
+        is on disk. A failed write never raises: it becomes :attr:`save_problem`, and the
+        next change or call of :meth:`save` tries again (call it every few seconds while
+        there is a problem)."""
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
+        ok = True
+        try:
+            self._keep_unkept()
+        except OSError as exc:  # the file still lists what is on disk; the rest waits
+            self._failed(exc)
+            ok = False
         self._data["entries"] = {k: e.to_json() for k, e in self._entries.items()}
         self._data["captures"] = {k: c.to_json() for k, c in self._captures.items()}
         self._data["runs"] = [r.to_json() for r in self._runs]
         self._data["modified"] = self._clock().isoformat(timespec="seconds")
-        atomic_write_text(
-            self.folder / SESSION_FILE, json.dumps(self._data, indent=1, ensure_ascii=False) + "\n"
+        try:
+            atomic_write_text(
+                self.folder / SESSION_FILE,
+                json.dumps(self._data, indent=1, ensure_ascii=False) + "\n",
+            )
+        except OSError as exc:
+            self._unsaved = True
+            self._failed(exc)
+            return False
+        self._unsaved = False
+        if self._remap_due:
+            try:
+                remap_runs(self.folder, self._runs, self.table_pairs())
+                self._remap_due = False
+            except OSError as exc:
+                self._failed(exc)
+                ok = False
+        if ok:
+            self._problem = None
+        return ok
+
+    def _failed(self, exc: OSError) -> None:
+        old = self._problem
+        self._problem = SaveProblem(
+            folder=self.folder,
+            reason=os_reason(exc),
+            since=old.since if old else self._clock().isoformat(timespec="seconds"),
+            attempts=(old.attempts if old else 0) + 1,
         )
 
     def _changed(self) -> None:
         self.save()
+
+    def move_to(self, root: Path) -> Moved:
+        """Save the session in a new folder under ``root`` (named by its id, made unique),
+        lock it there and go on there; the old folder is left as it is (and unlocked). The
+        run files come along where they can be read. SessionNotWritable (one line, nothing
+        changed) when ``root`` cannot take it."""
+        if self.readonly:
+            raise InputError(str(self.folder), None, "this session was opened read-only")
+        folder, lock = _new_folder(Path(root), self.id)
+        left: list[str] = []
+        for r in self._runs:
+            try:
+                atomic_write_bytes(folder / r.file, (self.folder / r.file).read_bytes())
+            except OSError as exc:
+                left.append(f"{r.file}: {os_reason(exc)}")
+        old_folder, old_lock, old_id = self.folder, self._lock, self._data["id"]
+        self.folder, self._lock, self._data["id"] = folder, lock, folder.name
+        if not self.save():
+            why = self._problem.reason if self._problem else "unknown"
+            self.folder, self._lock, self._data["id"] = old_folder, old_lock, old_id
+            self._problem = replace(self._problem, folder=old_folder) if self._problem else None
+            lock.release()
+            raise SessionNotWritable(str(folder), None, f"cannot save the session here ({why})")
+        if old_lock is not None:
+            old_lock.release()
+        self._run_version += 1
+        return Moved(folder, tuple(left))
 
     # -- who, when, where ----------------------------------------------------------------------
 
@@ -308,7 +443,8 @@ class Session:
     def enter(self, key: str, text: str, source: str = "typed") -> Entry:
         """Store ``text`` typed in field ``key`` (KeyError for an unknown key) and return the
         entry: accepted with its value, note and warnings, or refused with a one-line message.
-        The text is kept either way; the session is saved before this returns."""
+        The text is kept either way, and saved before this returns (or, when the save
+        fails, kept in memory and said by :attr:`save_problem`)."""
         entry = revise(
             self._entries.get(key),
             read_entry(FIELDS[key], text),
@@ -323,9 +459,10 @@ class Session:
             and key.startswith("omega_ss@")
         ):
             self._captures.pop(key, None)
-        self._changed()
         if key.startswith("u_ss@") and entry.refused is None:
-            self._remap_runs()
+            self._remap_due = True  # the runs' u column follows the table (written by save)
+            self._run_version += 1
+        self._changed()
         return entry
 
     def choose(self, key: str, options: Sequence[int]) -> Entry:
@@ -557,74 +694,188 @@ class Session:
         flush_interval: float | None = None,
     ) -> Recorder:
         """Begin recording a run (``steps``/``fast`` for Task 10, ``free`` otherwise); returns
-        the Recorder to append samples to. Nothing is lost to a crash beyond its flush interval."""
+        the Recorder to append samples to. Nothing is lost to a crash beyond its flush
+        interval, nor to a write that fails (the Recorder keeps the samples). Raises
+        SessionNotWritable (one line) when its file cannot be made."""
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
-        name = self._new_name(kind)
         ts_ = ts if ts is not None else (plan.ts if plan else 0.025)
-        header = run_header(
-            name,
-            kind,
-            ts_,
-            self._clock().isoformat(timespec="seconds"),
-            {k: float(getattr(plan, k)) for k in ("low", "high", "half_period", "periods", "ts")}
-            if plan
-            else None,
-        )
-        kwargs = {} if flush_interval is None else {"flush_interval": flush_interval}
-        return Recorder(self.folder / RUNS_DIR / f"{name}{PARTIAL_SUFFIX}", header, **kwargs)
+        try:
+            name = self._new_name(kind)
+            header = run_header(
+                name,
+                kind,
+                ts_,
+                self._clock().isoformat(timespec="seconds"),
+                {
+                    k: float(getattr(plan, k))
+                    for k in ("low", "high", "half_period", "periods", "ts")
+                }
+                if plan
+                else None,
+            )
+            return Recorder(
+                self.folder / RUNS_DIR / f"{name}{PARTIAL_SUFFIX}",
+                header,
+                FLUSH_INTERVAL if flush_interval is None else flush_interval,
+            )
+        except OSError as exc:
+            self._failed(exc)
+            raise SessionNotWritable(
+                str(self.folder / RUNS_DIR),
+                None,
+                f"cannot record a run here ({os_reason(exc)}); nothing was started",
+            ) from None
 
     def finish_run(self, recorder: Recorder) -> RunInfo | None:
         """End a recording: its samples become runs/<name>.csv (atomically), the session
         records the run (saved) and the partial file goes. None (and nothing kept) when it
-        holds fewer than 2 samples."""
+        holds fewer than 2 samples. When the log cannot be written the run is kept in
+        memory, saved with the next save that works, and SessionNotWritable says so."""
         recorder.close()
-        return self._adopt(recorder.path, interrupted=False)
+        raw = recorder.raw()
+        if raw.seq.size < 2:
+            with contextlib.suppress(OSError):
+                recorder.path.unlink(missing_ok=True)
+            return None
+        try:
+            info = self._keep(recorder.name, raw, interrupted=False)
+        except OSError as exc:
+            self._unkept.append(recorder)
+            self._failed(exc)
+            raise SessionNotWritable(
+                str(self.folder / RUNS_DIR),
+                None,
+                f"run {recorder.name} ({recorder.samples} samples) is kept in memory, not yet "
+                f"on disk ({os_reason(exc)}); it is saved with the session as soon as it can be",
+            ) from None
+        with contextlib.suppress(OSError):
+            recorder.path.unlink(missing_ok=True)
+        return info
 
     def discard_run(self, recorder: Recorder) -> None:
         """Throw a recording away (the partial file is removed)."""
         recorder.close()
-        recorder.path.unlink(missing_ok=True)
+        with contextlib.suppress(OSError):
+            recorder.path.unlink(missing_ok=True)
 
-    def _adopt(self, partial: Path, interrupted: bool) -> RunInfo | None:
-        name = partial.name[: -len(PARTIAL_SUFFIX)]
-        info = (
-            None
-            if any(r.name == name for r in self._runs)
-            else adopt(self.folder, partial, self.table_pairs(), interrupted)
-        )
+    def _keep(self, name: str, raw: RawRun, interrupted: bool) -> RunInfo | None:
+        """Write run ``name`` from ``raw`` and record it (saved); None when it is known or
+        too short. OSError when its log cannot be written."""
+        if any(r.name == name for r in self._runs):
+            return None
+        info = keep_run(self.folder, name, raw, self.table_pairs(), interrupted)
         if info is None:
-            partial.unlink(missing_ok=True)
             return None
         self._runs.append(info)
         self._run_version += 1
         self._changed()
-        partial.unlink(missing_ok=True)
         return info
 
+    def _keep_unkept(self) -> None:
+        """Write the runs that finished while nothing could be written (OSError if still not)."""
+        while self._unkept:
+            rec = self._unkept[0]
+            raw = rec.raw()
+            if not any(r.name == rec.name for r in self._runs):
+                info = keep_run(self.folder, rec.name, raw, self.table_pairs(), False)
+                if info is not None:
+                    self._runs.append(info)
+                    self._run_version += 1
+            self._unkept.pop(0)
+            with contextlib.suppress(OSError):
+                rec.path.unlink(missing_ok=True)
+
     def _recover_runs(self) -> None:
-        for partial in sorted((self.folder / RUNS_DIR).glob(f"*{PARTIAL_SUFFIX}")):
-            info = self._adopt(partial, interrupted=True)
+        try:
+            partials = sorted((self.folder / RUNS_DIR).glob(f"*{PARTIAL_SUFFIX}"))
+        except OSError:
+            return
+        for partial in partials:
+            name = partial.name[: -len(PARTIAL_SUFFIX)]
+            try:
+                raw = read_partial(partial)
+                info = self._keep(name, raw, interrupted=True)
+            except OSError as exc:
+                self.recovery_notes.append(
+                    f"{RUNS_DIR}/{partial.name}: not rebuilt yet ({os_reason(exc)}); "
+                    "it is left as it is and rebuilt when the session is opened again"
+                )
+                continue
+            if raw.damage:
+                self.recovery_notes.append(
+                    f"{RUNS_DIR}/{partial.name}: {raw.damage}; rebuilt from its samples as "
+                    f"{name} (ts {ts_of(raw):g} s)"
+                )
             if info is not None:
                 self.recovered.append(info.name)
+            with contextlib.suppress(OSError):
+                partial.unlink(missing_ok=True)
 
     def import_run(self, path: Path) -> RunInfo:
         """Copy a step log recorded elsewhere into runs/ (checked by read_step_log; InputError
-        with file and line if it is not one) for the model check and Tasks 11-15."""
-        info = import_log(
-            self.folder,
-            Path(path),
-            self._new_name("imported"),
-            self._clock().isoformat(timespec="seconds"),
-        )
+        with file and line if it is not one, SessionNotWritable if it cannot be written) for
+        the model check and Tasks 11-15."""
+        try:
+            info = import_log(
+                self.folder,
+                Path(path),
+                self._new_name("imported"),
+                self._clock().isoformat(timespec="seconds"),
+            )
+        except OSError as exc:
+            self._failed(exc)
+            raise SessionNotWritable(
+                str(self.folder / RUNS_DIR), None, f"cannot copy the log here ({os_reason(exc)})"
+            ) from None
         self._runs.append(info)
         self._run_version += 1
         self._changed()
         return info
 
-    def _remap_runs(self) -> None:
-        remap_runs(self.folder, self._runs, self.table_pairs())
-        self._run_version += 1
+
+def _exists(path: Path) -> bool:
+    """Whether ``path`` exists, False also when it cannot be looked at."""
+    try:
+        return os.path.lexists(path)
+    except OSError:
+        return False
 
 
-__all__ = ["Comparison", "Entry", "ModelCheck", "Notice", "Results", "Session", "TableRow"]
+def _new_folder(root: Path, base: str) -> tuple[Path, FileLock]:
+    """A new, locked session folder ``root/<base>`` (``-2``, ``-3``, ... if taken), with its
+    runs/; SessionNotWritable (one line) when ``root`` cannot take one."""
+    try:
+        root.mkdir(parents=True, exist_ok=True)
+        sid, k = base, 1
+        while _exists(root / sid):
+            k += 1
+            sid = f"{base}-{k}"
+        folder = root / sid
+        (folder / RUNS_DIR).mkdir(parents=True)
+    except OSError as exc:
+        raise SessionNotWritable(
+            str(root),
+            None,
+            f"cannot make a session folder here ({os_reason(exc)}): choose a sessions folder "
+            "that can be written (--sessions DIR)",
+        ) from None
+    try:
+        return folder, take_lock(folder)
+    except OSError as exc:
+        raise SessionNotWritable(
+            str(folder), None, f"cannot lock the new session folder ({os_reason(exc)})"
+        ) from None
+
+
+__all__ = [
+    "Comparison",
+    "Entry",
+    "ModelCheck",
+    "Moved",
+    "Notice",
+    "Results",
+    "SaveProblem",
+    "Session",
+    "TableRow",
+]
