@@ -31,9 +31,8 @@ Units: t_us in microseconds, clocks in seconds.
 
 from __future__ import annotations
 
-import statistics
 from collections import deque
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from minseg_tui.device.protocol import SampleLine
 
@@ -65,8 +64,7 @@ def tolerance_us(dseq: int, period_us: float) -> float:
     return 0.3 * period_us + 0.02 * dseq * period_us + 2000.0
 
 
-@dataclass(frozen=True)
-class _Seen:
+class _Seen(NamedTuple):
     """A sample as received: the raw line, the link clock at arrival (s), host time (s)."""
 
     line: SampleLine
@@ -74,24 +72,26 @@ class _Seen:
     t_host: float
 
 
+_MASK = U32 - 1
+_HALF = U32 // 2
+
+
 def _steps(a: _Seen, b: _Seen) -> tuple[int, int]:
     """(seq step, time step in us) from ``a`` to ``b``, both modulo 2**32 (a step back is
     a number of 2**31 or more)."""
-    return (b.line.seq - a.line.seq) % U32, (b.line.t_us - a.line.t_us) % U32
+    return (b.line.seq - a.line.seq) & _MASK, (b.line.t_us - a.line.t_us) & _MASK
 
 
-def _forward(a: _Seen, b: _Seen) -> bool:
-    """seq and time moved forward from ``a`` to ``b``, time no further than the clock."""
-    dseq, dt = _steps(a, b)
-    if not (0 < dseq < U32 // 2 and 0 < dt < U32 // 2):
-        return False
-    return dt <= (max(b.clock - a.clock, 0.0) + SLACK_S) * 1e6
+def _forward(dseq: int, dt: int, elapsed: float) -> bool:
+    """seq and time moved forward by ``dseq`` and ``dt`` (us), time no further than the
+    clock moved (``elapsed`` s) and the slack."""
+    return 0 < dseq < _HALF and 0 < dt < _HALF and dt <= (max(elapsed, 0.0) + SLACK_S) * 1e6
 
 
 def _next_of(a: _Seen, b: _Seen) -> bool:
     """``b`` is the sample right after ``a`` (seq +1, a possible period of time)."""
     dseq, dt = _steps(a, b)
-    return dseq == 1 and _forward(a, b) and dt <= 1.5 * PERIOD_US[1]
+    return dseq == 1 and _forward(dseq, dt, b.clock - a.clock) and dt <= 1.5 * PERIOD_US[1]
 
 
 class Timeline:
@@ -110,20 +110,25 @@ class Timeline:
         self._ref: _Seen | None = None  # the last kept sample of this epoch
         self._out: tuple[int, int, float] | None = None  # its (seq, t_us) out, its t_host
         self._steps: deque[int] = deque(maxlen=_RECENT)
+        self._period: float | None = None  # median of _steps
         self._held: list[_Seen] = []
 
     @property
     def period_us(self) -> float | None:
         """The sample period the stream has shown (median of recent steps), us; None yet."""
-        return float(statistics.median(self._steps)) if self._steps else None
+        return self._period
 
     def new_epoch(self) -> None:
         """The board restarted (a ``$BOOT`` line, a reconnect): what comes next starts anew."""
         self.epoch += 1
         self._ref = None
-        self._steps.clear()
+        self._learn_anew()
         self.refused += len(self._held)
         self._held = []
+
+    def _learn_anew(self) -> None:
+        self._steps.clear()
+        self._period = None
 
     def place(self, line: SampleLine, clock: float, t_host: float) -> list[Row]:
         """Take one sample (``clock``: the link's clock at arrival, s; ``t_host``: host
@@ -131,13 +136,20 @@ class Timeline:
         seen = _Seen(line, clock, t_host)
         ref = self._ref
         if ref is not None:
-            if (line.seq, line.t_us) == (ref.line.seq, ref.line.t_us):
+            dseq, dt = _steps(ref, seen)
+            if dseq == 0 and dt == 0:
                 self.repeated += 1
                 return []
-            if self._fits(ref, seen):
-                self.refused += len(self._held)
-                self._held = []
-                return [self._keep(seen)]
+            period = self._period
+            if (
+                period is not None
+                and _forward(dseq, dt, clock - ref.clock)
+                and abs(dt - dseq * period) <= tolerance_us(dseq, period)
+            ):
+                if self._held:
+                    self.refused += len(self._held)
+                    self._held = []
+                return [self._keep(seen, dseq, dt)]
         if self._held and _next_of(self._held[-1], seen):
             self._held.append(seen)
         else:
@@ -146,21 +158,17 @@ class Timeline:
         if len(self._held) < (CONFIRM if ref is not None else CONFIRM_START):
             return []
         chain, self._held = self._held, []
-        if ref is None or not _forward(ref, chain[0]):
+        if ref is None or not _forward(*_steps(ref, chain[0]), chain[0].clock - ref.clock):
             if ref is not None:
                 self.new_epoch()  # the board restarted and its $BOOT never came
-            return [self._start(chain[0]), *(self._keep(s) for s in chain[1:])]
-        self._steps.clear()  # the same stream at another period: learn it anew
-        return [self._keep(s) for s in chain]
-
-    def _fits(self, ref: _Seen, new: _Seen) -> bool:
-        if not _forward(ref, new):
-            return False
-        dseq, dt = _steps(ref, new)
-        period = self.period_us
-        if period is None:
-            return False
-        return abs(dt - dseq * period) <= tolerance_us(dseq, period)
+            first = self._start(chain[0])
+        else:
+            self._learn_anew()  # the same stream at another period
+            first = self._keep(chain[0], *_steps(ref, chain[0]))
+        out = [first]
+        for a, b in zip(chain, chain[1:], strict=False):
+            out.append(self._keep(b, *_steps(a, b)))
+        return out
 
     def _start(self, seen: _Seen) -> Row:
         """The first sample of an epoch: its own numbers in epoch 0, else continuing the last
@@ -172,14 +180,18 @@ class Timeline:
             seq, t_us = self._out[0] + 1, self._out[1] + gap
         return self._emit(seen, seq, t_us)
 
-    def _keep(self, seen: _Seen) -> Row:
-        ref = self._ref
-        if ref is None or self._out is None:
-            return self._start(seen)
-        dseq, dt = _steps(ref, seen)
+    def _keep(self, seen: _Seen, dseq: int, dt: int) -> Row:
+        """Keep ``seen``, ``dseq`` and ``dt`` (us) after the last kept sample."""
+        assert self._out is not None
         self.dropped += dseq - 1
         if dseq == 1:
-            self._steps.append(dt)
+            steps = self._steps
+            steps.append(dt)
+            ordered = sorted(steps)
+            n = len(ordered)
+            self._period = (
+                float(ordered[n // 2]) if n % 2 else (ordered[n // 2 - 1] + ordered[n // 2]) / 2
+            )
         return self._emit(seen, self._out[0] + dseq, self._out[1] + dt)
 
     def _emit(self, seen: _Seen, seq: int, t_us: int) -> Row:
