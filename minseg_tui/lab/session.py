@@ -11,7 +11,11 @@ The session holds the state and saves it; its parts are modules of their own:
 :mod:`~minseg_tui.lab.entries` (what was typed, read and revised),
 :mod:`~minseg_tui.lab.results` (Tasks 6-15, the table, the model check),
 :mod:`~minseg_tui.lab.runs` (recording and keeping runs), :mod:`~minseg_tui.lab.store`
-(the files on disk) and :mod:`~minseg_tui.lab.answers` (checking answers).
+(the files on disk, the lock, what a failed save is), :mod:`~minseg_tui.lab.schema`
+(the session file's one schema) and :mod:`~minseg_tui.lab.answers` (checking answers).
+
+A save that fails never raises: the session goes on in memory and says why in
+:attr:`Session.save_problem` (see :class:`Session`).
 
 Units: entries are stored as typed (``text``) and as parsed SI values (``value``: V, A,
 ohm, rad/s, s, ...); the form unit of each field is in :mod:`minseg_tui.lab.steps`.
@@ -25,6 +29,7 @@ Typical use::
     rec.append(seq, t_us, count, u_mV) ...
     s.finish_run(rec)
     s.results().identification.k_v                          # Tasks 6-15
+    if s.save_problem: print(s.save_problem.line)           # not on disk yet: s.save() retries
     s.close()
 """
 
