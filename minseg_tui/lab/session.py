@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import contextlib
 import json
-import os
 import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
@@ -86,6 +85,8 @@ from minseg_tui.lab.store import (
     atomic_write_bytes,
     atomic_write_text,
     clean_leftovers,
+    exists,
+    new_session_folder,
     os_reason,
     read_session_file,
     salvage_session_file,
@@ -187,13 +188,13 @@ class Session:
         now = clock()
         date = date or now.date().isoformat()
         base = session_id or _slug(f"{date} {' '.join(members)}") or "session"
-        if session_id and _exists(root / session_id):
+        if session_id and exists(root / session_id):
             raise InputError(
                 str(root / session_id),
                 None,
                 "a session with this id exists already; open it or pick another id",
             )
-        folder, lock = _new_folder(root, base)
+        folder, lock = new_session_folder(root, base)
         stamp = now.isoformat(timespec="seconds")
         data: dict[str, Any] = {
             "kind": KIND,
@@ -235,7 +236,7 @@ class Session:
             s = cls(folder, data, lock=None, clock=clock, readonly=True)
             s.damaged = damaged
             return s
-        if not _exists(folder / SESSION_FILE):
+        if not exists(folder / SESSION_FILE):
             read_session_file(folder / SESSION_FILE)  # raises SessionMissing
         try:
             lock = take_lock(folder)
@@ -352,7 +353,7 @@ class Session:
         changed) when ``root`` cannot take it."""
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
-        folder, lock = _new_folder(Path(root), self.id)
+        folder, lock = new_session_folder(Path(root), self.id)
         left: list[str] = []
         for r in self._runs:
             try:
@@ -837,40 +838,6 @@ class Session:
         self._run_version += 1
         self._changed()
         return info
-
-
-def _exists(path: Path) -> bool:
-    """Whether ``path`` exists, False also when it cannot be looked at."""
-    try:
-        return os.path.lexists(path)
-    except OSError:
-        return False
-
-
-def _new_folder(root: Path, base: str) -> tuple[Path, FileLock]:
-    """A new, locked session folder ``root/<base>`` (``-2``, ``-3``, ... if taken), with its
-    runs/; SessionNotWritable (one line) when ``root`` cannot take one."""
-    try:
-        root.mkdir(parents=True, exist_ok=True)
-        sid, k = base, 1
-        while _exists(root / sid):
-            k += 1
-            sid = f"{base}-{k}"
-        folder = root / sid
-        (folder / RUNS_DIR).mkdir(parents=True)
-    except OSError as exc:
-        raise SessionNotWritable(
-            str(root),
-            None,
-            f"cannot make a session folder here ({os_reason(exc)}): choose a sessions folder "
-            "that can be written (--sessions DIR)",
-        ) from None
-    try:
-        return folder, take_lock(folder)
-    except OSError as exc:
-        raise SessionNotWritable(
-            str(folder), None, f"cannot lock the new session folder ({os_reason(exc)})"
-        ) from None
 
 
 __all__ = [

@@ -288,6 +288,43 @@ def take_lock(folder: Path) -> FileLock:
     return lock
 
 
+# -- session folders -----------------------------------------------------------------------
+
+
+def exists(path: Path) -> bool:
+    """Whether ``path`` exists, False also when it cannot be looked at."""
+    try:
+        return os.path.lexists(path)
+    except OSError:
+        return False
+
+
+def new_session_folder(root: Path, base: str) -> tuple[Path, FileLock]:
+    """A new, locked session folder ``root/<base>`` (``-2``, ``-3``, ... if taken), with its
+    runs/; SessionNotWritable (one line) when ``root`` cannot take one."""
+    try:
+        root.mkdir(parents=True, exist_ok=True)
+        sid, k = base, 1
+        while exists(root / sid):
+            k += 1
+            sid = f"{base}-{k}"
+        folder = root / sid
+        (folder / RUNS_DIR).mkdir(parents=True)
+    except OSError as exc:
+        raise SessionNotWritable(
+            str(root),
+            None,
+            f"cannot make a session folder here ({os_reason(exc)}): choose a sessions folder "
+            "that can be written (--sessions DIR)",
+        ) from None
+    try:
+        return folder, take_lock(folder)
+    except OSError as exc:
+        raise SessionNotWritable(
+            str(folder), None, f"cannot lock the new session folder ({os_reason(exc)})"
+        ) from None
+
+
 # -- listing -----------------------------------------------------------------------------------
 
 
