@@ -6,7 +6,8 @@ import time
 import numpy as np
 
 from minseg_tui.device import protocol as P
-from minseg_tui.device.link import Link, motion
+from minseg_tui.device.link import Link
+from minseg_tui.device.samples import motion
 
 N = 200_000
 

@@ -10,7 +10,8 @@ import time
 
 import numpy as np
 
-from minseg_tui.device.link import Link, SampleBatch
+from minseg_tui.device.link import Link
+from minseg_tui.device.samples import SampleBatch
 
 
 def serve(conn, seconds: float) -> None:

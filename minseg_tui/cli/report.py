@@ -2,7 +2,8 @@
 
 SESSION is a session folder or a session id under --sessions (default ./sessions).
 Writes report.md and report.html into the session's folder and prints their paths and
-the run CSVs. A missing or damaged session: one line on stderr, exit 2.
+the run CSVs. A missing or damaged session, or a folder the report cannot be written
+into (a read-only stick): one line on stderr, exit 2.
 """
 
 from __future__ import annotations
@@ -10,8 +11,9 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from minseg_tui.errors import InputError
 from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import resolve
+from minseg_tui.lab.store import SessionDamaged, os_reason, resolve
 from minseg_tui.report.write import write_report
 
 
@@ -30,10 +32,22 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Write the report; 0 on success (InputError -> exit 2 via the CLI)."""
+    """Write the report; 0 on success (InputError -> exit 2 via the CLI, one line)."""
     folder = resolve(args.session, args.sessions)
     session = Session.open(folder, readonly=True)
-    written = write_report(session)
+    if session.damaged:
+        raise SessionDamaged(
+            str(folder), None, f"no report of a damaged session: {session.damaged}"
+        )
+    try:
+        written = write_report(session)
+    except OSError as exc:
+        raise InputError(
+            str(folder),
+            None,
+            f"cannot write the report into the session folder ({os_reason(exc)}): copy the "
+            "folder where it can be written and run the report there",
+        ) from None
     print(written.markdown)
     print(written.html)
     for p in written.runs:

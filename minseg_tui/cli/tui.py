@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import os
 from pathlib import Path
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.store import list_sessions
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -29,8 +31,9 @@ def run(args: argparse.Namespace) -> int:
     from minseg_tui.ui.config import UiConfig
 
     sessions = Path(args.sessions)
-    if sessions.exists() and not sessions.is_dir():
+    if os.path.lexists(sessions) and not sessions.is_dir():
         raise InputError(str(sessions), None, "--sessions must be a folder")
+    list_sessions(sessions)  # a folder that cannot be listed: one line, exit 2
     device = "sim" if args.sim else (args.port or "auto")
     make_app(UiConfig(device=device, sessions=sessions), write_report).run()
     return 0

@@ -39,8 +39,8 @@ class PortInfo(Protocol):
 
 
 @dataclass(frozen=True)
-class Candidate:
-    """One serial port and what discovery thinks of it."""
+class PortCandidate:
+    """One serial port as a candidate for the board, and what discovery thinks of it."""
 
     device: str
     vid: int | None
@@ -63,25 +63,25 @@ class Candidate:
         return d
 
 
-def judge(port: PortInfo) -> Candidate:
+def judge(port: PortInfo) -> PortCandidate:
     """The verdict on one port, with the reason."""
     vid, pid = port.vid, port.pid
     desc = port.description or ""
     if vid is None or pid is None:
         reason = "no USB vendor/product id (built-in or virtual serial port): never opened"
-        return Candidate(port.device, vid, pid, desc, "ignored", reason)
+        return PortCandidate(port.device, vid, pid, desc, "ignored", reason)
     known = KNOWN.get((vid, pid))
     if known is None:
         maker = f" by {port.manufacturer}" if port.manufacturer else ""
         reason = f"USB {vid:04X}:{pid:04X}{maker} is not a known Arduino or USB-serial bridge: never opened"
-        return Candidate(port.device, vid, pid, desc, "ignored", reason)
+        return PortCandidate(port.device, vid, pid, desc, "ignored", reason)
     verdict, what = known
     why = {
         "board": f"{what} ({vid:04X}:{pid:04X})",
         "clone": f"{what} ({vid:04X}:{pid:04X})",
         "possible": f"{what}; not opened automatically",
     }[verdict]
-    return Candidate(port.device, vid, pid, desc, verdict, why)
+    return PortCandidate(port.device, vid, pid, desc, verdict, why)
 
 
 def list_ports() -> list[Any]:
@@ -91,7 +91,7 @@ def list_ports() -> list[Any]:
     return list(lp.comports())
 
 
-def candidates(ports: Iterable[PortInfo] | None = None) -> list[Candidate]:
+def candidates(ports: Iterable[PortInfo] | None = None) -> list[PortCandidate]:
     """Every port judged, best first (boards, then clones, possibles, ignored)."""
     judged = [judge(p) for p in (list_ports() if ports is None else ports)]
     return sorted(judged, key=lambda c: (RANK[c.verdict], c.device))
@@ -99,7 +99,7 @@ def candidates(ports: Iterable[PortInfo] | None = None) -> list[Candidate]:
 
 def find_board(
     ports: Iterable[PortInfo] | None = None, vid_pid: tuple[int, int] | None = None
-) -> Candidate | None:
+) -> PortCandidate | None:
     """The best port ``auto`` may open (or the first with exactly ``vid_pid``); None if none."""
     for c in candidates(ports):
         if vid_pid is not None:

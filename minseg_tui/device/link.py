@@ -4,10 +4,12 @@ One :class:`Link` per board. A reader thread owns the port; the caller never blo
 it except in :meth:`Link.command`, which waits (with a timeout) for the board's reply.
 
 - Samples reach the caller in batches: :meth:`Link.samples` takes everything pending at
-  once as a :class:`SampleBatch` (numpy arrays). The buffer is bounded (``capacity``);
-  if nobody takes samples for that long the oldest go and ``stats.overflow`` counts them.
-- A corrupt line (bad checksum or format) is counted in ``stats.corrupt`` and dropped; a
-  gap in ``seq`` is counted in ``stats.dropped``. Neither ever becomes a sample.
+  once as a :class:`~minseg_tui.device.samples.SampleBatch` (numpy arrays). The buffer is
+  bounded (``capacity``); if nobody takes samples for that long the oldest go and
+  ``stats.overflow`` counts them.
+- A corrupt line (bad checksum or format, or a sample whose seq or time no real gap
+  explains: :mod:`minseg_tui.device.timebase`) is counted in ``stats.corrupt`` and
+  dropped; a gap in ``seq`` is counted in ``stats.dropped``. Neither ever becomes a sample.
 - ``seq`` and ``t_us`` are unwrapped (uint32 on the wire, int64 here). Each connection
   (the board resets when the port opens) is an *epoch*: across epochs seq continues at
   +1 and t_us continues by the host's estimate of the gap (the one place the host clock
@@ -17,10 +19,13 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   ``on_event`` to hear them at once (called from the reader thread: keep it short).
 - A pulled cable (OSError/SerialException) gives a ``disconnected`` event at once; the
   samples already received stay; the link reopens the same path (or the same USB
-  VID:PID elsewhere) by itself, re-handshakes, restores the sample period, supply and
-  zero mode (never the motor voltage) and says ``connected``.
-- One program per board: an exclusive open (flock) and a lock file naming the program
-  and pid, so a second program gets "in use by minseg-tui (pid N)".
+  VID:PID elsewhere) by itself, re-handshakes, sends STOP, restores the sample period,
+  supply and zero mode and says ``connected``. The motor voltage is never restored (the
+  safe default is motor off): :attr:`Link.u_req` becomes 0 and, if the motor was on, a
+  ``motor`` event says so in one line, for the status line. A ``$BOOT`` mid-stream (the
+  board restarted by itself) does the same.
+- One program per board (:mod:`minseg_tui.device.port`): a second minseg-tui gets
+  "in use by minseg-tui (pid N)", a plain serial monitor cannot open the port.
 - Keep-alive: a PING every ``keepalive_s`` (0.25 s), so the board's 1 s watchdog stays
   quiet while the host lives.
 """
@@ -28,9 +33,7 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
 from __future__ import annotations
 
 import contextlib
-import os
 import re
-import tempfile
 import threading
 import time
 from collections import deque
@@ -38,18 +41,16 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-import numpy as np
-import serial
-from numpy.typing import NDArray
 from serial.serialutil import SerialException
 
-from minseg_tui import signals
 from minseg_tui.device import discovery
+from minseg_tui.device import port as port_io
 from minseg_tui.device import protocol as P
+from minseg_tui.device.samples import SampleBatch
+from minseg_tui.device.timebase import Timeline
 from minseg_tui.errors import DeviceError, InputError
 from minseg_tui.model.plant import MeterReading
 
-U32 = 2**32
 EVENT_KINDS = (
     "connected",
     "disconnected",
@@ -60,6 +61,7 @@ EVENT_KINDS = (
     "stepdone",
     "boot",
     "error",
+    "motor",
 )
 FLASH_HINT = "flash the firmware shipped with this minseg-tui (make -C firmware upload)"
 
@@ -71,91 +73,6 @@ class LinkEvent:
     kind: str
     message: str
     t_host: float
-
-
-@dataclass(frozen=True)
-class SampleBatch:
-    """Samples in arrival order: seq and t_us unwrapped (int64, us), count (int, encoder),
-    u_req (V, in force from the sample on), epoch (connection number), t_host (host
-    monotonic arrival time, s)."""
-
-    seq: NDArray[np.int64]
-    t_us: NDArray[np.int64]
-    count: NDArray[np.int64]
-    u_req: NDArray[np.float64]
-    epoch: NDArray[np.int64]
-    t_host: NDArray[np.float64]
-
-    def __len__(self) -> int:
-        return int(self.seq.size)
-
-    @property
-    def t(self) -> NDArray[np.float64]:
-        """Board time of each sample, s."""
-        return self.t_us / 1e6
-
-    @staticmethod
-    def from_rows(rows: list[tuple[int, int, int, int, int, float]]) -> SampleBatch:
-        """From (seq, t_us, count, u_mV, epoch, t_host) tuples."""
-        if not rows:
-            return SampleBatch.concat([])
-        a = np.array(rows, dtype=np.float64)
-        ints = np.array([r[:5] for r in rows], dtype=np.int64)
-        return SampleBatch(
-            ints[:, 0], ints[:, 1], ints[:, 2], ints[:, 3] / 1000.0, ints[:, 4], a[:, 5]
-        )
-
-    @staticmethod
-    def concat(batches: list[SampleBatch]) -> SampleBatch:
-        """One batch from several (an empty batch from none)."""
-        if not batches:
-            e = np.zeros(0, dtype=np.int64)
-            return SampleBatch(e, e, e, np.zeros(0), e, np.zeros(0))
-        return SampleBatch(*(np.concatenate([getattr(b, f) for b in batches]) for f in _FIELDS))
-
-
-_FIELDS = ("seq", "t_us", "count", "u_req", "epoch", "t_host")
-
-
-@dataclass(frozen=True)
-class Motion:
-    """Angle and velocity of a batch: t in s (board time), theta in rad, omega in rad/s."""
-
-    t: NDArray[np.float64]
-    theta: NDArray[np.float64]
-    omega: NDArray[np.float64]
-
-
-def motion(batch: SampleBatch, before: SampleBatch | None = None, window: float = 0.0) -> Motion:
-    """Angle and velocity (board timestamps, :func:`signals.timestamp_velocity`) of a batch.
-
-    ``before`` is what came earlier (only its tail is used), so the first samples of a
-    batch get a velocity too. Velocity restarts (0) at the first sample of each epoch.
-    """
-    n = len(batch)
-    if before is not None and len(before) and n:
-        keep = before.epoch == batch.epoch[0]
-        t_first = batch.t_us[0] / 1e6
-        keep &= before.t_us / 1e6 >= t_first - max(window, 0.0) - 1e-9
-        idx = np.nonzero(keep)[0]
-        if idx.size == 0 and before.epoch[-1] == batch.epoch[0]:
-            idx = np.array([len(before) - 1])
-        elif idx.size and window <= 0:
-            idx = idx[-1:]
-        if idx.size == 0 and before.epoch[-1] == batch.epoch[0]:
-            idx = np.array([len(before) - 1])
-        head = SampleBatch(*(getattr(before, f)[idx] for f in _FIELDS))
-        full = SampleBatch.concat([head, batch])
-    else:
-        full = batch
-    t = full.t_us / 1e6
-    omega = np.zeros(len(full))
-    bounds = np.flatnonzero(np.diff(full.epoch)) + 1
-    for seg in np.split(np.arange(len(full)), bounds):
-        if seg.size:
-            omega[seg] = signals.timestamp_velocity(t[seg], full.count[seg], window)
-    skip = len(full) - n
-    return Motion(t[skip:], signals.angle(full.count[skip:]), omega[skip:])
 
 
 @dataclass
@@ -176,26 +93,6 @@ class _Waiter:
     name: str
     done: threading.Event = field(default_factory=threading.Event)
     reply: P.Message | None = None
-
-
-# -- lock files: who holds a port --------------------------------------------------------
-def lock_path(port: str) -> str:
-    """The lock file for a port (in XDG_RUNTIME_DIR or the temp dir)."""
-    real = port if "://" in port else os.path.realpath(port)
-    base = os.environ.get("XDG_RUNTIME_DIR") or tempfile.gettempdir()
-    return os.path.join(
-        base, "minseg-tui-" + re.sub(r"[^A-Za-z0-9]+", "_", real).strip("_") + ".lock"
-    )
-
-
-def _holder(port: str) -> str:
-    try:
-        with open(lock_path(port)) as fh:
-            prog, pid = fh.read().split()[:2]
-        os.kill(int(pid), 0)
-        return f"{prog} (pid {int(pid)})"
-    except (OSError, ValueError):
-        return "another program"
 
 
 def _proto_of(line: str) -> tuple[str, int] | None:
@@ -239,18 +136,20 @@ class Link:
         self.ident: P.Ident | None = None
         self.stats = LinkStats()
         self._ser: Any = None
+        self._opened: dict[Any, port_io.OpenPort] = {}  # each open port and its lock file
         self._port_lock = threading.Lock()
         self._lock = threading.Lock()
         self._rows: deque[tuple[int, int, int, int, int, float]] = deque(maxlen=capacity)
         self._events: deque[LinkEvent] = deque(maxlen=10000)
         self._waiters: deque[_Waiter] = deque()
         self._restore: dict[str, str] = {}
+        self._u_req: float | None = 0.0  # V as the host knows it; None: a step sequence runs
+        self._step_low = 0.0  # V, where a step sequence ends
         self._closing = threading.Event()
         self._thread: threading.Thread | None = None
         self._clock: Callable[[], float] = time.monotonic
-        self._epoch = -1
-        self._raw: tuple[int, int] | None = None
-        self._last: tuple[int, int, float] | None = None  # last (seq, t_us, t_host) kept
+        self._timeline = Timeline()
+        self._bad_lines = 0  # lines that failed the checksum or the format
         self._last_rx = 0.0
         self._last_tx = 0.0
         self._silent = False
@@ -307,22 +206,10 @@ class Link:
         return self._ser is not None
 
     def _open_port(self, port: str) -> Any:
-        try:
-            ser = serial.serial_for_url(
-                port, baudrate=self.baud, timeout=0.05, write_timeout=1.0, exclusive=True
-            )
-        except SerialException as exc:
-            text = str(exc)
-            if "lock" in text.lower() or "busy" in text.lower():
-                raise DeviceError(
-                    f"{port} is in use by {_holder(port)}: close that program first "
-                    "(one program per board)"
-                ) from None
-            raise DeviceError(f"cannot open {port}: {text}") from None
-        except (OSError, ValueError) as exc:
-            raise DeviceError(f"cannot open {port}: {exc}") from None
-        with contextlib.suppress(OSError), open(lock_path(port), "w") as fh:
-            fh.write(f"{self.program} {os.getpid()}\n")
+        """Open the port for this program only (:mod:`minseg_tui.device.port`)."""
+        opened = port_io.open_exclusive(port, self.baud, self.program)
+        ser = opened.ser
+        self._opened[ser] = opened
         clock = getattr(ser, "board_clock", None)
         self._clock = clock if callable(clock) else time.monotonic
         if self.board is None and hasattr(ser, "board"):
@@ -330,26 +217,23 @@ class Link:
         return ser
 
     def _close_port(self, ser: Any) -> None:
-        with contextlib.suppress(Exception):
-            ser.close()
-        path = lock_path(self.port)
-        try:
-            with open(path) as fh:
-                mine = fh.read().split()[1:2] == [str(os.getpid())]
-            if mine:
-                os.unlink(path)
-        except OSError:
-            pass
+        opened = self._opened.pop(ser, None)
+        if opened is not None:
+            port_io.close(opened)
+        else:
+            with contextlib.suppress(Exception):
+                ser.close()
 
     # -- the handshake --------------------------------------------------------------------
     def _read_lines(self, ser: Any, until: float, want: Callable[[str], bool]) -> str | None:
         """Read lines until one satisfies ``want`` (returned) or the clock passes ``until``."""
         buf = b""
         while self._clock() < until:
-            buf += ser.read(max(1, ser.in_waiting))
+            data: bytes = ser.read(max(1, ser.in_waiting))
+            buf += data
             *lines, buf = buf.split(b"\n")
             for raw in lines:
-                line = raw.decode("ascii", "replace").rstrip("\r")
+                line: str = raw.decode("ascii", "replace").rstrip("\r")
                 if want(line):
                     return line
         return None
@@ -431,6 +315,36 @@ class Link:
         if waiter.reply is None:
             raise DeviceError(f"{self.port}: the board was disconnected before it answered {name}")
         return waiter.reply
+
+    def _note_motor(self, ok: P.Ok) -> None:
+        """Follow the requested voltage through the board's replies (V, STEP, STOP), in the
+        reader thread, so a watchdog or restart that comes after a reply wins."""
+        if ok.command == "V" and ok.values:
+            self._u_req = int(ok.values[0]) / 1000.0
+        elif ok.command == "STEP" and ok.values:
+            self._u_req, self._step_low = None, int(ok.values[0]) / 1000.0
+        elif ok.command == "STOP":
+            self._u_req = 0.0
+
+    @property
+    def u_req(self) -> float | None:
+        """The voltage (V) the motor is requested at, as far as the link knows: what the last
+        V asked for, 0 after STOP, the board's watchdog or a restart (a reconnect restores
+        no voltage), None while a board-timed step sequence runs."""
+        return self._u_req
+
+    def _motor_off(self, why: str) -> None:
+        """The board restarted (``why``: what happened, said first): its motor is off. Say so
+        if it was not."""
+        was, self._u_req = self._u_req, 0.0
+        if was == 0.0:
+            return
+        before = "running a step sequence" if was is None else f"at {was:g} V"
+        self._emit(
+            "motor",
+            f"{why}: the motor is off (it was {before}); nothing is restored, "
+            "set the voltage again",
+        )
 
     def _drop_waiter(self, waiter: _Waiter) -> None:
         with self._lock, contextlib.suppress(ValueError):
@@ -550,6 +464,7 @@ class Link:
                         continue
                     self._on_line(line)
                 if len(buf) > P.MAX_LINE + 1:
+                    self._bad_lines += 1
                     self.stats.corrupt += 1
                     buf.clear()
                     skipping = True
@@ -565,6 +480,7 @@ class Link:
             msg = P.parse(raw)
         except P.ProtocolError:
             if raw.strip(b"\r"):
+                self._bad_lines += 1
                 self.stats.corrupt += 1
             return
         self._last_rx = self._clock()
@@ -576,17 +492,21 @@ class Link:
         elif isinstance(msg, P.Ok | P.Err | P.Ident | P.Meter):
             self._on_reply(msg)
         elif isinstance(msg, P.EvWatchdog):
+            self._u_req = 0.0
             self._emit("watchdog", "the board's watchdog stopped the motor (host silent > 1 s)")
         elif isinstance(msg, P.EvStep):
             self._emit("step", f"step edge {msg.k} of {msg.n}")
         elif isinstance(msg, P.EvStepDone):
+            self._u_req = self._step_low
             self._emit("stepdone", "step sequence done")
         elif isinstance(msg, P.Boot):
             self._new_epoch()
             self._emit("boot", f"{self.port}: the board restarted ({msg.fw})")
+            self._motor_off(f"{self.port}: the board restarted")
 
     def _on_reply(self, msg: P.Message) -> None:
         if isinstance(msg, P.Ok):
+            self._note_motor(msg)  # here, in order with the board's events
             name = msg.command
         elif isinstance(msg, P.Ident):
             name = "ID"
@@ -606,37 +526,21 @@ class Link:
             target.done.set()
 
     def _new_epoch(self) -> None:
-        self._epoch += 1
-        self._raw = None
+        self._timeline.new_epoch()
 
     def _on_sample(self, s: P.SampleLine) -> None:
-        t_host = time.monotonic()
-        if self._raw is not None:
-            dseq = (s.seq - self._raw[0]) % U32
-            if dseq == 0 or dseq >= U32 // 2:  # a repeat or a jump back: a reset we missed
-                if dseq == 0:
-                    self.stats.corrupt += 1
-                    return
-                self._new_epoch()
-        if self._raw is None:
-            if self._last is None:
-                seq, t_us = s.seq, s.t_us
-            else:
-                gap = max(round((t_host - self._last[2]) * 1e6), 1)
-                seq, t_us = self._last[0] + 1, self._last[1] + gap
-        else:
-            assert self._last is not None
-            dseq = (s.seq - self._raw[0]) % U32
-            self.stats.dropped += dseq - 1
-            seq = self._last[0] + dseq
-            t_us = self._last[1] + (s.t_us - self._raw[1]) % U32
-        self._raw = (s.seq, s.t_us)
-        self._last = (seq, t_us, t_host)
+        tl = self._timeline
+        rows = tl.place(s, self._clock(), time.monotonic())
+        self.stats.dropped = tl.dropped
+        self.stats.corrupt = self._bad_lines + tl.refused + tl.repeated
+        if not rows:
+            return
         with self._lock:
-            if len(self._rows) == self._rows.maxlen:
-                self.stats.overflow += 1
-            self._rows.append((seq, t_us, s.count, s.u_mV, self._epoch, t_host))
-        self.stats.samples += 1
+            for row in rows:
+                if len(self._rows) == self._rows.maxlen:
+                    self.stats.overflow += 1
+                self._rows.append(row)
+        self.stats.samples += len(rows)
 
     # -- losing and finding the board -----------------------------------------------------
     def _fail_waiters(self) -> None:
@@ -685,12 +589,14 @@ class Link:
             self._new_epoch()
             with self._port_lock:
                 self._ser = ser
-            for line in self._restore.values():
+            # motor off whatever the board did meanwhile; then period, supply, zero mode, stream
+            for line in (P.encode(P.Stop()).decode().strip(), *self._restore.values()):
                 with contextlib.suppress(SerialException, OSError, DeviceError):
                     self._write((line + "\n").encode())
             self.stats.reconnects += 1
             self._silent = False
             self._emit("connected", f"{path}: reconnected to {ident.board} {ident.fw}")
+            self._motor_off(f"{path}: reconnected")
             return
         if mismatch is not None:  # only a board with another protocol answered: say so, stop
             self._gave_up = True

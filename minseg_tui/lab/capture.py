@@ -8,7 +8,9 @@ Inputs are the recent samples of one estimate of the speed: times ``t`` (s, incr
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import asdict, dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -38,15 +40,15 @@ class Capture:
         return asdict(self)
 
     @classmethod
-    def from_json(cls, d: dict[str, object]) -> Capture:
-        """Inverse of :meth:`to_json`."""
+    def from_json(cls, d: Mapping[str, Any]) -> Capture:
+        """Inverse of :meth:`to_json` (``d`` checked by :data:`minseg_tui.lab.schema.CAPTURE`)."""
         return cls(
             omega_ss=float(d["omega_ss"]),
             spread=float(d["spread"]),
-            t0=float(d["t0"]),  # type: ignore[arg-type]
+            t0=float(d["t0"]),
             t1=float(d["t1"]),
             n=int(d["n"]),
-            velocity=str(d.get("velocity", "timestamps")),  # type: ignore[arg-type]
+            velocity=str(d.get("velocity", "timestamps")),
         )
 
 

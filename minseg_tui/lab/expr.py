@@ -128,6 +128,7 @@ def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Fo
 
 def _eval(node: ast.AST, env: Mapping[str, float]) -> float:
     if isinstance(node, ast.Constant):
+        assert isinstance(node.value, int | float)  # the parser lets no other constant in
         return float(node.value)
     if isinstance(node, ast.Name):
         if node.id in env:

@@ -24,14 +24,18 @@ import json
 import math
 import os
 import time
+from array import array
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
+from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, write_step_log
-from minseg_tui.lab.store import atomic_write_bytes, fsync_dir
+from minseg_tui.lab.schema import PARTIAL_HEADER
+from minseg_tui.lab.store import RUNS_DIR, atomic_write_bytes, fsync_dir
 from minseg_tui.model.identify import Reading, Row, u_ss_at
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
@@ -79,18 +83,18 @@ class RunInfo:
         }
 
     @classmethod
-    def from_json(cls, d: Mapping[str, object]) -> RunInfo:
-        """Inverse of :meth:`to_json`."""
+    def from_json(cls, d: Mapping[str, Any]) -> RunInfo:
+        """Inverse of :meth:`to_json` (``d`` checked by :data:`minseg_tui.lab.schema.RUN`)."""
         return cls(
             name=str(d["name"]),
             file=str(d["file"]),
             kind=str(d.get("kind", "free")),
             ts=float(d.get("ts", 0.025)),
-            samples=int(d.get("samples", 0)),  # type: ignore[arg-type]
+            samples=int(d.get("samples", 0)),
             dropped=int(d.get("dropped", 0)),
-            started=str(d.get("started", "")),  # type: ignore[arg-type]
+            started=str(d.get("started", "")),
             interrupted=bool(d.get("interrupted", False)),
-            plan={str(k): float(v) for k, v in dict(d.get("plan") or {}).items()},  # type: ignore[call-overload]
+            plan={str(k): float(v) for k, v in dict(d.get("plan") or {}).items()},
         )
 
 
@@ -145,6 +149,11 @@ class Recorder:
 
     Call :meth:`append` (or :meth:`extend`) for each sample, then ``Session.finish_run``.
     ``clock`` is the monotonic clock deciding when to flush (injectable for tests).
+
+    Every sample also stays in memory (32 bytes each) until the run is kept, so a write
+    that fails (a full disk, a drive pulled out) loses nothing: :attr:`problem` says why,
+    the next flush tries again, and the run is built from memory when it ends. Only
+    opening the partial file at the start may raise (OSError).
     """
 
     def __init__(
@@ -155,14 +164,25 @@ class Recorder:
         clock: Callable[[], float] = time.monotonic,
     ) -> None:
         self.path = Path(path)
+        self.header = dict(header)
         self.flush_interval = flush_interval
         self._clock = clock
-        self._buffer: list[str] = []
+        self._samples = array("q")  # seq, t_us, count, u_mV of every sample
+        self._written = 0  # samples on disk
+        self._torn = False  # a failed write may have left half a line
         self._first_unflushed: float | None = None
-        self.samples = 0
+        self.problem: str | None = None
+        """Why the last write failed (None while everything is on disk)."""
         self.closed = False
-        self._fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_APPEND, 0o644)
-        self._write(f"# {json.dumps(dict(header), sort_keys=True)}\n{_HEADER}\n")
+        fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_APPEND, 0o644)
+        self._fd: int | None = fd
+        try:
+            self._write(f"# {json.dumps(self.header, sort_keys=True)}\n{_HEADER}\n")
+        except OSError:
+            os.close(fd)
+            with contextlib.suppress(OSError):
+                os.unlink(self.path)
+            raise
         fsync_dir(self.path.parent)
 
     @property
@@ -170,7 +190,19 @@ class Recorder:
         """The run's name (file stem)."""
         return self.path.name[: -len(PARTIAL_SUFFIX)]
 
+    @property
+    def samples(self) -> int:
+        """Samples received so far."""
+        return len(self._samples) // 4
+
+    @property
+    def on_disk(self) -> bool:
+        """True when every sample received is written and fsynced."""
+        return self._written == self.samples and self.problem is None
+
     def _write(self, text: str) -> None:
+        if self._fd is None:
+            self._fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_APPEND, 0o644)
         data = memoryview(text.encode("ascii"))
         while data:
             n = os.write(self._fd, data)
@@ -182,8 +214,7 @@ class Recorder:
         requested voltage (mV) in force from this sample on."""
         if self.closed:
             raise ValueError("the run is finished")
-        self._buffer.append(f"{int(seq)},{int(t_us)},{int(count)},{int(u_mV)}\n")
-        self.samples += 1
+        self._samples.extend((int(seq), int(t_us), int(count), int(u_mV)))
         now = self._clock()
         if self._first_unflushed is None:
             self._first_unflushed = now
@@ -204,35 +235,90 @@ class Recorder:
         ):
             self.flush()
 
-    def flush(self) -> None:
-        """Write and fsync every sample received so far."""
-        if self._buffer:
-            self._write("".join(self._buffer))
-            self._buffer.clear()
+    def flush(self) -> bool:
+        """Write and fsync every sample received so far; False (and :attr:`problem` set, the
+        samples kept in memory, a retry after the flush interval) when the write fails."""
+        n = self.samples
+        if self._written == n and self.problem is None:
+            self._first_unflushed = None
+            return True
+        rows = self._samples[4 * self._written : 4 * n]
+        text = "".join(
+            f"{rows[k]},{rows[k + 1]},{rows[k + 2]},{rows[k + 3]}\n" for k in range(0, len(rows), 4)
+        )
+        try:
+            self._write(("\n" if self._torn else "") + text)
+        except OSError as exc:
+            self.problem = f"{exc.strerror or type(exc).__name__} ({self.path})"
+            self._torn = True
+            if self._fd is not None:
+                with contextlib.suppress(OSError):
+                    os.close(self._fd)
+                self._fd = None
+            self._first_unflushed = self._clock()
+            return False
+        self._written, self._torn, self.problem = n, False, None
         self._first_unflushed = None
+        return True
 
     def close(self) -> None:
-        """Flush and close the file (the partial file stays until the run is finished)."""
+        """Flush (as far as it can) and close the file; the samples stay in memory and the
+        partial file until the run is kept. Never raises."""
         if not self.closed:
             self.flush()
-            os.close(self._fd)
+            if self._fd is not None:
+                with contextlib.suppress(OSError):
+                    os.close(self._fd)
+                self._fd = None
             self.closed = True
+
+    def raw(self) -> RawRun:
+        """Every sample received, from memory, with the header."""
+        arr = np.frombuffer(self._samples, dtype=np.int64).reshape(-1, 4).copy()
+        return RawRun(
+            header=self.header, seq=arr[:, 0], t_us=arr[:, 1], count=arr[:, 2], u_mV=arr[:, 3]
+        )
 
 
 @dataclass(frozen=True)
 class RawRun:
-    """Samples read back from a partial file, and its header (name, kind, ts, plan, started)."""
+    """Samples read back from a partial file (or a Recorder's memory), and its header (name,
+    kind, ts, plan, started; checked against :data:`minseg_tui.lab.schema.PARTIAL_HEADER`,
+    broken fields left out and said in ``damage``)."""
 
     header: Mapping[str, object]
     seq: np.ndarray
     t_us: np.ndarray
     count: np.ndarray
     u_mV: np.ndarray
+    damage: str | None = None
+
+
+def _header(line: str) -> tuple[dict[str, object], str | None]:
+    """The header of a partial file from its ``# {...}`` line: the sound fields, and what
+    was wrong (None when nothing)."""
+    try:
+        value = json.loads(line[2:])
+    except (ValueError, RecursionError):
+        return {}, "its header is not readable JSON"
+    if not isinstance(value, dict):
+        return {}, "its header is not a JSON object"
+    kept, broken = {}, []
+    for name, node in PARTIAL_HEADER.optional.items():
+        if name in value:
+            why = node.check(value[name], name)
+            if why:
+                broken.append(why)
+            else:
+                kept[name] = value[name]
+    return kept, ("its header has a broken " + "; ".join(broken)) if broken else None
 
 
 def read_partial(path: Path) -> RawRun:
-    """The samples of a partial file; a torn or malformed line (a crash mid-write) is skipped."""
+    """The samples of a partial file; a torn or malformed line (a crash mid-write) is
+    skipped, a damaged header is left out field by field (see :class:`RawRun`)."""
     header: dict[str, object] = {}
+    damage = None
     rows: list[tuple[int, int, int, int]] = []
     text = Path(path).read_bytes().decode("ascii", errors="replace")
     lines = text.split("\n")
@@ -240,8 +326,7 @@ def read_partial(path: Path) -> RawRun:
         lines = lines[:-1]  # the last line was cut by the crash
     for line in lines:
         if line.startswith("# "):
-            with contextlib.suppress(ValueError):
-                header = json.loads(line[2:])
+            header, damage = _header(line)
             continue
         parts = line.split(",")
         if len(parts) != 4:
@@ -251,7 +336,20 @@ def read_partial(path: Path) -> RawRun:
         except ValueError:
             continue
     arr = np.array(rows, dtype=np.int64).reshape(-1, 4)
-    return RawRun(header=header, seq=arr[:, 0], t_us=arr[:, 1], count=arr[:, 2], u_mV=arr[:, 3])
+    return RawRun(
+        header=header, seq=arr[:, 0], t_us=arr[:, 1], count=arr[:, 2], u_mV=arr[:, 3], damage=damage
+    )
+
+
+def ts_of(raw: RawRun) -> float:
+    """The run's nominal sample period, s: its header's, else the median interval of its
+    board times (rounded to 1 us), else 0.025 s."""
+    ts = raw.header.get("ts")
+    if isinstance(ts, int | float) and not isinstance(ts, bool) and ts > 0:
+        return float(ts)
+    steps = np.diff(_unwrap(raw.t_us))
+    steps = steps[steps > 0]
+    return round(float(np.median(steps)) / 1e6, 6) if steps.size else 0.025
 
 
 def _unwrap(values: np.ndarray, bits: int = 32) -> np.ndarray:
@@ -337,3 +435,91 @@ def remap_log(path: Path, table: Sequence[tuple[float, float]]) -> None:
     meta["u"] = how
     meta.pop("format", None)
     write_log_atomic(path, StepLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta))
+
+
+# -- the runs of a session folder --------------------------------------------------------------
+
+
+def new_name(folder: Path, kind: str, taken: Iterable[str]) -> str:
+    """The first free ``<kind>-<k>`` among ``taken`` names and the files in ``folder/runs``."""
+    names = set(taken) | {p.name.split(".")[0] for p in (folder / RUNS_DIR).iterdir()}
+    k = 1
+    while f"{kind}-{k}" in names:
+        k += 1
+    return f"{kind}-{k}"
+
+
+def run_header(
+    name: str, kind: str, ts: float, started: str, plan: Mapping[str, float] | None
+) -> dict[str, object]:
+    """The header line of a partial file: name, kind, ts (s), started (ISO) and the plan."""
+    return {"name": name, "kind": kind, "ts": ts, "started": started, "plan": dict(plan or {})}
+
+
+def keep_run(
+    folder: Path,
+    name: str,
+    raw: RawRun,
+    table: Sequence[tuple[float, float]],
+    interrupted: bool,
+) -> RunInfo | None:
+    """Write the samples of ``raw`` as ``runs/<name>.csv`` under ``folder`` (atomically) and
+    return the run's record; None when it holds fewer than 2 samples. OSError when the log
+    cannot be written."""
+    if raw.seq.size < 2:
+        return None
+    ts = ts_of(raw)
+    log, dropped = build_log(raw, table, ts)
+    file = f"{RUNS_DIR}/{name}.csv"
+    write_log_atomic(folder / file, log)
+    plan = raw.header.get("plan")
+    return RunInfo(
+        name=name,
+        file=file,
+        kind=str(raw.header.get("kind", "free")),
+        ts=ts,
+        samples=len(log),
+        dropped=dropped,
+        started=str(raw.header.get("started", "")),
+        interrupted=interrupted,
+        plan={str(k): float(v) for k, v in plan.items()} if isinstance(plan, dict) else {},
+    )
+
+
+def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
+    """Copy the step log at ``path`` (checked by read_step_log; InputError with file and line
+    if it is not one) into ``folder/runs/<name>.csv``; its record."""
+    log = read_step_log(Path(path))
+    file = f"{RUNS_DIR}/{name}.csv"
+    write_log_atomic(
+        folder / file,
+        StepLog(
+            t=log.t,
+            u=log.u,
+            omega=log.omega,
+            extra=log.extra,
+            metadata={**log.metadata, "imported_from": str(path)},
+        ),
+    )
+    return RunInfo(
+        name=name,
+        file=file,
+        kind="imported",
+        ts=log.ts,
+        samples=len(log),
+        dropped=0,
+        started=started,
+    )
+
+
+def remap_runs(folder: Path, runs: Iterable[RunInfo], table: Sequence[tuple[float, float]]) -> None:
+    """Recompute the ``u`` column of every recorded (not imported) run with a new table."""
+    for r in runs:
+        if r.kind == "imported":
+            continue
+        path = folder / r.file
+        if path.exists():
+            try:
+                remap_log(path, table)
+            except InputError:
+                continue

@@ -7,6 +7,16 @@ included. Derived numbers (Tasks 6-15) are never stored: :meth:`Session.results`
 computes them from the entries and the chosen run with :mod:`minseg_tui.model.identify`,
 so changing an earlier entry changes every later result.
 
+The session holds the state and saves it; its parts are modules of their own:
+:mod:`~minseg_tui.lab.entries` (what was typed, read and revised),
+:mod:`~minseg_tui.lab.results` (Tasks 6-15, the table, the model check),
+:mod:`~minseg_tui.lab.runs` (recording and keeping runs), :mod:`~minseg_tui.lab.store`
+(the files on disk, the lock, what a failed save is), :mod:`~minseg_tui.lab.schema`
+(the session file's one schema) and :mod:`~minseg_tui.lab.answers` (checking answers).
+
+A save that fails never raises: the session goes on in memory and says why in
+:attr:`Session.save_problem` (see :class:`Session`).
+
 Units: entries are stored as typed (``text``) and as parsed SI values (``value``: V, A,
 ohm, rad/s, s, ...); the form unit of each field is in :mod:`minseg_tui.lab.steps`.
 
@@ -19,11 +29,13 @@ Typical use::
     rec.append(seq, t_us, count, u_mV) ...
     s.finish_run(rec)
     s.results().identification.k_v                          # Tasks 6-15
+    if s.save_problem: print(s.save_problem.line)           # not on disk yet: s.save() retries
     s.close()
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import re
 from collections.abc import Callable, Mapping, Sequence
@@ -33,33 +45,55 @@ from pathlib import Path
 from typing import Any
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab import answers
 from minseg_tui.lab import steps as lab_steps
 from minseg_tui.lab.capture import DEFAULT_WINDOW, Capture, capture
-from minseg_tui.lab.entry import parse_quantity
+from minseg_tui.lab.entries import Entry, parsed_values, read_entry, revise
 from minseg_tui.lab.expr import Formula
 from minseg_tui.lab.files import read_step_log
+from minseg_tui.lab.results import (
+    Comparison,
+    ModelCheck,
+    Notice,
+    Results,
+    TableRow,
+    check_run,
+    compute,
+)
 from minseg_tui.lab.runs import (
+    FLUSH_INTERVAL,
     PARTIAL_SUFFIX,
+    RawRun,
     Recorder,
     RunInfo,
-    build_log,
+    import_log,
+    keep_run,
+    new_name,
     read_partial,
-    remap_log,
-    write_log_atomic,
+    remap_runs,
+    run_header,
+    ts_of,
 )
+from minseg_tui.lab.schema import KIND, SCHEMA
 from minseg_tui.lab.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
 from minseg_tui.lab.store import (
-    KIND,
     RUNS_DIR,
-    SCHEMA,
     SESSION_FILE,
-    Lock,
+    SaveProblem,
     SessionDamaged,
+    SessionNotWritable,
+    atomic_write_bytes,
     atomic_write_text,
+    clean_leftovers,
+    exists,
+    new_session_folder,
+    os_reason,
     read_session_file,
+    salvage_session_file,
+    take_lock,
 )
-from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.identify import Identification, Reading, identify
+from minseg_tui.lock import FileLock
+from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog
 
 Clock = Callable[[], datetime]
@@ -69,195 +103,41 @@ def _now() -> datetime:
     return datetime.now(UTC)
 
 
-@dataclass(frozen=True)
-class Entry:
-    """What was typed in one field, and what it was read as.
-
-    key: the field's key; text: exactly as typed; ok: accepted; value: SI float for a
-    quantity (or a formula without names), tuple of option indices for a choice, None
-    otherwise; unit: the unit it was typed in; message: why it was refused, or a note on
-    how it was read (``read as 47 mA``); warnings: plausibility warnings; source: ``typed``,
-    ``capture`` or ``meter``; at: ISO time; history: earlier (text, at) pairs, oldest first.
-
-    A refused text never displaces an accepted one: the accepted entry stays in effect and
-    carries the refused attempt in ``refused`` (text, message, at) until something is
-    accepted again, so neither what was typed last nor what was entered before is lost.
-    """
-
-    key: str
-    text: str
-    ok: bool
-    value: float | tuple[int, ...] | None = None
-    unit: str = ""
-    message: str = ""
-    warnings: tuple[str, ...] = ()
-    source: str = "typed"
-    at: str = ""
-    history: tuple[tuple[str, str], ...] = ()
-    refused: tuple[str, str, str] | None = None
-
-    @property
-    def typed(self) -> str:
-        """What the field shows: the refused attempt if there is one, else the text in effect."""
-        return self.refused[0] if self.refused else self.text
-
-    def to_json(self) -> dict[str, Any]:
-        """JSON-ready dict (the session file's form)."""
-        out = {
-            "text": self.text,
-            "ok": self.ok,
-            "value": list(self.value) if isinstance(self.value, tuple) else self.value,
-            "unit": self.unit,
-            "message": self.message,
-            "warnings": list(self.warnings),
-            "source": self.source,
-            "at": self.at,
-            "history": [list(h) for h in self.history],
-        }
-        if self.refused:
-            out["refused"] = list(self.refused)
-        return out
-
-    @classmethod
-    def from_json(cls, key: str, d: Mapping[str, Any]) -> Entry:
-        """Inverse of :meth:`to_json`."""
-        v = d.get("value")
-        value: float | tuple[int, ...] | None = (
-            tuple(int(x) for x in v)
-            if isinstance(v, list)
-            else (float(v) if isinstance(v, int | float) else None)
-        )
-        return cls(
-            key=key,
-            text=str(d["text"]),
-            ok=bool(d["ok"]),
-            value=value,
-            unit=str(d.get("unit", "")),
-            message=str(d.get("message", "")),
-            warnings=tuple(str(w) for w in d.get("warnings", [])),
-            source=str(d.get("source", "typed")),
-            at=str(d.get("at", "")),
-            history=tuple((str(h[0]), str(h[1])) for h in d.get("history", [])),
-            refused=(str(d["refused"][0]), str(d["refused"][1]), str(d["refused"][2]))
-            if d.get("refused")
-            else None,
-        )
-
-
-@dataclass(frozen=True)
-class Notice:
-    """A warning to show: ``source`` is a field key or a finding code; ``message`` one line."""
-
-    source: str
-    message: str
-
-
-@dataclass(frozen=True)
-class TableRow:
-    """One row of the table of Tasks 4-9 (None where not known yet).
-
-    level: requested u_req (V); u_ss (V); omega_ss (rad/s); spread (rad/s, of the capture);
-    window: (t0, t1) s of the capture; i_ss (A); k_v (V s/rad); f (N m s/rad).
-    """
-
-    level: float
-    u_ss: float | None = None
-    omega_ss: float | None = None
-    spread: float | None = None
-    window: tuple[float, float] | None = None
-    i_ss: float | None = None
-    k_v: float | None = None
-    f: float | None = None
-
-
-@dataclass(frozen=True)
-class Results:
-    """Tasks 6-15 computed now from the entries: ``identification`` (None when the table is
-    not far enough), the run used for Tasks 11-15 (None without one), and ``problems``:
-    one line each for what keeps a result from being computed."""
-
-    identification: Identification | None
-    run: str | None
-    problems: tuple[str, ...] = ()
-
-    def to_json(self) -> dict[str, object] | None:
-        """The --json dict of ``minseg-tui identify`` for these results, or None."""
-        return self.identification.to_json() if self.identification else None
-
-    def lookup(self, path: str) -> float | str | None:
-        """A computed value by path (``k_v``, ``step.K``, ``step.T_63``, ``omega_at_5V``,
-        ``model`` as a sentence); None when not computed."""
-        d = self.to_json()
-        if d is None:
-            return None
-        if path == "model":
-            m = d.get("model")
-            if not isinstance(m, dict):
-                return None
-            return f"{m['T']:.3g} omega' = -omega + {m['K']:.3g} u_A"
-        node: object = d
-        for part in path.split("."):
-            if not isinstance(node, dict) or part not in node:
-                return None
-            node = node[part]
-        return float(node) if isinstance(node, int | float) else None
-
-
-@dataclass(frozen=True)
-class Comparison:
-    """A student's own reading beside the computed value (same SI unit; ``unit`` is the
-    form unit for display); rel_diff = own / computed - 1 when both are numbers."""
-
-    key: str
-    label: str
-    unit: str
-    own: float | str | None
-    computed: float | str | None
-    rel_diff: float | None
-
-
-@dataclass(frozen=True)
-class ModelCheck:
-    """The model check of one run: its name, the result (None when it could not run) and,
-    then, why in one line (``problem``)."""
-
-    run: str | None
-    result: CheckResult | None
-    problem: str = ""
-
-
 def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
 
 
-def _parse_choice(text: str, n: int) -> tuple[int, ...]:
-    """'b', 'B, c', '2', '2 3' -> option indices; ValueError if unreadable."""
-    parts = [p for p in re.split(r"[\s,;]+", text.strip()) if p]
-    out = []
-    for p in parts:
-        if len(p) == 1 and p.isalpha():
-            k = ord(p.lower()) - ord("a")
-        elif p.isdigit():
-            k = int(p) - 1
-        else:
-            raise ValueError(p)
-        if not 0 <= k < n:
-            raise ValueError(p)
-        out.append(k)
-    if not out:
-        raise ValueError(text)
-    return tuple(sorted(set(out)))
+@dataclass(frozen=True)
+class Moved:
+    """Where :meth:`Session.move_to` put the session, and the run files it could not
+    bring (one line each: the file and why; the run stays listed, its log missing)."""
+
+    folder: Path
+    left_behind: tuple[str, ...] = ()
 
 
 class Session:
     """One group's lab session, saved in its folder after every change.
 
     Create with :meth:`create` or :meth:`open`; close with :meth:`close` (or use ``with``).
-    A session opened with ``readonly=True`` (for reports) takes no lock and never writes.
+    A session opened with ``readonly=True`` (for reports) takes no lock and never writes;
+    if its file breaks the schema, what is sound is shown and :attr:`damaged` says what
+    is not.
+
+    A save that fails (a full disk, a read-only folder, a drive pulled out) never raises
+    and never loses anything: the session keeps working in memory, :attr:`save_problem`
+    says in one line what is wrong and where it will save, every change (and every call
+    of :meth:`save`) tries again, and :meth:`move_to` saves it in another folder.
     """
 
     def __init__(
-        self, folder: Path, data: dict[str, Any], *, lock: Lock | None, clock: Clock, readonly: bool
+        self,
+        folder: Path,
+        data: dict[str, Any],
+        *,
+        lock: FileLock | None,
+        clock: Clock,
+        readonly: bool,
     ) -> None:
         self.folder = Path(folder)
         self._data = data
@@ -274,10 +154,20 @@ class Session:
         self._results: tuple[object, Results] | None = None
         self._checks: dict[tuple[int, str], ModelCheck] = {}
         self._run_version = 0
+        self._problem: SaveProblem | None = None
+        self._unsaved = False
+        self._unkept: list[Recorder] = []  # finished recordings whose log is not written yet
+        self._remap_due = False  # the runs' u column waits for a table change to be written
         self.recovered: list[str] = []
         """Names of runs rebuilt at open from a recording a crash interrupted."""
+        self.recovery_notes: list[str] = []
+        """One line for each thing opening had to mend: leftovers removed, a damaged run
+        header (the run rebuilt without it), a recording that could not be kept yet."""
+        self.damaged: str | None = None
+        """For a read-only session whose file breaks the schema: what was left out, in one
+        line (None when the file is sound)."""
 
-    # -- life cycle ----------------------------------------------------------------------------
+    # -- life cycle and saving -----------------------------------------------------------------
 
     @classmethod
     def create(
@@ -291,32 +181,25 @@ class Session:
         """A new session folder under ``root`` (created if needed), locked and saved.
 
         ``date`` defaults to today (ISO); the id defaults to ``<date>-<members>``, made
-        unique with ``-2``, ``-3``, ...
+        unique with ``-2``, ``-3``, ... SessionNotWritable (one line) when no session can
+        be made under ``root``; a first save that fails is a :attr:`save_problem`.
         """
         root = Path(root)
-        root.mkdir(parents=True, exist_ok=True)
         now = clock()
         date = date or now.date().isoformat()
         base = session_id or _slug(f"{date} {' '.join(members)}") or "session"
-        sid, k = base, 1
-        while (root / sid).exists():
-            if session_id:
-                raise InputError(
-                    str(root / sid),
-                    None,
-                    "a session with this id exists already; open it or pick another id",
-                )
-            k += 1
-            sid = f"{base}-{k}"
-        folder = root / sid
-        (folder / RUNS_DIR).mkdir(parents=True)
-        lock = Lock(folder)
-        lock.acquire()
+        if session_id and exists(root / session_id):
+            raise InputError(
+                str(root / session_id),
+                None,
+                "a session with this id exists already; open it or pick another id",
+            )
+        folder, lock = new_session_folder(root, base)
         stamp = now.isoformat(timespec="seconds")
         data: dict[str, Any] = {
             "kind": KIND,
             "schema": SCHEMA,
-            "id": sid,
+            "id": folder.name,
             "members": [str(m) for m in members],
             "date": date,
             "created": stamp,
@@ -333,16 +216,37 @@ class Session:
 
     @classmethod
     def open(cls, folder: Path, clock: Clock = _now, readonly: bool = False) -> Session:
-        """Open the session in ``folder``: take its lock (SessionLocked if another live
-        program has it), read it (SessionMissing / SessionDamaged with one line; a damaged
-        file is never written over) and rebuild any run a crash interrupted."""
+        """Open the session in ``folder``: take its lock (SessionLocked if another program
+        has it; SessionNotWritable if the folder cannot be written), read it (SessionMissing
+        / SessionDamaged with one line; a damaged file is never written over), remove what
+        a killed program left and rebuild any run a crash interrupted.
+
+        ``readonly=True`` takes no lock and writes nothing; a file that breaks the schema
+        then opens with what is sound in it (:attr:`damaged` says what is not).
+        """
         folder = Path(folder)
-        lock = None
-        if not readonly:
-            if not (folder / SESSION_FILE).exists():
-                read_session_file(folder / SESSION_FILE)  # raises SessionMissing
-            lock = Lock(folder)
-            lock.acquire()
+        if readonly:
+            data, damaged = salvage_session_file(folder / SESSION_FILE)
+            if data["current_step"] not in STEP_INDEX:
+                damaged = damaged or (
+                    f"{folder / SESSION_FILE}: names an unknown step "
+                    f"{data['current_step']!r}; shown from the first step"
+                )
+                data["current_step"] = STEPS[0].id
+            s = cls(folder, data, lock=None, clock=clock, readonly=True)
+            s.damaged = damaged
+            return s
+        if not exists(folder / SESSION_FILE):
+            read_session_file(folder / SESSION_FILE)  # raises SessionMissing
+        try:
+            lock = take_lock(folder)
+        except OSError as exc:
+            raise SessionNotWritable(
+                str(folder),
+                None,
+                f"the session folder cannot be written ({os_reason(exc)}): open it read-only "
+                "(minseg-tui report) or copy the folder where it can be written",
+            ) from None
         try:
             data = read_session_file(folder / SESSION_FILE)
             if data["current_step"] not in STEP_INDEX:
@@ -351,19 +255,26 @@ class Session:
                     None,
                     f"names an unknown step {data['current_step']!r}; the file is left untouched",
                 )
-            s = cls(folder, data, lock=lock, clock=clock, readonly=readonly)
-            if not readonly:
+            s = cls(folder, data, lock=lock, clock=clock, readonly=False)
+            s.recovery_notes += [
+                f"removed {name}, left by a program that was killed"
+                for name in clean_leftovers(folder)
+            ]
+            with contextlib.suppress(OSError):
                 (folder / RUNS_DIR).mkdir(exist_ok=True)
-                s._recover_runs()
+            s._recover_runs()
         except BaseException:
-            if lock is not None:
-                lock.release()
+            lock.release()
             raise
         return s
 
     def close(self) -> None:
-        """Release the lock (everything is already saved)."""
+        """Try a last save if something is not on disk, and release the lock. What could
+        not be saved is lost with the program: ask :attr:`unsaved` (and offer
+        :meth:`move_to`) before closing."""
         if self._lock is not None:
+            if self.unsaved:
+                self.save()
             self._lock.release()
             self._lock = None
 
@@ -373,20 +284,94 @@ class Session:
     def __exit__(self, *exc: object) -> None:
         self.close()
 
-    def save(self) -> None:
-        """Write session.json atomically (done by every change; call it only after set-up)."""
+    @property
+    def save_problem(self) -> SaveProblem | None:
+        """Why the session is not all on disk (``.line``: one line for the status bar), or
+        None when it is."""
+        return self._problem
+
+    @property
+    def unsaved(self) -> bool:
+        """True while a change, a finished run or a run's new u column is only in memory."""
+        return self._unsaved or bool(self._unkept) or self._remap_due
+
+    def save(self) -> bool:
+        """Write everything not yet on disk: runs kept since the last save that worked,
+        session.json (atomically), the runs' u column after a table change. True when all
+        is on disk. A failed write never raises: it becomes :attr:`save_problem`, and the
+        next change or call of :meth:`save` tries again (call it every few seconds while
+        there is a problem)."""
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
+        ok = True
+        try:
+            self._keep_unkept()
+        except OSError as exc:  # the file still lists what is on disk; the rest waits
+            self._failed(exc)
+            ok = False
         self._data["entries"] = {k: e.to_json() for k, e in self._entries.items()}
         self._data["captures"] = {k: c.to_json() for k, c in self._captures.items()}
         self._data["runs"] = [r.to_json() for r in self._runs]
         self._data["modified"] = self._clock().isoformat(timespec="seconds")
-        atomic_write_text(
-            self.folder / SESSION_FILE, json.dumps(self._data, indent=1, ensure_ascii=False) + "\n"
+        try:
+            atomic_write_text(
+                self.folder / SESSION_FILE,
+                json.dumps(self._data, indent=1, ensure_ascii=False) + "\n",
+            )
+        except OSError as exc:
+            self._unsaved = True
+            self._failed(exc)
+            return False
+        self._unsaved = False
+        if self._remap_due:
+            try:
+                remap_runs(self.folder, self._runs, self.table_pairs())
+                self._remap_due = False
+            except OSError as exc:
+                self._failed(exc)
+                ok = False
+        if ok:
+            self._problem = None
+        return ok
+
+    def _failed(self, exc: OSError) -> None:
+        old = self._problem
+        self._problem = SaveProblem(
+            folder=self.folder,
+            reason=os_reason(exc),
+            since=old.since if old else self._clock().isoformat(timespec="seconds"),
+            attempts=(old.attempts if old else 0) + 1,
         )
 
     def _changed(self) -> None:
         self.save()
+
+    def move_to(self, root: Path) -> Moved:
+        """Save the session in a new folder under ``root`` (named by its id, made unique),
+        lock it there and go on there; the old folder is left as it is (and unlocked). The
+        run files come along where they can be read. SessionNotWritable (one line, nothing
+        changed) when ``root`` cannot take it."""
+        if self.readonly:
+            raise InputError(str(self.folder), None, "this session was opened read-only")
+        folder, lock = new_session_folder(Path(root), self.id)
+        left: list[str] = []
+        for r in self._runs:
+            try:
+                atomic_write_bytes(folder / r.file, (self.folder / r.file).read_bytes())
+            except OSError as exc:
+                left.append(f"{r.file}: {os_reason(exc)}")
+        old_folder, old_lock, old_id = self.folder, self._lock, self._data["id"]
+        self.folder, self._lock, self._data["id"] = folder, lock, folder.name
+        if not self.save():
+            why = self._problem.reason if self._problem else "unknown"
+            self.folder, self._lock, self._data["id"] = old_folder, old_lock, old_id
+            self._problem = replace(self._problem, folder=old_folder) if self._problem else None
+            lock.release()
+            raise SessionNotWritable(str(folder), None, f"cannot save the session here ({why})")
+        if old_lock is not None:
+            old_lock.release()
+        self._run_version += 1
+        return Moved(folder, tuple(left))
 
     # -- who, when, where ----------------------------------------------------------------------
 
@@ -464,102 +449,35 @@ class Session:
     def enter(self, key: str, text: str, source: str = "typed") -> Entry:
         """Store ``text`` typed in field ``key`` (KeyError for an unknown key) and return the
         entry: accepted with its value, note and warnings, or refused with a one-line message.
-        The text is kept either way; the session is saved before this returns."""
-        fld = FIELDS[key]
-        entry = self._read(fld, text)
-        old = self._entries.get(key)
-        at = self._clock().isoformat(timespec="seconds")
-        if not entry.ok and old is not None and old.ok:
-            # keep the accepted entry in effect; remember the refused attempt beside it
-            entry = replace(old, refused=(text, entry.message, at))
-            self._entries[key] = entry
-            self._changed()
-            return entry
-        history = (*old.history, (old.text, old.at)) if old is not None else ()
-        if old is not None and old.refused:
-            history = (*history, (old.refused[0], old.refused[2]))
-        entry = Entry(
-            key=key,
-            text=text,
-            ok=entry.ok,
-            value=entry.value,
-            unit=entry.unit,
-            message=entry.message,
-            warnings=entry.warnings,
-            source=source,
-            at=at,
-            history=history,
+        The text is kept either way, and saved before this returns (or, when the save
+        fails, kept in memory and said by :attr:`save_problem`)."""
+        entry = revise(
+            self._entries.get(key),
+            read_entry(FIELDS[key], text),
+            source,
+            self._clock().isoformat(timespec="seconds"),
         )
         self._entries[key] = entry
-        if entry.ok and source != "capture" and key.startswith("omega_ss@"):
+        if (
+            entry.ok
+            and entry.refused is None
+            and source != "capture"
+            and key.startswith("omega_ss@")
+        ):
             self._captures.pop(key, None)
+        if key.startswith("u_ss@") and entry.refused is None:
+            self._remap_due = True  # the runs' u column follows the table (written by save)
+            self._run_version += 1
         self._changed()
-        if key.startswith("u_ss@"):
-            self._remap_runs()
         return entry
 
     def choose(self, key: str, options: Sequence[int]) -> Entry:
         """Pick option indices (0-based) of a choice field; saved. Same as typing letters."""
         return self.enter(key, ", ".join(chr(ord("a") + k) for k in options))
 
-    def _read(self, fld: lab_steps.Field, text: str) -> Entry:
-        if fld.kind == "text":
-            return Entry(fld.key, text, ok=True)
-        if not text.strip() and fld.optional:
-            return Entry(fld.key, text, ok=True)
-        try:
-            if fld.kind == "quantity":
-                p = parse_quantity(
-                    text,
-                    fld.unit,
-                    label=fld.label,
-                    allow_negative=fld.allow_negative,
-                    allow_zero=fld.allow_zero,
-                )
-                warnings = tuple(w for rule in fld.plausible for w in rule.warnings(p.value))
-                return Entry(
-                    fld.key,
-                    text,
-                    ok=True,
-                    value=p.value,
-                    unit=p.unit,
-                    message=p.note,
-                    warnings=warnings,
-                )
-            if fld.kind == "formula":
-                f = lab_steps.read_formula(fld, text)
-                value = f.value({}) if not fld.names else None
-                return Entry(fld.key, text, ok=True, value=value)
-            try:
-                chosen = _parse_choice(text, len(fld.options))
-            except ValueError:
-                letters = "/".join(chr(ord("a") + k) for k in range(len(fld.options)))
-                raise InputError(
-                    fld.label,
-                    None,
-                    f"expected {'one or more of' if fld.multiple else 'one of'} {letters}; got {text.strip()!r}",
-                ) from None
-            if len(chosen) > 1 and not fld.multiple:
-                raise InputError(fld.label, None, f"expected one answer; got {len(chosen)}")
-            return Entry(fld.key, text, ok=True, value=chosen)
-        except InputError as exc:
-            return Entry(fld.key, text, ok=False, message=str(exc))
-
     def parsed(self) -> dict[str, object]:
         """Accepted values by key, as checks use them (floats, Formulas, option tuples)."""
-        out: dict[str, object] = {}
-        for key, e in self._entries.items():
-            if not e.ok or key not in FIELDS:
-                continue
-            fld = FIELDS[key]
-            if fld.kind == "formula":
-                try:
-                    out[key] = lab_steps.read_formula(fld, e.text)
-                except InputError:
-                    continue
-            elif e.value is not None:
-                out[key] = e.value
-        return out
+        return parsed_values(self._entries)
 
     def feedback(self, step_id: str | None = None) -> list[Feedback]:
         """The verdict on every checked field of ``step_id`` (default: the current step), or of
@@ -572,7 +490,7 @@ class Session:
                 answer = values.get(chk.key)
                 if isinstance(answer, Formula) and not FIELDS[chk.key].names:
                     answer = answer.value({})
-                out.append(lab_steps.check_answer(chk, answer, values))
+                out.append(answers.check_answer(chk, answer, values))
         return out
 
     def step_status(self, step_id: str) -> str:
@@ -672,40 +590,7 @@ class Session:
         return res
 
     def _compute(self) -> Results:
-        problems: list[str] = []
-        R = self.value("R")
-        if R is None:
-            problems.append("R is not entered yet (Task 2)")
-        readings = []
-        for r in self.readings():
-            why = r.problem()
-            if why:
-                problems.append(f"row {r.u_req:g} V left out: {why}")
-            else:
-                readings.append(r)
-        if not readings:
-            problems.append("no complete row in the table yet (u_ss, omega_ss and i_ss; Tasks 4-5)")
-        run = self.step_run()
-        log: StepLog | None = None
-        if run is not None:
-            try:
-                log = read_step_log(self.folder / run.file)
-            except InputError as exc:
-                problems.append(f"run {run.name} cannot be used: {exc}")
-        if R is None or not readings:
-            return Results(None, run.name if run and log else None, tuple(problems))
-        try:
-            ident = identify(readings, R, log, source="table")
-        except InputError as exc:
-            if log is None:
-                return Results(None, None, (*problems, str(exc)))
-            problems.append(f"run {run.name if run else ''} gives no step result: {exc}")
-            try:
-                ident = identify(readings, R, None, source="table")
-            except InputError as exc2:
-                return Results(None, None, (*problems, str(exc2)))
-            return Results(ident, None, tuple(problems))
-        return Results(ident, run.name if (run and log is not None) else None, tuple(problems))
+        return compute(self.value("R"), self.readings(), self.step_run(), self.folder)
 
     def model_check(self, name: str | None = None) -> ModelCheck:
         """The model check (:func:`minseg_tui.model.check.check`) of run ``name`` (default: the
@@ -726,13 +611,7 @@ class Session:
         cached = self._checks.get(key)
         if cached is not None:
             return cached
-        try:
-            log = read_step_log(self.folder / run.file)
-            result = ModelCheck(run.name, check(log.t, log.u, log.omega, ts=run.ts))
-        except InputError as exc:
-            result = ModelCheck(run.name, None, str(exc))
-        except ValueError as exc:
-            result = ModelCheck(run.name, None, f"run {run.name}: {exc}")
+        result = check_run(self.folder, run)
         self._checks = {key: result}
         return result
 
@@ -811,13 +690,7 @@ class Session:
         self._changed()
 
     def _new_name(self, kind: str) -> str:
-        taken = {r.name for r in self._runs} | {
-            p.name.split(".")[0] for p in (self.folder / RUNS_DIR).iterdir()
-        }
-        k = 1
-        while f"{kind}-{k}" in taken:
-            k += 1
-        return f"{kind}-{k}"
+        return new_name(self.folder, kind, (r.name for r in self._runs))
 
     def start_run(
         self,
@@ -827,116 +700,154 @@ class Session:
         flush_interval: float | None = None,
     ) -> Recorder:
         """Begin recording a run (``steps``/``fast`` for Task 10, ``free`` otherwise); returns
-        the Recorder to append samples to. Nothing is lost to a crash beyond its flush interval."""
+        the Recorder to append samples to. Nothing is lost to a crash beyond its flush
+        interval, nor to a write that fails (the Recorder keeps the samples). Raises
+        SessionNotWritable (one line) when its file cannot be made."""
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
-        name = self._new_name(kind)
         ts_ = ts if ts is not None else (plan.ts if plan else 0.025)
-        header = {
-            "name": name,
-            "kind": kind,
-            "ts": ts_,
-            "started": self._clock().isoformat(timespec="seconds"),
-            "plan": {
-                k: float(getattr(plan, k)) for k in ("low", "high", "half_period", "periods", "ts")
-            }
-            if plan
-            else {},
-        }
-        kwargs = {} if flush_interval is None else {"flush_interval": flush_interval}
-        return Recorder(self.folder / RUNS_DIR / f"{name}{PARTIAL_SUFFIX}", header, **kwargs)
+        try:
+            name = self._new_name(kind)
+            header = run_header(
+                name,
+                kind,
+                ts_,
+                self._clock().isoformat(timespec="seconds"),
+                {
+                    k: float(getattr(plan, k))
+                    for k in ("low", "high", "half_period", "periods", "ts")
+                }
+                if plan
+                else None,
+            )
+            return Recorder(
+                self.folder / RUNS_DIR / f"{name}{PARTIAL_SUFFIX}",
+                header,
+                FLUSH_INTERVAL if flush_interval is None else flush_interval,
+            )
+        except OSError as exc:
+            self._failed(exc)
+            raise SessionNotWritable(
+                str(self.folder / RUNS_DIR),
+                None,
+                f"cannot record a run here ({os_reason(exc)}); nothing was started",
+            ) from None
 
     def finish_run(self, recorder: Recorder) -> RunInfo | None:
         """End a recording: its samples become runs/<name>.csv (atomically), the session
         records the run (saved) and the partial file goes. None (and nothing kept) when it
-        holds fewer than 2 samples."""
+        holds fewer than 2 samples. When the log cannot be written the run is kept in
+        memory, saved with the next save that works, and SessionNotWritable says so."""
         recorder.close()
-        return self._adopt(recorder.path, interrupted=False)
+        raw = recorder.raw()
+        if raw.seq.size < 2:
+            with contextlib.suppress(OSError):
+                recorder.path.unlink(missing_ok=True)
+            return None
+        try:
+            info = self._keep(recorder.name, raw, interrupted=False)
+        except OSError as exc:
+            self._unkept.append(recorder)
+            self._failed(exc)
+            raise SessionNotWritable(
+                str(self.folder / RUNS_DIR),
+                None,
+                f"run {recorder.name} ({recorder.samples} samples) is kept in memory, not yet "
+                f"on disk ({os_reason(exc)}); it is saved with the session as soon as it can be",
+            ) from None
+        with contextlib.suppress(OSError):
+            recorder.path.unlink(missing_ok=True)
+        return info
 
     def discard_run(self, recorder: Recorder) -> None:
         """Throw a recording away (the partial file is removed)."""
         recorder.close()
-        recorder.path.unlink(missing_ok=True)
+        with contextlib.suppress(OSError):
+            recorder.path.unlink(missing_ok=True)
 
-    def _adopt(self, partial: Path, interrupted: bool) -> RunInfo | None:
-        raw = read_partial(partial)
-        name = partial.name[: -len(PARTIAL_SUFFIX)]
+    def _keep(self, name: str, raw: RawRun, interrupted: bool) -> RunInfo | None:
+        """Write run ``name`` from ``raw`` and record it (saved); None when it is known or
+        too short. OSError when its log cannot be written."""
         if any(r.name == name for r in self._runs):
-            partial.unlink(missing_ok=True)
             return None
-        if raw.seq.size < 2:
-            partial.unlink(missing_ok=True)
+        info = keep_run(self.folder, name, raw, self.table_pairs(), interrupted)
+        if info is None:
             return None
-        ts = float(raw.header.get("ts", 0.025))  # type: ignore[arg-type]
-        log, dropped = build_log(raw, self.table_pairs(), ts)
-        file = f"{RUNS_DIR}/{name}.csv"
-        write_log_atomic(self.folder / file, log)
-        plan = raw.header.get("plan") or {}
-        info = RunInfo(
-            name=name,
-            file=file,
-            kind=str(raw.header.get("kind", "free")),
-            ts=ts,
-            samples=len(log),
-            dropped=dropped,
-            started=str(raw.header.get("started", "")),
-            interrupted=interrupted,
-            plan={str(k): float(v) for k, v in dict(plan).items()},  # type: ignore[call-overload]
-        )
         self._runs.append(info)
         self._run_version += 1
         self._changed()
-        partial.unlink(missing_ok=True)
         return info
 
+    def _keep_unkept(self) -> None:
+        """Write the runs that finished while nothing could be written (OSError if still not)."""
+        while self._unkept:
+            rec = self._unkept[0]
+            raw = rec.raw()
+            if not any(r.name == rec.name for r in self._runs):
+                info = keep_run(self.folder, rec.name, raw, self.table_pairs(), False)
+                if info is not None:
+                    self._runs.append(info)
+                    self._run_version += 1
+            self._unkept.pop(0)
+            with contextlib.suppress(OSError):
+                rec.path.unlink(missing_ok=True)
+
     def _recover_runs(self) -> None:
-        for partial in sorted((self.folder / RUNS_DIR).glob(f"*{PARTIAL_SUFFIX}")):
-            info = self._adopt(partial, interrupted=True)
+        try:
+            partials = sorted((self.folder / RUNS_DIR).glob(f"*{PARTIAL_SUFFIX}"))
+        except OSError:
+            return
+        for partial in partials:
+            name = partial.name[: -len(PARTIAL_SUFFIX)]
+            try:
+                raw = read_partial(partial)
+                info = self._keep(name, raw, interrupted=True)
+            except OSError as exc:
+                self.recovery_notes.append(
+                    f"{RUNS_DIR}/{partial.name}: not rebuilt yet ({os_reason(exc)}); "
+                    "it is left as it is and rebuilt when the session is opened again"
+                )
+                continue
+            if raw.damage:
+                self.recovery_notes.append(
+                    f"{RUNS_DIR}/{partial.name}: {raw.damage}; rebuilt from its samples as "
+                    f"{name} (ts {ts_of(raw):g} s)"
+                )
             if info is not None:
                 self.recovered.append(info.name)
+            with contextlib.suppress(OSError):
+                partial.unlink(missing_ok=True)
 
     def import_run(self, path: Path) -> RunInfo:
         """Copy a step log recorded elsewhere into runs/ (checked by read_step_log; InputError
-        with file and line if it is not one) for the model check and Tasks 11-15."""
-        log = read_step_log(Path(path))
-        name = self._new_name("imported")
-        file = f"{RUNS_DIR}/{name}.csv"
-        write_log_atomic(
-            self.folder / file,
-            StepLog(
-                t=log.t,
-                u=log.u,
-                omega=log.omega,
-                extra=log.extra,
-                metadata={**log.metadata, "imported_from": str(path)},
-            ),
-        )
-        info = RunInfo(
-            name=name,
-            file=file,
-            kind="imported",
-            ts=log.ts,
-            samples=len(log),
-            dropped=0,
-            started=self._clock().isoformat(timespec="seconds"),
-        )
+        with file and line if it is not one, SessionNotWritable if it cannot be written) for
+        the model check and Tasks 11-15."""
+        try:
+            info = import_log(
+                self.folder,
+                Path(path),
+                self._new_name("imported"),
+                self._clock().isoformat(timespec="seconds"),
+            )
+        except OSError as exc:
+            self._failed(exc)
+            raise SessionNotWritable(
+                str(self.folder / RUNS_DIR), None, f"cannot copy the log here ({os_reason(exc)})"
+            ) from None
         self._runs.append(info)
         self._run_version += 1
         self._changed()
         return info
 
-    def _remap_runs(self) -> None:
-        table = self.table_pairs()
-        for r in self._runs:
-            if r.kind == "imported":
-                continue
-            path = self.folder / r.file
-            if path.exists():
-                try:
-                    remap_log(path, table)
-                except InputError:
-                    continue
-        self._run_version += 1
 
-
-__all__ = ["Comparison", "Entry", "ModelCheck", "Notice", "Results", "Session", "TableRow"]
+__all__ = [
+    "Comparison",
+    "Entry",
+    "ModelCheck",
+    "Moved",
+    "Notice",
+    "Results",
+    "SaveProblem",
+    "Session",
+    "TableRow",
+]

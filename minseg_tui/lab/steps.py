@@ -1,9 +1,10 @@
-"""The lab as data: every step's goal, what to do, what to enter, and how answers are checked.
+"""The lab as data: every step's goal, what to do, what to enter, and what a right answer is.
 
 The text is ours (the manual's steps retold for the terminal, without Simulink). A step
 is a :class:`Step`; what a group enters is a :class:`Field` (keyed by a string that is
 also the key in the session's entries); a checkable answer has a :class:`Check`. The UI
 renders these and the session stores what was typed; neither needs a case per step.
+:mod:`minseg_tui.lab.answers` tells a right answer from a wrong one by these checks.
 
 Field kinds:
 - ``quantity``: a number with a unit, parsed by :mod:`minseg_tui.lab.entry` (value in SI);
@@ -20,16 +21,12 @@ next to the timestamped one), ``meter`` (read the virtual MinSeg's multimeter),
 
 from __future__ import annotations
 
-import math
-from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Literal
 
-import numpy as np
-
 from minseg_tui.errors import InputError
 from minseg_tui.lab.entry import Plausible
-from minseg_tui.lab.expr import Formula, parse_formula
+from minseg_tui.lab.expr import parse_formula
 
 FieldKind = Literal["quantity", "formula", "choice", "text"]
 Status = Literal["right", "wrong", "missing"]
@@ -766,76 +763,6 @@ def step(step_id: str) -> Step:
     return STEPS[STEP_INDEX[step_id]]
 
 
-# -- checking ----------------------------------------------------------------------------------
-
-_SAMPLE_SEED = 20240416
-
-
-def _samples(names: tuple[str, ...], n: int = 6) -> list[dict[str, float]]:
-    rng = np.random.default_rng(_SAMPLE_SEED)
-    return [{name: float(rng.uniform(0.5, 2.0)) for name in names} for _ in range(n)]
-
-
-def _close(a: float, b: float, rel: float, abs_: float) -> bool:
-    return math.isfinite(a) and math.isfinite(b) and abs(a - b) <= abs_ + rel * abs(b)
-
-
-def _same(
-    answer: Formula | float,
-    expected: str,
-    names: tuple[str, ...],
-    env: Mapping[str, float],
-    rel: float,
-    abs_: float,
-) -> bool:
-    target = parse_formula(expected, names + tuple(env))
-    if isinstance(answer, Formula):
-        points = _samples(names) if names else [{}]
-        return all(
-            _close(answer.value({**p, **env}), target.value({**p, **env}), rel, abs_)
-            for p in points
-        )
-    return _close(answer, target.value(dict(env)), rel, abs_)
-
-
-def check_answer(chk: Check, answer: object, entries: Mapping[str, object]) -> Feedback:
-    """The verdict on ``answer`` for check ``chk``.
-
-    answer: the parsed entry of the checked field (a float in SI for a quantity, a Formula,
-    a tuple of option indices), or None when nothing valid has been entered; entries: the
-    parsed values of the other fields by key (for ``env``).
-    """
-    fld = FIELDS[chk.key]
-    if answer is None:
-        return Feedback(chk.key, "missing", "no answer yet")
-    if fld.kind == "choice":
-        chosen = tuple(sorted(answer)) if isinstance(answer, tuple | list) else ()
-        if chosen == tuple(sorted(chk.correct)):
-            return Feedback(chk.key, "right", f"right: {chk.explain}")
-        if fld.multiple and set(chosen) < set(chk.correct):
-            return Feedback(chk.key, "wrong", "partly: something else matters too")
-        return Feedback(chk.key, "wrong", "not quite; think again")
-    env: dict[str, float] = {}
-    for name, key in chk.env:
-        v = entries.get(key)
-        if not isinstance(v, float):
-            return Feedback(chk.key, "missing", f"enter {FIELDS[key].label} first")
-        env[name] = v
-    if not isinstance(answer, Formula | float):
-        return Feedback(chk.key, "missing", "no answer yet")
-    if _same(answer, chk.expected, fld.names, env, chk.rel_tol, chk.abs_tol):
-        return Feedback(chk.key, "right", f"right: {chk.explain}" if chk.explain else "right")
-    for wrong, message in chk.mistakes:
-        if _same(answer, wrong, fld.names, env, chk.rel_tol, chk.abs_tol):
-            return Feedback(chk.key, "wrong", message)
-    return Feedback(chk.key, "wrong", "not right yet; check your working")
-
-
-def read_formula(fld: Field, text: str) -> Formula:
-    """Parse ``text`` typed in the formula field ``fld`` (FormulaRefused on bad text)."""
-    return parse_formula(text, fld.names, label=fld.label)
-
-
 def validate() -> list[str]:
     """Problems in the data above (empty list when sound): used by the tests."""
     problems: list[str] = []
@@ -880,8 +807,6 @@ __all__ = [
     "Field",
     "RunPlan",
     "Step",
-    "check_answer",
-    "read_formula",
     "step",
     "validate",
 ]

@@ -2,13 +2,15 @@
 
 A session is a folder ``<sessions>/<id>/`` holding ``session.json`` (what the group
 entered; schema :data:`SCHEMA`), ``runs/<name>.csv`` (recorded runs as step logs),
-``runs/<name>.partial`` while a run is being recorded, ``lock`` (the pid of the program
-that has it open) and the reports.
+``runs/<name>.partial`` while a run is being recorded, ``lock`` (locked by the program
+that has it open, :mod:`minseg_tui.lock`) and the reports.
 
 Every write of a whole file goes to a temporary file in the same folder, is flushed and
 fsynced, replaces the old file with ``os.replace`` and then the folder is fsynced: a crash
 leaves either the old or the new file, never a mix. A session file that cannot be read
-(bad JSON, another schema) raises :class:`SessionDamaged` and is never written over.
+(bad JSON, a part that breaks the schema of :mod:`minseg_tui.lab.schema`) raises
+:class:`SessionDamaged` and is never written over. A write that fails (a full disk, a
+read-only folder, a drive pulled out) is a :class:`SaveProblem` the session keeps.
 """
 
 from __future__ import annotations
@@ -16,17 +18,18 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import re
 from dataclasses import dataclass
+from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
 from minseg_tui.errors import InputError, MinsegError
+from minseg_tui.lab.schema import KIND, SCHEMA, SESSION, problem, salvage
+from minseg_tui.lock import FileLock, LockHeld, holder
 
-SCHEMA: int = 1
-"""Version of session.json's layout; a file with another version is refused."""
-
-KIND: str = "minseg-tui session"
-"""The ``kind`` every session file carries."""
+MAX_SESSION_BYTES = 16 * 2**20
+"""Largest session.json read (16 MiB; a full lab's is a few tens of kB)."""
 
 SESSION_FILE = "session.json"
 LOCK_FILE = "lock"
@@ -45,6 +48,44 @@ class SessionLocked(MinsegError):
     """Another running program has the session open."""
 
 
+class SessionsUnreadable(InputError):
+    """The sessions folder itself cannot be listed (permissions, a vanished drive)."""
+
+
+class SessionNotWritable(InputError):
+    """A session cannot be made, opened for writing, moved or a run kept where asked; the
+    message says why and what to do. Nothing typed is lost."""
+
+
+def os_reason(exc: OSError) -> str:
+    """The system's words for a failed write, with the file: ``Read-only file system``."""
+    why = exc.strerror or str(exc) or type(exc).__name__
+    return f"{why} ({exc.filename})" if exc.filename else why
+
+
+@dataclass(frozen=True)
+class SaveProblem:
+    """Why the session is not all on disk, and where it will be saved once it can.
+
+    folder: the session's folder, where every change goes (and will, once it can);
+    reason: the system's words (``Read-only file system (/media/stick/...)``); since: ISO
+    time of the first failed save; attempts: failed saves so far.
+    """
+
+    folder: Path
+    reason: str
+    since: str
+    attempts: int
+
+    @property
+    def line(self) -> str:
+        """One line for the status bar: what is wrong and where it will save."""
+        return (
+            f"not saved: {self.reason}; everything is kept in memory and saved to "
+            f"{self.folder} as soon as it can be (or save it to another folder)"
+        )
+
+
 def fsync_dir(path: Path) -> None:
     """fsync a folder so a rename in it survives a power cut (no-op where unsupported)."""
     try:
@@ -60,25 +101,66 @@ def fsync_dir(path: Path) -> None:
 
 
 def atomic_write_bytes(path: Path, data: bytes) -> None:
-    """Replace ``path`` by ``data`` atomically (temp file, fsync, os.replace, fsync folder)."""
+    """Replace ``path`` by ``data`` atomically (temp file, fsync, os.replace, fsync folder).
+
+    An OSError (a full disk, a folder that cannot be written, a drive gone) comes through
+    with the old file untouched and no temporary file left behind (as far as the folder
+    can still be written; :func:`clean_leftovers` takes what a kill -9 leaves).
+    """
     path = Path(path)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
     try:
-        view = memoryview(data)
-        while view:
-            n = os.write(fd, view)
-            view = view[n:]
-        os.fsync(fd)
-    finally:
-        os.close(fd)
-    try:
+        try:
+            view = memoryview(data)
+            while view:
+                n = os.write(fd, view)
+                view = view[n:]
+            os.fsync(fd)
+        finally:
+            os.close(fd)
         os.replace(tmp, path)
-    except OSError:
+    except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(tmp)
         raise
     fsync_dir(path.parent)
+
+
+_LEFTOVER = re.compile(r"\..+\.(\d+)\.(tmp|build)")
+"""A temporary file of :func:`atomic_write_bytes` (``.<name>.<pid>.tmp``) or of a run's
+log being built (``.<name>.<pid>.build``)."""
+
+
+def clean_leftovers(folder: Path) -> list[str]:
+    """Remove the temporary files a killed program left in ``folder`` and its runs/ (those
+    of a pid that is not running); the names removed. Never raises."""
+    removed = []
+    for where in (Path(folder), Path(folder) / RUNS_DIR):
+        try:
+            names = os.listdir(where)
+        except OSError:
+            continue
+        for name in names:
+            m = _LEFTOVER.fullmatch(name)
+            if m is None or _alive(int(m.group(1))):
+                continue
+            with contextlib.suppress(OSError):
+                os.unlink(where / name)
+                removed.append(str((where / name).relative_to(folder)))
+    return sorted(removed)
+
+
+def _alive(pid: int) -> bool:
+    if pid <= 0:
+        return False
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
 
 
 def atomic_write_text(path: Path, text: str) -> None:
@@ -94,138 +176,153 @@ def damaged_message(path: Path, why: str) -> str:
     )
 
 
-def read_session_file(path: Path) -> dict[str, Any]:
-    """The JSON object of ``path`` (a session.json), checked against the schema.
-
-    Raises SessionMissing when there is no file and SessionDamaged (naming the file, the
-    line when JSON is broken, and what to do) when it cannot be used.
-    """
-    path = Path(path)
+def _load(path: Path) -> object:
+    """The JSON value in ``path``; SessionMissing / SessionDamaged with one line."""
     try:
-        raw = path.read_bytes()
+        with open(path, "rb") as fh:
+            raw = fh.read(MAX_SESSION_BYTES + 1)
     except FileNotFoundError:
         raise SessionMissing(str(path.parent), None, f"no session here (no {path.name})") from None
     except OSError as exc:
+        why = exc.strerror or type(exc).__name__
         raise SessionDamaged(
-            str(path), None, damaged_message(path, f"cannot be read ({exc.strerror})")
+            str(path), None, damaged_message(path, f"cannot be read ({why})")
         ) from None
+    if len(raw) > MAX_SESSION_BYTES:
+        raise SessionDamaged(
+            str(path),
+            None,
+            damaged_message(path, f"is larger than any session ({MAX_SESSION_BYTES >> 20} MiB)"),
+        )
     try:
-        data = json.loads(raw.decode("utf-8"))
+        return json.loads(raw.decode("utf-8"))
     except UnicodeDecodeError:
         raise SessionDamaged(str(path), None, damaged_message(path, "is not UTF-8 text")) from None
     except json.JSONDecodeError as exc:
         raise SessionDamaged(
             str(path), exc.lineno, damaged_message(path, f"is not valid JSON ({exc.msg})")
         ) from None
-    problem = schema_problem(data)
-    if problem:
-        raise SessionDamaged(str(path), None, damaged_message(path, problem))
-    return data
+    except RecursionError:
+        raise SessionDamaged(
+            str(path), None, damaged_message(path, "is nested too deeply to be a session")
+        ) from None
 
 
-_REQUIRED: dict[str, type | tuple[type, ...]] = {
-    "id": str,
-    "members": list,
-    "date": str,
-    "current_step": str,
-    "entries": dict,
-    "captures": dict,
-    "runs": list,
-    "created": str,
-    "modified": str,
-}
-
-
-def schema_problem(data: object) -> str | None:
-    """Why ``data`` is not a session of this schema, or None when it is."""
+def _identity_problem(data: object) -> str | None:
+    """Why ``data`` is not a session file of this schema at all (nothing to salvage)."""
     if not isinstance(data, dict):
         return "does not hold a JSON object"
     if data.get("kind") != KIND:
         return f"is not a minseg-tui session file (kind {data.get('kind')!r})"
     if data.get("schema") != SCHEMA:
         return f"has schema {data.get('schema')!r}, this program reads schema {SCHEMA}"
-    for key, typ in _REQUIRED.items():
-        if not isinstance(data.get(key), typ):
-            return f"has no valid {key!r}"
-    for key, e in data["entries"].items():
-        if (
-            not isinstance(e, dict)
-            or not isinstance(e.get("text"), str)
-            or not isinstance(e.get("ok"), bool)
-        ):
-            return f"has a broken entry {key!r}"
-    for r in data["runs"]:
-        if (
-            not isinstance(r, dict)
-            or not isinstance(r.get("name"), str)
-            or not isinstance(r.get("file"), str)
-        ):
-            return "has a broken run record"
     return None
+
+
+def schema_problem(data: object) -> str | None:
+    """Why ``data`` is not a session of this schema (:data:`minseg_tui.lab.schema.SESSION`,
+    checked whole), or None when it is."""
+    why = _identity_problem(data)
+    if why:
+        return why
+    where = problem(data, SESSION)
+    return f"has a broken {where}" if where else None
+
+
+def read_session_file(path: Path) -> dict[str, Any]:
+    """The JSON object of ``path`` (a session.json), checked whole against the schema.
+
+    Raises SessionMissing when there is no file and SessionDamaged (naming the file, the
+    line when JSON is broken, where the schema breaks, and what to do) when it cannot be
+    used.
+    """
+    path = Path(path)
+    data = _load(path)
+    why = schema_problem(data)
+    if why:
+        raise SessionDamaged(str(path), None, damaged_message(path, why))
+    assert isinstance(data, dict)
+    return data
+
+
+def salvage_session_file(path: Path) -> tuple[dict[str, Any], str | None]:
+    """For a read-only look: the sound parts of ``path`` and, when the file breaks the
+    schema, the one-line reason (what was left out). SessionDamaged only when nothing can
+    be read (not JSON, not a session of this schema)."""
+    path = Path(path)
+    data = _load(path)
+    why = _identity_problem(data)
+    if why:
+        raise SessionDamaged(str(path), None, damaged_message(path, why))
+    assert isinstance(data, dict)
+    broken = problem(data, SESSION)
+    if broken is None:
+        return data, None
+    kept, lost = salvage(data)
+    more = f" (and {len(lost) - 1} more)" if len(lost) > 1 else ""
+    return kept, (
+        f"{path}: has a broken {broken}{more}; shown read-only without it, the file is left untouched"
+    )
 
 
 # -- the lock ----------------------------------------------------------------------------------
 
 
-def _alive(pid: int) -> bool:
-    if pid <= 0:
-        return False
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
-
-
 def lock_owner(folder: Path) -> int | None:
-    """pid of the live program holding the session in ``folder``, or None (no or stale lock)."""
+    """pid of the live program holding the session in ``folder``, or None (nobody holds it;
+    a lock file a dead program left is nobody's)."""
+    who = holder(Path(folder) / LOCK_FILE)
+    return who.pid if who is not None else None
+
+
+def take_lock(folder: Path) -> FileLock:
+    """The session's lock (:class:`minseg_tui.lock.FileLock` on ``<folder>/lock``), taken;
+    SessionLocked naming the program that has it open."""
+    lock = FileLock(Path(folder) / LOCK_FILE)
     try:
-        pid = int((Path(folder) / LOCK_FILE).read_text().split()[0])
-    except (OSError, ValueError, IndexError):
-        return None
-    return pid if _alive(pid) else None
+        lock.acquire()
+    except LockHeld as exc:
+        raise SessionLocked(
+            f"session {Path(folder).name} is open in {exc.holder}; close it there first"
+        ) from None
+    return lock
 
 
-class Lock:
-    """One program per session: ``lock`` holds the owner's pid; a dead owner's lock is taken over."""
+# -- session folders -----------------------------------------------------------------------
 
-    def __init__(self, folder: Path) -> None:
-        self.path = Path(folder) / LOCK_FILE
-        self.held = False
 
-    def acquire(self) -> None:
-        """Take the lock or raise SessionLocked naming the pid that holds it."""
-        for _ in range(3):
-            try:
-                fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644)
-            except FileExistsError:
-                owner = lock_owner(self.path.parent)
-                if owner is not None:
-                    raise SessionLocked(
-                        f"session {self.path.parent.name} is open in another minseg-tui (pid {owner}); "
-                        f"close that one first (if none is running, delete {self.path})"
-                    ) from None
-                with contextlib.suppress(FileNotFoundError):
-                    os.unlink(self.path)  # stale: its owner is gone
-                continue
-            try:
-                os.write(fd, f"{os.getpid()}\n".encode())
-                os.fsync(fd)
-            finally:
-                os.close(fd)
-            self.held = True
-            return
-        raise SessionLocked(f"could not take the lock {self.path}; try again")
+def exists(path: Path) -> bool:
+    """Whether ``path`` exists, False also when it cannot be looked at."""
+    try:
+        return os.path.lexists(path)
+    except OSError:
+        return False
 
-    def release(self) -> None:
-        """Give the lock back (only if this program holds it)."""
-        if self.held:
-            with contextlib.suppress(OSError):
-                if self.path.read_text().split()[0] == str(os.getpid()):
-                    os.unlink(self.path)
-            self.held = False
+
+def new_session_folder(root: Path, base: str) -> tuple[Path, FileLock]:
+    """A new, locked session folder ``root/<base>`` (``-2``, ``-3``, ... if taken), with its
+    runs/; SessionNotWritable (one line) when ``root`` cannot take one."""
+    try:
+        root.mkdir(parents=True, exist_ok=True)
+        sid, k = base, 1
+        while exists(root / sid):
+            k += 1
+            sid = f"{base}-{k}"
+        folder = root / sid
+        (folder / RUNS_DIR).mkdir(parents=True)
+    except OSError as exc:
+        raise SessionNotWritable(
+            str(root),
+            None,
+            f"cannot make a session folder here ({os_reason(exc)}): choose a sessions folder "
+            "that can be written (--sessions DIR)",
+        ) from None
+    try:
+        return folder, take_lock(folder)
+    except OSError as exc:
+        raise SessionNotWritable(
+            str(folder), None, f"cannot lock the new session folder ({os_reason(exc)})"
+        ) from None
 
 
 # -- listing -----------------------------------------------------------------------------------
@@ -251,50 +348,66 @@ class SessionInfo:
 
 
 def list_sessions(root: Path) -> list[SessionInfo]:
-    """Every session folder under ``root``, newest change first (damaged ones listed too)."""
+    """Every session folder under ``root``, newest change first. A damaged one is listed
+    with the reason; one that cannot even be looked at is listed as damaged too, and none
+    hides another. A ``root`` that cannot be read raises SessionsUnreadable (one line)."""
     root = Path(root)
     out: list[SessionInfo] = []
-    if not root.is_dir():
-        return out
-    for folder in sorted(p for p in root.iterdir() if p.is_dir()):
-        path = folder / SESSION_FILE
-        if not path.exists():
-            continue
-        try:
-            data = read_session_file(path)
-        except InputError as exc:
-            out.append(
-                SessionInfo(
-                    folder.name,
-                    folder,
-                    (),
-                    "",
-                    "",
-                    _mtime(path),
-                    damaged=str(exc),
-                    locked_by=lock_owner(folder),
-                )
-            )
-            continue
-        out.append(
-            SessionInfo(
-                id=data["id"],
-                path=folder,
-                members=tuple(str(m) for m in data["members"]),
-                date=data["date"],
-                last_step=data["current_step"],
-                modified=data["modified"],
-                locked_by=lock_owner(folder),
-            )
-        )
+    try:
+        if not root.is_dir():
+            return out
+        folders = sorted(p for p in root.iterdir() if _is_dir(p))
+    except OSError as exc:
+        raise SessionsUnreadable(
+            str(root), None, f"cannot list the sessions folder ({exc.strerror or exc})"
+        ) from None
+    for folder in folders:
+        info = _info(folder)
+        if info is not None:
+            out.append(info)
     out.sort(key=lambda s: s.modified, reverse=True)
     return out
 
 
-def _mtime(path: Path) -> str:
-    from datetime import UTC, datetime
+def _is_dir(path: Path) -> bool:
+    try:
+        return path.is_dir()
+    except OSError:
+        return False
 
-    return datetime.fromtimestamp(path.stat().st_mtime, UTC).isoformat(timespec="seconds")
+
+def _info(folder: Path) -> SessionInfo | None:
+    """The picker's line for ``folder``; None when it holds no session.json."""
+    path = folder / SESSION_FILE
+    try:
+        if not os.path.lexists(path):
+            return None
+    except OSError:
+        return None
+    locked_by = lock_owner(folder)
+    try:
+        data = read_session_file(path)
+    except InputError as exc:
+        return SessionInfo(
+            folder.name, folder, (), "", "", _mtime(path), damaged=str(exc), locked_by=locked_by
+        )
+    return SessionInfo(
+        id=data["id"],
+        path=folder,
+        members=tuple(str(m) for m in data["members"]),
+        date=data["date"],
+        last_step=data["current_step"],
+        modified=data["modified"],
+        locked_by=locked_by,
+    )
+
+
+def _mtime(path: Path) -> str:
+    try:
+        stamp = path.stat().st_mtime
+    except OSError:
+        return ""
+    return datetime.fromtimestamp(stamp, UTC).isoformat(timespec="seconds")
 
 
 def resolve(session: str, root: Path) -> Path:

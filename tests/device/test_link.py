@@ -1,14 +1,17 @@
-"""The link against the virtual MinSeg: over the pyserial URL and over a real pty."""
+"""The link against the virtual MinSeg, the same tests over a real pty and over the pyserial
+URL (the ``make_rig`` fixture runs each on both), and what only one of them can show."""
 
 import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
 
 from minseg_tui.device import protocol as P
 from minseg_tui.device.factory import open_device
-from minseg_tui.device.link import Link, SampleBatch, motion
-from minseg_tui.device.virtual import named_board
+from minseg_tui.device.link import Link
+from minseg_tui.device.samples import SampleBatch, motion
 from minseg_tui.errors import DeviceError, InputError
 from minseg_tui.units import RAD_PER_COUNT
 
@@ -33,15 +36,22 @@ def matches_truth(batch, board):
         assert (s.t_us, s.count, s.u_mV) == (int(t_us) % 2**32, int(count), round(u * 1000))
 
 
-def test_url_link_streams_without_loss(board_name):
-    link = open_device(f"minseg://{board_name}?clock=virtual&seed=2")
+FAST = 0.005  # s: the sample period the tests stream at (the pty runs in real time)
+
+
+def test_streams_without_loss(make_rig):
+    rig = make_rig(seed=2)
+    link = rig.open()
     try:
         assert link.ident.board == "Virtual" and link.ident.proto == P.PROTOCOL_VERSION
+        assert link.set_period(FAST) == FAST
         assert link.set_voltage(3.0) == 3.0
+        link.samples()
         batch = collect(link, 400)
         assert np.all(np.diff(batch.seq) == 1)
         assert link.stats.dropped == 0 and link.stats.corrupt == 0
-        matches_truth(batch, link.board)
+        matches_truth(batch, rig.board)
+        assert motion(batch).omega[-1] > 1.0  # the wheel turns
         assert link.meter().u_A == pytest.approx(3.0 - 0.45, abs=0.015)
         assert not [e for e in link.events() if e.kind == "watchdog"]  # keep-alive works
         reply = link.command("V,99999")
@@ -55,15 +65,17 @@ def test_url_link_streams_without_loss(board_name):
 
 
 @pytest.mark.parametrize("fault", ["garbage=0.2", "truncate=0.2", "bad_checksum=0.2", "drop=0.1"])
-def test_faults_are_counted_and_never_recorded(board_name, fault):
-    link = open_device(f"minseg://{board_name}?clock=virtual&seed=3")
+def test_faults_are_counted_and_never_recorded(make_rig, fault):
+    rig = make_rig(seed=3)
+    link = rig.open()
     try:
+        link.set_period(FAST)
         link.set_voltage(2.0)
         name, value = fault.split("=")
         link.samples()
-        setattr(link.board.faults, name, float(value))
-        batch = collect(link, 600)
-        matches_truth(batch, link.board)
+        setattr(rig.board.faults, name, float(value))
+        batch = collect(link, 400)
+        matches_truth(batch, rig.board)
         assert np.all(np.diff(batch.seq) >= 1)
         if name == "drop":
             gaps = int(np.sum(np.diff(batch.seq) - 1))
@@ -74,33 +86,79 @@ def test_faults_are_counted_and_never_recorded(board_name, fault):
         link.close()
 
 
-def test_seq_and_time_unwrap(board_name):
-    link = open_device(f"minseg://{board_name}?clock=virtual&micros0=4294000000&seq0=4294967200")
+def test_seq_and_time_unwrap(make_rig):
+    rig = make_rig(micros0=4294000000, seq0=4294967200)
+    link = rig.open()
     try:
+        link.set_period(FAST)
         batch = collect(link, 300)
         assert np.all(np.diff(batch.seq) == 1) and batch.seq[-1] > 2**32
-        assert np.all(np.diff(batch.t_us) > 20000) and batch.t_us[-1] > 2**32
+        assert np.all(np.diff(batch.t_us) > 0) and batch.t_us[-1] > 2**32
     finally:
         link.close()
 
 
-def test_board_that_stops_answering_is_reported(board_name):
-    link = open_device(f"minseg://{board_name}?clock=virtual", silence_s=0.5)
+def test_board_that_stops_answering_is_reported(make_rig):
+    rig = make_rig()
+    link = rig.open(silence_s=0.5)
     try:
-        link.board.faults.silent = True
+        rig.board.faults.silent = True
         assert wait_for(lambda: any(e.kind == "silent" for e in link.events()))
-        link.board.faults.silent = False
+        rig.board.faults.silent = False
         assert wait_for(lambda: any(e.kind == "alive" for e in link.events()))
     finally:
         link.close()
 
 
-def test_watchdog_event_when_the_host_stops_pinging(board_name):
-    link = open_device(f"minseg://{board_name}?clock=virtual", keepalive_s=1e9)
+def test_watchdog_event_when_the_host_stops_pinging(make_rig):
+    rig = make_rig()
+    link = rig.open(keepalive_s=1e9)
     try:
         link.set_voltage(2.0)
         assert wait_for(lambda: any(e.kind == "watchdog" for e in link.events()))
-        assert link.board.u_mV == 0
+        assert rig.board.u_mV == 0
+        assert link.u_req == 0.0  # the link knows the motor is off
+    finally:
+        link.close()
+
+
+def test_a_second_link_to_the_same_board_is_refused(make_rig):
+    rig = make_rig()
+    link = rig.open()
+    try:
+        with pytest.raises(DeviceError, match="in use by"):
+            rig.open()
+    finally:
+        link.close()
+    rig.open().close()  # free again once the first let go
+
+
+def test_unplug_and_replug_keeps_everything_and_restores_no_motor(make_rig):
+    rig = make_rig()
+    events = []
+    link = rig.open(on_event=events.append, retry_s=0.02)
+    try:
+        link.set_period(FAST)
+        assert link.set_voltage(4.0) == 4.0 and link.u_req == 4.0
+        before = collect(link, 100)
+        rig.unplug()
+        assert wait_for(lambda: any(e.kind == "disconnected" for e in events))
+        kept = SampleBatch.concat([before, link.samples()])
+        rig.replug()
+        assert wait_for(lambda: link.stats.reconnects == 1)
+        assert wait_for(lambda: rig.board.period_us == FAST * 1e6)  # the period was restored
+        after = collect(link, 50)
+        allb = SampleBatch.concat([kept, after])
+        assert allb.epoch[0] == 0 and allb.epoch[-1] == 1 and set(allb.epoch) == {0, 1}
+        assert np.all(np.diff(allb.seq) >= 1) and np.all(np.diff(allb.t_us) > 0)
+        assert link.stats.dropped == 0 and link.stats.corrupt == 0
+        # the motor voltage is not restored, and the group is told
+        assert np.all(after.u_req == 0.0) and rig.board.u_mV == 0
+        assert link.u_req == 0.0
+        (motor,) = [e for e in events if e.kind == "motor"]
+        assert "off" in motor.message and "4 V" in motor.message
+        kinds = [e.kind for e in events]
+        assert kinds.index("motor") > kinds.index("connected", kinds.index("disconnected"))
     finally:
         link.close()
 
@@ -112,65 +170,21 @@ def test_wrong_protocol_version_gets_a_clear_message():
     assert "protocol 3" in text and "protocol 2" in text and "make -C firmware upload" in text
 
 
-def test_second_program_on_a_url_board(board_name):
-    link = open_device(f"minseg://{board_name}?clock=virtual")
+def test_a_second_program_is_told_who_holds_the_port(pty_server):
+    link = Link(pty_server.path)
+    link.open()
     try:
-        with pytest.raises(DeviceError, match="in use by"):
-            open_device(f"minseg://{board_name}?clock=virtual")
-    finally:
-        link.close()
-
-
-def test_unplug_and_replug_over_the_url(board_name):
-    events = []
-    link = open_device(f"minseg://{board_name}?clock=virtual", on_event=events.append, retry_s=0.01)
-    try:
-        link.set_period(0.01)
-        first = collect(link, 100)
-        board = named_board(board_name)
-        board.unplug()
-        assert wait_for(lambda: any(e.kind == "disconnected" for e in events))
-        kept = SampleBatch.concat([first, link.samples()])
-        board.replug()
-        assert wait_for(lambda: link.stats.reconnects == 1)
-        assert wait_for(lambda: board.period_us == 10000)  # the period was restored
-        after = collect(link, 100)
-        allb = SampleBatch.concat([kept, after])
-        assert set(allb.epoch) == {0, 1}
-        assert np.all(np.diff(allb.seq) >= 1) and np.all(np.diff(allb.t_us) > 0)
-        assert link.stats.dropped == 0 and link.stats.corrupt == 0
-    finally:
-        link.close()
-
-
-def test_link_over_a_real_pty(pty_server):
-    events = []
-    link = Link(pty_server.path, on_event=events.append, retry_s=0.02)
-    ident = link.open()
-    try:
-        assert ident.board == "Virtual"
-        assert link.set_period(0.005) == 0.005
-        link.set_voltage(4.0)
-        before = collect(link, 40)
-        assert np.all(np.diff(before.seq) == 1)
-        mo = motion(before)
-        assert mo.omega[-1] > 1.0  # the wheel is turning
-        # a second program on the same port
         with pytest.raises(DeviceError, match=f"in use by minseg-tui \\(pid {os.getpid()}\\)"):
             Link(pty_server.path).open()
-        # pull the cable mid-stream
-        pty_server.unplug()
-        assert wait_for(lambda: any(e.kind == "disconnected" for e in events))
-        kept = SampleBatch.concat([before, link.samples()])
-        pty_server.replug()
-        assert wait_for(lambda: link.stats.reconnects == 1)
-        after = collect(link, 20)
-        allb = SampleBatch.concat([kept, after])
-        assert np.all(np.diff(allb.seq) >= 1) and np.all(np.diff(allb.t_us) > 0)
-        assert allb.epoch[0] == 0 and allb.epoch[-1] == 1
-        assert np.all(after.u_req == 0.0)  # the motor stays off after a replug
-        assert link.stats.dropped == 0 and link.stats.corrupt == 0
-        assert pty_server.board.period_us == 5000
+        code = (
+            "import sys; from minseg_tui.device.link import Link\n"
+            "try:\n    Link(sys.argv[1], boot_wait_s=0.1).open()\n"
+            "except Exception as exc:\n    print(exc)\n"
+        )
+        other = subprocess.run(
+            [sys.executable, "-c", code, pty_server.slave_name], capture_output=True, text=True
+        )
+        assert f"is in use by minseg-tui (pid {os.getpid()})" in other.stdout, other
     finally:
         link.close()
 
@@ -190,3 +204,37 @@ def test_motion_by_hand():
     assert mo.omega == pytest.approx([0, 10 * w / 0.025, 20 * w / 0.025, 0, 4 * w / 0.02])
     tail = motion(SampleBatch.from_rows(rows[2:3]), before=SampleBatch.from_rows(rows[:2]))
     assert tail.omega == pytest.approx([20 * w / 0.025])
+
+
+def _as_plain_user() -> None:
+    """preexec_fn: a root test run opens the port as nobody (root may bypass TIOCEXCL)."""
+    if os.geteuid() == 0:
+        os.setgroups([])
+        os.setgid(65534)
+        os.setuid(65534)
+
+
+def _plain_open(path: str) -> str:
+    """What a plain serial monitor gets opening ``path``: 'opened' or the shell's error."""
+    done = subprocess.run(
+        ["/bin/sh", "-c", 'exec 3<>"$1" && echo opened', "sh", path],
+        capture_output=True,
+        text=True,
+        timeout=20,
+        preexec_fn=_as_plain_user,
+    )
+    return (done.stdout + done.stderr).strip()
+
+
+def test_a_plain_serial_monitor_cannot_open_a_port_the_link_holds(pty_server):
+    if os.geteuid() == 0:  # let the plain user reach the pty at all
+        os.chmod(pty_server.slave_name, 0o666)
+    assert _plain_open(pty_server.slave_name) == "opened"  # the control: a free port opens
+    link = Link(pty_server.slave_name, retry_s=0.02)
+    link.open()
+    try:
+        got = _plain_open(pty_server.slave_name)
+        assert "opened" not in got and "busy" in got.lower(), got
+    finally:
+        link.close()
+    assert wait_for(lambda: _plain_open(pty_server.slave_name) == "opened")  # free again

@@ -12,8 +12,9 @@ import os
 import numpy as np
 
 from minseg_tui.device import discovery
-from minseg_tui.device.link import Link, SampleBatch
+from minseg_tui.device.link import Link
 from minseg_tui.device.ptyserver import PtyServer
+from minseg_tui.device.samples import SampleBatch
 
 from .conftest import wait_for
 from .test_discovery import fake

@@ -6,13 +6,14 @@ import math
 
 import pytest
 
-from minseg_tui.lab import steps
+from minseg_tui.lab import answers, steps
+from minseg_tui.lab.answers import check_answer
 from minseg_tui.lab.expr import parse_formula
-from minseg_tui.lab.steps import CHECKS, FIELDS, LEVELS, STEPS, check_answer, step
+from minseg_tui.lab.steps import CHECKS, FIELDS, LEVELS, STEPS, step
 
 
 def _f(key: str, text: str):
-    return steps.read_formula(FIELDS[key], text)
+    return answers.read_formula(FIELDS[key], text)
 
 
 def test_data_is_sound():
@@ -173,8 +174,8 @@ def test_summary_choices():
 
 
 def test_checks_at_sample_points_are_seeded_and_positive():
-    pts = steps._samples(("a", "b"))
-    assert pts == steps._samples(("a", "b"))
+    pts = answers._samples(("a", "b"))
+    assert pts == answers._samples(("a", "b"))
     assert all(0.5 <= v <= 2.0 for p in pts for v in p.values())
 
 

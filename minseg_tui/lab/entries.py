@@ -1,0 +1,204 @@
+"""What a group typed in each field, as the session keeps it: the :class:`Entry`.
+
+:func:`read_entry` reads text typed in a field (:mod:`minseg_tui.lab.steps`) into an
+entry, accepted with its SI value or refused with a one-line message; :func:`revise`
+decides what is in effect after a new text, keeping the history and never letting a
+refused text displace an accepted one. Pure functions: the session stores and saves.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
+from typing import Any
+
+from minseg_tui.errors import InputError
+from minseg_tui.lab.answers import read_formula
+from minseg_tui.lab.entry import parse_quantity
+from minseg_tui.lab.steps import FIELDS, Field
+
+
+@dataclass(frozen=True)
+class Entry:
+    """What was typed in one field, and what it was read as.
+
+    key: the field's key; text: exactly as typed; ok: accepted; value: SI float for a
+    quantity (or a formula without names), tuple of option indices for a choice, None
+    otherwise; unit: the unit it was typed in; message: why it was refused, or a note on
+    how it was read (``read as 47 mA``); warnings: plausibility warnings; source: ``typed``,
+    ``capture`` or ``meter``; at: ISO time; history: earlier (text, at) pairs, oldest first.
+
+    A refused text never displaces an accepted one: the accepted entry stays in effect and
+    carries the refused attempt in ``refused`` (text, message, at) until something is
+    accepted again, so neither what was typed last nor what was entered before is lost.
+    """
+
+    key: str
+    text: str
+    ok: bool
+    value: float | tuple[int, ...] | None = None
+    unit: str = ""
+    message: str = ""
+    warnings: tuple[str, ...] = ()
+    source: str = "typed"
+    at: str = ""
+    history: tuple[tuple[str, str], ...] = ()
+    refused: tuple[str, str, str] | None = None
+
+    @property
+    def typed(self) -> str:
+        """What the field shows: the refused attempt if there is one, else the text in effect."""
+        return self.refused[0] if self.refused else self.text
+
+    def to_json(self) -> dict[str, Any]:
+        """JSON-ready dict (the session file's form)."""
+        out = {
+            "text": self.text,
+            "ok": self.ok,
+            "value": list(self.value) if isinstance(self.value, tuple) else self.value,
+            "unit": self.unit,
+            "message": self.message,
+            "warnings": list(self.warnings),
+            "source": self.source,
+            "at": self.at,
+            "history": [list(h) for h in self.history],
+        }
+        if self.refused:
+            out["refused"] = list(self.refused)
+        return out
+
+    @classmethod
+    def from_json(cls, key: str, d: Mapping[str, Any]) -> Entry:
+        """Inverse of :meth:`to_json`."""
+        v = d.get("value")
+        value: float | tuple[int, ...] | None = (
+            tuple(int(x) for x in v)
+            if isinstance(v, list)
+            else (float(v) if isinstance(v, int | float) else None)
+        )
+        return cls(
+            key=key,
+            text=str(d["text"]),
+            ok=bool(d["ok"]),
+            value=value,
+            unit=str(d.get("unit", "")),
+            message=str(d.get("message", "")),
+            warnings=tuple(str(w) for w in d.get("warnings", [])),
+            source=str(d.get("source", "typed")),
+            at=str(d.get("at", "")),
+            history=tuple((str(h[0]), str(h[1])) for h in d.get("history", [])),
+            refused=(str(d["refused"][0]), str(d["refused"][1]), str(d["refused"][2]))
+            if d.get("refused")
+            else None,
+        )
+
+
+def parse_choice(text: str, n: int) -> tuple[int, ...]:
+    """'b', 'B, c', '2', '2 3' -> option indices; ValueError if unreadable."""
+    parts = [p for p in re.split(r"[\s,;]+", text.strip()) if p]
+    out = []
+    for p in parts:
+        if len(p) == 1 and p.isalpha():
+            k = ord(p.lower()) - ord("a")
+        elif p.isdigit():
+            k = int(p) - 1
+        else:
+            raise ValueError(p)
+        if not 0 <= k < n:
+            raise ValueError(p)
+        out.append(k)
+    if not out:
+        raise ValueError(text)
+    return tuple(sorted(set(out)))
+
+
+def read_entry(fld: Field, text: str) -> Entry:
+    """``text`` typed in field ``fld``, read: accepted with its value, unit, note and
+    plausibility warnings, or refused with the one-line message (no time, source, history)."""
+    if fld.kind == "text":
+        return Entry(fld.key, text, ok=True)
+    if not text.strip() and fld.optional:
+        return Entry(fld.key, text, ok=True)
+    try:
+        if fld.kind == "quantity":
+            p = parse_quantity(
+                text,
+                fld.unit,
+                label=fld.label,
+                allow_negative=fld.allow_negative,
+                allow_zero=fld.allow_zero,
+            )
+            warnings = tuple(w for rule in fld.plausible for w in rule.warnings(p.value))
+            return Entry(
+                fld.key,
+                text,
+                ok=True,
+                value=p.value,
+                unit=p.unit,
+                message=p.note,
+                warnings=warnings,
+            )
+        if fld.kind == "formula":
+            f = read_formula(fld, text)
+            value = f.value({}) if not fld.names else None
+            return Entry(fld.key, text, ok=True, value=value)
+        try:
+            chosen = parse_choice(text, len(fld.options))
+        except ValueError:
+            letters = "/".join(chr(ord("a") + k) for k in range(len(fld.options)))
+            raise InputError(
+                fld.label,
+                None,
+                f"expected {'one or more of' if fld.multiple else 'one of'} {letters}; got {text.strip()!r}",
+            ) from None
+        if len(chosen) > 1 and not fld.multiple:
+            raise InputError(fld.label, None, f"expected one answer; got {len(chosen)}")
+        return Entry(fld.key, text, ok=True, value=chosen)
+    except InputError as exc:
+        return Entry(fld.key, text, ok=False, message=str(exc))
+
+
+def revise(old: Entry | None, read: Entry, source: str, at: str) -> Entry:
+    """The entry in effect after ``read`` was typed (at ISO time ``at``) over ``old``.
+
+    A refused text over an accepted entry is kept beside it (``refused``); otherwise the
+    new entry takes effect and the old text (and a refused attempt) joins its history.
+    """
+    if not read.ok and old is not None and old.ok:
+        return replace(old, refused=(read.text, read.message, at))
+    history = (*old.history, (old.text, old.at)) if old is not None else ()
+    if old is not None and old.refused:
+        history = (*history, (old.refused[0], old.refused[2]))
+    return Entry(
+        key=read.key,
+        text=read.text,
+        ok=read.ok,
+        value=read.value,
+        unit=read.unit,
+        message=read.message,
+        warnings=read.warnings,
+        source=source,
+        at=at,
+        history=history,
+    )
+
+
+def parsed_values(entries: Mapping[str, Entry]) -> dict[str, object]:
+    """Accepted values by key, as checks use them (floats, Formulas, option tuples)."""
+    out: dict[str, object] = {}
+    for key, e in entries.items():
+        if not e.ok or key not in FIELDS:
+            continue
+        fld = FIELDS[key]
+        if fld.kind == "formula":
+            try:
+                out[key] = read_formula(fld, e.text)
+            except InputError:
+                continue
+        elif e.value is not None:
+            out[key] = e.value
+    return out
+
+
+__all__ = ["Entry", "parse_choice", "parsed_values", "read_entry", "revise"]

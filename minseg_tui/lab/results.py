@@ -1,0 +1,164 @@
+"""What the session computes from the entries and a run: Tasks 6-15, the table, the model check.
+
+Nothing here is stored: :func:`compute` derives Tasks 6-15 with
+:func:`minseg_tui.model.identify.identify` from R, the table's complete rows and the run
+Tasks 11-15 use, and :func:`check_run` runs the model check on a recorded run. The
+dataclasses are what :class:`~minseg_tui.lab.session.Session` hands to the UI and the report.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from minseg_tui.errors import InputError
+from minseg_tui.lab.files import read_step_log
+from minseg_tui.lab.runs import RunInfo
+from minseg_tui.model.check import CheckResult, check
+from minseg_tui.model.identify import Identification, Reading, identify
+from minseg_tui.model.steplog import StepLog
+
+
+@dataclass(frozen=True)
+class Notice:
+    """A warning to show: ``source`` is a field key or a finding code; ``message`` one line."""
+
+    source: str
+    message: str
+
+
+@dataclass(frozen=True)
+class TableRow:
+    """One row of the table of Tasks 4-9 (None where not known yet).
+
+    level: requested u_req (V); u_ss (V); omega_ss (rad/s); spread (rad/s, of the capture);
+    window: (t0, t1) s of the capture; i_ss (A); k_v (V s/rad); f (N m s/rad).
+    """
+
+    level: float
+    u_ss: float | None = None
+    omega_ss: float | None = None
+    spread: float | None = None
+    window: tuple[float, float] | None = None
+    i_ss: float | None = None
+    k_v: float | None = None
+    f: float | None = None
+
+
+@dataclass(frozen=True)
+class Results:
+    """Tasks 6-15 computed now from the entries: ``identification`` (None when the table is
+    not far enough), the run used for Tasks 11-15 (None without one), and ``problems``:
+    one line each for what keeps a result from being computed."""
+
+    identification: Identification | None
+    run: str | None
+    problems: tuple[str, ...] = ()
+
+    def to_json(self) -> dict[str, object] | None:
+        """The --json dict of ``minseg-tui identify`` for these results, or None."""
+        return self.identification.to_json() if self.identification else None
+
+    def lookup(self, path: str) -> float | str | None:
+        """A computed value by path (``k_v``, ``step.K``, ``step.T_63``, ``omega_at_5V``,
+        ``model`` as a sentence); None when not computed."""
+        d = self.to_json()
+        if d is None:
+            return None
+        if path == "model":
+            m = d.get("model")
+            if not isinstance(m, dict):
+                return None
+            return f"{m['T']:.3g} omega' = -omega + {m['K']:.3g} u_A"
+        node: object = d
+        for part in path.split("."):
+            if not isinstance(node, dict) or part not in node:
+                return None
+            node = node[part]
+        return float(node) if isinstance(node, int | float) else None
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """A student's own reading beside the computed value (same SI unit; ``unit`` is the
+    form unit for display); rel_diff = own / computed - 1 when both are numbers."""
+
+    key: str
+    label: str
+    unit: str
+    own: float | str | None
+    computed: float | str | None
+    rel_diff: float | None
+
+
+@dataclass(frozen=True)
+class ModelCheck:
+    """The model check of one run: its name, the result (None when it could not run) and,
+    then, why in one line (``problem``)."""
+
+    run: str | None
+    result: CheckResult | None
+    problem: str = ""
+
+
+def compute(
+    R: float | None, complete_rows: Sequence[Reading], run: RunInfo | None, folder: Path
+) -> Results:
+    """Tasks 6-15 from R (ohm), the table's complete rows and the run Tasks 11-15 use (its
+    log read from ``folder``); every reason a result is missing becomes a problem line."""
+    problems: list[str] = []
+    if R is None:
+        problems.append("R is not entered yet (Task 2)")
+    readings = []
+    for r in complete_rows:
+        why = r.problem()
+        if why:
+            problems.append(f"row {r.u_req:g} V left out: {why}")
+        else:
+            readings.append(r)
+    if not readings:
+        problems.append("no complete row in the table yet (u_ss, omega_ss and i_ss; Tasks 4-5)")
+    log: StepLog | None = None
+    if run is not None:
+        try:
+            log = read_step_log(folder / run.file)
+        except InputError as exc:
+            problems.append(f"run {run.name} cannot be used: {exc}")
+    if R is None or not readings:
+        return Results(None, run.name if run and log else None, tuple(problems))
+    try:
+        ident = identify(readings, R, log, source="table")
+    except InputError as exc:
+        if log is None:
+            return Results(None, None, (*problems, str(exc)))
+        problems.append(f"run {run.name if run else ''} gives no step result: {exc}")
+        try:
+            ident = identify(readings, R, None, source="table")
+        except InputError as exc2:
+            return Results(None, None, (*problems, str(exc2)))
+        return Results(ident, None, tuple(problems))
+    return Results(ident, run.name if (run and log is not None) else None, tuple(problems))
+
+
+def check_run(folder: Path, run: RunInfo) -> ModelCheck:
+    """The model check (:func:`minseg_tui.model.check.check`) of ``run``, read from ``folder``;
+    a run that cannot be read or checked gives the reason in one line."""
+    try:
+        log = read_step_log(folder / run.file)
+        return ModelCheck(run.name, check(log.t, log.u, log.omega, ts=run.ts))
+    except InputError as exc:
+        return ModelCheck(run.name, None, str(exc))
+    except ValueError as exc:
+        return ModelCheck(run.name, None, f"run {run.name}: {exc}")
+
+
+__all__ = [
+    "Comparison",
+    "ModelCheck",
+    "Notice",
+    "Results",
+    "TableRow",
+    "check_run",
+    "compute",
+]

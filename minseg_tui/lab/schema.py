@@ -1,0 +1,356 @@
+"""The one schema of session.json (and of a run's partial-file header), as data.
+
+A schema is built from a few small node types (:class:`Text`, :class:`Number`,
+:class:`Flag`, :class:`ListOf`, :class:`Pair`, :class:`MapOf`, :class:`Record`,
+:class:`OneOf`, :class:`Exactly`); :func:`problem` says where and why a value breaks it
+(``entries.R.history: expected a list, got 5``), or None. The check descends only as
+deep as the schema, so no file, however deeply nested, can exhaust the stack here.
+
+:data:`SESSION` is session.json as :class:`~minseg_tui.lab.session.Session` writes it;
+:func:`salvage` keeps what is sound in a damaged one for a read-only look.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+SCHEMA: int = 1
+"""Version of session.json's layout; a file with another version is refused."""
+
+KIND: str = "minseg-tui session"
+"""The ``kind`` every session file carries."""
+
+
+def _show(value: object) -> str:
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
+class Node:
+    """A part of a schema: :meth:`check` says why ``value`` (at ``where``) breaks it."""
+
+    def check(self, value: object, where: str) -> str | None:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def default(self) -> object:
+        """What stands in for a broken value when a damaged file is salvaged."""
+        return None
+
+
+@dataclass(frozen=True)
+class Text(Node):
+    """A string; ``pattern``: a regular expression it must match whole."""
+
+    pattern: str = ""
+
+    def check(self, value: object, where: str) -> str | None:
+        if not isinstance(value, str):
+            return f"{where}: expected text, got {_show(value)}"
+        if self.pattern and not re.fullmatch(self.pattern, value):
+            return f"{where}: {_show(value)} is not of the form {self.pattern}"
+        return None
+
+    def default(self) -> object:
+        return ""
+
+
+@dataclass(frozen=True)
+class Number(Node):
+    """A finite JSON number (not true/false); ``integer``: a whole one; ``low``: the least
+    value; ``positive``: above zero."""
+
+    integer: bool = False
+    low: float | None = None
+    positive: bool = False
+
+    def check(self, value: object, where: str) -> str | None:
+        ok = isinstance(value, int) if self.integer else isinstance(value, int | float)
+        if not ok or isinstance(value, bool):
+            what = "a whole number" if self.integer else "a number"
+            return f"{where}: expected {what}, got {_show(value)}"
+        assert isinstance(value, int | float)
+        if not math.isfinite(value):
+            return f"{where}: expected a finite number, got {_show(value)}"
+        if self.low is not None and value < self.low:
+            return f"{where}: expected at least {self.low:g}, got {value!r}"
+        if self.positive and value <= 0:
+            return f"{where}: expected a number above 0, got {value!r}"
+        return None
+
+    def default(self) -> object:
+        return 0
+
+
+@dataclass(frozen=True)
+class Flag(Node):
+    """true or false."""
+
+    def check(self, value: object, where: str) -> str | None:
+        return (
+            None
+            if isinstance(value, bool)
+            else f"{where}: expected true or false, got {_show(value)}"
+        )
+
+    def default(self) -> object:
+        return False
+
+
+@dataclass(frozen=True)
+class Exactly(Node):
+    """This very value."""
+
+    value: object
+
+    def check(self, value: object, where: str) -> str | None:
+        return (
+            None if value == self.value else f"{where}: expected {self.value!r}, got {_show(value)}"
+        )
+
+
+@dataclass(frozen=True)
+class ListOf(Node):
+    """A list whose every item is ``item``."""
+
+    item: Node
+
+    def check(self, value: object, where: str) -> str | None:
+        if not isinstance(value, list):
+            return f"{where}: expected a list, got {_show(value)}"
+        for k, v in enumerate(value):
+            why = self.item.check(v, f"{where}[{k}]")
+            if why:
+                return why
+        return None
+
+    def default(self) -> object:
+        return []
+
+
+@dataclass(frozen=True)
+class Pair(Node):
+    """A list of exactly these items, in this order (JSON has no tuples)."""
+
+    items: tuple[Node, ...]
+
+    def check(self, value: object, where: str) -> str | None:
+        if not isinstance(value, list) or len(value) != len(self.items):
+            return f"{where}: expected a list of {len(self.items)}, got {_show(value)}"
+        for k, (node, v) in enumerate(zip(self.items, value, strict=True)):
+            why = node.check(v, f"{where}[{k}]")
+            if why:
+                return why
+        return None
+
+
+@dataclass(frozen=True)
+class MapOf(Node):
+    """An object whose every value is ``item`` (keys are free text)."""
+
+    item: Node
+
+    def check(self, value: object, where: str) -> str | None:
+        if not isinstance(value, dict):
+            return f"{where}: expected an object, got {_show(value)}"
+        for k, v in value.items():
+            why = self.item.check(v, f"{where}.{k}" if where else str(k))
+            if why:
+                return why
+        return None
+
+    def default(self) -> object:
+        return {}
+
+
+@dataclass(frozen=True)
+class OneOf(Node):
+    """Any of ``options`` (``None`` in them: JSON null)."""
+
+    options: tuple[Node | None, ...]
+
+    def check(self, value: object, where: str) -> str | None:
+        if value is None and None in self.options:
+            return None
+        whys = [n.check(value, where) for n in self.options if n is not None]
+        if all(whys):
+            return whys[0] if len(whys) == 1 else f"{where}: unexpected {_show(value)}"
+        return None
+
+
+Rule = Callable[[Mapping[str, Any], str], str | None]
+
+
+@dataclass(frozen=True)
+class Record(Node):
+    """An object with ``required`` and ``optional`` fields (others are allowed: a newer
+    program may add fields) and ``rules`` across fields."""
+
+    required: Mapping[str, Node]
+    optional: Mapping[str, Node] = field(default_factory=dict)
+    rules: tuple[Rule, ...] = ()
+
+    def check(self, value: object, where: str) -> str | None:
+        if not isinstance(value, dict):
+            return f"{where}: expected an object, got {_show(value)}"
+        for name, node in self.required.items():
+            at = f"{where}.{name}" if where else name
+            if name not in value:
+                return f"{at}: missing"
+            why = node.check(value[name], at)
+            if why:
+                return why
+        for name, node in self.optional.items():
+            if name in value:
+                why = node.check(value[name], f"{where}.{name}" if where else name)
+                if why:
+                    return why
+        for rule in self.rules:
+            why = rule(value, where)
+            if why:
+                return why
+        return None
+
+
+def problem(value: object, node: Node) -> str | None:
+    """Where and why ``value`` breaks ``node``, in one line; None when it does not."""
+    return node.check(value, "")
+
+
+# -- the session file ----------------------------------------------------------------------------
+
+
+def _run_file(run: Mapping[str, Any], where: str) -> str | None:
+    want = f"runs/{run['name']}.csv"
+    if run["file"] != want:
+        return f"{where}.file: expected {want!r} (a run's log stays in runs/), got {_show(run['file'])}"
+    return None
+
+
+RUN_NAME = r"[A-Za-z0-9][A-Za-z0-9_-]{0,63}"
+"""What a run's name may be: it names files in runs/."""
+
+ENTRY = Record(
+    required={"text": Text(), "ok": Flag()},
+    optional={
+        "value": OneOf((None, Number(), ListOf(Number(integer=True, low=0)))),
+        "unit": Text(),
+        "message": Text(),
+        "warnings": ListOf(Text()),
+        "source": Text(),
+        "at": Text(),
+        "history": ListOf(Pair((Text(), Text()))),
+        "refused": OneOf((None, Pair((Text(), Text(), Text())))),
+    },
+)
+"""One entry (:meth:`minseg_tui.lab.entries.Entry.to_json`)."""
+
+CAPTURE = Record(
+    required={
+        "omega_ss": Number(),
+        "spread": Number(low=0),
+        "t0": Number(),
+        "t1": Number(),
+        "n": Number(integer=True, low=0),
+    },
+    optional={"velocity": Text()},
+)
+"""One steady-state capture (:meth:`minseg_tui.lab.capture.Capture.to_json`)."""
+
+PLAN = MapOf(Number())
+"""A run's step plan: low, high, half_period, periods, ts."""
+
+RUN = Record(
+    required={"name": Text(RUN_NAME), "file": Text()},
+    optional={
+        "kind": Text(),
+        "ts": Number(positive=True),
+        "samples": Number(integer=True, low=0),
+        "dropped": Number(integer=True, low=0),
+        "started": Text(),
+        "interrupted": Flag(),
+        "plan": PLAN,
+    },
+    rules=(_run_file,),
+)
+"""One recorded run (:meth:`minseg_tui.lab.runs.RunInfo.to_json`)."""
+
+SESSION = Record(
+    required={
+        "kind": Exactly(KIND),
+        "schema": Exactly(SCHEMA),
+        "id": Text(),
+        "members": ListOf(Text()),
+        "date": Text(),
+        "created": Text(),
+        "modified": Text(),
+        "current_step": Text(),
+        "entries": MapOf(ENTRY),
+        "captures": MapOf(CAPTURE),
+        "runs": ListOf(RUN),
+    },
+    optional={"selected_run": OneOf((None, Text()))},
+)
+"""session.json, whole."""
+
+PARTIAL_HEADER = Record(
+    required={},
+    optional={
+        "name": Text(),
+        "kind": Text(),
+        "ts": Number(positive=True),
+        "started": Text(),
+        "plan": PLAN,
+    },
+)
+"""The header line of a run's partial file (:func:`minseg_tui.lab.runs.run_header`)."""
+
+
+def salvage(data: dict[str, Any]) -> tuple[dict[str, Any], list[str]]:
+    """What is sound in a session file that breaks :data:`SESSION` (its kind and schema
+    already right), for a read-only look, and a line for each part left out: a broken
+    field takes its empty value; a broken entry, capture or run is left out."""
+    out = dict(data)
+    lost: list[str] = []
+    for name, node in {**SESSION.required, **SESSION.optional}.items():
+        value = data.get(name)
+        if isinstance(node, MapOf) and isinstance(value, dict):
+            keep = {}
+            for k, v in value.items():
+                why = node.item.check(v, f"{name}.{k}")
+                if why:
+                    lost.append(why)
+                else:
+                    keep[k] = v
+            out[name] = keep
+        elif isinstance(node, ListOf) and isinstance(value, list) and name == "runs":
+            keep_runs = []
+            for k, v in enumerate(value):
+                why = node.item.check(v, f"{name}[{k}]")
+                if why:
+                    lost.append(why)
+                else:
+                    keep_runs.append(v)
+            out[name] = keep_runs
+        elif name in SESSION.required or name in data:
+            why = node.check(value, name) if name in data else f"{name}: missing"
+            if why:
+                lost.append(why)
+                out[name] = node.default()
+    return out, lost
+
+
+__all__ = [
+    "CAPTURE",
+    "ENTRY",
+    "KIND",
+    "PARTIAL_HEADER",
+    "RUN",
+    "SCHEMA",
+    "SESSION",
+    "problem",
+    "salvage",
+]
