@@ -92,8 +92,13 @@ def _main(args_list: list[str]) -> int:
         parser.print_help()
         return 2
     module = importlib.import_module(available[args.command][0])
-    if args.command == "tui":  # the app reports its own troubles on screen
-        return int(module.run(args))
+    if args.command == "tui":  # the app reports its own troubles on screen, start-up's here
+        try:
+            return int(module.run(args))
+        except InputError as exc:
+            return _fail(args.command, str(exc), 2)
+        except MinsegError as exc:
+            return _fail(args.command, str(exc), 1)
     out = _Stdout(sys.stdout)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", RuntimeWarning)
