@@ -32,5 +32,6 @@ def run(args: argparse.Namespace) -> int:
     if sessions.exists() and not sessions.is_dir():
         raise InputError(str(sessions), None, "--sessions must be a folder")
     device = "sim" if args.sim else (args.port or "auto")
-    make_app(UiConfig(device=device, sessions=sessions), write_report).run()
+    app = make_app(UiConfig(device=device, sessions=sessions), lambda s: write_report(s).paths)
+    app.run()
     return 0
