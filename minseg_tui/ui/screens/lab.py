@@ -124,7 +124,7 @@ class StepCommands(Provider):
     """The lab screen's palette: one entry per step ("Go to: Task 10: the step experiment")
     and per recorded run ("Use run steps-1 for Tasks 11-15")."""
 
-    def entries(self) -> list[tuple[str, Callable[[], object], str]]:
+    def entries(self) -> Sequence[tuple[str, Callable[[], object], str]]:
         """(text, what it does, help) of every entry."""
         screen = self.screen
         if not isinstance(screen, LabScreen):
