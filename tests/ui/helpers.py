@@ -111,10 +111,10 @@ async def start(pilot: Pilot[None], names: str = "Ada, Bo") -> None:
     await settle(pilot, lambda: bool(pilot.app.screen.query("#members")))
     await pilot.press(*names)
     await pilot.press("enter")
-    await settle(pilot, lambda: isinstance(pilot.app.screen, LabScreen) and _shown(pilot.app))
+    await settle(pilot, lambda: isinstance(pilot.app.screen, LabScreen) and shown(pilot.app))
 
 
-def _shown(app: LabApp, step_id: str | None = None) -> bool:
+def shown(app: LabApp, step_id: str | None = None) -> bool:
     """The lab screen shows ``step_id`` (any step if None), its pane mounted."""
     screen = app.screen
     if not isinstance(screen, LabScreen):
@@ -124,6 +124,14 @@ def _shown(app: LabApp, step_id: str | None = None) -> bool:
     return pane is not None and pane.is_mounted and step_id in (None, pane.step.id)
 
 
+async def resume(pilot: Pilot[None]) -> None:
+    """Pick the first saved session on the start screen and wait for the lab screen."""
+    await settle(pilot, lambda: bool(pilot.app.screen.query("#sessions")))
+    pilot.app.screen.query_one("#sessions").focus()
+    await pilot.press("enter")
+    await settle(pilot, lambda: shown(pilot.app))
+
+
 async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") -> None:
     """Jump to ``step_id`` as the palette does and wait until it is shown, its view drawn and
     the focus where ``focus`` says."""
@@ -131,7 +139,7 @@ async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") ->
     lab_screen(app).go_to(step_id, focus)
 
     def there() -> bool:
-        if not _shown(app, step_id):
+        if not shown(app, step_id):
             return False
         rows = app.screen.query(StepPane).last().query(FieldRow)
         if focus != "entry" or not rows:

@@ -17,7 +17,17 @@ from minseg_tui.ui.screens.lab import LabScreen, StepCommands
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import status_text
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, settle, start, type_in
+from tests.ui.helpers import (
+    TABLE,
+    enter_all,
+    goto,
+    record_step_run,
+    resume,
+    settle,
+    shown,
+    start,
+    type_in,
+)
 
 
 def _chosen(app, key: str) -> tuple[int, ...]:
@@ -45,9 +55,9 @@ async def test_new_session_lands_in_the_lab_and_saves(quiet, tmp_path):
 async def test_empty_names_are_refused_with_a_message(quiet, tmp_path):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await pilot.pause()
+        await settle(pilot, lambda: bool(app.screen.query("#members")))
         await pilot.press("enter")
-        await pilot.pause()
+        await settle(pilot)
         assert not isinstance(app.screen, LabScreen)
         assert "names first" in str(app.screen.query_one("#start-msg").render())
     assert list_sessions(tmp_path / "sessions") == []
@@ -144,14 +154,9 @@ async def test_resume_lands_where_the_group_left_off(quiet, tmp_path):
         await start(pilot)
         await goto(pilot, "task5")
         await type_in(pilot, "i_ss@2.5", "31 mA")
-    with app.session as s:
-        s.close()
-    app2 = quiet()
+    app2 = quiet()  # the first app released the session when it closed
     async with app2.run_test(size=(80, 24)) as pilot:
-        await pilot.pause()
-        app2.screen.query_one("#sessions").focus()
-        await pilot.press("enter")
-        await settle(pilot)
+        await resume(pilot)
         assert isinstance(app2.screen, LabScreen)
         assert app2.screen.step.id == "task5"
         row = app2.screen.query_one(f"#{field_id('i_ss@2.5')}", FieldRow)
@@ -167,14 +172,9 @@ async def test_resume_on_a_step_with_a_panel(quiet, step_id):
         await start(pilot)
         enter_all(app, TABLE)
         await goto(pilot, step_id)
-    with app.session as s:
-        s.close()
     app2 = quiet()
     async with app2.run_test(size=(80, 24)) as pilot:
-        await pilot.pause()
-        app2.screen.query_one("#sessions").focus()
-        await pilot.press("enter")
-        await settle(pilot)
+        await resume(pilot)
         assert isinstance(app2.screen, LabScreen) and app2.screen.step.id == step_id
         assert len(app2.screen.query(".panel")) == 1
         if step_id == "table":
@@ -193,6 +193,7 @@ async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quie
             "f9"
         ].binding.show  # not in the footer where it does nothing
         await pilot.press("f9", "alt+right")  # says it is not part of this step; nothing breaks
+        await settle(pilot)
         await goto(pilot, "task11")
         await settle(pilot)
         note = app.screen.query_one("#zoom-note")
@@ -200,15 +201,20 @@ async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quie
         own = await type_in(pilot, "own.K", "")
         assert app.focused is own.input
         await pilot.press("alt+right")
+        await settle(pilot)
         assert "step 2 of" in str(note.render())
         await pilot.press("left_square_bracket", "z")  # printable keys stay in the entry
+        await settle(pilot)
         assert own.input.value == "[z" and "step 2 of" in str(note.render())
         app.screen.query_one("#nav").focus()
         await pilot.press("ctrl+right")
+        await settle(pilot)
         assert "step 3 of" in str(note.render())
         await pilot.press("alt+left", "alt+left")
+        await settle(pilot)
         assert "step 1 of" in str(note.render())
         await pilot.press("f9", "f9")
+        await settle(pilot)
         assert "step 3 of" in str(note.render())
 
 
@@ -232,6 +238,7 @@ async def test_table_fits_80_columns_and_f7_gives_the_row_formula_with_its_numbe
         table.focus()
         table.move_cursor(row=0, column=4)
         await pilot.press("f7")
+        await settle(pilot)
         text = str(app.screen.query_one("#formula").render())
         # k_v = (u_ss - R i_ss) / omega_ss with row 1's numbers: (2.05 - 5.3 * 0.028) / 3.1
         assert "(2.05 V - 5.3 Ω × 0.028 A) / 3.1 rad/s" in text and "0.6134" in text
@@ -289,9 +296,11 @@ async def test_a_voltage_set_on_task_3_is_still_the_request_on_task_4(quiet):
         await start(pilot)
         await goto(pilot, "task3")
         await pilot.press("f3")  # Task 3 says "set a voltage"
+        await settle(pilot)
         assert dev.commands[-1] == "V 2.5"
         await goto(pilot, "task4")
         await pilot.press("f3")
+        await settle(pilot)
         assert dev.commands[-1] == "V 3.5" and app.motor == "3.5 V"
 
 
@@ -302,17 +311,19 @@ async def test_stop_key_turns_the_motor_off_from_anywhere(quiet):
         await start(pilot)
         await goto(pilot, "task4")
         await pilot.press("f3")
-        await pilot.pause()
+        await settle(pilot)
         assert dev.commands[-1] == "V 2.5" and app.motor == "2.5 V"
         await pilot.press("f3")
+        await settle(pilot)
         assert dev.commands[-1] == "V 3.5"
         row = app.screen.query_one(f"#{field_id('u_ss@2.5')}", FieldRow)
         row.input.focus()
         await pilot.press("f2")
-        await pilot.pause()
+        await settle(pilot)
         assert dev.commands[-1] == "STOP" and app.motor == "off"
         await goto(pilot, "prep3")
         await pilot.press("f2")
+        await settle(pilot)
         assert dev.commands[-1] == "STOP"
 
 
@@ -321,13 +332,13 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await pilot.press("f1")
-        await pilot.pause()
+        await settle(pilot)
         assert isinstance(app.screen, HelpScreen)
         text = str(app.screen.query_one("#help-keys").render())
         for key in ("F2", "STOP", "F5", "F8", "Ctrl+P"):
             assert key in text
         await pilot.press("escape")
-        await pilot.pause()
+        await settle(pilot)
         assert isinstance(app.screen, LabScreen)
         titles = {c.title for c in app.get_system_commands(app.screen)}
         assert {
@@ -343,8 +354,7 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
         await pilot.press(*"Task 10")
         await settle(pilot)
         await pilot.press("enter")
-        await settle(pilot)
-        assert app.screen.step.id == "task10"
+        await settle(pilot, lambda: shown(app, "task10"))
 
 
 async def test_navigator_collapses_and_marks_done_steps(quiet):
@@ -357,9 +367,10 @@ async def test_navigator_collapses_and_marks_done_steps(quiet):
         await type_in(pilot, "R", "5.3")
         assert str(nav.get_option("task2").prompt).startswith("✓")
         await pilot.press("ctrl+t")
-        await pilot.pause()
+        await settle(pilot)
         assert not nav.display
         await pilot.press("ctrl+t")
+        await settle(pilot)
         assert nav.display
 
 

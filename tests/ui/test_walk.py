@@ -22,7 +22,7 @@ from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import DeviceStatus
 from tests.ui.conftest import board_url, real_app
-from tests.ui.helpers import Heard, goto, paste_in, settle, start
+from tests.ui.helpers import Heard, goto, paste_in, resume, settle, start
 
 
 def _status(app) -> str:
@@ -210,11 +210,8 @@ async def test_kill_9_mid_session_and_resume(tmp_path):
         proc.wait()
     app = real_app(root, board_url(seed=3))
     async with app.run_test(size=(80, 24)) as pilot:
-        await settle(pilot, lambda: bool(app.screen.query("#sessions")))
-        app.screen.query_one("#sessions").focus()
-        await pilot.press("enter")
-        await settle(pilot, lambda: isinstance(app.screen, LabScreen))
-        await settle(pilot, lambda: app.screen.step.id == "task10")
+        await resume(pilot)
+        assert isinstance(app.screen, LabScreen) and app.screen.step.id == "task10"
         with app.session as s:
             assert s.entry("R").text == "5,3" and abs(s.value("R") - 5.3) < 1e-12
             assert s.entry("i_ss@2.5").text == "47 mA"
