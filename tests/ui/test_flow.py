@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 from textual.filter import Monochrome, NoColor
+from textual.message import Message
 from textual.widgets import DataTable, RadioSet, SelectionList
 
 from minseg_tui.device.link import SampleBatch
@@ -12,6 +13,9 @@ from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.store import list_sessions
 from minseg_tui.ui.device import DeviceInfo, LinkState
+from minseg_tui.ui.messages import CaptureRequested, RunRequested, VoltageRequested
+from minseg_tui.ui.panels.live import LivePanel
+from minseg_tui.ui.panels.step_run import StepRunPanel
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen, StepCommands
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
@@ -444,3 +448,40 @@ async def test_typing_lands_in_the_step_and_enter_moves_on(quiet, tmp_path):
     with Session.open(next(iter(list_sessions(tmp_path / "sessions"))).path) as again:
         assert again.entry("u_ss@2.5").typed == "2,05 kg"
         assert again.entry("R").typed == "5,3 kg" and again.value("R") == 5.3
+
+
+async def test_panels_ask_with_messages_and_show_the_apps_state(quiet):
+    """F3, F4 and F5 reach the app and the screen as messages from the step's panel; what
+    they change (the requested voltage, the motor, the run) is the app's state, which the
+    panels show."""
+    dev = QuietDevice(seed=2)
+    app = quiet(dev)
+    heard: list[Message] = []
+    async with app.run_test(size=(80, 24), message_hook=heard.append) as pilot:
+
+        def asked(kind: type[Message]) -> list[Message]:
+            return list({id(m): m for m in heard if isinstance(m, kind)}.values())
+
+        await start(pilot)
+        await goto(pilot, "task4")
+        await pilot.press("f3")
+        await settle(pilot)
+        assert [m.level for m in asked(VoltageRequested)] == [2.5]
+        assert app.requested == app.screen.query_one(LivePanel).requested == 2.5
+        assert app.motor == "2.5 V" and dev.commands[-1] == "V 2.5"
+        await pilot.press("f4")
+        await settle(pilot)
+        assert [m.level for m in asked(CaptureRequested)] == [2.5]
+        with app.session as s:  # the double streams nothing: never settled, nothing stored
+            assert s.entry("omega_ss@2.5") is None
+        await goto(pilot, "task10")
+        await pilot.press("f5")
+        await settle(pilot)
+        assert [m.plan for m in asked(RunRequested)] == ["manual"]
+        assert app.recording is not None and dev.commands[-1] == "STEP 0 4.5 1.5 4"
+        panel = app.screen.query_one(StepRunPanel)
+        assert panel.run_progress is not None and panel.run_progress.recording
+        await pilot.press("f2")
+        await settle(pilot)
+        assert app.recording is None and dev.commands[-1] == "STOP"
+        assert panel.run_progress.text == "stopped: run steps-1: too few samples, nothing kept"

@@ -18,6 +18,7 @@ from minseg_tui.lab.store import list_sessions
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.panels.live import LivePanel
+from minseg_tui.ui.panels.report import ReportPanel
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import DeviceStatus
@@ -134,6 +135,7 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         await paste_in(pilot, "summary.unclear", "the filter")
         await pilot.press("f8")
         await settle(pilot, lambda: bool(app.exported))
+        assert "report.md" in str(app.screen.query_one(ReportPanel).render())
     folder = list_sessions(tmp_path / "sessions")[0].path
     md = (Path(folder) / "report.md").read_text()
     assert f"{R:.1f}" in md.replace(",", ".") or f"{R:g}" in md

@@ -11,7 +11,7 @@ from minseg_tui.ui.device import DeviceInfo
 class ConnectPanel(Static):
     """Says which ``device`` the app is connected to (None: none yet)."""
 
-    device: reactive[DeviceInfo | None] = reactive(None)
+    device: reactive[DeviceInfo | None] = reactive(None, layout=True)
 
     def __init__(self) -> None:
         super().__init__("", classes="panel")

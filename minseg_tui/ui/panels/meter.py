@@ -13,8 +13,8 @@ class MeterPanel(Static):
     """Shows ``reading`` (u_A V, i A, R ohm) when the ``device`` is the virtual MinSeg; on a
     real board, says to read the one on the bench."""
 
-    reading: reactive[MeterReading | None] = reactive(None)
-    device: reactive[DeviceInfo | None] = reactive(None)
+    reading: reactive[MeterReading | None] = reactive(None, layout=True)
+    device: reactive[DeviceInfo | None] = reactive(None, layout=True)
 
     def __init__(self) -> None:
         super().__init__("", classes="meter")

@@ -9,7 +9,7 @@ from textual.widgets import Static
 class ReportPanel(Static):
     """Says how to write the report and lists the files ``exported`` (paths) so far."""
 
-    exported: reactive[tuple[str, ...]] = reactive(())
+    exported: reactive[tuple[str, ...]] = reactive((), layout=True)
 
     def __init__(self) -> None:
         super().__init__("", classes="panel")
