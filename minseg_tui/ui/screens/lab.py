@@ -191,9 +191,9 @@ class LabScreen(StatusScreen):
         self._refresh = refresh
         self._shown: str | None = None
         """The step whose pane was last mounted (the DOM may not hold it yet)."""
-        self._focus_next: str | None = None
-        self._focus_set = False
-        """What to focus once the next step is shown, if set (after a jump from the palette)."""
+        self._jump: tuple[str | None] | None = None
+        """Set by :meth:`go_to`: what to focus once its step is shown (in a tuple: the focus
+        may be None, "leave it")."""
 
     def compose(self) -> ComposeResult:
         yield self.status_line()
@@ -266,10 +266,10 @@ class LabScreen(StatusScreen):
         with self.session as s:
             s.go_to(step_id)
         panel = self._panel_for(step)
-        focus, self._focus_next = self._focus_next, None
-        if not self._focus_set and self.focused is not self.query_one("#nav"):
-            focus = "entry"  # moved with PgDn/PgUp: land in the first entry
-        self._focus_set = False
+        if self._jump is not None:
+            (focus,), self._jump = self._jump, None
+        else:  # moved with PgDn/PgUp: land in the first entry; moving on the list stays there
+            focus = None if self.focused is self.query_one("#nav") else "entry"
         self.query(".pane").remove()
         self.query_one("#body").mount(StepPane(step, panel, self._rows(step), focus))
         self.post_message(StepShown(step))
@@ -334,8 +334,7 @@ class LabScreen(StatusScreen):
             if panes and focus is not None:
                 panes.last().focus_on(focus)
             return
-        self._focus_next = focus
-        self._focus_set = True
+        self._jump = (focus,)
         nav.highlighted = index
 
     def _move(self, delta: int) -> None:
