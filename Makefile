@@ -8,7 +8,7 @@ STAMP  := $(VENV)/.installed
 # AVR=0 skips the firmware cross-build (for a laptop without gcc-avr and without root).
 AVR    ?= 1
 
-.PHONY: run test lint pytest firmware firmware-host-test bench clean
+.PHONY: run test lint typecheck pytest snapshot-update firmware firmware-host-test bench clean
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV) || { echo "error: could not create a virtualenv with $(PYTHON) -m venv (Debian: apt-get install python3-venv)"; exit 2; }
@@ -24,8 +24,15 @@ lint: $(STAMP)
 	$(VENV)/bin/ruff format --check minseg_tui tests benchmarks
 	$(VENV)/bin/lint-imports
 
+typecheck: $(STAMP)
+	$(VENV)/bin/mypy
+
 pytest: $(STAMP)
 	$(PY) -m pytest -q $(PYTEST_ARGS)
+
+# Re-pin the screens after a change meant to alter them; review the SVG diffs before committing.
+snapshot-update: $(STAMP)
+	$(PY) -m pytest -q tests/ui/test_snapshots.py --snapshot-update
 
 firmware-host-test:
 	$(MAKE) -C firmware host-test

@@ -35,5 +35,6 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(str(sessions), None, "--sessions must be a folder")
     list_sessions(sessions)  # a folder that cannot be listed: one line, exit 2
     device = "sim" if args.sim else (args.port or "auto")
-    make_app(UiConfig(device=device, sessions=sessions), write_report).run()
+    app = make_app(UiConfig(device=device, sessions=sessions), lambda s: write_report(s).paths)
+    app.run()
     return 0

@@ -18,6 +18,11 @@ class Written:
     html: Path
     runs: tuple[Path, ...]
 
+    @property
+    def paths(self) -> tuple[Path, ...]:
+        """Every file: the Markdown report, the HTML report, then the runs' CSV."""
+        return (self.markdown, self.html, *self.runs)
+
 
 def write_report(session: Session) -> Written:
     """Build the report of ``session`` and write report.md and report.html atomically into

@@ -1,10 +1,16 @@
-"""The Textual app: start screen, the lab screen, keys, command palette, the device worker.
+"""The Textual app: start screen, the lab screen, keys, command palette, the device workers.
 
-:func:`make_app` is the one way to build it (the CLI and the tests share it). Widgets only
-render; this module moves data between the device/lab layers (through
-:mod:`minseg_tui.ui.ports`) and the screens. The device is opened in a worker; a second
-worker drains it into the bounded live buffer (and into the run being recorded) and posts
-coalesced messages, so the event loop never waits on the board.
+:func:`make_app` is the one way to build it (the CLI and the tests share it). The app owns
+the device, the open session and the state the screens show, as reactive attributes it
+binds into each screen it makes: ``device`` (who we talk to), ``link`` (its state and
+counters), ``motor``, ``requested`` (the voltage set with F3), ``meter`` (the virtual
+multimeter), ``run_progress`` (the Task 10 run being recorded) and ``exported`` (the report's
+files); and ``lab_changed``, a signal published whenever the session changed. It answers
+the requests that need the device (:class:`VoltageRequested`, :class:`RunRequested`, F2, F8).
+
+The device is opened in a worker; a second worker drains it every 50 ms into the bounded
+live buffer (and into the run being recorded) and posts coalesced messages, so the event
+loop never waits on the board.
 """
 
 from __future__ import annotations
@@ -12,27 +18,45 @@ from __future__ import annotations
 import datetime as _dt
 import threading
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
 
 from textual import on, work
 from textual.app import App, SystemCommand
 from textual.binding import Binding
+from textual.reactive import reactive
 from textual.screen import Screen
-from textual.widget import Widget
+from textual.signal import Signal
 from textual.worker import get_current_worker
 
 from minseg_tui.errors import MinsegError
+from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step as lab_step
-from minseg_tui.ui.backend import ReportWriter
-from minseg_tui.ui.commands import StepCommands
+from minseg_tui.lab.store import list_sessions
+from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.config import UiConfig
+from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
 from minseg_tui.ui.live import LiveBuffer
-from minseg_tui.ui.messages import DeviceOpened, LinkEvent, SamplesArrived
-from minseg_tui.ui.ports import Device, Event, Lab, Meter, Recording, Store
+from minseg_tui.ui.messages import (
+    DeviceOpened,
+    LinkEventArrived,
+    MeterRead,
+    RunRequested,
+    SamplesArrived,
+    StepShown,
+    VoltageRequested,
+)
+from minseg_tui.ui.recording import ActiveRun, RunProgress
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.start import StartScreen
-from minseg_tui.ui.widgets.status import DeviceStatus
+from minseg_tui.ui.shared import Shared
+
+ReportWriter = Callable[[Session], Sequence[Path]]
+"""Writes a session's report into its folder; the files written (the CLI hands in
+:func:`minseg_tui.report.write.write_report`: the report layer sits beside the UI)."""
 
 KEYS: list[tuple[str, str]] = [
     ("F1", "this help"),
@@ -83,16 +107,27 @@ is taken from typing in an entry (Ctrl+arrows stay the entry's word moves)."""
 RUN_ENDS = frozenset({"stepdone", "disconnected", "watchdog", "boot", "error"})
 """Link events after which a run being recorded takes no more samples."""
 
+RUN_KIND = {"manual": "steps", "fast": "fast"}
+"""Task 10's plans (lab.steps) to the session's run kinds."""
+
 LAB_PERIOD = 0.025
 """Sample period restored after a fast run, s (the manual's)."""
 
+STREAM_PERIOD = 0.05
+"""How often the stream worker drains the device, s."""
+
+METER_PERIOD = 0.25
+"""How often the virtual multimeter is read while a step shows it, s."""
+
 
 class LabApp(App[None]):
-    """minseg-tui: the DC-motor lab, step by step, on the board or the virtual MinSeg."""
+    """minseg-tui: the DC-motor lab, step by step, on the board or the virtual MinSeg.
+
+    ``open_device`` opens the device for a spec (see :func:`~minseg_tui.ui.device.open_device`);
+    ``writer`` writes the report (None: F8 says it cannot)."""
 
     TITLE = "minseg-tui"
     CSS_PATH = "lab.tcss"
-    COMMANDS = App.COMMANDS | {StepCommands}
     BINDINGS = [
         Binding("f1", "help", "Help"),
         Binding("f2", "stop_motor", "STOP", priority=True),
@@ -104,24 +139,40 @@ class LabApp(App[None]):
         *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
     ]
 
+    device: reactive[DeviceInfo | None] = reactive(None)
+    """Who the app talks to (None: no device yet, or none could be opened)."""
+    link: reactive[LinkState] = reactive(LinkState(event="connecting…"))
+    """The link's state, counters and the last event's words."""
+    motor: reactive[str] = reactive("off")
+    """What the motor does, in words: off, 2.5 V, steps 0/4.5 V."""
+    requested: reactive[float | None] = reactive(None)
+    """The voltage last set with F3 (V; None: none, or the motor is off or runs steps)."""
+    meter: reactive[MeterReading | None] = reactive(None)
+    """The virtual multimeter's last reading (None: none yet)."""
+    run_progress: reactive[RunProgress | None] = reactive(None)
+    """The Task 10 run being recorded, or the last one's end (None: none yet)."""
+    exported: reactive[tuple[str, ...]] = reactive(())
+    """The files the report was last written to."""
+
     def __init__(
-        self, config: UiConfig, store: Store, open_device: Callable[[str], Device]
+        self,
+        config: UiConfig,
+        open_device: Callable[[str], Device],
+        writer: ReportWriter | None = None,
     ) -> None:
         super().__init__()
         self.config = config
-        self.store = store
         self._open_device = open_device
-        self.device: Device | None = None
-        self.lab: Lab | None = None
+        self._writer = writer
+        self._device: Device | None = None
+        self.session: Shared[Session] | None = None
+        """The open session (None on the start screen)."""
         self.live = LiveBuffer()
-        self.motor = "off"
-        self.requested: float | None = None
-        """The voltage last set with F3 (V; None: none, or the motor is off or runs steps)."""
-        self.event_text = "connecting…"
-        self.recording: Recording | None = None
-        self.meter_reading: Meter | None = None
-        self.meter_wanted = 0
-        self.exported: tuple[str, ...] = ()
+        self.recording: ActiveRun | None = None
+        """The Task 10 run being recorded."""
+        self.lab_changed: Signal[None] = Signal(self, "lab-changed")
+        """Published whenever the session changed (an entry, a capture, a run, an import)."""
+        self._meter_wanted = False
         self._stop = threading.Event()
         if not config.animations:
             self.animation_level = "none"
@@ -129,7 +180,8 @@ class LabApp(App[None]):
     # -- start-up ---------------------------------------------------------------------
     def on_mount(self) -> None:
         today = self.config.today or _dt.date.today().isoformat()
-        self.push_screen(StartScreen(self.store.list(), today))
+        start = StartScreen(list_sessions(Path(self.config.sessions)), today)
+        self.push_screen(start.data_bind(LabApp.device, LabApp.link, LabApp.motor))
         self._connect(self.config.device)
 
     @work(thread=True, exclusive=True, group="connect", name="open device")
@@ -140,158 +192,104 @@ class LabApp(App[None]):
         except MinsegError as exc:
             self.post_message(DeviceOpened(None, str(exc)))
             return
-        self.post_message(DeviceOpened(device, ""))
+        self.post_message(
+            DeviceOpened(device, fallback=spec == "auto" and device.board is not None)
+        )
 
     @on(DeviceOpened)
     def _opened(self, event: DeviceOpened) -> None:
         if event.device is None:
-            self.event_text = "no device: " + event.error
+            self.link = LinkState(event="no device: " + event.error)
             self.notify(event.error, title="device", severity="error", timeout=10)
-        else:
-            self.device = event.device
-            self.event_text = ""
-            self._stream()
-        self.refresh_status()
-
-    def on_screen_resume(self) -> None:
-        self.refresh_status()
-
-    def refresh_status(self) -> None:
-        """Copy device info, link health, the last event and the motor into every status line."""
-        info = self.device.info if self.device else None
-        health = self.device.health() if self.device else None
-        for screen in self.screen_stack:
-            for w in screen.query(DeviceStatus):
-                w.info, w.health, w.motor, w.event = info, health, self.motor, self.event_text
+            return
+        self._device = event.device
+        self.device = DeviceInfo.of(event.device, event.fallback)
+        self.link = LinkState()
+        self._stream(event.device)
 
     @on(StartScreen.NewSession)
     def _new(self, event: StartScreen.NewSession) -> None:
-        self._enter_lab(lambda: self.store.new(event.members, event.date))
+        names = [m.strip() for m in event.members.split(",") if m.strip()]
+        root = Path(self.config.sessions)
+        self._enter_lab(lambda: Session.create(root, names, event.date or None))
 
     @on(StartScreen.Resume)
     def _resume(self, event: StartScreen.Resume) -> None:
-        self._enter_lab(lambda: self.store.open(event.path))
+        self._enter_lab(lambda: Session.open(Path(event.path)))
 
-    def _enter_lab(self, get: Callable[[], Lab]) -> None:
+    def _enter_lab(self, get: Callable[[], Session]) -> None:
         try:
-            self.lab = get()
+            session = get()
         except MinsegError as exc:
             self.notify(str(exc), title="session", severity="error", timeout=10)
             return
-        self.switch_screen(LabScreen(self.lab))
-        self.call_after_refresh(self.refresh_status)
-        recovered = getattr(self.lab, "recovered", [])
-        if recovered:
-            self.notify("kept after a crash: " + ", ".join(recovered), title="session")
+        self.session = Shared(session)
+        screen = LabScreen(self.session, self.live, self.lab_changed, self.config.refresh)
+        self.switch_screen(
+            screen.data_bind(
+                LabApp.device,
+                LabApp.link,
+                LabApp.motor,
+                LabApp.requested,
+                LabApp.meter,
+                LabApp.run_progress,
+                LabApp.exported,
+            )
+        )
+        if session.recovered:
+            self.notify("kept after a crash: " + ", ".join(session.recovered), title="session")
 
     # -- the stream ---------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="stream", name="device stream")
-    def _stream(self) -> None:
+    def _stream(self, device: Device) -> None:
         """Worker thread: drain the device into the live buffer and the run being recorded (and
-        flush the run to disk); say so with one coalesced message per read; poll the virtual
-        multimeter."""
+        flush the run to disk); say so with one coalesced message per read; pass the link's
+        events on; read the virtual multimeter while a step shows it."""
         worker = get_current_worker()
-        device = self.device
-        assert device is not None
         next_meter = 0.0
-        while not worker.is_cancelled and not self._stop.is_set():
-            try:
-                batch = device.read(0.05)
-            except MinsegError as exc:
-                self.post_message(LinkEvent(Event("error", str(exc))))
-                return
+        while not worker.is_cancelled and not self._stop.wait(STREAM_PERIOD):
+            batch = device.samples()
+            events = device.events()
+            rec = self.recording
             if len(batch):
                 self.live.extend(batch)
-                rec = self.recording
                 if rec is not None:
                     rec.append(batch)
-                    if any(ev.kind in RUN_ENDS for ev in batch.events):
-                        rec.end()
-                self.post_message(SamplesArrived(device.health(), self.live.total))
-            rec = self.recording
-            if rec is not None:  # the run's samples reach the disk within a second (the flush
-                rec.tick()  # fsyncs: here, never on the UI thread)
-            for ev in batch.events:
-                self.post_message(LinkEvent(ev))
+                self.post_message(SamplesArrived(replace(device.stats), self.live.total))
+            if rec is not None:
+                if any(ev.kind in RUN_ENDS for ev in events):
+                    rec.end()
+                rec.tick()  # the run's samples reach the disk within a second (the flush
+                # fsyncs: here, never on the UI thread)
+            for ev in events:
+                self.post_message(LinkEventArrived(ev))
             now = time.monotonic()
-            if self.meter_wanted and device.info.virtual and now >= next_meter:
-                next_meter = now + 0.25
+            if self._meter_wanted and device.board is not None and now >= next_meter:
+                next_meter = now + METER_PERIOD
                 try:
-                    self.meter_reading = device.meter()
+                    reading = device.meter()
                 except MinsegError:
-                    self.meter_reading = None
+                    reading = None
+                self.post_message(MeterRead(reading))
 
     @on(SamplesArrived)
     def _samples(self, event: SamplesArrived) -> None:
-        for w in self.screen.query(DeviceStatus):
-            w.health = event.health
+        self.link = self.link.counted(event.stats)
         if self.recording is not None:
-            self._show_progress()
+            self.run_progress = self.recording.progress()
 
-    def _show_progress(self) -> None:
-        from minseg_tui.ui.panels import StepRunPanel
+    @on(MeterRead)
+    def _meter_read(self, event: MeterRead) -> None:
+        self.meter = event.reading
 
-        rec = self.recording
-        if rec is None:
-            return
-        duration = rec.plan.duration  # type: ignore[attr-defined]
-        fraction = min(1.0, rec.elapsed / duration) if duration > 0 else 0.0
-        for panel in self.screen.query(StepRunPanel):
-            panel.progress(
-                fraction,
-                f"recording {rec.name}: {rec.samples} samples, "
-                f"{rec.elapsed:.1f} of {duration:.1f} s · F2 stops",
-            )
+    @on(StepShown)
+    def _step_shown(self, event: StepShown) -> None:
+        self._meter_wanted = "meter" in event.step.actions
 
-    def start_run(self, name: str) -> None:
-        """Task 10: start the board's step sequence for plan ``name`` and record it."""
-        if self.device is None or self.lab is None:
-            self.notify(
-                "no device: the run needs the board or the virtual MinSeg", severity="error"
-            )
-            return
-        if self.recording is not None:
-            self.notify("a run is in progress; F2 stops it", severity="warning")
-            return
-        plan = dict(lab_step("task10").plans)[name]
-        try:
-            self.device.stop()
-            self.device.set_period(plan.ts)
-            self.recording = self.lab.start_recording(name)
-            self.device.run_steps(plan.low, plan.high, plan.half_period, plan.periods)
-        except MinsegError as exc:
-            self.notify(str(exc), title="run", severity="error")
-            self.finish_run("could not start")
-            return
-        self.motor = f"steps 0/{plan.high:g} V"
-        self.requested = None
-        self.refresh_status()
-        self._show_progress()
-
-    def finish_run(self, why: str) -> None:
-        """The run ended (done, stopped, board lost): keep what was recorded."""
-        rec, self.recording = self.recording, None
-        if rec is None or self.lab is None:
-            return
-        try:
-            kept = self.lab.finish_recording(rec)
-        except MinsegError as exc:
-            kept = str(exc)
-        self.notify(f"{why}: {kept}", title="Task 10")
-        from minseg_tui.ui.panels import StepRunPanel
-
-        for panel in self.screen.query(StepRunPanel):
-            panel.progress(1.0 if why == "done" else 0.0, f"{why}: {kept}")
-        if self.device is not None and rec.plan.ts != LAB_PERIOD:  # type: ignore[attr-defined]
-            try:
-                self.device.set_period(LAB_PERIOD)
-            except MinsegError:
-                pass
-        self.entry_stored("run")
-
-    @on(LinkEvent)
-    def _link_event(self, event: LinkEvent) -> None:
-        kind = event.event.kind
+    @on(LinkEventArrived)
+    def _link_event(self, event: LinkEventArrived) -> None:
+        ev = event.event
+        kind = ev.kind
         if kind == "step":
             return
         if kind == "stepdone":
@@ -303,46 +301,90 @@ class LabApp(App[None]):
             self.requested = None
             if self.recording is not None:
                 self.finish_run(EVENT_TEXT.get(kind, "stopped"))
-        if kind == "connected" and self.event_text == "":
+        if kind == "connected" and self.link.event == "":
+            self.link = self.link.after(ev, "")
             return
-        self.event_text = EVENT_TEXT.get(kind, event.event.message)
-        self.refresh_status()
+        self.link = self.link.after(ev, EVENT_TEXT.get(kind, ev.message))
         if kind in ("disconnected", "watchdog", "error"):
             self.notify(
-                self.event_text if kind != "error" else event.event.message,
-                severity="warning",
-                timeout=8,
+                self.link.event if kind != "error" else ev.message, severity="warning", timeout=8
             )
 
-    # -- what a step shows besides its entries -------------------------------------------
-    def step_panel(self, step: object) -> Widget | None:
-        """The live/table/run panel of a step (None for steps that only take entries)."""
-        from minseg_tui.ui.panels import panel_for
-
-        return panel_for(self, step)  # type: ignore[arg-type]
-
-    def entry_stored(self, key: str) -> None:
-        """An entry was saved: panels that depend on entries recompute; the navigator marks."""
-        for screen in self.screen_stack:
-            for w in screen.query(".recompute"):
-                w.recompute()  # type: ignore[attr-defined]
-            if isinstance(screen, LabScreen):
-                screen.refresh_marks()
-
-    def focus_after(self, key: str) -> None:
-        """Put the cursor in the entry that follows field ``key`` on the step (a form's flow)."""
-        if isinstance(self.screen, LabScreen):
-            self.screen.focus_after(key)
-
-    def refresh_fields(self) -> None:
-        """Show in every entry row what the lab now holds (after a capture)."""
-        from minseg_tui.ui.widgets.fields import FieldRow
-
-        if self.lab is None:
+    # -- what the panels ask for ------------------------------------------------------------
+    @on(VoltageRequested)
+    def _set_voltage(self, event: VoltageRequested) -> None:
+        """F3: the voltage on the motor."""
+        event.stop()
+        if self._device is None:
+            self.notify("no device: setting a voltage needs the board or the virtual MinSeg")
             return
-        for row in self.screen.query(FieldRow):
-            row.refresh_from_lab(self.lab.text(row.field.key), self.lab.result(row.field.key))
-        self.entry_stored("capture")
+        try:
+            self._device.set_voltage(event.level)
+        except MinsegError as exc:
+            self.notify(str(exc), severity="error")
+            return
+        self.requested = event.level
+        self.motor = f"{event.level:g} V"
+
+    @on(RunRequested)
+    def _run_requested(self, event: RunRequested) -> None:
+        event.stop()
+        self.start_run(event.plan)
+
+    def start_run(self, name: str) -> None:
+        """Task 10: start the board's step sequence for plan ``name`` and record it."""
+        if self._device is None or self.session is None:
+            self.notify(
+                "no device: the run needs the board or the virtual MinSeg", severity="error"
+            )
+            return
+        if self.recording is not None:
+            self.notify("a run is in progress; F2 stops it", severity="warning")
+            return
+        plan = dict(lab_step("task10").plans)[name]
+        try:
+            self._device.stop()
+            self._device.set_period(plan.ts)
+            with self.session as s:
+                recorder = s.start_run(RUN_KIND[name], plan)
+            self.recording = ActiveRun(recorder, plan)
+            self._device.step(plan.low, plan.high, plan.half_period, plan.periods)
+        except MinsegError as exc:
+            self.notify(str(exc), title="run", severity="error")
+            self.finish_run("could not start")
+            return
+        self.motor = f"steps 0/{plan.high:g} V"
+        self.requested = None
+        self.run_progress = self.recording.progress()
+
+    def finish_run(self, why: str) -> None:
+        """The run ended (done, stopped, board lost): keep what was recorded; it becomes the
+        run Tasks 11-15 use."""
+        rec, self.recording = self.recording, None
+        if rec is None or self.session is None:
+            return
+        try:
+            rec.close()
+            with self.session as s:
+                info = s.finish_run(rec.recorder)
+                if info is not None:  # an import or a pick is dropped for the new run
+                    s.select_run(None)
+            kept = (
+                f"run {rec.name}: too few samples, nothing kept"
+                if info is None
+                else f"run {info.name}: {info.samples} samples kept"
+                + (f", {info.dropped} lost on the link" if info.dropped else "")
+            )
+        except MinsegError as exc:
+            kept = str(exc)
+        self.notify(f"{why}: {kept}", title="Task 10")
+        self.run_progress = RunProgress(1.0 if why == "done" else 0.0, f"{why}: {kept}", False)
+        if self._device is not None and rec.plan.ts != LAB_PERIOD:
+            try:
+                self._device.set_period(LAB_PERIOD)
+            except MinsegError:
+                pass
+        self.lab_changed.publish(None)
 
     # -- actions -------------------------------------------------------------------------
     def action_help(self) -> None:
@@ -353,16 +395,15 @@ class LabApp(App[None]):
         """F2: motor off now; a run in progress keeps what it recorded."""
         self.motor = "off"
         self.requested = None
-        if self.device is not None:
+        if self._device is not None:
             try:
-                self.device.stop()
+                self._device.stop()
             except MinsegError as exc:
                 self.notify(
                     f"{exc} (a board without USB power stops by itself)", severity="warning"
                 )
         if self.recording is not None:
             self.finish_run("stopped")
-        self.refresh_status()
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
@@ -416,18 +457,19 @@ class LabApp(App[None]):
         self._panel_action("zoom_next", "zooming the step log")
 
     def action_export(self) -> None:
-        if self.lab is None:
+        if self.session is None:
             self.notify("start or resume a session first", severity="warning")
             return
-        self._export()
+        self._export(self.session)
 
     @work(thread=True, exclusive=True, group="export", name="report")
-    def _export(self) -> None:
+    def _export(self, session: Shared[Session]) -> None:
         """Worker: write the report (it computes every result and figure)."""
-        lab = self.lab
-        assert lab is not None
         try:
-            paths = lab.export()
+            if self._writer is None:
+                raise MinsegError("this program was started without the report writer")
+            with session as s:
+                paths = tuple(str(p) for p in self._writer(s))
         except (MinsegError, OSError) as exc:
             self.call_from_thread(self.notify, str(exc), title="report", severity="error")
             return
@@ -442,51 +484,30 @@ class LabApp(App[None]):
             title="report",
             timeout=10,
         )
-        self.entry_stored("export")
-
-    def go_to_step(self, step_id: str) -> None:
-        """Jump to a step (from the palette)."""
-        screen = self._lab_screen()
-        if screen is not None:
-            screen.go_to(step_id)
-
-    def use_run(self, name: str | None) -> None:
-        """Palette: the run Tasks 11-15 and the model check use (None: the latest)."""
-        if self.lab is None:
-            return
-        try:
-            said = self.lab.use_run(name)
-        except MinsegError as exc:
-            self.notify(str(exc), severity="error")
-            return
-        self.notify(said, title="runs")
-        self.entry_stored("run")
+        self.lab_changed.publish(None)
 
     def import_log(self) -> None:
         """Palette: go to the model check, where a log recorded elsewhere can be loaded."""
-        self.go_to_step("model_check")
-        self.call_after_refresh(self._focus_import)
-
-    def _focus_import(self) -> None:
-        for w in self.screen.query("#import-path"):
-            w.focus()
+        screen = self._lab_screen()
+        if screen is not None:
+            screen.go_to("model_check", focus="#import-path")
 
     def switch_to_virtual(self) -> None:
         """Drop the board and use the virtual MinSeg."""
         self.action_stop_motor()
         self.workers.cancel_group(self, "stream")
-        old, self.device = self.device, None
+        old, self._device = self._device, None
         if old is not None:
             try:
                 old.close()
             except MinsegError:
                 pass
         self.live.clear()
-        self.event_text = "connecting…"
-        self.refresh_status()
+        self.device = None
+        self.link = LinkState(event="connecting…")
         self._connect("sim")
 
-    def get_system_commands(self, screen: Screen) -> Iterable[SystemCommand]:
+    def get_system_commands(self, screen: Screen[Any]) -> Iterable[SystemCommand]:
         yield from super().get_system_commands(screen)
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
         yield SystemCommand(
@@ -524,22 +545,21 @@ class LabApp(App[None]):
         self._stop.set()
         if self.recording is not None:
             self.finish_run("app closed")
-        if self.device is not None:
+        if self._device is not None:
             try:
-                self.device.stop()
+                self._device.stop()
             except MinsegError:
                 pass
             try:
-                self.device.close()
+                self._device.close()
             except MinsegError:
                 pass
-        if self.lab is not None:  # saved already; this releases the session's lock
-            self.lab.close()
+        if self.session is not None:  # saved already; this releases the session's lock
+            with self.session as s:
+                s.close()
 
 
 def make_app(config: UiConfig, writer: ReportWriter | None = None) -> LabApp:
-    """The app for ``config``, wired to the real session store and device factory; ``writer``
-    writes the report (the CLI hands in :func:`minseg_tui.report.write.write_report`)."""
-    from minseg_tui.ui.backend import open_device, open_store
-
-    return LabApp(config, open_store(config, writer), lambda spec: open_device(spec, config))
+    """The app for ``config``, on the real device factory; ``writer`` writes the report (the
+    CLI hands in :func:`minseg_tui.report.write.write_report`, returning its paths)."""
+    return LabApp(config, lambda spec: open_device(spec, config.seed), writer)

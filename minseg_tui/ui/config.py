@@ -12,8 +12,8 @@ class UiConfig:
 
     device: ``"auto"`` (board if found, else the virtual MinSeg), ``"sim"`` or a port name /
     pyserial URL; sessions: folder of the sessions; today: the date put into a new session
-    (ISO, None for the real date); animations: False pins the screen for snapshot tests
-    (no cursor blink, no animation); refresh: plot redraw period in s; seed: the virtual
+    (ISO, None for the real date); animations: False turns Textual's animations off;
+    refresh: plot redraw period in s (0: drawn once, when shown); seed: the virtual
     MinSeg's seed.
     """
 

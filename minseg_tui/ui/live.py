@@ -8,7 +8,7 @@ from collections import deque
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.ui.ports import Batch
+from minseg_tui.device.samples import SampleBatch
 
 
 class LiveBuffer:
@@ -25,17 +25,16 @@ class LiveBuffer:
         self.size = size
         self.total = 0
 
-    def extend(self, batch: Batch) -> None:
+    def extend(self, batch: SampleBatch) -> None:
         """Append one batch (called from the worker); only its newest ``size`` samples matter."""
         n = len(batch)
         if not n:
             return
         k = max(0, n - self.size)
-        t, count, u = batch.t[k:], np.asarray(batch.count)[k:], batch.u_req[k:]
         with self._lock:
-            self._t.extend(t.tolist())
-            self._count.extend(count.tolist())
-            self._u.extend(u.tolist())
+            self._t.extend(batch.t[k:].tolist())
+            self._count.extend(batch.count[k:].tolist())
+            self._u.extend(batch.u_req[k:].tolist())
             self.total += n
 
     def clear(self) -> None:
@@ -44,21 +43,6 @@ class LiveBuffer:
             self._t.clear()
             self._count.clear()
             self._u.clear()
-
-    def freeze(
-        self, t: NDArray[np.float64], count: NDArray[np.int64], u: NDArray[np.float64]
-    ) -> None:
-        """Replace the contents with given arrays (a recorded stream, for pinned screens)."""
-        with self._lock:
-            self.clear_unlocked()
-            self._t.extend(np.asarray(t, dtype=float).tolist())
-            self._count.extend(np.asarray(count).tolist())
-            self._u.extend(np.asarray(u, dtype=float).tolist())
-
-    def clear_unlocked(self) -> None:
-        self._t.clear()
-        self._count.clear()
-        self._u.clear()
 
     def snapshot(self) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.float64]]:
         """Copies of (t, count, u_req) as arrays, oldest first."""

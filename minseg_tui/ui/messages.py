@@ -1,39 +1,103 @@
-"""Messages workers post to the app: small, and coalesced where they come in floods."""
+"""The UI's messages: small dataclasses, coalesced where they come in floods.
+
+From the app's workers to the app: :class:`DeviceOpened`, :class:`SamplesArrived`,
+:class:`LinkEventArrived`, :class:`MeterRead`. From the panels and the screen up: the
+requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which drives the
+device; :class:`CaptureRequested`, :class:`LogImportRequested`, :class:`RunChosen` for the
+lab screen, which holds the session's entries) and :class:`StepShown`.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
+
 from textual.message import Message
 
-from minseg_tui.ui.ports import Device, Event, LinkHealth
+from minseg_tui.device.link import LinkEvent, LinkStats
+from minseg_tui.lab.steps import Step
+from minseg_tui.model.plant import MeterReading
+from minseg_tui.ui.device import Device
 
 
+@dataclass
+class DeviceOpened(Message):
+    """The connect worker finished: the device (``fallback``: the virtual MinSeg because no
+    board was found), or None with the one-line ``error``."""
+
+    device: Device | None
+    error: str = ""
+    fallback: bool = False
+
+
+@dataclass
 class SamplesArrived(Message):
-    """New samples are in the live buffer (the buffer holds them; this only says "redraw soon").
+    """New samples are in the live buffer (it holds them; this only says "redraw soon"), with
+    the link's counters now. One pending message replaces another: a fast stream never
+    floods the queue."""
 
-    One pending message replaces another, so a fast stream never floods the queue.
-    """
-
-    def __init__(self, health: LinkHealth, total: int) -> None:
-        super().__init__()
-        self.health = health
-        self.total = total
+    stats: LinkStats
+    total: int
 
     def can_replace(self, message: Message) -> bool:
         return isinstance(message, SamplesArrived)
 
 
-class LinkEvent(Message):
-    """Something the board said or the link did (see :class:`~minseg_tui.ui.ports.Event`)."""
+@dataclass
+class LinkEventArrived(Message):
+    """Something the board said or the link did (never coalesced)."""
 
-    def __init__(self, event: Event) -> None:
-        super().__init__()
-        self.event = event
+    event: LinkEvent
 
 
-class DeviceOpened(Message):
-    """The device worker finished: the device, or None with the one-line ``error``."""
+@dataclass
+class MeterRead(Message):
+    """The virtual multimeter now (None: it did not answer)."""
 
-    def __init__(self, device: Device | None, error: str) -> None:
-        super().__init__()
-        self.device = device
-        self.error = error
+    reading: MeterReading | None
+
+    def can_replace(self, message: Message) -> bool:
+        return isinstance(message, MeterRead)
+
+
+@dataclass
+class VoltageRequested(Message):
+    """F3: put ``level`` V on the motor."""
+
+    level: float
+
+
+@dataclass
+class RunRequested(Message):
+    """F5/F6: start Task 10's plan ``plan`` (``manual`` or ``fast``) on the board and record it."""
+
+    plan: str
+
+
+@dataclass
+class CaptureRequested(Message):
+    """F4: capture omega_ss at ``level`` V from the live stream."""
+
+    level: float
+
+
+@dataclass
+class LogImportRequested(Message):
+    """Load the step log at ``path`` (recorded elsewhere); ``reply`` gets the one line to show."""
+
+    path: str
+    reply: Callable[[str], None]
+
+
+@dataclass
+class RunChosen(Message):
+    """Tasks 11-15 and the model check use run ``name`` (None: the latest step run)."""
+
+    name: str | None
+
+
+@dataclass
+class StepShown(Message):
+    """The lab screen now shows ``step``."""
+
+    step: Step

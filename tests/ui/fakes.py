@@ -3,63 +3,64 @@ timing. Behaviour tests use the real virtual MinSeg through the real factory and
 
 from __future__ import annotations
 
-import time
+from minseg_tui.device.link import LinkEvent, LinkStats
+from minseg_tui.device.protocol import Ident
+from minseg_tui.device.samples import SampleBatch
+from minseg_tui.model.plant import MeterReading, Plant, PlantParams
 
-import numpy as np
-
-from minseg_tui.model.plant import Plant, PlantParams
-from minseg_tui.ui.ports import Batch, DeviceInfo, LinkHealth, Meter
-
-METER = Meter(2.05, 0.0299, 5.3)
+METER = MeterReading(2.05, 0.0299, 5.3)
 """What the double's multimeter always shows (pinned screens)."""
 
 
 class QuietDevice:
-    """Answers commands, sends no samples; its multimeter reads the seeded plant."""
+    """The :class:`~minseg_tui.ui.device.Device` protocol: answers commands, sends no
+    samples; looks like the virtual MinSeg, whose multimeter always reads :data:`METER`."""
 
     def __init__(self, seed: int = 0) -> None:
-        self.info = DeviceInfo("Virtual", "minseg-virtual 1.0.0", True, "minseg://", fallback=True)
+        self.port = "minseg://"
+        self.ident: Ident | None = Ident(
+            "minseg-virtual 1.0.0", 1, "Virtual", 720, 25000, 9000, "BRAKE"
+        )
+        self.stats = LinkStats()
         self.plant = Plant(PlantParams(), seed=seed)
+        self.board: object = self.plant  # not None: the virtual board, with its multimeter
         self.commands: list[str] = []
 
-    def health(self) -> LinkHealth:
-        return LinkHealth("ok", 0, 0)
+    def samples(self) -> SampleBatch:
+        return SampleBatch.concat([])
 
-    def read(self, timeout: float) -> Batch:
-        time.sleep(timeout)
-        empty = np.zeros(0, dtype=np.int64)
-        return Batch(empty, empty, empty, empty)
+    def events(self) -> list[LinkEvent]:
+        return []
 
-    def set_voltage(self, u: float) -> None:
+    def set_voltage(self, u: float) -> float:
         self.commands.append(f"V {u:g}")
         self.plant.set_command(u)
+        return u
 
     def stop(self) -> None:
         self.commands.append("STOP")
 
-    def set_period(self, period: float) -> None:
-        self.commands.append(f"P {period:g}")
+    def set_period(self, ts: float) -> float:
+        self.commands.append(f"P {ts:g}")
+        return ts
 
-    def run_steps(self, low: float, high: float, half: float, n: int) -> None:
-        self.commands.append(f"STEP {low:g} {high:g} {half:g} {n}")
+    def step(self, low: float, high: float, half_period: float, periods: int) -> None:
+        self.commands.append(f"STEP {low:g} {high:g} {half_period:g} {periods}")
 
-    def meter(self) -> Meter | None:
+    def meter(self) -> MeterReading | None:
         return METER
 
     def close(self) -> None:
         self.commands.append("CLOSE")
 
 
-def frozen_stream(
-    seed: int = 3, u: float = 2.5, seconds: float = 4.0
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def frozen_stream(seed: int = 3, u: float = 2.5, seconds: float = 4.0) -> SampleBatch:
     """A recorded stream for pinned screens: the seeded plant at ``u`` V for ``seconds`` s,
-    sampled every 25 ms: board time (s), counts, requested V."""
+    sampled every 25 ms, as the link hands it over."""
     plant = Plant(PlantParams(), seed=seed)
     plant.set_command(u)
-    t, c = [], []
+    rows = []
     for k in range(int(seconds / 0.025)):
         plant.advance(0.025)
-        t.append((k + 1) * 0.025)
-        c.append(plant.count)
-    return np.array(t), np.array(c, dtype=np.int64), np.full(len(t), u)
+        rows.append((k, (k + 1) * 25_000, plant.count, round(u * 1000), 0, 0.0))
+    return SampleBatch.from_rows(rows)

@@ -1,9 +1,27 @@
-"""Shared steps of the UI tests: start a session, move, type, and a recorded step run."""
+"""Shared steps of the UI tests: wait for the app, start a session, move, type, and a
+recorded step run.
+
+Waiting is exact, never on the clock: :func:`settle` lets the app process its messages
+(``pilot.pause()``) and waits for its workers (all but the device stream, which runs for
+the app's life) until a condition holds; :class:`Heard` waits for messages the app receives
+(``run_test(message_hook=...)``), for the tests on the real-time virtual board.
+"""
 
 from __future__ import annotations
 
+import asyncio
+from collections.abc import Callable
+from contextlib import suppress
+
+from textual.message import Message
+from textual.pilot import Pilot
+from textual.worker import WorkerCancelled
+
+from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step
 from minseg_tui.model.plant import Plant, PlantParams
+from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 
 TABLE = {
@@ -20,38 +38,143 @@ TABLE = {
 }
 """A filled Task 4-9 table as a group would type it (R in ohm, the rest per row)."""
 
+HOPS = 4
+"""Rounds of message processing :func:`settle` always waits: a handler may post a message
+whose handler posts another (Enter in an entry: Submitted, Typed, the lab-changed signal,
+the view's worker); four rounds carry such a chain."""
 
-def enter_all(app, entries: dict[str, str]) -> None:
-    """Store every (field key, typed text) through the app's lab session, as typed."""
-    for key, text in entries.items():
-        app.lab.enter(key, text)
+ROUNDS = 1000
+"""Most rounds :func:`settle` waits for a condition: a guard against a hang (a condition
+that never holds), not a measure of time."""
 
 
-async def start(pilot, names: str = "Ada, Bo") -> None:
-    await pilot.pause(0.1)
+async def settle(pilot: Pilot[None], until: Callable[[], bool] = lambda: True) -> None:
+    """Let the app finish what it was asked, exactly: rounds of ``pilot.pause(0)`` (each
+    returns once every message queued on the screen is processed) and waits for the workers
+    that build views or write the report (all but the device stream), until ``until()``
+    holds."""
+    app = pilot.app
+    for k in range(ROUNDS):
+        await pilot.pause(0)
+        busy = [w for w in app.workers if w.group != "stream" and not w.is_finished]
+        if busy:
+            with suppress(WorkerCancelled):
+                await app.workers.wait_for_complete(busy)
+            continue
+        if k >= HOPS and until():
+            return
+    raise AssertionError("the app never got there")
+
+
+class Heard:
+    """The messages the app hears (pass :meth:`hook` as ``run_test``'s ``message_hook``);
+    :meth:`until` waits, message by message, for a condition. For the real-time board,
+    whose stream brings about 25 messages a second."""
+
+    def __init__(self) -> None:
+        self._new = asyncio.Event()
+        self.count = 0
+
+    def hook(self, message: Message) -> None:
+        self.count += 1
+        self._new.set()
+
+    async def until(
+        self, pilot: Pilot[None], cond: Callable[[], bool], most: int = 100_000
+    ) -> None:
+        """Wait until ``cond()`` holds, checking it whenever the app hears a message (at most
+        ``most`` messages: a hang guard)."""
+        for _ in range(most):
+            if cond():
+                return
+            self._new.clear()
+            await self._new.wait()
+        raise AssertionError(f"not after {most} messages")
+
+
+def lab_screen(app: LabApp) -> LabScreen:
+    screen = app.screen
+    assert isinstance(screen, LabScreen)
+    return screen
+
+
+def enter_all(app: LabApp, entries: dict[str, str]) -> None:
+    """Store every (field key, typed text) in the app's session, as typed."""
+    assert app.session is not None
+    with app.session as s:
+        for key, text in entries.items():
+            s.enter(key, text)
+
+
+async def start(pilot: Pilot[None], names: str = "Ada, Bo") -> None:
+    """Type the group's names on the start screen and wait for the lab screen."""
+    await settle(pilot, lambda: bool(pilot.app.screen.query("#members")))
     await pilot.press(*names)
     await pilot.press("enter")
-    await pilot.pause(0.1)
+    await settle(pilot, lambda: isinstance(pilot.app.screen, LabScreen) and shown(pilot.app))
 
 
-async def goto(pilot, step_id: str) -> None:
-    pilot.app.go_to_step(step_id)
-    await pilot.pause(0.05)
-    await pilot.pause(0.05)
+def shown(app: LabApp, step_id: str | None = None) -> bool:
+    """The lab screen shows ``step_id`` (any step if None), its pane mounted."""
+    screen = app.screen
+    if not isinstance(screen, LabScreen):
+        return False
+    panes = screen.query(StepPane)
+    pane = panes.last() if panes else None
+    return pane is not None and pane.is_mounted and step_id in (None, pane.step.id)
 
 
-async def type_in(pilot, key: str, text: str) -> FieldRow:
+async def resume(pilot: Pilot[None]) -> None:
+    """Pick the first saved session on the start screen and wait for the lab screen."""
+    await settle(pilot, lambda: bool(pilot.app.screen.query("#sessions")))
+    pilot.app.screen.query_one("#sessions").focus()
+    await pilot.press("enter")
+    await settle(pilot, lambda: shown(pilot.app))
+
+
+async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") -> None:
+    """Jump to ``step_id`` as the palette does and wait until it is shown, its view drawn and
+    the focus where ``focus`` says."""
+    app = pilot.app
+    lab_screen(app).go_to(step_id, focus)
+
+    def there() -> bool:
+        if not shown(app, step_id):
+            return False
+        rows = app.screen.query(StepPane).last().query(FieldRow)
+        if focus != "entry" or not rows:
+            return True
+        return app.focused is not None and rows.first() in app.focused.ancestors_with_self
+
+    await settle(pilot, there)
+
+
+async def type_in(pilot: Pilot[None], key: str, text: str) -> FieldRow:
+    """Type ``text`` into field ``key`` and press Enter; the row, once the lab answered."""
     row = pilot.app.screen.query_one(f"#{field_id(key)}", FieldRow)
     row.input.focus()
     row.input.value = ""
     if text:
         await pilot.press(*text)
     await pilot.press("enter")
-    await pilot.pause(0.05)
+    await settle(pilot)
     return row
 
 
-def record_step_run(session, seed: int = 5) -> str:
+async def paste_in(pilot: Pilot[None], key: str, text: str) -> FieldRow:
+    """Put ``text`` into field ``key`` at once, as a paste does, and press Enter; the row,
+    once the lab answered. (Typing key by key waits for the app to idle after every key,
+    which takes long while the board streams; the quiet tests type.)"""
+    row = pilot.app.screen.query_one(f"#{field_id(key)}", FieldRow)
+    row.input.focus()
+    row.input.value = ""
+    row.input.insert_text_at_cursor(text)
+    await pilot.press("enter")
+    await settle(pilot)
+    return row
+
+
+def record_step_run(session: Session, seed: int = 5) -> str:
     """Task 10's 25 ms plan on the seeded plant, appended to the session's Recorder as a board
     would send it; the run's name."""
     plan = dict(step("task10").plans)["manual"]
@@ -65,4 +188,5 @@ def record_step_run(session, seed: int = 5) -> str:
         rec.append(k, round(k * plan.ts * 1e6), plant.count, round(u * 1000))
         plant.advance(plan.ts)
     info = session.finish_run(rec)
+    assert info is not None
     return info.name

@@ -5,18 +5,44 @@ from __future__ import annotations
 
 import pytest
 from textual.filter import Monochrome, NoColor
+from textual.message import Message
 from textual.widgets import DataTable, RadioSet, SelectionList
 
+from minseg_tui.device.samples import SampleBatch
+from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.store import list_sessions
-from minseg_tui.ui.ports import Batch, DeviceInfo, LinkHealth
+from minseg_tui.ui.device import DeviceInfo, LinkState
+from minseg_tui.ui.messages import CaptureRequested, RunRequested, VoltageRequested
+from minseg_tui.ui.panels.live import LivePanel
+from minseg_tui.ui.panels.step_run import StepRunPanel
 from minseg_tui.ui.screens.help import HelpScreen
-from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.lab import LabScreen, StepCommands
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import status_text
-from tests.ui.conftest import settle
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, start, type_in
+from tests.ui.helpers import (
+    TABLE,
+    enter_all,
+    goto,
+    record_step_run,
+    resume,
+    settle,
+    shown,
+    start,
+    type_in,
+)
+
+
+def _chosen(app, key: str) -> tuple[int, ...]:
+    with app.session as s:
+        return views.chosen(s, key)
+
+
+def _run_in_use(app) -> str | None:
+    with app.session as s:
+        run = s.step_run()
+    return run.name if run else None
 
 
 async def test_new_session_lands_in_the_lab_and_saves(quiet, tmp_path):
@@ -33,9 +59,9 @@ async def test_new_session_lands_in_the_lab_and_saves(quiet, tmp_path):
 async def test_empty_names_are_refused_with_a_message(quiet, tmp_path):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await pilot.pause()
+        await settle(pilot, lambda: bool(app.screen.query("#members")))
         await pilot.press("enter")
-        await pilot.pause()
+        await settle(pilot)
         assert not isinstance(app.screen, LabScreen)
         assert "names first" in str(app.screen.query_one("#start-msg").render())
     assert list_sessions(tmp_path / "sessions") == []
@@ -106,18 +132,18 @@ async def test_summary_answers_are_picked_with_keys(quiet, tmp_path):
         radio = app.screen.query_one(f"#{field_id('summary.1')} RadioSet", RadioSet)
         radio.focus()
         await pilot.press("down", "enter")
-        await pilot.pause(0.05)
-        assert app.lab.chosen("summary.1") == (1,)
+        await settle(pilot)
+        assert _chosen(app, "summary.1") == (1,)
         row = app.screen.query_one(f"#{field_id('summary.1')}", FieldRow)
         assert "system" in row.message  # the checker's feedback
         await pilot.press("up", "enter")  # a single-choice question keeps one answer
-        await pilot.pause(0.05)
-        assert app.lab.chosen("summary.1") == (0,)
+        await settle(pilot)
+        assert _chosen(app, "summary.1") == (0,)
         sel = app.screen.query_one(f"#{field_id('summary.5')} SelectionList", SelectionList)
         sel.focus()
         await pilot.press("down", "space", "down", "space")
-        await pilot.pause(0.05)
-        assert app.lab.chosen("summary.5") == (1, 2)
+        await settle(pilot)
+        assert _chosen(app, "summary.5") == (1, 2)
         await type_in(pilot, "summary.unclear", "why k_a is 0.65 k_v")
     s = Session.open(list_sessions(tmp_path / "sessions")[0].path, readonly=True)
     assert (
@@ -132,13 +158,9 @@ async def test_resume_lands_where_the_group_left_off(quiet, tmp_path):
         await start(pilot)
         await goto(pilot, "task5")
         await type_in(pilot, "i_ss@2.5", "31 mA")
-    app.lab.close()
-    app2 = quiet()
+    app2 = quiet()  # the first app released the session when it closed
     async with app2.run_test(size=(80, 24)) as pilot:
-        await pilot.pause()
-        app2.screen.query_one("#sessions").focus()
-        await pilot.press("enter")
-        await pilot.pause(0.1)
+        await resume(pilot)
         assert isinstance(app2.screen, LabScreen)
         assert app2.screen.step.id == "task5"
         row = app2.screen.query_one(f"#{field_id('i_ss@2.5')}", FieldRow)
@@ -154,13 +176,9 @@ async def test_resume_on_a_step_with_a_panel(quiet, step_id):
         await start(pilot)
         enter_all(app, TABLE)
         await goto(pilot, step_id)
-    app.lab.close()
     app2 = quiet()
     async with app2.run_test(size=(80, 24)) as pilot:
-        await pilot.pause()
-        app2.screen.query_one("#sessions").focus()
-        await pilot.press("enter")
-        await settle(pilot)
+        await resume(pilot)
         assert isinstance(app2.screen, LabScreen) and app2.screen.step.id == step_id
         assert len(app2.screen.query(".panel")) == 1
         if step_id == "table":
@@ -172,12 +190,14 @@ async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quie
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         enter_all(app, TABLE)
-        record_step_run(app.lab.session)
+        with app.session as s:
+            record_step_run(s)
         await goto(pilot, "task2")
         assert not app.screen.active_bindings[
             "f9"
         ].binding.show  # not in the footer where it does nothing
         await pilot.press("f9", "alt+right")  # says it is not part of this step; nothing breaks
+        await settle(pilot)
         await goto(pilot, "task11")
         await settle(pilot)
         note = app.screen.query_one("#zoom-note")
@@ -185,15 +205,20 @@ async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quie
         own = await type_in(pilot, "own.K", "")
         assert app.focused is own.input
         await pilot.press("alt+right")
+        await settle(pilot)
         assert "step 2 of" in str(note.render())
         await pilot.press("left_square_bracket", "z")  # printable keys stay in the entry
+        await settle(pilot)
         assert own.input.value == "[z" and "step 2 of" in str(note.render())
         app.screen.query_one("#nav").focus()
         await pilot.press("ctrl+right")
+        await settle(pilot)
         assert "step 3 of" in str(note.render())
         await pilot.press("alt+left", "alt+left")
+        await settle(pilot)
         assert "step 1 of" in str(note.render())
         await pilot.press("f9", "f9")
+        await settle(pilot)
         assert "step 3 of" in str(note.render())
 
 
@@ -217,6 +242,7 @@ async def test_table_fits_80_columns_and_f7_gives_the_row_formula_with_its_numbe
         table.focus()
         table.move_cursor(row=0, column=4)
         await pilot.press("f7")
+        await settle(pilot)
         text = str(app.screen.query_one("#formula").render())
         # k_v = (u_ss - R i_ss) / omega_ss with row 1's numbers: (2.05 - 5.3 * 0.028) / 3.1
         assert "(2.05 V - 5.3 Ω × 0.028 A) / 3.1 rad/s" in text and "0.6134" in text
@@ -224,17 +250,13 @@ async def test_table_fits_80_columns_and_f7_gives_the_row_formula_with_its_numbe
 
 
 async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
-    from minseg_tui.ui.commands import StepCommands
-
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         enter_all(app, TABLE)
-        first, second = (
-            record_step_run(app.lab.session, seed=5),
-            record_step_run(app.lab.session, seed=6),
-        )
-        texts = [t for t, _, _ in StepCommands(app.screen)._entries()]
+        with app.session as s:
+            first, second = record_step_run(s, seed=5), record_step_run(s, seed=6)
+        texts = [t for t, _, _ in StepCommands(app.screen).entries()]
         assert (
             f"Use run {first} for Tasks 11-15" in texts
             and "Use the latest run for Tasks 11-15" in texts
@@ -242,23 +264,17 @@ async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
         await goto(pilot, "task11")
         await settle(pilot)
         assert f"run {second}" in str(app.screen.query_one("#zoom-note").render())
-        app.use_run(first)
+        app.screen.use_run(first)
         await settle(pilot)
         assert f"run {first}" in str(app.screen.query_one("#zoom-note").render())
-        app.use_run(None)
-        assert app.lab.session.step_run().name == second
-        app.use_run(first)
-        rec = app.lab.start_recording("manual")  # a new run recorded: it is the one used
-        rec.append(
-            Batch(
-                seq=range(40),
-                t_us=[25_000 * k for k in range(40)],
-                count=[3 * k for k in range(40)],
-                u_mV=[4500] * 40,
-            )
-        )
-        app.lab.finish_recording(rec)
-        assert app.lab.session.step_run().name == rec.name not in (first, second)
+        app.screen.use_run(None)
+        assert _run_in_use(app) == second
+        app.screen.use_run(first)
+        app.start_run("manual")  # a new run recorded: it is the one used
+        rec = app.recording
+        rec.append(SampleBatch.from_rows([(k, 25_000 * k, 3 * k, 4500, 0, 0.0) for k in range(40)]))
+        app.finish_run("done")
+        assert _run_in_use(app) == rec.name not in (first, second)
 
 
 async def test_going_back_and_changing_r_recomputes_the_table(quiet):
@@ -284,9 +300,11 @@ async def test_a_voltage_set_on_task_3_is_still_the_request_on_task_4(quiet):
         await start(pilot)
         await goto(pilot, "task3")
         await pilot.press("f3")  # Task 3 says "set a voltage"
+        await settle(pilot)
         assert dev.commands[-1] == "V 2.5"
         await goto(pilot, "task4")
         await pilot.press("f3")
+        await settle(pilot)
         assert dev.commands[-1] == "V 3.5" and app.motor == "3.5 V"
 
 
@@ -297,17 +315,19 @@ async def test_stop_key_turns_the_motor_off_from_anywhere(quiet):
         await start(pilot)
         await goto(pilot, "task4")
         await pilot.press("f3")
-        await pilot.pause()
+        await settle(pilot)
         assert dev.commands[-1] == "V 2.5" and app.motor == "2.5 V"
         await pilot.press("f3")
+        await settle(pilot)
         assert dev.commands[-1] == "V 3.5"
         row = app.screen.query_one(f"#{field_id('u_ss@2.5')}", FieldRow)
         row.input.focus()
         await pilot.press("f2")
-        await pilot.pause()
+        await settle(pilot)
         assert dev.commands[-1] == "STOP" and app.motor == "off"
         await goto(pilot, "prep3")
         await pilot.press("f2")
+        await settle(pilot)
         assert dev.commands[-1] == "STOP"
 
 
@@ -316,13 +336,13 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await pilot.press("f1")
-        await pilot.pause()
+        await settle(pilot)
         assert isinstance(app.screen, HelpScreen)
         text = str(app.screen.query_one("#help-keys").render())
         for key in ("F2", "STOP", "F5", "F8", "Ctrl+P"):
             assert key in text
         await pilot.press("escape")
-        await pilot.pause()
+        await settle(pilot)
         assert isinstance(app.screen, LabScreen)
         titles = {c.title for c in app.get_system_commands(app.screen)}
         assert {
@@ -336,10 +356,9 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
         } <= titles
         await pilot.press("ctrl+p")
         await pilot.press(*"Task 10")
-        await pilot.pause(0.3)
+        await settle(pilot)
         await pilot.press("enter")
-        await pilot.pause(0.1)
-        assert app.screen.step.id == "task10"
+        await settle(pilot, lambda: shown(app, "task10"))
 
 
 async def test_navigator_collapses_and_marks_done_steps(quiet):
@@ -352,9 +371,10 @@ async def test_navigator_collapses_and_marks_done_steps(quiet):
         await type_in(pilot, "R", "5.3")
         assert str(nav.get_option("task2").prompt).startswith("✓")
         await pilot.press("ctrl+t")
-        await pilot.pause()
+        await settle(pilot)
         assert not nav.display
         await pilot.press("ctrl+t")
+        await settle(pilot)
         assert nav.display
 
 
@@ -368,8 +388,9 @@ async def test_no_color_is_respected(quiet, monkeypatch):
         await goto(pilot, "task2")
         row = await type_in(pilot, "R", "abc")
         assert row.message.startswith("✗")  # the refusal is in the text, not only in red
-        app.lab.choose("summary.1", [1])
-        app.lab.choose("summary.5", [1, 2])
+        with app.session as s:
+            s.choose("summary.1", [1])
+            s.choose("summary.5", [1, 2])
         await goto(pilot, "summary")
         await settle(pilot)
         radios = app.screen.query_one(f"#{field_id('summary.1')}").query("RadioButton")
@@ -390,12 +411,12 @@ def test_status_line_fits_80_columns_in_every_state():
             "board disconnected — everything recorded is kept",
             "watchdog stopped the motor",
         ):
-            text = status_text(i, LinkHealth("ok", 12345, 678), "steps 0/4.5 V", event, 78)
+            text = status_text(i, LinkState("ok", 12345, 678, event), "steps 0/4.5 V", 78)
             assert len(text) <= 78, text
             assert "motor steps" in text
-    assert "no board found" in status_text(info, None, "off")
+    assert "no board found" in status_text(info, LinkState(), "off")
     assert "disconnected" in status_text(
-        board, None, "off", "board disconnected — everything recorded is kept", 78
+        board, LinkState(event="board disconnected — everything recorded is kept"), "off", 78
     )
 
 
@@ -406,22 +427,61 @@ async def test_typing_lands_in_the_step_and_enter_moves_on(quiet, tmp_path):
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await goto(pilot, "task4")
-        await pilot.pause(0.1)
+        await settle(pilot)
         await pilot.press(*"3,8", "enter")
-        await pilot.pause(0.1)
-        session = app.lab.session
-        assert session.value("omega_ss@2.5") == 3.8
+        await settle(pilot)
+        with app.session as session:
+            assert session.value("omega_ss@2.5") == 3.8
         assert app.focused is app.screen.query_one(f"#{field_id('u_ss@2.5')}", FieldRow).input
         await pilot.press(*"2,05 kg", "enter")
-        await pilot.pause(0.1)
+        await settle(pilot)
         await goto(pilot, "task2")  # typing on the list of steps goes into the entry too
         app.screen.query_one("#nav").focus()
         await pilot.press(*"5,3", "enter")
-        await pilot.pause(0.1)
-        assert session.value("R") == 5.3
+        await settle(pilot)
+        with app.session as session:
+            assert session.value("R") == 5.3
         row = await type_in(pilot, "R", "5,3 kg")
         assert row.has_class("refused") and "still using '5,3'" in row.message
-        assert session.value("R") == 5.3
+        with app.session as session:
+            assert session.value("R") == 5.3
     with Session.open(next(iter(list_sessions(tmp_path / "sessions"))).path) as again:
         assert again.entry("u_ss@2.5").typed == "2,05 kg"
         assert again.entry("R").typed == "5,3 kg" and again.value("R") == 5.3
+
+
+async def test_panels_ask_with_messages_and_show_the_apps_state(quiet):
+    """F3, F4 and F5 reach the app and the screen as messages from the step's panel; what
+    they change (the requested voltage, the motor, the run) is the app's state, which the
+    panels show."""
+    dev = QuietDevice(seed=2)
+    app = quiet(dev)
+    heard: list[Message] = []
+    async with app.run_test(size=(80, 24), message_hook=heard.append) as pilot:
+
+        def asked(kind: type[Message]) -> list[Message]:
+            return list({id(m): m for m in heard if isinstance(m, kind)}.values())
+
+        await start(pilot)
+        await goto(pilot, "task4")
+        await pilot.press("f3")
+        await settle(pilot)
+        assert [m.level for m in asked(VoltageRequested)] == [2.5]
+        assert app.requested == app.screen.query_one(LivePanel).requested == 2.5
+        assert app.motor == "2.5 V" and dev.commands[-1] == "V 2.5"
+        await pilot.press("f4")
+        await settle(pilot)
+        assert [m.level for m in asked(CaptureRequested)] == [2.5]
+        with app.session as s:  # the double streams nothing: never settled, nothing stored
+            assert s.entry("omega_ss@2.5") is None
+        await goto(pilot, "task10")
+        await pilot.press("f5")
+        await settle(pilot)
+        assert [m.plan for m in asked(RunRequested)] == ["manual"]
+        assert app.recording is not None and dev.commands[-1] == "STEP 0 4.5 1.5 4"
+        panel = app.screen.query_one(StepRunPanel)
+        assert panel.run_progress is not None and panel.run_progress.recording
+        await pilot.press("f2")
+        await settle(pilot)
+        assert app.recording is None and dev.commands[-1] == "STOP"
+        assert panel.run_progress.text == "stopped: run steps-1: too few samples, nothing kept"

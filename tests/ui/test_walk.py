@@ -1,5 +1,8 @@
 """The whole lab on the real virtual MinSeg (real factory, link and URL board, real time):
-new session to exported report; an unplug during a run; kill -9 mid-session and resume."""
+new session to exported report; an unplug during a run; kill -9 mid-session and resume.
+
+The board runs on the host's clock, so these tests wait for what the app hears (the
+stream's messages), never for a time: a busy machine makes them slower, not wrong."""
 
 from __future__ import annotations
 
@@ -7,69 +10,88 @@ import os
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 from minseg_tui.device.virtual import named_board
+from minseg_tui.lab import views
 from minseg_tui.lab.store import list_sessions
 from minseg_tui.model.motor import PUBLISHED
+from minseg_tui.model.plant import MeterReading
+from minseg_tui.ui.panels.live import LivePanel
+from minseg_tui.ui.panels.report import ReportPanel
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import DeviceStatus
-from tests.ui.conftest import board_url, real_app, settle
-from tests.ui.helpers import goto, start, type_in
-
-
-async def _until(pilot, cond, timeout: float = 15.0) -> None:
-    end = time.monotonic() + timeout
-    while not cond():
-        assert time.monotonic() < end, "timed out"
-        await pilot.pause(0.1)
+from tests.ui.conftest import board_url, real_app
+from tests.ui.helpers import Heard, goto, paste_in, resume, settle, start
 
 
 def _status(app) -> str:
     return str(app.screen.query_one(DeviceStatus).render())
 
 
+def _held(app, level: float, seconds: float) -> bool:
+    """The last ``seconds`` of the live stream (board time) are all at ``level`` V."""
+    t, _count, u = app.live.snapshot()
+    return t.size > 0 and t[-1] - t[0] >= seconds and bool((u[t >= t[-1] - seconds] == level).all())
+
+
+def _settled_at(app, level: float) -> bool:
+    """The whole capture window of the live stream is at ``level`` V and the speed is steady."""
+    t, count, _u = app.live.snapshot()
+    return _held(app, level, views.CAPTURE_WINDOW) and views.steady(t, count).settled
+
+
+async def _fresh_meter(pilot, heard: Heard) -> MeterReading:
+    """The multimeter's next reading (the one shown is forgotten first)."""
+    app = pilot.app
+    app.meter = None
+    await heard.until(pilot, lambda: app.meter is not None)
+    return app.meter
+
+
 async def test_whole_lab_on_the_virtual_minseg(tmp_path):
     app = real_app(tmp_path / "sessions", board_url(seed=4))
-    async with app.run_test(size=(80, 24)) as pilot:
-        await _until(pilot, lambda: app.device is not None)
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await settle(pilot, lambda: app.device is not None)
         await start(pilot)
         # Task 2: R from the virtual multimeter
         await goto(pilot, "task2")
-        await _until(pilot, lambda: app.meter_reading is not None)
-        R = app.meter_reading.R
-        await type_in(pilot, "R", f"{R:.1f}".replace(".", ","))
-        assert abs(app.lab.session.value("R") - PUBLISHED.R) < 0.2
+        R = (await _fresh_meter(pilot, heard)).R
+        await paste_in(pilot, "R", f"{R:.1f}".replace(".", ","))
+        with app.session as s:
+            assert abs(s.value("R") - PUBLISHED.R) < 0.2
         # Task 4: each voltage, wait for SETTLED, capture, type u_ss from the meter
         await goto(pilot, "task4")
-        panel = app.screen.query_one(".live")
+        panel = app.screen.query_one(LivePanel)
+        steady = app.screen.query_one("#steady")
         for level in (2.5, 3.5, 4.5):
             await pilot.press("f3")
-            assert panel.level == level
-            await pilot.pause(0.3)
-            await _until(pilot, lambda: "SETTLED" in str(app.screen.query_one("#steady").render()))
+            await settle(pilot)
+            assert panel.requested == level
+            await heard.until(
+                pilot, lambda v=level: _settled_at(app, v) and "SETTLED" in str(steady.render())
+            )
             await pilot.press("f4")
-            await pilot.pause(0.05)
+            await settle(pilot)
             row = app.screen.query_one(f"#{field_id(f'omega_ss@{level:g}')}", FieldRow)
             assert row.input.value  # the capture landed in the field
-            app.meter_reading = None
-            await _until(pilot, lambda: app.meter_reading is not None)
-            await type_in(pilot, f"u_ss@{level:g}", f"{app.meter_reading.u_A:.2f} V")
+            meter = await _fresh_meter(pilot, heard)
+            await paste_in(pilot, f"u_ss@{level:g}", f"{meter.u_A:.2f} V")
         # Task 5: the currents from the meter, in mA
         await goto(pilot, "task5")
         for level in (2.5, 3.5, 4.5):
             await pilot.press("f3")
-            await pilot.pause(0.6)
-            app.meter_reading = None
-            await _until(pilot, lambda: app.meter_reading is not None)
-            await type_in(pilot, f"i_ss@{level:g}", f"{app.meter_reading.i * 1000:.1f} mA")
+            # 0.5 s at the voltage, a dozen time constants: the current has settled
+            await heard.until(pilot, lambda v=level: _held(app, v, 0.5))
+            meter = await _fresh_meter(pilot, heard)
+            await paste_in(pilot, f"i_ss@{level:g}", f"{meter.i * 1000:.1f} mA")
         await pilot.press("f2")
         # Tasks 6-9: the table filled itself; k_v near the plant's
         await goto(pilot, "table")
-        await settle(pilot)
-        rows = app.lab.session.table()
+        with app.session as s:
+            rows = s.table()
         assert all(r.k_v is not None and abs(r.k_v / PUBLISHED.k_v - 1) < 0.1 for r in rows)
         assert all(r.f is not None and r.f > 0 for r in rows)
         shown = str(app.screen.query_one("#results").render())
@@ -77,41 +99,43 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         # Task 10: the step sequence on the board, recorded as it arrives
         await goto(pilot, "task10")
         await pilot.press("f5")
-        await pilot.pause(0.5)
+        await settle(pilot)
         assert app.recording is not None
-        await _until(pilot, lambda: app.recording is None, timeout=20)
-        run = app.lab.session.runs[-1]
+        await heard.until(pilot, lambda: app.recording is None)
+        with app.session as s:
+            run = s.runs[-1]
         assert run.kind == "steps" and 440 <= run.samples <= 520
         await pilot.press("f6")
-        await pilot.pause(3.0)
+        await settle(pilot)
+        # two of its four periods (5 s at 5 ms): two rising steps for Tasks 11-15
+        await heard.until(pilot, lambda: app.recording is None or app.recording.samples >= 1000)
         await pilot.press("f2")  # stop safely: motor off, what was recorded is kept
         assert app.recording is None and app.motor == "off"
-        fast = app.lab.session.runs[-1]
+        with app.session as s:
+            fast = s.runs[-1]
         assert fast.kind == "fast" and fast.samples > 300
         await settle(pilot)
         readings = str(app.screen.query_one("#t-readings").render())
         assert "steps-1" in readings and "fast-1" in readings
         # Tasks 11-15 use the latest run (the fast one); the group's own K beside the computed
         await goto(pilot, "task11")
-        await settle(pilot)
-        res = app.lab.session.results()
+        with app.session as s:
+            res = s.results()
         K, T = res.lookup("step.K"), res.lookup("step.T")
         assert 1.5 < K < 2.1 and 0.03 < T < 0.06
-        await type_in(pilot, "own.K", "1.8")
-        await settle(pilot)
+        await paste_in(pilot, "own.K", "1.8")
         assert "yours 1.8" in str(app.screen.query_one("#compare").render())
         await pilot.press("f9")
         assert "step 2" in str(app.screen.query_one("#zoom-note").render())
         # the model check
         await goto(pilot, "model_check")
-        await settle(pilot)
         assert "cause:" in str(app.screen.query_one("#check-lines").render())
         # summary and the report
         await goto(pilot, "summary")
-        await type_in(pilot, "summary.unclear", "the filter")
+        await paste_in(pilot, "summary.unclear", "the filter")
         await pilot.press("f8")
-        await settle(pilot)
-        assert app.exported
+        await settle(pilot, lambda: bool(app.exported))
+        assert "report.md" in str(app.screen.query_one(ReportPanel).render())
     folder = list_sessions(tmp_path / "sessions")[0].path
     md = (Path(folder) / "report.md").read_text()
     assert f"{R:.1f}" in md.replace(",", ".") or f"{R:g}" in md
@@ -123,19 +147,22 @@ async def test_unplug_during_a_run_keeps_the_samples(tmp_path):
     url = board_url(seed=2)
     name = url.split("//")[1].split("?")[0]
     app = real_app(tmp_path / "sessions", url)
-    async with app.run_test(size=(80, 24)) as pilot:
-        await _until(pilot, lambda: app.device is not None)
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await settle(pilot, lambda: app.device is not None)
         await start(pilot)
         await goto(pilot, "task10")
         await pilot.press("f5")
-        await pilot.pause(2.0)
+        await settle(pilot)
+        await heard.until(pilot, lambda: app.recording is None or app.recording.samples >= 80)
         named_board(name).unplug()
-        await _until(pilot, lambda: app.recording is None)
+        await heard.until(pilot, lambda: app.recording is None)
         assert "board disconnected — everything recorded is kept" in _status(app)
-        run = app.lab.session.runs[-1]
+        with app.session as s:
+            run = s.runs[-1]
         assert run.samples >= 60 and app.motor == "off"
         named_board(name).replug()
-        await _until(pilot, lambda: "reconnected" in _status(app))
+        await heard.until(pilot, lambda: "reconnected" in _status(app))
 
 
 SCRIPT = """
@@ -144,24 +171,27 @@ from pathlib import Path
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import make_app
 from minseg_tui.ui.config import UiConfig
-from tests.ui.helpers import goto, start, type_in
+from tests.ui.helpers import Heard, goto, paste_in, settle, start
 
 async def main():
     app = make_app(UiConfig(device="minseg://kill?clock=real&seed=3", sessions=Path(sys.argv[1]),
-                            today="2024-04-16", animations=False), write_report)
-    async with app.run_test(size=(80, 24)) as pilot:
-        while app.device is None:
-            await pilot.pause(0.05)
+                            today="2024-04-16", animations=False),
+                   lambda s: write_report(s).paths)
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await settle(pilot, lambda: app.device is not None)
         await start(pilot)
         await goto(pilot, "task2")
-        await type_in(pilot, "R", "5,3")
+        await paste_in(pilot, "R", "5,3")
         await goto(pilot, "task5")
-        await type_in(pilot, "i_ss@2.5", "47 mA")
+        await paste_in(pilot, "i_ss@2.5", "47 mA")
         await goto(pilot, "task10")
         await pilot.press("f5")
-        await pilot.pause(2.0)
+        await settle(pilot)
+        # 80 samples (2 s) in memory: all but the last half second of them are on disk
+        await heard.until(pilot, lambda: app.recording.samples >= 80)
         print("READY", flush=True)
-        await asyncio.sleep(60)
+        await asyncio.sleep(600)
 
 asyncio.run(main())
 """
@@ -182,13 +212,10 @@ async def test_kill_9_mid_session_and_resume(tmp_path):
         proc.wait()
     app = real_app(root, board_url(seed=3))
     async with app.run_test(size=(80, 24)) as pilot:
-        await pilot.pause(0.2)
-        app.screen.query_one("#sessions").focus()
-        await pilot.press("enter")
-        await pilot.pause(0.2)
+        await resume(pilot)
         assert isinstance(app.screen, LabScreen) and app.screen.step.id == "task10"
-        s = app.lab.session
-        assert s.entry("R").text == "5,3" and abs(s.value("R") - 5.3) < 1e-12
-        assert s.entry("i_ss@2.5").text == "47 mA"
-        assert s.recovered == ["steps-1"]
-        assert s.runs[0].interrupted and s.runs[0].samples >= 40  # at most the last second lost
+        with app.session as s:
+            assert s.entry("R").text == "5,3" and abs(s.value("R") - 5.3) < 1e-12
+            assert s.entry("i_ss@2.5").text == "47 mA"
+            assert s.recovered == ["steps-1"]
+            assert s.runs[0].interrupted and s.runs[0].samples >= 40  # the last second at most

@@ -1,20 +1,53 @@
-"""The lab screen: the manual's parts on the left, the current step on the right."""
+"""The lab screen: the manual's parts on the left, the current step on the right.
+
+The screen holds the session's entries: it writes what the group types, ticks or captures
+(and the run Tasks 11-15 use, a log loaded from elsewhere), says so on the app's "lab
+changed" signal, and on that signal brings the navigator's marks, the entries and the step's
+panel up to date. It picks the panel of each step and hands it what it shows: the app's
+state through bound reactive attributes, and views of the session built in a worker.
+"""
 
 from __future__ import annotations
 
-from textual import events, on
+from collections.abc import Callable, Sequence
+from functools import partial
+from pathlib import Path
+from typing import TypeVar
+
+from textual import events, on, work
 from textual.app import ComposeResult
 from textual.binding import Binding
+from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Horizontal, VerticalScroll
-from textual.screen import Screen
+from textual.reactive import reactive
+from textual.signal import Signal
 from textual.widget import Widget
 from textual.widgets import Footer, Input, OptionList, Static
 from textual.widgets.option_list import Option
+from textual.worker import get_current_worker
 
-from minseg_tui.lab.steps import Step
-from minseg_tui.ui.ports import Lab
+from minseg_tui.errors import MinsegError
+from minseg_tui.lab import views
+from minseg_tui.lab.session import Session
+from minseg_tui.lab.steps import STEPS, Step
+from minseg_tui.lab.views import EntryView
+from minseg_tui.model.plant import MeterReading
+from minseg_tui.ui.live import LiveBuffer
+from minseg_tui.ui.messages import CaptureRequested, LogImportRequested, StepShown
+from minseg_tui.ui.panels.connect import ConnectPanel
+from minseg_tui.ui.panels.live import LivePanel
+from minseg_tui.ui.panels.model_check import ModelCheckPanel
+from minseg_tui.ui.panels.report import ReportPanel
+from minseg_tui.ui.panels.results import ResultsPanel
+from minseg_tui.ui.panels.step_run import StepRunPanel
+from minseg_tui.ui.panels.table import TablePanel
+from minseg_tui.ui.panels.view_panel import ViewPanel
+from minseg_tui.ui.recording import RunProgress
+from minseg_tui.ui.screens.status import StatusScreen
+from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import FieldRow
-from minseg_tui.ui.widgets.status import DeviceStatus
+
+V = TypeVar("V")
 
 _SHORT = {
     "Preparation": "Prep",
@@ -26,6 +59,8 @@ _SHORT = {
 MARKS = {"done": "✓", "started": "…", "todo": " ", "info": " "}
 """The navigator's mark of a step's status (a character, not a colour)."""
 
+STEP_IDS = tuple(s.id for s in STEPS)
+
 
 def nav_label(step: Step, status: str = "todo") -> str:
     """Short name in the navigator: a status mark and the title up to its colon, abbreviated."""
@@ -36,13 +71,22 @@ def nav_label(step: Step, status: str = "todo") -> str:
 
 
 class StepPane(VerticalScroll):
-    """Title, goal, what to do, the step's own panel (``extra``) and its entries."""
+    """Title, goal, what to do, the step's own panel (and the readout it keeps in sight at the
+    bottom) and its entry rows; once shown, it focuses what ``focus`` says: ``entry`` (the
+    first entry), a selector, or None (nothing)."""
 
-    def __init__(self, step: Step, lab: Lab, extra: Widget | None) -> None:
+    def __init__(
+        self,
+        step: Step,
+        panel: Widget | None,
+        rows: Sequence[FieldRow],
+        focus: str | None = None,
+    ) -> None:
         super().__init__(classes="pane")
         self.step = step
-        self._lab = lab
-        self._extra = extra
+        self.panel = panel
+        self._rows = rows
+        self._focus = focus
         # With entries on the step, Tab goes straight to them (focusing one scrolls it
         # into view); a pane of text only stays focusable so the keys can scroll it.
         self.can_focus = not step.fields
@@ -51,28 +95,74 @@ class StepPane(VerticalScroll):
         yield Static(self.step.title, classes="title")
         yield Static("Goal: " + self.step.goal, classes="goal")
         yield Static("What to do: " + self.step.todo, classes="todo")
-        if self._extra is not None:
-            yield self._extra
-            readout = getattr(self._extra, "readout", None)
-            docked = readout() if callable(readout) else None
-            if docked is not None:
-                yield docked
-        for f in self.step.fields:
-            yield FieldRow(
-                f, self._lab.text(f.key), self._lab.result(f.key), self._lab.chosen(f.key)
-            )
+        if self.panel is not None:
+            yield self.panel
+            if isinstance(self.panel, LivePanel):
+                readout = self.panel.readout()
+                if readout is not None:
+                    yield readout
+        yield from self._rows
 
     def on_mount(self) -> None:
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
+        if self._focus is not None:
+            self.call_after_refresh(self.focus_on, self._focus)
 
-    @property
-    def panel(self) -> Widget | None:
-        """The step's own panel (live plots, table, runs, results...), or None."""
-        return self._extra
+    def focus_on(self, what: str, scroll_visible: bool = False) -> None:
+        """Focus the first entry (``entry``; the pane stays at the step's title unless
+        ``scroll_visible``) or the widget the selector ``what`` finds (scrolled into view)."""
+        if what == "entry":
+            rows = self.query(FieldRow)
+            if rows:
+                rows.first().focus_input(scroll_visible)
+            return
+        for w in self.query(what):
+            w.focus()
 
 
-class LabScreen(Screen[None]):
-    """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves."""
+class StepCommands(Provider):
+    """The lab screen's palette: one entry per step ("Go to: Task 10: the step experiment")
+    and per recorded run ("Use run steps-1 for Tasks 11-15")."""
+
+    def entries(self) -> Sequence[tuple[str, Callable[[], object], str]]:
+        """(text, what it does, help) of every entry."""
+        screen = self.screen
+        if not isinstance(screen, LabScreen):
+            return []
+        with screen.session as s:
+            runs = [r.name for r in s.runs]
+        go, use = screen.go_to, screen.use_run
+        return (
+            [(f"Go to: {s.title}", partial(go, s.id), "move to this step") for s in STEPS]
+            + [
+                (
+                    f"Use run {name} for Tasks 11-15",
+                    partial(use, name),
+                    "the run the results and the model check use",
+                )
+                for name in runs
+            ]
+            + [("Use the latest run for Tasks 11-15", partial(use, None), "the default")]
+        )
+
+    async def discover(self) -> Hits:
+        for text, action, help_text in self.entries():
+            yield DiscoveryHit(text, action, help=help_text)
+
+    async def search(self, query: str) -> Hits:
+        matcher = self.matcher(query)
+        for text, action, help_text in self.entries():
+            score = matcher.match(text)
+            if score > 0:
+                yield Hit(score, matcher.highlight(text), action, text=text, help=help_text)
+
+
+class LabScreen(StatusScreen):
+    """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves.
+
+    ``session`` is the open session, ``live`` the buffer the device worker fills,
+    ``lab_changed`` the app's signal that the session changed (published here too), and
+    ``refresh`` the live plots' redraw period (s). The app binds the reactive attributes."""
 
     BINDINGS = [
         Binding("pagedown,ctrl+n", "next_step", "Next step", priority=True),
@@ -80,30 +170,52 @@ class LabScreen(Screen[None]):
         Binding("ctrl+l", "focus_nav", "Steps", show=False),
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
     ]
+    COMMANDS = StatusScreen.COMMANDS | {StepCommands}
 
-    def __init__(self, lab: Lab) -> None:
+    requested: reactive[float | None] = reactive(None)
+    meter: reactive[MeterReading | None] = reactive(None)
+    run_progress: reactive[RunProgress | None] = reactive(None)
+    exported: reactive[tuple[str, ...]] = reactive(())
+
+    def __init__(
+        self,
+        session: Shared[Session],
+        live: LiveBuffer,
+        lab_changed: Signal[None],
+        refresh: float = 0.25,
+    ) -> None:
         super().__init__()
-        self.lab = lab
+        self.session = session
+        self._live = live
+        self._lab_changed = lab_changed
+        self._refresh = refresh
         self._shown: str | None = None
         """The step whose pane was last mounted (the DOM may not hold it yet)."""
+        self._jump: tuple[str | None] | None = None
+        """Set by :meth:`go_to`: what to focus once its step is shown (in a tuple: the focus
+        may be None, "leave it")."""
 
     def compose(self) -> ComposeResult:
-        yield DeviceStatus()
+        yield self.status_line()
+        with self.session as s:
+            labels = [nav_label(st, s.step_status(st.id)) for st in STEPS]
         with Horizontal(id="body"):
             yield OptionList(
-                *[Option(nav_label(s, self.lab.status(s.id)), id=s.id) for s in self.lab.steps],
+                *[Option(label, id=st.id) for label, st in zip(labels, STEPS, strict=True)],
                 id="nav",
             )
             yield Static("", classes="pane")
         yield Footer()
 
     def on_mount(self) -> None:
-        nav = self.query_one("#nav", OptionList)
-        ids = [s.id for s in self.lab.steps]
-        start = self.lab.current if self.lab.current in ids else ids[0]
-        nav.highlighted = ids.index(start)
+        self._lab_changed.subscribe(self, self._on_lab_changed)
+        with self.session as s:
+            current = s.current_step
+        start = current if current in STEP_IDS else STEP_IDS[0]
+        self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
         self.show_step(start)
 
+    # -- the step on screen --------------------------------------------------------------
     @property
     def step(self) -> Step:
         """The step on screen."""
@@ -116,20 +228,88 @@ class LabScreen(Screen[None]):
         panes = self.query(StepPane)
         return panes.last().panel if panes else None
 
+    def _panel_for(self, step: Step) -> Widget | None:
+        """The panel of ``step``'s kind (None for steps that only take entries), bound to the
+        state it shows."""
+        acts = set(step.actions)
+        if acts & {"live_velocity", "capture_omega", "meter"}:
+            return LivePanel(step, self._live, self._refresh).data_bind(
+                LabScreen.requested, LabScreen.meter, LabScreen.device
+            )
+        if "connect" in acts:
+            return ConnectPanel().data_bind(LabScreen.device)
+        if step.id == "table":
+            return TablePanel()
+        if "run_steps" in acts:
+            return StepRunPanel(step).data_bind(LabScreen.run_progress)
+        if "results" in acts:
+            return ResultsPanel(step)
+        if "model_check" in acts:
+            return ModelCheckPanel()
+        if step.id == "summary":
+            return ReportPanel().data_bind(LabScreen.exported)
+        return None
+
+    def _rows(self, step: Step) -> list[FieldRow]:
+        with self.session as s:
+            return [
+                FieldRow(f, views.typed(s, f.key), views.entry(s, f.key), views.chosen(s, f.key))
+                for f in step.fields
+            ]
+
     def show_step(self, step_id: str) -> None:
         """Put ``step_id`` on the right and remember it in the session."""
-        step = next(s for s in self.lab.steps if s.id == step_id)
         if self._shown == step_id:  # not the DOM: a pane mounted with the screen is not in it yet
             return
         self._shown = step_id
-        self.lab.go(step_id)
-        extra = self.app.step_panel(step)  # type: ignore[attr-defined]
-        nav_has_focus = self.focused is self.query_one("#nav")
+        step = STEPS[STEP_IDS.index(step_id)]
+        with self.session as s:
+            s.go_to(step_id)
+        panel = self._panel_for(step)
+        if self._jump is not None:
+            (focus,), self._jump = self._jump, None
+        else:  # moved with PgDn/PgUp: land in the first entry; moving on the list stays there
+            focus = None if self.focused is self.query_one("#nav") else "entry"
         self.query(".pane").remove()
-        self.query_one("#body").mount(StepPane(step, self.lab, extra))
-        if not nav_has_focus:  # moved with PgDn/PgUp or the palette: land in the first entry
-            self.call_after_refresh(self._focus_first_input)
+        self.query_one("#body").mount(StepPane(step, panel, self._rows(step), focus))
+        self.post_message(StepShown(step))
+        if isinstance(panel, ViewPanel):
+            self._load(panel)
 
+    @work(thread=True, exclusive=True, group="view", name="panel view")
+    def _load(self, panel: ViewPanel[V]) -> None:
+        """Worker: build ``panel``'s view from the session and hand it over."""
+        worker = get_current_worker()
+        with self.session as s:
+            view = panel.build(s)
+        if not worker.is_cancelled:
+            self.app.call_from_thread(self._deliver, panel, view)
+
+    @staticmethod
+    def _deliver(panel: ViewPanel[V], view: V) -> None:
+        if panel.is_attached:  # else the step changed while the worker ran
+            panel.receive(view)
+
+    def _on_lab_changed(self, _: None) -> None:
+        """The session changed: the navigator's marks, the entries the lab changed (a
+        capture), and the panel's view."""
+        self.refresh_marks()
+        panes = self.query(StepPane)
+        if not panes:
+            return
+        with self.session as s:
+            for row in panes.last().query(FieldRow):
+                text = views.typed(s, row.field.key)
+                if row.sent is not None and text != row.sent:
+                    row.refresh_from_lab(text, views.entry(s, row.field.key))
+        panel = panes.last().panel
+        if isinstance(panel, ViewPanel):
+            self._load(panel)
+
+    def _changed(self) -> None:
+        self._lab_changed.publish(None)
+
+    # -- moving ------------------------------------------------------------------------
     @on(OptionList.OptionHighlighted, "#nav")
     def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
         if event.option_index != event.option_list.highlighted:
@@ -139,53 +319,27 @@ class LabScreen(Screen[None]):
 
     @on(OptionList.OptionSelected, "#nav")
     def _selected(self, event: OptionList.OptionSelected) -> None:
-        self.call_after_refresh(self._focus_first_input)
-
-    def _focus_first_input(self) -> None:
         panes = self.query(StepPane)
-        rows = panes.last().query(FieldRow) if panes else None
-        if rows:
-            rows.first().focus_input()
+        if panes:
+            self.call_after_refresh(panes.last().focus_on, "entry", True)
 
-    def on_key(self, event: events.Key) -> None:
-        """Typing on the list of steps goes into the step's first entry, not nowhere."""
-        if (
-            self.focused is not self.query_one("#nav")
-            or not event.is_printable
-            or not event.character
-        ):
+    def go_to(self, step_id: str, focus: str | None = "entry") -> None:
+        """Move the navigator (and so the pane) to ``step_id``; then focus its first entry
+        (``focus="entry"``), the widget the selector ``focus`` finds, or leave the focus
+        where it is (None)."""
+        index = STEP_IDS.index(step_id)
+        nav = self.query_one("#nav", OptionList)
+        if nav.highlighted == index and self._shown == step_id:
+            panes = self.query(StepPane)
+            if panes and focus is not None:
+                panes.last().focus_on(focus)
             return
-        inputs = self.query(StepPane).last().query(Input)
-        if inputs:
-            event.stop()
-            event.prevent_default()
-            inputs.first().focus()
-            inputs.first().insert_text_at_cursor(event.character)
-
-    @on(FieldRow.Typed)
-    def _typed(self, event: FieldRow.Typed) -> None:
-        result = self.lab.enter(event.key, event.text)
-        event.row.show_result(result)
-        self.app.entry_stored(event.key)  # type: ignore[attr-defined]
-        if result.ok and event.submitted:  # Enter on an accepted entry moves on to the next one
-            self.focus_after(event.key)
-
-    def focus_after(self, key: str) -> None:
-        """Focus the entry after field ``key`` (stays put on the last one)."""
-        rows = list(self.query(FieldRow))
-        keys = [r.field.key for r in rows]
-        if key in keys and keys.index(key) + 1 < len(rows):
-            rows[keys.index(key) + 1].focus_input()
-
-    @on(FieldRow.Chosen)
-    def _chosen(self, event: FieldRow.Chosen) -> None:
-        event.row.show_result(self.lab.choose(event.key, event.indices))
-        self.app.entry_stored(event.key)  # type: ignore[attr-defined]
+        self._jump = (focus,)
+        nav.highlighted = index
 
     def _move(self, delta: int) -> None:
         nav = self.query_one("#nav", OptionList)
-        n = len(self.lab.steps)
-        nav.highlighted = max(0, min(n - 1, (nav.highlighted or 0) + delta))
+        nav.highlighted = max(0, min(len(STEPS) - 1, (nav.highlighted or 0) + delta))
 
     def action_next_step(self) -> None:
         self._move(1)
@@ -203,17 +357,94 @@ class LabScreen(Screen[None]):
         nav = self.query_one("#nav")
         nav.display = not nav.display
 
+    def on_key(self, event: events.Key) -> None:
+        """Typing on the list of steps goes into the step's first entry, not nowhere."""
+        if (
+            self.focused is not self.query_one("#nav")
+            or not event.is_printable
+            or not event.character
+        ):
+            return
+        inputs = self.query(StepPane).last().query(Input)
+        if inputs:
+            event.stop()
+            event.prevent_default()
+            inputs.first().focus()
+            inputs.first().insert_text_at_cursor(event.character)
+
     def refresh_marks(self) -> None:
         """Update the status marks in the navigator after an entry or a run."""
         nav = self.query_one("#nav", OptionList)
-        for k, s in enumerate(self.lab.steps):
-            label = nav_label(s, self.lab.status(s.id))
+        with self.session as s:
+            labels = [nav_label(st, s.step_status(st.id)) for st in STEPS]
+        for k, label in enumerate(labels):
             if str(nav.get_option_at_index(k).prompt) != label:
                 nav.replace_option_prompt_at_index(k, label)
 
-    def go_to(self, step_id: str) -> None:
-        """Move the navigator (and the pane) to ``step_id``."""
-        ids = [s.id for s in self.lab.steps]
-        self.show_step(step_id)  # mount the pane now; the highlight below then changes nothing
-        self.query_one("#nav", OptionList).highlighted = ids.index(step_id)
-        self.call_after_refresh(self._focus_first_input)
+    # -- what the group enters -----------------------------------------------------------
+    @on(FieldRow.Typed)
+    def _typed(self, event: FieldRow.Typed) -> None:
+        with self.session as s:
+            s.enter(event.key, event.text)
+            result = views.entry(s, event.key) or EntryView(True)
+        event.row.show_result(result)
+        self._changed()
+        if result.ok and event.submitted:  # Enter on an accepted entry moves on to the next one
+            self.focus_after(event.key)
+
+    @on(FieldRow.Chosen)
+    def _chosen(self, event: FieldRow.Chosen) -> None:
+        with self.session as s:
+            s.choose(event.key, list(event.indices))
+            result = views.entry(s, event.key) or EntryView(True)
+        event.row.show_result(result)
+        self._changed()
+
+    def focus_after(self, key: str) -> None:
+        """Focus the entry after field ``key`` (stays put on the last one)."""
+        rows = list(self.query(FieldRow))
+        keys = [r.field.key for r in rows]
+        if key in keys and keys.index(key) + 1 < len(rows):
+            rows[keys.index(key) + 1].focus_input()
+
+    @on(CaptureRequested)
+    def _capture(self, event: CaptureRequested) -> None:
+        """F4: omega_ss from the settled window of the live stream."""
+        event.stop()
+        t, count, _u = self._live.snapshot()
+        with self.session as s:
+            result = views.capture_live(s, event.level, t, count)
+        if not result.ok:  # a success shows in the field itself; a toast would hide the meter
+            self.notify(result.message, severity="warning")
+        self._changed()
+        if result.ok:  # next comes the multimeter reading at the same voltage
+            self.focus_after(f"omega_ss@{event.level:g}")
+
+    @on(LogImportRequested)
+    def _import(self, event: LogImportRequested) -> None:
+        """A step log recorded elsewhere: it becomes the run Tasks 11-15 and the check use."""
+        event.stop()
+        try:
+            with self.session as s:
+                info = s.import_run(Path(event.path).expanduser())
+                s.select_run(info.name)
+        except MinsegError as exc:
+            event.reply(f"✗ {exc}")
+            return
+        event.reply(
+            f"imported {event.path} as {info.name} ({info.samples} rows); "
+            "Tasks 11-15 and the model check use it"
+        )
+        self._changed()
+
+    def use_run(self, name: str | None) -> None:
+        """Tasks 11-15 and the model check use run ``name`` (None: the latest)."""
+        try:
+            with self.session as s:
+                s.select_run(name)
+                said = views.run_in_use(s)
+        except MinsegError as exc:
+            self.notify(str(exc), severity="error")
+            return
+        self.notify(said, title="runs")
+        self._changed()

@@ -3,55 +3,62 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 from textual import on
 from textual.app import ComposeResult
 from textual.containers import Vertical
 from textual.message import Message
-from textual.screen import Screen
 from textual.widgets import Footer, Input, OptionList, Static
 from textual.widgets.option_list import Option
 
-from minseg_tui.ui.ports import SessionSummary
-from minseg_tui.ui.widgets.fields import LabInput
-from minseg_tui.ui.widgets.status import DeviceStatus
+from minseg_tui.lab.store import SessionInfo
+from minseg_tui.ui.screens.status import StatusScreen
 
 
-class StartScreen(Screen[None]):
+def why_closed(s: SessionInfo) -> str:
+    """Why a saved session cannot be opened ("damaged — ...", "in use by ..."), or ''."""
+    if s.damaged:
+        return f"damaged — {s.damaged}"
+    if s.locked_by:
+        return f"in use by another minseg-tui (pid {s.locked_by})"
+    return ""
+
+
+class StartScreen(StatusScreen):
     """Type the group's names and press Enter, or pick a session and press Enter."""
 
+    @dataclass
     class NewSession(Message):
-        """The group asked for a new session."""
+        """The group asked for a new session: ``members`` as typed, ``date`` (ISO or '')."""
 
-        def __init__(self, members: str, date: str) -> None:
-            super().__init__()
-            self.members = members
-            self.date = date
+        members: str
+        date: str
 
+    @dataclass
     class Resume(Message):
         """The group picked a saved session (its folder)."""
 
-        def __init__(self, path: str) -> None:
-            super().__init__()
-            self.path = path
+        path: str
 
-    def __init__(self, sessions: Sequence[SessionSummary], today: str) -> None:
+    def __init__(self, sessions: Sequence[SessionInfo], today: str) -> None:
         super().__init__()
         self._sessions = list(sessions)
         self._today = today
 
     def compose(self) -> ComposeResult:
-        yield DeviceStatus()
+        yield self.status_line()
         with Vertical(id="start"):
             yield Static("New session", classes="title")
-            yield LabInput(placeholder="group members, e.g. Ada L, Alan T", id="members")
-            yield LabInput(value=self._today, placeholder="date (YYYY-MM-DD)", id="date")
+            yield Input(placeholder="group members, e.g. Ada L, Alan T", id="members")
+            yield Input(value=self._today, placeholder="date (YYYY-MM-DD)", id="date")
             yield Static(
                 "Enter on the names starts the lab. Tab moves on.", id="start-msg", classes="hint"
             )
             yield Static("Resume a session", classes="title")
             options = [
-                Option(self._label(s), id=s.path, disabled=bool(s.damaged)) for s in self._sessions
+                Option(self._label(s), id=str(s.path), disabled=bool(why_closed(s)))
+                for s in self._sessions
             ]
             if not options:
                 options = [Option("no saved sessions yet", id="", disabled=True)]
@@ -59,10 +66,11 @@ class StartScreen(Screen[None]):
         yield Footer()
 
     @staticmethod
-    def _label(s: SessionSummary) -> str:
-        if s.damaged:
-            return f"{s.path}: {s.damaged}"
-        return f"{s.date}  {s.members or '(no names)'}  at {s.step}"
+    def _label(s: SessionInfo) -> str:
+        why = why_closed(s)
+        if why:
+            return f"{s.path}: {why}"
+        return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {s.last_step}"
 
     @on(Input.Submitted)
     def _submitted(self, event: Input.Submitted) -> None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
 from rich.segment import Segment
 from textual import on
@@ -13,7 +14,7 @@ from textual.strip import Strip
 from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList, Static
 
 from minseg_tui.lab.steps import Field
-from minseg_tui.ui.ports import EntryResult
+from minseg_tui.lab.views import EntryView
 
 
 def field_id(key: str) -> str:
@@ -51,44 +52,33 @@ class Ticks(SelectionList[int]):
         return Strip(segments, strip.cell_length)
 
 
-class LabInput(Input):
-    """A text box that blinks its cursor only when the app animates (snapshots stay pinned)."""
-
-    def on_mount(self) -> None:
-        config = getattr(self.app, "config", None)
-        if config is not None and not config.animations:
-            self.cursor_blink = False
-
-
 class FieldRow(Vertical):
     """One entry. Enter or leaving the field posts :class:`FieldRow.Typed`; a choice field is a
     list to tick with the keys (arrows, Space or Enter) and posts :class:`FieldRow.Chosen`. The
     screen answers with :meth:`show_result`."""
 
+    @dataclass
     class Chosen(Message):
         """The group ticked options ``indices`` (0-based) of choice field ``key``."""
 
-        def __init__(self, row: FieldRow, key: str, indices: tuple[int, ...]) -> None:
-            super().__init__()
-            self.row = row
-            self.key = key
-            self.indices = indices
+        row: FieldRow
+        key: str
+        indices: tuple[int, ...]
 
+    @dataclass
     class Typed(Message):
         """The group typed ``text`` for ``key`` (``submitted``: with Enter, not by leaving)."""
 
-        def __init__(self, row: FieldRow, key: str, text: str, submitted: bool = False) -> None:
-            super().__init__()
-            self.row = row
-            self.key = key
-            self.text = text
-            self.submitted = submitted
+        row: FieldRow
+        key: str
+        text: str
+        submitted: bool = False
 
     def __init__(
         self,
         field: Field,
         text: str,
-        result: EntryResult | None = None,
+        result: EntryView | None = None,
         chosen: tuple[int, ...] = (),
     ) -> None:
         super().__init__(
@@ -120,7 +110,7 @@ class FieldRow(Vertical):
         else:
             with Horizontal(classes="field-line"):
                 yield Label(f"{self.field.label}{unit}", classes="field-label")
-                yield LabInput(
+                yield Input(
                     value=self._text,
                     classes="field-input",
                     select_on_focus=False,
@@ -137,10 +127,11 @@ class FieldRow(Vertical):
         """The text box."""
         return self.query_one(Input)
 
-    def focus_input(self) -> None:
-        """Focus the text box or the list of options."""
+    def focus_input(self, scroll_visible: bool = True) -> None:
+        """Focus the text box or the list of options (``scroll_visible``: and scroll it into
+        view)."""
         for w in self.query(".field-input, .field-choice"):
-            w.focus()
+            w.focus(scroll_visible)
             return
 
     def _choose(self, indices: tuple[int, ...]) -> None:
@@ -154,7 +145,7 @@ class FieldRow(Vertical):
         self._choose((event.index,))
 
     @on(SelectionList.SelectedChanged)
-    def _ticked(self, event: SelectionList.SelectedChanged) -> None:
+    def _ticked(self, event: SelectionList.SelectedChanged[int]) -> None:
         event.stop()
         self._choose(tuple(sorted(event.selection_list.selected)))
 
@@ -163,7 +154,13 @@ class FieldRow(Vertical):
         """The message shown under the box (plain text)."""
         return str(self.query_one(".field-msg", Static).render())
 
-    def refresh_from_lab(self, text: str, result: EntryResult | None) -> None:
+    @property
+    def sent(self) -> str | None:
+        """The text the lab holds for this row as far as the row knows (what it was given or
+        last sent; None right after Enter)."""
+        return self._sent
+
+    def refresh_from_lab(self, text: str, result: EntryView | None) -> None:
         """Show what the lab now holds for this field (after a capture, say)."""
         if self.field.options:
             return
@@ -172,7 +169,7 @@ class FieldRow(Vertical):
         if result is not None:
             self.show_result(result)
 
-    def show_result(self, result: EntryResult) -> None:
+    def show_result(self, result: EntryView) -> None:
         """Show the lab's verdict: a refusal, the warnings, or a checker's feedback."""
         parts = [("✗ " if not result.ok else "") + result.message] if result.message else []
         parts += [f"! {w}" for w in result.warnings]
@@ -189,7 +186,7 @@ class FieldRow(Vertical):
         text = self.input.value
         if text == self._sent:
             return
-        self._sent: str | None = text
+        self._sent = text
         self.post_message(self.Typed(self, self.field.key, text, submitted))
 
     @on(Input.Submitted)

@@ -5,15 +5,20 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+from numpy.typing import NDArray
 from textual_plotext import PlotextPlot
+
+Values = Sequence[float] | NDArray[np.float64]
+"""The x or y values of a trace."""
 
 
 @dataclass(frozen=True)
 class Trace:
     """One line: x and y values and its legend label."""
 
-    x: Sequence[float]
-    y: Sequence[float]
+    x: Values
+    y: Values
     label: str = ""
     marker: str = "braille"
 

@@ -1,0 +1,459 @@
+"""What the lab's screens show, as plain data ready to render.
+
+Each builder reads a :class:`~minseg_tui.lab.session.Session` (or live samples) through its
+public methods and returns frozen data: the live speed and Task 4's steady-state indicator,
+the verdict on an entry, the table of Tasks 6-9 with the formula behind every cell, the
+recorded runs with their T readings (Task 10), the results of Tasks 11-15 and the model
+check. Every number comes from :mod:`minseg_tui.signals`, :mod:`minseg_tui.model` or the
+session; the UI only lays the text and arrays out. Units: V, A, ohm, rad, rad/s, s.
+
+The slow builders (:func:`runs`, :func:`results`, :func:`check`, up to half a second on a
+long run) are meant for a worker thread; a Session is not thread-safe, so the caller holds
+it for one thread at a time.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from minseg_tui import signals
+from minseg_tui.errors import InputError
+from minseg_tui.lab import capture as lab_capture
+from minseg_tui.lab.entry import format_quantity
+from minseg_tui.lab.session import Entry, Session, TableRow
+from minseg_tui.lab.steps import step
+from minseg_tui.model import identify as model_identify
+from minseg_tui.model.steplog import StepLog
+
+FloatArray = NDArray[np.float64]
+
+PLOT_SPAN: float = 8.0
+"""Seconds of the live stream on screen."""
+
+CAPTURE_VELOCITY_WINDOW: float = 0.1
+"""Speed used for the steady-state indicator and the capture of omega_ss: the mean speed over
+the last 0.1 s from the board's timestamps (:func:`signals.timestamp_velocity`), s. Four 25 ms
+samples: quiet enough to judge steadiness, and without the manual's 0.5 s lag."""
+
+CAPTURE_WINDOW: float = lab_capture.DEFAULT_WINDOW
+"""The window the indicator judges and a capture averages over, s."""
+
+TABLE_COLUMNS = ("u\nV", "u_ss\nV", "omega_ss\nrad/s", "i_ss\nmA", "k_v\nV s/rad", "f\nmN m s/rad")
+"""The table's headers: name over unit (the cells hold bare numbers in these units)."""
+
+_FORMULAS = dict(step("table").formulas)
+
+
+def _empty() -> FloatArray:
+    return np.zeros(0)
+
+
+def _fmt(v: float | None, unit: str, digits: int = 4) -> str:
+    return "—" if v is None or not math.isfinite(v) else format_quantity(v, unit, digits)
+
+
+def _fmt_milli(v: float | None, unit: str, digits: int = 4) -> str:
+    """``v`` in thousandths of ``unit`` (f in mN m s/rad, as the table's column shows it)."""
+    return "—" if v is None or not math.isfinite(v) else f"{v * 1e3:.{digits}g} m{unit}"
+
+
+def _num(v: float | None, digits: int) -> str:
+    return "—" if v is None or not math.isfinite(v) else f"{v:.{digits}g}"
+
+
+# -- Task 4: the live stream ------------------------------------------------------------------
+@dataclass(frozen=True)
+class LiveView:
+    """The last :data:`PLOT_SPAN` s of the stream: x (s from the first sample shown), the
+    angle theta (rad), the speed from the board's timestamps ``omega`` and the manual's
+    ``omega_lab`` (rad/s). Empty arrays with fewer than two samples."""
+
+    x: FloatArray = field(default_factory=_empty)
+    theta: FloatArray = field(default_factory=_empty)
+    omega: FloatArray = field(default_factory=_empty)
+    omega_lab: FloatArray = field(default_factory=_empty)
+
+
+def live(t: ArrayLike, count: ArrayLike, span: float = PLOT_SPAN) -> LiveView:
+    """The live plots from board times ``t`` (s) and encoder counts, the last ``span`` s."""
+    tt = np.asarray(t, dtype=float)
+    cc = np.asarray(count, dtype=np.int64)
+    if tt.size < 2:
+        return LiveView()
+    keep = tt >= tt[-1] - span
+    tt, cc = tt[keep], cc[keep]
+    return LiveView(
+        tt - tt[0],
+        signals.angle(cc),
+        signals.timestamp_velocity(tt, cc),
+        signals.lab_velocity(cc),
+    )
+
+
+def _capture_speed(t: ArrayLike, count: ArrayLike) -> FloatArray:
+    return signals.timestamp_velocity(t, count, window=CAPTURE_VELOCITY_WINDOW)
+
+
+def steady(t: ArrayLike, count: ArrayLike) -> lab_capture.Steadiness:
+    """Task 4's indicator on live samples (board time s, counts): settled, and the mean and
+    spread (rad/s) over the last :data:`CAPTURE_WINDOW` s."""
+    return lab_capture.steadiness(t, _capture_speed(t, count))
+
+
+# -- entries ------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class EntryView:
+    """The lab's verdict on what was entered: ``ok`` False with a one-line ``message``, else
+    stored (``message`` then says how it was read, if anything). ``warnings`` are shown but
+    never refuse; ``feedback`` is a checker's verdict on an answer."""
+
+    ok: bool
+    message: str = ""
+    warnings: tuple[str, ...] = ()
+    feedback: str = ""
+
+
+def _feedback(session: Session, key: str) -> str:
+    for fb in session.feedback("*"):
+        if fb.key == key and fb.status != "missing":
+            return fb.message
+    return ""
+
+
+def _verdict(e: Entry, feedback: str) -> EntryView:
+    if e.refused:  # a refused attempt over an accepted entry: say so, and what still counts
+        return EntryView(
+            False, f"{e.refused[1]} (still using {e.text.strip()!r})", tuple(e.warnings), feedback
+        )
+    return EntryView(e.ok, e.message, tuple(e.warnings), feedback)
+
+
+def entry(session: Session, key: str) -> EntryView | None:
+    """The verdict on the stored entry for field ``key`` (None when nothing was entered)."""
+    e = session.entry(key)
+    return None if e is None else _verdict(e, _feedback(session, key))
+
+
+def typed(session: Session, key: str) -> str:
+    """What field ``key`` shows: the text typed last (a refused attempt too), or ''."""
+    e = session.entry(key)
+    return e.typed if e else ""
+
+
+def chosen(session: Session, key: str) -> tuple[int, ...]:
+    """The options (0-based) stored for choice field ``key``."""
+    e = session.entry(key)
+    return e.value if e is not None and e.ok and isinstance(e.value, tuple) else ()
+
+
+def capture_live(session: Session, level: float, t: ArrayLike, count: ArrayLike) -> EntryView:
+    """Task 4: capture omega_ss at requested ``level`` (V) from live samples (board time s,
+    counts) into ``session`` (autosaved), refused while the speed is not settled."""
+    w = _capture_speed(t, count)
+    if not lab_capture.steadiness(t, w).settled:
+        return EntryView(False, "not settled yet: wait until the indicator says SETTLED")
+    try:
+        e = session.capture_omega(level, np.asarray(t, dtype=float).tolist(), w.tolist())
+    except ValueError as exc:
+        return EntryView(False, str(exc))
+    return _verdict(e, "")
+
+
+def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], ...]:
+    """The group's own readings on step ``step_id`` beside the computed values: (label,
+    yours, computed with the relative difference)."""
+    out = []
+    for c in session.comparisons(step_id):
+        own = "—" if c.own is None else (c.own if isinstance(c.own, str) else _fmt(c.own, c.unit))
+        comp = (
+            "—"
+            if c.computed is None
+            else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, c.unit))
+        )
+        if c.rel_diff is not None:
+            comp += f" ({c.rel_diff:+.0%})"
+        out.append((c.label, own, comp))
+    return tuple(out)
+
+
+# -- Tasks 6-9: the table ------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Cell:
+    """A value in the table: the text shown and the formula with numbers behind it."""
+
+    text: str
+    formula: str = ""
+
+
+@dataclass(frozen=True)
+class TableView:
+    """Columns, rows of cells, the final values, the warnings the numbers raise (one line
+    each) and the group's own values beside the computed ones (label, yours, computed)."""
+
+    columns: tuple[str, ...]
+    rows: tuple[tuple[Cell, ...], ...]
+    results: tuple[tuple[str, Cell], ...] = ()
+    warnings: tuple[str, ...] = ()
+    compare: tuple[tuple[str, str, str], ...] = ()
+
+
+def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> str:
+    """The formula of a computed cell of row ``r`` with the row's numbers in it (R in ohm,
+    k_a in N m/A, the final one)."""
+    if name == "k_v" and r.k_v is not None and r.u_ss is not None and r.i_ss is not None:
+        if r.omega_ss is not None and R is not None:
+            return (
+                f"k_v = (u_ss - R i_ss) / omega_ss = ({r.u_ss:.3g} V - {R:.3g} Ω × {r.i_ss:.3g} A)"
+                f" / {r.omega_ss:.3g} rad/s = {r.k_v:.4g} V s/rad"
+            )
+    if name == "f" and r.f is not None and r.i_ss is not None and r.omega_ss is not None:
+        if k_a is not None:
+            return (
+                f"f = k_a i_ss / omega_ss = {k_a:.4g} N m/A × {r.i_ss:.3g} A / {r.omega_ss:.3g}"
+                f" rad/s = {r.f * 1e3:.4g} mN m s/rad (k_a = 0.65 × median k_v)"
+            )
+    return _FORMULAS[name]
+
+
+def _table_row(r: TableRow, R: float | None, k_a: float | None) -> tuple[Cell, ...]:
+    spread = "" if r.spread is None else f" ±{r.spread:.2f}"
+    omega_how = (
+        "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
+        if r.spread is not None
+        else "omega_ss: typed in (rad/s)"
+        if r.omega_ss is not None
+        else ""
+    )
+    return (
+        Cell(f"{r.level:g}", f"u = {r.level:g} V: the voltage requested on the board"),
+        Cell(_num(r.u_ss, 3), "u_ss: read on the multimeter (V)" if r.u_ss is not None else ""),
+        Cell(_num(r.omega_ss, 3) + spread, omega_how),
+        Cell(
+            _num(None if r.i_ss is None else r.i_ss * 1e3, 3),
+            "i_ss: read on the multimeter (mA)" if r.i_ss is not None else "",
+        ),
+        Cell(_num(r.k_v, 4), _row_formula("k_v", r, R, k_a)),
+        Cell(_num(None if r.f is None else r.f * 1e3, 4), _row_formula("f", r, R, k_a)),
+    )
+
+
+def table(session: Session) -> TableView:
+    """The table with its units in the headers and short cells (it fits the pane at 80
+    columns); each computed cell's formula carries the row's own numbers."""
+    R = session.value("R")
+    res = session.results()
+    ident = res.identification
+    k_a = None if ident is None else ident.k_a
+    rows = tuple(_table_row(r, R, k_a) for r in session.table())
+    results: tuple[tuple[str, Cell], ...] = ()
+    if ident is not None:
+        results = (
+            ("k_v", Cell(_fmt(ident.k_v, "V s/rad"), _FORMULAS["k_v"])),
+            ("k_a", Cell(_fmt(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
+            ("f", Cell(_fmt_milli(ident.f, "N m s/rad"), _FORMULAS["f"])),
+        )
+    warnings = tuple(n.message for n in session.warnings("table")) + tuple(res.problems)
+    return TableView(
+        TABLE_COLUMNS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
+    )
+
+
+# -- Task 10: the recorded runs --------------------------------------------------------------------
+@dataclass(frozen=True)
+class RunView:
+    """A Task 10 run for the side-by-side panel: speeds (rad/s) at board times t (s), the
+    manual's estimate ``omega_lab``, and the time constants read from it (s, None if none):
+    T_63 on the timestamp speed, T_63_lab on the manual's filtered speed, T_ls with its 95 %
+    interval T_ci. ``kind``: steps (25 ms) or fast."""
+
+    name: str
+    kind: str
+    ts: float
+    samples: int
+    interrupted: bool
+    t: FloatArray
+    omega: FloatArray
+    omega_lab: FloatArray
+    T_63: float | None
+    T_63_lab: float | None
+    T_ls: float | None
+    T_ci: tuple[float, float] | None
+
+
+def _median(values: Sequence[float | None]) -> float | None:
+    vs = [v for v in values if v is not None]
+    return float(np.median(vs)) if vs else None
+
+
+def _t63(log: StepLog) -> float | None:
+    """The manual's 63 % reading of the log's speed: the median over its rising steps, s."""
+    try:
+        return _median([s.T_63 for s in model_identify.rising_steps(log)])
+    except (InputError, ValueError):
+        return None
+
+
+def runs(session: Session) -> tuple[RunView, ...]:
+    """The latest 25 ms run and the latest fast run, with their T readings (a worker's job)."""
+    latest = {r.kind: r for r in session.runs if r.kind in ("steps", "fast")}
+    out = []
+    for kind in ("steps", "fast"):
+        r = latest.get(kind)
+        if r is None:
+            continue
+        try:
+            log = session.load_run(r.name)
+        except InputError:
+            continue
+        lab = np.asarray(log.extra.get("omega_lab", log.omega), dtype=float)
+        try:
+            fit = model_identify.fit_time_constant(log)
+        except (InputError, ValueError):
+            fit = None
+        out.append(
+            RunView(
+                r.name,
+                r.kind,
+                r.ts,
+                r.samples,
+                r.interrupted,
+                np.asarray(log.t, dtype=float),
+                np.asarray(log.omega, dtype=float),
+                lab,
+                _t63(log),
+                _t63(replace(log, omega=lab)),
+                fit.T if fit else None,
+                fit.ci if fit else None,
+            )
+        )
+    return tuple(out)
+
+
+# -- Tasks 11-15: the results ---------------------------------------------------------------------
+@dataclass(frozen=True)
+class StepWindow:
+    """One rising step of the log: from ``t0`` to ``t1`` (s), its 63 % reading (s or None)."""
+
+    t0: float
+    t1: float
+    T_63: float | None
+
+
+@dataclass(frozen=True)
+class ResultsView:
+    """Tasks 11-15: the log used (t s, omega rad/s, u V), its rising steps, result lines and
+    the group's readings beside the computed ones (``compare``: label, yours, computed);
+    ``problems``: what keeps a result from being computed, one line each."""
+
+    run: str | None
+    t: FloatArray
+    omega: FloatArray
+    u: FloatArray
+    steps: tuple[StepWindow, ...]
+    lines: tuple[str, ...]
+    compare: tuple[tuple[str, str, str], ...] = ()
+    problems: tuple[str, ...] = ()
+
+
+def results(session: Session, step_id: str) -> ResultsView:
+    """Tasks 11-15 from the session for step ``step_id`` (a worker's job: 0.4-0.5 s on long
+    runs)."""
+    res = session.results()
+    compare = comparisons(session, step_id) if any(f.compare for f in step(step_id).fields) else ()
+    log = None
+    if res.run is not None:
+        try:
+            log = session.load_run(res.run)
+        except InputError:
+            log = None
+    ident = res.identification
+    lines: list[str] = []
+    steps: tuple[StepWindow, ...] = ()
+    if ident is not None and ident.step is not None:
+        st = ident.step
+        lines += [
+            f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s', 3)}   "
+            f"u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
+            f"K = {_fmt(st.K, 'rad/s/V', 3)}",
+            f"T (63 %) = {_fmt(st.T_63, 's', 3)}   T (least squares) = {_fmt(st.T, 's', 3)}, "
+            f"95 % CI {st.T_ci[0]:.3g}..{st.T_ci[1]:.3g} s",
+            f"J = {_fmt(st.J, 'kg m^2', 3)}",
+            f"model: {st.T:.3g} omega' = -omega + {st.K:.3g} u_A",
+            f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s', 3)}",
+        ]
+        steps = tuple(StepWindow(s.t, s.t + s.duration, s.T_63) for s in st.steps)
+    return ResultsView(
+        res.run,
+        np.asarray(log.t, dtype=float) if log else _empty(),
+        np.asarray(log.omega, dtype=float) if log else _empty(),
+        np.asarray(log.u, dtype=float) if log else _empty(),
+        steps,
+        tuple(lines),
+        compare,
+        tuple(res.problems),
+    )
+
+
+# -- the model check ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class CheckView:
+    """The model check of one run: measured, baseline and extended speeds (rad/s) at t (s),
+    residual = measured - baseline; ``cause`` and ``evidence`` in words, the extended model
+    with its parameters and the gain in one line each; ``problem``: why there is no result."""
+
+    run: str | None
+    t: FloatArray = field(default_factory=_empty)
+    omega: FloatArray = field(default_factory=_empty)
+    baseline: FloatArray = field(default_factory=_empty)
+    extended: FloatArray = field(default_factory=_empty)
+    residual: FloatArray = field(default_factory=_empty)
+    cause: str = ""
+    evidence: str = ""
+    extended_model: str = ""
+    gain: str = ""
+    problem: str = ""
+
+
+def check(session: Session) -> CheckView:
+    """The model check of the run Tasks 11-15 use (a worker's job: up to 0.5 s)."""
+    mc = session.model_check()
+    r = mc.result
+    if r is None:
+        return CheckView(mc.run, problem=mc.problem or "no result")
+    f, e = r.finding, r.extended
+    ext = (
+        "none needed (the baseline is enough)"
+        if f.cause == "none"
+        else (f"{e.model}: " + ", ".join(f"{k} = {v:.3g}" for k, v in e.params.items()))
+    )
+    lower = r.gain.get("rmse_reduction_percent", 0.0)
+    gain = (
+        f"rmse {r.baseline.rmse:.3f} → {e.rmse:.3f} rad/s ({lower:.0f} % lower), "
+        f"fit {r.baseline.fit_percent:.1f} → {e.fit_percent:.1f} %"
+    )
+    omega = np.asarray(r.omega, dtype=float)
+    baseline = np.asarray(r.baseline_pred, dtype=float)
+    return CheckView(
+        mc.run,
+        np.asarray(r.t, dtype=float),
+        omega,
+        baseline,
+        np.asarray(r.extended_pred, dtype=float),
+        omega - baseline,
+        f.cause,
+        f.evidence,
+        ext,
+        gain,
+    )
+
+
+# -- the run in use -----------------------------------------------------------------------------
+def run_in_use(session: Session) -> str:
+    """One line saying which run Tasks 11-15 and the model check use."""
+    run = session.step_run()
+    return f"Tasks 11-15 and the model check use run {run.name if run else '— (none yet)'}"

@@ -1,0 +1,121 @@
+"""The device as the UI drives it: one Protocol, met by the device layer's
+:class:`~minseg_tui.device.link.Link` (the board or the virtual MinSeg) and by the test
+double in tests/ui/fakes.py; and who the status line says we talk to."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Protocol
+
+from minseg_tui.device import factory
+from minseg_tui.device.link import LinkEvent, LinkStats
+from minseg_tui.device.protocol import Ident
+from minseg_tui.device.samples import SampleBatch
+from minseg_tui.model.plant import MeterReading
+
+
+class Device(Protocol):
+    """The board or the virtual MinSeg: what the UI uses of a :class:`Link`. The commands
+    raise DeviceError with one line when the board does not answer; volts and seconds."""
+
+    port: str
+    ident: Ident | None
+    stats: LinkStats
+    board: Any
+    """The virtual board behind a ``minseg://`` URL (it has the multimeter), else None."""
+
+    def samples(self) -> SampleBatch:
+        """Every sample received since the last call (worker thread)."""
+        ...
+
+    def events(self) -> list[LinkEvent]:
+        """Every event since the last call, oldest first (worker thread)."""
+        ...
+
+    def set_voltage(self, u: float) -> object:
+        """Request ``u`` V on the motor."""
+        ...
+
+    def stop(self) -> object:
+        """Motor off, any step sequence aborted."""
+        ...
+
+    def set_period(self, ts: float) -> object:
+        """Sample every ``ts`` s (board-timed)."""
+        ...
+
+    def step(self, low: float, high: float, half_period: float, periods: int) -> object:
+        """Board-timed square wave between ``low`` and ``high`` V, ``half_period`` s at each,
+        ``periods`` times."""
+        ...
+
+    def meter(self) -> MeterReading | None:
+        """The multimeter on M1A/M1B (the virtual board's), else None."""
+        ...
+
+    def close(self) -> None:
+        """Motor off and port closed."""
+        ...
+
+
+@dataclass(frozen=True)
+class DeviceInfo:
+    """Who the app talks to: ``name`` (the board's profile) and ``firmware`` from its
+    handshake, the ``port``; ``virtual`` True for the virtual MinSeg, ``fallback`` True when
+    it was chosen because no board was found."""
+
+    name: str
+    firmware: str
+    virtual: bool
+    port: str = ""
+    fallback: bool = False
+
+    @classmethod
+    def of(cls, device: Device, fallback: bool = False) -> DeviceInfo:
+        """The info of an opened ``device``."""
+        ident = device.ident
+        return cls(
+            name=ident.board if ident else "?",
+            firmware=ident.fw if ident else "?",
+            virtual=device.board is not None,
+            port=device.port,
+            fallback=fallback,
+        )
+
+
+LINK_STATES: dict[str, str] = {
+    "connected": "ok",
+    "alive": "ok",
+    "disconnected": "lost",
+    "silent": "silent",
+    "error": "lost",
+}
+"""The link's state after each kind of link event (the others leave it as it was)."""
+
+
+@dataclass(frozen=True)
+class LinkState:
+    """How the link is: ``state`` (ok, lost, silent), the lines ``dropped`` (gaps in seq) and
+    ``corrupt`` (refused) so far, and ``event``: what the last link event said, shown in place
+    of the counters until the link is fine again (empty then)."""
+
+    state: str = "ok"
+    dropped: int = 0
+    corrupt: int = 0
+    event: str = ""
+
+    def after(self, event: LinkEvent, text: str) -> LinkState:
+        """The state after ``event``, which the status line shows as ``text``."""
+        return LinkState(LINK_STATES.get(event.kind, self.state), self.dropped, self.corrupt, text)
+
+    def counted(self, stats: LinkStats) -> LinkState:
+        """The same state with the link's counters now."""
+        return LinkState(self.state, stats.dropped, stats.corrupt, self.event)
+
+
+def open_device(spec: str, seed: int = 0) -> Device:
+    """The board or the virtual MinSeg for the UI's ``spec``: ``auto`` (a board if one is
+    found, else the virtual MinSeg), ``sim`` (the virtual MinSeg in real time, seeded), a
+    port or a pyserial URL. DeviceError with one line when it cannot be opened."""
+    virtual = f"{factory.VIRTUAL}&seed={seed}"
+    return factory.open_device("virtual" if spec == "sim" else spec, virtual=virtual)

@@ -1,0 +1,29 @@
+"""Task 1: who the program talks to, and how to change it."""
+
+from __future__ import annotations
+
+from textual.reactive import reactive
+from textual.widgets import Static
+
+from minseg_tui.ui.device import DeviceInfo
+
+
+class ConnectPanel(Static):
+    """Says which ``device`` the app is connected to (None: none yet)."""
+
+    device: reactive[DeviceInfo | None] = reactive(None, layout=True)
+
+    def __init__(self) -> None:
+        super().__init__("", classes="panel")
+
+    def render(self) -> str:
+        d = self.device
+        if d is None:
+            return "No device yet. Ctrl+P → Switch to virtual board to practise."
+        if d.virtual:
+            return (
+                f"Connected to the VIRTUAL MinSeg ({d.firmware})"
+                + (": no board was found." if d.fallback else ".")
+                + " Plug a board in and restart with --port, or keep practising."
+            )
+        return f"Connected to {d.name} on {d.port}, firmware {d.firmware}."

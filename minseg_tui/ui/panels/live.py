@@ -1,0 +1,131 @@
+"""Tasks 2-5: the live plots, the steady-state indicator, the requested voltage, the meter."""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+from textual.app import ComposeResult
+from textual.containers import Horizontal, Vertical
+from textual.reactive import reactive
+from textual.widget import Widget
+from textual.widgets import Static
+
+from minseg_tui.lab import views
+from minseg_tui.lab.steps import LEVELS, Step
+from minseg_tui.model.plant import MeterReading
+from minseg_tui.ui.device import DeviceInfo
+from minseg_tui.ui.live import LiveBuffer
+from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
+from minseg_tui.ui.panels.meter import MeterPanel
+from minseg_tui.ui.widgets.plots import Trace, TracePlot
+
+
+class LivePanel(Vertical):
+    """Angle and speed of the last seconds from the ``live`` buffer (redrawn every
+    ``refresh`` s; never per sample), the manual's speed beside the timestamp one; the
+    steady-state indicator (Task 4); F3 asks for the next voltage, F4 for a capture; the
+    multimeter. Shows the app's ``requested`` voltage, ``meter`` reading and ``device``."""
+
+    requested: reactive[float | None] = reactive(None)
+    meter: reactive[MeterReading | None] = reactive(None)
+    device: reactive[DeviceInfo | None] = reactive(None)
+
+    def __init__(self, step: Step, live: LiveBuffer, refresh: float) -> None:
+        super().__init__(classes="panel live")
+        self.step = step
+        self._live = live
+        self._refresh = refresh
+        acts = set(step.actions)
+        self.levels = tuple(dict.fromkeys(f.level for f in step.fields if f.level is not None))
+        if not self.levels and {"capture_omega", "live_velocity"} & acts:
+            self.levels = LEVELS  # Task 3 says "set a voltage": F3 steps through the lab's
+        self.plots = bool({"live_velocity", "capture_omega"} & acts)
+        self._steady = Static("", id="steady") if self.levels or "capture_omega" in acts else None
+        self._meter = MeterPanel() if "meter" in acts else None
+
+    def compose(self) -> ComposeResult:
+        if self.plots:
+            with Horizontal(classes="plots"):
+                yield TracePlot("angle", "t [s]", "theta [rad]", id="plot-angle")
+                yield TracePlot("speed", "t [s]", "omega [rad/s]", id="plot-speed")
+
+    def readout(self) -> Widget | None:
+        """The lines to keep in sight while typing (the steady-state indicator, the requested
+        voltage and keys, the multimeter): the step pane docks them at its bottom."""
+        parts = [w for w in (self._steady, self._meter) if w is not None]
+        return Vertical(*parts, classes="readout") if parts else None
+
+    def on_mount(self) -> None:
+        self.redraw()
+        if self._refresh > 0:
+            self.set_interval(self._refresh, self.redraw)
+
+    def watch_requested(self) -> None:
+        t, count, _u = self._live.snapshot()
+        self._show_steady(t, count)
+
+    def watch_meter(self, reading: MeterReading | None) -> None:
+        if self._meter is not None:
+            self._meter.reading = reading
+
+    def watch_device(self, device: DeviceInfo | None) -> None:
+        if self._meter is not None:
+            self._meter.device = device
+
+    def redraw(self) -> None:
+        """Replot from the buffer and update the indicator (a few times a second)."""
+        t, count, _u = self._live.snapshot()
+        if self.plots:
+            v = views.live(t, count)
+            if v.x.size:
+                self.query_one("#plot-angle", TracePlot).show([Trace(v.x, v.theta, "theta")])
+                self.query_one("#plot-speed", TracePlot).show(
+                    [Trace(v.x, v.omega, "board time"), Trace(v.x, v.omega_lab, "manual", "dot")]
+                )
+        self._show_steady(t, count)
+
+    def _show_steady(self, t: NDArray[np.float64], count: NDArray[np.int64]) -> None:
+        if self._steady is None:
+            return
+        level = "0 V (motor off)" if self.requested is None else f"{self.requested:g} V"
+        keys = "F3 next voltage · F2 stop"
+        if "capture_omega" in self.step.actions:
+            s = views.steady(t, count)
+            state = "SETTLED" if s.settled else "not settled"
+            mean = "—" if s.mean != s.mean else f"{s.mean:.2f} ± {s.spread:.2f} rad/s"
+            note = "" if s.ready else "(window filling)"
+            text = (
+                f"steady: {state} · {mean} over {views.CAPTURE_WINDOW:g} s {note}".rstrip()
+                + f"\nrequested {level} · {keys} · F4 capture"
+            )
+        else:
+            text = f"requested {level} · {keys}"
+        if t.size == 0:
+            text = "waiting for samples…\n" + text
+        self._steady.update(text)
+
+    def offers(self, action: str) -> bool:
+        """Whether the panel's key ``action`` does something on this step (F3 where there are
+        voltages to set, F4 on Task 4)."""
+        return {
+            "set_voltage": bool(self.levels),
+            "capture": "capture_omega" in self.step.actions,
+        }.get(action, True)
+
+    def set_voltage(self) -> None:
+        """F3: ask for the next of this step's voltages."""
+        if not self.levels:
+            self.notify("no voltage to set on this step (Tasks 4-5)")
+            return
+        k = -1 if self.requested not in self.levels else self.levels.index(self.requested)
+        self.post_message(VoltageRequested(self.levels[(k + 1) % len(self.levels)]))
+
+    def capture(self) -> None:
+        """F4: ask to take omega_ss from the settled window (refused while not settled)."""
+        if "capture_omega" not in self.step.actions:
+            self.notify("capturing omega_ss is part of Task 4")
+            return
+        if self.requested is None:
+            self.notify("set a voltage first (F3)", severity="warning")
+            return
+        self.post_message(CaptureRequested(self.requested))

@@ -1,0 +1,137 @@
+"""Tasks 11-15: the step log, zoomed to one step or whole, and the results beside the
+group's own readings."""
+
+from __future__ import annotations
+
+import numpy as np
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.widgets import Static
+
+from minseg_tui.lab import views
+from minseg_tui.lab.session import Session
+from minseg_tui.lab.steps import Step
+from minseg_tui.lab.views import ResultsView
+from minseg_tui.ui.panels.view_panel import ViewPanel
+from minseg_tui.ui.widgets.plots import Trace, TracePlot
+
+ZOOM_BEFORE = 0.2
+"""Seconds shown before a rising step when zoomed to it."""
+
+
+def _s(v: float | None) -> str:
+    return "—" if v is None else f"{v:.3f} s"
+
+
+class StepPlot(TracePlot):
+    """The step log, whole or zoomed to one rising step. Focused, [ and ] pick the step and z
+    toggles; alt+left/right and F9 do the same from anywhere on the step (app keys)."""
+
+    BINDINGS = [
+        Binding("left_square_bracket", "pick(-1)", "prev step"),
+        Binding("right_square_bracket", "pick(1)", "next step"),
+        Binding("z", "zoom", "zoom"),
+    ]
+    can_focus = True
+
+    def action_pick(self, delta: int) -> None:
+        for p in self.ancestors:
+            if isinstance(p, ResultsPanel):
+                p.pick(delta)
+
+    def action_zoom(self) -> None:
+        for p in self.ancestors:
+            if isinstance(p, ResultsPanel):
+                p.toggle_zoom()
+
+
+class ResultsPanel(ViewPanel[ResultsView]):
+    """Tasks 11-15: the step log plotted, zoom to a step, K, T (63 % and least squares with
+    its interval), J, the model, omega at 5 V, and the group's readings beside them."""
+
+    def __init__(self, step: Step) -> None:
+        super().__init__("results")
+        self.step = step
+        self.zoom: int | None = 0 if step.id in ("task11", "task12") else None
+
+    def compose(self) -> ComposeResult:
+        yield StepPlot("step log", "t [s]", "omega [rad/s]", id="plot-log")
+        yield Static("", id="zoom-note", classes="hint")
+        yield Static("computing…", id="results-lines")
+        yield Static("", id="compare")
+
+    def build(self, session: Session) -> ResultsView:
+        return views.results(session, self.step.id)
+
+    def show_view(self) -> None:
+        view = self.view
+        if view is None:
+            return
+        if self.zoom is not None and self.zoom >= len(view.steps):
+            self.zoom = 0 if view.steps else None
+        self._plot()
+        lines = list(view.lines) or ["no step result yet"]
+        lines += [f"! {p}" for p in view.problems]
+        self.query_one("#results-lines", Static).update("\n".join(lines))
+        self.query_one("#compare", Static).update(
+            "\n".join(
+                f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare
+            )
+        )
+
+    def _plot(self) -> None:
+        v = self.view
+        if v is None:
+            return
+        plot = self.query_one(StepPlot)
+        note = self.query_one("#zoom-note", Static)
+        if v.t.size == 0:
+            plot.show([])
+            note.update("no step run yet (Task 10)")
+            return
+        keep = np.ones(v.t.size, dtype=bool)
+        if self.zoom is not None and v.steps:
+            w = v.steps[self.zoom]
+            keep = (v.t >= w.t0 - ZOOM_BEFORE) & (v.t <= w.t1)
+            note.update(
+                f"run {v.run}: step {self.zoom + 1} of {len(v.steps)}, 63 % at {_s(w.T_63)}"
+                " · alt+←/→ step · F9 next"
+            )
+        else:
+            note.update(f"run {v.run}: whole log, {len(v.steps)} rising steps · F9 zooms")
+        plot.show(
+            [Trace(v.t[keep], v.omega[keep], "omega"), Trace(v.t[keep], v.u[keep], "u_A", "dot")]
+        )
+
+    def pick(self, delta: int) -> None:
+        """Zoom to the previous/next rising step."""
+        if self.view is None or not self.view.steps:
+            return
+        n = len(self.view.steps)
+        self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
+        self._plot()
+
+    def pick_prev(self) -> None:
+        """alt+left: the previous rising step."""
+        self.pick(-1)
+
+    def pick_next(self) -> None:
+        """alt+right: the next rising step."""
+        self.pick(1)
+
+    def toggle_zoom(self) -> None:
+        """One step, or the whole log."""
+        self.zoom = None if self.zoom is not None else 0
+        self._plot()
+
+    def zoom_next(self) -> None:
+        """F9: the next step, then the whole log, then the first step again."""
+        if self.view is None or not self.view.steps:
+            return
+        if self.zoom is None:
+            self.zoom = 0
+        elif self.zoom + 1 >= len(self.view.steps):
+            self.zoom = None
+        else:
+            self.zoom += 1
+        self._plot()

@@ -1,0 +1,59 @@
+"""Tasks 6-9: the table filling itself, the formula behind every cell."""
+
+from __future__ import annotations
+
+from textual.app import ComposeResult
+from textual.widgets import DataTable, Static
+
+from minseg_tui.lab import views
+from minseg_tui.lab.session import Session
+from minseg_tui.lab.views import TableView
+from minseg_tui.ui.panels.view_panel import ViewPanel
+
+
+class TablePanel(ViewPanel[TableView]):
+    """The table of Tasks 6-9 with the final values and warnings; F7 (or Enter on a cell)
+    shows the formula behind the cell."""
+
+    def compose(self) -> ComposeResult:
+        yield DataTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
+        yield Static("F7 on a cell: the formula behind it.", id="formula", classes="hint")
+        yield Static("", id="results")
+        yield Static("", id="warnings")
+
+    def build(self, session: Session) -> TableView:
+        return views.table(session)
+
+    def show_view(self) -> None:
+        view = self.view
+        if view is None:
+            return
+        table = self.query_one(DataTable)
+        cursor = table.cursor_coordinate
+        table.clear(columns=True)
+        table.add_columns(*view.columns)
+        for row in view.rows:
+            table.add_row(*[c.text for c in row])
+        table.move_cursor(row=cursor.row, column=cursor.column, animate=False)
+        lines = ["  ".join(f"{name} = {cell.text}" for name, cell in view.results)]
+        lines += [
+            f"{label}: yours {own} · computed {comp}"
+            for label, own, comp in view.compare
+            if own != "—"
+        ]
+        self.query_one("#results", Static).update("\n".join(lines))
+        self.query_one("#warnings", Static).update("\n".join(f"! {w}" for w in view.warnings))
+
+    def formula(self) -> None:
+        """Show the formula of the cell under the cursor."""
+        if self.view is None or not self.view.rows:
+            return
+        table = self.query_one(DataTable)
+        r, c = table.cursor_coordinate
+        cell = self.view.rows[r][c]
+        self.query_one("#formula", Static).update(
+            cell.formula or f"{cell.text}: measured, no formula"
+        )
+
+    def on_data_table_cell_selected(self, _event: DataTable.CellSelected) -> None:
+        self.formula()

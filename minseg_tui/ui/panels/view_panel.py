@@ -1,0 +1,36 @@
+"""The base of the panels that show a view built from the session (the table, the runs, the
+results, the model check)."""
+
+from __future__ import annotations
+
+from typing import Generic, TypeVar
+
+from textual.containers import Vertical
+
+from minseg_tui.lab.session import Session
+
+V = TypeVar("V")
+
+
+class ViewPanel(Vertical, Generic[V]):
+    """A panel showing a view of type ``V``. The lab screen builds it with :meth:`build` in a
+    worker (when the panel is shown and whenever the lab changes) and hands it over with
+    :meth:`receive`; the panel draws it in :meth:`show_view`."""
+
+    def __init__(self, classes: str = "") -> None:
+        super().__init__(classes=f"panel {classes}".rstrip())
+        self.view: V | None = None
+
+    def build(self, session: Session) -> V:
+        """The view from ``session`` (worker thread: a pure builder of
+        :mod:`minseg_tui.lab.views`, no widget)."""
+        raise NotImplementedError
+
+    def receive(self, view: V) -> None:
+        """Keep ``view`` and draw it once the panel is composed."""
+        self.view = view
+        self.call_later(self.show_view)
+
+    def show_view(self) -> None:
+        """Draw :attr:`view`."""
+        raise NotImplementedError

@@ -1,0 +1,25 @@
+"""One object for the event loop and the worker threads, used by one of them at a time."""
+
+from __future__ import annotations
+
+import threading
+from typing import Generic, TypeVar
+
+T = TypeVar("T")
+
+
+class Shared(Generic[T]):
+    """Holds ``value`` behind a lock: ``with shared as value: ...``. The lab's Session is
+    meant for one thread; the UI reads it from the event loop and from workers (results,
+    the model check, the report), so every use goes through here. Re-entrant."""
+
+    def __init__(self, value: T) -> None:
+        self._value = value
+        self._lock = threading.RLock()
+
+    def __enter__(self) -> T:
+        self._lock.acquire()
+        return self._value
+
+    def __exit__(self, *exc: object) -> None:
+        self._lock.release()
