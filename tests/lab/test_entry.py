@@ -127,10 +127,11 @@ def test_zero_and_negative_policies():
 
 
 def test_format_quantity():
-    assert format_quantity(0.0372, "mA") == "37.2 mA"
-    assert format_quantity(5.2, "Ω") == "5.2 Ω"
-    assert format_quantity(210.0, "min") == "3.5 min"
-    assert format_quantity(0.63, "%") == "63 %"
+    # significant digits with their trailing zeros (issue 9: "K = 2" hid K = 1.996)
+    assert format_quantity(0.0372, "mA") == "37.20 mA"
+    assert format_quantity(5.26, "Ω", 3) == "5.26 Ω"
+    assert format_quantity(210.0, "min") == "3.500 min"
+    assert format_quantity(0.63, "%", 2) == "63 %"
 
 
 def test_plausible_warnings():

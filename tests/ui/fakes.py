@@ -25,9 +25,16 @@ class QuietDevice:
         self.plant = Plant(PlantParams(), seed=seed)
         self.board: object = self.plant  # not None: the virtual board, with its multimeter
         self.commands: list[str] = []
+        self.u_req: float | None = 0.0
+        self._fed: list[SampleBatch] = []
+
+    def feed(self, batch: SampleBatch) -> None:
+        """Hand the app ``batch`` at its next read (the double sends nothing of its own)."""
+        self._fed.append(batch)
 
     def samples(self) -> SampleBatch:
-        return SampleBatch.concat([])
+        fed, self._fed = self._fed, []
+        return SampleBatch.concat(fed)
 
     def events(self) -> list[LinkEvent]:
         return []
@@ -35,10 +42,12 @@ class QuietDevice:
     def set_voltage(self, u: float) -> float:
         self.commands.append(f"V {u:g}")
         self.plant.set_command(u)
+        self.u_req = u
         return u
 
     def stop(self) -> None:
         self.commands.append("STOP")
+        self.u_req = 0.0
 
     def set_period(self, ts: float) -> float:
         self.commands.append(f"P {ts:g}")
@@ -46,6 +55,7 @@ class QuietDevice:
 
     def step(self, low: float, high: float, half_period: float, periods: int) -> None:
         self.commands.append(f"STEP {low:g} {high:g} {half_period:g} {periods}")
+        self.u_req = None
 
     def meter(self) -> MeterReading | None:
         return METER

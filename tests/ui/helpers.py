@@ -17,12 +17,14 @@ from textual.message import Message
 from textual.pilot import Pilot
 from textual.worker import WorkerCancelled
 
+from minseg_tui.device.samples import SampleBatch
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from tests.ui.fakes import QuietDevice
 
 TABLE = {
     "R": "5.3",
@@ -134,17 +136,19 @@ async def resume(pilot: Pilot[None]) -> None:
 
 async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") -> None:
     """Jump to ``step_id`` as the palette does and wait until it is shown, its view drawn and
-    the focus where ``focus`` says."""
+    the focus where ``focus`` says (``entry``: the step's first empty entry)."""
     app = pilot.app
     lab_screen(app).go_to(step_id, focus)
 
     def there() -> bool:
         if not shown(app, step_id):
             return False
-        rows = app.screen.query(StepPane).last().query(FieldRow)
-        if focus != "entry" or not rows:
+        pane = app.screen.query(StepPane).last()
+        if focus != "entry":
             return True
-        return app.focused is not None and rows.first() in app.focused.ancestors_with_self
+        row = pane.landing_row()  # the first empty entry (the pane itself without entries)
+        target = pane if row is None else row
+        return app.focused is not None and target in app.focused.ancestors_with_self
 
     await settle(pilot, there)
 
@@ -172,6 +176,32 @@ async def paste_in(pilot: Pilot[None], key: str, text: str) -> FieldRow:
     await pilot.press("enter")
     await settle(pilot)
     return row
+
+
+def standing(n: int, first_seq: int = 0, period_us: int = 25_000) -> SampleBatch:
+    """``n`` samples of a wheel standing still (count 0, motor off), as the link hands them
+    over, from sequence number ``first_seq`` on."""
+    return SampleBatch.from_rows(
+        [(k, (k + 1) * period_us, 0, 0, 0, 0.0) for k in range(first_seq, first_seq + n)]
+    )
+
+
+async def start_run_on(pilot: Pilot[None], device: QuietDevice, key: str = "f5") -> None:
+    """Press ``key`` on Task 10 and let the double's wheel stand (samples fed to the app, as
+    the board would send them) until the run is recorded and the board asked for its
+    sequence: the app stops the motor, waits for the wheel to stand, records a few samples
+    of it, then sends STEP."""
+    app = pilot.app
+    await pilot.press(key)
+    await settle(pilot)
+    seq = 0
+    for _ in range(ROUNDS):
+        if device.commands and device.commands[-1].startswith("STEP"):
+            return
+        device.feed(standing(4, seq))
+        seq += 4
+        await settle(pilot, lambda s=seq: app.live.total >= s)
+    raise AssertionError("the run never started")
 
 
 def record_step_run(session: Session, seed: int = 5) -> str:

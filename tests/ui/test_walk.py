@@ -154,7 +154,8 @@ async def test_unplug_during_a_run_keeps_the_samples(tmp_path):
         await goto(pilot, "task10")
         await pilot.press("f5")
         await settle(pilot)
-        await heard.until(pilot, lambda: app.recording is None or app.recording.samples >= 80)
+        # the run starts once the wheel stands; 80 samples of it recorded
+        await heard.until(pilot, lambda: app.recording is not None and app.recording.samples >= 80)
         named_board(name).unplug()
         await heard.until(pilot, lambda: app.recording is None)
         assert "board disconnected — everything recorded is kept" in _status(app)
@@ -189,7 +190,7 @@ async def main():
         await pilot.press("f5")
         await settle(pilot)
         # 80 samples (2 s) in memory: all but the last half second of them are on disk
-        await heard.until(pilot, lambda: app.recording.samples >= 80)
+        await heard.until(pilot, lambda: app.recording is not None and app.recording.samples >= 80)
         print("READY", flush=True)
         await asyncio.sleep(600)
 

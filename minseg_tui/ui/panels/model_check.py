@@ -5,7 +5,7 @@ from __future__ import annotations
 from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal
-from textual.widgets import Input, Static
+from textual.widgets import Input
 
 from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
@@ -13,6 +13,7 @@ from minseg_tui.lab.views import CheckView
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
+from minseg_tui.ui.widgets.prose import Prose
 
 
 class ModelCheckPanel(ViewPanel[CheckView]):
@@ -24,9 +25,9 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         with Horizontal(classes="plots"):
             yield TracePlot("measured vs models", "t [s]", "omega [rad/s]", id="plot-check")
             yield TracePlot("residual (baseline)", "t [s]", "rad/s", id="plot-residual")
-        yield Static("computing…", id="check-lines")
+        yield Prose("computing…", id="check-lines")
         yield Input(placeholder="load a step log (CSV path), Enter", id="import-path")
-        yield Static("", id="import-msg", classes="hint")
+        yield Prose("", id="import-msg", classes="hint")
 
     def build(self, session: Session) -> CheckView:
         return views.check(session)
@@ -35,7 +36,7 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         v = self.view
         if v is None:
             return
-        lines = self.query_one("#check-lines", Static)
+        lines = self.query_one("#check-lines", Prose)
         if v.problem:
             lines.update(f"run {v.run or '—'}: {v.problem}")
             return
@@ -71,4 +72,4 @@ class ModelCheckPanel(ViewPanel[CheckView]):
 
     def imported(self, text: str) -> None:
         """Say what became of the log asked for (one line)."""
-        self.query_one("#import-msg", Static).update(text)
+        self.query_one("#import-msg", Prose).update(text)
