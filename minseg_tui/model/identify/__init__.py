@@ -1,0 +1,55 @@
+"""The lab's computations, Tasks 6-15, and what the numbers show.
+
+Units: R ohm, u V, omega rad/s, i_ss mA as entered (A inside the formulas), k_v V s/rad,
+k_a N m/A, f N m s/rad, J kg m^2, T s, K rad/s per V.
+
+The package, one module per room:
+
+- :mod:`.steady`: Tasks 6-9 from the table (k_v, k_a, f per row and their medians) and the
+  table's u_ss and omega_ss at a requested voltage;
+- :mod:`.stepfit`: Tasks 11-12 from a step log: the rising steps, the manual's 63 % reading
+  and the least-squares time constant T;
+- :mod:`.findings`: what the numbers show, in sentences a student understands;
+- :mod:`.identification`: Tasks 6-15 put together (K, T, J, the model of Task 14, omega at
+  5 V) and the ``--json`` object.
+
+Other layers import from here (``from minseg_tui.model.identify import identify``).
+"""
+
+from minseg_tui.model.identify.findings import Finding, step_findings, table_findings
+from minseg_tui.model.identify.identification import (
+    U_TASK15,
+    Identification,
+    StepResult,
+    identify,
+)
+from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at, steady_state, u_ss_at
+from minseg_tui.model.identify.stepfit import (
+    E63,
+    RisingStep,
+    TimeConstantFit,
+    fit_time_constant,
+    rising_steps,
+    step_windows,
+)
+
+__all__ = [
+    "E63",
+    "U_TASK15",
+    "Finding",
+    "Identification",
+    "Reading",
+    "RisingStep",
+    "Row",
+    "StepResult",
+    "TimeConstantFit",
+    "fit_time_constant",
+    "identify",
+    "omega_ss_at",
+    "rising_steps",
+    "steady_state",
+    "step_findings",
+    "step_windows",
+    "table_findings",
+    "u_ss_at",
+]

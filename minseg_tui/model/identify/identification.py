@@ -1,0 +1,178 @@
+"""Tasks 6-15 put together: the table, the step log, the model of Task 14 and what they show."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from minseg_tui.errors import InputError
+from minseg_tui.model.identify.findings import Finding, step_findings, table_findings
+from minseg_tui.model.identify.steady import Reading, Row, steady_state, u_ss_at
+from minseg_tui.model.identify.stepfit import (
+    RisingStep,
+    TimeConstantFit,
+    fit_time_constant,
+    rising_steps,
+    step_windows,
+)
+from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
+from minseg_tui.model.steplog import StepLog, command, find_edges, problem
+
+U_TASK15: float = 5.0
+"""The applied voltage of Task 15, V."""
+
+
+@dataclass(frozen=True)
+class StepResult:
+    """Tasks 11-13 from a step log.
+
+    K: static gain (rad/s per V, median over rising steps of omega_ss / u_ss); T: the
+    least-squares time constant (s), the one the model uses; T_63: the median 63 % reading
+    (s, None if no step crossed); T_ci: 95 % interval of T (s); J: inertia (kg m^2);
+    omega_ss: median steady speed of the steps (rad/s); u_ss: the applied voltage K divides by
+    (V); u_ss_how: 'row', 'interpolated', 'extrapolated' or 'log'; steps: each rising step;
+    fit: details of the least-squares fit.
+    """
+
+    K: float
+    T: float
+    T_63: float | None
+    T_ci: tuple[float, float]
+    J: float
+    omega_ss: float
+    u_ss: float
+    u_ss_how: str
+    steps: tuple[RisingStep, ...]
+    fit: TimeConstantFit
+    model_uses: str = "least_squares"
+
+
+@dataclass(frozen=True)
+class Identification:
+    """Everything of Tasks 6-15. ``step`` is None without a step log."""
+
+    R: float
+    rows: tuple[Row, ...]
+    k_v: float
+    k_a: float
+    f: float
+    step: StepResult | None
+    findings: tuple[Finding, ...]
+
+    @property
+    def model(self) -> FirstOrder | None:
+        """Task 14: T omega' = -omega + K u_A with the least-squares T and the step's K."""
+        return FirstOrder(T=self.step.T, K=self.step.K) if self.step else None
+
+    @property
+    def omega_at_5V(self) -> float | None:
+        """Task 15: the final speed for u_A = 5 V, rad/s."""
+        return self.step.K * U_TASK15 if self.step else None
+
+    def to_json(self) -> dict[str, object]:
+        """The --json object of the issue (SI units, i_ss in mA as entered)."""
+        out: dict[str, object] = {
+            "R": self.R,
+            "rows": [
+                {
+                    "u_req": r.reading.u_req,
+                    "u_ss": r.reading.u_ss,
+                    "omega_ss": r.reading.omega_ss,
+                    "i_ss": r.reading.i_ss,
+                    "k_v": r.k_v,
+                    "f": r.f,
+                }
+                for r in self.rows
+            ],
+            "k_v": self.k_v,
+            "k_a": self.k_a,
+            "f": self.f,
+        }
+        if self.step is not None:
+            s = self.step
+            out["step"] = {
+                "K": s.K,
+                "T": s.T,
+                "T_63": s.T_63,
+                "T_ci": [s.T_ci[0], s.T_ci[1]],
+                "J": s.J,
+                "omega_ss": s.omega_ss,
+            }
+            out["model"] = {"T": s.T, "K": s.K}
+            out["omega_at_5V"] = self.omega_at_5V
+        return out
+
+
+def _step_result(
+    log: StepLog, rows: tuple[Row, ...], R: float, k_v: float, k_a: float, f: float
+) -> tuple[StepResult, list[Finding]]:
+    windows, skipped = step_windows(log)
+    if not windows:
+        cmd, name = command(log)
+        raise InputError(
+            log.source,
+            log.line_of(0),
+            (
+                f"expected a rising step in {name} (V) with at least one sample before it and 5 after it; "
+                f"found {sum(e.rising for e in find_edges(cmd))} rising edge(s), none usable"
+            ),
+        )
+    refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
+    if refused:
+        raise InputError(log.source, None, refused)
+    fit = fit_time_constant(log)
+    steps = rising_steps(log)
+    if fit is None or not steps:  # cannot happen with usable windows; keeps the types honest
+        raise InputError(log.source, None, "expected a usable rising step")
+    u_used, hows = [], []
+    for s in steps:
+        if s.u_req is None:
+            u_used.append(s.u_high)
+            hows.append("log")
+        else:
+            u, how = u_ss_at(rows, s.u_req)
+            u_used.append(u)
+            hows.append(how)
+    K_each = [s.omega_ss / u for s, u in zip(steps, u_used, strict=True)]
+    K = float(np.median(K_each))
+    omega_ss = float(np.median([s.omega_ss for s in steps]))
+    u_ss = float(np.median(u_used))
+    how = hows[len(hows) // 2] if len(set(hows)) > 1 else hows[0]
+    T = fit.T
+    reads = [s.T_63 for s in steps if s.T_63 is not None]
+    T_63 = float(np.median(reads)) if reads else None
+    J = inertia_from_time_constant(T, R, f, k_v, k_a)
+    result = StepResult(
+        K=K,
+        T=T,
+        T_63=T_63,
+        T_ci=fit.ci,
+        J=J,
+        omega_ss=omega_ss,
+        u_ss=u_ss,
+        u_ss_how=how,
+        steps=tuple(steps),
+        fit=fit,
+    )
+    findings = step_findings(rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped))
+    return result, findings
+
+
+def identify(
+    readings: Sequence[Reading], R: float, log: StepLog | None = None, source: str = "table"
+) -> Identification:
+    """Tasks 6-15 from the table's readings, the resistance R (ohm) and optionally a step log.
+
+    Raises InputError for a bad R, a bad row, or a log without a usable rising step.
+    """
+    rows, k_v, k_a, f = steady_state(readings, R, source)
+    findings = table_findings(rows, R, k_v, k_a)
+    step = None
+    if log is not None:
+        step, more = _step_result(log, rows, R, k_v, k_a, f)
+        findings += more
+    return Identification(
+        R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, findings=tuple(findings)
+    )
