@@ -115,8 +115,8 @@ def render(result: Identification) -> str:
             f"At u_A = 5 V (Task 15): omega = {_g(s.K * 5.0)} rad/s",
         ]
     out += ["", "What the numbers show:"]
-    if result.findings:
-        out += [f"- {f.message}" for f in result.findings]
+    if result.observations:
+        out += [f"- {f.message}" for f in result.observations]
     else:
         out.append("- nothing unusual: the rows agree and the step fits the model.")
     return "\n".join(out) + "\n"

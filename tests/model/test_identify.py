@@ -21,7 +21,7 @@ TABLE = [
 
 
 def codes(result):
-    return [f.code for f in result.findings]
+    return [f.code for f in result.observations]
 
 
 def test_table_by_hand():
@@ -38,7 +38,7 @@ def test_table_by_hand():
 def test_falling_f_is_called_dry_friction_with_the_line_through_the_rows():
     result = identify(TABLE, R)
     assert "dry_friction" in codes(result)
-    msg = next(f.message for f in result.findings if f.code == "dry_friction")
+    msg = next(f.message for f in result.observations if f.code == "dry_friction")
     # k_a i = f w + tau_c through (3.6, k_a 0.030), (5.5, k_a 0.035), (7.2, k_a 0.040)
     w = np.array([3.6, 5.5, 7.2])
     torque = result.k_a * np.array([0.030, 0.035, 0.040])
@@ -60,7 +60,7 @@ def test_constant_f_is_not_dry_friction():
 def test_a_bad_row_is_named():
     rows = [*TABLE[:2], Reading(4.5, 4.0, 5.0, 40.0, line=4)]  # omega misread
     result = identify(rows, R)
-    msgs = [f.message for f in result.findings if f.code == "k_v_outlier"]
+    msgs = [f.message for f in result.observations if f.code == "k_v_outlier"]
     assert len(msgs) == 1 and "row 3" in msgs[0] and "line 4" in msgs[0]
 
 

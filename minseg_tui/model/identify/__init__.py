@@ -9,19 +9,23 @@ The package, one module per room:
   table's u_ss and omega_ss at a requested voltage;
 - :mod:`.stepfit`: Tasks 11-12 from a step log: the rising steps, the manual's 63 % reading
   and the least-squares time constant T;
-- :mod:`.findings`: what the numbers show, in sentences a student understands;
+- :mod:`.observations`: what the numbers show, in sentences a student understands;
 - :mod:`.identification`: Tasks 6-15 put together (K, T, J, the model of Task 14, omega at
   5 V) and the ``--json`` object.
 
 Other layers import from here (``from minseg_tui.model.identify import identify``).
 """
 
-from minseg_tui.model.identify.findings import Finding, step_findings, table_findings
 from minseg_tui.model.identify.identification import (
     U_TASK15,
     Identification,
     StepResult,
     identify,
+)
+from minseg_tui.model.identify.observations import (
+    Observation,
+    step_observations,
+    table_observations,
 )
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at, steady_state, u_ss_at
 from minseg_tui.model.identify.stepfit import (
@@ -36,7 +40,7 @@ from minseg_tui.model.identify.stepfit import (
 __all__ = [
     "E63",
     "U_TASK15",
-    "Finding",
+    "Observation",
     "Identification",
     "Reading",
     "RisingStep",
@@ -48,8 +52,8 @@ __all__ = [
     "omega_ss_at",
     "rising_steps",
     "steady_state",
-    "step_findings",
+    "step_observations",
     "step_windows",
-    "table_findings",
+    "table_observations",
     "u_ss_at",
 ]

@@ -8,7 +8,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from minseg_tui.errors import InputError
-from minseg_tui.model.identify.findings import Finding, step_findings, table_findings
+from minseg_tui.model.identify.observations import (
+    Observation,
+    step_observations,
+    table_observations,
+)
 from minseg_tui.model.identify.steady import Reading, Row, steady_state, u_ss_at
 from minseg_tui.model.identify.stepfit import (
     RisingStep,
@@ -59,7 +63,7 @@ class Identification:
     k_a: float
     f: float
     step: StepResult | None
-    findings: tuple[Finding, ...]
+    observations: tuple[Observation, ...]
 
     @property
     def model(self) -> FirstOrder | None:
@@ -107,7 +111,7 @@ class Identification:
 
 def _step_result(
     log: StepLog, rows: tuple[Row, ...], R: float, k_v: float, k_a: float, f: float
-) -> tuple[StepResult, list[Finding]]:
+) -> tuple[StepResult, list[Observation]]:
     windows, skipped = step_windows(log)
     if not windows:
         cmd, name = command(log)
@@ -156,8 +160,8 @@ def _step_result(
         steps=tuple(steps),
         fit=fit,
     )
-    findings = step_findings(rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped))
-    return result, findings
+    observations = step_observations(rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped))
+    return result, observations
 
 
 def identify(
@@ -168,11 +172,11 @@ def identify(
     Raises InputError for a bad R, a bad row, or a log without a usable rising step.
     """
     rows, k_v, k_a, f = steady_state(readings, R, source)
-    findings = table_findings(rows, R, k_v, k_a)
+    observations = table_observations(rows, R, k_v, k_a)
     step = None
     if log is not None:
         step, more = _step_result(log, rows, R, k_v, k_a, f)
-        findings += more
+        observations += more
     return Identification(
-        R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, findings=tuple(findings)
+        R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, observations=tuple(observations)
     )

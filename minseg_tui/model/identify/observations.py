@@ -1,4 +1,4 @@
-"""What the numbers of Tasks 6-15 show: findings a student understands, with their codes."""
+"""What the numbers of Tasks 6-15 show: observations a student understands, each with a code."""
 
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ SHORT_T_SAMPLES: float = 3.0
 
 
 @dataclass(frozen=True)
-class Finding:
+class Observation:
     """Something the numbers show: a short code and a sentence a student understands."""
 
     code: str
@@ -34,28 +34,28 @@ def _row_name(index: int, r: Reading) -> str:
     return f"row {index + 1} (u_req {r.u_req:g} V{where})"
 
 
-def table_findings(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> list[Finding]:
+def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> list[Observation]:
     """What the table shows: dry friction, a bad reading, currents in the wrong unit."""
-    out: list[Finding] = []
+    out: list[Observation] = []
     for i, row in enumerate(rows):
         r = row.reading
         if r.i_ss < 1.0:
             out.append(
-                Finding(
+                Observation(
                     "i_ss_units",
                     f"{_row_name(i, r)}: i_ss = {r.i_ss:g} looks like amperes; the table wants mA ({r.i_ss * 1e3:g} mA?).",
                 )
             )
         elif r.i_ss > 100.0:
             out.append(
-                Finding(
+                Observation(
                     "i_ss_high",
                     f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says you are probably measuring the wrong thing or the meter is in the wrong mode.",
                 )
             )
         if row.k_v <= 0:
             out.append(
-                Finding(
+                Observation(
                     "k_v_nonpositive",
                     f"{_row_name(i, r)}: R i_ss = {R * r.i_ss * 1e-3:.3g} V is not below u_ss = {r.u_ss:g} V, so k_v comes out {row.k_v:.3g}; check R and i_ss.",
                 )
@@ -65,7 +65,7 @@ def table_findings(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> lis
             dev = (row.k_v - k_v) / k_v if k_v else math.inf
             if abs(dev) > KV_OUTLIER:
                 out.append(
-                    Finding(
+                    Observation(
                         "k_v_outlier",
                         (
                             f"{_row_name(i, row.reading)}: k_v = {row.k_v:.4g} V s/rad is {abs(dev) * 100:.0f} % "
@@ -78,7 +78,7 @@ def table_findings(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> lis
         a, b = rows[0].k_v, rows[1].k_v
         if abs(a - b) / abs(k_v) > 2 * KV_OUTLIER:
             out.append(
-                Finding(
+                Observation(
                     "k_v_disagree",
                     (
                         f"The two rows give k_v = {a:.4g} and {b:.4g} V s/rad, {abs(a - b) / abs(k_v) * 100:.0f} % apart: "
@@ -90,7 +90,7 @@ def table_findings(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> lis
     return out
 
 
-def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Finding]:
+def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
     by_speed = sorted(rows, key=lambda row: row.reading.omega_ss)
     w = np.array([row.reading.omega_ss for row in by_speed])
     f = np.array([row.f for row in by_speed])
@@ -108,7 +108,7 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Finding]:
             f"and a dry friction torque tau_c = {intercept:.3g} N m."
         )
     return [
-        Finding(
+        Observation(
             "dry_friction",
             (
                 f"f falls with speed, from {f[0]:.3g} at {w[0]:.3g} rad/s to {f[-1]:.3g} N m s/rad at {w[-1]:.3g} rad/s: "
@@ -120,7 +120,7 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Finding]:
     ]
 
 
-def step_findings(
+def step_observations(
     rows: Sequence[Row],
     steps: Sequence[RisingStep],
     hows: Sequence[str],
@@ -129,7 +129,7 @@ def step_findings(
     T_63: float | None,
     ts: float,
     skipped: int,
-) -> list[Finding]:
+) -> list[Observation]:
     """What the step log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
 
@@ -137,11 +137,11 @@ def step_findings(
     u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
     period (s); skipped: rising steps not usable.
     """
-    findings: list[Finding] = []
+    observations: list[Observation] = []
     levels = sorted({s.u_req for s in steps if s.u_req is not None})
     if "log" in hows:
-        findings.append(
-            Finding(
+        observations.append(
+            Observation(
                 "u_ss_from_log",
                 (
                     f"The log has no u_req column, so K divides by the applied voltage the log recorded "
@@ -151,8 +151,8 @@ def step_findings(
         )
     if "interpolated" in hows or "extrapolated" in hows:
         which = "extrapolated beyond" if "extrapolated" in hows else "interpolated between"
-        findings.append(
-            Finding(
+        observations.append(
+            Observation(
                 f"u_ss_{'extrapolated' if 'extrapolated' in hows else 'interpolated'}",
                 (
                     f"No table row has u_req = {', '.join(f'{v:g}' for v in levels)} V, the step's requested level; "
@@ -161,8 +161,8 @@ def step_findings(
             )
         )
     if len(levels) > 1:
-        findings.append(
-            Finding(
+        observations.append(
+            Observation(
                 "several_levels",
                 (
                     f"The rising steps go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
@@ -175,8 +175,8 @@ def step_findings(
             continue
         w_table = omega_ss_at(rows, s.u_req)
         if w_table is not None and abs(s.omega_ss - w_table) > STEP_VS_TABLE * w_table:
-            findings.append(
-                Finding(
+            observations.append(
+                Observation(
                     "step_vs_table",
                     (
                         f"The step at t = {s.t:.3g} s settles at {s.omega_ss:.3g} rad/s, but the table gives "
@@ -187,8 +187,8 @@ def step_findings(
             )
             break
     if T < SHORT_T_SAMPLES * ts:
-        findings.append(
-            Finding(
+        observations.append(
+            Observation(
                 "T_short",
                 (
                     f"T = {T * 1e3:.3g} ms is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {ts * 1e3:.3g} ms): "
@@ -198,8 +198,8 @@ def step_findings(
             )
         )
     if T_63 is not None and abs(T_63 - T) > 0.25 * T:
-        findings.append(
-            Finding(
+        observations.append(
+            Observation(
                 "T_63_differs",
                 (
                     f"The 63 % reading ({T_63 * 1e3:.3g} ms) and the least-squares T ({T * 1e3:.3g} ms) differ by "
@@ -210,8 +210,8 @@ def step_findings(
         )
     short = [s for s in steps if s.duration < 5 * T]
     if short:
-        findings.append(
-            Finding(
+        observations.append(
+            Observation(
                 "not_settled",
                 (
                     f"{len(short)} step(s) last less than 5 T ({5 * T:.3g} s): the speed may not have settled, "
@@ -220,12 +220,12 @@ def step_findings(
             )
         )
     if skipped:
-        findings.append(
-            Finding(
+        observations.append(
+            Observation(
                 "steps_skipped",
                 (
                     f"{skipped} rising step(s) were too short or too close to the start of the log to use."
                 ),
             )
         )
-    return findings
+    return observations
