@@ -77,7 +77,8 @@ def test_json_is_one_object_with_the_contract(files, capsys):
     assert code == 0 and out.count("\n") == 1
     j = json.loads(out)
     assert set(j) == {"R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"}
-    assert set(j["step"]) == {"K", "T", "T_63", "T_ci", "J", "omega_ss"}
+    added = {"K_ci", "T_63_model", "T_63_note", "method", "shift", "u_c"}
+    assert set(j["step"]) == {"K", "T", "T_63", "T_ci", "J", "omega_ss"} | added
     assert set(j["model"]) == {"T", "K"}
     assert [set(r) for r in j["rows"]] == [{"u_req", "u_ss", "omega_ss", "i_ss", "k_v", "f"}] * 3
     assert j["rows"][2]["i_ss"] == 40.0

@@ -211,7 +211,21 @@ def test_json_shape(linear_result):
     j = linear_result.to_json()
     assert list(j) == ["R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"]
     assert list(j["rows"][0]) == ["u_req", "u_ss", "omega_ss", "i_ss", "k_v", "f"]
-    assert list(j["step"]) == ["K", "T", "T_63", "T_ci", "J", "omega_ss"]
+    # the contract's fields first and unchanged, then the added ones
+    assert list(j["step"]) == [
+        "K",
+        "T",
+        "T_63",
+        "T_ci",
+        "J",
+        "omega_ss",
+        "K_ci",
+        "T_63_model",
+        "T_63_note",
+        "method",
+        "shift",
+        "u_c",
+    ]
     assert list(j["model"]) == ["T", "K"]
     assert j["rows"][0]["i_ss"] == pytest.approx(linear_table(MOTOR)[0].i_ss)  # mA as entered
     assert len(j["step"]["T_ci"]) == 2

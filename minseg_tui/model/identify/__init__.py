@@ -7,8 +7,11 @@ The package, one module per room:
 
 - :mod:`.steady`: Tasks 6-9 from the table (k_v, k_a, f per row and their medians) and the
   table's u_ss and omega_ss at a requested voltage;
-- :mod:`.stepfit`: Tasks 11-12 from a step log: the rising steps, the manual's 63 % reading
-  and the least-squares time constant T;
+- :mod:`.steps`: the rising steps of a step log and the manual's 63 % reading;
+- :mod:`.stepfit`: T and the steady speeds by least squares (Tasks 11-12), from one of
+  :mod:`.wholelog` (the model of Task 14 over the whole log) and :mod:`.windowfit` (each
+  rising step on its own), with the machinery of :mod:`.lsq` (the search, intervals that
+  hold with correlated residuals, Student's t);
 - :mod:`.observations`: what the numbers show, in sentences a student understands;
 - :mod:`.identification`: Tasks 6-15 put together (K, T, J, the model of Task 14, omega at
   5 V) and the ``--json`` object.
@@ -29,16 +32,23 @@ from minseg_tui.model.identify.observations import (
 )
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at, steady_state, u_ss_at
 from minseg_tui.model.identify.stepfit import (
-    E63,
+    RISING_STEPS,
+    WHOLE_LOG,
     RisingStep,
     TimeConstantFit,
     fit_time_constant,
+    model_reading_63,
     rising_steps,
-    step_windows,
 )
+from minseg_tui.model.identify.steps import E63, StepWindow, reading_63, step_windows
 
 __all__ = [
     "E63",
+    "RISING_STEPS",
+    "WHOLE_LOG",
+    "StepWindow",
+    "model_reading_63",
+    "reading_63",
     "U_TASK15",
     "Observation",
     "Identification",

@@ -214,8 +214,9 @@ def step_observations(
             Observation(
                 "not_settled",
                 (
-                    f"{len(short)} step(s) last less than 5 T ({5 * T:.3g} s): the speed may not have settled, "
-                    "so omega_ss and K from them are uncertain."
+                    f"{len(short)} step(s) last less than 5 T ({5 * T:.3g} s): the speed has not quite settled "
+                    "by their end, so omega_ss is the final speed of the fitted response rather than a reading "
+                    "of it (a mean over the end of a step would come out low); longer steps would check it."
                 ),
             )
         )
