@@ -78,6 +78,12 @@ def t975(dof: int) -> float:
     )
 
 
+def dot(a: FloatArray, b: FloatArray) -> float:
+    """The sum of a_i b_i of two long vectors. (Not ``a @ b``: a threaded BLAS dot of a long
+    vector can take a hundred times longer on a busy machine.)"""
+    return float(np.einsum("i,i->", a, b))
+
+
 Evaluate = Callable[[FloatArray], tuple[float, FloatArray, FloatArray]]
 """x -> (residual sum of squares, linear coefficients, residuals) for nonlinear parameters x."""
 
@@ -102,7 +108,7 @@ def levenberg_marquardt(
     jacobian: Jacobian,
     x0: FloatArray,
     max_iter: int = 60,
-    xtol: float = 1e-10,
+    xtol: float = 1e-9,
 ) -> Solution:
     """Minimise the residual sum of squares over the nonlinear parameters from ``x0``.
 
@@ -184,5 +190,5 @@ def cluster_covariance(J: FloatArray, r: FloatArray, starts: NDArray[np.int64]) 
         # many clusters: each holds little of the information, (B - B_c)^-1 ~ B^-1
         shifts = scores @ inv.T
     centred = shifts - shifts.mean(axis=0)
-    cov = (C - 1) / C * centred.T @ centred if C > 1 else inv * float(r @ r) / max(n - p, 1)
+    cov = (C - 1) / C * centred.T @ centred if C > 1 else inv * dot(r, r) / max(n - p, 1)
     return Covariance(cov=cov, dof=max(C - 1, 1), clusters=C)

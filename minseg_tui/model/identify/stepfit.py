@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from minseg_tui.model.identify.lsq import dot
 from minseg_tui.model.identify.steps import StepWindow, reading_63, step_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
 from minseg_tui.model.identify.windowfit import WindowsFit, fit_windows
@@ -112,14 +113,14 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
     # with the board's timestamps the steps act at the sample instants (this project's
     # firmware) or on the board's sample grid (firmware that sets the output on a timer);
     # without them, where a step falls between the logged instants is not known
-    timings = [t, _sample_grid(t)] if stamped else [t]
+    timings = [t, board_grid(t)] if stamped else [t]
     whole = fit_whole_log(t, u, theta, steps_fit.T, clusters, timings, offsets=not stamped)
     time_source = "the board's timestamps (t_us)" if stamped else "the t column"
     n_w = steps_fit.rows.size
     sigma_w = math.sqrt(steps_fit.rss / max(n_w - steps_fit.n_params, 1))
     if whole is not None:
         on_steps = whole.residuals[steps_fit.rows]
-        rms = math.sqrt(float(on_steps @ on_steps) / max(n_w, 1))
+        rms = math.sqrt(dot(on_steps, on_steps) / max(n_w, 1))
         if rms <= ADEQUATE * sigma_w:
             return _from_whole(log, whole, windows, theta, angle_source, time_source, rms, sigma_w)
         why = (
@@ -133,7 +134,7 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
     return _from_steps(log, steps_fit, windows, theta, angle_source, time_source, sigma_w, why)
 
 
-def _sample_grid(t: FloatArray) -> FloatArray:
+def board_grid(t: FloatArray) -> FloatArray:
     """The board's sample grid under timestamps ``t`` (s) read late by a busy loop: t0 + k P.
 
     k counts the grid periods sample by sample (each interval is a whole number of periods
@@ -307,6 +308,7 @@ def model_reading_63(log: StepLog, fit: TimeConstantFit, steps: list[RisingStep]
 
 __all__ = [
     "ADEQUATE",
+    "board_grid",
     "RISING_STEPS",
     "WHOLE_LOG",
     "RisingStep",

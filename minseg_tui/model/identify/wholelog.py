@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.identify.lsq import Covariance, Solution, cluster_covariance
+from minseg_tui.model.identify.lsq import Covariance, Solution, cluster_covariance, dot
 from minseg_tui.model.identify.lsq import levenberg_marquardt as _lm
 
 FloatArray = NDArray[np.float64]
@@ -179,10 +179,10 @@ class _Problem:
             return math.inf, np.zeros(1), np.full(self.theta.size, np.inf)
         cc = self.demean(col)
         yc = self.demean(self.theta)
-        denom = float(cc @ cc)
-        K = float(cc @ yc) / denom if denom > 0 else 0.0
+        denom = dot(cc, cc)
+        K = dot(cc, yc) / denom if denom > 0 else 0.0
         r = yc - K * cc
-        return float(r @ r), np.array([K]), r
+        return dot(r, r), np.array([K]), r
 
     def derivatives(self, x: FloatArray, coef: FloatArray, central: bool = True) -> FloatArray:
         """d(model angle)/d x at fixed K, by central (or forward) differences, the offsets
@@ -207,17 +207,17 @@ class _Problem:
         """d residual / d x with K and the offsets projected out (Kaufman's form)."""
         D = self.derivatives(x, coef, central=False)
         cc = self.demean(self.model.column(*self.unpack(x)))
-        return -(D - np.outer(cc, (cc @ D) / float(cc @ cc)))
+        return -(D - np.outer(cc, (cc @ D) / dot(cc, cc)))
 
 
-def _solve(problem: _Problem, start: FloatArray, spread: bool) -> Solution:
-    """Search from ``start``; with ``spread`` first try T from half to twice the start's."""
-    if spread:
-        tries = [start.copy() for _ in range(5)]
-        for x, f in zip(tries, (0.5, 0.7, 1.0, 1.4, 2.0), strict=True):
-            x[0] += math.log(f)
-        start = min(tries, key=lambda x: problem.evaluate(x)[0])
-    return _lm(problem.evaluate, problem.jacobian, start)
+def _starts(problem: _Problem, start: FloatArray) -> tuple[float, FloatArray]:
+    """The best of T from half to twice the start's: (residual sum of squares, x)."""
+    tries = []
+    for f in (0.5, 0.7, 1.0, 1.4, 2.0):
+        x = start.copy()
+        x[0] += math.log(f)
+        tries.append((problem.evaluate(x)[0], x))
+    return min(tries, key=lambda pair: pair[0])
 
 
 def _better(simple: Solution, rich: Solution, extra: int, n: int, p_rich: int, crit: float) -> bool:
@@ -250,20 +250,19 @@ def fit_whole_log(
     th = np.asarray(theta, dtype=float)
     n = th.size
     starts = clusters if offsets and clusters.size > 1 else np.zeros(1, dtype=np.int64)
-    model, chosen, best = None, None, None
+    start = np.array([math.log(T0), 0.0])
+    candidates = []
     for when in edge_times:
         m = _Model(np.asarray(t, float), np.asarray(u, float), when)
         if m.v.size < 2:
             return None
         p = _Problem(m, th, False, starts)
-        sol = _solve(p, np.array([math.log(T0), 0.0]), spread=True)
-        if best is None or sol.rss < best.rss:
-            model, chosen, best = m, p, sol
-    if model is None or chosen is None or best is None:
-        return None
+        sol = _lm(p.evaluate, p.jacobian, _starts(p, start)[1])
+        candidates.append((sol.rss, sol, m, p))
+    _, best, model, chosen = min(candidates, key=lambda c: c[0])
     if model.can_stick:
         stick = _Problem(model, th, True, starts)
-        with_c = _solve(stick, np.array([best.x[0], best.x[1], 0.0]), spread=False)
+        with_c = _lm(stick.evaluate, stick.jacobian, np.array([best.x[0], best.x[1], 0.0]))
         if _better(best, with_c, 1, n, chosen.n_linear + 3, FRICTION_F):
             best, chosen = with_c, stick
     T, d, u_c = chosen.unpack(best.x)

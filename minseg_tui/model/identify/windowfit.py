@@ -23,7 +23,12 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, levenberg_marquardt
+from minseg_tui.model.identify.lsq import (
+    Covariance,
+    cluster_covariance,
+    dot,
+    levenberg_marquardt,
+)
 from minseg_tui.model.identify.steps import StepWindow
 
 FloatArray = NDArray[np.float64]
@@ -111,7 +116,7 @@ class _Problem:
     def evaluate(self, x: FloatArray) -> tuple[float, FloatArray, FloatArray]:
         T, d = math.exp(float(x[0])), float(x[1])
         c, r = self.project(self.basis(T, d), self.theta)
-        return float(r @ r), c.ravel(), r
+        return dot(r, r), c.ravel(), r
 
     def derivatives(self, x: FloatArray, coef: FloatArray) -> FloatArray:
         """d(model angle)/d(ln T, d) at fixed per-step coefficients, by central differences."""
