@@ -162,6 +162,10 @@ class Covariance:
         return t975(self.dof) * math.sqrt(max(float(self.cov[index, index]), 0.0))
 
 
+MANY_CLUSTERS: int = 64
+"""Above this many clusters the delete-one-cluster shifts use the full fit's J^T J."""
+
+
 def cluster_covariance(J: FloatArray, r: FloatArray, starts: NDArray[np.int64]) -> Covariance:
     """The sandwich covariance (J^T J)^-1 (sum_c s_c s_c^T) (J^T J)^-1 of least-squares
     parameters, with s_c = J_c^T r_c summed over the rows of cluster c.
@@ -171,24 +175,25 @@ def cluster_covariance(J: FloatArray, r: FloatArray, starts: NDArray[np.int64]) 
     columns of the others projected off them); r: the n residuals; starts: the first row of
     each cluster (rows in order, clusters contiguous). Each cluster's score is taken out of
     the fit first (the delete-one-cluster or jackknife form), which keeps the estimate honest
-    with a handful of clusters; dof = clusters - 1.
+    with a handful of clusters; dof = clusters - 1. With a single cluster it falls back to
+    the textbook sigma^2 (J^T J)^-1 with n - p degrees of freedom.
     """
     n, p = J.shape
     C = int(starts.size)
-    bread = J.T @ J
+    bread = np.einsum("ni,nj->ij", J, J)
     inv = np.linalg.pinv(bread)
+    if C < 2:
+        return Covariance(cov=inv * dot(r, r) / max(n - p, 1), dof=max(n - p, 1), clusters=C)
     scores = np.add.reduceat(J * r[:, None], starts, axis=0)  # C x p
-    # delete-one-cluster: the parameter change without cluster c is (B - B_c)^-1 s_c
-    blocks = np.add.reduceat(J[:, :, None] * J[:, None, :], starts, axis=0)  # C x p x p
-    rest = bread[None, :, :] - blocks
-    shifts = np.empty((C, p))
-    for c in range(C):  # C small p x p solves; vectorised below for many clusters
-        if C > 64:
-            break
-        shifts[c] = np.linalg.pinv(rest[c]) @ scores[c]
-    if C > 64:
-        # many clusters: each holds little of the information, (B - B_c)^-1 ~ B^-1
+    if C <= MANY_CLUSTERS:
+        # without cluster c the parameters move by (B - B_c)^-1 s_c
+        ends = np.concatenate((starts[1:], [n]))
+        shifts = np.empty((C, p))
+        for c in range(C):
+            Jc = J[starts[c] : ends[c]]
+            shifts[c] = np.linalg.pinv(bread - np.einsum("ni,nj->ij", Jc, Jc)) @ scores[c]
+    else:  # each cluster holds little of the information: (B - B_c)^-1 ~ B^-1
         shifts = scores @ inv.T
     centred = shifts - shifts.mean(axis=0)
-    cov = (C - 1) / C * centred.T @ centred if C > 1 else inv * dot(r, r) / max(n - p, 1)
+    cov = (C - 1) / C * (centred.T @ centred)
     return Covariance(cov=cov, dof=max(C - 1, 1), clusters=C)
