@@ -57,6 +57,9 @@ def test_human_report(files, capsys):
         "At u_A = 5 V",
         "What the numbers show:",
         "dry (Coulomb) friction",
+        "rad/s per V +- ",  # K's 95 % interval
+        "time shift of the steps",
+        "half a sample late",  # why the 63 % reading is longer than T
     ):
         assert text in out
 

@@ -4,11 +4,17 @@ The input is the log's applied voltage ``u`` (V), held from each row's instant t
 every change of it, rising or falling, is an edge the model follows. The fit works on what is
 measured, the wheel angle (rad) at the board's timestamps, with
 
-- K (rad/s per V) and an angle offset: linear, solved exactly for given nonlinear parameters;
+- K (rad/s per V) and the angle's offset: linear, solved exactly for given nonlinear
+  parameters. One offset carries the angle through every edge when the log's timestamps say
+  where the edges fall; without them an edge may act up to a loop's lateness away from its
+  logged instant, which shifts the angle after it, so each stretch between edges gets its own
+  offset and the fit rests on the shape of each response;
 - T (s), the time constant, shared by every edge;
 - a time shift d (s) of all edges against the samples: a nuisance parameter. A log whose
   samples are read late against the instants the command changes (a busy loop) shows its
-  response early; without the shift that lateness comes out of T;
+  response early; without the shift that lateness comes out of T. Where the edges act is
+  given as one or more hypotheses (the sample instants, the board's sample grid): the one that
+  fits best is kept;
 - u_c (V), the breakaway voltage of dry friction (tau_c R / k_a), when the log calls for it: the
   wheel then slows towards -K u_c after a fall, stops and sticks while |u_A| <= u_c.
 
@@ -26,8 +32,13 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.identify.lsq import Covariance, Solution, cluster_covariance, dot
-from minseg_tui.model.identify.lsq import levenberg_marquardt as _lm
+from minseg_tui.model.identify.lsq import (
+    Covariance,
+    Solution,
+    cluster_covariance,
+    dot,
+    levenberg_marquardt,
+)
 
 FloatArray = NDArray[np.float64]
 
@@ -238,14 +249,15 @@ def fit_whole_log(
     edge_times: list[FloatArray],
     offsets: bool,
 ) -> WholeLogFit | None:
-    """Fit the first-order model to the whole log: board times ``t`` (s) of the samples,
-    applied voltage ``u`` (V, per row), angle ``theta`` (rad); ``T0``: where the search for
-    T starts (s; the step-by-step fit's T); ``clusters``: first rows of the stretches from each edge of the
-    command to the next (the first at row 0); ``edge_times``: where the voltage of each row
-    may begin to act (s, one array per hypothesis; the one that fits best is kept);
-    ``offsets``: give each stretch its own angle offset (when the edges' instants are known
-    only to within a jitter) instead of carrying the angle through every edge. None when the
-    voltage never changes.
+    """Fit the first-order model to the whole log.
+
+    t: board times of the samples (s); u: applied voltage per row (V); theta: angle (rad); T0:
+    where the search for T starts (s; the step-by-step fit's T); clusters: first rows of the
+    stretches from each edge of the command to the next (the first at row 0); edge_times:
+    where the voltage of each row may begin to act (s, one array per hypothesis; the one that
+    fits best is kept); offsets: give each stretch its own angle offset (the edges' instants
+    known only to within a jitter) instead of carrying the angle through every edge. None
+    when the voltage never changes.
     """
     th = np.asarray(theta, dtype=float)
     n = th.size
@@ -257,12 +269,15 @@ def fit_whole_log(
         if m.v.size < 2:
             return None
         p = _Problem(m, th, False, starts)
-        sol = _lm(p.evaluate, p.jacobian, _starts(p, start)[1])
+        sol = levenberg_marquardt(p.evaluate, p.jacobian, _starts(p, start)[1])
         candidates.append((sol.rss, sol, m, p))
     _, best, model, chosen = min(candidates, key=lambda c: c[0])
     if model.can_stick:
         stick = _Problem(model, th, True, starts)
-        with_c = _lm(stick.evaluate, stick.jacobian, np.array([best.x[0], best.x[1], 0.0]))
+        top = float(np.max(np.abs(u)))
+        tries = [np.array([best.x[0], best.x[1], f * top]) for f in (0.0, 0.02, 0.05, 0.1, 0.2)]
+        first = min(tries, key=lambda x: stick.evaluate(x)[0])
+        with_c = levenberg_marquardt(stick.evaluate, stick.jacobian, first)
         if _better(best, with_c, 1, n, chosen.n_linear + 3, FRICTION_F):
             best, chosen = with_c, stick
     T, d, u_c = chosen.unpack(best.x)
