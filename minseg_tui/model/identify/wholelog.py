@@ -126,6 +126,10 @@ class _Model:
     def column(self, T: float, d: float, u_c: float) -> FloatArray:
         """The angle (rad per rad/s/V of K) at every row for time constant T (s), shift d (s)
         and breakaway voltage u_c (V)."""
+        return self.response(T, d, u_c)[0]
+
+    def response(self, T: float, d: float, u_c: float) -> tuple[FloatArray, FloatArray]:
+        """The angle (as :meth:`column`) and the speed (rad/s per rad/s/V) at every row."""
         t = self.t
         s = np.concatenate(([0.0], np.maximum(self.edge_t + d, 0.0)))
         s = np.maximum.accumulate(s)
@@ -150,9 +154,12 @@ class _Model:
         gained = w * held - (speed - w) * T * np.expm1(-held / T)
         start_angle = np.concatenate(([0.0], np.cumsum(gained[:-1])))
         j = np.searchsorted(s, t, side="right") - 1
-        x = np.minimum(t - s[j], stop[j])
-        angle: FloatArray = start_angle[j] + w[j] * x - (speed[j] - w[j]) * T * np.expm1(-x / T)
-        return angle
+        since = t - s[j]
+        x = np.minimum(since, stop[j])
+        decay = np.exp(-x / T)
+        angle: FloatArray = start_angle[j] + w[j] * x + (speed[j] - w[j]) * T * (1.0 - decay)
+        now: FloatArray = np.where(since >= stop[j], 0.0, w[j] + (speed[j] - w[j]) * decay)
+        return angle, now
 
 
 class _Problem:
@@ -169,6 +176,15 @@ class _Problem:
         self.starts = starts
         self.counts = np.diff(np.concatenate((self.starts, [theta.size])))
         self.group = np.repeat(np.arange(self.starts.size), self.counts)
+        self._last: tuple[bytes, tuple[FloatArray, FloatArray]] | None = None
+
+    def response(self, x: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """The model's unit-gain angle and speed at x (the last one is kept: the search asks
+        for the same point twice)."""
+        key = x.tobytes()
+        if self._last is None or self._last[0] != key:
+            self._last = (key, self.model.response(*self.unpack(x)))
+        return self._last[1]
 
     def demean(self, v: FloatArray) -> FloatArray:
         """v less its mean over each cluster of rows (the per-cluster angle offsets)."""
@@ -185,7 +201,7 @@ class _Problem:
         return 1 + int(self.starts.size)
 
     def evaluate(self, x: FloatArray) -> tuple[float, FloatArray, FloatArray]:
-        col = self.model.column(*self.unpack(x))
+        col = self.response(x)[0]
         if not np.all(np.isfinite(col)):
             return math.inf, np.zeros(1), np.full(self.theta.size, np.inf)
         cc = self.demean(col)
@@ -196,28 +212,31 @@ class _Problem:
         return dot(r, r), np.array([K]), r
 
     def derivatives(self, x: FloatArray, coef: FloatArray, central: bool = True) -> FloatArray:
-        """d(model angle)/d x at fixed K, by central (or forward) differences, the offsets
-        projected off."""
+        """d(model angle)/d x at fixed K, the offsets projected off: for the shift d minus the
+        speed (moving every edge later delays the whole response; the log starts steady), for
+        the others by central (or forward) differences."""
+        K = float(coef[0])
+        here, speed = self.response(x)
         out = np.empty((self.theta.size, x.size))
-        T = math.exp(float(x[0]))
-        here = None if central else self.model.column(*self.unpack(x))
         for k in range(x.size):
-            h = 1e-6 * T if k == 1 else 1e-6
+            if k == 1:
+                out[:, k] = -K * speed
+                continue
             up = x.copy()
-            up[k] += h
-            if here is None:
+            up[k] += 1e-6
+            if central:
                 down = x.copy()
-                down[k] -= h
+                down[k] -= 1e-6
                 diff = self.model.column(*self.unpack(up)) - self.model.column(*self.unpack(down))
-                out[:, k] = float(coef[0]) * diff / (2.0 * h)
+                out[:, k] = K * diff / 2e-6
             else:
-                out[:, k] = float(coef[0]) * (self.model.column(*self.unpack(up)) - here) / h
+                out[:, k] = K * (self.model.column(*self.unpack(up)) - here) / 1e-6
         return self.demean(out)
 
     def jacobian(self, x: FloatArray, coef: FloatArray) -> FloatArray:
         """d residual / d x with K and the offsets projected out (Kaufman's form)."""
         D = self.derivatives(x, coef, central=False)
-        cc = self.demean(self.model.column(*self.unpack(x)))
+        cc = self.demean(self.response(x)[0])
         return -(D - np.outer(cc, (cc @ D) / dot(cc, cc)))
 
 
