@@ -10,7 +10,8 @@ places a little late or early shifts a whole transient, and the speed of a real 
 So the covariance is the cluster-robust ("sandwich") estimate with the log cut into clusters
 of rows that belong together (the stretch after each edge): errors inside a cluster may be
 correlated in any way, clusters are taken as independent. Its Student t quantile has as many
-degrees of freedom as there are clusters less one.
+degrees of freedom as there are clusters less one. A log with a single step has too few
+clusters for that; its rows' correlation over a couple of time constants is estimated then.
 """
 
 from __future__ import annotations
@@ -165,8 +166,13 @@ class Covariance:
 MANY_CLUSTERS: int = 64
 """Above this many clusters the delete-one-cluster shifts use the full fit's J^T J."""
 
+FEW_CLUSTERS: int = 4
+"""Below this many clusters (a log with one step) the rows' own correlation is estimated."""
 
-def cluster_covariance(J: FloatArray, r: FloatArray, starts: NDArray[np.int64]) -> Covariance:
+
+def cluster_covariance(
+    J: FloatArray, r: FloatArray, starts: NDArray[np.int64], lag: int
+) -> Covariance:
     """The sandwich covariance (J^T J)^-1 (sum_c s_c s_c^T) (J^T J)^-1 of least-squares
     parameters, with s_c = J_c^T r_c summed over the rows of cluster c.
 
@@ -175,15 +181,23 @@ def cluster_covariance(J: FloatArray, r: FloatArray, starts: NDArray[np.int64]) 
     columns of the others projected off them); r: the n residuals; starts: the first row of
     each cluster (rows in order, clusters contiguous). Each cluster's score is taken out of
     the fit first (the delete-one-cluster or jackknife form), which keeps the estimate honest
-    with a handful of clusters; dof = clusters - 1. With a single cluster it falls back to
-    the textbook sigma^2 (J^T J)^-1 with n - p degrees of freedom.
+    with a handful of clusters; dof = clusters - 1. With fewer than :data:`FEW_CLUSTERS`
+    clusters (one step: taking it out leaves nothing to fit) the covariance of neighbouring
+    rows' scores up to ``lag`` rows apart is estimated instead (Newey and West's weights),
+    with n - p degrees of freedom.
     """
     n, p = J.shape
     C = int(starts.size)
     bread = np.einsum("ni,nj->ij", J, J)
     inv = np.linalg.pinv(bread)
-    if C < 2:
-        return Covariance(cov=inv * dot(r, r) / max(n - p, 1), dof=max(n - p, 1), clusters=C)
+    if C < FEW_CLUSTERS:
+        g = J * r[:, None]
+        meat = np.einsum("ni,nj->ij", g, g)
+        for k in range(1, min(max(lag, 0), n - 1) + 1):
+            cross = np.einsum("ni,nj->ij", g[k:], g[:-k])
+            meat += (1.0 - k / (lag + 1.0)) * (cross + cross.T)
+        cov = inv @ meat @ inv * n / max(n - p, 1)
+        return Covariance(cov=cov, dof=max(n - p, 1), clusters=C)
     scores = np.add.reduceat(J * r[:, None], starts, axis=0)  # C x p
     if C <= MANY_CLUSTERS:
         # without cluster c the parameters move by (B - B_c)^-1 s_c

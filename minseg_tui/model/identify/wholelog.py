@@ -297,14 +297,16 @@ def fit_whole_log(
         tries = [np.array([best.x[0], best.x[1], f * top]) for f in (0.0, 0.02, 0.05, 0.1, 0.2)]
         first = min(tries, key=lambda x: stick.evaluate(x)[0])
         with_c = levenberg_marquardt(stick.evaluate, stick.jacobian, first)
-        if _better(best, with_c, 1, n, chosen.n_linear + 3, FRICTION_F):
+        found = stick.unpack(with_c.x)[2] > 0  # a breakaway voltage, not a push
+        if found and _better(best, with_c, 1, n, chosen.n_linear + 3, FRICTION_F):
             best, chosen = with_c, stick
     T, d, u_c = chosen.unpack(best.x)
     D = chosen.derivatives(best.x, best.coef)
     D[:, 0] /= T  # d/d ln T -> d/d T
     col = chosen.demean(model.column(T, d, u_c))
     J = np.column_stack((col, D))  # (K, T, d[, u_c]), the offsets projected off
-    cov = cluster_covariance(J, best.residuals, clusters)
+    lag = math.ceil(2.0 * T / max(float(np.median(np.diff(t))), 1e-9))  # two time constants
+    cov = cluster_covariance(J, best.residuals, clusters, lag)
     sign = model.sign if model.sign else 1.0
     return WholeLogFit(
         T=T,

@@ -150,7 +150,8 @@ def fit_windows(
     T, d = math.exp(float(sol.x[0])), float(sol.x[1])
     J = -prob.jacobian(sol.x, sol.coef)  # the derivatives with each step's own terms projected off
     J[:, 0] /= T
-    cov = cluster_covariance(J, sol.residuals, prob.starts)
+    lag = math.ceil(2.0 * T / ts)  # two time constants
+    cov = cluster_covariance(J, sol.residuals, prob.starts, lag)
     coef = sol.coef.reshape(-1, _P)
     B = prob.basis(T, d)
     Ms, scale = prob.normal(B)
