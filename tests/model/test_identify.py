@@ -256,3 +256,10 @@ def test_T_recovered_when_the_wheel_coasts_or_keeps_moving(zero_mode, low, with_
         # few rows before each step pin the slowing-down speed: T stays within 3 %, but the
         # interval (which assumes the model is exact) can miss by a hair
         assert r.step.T_ci[0] < T_TRUE < r.step.T_ci[1]
+
+
+def test_a_table_whose_median_k_v_is_not_positive_is_refused():
+    # R = 4 ohm: (2 - 4 * 0.125) / 3 = +0.5 and (1 - 4 * 0.375) / 1 = -0.5, median 0
+    rows = [Reading(2.5, 2.0, 3.0, 125.0, line=2), Reading(1.5, 1.0, 1.0, 375.0, line=3)]
+    with pytest.raises(InputError, match="positive k_v"):
+        identify(rows, 4.0, source="t.csv")

@@ -201,6 +201,8 @@ class _Problem:
         return 1 + int(self.starts.size)
 
     def evaluate(self, x: FloatArray) -> tuple[float, FloatArray, FloatArray]:
+        if not (np.all(np.isfinite(x)) and -20.0 < x[0] < 10.0):  # T from 2 ns to 6 hours
+            return math.inf, np.zeros(1), np.full(self.theta.size, np.inf)
         col = self.response(x)[0]
         if not np.all(np.isfinite(col)):
             return math.inf, np.zeros(1), np.full(self.theta.size, np.inf)

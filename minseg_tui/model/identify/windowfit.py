@@ -114,6 +114,8 @@ class _Problem:
         return c, y - np.einsum("nj,nj->n", B, c[self.seg])
 
     def evaluate(self, x: FloatArray) -> tuple[float, FloatArray, FloatArray]:
+        if not (np.all(np.isfinite(x)) and -20.0 < x[0] < 10.0):  # T from 2 ns to 6 hours
+            return math.inf, np.zeros(self.mask.size), np.full(self.tau.size, np.inf)
         T, d = math.exp(float(x[0])), float(x[1])
         c, r = self.project(self.basis(T, d), self.theta)
         return dot(r, r), c.ravel(), r
