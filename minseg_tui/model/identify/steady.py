@@ -80,13 +80,6 @@ def steady_state(
             raise InputError(source, r.line, problem)
     k_v_rows = [(r.u_ss - R * r.i_ss * 1e-3) / r.omega_ss for r in readings]
     k_v = float(np.median(k_v_rows))
-    if not k_v > 0:  # no motor has it: every figure from here on would be false
-        raise InputError(
-            source,
-            None,
-            f"expected the rows to give a positive k_v (V s/rad), their median is {k_v:.3g}: "
-            "u_ss - R i_ss is not above 0 on enough rows; check R and i_ss (mA)",
-        )
     k_a = KA_OVER_KV * k_v
     rows = tuple(
         Row(reading=r, k_v=kv, f=k_a * r.i_ss * 1e-3 / r.omega_ss)
@@ -103,6 +96,13 @@ def steady_state(
                     f"omega_ss = {r.omega_ss:g} rad/s), they give k_v = {row.k_v:g} and f = {row.f:g}"
                 ),
             )
+    if not k_v > 0:  # no motor has it: every figure from here on would be false
+        raise InputError(
+            source,
+            None,
+            f"expected the rows to give a positive k_v (V s/rad), their median is {k_v:.3g}: "
+            "u_ss - R i_ss is not above 0 on enough rows; check R and i_ss (mA)",
+        )
     f = float(np.median([row.f for row in rows]))
     return rows, k_v, k_a, f
 
