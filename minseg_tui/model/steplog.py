@@ -100,7 +100,9 @@ class StepLog:
 
         From ``theta`` if present, else from ``count`` (``cpr`` counts per revolution), else
         rebuilt from ``omega`` read as the mean speed over each sample interval (the Euler
-        velocity): theta_k = theta_k-1 + omega_k (t_k - t_k-1).
+        velocity): theta_k = theta_k-1 + omega_k dt_k. dt_k is the nominal sample period when
+        omega is the manual's Euler derivative at a fixed Ts (every omega_k Ts is then a whole
+        number of counts), else the interval t_k - t_k-1.
         """
         if "theta" in self.extra and self.extra["theta"].dtype.kind in "fi":
             return np.asarray(self.extra["theta"], dtype=float), "the theta column"
@@ -108,8 +110,32 @@ class StepLog:
             th = np.asarray(self.extra["count"], dtype=float) * (2.0 * np.pi / self.cpr)
             return th, "the encoder count"
         t = self.board_time()
-        dth = np.concatenate(([0.0], np.asarray(self.omega[1:], float) * np.diff(t)))
+        w = np.asarray(self.omega[1:], float)
+        ts = _euler_period(w, np.diff(t), 2.0 * np.pi / self.cpr)
+        if ts is not None:
+            dth = np.concatenate(([0.0], w * ts))
+            return np.cumsum(dth), (
+                f"the omega column read as the Euler speed (theta_k - theta_k-1) / {ts * 1e3:.6g} ms"
+            )
+        dth = np.concatenate(([0.0], w * np.diff(t)))
         return np.cumsum(dth), "the omega column read as the mean speed over each sample interval"
+
+
+def _euler_period(w: FloatArray, dt: FloatArray, q: float) -> float | None:
+    """The fixed period Ts (s) with which ``w`` (rad/s) was computed as whole encoder steps
+    of ``q`` rad per sample, if it was (nearly every w Ts / q within 0.001 of a whole
+    number while the wheel turns); None otherwise. ``dt``: the sample intervals (s)."""
+    moving = np.abs(w) > 0
+    if np.count_nonzero(moving) < 3 or dt.size != w.size:
+        return None
+    guess = float(np.median(dt))
+    steps = np.round(np.abs(w[moving]) * guess / q)
+    if not np.all(steps >= 1):
+        return None
+    ts = float(np.median(q * steps / np.abs(w[moving])))
+    x = np.abs(w[moving]) * ts / q
+    whole = np.abs(x - np.round(x)) <= 1e-3
+    return ts if np.mean(whole) >= 0.99 else None
 
 
 @dataclass(frozen=True)
@@ -139,18 +165,13 @@ def _changes(v: FloatArray, small: float) -> list[tuple[int, int]]:
     """Runs (first, last) of rows whose change from the previous row exceeds ``small``,
     grouping consecutive changes of the same sign."""
     d = np.diff(v)
-    runs: list[tuple[int, int]] = []
-    k = 0
-    while k < d.size:
-        if abs(d[k]) > small:
-            j = k
-            while j + 1 < d.size and abs(d[j + 1]) > small and np.sign(d[j + 1]) == np.sign(d[k]):
-                j += 1
-            runs.append((k + 1, j + 1))
-            k = j + 1
-        else:
-            k += 1
-    return runs
+    big = np.abs(d) > small
+    sign = np.sign(d)
+    goes_on = np.zeros(d.size, dtype=bool)  # a change that continues the run before it
+    goes_on[1:] = big[1:] & big[:-1] & (sign[1:] == sign[:-1])
+    firsts = np.flatnonzero(big & ~goes_on)
+    lasts = np.flatnonzero(big & ~np.concatenate((goes_on[1:], [False])))
+    return [(int(a) + 1, int(b) + 1) for a, b in zip(firsts, lasts, strict=True)]
 
 
 def find_edges(u: FloatArray) -> list[Edge]:
