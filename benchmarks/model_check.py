@@ -21,8 +21,7 @@ import numpy as np
 
 from minseg_tui.lab.files import write_step_log
 from minseg_tui.model.check import check
-from minseg_tui.model.check.candidates import Effects, angle
-from minseg_tui.model.check.simulate import Stretches
+from minseg_tui.model.check.simulate import Effects, Stretches, pieces
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import CAUSES, PARAM_RANGES, make_log
 
@@ -104,7 +103,7 @@ def cramer_rao(runs: int) -> None:
         st = Stretches.from_samples(log.t, log.u)
 
         def th(T_: float, K_: float, st: Stretches = st, t: np.ndarray = log.t) -> np.ndarray:
-            return K_ * angle(st, t, T_, Effects())
+            return K_ * pieces(st, T_, Effects()).angle(t)
 
         dT, dK = 1e-6, 1e-6
         J = np.column_stack(

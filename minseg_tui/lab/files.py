@@ -27,7 +27,7 @@ from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steplog import StepLog, command, find_edges
+from minseg_tui.model.steplog import StepLog, command, find_edges, header_problem
 
 TABLE_COLUMNS: dict[str, str] = {
     "u_req": "V",
@@ -76,6 +76,7 @@ class _Csv:
         self.source = str(path)
         text = _read_text(path)
         self.metadata: dict[str, str] = {}
+        self.metadata_lines: dict[str, int] = {}
         self.header: list[str] = []
         self.header_line = 0
         self.rows: list[tuple[int, list[str]]] = []
@@ -87,6 +88,7 @@ class _Csv:
                 m = _META.match(stripped)
                 if m and not self.header:
                     self.metadata[m.group(1)] = m.group(2)
+                    self.metadata_lines[m.group(1)] = number
                 continue
             fields = [f.strip() for f in next(csv.reader([stripped]))]
             if not self.header:
@@ -217,13 +219,19 @@ def write_table(path: str | Path, readings: list[Reading]) -> None:
 def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
     """A step log (see the module docstring) as a StepLog, ``source`` the path as given.
 
-    Refuses (InputError naming file and line): an empty file, a missing t/u/omega column,
+    Refuses (InputError naming file and line): a header field the log format defines with a
+    value it does not allow (``# cpr:`` not a whole number above 0, ``# omega_over:`` other
+    than interval or nominal), an empty file, a missing t/u/omega column,
     a field that is not a finite number in t, u, omega or a known numeric column (u_req,
     theta, count, t_us, seq, ...), time (t, or t_us modulo 2^32) that does not increase,
     and, unless ``require_step`` is False, a log in which the command (u_req, else u) never steps.
     Unknown columns are kept: as numbers when every field is one, else as text.
     """
     f = _Csv(Path(path), ",".join(LOG_REQUIRED))
+    for key, value in f.metadata.items():
+        refused = header_problem(key, value)
+        if refused:
+            raise InputError(f.source, f.metadata_lines[key], refused)
     f.require(LOG_REQUIRED)
     f.check_widths()
     lines = f.lines()

@@ -31,7 +31,7 @@ from minseg_tui.lab.runs import Recorder
 from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import FIELDS, STEPS, RunPlan, Step, step
 from minseg_tui.model import identify as model_identify
-from minseg_tui.model.check.report import text as check_text
+from minseg_tui.model.check import text as check_text
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.ports import (

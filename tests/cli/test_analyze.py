@@ -53,7 +53,7 @@ def test_human_report(tmp_path, capsys):
     assert "Baseline (first order)" in out
     assert "Where it deviates" in out
     assert "Cause: coulomb_friction" in out
-    assert "stop in finite time" in out
+    assert "stands still" in out and "in finite time" in out
     assert "Extended model (first_order+coulomb_friction)" in out
     assert "Gain:" in out
     assert "misread encoder count" in out
