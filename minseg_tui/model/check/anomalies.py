@@ -82,14 +82,26 @@ def robust_sigma(x: FloatArray) -> float:
     return float(1.4826 * np.median(np.abs(x - np.median(x))))
 
 
+WILD_COUNTS = 3.0
+"""A wild sample is off by more than this many counts of the encoder (when its resolution
+is known): a count or two either way is quantisation, not a misread."""
+
+
 def find_wild(
-    residual: FloatArray, taps: int, most: int = 10, moving: FloatArray | None = None
+    residual: FloatArray,
+    taps: int,
+    most: int = 10,
+    moving: FloatArray | None = None,
+    count: float = 0.0,
 ) -> list[int]:
     """Rows where the measured angle is wild for one sample (isolated whitened spikes).
 
     With ``moving`` (bool per row, see :func:`moving_rows`) the noise scale is taken
-    from the row-to-row changes where the wheel moves (default: e itself, every row). The largest spike is taken out first (its leaky tail with it),
-    then the next, so a tail is never mistaken for a second wild sample.
+    from the row-to-row changes where the wheel moves (default: e itself, every row).
+    ``count``: the speed of one count per sample (rad/s; 0 when unknown): a spike must be
+    ``WILD_COUNTS`` counts at least (quantised speeds have a robust sigma near 0). The
+    largest spike is taken out first (its leaky tail with it), then the next, so a tail is
+    never mistaken for a second wild sample.
     """
     r = np.asarray(residual, dtype=float).copy()
     e = whiten(r, taps)
@@ -109,7 +121,7 @@ def find_wild(
         order = np.argsort(-np.abs(e))
         hit = None
         for k in order[:20].tolist():
-            if abs(e[k]) <= SPIKE_SIGMAS * s:
+            if abs(e[k]) <= max(SPIKE_SIGMAS * s, WILD_COUNTS * count / taps):
                 break
             nb = [abs(e[j]) for j in (k - 1, k + 1) if 0 <= j < e.size]
             if not nb or abs(e[k]) > SPIKE_ISOLATION * max(nb):

@@ -102,7 +102,8 @@ def check(
     head = full.head(MAX_FIT_ROWS)
     base = fit_baseline(head, rng0)
     moving = an.moving_rows(y)
-    wild = an.find_wild(y - base.predict(full), 1, moving=moving)
+    count = samp.resolution if samp.resolution_how.startswith("# cpr") else 0.0
+    wild = an.find_wild(y - base.predict(full), 1, moving=moving, count=count or 0.0)
     if wild:
         full, head, base = _repaired(full, y - base.predict(full), wild, 1, rng0)
     settle = dist.settle_rows(base.T, 0.0, 1, ts)
@@ -124,7 +125,7 @@ def check(
     taps = ext.effects.taps
     if taps > 1:
         res = y - ext.predict(replace_y(full, y))
-        again = an.find_wild(res, taps, moving=moving)
+        again = an.find_wild(res, taps, moving=moving, count=count or 0.0)
         if again != wild:
             wild = again
             full = replace_y(full, an.repair(y, res, wild, taps) if wild else y)
@@ -443,15 +444,20 @@ def _finding(
         if explained:
             rms_b = _rmse_kept(log.y, log.base_pred, np.ones(log.y.size, dtype=bool))
             left = above(rms_b, level) or 0.0
-            fit_words = (
-                f"the first-order model explains the log down to its noise: its error is "
-                f"{rms_b:.3g} rad/s rms against a noise of {level:.3g} rad/s"
-                + (", nothing above it" if left < 0.05 * level else f", {left:.2g} rad/s above it")
-                if level > 0
-                else "the first-order model fits the log"
-            )
+            if level <= 0:
+                fit_words = "the first-order model fits the log"
+            elif left < 0.5 * level:
+                fit_words = (
+                    f"the first-order model explains the log down to its noise: its error is "
+                    f"{rms_b:.3g} rad/s rms against a noise of {level:.3g} rad/s"
+                )
+            else:
+                fit_words = (
+                    f"the first-order model misses by {left:.2g} rad/s rms above the noise "
+                    f"({level:.3g} rad/s), too little and too scattered to name a cause by"
+                )
             pct = fit_percent(log.y, log.base_pred)
-            if pct < 80.0 and level > 0:
+            if pct < 80.0 and level > 0 and left < 0.5 * level:
                 fit_words += (
                     f" (its fit is only {pct:.0f} % because that noise is large against the "
                     "speed's changes, not because the model is wrong)"
