@@ -7,9 +7,10 @@ quantisation noise) twice the log-likelihood gain of a model over a smaller one 
 
 A cause is *clear* when D exceeds ``PENALTY`` ln n (BIC asks for 1 ln n per added
 parameter; we ask for much more, because a real log's residual is never exactly white)
-**and** it removes at least ``MIN_REDUCTION`` of the whitened sum of squares. Clean
-first-order data improve by a few per cent at most, so they come out ``none``; the
-effects of the test suite remove 80-100 %.
+**and** it removes at least ``MIN_REDUCTION`` of the whitened sum of squares
+(``MIN_REDUCTION_MORE`` of what the others leave, for a further cause). Clean first-order
+data improve by a few per cent at most, so they come out ``none``; the effects of the
+test suite remove 80-100 %, a second effect on top of a first 10-100 %.
 
 Causes are added one at a time (forward): every cause not yet in the model is fitted
 jointly with those already in it, and the clear one that leaves the least is added;
@@ -29,13 +30,19 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from minseg_tui.model.check.deviations import regions
 from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range
-from minseg_tui.model.check.fit import Fit, Problem, fit_causes, values_of
+from minseg_tui.model.check.figures import systematic
+from minseg_tui.model.check.fit import T_BOUNDS, Fit, Problem, fit_causes, values_of
 from minseg_tui.model.check.guess import starts
 from minseg_tui.model.check.sampling import scatter
 
 MIN_REDUCTION = 0.25
 """Fraction of the whitened sum of squares a cause must remove to be named."""
+
+MIN_REDUCTION_MORE = 0.10
+"""...and a further cause, of what the model with the others leaves (on the generated
+single-effect logs the best spurious second cause removes 2 % at most)."""
 
 COAST_RATIO = 1.5
 """A coast must be this many times slower than the driven time constant to be named."""
@@ -61,13 +68,15 @@ class Verdict:
 
 
 def compare(fit: Fit, against: Fit) -> Verdict:
-    """D = n ln(SSE_against / SSE_fit) and the relative reduction, with the decision."""
+    """D = n ln(SSE_against / SSE_fit) and the relative reduction, with the decision (a
+    cause added to others needs ``MIN_REDUCTION_MORE``, the first ``MIN_REDUCTION``)."""
     n = max(fit.rows, 2)
     if fit.sse_white <= 0 or not math.isfinite(fit.sse_white) or against.sse_white <= 0:
         return Verdict(0.0, 0.0, False)
     d = n * math.log(against.sse_white / fit.sse_white)
     red = 1.0 - fit.sse_white / against.sse_white
-    return Verdict(d, red, d > PENALTY * math.log(n) and red >= MIN_REDUCTION)
+    least = MIN_REDUCTION_MORE if against.causes else MIN_REDUCTION
+    return Verdict(d, red, d > PENALTY * math.log(n) and red >= least)
 
 
 def on_bound(f: Fit, cause: str, rng: dict[str, Range]) -> str | None:
@@ -113,14 +122,31 @@ def _own_noise(prob: Problem, f: Fit) -> float:
     return scatter(prob.y - f.predict(prob), prob.u, settle, prob.y != 0, keep=0.9)
 
 
+def _explained(prob: Problem, f: Fit, floor: Callable[[int], float | None]) -> bool:
+    """True when ``f`` leaves only noise: its error held over several samples, in the region
+    where it is largest, is within twice what the noise leaves there."""
+    r = prob.y - f.predict(prob)
+    reg = regions(prob.u, f.T, prob.ts)
+    worst = max(
+        (systematic(r, ((reg == i) & prob.keep).astype(float)) for i in range(3)),
+        default=0.0,
+    )
+    level = max(floor(f.effects.taps) or 0.0, _own_noise(prob, f) / 3.0)
+    return worst < 2.0 * level
+
+
 def _raw_sse(prob: Problem, f: Fit) -> float:
     r = prob.y - f.predict(prob)
     return float(np.dot(prob.weights * r, r))
 
 
+def _starts(prob: Problem, cause: str, f: Fit, rng: dict[str, Range], noise: float) -> list[float]:
+    return starts(cause, prob.t, prob.u, prob.y, prob.ts, f.T, f.K, noise, rng[cause])
+
+
 def single(prob: Problem, cause: str, base: Fit, rng: dict[str, Range], noise: float) -> Fit:
     """``cause`` alone on top of the first-order model, from the best of its starts."""
-    vals = starts(cause, prob.t, prob.u, prob.y, prob.ts, base.T, base.K, noise, rng[cause])
+    vals = _starts(prob, cause, base, rng, noise)
     tries = [(base.T * m, {cause: v}) for v in vals for m in (0.25, 0.6, 1.0)]
     return fit_causes(prob, (cause,), rng, tries)
 
@@ -141,6 +167,9 @@ def _why_not(
 ) -> str | None:
     """Why ``cause`` in ``f`` cannot be named although clear (None: it can). ``floor(N)``:
     the noise floor of the speed column if it were an average over N samples."""
+    lo, hi = math.log(T_BOUNDS[0]), math.log(T_BOUNDS[1])
+    if not lo + BOUND_SHARE * (hi - lo) < math.log(f.T) < hi - BOUND_SHARE * (hi - lo):
+        return "the time constant T it needs sits on the bound of its range"
     side = on_bound(f, cause, rng)
     if side is not None:
         return f"its parameter sits on the {side} bound of its range"
@@ -177,6 +206,8 @@ def select(
     current: Fit = base
     chosen: tuple[str, ...] = ()
     while len(chosen) < MAX_CAUSES:
+        if len(chosen) >= 2 and _explained(prob, current, floor):
+            break  # a pair that leaves only noise needs no third cause
         tries: dict[str, Fit] = {}
         for c in names:
             if c in chosen:
@@ -185,15 +216,14 @@ def select(
                 tries[c] = singles[c]
                 continue
             old = values_of(current)
-            tries[c] = fit_causes(
-                prob,
-                (*chosen, c),
-                rng,
-                [
-                    (current.T, {**old, c: singles[c].value(c)}),
-                    (singles[c].T, {**old, c: singles[c].value(c)}),
-                ],
-            )
+            vals = [singles[c].value(c), *_starts(prob, c, current, rng, noise)]
+            begin = [(current.T * m, {**old, c: v}) for v in vals for m in (0.7, 1.0)]
+            begin.append((singles[c].T, {**old, c: singles[c].value(c)}))
+            # the average's length trades against T: scan it again when this cause alone
+            # wanted a very different T than the model so far
+            far = not 0.5 < singles[c].T / current.T < 2.0
+            scan = c == "velocity_filter" or ("velocity_filter" in chosen and far)
+            tries[c] = fit_causes(prob, (*chosen, c), rng, begin, scan=scan, polish=(c,))
             sel.tried.append(tries[c])
         ok: dict[str, Fit] = {}
         for c, f in tries.items():
@@ -221,7 +251,7 @@ def select(
         for c in chosen:
             rest = tuple(x for x in chosen if x != c)
             old = {k: v for k, v in values_of(current).items() if k != c}
-            f = fit_causes(prob, rest, rng, [(current.T, old)])
+            f = fit_causes(prob, rest, rng, [(current.T, old)], scan=False)
             sel.without[c] = f
             if not compare(current, f).clear:
                 sel.left_out[c] = "the other causes explain the log as well without it"
@@ -229,6 +259,29 @@ def select(
                 sel.without = {}
                 changed = True
                 break
+    # swap: the cause picked first may have stood in for one that fits better with the rest
+    if len(chosen) >= 2:
+        first, rest = chosen[0], chosen[1:]
+        keep = {k: v for k, v in values_of(current).items() if k != first}
+        swap: tuple[str, Fit] | None = None
+        for x in names:
+            if x in chosen or not sel.verdicts[x].clear:
+                continue  # a stand-in stands in for a cause that is clear on its own
+            vals = [singles[x].value(x), *_starts(prob, x, current, rng, noise)]
+            begin = [(current.T, {**keep, x: v}) for v in vals]
+            begin.append((singles[x].T, {**keep, x: singles[x].value(x)}))
+            f = fit_causes(prob, (*rest, x), rng, begin, scan=x == "velocity_filter", polish=(x,))
+            sel.tried.append(f)
+            if f.sse_white < (1.0 - MIN_REDUCTION_MORE) * current.sse_white and (
+                swap is None or f.sse_white < swap[1].sse_white
+            ):
+                if _why_not(prob, f, x, rng, base_raw, noise, floor) is None:
+                    swap = (x, f)
+        if swap is not None:
+            sel.left_out[first] = f"{swap[0]} explains the log better together with the others"
+            chosen, current = (*rest, swap[0]), swap[1]
+            sel.left_out.pop(swap[0], None)
+            sel.without = {}
     # a cause whose parameter ended on a bound in the joint fit, or that fails its own test
     # there, leaves too
     for c in list(chosen):
@@ -238,7 +291,7 @@ def select(
             old = {k: v for k, v in values_of(current).items() if k != c}
             if "bound" in why:
                 sel.bound[c] = (current, why)
-            current = fit_causes(prob, rest, rng, [(current.T, old)]) if rest else base
+            current = fit_causes(prob, rest, rng, [(current.T, old)], scan=False) if rest else base
             chosen = rest
             sel.left_out[c] = why
             sel.without = {}
@@ -248,7 +301,7 @@ def select(
         for c in chosen:
             rest = tuple(x for x in chosen if x != c)
             old = {k: v for k, v in values_of(current).items() if k != c}
-            sel.without[c] = fit_causes(prob, rest, rng, [(current.T, old)])
+            sel.without[c] = fit_causes(prob, rest, rng, [(current.T, old)], scan=False)
     sel.chosen = current
     return sel
 

@@ -23,7 +23,7 @@ held-out steps) do not count: their residual is set to zero before the whitening
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -75,6 +75,9 @@ def whiten(x: FloatArray, taps: int = 1) -> FloatArray:
     out: FloatArray = (inner + _POW1[None, :, None] * acc[:, None, :]).reshape(-1)[:n]
     return out
 
+
+_COARSE_TAPS = (1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 14, 16, 18, 20, 23, 26, 30, 35, 40)
+"""Moving-average lengths a scan tries first (then the neighbours of the best)."""
 
 _BLOCK = 32
 _POW = RHO ** np.arange(_BLOCK)
@@ -288,12 +291,26 @@ class Model:
         """Levenberg-Marquardt from x0 (the taps, if any, scanned around as well)."""
         x, f, _ = least_squares(self.residual, x0, self.lo, self.hi, self.step, max_iter)
         if "velocity_filter" in self.causes:
-            for _ in range(2):
-                taps = self.best_taps(x, around=self.taps)
-                if taps == self.taps:
+            # the length trades against T (one more sample of averaging, half a sample less
+            # of T): each neighbour is judged with the other parameters fitted again
+            hi = int(self.rng["velocity_filter"].hi)
+            best = (f, x, self.taps)
+            tried = {self.taps}
+            while True:
+                centre = best[2]
+                for n in (centre - 1, centre + 1):
+                    if n < 1 or n > hi or n in tried:
+                        continue
+                    tried.add(n)
+                    self.taps = n
+                    xn, fn, _ = least_squares(
+                        self.residual, best[1], self.lo, self.hi, self.step, max_iter
+                    )
+                    if fn < best[0]:
+                        best = (fn, xn, n)
+                if best[2] == centre:
                     break
-                self.taps = taps
-                x, f, _ = least_squares(self.residual, x, self.lo, self.hi, self.step, max_iter)
+            f, x, self.taps = best
         return self.make(x, f)
 
     def make(self, x: FloatArray, f: float | None = None) -> Fit:
@@ -303,32 +320,30 @@ class Model:
         sse = float(np.dot(r, r)) if f is None else f
         return Fit(self.causes, T, k, fx, sse, self.prob.rows)
 
-    def scan_taps(self, x: FloatArray) -> FloatArray:
+    def scan_taps(self, x: FloatArray, anchors: Sequence[float] = ()) -> FloatArray:
         """x with T and the moving-average length set to the best pair on a grid of T from
-        0.15 to 1.5 times x's (the length scanned in full at each)."""
+        0.15 to 1.5 times x's and each of ``anchors`` (s) (the length scanned in full at
+        each)."""
         best = (math.inf, x, self.taps)
-        for f in (0.15, 0.25, 0.4, 0.6, 0.8, 1.0, 1.5):
+        ts = [math.exp(float(x[0])), *anchors]
+        lo, hi = math.log(0.15 * min(ts)), math.log(1.5 * max(ts))
+        grid = np.linspace(lo, hi, max(7, int(math.ceil((hi - lo) / 0.3)) + 1))
+        top = int(self.rng["velocity_filter"].hi)
+        coarse = [n for n in _COARSE_TAPS if n <= top]
+        for g in grid.tolist():
             xt = x.copy()
-            xt[0] = min(max(x[0] + math.log(f), self.lo[0]), self.hi[0])
-            taps, sse = self._taps_sse(xt, None)
+            xt[0] = min(max(g, self.lo[0]), self.hi[0])
+            taps, sse = self._taps_sse(xt, coarse)
             if sse < best[0]:
                 best = (sse, xt, taps)
-        self.taps = best[2]
+        near = list(range(max(1, best[2] - 3), min(top, best[2] + 3) + 1))
+        self.taps = self._taps_sse(best[1], near)[0]
         return best[1]
 
-    def best_taps(self, x: FloatArray, around: int | None = None) -> int:
-        """The moving-average length that fits best with the other parameters at x (all
-        lengths, or the neighbours of ``around``)."""
-        return self._taps_sse(x, around)[0]
-
-    def _taps_sse(self, x: FloatArray, around: int | None) -> tuple[int, float]:
+    def _taps_sse(self, x: FloatArray, tries: Sequence[int]) -> tuple[int, float]:
+        """The moving-average length among ``tries`` that fits best with the other
+        parameters at x, and its whitened sum of squares (the angle computed once)."""
         T, fx = self.effects(x)
-        hi = int(self.rng["velocity_filter"].hi)
-        tries = (
-            range(1, hi + 1)
-            if around is None
-            else range(max(1, around - 2), min(hi, around + 2) + 1)
-        )
         top = max(tries)
         p = self.prob
         tb = p.t[0] - p.ts * np.arange(top, 0, -1)
@@ -358,35 +373,48 @@ def fit_baseline(prob: Problem, rng: dict[str, Range]) -> Fit:
     return m.make(np.array([x]), f)
 
 
-StartValues = Callable[[Problem, Fit, Range], list[float]]
-
-
 def fit_causes(
     prob: Problem,
     causes: Sequence[str],
     rng: dict[str, Range],
     starts: Sequence[tuple[float, dict[str, float]]],
     max_iter: int = 25,
+    scan: bool = True,
+    polish: tuple[str, ...] = (),
 ) -> Fit:
     """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
-    ((T in s, {cause: Effects field value})) by Levenberg-Marquardt."""
+    ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
+    among the causes its length is first scanned in full (``scan``), else only around the
+    start's. For each cause in ``polish`` the best start with another value of it is
+    polished too (a cause that does not act at the best start has no gradient to grow by),
+    and the better result kept."""
     m = Model(prob, causes, rng)
-    best_x, best = None, math.inf
+    scored = []
     for T, values in starts:
         if "velocity_filter" in causes:
             m.taps = int(round(values.get("velocity_filter", m.taps)))
         x = m.x_of(T, values)
-        f = m.sse(x)
-        if f < best:
-            best_x, best = x, f
-            best_taps = m.taps
-    if best_x is None:  # no start moves the wheel (friction above the cap, say)
-        x = m.x_of(*starts[0])
-        return Fit(m.causes, *m.effects(x)[:1], 0.0, m.effects(x)[1], math.inf, prob.rows)
-    m.taps = best_taps
-    if "velocity_filter" in causes:
-        best_x = m.scan_taps(best_x)
-    return m.fit(best_x, max_iter)
+        scored.append((m.sse(x), m.taps, x, values))
+    ok = [r for r in scored if math.isfinite(r[0])]
+    if not ok:  # no start moves the wheel (friction above the cap, say)
+        T, fx = m.effects(m.x_of(*starts[0]))
+        return Fit(m.causes, T, 0.0, fx, math.inf, prob.rows)
+    ok.sort(key=lambda r: r[0])
+    picks = [ok[0]]
+    for c in polish:
+        other = next((r for r in ok if r[3].get(c) != ok[0][3].get(c)), None)
+        if other is not None and all(other is not p for p in picks):
+            picks.append(other)
+    best: Fit | None = None
+    for _, taps, x, _ in picks:
+        m.taps = taps
+        if "velocity_filter" in causes and scan:
+            x = m.scan_taps(x, sorted({T for T, _ in starts}))
+        f = m.fit(x, max_iter)
+        if best is None or f.sse_white < best.sse_white:
+            best = f
+    assert best is not None
+    return best
 
 
 def values_of(f: Fit) -> dict[str, float]:
@@ -398,7 +426,7 @@ def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 15) -> F
     """``f``'s causes fitted again on ``prob`` (other weights), started from ``f``."""
     if not f.causes:
         return fit_baseline_near(prob, rng, f.T)
-    return fit_causes(prob, f.causes, rng, [(f.T, values_of(f))], max_iter)
+    return fit_causes(prob, f.causes, rng, [(f.T, values_of(f))], max_iter, scan=False)
 
 
 def fit_baseline_near(prob: Problem, rng: dict[str, Range], T: float) -> Fit:

@@ -83,7 +83,7 @@ def least_squares(
     hi: NDArray[np.float64],
     step: NDArray[np.float64],
     max_iter: int = 25,
-    rtol: float = 1e-7,
+    rtol: float = 1e-6,
 ) -> tuple[NDArray[np.float64], float, NDArray[np.float64]]:
     """Levenberg-Marquardt within the box [lo, hi]: (x, sum of squares, Jacobian at x).
 

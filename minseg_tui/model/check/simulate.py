@@ -121,14 +121,24 @@ def _first_zero(f: Callable[[float], float], t_ext: float | None, length: float)
             fa = f(min(1e-12, b))
         if fa == 0.0 or (fa > 0.0) == (fb > 0.0):
             continue
+        # regula falsi (Illinois): the function is monotonic on [a, b]
+        side = 0
         for _ in range(60):
-            m = 0.5 * (a + b)
+            m = (a * fb - b * fa) / (fb - fa)
+            if not a < m < b:
+                m = 0.5 * (a + b)
             fm = f(m)
             if (fm > 0.0) == (fa > 0.0):
                 a, fa = m, fm
+                if side == -1:
+                    fb *= 0.5
+                side = -1
             else:
-                b = m
-            if b - a < 1e-10:
+                b, fb = m, fm
+                if side == 1:
+                    fa *= 0.5
+                side = 1
+            if b - a < 1e-10 * max(1.0, b) or fm == 0.0:
                 break
         return b
     return None
@@ -148,10 +158,11 @@ def _two_exp_extremum(k1: float, t1: float, k2: float, t2: float) -> float | Non
 class _State:
     """Speed w (V), drive after the extra pole v (V) and angle th (V s) at time t (s)."""
 
-    __slots__ = ("t", "th", "v", "w")
+    __slots__ = ("capping", "t", "th", "v", "w")
 
     def __init__(self, t: float, w: float, v: float, th: float) -> None:
         self.t, self.w, self.v, self.th = t, w, v, th
+        self.capping = False  # the last piece ended where the cap starts to hold
 
 
 def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Pieces:
@@ -196,7 +207,8 @@ def _stretch(
             left = _stuck(out, s, left, u, uc, T2)
             continue
         sign = math.copysign(1.0, s.w if s.w != 0.0 else drive if drive != 0.0 else u)
-        if math.isfinite(rate) and sign * (drive - s.w) > T * rate * (1.0 + 1e-9):
+        if math.isfinite(rate) and (s.capping or sign * (drive - s.w) > T * rate * (1.0 + 1e-9)):
+            s.capping = False
             left = _capped(out, s, left, u, sign, T, T2, uc, rate)
         else:
             left = _linear(out, s, left, u, sign, T, T2, uc, rate)
@@ -314,10 +326,11 @@ def _linear(
         B, A = 0.0, w0 - c
     out.add(s.t, s.th, c, 0.0, A, T, B, T2 if T2 else 1.0)
     events: list[float] = []
+    stop_at = math.inf
     if uc > 0.0 or math.isfinite(rate):
         if not T2:
             if sign * c < 0.0 and w0 != 0.0:
-                events.append(T * math.log((w0 - c) / -c))
+                stop_at = T * math.log((w0 - c) / -c)
         else:
 
             def w(tau: float) -> float:
@@ -325,7 +338,9 @@ def _linear(
 
             hit = _first_zero(w, _two_exp_extremum(A, T, B, T2), min(left, 50.0 * (T + T2)))
             if hit is not None:
-                events.append(hit)
+                stop_at = hit
+        events.append(stop_at)
+    cap_at = math.inf
     if T2 and math.isfinite(rate):
         kv = v0 - u - B  # s (v - w) - T rate = sign (u - c + kv e2 - A e1) - T rate
 
@@ -335,7 +350,9 @@ def _linear(
         hit = _first_zero(g, _two_exp_extremum(kv, T2, -A, T), min(left, 50.0 * (T + T2)))
         if hit is not None:
             events.append(hit)
+            cap_at = hit
     h = min([left, *events])
+    s.capping = h == cap_at and h < left
     e1 = _exp(-h / T)
     e2 = _exp(-h / T2) if T2 else 0.0
     s.th += c * h + A * T * (1.0 - e1) + (B * T2 * (1.0 - e2) if T2 else 0.0)
@@ -343,9 +360,7 @@ def _linear(
     if T2:
         s.v = u + (v0 - u) * e2
     s.t += h
-    if h < left and events and abs(s.w) < 1e-9 * max(abs(c), abs(u), 1e-12):
-        s.w = 0.0
-    elif h < left and events and (sign * s.w <= 0.0):
+    if h == stop_at and h < left:
         s.w = 0.0
     return left - h
 
