@@ -93,6 +93,14 @@ def test_clean_log_says_none(tmp_path, capsys):
             "t,u,omega\n" + "".join(f"{k * 0.025},{int(k >= 5)},{k}e300\n" for k in range(20)),
             "|omega (rad/s)| below",
         ),
+        ("# cpr: 72o\nt,u,omega\n0,0,0\n0.1,1,1\n", "bad.csv:1: expected # cpr: a whole number"),
+        ("# ts: 0.01\n# cpr: 0\nt,u,omega\n0,0,0\n", "bad.csv:2: expected # cpr"),
+        ("# cpr: 720.0\nt,u,omega\n0,0,0\n", "got '720.0'"),
+        ("# cpr: -360\nt,u,omega\n0,0,0\n", "above 0"),
+        (
+            "#omega_over: real\nt,u,omega\n0,0,0\n",
+            "bad.csv:1: expected # omega_over: interval or nominal",
+        ),
     ],
 )
 def test_bad_input_exits_2_with_one_line(tmp_path, capsys, text, says):
@@ -100,7 +108,23 @@ def test_bad_input_exits_2_with_one_line(tmp_path, capsys, text, says):
     path.write_text(text)
     assert main(["analyze", str(path)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "bad.csv" in err and says in err.lower()
+    assert err.count("\n") == 1 and "bad.csv" in err and says.lower() in err.lower()
+
+
+def test_header_says_how_the_speed_was_taken(tmp_path, capsys):
+    """# cpr: and # omega_over: reach the check: the floor from the counts per revolution,
+    the speed simulated the way the header says."""
+    log = make_log("none", seed=34, duration=6.0)
+    path = tmp_path / "log.csv"
+    write_step_log(
+        path,
+        StepLog(t=log.t, u=log.u, omega=log.omega),
+        {"ts": "0.025", "cpr": "720", "omega_over": "nominal"},
+    )
+    d = _analyze(path, capsys)
+    assert d["sampling"]["how"] in ("header", "even")
+    assert d["gain"]["noise_floor"] == pytest.approx(2 * math.pi / 720 / 0.025 / math.sqrt(6))
+    assert d["sampling"]["resolution_how"] == "# cpr: 720"
 
 
 def test_missing_file_exits_2(tmp_path, capsys):

@@ -133,8 +133,10 @@ def check(
             ext, base = refit(head, ext, rng), refit(head, base, rng)
     settle = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
-    near = dist.settle_rows(0.4 * ext.T, ext.effects.delay, taps, ts)
-    found2 = dist.find(t, u, full.y - ext.predict(full), ext.predict(full), near, noise)
+    near = 3  # the model chosen follows the steps: look from a few rows after each
+    found2 = dist.find(
+        t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1
+    )
     if _rows(found2) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
