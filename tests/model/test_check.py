@@ -269,3 +269,74 @@ def test_a_none_finding_says_which_test_the_best_candidate_failed():
     assert "removes 78.0 %" in weak and "criterion gain" in weak and "only" not in weak
     _, held = why(Verdict(threshold + 100, 0.78, True), {"dead_time": "its parameter sits on ..."})
     assert "held back: its parameter sits on" in held
+
+
+# -- sample times as they are ----------------------------------------------------------------
+
+
+def _irregular(over_interval, seed=61, lost=()):
+    """A clean first-order log sampled by a loop with 3-9 ms intervals (or a regular 5 ms
+    clock that loses the samples in ``lost``), the speed from 720 counts over the real
+    interval or over the nominal (median) one."""
+    rng = np.random.default_rng(seed)
+    if lost:
+        t = np.delete(np.arange(1200) * 0.005, list(lost))
+        ts = 0.005
+    else:
+        t = np.cumsum(rng.uniform(0.003, 0.009, 1200))
+        t -= t[0]
+        ts = float(np.median(np.diff(t)))
+    u = np.where((t % 2.0) >= 1.0, 0.0, 3.0)
+    u[t < 0.25] = 0.0
+    plant = Plant(PlantParams(tau_c=0.0, v_drop=0.0, v_supply=12.0))
+    count = np.empty(t.size, dtype=np.int64)
+    for k in range(t.size):
+        plant.advance(t[k] - plant.t)
+        count[k] = plant.count
+        plant.set_command(u[k])
+    dth = np.diff(count) * (2 * math.pi / 720)
+    div = np.diff(t) if over_interval else ts
+    return t, u, np.concatenate(([0.0], dth / div)), ts
+
+
+@pytest.mark.parametrize("over_interval", [True, False])
+def test_irregular_samples_are_simulated_as_measured(over_interval):
+    t, u, omega, _ = _irregular(over_interval)
+    r = check(t, u, omega)
+    assert r.sampling.how == "detected" and r.sampling.over_interval == over_interval
+    assert not r.sampling.regular  # a loop without a clock: jitter, not lost samples
+    assert "gap" not in [a.kind for a in r.anomalies]
+    assert r.finding.cause == "none"
+    assert r.baseline.params["T"] == pytest.approx(PlantParams().motor.T, rel=0.05)
+    # simulated the way it was measured, the model misses by about the noise only (the
+    # other way it would predict speed spikes after every long interval)
+    assert r.baseline.rmse < 3.0 * r.gain["noise_floor"]
+
+
+def test_lost_samples_on_a_regular_clock_are_gaps():
+    t, u, omega, ts = _irregular(True, lost=(300, 301, 700))
+    r = check(t, u, omega, ts=ts)
+    assert r.sampling.regular and r.sampling.lost == 3
+    assert [a.kind for a in r.anomalies] == ["gap"]
+    assert r.finding.cause == "none"
+
+
+def test_the_gain_survives_the_encoder_noise():
+    """A 5 ms run of the virtual MinSeg (dry friction 0.12 V): quantisation (1.7 rad/s per
+    count) dominates both rms errors, so the gain leads with the angle error, which shows
+    the friction plainly, and says why."""
+    from minseg_tui.model.plant import record
+
+    p = PlantParams(v_drop=0.0, v_supply=12.0)  # the published MinSeg, with its dry friction
+    u_req = np.tile(np.concatenate((np.zeros(200), np.full(200, 3.0))), 5)
+    rec = record(p, u_req, ts=0.005, seed=7, jitter_us=300)
+    omega = np.concatenate(([0.0], np.diff(rec.count) * (2 * math.pi / 720) / np.diff(rec.t)))
+    r = check(rec.t, u_req, omega, cpr=720)
+    assert r.finding.cause == "coulomb_friction"
+    assert r.extended.params["u_c"] == pytest.approx(p.u_coulomb, rel=0.2)
+    g = r.gain
+    assert g["noise_floor"] == pytest.approx(2 * math.pi / 720 / 0.005 / math.sqrt(6))
+    assert g["rmse_reduction_percent"] < 20  # the plain rmse hardly moves...
+    assert g["extended_angle_rms"] < 0.5 * g["baseline_angle_rms"]  # ...the angle does
+    assert r.lead.figure == "extended_angle_rms" and "noise" in r.lead.why
+    assert g["heldout_extended_rmse"] <= g["heldout_baseline_rmse"]
