@@ -223,7 +223,7 @@ def select(
             # wanted a very different T than the model so far
             far = not 0.5 < singles[c].T / current.T < 2.0
             scan = c == "velocity_filter" or ("velocity_filter" in chosen and far)
-            tries[c] = fit_causes(prob, (*chosen, c), rng, begin, scan=scan, polish=(c,))
+            tries[c] = fit_causes(prob, (*chosen, c), rng, begin, scan=scan, polish=_idle(c))
             sel.tried.append(tries[c])
         ok: dict[str, Fit] = {}
         for c, f in tries.items():
@@ -265,12 +265,18 @@ def select(
         keep = {k: v for k, v in values_of(current).items() if k != first}
         swap: tuple[str, Fit] | None = None
         for x in names:
-            if x in chosen or not sel.verdicts[x].clear:
-                continue  # a stand-in stands in for a cause that is clear on its own
+            if (
+                x in chosen
+                or not sel.verdicts[x].clear
+                or singles[x].sse_white > SWAP_RATIO * singles[first].sse_white
+            ):
+                continue  # a stand-in stands in for a cause about as clear on its own
             vals = [singles[x].value(x), *_starts(prob, x, current, rng, noise)]
             begin = [(current.T, {**keep, x: v}) for v in vals]
             begin.append((singles[x].T, {**keep, x: singles[x].value(x)}))
-            f = fit_causes(prob, (*rest, x), rng, begin, scan=x == "velocity_filter", polish=(x,))
+            f = fit_causes(
+                prob, (*rest, x), rng, begin, scan=x == "velocity_filter", polish=_idle(x)
+            )
             sel.tried.append(f)
             if f.sse_white < (1.0 - MIN_REDUCTION_MORE) * current.sse_white and (
                 swap is None or f.sse_white < swap[1].sse_white
@@ -312,6 +318,17 @@ the rival's plain speed error (sum of squares) is this many times smaller."""
 
 RAW_GAIN = 0.1
 """A filter must also cut the plain speed error (sum of squares) by this share."""
+
+
+SWAP_RATIO = 3.0
+"""A cause is tried in place of the first one picked when, alone, it leaves at most this
+many times the first one's whitened residual."""
+
+
+def _idle(cause: str) -> tuple[str, ...]:
+    """(cause,) when the cause can sit idle at a start (a coast or a cap that never acts has
+    no gradient to grow by), so a second start is polished for it; else ()."""
+    return (cause,) if math.isinf(BY_CAUSE[cause].null) else ()
 
 
 def _pick(prob: Problem, ok: dict[str, Fit], current: Fit, sel: Selection) -> str | None:

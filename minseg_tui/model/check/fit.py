@@ -54,12 +54,21 @@ MAX_FIT_ROWS = 2400
 def whiten(x: FloatArray, taps: int = 1) -> FloatArray:
     """e_k = x_k + RHO e_k-taps: the leaky stride-``taps`` sum that whitens differenced noise.
 
-    Vectorised in blocks of ``_BLOCK`` strides (a scaled cumulative sum inside a block, the
-    carry between blocks as a short geometric sum, since RHO^_BLOCK is tiny).
+    Up to ``_DIRECT`` strides one scaled cumulative sum; longer inputs in blocks of
+    ``_BLOCK`` strides (a scaled cumulative sum inside a block, the carry between blocks as
+    a short geometric sum, since RHO^_BLOCK is tiny).
     """
     x = np.asarray(x, dtype=float)
     n = x.size
     rows = -(-n // taps)
+    if rows <= _DIRECT:  # e_k = rho^k sum_j rho^-j x_j in one cumulative sum
+        buf = np.zeros(rows * taps)
+        buf[:n] = x
+        y = buf.reshape(rows, taps)
+        direct: FloatArray = (
+            np.cumsum(y * _INV_ALL[:rows, None], axis=0) * _POW_ALL[:rows, None]
+        ).reshape(-1)[:n]
+        return direct
     nb = -(-rows // _BLOCK)
     buf = np.zeros(nb * _BLOCK * taps)
     buf[:n] = x
@@ -79,6 +88,9 @@ def whiten(x: FloatArray, taps: int = 1) -> FloatArray:
 _COARSE_TAPS = (1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 14, 16, 18, 20, 23, 26, 30, 35, 40)
 """Moving-average lengths a scan tries first (then the neighbours of the best)."""
 
+_DIRECT = 3000  # RHO^-3000 = 1e137: the direct sum stays well inside float range
+_POW_ALL = RHO ** np.arange(_DIRECT)
+_INV_ALL = 1.0 / _POW_ALL
 _BLOCK = 32
 _POW = RHO ** np.arange(_BLOCK)
 _INV = 1.0 / _POW
@@ -422,7 +434,7 @@ def values_of(f: Fit) -> dict[str, float]:
     return {c: f.value(c) for c in f.causes}
 
 
-def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 15) -> Fit:
+def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fit:
     """``f``'s causes fitted again on ``prob`` (other weights), started from ``f``."""
     if not f.causes:
         return fit_baseline_near(prob, rng, f.T)

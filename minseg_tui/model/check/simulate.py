@@ -181,8 +181,19 @@ def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Piec
         z0 = 0.0 if coasting else u0 - math.copysign(min(fx.u_c, abs(u0)), u0)
     out = Pieces()
     out.add(float(st.start[0]) - FAR, -z0 * FAR, z0)
-    s = _State(float(st.start[0]), z0, z0 if T2 else float(st.value[0]), 0.0)
     ends = np.append(st.start[1:], math.inf)
+    if not T2 and fx.u_c == 0.0 and fx.T_coast is None and math.isinf(fx.rate):
+        # plain first order: one exponential piece per stretch, no events
+        w, th = z0, 0.0
+        for t0, t1, u in zip(st.start.tolist(), ends.tolist(), st.value.tolist(), strict=True):
+            a = w - u
+            out.rows.append((t0, th, u, 0.0, a, T, 0.0, 1.0))
+            if math.isfinite(t1):
+                e = _exp(-(t1 - t0) / T)
+                th += u * (t1 - t0) + a * T * (1.0 - e)
+                w = u + a * e
+        return out
+    s = _State(float(st.start[0]), z0, z0 if T2 else float(st.value[0]), 0.0)
     for t0, t1, u in zip(st.start.tolist(), ends.tolist(), st.value.tolist(), strict=True):
         s.t = t0
         if not T2:
