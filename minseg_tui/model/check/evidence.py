@@ -25,7 +25,8 @@ class Log:
     """What the sentences are computed from: t (s), u (V), y the measured speed (rad/s, wild
     samples repaired), ts (s), noise: the speed's scatter (rad/s), zero: the largest speed
     that reads as standing still (rad/s), base_pred: the first-order model's speed (rad/s),
-    smooth: the speed is a smooth signal, not a difference of counts."""
+    smooth: the speed is a smooth signal, not a difference of counts; step: the step
+    (rad/s) the speed's values come in when read off the data (None: not read off)."""
 
     t: FloatArray
     u: FloatArray
@@ -35,6 +36,7 @@ class Log:
     zero: float
     base_pred: FloatArray
     smooth: bool = False
+    step: float | None = None
 
 
 @dataclass(frozen=True)
@@ -123,17 +125,25 @@ def _dead(log: Log, ext: Fit) -> str:
 
 def _filter(log: Log, ext: Fit, floor: float | None) -> str:
     n = int(ext.params["taps"])
-    ramp = f"every edge becomes a ramp about {n} samples ({_ms(n * log.ts)}) long"
+    edges = int(np.count_nonzero(np.diff(log.u)))
+    which = "every edge becomes" if edges > 1 else "the step becomes"
+    ramp = f"{which} a ramp about {n} samples ({_ms(n * log.ts)}) long"
     if log.smooth:
         return (
-            f"{ramp}, as an average of the speed over {n} samples makes it; an extra pole in "
-            "the motor would look alike in this smooth signal"
+            f"{'the rises are' if edges > 1 else 'the rise is'} smoothed as an average of the "
+            f"speed over {n} samples ({_ms(n * log.ts)}) would smooth it; an extra pole in the "
+            "motor would look alike in this smooth signal"
         )
     if floor is not None:
         return (
-            f"the speed scatters only {log.noise:.3g} rad/s where one count per sample gives "
-            f"{floor:.3g} rad/s, and {ramp}: the speed is an average over {n} samples, which "
-            f"divides the encoder noise by {n}"
+            f"the speed scatters only {log.noise:.3g} rad/s where one count per sample alone "
+            f"gives a noise floor of {floor:.3g} rad/s, and {ramp}: the speed is an average "
+            f"over {n} samples, which divides the encoder noise by {n}"
+        )
+    if log.step is not None:
+        return (
+            f"the speed's values come in steps of only {log.step:.3g} rad/s and it scatters "
+            f"{log.noise:.3g} rad/s, and {ramp}: the speed is an average over {n} samples"
         )
     return f"{ramp}: the speed looks averaged over {n} samples"
 
@@ -184,16 +194,19 @@ def _pole(log: Log, ext: Fit) -> str:
 def _limit(log: Log, ext: Fit) -> str:
     a = ext.params["a_max"]
     r = steepest_rate(log.t, log.u, log.y, 1.0)
-    seen = f"the speed ramps at a near-constant {r:.3g} rad/s^2" if r else "the speed ramps"
+    seen = f"the speed ramps at about {r:.3g} rad/s^2" if r else "the speed ramps"
     ups = rises(log.u)
     top = ""
     if ups:
         k, _ = ups[0]
         jump = abs(float(log.u[k] - log.u[k - 1]))
-        top = f"; a first-order model would start steepest, at K u/T = {abs(ext.K) * jump / ext.T:.3g} rad/s^2"
+        top = (
+            f"; the same motor without a cap would start at K u/T = "
+            f"{abs(ext.K) * jump / ext.T:.3g} rad/s^2, steepest at once"
+        )
     return (
-        f"{seen} (measured between 20 % and 70 % of the rise) and then bends into the plateau"
-        f"{top}: the drive caps the current, a_max = {a:.3g} rad/s^2"
+        f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
+        f"into the plateau{top}: the drive caps the current, a_max = {a:.3g} rad/s^2"
     )
 
 

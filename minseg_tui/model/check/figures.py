@@ -117,8 +117,11 @@ def lead(gain: dict[str, float | None], named: bool) -> Lead:
 @dataclass(frozen=True)
 class CloseUp:
     """A window (s, rows start..end exclusive) where the cause acts, for a close-up plot of
-    the measured speed and both models there; ``noise`` the speed's noise level (rad/s, the
-    band a plot can draw), ``what`` in words."""
+    the measured speed and both models there (slice the result's t, omega, baseline_pred
+    and extended_pred with [start:end]); ``noise`` the speed's noise level (rad/s, the band
+    a plot can draw around the measured speed), ``cause`` the cause it shows ('none' for
+    the first rise of a log without one, 'disturbance' for a hand on the wheel), ``what``
+    in words."""
 
     t0: float
     t1: float
@@ -126,6 +129,7 @@ class CloseUp:
     end: int
     what: str
     noise: float
+    cause: str = "none"
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -135,6 +139,7 @@ class CloseUp:
             "row1": self.end,
             "what": self.what,
             "noise": self.noise,
+            "cause": self.cause,
         }
 
 
@@ -174,4 +179,5 @@ def close_up(
     t0, t1 = max(t0, float(t[0])), min(t1, float(t[-1]))
     i0 = int(np.searchsorted(t, t0, side="left"))
     i1 = int(np.searchsorted(t, t1, side="right"))
-    return CloseUp(float(t[i0]), float(t[max(i1 - 1, i0)]), i0, max(i1, i0 + 1), what, noise)
+    shown = "disturbance" if fenced is not None else cause
+    return CloseUp(float(t[i0]), float(t[max(i1 - 1, i0)]), i0, max(i1, i0 + 1), what, noise, shown)

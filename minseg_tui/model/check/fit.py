@@ -64,9 +64,9 @@ def whiten(x: FloatArray, taps: int = 1) -> FloatArray:
     if rows <= _DIRECT:  # e_k = rho^k sum_j rho^-j x_j in one cumulative sum
         buf = np.zeros(rows * taps)
         buf[:n] = x
-        y = buf.reshape(rows, taps)
+        cols = buf.reshape(rows, taps)
         direct: FloatArray = (
-            np.cumsum(y * _INV_ALL[:rows, None], axis=0) * _POW_ALL[:rows, None]
+            np.cumsum(cols * _INV_ALL[:rows, None], axis=0) * _POW_ALL[:rows, None]
         ).reshape(-1)[:n]
         return direct
     nb = -(-rows // _BLOCK)

@@ -115,7 +115,18 @@ def check(
     if found:
         full, head, base = _fenced(full, found, rng0)
 
-    log = Log(t, u, full.y, ts, noise, _zero_speed(samp, noise), base.predict(full), samp.smooth)
+    from_cpr = samp.resolution_how.startswith("# cpr")
+    log = Log(
+        t,
+        u,
+        full.y,
+        ts,
+        noise,
+        _zero_speed(samp, noise),
+        base.predict(full),
+        samp.smooth,
+        None if from_cpr else samp.resolution,
+    )
     unjudged = cannot_judge(log)
     names = tuple(c for c in NAMES if c not in unjudged)
     sel = select(head, base, rng, noise, samp.column_floor, names)
@@ -394,18 +405,19 @@ def _finding(
     miss: tuple[float, str, float] | None,
     unjudged: dict[str, str],
 ) -> Finding:
-    floor = samp.floor
+    floor = samp.floor if samp.resolution_how.startswith("# cpr") else None
     taps = ext.effects.taps
     caveats: list[Caveat] = []
-    for c, (f, why) in sorted(sel.bound.items()):
+    # a candidate stopped by its bounds matters where the model does not explain the log
+    for c, (f, why) in sorted(sel.bound.items()) if miss is not None or not order else []:
         p = BY_CAUSE[c].param
         caveats.append(
             Caveat(
                 "on_bound",
                 c,
-                f"{c} would explain more with {_params_text({p: f.params[p]})}, but {why}: the "
-                "effect in this log is outside what that cause can express (or its range is too "
-                "small), so it is not named",
+                f"{c} came out clear ({_params_text({p: f.params[p], 'T': f.T})}), but {why}: "
+                "the effect in this log is outside what that cause can express (or its range is "
+                "too small), so it is not named",
             )
         )
     if miss is not None:
@@ -532,7 +544,10 @@ def _runner_up(sel: Selection, ext: Fit) -> tuple[str | None, str]:
     new = [c for c in best.causes if c not in ext.causes]
     reason = next((sel.left_out[c] for c in new if c in sel.left_out), None)
     if best.sse_white < ext.sse_white and reason:
-        return name, f"the next best explanation ({name}) fits closer but is not named: {reason}"
+        return name, (
+            f"the next best explanation ({name}) leaves less whitened residual but is not "
+            f"named: {reason}"
+        )
     ratio = best.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
     return name, (
         f"the next best explanation ({name}) leaves {ratio:.1f} times as much whitened residual"
