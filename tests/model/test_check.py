@@ -340,3 +340,37 @@ def test_the_gain_survives_the_encoder_noise():
     assert g["extended_angle_rms"] < 0.5 * g["baseline_angle_rms"]  # ...the angle does
     assert r.lead.figure == "extended_angle_rms" and "noise" in r.lead.why
     assert g["heldout_extended_rmse"] <= g["heldout_baseline_rmse"]
+
+
+def test_json_keeps_every_key_and_adds_what_the_ui_needs():
+    """The keys the TUI, the report and the lab read stay; the new ones are there too."""
+    log = make_log("coulomb_friction", seed=7, also="second_pole")
+    d = check(log.t, log.u, log.omega).to_dict()
+    assert set(d) >= {"baseline", "finding", "extended", "gain", "deviations", "anomalies", "rows"}
+    assert set(d) >= {"sampling", "lead", "close_up"}
+    assert set(d["finding"]) >= {"cause", "evidence", "others", "caveats", "explained"}
+    assert set(d["finding"]) >= {"runner_up", "runner_up_why"}
+    assert set(d["gain"]) >= {
+        "rmse_reduction_percent",
+        "fit_percent_gain",
+        "whitened_reduction_percent",
+        "criterion_gain",
+        "noise_floor",
+        "noise",
+        "baseline_above_floor",
+        "extended_above_floor",
+        "baseline_angle_rms",
+        "extended_angle_rms",
+        "angle_floor",
+        "heldout_baseline_rmse",
+        "heldout_extended_rmse",
+    }
+    assert d["lead"]["figure"] in d["gain"] and d["lead"]["why"]
+    assert set(d["close_up"]) == {"t0", "t1", "row0", "row1", "what", "noise", "cause"}
+    assert set(d["extended"]["intervals"]) == set(d["extended"]["params"])
+    assert d["extended"]["model"] == "first_order+" + "+".join(
+        [d["finding"]["cause"], *(o["cause"] for o in d["finding"]["others"])]
+    )
+    assert set(d["sampling"]) >= {"omega_over", "how", "regular", "lost_samples", "noise_floor"}
+    for a in d["anomalies"]:
+        assert set(a) >= {"kind", "row", "t", "t_end", "size", "unit", "text"}
