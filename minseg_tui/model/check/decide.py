@@ -13,13 +13,20 @@ data improve by a few per cent at most, so they come out ``none``; the effects o
 test suite remove 80-100 %, a second effect on top of a first 10-100 %.
 
 Causes are added one at a time (forward): every cause not yet in the model is fitted
-jointly with those already in it, and the clear one that leaves the least is added;
-then each cause is taken out again (backward) and dropped when the model without it is
-not clearly worse, so a stand-in picked early (a delay for an extra pole) leaves once the
-real pair is in. A cause is never named when its parameter sits on its search bound (the
-effect lies outside what the model can express there), when its simulation matches the
-measured speed itself worse than the baseline does, or when it claims a coast no slower
-than braking; the reason is kept for the report.
+jointly with those already in it, and the clear one that leaves the least is added (a
+third only when the pair still leaves more than noise); then each cause is taken out
+again (backward) and dropped when the model without it is not clearly worse, and the
+first cause picked is swapped for another one about as clear on its own when that fits
+clearly better with the rest, so a stand-in picked early (a filter or a delay for an
+extra pole) leaves once the real pair is in.
+
+A cause is never named when its parameter, or the T it needs, sits on its search bound
+(the effect lies outside what the model can express there), when its simulation matches
+the measured speed itself worse than the baseline does, when it claims a coast no slower
+than braking, when (a moving average) the speed scatters far more than an average of
+counts leaves, or when it cuts the whitened residual but not the speed's own error (a
+wrong model can choose its averaging length so that its residual cancels in the strided
+whitening sums); the reason is kept for the report.
 """
 
 from __future__ import annotations
@@ -222,7 +229,11 @@ def select(
             # the average's length trades against T: scan it again when this cause alone
             # wanted a very different T than the model so far
             far = not 0.5 < singles[c].T / current.T < 2.0
-            scan = c == "velocity_filter" or ("velocity_filter" in chosen and far)
+            scan: bool | None = (
+                True
+                if c == "velocity_filter"
+                else (None if far and "velocity_filter" in chosen else False)
+            )
             tries[c] = fit_causes(prob, (*chosen, c), rng, begin, scan=scan, polish=_idle(c))
             sel.tried.append(tries[c])
         ok: dict[str, Fit] = {}

@@ -391,15 +391,15 @@ def fit_causes(
     rng: dict[str, Range],
     starts: Sequence[tuple[float, dict[str, float]]],
     max_iter: int = 25,
-    scan: bool = True,
+    scan: bool | None = True,
     polish: tuple[str, ...] = (),
 ) -> Fit:
     """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
     ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
-    among the causes its length is first scanned in full (``scan``), else only around the
-    start's. For each cause in ``polish`` the best start with another value of it is
-    polished too (a cause that does not act at the best start has no gradient to grow by),
-    and the better result kept."""
+    among the causes its length is first scanned in full (``scan`` True), else only around
+    the start's (False), or both ways (None). For each cause in ``polish`` the best two
+    starts with other values of it are polished too (a cause that does not act at the best
+    start has no gradient to grow by), and the best result kept."""
     m = Model(prob, causes, rng)
     scored = []
     for T, values in starts:
@@ -414,17 +414,24 @@ def fit_causes(
     ok.sort(key=lambda r: r[0])
     picks = [ok[0]]
     for c in polish:
-        other = next((r for r in ok if r[3].get(c) != ok[0][3].get(c)), None)
-        if other is not None and all(other is not p for p in picks):
-            picks.append(other)
+        seen = {ok[0][3].get(c)}
+        for r in ok:
+            if len(picks) >= 3:
+                break
+            if r[3].get(c) not in seen:
+                seen.add(r[3].get(c))
+                picks.append(r)
     best: Fit | None = None
+    ways = (True, False) if scan is None and "velocity_filter" in causes else (bool(scan),)
     for _, taps, x, _ in picks:
-        m.taps = taps
-        if "velocity_filter" in causes and scan:
-            x = m.scan_taps(x, sorted({T for T, _ in starts}))
-        f = m.fit(x, max_iter)
-        if best is None or f.sse_white < best.sse_white:
-            best = f
+        for way in ways:
+            m.taps = taps
+            xs = x
+            if "velocity_filter" in causes and way:
+                xs = m.scan_taps(x, sorted({T for T, _ in starts}))
+            f = m.fit(xs, max_iter)
+            if best is None or f.sse_white < best.sse_white:
+                best = f
     assert best is not None
     return best
 

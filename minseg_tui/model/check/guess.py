@@ -119,7 +119,7 @@ def starts(
     elif cause == "second_pole":
         vals = [T * f for f in (0.1, 0.25, 0.5, 0.9)]
     elif cause == "current_limit":
-        vals = [hi * f for f in (0.01, 0.03, 0.1)]
+        vals = [hi * f for f in (0.01, 0.025, 0.045, 0.07, 0.1)]
         r = steepest_rate(t, u, y, K)
         if r is not None:
             vals += [0.8 * r, r, 1.25 * r]
