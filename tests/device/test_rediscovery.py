@@ -23,7 +23,6 @@ MEGA = (0x2341, 0x0042)
 
 def test_reconnects_to_the_board_on_a_new_path(monkeypatch):
     server = PtyServer().start()
-
     def listing():
         return [
             fake("/dev/ttyS0"),
