@@ -495,6 +495,7 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     except np.linalg.LinAlgError:
         cov = np.full((p, p), np.inf)
     sd = np.sqrt(np.maximum(np.diag(cov), 0.0))
+    sd = np.where(np.isfinite(sd), sd, np.inf)  # a parameter the log does not pin down
     out: dict[str, tuple[float, float]] = {"K": (k - Z95 * sd[0], k + Z95 * sd[0])}
     for i, a in enumerate(m.axes):
         lo_x, hi_x = x[i] - Z95 * sd[i + 1], x[i] + Z95 * sd[i + 1]
