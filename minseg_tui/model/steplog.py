@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -18,6 +19,30 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui.units import COUNTS_PER_REV
 
 FloatArray = NDArray[np.float64]
+
+
+HEADER_FIELDS: dict[str, str] = {
+    "cpr": "encoder counts per wheel revolution, a whole number above 0",
+    "omega_over": "how omega was computed: 'interval' (the angle change over each row's real "
+    "sample interval) or 'nominal' (over the nominal period ts)",
+}
+"""``# key: value`` header lines whose values the step-log format defines (and checks)."""
+
+
+def header_problem(key: str, value: str) -> str | None:
+    """Why a header line ``# key: value`` cannot be taken, as an 'expected ...' sentence,
+    or None (keys the format does not define are free text)."""
+    v = value.strip()
+    if key == "cpr":
+        try:
+            n = int(v)
+        except ValueError:
+            n = 0
+        if n <= 0 or str(n) != v.lstrip("+"):
+            return f"expected # cpr: a whole number of counts per revolution above 0, got '{v}'"
+    if key == "omega_over" and v not in ("interval", "nominal"):
+        return f"expected # omega_over: interval or nominal, got '{v}'"
+    return None
 
 
 @dataclass(frozen=True, eq=False)
@@ -35,7 +60,7 @@ class StepLog:
     t: FloatArray
     u: FloatArray
     omega: FloatArray
-    extra: Mapping[str, NDArray] = field(default_factory=dict)
+    extra: Mapping[str, NDArray[Any]] = field(default_factory=dict)
     metadata: Mapping[str, str] = field(default_factory=dict)
     source: str = ""
     lines: NDArray[np.int64] | None = None
@@ -58,10 +83,11 @@ class StepLog:
         """Column names in file order: t, u, omega, then the extra columns."""
         return ["t", "u", "omega", *self.extra]
 
-    def column(self, name: str) -> NDArray:
+    def column(self, name: str) -> NDArray[Any]:
         """A column by name (t, u, omega or an extra one); KeyError if absent."""
         if name in ("t", "u", "omega"):
-            return getattr(self, name)
+            col: NDArray[Any] = getattr(self, name)
+            return col
         return self.extra[name]
 
     def line_of(self, row: int) -> int | None:
@@ -82,6 +108,19 @@ class StepLog:
             return int(self.metadata.get("cpr", COUNTS_PER_REV))
         except ValueError:
             return COUNTS_PER_REV
+
+    @property
+    def declared_cpr(self) -> int | None:
+        """Counts per revolution when the log says (``# cpr:``), else None."""
+        v = self.metadata.get("cpr")
+        return None if v is None or header_problem("cpr", v) else int(v)
+
+    @property
+    def omega_over(self) -> str | None:
+        """'interval' or 'nominal' when the log says how omega was computed
+        (``# omega_over:``), else None."""
+        v = self.metadata.get("omega_over")
+        return None if v is None or header_problem("omega_over", v) else v.strip()
 
     def board_time(self) -> FloatArray:
         """Sample times in s on the board's clock: from ``t_us`` when the log has it.
