@@ -90,7 +90,8 @@ def test_ev3_is_first_order_under_its_noise(name):
 def test_micromouse_duty255_starts_355_ms_after_the_command():
     # first count at 1.135 s, command at 0.780 s: a dead time of ~0.35 s, far beyond the old
     # 0.15 s bound (which turned it into a 40-tap "filter"); then a fast first-order rise
-    r, _ = analyze("micromouse-n20-duty255")
+    r, words = analyze("micromouse-n20-duty255")
+    assert "first moves 355 ms later" in words  # first count at 1.135 s
     assert r.finding.cause == "dead_time"
     assert 0.30 <= r.extended.params["delay"] <= 0.40
     assert 0.015 <= r.extended.params["T"] <= 0.07
@@ -101,10 +102,14 @@ def test_micromouse_duty255_starts_355_ms_after_the_command():
 def test_micromouse_duty100_starts_late_too():
     # motion starts 30-40 ms after the logged mode change (first count at 0.500 s, command at
     # 0.460 s); at one count = 3.5 rad/s nothing finer can be judged
-    r, _ = analyze("micromouse-n20-duty100")
+    r, words = analyze("micromouse-n20-duty100")
     assert r.finding.cause == "dead_time"
     assert 0.005 <= r.extended.params["delay"] <= 0.045
     assert "velocity_filter" not in causes(r)
+    # the wheel stands at exactly 0 before the step, so its first count (one count, 3.5 rad/s,
+    # at 0.500 s) is its first motion: the text says 40 ms, not the 55 ms at which the speed
+    # first exceeds four times the noise of the moving wheel
+    assert "first moves 40 ms later" in words
 
 
 def test_micromouse_aligned_probe_has_no_delay():

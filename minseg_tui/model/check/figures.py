@@ -105,8 +105,8 @@ def lead(gain: dict[str, float | None], named: bool) -> Lead:
     if noise > 0:
         return Lead(
             "extended_above_noise" if named else "baseline_above_noise",
-            f"the part of the speed error above the noise ({noise:.3g} rad/s) is what a model "
-            "can change; the rest is noise",
+            f"this log's speed has a noise of {noise:.3g} rad/s rms that no model can "
+            "remove; only the part of the error above it tells the models apart",
         )
     return Lead(
         "extended_rmse" if named else "baseline_rmse",

@@ -30,15 +30,26 @@ def rises(u: FloatArray) -> list[tuple[int, int]]:
 
 def first_motion(t: FloatArray, u: FloatArray, y: FloatArray, noise: float) -> list[float]:
     """Per rise, the time (s) from the step until the measured speed first leaves its level
-    before the step by more than the noise and a twentieth of the change (rad/s)."""
+    before the step: by more than four times that level's own scatter from sample to sample
+    and a twentieth of the change (rad/s). A wheel at rest has no scatter, so its first count
+    is its first motion. ``noise`` (rad/s, the log's scatter) stands in when fewer than five
+    rows come before the step."""
+    edges = np.flatnonzero(np.diff(u) != 0) + 1
     out = []
     for a, b in rises(u):
-        before = float(y[a - 1])
-        seg = y[a:b] - before
+        prev = edges[edges < a]
+        before = y[max(int(prev[-1]) if prev.size else 0, a - 50) : a]
+        if before.size >= 5:
+            level = float(np.median(before[-5:]))
+            d = np.diff(before)
+            scatter = 1.4826 * float(np.median(np.abs(d - np.median(d)))) / math.sqrt(2.0)
+        else:
+            level, scatter = float(y[a - 1]), noise
+        seg = y[a:b] - level
         change = float(np.max(np.abs(seg))) if seg.size else 0.0
         if change <= 0:
             continue
-        k = np.flatnonzero(np.abs(seg) > max(4.0 * noise, 0.05 * change))
+        k = np.flatnonzero(np.abs(seg) > max(4.0 * scatter, 0.05 * change))
         if k.size:
             out.append(float(t[a + int(k[0])] - t[a]))
     return out
