@@ -2,10 +2,10 @@
 
     .venv/bin/python benchmarks/identify_peers.py [--seeds 200] [--tiers 25ms,fast,5ms]
 
-Logs come from the project's plant (minseg_tui.model.plant.Plant: the published MinSeg motor
-with its inertia set for the wanted T, no dry friction, brake at zero command, 0.45 V driver
-drop, 720-count encoder read as integer counts, starting at a random fraction of a count),
-seeded. Each log: 4 rising steps (the lab's plan has 4
+Logs come from the project's generator (minseg_tui.model.synth.identification_log: the
+plant of minseg_tui.model.plant with the published MinSeg motor, its inertia set for the
+wanted T, no dry friction, brake at zero command, 0.45 V driver drop, 720-count encoder read
+as integer counts, starting at a random fraction of a count), seeded. Each log: 4 rising steps (the lab's plan has 4
 periods) to 2, 3 or 4 V, each level held 5 T; the speed column is the Euler derivative of the
 counts at the nominal Ts, as the lab's sketch computes it. Tiers: T 0.08-0.3 s at Ts = 25 ms
 and at 5 ms, and a fast tier, T 0.04-0.08 s at 25 ms. The loop is late by a uniform 0-2 ms
@@ -47,23 +47,19 @@ import math
 import time
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
 from scipy import optimize, signal
 from scipy import stats as sstats
 
-from minseg_tui.model.identify import Reading, identify
+from minseg_tui.model.identify import identify
 from minseg_tui.model.motor import PUBLISHED
-from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.synth import identification_log, identification_table
 
 F = NDArray[np.float64]
-CPR = 720
-Q = 2.0 * math.pi / CPR
-V_DROP = 0.45
-LEVELS = (2.0, 3.0, 4.0)
 TIERS: dict[str, tuple[float, float, float, float]] = {
     # name: (Ts s, T low s, T high s, largest lateness us)
     "25ms": (0.025, 0.08, 0.30, 2000.0),
@@ -82,65 +78,16 @@ class Log:
     ts: float
 
 
-def _sample(
-    params: PlantParams, u: F, ts: float, seed: int, late_us: float, on_grid: bool
-) -> tuple[F, NDArray[np.int64], F]:
-    """The board's loop: each count is read at k ts + lateness (4 us clock); the command
-    changes at k ts (``on_grid``) or right after the read (as minseg_tui.model.plant.record
-    does). The encoder starts at a random fraction of a count, as a real one does."""
-    n = u.size
-    rng = np.random.default_rng(seed)
-    late = rng.uniform(0.0, late_us * 1e-6, n)
-    t_read = np.floor((np.arange(n) * ts + late) * 1e6 / 4.0) * 4.0 / 1e6
-    plant = Plant(params, seed=seed)
-    plant.theta = float(rng.uniform(0.0, Q))
-    count = np.empty(n, dtype=np.int64)
-    u_a = np.empty(n)
-    for k in range(n):
-        if on_grid:
-            plant.advance(max(k * ts - plant.t, 0.0))
-            plant.set_command(float(u[k]))
-        plant.advance(max(float(t_read[k]) - plant.t, 0.0))
-        count[k] = plant.count
-        if not on_grid:
-            plant.set_command(float(u[k]))
-        u_a[k] = plant.u_A
-    return t_read, count, u_a
-
-
 def make(tier: str, seed: int, stamped: bool, timing: str) -> Log:
-    """One seeded log of ``tier`` with (``stamped``) or without the board's timestamps."""
+    """One seeded log of ``tier`` with (``stamped``) or without the board's timestamps;
+    ``timing`` "grid": the command changes on the board's grid and the count is read late,
+    "sample": the command changes right after the read (this firmware)."""
     ts, lo, hi, late_us = TIERS[tier]
-    rng = np.random.default_rng(seed)
-    T = float(rng.uniform(lo, hi))
-    m = PUBLISHED
-    motor = replace(m, J=T * m.damping / m.R)
-    params = PlantParams(motor=motor, tau_c=0.0, v_drop=V_DROP, zero_mode="brake")
-    half = max(4, round(5 * T / ts))
-    parts = [np.zeros(max(4, round(0.2 / ts)))]
-    for _ in range(4):
-        parts += [np.full(half, float(rng.choice(LEVELS))), np.zeros(half)]
-    cmd = np.concatenate(parts)
-    t_read, count, u_a = _sample(params, cmd, ts, seed, late_us, on_grid=timing == "grid")
-    omega = np.concatenate(([0.0], np.diff(count) * Q / ts))
-    extra: dict[str, NDArray[np.generic]] = {"u_req": cmd}
-    if stamped:
-        t = t_read
-        extra["t_us"] = np.round(t_read * 1e6).astype(np.int64)
-    else:
-        t = np.arange(cmd.size) * ts
-    return Log(StepLog(t=t, u=u_a, omega=omega, extra=extra), T, motor.K, ts)
+    g = identification_log(seed, ts, (lo, hi), late_us, on_grid=timing == "grid", stamped=stamped)
+    return Log(g.log, g.T, g.K, ts)
 
 
-TABLE = [
-    Reading(
-        u,
-        u - V_DROP,
-        PUBLISHED.K * (u - V_DROP),
-        (u - V_DROP - PUBLISHED.k_v * PUBLISHED.K * (u - V_DROP)) / PUBLISHED.R * 1e3,
-    )
-    for u in LEVELS
-]
+TABLE = identification_table()
 
 
 # -- the estimators: (T, K, T interval or None, K interval or None) ---------------------------

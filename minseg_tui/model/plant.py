@@ -324,12 +324,19 @@ def record(
     ts: float = 0.025,
     seed: int = 0,
     jitter_us: float = 0.0,
+    *,
+    command_on_grid: bool = False,
+    encoder_phase: bool = False,
 ) -> Recording:
     """Sample the plant as the board does: at k ts (+ loop latency), then apply commands[k].
 
     ``commands`` is the requested voltage (V) in force from each sample on. Loop latency
     is drawn uniformly from [0, jitter_us] microseconds for each sample (seeded): the
-    board's timestamp records when the count was really read.
+    board's timestamp records when the count was really read. With ``command_on_grid`` the
+    command changes at k ts itself, before the late read (a loop whose timer sets the drive
+    on time and reads the encoder when it gets to it), not right after the read (this
+    firmware). With ``encoder_phase`` the encoder starts at a random fraction of a count
+    (seeded), as a real one does, instead of exactly on a count's edge.
     """
     u = np.asarray(commands, dtype=float)
     n = u.size
@@ -339,14 +346,20 @@ def record(
     t = np.arange(n) * ts + lateness
     t_us = (np.floor(t * 1e6 / 4.0) * 4).astype(np.int64)
     t = t_us / 1e6
+    if encoder_phase:
+        plant.theta = float(rng.uniform(0.0, 2.0 * math.pi / params.cpr))
     count = np.empty(n, dtype=np.int64)
     u_a = np.empty(n)
     omega = np.empty(n)
     current = np.empty(n)
     for k in range(n):
-        plant.advance(t[k] - plant.t)
+        if command_on_grid:
+            plant.advance(max(k * ts - plant.t, 0.0))
+            plant.set_command(u[k])
+        plant.advance(max(t[k] - plant.t, 0.0))
         count[k] = plant.count
-        plant.set_command(u[k])
+        if not command_on_grid:
+            plant.set_command(u[k])
         u_a[k] = plant.u_A
         omega[k] = plant.omega
         current[k] = plant.current

@@ -35,7 +35,10 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numpy.typing import NDArray
 
+from minseg_tui.model.identify import Reading
+from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import Plant, PlantParams, Touch, record
+from minseg_tui.model.steplog import StepLog
 
 TS = 0.025
 """The board's sample period, s."""
@@ -293,7 +296,78 @@ def _sample_late(
     return t, count, omega
 
 
+# -- logs for the identification of K and T (Tasks 10-15) ---------------------------------------
+
+IDENT_LEVELS: tuple[float, ...] = (2.0, 3.0, 4.0)
+"""Requested high levels of the identification logs' steps, V."""
+
+IDENT_V_DROP = 0.45
+"""The driver's voltage loss in the identification logs, V."""
+
+
+@dataclass(frozen=True)
+class IdentLog:
+    """A first-order log for the identification and its truth: T (s) and K (rad/s per V
+    of u_A), the plant it came from."""
+
+    log: StepLog
+    T: float
+    K: float
+    params: PlantParams
+
+
+def identification_table() -> list[Reading]:
+    """The exact Task 4-9 table of the identification logs' plant (before T is drawn: J does
+    not enter it): u_req at IDENT_LEVELS, u_ss = u_req - IDENT_V_DROP, omega_ss = K u_ss and
+    i_ss (mA) from the published motor."""
+    m = PUBLISHED
+    out = []
+    for u in IDENT_LEVELS:
+        u_ss = u - IDENT_V_DROP
+        out.append(Reading(u, u_ss, m.K * u_ss, (u_ss - m.k_v * m.K * u_ss) / m.R * 1e3))
+    return out
+
+
+def identification_log(
+    seed: int,
+    ts: float = 0.025,
+    T_range: tuple[float, float] = (0.08, 0.3),
+    late_us: float = 2000.0,
+    on_grid: bool = True,
+    stamped: bool = True,
+) -> IdentLog:
+    """A seeded log as issue 11's side-by-side measures: the published MinSeg with T drawn
+    from ``T_range`` (s, through J), no dry friction, braking at zero; 0.2 s at rest, then
+    4 rising steps of 5 T to a level from IDENT_LEVELS and back to 0; the loop late by
+    0-``late_us`` us, the command on the board's grid (``on_grid``) or right after the late
+    read; the encoder starting anywhere within a count; the Euler speed over the nominal
+    ``ts``. ``stamped``: t is the read instants and the log has t_us; else t = k ts."""
+    rng = np.random.default_rng(seed)
+    T = float(rng.uniform(*T_range))
+    motor = replace(PUBLISHED, J=T * PUBLISHED.damping / PUBLISHED.R)
+    params = PlantParams(motor=motor, tau_c=0.0, v_drop=IDENT_V_DROP, zero_mode="brake")
+    half = max(4, round(5 * T / ts))
+    parts = [np.zeros(max(4, round(0.2 / ts)))]
+    for _ in range(4):
+        parts += [np.full(half, float(rng.choice(IDENT_LEVELS))), np.zeros(half)]
+    cmd = np.concatenate(parts)
+    rec = record(params, cmd, ts, seed, late_us, command_on_grid=on_grid, encoder_phase=True)
+    q = 2.0 * math.pi / params.cpr
+    omega = np.concatenate(([0.0], np.diff(rec.count) * q / ts))
+    extra: dict[str, NDArray[np.generic]] = {"u_req": cmd}
+    if stamped:
+        extra["t_us"] = rec.t_us
+    t = rec.t if stamped else np.arange(cmd.size, dtype=np.float64) * ts
+    log = StepLog(t=t, u=rec.u_A, omega=omega, extra=extra, source="synth")
+    return IdentLog(log, T, motor.K, params)
+
+
 __all__ = [
+    "IDENT_LEVELS",
+    "IDENT_V_DROP",
+    "IdentLog",
+    "identification_log",
+    "identification_table",
     "CAUSES",
     "PARAM_RANGES",
     "TS",

@@ -8,63 +8,24 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from minseg_tui.model.identify import RISING_STEPS, WHOLE_LOG, Reading, identify
+from minseg_tui.model.identify import RISING_STEPS, WHOLE_LOG, identify
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.stepfit import board_grid
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.model.steplog import StepLog, find_edges
+from minseg_tui.model.synth import IDENT_V_DROP, identification_log, identification_table
 
 Q = 2 * math.pi / 720
-V_DROP = 0.45
-LEVELS = (2.0, 3.0, 4.0)
-TABLE = [
-    Reading(
-        u,
-        u - V_DROP,
-        PUBLISHED.K * (u - V_DROP),
-        (u - V_DROP - PUBLISHED.k_v * PUBLISHED.K * (u - V_DROP)) / PUBLISHED.R * 1e3,
-    )
-    for u in LEVELS
-]
+V_DROP = IDENT_V_DROP
+TABLE = identification_table()
 
 
 def plant_log(seed, ts=0.025, T_range=(0.08, 0.3), late_us=2000.0, grid=True, stamped=True):
-    """A log as benchmarks/identify_peers.py makes them: 4 rising steps of 5 T to 2-4 V, the
-    loop late by 0-late_us, the command changing on the grid (``grid``) or right after the
-    late read; Euler speed at the nominal ts; t = the read instants (``stamped``, with t_us)
-    or k ts. Returns (log, true T, true K)."""
-    rng = np.random.default_rng(seed)
-    T = float(rng.uniform(*T_range))
-    motor = replace(PUBLISHED, J=T * PUBLISHED.damping / PUBLISHED.R)
-    params = PlantParams(motor=motor, tau_c=0.0, v_drop=V_DROP, zero_mode="brake")
-    half = max(4, round(5 * T / ts))
-    parts = [np.zeros(max(4, round(0.2 / ts)))]
-    for _ in range(4):
-        parts += [np.full(half, float(rng.choice(LEVELS))), np.zeros(half)]
-    cmd = np.concatenate(parts)
-    n = cmd.size
-    late = rng.uniform(0.0, late_us * 1e-6, n)
-    t_read = np.floor((np.arange(n) * ts + late) * 1e6 / 4.0) * 4.0 / 1e6
-    plant = Plant(params, seed=seed)
-    plant.theta = float(rng.uniform(0.0, Q))  # the encoder starts anywhere within a count
-    count = np.empty(n, dtype=np.int64)
-    u_a = np.empty(n)
-    for k in range(n):
-        if grid:
-            plant.advance(max(k * ts - plant.t, 0.0))
-            plant.set_command(float(cmd[k]))
-        plant.advance(max(float(t_read[k]) - plant.t, 0.0))
-        count[k] = plant.count
-        if not grid:
-            plant.set_command(float(cmd[k]))
-        u_a[k] = plant.u_A
-    omega = np.concatenate(([0.0], np.diff(count) * Q / ts))
-    extra = {"u_req": cmd}
-    if stamped:
-        extra["t_us"] = np.round(t_read * 1e6).astype(np.int64)
-    t = t_read if stamped else np.arange(n) * ts
-    return StepLog(t=t, u=u_a, omega=omega, extra=extra, source="plant"), T, motor.K
+    """A log as benchmarks/identify_peers.py makes them (model.synth.identification_log).
+    Returns (log, true T, true K)."""
+    g = identification_log(seed, ts, T_range, late_us, on_grid=grid, stamped=stamped)
+    return g.log, g.T, g.K
 
 
 CASES = [
