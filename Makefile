@@ -23,6 +23,7 @@ lint: $(STAMP)
 	$(VENV)/bin/ruff check minseg_tui tests benchmarks
 	$(VENV)/bin/ruff format --check minseg_tui tests benchmarks
 	$(VENV)/bin/lint-imports
+	$(VENV)/bin/mypy
 
 typecheck: $(STAMP)
 	$(VENV)/bin/mypy

@@ -1,16 +1,19 @@
 """Model-check benchmark: confusion matrix, parameter errors, T spread against the Cramer-Rao
-bound, and wall times.
+bound, and the CLI's times (Python start included).
 
-    .venv/bin/python benchmarks/model_check.py [--seeds 30] [--skip-hour]
+    taskset -c 1 .venv/bin/python benchmarks/model_check.py [--seeds 30] [--skip-hour]
 
 Logs come from minseg_tui.model.synth (20 s, steps of 1.55-3.55 V every second, 720-count
-encoder, 300 us jitter), one hidden effect each, drawn from its realistic range.
+encoder, 300 us jitter), one hidden effect each, drawn from its realistic range. Logs with
+two effects and a hand on the wheel: benchmarks/model_check_pairs.py.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -21,8 +24,7 @@ import numpy as np
 
 from minseg_tui.lab.files import write_step_log
 from minseg_tui.model.check import check
-from minseg_tui.model.check.candidates import Effects, angle
-from minseg_tui.model.check.simulate import Stretches
+from minseg_tui.model.check.simulate import Effects, Stretches, pieces
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import CAUSES, PARAM_RANGES, make_log
 
@@ -104,7 +106,7 @@ def cramer_rao(runs: int) -> None:
         st = Stretches.from_samples(log.t, log.u)
 
         def th(T_: float, K_: float, st: Stretches = st, t: np.ndarray = log.t) -> np.ndarray:
-            return K_ * angle(st, t, T_, Effects())
+            return K_ * pieces(st, T_, Effects()).angle(t)
 
         dT, dK = 1e-6, 1e-6
         J = np.column_stack(
@@ -128,9 +130,11 @@ def cramer_rao(runs: int) -> None:
     )
 
 
-def _cli_time(path: Path, runs: int) -> list[float]:
-    out = []
+def _cli_time(path: Path, runs: int) -> tuple[list[float], list[float]]:
+    """Wall times and CPU times (user + system of the child) of ``runs`` CLI runs, s."""
+    wall, cpu = [], []
     for _ in range(runs):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
         t0 = time.perf_counter()
         subprocess.run(
             [sys.executable, "-m", "minseg_tui", "analyze", str(path)],
@@ -138,20 +142,43 @@ def _cli_time(path: Path, runs: int) -> list[float]:
             stdout=subprocess.DEVNULL,
             cwd=ROOT,
         )
-        out.append(time.perf_counter() - t0)
-    return out
+        wall.append(time.perf_counter() - t0)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu.append(after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime)
+    return wall, cpu
+
+
+TIMED: tuple[tuple[str, str | None], ...] = (
+    ("coulomb_friction", None),
+    ("coulomb_friction", "second_pole"),
+    ("dead_time", "velocity_filter"),
+    ("current_limit", "coast_on_zero"),
+)
+"""The 20 s logs the CLI is timed on: one effect, and pairs (with the slowest simulation)."""
 
 
 def timings(skip_hour: bool) -> None:
+    cores = os.sched_getaffinity(0) if hasattr(os, "sched_getaffinity") else set()
+    load = os.getloadavg()
+    print(
+        f"\nCLI timing on {len(cores) or '?'} core(s) {sorted(cores)}; load average "
+        f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f} (the machine is shared: CPU time is the "
+        "fair figure)"
+    )
     with tempfile.TemporaryDirectory() as d:
-        log = make_log("coulomb_friction", param=0.2, seed=5)
-        p = Path(d) / "20s.csv"
-        write_step_log(p, StepLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count}))
-        times = _cli_time(p, 7)
-        print(
-            f"\n20 s log ({log.t.size} rows), `python -m minseg_tui analyze`, Python start included:"
-            f" median {np.median(times):.2f} s, max {max(times):.2f} s (target < 1 s)"
-        )
+        for cause, also in TIMED:
+            log = make_log(cause, seed=5, also=also)
+            p = Path(d) / "20s.csv"
+            write_step_log(
+                p, StepLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count})
+            )
+            wall, cpu = _cli_time(p, 7)
+            name = cause + (f"+{also}" if also else "")
+            print(
+                f"  20 s log ({log.t.size} rows, {name}), `python -m minseg_tui analyze`, Python "
+                f"start included: median {np.median(wall):.2f} s wall, {np.median(cpu):.2f} s CPU;"
+                f" max {max(wall):.2f} s wall (target: median < 1.5 s)"
+            )
         if skip_hour:
             return
         t0 = time.perf_counter()
@@ -162,7 +189,7 @@ def timings(skip_hour: bool) -> None:
         inproc = time.perf_counter() - t0
         p = Path(d) / "hour.csv"
         write_step_log(p, StepLog(t=big.t, u=big.u, omega=big.omega, extra={"count": big.count}))
-        cli = _cli_time(p, 1)[0]
+        cli = _cli_time(p, 1)[0][0]
         print(
             f"one-hour log at 40 Hz ({big.t.size} rows; generated in {gen:.1f} s): check() "
             f"{inproc:.2f} s in process, the CLI {cli:.2f} s with start and CSV reading "
@@ -174,9 +201,11 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=30)
     ap.add_argument("--skip-hour", action="store_true")
+    ap.add_argument("--timing-only", action="store_true")
     a = ap.parse_args()
-    confusion(a.seeds)
-    cramer_rao(a.seeds)
+    if not a.timing_only:
+        confusion(a.seeds)
+        cramer_rao(a.seeds)
     timings(a.skip_hour)
 
 

@@ -67,7 +67,8 @@ def _read_holder(fd: int) -> Holder | None:
     return None
 
 
-def _alive(pid: int | None) -> bool:
+def pid_alive(pid: int | None) -> bool:
+    """True when a process with this pid runs on this machine (None or <= 0: no)."""
     if pid is None or pid <= 0:
         return False
     try:
@@ -141,7 +142,7 @@ class FileLock:
                     raise
                 who = _read_holder(fd)
                 os.close(fd)
-                if (who is None or not _alive(who.pid)) and time.monotonic() < deadline:
+                if (who is None or not pid_alive(who.pid)) and time.monotonic() < deadline:
                     # the holder has locked but not written its name yet (the name there is
                     # its predecessor's, or none), or holder() is looking: try again
                     time.sleep(0.005)
@@ -186,4 +187,4 @@ class FileLock:
         self.release()
 
 
-__all__ = ["UNKNOWN", "FileLock", "Holder", "LockHeld", "holder"]
+__all__ = ["UNKNOWN", "FileLock", "Holder", "LockHeld", "holder", "pid_alive"]

@@ -1,8 +1,10 @@
 """`minseg-tui analyze LOG.csv [--json] [--predictions OUT.csv]`: the model check of a step log.
 
 Fits the first-order model, simulates it on the measured input, says where it deviates,
-names the cause and its evidence, fits the extended model and measures the gain. Bad
-input exits 2 with one line (from read_step_log).
+names the causes and their evidence, fits the extended model and measures the gain. The
+log's header lines ``# ts:``, ``# cpr:`` and ``# omega_over:`` tell it the nominal period,
+the encoder's resolution and how the speed was computed (else they are read off the data).
+Bad input exits 2 with one line (from read_step_log).
 """
 
 from __future__ import annotations
@@ -15,8 +17,7 @@ from pathlib import Path
 from minseg_tui.cli.output import output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log
-from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.check.report import text
+from minseg_tui.model.check import CheckResult, check, text
 from minseg_tui.model.steplog import problem
 
 
@@ -66,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
     refused = problem(log.t, log.u, log.omega, ts)
     if refused:
         raise InputError(log.source, None, refused)
-    result = check(log.t, log.u, log.omega, ts=ts)
+    result = check(log.t, log.u, log.omega, ts=ts, cpr=log.declared_cpr, omega_over=log.omega_over)
     if args.predictions:
         try:
             write_predictions(args.predictions, result)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+import textwrap
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.lab.files import read_step_log, read_table
@@ -62,6 +63,11 @@ def _g(x: float, digits: int = 4) -> str:
     return f"{x:.{digits}g}"
 
 
+def _wrap(text: str) -> list[str]:
+    """A long sentence as indented lines of at most 96 characters."""
+    return textwrap.wrap(text, width=96, initial_indent="   ", subsequent_indent="   ")
+
+
 def render(result: Identification) -> str:
     """The human report: the table of Tasks 4-9, then Tasks 11-15, then what the numbers show."""
     out = [f"R = {_g(result.R)} ohm (Task 2)", ""]
@@ -99,23 +105,28 @@ def render(result: Identification) -> str:
             if s.T_63 is not None
             else "not read (the speed never reached 63 %)"
         )
+        fit = s.fit
         out += [
             "",
-            f"Step log: {len(s.steps)} rising step(s); angle from {s.fit.angle_source}, time from {s.fit.time_source}",
-            f"omega_ss = {_g(s.omega_ss)} rad/s, u_ss = {_g(s.u_ss)} V ({how})",
-            f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V (Task 11)",
+            f"Step log: {len(s.steps)} rising step(s); angle from {fit.angle_source}, time from {fit.time_source}",
+            f"omega_ss = {_g(s.omega_ss)} rad/s (fitted), u_ss = {_g(s.u_ss)} V ({how})",
+            f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V +- {_g((s.K_ci[1] - s.K_ci[0]) / 2, 2)} (95 %, Task 11)",
             f"T, 63 % reading      = {t63} (Task 12, median over the rising steps)",
             f"T, least squares     = {s.T * 1e3:.2f} ms, 95 % interval {s.T_ci[0] * 1e3:.2f} to {s.T_ci[1] * 1e3:.2f} ms",
-            "   (fit of the first-order response to every rising step, modelling the measured speed as the",
-            "    mean over each sample interval; the model uses this T)",
+            *_wrap(
+                "(the first-order response fitted to the encoder angle at the log's sample times, so "
+                "the sampling is part of the model, with a time shift of the steps against the samples "
+                f"as a nuisance: {fit.shift * 1e3:+.2f} ms; {fit.why}; the model uses this T)"
+            ),
+            *(_wrap(s.T_63_note) if s.T_63_note else []),
             f"J = T (R f + k_v k_a) / R = {_g(s.J, 3)} kg m^2 (Task 13)",
             "",
             f"Model (Task 14): {_g(s.T)} w' = -w + {_g(s.K)} u_A",
             f"At u_A = 5 V (Task 15): omega = {_g(s.K * 5.0)} rad/s",
         ]
     out += ["", "What the numbers show:"]
-    if result.findings:
-        out += [f"- {f.message}" for f in result.findings]
+    if result.observations:
+        out += [f"- {f.message}" for f in result.observations]
     else:
         out.append("- nothing unusual: the rows agree and the step fits the model.")
     return "\n".join(out) + "\n"

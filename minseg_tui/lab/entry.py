@@ -193,8 +193,7 @@ def parse_quantity(
     def refuse(why: str) -> EntryRefused:
         return EntryRefused(label, None, f"{why}; {want}")
 
-    raw = text if text is not None else ""
-    stripped = raw.strip()
+    stripped = text.strip()
     if not stripped:
         return _raise(refuse("nothing typed"))
     m = _NUMBER.match(stripped)

@@ -29,7 +29,7 @@ from numpy.typing import NDArray
 from minseg_tui.errors import InputError
 from minseg_tui.lab.csvread import NUMBER, CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steplog import StepLog, command, find_edges
+from minseg_tui.model.steplog import StepLog, command, find_edges, header_problem
 
 TABLE_COLUMNS: dict[str, str] = {
     "u_req": "V",
@@ -196,7 +196,9 @@ def write_table(path: str | Path, readings: list[Reading]) -> None:
 def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
     """A step log (see the module docstring) as a StepLog, ``source`` the path as given.
 
-    Refuses (InputError naming file and line): an empty file, a missing t/u/omega column,
+    Refuses (InputError naming file and line): a header field the log format defines with a
+    value it does not allow (``# cpr:`` not a whole number above 0, ``# omega_over:`` other
+    than interval or nominal), an empty file, a missing t/u/omega column,
     a field that is not a number in t, u, omega or a known numeric column (u_req, theta,
     count, t_us, seq, ...), a value beyond what a MinSeg produces (LIMITS, UINT32_COLUMNS),
     more than MAX_LOG_ROWS rows, time (t, or t_us modulo 2^32) that does not increase, a
@@ -214,6 +216,10 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
         max_rows=MAX_LOG_ROWS,
         rows_are="what the link keeps of one recording, 67 min at 2 ms",
     )
+    for key, value in f.metadata.items():
+        refused = header_problem(key, value)
+        if refused:
+            raise InputError(f.source, f.metadata_lines[key], refused)
     _check_limits(f, units)
     lines = f.lines
     t = f.numbers("t")

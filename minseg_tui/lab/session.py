@@ -628,7 +628,7 @@ class Session:
         if step_id is None or lab_steps.step(step_id).part in ("Table", "Results", "Step response"):
             res = self.results()
             if res.identification:
-                out += [Notice(f.code, f.message) for f in res.identification.findings]
+                out += [Notice(f.code, f.message) for f in res.identification.observations]
         return out
 
     def comparisons(self, step_id: str | None = None) -> list[Comparison]:

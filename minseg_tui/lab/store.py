@@ -26,7 +26,7 @@ from typing import Any
 
 from minseg_tui.errors import InputError, MinsegError
 from minseg_tui.lab.schema import KIND, SCHEMA, SESSION, problem, salvage
-from minseg_tui.lock import FileLock, LockHeld, holder
+from minseg_tui.lock import FileLock, LockHeld, holder, pid_alive
 
 MAX_SESSION_BYTES = 16 * 2**20
 """Largest session.json read (16 MiB; a full lab's is a few tens of kB)."""
@@ -143,24 +143,12 @@ def clean_leftovers(folder: Path) -> list[str]:
             continue
         for name in names:
             m = _LEFTOVER.fullmatch(name)
-            if m is None or _alive(int(m.group(1))):
+            if m is None or pid_alive(int(m.group(1))):
                 continue
             with contextlib.suppress(OSError):
                 os.unlink(where / name)
                 removed.append(str((where / name).relative_to(folder)))
     return sorted(removed)
-
-
-def _alive(pid: int) -> bool:
-    if pid <= 0:
-        return False
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
 
 
 def atomic_write_text(path: Path, text: str) -> None:

@@ -8,13 +8,18 @@ What it models, beyond T omega' = -omega + K u_A:
   ``coast`` (terminals open, i = 0, the wheel runs down on friction alone);
 - an optional dead time (s) between command and motor, and an optional extra pole ``T2``
   (s) on the motor voltage (for instance the armature's L/R);
+- an optional current limit ``i_max`` (A) of the driver: while the drive would push more
+  current in the direction of motion, it gets i_max (the wheel ramps at a near-constant
+  acceleration);
+- an optional hand on the wheel (:class:`Touch`): a braking torque over a stretch of time;
 - the encoder: 720 counts per wheel revolution, read as an integer count.
 
 Loop jitter of the sample instants lives in :func:`record`, which plays a board sampling
 the plant on its own clock. Everything random is drawn from a seeded generator.
 
 Integration is exact for piecewise-constant input (closed-form exponentials between
-events, the stop time of dry friction solved for); only the extra pole is sub-stepped.
+events, the stop time of dry friction and the end of the current limit solved for); only
+the extra pole is sub-stepped.
 """
 
 from __future__ import annotations
@@ -33,6 +38,16 @@ ZeroMode = Literal["brake", "coast"]
 
 
 @dataclass(frozen=True)
+class Touch:
+    """A hand on the wheel: a braking torque ``torque`` (N m, opposing the motion like dry
+    friction) from ``start`` to ``end`` (s, plant time)."""
+
+    start: float
+    end: float
+    torque: float
+
+
+@dataclass(frozen=True)
 class PlantParams:
     """Parameters of the simulated board + motor, in SI units.
 
@@ -42,7 +57,8 @@ class PlantParams:
     v_supply: supply voltage, V (|u_A| is at most v_supply - v_drop);
     zero_mode: "brake" or "coast" at zero command;
     dead_time: delay from command to motor, s; T2: extra pole on the motor voltage, s;
-    cpr: encoder counts per wheel revolution.
+    cpr: encoder counts per wheel revolution; i_max: the driver's current limit, A (0 for
+    none); touch: a hand on the wheel, or None.
     """
 
     motor: MotorParams = PUBLISHED
@@ -53,11 +69,15 @@ class PlantParams:
     dead_time: float = 0.0
     T2: float = 0.0
     cpr: int = 720
+    i_max: float = 0.0
+    touch: Touch | None = None
 
     def __post_init__(self) -> None:
         m = self.motor
         if min(m.R, m.k_v, m.k_a, m.J) <= 0 or m.f < 0 or self.tau_c < 0:
             raise ValueError("R, k_v, k_a and J must be positive; f and tau_c not negative")
+        if self.i_max < 0:
+            raise ValueError("i_max must not be negative (0 for no current limit)")
         if self.dead_time < 0 or self.T2 < 0 or self.v_drop < 0 or self.cpr <= 0:
             raise ValueError("dead_time, T2 and v_drop must not be negative; cpr positive")
         if self.zero_mode not in ("brake", "coast"):
@@ -158,10 +178,15 @@ class Plant:
         if dt < 0:
             raise ValueError("dt must not be negative")
         end = self.t + dt
+        touch = self.params.touch
         while self.t < end - 1e-15:
             stop = end
             if self._pending and self._pending[0][0] < stop:
                 stop = max(self._pending[0][0], self.t)
+            if touch is not None:
+                for edge in (touch.start, touch.end):
+                    if self.t < edge < stop:
+                        stop = edge
             if stop > self.t:
                 self._evolve(stop - self.t)
             self.t = stop
@@ -175,6 +200,8 @@ class Plant:
         p = self.params
         if self.coasting or p.T2 <= 0:
             self._pieces(h, self._target_voltage())
+            if self.coasting:  # no current: the pole's voltage is the back-emf (the net torque 0)
+                self._u_eff = self.omega / p.motor.K
             return
         target = p.u_applied(self._active)
         n = max(1, math.ceil(h / (p.T2 / 20.0)))
@@ -202,7 +229,10 @@ class Plant:
             a, b_drive = m.f / m.J, 0.0
         else:
             a, b_drive = m.damping / (m.R * m.J), m.k_a * u / (m.R * m.J)
-        c = p.tau_c / m.J
+        tau = p.tau_c
+        if p.touch is not None and p.touch.start <= self.t < p.touch.end:
+            tau += p.touch.torque
+        c = tau / m.J
         left = h
         while left > 0:
             w0 = self.omega
@@ -212,16 +242,23 @@ class Plant:
                 s = math.copysign(1.0, b_drive)
             else:
                 s = math.copysign(1.0, w0)
-            b = b_drive - s * c
-            t_stop = _time_to_zero(w0, a, b, s)
-            step = left if t_stop is None or t_stop >= left else t_stop
-            w1, dtheta = _linear_motion(w0, a, b, step)
+            a_now, b, knee = a, b_drive - s * c, None
+            if p.i_max > 0 and not self.coasting and s * (u - m.k_v * w0) / m.R > p.i_max:
+                # the driver limits the current: torque k_a i_max until the back-emf takes over
+                a_now, b = m.f / m.J, s * m.k_a * p.i_max / m.J - s * c
+                knee = _time_to(w0, a_now, b, (u - s * m.R * p.i_max) / m.k_v)
+            t_stop = _time_to_zero(w0, a_now, b, s)
+            ends = [e for e in (t_stop, knee) if e is not None]
+            step = min([left, *ends])
+            w1, dtheta = _linear_motion(w0, a_now, b, step)
             self.theta += dtheta
             left -= step
             if t_stop is not None and step == t_stop:
                 self.omega = 0.0
             else:
                 self.omega = w1
+            if knee is not None and step == knee:
+                self.omega = (u - s * m.R * p.i_max * (1.0 - 1e-12)) / m.k_v
 
 
 def _linear_motion(w0: float, a: float, b: float, h: float) -> tuple[float, float]:
@@ -231,6 +268,17 @@ def _linear_motion(w0: float, a: float, b: float, h: float) -> tuple[float, floa
     w_inf = b / a
     e = math.exp(-a * h)
     return w_inf + (w0 - w_inf) * e, w_inf * h + (w0 - w_inf) * (1.0 - e) / a
+
+
+def _time_to(w0: float, a: float, b: float, target: float) -> float | None:
+    """When w' = -a w + b, started at w0, reaches ``target`` (None: never)."""
+    if a * 1.0 < 1e-12:
+        return (target - w0) / b if b != 0 and (target - w0) / b >= 0 else None
+    w_inf = b / a
+    ratio = (target - w_inf) / (w0 - w_inf) if w0 != w_inf else 0.0
+    if ratio <= 0 or ratio > 1:
+        return None
+    return -math.log(ratio) / a
 
 
 def _time_to_zero(w0: float, a: float, b: float, s: float) -> float | None:
@@ -276,12 +324,19 @@ def record(
     ts: float = 0.025,
     seed: int = 0,
     jitter_us: float = 0.0,
+    *,
+    command_on_grid: bool = False,
+    encoder_phase: bool = False,
 ) -> Recording:
     """Sample the plant as the board does: at k ts (+ loop latency), then apply commands[k].
 
     ``commands`` is the requested voltage (V) in force from each sample on. Loop latency
     is drawn uniformly from [0, jitter_us] microseconds for each sample (seeded): the
-    board's timestamp records when the count was really read.
+    board's timestamp records when the count was really read. With ``command_on_grid`` the
+    command changes at k ts itself, before the late read (a loop whose timer sets the drive
+    on time and reads the encoder when it gets to it), not right after the read (this
+    firmware). With ``encoder_phase`` the encoder starts at a random fraction of a count
+    (seeded), as a real one does, instead of exactly on a count's edge.
     """
     u = np.asarray(commands, dtype=float)
     n = u.size
@@ -291,14 +346,20 @@ def record(
     t = np.arange(n) * ts + lateness
     t_us = (np.floor(t * 1e6 / 4.0) * 4).astype(np.int64)
     t = t_us / 1e6
+    if encoder_phase:
+        plant.theta = float(rng.uniform(0.0, 2.0 * math.pi / params.cpr))
     count = np.empty(n, dtype=np.int64)
     u_a = np.empty(n)
     omega = np.empty(n)
     current = np.empty(n)
     for k in range(n):
-        plant.advance(t[k] - plant.t)
+        if command_on_grid:
+            plant.advance(max(k * ts - plant.t, 0.0))
+            plant.set_command(u[k])
+        plant.advance(max(t[k] - plant.t, 0.0))
         count[k] = plant.count
-        plant.set_command(u[k])
+        if not command_on_grid:
+            plant.set_command(u[k])
         u_a[k] = plant.u_A
         omega[k] = plant.omega
         current[k] = plant.current

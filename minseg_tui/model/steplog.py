@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -18,6 +19,30 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui.units import COUNTS_PER_REV
 
 FloatArray = NDArray[np.float64]
+
+
+HEADER_FIELDS: dict[str, str] = {
+    "cpr": "encoder counts per wheel revolution, a whole number above 0",
+    "omega_over": "how omega was computed: 'interval' (the angle change over each row's real "
+    "sample interval) or 'nominal' (over the nominal period ts)",
+}
+"""``# key: value`` header lines whose values the step-log format defines (and checks)."""
+
+
+def header_problem(key: str, value: str) -> str | None:
+    """Why a header line ``# key: value`` cannot be taken, as an 'expected ...' sentence,
+    or None (keys the format does not define are free text)."""
+    v = value.strip()
+    if key == "cpr":
+        try:
+            n = int(v)
+        except ValueError:
+            n = 0
+        if n <= 0 or str(n) != v.lstrip("+"):
+            return f"expected # cpr: a whole number of counts per revolution above 0, got '{v}'"
+    if key == "omega_over" and v not in ("interval", "nominal"):
+        return f"expected # omega_over: interval or nominal, got '{v}'"
+    return None
 
 
 @dataclass(frozen=True, eq=False)
@@ -35,7 +60,7 @@ class StepLog:
     t: FloatArray
     u: FloatArray
     omega: FloatArray
-    extra: Mapping[str, NDArray] = field(default_factory=dict)
+    extra: Mapping[str, NDArray[Any]] = field(default_factory=dict)
     metadata: Mapping[str, str] = field(default_factory=dict)
     source: str = ""
     lines: NDArray[np.int64] | None = None
@@ -58,10 +83,11 @@ class StepLog:
         """Column names in file order: t, u, omega, then the extra columns."""
         return ["t", "u", "omega", *self.extra]
 
-    def column(self, name: str) -> NDArray:
+    def column(self, name: str) -> NDArray[Any]:
         """A column by name (t, u, omega or an extra one); KeyError if absent."""
         if name in ("t", "u", "omega"):
-            return getattr(self, name)
+            col: NDArray[Any] = getattr(self, name)
+            return col
         return self.extra[name]
 
     def line_of(self, row: int) -> int | None:
@@ -83,6 +109,19 @@ class StepLog:
         except ValueError:
             return COUNTS_PER_REV
 
+    @property
+    def declared_cpr(self) -> int | None:
+        """Counts per revolution when the log says (``# cpr:``), else None."""
+        v = self.metadata.get("cpr")
+        return None if v is None or header_problem("cpr", v) else int(v)
+
+    @property
+    def omega_over(self) -> str | None:
+        """'interval' or 'nominal' when the log says how omega was computed
+        (``# omega_over:``), else None."""
+        v = self.metadata.get("omega_over")
+        return None if v is None or header_problem("omega_over", v) else v.strip()
+
     def board_time(self) -> FloatArray:
         """Sample times in s on the board's clock: from ``t_us`` when the log has it.
 
@@ -100,7 +139,9 @@ class StepLog:
 
         From ``theta`` if present, else from ``count`` (``cpr`` counts per revolution), else
         rebuilt from ``omega`` read as the mean speed over each sample interval (the Euler
-        velocity): theta_k = theta_k-1 + omega_k (t_k - t_k-1).
+        velocity): theta_k = theta_k-1 + omega_k dt_k. dt_k is the nominal sample period when
+        omega is the manual's Euler derivative at a fixed Ts (every omega_k Ts is then a whole
+        number of counts), else the interval t_k - t_k-1.
         """
         if "theta" in self.extra and self.extra["theta"].dtype.kind in "fi":
             return np.asarray(self.extra["theta"], dtype=float), "the theta column"
@@ -108,8 +149,32 @@ class StepLog:
             th = np.asarray(self.extra["count"], dtype=float) * (2.0 * np.pi / self.cpr)
             return th, "the encoder count"
         t = self.board_time()
-        dth = np.concatenate(([0.0], np.asarray(self.omega[1:], float) * np.diff(t)))
+        w = np.asarray(self.omega[1:], float)
+        ts = _euler_period(w, np.diff(t), 2.0 * np.pi / self.cpr)
+        if ts is not None:
+            dth = np.concatenate(([0.0], w * ts))
+            return np.cumsum(dth), (
+                f"the omega column read as the Euler speed (theta_k - theta_k-1) / {ts * 1e3:.6g} ms"
+            )
+        dth = np.concatenate(([0.0], w * np.diff(t)))
         return np.cumsum(dth), "the omega column read as the mean speed over each sample interval"
+
+
+def _euler_period(w: FloatArray, dt: FloatArray, q: float) -> float | None:
+    """The fixed period Ts (s) with which ``w`` (rad/s) was computed as whole encoder steps
+    of ``q`` rad per sample, if it was (nearly every w Ts / q within 0.001 of a whole
+    number while the wheel turns); None otherwise. ``dt``: the sample intervals (s)."""
+    moving = np.abs(w) > 0
+    if np.count_nonzero(moving) < 3 or dt.size != w.size:
+        return None
+    guess = float(np.median(dt))
+    steps = np.round(np.abs(w[moving]) * guess / q)
+    if not np.all(steps >= 1):
+        return None
+    ts = float(np.median(q * steps / np.abs(w[moving])))
+    x = np.abs(w[moving]) * ts / q
+    whole = np.abs(x - np.round(x)) <= 1e-3
+    return ts if np.mean(whole) >= 0.99 else None
 
 
 @dataclass(frozen=True)
@@ -139,18 +204,13 @@ def _changes(v: FloatArray, small: float) -> list[tuple[int, int]]:
     """Runs (first, last) of rows whose change from the previous row exceeds ``small``,
     grouping consecutive changes of the same sign."""
     d = np.diff(v)
-    runs: list[tuple[int, int]] = []
-    k = 0
-    while k < d.size:
-        if abs(d[k]) > small:
-            j = k
-            while j + 1 < d.size and abs(d[j + 1]) > small and np.sign(d[j + 1]) == np.sign(d[k]):
-                j += 1
-            runs.append((k + 1, j + 1))
-            k = j + 1
-        else:
-            k += 1
-    return runs
+    big = np.abs(d) > small
+    sign = np.sign(d)
+    goes_on = np.zeros(d.size, dtype=bool)  # a change that continues the run before it
+    goes_on[1:] = big[1:] & big[:-1] & (sign[1:] == sign[:-1])
+    firsts = np.flatnonzero(big & ~goes_on)
+    lasts = np.flatnonzero(big & ~np.concatenate((goes_on[1:], [False])))
+    return [(int(a) + 1, int(b) + 1) for a, b in zip(firsts, lasts, strict=True)]
 
 
 def find_edges(u: FloatArray) -> list[Edge]:

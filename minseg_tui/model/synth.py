@@ -1,12 +1,13 @@
-"""Realistic step logs with one hidden effect, for tests, benchmarks and a practice mode.
+"""Realistic step logs with hidden effects, for tests, benchmarks and a practice mode.
 
 A log is what a MinSeg board records while a square wave of requested voltages drives
 the motor: Ts = 0.025 s, the encoder's integer counts (720 per revolution), loop jitter
 of the sample instants, the Euler velocity (theta_k - theta_k-1)/Ts with the nominal Ts
 (or the lab's moving average of it). The plant is :func:`minseg_tui.model.plant.record`
-with the effect's :class:`PlantParams`; everything else in it is first order.
+with the effects' :class:`PlantParams`; everything else in it is first order.
 
-Effects (the model check's cause names) and the range a parameter is drawn from:
+Effects (the model check's cause names) and the range a parameter is drawn from; a log
+holds one (``cause``), or two at once (``cause`` and ``also``):
 
 =================  ======  ===========  ===========================================
 cause              param   range        how it is made
@@ -17,22 +18,27 @@ dead_time          delay   10-60 ms     PlantParams.dead_time
 velocity_filter    taps    3-20         omega is the moving average of N Euler values
 coast_on_zero      T_coast 0.3-3 s      zero_mode coast, f = J / T_coast
 second_pole        T2      10-40 ms     PlantParams.T2
+current_limit      a_max   20-60 rad/s2 i_max = a_max J / k_a (the driver's current limit)
 =================  ======  ===========  ===========================================
 
 Messiness a real log has, each optional: one wild sample (a misread count), a slow
 creep of the speed after each rise, one step whose command reaches the motor between
-two samples. Everything random comes from one seeded generator.
+two samples, and a hand on the wheel (a braking torque for 0.15-0.3 s in a settled driven
+stretch). Everything random comes from one seeded generator.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.plant import Plant, PlantParams, record
+from minseg_tui.model.identify import Reading
+from minseg_tui.model.motor import PUBLISHED
+from minseg_tui.model.plant import Plant, PlantParams, Touch, record
+from minseg_tui.model.steplog import StepLog
 
 TS = 0.025
 """The board's sample period, s."""
@@ -43,6 +49,7 @@ PARAM_RANGES: dict[str, tuple[str, float, float]] = {
     "velocity_filter": ("taps", 3, 20),
     "coast_on_zero": ("T_coast", 0.3, 3.0),
     "second_pole": ("T2", 0.010, 0.040),
+    "current_limit": ("a_max", 20.0, 60.0),
 }
 """Cause -> (parameter name, low, high): the realistic range a hidden effect is drawn from."""
 
@@ -58,7 +65,9 @@ class SynthLog:
     omega_true: true wheel speed at each sample, rad/s; cause and param: the hidden
     effect (param None for ``none``); ts: nominal sample period, s; taps: the velocity
     filter's length (1 for the plain Euler velocity); wild_row, late_step_row, creep:
-    the messiness put in (None/0 when absent).
+    the messiness put in (None/0 when absent); effects: every hidden effect and its
+    parameter (cause and the second one, if any); touch: (start, end) of the hand on the
+    wheel, s, or None.
     """
 
     t: NDArray[np.float64]
@@ -74,6 +83,8 @@ class SynthLog:
     wild_row: int | None = None
     late_step_row: int | None = None
     creep: float = 0.0
+    effects: dict[str, float] = field(default_factory=dict)
+    touch: tuple[float, float] | None = None
 
 
 def commands(
@@ -97,21 +108,40 @@ def commands(
 
 def plant_for(cause: str, param: float | None) -> PlantParams:
     """The plant that hides ``cause`` with parameter ``param`` (and nothing else)."""
-    base = PlantParams(tau_c=0.0, v_drop=0.45, v_supply=5.0, zero_mode="brake")
-    m = base.motor
-    if cause in ("none", "velocity_filter"):
-        return base
+    if cause == "none":
+        return plant_with({})
     if param is None:
         raise ValueError(f"{cause} needs a parameter")
-    if cause == "coulomb_friction":
-        return replace(base, tau_c=param * m.k_a / m.R)
-    if cause == "dead_time":
-        return replace(base, dead_time=param)
-    if cause == "second_pole":
-        return replace(base, T2=param)
-    if cause == "coast_on_zero":
-        return replace(base, zero_mode="coast", motor=replace(m, f=m.J / param))
-    raise ValueError(f"unknown cause {cause!r}")
+    return plant_with({cause: param})
+
+
+def plant_with(effects: dict[str, float]) -> PlantParams:
+    """The plant that hides every effect in ``effects`` ({cause: parameter}) at once."""
+    p = PlantParams(tau_c=0.0, v_drop=0.45, v_supply=5.0, zero_mode="brake")
+    m = p.motor
+    for cause, param in effects.items():
+        if cause == "velocity_filter":
+            continue  # a property of the measurement, not of the plant
+        if cause == "coulomb_friction":
+            p = replace(p, tau_c=param * m.k_a / m.R)
+        elif cause == "dead_time":
+            p = replace(p, dead_time=param)
+        elif cause == "second_pole":
+            p = replace(p, T2=param)
+        elif cause == "coast_on_zero":
+            p = replace(p, zero_mode="coast", motor=replace(p.motor, f=m.J / param))
+        elif cause == "current_limit":
+            p = replace(p, i_max=param * m.J / m.k_a)
+        else:
+            raise ValueError(f"unknown cause {cause!r}")
+    return p
+
+
+def _draw(rng: np.random.Generator, cause: str) -> float:
+    _, lo, hi = PARAM_RANGES[cause]
+    if cause == "velocity_filter":
+        return float(rng.integers(int(lo), int(hi) + 1))
+    return float(rng.uniform(lo, hi))
 
 
 def make_log(
@@ -125,25 +155,39 @@ def make_log(
     creep: float = 0.0,
     late_step: bool = False,
     half_period: float = 1.0,
+    also: str | None = None,
+    also_param: float | None = None,
+    touch: bool = False,
 ) -> SynthLog:
-    """A realistic log with ``cause`` hidden in it (param drawn from its range when None).
+    """A realistic log with ``cause`` hidden in it (param drawn from its range when None),
+    and a second effect ``also`` (``also_param`` likewise) when given.
 
     ``wild``: one count misread by 15-60 counts in a steady stretch; ``creep``: the speed
     creeps up by this fraction (e.g. 0.05) over about a second after each rise; ``late_step``:
-    one step's command reaches the motor 30-70 % of a sample period after its sample.
+    one step's command reaches the motor 30-70 % of a sample period after its sample;
+    ``touch``: a hand brakes the wheel for 0.15-0.3 s in a settled driven stretch, with a
+    torque that would take 30-60 % of the speed there.
     """
-    if cause not in CAUSES:
-        raise ValueError(f"unknown cause {cause!r}; one of {', '.join(CAUSES)}")
+    for c in (cause, also):
+        if c is not None and c not in CAUSES:
+            raise ValueError(f"unknown cause {c!r}; one of {', '.join(CAUSES)}")
+    if also is not None and (also == cause or "none" in (cause, also)):
+        raise ValueError("a second effect must be another cause than the first, and not none")
     rng = np.random.default_rng(seed)
     if cause != "none" and param is None:
-        _, lo, hi = PARAM_RANGES[cause]
-        param = (
-            int(rng.integers(int(lo), int(hi) + 1))
-            if cause == "velocity_filter"
-            else float(rng.uniform(lo, hi))
-        )
-    params = plant_for(cause, param)
+        param = _draw(rng, cause)
+    if also is not None and also_param is None:
+        also_param = _draw(rng, also)
+    effects: dict[str, float] = {}
+    if cause != "none" and param is not None:
+        effects[cause] = float(param)
+    if also is not None and also_param is not None:
+        effects[also] = float(also_param)
+    params = plant_with(effects)
     u_req = commands(rng, amplitudes, duration, half_period=half_period)
+    hand = _touch(rng, u_req, params, half_period) if touch else None
+    if hand is not None:
+        params = replace(params, touch=hand)
     late_row = None
     if late_step:
         edges = np.flatnonzero(np.diff(u_req) != 0) + 1
@@ -155,7 +199,7 @@ def make_log(
         t, count, omega_true = rec.t, rec.count, rec.omega_true
     theta = count * (2.0 * math.pi / params.cpr)
     if creep:
-        theta = _add_creep(theta, u_req, creep)
+        theta = _add_creep(np.asarray(theta, dtype=float), u_req, creep)
         count = np.floor(theta * params.cpr / (2.0 * math.pi) + 1e-9).astype(np.int64)
     wild_row = None
     if wild:
@@ -164,7 +208,7 @@ def make_log(
         wild_row = int(rng.choice(steady))
         count = count.copy()
         count[wild_row] += int(rng.choice([-1, 1]) * rng.integers(15, 61))
-    taps = int(param) if cause == "velocity_filter" and param is not None else 1
+    taps = int(effects.get("velocity_filter", 1))
     omega = _measured(count, params.cpr, taps)
     u = np.array([params.u_applied(v) for v in u_req])
     return SynthLog(
@@ -180,7 +224,23 @@ def make_log(
         wild_row=wild_row,
         late_step_row=late_row,
         creep=creep,
+        effects=effects,
+        touch=None if hand is None else (hand.start, hand.end),
     )
+
+
+def _touch(
+    rng: np.random.Generator, u_req: NDArray[np.float64], params: PlantParams, half: float
+) -> Touch:
+    """A hand on the wheel in a driven stretch (not the first): it starts 0.35 s or more
+    after the step, lasts 0.15-0.3 s and ends 0.25 s or more before the next step."""
+    ups = [int(k) for k in np.flatnonzero(np.diff(u_req) != 0) + 1 if u_req[k] > 0]
+    k = ups[int(rng.integers(1, max(2, len(ups) - 1)))]
+    length = float(rng.uniform(0.15, 0.30))
+    start = k * TS + float(rng.uniform(0.35, max(0.36, half - 0.25 - length)))
+    m = params.motor
+    drive = m.k_a * params.u_applied(float(u_req[k])) / m.R
+    return Touch(start, start + length, float(rng.uniform(0.3, 0.6)) * drive)
 
 
 def _measured(count: NDArray[np.int64], cpr: int, taps: int) -> NDArray[np.float64]:
@@ -206,7 +266,8 @@ def _add_creep(
             since[k - 1] + 1 if u_req[k - 1] > 0 and u_req[k - 1] == u_req[max(k - 2, 0)] else 0
         )
     extra = creep * (1.0 - np.exp(-since * TS / 0.8)) * (u_req > 0)
-    return theta[0] + np.cumsum(speed * (1.0 + extra))
+    out: NDArray[np.float64] = theta[0] + np.cumsum(speed * (1.0 + extra))
+    return out
 
 
 def _sample_late(
@@ -235,4 +296,84 @@ def _sample_late(
     return t, count, omega
 
 
-__all__ = ["CAUSES", "PARAM_RANGES", "TS", "SynthLog", "commands", "make_log", "plant_for"]
+# -- logs for the identification of K and T (Tasks 10-15) ---------------------------------------
+
+IDENT_LEVELS: tuple[float, ...] = (2.0, 3.0, 4.0)
+"""Requested high levels of the identification logs' steps, V."""
+
+IDENT_V_DROP = 0.45
+"""The driver's voltage loss in the identification logs, V."""
+
+
+@dataclass(frozen=True)
+class IdentLog:
+    """A first-order log for the identification and its truth: T (s) and K (rad/s per V
+    of u_A), the plant it came from."""
+
+    log: StepLog
+    T: float
+    K: float
+    params: PlantParams
+
+
+def identification_table() -> list[Reading]:
+    """The exact Task 4-9 table of the identification logs' plant (before T is drawn: J does
+    not enter it): u_req at IDENT_LEVELS, u_ss = u_req - IDENT_V_DROP, omega_ss = K u_ss and
+    i_ss (mA) from the published motor."""
+    m = PUBLISHED
+    out = []
+    for u in IDENT_LEVELS:
+        u_ss = u - IDENT_V_DROP
+        out.append(Reading(u, u_ss, m.K * u_ss, (u_ss - m.k_v * m.K * u_ss) / m.R * 1e3))
+    return out
+
+
+def identification_log(
+    seed: int,
+    ts: float = 0.025,
+    T_range: tuple[float, float] = (0.08, 0.3),
+    late_us: float = 2000.0,
+    on_grid: bool = True,
+    stamped: bool = True,
+) -> IdentLog:
+    """A seeded log as issue 11's side-by-side measures: the published MinSeg with T drawn
+    from ``T_range`` (s, through J), no dry friction, braking at zero; 0.2 s at rest, then
+    4 rising steps of 5 T to a level from IDENT_LEVELS and back to 0; the loop late by
+    0-``late_us`` us, the command on the board's grid (``on_grid``) or right after the late
+    read; the encoder starting anywhere within a count; the Euler speed over the nominal
+    ``ts``. ``stamped``: t is the read instants and the log has t_us; else t = k ts."""
+    rng = np.random.default_rng(seed)
+    T = float(rng.uniform(*T_range))
+    motor = replace(PUBLISHED, J=T * PUBLISHED.damping / PUBLISHED.R)
+    params = PlantParams(motor=motor, tau_c=0.0, v_drop=IDENT_V_DROP, zero_mode="brake")
+    half = max(4, round(5 * T / ts))
+    parts = [np.zeros(max(4, round(0.2 / ts)))]
+    for _ in range(4):
+        parts += [np.full(half, float(rng.choice(IDENT_LEVELS))), np.zeros(half)]
+    cmd = np.concatenate(parts)
+    rec = record(params, cmd, ts, seed, late_us, command_on_grid=on_grid, encoder_phase=True)
+    q = 2.0 * math.pi / params.cpr
+    omega = np.concatenate(([0.0], np.diff(rec.count) * q / ts))
+    extra: dict[str, NDArray[np.generic]] = {"u_req": cmd}
+    if stamped:
+        extra["t_us"] = rec.t_us
+    t = rec.t if stamped else np.arange(cmd.size, dtype=np.float64) * ts
+    log = StepLog(t=t, u=rec.u_A, omega=omega, extra=extra, source="synth")
+    return IdentLog(log, T, motor.K, params)
+
+
+__all__ = [
+    "IDENT_LEVELS",
+    "IDENT_V_DROP",
+    "IdentLog",
+    "identification_log",
+    "identification_table",
+    "CAUSES",
+    "PARAM_RANGES",
+    "TS",
+    "SynthLog",
+    "commands",
+    "make_log",
+    "plant_for",
+    "plant_with",
+]

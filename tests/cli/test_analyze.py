@@ -53,7 +53,7 @@ def test_human_report(tmp_path, capsys):
     assert "Baseline (first order)" in out
     assert "Where it deviates" in out
     assert "Cause: coulomb_friction" in out
-    assert "stop in finite time" in out
+    assert "stands still" in out and "in finite time" in out
     assert "Extended model (first_order+coulomb_friction)" in out
     assert "Gain:" in out
     assert "misread encoder count" in out
@@ -93,6 +93,14 @@ def test_clean_log_says_none(tmp_path, capsys):
             "t,u,omega\n" + "".join(f"{k * 0.025},{int(k >= 5)},{k}e300\n" for k in range(20)),
             "|omega (rad/s)| below",
         ),
+        ("# cpr: 72o\nt,u,omega\n0,0,0\n0.1,1,1\n", "bad.csv:1: expected # cpr: a whole number"),
+        ("# ts: 0.01\n# cpr: 0\nt,u,omega\n0,0,0\n", "bad.csv:2: expected # cpr"),
+        ("# cpr: 720.0\nt,u,omega\n0,0,0\n", "got '720.0'"),
+        ("# cpr: -360\nt,u,omega\n0,0,0\n", "above 0"),
+        (
+            "#omega_over: real\nt,u,omega\n0,0,0\n",
+            "bad.csv:1: expected # omega_over: interval or nominal",
+        ),
     ],
 )
 def test_bad_input_exits_2_with_one_line(tmp_path, capsys, text, says):
@@ -100,7 +108,23 @@ def test_bad_input_exits_2_with_one_line(tmp_path, capsys, text, says):
     path.write_text(text)
     assert main(["analyze", str(path)]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "bad.csv" in err and says in err.lower()
+    assert err.count("\n") == 1 and "bad.csv" in err and says.lower() in err.lower()
+
+
+def test_header_says_how_the_speed_was_taken(tmp_path, capsys):
+    """# cpr: and # omega_over: reach the check: the floor from the counts per revolution,
+    the speed simulated the way the header says."""
+    log = make_log("none", seed=34, duration=6.0)
+    path = tmp_path / "log.csv"
+    write_step_log(
+        path,
+        StepLog(t=log.t, u=log.u, omega=log.omega),
+        {"ts": "0.025", "cpr": "720", "omega_over": "nominal"},
+    )
+    d = _analyze(path, capsys)
+    assert d["sampling"]["how"] in ("header", "even")
+    assert d["gain"]["noise_floor"] == pytest.approx(2 * math.pi / 720 / 0.025 / math.sqrt(6))
+    assert d["sampling"]["resolution_how"] == "# cpr: 720"
 
 
 def test_missing_file_exits_2(tmp_path, capsys):
@@ -110,38 +134,47 @@ def test_missing_file_exits_2(tmp_path, capsys):
 
 # -- the real NXT recordings -----------------------------------------------------------------
 # Assumed, since the sheet does not say: Ts = 0.025 s, 360 counts per revolution (the NXT
-# encoder's 1 degree), the PWM command as u = 1 "V". run1 is a step 0 -> 1 at t = 0 from rest;
+# encoder's 1 degree), the PWM command as u = 1 "V". A row's time is its sheet row times Ts,
+# so an empty cell (large run1, row 113) is a lost sample, and the speed is the count change
+# over the real interval (# omega_over: interval). run1 (PWM 0 -> 100 %) already shows one
+# count on its first row, so the step is put one sample before it, after two rows at rest;
 # run2 (PWM switched off) gets one leading row at run1's steady speed under u = 1, then u = 0.
 
 TS = 0.025
 RAD = 2 * math.pi / 360
+NXT_META = {"ts": str(TS), "cpr": "360", "omega_over": "interval"}
 
 
-def _nxt_counts(sheet):
+def _nxt_counts(sheet, column):
+    """(sheet row, count) of every filled cell of ``column`` (uint32 wrap undone)."""
     rows = list(csv.DictReader((NXT / f"motor_response_nxt_{sheet}.csv").open()))
-    a = np.array([int(r["A_encoder_count_run1"]) for r in rows if r["A_encoder_count_run1"]])
-    b = np.array([int(r["B_encoder_count_run2"]) for r in rows if r["B_encoder_count_run2"]])
-    b = np.where(b > 2**31, b - 2**32, b)  # uint32 counting down, wrapped
-    return a, b
+    got = [(int(r["row"]), int(r[column])) for r in rows if r[column]]
+    k = np.array([g[0] for g in got], dtype=float)
+    c = np.array([g[1] for g in got], dtype=np.int64)
+    return k, np.where(c > 2**31, c - 2**32, c)
+
+
+def _speed(k, c):
+    return np.concatenate(([0.0], np.diff(c) * RAD / (np.diff(k) * TS)))
 
 
 def _nxt_logs(tmp_path, sheet):
-    a, b = _nxt_counts(sheet)
-    w1 = np.concatenate(([0.0], np.diff(a) * RAD / TS))
-    run1 = StepLog(
-        t=np.arange(a.size) * TS,
-        u=np.ones(a.size),
-        omega=w1,
-        extra={"u_req": np.concatenate(([0.0], np.ones(a.size - 1)))},
-    )
-    steady = float(np.median(np.diff(a)[-20:])) * RAD / TS
-    w2 = np.concatenate(([steady], np.abs(np.diff(b)) * RAD / TS))
+    k, a = _nxt_counts(sheet, "A_encoder_count_run1")
+    k = np.concatenate(([k[0] - 3, k[0] - 2, k[0] - 1], k))
+    a = np.concatenate(([0, 0, 0], a))
+    u1 = np.where(k >= k[3] - 1, 1.0, 0.0)
+    run1 = StepLog(t=(k - k[3]) * TS, u=u1, omega=_speed(k, a), extra={"count": a})
+    kb, b = _nxt_counts(sheet, "B_encoder_count_run2")
+    w1 = _speed(k, a)
+    steady = float(np.median(w1[-20:]))
+    w2 = np.abs(_speed(kb, b))
+    w2[0] = steady
     u2 = np.zeros(w2.size)
     u2[0] = 1.0
-    run2 = StepLog(t=np.arange(w2.size) * TS, u=u2, omega=w2)
+    run2 = StepLog(t=(kb - kb[0]) * TS, u=u2, omega=w2)
     p1, p2 = tmp_path / f"{sheet}_run1.csv", tmp_path / f"{sheet}_run2.csv"
-    write_step_log(p1, run1, {"ts": str(TS), "source": f"NXT {sheet} run1, assumed Ts"})
-    write_step_log(p2, run2, {"ts": str(TS), "source": f"NXT {sheet} run2, assumed Ts"})
+    write_step_log(p1, run1, {**NXT_META, "source": f"NXT {sheet} run1, assumed Ts"})
+    write_step_log(p2, run2, {**NXT_META, "source": f"NXT {sheet} run2, assumed Ts"})
     return p1, p2
 
 
@@ -151,27 +184,37 @@ def _analyze(path, capsys):
 
 
 def test_nxt_large_run_down_stops_in_finite_time(tmp_path, capsys):
+    # 21, 18, 15, 13, 11, 9, 7, 6, 5, 4, 3, 3, 1, 2, 1, 0 counts per sample: close to linear at
+    # the end and standing still 17 samples (425 ms at the assumed Ts) after the drive stops
     _, run2 = _nxt_logs(tmp_path, "large")
     d = _analyze(run2, capsys)
     assert d["finding"]["cause"] == "coulomb_friction"
+    assert "stands still 425 ms later" in d["finding"]["evidence"]
     assert d["extended"]["rmse"] < d["baseline"]["rmse"]
     assert "starts_moving" in [a["kind"] for a in d["anomalies"]]
 
 
-def test_nxt_small_rise_creeps(tmp_path, capsys):
+def test_nxt_small_runs_are_first_order(tmp_path, capsys):
+    # the rise reaches 39-41 counts per sample in ~10 samples; the step instant is not logged
+    # (put one sample before the first count), so only the shape is pinned: first order, no
+    # filter named, and a run-down that starts moving
     run1, run2 = _nxt_logs(tmp_path, "small")
     d = _analyze(run1, capsys)
-    assert d["finding"]["cause"] == "none"
-    assert [a["kind"] for a in d["anomalies"]] == ["creep"]
+    assert d["finding"]["cause"] in ("none", "dead_time")
+    assert "velocity_filter" not in d["extended"]["model"]
     assert d["baseline"]["fit_percent"] > 80
     d2 = _analyze(run2, capsys)
     assert "starts_moving" in [a["kind"] for a in d2["anomalies"]]
     assert d2["baseline"]["fit_percent"] > 80
 
 
-def test_nxt_large_rise(tmp_path, capsys):
+def test_nxt_large_rise_with_a_lost_sample(tmp_path, capsys):
     run1, _ = _nxt_logs(tmp_path, "large")
     d = _analyze(run1, capsys)
-    # the large motor's rise is slow (T about 0.13 s at the assumed Ts); nothing clear beyond it
+    # the large motor's rise is slow (T about 0.15 s at the assumed Ts); nothing clear beyond it
     assert d["finding"]["cause"] == "none"
-    assert d["baseline"]["params"]["T"] == pytest.approx(0.13, rel=0.2)
+    assert d["baseline"]["params"]["T"] == pytest.approx(0.15, rel=0.2)
+    # the sheet's empty cell at row 113 is one lost sample on a regular clock, and the speed
+    # over the real (double) interval is no wild sample
+    assert [a["kind"] for a in d["anomalies"]] == ["gap"]
+    assert d["sampling"]["lost_samples"] == 1

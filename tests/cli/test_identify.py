@@ -57,6 +57,9 @@ def test_human_report(files, capsys):
         "At u_A = 5 V",
         "What the numbers show:",
         "dry (Coulomb) friction",
+        "rad/s per V +- ",  # K's 95 % interval
+        "time shift of the steps",
+        "half a sample late",  # why the 63 % reading is longer than T
     ):
         assert text in out
 
@@ -77,7 +80,8 @@ def test_json_is_one_object_with_the_contract(files, capsys):
     assert code == 0 and out.count("\n") == 1
     j = json.loads(out)
     assert set(j) == {"R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"}
-    assert set(j["step"]) == {"K", "T", "T_63", "T_ci", "J", "omega_ss"}
+    added = {"K_ci", "T_63_model", "T_63_note", "method", "shift", "u_c"}
+    assert set(j["step"]) == {"K", "T", "T_63", "T_ci", "J", "omega_ss"} | added
     assert set(j["model"]) == {"T", "K"}
     assert [set(r) for r in j["rows"]] == [{"u_req", "u_ss", "omega_ss", "i_ss", "k_v", "f"}] * 3
     assert j["rows"][2]["i_ss"] == 40.0

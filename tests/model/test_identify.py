@@ -21,7 +21,7 @@ TABLE = [
 
 
 def codes(result):
-    return [f.code for f in result.findings]
+    return [f.code for f in result.observations]
 
 
 def test_table_by_hand():
@@ -38,7 +38,7 @@ def test_table_by_hand():
 def test_falling_f_is_called_dry_friction_with_the_line_through_the_rows():
     result = identify(TABLE, R)
     assert "dry_friction" in codes(result)
-    msg = next(f.message for f in result.findings if f.code == "dry_friction")
+    msg = next(f.message for f in result.observations if f.code == "dry_friction")
     # k_a i = f w + tau_c through (3.6, k_a 0.030), (5.5, k_a 0.035), (7.2, k_a 0.040)
     w = np.array([3.6, 5.5, 7.2])
     torque = result.k_a * np.array([0.030, 0.035, 0.040])
@@ -60,7 +60,7 @@ def test_constant_f_is_not_dry_friction():
 def test_a_bad_row_is_named():
     rows = [*TABLE[:2], Reading(4.5, 4.0, 5.0, 40.0, line=4)]  # omega misread
     result = identify(rows, R)
-    msgs = [f.message for f in result.findings if f.code == "k_v_outlier"]
+    msgs = [f.message for f in result.observations if f.code == "k_v_outlier"]
     assert len(msgs) == 1 and "row 3" in msgs[0] and "line 4" in msgs[0]
 
 
@@ -211,7 +211,21 @@ def test_json_shape(linear_result):
     j = linear_result.to_json()
     assert list(j) == ["R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"]
     assert list(j["rows"][0]) == ["u_req", "u_ss", "omega_ss", "i_ss", "k_v", "f"]
-    assert list(j["step"]) == ["K", "T", "T_63", "T_ci", "J", "omega_ss"]
+    # the contract's fields first and unchanged, then the added ones
+    assert list(j["step"]) == [
+        "K",
+        "T",
+        "T_63",
+        "T_ci",
+        "J",
+        "omega_ss",
+        "K_ci",
+        "T_63_model",
+        "T_63_note",
+        "method",
+        "shift",
+        "u_c",
+    ]
     assert list(j["model"]) == ["T", "K"]
     assert j["rows"][0]["i_ss"] == pytest.approx(linear_table(MOTOR)[0].i_ss)  # mA as entered
     assert len(j["step"]["T_ci"]) == 2
@@ -242,3 +256,10 @@ def test_T_recovered_when_the_wheel_coasts_or_keeps_moving(zero_mode, low, with_
         # few rows before each step pin the slowing-down speed: T stays within 3 %, but the
         # interval (which assumes the model is exact) can miss by a hair
         assert r.step.T_ci[0] < T_TRUE < r.step.T_ci[1]
+
+
+def test_a_table_whose_median_k_v_is_not_positive_is_refused():
+    # R = 4 ohm: (2 - 4 * 0.125) / 3 = +0.5 and (1 - 4 * 0.375) / 1 = -0.5, median 0
+    rows = [Reading(2.5, 2.0, 3.0, 125.0, line=2), Reading(1.5, 1.0, 1.0, 375.0, line=3)]
+    with pytest.raises(InputError, match="positive k_v"):
+        identify(rows, 4.0, source="t.csv")

@@ -21,10 +21,14 @@ from __future__ import annotations
 import time
 import urllib.parse
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from serial.serialutil import PortNotOpenError, SerialBase, SerialException
 
 from minseg_tui.device.virtual import RealTime, VirtualBoard, named_board, settings_from
+
+if TYPE_CHECKING:
+    from typing_extensions import Buffer
 
 CLOCKS = ("real", "virtual")
 
@@ -51,22 +55,22 @@ class Serial(SerialBase):
         """Open (and reset) the board named by the URL."""
         if self.is_open:
             raise SerialException("Port is already open.")
-        if self._port is None:
+        if self.port is None:
             raise SerialException("Port must be configured before it can be used.")
         try:
-            name, clock, opts = parse_url(self._port)
+            name, clock, opts = parse_url(self.port)
             settings = settings_from(opts)
         except ValueError as exc:
-            raise SerialException(f"could not open port {self._port}: {exc}") from None
+            raise SerialException(f"could not open port {self.port}: {exc}") from None
         board = named_board(name, settings) if name else VirtualBoard(settings)
         with board.lock:
             if not board.plugged:
                 raise SerialException(
-                    f"could not open port {self._port}: [Errno 2] No such file or directory"
+                    f"could not open port {self.port}: [Errno 2] No such file or directory"
                 )
             if board.attached:
                 raise SerialException(
-                    f"Could not exclusively lock port {self._port}: "
+                    f"Could not exclusively lock port {self.port}: "
                     "[Errno 11] Resource temporarily unavailable"
                 )
             board.attached = True
@@ -123,7 +127,7 @@ class Serial(SerialBase):
         """Read up to ``size`` bytes, waiting at most the timeout (board time when virtual)."""
         self._check()
         board = self.board
-        timeout = 1.0 if self._timeout is None else float(self._timeout)
+        timeout = 1.0 if self.timeout is None else float(self.timeout)
         out = bytearray()
         with board.lock:
             if self._virtual:
@@ -147,11 +151,12 @@ class Serial(SerialBase):
             self._check()
         return bytes(out)
 
-    def write(self, data: bytes | bytearray | memoryview) -> int:
+    def write(self, b: Buffer, /) -> int:
         """Send bytes to the board, received at board time now."""
+        data = bytes(b)
         self._check()
         self._sync()
-        self.board.feed(bytes(data))
+        self.board.feed(data)
         return len(data)
 
     def reset_input_buffer(self) -> None:

@@ -1,17 +1,32 @@
 """The model check: what the first-order model gets wrong in a step log, and why.
 
 Fit T w' = -w + K u, simulate it on the measured input, show where it deviates, name the
-cause among the candidates, fit the extended model and measure the gain. numpy only (no
-scipy.optimize, which takes longer to import than the check takes to run), no I/O.
+causes among the candidates (several may act at once), fit the extended model holding all
+of them, and measure the gain with figures that survive the encoder's noise. What the
+check cannot tell from a log, it says. numpy only (no scipy.optimize, which takes longer
+to import than the check takes to run), no I/O.
 
-Modules: simulate (exact closed-form pieces per constant-input stretch), candidates (the
-causes as data, and which simulator each uses), search (golden section, Nelder-Mead), fit
-(whitened least squares, K solved linearly), decide (information criterion with a margin),
-evidence (the finding in words), deviations (where the baseline is wrong), anomalies (wild
-samples, creep, late steps, gaps), report (the result and its JSON), run (:func:`check`).
+Modules, in the order the check uses them:
+
+- sampling: how the log was sampled (speed over the real interval or the nominal period,
+  jitter or lost samples, the speed's resolution and noise floor, counts or a smooth signal);
+- simulate: the model and its effects in closed form per mode on a piecewise-constant input;
+- effects: the causes as data (names, parameters, what they mean, their search ranges);
+- guess: where each cause's search starts, read off the log;
+- search: golden section and Levenberg-Marquardt in a box;
+- fit: whitened least squares (K solved linearly), any set of causes jointly, 95 % intervals;
+- decide: the criterion with a margin, causes added and dropped one at a time;
+- disturbances: a hand on the wheel, found in the settled stretches and fenced off;
+- anomalies: wild samples, creep, late steps, gaps, disturbances, in words;
+- deviations: where the baseline is wrong;
+- evidence: the finding in words, every number read off the log;
+- figures: the gain past the noise, held-out steps, the figure that leads, the close-up;
+- result: the result and its JSON; text: the report a student reads;
+- pipeline: :func:`check`, from start to end.
 """
 
-from minseg_tui.model.check.report import CheckResult
-from minseg_tui.model.check.run import check
+from minseg_tui.model.check.pipeline import check
+from minseg_tui.model.check.result import CheckResult
+from minseg_tui.model.check.text import text
 
-__all__ = ["CheckResult", "check"]
+__all__ = ["CheckResult", "check", "text"]

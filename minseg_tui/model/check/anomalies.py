@@ -9,7 +9,10 @@ Each is reported for what it is, never forced into a cause:
   keeps growing, the same way in most of them;
 - a step that starts between samples: the response to one edge is shifted in time
   against the others;
-- gaps in the sample times, and a log that starts with the wheel turning.
+- gaps in the sample times (lost samples on a regular clock; an irregular loop's long
+  intervals are jitter, not gaps: see :mod:`.sampling`), and a log that starts with the
+  wheel turning;
+- a disturbance (a hand on the wheel): found by :mod:`.disturbances`, worded here.
 """
 
 from __future__ import annotations
@@ -40,13 +43,15 @@ def moving_rows(y: FloatArray) -> FloatArray:
     exactly 0, and a noise scale taken over those rows too would be far too small (at a
     5 ms period a wheel at rest for half the log makes the median of |residual| zero).
     """
-    return np.asarray(y, dtype=float) != 0.0
+    out: FloatArray = np.asarray(y, dtype=float) != 0.0
+    return out
 
 
 @dataclass(frozen=True)
 class Anomaly:
     """One thing the log shows that is not a model effect: kind, row (0-based, or None),
-    time (s, or None), size (in ``unit``) and a sentence for a student."""
+    time (s, or None), size (in ``unit``), a sentence for a student, and where it ends
+    (t_end, s; row_end, exclusive) for one that lasts (a disturbance), else None."""
 
     kind: str
     row: int | None
@@ -54,12 +59,16 @@ class Anomaly:
     size: float
     unit: str
     text: str
+    t_end: float | None = None
+    row_end: int | None = None
 
     def to_dict(self) -> dict[str, object]:
         return {
             "kind": self.kind,
             "row": self.row,
             "t": self.t,
+            "t_end": self.t_end,
+            "row_end": self.row_end,
             "size": self.size,
             "unit": self.unit,
             "text": self.text,
@@ -73,14 +82,26 @@ def robust_sigma(x: FloatArray) -> float:
     return float(1.4826 * np.median(np.abs(x - np.median(x))))
 
 
+WILD_COUNTS = 3.0
+"""A wild sample is off by more than this many counts of the encoder (when its resolution
+is known): a count or two either way is quantisation, not a misread."""
+
+
 def find_wild(
-    residual: FloatArray, taps: int, most: int = 10, moving: FloatArray | None = None
+    residual: FloatArray,
+    taps: int,
+    most: int = 10,
+    moving: FloatArray | None = None,
+    count: float = 0.0,
 ) -> list[int]:
     """Rows where the measured angle is wild for one sample (isolated whitened spikes).
 
     With ``moving`` (bool per row, see :func:`moving_rows`) the noise scale is taken
-    from the row-to-row changes where the wheel moves (default: e itself, every row). The largest spike is taken out first (its leaky tail with it),
-    then the next, so a tail is never mistaken for a second wild sample.
+    from the row-to-row changes where the wheel moves (default: e itself, every row).
+    ``count``: the speed of one count per sample (rad/s; 0 when unknown): a spike must be
+    ``WILD_COUNTS`` counts at least (quantised speeds have a robust sigma near 0). The
+    largest spike is taken out first (its leaky tail with it), then the next, so a tail is
+    never mistaken for a second wild sample.
     """
     r = np.asarray(residual, dtype=float).copy()
     e = whiten(r, taps)
@@ -100,7 +121,7 @@ def find_wild(
         order = np.argsort(-np.abs(e))
         hit = None
         for k in order[:20].tolist():
-            if abs(e[k]) <= SPIKE_SIGMAS * s:
+            if abs(e[k]) <= max(SPIKE_SIGMAS * s, WILD_COUNTS * count / taps):
                 break
             nb = [abs(e[j]) for j in (k - 1, k + 1) if 0 <= j < e.size]
             if not nb or abs(e[k]) > SPIKE_ISOLATION * max(nb):
@@ -257,13 +278,15 @@ def late_steps(
     return out
 
 
-def gaps(t: FloatArray, ts: float) -> Anomaly | None:
-    """Sample intervals longer than 1.5 nominal periods (lost samples), if any."""
+def gaps(t: FloatArray, ts: float, regular: bool = True) -> Anomaly | None:
+    """Sample intervals longer than 1.5 nominal periods on a regular clock (lost samples),
+    if any; an irregular loop (``regular`` False) has jitter, not gaps."""
     dt = np.diff(t)
     bad = np.flatnonzero(dt > 1.5 * ts)
-    if bad.size == 0:
+    if bad.size == 0 or not regular:
         return None
     k = int(bad[np.argmax(dt[bad])])
+    lost = int(np.sum(np.round(dt[bad] / ts) - 1))
     return Anomaly(
         "gap",
         k + 1,
@@ -271,5 +294,28 @@ def gaps(t: FloatArray, ts: float) -> Anomaly | None:
         float(1e3 * dt[k]),
         "ms",
         f"{bad.size} gap(s) in the sample times, the longest {1e3 * dt[k]:.0f} ms before row {k + 1} "
-        f"(nominal {1e3 * ts:.1f} ms): samples were lost; the simulation uses the real times",
+        f"(nominal {1e3 * ts:.1f} ms, the clock otherwise regular): about {lost} sample(s) were "
+        "lost; the simulation uses the real times",
+    )
+
+
+def disturbance(
+    t: FloatArray, u: FloatArray, start: int, end: int, size: float, level: float
+) -> Anomaly:
+    """The sentence for a disturbance over rows start..end (exclusive): ``size`` the largest
+    change of speed (rad/s, measured - model) against the model's ``level`` there."""
+    t1 = float(t[min(end, t.size - 1)]) if end < t.size else float(t[-1])
+    word = "drops" if size * np.sign(level or 1.0) < 0 else "rises"
+    share = f" ({100 * abs(size / level):.0f} %)" if level else ""
+    return Anomaly(
+        "disturbance",
+        int(start),
+        float(t[start]),
+        float(size),
+        "rad/s",
+        f"from t = {t[start]:.3f} s to {t1:.3f} s the speed {word} by {abs(size):.3g} rad/s{share} "
+        f"while the input stays at {u[start]:g} V, and comes back: something other than the "
+        "input moved the wheel (a hand on it, a snag); those rows were left out of the fit",
+        t_end=t1,
+        row_end=int(end),
     )

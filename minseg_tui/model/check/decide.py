@@ -1,35 +1,67 @@
-"""Naming the cause: an information criterion with a margin, and the evidence in words.
+"""Naming the causes: an information criterion with a margin, effect by effect.
 
-Each candidate adds one parameter to the first-order model. On the whitened residual
-(white under the encoder's quantisation noise) twice the log-likelihood gain of a
-candidate over the baseline is
+Each cause adds one parameter. On the whitened residual (white under the encoder's
+quantisation noise) twice the log-likelihood gain of a model over a smaller one is
 
-    D = n ln(SSE_baseline / SSE_candidate)
+    D = n ln(SSE_smaller / SSE_larger)
 
-A candidate is *clear* when D exceeds ``PENALTY`` ln n (BIC asks for 1 ln n per added
+A cause is *clear* when D exceeds ``PENALTY`` ln n (BIC asks for 1 ln n per added
 parameter; we ask for much more, because a real log's residual is never exactly white)
-**and** it removes at least ``MIN_REDUCTION`` of the whitened sum of squares. Clean
-first-order data improve by a few per cent at most, so it comes out ``none``; the
-hidden effects of the test suite remove 80-100 %. The cause is the clear candidate
-with the smallest SSE; another effect is listed when, fitted on top of the cause, it is
-clear again against the cause's own fit.
+**and** it removes at least ``MIN_REDUCTION`` of the whitened sum of squares
+(``MIN_REDUCTION_MORE`` of what the others leave, for a further cause). Clean first-order
+data improve by a few per cent at most, so they come out ``none``; the effects of the
+test suite remove 80-100 %, a second effect on top of a first 10-100 %.
+
+Causes are added one at a time (forward): every cause not yet in the model is fitted
+jointly with those already in it, and the clear one that leaves the least is added (a
+third only when the pair still leaves more than noise); then each cause is taken out
+again (backward) and dropped when the model without it is not clearly worse, and the
+first cause picked is swapped for another one about as clear on its own when that fits
+clearly better with the rest, so a stand-in picked early (a filter or a delay for an
+extra pole) leaves once the real pair is in.
+
+A cause is never named when its parameter, or the T it needs, sits on its search bound
+(the effect lies outside what the model can express there), when its simulation matches
+the measured speed itself worse than the baseline does, when it claims a coast no slower
+than braking, when (a moving average) the speed scatters far more than an average of
+counts leaves, or when it cuts the whitened residual but not the speed's own error (a
+wrong model can choose its averaging length so that its residual cancels in the strided
+whitening sums); the reason is kept for the report.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
 
-from minseg_tui.model.check.fit import Fit
+import numpy as np
+
+from minseg_tui.model.check.deviations import regions
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range
+from minseg_tui.model.check.figures import systematic
+from minseg_tui.model.check.fit import T_BOUNDS, Fit, Problem, fit_causes, values_of
+from minseg_tui.model.check.guess import starts
+from minseg_tui.model.check.sampling import scatter
 
 MIN_REDUCTION = 0.25
-"""Fraction of the whitened sum of squares a candidate must remove to be named."""
+"""Fraction of the whitened sum of squares a cause must remove to be named."""
+
+MIN_REDUCTION_MORE = 0.10
+"""...and a further cause, of what the model with the others leaves (on the generated
+single-effect logs the best spurious second cause removes 2 % at most)."""
 
 COAST_RATIO = 1.5
 """A coast must be this many times slower than the driven time constant to be named."""
 
 PENALTY = 10.0
 """Criterion margin in units of ln n (BIC's is 1 per parameter)."""
+
+MAX_CAUSES = 3
+"""Most causes one model holds."""
+
+BOUND_SHARE = 0.01
+"""A parameter within this share of its range (or its log range) from a bound sits on it."""
 
 
 @dataclass(frozen=True)
@@ -43,44 +75,302 @@ class Verdict:
 
 
 def compare(fit: Fit, against: Fit) -> Verdict:
-    """D = n ln(SSE_against / SSE_fit) and the relative reduction, with the decision."""
+    """D = n ln(SSE_against / SSE_fit) and the relative reduction, with the decision (a
+    cause added to others needs ``MIN_REDUCTION_MORE``, the first ``MIN_REDUCTION``)."""
     n = max(fit.rows, 2)
     if fit.sse_white <= 0 or not math.isfinite(fit.sse_white) or against.sse_white <= 0:
         return Verdict(0.0, 0.0, False)
     d = n * math.log(against.sse_white / fit.sse_white)
     red = 1.0 - fit.sse_white / against.sse_white
-    return Verdict(d, red, d > PENALTY * math.log(n) and red >= MIN_REDUCTION)
+    least = MIN_REDUCTION_MORE if against.causes else MIN_REDUCTION
+    return Verdict(d, red, d > PENALTY * math.log(n) and red >= least)
 
 
-def choose(
-    base: Fit, fits: dict[str, Fit], vetoed: set[str] | frozenset[str] = frozenset()
-) -> tuple[str, dict[str, Verdict]]:
-    """The cause ('none' when no candidate is clear) and every candidate's verdict.
-
-    ``vetoed`` candidates (their plain speed residual is worse than the baseline's) are
-    never clear.
-    """
-    verdicts = {name: compare(f, base) for name, f in fits.items()}
-    for name in vetoed:
-        v = verdicts[name]
-        verdicts[name] = Verdict(v.d, v.reduction, False)
-    if "coast_on_zero" in fits:  # a coast no slower than braking is no coast
-        f = fits["coast_on_zero"]
-        if f.params["T_coast"] < COAST_RATIO * f.T:
-            v = verdicts["coast_on_zero"]
-            verdicts["coast_on_zero"] = Verdict(v.d, v.reduction, False)
-    clear = [name for name, v in verdicts.items() if v.clear]
-    if not clear:
-        return "none", verdicts
-    return min(clear, key=lambda name: fits[name].sse_white), verdicts
+def on_bound(f: Fit, cause: str, rng: dict[str, Range]) -> str | None:
+    """'lower' or 'upper' when ``cause``'s parameter in ``f`` sits on that bound of its
+    search range (the null end of a range is no bound: it means no effect), else None."""
+    r = rng[cause]
+    v = f.value(cause)
+    if cause == "velocity_filter":
+        return "upper" if v >= r.hi and r.hi > 2 else None
+    if r.log_scale:
+        lo, hi, x = math.log(r.lo), math.log(r.hi), math.log(max(v, 1e-300))
+    else:
+        lo, hi, x = r.lo, r.hi, v
+    tol = BOUND_SHARE * (hi - lo)
+    null = BY_CAUSE[cause].null
+    if x >= hi - tol and not math.isinf(null):
+        return "upper"
+    if x <= lo + tol and null != r.lo and not (cause == "second_pole"):
+        return "lower"
+    return None
 
 
-COMBINABLE: dict[str, frozenset[str]] = {
-    "coulomb_friction": frozenset({"dead_time", "velocity_filter", "coast_on_zero"}),
-    "dead_time": frozenset({"coulomb_friction", "velocity_filter", "coast_on_zero", "second_pole"}),
-    "velocity_filter": frozenset({"coulomb_friction", "dead_time", "coast_on_zero", "second_pole"}),
-    "coast_on_zero": frozenset({"coulomb_friction", "dead_time", "velocity_filter"}),
-    "second_pole": frozenset({"dead_time", "velocity_filter"}),
-}
-"""Which effects the exact simulator can put on top of which (a second pole has no closed
-form together with dry friction or coasting here)."""
+@dataclass
+class Selection:
+    """The outcome of the search: the chosen model (the baseline when nothing is named),
+    every single cause's fit and verdict against the baseline, the chosen model without each
+    of its causes, and why each cause that was not named was left out (in words)."""
+
+    base: Fit
+    chosen: Fit
+    singles: dict[str, Fit]
+    verdicts: dict[str, Verdict]
+    without: dict[str, Fit] = field(default_factory=dict)
+    left_out: dict[str, str] = field(default_factory=dict)
+    bound: dict[str, tuple[Fit, str]] = field(default_factory=dict)
+    tried: list[Fit] = field(default_factory=list)
+
+
+def _own_noise(prob: Problem, f: Fit) -> float:
+    """The speed's noise (rad/s) around the model ``f`` (the largest tenth of the departures
+    left out, so that a wild sample, smeared over the average's length, does not count)."""
+    settle = max(3, int(math.ceil((5.0 * f.T + f.effects.delay) / prob.ts)) + f.effects.taps)
+    return scatter(prob.y - f.predict(prob), prob.u, settle, prob.y != 0, keep=0.9)
+
+
+def _explained(prob: Problem, f: Fit, floor: Callable[[int], float | None]) -> bool:
+    """True when ``f`` leaves only noise: its error held over several samples, in the region
+    where it is largest, is within twice what the noise leaves there."""
+    r = prob.y - f.predict(prob)
+    reg = regions(prob.u, f.T, prob.ts)
+    worst = max(
+        (systematic(r, ((reg == i) & prob.keep).astype(float)) for i in range(3)),
+        default=0.0,
+    )
+    level = max(floor(f.effects.taps) or 0.0, _own_noise(prob, f) / 3.0)
+    return worst < 2.0 * level
+
+
+def _raw_sse(prob: Problem, f: Fit) -> float:
+    r = prob.y - f.predict(prob)
+    return float(np.dot(prob.weights * r, r))
+
+
+def _starts(prob: Problem, cause: str, f: Fit, rng: dict[str, Range], noise: float) -> list[float]:
+    return starts(cause, prob.t, prob.u, prob.y, prob.ts, f.T, f.K, noise, rng[cause])
+
+
+def single(prob: Problem, cause: str, base: Fit, rng: dict[str, Range], noise: float) -> Fit:
+    """``cause`` alone on top of the first-order model, from the best of its starts."""
+    vals = _starts(prob, cause, base, rng, noise)
+    tries = [(base.T * m, {cause: v}) for v in vals for m in (0.25, 0.6, 1.0)]
+    return fit_causes(prob, (cause,), rng, tries)
+
+
+FILTER_NOISE = 3.0
+"""An average over N samples of counts leaves noise floor/N; a speed that scatters more than
+this many times that is not such an average."""
+
+
+def _why_not(
+    prob: Problem,
+    f: Fit,
+    cause: str,
+    rng: dict[str, Range],
+    base_raw: float,
+    noise: float,
+    floor: Callable[[int], float | None],
+) -> str | None:
+    """Why ``cause`` in ``f`` cannot be named although clear (None: it can). ``floor(N)``:
+    the noise floor of the speed column if it were an average over N samples."""
+    lo, hi = math.log(T_BOUNDS[0]), math.log(T_BOUNDS[1])
+    if not lo + BOUND_SHARE * (hi - lo) < math.log(f.T) < hi - BOUND_SHARE * (hi - lo):
+        return "the time constant T it needs sits on the bound of its range"
+    side = on_bound(f, cause, rng)
+    if side is not None:
+        return f"its parameter sits on the {side} bound of its range"
+    if cause == "coast_on_zero" and f.value(cause) < COAST_RATIO * f.T:
+        return "it would be a coast no slower than braking"
+    if cause == "velocity_filter":
+        n = f.effects.taps
+        fl = floor(n)
+        if fl is not None and n >= 2:
+            noise = _own_noise(prob, f)
+        if fl is not None and n >= 2 and noise > FILTER_NOISE * fl:
+            return (
+                f"the speed scatters {noise:.3g} rad/s, far more than an average of counts over "
+                f"{n} samples leaves ({fl:.3g} rad/s)"
+            )
+    if _raw_sse(prob, f) > base_raw:
+        return "it matches the measured speed itself worse than the first-order model"
+    return None
+
+
+def select(
+    prob: Problem,
+    base: Fit,
+    rng: dict[str, Range],
+    noise: float,
+    floor: Callable[[int], float | None] = lambda n: None,
+    names: tuple[str, ...] = NAMES,
+) -> Selection:
+    """Forward then backward selection of the causes (see the module docstring)."""
+    singles = {c: single(prob, c, base, rng, noise) for c in names}
+    verdicts = {c: compare(f, base) for c, f in singles.items()}
+    sel = Selection(base, base, singles, verdicts)
+    base_raw = _raw_sse(prob, base)
+    current: Fit = base
+    chosen: tuple[str, ...] = ()
+    while len(chosen) < MAX_CAUSES:
+        if len(chosen) >= 2 and _explained(prob, current, floor):
+            break  # a pair that leaves only noise needs no third cause
+        tries: dict[str, Fit] = {}
+        for c in names:
+            if c in chosen:
+                continue
+            if not chosen:
+                tries[c] = singles[c]
+                continue
+            old = values_of(current)
+            vals = [singles[c].value(c), *_starts(prob, c, current, rng, noise)]
+            begin = [(current.T * m, {**old, c: v}) for v in vals for m in (0.7, 1.0)]
+            begin.append((singles[c].T, {**old, c: singles[c].value(c)}))
+            # the average's length trades against T: scan it again when this cause alone
+            # wanted a very different T than the model so far
+            far = not 0.5 < singles[c].T / current.T < 2.0
+            scan: bool | None = (
+                True
+                if c == "velocity_filter"
+                else (None if far and "velocity_filter" in chosen else False)
+            )
+            tries[c] = fit_causes(prob, (*chosen, c), rng, begin, scan=scan, polish=_idle(c))
+            sel.tried.append(tries[c])
+        ok: dict[str, Fit] = {}
+        for c, f in tries.items():
+            v = compare(f, current)
+            if not v.clear:
+                continue
+            why = _why_not(prob, f, c, rng, base_raw, noise, floor)
+            if why is None:
+                ok[c] = f
+            elif c not in sel.left_out:
+                sel.left_out[c] = why
+                if "bound" in why:
+                    sel.bound[c] = (f, why)
+        best = _pick(prob, ok, current, sel)
+        if best is None:
+            break
+        chosen = (*chosen, best)
+        current = ok[best]
+        sel.left_out.pop(best, None)
+        sel.bound.pop(best, None)
+    # backward: drop a cause the others do as well without
+    changed = True
+    while changed and len(chosen) > 1:
+        changed = False
+        for c in chosen:
+            rest = tuple(x for x in chosen if x != c)
+            old = {k: v for k, v in values_of(current).items() if k != c}
+            f = fit_causes(prob, rest, rng, [(current.T, old)], scan=False)
+            sel.without[c] = f
+            if not compare(current, f).clear:
+                sel.left_out[c] = "the other causes explain the log as well without it"
+                chosen, current = rest, f
+                sel.without = {}
+                changed = True
+                break
+    # swap: the cause picked first may have stood in for one that fits better with the rest
+    if len(chosen) >= 2:
+        first, rest = chosen[0], chosen[1:]
+        keep = {k: v for k, v in values_of(current).items() if k != first}
+        swap: tuple[str, Fit] | None = None
+        for x in names:
+            if (
+                x in chosen
+                or not sel.verdicts[x].clear
+                or singles[x].sse_white > SWAP_RATIO * singles[first].sse_white
+            ):
+                continue  # a stand-in stands in for a cause about as clear on its own
+            vals = [singles[x].value(x), *_starts(prob, x, current, rng, noise)]
+            begin = [(current.T, {**keep, x: v}) for v in vals]
+            begin.append((singles[x].T, {**keep, x: singles[x].value(x)}))
+            f = fit_causes(
+                prob, (*rest, x), rng, begin, scan=x == "velocity_filter", polish=_idle(x)
+            )
+            sel.tried.append(f)
+            if f.sse_white < (1.0 - MIN_REDUCTION_MORE) * current.sse_white and (
+                swap is None or f.sse_white < swap[1].sse_white
+            ):
+                if _why_not(prob, f, x, rng, base_raw, noise, floor) is None:
+                    swap = (x, f)
+        if swap is not None:
+            sel.left_out[first] = f"{swap[0]} explains the log better together with the others"
+            chosen, current = (*rest, swap[0]), swap[1]
+            sel.left_out.pop(swap[0], None)
+            sel.without = {}
+    # a cause whose parameter ended on a bound in the joint fit, or that fails its own test
+    # there, leaves too
+    for c in list(chosen):
+        why = _why_not(prob, current, c, rng, base_raw, noise, floor)
+        if why is not None:
+            rest = tuple(x for x in chosen if x != c)
+            old = {k: v for k, v in values_of(current).items() if k != c}
+            if "bound" in why:
+                sel.bound[c] = (current, why)
+            current = fit_causes(prob, rest, rng, [(current.T, old)], scan=False) if rest else base
+            chosen = rest
+            sel.left_out[c] = why
+            sel.without = {}
+    if len(chosen) == 1:
+        sel.without = {chosen[0]: base}
+    elif len(chosen) > 1 and not sel.without:
+        for c in chosen:
+            rest = tuple(x for x in chosen if x != c)
+            old = {k: v for k, v in values_of(current).items() if k != c}
+            sel.without[c] = fit_causes(prob, rest, rng, [(current.T, old)], scan=False)
+    sel.chosen = current
+    return sel
+
+
+RAW_RIVAL = 1.25
+"""A model that changes the whitening stride (a filter) loses to a rival that keeps it when
+the rival's plain speed error (sum of squares) is this many times smaller."""
+
+RAW_GAIN = 0.1
+"""A filter must also cut the plain speed error (sum of squares) by this share."""
+
+
+SWAP_RATIO = 3.0
+"""A cause is tried in place of the first one picked when, alone, it leaves at most this
+many times the first one's whitened residual."""
+
+
+def _idle(cause: str) -> tuple[str, ...]:
+    """(cause,) when the cause can sit idle at a start (a coast or a cap that never acts has
+    no gradient to grow by), so a second start is polished for it; else ()."""
+    return (cause,) if math.isinf(BY_CAUSE[cause].null) else ()
+
+
+def _pick(prob: Problem, ok: dict[str, Fit], current: Fit, sel: Selection) -> str | None:
+    """The clear cause to add: the least whitened sum of squares, except that a cause which
+    changes the whitening stride (a moving average) must fit the speed itself too. A wrong
+    model can choose its stride so that its residual cancels in the strided sums; the plain
+    speed error shows that."""
+    left = dict(ok)
+    while left:
+        c = min(left, key=lambda n: left[n].sse_white)
+        f = left[c]
+        if f.effects.taps == current.effects.taps:
+            return c
+        raw = _raw_sse(prob, f)
+        rivals = [n for n in left if left[n].effects.taps == current.effects.taps]
+        why = None
+        if raw > (1.0 - RAW_GAIN) * _raw_sse(prob, current):
+            why = "it cuts the whitened residual but not the error of the speed itself"
+        elif rivals:
+            best = min(rivals, key=lambda n: _raw_sse(prob, left[n]))
+            if RAW_RIVAL * _raw_sse(prob, left[best]) < raw:
+                why = f"{best} matches the speed itself far better"
+        if why is None:
+            return c
+        sel.left_out.setdefault(c, why)
+        del left[c]
+    return None
+
+
+def ranked(sel: Selection) -> list[str]:
+    """The chosen causes, largest first: by how much the whitened residual grows when the
+    cause is taken out of the model."""
+    f = sel.chosen
+    return sorted(f.causes, key=lambda c: -sel.without[c].sse_white if c in sel.without else 0.0)

@@ -1,121 +1,237 @@
-"""The evidence for a finding, in words a student understands, with the numbers behind it."""
+"""The evidence for a finding, in words, every number read off the log in hand.
+
+A sentence about step-downs needs a step-down in the log; a stop time is where the
+measured speed stands still; coast words are only for a coast; a slope or a lag is
+measured on the rises. What a log cannot show is said too (:func:`cannot_judge`).
+"""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import NDArray
 
-from minseg_tui.model.check.decide import MIN_REDUCTION, PENALTY, Verdict
 from minseg_tui.model.check.fit import Fit
+from minseg_tui.model.check.guess import first_motion, levels_offset, rises, steepest_rate
+
+FloatArray = NDArray[np.float64]
 
 
-def _coulomb(ext: Fit, base: Fit, u_max: float) -> str:
+@dataclass(frozen=True)
+class Log:
+    """What the sentences are computed from: t (s), u (V), y the measured speed (rad/s, wild
+    samples repaired), ts (s), noise: the speed's scatter (rad/s), zero: the largest speed
+    that reads as standing still (rad/s), base_pred: the first-order model's speed (rad/s),
+    smooth: the speed is a smooth signal, not a difference of counts; step: the step
+    (rad/s) the speed's values come in when read off the data (None: not read off)."""
+
+    t: FloatArray
+    u: FloatArray
+    y: FloatArray
+    ts: float
+    noise: float
+    zero: float
+    base_pred: FloatArray
+    smooth: bool = False
+    step: float | None = None
+
+
+@dataclass(frozen=True)
+class Stop:
+    """A step down while the wheel turned: the row of the step, the speed before it (rad/s),
+    and when the measured speed first stood still for good within the stretch (s after the
+    step; None when it still turns at the stretch's end)."""
+
+    row: int
+    speed: float
+    after: float | None
+    to_zero: bool
+
+
+def falls(log: Log) -> list[Stop]:
+    """Every step that lowers |u| while the wheel turns, and when the wheel stood still."""
+    u, y, t = log.u, log.y, log.t
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    bounds = np.concatenate((change, [u.size]))
+    out = []
+    for a, b in zip(bounds[:-1], bounds[1:], strict=True):
+        if abs(u[a]) >= abs(u[a - 1]):
+            continue
+        speed = float(np.median(y[max(a - 3, 0) : a]))
+        if abs(speed) <= max(log.zero, 3.0 * log.noise):
+            continue
+        still = np.abs(y[a:b]) <= log.zero
+        # first row from which it stays still (at least 3 rows, to the end of the stretch)
+        after = None
+        run = np.flatnonzero(~still)
+        last_moving = int(run[-1]) if run.size else -1
+        if last_moving < b - a - 3:
+            after = float(t[a + last_moving + 1] - t[a])
+        out.append(Stop(int(a), speed, after, u[a] == 0))
+    return out
+
+
+def _ms(x: float) -> str:
+    return f"{x * 1e3:.0f} ms"
+
+
+def _coulomb(log: Log, ext: Fit) -> str:
     uc = ext.params["u_c"]
-    if u_max <= uc or uc <= 0:
-        return f"a breakaway voltage of {uc:.3f} V explains the log"
-    t_stop = ext.T * math.log(u_max / uc)
-    left = base.K * u_max * math.exp(-t_stop / base.T)
-    return (
-        f"the step-downs stop in finite time, faster than any exponential: from the "
-        f"{u_max:.2f} V step the wheel stands still {t_stop * 1e3:.0f} ms after the command "
-        f"drops, where the first-order model still turns at {left:.2f} rad/s; dry friction "
-        f"with a breakaway voltage u_c = {ext.params['u_c']:.3f} V does exactly that"
-    )
-
-
-def _dead(ext: Fit, base: Fit, u_max: float) -> str:
-    d = ext.params["delay"]
-    return (
-        f"for about {d * 1e3:.0f} ms after every step nothing happens, then the speed "
-        f"changes with a sharp corner as a first-order model does: a pure delay of "
-        f"{d * 1e3:.1f} ms (an extra pole would start smoothly instead)"
-    )
-
-
-def _filter(ext: Fit, base: Fit, u_max: float) -> str:
-    n = int(ext.params["taps"])
-    return (
-        f"the measured speed is smoother than an Euler velocity of encoder counts can be, "
-        f"and every edge becomes a straight ramp {n} samples long: the speed was averaged "
-        f"over {n} samples (a moving-average filter), which also divides the encoder noise "
-        f"by {n}"
-    )
-
-
-def _coast(ext: Fit, base: Fit, u_max: float) -> str:
-    tc = ext.params["T_coast"]
-    slower = "more slowly" if tc > ext.T else "faster"
-    return (
-        f"the step-downs to zero decay {slower} than the step-ups: time constant "
-        f"{tc:.3f} s at zero command against T = {ext.T * 1e3:.0f} ms when driven; the "
-        f"bridge lets the wheel coast instead of braking it"
-    )
-
-
-def _pole(ext: Fit, base: Fit, u_max: float) -> str:
-    t2 = ext.params["T2"]
-    return (
-        f"every step starts with zero slope (an S-shaped start) instead of the sharp "
-        f"corner of a first-order model: an extra pole of {t2 * 1e3:.1f} ms delays the "
-        f"torque (a pure delay would show a corner after a flat stretch)"
-    )
-
-
-WORDS: dict[str, Callable[[Fit, Fit, float], str]] = {
-    "coulomb_friction": _coulomb,
-    "dead_time": _dead,
-    "velocity_filter": _filter,
-    "coast_on_zero": _coast,
-    "second_pole": _pole,
-}
-"""Cause -> the sentence that states its evidence."""
-
-
-def evidence(
-    cause: str,
-    ext: Fit,
-    base: Fit,
-    verdicts: dict[str, Verdict],
-    fits: dict[str, Fit],
-    u: np.ndarray,
-) -> str:
-    """Evidence for ``cause`` (or for ``none``): the shape in words, then the numbers."""
-    if cause == "none":
-        best = max(verdicts.items(), key=lambda kv: kv[1].reduction, default=None)
-        if best is None:
-            return "the first-order model explains the log"
-        name, v = best
-        share = f"{100 * max(v.reduction, 0.0):.1f} %"
-        threshold = PENALTY * math.log(max(fits[name].rows, 2)) if name in fits else 0.0
-        if v.reduction < MIN_REDUCTION:
-            why = (
-                f"removes only {share} of the whitened residual, and a cause needs at least "
-                f"{100 * MIN_REDUCTION:.0f} %"
-            )
-        elif v.d <= threshold:
-            why = (
-                f"removes {share} of the whitened residual, but its criterion gain "
-                f"{v.d:.0f} is below the {threshold:.0f} a cause needs on a log this long"
-            )
-        else:
-            why = (
-                f"removes {share} of the whitened residual but makes the plain speed error "
-                f"worse or is not the effect it claims (a coast no slower than braking)"
-            )
-        return (
-            f"the first-order model explains the log down to the encoder's noise: the best "
-            f"extension ({name}) {why}"
+    stops = [s for s in falls(log) if s.after is not None]
+    coast = "coast_on_zero" in ext.causes
+    if stops:
+        s = max(stops, key=lambda x: abs(x.speed))
+        after = s.after if s.after is not None else 0.0
+        k = int(np.searchsorted(log.t, log.t[s.row] + after))
+        k = min(k, log.t.size - 1)
+        left = abs(float(log.base_pred[k]))
+        how = "coasts and " if coast else ""
+        text = (
+            f"after the drive drops at t = {log.t[s.row]:.3f} s the wheel {how}stands still "
+            f"{_ms(after)} later (measured, from {abs(s.speed):.3g} rad/s)"
         )
-    u_max = float(np.max(np.abs(u))) if u.size else 0.0
-    v = verdicts[cause]
-    rivals = sorted((f.sse_white, n) for n, f in fits.items() if n != cause)
-    rival = ""
-    if rivals and ext.sse_white > 0:
-        ratio = rivals[0][0] / ext.sse_white
-        rival = f"; the next best explanation ({rivals[0][1]}) leaves {ratio:.1f}x as much"
-    return (
-        f"{WORDS[cause](ext, base, u_max)}. It removes {100 * v.reduction:.1f} % of the "
-        f"whitened residual (criterion gain {v.d:.0f}){rival}"
+        if left > max(log.zero, 2.0 * log.noise):
+            text += f", where the first-order model still turns at {left:.2f} rad/s"
+        return text + f": dry friction stops a wheel in finite time (u_c = {uc:.3g} V)"
+    off = levels_offset(log.u, log.y, ext.T, log.ts)
+    text = (
+        "the settled speeds are not proportional to the voltage"
+        + (f": a straight line through them meets zero speed at {off:.2f} V" if off else "")
+        + f"; dry friction with u_c = {uc:.3g} V does that (a voltage lost in the brushes or "
+        "the driver looks the same in steady state)"
     )
+    if not falls(log):
+        text += "; the log has no step-down, so a finite stop cannot be seen"
+    return text
+
+
+def _dead(log: Log, ext: Fit) -> str:
+    d = ext.params["delay"]
+    lags = first_motion(log.t, log.u, log.y, log.noise)
+    seen = (
+        f"after the step{'s' if len(lags) > 1 else ''} the measured speed first moves "
+        f"{_ms(float(np.median(lags)))} later"
+        if lags
+        else "the response starts late"
+    )
+    return (
+        f"{seen}: a first-order response that starts {_ms(d)} after the command fits "
+        f"(a pure delay; an extra pole would start at once, only more slowly)"
+    )
+
+
+def _filter(log: Log, ext: Fit, floor: float | None) -> str:
+    n = int(ext.params["taps"])
+    edges = int(np.count_nonzero(np.diff(log.u)))
+    which = "every edge becomes" if edges > 1 else "the step becomes"
+    ramp = f"{which} a ramp about {n} samples ({_ms(n * log.ts)}) long"
+    if log.smooth:
+        return (
+            f"{'the rises are' if edges > 1 else 'the rise is'} smoothed as an average of the "
+            f"speed over {n} samples ({_ms(n * log.ts)}) would smooth it; an extra pole in the "
+            "motor would look alike in this smooth signal"
+        )
+    if floor is not None:
+        return (
+            f"the speed scatters only {log.noise:.3g} rad/s where one count per sample alone "
+            f"gives a noise floor of {floor:.3g} rad/s, and {ramp}: the speed is an average "
+            f"over {n} samples, which divides the encoder noise by {n}"
+        )
+    if log.step is not None:
+        return (
+            f"the speed's values come in steps of only {log.step:.3g} rad/s and it scatters "
+            f"{log.noise:.3g} rad/s, and {ramp}: the speed is an average over {n} samples"
+        )
+    return f"{ramp}: the speed looks averaged over {n} samples"
+
+
+def _coast(log: Log, ext: Fit) -> str:
+    tc = ext.params["T_coast"]
+    downs = [s for s in falls(log) if s.to_zero]
+    if not downs:
+        return f"the wheel runs down slowly at zero command (time constant {tc:.3g} s)"
+    s = max(downs, key=lambda x: abs(x.speed))
+    a, w0 = s.row, abs(s.speed)
+    seg = np.abs(log.y[a : a + 40])
+    below = np.flatnonzero(seg < 0.7 * w0)
+    n = max(int(below[0]) + 1 if below.size else seg.size, 2)
+    n = min(n, seg.size)
+    span = float(log.t[a + n - 1] - log.t[a - 1])
+    decel = (w0 - float(seg[n - 1])) / span if span > 0 else 0.0
+    return (
+        f"right after the command drops to 0 at t = {log.t[a]:.3f} s the speed falls at "
+        f"{decel:.3g} rad/s^2 (measured over {_ms(span)}), where a braked motor (T = "
+        f"{_ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
+        f"wheel coast, with a time constant of {tc:.3g} s at zero command"
+    )
+
+
+def _pole(log: Log, ext: Fit) -> str:
+    t2 = ext.params["T2"]
+    w = max(2, int(math.ceil(max(t2, ext.T / 2) / log.ts)))
+    got, model = [], []
+    for a, b in rises(log.u):
+        if b - a <= w:
+            continue
+        got.append(abs(float(log.y[a + w - 1] - log.y[a - 1])))
+        model.append(abs(float(log.base_pred[a + w - 1] - log.base_pred[a - 1])))
+    text = "each rise starts with zero slope (an S-shaped start)"
+    if log.smooth:
+        text += " (in this smooth signal an average of the speed would look alike)"
+    if got:
+        text += (
+            f": {_ms(w * log.ts)} after the step the speed has risen {np.median(got):.3g} rad/s "
+            f"where the first-order model rises {np.median(model):.3g} rad/s"
+        )
+    return (
+        text + f"; an extra pole of {_ms(t2)} delays the torque (a pure delay would show a corner)"
+    )
+
+
+def _limit(log: Log, ext: Fit) -> str:
+    a = ext.params["a_max"]
+    r = steepest_rate(log.t, log.u, log.y, 1.0)
+    seen = f"the speed ramps at about {r:.3g} rad/s^2" if r else "the speed ramps"
+    ups = rises(log.u)
+    top = ""
+    if ups:
+        k, _ = ups[0]
+        jump = abs(float(log.u[k] - log.u[k - 1]))
+        top = (
+            f"; the same motor without a cap would start at K u/T = "
+            f"{abs(ext.K) * jump / ext.T:.3g} rad/s^2, steepest at once"
+        )
+    return (
+        f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
+        f"into the plateau{top}: the drive caps the current, a_max = {a:.3g} rad/s^2"
+    )
+
+
+WORDS: dict[str, Callable[[Log, Fit, float | None], str]] = {
+    "coulomb_friction": lambda log, f, floor: _coulomb(log, f),
+    "dead_time": lambda log, f, floor: _dead(log, f),
+    "velocity_filter": _filter,
+    "coast_on_zero": lambda log, f, floor: _coast(log, f),
+    "second_pole": lambda log, f, floor: _pole(log, f),
+    "current_limit": lambda log, f, floor: _limit(log, f),
+}
+"""Cause -> the sentence that states its evidence in this log."""
+
+
+def cannot_judge(log: Log) -> dict[str, str]:
+    """The causes this log cannot show at all, and why (they are not tried)."""
+    out: dict[str, str] = {}
+    u = log.u
+    downs = falls(log)
+    levels = {round(abs(float(v)), 9) for v in u if v != 0}
+    if not rises(u):
+        for c in ("dead_time", "velocity_filter", "second_pole", "current_limit"):
+            out[c] = "the log has no step up to show it"
+    if not any(s.to_zero for s in downs):
+        out["coast_on_zero"] = "the command never drops to zero while the wheel turns"
+    if not downs and len(levels) < 2:
+        out["coulomb_friction"] = "the log has one driven level and no step-down"
+    return out

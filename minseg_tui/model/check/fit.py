@@ -1,4 +1,4 @@
-"""Fitting the first-order model and each candidate to a step log.
+"""Fitting the first-order model, alone or with any set of effects, to a step log.
 
 The residual is compared where its noise is white. The measured speed is a difference
 of quantised angles, (theta_k - theta_k-N)/(N Ts), so its noise is differenced (lag-N
@@ -8,25 +8,36 @@ autocorrelation near -0.5); summing the residual with stride N, leakily,
 
 undoes the difference (whitening the quantisation noise) while a slow model error is
 only amplified tenfold instead of piling up as it would in the raw angle. The filter is
-monic, so the whitened sums of squares of candidates with different N compare fairly.
+monic, so the whitened sums of squares of models with different N compare fairly. A log
+whose speed is taken over the real sample interval is first scaled back to angle
+differences per nominal period.
 
-For given T and effect parameter the response is proportional to K, which is solved by
-linear least squares; T (log scale) and the parameter are searched on a grid and polished
-with golden-section / Nelder-Mead searches (:mod:`.search`). Rows flagged as wild (weight 0)
-do not count.
+For given T and effect parameters the response is proportional to K, which is solved by
+linear least squares. The other parameters (T on a log scale, each effect's own) are
+started from a coarse grid and polished jointly by Levenberg-Marquardt within their
+ranges (:mod:`.search`); the moving average's length is an integer, scanned cheaply
+(the angle does not depend on it). Rows with weight 0 (wild samples, a hand on the wheel,
+held-out steps) do not count: their residual is set to zero before the whitening.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.check.candidates import BY_CAUSE, Candidate, Effects, angle, response
-from minseg_tui.model.check.search import golden, nelder_mead
-from minseg_tui.model.check.simulate import Stretches
+from minseg_tui.model.check.effects import (
+    BY_CAUSE,
+    Range,
+    effects_of,
+    field_value,
+    reported,
+)
+from minseg_tui.model.check.search import golden, least_squares
+from minseg_tui.model.check.simulate import Effects, Stretches, measured, pieces, response
 
 FloatArray = NDArray[np.float64]
 
@@ -43,30 +54,43 @@ MAX_FIT_ROWS = 2400
 def whiten(x: FloatArray, taps: int = 1) -> FloatArray:
     """e_k = x_k + RHO e_k-taps: the leaky stride-``taps`` sum that whitens differenced noise.
 
-    Vectorised in blocks of ``_BLOCK`` strides (a scaled cumulative sum inside a block, the
-    carry between blocks as a short geometric sum, since RHO^_BLOCK is tiny).
+    Up to ``_DIRECT`` strides one scaled cumulative sum; longer inputs in blocks of
+    ``_BLOCK`` strides (a scaled cumulative sum inside a block, the carry between blocks as
+    a short geometric sum, since RHO^_BLOCK is tiny).
     """
     x = np.asarray(x, dtype=float)
     n = x.size
     rows = -(-n // taps)
+    if rows <= _DIRECT:  # e_k = rho^k sum_j rho^-j x_j in one cumulative sum
+        buf = np.zeros(rows * taps)
+        buf[:n] = x
+        cols = buf.reshape(rows, taps)
+        direct: FloatArray = (
+            np.cumsum(cols * _INV_ALL[:rows, None], axis=0) * _POW_ALL[:rows, None]
+        ).reshape(-1)[:n]
+        return direct
     nb = -(-rows // _BLOCK)
     buf = np.zeros(nb * _BLOCK * taps)
     buf[:n] = x
     y = buf.reshape(nb, _BLOCK, taps)
     inner = np.cumsum(y * _INV[None, :, None], axis=1) * _POW[None, :, None]
     ends = inner[:, -1, :]
-    carry = np.zeros_like(ends)  # e at the end of the previous block
     acc = np.zeros_like(ends)
     q = 1.0
     for i in range(_CARRY_TERMS):
         if i + 1 < nb:
             acc[i + 1 :] += q * ends[: nb - i - 1]
         q *= RHO**_BLOCK
-    carry[:] = acc
-    out = inner + _POW1[None, :, None] * carry[:, None, :]
-    return out.reshape(-1)[:n]
+    out: FloatArray = (inner + _POW1[None, :, None] * acc[:, None, :]).reshape(-1)[:n]
+    return out
 
 
+_COARSE_TAPS = (1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 14, 16, 18, 20, 23, 26, 30, 35, 40)
+"""Moving-average lengths a scan tries first (then the neighbours of the best)."""
+
+_DIRECT = 3000  # RHO^-3000 = 1e137: the direct sum stays well inside float range
+_POW_ALL = RHO ** np.arange(_DIRECT)
+_INV_ALL = 1.0 / _POW_ALL
 _BLOCK = 32
 _POW = RHO ** np.arange(_BLOCK)
 _INV = 1.0 / _POW
@@ -79,8 +103,8 @@ class Problem:
     """A step log ready to fit: t (s), u (V, held from each row on), y measured speed (rad/s).
 
     ts: nominal sample period, s; z0: initial speed in K = 1 units (V), None for steady
-    state under the first input; weights: 1 for rows
-    that count, 0 for wild rows.
+    state under the first input; weights: 1 for rows that count, 0 for rows left out;
+    over_interval: the speed of a row was taken over its real interval (else over ts).
     """
 
     t: FloatArray
@@ -89,17 +113,42 @@ class Problem:
     ts: float
     z0: float | None = 0.0
     weights: FloatArray = field(default_factory=lambda: np.zeros(0))
+    over_interval: bool = False
     _yw: dict[int, FloatArray] = field(default_factory=dict, repr=False)
+    _scale: dict[int, FloatArray | None] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         if self.weights.size != self.y.size:
             self.weights = np.ones(self.y.size)
         self.st = Stretches.from_samples(self.t, self.u)
+        self.keep = self.weights > 0
+
+    def scale(self, taps: int) -> FloatArray | None:
+        """Per row, (t_k - t_k-N)/(N ts) for a speed taken over the real interval (None: 1)."""
+        if taps not in self._scale:
+            if not self.over_interval:
+                self._scale[taps] = None
+            else:
+                tt = np.concatenate((self.t[0] - self.ts * np.arange(taps, 0, -1), self.t))
+                self._scale[taps] = (tt[taps:] - tt[:-taps]) / (taps * self.ts)
+        return self._scale[taps]
+
+    def white(self, g: FloatArray, taps: int) -> FloatArray:
+        """The whitened form of a speed on every row (rows left out count as 0)."""
+        s = self.scale(taps)
+        x = g * self.weights if s is None else g * s * self.weights
+        return whiten(x, taps)
 
     def y_white(self, taps: int) -> FloatArray:
         if taps not in self._yw:
-            self._yw[taps] = whiten(self.y, taps)
+            self._yw[taps] = self.white(self.y, taps)
         return self._yw[taps]
+
+    def with_weights(self, weights: FloatArray) -> Problem:
+        """The same log with other row weights."""
+        return Problem(
+            self.t, self.u, self.y, self.ts, self.z0, np.asarray(weights, float), self.over_interval
+        )
 
     def head(self, rows: int) -> Problem:
         """The first ``rows`` rows as a problem of their own (same weights)."""
@@ -112,150 +161,379 @@ class Problem:
             self.ts,
             self.z0,
             self.weights[:rows].copy(),
+            self.over_interval,
         )
+
+    @property
+    def rows(self) -> int:
+        return int(np.count_nonzero(self.keep))
 
 
 @dataclass(frozen=True)
 class Fit:
-    """A fitted model: cause ('none' for the first-order baseline), T (s), K (rad/s/V), the
-    cause's parameter, the effects it simulates, and the whitened sum of squares it reached."""
+    """A fitted model: the causes it holds (empty for the first-order baseline), T (s),
+    K (rad/s/V), the effects it simulates, and the whitened sum of squares it reached on
+    ``rows`` rows."""
 
-    cause: str
+    causes: tuple[str, ...]
     T: float
     K: float
-    params: dict[str, float]
     effects: Effects
     sse_white: float
     rows: int
 
+    @property
+    def name(self) -> str:
+        """'none' for the baseline, else the causes joined by '+'."""
+        return "+".join(self.causes) if self.causes else "none"
+
+    @property
+    def params(self) -> dict[str, float]:
+        """Each cause's parameter by its contract name (a_max in rad/s^2)."""
+        return {
+            BY_CAUSE[c].param: reported(c, field_value(self.effects, c), self.K)
+            for c in self.causes
+        }
+
+    def value(self, cause: str) -> float:
+        """The Effects field behind ``cause`` (K = 1 units)."""
+        return field_value(self.effects, cause)
+
     def predict(self, prob: Problem) -> FloatArray:
         """Simulated measured speed on every row of ``prob``, rad/s."""
-        return self.K * response(prob.st, prob.t, prob.ts, self.T, self.effects, prob.z0)
-
-
-def _score(prob: Problem, T: float, fx: Effects) -> tuple[float, float]:
-    """(whitened SSE, K) of the model (T, fx) with the best K."""
-    return _score_response(prob, response(prob.st, prob.t, prob.ts, T, fx, prob.z0), fx.taps)
-
-
-def _score_response(prob: Problem, g: FloatArray, taps: int) -> tuple[float, float]:
-    """(whitened SSE, K) of the response g (K = 1) measured with ``taps``, with the best K."""
-    gw = whiten(g, taps)
-    yw = prob.y_white(taps)
-    w = prob.weights
-    den = float(np.dot(w * gw, gw))
-    if den <= 0.0 or not math.isfinite(den):
-        return math.inf, 0.0
-    k = float(np.dot(w * gw, yw)) / den
-    r = yw - k * gw
-    return float(np.dot(w * r, r)), k
-
-
-def _best_T(prob: Problem, fx: Effects, grid: FloatArray | None = None) -> tuple[float, float]:
-    """(T, SSE) minimising over T for fixed effects: log grid, then Brent in the best bracket."""
-    lo, hi = math.log(T_BOUNDS[0]), math.log(T_BOUNDS[1])
-    xs = np.linspace(lo, hi, 16) if grid is None else np.log(grid)
-    vals = [_score(prob, math.exp(x), fx)[0] for x in xs]
-    i = int(np.argmin(vals))
-    a, b = xs[max(i - 1, 0)], xs[min(i + 1, xs.size - 1)]
-    x, fx_val = golden(lambda x: _score(prob, math.exp(x), fx)[0], a, b, xatol=1e-4)
-    if fx_val < vals[i]:
-        return math.exp(x), fx_val
-    return math.exp(float(xs[i])), float(vals[i])
-
-
-def fit_baseline(prob: Problem) -> Fit:
-    """The first-order model T w' = -w + K u, fitted on the whitened residual."""
-    T, sse = _best_T(prob, Effects())
-    _, K = _score(prob, T, Effects())
-    return Fit("none", T, K, {}, Effects(), sse, int(prob.weights.sum()))
-
-
-def _param_grid(c: Candidate, prob: Problem) -> FloatArray:
-    if c.cause == "coulomb_friction":
-        top = min(
-            c.hi, 0.9 * float(np.min(np.abs(prob.st.value[prob.st.value != 0]), initial=c.hi))
+        return self.K * response(
+            prob.st, prob.t, prob.ts, self.T, self.effects, prob.z0, prob.over_interval
         )
-        return np.linspace(0.0, top, 13)[1:]
-    if c.log_scale:
-        return np.geomspace(c.lo, c.hi, 14)
-    return np.linspace(c.lo, c.hi, 13)[1:]
 
 
-def _within(grid: FloatArray) -> FloatArray:
-    """A grid of T (s) taken into T_BOUNDS: values outside move to the nearest bound, once."""
-    return np.unique(np.clip(grid, *T_BOUNDS))
+# -- one model, its parameters as a vector -----------------------------------------------
 
 
-def fit_candidate(prob: Problem, c: Candidate, base: Fit, extra: Effects | None = None) -> Fit:
-    """Fit the baseline plus the candidate's effect (on top of ``extra`` effects, if any)."""
-    extra = extra or Effects()
-    tgrid = _within(base.T * np.geomspace(0.25, 4.0, 9))
+@dataclass(frozen=True)
+class _Axis:
+    cause: str
+    lo: float
+    hi: float
+    step: float
+    log_scale: bool
+    unit: float  # value = x * unit (linear axes)
 
-    def fx_of(p: float) -> Effects:
-        d = {**_asdict(extra), c.param: p}
-        return Effects.of(d)
+    def value(self, x: float) -> float:
+        return math.exp(x) if self.log_scale else x * self.unit
 
-    if c.integer:  # taps: the angle does not depend on it, so simulate once per T
-        best = (math.inf, base.T, 1)
-        for T in _within(base.T * np.geomspace(0.2, 2.0, 13)):
-            top = int(c.hi)
-            before = prob.t[0] - prob.ts * np.arange(top, 0, -1)
-            theta = angle(prob.st, np.concatenate((before, prob.t)), T, extra, prob.z0)
-            for taps in range(int(c.lo), top + 1):
-                g = (theta[top:] - theta[top - taps : theta.size - taps]) / (taps * prob.ts)
-                sse = _score_response(prob, g, taps)[0]
-                if sse < best[0]:
-                    best = (sse, T, taps)
-        tries = []
-        for p in range(max(int(c.lo), best[2] - 1), min(int(c.hi), best[2] + 1) + 1):
-            tries.append(
-                (*_best_T(prob, fx_of(p), _within(best[1] * np.geomspace(0.7, 1.4, 5))), p)
-            )
-        T, sse, p = min(tries, key=lambda r: r[1])
-        _, K = _score(prob, T, fx_of(p))
-        return Fit(c.cause, T, K, {c.param: float(p)}, fx_of(p), sse, base.rows)
-
-    grid = _param_grid(c, prob)
-    results = [(*_best_T(prob, fx_of(p), tgrid), p) for p in grid]
-    T0, sse0, p0 = min(results, key=lambda r: r[1])
-    scale = float(grid[-1] - grid[0]) / max(len(grid) - 1, 1)
-
-    def obj(x: FloatArray) -> float:
-        p = math.exp(x[1]) if c.log_scale else x[1]
-        hi = grid[-1] if c.cause == "coulomb_friction" else c.hi
-        T = math.exp(x[0])
-        if not (c.lo <= p <= hi and T_BOUNDS[0] <= T <= T_BOUNDS[1]):
-            return math.inf
-        return _score(prob, T, fx_of(p))[0]
-
-    x0 = np.array([math.log(T0), math.log(p0) if c.log_scale else p0])
-    step = np.array([0.15, 0.3 if c.log_scale else scale * 0.5])
-    x, val = nelder_mead(obj, x0, step)
-    if val < sse0:
-        T0, sse0 = math.exp(float(x[0])), val
-        p0 = math.exp(float(x[1])) if c.log_scale else float(x[1])
-    if c.cause == "second_pole" and p0 > T0:  # two poles in series are symmetric: T2 is the faster
-        T0, p0 = p0, T0
-    _, K = _score(prob, T0, fx_of(p0))
-    return Fit(c.cause, T0, K, {c.param: float(p0)}, fx_of(p0), sse0, base.rows)
+    def coord(self, value: float) -> float:
+        if self.log_scale:
+            return math.log(min(max(value, math.exp(self.lo)), math.exp(self.hi)))
+        return min(max(value / self.unit, self.lo), self.hi)
 
 
-def _asdict(fx: Effects) -> dict[str, float]:
-    out: dict[str, float] = {}
-    if fx.u_c:
-        out["u_c"] = fx.u_c
-    if fx.delay:
-        out["delay"] = fx.delay
-    if fx.taps != 1:
-        out["taps"] = fx.taps
-    if fx.T_coast is not None:
-        out["T_coast"] = fx.T_coast
-    if fx.T2:
-        out["T2"] = fx.T2
+def _axes(prob: Problem, causes: Sequence[str], rng: dict[str, Range]) -> list[_Axis]:
+    u_scale = float(np.max(np.abs(prob.u))) or 1.0
+    out = [_Axis("T", math.log(T_BOUNDS[0]), math.log(T_BOUNDS[1]), 2e-3, True, 1.0)]
+    for c in causes:
+        if c == "velocity_filter":
+            continue
+        r = rng[c]
+        if r.log_scale:
+            out.append(_Axis(c, math.log(r.lo), math.log(r.hi), 5e-3, True, 1.0))
+        else:
+            unit = u_scale if c == "coulomb_friction" else prob.ts
+            out.append(_Axis(c, r.lo / unit, r.hi / unit, 5e-3, False, unit))
     return out
 
 
-def fit_all(prob: Problem, base: Fit) -> dict[str, Fit]:
-    """Every candidate fitted alone on top of the baseline."""
-    return {name: fit_candidate(prob, c, base) for name, c in BY_CAUSE.items()}
+class Model:
+    """One set of causes on one problem: the parameters as a vector in a box, and the
+    whitened residual (K solved) of any point in it."""
+
+    def __init__(self, prob: Problem, causes: Sequence[str], rng: dict[str, Range]) -> None:
+        self.prob = prob
+        self.causes = tuple(causes)
+        self.rng = rng
+        self.axes = _axes(prob, self.causes, rng)
+        self.lo = np.array([a.lo for a in self.axes])
+        self.hi = np.array([a.hi for a in self.axes])
+        self.step = np.array([a.step for a in self.axes])
+        self.taps = 1
+        self.evaluations = 0
+
+    def effects(self, x: FloatArray) -> tuple[float, Effects]:
+        T = math.exp(float(x[0]))
+        values: dict[str, float] = {
+            a.cause: a.value(float(v)) for a, v in zip(self.axes[1:], x[1:], strict=True)
+        }
+        if "velocity_filter" in self.causes:
+            values["velocity_filter"] = float(self.taps)
+        return T, effects_of(values)
+
+    def x_of(self, T: float, values: dict[str, float]) -> FloatArray:
+        """The vector of T (s) and {cause: Effects field value}."""
+        x = [self.axes[0].coord(T)]
+        for a in self.axes[1:]:
+            x.append(a.coord(values[a.cause]))
+        return np.array(x)
+
+    def residual(self, x: FloatArray) -> FloatArray:
+        """Whitened residual on the rows that count, with the best K."""
+        T, fx = self.effects(x)
+        g = self.response(T, fx)
+        return self.fit_k(g, fx.taps)[0]
+
+    def response(self, T: float, fx: Effects) -> FloatArray:
+        self.evaluations += 1
+        p = self.prob
+        return response(p.st, p.t, p.ts, T, fx, p.z0, p.over_interval)
+
+    def fit_k(self, g: FloatArray, taps: int) -> tuple[FloatArray, float]:
+        """(whitened residual on the rows that count, K) for the response g (K = 1)."""
+        p = self.prob
+        gw = p.white(g, taps)[p.keep]
+        yw = p.y_white(taps)[p.keep]
+        den = float(np.dot(gw, gw))
+        if den <= 0.0 or not math.isfinite(den):
+            return np.full(yw.size, math.inf), 0.0
+        k = float(np.dot(gw, yw)) / den
+        return yw - k * gw, k
+
+    def sse(self, x: FloatArray) -> float:
+        r = self.residual(x)
+        return float(np.dot(r, r)) if np.all(np.isfinite(r)) else math.inf
+
+    def fit(self, x0: FloatArray, max_iter: int = 25) -> Fit:
+        """Levenberg-Marquardt from x0 (the taps, if any, scanned around as well)."""
+        x, f, _ = least_squares(self.residual, x0, self.lo, self.hi, self.step, max_iter)
+        if "velocity_filter" in self.causes:
+            # the length trades against T (one more sample of averaging, half a sample less
+            # of T): each neighbour is judged with the other parameters fitted again
+            hi = int(self.rng["velocity_filter"].hi)
+            best = (f, x, self.taps)
+            tried = {self.taps}
+            while True:
+                centre = best[2]
+                for n in (centre - 1, centre + 1):
+                    if n < 1 or n > hi or n in tried:
+                        continue
+                    tried.add(n)
+                    self.taps = n
+                    xn, fn, _ = least_squares(
+                        self.residual, best[1], self.lo, self.hi, self.step, max_iter
+                    )
+                    if fn < best[0]:
+                        best = (fn, xn, n)
+                if best[2] == centre:
+                    break
+            f, x, self.taps = best
+        return self.make(x, f)
+
+    def make(self, x: FloatArray, f: float | None = None) -> Fit:
+        T, fx = self.effects(x)
+        g = self.response(T, fx)
+        r, k = self.fit_k(g, fx.taps)
+        sse = float(np.dot(r, r)) if f is None else f
+        return Fit(self.causes, T, k, fx, sse, self.prob.rows)
+
+    def scan_taps(self, x: FloatArray, anchors: Sequence[float] = ()) -> FloatArray:
+        """x with T and the moving-average length set to the best pair on a grid of T from
+        0.15 to 1.5 times x's and each of ``anchors`` (s) (the length scanned in full at
+        each)."""
+        best = (math.inf, x, self.taps)
+        ts = [math.exp(float(x[0])), *anchors]
+        lo, hi = math.log(0.15 * min(ts)), math.log(1.5 * max(ts))
+        grid = np.linspace(lo, hi, max(7, int(math.ceil((hi - lo) / 0.3)) + 1))
+        top = int(self.rng["velocity_filter"].hi)
+        coarse = [n for n in _COARSE_TAPS if n <= top]
+        for g in grid.tolist():
+            xt = x.copy()
+            xt[0] = min(max(g, self.lo[0]), self.hi[0])
+            taps, sse = self._taps_sse(xt, coarse)
+            if sse < best[0]:
+                best = (sse, xt, taps)
+        near = list(range(max(1, best[2] - 3), min(top, best[2] + 3) + 1))
+        self.taps = self._taps_sse(best[1], near)[0]
+        return best[1]
+
+    def _taps_sse(self, x: FloatArray, tries: Sequence[int]) -> tuple[int, float]:
+        """The moving-average length among ``tries`` that fits best with the other
+        parameters at x, and its whitened sum of squares (the angle computed once)."""
+        T, fx = self.effects(x)
+        top = max(tries)
+        p = self.prob
+        tb = p.t[0] - p.ts * np.arange(top, 0, -1)
+        table = pieces(p.st, T, fx, p.z0)
+        theta = table.angle(np.concatenate((tb, p.t)) - fx.delay)
+        self.evaluations += 1
+        best, best_sse = 1, math.inf
+        for n in tries:
+            g = measured(theta[top:], p.t, theta[top - n : top], p.ts, n, p.over_interval)
+            r, _ = self.fit_k(g, n)
+            sse = float(np.dot(r, r))
+            if sse < best_sse:
+                best, best_sse = n, sse
+        return best, best_sse
+
+
+def fit_baseline(prob: Problem, rng: dict[str, Range]) -> Fit:
+    """The first-order model T w' = -w + K u: a log grid in T, then golden section."""
+    m = Model(prob, (), rng)
+    xs = np.linspace(math.log(T_BOUNDS[0]), math.log(T_BOUNDS[1]), 16)
+    vals = [m.sse(np.array([x])) for x in xs]
+    i = int(np.argmin(vals))
+    a, b = xs[max(i - 1, 0)], xs[min(i + 1, xs.size - 1)]
+    x, f = golden(lambda v: m.sse(np.array([v])), float(a), float(b), xatol=1e-4)
+    if f > vals[i]:
+        x, f = float(xs[i]), float(vals[i])
+    return m.make(np.array([x]), f)
+
+
+def fit_causes(
+    prob: Problem,
+    causes: Sequence[str],
+    rng: dict[str, Range],
+    starts: Sequence[tuple[float, dict[str, float]]],
+    max_iter: int = 25,
+    scan: bool | None = True,
+    polish: tuple[str, ...] = (),
+) -> Fit:
+    """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
+    ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
+    among the causes its length is first scanned in full (``scan`` True), else only around
+    the start's (False), or both ways (None). For each cause in ``polish`` the best two
+    starts with other values of it are polished too (a cause that does not act at the best
+    start has no gradient to grow by), and the best result kept."""
+    m = Model(prob, causes, rng)
+    scored = []
+    for T, values in starts:
+        if "velocity_filter" in causes:
+            m.taps = int(round(values.get("velocity_filter", m.taps)))
+        x = m.x_of(T, values)
+        scored.append((m.sse(x), m.taps, x, values))
+    ok = [r for r in scored if math.isfinite(r[0])]
+    if not ok:  # no start moves the wheel (friction above the cap, say)
+        T, fx = m.effects(m.x_of(*starts[0]))
+        return Fit(m.causes, T, 0.0, fx, math.inf, prob.rows)
+    ok.sort(key=lambda r: r[0])
+    picks = [ok[0]]
+    for c in polish:
+        seen = {ok[0][3].get(c)}
+        for r in ok:
+            if len(picks) >= 3:
+                break
+            if r[3].get(c) not in seen:
+                seen.add(r[3].get(c))
+                picks.append(r)
+    best: Fit | None = None
+    ways = (True, False) if scan is None and "velocity_filter" in causes else (bool(scan),)
+    for _, taps, x, _ in picks:
+        for way in ways:
+            m.taps = taps
+            xs = x
+            if "velocity_filter" in causes and way:
+                xs = m.scan_taps(x, sorted({T for T, _ in starts}))
+            f = m.fit(xs, max_iter)
+            if best is None or f.sse_white < best.sse_white:
+                best = f
+    assert best is not None
+    return best
+
+
+def values_of(f: Fit) -> dict[str, float]:
+    """{cause: Effects field value} of a fit."""
+    return {c: f.value(c) for c in f.causes}
+
+
+def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fit:
+    """``f``'s causes fitted again on ``prob`` (other weights), started from ``f``."""
+    if not f.causes:
+        return fit_baseline_near(prob, rng, f.T)
+    return fit_causes(prob, f.causes, rng, [(f.T, values_of(f))], max_iter, scan=False)
+
+
+def fit_baseline_near(prob: Problem, rng: dict[str, Range], T: float) -> Fit:
+    """The baseline polished from T (s) by a short golden-section search in log T."""
+    m = Model(prob, (), rng)
+    x, f = golden(lambda v: m.sse(np.array([v])), math.log(T) - 0.7, math.log(T) + 0.7, 1e-4)
+    return m.make(np.array([x]), f)
+
+
+# -- 95 % intervals ----------------------------------------------------------------------
+
+Z95 = 1.96
+
+
+def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[float, float]]:
+    """A 95 % interval for T, K and each cause's parameter (contract names and units).
+
+    From the Jacobian of the whitened residual at the fit (K as a parameter too); the
+    residual variance is the fit's own, inflated by (1 + rho1)/(1 - rho1) for the lag-1
+    autocorrelation rho1 left in it (a real log's misfit is not white). The moving
+    average's length gets the lengths whose sum of squares stays within the same
+    tolerance.
+    """
+    m = Model(prob, f.causes, rng)
+    m.taps = f.effects.taps
+    x = m.x_of(f.T, values_of(f))
+    T, fx = m.effects(x)
+    g = m.response(T, fx)
+    r0, k = m.fit_k(g, fx.taps)
+    gw = prob.white(g, fx.taps)[prob.keep]
+    cols = [-gw]  # d r / d K
+    for i, a in enumerate(m.axes):
+        h = a.step if x[i] + a.step <= m.hi[i] else -a.step
+        xp = x.copy()
+        xp[i] += h
+        Tp, fxp = m.effects(xp)
+        gp = prob.white(m.response(Tp, fxp), fx.taps)[prob.keep]
+        cols.append(-(k * (gp - gw)) / h)
+    jac = np.column_stack(cols)
+    n, p = jac.shape
+    s2 = float(np.dot(r0, r0)) / max(n - p, 1)
+    rho = float(np.dot(r0[1:], r0[:-1]) / np.dot(r0, r0)) if n > 2 and np.dot(r0, r0) > 0 else 0.0
+    rho = min(max(rho, 0.0), 0.95)
+    s2 *= (1.0 + rho) / (1.0 - rho)
+    try:
+        cov = np.linalg.pinv(jac.T @ jac) * s2
+    except np.linalg.LinAlgError:
+        cov = np.full((p, p), np.inf)
+    sd = np.sqrt(np.maximum(np.diag(cov), 0.0))
+    sd = np.where(np.isfinite(sd), sd, np.inf)  # a parameter the log does not pin down
+    out: dict[str, tuple[float, float]] = {"K": (k - Z95 * sd[0], k + Z95 * sd[0])}
+    for i, a in enumerate(m.axes):
+        lo_x, hi_x = x[i] - Z95 * sd[i + 1], x[i] + Z95 * sd[i + 1]
+        if a.log_scale:
+            lo_x, hi_x = max(lo_x, -700.0), min(hi_x, 700.0)
+        if a.cause == "T":
+            out["T"] = (math.exp(lo_x), math.exp(hi_x))
+            continue
+        name = BY_CAUSE[a.cause].param
+        lo_v, hi_v = (
+            (math.exp(lo_x), math.exp(hi_x)) if a.log_scale else (lo_x * a.unit, hi_x * a.unit)
+        )
+        if not a.log_scale:
+            lo_v = max(lo_v, 0.0)
+        if a.cause == "current_limit":
+            lo_v, hi_v = abs(k) * lo_v, abs(k) * hi_v
+        out[name] = (lo_v, hi_v)
+    if "velocity_filter" in f.causes:
+        out["taps"] = _taps_interval(
+            m, x, f, 1.0 + Z95**2 * (1.0 + rho) / (1.0 - rho) / max(n - p, 1)
+        )
+    return out
+
+
+def _taps_interval(m: Model, x: FloatArray, f: Fit, tol: float) -> tuple[float, float]:
+    T, fx = m.effects(x)
+    p = m.prob
+    hi = int(m.rng["velocity_filter"].hi)
+    top = hi
+    tb = p.t[0] - p.ts * np.arange(top, 0, -1)
+    theta = pieces(p.st, T, fx, p.z0).angle(np.concatenate((tb, p.t)) - fx.delay)
+    ok = []
+    for n in range(1, hi + 1):
+        g = measured(theta[top:], p.t, theta[top - n : top], p.ts, n, p.over_interval)
+        r, _ = m.fit_k(g, n)
+        if float(np.dot(r, r)) <= tol * f.sse_white:
+            ok.append(n)
+    taps = f.effects.taps
+    if not ok:
+        return float(taps), float(taps)
+    return float(min(min(ok), taps)), float(max(max(ok), taps))

@@ -74,3 +74,61 @@ def nelder_mead(
                     fev += 1
     i = int(np.argmin(vals))
     return pts[i], float(vals[i])
+
+
+def least_squares(
+    resid: Callable[[NDArray[np.float64]], NDArray[np.float64]],
+    x0: NDArray[np.float64],
+    lo: NDArray[np.float64],
+    hi: NDArray[np.float64],
+    step: NDArray[np.float64],
+    max_iter: int = 25,
+    rtol: float = 1e-6,
+) -> tuple[NDArray[np.float64], float, NDArray[np.float64]]:
+    """Levenberg-Marquardt within the box [lo, hi]: (x, sum of squares, Jacobian at x).
+
+    ``resid`` gives the residual vector (non-finite entries mark a failed model); the
+    Jacobian is taken by forward differences of size ``step`` per axis (backward at the
+    upper bound). A coordinate that sits on a bound and is pushed out of the box is held
+    there for the step.
+    """
+    x = np.clip(np.asarray(x0, float), lo, hi)
+    r = resid(x)
+    f = float(np.dot(r, r)) if np.all(np.isfinite(r)) else math.inf
+    lam = 1e-3
+    jac = np.zeros((r.size, x.size))
+    for _ in range(max_iter):
+        for i in range(x.size):
+            h = step[i] if x[i] + step[i] <= hi[i] else -step[i]
+            xp = x.copy()
+            xp[i] += h
+            jac[:, i] = (resid(xp) - r) / h
+        if not np.all(np.isfinite(jac)):
+            jac = np.nan_to_num(jac, nan=0.0, posinf=0.0, neginf=0.0)
+        g = jac.T @ r
+        a = jac.T @ jac
+        free = ~(((x <= lo) & (g > 0)) | ((x >= hi) & (g < 0)))
+        if not np.any(free):
+            break
+        improved = False
+        for _ in range(8):
+            af = a[np.ix_(free, free)]
+            d = np.zeros_like(x)
+            try:
+                d[free] = np.linalg.solve(af + lam * np.diag(np.diag(af) + 1e-12), -g[free])
+            except np.linalg.LinAlgError:
+                lam *= 10.0
+                continue
+            xn = np.clip(x + d, lo, hi)
+            rn = resid(xn)
+            fn = float(np.dot(rn, rn)) if np.all(np.isfinite(rn)) else math.inf
+            if fn < f:
+                done = f - fn <= rtol * f or float(np.max(np.abs(xn - x) / step)) < 1e-3
+                x, r, f = xn, rn, fn
+                lam = max(lam / 4.0, 1e-9)
+                improved = True
+                break
+            lam *= 6.0
+        if not improved or done:
+            break
+    return x, f, jac

@@ -1,25 +1,30 @@
-"""Exact simulation of the candidate models on a piecewise-constant input.
+"""Exact simulation of the first-order model and its effects on a piecewise-constant input.
 
 The input of a step log is held between samples: ``u[k]`` is in force from ``t[k]`` to
-``t[k+1]``. Within each stretch of constant input every candidate has a closed-form
-response, so the simulation walks the stretches once (scalar arithmetic, one per input
-change) and writes down a table of *pieces*; each piece gives the wheel angle in closed
-form from its start:
+``t[k+1]``. Every effect the check knows keeps the motor piecewise linear: dry friction
+(a constant deceleration while the wheel turns, sticking at rest), coasting at zero
+command (its own time constant), an extra pole on the drive, and a current limit (a cap
+on the acceleration the drive gives in the direction of motion). Within one *mode*
+(coasting, stuck, capped, or driven linearly) the speed is a constant plus at most two
+exponentials, or a straight ramp, so the simulation walks the constant-input stretches
+once, finds when the mode changes (a stop, a breakaway, the cap starting or ending: in
+closed form, or by bisection on a function with at most one extremum, which is found in
+closed form) and writes down a table of *pieces*; each gives the wheel angle from its
+start:
 
-    theta(tau) = theta0 + c tau + A1 T1 (1 - exp(-tau/T1)) + A2 T2 (1 - exp(-tau/T2))
+    theta(tau) = theta0 + c tau + q tau^2 + A1 T1 (1 - exp(-tau/T1)) + A2 T2 (1 - exp(-tau/T2))
 
 Evaluating the angle at the sample instants is then one vectorised expression, at any
-instants: a dead time is the same table read ``delay`` seconds earlier (exact, not rounded
-to samples). Dry friction splits a stretch at its stop time and sticks while the drive
-cannot break away; a second pole carries its own state across stretches.
+instants: a dead time is the same table read ``delay`` seconds earlier.
 
-Everything is computed with K = 1 (angles in V s, speeds in V): every candidate's response
-is proportional to K, which the fit then solves for by linear least squares.
+Everything is computed with K = 1 (speeds in V, angles in V s, the current limit as a
+rate in V/s): every response is proportional to K, which the fit solves for linearly.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,7 +32,8 @@ from numpy.typing import NDArray
 
 FloatArray = NDArray[np.float64]
 
-_FAR = 1.0e6  # s: start of the piece that stands for "before the log"
+FAR = 1.0e6
+"""s: start of the piece that stands for "before the log", and the length of the last stretch."""
 
 
 @dataclass(frozen=True)
@@ -45,109 +51,369 @@ class Stretches:
         return cls(start=np.asarray(t, float)[idx], value=np.asarray(u, float)[idx])
 
 
-class _Pieces:
+@dataclass(frozen=True)
+class Effects:
+    """The effects on top of the first-order model (absent: 0, 1, None or infinity).
+
+    u_c: dry friction as a breakaway voltage, V; delay: dead time, s; taps: the measured
+    speed is a moving average over this many samples; T_coast: time constant at zero
+    command (the bridge open), s; T2: extra pole on the drive, s; rate: the current limit
+    as the largest acceleration the drive gives, in K = 1 units (V/s; a_max = K rate).
+    """
+
+    u_c: float = 0.0
+    delay: float = 0.0
+    taps: int = 1
+    T_coast: float | None = None
+    T2: float = 0.0
+    rate: float = math.inf
+
+
+class Pieces:
     """Growing table of closed-form pieces (see the module docstring)."""
 
     def __init__(self) -> None:
-        self.rows: list[tuple[float, float, float, float, float, float, float]] = []
+        self.rows: list[tuple[float, float, float, float, float, float, float, float]] = []
 
     def add(
         self,
         t0: float,
         th0: float,
         c: float,
+        q: float = 0.0,
         a1: float = 0.0,
         t1: float = 1.0,
         a2: float = 0.0,
         t2: float = 1.0,
     ) -> None:
-        self.rows.append((t0, th0, c, a1, t1, a2, t2))
+        self.rows.append((t0, th0, c, q, a1, t1, a2, t2))
 
     def angle(self, tau: FloatArray) -> FloatArray:
-        """Angle (V s at K = 1) at the instants ``tau`` (s, ascending)."""
+        """Angle (V s at K = 1) at the instants ``tau`` (s, ascending or not)."""
         p = np.asarray(self.rows, dtype=float)
         i = np.clip(np.searchsorted(p[:, 0], tau, side="right") - 1, 0, None)
         q = p[i]
         dt = tau - q[:, 0]
-        return (
+        out: FloatArray = (
             q[:, 1]
-            + q[:, 2] * dt
-            - q[:, 3] * q[:, 4] * np.expm1(-dt / q[:, 4])
-            - q[:, 5] * q[:, 6] * np.expm1(-dt / q[:, 6])
+            + (q[:, 2] + q[:, 3] * dt) * dt
+            - q[:, 4] * q[:, 5] * np.expm1(-dt / q[:, 5])
+            - q[:, 6] * q[:, 7] * np.expm1(-dt / q[:, 7])
         )
+        return out
 
 
-def _first_order_stretch(
-    out: _Pieces, t0: float, w0: float, th0: float, a: float, b: float, d: float, length: float
-) -> tuple[float, float]:
-    """w' = -a w + b - d sgn(w) over ``length`` s from (w0, th0); sticks at 0 when |b| <= d.
+def _exp(x: float) -> float:
+    return math.exp(x) if x > -700.0 else 0.0
 
-    Adds the pieces to ``out`` and returns (w, theta) at the end.
+
+def _first_zero(f: Callable[[float], float], t_ext: float | None, length: float) -> float | None:
+    """First tau in (0, length] where f changes sign, for f with at most one extremum in
+    between (at ``t_ext`` when given); None when it does not."""
+    cuts = [0.0]
+    if t_ext is not None and 0.0 < t_ext < length:
+        cuts.append(t_ext)
+    cuts.append(length)
+    f0 = f(0.0)
+    for a, b in zip(cuts[:-1], cuts[1:], strict=False):
+        fa, fb = f(a), f(b)
+        if a == 0.0 and f0 == 0.0:
+            fa = f(min(1e-12, b))
+        if fa == 0.0 or (fa > 0.0) == (fb > 0.0):
+            continue
+        # regula falsi (Illinois): the function is monotonic on [a, b]
+        side = 0
+        for _ in range(60):
+            m = (a * fb - b * fa) / (fb - fa)
+            if not a < m < b:
+                m = 0.5 * (a + b)
+            fm = f(m)
+            if (fm > 0.0) == (fa > 0.0):
+                a, fa = m, fm
+                if side == -1:
+                    fb *= 0.5
+                side = -1
+            else:
+                b, fb = m, fm
+                if side == 1:
+                    fa *= 0.5
+                side = 1
+            if b - a < 1e-10 * max(1.0, b) or fm == 0.0:
+                break
+        return b
+    return None
+
+
+def _two_exp_extremum(k1: float, t1: float, k2: float, t2: float) -> float | None:
+    """Where d/dtau (k1 exp(-tau/t1) + k2 exp(-tau/t2)) = 0, if anywhere after 0."""
+    if k1 == 0.0 or k2 == 0.0 or t1 == t2:
+        return None
+    r = -(k2 / t2) / (k1 / t1)
+    if r <= 0.0:
+        return None
+    x = math.log(r) / (1.0 / t2 - 1.0 / t1)
+    return x if x > 0.0 else None
+
+
+class _State:
+    """Speed w (V), drive after the extra pole v (V) and angle th (V s) at time t (s)."""
+
+    __slots__ = ("capping", "t", "th", "v", "w")
+
+    def __init__(self, t: float, w: float, v: float, th: float) -> None:
+        self.t, self.w, self.v, self.th = t, w, v, th
+        self.capping = False  # the last piece ended where the cap starts to hold
+
+
+def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Pieces:
+    """The angle table of the model (T, fx) on the input ``st`` (K = 1).
+
+    ``z0`` is the initial speed (V at K = 1); None means steady state under the first input.
+    The dead time and the measurement (``fx.delay``, ``fx.taps``) are applied when the
+    table is read (:func:`response`).
     """
-    if w0 == 0.0:
-        if abs(b) <= d:
-            out.add(t0, th0, 0.0)
-            return 0.0, th0
-        s = math.copysign(1.0, b)
-    else:
-        s = math.copysign(1.0, w0)
-    w_inf = (b - s * d) / a
-    if w0 != 0.0 and s * w_inf < 0.0:
-        t_stop = math.log((w0 - w_inf) / -w_inf) / a
-        if t_stop < length:
-            out.add(t0, th0, w_inf, w0 - w_inf, 1.0 / a)
-            th_stop = th0 + w_inf * t_stop - (w0 - w_inf) * math.expm1(-a * t_stop) / a
-            return _first_order_stretch(out, t0 + t_stop, 0.0, th_stop, a, b, d, length - t_stop)
-    out.add(t0, th0, w_inf, w0 - w_inf, 1.0 / a)
-    e = math.exp(-a * length)
-    return w_inf + (w0 - w_inf) * e, th0 + w_inf * length + (w0 - w_inf) * (1.0 - e) / a
-
-
-def first_order_pieces(
-    st: Stretches, T: float, z0: float = 0.0, u_c: float = 0.0, T_coast: float | None = None
-) -> _Pieces:
-    """T w' = -w + u - u_c sgn(w) (K = 1), with sticking; at u = 0 the time constant is
-    ``T_coast`` when given (the bridge open: no drive, friction only). Starts at speed z0 (V)."""
-    out = _Pieces()
-    out.add(st.start[0] - _FAR, -z0 * _FAR, z0)
-    w, th = z0, 0.0
-    d = u_c / T
-    ends = np.append(st.start[1:], math.inf)
-    for t0, t1, u in zip(st.start.tolist(), ends.tolist(), st.value.tolist(), strict=True):
-        length = t1 - t0 if math.isfinite(t1) else _FAR
-        if T_coast is not None and u == 0.0:
-            w, th = _first_order_stretch(out, t0, w, th, 1.0 / T_coast, 0.0, d, length)
-        else:
-            w, th = _first_order_stretch(out, t0, w, th, 1.0 / T, u / T, d, length)
-    return out
-
-
-def second_pole_pieces(st: Stretches, T: float, T2: float, z0: float = 0.0) -> _Pieces:
-    """T2 v' = -v + u, T w' = -w + v (K = 1), from rest at v = w = z0 (V)."""
-    if abs(T2 - T) < 1e-6 * T:
+    T2 = fx.T2 if fx.T2 > 0.0 else 0.0
+    if T2 and abs(T2 - T) < 1e-6 * T:
         T2 = T * (1.0 + 1e-6)
-    out = _Pieces()
-    out.add(st.start[0] - _FAR, -z0 * _FAR, z0)
-    w, v, th = z0, z0, 0.0
+    if z0 is None:
+        u0 = float(st.value[0])
+        coasting = fx.T_coast is not None and u0 == 0.0
+        z0 = 0.0 if coasting else u0 - math.copysign(min(fx.u_c, abs(u0)), u0)
+    out = Pieces()
+    out.add(float(st.start[0]) - FAR, -z0 * FAR, z0)
     ends = np.append(st.start[1:], math.inf)
+    if not T2 and fx.u_c == 0.0 and fx.T_coast is None and math.isinf(fx.rate):
+        # plain first order: one exponential piece per stretch, no events
+        w, th = z0, 0.0
+        for t0, t1, u in zip(st.start.tolist(), ends.tolist(), st.value.tolist(), strict=True):
+            a = w - u
+            out.rows.append((t0, th, u, 0.0, a, T, 0.0, 1.0))
+            if math.isfinite(t1):
+                e = _exp(-(t1 - t0) / T)
+                th += u * (t1 - t0) + a * T * (1.0 - e)
+                w = u + a * e
+        return out
+    s = _State(float(st.start[0]), z0, z0 if T2 else float(st.value[0]), 0.0)
     for t0, t1, u in zip(st.start.tolist(), ends.tolist(), st.value.tolist(), strict=True):
-        length = t1 - t0 if math.isfinite(t1) else _FAR
-        b = (v - u) * T2 / (T2 - T)
-        a = w - u - b
-        out.add(t0, th, u, a, T, b, T2)
-        e1, e2 = math.exp(-length / T), math.exp(-length / T2)
-        th = th + u * length + a * T * (1.0 - e1) + b * T2 * (1.0 - e2)
-        w = u + a * e1 + b * e2
-        v = u + (v - u) * e2
+        s.t = t0
+        if not T2:
+            s.v = u
+        _stretch(out, s, t1 - t0 if math.isfinite(t1) else FAR, u, T, T2, fx)
     return out
 
 
-def measured(theta: FloatArray, ts: float, taps: int = 1) -> FloatArray:
-    """The measured speed from angles at the samples: (theta_k - theta_k-N)/(N ts).
+def _stretch(
+    out: Pieces, s: _State, left: float, u: float, T: float, T2: float, fx: Effects
+) -> None:
+    """Advance ``s`` by ``left`` s under the input u (V), adding the pieces to ``out``."""
+    uc, rate = fx.u_c, fx.rate
+    for _ in range(12):  # a stretch changes mode a few times at most
+        if left <= 0.0:
+            return
+        if fx.T_coast is not None and u == 0.0:
+            left = _coast(out, s, left, max(fx.T_coast, T), uc / T)
+            continue
+        drive = s.v
+        if s.w == 0.0 and (abs(drive) < uc or drive == 0.0 and (u == 0.0 or not T2)):
+            left = _stuck(out, s, left, u, uc, T2)
+            continue
+        sign = math.copysign(1.0, s.w if s.w != 0.0 else drive if drive != 0.0 else u)
+        if math.isfinite(rate) and (s.capping or sign * (drive - s.w) > T * rate * (1.0 + 1e-9)):
+            s.capping = False
+            left = _capped(out, s, left, u, sign, T, T2, uc, rate)
+        else:
+            left = _linear(out, s, left, u, sign, T, T2, uc, rate)
+    out.add(s.t, s.th, 0.0)  # pathological chattering: hold (never met in practice)
 
-    As the board computes it: the Euler velocity with the nominal ``ts`` (s), averaged over
-    ``taps`` samples, missing values before the first sample counting as 0 (row 0 is 0).
-    """
-    n = theta.size
-    back = np.maximum(np.arange(n) - taps, 0)
-    return (theta - theta[back]) / (taps * ts)
+
+def _coast(out: Pieces, s: _State, left: float, tc: float, d: float) -> float:
+    """The bridge open: w' = -w/tc - d sgn(w), no drive; the wheel stops if d > 0."""
+    s.v = s.w  # no current
+    if s.w == 0.0:
+        out.add(s.t, s.th, 0.0)
+        s.t += left
+        return 0.0
+    sign = math.copysign(1.0, s.w)
+    c = -sign * d * tc
+    a = s.w - c
+    out.add(s.t, s.th, c, 0.0, a, tc)
+    stop = tc * math.log(a / -c) if d > 0.0 else math.inf
+    h = min(stop, left)
+    e = _exp(-h / tc)
+    s.th += c * h + a * tc * (1.0 - e)
+    s.w = 0.0 if h == stop else c + a * e
+    s.v, s.t = s.w, s.t + h
+    return left - h
+
+
+def _stuck(out: Pieces, s: _State, left: float, u: float, uc: float, T2: float) -> float:
+    """At rest while the drive cannot break away (|v| <= u_c); with an extra pole the drive
+    moves towards u and may break away later in the stretch."""
+    out.add(s.t, s.th, 0.0)
+    if not T2 or abs(u) <= uc or s.v == u:
+        h = left
+    elif uc == 0.0:
+        h = 0.0
+    else:
+        target = math.copysign(uc, u)
+        h = min(T2 * math.log((s.v - u) / (target - u)), left)
+    if T2:
+        s.v = u + (s.v - u) * _exp(-h / T2)
+        if h < left and uc > 0.0:
+            s.v = math.copysign(uc * (1.0 + 1e-12), u)
+    s.t += h
+    return left - h
+
+
+def _capped(
+    out: Pieces,
+    s: _State,
+    left: float,
+    u: float,
+    sign: float,
+    T: float,
+    T2: float,
+    uc: float,
+    rate: float,
+) -> float:
+    """The current limit holds: a straight ramp, w' = sign (rate - u_c/T), until the drive
+    no longer asks for more than the cap (or, with the cap below friction, the wheel stops)."""
+    acc = sign * (rate - uc / T)
+    w0, v0 = s.w, s.v
+    out.add(s.t, s.th, w0, 0.5 * acc)
+    events = []
+    if sign * acc < 0.0:
+        events.append(abs(w0 / acc))
+    if not T2:
+        if sign * acc > 0.0:
+            events.append((sign * (u - w0) - T * rate) / (sign * acc))
+    else:
+
+        def g(tau: float) -> float:
+            return sign * (u + (v0 - u) * _exp(-tau / T2) - w0 - acc * tau) - T * rate
+
+        ext = None
+        if (v0 - u) != 0.0 and -acc * T2 / (v0 - u) > 0.0:
+            x = -T2 * math.log(-acc * T2 / (v0 - u))
+            ext = x if x > 0.0 else None
+        hit = _first_zero(g, ext, min(left, 50.0 * T2 + 50.0 * T))
+        if hit is not None:
+            events.append(hit)
+    h = min([left, *[e for e in events if e >= 0.0]])
+    s.th += w0 * h + 0.5 * acc * h * h
+    s.w = w0 + acc * h
+    if sign * acc < 0.0 and h == abs(w0 / acc):
+        s.w = 0.0
+    if T2:
+        s.v = u + (v0 - u) * _exp(-h / T2)
+    s.t += h
+    if h < left and s.w != 0.0:
+        # nudge past the switch so the next mode is the linear one
+        s.v = s.v if T2 else u
+        if math.isfinite(rate) and sign * (s.v - s.w) > T * rate:
+            s.w = s.v - sign * T * rate
+    return left - h
+
+
+def _linear(
+    out: Pieces,
+    s: _State,
+    left: float,
+    u: float,
+    sign: float,
+    T: float,
+    T2: float,
+    uc: float,
+    rate: float,
+) -> float:
+    """Driven, below the cap: T w' = v - w - u_c sgn(w), T2 v' = u - v; ends at a stop (the
+    speed reaches 0 with friction or a cap about), or when the cap starts to hold."""
+    c = u - sign * uc
+    w0, v0 = s.w, s.v
+    if T2:
+        B = (v0 - u) * T2 / (T2 - T)
+        A = w0 - c - B
+    else:
+        B, A = 0.0, w0 - c
+    out.add(s.t, s.th, c, 0.0, A, T, B, T2 if T2 else 1.0)
+    events: list[float] = []
+    stop_at = math.inf
+    if uc > 0.0 or math.isfinite(rate):
+        if not T2:
+            if sign * c < 0.0 and w0 != 0.0:
+                stop_at = T * math.log((w0 - c) / -c)
+        else:
+
+            def w(tau: float) -> float:
+                return sign * (c + A * _exp(-tau / T) + B * _exp(-tau / T2))
+
+            hit = _first_zero(w, _two_exp_extremum(A, T, B, T2), min(left, 50.0 * (T + T2)))
+            if hit is not None:
+                stop_at = hit
+        events.append(stop_at)
+    cap_at = math.inf
+    if T2 and math.isfinite(rate):
+        kv = v0 - u - B  # s (v - w) - T rate = sign (u - c + kv e2 - A e1) - T rate
+
+        def g(tau: float) -> float:
+            return sign * (u - c + kv * _exp(-tau / T2) - A * _exp(-tau / T)) - T * rate
+
+        hit = _first_zero(g, _two_exp_extremum(kv, T2, -A, T), min(left, 50.0 * (T + T2)))
+        if hit is not None:
+            events.append(hit)
+            cap_at = hit
+    h = min([left, *events])
+    s.capping = h == cap_at and h < left
+    e1 = _exp(-h / T)
+    e2 = _exp(-h / T2) if T2 else 0.0
+    s.th += c * h + A * T * (1.0 - e1) + (B * T2 * (1.0 - e2) if T2 else 0.0)
+    s.w = c + A * e1 + B * e2
+    if T2:
+        s.v = u + (v0 - u) * e2
+    s.t += h
+    if h == stop_at and h < left:
+        s.w = 0.0
+    return left - h
+
+
+def measured(
+    theta: FloatArray,
+    t: FloatArray,
+    before: FloatArray,
+    ts: float,
+    taps: int,
+    over_interval: bool,
+) -> FloatArray:
+    """The measured speed on every row from the angle at the rows (``theta``) and at the
+    ``taps`` nominal periods before the first row (``before``, oldest first):
+    (theta_k - theta_k-N)/(N ts), or over the real interval t_k - t_k-N when
+    ``over_interval``."""
+    n = taps
+    th = np.concatenate((before, theta))
+    d = th[n:] - th[:-n]
+    if not over_interval:
+        out: FloatArray = d / (n * ts)
+        return out
+    tt = np.concatenate((t[0] - ts * np.arange(n, 0, -1), t))
+    over: FloatArray = d / (tt[n:] - tt[:-n])
+    return over
+
+
+def response(
+    st: Stretches,
+    t: FloatArray,
+    ts: float,
+    T: float,
+    fx: Effects,
+    z0: float | None = 0.0,
+    over_interval: bool = False,
+) -> FloatArray:
+    """The measured speed the model (T, fx) predicts on every row (K = 1), as the log
+    measured it: the angle difference over ``fx.taps`` samples divided by the nominal
+    period (or by the real interval, ``over_interval``); the angle ``fx.taps`` periods
+    before the first row is taken too, so a log that starts moving reads right at once."""
+    n = fx.taps
+    tb = t[0] - ts * np.arange(n, 0, -1)
+    table = pieces(st, T, fx, z0)
+    theta = table.angle(np.concatenate((tb, t)) - fx.delay)
+    return measured(theta[n:], t, theta[:n], ts, n, over_interval)

@@ -1,4 +1,7 @@
-"""The model check's result: dataclasses that give the JSON contract, and the text a student reads."""
+"""The model check's result: dataclasses that give the JSON contract of ``analyze --json``.
+
+Every key that existed keeps its meaning; new ones are added (see :meth:`CheckResult.to_dict`).
+"""
 
 from __future__ import annotations
 
@@ -9,19 +12,23 @@ from numpy.typing import NDArray
 
 from minseg_tui.model.check.anomalies import Anomaly
 from minseg_tui.model.check.deviations import Deviation
+from minseg_tui.model.check.figures import CloseUp, Lead
+from minseg_tui.model.check.sampling import Sampling
 
 FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
 class ModelFit:
-    """A model as reported: name, parameters (T in s, K in rad/s/V, the cause's own), and how
-    well its simulation matches every row: rmse (rad/s) and fit_percent."""
+    """A model as reported: name, parameters (T in s, K in rad/s/V, each cause's own), how
+    well its simulation matches every row: rmse (rad/s) and fit_percent, and a 95 % interval
+    (lo, hi) per parameter (empty for the baseline when not computed)."""
 
     model: str
     params: dict[str, float]
     rmse: float
     fit_percent: float
+    intervals: dict[str, tuple[float, float]] = field(default_factory=dict)
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -29,6 +36,7 @@ class ModelFit:
             "params": dict(self.params),
             "rmse": self.rmse,
             "fit_percent": self.fit_percent,
+            "intervals": {k: [lo, hi] for k, (lo, hi) in self.intervals.items()},
         }
 
 
@@ -45,18 +53,45 @@ class Other:
 
 
 @dataclass(frozen=True)
+class Caveat:
+    """Something the check says plainly instead of a cause: kind ('on_bound': a candidate
+    whose parameter sits on its search bound; 'misses': the best model still misses clearly
+    above the noise; 'cannot_judge': the log cannot show a cause; 'cannot_tell': two causes
+    look alike in this log; 'noise': the speed scatters more than the encoder explains),
+    the cause concerned (or None) and a sentence."""
+
+    kind: str
+    cause: str | None
+    text: str
+
+    def to_dict(self) -> dict[str, object]:
+        return {"kind": self.kind, "cause": self.cause, "text": self.text}
+
+
+@dataclass(frozen=True)
 class Finding:
-    """The cause (a contract name), its evidence in words and the other effects found."""
+    """The cause (a contract name: the largest effect, or 'none'), its evidence in words,
+    the other effects in the model, and what the check says plainly besides: caveats,
+    whether the model explains the log down to its noise, and the runner-up with why it
+    lost."""
 
     cause: str
     evidence: str
     others: list[Other] = field(default_factory=list)
+    caveats: list[Caveat] = field(default_factory=list)
+    explained: bool = True
+    runner_up: str | None = None
+    runner_up_why: str = ""
 
     def to_dict(self) -> dict[str, object]:
         return {
             "cause": self.cause,
             "evidence": self.evidence,
             "others": [o.to_dict() for o in self.others],
+            "caveats": [c.to_dict() for c in self.caveats],
+            "explained": self.explained,
+            "runner_up": self.runner_up,
+            "runner_up_why": self.runner_up_why,
         }
 
 
@@ -65,15 +100,17 @@ class CheckResult:
     """Everything the model check says about one log.
 
     baseline / extended: the fitted models; finding; gain: rmse_reduction_percent and the
-    other figures; deviations: the baseline's residual per region, and ``where`` in words;
-    anomalies; t, omega, baseline_pred, extended_pred: every row (s, rad/s) so anyone can
-    recompute the figures.
+    other figures (rad/s, rad, %; None where a figure cannot be had); deviations: the
+    baseline's residual per region, and ``where`` in words; anomalies; t, omega,
+    baseline_pred, extended_pred: every row (s, rad/s) so anyone can recompute the figures;
+    sampling: how the log was sampled; lead: the figure that means most for this log and
+    why; close_up: where to look at the cause (rows of t).
     """
 
     baseline: ModelFit
     finding: Finding
     extended: ModelFit
-    gain: dict[str, float]
+    gain: dict[str, float | None]
     deviations: list[Deviation]
     where: str
     anomalies: list[Anomaly]
@@ -81,6 +118,9 @@ class CheckResult:
     omega: FloatArray
     baseline_pred: FloatArray
     extended_pred: FloatArray
+    sampling: Sampling | None = None
+    lead: Lead | None = None
+    close_up: CloseUp | None = None
 
     def to_dict(self) -> dict[str, object]:
         """The JSON object of ``minseg-tui analyze --json``."""
@@ -92,6 +132,9 @@ class CheckResult:
             "deviations": {"where": self.where, "regions": [d.to_dict() for d in self.deviations]},
             "anomalies": [a.to_dict() for a in self.anomalies],
             "rows": int(self.t.size),
+            "sampling": self.sampling.to_dict() if self.sampling else None,
+            "lead": self.lead.to_dict() if self.lead else None,
+            "close_up": self.close_up.to_dict() if self.close_up else None,
         }
 
 
@@ -106,51 +149,3 @@ def fit_percent(y: FloatArray, yhat: FloatArray) -> float:
     if den == 0:
         return 0.0
     return float(100.0 * (1.0 - np.linalg.norm(y - yhat) / den))
-
-
-_UNITS = {
-    "T": "s",
-    "K": "rad/s/V",
-    "u_c": "V",
-    "delay": "s",
-    "taps": "samples",
-    "T_coast": "s",
-    "T2": "s",
-}
-
-
-def _params(p: dict[str, float]) -> str:
-    return ", ".join(f"{k} = {v:.4g} {_UNITS.get(k, '')}".rstrip() for k, v in p.items())
-
-
-def text(r: CheckResult) -> str:
-    """The human report: baseline, where it deviates, the cause and evidence, the extended
-    model, the gain, the anomalies."""
-    b, e, f = r.baseline, r.extended, r.finding
-    lines = [
-        f"Baseline (first order): {_params(b.params)}",
-        f"  simulated on the measured input: rmse {b.rmse:.3f} rad/s, fit {b.fit_percent:.1f} %",
-        f"Where it deviates: {r.where}",
-    ]
-    for d in r.deviations:
-        lines.append(
-            f"  {d.region.replace('_', ' '):<20} {d.rows:6d} rows  rms {d.rms:.3f} rad/s"
-            f"  mean {d.mean:+.3f} rad/s"
-        )
-    lines.append(f"Cause: {f.cause}")
-    lines.append(f"  {f.evidence}")
-    for o in f.others:
-        lines.append(f"  also: {o.cause} ({_params(o.params)}): {o.evidence}")
-    if f.cause != "none":
-        lines.append(f"Extended model ({e.model}): {_params(e.params)}")
-        lines.append(f"  rmse {e.rmse:.3f} rad/s, fit {e.fit_percent:.1f} %")
-        lines.append(
-            f"Gain: rmse {r.gain['rmse_reduction_percent']:.1f} % lower, fit "
-            f"{r.gain['fit_percent_gain']:+.1f} points"
-        )
-    else:
-        lines.append("Extended model: none needed (it is the baseline)")
-    if r.anomalies:
-        lines.append("Anomalies (reported, not counted as causes):")
-        lines.extend(f"  - {a.text}" for a in r.anomalies)
-    return "\n".join(lines)

@@ -1,0 +1,122 @@
+"""A hand on the wheel: a change of speed that no change of input explains.
+
+It sits inside a stretch of constant input, after the response to the step has settled,
+starts and ends abruptly, and leaves the rest of the log fitting well. It is found from
+the residual of a model within those stretches (after the step has settled, or, against a
+model that follows the steps, from a few rows after it), against the stretch's own level
+and the noise: a run of rows whose running mean departs by more than ``MIN_SHARE`` of the
+speed there and ``SIGMAS`` times the noise of that mean, with quiet rows before it. Its rows (and the recovery
+after it, until the residual is back within the noise) are fenced off: left out of the
+fit, and never turned into a cause.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+
+MIN_SHARE = 0.08
+"""A disturbance changes the speed by at least this share of the level there."""
+
+SIGMAS = 5.0
+"""...and by this many times the noise of a mean over ``SMOOTH`` rows."""
+
+SMOOTH = 3
+"""Rows of the running mean the residual is looked at through."""
+
+MIN_ROWS = 3
+"""...for at least this many rows."""
+
+
+@dataclass(frozen=True)
+class Disturbance:
+    """Rows ``start``..``end`` (end exclusive) where something other than the input moved the
+    speed; ``size`` the largest change (rad/s, measured - model), ``level`` the model's
+    speed there (rad/s)."""
+
+    start: int
+    end: int
+    size: float
+    level: float
+
+
+def settle_rows(T: float, delay: float, taps: int, ts: float) -> int:
+    """Rows after a step until the response has settled: 5 T plus the delay and the filter."""
+    return max(3, int(math.ceil((5.0 * T + delay) / ts)) + taps)
+
+
+def find(
+    t: FloatArray,
+    u: FloatArray,
+    residual: FloatArray,
+    pred: FloatArray,
+    settle: int,
+    noise: float,
+    own_level: bool = True,
+    carry: int = 0,
+) -> list[Disturbance]:
+    """Disturbances in the settled part of every driven stretch (see the module docstring).
+
+    ``residual`` = measured - model and ``pred`` the model's speed (rad/s) on every row;
+    ``settle``: rows after a step before the stretch counts as settled; ``noise``: the
+    speed's noise, rad/s; ``own_level``: the residual is taken against each stretch's own
+    median (a model that misses the levels), else against the median of all the settled
+    rows (a model that fits: a long disturbance cannot shift its own reference); ``carry``:
+    rows the measured speed carries a disturbance on after it ends (an average over that
+    many samples).
+    """
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    bounds = np.concatenate(([0], change, [u.size]))
+    spans = [
+        (a + settle if a > 0 else a + 1, b)
+        for a, b in zip(bounds[:-1], bounds[1:], strict=True)
+        if u[a] != 0
+    ]
+    spans = [(a0, b) for a0, b in spans if b - a0 >= 4 * MIN_ROWS]
+    common = float(np.median(np.concatenate([residual[a0:b] for a0, b in spans]))) if spans else 0.0
+    out: list[Disturbance] = []
+    for a0, b in spans:
+        seg = residual[a0:b]
+        level = float(np.median(seg)) if own_level else common
+        dev = seg - level
+        speed = float(np.median(np.abs(pred[a0:b])))
+        thr = max(SIGMAS * noise / math.sqrt(SMOOTH), MIN_SHARE * speed)
+        if thr <= 0:
+            continue
+        sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")
+        out_rows = np.abs(sm) > thr
+        k = 0
+        while k < out_rows.size:
+            if not out_rows[k]:
+                k += 1
+                continue
+            j = k
+            while j + 1 < out_rows.size and out_rows[j + 1]:
+                j += 1
+            if j - k + 1 >= MIN_ROWS and k >= MIN_ROWS:
+                quiet = 2.0 * noise + 0.25 * thr
+                s = k
+                while s > 0 and abs(dev[s - 1]) > quiet:
+                    s -= 1
+                e = j
+                while e + 1 < dev.size and abs(dev[e + 1]) > quiet:
+                    e += 1
+                if s >= 2:  # quiet rows before it: it starts inside the stretch
+                    big = int(np.argmax(np.abs(dev[s : e + 1]))) + s
+                    end = min(a0 + e + 2 + carry, u.size)
+                    out.append(Disturbance(a0 + s, end, float(dev[big]), float(pred[a0 + big])))
+            k = j + 1
+    return out
+
+
+def fence(n: int, found: list[Disturbance]) -> FloatArray:
+    """Row weights: 0 on the disturbances' rows, 1 elsewhere."""
+    w = np.ones(n)
+    for d in found:
+        w[d.start : d.end] = 0.0
+    return w

@@ -1,0 +1,183 @@
+"""Figures that say how much better the extended model is, past the encoder's noise.
+
+A speed rmse near the noise floor says nothing about a model; the part above it does. The
+angle, known to q/sqrt 12, shows what the speed's noise hides. Held-out steps (fit on half
+of the steps, predict the other half) are the honest judge where a log has enough steps.
+Which figure leads for a log, and why, is data the text and the TUI use.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+
+
+def above(rmse: float, floor: float | None) -> float | None:
+    """The part of an rmse above a noise level, sqrt(max(rmse^2 - floor^2, 0)) (same unit)."""
+    if floor is None:
+        return None
+    return math.sqrt(max(rmse * rmse - floor * floor, 0.0))
+
+
+def systematic(residual: FloatArray, keep: FloatArray, rows: int = 9) -> float:
+    """Rms (rad/s) of the residual averaged over ``rows`` centred rows: the part of a
+    model's error that holds over several samples (noise is divided by sqrt(rows) or more)."""
+    k = np.asarray(keep, dtype=bool)
+    r = np.where(k, residual, 0.0)
+    n = np.convolve(k.astype(float), np.ones(rows), mode="same")
+    m = np.convolve(r, np.ones(rows), mode="same") / np.maximum(n, 1.0)
+    return float(np.sqrt(np.mean(m[k] ** 2))) if np.any(k) else 0.0
+
+
+def angle_rms(
+    t: FloatArray, u: FloatArray, residual: FloatArray, ts: float, keep: FloatArray
+) -> float:
+    """Rms (rad) of the angle error accumulated since the last change of input, the speed
+    residual (rad/s) integrated over each row's interval; rows left out add nothing."""
+    dt = np.concatenate(([ts], np.diff(t)))
+    inc = residual * dt * keep
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    bounds = np.concatenate(([0], change, [u.size]))
+    ang = np.empty_like(inc)
+    for a, b in zip(bounds[:-1], bounds[1:], strict=True):
+        ang[a:b] = np.cumsum(inc[a:b])
+    k = keep > 0
+    return float(np.sqrt(np.mean(ang[k] ** 2))) if np.any(k) else 0.0
+
+
+def cycles(u: FloatArray) -> list[tuple[int, int]]:
+    """(first row, end row) of each cycle: from one step that raises |u| to the next."""
+    up = [e for e in (np.flatnonzero(np.diff(u) != 0) + 1).tolist() if abs(u[e]) > abs(u[e - 1])]
+    if not up:
+        return []
+    return list(zip(up, [*up[1:], int(u.size)], strict=True))
+
+
+def folds(u: FloatArray) -> list[FloatArray] | None:
+    """Two row masks (1 = held out) splitting the cycles alternately, when the log has at
+    least two cycles; None otherwise."""
+    cyc = cycles(u)
+    if len(cyc) < 2:
+        return None
+    out = []
+    for parity in (0, 1):
+        m = np.zeros(u.size)
+        for i, (a, b) in enumerate(cyc):
+            if i % 2 == parity:
+                m[a:b] = 1.0
+        out.append(m)
+    return out
+
+
+@dataclass(frozen=True)
+class Lead:
+    """The figure that means most for this log (a key of ``gain``) and why, in words."""
+
+    figure: str
+    why: str
+
+    def to_dict(self) -> dict[str, str]:
+        return {"figure": self.figure, "why": self.why}
+
+
+def lead(gain: dict[str, float | None], named: bool) -> Lead:
+    """Which figure leads: the angle error where the speed error is mostly noise, the
+    held-out error where the log has steps to hold out, else the error above the noise."""
+    noise = max(gain.get("noise_floor") or 0.0, gain.get("noise") or 0.0)
+    b, e = gain["baseline_rmse"] or 0.0, gain["extended_rmse"] or 0.0
+    if noise > 0 and max(b, e) < 1.5 * noise:
+        return Lead(
+            "extended_angle_rms" if named else "baseline_angle_rms",
+            f"the speed error ({max(b, e):.3g} rad/s rms) is mostly the noise of the speed "
+            f"({noise:.3g} rad/s), which hides the models' difference; the angle is known far "
+            "better, so the angle error tells them apart",
+        )
+    if gain.get("heldout_baseline_rmse") is not None:
+        return Lead(
+            "heldout_extended_rmse" if named else "heldout_baseline_rmse",
+            "the models predict steps they were not fitted on: the honest judge of a gain",
+        )
+    if noise > 0:
+        return Lead(
+            "extended_above_noise" if named else "baseline_above_noise",
+            f"this log's speed has a noise of {noise:.3g} rad/s rms that no model can "
+            "remove; only the part of the error above it tells the models apart",
+        )
+    return Lead(
+        "extended_rmse" if named else "baseline_rmse",
+        "the noise of this speed is not known, so the plain rms error is all there is",
+    )
+
+
+@dataclass(frozen=True)
+class CloseUp:
+    """A window (s, rows start..end exclusive) where the cause acts, for a close-up plot of
+    the measured speed and both models there (slice the result's t, omega, baseline_pred
+    and extended_pred with [start:end]); ``noise`` the speed's noise level (rad/s, the band
+    a plot can draw around the measured speed), ``cause`` the cause it shows ('none' for
+    the first rise of a log without one, 'disturbance' for a hand on the wheel), ``what``
+    in words."""
+
+    t0: float
+    t1: float
+    start: int
+    end: int
+    what: str
+    noise: float
+    cause: str = "none"
+
+    def to_dict(self) -> dict[str, object]:
+        return {
+            "t0": self.t0,
+            "t1": self.t1,
+            "row0": self.start,
+            "row1": self.end,
+            "what": self.what,
+            "noise": self.noise,
+            "cause": self.cause,
+        }
+
+
+def close_up(
+    t: FloatArray,
+    u: FloatArray,
+    cause: str,
+    T: float,
+    lag: float,
+    noise: float,
+    fenced: tuple[float, float] | None = None,
+    length: float | None = None,
+) -> CloseUp:
+    """The window to look at for ``cause``: one step-down for dry friction or coasting, one
+    rise for the others (and for none), a disturbance's stretch when ``fenced`` (t, t_end)
+    is given. T (s) and lag (s, delay plus filter) size it; ``length`` (s) overrides how long
+    the response lasts."""
+    ts = float(np.median(np.diff(t))) if t.size > 1 else 1.0
+    change = (np.flatnonzero(np.diff(u) != 0) + 1).tolist()
+    falls = [e for e in change if abs(u[e]) < abs(u[e - 1])]
+    rises = [e for e in change if abs(u[e]) > abs(u[e - 1])]
+    span = length if length is not None else 6.0 * T + lag
+    if fenced is not None:
+        a, b = fenced
+        pad = max(0.5 * (b - a), 4.0 * T, 5 * ts)
+        t0, t1, what = a - pad, b + pad, "the stretch where something braked the wheel"
+    elif cause in ("coulomb_friction", "coast_on_zero") and falls:
+        e = falls[0]
+        t0, t1 = float(t[e]) - max(2.0 * T, 5 * ts), float(t[e]) + max(span, 10 * ts)
+        what = "a step-down, where the wheel slows and stops"
+    elif rises:
+        e = rises[0]
+        t0, t1 = float(t[e]) - max(2.0 * T, 5 * ts), float(t[e]) + max(span, 10 * ts)
+        what = "a rise, where the response starts"
+    else:
+        t0, t1, what = float(t[0]), float(t[-1]), "the whole log"
+    t0, t1 = max(t0, float(t[0])), min(t1, float(t[-1]))
+    i0 = int(np.searchsorted(t, t0, side="left"))
+    i1 = int(np.searchsorted(t, t1, side="right"))
+    shown = "disturbance" if fenced is not None else cause
+    return CloseUp(float(t[i0]), float(t[max(i1 - 1, i0)]), i0, max(i1, i0 + 1), what, noise, shown)

@@ -1,0 +1,139 @@
+"""Where the search for each cause's parameter starts: a few values read off the log.
+
+The fit polishes jointly from the best start (:mod:`.fit`); good starts keep it short and
+out of the wrong valley (a delay of a third of a second is found from where the wheel
+first moves, not by walking there from zero).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+
+from minseg_tui.model.check.effects import Range
+
+FloatArray = NDArray[np.float64]
+
+
+def rises(u: FloatArray) -> list[tuple[int, int]]:
+    """(first row, end row) of every stretch after a step that increases |u| (V)."""
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    bounds = np.concatenate((change, [u.size]))
+    return [
+        (int(a), int(b))
+        for a, b in zip(bounds[:-1], bounds[1:], strict=True)
+        if abs(u[a]) > abs(u[a - 1])
+    ]
+
+
+def first_motion(t: FloatArray, u: FloatArray, y: FloatArray, noise: float) -> list[float]:
+    """Per rise, the time (s) from the step until the measured speed first leaves its level
+    before the step: by more than four times that level's own scatter from sample to sample
+    and a twentieth of the change (rad/s). A wheel at rest has no scatter, so its first count
+    is its first motion. ``noise`` (rad/s, the log's scatter) stands in when fewer than five
+    rows come before the step."""
+    edges = np.flatnonzero(np.diff(u) != 0) + 1
+    out = []
+    for a, b in rises(u):
+        prev = edges[edges < a]
+        before = y[max(int(prev[-1]) if prev.size else 0, a - 50) : a]
+        if before.size >= 5:
+            level = float(np.median(before[-5:]))
+            d = np.diff(before)
+            scatter = 1.4826 * float(np.median(np.abs(d - np.median(d)))) / math.sqrt(2.0)
+        else:
+            level, scatter = float(y[a - 1]), noise
+        seg = y[a:b] - level
+        change = float(np.max(np.abs(seg))) if seg.size else 0.0
+        if change <= 0:
+            continue
+        k = np.flatnonzero(np.abs(seg) > max(4.0 * scatter, 0.05 * change))
+        if k.size:
+            out.append(float(t[a + int(k[0])] - t[a]))
+    return out
+
+
+def steepest_rate(t: FloatArray, u: FloatArray, y: FloatArray, K: float) -> float | None:
+    """The mean slope of the measured speed between 20 % and 70 % of each rise, divided by
+    |K|: the acceleration a current limit would allow (V/s at K = 1); None without rises."""
+    slopes = []
+    for a, b in rises(u):
+        seg = y[a:b]
+        if seg.size < 4:
+            continue
+        lo, hi = float(y[a - 1]), float(np.median(seg[-max(3, seg.size // 5) :]))
+        if hi == lo:
+            continue
+        f = (seg - lo) / (hi - lo)
+        i20 = np.flatnonzero(f >= 0.2)
+        i70 = np.flatnonzero(f >= 0.7)
+        if not i20.size or not i70.size or i70[0] <= i20[0]:
+            continue
+        i, j = a + int(i20[0]), a + int(i70[0])
+        slopes.append(abs(float(y[j] - y[i]) / float(t[j] - t[i])))
+    if not slopes or K == 0:
+        return None
+    return float(np.median(slopes)) / abs(K)
+
+
+def levels_offset(u: FloatArray, y: FloatArray, T: float, ts: float) -> float | None:
+    """The voltage at which the line through the settled speeds of the driven stretches
+    meets zero speed (V), when the log drives at two levels or more; else None."""
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    bounds = np.concatenate(([0], change, [u.size]))
+    settle = max(3, int(math.ceil(5.0 * T / ts)))
+    us, ws = [], []
+    for a, b in zip(bounds[:-1], bounds[1:], strict=True):
+        if u[a] == 0 or b - a - settle < 3:
+            continue
+        us.append(abs(float(u[a])))
+        ws.append(abs(float(np.mean(y[a + settle : b]))))
+    if len(set(np.round(us, 6))) < 2:
+        return None
+    slope, icpt = np.polyfit(us, ws, 1)
+    if slope <= 0:
+        return None
+    return float(-icpt / slope)
+
+
+def starts(
+    cause: str,
+    t: FloatArray,
+    u: FloatArray,
+    y: FloatArray,
+    ts: float,
+    T: float,
+    K: float,
+    noise: float,
+    rng: Range,
+) -> list[float]:
+    """Start values of ``cause``'s Effects field for a log whose baseline has T (s), K."""
+    lo, hi = rng.lo, rng.hi
+    vals: list[float]
+    if cause == "coulomb_friction":
+        vals = [hi * f for f in (0.05, 0.15, 0.35, 0.6)]
+        off = levels_offset(u, y, T, ts)
+        if off is not None and 0 < off < hi:
+            vals.append(off)
+    elif cause == "dead_time":
+        lags = first_motion(t, u, y, noise)
+        vals = [f * ts for f in (0.5, 1.0, 2.0)] + [0.5 * T]
+        if lags:
+            lag = float(np.median(lags))
+            vals += [max(lag - 1.5 * ts, 0.0), max(lag - ts - 0.3 * T, 0.0)]
+    elif cause == "velocity_filter":
+        vals = [1.0]
+    elif cause == "coast_on_zero":
+        vals = [T * f for f in (1.5, 3.0, 8.0)] + [1.0, 5.0]
+    elif cause == "second_pole":
+        vals = [T * f for f in (0.1, 0.25, 0.5, 0.9)]
+    elif cause == "current_limit":
+        vals = [hi * f for f in (0.01, 0.025, 0.045, 0.07, 0.1)]
+        r = steepest_rate(t, u, y, K)
+        if r is not None:
+            vals += [0.8 * r, r, 1.25 * r]
+    else:
+        raise ValueError(cause)
+    return [min(max(v, lo), hi) for v in vals]

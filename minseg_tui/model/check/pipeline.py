@@ -1,0 +1,605 @@
+"""The model check from start to end: how the log was sampled, the baseline, wild samples
+and disturbances out, the causes chosen, the figures, the words.
+
+:func:`check` is the one entry point; it does no I/O.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from minseg_tui.model.check import anomalies as an
+from minseg_tui.model.check import disturbances as dist
+from minseg_tui.model.check.decide import Selection, compare, ranked, select
+from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, ranges
+from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge
+from minseg_tui.model.check.figures import above, angle_rms, close_up, folds, lead, systematic
+from minseg_tui.model.check.fit import (
+    MAX_FIT_ROWS,
+    Fit,
+    Problem,
+    fit_baseline,
+    intervals,
+    refit,
+    whiten,
+)
+from minseg_tui.model.check.result import (
+    Caveat,
+    CheckResult,
+    Finding,
+    ModelFit,
+    Other,
+    fit_percent,
+    rmse,
+)
+from minseg_tui.model.check.sampling import Sampling, sampling, scatter
+from minseg_tui.model.check.search import golden
+from minseg_tui.model.steplog import problem
+
+FloatArray = NDArray[np.float64]
+
+MISS_NOISE = 3.0
+"""The best model misses clearly when its error held over several samples (see
+:func:`.figures.systematic`), where it is worst, exceeds this many times what the noise
+leaves there..."""
+
+MISS_SHARE = 0.005
+"""...and this share of the log's top speed."""
+
+
+def check(
+    t: ArrayLike,
+    u: ArrayLike,
+    omega: ArrayLike,
+    ts: float | None = None,
+    cpr: int | None = None,
+    omega_over: str | None = None,
+) -> CheckResult:
+    """The model check of one step log.
+
+    t: sample times, s; u: voltage applied to the motor (u_A), V, in force from each row on;
+    omega: measured speed, rad/s (the Euler velocity of encoder counts, a moving average of
+    it, or any speed signal); ts: the nominal sample period, s (default: the median interval
+    of t); cpr: encoder counts per revolution when the log says (its speed resolution is
+    otherwise read off the data, or unknown); omega_over: 'interval' when a row's speed was
+    taken over its real interval, 'nominal' when over ts (None: detected).
+    """
+    t = np.asarray(t, dtype=float)
+    u = np.asarray(u, dtype=float)
+    y = np.asarray(omega, dtype=float)
+    refused = problem(t, u, y, ts)
+    if refused:
+        raise ValueError(refused)
+    ts = float(np.median(np.diff(t))) if ts is None else float(ts)
+    samp = sampling(t, u, y, ts, cpr, omega_over)
+    full = Problem(t, u, y, ts, over_interval=samp.over_interval)
+    notes: list[an.Anomaly] = []
+    rng0 = ranges(t, u, ts, 0.05)
+    if _in_motion(y):
+        if u[0] != 0:
+            full.z0 = None
+            how = f"taken as the steady speed under its first input ({u[0]:g} V)"
+        else:
+            full.z0 = _initial_speed(full, rng0)
+            how = "its initial speed was fitted"
+        notes.append(
+            an.Anomaly(
+                "starts_moving",
+                0,
+                float(t[0]),
+                float(y[min(1, y.size - 1)]),
+                "rad/s",
+                f"the log starts with the wheel already turning; {how}",
+            )
+        )
+
+    # first pass: baseline, wild samples out
+    head = full.head(MAX_FIT_ROWS)
+    base = fit_baseline(head, rng0)
+    moving = an.moving_rows(y)
+    count = samp.resolution if samp.resolution_how.startswith("# cpr") else 0.0
+    wild = an.find_wild(y - base.predict(full), 1, moving=moving, count=count or 0.0)
+    if wild:
+        full, head, base = _repaired(full, y - base.predict(full), wild, 1, rng0)
+    settle = dist.settle_rows(base.T, 0.0, 1, ts)
+    noise = scatter(full.y - base.predict(full), u, settle, y != 0)
+    rng = ranges(head.t, head.u, ts, base.T)
+
+    # a hand on the wheel, against the baseline: fenced off before the causes are chosen
+    found = dist.find(t, u, full.y - base.predict(full), base.predict(full), settle, noise)
+    if found:
+        full, head, base = _fenced(full, found, rng0)
+
+    from_cpr = samp.resolution_how.startswith("# cpr")
+    log = Log(
+        t,
+        u,
+        full.y,
+        ts,
+        noise,
+        _zero_speed(samp, noise),
+        base.predict(full),
+        samp.smooth,
+        None if from_cpr else samp.resolution,
+    )
+    unjudged = cannot_judge(log)
+    names = tuple(c for c in NAMES if c not in unjudged)
+    sel = select(head, base, rng, noise, samp.column_floor, names)
+    ext = sel.chosen
+
+    # against the model chosen: wild samples in the averaged form, disturbances again
+    taps = ext.effects.taps
+    if taps > 1:
+        res = y - ext.predict(replace_y(full, y))
+        again = an.find_wild(res, taps, moving=moving, count=count or 0.0)
+        if again != wild:
+            wild = again
+            full = replace_y(full, an.repair(y, res, wild, taps) if wild else y)
+            head = full.head(MAX_FIT_ROWS)
+            ext, base = refit(head, ext, rng), refit(head, base, rng)
+    settle = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
+    noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
+    near = 3  # the model chosen follows the steps: look from a few rows after each
+    found2 = dist.find(
+        t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1
+    )
+    if _rows(found2) != _rows(found):
+        # the model chosen sees a disturbance the baseline hid: fence it, choose again
+        found = found2
+        full = full.with_weights(dist.fence(y.size, found) * _wild_weights(y.size, wild, taps))
+        head = full.head(MAX_FIT_ROWS)
+        base = fit_baseline(head, rng0)
+        sel = select(head, base, rng, noise, samp.column_floor, names)
+        ext = sel.chosen
+        log = replace(log, base_pred=base.predict(full))
+        settle = dist.settle_rows(ext.T, ext.effects.delay, ext.effects.taps, ts)
+        noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
+    log = replace(log, noise=noise)
+    return _report(
+        t, u, y, full, head, samp, noise, sel, base, ext, rng, wild, found, notes, log, unjudged
+    )
+
+
+def replace_y(p: Problem, y: FloatArray) -> Problem:
+    """The problem with another measured speed (same weights)."""
+    return Problem(p.t, p.u, y, p.ts, p.z0, p.weights, p.over_interval)
+
+
+def _rows(found: list[dist.Disturbance]) -> list[tuple[int, int]]:
+    return [(d.start, d.end) for d in found]
+
+
+def _wild_weights(n: int, wild: list[int], taps: int) -> FloatArray:
+    w = np.ones(n)
+    for m in wild:
+        w[m : m + taps + 1] = 0.0
+    return w
+
+
+def _zero_speed(samp: Sampling, noise: float) -> float:
+    """The largest measured speed that reads as standing still (rad/s): below one count per
+    sample when the speed is from counts, else within twice the noise."""
+    if samp.resolution is not None:
+        return 0.5 * samp.resolution
+    return 2.0 * noise
+
+
+def _report(
+    t: FloatArray,
+    u: FloatArray,
+    y: FloatArray,
+    full: Problem,
+    head: Problem,
+    samp: Sampling,
+    noise: float,
+    sel: Selection,
+    base: Fit,
+    ext: Fit,
+    rng: dict,  # type: ignore[type-arg]
+    wild: list[int],
+    found: list[dist.Disturbance],
+    notes: list[an.Anomaly],
+    log: Log,
+    unjudged: dict[str, str],
+) -> CheckResult:
+    """Predictions, figures, words."""
+    named = bool(ext.causes)
+    b_pred = base.predict(full)
+    e_pred = ext.predict(full) if named else b_pred
+    keep = full.weights > 0
+    b_int = intervals(head, base, rng)
+    baseline = ModelFit(
+        "first_order",
+        {"T": base.T, "K": base.K},
+        rmse(y, b_pred),
+        fit_percent(y, b_pred),
+        {k: b_int[k] for k in ("T", "K")},
+    )
+    order = ranked(sel) if named else []
+    if named:
+        e_int = intervals(head, ext, rng)
+        extended = ModelFit(
+            "first_order+" + "+".join(order),
+            {
+                "T": ext.T,
+                "K": ext.K,
+                **{BY_CAUSE[c].param: ext.params[BY_CAUSE[c].param] for c in order},
+            },
+            rmse(y, e_pred),
+            fit_percent(y, e_pred),
+            e_int,
+        )
+    else:
+        extended = baseline
+    v = compare(ext, base) if named else None
+    floor = samp.column_floor(ext.effects.taps)
+    level = max(floor or 0.0, noise)
+    b_kept, e_kept = _rmse_kept(full.y, b_pred, keep), _rmse_kept(full.y, e_pred, keep)
+    gain: dict[str, float | None] = {
+        "rmse_reduction_percent": 100.0 * (1.0 - extended.rmse / baseline.rmse)
+        if baseline.rmse > 0
+        else 0.0,
+        "fit_percent_gain": extended.fit_percent - baseline.fit_percent,
+        "whitened_reduction_percent": 100.0 * v.reduction if v else 0.0,
+        "criterion_gain": v.d if v else 0.0,
+        "baseline_rmse": baseline.rmse,
+        "extended_rmse": extended.rmse,
+        "noise_floor": floor,
+        "noise": noise,
+        "baseline_above_floor": above(b_kept, floor),
+        "extended_above_floor": above(e_kept, floor),
+        "baseline_above_noise": above(b_kept, level),
+        "extended_above_noise": above(e_kept, level),
+        "angle_floor": samp.angle_floor,
+        "baseline_angle_rms": angle_rms(t, u, full.y - b_pred, samp.ts, full.weights),
+        "extended_angle_rms": angle_rms(t, u, full.y - e_pred, samp.ts, full.weights),
+        **_held_out(full, base, ext, rng),
+    }
+    miss = _miss(full.y, e_pred, u, ext.T, samp, noise, full.weights, ext.effects.taps)
+    keep_dev = np.ones(y.size, dtype=bool)
+    for m in wild:
+        keep_dev[m : m + ext.effects.taps + 1] = False
+    keep_dev &= keep
+    devs = deviations(u, np.where(keep_dev, y - b_pred, 0.0), base.T, samp.ts, keep_dev)
+    misses = miss is not None
+    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged)
+
+    # anomalies, against the model the finding settles on
+    res = full.y - e_pred
+    anomalies = list(notes)
+    anomalies += an.wild_anomalies(t, y, y - e_pred, wild, ext.effects.taps)
+    anomalies += [an.disturbance(t, u, d.start, d.end, d.size, d.level) for d in found]
+    if not misses:
+        cr = an.creep(t, u, np.where(keep, res, 0.0), e_pred, ext.T + ext.effects.delay, samp.ts)
+        if cr:
+            anomalies.append(cr)
+    shift = 0.5 * samp.ts
+    moved = replace(ext, effects=replace(ext.effects, delay=ext.effects.delay + shift))
+    taps = ext.effects.taps
+    moving = an.moving_rows(y)
+    angle_noise = (
+        taps * samp.ts * an.robust_sigma(whiten(res, taps)[moving]) if np.any(moving) else 0.0
+    )
+    if not misses:
+        anomalies += an.late_steps(
+            t, u, res, moved.predict(full) - e_pred, shift, samp.ts, ext.T, e_pred, angle_noise
+        )
+    gp = an.gaps(t, samp.ts, samp.regular)
+    if gp:
+        anomalies.append(gp)
+    fenced = (found[0].start, found[0].end) if found and not named else None
+    cu = close_up(
+        t,
+        u,
+        order[0] if order else "none",
+        ext.T,
+        ext.effects.delay + ext.effects.taps * samp.ts,
+        level,
+        (float(t[fenced[0]]), float(t[min(fenced[1], t.size - 1)])) if fenced else None,
+        _response_time(ext, u),
+    )
+    return CheckResult(
+        baseline,
+        finding,
+        extended,
+        gain,
+        devs,
+        describe(devs),
+        anomalies,
+        t,
+        y,
+        b_pred,
+        e_pred,
+        samp,
+        lead(gain, named),
+        cu,
+    )
+
+
+def _rmse_kept(y: FloatArray, pred: FloatArray, keep: NDArray[np.bool_]) -> float:
+    r = (y - pred)[keep]
+    return float(np.sqrt(np.mean(r * r))) if r.size else 0.0
+
+
+def _miss(
+    y: FloatArray,
+    pred: FloatArray,
+    u: FloatArray,
+    T: float,
+    samp: Sampling,
+    noise: float,
+    keep: FloatArray,
+    taps: int,
+) -> tuple[float, str, float] | None:
+    """(error, region, noise level) when the model misses clearly: the rms of its error
+    held over several samples, in the region where that is worst (after rising edges,
+    after falling edges, steady state), against what the noise leaves there; else None."""
+    reg = regions(u, T, samp.ts)
+    worst, where = 0.0, ""
+    for i, name in enumerate(REGIONS):
+        m = (reg == i) & (keep > 0)
+        if np.any(m):
+            v = systematic(y - pred, m.astype(float))
+            if v > worst:
+                worst, where = v, name
+    fl = samp.column_floor(taps) or 0.0
+    level = max(fl, noise / 3.0)
+    top = float(np.max(np.abs(y))) if y.size else 0.0
+    if worst > MISS_NOISE * level and worst > MISS_SHARE * top:
+        return worst, where.replace("_", " "), level
+    return None
+
+
+def _response_time(f: Fit, u: FloatArray) -> float | None:
+    """How long a rise lasts in the model (s), for the close-up: a current-limited ramp
+    takes the step over the cap, the others about 6 T."""
+    fx = f.effects
+    if math.isfinite(fx.rate) and fx.rate > 0:
+        jump = float(np.max(np.abs(np.diff(u)))) if u.size > 1 else 0.0
+        return jump / fx.rate + 4.0 * f.T + fx.delay
+    return None
+
+
+def _held_out(full: Problem, base: Fit, ext: Fit, rng: dict) -> dict[str, float | None]:  # type: ignore[type-arg]
+    """Both models fitted on every other cycle and judged on the rest (rms, rad/s)."""
+    head = full.head(MAX_FIT_ROWS)
+    parts = folds(head.u)
+    if parts is None:
+        return {"heldout_steps": 0.0, "heldout_baseline_rmse": None, "heldout_extended_rmse": None}
+    errs_b: list[FloatArray] = []
+    errs_e: list[FloatArray] = []
+    for m in parts:
+        train = head.with_weights(head.weights * (1.0 - m))
+        test = (m > 0) & (head.weights > 0)
+        fb = refit(train, base, rng)
+        errs_b.append((head.y - fb.predict(head))[test])
+        if ext.causes:
+            fe = refit(train, ext, rng)
+            errs_e.append((head.y - fe.predict(head))[test])
+    rb = float(np.sqrt(np.mean(np.concatenate(errs_b) ** 2)))
+    re = float(np.sqrt(np.mean(np.concatenate(errs_e) ** 2))) if errs_e else rb
+    n = sum(
+        1 for e in np.flatnonzero(np.diff(head.u) != 0) + 1 if abs(head.u[e]) > abs(head.u[e - 1])
+    )
+    return {"heldout_steps": float(n), "heldout_baseline_rmse": rb, "heldout_extended_rmse": re}
+
+
+def _params_text(p: dict[str, float]) -> str:
+    return ", ".join(f"{k} = {v:.4g} {UNITS.get(k, '')}".rstrip() for k, v in p.items())
+
+
+def _finding(
+    sel: Selection,
+    base: Fit,
+    ext: Fit,
+    order: list[str],
+    log: Log,
+    samp: Sampling,
+    noise: float,
+    level: float,
+    miss: tuple[float, str, float] | None,
+    unjudged: dict[str, str],
+) -> Finding:
+    floor = samp.floor if samp.resolution_how.startswith("# cpr") else None
+    taps = ext.effects.taps
+    caveats: list[Caveat] = []
+    # a candidate stopped by its bounds matters where the model does not explain the log
+    for c, (f, why) in sorted(sel.bound.items()) if miss is not None or not order else []:
+        p = BY_CAUSE[c].param
+        caveats.append(
+            Caveat(
+                "on_bound",
+                c,
+                f"{c} came out clear ({_params_text({p: f.params[p], 'T': f.T})}), but {why}: "
+                "the effect in this log is outside what that cause can express (or its range is "
+                "too small), so it is not named",
+            )
+        )
+    if miss is not None:
+        size, where, lvl = miss
+        caveats.append(
+            Caveat(
+                "misses",
+                None,
+                f"the best model found still misses {where}: its error held over 9 samples is "
+                f"{size:.3g} rad/s rms there, {size / lvl:.0f} times what the noise leaves "
+                f"({lvl:.3g} rad/s); something outside the list of causes acts in this log, so "
+                "the named cause(s) explain only part of it",
+            )
+        )
+    if samp.smooth and any(c in ext.causes for c in ("velocity_filter", "second_pole")):
+        caveats.append(
+            Caveat(
+                "cannot_tell",
+                "velocity_filter" if "velocity_filter" in ext.causes else "second_pole",
+                "this speed is smooth, not a difference of encoder counts: an averaging filter on "
+                "the speed and an extra pole in the motor look alike here, so the log cannot tell "
+                "them apart; the fit prefers the one named",
+            )
+        )
+    col = samp.column_floor(taps)
+    if col is not None and noise > 1.5 * col * (1.22 if taps == 1 else 1.0):
+        caveats.append(
+            Caveat(
+                "noise",
+                None,
+                f"the speed scatters {noise:.3g} rad/s from sample to sample, "
+                f"{noise / col:.1f} times what the encoder's counts explain ({col:.3g} rad/s): "
+                "timing jitter, ripple or resampling add noise no model of the motor explains",
+            )
+        )
+    for c, why in unjudged.items():
+        caveats.append(Caveat("cannot_judge", c, f"{c} cannot be judged: {why}"))
+    explained = miss is None
+
+    if not order:
+        runner, why = _none_runner(sel)
+        if explained:
+            rms_b = _rmse_kept(log.y, log.base_pred, np.ones(log.y.size, dtype=bool))
+            left = above(rms_b, level) or 0.0
+            if level <= 0:
+                fit_words = "the first-order model fits the log"
+            elif left < 0.5 * level:
+                fit_words = (
+                    f"the first-order model explains the log down to its noise: its error is "
+                    f"{rms_b:.3g} rad/s rms against a noise of {level:.3g} rad/s"
+                )
+            else:
+                fit_words = (
+                    f"the first-order model misses by {left:.2g} rad/s rms above the noise "
+                    f"({level:.3g} rad/s), too little and too scattered to name a cause by"
+                )
+            pct = fit_percent(log.y, log.base_pred)
+            if pct < 80.0 and level > 0 and left < 0.5 * level:
+                fit_words += (
+                    f" (its fit is only {pct:.0f} % because that noise is large against the "
+                    "speed's changes, not because the model is wrong)"
+                )
+        else:
+            fit_words = "no cause from the list explains what the first-order model misses"
+        evidence = f"{fit_words}; {why}" if why else fit_words
+        return Finding("none", evidence, [], caveats, explained, runner, why)
+
+    cause = order[0]
+    v = compare(ext, sel.without[cause]) if cause in sel.without else compare(ext, base)
+    evidence = (
+        f"{WORDS[cause](log, ext, floor)}. It removes {100 * v.reduction:.1f} % of the "
+        f"whitened residual the model leaves without it (criterion gain {v.d:.0f})"
+    )
+    runner, why = _runner_up(sel, ext)
+    if runner:
+        evidence += f"; {why}"
+    others = []
+    for c in order[1:]:
+        vc = compare(ext, sel.without[c]) if c in sel.without else compare(ext, base)
+        p = BY_CAUSE[c].param
+        others.append(
+            Other(
+                c,
+                {p: ext.params[p]},
+                f"{WORDS[c](log, ext, floor)}; taking it out of the model leaves "
+                f"{1 / max(1 - vc.reduction, 1e-12):.1f} times the whitened residual",
+            )
+        )
+    return Finding(cause, evidence, others, caveats, explained, runner, why)
+
+
+def _none_runner(sel: Selection) -> tuple[str | None, str]:
+    """The best extension of a 'none' finding and the rule that held it back."""
+    if not sel.singles:
+        return None, ""
+    name = min(sel.singles, key=lambda c: sel.singles[c].sse_white)
+    v = sel.verdicts[name]
+    share = f"{100 * max(v.reduction, 0.0):.1f} %"
+    if name in sel.left_out:
+        return name, f"the best extension ({name}) is held back: {sel.left_out[name]}"
+    from minseg_tui.model.check.decide import MIN_REDUCTION, PENALTY
+
+    threshold = PENALTY * math.log(max(sel.singles[name].rows, 2))
+    if v.reduction < MIN_REDUCTION:
+        return name, (
+            f"the best extension ({name}) removes only {share} of the whitened residual, and a "
+            f"cause needs at least {100 * MIN_REDUCTION:.0f} %"
+        )
+    return name, (
+        f"the best extension ({name}) removes {share} of the whitened residual, but its "
+        f"criterion gain {v.d:.0f} is below the {threshold:.0f} a cause needs on a log this long"
+    )
+
+
+def _runner_up(sel: Selection, ext: Fit) -> tuple[str | None, str]:
+    """The best other explanation with as many causes, and why it lost."""
+    k = len(ext.causes)
+    pool = [f for f in ([*sel.singles.values()] if k == 1 else sel.tried) if len(f.causes) == k]
+    pool = [f for f in pool if set(f.causes) != set(ext.causes) and math.isfinite(f.sse_white)]
+    if not pool:
+        return None, ""
+    best = min(pool, key=lambda f: f.sse_white)
+    name = best.name
+    new = [c for c in best.causes if c not in ext.causes]
+    reason = next((sel.left_out[c] for c in new if c in sel.left_out), None)
+    if best.sse_white < ext.sse_white and reason:
+        return name, (
+            f"the next best explanation ({name}) leaves less whitened residual but is not "
+            f"named: {reason}"
+        )
+    ratio = best.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
+    return name, (
+        f"the next best explanation ({name}) leaves {ratio:.1f} times as much whitened residual"
+        + (f" ({reason})" if reason else "")
+    )
+
+
+def _repaired(
+    full: Problem,
+    residual: FloatArray,
+    rows: list[int],
+    taps: int,
+    rng: dict,  # type: ignore[type-arg]
+) -> tuple[Problem, Problem, Fit]:
+    y2 = an.repair(full.y, residual, rows, taps)
+    fixed = Problem(full.t, full.u, y2, full.ts, full.z0, full.weights, full.over_interval)
+    head = fixed.head(MAX_FIT_ROWS)
+    return fixed, head, fit_baseline(head, rng)
+
+
+def _fenced(
+    full: Problem,
+    found: list[dist.Disturbance],
+    rng: dict,  # type: ignore[type-arg]
+) -> tuple[Problem, Problem, Fit]:
+    fixed = full.with_weights(full.weights * dist.fence(full.y.size, found))
+    head = fixed.head(MAX_FIT_ROWS)
+    return fixed, head, fit_baseline(head, rng)
+
+
+def _in_motion(y: FloatArray) -> bool:
+    """True when the log starts with the wheel turning (rows 1-2 fast against the log's top speed)."""
+    top = float(np.max(np.abs(y)))
+    return top > 0 and float(np.min(np.abs(y[1:3]))) > 0.2 * top
+
+
+def _initial_speed(prob: Problem, rng: dict) -> float:  # type: ignore[type-arg]
+    """Initial speed in K = 1 units (V) for a log that starts moving: fitted with the baseline."""
+    head = prob.head(MAX_FIT_ROWS)
+    u_top = float(np.max(np.abs(prob.u))) or 1.0
+    z_guess = u_top * math.copysign(1.0, float(prob.y[1]))
+    for _ in range(2):
+        head.z0 = z_guess
+        base = fit_baseline(head, rng)
+        k = base.K if base.K != 0 else 1.0
+
+        def sse(z: float, base: Fit = base) -> float:
+            head.z0 = z
+            return float(np.sum((head.y - base.predict(head)) ** 2))
+
+        w1 = float(prob.y[1]) / k
+        lo, hi = sorted((0.0, 3.0 * w1))
+        z_guess = golden(sse, lo, hi, xatol=1e-4 * max(abs(hi - lo), 1e-9))[0]
+    head.z0 = z_guess
+    return z_guess

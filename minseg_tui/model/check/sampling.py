@@ -1,0 +1,277 @@
+"""The sample times and the speed column as the log took them.
+
+- How a row's speed was computed: the angle change over the row's real interval divided
+  by that interval, or by the nominal period (a board that divides by its nominal Ts).
+  The log's header may say (``# omega_over: interval`` / ``nominal``); otherwise it is
+  detected: counts make the speed (times the divisor) lie on a lattice of one count, and a
+  speed divided by the nominal period rises and falls with the interval.
+- Jitter or lost samples: a regular clock with a few intervals near 2 Ts, 3 Ts, ... lost
+  samples; intervals spread widely around Ts are an irregular loop (jitter), nothing lost.
+- The speed's resolution, one count per nominal period (2 pi/cpr/ts, rad/s), from ``# cpr:``
+  or from the lattice; its noise floor is resolution/sqrt 6 (two uniform roundings), and
+  the angle's q/sqrt 12.
+- Whether the speed looks like counts at all (rough from sample to sample) or is smooth (a
+  tachometer or a filtered signal): then the noise cannot tell an averaging filter from an
+  extra pole.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+
+EVEN = 0.02
+"""Intervals within this share of the nominal period count as even."""
+
+REGULAR = 0.05
+"""A clock whose intervals spread less than this share (robust sd) is regular."""
+
+
+@dataclass(frozen=True)
+class Sampling:
+    """How the log was sampled (see the module docstring). Times in s, speeds in rad/s.
+
+    ts: nominal period; over_interval: a row's speed is over its real interval; how: where
+    that came from ('header', 'detected', 'even': the intervals are even, both agree);
+    interval_min/max: shortest and longest interval; jitter: robust sd of the intervals;
+    regular: the clock is regular (so long intervals are lost samples); lost: samples
+    lost; gap_row: the row after the longest gap (None without); resolution: one count per
+    nominal period (None: unknown); resolution_how: where it came from; smooth: the speed is
+    smooth from sample to sample (not a difference of counts).
+    """
+
+    ts: float
+    over_interval: bool
+    how: str
+    interval_min: float
+    interval_max: float
+    jitter: float
+    regular: bool
+    lost: int
+    gap_row: int | None
+    resolution: float | None
+    resolution_how: str
+    smooth: bool
+
+    @property
+    def floor(self) -> float | None:
+        """Noise floor of the Euler speed from counts, rad/s: resolution / sqrt 6."""
+        return None if self.resolution is None else self.resolution / math.sqrt(6.0)
+
+    def column_floor(self, taps: int) -> float | None:
+        """Noise floor (rad/s) of the speed column when it is an average over ``taps``
+        samples: the count floor over taps with the resolution from ``# cpr:``; the floor
+        itself with a resolution read off the column's lattice (which an average already
+        divides)."""
+        if self.floor is None:
+            return None
+        return self.floor / taps if self.resolution_how.startswith("# cpr") else self.floor
+
+    @property
+    def angle_floor(self) -> float | None:
+        """Noise of the angle itself, rad: one count / sqrt 12."""
+        return None if self.resolution is None else self.resolution * self.ts / math.sqrt(12.0)
+
+    def to_dict(self) -> dict[str, object]:
+        return {
+            "ts": self.ts,
+            "omega_over": "interval" if self.over_interval else "nominal",
+            "how": self.how,
+            "interval_min": self.interval_min,
+            "interval_max": self.interval_max,
+            "jitter": self.jitter,
+            "regular": self.regular,
+            "lost_samples": self.lost,
+            "resolution": self.resolution,
+            "resolution_how": self.resolution_how,
+            "noise_floor": self.floor,
+            "smooth": self.smooth,
+            "text": self.text(),
+        }
+
+    def text(self) -> str:
+        """One sentence on the sample times and the speed column."""
+        ms = 1e3
+        if self.how == "even":
+            times = f"even sample times ({self.ts * ms:.3g} ms)"
+        else:
+            over = "its own interval" if self.over_interval else "the nominal period"
+            src = "as the header says" if self.how == "header" else "detected from the data"
+            spread = f"{self.interval_min * ms:.3g}-{self.interval_max * ms:.3g} ms"
+            if self.regular:
+                times = f"sample times {spread} around {self.ts * ms:.3g} ms"
+            else:
+                times = (
+                    f"irregular sample times ({spread}, nominal {self.ts * ms:.3g} ms): a loop "
+                    "without a fixed clock; the long intervals are jitter, not lost samples"
+                )
+            times += f"; each row's speed is taken over {over} ({src}) and simulated so"
+        if self.lost:
+            times += f"; {self.lost} sample(s) lost"
+        if self.resolution is not None:
+            res = (
+                f"one count per sample is {self.resolution:.3g} rad/s ({self.resolution_how}), "
+                f"a noise floor of {self.floor:.3g} rad/s"
+            )
+        elif self.smooth:
+            res = "the speed is smooth, not a difference of counts (a tachometer or a filtered signal)"
+        else:
+            res = (
+                "the encoder's resolution is unknown (no # cpr: line, no count steps in the speed)"
+            )
+        return f"{times}; {res}"
+
+
+def _on(v: FloatArray, q: float) -> float:
+    """Share of the nonzero values v within 2 % of a multiple of q."""
+    nz = np.abs(v[v != 0])
+    if nz.size == 0:
+        return 0.0
+    k = nz / q
+    return float(np.mean(np.abs(k - np.round(k)) < 0.02))
+
+
+def _lattice(v: FloatArray) -> float | None:
+    """The step q of a lattice that the nonzero values v lie on (within 2 %), if any."""
+    nz = np.abs(v[v != 0])
+    if nz.size < 10:
+        return None
+    q0 = float(np.min(nz))
+    for div in (1, 2, 3, 4):
+        q = q0 / div
+        if _on(nz, q) >= 0.95 and float(np.max(nz / q)) < 5e4:
+            return q
+    return None
+
+
+def _smooth(y: FloatArray, u: FloatArray) -> bool:
+    """True when the speed is smooth from row to row where the input is constant: the
+    deviation from a running mean of 5 rows correlates strongly with itself one row on."""
+    n = y.size
+    if n < 20:
+        return False
+    m = np.convolve(y, np.ones(5) / 5.0, mode="same")
+    d = y - m
+    same = np.ones(n, dtype=bool)
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    for e in change.tolist():
+        same[max(e - 3, 0) : e + 6] = False
+    same[:3] = same[-3:] = False
+    a, b = d[:-1][same[:-1] & same[1:]], d[1:][same[:-1] & same[1:]]
+    if a.size < 10 or float(np.dot(a, a)) == 0.0:
+        return float(np.ptp(d[same])) == 0.0 if np.any(same) else False
+    return float(np.dot(a, b) / math.sqrt(float(np.dot(a, a)) * float(np.dot(b, b)))) > 0.5
+
+
+def sampling(
+    t: FloatArray,
+    u: FloatArray,
+    y: FloatArray,
+    ts: float,
+    cpr: int | None = None,
+    omega_over: str | None = None,
+) -> Sampling:
+    """How the log (t s, u V, y rad/s) was sampled; ``ts`` its nominal period (s), ``cpr``
+    and ``omega_over`` ('interval' or 'nominal') from its header when it says."""
+    dt = np.diff(t)
+    rel = dt / ts
+    even = bool(np.all(np.abs(rel - 1.0) < EVEN))
+    jitter = float(1.4826 * np.median(np.abs(dt - np.median(dt)))) if dt.size else 0.0
+    regular = jitter < REGULAR * ts
+    long = np.flatnonzero(rel > 1.5)
+    lost = int(np.sum(np.round(rel[long]) - 1)) if regular and long.size else 0
+    gap_row = int(long[np.argmax(dt[long])]) + 1 if regular and long.size else None
+    # over which time the speed of a row was taken
+    prev = np.concatenate(([ts], dt))
+    lat_nom = _lattice(y * ts)
+    lat_int = _lattice(y * prev) if not even else lat_nom
+    uneven = np.abs(prev / ts - 1.0) > EVEN
+    share_nom = _on((y * ts)[uneven], lat_nom) if lat_nom else 0.0
+    share_int = _on((y * prev)[uneven], lat_int) if lat_int else 0.0
+    if omega_over in ("interval", "nominal"):
+        over, how = omega_over == "interval", "header"
+    elif even:
+        over, how = False, "even"
+    elif max(share_nom, share_int) >= 0.9 and min(share_nom, share_int) < 0.6:
+        over, how = share_int > share_nom, "detected"
+    else:
+        over, how = _divides_by_interval(y, rel, u), "detected"
+    q = lat_int if over else lat_nom
+    if cpr is not None and cpr > 0:
+        resolution, res_how = 2.0 * math.pi / cpr / ts, f"# cpr: {cpr}"
+    elif q is not None:
+        resolution = q / ts
+        res_how = f"the speeds lie on a lattice of {resolution:.3g} rad/s"
+    else:
+        resolution, res_how = None, ""
+    smooth = resolution is None and _smooth(y, u)
+    return Sampling(
+        ts=ts,
+        over_interval=over,
+        how=how,
+        interval_min=float(np.min(dt)) if dt.size else ts,
+        interval_max=float(np.max(dt)) if dt.size else ts,
+        jitter=jitter,
+        regular=regular,
+        lost=lost,
+        gap_row=gap_row,
+        resolution=resolution,
+        resolution_how=res_how,
+        smooth=smooth,
+    )
+
+
+def _divides_by_interval(y: FloatArray, rel: FloatArray, u: FloatArray) -> bool:
+    """True when a row's speed does not follow its interval: the speed relative to its
+    neighbours' median is regressed on the interval relative to the nominal (slope near 1:
+    the angle change was divided by the nominal period)."""
+    n = y.size
+    x = np.concatenate(([0.0], rel - 1.0))
+    k = np.arange(3, n - 3)
+    win = np.stack([y[k + j] for j in (-3, -2, -1, 1, 2, 3)])
+    level = np.median(win, axis=0)
+    same = np.array([u[i - 3] == u[i + 3] for i in k.tolist()], dtype=bool)
+    top = float(np.max(np.abs(y))) or 1.0
+    ok = same & (np.abs(level) > 0.2 * top)
+    if np.count_nonzero(ok) < 10:
+        return True
+    r = y[k][ok] / level[ok] - 1.0
+    xx = x[k][ok]
+    den = float(np.dot(xx, xx))
+    if den == 0.0:
+        return True
+    return float(np.dot(xx, r) / den) < 0.5
+
+
+def scatter(
+    y: FloatArray, u: FloatArray, settle: int, moving: NDArray[np.bool_], keep: float = 0.98
+) -> float:
+    """The noise (rad/s) of a speed or a residual ``y``: the rms of its departure from a
+    centred mean over ``SMOOTH`` rows (times sqrt(m/(m-1)), exact for white noise), in the
+    settled part of the constant-input stretches (``settle`` rows after a step) where the
+    wheel moves (``moving``: a wheel at rest reads exactly 0, without noise); only the
+    smallest share ``keep`` counts. A slow model error drops out with the mean; an average over N samples of
+    counts shows the floor over N."""
+    n = y.size
+    m = SMOOTH
+    ok = np.ones(n, dtype=bool)
+    for e in (np.flatnonzero(np.diff(u) != 0) + 1).tolist():
+        ok[max(e - m // 2, 0) : e + settle] = False
+    ok[: m // 2] = ok[n - m // 2 :] = False
+    mv = ok & np.asarray(moving, dtype=bool)
+    if np.count_nonzero(mv) >= 10:
+        ok = mv
+    if np.count_nonzero(ok) < 10:
+        ok = np.ones(n, dtype=bool)
+    d = (y - np.convolve(y, np.ones(m) / m, mode="same"))[ok]
+    d2 = np.sort(d * d)[: max(1, int(math.ceil(keep * d.size)))]
+    return float(math.sqrt(float(np.mean(d2)) * m / (m - 1)))
+
+
+SMOOTH = 9
+"""Rows of the centred mean that :func:`scatter` takes the noise against."""

@@ -1,0 +1,100 @@
+"""The model check's result as the text a student reads (``minseg-tui analyze``)."""
+
+from __future__ import annotations
+
+from minseg_tui.model.check.effects import UNITS
+from minseg_tui.model.check.result import CheckResult
+
+_FIGURES: dict[str, tuple[str, str]] = {
+    "extended_angle_rms": ("angle error", "rad"),
+    "baseline_angle_rms": ("angle error", "rad"),
+    "heldout_extended_rmse": ("error on held-out steps", "rad/s"),
+    "heldout_baseline_rmse": ("error on held-out steps", "rad/s"),
+    "extended_above_noise": ("error above the noise", "rad/s"),
+    "baseline_above_noise": ("error above the noise", "rad/s"),
+    "extended_above_floor": ("error above the floor", "rad/s"),
+    "baseline_above_floor": ("error above the floor", "rad/s"),
+    "extended_rmse": ("rms error", "rad/s"),
+    "baseline_rmse": ("rms error", "rad/s"),
+}
+
+
+def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | None = None) -> str:
+    out = []
+    for k, v in p.items():
+        s = f"{k} = {v:.4g} {UNITS.get(k, '')}".rstrip()
+        if intervals and k in intervals:
+            lo, hi = intervals[k]
+            s += f" (95 %: {lo:.3g}-{hi:.3g})"
+        out.append(s)
+    return ", ".join(out)
+
+
+def _pair(r: CheckResult, key: str) -> str:
+    """'baseline -> extended' of one figure, with its unit."""
+    g = r.gain
+    b = g.get(key.replace("extended", "baseline"))
+    e = g.get(key.replace("baseline", "extended"))
+    unit = _FIGURES.get(key, ("", ""))[1]
+    if b is None:
+        return "n/a"
+    if r.finding.cause == "none" or e is None:
+        return f"{b:.3g} {unit}"
+    return f"{b:.3g} -> {e:.3g} {unit}"
+
+
+def text(r: CheckResult) -> str:
+    """The human report: how the log was sampled, the baseline, where it deviates, the
+    cause and its evidence, the extended model, the gain (the figure that means most
+    first, and why), what the check cannot say, the anomalies."""
+    b, e, f, g = r.baseline, r.extended, r.finding, r.gain
+    lines = []
+    if r.sampling is not None:
+        lines.append(f"Log: {r.sampling.text()}")
+    lines += [
+        f"Baseline (first order): {_params(b.params, b.intervals)}",
+        f"  simulated on the measured input: rmse {b.rmse:.3f} rad/s, fit {b.fit_percent:.1f} %",
+        f"Where it deviates: {r.where}",
+    ]
+    for d in r.deviations:
+        lines.append(
+            f"  {d.region.replace('_', ' '):<20} {d.rows:6d} rows  rms {d.rms:.3f} rad/s"
+            f"  mean {d.mean:+.3f} rad/s"
+        )
+    lines.append(f"Cause: {f.cause}")
+    lines.append(f"  {f.evidence}")
+    for o in f.others:
+        lines.append(f"  also: {o.cause} ({_params(o.params)}): {o.evidence}")
+    if f.cause != "none":
+        lines.append(f"Extended model ({e.model}): {_params(e.params, e.intervals)}")
+        lines.append(f"  rmse {e.rmse:.3f} rad/s, fit {e.fit_percent:.1f} %")
+    else:
+        lines.append("Extended model: none needed (it is the baseline)")
+    if r.lead is not None:
+        name = _FIGURES.get(r.lead.figure, (r.lead.figure, ""))[0]
+        lines.append(f"Gain: {name} {_pair(r, r.lead.figure)} (leads because {r.lead.why})")
+    rest = []
+    floor = g.get("noise_floor")
+    noise = g.get("noise")
+    if floor is not None:
+        rest.append(f"noise floor {floor:.3g} rad/s")
+    if noise is not None:
+        rest.append(f"scatter {noise:.3g} rad/s")
+    rest.append(f"rms error {_pair(r, 'extended_rmse')}")
+    if g.get("baseline_above_floor") is not None:
+        rest.append(f"above the floor {_pair(r, 'extended_above_floor')}")
+    rest.append(f"angle error {_pair(r, 'extended_angle_rms')}")
+    if g.get("heldout_baseline_rmse") is not None:
+        rest.append(f"on held-out steps {_pair(r, 'heldout_extended_rmse')}")
+    if f.cause != "none":
+        rest.append(
+            f"rmse {g['rmse_reduction_percent']:.1f} % lower, fit {g['fit_percent_gain']:+.1f} points"
+        )
+    lines.append("  " + "; ".join(rest))
+    if f.caveats:
+        lines.append("What the check cannot say here:")
+        lines.extend(f"  - {c.text}" for c in f.caveats)
+    if r.anomalies:
+        lines.append("Anomalies (reported, not counted as causes):")
+        lines.extend(f"  - {a.text}" for a in r.anomalies)
+    return "\n".join(lines)

@@ -1,0 +1,252 @@
+"""Tasks 6-15 put together: the table, the step log, the model of Task 14 and what they show.
+
+K (Task 11) is the steady speed the fit gives for each rising step over the u_ss the table
+gives at the step's requested voltage (the median over the steps); T (Task 12) the least-
+squares time constant, with the manual's 63 % reading beside it and a sentence saying how far
+apart the two are and how much of that the sampling explains; J (Task 13) from T; the model
+(Task 14) and omega at 5 V (Task 15) from K and T. The K interval holds what the fit knows; the
+table's u_ss is taken as exact.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from minseg_tui.errors import InputError
+from minseg_tui.model.identify.lsq import t975
+from minseg_tui.model.identify.observations import (
+    Observation,
+    step_observations,
+    table_observations,
+)
+from minseg_tui.model.identify.steady import Reading, Row, steady_state, u_ss_at
+from minseg_tui.model.identify.stepfit import (
+    RisingStep,
+    TimeConstantFit,
+    fit_time_constant,
+    model_reading_63,
+    rising_steps,
+)
+from minseg_tui.model.identify.steps import step_windows
+from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
+from minseg_tui.model.steplog import StepLog, command, find_edges, problem
+
+U_TASK15: float = 5.0
+"""The applied voltage of Task 15, V."""
+
+
+@dataclass(frozen=True)
+class StepResult:
+    """Tasks 11-13 from a step log.
+
+    K: static gain (rad/s per V, median over rising steps of the fitted omega_ss / u_ss);
+    T: the least-squares time constant (s), the one the model uses; T_63: the median 63 %
+    reading (s, None if no step crossed); T_ci: 95 % interval of T (s); J: inertia (kg m^2);
+    omega_ss: median fitted steady speed of the steps (rad/s); u_ss: the applied voltage K
+    divides by (V); u_ss_how: 'row', 'interpolated', 'extrapolated' or 'log'; steps: each
+    rising step; fit: details of the least-squares fit; K_ci: 95 % interval of K (rad/s per
+    V); T_63_model: the 63 % reading taken on the fitted model sampled like the log (s);
+    T_63_note: a sentence saying how far the 63 % reading is from T and why (None without a
+    reading).
+    """
+
+    K: float
+    T: float
+    T_63: float | None
+    T_ci: tuple[float, float]
+    J: float
+    omega_ss: float
+    u_ss: float
+    u_ss_how: str
+    steps: tuple[RisingStep, ...]
+    fit: TimeConstantFit
+    model_uses: str = "least_squares"
+    K_ci: tuple[float, float] = (math.nan, math.nan)
+    T_63_model: float | None = None
+    T_63_note: str | None = None
+
+
+@dataclass(frozen=True)
+class Identification:
+    """Everything of Tasks 6-15. ``step`` is None without a step log."""
+
+    R: float
+    rows: tuple[Row, ...]
+    k_v: float
+    k_a: float
+    f: float
+    step: StepResult | None
+    observations: tuple[Observation, ...]
+
+    @property
+    def model(self) -> FirstOrder | None:
+        """Task 14: T omega' = -omega + K u_A with the least-squares T and the step's K."""
+        return FirstOrder(T=self.step.T, K=self.step.K) if self.step else None
+
+    @property
+    def omega_at_5V(self) -> float | None:
+        """Task 15: the final speed for u_A = 5 V, rad/s."""
+        return self.step.K * U_TASK15 if self.step else None
+
+    def to_json(self) -> dict[str, object]:
+        """The --json object of the issue (SI units, i_ss in mA as entered)."""
+        out: dict[str, object] = {
+            "R": self.R,
+            "rows": [
+                {
+                    "u_req": r.reading.u_req,
+                    "u_ss": r.reading.u_ss,
+                    "omega_ss": r.reading.omega_ss,
+                    "i_ss": r.reading.i_ss,
+                    "k_v": r.k_v,
+                    "f": r.f,
+                }
+                for r in self.rows
+            ],
+            "k_v": self.k_v,
+            "k_a": self.k_a,
+            "f": self.f,
+        }
+        if self.step is not None:
+            s = self.step
+            out["step"] = {
+                "K": s.K,
+                "T": s.T,
+                "T_63": s.T_63,
+                "T_ci": [s.T_ci[0], s.T_ci[1]],
+                "J": s.J,
+                "omega_ss": s.omega_ss,
+                "K_ci": [s.K_ci[0], s.K_ci[1]],
+                "T_63_model": s.T_63_model,
+                "T_63_note": s.T_63_note,
+                "method": s.fit.method,
+                "shift": s.fit.shift,
+                "u_c": s.fit.u_c,
+            }
+            out["model"] = {"T": s.T, "K": s.K}
+            out["omega_at_5V"] = self.omega_at_5V
+        return out
+
+
+def _step_result(
+    log: StepLog, rows: tuple[Row, ...], R: float, k_v: float, k_a: float, f: float
+) -> tuple[StepResult, list[Observation]]:
+    windows, skipped = step_windows(log)
+    if not windows:
+        cmd, name = command(log)
+        raise InputError(
+            log.source,
+            log.line_of(0),
+            (
+                f"expected a rising step in {name} (V) with at least one sample before it and 5 after it; "
+                f"found {sum(e.rising for e in find_edges(cmd))} rising edge(s), none usable"
+            ),
+        )
+    refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
+    if refused:
+        raise InputError(log.source, None, refused)
+    fit = fit_time_constant(log)
+    if fit is None:  # cannot happen with usable windows; keeps the types honest
+        raise InputError(log.source, None, "expected a usable rising step")
+    steps = rising_steps(log, fit)
+    u_used, hows = [], []
+    for s in steps:
+        if s.u_req is None:
+            u_used.append(s.u_high)
+            hows.append("log")
+        else:
+            u, how = u_ss_at(rows, s.u_req)
+            u_used.append(u)
+            hows.append(how)
+    K_each = [s.omega_ss / u for s, u in zip(steps, u_used, strict=True)]
+    K = float(np.median(K_each))
+    omega_ss = float(np.median([s.omega_ss for s in steps]))
+    u_ss = float(np.median(u_used))
+    how = hows[len(hows) // 2] if len(set(hows)) > 1 else hows[0]
+    T = fit.T
+    reads = [s.T_63 for s in steps if s.T_63 is not None]
+    T_63 = float(np.median(reads)) if reads else None
+    T_63_model = model_reading_63(log, fit, steps) if T_63 is not None else None
+    J = inertia_from_time_constant(T, R, f, k_v, k_a)
+    result = StepResult(
+        K=K,
+        T=T,
+        T_63=T_63,
+        T_ci=fit.ci,
+        J=J,
+        omega_ss=omega_ss,
+        u_ss=u_ss,
+        u_ss_how=how,
+        steps=tuple(steps),
+        fit=fit,
+        K_ci=_K_interval(K, K_each, u_used, fit),
+        T_63_model=T_63_model,
+        T_63_note=_T_63_note(T, T_63, T_63_model, log.ts),
+    )
+    observations = step_observations(rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped))
+    return result, observations
+
+
+def _K_interval(
+    K: float, K_each: Sequence[float], u_used: Sequence[float], fit: TimeConstantFit
+) -> tuple[float, float]:
+    """95 % interval of K (rad/s per V): from the fit's covariance when one model gives every
+    step's speed (the whole-log fit), else from the scatter of the steps' K (three or more
+    steps) or the fit's standard error of the step's speed (fewer)."""
+    i = int(np.argsort(K_each)[len(K_each) // 2])  # the step whose K is the median (upper)
+    if fit.gain is not None or len(K_each) < 3:
+        se = fit.omega_ss_se[i] / u_used[i]
+        half = t975(fit.dof) * se
+    else:
+        spread = float(np.std(K_each, ddof=1)) * math.sqrt(math.pi / 2) / math.sqrt(len(K_each))
+        half = t975(len(K_each) - 1) * spread
+    return (K - half, K + half)
+
+
+def _T_63_note(T: float, T_63: float | None, T_63_model: float | None, ts: float) -> str | None:
+    """How far the manual's 63 % reading is from the least-squares T, and why."""
+    if T_63 is None:
+        return None
+    apart = T_63 - T
+    side = "longer" if apart > 0 else "shorter"
+    out = (
+        f"The 63 % reading ({T_63 * 1e3:.1f} ms) is {abs(apart) * 1e3:.1f} ms ({abs(apart) / T * 100:.1f} %) "
+        f"{side} than the least-squares T ({T * 1e3:.1f} ms)."
+    )
+    if T_63_model is None:
+        return out
+    sampled = T_63_model - T
+    out += (
+        f" Read the same way on the fitted model sampled every {ts * 1e3:.3g} ms like this log, it gives "
+        f"{T_63_model * 1e3:.1f} ms: the sampling alone moves the reading by {sampled * 1e3:+.1f} ms "
+        "(the logged speed is the mean over each sample interval, half a sample late, and the reading "
+        "joins the samples by straight lines)"
+    )
+    rest = T_63 - T_63_model
+    if abs(rest) > max(0.02 * T, 0.1 * abs(apart)):
+        out += f", and {rest * 1e3:+.1f} ms is the noise of reading single samples."
+    else:
+        out += ", which is the whole difference."
+    return out + " The least-squares fit models the sampling, so its T is the one the model uses."
+
+
+def identify(
+    readings: Sequence[Reading], R: float, log: StepLog | None = None, source: str = "table"
+) -> Identification:
+    """Tasks 6-15 from the table's readings, the resistance R (ohm) and optionally a step log.
+
+    Raises InputError for a bad R, a bad row, or a log without a usable rising step.
+    """
+    rows, k_v, k_a, f = steady_state(readings, R, source)
+    observations = table_observations(rows, R, k_v, k_a)
+    step = None
+    if log is not None:
+        step, more = _step_result(log, rows, R, k_v, k_a, f)
+        observations += more
+    return Identification(
+        R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, observations=tuple(observations)
+    )

@@ -1,0 +1,232 @@
+"""What the numbers of Tasks 6-15 show: observations a student understands, each with a code."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
+from minseg_tui.model.identify.stepfit import RisingStep
+
+KV_OUTLIER: float = 0.15
+"""A row's k_v this far (relative) from the median is called a bad reading."""
+
+STEP_VS_TABLE: float = 0.10
+"""Step and table steady-state speeds further apart than this (relative) are reported."""
+
+SHORT_T_SAMPLES: float = 3.0
+"""T below this many sample periods: the 63 % reading measures the sampling, not the motor."""
+
+
+@dataclass(frozen=True)
+class Observation:
+    """Something the numbers show: a short code and a sentence a student understands."""
+
+    code: str
+    message: str
+
+
+def _row_name(index: int, r: Reading) -> str:
+    where = f", line {r.line}" if r.line is not None else ""
+    return f"row {index + 1} (u_req {r.u_req:g} V{where})"
+
+
+def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> list[Observation]:
+    """What the table shows: dry friction, a bad reading, currents in the wrong unit."""
+    out: list[Observation] = []
+    for i, row in enumerate(rows):
+        r = row.reading
+        if r.i_ss < 1.0:
+            out.append(
+                Observation(
+                    "i_ss_units",
+                    f"{_row_name(i, r)}: i_ss = {r.i_ss:g} looks like amperes; the table wants mA ({r.i_ss * 1e3:g} mA?).",
+                )
+            )
+        elif r.i_ss > 100.0:
+            out.append(
+                Observation(
+                    "i_ss_high",
+                    f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says you are probably measuring the wrong thing or the meter is in the wrong mode.",
+                )
+            )
+        if row.k_v <= 0:
+            out.append(
+                Observation(
+                    "k_v_nonpositive",
+                    f"{_row_name(i, r)}: R i_ss = {R * r.i_ss * 1e-3:.3g} V is not below u_ss = {r.u_ss:g} V, so k_v comes out {row.k_v:.3g}; check R and i_ss.",
+                )
+            )
+    if len(rows) >= 3:
+        for i, row in enumerate(rows):
+            dev = (row.k_v - k_v) / k_v if k_v else math.inf
+            if abs(dev) > KV_OUTLIER:
+                out.append(
+                    Observation(
+                        "k_v_outlier",
+                        (
+                            f"{_row_name(i, row.reading)}: k_v = {row.k_v:.4g} V s/rad is {abs(dev) * 100:.0f} % "
+                            f"{'above' if dev > 0 else 'below'} the median {k_v:.4g}: probably a bad reading "
+                            "(u_ss, omega_ss or i_ss of that row); the median keeps it out of the result."
+                        ),
+                    )
+                )
+    elif len(rows) == 2:
+        a, b = rows[0].k_v, rows[1].k_v
+        if abs(a - b) / abs(k_v) > 2 * KV_OUTLIER:
+            out.append(
+                Observation(
+                    "k_v_disagree",
+                    (
+                        f"The two rows give k_v = {a:.4g} and {b:.4g} V s/rad, {abs(a - b) / abs(k_v) * 100:.0f} % apart: "
+                        "one is probably a bad reading, and with two rows the median cannot tell which. Measure a third voltage."
+                    ),
+                )
+            )
+    out += _dry_friction(rows, k_a)
+    return out
+
+
+def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
+    by_speed = sorted(rows, key=lambda row: row.reading.omega_ss)
+    w = np.array([row.reading.omega_ss for row in by_speed])
+    f = np.array([row.f for row in by_speed])
+    if len(rows) < 2 or np.ptp(w) <= 0.05 * np.max(w):
+        return []
+    falling = bool(np.all(np.diff(f) < 0)) and f[0] > 1.1 * f[-1]
+    if not falling:
+        return []
+    torque = k_a * np.array([row.reading.i_ss * 1e-3 for row in by_speed])
+    slope, intercept = np.polyfit(w, torque, 1)
+    line = ""
+    if slope > 0 and intercept > 0:
+        line = (
+            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {slope:.3g} N m s/rad "
+            f"and a dry friction torque tau_c = {intercept:.3g} N m."
+        )
+    return [
+        Observation(
+            "dry_friction",
+            (
+                f"f falls with speed, from {f[0]:.3g} at {w[0]:.3g} rad/s to {f[-1]:.3g} N m s/rad at {w[-1]:.3g} rad/s: "
+                "part of the friction is dry (Coulomb) friction, a torque that does not grow with speed. "
+                "The lab's model has viscous friction only, so its f depends on the speed it was measured at."
+                + line
+            ),
+        )
+    ]
+
+
+def step_observations(
+    rows: Sequence[Row],
+    steps: Sequence[RisingStep],
+    hows: Sequence[str],
+    u_ss: float,
+    T: float,
+    T_63: float | None,
+    ts: float,
+    skipped: int,
+) -> list[Observation]:
+    """What the step log shows (Tasks 11-13): where u_ss came from, steps that disagree with
+    the table, a T too short for the sampling, steps too short to settle or to use.
+
+    rows: the table; steps: the rising steps used; hows: how u_ss was found for each step;
+    u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
+    period (s); skipped: rising steps not usable.
+    """
+    observations: list[Observation] = []
+    levels = sorted({s.u_req for s in steps if s.u_req is not None})
+    if "log" in hows:
+        observations.append(
+            Observation(
+                "u_ss_from_log",
+                (
+                    f"The log has no u_req column, so K divides by the applied voltage the log recorded "
+                    f"({u_ss:.3g} V) instead of u_ss from the table."
+                ),
+            )
+        )
+    if "interpolated" in hows or "extrapolated" in hows:
+        which = "extrapolated beyond" if "extrapolated" in hows else "interpolated between"
+        observations.append(
+            Observation(
+                f"u_ss_{'extrapolated' if 'extrapolated' in hows else 'interpolated'}",
+                (
+                    f"No table row has u_req = {', '.join(f'{v:g}' for v in levels)} V, the step's requested level; "
+                    f"u_ss = {u_ss:.3g} V is {which} the table's rows."
+                ),
+            )
+        )
+    if len(levels) > 1:
+        observations.append(
+            Observation(
+                "several_levels",
+                (
+                    f"The rising steps go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
+                    "of omega_ss / u_ss over the steps and omega_ss the median of their speeds."
+                ),
+            )
+        )
+    for s in steps:
+        if s.u_req is None:
+            continue
+        w_table = omega_ss_at(rows, s.u_req)
+        if w_table is not None and abs(s.omega_ss - w_table) > STEP_VS_TABLE * w_table:
+            observations.append(
+                Observation(
+                    "step_vs_table",
+                    (
+                        f"The step at t = {s.t:.3g} s settles at {s.omega_ss:.3g} rad/s, but the table gives "
+                        f"{w_table:.3g} rad/s at u_req = {s.u_req:g} V ({abs(s.omega_ss / w_table - 1) * 100:.0f} % apart): "
+                        "the two experiments do not agree (a different wheel load, battery level, or a misread value)."
+                    ),
+                )
+            )
+            break
+    if T < SHORT_T_SAMPLES * ts:
+        observations.append(
+            Observation(
+                "T_short",
+                (
+                    f"T = {T * 1e3:.3g} ms is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {ts * 1e3:.3g} ms): "
+                    "the speed rises within a few samples, so the 63 % reading measures the sampling and the "
+                    "velocity computation as much as the motor. The least-squares T models the sampling and is the one to use."
+                ),
+            )
+        )
+    if T_63 is not None and abs(T_63 - T) > 0.25 * T:
+        observations.append(
+            Observation(
+                "T_63_differs",
+                (
+                    f"The 63 % reading ({T_63 * 1e3:.3g} ms) and the least-squares T ({T * 1e3:.3g} ms) differ by "
+                    f"{abs(T_63 / T - 1) * 100:.0f} %. The measured speed is the mean over each sample interval, so "
+                    "it lags the true speed by half a sample; a velocity filter lags it more."
+                ),
+            )
+        )
+    short = [s for s in steps if s.duration < 5 * T]
+    if short:
+        observations.append(
+            Observation(
+                "not_settled",
+                (
+                    f"{len(short)} step(s) last less than 5 T ({5 * T:.3g} s): the speed has not quite settled "
+                    "by their end, so omega_ss is the final speed of the fitted response rather than a reading "
+                    "of it (a mean over the end of a step would come out low); longer steps would check it."
+                ),
+            )
+        )
+    if skipped:
+        observations.append(
+            Observation(
+                "steps_skipped",
+                (
+                    f"{skipped} rising step(s) were too short or too close to the start of the log to use."
+                ),
+            )
+        )
+    return observations

@@ -1,0 +1,134 @@
+"""Tasks 6-9 from the table of steady-state readings: k_v, k_a and f per row and their medians.
+
+Units: R ohm, u V, omega rad/s, i_ss mA as entered (A inside the formulas), k_v V s/rad,
+k_a N m/A, f N m s/rad. Per row of the table
+
+    k_v = (u_ss - R i_ss) / omega_ss        f = k_a i_ss / omega_ss
+
+and the final k_v and f are the medians of the rows, k_a = 0.65 k_v.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from minseg_tui.errors import InputError
+from minseg_tui.units import KA_OVER_KV
+
+
+@dataclass(frozen=True)
+class Reading:
+    """One row of the table: requested u_req (V), u_ss (V), omega_ss (rad/s), i_ss (mA).
+
+    ``line`` is the row's line in its file, for messages (None when typed in).
+    """
+
+    u_req: float
+    u_ss: float
+    omega_ss: float
+    i_ss: float
+    line: int | None = None
+
+    def problem(self) -> str | None:
+        """What is wrong with this row for Tasks 6-9, as an 'expected ...' sentence, or None."""
+        values = {
+            "u_req": self.u_req,
+            "u_ss": self.u_ss,
+            "omega_ss": self.omega_ss,
+            "i_ss": self.i_ss,
+        }
+        for name, v in values.items():
+            if not math.isfinite(v):
+                return f"expected a number for {name}, got {v}"
+        if self.omega_ss <= 0:
+            return f"expected omega_ss > 0 rad/s (a zero speed gives no k_v or f), got {self.omega_ss:g}"
+        if self.u_ss <= 0:
+            return f"expected u_ss > 0 V (the voltage measured on the motor), got {self.u_ss:g}"
+        if self.i_ss <= 0:
+            return f"expected i_ss > 0 mA (the current measured in Task 5), got {self.i_ss:g}"
+        return None
+
+
+@dataclass(frozen=True)
+class Row:
+    """A reading with its k_v (V s/rad, Task 6) and f (N m s/rad, Task 9)."""
+
+    reading: Reading
+    k_v: float
+    f: float
+
+
+def _check_R(R: float) -> None:
+    if not (math.isfinite(R) and R > 0):
+        raise InputError("--R", None, f"expected a positive resistance in ohm, got {R:g}")
+
+
+def steady_state(
+    readings: Sequence[Reading], R: float, source: str = "table"
+) -> tuple[tuple[Row, ...], float, float, float]:
+    """Tasks 6-9: the rows with k_v and f, and the final (median) k_v, k_a = 0.65 k_v and f."""
+    _check_R(R)
+    if not readings:
+        raise InputError(source, None, "expected at least one row u_req,u_ss,omega_ss,i_ss")
+    for r in readings:
+        problem = r.problem()
+        if problem:
+            raise InputError(source, r.line, problem)
+    k_v_rows = [(r.u_ss - R * r.i_ss * 1e-3) / r.omega_ss for r in readings]
+    k_v = float(np.median(k_v_rows))
+    k_a = KA_OVER_KV * k_v
+    rows = tuple(
+        Row(reading=r, k_v=kv, f=k_a * r.i_ss * 1e-3 / r.omega_ss)
+        for r, kv in zip(readings, k_v_rows, strict=True)
+    )
+    for row in rows:
+        if not (math.isfinite(row.k_v) and math.isfinite(row.f)):
+            r = row.reading
+            raise InputError(
+                source,
+                r.line,
+                (
+                    f"expected readings of a plausible size (R i_ss = {R * r.i_ss * 1e-3:g} V, "
+                    f"omega_ss = {r.omega_ss:g} rad/s), they give k_v = {row.k_v:g} and f = {row.f:g}"
+                ),
+            )
+    if not k_v > 0:  # no motor has it: every figure from here on would be false
+        raise InputError(
+            source,
+            None,
+            f"expected the rows to give a positive k_v (V s/rad), their median is {k_v:.3g}: "
+            "u_ss - R i_ss is not above 0 on enough rows; check R and i_ss (mA)",
+        )
+    f = float(np.median([row.f for row in rows]))
+    return rows, k_v, k_a, f
+
+
+def u_ss_at(rows: Sequence[Row], u_req: float) -> tuple[float, str]:
+    """u_ss (V) the table gives for a requested u_req (V), and how ('row', 'interpolated',
+    'extrapolated'): a row with that u_req (their mean if several), else a straight line
+    between the nearest rows on either side, else the nearest row's driver drop."""
+    pts = sorted((row.reading.u_req, row.reading.u_ss) for row in rows)
+    same = [us for ur, us in pts if abs(ur - u_req) <= 1e-6 * max(1.0, abs(u_req))]
+    if same:
+        return float(np.mean(same)), "row"
+    below = [p for p in pts if p[0] < u_req]
+    above = [p for p in pts if p[0] > u_req]
+    if below and above:
+        (x0, y0), (x1, y1) = below[-1], above[0]
+        return y0 + (y1 - y0) * (u_req - x0) / (x1 - x0), "interpolated"
+    x0, y0 = below[-1] if below else above[0]
+    return u_req - (x0 - y0), "extrapolated"
+
+
+def omega_ss_at(rows: Sequence[Row], u_req: float) -> float | None:
+    """omega_ss (rad/s) the table gives for a requested u_req (V), interpolated between its
+    rows; None outside the rows."""
+    pts = sorted((row.reading.u_req, row.reading.omega_ss) for row in rows)
+    xs = [p[0] for p in pts]
+    if not (xs[0] - 1e-9 <= u_req <= xs[-1] + 1e-9):
+        return None
+    return float(np.interp(u_req, xs, [p[1] for p in pts]))
