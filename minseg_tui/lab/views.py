@@ -15,7 +15,7 @@ it for one thread at a time.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -28,6 +28,8 @@ from minseg_tui.lab.entry import format_quantity
 from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import step
 from minseg_tui.model import identify as model_identify
+from minseg_tui.model.check.effects import UNITS as check_units
+from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.units import DIGITS, format_number, format_value
 
@@ -66,6 +68,14 @@ def _fmt_milli(v: float | None, unit: str, digits: int = DIGITS) -> str:
 
 def _num(v: float | None, digits: int = DIGITS) -> str:
     return "—" if v is None else format_number(v, digits)
+
+
+def _ci(ci: tuple[float, float], unit: str) -> str:
+    """ ", 95 % CI lo..hi unit" for a finite interval; '' when it is not known."""
+    lo, hi = ci
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        return ""
+    return f", 95 % CI {_num(lo)}..{_num(hi)} {unit}"
 
 
 # -- Task 4: the live stream ------------------------------------------------------------------
@@ -356,9 +366,6 @@ def runs(session: Session) -> tuple[RunView, ...]:
 
 
 # -- Tasks 11-15: the results ---------------------------------------------------------------------
-LEVEL_63: float = 1.0 - math.exp(-1.0)
-"""The share of its change the speed has covered after one time constant (0.632)."""
-
 ZOOM_BEFORE_T: float = 1.0
 """The zoom to one rise starts this many time constants before the edge..."""
 
@@ -388,7 +395,7 @@ class StepWindow:
     @property
     def level(self) -> float:
         """The 63 % level of this step, rad/s."""
-        return self.omega0 + LEVEL_63 * (self.omega_ss - self.omega0)
+        return self.omega0 + E63 * (self.omega_ss - self.omega0)
 
     @property
     def t_63(self) -> float | None:
@@ -443,9 +450,10 @@ def results(session: Session, step_id: str) -> ResultsView:
         lines += [
             f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s')}   "
             f"u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
-            f"K = {_fmt(st.K, 'rad/s/V')}",
-            f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}, "
-            f"95 % CI {_num(st.T_ci[0])}..{_num(st.T_ci[1])} s",
+            f"K = {_fmt(st.K, 'rad/s/V')}{_ci(st.K_ci, 'rad/s/V')}",
+            f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
+            f"{_ci(st.T_ci, 's')}",
+            *([st.T_63_note] if st.T_63_note else []),
             f"J = {_fmt(st.J, 'kg m^2')}",
             f"model: {_num(st.T)} omega' = -omega + {_num(st.K)} u_A",
             f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s')}",
@@ -465,11 +473,26 @@ def results(session: Session, step_id: str) -> ResultsView:
 
 
 # -- the model check ---------------------------------------------------------------------------
+FIGURES: dict[str, tuple[str, str]] = {
+    "angle_rms": ("angle error", "rad"),
+    "heldout_rmse": ("error on held-out steps", "rad/s"),
+    "above_noise": ("speed error above the noise", "rad/s"),
+    "above_floor": ("speed error above the encoder's floor", "rad/s"),
+    "rmse": ("rms speed error", "rad/s"),
+}
+"""The model check's gain figures (``gain`` keys without their baseline_/extended_ prefix):
+what they are called here and their unit."""
+
+
 @dataclass(frozen=True)
 class CheckView:
     """The model check of one run: measured, baseline and extended speeds (rad/s) at t (s),
-    residual = measured - baseline; ``cause`` and ``evidence`` in words, the extended model
-    with its parameters and the gain in one line each; ``problem``: why there is no result."""
+    residual = measured - baseline; the close-up where the cause acts (``close_*``: the same
+    speeds over its stretch, ``close_what`` in words, ``noise`` the speed's noise level
+    there, rad/s); ``lead``: the gain figure that means most for this log, in one line, and
+    ``lead_why``; ``cause`` and ``evidence`` in words, the extended model with its
+    parameters, the other figures (``gain``), ``notes`` (what the check cannot say, the
+    anomalies; one line each); ``problem``: why there is no result."""
 
     run: str | None
     t: FloatArray = field(default_factory=_empty)
@@ -482,6 +505,37 @@ class CheckView:
     extended_model: str = ""
     gain: str = ""
     problem: str = ""
+    lead: str = ""
+    lead_why: str = ""
+    close_t: FloatArray = field(default_factory=_empty)
+    close_omega: FloatArray = field(default_factory=_empty)
+    close_baseline: FloatArray = field(default_factory=_empty)
+    close_extended: FloatArray = field(default_factory=_empty)
+    close_what: str = ""
+    noise: float | None = None
+    notes: tuple[str, ...] = ()
+
+
+def _stem(key: str) -> str:
+    """A gain key without its baseline_/extended_ prefix."""
+    return key.removeprefix("baseline_").removeprefix("extended_")
+
+
+def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | None:
+    """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
+    None when the log does not give it; only the baseline's when no cause was named."""
+    stem = _stem(key)
+    b, e = gain.get(f"baseline_{stem}"), gain.get(f"extended_{stem}")
+    unit = FIGURES.get(stem, (stem, ""))[1]
+    if b is None or (b == 0 and not e):
+        return None  # not to be had, or nothing to show (no error above the noise at all)
+    if not named or e is None:
+        return f"first order {format_value(b, unit, 3)}"
+    return f"first order {_num(b, 3)} → extended {format_value(e, unit, 3)}"
+
+
+def _params(params: Mapping[str, float]) -> str:
+    return ", ".join(f"{k} = {format_value(v, check_units.get(k, ''))}" for k, v in params.items())
 
 
 def check(session: Session) -> CheckView:
@@ -490,30 +544,53 @@ def check(session: Session) -> CheckView:
     r = mc.result
     if r is None:
         return CheckView(mc.run, problem=mc.problem or "no result")
-    f, e = r.finding, r.extended
-    ext = (
-        "none needed (the baseline is enough)"
-        if f.cause == "none"
-        else (f"{e.model}: " + ", ".join(f"{k} = {_num(v)}" for k, v in e.params.items()))
-    )
-    lower = r.gain.get("rmse_reduction_percent", 0.0)
-    gain = (
-        f"rmse {_num(r.baseline.rmse, 3)} → {_num(e.rmse, 3)} rad/s ({lower:.0f} % lower), "
-        f"fit {_num(r.baseline.fit_percent, 3)} → {_num(e.fit_percent, 3)} %"
-    )
+    f, e, g = r.finding, r.extended, r.gain
+    named = f.cause != "none"
+    ext = f"{e.model}: {_params(e.params)}" if named else "none needed (the baseline is enough)"
+    lead, lead_why = "", ""
+    led = _stem(r.lead.figure) if r.lead is not None else ""
+    if r.lead is not None:
+        shown = _figure(g, r.lead.figure, named)
+        if shown is not None:
+            lead = f"{FIGURES.get(led, (led, ''))[0]}: {shown}"
+            lead_why = r.lead.why
+    others = [
+        f"{FIGURES[stem][0]} {shown}"
+        for stem in FIGURES
+        if stem != led and (shown := _figure(g, stem, named)) is not None
+    ]
+    floor = g.get("noise_floor")
+    if floor is not None:
+        others.insert(0, f"encoder noise floor {format_value(floor, 'rad/s', 3)}")
     omega = np.asarray(r.omega, dtype=float)
     baseline = np.asarray(r.baseline_pred, dtype=float)
+    extended = np.asarray(r.extended_pred, dtype=float)
+    t = np.asarray(r.t, dtype=float)
+    cu = r.close_up
+    window = slice(cu.start, cu.end) if cu is not None else slice(0, 0)
+    notes = tuple(f"cannot say: {c.text}" for c in f.caveats) + tuple(
+        f"anomaly: {a.text}" for a in r.anomalies
+    )
     return CheckView(
         mc.run,
-        np.asarray(r.t, dtype=float),
+        t,
         omega,
         baseline,
-        np.asarray(r.extended_pred, dtype=float),
+        extended,
         omega - baseline,
         f.cause,
         f.evidence,
         ext,
-        gain,
+        "; ".join(others),
+        lead=lead,
+        lead_why=lead_why,
+        close_t=t[window],
+        close_omega=omega[window],
+        close_baseline=baseline[window],
+        close_extended=extended[window],
+        close_what=cu.what if cu is not None else "",
+        noise=cu.noise if cu is not None else floor,
+        notes=notes,
     )
 
 

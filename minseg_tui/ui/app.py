@@ -74,7 +74,7 @@ KEYS: list[tuple[str, str]] = [
     ("F6", "run it fast: 5 ms board-timed samples"),
     ("F7", "the formula behind the table cell"),
     ("F8", "export the report (Markdown, HTML, CSV)"),
-    ("F9", "zoom the step log: next step, whole log (Tasks 11-15)"),
+    ("F9", "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)"),
     ("Alt+← →", "previous / next step of the log (Tasks 11-15)"),
     ("Ctrl+← →", "the same, outside a text entry"),
     ("[ ] z", "the same on the focused plot; z zooms"),
@@ -93,7 +93,7 @@ EVENT_TEXT: dict[str, str] = {
     "alive": "board answers again",
     "watchdog": "watchdog stopped the motor",
     "boot": "board restarted — motor off",
-    "motor": "motor off after the restart — nothing restored; F3 sets a voltage again",
+    "motor": "motor off after the restart: nothing restored",
 }
 """What the status line says at once for a link event (``error`` shows the link's own line)."""
 

@@ -27,17 +27,23 @@ class QuietDevice:
         self.commands: list[str] = []
         self.u_req: float | None = 0.0
         self._fed: list[SampleBatch] = []
+        self._events: list[LinkEvent] = []
 
     def feed(self, batch: SampleBatch) -> None:
         """Hand the app ``batch`` at its next read (the double sends nothing of its own)."""
         self._fed.append(batch)
+
+    def feed_event(self, event: LinkEvent) -> None:
+        """Hand the app ``event`` at its next read."""
+        self._events.append(event)
 
     def samples(self) -> SampleBatch:
         fed, self._fed = self._fed, []
         return SampleBatch.concat(fed)
 
     def events(self) -> list[LinkEvent]:
-        return []
+        out, self._events = self._events, []
+        return out
 
     def set_voltage(self, u: float) -> float:
         self.commands.append(f"V {u:g}")
@@ -73,4 +79,18 @@ def frozen_stream(seed: int = 3, u: float = 2.5, seconds: float = 4.0) -> Sample
     for k in range(int(seconds / 0.025)):
         plant.advance(0.025)
         rows.append((k, (k + 1) * 25_000, plant.count, round(u * 1000), 0, 0.0))
+    return SampleBatch.from_rows(rows)
+
+
+def step_stream(first_seq: int, first_us: int, seconds: float, seed: int = 5) -> SampleBatch:
+    """Task 10's 25 ms plan as the board sends it, from a standing wheel: the seeded plant
+    driven 0 -> 4.5 V every 1.5 s, ``seconds`` s of it, sequence numbers from ``first_seq``
+    and board times from ``first_us`` (us)."""
+    plant = Plant(PlantParams(), seed=seed)
+    rows = []
+    for k in range(int(round(seconds / 0.025))):
+        u = 4.5 if (k // 60) % 2 == 0 else 0.0
+        plant.set_command(u)
+        rows.append((first_seq + k, first_us + k * 25_000, plant.count, round(u * 1000), 0, 0.0))
+        plant.advance(0.025)
     return SampleBatch.from_rows(rows)

@@ -49,6 +49,10 @@ ROUNDS = 1000
 """Most rounds :func:`settle` waits for a condition: a guard against a hang (a condition
 that never holds), not a measure of time."""
 
+GUARD = 6000
+"""Most 10 ms pauses :func:`taken` waits for the stream worker: a guard against a hang (a
+minute), never a threshold a busy machine could cross."""
+
 
 async def settle(pilot: Pilot[None], until: Callable[[], bool] = lambda: True) -> None:
     """Let the app finish what it was asked, exactly: rounds of ``pilot.pause(0)`` (each
@@ -186,22 +190,33 @@ def standing(n: int, first_seq: int = 0, period_us: int = 25_000) -> SampleBatch
     )
 
 
-async def start_run_on(pilot: Pilot[None], device: QuietDevice, key: str = "f5") -> None:
+async def start_run_on(pilot: Pilot[None], device: QuietDevice, key: str = "f5") -> int:
     """Press ``key`` on Task 10 and let the double's wheel stand (samples fed to the app, as
     the board would send them) until the run is recorded and the board asked for its
     sequence: the app stops the motor, waits for the wheel to stand, records a few samples
-    of it, then sends STEP."""
-    app = pilot.app
+    of it, then sends STEP. The sequence number the board's next sample has."""
     await pilot.press(key)
     await settle(pilot)
     seq = 0
     for _ in range(ROUNDS):
         if device.commands and device.commands[-1].startswith("STEP"):
-            return
+            return seq
         device.feed(standing(4, seq))
         seq += 4
-        await settle(pilot, lambda s=seq: app.live.total >= s)
+        await taken(pilot, seq)
     raise AssertionError("the run never started")
+
+
+async def taken(pilot: Pilot[None], total: int) -> None:
+    """Wait until the app's stream worker has taken ``total`` samples from the device double
+    (it reads every 50 ms on its own thread) and the app has handled what they brought."""
+    app = pilot.app
+    for _ in range(GUARD):
+        if app.live.total >= total:
+            await settle(pilot)
+            return
+        await pilot.pause(0.01)
+    raise AssertionError(f"the stream worker took {app.live.total} of {total} samples")
 
 
 def record_step_run(session: Session, seed: int = 5) -> str:

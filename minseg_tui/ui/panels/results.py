@@ -58,7 +58,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
     def after_rows(self) -> Widget:
         """The numbers, shown under the group's entries: the entry to type a reading into
         sits right under the plot it is read from."""
-        return Vertical(self._lines, self._compare, classes="panel")
+        return Vertical(self._lines, self._compare, classes="details")
 
     def build(self, session: Session) -> ResultsView:
         return views.results(session, self.step.id)

@@ -57,6 +57,9 @@ _SHORT = {
     "Model check": "Check",
 }
 
+NOTES = ".notes"
+"""The key ending of a step's own notes field."""
+
 MARKS = {"done": "✓", "started": "…", "todo": " ", "info": " "}
 """The navigator's mark of a step's status (a character, not a colour)."""
 
@@ -89,6 +92,9 @@ class StepPane(VerticalScroll):
         self.panel = panel
         self._rows = rows
         self._focus = focus
+        # focusable where the step may land on its text (no entries, or a panel to read):
+        # the arrow keys then scroll it
+        self.can_focus = panel is not None or not step.fields
 
     def compose(self) -> ComposeResult:
         yield Prose(self.step.title, classes="title")
@@ -111,10 +117,23 @@ class StepPane(VerticalScroll):
             self.call_after_refresh(self.focus_on, self._focus)
 
     def landing_row(self) -> FieldRow | None:
-        """Where typing lands: the first entry of the step with nothing in it, else the
-        first entry (None on a step without entries)."""
-        rows = list(self.query(FieldRow))
+        """The entry the step lands in: the first one with nothing in it, else the first;
+        on a step with a panel, its notes field does not count (the step lands at the top,
+        on what the panel shows). None: no such entry."""
+        rows = [
+            r for r in self.query(FieldRow) if self.panel is None or not r.field.key.endswith(NOTES)
+        ]
         return next((r for r in rows if r.is_empty), rows[0] if rows else None)
+
+    def typing_row(self) -> FieldRow | None:
+        """Where keys typed outside an entry go: the landing entry, else the first empty
+        entry (a notes field too), else the first."""
+        rows = list(self.query(FieldRow))
+        return (
+            self.landing_row()
+            or next((r for r in rows if r.is_empty), None)
+            or (rows[0] if rows else None)
+        )
 
     def focus_on(self, what: str) -> None:
         """Focus the step's landing entry (``entry``: scrolled into view, its text selected
@@ -385,16 +404,18 @@ class LabScreen(StatusScreen):
         nav.display = not nav.display
 
     def on_key(self, event: events.Key) -> None:
-        """Typing on the list of steps goes into the step's first empty entry (replacing what
-        a filled one holds), not nowhere and never onto the end of a value."""
+        """Typing on the list of steps (or on a step's text) goes into the step's first
+        empty entry (replacing what a filled one holds), not nowhere and never onto the end
+        of a value."""
+        panes = self.query(StepPane)
         if (
-            self.focused is not self.query_one("#nav")
+            not panes
+            or self.focused not in (self.query_one("#nav"), panes.last())
             or not event.is_printable
             or not event.character
         ):
             return
-        panes = self.query(StepPane)
-        row = panes.last().landing_row() if panes else None
+        row = panes.last().typing_row()
         if row is not None and not row.field.options and not self.readonly:
             event.stop()
             event.prevent_default()

@@ -36,12 +36,19 @@ colours); the markers tell the traces apart without them."""
 
 @dataclass(frozen=True)
 class Trace:
-    """One line: x and y values, its legend label and its marker (braille, dot, +, -, |)."""
+    """One line: x and y values, its legend label and its marker (braille, dot, +, -, |);
+    ``colour``: an index into :data:`COLOURS` (None: the trace's own place in the plot), so
+    two lines of one thing (a band's edges) share a colour and one legend entry."""
 
     x: Values
     y: Values
     label: str = ""
     marker: str = "braille"
+    colour: int | None = None
+
+
+def _colour(k: int, tr: Trace) -> tuple[str, str]:
+    return COLOURS[(k if tr.colour is None else tr.colour) % len(COLOURS)]
 
 
 def legend(traces: Sequence[Trace]) -> Content:
@@ -52,7 +59,7 @@ def legend(traces: Sequence[Trace]) -> Content:
             continue
         if parts:
             parts.append("  ")
-        parts += [(GLYPHS.get(tr.marker, tr.marker * 2), COLOURS[k % len(COLOURS)][1]), " "]
+        parts += [(GLYPHS.get(tr.marker, tr.marker * 2), _colour(k, tr)[1]), " "]
         parts.append(tr.label)
     return Content.assemble(*parts)
 
@@ -85,8 +92,7 @@ class Canvas(PlotextPlot):
         plt.ylabel(self._ylabel)
         for k, tr in enumerate(self.traces):
             if len(tr.x):
-                colour = COLOURS[k % len(COLOURS)][0]
-                plt.plot(list(tr.x), list(tr.y), marker=tr.marker, color=colour)
+                plt.plot(list(tr.x), list(tr.y), marker=tr.marker, color=_colour(k, tr)[0])
         if self.xlim is not None:
             plt.xlim(*self.xlim)
         self.refresh()
