@@ -464,7 +464,7 @@ def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figu
     if model:
         cu_lines.append(Line("extended model", tt, ext, color="#2ca02c"))
     band = Band(
-        f"{'extended' if model else 'model'} ± noise floor {_num(cu.noise, 3)} rad/s",
+        f"{'extended' if model else 'model'} ± noise ({_num(cu.noise, 3)} rad/s)",
         tt,
         fit - cu.noise,
         fit + cu.noise,
@@ -483,7 +483,7 @@ def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figu
     res_cu = [Line("measured - first order", tt, w - base, color="#d62728", dots=True)]
     if model:
         res_cu.append(Line("measured - extended", tt, w - ext, color="#2ca02c", dots=True))
-    floor = Band(f"± noise floor {_num(cu.noise, 3)} rad/s", tt, -cu.noise, cu.noise)
+    floor = Band(f"± noise ({_num(cu.noise, 3)} rad/s)", tt, -cu.noise, cu.noise)
     on_angle = r.lead is not None and r.lead.figure.endswith("angle_rms")
     bottom_cu = plot(
         res_cu,

@@ -37,11 +37,16 @@ out the legend without measuring text)."""
 LEGEND_ROW = 15
 """Height of one row of the legend, px."""
 
+DOTS_MAX = 250
+"""A series with dots gets them up to this many samples (beyond, they would merge into a
+thick line; the line alone shows the samples then)."""
+
 
 @dataclass(frozen=True)
 class Line:
     """One series: its legend ``label``, x and y values, a colour (default: the next of
-    :data:`COLORS`), dashed, drawn as steps (a held value), or with a dot at every sample."""
+    :data:`COLORS`), dashed, drawn as steps (a held value), or with a dot at every sample
+    (up to :data:`DOTS_MAX` samples)."""
 
     label: str
     x: ArrayLike
@@ -291,7 +296,7 @@ def plot(
             f'<polyline fill="none" stroke="{color}" stroke-width="{1.0 if ln.dots else 1.4}"'
             f'{dash} points="{pts}"/>'
         )
-        if ln.dots:
+        if ln.dots and len(xy) <= DOTS_MAX:
             out.append(
                 f'<g fill="{color}">'
                 + "".join(f'<circle cx="{a:.1f}" cy="{b:.1f}" r="2"/>' for a, b in xy)

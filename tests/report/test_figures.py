@@ -226,7 +226,7 @@ def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     assert min(ys) == pytest.approx(-cu.noise, rel=0.02) and max(ys) == pytest.approx(
         cu.noise, rel=0.02
     )
-    assert any(k.startswith("± noise floor") for k in _legend_colors(residual))
+    assert any(k.startswith("± noise (") for k in _legend_colors(residual))
     # the lead figure of this log is the angle error: the close-up shows it too
     assert result.lead.figure.endswith("angle_rms")
     assert "angle error (rad)" == _texts(angle, "ylabel")[0].text
