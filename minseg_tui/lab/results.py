@@ -103,10 +103,17 @@ class ModelCheck:
 
 
 def compute(
-    R: float | None, complete_rows: Sequence[Reading], run: RunInfo | None, folder: Path
+    R: float | None,
+    complete_rows: Sequence[Reading],
+    run: RunInfo | None,
+    folder: Path,
+    u_ss_table: Sequence[tuple[float, float]] | None = None,
 ) -> Results:
     """Tasks 6-15 from R (ohm), the table's complete rows and the run Tasks 11-15 use (its
-    log read from ``folder``); every reason a result is missing becomes a problem line."""
+    log read from ``folder``); every reason a result is missing becomes a problem line.
+
+    ``u_ss_table``: the (u_req, u_ss) pairs (V) of every row with a u_ss, complete or not,
+    the mapping K divides by (default: the complete rows'), as the run's u column uses it."""
     problems: list[str] = []
     if R is None:
         problems.append("R is not entered yet (Task 2)")
@@ -128,7 +135,7 @@ def compute(
     if R is None or not readings:
         return Results(None, run.name if run and log else None, tuple(problems))
     try:
-        ident = identify(readings, R, log, source="table")
+        ident = identify(readings, R, log, source="table", u_ss_table=u_ss_table)
     except InputError as exc:
         if log is None:
             return Results(None, None, (*problems, str(exc)))
@@ -142,11 +149,15 @@ def compute(
 
 
 def check_run(folder: Path, run: RunInfo) -> ModelCheck:
-    """The model check (:func:`minseg_tui.model.check.check`) of ``run``, read from ``folder``;
-    a run that cannot be read or checked gives the reason in one line."""
+    """The model check (:func:`minseg_tui.model.check.check`) of ``run``, read from ``folder``,
+    told the log's ``# cpr:`` and ``# omega_over:`` when its header says (a recorded run's
+    does); a run that cannot be read or checked gives the reason in one line."""
     try:
         log = read_step_log(folder / run.file)
-        return ModelCheck(run.name, check(log.t, log.u, log.omega, ts=run.ts))
+        result = check(
+            log.t, log.u, log.omega, ts=run.ts, cpr=log.declared_cpr, omega_over=log.omega_over
+        )
+        return ModelCheck(run.name, result)
     except InputError as exc:
         return ModelCheck(run.name, None, str(exc))
     except ValueError as exc:

@@ -12,16 +12,16 @@ again) the samples become ``runs/<name>.csv``, a step log in the shared format
     u_req (V), omega_lab (rad/s, the manual's Euler derivative at the nominal period then the
     20-tap average), theta (rad), count, t_us (board micros), seq.
 
-``u`` is u_A mapped from u_req through the table's u_ss (:func:`applied_voltage`): the
-same mapping Task 11 divides by. Without u_ss in the table u = u_req. The log's metadata
-says which.
+``u`` is u_A mapped from u_req through the table's u_ss (:func:`applied_voltage`, by
+:func:`minseg_tui.model.identify.u_ss_at`): the same mapping Task 11 divides by. Without u_ss
+in the table u = u_req. The log's metadata says which, and its header says ``# cpr: 720``
+and ``# omega_over: interval`` so the model check need not detect them.
 """
 
 from __future__ import annotations
 
 import contextlib
 import json
-import math
 import os
 import time
 from array import array
@@ -36,7 +36,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, write_step_log
 from minseg_tui.lab.schema import PARTIAL_HEADER
 from minseg_tui.lab.store import RUNS_DIR, atomic_write_bytes, fsync_dir
-from minseg_tui.model.identify import Reading, Row, u_ss_at
+from minseg_tui.model.identify import u_ss_at
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
 from minseg_tui.units import COUNTS_PER_REV
@@ -45,6 +45,10 @@ FLUSH_INTERVAL: float = 0.5
 """Longest time (s) a received sample waits in memory before it is written and fsynced."""
 
 PARTIAL_SUFFIX = ".partial"
+
+OMEGA_OVER = "interval"
+"""How a recorded run's ``omega`` is computed, for its ``# omega_over:`` header: over each
+sample's real interval on the board's clock (:func:`minseg_tui.signals.timestamp_velocity`)."""
 _HEADER = "seq,t_us,count,u_mV"
 
 
@@ -101,16 +105,21 @@ class RunInfo:
 # -- the applied voltage -----------------------------------------------------------------------
 
 
+_HOW: dict[str, str] = {
+    "row": "the table's row",
+    "interpolated": "interpolated between rows",
+    "extrapolated": "extrapolated: no row at that level, the nearest row's drop",
+}
+
+
 def applied_voltage(
     u_req: np.ndarray, table: Sequence[tuple[float, float]]
 ) -> tuple[np.ndarray, str]:
-    """u_A (V) for each requested u_req (V), mapped through the table's (u_req, u_ss) pairs,
-    and a sentence for the log's metadata.
+    """u_A (V) for each requested u_req (V), mapped through the table's (u_req, u_ss) pairs
+    by :func:`minseg_tui.model.identify.u_ss_at` (the mapping Task 11 divides by), and a
+    sentence for the log's metadata saying what each level became and how.
 
-    Zero stays zero (driver off); otherwise u_ss is taken from the row with that u_req,
-    interpolated linearly between rows, or beyond the rows the nearest row's driver drop
-    (u_req - u_ss) is subtracted (as Task 11 does), never crossing zero. The sign follows
-    u_req. Without pairs u_A = u_req.
+    Zero stays zero (driver off); without pairs u_A = u_req.
     """
     u = np.asarray(u_req, dtype=float)
     if not table:
@@ -118,27 +127,18 @@ def applied_voltage(
             u.copy(),
             "u = u_req: the table has no u_ss yet, so the driver's voltage loss is not known",
         )
-    rows = [
-        Row(
-            reading=Reading(u_req=r, u_ss=s, omega_ss=math.nan, i_ss=math.nan),
-            k_v=math.nan,
-            f=math.nan,
-        )
-        for r, s in table
-    ]
     out = np.zeros_like(u)
-    for level in np.unique(np.abs(u)):
+    said = []
+    for level in np.unique(u):
         if level == 0:
             continue
-        v, _ = u_ss_at(rows, float(level))
-        sel = np.abs(u) == level
-        out[sel] = np.sign(u[sel]) * max(v, 0.0)
-    pairs = ", ".join(f"{r:g} V -> {s:g} V" for r, s in sorted(table))
-    how = (
-        f"u = u_A mapped from u_req through the table's u_ss ({pairs}): the row's value, linear "
-        "between rows, the nearest row's drop beyond them; 0 at u_req = 0"
+        v, how = u_ss_at(table, float(level))
+        out[u == level] = v
+        said.append(f"{level:g} V -> {v:.4g} V ({_HOW.get(how, how)})")
+    how = "u = u_A mapped from u_req through the table's u_ss" + (
+        ": " + "; ".join(said) if said else ""
     )
-    return out, how
+    return out, how + "; 0 V stays 0 V"
 
 
 # -- partial files -----------------------------------------------------------------------------
@@ -386,6 +386,7 @@ def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> t
         "cpr": str(COUNTS_PER_REV),
         "u": how,
         "omega": "mean speed over each sample interval, from the encoder count and the board's timestamps",
+        "omega_over": OMEGA_OVER,
         "omega_lab": f"the manual's estimate: Euler derivative at the nominal Ts = {ts:g} s, then the 20-tap average",
         "dropped": str(dropped),
     }
@@ -433,6 +434,8 @@ def remap_log(path: Path, table: Sequence[tuple[float, float]]) -> None:
     u, how = applied_voltage(np.asarray(log.extra["u_req"], dtype=float), table)
     meta = dict(log.metadata)
     meta["u"] = how
+    meta.setdefault("cpr", str(COUNTS_PER_REV))  # runs recorded before these were written
+    meta.setdefault("omega_over", OMEGA_OVER)
     meta.pop("format", None)
     write_log_atomic(path, StepLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta))
 

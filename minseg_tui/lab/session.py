@@ -580,6 +580,7 @@ class Session:
         key = (
             self.value("R"),
             tuple(self.readings()),
+            tuple(self.table_pairs()),
             run.name if run else None,
             self._run_version,
         )
@@ -590,7 +591,9 @@ class Session:
         return res
 
     def _compute(self) -> Results:
-        return compute(self.value("R"), self.readings(), self.step_run(), self.folder)
+        return compute(
+            self.value("R"), self.readings(), self.step_run(), self.folder, self.table_pairs()
+        )
 
     def model_check(self, name: str | None = None) -> ModelCheck:
         """The model check (:func:`minseg_tui.model.check.check`) of run ``name`` (default: the

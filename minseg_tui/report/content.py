@@ -17,8 +17,11 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab import steps as lab_steps
 from minseg_tui.lab.entry import format_quantity
 from minseg_tui.lab.session import Session
+from minseg_tui.model.check import CheckResult
+from minseg_tui.model.check.effects import UNITS
+from minseg_tui.model.identify import E63, RisingStep, StepResult
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.report.svg import Line, plot
+from minseg_tui.report.svg import Band, Line, Mark, plot, stack
 
 
 @dataclass(frozen=True)
@@ -31,16 +34,25 @@ class Table:
 
 @dataclass(frozen=True)
 class Figure:
-    """A figure: panels (SVG texts, stacked) and a caption."""
+    """A figure: one SVG text (its panels stacked, axis labels with units, the legend off
+    the data), its natural ``width`` in px, and a caption."""
 
-    panels: tuple[str, ...]
+    svg: str
+    width: int
     caption: str
+
+
+@dataclass(frozen=True)
+class Figures:
+    """Figures side by side where the page is wide enough (one below the other where not)."""
+
+    figures: tuple[Figure, ...]
 
 
 @dataclass
 class Section:
     """A titled part of the report; ``blocks`` in order: str (a paragraph), Table, Figure,
-    or a list of str (bullet points)."""
+    Figures, or a list of str (bullet points)."""
 
     title: str
     blocks: list[object] = field(default_factory=list)
@@ -153,6 +165,31 @@ def _table_section(session: Session) -> Section:
     return sec
 
 
+_U_SS_HOW: dict[str, str] = {
+    "row": "the table's row at {levels}",
+    "interpolated": "interpolated between the table's rows: no row at {levels}",
+    "extrapolated": "extrapolated: no table row at {levels}, the nearest row's driver drop",
+    "log": "the log's applied voltage: it has no u_req column",
+}
+"""How Task 11's u_ss was found (:func:`minseg_tui.model.identify.u_ss_at`), in words."""
+
+
+def _u_ss_how(s: StepResult) -> str:
+    levels = " and ".join(f"{v:g} V" for v in sorted({x.u_req for x in s.steps if x.u_req}))
+    return _U_SS_HOW.get(s.u_ss_how, s.u_ss_how).format(levels=levels or "that level")
+
+
+def _interval(lo: float, hi: float, unit: str) -> str:
+    """A 95 % interval; a side the log does not bound is said (the check gives +-inf)."""
+    if math.isfinite(lo) and math.isfinite(hi):
+        return f"{_num(lo)} – {_num(hi)} {unit}"
+    if math.isfinite(lo):
+        return f"{_num(lo)} {unit} or more: no upper bound from this log"
+    if math.isfinite(hi):
+        return f"up to {_num(hi)} {unit}: no lower bound from this log"
+    return "not bounded by this log"
+
+
 def _step_section(session: Session) -> Section:
     res = session.results()
     sec = Section("Step response and model (Tasks 10-15)")
@@ -163,26 +200,35 @@ def _step_section(session: Session) -> Section:
         )
     else:
         s = ident.step
-        t63 = "–" if s.T_63 is None else f"{s.T_63:.4g} s"
+        t63 = "–" if s.T_63 is None else f"{_num(s.T_63)} s"
         sec.blocks.append(f"From run {res.run}:")
         sec.blocks.append(
             Table(
                 ("quantity", "value"),
                 (
-                    ("omega_ss in the steps", f"{s.omega_ss:.4g} rad/s"),
-                    ("u_ss used for K", f"{s.u_ss:.4g} V ({s.u_ss_how})"),
-                    ("K (Task 11)", f"{s.K:.4g} rad/s/V"),
+                    ("omega_ss in the steps", f"{_num(s.omega_ss)} rad/s"),
+                    ("u_ss used for K", f"{_num(s.u_ss)} V ({_u_ss_how(s)})"),
+                    (
+                        "K (Task 11, 95 % interval)",
+                        f"{_num(s.K)} rad/s/V ({_interval(*s.K_ci, 'rad/s/V')})",
+                    ),
                     ("T, 63 % reading (Task 12)", t63),
                     (
                         "T, least squares (95 % interval)",
-                        f"{s.T:.4g} s ({s.T_ci[0]:.4g} – {s.T_ci[1]:.4g} s)",
+                        f"{_num(s.T)} s ({_interval(*s.T_ci, 's')})",
                     ),
-                    ("J (Task 13)", f"{s.J:.4g} kg m^2"),
-                    ("model (Task 14)", f"{s.T:.4g} omega' = -omega + {s.K:.4g} u_A"),
-                    ("omega at u_A = 5 V (Task 15)", f"{ident.omega_at_5V:.4g} rad/s"),
+                    ("J (Task 13)", f"{_num(s.J)} kg m^2"),
+                    ("model (Task 14)", f"{_num(s.T)} omega' = -omega + {_num(s.K)} u_A"),
+                    ("omega at u_A = 5 V (Task 15)", f"{_num(ident.omega_at_5V)} rad/s"),
                 ),
             )
         )
+        if s.T_63_note:
+            sec.blocks.append(s.T_63_note)
+        sec.blocks.append(f"How T was fitted: {s.fit.why}.")
+        zoom = _zoom_figure(session, res.run, s)
+        if zoom is not None:
+            sec.blocks.append(zoom)
     comps = session.comparisons()
     if any(c.own is not None for c in comps):
         rows = []
@@ -200,6 +246,81 @@ def _step_section(session: Session) -> Section:
         sec.blocks.append("The group's own readings beside the computed values:")
         sec.blocks.append(Table(("reading", "yours", "computed", "difference"), tuple(rows)))
     return sec
+
+
+ZOOM_BEFORE_T: float = 1.0
+"""The zoom to one rise starts this many time constants before the edge..."""
+
+ZOOM_AFTER_T: float = 5.0
+"""...and ends this many after it (99 % of the change), within the step."""
+
+ZOOM_MIN_SAMPLES: int = 3
+"""At least this many samples before the edge (and four times as many after), whatever T."""
+
+
+def _read_step(steps: tuple[RisingStep, ...], T_63: float | None) -> RisingStep:
+    """The step whose 63 % reading is nearest the median reading (the first without one)."""
+    read = [x for x in steps if x.T_63 is not None]
+    if not read or T_63 is None:
+        return steps[0]
+    return min(read, key=lambda x: abs((x.T_63 or 0.0) - T_63))
+
+
+def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | None:
+    """Tasks 11-12 on one rise: the samples from a little before the edge to several T
+    after it, the speed before and the settled speed, the 63 % level and the time the
+    samples (joined by straight lines, as the manual reads them) cross it."""
+    if run is None or not s.steps:
+        return None
+    try:
+        log = session.load_run(run)
+    except (InputError, KeyError):
+        return None
+    st = _read_step(s.steps, s.T_63)
+    t = np.asarray(log.t, dtype=float)
+    w = np.asarray(log.omega, dtype=float)
+    ts = log.ts
+    z0 = st.t - max(ZOOM_BEFORE_T * s.T, ZOOM_MIN_SAMPLES * ts)
+    z1 = min(st.t + max(ZOOM_AFTER_T * s.T, 4 * ZOOM_MIN_SAMPLES * ts), st.t + st.duration)
+    sel = (t >= z0 - 1e-9) & (t <= z1 + 1e-9)
+    level = st.omega0 + E63 * (st.omega_ss - st.omega0)
+    marks = [
+        Mark(f"the step, t = {_num(st.t)} s", x=st.t, color="#555555", dash=False),
+        Mark(f"omega before = {_num(st.omega0)} rad/s", y=st.omega0, color="#999999"),
+        Mark(f"omega_ss = {_num(st.omega_ss)} rad/s", y=st.omega_ss, color="#999999"),
+        Mark(f"63 % level = {_num(level)} rad/s", y=level, color="#ff7f0e"),
+    ]
+    if st.T_63 is not None:
+        marks.append(
+            Mark(
+                f"crossing at t = {_num(st.t + st.T_63)} s: T_63 = {_num(st.T_63 * 1e3)} ms",
+                x=st.t + st.T_63,
+                color="#d62728",
+                dot=level,
+            )
+        )
+    svg = plot(
+        [Line("omega, measured samples", t[sel], w[sel], dots=True)],
+        marks=marks,
+        title=f"run {run}: the rise at t = {_num(st.t)} s, read as in Tasks 11-12",
+        xlabel="t (s)",
+        ylabel="omega (rad/s)",
+        width=640,
+        height=300,
+    )
+    crossed = (
+        f"it crosses the 63 % level {_num(st.T_63 * 1e3)} ms after the step (T_63 of this "
+        f"step; the median over {len(s.steps)} steps is {_num((s.T_63 or 0.0) * 1e3)} ms)"
+        if st.T_63 is not None
+        else "it does not reach the 63 % level within the step"
+    )
+    return Figure(
+        svg,
+        640,
+        f"One rising step of run {run} close up (Tasks 11-12): the measured speed goes from "
+        f"{_num(st.omega0)} to {_num(st.omega_ss)} rad/s; {crossed}. The least-squares T is "
+        f"{_num(s.T * 1e3)} ms.",
+    )
 
 
 def _warnings_section(session: Session) -> Section:
@@ -221,28 +342,202 @@ def _warnings_section(session: Session) -> Section:
 
 def _run_figure(log: StepLog, name: str) -> Figure:
     t = np.asarray(log.t, float)
-    lines = [Line("omega (timestamps)", t, log.omega)]
+    lines = [Line("omega, mean over each sample interval", t, log.omega)]
     if "omega_lab" in log.extra:
-        lines.append(Line("omega (manual's 20-tap)", t, log.extra["omega_lab"], dash=True))
+        lines.append(
+            Line("omega, the manual's Euler + 20-tap average", t, log.extra["omega_lab"], dash=True)
+        )
     top = plot(lines, ylabel="omega (rad/s)", title=f"run {name}", show_xlabel=False, height=220)
-    ul = [Line("u applied (u_A)", t, log.u, steps=True)]
+    ul = [Line("u_A, applied", t, log.u, steps=True)]
     if "u_req" in log.extra:
-        ul.append(Line("u requested", t, log.extra["u_req"], dash=True, steps=True))
+        ul.append(Line("u_req, requested", t, log.extra["u_req"], dash=True, steps=True))
     bottom = plot(ul, xlabel="t (s)", ylabel="u (V)", height=160)
-    return Figure((top, bottom), f"Run {name}: speed and voltage against time.")
+    return Figure(stack((top, bottom)), 720, f"Run {name}: speed and voltage against time.")
 
 
-def _params(p: dict[str, float]) -> str:
-    units = {
-        "T": "s",
-        "K": "rad/s/V",
-        "u_c": "V",
-        "delay": "s",
-        "taps": "samples",
-        "T_coast": "s",
-        "T2": "s",
-    }
-    return ", ".join(f"{k} = {v:.4g} {units.get(k, '')}".rstrip() for k, v in p.items())
+def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | None = None) -> str:
+    """Parameters with their units (:data:`minseg_tui.model.check.effects.UNITS`) and, when
+    given, their 95 % intervals."""
+    out = []
+    for k, v in p.items():
+        unit = UNITS.get(k, "")
+        text = f"{k} = {_num(v)} {unit}".rstrip()
+        if intervals and k in intervals:
+            text += f" (95 %: {_interval(*intervals[k], unit)})"
+        out.append(text)
+    return ", ".join(out)
+
+
+_GAIN_FIGURES: tuple[tuple[str, str, str], ...] = (
+    ("rmse", "rms error of the speed", "rad/s"),
+    ("above_floor", "speed error above the encoder's noise floor", "rad/s"),
+    ("above_noise", "speed error above the measured noise", "rad/s"),
+    ("angle_rms", "rms error of the angle", "rad"),
+    ("heldout_rmse", "speed error on held-out steps", "rad/s"),
+)
+"""The gain figures of the model check (keys ``baseline_<k>`` / ``extended_<k>``): words, unit."""
+
+
+def _gain_name(key: str) -> tuple[str, str]:
+    bare = key.removeprefix("baseline_").removeprefix("extended_")
+    return next(((n, u) for k, n, u in _GAIN_FIGURES if k == bare), (bare, ""))
+
+
+def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
+    g = r.gain
+    named = r.finding.cause != "none"
+    lead = r.lead.figure.removeprefix("baseline_").removeprefix("extended_") if r.lead else ""
+    rows = []
+    for key, name, unit in sorted(_GAIN_FIGURES, key=lambda f: f[0] != lead):
+        b, e = g.get(f"baseline_{key}"), g.get(f"extended_{key}")
+        if b is None:
+            continue
+        rows.append(
+            (
+                name + (" (leads)" if key == lead else ""),
+                f"{_num(b, 3)} {unit}",
+                f"{_num(e, 3)} {unit}" if named and e is not None else "–",
+            )
+        )
+    return tuple(rows)
+
+
+def _lead(r: CheckResult) -> str | None:
+    if r.lead is None:
+        return None
+    name, unit = _gain_name(r.lead.figure)
+    key = r.lead.figure.removeprefix("baseline_").removeprefix("extended_")
+    b, e = r.gain.get(f"baseline_{key}"), r.gain.get(f"extended_{key}")
+    if b is None:
+        return None
+    if r.finding.cause == "none" or e is None:
+        value = f"{_num(b, 3)} {unit} for the first-order model"
+    else:
+        value = f"{_num(b, 3)} {unit} for the first-order model, {_num(e, 3)} {unit} extended"
+    return f"The figure that means most for this log: the {name}, {value}. It leads because {r.lead.why}."
+
+
+def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figures:
+    """The whole run against both models with the residuals, and beside it the close-up
+    where the cause acts with the noise floor marked."""
+    t = np.asarray(r.t, float)
+    model = f"extended ({r.extended.model})" if r.finding.cause != "none" else ""
+    lines = [
+        Line("measured", t, r.omega),
+        Line("first-order model", t, r.baseline_pred, color="#d62728", dash=True),
+    ]
+    if model:
+        lines.append(Line(model, t, r.extended_pred, color="#2ca02c", dash=True))
+    top = plot(
+        lines,
+        title=f"run {name}: measured against the models",
+        ylabel="omega (rad/s)",
+        show_xlabel=False,
+        width=640,
+    )
+    res = [Line("measured - first order", t, r.omega - r.baseline_pred, color="#d62728")]
+    if model:
+        res.append(Line("measured - extended", t, r.omega - r.extended_pred, color="#2ca02c"))
+    bottom = plot(res, xlabel="t (s)", ylabel="residual (rad/s)", height=170, width=640)
+    whole = Figure(
+        stack((top, bottom)),
+        640,
+        f"Run {name}: the measured speed, the first-order model"
+        + (f" and the {model} model" if model else "")
+        + " simulated on the recorded voltage, and what each leaves (measured - model).",
+    )
+    cu = r.close_up
+    if cu is None:
+        return Figures((whole,))
+    a, b = cu.start, cu.end  # row0, row1 of the JSON
+    tt, w = t[a:b], np.asarray(r.omega, float)[a:b]
+    base, ext = np.asarray(r.baseline_pred, float)[a:b], np.asarray(r.extended_pred, float)[a:b]
+    edge = None
+    if log is not None and len(log) == t.size:
+        u = np.asarray(log.u, float)
+        edge = next((float(t[k]) for k in range(max(a, 1), b) if u[k] != u[k - 1]), None)
+    fit = ext if model else base
+    cu_lines = [
+        Line("measured", tt, w, dots=True),
+        Line("first-order model", tt, base, color="#d62728", dash=True),
+    ]
+    if model:
+        cu_lines.append(Line("extended model", tt, ext, color="#2ca02c"))
+    band = Band(
+        f"{'extended' if model else 'model'} ± noise ({_num(cu.noise, 3)} rad/s)",
+        tt,
+        fit - cu.noise,
+        fit + cu.noise,
+        color="#2ca02c" if model else "#d62728",
+    )
+    top_cu = plot(
+        cu_lines,
+        bands=(band,),
+        marks=() if edge is None else (Mark(f"the input changes, t = {_num(edge)} s", x=edge),),
+        title=f"close-up: {cu.what}",
+        ylabel="omega (rad/s)",
+        show_xlabel=False,
+        width=440,
+        height=260,
+    )
+    res_cu = [Line("measured - first order", tt, w - base, color="#d62728", dots=True)]
+    if model:
+        res_cu.append(Line("measured - extended", tt, w - ext, color="#2ca02c", dots=True))
+    floor = Band(f"± noise ({_num(cu.noise, 3)} rad/s)", tt, -cu.noise, cu.noise)
+    on_angle = r.lead is not None and r.lead.figure.endswith("angle_rms")
+    bottom_cu = plot(
+        res_cu,
+        bands=(floor,),
+        marks=() if edge is None else (Mark("", x=edge),),
+        xlabel="t (s)",
+        ylabel="residual (rad/s)",
+        width=440,
+        height=190,
+        show_xlabel=not on_angle,
+    )
+    panels = [top_cu, bottom_cu]
+    angle_floor = r.gain.get("angle_floor")
+    if on_angle:  # the figure that leads: the angle shows what the speed's noise hides
+        dt = np.diff(t, prepend=t[0] - (t[1] - t[0] if t.size > 1 else 0.0))[a:b]
+        ang = [Line("first order", tt, np.cumsum((w - base) * dt), color="#d62728", dots=True)]
+        if model:
+            ang.append(Line("extended", tt, np.cumsum((w - ext) * dt), color="#2ca02c", dots=True))
+        panels.append(
+            plot(
+                ang,
+                bands=()
+                if angle_floor is None
+                else (
+                    Band(
+                        f"± the angle's floor {_num(angle_floor, 3)} rad",
+                        tt,
+                        -angle_floor,
+                        angle_floor,
+                    ),
+                ),
+                marks=() if edge is None else (Mark("", x=edge),),
+                title="angle error: the residual summed over the window",
+                xlabel="t (s)",
+                ylabel="angle error (rad)",
+                width=440,
+                height=190,
+            )
+        )
+    close = Figure(
+        stack(panels),
+        440,
+        f"Close-up of run {name}, {_num(cu.t0)}-{_num(cu.t1)} s: {cu.what}"
+        + (f" ({cu.cause})" if cu.cause != "none" else "")
+        + f". The shaded band is ± the noise there ({_num(cu.noise, 3)} rad/s): a model whose "
+        "residual stays inside it explains the log down to its noise."
+        + (
+            " Below, the residual summed over the window: the angle error, which the speed's "
+            "noise does not hide."
+            if on_angle
+            else ""
+        ),
+    )
+    return Figures((whole, close))
 
 
 def _model_check_section(session: Session) -> Section | None:
@@ -254,47 +549,61 @@ def _model_check_section(session: Session) -> Section | None:
     if r is None:
         sec.blocks.append(f"The model check could not run on {mc.run}: {mc.problem}")
         return sec
-    t = np.asarray(r.t, float)
-    top = plot(
-        [
-            Line("measured", t, r.omega),
-            Line("first-order model", t, r.baseline_pred, dash=True),
-            Line(f"extended ({r.extended.model})", t, r.extended_pred, dash=True),
-        ],
-        title=f"run {mc.run}: measured against the models",
-        ylabel="omega (rad/s)",
-        show_xlabel=False,
-    )
-    bottom = plot(
-        [
-            Line("measured - first order", t, r.omega - r.baseline_pred, color="#d62728"),
-            Line("measured - extended", t, r.omega - r.extended_pred, color="#2ca02c"),
-        ],
-        xlabel="t (s)",
-        ylabel="residual (rad/s)",
-        height=170,
-    )
+    lead = _lead(r)
+    if lead:
+        sec.blocks.append(lead)
     b, e, f = r.baseline, r.extended, r.finding
-    items = [
-        f"First-order model fitted to {mc.run}: {_params(b.params)}; simulated on the recorded voltage "
-        f"it misses by {b.rmse:.3g} rad/s rms (fit {b.fit_percent:.1f} %).",
+    named = f.cause != "none"
+    items = []
+    if r.sampling is not None:
+        items.append(f"The log: {r.sampling.text()}")
+    items += [
+        f"First-order model fitted to {mc.run}: {_params(b.params, b.intervals)}; simulated on "
+        f"the recorded voltage it misses by {_num(b.rmse, 3)} rad/s rms (fit "
+        f"{_num(b.fit_percent, 3)} %).",
         f"Where it deviates: {r.where}.",
         f"Most likely cause: {f.cause}. {f.evidence[:1].upper() + f.evidence[1:]}",
     ]
     items += [f"Also: {o.cause} ({_params(o.params)}): {o.evidence}" for o in f.others]
-    if f.cause != "none":
+    if named:
         items.append(
-            f"Extended model ({e.model}): {_params(e.params)}; {e.rmse:.3g} rad/s rms (fit "
-            f"{e.fit_percent:.1f} %), {r.gain.get('rmse_reduction_percent', float('nan')):.1f} % lower rms."
+            f"Extended model ({e.model}): {_params(e.params, e.intervals)}; "
+            f"{_num(e.rmse, 3)} rad/s rms (fit {_num(e.fit_percent, 3)} %), "
+            f"{_num(r.gain.get('rmse_reduction_percent'), 3)} % lower rms."
         )
-    items += [f"Anomaly: {a.text}" for a in r.anomalies]
     sec.blocks.append(items)
-    sec.blocks.append(
-        Figure(
-            (top, bottom),
-            "Measured speed, the first-order and the extended model, and their residuals.",
+    head = ("figure", "first-order model", f"extended model ({e.model})" if named else "extended")
+    sec.blocks.append(Table(head, _gain_rows(r)))
+    floor, noise, angle = (r.gain.get(k) for k in ("noise_floor", "noise", "angle_floor"))
+    if floor is not None or noise is not None:
+        sec.blocks.append(
+            "The speed's noise: "
+            + "; ".join(
+                x
+                for x in (
+                    f"the encoder's floor {_num(floor, 3)} rad/s" if floor is not None else "",
+                    f"the scatter measured in the log {_num(noise, 3)} rad/s"
+                    if noise is not None
+                    else "",
+                    f"the angle itself is known to {_num(angle, 3)} rad"
+                    if angle is not None
+                    else "",
+                )
+                if x
+            )
+            + ". An error near it says nothing about a model; the part above it does."
         )
-    )
+    if f.caveats:
+        sec.blocks.append("What the check cannot say here:")
+        sec.blocks.append([c.text for c in f.caveats])
+    if r.anomalies:
+        sec.blocks.append("Anomalies (reported, not counted as causes):")
+        sec.blocks.append([a.text for a in r.anomalies])
+    try:
+        log: StepLog | None = session.load_run(mc.run)
+    except (InputError, KeyError):
+        log = None
+    sec.blocks.append(_model_check_figures(mc.run, r, log))
     return sec
 
 

@@ -8,15 +8,18 @@ from __future__ import annotations
 
 from html import escape
 
-from minseg_tui.report.content import Figure, Report, Table
+from minseg_tui.report.content import Figure, Figures, Report, Table
 
 _CSS = """
-body { font-family: sans-serif; max-width: 60em; margin: 2em auto; padding: 0 1em; color: #222; }
+body { font-family: sans-serif; max-width: 72em; margin: 2em auto; padding: 0 1em; color: #222; }
 h1 { font-size: 1.5em; } h2 { font-size: 1.2em; border-bottom: 1px solid #ccc; margin-top: 2em; }
+.table { overflow-x: auto; }
 table { border-collapse: collapse; margin: 0.8em 0; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }
 th { background: #f2f2f2; }
+.figures { display: flex; flex-wrap: wrap; gap: 1em 1.5em; align-items: flex-start; }
 figure { margin: 1em 0; } figcaption { font-style: italic; color: #555; }
+figure svg { display: block; width: 100%; height: auto; }
 .byline { color: #555; }
 """
 
@@ -26,12 +29,19 @@ def _table(t: Table) -> str:
     rows = "".join(
         "<tr>" + "".join(f"<td>{escape(c)}</td>" for c in row) + "</tr>" for row in t.rows
     )
-    return f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"
+    return (
+        f'<div class="table"><table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody>'
+        "</table></div>"
+    )
 
 
 def _figure(f: Figure) -> str:
-    panels = "<br/>".join(p.replace(' xmlns="http://www.w3.org/2000/svg"', "") for p in f.panels)
-    return f"<figure>{panels}<figcaption>{escape(f.caption)}</figcaption></figure>"
+    """A figure at most as wide as drawn, narrower (scaled) on a narrow page."""
+    svg = f.svg.replace(' xmlns="http://www.w3.org/2000/svg"', "")
+    return (
+        f'<figure style="flex: 1 1 {f.width}px; max-width: {f.width}px">{svg}'
+        f"<figcaption>{escape(f.caption)}</figcaption></figure>"
+    )
 
 
 def render(report: Report) -> str:
@@ -50,6 +60,10 @@ def render(report: Report) -> str:
                 out.append(_table(b))
             elif isinstance(b, Figure):
                 out.append(_figure(b))
+            elif isinstance(b, Figures):
+                out.append(
+                    '<div class="figures">' + "".join(_figure(f) for f in b.figures) + "</div>"
+                )
             elif isinstance(b, list):
                 out.append("<ul>" + "".join(f"<li>{escape(str(i))}</li>" for i in b) + "</ul>")
             else:

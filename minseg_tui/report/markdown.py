@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import base64
 
-from minseg_tui.report.content import Figure, Report, Table
+from minseg_tui.report.content import Figure, Figures, Report, Table
 
 
 def _cell(text: str) -> str:
@@ -18,11 +18,12 @@ def _table(t: Table) -> str:
 
 
 def _figure(f: Figure) -> str:
-    imgs = []
-    for k, svg in enumerate(f.panels):
-        data = base64.b64encode(svg.encode("utf-8")).decode("ascii")
-        imgs.append(f"![{f.caption} ({k + 1})](data:image/svg+xml;base64,{data})")
-    return "\n\n".join(imgs) + f"\n\n*{f.caption}*"
+    data = base64.b64encode(f.svg.encode("utf-8")).decode("ascii")
+    return f"![{_alt(f.caption)}](data:image/svg+xml;base64,{data})\n\n*{f.caption}*"
+
+
+def _alt(text: str) -> str:
+    return text.replace("[", "(").replace("]", ")")
 
 
 def render(report: Report) -> str:
@@ -35,6 +36,8 @@ def render(report: Report) -> str:
                 out.append(_table(b))
             elif isinstance(b, Figure):
                 out.append(_figure(b))
+            elif isinstance(b, Figures):
+                out.append("\n\n".join(_figure(f) for f in b.figures))
             elif isinstance(b, list):
                 out.append("\n".join(f"- {_cell(str(i))}" for i in b))
             else:

@@ -7,6 +7,7 @@ import pytest
 
 from minseg_tui.errors import InputError
 from minseg_tui.model.identify import Reading, identify, steady_state, u_ss_at
+from minseg_tui.model.identify.steady import table_of
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
 from minseg_tui.model.steplog import StepLog
@@ -83,11 +84,26 @@ def test_zero_speed_row_is_refused_with_its_line():
 
 def test_u_ss_lookup_by_hand():
     rows, *_ = steady_state(TABLE, R)
-    assert u_ss_at(rows, 3.5) == (3.05, "row")
-    u, how = u_ss_at(rows, 4.0)
+    table = table_of(rows)
+    assert table == [(2.5, 2.1), (3.5, 3.05), (4.5, 4.0)]
+    assert u_ss_at(table, 3.5) == (3.05, "row")
+    u, how = u_ss_at(table, 4.0)
     assert how == "interpolated" and u == pytest.approx(3.05 + (4.0 - 3.05) * 0.5)
-    u, how = u_ss_at(rows, 5.0)  # beyond the table: the 4.5 V row's drop of 0.5 V
+    u, how = u_ss_at(table, 5.0)  # beyond the table: the 4.5 V row's drop of 0.5 V
     assert how == "extrapolated" and u == pytest.approx(4.5)
+
+
+def test_u_ss_mapping_edges():
+    table = [(4.5, 3.8), (2.5, 2.1)]  # order does not matter; a row needs only its u_ss
+    assert u_ss_at(table, 4.5) == (3.8, "row")
+    assert u_ss_at(table, -4.5) == (-3.8, "row")  # the sign follows u_req
+    assert u_ss_at(table, 0.0) == (0.0, "off")
+    assert u_ss_at([], 4.5) == (4.5, "requested")  # no u_ss yet: the drop is not known
+    u, how = u_ss_at(table, 1.0)  # below the rows: the 2.5 V row's drop of 0.4 V
+    assert how == "extrapolated" and u == pytest.approx(0.6)
+    assert u_ss_at(table, 0.3) == (0.0, "extrapolated")  # never past 0 V
+    u, how = u_ss_at([(4.5, 3.8), (4.5, 3.9)], 4.5)  # the same level twice: their mean
+    assert how == "row" and u == pytest.approx(3.85)
 
 
 # -- step logs from the plant ---------------------------------------------------------------
@@ -196,6 +212,24 @@ def test_log_without_u_req_uses_the_applied_voltage():
     r = identify(linear_table(MOTOR), MOTOR.R, log)
     assert "u_ss_from_log" in codes(r)
     assert r.step.u_ss == pytest.approx(4.5 - V_DROP)
+
+
+def test_k_divides_by_a_row_that_has_only_its_u_ss():
+    """identify's u_ss_table holds rows the table of Tasks 6-9 leaves out: K follows it."""
+    params = PlantParams(motor=MOTOR, tau_c=0.0, v_drop=V_DROP)
+    log = plant_log(params)
+    table = linear_table(MOTOR)
+    u_45 = 4.5 - V_DROP  # the 4.5 V row's u_ss, its omega_ss and i_ss not measured yet
+    partial = identify(table[:2], MOTOR.R, log, u_ss_table=[(2.5, 2.1), (3.5, 3.1), (4.5, u_45)])
+    assert partial.step.u_ss_how == "row" and partial.step.u_ss == pytest.approx(u_45)
+    assert partial.step.K == pytest.approx(partial.step.omega_ss / u_45)
+    assert partial.step.K == pytest.approx(K_TRUE, rel=0.01)
+    assert not any(o.code.startswith("u_ss_") for o in partial.observations)
+    without = identify(table[:2], MOTOR.R, log)  # the 4.5 V row not given: extrapolated, said
+    assert without.step.u_ss_how == "extrapolated"
+    assert without.step.u_ss == pytest.approx(4.5 - V_DROP)  # the 3.5 V row's drop
+    (said,) = [o for o in without.observations if o.code == "u_ss_extrapolated"]
+    assert "No table row has u_req = 4.5 V" in said.message and "extrapolated" in said.message
 
 
 def test_log_with_only_a_falling_step_is_refused():

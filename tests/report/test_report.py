@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import base64
+import math
 import re
 from datetime import UTC, datetime, timedelta
 from html import unescape
@@ -15,7 +16,7 @@ from minseg_tui.cli import main
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step
 from minseg_tui.model.plant import PlantParams, record
-from minseg_tui.report import svg
+from minseg_tui.report import content, svg
 from minseg_tui.report.write import write_report
 
 
@@ -143,10 +144,13 @@ def test_html_is_self_contained(tmp_path):
         assert needle not in low, needle
     p = _Refs()
     p.feed(html)
-    assert (
-        p.tags.count("svg") == 4
-    )  # the run (speed, voltage) and the model check (speed, residual)
-    assert p.tags.count("polyline") == 2 + 2 + 3 + 2  # omega x2, u x2, models x3, residuals x2
+    # the zoomed step; the model check's whole run and its close-up; the recorded run
+    assert p.tags.count("figure") == 4
+    # panels: 1 + (2 + 1) + (3 + 1) + (2 + 1): each figure is one <svg> holding its panels
+    assert p.tags.count("svg") == 11
+    # omega samples; measured and 2 models, 2 residuals; the same in the close-up and 2 angle
+    # errors; omega x2 and u x2 of the run
+    assert p.tags.count("polyline") == 1 + 5 + 7 + 4
     assert "style" in p.tags and "table" in p.tags
 
 
@@ -155,7 +159,7 @@ def test_markdown_figures_are_inline_svg(tmp_path):
     md = write_report(s).markdown.read_text(encoding="utf-8")
     s.close()
     targets = re.findall(r"!\[[^\]]*\]\(([^)]*)\)", md)
-    assert len(targets) == 4
+    assert len(targets) == 4  # one image per figure, its panels inside
     for target in targets:
         assert target.startswith("data:image/svg+xml;base64,")
         doc = base64.b64decode(target.split(",", 1)[1]).decode("utf-8")
@@ -208,3 +212,10 @@ def test_svg_ticks_and_thinning():
     y[5000] = 50.0
     tx, ty = svg.thin(x, y, 600)
     assert tx.size <= 600 and 50.0 in ty and tx[0] == 0 and tx[-1] == 9999
+
+
+def test_intervals_say_which_side_the_log_does_not_bound():
+    assert content._interval(0.04, 0.05, "s") == "0.04 – 0.05 s"
+    assert content._interval(0.11, math.inf, "V") == "0.11 V or more: no upper bound from this log"
+    assert content._interval(-math.inf, 3.0, "s") == "up to 3 s: no lower bound from this log"
+    assert content._interval(-math.inf, math.inf, "s") == "not bounded by this log"

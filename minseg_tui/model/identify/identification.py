@@ -23,7 +23,7 @@ from minseg_tui.model.identify.observations import (
     step_observations,
     table_observations,
 )
-from minseg_tui.model.identify.steady import Reading, Row, steady_state, u_ss_at
+from minseg_tui.model.identify.steady import Reading, Row, steady_state, table_of, u_ss_at
 from minseg_tui.model.identify.stepfit import (
     RisingStep,
     TimeConstantFit,
@@ -47,7 +47,8 @@ class StepResult:
     T: the least-squares time constant (s), the one the model uses; T_63: the median 63 %
     reading (s, None if no step crossed); T_ci: 95 % interval of T (s); J: inertia (kg m^2);
     omega_ss: median fitted steady speed of the steps (rad/s); u_ss: the applied voltage K
-    divides by (V); u_ss_how: 'row', 'interpolated', 'extrapolated' or 'log'; steps: each
+    divides by (V); u_ss_how: how the table gave it (:func:`~.steady.u_ss_at`: 'row',
+    'interpolated', 'extrapolated') or 'log' (no u_req column: the log's own u); steps: each
     rising step; fit: details of the least-squares fit; K_ci: 95 % interval of K (rad/s per
     V); T_63_model: the 63 % reading taken on the fitted model sampled like the log (s);
     T_63_note: a sentence saying how far the 63 % reading is from T and why (None without a
@@ -133,7 +134,13 @@ class Identification:
 
 
 def _step_result(
-    log: StepLog, rows: tuple[Row, ...], R: float, k_v: float, k_a: float, f: float
+    log: StepLog,
+    rows: tuple[Row, ...],
+    u_ss_table: Sequence[tuple[float, float]],
+    R: float,
+    k_v: float,
+    k_a: float,
+    f: float,
 ) -> tuple[StepResult, list[Observation]]:
     windows, skipped = step_windows(log)
     if not windows:
@@ -159,7 +166,7 @@ def _step_result(
             u_used.append(s.u_high)
             hows.append("log")
         else:
-            u, how = u_ss_at(rows, s.u_req)
+            u, how = u_ss_at(u_ss_table, s.u_req)
             u_used.append(u)
             hows.append(how)
     K_each = [s.omega_ss / u for s, u in zip(steps, u_used, strict=True)]
@@ -235,17 +242,24 @@ def _T_63_note(T: float, T_63: float | None, T_63_model: float | None, ts: float
 
 
 def identify(
-    readings: Sequence[Reading], R: float, log: StepLog | None = None, source: str = "table"
+    readings: Sequence[Reading],
+    R: float,
+    log: StepLog | None = None,
+    source: str = "table",
+    u_ss_table: Sequence[tuple[float, float]] | None = None,
 ) -> Identification:
     """Tasks 6-15 from the table's readings, the resistance R (ohm) and optionally a step log.
 
+    ``u_ss_table``: the ``(u_req, u_ss)`` pairs (V) of every table row that has a u_ss,
+    complete or not, which K divides by (:func:`~.steady.u_ss_at`); default: the readings'.
     Raises InputError for a bad R, a bad row, or a log without a usable rising step.
     """
     rows, k_v, k_a, f = steady_state(readings, R, source)
     observations = table_observations(rows, R, k_v, k_a)
     step = None
     if log is not None:
-        step, more = _step_result(log, rows, R, k_v, k_a, f)
+        table = table_of(rows) if u_ss_table is None else list(u_ss_table)
+        step, more = _step_result(log, rows, table, R, k_v, k_a, f)
         observations += more
     return Identification(
         R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, observations=tuple(observations)

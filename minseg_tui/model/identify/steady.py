@@ -107,21 +107,43 @@ def steady_state(
     return rows, k_v, k_a, f
 
 
-def u_ss_at(rows: Sequence[Row], u_req: float) -> tuple[float, str]:
-    """u_ss (V) the table gives for a requested u_req (V), and how ('row', 'interpolated',
-    'extrapolated'): a row with that u_req (their mean if several), else a straight line
-    between the nearest rows on either side, else the nearest row's driver drop."""
-    pts = sorted((row.reading.u_req, row.reading.u_ss) for row in rows)
-    same = [us for ur, us in pts if abs(ur - u_req) <= 1e-6 * max(1.0, abs(u_req))]
+def u_ss_at(table: Sequence[tuple[float, float]], u_req: float) -> tuple[float, str]:
+    """The motor driver's mapping from a requested voltage to the one on the motor: u_ss (V)
+    for ``u_req`` (V) from the table's ``(u_req, u_ss)`` pairs (V), and how it was found.
+
+    This is the one mapping: the ``u`` column of a recorded run, K of Task 11 and the report
+    all use it. Every row with a u_ss counts, whatever else it lacks (omega_ss, i_ss).
+
+    - 'row': a row with that u_req (their mean if several);
+    - 'interpolated': a straight line between the nearest rows on either side;
+    - 'extrapolated': beyond the rows, u_req less the nearest row's driver drop
+      (u_req - u_ss), never past 0 V;
+    - 'off': u_req = 0 gives 0 V (the driver is off);
+    - 'requested': the table has no u_ss yet, so u_ss = u_req (the drop is not known).
+
+    A negative u_req maps as its size does, with its sign.
+    """
+    if u_req == 0:
+        return 0.0, "off"
+    if not table:
+        return float(u_req), "requested"
+    sign, level = math.copysign(1.0, u_req), abs(u_req)
+    pts = sorted((abs(r), s) for r, s in table)
+    same = [us for ur, us in pts if abs(ur - level) <= 1e-6 * max(1.0, level)]
     if same:
-        return float(np.mean(same)), "row"
-    below = [p for p in pts if p[0] < u_req]
-    above = [p for p in pts if p[0] > u_req]
+        return sign * float(np.mean(same)), "row"
+    below = [p for p in pts if p[0] < level]
+    above = [p for p in pts if p[0] > level]
     if below and above:
         (x0, y0), (x1, y1) = below[-1], above[0]
-        return y0 + (y1 - y0) * (u_req - x0) / (x1 - x0), "interpolated"
+        return sign * (y0 + (y1 - y0) * (level - x0) / (x1 - x0)), "interpolated"
     x0, y0 = below[-1] if below else above[0]
-    return u_req - (x0 - y0), "extrapolated"
+    return sign * max(level - (x0 - y0), 0.0), "extrapolated"
+
+
+def table_of(rows: Sequence[Row]) -> list[tuple[float, float]]:
+    """The ``(u_req, u_ss)`` pairs (V) of ``rows``, for :func:`u_ss_at`."""
+    return [(row.reading.u_req, row.reading.u_ss) for row in rows]
 
 
 def omega_ss_at(rows: Sequence[Row], u_req: float) -> float | None:
