@@ -22,6 +22,7 @@ from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.fakes import QuietDevice
@@ -75,26 +76,39 @@ async def settle(pilot: Pilot[None], until: Callable[[], bool] = lambda: True) -
 class Heard:
     """The messages the app hears (pass :meth:`hook` as ``run_test``'s ``message_hook``);
     :meth:`until` waits, message by message, for a condition. For the real-time board,
-    whose stream brings about 25 messages a second."""
+    whose stream brings about 25 messages a second. ``kinds``: the kind of every link
+    event heard, in order (a status text may be replaced before a test reads it; the
+    events stay)."""
+
+    SILENCE: float = 120.0
+    """A hang guard, s: the app heard nothing at all for this long (never reached by a
+    test that works, however busy the machine: the stream alone brings a message every
+    40 ms), so the wait fails instead of blocking the suite."""
 
     def __init__(self) -> None:
         self._new = asyncio.Event()
         self.count = 0
+        self.kinds: list[str] = []
 
     def hook(self, message: Message) -> None:
         self.count += 1
+        if isinstance(message, LinkEventArrived):
+            self.kinds.append(message.event.kind)
         self._new.set()
 
     async def until(
         self, pilot: Pilot[None], cond: Callable[[], bool], most: int = 100_000
     ) -> None:
         """Wait until ``cond()`` holds, checking it whenever the app hears a message (at most
-        ``most`` messages: a hang guard)."""
+        ``most`` messages, and fail after :attr:`SILENCE` without one: hang guards)."""
         for _ in range(most):
             if cond():
                 return
             self._new.clear()
-            await self._new.wait()
+            try:
+                await asyncio.wait_for(self._new.wait(), self.SILENCE)
+            except TimeoutError:
+                raise AssertionError(f"the app heard nothing for {self.SILENCE:g} s") from None
         raise AssertionError(f"not after {most} messages")
 
 
