@@ -39,6 +39,7 @@ from dataclasses import dataclass
 from decimal import Decimal
 
 from minseg_tui.errors import InputError
+from minseg_tui.units import DIGITS, format_number, format_value
 
 
 @dataclass(frozen=True)
@@ -259,11 +260,21 @@ def _fmt(x: float) -> str:
     return f"{x:.4g}"
 
 
-def format_quantity(value: float, unit: str, digits: int = 4) -> str:
-    """``value`` (SI) shown in the form unit ``unit`` with ``digits`` significant digits."""
+def format_quantity(value: float, unit: str, digits: int = DIGITS) -> str:
+    """``value`` (SI) shown in the form unit ``unit`` with ``digits`` significant digits,
+    trailing zeros kept (:func:`minseg_tui.units.format_value`)."""
     u = UNITS[unit]
     shown = value / u.scale if u.scale >= 1.0 else value * round(1.0 / u.scale)
-    return f"{shown:.{digits}g} {u.symbol}".rstrip()
+    return format_value(shown, u.symbol, digits)
+
+
+def format_reading(value: float, unit: str, digits: int = DIGITS) -> str:
+    """A reading (typed, captured or from the meter; ``value`` SI) in the form unit ``unit``
+    with at most ``digits`` significant digits and no zeros it was not given: R typed as
+    5.26 stays "5.26 Ω", never "5.260 Ω" (a computed value uses :func:`format_quantity`)."""
+    u = UNITS[unit]
+    shown = value / u.scale if u.scale >= 1.0 else value * round(1.0 / u.scale)
+    return f"{float(format_number(shown, digits)):g} {u.symbol}".rstrip()
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ it for one thread at a time.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -28,7 +28,10 @@ from minseg_tui.lab.entry import format_quantity
 from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import step
 from minseg_tui.model import identify as model_identify
+from minseg_tui.model.check.effects import UNITS as check_units
+from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
+from minseg_tui.units import DIGITS, format_number, format_value
 
 FloatArray = NDArray[np.float64]
 
@@ -53,17 +56,26 @@ def _empty() -> FloatArray:
     return np.zeros(0)
 
 
-def _fmt(v: float | None, unit: str, digits: int = 4) -> str:
+def _fmt(v: float | None, unit: str, digits: int = DIGITS) -> str:
+    """``v`` (SI) in the form unit ``unit`` (:func:`minseg_tui.lab.entry.format_quantity`)."""
     return "—" if v is None or not math.isfinite(v) else format_quantity(v, unit, digits)
 
 
-def _fmt_milli(v: float | None, unit: str, digits: int = 4) -> str:
+def _fmt_milli(v: float | None, unit: str, digits: int = DIGITS) -> str:
     """``v`` in thousandths of ``unit`` (f in mN m s/rad, as the table's column shows it)."""
-    return "—" if v is None or not math.isfinite(v) else f"{v * 1e3:.{digits}g} m{unit}"
+    return format_value(None if v is None else v * 1e3, f"m{unit}", digits)
 
 
-def _num(v: float | None, digits: int) -> str:
-    return "—" if v is None or not math.isfinite(v) else f"{v:.{digits}g}"
+def _num(v: float | None, digits: int = DIGITS) -> str:
+    return "—" if v is None else format_number(v, digits)
+
+
+def _ci(ci: tuple[float, float], unit: str) -> str:
+    """ ", 95 % CI lo..hi unit" for a finite interval; '' when it is not known."""
+    lo, hi = ci
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        return ""
+    return f", 95 % CI {_num(lo)}..{_num(hi)} {unit}"
 
 
 # -- Task 4: the live stream ------------------------------------------------------------------
@@ -93,6 +105,15 @@ def live(t: ArrayLike, count: ArrayLike, span: float = PLOT_SPAN) -> LiveView:
         signals.timestamp_velocity(tt, cc),
         signals.lab_velocity(cc),
     )
+
+
+def recording(t: ArrayLike, count: ArrayLike, t0: float) -> LiveView:
+    """A run as it arrives (Task 10): the live samples (board time s, counts) from the run's
+    first sample at ``t0`` (s) on, x in s from ``t0``."""
+    tt = np.asarray(t, dtype=float)
+    keep = tt >= t0 - 1e-9
+    v = live(tt[keep], np.asarray(count, dtype=np.int64)[keep], span=math.inf)
+    return v if v.x.size == 0 else replace(v, x=v.x + (tt[keep][0] - t0))
 
 
 def _capture_speed(t: ArrayLike, count: ArrayLike) -> FloatArray:
@@ -169,7 +190,16 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
     yours, computed with the relative difference)."""
     out = []
     for c in session.comparisons(step_id):
-        own = "—" if c.own is None else (c.own if isinstance(c.own, str) else _fmt(c.own, c.unit))
+        typed_ = session.entry(c.key)
+        own = (
+            "—"
+            if c.own is None
+            else c.own
+            if isinstance(c.own, str)
+            else typed_.text.strip()
+            if typed_ is not None and typed_.ok
+            else _fmt(c.own, c.unit)
+        )
         comp = (
             "—"
             if c.computed is None
@@ -208,14 +238,15 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
     if name == "k_v" and r.k_v is not None and r.u_ss is not None and r.i_ss is not None:
         if r.omega_ss is not None and R is not None:
             return (
-                f"k_v = (u_ss - R i_ss) / omega_ss = ({r.u_ss:.3g} V - {R:.3g} Ω × {r.i_ss:.3g} A)"
-                f" / {r.omega_ss:.3g} rad/s = {r.k_v:.4g} V s/rad"
+                f"k_v = (u_ss - R i_ss) / omega_ss = ({_num(r.u_ss, 3)} V - {_num(R, 3)} Ω × "
+                f"{_num(r.i_ss, 3)} A) / {_num(r.omega_ss, 3)} rad/s = {_num(r.k_v)} V s/rad"
             )
     if name == "f" and r.f is not None and r.i_ss is not None and r.omega_ss is not None:
         if k_a is not None:
             return (
-                f"f = k_a i_ss / omega_ss = {k_a:.4g} N m/A × {r.i_ss:.3g} A / {r.omega_ss:.3g}"
-                f" rad/s = {r.f * 1e3:.4g} mN m s/rad (k_a = 0.65 × median k_v)"
+                f"f = k_a i_ss / omega_ss = {_num(k_a)} N m/A × {_num(r.i_ss, 3)} A / "
+                f"{_num(r.omega_ss, 3)} rad/s = {_num(r.f * 1e3)} mN m s/rad "
+                "(k_a = 0.65 × median k_v)"
             )
     return _FORMULAS[name]
 
@@ -237,8 +268,8 @@ def _table_row(r: TableRow, R: float | None, k_a: float | None) -> tuple[Cell, .
             _num(None if r.i_ss is None else r.i_ss * 1e3, 3),
             "i_ss: read on the multimeter (mA)" if r.i_ss is not None else "",
         ),
-        Cell(_num(r.k_v, 4), _row_formula("k_v", r, R, k_a)),
-        Cell(_num(None if r.f is None else r.f * 1e3, 4), _row_formula("f", r, R, k_a)),
+        Cell(_num(r.k_v), _row_formula("k_v", r, R, k_a)),
+        Cell(_num(None if r.f is None else r.f * 1e3), _row_formula("f", r, R, k_a)),
     )
 
 
@@ -335,13 +366,53 @@ def runs(session: Session) -> tuple[RunView, ...]:
 
 
 # -- Tasks 11-15: the results ---------------------------------------------------------------------
+ZOOM_BEFORE_T: float = 1.0
+"""The zoom to one rise starts this many time constants before the edge..."""
+
+ZOOM_AFTER_T: float = 5.0
+"""...and ends this many after it (99 % of the change)."""
+
+ZOOM_MIN_SAMPLES: int = 3
+"""At least this many samples before the edge, whatever T."""
+
+
 @dataclass(frozen=True)
 class StepWindow:
-    """One rising step of the log: from ``t0`` to ``t1`` (s), its 63 % reading (s or None)."""
+    """One rising step of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
+    the speed before (``omega0``) and settled (``omega_ss``, rad/s), its 63 % reading
+    ``T_63`` (s or None); the zoom to its rise from ``z0`` to ``z1`` (s: a little before the
+    edge to several T after it), the 63 % level ``level`` (rad/s) and ``t_63``, the board
+    time (s) the speed crosses it (None if it does not)."""
 
     t0: float
     t1: float
     T_63: float | None
+    omega0: float = 0.0
+    omega_ss: float = 0.0
+    z0: float = 0.0
+    z1: float = 0.0
+
+    @property
+    def level(self) -> float:
+        """The 63 % level of this step, rad/s."""
+        return self.omega0 + E63 * (self.omega_ss - self.omega0)
+
+    @property
+    def t_63(self) -> float | None:
+        """When the speed crosses the 63 % level, s (board time)."""
+        return None if self.T_63 is None else self.t0 + self.T_63
+
+
+def step_window(step_: model_identify.RisingStep, T: float | None, ts: float) -> StepWindow:
+    """The window of one rising step, zoomed to its rise with time constant ``T`` (s; the
+    step's own 63 % reading when None) at sample period ``ts`` (s)."""
+    T_ref = T if T is not None and T > 0 else step_.T_63
+    if T_ref is None or not T_ref > 0:
+        T_ref = step_.duration / ZOOM_AFTER_T
+    t1 = step_.t + step_.duration
+    z0 = step_.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
+    z1 = min(step_.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
+    return StepWindow(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
 
 
 @dataclass(frozen=True)
@@ -377,16 +448,18 @@ def results(session: Session, step_id: str) -> ResultsView:
     if ident is not None and ident.step is not None:
         st = ident.step
         lines += [
-            f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s', 3)}   "
+            f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s')}   "
             f"u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
-            f"K = {_fmt(st.K, 'rad/s/V', 3)}",
-            f"T (63 %) = {_fmt(st.T_63, 's', 3)}   T (least squares) = {_fmt(st.T, 's', 3)}, "
-            f"95 % CI {st.T_ci[0]:.3g}..{st.T_ci[1]:.3g} s",
-            f"J = {_fmt(st.J, 'kg m^2', 3)}",
-            f"model: {st.T:.3g} omega' = -omega + {st.K:.3g} u_A",
-            f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s', 3)}",
+            f"K = {_fmt(st.K, 'rad/s/V')}{_ci(st.K_ci, 'rad/s/V')}",
+            f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
+            f"{_ci(st.T_ci, 's')}",
+            *([st.T_63_note] if st.T_63_note else []),
+            f"J = {_fmt(st.J, 'kg m^2')}",
+            f"model: {_num(st.T)} omega' = -omega + {_num(st.K)} u_A",
+            f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s')}",
         ]
-        steps = tuple(StepWindow(s.t, s.t + s.duration, s.T_63) for s in st.steps)
+        ts = log.ts if log is not None else 0.0
+        steps = tuple(step_window(s, st.T, ts) for s in st.steps)
     return ResultsView(
         res.run,
         np.asarray(log.t, dtype=float) if log else _empty(),
@@ -400,11 +473,26 @@ def results(session: Session, step_id: str) -> ResultsView:
 
 
 # -- the model check ---------------------------------------------------------------------------
+FIGURES: dict[str, tuple[str, str]] = {
+    "angle_rms": ("angle error", "rad"),
+    "heldout_rmse": ("error on held-out steps", "rad/s"),
+    "above_noise": ("speed error above the noise", "rad/s"),
+    "above_floor": ("speed error above the encoder's floor", "rad/s"),
+    "rmse": ("rms speed error", "rad/s"),
+}
+"""The model check's gain figures (``gain`` keys without their baseline_/extended_ prefix):
+what they are called here and their unit."""
+
+
 @dataclass(frozen=True)
 class CheckView:
     """The model check of one run: measured, baseline and extended speeds (rad/s) at t (s),
-    residual = measured - baseline; ``cause`` and ``evidence`` in words, the extended model
-    with its parameters and the gain in one line each; ``problem``: why there is no result."""
+    residual = measured - baseline; the close-up where the cause acts (``close_*``: the same
+    speeds over its stretch, ``close_what`` in words, ``noise`` the speed's noise level
+    there, rad/s); ``lead``: the gain figure that means most for this log, in one line, and
+    ``lead_why``; ``cause`` and ``evidence`` in words, the extended model with its
+    parameters, the other figures (``gain``), ``notes`` (what the check cannot say, the
+    anomalies; one line each); ``problem``: why there is no result."""
 
     run: str | None
     t: FloatArray = field(default_factory=_empty)
@@ -417,6 +505,37 @@ class CheckView:
     extended_model: str = ""
     gain: str = ""
     problem: str = ""
+    lead: str = ""
+    lead_why: str = ""
+    close_t: FloatArray = field(default_factory=_empty)
+    close_omega: FloatArray = field(default_factory=_empty)
+    close_baseline: FloatArray = field(default_factory=_empty)
+    close_extended: FloatArray = field(default_factory=_empty)
+    close_what: str = ""
+    noise: float | None = None
+    notes: tuple[str, ...] = ()
+
+
+def _stem(key: str) -> str:
+    """A gain key without its baseline_/extended_ prefix."""
+    return key.removeprefix("baseline_").removeprefix("extended_")
+
+
+def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | None:
+    """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
+    None when the log does not give it; only the baseline's when no cause was named."""
+    stem = _stem(key)
+    b, e = gain.get(f"baseline_{stem}"), gain.get(f"extended_{stem}")
+    unit = FIGURES.get(stem, (stem, ""))[1]
+    if b is None or (b == 0 and not e):
+        return None  # not to be had, or nothing to show (no error above the noise at all)
+    if not named or e is None:
+        return f"first order {format_value(b, unit, 3)}"
+    return f"first order {_num(b, 3)} → extended {format_value(e, unit, 3)}"
+
+
+def _params(params: Mapping[str, float]) -> str:
+    return ", ".join(f"{k} = {format_value(v, check_units.get(k, ''))}" for k, v in params.items())
 
 
 def check(session: Session) -> CheckView:
@@ -425,30 +544,53 @@ def check(session: Session) -> CheckView:
     r = mc.result
     if r is None:
         return CheckView(mc.run, problem=mc.problem or "no result")
-    f, e = r.finding, r.extended
-    ext = (
-        "none needed (the baseline is enough)"
-        if f.cause == "none"
-        else (f"{e.model}: " + ", ".join(f"{k} = {v:.3g}" for k, v in e.params.items()))
-    )
-    lower = r.gain.get("rmse_reduction_percent", 0.0)
-    gain = (
-        f"rmse {r.baseline.rmse:.3f} → {e.rmse:.3f} rad/s ({lower:.0f} % lower), "
-        f"fit {r.baseline.fit_percent:.1f} → {e.fit_percent:.1f} %"
-    )
+    f, e, g = r.finding, r.extended, r.gain
+    named = f.cause != "none"
+    ext = f"{e.model}: {_params(e.params)}" if named else "none needed (the baseline is enough)"
+    lead, lead_why = "", ""
+    led = _stem(r.lead.figure) if r.lead is not None else ""
+    if r.lead is not None:
+        shown = _figure(g, r.lead.figure, named)
+        if shown is not None:
+            lead = f"{FIGURES.get(led, (led, ''))[0]}: {shown}"
+            lead_why = r.lead.why
+    others = [
+        f"{FIGURES[stem][0]} {shown}"
+        for stem in FIGURES
+        if stem != led and (shown := _figure(g, stem, named)) is not None
+    ]
+    floor = g.get("noise_floor")
+    if floor is not None:
+        others.insert(0, f"encoder noise floor {format_value(floor, 'rad/s', 3)}")
     omega = np.asarray(r.omega, dtype=float)
     baseline = np.asarray(r.baseline_pred, dtype=float)
+    extended = np.asarray(r.extended_pred, dtype=float)
+    t = np.asarray(r.t, dtype=float)
+    cu = r.close_up
+    window = slice(cu.start, cu.end) if cu is not None else slice(0, 0)
+    notes = tuple(f"cannot say: {c.text}" for c in f.caveats) + tuple(
+        f"anomaly: {a.text}" for a in r.anomalies
+    )
     return CheckView(
         mc.run,
-        np.asarray(r.t, dtype=float),
+        t,
         omega,
         baseline,
-        np.asarray(r.extended_pred, dtype=float),
+        extended,
         omega - baseline,
         f.cause,
         f.evidence,
         ext,
-        gain,
+        "; ".join(others),
+        lead=lead,
+        lead_why=lead_why,
+        close_t=t[window],
+        close_omega=omega[window],
+        close_baseline=baseline[window],
+        close_extended=extended[window],
+        close_what=cu.what if cu is not None else "",
+        noise=cu.noise if cu is not None else floor,
+        notes=notes,
     )
 
 

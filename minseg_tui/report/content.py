@@ -15,13 +15,15 @@ import numpy as np
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab import steps as lab_steps
-from minseg_tui.lab.entry import format_quantity
+from minseg_tui.lab.entry import format_quantity, format_reading
 from minseg_tui.lab.session import Session
+from minseg_tui.lab.views import step_window
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS
-from minseg_tui.model.identify import E63, RisingStep, StepResult
+from minseg_tui.model.identify import RisingStep, StepResult
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
+from minseg_tui.units import DIGITS, format_number
 
 
 @dataclass(frozen=True)
@@ -67,14 +69,19 @@ class Report:
     sections: list[Section]
 
 
-def _q(value: float | None, unit: str, digits: int = 4) -> str:
+def _q(value: float | None, unit: str, digits: int = DIGITS) -> str:
     return (
         "–" if value is None or not math.isfinite(value) else format_quantity(value, unit, digits)
     )
 
 
-def _num(value: float | None, digits: int = 4) -> str:
-    return "–" if value is None or not math.isfinite(value) else f"{value:.{digits}g}"
+def _num(value: float | None, digits: int = DIGITS) -> str:
+    return "–" if value is None or not math.isfinite(value) else format_number(value, digits)
+
+
+def _reading(value: float | None, unit: str) -> str:
+    """What the group typed, captured or read off the meter, with the digits it has."""
+    return "–" if value is None or not math.isfinite(value) else format_reading(value, unit)
 
 
 def _verdicts(session: Session) -> dict[str, lab_steps.Feedback]:
@@ -116,7 +123,7 @@ def _table_section(session: Session) -> Section:
     res = session.results()
     rows = []
     for r in session.table():
-        omega = _q(r.omega_ss, "rad/s")
+        omega = _reading(r.omega_ss, "rad/s")
         if r.spread is not None and r.omega_ss is not None:
             omega += f" ± {r.spread:.2g}"
         window = (
@@ -129,16 +136,16 @@ def _table_section(session: Session) -> Section:
         rows.append(
             (
                 f"{r.level:g} V",
-                _q(r.u_ss, "V"),
+                _reading(r.u_ss, "V"),
                 omega,
                 window,
-                _q(r.i_ss, "mA", 3),
+                _reading(r.i_ss, "mA"),
                 _num(r.k_v),
                 _num(r.f),
             )
         )
     sec = Section("Steady state (Tasks 2 and 4-9)")
-    sec.blocks.append(f"R = {_q(session.value('R'), 'Ω')} (Task 2).")
+    sec.blocks.append(f"R = {_reading(session.value('R'), 'Ω')} (Task 2).")
     sec.blocks.append(
         Table(
             (
@@ -157,9 +164,9 @@ def _table_section(session: Session) -> Section:
     if ident is not None:
         sec.blocks.append(
             [
-                f"k_v = {ident.k_v:.4g} V s/rad (median of the rows, Task 7)",
-                f"k_a = 0.65 k_v = {ident.k_a:.4g} N m/A (Task 8)",
-                f"f = {ident.f:.4g} N m s/rad (median of the rows, Task 9)",
+                f"k_v = {_num(ident.k_v)} V s/rad (median of the rows, Task 7)",
+                f"k_a = 0.65 k_v = {_num(ident.k_a)} N m/A (Task 8)",
+                f"f = {_num(ident.f)} N m s/rad (median of the rows, Task 9)",
             ]
         )
     return sec
@@ -235,7 +242,7 @@ def _step_section(session: Session) -> Section:
         for c in comps:
             if c.own is None:
                 continue
-            own = c.own if isinstance(c.own, str) else _q(c.own, c.unit)
+            own = c.own if isinstance(c.own, str) else _reading(c.own, c.unit)
             comp = (
                 c.computed
                 if isinstance(c.computed, str) or c.computed is None
@@ -246,16 +253,6 @@ def _step_section(session: Session) -> Section:
         sec.blocks.append("The group's own readings beside the computed values:")
         sec.blocks.append(Table(("reading", "yours", "computed", "difference"), tuple(rows)))
     return sec
-
-
-ZOOM_BEFORE_T: float = 1.0
-"""The zoom to one rise starts this many time constants before the edge..."""
-
-ZOOM_AFTER_T: float = 5.0
-"""...and ends this many after it (99 % of the change), within the step."""
-
-ZOOM_MIN_SAMPLES: int = 3
-"""At least this many samples before the edge (and four times as many after), whatever T."""
 
 
 def _read_step(steps: tuple[RisingStep, ...], T_63: float | None) -> RisingStep:
@@ -279,11 +276,9 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     st = _read_step(s.steps, s.T_63)
     t = np.asarray(log.t, dtype=float)
     w = np.asarray(log.omega, dtype=float)
-    ts = log.ts
-    z0 = st.t - max(ZOOM_BEFORE_T * s.T, ZOOM_MIN_SAMPLES * ts)
-    z1 = min(st.t + max(ZOOM_AFTER_T * s.T, 4 * ZOOM_MIN_SAMPLES * ts), st.t + st.duration)
-    sel = (t >= z0 - 1e-9) & (t <= z1 + 1e-9)
-    level = st.omega0 + E63 * (st.omega_ss - st.omega0)
+    zoom = step_window(st, s.T, log.ts)  # the same window as the TUI's zoom
+    sel = (t >= zoom.z0 - 1e-9) & (t <= zoom.z1 + 1e-9)
+    level = zoom.level
     marks = [
         Mark(f"the step, t = {_num(st.t)} s", x=st.t, color="#555555", dash=False),
         Mark(f"omega before = {_num(st.omega0)} rad/s", y=st.omega0, color="#999999"),

@@ -9,6 +9,13 @@ from __future__ import annotations
 from html import escape
 
 from minseg_tui.report.content import Figure, Figures, Report, Table
+from minseg_tui.units import join_units
+
+
+def _text(text: str) -> str:
+    """``text`` escaped, with no line break between a number and its unit."""
+    return escape(join_units(text))
+
 
 _CSS = """
 body { font-family: sans-serif; max-width: 72em; margin: 2em auto; padding: 0 1em; color: #222; }
@@ -27,7 +34,7 @@ figure svg { display: block; width: 100%; height: auto; }
 def _table(t: Table) -> str:
     head = "".join(f"<th>{escape(h)}</th>" for h in t.header)
     rows = "".join(
-        "<tr>" + "".join(f"<td>{escape(c)}</td>" for c in row) + "</tr>" for row in t.rows
+        "<tr>" + "".join(f"<td>{_text(c)}</td>" for c in row) + "</tr>" for row in t.rows
     )
     return (
         f'<div class="table"><table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody>'
@@ -40,7 +47,7 @@ def _figure(f: Figure) -> str:
     svg = f.svg.replace(' xmlns="http://www.w3.org/2000/svg"', "")
     return (
         f'<figure style="flex: 1 1 {f.width}px; max-width: {f.width}px">{svg}'
-        f"<figcaption>{escape(f.caption)}</figcaption></figure>"
+        f"<figcaption>{_text(f.caption)}</figcaption></figure>"
     )
 
 
@@ -65,8 +72,8 @@ def render(report: Report) -> str:
                     '<div class="figures">' + "".join(_figure(f) for f in b.figures) + "</div>"
                 )
             elif isinstance(b, list):
-                out.append("<ul>" + "".join(f"<li>{escape(str(i))}</li>" for i in b) + "</ul>")
+                out.append("<ul>" + "".join(f"<li>{_text(str(i))}</li>" for i in b) + "</ul>")
             else:
-                out.append(f"<p>{escape(str(b))}</p>")
+                out.append(f"<p>{_text(str(b))}</p>")
     out.append("</body></html>")
     return "\n".join(out)

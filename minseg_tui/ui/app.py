@@ -18,23 +18,26 @@ from __future__ import annotations
 import datetime as _dt
 import threading
 import time
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from textual import on, work
+from textual.actions import ActionParseResult
 from textual.app import App, SystemCommand
 from textual.binding import Binding
+from textual.dom import DOMNode
 from textual.reactive import reactive
 from textual.screen import Screen
 from textual.signal import Signal
 from textual.worker import get_current_worker
 
+from minseg_tui.device.standstill import PRE_ROLL, StandStill, timeout_message
 from minseg_tui.errors import MinsegError
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step as lab_step
-from minseg_tui.lab.store import list_sessions
+from minseg_tui.lab.store import SessionInfo, SessionsUnreadable, list_sessions
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
@@ -43,14 +46,18 @@ from minseg_tui.ui.messages import (
     DeviceOpened,
     LinkEventArrived,
     MeterRead,
+    MotorKnown,
+    RunArmed,
     RunRequested,
     SamplesArrived,
     StepShown,
     VoltageRequested,
+    WheelStood,
 )
 from minseg_tui.ui.recording import ActiveRun, RunProgress
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.quit import QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.shared import Shared
 
@@ -67,7 +74,7 @@ KEYS: list[tuple[str, str]] = [
     ("F6", "run it fast: 5 ms board-timed samples"),
     ("F7", "the formula behind the table cell"),
     ("F8", "export the report (Markdown, HTML, CSV)"),
-    ("F9", "zoom the step log: next step, whole log (Tasks 11-15)"),
+    ("F9", "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)"),
     ("Alt+← →", "previous / next step of the log (Tasks 11-15)"),
     ("Ctrl+← →", "the same, outside a text entry"),
     ("[ ] z", "the same on the focused plot; z zooms"),
@@ -86,6 +93,7 @@ EVENT_TEXT: dict[str, str] = {
     "alive": "board answers again",
     "watchdog": "watchdog stopped the motor",
     "boot": "board restarted — motor off",
+    "motor": "motor off after the restart: nothing restored",
 }
 """What the status line says at once for a link event (``error`` shows the link's own line)."""
 
@@ -118,6 +126,19 @@ STREAM_PERIOD = 0.05
 
 METER_PERIOD = 0.25
 """How often the virtual multimeter is read while a step shows it, s."""
+
+SAVE_RETRY = 3.0
+"""While the session cannot be saved, it is tried again this often, s."""
+
+WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error", "silent"})
+"""Link events that end the wait for the wheel to stand before a run (no run starts)."""
+
+
+def motor_words(u_req: float | None, plan_high: float | None = None) -> str:
+    """The motor in words for the status line: off, 2.5 V, steps 0/4.5 V."""
+    if u_req is None:
+        return f"steps 0/{plan_high:g} V" if plan_high is not None else "steps"
+    return "off" if u_req == 0 else f"{u_req:g} V"
 
 
 class LabApp(App[None]):
@@ -153,6 +174,8 @@ class LabApp(App[None]):
     """The Task 10 run being recorded, or the last one's end (None: none yet)."""
     exported: reactive[tuple[str, ...]] = reactive(())
     """The files the report was last written to."""
+    saving: reactive[str] = reactive("")
+    """Why the session is not all on disk, in one line ('' when it is)."""
 
     def __init__(
         self,
@@ -173,6 +196,9 @@ class LabApp(App[None]):
         self.lab_changed: Signal[None] = Signal(self, "lab-changed")
         """Published whenever the session changed (an entry, a capture, a run, an import)."""
         self._meter_wanted = False
+        self._stand: StandStill | None = None
+        """The wait for the wheel to stand before a run (None: no run waits)."""
+        self._pending_plan: str | None = None
         self._stop = threading.Event()
         if not config.animations:
             self.animation_level = "none"
@@ -180,9 +206,16 @@ class LabApp(App[None]):
     # -- start-up ---------------------------------------------------------------------
     def on_mount(self) -> None:
         today = self.config.today or _dt.date.today().isoformat()
-        start = StartScreen(list_sessions(Path(self.config.sessions)), today)
+        sessions: list[SessionInfo] = []
+        unreadable = ""
+        try:
+            sessions = list_sessions(Path(self.config.sessions))
+        except SessionsUnreadable as exc:  # it was readable when the CLI looked; not now
+            unreadable = str(exc)
+        start = StartScreen(sessions, today, unreadable)
         self.push_screen(start.data_bind(LabApp.device, LabApp.link, LabApp.motor))
         self._connect(self.config.device)
+        self.set_interval(SAVE_RETRY, self.retry_save)
 
     @work(thread=True, exclusive=True, group="connect", name="open device")
     def _connect(self, spec: str) -> None:
@@ -215,7 +248,8 @@ class LabApp(App[None]):
 
     @on(StartScreen.Resume)
     def _resume(self, event: StartScreen.Resume) -> None:
-        self._enter_lab(lambda: Session.open(Path(event.path)))
+        path = Path(event.path)
+        self._enter_lab(lambda: Session.open(path, readonly=event.readonly))
 
     def _enter_lab(self, get: Callable[[], Session]) -> None:
         try:
@@ -224,6 +258,7 @@ class LabApp(App[None]):
             self.notify(str(exc), title="session", severity="error", timeout=10)
             return
         self.session = Shared(session)
+        self.lab_changed.subscribe(self, lambda _: self._saved_or_not())
         screen = LabScreen(self.session, self.live, self.lab_changed, self.config.refresh)
         self.switch_screen(
             screen.data_bind(
@@ -234,10 +269,23 @@ class LabApp(App[None]):
                 LabApp.meter,
                 LabApp.run_progress,
                 LabApp.exported,
+                LabApp.saving,
             )
         )
+        if session.readonly:
+            self.notify(
+                "opened read-only: "
+                + (session.damaged or "the file is damaged")
+                + "; nothing typed here is saved (start a new session to go on)",
+                title="damaged session",
+                severity="warning",
+                timeout=20,
+            )
         if session.recovered:
             self.notify("kept after a crash: " + ", ".join(session.recovered), title="session")
+        for note in session.recovery_notes:
+            self.notify(note, title="session", timeout=10)
+        self._saved_or_not()
 
     # -- the stream ---------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="stream", name="device stream")
@@ -247,15 +295,27 @@ class LabApp(App[None]):
         events on; read the virtual multimeter while a step shows it."""
         worker = get_current_worker()
         next_meter = 0.0
+        u_req: float | None = 0.0
         while not worker.is_cancelled and not self._stop.wait(STREAM_PERIOD):
             batch = device.samples()
             events = device.events()
             rec = self.recording
+            watch = self._stand
             if len(batch):
                 self.live.extend(batch)
                 if rec is not None:
                     rec.append(batch)
+                    if not rec.armed and rec.samples >= PRE_ROLL:
+                        rec.armed = True
+                        self.post_message(RunArmed(rec.name))
+                if watch is not None and watch.state == "waiting":
+                    state = watch.feed(batch)
+                    if state != "waiting":
+                        self.post_message(WheelStood(watch, state))
                 self.post_message(SamplesArrived(replace(device.stats), self.live.total))
+            if device.u_req != u_req:
+                u_req = device.u_req
+                self.post_message(MotorKnown(u_req))
             if rec is not None:
                 if any(ev.kind in RUN_ENDS for ev in events):
                     rec.end()
@@ -282,6 +342,15 @@ class LabApp(App[None]):
     def _meter_read(self, event: MeterRead) -> None:
         self.meter = event.reading
 
+    @on(MotorKnown)
+    def _motor_known(self, event: MotorKnown) -> None:
+        """The link's own idea of the motor (after a reconnect: off, nothing restored)."""
+        if self.recording is not None or self._stand is not None:
+            return  # the run's own words stand
+        self.motor = motor_words(event.u_req)
+        if event.u_req is not None and self.requested != event.u_req:
+            self.requested = event.u_req or None
+
     @on(StepShown)
     def _step_shown(self, event: StepShown) -> None:
         self._meter_wanted = "meter" in event.step.actions
@@ -296,18 +365,22 @@ class LabApp(App[None]):
             self.motor = "off"
             self.requested = None
             self.finish_run("done")
-        elif kind in ("disconnected", "watchdog", "boot", "error"):
+        elif kind in ("disconnected", "watchdog", "boot", "error", "motor"):
             self.motor = "off"
             self.requested = None
             if self.recording is not None:
                 self.finish_run(EVENT_TEXT.get(kind, "stopped"))
+        if kind in WAIT_ENDS and self._stand is not None:
+            self._cancel_wait(f"{EVENT_TEXT.get(kind, ev.message)}: the run did not start")
         if kind == "connected" and self.link.event == "":
             self.link = self.link.after(ev, "")
             return
         self.link = self.link.after(ev, EVENT_TEXT.get(kind, ev.message))
-        if kind in ("disconnected", "watchdog", "error"):
+        if kind in ("disconnected", "watchdog", "error", "motor"):
             self.notify(
-                self.link.event if kind != "error" else ev.message, severity="warning", timeout=8
+                self.link.event if kind not in ("error", "motor") else ev.message,
+                severity="warning",
+                timeout=8,
             )
 
     # -- what the panels ask for ------------------------------------------------------------
@@ -332,30 +405,93 @@ class LabApp(App[None]):
         self.start_run(event.plan)
 
     def start_run(self, name: str) -> None:
-        """Task 10: start the board's step sequence for plan ``name`` and record it."""
+        """Task 10: stop the motor and, once the wheel stands (:class:`StandStill` on the
+        stream), start the board's step sequence for plan ``name`` and record it."""
         if self._device is None or self.session is None:
             self.notify(
                 "no device: the run needs the board or the virtual MinSeg", severity="error"
             )
             return
-        if self.recording is not None:
+        if self.recording is not None or self._stand is not None:
             self.notify("a run is in progress; F2 stops it", severity="warning")
+            return
+        with self.session as s:
+            readonly = s.readonly
+        if readonly:
+            self.notify(
+                "this session is open read-only (its file is damaged): nothing can be "
+                "recorded in it; start a new session to record",
+                severity="error",
+            )
+            return
+        try:
+            self._device.stop()
+        except MinsegError as exc:
+            self.notify(str(exc), title="run", severity="error")
+            return
+        self.motor = "off"
+        self.requested = None
+        self._pending_plan = name
+        self._stand = StandStill()
+        self.run_progress = RunProgress(
+            0.0,
+            "motor off; the run starts once the wheel stands · F2 cancels",
+            recording=False,
+            waiting=True,
+            kind=RUN_KIND[name],
+        )
+
+    @on(WheelStood)
+    def _wheel_stood(self, event: WheelStood) -> None:
+        if event.watch is not self._stand or self._pending_plan is None:
+            return  # a wait that was cancelled
+        name = self._pending_plan
+        if event.state != "still":
+            self._cancel_wait(timeout_message(event.watch.timeout))
+            return
+        self._stand, self._pending_plan = None, None
+        self._begin_run(name)
+
+    def _cancel_wait(self, why: str) -> None:
+        """The wait for the wheel ends without a run: say ``why``."""
+        self._stand, self._pending_plan = None, None
+        self.run_progress = RunProgress(0.0, why, recording=False)
+        self.notify(why, title="Task 10", severity="warning")
+
+    def _begin_run(self, name: str) -> None:
+        """The wheel stands: the sample period of plan ``name`` and a new run; the board's
+        sequence starts once the run holds a few samples of the standing wheel
+        (:class:`RunArmed`)."""
+        if self._device is None or self.session is None:
             return
         plan = dict(lab_step("task10").plans)[name]
         try:
-            self._device.stop()
             self._device.set_period(plan.ts)
             with self.session as s:
                 recorder = s.start_run(RUN_KIND[name], plan)
-            self.recording = ActiveRun(recorder, plan)
+        except MinsegError as exc:
+            self.notify(str(exc), title="run", severity="error")
+            self.run_progress = RunProgress(0.0, f"could not start: {exc}", recording=False)
+            return
+        self.recording = ActiveRun(recorder, plan, RUN_KIND[name])
+        self.run_progress = self.recording.progress()
+
+    @on(RunArmed)
+    def _run_armed(self, event: RunArmed) -> None:
+        """The run holds the standing wheel: the board starts the sequence."""
+        rec = self.recording
+        if rec is None or rec.name != event.recorder_name or rec.started or self._device is None:
+            return
+        rec.started = True
+        plan = rec.plan
+        try:
             self._device.step(plan.low, plan.high, plan.half_period, plan.periods)
         except MinsegError as exc:
             self.notify(str(exc), title="run", severity="error")
             self.finish_run("could not start")
             return
-        self.motor = f"steps 0/{plan.high:g} V"
+        self.motor = motor_words(None, plan.high)
         self.requested = None
-        self.run_progress = self.recording.progress()
 
     def finish_run(self, why: str) -> None:
         """The run ended (done, stopped, board lost): keep what was recorded; it becomes the
@@ -386,6 +522,97 @@ class LabApp(App[None]):
                 pass
         self.lab_changed.publish(None)
 
+    # -- saving ----------------------------------------------------------------------------
+    def _saved_or_not(self) -> None:
+        """Show on the status line whether everything is on disk."""
+        if self.session is None:
+            self.saving = ""
+            return
+        with self.session as s:
+            problem = s.save_problem
+        self.saving = problem.line if problem is not None else ""
+
+    def retry_save(self) -> None:
+        """Every few seconds while a save fails: try again (a stick put back, space freed)."""
+        if self.session is None:
+            return
+        with self.session as s:
+            if s.readonly or s.save_problem is None:
+                return
+            saved = s.save()
+        self._saved_or_not()
+        if saved:
+            self.notify("saved: everything is on disk again", title="session")
+
+    def save_elsewhere(self, folder: str) -> str:
+        """Save the session under ``folder`` and go on there; the one line to show."""
+        if self.session is None:
+            return "no session is open"
+        target = Path(folder).expanduser()
+        try:
+            with self.session as s:
+                moved = s.move_to(target)
+        except MinsegError as exc:
+            return f"✗ {exc}"
+        finally:
+            self._saved_or_not()
+        said = f"saved to {moved.folder}; every change goes there from now on"
+        if moved.left_behind:
+            said += "; not brought along: " + "; ".join(moved.left_behind)
+        self.lab_changed.publish(None)
+        return said
+
+    def action_save_elsewhere(self) -> None:
+        """Palette: save the session to another folder."""
+        if self.session is None:
+            self.notify("start or resume a session first", severity="warning")
+            return
+        with self.session as s:
+            readonly, here = s.readonly, s.folder.parent
+        if readonly:
+            self.notify("this session is open read-only: nothing to save", severity="warning")
+            return
+        self.push_screen(SaveElsewhereScreen(str(here), self.save_elsewhere))
+
+    async def action_quit(self) -> None:
+        """Ctrl+Q: quit; everything typed is stored first. If some of it is not on disk (a
+        failed save), ask: keep working, save to another folder, or quit anyway."""
+        screen = self._lab_screen()
+        if screen is not None:
+            screen.store_typed()
+        if self.session is not None:
+            with self.session as s:
+                unsaved = not s.readonly and s.unsaved and not s.save()
+                problem = s.save_problem
+            self._saved_or_not()
+            if unsaved and not isinstance(self.screen, QuitScreen):
+                self.push_screen(
+                    QuitScreen(problem.line if problem else "not everything is saved"),
+                    self._quit_answer,
+                )
+                return
+        self.exit()
+
+    def _quit_answer(self, answer: str | None) -> None:
+        if answer == "quit":
+            self.exit()
+        elif answer == "move":
+            self.action_save_elsewhere()
+
+    async def run_action(
+        self,
+        action: str | ActionParseResult,
+        default_namespace: DOMNode | None = None,
+        namespaces: Mapping[str, DOMNode] | None = None,
+    ) -> bool:
+        """Every key that does something beyond the text box stores what stands in the
+        step's entries first (PgDn, F2, F8, Ctrl+P, Ctrl+Q, ...): nothing typed is lost."""
+        if default_namespace is None or isinstance(default_namespace, App | Screen):
+            screen = self._lab_screen()
+            if screen is not None:
+                screen.store_typed()
+        return await super().run_action(action, default_namespace, namespaces)
+
     # -- actions -------------------------------------------------------------------------
     def action_help(self) -> None:
         if not isinstance(self.screen, HelpScreen):
@@ -402,6 +629,8 @@ class LabApp(App[None]):
                 self.notify(
                     f"{exc} (a board without USB power stops by itself)", severity="warning"
                 )
+        if self._stand is not None:
+            self._cancel_wait("run cancelled (F2): the motor is off")
         if self.recording is not None:
             self.finish_run("stopped")
 
@@ -528,6 +757,12 @@ class LabApp(App[None]):
             "Export report",
             "Markdown, HTML and CSV into the session folder (F8)",
             self.action_export,
+        )
+        yield SystemCommand(
+            "Save the session to another folder",
+            "When it cannot be saved where it is (a full disk, a read-only folder, a stick "
+            "pulled out): save it elsewhere and go on there",
+            self.action_save_elsewhere,
         )
         yield SystemCommand(
             "Import a step log",

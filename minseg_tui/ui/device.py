@@ -24,6 +24,13 @@ class Device(Protocol):
     board: Any
     """The virtual board behind a ``minseg://`` URL (it has the multimeter), else None."""
 
+    @property
+    def u_req(self) -> float | None:
+        """The voltage (V) the motor is requested at as far as the link knows: 0 after STOP,
+        the watchdog, a reconnect or a board restart (nothing is restored); None while a
+        board-timed step sequence runs."""
+        ...
+
     def samples(self) -> SampleBatch:
         """Every sample received since the last call (worker thread)."""
         ...

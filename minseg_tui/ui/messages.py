@@ -1,7 +1,8 @@
 """The UI's messages: small dataclasses, coalesced where they come in floods.
 
 From the app's workers to the app: :class:`DeviceOpened`, :class:`SamplesArrived`,
-:class:`LinkEventArrived`, :class:`MeterRead`. From the panels and the screen up: the
+:class:`LinkEventArrived`, :class:`MeterRead`, :class:`MotorKnown`, :class:`WheelStood`,
+:class:`RunArmed`. From the panels and the screen up: the
 requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which drives the
 device; :class:`CaptureRequested`, :class:`LogImportRequested`, :class:`RunChosen` for the
 lab screen, which holds the session's entries) and :class:`StepShown`.
@@ -15,6 +16,7 @@ from dataclasses import dataclass
 from textual.message import Message
 
 from minseg_tui.device.link import LinkEvent, LinkStats
+from minseg_tui.device.standstill import StandStill, State
 from minseg_tui.lab.steps import Step
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.device import Device
@@ -58,6 +60,31 @@ class MeterRead(Message):
 
     def can_replace(self, message: Message) -> bool:
         return isinstance(message, MeterRead)
+
+
+@dataclass
+class MotorKnown(Message):
+    """The link's idea of the motor changed: ``u_req`` V requested (0: off; None: a
+    board-timed step sequence runs). After a reconnect or a board restart it is 0."""
+
+    u_req: float | None
+
+
+@dataclass
+class WheelStood(Message):
+    """The wait before a step run ended: ``state`` is ``still`` (start the run) or
+    ``turning`` (the wheel did not stand in time); ``watch`` says which wait it was."""
+
+    watch: StandStill
+    state: State
+
+
+@dataclass
+class RunArmed(Message):
+    """The run being recorded (``recorder_name``) holds its first samples of the standing
+    wheel: the board's step sequence may start."""
+
+    recorder_name: str
 
 
 @dataclass

@@ -15,11 +15,18 @@ from minseg_tui.lab.steps import RunPlan
 @dataclass(frozen=True)
 class RunProgress:
     """What the step-run panel says about the run: ``fraction`` done (0-1), one line of
-    ``text``, and ``recording`` (False once the run has ended)."""
+    ``text``, ``recording`` (False once the run has ended), ``waiting`` (the motor is off
+    and the run waits for the wheel to stand), the run's ``kind`` (steps or fast), the
+    board time ``t0`` (s) of its first sample (None before it has one) and its ``duration``
+    (s), for the plot drawn as the run arrives."""
 
     fraction: float
     text: str
     recording: bool = True
+    waiting: bool = False
+    kind: str = ""
+    t0: float | None = None
+    duration: float = 0.0
 
 
 class ActiveRun:
@@ -27,14 +34,19 @@ class ActiveRun:
     worker appends every batch as it arrives and flushes (:meth:`tick`); the event loop reads
     the progress and closes it; one lock between them."""
 
-    def __init__(self, recorder: Recorder, plan: RunPlan) -> None:
+    def __init__(self, recorder: Recorder, plan: RunPlan, kind: str = "") -> None:
         self.recorder = recorder
         self.plan = plan
+        self.kind = kind
         self._lock = threading.Lock()
         self.samples = 0
         self._first_us: int | None = None
         self._last_us: int | None = None
         self._ended = False
+        self.armed = False
+        """The stream worker said the run holds its first samples (the sequence may start)."""
+        self.started = False
+        """The board's step sequence was asked for."""
 
     @property
     def name(self) -> str:
@@ -93,4 +105,7 @@ class ActiveRun:
             fraction,
             f"recording {self.name}: {self.samples} samples, "
             f"{self.elapsed:.1f} of {duration:.1f} s · F2 stops",
+            kind=self.kind,
+            t0=None if self._first_us is None else self._first_us / 1e6,
+            duration=duration,
         )

@@ -85,6 +85,9 @@ def test_ports_command_on_this_machine(capsys):
 
 
 def test_sim_command_serves_a_pty_until_ctrl_c():
+    """The board's lines are waited for line by line (no read that must finish within a
+    fraction of a second: a busy machine makes the sim slower, not wrong); the generous
+    timeouts only guard against a hang."""
     proc = subprocess.Popen(
         [sys.executable, "-m", "minseg_tui", "sim", "--seed", "1", "--coulomb", "0"],
         stdout=subprocess.PIPE,
@@ -93,15 +96,19 @@ def test_sim_command_serves_a_pty_until_ctrl_c():
     try:
         path = proc.stdout.readline().strip()
         assert os.path.exists(path)
-        with serial.Serial(path, P.BAUD, timeout=0.5) as port:
+        with serial.Serial(path, P.BAUD, timeout=30) as port:
             assert port.readline().startswith(b"$")  # booted (bytes sent during boot are lost)
             port.write(b"ID\n")
-            lines = [port.readline().decode().strip() for _ in range(8)]
-        idents = [P.parse(x) for x in lines if x.startswith("$ID")]
-        assert idents and idents[0].board == "Virtual"
+            for _ in range(1000):  # the stream goes on; the reply comes among its lines
+                line = port.readline().decode().strip()
+                assert line, "the virtual board went silent"
+                if line.startswith("$ID"):
+                    break
+        assert P.parse(line).board == "Virtual"
     finally:
         proc.send_signal(signal.SIGINT)
-        assert proc.wait(10) == 0
+        code = proc.wait(60)
+    assert code == 0
 
 
 def test_sim_command_bad_option_is_one_line():

@@ -7,7 +7,13 @@ import math
 import pytest
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.entry import EntryRefused, Plausible, format_quantity, parse_quantity
+from minseg_tui.lab.entry import (
+    EntryRefused,
+    Plausible,
+    format_quantity,
+    format_reading,
+    parse_quantity,
+)
 from minseg_tui.lab.expr import FormulaRefused, parse_formula
 
 
@@ -127,10 +133,20 @@ def test_zero_and_negative_policies():
 
 
 def test_format_quantity():
-    assert format_quantity(0.0372, "mA") == "37.2 mA"
-    assert format_quantity(5.2, "Ω") == "5.2 Ω"
-    assert format_quantity(210.0, "min") == "3.5 min"
-    assert format_quantity(0.63, "%") == "63 %"
+    # significant digits with their trailing zeros (issue 9: "K = 2" hid K = 1.996)
+    assert format_quantity(0.0372, "mA") == "37.20 mA"
+    assert format_quantity(5.26, "Ω", 3) == "5.26 Ω"
+    assert format_quantity(210.0, "min") == "3.500 min"
+    assert format_quantity(0.63, "%", 2) == "63 %"
+
+
+def test_format_reading_keeps_the_digits_it_was_given():
+    # a reading is not padded with zeros nobody read (5.26 is not 5.260), but is rounded
+    # to four significant digits like any other number
+    assert format_reading(5.26, "Ω") == "5.26 Ω"
+    assert format_reading(0.047, "mA") == "47 mA"
+    assert format_reading(parse_quantity("4,7", "V").value, "V") == "4.7 V"
+    assert format_reading(3.14159, "rad/s") == "3.142 rad/s"
 
 
 def test_plausible_warnings():

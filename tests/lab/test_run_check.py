@@ -5,16 +5,21 @@ The virtual board applies every STEP edge exactly at a sample instant (firmware/
 so the check must report no step "between samples" and no wild sample; its plant has Coulomb
 friction tau_c = 7.3e-3 N m, i.e. u_c = tau_c R / k_a = 0.119 V at the motor terminals
 (PlantParams.u_coulomb), which the check must name and measure. The run is recorded as the
-TUI does it: STOP, P, Session.start_run, STEP, every sample into the Recorder, finish_run on
-$EV,STEPDONE; the table holds the multimeter's u_ss at 4.5 V, so the log's u is u_A.
+TUI does it: STOP and wait for the wheel to stand, P, Session.start_run, a few samples of
+the standing wheel, STEP, every sample
+into the Recorder, finish_run on $EV,STEPDONE; the table holds the multimeter's u_ss at
+4.5 V, so the log's u is u_A. Every wait is on board time (the samples), so a busy machine
+makes the test slower, never different.
 """
 
 import itertools
+import statistics
 import time
 
 import pytest
 
 from minseg_tui.device.factory import open_device
+from minseg_tui.device.standstill import PRE_ROLL, wait_until_still
 from minseg_tui.device.virtual import forget_board
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import RunPlan
@@ -23,31 +28,64 @@ from minseg_tui.model.plant import PlantParams
 _names = itertools.count()
 
 
+def _samples_until(link, done, guard: float = 60.0):
+    """Read ``link``'s samples until ``done(batch)`` says so; every batch read. Waits on what
+    the board sends (board time), never on the host's clock; ``guard`` host seconds only
+    against a hang."""
+    seen = []
+    end = time.monotonic() + guard
+    while time.monotonic() < end:
+        b = link.samples()
+        if len(b):
+            seen.append(b)
+            if done(b):
+                return seen
+        time.sleep(0.002)
+    raise AssertionError("the board sent nothing more")
+
+
 def record_task10(tmp_path, seed: int, ts: float):
     """Record the Task 10 plan (0 -> 4.5 V, half period 1.5 s, 4 periods) at period ``ts``
-    from a virtual board with ``seed``; returns the session and the run."""
+    from a virtual board with ``seed``; returns the session and the run.
+
+    Every wait is on board time: the multimeter is read after 0.5 s of samples at 4.5 V
+    (the command is in force), and the run starts once the wheel stands
+    (:func:`wait_until_still`), as the TUI does it."""
     name = f"run-check-{next(_names)}"
     link = open_device(f"minseg://{name}?clock=virtual&seed={seed}")
     try:
         s = Session.create(tmp_path, ["A. Student"])
-        link.set_voltage(4.5)
-        time.sleep(0.05)
-        s.enter("u_ss@4.5", f"{link.meter().u_A:.2f} V")  # the multimeter on M1A/M1B
-        plan = RunPlan(ts=ts)
-        link.stop()
-        link.set_period(plan.ts)
-        rec = s.start_run("fast" if ts != 0.025 else "steps", plan)
         link.samples()
-        link.step(plan.low, plan.high, plan.half_period, plan.periods)
-        end = time.monotonic() + 30.0
-        done = False
-        while not done and time.monotonic() < end:
-            done = any(e.kind == "stepdone" for e in link.events())
-            b = link.samples()
+        link.set_voltage(4.5)
+        at_level: list[float] = []
+
+        def held(b) -> bool:
+            at_level.extend(b.t[b.u_req == 4.5].tolist())
+            return len(at_level) > 1 and at_level[-1] - at_level[0] >= 0.5
+
+        _samples_until(link, held)
+        # the multimeter on M1A/M1B; its last digit flickers (seeded noise, drawn as the
+        # board runs): the typical reading of nine, as a group writes down what it shows
+        u_A = statistics.median(link.meter().u_A for _ in range(9))
+        s.enter("u_ss@4.5", f"{u_A:.2f} V")
+        plan = RunPlan(ts=ts)
+        wait_until_still(link)
+        link.set_period(plan.ts)
+        link.samples()
+        link.events()
+        rec = s.start_run("fast" if ts != 0.025 else "steps", plan)
+        done = []
+
+        def keep(b) -> bool:
             for q, t_us, c, u in zip(b.seq, b.t_us, b.count, b.u_req, strict=True):
                 rec.append(int(q), int(t_us), int(c), round(float(u) * 1000))
-            time.sleep(0.005)
-        assert done, "the step sequence did not finish"
+            done.extend(e for e in link.events() if e.kind == "stepdone")
+            return bool(done)
+
+        _samples_until(link, lambda b: keep(b) or rec.samples >= PRE_ROLL)  # the wheel stands
+        link.step(plan.low, plan.high, plan.half_period, plan.periods)
+        _samples_until(link, keep)
+        keep(link.samples())  # the samples that came with the last edge's event
         info = s.finish_run(rec)
         assert info is not None and info.dropped == 0
         return s, info

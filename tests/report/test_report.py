@@ -18,6 +18,7 @@ from minseg_tui.lab.steps import step
 from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.report import content, svg
 from minseg_tui.report.write import write_report
+from minseg_tui.units import format_number, format_value
 
 
 class _Clock:
@@ -90,7 +91,8 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             (4.05 - 5.26 * 0.0372) / 7.78,
         ]
     )[1]
-    for doc in (md, unescape(html)):
+    assert "5.26\u00a0Ω" in unescape(html)  # a number and its unit never part at a line end
+    for doc in (md, unescape(html).replace("\u00a0", " ")):
         for text in (
             "Ada Lovelace",
             "2026-11-22",
@@ -100,9 +102,9 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             "37.2 mA",
             "2.05 V",
             "3.82 rad/s",
-            f"{(2.05 - 5.26 * 0.0298) / 3.82:.4g}",
-            f"k_v = {k_v:.4g} V s/rad",
-            f"{0.65 * k_v:.4g} N m/A",
+            format_number((2.05 - 5.26 * 0.0298) / 3.82),
+            f"k_v = {format_number(k_v)} V s/rad",
+            f"{format_number(0.65 * k_v)} N m/A",
             "a/b",
             "b/c",
             "upside down",
@@ -120,7 +122,9 @@ def test_report_files_hold_the_sessions_values(tmp_path):
         ):
             assert text in doc, text
     ident = s.results().identification
-    assert f"{ident.step.K:.4g} rad/s/V" in md and f"{ident.step.T:.4g} s" in html
+    assert format_value(ident.step.K, "rad/s/V") in md and format_value(
+        ident.step.T, "s"
+    ) in unescape(html).replace("\u00a0", " ")
     assert "T_short" in md  # identify's findings land in the warnings
 
 
@@ -215,7 +219,9 @@ def test_svg_ticks_and_thinning():
 
 
 def test_intervals_say_which_side_the_log_does_not_bound():
-    assert content._interval(0.04, 0.05, "s") == "0.04 – 0.05 s"
-    assert content._interval(0.11, math.inf, "V") == "0.11 V or more: no upper bound from this log"
-    assert content._interval(-math.inf, 3.0, "s") == "up to 3 s: no lower bound from this log"
+    assert content._interval(0.04, 0.05, "s") == "0.04000 – 0.05000 s"
+    assert (
+        content._interval(0.11, math.inf, "V") == "0.1100 V or more: no upper bound from this log"
+    )
+    assert content._interval(-math.inf, 3.0, "s") == "up to 3.000 s: no lower bound from this log"
     assert content._interval(-math.inf, math.inf, "s") == "not bounded by this log"

@@ -17,12 +17,15 @@ from textual.message import Message
 from textual.pilot import Pilot
 from textual.worker import WorkerCancelled
 
+from minseg_tui.device.samples import SampleBatch
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from tests.ui.fakes import QuietDevice
 
 TABLE = {
     "R": "5.3",
@@ -47,6 +50,10 @@ ROUNDS = 1000
 """Most rounds :func:`settle` waits for a condition: a guard against a hang (a condition
 that never holds), not a measure of time."""
 
+GUARD = 6000
+"""Most 10 ms pauses :func:`taken` waits for the stream worker: a guard against a hang (a
+minute), never a threshold a busy machine could cross."""
+
 
 async def settle(pilot: Pilot[None], until: Callable[[], bool] = lambda: True) -> None:
     """Let the app finish what it was asked, exactly: rounds of ``pilot.pause(0)`` (each
@@ -69,26 +76,39 @@ async def settle(pilot: Pilot[None], until: Callable[[], bool] = lambda: True) -
 class Heard:
     """The messages the app hears (pass :meth:`hook` as ``run_test``'s ``message_hook``);
     :meth:`until` waits, message by message, for a condition. For the real-time board,
-    whose stream brings about 25 messages a second."""
+    whose stream brings about 25 messages a second. ``kinds``: the kind of every link
+    event heard, in order (a status text may be replaced before a test reads it; the
+    events stay)."""
+
+    SILENCE: float = 120.0
+    """A hang guard, s: the app heard nothing at all for this long (never reached by a
+    test that works, however busy the machine: the stream alone brings a message every
+    40 ms), so the wait fails instead of blocking the suite."""
 
     def __init__(self) -> None:
         self._new = asyncio.Event()
         self.count = 0
+        self.kinds: list[str] = []
 
     def hook(self, message: Message) -> None:
         self.count += 1
+        if isinstance(message, LinkEventArrived):
+            self.kinds.append(message.event.kind)
         self._new.set()
 
     async def until(
         self, pilot: Pilot[None], cond: Callable[[], bool], most: int = 100_000
     ) -> None:
         """Wait until ``cond()`` holds, checking it whenever the app hears a message (at most
-        ``most`` messages: a hang guard)."""
+        ``most`` messages, and fail after :attr:`SILENCE` without one: hang guards)."""
         for _ in range(most):
             if cond():
                 return
             self._new.clear()
-            await self._new.wait()
+            try:
+                await asyncio.wait_for(self._new.wait(), self.SILENCE)
+            except TimeoutError:
+                raise AssertionError(f"the app heard nothing for {self.SILENCE:g} s") from None
         raise AssertionError(f"not after {most} messages")
 
 
@@ -134,17 +154,19 @@ async def resume(pilot: Pilot[None]) -> None:
 
 async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") -> None:
     """Jump to ``step_id`` as the palette does and wait until it is shown, its view drawn and
-    the focus where ``focus`` says."""
+    the focus where ``focus`` says (``entry``: the step's first empty entry)."""
     app = pilot.app
     lab_screen(app).go_to(step_id, focus)
 
     def there() -> bool:
         if not shown(app, step_id):
             return False
-        rows = app.screen.query(StepPane).last().query(FieldRow)
-        if focus != "entry" or not rows:
+        pane = app.screen.query(StepPane).last()
+        if focus != "entry":
             return True
-        return app.focused is not None and rows.first() in app.focused.ancestors_with_self
+        row = pane.landing_row()  # the first empty entry (the pane itself without entries)
+        target = pane if row is None else row
+        return app.focused is not None and target in app.focused.ancestors_with_self
 
     await settle(pilot, there)
 
@@ -172,6 +194,43 @@ async def paste_in(pilot: Pilot[None], key: str, text: str) -> FieldRow:
     await pilot.press("enter")
     await settle(pilot)
     return row
+
+
+def standing(n: int, first_seq: int = 0, period_us: int = 25_000) -> SampleBatch:
+    """``n`` samples of a wheel standing still (count 0, motor off), as the link hands them
+    over, from sequence number ``first_seq`` on."""
+    return SampleBatch.from_rows(
+        [(k, (k + 1) * period_us, 0, 0, 0, 0.0) for k in range(first_seq, first_seq + n)]
+    )
+
+
+async def start_run_on(pilot: Pilot[None], device: QuietDevice, key: str = "f5") -> int:
+    """Press ``key`` on Task 10 and let the double's wheel stand (samples fed to the app, as
+    the board would send them) until the run is recorded and the board asked for its
+    sequence: the app stops the motor, waits for the wheel to stand, records a few samples
+    of it, then sends STEP. The sequence number the board's next sample has."""
+    await pilot.press(key)
+    await settle(pilot)
+    seq = 0
+    for _ in range(ROUNDS):
+        if device.commands and device.commands[-1].startswith("STEP"):
+            return seq
+        device.feed(standing(4, seq))
+        seq += 4
+        await taken(pilot, seq)
+    raise AssertionError("the run never started")
+
+
+async def taken(pilot: Pilot[None], total: int) -> None:
+    """Wait until the app's stream worker has taken ``total`` samples from the device double
+    (it reads every 50 ms on its own thread) and the app has handled what they brought."""
+    app = pilot.app
+    for _ in range(GUARD):
+        if app.live.total >= total:
+            await settle(pilot)
+            return
+        await pilot.pause(0.01)
+    raise AssertionError(f"the stream worker took {app.live.total} of {total} samples")
 
 
 def record_step_run(session: Session, seed: int = 5) -> str:

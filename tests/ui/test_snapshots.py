@@ -6,8 +6,17 @@ from __future__ import annotations
 import pytest
 
 from tests.ui.conftest import quiet_app
-from tests.ui.fakes import METER, frozen_stream
-from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, settle, start
+from tests.ui.fakes import METER, QuietDevice, frozen_stream, step_stream
+from tests.ui.helpers import (
+    TABLE,
+    enter_all,
+    goto,
+    record_step_run,
+    settle,
+    start,
+    start_run_on,
+    taken,
+)
 
 SIZES = [(80, 24), (120, 40)]
 
@@ -32,12 +41,6 @@ def _to(
         await goto(pilot, step_id, focus)
 
     return run_before
-
-
-def _entry(size: tuple[int, int]) -> str | None:
-    """Where these pinned screens have the focus: in the step's first entry at 80x24, on the
-    list of steps at 120x40 (as they were pinned)."""
-    return "entry" if size == (80, 24) else None
 
 
 def _app(tmp_path):
@@ -92,20 +95,39 @@ def test_step_run(snap_compare, tmp_path, size):
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_results_step(snap_compare, tmp_path, size):
+def test_step_run_mid_run(snap_compare, tmp_path, size):
+    """Task 10 while it records: 4 s of the 25 ms run plotted as it arrived."""
+    dev = QuietDevice(seed=1)
+
+    async def run_before(pilot) -> None:
+        app = pilot.app
+        await start(pilot)
+        enter_all(app, TABLE)
+        await goto(pilot, "task10")
+        seq = await start_run_on(pilot, dev)
+        dev.feed(step_stream(seq, (seq + 1) * 25_000, 4.0))
+        await taken(pilot, seq + 160)
+
     assert snap_compare(
-        _app(tmp_path),
-        terminal_size=size,
-        run_before=_to("task12", {**TABLE, "own.T": "0.05 s"}, run=True, focus=_entry(size)),
+        quiet_app(tmp_path / "sessions", dev), terminal_size=size, run_before=run_before
     )
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_model_check(snap_compare, tmp_path, size):
+def test_zoomed_step_with_its_63_percent_marks(snap_compare, tmp_path, size):
+    """Task 12 lands in the group's T, right under the zoom to the first rise: the 63 %
+    level and the time the speed crosses it."""
     assert snap_compare(
-        _app(tmp_path),
-        terminal_size=size,
-        run_before=_to("model_check", TABLE, run=True, focus=_entry(size)),
+        _app(tmp_path), terminal_size=size, run_before=_to("task12", TABLE, run=True)
+    )
+
+
+@pytest.mark.parametrize("size", SIZES)
+def test_model_check_close_up(snap_compare, tmp_path, size):
+    """The model check lands on its text: the close-up where the cause acts, the residuals
+    against the noise band, the lead figure first."""
+    assert snap_compare(
+        _app(tmp_path), terminal_size=size, run_before=_to("model_check", TABLE, run=True)
     )
 
 
@@ -114,7 +136,7 @@ def test_summary_step(snap_compare, tmp_path, size):
     assert snap_compare(
         _app(tmp_path),
         terminal_size=size,
-        run_before=_to("summary", {"summary.1": "b", "summary.5": "b, c"}, focus=_entry(size)),
+        run_before=_to("summary", {"summary.1": "b", "summary.5": "b, c"}),
     )
 
 

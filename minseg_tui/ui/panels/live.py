@@ -8,7 +8,6 @@ from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
 from textual.reactive import reactive
 from textual.widget import Widget
-from textual.widgets import Static
 
 from minseg_tui.lab import views
 from minseg_tui.lab.steps import LEVELS, Step
@@ -18,6 +17,7 @@ from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
 from minseg_tui.ui.panels.meter import MeterPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
+from minseg_tui.ui.widgets.prose import Prose
 
 
 class LivePanel(Vertical):
@@ -40,7 +40,7 @@ class LivePanel(Vertical):
         if not self.levels and {"capture_omega", "live_velocity"} & acts:
             self.levels = LEVELS  # Task 3 says "set a voltage": F3 steps through the lab's
         self.plots = bool({"live_velocity", "capture_omega"} & acts)
-        self._steady = Static("", id="steady") if self.levels or "capture_omega" in acts else None
+        self._steady = Prose("", id="steady") if self.levels or "capture_omega" in acts else None
         self._meter = MeterPanel() if "meter" in acts else None
 
     def compose(self) -> ComposeResult:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal
-from textual.widgets import Input, Static
+from textual.widgets import Input
 
 from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
@@ -13,20 +13,28 @@ from minseg_tui.lab.views import CheckView
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
+from minseg_tui.ui.widgets.prose import Prose
 
 
 class ModelCheckPanel(ViewPanel[CheckView]):
-    """Measured against the first-order model and the extended one, residuals, the named cause
-    with its evidence, the gain; a log recorded elsewhere can be loaded (Enter in the path
-    asks for it)."""
+    """What the first-order model gets wrong in the run: first the close-up where the cause
+    acts (measured, both models, and their residuals against the noise floor), F9 switches
+    to the whole log and back; the gain figure that means most leads the text, then the
+    cause, its evidence, the extended model, the other figures and what the check cannot
+    say. A log recorded elsewhere can be loaded (Enter in the path asks for it)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.close_up = True
+        """The close-up where the cause acts (False: the whole log)."""
 
     def compose(self) -> ComposeResult:
-        with Horizontal(classes="plots"):
+        with Horizontal(classes="plots check-plots"):
             yield TracePlot("measured vs models", "t [s]", "omega [rad/s]", id="plot-check")
-            yield TracePlot("residual (baseline)", "t [s]", "rad/s", id="plot-residual")
-        yield Static("computing…", id="check-lines")
+            yield TracePlot("residual", "t [s]", "rad/s", id="plot-residual")
+        yield Prose("computing…", id="check-lines")
         yield Input(placeholder="load a step log (CSV path), Enter", id="import-path")
-        yield Static("", id="import-msg", classes="hint")
+        yield Prose("", id="import-msg", classes="hint")
 
     def build(self, session: Session) -> CheckView:
         return views.check(session)
@@ -35,30 +43,68 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         v = self.view
         if v is None:
             return
-        lines = self.query_one("#check-lines", Static)
+        lines = self.query_one("#check-lines", Prose)
         if v.problem:
             lines.update(f"run {v.run or '—'}: {v.problem}")
             return
-        self.query_one("#plot-check", TracePlot).show(
+        self._plot()
+        where = (
+            f"close-up: {v.close_what} · F9 the whole log"
+            if self.close_up and v.close_t.size
+            else "the whole log · F9 the close-up where the cause acts"
+        )
+        text = [f"run {v.run} · cause: {v.cause}"]
+        if v.lead:
+            text += [f"{v.lead}", f"(this figure leads: {v.lead_why})"]
+        text += [
+            where,
+            f"evidence: {v.evidence}",
+            f"extended model: {v.extended_model}",
+            f"also: {v.gain}",
+        ]
+        text += [f"! {n}" for n in v.notes]
+        lines.update("\n".join(text))
+
+    def _plot(self) -> None:
+        v = self.view
+        if v is None:
+            return
+        check = self.query_one("#plot-check", TracePlot)
+        residual = self.query_one("#plot-residual", TracePlot)
+        if self.close_up and v.close_t.size:
+            t, om, ba, ex = v.close_t, v.close_omega, v.close_baseline, v.close_extended
+            check.set_axes("close-up: where the cause acts", "t [s]")
+            residual.set_axes("residual there", "t [s]")
+        else:
+            t, om, ba, ex = v.t, v.omega, v.baseline, v.extended
+            check.set_axes("measured vs models", "t [s]")
+            residual.set_axes("residual, whole log", "t [s]")
+        span = (float(t[0]), float(t[-1])) if t.size > 1 else None
+        # drawn in this order: the measured speed (and the first order's miss) on top
+        check.show(
             [
-                Trace(v.t, v.omega, "measured"),
-                Trace(v.t, v.baseline, "first order", "dot"),
-                Trace(v.t, v.extended, "extended", "+"),
+                Trace(t, ex, "extended", "+", colour=2),
+                Trace(t, ba, "first order", "braille", colour=1),
+                Trace(t, om, "measured", "dot", colour=0),
+            ],
+            span,
+        )
+        traces = []
+        if v.noise is not None and span is not None:
+            lo, hi = span
+            traces += [
+                Trace([lo, hi], [v.noise, v.noise], "noise ±", "-", colour=3),
+                Trace([lo, hi], [-v.noise, -v.noise], "", "-", colour=3),
             ]
-        )
-        self.query_one("#plot-residual", TracePlot).show(
-            [Trace(v.t, v.residual, "measured - model")]
-        )
-        lines.update(
-            "\n".join(
-                [
-                    f"run {v.run} · cause: {v.cause}",
-                    f"evidence: {v.evidence}",
-                    f"extended model: {v.extended_model}",
-                    f"gain: {v.gain}",
-                ]
-            )
-        )
+        if v.cause != "none":
+            traces.append(Trace(t, om - ex, "measured - extended", "+", colour=2))
+        traces.append(Trace(t, om - ba, "measured - first order", "braille", colour=1))
+        residual.show(traces, span)
+
+    def zoom_next(self) -> None:
+        """F9: the close-up, or the whole log."""
+        self.close_up = not self.close_up
+        self.show_view()
 
     @on(Input.Submitted, "#import-path")
     def _import(self, event: Input.Submitted) -> None:
@@ -71,4 +117,4 @@ class ModelCheckPanel(ViewPanel[CheckView]):
 
     def imported(self, text: str) -> None:
         """Say what became of the log asked for (one line)."""
-        self.query_one("#import-msg", Static).update(text)
+        self.query_one("#import-msg", Prose).update(text)

@@ -3,10 +3,10 @@ group's own readings."""
 
 from __future__ import annotations
 
-import numpy as np
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.widgets import Static
+from textual.containers import Vertical
+from textual.widget import Widget
 
 from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
@@ -14,13 +14,8 @@ from minseg_tui.lab.steps import Step
 from minseg_tui.lab.views import ResultsView
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
-
-ZOOM_BEFORE = 0.2
-"""Seconds shown before a rising step when zoomed to it."""
-
-
-def _s(v: float | None) -> str:
-    return "—" if v is None else f"{v:.3f} s"
+from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.units import format_value
 
 
 class StepPlot(TracePlot):
@@ -53,12 +48,17 @@ class ResultsPanel(ViewPanel[ResultsView]):
         super().__init__("results")
         self.step = step
         self.zoom: int | None = 0 if step.id in ("task11", "task12") else None
+        self._lines = Prose("computing…", id="results-lines")
+        self._compare = Prose("", id="compare")
 
     def compose(self) -> ComposeResult:
         yield StepPlot("step log", "t [s]", "omega [rad/s]", id="plot-log")
-        yield Static("", id="zoom-note", classes="hint")
-        yield Static("computing…", id="results-lines")
-        yield Static("", id="compare")
+        yield Prose("", id="zoom-note", classes="hint")
+
+    def after_rows(self) -> Widget:
+        """The numbers, shown under the group's entries: the entry to type a reading into
+        sits right under the plot it is read from."""
+        return Vertical(self._lines, self._compare, classes="details")
 
     def build(self, session: Session) -> ResultsView:
         return views.results(session, self.step.id)
@@ -72,8 +72,8 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self._plot()
         lines = list(view.lines) or ["no step result yet"]
         lines += [f"! {p}" for p in view.problems]
-        self.query_one("#results-lines", Static).update("\n".join(lines))
-        self.query_one("#compare", Static).update(
+        self._lines.update("\n".join(lines))
+        self._compare.update(
             "\n".join(
                 f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare
             )
@@ -84,23 +84,36 @@ class ResultsPanel(ViewPanel[ResultsView]):
         if v is None:
             return
         plot = self.query_one(StepPlot)
-        note = self.query_one("#zoom-note", Static)
+        note = self.query_one("#zoom-note", Prose)
         if v.t.size == 0:
             plot.show([])
             note.update("no step run yet (Task 10)")
             return
-        keep = np.ones(v.t.size, dtype=bool)
-        if self.zoom is not None and v.steps:
-            w = v.steps[self.zoom]
-            keep = (v.t >= w.t0 - ZOOM_BEFORE) & (v.t <= w.t1)
-            note.update(
-                f"run {v.run}: step {self.zoom + 1} of {len(v.steps)}, 63 % at {_s(w.T_63)}"
-                " · alt+←/→ step · F9 next"
-            )
-        else:
+        if self.zoom is None or not v.steps:
+            plot.set_axes("step log", "t [s]")
+            plot.show([Trace(v.t, v.omega, "omega"), Trace(v.t, v.u, "u_A [V]", "dot")])
             note.update(f"run {v.run}: whole log, {len(v.steps)} rising steps · F9 zooms")
-        plot.show(
-            [Trace(v.t[keep], v.omega[keep], "omega"), Trace(v.t[keep], v.u[keep], "u_A", "dot")]
+            return
+        w = v.steps[self.zoom]
+        keep = (v.t >= w.z0) & (v.t <= w.z1)
+        x = v.t[keep] - w.t0  # time after the edge: the 63 % crossing is read off as T
+        traces = [Trace(x, v.omega[keep], "omega"), Trace(x, v.u[keep], "u_A [V]", "dot")]
+        lo, hi = w.z0 - w.t0, w.z1 - w.t0
+        traces.append(Trace([lo, hi], [w.level, w.level], "63 %", "-"))
+        if w.T_63 is not None:
+            traces.append(Trace([w.T_63, w.T_63], [w.omega0, w.level], "crossing", "|"))
+        plot.set_axes(f"step {self.zoom + 1}: the rise", "t after the edge [s]")
+        plot.show(traces, (lo, hi))
+        crossing = (
+            f"crosses it {format_value(w.T_63, 's')} after the edge"
+            if w.T_63 is not None
+            else "never crosses it"
+        )
+        note.update(
+            f"run {v.run}, step {self.zoom + 1} of {len(v.steps)}: from "
+            f"{format_value(w.omega0, 'rad/s', 3)} to {format_value(w.omega_ss, 'rad/s', 3)}; "
+            f"63 % of the change is {format_value(w.level, 'rad/s', 3)}, the speed "
+            f"{crossing} · alt+←/→ step · F9 next"
         )
 
     def pick(self, delta: int) -> None:

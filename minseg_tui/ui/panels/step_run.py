@@ -11,10 +11,13 @@ from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import Step
 from minseg_tui.lab.views import RunView
+from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import RunRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.recording import RunProgress
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
+from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.units import format_number, format_value
 
 FAST_WHY = (
     "Why 5 ms matters: the published MinSeg figures give T near 0.04 s, under two 25 ms "
@@ -24,35 +27,46 @@ FAST_WHY = (
 )
 
 
+PLOT_OF = {"steps": "#plot-slow", "fast": "#plot-fast"}
+"""The plot each kind of run is drawn in."""
+
+
 def _s(v: float | None) -> str:
-    return "—" if v is None else f"{v:.3f} s"
+    return format_value(v, "s", 3)
 
 
 class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
     """F5/F6 ask for the board's step sequence; shows the app's ``run_progress`` while it
-    records (F2 stops it at once), then the latest 25 ms run beside the 5 ms one with both T
-    readings next to each other."""
+    waits for the wheel and while it records (F2 stops it at once), the run plotted as it
+    arrives from the ``live`` buffer (redrawn every ``refresh`` s; at each progress when 0),
+    then the latest 25 ms run beside the 5 ms one with both T readings next to each other."""
 
     run_progress: reactive[RunProgress | None] = reactive(None)
 
-    def __init__(self, step: Step) -> None:
+    def __init__(self, step: Step, live: LiveBuffer, refresh: float = 0.25) -> None:
         super().__init__()
         self.step = step
+        self._live = live
+        self._refresh = refresh
+
+    def on_mount(self) -> None:
+        if self._refresh > 0:
+            self.set_interval(self._refresh, self.draw_live)
 
     def compose(self) -> ComposeResult:
         plans = dict(self.step.plans)
         m = plans["manual"]
-        yield Static(
+        yield Prose(
             f"F5: {m.periods} steps 0 → {m.high:g} V, {m.half_period:g} s each, at "
             f"{m.ts * 1000:g} ms. F6: the same at {plans['fast'].ts * 1000:g} ms. F2 stops.",
             classes="hint",
         )
         yield ProgressBar(total=100, show_eta=False, id="run-progress")
-        yield Static("", id="run-status")
+        yield Prose("", id="run-status")
         with Horizontal(classes="plots"):
             yield TracePlot("25 ms run", "t [s]", "omega [rad/s]", id="plot-slow")
             yield TracePlot("5 ms run", "t [s]", "omega [rad/s]", id="plot-fast")
-        yield Static(FAST_WHY, classes="para")
+        yield Prose(FAST_WHY, classes="para")
         yield Static("", id="t-readings")
 
     def build(self, session: Session) -> tuple[RunView, ...]:
@@ -60,36 +74,59 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
 
     @property
     def recording(self) -> bool:
-        """Whether a run is being recorded now."""
-        return self.run_progress is not None and self.run_progress.recording
+        """Whether a run is being recorded (or waits for the wheel to stand) now."""
+        p = self.run_progress
+        return p is not None and (p.recording or p.waiting)
 
     def watch_run_progress(self, old: RunProgress | None, new: RunProgress | None) -> None:
-        """Move the bar and say where the run is: while it records and when it ends (a run
-        that ended before the panel was shown leaves the bar alone)."""
-        if new is None or not (new.recording or (old is not None and old.recording)):
+        """Move the bar and say where the run is: while it waits and records, and when it
+        ends (a run that ended before the panel was shown leaves the bar alone)."""
+        busy = old is not None and (old.recording or old.waiting)
+        if new is None or not (new.recording or new.waiting or busy):
             return
         self.call_later(self._progress, new)
 
     def _progress(self, p: RunProgress) -> None:
         self.query_one(ProgressBar).update(progress=100 * p.fraction)
-        self.query_one("#run-status", Static).update(p.text)
+        self.query_one("#run-status", Prose).update(p.text)
+        if self._refresh <= 0:
+            self.draw_live()
+
+    def draw_live(self) -> None:
+        """While a run records: plot what has arrived of it, from the live buffer."""
+        p = self.run_progress
+        if p is None or not p.recording or p.t0 is None or p.kind not in PLOT_OF:
+            return
+        t, count, _u = self._live.snapshot()
+        v = views.recording(t, count, p.t0)
+        if v.x.size == 0:
+            return
+        traces = [Trace(v.x, v.omega, "board time")]
+        if p.kind == "steps":
+            traces.append(Trace(v.x, v.omega_lab, "manual", "dot"))
+        self.query_one(PLOT_OF[p.kind], TracePlot).show(traces, (0.0, max(p.duration, 1e-3)))
 
     def show_view(self) -> None:
         runs = self.view
         if runs is None:
             return
+        live = self.run_progress.kind if self.recording and self.run_progress else ""
         for v in runs:
-            plot = self.query_one("#plot-slow" if v.kind == "steps" else "#plot-fast", TracePlot)
+            if v.kind == live:
+                continue  # being recorded again: the plot shows the new run as it arrives
+            plot = self.query_one(PLOT_OF.get(v.kind, "#plot-fast"), TracePlot)
             traces = [Trace(v.t, v.omega, "board time")]
             if v.kind == "steps":
                 traces.append(Trace(v.t, v.omega_lab, "manual", "dot"))
             plot.show(traces)
-        rows = [f"{'run':<9}{'T 63% manual':>13}{'T 63%':>9}{'T fit (95% CI)':>24}"]
+        rows = [f"{'run':<9}{'T 63% manual':>13}{'T 63%':>10}{'T fit (95% CI)':>27}"]
         for v in runs:
-            ci = f" ({v.T_ci[0]:.3f}..{v.T_ci[1]:.3f})" if v.T_ci else ""
+            ci = (
+                f" ({format_number(v.T_ci[0], 3)}..{format_number(v.T_ci[1], 3)})" if v.T_ci else ""
+            )
             rows.append(
-                f"{v.name:<9}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>9}"
-                f"{_s(v.T_ls) + ci:>24}"
+                f"{v.name:<9}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>10}"
+                f"{_s(v.T_ls) + ci:>27}"
             )
         if not runs:
             rows.append("no run yet: F5 (25 ms), then F6 (5 ms)")
@@ -99,7 +136,7 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
                 f"{v.name} ({v.samples} samples{', interrupted' if v.interrupted else ''})"
                 for v in runs
             )
-            self.query_one("#run-status", Static).update(said or "no runs recorded yet")
+            self.query_one("#run-status", Prose).update(said or "no runs recorded yet")
 
     def run_steps(self) -> None:
         """F5: the manual's plan at 25 ms."""

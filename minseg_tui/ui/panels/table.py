@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 from textual.app import ComposeResult
-from textual.widgets import DataTable, Static
+from textual.widgets import DataTable
 
 from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.views import TableView
 from minseg_tui.ui.panels.view_panel import ViewPanel
+from minseg_tui.ui.widgets.prose import Prose
 
 
 class TablePanel(ViewPanel[TableView]):
@@ -17,9 +18,9 @@ class TablePanel(ViewPanel[TableView]):
 
     def compose(self) -> ComposeResult:
         yield DataTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
-        yield Static("F7 on a cell: the formula behind it.", id="formula", classes="hint")
-        yield Static("", id="results")
-        yield Static("", id="warnings")
+        yield Prose("F7 on a cell: the formula behind it.", id="formula", classes="hint")
+        yield Prose("", id="results")
+        yield Prose("", id="warnings")
 
     def build(self, session: Session) -> TableView:
         return views.table(session)
@@ -41,8 +42,8 @@ class TablePanel(ViewPanel[TableView]):
             for label, own, comp in view.compare
             if own != "—"
         ]
-        self.query_one("#results", Static).update("\n".join(lines))
-        self.query_one("#warnings", Static).update("\n".join(f"! {w}" for w in view.warnings))
+        self.query_one("#results", Prose).update("\n".join(lines))
+        self.query_one("#warnings", Prose).update("\n".join(f"! {w}" for w in view.warnings))
 
     def formula(self) -> None:
         """Show the formula of the cell under the cursor."""
@@ -51,7 +52,7 @@ class TablePanel(ViewPanel[TableView]):
         table = self.query_one(DataTable)
         r, c = table.cursor_coordinate
         cell = self.view.rows[r][c]
-        self.query_one("#formula", Static).update(
+        self.query_one("#formula", Prose).update(
             cell.formula or f"{cell.text}: measured, no formula"
         )
 

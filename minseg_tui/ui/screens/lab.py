@@ -22,7 +22,7 @@ from textual.containers import Horizontal, VerticalScroll
 from textual.reactive import reactive
 from textual.signal import Signal
 from textual.widget import Widget
-from textual.widgets import Footer, Input, OptionList, Static
+from textual.widgets import Footer, OptionList, Static
 from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
@@ -46,6 +46,7 @@ from minseg_tui.ui.recording import RunProgress
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import FieldRow
+from minseg_tui.ui.widgets.prose import Prose
 
 V = TypeVar("V")
 
@@ -55,6 +56,9 @@ _SHORT = {
     "Tasks 6-9": "Task 6-9",
     "Model check": "Check",
 }
+
+NOTES = ".notes"
+"""The key ending of a step's own notes field."""
 
 MARKS = {"done": "✓", "started": "…", "todo": " ", "info": " "}
 """The navigator's mark of a step's status (a character, not a colour)."""
@@ -73,7 +77,8 @@ def nav_label(step: Step, status: str = "todo") -> str:
 class StepPane(VerticalScroll):
     """Title, goal, what to do, the step's own panel (and the readout it keeps in sight at the
     bottom) and its entry rows; once shown, it focuses what ``focus`` says: ``entry`` (the
-    first entry), a selector, or None (nothing)."""
+    step's first empty entry, scrolled into view; the pane itself on a step without
+    entries, so the arrow keys scroll it), a selector, or None (nothing)."""
 
     def __init__(
         self,
@@ -87,14 +92,14 @@ class StepPane(VerticalScroll):
         self.panel = panel
         self._rows = rows
         self._focus = focus
-        # With entries on the step, Tab goes straight to them (focusing one scrolls it
-        # into view); a pane of text only stays focusable so the keys can scroll it.
-        self.can_focus = not step.fields
+        # focusable where the step may land on its text (no entries, or a panel to read):
+        # the arrow keys then scroll it
+        self.can_focus = panel is not None or not step.fields
 
     def compose(self) -> ComposeResult:
-        yield Static(self.step.title, classes="title")
-        yield Static("Goal: " + self.step.goal, classes="goal")
-        yield Static("What to do: " + self.step.todo, classes="todo")
+        yield Prose(self.step.title, classes="title")
+        yield Prose("Goal: " + self.step.goal, classes="goal")
+        yield Prose("What to do: " + self.step.todo, classes="todo")
         if self.panel is not None:
             yield self.panel
             if isinstance(self.panel, LivePanel):
@@ -102,19 +107,44 @@ class StepPane(VerticalScroll):
                 if readout is not None:
                     yield readout
         yield from self._rows
+        after = getattr(self.panel, "after_rows", None)
+        if callable(after):
+            yield after()
 
     def on_mount(self) -> None:
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
         if self._focus is not None:
             self.call_after_refresh(self.focus_on, self._focus)
 
-    def focus_on(self, what: str, scroll_visible: bool = False) -> None:
-        """Focus the first entry (``entry``; the pane stays at the step's title unless
-        ``scroll_visible``) or the widget the selector ``what`` finds (scrolled into view)."""
+    def landing_row(self) -> FieldRow | None:
+        """The entry the step lands in: the first one with nothing in it, else the first;
+        on a step with a panel, its notes field does not count (the step lands at the top,
+        on what the panel shows). None: no such entry."""
+        rows = [
+            r for r in self.query(FieldRow) if self.panel is None or not r.field.key.endswith(NOTES)
+        ]
+        return next((r for r in rows if r.is_empty), rows[0] if rows else None)
+
+    def typing_row(self) -> FieldRow | None:
+        """Where keys typed outside an entry go: the landing entry, else the first empty
+        entry (a notes field too), else the first."""
+        rows = list(self.query(FieldRow))
+        return (
+            self.landing_row()
+            or next((r for r in rows if r.is_empty), None)
+            or (rows[0] if rows else None)
+        )
+
+    def focus_on(self, what: str) -> None:
+        """Focus the step's landing entry (``entry``: scrolled into view, its text selected
+        so that typing replaces it; the pane itself on a step without entries) or the widget
+        the selector ``what`` finds (scrolled into view)."""
         if what == "entry":
-            rows = self.query(FieldRow)
-            if rows:
-                rows.first().focus_input(scroll_visible)
+            row = self.landing_row()
+            if row is not None:
+                row.focus_input()
+            else:
+                self.focus()
             return
         for w in self.query(what):
             w.focus()
@@ -186,6 +216,9 @@ class LabScreen(StatusScreen):
     ) -> None:
         super().__init__()
         self.session = session
+        with session as s:
+            self.readonly = s.readonly
+            """A damaged session opened to be read only: nothing typed is stored."""
         self._live = live
         self._lab_changed = lab_changed
         self._refresh = refresh
@@ -194,6 +227,8 @@ class LabScreen(StatusScreen):
         self._jump: tuple[str | None] | None = None
         """Set by :meth:`go_to`: what to focus once its step is shown (in a tuple: the focus
         may be None, "leave it")."""
+        self._paging = False
+        """Set by PgDn/PgUp: the step shown next takes the focus, wherever it was."""
 
     def compose(self) -> ComposeResult:
         yield self.status_line()
@@ -241,7 +276,7 @@ class LabScreen(StatusScreen):
         if step.id == "table":
             return TablePanel()
         if "run_steps" in acts:
-            return StepRunPanel(step).data_bind(LabScreen.run_progress)
+            return StepRunPanel(step, self._live, self._refresh).data_bind(LabScreen.run_progress)
         if "results" in acts:
             return ResultsPanel(step)
         if "model_check" in acts:
@@ -253,7 +288,13 @@ class LabScreen(StatusScreen):
     def _rows(self, step: Step) -> list[FieldRow]:
         with self.session as s:
             return [
-                FieldRow(f, views.typed(s, f.key), views.entry(s, f.key), views.chosen(s, f.key))
+                FieldRow(
+                    f,
+                    views.typed(s, f.key),
+                    views.entry(s, f.key),
+                    views.chosen(s, f.key),
+                    readonly=self.readonly,
+                )
                 for f in step.fields
             ]
 
@@ -261,15 +302,18 @@ class LabScreen(StatusScreen):
         """Put ``step_id`` on the right and remember it in the session."""
         if self._shown == step_id:  # not the DOM: a pane mounted with the screen is not in it yet
             return
+        self.store_typed()  # what stands in the entries of the step being left
         self._shown = step_id
         step = STEPS[STEP_IDS.index(step_id)]
-        with self.session as s:
-            s.go_to(step_id)
+        if not self.readonly:
+            with self.session as s:
+                s.go_to(step_id)
         panel = self._panel_for(step)
         if self._jump is not None:
             (focus,), self._jump = self._jump, None
-        else:  # moved with PgDn/PgUp: land in the first entry; moving on the list stays there
-            focus = None if self.focused is self.query_one("#nav") else "entry"
+        else:  # moved with PgDn/PgUp: land in the step; browsing the list stays on the list
+            focus = None if self.focused is self.query_one("#nav") and not self._paging else "entry"
+        self._paging = False
         self.query(".pane").remove()
         self.query_one("#body").mount(StepPane(step, panel, self._rows(step), focus))
         self.post_message(StepShown(step))
@@ -321,7 +365,7 @@ class LabScreen(StatusScreen):
     def _selected(self, event: OptionList.OptionSelected) -> None:
         panes = self.query(StepPane)
         if panes:
-            self.call_after_refresh(panes.last().focus_on, "entry", True)
+            self.call_after_refresh(panes.last().focus_on, "entry")
 
     def go_to(self, step_id: str, focus: str | None = "entry") -> None:
         """Move the navigator (and so the pane) to ``step_id``; then focus its first entry
@@ -339,7 +383,9 @@ class LabScreen(StatusScreen):
 
     def _move(self, delta: int) -> None:
         nav = self.query_one("#nav", OptionList)
-        nav.highlighted = max(0, min(len(STEPS) - 1, (nav.highlighted or 0) + delta))
+        index = max(0, min(len(STEPS) - 1, (nav.highlighted or 0) + delta))
+        self._paging = index != nav.highlighted
+        nav.highlighted = index
 
     def action_next_step(self) -> None:
         self._move(1)
@@ -358,19 +404,23 @@ class LabScreen(StatusScreen):
         nav.display = not nav.display
 
     def on_key(self, event: events.Key) -> None:
-        """Typing on the list of steps goes into the step's first entry, not nowhere."""
+        """Typing on the list of steps (or on a step's text) goes into the step's first
+        empty entry (replacing what a filled one holds), not nowhere and never onto the end
+        of a value."""
+        panes = self.query(StepPane)
         if (
-            self.focused is not self.query_one("#nav")
+            not panes
+            or self.focused not in (self.query_one("#nav"), panes.last())
             or not event.is_printable
             or not event.character
         ):
             return
-        inputs = self.query(StepPane).last().query(Input)
-        if inputs:
+        row = panes.last().typing_row()
+        if row is not None and not row.field.options and not self.readonly:
             event.stop()
             event.prevent_default()
-            inputs.first().focus()
-            inputs.first().insert_text_at_cursor(event.character)
+            row.input.start_with(event.character)
+            self.scroll_to_widget(row, animate=False)
 
     def refresh_marks(self) -> None:
         """Update the status marks in the navigator after an entry or a run."""
@@ -382,18 +432,38 @@ class LabScreen(StatusScreen):
                 nav.replace_option_prompt_at_index(k, label)
 
     # -- what the group enters -----------------------------------------------------------
+    def store_typed(self) -> None:
+        """Store what stands in the shown step's entries and was not stored yet (any key that
+        leaves an entry, or the step, calls this): accepted or refused, as Enter does."""
+        for pane in self.query(StepPane):
+            for row in pane.query(FieldRow):
+                text = row.pending()
+                if text is not None:
+                    self._store(row, text, submitted=False)
+
+    def _store(self, row: FieldRow, text: str, submitted: bool) -> EntryView:
+        if self.readonly:
+            result = EntryView(False, "this session is open read-only (damaged): not stored")
+            row.show_result(result)
+            return result
+        with self.session as s:
+            s.enter(row.field.key, text)
+            result = views.entry(s, row.field.key) or EntryView(True)
+        row.show_result(result)
+        self._changed()
+        return result
+
     @on(FieldRow.Typed)
     def _typed(self, event: FieldRow.Typed) -> None:
-        with self.session as s:
-            s.enter(event.key, event.text)
-            result = views.entry(s, event.key) or EntryView(True)
-        event.row.show_result(result)
-        self._changed()
+        result = self._store(event.row, event.text, event.submitted)
         if result.ok and event.submitted:  # Enter on an accepted entry moves on to the next one
             self.focus_after(event.key)
 
     @on(FieldRow.Chosen)
     def _chosen(self, event: FieldRow.Chosen) -> None:
+        if self.readonly:
+            event.row.show_result(EntryView(False, "this session is open read-only: not stored"))
+            return
         with self.session as s:
             s.choose(event.key, list(event.indices))
             result = views.entry(s, event.key) or EntryView(True)

@@ -37,14 +37,17 @@ class StartScreen(StatusScreen):
 
     @dataclass
     class Resume(Message):
-        """The group picked a saved session (its folder)."""
+        """The group picked a saved session (its folder); ``readonly``: a damaged one, opened
+        to be read only."""
 
         path: str
+        readonly: bool = False
 
-    def __init__(self, sessions: Sequence[SessionInfo], today: str) -> None:
+    def __init__(self, sessions: Sequence[SessionInfo], today: str, unreadable: str = "") -> None:
         super().__init__()
-        self._sessions = list(sessions)
+        self._sessions = {str(s.path): s for s in sessions}
         self._today = today
+        self._unreadable = unreadable
 
     def compose(self) -> ComposeResult:
         yield self.status_line()
@@ -57,10 +60,12 @@ class StartScreen(StatusScreen):
             )
             yield Static("Resume a session", classes="title")
             options = [
-                Option(self._label(s), id=str(s.path), disabled=bool(why_closed(s)))
-                for s in self._sessions
+                Option(self._label(s), id=key, disabled=s.locked_by is not None)
+                for key, s in self._sessions.items()
             ]
-            if not options:
+            if self._unreadable:
+                options = [Option(f"✗ {self._unreadable}", id="", disabled=True)]
+            elif not options:
                 options = [Option("no saved sessions yet", id="", disabled=True)]
             yield OptionList(*options, id="sessions")
         yield Footer()
@@ -69,7 +74,7 @@ class StartScreen(StatusScreen):
     def _label(s: SessionInfo) -> str:
         why = why_closed(s)
         if why:
-            return f"{s.path}: {why}"
+            return f"{s.path}: {why}" + (" (Enter opens it read-only)" if s.damaged else "")
         return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {s.last_step}"
 
     @on(Input.Submitted)
@@ -84,5 +89,6 @@ class StartScreen(StatusScreen):
 
     @on(OptionList.OptionSelected, "#sessions")
     def _picked(self, event: OptionList.OptionSelected) -> None:
-        if event.option.id:
-            self.post_message(self.Resume(event.option.id))
+        info = self._sessions.get(event.option.id or "")
+        if info is not None:
+            self.post_message(self.Resume(str(info.path), readonly=bool(info.damaged)))

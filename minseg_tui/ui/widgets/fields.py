@@ -6,15 +6,16 @@ import re
 from dataclasses import dataclass
 
 from rich.segment import Segment
-from textual import on
+from textual import events, on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
 from textual.message import Message
 from textual.strip import Strip
-from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList, Static
+from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList
 
 from minseg_tui.lab.steps import Field
 from minseg_tui.lab.views import EntryView
+from minseg_tui.ui.widgets.prose import Prose
 
 
 def field_id(key: str) -> str:
@@ -52,10 +53,43 @@ class Ticks(SelectionList[int]):
         return Strip(segments, strip.cell_length)
 
 
+class EntryBox(Input):
+    """The text box of an entry: focusing it selects what it holds (typing replaces it),
+    except right after :meth:`start_with`, which begins it with a typed character."""
+
+    def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
+        super().__init__(
+            value=value,
+            classes="field-input",
+            select_on_focus=True,
+            placeholder=placeholder,
+            disabled=disabled,
+        )
+
+    def start_with(self, character: str) -> None:
+        """Replace the text with ``character`` (typed somewhere else, e.g. on the list of
+        steps), focus the box and go on typing after it (this focus selects nothing)."""
+        self.value = character
+        self.cursor_position = len(character)
+        self.select_on_focus = False
+        self.focus()
+
+    # Textual calls the handler of every class in the MRO: these run before Input's own.
+    def on_key(self, event: events.Key) -> None:
+        self.select_on_focus = True  # the next focus selects again
+
+    def on_blur(self, event: events.Blur) -> None:
+        self.select_on_focus = True
+
+
 class FieldRow(Vertical):
-    """One entry. Enter or leaving the field posts :class:`FieldRow.Typed`; a choice field is a
-    list to tick with the keys (arrows, Space or Enter) and posts :class:`FieldRow.Chosen`. The
-    screen answers with :meth:`show_result`."""
+    """One entry. Enter or leaving the field posts :class:`FieldRow.Typed` (and the screen
+    takes what stands in it with :meth:`pending` before any key that leaves the step); a
+    choice field is a list to tick with the keys (arrows, Space or Enter) and posts
+    :class:`FieldRow.Chosen`. The screen answers with :meth:`show_result`.
+
+    Typing never lands on the end of a value: focusing the box selects what it holds, and so
+    does Enter, so the next keys replace it (an arrow key or Home/End keeps it to edit)."""
 
     @dataclass
     class Chosen(Message):
@@ -80,6 +114,7 @@ class FieldRow(Vertical):
         text: str,
         result: EntryView | None = None,
         chosen: tuple[int, ...] = (),
+        readonly: bool = False,
     ) -> None:
         super().__init__(
             id=field_id(field.key), classes="field choice" if field.options else "field"
@@ -89,6 +124,7 @@ class FieldRow(Vertical):
         self._result = result
         self._sent: str | None = text
         self._chosen = tuple(chosen)
+        self._readonly = readonly
 
     def compose(self) -> ComposeResult:
         unit = f" [{self.field.unit}]" if self.field.unit else ""
@@ -110,29 +146,45 @@ class FieldRow(Vertical):
         else:
             with Horizontal(classes="field-line"):
                 yield Label(f"{self.field.label}{unit}", classes="field-label")
-                yield Input(
-                    value=self._text,
-                    classes="field-input",
-                    select_on_focus=False,
-                    placeholder=self.field.hint,
-                )
-        yield Static("", classes="field-msg")
+                yield EntryBox(self._text, self.field.hint, self._readonly)
+        yield Prose("", classes="field-msg")
 
     def on_mount(self) -> None:
         if self._result is not None:
             self.show_result(self._result)
 
     @property
-    def input(self) -> Input:
+    def input(self) -> EntryBox:
         """The text box."""
-        return self.query_one(Input)
+        return self.query_one(EntryBox)
 
-    def focus_input(self, scroll_visible: bool = True) -> None:
-        """Focus the text box or the list of options (``scroll_visible``: and scroll it into
-        view)."""
+    @property
+    def is_empty(self) -> bool:
+        """Nothing typed or ticked here yet (nor stored)."""
+        if self.field.options:
+            return not self._chosen
+        return not self.input.value.strip() and not (self._sent or "").strip()
+
+    def focus_input(self) -> None:
+        """Focus the text box (what it holds selected: typing replaces it) or the list of
+        options, and scroll it into view."""
         for w in self.query(".field-input, .field-choice"):
-            w.focus(scroll_visible)
+            w.focus()
+            if isinstance(w, Input):
+                w.select_all()
+            self.screen.scroll_to_widget(self, animate=False)
             return
+
+    def pending(self) -> str | None:
+        """The text standing in the box that the lab does not hold yet (None when there is
+        none); from now on it counts as sent."""
+        if self.field.options or self._readonly:
+            return None
+        text = self.input.value
+        if text == self._sent:
+            return None
+        self._sent = text
+        return text
 
     def _choose(self, indices: tuple[int, ...]) -> None:
         if indices != self._chosen:
@@ -152,7 +204,7 @@ class FieldRow(Vertical):
     @property
     def message(self) -> str:
         """The message shown under the box (plain text)."""
-        return str(self.query_one(".field-msg", Static).render())
+        return self.query_one(".field-msg", Prose).text
 
     @property
     def sent(self) -> str | None:
@@ -178,7 +230,7 @@ class FieldRow(Vertical):
         msgs = self.query(".field-msg")
         if not msgs:
             return
-        msgs.first(Static).update("\n".join(parts))
+        msgs.first(Prose).update("\n".join(parts))
         self.set_class(not result.ok, "refused")
         self.set_class(bool(result.warnings), "warned")
 
@@ -194,6 +246,7 @@ class FieldRow(Vertical):
         event.stop()
         self._sent = None  # Enter always re-sends
         self._send(submitted=True)
+        self.input.select_all()  # if the focus stays here, the next keys replace the value
 
     @on(Input.Blurred)
     def _blurred(self, event: Input.Blurred) -> None:

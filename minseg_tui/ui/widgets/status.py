@@ -37,12 +37,17 @@ def status_text(info: DeviceInfo | None, link: LinkState, motor: str, width: int
 
 class DeviceStatus(Static):
     """Always-visible device line: shows ``device``, ``link`` and ``motor`` (bound to the
-    app's state by the screen)."""
+    app's state by the screen); below it, while the session cannot be saved, ``saving``
+    (what is wrong and where it will save)."""
 
     device: reactive[DeviceInfo | None] = reactive(None)
     link: reactive[LinkState] = reactive(LinkState())
     motor: reactive[str] = reactive("off")
+    saving: reactive[str] = reactive("", layout=True)
 
     def render(self) -> str:
         width = self.size.width or 78
-        return status_text(self.device, self.link, self.motor, width)
+        line = status_text(self.device, self.link, self.motor, width)
+        if self.saving:
+            return f"{line}\n! {self.saving} (Ctrl+P → Save the session to another folder)"
+        return line

@@ -1,0 +1,92 @@
+"""The two questions a failed save brings: quit anyway? and: save where instead?"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from textual import on
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Vertical
+from textual.screen import ModalScreen
+from textual.widgets import Input, OptionList
+from textual.widgets.option_list import Option
+
+from minseg_tui.ui.widgets.prose import Prose
+
+QUIT_CHOICES: tuple[tuple[str, str], ...] = (
+    ("keep", "Keep working (it keeps trying to save)"),
+    ("move", "Save the session to another folder…"),
+    ("quit", "Quit anyway: what is not saved is lost"),
+)
+"""What the group can do when quitting with something not on disk: (answer, words)."""
+
+
+class QuitScreen(ModalScreen[str]):
+    """Asks before quitting while the session is not all on disk; dismissed with ``keep``,
+    ``move`` or ``quit`` (Escape: keep)."""
+
+    BINDINGS = [Binding("escape", "keep", "Keep working")]
+
+    def __init__(self, problem: str) -> None:
+        super().__init__()
+        self._problem = problem
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="ask", classes="dialog"):
+            yield Prose("Not everything is saved", classes="title")
+            yield Prose(self._problem, classes="para")
+            yield OptionList(*[Option(text, id=key) for key, text in QUIT_CHOICES], id="answers")
+
+    def on_mount(self) -> None:
+        self.query_one("#answers", OptionList).focus()
+
+    @on(OptionList.OptionSelected, "#answers")
+    def _answer(self, event: OptionList.OptionSelected) -> None:
+        self.dismiss(event.option.id or "keep")
+
+    def action_keep(self) -> None:
+        self.dismiss("keep")
+
+
+class SaveElsewhereScreen(ModalScreen[None]):
+    """Asks for a folder and saves the session there with ``save`` (it returns the one line
+    to show); stays open on a refusal so another folder can be typed. Escape closes."""
+
+    BINDINGS = [Binding("escape", "close", "Close")]
+
+    def __init__(self, suggestion: str, save: Callable[[str], str]) -> None:
+        super().__init__()
+        self._suggestion = suggestion
+        self._save = save
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="ask", classes="dialog"):
+            yield Prose("Save the session to another folder", classes="title")
+            yield Prose(
+                "Type a folder that can be written (a home folder, another stick) and press "
+                "Enter; the session is saved in a new folder inside it and goes on there.",
+                classes="para",
+            )
+            yield Input(value=self._suggestion, id="folder", select_on_focus=True)
+            yield Prose("", id="saved")
+
+    def on_mount(self) -> None:
+        self.query_one("#folder", Input).focus()
+
+    @on(Input.Submitted, "#folder")
+    def _submitted(self, event: Input.Submitted) -> None:
+        event.stop()
+        folder = event.value.strip()
+        if not folder:
+            self.query_one("#saved", Prose).update("✗ type a folder first")
+            return
+        said = self._save(folder)
+        if said.startswith("✗"):
+            self.query_one("#saved", Prose).update(said)
+            return
+        self.app.notify(said, title="session", timeout=10)
+        self.dismiss(None)
+
+    def action_close(self) -> None:
+        self.dismiss(None)
