@@ -163,7 +163,9 @@ class FieldRow(Vertical):
         """Nothing typed or ticked here yet (nor stored)."""
         if self.field.options:
             return not self._chosen
-        return not self.input.value.strip() and not (self._sent or "").strip()
+        boxes = self.query(EntryBox)  # none yet while the row is being composed
+        typed = boxes.first().value if boxes else self._text
+        return not typed.strip() and not (self._sent or "").strip()
 
     def focus_input(self) -> None:
         """Focus the text box (what it holds selected: typing replaces it) or the list of
