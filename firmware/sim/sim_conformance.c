@@ -8,49 +8,27 @@
  * delivers them (it times the UART without U2X: 40 us a byte), so a long line
  * reaches the firmware whole, as on a wire, and never overflows simavr's FIFO.
  * Usage: sim_conformance firmware.elf PROFILE conformance.txt
- * The libsimavr entry points are declared in simavr_api.h. */
+ * Booting, the UART, the clock and the checksum are in sim_board.c. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "simavr_api.h"
+#include "sim_board.h"
 
 #define FIRMWARE_NAME "minseg-fw 2.0.0"
 #define SETTLE_US 4000
 #define SYNC_MAX_US 200000
 #define BOOT_MAX_US 100000
-#define LINE_CAP 400
-
-static avr_t *avr;
-static avr_irq_t *uart_in;
-static uint32_t uart_flags; /* no echo of the UART output to stdout */
-static uint64_t now_us;     /* simulated time, advanced by a 100 us cycle timer */
-
-/* bytes waiting to go to the board */
-static unsigned char tx[LINE_CAP + 2];
-static size_t tx_len, tx_pos;
 
 /* lines from the board: samples and $BOOT counted, the rest queued */
 #define QUEUE_CAP 64
-static char queue[QUEUE_CAP][LINE_CAP];
+static char queue[QUEUE_CAP][SIM_LINE_CAP];
 static int q_head, q_len;
-static char cur[LINE_CAP];
-static size_t cur_len;
 static long last_u;
 static int have_u;
 static long samples, boots;
 static int failures;
-
-static unsigned crc16(const char *s, size_t n) { /* CRC-16/CCITT-FALSE, bit by bit */
-  unsigned crc = 0xFFFF;
-  for (size_t i = 0; i < n; ++i) {
-    crc ^= (unsigned)(unsigned char)s[i] << 8;
-    for (int b = 0; b < 8; ++b)
-      crc = (crc & 0x8000u) ? ((crc << 1) ^ 0x1021u) & 0xFFFFu : (crc << 1) & 0xFFFFu;
-  }
-  return crc;
-}
 
 static void on_line(const char *line) {
   if (strncmp(line, "$S,", 3) == 0) {
@@ -63,7 +41,7 @@ static void on_line(const char *line) {
   } else if (strncmp(line, "$BOOT,", 6) == 0) {
     ++boots;
   } else if (q_len < QUEUE_CAP) {
-    snprintf(queue[(q_head + q_len) % QUEUE_CAP], LINE_CAP, "%s", line);
+    snprintf(queue[(q_head + q_len) % QUEUE_CAP], SIM_LINE_CAP, "%s", line);
     ++q_len;
   } else {
     printf("FAIL: more than %d lines not yet expected\n", QUEUE_CAP);
@@ -71,50 +49,15 @@ static void on_line(const char *line) {
   }
 }
 
-static void on_uart_byte(avr_irq_t *irq, uint32_t value, void *param) {
-  (void)irq;
-  (void)param;
-  char c = (char)value;
-  if (c == '\n') {
-    cur[cur_len] = '\0';
-    on_line(cur);
-    cur_len = 0;
-  } else if (cur_len < LINE_CAP - 1) {
-    cur[cur_len++] = c;
-  }
-}
-
-static avr_cycle_count_t tick(avr_t *a, avr_cycle_count_t when, void *param) {
-  (void)a;
-  (void)param;
-  now_us += 100;
-  for (int k = 0; k < 2 && tx_pos < tx_len; ++k) avr_raise_irq(uart_in, tx[tx_pos++]);
-  return when + 1600; /* 100 us at 16 MHz */
-}
-
-static void run_for_us(uint64_t us) {
-  uint64_t end = now_us + us;
-  while (now_us < end) {
-    int st = avr_run(avr);
-    if (st == cpu_Done || st == cpu_Crashed) {
-      printf("FAIL: simulated CPU stopped (state %d)\n", st);
-      exit(1);
-    }
-  }
-}
-
 static void send_bytes(const unsigned char *s, size_t n) {
-  memcpy(tx, s, n);
-  tx_len = n;
-  tx_pos = 0;
-  while (tx_pos < tx_len) run_for_us(100);
-  run_for_us(SETTLE_US);
+  sim_send_paced(s, n);
+  sim_run_for_us(SETTLE_US);
 }
 
 static void wait_boot(void) {
   long before = boots;
-  uint64_t end = now_us + BOOT_MAX_US;
-  while (boots == before && now_us < end) run_for_us(100);
+  uint64_t end = sim_now_us() + BOOT_MAX_US;
+  while (boots == before && sim_now_us() < end) sim_run_for_us(100);
   if (boots == before) {
     printf("FAIL: no $BOOT after a reset\n");
     failures++;
@@ -122,18 +65,14 @@ static void wait_boot(void) {
 }
 
 static void reset_board(void) {
-  avr_reset(avr);
-  avr_ioctl(avr, UART_SET_FLAGS('0'), &uart_flags);
-  avr_cycle_timer_register_usec(avr, 100, tick, NULL); /* a reset clears the timers */
-  cur_len = 0;
-  tx_len = tx_pos = 0;
+  sim_board_reset();
   wait_boot();
 }
 
 /* \r \n \t \0 \\ \xHH; returns the number of bytes */
 static size_t unescape(const char *s, unsigned char *out) {
   size_t n = 0;
-  while (*s && n < LINE_CAP) {
+  while (*s && n < SIM_LINE_CAP) {
     if (s[0] == '\\' && s[1]) {
       char e = s[1];
       if (e == 'x' && s[2] && s[3]) {
@@ -151,12 +90,12 @@ static size_t unescape(const char *s, unsigned char *out) {
   return n;
 }
 
-/* replace every `from` in s by `to` (in place, s has LINE_CAP bytes) */
+/* replace every `from` in s by `to` (in place, s has SIM_LINE_CAP bytes) */
 static void replace(char *s, const char *from, const char *to) {
-  char out[LINE_CAP];
+  char out[SIM_LINE_CAP];
   size_t n = 0, lf = strlen(from), lt = strlen(to);
-  for (const char *p = s; *p && n < LINE_CAP - 1;) {
-    if (strncmp(p, from, lf) == 0 && n + lt < LINE_CAP - 1) {
+  for (const char *p = s; *p && n < SIM_LINE_CAP - 1;) {
+    if (strncmp(p, from, lf) == 0 && n + lt < SIM_LINE_CAP - 1) {
       memcpy(out + n, to, lt);
       n += lt;
       p += lf;
@@ -170,15 +109,15 @@ static void replace(char *s, const char *from, const char *to) {
 
 static void expected_line(const char *text, const char *profile, char *want) {
   size_t len = strlen(text);
-  if (len > LINE_CAP - 1) len = LINE_CAP - 1;
+  if (len > SIM_LINE_CAP - 1) len = SIM_LINE_CAP - 1;
   memcpy(want, text, len);
   want[len] = '\0';
   replace(want, "{fw}", FIRMWARE_NAME);
   replace(want, "{board}", profile);
   size_t n = strlen(want);
   if (n > 6 && strcmp(want + n - 6, "*{crc}") == 0) {
-    unsigned cs = crc16(want + 1, n - 7);
-    snprintf(want + n - 5, LINE_CAP - (n - 5), "%04X", cs);
+    unsigned cs = sim_crc16(want + 1, n - 7);
+    snprintf(want + n - 5, SIM_LINE_CAP - (n - 5), "%04X", cs);
   }
 }
 
@@ -202,35 +141,17 @@ int main(int argc, char **argv) {
     fprintf(stderr, "cannot read %s\n", argv[3]);
     return 2;
   }
-  static unsigned char fw[1 << 16]; /* elf_firmware_t, zero-initialised */
-  if (elf_read_firmware(argv[1], fw) != 0) {
-    fprintf(stderr, "cannot read %s\n", argv[1]);
-    return 2;
-  }
-  uint32_t freq = 16000000u;
-  memcpy(fw + FW_FREQUENCY_OFFSET, &freq, sizeof freq);
-  avr = avr_make_mcu_by_name("atmega2560");
-  if (!avr) {
-    fprintf(stderr, "simavr has no atmega2560 core\n");
-    return 2;
-  }
-  avr_init(avr);
-  avr_load_firmware(avr, fw);
-  avr_irq_register_notify(avr_io_getirq(avr, UART_GETIRQ('0'), UART_IRQ_OUTPUT), on_uart_byte,
-                          NULL);
-  uart_in = avr_io_getirq(avr, UART_GETIRQ('0'), UART_IRQ_INPUT);
-  avr_ioctl(avr, UART_SET_FLAGS('0'), &uart_flags);
-  avr_cycle_timer_register_usec(avr, 100, tick, NULL);
+  if (!sim_board_boot(argv[1], on_line)) return 2;
   wait_boot();
 
-  char raw[LINE_CAP + 8];
+  char raw[SIM_LINE_CAP + 8];
   int number = 0, steps = 0;
   while (fgets(raw, sizeof raw, script)) {
     ++number;
     raw[strcspn(raw, "\n")] = '\0';
     if (raw[0] == '\0' || raw[0] == '#') continue;
     ++steps;
-    unsigned char bytes[LINE_CAP + 2];
+    unsigned char bytes[SIM_SEND_CAP];
     if (strncmp(raw, ">>", 2) == 0 || raw[0] == '>') {
       int newline = strncmp(raw, ">>", 2) != 0;
       const char *arg = raw + (newline ? 1 : 2);
@@ -240,7 +161,7 @@ int main(int argc, char **argv) {
       if (newline) bytes[n++] = '\n';
       send_bytes(bytes, n);
     } else if (strncmp(raw, "< ", 2) == 0) {
-      char want[LINE_CAP];
+      char want[SIM_LINE_CAP];
       expected_line(raw + 2, profile, want);
       if (q_len == 0) {
         printf("FAIL conformance.txt:%d: expected %s, got nothing\n", number, want);
@@ -255,11 +176,11 @@ int main(int argc, char **argv) {
         q_len--;
       }
     } else if (strncmp(raw, "= ", 2) == 0) {
-      run_for_us((uint64_t)(atof(raw + 2) * 1000.0 + 0.5));
+      sim_run_for_us((uint64_t)(atof(raw + 2) * 1000.0 + 0.5));
     } else if (strcmp(raw, "sync") == 0) {
       long before = samples;
-      uint64_t end = now_us + SYNC_MAX_US;
-      while (samples == before && now_us < end) run_for_us(100);
+      uint64_t end = sim_now_us() + SYNC_MAX_US;
+      while (samples == before && sim_now_us() < end) sim_run_for_us(100);
       if (samples == before) {
         printf("FAIL conformance.txt:%d: no sample line within 200 ms\n", number);
         failures++;
@@ -282,6 +203,6 @@ int main(int argc, char **argv) {
   fclose(script);
   checkpoint(number + 1);
   printf("conformance (%s): %d steps, %d failed; %ld samples in %.3f s of simulated time\n",
-         profile, steps, failures, samples, (double)now_us / 1e6);
+         profile, steps, failures, samples, (double)sim_now_us() / 1e6);
   return failures == 0 ? 0 : 1;
 }

@@ -9,80 +9,25 @@
  *      then samples with u = 0),
  *   6. keeps up at the shortest period, 2 ms: no gaps in seq, t_us 2 ms apart.
  * Usage: sim_handshake firmware.elf PROFILE
- * The libsimavr entry points are declared in simavr_api.h. */
+ * Booting, the UART, the clock and the checksum are in sim_board.c. */
 #include <stdint.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#include "simavr_api.h"
-
-static avr_t *avr;
-static avr_irq_t *uart_in;
-static uint64_t now_us; /* simulated time, advanced by a 100 us cycle timer */
+#include "sim_board.h"
 
 #define MAX_LINES 1024
 static char lines[MAX_LINES][96];
 static uint64_t line_time_us[MAX_LINES];
 static int n_lines;
-static char cur[96];
-static int cur_len;
 static int failures;
 
-static void on_uart_byte(avr_irq_t *irq, uint32_t value, void *param) {
-  (void)irq;
-  (void)param;
-  char c = (char)value;
-  if (c == '\n') {
-    cur[cur_len] = '\0';
-    if (n_lines < MAX_LINES) {
-      strcpy(lines[n_lines], cur);
-      line_time_us[n_lines] = now_us;
-      n_lines++;
-    }
-    cur_len = 0;
-  } else if (cur_len < 95) {
-    cur[cur_len++] = c;
+static void on_line(const char *line) {
+  if (n_lines < MAX_LINES) {
+    snprintf(lines[n_lines], sizeof lines[n_lines], "%s", line);
+    line_time_us[n_lines] = sim_now_us();
+    n_lines++;
   }
-}
-
-static avr_cycle_count_t tick(avr_t *a, avr_cycle_count_t when, void *param) {
-  (void)a;
-  (void)param;
-  now_us += 100;
-  return when + 1600; /* 100 us at 16 MHz */
-}
-
-static void run_until_us(uint64_t t) {
-  while (now_us < t) {
-    int st = avr_run(avr);
-    if (st == cpu_Done || st == cpu_Crashed) {
-      printf("FAIL: simulated CPU stopped (state %d)\n", st);
-      exit(1);
-    }
-  }
-}
-
-static void send(const char *s) {
-  for (const char *p = s; *p; ++p) avr_raise_irq(uart_in, (uint8_t)*p);
-}
-
-/* CRC-16/CCITT-FALSE, bit by bit (PROTOCOL.md, "Frame") */
-static unsigned crc16(const char *s, size_t n) {
-  unsigned crc = 0xFFFF;
-  for (size_t i = 0; i < n; ++i) {
-    crc ^= (unsigned)(unsigned char)s[i] << 8;
-    for (int b = 0; b < 8; ++b) crc = (crc & 0x8000u) ? ((crc << 1) ^ 0x1021u) & 0xFFFFu : (crc << 1) & 0xFFFFu;
-  }
-  return crc;
-}
-
-static int checksum_ok(const char *line) {
-  const char *star = strrchr(line, '*');
-  if (line[0] != '$' || !star || strlen(star) != 5) return 0;
-  char hex[8];
-  snprintf(hex, sizeof hex, "%04X", crc16(line + 1, (size_t)(star - line - 1)));
-  return strcmp(hex, star + 1) == 0;
 }
 
 static void expect(int ok, const char *what) {
@@ -103,7 +48,7 @@ struct sample {
 };
 
 static int parse_sample(const char *line, struct sample *s) {
-  return checksum_ok(line) &&
+  return sim_checksum_ok(line) &&
          sscanf(line, "$S,%lu,%lu,%ld,%ld*", &s->seq, &s->t, &s->count, &s->u) == 4;
 }
 
@@ -133,32 +78,13 @@ int main(int argc, char **argv) {
     return 2;
   }
 
-  static unsigned char fw[1 << 16]; /* elf_firmware_t, zero-initialised */
-  if (elf_read_firmware(argv[1], fw) != 0) {
-    fprintf(stderr, "cannot read %s\n", argv[1]);
-    return 2;
-  }
-  uint32_t freq = 16000000u;
-  memcpy(fw + FW_FREQUENCY_OFFSET, &freq, sizeof freq);
-  avr = avr_make_mcu_by_name("atmega2560");
-  if (!avr) {
-    fprintf(stderr, "simavr has no atmega2560 core\n");
-    return 2;
-  }
-  avr_init(avr);
-  avr_load_firmware(avr, fw);
-
-  avr_irq_register_notify(avr_io_getirq(avr, UART_GETIRQ('0'), UART_IRQ_OUTPUT), on_uart_byte,
-                          NULL);
-  uart_in = avr_io_getirq(avr, UART_GETIRQ('0'), UART_IRQ_INPUT);
-  uint32_t uart_flags = 0; /* no echo of the UART output to stdout */
-  avr_ioctl(avr, UART_SET_FLAGS('0'), &uart_flags);
+  avr_t *avr = sim_board_boot(argv[1], on_line);
+  if (!avr) return 2;
   avr_irq_t *pin_a = avr_io_getirq(avr, IOPORT_GETIRQ(enc->port_a), enc->bit_a);
   avr_irq_t *pin_b = avr_io_getirq(avr, IOPORT_GETIRQ(enc->port_b), enc->bit_b);
-  avr_cycle_timer_register_usec(avr, 100, tick, NULL);
 
   /* 1. boot line */
-  run_until_us(5000);
+  sim_run_until_us(5000);
   expect(n_lines >= 1 && strcmp(lines[0], "$BOOT,minseg-fw 2.0.0,2*0053") == 0,
          "boot line $BOOT,minseg-fw 2.0.0,2*0053");
 
@@ -166,21 +92,22 @@ int main(int argc, char **argv) {
   avr_raise_irq(pin_a, 1); /* encoder idle high (pull-ups) */
   avr_raise_irq(pin_b, 1);
   int before = n_lines;
-  send("ID\n");
-  run_until_us(now_us + 5000);
+  sim_send("ID\n");
+  sim_run_for_us(5000);
   char want_id[96];
   snprintf(want_id, sizeof want_id, "$ID,minseg-fw 2.0.0,2,%s,720,25000,5000,BRAKE*", profile);
   int id = find_line(before, "$ID,");
-  expect(id >= 0 && strncmp(lines[id], want_id, strlen(want_id)) == 0 && checksum_ok(lines[id]),
+  expect(id >= 0 && strncmp(lines[id], want_id, strlen(want_id)) == 0 &&
+             sim_checksum_ok(lines[id]),
          "reply to ID names firmware, protocol 2 and the profile");
   if (id >= 0) printf("      %s\n", lines[id]);
 
   /* 3. V and the sample stream */
   before = n_lines;
-  send("$V,2500*ACE8\n");
-  run_until_us(now_us + 5000);
+  sim_send("$V,2500*ACE8\n");
+  sim_run_for_us(5000);
   expect(find_line(before, "$OK,V,2500*61E5") >= 0, "V,2500 -> $OK,V,2500*61E5");
-  run_until_us(now_us + 100000);
+  sim_run_for_us(100000);
   struct sample s[8];
   int ns = 0;
   for (int i = before; i < n_lines && ns < 8; ++i)
@@ -203,12 +130,12 @@ int main(int argc, char **argv) {
   for (int k = 0; k < 8 && encoder_simulated; ++k) {
     avr_raise_irq(pin_a, (uint32_t)fa[k % 4]);
     avr_raise_irq(pin_b, (uint32_t)fb[k % 4]);
-    run_until_us(now_us + 1000);
+    sim_run_for_us(1000);
   }
-  uint64_t silent_from = now_us; /* the last command */
-  send("PING\n");
+  uint64_t silent_from = sim_now_us(); /* the last command */
+  sim_send("PING\n");
   before = n_lines;
-  run_until_us(now_us + 60000);
+  sim_run_for_us(60000);
   ns = 0;
   for (int i = before; i < n_lines && ns < 8; ++i)
     if (parse_sample(lines[i], &s[ns])) ns++;
@@ -223,7 +150,7 @@ int main(int argc, char **argv) {
 
   /* 5. watchdog: silence for more than 1 s */
   before = n_lines;
-  run_until_us(now_us + 1200000);
+  sim_run_for_us(1200000);
   int wd = find_line(before, "$EV,WDOG*EBC5");
   expect(wd >= 0, "host silent: $EV,WDOG*EBC5");
   if (wd >= 0) {
@@ -241,12 +168,12 @@ int main(int argc, char **argv) {
   }
 
   /* 6. the fastest sample period: 2 ms, 500 samples/s through the UART */
-  send("P,2000\n");
-  run_until_us(now_us + 5000);
+  sim_send("P,2000\n");
+  sim_run_for_us(5000);
   int ok_p = find_line(before, "$OK,P,2000*");
   expect(ok_p >= 0, "P,2000 -> $OK,P,2000");
   int first = n_lines;
-  run_until_us(now_us + 200000);
+  sim_run_for_us(200000);
   struct sample prev, cur_s;
   int n_fast = 0, fast_ok = 1;
   long dt_min = 1000000, dt_max = 0;
@@ -266,6 +193,6 @@ int main(int argc, char **argv) {
          "2 ms period: no seq gap, t_us 2000 +- 100 apart");
 
   printf("%d checks failed; %d lines received in %.3f s of simulated time\n", failures, n_lines,
-         (double)now_us / 1e6);
+         (double)sim_now_us() / 1e6);
   return failures == 0 ? 0 : 1;
 }
