@@ -267,7 +267,7 @@ def _report(
     keep_dev &= keep
     devs = deviations(u, np.where(keep_dev, y - b_pred, 0.0), base.T, samp.ts, keep_dev)
     misses = miss is not None
-    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged)
+    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full)
 
     # anomalies, against the model the finding settles on
     res = full.y - e_pred
@@ -404,6 +404,7 @@ def _finding(
     level: float,
     miss: tuple[float, str, float] | None,
     unjudged: dict[str, str],
+    full: Problem,
 ) -> Finding:
     floor = samp.floor if samp.resolution_how.startswith("# cpr") else None
     taps = ext.effects.taps
@@ -491,7 +492,7 @@ def _finding(
         f"{WORDS[cause](log, ext, floor)}. It removes {100 * v.reduction:.1f} % of the "
         f"whitened residual the model leaves without it (criterion gain {v.d:.0f})"
     )
-    runner, why = _runner_up(sel, ext)
+    runner, why = _runner_up(sel, ext, full)
     if runner:
         evidence += f"; {why}"
     others = []
@@ -532,8 +533,11 @@ def _none_runner(sel: Selection) -> tuple[str | None, str]:
     )
 
 
-def _runner_up(sel: Selection, ext: Fit) -> tuple[str | None, str]:
-    """The best other explanation with as many causes, and why it lost."""
+def _runner_up(sel: Selection, ext: Fit, full: Problem) -> tuple[str | None, str]:
+    """The best other explanation with as many causes, and why it lost. A runner-up whose
+    whitened residual is smaller but whose simulated speed misses the measured one by more
+    (an average's residual cancels in the whitening sums) is said to miss the speed, with
+    both rms errors (rad/s), not to fit better."""
     k = len(ext.causes)
     pool = [f for f in ([*sel.singles.values()] if k == 1 else sel.tried) if len(f.causes) == k]
     pool = [f for f in pool if set(f.causes) != set(ext.causes) and math.isfinite(f.sse_white)]
@@ -543,11 +547,21 @@ def _runner_up(sel: Selection, ext: Fit) -> tuple[str | None, str]:
     name = best.name
     new = [c for c in best.causes if c not in ext.causes]
     reason = next((sel.left_out[c] for c in new if c in sel.left_out), None)
-    if best.sse_white < ext.sse_white and reason:
-        return name, (
-            f"the next best explanation ({name}) leaves less whitened residual but is not "
-            f"named: {reason}"
-        )
+    if best.sse_white < ext.sse_white:
+        keep = full.weights > 0
+        e_rms = _rmse_kept(full.y, ext.predict(full), keep)
+        b_rms = _rmse_kept(full.y, best.predict(full), keep)
+        if b_rms > e_rms:
+            return name, (
+                f"the next best explanation ({name}) leaves less whitened residual, but its "
+                f"simulated speed misses the measured speed by more (rmse {b_rms:.3g} rad/s "
+                f"against {e_rms:.3g} rad/s)" + (f", and {reason}" if reason else "")
+            )
+        if reason:
+            return name, (
+                f"the next best explanation ({name}) leaves less whitened residual but is not "
+                f"named: {reason}"
+            )
     ratio = best.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
     return name, (
         f"the next best explanation ({name}) leaves {ratio:.1f} times as much whitened residual"
