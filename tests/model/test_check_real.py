@@ -243,3 +243,28 @@ def test_a_runner_up_that_misses_the_speed_more_is_not_said_to_fit_better(name):
     assert named == pytest.approx(r.extended.rmse, rel=5e-3)
     assert runner > 1.2 * named
     assert "misses the measured speed by more" in why
+
+
+@pytest.mark.parametrize("name", ["rtl-dc-5to15V-noload", "rtl-dc-5to15V-brake"])
+def test_a_negligible_noise_does_not_lead_the_gain(name):
+    # The tachometer speed scatters 0.01-0.05 rad/s from sample to sample (last 4 s: robust
+    # and plain sd of the differences / sqrt 2), against model errors of 0.9-9 rad/s:
+    # "the error above the noise" is the rms error to three digits, and "a noise that no
+    # model can remove; only the part of the error above it tells the models apart" gives a
+    # reason that does not hold here. The plain rms error leads, and the text says why.
+    r, words = analyze(name)
+    noise = r.gain["noise"]
+    assert noise < 0.05 * r.extended.rmse
+    assert r.lead.figure == "extended_rmse"
+    assert "small against" in r.lead.why
+    assert "Gain: rms error" in words
+
+
+@pytest.mark.parametrize("name", ["ev3-large-duty100", "ev3-large-duty30"])
+def test_the_angle_lead_of_a_log_without_a_cause_speaks_of_one_model(name):
+    # No cause is named (a plain first-order rise under its noise), so there is one model:
+    # "the angle error tells them apart" spoke of two.
+    r, words = analyze(name)
+    assert r.finding.cause == "none" and r.lead.figure == "baseline_angle_rms"
+    assert "tells them apart" not in r.lead.why and "models' difference" not in r.lead.why
+    assert "the angle error judges the model" in r.lead.why
