@@ -280,3 +280,16 @@ def test_a_region_barely_worse_than_steady_state_is_not_called_the_worst():
     assert "after rising edges" in r.where  # the larger of the two is still named, with its rms
     r2, _ = analyze("micromouse-n20-duty100")
     assert r2.where.startswith("the model is worst after rising edges")
+
+
+@pytest.mark.parametrize("name", ["n20-12v-pwm255", "n20-12v-pwm25"])
+def test_the_step_down_close_up_shows_the_wheel_stop(name):
+    # "a step-down, where the wheel slows and stops": the raw speed is zero for good from
+    # 6.234 s (pwm255, cut at 5.371 s) and 16.726 s (pwm25, cut at 16.454 s). The pwm255
+    # window ended at 5.602 s, the wheel still at 35 rad/s: it showed no stop.
+    stop = {"n20-12v-pwm255": 6.234, "n20-12v-pwm25": 16.726}[name]
+    r, _ = analyze(name)
+    cu = r.close_up
+    assert "stops" in cu.what
+    assert cu.t1 > stop
+    assert cu.t1 - stop < 0.5  # and still a close-up, not the rest of the log

@@ -17,7 +17,7 @@ from minseg_tui.model.check import disturbances as dist
 from minseg_tui.model.check.decide import Selection, compare, ranked, select
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
 from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, ranges
-from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge
+from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, falls
 from minseg_tui.model.check.figures import above, angle_rms, close_up, folds, lead, systematic
 from minseg_tui.model.check.fit import (
     MAX_FIT_ROWS,
@@ -301,7 +301,7 @@ def _report(
         ext.effects.delay + ext.effects.taps * samp.ts,
         level,
         (float(t[fenced[0]]), float(t[min(fenced[1], t.size - 1)])) if fenced else None,
-        _response_time(ext, u),
+        _stop_time(log, order, ext) or _response_time(ext, u),
     )
     return CheckResult(
         baseline,
@@ -387,6 +387,22 @@ def _held_out(full: Problem, base: Fit, ext: Fit, rng: dict) -> dict[str, float 
         1 for e in np.flatnonzero(np.diff(head.u) != 0) + 1 if abs(head.u[e]) > abs(head.u[e - 1])
     )
     return {"heldout_steps": float(n), "heldout_baseline_rmse": rb, "heldout_extended_rmse": re}
+
+
+def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
+    """How long the close-up of a step-down lasts (s): at least until the measured speed
+    stands still after the first step-down, with a quarter of that after it, when the cause
+    shown is dry friction or a coast and the wheel stops there; else None."""
+    if not order or order[0] not in ("coulomb_friction", "coast_on_zero"):
+        return None
+    first = next(iter(falls(log)), None)
+    downs = [
+        e for e in np.flatnonzero(np.diff(log.u) != 0) + 1 if abs(log.u[e]) < abs(log.u[e - 1])
+    ]
+    if first is None or first.after is None or not downs or first.row != int(downs[0]):
+        return None
+    usual = 6.0 * ext.T + ext.effects.delay + ext.effects.taps * log.ts
+    return max(1.25 * first.after, usual)
 
 
 def _params_text(p: dict[str, float]) -> str:
