@@ -293,3 +293,15 @@ def test_the_step_down_close_up_shows_the_wheel_stop(name):
     assert "stops" in cu.what
     assert cu.t1 > stop
     assert cu.t1 - stop < 0.5  # and still a close-up, not the rest of the log
+
+
+def test_speeds_over_their_own_interval_are_not_said_to_lie_on_a_lattice():
+    # ev3 irregular, speed over the real interval: 9.7 % of the nonzero speeds lie within 2 %
+    # of a multiple of 1 degree / 4.39 ms = 3.98 rad/s (3.883, 4.845, 2.638, ...); it is the
+    # angle steps (speed x interval) that are whole degrees. Over the nominal period all do.
+    r, words = analyze("ev3_100_irregular_actualdt.csv")
+    assert "the speeds lie on a lattice" not in words
+    assert "speed times its interval" in r.sampling.resolution_how
+    assert r.sampling.resolution == pytest.approx(3.98, rel=0.01)
+    r2, words2 = analyze("ev3_100_irregular_nominaldt.csv")
+    assert "the speeds lie on a lattice of 3.98 rad/s" in words2
