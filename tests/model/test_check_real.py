@@ -305,3 +305,15 @@ def test_speeds_over_their_own_interval_are_not_said_to_lie_on_a_lattice():
     assert r.sampling.resolution == pytest.approx(3.98, rel=0.01)
     r2, words2 = analyze("ev3_100_irregular_nominaldt.csv")
     assert "the speeds lie on a lattice of 3.98 rad/s" in words2
+
+
+def test_the_angle_error_integrates_the_speed_over_the_period_it_was_taken_over():
+    # Both EV3 probes hold the same angles; one divides each angle step by its real interval,
+    # the other by the nominal 4.39 ms. The angle error must be the same motor's: integrating
+    # the nominal-period probe's residual over the real intervals (3.4-9 ms) gave 0.179 rad,
+    # seven times the 0.025 rad of the other, and 15.6 rad of travel became 16.65 rad.
+    actual, _ = analyze("ev3_100_irregular_actualdt.csv")
+    nominal, _ = analyze("ev3_100_irregular_nominaldt.csv")
+    a, n = actual.gain["baseline_angle_rms"], nominal.gain["baseline_angle_rms"]
+    assert n == pytest.approx(a, rel=0.3)
+    assert n < 0.05  # rad: the log's angle is known to a degree (0.0175 rad)

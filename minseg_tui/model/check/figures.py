@@ -35,11 +35,18 @@ def systematic(residual: FloatArray, keep: FloatArray, rows: int = 9) -> float:
 
 
 def angle_rms(
-    t: FloatArray, u: FloatArray, residual: FloatArray, ts: float, keep: FloatArray
+    t: FloatArray,
+    u: FloatArray,
+    residual: FloatArray,
+    ts: float,
+    keep: FloatArray,
+    over_interval: bool = True,
 ) -> float:
     """Rms (rad) of the angle error accumulated since the last change of input, the speed
-    residual (rad/s) integrated over each row's interval; rows left out add nothing."""
-    dt = np.concatenate(([ts], np.diff(t)))
+    residual (rad/s) integrated over the time each row's speed was taken over: the row's
+    interval, or the nominal period ts (s) when ``over_interval`` is False (a speed of angle
+    steps divided by ts); rows left out add nothing."""
+    dt = np.concatenate(([ts], np.diff(t))) if over_interval else np.full(t.size, ts)
     inc = residual * dt * keep
     change = np.flatnonzero(np.diff(u) != 0) + 1
     bounds = np.concatenate(([0], change, [u.size]))

@@ -256,8 +256,12 @@ def _report(
         "baseline_above_noise": above(b_kept, level),
         "extended_above_noise": above(e_kept, level),
         "angle_floor": samp.angle_floor,
-        "baseline_angle_rms": angle_rms(t, u, full.y - b_pred, samp.ts, full.weights),
-        "extended_angle_rms": angle_rms(t, u, full.y - e_pred, samp.ts, full.weights),
+        "baseline_angle_rms": angle_rms(
+            t, u, full.y - b_pred, samp.ts, full.weights, samp.over_interval
+        ),
+        "extended_angle_rms": angle_rms(
+            t, u, full.y - e_pred, samp.ts, full.weights, samp.over_interval
+        ),
         **_held_out(full, base, ext, rng),
     }
     miss = _miss(full.y, e_pred, u, ext.T, samp, noise, full.weights, ext.effects.taps)
