@@ -218,3 +218,16 @@ def test_nxt_large_rise_with_a_lost_sample(tmp_path, capsys):
     # over the real (double) interval is no wild sample
     assert [a["kind"] for a in d["anomalies"]] == ["gap"]
     assert d["sampling"]["lost_samples"] == 1
+
+
+def test_nxt_small_rise_names_its_two_scatters_apart(tmp_path, capsys):
+    # The report gives the log's scatter (0.304 rad/s) and, for the filter it held back, the
+    # scatter around that filter's simulation (0.264 rad/s): two figures under one word read
+    # as a contradiction, so the second says what it is measured around.
+    run1, _ = _nxt_logs(tmp_path, "small")
+    d = _analyze(run1, capsys)
+    why = d["finding"]["runner_up_why"]
+    assert d["finding"]["runner_up"] == "velocity_filter" and "scatters" in why
+    said = float(why.split("scatters ")[1].split(" ")[0])
+    assert said != pytest.approx(d["gain"]["noise"], rel=0.01)
+    assert f"scatters {said:.3g} rad/s around that model's simulation" in why

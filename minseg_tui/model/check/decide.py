@@ -189,8 +189,8 @@ def _why_not(
             noise = _own_noise(prob, f)
         if fl is not None and n >= 2 and noise > FILTER_NOISE * fl:
             return (
-                f"the speed scatters {noise:.3g} rad/s, far more than an average of counts over "
-                f"{n} samples leaves ({fl:.3g} rad/s)"
+                f"the speed scatters {noise:.3g} rad/s around that model's simulation, far more "
+                f"than an average of counts over {n} samples leaves ({fl:.3g} rad/s)"
             )
     if _raw_sse(prob, f) > base_raw:
         return "it matches the measured speed itself worse than the first-order model"

@@ -54,8 +54,13 @@ def deviations(
     return out
 
 
+SAME = 1.2
+"""A region whose rms is within this factor of the steady state's is not called the worst."""
+
+
 def describe(devs: list[Deviation]) -> str:
-    """One sentence: where the model is worst, against the steady state."""
+    """One sentence: where the model is worst, against the steady state (about equally good
+    everywhere when no region is ``SAME`` times worse than the steady state)."""
     if not devs:
         return "no rows to compare"
     worst = max(devs, key=lambda d: d.rms)
@@ -64,6 +69,11 @@ def describe(devs: list[Deviation]) -> str:
     if steady is None or worst is steady:
         return (
             f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
+        )
+    if worst.rms < SAME * steady.rms:
+        return (
+            f"the model is about equally good everywhere ({words}: rms {worst.rms:.3f} rad/s, "
+            f"steady state {steady.rms:.3f} rad/s)"
         )
     ratio = f"{worst.rms / steady.rms:.1f}x" if steady.rms > 0 else "exact in steady state"
     return (

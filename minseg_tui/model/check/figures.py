@@ -35,11 +35,18 @@ def systematic(residual: FloatArray, keep: FloatArray, rows: int = 9) -> float:
 
 
 def angle_rms(
-    t: FloatArray, u: FloatArray, residual: FloatArray, ts: float, keep: FloatArray
+    t: FloatArray,
+    u: FloatArray,
+    residual: FloatArray,
+    ts: float,
+    keep: FloatArray,
+    over_interval: bool = True,
 ) -> float:
     """Rms (rad) of the angle error accumulated since the last change of input, the speed
-    residual (rad/s) integrated over each row's interval; rows left out add nothing."""
-    dt = np.concatenate(([ts], np.diff(t)))
+    residual (rad/s) integrated over the time each row's speed was taken over: the row's
+    interval, or the nominal period ts (s) when ``over_interval`` is False (a speed of angle
+    steps divided by ts); rows left out add nothing."""
+    dt = np.concatenate(([ts], np.diff(t))) if over_interval else np.full(t.size, ts)
     inc = residual * dt * keep
     change = np.flatnonzero(np.diff(u) != 0) + 1
     bounds = np.concatenate(([0], change, [u.size]))
@@ -85,28 +92,51 @@ class Lead:
         return {"figure": self.figure, "why": self.why}
 
 
+SMALL_NOISE = 0.3
+"""A noise below this share of both models' rms errors changes "the error above the noise"
+by under 5 %: the plain rms error leads then."""
+
+
 def lead(gain: dict[str, float | None], named: bool) -> Lead:
     """Which figure leads: the angle error where the speed error is mostly noise, the
-    held-out error where the log has steps to hold out, else the error above the noise."""
+    held-out error where the log has steps to hold out, the rms error where the noise is
+    small against it, else the error above the noise. ``named``: a cause was named (two
+    models to tell apart; else one model to judge)."""
     noise = max(gain.get("noise_floor") or 0.0, gain.get("noise") or 0.0)
     b, e = gain["baseline_rmse"] or 0.0, gain["extended_rmse"] or 0.0
     if noise > 0 and max(b, e) < 1.5 * noise:
         return Lead(
             "extended_angle_rms" if named else "baseline_angle_rms",
             f"the speed error ({max(b, e):.3g} rad/s rms) is mostly the noise of the speed "
-            f"({noise:.3g} rad/s), which hides the models' difference; the angle is known far "
-            "better, so the angle error tells them apart",
+            f"({noise:.3g} rad/s), which hides "
+            + (
+                "the models' difference; the angle is known far better, so the angle error "
+                "tells them apart"
+                if named
+                else "what the model misses; the angle is known far better, so the angle error "
+                "judges the model"
+            ),
         )
     if gain.get("heldout_baseline_rmse") is not None:
         return Lead(
             "heldout_extended_rmse" if named else "heldout_baseline_rmse",
             "the models predict steps they were not fitted on: the honest judge of a gain",
         )
-    if noise > 0:
+    if noise > 0 and noise >= SMALL_NOISE * min(b, e):
         return Lead(
             "extended_above_noise" if named else "baseline_above_noise",
             f"this log's speed has a noise of {noise:.3g} rad/s rms that no model can "
             "remove; only the part of the error above it tells the models apart",
+        )
+    if noise > 0:
+        return Lead(
+            "extended_rmse" if named else "baseline_rmse",
+            f"the speed's noise ({noise:.3g} rad/s rms) is small against the "
+            + (
+                "models' errors, so the rms error itself tells them apart"
+                if named
+                else "model's error, so the rms error itself judges the model"
+            ),
         )
     return Lead(
         "extended_rmse" if named else "baseline_rmse",

@@ -17,7 +17,7 @@ from minseg_tui.model.check import disturbances as dist
 from minseg_tui.model.check.decide import Selection, compare, ranked, select
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
 from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, ranges
-from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge
+from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, falls
 from minseg_tui.model.check.figures import above, angle_rms, close_up, folds, lead, systematic
 from minseg_tui.model.check.fit import (
     MAX_FIT_ROWS,
@@ -256,8 +256,12 @@ def _report(
         "baseline_above_noise": above(b_kept, level),
         "extended_above_noise": above(e_kept, level),
         "angle_floor": samp.angle_floor,
-        "baseline_angle_rms": angle_rms(t, u, full.y - b_pred, samp.ts, full.weights),
-        "extended_angle_rms": angle_rms(t, u, full.y - e_pred, samp.ts, full.weights),
+        "baseline_angle_rms": angle_rms(
+            t, u, full.y - b_pred, samp.ts, full.weights, samp.over_interval
+        ),
+        "extended_angle_rms": angle_rms(
+            t, u, full.y - e_pred, samp.ts, full.weights, samp.over_interval
+        ),
         **_held_out(full, base, ext, rng),
     }
     miss = _miss(full.y, e_pred, u, ext.T, samp, noise, full.weights, ext.effects.taps)
@@ -267,7 +271,7 @@ def _report(
     keep_dev &= keep
     devs = deviations(u, np.where(keep_dev, y - b_pred, 0.0), base.T, samp.ts, keep_dev)
     misses = miss is not None
-    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged)
+    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full)
 
     # anomalies, against the model the finding settles on
     res = full.y - e_pred
@@ -301,7 +305,7 @@ def _report(
         ext.effects.delay + ext.effects.taps * samp.ts,
         level,
         (float(t[fenced[0]]), float(t[min(fenced[1], t.size - 1)])) if fenced else None,
-        _response_time(ext, u),
+        _stop_time(log, order, ext) or _response_time(ext, u),
     )
     return CheckResult(
         baseline,
@@ -389,6 +393,22 @@ def _held_out(full: Problem, base: Fit, ext: Fit, rng: dict) -> dict[str, float 
     return {"heldout_steps": float(n), "heldout_baseline_rmse": rb, "heldout_extended_rmse": re}
 
 
+def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
+    """How long the close-up of a step-down lasts (s): at least until the measured speed
+    stands still after the first step-down, with a quarter of that after it, when the cause
+    shown is dry friction or a coast and the wheel stops there; else None."""
+    if not order or order[0] not in ("coulomb_friction", "coast_on_zero"):
+        return None
+    first = next(iter(falls(log)), None)
+    downs = [
+        e for e in np.flatnonzero(np.diff(log.u) != 0) + 1 if abs(log.u[e]) < abs(log.u[e - 1])
+    ]
+    if first is None or first.after is None or not downs or first.row != int(downs[0]):
+        return None
+    usual = 6.0 * ext.T + ext.effects.delay + ext.effects.taps * log.ts
+    return max(1.25 * first.after, usual)
+
+
 def _params_text(p: dict[str, float]) -> str:
     return ", ".join(f"{k} = {v:.4g} {UNITS.get(k, '')}".rstrip() for k, v in p.items())
 
@@ -404,6 +424,7 @@ def _finding(
     level: float,
     miss: tuple[float, str, float] | None,
     unjudged: dict[str, str],
+    full: Problem,
 ) -> Finding:
     floor = samp.floor if samp.resolution_how.startswith("# cpr") else None
     taps = ext.effects.taps
@@ -491,7 +512,7 @@ def _finding(
         f"{WORDS[cause](log, ext, floor)}. It removes {100 * v.reduction:.1f} % of the "
         f"whitened residual the model leaves without it (criterion gain {v.d:.0f})"
     )
-    runner, why = _runner_up(sel, ext)
+    runner, why = _runner_up(sel, ext, full)
     if runner:
         evidence += f"; {why}"
     others = []
@@ -532,8 +553,11 @@ def _none_runner(sel: Selection) -> tuple[str | None, str]:
     )
 
 
-def _runner_up(sel: Selection, ext: Fit) -> tuple[str | None, str]:
-    """The best other explanation with as many causes, and why it lost."""
+def _runner_up(sel: Selection, ext: Fit, full: Problem) -> tuple[str | None, str]:
+    """The best other explanation with as many causes, and why it lost. A runner-up whose
+    whitened residual is smaller but whose simulated speed misses the measured one by more
+    (an average's residual cancels in the whitening sums) is said to miss the speed, with
+    both rms errors (rad/s), not to fit better."""
     k = len(ext.causes)
     pool = [f for f in ([*sel.singles.values()] if k == 1 else sel.tried) if len(f.causes) == k]
     pool = [f for f in pool if set(f.causes) != set(ext.causes) and math.isfinite(f.sse_white)]
@@ -543,11 +567,21 @@ def _runner_up(sel: Selection, ext: Fit) -> tuple[str | None, str]:
     name = best.name
     new = [c for c in best.causes if c not in ext.causes]
     reason = next((sel.left_out[c] for c in new if c in sel.left_out), None)
-    if best.sse_white < ext.sse_white and reason:
-        return name, (
-            f"the next best explanation ({name}) leaves less whitened residual but is not "
-            f"named: {reason}"
-        )
+    if best.sse_white < ext.sse_white:
+        keep = full.weights > 0
+        e_rms = _rmse_kept(full.y, ext.predict(full), keep)
+        b_rms = _rmse_kept(full.y, best.predict(full), keep)
+        if b_rms > e_rms:
+            return name, (
+                f"the next best explanation ({name}) leaves less whitened residual, but its "
+                f"simulated speed misses the measured speed by more (rmse {b_rms:.3g} rad/s "
+                f"against {e_rms:.3g} rad/s)" + (f", and {reason}" if reason else "")
+            )
+        if reason:
+            return name, (
+                f"the next best explanation ({name}) leaves less whitened residual but is not "
+                f"named: {reason}"
+            )
     ratio = best.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
     return name, (
         f"the next best explanation ({name}) leaves {ratio:.1f} times as much whitened residual"

@@ -204,6 +204,9 @@ def sampling(
     q = lat_int if over else lat_nom
     if cpr is not None and cpr > 0:
         resolution, res_how = 2.0 * math.pi / cpr / ts, f"# cpr: {cpr}"
+    elif q is not None and over and not even:
+        resolution = q / ts
+        res_how = f"each speed times its interval lies on a lattice of {q:.3g} rad, one count"
     elif q is not None:
         resolution = q / ts
         res_how = f"the speeds lie on a lattice of {resolution:.3g} rad/s"
