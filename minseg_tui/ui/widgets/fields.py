@@ -65,21 +65,29 @@ class EntryBox(Input):
             placeholder=placeholder,
             disabled=disabled,
         )
+        self._starting = False
+        """Set by :meth:`start_with` until the box has the focus."""
 
     def start_with(self, character: str) -> None:
         """Replace the text with ``character`` (typed somewhere else, e.g. on the list of
-        steps), focus the box and go on typing after it (this focus selects nothing)."""
-        self.value = character
-        self.cursor_position = len(character)
+        steps), focus the box and go on typing after it (this focus selects nothing). Keys
+        of the same burst that arrive before the focus has moved here go on after it."""
+        self.value = self.value + character if self._starting else character
+        self.cursor_position = len(self.value)
         self.select_on_focus = False
+        self._starting = True
         self.focus()
 
     # Textual calls the handler of every class in the MRO: these run before Input's own.
     def on_key(self, event: events.Key) -> None:
         self.select_on_focus = True  # the next focus selects again
 
+    def on_focus(self, event: events.Focus) -> None:
+        self._starting = False
+
     def on_blur(self, event: events.Blur) -> None:
         self.select_on_focus = True
+        self._starting = False
 
 
 class FieldRow(Vertical):
