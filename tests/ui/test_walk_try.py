@@ -4,10 +4,13 @@ answers that fit 80 columns."""
 
 from __future__ import annotations
 
+import numpy as np
 from textual import events
 
+from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import goto, settle, start
+from minseg_tui.ui.widgets.plots import Canvas
+from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, settle, start
 
 
 def _row(app, key: str) -> FieldRow:
@@ -36,3 +39,27 @@ async def test_keys_typed_faster_than_the_focus_moves_all_land_in_the_entry(quie
         await pilot.press("enter")
         await settle(pilot)
         assert _stored(app, "R").text == "5,3 ohm"
+
+
+async def test_the_zoomed_rise_draws_u_a_as_the_board_holds_it_rising_at_the_edge(quiet):
+    """The board applies u_A from the sample that reports it until the next one: drawn as
+    a line between the samples, u_A climbed during the sample before the edge (t < 0 of the
+    zoom) while the speed was still flat. Drawn held, it changes only on vertical segments,
+    and rises at t = 0."""
+    app = quiet()
+    async with app.run_test(size=(120, 40)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_step_run(s)
+        await goto(pilot, "task11")
+        plot = app.screen.query_one(StepPlot)
+        labels = [tr.label for tr in plot.traces]
+        k = labels.index("u_A [V]")
+        monitor = plot.query_one(Canvas).plt.monitor  # what plotext was asked to draw
+        x, u = np.asarray(monitor.x[k]), np.asarray(monitor.y[k])
+        changes = np.flatnonzero(np.diff(u) != 0)
+        assert changes.size == 1  # one rise in the window of one step
+        j = changes[0]
+        assert x[j] == x[j + 1] == 0.0  # a vertical segment, at the edge
+        assert np.all(u[x < 0] == 0) and u[-1] > 4  # nothing before it, u_ss after
