@@ -5,6 +5,7 @@ answers that fit 80 columns."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from textual import events
 
 from minseg_tui.ui.panels.results import StepPlot
@@ -63,3 +64,42 @@ async def test_the_zoomed_rise_draws_u_a_as_the_board_holds_it_rising_at_the_edg
         j = changes[0]
         assert x[j] == x[j + 1] == 0.0  # a vertical segment, at the edge
         assert np.all(u[x < 0] == 0) and u[-1] > 4  # nothing before it, u_ss after
+
+
+@pytest.mark.parametrize("step_id", ["task4", "task10", "task11", "model_check"])
+async def test_every_plot_shows_its_title_at_80x24(quiet, step_id):
+    """plotext leaves out a title wider than the plot: at 80x24 the model check's close-up
+    ("close-up: where the cause acts") had none."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_step_run(s)
+        await goto(pilot, step_id)
+        canvases = list(app.screen.query(Canvas))
+        assert canvases
+        for canvas in canvases:
+            assert canvas.plot_title in str(canvas.render()).splitlines()[0]
+
+
+@pytest.mark.parametrize("size", [(80, 24), (120, 40)])
+async def test_the_model_checks_two_plots_share_their_axes_rows(quiet, size):
+    """The residual's legend took a line more than the speed's, so its plot sat a row
+    higher and its unit landed beside the other plot's last tick ("1.93 rad/s")."""
+    app = quiet()
+    async with app.run_test(size=size) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_step_run(s)
+        await goto(pilot, "model_check")
+        for _ in range(2):  # the close-up, then the whole log
+            check, residual = (
+                app.screen.query_one(f"#{n}").query_one(Canvas)
+                for n in ("plot-check", "plot-residual")
+            )
+            assert check.region.y == residual.region.y
+            assert check.region.height == residual.region.height
+            await pilot.press("f9")
+            await settle(pilot)

@@ -92,6 +92,11 @@ class Canvas(PlotextPlot):
         super().on_mount()
         self.draw()
 
+    @property
+    def plot_title(self) -> str:
+        """The title drawn above the plot."""
+        return self._title
+
     def set_axes(self, title: str, xlabel: str) -> None:
         self._title = title
         self._xlabel = xlabel
