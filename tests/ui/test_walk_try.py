@@ -7,6 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from textual import events
+from textual.geometry import Region
+from textual.widgets import RadioButton
 
 from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
@@ -103,3 +105,26 @@ async def test_the_model_checks_two_plots_share_their_axes_rows(quiet, size):
             assert check.region.height == residual.region.height
             await pilot.press("f9")
             await settle(pilot)
+
+
+def _shown_text(widget) -> str:
+    """What ``widget`` shows, its lines joined by spaces (a wrapped line joins back)."""
+    w, h = widget.outer_size
+    lines = widget.render_lines(Region(0, 0, w, h))
+    return " ".join(" ".join(strip.text.split()) for strip in lines).strip()
+
+
+async def test_the_summary_questions_and_answers_show_whole_at_80x24(quiet):
+    """At 80 columns the answer 'the ratio between the output and input amplitudes in
+    steady-state' ended in 'in …' and a question in '(tick all that ap'."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "summary")
+        buttons = list(app.screen.query(RadioButton))
+        labels = list(app.screen.query(".choice-label"))
+        assert buttons and labels
+        for widget, text in [(b, str(b.label)) for b in buttons] + [
+            (lb, str(lb.render())) for lb in labels
+        ]:
+            assert " ".join(text.split()) in _shown_text(widget)

@@ -9,8 +9,10 @@ from rich.segment import Segment
 from textual import events, on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
+from textual.geometry import Size
 from textual.message import Message
 from textual.strip import Strip
+from textual.widget import Widget
 from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList
 
 from minseg_tui.lab.steps import Field
@@ -37,6 +39,10 @@ class Choice(RadioButton):
 
     def _mark(self) -> None:
         self.BUTTON_INNER = "●" if self.value else " "
+
+    def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
+        """As many lines as the answer wraps to (Textual's toggle buttons take one)."""
+        return Widget.get_content_height(self, container, viewport, width)
 
 
 class Ticks(SelectionList[int]):
