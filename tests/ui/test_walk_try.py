@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from textual import events
 from textual.geometry import Region
-from textual.widgets import RadioButton
+from textual.widgets import RadioButton, RadioSet
 
 from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
@@ -128,3 +128,32 @@ async def test_the_summary_questions_and_answers_show_whole_at_80x24(quiet):
             (lb, str(lb.render())) for lb in labels
         ]:
             assert " ".join(text.split()) in _shown_text(widget)
+
+
+async def test_typing_on_the_summarys_answers_goes_into_its_text_entry(quiet):
+    """On the summary the first empty entry is a question to tick; keys typed on the list of
+    steps or on an answer list (where letters do nothing) went nowhere, and the group's
+    'most unclear' text was lost. They go into the step's first empty text entry; Space
+    still picks an answer."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "summary", focus=None)
+        app.screen.query_one("#nav").focus()
+        await pilot.press(*"why T", "enter")
+        await settle(pilot)
+        assert _stored(app, "summary.unclear").text == "why T"
+        radio = app.screen.query(RadioSet).last()
+        radio.focus()
+        await settle(pilot)
+        await pilot.press("space")  # picks the highlighted answer, as before
+        await settle(pilot)
+        assert _stored(app, "summary.6") is not None
+        radio.focus()
+        await settle(pilot)
+        for c in "and K":  # a burst, spaces in it
+            app.post_message(events.Key(c if c != " " else "space", c))
+        await settle(pilot)
+        await pilot.press("enter")
+        await settle(pilot)
+        assert _stored(app, "summary.unclear").text == "and K"

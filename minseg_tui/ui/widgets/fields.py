@@ -84,6 +84,11 @@ class EntryBox(Input):
         self._starting = True
         self.focus()
 
+    @property
+    def starting(self) -> bool:
+        """Keys typed elsewhere are on their way here (:meth:`start_with`; not focused yet)."""
+        return self._starting
+
     # Textual calls the handler of every class in the MRO: these run before Input's own.
     def on_key(self, event: events.Key) -> None:
         self.select_on_focus = True  # the next focus selects again
