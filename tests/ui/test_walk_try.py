@@ -13,6 +13,7 @@ from textual.widgets import RadioButton, RadioSet
 from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas
+from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, settle, start
 
 
@@ -157,3 +158,31 @@ async def test_typing_on_the_summarys_answers_goes_into_its_text_entry(quiet):
         await pilot.press("enter")
         await settle(pilot)
         assert _stored(app, "summary.unclear").text == "and K"
+
+
+WALK_TABLE = {
+    "R": "5,3",
+    "omega_ss@2.5": "3.826",
+    "u_ss@2.5": "2.05 V",
+    "omega_ss@3.5": "5.805",
+    "u_ss@3.5": "3,05",
+    "omega_ss@4.5": "7.786",
+    "u_ss@4.5": "4.04",
+    "i_ss@2.5": "29.8 mA",
+    "i_ss@3.5": "33.6 mA",
+    "i_ss@4.5": "37,2",
+}
+"""The table of the tmux walk, as typed."""
+
+
+async def test_the_dry_friction_note_gives_f_with_the_tables_digits(quiet):
+    """The table said f = 2.504 mN m s/rad at 2.5 V and the note under it 'from 0.0025':
+    two digits, the zeros dropped by :.3g."""
+    app = quiet()
+    async with app.run_test(size=(120, 40)) as pilot:
+        await start(pilot)
+        enter_all(app, WALK_TABLE)
+        await goto(pilot, "table")
+        text = " ".join(p.text for p in app.screen.query(Prose))
+        assert "f falls with speed, from 0.002504 at" in text
+        assert "to 0.001536 N m s/rad" in text
