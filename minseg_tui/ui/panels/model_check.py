@@ -73,12 +73,12 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         residual = self.query_one("#plot-residual", TracePlot)
         if self.close_up and v.close_t.size:
             t, om, ba, ex = v.close_t, v.close_omega, v.close_baseline, v.close_extended
-            check.set_axes("close-up: where the cause acts", "t [s]")
-            residual.set_axes("residual there", "t [s]")
+            check.set_axes("where the cause acts", "t [s]")
+            residual.set_axes("measured - model", "t [s]")
         else:
             t, om, ba, ex = v.t, v.omega, v.baseline, v.extended
             check.set_axes("measured vs models", "t [s]")
-            residual.set_axes("residual, whole log", "t [s]")
+            residual.set_axes("measured - model, whole log", "t [s]")
         span = (float(t[0]), float(t[-1])) if t.size > 1 else None
         # drawn in this order: the measured speed (and the first order's miss) on top
         check.show(
@@ -89,6 +89,7 @@ class ModelCheckPanel(ViewPanel[CheckView]):
             ],
             span,
         )
+        # the residuals carry their model's marker and colour (the title says measured -)
         traces = []
         if v.noise is not None and span is not None:
             lo, hi = span
@@ -97,8 +98,8 @@ class ModelCheckPanel(ViewPanel[CheckView]):
                 Trace([lo, hi], [-v.noise, -v.noise], "", "-", colour=3),
             ]
         if v.cause != "none":
-            traces.append(Trace(t, om - ex, "measured - extended", "+", colour=2))
-        traces.append(Trace(t, om - ba, "measured - first order", "braille", colour=1))
+            traces.append(Trace(t, om - ex, "extended", "+", colour=2))
+        traces.append(Trace(t, om - ba, "first order", "braille", colour=1))
         residual.show(traces, span)
 
     def zoom_next(self) -> None:

@@ -91,13 +91,16 @@ class ResultsPanel(ViewPanel[ResultsView]):
             return
         if self.zoom is None or not v.steps:
             plot.set_axes("step log", "t [s]")
-            plot.show([Trace(v.t, v.omega, "omega"), Trace(v.t, v.u, "u_A [V]", "dot")])
+            plot.show([Trace(v.t, v.omega, "omega"), Trace(v.t, v.u, "u_A [V]", "dot", steps=True)])
             note.update(f"run {v.run}: whole log, {len(v.steps)} rising steps · F9 zooms")
             return
         w = v.steps[self.zoom]
         keep = (v.t >= w.z0) & (v.t <= w.z1)
         x = v.t[keep] - w.t0  # time after the edge: the 63 % crossing is read off as T
-        traces = [Trace(x, v.omega[keep], "omega"), Trace(x, v.u[keep], "u_A [V]", "dot")]
+        traces = [
+            Trace(x, v.omega[keep], "omega"),
+            Trace(x, v.u[keep], "u_A [V]", "dot", steps=True),
+        ]
         lo, hi = w.z0 - w.t0, w.z1 - w.t0
         traces.append(Trace([lo, hi], [w.level, w.level], "63 %", "-"))
         if w.T_63 is not None:

@@ -22,7 +22,7 @@ from textual.containers import Horizontal, VerticalScroll
 from textual.reactive import reactive
 from textual.signal import Signal
 from textual.widget import Widget
-from textual.widgets import Footer, OptionList, Static
+from textual.widgets import Footer, OptionList, RadioSet, SelectionList, Static
 from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
@@ -127,13 +127,13 @@ class StepPane(VerticalScroll):
 
     def typing_row(self) -> FieldRow | None:
         """Where keys typed outside an entry go: the landing entry, else the first empty
-        entry (a notes field too), else the first."""
-        rows = list(self.query(FieldRow))
-        return (
-            self.landing_row()
-            or next((r for r in rows if r.is_empty), None)
-            or (rows[0] if rows else None)
-        )
+        entry (a notes field too), else the first; text entries only (a question to tick,
+        the summary's, takes no text)."""
+        rows = [r for r in self.query(FieldRow) if not r.field.options]
+        landing = self.landing_row()
+        if landing in rows:
+            return landing
+        return next((r for r in rows if r.is_empty), None) or (rows[0] if rows else None)
 
     def focus_on(self, what: str) -> None:
         """Focus the step's landing entry (``entry``: scrolled into view, its text selected
@@ -404,19 +404,19 @@ class LabScreen(StatusScreen):
         nav.display = not nav.display
 
     def on_key(self, event: events.Key) -> None:
-        """Typing on the list of steps (or on a step's text) goes into the step's first
-        empty entry (replacing what a filled one holds), not nowhere and never onto the end
-        of a value."""
+        """Typing on the list of steps (or on a step's text, or on a list of answers, where
+        letters do nothing) goes into the step's first empty text entry (replacing what a
+        filled one holds), not nowhere and never onto the end of a value."""
         panes = self.query(StepPane)
-        if (
-            not panes
-            or self.focused not in (self.query_one("#nav"), panes.last())
-            or not event.is_printable
-            or not event.character
-        ):
+        if not panes or not event.is_printable or not event.character:
             return
         row = panes.last().typing_row()
-        if row is not None and not row.field.options and not self.readonly:
+        if row is None or self.readonly:
+            return
+        on_answers = isinstance(self.focused, RadioSet | SelectionList) and (
+            event.character != " " or row.input.starting  # Space picks, unless mid-burst
+        )
+        if self.focused in (self.query_one("#nav"), panes.last()) or on_answers:
             event.stop()
             event.prevent_default()
             row.input.start_with(event.character)

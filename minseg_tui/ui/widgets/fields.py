@@ -9,8 +9,10 @@ from rich.segment import Segment
 from textual import events, on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
+from textual.geometry import Size
 from textual.message import Message
 from textual.strip import Strip
+from textual.widget import Widget
 from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList
 
 from minseg_tui.lab.steps import Field
@@ -37,6 +39,10 @@ class Choice(RadioButton):
 
     def _mark(self) -> None:
         self.BUTTON_INNER = "●" if self.value else " "
+
+    def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
+        """As many lines as the answer wraps to (Textual's toggle buttons take one)."""
+        return Widget.get_content_height(self, container, viewport, width)
 
 
 class Ticks(SelectionList[int]):
@@ -65,21 +71,34 @@ class EntryBox(Input):
             placeholder=placeholder,
             disabled=disabled,
         )
+        self._starting = False
+        """Set by :meth:`start_with` until the box has the focus."""
 
     def start_with(self, character: str) -> None:
         """Replace the text with ``character`` (typed somewhere else, e.g. on the list of
-        steps), focus the box and go on typing after it (this focus selects nothing)."""
-        self.value = character
-        self.cursor_position = len(character)
+        steps), focus the box and go on typing after it (this focus selects nothing). Keys
+        of the same burst that arrive before the focus has moved here go on after it."""
+        self.value = self.value + character if self._starting else character
+        self.cursor_position = len(self.value)
         self.select_on_focus = False
+        self._starting = True
         self.focus()
+
+    @property
+    def starting(self) -> bool:
+        """Keys typed elsewhere are on their way here (:meth:`start_with`; not focused yet)."""
+        return self._starting
 
     # Textual calls the handler of every class in the MRO: these run before Input's own.
     def on_key(self, event: events.Key) -> None:
         self.select_on_focus = True  # the next focus selects again
 
+    def on_focus(self, event: events.Focus) -> None:
+        self._starting = False
+
     def on_blur(self, event: events.Blur) -> None:
         self.select_on_focus = True
+        self._starting = False
 
 
 class FieldRow(Vertical):

@@ -38,13 +38,26 @@ colours); the markers tell the traces apart without them."""
 class Trace:
     """One line: x and y values, its legend label and its marker (braille, dot, +, -, |);
     ``colour``: an index into :data:`COLOURS` (None: the trace's own place in the plot), so
-    two lines of one thing (a band's edges) share a colour and one legend entry."""
+    two lines of one thing (a band's edges) share a colour and one legend entry; ``steps``:
+    each value holds until the next x (a voltage the board applies from one sample to the
+    next), drawn as a staircase, not as a line sloping between the samples."""
 
     x: Values
     y: Values
     label: str = ""
     marker: str = "braille"
     colour: int | None = None
+    steps: bool = False
+
+
+def drawn(tr: Trace) -> tuple[list[float], list[float]]:
+    """The points plotext joins for ``tr`` (a staircase for a trace of ``steps``, as the
+    report's figures draw it)."""
+    x, y = list(tr.x), list(tr.y)
+    if tr.steps and len(x) > 1:
+        x = [a for a in x for _ in (0, 1)][1:]
+        y = [b for b in y for _ in (0, 1)][:-1]
+    return x, y
 
 
 def _colour(k: int, tr: Trace) -> tuple[str, str]:
@@ -79,6 +92,11 @@ class Canvas(PlotextPlot):
         super().on_mount()
         self.draw()
 
+    @property
+    def plot_title(self) -> str:
+        """The title drawn above the plot."""
+        return self._title
+
     def set_axes(self, title: str, xlabel: str) -> None:
         self._title = title
         self._xlabel = xlabel
@@ -92,7 +110,7 @@ class Canvas(PlotextPlot):
         plt.ylabel(self._ylabel)
         for k, tr in enumerate(self.traces):
             if len(tr.x):
-                plt.plot(list(tr.x), list(tr.y), marker=tr.marker, color=_colour(k, tr)[0])
+                plt.plot(*drawn(tr), marker=tr.marker, color=_colour(k, tr)[0])
         if self.xlim is not None:
             plt.xlim(*self.xlim)
         self.refresh()
