@@ -58,7 +58,8 @@ class RunInfo:
 
     name: file stem (``runs/<name>.csv``); kind: ``steps`` (Task 10), ``fast`` or ``free``;
     ts: nominal sample period (s); samples: rows in the log; dropped: samples lost on the
-    link (gaps in seq); started: ISO time; interrupted: True when recovered after a crash;
+    link (gaps in seq); started: ISO time; interrupted: the run ended before its plan did (stopped, board lost,
+    program closed) or was recovered after a crash;
     plan: the step plan as a dict (empty for a free run).
     """
 

@@ -156,7 +156,8 @@ class Session:
         self._run_version = 0
         self._problem: SaveProblem | None = None
         self._unsaved = False
-        self._unkept: list[Recorder] = []  # finished recordings whose log is not written yet
+        # finished recordings whose log is not written yet, and whether each stopped early
+        self._unkept: list[tuple[Recorder, bool]] = []
         self._remap_due = False  # the runs' u column waits for a table change to be written
         self.recovered: list[str] = []
         """Names of runs rebuilt at open from a recording a crash interrupted."""
@@ -736,11 +737,13 @@ class Session:
                 f"cannot record a run here ({os_reason(exc)}); nothing was started",
             ) from None
 
-    def finish_run(self, recorder: Recorder) -> RunInfo | None:
+    def finish_run(self, recorder: Recorder, stopped_early: bool = False) -> RunInfo | None:
         """End a recording: its samples become runs/<name>.csv (atomically), the session
         records the run (saved) and the partial file goes. None (and nothing kept) when it
-        holds fewer than 2 samples. When the log cannot be written the run is kept in
-        memory, saved with the next save that works, and SessionNotWritable says so."""
+        holds fewer than 2 samples. ``stopped_early``: the run ended before its plan did
+        (stopped, board lost, program closed; kept as ``interrupted``). When the log cannot
+        be written the run is kept in memory, saved with the next save that works, and
+        SessionNotWritable says so."""
         recorder.close()
         raw = recorder.raw()
         if raw.seq.size < 2:
@@ -748,9 +751,9 @@ class Session:
                 recorder.path.unlink(missing_ok=True)
             return None
         try:
-            info = self._keep(recorder.name, raw, interrupted=False)
+            info = self._keep(recorder.name, raw, interrupted=stopped_early)
         except OSError as exc:
-            self._unkept.append(recorder)
+            self._unkept.append((recorder, stopped_early))
             self._failed(exc)
             raise SessionNotWritable(
                 str(self.folder / RUNS_DIR),
@@ -784,10 +787,10 @@ class Session:
     def _keep_unkept(self) -> None:
         """Write the runs that finished while nothing could be written (OSError if still not)."""
         while self._unkept:
-            rec = self._unkept[0]
+            rec, stopped_early = self._unkept[0]
             raw = rec.raw()
             if not any(r.name == rec.name for r in self._runs):
-                info = keep_run(self.folder, rec.name, raw, self.table_pairs(), False)
+                info = keep_run(self.folder, rec.name, raw, self.table_pairs(), stopped_early)
                 if info is not None:
                     self._runs.append(info)
                     self._run_version += 1

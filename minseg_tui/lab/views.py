@@ -460,6 +460,13 @@ def results(session: Session, step_id: str) -> ResultsView:
         ]
         ts = log.ts if log is not None else 0.0
         steps = tuple(step_window(s, st.T, ts) for s in st.steps)
+    problems = list(res.problems)
+    used = next((r for r in session.runs if r.name == res.run), None)
+    if used is not None and used.interrupted:
+        problems.append(
+            f"run {used.name} ended before its plan did ({used.samples} samples, "
+            f"{len(steps)} rising steps): a whole run gives more steps to read T from"
+        )
     return ResultsView(
         res.run,
         np.asarray(log.t, dtype=float) if log else _empty(),
@@ -468,7 +475,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         steps,
         tuple(lines),
         compare,
-        tuple(res.problems),
+        tuple(problems),
     )
 
 

@@ -502,7 +502,7 @@ class LabApp(App[None]):
         try:
             rec.close()
             with self.session as s:
-                info = s.finish_run(rec.recorder)
+                info = s.finish_run(rec.recorder, stopped_early=why != "done")
                 if info is not None:  # an import or a pick is dropped for the new run
                     s.select_run(None)
             kept = (

@@ -548,3 +548,24 @@ def test_a_kill_9_mid_save_leaves_a_temporary_file_that_the_next_open_removes(tm
 
 def _pid_of(names: list[str]) -> str:
     return names[0].split(".")[-2]
+
+
+def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path):
+    from minseg_tui.lab import views
+
+    with Session.create(tmp_path, ["A"]) as s:
+        _fill_table(s)
+        info, _, _ = _record_steps(s)
+        assert info is not None and not info.interrupted
+        assert not any("ended before its plan" in p for p in views.results(s, "task11").problems)
+        plan = dict(step("task10").plans)["manual"]
+        data = record(PlantParams(), np.r_[np.zeros(20), np.full(60, plan.high)], ts=plan.ts)
+        rec = s.start_run("steps", plan)
+        for j in range(80):  # F2 after one rising step: 80 of the plan's 480 samples
+            rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), 4500 * (j >= 20))
+        short = s.finish_run(rec, stopped_early=True)
+        assert short is not None and short.interrupted
+    with Session.open(s.folder) as again:  # kept in the session file
+        assert again.runs[-1].interrupted
+        said = views.results(again, "task11").problems
+        assert any(f"run {short.name} ended before its plan did (80 samples" in p for p in said)

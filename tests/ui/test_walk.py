@@ -114,6 +114,7 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         with app.session as s:
             fast = s.runs[-1]
         assert fast.kind == "fast" and fast.samples > 300
+        assert fast.interrupted and not run.interrupted  # F2 ended it before its plan did
         await settle(pilot)
         readings = str(app.screen.query_one("#t-readings").render())
         assert "steps-1" in readings and "fast-1" in readings
