@@ -29,6 +29,7 @@ from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import step
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
+from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.units import DIGITS, format_number, format_value
@@ -497,7 +498,8 @@ class CheckView:
     residual = measured - baseline; the close-up where the cause acts (``close_*``: the same
     speeds over its stretch, ``close_what`` in words, ``noise`` the speed's noise level
     there, rad/s); ``lead``: the gain figure that means most for this log, in one line, and
-    ``lead_why``; ``cause`` and ``evidence`` in words, the extended model with its
+    ``lead_why``; ``cause`` (the contract name) and ``cause_words`` (every cause named, in
+    words), ``evidence`` in words, the extended model with its
     parameters, the other figures (``gain``), ``notes`` (what the check cannot say, the
     anomalies; one line each); ``problem``: why there is no result."""
 
@@ -521,6 +523,7 @@ class CheckView:
     close_what: str = ""
     noise: float | None = None
     notes: tuple[str, ...] = ()
+    cause_words: str = ""
 
 
 def _stem(key: str) -> str:
@@ -553,7 +556,11 @@ def check(session: Session) -> CheckView:
         return CheckView(mc.run, problem=mc.problem or "no result")
     f, e, g = r.finding, r.extended, r.gain
     named = f.cause != "none"
-    ext = f"{e.model}: {_params(e.params)}" if named else "none needed (the baseline is enough)"
+    ext = (
+        f"{in_words(e.model)}: {_params(e.params)}"
+        if named
+        else "none needed (the baseline is enough)"
+    )
     lead, lead_why = "", ""
     led = _stem(r.lead.figure) if r.lead is not None else ""
     if r.lead is not None:
@@ -598,6 +605,7 @@ def check(session: Session) -> CheckView:
         close_what=cu.what if cu is not None else "",
         noise=cu.noise if cu is not None else floor,
         notes=notes,
+        cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),
     )
 
 

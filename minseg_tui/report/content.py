@@ -19,7 +19,7 @@ from minseg_tui.lab.entry import format_quantity, format_reading
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.views import step_window
 from minseg_tui.model.check import CheckResult
-from minseg_tui.model.check.effects import UNITS
+from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import RisingStep, StepResult
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
@@ -416,7 +416,7 @@ def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figu
     """The whole run against both models with the residuals, and beside it the close-up
     where the cause acts with the noise floor marked."""
     t = np.asarray(r.t, float)
-    model = f"extended ({r.extended.model})" if r.finding.cause != "none" else ""
+    model = f"extended ({in_words(r.extended.model)})" if r.finding.cause != "none" else ""
     lines = [
         Line("measured", t, r.omega),
         Line("first-order model", t, r.baseline_pred, color="#d62728", dash=True),
@@ -522,7 +522,7 @@ def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figu
         stack(panels),
         440,
         f"Close-up of run {name}, {_num(cu.t0)}-{_num(cu.t1)} s: {cu.what}"
-        + (f" ({cu.cause})" if cu.cause != "none" else "")
+        + (f" ({in_words(cu.cause)})" if cu.cause != "none" else "")
         + f". The shaded band is ± the noise there ({_num(cu.noise, 3)} rad/s): a model whose "
         "residual stays inside it explains the log down to its noise."
         + (
@@ -557,17 +557,25 @@ def _model_check_section(session: Session) -> Section | None:
         f"the recorded voltage it misses by {_num(b.rmse, 3)} rad/s rms (fit "
         f"{_num(b.fit_percent, 3)} %).",
         f"Where it deviates: {r.where}.",
-        f"Most likely cause: {f.cause}. {f.evidence[:1].upper() + f.evidence[1:]}",
+        f"Most likely cause: {in_words(f.cause)} ({f.cause}). "
+        f"{f.evidence[:1].upper() + f.evidence[1:]}",
     ]
-    items += [f"Also: {o.cause} ({_params(o.params)}): {o.evidence}" for o in f.others]
+    items += [
+        f"Also: {in_words(o.cause)} ({o.cause}; {_params(o.params)}): {o.evidence}"
+        for o in f.others
+    ]
     if named:
         items.append(
-            f"Extended model ({e.model}): {_params(e.params, e.intervals)}; "
+            f"Extended model ({in_words(e.model)}): {_params(e.params, e.intervals)}; "
             f"{_num(e.rmse, 3)} rad/s rms (fit {_num(e.fit_percent, 3)} %), "
             f"{_num(r.gain.get('rmse_reduction_percent'), 3)} % lower rms."
         )
     sec.blocks.append(items)
-    head = ("figure", "first-order model", f"extended model ({e.model})" if named else "extended")
+    head = (
+        "figure",
+        "first-order model",
+        f"extended model ({in_words(e.model)})" if named else "extended",
+    )
     sec.blocks.append(Table(head, _gain_rows(r)))
     floor, noise, angle = (r.gain.get(k) for k in ("noise_floor", "noise", "angle_floor"))
     if floor is not None or noise is not None:

@@ -374,3 +374,13 @@ def test_json_keeps_every_key_and_adds_what_the_ui_needs():
     assert set(d["sampling"]) >= {"omega_over", "how", "regular", "lost_samples", "noise_floor"}
     for a in d["anomalies"]:
         assert set(a) >= {"kind", "row", "t", "t_end", "size", "unit", "text"}
+
+
+def test_every_cause_has_words_for_people():
+    from minseg_tui.model.check.effects import CANDIDATES, in_words
+
+    assert all(c.label and "_" not in c.label for c in CANDIDATES)
+    assert in_words("first_order+coulomb_friction+velocity_filter") == (
+        "first order + dry friction + averaged speed (velocity filter)"
+    )
+    assert in_words("current_limit") == "current limit" and in_words("none") == "none"

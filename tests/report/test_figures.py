@@ -19,7 +19,7 @@ import pytest
 
 from minseg_tui.lab.files import read_step_log
 from minseg_tui.lab.session import Session
-from minseg_tui.model.check.effects import UNITS
+from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.report import svg
 from minseg_tui.report.write import write_report
 from tests.report.test_report import _session
@@ -206,7 +206,7 @@ def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     cu = result.close_up
     ((fig, caption),) = [f for f in _figures(html) if f[1].startswith("Close-up")]
     speed, residual, angle = _panels(fig)
-    assert cu.what in caption and cu.cause in caption
+    assert cu.what in caption and in_words(cu.cause) in caption
     # where the cause acts: the close-up's own window, not the whole run
     to_t = _axis(residual, "x")
     x, _, w, _ = _area(residual)

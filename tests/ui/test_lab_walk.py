@@ -358,6 +358,8 @@ async def test_model_check_at_80x24_scrolls_with_the_arrows_and_shows_all_its_te
         assert _in_view(pane, lines) or pane.scroll_y == pane.max_scroll_y
         text = lines.text
         assert text.index("angle error") < text.index("evidence:")  # the lead figure first
+        # causes in words, not the JSON contract's names
+        assert "cause: dry friction" in text and "coulomb_friction" not in text
         panel = app.screen.query_one(ModelCheckPanel)
         assert panel.close_up and "close-up:" in text
         for plot in app.screen.query(TracePlot):  # the legend is a line under the plot

@@ -32,6 +32,8 @@ class Candidate:
     null: float
     meaning: str
     log_scale: bool = False
+    label: str = ""
+    """The cause in a few words for people (the contract name is for programs)."""
 
 
 CANDIDATES: tuple[Candidate, ...] = (
@@ -43,8 +45,17 @@ CANDIDATES: tuple[Candidate, ...] = (
         0.0,
         "dry friction: the motor needs u_c volts to break away, and a wheel left to itself stops "
         "in finite time",
+        label="dry friction",
     ),
-    Candidate("dead_time", "delay", "s", "delay", 0.0, "a pure delay between command and motor"),
+    Candidate(
+        "dead_time",
+        "delay",
+        "s",
+        "delay",
+        0.0,
+        "a pure delay between command and motor",
+        label="dead time",
+    ),
     Candidate(
         "velocity_filter",
         "taps",
@@ -52,6 +63,7 @@ CANDIDATES: tuple[Candidate, ...] = (
         "taps",
         1.0,
         "the measured speed is a moving average of the Euler velocity over N samples",
+        label="averaged speed (velocity filter)",
     ),
     Candidate(
         "coast_on_zero",
@@ -61,6 +73,7 @@ CANDIDATES: tuple[Candidate, ...] = (
         math.inf,
         "at zero command the bridge is open and the wheel coasts with its own time constant",
         log_scale=True,
+        label="coasting at zero command",
     ),
     Candidate(
         "second_pole",
@@ -69,6 +82,7 @@ CANDIDATES: tuple[Candidate, ...] = (
         "T2",
         0.0,
         "an extra pole (for instance the armature's L/R) delays the torque",
+        label="second pole",
     ),
     Candidate(
         "current_limit",
@@ -79,6 +93,7 @@ CANDIDATES: tuple[Candidate, ...] = (
         "the drive caps the current, so the speed ramps at a constant acceleration a_max until "
         "the back-EMF takes over",
         log_scale=True,
+        label="current limit",
     ),
 )
 """Every cause besides ``none``, in the order they are tried."""
@@ -86,6 +101,16 @@ CANDIDATES: tuple[Candidate, ...] = (
 BY_CAUSE: dict[str, Candidate] = {c.cause: c for c in CANDIDATES}
 
 NAMES: tuple[str, ...] = tuple(c.cause for c in CANDIDATES)
+
+
+def in_words(model: str) -> str:
+    """A model or cause name in words: "first_order+coulomb_friction" -> "first order + dry
+    friction"; ``none`` stays "none"."""
+    return " + ".join(
+        "first order" if p == "first_order" else (BY_CAUSE[p].label if p in BY_CAUSE else p)
+        for p in model.split("+")
+    )
+
 
 UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in CANDIDATES}}
 """Unit of every parameter a model reports."""

@@ -53,7 +53,7 @@ class ModelCheckPanel(ViewPanel[CheckView]):
             if self.close_up and v.close_t.size
             else "the whole log · F9 the close-up where the cause acts"
         )
-        text = [f"run {v.run} · cause: {v.cause}"]
+        text = [f"run {v.run} · cause: {v.cause_words or v.cause}"]
         if v.lead:
             text += [f"{v.lead}", f"(this figure leads: {v.lead_why})"]
         text += [
