@@ -535,6 +535,26 @@ def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figu
     return Figures((whole, close))
 
 
+def _two_fits(session: Session, run: str | None, params: dict[str, float]) -> list[str]:
+    """Why the model check's first-order T and K are not those of Tasks 11-12 when both
+    come from the same run (one sentence, or none)."""
+    res = session.results()
+    ident = res.identification
+    if run is None or res.run != run or ident is None or ident.step is None:
+        return []
+    st = ident.step
+    T, K = params.get("T"), params.get("K")
+    if T is None or K is None or not st.T:
+        return []
+    where = " over its rising steps" if st.fit.method == "rising_steps" else ""
+    return [
+        f"Tasks 11-12 give T = {_num(st.T)} s and K = {_num(st.K)} rad/s/V for the same run: "
+        f"they fit the encoder angle{where} with a time shift for the sampling, while "
+        "the model check fits the speed it simulates over the whole run, steps down "
+        f"included; here the two T differ by {_num(100.0 * abs(T / st.T - 1.0), 2)} %."
+    ]
+
+
 def _model_check_section(session: Session) -> Section | None:
     mc = session.model_check()
     if mc.run is None:
@@ -556,6 +576,7 @@ def _model_check_section(session: Session) -> Section | None:
         f"First-order model fitted to {mc.run}: {_params(b.params, b.intervals)}; simulated on "
         f"the recorded voltage it misses by {_num(b.rmse, 3)} rad/s rms (fit "
         f"{_num(b.fit_percent, 3)} %).",
+        *_two_fits(session, mc.run, b.params),
         f"Where it deviates: {r.where}.",
         f"Most likely cause: {in_words(f.cause)} ({f.cause}). "
         f"{f.evidence[:1].upper() + f.evidence[1:]}",

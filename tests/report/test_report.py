@@ -119,6 +119,8 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             "omega at u_A = 5 V",
             "Most likely cause: ",
             "First-order model fitted to steps-1",
+            "Tasks 11-12 give T = ",  # why the check's T is not Task 12's
+            "the two T differ by",
         ):
             assert text in doc, text
     ident = s.results().identification
