@@ -18,6 +18,7 @@ from minseg_tui.lab.runs import RunInfo
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import Identification, Reading, identify
 from minseg_tui.model.steplog import StepLog
+from minseg_tui.units import format_number
 
 
 @dataclass(frozen=True)
@@ -70,7 +71,7 @@ class Results:
             m = d.get("model")
             if not isinstance(m, dict):
                 return None
-            return f"{m['T']:.3g} omega' = -omega + {m['K']:.3g} u_A"
+            return f"{format_number(m['T'])} omega' = -omega + {format_number(m['K'])} u_A"
         node: object = d
         for part in path.split("."):
             if not isinstance(node, dict) or part not in node:

@@ -24,7 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab import capture as lab_capture
-from minseg_tui.lab.entry import format_quantity
+from minseg_tui.lab.entry import UNITS, format_quantity
 from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import step
 from minseg_tui.model import identify as model_identify
@@ -201,10 +201,15 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             if typed_ is not None and typed_.ok
             else _fmt(c.own, c.unit)
         )
+        # the computed value in the unit the group typed theirs in ("57 ms" beside "56.91 ms")
+        unit = c.unit
+        if typed_ is not None and typed_.ok and typed_.unit and typed_.unit in UNITS:
+            if c.unit in UNITS and UNITS[typed_.unit].quantity == UNITS[c.unit].quantity:
+                unit = typed_.unit
         comp = (
             "—"
             if c.computed is None
-            else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, c.unit))
+            else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, unit))
         )
         if c.rel_diff is not None:
             comp += f" ({c.rel_diff:+.0%})"

@@ -569,3 +569,20 @@ def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path)
         assert again.runs[-1].interrupted
         said = views.results(again, "task11").problems
         assert any(f"run {short.name} ended before its plan did (80 samples" in p for p in said)
+
+
+def test_the_computed_value_stands_in_the_unit_the_group_typed_theirs_in(tmp_path):
+    from minseg_tui.lab import views
+
+    with Session.create(tmp_path, ["A"]) as s:
+        _fill_table(s)
+        s.enter("R", "5.26")
+        _record_steps(s)
+        T = s.results().lookup("step.T_63")
+        assert isinstance(T, float)
+        s.enter("own.T", "57 ms")
+        (label, yours, computed), *_ = [c for c in views.comparisons(s, "task12") if c[1] != "—"]
+        assert yours == "57 ms" and computed.startswith(f"{T * 1e3:.4g} ms"), computed
+        s.enter("own.T", "0.057")  # no unit typed: the field's own unit, seconds
+        (_, yours, computed), *_ = [c for c in views.comparisons(s, "task12") if c[1] != "—"]
+        assert yours == "0.057" and " s (" in computed and " ms" not in computed
