@@ -353,7 +353,8 @@ class Session:
         changed) when ``root`` cannot take it."""
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
-        folder, lock = new_session_folder(Path(root), self.id)
+        # the id as a folder name of its own: a file saying '../x' must not leave ``root``
+        folder, lock = new_session_folder(Path(root), _slug(self.id) or "session")
         left: list[str] = []
         for r in self._runs:
             try:
