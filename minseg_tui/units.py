@@ -27,6 +27,11 @@ LAB_FIR_TAPS: int = 20
 KA_OVER_KV: float = 0.65
 """The manual's ratio k_a / k_v (equation 3.3)."""
 
+NUMBER = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?\Z")
+"""A number as a lab file or a command-line option writes it: ASCII decimal, no
+underscores, no nan or inf (Python's float() and int() also read ``3_6`` as 36, and
+Arabic-Indic or full-width digits, which no one means there)."""
+
 
 DIGITS: int = 4
 """Significant digits of a computed value on screen and in the report."""

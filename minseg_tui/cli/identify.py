@@ -10,13 +10,13 @@ import textwrap
 from minseg_tui.cli.output import print_json
 from minseg_tui.lab.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify
+from minseg_tui.units import NUMBER
 
 
 def _ohms(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a resistance in ohm, got '{text}'") from None
+    if not NUMBER.match(text.strip()):
+        raise argparse.ArgumentTypeError(f"expected a resistance in ohm, got '{text}'")
+    value = float(text)
     if not (math.isfinite(value) and value > 0):
         raise argparse.ArgumentTypeError(f"expected a positive resistance in ohm, got '{text}'")
     return value

@@ -48,7 +48,7 @@ import numpy as np
 from minseg_tui.device import protocol as P
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import MeterReading, Plant, PlantParams, ZeroMode
-from minseg_tui.units import KA_OVER_KV
+from minseg_tui.units import KA_OVER_KV, NUMBER
 
 FIRMWARE = "minseg-virtual 2.0.0"
 BOARD = "Virtual"
@@ -173,6 +173,8 @@ def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSett
             if opt.kind is bool:
                 v = raw if isinstance(raw, bool) else str(raw).lower() in ("1", "true", "yes", "")
             else:
+                if isinstance(raw, str) and not NUMBER.match(raw.strip()):
+                    raise ValueError(raw)  # 3_0, full-width digits: float() reads them
                 v = opt.kind(raw)
         except (TypeError, ValueError):
             what = {int: "an integer", float: "a number", bool: "true or false"}[opt.kind]

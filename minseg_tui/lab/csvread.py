@@ -28,6 +28,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
+from minseg_tui.units import NUMBER
 
 MAX_LINE_BYTES: int = 4096
 """Longest line read, bytes (a lab CSV line is under 200; Python's csv module stops at
@@ -39,8 +40,6 @@ MAX_FILE_BYTES: int = 512 * 2**20
 PIPE_WAIT_S: float = 10.0
 """Longest wait for data from a pipe, FIFO or device, s."""
 
-NUMBER = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?\Z")
-"""A number as a lab file writes it (ASCII decimal, no underscores, no nan or inf)."""
 
 _NUMBER_BYTES = b"0123456789.eE+-\n"
 _NUMBER_FIELD_BYTES = b"0123456789.eE+-\n,"

@@ -241,6 +241,8 @@ def parse_quantity(
     elif typed.symbol != form.symbol:
         note = f"read as {_fmt(number * typed.scale / form.scale)} {form.symbol}"
     value = _scaled(exact, typed.scale)
+    if not math.isfinite(value):  # 1e308 kΩ: finite as typed, not in the form's SI unit
+        return _raise(refuse(f"{stripped!r} is not a finite number in {form.symbol}"))
     if value < 0 and not allow_negative:
         return _raise(
             refuse(

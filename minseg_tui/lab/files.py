@@ -27,9 +27,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.csvread import NUMBER, CsvColumns, read_csv
+from minseg_tui.lab.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog, command, find_edges, header_problem
+from minseg_tui.units import NUMBER
 
 TABLE_COLUMNS: dict[str, str] = {
     "u_req": "V",
@@ -131,9 +132,9 @@ def _check_sample_period(f: CsvColumns, t: NDArray[np.float64]) -> None:
         if key not in f.metadata:
             continue
         raw = f.metadata[key]
-        first = raw.split()[0] if raw.split() else ""
+        first, *unit = raw.split() or [""]
         where = (f.source, f.metadata_lines[key])
-        if not NUMBER.match(first) or not float(first) > 0:
+        if not NUMBER.match(first) or not float(first) > 0 or unit not in ([], ["s"]):
             raise InputError(
                 *where, f"expected the sample period in s after '# {key}:', got '{raw}'"
             )

@@ -21,6 +21,7 @@ and ``# omega_over: interval`` so the model check need not detect them.
 from __future__ import annotations
 
 import contextlib
+import errno
 import json
 import os
 import time
@@ -35,7 +36,7 @@ import numpy as np
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, write_step_log
 from minseg_tui.lab.schema import PARTIAL_HEADER
-from minseg_tui.lab.store import RUNS_DIR, atomic_write_bytes, fsync_dir
+from minseg_tui.lab.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
 from minseg_tui.model.identify import u_ss_at
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
@@ -45,6 +46,18 @@ FLUSH_INTERVAL: float = 0.5
 """Longest time (s) a received sample waits in memory before it is written and fsynced."""
 
 PARTIAL_SUFFIX = ".partial"
+
+MAX_PARTIAL_BYTES = 128 * 2**20
+"""Largest partial file read back (2 million samples of at most 48 bytes each, and more)."""
+
+PARTIAL_RANGES: tuple[tuple[int, int], ...] = (
+    (0, 2**32 - 1),
+    (0, 2**32 - 1),
+    (-(2**31), 2**31 - 1),
+    (-(2**31), 2**31 - 1),
+)
+"""What the board sends for seq, t_us (uint32), count and u_mV (int32): a partial file's
+line outside these is damage, not a sample."""
 
 OMEGA_OVER = "interval"
 """How a recorded run's ``omega`` is computed, for its ``# omega_over:`` header: over each
@@ -321,7 +334,10 @@ def read_partial(path: Path) -> RawRun:
     header: dict[str, object] = {}
     damage = None
     rows: list[tuple[int, int, int, int]] = []
-    text = Path(path).read_bytes().decode("ascii", errors="replace")
+    raw = read_regular(Path(path), MAX_PARTIAL_BYTES)
+    if len(raw) > MAX_PARTIAL_BYTES:
+        raise OSError(errno.EFBIG, f"larger than any recording ({MAX_PARTIAL_BYTES >> 20} MiB)")
+    text = raw.decode("ascii", errors="replace")
     lines = text.split("\n")
     if not text.endswith("\n"):
         lines = lines[:-1]  # the last line was cut by the crash
@@ -333,9 +349,11 @@ def read_partial(path: Path) -> RawRun:
         if len(parts) != 4:
             continue
         try:
-            rows.append((int(parts[0]), int(parts[1]), int(parts[2]), int(parts[3])))
+            row = (int(parts[0]), int(parts[1]), int(parts[2]), int(parts[3]))
         except ValueError:
             continue
+        if all(lo <= v <= hi for v, (lo, hi) in zip(row, PARTIAL_RANGES, strict=True)):
+            rows.append(row)  # else a line no board sent (a damaged file): skipped
     arr = np.array(rows, dtype=np.int64).reshape(-1, 4)
     return RawRun(
         header=header, seq=arr[:, 0], t_us=arr[:, 1], count=arr[:, 2], u_mV=arr[:, 3], damage=damage

@@ -74,7 +74,7 @@ from minseg_tui.lab.runs import (
     run_header,
     ts_of,
 )
-from minseg_tui.lab.schema import KIND, SCHEMA
+from minseg_tui.lab.schema import KIND, RUN_NAME, SCHEMA
 from minseg_tui.lab.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
 from minseg_tui.lab.store import (
     RUNS_DIR,
@@ -354,7 +354,8 @@ class Session:
         changed) when ``root`` cannot take it."""
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
-        folder, lock = new_session_folder(Path(root), self.id)
+        # the id as a folder name of its own: a file saying '../x' must not leave ``root``
+        folder, lock = new_session_folder(Path(root), _slug(self.id) or "session")
         left: list[str] = []
         for r in self._runs:
             try:
@@ -805,6 +806,12 @@ class Session:
             return
         for partial in partials:
             name = partial.name[: -len(PARTIAL_SUFFIX)]
+            if not re.fullmatch(RUN_NAME, name):
+                self.recovery_notes.append(
+                    f"{RUNS_DIR}/{partial.name}: not a run this program recorded (its name is "
+                    "no run name); left as it is"
+                )
+                continue
             try:
                 raw = read_partial(partial)
                 info = self._keep(name, raw, interrupted=True)

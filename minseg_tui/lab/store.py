@@ -16,9 +16,11 @@ read-only folder, a drive pulled out) is a :class:`SaveProblem` the session keep
 from __future__ import annotations
 
 import contextlib
+import errno
 import json
 import os
 import re
+import stat
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
@@ -164,11 +166,33 @@ def damaged_message(path: Path, why: str) -> str:
     )
 
 
+def read_regular(path: Path, limit: int) -> bytes:
+    """At most ``limit`` + 1 bytes of the regular file ``path`` (more than ``limit``: the file
+    is larger). OSError when it cannot be read, and when it is not a regular file: a FIFO
+    or a device would make the read wait for ever or never end."""
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
+    try:
+        mode = os.fstat(fd).st_mode
+        if stat.S_ISDIR(mode):
+            raise OSError(errno.EISDIR, os.strerror(errno.EISDIR), str(path))
+        if not stat.S_ISREG(mode):
+            raise OSError(errno.EINVAL, "not a regular file (a pipe or a device?)", str(path))
+        chunks, size = [], 0
+        while size <= limit:
+            chunk = os.read(fd, min(1 << 20, limit + 1 - size))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+        return b"".join(chunks)
+    finally:
+        os.close(fd)
+
+
 def _load(path: Path) -> object:
     """The JSON value in ``path``; SessionMissing / SessionDamaged with one line."""
     try:
-        with open(path, "rb") as fh:
-            raw = fh.read(MAX_SESSION_BYTES + 1)
+        raw = read_regular(path, MAX_SESSION_BYTES)
     except FileNotFoundError:
         raise SessionMissing(str(path.parent), None, f"no session here (no {path.name})") from None
     except OSError as exc:

@@ -21,8 +21,12 @@ from minseg_tui.units import COUNTS_PER_REV
 FloatArray = NDArray[np.float64]
 
 
+MAX_CPR: int = 1_000_000
+"""Most encoder counts per revolution a ``# cpr:`` line may claim (a lab motor's encoder
+has hundreds to a few ten thousands)."""
+
 HEADER_FIELDS: dict[str, str] = {
-    "cpr": "encoder counts per wheel revolution, a whole number above 0",
+    "cpr": f"encoder counts per wheel revolution, a whole number above 0, at most {MAX_CPR}",
     "omega_over": "how omega was computed: 'interval' (the angle change over each row's real "
     "sample interval) or 'nominal' (over the nominal period ts)",
 }
@@ -38,8 +42,11 @@ def header_problem(key: str, value: str) -> str | None:
             n = int(v)
         except ValueError:
             n = 0
-        if n <= 0 or str(n) != v.lstrip("+"):
-            return f"expected # cpr: a whole number of counts per revolution above 0, got '{v}'"
+        if not 0 < n <= MAX_CPR or str(n) != v.lstrip("+"):
+            return (
+                f"expected # cpr: a whole number of counts per revolution above 0 and at most "
+                f"{MAX_CPR} (the MinSeg's encoder has 720), got '{v}'"
+            )
     if key == "omega_over" and v not in ("interval", "nominal"):
         return f"expected # omega_over: interval or nominal, got '{v}'"
     return None

@@ -127,7 +127,7 @@ def test_sim_command_bad_option_is_one_line():
 @pytest.mark.parametrize(
     ("args", "says"),
     [
-        (["--R", "nan"], "option R: expected a finite number, not negative, got 'nan'"),
+        (["--R", "nan"], "option R: expected a number, got 'nan'"),
         (["--jitter", "-5"], "option jitter: expected a finite number, not negative, got '-5'"),
         (
             ["--link", "/nonexistent-dir/minseg0"],

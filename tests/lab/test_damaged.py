@@ -5,6 +5,7 @@ one bad session never hides the others."""
 from __future__ import annotations
 
 import json
+import os
 
 import numpy as np
 import pytest
@@ -146,3 +147,63 @@ def test_a_damaged_partial_header_never_keeps_a_session_shut(tmp_path, header):
         assert info.interrupted and info.samples == 10 and info.ts == pytest.approx(0.025)
         assert any("header" in n for n in again.recovery_notes)
         assert list(again.load_run(info.name).extra["count"]) == [3 * k for k in range(10)]
+
+
+def test_a_session_file_that_is_a_fifo_is_listed_not_waited_on(tmp_path):
+    """A FIFO where session.json should be: opening it would wait for a writer for ever, and
+    the start screen's list with it."""
+    root = tmp_path / "sessions"
+    good = Session.create(root, ["Ada"])
+    good.close()
+    (root / "pipe").mkdir()
+    os.mkfifo(root / "pipe" / "session.json")
+    listed = {s.path.name: s for s in list_sessions(root)}
+    assert "not a regular file" in listed["pipe"].damaged
+    assert listed[good.folder.name].damaged is None
+    with pytest.raises(SessionDamaged, match="not a regular file"):
+        Session.open(root / "pipe")
+
+
+def _session_with_partial(tmp_path):
+    s = Session.create(tmp_path, ["A"])
+    s.close()
+    return s.folder
+
+
+def test_a_partial_that_is_a_fifo_does_not_keep_the_session_shut(tmp_path):
+    folder = _session_with_partial(tmp_path)
+    os.mkfifo(folder / "runs" / "steps-1.partial")
+    with Session.open(folder) as again:  # returns instead of waiting for a writer
+        assert again.runs == []
+        assert any(
+            "steps-1.partial" in n and "not a regular file" in n for n in again.recovery_notes
+        )
+
+
+def test_a_partial_with_numbers_no_board_sends_keeps_the_sound_rows(tmp_path):
+    folder = _session_with_partial(tmp_path)
+    rows = [f"{k},{1000 + 25000 * k},{3 * k},2500" for k in range(10)]
+    rows[4] = "4,101000,99999999999999999999999,2500"  # beyond int64: OverflowError before
+    rows[5] = "5,99999999999,15,2500"  # t_us beyond uint32
+    header = '# {"kind": "steps", "ts": 0.025}\nseq,t_us,count,u_mV'
+    (folder / "runs" / "steps-1.partial").write_text("\n".join([header, *rows]) + "\n")
+    with Session.open(folder) as again:
+        (info,) = again.runs
+        assert info.samples == 8
+        assert list(again.load_run(info.name).extra["count"]) == [
+            3 * k for k in range(10) if k not in (4, 5)
+        ]
+
+
+def test_a_partial_whose_name_is_no_run_name_is_left_and_the_file_stays_sound(tmp_path):
+    """``..partial`` would become a run named '.', which the schema refuses: the session
+    file the program wrote itself would then open as damaged."""
+    folder = _session_with_partial(tmp_path)
+    rows = [f"{k},{1000 + 25000 * k},{3 * k},2500" for k in range(10)]
+    (folder / "runs" / "..partial").write_text("\n".join(["# {}", *rows]) + "\n")
+    with Session.open(folder) as again:
+        assert again.runs == []
+        assert any("..partial" in n for n in again.recovery_notes)
+    with Session.open(folder) as third:  # still sound
+        assert third.runs == []
+    assert (folder / "runs" / "..partial").exists()  # left as it was

@@ -92,6 +92,8 @@ def test_conversion_note():
         ("inf", "V", "not a number"),
         ("-inf", "V", "not a number"),
         ("1e999", "V", "not a finite number"),
+        ("1e308 kΩ", "Ω", "not a finite number"),  # finite as typed, infinite in ohm
+        ("1e306 MΩ", "Ω", "not a finite number"),
         ("4.7 5.2", "V", "more than one number"),
         ("1,234.5", "V", "more than one number"),
         ("4.7.1", "V", "more than one number"),

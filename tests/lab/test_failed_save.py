@@ -304,3 +304,18 @@ def test_create_where_nothing_can_be_written_says_so(tmp_path):
     assert "cannot make a session folder here (Permission denied" in done.stdout, done.stderr
     assert done.stderr == ""
     np.testing.assert_equal(list(ro.iterdir()), [])
+
+
+def test_move_to_stays_in_the_folder_asked_for_whatever_the_file_says_its_id_is(tmp_path):
+    """The id comes from session.json: '../../x' there must not move the session outside
+    the folder the group chose."""
+    s = Session.create(tmp_path / "a", ["Ada"], date="2026-11-23")
+    s.close()
+    path = s.folder / "session.json"
+    data = json.loads(path.read_text(encoding="utf-8"))
+    data["id"] = "../../escaped"
+    path.write_text(json.dumps(data), encoding="utf-8")
+    with Session.open(s.folder) as again:
+        moved = again.move_to(tmp_path / "b" / "c")
+        assert moved.folder.parent == tmp_path / "b" / "c"
+    assert not (tmp_path / "escaped").exists()
