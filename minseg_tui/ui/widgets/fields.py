@@ -194,6 +194,9 @@ class FieldRow(Vertical):
             if isinstance(w, Input):
                 w.select_all()
             self.screen.scroll_to_widget(self, animate=False)
+            # and once more when the layout has settled (wrapped answers change height on
+            # their first layout), so the row is in view wherever it ends up
+            self.call_after_refresh(self.screen.scroll_to_widget, self, animate=False)
             return
 
     def pending(self) -> str | None:
