@@ -41,14 +41,16 @@ class Log:
 
 @dataclass(frozen=True)
 class Stop:
-    """A step down while the wheel turned: the row of the step, the speed before it (rad/s),
-    and when the measured speed first stood still for good within the stretch (s after the
-    step; None when it still turns at the stretch's end)."""
+    """A step down while the wheel turned: the row of the step, the speed before it (rad/s,
+    the mean over the ``rows`` rows before the step), and when the measured speed first stood
+    still for good within the stretch (s after the step; None when it still turns at the
+    stretch's end)."""
 
     row: int
     speed: float
     after: float | None
     to_zero: bool
+    rows: int
 
 
 def falls(log: Log) -> list[Stop]:
@@ -57,10 +59,12 @@ def falls(log: Log) -> list[Stop]:
     change = np.flatnonzero(np.diff(u) != 0) + 1
     bounds = np.concatenate((change, [u.size]))
     out = []
-    for a, b in zip(bounds[:-1], bounds[1:], strict=True):
+    starts = np.concatenate(([0], change))
+    for start, a, b in zip(starts[:-1], bounds[:-1], bounds[1:], strict=True):
         if abs(u[a]) >= abs(u[a - 1]):
             continue
-        speed = float(np.median(y[max(a - 3, 0) : a]))
+        rows = _before(log, a - int(start))
+        speed = float(np.mean(y[a - rows : a]))
         if abs(speed) <= max(log.zero, 3.0 * log.noise):
             continue
         still = np.abs(y[a:b]) <= log.zero
@@ -70,8 +74,24 @@ def falls(log: Log) -> list[Stop]:
         last_moving = int(run[-1]) if run.size else -1
         if last_moving < b - a - 3:
             after = float(t[a + last_moving + 1] - t[a])
-        out.append(Stop(int(a), speed, after, u[a] == 0))
+        out.append(Stop(int(a), speed, after, u[a] == 0, rows))
     return out
+
+
+BEFORE_S = 0.1
+"""How far back the speed before a step-down is averaged (s): one-count readings scatter,
+and an inferred step instant may fall a sample or two into the fall."""
+
+
+def _before(log: Log, stretch: int) -> int:
+    """Rows to average the speed before a step-down over: BEFORE_S, at most the last quarter of
+    a stretch of ``stretch`` rows (the part that has settled), at least 3."""
+    return max(3, min(round(BEFORE_S / log.ts), stretch // 4)) if stretch >= 3 else stretch
+
+
+def _before_s(log: Log, s: Stop) -> float:
+    """The span (s) the speed before the step-down ``s`` was averaged over."""
+    return float(log.t[s.row] - log.t[s.row - s.rows])
 
 
 def _ms(x: float) -> str:
@@ -91,7 +111,8 @@ def _coulomb(log: Log, ext: Fit) -> str:
         how = "coasts and " if coast else ""
         text = (
             f"after the drive drops at t = {log.t[s.row]:.3f} s the wheel {how}stands still "
-            f"{_ms(after)} later (measured, from {abs(s.speed):.3g} rad/s)"
+            f"{_ms(after)} later (measured, from {abs(s.speed):.3g} rad/s, its mean over the "
+            f"{_ms(_before_s(log, s))} before the drop)"
         )
         if left > max(log.zero, 2.0 * log.noise):
             text += f", where the first-order model still turns at {left:.2f} rad/s"
