@@ -87,7 +87,7 @@ def _main(args_list: list[str]) -> int:
         args_list.insert(0, "tui")
     selected = args_list[0] if args_list and args_list[0] in available else None
     parser = build_parser(selected)
-    args = parser.parse_args(args_list)
+    args = _parse(parser, args_list)
     if args.command is None:
         parser.print_help()
         return 2
@@ -150,8 +150,26 @@ class _Stdout(io.TextIOBase):
         return self.stream.isatty()
 
 
+def _parse(parser: argparse.ArgumentParser, args_list: list[str]) -> argparse.Namespace:
+    """The parsed arguments; --help's text that cannot be written (argparse swallows the error)
+    exits with 2 and one line, not 0 with nothing."""
+    out = _Stdout(sys.stdout)
+    sys.stdout = out
+    try:
+        return parser.parse_args(args_list)
+    except SystemExit:
+        if out.failed is not None and not isinstance(out.failed, BrokenPipeError):
+            _drop_stdout(out.stream)
+            raise SystemExit(
+                _fail("", f"cannot write the output ({out.failed.strerror})", 2)
+            ) from None
+        raise
+    finally:
+        sys.stdout = out.stream
+
+
 def _fail(command: str, message: str, code: int) -> int:
-    print(f"minseg-tui {command}: {message}", file=sys.stderr)
+    print(f"minseg-tui{' ' if command else ''}{command}: {message}", file=sys.stderr)
     return code
 
 

@@ -349,6 +349,17 @@ def test_stdout_that_cannot_be_written(tmp_path, json_flag):
     assert "No space left on device" in proc.stderr
 
 
+@pytest.mark.parametrize("argv", [["--help"], ["analyze", "--help"], ["sim", "-h"]])
+def test_help_that_cannot_be_written(argv):
+    """argparse swallows the error of writing --help; the command still says so and exits 2."""
+    with open("/dev/full", "w") as full:
+        proc = subprocess.run(
+            [*_cli(), *argv], stdout=full, stderr=subprocess.PIPE, text=True, timeout=60
+        )
+    assert proc.returncode == 2
+    assert proc.stderr == "minseg-tui: cannot write the output (No space left on device)\n"
+
+
 @pytest.mark.parametrize(
     ("flag", "value", "what"),
     [
