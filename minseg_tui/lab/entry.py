@@ -16,7 +16,8 @@ Accepted, for every field:
 
 Refused, with a message saying what was expected:
 
-- empty text, text that is not a number, ``nan``, ``inf``, a number too large to be finite;
+- empty text, text that is not a number, ``nan``, ``inf``, a number too large to be finite,
+  or one far beyond any value of its quantity in this lab (:data:`CEILING`: ``1e308`` V);
 - two numbers (``4.7 5.2``, ``1,234.5``, ``4.7.1``);
 - a unit of another quantity (``4.7 V`` for a current) or an unknown unit;
 - a prefix without its unit: ``3k`` is refused (write ``3 kΩ``), because a lone letter
@@ -82,6 +83,26 @@ _UNITS: tuple[Unit, ...] = (
     Unit("%", "percentage", 0.01, ("%", "percent")),
     Unit("", "number", 1.0, ()),
 )
+
+CEILING: dict[str, float] = {
+    "voltage": 1e3,
+    "current": 1e2,
+    "resistance": 1e9,
+    "angular velocity": 1e5,
+    "time": 1e6,
+    "gain": 1e6,
+    "back-emf constant": 1e3,
+    "torque constant": 1e3,
+    "friction coefficient": 1e3,
+    "inertia": 1e3,
+    "temperature": 1e5,
+    "oven gain": 1e6,
+    "percentage": 1e3,
+    "number": 1e12,
+}
+"""Quantity -> the largest magnitude (SI) an entry may have: far beyond anything the lab's
+meters, board or answers give (1 kV, 100 A, 1 GΩ, 100 000 rad/s...), so only a slip of the
+keyboard (1e308) is refused, and no figure computed from an entry overflows."""
 
 UNITS: dict[str, Unit] = {u.symbol: u for u in _UNITS}
 """Every unit by its display symbol (``"mA"``, ``"Ω"``, ``"rad/s"``, ``""`` for a pure number)."""
@@ -243,6 +264,14 @@ def parse_quantity(
     value = _scaled(exact, typed.scale)
     if not math.isfinite(value):  # 1e308 kΩ: finite as typed, not in the form's SI unit
         return _raise(refuse(f"{stripped!r} is not a finite number in {form.symbol}"))
+    ceiling = CEILING[form.quantity]
+    if abs(value) > ceiling:
+        return _raise(
+            refuse(
+                f"{stripped!r} is far beyond any {form.quantity} in this lab "
+                f"(at most {_fmt(ceiling / form.scale)} {form.symbol})".replace(" )", ")")
+            )
+        )
     if value < 0 and not allow_negative:
         return _raise(
             refuse(
