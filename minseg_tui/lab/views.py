@@ -546,6 +546,8 @@ def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | No
         return None  # not to be had, or nothing to show (no error above the noise at all)
     if not named or e is None:
         return f"first order {format_value(b, unit, 3)}"
+    if e == 0 and stem.startswith("above"):
+        return f"first order {format_value(b, unit, 3)} → extended 0, all noise"
     return f"first order {_num(b, 3)} → extended {format_value(e, unit, 3)}"
 
 

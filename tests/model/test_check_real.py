@@ -147,6 +147,25 @@ def test_n20_pwm25_is_at_the_encoder_floor():
     assert r.baseline.rmse < 1.2 * r.gain["noise_floor"]
 
 
+def test_n20_pwm25_speed_before_the_cut_is_the_speed_the_wheel_ran_at():
+    # the wheel ran at 8.8-9.2 rad/s (5 counts per sample, some 4s and 6s); the three rows
+    # before the inferred cut read 8.98, 7.18, 7.18, whose median (7.18) was given as "the
+    # speed before": the sentence now averages the 100 ms before the drop, and says so
+    _, words = analyze("n20-12v-pwm25")
+    before = re.search(r"from ([\d.]+) rad/s, its mean over the (\d+) ms before the drop", words)
+    assert before, words
+    assert 8.5 <= float(before.group(1)) <= 9.3
+    assert "from 7.18 rad/s" not in words
+
+
+def test_an_extended_model_within_the_noise_is_said_to_be_all_noise():
+    # duty 255: after the 345 ms delay is in the model its rms error (1.52 rad/s) is below the
+    # speed's scatter (1.76 rad/s); "-> 0 rad/s" alone read like a perfect model
+    r, words = analyze("micromouse-n20-duty255")
+    assert r.gain["extended_above_noise"] == 0
+    assert "-> 0 rad/s, the extended model's error is all noise" in words
+
+
 def test_n20_probe_cut_before_the_run_down_says_nothing_of_stops():
     # the same rise without its run-down: nothing to see friction or coasting by
     r, words = analyze("n20_255_uponly.csv")
