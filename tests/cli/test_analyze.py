@@ -192,6 +192,11 @@ def test_nxt_large_run_down_stops_in_finite_time(tmp_path, capsys):
     assert "stands still 425 ms later" in d["finding"]["evidence"]
     assert d["extended"]["rmse"] < d["baseline"]["rmse"]
     assert "starts_moving" in [a["kind"] for a in d["anomalies"]]
+    # both models stay within the encoder's floor here: no "all noise" said of one of them
+    assert main(["analyze", str(run2)]) == 0
+    words = capsys.readouterr().out
+    assert "above the floor 0 -> 0 rad/s;" in words
+    assert "all noise" not in words
 
 
 def test_nxt_small_runs_are_first_order(tmp_path, capsys):

@@ -40,7 +40,7 @@ def _pair(r: CheckResult, key: str) -> str:
         return "n/a"
     if r.finding.cause == "none" or e is None:
         return f"{b:.3g} {unit}"
-    if e == 0 and "above" in key:
+    if e == 0 and b > 0 and "above" in key:
         return f"{b:.3g} -> 0 {unit}, the extended model's error is all noise"
     return f"{b:.3g} -> {e:.3g} {unit}"
 
