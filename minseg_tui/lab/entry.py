@@ -84,25 +84,25 @@ _UNITS: tuple[Unit, ...] = (
     Unit("", "number", 1.0, ()),
 )
 
-CEILING: dict[str, float] = {
-    "voltage": 1e3,
-    "current": 1e2,
-    "resistance": 1e9,
-    "angular velocity": 1e5,
-    "time": 1e6,
-    "gain": 1e6,
-    "back-emf constant": 1e3,
-    "torque constant": 1e3,
-    "friction coefficient": 1e3,
-    "inertia": 1e3,
-    "temperature": 1e5,
-    "oven gain": 1e6,
-    "percentage": 1e3,
-    "number": 1e12,
+CEILING: dict[str, tuple[float, str]] = {
+    "voltage": (1e3, "1 kV"),
+    "current": (1e2, "100 A"),
+    "resistance": (1e9, "1000 MΩ"),
+    "angular velocity": (1e5, "100 000 rad/s"),
+    "time": (1e6, "a million seconds"),
+    "gain": (1e6, "a million rad/s/V"),
+    "back-emf constant": (1e3, "1000 V s/rad"),
+    "torque constant": (1e3, "1000 N m/A"),
+    "friction coefficient": (1e3, "1000 N m s/rad"),
+    "inertia": (1e3, "1000 kg m^2"),
+    "temperature": (1e5, "100 000 °C"),
+    "oven gain": (1e6, "a million °C/W"),
+    "percentage": (1e3, "100 000 %"),
+    "number": (1e12, "10^12"),
 }
-"""Quantity -> the largest magnitude (SI) an entry may have: far beyond anything the lab's
-meters, board or answers give (1 kV, 100 A, 1 GΩ, 100 000 rad/s...), so only a slip of the
-keyboard (1e308) is refused, and no figure computed from an entry overflows."""
+"""Quantity -> the largest magnitude (SI) an entry may have, and that limit in words: far
+beyond anything the lab's meters, board or answers give, so only a slip of the keyboard
+(1e308) is refused, and no figure computed from an entry overflows."""
 
 UNITS: dict[str, Unit] = {u.symbol: u for u in _UNITS}
 """Every unit by its display symbol (``"mA"``, ``"Ω"``, ``"rad/s"``, ``""`` for a pure number)."""
@@ -264,12 +264,11 @@ def parse_quantity(
     value = _scaled(exact, typed.scale)
     if not math.isfinite(value):  # 1e308 kΩ: finite as typed, not in the form's SI unit
         return _raise(refuse(f"{stripped!r} is not a finite number in {form.symbol}"))
-    ceiling = CEILING[form.quantity]
+    ceiling, in_words = CEILING[form.quantity]
     if abs(value) > ceiling:
         return _raise(
             refuse(
-                f"{stripped!r} is far beyond any {form.quantity} in this lab "
-                f"(at most {_fmt(ceiling / form.scale)} {form.symbol})".replace(" )", ")")
+                f"{stripped!r} is far beyond any {form.quantity} in this lab (at most {in_words})"
             )
         )
     if value < 0 and not allow_negative:
