@@ -606,11 +606,15 @@ class LabApp(App[None]):
         namespaces: Mapping[str, DOMNode] | None = None,
     ) -> bool:
         """Every key that does something beyond the text box stores what stands in the
-        step's entries first (PgDn, F2, F8, Ctrl+P, Ctrl+Q, ...): nothing typed is lost."""
+        step's entries first (PgDn, F2, F8, Ctrl+P, Ctrl+Q, ...): nothing typed is lost,
+        the keys typed just before it in the same burst included (Enter stores its entry
+        itself)."""
         if default_namespace is None or isinstance(default_namespace, App | Screen):
             screen = self._lab_screen()
             if screen is not None:
-                screen.store_typed()
+                await screen.settle_typing()
+                if action != "submit_entry":
+                    screen.store_typed()
         return await super().run_action(action, default_namespace, namespaces)
 
     # -- actions -------------------------------------------------------------------------

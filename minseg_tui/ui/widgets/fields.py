@@ -188,9 +188,10 @@ class FieldRow(Vertical):
 
     def focus_input(self) -> None:
         """Focus the text box (what it holds selected: typing replaces it) or the list of
-        options, and scroll it into view."""
+        options, and scroll it into view. At once, not after the messages already queued:
+        keys of the same burst go here."""
         for w in self.query(".field-input, .field-choice"):
-            w.focus()
+            self.screen.set_focus(w)
             if isinstance(w, Input):
                 w.select_all()
             self.screen.scroll_to_widget(self, animate=False)
@@ -208,6 +209,17 @@ class FieldRow(Vertical):
         if text == self._sent:
             return None
         self._sent = text
+        return text
+
+    def submitted(self) -> str | None:
+        """Enter (the screen handles it): the text to store, sent again even if unchanged;
+        what the box holds is selected, so keys typed if the focus stays here replace it.
+        None on a list of answers."""
+        if self.field.options:
+            return None
+        text = self.input.value
+        self._sent = text
+        self.input.select_all()
         return text
 
     def _choose(self, indices: tuple[int, ...]) -> None:
