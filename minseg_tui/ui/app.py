@@ -641,10 +641,13 @@ class LabApp(App[None]):
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
 
-    def _panel_method(self, name: str) -> Callable[[], None] | None:
-        """The current step panel's method ``name``, or None (no lab screen, or not this step)."""
-        screen = self._lab_screen()
-        panel = None if screen is None else screen.panel
+    def _panel_method(
+        self, name: str, screen: Screen[Any] | None = None
+    ) -> Callable[[], None] | None:
+        """The method ``name`` of the panel of the step ``screen`` (default: the screen on
+        top) shows, or None (no lab screen, or not this step)."""
+        screen = self.screen if screen is None else screen
+        panel = screen.panel if isinstance(screen, LabScreen) else None
         handler = getattr(panel, name, None)
         offers = getattr(panel, "offers", None)
         return None if handler is None or (offers is not None and not offers(name)) else handler
@@ -741,22 +744,38 @@ class LabApp(App[None]):
         self._connect("sim")
 
     def get_system_commands(self, screen: Screen[Any]) -> Iterable[SystemCommand]:
+        """The palette's actions on ``screen``; a step panel's (set a voltage, capture, run)
+        only on the steps whose panel has it, as the footer shows its key."""
         yield from super().get_system_commands(screen)
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
-        yield SystemCommand(
-            "Set step voltage",
-            "Request the next of 2.5/3.5/4.5 V on the board (F3)",
-            self.action_set_voltage,
-        )
-        yield SystemCommand(
-            "Capture omega_ss", "Mean over the settled window (F4)", self.action_capture
-        )
-        yield SystemCommand(
-            "Run step sequence", "Task 10 on the board, 25 ms (F5)", self.action_run_steps
-        )
-        yield SystemCommand(
-            "Run fast step sequence", "Task 10 at 5 ms, board-timed (F6)", self.action_run_fast
-        )
+        for method, title, help_text, action in (
+            (
+                "set_voltage",
+                "Set step voltage",
+                "Request the next of 2.5/3.5/4.5 V on the board (F3)",
+                self.action_set_voltage,
+            ),
+            (
+                "capture",
+                "Capture omega_ss",
+                "Mean over the settled window (F4)",
+                self.action_capture,
+            ),
+            (
+                "run_steps",
+                "Run step sequence",
+                "Task 10 on the board, 25 ms (F5)",
+                self.action_run_steps,
+            ),
+            (
+                "run_fast",
+                "Run fast step sequence",
+                "Task 10 at 5 ms, board-timed (F6)",
+                self.action_run_fast,
+            ),
+        ):
+            if self._panel_method(method, screen) is not None:
+                yield SystemCommand(title, help_text, action)
         yield SystemCommand(
             "Export report",
             "Markdown, HTML and CSV into the session folder (F8)",
