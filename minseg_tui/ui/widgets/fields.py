@@ -188,17 +188,28 @@ class FieldRow(Vertical):
 
     def focus_input(self) -> None:
         """Focus the text box (what it holds selected: typing replaces it) or the list of
-        options, and scroll it into view. At once, not after the messages already queued:
-        keys of the same burst go here."""
+        options at once, not after the messages already queued (keys of the same burst go
+        here), and scroll it into view once the layout has settled."""
         for w in self.query(".field-input, .field-choice"):
-            self.screen.set_focus(w)
+            self.screen.set_focus(w, scroll_visible=False)
             if isinstance(w, Input):
                 w.select_all()
-            self.screen.scroll_to_widget(self, animate=False)
-            # and once more when the layout has settled (wrapped answers change height on
-            # their first layout), so the row is in view wherever it ends up
-            self.call_after_refresh(self.screen.scroll_to_widget, self, animate=False)
+            self.call_after_refresh(self._bring_into_view, w)
             return
+
+    def _bring_into_view(self, box: Widget) -> None:
+        """The row in view now, and once more when the layout has settled (wrapped answers
+        change height on their first layout): the box centred if it is cut off (as a focus
+        scrolls), then the whole row, so it is in view wherever it ends up."""
+        screen = self.screen
+        screen.scroll_to_widget(self, animate=False)
+
+        def settled() -> None:
+            if screen.focused is box and not screen.can_view_entire(box):
+                screen.scroll_to_center(box, origin_visible=True)
+            screen.scroll_to_widget(self, animate=False)
+
+        self.call_after_refresh(settled)
 
     def pending(self) -> str | None:
         """The text standing in the box that the lab does not hold yet (None when there is
