@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from minseg_tui.ui.widgets.plots import Canvas, TracePlot, row_ticks, tick_labels, ticks
+from minseg_tui.ui.widgets.plots import Canvas, TracePlot, row_ticks, thin, tick_labels, ticks
 from tests.ui.helpers import goto, standing, start
 
 
@@ -46,3 +46,16 @@ def test_tick_labels_never_say_minus_zero():
     assert tick_labels([-1.0, -0.5, -0.0, 0.5]) == ["-1.0", "-0.5", "0.0", "0.5"]
     assert tick_labels([0.0, 2.5, 5.0, 7.5]) == ["0.0", "2.5", "5.0", "7.5"]
     assert tick_labels([-0.1, 0.0, 0.1, 0.2]) == ["-0.1", "0.0", "0.1", "0.2"]
+
+
+def test_thinning_keeps_the_ends_and_every_peak_in_order():
+    """A 5 ms run has 2419 samples; the plot hands plotext about four a column, and what
+    it draws keeps each run of samples' lowest and highest (a one-sample spike too)."""
+    x = [k * 0.005 for k in range(2419)]
+    y = [0.0] * 2419
+    y[1000], y[1701] = 9.0, -3.0
+    tx, ty = thin(x, y, 200)
+    assert len(tx) <= 202 and tx == sorted(tx)
+    assert (tx[0], tx[-1]) == (x[0], x[-1])
+    assert 9.0 in ty and -3.0 in ty and tx[ty.index(9.0)] == x[1000]
+    assert thin(x[:50], y[:50], 200) == (x[:50], y[:50])
