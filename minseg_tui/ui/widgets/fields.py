@@ -166,11 +166,29 @@ class FieldRow(Vertical):
             with Horizontal(classes="field-line"):
                 yield Label(f"{self.field.label}{unit}", classes="field-label")
                 yield EntryBox(self._text, self.field.hint, self._readonly)
+            yield Prose(self.field.hint, classes="field-hint")
         yield Prose("", classes="field-msg")
 
     def on_mount(self) -> None:
         if self._result is not None:
             self.show_result(self._result)
+        self._place_hint()
+
+    def on_resize(self) -> None:
+        self._place_hint()
+
+    @on(Input.Changed)
+    def _place_hint(self) -> None:
+        """The hint in the empty box if it fits there; if not (at 80 columns, 'multimeter on
+        V=, between M1A and M1B' was cut to 'multimeter on V=, between M1A an'), in full on
+        the line under the box while the box is empty."""
+        hints = self.query(".field-hint")
+        if not hints or not self.field.hint:
+            return
+        box = self.input
+        fits = box.content_size.width == 0 or len(self.field.hint) < box.content_size.width
+        box.placeholder = self.field.hint if fits else ""
+        hints.first().display = not fits and not box.value
 
     @property
     def input(self) -> EntryBox:
