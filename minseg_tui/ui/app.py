@@ -112,6 +112,13 @@ is; no label: not in the footer). The footer shows a key on the steps whose pane
 method; elsewhere the key says that it is not part of this step. None is printable, so no key
 is taken from typing in an entry (Ctrl+arrows stay the entry's word moves)."""
 
+
+def _first(keys: str) -> bool:
+    """Whether a panel key is a function key (taken before any widget: no entry uses them;
+    the arrows with Alt or Ctrl stay the entry's word moves)."""
+    return keys.startswith("f")
+
+
 RUN_ENDS = frozenset({"stepdone", "disconnected", "watchdog", "boot", "error"})
 """Link events after which a run being recorded takes no more samples."""
 
@@ -153,11 +160,16 @@ class LabApp(App[None]):
         Binding("f1", "help", "Help"),
         Binding("f2", "stop_motor", "STOP", priority=True),
         Binding("f8", "export", "Export"),
+        # the F-keys are the app's before any widget's (priority): handled in the order typed,
+        # so F4 has captured and moved the focus on before the reading typed after it arrives
         *[
-            Binding(keys, f"panel('{method}')", label, show=bool(label))
+            Binding(keys, f"panel('{method}')", label, show=bool(label), priority=_first(keys))
             for keys, method, label, _ in PANEL_KEYS
         ],
-        *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
+        *[
+            Binding(keys, f"not_here('{what}')", show=False, priority=_first(keys))
+            for keys, _, _, what in PANEL_KEYS
+        ],
     ]
 
     device: reactive[DeviceInfo | None] = reactive(None)
@@ -665,10 +677,17 @@ class LabApp(App[None]):
             return self._panel_method(str(parameters[0])) is not None
         return True
 
-    def action_panel(self, name: str) -> None:
+    async def action_panel(self, name: str) -> None:
+        """A panel key: the panel's method, then wait until what it asked (a capture, say) is
+        done, so the keys typed after it act on the result."""
         handler = self._panel_method(name)
-        if handler is not None:
-            handler()
+        screen = self._lab_screen()
+        if handler is None or screen is None:
+            return
+        handler()
+        panel = screen.panel
+        if panel is not None:
+            await screen.settle_from(panel)
 
     def action_not_here(self, what: str) -> None:
         if self._lab_screen() is not None:

@@ -6,7 +6,7 @@ after it into the new step; after Enter, into the next entry."""
 from __future__ import annotations
 
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.fakes import QuietDevice
+from tests.ui.fakes import QuietDevice, frozen_stream
 from tests.ui.helpers import burst, goto, shown, start
 
 
@@ -66,3 +66,22 @@ async def test_a_panel_key_right_after_pgdn_works_on_the_new_step(quiet):
         await burst(pilot, "pagedown", "f5")
         assert shown(app, "task10")
         assert dev.commands[before:] == ["STOP"]  # the run begins: motor off, wheel to stand
+
+
+async def test_the_reading_typed_right_after_f4_goes_into_the_next_entry(quiet):
+    """Seen in tmux on Task 4: 'F4 2,05 Enter' in one burst left u_ss at 2.5 V empty (the
+    reading went into the omega_ss box the capture then overwrote), and the next burst
+    'F4 2,9V Enter' at 3.5 V put 2.9 V into the 2.5 V row."""
+    dev = QuietDevice(seed=2)
+    app = quiet(dev)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task4")
+        await burst(pilot, "f3")
+        assert app.requested == 2.5
+        app.live.extend(frozen_stream(u=2.5))
+        await burst(pilot, "f4", *"2,05", "enter")
+        with app.session as s:
+            assert s.value("omega_ss@2.5") is not None
+        assert _typed(app, "u_ss@2.5") == "2,05"
+        assert app.focused is app.screen.query_one(f"#{field_id('omega_ss@3.5')}", FieldRow).input

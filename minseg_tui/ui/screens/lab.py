@@ -420,6 +420,19 @@ class LabScreen(StatusScreen):
             if target.call_later(done.set):
                 await done.wait()
 
+    async def settle_from(self, widget: Widget) -> None:
+        """Wait until the messages ``widget`` has posted are handled up to this screen (each
+        bubbles from a widget's queue to its parent's: draining them in that order sees it
+        through)."""
+        here = asyncio.current_task()
+        for node in widget.ancestors_with_self:
+            if getattr(node, "_task", None) is not here:
+                done = asyncio.Event()
+                if node.call_later(done.set):
+                    await done.wait()
+            if node is self:
+                return
+
     def action_submit_entry(self) -> None:
         """Enter in a text entry: store it (the app has settled the typing first); accepted,
         the focus moves to the next entry at once. Elsewhere Enter does what it does there."""
