@@ -112,6 +112,13 @@ is; no label: not in the footer). The footer shows a key on the steps whose pane
 method; elsewhere the key says that it is not part of this step. None is printable, so no key
 is taken from typing in an entry (Ctrl+arrows stay the entry's word moves)."""
 
+
+def _first(keys: str) -> bool:
+    """Whether a panel key is a function key (taken before any widget: no entry uses them;
+    the arrows with Alt or Ctrl stay the entry's word moves)."""
+    return keys.startswith("f")
+
+
 RUN_ENDS = frozenset({"stepdone", "disconnected", "watchdog", "boot", "error"})
 """Link events after which a run being recorded takes no more samples."""
 
@@ -153,11 +160,16 @@ class LabApp(App[None]):
         Binding("f1", "help", "Help"),
         Binding("f2", "stop_motor", "STOP", priority=True),
         Binding("f8", "export", "Export"),
+        # the F-keys are the app's before any widget's (priority): handled in the order typed,
+        # so F4 has captured and moved the focus on before the reading typed after it arrives
         *[
-            Binding(keys, f"panel('{method}')", label, show=bool(label))
+            Binding(keys, f"panel('{method}')", label, show=bool(label), priority=_first(keys))
             for keys, method, label, _ in PANEL_KEYS
         ],
-        *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
+        *[
+            Binding(keys, f"not_here('{what}')", show=False, priority=_first(keys))
+            for keys, _, _, what in PANEL_KEYS
+        ],
     ]
 
     device: reactive[DeviceInfo | None] = reactive(None)
@@ -606,11 +618,15 @@ class LabApp(App[None]):
         namespaces: Mapping[str, DOMNode] | None = None,
     ) -> bool:
         """Every key that does something beyond the text box stores what stands in the
-        step's entries first (PgDn, F2, F8, Ctrl+P, Ctrl+Q, ...): nothing typed is lost."""
+        step's entries first (PgDn, F2, F8, Ctrl+P, Ctrl+Q, ...): nothing typed is lost,
+        the keys typed just before it in the same burst included (Enter stores its entry
+        itself)."""
         if default_namespace is None or isinstance(default_namespace, App | Screen):
             screen = self._lab_screen()
             if screen is not None:
-                screen.store_typed()
+                await screen.settle_typing()
+                if action != "submit_entry":
+                    screen.store_typed()
         return await super().run_action(action, default_namespace, namespaces)
 
     # -- actions -------------------------------------------------------------------------
@@ -637,10 +653,13 @@ class LabApp(App[None]):
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
 
-    def _panel_method(self, name: str) -> Callable[[], None] | None:
-        """The current step panel's method ``name``, or None (no lab screen, or not this step)."""
-        screen = self._lab_screen()
-        panel = None if screen is None else screen.panel
+    def _panel_method(
+        self, name: str, screen: Screen[Any] | None = None
+    ) -> Callable[[], None] | None:
+        """The method ``name`` of the panel of the step ``screen`` (default: the screen on
+        top) shows, or None (no lab screen, or not this step)."""
+        screen = self.screen if screen is None else screen
+        panel = screen.panel if isinstance(screen, LabScreen) else None
         handler = getattr(panel, name, None)
         offers = getattr(panel, "offers", None)
         return None if handler is None or (offers is not None and not offers(name)) else handler
@@ -658,10 +677,17 @@ class LabApp(App[None]):
             return self._panel_method(str(parameters[0])) is not None
         return True
 
-    def action_panel(self, name: str) -> None:
+    async def action_panel(self, name: str) -> None:
+        """A panel key: the panel's method, then wait until what it asked (a capture, say) is
+        done, so the keys typed after it act on the result."""
         handler = self._panel_method(name)
-        if handler is not None:
-            handler()
+        screen = self._lab_screen()
+        if handler is None or screen is None:
+            return
+        handler()
+        panel = screen.panel
+        if panel is not None:
+            await screen.settle_from(panel)
 
     def action_not_here(self, what: str) -> None:
         if self._lab_screen() is not None:
@@ -737,22 +763,38 @@ class LabApp(App[None]):
         self._connect("sim")
 
     def get_system_commands(self, screen: Screen[Any]) -> Iterable[SystemCommand]:
+        """The palette's actions on ``screen``; a step panel's (set a voltage, capture, run)
+        only on the steps whose panel has it, as the footer shows its key."""
         yield from super().get_system_commands(screen)
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
-        yield SystemCommand(
-            "Set step voltage",
-            "Request the next of 2.5/3.5/4.5 V on the board (F3)",
-            self.action_set_voltage,
-        )
-        yield SystemCommand(
-            "Capture omega_ss", "Mean over the settled window (F4)", self.action_capture
-        )
-        yield SystemCommand(
-            "Run step sequence", "Task 10 on the board, 25 ms (F5)", self.action_run_steps
-        )
-        yield SystemCommand(
-            "Run fast step sequence", "Task 10 at 5 ms, board-timed (F6)", self.action_run_fast
-        )
+        for method, title, help_text, action in (
+            (
+                "set_voltage",
+                "Set step voltage",
+                "Request the next of 2.5/3.5/4.5 V on the board (F3)",
+                self.action_set_voltage,
+            ),
+            (
+                "capture",
+                "Capture omega_ss",
+                "Mean over the settled window (F4)",
+                self.action_capture,
+            ),
+            (
+                "run_steps",
+                "Run step sequence",
+                "Task 10 on the board, 25 ms (F5)",
+                self.action_run_steps,
+            ),
+            (
+                "run_fast",
+                "Run fast step sequence",
+                "Task 10 at 5 ms, board-timed (F6)",
+                self.action_run_fast,
+            ),
+        ):
+            if self._panel_method(method, screen) is not None:
+                yield SystemCommand(title, help_text, action)
         yield SystemCommand(
             "Export report",
             "Markdown, HTML and CSV into the session folder (F8)",

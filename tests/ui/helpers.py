@@ -13,6 +13,8 @@ import asyncio
 from collections.abc import Callable
 from contextlib import suppress
 
+from textual import events
+from textual.keys import _character_to_key
 from textual.message import Message
 from textual.pilot import Pilot
 from textual.worker import WorkerCancelled
@@ -181,6 +183,23 @@ async def type_in(pilot: Pilot[None], key: str, text: str) -> FieldRow:
     await pilot.press("enter")
     await settle(pilot)
     return row
+
+
+async def burst(pilot: Pilot[None], *keys: str) -> None:
+    """Send ``keys`` the way a terminal hands over a burst (several keys in one read, as a
+    quick typist or ``tmux send-keys`` gives them): all queued on the app at once, without
+    waiting for the app between them (``pilot.press`` waits after every key); then wait
+    until the app has processed them all."""
+    app = pilot.app
+    driver = app._driver
+    assert driver is not None
+    for key in keys:
+        name = _character_to_key(key) if len(key) == 1 and not key.isalnum() else key
+        char = key if len(key) == 1 else None
+        event = events.Key(name, char)
+        event.set_sender(app)
+        driver.send_message(event)
+    await settle(pilot)
 
 
 async def paste_in(pilot: Pilot[None], key: str, text: str) -> FieldRow:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from textual.filter import Monochrome, NoColor
 from textual.message import Message
-from textual.widgets import DataTable, RadioSet, SelectionList
+from textual.widgets import DataTable, OptionList, RadioSet, SelectionList
 
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.lab import views
@@ -353,9 +353,6 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
         titles = {c.title for c in app.get_system_commands(app.screen)}
         assert {
             "Stop motor",
-            "Capture omega_ss",
-            "Run step sequence",
-            "Run fast step sequence",
             "Export report",
             "Switch to virtual board",
             "Import a step log",
@@ -365,6 +362,38 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
         await settle(pilot)
         await pilot.press("enter")
         await settle(pilot, lambda: shown(app, "task10"))
+
+
+async def test_the_palette_offers_a_step_panel_action_only_on_its_steps(quiet):
+    """Seen in the walk: 'Capture omega_ss' was offered on the model check (and on every
+    step), where it only says that it is not part of this step."""
+    panel_actions = {
+        "Set step voltage",
+        "Capture omega_ss",
+        "Run step sequence",
+        "Run fast step sequence",
+    }
+    offered = {
+        "prep4": set(),
+        "task3": {"Set step voltage"},
+        "task4": {"Set step voltage", "Capture omega_ss"},
+        "task10": {"Run step sequence", "Run fast step sequence"},
+        "model_check": set(),
+    }
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        for step_id, expected in offered.items():
+            await goto(pilot, step_id)
+            titles = {c.title for c in app.get_system_commands(app.screen)}
+            assert titles & panel_actions == expected, step_id
+            assert {"Stop motor", "Export report"} <= titles
+        await pilot.press("ctrl+p")  # the palette asks about the screen under it
+        await pilot.press(*"Capture")
+        await settle(pilot)
+        hits = app.screen.query_one("CommandList", OptionList)
+        prompts = [str(hits.get_option_at_index(k).prompt) for k in range(hits.option_count)]
+        assert not any("Capture omega_ss" in p for p in prompts)
 
 
 async def test_navigator_collapses_and_marks_done_steps(quiet):

@@ -9,12 +9,14 @@ state through bound reactive attributes, and views of the session built in a wor
 
 from __future__ import annotations
 
+import asyncio
 from collections.abc import Callable, Sequence
 from functools import partial
 from pathlib import Path
 from typing import TypeVar
 
 from textual import events, on, work
+from textual.actions import SkipAction
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
@@ -45,7 +47,7 @@ from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.recording import RunProgress
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
-from minseg_tui.ui.widgets.fields import FieldRow
+from minseg_tui.ui.widgets.fields import EntryBox, FieldRow
 from minseg_tui.ui.widgets.prose import Prose
 
 V = TypeVar("V")
@@ -76,22 +78,14 @@ def nav_label(step: Step, status: str = "todo") -> str:
 
 class StepPane(VerticalScroll):
     """Title, goal, what to do, the step's own panel (and the readout it keeps in sight at the
-    bottom) and its entry rows; once shown, it focuses what ``focus`` says: ``entry`` (the
-    step's first empty entry, scrolled into view; the pane itself on a step without
-    entries, so the arrow keys scroll it), a selector, or None (nothing)."""
+    bottom) and its entry rows. :meth:`focus_on` focuses its landing entry or a widget in it
+    (the screen calls it once the pane is mounted)."""
 
-    def __init__(
-        self,
-        step: Step,
-        panel: Widget | None,
-        rows: Sequence[FieldRow],
-        focus: str | None = None,
-    ) -> None:
+    def __init__(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
         super().__init__(classes="pane")
         self.step = step
         self.panel = panel
         self._rows = rows
-        self._focus = focus
         # focusable where the step may land on its text (no entries, or a panel to read):
         # the arrow keys then scroll it
         self.can_focus = panel is not None or not step.fields
@@ -113,8 +107,6 @@ class StepPane(VerticalScroll):
 
     def on_mount(self) -> None:
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
-        if self._focus is not None:
-            self.call_after_refresh(self.focus_on, self._focus)
 
     def landing_row(self) -> FieldRow | None:
         """The entry the step lands in: the first one with nothing in it, else the first;
@@ -137,17 +129,18 @@ class StepPane(VerticalScroll):
 
     def focus_on(self, what: str) -> None:
         """Focus the step's landing entry (``entry``: scrolled into view, its text selected
-        so that typing replaces it; the pane itself on a step without entries) or the widget
-        the selector ``what`` finds (scrolled into view)."""
+        so that typing replaces it; the pane itself on a step without entries, so the arrow
+        keys scroll it) or the widget the selector ``what`` finds (scrolled into view). At
+        once, not after the messages already queued: keys of the same burst go here."""
         if what == "entry":
             row = self.landing_row()
             if row is not None:
                 row.focus_input()
             else:
-                self.focus()
+                self.screen.set_focus(self)
             return
         for w in self.query(what):
-            w.focus()
+            self.screen.set_focus(w)
 
 
 class StepCommands(Provider):
@@ -197,6 +190,9 @@ class LabScreen(StatusScreen):
     BINDINGS = [
         Binding("pagedown,ctrl+n", "next_step", "Next step", priority=True),
         Binding("pageup,ctrl+b", "prev_step", "Prev step", show=False, priority=True),
+        # Enter in an entry is the screen's (priority): the focus moves on before the keys
+        # typed after it are handed to a widget, so they go into the next entry
+        Binding("enter", "submit_entry", show=False, priority=True),
         Binding("ctrl+l", "focus_nav", "Steps", show=False),
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
     ]
@@ -242,13 +238,13 @@ class LabScreen(StatusScreen):
             yield Static("", classes="pane")
         yield Footer()
 
-    def on_mount(self) -> None:
+    async def on_mount(self) -> None:
         self._lab_changed.subscribe(self, self._on_lab_changed)
         with self.session as s:
             current = s.current_step
         start = current if current in STEP_IDS else STEP_IDS[0]
         self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
-        self.show_step(start)
+        await self.show_step(start)
 
     # -- the step on screen --------------------------------------------------------------
     @property
@@ -298,8 +294,9 @@ class LabScreen(StatusScreen):
                 for f in step.fields
             ]
 
-    def show_step(self, step_id: str) -> None:
-        """Put ``step_id`` on the right and remember it in the session."""
+    async def show_step(self, step_id: str) -> None:
+        """Put ``step_id`` on the right and remember it in the session; return once its pane
+        is mounted and focused (a key handled after this one acts on the new step)."""
         if self._shown == step_id:  # not the DOM: a pane mounted with the screen is not in it yet
             return
         self.store_typed()  # what stands in the entries of the step being left
@@ -314,11 +311,15 @@ class LabScreen(StatusScreen):
         else:  # moved with PgDn/PgUp: land in the step; browsing the list stays on the list
             focus = None if self.focused is self.query_one("#nav") and not self._paging else "entry"
         self._paging = False
-        self.query(".pane").remove()
-        self.query_one("#body").mount(StepPane(step, panel, self._rows(step), focus))
+        self.query(".pane").remove()  # not awaited: a step shown meanwhile removes this one
+        pane = StepPane(step, panel, self._rows(step))
+        mounted = self.query_one("#body").mount(pane)
         self.post_message(StepShown(step))
         if isinstance(panel, ViewPanel):
             self._load(panel)
+        await mounted
+        if focus is not None and self._shown == step_id and pane.is_attached:
+            pane.focus_on(focus)
 
     @work(thread=True, exclusive=True, group="view", name="panel view")
     def _load(self, panel: ViewPanel[V]) -> None:
@@ -355,11 +356,11 @@ class LabScreen(StatusScreen):
 
     # -- moving ------------------------------------------------------------------------
     @on(OptionList.OptionHighlighted, "#nav")
-    def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
+    async def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
         if event.option_index != event.option_list.highlighted:
             return  # stale: the list's first highlight on mount, after a resume moved it on
         if event.option.id:
-            self.show_step(event.option.id)
+            await self.show_step(event.option.id)
 
     @on(OptionList.OptionSelected, "#nav")
     def _selected(self, event: OptionList.OptionSelected) -> None:
@@ -381,17 +382,70 @@ class LabScreen(StatusScreen):
         self._jump = (focus,)
         nav.highlighted = index
 
-    def _move(self, delta: int) -> None:
+    async def _move(self, delta: int) -> None:
+        """PgDn/PgUp: the next or previous step, shown (and focused) before the keys typed
+        after it are handed on, so they land in the new step."""
         nav = self.query_one("#nav", OptionList)
         index = max(0, min(len(STEPS) - 1, (nav.highlighted or 0) + delta))
-        self._paging = index != nav.highlighted
-        nav.highlighted = index
+        if index == nav.highlighted:
+            return
+        self._paging = True
+        nav.highlighted = index  # the first of its message and the call below shows the step
+        shown = asyncio.Event()
 
-    def action_next_step(self) -> None:
-        self._move(1)
+        async def show() -> None:  # on the screen's own queue (its panels bind to it)
+            try:
+                await self.show_step(STEP_IDS[index])
+            finally:
+                shown.set()
 
-    def action_prev_step(self) -> None:
-        self._move(-1)
+        if self.call_later(show):
+            await shown.wait()
+
+    async def action_next_step(self) -> None:
+        await self._move(1)
+
+    async def action_prev_step(self) -> None:
+        await self._move(-1)
+
+    async def settle_typing(self) -> None:
+        """Wait until the keys already handed to the focused widget (and to the screen) are
+        in it: typed in the same burst as the key being handled, they belong before it.
+        Call before a key acts on what was typed (PgDn, Enter, F-keys)."""
+        here = asyncio.current_task()
+        for target in (self.focused, self):
+            if target is None or getattr(target, "_task", None) is here:
+                continue  # called from that widget's own handler: its queue waits for us
+            done = asyncio.Event()
+            if target.call_later(done.set):
+                await done.wait()
+
+    async def settle_from(self, widget: Widget) -> None:
+        """Wait until the messages ``widget`` has posted are handled up to this screen (each
+        bubbles from a widget's queue to its parent's: draining them in that order sees it
+        through)."""
+        here = asyncio.current_task()
+        for node in widget.ancestors_with_self:
+            if getattr(node, "_task", None) is not here:
+                done = asyncio.Event()
+                if node.call_later(done.set):
+                    await done.wait()
+            if node is self:
+                return
+
+    def action_submit_entry(self) -> None:
+        """Enter in a text entry: store it (the app has settled the typing first); accepted,
+        the focus moves to the next entry at once. Elsewhere Enter does what it does there."""
+        box = self.focused
+        row = box.parent.parent if isinstance(box, EntryBox) and box.parent else None
+        if not isinstance(row, FieldRow):
+            raise SkipAction()
+        text = row.submitted()
+        if text is None:
+            return
+        result = self._store(row, text, submitted=True)
+        if result.ok:
+            self.focus_after(row.field.key)
 
     def action_focus_nav(self) -> None:
         nav = self.query_one("#nav")

@@ -166,11 +166,29 @@ class FieldRow(Vertical):
             with Horizontal(classes="field-line"):
                 yield Label(f"{self.field.label}{unit}", classes="field-label")
                 yield EntryBox(self._text, self.field.hint, self._readonly)
+            yield Prose(self.field.hint, classes="field-hint")
         yield Prose("", classes="field-msg")
 
     def on_mount(self) -> None:
         if self._result is not None:
             self.show_result(self._result)
+        self._place_hint()
+
+    def on_resize(self) -> None:
+        self._place_hint()
+
+    @on(Input.Changed)
+    def _place_hint(self) -> None:
+        """The hint in the empty box if it fits there; if not (at 80 columns, 'multimeter on
+        V=, between M1A and M1B' was cut to 'multimeter on V=, between M1A an'), in full on
+        the line under the box while the box is empty."""
+        hints = self.query(".field-hint")
+        if not hints or not self.field.hint:
+            return
+        box = self.input
+        fits = box.content_size.width == 0 or len(self.field.hint) < box.content_size.width
+        box.placeholder = self.field.hint if fits else ""
+        hints.first().display = not fits and not box.value
 
     @property
     def input(self) -> EntryBox:
@@ -188,16 +206,28 @@ class FieldRow(Vertical):
 
     def focus_input(self) -> None:
         """Focus the text box (what it holds selected: typing replaces it) or the list of
-        options, and scroll it into view."""
+        options at once, not after the messages already queued (keys of the same burst go
+        here), and scroll it into view once the layout has settled."""
         for w in self.query(".field-input, .field-choice"):
-            w.focus()
+            self.screen.set_focus(w, scroll_visible=False)
             if isinstance(w, Input):
                 w.select_all()
-            self.screen.scroll_to_widget(self, animate=False)
-            # and once more when the layout has settled (wrapped answers change height on
-            # their first layout), so the row is in view wherever it ends up
-            self.call_after_refresh(self.screen.scroll_to_widget, self, animate=False)
+            self.call_after_refresh(self._bring_into_view, w)
             return
+
+    def _bring_into_view(self, box: Widget) -> None:
+        """The row in view now, and once more when the layout has settled (wrapped answers
+        change height on their first layout): the box centred if it is cut off (as a focus
+        scrolls), then the whole row, so it is in view wherever it ends up."""
+        screen = self.screen
+        screen.scroll_to_widget(self, animate=False)
+
+        def settled() -> None:
+            if screen.focused is box and not screen.can_view_entire(box):
+                screen.scroll_to_center(box, origin_visible=True)
+            screen.scroll_to_widget(self, animate=False)
+
+        self.call_after_refresh(settled)
 
     def pending(self) -> str | None:
         """The text standing in the box that the lab does not hold yet (None when there is
@@ -208,6 +238,17 @@ class FieldRow(Vertical):
         if text == self._sent:
             return None
         self._sent = text
+        return text
+
+    def submitted(self) -> str | None:
+        """Enter (the screen handles it): the text to store, sent again even if unchanged;
+        what the box holds is selected, so keys typed if the focus stays here replace it.
+        None on a list of answers."""
+        if self.field.options:
+            return None
+        text = self.input.value
+        self._sent = text
+        self.input.select_all()
         return text
 
     def _choose(self, indices: tuple[int, ...]) -> None:

@@ -1,0 +1,87 @@
+"""Keys in bursts, as a hurried group types them (or a terminal hands them over): several keys
+in one read, none waiting for the app. Every key must go where it would have gone had the
+app been infinitely fast: the text typed before PgDn into the step being left, the keys
+after it into the new step; after Enter, into the next entry."""
+
+from __future__ import annotations
+
+from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from tests.ui.fakes import QuietDevice, frozen_stream
+from tests.ui.helpers import burst, goto, shown, start
+
+
+def _typed(app, key: str) -> str:
+    with app.session as s:
+        entry = s.entry(key)
+    return entry.typed if entry is not None else ""
+
+
+def _box(app, key: str) -> str:
+    return app.screen.query_one(f"#{field_id(key)}", FieldRow).input.value
+
+
+async def test_keys_typed_around_pgdn_land_in_their_own_steps(quiet):
+    """Seen in tmux: 'PageDown 63 % Enter' put '63 %' into Preparation 4 (the step left),
+    and '0,63 PageDown' kept nothing when the keys were still on their way."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep4")
+        await burst(pilot, *"0,63", "pagedown", *"63 %", "enter", "pagedown", *"3,79", "enter")
+        assert shown(app, "prep6")
+        assert _typed(app, "prep4.fraction") == "0,63"
+        assert _typed(app, "prep5.percent") == "63 %"
+        assert _typed(app, "prep6.y10") == "3,79"
+        assert _box(app, "prep6.y10") == "3,79"
+
+
+async def test_keys_typed_after_enter_go_into_the_next_entry(quiet):
+    """Seen in tmux: '90 Enter 12 min Enter 10 Enter' in one burst left '9012 min10' in the
+    first entry of Preparation 7."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep7")
+        await burst(pilot, *"90", "enter", *"12 min", "enter", *"8 min", "enter", *"0,09")
+        assert _typed(app, "prep7.y_final") == "90"
+        assert _typed(app, "prep7.t_63") == "12 min"
+        assert _typed(app, "prep7.T") == "8 min"
+        assert _box(app, "prep7.K") == "0,09"
+        assert app.focused is app.screen.query_one(f"#{field_id('prep7.K')}", FieldRow).input
+
+
+async def test_a_panel_key_right_after_pgdn_works_on_the_new_step(quiet):
+    """Candidate (a) of the last walk: F5 sent in the same burst right after PgDn was dropped
+    (the new step's panel, which has the key, was not mounted yet). F3 on Task 3 the same."""
+    dev = QuietDevice(seed=2)
+    app = quiet(dev)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task2")
+        await burst(pilot, "pagedown", "f3")
+        assert shown(app, "task3")
+        assert dev.commands[-1:] == ["V 2.5"]
+        await goto(pilot, "table")
+        before = len(dev.commands)
+        await burst(pilot, "pagedown", "f5")
+        assert shown(app, "task10")
+        assert dev.commands[before:] == ["STOP"]  # the run begins: motor off, wheel to stand
+
+
+async def test_the_reading_typed_right_after_f4_goes_into_the_next_entry(quiet):
+    """Seen in tmux on Task 4: 'F4 2,05 Enter' in one burst left u_ss at 2.5 V empty (the
+    reading went into the omega_ss box the capture then overwrote), and the next burst
+    'F4 2,9V Enter' at 3.5 V put 2.9 V into the 2.5 V row."""
+    dev = QuietDevice(seed=2)
+    app = quiet(dev)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task4")
+        await burst(pilot, "f3")
+        assert app.requested == 2.5
+        app.live.extend(frozen_stream(u=2.5))
+        await burst(pilot, "f4", *"2,05", "enter")
+        with app.session as s:
+            assert s.value("omega_ss@2.5") is not None
+        assert _typed(app, "u_ss@2.5") == "2,05"
+        assert app.focused is app.screen.query_one(f"#{field_id('omega_ss@3.5')}", FieldRow).input

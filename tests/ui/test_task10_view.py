@@ -1,0 +1,20 @@
+"""Task 10's view of the recorded runs is built once a run: showing the step again (or any
+entry that changes the lab while it shows) hands back the runs' fits already made, instead
+of fitting 2400 samples three times over (about 0.4 s a time, in the walk's session)."""
+
+from __future__ import annotations
+
+from minseg_tui.lab import views
+from minseg_tui.lab.session import Session
+from tests.ui.helpers import record_step_run
+
+
+def test_a_runs_view_is_built_once_and_again_for_a_new_run(tmp_path):
+    with Session.create(tmp_path / "sessions", ["Ada"], "2024-04-16") as s:
+        first = record_step_run(s)
+        (a,) = views.runs(s)
+        (b,) = views.runs(s)
+        assert a.name == first and b is a  # the same view, not fitted again
+        second = record_step_run(s, seed=6)
+        (c,) = views.runs(s)
+        assert c.name == second and c is not a
