@@ -597,8 +597,16 @@ _LAB: tuple[Step, ...] = (
                 unit="rad/s",
                 optional=True,
                 compare="step.omega_ss",
+                hint="in rad/s, e.g. 7.3",
             ),
-            Field("own.K", "your K", unit="rad/s/V", optional=True, compare="step.K"),
+            Field(
+                "own.K",
+                "your K",
+                unit="rad/s/V",
+                optional=True,
+                compare="step.K",
+                hint="in rad/s/V, e.g. 1.9",
+            ),
         ),
         actions=("results",),
     ),
@@ -609,7 +617,16 @@ _LAB: tuple[Step, ...] = (
         "Read T off the step response.",
         "On one rising step, find when the speed has covered 63 % of its change; T is the time from "
         "the step to that moment. The program also fits T by least squares, with its interval.",
-        fields=(Field("own.T", "your T", unit="s", optional=True, compare="step.T_63"),),
+        fields=(
+            Field(
+                "own.T",
+                "your T",
+                unit="s",
+                optional=True,
+                compare="step.T_63",
+                hint="in s or ms, e.g. 0.057 s or 57 ms",
+            ),
+        ),
         actions=("results",),
     ),
     Step(
@@ -618,7 +635,16 @@ _LAB: tuple[Step, ...] = (
         "Task 13: the inertia J",
         "Get J from T and the constants of Tasks 2-9.",
         "Use Preparation 15: J = T (R f + k_v k_a) / R.",
-        fields=(Field("own.J", "your J", unit="kg m^2", optional=True, compare="step.J"),),
+        fields=(
+            Field(
+                "own.J",
+                "your J",
+                unit="kg m^2",
+                optional=True,
+                compare="step.J",
+                hint="in kg m^2, e.g. 0.0013",
+            ),
+        ),
         actions=("results",),
     ),
     Step(

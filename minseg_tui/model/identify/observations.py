@@ -112,7 +112,7 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
         Observation(
             "dry_friction",
             (
-                f"f falls with speed, from {format_number(f[0])} at {w[0]:.3g} rad/s to {format_number(f[-1])} N m s/rad at {w[-1]:.3g} rad/s: "
+                f"f falls with speed, from {format_number(f[0])} N m s/rad at {w[0]:.3g} rad/s to {format_number(f[-1])} N m s/rad at {w[-1]:.3g} rad/s: "
                 "part of the friction is dry (Coulomb) friction, a torque that does not grow with speed. "
                 "The lab's model has viscous friction only, so its f depends on the speed it was measured at."
                 + line
