@@ -59,6 +59,7 @@ from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.quit import QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen
+from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 
 ReportWriter = Callable[[Session], Sequence[Path]]
@@ -252,18 +253,32 @@ class LabApp(App[None]):
         self.link = LinkState()
         self._stream(event.device)
 
+    async def action_start_lab(self) -> None:
+        """Enter on the start screen: open the lab it asks for, and return once the lab shows
+        its step (the keys typed after Enter wait for it and land in the lab)."""
+        screen = self.screen
+        if not isinstance(screen, StartScreen):
+            return
+        wanted = screen.request()
+        if isinstance(wanted, StartScreen.NewSession):
+            await self._new(wanted)
+        elif isinstance(wanted, StartScreen.Resume):
+            await self._resume(wanted)
+
     @on(StartScreen.NewSession)
-    def _new(self, event: StartScreen.NewSession) -> None:
+    async def _new(self, event: StartScreen.NewSession) -> None:
         names = [m.strip() for m in event.members.split(",") if m.strip()]
         root = Path(self.config.sessions)
-        self._enter_lab(lambda: Session.create(root, names, event.date or None))
+        await self._enter_lab(lambda: Session.create(root, names, event.date or None))
 
     @on(StartScreen.Resume)
-    def _resume(self, event: StartScreen.Resume) -> None:
+    async def _resume(self, event: StartScreen.Resume) -> None:
         path = Path(event.path)
-        self._enter_lab(lambda: Session.open(path, readonly=event.readonly))
+        await self._enter_lab(lambda: Session.open(path, readonly=event.readonly))
 
-    def _enter_lab(self, get: Callable[[], Session]) -> None:
+    async def _enter_lab(self, get: Callable[[], Session]) -> None:
+        if not isinstance(self.screen, StartScreen):
+            return  # a second Enter (or click) while the lab opens
         try:
             session = get()
         except MinsegError as exc:
@@ -272,7 +287,7 @@ class LabApp(App[None]):
         self.session = Shared(session)
         self.lab_changed.subscribe(self, lambda _: self._saved_or_not())
         screen = LabScreen(self.session, self.live, self.lab_changed, self.config.refresh)
-        self.switch_screen(
+        switched = self.switch_screen(
             screen.data_bind(
                 LabApp.device,
                 LabApp.link,
@@ -284,6 +299,8 @@ class LabApp(App[None]):
                 LabApp.saving,
             )
         )
+        await switched
+        await screen.shown.wait()
         if session.readonly:
             self.notify(
                 "opened read-only: "
@@ -617,16 +634,16 @@ class LabApp(App[None]):
         default_namespace: DOMNode | None = None,
         namespaces: Mapping[str, DOMNode] | None = None,
     ) -> bool:
-        """Every key that does something beyond the text box stores what stands in the
-        step's entries first (PgDn, F2, F8, Ctrl+P, Ctrl+Q, ...): nothing typed is lost,
-        the keys typed just before it in the same burst included (Enter stores its entry
-        itself)."""
+        """Every key that does something beyond the text box waits for the keys typed just
+        before it in the same burst, then stores what stands in the step's entries (PgDn, F2,
+        F8, Ctrl+P, Ctrl+Q, ...): nothing typed is lost (Enter stores its entry itself; on the
+        start screen it reads the names typed before it)."""
         if default_namespace is None or isinstance(default_namespace, App | Screen):
+            if isinstance(self.screen, StatusScreen):
+                await self.screen.settle_typing()
             screen = self._lab_screen()
-            if screen is not None:
-                await screen.settle_typing()
-                if action != "submit_entry":
-                    screen.store_typed()
+            if screen is not None and action != "submit_entry":
+                screen.store_typed()
         return await super().run_action(action, default_namespace, namespaces)
 
     # -- actions -------------------------------------------------------------------------

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.fakes import QuietDevice, frozen_stream
-from tests.ui.helpers import burst, goto, shown, start
+from tests.ui.helpers import burst, goto, settle, shown, start
 
 
 def _typed(app, key: str) -> str:
@@ -85,3 +85,18 @@ async def test_the_reading_typed_right_after_f4_goes_into_the_next_entry(quiet):
             assert s.value("omega_ss@2.5") is not None
         assert _typed(app, "u_ss@2.5") == "2,05"
         assert app.focused is app.screen.query_one(f"#{field_id('omega_ss@3.5')}", FieldRow).input
+
+
+async def test_keys_typed_right_after_the_names_land_in_the_lab(quiet):
+    """Seen in tmux: 'Bo, Cy Enter PgDn PgDn PgDn 0,632 Enter' opened the lab at Preparation 1
+    with nothing typed: the keys after Enter went to the start screen while it was replaced."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: bool(app.screen.query("#members")))
+        await burst(
+            pilot, *"Bo, Cy", "enter", "pagedown", "pagedown", "pagedown", *"0,632", "enter"
+        )
+        await settle(pilot, lambda: shown(app, "prep4"))
+        assert _typed(app, "prep4.fraction") == "0,632"
+        with app.session as s:
+            assert list(s.members) == ["Bo", "Cy"]

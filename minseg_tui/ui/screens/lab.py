@@ -225,6 +225,9 @@ class LabScreen(StatusScreen):
         may be None, "leave it")."""
         self._paging = False
         """Set by PgDn/PgUp: the step shown next takes the focus, wherever it was."""
+        self.shown = asyncio.Event()
+        """Set once the first step is on screen and focused (the app waits for it before it
+        hands on the keys typed after the Enter that opened the lab)."""
 
     def compose(self) -> ComposeResult:
         yield self.status_line()
@@ -245,6 +248,7 @@ class LabScreen(StatusScreen):
         start = current if current in STEP_IDS else STEP_IDS[0]
         self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
         await self.show_step(start)
+        self.shown.set()
 
     # -- the step on screen --------------------------------------------------------------
     @property
@@ -407,31 +411,6 @@ class LabScreen(StatusScreen):
 
     async def action_prev_step(self) -> None:
         await self._move(-1)
-
-    async def settle_typing(self) -> None:
-        """Wait until the keys already handed to the focused widget (and to the screen) are
-        in it: typed in the same burst as the key being handled, they belong before it.
-        Call before a key acts on what was typed (PgDn, Enter, F-keys)."""
-        here = asyncio.current_task()
-        for target in (self.focused, self):
-            if target is None or getattr(target, "_task", None) is here:
-                continue  # called from that widget's own handler: its queue waits for us
-            done = asyncio.Event()
-            if target.call_later(done.set):
-                await done.wait()
-
-    async def settle_from(self, widget: Widget) -> None:
-        """Wait until the messages ``widget`` has posted are handled up to this screen (each
-        bubbles from a widget's queue to its parent's: draining them in that order sees it
-        through)."""
-        here = asyncio.current_task()
-        for node in widget.ancestors_with_self:
-            if getattr(node, "_task", None) is not here:
-                done = asyncio.Event()
-                if node.call_later(done.set):
-                    await done.wait()
-            if node is self:
-                return
 
     def action_submit_entry(self) -> None:
         """Enter in a text entry: store it (the app has settled the typing first); accepted,

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 from textual import on
 from textual.app import ComposeResult
+from textual.binding import Binding
 from textual.containers import Vertical
 from textual.message import Message
 from textual.widgets import Footer, Input, OptionList, Static
@@ -27,6 +28,12 @@ def why_closed(s: SessionInfo) -> str:
 
 class StartScreen(StatusScreen):
     """Type the group's names and press Enter, or pick a session and press Enter."""
+
+    BINDINGS = [
+        # the app's before any widget's: the lab opens before the keys typed after Enter are
+        # handed on, so they go into the lab (the app asks :meth:`request` what Enter wants)
+        Binding("enter", "app.start_lab", show=False, priority=True),
+    ]
 
     @dataclass
     class NewSession(Message):
@@ -77,18 +84,30 @@ class StartScreen(StatusScreen):
             return f"{s.path}: {why}" + (" (Enter opens it read-only)" if s.damaged else "")
         return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {s.last_step}"
 
-    @on(Input.Submitted)
-    def _submitted(self, event: Input.Submitted) -> None:
-        members = self.query_one("#members", Input).value.strip()
-        date = self.query_one("#date", Input).value.strip()
-        if not members:
-            self.query_one("#start-msg", Static).update("Type the group members' names first.")
-            self.query_one("#members", Input).focus()
-            return
-        self.post_message(self.NewSession(members, date))
+    def request(self) -> StartScreen.NewSession | StartScreen.Resume | None:
+        """What Enter asks for where the focus is: a new session (in the names' or the date's
+        box), the highlighted saved session (in the list), or None (with the reason shown
+        when the names are missing)."""
+        focused = self.focused
+        if isinstance(focused, Input):
+            members = self.query_one("#members", Input).value.strip()
+            date = self.query_one("#date", Input).value.strip()
+            if not members:
+                self.query_one("#start-msg", Static).update("Type the group members' names first.")
+                self.query_one("#members", Input).focus()
+                return None
+            return self.NewSession(members, date)
+        if isinstance(focused, OptionList) and focused.highlighted is not None:
+            return self._resume(focused.get_option_at_index(focused.highlighted).id)
+        return None
+
+    def _resume(self, key: str | None) -> StartScreen.Resume | None:
+        info = self._sessions.get(key or "")
+        return None if info is None else self.Resume(str(info.path), bool(info.damaged))
 
     @on(OptionList.OptionSelected, "#sessions")
     def _picked(self, event: OptionList.OptionSelected) -> None:
-        info = self._sessions.get(event.option.id or "")
-        if info is not None:
-            self.post_message(self.Resume(str(info.path), readonly=bool(info.damaged)))
+        """A saved session clicked (Enter is the app's, see BINDINGS)."""
+        wanted = self._resume(event.option.id)
+        if wanted is not None:
+            self.post_message(wanted)
