@@ -16,8 +16,9 @@ from minseg_tui.ui.device import DeviceInfo, LinkState
 from minseg_tui.ui.messages import CaptureRequested, RunRequested, VoltageRequested
 from minseg_tui.ui.panels.live import LivePanel
 from minseg_tui.ui.panels.step_run import StepRunPanel
+from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.help import HelpScreen
-from minseg_tui.ui.screens.lab import LabScreen, StepCommands
+from minseg_tui.ui.screens.lab import LabScreen, StepCommands, StepPane
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import status_text
 from tests.ui.fakes import QuietDevice
@@ -483,6 +484,32 @@ async def test_typing_lands_in_the_step_and_enter_moves_on(quiet, tmp_path):
     with Session.open(next(iter(list_sessions(tmp_path / "sessions"))).path) as again:
         assert again.entry("u_ss@2.5").typed == "2,05 kg"
         assert again.entry("R").typed == "5,3 kg" and again.value("R") == 5.3
+
+
+async def test_the_entry_a_step_lands_in_stays_in_view_when_its_view_comes_later(quiet):
+    """Task 12 at 80x24 lands in the group's T under the zoomed plot, which a worker builds:
+    whether the view is drawn before or after the landing, the entry ends up in the same place
+    and in full view (it came a row lower or out of sight, depending on the machine's load)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_step_run(s)
+        await goto(pilot, "task12")
+        await settle(pilot)
+        pane = app.screen.query(StepPane).last()
+        box = app.focused
+        assert box is not None and box is pane.landing_row().input
+        landed = pane.scroll_y
+        assert landed > 0 and app.screen.can_view_entire(box)
+        for elsewhere in (0.0, pane.max_scroll_y):  # where the step was when the view came
+            pane.scroll_to(y=elsewhere, animate=False, immediate=True)
+            panel = pane.panel
+            assert isinstance(panel, ViewPanel) and panel.view is not None
+            panel.receive(panel.view)
+            await settle(pilot)
+            assert pane.scroll_y == landed and app.screen.can_view_entire(box)
 
 
 async def test_panels_ask_with_messages_and_show_the_apps_state(quiet):

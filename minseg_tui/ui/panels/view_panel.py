@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import Generic, TypeVar
 
 from textual.containers import Vertical
+from textual.message import Message
 
 from minseg_tui.lab.session import Session
 
@@ -16,6 +17,10 @@ class ViewPanel(Vertical, Generic[V]):
     """A panel showing a view of type ``V``. The lab screen builds it with :meth:`build` in a
     worker (when the panel is shown and whenever the lab changes) and hands it over with
     :meth:`receive`; the panel draws it in :meth:`show_view`."""
+
+    class Drawn(Message):
+        """The panel drew its view: its height may have changed (the step it is in brings
+        the entry it landed in back into view)."""
 
     def __init__(self, classes: str = "") -> None:
         super().__init__(classes=f"panel {classes}".rstrip())
@@ -29,7 +34,11 @@ class ViewPanel(Vertical, Generic[V]):
     def receive(self, view: V) -> None:
         """Keep ``view`` and draw it once the panel is composed."""
         self.view = view
-        self.call_later(self.show_view)
+        self.call_later(self._draw)
+
+    def _draw(self) -> None:
+        self.show_view()
+        self.post_message(self.Drawn())
 
     def show_view(self) -> None:
         """Draw :attr:`view`."""

@@ -89,6 +89,10 @@ class StepPane(VerticalScroll):
         # focusable where the step may land on its text (no entries, or a panel to read):
         # the arrow keys then scroll it
         self.can_focus = panel is not None or not step.fields
+        self._landing: FieldRow | None = None
+        """The entry the step landed in, while it has the focus and the group has not
+        scrolled: brought back into view when the panel's view is drawn (it comes from a
+        worker, before or after the landing) and moves the entry down."""
 
     def compose(self) -> ComposeResult:
         yield Prose(self.step.title, classes="title")
@@ -107,6 +111,20 @@ class StepPane(VerticalScroll):
 
     def on_mount(self) -> None:
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
+
+    @on(ViewPanel.Drawn)
+    def _view_drawn(self) -> None:
+        row = self._landing
+        if row is not None and row.is_attached and row.has_focus_within:
+            row.call_after_refresh(row.bring_into_view, True)
+        else:
+            self._landing = None
+
+    def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
+        self._landing = None  # the group scrolls: the step stays where they put it
+
+    def on_mouse_scroll_up(self, _: events.MouseScrollUp) -> None:
+        self._landing = None
 
     def landing_row(self) -> FieldRow | None:
         """The entry the step lands in: the first one with nothing in it, else the first;
@@ -135,7 +153,8 @@ class StepPane(VerticalScroll):
         if what == "entry":
             row = self.landing_row()
             if row is not None:
-                row.focus_input()
+                row.focus_input(landing=True)
+                self._landing = row
             else:
                 self.screen.set_focus(self)
             return

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from rich.segment import Segment
 from textual import events, on
 from textual.app import ComposeResult
-from textual.containers import Horizontal, Vertical
+from textual.containers import Horizontal, ScrollableContainer, Vertical
 from textual.geometry import Size
 from textual.message import Message
 from textual.strip import Strip
@@ -204,30 +204,41 @@ class FieldRow(Vertical):
         typed = boxes.first().value if boxes else self._text
         return not typed.strip() and not (self._sent or "").strip()
 
-    def focus_input(self) -> None:
+    def focus_input(self, landing: bool = False) -> None:
         """Focus the text box (what it holds selected: typing replaces it) or the list of
         options at once, not after the messages already queued (keys of the same burst go
-        here), and scroll it into view once the layout has settled."""
+        here), and scroll it into view once the layout has settled (``landing``: the step
+        was just shown, see :meth:`bring_into_view`)."""
         for w in self.query(".field-input, .field-choice"):
             self.screen.set_focus(w, scroll_visible=False)
             if isinstance(w, Input):
                 w.select_all()
-            self.call_after_refresh(self._bring_into_view, w)
+            self.call_after_refresh(self.bring_into_view, landing)
             return
 
-    def _bring_into_view(self, box: Widget) -> None:
+    def bring_into_view(self, landing: bool = False) -> None:
         """The row in view now, and once more when the layout has settled (wrapped answers
-        change height on their first layout): the box centred if it is cut off (as a focus
-        scrolls), then the whole row, so it is in view wherever it ends up."""
+        change height on their first layout): its box centred if it is cut off, then the
+        whole row. ``landing`` (the step just shown, or its view just drawn): from the top of
+        the step each time, so the row ends up where the layout alone puts it, not where the
+        step happened to be scrolled when the view came. At once, never animated."""
         screen = self.screen
-        screen.scroll_to_widget(self, animate=False)
+        boxes = self.query(".field-input, .field-choice")
+        box = boxes.first() if boxes else None
 
-        def settled() -> None:
-            if screen.focused is box and not screen.can_view_entire(box):
-                screen.scroll_to_center(box, origin_visible=True)
-            screen.scroll_to_widget(self, animate=False)
+        def place() -> None:
+            if not self.is_attached:
+                return
+            if landing:
+                step = next((a for a in self.ancestors if isinstance(a, ScrollableContainer)), None)
+                if step is not None:
+                    step.scroll_to(y=0, animate=False, immediate=True)
+            if box is not None and screen.focused is box and not screen.can_view_entire(box):
+                screen.scroll_to_center(box, animate=False, origin_visible=True, immediate=True)
+            screen.scroll_to_widget(self, animate=False, immediate=True)
 
-        self.call_after_refresh(settled)
+        place()
+        self.call_after_refresh(place)
 
     def pending(self) -> str | None:
         """The text standing in the box that the lab does not hold yet (None when there is
