@@ -1,14 +1,17 @@
-"""`minseg-tui sim`: a virtual MinSeg on a pseudo-terminal, until Ctrl-C.
+"""`minseg-tui sim`: a virtual MinSeg on a pseudo-terminal, until Ctrl-C or SIGTERM.
 
 It prints the device path; any serial monitor (or `minseg-tui --port PATH`) can open
 it at 500000 baud. Options are the virtual board's settings (seed, parameters, hidden
-effects, faults).
+effects, faults). Ctrl-C and `kill` both stop it cleanly (the pty closed, the --link
+symlink removed) with exit code 0.
 """
 
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
+from types import FrameType
 
 from minseg_tui.device.ptyserver import PtyServer
 from minseg_tui.device.virtual import OPTIONS, VirtualBoard, settings_from
@@ -28,8 +31,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--link", metavar="PATH", help="also make a symlink PATH to the device")
 
 
+class _Terminated(Exception):
+    """SIGTERM arrived (`kill PID`, a service manager stopping the sim)."""
+
+
+def _terminate(signum: int, frame: FrameType | None) -> None:
+    raise _Terminated
+
+
 def run(args: argparse.Namespace) -> int:
-    """Serve until Ctrl-C; exit 0."""
+    """Serve until Ctrl-C or SIGTERM; exit 0. (Started in the background by a shell
+    without job control, the sim inherits Ctrl-C ignored, as every such job does: stop it
+    with `kill`.)"""
     values = {name: getattr(args, name) for name in OPTIONS if getattr(args, name) is not None}
     try:
         settings = settings_from(values)
@@ -44,9 +57,10 @@ def run(args: argparse.Namespace) -> int:
     print(server.path, flush=True)
     if args.link:
         print(f"(symlink to {server.slave_name})", file=sys.stderr, flush=True)
+    signal.signal(signal.SIGTERM, _terminate)
     try:
         server.serve_forever()
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, _Terminated):
         pass
     finally:
         server.stop()

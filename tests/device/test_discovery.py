@@ -84,6 +84,13 @@ def test_ports_command_on_this_machine(capsys):
     assert isinstance(json.loads(capsys.readouterr().out), list)
 
 
+def _as_at_a_terminal() -> None:
+    """Ctrl-C as a terminal delivers it to the program in the foreground: whatever runs the
+    suite may be a background job of a shell without job control, which starts its children
+    with SIGINT ignored (the sim then, rightly, ignores it too)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def test_sim_command_serves_a_pty_until_ctrl_c():
     """The board's lines are waited for line by line (no read that must finish within a
     fraction of a second: a busy machine makes the sim slower, not wrong); the generous
@@ -92,6 +99,7 @@ def test_sim_command_serves_a_pty_until_ctrl_c():
         [sys.executable, "-m", "minseg_tui", "sim", "--seed", "1", "--coulomb", "0"],
         stdout=subprocess.PIPE,
         text=True,
+        preexec_fn=_as_at_a_terminal,
     )
     try:
         path = proc.stdout.readline().strip()
@@ -109,6 +117,27 @@ def test_sim_command_serves_a_pty_until_ctrl_c():
         proc.send_signal(signal.SIGINT)
         code = proc.wait(60)
     assert code == 0
+
+
+def test_sim_command_stops_on_sigterm_and_removes_its_link(tmp_path):
+    """`kill PID` (SIGTERM) stops the sim as Ctrl-C does: exit 0, its symlink gone, not left
+    pointing at a closed pty."""
+    link = tmp_path / "minseg0"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "minseg_tui", "sim", "--seed", "1", "--link", str(link)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        assert proc.stdout.readline().strip() == str(link)
+        assert os.path.islink(link)
+    finally:
+        proc.send_signal(signal.SIGTERM)
+        code = proc.wait(60)
+    assert code == 0
+    assert not os.path.lexists(link)
+    assert "Traceback" not in proc.stderr.read()
 
 
 def test_sim_command_bad_option_is_one_line():
