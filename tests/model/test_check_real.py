@@ -158,6 +158,17 @@ def test_n20_pwm25_speed_before_the_cut_is_the_speed_the_wheel_ran_at():
     assert "from 7.18 rad/s" not in words
 
 
+def test_n20_pwm25_fall_rate_is_the_slope_of_the_readings_not_one_count():
+    # after the cut the wheel reads 8.98, then 7.18 for 60 ms, then 5.39 (one count = 1.8
+    # rad/s): the two-point rate from the 100 ms mean (8.8) to that first 5.39 read 42.6 rad/s^2;
+    # a line through the readings until half the speed gives 24-25 rad/s^2, a parabola
+    # through the angle 22, and the wheel stands still 272 ms after the cut (8.8/0.272 = 32)
+    _, words = analyze("n20-12v-pwm25")
+    rate = re.search(r"the speed falls at ([\d.]+) rad/s\^2", words)
+    assert rate, words
+    assert 18 <= float(rate.group(1)) <= 32
+
+
 def test_an_extended_model_within_the_noise_is_said_to_be_all_noise():
     # duty 255: after the 345 ms delay is in the model its rms error (1.52 rad/s) is below the
     # speed's scatter (1.76 rad/s); "-> 0 rad/s" alone read like a perfect model
