@@ -177,6 +177,15 @@ def test_an_extended_model_within_the_noise_is_said_to_be_all_noise():
     assert "-> 0 rad/s, the extended model's error is all noise" in words
 
 
+def test_the_gain_details_give_the_error_above_the_noise_the_tui_shows():
+    # duty 100: the TUI's panel lists "speed error above the noise first order 0.477 rad/s ->
+    # extended 0" (scatter 1.52 rad/s; sqrt(1.592^2 - 1.52^2) = 0.47); the CLI's details line
+    # gave the floor's figure only, so the TUI said what the CLI did not
+    _, words = analyze("micromouse-n20-duty100")
+    details = words.split("\nGain: ")[1].splitlines()[1]
+    assert "above the noise 0.477 -> 0 rad/s" in details, details
+
+
 def test_n20_probe_cut_before_the_run_down_says_nothing_of_stops():
     # the same rise without its run-down: nothing to see friction or coasting by
     r, words = analyze("n20_255_uponly.csv")

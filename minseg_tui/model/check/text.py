@@ -83,6 +83,9 @@ def text(r: CheckResult) -> str:
     if noise is not None:
         rest.append(f"scatter {noise:.3g} rad/s")
     rest.append(f"rms error {_pair(r, 'extended_rmse')}")
+    above = g.get("baseline_above_noise")
+    if above is not None and (above > 0 or g.get("extended_above_noise")):
+        rest.append(f"above the noise {_pair(r, 'extended_above_noise')}")
     if g.get("baseline_above_floor") is not None:
         rest.append(f"above the floor {_pair(r, 'extended_above_floor')}")
     rest.append(f"angle error {_pair(r, 'extended_angle_rms')}")
