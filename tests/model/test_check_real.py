@@ -169,12 +169,18 @@ def test_n20_pwm25_fall_rate_is_the_slope_of_the_readings_not_one_count():
     assert 18 <= float(rate.group(1)) <= 32
 
 
-def test_an_extended_model_within_the_noise_is_said_to_be_all_noise():
+def test_an_extended_model_within_the_noise_is_not_said_to_be_all_noise():
     # duty 255: after the 345 ms delay is in the model its rms error (1.52 rad/s) is below the
-    # speed's scatter (1.76 rad/s); "-> 0 rad/s" alone read like a perfect model
-    r, words = analyze("micromouse-n20-duty255")
-    assert r.gain["extended_above_noise"] == 0
-    assert "-> 0 rad/s, the extended model's error is all noise" in words
+    # speed's scatter (1.76 rad/s); "-> 0 rad/s" alone read like a perfect model. But its
+    # error is not all noise: averaged over 0.25 s (where one-count noise falls to 0.07 rad/s,
+    # a count over the block's time) it reads -1.08 after the rise and +0.80 at the end, a slow
+    # drift no model here has; duty 100 the same (-1.29). The rms comparison is what is said
+    for name in ("micromouse-n20-duty255", "micromouse-n20-duty100"):
+        r, words = analyze(name)
+        assert r.gain["extended_above_noise"] == 0
+        assert "all noise" not in words
+        rms = f"{r.extended.rmse:.3g}"
+        assert f"-> 0 rad/s, the extended model's rms error ({rms} rad/s) is no larger" in words
 
 
 def test_the_gain_details_give_the_error_above_the_noise_the_tui_shows():

@@ -41,7 +41,11 @@ def _pair(r: CheckResult, key: str) -> str:
     if r.finding.cause == "none" or e is None:
         return f"{b:.3g} {unit}"
     if e == 0 and b > 0 and "above" in key:
-        return f"{b:.3g} -> 0 {unit}, the extended model's error is all noise"
+        rms = g["extended_rmse"]
+        return (
+            f"{b:.3g} -> 0 {unit}, the extended model's rms error ({rms:.3g} {unit}) is no "
+            "larger than the noise"
+        )
     return f"{b:.3g} -> {e:.3g} {unit}"
 
 
