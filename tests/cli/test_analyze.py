@@ -236,3 +236,18 @@ def test_nxt_small_rise_names_its_two_scatters_apart(tmp_path, capsys):
     said = float(why.split("scatters ")[1].split(" ")[0])
     assert said != pytest.approx(d["gain"]["noise"], rel=0.01)
     assert f"scatters {said:.3g} rad/s around that model's simulation" in why
+
+
+def test_nxt_large_run_down_lead_does_not_call_its_error_noise(tmp_path, capsys):
+    # the wheel stands still (speed exactly 0, no noise at all) in 153 of the run-down's 170
+    # rows, so the rms speed error over the log (0.207 rad/s) is under the count floor (0.285
+    # rad/s); in the 17 rows where it turns the first-order model misses by 0.61 rad/s rms
+    # (counts 21, 18, 15 against its 22.1, 19.9, 16.0), twice the floor: the error is not
+    # "mostly the noise of the speed"
+    _, run2 = _nxt_logs(tmp_path, "large")
+    d = _analyze(run2, capsys)
+    why = d["lead"]["why"]
+    assert "mostly the noise" not in why
+    assert "stands still in 153 of 170 rows" in why
+    turning = float(why.split("where it turns the error is ")[1].split(" ")[0])
+    assert turning == pytest.approx(0.61, abs=0.01)

@@ -320,9 +320,19 @@ def _report(
         b_pred,
         e_pred,
         samp,
-        lead(gain, named),
+        lead(gain, named, _turning(full.y, b_pred, e_pred, keep)),
         cu,
     )
+
+
+def _turning(
+    y: FloatArray, b_pred: FloatArray, e_pred: FloatArray, keep: NDArray[np.bool_]
+) -> tuple[float, int, int]:
+    """The larger of both models' rms error (rad/s) on the kept rows where the measured wheel
+    turns, the kept rows where it stands still, and all kept rows."""
+    moving = an.moving_rows(y).astype(bool) & keep
+    err = max(_rmse_kept(y, b_pred, moving), _rmse_kept(y, e_pred, moving))
+    return err, int(np.count_nonzero(keep & ~moving)), int(np.count_nonzero(keep))
 
 
 def _rmse_kept(y: FloatArray, pred: FloatArray, keep: NDArray[np.bool_]) -> float:
