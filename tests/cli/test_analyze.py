@@ -251,3 +251,14 @@ def test_nxt_large_run_down_lead_does_not_call_its_error_noise(tmp_path, capsys)
     assert "stands still in 153 of 170 rows" in why
     turning = float(why.split("where it turns the error is ")[1].split(" ")[0])
     assert turning == pytest.approx(0.61, abs=0.01)
+
+
+def test_nxt_small_runs_without_a_cause_speak_of_one_model(tmp_path, capsys):
+    # no cause is named on either small run, so there is one model (the first order): the
+    # error above the noise judges it; there are no "models" to tell apart
+    for run in _nxt_logs(tmp_path, "small"):
+        d = _analyze(run, capsys)
+        assert d["finding"]["cause"] == "none"
+        assert d["lead"]["figure"] == "baseline_above_noise"
+        assert "tells the models apart" not in d["lead"]["why"]
+        assert d["lead"]["why"].endswith("only the part of the error above it judges the model")

@@ -144,7 +144,8 @@ def lead(
         return Lead(
             "extended_above_noise" if named else "baseline_above_noise",
             f"this log's speed has a noise of {noise:.3g} rad/s rms that no model can "
-            "remove; only the part of the error above it tells the models apart",
+            "remove; only the part of the error above it "
+            + ("tells the models apart" if named else "judges the model"),
         )
     if noise > 0:
         return Lead(
