@@ -256,9 +256,29 @@ def test_nxt_large_run_down_lead_does_not_call_its_error_noise(tmp_path, capsys)
 def test_nxt_small_runs_without_a_cause_speak_of_one_model(tmp_path, capsys):
     # no cause is named on either small run, so there is one model (the first order): the
     # error above the noise judges it; there are no "models" to tell apart
-    for run in _nxt_logs(tmp_path, "small"):
-        d = _analyze(run, capsys)
-        assert d["finding"]["cause"] == "none"
-        assert d["lead"]["figure"] == "baseline_above_noise"
-        assert "tells the models apart" not in d["lead"]["why"]
-        assert d["lead"]["why"].endswith("only the part of the error above it judges the model")
+    run1, run2 = _nxt_logs(tmp_path, "small")
+    d = _analyze(run1, capsys)
+    assert d["finding"]["cause"] == "none"
+    assert d["lead"]["figure"] == "baseline_above_noise"
+    assert d["lead"]["why"].endswith("only the part of the error above it judges the model")
+    d = _analyze(run2, capsys)
+    assert d["finding"]["cause"] == "none"
+    assert "tells the models apart" not in d["lead"]["why"]
+    assert d["lead"]["why"].endswith("so it judges the model")
+
+
+def test_nxt_small_run_down_says_how_much_it_misses_where_the_wheel_turns(tmp_path, capsys):
+    # 40, 32, 24, 16, 12, 7, 5, 3, 1, 2 counts, then 100 rows at exactly 0: over all 110 rows
+    # the first-order model misses by 0.4 rad/s rms above the floor (0.285), which read as
+    # "too little and too scattered to name a cause by"; in the 10 rows where the wheel turns
+    # it misses by 1.6 (its residual -1.9, -2.5, -0.8, +1.0, +0.3, +0.7, +0.3: no scatter,
+    # a linear start it does not follow). No cause is named still (the whitened rule)
+    _, run2 = _nxt_logs(tmp_path, "small")
+    d = _analyze(run2, capsys)
+    assert d["finding"]["cause"] == "none"
+    evidence = d["finding"]["evidence"]
+    assert "too little and too scattered" not in evidence
+    assert "where the wheel turns (10 of 110 rows" in evidence
+    assert "misses by 1.6 rad/s rms above the noise" in evidence
+    assert d["lead"]["figure"] == "baseline_angle_rms"
+    assert "stands still in 100 of 110 rows" in d["lead"]["why"]

@@ -100,8 +100,9 @@ by under 5 %: the plain rms error leads then."""
 def lead(
     gain: dict[str, float | None], named: bool, turning: tuple[float, int, int] | None = None
 ) -> Lead:
-    """Which figure leads: the angle error where the speed error is mostly noise (or small
-    only because the wheel stands still in most rows), the held-out error where the log has
+    """Which figure leads: the angle error where the speed error is mostly noise (or where
+    the wheel stands still in most rows, which makes the rms error over the log small while
+    it misses where the wheel turns), the held-out error where the log has
     steps to hold out, the rms error where the noise is small against it, else the error
     above the noise. ``named``: a cause was named (two models to tell apart; else one model
     to judge). ``turning``: the larger model's rms error where the wheel turns (rad/s), the
@@ -109,7 +110,7 @@ def lead(
     noise = max(gain.get("noise_floor") or 0.0, gain.get("noise") or 0.0)
     b, e = gain["baseline_rmse"] or 0.0, gain["extended_rmse"] or 0.0
     angle = "extended_angle_rms" if named else "baseline_angle_rms"
-    if noise > 0 and max(b, e) < 1.5 * noise and turning and turning[0] >= 1.5 * noise:
+    if noise > 0 and turning and 2 * turning[1] > turning[2] and turning[0] >= 1.5 * noise:
         err, still, rows = turning
         return Lead(
             angle,

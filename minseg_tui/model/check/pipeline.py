@@ -493,8 +493,19 @@ def _finding(
         if explained:
             rms_b = _rmse_kept(log.y, log.base_pred, np.ones(log.y.size, dtype=bool))
             left = above(rms_b, level) or 0.0
+            turning = an.moving_rows(log.y).astype(bool)
+            rms_t = _rmse_kept(log.y, log.base_pred, turning)
+            left_t = above(rms_t, level) or 0.0
             if level <= 0:
                 fit_words = "the first-order model fits the log"
+            elif 2 * np.count_nonzero(turning) < turning.size and left_t >= 0.5 * level:
+                # a wheel at rest reads exactly 0, without noise: the rms over the whole log
+                # would mostly count rows where nothing happens
+                fit_words = (
+                    f"where the wheel turns ({np.count_nonzero(turning)} of {turning.size} rows; "
+                    f"it stands still in the others) the first-order model misses by "
+                    f"{left_t:.2g} rad/s rms above the noise ({level:.3g} rad/s)"
+                )
             elif left < 0.5 * level:
                 fit_words = (
                     f"the first-order model explains the log down to its noise: its error is "
