@@ -507,9 +507,10 @@ def _finding(
                     f"{left_t:.2g} rad/s rms above the noise ({level:.3g} rad/s)"
                 )
             elif left < 0.5 * level:
+                # an rms comparison: a miss held over many samples can hide below it
                 fit_words = (
-                    f"the first-order model explains the log down to its noise: its error is "
-                    f"{rms_b:.3g} rad/s rms against a noise of {level:.3g} rad/s"
+                    f"the first-order model's rms error is at the level of the speed's noise: "
+                    f"{rms_b:.3g} rad/s against a noise of {level:.3g} rad/s"
                 )
             else:
                 fit_words = (
