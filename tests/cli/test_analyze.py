@@ -282,3 +282,16 @@ def test_nxt_small_run_down_says_how_much_it_misses_where_the_wheel_turns(tmp_pa
     assert "misses by 1.6 rad/s rms above the noise" in evidence
     assert d["lead"]["figure"] == "baseline_angle_rms"
     assert "stands still in 100 of 110 rows" in d["lead"]["why"]
+
+
+def test_nxt_small_rise_miss_is_not_called_scattered(tmp_path, capsys):
+    # after the (assumed) step the first-order model misses by -2.6, -3.3, -0.6, +0.2, +1.8,
+    # +1.2, +1.0, +1.2, +0.3, +1.0 rad/s (1, 8, 18, 24, 30, 32, 34, 36 counts: a slow start);
+    # one sign for eight samples is no scatter, and the rise is 3.9 times the steady state's
+    # rms. No cause is named, because the rule that holds the filter back says so
+    run1, _ = _nxt_logs(tmp_path, "small")
+    d = _analyze(run1, capsys)
+    assert d["finding"]["cause"] == "none"
+    evidence = d["finding"]["evidence"]
+    assert "too scattered" not in evidence
+    assert "but no cause from the list is clear enough to name; the best extension" in evidence

@@ -515,7 +515,7 @@ def _finding(
             else:
                 fit_words = (
                     f"the first-order model misses by {left:.2g} rad/s rms above the noise "
-                    f"({level:.3g} rad/s), too little and too scattered to name a cause by"
+                    f"({level:.3g} rad/s), but no cause from the list is clear enough to name"
                 )
             pct = fit_percent(log.y, log.base_pred)
             if pct < 80.0 and level > 0 and left < 0.5 * level:
