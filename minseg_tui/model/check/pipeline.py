@@ -496,9 +496,12 @@ def _finding(
             turning = an.moving_rows(log.y).astype(bool)
             rms_t = _rmse_kept(log.y, log.base_pred, turning)
             left_t = above(rms_t, level) or 0.0
+            turning_words = (
+                level > 0 and 2 * np.count_nonzero(turning) < turning.size and left_t >= 0.5 * level
+            )
             if level <= 0:
                 fit_words = "the first-order model fits the log"
-            elif 2 * np.count_nonzero(turning) < turning.size and left_t >= 0.5 * level:
+            elif turning_words:
                 # a wheel at rest reads exactly 0, without noise: the rms over the whole log
                 # would mostly count rows where nothing happens
                 fit_words = (
@@ -518,7 +521,8 @@ def _finding(
                     f"({level:.3g} rad/s), but no cause from the list is clear enough to name"
                 )
             pct = fit_percent(log.y, log.base_pred)
-            if pct < 80.0 and level > 0 and left < 0.5 * level:
+            at_noise = level > 0 and left < 0.5 * level and not turning_words
+            if pct < 80.0 and at_noise:
                 fit_words += (
                     f" (its fit is only {pct:.0f} % because that noise is large against the "
                     "speed's changes, not because the model is wrong)"
