@@ -564,7 +564,8 @@ def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | No
     if not named or e is None:
         return f"first order {format_value(b, unit, 3)}"
     if e == 0 and stem.startswith("above"):
-        return f"first order {format_value(b, unit, 3)} → extended 0, all noise"
+        shown = format_value(b, unit, 3)
+        return f"first order {shown} → extended 0 (rms error no larger than the noise)"
     return f"first order {_num(b, 3)} → extended {format_value(e, unit, 3)}"
 
 

@@ -236,3 +236,62 @@ def test_nxt_small_rise_names_its_two_scatters_apart(tmp_path, capsys):
     said = float(why.split("scatters ")[1].split(" ")[0])
     assert said != pytest.approx(d["gain"]["noise"], rel=0.01)
     assert f"scatters {said:.3g} rad/s around that model's simulation" in why
+
+
+def test_nxt_large_run_down_lead_does_not_call_its_error_noise(tmp_path, capsys):
+    # the wheel stands still (speed exactly 0, no noise at all) in 153 of the run-down's 170
+    # rows, so the rms speed error over the log (0.207 rad/s) is under the count floor (0.285
+    # rad/s); in the 17 rows where it turns the first-order model misses by 0.61 rad/s rms
+    # (counts 21, 18, 15 against its 22.1, 19.9, 16.0), twice the floor: the error is not
+    # "mostly the noise of the speed"
+    _, run2 = _nxt_logs(tmp_path, "large")
+    d = _analyze(run2, capsys)
+    why = d["lead"]["why"]
+    assert "mostly the noise" not in why
+    assert "stands still in 153 of 170 rows" in why
+    turning = float(why.split("where it turns the error is ")[1].split(" ")[0])
+    assert turning == pytest.approx(0.61, abs=0.01)
+
+
+def test_nxt_small_runs_without_a_cause_speak_of_one_model(tmp_path, capsys):
+    # no cause is named on either small run, so there is one model (the first order): the
+    # error above the noise judges it; there are no "models" to tell apart
+    run1, run2 = _nxt_logs(tmp_path, "small")
+    d = _analyze(run1, capsys)
+    assert d["finding"]["cause"] == "none"
+    assert d["lead"]["figure"] == "baseline_above_noise"
+    assert d["lead"]["why"].endswith("only the part of the error above it judges the model")
+    d = _analyze(run2, capsys)
+    assert d["finding"]["cause"] == "none"
+    assert "tells the models apart" not in d["lead"]["why"]
+    assert d["lead"]["why"].endswith("so it judges the model")
+
+
+def test_nxt_small_run_down_says_how_much_it_misses_where_the_wheel_turns(tmp_path, capsys):
+    # 40, 32, 24, 16, 12, 7, 5, 3, 1, 2 counts, then 100 rows at exactly 0: over all 110 rows
+    # the first-order model misses by 0.4 rad/s rms above the floor (0.285), which read as
+    # "too little and too scattered to name a cause by"; in the 10 rows where the wheel turns
+    # it misses by 1.6 (its residual -1.9, -2.5, -0.8, +1.0, +0.3, +0.7, +0.3: no scatter,
+    # a linear start it does not follow). No cause is named still (the whitened rule)
+    _, run2 = _nxt_logs(tmp_path, "small")
+    d = _analyze(run2, capsys)
+    assert d["finding"]["cause"] == "none"
+    evidence = d["finding"]["evidence"]
+    assert "too little and too scattered" not in evidence
+    assert "where the wheel turns (10 of 110 rows" in evidence
+    assert "misses by 1.6 rad/s rms above the noise" in evidence
+    assert d["lead"]["figure"] == "baseline_angle_rms"
+    assert "stands still in 100 of 110 rows" in d["lead"]["why"]
+
+
+def test_nxt_small_rise_miss_is_not_called_scattered(tmp_path, capsys):
+    # after the (assumed) step the first-order model misses by -2.6, -3.3, -0.6, +0.2, +1.8,
+    # +1.2, +1.0, +1.2, +0.3, +1.0 rad/s (1, 8, 18, 24, 30, 32, 34, 36 counts: a slow start);
+    # one sign for eight samples is no scatter, and the rise is 3.9 times the steady state's
+    # rms. No cause is named, because the rule that holds the filter back says so
+    run1, _ = _nxt_logs(tmp_path, "small")
+    d = _analyze(run1, capsys)
+    assert d["finding"]["cause"] == "none"
+    evidence = d["finding"]["evidence"]
+    assert "too scattered" not in evidence
+    assert "but no cause from the list is clear enough to name; the best extension" in evidence

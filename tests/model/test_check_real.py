@@ -158,12 +158,48 @@ def test_n20_pwm25_speed_before_the_cut_is_the_speed_the_wheel_ran_at():
     assert "from 7.18 rad/s" not in words
 
 
-def test_an_extended_model_within_the_noise_is_said_to_be_all_noise():
+def test_n20_pwm25_fall_rate_is_the_slope_of_the_readings_not_one_count():
+    # after the cut the wheel reads 8.98, then 7.18 for 60 ms, then 5.39 (one count = 1.8
+    # rad/s): the two-point rate from the 100 ms mean (8.8) to that first 5.39 read 42.6 rad/s^2;
+    # a line through the readings until half the speed gives 24-25 rad/s^2, a parabola
+    # through the angle 22, and the wheel stands still 272 ms after the cut (8.8/0.272 = 32)
+    _, words = analyze("n20-12v-pwm25")
+    rate = re.search(r"the speed falls at ([\d.]+) rad/s\^2", words)
+    assert rate, words
+    assert 18 <= float(rate.group(1)) <= 32
+
+
+def test_an_extended_model_within_the_noise_is_not_said_to_be_all_noise():
     # duty 255: after the 345 ms delay is in the model its rms error (1.52 rad/s) is below the
-    # speed's scatter (1.76 rad/s); "-> 0 rad/s" alone read like a perfect model
-    r, words = analyze("micromouse-n20-duty255")
-    assert r.gain["extended_above_noise"] == 0
-    assert "-> 0 rad/s, the extended model's error is all noise" in words
+    # speed's scatter (1.76 rad/s); "-> 0 rad/s" alone read like a perfect model. But its
+    # error is not all noise: averaged over 0.25 s (where one-count noise falls to 0.07 rad/s,
+    # a count over the block's time) it reads -1.08 after the rise and +0.80 at the end, a slow
+    # drift no model here has; duty 100 the same (-1.29). The rms comparison is what is said
+    for name in ("micromouse-n20-duty255", "micromouse-n20-duty100"):
+        r, words = analyze(name)
+        assert r.gain["extended_above_noise"] == 0
+        assert "all noise" not in words
+        rms = f"{r.extended.rmse:.3g}"
+        assert f"-> 0 rad/s, the extended model's rms error ({rms} rad/s) is no larger" in words
+
+
+def test_the_gain_details_give_the_error_above_the_noise_the_tui_shows():
+    # duty 100: the TUI's panel lists "speed error above the noise first order 0.477 rad/s ->
+    # extended 0" (scatter 1.52 rad/s; sqrt(1.592^2 - 1.52^2) = 0.47); the CLI's details line
+    # gave the floor's figure only, so the TUI said what the CLI did not
+    _, words = analyze("micromouse-n20-duty100")
+    details = words.split("\nGain: ")[1].splitlines()[1]
+    assert "above the noise 0.477 -> 0 rad/s" in details, details
+
+
+def test_aligned_probe_is_not_said_to_be_explained_down_to_its_noise():
+    # the first-order model's rms error (1.50 rad/s) is under the scatter (1.75), but after
+    # the rise it misses in one direction for 200 ms: 20 ms means of its error +2.0, +3.4,
+    # +1.3, 0, -1.1, -1.6, -2.2, -2.3, -1.1, -1.5, -1.7 rad/s (one count over 20 ms is 0.9),
+    # and the deviations line says it is worst there. Only the rms comparison is said
+    _, words = analyze("mm255_aligned.csv")
+    assert "down to its noise" not in words
+    assert "rms error is at the level of the speed's noise: 1.5 rad/s against" in words
 
 
 def test_n20_probe_cut_before_the_run_down_says_nothing_of_stops():

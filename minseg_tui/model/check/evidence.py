@@ -175,19 +175,33 @@ def _coast(log: Log, ext: Fit) -> str:
     if not downs:
         return f"the wheel runs down slowly at zero command (time constant {tc:.3g} s)"
     s = max(downs, key=lambda x: abs(x.speed))
+    decel, span = _fall_rate(log, s)
     a, w0 = s.row, abs(s.speed)
-    seg = np.abs(log.y[a : a + 40])
-    below = np.flatnonzero(seg < 0.7 * w0)
-    n = max(int(below[0]) + 1 if below.size else seg.size, 2)
-    n = min(n, seg.size)
-    span = float(log.t[a + n - 1] - log.t[a - 1])
-    decel = (w0 - float(seg[n - 1])) / span if span > 0 else 0.0
     return (
         f"right after the command drops to 0 at t = {log.t[a]:.3f} s the speed falls at "
-        f"{decel:.3g} rad/s^2 (measured over {_ms(span)}), where a braked motor (T = "
+        f"{decel:.3g} rad/s^2 (a line through the speed over the {_ms(span)} it takes to fall "
+        f"to half), where a braked motor (T = "
         f"{_ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
         f"wheel coast, with a time constant of {tc:.3g} s at zero command"
     )
+
+
+FALL_TO = 0.5
+"""The share of the speed before a step-down that the fall rate is measured down to: far
+enough that one-count readings (20 % of a slow wheel's speed) do not set the rate."""
+
+
+def _fall_rate(log: Log, s: Stop) -> tuple[float, float]:
+    """How fast the speed falls after the step-down ``s`` (rad/s^2, the slope of a straight
+    line through the speed before it and the readings until the first under FALL_TO of it,
+    40 at most) and the span that covers (s, from the row before the step)."""
+    a, w0 = s.row, abs(s.speed)
+    seg = np.abs(log.y[a : a + 40])
+    below = np.flatnonzero(seg < FALL_TO * w0)
+    n = min(max(int(below[0]) + 1 if below.size else seg.size, 2), seg.size)
+    tt = log.t[a - 1 : a + n] - log.t[a - 1]
+    slope = float(np.polyfit(tt, np.concatenate(([w0], seg[:n])), 1)[0]) if tt[-1] > 0 else 0.0
+    return -slope, float(tt[-1])
 
 
 def _pole(log: Log, ext: Fit) -> str:

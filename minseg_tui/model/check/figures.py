@@ -97,16 +97,35 @@ SMALL_NOISE = 0.3
 by under 5 %: the plain rms error leads then."""
 
 
-def lead(gain: dict[str, float | None], named: bool) -> Lead:
-    """Which figure leads: the angle error where the speed error is mostly noise, the
-    held-out error where the log has steps to hold out, the rms error where the noise is
-    small against it, else the error above the noise. ``named``: a cause was named (two
-    models to tell apart; else one model to judge)."""
+def lead(
+    gain: dict[str, float | None], named: bool, turning: tuple[float, int, int] | None = None
+) -> Lead:
+    """Which figure leads: the angle error where the speed error is mostly noise (or where
+    the wheel stands still in most rows, which makes the rms error over the log small while
+    it misses where the wheel turns), the held-out error where the log has
+    steps to hold out, the rms error where the noise is small against it, else the error
+    above the noise. ``named``: a cause was named (two models to tell apart; else one model
+    to judge). ``turning``: the larger model's rms error where the wheel turns (rad/s), the
+    rows where it stands still and all rows."""
     noise = max(gain.get("noise_floor") or 0.0, gain.get("noise") or 0.0)
     b, e = gain["baseline_rmse"] or 0.0, gain["extended_rmse"] or 0.0
+    angle = "extended_angle_rms" if named else "baseline_angle_rms"
+    if noise > 0 and turning and 2 * turning[1] > turning[2] and turning[0] >= 1.5 * noise:
+        err, still, rows = turning
+        return Lead(
+            angle,
+            f"the wheel stands still in {still} of {rows} rows, which makes the rms speed error "
+            f"({max(b, e):.3g} rad/s) small; where it turns the error is {err:.3g} rad/s rms "
+            f"against a noise of {noise:.3g} rad/s. The angle error adds up "
+            + (
+                "each model's misses over the run, so it tells them apart"
+                if named
+                else "the model's misses over the run, so it judges the model"
+            ),
+        )
     if noise > 0 and max(b, e) < 1.5 * noise:
         return Lead(
-            "extended_angle_rms" if named else "baseline_angle_rms",
+            angle,
             f"the speed error ({max(b, e):.3g} rad/s rms) is mostly the noise of the speed "
             f"({noise:.3g} rad/s), which hides "
             + (
@@ -126,7 +145,8 @@ def lead(gain: dict[str, float | None], named: bool) -> Lead:
         return Lead(
             "extended_above_noise" if named else "baseline_above_noise",
             f"this log's speed has a noise of {noise:.3g} rad/s rms that no model can "
-            "remove; only the part of the error above it tells the models apart",
+            "remove; only the part of the error above it "
+            + ("tells the models apart" if named else "judges the model"),
         )
     if noise > 0:
         return Lead(

@@ -320,9 +320,19 @@ def _report(
         b_pred,
         e_pred,
         samp,
-        lead(gain, named),
+        lead(gain, named, _turning(full.y, b_pred, e_pred, keep)),
         cu,
     )
+
+
+def _turning(
+    y: FloatArray, b_pred: FloatArray, e_pred: FloatArray, keep: NDArray[np.bool_]
+) -> tuple[float, int, int]:
+    """The larger of both models' rms error (rad/s) on the kept rows where the measured wheel
+    turns, the kept rows where it stands still, and all kept rows."""
+    moving = an.moving_rows(y).astype(bool) & keep
+    err = max(_rmse_kept(y, b_pred, moving), _rmse_kept(y, e_pred, moving))
+    return err, int(np.count_nonzero(keep & ~moving)), int(np.count_nonzero(keep))
 
 
 def _rmse_kept(y: FloatArray, pred: FloatArray, keep: NDArray[np.bool_]) -> float:
@@ -483,20 +493,36 @@ def _finding(
         if explained:
             rms_b = _rmse_kept(log.y, log.base_pred, np.ones(log.y.size, dtype=bool))
             left = above(rms_b, level) or 0.0
+            turning = an.moving_rows(log.y).astype(bool)
+            rms_t = _rmse_kept(log.y, log.base_pred, turning)
+            left_t = above(rms_t, level) or 0.0
+            turning_words = (
+                level > 0 and 2 * np.count_nonzero(turning) < turning.size and left_t >= 0.5 * level
+            )
             if level <= 0:
                 fit_words = "the first-order model fits the log"
-            elif left < 0.5 * level:
+            elif turning_words:
+                # a wheel at rest reads exactly 0, without noise: the rms over the whole log
+                # would mostly count rows where nothing happens
                 fit_words = (
-                    f"the first-order model explains the log down to its noise: its error is "
-                    f"{rms_b:.3g} rad/s rms against a noise of {level:.3g} rad/s"
+                    f"where the wheel turns ({np.count_nonzero(turning)} of {turning.size} rows; "
+                    f"it stands still in the others) the first-order model misses by "
+                    f"{left_t:.2g} rad/s rms above the noise ({level:.3g} rad/s)"
+                )
+            elif left < 0.5 * level:
+                # an rms comparison: a miss held over many samples can hide below it
+                fit_words = (
+                    f"the first-order model's rms error is at the level of the speed's noise: "
+                    f"{rms_b:.3g} rad/s against a noise of {level:.3g} rad/s"
                 )
             else:
                 fit_words = (
                     f"the first-order model misses by {left:.2g} rad/s rms above the noise "
-                    f"({level:.3g} rad/s), too little and too scattered to name a cause by"
+                    f"({level:.3g} rad/s), but no cause from the list is clear enough to name"
                 )
             pct = fit_percent(log.y, log.base_pred)
-            if pct < 80.0 and level > 0 and left < 0.5 * level:
+            at_noise = level > 0 and left < 0.5 * level and not turning_words
+            if pct < 80.0 and at_noise:
                 fit_words += (
                     f" (its fit is only {pct:.0f} % because that noise is large against the "
                     "speed's changes, not because the model is wrong)"

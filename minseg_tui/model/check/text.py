@@ -41,7 +41,11 @@ def _pair(r: CheckResult, key: str) -> str:
     if r.finding.cause == "none" or e is None:
         return f"{b:.3g} {unit}"
     if e == 0 and b > 0 and "above" in key:
-        return f"{b:.3g} -> 0 {unit}, the extended model's error is all noise"
+        rms = g["extended_rmse"]
+        return (
+            f"{b:.3g} -> 0 {unit}, the extended model's rms error ({rms:.3g} {unit}) is no "
+            "larger than the noise"
+        )
     return f"{b:.3g} -> {e:.3g} {unit}"
 
 
@@ -83,6 +87,9 @@ def text(r: CheckResult) -> str:
     if noise is not None:
         rest.append(f"scatter {noise:.3g} rad/s")
     rest.append(f"rms error {_pair(r, 'extended_rmse')}")
+    above = g.get("baseline_above_noise")
+    if above is not None and (above > 0 or g.get("extended_above_noise")):
+        rest.append(f"above the noise {_pair(r, 'extended_above_noise')}")
     if g.get("baseline_above_floor") is not None:
         rest.append(f"above the floor {_pair(r, 'extended_above_floor')}")
     rest.append(f"angle error {_pair(r, 'extended_angle_rms')}")
