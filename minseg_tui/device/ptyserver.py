@@ -30,8 +30,7 @@ class PtyServer:
     def __init__(self, board: VirtualBoard | None = None, link_path: str | None = None) -> None:
         self.board = board or VirtualBoard()
         self.link_path = link_path
-        self.clock = RealTime()
-        self.clock.t0 -= self.board.now
+        self.clock = RealTime(self.board.now)
         self.master: int | None = None
         self.slave_name = ""
         self.lost_bytes = 0

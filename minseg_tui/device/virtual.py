@@ -599,14 +599,31 @@ class VirtualBoard:
 
 # -- clocks and the shared boards of the URL scheme ----------------------------------------
 class RealTime:
-    """Board time = host monotonic time since start, s."""
+    """Board time = host monotonic time, s, starting at ``start``; except that a stall of
+    the host process (the board's thread not scheduled for longer than :attr:`MAX_STEP`, on a
+    busy machine) pauses board time instead of skipping it. The virtual board runs in the
+    host's process: a stalled process stops host and board alike, and a busy machine makes
+    the board slower, never wrong (its watchdog does not take a stalled host for a silent
+    one, nor does the link take the stalled board for a silent one)."""
 
-    def __init__(self) -> None:
-        self.t0 = time.monotonic()
+    MAX_STEP = 0.2
+    """The most board time moves between two readings of the clock, s (the board's thread
+    reads it every few ms, the pty server every 50 ms at most)."""
+
+    def __init__(self, start: float = 0.0) -> None:
+        self.t0 = time.monotonic() - start
+        self._last = start
+        self._lock = threading.Lock()
 
     def __call__(self) -> float:
         """Board time now, s."""
-        return time.monotonic() - self.t0
+        with self._lock:
+            now = time.monotonic() - self.t0
+            if now - self._last > self.MAX_STEP:  # a stall: the time beyond the step is lost
+                self.t0 += now - self._last - self.MAX_STEP
+                now = self._last + self.MAX_STEP
+            self._last = max(self._last, now)
+            return self._last
 
 
 _NAMED: dict[str, VirtualBoard] = {}

@@ -5,7 +5,7 @@ import math
 import pytest
 
 from minseg_tui.device import protocol as P
-from minseg_tui.device.virtual import VirtualBoard, VirtualSettings, settings_from
+from minseg_tui.device.virtual import RealTime, VirtualBoard, VirtualSettings, settings_from
 
 from .conftest import read_lines, vport
 
@@ -202,3 +202,45 @@ def test_a_refused_step_does_not_feed_the_watchdog():
     port.write(b"STEP,0,2000,5000,1\n")  # $ERR,BUSY: not a command the board accepted
     lines = read_lines(port, 0.45)
     assert P.format_line(P.EvWatchdog()) in lines
+
+
+class _Monotonic:
+    """A host clock the test moves by hand (s)."""
+
+    def __init__(self) -> None:
+        self.now = 1000.0
+
+    def __call__(self) -> float:
+        return self.now
+
+
+def test_a_stalled_host_pauses_the_real_time_board_instead_of_tripping_its_watchdog(
+    monkeypatch,
+):
+    """The virtual board runs in the host's process: when the process is not scheduled for
+    3 s (a busy machine), board time moves on by at most RealTime.MAX_STEP, so the board does
+    not see a host silent for 3 s and its watchdog leaves the motor on. A host that is
+    scheduled but sends nothing still trips it after 1 s."""
+    host = _Monotonic()
+    monkeypatch.setattr("minseg_tui.device.virtual.time.monotonic", host)
+    clock = RealTime(5.0)
+    assert clock() == 5.0
+    host.now += 0.01
+    assert clock() == pytest.approx(5.01)  # ordinary steps: host time
+    board = VirtualBoard(VirtualSettings(seed=1))
+    board.run_until(clock())
+    board.take_output()
+    board.feed(b"V,4000\n")
+    for _ in range(10):  # kept alive for a second
+        host.now += 0.1
+        board.run_until(clock())
+        board.feed(b"PING\n")
+    host.now += 3.0  # the process stalls
+    board.run_until(clock())
+    assert clock() == pytest.approx(6.01 + RealTime.MAX_STEP)
+    board.feed(b"PING\n")  # the first thing the host does when it runs again
+    assert b"WDOG" not in board.take_output() and board.u_mV == 4000
+    for _ in range(12):  # scheduled, but silent: 1.2 s of board time
+        host.now += 0.1
+        board.run_until(clock())
+    assert b"$EV,WDOG" in board.take_output() and board.u_mV == 0

@@ -102,10 +102,15 @@ class Heard:
         self, pilot: Pilot[None], cond: Callable[[], bool], most: int = 100_000
     ) -> None:
         """Wait until ``cond()`` holds, checking it whenever the app hears a message (at most
-        ``most`` messages, and fail after :attr:`SILENCE` without one: hang guards)."""
+        ``most`` messages, and fail after :attr:`SILENCE` without one: hang guards). A board
+        watchdog heard meanwhile fails at once: the motor is off, and a wait for a speed or a
+        run would only end at the guard."""
+        watchdogs = self.kinds.count("watchdog")
         for _ in range(most):
             if cond():
                 return
+            if self.kinds.count("watchdog") > watchdogs:
+                raise AssertionError("the board's watchdog stopped the motor during the wait")
             self._new.clear()
             try:
                 await asyncio.wait_for(self._new.wait(), self.SILENCE)

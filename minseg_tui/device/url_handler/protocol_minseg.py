@@ -77,8 +77,7 @@ class Serial(SerialBase):
             self._virtual = clock == "virtual"
             if not self._virtual:
                 if not isinstance(getattr(board, "clock", None), RealTime):
-                    board.clock = RealTime()  # type: ignore[attr-defined]
-                    board.clock.t0 -= board.now  # type: ignore[attr-defined]
+                    board.clock = RealTime(board.now)  # type: ignore[attr-defined]
                 board.run_until(board.clock())  # type: ignore[attr-defined]
             board.reset()
         self.board = board
