@@ -126,6 +126,23 @@ class StepPane(VerticalScroll):
     def on_mouse_scroll_up(self, _: events.MouseScrollUp) -> None:
         self._landing = None
 
+    def _scroll_lines(self, lines: int) -> None:
+        """The arrow keys (on the step or in one of its entries): ``lines`` down (up if
+        negative) from where the last key put the step, at once, so a burst of keys (or a
+        held key on a busy machine) scrolls as many lines as were pressed; Textual's own
+        defers each to the next refresh, all from the same place. The step then stays where
+        the group put it."""
+        if not self.allow_vertical_scroll:
+            raise SkipAction()
+        self._landing = None
+        self.scroll_to(y=self.scroll_target_y + lines, animate=False, immediate=True)
+
+    def action_scroll_down(self) -> None:
+        self._scroll_lines(1)
+
+    def action_scroll_up(self) -> None:
+        self._scroll_lines(-1)
+
     def landing_row(self) -> FieldRow | None:
         """The entry the step lands in: the first one with nothing in it, else the first;
         on a step with a panel, its notes field does not count (the step lands at the top,

@@ -1,0 +1,53 @@
+"""Reading a long step without a mouse: the arrow keys scroll the step (PgUp/PgDn move
+between steps), as many lines as were pressed, and a step scrolled by the group stays where
+they put it."""
+
+from __future__ import annotations
+
+from minseg_tui.ui.screens.lab import StepPane
+from tests.ui.helpers import TABLE, burst, enter_all, goto, record_step_run, settle, start
+
+
+async def _lab_with_a_run(app, pilot) -> None:
+    await start(pilot)
+    enter_all(app, TABLE)
+    with app.session as s:
+        record_step_run(s)
+
+
+async def test_a_burst_of_arrow_keys_scrolls_as_many_lines(quiet):
+    """Seen in tmux (walk 4): twenty Down keys sent at once on the model check scrolled it
+    one line (a held arrow key on a busy machine is such a burst): each key asked Textual to
+    scroll one line below the same target, deferred to the next refresh."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _lab_with_a_run(app, pilot)
+        await goto(pilot, "model_check")
+        pane = app.screen.query(StepPane).last()
+        assert app.focused is pane and pane.max_scroll_y > 12
+        await burst(pilot, *["down"] * 12)
+        assert pane.scroll_y == 12
+        await burst(pilot, *["up"] * 5)
+        assert pane.scroll_y == 7
+        await goto(pilot, "task12")  # in an entry: the arrows scroll the step too
+        pane = app.screen.query(StepPane).last()
+        landed = pane.scroll_y
+        assert landed >= 4
+        await burst(pilot, *["up"] * 4)
+        assert pane.scroll_y == landed - 4
+
+
+async def test_a_step_scrolled_with_the_keys_stays_when_its_view_is_drawn_again(quiet):
+    """Task 12: the group lands in its T, scrolls up with the arrows to read the zoom, and the
+    lab changes (another run picked from the palette): the view is drawn again and the step
+    stays where the group put it instead of jumping back to the entry."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _lab_with_a_run(app, pilot)
+        await goto(pilot, "task12")
+        pane = app.screen.query(StepPane).last()
+        await burst(pilot, "up", "up", "up")
+        read = pane.scroll_y
+        app.screen.use_run(None)
+        await settle(pilot)
+        assert pane.scroll_y == read
