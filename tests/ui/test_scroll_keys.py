@@ -4,7 +4,13 @@ they put it."""
 
 from __future__ import annotations
 
+from minseg_tui.report.write import write_report
+from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.screens.lab import StepPane
+from minseg_tui.ui.widgets.fields import field_id
+from tests.ui.conftest import DATE
+from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import TABLE, burst, enter_all, goto, record_step_run, settle, start
 
 
@@ -51,3 +57,23 @@ async def test_a_step_scrolled_with_the_keys_stays_when_its_view_is_drawn_again(
         app.screen.use_run(None)
         await settle(pilot)
         assert pane.scroll_y == read
+
+
+async def test_the_focused_entry_stays_in_view_when_the_panel_above_it_grows(tmp_path):
+    """Seen in tmux (walk 4): on the summary at 80x24, 'why does f fall with speed' typed
+    into the last entry, then F8: the list of files written appeared above and pushed the
+    entry (and its text) out of sight under the footer."""
+    dev = QuietDevice(seed=1)
+    cfg = UiConfig(device="auto", sessions=tmp_path, today=DATE, animations=False, refresh=0)
+    app = LabApp(cfg, lambda spec: dev, lambda session: write_report(session).paths)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "summary")  # lands on the first question; typing goes below
+        await burst(pilot, *"why does f fall with speed")
+        box = app.focused
+        assert box is app.screen.query_one(f"#{field_id('summary.unclear')} Input")
+        assert app.screen.can_view_entire(box)
+        await burst(pilot, "f8")
+        await settle(pilot, lambda: bool(app.exported))
+        assert app.screen.can_view_entire(box)
+        assert box.value == "why does f fall with speed"

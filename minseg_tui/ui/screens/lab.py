@@ -93,6 +93,9 @@ class StepPane(VerticalScroll):
         """The entry the step landed in, while it has the focus and the group has not
         scrolled: brought back into view when the panel's view is drawn (it comes from a
         worker, before or after the landing) and moves the entry down."""
+        self._scrolled = False
+        """The group scrolled the step (arrows, mouse) since the focus last moved in it: it
+        stays where they put it when its content grows or shrinks."""
 
     def compose(self) -> ComposeResult:
         yield Prose(self.step.title, classes="title")
@@ -114,17 +117,35 @@ class StepPane(VerticalScroll):
 
     @on(ViewPanel.Drawn)
     def _view_drawn(self) -> None:
+        """The panel drew its view (or the report's files, after F8) and may have grown or
+        shrunk above the entries: the entry the step landed in is placed again from the top
+        of the step; an entry the group moved to since stays in view. Either only while the
+        group has not scrolled away from it."""
         row = self._landing
         if row is not None and row.is_attached and row.has_focus_within:
             row.call_after_refresh(row.bring_into_view, True)
-        else:
-            self._landing = None
+            return
+        self._landing = None
+        focused = self.screen.focused
+        if self._scrolled or focused is None:
+            return
+        row = next((a for a in focused.ancestors_with_self if isinstance(a, FieldRow)), None)
+        if row is not None and self in row.ancestors:
+            row.call_after_refresh(row.bring_into_view)
+
+    def on_descendant_focus(self, _: events.DescendantFocus) -> None:
+        self._scrolled = False
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
-        self._landing = None  # the group scrolls: the step stays where they put it
+        self._group_scrolled()
 
     def on_mouse_scroll_up(self, _: events.MouseScrollUp) -> None:
+        self._group_scrolled()
+
+    def _group_scrolled(self) -> None:
+        """The group scrolls: the step stays where they put it."""
         self._landing = None
+        self._scrolled = True
 
     def _scroll_lines(self, lines: int) -> None:
         """The arrow keys (on the step or in one of its entries): ``lines`` down (up if
@@ -134,7 +155,7 @@ class StepPane(VerticalScroll):
         the group put it."""
         if not self.allow_vertical_scroll:
             raise SkipAction()
-        self._landing = None
+        self._group_scrolled()
         self.scroll_to(y=self.scroll_target_y + lines, animate=False, immediate=True)
 
     def action_scroll_down(self) -> None:
