@@ -11,7 +11,16 @@ from minseg_tui.ui.screens.lab import StepPane
 from minseg_tui.ui.widgets.fields import field_id
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import TABLE, burst, enter_all, goto, record_step_run, settle, start
+from tests.ui.helpers import (
+    TABLE,
+    burst,
+    enter_all,
+    goto,
+    record_step_run,
+    resume,
+    settle,
+    start,
+)
 
 
 async def _lab_with_a_run(app, pilot) -> None:
@@ -77,3 +86,20 @@ async def test_the_focused_entry_stays_in_view_when_the_panel_above_it_grows(tmp
         await settle(pilot, lambda: bool(app.exported))
         assert app.screen.can_view_entire(box)
         assert box.value == "why does f fall with speed"
+
+
+async def test_a_resumed_step_shows_the_entry_it_lands_in(quiet):
+    """Seen in tmux (walk 4): a session left on Task 12 (its T typed) resumed at 80x24 with
+    the top of the step in view and the focused T under the footer."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _lab_with_a_run(app, pilot)
+        await goto(pilot, "task12")
+        await burst(pilot, *"57 ms", "enter")
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await resume(pilot)
+        await settle(pilot)
+        box = app.screen.query_one(f"#{field_id('own.T')} Input")
+        assert app.focused is box
+        assert app.screen.can_view_entire(box)

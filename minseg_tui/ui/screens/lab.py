@@ -304,6 +304,9 @@ class LabScreen(StatusScreen):
             current = s.current_step
         start = current if current in STEP_IDS else STEP_IDS[0]
         self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
+        # the list took the focus as the screen came up (Textual's auto-focus), not the group:
+        # the lab opens landed in its step, its entry in view, as PgDn lands
+        self._jump = ("entry",)
         await self.show_step(start)
         self.shown.set()
 
