@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.fakes import QuietDevice, frozen_stream
-from tests.ui.helpers import burst, goto, settle, shown, start
+from tests.ui.helpers import TABLE, burst, enter_all, goto, record_step_run, settle, shown, start
 
 
 def _typed(app, key: str) -> str:
@@ -134,3 +134,21 @@ async def test_tab_tab_enter_on_the_start_screen_resumes_the_session(quiet, tmp_
             assert list(s.members) == ["Ann K", "Ben L"]
         assert _typed(app, "own.model") == "4,7"
     assert len(list((tmp_path / "sessions").iterdir())) == 1
+
+
+async def test_keys_typed_on_a_step_shown_by_pgdn_all_land_in_its_entry(quiet):
+    """Seen in tmux (walk 4): 'PgDn PgDn why 0 rising steps?' in one burst from Task 14 left
+    'wh' in the model check's notes: the keys were handed to the step (which has the focus on
+    a step with a panel and no entry to land in) and passed on to the screen, which lost
+    those that came after the focus had moved into the notes."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_step_run(s)
+        await goto(pilot, "task14")
+        await burst(pilot, "pagedown", "pagedown", *"why 0 rising steps?", "f8")
+        assert shown(app, "model_check")
+        assert _box(app, "model_check.notes") == "why 0 rising steps?"
+        assert _typed(app, "model_check.notes") == "why 0 rising steps?"  # F8 stored it

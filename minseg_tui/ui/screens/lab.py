@@ -506,6 +506,14 @@ class LabScreen(StatusScreen):
         row = panes.last().typing_row()
         if row is None or self.readonly:
             return
+        if isinstance(self.focused, EntryBox):
+            # a box takes every printable key it is handed: this one was handed to the list,
+            # the step or a list of answers before the keys ahead of it in the burst moved the
+            # focus into the box; it goes on after them (it was lost)
+            event.stop()
+            event.prevent_default()
+            self.focused.insert_text_at_cursor(event.character)
+            return
         on_answers = isinstance(self.focused, RadioSet | SelectionList) and (
             event.character != " " or row.input.starting  # Space picks, unless mid-burst
         )
