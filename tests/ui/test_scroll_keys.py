@@ -8,7 +8,7 @@ from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.screens.lab import StepPane
-from minseg_tui.ui.widgets.fields import field_id
+from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
@@ -103,3 +103,18 @@ async def test_a_resumed_step_shows_the_entry_it_lands_in(quiet):
         box = app.screen.query_one(f"#{field_id('own.T')} Input")
         assert app.focused is box
         assert app.screen.can_view_entire(box)
+
+
+async def test_an_entry_brought_into_view_after_its_step_has_gone_does_nothing(quiet):
+    """make test under load: the lab opened landed in Preparation 1's notes and asked to bring
+    them into view after the next refresh; 'PgDn' typed with the names had removed that step
+    by then, and the deferred call crashed the app (NoScreen)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        row = app.screen.query_one(f"#{field_id('prep1.notes')}", FieldRow)
+        await burst(pilot, "pagedown")
+        assert not row.is_attached
+        row.bring_into_view(True)  # what the deferred call does
+        await settle(pilot)
+        assert app.screen.query(StepPane).last().step.id == "prep2"
