@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.fakes import QuietDevice, frozen_stream
-from tests.ui.helpers import burst, goto, settle, shown, start
+from tests.ui.helpers import TABLE, burst, enter_all, goto, record_step_run, settle, shown, start
 
 
 def _typed(app, key: str) -> str:
@@ -100,3 +100,55 @@ async def test_keys_typed_right_after_the_names_land_in_the_lab(quiet):
         assert _typed(app, "prep4.fraction") == "0,632"
         with app.session as s:
             assert list(s.members) == ["Bo", "Cy"]
+
+
+async def test_keys_typed_after_tab_go_into_the_next_entry(quiet):
+    """Seen in tmux (walk 4): '90 Tab 12 min Tab 8 min' in one burst left '9012 min8 min' in
+    the first entry of Preparation 7: the keys after Tab went to the box Tab was leaving,
+    which still had the focus while the Tab made its way up to the app."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep7")
+        await burst(pilot, *"90", "tab", *"12 min", "tab", *"8 min", "shift+tab", *"11 min")
+        assert _typed(app, "prep7.y_final") == "90"
+        assert _typed(app, "prep7.T") == "8 min"  # stored by the Shift+Tab that left it
+        assert _box(app, "prep7.t_63") == "11 min"  # Shift+Tab came back: typing replaced it
+        assert app.focused is app.screen.query_one(f"#{field_id('prep7.t_63')}", FieldRow).input
+
+
+async def test_tab_tab_enter_on_the_start_screen_resumes_the_session(quiet, tmp_path):
+    """Seen in tmux (walk 4): 'Tab Tab Enter PgUp PgUp 9,69 Enter' on the start screen, to
+    resume the saved session, made a new session named '9,69': the Enter read the focus
+    before the Tabs had moved it from the names to the list of sessions."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot, "Ann K, Ben L")
+        await goto(pilot, "task15")
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: bool(app.screen.query("#members")))
+        await burst(pilot, "tab", "tab", "enter", "pageup", *"4,7", "enter")
+        await settle(pilot, lambda: shown(app, "task14"))
+        with app.session as s:
+            assert list(s.members) == ["Ann K", "Ben L"]
+        assert _typed(app, "own.model") == "4,7"
+    assert len(list((tmp_path / "sessions").iterdir())) == 1
+
+
+async def test_keys_typed_on_a_step_shown_by_pgdn_all_land_in_its_entry(quiet):
+    """Seen in tmux (walk 4): 'PgDn PgDn why 0 rising steps?' in one burst from Task 14 left
+    'wh' in the model check's notes: the keys were handed to the step (which has the focus on
+    a step with a panel and no entry to land in) and passed on to the screen, which lost
+    those that came after the focus had moved into the notes."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_step_run(s)
+        await goto(pilot, "task14")
+        await burst(pilot, "pagedown", "pagedown", *"why 0 rising steps?", "f8")
+        assert shown(app, "model_check")
+        assert _box(app, "model_check.notes") == "why 0 rising steps?"
+        assert _typed(app, "model_check.notes") == "why 0 rising steps?"  # F8 stored it

@@ -5,6 +5,8 @@ from __future__ import annotations
 from textual.reactive import reactive
 from textual.widgets import Static
 
+from minseg_tui.ui.panels.view_panel import ViewPanel
+
 
 class ReportPanel(Static):
     """Says how to write the report and lists the files ``exported`` (paths) so far."""
@@ -13,6 +15,11 @@ class ReportPanel(Static):
 
     def __init__(self) -> None:
         super().__init__("", classes="panel")
+
+    def watch_exported(self) -> None:
+        """The files listed above the summary's entries: the step keeps the entry the group
+        types in in view (the list pushed it under the footer at 80x24)."""
+        self.call_after_refresh(self.post_message, ViewPanel.Drawn())
 
     def render(self) -> str:
         paths = self.exported

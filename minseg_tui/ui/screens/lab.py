@@ -93,6 +93,9 @@ class StepPane(VerticalScroll):
         """The entry the step landed in, while it has the focus and the group has not
         scrolled: brought back into view when the panel's view is drawn (it comes from a
         worker, before or after the landing) and moves the entry down."""
+        self._scrolled = False
+        """The group scrolled the step (arrows, mouse) since the focus last moved in it: it
+        stays where they put it when its content grows or shrinks."""
 
     def compose(self) -> ComposeResult:
         yield Prose(self.step.title, classes="title")
@@ -114,17 +117,52 @@ class StepPane(VerticalScroll):
 
     @on(ViewPanel.Drawn)
     def _view_drawn(self) -> None:
+        """The panel drew its view (or the report's files, after F8) and may have grown or
+        shrunk above the entries: the entry the step landed in is placed again from the top
+        of the step; an entry the group moved to since stays in view. Either only while the
+        group has not scrolled away from it."""
         row = self._landing
         if row is not None and row.is_attached and row.has_focus_within:
             row.call_after_refresh(row.bring_into_view, True)
-        else:
-            self._landing = None
+            return
+        self._landing = None
+        focused = self.screen.focused
+        if self._scrolled or focused is None:
+            return
+        row = next((a for a in focused.ancestors_with_self if isinstance(a, FieldRow)), None)
+        if row is not None and self in row.ancestors:
+            row.call_after_refresh(row.bring_into_view)
+
+    def on_descendant_focus(self, _: events.DescendantFocus) -> None:
+        self._scrolled = False
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
-        self._landing = None  # the group scrolls: the step stays where they put it
+        self._group_scrolled()
 
     def on_mouse_scroll_up(self, _: events.MouseScrollUp) -> None:
+        self._group_scrolled()
+
+    def _group_scrolled(self) -> None:
+        """The group scrolls: the step stays where they put it."""
         self._landing = None
+        self._scrolled = True
+
+    def _scroll_lines(self, lines: int) -> None:
+        """The arrow keys (on the step or in one of its entries): ``lines`` down (up if
+        negative) from where the last key put the step, at once, so a burst of keys (or a
+        held key on a busy machine) scrolls as many lines as were pressed; Textual's own
+        defers each to the next refresh, all from the same place. The step then stays where
+        the group put it."""
+        if not self.allow_vertical_scroll:
+            raise SkipAction()
+        self._group_scrolled()
+        self.scroll_to(y=self.scroll_target_y + lines, animate=False, immediate=True)
+
+    def action_scroll_down(self) -> None:
+        self._scroll_lines(1)
+
+    def action_scroll_up(self) -> None:
+        self._scroll_lines(-1)
 
     def landing_row(self) -> FieldRow | None:
         """The entry the step lands in: the first one with nothing in it, else the first;
@@ -266,6 +304,9 @@ class LabScreen(StatusScreen):
             current = s.current_step
         start = current if current in STEP_IDS else STEP_IDS[0]
         self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
+        # the list took the focus as the screen came up (Textual's auto-focus), not the group:
+        # the lab opens landed in its step, its entry in view, as PgDn lands
+        self._jump = ("entry",)
         await self.show_step(start)
         self.shown.set()
 
@@ -464,6 +505,14 @@ class LabScreen(StatusScreen):
             return
         row = panes.last().typing_row()
         if row is None or self.readonly:
+            return
+        if isinstance(self.focused, EntryBox):
+            # a box takes every printable key it is handed: this one was handed to the list,
+            # the step or a list of answers before the keys ahead of it in the burst moved the
+            # focus into the box; it goes on after them (it was lost)
+            event.stop()
+            event.prevent_default()
+            self.focused.insert_text_at_cursor(event.character)
             return
         on_answers = isinstance(self.focused, RadioSet | SelectionList) and (
             event.character != " " or row.input.starting  # Space picks, unless mid-burst

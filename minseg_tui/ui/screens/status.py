@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import asyncio
 
+from textual.binding import Binding
 from textual.reactive import reactive
 from textual.screen import Screen
 from textual.widget import Widget
@@ -15,7 +16,17 @@ from minseg_tui.ui.widgets.status import DeviceStatus
 class StatusScreen(Screen[None]):
     """A screen that shows the app's ``device``, ``link`` and ``motor`` in its status line,
     and ``saving`` (why the session is not on disk) under it (the app binds these when it
-    makes the screen); and the means for a key of a burst to wait for the keys before it."""
+    makes the screen); and the means for a key of a burst to wait for the keys before it.
+
+    Tab and Shift+Tab are the screen's before any widget's (priority): the focus moves when
+    the key arrives, once the keys typed before it are in their box, so the keys typed after
+    it in the same burst go into the next box (as a widget's key, Tab reached the app only
+    after those keys had been handed to the box it was leaving)."""
+
+    BINDINGS = [
+        Binding("tab", "app.focus_next", show=False, priority=True),
+        Binding("shift+tab", "app.focus_previous", show=False, priority=True),
+    ]
 
     device: reactive[DeviceInfo | None] = reactive(None)
     link: reactive[LinkState] = reactive(LinkState())

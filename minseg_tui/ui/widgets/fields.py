@@ -221,7 +221,10 @@ class FieldRow(Vertical):
         change height on their first layout): its box centred if it is cut off, then the
         whole row. ``landing`` (the step just shown, or its view just drawn): from the top of
         the step each time, so the row ends up where the layout alone puts it, not where the
-        step happened to be scrolled when the view came. At once, never animated."""
+        step happened to be scrolled when the view came. At once, never animated. Nothing
+        once the row has left (a call deferred to after a refresh: the group moved on)."""
+        if not self.is_attached:
+            return
         screen = self.screen
         boxes = self.query(".field-input, .field-choice")
         box = boxes.first() if boxes else None
