@@ -54,11 +54,11 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(
             args.link or "pty", None, f"cannot make the device ({exc.strerror})"
         ) from None
-    print(server.path, flush=True)
-    if args.link:
-        print(f"(symlink to {server.slave_name})", file=sys.stderr, flush=True)
-    signal.signal(signal.SIGTERM, _terminate)
+    signal.signal(signal.SIGTERM, _terminate)  # before the path is out: a kill may follow it
     try:
+        print(server.path, flush=True)
+        if args.link:
+            print(f"(symlink to {server.slave_name})", file=sys.stderr, flush=True)
         server.serve_forever()
     except (KeyboardInterrupt, _Terminated):
         pass
