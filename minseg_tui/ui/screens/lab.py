@@ -116,9 +116,10 @@ class StepPane(VerticalScroll):
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
 
     @on(ViewPanel.Drawn)
+    @on(FieldRow.Reflowed)
     def _view_drawn(self) -> None:
-        """The panel drew its view (or the report's files, after F8) and may have grown or
-        shrunk above the entries: the entry the step landed in is placed again from the top
+        """The panel drew its view (or the report's files, after F8), or an entry's hint moved
+        under its box or back: the step may have grown or shrunk above the entries: the entry the step landed in is placed again from the top
         of the step; an entry the group moved to since stays in view. Either only while the
         group has not scrolled away from it."""
         row = self._landing

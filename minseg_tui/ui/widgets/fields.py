@@ -110,6 +110,10 @@ class FieldRow(Vertical):
     Typing never lands on the end of a value: focusing the box selects what it holds, and so
     does Enter, so the next keys replace it (an arrow key or Home/End keeps it to edit)."""
 
+    class Reflowed(Message):
+        """The row grew or shrank once laid out (its hint moved under the box or back): the
+        step keeps its focused entry in view."""
+
     @dataclass
     class Chosen(Message):
         """The group ticked options ``indices`` (0-based) of choice field ``key``."""
@@ -188,7 +192,10 @@ class FieldRow(Vertical):
         box = self.input
         fits = box.content_size.width == 0 or len(self.field.hint) < box.content_size.width
         box.placeholder = self.field.hint if fits else ""
-        hints.first().display = not fits and not box.value
+        hint, under = hints.first(), not fits and not box.value
+        if hint.display != under:
+            hint.display = under
+            self.post_message(self.Reflowed())
 
     @property
     def input(self) -> EntryBox:
