@@ -26,6 +26,7 @@ from typing import Any
 from textual import on, work
 from textual.actions import ActionParseResult
 from textual.app import App, SystemCommand
+from textual.await_complete import AwaitComplete
 from textual.binding import Binding
 from textual.dom import DOMNode
 from textual.reactive import reactive
@@ -252,6 +253,15 @@ class LabApp(App[None]):
         self.device = DeviceInfo.of(event.device, event.fallback)
         self.link = LinkState()
         self._stream(event.device)
+
+    def pop_screen(self) -> AwaitComplete:
+        """Close the screen on top (help, a question, the palette), never the start or the
+        lab screen under them (they are switched to, not pushed): Textual's palette closes
+        itself once per Enter it is handed, and two Enters in one burst ('Ctrl+P task 6
+        Enter ... Enter') closed the lab screen under it and left an empty terminal."""
+        if isinstance(self.screen, StatusScreen):
+            return AwaitComplete()
+        return super().pop_screen()
 
     async def action_start_lab(self) -> None:
         """Enter on the start screen: open the lab it asks for, and return once the lab shows

@@ -5,6 +5,9 @@ after it into the new step; after Enter, into the next entry."""
 
 from __future__ import annotations
 
+from textual.command import CommandPalette
+
+from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.fakes import QuietDevice, frozen_stream
 from tests.ui.helpers import TABLE, burst, enter_all, goto, record_step_run, settle, shown, start
@@ -152,3 +155,22 @@ async def test_keys_typed_on_a_step_shown_by_pgdn_all_land_in_its_entry(quiet):
         assert shown(app, "model_check")
         assert _box(app, "model_check.notes") == "why 0 rising steps?"
         assert _typed(app, "model_check.notes") == "why 0 rising steps?"  # F8 stored it
+
+
+async def test_two_enters_in_the_palette_leave_the_lab_on_screen(quiet):
+    """Seen in tmux: 'Ctrl+P task 6 Enter 0,497 Tab ... Enter' in one burst left an empty
+    terminal and a traceback: the palette closes itself once per Enter it is handed, and
+    the second close took the lab screen under it."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await pilot.press("ctrl+p")
+        await settle(pilot, lambda: isinstance(app.screen, CommandPalette))
+        await pilot.press(*"task 6")
+        await settle(pilot)
+        await pilot.press("down")  # a command highlighted: Enter runs it
+        await settle(pilot)
+        await burst(pilot, "enter", "enter")
+        await settle(pilot)
+        assert isinstance(app.screen, LabScreen) and shown(app)
+        assert [type(s) for s in app.screen_stack[1:]] == [LabScreen]
