@@ -56,6 +56,8 @@ def _prepare(text: str) -> str:
         .replace("ω", "omega")
     )
     t = re.sub(r"(?<=\d),(?=\d)", ".", t)
+    # a percentage: a number with % and nothing after it to take the remainder by (63 %)
+    t = re.sub(r"(\d+(?:\.\d*)?|\.\d+)\s*%(?!\s*[\w(.])", r"(\1/100)", t)
     t = t.replace("^", "**")
     # implicit product: a number directly followed by a name or '(' (but not an exponent)
     t = re.sub(r"(\d\.?)(?![eE][-+]?\d)\s*(?=[A-Za-z_(])", r"\1*", t)

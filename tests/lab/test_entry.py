@@ -187,6 +187,10 @@ def test_plausible_warnings():
         ),
         ("2(a+b)", {"a": 1.0, "b": 2.0}, 6.0),
         ("sqrt(a)", {"a": 9.0}, 3.0),
+        ("63 %", {}, 0.63),  # a fraction typed as a percentage (Preparation 4)
+        ("63,2%", {}, 0.632),
+        ("1 - 36.8 %", {}, 0.632),
+        ("50 % * a", {"a": 4.0}, 2.0),
     ],
 )
 def test_formula_values(text, env, value):
