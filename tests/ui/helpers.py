@@ -178,6 +178,17 @@ async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") ->
     await settle(pilot, there)
 
 
+async def start_with_a_run(pilot: Pilot[None], step_id: str) -> None:
+    """A new session with the table's entries (:data:`TABLE`) and the seeded step run of
+    :func:`record_step_run`, then ``step_id`` shown and its entry focused (:func:`goto`)."""
+    app = pilot.app
+    await start(pilot)
+    enter_all(app, TABLE)
+    with app.session as s:
+        record_step_run(s)
+    await goto(pilot, step_id)
+
+
 async def type_in(pilot: Pilot[None], key: str, text: str) -> FieldRow:
     """Type ``text`` into field ``key`` and press Enter; the row, once the lab answered."""
     row = pilot.app.screen.query_one(f"#{field_id(key)}", FieldRow)

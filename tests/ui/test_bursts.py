@@ -10,7 +10,14 @@ from textual.command import CommandPalette
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.fakes import QuietDevice, frozen_stream
-from tests.ui.helpers import TABLE, burst, enter_all, goto, record_step_run, settle, shown, start
+from tests.ui.helpers import (
+    burst,
+    goto,
+    settle,
+    shown,
+    start,
+    start_with_a_run,
+)
 
 
 def _typed(app, key: str) -> str:
@@ -146,11 +153,7 @@ async def test_keys_typed_on_a_step_shown_by_pgdn_all_land_in_its_entry(quiet):
     those that came after the focus had moved into the notes."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        enter_all(app, TABLE)
-        with app.session as s:
-            record_step_run(s)
-        await goto(pilot, "task14")
+        await start_with_a_run(pilot, "task14")
         await burst(pilot, "pagedown", "pagedown", *"why 0 rising steps?", "f8")
         assert shown(app, "model_check")
         assert _box(app, "model_check.notes") == "why 0 rising steps?"

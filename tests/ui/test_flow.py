@@ -32,6 +32,7 @@ from tests.ui.helpers import (
     shown,
     start,
     start_run_on,
+    start_with_a_run,
     type_in,
 )
 
@@ -190,11 +191,7 @@ async def test_resume_on_a_step_with_a_panel(quiet, step_id):
 async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        enter_all(app, TABLE)
-        with app.session as s:
-            record_step_run(s)
-        await goto(pilot, "task2")
+        await start_with_a_run(pilot, "task2")
         assert not app.screen.active_bindings[
             "f9"
         ].binding.show  # not in the footer where it does nothing
@@ -492,11 +489,7 @@ async def test_the_entry_a_step_lands_in_stays_in_view_when_its_view_comes_later
     and in full view (it came a row lower or out of sight, depending on the machine's load)."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        enter_all(app, TABLE)
-        with app.session as s:
-            record_step_run(s)
-        await goto(pilot, "task12")
+        await start_with_a_run(pilot, "task12")
         await settle(pilot)
         pane = app.screen.query(StepPane).last()
         box = app.focused

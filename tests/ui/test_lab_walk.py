@@ -38,6 +38,7 @@ from tests.ui.helpers import (
     settle,
     standing,
     start,
+    start_with_a_run,
     taken,
 )
 
@@ -340,11 +341,7 @@ async def test_the_zoom_shows_the_rise_with_its_63_percent_level_and_crossing(qu
 async def test_model_check_at_80x24_scrolls_with_the_arrows_and_shows_all_its_text(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        enter_all(app, TABLE)
-        with app.session as s:
-            record_step_run(s)
-        await goto(pilot, "model_check")
+        await start_with_a_run(pilot, "model_check")
         pane = _pane(app)
         nav = app.screen.query_one("#nav")
         at = nav.highlighted

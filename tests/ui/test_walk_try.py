@@ -14,7 +14,15 @@ from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas
 from minseg_tui.ui.widgets.prose import Prose
-from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, settle, start
+from tests.ui.helpers import (
+    TABLE,
+    enter_all,
+    goto,
+    record_step_run,
+    settle,
+    start,
+    start_with_a_run,
+)
 
 
 def _row(app, key: str) -> FieldRow:
@@ -52,11 +60,7 @@ async def test_the_zoomed_rise_draws_u_a_as_the_board_holds_it_rising_at_the_edg
     and rises at t = 0."""
     app = quiet()
     async with app.run_test(size=(120, 40)) as pilot:
-        await start(pilot)
-        enter_all(app, TABLE)
-        with app.session as s:
-            record_step_run(s)
-        await goto(pilot, "task11")
+        await start_with_a_run(pilot, "task11")
         plot = app.screen.query_one(StepPlot)
         labels = [tr.label for tr in plot.traces]
         k = labels.index("u_A [V]")
@@ -92,11 +96,7 @@ async def test_the_model_checks_two_plots_share_their_axes_rows(quiet, size):
     higher and its unit landed beside the other plot's last tick ("1.93 rad/s")."""
     app = quiet()
     async with app.run_test(size=size) as pilot:
-        await start(pilot)
-        enter_all(app, TABLE)
-        with app.session as s:
-            record_step_run(s)
-        await goto(pilot, "model_check")
+        await start_with_a_run(pilot, "model_check")
         for _ in range(2):  # the close-up, then the whole log
             check, residual = (
                 app.screen.query_one(f"#{n}").query_one(Canvas)
