@@ -117,11 +117,11 @@ class StepPane(VerticalScroll):
 
     @on(ViewPanel.Drawn)
     @on(FieldRow.Reflowed)
-    def _view_drawn(self) -> None:
-        """The panel drew its view (or the report's files, after F8), or an entry's hint moved
-        under its box or back: the step may have grown or shrunk above the entries: the entry the step landed in is placed again from the top
-        of the step; an entry the group moved to since stays in view. Either only while the
-        group has not scrolled away from it."""
+    def _keep_entry_in_view(self) -> None:
+        """The step grew or shrank above its entries (the panel drew its view, or the
+        report's files after F8; an entry's hint moved under its box or back). The entry
+        the step landed in is placed again from the top of the step; an entry the group
+        moved to since stays in view. Either only while the group has not scrolled away."""
         row = self._landing
         if row is not None and row.is_attached and row.has_focus_within:
             row.call_after_refresh(row.bring_into_view, True)
