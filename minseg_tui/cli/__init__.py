@@ -32,6 +32,10 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     ),
     "ports": ("minseg_tui.cli.ports", "list serial ports and say which looks like a MinSeg"),
     "sim": ("minseg_tui.cli.sim", "run a virtual MinSeg on a pseudo-terminal"),
+    "board-check": (
+        "minseg_tui.cli.board_check",
+        "does the wheel turn when asked, and does the count follow it?",
+    ),
     "report": ("minseg_tui.cli.report", "write a session's report (Markdown, HTML, CSV)"),
     "tui": ("minseg_tui.cli.tui", "start the lab assistant (the default)"),
 }
