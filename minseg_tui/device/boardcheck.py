@@ -306,7 +306,8 @@ def _reversed(
             "reversed",
             d.counts,
             connector,
-            f"{head} Fix it with minseg-tui board-check --fix (it sends {new}; the board keeps it).",
+            f"{head} Not fixed: run minseg-tui board-check without --no-fix, or send {new} "
+            "(the board keeps it over a reset).",
             wheel_turned=True,
             current=d.current,
         )

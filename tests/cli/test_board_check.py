@@ -79,7 +79,7 @@ def test_a_reversed_encoder_is_only_reported_without_fix(board):
     link = board("fault=encoder-reversed")
     r = check_board(link, fix=False)
     assert not r.ok and r.direction == "reversed" and not r.fixed
-    assert "--fix" in r.text and link.ident.enc_dir == "FWD"
+    assert "Not fixed" in r.text and "DIR,REV,FWD" in r.text and link.ident.enc_dir == "FWD"
 
 
 def test_encoder_off_the_wheel_turned(board):
