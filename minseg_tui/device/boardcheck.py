@@ -56,8 +56,8 @@ class CheckedBoard(Protocol):
         """Every sample received since the last call."""
         ...
 
-    def set_voltage(self, u: float) -> float:
-        """Request ``u`` V; returns the voltage applied."""
+    def set_voltage(self, u: float) -> object:
+        """Request ``u`` V; returns the voltage applied (V), where it says."""
         ...
 
     def stop(self) -> object:
@@ -157,7 +157,8 @@ def drive(
     board.stop()
     before = board.diag()
     take()  # what came before the drive
-    applied = board.set_voltage(u)
+    said = board.set_voltage(u)
+    applied = float(said) if isinstance(said, float | int) else u
     collect = _Collector(board.port, take)
 
     def span(b: SampleBatch) -> float:
@@ -395,3 +396,41 @@ def count_revolution(
     if len(batch) == 0:
         raise DeviceError(f"{board.port}: no samples came from the board while the wheel turned")
     return revolution_text(int(batch.count[-1] - batch.count[0]))
+
+
+WATCH_S = 1.0
+"""How long the motor must be driven without counts before :class:`NoCountWatch` speaks, s."""
+WATCH_U = 1.0
+"""The smallest voltage it watches, V (below it the NXT motor may stick on dry friction)."""
+
+
+class NoCountWatch:
+    """Watches the sample stream for the motor driven and the count standing still: at least
+    ``min_u`` V requested for ``seconds`` of board time while the count moved fewer than
+    :data:`MIN_COUNTS`. :meth:`feed` returns the voltage (V) once per such stretch; a count
+    that moves, or the motor off, starts the watch again."""
+
+    def __init__(self, seconds: float = WATCH_S, min_u: float = WATCH_U) -> None:
+        self.seconds = seconds
+        self.min_u = min_u
+        self._since: float | None = None
+        self._count0 = 0
+        self._fired = False
+
+    def feed(self, batch: SampleBatch) -> float | None:
+        """The voltage (V) when this batch completes a stretch of driven, uncounted samples."""
+        said: float | None = None
+        t, counts, us = batch.t, batch.count, batch.u_req
+        for k in range(len(batch)):
+            u = float(us[k])
+            if not abs(u) >= self.min_u:
+                self._since, self._fired = None, False
+                continue
+            c = int(counts[k])
+            if self._since is None or abs(c - self._count0) >= MIN_COUNTS:
+                self._since, self._count0, self._fired = float(t[k]), c, False
+                continue
+            if not self._fired and float(t[k]) - self._since >= self.seconds:
+                self._fired = True
+                said = u
+        return said

@@ -17,11 +17,13 @@ import minseg_tui.device  # noqa: F401  (registers minseg://)
 from minseg_tui.cli import main
 from minseg_tui.device.boardcheck import (
     CheckResult,
+    NoCountWatch,
     check_board,
     count_revolution,
     revolution_text,
 )
 from minseg_tui.device.factory import open_device
+from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.virtual import forget_board
 
 _names = itertools.count()
@@ -254,3 +256,26 @@ def test_sim_refuses_an_unknown_fault_in_one_line():
         "minseg-tui sim: option fault: expected encoder-off, encoder-reversed, motor-off "
         "(or several, comma-separated), got 'nope'"
     ]
+
+
+def _batch(u, counts, ts=0.025):
+    rows = [
+        (k, round(k * ts * 1e6), c, round(v * 1000), 0, 0.0)
+        for k, (v, c) in enumerate(zip(u, counts, strict=True))
+    ]
+    return SampleBatch.from_rows(rows)
+
+
+def test_the_watch_speaks_once_per_stretch_of_driven_uncounted_samples():
+    w = NoCountWatch(seconds=1.0, min_u=1.0)
+    n = 50  # 1.25 s
+    assert w.feed(_batch([0.0] * 10 + [2.5] * n, [0] * (10 + n))) == 2.5
+    assert w.feed(_batch([2.5] * n, [0] * n)) is None  # said once
+    assert w.feed(_batch([0.0], [0])) is None  # motor off: the watch starts again
+    assert w.feed(_batch([-3.0] * n, [0] * n)) == -3.0
+
+
+def test_the_watch_is_quiet_while_the_count_moves_or_the_voltage_is_small():
+    w = NoCountWatch(seconds=1.0, min_u=1.0)
+    assert w.feed(_batch([2.5] * 100, [k * 5 for k in range(100)])) is None
+    assert w.feed(_batch([0.5] * 100, [0] * 100)) is None
