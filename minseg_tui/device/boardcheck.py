@@ -400,8 +400,8 @@ def count_revolution(
 
 WATCH_S = 1.0
 """How long the motor must be driven without counts before :class:`NoCountWatch` speaks, s."""
-WATCH_U = 1.0
-"""The smallest voltage it watches, V (below it the NXT motor may stick on dry friction)."""
+WATCH_U = 1.5
+"""The smallest voltage it watches, V (below it a real NXT motor may stick on dry friction)."""
 
 
 class NoCountWatch:

@@ -503,7 +503,8 @@ _LAB: tuple[Step, ...] = (
         "Plug the MinSeg in by USB and pick it, or pick the virtual MinSeg to practise. The program "
         "already runs the board's code: there is nothing to build or download. Then press F10: "
         "the board check turns the wheel for half a second and says whether the count follows, "
-        "and what to look at if it does not.",
+        "and what to look at if it does not. Ctrl+P → Count one revolution by hand checks the "
+        "encoder's 720 counts.",
         actions=("connect",),
     ),
     Step(

@@ -35,7 +35,7 @@ from textual.screen import Screen
 from textual.signal import Signal
 from textual.worker import get_current_worker
 
-from minseg_tui.device.boardcheck import CHECK_U, NoCountWatch, check_board
+from minseg_tui.device.boardcheck import CHECK_U, NoCountWatch, check_board, count_revolution
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import PRE_ROLL, StandStill, timeout_message
 from minseg_tui.errors import MinsegError
@@ -53,6 +53,7 @@ from minseg_tui.ui.messages import (
     MeterRead,
     MotorKnown,
     NoCounts,
+    RevolutionCounted,
     RunArmed,
     RunRequested,
     SamplesArrived,
@@ -61,7 +62,11 @@ from minseg_tui.ui.messages import (
     WheelStood,
 )
 from minseg_tui.ui.recording import ActiveRun, RunProgress
-from minseg_tui.ui.screens.boardcheck import BoardCheckScreen, WheelQuestionScreen
+from minseg_tui.ui.screens.boardcheck import (
+    BoardCheckScreen,
+    RevolutionScreen,
+    WheelQuestionScreen,
+)
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.quit import QuitScreen, SaveElsewhereScreen
@@ -145,6 +150,9 @@ METER_PERIOD = 0.25
 
 SAVE_RETRY = 3.0
 """While the session cannot be saved, it is tried again this often, s."""
+
+REVOLUTION_TIMEOUT = 300.0
+"""Longest the hand check counts without an Enter, s."""
 
 WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error", "silent"})
 """Link events that end the wait for the wheel to stand before a run (no run starts)."""
@@ -449,23 +457,43 @@ class LabApp(App[None]):
             )
 
     # -- the board check ---------------------------------------------------------------------
-    def action_board_check(self) -> None:
-        """F10: drive the motor briefly and say whether the count follows (in a worker)."""
+    def _check_device(self) -> Device | None:
+        """The device, if a board check may start now (else None, and why is said)."""
         device = self._device
         if device is None:
             self.notify(
                 "no device: the board check needs the board or the virtual MinSeg",
                 severity="warning",
             )
-            return
+            return None
         if self._tap is not None:
             self.notify("the board check is running", severity="information")
-            return
+            return None
         if self.recording is not None or self._stand is not None:
             self.notify("a run is in progress: F2 stops it, then F10 checks", severity="warning")
-            return
+            return None
         if isinstance(self.screen, BoardCheckScreen):
             self.screen.dismiss(None)
+        return device
+
+    def _taker(self, tap: queue.Queue[SampleBatch]) -> Callable[[], SampleBatch]:
+        """What the check reads samples with: everything the stream put in ``tap`` so far."""
+
+        def take() -> SampleBatch:
+            got: list[SampleBatch] = []
+            while True:
+                try:
+                    got.append(tap.get_nowait())
+                except queue.Empty:
+                    return SampleBatch.concat(got)
+
+        return take
+
+    def action_board_check(self) -> None:
+        """F10: drive the motor briefly and say whether the count follows (in a worker)."""
+        device = self._check_device()
+        if device is None:
+            return
         self._tap = queue.Queue()
         self.requested = None
         self.notify(
@@ -476,15 +504,7 @@ class LabApp(App[None]):
     @work(thread=True, exclusive=True, group="check", name="board check")
     def _board_check(self, device: Device, tap: queue.Queue[SampleBatch], task5: bool) -> None:
         """Worker: the board check on the samples the stream hands over."""
-
-        def take() -> SampleBatch:
-            got: list[SampleBatch] = []
-            while True:
-                try:
-                    got.append(tap.get_nowait())
-                except queue.Empty:
-                    return SampleBatch.concat(got)
-
+        take = self._taker(tap)
         try:
             result = check_board(device, samples=take, task5=task5, wheel_turned=self._ask_turned)
         except MinsegError as exc:
@@ -516,6 +536,54 @@ class LabApp(App[None]):
             self.notify(event.error, title="board check", severity="error", timeout=10)
             return
         self.push_screen(BoardCheckScreen(event.result.ok, event.result.text))
+
+    def action_count_revolution(self) -> None:
+        """Palette: count one revolution turned by hand (720 expected)."""
+        device = self._check_device()
+        if device is None:
+            return
+        self._tap = queue.Queue()
+        self.requested = None
+        done, cancelled = threading.Event(), threading.Event()
+        self.push_screen(RevolutionScreen(done, cancelled))
+        self._revolution(device, self._tap, done, cancelled)
+
+    @work(thread=True, exclusive=True, group="check", name="revolution")
+    def _revolution(
+        self,
+        device: Device,
+        tap: queue.Queue[SampleBatch],
+        done: threading.Event,
+        cancelled: threading.Event,
+    ) -> None:
+        """Worker: count until the group says the wheel turned once (or closes the dialog)."""
+        stop = self._stop
+
+        def finished() -> bool:
+            return done.is_set() or stop.is_set()
+
+        try:
+            result = count_revolution(
+                device, finished, samples=self._taker(tap), timeout=REVOLUTION_TIMEOUT
+            )
+        except MinsegError as exc:
+            self.post_message(RevolutionCounted(None, str(exc)))
+            return
+        self.post_message(RevolutionCounted(None if cancelled.is_set() else result))
+
+    @on(RevolutionCounted)
+    def _revolution_counted(self, event: RevolutionCounted) -> None:
+        self._tap = None
+        self._watch = NoCountWatch()
+        if isinstance(self.screen, RevolutionScreen):
+            self.screen.dismiss(None)
+        if event.result is None:
+            if event.error:
+                self.notify(event.error, title="counts per revolution", severity="error")
+            return
+        self.push_screen(
+            BoardCheckScreen(event.result.ok, event.result.text, "Counts per revolution")
+        )
 
     @on(NoCounts)
     def _no_counts(self, event: NoCounts) -> None:
@@ -939,6 +1007,11 @@ class LabApp(App[None]):
             "Board check",
             "Does the wheel turn when asked, and does the count follow it? (F10)",
             self.action_board_check,
+        )
+        yield SystemCommand(
+            "Count one revolution by hand",
+            "Turn the wheel once by hand: 720 counts expected",
+            self.action_count_revolution,
         )
         yield SystemCommand(
             "Export report",

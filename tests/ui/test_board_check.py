@@ -10,7 +10,11 @@ from __future__ import annotations
 from minseg_tui.device.factory import open_device
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
-from minseg_tui.ui.screens.boardcheck import BoardCheckScreen, WheelQuestionScreen
+from minseg_tui.ui.screens.boardcheck import (
+    BoardCheckScreen,
+    RevolutionScreen,
+    WheelQuestionScreen,
+)
 from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.conftest import DATE, board_url, real_app
 from tests.ui.helpers import Heard, goto, settle, start
@@ -163,3 +167,33 @@ async def test_on_a_board_without_a_meter_the_group_is_asked(tmp_path):
         await heard.until(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
         text = _check_text(app)
         assert "did not turn" in text and "power switch" in text and "encoder cable" not in text
+
+
+async def test_one_revolution_by_hand_from_the_palette(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=2))
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task1")
+        await pilot.press("ctrl+p")
+        await pilot.press(*"Count one revolution")
+        await pilot.press("enter")
+        await heard.until(pilot, lambda: isinstance(app.screen, RevolutionScreen))
+        _t, count, _u = app.live.snapshot()
+        before = int(count[-1])
+        app._device.board.turn_by_hand(1.0)  # a hand on the virtual wheel
+        await heard.until(pilot, lambda: int(app.live.snapshot()[1][-1]) != before)
+        await pilot.press("enter")
+        await heard.until(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+        assert app.screen.ok and "720 counts for one revolution" in _check_text(app)
+
+
+async def test_the_hand_check_can_be_cancelled(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=2))
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task1")
+        app.action_count_revolution()
+        await heard.until(pilot, lambda: isinstance(app.screen, RevolutionScreen))
+        await pilot.press("escape")
+        await settle(pilot, lambda: app._tap is None)
+        assert not isinstance(app.screen, BoardCheckScreen | RevolutionScreen)

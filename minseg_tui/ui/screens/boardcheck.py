@@ -1,6 +1,9 @@
-"""The board check on screen: the question it may ask (did the wheel turn?) and its answer."""
+"""The board check on screen: the question it may ask (did the wheel turn?), its answer, and
+the hand check (turn the wheel once, then Enter)."""
 
 from __future__ import annotations
+
+import threading
 
 from textual import on
 from textual.app import ComposeResult
@@ -55,17 +58,52 @@ class BoardCheckScreen(ModalScreen[None]):
         Binding("enter", "close", "Close"),
     ]
 
-    def __init__(self, ok: bool, text: str) -> None:
+    def __init__(self, ok: bool, text: str, what: str = "Board check") -> None:
         super().__init__()
         self.ok = ok
         self.text = text
+        self.what = what
 
     def compose(self) -> ComposeResult:
-        title = "Board check: all well" if self.ok else "Board check: something is wrong"
+        title = f"{self.what}: " + ("all well" if self.ok else "something is wrong")
         with Vertical(id="board-check", classes="dialog"):
             yield Prose(title, classes="title")
             yield Prose(self.text, id="check-text", classes="para")
             yield Prose("Enter or Escape closes; F10 checks again.", classes="para")
 
     def action_close(self) -> None:
+        self.dismiss(None)
+
+
+class RevolutionScreen(ModalScreen[None]):
+    """The hand check: turn the wheel once by hand, then Enter (sets ``done``); Escape sets
+    ``cancelled`` and ``done`` and closes."""
+
+    BINDINGS = [
+        Binding("enter", "turned", "Turned once"),
+        Binding("escape", "cancel", "Cancel"),
+    ]
+
+    def __init__(self, done: threading.Event, cancelled: threading.Event) -> None:
+        super().__init__()
+        self.done = done
+        self.cancelled = cancelled
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="revolution", classes="dialog"):
+            yield Prose("Counts per revolution", classes="title")
+            yield Prose(
+                "Mark the wheel (a piece of tape), turn it exactly once by hand, either way, "
+                "then press Enter. The motor is off. 720 counts are expected.",
+                id="revolution-text",
+                classes="para",
+            )
+
+    def action_turned(self) -> None:
+        self.query_one("#revolution-text", Prose).update("Counting the last samples…")
+        self.done.set()
+
+    def action_cancel(self) -> None:
+        self.cancelled.set()
+        self.done.set()
         self.dismiss(None)
