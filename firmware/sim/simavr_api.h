@@ -51,6 +51,8 @@ void avr_raise_irq(avr_irq_t *irq, uint32_t value);
 int avr_ioctl(avr_t *avr, uint32_t ctl, void *io_param);
 void avr_cycle_timer_register_usec(avr_t *avr, uint32_t when, avr_cycle_timer_t timer,
                                    void *param);
+void avr_cycle_timer_register(avr_t *avr, avr_cycle_count_t when, avr_cycle_timer_t timer,
+                              void *param);
 avr_irq_t *avr_iomem_getirq(avr_t *avr, uint16_t addr, const char *name, int index);
 void avr_register_vector(avr_t *avr, avr_int_vector_t *vector);
 int avr_raise_interrupt(avr_t *avr, avr_int_vector_t *vector);
