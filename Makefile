@@ -43,7 +43,7 @@ ifeq ($(AVR),0)
 	@echo "AVR=0: firmware cross-build for the ATmega2560 not run"
 else
 	@sh firmware/ensure-toolchain.sh
-	$(MAKE) -C firmware all all-profiles sim-test-all
+	$(MAKE) -C firmware all-profiles sim-test-all
 endif
 
 test: $(STAMP) lint firmware-host-test firmware pytest
