@@ -55,4 +55,5 @@ void minseg_loop() {
   while (budget-- > 0 && (c = hal_uart_getc()) >= 0)
     controller.feed(static_cast<char>(c), hal_micros());
   controller.poll(hal_micros());
+  hal_poll();
 }

@@ -337,10 +337,14 @@ static void bridge_init() {
 
 // -------------------------------------------------------------- EEPROM
 // The direction (DIR) in one byte: 0xA0 | bits, so an erased EEPROM (0xFF)
-// reads as FWD,FWD. eeprom_update_byte writes only when the byte changes.
+// reads as FWD,FWD. The write is left to hal_poll(): it starts only once the
+// EEPROM is idle (a write takes 3.4 ms), so the loop never waits for it, and
+// eeprom_update_byte writes only when the byte changes.
 
 static uint8_t* const kDirAddress = reinterpret_cast<uint8_t*>(0);
 static const uint8_t kDirMagic = 0xA0;
+static bool dir_pending;
+static uint8_t dir_to_save;
 
 uint8_t hal_load_direction() {
   uint8_t v = eeprom_read_byte(kDirAddress);
@@ -348,7 +352,15 @@ uint8_t hal_load_direction() {
 }
 
 void hal_save_direction(uint8_t dir) {
-  eeprom_update_byte(kDirAddress, static_cast<uint8_t>(kDirMagic | (dir & 0x03u)));
+  dir_to_save = static_cast<uint8_t>(kDirMagic | (dir & 0x03u));
+  dir_pending = true;
+}
+
+void hal_poll() {
+  if (dir_pending && eeprom_is_ready()) {
+    dir_pending = false;
+    eeprom_update_byte(kDirAddress, dir_to_save);
+  }
 }
 
 void hal_init() {

@@ -21,6 +21,7 @@ void hal_set_direction(bool encoder_reversed, bool motor_reversed);
 // Compare values for bridge input 1 and 2 of every connector, 0 = low, 255 = high.
 void hal_bridge(uint8_t a, uint8_t b);
 uint8_t hal_load_direction();           // from EEPROM, minseg::kDir* bits
-void hal_save_direction(uint8_t dir);   // to EEPROM, written only when it changed
+void hal_save_direction(uint8_t dir);   // to EEPROM (by hal_poll), only when it changed
+void hal_poll();                        // main loop: starts a pending EEPROM write
 
 #endif
