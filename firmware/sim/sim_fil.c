@@ -266,7 +266,8 @@ int main(int argc, char **argv) {
     command(dirs[k]);
     double b_this, b_other;
     double w = steady_speed(3000, &b_this, &b_other);
-    int ok = (w > 0 ? 1 : -1) == sign_want[k] && fabs(fabs(w) - MODEL_K * 3.0) < 0.02 * MODEL_K * 3.0;
+    double w_model = MODEL_K * 3.0;
+    int ok = (w > 0 ? 1 : -1) == sign_want[k] && fabs(fabs(w) - w_model) < 0.02 * w_model;
     dir_ok = dir_ok && ok;
     snprintf(what, sizeof what, "%s, V,3000: omega_ss %.3f rad/s (sign %s expected)", dirs[k], w,
              sign_want[k] > 0 ? "+" : "-");

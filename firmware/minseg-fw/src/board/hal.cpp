@@ -186,15 +186,30 @@ static inline void encoder_edge(uint8_t i, uint8_t s) {
 #undef MINSEG_BODY
 
 // Interrupt set-up per unit: any edge for INTn, pin change for PCINTn.
-static inline void irq_EXTINT2() { EICRA = static_cast<uint8_t>((EICRA & ~0x30u) | _BV(ISC20)); EIFR = _BV(INTF2); EIMSK |= _BV(INT2); }
-static inline void irq_EXTINT3() { EICRA = static_cast<uint8_t>((EICRA & ~0xC0u) | _BV(ISC30)); EIFR = _BV(INTF3); EIMSK |= _BV(INT3); }
-static inline void irq_EXTINT4() { EICRB = static_cast<uint8_t>((EICRB & ~0x03u) | _BV(ISC40)); EIFR = _BV(INTF4); EIMSK |= _BV(INT4); }
-static inline void irq_EXTINT5() { EICRB = static_cast<uint8_t>((EICRB & ~0x0Cu) | _BV(ISC50)); EIFR = _BV(INTF5); EIMSK |= _BV(INT5); }
-static inline void irq_EXTINT6() { EICRB = static_cast<uint8_t>((EICRB & ~0x30u) | _BV(ISC60)); EIFR = _BV(INTF6); EIMSK |= _BV(INT6); }
-static inline void irq_EXTINT7() { EICRB = static_cast<uint8_t>((EICRB & ~0xC0u) | _BV(ISC70)); EIFR = _BV(INTF7); EIMSK |= _BV(INT7); }
+#define MINSEG_EXTINT(N, REG, SHIFT)                                                  \
+  static inline void irq_EXTINT##N() {                                                \
+    REG = static_cast<uint8_t>((REG & ~(3u << SHIFT)) | _BV(ISC##N##0)); /* any edge */ \
+    EIFR = _BV(INTF##N);                                                              \
+    EIMSK |= _BV(INT##N);                                                             \
+  }
+MINSEG_EXTINT(2, EICRA, 4)
+MINSEG_EXTINT(3, EICRA, 6)
+MINSEG_EXTINT(4, EICRB, 0)
+MINSEG_EXTINT(5, EICRB, 2)
+MINSEG_EXTINT(6, EICRB, 4)
+MINSEG_EXTINT(7, EICRB, 6)
+#undef MINSEG_EXTINT
 // PCINT9 is PJ0 (PCINT8 on the same vector is RXD0: left out); PCINT16 is PK0.
-static inline void irq_PCINT_9() { PCMSK1 |= _BV(PCINT9); PCIFR = _BV(PCIF1); PCICR |= _BV(PCIE1); }
-static inline void irq_PCINT_16() { PCMSK2 |= _BV(PCINT16); PCIFR = _BV(PCIF2); PCICR |= _BV(PCIE2); }
+static inline void irq_PCINT_9() {
+  PCMSK1 |= _BV(PCINT9);
+  PCIFR = _BV(PCIF1);
+  PCICR |= _BV(PCIE1);
+}
+static inline void irq_PCINT_16() {
+  PCMSK2 |= _BV(PCINT16);
+  PCIFR = _BV(PCIF2);
+  PCICR |= _BV(PCIE2);
+}
 
 static void encoder_init() {
 #define MINSEG_INPUT(pin)                                                              \
