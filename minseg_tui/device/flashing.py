@@ -1,0 +1,237 @@
+"""Writing the lab firmware to a MinSeg with avrdude, from the .hex files this package ships.
+
+The package carries one Intel HEX per board profile (``minseg_tui/device/hex/<profile>.hex``,
+built by ``make -C firmware all-profiles``), so a lab PC needs avrdude but no compiler.
+The Mega 2560's bootloader speaks STK500v2 ("wiring" in avrdude) at 115200 baud; ``-D``
+keeps avrdude from erasing the chip first (the bootloader erases page by page), and
+``-U flash:w:...`` writes the application only: the bootloader is never touched, so a
+board whose write was cut short can always be flashed again.
+
+Maintainers: ``python -m minseg_tui.device.flashing check firmware/build`` compares each
+profile's build with the shipped .hex (the memory image, :mod:`hexfile`), ``refresh``
+copies the build over the shipped files (``make firmware-hex`` runs both steps).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import shutil
+import subprocess
+import sys
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+from minseg_tui.device import hexfile
+
+PROFILES = ("MinSegMega", "M2V3", "M1V4")
+"""The board profiles the firmware is built for (firmware/Makefile's PROFILES)."""
+
+DEFAULT_PROFILE = "MinSegMega"
+
+MCU = "atmega2560"
+PROGRAMMER = "wiring"
+"""avrdude's name for the Mega 2560 bootloader (STK500 version 2 with the Wiring reset)."""
+BOOTLOADER_BAUD = 115200
+
+INSTALL_AVRDUDE = (
+    "install avrdude: Debian/Ubuntu `sudo apt-get install avrdude`, Fedora `sudo dnf install "
+    "avrdude`, macOS `brew install avrdude`, Windows: avrdude.exe from "
+    "https://github.com/avrdudes/avrdude/releases on the PATH"
+)
+
+RECOVER = (
+    "flash again with the same command (the bootloader is not touched by a flash write, "
+    "so the board can always be written again; unplug and plug it first if it hangs)"
+)
+
+AVRDUDE_TIMEOUT_S = 300.0
+"""Longest an avrdude run may take, s (a write of 9 kB takes about 2 s; a board that does
+not answer makes avrdude give up by itself within about a minute)."""
+
+
+def profile_named(name: str) -> str:
+    """The profile spelled as the firmware spells it (any case accepted); ValueError with
+    the known names otherwise."""
+    for profile in PROFILES:
+        if profile.lower() == name.strip().lower():
+            return profile
+    raise ValueError(f"expected a board profile: {', '.join(PROFILES)}; got {name!r}")
+
+
+def _hex_dir() -> resources.abc.Traversable:
+    return resources.files("minseg_tui.device").joinpath("hex")
+
+
+def shipped_hex_text(profile: str) -> str:
+    """The shipped Intel HEX of a profile, as text (FileNotFoundError if it is missing)."""
+    return _hex_dir().joinpath(f"{profile}.hex").read_text(encoding="ascii")
+
+
+@contextlib.contextmanager
+def shipped_hex(profile: str) -> Iterator[Path]:
+    """A file system path of the shipped .hex of ``profile`` for as long as the context
+    lasts (a temporary copy when the package is not unpacked on disk)."""
+    with resources.as_file(_hex_dir().joinpath(f"{profile}.hex")) as path:
+        yield Path(path)
+
+
+def find_avrdude() -> str | None:
+    """The avrdude on the PATH, or None."""
+    return shutil.which("avrdude")
+
+
+def avrdude_command(avrdude: str, port: str, hex_path: str) -> list[str]:
+    """The avrdude command line that writes ``hex_path`` to the Mega 2560 on ``port``.
+
+    The format letter ``i`` (Intel HEX) ends the -U argument, so a Windows path with its
+    drive letter (``C:\\...``) is read whole.
+    """
+    return [
+        avrdude,
+        "-p",
+        MCU,
+        "-c",
+        PROGRAMMER,
+        "-P",
+        port,
+        "-b",
+        str(BOOTLOADER_BAUD),
+        "-D",
+        "-U",
+        f"flash:w:{hex_path}:i",
+    ]
+
+
+@dataclass(frozen=True)
+class AvrdudeRun:
+    """What an avrdude run did: its exit code and everything it printed."""
+
+    returncode: int
+    output: str
+
+    @property
+    def ok(self) -> bool:
+        """True when avrdude wrote and verified the flash."""
+        return self.returncode == 0
+
+    @property
+    def began_writing(self) -> bool:
+        """True when avrdude got as far as writing the flash (a failure from there on may
+        leave the board half-written)."""
+        text = self.output.lower()
+        return "writing" in text or "bytes of flash written" in text
+
+    def reason(self) -> str:
+        """avrdude's own words for what went wrong: its most telling line, shortened."""
+        lines = [ln.strip() for ln in self.output.splitlines() if ln.strip()]
+        keys = (
+            "error",
+            "can't open",
+            "cannot open",
+            "not in sync",
+            "timeout",
+            "mismatch",
+            "not respond",
+            "permission",
+        )
+        telling = [ln for ln in lines if any(k in ln.lower() for k in keys)]
+        pick = (telling or lines or [f"exit code {self.returncode}"])[0]
+        return pick if len(pick) <= 160 else pick[:157] + "..."
+
+
+def run_avrdude(command: Sequence[str], timeout_s: float = AVRDUDE_TIMEOUT_S) -> AvrdudeRun:
+    """Run avrdude, its output collected (stdout and stderr together). A run that outlives
+    ``timeout_s`` is killed and reported with exit code -1 and what it had printed."""
+    try:
+        proc = subprocess.run(
+            list(command),
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            errors="replace",
+            timeout=timeout_s,
+            check=False,
+        )
+    except subprocess.TimeoutExpired as exc:
+        out = exc.output or ""
+        text = out if isinstance(out, str) else out.decode("ascii", "replace")
+        return AvrdudeRun(-1, f"{text}\navrdude did not finish within {timeout_s:g} s: timeout")
+    return AvrdudeRun(proc.returncode, proc.stdout)
+
+
+# -- maintainers: the shipped .hex against a build ---------------------------------------
+def _built(build: Path, profile: str) -> Path:
+    return build / profile / "minseg-fw.hex"
+
+
+def check(build: Path) -> list[str]:
+    """One line per profile whose build differs from the shipped .hex (empty: all same)."""
+    problems = []
+    for profile in PROFILES:
+        built_path = _built(build, profile)
+        try:
+            built = hexfile.parse(built_path.read_text(encoding="ascii"), str(built_path))
+        except (OSError, ValueError) as exc:
+            problems.append(f"{profile}: cannot read the build ({exc})")
+            continue
+        try:
+            shipped = hexfile.parse(shipped_hex_text(profile), f"shipped {profile}.hex")
+        except (OSError, ValueError) as exc:
+            problems.append(f"{profile}: cannot read the shipped .hex ({exc})")
+            continue
+        at = built.first_difference(shipped)
+        if at is not None:
+            problems.append(
+                f"{profile}: the shipped minseg_tui/device/hex/{profile}.hex ({shipped.size} B) "
+                f"is not what the firmware builds to now ({built_path}, {built.size} B; first "
+                f"difference at 0x{at:04X})"
+            )
+    return problems
+
+
+def refresh(build: Path, into: Path) -> list[str]:
+    """Copy each profile's built .hex into ``into`` as <profile>.hex; one line per file."""
+    done = []
+    for profile in PROFILES:
+        src = _built(build, profile)
+        image = hexfile.parse(src.read_text(encoding="ascii"), str(src))
+        shutil.copyfile(src, into / f"{profile}.hex")
+        done.append(f"{profile}: {image.size} B from {src}")
+    return done
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """``check BUILD`` (exit 1 with a line per difference) or ``refresh BUILD``."""
+    args = list(sys.argv[1:] if argv is None else argv)
+    if len(args) != 2 or args[0] not in ("check", "refresh"):
+        print("usage: python -m minseg_tui.device.flashing check|refresh BUILD", file=sys.stderr)
+        return 2
+    build = Path(args[1])
+    if args[0] == "refresh":
+        into = Path(__file__).resolve().parent / "hex"
+        try:
+            for line in refresh(build, into):
+                print(f"shipped hex refreshed: {line}")
+        except (OSError, ValueError) as exc:
+            print(f"error: cannot refresh the shipped hex: {exc}", file=sys.stderr)
+            return 1
+        return 0
+    problems = check(build)
+    for line in problems:
+        print(f"error: {line}", file=sys.stderr)
+    if problems:
+        print(
+            "error: the shipped .hex files are stale: run `make firmware-hex` and commit "
+            "minseg_tui/device/hex/",
+            file=sys.stderr,
+        )
+        return 1
+    print(f"shipped hex: {', '.join(PROFILES)} equal to the build in {build}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
