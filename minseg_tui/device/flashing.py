@@ -46,9 +46,11 @@ RECOVER = (
     "so the board can always be written again; unplug and plug it first if it hangs)"
 )
 
-AVRDUDE_TIMEOUT_S = 300.0
-"""Longest an avrdude run may take, s (a write of 9 kB takes about 2 s; a board that does
-not answer makes avrdude give up by itself within about a minute)."""
+AVRDUDE_TIMEOUT_S = 120.0
+"""Longest an avrdude run may take, s: a write of 9 kB takes a few seconds, and avrdude 7.1
+gives up on a port where no bootloader answers after about 40 s (measured on a pty); on a
+port that cannot be opened it can loop for good (seen with avrdude 7.1 and -c wiring), which
+is why the command checks the port first."""
 
 
 def profile_named(name: str) -> str:
@@ -126,19 +128,29 @@ class AvrdudeRun:
     def reason(self) -> str:
         """avrdude's own words for what went wrong: its most telling line, shortened."""
         lines = [ln.strip() for ln in self.output.splitlines() if ln.strip()]
-        keys = (
-            "error",
-            "can't open",
-            "cannot open",
-            "not in sync",
-            "timeout",
-            "mismatch",
-            "not respond",
-            "permission",
-        )
-        telling = [ln for ln in lines if any(k in ln.lower() for k in keys)]
-        pick = (telling or lines or [f"exit code {self.returncode}"])[0]
-        return pick if len(pick) <= 160 else pick[:157] + "..."
+        for key in _TELLING:
+            found = next((ln for ln in lines if key in ln.lower()), None)
+            if found is not None:
+                return found if len(found) <= 160 else found[:157] + "..."
+        return lines[-1] if lines else f"exit code {self.returncode}"
+
+
+_TELLING = (
+    "timeout communicating",
+    "not in sync",
+    "verification error",
+    "mismatch",
+    "not responding",
+    "permission denied",
+    "cannot open port",
+    "can't open",
+    "unable to open",
+    "did not finish",
+    "error",
+    "timeout",
+)
+"""Words of avrdude's lines, the most telling first (a pty's ioctl complaints come before
+the timeout that matters, and say less)."""
 
 
 def run_avrdude(command: Sequence[str], timeout_s: float = AVRDUDE_TIMEOUT_S) -> AvrdudeRun:
