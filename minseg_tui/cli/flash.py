@@ -38,7 +38,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--profile",
         metavar="NAME",
-        default=flashing.DEFAULT_PROFILE,
         help=f"board profile: {', '.join(flashing.PROFILES)} (default {flashing.DEFAULT_PROFILE})",
     )
     parser.add_argument(
@@ -54,7 +53,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def _profile(name: str) -> str:
+def _profile(name: str | None) -> str:
+    if name is None:
+        return flashing.DEFAULT_PROFILE
     try:
         return flashing.profile_named(name)
     except ValueError as exc:
@@ -117,8 +118,9 @@ def _take_port(port: str) -> FileLock | None:
     return lock
 
 
-def _write(avrdude: str, port: str, profile: str, dry_run: bool) -> bool:
-    """Run avrdude (or print its command); True when it wrote."""
+def _write(avrdude: str, port: str, profile: str, dry_run: bool, chosen: bool) -> bool:
+    """Run avrdude (or print its command); True when it wrote. ``chosen``: the profile was
+    given (else the default is named as such)."""
     with flashing.shipped_hex(profile) as hex_path:
         try:
             size = hexfile.parse(hex_path.read_text(encoding="ascii"), str(hex_path)).size
@@ -128,11 +130,15 @@ def _write(avrdude: str, port: str, profile: str, dry_run: bool) -> bool:
                 "reinstall minseg-tui; nothing was written"
             ) from None
         command = flashing.avrdude_command(avrdude, port, str(hex_path))
+        what = f"{profile} ({size} B of flash)"
+        if not chosen:
+            others = " or ".join(p for p in flashing.PROFILES if p != profile)
+            print(f"profile {profile}, the default (--profile {others} for those boards)")
         if dry_run:
-            print(f"would write {profile} ({size} B of flash) to {port} with:")
+            print(f"would write {what} to {port} with:")
             print(shlex.join(command))
             return False
-        print(f"writing {profile} ({size} B of flash) to {port} with avrdude ...", flush=True)
+        print(f"writing {what} to {port} with avrdude ...", flush=True)
         lock = _take_port(port)
         try:
             result = flashing.run_avrdude(command)
@@ -185,7 +191,7 @@ def run(args: argparse.Namespace) -> int:
     profile = _profile(args.profile)
     avrdude = _avrdude()
     port = _port(args.port, args.force)
-    if not _write(avrdude, port, profile, args.dry_run):
+    if not _write(avrdude, port, profile, args.dry_run, args.profile is not None):
         return 0
     ident = _confirm(port, profile)
     print(

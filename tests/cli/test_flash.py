@@ -12,6 +12,7 @@ import dataclasses
 import json
 import os
 import signal
+import subprocess
 import sys
 import textwrap
 from pathlib import Path
@@ -185,13 +186,14 @@ def test_the_port_is_found_by_discovery_when_not_given(board, avrdude, capsys, m
     monkeypatch.setattr(discovery, "list_ports", lambda: [clone])
     assert flash() == 0
     assert json.loads(avrdude.read_text())["profile"] == "MinSegMega"  # the default profile
-    assert (
-        capsys.readouterr()
-        .out.strip()
-        .endswith(
-            f"profile MinSegMega: the lab firmware runs (next: minseg-tui board-check --port "
-            f"{board.path})"
-        )
+    out = capsys.readouterr().out
+    assert out.startswith(
+        "profile MinSegMega, the default (--profile M2V3 or M1V4 for those boards)\n"
+        "writing MinSegMega ("
+    )
+    assert out.endswith(
+        f"profile MinSegMega: the lab firmware runs (next: minseg-tui board-check --port "
+        f"{board.path})\n"
     )
 
 
@@ -332,3 +334,16 @@ def test_ctrl_c_while_writing_says_the_board_may_be_half_written(
     err = capsys.readouterr().err
     assert err.startswith(f"minseg-tui flash: interrupted while avrdude wrote {board.path}: ")
     assert "may be half-written" in err and "flash again" in err and err.count("\n") == 1
+
+
+def test_bad_input_from_the_installed_command_is_one_line():
+    """The console script itself, as a group runs it: one line, exit 2, no traceback."""
+    exe = Path(sys.executable).with_name("minseg-tui")
+    proc = subprocess.run(
+        [str(exe), "flash", "--profile", "Mega"], capture_output=True, text=True, timeout=60
+    )
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert proc.stderr == (
+        "minseg-tui flash: --profile: expected a board profile: MinSegMega, M2V3, M1V4; "
+        "got 'Mega'\n"
+    )
