@@ -9,12 +9,14 @@ board whose write was cut short can always be flashed again.
 
 Maintainers: ``python -m minseg_tui.device.flashing check firmware/build`` compares each
 profile's build with the shipped .hex (the memory image, :mod:`hexfile`), ``refresh``
-copies the build over the shipped files (``make firmware-hex`` runs both steps).
+copies the build over the shipped files and writes the build's flash and RAM use (avr-size)
+into firmware/README.md's memory table (``make firmware-hex`` builds, then refreshes).
 """
 
 from __future__ import annotations
 
 import contextlib
+import re
 import shutil
 import subprocess
 import sys
@@ -215,6 +217,41 @@ def refresh(build: Path, into: Path) -> list[str]:
     return done
 
 
+_SIZE = re.compile(r"^(Program|Data):\s+(\d+) bytes \(([\d.]+)% Full\)", re.M)
+
+
+def memory_use(elf: Path) -> tuple[str, str]:
+    """(flash, RAM) of a built ELF as firmware/README.md's table writes them ("9102 B
+    (3.5 %)", "827 B (10.1 %)"), from ``avr-size -C``; OSError/ValueError if it cannot."""
+    out = subprocess.run(
+        ["avr-size", "-C", f"--mcu={MCU}", str(elf)],
+        capture_output=True,
+        text=True,
+        check=True,
+        timeout=60,
+    ).stdout
+    found = {m.group(1): f"{m.group(2)} B ({m.group(3)} %)" for m in _SIZE.finditer(out)}
+    if set(found) != {"Program", "Data"}:
+        raise ValueError(f"avr-size printed no Program/Data lines for {elf}")
+    return found["Program"], found["Data"]
+
+
+def refresh_table(build: Path, readme: Path) -> list[str]:
+    """Rewrite the rows of the profiles in ``readme``'s memory table (``| <profile> | flash
+    | RAM |``) with what avr-size says of the build; one line per row changed."""
+    text = readme.read_text(encoding="utf-8")
+    done = []
+    for profile in PROFILES:
+        flash, ram = memory_use(build / profile / "minseg-fw.elf")
+        row = f"| {profile} | {flash} | {ram} |"
+        text, n = re.subn(rf"^\| {profile} \| [^|\n]* \| [^|\n]* \|$", row, text, flags=re.M)
+        if n != 1:
+            raise ValueError(f"{readme}: expected one memory table row for {profile}, found {n}")
+        done.append(row)
+    readme.write_text(text, encoding="utf-8")
+    return done
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """``check BUILD`` (exit 1 with a line per difference) or ``refresh BUILD``."""
     args = list(sys.argv[1:] if argv is None else argv)
@@ -227,7 +264,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         try:
             for line in refresh(build, into):
                 print(f"shipped hex refreshed: {line}")
-        except (OSError, ValueError) as exc:
+            readme = build.parent / "README.md"
+            for line in refresh_table(build, readme):
+                print(f"{readme}: {line}")
+        except (OSError, ValueError, subprocess.SubprocessError) as exc:
             print(f"error: cannot refresh the shipped hex: {exc}", file=sys.stderr)
             return 1
         return 0

@@ -4,6 +4,9 @@ the installed package finds them, and the maintainers' check that they equal a r
 
 from __future__ import annotations
 
+import re
+from pathlib import Path
+
 import pytest
 
 from minseg_tui.device import flashing, hexfile
@@ -76,3 +79,14 @@ def test_intel_hex_that_is_not():
     ]:
         with pytest.raises(ValueError, match=why):
             hexfile.parse("\n".join(lines), "x.hex")
+
+
+def test_the_memory_table_says_what_is_shipped():
+    """firmware/README.md's flash column is the size of each shipped image (avr-size's
+    Program is the bytes the .hex writes): `make firmware-hex` rewrites the rows, so a
+    table left behind by a hand-made refresh fails here."""
+    readme = (Path(__file__).resolve().parents[2] / "firmware" / "README.md").read_text()
+    for profile in flashing.PROFILES:
+        size = hexfile.parse(flashing.shipped_hex_text(profile)).size
+        (row,) = re.findall(rf"^\| {profile} \| (\d+) B \(", readme, flags=re.M)
+        assert int(row) == size, profile
