@@ -155,9 +155,12 @@ _TELLING = (
 the timeout that matters, and say less)."""
 
 
-def run_avrdude(command: Sequence[str], timeout_s: float = AVRDUDE_TIMEOUT_S) -> AvrdudeRun:
+def run_avrdude(command: Sequence[str], timeout_s: float | None = None) -> AvrdudeRun:
     """Run avrdude, its output collected (stdout and stderr together). A run that outlives
-    ``timeout_s`` is killed and reported with exit code -1 and what it had printed."""
+    ``timeout_s`` (default :data:`AVRDUDE_TIMEOUT_S`) is killed and reported with exit code
+    -1 and what it had printed."""
+    if timeout_s is None:
+        timeout_s = AVRDUDE_TIMEOUT_S
     try:
         proc = subprocess.run(
             list(command),

@@ -23,6 +23,7 @@ from serial.tools.list_ports_common import ListPortInfo
 from minseg_tui.cli import main
 from minseg_tui.device import discovery, flashing, hexfile
 from minseg_tui.device import protocol as P
+from minseg_tui.device.factory import open_device
 from minseg_tui.device.link import Link
 from minseg_tui.device.port import close, open_exclusive
 from minseg_tui.device.ptyserver import PtyServer
@@ -65,6 +66,8 @@ FAKE_AVRDUDE = textwrap.dedent(
         print(f"avrdude OS error: cannot open port {{port}}: {{exc.strerror}}", file=sys.stderr)
         sys.exit(1)
     os.close(fd)
+    if mode == "hang":  # as avrdude 7.1 can on a port that goes away
+        time.sleep(60)
     if mode == "nosync":
         print("avrdude error: timeout communicating with programmer", file=sys.stderr)
         print(f"avrdude error: unable to open programmer wiring on port {{port}}", file=sys.stderr)
@@ -267,6 +270,17 @@ def test_no_bootloader_answers(board, avrdude, capsys, monkeypatch):
     assert err.count("\n") == 1
 
 
+def test_an_avrdude_that_hangs_is_stopped(board, avrdude, capsys, monkeypatch):
+    monkeypatch.setenv("FAKE_AVRDUDE_MODE", "hang")
+    monkeypatch.setattr(flashing, "AVRDUDE_TIMEOUT_S", 1.0)
+    assert flash("--port", board.path) == 1
+    err = capsys.readouterr().err
+    assert err.startswith(
+        f"minseg-tui flash: avrdude could not reach a Mega 2560 bootloader on {board.path} "
+        "(avrdude did not finish within 1 s: timeout); nothing was written"
+    )
+
+
 def test_a_write_cut_short_says_so_and_flashing_again_mends_it(board, avrdude, capsys, monkeypatch):
     monkeypatch.setenv("FAKE_AVRDUDE_MODE", "cut")
     assert flash("--port", board.path, "--profile", "M1V4") == 1
@@ -294,9 +308,8 @@ def test_a_second_program_on_the_port_is_refused(board, avrdude, capsys):
 def test_a_board_running_other_code_is_told_to_flash(board):
     """The connect path (the TUI's and every command's): a board that sends bytes but no
     line of the protocol does not run the lab firmware, and the line says how to fix it."""
-    link = Link(board.path, reconnect=False, boot_wait_s=0.2, reply_timeout_s=0.2)
     with pytest.raises(DeviceError) as info:
-        link.open()
+        open_device(board.path, reconnect=False, boot_wait_s=0.2, reply_timeout_s=0.2)
     text = str(info.value)
     assert text.startswith(f"{board.path}: this board does not run the lab firmware")
     assert f"minseg-tui flash --port {board.path}" in text
