@@ -138,9 +138,9 @@ def _write(avrdude: str, port: str, profile: str, dry_run: bool, chosen: bool) -
             print(f"would write {what} to {port} with:")
             print(shlex.join(command))
             return False
-        print(f"writing {what} to {port} with avrdude ...", flush=True)
         lock = _take_port(port)
         try:
+            print(f"writing {what} to {port} with avrdude ...", flush=True)
             result = flashing.run_avrdude(command)
         except KeyboardInterrupt:
             raise DeviceError(
