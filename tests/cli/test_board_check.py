@@ -279,3 +279,16 @@ def test_the_watch_is_quiet_while_the_count_moves_or_the_voltage_is_small():
     w = NoCountWatch(seconds=1.0, min_u=1.0)
     assert w.feed(_batch([2.5] * 100, [k * 5 for k in range(100)])) is None
     assert w.feed(_batch([0.5] * 100, [0] * 100)) is None
+
+
+@pytest.mark.parametrize(
+    ("typed", "answer"), [("y\n", True), ("maybe\nno\n", False), ("", None), ("ja\n", True)]
+)
+def test_the_question_at_a_terminal_reads_yes_or_no(monkeypatch, capsys, typed, answer):
+    import io
+
+    from minseg_tui.cli import board_check
+
+    monkeypatch.setattr(sys, "stdin", io.StringIO(typed))
+    assert board_check._ask_turned() is answer
+    assert "Did the wheel turn? [y/n]" in capsys.readouterr().err
