@@ -473,12 +473,13 @@ def results(session: Session, step_id: str) -> ResultsView:
         lines += [
             f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s')}   "
             f"u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
-            f"K = {_fmt(st.K, 'rad/s/V')}{_ci(st.K_ci, 'rad/s/V')}",
+            f"K = {_fmt(st.K, 'rad/s/V')}"
+            f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else ', 95 % CI not determined by this log'}",
             f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
-            f"{_ci(st.T_ci, 's')}",
+            f"{_ci(st.T_ci, 's') if st.T_determined else ', 95 % CI not determined by this log'}",
             *([st.T_63_note] if st.T_63_note else []),
             f"J = {_fmt(st.J, 'kg m^2')}",
-            f"model: {_num(st.T)} omega' = -omega + {_num(st.K)} u_A",
+            f"model: {st.model_equation(_num)}",
             f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s')}",
         ]
         ts = log.ts if log is not None else 0.0
