@@ -48,7 +48,9 @@ def table() -> list[Reading]:
     return [Reading(v, v - V_DROP, 10.0 * (v - V_DROP), 40.0 + 5.0 * v) for v in LEVELS]
 
 
-def angle(t: NDArray[np.float64], changes: list[tuple[float, float]], T: float, K: float):
+def angle(
+    t: NDArray[np.float64], changes: list[tuple[float, float]], T: float, K: float
+) -> NDArray[np.float64]:
     """The motor's angle (rad) at times ``t`` (s) for command changes (instant s, dU V)."""
     th = np.zeros_like(t)
     for tau, du in changes:

@@ -333,7 +333,12 @@ def fit_observations(
             "starts at once but slowly, a shape the first-order model misses (an S-shaped start: "
             "a second pole or a filtered speed; a ramp: a current limit). Read T with care."
             if fit.moved_early is not None
-            else "A dead time does not fit the log clearly better."
+            else (
+                f"The wheel starts within {fit.onset * 1e3:.3g} ms of the steps, too soon to tell "
+                "a dead time from the sampling."
+                if fit.onset is not None and fit.onset <= 1.5 * bound
+                else "A dead time does not fit the log clearly better."
+            )
         )
         out.append(
             Observation(
@@ -345,7 +350,7 @@ def fit_observations(
                 ),
             )
         )
-    elif fit.shift_on_bound:
+    elif fit.shift_on_bound and fit.moved_before_step:
         out.append(
             Observation(
                 "shift_on_bound",
@@ -353,9 +358,20 @@ def fit_observations(
                     f"The time shift of the steps against the samples ended on its bound of one sample "
                     f"period ({fit.shift * 1e3:+.3g} ms): the wheel moves earlier than the logged steps "
                     "by more than the sampling's lateness explains. The steps in the log are placed late "
-                    "(a step put where the motion was seen, a command logged after it acted) or the "
-                    "first-order model misses the shape of the rise; T is the fit with the shift held "
-                    "at the bound."
+                    "(a command logged after it acted); T is the fit with the shift held at the bound."
+                ),
+            )
+        )
+    elif fit.shift_on_bound:
+        out.append(
+            Observation(
+                "shift_on_bound",
+                (
+                    f"The time shift of the steps against the samples ended on its bound of one sample "
+                    f"period ({fit.shift * 1e3:+.3g} ms), earlier than the steps, although the wheel "
+                    "does not move before them: the rise is steeper at first and slower later than one "
+                    "time constant gives (a second, slower process), a shape the first-order model "
+                    "misses. T is the fit with the shift held at the bound; read it with care."
                 ),
             )
         )

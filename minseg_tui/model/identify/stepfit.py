@@ -106,7 +106,9 @@ class TimeConstantFit:
     the shift ended on its bound; T_range: the range of T the fit tried (s) and T_on_bound:
     whether T ended on it; left_out: rows (0-based) left out of the fit (logging stalls);
     moved_early: when a dead time fitted better but the wheel already moved before it would
-    end, the share of the rise done by then (None otherwise).
+    end, the share of the rise done by then (None otherwise); onset: the time (s) from the
+    rising steps to where the wheel first answers (the median; None if unseen);
+    moved_before_step: the wheel was already moving at the rows of the rising steps.
     """
 
     T: float
@@ -134,6 +136,8 @@ class TimeConstantFit:
     T_on_bound: bool = False
     left_out: tuple[int, ...] = ()
     moved_early: float | None = None
+    onset: float | None = None
+    moved_before_step: bool = False
 
 
 def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
@@ -241,7 +245,11 @@ def _fit(
     n_w = steps_fit.rows.size
     sigma_w = math.sqrt(steps_fit.rss / max(n_w - steps_fit.n_params, 1))
     common: dict[str, Any] = dict(
-        shift_bound=bound, T_range=T_range, moved_early=max(moved) if moved else None
+        shift_bound=bound,
+        T_range=T_range,
+        moved_early=max(moved) if moved else None,
+        onset=onset,
+        moved_before_step=_moved_before(log, windows, 0.0, at_step=True) > STILL_SHARE,
     )
     if whole is not None:
         on_steps = whole.residuals[steps_fit.rows]
@@ -322,9 +330,12 @@ def _onset(log: StepLog, windows: list[StepWindow]) -> float | None:
     return float(np.median(found)) if found else None
 
 
-def _moved_before(log: StepLog, windows: list[StepWindow], until: float) -> float:
+def _moved_before(
+    log: StepLog, windows: list[StepWindow], until: float, at_step: bool = False
+) -> float:
     """The median over the rising steps of the largest share of the speed's change reached
-    on the rows up to ``until`` (s) after each step."""
+    on the rows up to ``until`` (s) after each step (``at_step``: on the step's own row and
+    the one before, whose speeds were measured before the step acts)."""
     w = np.asarray(log.omega, dtype=float)
     smooth = _smooth(w)
     t = log.board_time()
@@ -332,7 +343,7 @@ def _moved_before(log: StepLog, windows: list[StepWindow], until: float) -> floa
     for win in windows:
         k = win.edge.start
         rows = np.arange(k + 1, win.post_last + 1)
-        before = rows[t[rows] <= t[k] + until]
+        before = np.arange(max(k - 1, 1), k + 1) if at_step else rows[t[rows] <= t[k] + until]
         w0, w1 = _levels(w, win)
         if not before.size or w1 == w0:
             continue
