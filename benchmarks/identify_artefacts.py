@@ -69,7 +69,7 @@ def one(family: str, seed: int, periods: int) -> dict[str, float]:
         rest_rows=6 if periods == 1 else None,
     )
     t0 = time.perf_counter()
-    r = identify(table(), 5.0, g.log)
+    r = identify(table(g.K), 5.0, g.log)
     secs = time.perf_counter() - t0
     s = r.step
     assert s is not None

@@ -30,6 +30,7 @@ from minseg_tui.lab.steps import step
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.units import DIGITS, format_number, format_value
@@ -306,7 +307,8 @@ class RunView:
     """A Task 10 run for the side-by-side panel: speeds (rad/s) at board times t (s), the
     manual's estimate ``omega_lab``, and the time constants read from it (s, None if none):
     T_63 on the timestamp speed, T_63_lab on the manual's filtered speed, T_ls with its 95 %
-    interval T_ci. ``kind``: steps (25 ms) or fast."""
+    interval T_ci (None when the log does not determine T: wider than a factor of ten, or T on
+    its bound). ``kind``: steps (25 ms) or fast."""
 
     name: str
     kind: str
@@ -379,7 +381,7 @@ def runs(session: Session) -> tuple[RunView, ...]:
                 _t63(log),
                 _t63(replace(log, omega=lab)),
                 fit.T if fit else None,
-                fit.ci if fit else None,
+                fit.ci if fit and determined(fit.ci) and not fit.T_on_bound else None,
             )
         )
         _run_views[key] = out[-1]

@@ -42,10 +42,11 @@ class Generated:
     stall_row: int | None
 
 
-def table() -> list[Reading]:
-    """The exact table for these logs: u_ss = u_req - V_DROP at each level (omega_ss and i_ss
-    plausible; K divides by u_ss only)."""
-    return [Reading(v, v - V_DROP, 10.0 * (v - V_DROP), 40.0 + 5.0 * v) for v in LEVELS]
+def table(K: float = 10.0) -> list[Reading]:
+    """The exact table for these logs: u_ss = u_req - V_DROP at each level, omega_ss = K u_ss
+    (``K`` rad/s per V, the log's for a table that agrees with it) and a plausible i_ss (mA).
+    K of Task 11 divides by u_ss only."""
+    return [Reading(v, v - V_DROP, K * (v - V_DROP), 40.0 + 5.0 * v) for v in LEVELS]
 
 
 def angle(

@@ -33,7 +33,7 @@ FAMILIES = {
 
 def run(**kw):
     g = make(**kw)
-    r = identify(table(), R, g.log)
+    r = identify(table(g.K), R, g.log)
     assert r.step is not None
     return g, r
 
@@ -70,6 +70,9 @@ def test_a_dead_time_is_fitted_named_and_in_the_model():
     # the 63 % note counts the delay apart; it no longer calls the sampling the whole difference
     assert "the dead time moves the reading by +6" in s.T_63_note
     assert "the sampling alone" not in s.T_63_note
+    differs = [o.message for o in r.observations if o.code == "T_63_differs"]
+    assert differs and "holds the dead time of 60" in differs[0]
+    assert "step_vs_table" not in codes(r)  # the table agrees with the log
 
 
 def test_a_clean_log_has_no_dead_time_glitch_or_stall():

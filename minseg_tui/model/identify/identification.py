@@ -255,7 +255,9 @@ def _step_result(
         dead_time=fit.dead_time,
         glitch_rows=glitches,
     )
-    observations = step_observations(rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped))
+    observations = step_observations(
+        rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time
+    )
     observations += fit_observations(whole_log, glitches, fit, result.T_determined)
     return result, observations
 

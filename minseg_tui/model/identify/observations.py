@@ -156,13 +156,14 @@ def step_observations(
     T_63: float | None,
     ts: float,
     skipped: int,
+    dead_time: float = 0.0,
 ) -> list[Observation]:
     """What the step log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
 
     rows: the table; steps: the rising steps used; hows: how u_ss was found for each step;
     u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
-    period (s); skipped: rising steps not usable.
+    period (s); skipped: rising steps not usable; dead_time: the model's dead time (s).
     """
     observations: list[Observation] = []
     levels = sorted({s.u_req for s in steps if s.u_req is not None})
@@ -230,8 +231,15 @@ def step_observations(
                 "T_63_differs",
                 (
                     f"The 63 % reading ({T_63 * 1e3:.3g} ms) and the least-squares T ({T * 1e3:.3g} ms) differ by "
-                    f"{abs(T_63 / T - 1) * 100:.0f} %. The measured speed is the mean over each sample interval, so "
-                    "it lags the true speed by half a sample; a velocity filter lags it more."
+                    f"{abs(T_63 / T - 1) * 100:.0f} %. "
+                    + (
+                        f"The reading counts from the logged step, so it holds the dead time of "
+                        f"{dead_time * 1e3:.3g} ms that T does not; besides, the measured speed is the "
+                        "mean over each sample interval and lags the true speed by half a sample."
+                        if dead_time > 0
+                        else "The measured speed is the mean over each sample interval, so "
+                        "it lags the true speed by half a sample; a velocity filter lags it more."
+                    )
                 ),
             )
         )

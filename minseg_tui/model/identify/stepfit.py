@@ -155,7 +155,7 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
         return first
     keep = np.ones(len(log), dtype=bool)
     keep[list(stalls)] = False
-    again = _fit(log, windows, keep)
+    again = _fit(log, windows, keep, first)
     return replace(again, left_out=stalls)
 
 
@@ -178,9 +178,14 @@ def _stalls(log: StepLog, fit: TimeConstantFit) -> tuple[int, ...]:
 
 
 def _fit(
-    log: StepLog, windows: list[StepWindow], keep: NDArray[np.bool_] | None
+    log: StepLog,
+    windows: list[StepWindow],
+    keep: NDArray[np.bool_] | None,
+    prior: TimeConstantFit | None = None,
 ) -> TimeConstantFit:
-    """The fit of :func:`fit_time_constant` on the rows ``keep`` (default: all)."""
+    """The fit of :func:`fit_time_constant` on the rows ``keep`` (default: all); ``prior``: a
+    fit of the same log on more rows, whose T and shift the search starts from (and whose
+    finding of a dead time or none it keeps, without searching again)."""
     t = log.board_time()
     theta, angle_source = log.angle()
     u = np.asarray(log.u, dtype=float)
@@ -197,6 +202,12 @@ def _fit(
         else ()
     )
     moved: list[float] = []  # how far a rejected dead time's rise had come by its end
+    if prior is not None:
+        delays = ()
+        if prior.moved_early is not None:
+            moved.append(prior.moved_early)
+    reach = (-bound, d_max) if prior is not None and prior.dead_time > 0 else (-bound, bound)
+    near = (0.8, 1.0, 1.25)
 
     def dead(d: float, rss: float, rss_late: float, n: int, p: int) -> bool:
         """A dead time d (s): later than the bound, clearly better, and the wheel stands
@@ -209,7 +220,11 @@ def _fit(
             return False
         return True
 
-    steps_fit = fit_windows(t, theta, windows, ts, (-bound, bound), T_range, keep)
+    if prior is None:
+        steps_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep)
+    else:
+        T_near = tuple(f * prior.T for f in near)
+        steps_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep, (prior.shift,), T_near)
     if steps_fit.d_on_bound and steps_fit.d > 0 and delays:
         T_starts = tuple(f * steps_fit.T for f in WIDE_T_FACTORS)
         late = fit_windows(
@@ -232,7 +247,10 @@ def _fit(
         )
 
     T0 = min(max(steps_fit.T, T_range[0]), T_range[1])
-    whole = whole_fit((-bound, bound), T0)
+    if prior is None:
+        whole = whole_fit(reach, T0)
+    else:
+        whole = whole_fit(reach, prior.T, shift_starts=(prior.shift,), T_factors=near)
     if whole is not None and whole.d_on_bound and whole.d > 0 and delays:
         late_w = whole_fit(
             (-bound, d_max), whole.T, shift_starts=(0.0, *delays), T_factors=WIDE_T_FACTORS
