@@ -163,7 +163,7 @@ def test_an_s_shaped_rise_is_not_called_a_dead_time():
     st = r.step
     assert st.dead_time == 0
     said = [o.message for o in r.observations if o.code == "shift_on_bound"]
-    assert said and "it is not one: the wheel already moves" in said[0]
+    assert said and "S-shaped start" in said[0] and "dead time" in said[0]
 
 
 def test_u_ss_above_u_req_on_every_row_is_remarked():

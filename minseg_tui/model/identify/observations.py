@@ -342,10 +342,16 @@ def fit_observations(
             "a second pole or a filtered speed; a ramp: a current limit). Read T with care."
             if fit.moved_early is not None
             else (
-                f"The wheel starts within {fit.onset * 1e3:.3g} ms of the steps, too soon to tell "
-                "a dead time from the sampling."
-                if fit.onset is not None and fit.onset <= 1.5 * bound
-                else "A dead time does not fit the log clearly better."
+                "A dead time does not fit the log clearly better."
+                if fit.dead_time_sought
+                else (
+                    "The wheel first moves "
+                    + (f"{fit.onset * 1e3:.3g} ms " if fit.onset is not None else "")
+                    + "after the steps, no later than the rise itself and the sampling explain, "
+                    "so there is no dead time to fit: the rise starts more slowly than one time "
+                    "constant gives (an S-shaped start: a second pole or a filtered speed), a shape "
+                    "the first-order model misses. Read T with care."
+                )
             )
         )
         out.append(
@@ -377,7 +383,13 @@ def fit_observations(
                 (
                     f"The time shift of the steps against the samples ended on its bound of one sample "
                     f"period ({fit.shift * 1e3:+.3g} ms), earlier than the steps, although the wheel "
-                    "does not move before them: the rise is steeper at first and slower later than one "
+                    "does not move before them"
+                    + (
+                        f" (it first moves {fit.onset * 1e3:.3g} ms after them)"
+                        if fit.onset is not None and fit.onset > 1.5 * bound
+                        else ""
+                    )
+                    + ": the rise is steeper at first and slower later than one "
                     "time constant gives (a second, slower process), a shape the first-order model "
                     "misses. T is the fit with the shift held at the bound; read it with care."
                 ),

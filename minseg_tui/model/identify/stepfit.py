@@ -108,7 +108,8 @@ class TimeConstantFit:
     moved_early: when a dead time fitted better but the wheel already moved before it would
     end, the share of the rise done by then (None otherwise); onset: the time (s) from the
     rising steps to where the wheel first answers (the median; None if unseen);
-    moved_before_step: the wheel was already moving at the rows of the rising steps.
+    moved_before_step: the wheel was already moving at the rows of the rising steps;
+    dead_time_sought: whether the wheel started late enough for a dead time to be fitted.
     """
 
     T: float
@@ -138,6 +139,7 @@ class TimeConstantFit:
     moved_early: float | None = None
     onset: float | None = None
     moved_before_step: bool = False
+    dead_time_sought: bool = False
 
 
 def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
@@ -196,14 +198,28 @@ def _fit(
     T_range = (T_MIN_SAMPLES * ts, T_MAX_STEPS * max(longest, ts))
     d_max = DEAD_TIME_SHARE * shortest
     onset = _onset(log, windows)
-    delays = tuple(
-        sorted({min(max(onset - f * ts, bound), d_max) for f in (0.0, 0.5, 1.0, 1.5)})
-        if onset is not None and onset > 1.5 * bound and d_max > 1.5 * bound
-        else ()
-    )
+    delays: tuple[float, ...] = ()
+
+    def late_start(T: float) -> bool:
+        """Whether the wheel starts later than a first-order rise of T (s) would show, by
+        more than 1.5 sample periods: then a dead time is looked for, whatever the shift of
+        the fit without one (a rise steep at first can pull that shift early)."""
+        nonlocal delays
+        if onset is None or d_max <= 1.5 * bound:
+            return False
+        late = onset - STILL_SHARE * T - 0.5 * ts  # the rise's own time to show, the Euler lag
+        if late <= 1.5 * bound:
+            return False
+        delays = tuple(
+            sorted({min(max(onset - f * ts, bound), d_max) for f in (0.0, 0.5, 1.0, 1.5)})
+        )
+        sought.append(True)
+        return True
+
+    sought: list[bool] = []  # whether a dead time was looked for
+
     moved: list[float] = []  # how far a rejected dead time's rise had come by its end
     if prior is not None:
-        delays = ()
         if prior.moved_early is not None:
             moved.append(prior.moved_early)
     reach = (-bound, d_max) if prior is not None and prior.dead_time > 0 else (-bound, bound)
@@ -225,7 +241,7 @@ def _fit(
     else:
         T_near = tuple(f * prior.T for f in near)
         steps_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep, (prior.shift,), T_near)
-    if steps_fit.d_on_bound and steps_fit.d > 0 and delays:
+    if prior is None and late_start(steps_fit.T):
         T_starts = tuple(f * steps_fit.T for f in WIDE_T_FACTORS)
         late = fit_windows(
             t, theta, windows, ts, (-bound, d_max), T_range, keep, (0.0, *delays), T_starts
@@ -251,7 +267,7 @@ def _fit(
         whole = whole_fit(reach, T0)
     else:
         whole = whole_fit(reach, prior.T, shift_starts=(prior.shift,), T_factors=near)
-    if whole is not None and whole.d_on_bound and whole.d > 0 and delays:
+    if prior is None and whole is not None and late_start(whole.T):
         late_w = whole_fit(
             (-bound, d_max), whole.T, shift_starts=(0.0, *delays), T_factors=WIDE_T_FACTORS
         )
@@ -267,6 +283,7 @@ def _fit(
         T_range=T_range,
         moved_early=max(moved) if moved else None,
         onset=onset,
+        dead_time_sought=bool(sought) or (prior is not None and prior.dead_time_sought),
         moved_before_step=_moved_before(log, windows, 0.0, at_step=True) > STILL_SHARE,
     )
     if whole is not None:
