@@ -323,14 +323,15 @@ def switch_on_glitches(u: ArrayLike, omega: ArrayLike) -> int:
     u: the command or applied voltage (V); omega: the measured speed (rad/s). A glitch row is
     one of the first :data:`MAX_GLITCH_ROWS` rows, before the command first changes, whose
     speed departs from the speed of the rest of that first level (their median) by more than
-    the largest departure any later row of the log shows from it (after a 3-row running median,
-    which takes out one-row spikes such as a logging stall's): a reading above every steady
+    the largest departure any later row of the log shows from it (after a 5-row running median,
+    which takes out a logging stall's spike and the row that catches up after it): a reading
+    above every steady
     speed the motor reaches, at a voltage that holds still. Only an unbroken run from row 0
     counts, and at least three rows of the first level must remain.
     """
     v = np.asarray(u, dtype=float)
     w = np.asarray(omega, dtype=float)
-    if w.size < 2 * MAX_GLITCH_ROWS + 3:
+    if w.size < 2 * MAX_GLITCH_ROWS + 8:
         return 0
     moved = np.flatnonzero(np.abs(v - v[0]) > max(MIN_STEP_V, 1e-9))
     first_level = int(moved[0]) if moved.size else v.size
@@ -338,7 +339,9 @@ def switch_on_glitches(u: ArrayLike, omega: ArrayLike) -> int:
         return 0
     level = float(np.median(w[MAX_GLITCH_ROWS:first_level]))
     rest = w[MAX_GLITCH_ROWS:]
-    smooth = np.median(np.stack((rest[:-2], rest[1:-1], rest[2:])), axis=0)  # one-row spikes out
+    n = rest.size
+    # a 5-row running median: a stall's spike and the catch-up row after it are out
+    smooth = np.median(np.stack([rest[k : n - 4 + k] for k in range(5)]), axis=0)
     later = float(np.max(np.abs(smooth - level)))
     far = np.abs(w[:MAX_GLITCH_ROWS] - level) > max(later, 1e-9)
     n = 0

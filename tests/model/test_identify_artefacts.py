@@ -115,6 +115,9 @@ def test_switch_on_glitches_rule():
     w3 = w1.copy()
     w3[20] = 200.0  # a stall's one-row spike later does not hide the glitches
     assert switch_on_glitches(u, w3) == 2
+    w5 = w1.copy()
+    w5[20:22] = [200.0, 46.0]  # nor does the row that catches up after the spike
+    assert switch_on_glitches(u, w5) == 2
     w4 = w.copy()
     w4[1] = 45.0  # a spike after a normal first row is not a switch-on glitch run
     assert switch_on_glitches(u, w4) == 0
