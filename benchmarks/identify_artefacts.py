@@ -22,9 +22,12 @@ Printed per family: median, 90th percentile and largest |T error| (%), the share
 T within 10 %, how often the dead time is found (and within one sample period of the truth),
 the glitch rows and the stall row flagged, logs whose time shift is beyond one sample period
 without a dead time named ("silent"), and the time per log. With --real DIR, identify on each
-step.csv below DIR beside a careful reading of its first rise (on the speed averaged over 5
-rows, centred: onset at the last row before it has come 2 % of the way, the 63 % crossing
-interpolated, half a sample taken off for the Euler speed).
+step.csv below DIR beside two careful readings of its first rise, both from the onset (the
+last row before the speed, averaged over 5 rows centred, has come 2 % of the way): the 63 %
+crossing of that speed, interpolated, half a sample taken off for the Euler speed; and how far
+the line through the angle over the last 40 % of the step lies below the angle at the onset,
+over the change of speed (T for a first-order rise: an area reading, steadier on coarse
+counts).
 """
 
 from __future__ import annotations
@@ -90,8 +93,9 @@ def one(family: str, seed: int, periods: int) -> dict[str, float]:
     }
 
 
-def careful_reading(log: StepLog) -> float | None:
-    """T (s) read with care off the first rising step of a real log (see the docstring)."""
+def careful_reading(log: StepLog) -> tuple[float, float] | None:
+    """T (s) read with care off the first rising step of a real log, two ways (see the
+    docstring): the 63 % time and the angle's asymptote, each from the onset."""
     cmd, _ = command(log)
     rising = [e for e in find_edges(cmd) if e.rising]
     if not rising:
@@ -116,13 +120,22 @@ def careful_reading(log: StepLog) -> float | None:
     k = e.start + int(hit[0])
     frac = (share[hit[0]] - (1 - math.exp(-1))) / max(share[hit[0]] - share[hit[0] - 1], 1e-12)
     t63 = float(t[k] - frac * (t[k] - t[k - 1]))
-    return t63 - 0.5 * log.ts - start
+    # a first-order rise from w0 to w1 starting at t_on ends on the line
+    # theta_on + w1 (t - t_on) - (w1 - w0) T: the line through the angle over the last 40 % of
+    # the step, at t_on, lies (w1 - w0) T below the angle there
+    theta, _ = log.angle()
+    seg = np.arange(e.start, end + 1)
+    late = seg[t[seg] >= t[e.start] + 0.6 * (t[end] - t[e.start])]
+    slope, cut = np.polyfit(t[late], theta[late], 1)
+    area = float((np.interp(start, t, theta) - (slope * start + cut)) / (slope - w0))
+    return t63 - 0.5 * log.ts - start, area
 
 
 def real(folder: Path) -> None:
     print(f"\nreal logs under {folder}: identify's T against a careful reading of the first rise")
     print(
-        f"{'log':32} {'T ms':>8} {'read ms':>8} {'ratio':>6} {'shift ms':>9} {'dead ms':>8}  said"
+        f"{'log':24} {'T ms':>7} {'63 % ms':>8} {'ratio':>6} {'area ms':>8} {'ratio':>6} "
+        f"{'shift ms':>9} {'dead ms':>8}  said"
     )
     for path in sorted(folder.glob("*/step.csv")):
         log = read_step_log(path)
@@ -132,7 +145,7 @@ def real(folder: Path) -> None:
         s = r.step
         assert s is not None
         read = careful_reading(log)
-        ratio = f"{s.T / read:6.2f}" if read else "     -"
+        r63, area = read if read else (math.nan, math.nan)
         codes = ",".join(
             o.code
             for o in r.observations
@@ -140,8 +153,9 @@ def real(folder: Path) -> None:
             in {"dead_time", "shift_on_bound", "glitch_rows", "logging_stall", "T_on_bound"}
         )
         print(
-            f"{path.parent.name:32} {s.T * 1e3:8.1f} {read * 1e3 if read else math.nan:8.1f} "
-            f"{ratio} {s.fit.shift * 1e3:+9.1f} {s.dead_time * 1e3:8.1f}  {codes}"
+            f"{path.parent.name:24} {s.T * 1e3:7.1f} {r63 * 1e3:8.1f} {s.T / r63:6.2f} "
+            f"{area * 1e3:8.1f} {s.T / area:6.2f} {s.fit.shift * 1e3:+9.1f} "
+            f"{s.dead_time * 1e3:8.1f}  {codes}"
         )
 
 
