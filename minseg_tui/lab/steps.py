@@ -570,7 +570,7 @@ _LAB: tuple[Step, ...] = (
         fields=(
             Field("own.k_v", "your k_v", unit="V s/rad", optional=True, compare="k_v"),
             Field("own.k_a", "your k_a", unit="N m/A", optional=True, compare="k_a"),
-            Field("own.f", "your f", unit="N m s/rad", optional=True, compare="f"),
+            Field("own.f", "your f", unit="mN m s/rad", optional=True, compare="f"),
         ),
         formulas=(
             ("k_v", "k_v = (u_ss - R i_ss) / omega_ss, per row; final k_v = median of the rows"),

