@@ -319,6 +319,13 @@ class FieldRow(Vertical):
         msgs.first(Prose).update("\n".join(parts))
         self.set_class(not result.ok, "refused")
         self.set_class(bool(result.warnings), "warned")
+        if not result.ok and self.query(EntryBox):
+            # a refused text is to be corrected, not replaced: the cursor at its end, nothing
+            # selected (Backspace deletes one character), and the whole refusal in view
+            box = self.input
+            box.cursor_position = len(box.value)
+            if self.screen.focused is box:
+                self.call_after_refresh(self.bring_into_view)
 
     def _send(self, submitted: bool = False) -> None:
         text = self.input.value
