@@ -65,6 +65,22 @@ sample's real interval on the board's clock (:func:`minseg_tui.signals.timestamp
 _HEADER = "seq,t_us,count,u_mV"
 
 
+STEP_KINDS: tuple[str, ...] = ("steps", "fast", "imported")
+"""The kinds of run Tasks 11-15 can read the steps of."""
+
+ENDED_BY: dict[str, str] = {
+    "quit": "quit",
+    "stopped": "stopped",
+    "cable": "board lost (cable pulled?)",
+    "watchdog": "board's watchdog",
+    "restart": "board restarted",
+    "link": "link error",
+    "not started": "board did not start it",
+    "crash": "crash",
+}
+"""What can interrupt a run (:attr:`RunInfo.ended_by`) -> its words in lists and the report."""
+
+
 @dataclass(frozen=True)
 class RunInfo:
     """A recorded run as the session file keeps it.
@@ -72,7 +88,8 @@ class RunInfo:
     name: file stem (``runs/<name>.csv``); kind: ``steps`` (Task 10), ``fast`` or ``free``;
     ts: nominal sample period (s); samples: rows in the log; dropped: samples lost on the
     link (gaps in seq); started: ISO time; interrupted: the run ended before its plan did (stopped, board lost,
-    program closed) or was recovered after a crash;
+    program closed) or was recovered after a crash; ended_by: what interrupted it, a key of
+    :data:`ENDED_BY` ("" when not known: a run kept before it was recorded);
     plan: the step plan as a dict (empty for a free run).
     """
 
@@ -85,6 +102,19 @@ class RunInfo:
     started: str
     interrupted: bool = False
     plan: Mapping[str, float] = field(default_factory=dict)
+    ended_by: str = ""
+
+    @property
+    def complete(self) -> bool:
+        """The run went to the end of its plan."""
+        return not self.interrupted
+
+    @property
+    def interruption(self) -> str:
+        """What interrupted the run, in words ("" for a complete run)."""
+        if not self.interrupted:
+            return ""
+        return ENDED_BY.get(self.ended_by, "cause not recorded")
 
     def to_json(self) -> dict[str, object]:
         """JSON-ready dict."""
@@ -98,6 +128,7 @@ class RunInfo:
             "started": self.started,
             "interrupted": self.interrupted,
             "plan": dict(self.plan),
+            **({"ended_by": self.ended_by} if self.ended_by else {}),
         }
 
     @classmethod
@@ -113,6 +144,7 @@ class RunInfo:
             started=str(d.get("started", "")),
             interrupted=bool(d.get("interrupted", False)),
             plan={str(k): float(v) for k, v in dict(d.get("plan") or {}).items()},
+            ended_by=str(d.get("ended_by", "")),
         )
 
 
@@ -484,6 +516,7 @@ def keep_run(
     raw: RawRun,
     table: Sequence[tuple[float, float]],
     interrupted: bool,
+    ended_by: str = "",
 ) -> RunInfo | None:
     """Write the samples of ``raw`` as ``runs/<name>.csv`` under ``folder`` (atomically) and
     return the run's record; None when it holds fewer than 2 samples. OSError when the log
@@ -505,6 +538,7 @@ def keep_run(
         started=str(raw.header.get("started", "")),
         interrupted=interrupted,
         plan={str(k): float(v) for k, v in plan.items()} if isinstance(plan, dict) else {},
+        ended_by=ended_by if interrupted else "",
     )
 
 

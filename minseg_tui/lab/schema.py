@@ -273,6 +273,7 @@ RUN = Record(
         "started": Text(),
         "interrupted": Flag(),
         "plan": PLAN,
+        "ended_by": Text(),
     },
     rules=(_run_file,),
 )

@@ -63,6 +63,7 @@ from minseg_tui.lab.results import (
 from minseg_tui.lab.runs import (
     FLUSH_INTERVAL,
     PARTIAL_SUFFIX,
+    STEP_KINDS,
     RawRun,
     Recorder,
     RunInfo,
@@ -157,7 +158,7 @@ class Session:
         self._problem: SaveProblem | None = None
         self._unsaved = False
         # finished recordings whose log is not written yet, and whether each stopped early
-        self._unkept: list[tuple[Recorder, bool]] = []
+        self._unkept: list[tuple[Recorder, bool, str]] = []
         self._remap_due = False  # the runs' u column waits for a table change to be written
         self.recovered: list[str] = []
         """Names of runs rebuilt at open from a recording a crash interrupted."""
@@ -676,18 +677,22 @@ class Session:
         return read_step_log(self.run_path(name), require_step=False)
 
     def step_run(self) -> RunInfo | None:
-        """The run Tasks 11-15 use: the selected one, else the latest step run."""
+        """The run Tasks 11-15 use: the one the group chose (it stays until they choose
+        another), else the newest complete 25 ms step run (the manual's), else the newest
+        complete step run of another period; never an interrupted run they did not choose."""
         sel = self._data.get("selected_run")
         for r in self._runs:
             if r.name == sel:
                 return r
-        for r in reversed(self._runs):
-            if r.kind in ("steps", "fast", "imported"):
-                return r
+        complete = [r for r in reversed(self._runs) if r.kind in STEP_KINDS and r.complete]
+        manual = [r for r in complete if abs(r.ts - RunPlan().ts) < 1e-6]
+        for r in (*manual, *complete):
+            return r
         return None
 
     def select_run(self, name: str | None) -> None:
-        """Use run ``name`` for Tasks 11-15 (None: the latest step run); saved."""
+        """Use run ``name`` for Tasks 11-15 until the group picks another (None: the default
+        of :meth:`step_run`); saved in the session."""
         if name is not None:
             self.run_path(name)
         self._data["selected_run"] = name
@@ -738,11 +743,14 @@ class Session:
                 f"cannot record a run here ({os_reason(exc)}); nothing was started",
             ) from None
 
-    def finish_run(self, recorder: Recorder, stopped_early: bool = False) -> RunInfo | None:
+    def finish_run(
+        self, recorder: Recorder, stopped_early: bool = False, ended_by: str = ""
+    ) -> RunInfo | None:
         """End a recording: its samples become runs/<name>.csv (atomically), the session
         records the run (saved) and the partial file goes. None (and nothing kept) when it
         holds fewer than 2 samples. ``stopped_early``: the run ended before its plan did
-        (stopped, board lost, program closed; kept as ``interrupted``). When the log cannot
+        (stopped, board lost, program closed; kept as ``interrupted``, ``ended_by`` a key of
+        :data:`minseg_tui.lab.runs.ENDED_BY` saying which). When the log cannot
         be written the run is kept in memory, saved with the next save that works, and
         SessionNotWritable says so."""
         recorder.close()
@@ -752,9 +760,9 @@ class Session:
                 recorder.path.unlink(missing_ok=True)
             return None
         try:
-            info = self._keep(recorder.name, raw, interrupted=stopped_early)
+            info = self._keep(recorder.name, raw, stopped_early, ended_by)
         except OSError as exc:
-            self._unkept.append((recorder, stopped_early))
+            self._unkept.append((recorder, stopped_early, ended_by))
             self._failed(exc)
             raise SessionNotWritable(
                 str(self.folder / RUNS_DIR),
@@ -772,12 +780,14 @@ class Session:
         with contextlib.suppress(OSError):
             recorder.path.unlink(missing_ok=True)
 
-    def _keep(self, name: str, raw: RawRun, interrupted: bool) -> RunInfo | None:
+    def _keep(
+        self, name: str, raw: RawRun, interrupted: bool, ended_by: str = ""
+    ) -> RunInfo | None:
         """Write run ``name`` from ``raw`` and record it (saved); None when it is known or
         too short. OSError when its log cannot be written."""
         if any(r.name == name for r in self._runs):
             return None
-        info = keep_run(self.folder, name, raw, self.table_pairs(), interrupted)
+        info = keep_run(self.folder, name, raw, self.table_pairs(), interrupted, ended_by)
         if info is None:
             return None
         self._runs.append(info)
@@ -788,10 +798,12 @@ class Session:
     def _keep_unkept(self) -> None:
         """Write the runs that finished while nothing could be written (OSError if still not)."""
         while self._unkept:
-            rec, stopped_early = self._unkept[0]
+            rec, stopped_early, ended_by = self._unkept[0]
             raw = rec.raw()
             if not any(r.name == rec.name for r in self._runs):
-                info = keep_run(self.folder, rec.name, raw, self.table_pairs(), stopped_early)
+                info = keep_run(
+                    self.folder, rec.name, raw, self.table_pairs(), stopped_early, ended_by
+                )
                 if info is not None:
                     self._runs.append(info)
                     self._run_version += 1
@@ -814,7 +826,7 @@ class Session:
                 continue
             try:
                 raw = read_partial(partial)
-                info = self._keep(name, raw, interrupted=True)
+                info = self._keep(name, raw, interrupted=True, ended_by="crash")
             except OSError as exc:
                 self.recovery_notes.append(
                     f"{RUNS_DIR}/{partial.name}: not rebuilt yet ({os_reason(exc)}); "

@@ -322,6 +322,8 @@ class RunView:
     T_63_lab: float | None
     T_ls: float | None
     T_ci: tuple[float, float] | None
+    interruption: str = ""
+    """What interrupted the run, in words ("" for a complete run)."""
 
 
 def _median(values: Sequence[float | None]) -> float | None:
@@ -382,6 +384,7 @@ def runs(session: Session) -> tuple[RunView, ...]:
                 _t63(replace(log, omega=lab)),
                 fit.T if fit else None,
                 fit.ci if fit and determined(fit.ci) and not fit.T_on_bound else None,
+                r.interruption,
             )
         )
         _run_views[key] = out[-1]
@@ -490,7 +493,7 @@ def results(session: Session, step_id: str) -> ResultsView:
     used = next((r for r in session.runs if r.name == res.run), None)
     if used is not None and used.interrupted:
         problems.append(
-            f"run {used.name} ended before its plan did ({used.samples} samples, "
+            f"run {used.name} ended before its plan did ({used.interruption}; {used.samples} samples, "
             f"{len(steps)} rising steps): a whole run gives more steps to read T from"
         )
     return ResultsView(

@@ -647,15 +647,13 @@ def _runs_section(session: Session) -> Section:
             f"{r.samples}",
             f"{r.ts * 1e3:g} ms",
             f"{r.dropped}",
-            "yes" if r.interrupted else "no",
+            r.interruption or "—",
             r.file,
         )
         for r in session.runs
     )
     sec.blocks.append(
-        Table(
-            ("run", "kind", "samples", "Ts", "dropped", "recovered after a crash", "CSV file"), rows
-        )
+        Table(("run", "kind", "samples", "Ts", "dropped", "interrupted by", "CSV file"), rows)
     )
     for r in session.runs:
         try:

@@ -69,7 +69,7 @@ from minseg_tui.ui.screens.boardcheck import (
 )
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
-from minseg_tui.ui.screens.quit import QuitScreen, SaveElsewhereScreen
+from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
@@ -110,6 +110,15 @@ EVENT_TEXT: dict[str, str] = {
     "motor": "motor off after the restart: nothing restored",
 }
 """What the status line says at once for a link event (``error`` shows the link's own line)."""
+
+RUN_ENDED_BY: dict[str, str] = {
+    "disconnected": "cable",
+    "watchdog": "watchdog",
+    "boot": "restart",
+    "motor": "restart",
+    "error": "link",
+}
+"""A link event that ends a run -> what interrupted it (:data:`minseg_tui.lab.runs.ENDED_BY`)."""
 
 PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
     ("f3", "set_voltage", "Set V", "setting a voltage"),
@@ -442,7 +451,7 @@ class LabApp(App[None]):
             self.motor = "off"
             self.requested = None
             if self.recording is not None:
-                self.finish_run(EVENT_TEXT.get(kind, "stopped"))
+                self.finish_run(EVENT_TEXT.get(kind, "stopped"), RUN_ENDED_BY.get(kind, "link"))
         if kind in WAIT_ENDS and self._stand is not None:
             self._cancel_wait(f"{EVENT_TEXT.get(kind, ev.message)}: the run did not start")
         if kind == "connected" and self.link.event == "":
@@ -708,23 +717,23 @@ class LabApp(App[None]):
             self._device.step(plan.low, plan.high, plan.half_period, plan.periods)
         except MinsegError as exc:
             self.notify(str(exc), title="run", severity="error")
-            self.finish_run("could not start")
+            self.finish_run("could not start", "not started")
             return
         self.motor = motor_words(None, plan.high)
         self.requested = None
 
-    def finish_run(self, why: str) -> None:
-        """The run ended (done, stopped, board lost): keep what was recorded; it becomes the
-        run Tasks 11-15 use."""
+    def finish_run(self, why: str, ended_by: str = "") -> None:
+        """The run ended (done, stopped, board lost): keep what was recorded, with what
+        interrupted it (``ended_by``, a key of :data:`minseg_tui.lab.runs.ENDED_BY`; "" when
+        it went to the end). A run the group chose stays in use; without a choice, Tasks
+        11-15 use the newest complete 25 ms run (:meth:`Session.step_run`)."""
         rec, self.recording = self.recording, None
         if rec is None or self.session is None:
             return
         try:
             rec.close()
             with self.session as s:
-                info = s.finish_run(rec.recorder, stopped_early=why != "done")
-                if info is not None:  # an import or a pick is dropped for the new run
-                    s.select_run(None)
+                info = s.finish_run(rec.recorder, stopped_early=why != "done", ended_by=ended_by)
             kept = (
                 f"run {rec.name}: too few samples, nothing kept"
                 if info is None
@@ -795,11 +804,25 @@ class LabApp(App[None]):
         self.push_screen(SaveElsewhereScreen(str(here), self.save_elsewhere))
 
     async def action_quit(self) -> None:
-        """Ctrl+Q: quit; everything typed is stored first. If some of it is not on disk (a
-        failed save), ask: keep working, save to another folder, or quit anyway."""
+        """Ctrl+Q: quit; everything typed is stored first. While a run is being recorded,
+        ask first: keep recording, or stop it and quit (Ctrl+Q again quits). If something is
+        not on disk (a failed save), ask: keep working, save to another folder, or quit
+        anyway."""
         screen = self._lab_screen()
         if screen is not None:
             screen.store_typed()
+        rec = self.recording
+        if rec is not None and not isinstance(self.screen, QuitScreen):
+            self.push_screen(
+                QuitScreen(
+                    f"Run {rec.name} is being recorded ({rec.samples} samples so far). "
+                    "Quitting stops it before its plan ends.",
+                    title="A run is being recorded",
+                    choices=RECORDING_CHOICES,
+                ),
+                self._quit_answer,
+            )
+            return
         if self.session is not None:
             with self.session as s:
                 unsaved = not s.readonly and s.unsaved and not s.save()
@@ -856,7 +879,7 @@ class LabApp(App[None]):
         if self._stand is not None:
             self._cancel_wait("run cancelled (F2): the motor is off")
         if self.recording is not None:
-            self.finish_run("stopped")
+            self.finish_run("stopped", "stopped")
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
@@ -1039,7 +1062,7 @@ class LabApp(App[None]):
     def on_unmount(self) -> None:
         self._stop.set()
         if self.recording is not None:
-            self.finish_run("app closed")
+            self.finish_run("app closed", "quit")
         if self._device is not None:
             try:
                 self._device.stop()

@@ -119,7 +119,7 @@ class LogImportRequested(Message):
 
 @dataclass
 class RunChosen(Message):
-    """Tasks 11-15 and the model check use run ``name`` (None: the latest step run)."""
+    """Tasks 11-15 and the model check use run ``name`` (None: the newest complete 25 ms run)."""
 
     name: str | None
 

@@ -563,12 +563,16 @@ def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path)
         rec = s.start_run("steps", plan)
         for j in range(80):  # F2 after one rising step: 80 of the plan's 480 samples
             rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), 4500 * (j >= 20))
-        short = s.finish_run(rec, stopped_early=True)
+        short = s.finish_run(rec, stopped_early=True, ended_by="stopped")
         assert short is not None and short.interrupted
     with Session.open(s.folder) as again:  # kept in the session file
-        assert again.runs[-1].interrupted
+        assert again.runs[-1].interrupted and again.runs[-1].interruption == "stopped"
+        assert again.step_run() == info  # never an interrupted run the group did not choose
+        again.select_run(short.name)
         said = views.results(again, "task11").problems
-        assert any(f"run {short.name} ended before its plan did (80 samples" in p for p in said)
+        assert any(
+            f"run {short.name} ended before its plan did (stopped; 80 samples" in p for p in said
+        )
 
 
 def test_the_computed_value_stands_in_the_unit_the_group_typed_theirs_in(tmp_path):

@@ -260,7 +260,7 @@ async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
         texts = [t for t, _, _ in StepCommands(app.screen).entries()]
         assert (
             f"Use run {first} for Tasks 11-15" in texts
-            and "Use the latest run for Tasks 11-15" in texts
+            and "Use the newest complete 25 ms run for Tasks 11-15" in texts
         )
         await goto(pilot, "task11")
         await settle(pilot)
@@ -272,12 +272,14 @@ async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
         assert _run_in_use(app) == second
         app.screen.use_run(first)
         await goto(pilot, "task10")
-        await start_run_on(pilot, dev)  # a new run recorded: it is the one used
+        await start_run_on(pilot, dev)  # a new run recorded: the group's pick stays in use
         rec = app.recording
         rec.append(
             SampleBatch.from_rows([(k, 25_000 * k, 3 * k, 4500, 0, 0.0) for k in range(40, 80)])
         )
         app.finish_run("done")
+        assert _run_in_use(app) == first
+        app.screen.use_run(None)  # the default: the newest complete 25 ms run
         assert _run_in_use(app) == rec.name not in (first, second)
 
 

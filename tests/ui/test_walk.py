@@ -118,7 +118,8 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         await settle(pilot)
         readings = str(app.screen.query_one("#t-readings").render())
         assert "steps-1" in readings and "fast-1" in readings
-        # Tasks 11-15 use the latest run (the fast one); the group's own K beside the computed
+        # Tasks 11-15 use the newest complete 25 ms run (not the stopped fast one); the group's
+        # own K beside the computed
         await goto(pilot, "task11")
         with app.session as s:
             res = s.results()

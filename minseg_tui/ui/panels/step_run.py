@@ -133,7 +133,7 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
         self.query_one("#t-readings", Static).update("\n".join(rows))
         if not self.recording:
             said = ", ".join(
-                f"{v.name} ({v.samples} samples{', interrupted' if v.interrupted else ''})"
+                f"{v.name} ({v.samples} samples{f', interrupted: {v.interruption}' if v.interruption else ''})"
                 for v in runs
             )
             self.query_one("#run-status", Prose).update(said or "no runs recorded yet")

@@ -223,7 +223,13 @@ class StepCommands(Provider):
                 )
                 for name in runs
             ]
-            + [("Use the latest run for Tasks 11-15", partial(use, None), "the default")]
+            + [
+                (
+                    "Use the newest complete 25 ms run for Tasks 11-15",
+                    partial(use, None),
+                    "the default: no interrupted run",
+                )
+            ]
         )
 
     async def discover(self) -> Hits:

@@ -21,22 +21,36 @@ QUIT_CHOICES: tuple[tuple[str, str], ...] = (
 )
 """What the group can do when quitting with something not on disk: (answer, words)."""
 
+RECORDING_CHOICES: tuple[tuple[str, str], ...] = (
+    ("keep", "Keep recording"),
+    ("quit", "Stop the run and quit: what is recorded is kept, marked as ended by a quit"),
+)
+"""What the group can do when quitting while Task 10 records a run: (answer, words)."""
+
 
 class QuitScreen(ModalScreen[str]):
-    """Asks before quitting while the session is not all on disk; dismissed with ``keep``,
-    ``move`` or ``quit`` (Escape: keep)."""
+    """Asks before quitting while the session is not all on disk (or, with ``title`` and
+    ``choices`` :data:`RECORDING_CHOICES`, while a run is being recorded); dismissed with
+    the key of a choice (Escape: keep)."""
 
     BINDINGS = [Binding("escape", "keep", "Keep working")]
 
-    def __init__(self, problem: str) -> None:
+    def __init__(
+        self,
+        problem: str,
+        title: str = "Not everything is saved",
+        choices: tuple[tuple[str, str], ...] = QUIT_CHOICES,
+    ) -> None:
         super().__init__()
         self._problem = problem
+        self._title = title
+        self._choices = choices
 
     def compose(self) -> ComposeResult:
         with Vertical(id="ask", classes="dialog"):
-            yield Prose("Not everything is saved", classes="title")
+            yield Prose(self._title, classes="title")
             yield Prose(self._problem, classes="para")
-            yield OptionList(*[Option(text, id=key) for key, text in QUIT_CHOICES], id="answers")
+            yield OptionList(*[Option(text, id=key) for key, text in self._choices], id="answers")
 
     def on_mount(self) -> None:
         self.query_one("#answers", OptionList).focus()
