@@ -497,21 +497,26 @@ class Session:
         return out
 
     def step_status(self, step_id: str) -> str:
-        """``done`` (every required field accepted; for Task 10 a run recorded), ``started``
-        (something entered), ``todo``, or ``info`` (nothing to enter)."""
+        """``done`` (every required field accepted; for Task 10 a run recorded), ``wrong``
+        (answered, but a checked answer is wrong), ``started`` (something entered), ``todo``,
+        or ``info`` (nothing to enter)."""
         st = lab_steps.step(step_id)
         if "run_steps" in st.actions:
             return "done" if any(r.kind in ("steps", "fast") for r in self._runs) else "todo"
         required = [f for f in st.fields if not f.optional]
         if not st.fields:
             return "info"
-        if required and all(
+        answered = bool(required) and all(
             self._entries.get(f.key) is not None and self._entries[f.key].ok for f in required
-        ):
-            return "done"
-        if any(f.key in self._entries for f in st.fields):
-            return "started" if required else "done"
-        return "todo"
+        )
+        if not answered and any(f.key in self._entries for f in st.fields):
+            answered = not required
+            if required:
+                return "started"
+        if not answered:
+            return "todo"
+        wrong = any(fb.status == "wrong" for fb in self.feedback(step_id))
+        return "wrong" if wrong else "done"
 
     # -- the table -----------------------------------------------------------------------------
 

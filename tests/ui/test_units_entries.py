@@ -5,6 +5,8 @@ step names in the resume list. Each through the real TUI (Pilot)."""
 
 from __future__ import annotations
 
+from textual.widgets import OptionList
+
 from minseg_tui.lab.entry import parse_quantity
 from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, settle, start, type_in
@@ -48,3 +50,21 @@ async def test_backspace_after_a_refusal_deletes_one_character(quiet):
         await pilot.press("backspace")
         await settle(pilot)
         assert row.input.value == "5.3 "
+
+
+def _mark(app, step_id: str) -> str:
+    nav = app.screen.query_one("#nav", OptionList)
+    return str(nav.get_option(step_id).prompt)[0]
+
+
+async def test_a_wrong_answer_gets_its_own_mark_in_the_list_of_steps(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep5")
+        await type_in(pilot, "prep5.percent", "50")
+        await settle(pilot)
+        assert _mark(app, "prep5") == "✗"
+        await type_in(pilot, "prep5.percent", "63,2")
+        await settle(pilot)
+        assert _mark(app, "prep5") == "✓"

@@ -62,7 +62,7 @@ _SHORT = {
 NOTES = ".notes"
 """The key ending of a step's own notes field."""
 
-MARKS = {"done": "✓", "started": "…", "todo": " ", "info": " "}
+MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": " "}
 """The navigator's mark of a step's status (a character, not a colour)."""
 
 STEP_IDS = tuple(s.id for s in STEPS)
