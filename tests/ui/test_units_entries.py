@@ -68,3 +68,15 @@ async def test_a_wrong_answer_gets_its_own_mark_in_the_list_of_steps(quiet):
         await type_in(pilot, "prep5.percent", "63,2")
         await settle(pilot)
         assert _mark(app, "prep5") == "✓"
+
+
+async def test_the_resume_list_names_the_step_as_the_lab_does(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task13")
+    again = quiet()
+    async with again.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: bool(again.screen.query("#sessions")))
+        listed = str(again.screen.query_one("#sessions", OptionList).get_option_at_index(0).prompt)
+        assert listed.endswith("at Task 13") and "task13" not in listed

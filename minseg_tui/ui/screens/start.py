@@ -13,8 +13,15 @@ from textual.message import Message
 from textual.widgets import Footer, Input, OptionList, Static
 from textual.widgets.option_list import Option
 
+from minseg_tui.lab.steps import STEP_INDEX, step
 from minseg_tui.lab.store import SessionInfo
 from minseg_tui.ui.screens.status import StatusScreen
+
+
+def step_name(step_id: str) -> str:
+    """The step's name as the lab calls it: its title up to the colon ("Task 13",
+    "Preparation 12"); the id itself for a step this program does not know."""
+    return step(step_id).title.split(":")[0] if step_id in STEP_INDEX else step_id
 
 
 def why_closed(s: SessionInfo) -> str:
@@ -82,7 +89,7 @@ class StartScreen(StatusScreen):
         why = why_closed(s)
         if why:
             return f"{s.path}: {why}" + (" (Enter opens it read-only)" if s.damaged else "")
-        return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {s.last_step}"
+        return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {step_name(s.last_step)}"
 
     def request(self) -> StartScreen.NewSession | StartScreen.Resume | None:
         """What Enter asks for where the focus is: a new session (in the names' or the date's
