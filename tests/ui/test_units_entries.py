@@ -8,8 +8,19 @@ from __future__ import annotations
 from textual.widgets import OptionList
 
 from minseg_tui.lab.entry import parse_quantity
+from minseg_tui.ui.app import PANEL_KEYS
+from minseg_tui.ui.widgets.fields import field_id
 from minseg_tui.ui.widgets.prose import Prose
-from tests.ui.helpers import TABLE, enter_all, goto, record_step_run, settle, start, type_in
+from tests.ui.helpers import (
+    TABLE,
+    enter_all,
+    goto,
+    record_step_run,
+    settle,
+    start,
+    start_with_a_run,
+    type_in,
+)
 
 
 def test_every_unit_of_the_table_is_accepted_in_its_field():
@@ -80,3 +91,24 @@ async def test_the_resume_list_names_the_step_as_the_lab_does(quiet):
         await settle(pilot, lambda: bool(again.screen.query("#sessions")))
         listed = str(again.screen.query_one("#sessions", OptionList).get_option_at_index(0).prompt)
         assert listed.endswith("at Task 13") and "task13" not in listed
+
+
+async def test_every_entry_label_shows_its_unit(quiet):
+    """'u_ss at 2.5 V [V]' lost its '[V]': the label read it as a style."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task4")
+        label = app.screen.query_one("#" + field_id("u_ss@2.5")).query_one(".field-label")
+        assert str(label.render()) == "u_ss at 2.5 V [V]"
+
+
+async def test_the_zoom_note_names_f9_as_the_footer_does(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        await pilot.press("f9")
+        await settle(pilot)
+        note = str(app.screen.query_one("#zoom-note").render())
+        (footer,) = [label for keys, _, label, _ in PANEL_KEYS if keys == "f9"]
+        assert f"f9 {footer}" in note and "F9" not in note

@@ -116,7 +116,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
             f"run {v.run}, step {self.zoom + 1} of {len(v.steps)}: from "
             f"{format_value(w.omega0, 'rad/s', 3)} to {format_value(w.omega_ss, 'rad/s', 3)}; "
             f"63 % of the change is {format_value(w.level, 'rad/s', 3)}, the speed "
-            f"{crossing} · alt+←/→ step · F9 next"
+            f"{crossing} · alt+←/→ Step · f9 Zoom (the next step)"
         )
 
     def pick(self, delta: int) -> None:

@@ -168,7 +168,8 @@ class FieldRow(Vertical):
                 )
         else:
             with Horizontal(classes="field-line"):
-                yield Label(f"{self.field.label}{unit}", classes="field-label")
+                # as text, not markup: '[V]' would be read as a style and vanish
+                yield Label(f"{self.field.label}{unit}", classes="field-label", markup=False)
                 yield EntryBox(self._text, self.field.hint, self._readonly)
             yield Prose(self.field.hint, classes="field-hint")
         yield Prose("", classes="field-msg")
