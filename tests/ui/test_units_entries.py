@@ -112,3 +112,22 @@ async def test_the_zoom_note_names_f9_as_the_footer_does(quiet):
         note = str(app.screen.query_one("#zoom-note").render())
         (footer,) = [label for keys, _, label, _ in PANEL_KEYS if keys == "f9"]
         assert f"f9 {footer}" in note and "F9" not in note
+
+
+async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(quiet):
+    """It said '0 rising steps': it meant steps with results, which need the table."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        with app.session as s:
+            record_step_run(s)
+        await goto(pilot, "task11")
+        await settle(pilot)
+        note = str(app.screen.query_one("#zoom-note").render())
+        assert "0 rising steps" not in note and "table of Tasks 4-9" in note
+        enter_all(app, TABLE)
+        await goto(pilot, "table")
+        await goto(pilot, "task11")
+        await settle(pilot)
+        note = str(app.screen.query_one("#zoom-note").render())
+        assert "step 1 of 4" in note  # the table filled: the steps have results

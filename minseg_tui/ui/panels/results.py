@@ -92,7 +92,13 @@ class ResultsPanel(ViewPanel[ResultsView]):
         if self.zoom is None or not v.steps:
             plot.set_axes("step log", "t [s]")
             plot.show([Trace(v.t, v.omega, "omega"), Trace(v.t, v.u, "u_A [V]", "dot", steps=True)])
-            note.update(f"run {v.run}: whole log, {len(v.steps)} rising steps · F9 zooms")
+            if v.steps:
+                said = f"{len(v.steps)} rising steps with results · f9 Zoom"
+            elif not v.lines:  # no results at all: Tasks 11-15 need the table's R, u_ss, i_ss
+                said = "no results yet: they need the table of Tasks 4-9 filled"
+            else:
+                said = "no rising step long enough to read results from"
+            note.update(f"run {v.run}: whole log, {said}")
             return
         w = v.steps[self.zoom]
         keep = (v.t >= w.z0) & (v.t <= w.z1)
