@@ -131,3 +131,17 @@ async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(qu
         await settle(pilot)
         note = str(app.screen.query_one("#zoom-note").render())
         assert "step 1 of 4" in note  # the table filled: the steps have results
+
+
+async def test_a_refusal_is_brought_into_view_whole(quiet):
+    """The last entry of Preparation 7 at 80x24: the refusal's last lines sat below the
+    visible area."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep7")
+        row = await type_in(pilot, "prep7.K", "4.7 zz")
+        await settle(pilot)
+        msg = row.query_one(".field-msg", Prose)
+        assert row.has_class("refused") and msg.size.height >= 2
+        assert app.screen.can_view_entire(msg)
