@@ -317,11 +317,17 @@ def new_session_folder(root: Path, base: str) -> tuple[Path, FileLock]:
     try:
         root.mkdir(parents=True, exist_ok=True)
         sid, k = base, 1
-        while exists(root / sid):
-            k += 1
-            sid = f"{base}-{k}"
-        folder = root / sid
-        (folder / RUNS_DIR).mkdir(parents=True)
+        while True:
+            folder = root / sid
+            try:
+                # mkdir is the claim: a name another program took between looking and making
+                # (a race) is passed over for the next free one, never an error
+                folder.mkdir()
+                break
+            except FileExistsError:
+                k += 1
+                sid = f"{base}-{k}"
+        (folder / RUNS_DIR).mkdir()
     except OSError as exc:
         raise SessionNotWritable(
             str(root),
