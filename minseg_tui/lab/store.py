@@ -218,6 +218,10 @@ def _load(path: Path) -> object:
         raise SessionDamaged(
             str(path), None, damaged_message(path, "is nested too deeply to be a session")
         ) from None
+    except ValueError as exc:  # a whole number longer than Python reads (4300 digits)
+        raise SessionDamaged(
+            str(path), None, damaged_message(path, f"holds a number too long to read ({exc})")
+        ) from None
 
 
 def _identity_problem(data: object) -> str | None:
@@ -408,6 +412,11 @@ def _info(folder: Path) -> SessionInfo | None:
     except InputError as exc:
         return SessionInfo(
             folder.name, folder, (), "", "", _mtime(path), damaged=str(exc), locked_by=locked_by
+        )
+    except Exception as exc:
+        why = damaged_message(path, f"cannot be read ({type(exc).__name__}: {exc})")
+        return SessionInfo(
+            folder.name, folder, (), "", "", _mtime(path), damaged=why, locked_by=locked_by
         )
     return SessionInfo(
         id=data["id"],
