@@ -133,6 +133,17 @@ class Identification:
         return out
 
 
+_HOW = {
+    "log": "the log's u",
+    "off": "the driver is off at 0 V",
+    "extrapolated": "below the driver's drop in the table",
+    "interpolated": "interpolated in the table",
+    "row": "the table's row",
+    "requested": "as requested",
+}
+"""How u_ss of a step was found (:func:`~.steady.u_ss_at`), in words."""
+
+
 def _step_result(
     log: StepLog,
     rows: tuple[Row, ...],
@@ -156,6 +167,14 @@ def _step_result(
     refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
     if refused:
         raise InputError(log.source, None, refused)
+    theta, angle_source = log.angle()
+    if not np.ptp(theta) > 0:  # nothing to fit: the least squares would divide by zero
+        raise InputError(
+            log.source,
+            None,
+            f"expected the wheel to turn; its angle ({angle_source}) never changes in the log, "
+            "so T, K and J cannot be found from it",
+        )
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise InputError(log.source, None, "expected a usable rising step")
@@ -169,6 +188,17 @@ def _step_result(
             u, how = u_ss_at(u_ss_table, s.u_req)
             u_used.append(u)
             hows.append(how)
+    for s, u, how_u in zip(steps, u_used, hows, strict=True):
+        if u == 0:  # K = omega_ss / u_ss has no value
+            at = "" if s.u_req is None else f"u_req = {s.u_req:g} V, "
+            raise InputError(
+                log.source,
+                s.line,
+                f"expected each rising step to put a voltage on the motor; the step at "
+                f"t = {s.t:.4g} s ends at {at}0 V on the motor ({_HOW[how_u]}), so K = "
+                "omega_ss / u_ss cannot be computed: record steps that end above the driver's "
+                "drop (steps that only go negative end at 0 V)",
+            )
     K_each = [s.omega_ss / u for s, u in zip(steps, u_used, strict=True)]
     K = float(np.median(K_each))
     omega_ss = float(np.median([s.omega_ss for s in steps]))
