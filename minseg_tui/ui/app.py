@@ -29,6 +29,7 @@ from textual.app import App, SystemCommand
 from textual.await_complete import AwaitComplete
 from textual.binding import Binding
 from textual.dom import DOMNode
+from textual.notifications import SeverityLevel
 from textual.reactive import reactive
 from textual.screen import Screen
 from textual.signal import Signal
@@ -216,6 +217,20 @@ class LabApp(App[None]):
         self._stop = threading.Event()
         if not config.animations:
             self.animation_level = "none"
+
+    def notify(
+        self,
+        message: str,
+        *,
+        title: str = "",
+        severity: SeverityLevel = "information",
+        timeout: float | None = None,
+        markup: bool = True,
+    ) -> None:
+        """Show a notification as plain text, whoever asks (a widget's ``notify`` asks with
+        markup on): the messages hold what was typed, refused text and file names, which
+        are shown as they are, never read as markup ('Cy [/]' was a MarkupError)."""
+        super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
 
     # -- start-up ---------------------------------------------------------------------
     def on_mount(self) -> None:

@@ -5,10 +5,18 @@ saved late."""
 
 from __future__ import annotations
 
+import json
+
+from textual.widgets import OptionList
+from textual.widgets._toast import Toast
+
 from minseg_tui.lab.session import Session
+from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.ui.widgets.status import DeviceStatus
 from tests.lab.test_identify_guards import CASES, ENTRIES, _log
-from tests.ui.helpers import goto, resume, settle
+from tests.ui.conftest import quiet_app
+from tests.ui.helpers import goto, resume, settle, start, type_in
 
 
 def _results(app) -> str:
@@ -31,3 +39,64 @@ async def test_a_step_without_k_says_what_is_missing_on_every_resume(quiet, tmp_
             await settle(pilot, lambda: "computing" not in _results(pilot.app))
             text = _results(pilot.app)
             assert words in text and "gives no step result" in text
+
+
+def _toasts(app) -> str:
+    return " ".join(str(t.render()) for t in app.screen.query(Toast))
+
+
+async def test_names_with_markup_are_shown_as_typed_and_keep_the_folder_open(tmp_path):
+    """'Cy [/], Di' as a group's names: every later start was a MarkupError; 'Ada [absent]'
+    was shown as 'Ada '."""
+    root = tmp_path / "sessions"
+    Session.create(root, ["Ada [absent]"], date="2024-04-15").close()
+    app = quiet_app(root)
+    async with app.run_test(size=(100, 40)) as pilot:
+        await start(pilot, "Cy [/], Di")
+    async with quiet_app(root).run_test(size=(100, 40)) as pilot:  # the next start
+        await settle(pilot, lambda: bool(pilot.app.screen.query("#sessions")))
+        sessions = pilot.app.screen.query_one("#sessions", OptionList)
+        labels = [str(sessions.get_option_at_index(k).prompt) for k in range(2)]
+        assert any("Cy [/], Di" in label for label in labels)
+        assert any("Ada [absent]" in label for label in labels)
+        await resume(pilot)
+        assert isinstance(pilot.app.screen, LabScreen)
+
+
+async def test_typed_and_refused_text_and_file_names_are_shown_as_they_are(tmp_path):
+    root = tmp_path / "sessions [bold]"
+    async with quiet_app(root).run_test(size=(100, 40), notifications=True) as pilot:
+        app = pilot.app
+        await start(pilot)
+        await goto(pilot, "task2")
+        row = await type_in(pilot, "R", "5 [red]x")  # refused: the message quotes it
+        assert "'5 [red]x'" in str(row.query(Prose).last().text)
+        await goto(pilot, "prep1", focus=None)
+        row = await type_in(pilot, "prep1.notes", "wheel [b]loose[/b]")
+        assert row.input.value == "wheel [b]loose[/b]"
+        root.rename(tmp_path / "gone")  # a save fails: the status names the folder
+        await type_in(pilot, "prep1.notes", "wheel [b]loose[/b] again")
+        status = str(app.screen.query_one(DeviceStatus).render())
+        assert "sessions [bold]" in status
+        # a notification that names a file with brackets in it
+        app.notify(f"cannot read {root}/[/]x.csv")
+        await settle(pilot)
+        assert "sessions [bold]/[/]x.csv" in _toasts(app)
+
+
+async def test_a_damaged_session_in_a_folder_with_brackets_is_named_as_it_is(tmp_path):
+    root = tmp_path / "sessions"
+    s = Session.create(root, ["Ada"], session_id="g [red]x", date="2024-04-16")
+    s.enter("R", "5.2")
+    s.close()
+    data = json.loads((s.folder / "session.json").read_text())
+    data["entries"]["R"]["history"] = 5
+    (s.folder / "session.json").write_text(json.dumps(data))
+    async with quiet_app(root).run_test(size=(120, 40), notifications=True) as pilot:
+        await settle(pilot, lambda: bool(pilot.app.screen.query("#sessions")))
+        label = str(
+            pilot.app.screen.query_one("#sessions", OptionList).get_option_at_index(0).prompt
+        )
+        assert "g [red]x" in label
+        await resume(pilot)
+        assert "g [red]x" in _toasts(pilot.app)
