@@ -100,3 +100,23 @@ async def test_a_damaged_session_in_a_folder_with_brackets_is_named_as_it_is(tmp
         assert "g [red]x" in label
         await resume(pilot)
         assert "g [red]x" in _toasts(pilot.app)
+
+
+async def test_a_long_integer_in_one_session_file_hides_no_other(tmp_path):
+    """A 401-digit whole number (OverflowError) or a 5000-digit one (ValueError) in one
+    session.json kept the TUI from starting at all."""
+    root = tmp_path / "sessions"
+    Session.create(root, ["Bo"], date="2024-04-14").close()
+    for digits, sid in ((401, "long-401"), (5000, "long-5000")):
+        s = Session.create(root, ["Ada"], session_id=sid, date="2024-04-16")
+        s.enter("R", "5.2")
+        s.close()
+        path = s.folder / "session.json"
+        text = path.read_text(encoding="utf-8").replace('"value": 5.2', '"value": ' + "9" * digits)
+        path.write_text(text, encoding="utf-8")
+    async with quiet_app(root).run_test(size=(160, 40)) as pilot:
+        await settle(pilot, lambda: bool(pilot.app.screen.query("#sessions")))
+        sessions = pilot.app.screen.query_one("#sessions", OptionList)
+        labels = [str(sessions.get_option_at_index(k).prompt) for k in range(3)]
+        assert sum("damaged" in label for label in labels) == 2
+        assert any("Bo" in label and "damaged" not in label for label in labels)
