@@ -128,5 +128,9 @@ def render(result: Identification) -> str:
     if result.observations:
         out += [f"- {f.message}" for f in result.observations]
     else:
-        out.append("- nothing unusual: the rows agree and the step fits the model.")
+        out.append(
+            "- nothing unusual: the rows agree and the step fits the model."
+            if s is not None
+            else "- nothing unusual: the rows agree (no step log, so no step to judge)."
+        )
     return "\n".join(out) + "\n"

@@ -134,14 +134,15 @@ class Identification:
 
 
 _HOW = {
-    "log": "the log's u",
     "off": "the driver is off at 0 V",
     "extrapolated": "below the driver's drop in the table",
+    "requested": "as requested",
     "interpolated": "interpolated in the table",
     "row": "the table's row",
-    "requested": "as requested",
+    "log": "the log's u",
 }
-"""How u_ss of a step was found (:func:`~.steady.u_ss_at`), in words."""
+"""How u_ss of a step was found (:func:`~.steady.u_ss_at`), in words of a step at 0 V;
+least direct first."""
 
 
 def _step_result(
@@ -203,7 +204,11 @@ def _step_result(
     K = float(np.median(K_each))
     omega_ss = float(np.median([s.omega_ss for s in steps]))
     u_ss = float(np.median(u_used))
-    how = hows[len(hows) // 2] if len(set(hows)) > 1 else hows[0]
+    # how the median u_ss was found: that of the step(s) in the middle by u_ss (not by time),
+    # the least direct of the two when the median is the mean of two found differently
+    order = sorted(range(len(u_used)), key=lambda k: u_used[k])
+    middle = {hows[order[len(order) // 2]], hows[order[(len(order) - 1) // 2]]}
+    how = next(h for h in (*_HOW, *middle) if h in middle)
     T = fit.T
     reads = [s.T_63 for s in steps if s.T_63 is not None]
     T_63 = float(np.median(reads)) if reads else None
