@@ -593,10 +593,14 @@ class LabApp(App[None]):
         with self.session as s:
             if s.readonly or s.save_problem is None:
                 return
+            runs = len(s.runs)
             saved = s.save()
+            kept = len(s.runs) != runs  # a run that finished while nothing could be written
         self._saved_or_not()
         if saved:
             self.notify("saved: everything is on disk again", title="session")
+        if kept:  # Task 10 and the results show it now, not once the group pages away
+            self.lab_changed.publish(None)
 
     def save_elsewhere(self, folder: str) -> str:
         """Save the session under ``folder`` and go on there; the one line to show."""

@@ -7,10 +7,12 @@ from __future__ import annotations
 
 import json
 
+import pytest
 from textual.widgets import OptionList
 from textual.widgets._toast import Toast
 
 from minseg_tui.lab.session import Session
+from minseg_tui.lab.store import SessionNotWritable
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.status import DeviceStatus
@@ -120,3 +122,30 @@ async def test_a_long_integer_in_one_session_file_hides_no_other(tmp_path):
         labels = [str(sessions.get_option_at_index(k).prompt) for k in range(3)]
         assert sum("damaged" in label for label in labels) == 2
         assert any("Bo" in label and "damaged" not in label for label in labels)
+
+
+async def test_task10_shows_a_run_saved_late_at_once(quiet, tmp_path):
+    """A run that finished while nothing could be written (a full disk, a stick pulled out)
+    is kept in memory and saved once the disk is back: Task 10 said 'no runs recorded yet'
+    until the group paged away and back."""
+    root = tmp_path / "sessions"
+    async with quiet().run_test(size=(100, 40)) as pilot:
+        app = pilot.app
+        await start(pilot)
+        await goto(pilot, "task10", focus=None)
+        status = app.screen.query_one("#run-status", Prose)
+        assert status.text == "no runs recorded yet"
+        with app.session as s:
+            rec = s.start_run("steps", ts=0.025)
+            for k in range(40):
+                rec.append(k, 25_000 * k, 3 * k, 2500 if k >= 4 else 0)
+            root.rename(tmp_path / "gone")  # the disk goes before the run is kept
+            with pytest.raises(SessionNotWritable):
+                s.finish_run(rec)
+        app.lab_changed.publish(None)  # as the app does once a run ends
+        await settle(pilot)
+        assert status.text == "no runs recorded yet"  # true: not kept yet
+        (tmp_path / "gone").rename(root)
+        app.retry_save()
+        await settle(pilot, lambda: status.text != "no runs recorded yet")
+        assert status.text.startswith("steps-1 (40 samples")
