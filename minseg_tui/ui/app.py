@@ -15,7 +15,9 @@ loop never waits on the board.
 
 from __future__ import annotations
 
+import asyncio
 import datetime as _dt
+import signal
 import threading
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -140,6 +142,11 @@ METER_PERIOD = 0.25
 SAVE_RETRY = 3.0
 """While the session cannot be saved, it is tried again this often, s."""
 
+TERMINATING: tuple[int, ...] = tuple(
+    sig for sig in (getattr(signal, "SIGTERM", None), getattr(signal, "SIGHUP", None)) if sig
+)
+"""The signals that end the app as Ctrl+Q does (what stands in the entries stored first)."""
+
 WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error", "silent"})
 """Link events that end the wait for the wheel to stand before a run (no run starts)."""
 
@@ -215,6 +222,7 @@ class LabApp(App[None]):
         """The wait for the wheel to stand before a run (None: no run waits)."""
         self._pending_plan: str | None = None
         self._stop = threading.Event()
+        self._signals: list[int] = []  # the terminating signals the app answers
         if not config.animations:
             self.animation_level = "none"
 
@@ -245,6 +253,33 @@ class LabApp(App[None]):
         self.push_screen(start.data_bind(LabApp.device, LabApp.link, LabApp.motor))
         self._connect(self.config.device)
         self.set_interval(SAVE_RETRY, self.retry_save)
+        self._catch_signals()
+
+    def _catch_signals(self) -> None:
+        """SIGTERM and SIGHUP (a shutdown, a closed terminal window, ``kill``) end the app
+        the way Ctrl+Q does: :meth:`terminated`. Where the loop cannot take them (not the
+        main thread, another platform) they keep their default."""
+        loop = asyncio.get_running_loop()
+        for signum in TERMINATING:
+            try:
+                loop.add_signal_handler(signum, self.terminated, signum)
+            except (NotImplementedError, RuntimeError, ValueError):
+                continue
+            self._signals.append(signum)
+
+    def terminated(self, signum: int) -> None:
+        """A terminating signal: store what stands in the entries, save the session (what
+        cannot be saved is lost with the program, as with 'quit anyway'), then exit as Ctrl+Q
+        does, with the terminal restored; the exit status is 128 + the signal's number, as
+        the shell expects of a program that a signal ended (143 for SIGTERM)."""
+        screen = self._lab_screen()
+        if screen is not None:
+            screen.store_typed()
+        if self.session is not None:
+            with self.session as s:
+                if not s.readonly and s.unsaved:
+                    s.save()
+        self.exit(return_code=128 + signum)
 
     @work(thread=True, exclusive=True, group="connect", name="open device")
     def _connect(self, spec: str) -> None:
@@ -866,6 +901,10 @@ class LabApp(App[None]):
 
     def on_unmount(self) -> None:
         self._stop.set()
+        loop = asyncio.get_running_loop()
+        for signum in self._signals:
+            loop.remove_signal_handler(signum)
+        self._signals.clear()
         if self.recording is not None:
             self.finish_run("app closed")
         if self._device is not None:
