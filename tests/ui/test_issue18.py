@@ -11,13 +11,17 @@ import pytest
 from textual.widgets import OptionList
 from textual.widgets._toast import Toast
 
+from minseg_tui.device.protocol import Ident
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.store import SessionNotWritable
+from minseg_tui.ui.panels.connect import ConnectPanel
+from minseg_tui.ui.panels.report import ReportPanel
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.status import DeviceStatus
 from tests.lab.test_identify_guards import CASES, ENTRIES, _log
 from tests.ui.conftest import quiet_app
+from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import goto, resume, settle, start, type_in
 
 
@@ -149,3 +153,24 @@ async def test_task10_shows_a_run_saved_late_at_once(quiet, tmp_path):
         app.retry_save()
         await settle(pilot, lambda: status.text != "no runs recorded yet")
         assert status.text.startswith("steps-1 (40 samples")
+
+
+async def test_a_board_and_report_files_with_brackets_are_named_as_they_are(tmp_path):
+    """What a board says of itself (its name, firmware) and its port, and the report's file
+    names, hold text nobody here chose: shown as is, never as markup."""
+    dev = QuietDevice(seed=1)
+    dev.ident = Ident("fw [/] 1.0.0", 1, "Mega [red]", 720, 25000, 9000, "BRAKE")
+    dev.port = "/dev/tty[/]0"
+    dev.board = None  # a real board, as far as the app can tell
+    async with quiet_app(tmp_path / "sessions", dev).run_test(size=(120, 40)) as pilot:
+        app = pilot.app
+        await settle(pilot, lambda: app.device is not None)
+        await start(pilot)
+        await goto(pilot, "task1", focus=None)
+        said = str(app.screen.query_one(ConnectPanel).render())
+        assert "Mega [red] on /dev/tty[/]0, firmware fw [/] 1.0.0" in said
+        assert "/dev/tty[/]0" in str(app.screen.query_one(DeviceStatus).render())
+        await goto(pilot, "summary", focus=None)
+        app.screen.exported = (f"{tmp_path}/[/]report.md",)
+        await settle(pilot)
+        assert f"{tmp_path}/[/]report.md" in str(app.screen.query_one(ReportPanel).render())
