@@ -212,6 +212,8 @@ class EntryMap(MapOf):
                 return f"{at}: expected the chosen options (a list), got {_show(v)}"
             if any(k >= len(fld.options) for k in v):
                 return f"{at}: expected options below {len(fld.options)}, got {_show(v)}"
+            if len(v) > 1 and not fld.multiple:
+                return f"{at}: expected one option (one answer), got {_show(v)}"
             return None
         if not isinstance(v, int | float) or isinstance(v, bool):
             return f"{at}: expected a number (a {fld.kind} field), got {_show(v)}"
