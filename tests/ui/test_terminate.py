@@ -106,3 +106,25 @@ def test_a_terminating_signal_stores_the_entry_and_gives_the_terminal_back(tmp_p
     assert info.locked_by is None and info.damaged is None
     data = json.loads((info.path / "session.json").read_text(encoding="utf-8"))
     assert data["entries"]["prep1.notes"]["text"] == "wheel [b]loose"
+
+
+def test_a_hangup_after_the_window_closed_still_stores_the_entry(tmp_path):
+    """The terminal window closed first (nothing can be written to it any more), then SIGHUP."""
+    root = tmp_path / "sessions"
+    tui = Pty(root)
+    try:
+        tui.until(b"New session")
+        tui.write(b"Ada\r")
+        tui.until(b"reading")
+        tui.write(b"\x1b[200~window closed\x1b[201~")
+        tui.until(b"window closed")
+        os.close(tui.master)
+        os.kill(tui.proc.pid, signal.SIGHUP)
+        code = tui.proc.wait(GUARD)
+    finally:
+        tui.close()
+    assert code == 128 + signal.SIGHUP
+    (info,) = list_sessions(root)
+    assert info.locked_by is None
+    data = json.loads((info.path / "session.json").read_text(encoding="utf-8"))
+    assert data["entries"]["prep1.notes"]["text"] == "window closed"
