@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from minseg_tui.cli import main
+from minseg_tui.lab import views
 from minseg_tui.lab.files import write_step_log
 from minseg_tui.lab.session import Session
 from minseg_tui.model.motor import MotorParams
@@ -81,3 +82,22 @@ def test_the_session_and_report_say_what_is_missing_and_reopen(tmp_path, capsys,
     capsys.readouterr()
     (md,) = folder.glob("*.md")
     assert words in md.read_text(encoding="utf-8")
+
+
+def test_a_recorded_run_whose_count_never_changes_is_shown_without_a_fit(tmp_path):
+    """An encoder not read while Task 10 records: every count 0. Task 10's view of the run
+    was a ZeroDivisionError (the fit of T divided by a residual of zero)."""
+    with Session.create(tmp_path / "sessions", ["Ada"], date="2026-11-26") as s:
+        for key, text in ENTRIES.items():
+            s.enter(key, text)
+        rec = s.start_run("steps", ts=0.025)
+        for k in range(400):
+            rec.append(k, 25_000 * k, 0, 4500 if (k // 80) % 2 == 0 and k >= 4 else 0)
+        info = s.finish_run(rec)
+        assert info is not None
+        (view,) = views.runs(s)
+        assert view.name == info.name and view.T_ls is None and view.T_63 is None
+        problems = " ".join(s.results().problems)
+        assert f"run {info.name} gives no step result" in problems
+        assert "omega stays at 0 rad/s" in problems
+        assert views.results(s, "task11").problems

@@ -98,12 +98,15 @@ class TimeConstantFit:
 
 
 def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
-    """Least-squares T over the usable rising steps of ``log`` (None if there are none)."""
+    """Least-squares T over the usable rising steps of ``log`` (None if there are none, or
+    if the angle never changes: an encoder not read gives nothing to fit)."""
     windows, _ = step_windows(log)
     if not windows:
         return None
     t = log.board_time()
     theta, angle_source = log.angle()
+    if not np.ptp(theta) > 0:  # no residual to compare the fits by: it would divide by zero
+        return None
     u = np.asarray(log.u, dtype=float)
     ts = log.ts
     steps_fit = fit_windows(t, theta, windows, ts)
@@ -254,7 +257,7 @@ def rising_steps(log: StepLog, fit: TimeConstantFit | None = None) -> list[Risin
     if not windows:
         return []
     fit = fit if fit is not None else fit_time_constant(log)
-    if fit is None:  # cannot happen with usable windows
+    if fit is None:  # the angle never changes
         return []
     _, name = command(log)
     omega = np.asarray(log.omega, dtype=float)
