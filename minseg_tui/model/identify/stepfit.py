@@ -124,10 +124,11 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
     if whole is not None:
         on_steps = whole.residuals[steps_fit.rows]
         rms = math.sqrt(dot(on_steps, on_steps) / max(n_w, 1))
-        if rms <= ADEQUATE * sigma_w:
+        if rms <= ADEQUATE * sigma_w and sigma_w > 0:  # (0: the steps fit exactly, no scale)
             return _from_whole(log, whole, windows, theta, angle_source, time_source, rms, sigma_w)
+        times = f"{rms / sigma_w:.1f} times" if sigma_w > 0 else "more than"
         why = (
-            f"the first-order model over the whole log leaves {rms / sigma_w:.1f} times the "
+            f"the first-order model over the whole log leaves {times} the "
             "residual of the steps fitted one by one (the wheel between the steps does not "
             "follow it: coasting at zero command, or a speed that wanders), so T comes from "
             "the rising steps alone"
