@@ -7,9 +7,11 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   once as a :class:`~minseg_tui.device.samples.SampleBatch` (numpy arrays). The buffer is
   bounded (``capacity``); if nobody takes samples for that long the oldest go and
   ``stats.overflow`` counts them.
-- A corrupt line (bad checksum or format, or a sample whose seq or time no real gap
-  explains: :mod:`minseg_tui.device.timebase`) is counted in ``stats.corrupt`` and
-  dropped; a gap in ``seq`` is counted in ``stats.dropped``. Neither ever becomes a sample.
+- A corrupt line (bad checksum or format, or a sample whose seq, time or count no real
+  gap explains: :mod:`minseg_tui.device.timebase`) is counted in ``stats.corrupt`` and
+  dropped; so is an old sample line sent again (a USB hub or bridge replaying a block:
+  seq goes back with no restart), counted in ``stats.replayed`` too; a gap in ``seq`` is
+  counted in ``stats.dropped``. None of them ever becomes a sample.
 - ``seq`` and ``t_us`` are unwrapped (uint32 on the wire, int64 here). Each connection
   (the board resets when the port opens) is an *epoch*: across epochs seq continues at
   +1 and t_us continues by the host's estimate of the gap (the one place the host clock
@@ -77,12 +79,15 @@ class LinkEvent:
 
 @dataclass
 class LinkStats:
-    """Counters since open: samples kept, dropped (seq gaps), corrupt lines, overflow
-    (samples pushed out of a full buffer), reconnects, lines received."""
+    """Counters since open: samples kept, dropped (seq gaps), corrupt lines (every line
+    refused: bad checksum or format, impossible samples, old lines sent again), replayed
+    (of those, the old sample lines sent again), overflow (samples pushed out of a full
+    buffer), reconnects, lines received."""
 
     samples: int = 0
     dropped: int = 0
     corrupt: int = 0
+    replayed: int = 0
     overflow: int = 0
     reconnects: int = 0
     lines: int = 0
@@ -325,6 +330,8 @@ class Link:
             self._u_req, self._step_low = None, int(ok.values[0]) / 1000.0
         elif ok.command == "STOP":
             self._u_req = 0.0
+        elif ok.command == "Z":
+            self._timeline.count_zeroed()
 
     @property
     def u_req(self) -> float | None:
@@ -526,13 +533,16 @@ class Link:
             target.done.set()
 
     def _new_epoch(self) -> None:
+        if self.ident is not None and self.ident.cpr > 0:
+            self._timeline.cpr = self.ident.cpr
         self._timeline.new_epoch()
 
     def _on_sample(self, s: P.SampleLine) -> None:
         tl = self._timeline
         rows = tl.place(s, self._clock(), time.monotonic())
         self.stats.dropped = tl.dropped
-        self.stats.corrupt = self._bad_lines + tl.refused + tl.repeated
+        self.stats.replayed = tl.replayed + tl.repeated
+        self.stats.corrupt = self._bad_lines + tl.refused + tl.replayed + tl.repeated
         if not rows:
             return
         with self._lock:
