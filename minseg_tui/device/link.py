@@ -154,6 +154,8 @@ class Link:
         self._thread: threading.Thread | None = None
         self._clock: Callable[[], float] = time.monotonic
         self._timeline = Timeline()
+        self._epoch_said = -1  # the last epoch the link has said (connected, boot)
+        self._boot_fw: str | None = None  # the fw of a $BOOT not yet confirmed
         self._bad_lines = 0  # lines that failed the checksum or the format
         self._last_rx = 0.0
         self._last_tx = 0.0
@@ -506,10 +508,10 @@ class Link:
         elif isinstance(msg, P.EvStepDone):
             self._u_req = self._step_low
             self._emit("stepdone", "step sequence done")
-        elif isinstance(msg, P.Boot):
-            self._new_epoch()
-            self._emit("boot", f"{self.port}: the board restarted ({msg.fw})")
-            self._motor_off(f"{self.port}: the board restarted")
+        elif isinstance(msg, P.Boot):  # said once the samples show it (timebase.boot)
+            self._boot_fw = msg.fw
+            self._timeline.boot()
+            self._said_restart()
 
     def _on_reply(self, msg: P.Message) -> None:
         if isinstance(msg, P.Ok):
@@ -533,16 +535,35 @@ class Link:
             target.done.set()
 
     def _new_epoch(self) -> None:
+        """A new connection: a new epoch, said by the caller (connected)."""
         if self.ident is not None and self.ident.cpr > 0:
             self._timeline.cpr = self.ident.cpr
         self._timeline.new_epoch()
+        self._epoch_said = self._timeline.epoch
+        self._boot_fw = None
+
+    def _said_restart(self) -> None:
+        """Say a restart the timeline has taken (a $BOOT confirmed, or one whose $BOOT was
+        lost): the motor is off."""
+        tl = self._timeline
+        if tl.epoch == self._epoch_said:
+            return
+        self._epoch_said = tl.epoch
+        fw, self._boot_fw = self._boot_fw, None
+        what = f"({fw})" if fw is not None else "(its $BOOT line was lost)"
+        self._emit("boot", f"{self.port}: the board restarted {what}")
+        self._motor_off(f"{self.port}: the board restarted")
 
     def _on_sample(self, s: P.SampleLine) -> None:
         tl = self._timeline
         rows = tl.place(s, self._clock(), time.monotonic())
+        self._said_restart()
+        if not tl.boot_pending:
+            self._boot_fw = None
         self.stats.dropped = tl.dropped
-        self.stats.replayed = tl.replayed + tl.repeated
-        self.stats.corrupt = self._bad_lines + tl.refused + tl.replayed + tl.repeated
+        replayed = tl.replayed + tl.repeated + tl.false_boots
+        self.stats.replayed = replayed
+        self.stats.corrupt = self._bad_lines + tl.refused + replayed
         if not rows:
             return
         with self._lock:

@@ -188,6 +188,8 @@ class Timeline:
         self._held: list[_Seen] = []
         self._count_free = False  # the count was zeroed: the next step may jump
         self._early: set[tuple[int, int]] = set()  # raw (seq, t_us) kept near a reset
+        self._boot_pending = False  # a $BOOT came; the restart waits for its time base
+        self.false_boots = 0
 
     @property
     def period_us(self) -> float | None:
@@ -195,12 +197,29 @@ class Timeline:
         return self._period
 
     def new_epoch(self) -> None:
-        """The board restarted (a ``$BOOT`` line, a reconnect): what comes next starts anew."""
+        """The board restarted (a reconnect, a confirmed ``$BOOT``): what comes next starts
+        anew."""
         self.epoch += 1
+        self._boot_pending = False
         self._drop_held()
         self._ref = None
         self._learn_anew()
         self._count_free = False
+
+    @property
+    def boot_pending(self) -> bool:
+        """A ``$BOOT`` came and the samples have not yet shown whether it was a restart."""
+        return self._boot_pending
+
+    def boot(self) -> None:
+        """A ``$BOOT`` line came. It is a restart once the samples after it show a time base
+        that starts again (:func:`starts_again`, or a chain that does not go on); a sample
+        that still fits the last kept one means it was an old line sent again (counted in
+        ``false_boots``), and nothing restarts."""
+        if self._ref is None:
+            self.new_epoch()
+        else:
+            self._boot_pending = True
 
     def count_zeroed(self) -> None:
         """The board zeroed its encoder count (``$OK,Z``): the next sample's count may jump."""
@@ -256,7 +275,13 @@ class Timeline:
                 return []
             if self._fits(ref, seen, dseq, dt):
                 self._drop_held()
+                if self._boot_pending:  # the stream went on: that $BOOT was an old line
+                    self._boot_pending = False
+                    self.false_boots += 1
                 return [self._keep(seen, dseq, dt)]
+            if self._boot_pending and starts_again(line):
+                self.new_epoch()  # the $BOOT, and a time base that starts again
+                ref = None
         if self._held and self._next_of(self._held[-1], seen):
             self._held.append(seen)
             if len(self._held) > HOLD_MAX:  # a replay longer than any buffer: its oldest go
@@ -289,28 +314,19 @@ class Timeline:
                 self.renumbered += 1
                 first = self._keep(chain[0], 1, dt)
             return self._chain(first, chain)
-        if self._restarted(ref, chain):
+        if self._restarted(chain):
             self._held = []
             self.new_epoch()  # the board restarted and its $BOOT never came
             return self._chain(self._start(chain[0]), chain)
         return []  # held: a replay until the stream goes on, or a restart seen live
 
-    def _restarted(self, ref: _Seen, chain: list[_Seen]) -> bool:
-        """A chain whose time does not go on is a restart (see the module): its time base
-        starts again, it is not the last kept sample's time base (old lines of this
-        epoch) and none of it is a copy of a kept line; or it ran live long enough."""
-        if chain[-1].clock - chain[0].clock >= RESTART_S:
+    def _restarted(self, chain: list[_Seen]) -> bool:
+        """A chain whose time does not go on is a restart (see the module): a ``$BOOT``
+        came before it; or its time base starts again and none of it is a copy of a kept
+        line (old lines of an epoch's start); or it ran live long enough."""
+        if self._boot_pending or chain[-1].clock - chain[0].clock >= RESTART_S:
             return True
-        first = chain[0]
-        if not starts_again(first.line):
-            return False
-        back_seq, back_t = _steps(first, ref)
-        period = self._period
-        if (
-            period is not None
-            and back_seq < _HALF
-            and abs(back_t - back_seq * period) <= tolerance_us(back_seq, period)
-        ):
+        if not starts_again(chain[0].line):
             return False
         return not any((s.line.seq, s.line.t_us) in self._early for s in chain)
 

@@ -239,3 +239,58 @@ def test_a_block_of_lines_with_seq_plus_5_is_no_restart(scripted):
         assert link.stats.dropped <= 5 and link.stats.corrupt == 0
     finally:
         link.close()
+
+
+def test_an_old_boot_line_sent_again_is_no_restart(scripted):
+    """A $BOOT line replayed mid-stream (the stream goes on as before): no restart, no
+    'motor off', the line counted as replayed."""
+    rng = np.random.default_rng(12)
+    true = step_run(200, rng)
+    link = _open(scripted)
+    try:
+        link.events()
+        scripted.send(*true[:100], P.Boot("minseg-fw 2.0.0", P.PROTOCOL_VERSION), *true[100:])
+        got: list[SampleBatch] = []
+        assert wait_for(lambda: got.append(link.samples()) or sum(map(len, got)) >= 200)
+        batch = SampleBatch.concat(got)
+        assert batch.seq.tolist() == [s.seq for s in true]
+        assert set(batch.epoch.tolist()) == {0}
+        assert [e.kind for e in link.events()] == []
+        assert link.stats.replayed == 1 and link.stats.corrupt == 1
+    finally:
+        link.close()
+
+
+def test_a_real_boot_is_a_restart_said_once_its_samples_start_again(scripted):
+    rng = np.random.default_rng(13)
+    true = step_run(100, rng)
+    again = [P.SampleLine(k, 1_500_000 + PERIOD * (k + 1), 0, 0) for k in range(50)]
+    link = _open(scripted)
+    try:
+        link.events()
+        scripted.send(*true, P.Boot("minseg-fw 2.0.0", P.PROTOCOL_VERSION), *again)
+        got: list[SampleBatch] = []
+        assert wait_for(lambda: got.append(link.samples()) or sum(map(len, got)) >= 150)
+        batch = SampleBatch.concat(got)
+        assert batch.epoch.tolist() == [0] * 100 + [1] * 50
+        assert batch.count.tolist()[100:] == [0] * 50
+        kinds = [e.kind for e in link.events()]
+        assert kinds.count("boot") == 1
+        assert link.stats.corrupt == 0 and link.stats.dropped == 0
+    finally:
+        link.close()
+
+
+def test_a_restart_whose_boot_line_was_lost_is_said(scripted):
+    rng = np.random.default_rng(14)
+    true = step_run(100, rng)
+    again = [P.SampleLine(k, 1_500_000 + PERIOD * (k + 1), 0, 0) for k in range(50)]
+    link = _open(scripted)
+    try:
+        link.events()
+        scripted.send(*true, *again)
+        assert wait_for(lambda: link.stats.samples >= 150)
+        (boot,) = [e for e in link.events() if e.kind == "boot"]
+        assert "its $BOOT line was lost" in boot.message
+    finally:
+        link.close()
