@@ -33,6 +33,10 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     ),
     "ports": ("minseg_tui.cli.ports", "list serial ports and say which looks like a MinSeg"),
     "sim": ("minseg_tui.cli.sim", "run a virtual MinSeg on a pseudo-terminal"),
+    "flash": (
+        "minseg_tui.cli.flash",
+        "write the lab firmware to a MinSeg with avrdude and check that it answers",
+    ),
     "report": ("minseg_tui.cli.report", "write a session's report (Markdown, HTML, CSV)"),
     "tui": ("minseg_tui.cli.tui", "start the lab assistant (the default)"),
 }

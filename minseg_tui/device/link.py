@@ -65,7 +65,20 @@ EVENT_KINDS = (
     "error",
     "motor",
 )
-FLASH_HINT = "flash the firmware shipped with this minseg-tui (make -C firmware upload)"
+FLASH_HINT = (
+    "flash the firmware shipped with this minseg-tui: minseg-tui flash "
+    "(from the sources: make -C firmware upload)"
+)
+
+
+def flash_hint(port: str) -> str:
+    """FLASH_HINT with the port filled in (a device path; a URL has nothing to flash)."""
+    if "://" in port:
+        return FLASH_HINT
+    return (
+        f"flash the firmware shipped with this minseg-tui: minseg-tui flash --port {port} "
+        f"(from the sources: make -C firmware upload PORT={port})"
+    )
 
 
 @dataclass(frozen=True)
@@ -161,6 +174,7 @@ class Link:
         self._last_tx = 0.0
         self._silent = False
         self._gave_up = False
+        self._heard = 0  # bytes received during the last handshake
 
     # -- opening and closing -------------------------------------------------------------
     def open(self) -> P.Ident:
@@ -237,6 +251,7 @@ class Link:
         buf = b""
         while self._clock() < until:
             data: bytes = ser.read(max(1, ser.in_waiting))
+            self._heard += len(data)
             buf += data
             *lines, buf = buf.split(b"\n")
             for raw in lines:
@@ -252,11 +267,12 @@ class Link:
             newer = " or update minseg-tui" if proto > P.PROTOCOL_VERSION else ""
             raise DeviceError(
                 f"{self.port}: the board's firmware ({fw}) speaks protocol {proto}, this "
-                f"minseg-tui speaks protocol {P.PROTOCOL_VERSION}: {FLASH_HINT}{newer}"
+                f"minseg-tui speaks protocol {P.PROTOCOL_VERSION}: {flash_hint(self.port)}{newer}"
             )
 
     def _handshake(self, ser: Any) -> P.Ident:
         """Wait for $BOOT (or any valid line from a running board), then ID and check it."""
+        self._heard = 0  # bytes received during this handshake
 
         def first(line: str) -> bool:
             if line.startswith(("$BOOT,", "$ID,")):
@@ -284,9 +300,14 @@ class Link:
             assert isinstance(ident, P.Ident)
             self._last_rx = self._clock()
             return ident
+        if self._heard:  # bytes came, none of them a line of ours: another program runs there
+            raise DeviceError(
+                f"{self.port}: this board does not run the lab firmware (it sends data, but no "
+                f"line minseg-tui can read: still Simulink's program?): {flash_hint(self.port)}"
+            )
         raise DeviceError(
-            f"no MinSeg answered on {self.port} (no $ID reply to ID): is it the right port, "
-            f"and does the board run the minseg firmware? ({FLASH_HINT})"
+            f"no MinSeg answered on {self.port} (nothing came back to ID): is it the right port? "
+            f"A board still running Simulink's program may be silent too: {flash_hint(self.port)}"
         )
 
     # -- commands -------------------------------------------------------------------------
