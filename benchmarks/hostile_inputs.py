@@ -80,13 +80,21 @@ def _late_steps_sane(out: str) -> bool:
     return True
 
 
+ORIGINALS = {
+    "notes.txt": b"our notes\n",
+    "session.json": b'{"kind": "minseg-session"}\n',
+}
+"""Files a case must leave as they are (``log.csv`` is added when it is written)."""
+
+
 def _files(d: Path) -> None:
     (d / "table.csv").write_text(TABLE)
-    (d / "notes.txt").write_text("our notes\n")
-    (d / "session.json").write_text('{"kind": "minseg-session"}\n')
+    for name, data in ORIGINALS.items():
+        (d / name).write_bytes(data)
     (d / "folder").mkdir()
     log = make_log("none", param=0, seed=3)
     write_step_log(d / "log.csv", StepLog(t=log.t, u=log.u, omega=log.omega))
+    ORIGINALS["log.csv"] = (d / "log.csv").read_bytes()
     rng = np.random.default_rng(1)
     noisy = np.round(log.u + rng.normal(0.0, 0.01, log.u.size), 2)
     write_step_log(d / "noisy_u.csv", StepLog(t=log.t, u=noisy, omega=log.omega))
@@ -172,7 +180,11 @@ def cli_cases() -> list[Case]:
 
 def run_cli_case(case: Case, d: Path) -> str:
     """The outcome of one case (one of OUTCOMES)."""
-    before = {k: (d / k).read_bytes() for k in case.keep}
+    before = {k: ORIGINALS[k] for k in case.keep}
+    for k, data in before.items():  # as made, whatever an earlier case did to it
+        if os.path.lexists(d / k):
+            os.unlink(d / k)
+        (d / k).write_bytes(data)
     argv = [*_cli(), *(a.replace("{d}", str(d)) for a in case.argv)]
     limit = case.limit_mib * 2**20
 
