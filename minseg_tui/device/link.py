@@ -25,7 +25,9 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   supply and zero mode and says ``connected``. The motor voltage is never restored (the
   safe default is motor off): :attr:`Link.u_req` becomes 0 and, if the motor was on, a
   ``motor`` event says so in one line, for the status line. A ``$BOOT`` mid-stream (the
-  board restarted by itself) does the same.
+  board restarted by itself) does the same once the samples after it start a new time
+  base (an old ``$BOOT`` sent again is counted as replayed, and changes nothing); so does a
+  restart whose ``$BOOT`` was lost.
 - One program per board (:mod:`minseg_tui.device.port`): a second minseg-tui gets
   "in use by minseg-tui (pid N)", a plain serial monitor cannot open the port.
 - Keep-alive: a PING every ``keepalive_s`` (0.25 s), so the board's 1 s watchdog stays

@@ -4,8 +4,9 @@ refusing a sample no real gap explains.
 The board numbers its samples (``seq``, uint32) and stamps them with its ``micros()``
 (``t_us``, uint32); both wrap. :class:`Timeline` turns them into int64 that only grow,
 counts the samples lost on the way (gaps in seq), and starts a new *epoch* when the board
-restarts (the link says so on ``$BOOT`` and on a reconnect), continuing seq at +1 and
-t_us by the host's estimate of the pause: the one place the host clock enters.
+restarts (on a reconnect; on a ``$BOOT`` once the samples after it start a new time base,
+:meth:`Timeline.boot`, as an old ``$BOOT`` sent again is no restart), continuing seq at +1
+and t_us by the host's estimate of the pause: the one place the host clock enters.
 
 A line can pass the checksum and still be false (digits swapped or lost), or be true and
 old (a USB hub or a serial bridge sending a block of lines again). A sample is kept at
