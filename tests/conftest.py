@@ -5,8 +5,6 @@ import pytest
 
 from tests.shared_data import absent_reason, required
 
-_not_run: list[str] = []
-
 
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "shared_data: reads ../shared/data (real motor logs)")
@@ -20,13 +18,18 @@ def pytest_runtest_setup(item: pytest.Item) -> None:
         return
     if required():
         pytest.fail(f"CI=true and {reason.removeprefix('not run: ')}", pytrace=False)
-    _not_run.append(item.nodeid)
     pytest.skip(reason)
 
 
 def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
-    if _not_run:
+    # counted from the reports, which also come back from pytest-xdist's workers
+    not_run = [
+        r
+        for r in terminalreporter.stats.get("skipped", [])
+        if "is not beside this clone" in str(getattr(r, "longrepr", ""))
+    ]
+    if not_run:
         terminalreporter.write_line(
-            f"{len(_not_run)} tests that read ../shared/data were not run: "
+            f"{len(not_run)} tests that read ../shared/data were not run: "
             "it is not beside this clone (CI always has it)"
         )

@@ -33,6 +33,10 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     ),
     "ports": ("minseg_tui.cli.ports", "list serial ports and say which looks like a MinSeg"),
     "sim": ("minseg_tui.cli.sim", "run a virtual MinSeg on a pseudo-terminal"),
+    "board-check": (
+        "minseg_tui.cli.board_check",
+        "does the wheel turn when asked, and does the count follow it?",
+    ),
     "flash": (
         "minseg_tui.cli.flash",
         "write the lab firmware to a MinSeg with avrdude and check that it answers",

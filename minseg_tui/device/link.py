@@ -37,6 +37,7 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import re
 import threading
 import time
@@ -314,7 +315,7 @@ class Link:
 
     # -- commands -------------------------------------------------------------------------
     def command(self, cmd: P.Message | str, timeout: float | None = None) -> P.Message:
-        """Send a command and return the board's reply ($OK, $ERR, $ID or $METER).
+        """Send a command and return the board's reply ($OK, $ERR, $ID, $DIAG or $METER).
 
         ``cmd`` is a protocol message or a line as a student would type it ("V,2500").
         Raises DeviceError when not connected or no reply came within the timeout, and
@@ -357,6 +358,10 @@ class Link:
             self._u_req = 0.0
         elif ok.command == "Z":
             self._timeline.count_zeroed()
+        elif ok.command == "DIR" and len(ok.values) == 2 and self.ident is not None:
+            self.ident = dataclasses.replace(
+                self.ident, enc_dir=ok.values[0], motor_dir=ok.values[1]
+            )
 
     @property
     def u_req(self) -> float | None:
@@ -432,6 +437,19 @@ class Link:
     def set_stream(self, on: bool) -> P.Ok:
         """Sample stream on or off."""
         return self._ok(P.SetStream(on))
+
+    def set_direction(self, enc: str, motor: str) -> P.Ok:
+        """The encoder's counting direction and the motor's polarity, "FWD" or "REV" each;
+        the board keeps them (EEPROM) and :attr:`ident` follows."""
+        return self._ok(P.SetDirection(enc.upper(), motor.upper()))
+
+    def diag(self) -> P.Diag:
+        """The board's $DIAG: encoder pin levels and edges per connector, the one in use."""
+        reply = self.command(P.ReadDiag())
+        if not isinstance(reply, P.Diag):
+            what = f"{reply.code} {reply.detail}".rstrip() if isinstance(reply, P.Err) else reply
+            raise DeviceError(f"{self.port}: the board did not answer DIAG ({what})")
+        return reply
 
     def meter(self) -> MeterReading | None:
         """The multimeter on M1A/M1B (virtual board only): u_A (V), i (A), R (ohm); else None."""
@@ -521,7 +539,7 @@ class Link:
             self._emit("alive", f"{self.port}: the board answers again")
         if isinstance(msg, P.SampleLine):
             self._on_sample(msg)
-        elif isinstance(msg, P.Ok | P.Err | P.Ident | P.Meter):
+        elif isinstance(msg, P.Ok | P.Err | P.Ident | P.Meter | P.Diag):
             self._on_reply(msg)
         elif isinstance(msg, P.EvWatchdog):
             self._u_req = 0.0
@@ -544,6 +562,8 @@ class Link:
             name = "ID"
         elif isinstance(msg, P.Meter):
             name = "METER"
+        elif isinstance(msg, P.Diag):
+            name = "DIAG"
         else:
             assert isinstance(msg, P.Err)
             name = msg.detail
