@@ -50,8 +50,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Read the files, compute, print. InputError reaches the dispatcher (exit 2)."""
+    if args.step == "":
+        raise InputError("--step", None, "expected a step log file name, got ''")
     readings = read_table(args.table)
-    log = read_step_log(args.step) if args.step else None
+    log = read_step_log(args.step) if args.step is not None else None
     try:
         result = identify(readings, args.R, log, source=args.table)
     except (ArithmeticError, ValueError) as exc:  # numpy's LinAlgError is a ValueError
