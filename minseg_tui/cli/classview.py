@@ -21,7 +21,7 @@ from pathlib import Path
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab import classview
+from minseg_tui.lab import classread
 from minseg_tui.lab.classview import QUANTITIES, ClassView
 from minseg_tui.lab.store import atomic_write_text, os_reason
 from minseg_tui.report import class_content, html, markdown
@@ -44,6 +44,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         type=Path,
         default=None,
         help="also write class.md, class.html and class.csv into DIR (made if needed)",
+    )
+    parser.add_argument(
+        "--workers",
+        metavar="N",
+        type=int,
+        default=None,
+        help="processes for the sessions not read before (default: the CPUs; 1: none)",
     )
 
 
@@ -107,7 +114,11 @@ def write(view: ClassView, out: Path) -> tuple[Path, ...]:
 
 def run(args: argparse.Namespace) -> int:
     """Show (and write) the class view; 2 when a session could not be read at all."""
-    view = classview.build(args.sessions)
+    if args.workers is not None and args.workers < 1:
+        raise InputError(
+            "--workers", None, f"expected a whole number of at least 1, got {args.workers}"
+        )
+    view = classread.build(args.sessions, workers=args.workers)
     written = write(view, args.out) if args.out is not None else ()
     if args.json:
         print_json(view.to_json(), indent=2)

@@ -430,14 +430,6 @@ def session_folders(root: Path) -> list[Path]:
     return found
 
 
-def build(root: Path) -> ClassView:
-    """The class view of every session under ``root`` (InputError, one line, when there is
-    none to show). The sessions are opened read-only: nothing is written, no lock taken."""
-    folders = session_folders(root)
-    view = judge([read_group(f) for f in folders])
-    return replace(view, root=Path(root))
-
-
 __all__ = [
     "JUDGED",
     "QUANTITIES",
@@ -447,7 +439,6 @@ __all__ = [
     "Own",
     "Quantity",
     "Spread",
-    "build",
     "judge",
     "outlier",
     "read_group",

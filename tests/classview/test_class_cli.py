@@ -226,3 +226,32 @@ def test_out_that_cannot_be_written_one_line_exit_2(tmp_path, capsys):
     code, out, err = _run(capsys, "--sessions", str(root), "--out", str(blocker / "sub"))
     assert code == 2 and out == "" and err.count("\n") == 1
     assert "cannot write the class report here" in err
+
+
+def test_second_reading_comes_from_the_cache_and_a_change_is_read_again(
+    tmp_path, capsys, own_cache
+):
+    root = tmp_path / "s"
+    folders = [group(root, [f"G{k}"], seed=k) for k in range(4)]
+    code, cold, _ = _run(capsys, "--sessions", str(root), "--json", "--workers", "2")
+    assert code == 0 and len(list(own_cache.glob("*.json"))) == 4
+    assert not any("cache" in p.name for p in root.rglob("*"))
+    code, warm, _ = _run(capsys, "--sessions", str(root), "--json", "--workers", "1")
+    assert code == 0 and warm == cold
+    with Session.open(folders[2]) as s:  # the group changes its R: that row is read again
+        s.enter("R", "7.5 Ω")
+    _, again, _ = _run(capsys, "--sessions", str(root), "--json")
+    g = _by_members(json.loads(again))
+    assert g["G2"]["R"] == pytest.approx(7.5) and "outside the 3-6 Ω" in g["G2"]["flags"][0]
+    assert g["G1"] == _by_members(json.loads(cold))["G1"]
+    assert len(list(own_cache.glob("*.json"))) == 5
+
+
+def test_a_cache_that_cannot_be_written_changes_nothing(tmp_path, capsys, monkeypatch):
+    root = tmp_path / "s"
+    group(root, ["A"], seed=1, run=False)
+    blocker = tmp_path / "blocker"
+    blocker.write_text("x", encoding="utf-8")
+    monkeypatch.setenv("MINSEG_TUI_CACHE", str(blocker / "cache"))
+    code, out, err = _run(capsys, "--sessions", str(root), "--json")
+    assert code == 0 and err == "" and json.loads(out)["groups"][0]["members"] == ["A"]

@@ -24,7 +24,7 @@ from textual.screen import Screen
 from textual.widgets import DataTable, Footer, Static
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import classview
+from minseg_tui.lab import classread, classview
 from minseg_tui.lab.classview import QUANTITIES, ClassView, Group
 from minseg_tui.lab.entry import format_quantity
 from minseg_tui.ui.screens.start import StartScreen
@@ -141,7 +141,7 @@ class ClassScreen(Screen[None]):
             return
         groups = []
         for k, folder in enumerate(folders, 1):
-            g = classview.read_group(folder)
+            g = classread.read(folder)
             groups.append(g)
             self.post_message(self.GroupRead(k, g))
         view = classview.judge(groups)
