@@ -20,6 +20,7 @@ import hashlib
 import json
 import math
 import os
+import warnings
 from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from functools import cache
@@ -158,6 +159,15 @@ def read(session_folder: Path) -> Group:
     return g
 
 
+def _read_noting(session_folder: Path) -> tuple[Group, list[str]]:
+    """In a worker process: the row, and the numeric warnings computing it raised (a
+    worker's own would be lost; the caller raises them again where they are noted)."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", RuntimeWarning)
+        g = read_group(session_folder)
+    return g, [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+
+
 PARALLEL_FROM: int = 4
 """Rows to compute (not in the cache) from which :func:`build` spreads them over processes."""
 
@@ -178,9 +188,11 @@ def build(
     n = workers if workers is not None else len(os.sched_getaffinity(0))
     if n > 1 and len(todo) >= PARALLEL_FROM:
         with ProcessPoolExecutor(max_workers=min(n, len(todo))) as pool:
-            computed = pool.map(read_group, [folders[i] for i in todo])
-            for i, row in zip(todo, computed, strict=True):
+            computed = pool.map(_read_noting, [folders[i] for i in todo])
+            for i, (row, said) in zip(todo, computed, strict=True):
                 rows[i] = row
+                for message in said:
+                    warnings.warn(message, RuntimeWarning, stacklevel=1)
     else:
         for i in todo:
             rows[i] = read_group(folders[i])
