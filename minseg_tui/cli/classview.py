@@ -60,7 +60,15 @@ def _cell(v: float | None) -> str:
 
 def text(view: ClassView) -> str:
     """The class as plain text: a table, then per group what stands out and what is missing."""
-    head = ["#", "group", "members", "step", *(q.key for q in QUANTITIES), "model check"]
+    head = [
+        "#",
+        "group",
+        "members",
+        "step",
+        *(q.key for q in QUANTITIES),
+        "model check",
+        "own vs computed",
+    ]
     rows = [
         [
             str(k),
@@ -69,6 +77,7 @@ def text(view: ClassView) -> str:
             g.step or "-",
             *(_cell(g.value(q.key)) for q in QUANTITIES),
             g.cause or "-",
+            class_content.own_cell(g),
         ]
         for k, g in enumerate(view.groups, 1)
     ]

@@ -48,12 +48,13 @@ def folder() -> Path:
 
 @cache
 def code_fingerprint() -> str:
-    """A hash of the package's computing code (every .py file outside ui/ and cli/)."""
+    """A hash of the package's computing code (every .py file outside ui/, cli/ and report/,
+    which only show the rows)."""
     root = Path(minseg_tui.__file__).parent
     h = hashlib.sha256(minseg_tui.__version__.encode())
     for p in sorted(root.rglob("*.py")):
         rel = p.relative_to(root).as_posix()
-        if rel.startswith(("ui/", "cli/")):
+        if rel.startswith(("ui/", "cli/", "report/")):
             continue
         h.update(rel.encode())
         h.update(p.read_bytes())

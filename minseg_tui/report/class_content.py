@@ -32,7 +32,8 @@ def members(g: Group) -> str:
     return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
 
 
-def _own_cell(g: Group) -> str:
+def own_cell(g: Group) -> str:
+    """The group's own values against the computed ones, in one cell: "T_63 +12 %"."""
     parts = [
         f"{o.key.removeprefix('own.')} {o.rel_diff * 100:+.0f} %"
         for o in g.own
@@ -65,7 +66,7 @@ def table(view: ClassView) -> Table:
                 g.step or "–",
                 *(_cell(g.value(q.key)) for q in QUANTITIES),
                 g.cause or "–",
-                _own_cell(g),
+                own_cell(g),
                 str(len(g.flags)) if g.flags else "",
             )
         )
@@ -213,7 +214,7 @@ def csv_text(view: ClassView) -> str:
                 g.step,
                 *("" if (v := g.value(q.key)) is None else repr(v) for q in QUANTITIES),
                 g.cause,
-                _own_cell(g) if g.own else "",
+                own_cell(g) if g.own else "",
                 " | ".join(g.flags),
                 " | ".join(g.lacks),
             )

@@ -115,6 +115,8 @@ def test_text_table_names_steps_and_units(klass, capsys):
     assert head[:4] == ["#", "group", "members", "step"]
     assert "Task 12" in out and "Tasks 6-9" in out and "task12" not in out
     assert "units: R Ω, k_v V s/rad" in out
+    ada = next(line for line in out.splitlines() if "Ada 0, Bo 0" in line)
+    assert re.search(r"dry friction\s+T [+-]\d+ %$", ada)  # the group's own T against T_63
     assert "! R = 12.00 Ω is outside" in out and "- lacks: no step run recorded yet" in out
 
 
