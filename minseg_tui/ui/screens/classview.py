@@ -141,6 +141,8 @@ class ClassScreen(Screen[None]):
             return
         groups = []
         for k, folder in enumerate(folders, 1):
+            if not self.is_attached:
+                return  # the screen was left: the rest is not wanted
             g = classread.read(folder)
             groups.append(g)
             self.post_message(self.GroupRead(k, g))
