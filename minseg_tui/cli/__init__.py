@@ -42,6 +42,10 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
         "write the lab firmware to a MinSeg with avrdude and check that it answers",
     ),
     "report": ("minseg_tui.cli.report", "write a session's report (Markdown, HTML, CSV)"),
+    "class": (
+        "minseg_tui.cli.classview",
+        "the class at a glance: one row per group of a sessions folder, what stands out",
+    ),
     "tui": ("minseg_tui.cli.tui", "start the lab assistant (the default)"),
 }
 
