@@ -16,7 +16,9 @@ from minseg_tui.lab.session import Session
 from minseg_tui.lab.store import SessionNotWritable
 from minseg_tui.ui.panels.connect import ConnectPanel
 from minseg_tui.ui.panels.report import ReportPanel
+from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.status import DeviceStatus
 from tests.lab.test_identify_guards import CASES, ENTRIES, _log
@@ -174,3 +176,17 @@ async def test_a_board_and_report_files_with_brackets_are_named_as_they_are(tmp_
         app.screen.exported = (f"{tmp_path}/[/]report.md",)
         await settle(pilot)
         assert f"{tmp_path}/[/]report.md" in str(app.screen.query_one(ReportPanel).render())
+
+
+async def test_the_class_view_of_a_folder_with_brackets_names_it_as_it_is(tmp_path):
+    """The class view's title names the sessions folder: '[/]' in its path was a MarkupError
+    as the view opened (issue 18, item 3)."""
+    root = tmp_path / "class [/] 2026"
+    Session.create(root, ["Ada"], date="2024-04-16").close()
+    async with quiet_app(root).run_test(size=(120, 40)) as pilot:
+        app = pilot.app
+        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+        await pilot.press("f12")
+        await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
+        title = str(app.screen.query_one("#class-title").render())
+        assert "class [/] 2026" in title

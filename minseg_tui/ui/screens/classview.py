@@ -117,7 +117,7 @@ class ClassScreen(Screen[None]):
         self.done = False
 
     def compose(self) -> ComposeResult:
-        yield Static(f"Class view of {self.root} — reading the sessions…", id="class-title")
+        yield Static(Text(f"Class view of {self.root} — reading the sessions…"), id="class-title")
         table: DataTable[Text] = DataTable(id="class-table", cursor_type="row", zebra_stripes=True)
         yield table
         with VerticalScroll(id="class-detail"):
