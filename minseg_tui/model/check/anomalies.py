@@ -319,3 +319,87 @@ def disturbance(
         t_end=t1,
         row_end=int(end),
     )
+
+
+def repeated_miss(t: FloatArray, starts: list[int], edges: str, what: str) -> Anomaly:
+    """One sentence for departures that come back edge after edge (``starts``: their first
+    rows; ``edges``: 'rising', 'falling' or both; ``what``: what repeats, in words): the
+    model misses something at those edges; it is not a disturbance."""
+    times = ", ".join(f"{t[s]:.2f}" for s in starts[:6]) + (" ..." if len(starts) > 6 else "")
+    return Anomaly(
+        "model_miss",
+        int(starts[0]),
+        float(t[starts[0]]),
+        float(len(starts)),
+        "edges",
+        f"{what} after {len(starts)} {edges} edges (t = {times} s): a departure that comes back "
+        "at every edge of one kind is what the model misses there, not a hand on the wheel; "
+        "those rows stay in the fit",
+    )
+
+
+def gap_rows(t: FloatArray, ts: float) -> set[int]:
+    """Rows right after a sample interval longer than 1.5 nominal periods, and the row after
+    each (where a read that lagged its timestamp is caught up)."""
+    after = np.flatnonzero(np.diff(t) > 1.5 * ts) + 1
+    return {int(r) for a in after.tolist() for r in (a, a + 1) if r < t.size}
+
+
+def logging_artefact(t: FloatArray, row: int, end: int, size: float) -> Anomaly:
+    """The sentence for a spike over rows row..end (exclusive) right after a gap in the sample
+    times: the logger's clock and its encoder read disagree there, the wheel did not move so."""
+    gap = float(np.max(np.diff(t[max(row - 1, 0) : min(end + 1, t.size)]))) if t.size > 1 else 0.0
+    rows = f"row {row}" if end - row <= 1 else f"rows {row}-{end - 1}"
+    return Anomaly(
+        "logging_artefact",
+        int(row),
+        float(t[row]),
+        float(size),
+        "rad/s",
+        f"{rows} (t = {t[row]:.3f} s), right after a gap of {1e3 * gap:.0f} ms in the sample "
+        f"times: the speed jumps by {size:+.3g} rad/s and straight back, as when the logger stalls "
+        "and reads the encoder and its clock at different moments (a logging artefact, not the "
+        "wheel); left out of the fit",
+        t_end=float(t[min(end, t.size - 1)]),
+        row_end=int(end),
+    )
+
+
+def start_glitch(u: FloatArray, y: FloatArray) -> int:
+    """How many rows at the very start (1-3) are a switch-on glitch: fast against the log's
+    top speed, then the speed falls by more than three quarters in one sample with the input
+    unchanged (no motor slows so in one sample when it turns that fast by itself); 0 if none."""
+    top = float(np.max(np.abs(y))) if y.size else 0.0
+    if top <= 0 or y.size < 8:
+        return 0
+    fast = [k for k in range(min(4, y.size)) if abs(y[k]) > 0.2 * top]
+    if not fast:
+        return 0
+    last = max(fast)
+    nxt = last + 1
+    if last > 2 or np.any(u[: nxt + 1] != u[0]):
+        return 0
+    small = min(abs(float(y[k])) for k in fast)
+    if (
+        abs(float(y[nxt])) <= 0.25 * small
+        and float(np.max(np.abs(y[nxt : nxt + 4]))) <= 0.25 * small
+    ):
+        return nxt
+    return 0
+
+
+def glitch_anomaly(t: FloatArray, y: FloatArray, rows: int) -> Anomaly:
+    """The sentence for ``rows`` switch-on glitch rows at the start."""
+    top = float(np.max(np.abs(y[:rows])))
+    return Anomaly(
+        "start_glitch",
+        0,
+        float(t[0]),
+        top,
+        "rad/s",
+        f"the first {rows} row(s) (to t = {t[rows - 1]:.3f} s) read up to {top:.3g} rad/s and the "
+        "next one close to 0 with the input unchanged: a glitch as the logger starts, not the "
+        "wheel; left out of the fit",
+        t_end=float(t[rows]),
+        row_end=int(rows),
+    )

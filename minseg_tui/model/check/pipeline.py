@@ -77,10 +77,18 @@ def check(
         raise ValueError(refused)
     ts = float(np.median(np.diff(t))) if ts is None else float(ts)
     samp = sampling(t, u, y, ts, cpr, omega_over)
-    full = Problem(t, u, y, ts, over_interval=samp.over_interval)
     notes: list[an.Anomaly] = []
+    y_raw = y
+    pre = np.ones(y.size)  # rows left out before anything is fitted (a switch-on glitch)
+    glitch = an.start_glitch(u, y)
+    if glitch:
+        notes.append(an.glitch_anomaly(t, y, glitch))
+        y = y.copy()
+        y[:glitch] = y[glitch]
+        pre[:glitch] = 0.0
+    full = Problem(t, u, y, ts, weights=pre, over_interval=samp.over_interval)
     rng0 = ranges(t, u, ts, 0.05)
-    if _in_motion(y):
+    if not glitch and _in_motion(y):
         if u[0] != 0:
             full.z0 = None
             how = f"taken as the steady speed under its first input ({u[0]:g} V)"
@@ -112,6 +120,7 @@ def check(
 
     # a hand on the wheel, against the baseline: fenced off before the causes are chosen
     found = dist.find(t, u, full.y - base.predict(full), base.predict(full), settle, noise)
+    found, _, _ = dist.split_repeated(found, u)  # the baseline's own miss: the causes' business
     if found:
         full, head, base = _fenced(full, found, rng0)
 
@@ -148,10 +157,13 @@ def check(
     found2 = dist.find(
         t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1
     )
+    found2, repeated, repeated_at = dist.split_repeated(found2, u)
     if _rows(found2) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
-        full = full.with_weights(dist.fence(y.size, found) * _wild_weights(y.size, wild, taps))
+        full = full.with_weights(
+            dist.fence(y.size, found) * _wild_weights(y.size, wild, taps) * pre
+        )
         head = full.head(MAX_FIT_ROWS)
         base = fit_baseline(head, rng0)
         sel = select(head, base, rng, noise, samp.column_floor, names)
@@ -160,8 +172,33 @@ def check(
         settle = dist.settle_rows(ext.T, ext.effects.delay, ext.effects.taps, ts)
         noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
     log = replace(log, noise=noise)
+    if repeated:
+        notes.append(
+            an.repeated_miss(
+                t,
+                sorted(d.start for d in repeated),
+                repeated_at,
+                "the speed departs from the model's simulation the same way",
+            )
+        )
     return _report(
-        t, u, y, full, head, samp, noise, sel, base, ext, rng, wild, found, notes, log, unjudged
+        t,
+        u,
+        y,
+        full,
+        head,
+        samp,
+        noise,
+        sel,
+        base,
+        ext,
+        rng,
+        wild,
+        found,
+        notes,
+        log,
+        unjudged,
+        y_raw,
     )
 
 
@@ -206,19 +243,23 @@ def _report(
     notes: list[an.Anomaly],
     log: Log,
     unjudged: dict[str, str],
+    y_raw: FloatArray,
 ) -> CheckResult:
-    """Predictions, figures, words."""
+    """Predictions, figures, words. Every rms and fit figure covers the rows the fit used
+    (``full.weights`` > 0, with wild samples repaired); ``y_raw`` is the speed as logged."""
     named = bool(ext.causes)
     b_pred = base.predict(full)
     e_pred = ext.predict(full) if named else b_pred
     keep = full.weights > 0
+    used = int(np.count_nonzero(keep))
     b_int = intervals(head, base, rng)
     baseline = ModelFit(
         "first_order",
         {"T": base.T, "K": base.K},
-        rmse(y, b_pred),
-        fit_percent(y, b_pred),
+        rmse(full.y[keep], b_pred[keep]),
+        fit_percent(full.y[keep], b_pred[keep]),
         {k: b_int[k] for k in ("T", "K")},
+        rows=used,
     )
     order = ranked(sel) if named else []
     if named:
@@ -230,9 +271,10 @@ def _report(
                 "K": ext.K,
                 **{BY_CAUSE[c].param: ext.params[BY_CAUSE[c].param] for c in order},
             },
-            rmse(y, e_pred),
-            fit_percent(y, e_pred),
+            rmse(full.y[keep], e_pred[keep]),
+            fit_percent(full.y[keep], e_pred[keep]),
             e_int,
+            rows=used,
         )
     else:
         extended = baseline
@@ -276,7 +318,14 @@ def _report(
     # anomalies, against the model the finding settles on
     res = full.y - e_pred
     anomalies = list(notes)
-    anomalies += an.wild_anomalies(t, y, y - e_pred, wild, ext.effects.taps)
+    gap_rows = an.gap_rows(t, samp.ts) if samp.regular else set()
+    for a in an.wild_anomalies(t, y, y - e_pred, wild, ext.effects.taps):
+        if a.row in gap_rows:
+            a = an.logging_artefact(t, int(a.row), int(a.row) + 1, a.size)
+        anomalies.append(a)
+    artefacts = [d for d in found if _at_gap(d, res, gap_rows)]
+    found = [d for d in found if d not in artefacts]
+    anomalies += [an.logging_artefact(t, d.start, d.end, d.size) for d in artefacts]
     anomalies += [an.disturbance(t, u, d.start, d.end, d.size, d.level) for d in found]
     if not misses:
         cr = an.creep(t, u, np.where(keep, res, 0.0), e_pred, ext.T + ext.effects.delay, samp.ts)
@@ -290,9 +339,23 @@ def _report(
         taps * samp.ts * an.robust_sigma(whiten(res, taps)[moving]) if np.any(moving) else 0.0
     )
     if not misses:
-        anomalies += an.late_steps(
+        late = an.late_steps(
             t, u, res, moved.predict(full) - e_pred, shift, samp.ts, ext.T, e_pred, angle_noise
         )
+        edges = int(np.count_nonzero(np.diff(u) != 0))
+        if len(late) >= dist.REPEAT_MIN and len(late) >= dist.REPEAT_SHARE * edges:
+            late = [
+                an.repeated_miss(
+                    t,
+                    [int(a.row) for a in late if a.row is not None],
+                    f"of the {edges}",
+                    "the response looks shifted in time (by "
+                    + ", ".join(f"{a.size:+.0f}" for a in late[:6])
+                    + (" ..." if len(late) > 6 else "")
+                    + " ms)",
+                )
+            ]
+        anomalies += late
     gp = an.gaps(t, samp.ts, samp.regular)
     if gp:
         anomalies.append(gp)
@@ -316,13 +379,24 @@ def _report(
         describe(devs),
         anomalies,
         t,
-        y,
+        y_raw,
         b_pred,
         e_pred,
         samp,
         lead(gain, named, _turning(full.y, b_pred, e_pred, keep)),
         cu,
     )
+
+
+def _at_gap(d: dist.Disturbance, res: FloatArray, gap_rows: set[int]) -> bool:
+    """True when disturbance ``d`` is a spike at the rows right after a gap in the sample
+    times: its rows hold a gap row, and away from the gap rows it departs by less than a
+    third of its largest departure."""
+    rows = set(range(d.start, d.end))
+    if not rows & gap_rows:
+        return False
+    rest = [abs(float(res[r])) for r in rows - gap_rows]
+    return not rest or max(rest) < abs(d.size) / 3.0
 
 
 def _turning(

@@ -21,14 +21,17 @@ FloatArray = NDArray[np.float64]
 @dataclass(frozen=True)
 class ModelFit:
     """A model as reported: name, parameters (T in s, K in rad/s/V, each cause's own), how
-    well its simulation matches every row: rmse (rad/s) and fit_percent, and a 95 % interval
-    (lo, hi) per parameter (empty for the baseline when not computed)."""
+    well its simulation matches the rows the fit used: rmse (rad/s) and fit_percent over
+    ``rows`` rows (wild samples repaired; disturbances, glitches and logging artefacts left
+    out; 0: every row of the log), and a 95 % interval (lo, hi) per parameter (empty for the
+    baseline when not computed)."""
 
     model: str
     params: dict[str, float]
     rmse: float
     fit_percent: float
     intervals: dict[str, tuple[float, float]] = field(default_factory=dict)
+    rows: int = 0
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -36,6 +39,7 @@ class ModelFit:
             "params": dict(self.params),
             "rmse": self.rmse,
             "fit_percent": self.fit_percent,
+            "rows": self.rows,
             "intervals": {k: [lo, hi] for k, (lo, hi) in self.intervals.items()},
         }
 

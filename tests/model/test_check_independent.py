@@ -1,0 +1,66 @@
+"""The model check on logs of the independent generator (tests/model/physics_gen.py), written
+from the physics and not from the check's own simulation: what the check says about the
+artefacts of a logger and about a hand on the wheel. Tuning seeds only (the held-out seeds
+are for benchmarks/model_check_independent.py's figures).
+"""
+
+import numpy as np
+import pytest
+
+from minseg_tui.model.check import check, text
+from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, make
+
+
+def named(r):
+    return sorted(c for c in [r.finding.cause, *(o.cause for o in r.finding.others)] if c != "none")
+
+
+def kinds(r):
+    return [a.kind for a in r.anomalies]
+
+
+def test_the_generator_keeps_its_held_out_seeds_apart():
+    assert not set(TUNING_SEEDS) & set(HELD_OUT_SEEDS)
+    a, b = make(7, ("coulomb_friction",)), make(7, ("coulomb_friction",))
+    assert np.array_equal(a.omega, b.omega)  # seeded
+    assert a.causes["coulomb_friction"] > 0 and a.T > 0
+
+
+@pytest.mark.parametrize(("seed", "causes"), [(21, ("coulomb_friction",)), (25, ())])
+def test_a_spike_after_a_stall_of_the_logger_is_an_artefact_not_a_hand(seed, causes):
+    log = make(seed, causes, artefacts=True)
+    r = check(log.t, log.u, log.omega)
+    assert "disturbance" not in kinds(r)
+    art = [a for a in r.anomalies if a.kind == "logging_artefact"]
+    assert len(art) == 1
+    # it sits at the stall: the row after the gap, or the row before it the smoothing adds
+    stall = log.artefact_rows[0]
+    assert art[0].row is not None and stall - 1 <= art[0].row <= stall + 1
+    assert "right after a gap of" in art[0].text and "not the wheel" in art[0].text
+    assert named(r) == sorted(causes)
+
+
+def test_switch_on_glitch_rows_are_named_and_left_out_of_every_figure():
+    log = make(21, ("coulomb_friction",), artefacts=True)
+    r = check(log.t, log.u, log.omega)
+    glitch = [a for a in r.anomalies if a.kind == "start_glitch"]
+    assert len(glitch) == 1 and "starts_moving" not in kinds(r)
+    assert glitch[0].row_end is not None and glitch[0].row_end >= max(
+        x for x in log.artefact_rows if x < 5
+    )
+    # the headline covers the rows the fit used, and says so
+    assert r.baseline.rows < r.t.size and r.extended.rows == r.baseline.rows
+    assert np.all(r.omega == log.omega)  # the speed as logged
+    report = text(r)
+    assert f"over the {r.baseline.rows} of {r.t.size} rows the fit used" in report
+    assert r.to_dict()["baseline"]["rows"] == r.baseline.rows
+    # over every row (the glitch and the stall's spike in) the error would be twice as large
+    err_all = float(np.sqrt(np.mean((r.omega - r.baseline_pred) ** 2)))
+    assert r.baseline.rmse < 0.6 * err_all
+
+
+def test_a_clean_log_figures_cover_every_row():
+    log = make(3, (), artefacts=False)
+    r = check(log.t, log.u, log.omega)
+    assert r.baseline.rows == r.t.size
+    assert f"over all {r.t.size} rows" in text(r)
