@@ -370,7 +370,7 @@ def make(
     pole_side = ""
     T2 = 0.0
     if "second_pole" in cset:
-        T2 = float(rng.uniform(0.1, 0.6)) * T
+        T2 = float(rng.uniform(0.2, 0.6)) * T
         T2 = max(T2, 0.8 * ts)
         if measured_pole is None:
             measured_pole = bool(rng.random() < 0.5)
@@ -413,7 +413,7 @@ def make(
     if "coast_on_zero" in cset:
         truth["coast_on_zero"] = J / b
     if "current_limit" in cset:
-        a_max = float(rng.uniform(0.3, 0.9)) * K_true * levels_hi / T_true
+        a_max = float(rng.uniform(0.15, 0.6)) * K_true * levels_hi / T_true
         m.i_max = a_max * J / k
         truth["current_limit"] = a_max
     how.append(
@@ -487,12 +487,12 @@ def make(
             torque = float(rng.uniform(0.25, 0.5)) * k * level / R
             hand = (t0, t0 + dur, torque)
             touch_at = (t0, t0 + dur)
-    # the load ripples: an AR(1) torque with a correlation time of 10-50 ms, 0.5-3 % of the
-    # torque of the largest level at rest
+    # the load ripples: an AR(1) torque with a correlation time of 10-50 ms, 0.3-1.5 % of the
+    # torque of the smallest driven level at rest
     t_sim = float(max(t_row[-1], t_count[-1])) + ts
     n_load = int(t_sim / (LOAD_STEP * DT)) + 2
     corr = math.exp(-LOAD_STEP * DT / float(rng.uniform(0.01, 0.05)))
-    sigma = float(rng.uniform(0.005, 0.03)) * k * levels_hi / R
+    sigma = float(rng.uniform(0.003, 0.015)) * k * levels_lo / R
     e = rng.normal(0.0, sigma * math.sqrt(1 - corr * corr), n_load)
     ripple = np.empty(n_load)
     acc = float(rng.normal(0.0, sigma))

@@ -64,3 +64,59 @@ def test_a_clean_log_figures_cover_every_row():
     r = check(log.t, log.u, log.omega)
     assert r.baseline.rows == r.t.size
     assert f"over all {r.t.size} rows" in text(r)
+
+
+def ringing_log():
+    """A motor whose speed rings after every step (an elastic load: speed/input a second-order
+    system, natural frequency 25 rad/s, damping 0.25, K 10 rad/s/V), 15 s at 10 ms, 720-count
+    Euler speed: no cause of the check models a ringing, so every edge is missed alike."""
+    ts, n = 0.01, 1500
+    t = np.arange(n) * ts
+    u = np.zeros(n)
+    levels = [0, 3, 0, 4, 1.5, 0, 3.5, 0, 2.5, 0, 4, 0, 3, 0]
+    for i, level in enumerate(levels):
+        u[int(i * n / len(levels)) :] = level
+    wn, zeta, k_gain, dt = 25.0, 0.25, 10.0, 1e-4
+    w = dw = theta = 0.0
+    per = int(round(ts / dt))
+    angle = []
+    for j in range(n * per):
+        if j % per == 0:
+            angle.append(theta)
+        acc = wn * wn * (k_gain * u[j // per] - w) - 2 * zeta * wn * dw
+        w, dw, theta = w + dt * dw, dw + dt * acc, theta + dt * w
+    counts = np.floor(np.array(angle) * 720 / (2 * np.pi) + 0.3)
+    return t, u, np.diff(counts, prepend=counts[0]) * 2 * np.pi / 720 / ts
+
+
+def test_a_departure_after_every_edge_is_the_models_miss_not_a_hand():
+    t, u, y = ringing_log()
+    r = check(t, u, y)
+    assert "disturbance" not in kinds(r)
+    miss = [a for a in r.anomalies if a.kind == "model_miss"]
+    assert len(miss) == 1
+    rising = int(np.count_nonzero(np.diff(u) > 0))
+    assert miss[0].size >= rising  # every rising edge (and the step down to 1.5 V alike)
+    assert "what the model misses there, not a hand on the wheel" in miss[0].text
+    # and the finding says the model misses, instead of naming a cause for it
+    assert "misses" in [c.kind for c in r.finding.caveats]
+
+
+def test_when_a_different_pair_fits_about_as_well_the_check_says_it_cannot_tell():
+    # friction and a first-order IIR filter on the speed (a pole on the measurement): the
+    # check prefers an average of the speed with friction, and says the true pair fits as well
+    log = make(204, ("coulomb_friction", "second_pole"))
+    r = check(log.t, log.u, log.omega)
+    assert ["coulomb_friction", "second_pole"] in [sorted(a) for a in r.finding.ambiguous_with]
+    told = [c for c in r.finding.caveats if c.kind == "cannot_tell" and "this log cannot" in c.text]
+    assert len(told) == 1
+    assert "dry friction + second pole" in told[0].text and "would" in told[0].text
+    assert r.to_dict()["finding"]["ambiguous_with"] == r.finding.ambiguous_with
+
+
+def test_never_a_pure_delay_when_another_explanation_fits_nearly_as_well():
+    log = make(205, ("second_pole",))
+    r = check(log.t, log.u, log.omega)
+    assert r.finding.cause == "dead_time" and r.finding.ambiguous_with
+    assert "a pure delay" not in text(r)
+    assert "cannot tell dead time from" in text(r)

@@ -322,9 +322,9 @@ def disturbance(
 
 
 def repeated_miss(t: FloatArray, starts: list[int], edges: str, what: str) -> Anomaly:
-    """One sentence for departures that come back edge after edge (``starts``: their first
-    rows; ``edges``: 'rising', 'falling' or both; ``what``: what repeats, in words): the
-    model misses something at those edges; it is not a disturbance."""
+    """One sentence for departures that come back edge after edge (``starts``: the rows of
+    those edges; ``edges``: 'rising', 'falling' or both; ``what``: what repeats, in words):
+    the model misses something at those edges; it is not a disturbance."""
     times = ", ".join(f"{t[s]:.2f}" for s in starts[:6]) + (" ..." if len(starts) > 6 else "")
     return Anomaly(
         "model_miss",

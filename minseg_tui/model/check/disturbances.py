@@ -162,12 +162,30 @@ def split_repeated(
             if a <= d.start < b:
                 by_kind.setdefault(kind, []).append(d)
                 break
+
+    def first_row(d: Disturbance) -> int:
+        return next(a for a, b, _ in stretches if a <= d.start < b)
+
     repeated: list[Disturbance] = []
     kinds: list[str] = []
     for kind, ds in by_kind.items():
-        spans = {next(a for a, b, _ in stretches if a <= d.start < b) for d in ds}
+        spans = {first_row(d) for d in ds}
         if len(spans) >= REPEAT_MIN and len(spans) >= REPEAT_SHARE * count.get(kind, 0):
             repeated += ds
             kinds.append(kind)
+    if repeated:
+        # the same miss after an edge of another kind, no later after its edge than the
+        # repeated ones come after theirs, is that miss too
+        reach = max(d.start - first_row(d) for d in repeated)
+        more = [d for d in found if d not in repeated and d.start - first_row(d) <= 1.5 * reach + 2]
+        if more:
+            repeated += more
+            kinds.append("other")
     local = [d for d in found if d not in repeated]
     return local, repeated, " and ".join(kinds)
+
+
+def edges_of(found: list[Disturbance], u: FloatArray) -> list[int]:
+    """The first rows of the stretches (after their edges) that hold the disturbances."""
+    stretches, _ = edge_kinds(u)
+    return sorted({next(a for a, b, _ in stretches if a <= d.start < b) for d in found})

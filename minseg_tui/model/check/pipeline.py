@@ -14,9 +14,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
-from minseg_tui.model.check.decide import Selection, compare, ranked, select
+from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, ranges
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, in_words, ranges
 from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, falls
 from minseg_tui.model.check.figures import above, angle_rms, close_up, folds, lead, systematic
 from minseg_tui.model.check.fit import (
@@ -176,7 +176,7 @@ def check(
         notes.append(
             an.repeated_miss(
                 t,
-                sorted(d.start for d in repeated),
+                dist.edges_of(repeated, u),
                 repeated_at,
                 "the speed departs from the model's simulation the same way",
             )
@@ -313,7 +313,8 @@ def _report(
     keep_dev &= keep
     devs = deviations(u, np.where(keep_dev, y - b_pred, 0.0), base.T, samp.ts, keep_dev)
     misses = miss is not None
-    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full)
+    alts = rivals(sel, head, rng, noise, samp.column_floor) if named else []
+    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full, alts)
 
     # anomalies, against the model the finding settles on
     res = full.y - e_pred
@@ -509,6 +510,7 @@ def _finding(
     miss: tuple[float, str, float] | None,
     unjudged: dict[str, str],
     full: Problem,
+    alts: list[tuple[Fit, float]] | None = None,
 ) -> Finding:
     floor = samp.floor if samp.resolution_how.startswith("# cpr") else None
     taps = ext.effects.taps
@@ -565,9 +567,10 @@ def _finding(
     if not order:
         runner, why = _none_runner(sel)
         if explained:
-            rms_b = _rmse_kept(log.y, log.base_pred, np.ones(log.y.size, dtype=bool))
+            kept = full.weights > 0
+            rms_b = _rmse_kept(log.y, log.base_pred, kept)
             left = above(rms_b, level) or 0.0
-            turning = an.moving_rows(log.y).astype(bool)
+            turning = an.moving_rows(log.y).astype(bool) & kept
             rms_t = _rmse_kept(log.y, log.base_pred, turning)
             left_t = above(rms_t, level) or 0.0
             turning_words = (
@@ -594,7 +597,7 @@ def _finding(
                     f"the first-order model misses by {left:.2g} rad/s rms above the noise "
                     f"({level:.3g} rad/s), but no cause from the list is clear enough to name"
                 )
-            pct = fit_percent(log.y, log.base_pred)
+            pct = fit_percent(log.y[kept], log.base_pred[kept])
             at_noise = level > 0 and left < 0.5 * level and not turning_words
             if pct < 80.0 and at_noise:
                 fit_words += (
@@ -627,7 +630,73 @@ def _finding(
                 f"{1 / max(1 - vc.reduction, 1e-12):.1f} times the whitened residual",
             )
         )
-    return Finding(cause, evidence, others, caveats, explained, runner, why)
+    ambiguous: list[list[str]] = []
+    for f, ratio in alts or []:
+        causes = list(f.causes)
+        ambiguous.append(causes)
+        caveats.append(
+            Caveat(
+                "cannot_tell",
+                causes[0],
+                f"this log cannot tell {in_words('+'.join(order))} from "
+                f"{in_words('+'.join(causes))}: the second leaves {ratio:.2f} times the "
+                + (
+                    "whitened residual"
+                    if f.effects.taps == ext.effects.taps
+                    else "squared speed error (their averages differ, so their whitened residuals "
+                    "cannot be compared)"
+                )
+                + f" of the first; {_what_would_tell(order, causes)}",
+            )
+        )
+    if ambiguous:
+        # a claim that holds only against a rival the log cannot rule out goes
+        evidence = _untold(evidence, ambiguous)
+        others = [replace(o, evidence=_untold(o.evidence, ambiguous)) for o in others]
+    return Finding(cause, evidence, others, caveats, explained, runner, why, ambiguous)
+
+
+_TELL: dict[frozenset[str], str] = {
+    frozenset({"dead_time", "second_pole"}): "a faster sampling would (a delay leaves the "
+    "first samples after a step flat and then turns a corner, a pole bends smoothly from the "
+    "start)",
+    frozenset({"dead_time", "velocity_filter"}): "a faster sampling or the raw encoder counts "
+    "would (a delay shifts the rise, an average turns it into a ramp)",
+    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
+    "of the speed acts on the measurement only, a pole on the motor)",
+    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
+    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
+    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
+    "limits the big steps only, friction takes the same volts off every level)",
+    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
+    "would (a coast acts only at 0)",
+}
+
+
+def _what_would_tell(a: list[str], b: list[str]) -> str:
+    """What kind of log would tell causes ``a`` from ``b`` apart, in words."""
+    diff = frozenset(set(a) ^ set(b))
+    for pair, words in _TELL.items():
+        if pair <= diff:
+            return words
+    return (
+        "steps of other sizes, a step down to a small voltage and a faster sampling would "
+        "show more of each"
+    )
+
+
+def _untold(evidence: str, ambiguous: list[list[str]]) -> str:
+    """``evidence`` without the claims that a rival the log cannot rule out would contradict
+    (never 'a pure delay' when a pole fits nearly as well)."""
+    rivals_named = {c for a in ambiguous for c in a}
+    if "second_pole" in rivals_named or "velocity_filter" in rivals_named:
+        evidence = evidence.replace(
+            "(a pure delay; an extra pole would start at once, only more slowly)",
+            "(a delay, or in this log an extra pole or an average about as well)",
+        )
+    if "dead_time" in rivals_named:
+        evidence = evidence.replace(" (a pure delay would show a corner)", "")
+    return evidence
 
 
 def _none_runner(sel: Selection) -> tuple[str | None, str]:

@@ -76,8 +76,8 @@ class Caveat:
 class Finding:
     """The cause (a contract name: the largest effect, or 'none'), its evidence in words,
     the other effects in the model, and what the check says plainly besides: caveats,
-    whether the model explains the log down to its noise, and the runner-up with why it
-    lost."""
+    whether the model explains the log down to its noise, the runner-up with why it lost,
+    and the other explanations the log cannot tell from the one named."""
 
     cause: str
     evidence: str
@@ -86,6 +86,9 @@ class Finding:
     explained: bool = True
     runner_up: str | None = None
     runner_up_why: str = ""
+    ambiguous_with: list[list[str]] = field(default_factory=list)
+    """Other sets of causes (each like [cause, *others]) that fit this log about as well as
+    the one named: the log cannot tell them apart (a 'cannot_tell' caveat says so)."""
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -96,6 +99,7 @@ class Finding:
             "explained": self.explained,
             "runner_up": self.runner_up,
             "runner_up_why": self.runner_up_why,
+            "ambiguous_with": [list(a) for a in self.ambiguous_with],
         }
 
 
