@@ -341,25 +341,33 @@ def repeated_miss(t: FloatArray, starts: list[int], edges: str, what: str) -> An
 def gap_rows(t: FloatArray, ts: float) -> set[int]:
     """Rows right after a sample interval longer than 1.5 nominal periods, and the row after
     each (where a read that lagged its timestamp is caught up)."""
-    after = np.flatnonzero(np.diff(t) > 1.5 * ts) + 1
-    return {int(r) for a in after.tolist() for r in (a, a + 1) if r < t.size}
+    return {r for a in gap_starts(t, ts) for r in (a, a + 1) if r < t.size}
 
 
-def logging_artefact(t: FloatArray, row: int, end: int, size: float) -> Anomaly:
-    """The sentence for a spike over rows row..end (exclusive) right after a gap in the sample
-    times: the logger's clock and its encoder read disagree there, the wheel did not move so."""
-    gap = float(np.max(np.diff(t[max(row - 1, 0) : min(end + 1, t.size)]))) if t.size > 1 else 0.0
-    rows = f"row {row}" if end - row <= 1 else f"rows {row}-{end - 1}"
+def gap_starts(t: FloatArray, ts: float) -> list[int]:
+    """Rows right after a sample interval longer than 1.5 nominal periods."""
+    return [int(a) for a in (np.flatnonzero(np.diff(t) > 1.5 * ts) + 1).tolist()]
+
+
+def logging_artefact(
+    t: FloatArray, row: int, end: int, size: float, at: int | None = None
+) -> Anomaly:
+    """The sentence for a spike right after a gap in the sample times (``at``: the row after
+    the gap, default ``row``), with rows row..end (exclusive) left out of the fit: the
+    logger's clock and its encoder read disagree there, the wheel did not move so."""
+    at = row if at is None else at
+    gap = float(t[at] - t[at - 1]) if at > 0 else 0.0
+    out = f"row {row}" if end - row <= 1 else f"rows {row}-{end - 1}"
     return Anomaly(
         "logging_artefact",
         int(row),
         float(t[row]),
         float(size),
         "rad/s",
-        f"{rows} (t = {t[row]:.3f} s), right after a gap of {1e3 * gap:.0f} ms in the sample "
+        f"row {at} (t = {t[at]:.3f} s), right after a gap of {1e3 * gap:.0f} ms in the sample "
         f"times: the speed jumps by {size:+.3g} rad/s and straight back, as when the logger stalls "
         "and reads the encoder and its clock at different moments (a logging artefact, not the "
-        "wheel); left out of the fit",
+        f"wheel); {out} left out of the fit",
         t_end=float(t[min(end, t.size - 1)]),
         row_end=int(end),
     )

@@ -326,7 +326,13 @@ def _report(
         anomalies.append(a)
     artefacts = [d for d in found if _at_gap(d, res, gap_rows)]
     found = [d for d in found if d not in artefacts]
-    anomalies += [an.logging_artefact(t, d.start, d.end, d.size) for d in artefacts]
+    starts = an.gap_starts(t, samp.ts)
+    anomalies += [
+        an.logging_artefact(
+            t, d.start, d.end, d.size, next((g for g in starts if d.start <= g < d.end), None)
+        )
+        for d in artefacts
+    ]
     anomalies += [an.disturbance(t, u, d.start, d.end, d.size, d.level) for d in found]
     if not misses:
         cr = an.creep(t, u, np.where(keep, res, 0.0), e_pred, ext.T + ext.effects.delay, samp.ts)
