@@ -109,7 +109,12 @@ def text(r: CheckResult) -> str:
         rest.append(
             f"rmse {g['rmse_reduction_percent']:.1f} % lower, fit {g['fit_percent_gain']:+.1f} points"
         )
-    lines.append("  " + "; ".join(rest) + f" (rms, noise and fit figures {_over(r)})")
+    held = (
+        ", the held-out error over the rows of the steps each fit left out"
+        if g.get("heldout_baseline_rmse") is not None
+        else ""
+    )
+    lines.append("  " + "; ".join(rest) + f" (rms, noise and fit figures {_over(r)}{held})")
     if f.caveats:
         lines.append("What the check cannot say here:")
         lines.extend(f"  - {c.text}" for c in f.caveats)
