@@ -97,7 +97,7 @@ def test_a_departure_after_every_edge_is_the_models_miss_not_a_hand():
     assert len(miss) == 1
     rising = int(np.count_nonzero(np.diff(u) > 0))
     assert miss[0].size >= rising  # every rising edge (and the step down to 1.5 V alike)
-    assert "what the model misses there, not a hand on the wheel" in miss[0].text
+    assert "edge after edge is what the model misses there, not a hand" in miss[0].text
     # and the finding says the model misses, instead of naming a cause for it
     assert "misses" in [c.kind for c in r.finding.caveats]
 

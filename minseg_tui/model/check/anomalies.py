@@ -333,8 +333,8 @@ def repeated_miss(t: FloatArray, starts: list[int], edges: str, what: str) -> An
         float(len(starts)),
         "edges",
         f"{what} after {len(starts)} {edges} edges (t = {times} s): a departure that comes back "
-        "at every edge of one kind is what the model misses there, not a hand on the wheel; "
-        "those rows stay in the fit",
+        "edge after edge is what the model misses there, not a hand on the wheel; those rows "
+        "stay in the fit",
     )
 
 

@@ -147,15 +147,22 @@ def edge_kinds(u: FloatArray) -> tuple[list[tuple[int, int, str]], dict[str, int
 
 
 def split_repeated(
-    found: list[Disturbance], u: FloatArray
+    found: list[Disturbance], u: FloatArray, settle: int = 0
 ) -> tuple[list[Disturbance], list[Disturbance], str]:
     """(local, repeated, kind): a departure that comes back after most edges of one kind
-    (at least ``REPEAT_MIN`` of them and ``REPEAT_SHARE`` of that kind's driven stretches)
-    is what the model misses at those edges, not something that touched the wheel; the
-    others stay disturbances. ``kind`` names the edges of the repeated ones ('' if none)."""
-    if len(found) < REPEAT_MIN:
-        return found, [], ""
+    (at least ``REPEAT_MIN`` of them and ``REPEAT_SHARE`` of that kind's driven stretches),
+    or after two edges or more while the response to them has not settled (within
+    ``settle`` rows of the edge), is what the model misses at those edges, not something
+    that touched the wheel; the others stay disturbances. ``kind`` names the edges of the
+    repeated ones ('' if none)."""
     stretches, count = edge_kinds(u)
+    early = [
+        d for d in found if d.start - next(a for a, b, _ in stretches if a <= d.start < b) < settle
+    ]
+    if len({next(a for a, b, _ in stretches if a <= d.start < b) for d in early}) < 2:
+        early = []
+    if len(found) < REPEAT_MIN and not early:
+        return found, [], ""
     by_kind: dict[str, list[Disturbance]] = {}
     for d in found:
         for a, b, kind in stretches:
@@ -173,6 +180,12 @@ def split_repeated(
         if len(spans) >= REPEAT_MIN and len(spans) >= REPEAT_SHARE * count.get(kind, 0):
             repeated += ds
             kinds.append(kind)
+    if early:
+        repeated += [d for d in early if d not in repeated]
+        for d in early:
+            k = next(kind for a, b, kind in stretches if a <= d.start < b)
+            if k not in kinds:
+                kinds.append(k)
     if repeated:
         # the same miss after an edge of another kind, no later after its edge than the
         # repeated ones come after theirs, is that miss too

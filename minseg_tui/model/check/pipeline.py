@@ -157,7 +157,8 @@ def check(
     found2 = dist.find(
         t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1
     )
-    found2, repeated, repeated_at = dist.split_repeated(found2, u)
+    rise = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
+    found2, repeated, repeated_at = dist.split_repeated(found2, u, rise)
     if _rows(found2) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
