@@ -8,7 +8,7 @@ STAMP  := $(VENV)/.installed
 # AVR=0 skips the firmware cross-build (for a laptop without gcc-avr and without root).
 AVR    ?= 1
 
-.PHONY: run test lint typecheck pytest snapshot-update firmware firmware-host-test bench clean
+.PHONY: run test lint typecheck pytest snapshot-update firmware firmware-host-test firmware-hex bench clean
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV) || { echo "error: could not create a virtualenv with $(PYTHON) -m venv (Debian: apt-get install python3-venv)"; exit 2; }
@@ -28,8 +28,11 @@ lint: $(STAMP)
 typecheck: $(STAMP)
 	$(VENV)/bin/mypy
 
+# The suite on PYTEST_WORKERS processes (pytest-xdist); PYTEST_WORKERS=0 runs it in this one.
+PYTEST_WORKERS ?= 2
+
 pytest: $(STAMP)
-	$(PY) -m pytest -q $(PYTEST_ARGS)
+	$(PY) -m pytest -q -n $(PYTEST_WORKERS) $(PYTEST_ARGS)
 
 # Re-pin the screens after a change meant to alter them; review the SVG diffs before committing.
 snapshot-update: $(STAMP)
@@ -38,13 +41,23 @@ snapshot-update: $(STAMP)
 firmware-host-test:
 	$(MAKE) -C firmware host-test
 
-firmware:
+# The build of every profile must equal the .hex the package ships (minseg-tui flash writes
+# those): a difference fails here with a line per profile and the command that fixes it.
+firmware: $(STAMP)
 ifeq ($(AVR),0)
 	@echo "AVR=0: firmware cross-build for the ATmega2560 not run"
 else
 	@sh firmware/ensure-toolchain.sh
-	$(MAKE) -C firmware all all-profiles sim-test-all
+	$(MAKE) -C firmware all-profiles sim-test-all
+	$(PY) -m minseg_tui.device.flashing check firmware/build
 endif
+
+# After a change to the firmware: rebuild every profile and ship the new .hex files (commit
+# minseg_tui/device/hex/ with the change).
+firmware-hex: $(STAMP)
+	@sh firmware/ensure-toolchain.sh
+	$(MAKE) -C firmware all-profiles
+	$(PY) -m minseg_tui.device.flashing refresh firmware/build
 
 test: $(STAMP) lint firmware-host-test firmware pytest
 

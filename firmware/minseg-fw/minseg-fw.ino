@@ -1,4 +1,4 @@
-// MinSeg firmware, protocol 2 (see firmware/PROTOCOL.md and firmware/README.md).
+// MinSeg firmware, protocol 3 (see firmware/PROTOCOL.md and firmware/README.md).
 // The real work is in src/: src/core (board-independent, host-tested) and
 // src/board (ATmega2560 registers; it does not use the Arduino core's
 // Serial, millis or analogWrite). Choose the board profile in

@@ -1,6 +1,7 @@
 /* The simulated board both simavr harnesses drive; see sim_board.h. */
 #include "sim_board.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,70 @@ static uint64_t now_us;     /* simulated time, advanced by a 100 us cycle timer 
 static char cur[SIM_LINE_CAP];
 static size_t cur_len;
 static sim_line_fn line_sink;
+
+/* pins driven from outside: per port 'A'..'L', which and to what level */
+static uint8_t ext_mask[12], ext_value[12];
+
+/* pin change interrupts on ports J and K, missing from simavr 1.6 */
+#define R_PCIFR 0x3B
+#define R_PCICR 0x68
+#define R_PCMSK1 0x6C
+#define R_PCMSK2 0x6D
+static avr_int_vector_t pcint1 = {.vector = 10, /* PCINT1_vect */
+                                  .enable = {.reg = R_PCICR, .bit = 1, .mask = 1},
+                                  .raised = {.reg = R_PCIFR, .bit = 1, .mask = 1}};
+static avr_int_vector_t pcint2 = {.vector = 11, /* PCINT2_vect */
+                                  .enable = {.reg = R_PCICR, .bit = 2, .mask = 1},
+                                  .raised = {.reg = R_PCIFR, .bit = 2, .mask = 1}};
+static uint8_t pcmsk1, pcmsk2; /* as last written by the firmware */
+
+static void on_pcmsk(avr_irq_t *irq, uint32_t value, void *param) {
+  (void)irq;
+  *(uint8_t *)param = (uint8_t)value;
+}
+
+/* a pin of port J (PJn is PCINTn+9, PCMSK1 bit n+1) or K (PKn: PCMSK2 bit n) changed */
+static void on_pin_j(avr_irq_t *irq, uint32_t value, void *param) {
+  (void)irq;
+  (void)value;
+  int bit = (int)(intptr_t)param;
+  if (pcmsk1 & (1u << (bit + 1))) avr_raise_interrupt(avr, &pcint1);
+}
+static void on_pin_k(avr_irq_t *irq, uint32_t value, void *param) {
+  (void)irq;
+  (void)value;
+  int bit = (int)(intptr_t)param;
+  if (pcmsk2 & (1u << bit)) avr_raise_interrupt(avr, &pcint2);
+}
+
+static void add_pcint_jk(void) {
+  avr_register_vector(avr, &pcint1);
+  avr_register_vector(avr, &pcint2);
+  avr_irq_register_notify(avr_iomem_getirq(avr, R_PCMSK1, NULL, AVR_IOMEM_IRQ_ALL), on_pcmsk,
+                          &pcmsk1);
+  avr_irq_register_notify(avr_iomem_getirq(avr, R_PCMSK2, NULL, AVR_IOMEM_IRQ_ALL), on_pcmsk,
+                          &pcmsk2);
+  for (int b = 0; b < 8; ++b) {
+    if (b < 7)
+      avr_irq_register_notify(avr_io_getirq(avr, IOPORT_GETIRQ('J'), b), on_pin_j,
+                              (void *)(intptr_t)b);
+    avr_irq_register_notify(avr_io_getirq(avr, IOPORT_GETIRQ('K'), b), on_pin_k,
+                            (void *)(intptr_t)b);
+  }
+}
+
+avr_irq_t *sim_pin_irq(char port, int bit) { return avr_io_getirq(avr, IOPORT_GETIRQ(port), bit); }
+
+void sim_pin_set(char port, int bit, int level) {
+  int p = port - 'A';
+  ext_mask[p] |= (uint8_t)(1u << bit);
+  if (level) ext_value[p] |= (uint8_t)(1u << bit);
+  else ext_value[p] &= (uint8_t)~(1u << bit);
+  avr_ioport_external_t e = {.name = (unsigned long)port, .mask = ext_mask[p],
+                             .value = ext_value[p]};
+  avr_ioctl(avr, IOPORT_SET_EXTERNAL(port), &e);
+  avr_raise_irq(sim_pin_irq(port, bit), (uint32_t)(level != 0));
+}
 
 /* bytes waiting to go to the board, paced by tick */
 static unsigned char tx[SIM_SEND_CAP];
@@ -61,6 +126,7 @@ avr_t *sim_board_boot(const char *elf_path, sim_line_fn on_line) {
   uart_in = avr_io_getirq(avr, UART_GETIRQ('0'), UART_IRQ_INPUT);
   avr_ioctl(avr, UART_SET_FLAGS('0'), &uart_flags);
   avr_cycle_timer_register_usec(avr, 100, tick, NULL);
+  add_pcint_jk();
   return avr;
 }
 
@@ -68,6 +134,7 @@ void sim_board_reset(void) {
   avr_reset(avr);
   avr_ioctl(avr, UART_SET_FLAGS('0'), &uart_flags);
   avr_cycle_timer_register_usec(avr, 100, tick, NULL); /* a reset clears the timers */
+  pcmsk1 = pcmsk2 = 0;                                 /* and the registers */
   cur_len = 0;
   tx_len = tx_pos = 0;
 }

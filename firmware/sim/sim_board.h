@@ -20,8 +20,11 @@
 typedef void (*sim_line_fn)(const char *line);
 
 /* Reads the ELF, makes an atmega2560 at 16 MHz and loads it, hands every line
- * from UART0 to on_line, turns off simavr's echo of UART0 to stdout and starts
- * the 100 us clock. Returns the board, or NULL after saying why on stderr. */
+ * from UART0 to on_line, turns off simavr's echo of UART0 to stdout, starts
+ * the 100 us clock and adds the pin change interrupts of ports J and K that
+ * simavr 1.6 lacks (PCINT9..15 on PCINT1_vect, PCINT16..23 on PCINT2_vect, as
+ * the ATmega2560 datasheet has them; M2V3's encoder D15/A8 needs them).
+ * Returns the board, or NULL after saying why on stderr. */
 avr_t *sim_board_boot(const char *elf_path, sim_line_fn on_line);
 
 /* Resets the CPU and restores what a reset clears: the UART flags and the
@@ -42,6 +45,15 @@ void sim_send(const char *s);
 /* n bytes (at most SIM_SEND_CAP) into UART0, 2 per 100 us tick, as slow as a
  * wire; returns once the last one is in */
 void sim_send_paced(const unsigned char *bytes, size_t n);
+
+/* The IRQ of pin `bit` of port `port` ('A'..'L'): raised by the firmware's
+ * writes and by the timers' compare outputs; the harness may listen to it. */
+avr_irq_t *sim_pin_irq(char port, int bit);
+
+/* Drive an input pin from outside (an encoder channel) to level 0 or 1. The
+ * level stays what the pin reads, also across the firmware's writes to the same
+ * port (simavr 1.6 would otherwise let the PORT bit of a pull-up win). */
+void sim_pin_set(char port, int bit, int level);
 
 /* CRC-16/CCITT-FALSE of n bytes, bit by bit (PROTOCOL.md, "Frame") */
 unsigned sim_crc16(const char *s, size_t n);

@@ -16,7 +16,7 @@
 
 #include "sim_board.h"
 
-#define FIRMWARE_NAME "minseg-fw 2.0.0"
+#define FIRMWARE_NAME "minseg-fw 3.0.0"
 #define SETTLE_US 4000
 #define SYNC_MAX_US 200000
 #define BOOT_MAX_US 100000

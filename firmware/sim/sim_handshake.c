@@ -4,7 +4,9 @@
  *   2. answers ID with a valid $ID line for the expected profile,
  *   3. accepts V,2500 ($OK,V,2500) and streams samples 25 ms apart (board
  *      time, t_us) carrying u = 2500 and consecutive seq,
- *   4. counts quadrature edges driven on the profile's encoder pins (x4),
+ *   4. counts quadrature edges driven on each connector's encoder pins (x4,
+ *      pins from pins.def), follows the first connector that counted, and
+ *      tells it all in $DIAG,
  *   5. stops the motor by itself after more than 1 s of host silence ($EV,WDOG,
  *      then samples with u = 0),
  *   6. keeps up at the shortest period, 2 ms: no gaps in seq, t_us 2 ms apart.
@@ -15,6 +17,7 @@
 #include <string.h>
 
 #include "sim_board.h"
+#include "sim_pins.h"
 
 #define MAX_LINES 1024
 static char lines[MAX_LINES][96];
@@ -52,54 +55,44 @@ static int parse_sample(const char *line, struct sample *s) {
          sscanf(line, "$S,%lu,%lu,%ld,%ld*", &s->seq, &s->t, &s->count, &s->u) == 4;
 }
 
-/* encoder pins of each profile: port letter and bit for A and B */
-struct enc_pins {
-  const char *profile;
-  char port_a, port_b;
-  int bit_a, bit_b;
-};
-static const struct enc_pins kEnc[] = {
-    {"MinSegMega", 'E', 'E', 6, 7},
-    {"M2V3", 'J', 'K', 0, 0},
-    {"M1V4", 'E', 'E', 4, 5},
-};
-
 int main(int argc, char **argv) {
   if (argc != 3) {
     fprintf(stderr, "usage: %s firmware.elf PROFILE\n", argv[0]);
     return 2;
   }
   const char *profile = argv[2];
-  const struct enc_pins *enc = NULL;
-  for (size_t i = 0; i < sizeof kEnc / sizeof kEnc[0]; ++i)
-    if (strcmp(kEnc[i].profile, profile) == 0) enc = &kEnc[i];
-  if (!enc) {
+  const struct sim_connector *conn[2];
+  int n_conn = 0;
+  for (int i = 0; i < SIM_N_CONNECTORS && n_conn < 2; ++i)
+    if (strcmp(sim_connectors[i].profile, profile) == 0) conn[n_conn++] = &sim_connectors[i];
+  if (n_conn == 0) {
     fprintf(stderr, "unknown profile %s\n", profile);
     return 2;
   }
 
   avr_t *avr = sim_board_boot(argv[1], on_line);
   if (!avr) return 2;
-  avr_irq_t *pin_a = avr_io_getirq(avr, IOPORT_GETIRQ(enc->port_a), enc->bit_a);
-  avr_irq_t *pin_b = avr_io_getirq(avr, IOPORT_GETIRQ(enc->port_b), enc->bit_b);
 
   /* 1. boot line */
   sim_run_until_us(5000);
-  expect(n_lines >= 1 && strcmp(lines[0], "$BOOT,minseg-fw 2.0.0,2*0053") == 0,
-         "boot line $BOOT,minseg-fw 2.0.0,2*0053");
+  expect(n_lines >= 1 && strcmp(lines[0], "$BOOT,minseg-fw 3.0.0,3*A813") == 0,
+         "boot line $BOOT,minseg-fw 3.0.0,3*A813");
 
   /* 2. ID */
-  avr_raise_irq(pin_a, 1); /* encoder idle high (pull-ups) */
-  avr_raise_irq(pin_b, 1);
+  for (int c = 0; c < n_conn; ++c) { /* encoders idle high (pull-ups) */
+    sim_pin_set(conn[c]->a.port[0], conn[c]->a.bit, 1);
+    sim_pin_set(conn[c]->b.port[0], conn[c]->b.bit, 1);
+  }
   int before = n_lines;
   sim_send("ID\n");
   sim_run_for_us(5000);
   char want_id[96];
-  snprintf(want_id, sizeof want_id, "$ID,minseg-fw 2.0.0,2,%s,720,25000,5000,BRAKE*", profile);
+  snprintf(want_id, sizeof want_id, "$ID,minseg-fw 3.0.0,3,%s,720,25000,5000,BRAKE,FWD,FWD*",
+           profile);
   int id = find_line(before, "$ID,");
   expect(id >= 0 && strncmp(lines[id], want_id, strlen(want_id)) == 0 &&
              sim_checksum_ok(lines[id]),
-         "reply to ID names firmware, protocol 2 and the profile");
+         "reply to ID names firmware, protocol 3, the profile and FWD,FWD");
   if (id >= 0) printf("      %s\n", lines[id]);
 
   /* 3. V and the sample stream */
@@ -120,32 +113,42 @@ int main(int argc, char **argv) {
   expect(stream_ok, "samples: consecutive seq, t_us 25000 +- 100 apart");
   expect(ns >= 1 && s[ns - 1].u == 2500, "samples carry u = 2500 after V,2500");
 
-  /* 4. encoder: two forward cycles = 8 edges (A leads B), 1 ms apart */
+  /* 4. encoders: two forward cycles = 8 edges (A leads B), 1 ms apart, on each
+   * connector in turn; the count follows M1, the first to count */
   /* forward order in (A,B): 00 -> 10 -> 11 -> 01 -> 00; from 11: 01, 00, 10, 11 */
   const int fa[4] = {0, 0, 1, 1};
   const int fb[4] = {1, 0, 0, 1};
-  /* simavr 1.6 models no pin-change interrupt on port K (A8), so the M2V3
-   * encoder cannot be exercised in simulation; its PCINT code is only built. */
-  const int encoder_simulated = strcmp(profile, "M2V3") != 0;
-  for (int k = 0; k < 8 && encoder_simulated; ++k) {
-    avr_raise_irq(pin_a, (uint32_t)fa[k % 4]);
-    avr_raise_irq(pin_b, (uint32_t)fb[k % 4]);
-    sim_run_for_us(1000);
-  }
-  uint64_t silent_from = sim_now_us(); /* the last command */
-  sim_send("PING\n");
-  before = n_lines;
-  sim_run_for_us(60000);
-  ns = 0;
-  for (int i = before; i < n_lines && ns < 8; ++i)
-    if (parse_sample(lines[i], &s[ns])) ns++;
-  if (encoder_simulated) {
-    expect(ns >= 1 && s[ns - 1].count == 8,
-           "8 forward quadrature edges on the encoder pins count +8 (x4 decoding)");
-    if (ns >= 1) printf("      count after 8 edges: %ld\n", s[ns - 1].count);
-  } else {
-    printf("note: encoder not exercised for %s (no port K pin-change interrupt in simavr)\n",
-           profile);
+  uint64_t silent_from = 0;
+  for (int c = 0; c < n_conn; ++c) {
+    for (int k = 0; k < 8; ++k) {
+      sim_pin_set(conn[c]->a.port[0], conn[c]->a.bit, fa[k % 4]);
+      sim_pin_set(conn[c]->b.port[0], conn[c]->b.bit, fb[k % 4]);
+      sim_run_for_us(1000);
+    }
+    silent_from = sim_now_us(); /* the last command */
+    before = n_lines;
+    sim_send("DIAG\n");
+    sim_run_for_us(60000);
+    ns = 0;
+    for (int i = before; i < n_lines && ns < 8; ++i)
+      if (parse_sample(lines[i], &s[ns])) ns++;
+    char what[160];
+    snprintf(what, sizeof what,
+             "8 forward edges on M%d's encoder (%s, %s): the sample count is +8 (x4, M1's)",
+             conn[c]->n, conn[c]->a.name, conn[c]->b.name);
+    expect(ns >= 1 && s[ns - 1].count == 8, what);
+    if (ns >= 1) printf("      count: %ld\n", s[ns - 1].count);
+    int dg = find_line(before, "$DIAG,");
+    char want[96];
+    snprintf(want, sizeof want, "%s,M1,", n_conn == 2 ? "$DIAG,M1+M2" : "$DIAG,M1");
+    for (int d = 0; d < n_conn; ++d)
+      snprintf(want + strlen(want), sizeof want - strlen(want), "%sM%d:11:%d", d ? "," : "", d + 1,
+               d <= c ? 8 : 0);
+    snprintf(what, sizeof what, "DIAG after M%d's edges: %s", conn[c]->n, want);
+    expect(dg >= 0 && sim_checksum_ok(lines[dg]) && strncmp(lines[dg], want, strlen(want)) == 0 &&
+               lines[dg][strlen(want)] == '*',
+           what);
+    if (dg >= 0) printf("      %s\n", lines[dg]);
   }
 
   /* 5. watchdog: silence for more than 1 s */

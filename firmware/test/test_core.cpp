@@ -44,25 +44,51 @@ static void check_eq_(const std::string& a, const std::string& b, const char* ex
 // ------------------------------------------------------------------ fixture
 
 struct FakeBoard : public Board {
-  int32_t count = 0;
+  // Two connectors like the MinSegMega. M1 has counted 4 edges from the start
+  // in most tests, so its count is the samples' count; the tests of the
+  // active connector set edges themselves.
+  uint8_t n_conn = 2;
+  int32_t count = 0;   // M1's count
+  int32_t count2 = 0;  // M2's count
+  uint32_t edges[2] = {4, 0};
+  uint8_t pins[2] = {3, 3};  // pull-ups: an idle encoder reads 11
   int zero_calls = 0;
   int32_t last_u = 0;
   uint16_t last_vsup = 0;
   bool last_brake = true;
   int drive_calls = 0;
   bool tx_full = false;
+  uint8_t dir = 0;            // set by set_direction
+  int set_dir_calls = 0;
+  uint8_t eeprom = 0xFF;      // erased; save_direction writes only on change
+  int eeprom_writes = 0;
   std::vector<std::string> lines;
 
-  int32_t encoder_count() override { return count; }
+  uint8_t connectors() override { return n_conn; }
+  int32_t encoder_count(uint8_t i) override { return i == 0 ? count : count2; }
+  uint32_t encoder_edges(uint8_t i) override { return edges[i]; }
+  uint8_t encoder_pins(uint8_t i) override { return pins[i]; }
   void encoder_zero() override {
     ++zero_calls;
     count = 0;
+    count2 = 0;
   }
   void drive(int32_t u, uint16_t vsup, bool brake) override {
     last_u = u;
     last_vsup = vsup;
     last_brake = brake;
     ++drive_calls;
+  }
+  void set_direction(uint8_t d) override {
+    dir = d;
+    ++set_dir_calls;
+  }
+  uint8_t load_direction() override { return eeprom == 0xFF ? 0 : eeprom; }
+  void save_direction(uint8_t d) override {
+    if (eeprom != d) {
+      eeprom = d;
+      ++eeprom_writes;
+    }
   }
   bool send(const char* s, uint8_t n, bool droppable) override {
     if (droppable && tx_full) return false;
@@ -81,7 +107,11 @@ struct Rig {
   FakeBoard board;
   Controller ctl;
   uint32_t now;
-  explicit Rig(uint32_t t0 = 0, const char* name = "MinSegMega") : ctl(&board, name), now(t0) {
+  explicit Rig(uint32_t t0 = 0, const char* name = "MinSegMega", uint8_t eeprom = 0xFF,
+               uint32_t m1_edges = 4)
+      : ctl(&board, name), now(t0) {
+    board.eeprom = eeprom;
+    board.edges[0] = m1_edges;
     ctl.begin(t0);
   }
   std::string cmd(const std::string& line) {  // send a line byte by byte, return the reply
@@ -201,6 +231,13 @@ static std::set<std::string> board_lines_from_sessions() {
     r.advance_to(1200000);
     all.push_back(r.board.take());
   }
+  {  // DIR, and DIAG with M2 in use: 1440 edges (two turns), M1 open
+    Rig r(0, "MinSegMega", 0xFF, 0);
+    all.push_back(r.cmd("DIR,REV,FWD"));
+    r.board.edges[1] = 1440;
+    r.board.pins[1] = 1;
+    all.push_back(r.cmd("DIAG"));
+  }
   for (size_t i = 0; i < all.size(); ++i) {
     // split joined chunks into lines
     size_t start = 0;
@@ -265,6 +302,8 @@ static const HostExpect kHostExpect[] = {
     {"$SUP,9000*7BE9", kSup, 1, {9000, 0, 0, 0}},
     {"$ZM,COAST*4CE3", kZm, 1, {0, 0, 0, 0}},
     {"$STREAM,0*E299", kStream, 1, {0, 0, 0, 0}},
+    {"$DIR,REV,FWD*05DD", kDir, 2, {1, 0, 0, 0}},
+    {"$DIAG*A54F", kDiag, 0, {0, 0, 0, 0}},
 };
 
 static void test_golden_host_lines(const std::vector<Golden>& golden) {
@@ -291,7 +330,7 @@ static void test_golden_host_lines(const std::vector<Golden>& golden) {
       for (uint8_t k = 0; k < e->nargs; ++k) CHECK_MSG(c.arg[k] == e->a[k], variants[v]);
     }
   }
-  CHECK_EQ(n_host, 11);
+  CHECK_EQ(n_host, 13);
 }
 
 // Every observable piece of state that a command could change.
@@ -302,17 +341,20 @@ struct Snapshot {
   bool brake, stream, step;
   int zero_calls;
   int32_t count;
+  uint8_t dir;
+  int set_dir_calls, eeprom_writes;
   bool operator==(const Snapshot& o) const {
     return u == o.u && period == o.period && next == o.next && vsup == o.vsup &&
            brake == o.brake && stream == o.stream && step == o.step &&
-           zero_calls == o.zero_calls && count == o.count;
+           zero_calls == o.zero_calls && count == o.count && dir == o.dir &&
+           set_dir_calls == o.set_dir_calls && eeprom_writes == o.eeprom_writes;
   }
 };
 
 static Snapshot snap(const Rig& r) {
   Snapshot s = {r.ctl.u_mV(), r.ctl.period_us(), r.ctl.next_sample_us(), r.ctl.vsupply_mV(),
                 r.ctl.brake(), r.ctl.streaming(), r.ctl.step_active(), r.board.zero_calls,
-                r.board.count};
+                r.board.count, r.ctl.direction(), r.board.set_dir_calls, r.board.eeprom_writes};
   return s;
 }
 
@@ -345,7 +387,7 @@ static void test_golden_errors(const std::vector<Golden>& golden) {
     r.advance_to(1600001);
     CHECK_MSG(r.ctl.u_mV() == 0, "watchdog fed by: " + cmd);
   }
-  CHECK_EQ(n_err, 10);
+  CHECK_EQ(n_err, 12);
 }
 
 // -------------------------------------------------------------- other tests
@@ -439,7 +481,7 @@ static void test_clamping() {
   CHECK(r.ctl.brake());
   CHECK_EQ(r.cmd("STREAM,0"), std::string(framed("OK,STREAM,0")));
   CHECK(!r.ctl.streaming());
-  CHECK_EQ(r.cmd("ID"), std::string(framed("ID,minseg-fw 2.0.0,2,MinSegMega,720,25000,4500,BRAKE")));
+  CHECK_EQ(r.cmd("ID"), std::string(framed("ID,minseg-fw 3.0.0,3,MinSegMega,720,25000,4500,BRAKE,FWD,FWD")));
 }
 
 static void test_bridge_levels() {
@@ -689,6 +731,104 @@ static void test_number_format() {
   }
 }
 
+static void test_direction() {
+  // an erased EEPROM reads FWD,FWD; begin() applies what the EEPROM holds
+  Rig fresh(0);
+  CHECK_EQ(fresh.board.dir, 0);
+  CHECK_EQ(fresh.cmd("ID"), framed("ID,minseg-fw 3.0.0,3,MinSegMega,720,25000,5000,BRAKE,FWD,FWD"));
+  Rig kept(0, "M1V4", kDirEncoderRev | kDirMotorRev);
+  CHECK_EQ(kept.board.dir, kDirEncoderRev | kDirMotorRev);
+  CHECK_EQ(kept.cmd("ID"), framed("ID,minseg-fw 3.0.0,3,M1V4,720,25000,5000,BRAKE,REV,REV"));
+  // DIR applies at once (set_direction, then drive with the command in force),
+  // saves, and a second DIR with the same value writes nothing
+  Rig r(0);
+  r.cmd("V,2000");
+  r.advance_to(25000);
+  int drives = r.board.drive_calls;
+  CHECK_EQ(r.cmd("DIR,FWD,REV"), framed("OK,DIR,FWD,REV"));
+  CHECK_EQ(r.board.dir, kDirMotorRev);
+  CHECK_EQ(r.board.eeprom, kDirMotorRev);
+  CHECK_EQ(r.board.eeprom_writes, 1);
+  CHECK_EQ(r.board.drive_calls, drives + 1);
+  CHECK_EQ(r.board.last_u, 2000);
+  CHECK_EQ(r.cmd("DIR,FWD,REV"), framed("OK,DIR,FWD,REV"));
+  CHECK_EQ(r.board.eeprom_writes, 1);
+  CHECK_EQ(r.cmd("DIR,REV,FWD"), framed("OK,DIR,REV,FWD"));
+  CHECK_EQ(r.board.eeprom, kDirEncoderRev);
+  CHECK_EQ(r.board.eeprom_writes, 2);
+  CHECK_EQ(r.cmd("ID"), framed("ID,minseg-fw 3.0.0,3,MinSegMega,720,25000,5000,BRAKE,REV,FWD"));
+  // the switch does not change the count
+  r.board.count = 55;
+  r.board.lines.clear();
+  r.advance_to(50000);
+  CHECK_EQ(r.board.take(), framed("S,1,50000,55,2000"));
+  // a reset (a new controller on the same EEPROM) keeps it
+  Rig again(0, "MinSegMega", r.board.eeprom);
+  CHECK_EQ(again.cmd("ID"), framed("ID,minseg-fw 3.0.0,3,MinSegMega,720,25000,5000,BRAKE,REV,FWD"));
+  // BUSY during a step sequence (pending or running), nothing changes
+  Rig s(0);
+  s.cmd("STEP,0,1000,100,2");
+  CHECK_EQ(s.cmd("DIR,REV,REV"), framed("ERR,BUSY"));
+  s.advance_to(25000);
+  CHECK_EQ(s.cmd("DIR,REV,REV"), framed("ERR,BUSY"));
+  CHECK_EQ(s.board.dir, 0);
+  CHECK_EQ(s.board.eeprom_writes, 0);
+  CHECK_EQ(s.cmd("STOP"), framed("OK,STOP"));
+  CHECK_EQ(s.cmd("DIR,REV,REV"), framed("OK,DIR,REV,REV"));
+  // a DIR feeds the watchdog like every accepted command
+  Rig w(0);
+  w.cmd("V,1000");
+  w.advance_to(900000);
+  w.cmd("DIR,FWD,FWD");
+  w.advance_to(1800000);
+  CHECK_EQ(w.ctl.u_mV(), 1000);
+  w.advance_to(1900001);
+  CHECK_EQ(w.ctl.u_mV(), 0);
+}
+
+static void test_active_connector() {
+  // nothing counted yet: count 0 whatever the counters hold, DIAG says NONE
+  Rig r(0, "MinSegMega", 0xFF, 0);
+  r.board.count = 3;
+  r.board.edges[0] = 3;  // three edges are not enough
+  r.board.pins[0] = 2;
+  CHECK_EQ(r.cmd("DIAG"), framed("DIAG,M1+M2,NONE,M1:10:3,M2:11:0"));
+  r.board.lines.clear();
+  r.advance_to(25000);
+  CHECK_EQ(r.board.take(), framed("S,0,25000,0,0"));
+  // M2 reaches 4 edges first: the count follows M2 from then on
+  r.board.edges[1] = 4;
+  r.board.count2 = -4;
+  r.advance_to(50000);
+  CHECK_EQ(r.board.take(), framed("S,1,50000,-4,0"));
+  CHECK_EQ(r.ctl.active_connector(), 1);
+  r.board.edges[0] = 100;
+  r.board.count = 100;
+  r.advance_to(75000);
+  CHECK_EQ(r.board.take(), framed("S,2,75000,-4,0"));
+  CHECK_EQ(r.cmd("DIAG"), framed("DIAG,M1+M2,M2,M1:10:100,M2:11:4"));
+  // Z zeroes every connector and keeps the active one
+  CHECK_EQ(r.cmd("Z"), framed("OK,Z"));
+  CHECK_EQ(r.board.count, 0);
+  CHECK_EQ(r.board.count2, 0);
+  CHECK_EQ(r.ctl.active_connector(), 1);
+  // DIAG with arguments is ARGS; DIAG does not need a running motor
+  CHECK_EQ(r.cmd("DIAG,1"), framed("ERR,ARGS,DIAG"));
+  // the first connector found when both passed 4 edges between two polls
+  Rig both(0, "MinSegMega", 0xFF, 0);
+  both.board.edges[0] = 8;
+  both.board.edges[1] = 8;
+  both.advance_to(100);
+  CHECK_EQ(both.ctl.active_connector(), 0);
+  // one connector (M1V4)
+  Rig one(0, "M1V4", 0xFF, 0);
+  one.board.n_conn = 1;
+  CHECK_EQ(one.cmd("DIAG"), framed("DIAG,M1,NONE,M1:11:0"));
+  one.board.edges[0] = 4294967295u;
+  one.board.pins[0] = 0;
+  CHECK_EQ(one.cmd("DIAG"), framed("DIAG,M1,M1,M1:00:4294967295"));
+}
+
 int main(int argc, char** argv) {
   const char* golden_path = argc > 1 ? argv[1] : "golden/lines.txt";
   std::vector<Golden> golden = read_golden(golden_path);
@@ -703,6 +843,8 @@ int main(int argc, char** argv) {
   test_sample_schedule();
   test_line_assembly();
   test_number_format();
+  test_direction();
+  test_active_connector();
   std::printf("%d passed, %d failed\n", g_passed, g_failed);
   return g_failed == 0 ? 0 : 1;
 }

@@ -32,6 +32,14 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     ),
     "ports": ("minseg_tui.cli.ports", "list serial ports and say which looks like a MinSeg"),
     "sim": ("minseg_tui.cli.sim", "run a virtual MinSeg on a pseudo-terminal"),
+    "board-check": (
+        "minseg_tui.cli.board_check",
+        "does the wheel turn when asked, and does the count follow it?",
+    ),
+    "flash": (
+        "minseg_tui.cli.flash",
+        "write the lab firmware to a MinSeg with avrdude and check that it answers",
+    ),
     "report": ("minseg_tui.cli.report", "write a session's report (Markdown, HTML, CSV)"),
     "tui": ("minseg_tui.cli.tui", "start the lab assistant (the default)"),
 }

@@ -106,22 +106,42 @@ def render(result: Identification) -> str:
             else "not read (the speed never reached 63 %)"
         )
         fit = s.fit
+        interval = (
+            f"95 % interval {s.T_ci[0] * 1e3:.2f} to {s.T_ci[1] * 1e3:.2f} ms"
+            if s.T_determined
+            else "95 % interval: not determined by this log"
+        )
+        on_bound = " (on its bound)" if fit.T_on_bound else ""
+        timing = (
+            "with a time shift of the steps against the samples as a nuisance, kept within one "
+            f"sample period: {fit.shift * 1e3:+.2f} ms"
+            + (", on that bound" if fit.shift_on_bound else "")
+        )
+        if s.dead_time:
+            timing = (
+                f"with a dead time of {s.dead_time * 1e3:.1f} ms (the wheel answers later than the one "
+                "sample period the sampling's lateness explains), part of the model"
+            )
         out += [
             "",
             f"Step log: {len(s.steps)} rising step(s); angle from {fit.angle_source}, time from {fit.time_source}",
             f"omega_ss = {_g(s.omega_ss)} rad/s (fitted), u_ss = {_g(s.u_ss)} V ({how})",
-            f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V +- {_g((s.K_ci[1] - s.K_ci[0]) / 2, 2)} (95 %, Task 11)",
+            f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V "
+            + (
+                f"+- {_g((s.K_ci[1] - s.K_ci[0]) / 2, 2)} (95 %, Task 11)"
+                if s.K_determined
+                else "(95 % interval: not determined by this log; Task 11)"
+            ),
             f"T, 63 % reading      = {t63} (Task 12, median over the rising steps)",
-            f"T, least squares     = {s.T * 1e3:.2f} ms, 95 % interval {s.T_ci[0] * 1e3:.2f} to {s.T_ci[1] * 1e3:.2f} ms",
+            f"T, least squares     = {s.T * 1e3:.2f} ms{on_bound}, {interval}",
             *_wrap(
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "
-                "the sampling is part of the model, with a time shift of the steps against the samples "
-                f"as a nuisance: {fit.shift * 1e3:+.2f} ms; {fit.why}; the model uses this T)"
+                f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T)"
             ),
             *(_wrap(s.T_63_note) if s.T_63_note else []),
             f"J = T (R f + k_v k_a) / R = {_g(s.J, 3)} kg m^2 (Task 13)",
             "",
-            f"Model (Task 14): {_g(s.T)} w' = -w + {_g(s.K)} u_A",
+            f"Model (Task 14): {s.model_equation(_g, 'w')}",
             f"At u_A = 5 V (Task 15): omega = {_g(s.K * 5.0)} rad/s",
         ]
     out += ["", "What the numbers show:"]

@@ -2,7 +2,7 @@
 
 It prints the device path; any serial monitor (or `minseg-tui --port PATH`) can open
 it at 500000 baud. Options are the virtual board's settings (seed, parameters, hidden
-effects, faults). Ctrl-C and `kill` both stop it cleanly (the pty closed, the --link
+effects, faults; --fault for the wiring faults a board at the bench has). Ctrl-C and `kill` both stop it cleanly (the pty closed, the --link
 symlink removed) with exit code 0.
 """
 
@@ -14,7 +14,7 @@ import sys
 from types import FrameType
 
 from minseg_tui.device.ptyserver import PtyServer
-from minseg_tui.device.virtual import OPTIONS, VirtualBoard, settings_from
+from minseg_tui.device.virtual import OPTIONS, WIRING_FAULTS, VirtualBoard, settings_from
 from minseg_tui.errors import InputError
 
 
@@ -28,6 +28,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
             parser.add_argument(
                 flag, type=str, default=None, metavar=opt.kind.__name__.upper(), help=opt.help
             )
+    parser.add_argument(
+        "--fault",
+        action="append",
+        metavar="NAME",
+        help=f"a wiring fault: {', '.join(WIRING_FAULTS)} (repeat it or join with commas "
+        "for several)",
+    )
     parser.add_argument("--link", metavar="PATH", help="also make a symlink PATH to the device")
 
 
@@ -44,6 +51,8 @@ def run(args: argparse.Namespace) -> int:
     without job control, the sim inherits Ctrl-C ignored, as every such job does: stop it
     with `kill`.)"""
     values = {name: getattr(args, name) for name in OPTIONS if getattr(args, name) is not None}
+    if args.fault:
+        values["fault"] = ",".join(args.fault)
     try:
         settings = settings_from(values)
     except ValueError as exc:

@@ -33,6 +33,7 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import re
 import threading
 import time
@@ -63,7 +64,20 @@ EVENT_KINDS = (
     "error",
     "motor",
 )
-FLASH_HINT = "flash the firmware shipped with this minseg-tui (make -C firmware upload)"
+FLASH_HINT = (
+    "flash the firmware shipped with this minseg-tui: minseg-tui flash "
+    "(from the sources: make -C firmware upload)"
+)
+
+
+def flash_hint(port: str) -> str:
+    """FLASH_HINT with the port filled in (a device path; a URL has nothing to flash)."""
+    if "://" in port:
+        return FLASH_HINT
+    return (
+        f"flash the firmware shipped with this minseg-tui: minseg-tui flash --port {port} "
+        f"(from the sources: make -C firmware upload PORT={port})"
+    )
 
 
 @dataclass(frozen=True)
@@ -154,6 +168,7 @@ class Link:
         self._last_tx = 0.0
         self._silent = False
         self._gave_up = False
+        self._heard = 0  # bytes received during the last handshake
 
     # -- opening and closing -------------------------------------------------------------
     def open(self) -> P.Ident:
@@ -230,6 +245,7 @@ class Link:
         buf = b""
         while self._clock() < until:
             data: bytes = ser.read(max(1, ser.in_waiting))
+            self._heard += len(data)
             buf += data
             *lines, buf = buf.split(b"\n")
             for raw in lines:
@@ -245,11 +261,12 @@ class Link:
             newer = " or update minseg-tui" if proto > P.PROTOCOL_VERSION else ""
             raise DeviceError(
                 f"{self.port}: the board's firmware ({fw}) speaks protocol {proto}, this "
-                f"minseg-tui speaks protocol {P.PROTOCOL_VERSION}: {FLASH_HINT}{newer}"
+                f"minseg-tui speaks protocol {P.PROTOCOL_VERSION}: {flash_hint(self.port)}{newer}"
             )
 
     def _handshake(self, ser: Any) -> P.Ident:
         """Wait for $BOOT (or any valid line from a running board), then ID and check it."""
+        self._heard = 0  # bytes received during this handshake
 
         def first(line: str) -> bool:
             if line.startswith(("$BOOT,", "$ID,")):
@@ -277,14 +294,19 @@ class Link:
             assert isinstance(ident, P.Ident)
             self._last_rx = self._clock()
             return ident
+        if self._heard:  # bytes came, none of them a line of ours: another program runs there
+            raise DeviceError(
+                f"{self.port}: this board does not run the lab firmware (it sends data, but no "
+                f"line minseg-tui can read: still Simulink's program?): {flash_hint(self.port)}"
+            )
         raise DeviceError(
-            f"no MinSeg answered on {self.port} (no $ID reply to ID): is it the right port, "
-            f"and does the board run the minseg firmware? ({FLASH_HINT})"
+            f"no MinSeg answered on {self.port} (nothing came back to ID): is it the right port? "
+            f"A board still running Simulink's program may be silent too: {flash_hint(self.port)}"
         )
 
     # -- commands -------------------------------------------------------------------------
     def command(self, cmd: P.Message | str, timeout: float | None = None) -> P.Message:
-        """Send a command and return the board's reply ($OK, $ERR, $ID or $METER).
+        """Send a command and return the board's reply ($OK, $ERR, $ID, $DIAG or $METER).
 
         ``cmd`` is a protocol message or a line as a student would type it ("V,2500").
         Raises DeviceError when not connected or no reply came within the timeout, and
@@ -325,6 +347,10 @@ class Link:
             self._u_req, self._step_low = None, int(ok.values[0]) / 1000.0
         elif ok.command == "STOP":
             self._u_req = 0.0
+        elif ok.command == "DIR" and len(ok.values) == 2 and self.ident is not None:
+            self.ident = dataclasses.replace(
+                self.ident, enc_dir=ok.values[0], motor_dir=ok.values[1]
+            )
 
     @property
     def u_req(self) -> float | None:
@@ -400,6 +426,19 @@ class Link:
     def set_stream(self, on: bool) -> P.Ok:
         """Sample stream on or off."""
         return self._ok(P.SetStream(on))
+
+    def set_direction(self, enc: str, motor: str) -> P.Ok:
+        """The encoder's counting direction and the motor's polarity, "FWD" or "REV" each;
+        the board keeps them (EEPROM) and :attr:`ident` follows."""
+        return self._ok(P.SetDirection(enc.upper(), motor.upper()))
+
+    def diag(self) -> P.Diag:
+        """The board's $DIAG: encoder pin levels and edges per connector, the one in use."""
+        reply = self.command(P.ReadDiag())
+        if not isinstance(reply, P.Diag):
+            what = f"{reply.code} {reply.detail}".rstrip() if isinstance(reply, P.Err) else reply
+            raise DeviceError(f"{self.port}: the board did not answer DIAG ({what})")
+        return reply
 
     def meter(self) -> MeterReading | None:
         """The multimeter on M1A/M1B (virtual board only): u_A (V), i (A), R (ohm); else None."""
@@ -489,7 +528,7 @@ class Link:
             self._emit("alive", f"{self.port}: the board answers again")
         if isinstance(msg, P.SampleLine):
             self._on_sample(msg)
-        elif isinstance(msg, P.Ok | P.Err | P.Ident | P.Meter):
+        elif isinstance(msg, P.Ok | P.Err | P.Ident | P.Meter | P.Diag):
             self._on_reply(msg)
         elif isinstance(msg, P.EvWatchdog):
             self._u_req = 0.0
@@ -512,6 +551,8 @@ class Link:
             name = "ID"
         elif isinstance(msg, P.Meter):
             name = "METER"
+        elif isinstance(msg, P.Diag):
+            name = "DIAG"
         else:
             assert isinstance(msg, P.Err)
             name = msg.detail

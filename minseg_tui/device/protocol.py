@@ -1,4 +1,4 @@
-"""Protocol 2 of the MinSeg serial link (firmware/PROTOCOL.md): pure parse and format.
+"""Protocol 3 of the MinSeg serial link (firmware/PROTOCOL.md): pure parse and format.
 
 Every line, in both directions, is a small frozen dataclass. The lines are data: the
 table ``LINES`` names each kind (its NAME, for ``$EV`` its event tag, its direction and
@@ -16,10 +16,12 @@ from collections.abc import Callable
 from dataclasses import dataclass, fields
 from typing import Literal
 
-PROTOCOL_VERSION = 2
+PROTOCOL_VERSION = 3
 """The protocol version this host speaks (the `proto` field of $BOOT and $ID).
 
-Version 2 replaced version 1's one-byte XOR with a CRC-16 (four hex digits)."""
+Version 2 replaced version 1's one-byte XOR with a CRC-16 (four hex digits); version 3
+added DIR (the counting direction and motor polarity at run time, reported by $ID) and
+DIAG (the encoder pins and edges per connector)."""
 
 CHECKSUM_DIGITS = 4
 """Hex digits of the checksum field (`*HHHH`)."""
@@ -37,6 +39,8 @@ MAX_LINE = 80
 
 ERR_CODES = ("CHECKSUM", "UNKNOWN", "ARGS", "RANGE", "BUSY")
 ZERO_MODES = ("BRAKE", "COAST")
+DIRECTIONS = ("FWD", "REV")
+"""The two settings of DIR and of the direction fields of $ID."""
 
 Direction = Literal["board", "host"]
 
@@ -110,6 +114,35 @@ def _fmt_bit(v: object) -> str:
     return "1" if v else "0"
 
 
+@dataclass(frozen=True)
+class ConnectorState:
+    """One connector in a $DIAG reply: its name (``M1``), the levels of its encoder pins A
+    and B now (``"11"``: both high, as an unplugged encoder reads with the pull-ups) and the
+    edges its encoder counted since reset (every edge, whatever its direction)."""
+
+    name: str
+    pins: str
+    edges: int
+
+
+_CONNECTOR = re.compile(r"([A-Z][A-Z0-9]{0,7}):([01]{2}):([0-9]{1,10})\Z")
+
+
+def _connector(s: str) -> ConnectorState:
+    m = _CONNECTOR.match(s)
+    if not m:
+        raise ProtocolError("ARGS", why=f"expected <connector>:<AB>:<edges>, got {s!r}")
+    edges = int(m.group(3))
+    if edges > 2**32 - 1:
+        raise ProtocolError("RANGE", why=f"{edges} edges outside uint32")
+    return ConnectorState(m.group(1), m.group(2), edges)
+
+
+def _fmt_connector(v: object) -> str:
+    assert isinstance(v, ConnectorState)
+    return f"{v.name}:{v.pins}:{v.edges}"
+
+
 _I32 = (-(2**31), 2**31 - 1)
 FIELD_TYPES: dict[str, tuple[Callable[[str], object], Callable[[object], str]]] = {
     "int": (_int_in(*_I32), str),
@@ -120,6 +153,8 @@ FIELD_TYPES: dict[str, tuple[Callable[[str], object], Callable[[object], str]]] 
     "zero": (_choice(ZERO_MODES), str),
     "err": (_choice(ERR_CODES), str),
     "bit": (_bit, _fmt_bit),
+    "dir": (_choice(DIRECTIONS), str),
+    "conn": (_connector, _fmt_connector),
 }
 
 
@@ -134,7 +169,9 @@ class Boot:
 
 @dataclass(frozen=True)
 class Ident:
-    """$ID: reply to ID. period_us in us, vsupply_mV in mV, zero BRAKE or COAST."""
+    """$ID: reply to ID. period_us in us, vsupply_mV in mV, zero BRAKE or COAST; enc_dir
+    and motor_dir FWD or REV (the encoder's counting direction and the motor's polarity,
+    as DIR set them)."""
 
     fw: str
     proto: int
@@ -143,6 +180,23 @@ class Ident:
     period_us: int
     vsupply_mV: int
     zero: str
+    enc_dir: str = "FWD"
+    motor_dir: str = "FWD"
+
+
+@dataclass(frozen=True)
+class Diag:
+    """$DIAG: reply to DIAG. drive: the connectors the motor command drives (``M1+M2``);
+    active: the connector whose encoder the count follows (``NONE`` until one counted 4
+    edges since reset); connectors: each connector's encoder pins and edges."""
+
+    drive: str
+    active: str
+    connectors: tuple[ConnectorState, ...] = ()
+
+    def connector(self, name: str) -> ConnectorState | None:
+        """The state of the connector called ``name``, or None."""
+        return next((c for c in self.connectors if c.name == name), None)
 
 
 @dataclass(frozen=True)
@@ -265,6 +319,20 @@ class SetStream:
 
 
 @dataclass(frozen=True)
+class SetDirection:
+    """DIR: the encoder's counting direction and the motor's polarity, FWD or REV each
+    (kept in EEPROM on the board)."""
+
+    enc: str
+    motor: str
+
+
+@dataclass(frozen=True)
+class ReadDiag:
+    """DIAG: ask for a $DIAG reply (encoder pins, edges per connector, the connector in use)."""
+
+
+@dataclass(frozen=True)
 class ReadMeter:
     """METER (virtual board only): ask for a $METER reading."""
 
@@ -279,6 +347,7 @@ Message = (
     | EvStep
     | EvStepDone
     | Meter
+    | Diag
     | Identify
     | Ping
     | SetVoltage
@@ -289,6 +358,8 @@ Message = (
     | SetSupply
     | SetZeroMode
     | SetStream
+    | SetDirection
+    | ReadDiag
     | ReadMeter
 )
 
@@ -309,7 +380,13 @@ class LineKind:
 
 LINES: tuple[LineKind, ...] = (
     LineKind("BOOT", None, "board", Boot, ("text", "int")),
-    LineKind("ID", None, "board", Ident, ("text", "int", "text", "int", "int", "int", "zero")),
+    LineKind(
+        "ID",
+        None,
+        "board",
+        Ident,
+        ("text", "int", "text", "int", "int", "int", "zero", "dir", "dir"),
+    ),
     LineKind("S", None, "board", SampleLine, ("u32", "u32", "i32", "int")),
     LineKind("OK", None, "board", Ok, ("name", "text*")),
     LineKind("ERR", None, "board", Err, ("err", "text?")),
@@ -317,6 +394,7 @@ LINES: tuple[LineKind, ...] = (
     LineKind("EV", "STEP", "board", EvStep, ("int", "int")),
     LineKind("EV", "STEPDONE", "board", EvStepDone, ()),
     LineKind("METER", None, "board", Meter, ("int", "int", "int")),
+    LineKind("DIAG", None, "board", Diag, ("text", "text", "conn*")),
     LineKind("ID", None, "host", Identify, ()),
     LineKind("PING", None, "host", Ping, ()),
     LineKind("V", None, "host", SetVoltage, ("int",)),
@@ -327,6 +405,8 @@ LINES: tuple[LineKind, ...] = (
     LineKind("SUP", None, "host", SetSupply, ("int",)),
     LineKind("ZM", None, "host", SetZeroMode, ("zero",)),
     LineKind("STREAM", None, "host", SetStream, ("bit",)),
+    LineKind("DIR", None, "host", SetDirection, ("dir", "dir")),
+    LineKind("DIAG", None, "host", ReadDiag, ()),
     LineKind("METER", None, "host", ReadMeter, ()),
 )
 

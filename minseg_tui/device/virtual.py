@@ -1,4 +1,4 @@
-"""The virtual MinSeg: the board's firmware behaviour (protocol 2) with the plant behind it.
+"""The virtual MinSeg: the board's firmware behaviour (protocol 3) with the plant behind it.
 
 :class:`VirtualBoard` is the firmware as a state machine on a board clock it does not
 own: a driver moves it forward with :meth:`VirtualBoard.run_until` (board time in s) and
@@ -30,6 +30,13 @@ simavr, this board in tests/device/test_conformance.py). Written down:
   duty x the true supply (``PlantParams.v_supply``) into the driver model, so a wrong
   ``SUP`` setting shows as a wrong u_A, as on the real board.
 - The extension ``METER`` answers ``$METER,<u_mV>,<i_uA>,<R_mohm>``: the multimeter.
+- One motor connector, ``M1``: ``DIAG`` answers ``$DIAG,M1,<active>,M1:<AB>:<edges>``.
+  ``DIR`` is kept across resets for the life of the board object (the firmware's EEPROM).
+  As on the firmware, the count of ``$S`` lines stays 0 until the encoder counted 4 edges
+  since reset (the connector becomes *active*), then follows the encoder.
+- Wiring faults (:class:`Faults`: ``encoder_off``, ``encoder_reversed``, ``motor_off``,
+  by name through ``fault=`` in the URL or ``minseg-tui sim --fault``) fail the ways a
+  board at the bench does; :meth:`VirtualBoard.turn_by_hand` turns the wheel as a hand.
 """
 
 from __future__ import annotations
@@ -50,8 +57,11 @@ from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import MeterReading, Plant, PlantParams, ZeroMode
 from minseg_tui.units import KA_OVER_KV, NUMBER
 
-FIRMWARE = "minseg-virtual 2.0.0"
+FIRMWARE = "minseg-virtual 3.0.0"
 BOARD = "Virtual"
+CONNECTOR = "M1"
+"""The virtual board's one motor connector."""
+_GRAY = ("00", "10", "11", "01")  # encoder pins A, B at count mod 4 (x4 quadrature)
 WATCHDOG_S = 1.0
 PERIOD_LIMITS_US = (1000, 100000)
 HALF_LIMITS_MS = (20, 60000)
@@ -66,6 +76,12 @@ class Faults:
     garbage: random bytes before a line; truncate: a line cut short; bad_checksum: a
     digit changed after the checksum was computed; drop: a sample line lost;
     silent: the board stops answering (no output at all, commands ignored).
+
+    Wiring faults, as a board at the bench fails (named in ``WIRING_FAULTS``):
+    encoder_off: the encoder cable is out (no edges, both pins read 1 with the pull-ups);
+    encoder_reversed: the count falls for a positive voltage; motor_off: no motor on the
+    driver (cable out, power switch off, the Task 5 jumper out with no meter in series):
+    the wheel does not turn and no current flows.
     """
 
     garbage: float = 0.0
@@ -73,6 +89,35 @@ class Faults:
     bad_checksum: float = 0.0
     drop: float = 0.0
     silent: bool = False
+    encoder_off: bool = False
+    encoder_reversed: bool = False
+    motor_off: bool = False
+
+
+WIRING_FAULTS: dict[str, str] = {
+    "encoder-off": "encoder_off",
+    "encoder-reversed": "encoder_reversed",
+    "motor-off": "motor_off",
+}
+"""The wiring faults by the name the URL (``fault=``) and ``minseg-tui sim --fault`` use,
+to their field of :class:`Faults`."""
+
+
+def wiring_faults(text: str) -> list[str]:
+    """The fields of :class:`Faults` for a comma list of fault names (``encoder-off,motor-off``);
+    raises ValueError naming a name that is not a fault."""
+    out: list[str] = []
+    for raw in text.split(","):
+        name = raw.strip().lower()
+        if not name:
+            continue
+        if name not in WIRING_FAULTS:
+            raise ValueError(
+                f"option fault: expected {', '.join(WIRING_FAULTS)} (or several, comma-separated), "
+                f"got {raw.strip()!r}"
+            )
+        out.append(WIRING_FAULTS[name])
+    return out
 
 
 @dataclass
@@ -165,9 +210,14 @@ def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSett
     """Settings from option names (see OPTIONS) to values; raises ValueError naming a bad one."""
     flat: dict[str, Any] = {}  # dotted path -> value of the option's kind
     for name, raw in values.items():
+        if name == "fault":
+            for fault in wiring_faults(str(raw)):
+                flat[f"faults.{fault}"] = True
+            continue
         opt = OPTIONS.get(name)
         if opt is None:
-            raise ValueError(f"unknown virtual board option {name!r} (known: {', '.join(OPTIONS)})")
+            known = ", ".join((*OPTIONS, "fault"))
+            raise ValueError(f"unknown virtual board option {name!r} (known: {known})")
         v: Any
         try:
             if opt.kind is bool:
@@ -233,6 +283,9 @@ class VirtualBoard:
         self.truth: deque[P.SampleLine] = deque(maxlen=200_000)  # every sample, before faults
         self.plugged = True  # the USB cable (URL driver: opening an unplugged board fails)
         self.attached = False  # a port has it open (one program per board)
+        self.enc_dir = "FWD"  # DIR: kept over resets, as the firmware's EEPROM
+        self.motor_dir = "FWD"
+        self._raw_seen = self._raw_count()
         self.reset()
 
     @property
@@ -258,7 +311,11 @@ class VirtualBoard:
             self._pending_mV: int | None = None
             self._step: _StepSeq | None = None
             self._seq = s.seq0 & 0xFFFFFFFF
-            self._count0 = self.plant.count
+            self._count_base = 0  # the count when the reference below was taken
+            self._raw_ref = self._raw_count()
+            self._raw_seen = self._raw_count()
+            self.edges = 0  # every edge of the encoder since reset
+            self.active = False  # the connector counted 4 edges since reset
             self._last_host = self.now
             self._wdog_fired = False
             self._inbuf.clear()
@@ -325,6 +382,64 @@ class VirtualBoard:
     def _advance_plant(self, t: float) -> None:
         if t > self.plant.t:
             self.plant.advance(t - self.plant.t)
+            self._count_edges()
+
+    # -- the encoder ---------------------------------------------------------------------
+    def _raw_count(self) -> int:
+        """What the encoder's pins encode (x4): the wheel's count, the other way round when
+        the encoder is wired reversed (fault)."""
+        c = self.plant.count
+        return -c if self.faults.encoder_reversed else c
+
+    def _count_edges(self) -> None:
+        raw = self._raw_count()
+        if not self.faults.encoder_off:
+            self.edges += abs(raw - self._raw_seen)
+            if self.edges >= 4:
+                self.active = True
+        self._raw_seen = raw
+
+    def _count_sign(self) -> int:
+        if self.faults.encoder_off:
+            return 0
+        return -1 if self.enc_dir == "REV" else 1
+
+    def _connector_count(self) -> int:
+        """The encoder count of M1 (before the 'active' rule of $S lines)."""
+        return self._count_base + self._count_sign() * (self._raw_count() - self._raw_ref)
+
+    def _rebase_count(self, to: int) -> None:
+        """Restart counting from ``to`` at the wheel's position now (Z, DIR, a fault)."""
+        self._count_base = to
+        self._raw_ref = self._raw_count()
+
+    def pins(self) -> str:
+        """The levels of the encoder's pins A and B now ("11" when it is unplugged)."""
+        with self.lock:
+            if self.faults.encoder_off:
+                return "11"
+            return _GRAY[self._raw_count() % 4]
+
+    def set_wiring_fault(self, name: str, on: bool = True) -> None:
+        """Make or mend a wiring fault (a field of :class:`Faults`: ``encoder_off``, ...),
+        as a hand at the bench pulls or plugs a cable; the count keeps its value."""
+        with self.lock:
+            if name not in WIRING_FAULTS.values():
+                raise ValueError(f"not a wiring fault: {name!r}")
+            self._count_edges()
+            count = self._connector_count()
+            setattr(self.faults, name, on)
+            self._rebase_count(count)
+            self._raw_seen = self._raw_count()
+            self._set_zero_mode(self.zero_mode)
+            self._drive(self.u_mV)
+
+    def turn_by_hand(self, revolutions: float) -> None:
+        """Turn the wheel by hand by ``revolutions`` (positive: the way a positive voltage
+        turns it), at once; the encoder sees every edge on the way."""
+        with self.lock:
+            self.plant.theta += 2.0 * math.pi * revolutions
+            self._count_edges()
 
     def _do_event(self) -> None:
         now = self.now
@@ -344,7 +459,7 @@ class VirtualBoard:
             self._sample()
 
     def _sample(self) -> None:
-        count = self.plant.count - self._count0
+        count = self._connector_count() if self.active else 0
         count = ((count + 2**31) & 0xFFFFFFFF) - 2**31
         events: list[P.Message] = []
         step = self._step
@@ -378,15 +493,20 @@ class VirtualBoard:
 
     # -- the motor driver ----------------------------------------------------------------
     def _drive(self, u_mV: int) -> None:
-        """Duty = |u| / V_supply (setting), clamped to 1; the bridge gives duty x true supply."""
+        """Duty = |u| / V_supply (setting), clamped to 1; the bridge gives duty x true supply,
+        the other way round with DIR's motor REV; nothing with no motor on it (fault)."""
         duty = min(abs(u_mV) / self.sup_mV, 1.0)
-        self.plant.set_command(
-            math.copysign(duty * self.plant.params.v_supply, u_mV) if u_mV else 0.0
-        )
+        if self.faults.motor_off or not u_mV:
+            self.plant.set_command(0.0)
+            return
+        sign = -1.0 if self.motor_dir == "REV" else 1.0
+        self.plant.set_command(math.copysign(duty * self.plant.params.v_supply, sign * u_mV))
 
     def _set_zero_mode(self, mode: str) -> None:
         self.zero_mode = mode
-        zm: ZeroMode = "coast" if mode == "COAST" else "brake"
+        # a motor off the driver is an open circuit: no current, the wheel runs down freely
+        coast = mode == "COAST" or self.faults.motor_off
+        zm: ZeroMode = "coast" if coast else "brake"
         if self.plant.params.zero_mode != zm:
             self.plant.params = dataclasses.replace(self.plant.params, zero_mode=zm)
 
@@ -459,7 +579,7 @@ class VirtualBoard:
             return  # an empty line: no reply
         try:
             cmd = P.parse_command(raw)
-            if isinstance(cmd, P.SquareWave) and self._step is not None:
+            if isinstance(cmd, P.SquareWave | P.SetDirection) and self._step is not None:
                 raise P.ProtocolError("BUSY")
         except P.ProtocolError as exc:
             detail = "" if exc.code in ("CHECKSUM", "BUSY") else exc.detail
@@ -491,6 +611,8 @@ class VirtualBoard:
             self.period_us,
             self.sup_mV,
             self.zero_mode,
+            self.enc_dir,
+            self.motor_dir,
         )
 
     def _cmd_ping(self, _c: P.Ping) -> P.Message:
@@ -530,8 +652,19 @@ class VirtualBoard:
         return P.Ok("P", (str(us),))
 
     def _cmd_z(self, _c: P.Zero) -> P.Message:
-        self._count0 = self.plant.count
+        self._rebase_count(0)
         return P.Ok("Z")
+
+    def _cmd_dir(self, c: P.SetDirection) -> P.Message:
+        count = self._connector_count()  # the switch does not change the count
+        self.enc_dir, self.motor_dir = c.enc, c.motor
+        self._rebase_count(count)
+        self._drive(self.u_mV)
+        return P.Ok("DIR", (c.enc, c.motor))
+
+    def _cmd_diag(self, _c: P.ReadDiag) -> P.Message:
+        state = P.ConnectorState(CONNECTOR, self.pins(), self.edges & 0xFFFFFFFF)
+        return P.Diag(CONNECTOR, CONNECTOR if self.active else "NONE", (state,))
 
     def _cmd_sup(self, c: P.SetSupply) -> P.Message:
         self.sup_mV = lim = _clamp(c.mV, *SUPPLY_LIMITS_MV)
@@ -568,6 +701,8 @@ class VirtualBoard:
         P.SetSupply: _cmd_sup,  # type: ignore[dict-item]
         P.SetZeroMode: _cmd_zm,  # type: ignore[dict-item]
         P.SetStream: _cmd_stream,  # type: ignore[dict-item]
+        P.SetDirection: _cmd_dir,  # type: ignore[dict-item]
+        P.ReadDiag: _cmd_diag,  # type: ignore[dict-item]
         P.ReadMeter: _cmd_meter,  # type: ignore[dict-item]
     }
 
@@ -650,6 +785,7 @@ def forget_board(name: str) -> None:
 
 __all__ = [
     "BOARD",
+    "CONNECTOR",
     "FIRMWARE",
     "Faults",
     "MotorParams",
@@ -657,7 +793,9 @@ __all__ = [
     "RealTime",
     "VirtualBoard",
     "VirtualSettings",
+    "WIRING_FAULTS",
     "forget_board",
     "named_board",
     "settings_from",
+    "wiring_faults",
 ]

@@ -293,9 +293,16 @@ def _fmt(x: float) -> str:
 def format_quantity(value: float, unit: str, digits: int = DIGITS) -> str:
     """``value`` (SI) shown in the form unit ``unit`` with ``digits`` significant digits,
     trailing zeros kept (:func:`minseg_tui.units.format_value`)."""
-    u = UNITS[unit]
-    shown = value / u.scale if u.scale >= 1.0 else value * round(1.0 / u.scale)
-    return format_value(shown, u.symbol, digits)
+    return format_value(_in_unit(value, UNITS[unit]), unit, digits)
+
+
+def _in_unit(value: float, u: Unit) -> float:
+    """``value`` (SI) in the unit ``u``: multiplied by a whole 1/scale where there is one
+    (mA: 1000, exact), else divided by the scale (rpm: 2 pi/60)."""
+    inverse = 1.0 / u.scale
+    if u.scale < 1.0 and abs(inverse - round(inverse)) < 1e-9 * inverse:
+        return value * round(inverse)
+    return value / u.scale
 
 
 def format_reading(value: float, unit: str, digits: int = DIGITS) -> str:
@@ -303,8 +310,7 @@ def format_reading(value: float, unit: str, digits: int = DIGITS) -> str:
     with at most ``digits`` significant digits and no zeros it was not given: R typed as
     5.26 stays "5.26 Ω", never "5.260 Ω" (a computed value uses :func:`format_quantity`)."""
     u = UNITS[unit]
-    shown = value / u.scale if u.scale >= 1.0 else value * round(1.0 / u.scale)
-    return f"{float(format_number(shown, digits)):g} {u.symbol}".rstrip()
+    return f"{float(format_number(_in_unit(value, u), digits)):g} {u.symbol}".rstrip()
 
 
 @dataclass(frozen=True)

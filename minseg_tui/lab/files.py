@@ -29,7 +29,7 @@ from numpy.typing import NDArray
 from minseg_tui.errors import InputError
 from minseg_tui.lab.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steplog import StepLog, command, find_edges, header_problem
+from minseg_tui.model.steplog import StepLog, clock_problem, command, find_edges, header_problem
 from minseg_tui.units import NUMBER
 
 TABLE_COLUMNS: dict[str, str] = {
@@ -84,9 +84,10 @@ UINT32_COLUMNS: dict[str, str] = {"t_us": "the board's micros()", "seq": "the bo
 TS_KEYS: tuple[str, ...] = ("ts", "Ts", "sample_period")
 """Metadata keys that give the nominal sample period in s (``# ts: 0.025``)."""
 
-TS_AGREE: float = 0.1
+TS_AGREE: float = 0.02
 """How far (relative) the metadata's sample period may be from the t column's median
-interval."""
+interval: a loop's lateness or a clock's error. Outside it the log is refused: the speed may
+have been computed over either period, and a 4 % difference is a 4 % error in K."""
 
 
 def _show(value: float) -> str:
@@ -142,9 +143,9 @@ def _check_sample_period(f: CsvColumns, t: NDArray[np.float64]) -> None:
         if abs(median / ts - 1.0) > TS_AGREE:
             raise InputError(
                 *where,
-                f"expected the header '# {key}: {raw}' to agree with the t column, whose median "
-                f"interval is {median:.6g} s ({median / ts:.3g} times the header's): which is "
-                "right? Fix the other",
+                f"expected the header '# {key}: {raw}' to agree with the t column within "
+                f"{TS_AGREE * 100:g} %; its median interval is {median:.6g} s ({median / ts:.4g} "
+                "times the header's): which is right? Fix the other",
             )
 
 
@@ -203,7 +204,8 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
     a field that is not a number in t, u, omega or a known numeric column (u_req, theta,
     count, t_us, seq, ...), a value beyond what a MinSeg produces (LIMITS, UINT32_COLUMNS),
     more than MAX_LOG_ROWS rows, time (t, or t_us modulo 2^32) that does not increase, a
-    ``# ts:`` header that disagrees with t, and, unless ``require_step``
+    ``# ts:`` header more than TS_AGREE (2 %) from t's median interval, a t_us that does not
+    keep time with t (within steplog.CLOCK_AGREE, 2 %), and, unless ``require_step``
     is False, a log in which the command (u_req, else u) never steps or u is 0 on every
     row while u_req steps (no voltage on the motor: no K). Unknown columns are kept: as
     numbers when every field is one, else as text.
@@ -255,6 +257,10 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
                 f"expected t_us (us) to increase, got {int(extra['t_us'][k])} again",
             )
     _check_sample_period(f, t)
+    if "t_us" in extra:
+        refused = clock_problem(t, extra["t_us"])
+        if refused:
+            raise InputError(f.source, int(lines[0]), refused)
     log = StepLog(
         t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines
     )

@@ -468,7 +468,7 @@ def _omega_ss(level: float) -> Field:
             Plausible(
                 0.5,
                 15.0,
-                low="the wheel hardly turns (or turns backwards): is the motor cable in and the jumper back?",
+                low="the wheel hardly turns (or turns backwards): F10 runs the board check, which says what is wrong",
                 high="faster than this motor goes (about 7 rad/s at 4.5 V): check the counts-to-radians scaling",
             ),
         ),
@@ -501,7 +501,10 @@ _LAB: tuple[Step, ...] = (
         "Task 1: connect the MinSeg",
         "Have a board (or the virtual MinSeg) talking to this program.",
         "Plug the MinSeg in by USB and pick it, or pick the virtual MinSeg to practise. The program "
-        "already runs the board's code: there is nothing to build or download.",
+        "already runs the board's code: there is nothing to build or download. Then press F10: "
+        "the board check turns the wheel for half a second and says whether the count follows, "
+        "and what to look at if it does not. Ctrl+P → Count one revolution by hand checks the "
+        "encoder's 720 counts.",
         actions=("connect",),
     ),
     Step(
@@ -550,7 +553,9 @@ _LAB: tuple[Step, ...] = (
         "Task 5: i_ss",
         "Record the steady current at the same three voltages.",
         "Pull the current jumper, put the multimeter (mA range) across the two pins, and repeat the "
-        "three voltages, typing i_ss each time. Expect 20-50 mA. Put the jumper back afterwards.",
+        "three voltages, typing i_ss each time. Expect 20-50 mA. If the wheel stops with the jumper "
+        "out, the meter does not close the circuit: it must be on mA, in series across the two "
+        "pins. Put the jumper back afterwards.",
         fields=tuple(_i_ss(level) for level in LEVELS),
         actions=("meter",),
     ),

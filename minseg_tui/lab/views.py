@@ -30,6 +30,7 @@ from minseg_tui.lab.steps import step
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.units import DIGITS, format_number, format_value
@@ -306,7 +307,8 @@ class RunView:
     """A Task 10 run for the side-by-side panel: speeds (rad/s) at board times t (s), the
     manual's estimate ``omega_lab``, and the time constants read from it (s, None if none):
     T_63 on the timestamp speed, T_63_lab on the manual's filtered speed, T_ls with its 95 %
-    interval T_ci. ``kind``: steps (25 ms) or fast."""
+    interval T_ci (None when the log does not determine T: wider than a factor of ten, or T on
+    its bound). ``kind``: steps (25 ms) or fast."""
 
     name: str
     kind: str
@@ -379,7 +381,7 @@ def runs(session: Session) -> tuple[RunView, ...]:
                 _t63(log),
                 _t63(replace(log, omega=lab)),
                 fit.T if fit else None,
-                fit.ci if fit else None,
+                fit.ci if fit and determined(fit.ci) and not fit.T_on_bound else None,
             )
         )
         _run_views[key] = out[-1]
@@ -473,12 +475,13 @@ def results(session: Session, step_id: str) -> ResultsView:
         lines += [
             f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s')}   "
             f"u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
-            f"K = {_fmt(st.K, 'rad/s/V')}{_ci(st.K_ci, 'rad/s/V')}",
+            f"K = {_fmt(st.K, 'rad/s/V')}"
+            f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else ', 95 % CI not determined by this log'}",
             f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
-            f"{_ci(st.T_ci, 's')}",
+            f"{_ci(st.T_ci, 's') if st.T_determined else ', 95 % CI not determined by this log'}",
             *([st.T_63_note] if st.T_63_note else []),
             f"J = {_fmt(st.J, 'kg m^2')}",
-            f"model: {_num(st.T)} omega' = -omega + {_num(st.K)} u_A",
+            f"model: {st.model_equation(_num)}",
             f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s')}",
         ]
         ts = log.ts if log is not None else 0.0

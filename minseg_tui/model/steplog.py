@@ -129,6 +129,18 @@ class StepLog:
         v = self.metadata.get("omega_over")
         return None if v is None or header_problem("omega_over", v) else v.strip()
 
+    def rows_from(self, first: int) -> StepLog:
+        """The same log without its first ``first`` rows (file lines and metadata kept)."""
+        return StepLog(
+            t=self.t[first:],
+            u=self.u[first:],
+            omega=self.omega[first:],
+            extra={k: v[first:] for k, v in self.extra.items()},
+            metadata=self.metadata,
+            source=self.source,
+            lines=None if self.lines is None else self.lines[first:],
+        )
+
     def board_time(self) -> FloatArray:
         """Sample times in s on the board's clock: from ``t_us`` when the log has it.
 
@@ -299,3 +311,69 @@ def problem(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = Non
     if float(np.ptp(y)) == 0.0:
         return f"expected the speed to change after the steps; omega stays at {float(y[0]):g} rad/s"
     return None
+
+
+MAX_GLITCH_ROWS: int = 3
+"""Most rows at the start of a log that are taken for switch-on glitches."""
+
+
+def switch_on_glitches(u: ArrayLike, omega: ArrayLike) -> int:
+    """How many rows at the very start of a log are switch-on glitches (0 when none).
+
+    u: the command or applied voltage (V); omega: the measured speed (rad/s). A glitch row is
+    one of the first :data:`MAX_GLITCH_ROWS` rows, before the command first changes, whose
+    speed departs from the speed of the rest of that first level (their median) by more than
+    the largest departure any later row of the log shows from it (after a 5-row running median,
+    which takes out a logging stall's spike and the row that catches up after it): a reading
+    above every steady
+    speed the motor reaches, at a voltage that holds still. Only an unbroken run from row 0
+    counts, and at least three rows of the first level must remain.
+    """
+    v = np.asarray(u, dtype=float)
+    w = np.asarray(omega, dtype=float)
+    if w.size < 2 * MAX_GLITCH_ROWS + 8:
+        return 0
+    moved = np.flatnonzero(np.abs(v - v[0]) > max(MIN_STEP_V, 1e-9))
+    first_level = int(moved[0]) if moved.size else v.size
+    if first_level < MAX_GLITCH_ROWS + 3:
+        return 0
+    level = float(np.median(w[MAX_GLITCH_ROWS:first_level]))
+    rest = w[MAX_GLITCH_ROWS:]
+    n = rest.size
+    # a 5-row running median: a stall's spike and the catch-up row after it are out
+    smooth = np.median(np.stack([rest[k : n - 4 + k] for k in range(5)]), axis=0)
+    later = float(np.max(np.abs(smooth - level)))
+    far = np.abs(w[:MAX_GLITCH_ROWS] - level) > max(later, 1e-9)
+    n = 0
+    while n < MAX_GLITCH_ROWS and far[n]:
+        n += 1
+    # a glitch run ends before the rows that hold the level: anything left after it within
+    # the first MAX_GLITCH_ROWS must not be far
+    return n if not np.any(far[n:]) else 0
+
+
+CLOCK_AGREE: float = 0.02
+"""How far (relative) the board's clock ``t_us`` may run from the ``t`` column over a log: a
+board's resonator is good to 0.5 %, a host's time of reception jitters by milliseconds."""
+
+
+def clock_problem(t: ArrayLike, t_us: ArrayLike) -> str | None:
+    """Why a ``t_us`` column (the board's micros(), us) cannot be the clock of the ``t`` column
+    (s), as an 'expected ...' sentence, or None: over the log the two must advance by the same
+    time within :data:`CLOCK_AGREE` (or two median sample intervals of t, on a short log). (identify fits on t_us, the model check on t: a t_us
+    that runs 10 times faster gave a T 10 times shorter from one command than the other.)"""
+    tt = np.asarray(t, dtype=float)
+    us = np.asarray(t_us, dtype=float)
+    if tt.size < 2 or us.size != tt.size:
+        return None
+    span_t = float(tt[-1] - tt[0])
+    span_us = float(np.sum(np.mod(np.diff(us), 2.0**32))) * 1e-6
+    slack = max(CLOCK_AGREE * span_t, 2.0 * float(np.median(np.diff(tt))))
+    if not span_t > 0 or abs(span_us - span_t) <= slack:
+        return None
+    return (
+        f"expected t_us (us) to keep time with t (s) within {CLOCK_AGREE * 100:g} % (or two "
+        "sample periods on a short log): over the log "
+        f"t_us advances {span_us:.6g} s and t {span_t:.6g} s ({span_us / span_t:.3g} times as "
+        "far); is one of them in other units? Fix it or leave t_us out"
+    )

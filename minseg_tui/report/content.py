@@ -186,6 +186,9 @@ def _u_ss_how(s: StepResult) -> str:
     return _U_SS_HOW.get(s.u_ss_how, s.u_ss_how).format(levels=levels or "that level")
 
 
+_UNDETERMINED = "not determined by this log"
+
+
 def _interval(lo: float, hi: float, unit: str) -> str:
     """A 95 % interval; a side the log does not bound is said (the check gives +-inf)."""
     if math.isfinite(lo) and math.isfinite(hi):
@@ -217,15 +220,16 @@ def _step_section(session: Session) -> Section:
                     ("u_ss used for K", f"{_num(s.u_ss)} V ({_u_ss_how(s)})"),
                     (
                         "K (Task 11, 95 % interval)",
-                        f"{_num(s.K)} rad/s/V ({_interval(*s.K_ci, 'rad/s/V')})",
+                        f"{_num(s.K)} rad/s/V "
+                        f"({_interval(*s.K_ci, 'rad/s/V') if s.K_determined else _UNDETERMINED})",
                     ),
                     ("T, 63 % reading (Task 12)", t63),
                     (
                         "T, least squares (95 % interval)",
-                        f"{_num(s.T)} s ({_interval(*s.T_ci, 's')})",
+                        f"{_num(s.T)} s ({_interval(*s.T_ci, 's') if s.T_determined else _UNDETERMINED})",
                     ),
                     ("J (Task 13)", f"{_num(s.J)} kg m^2"),
-                    ("model (Task 14)", f"{_num(s.T)} omega' = -omega + {_num(s.K)} u_A"),
+                    ("model (Task 14)", s.model_equation(_num)),
                     ("omega at u_A = 5 V (Task 15)", f"{_num(ident.omega_at_5V)} rad/s"),
                 ),
             )

@@ -16,6 +16,7 @@ loop never waits on the board.
 from __future__ import annotations
 
 import datetime as _dt
+import queue
 import threading
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -34,6 +35,8 @@ from textual.screen import Screen
 from textual.signal import Signal
 from textual.worker import get_current_worker
 
+from minseg_tui.device.boardcheck import CHECK_U, NoCountWatch, check_board, count_revolution
+from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import PRE_ROLL, StandStill, timeout_message
 from minseg_tui.errors import MinsegError
 from minseg_tui.lab.session import Session
@@ -44,10 +47,13 @@ from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
+    BoardChecked,
     DeviceOpened,
     LinkEventArrived,
     MeterRead,
     MotorKnown,
+    NoCounts,
+    RevolutionCounted,
     RunArmed,
     RunRequested,
     SamplesArrived,
@@ -56,6 +62,11 @@ from minseg_tui.ui.messages import (
     WheelStood,
 )
 from minseg_tui.ui.recording import ActiveRun, RunProgress
+from minseg_tui.ui.screens.boardcheck import (
+    BoardCheckScreen,
+    RevolutionScreen,
+    WheelQuestionScreen,
+)
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.quit import QuitScreen, SaveElsewhereScreen
@@ -77,6 +88,7 @@ KEYS: list[tuple[str, str]] = [
     ("F7", "the formula behind the table cell"),
     ("F8", "export the report (Markdown, HTML, CSV)"),
     ("F9", "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)"),
+    ("F10", "board check: does the wheel turn, does the count follow?"),
     ("Alt+← →", "previous / next step of the log (Tasks 11-15)"),
     ("Ctrl+← →", "the same, outside a text entry"),
     ("[ ] z", "the same on the focused plot; z zooms"),
@@ -139,6 +151,9 @@ METER_PERIOD = 0.25
 SAVE_RETRY = 3.0
 """While the session cannot be saved, it is tried again this often, s."""
 
+REVOLUTION_TIMEOUT = 300.0
+"""Longest the hand check counts without an Enter, s."""
+
 WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error", "silent"})
 """Link events that end the wait for the wheel to stand before a run (no run starts)."""
 
@@ -162,6 +177,7 @@ class LabApp(App[None]):
         Binding("f1", "help", "Help"),
         Binding("f2", "stop_motor", "STOP", priority=True),
         Binding("f8", "export", "Export"),
+        Binding("f10", "board_check", "Check board", show=False, priority=True),
         # the F-keys are the app's before any widget's (priority): handled in the order typed,
         # so F4 has captured and moved the focus on before the reading typed after it arrives
         *[
@@ -214,6 +230,11 @@ class LabApp(App[None]):
         """The wait for the wheel to stand before a run (None: no run waits)."""
         self._pending_plan: str | None = None
         self._stop = threading.Event()
+        self._tap: queue.Queue[SampleBatch] | None = None
+        """While the board check runs: the stream's samples, for the check (the stream
+        worker is the one reader of the device)."""
+        self._watch = NoCountWatch()
+        self._step_id = ""
         if not config.animations:
             self.animation_level = "none"
 
@@ -253,6 +274,13 @@ class LabApp(App[None]):
         self.device = DeviceInfo.of(event.device, event.fallback)
         self.link = LinkState()
         self._stream(event.device)
+        if event.device.board is None:  # a real board: worth checking before the lab
+            self.notify(
+                f"{self.device.name} connected. F10 runs the board check: does the wheel "
+                "turn when asked, and does the count follow it? (about a second)",
+                title="board check",
+                timeout=15,
+            )
 
     def pop_screen(self) -> AwaitComplete:
         """Close the screen on top (help, a question, the palette), never the start or the
@@ -342,6 +370,11 @@ class LabApp(App[None]):
             watch = self._stand
             if len(batch):
                 self.live.extend(batch)
+                tap = self._tap
+                if tap is not None:
+                    tap.put(batch)
+                elif (u := self._watch.feed(batch)) is not None:
+                    self.post_message(NoCounts(u))
                 if rec is not None:
                     rec.append(batch)
                     if not rec.armed and rec.samples >= PRE_ROLL:
@@ -393,6 +426,7 @@ class LabApp(App[None]):
     @on(StepShown)
     def _step_shown(self, event: StepShown) -> None:
         self._meter_wanted = "meter" in event.step.actions
+        self._step_id = event.step.id
 
     @on(LinkEventArrived)
     def _link_event(self, event: LinkEventArrived) -> None:
@@ -421,6 +455,153 @@ class LabApp(App[None]):
                 severity="warning",
                 timeout=8,
             )
+
+    # -- the board check ---------------------------------------------------------------------
+    def _check_device(self) -> Device | None:
+        """The device, if a board check may start now (else None, and why is said)."""
+        device = self._device
+        if device is None:
+            self.notify(
+                "no device: the board check needs the board or the virtual MinSeg",
+                severity="warning",
+            )
+            return None
+        if self._tap is not None:
+            self.notify("the board check is running", severity="information")
+            return None
+        if self.recording is not None or self._stand is not None:
+            self.notify("a run is in progress: F2 stops it, then F10 checks", severity="warning")
+            return None
+        if isinstance(self.screen, BoardCheckScreen):
+            self.screen.dismiss(None)
+        return device
+
+    def _taker(self, tap: queue.Queue[SampleBatch]) -> Callable[[], SampleBatch]:
+        """What the check reads samples with: everything the stream put in ``tap`` so far."""
+
+        def take() -> SampleBatch:
+            got: list[SampleBatch] = []
+            while True:
+                try:
+                    got.append(tap.get_nowait())
+                except queue.Empty:
+                    return SampleBatch.concat(got)
+
+        return take
+
+    def action_board_check(self) -> None:
+        """F10: drive the motor briefly and say whether the count follows (in a worker)."""
+        device = self._check_device()
+        if device is None:
+            return
+        self._tap = queue.Queue()
+        self.requested = None
+        self.notify(
+            f"board check: {CHECK_U:g} V for half a second…", title="board check", timeout=3
+        )
+        self._board_check(device, self._tap, self._step_id == "task5")
+
+    @work(thread=True, exclusive=True, group="check", name="board check")
+    def _board_check(self, device: Device, tap: queue.Queue[SampleBatch], task5: bool) -> None:
+        """Worker: the board check on the samples the stream hands over."""
+        take = self._taker(tap)
+        try:
+            result = check_board(device, samples=take, task5=task5, wheel_turned=self._ask_turned)
+        except MinsegError as exc:
+            self.post_message(BoardChecked(None, str(exc)))
+            return
+        self.post_message(BoardChecked(result))
+
+    def _ask_turned(self) -> bool | None:
+        """In the check's worker: ask the group whether the wheel turned, wait for them."""
+        answered = threading.Event()
+        box: list[str] = []
+
+        def got(answer: str | None) -> None:
+            box.append(answer or "unsure")
+            answered.set()
+
+        self.call_from_thread(self.push_screen, WheelQuestionScreen(), got)
+        worker = get_current_worker()
+        while not answered.wait(0.1):
+            if worker.is_cancelled or self._stop.is_set():
+                return None
+        return {"yes": True, "no": False}.get(box[0])
+
+    @on(BoardChecked)
+    def _board_checked(self, event: BoardChecked) -> None:
+        self._tap = None
+        self._watch = NoCountWatch()
+        if event.result is None:
+            self.notify(event.error, title="board check", severity="error", timeout=10)
+            return
+        self.push_screen(BoardCheckScreen(event.result.ok, event.result.text))
+
+    def action_count_revolution(self) -> None:
+        """Palette: count one revolution turned by hand (720 expected)."""
+        device = self._check_device()
+        if device is None:
+            return
+        self._tap = queue.Queue()
+        self.requested = None
+        done, cancelled = threading.Event(), threading.Event()
+        self.push_screen(RevolutionScreen(done, cancelled))
+        self._revolution(device, self._tap, done, cancelled)
+
+    @work(thread=True, exclusive=True, group="check", name="revolution")
+    def _revolution(
+        self,
+        device: Device,
+        tap: queue.Queue[SampleBatch],
+        done: threading.Event,
+        cancelled: threading.Event,
+    ) -> None:
+        """Worker: count until the group says the wheel turned once (or closes the dialog)."""
+        stop = self._stop
+
+        def finished() -> bool:
+            return done.is_set() or stop.is_set()
+
+        try:
+            result = count_revolution(
+                device, finished, samples=self._taker(tap), timeout=REVOLUTION_TIMEOUT
+            )
+        except MinsegError as exc:
+            self.post_message(RevolutionCounted(None, str(exc)))
+            return
+        self.post_message(RevolutionCounted(None if cancelled.is_set() else result))
+
+    @on(RevolutionCounted)
+    def _revolution_counted(self, event: RevolutionCounted) -> None:
+        self._tap = None
+        self._watch = NoCountWatch()
+        if isinstance(self.screen, RevolutionScreen):
+            self.screen.dismiss(None)
+        if event.result is None:
+            if event.error:
+                self.notify(event.error, title="counts per revolution", severity="error")
+            return
+        self.push_screen(
+            BoardCheckScreen(event.result.ok, event.result.text, "Counts per revolution")
+        )
+
+    @on(NoCounts)
+    def _no_counts(self, event: NoCounts) -> None:
+        """The motor is driven and the count stands: say what to do (Task 5: the meter)."""
+        if self._tap is not None:
+            return
+        if self._step_id == "task5":
+            text = (
+                f"The motor is driven at {event.u:g} V and the encoder counts nothing. If the "
+                "wheel does not turn: is the meter on mA, in series across the jumper pins? "
+                "F10 runs the board check."
+            )
+        else:
+            text = (
+                f"The motor is driven at {event.u:g} V and the encoder counts nothing: F10 "
+                "runs the board check, which says what is wrong."
+            )
+        self.notify(text, title="no counts", severity="warning", timeout=15)
 
     # -- what the panels ask for ------------------------------------------------------------
     @on(VoltageRequested)
@@ -822,6 +1003,16 @@ class LabApp(App[None]):
         ):
             if self._panel_method(method, screen) is not None:
                 yield SystemCommand(title, help_text, action)
+        yield SystemCommand(
+            "Board check",
+            "Does the wheel turn when asked, and does the count follow it? (F10)",
+            self.action_board_check,
+        )
+        yield SystemCommand(
+            "Count one revolution by hand",
+            "Turn the wheel once by hand: 720 counts expected",
+            self.action_count_revolution,
+        )
         yield SystemCommand(
             "Export report",
             "Markdown, HTML and CSV into the session folder (F8)",

@@ -9,7 +9,7 @@ from typing import Any, Protocol
 
 from minseg_tui.device import factory
 from minseg_tui.device.link import LinkEvent, LinkStats
-from minseg_tui.device.protocol import Ident
+from minseg_tui.device.protocol import Diag, Ident
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.model.plant import MeterReading
 
@@ -58,6 +58,14 @@ class Device(Protocol):
 
     def meter(self) -> MeterReading | None:
         """The multimeter on M1A/M1B (the virtual board's), else None."""
+        ...
+
+    def diag(self) -> Diag:
+        """The board's encoder pins and edges per connector, the connector in use."""
+        ...
+
+    def set_direction(self, enc: str, motor: str) -> object:
+        """The encoder's counting direction and the motor's polarity, FWD or REV each."""
         ...
 
     def close(self) -> None:

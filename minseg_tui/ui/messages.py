@@ -2,7 +2,7 @@
 
 From the app's workers to the app: :class:`DeviceOpened`, :class:`SamplesArrived`,
 :class:`LinkEventArrived`, :class:`MeterRead`, :class:`MotorKnown`, :class:`WheelStood`,
-:class:`RunArmed`. From the panels and the screen up: the
+:class:`RunArmed`, :class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the screen up: the
 requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which drives the
 device; :class:`CaptureRequested`, :class:`LogImportRequested`, :class:`RunChosen` for the
 lab screen, which holds the session's entries) and :class:`StepShown`.
@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 from textual.message import Message
 
+from minseg_tui.device.boardcheck import CheckResult, RevolutionResult
 from minseg_tui.device.link import LinkEvent, LinkStats
 from minseg_tui.device.standstill import StandStill, State
 from minseg_tui.lab.steps import Step
@@ -128,3 +129,27 @@ class StepShown(Message):
     """The lab screen now shows ``step``."""
 
     step: Step
+
+
+@dataclass
+class BoardChecked(Message):
+    """The board check finished: its ``result``, or None with the one-line ``error``."""
+
+    result: CheckResult | None
+    error: str = ""
+
+
+@dataclass
+class NoCounts(Message):
+    """The stream shows the motor driven at ``u`` V for a while and the count standing still."""
+
+    u: float
+
+
+@dataclass
+class RevolutionCounted(Message):
+    """The hand check finished: its ``result``, or None with the one-line ``error`` (empty
+    when the group cancelled it)."""
+
+    result: RevolutionResult | None
+    error: str = ""

@@ -4,7 +4,6 @@ NXT motor recordings (../shared/data/nxt-motor-real, see its PROVENANCE.txt)."""
 import csv
 import json
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -13,8 +12,9 @@ from minseg_tui.cli import main
 from minseg_tui.lab.files import write_step_log
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import make_log
+from tests.shared_data import SHARED_DATA
 
-NXT = Path(__file__).resolve().parents[3] / "shared" / "data" / "nxt-motor-real"
+NXT = SHARED_DATA / "nxt-motor-real"
 
 
 def _write(path, log):
@@ -183,6 +183,7 @@ def _analyze(path, capsys):
     return json.loads(capsys.readouterr().out)
 
 
+@pytest.mark.shared_data
 def test_nxt_large_run_down_stops_in_finite_time(tmp_path, capsys):
     # 21, 18, 15, 13, 11, 9, 7, 6, 5, 4, 3, 3, 1, 2, 1, 0 counts per sample: close to linear at
     # the end and standing still 17 samples (425 ms at the assumed Ts) after the drive stops
@@ -199,6 +200,7 @@ def test_nxt_large_run_down_stops_in_finite_time(tmp_path, capsys):
     assert "all noise" not in words
 
 
+@pytest.mark.shared_data
 def test_nxt_small_runs_are_first_order(tmp_path, capsys):
     # the rise reaches 39-41 counts per sample in ~10 samples; the step instant is not logged
     # (put one sample before the first count), so only the shape is pinned: first order, no
@@ -213,6 +215,7 @@ def test_nxt_small_runs_are_first_order(tmp_path, capsys):
     assert d2["baseline"]["fit_percent"] > 80
 
 
+@pytest.mark.shared_data
 def test_nxt_large_rise_with_a_lost_sample(tmp_path, capsys):
     run1, _ = _nxt_logs(tmp_path, "large")
     d = _analyze(run1, capsys)
@@ -225,6 +228,7 @@ def test_nxt_large_rise_with_a_lost_sample(tmp_path, capsys):
     assert d["sampling"]["lost_samples"] == 1
 
 
+@pytest.mark.shared_data
 def test_nxt_small_rise_names_its_two_scatters_apart(tmp_path, capsys):
     # The report gives the log's scatter (0.304 rad/s) and, for the filter it held back, the
     # scatter around that filter's simulation (0.264 rad/s): two figures under one word read
@@ -238,6 +242,7 @@ def test_nxt_small_rise_names_its_two_scatters_apart(tmp_path, capsys):
     assert f"scatters {said:.3g} rad/s around that model's simulation" in why
 
 
+@pytest.mark.shared_data
 def test_nxt_large_run_down_lead_does_not_call_its_error_noise(tmp_path, capsys):
     # the wheel stands still (speed exactly 0, no noise at all) in 153 of the run-down's 170
     # rows, so the rms speed error over the log (0.207 rad/s) is under the count floor (0.285
@@ -253,6 +258,7 @@ def test_nxt_large_run_down_lead_does_not_call_its_error_noise(tmp_path, capsys)
     assert turning == pytest.approx(0.61, abs=0.01)
 
 
+@pytest.mark.shared_data
 def test_nxt_small_runs_without_a_cause_speak_of_one_model(tmp_path, capsys):
     # no cause is named on either small run, so there is one model (the first order): the
     # error above the noise judges it; there are no "models" to tell apart
@@ -267,6 +273,7 @@ def test_nxt_small_runs_without_a_cause_speak_of_one_model(tmp_path, capsys):
     assert d["lead"]["why"].endswith("so it judges the model")
 
 
+@pytest.mark.shared_data
 def test_nxt_small_run_down_says_how_much_it_misses_where_the_wheel_turns(tmp_path, capsys):
     # 40, 32, 24, 16, 12, 7, 5, 3, 1, 2 counts, then 100 rows at exactly 0: over all 110 rows
     # the first-order model misses by 0.4 rad/s rms above the floor (0.285), which read as
@@ -284,6 +291,7 @@ def test_nxt_small_run_down_says_how_much_it_misses_where_the_wheel_turns(tmp_pa
     assert "stands still in 100 of 110 rows" in d["lead"]["why"]
 
 
+@pytest.mark.shared_data
 def test_nxt_small_rise_miss_is_not_called_scattered(tmp_path, capsys):
     # after the (assumed) step the first-order model misses by -2.6, -3.3, -0.6, +0.2, +1.8,
     # +1.2, +1.0, +1.2, +0.3, +1.0 rad/s (1, 8, 18, 24, 30, 32, 34, 36 counts: a slow start);

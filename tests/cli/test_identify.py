@@ -81,8 +81,10 @@ def test_json_is_one_object_with_the_contract(files, capsys):
     j = json.loads(out)
     assert set(j) == {"R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"}
     added = {"K_ci", "T_63_model", "T_63_note", "method", "shift", "u_c"}
+    added |= {"dead_time", "T_determined", "T_on_bound", "shift_on_bound"}
+    added |= {"glitch_rows", "left_out_rows"}
     assert set(j["step"]) == {"K", "T", "T_63", "T_ci", "J", "omega_ss"} | added
-    assert set(j["model"]) == {"T", "K"}
+    assert set(j["model"]) == {"T", "K", "dead_time"}
     assert [set(r) for r in j["rows"]] == [{"u_req", "u_ss", "omega_ss", "i_ss", "k_v", "f"}] * 3
     assert j["rows"][2]["i_ss"] == 40.0
     assert j["R"] == 5.0
@@ -153,7 +155,7 @@ BAD = [
         ),
         ["--step"],
         "log.csv:",
-        "sample period",
+        "expected t_us (us) to keep time with t (s)",  # a t_us that runs backwards
     ),
 ]
 

@@ -165,9 +165,9 @@ def test_unplug_and_replug_keeps_everything_and_restores_no_motor(make_rig):
 
 def test_wrong_protocol_version_gets_a_clear_message():
     with pytest.raises(DeviceError) as info:
-        open_device("minseg://?clock=virtual&proto=3")
+        open_device("minseg://?clock=virtual&proto=2")
     text = str(info.value)
-    assert "protocol 3" in text and "protocol 2" in text and "make -C firmware upload" in text
+    assert "protocol 2" in text and "protocol 3" in text and "minseg-tui flash" in text
 
 
 def test_a_second_program_is_told_who_holds_the_port(pty_server):

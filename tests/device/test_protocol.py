@@ -1,4 +1,4 @@
-"""Protocol 2 against the golden lines, both ends: the host parser and the virtual board."""
+"""Protocol 3 against the golden lines, both ends: the host parser and the virtual board."""
 
 import random
 
@@ -87,7 +87,7 @@ def test_virtual_board_accepts_every_golden_command(line):
     read_lines(port, 0.01)
     port.write(line.encode() + b"\n")
     reply = [P.parse(x) for x in read_lines(port, 0.001) if not x.startswith("$S")]
-    assert reply and isinstance(reply[0], P.Ok | P.Ident)
+    assert reply and isinstance(reply[0], P.Ok | P.Ident | P.Diag)
     port.close()
 
 

@@ -77,5 +77,5 @@ def test_a_running_protocol_one_board_gets_the_version_message(old_board):
     with pytest.raises(DeviceError) as info:
         link.open()
     text = str(info.value)
-    assert "minseg-fw 1.0.0" in text and "protocol 1" in text and "protocol 2" in text
-    assert "make -C firmware upload" in text
+    assert "minseg-fw 1.0.0" in text and "protocol 1" in text and "protocol 3" in text
+    assert "minseg-tui flash" in text

@@ -17,14 +17,16 @@ def parsed(lines, cls):
 def test_boot_on_open_then_samples_every_25_ms():
     port = vport("jitter=0")
     lines = read_lines(port, 0.1)
-    assert P.parse(lines[0]) == P.Boot("minseg-virtual 2.0.0", 2)
+    assert P.parse(lines[0]) == P.Boot("minseg-virtual 3.0.0", 3)
     samples = parsed(lines, P.SampleLine)
     # as the firmware: the first sample one period after $BOOT
     assert [s.seq for s in samples] == [0, 1, 2, 3]
     assert [s.t_us for s in samples] == [25000, 50000, 75000, 100000]
     port.write(b"ID\n")
     (ident,) = parsed(read_lines(port, 0.001), P.Ident)
-    assert ident == P.Ident("minseg-virtual 2.0.0", 2, "Virtual", 720, 25000, 5000, "BRAKE")
+    assert ident == P.Ident(
+        "minseg-virtual 3.0.0", 3, "Virtual", 720, 25000, 5000, "BRAKE", "FWD", "FWD"
+    )
 
 
 def test_clamping_reports_applied_values():

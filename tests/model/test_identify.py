@@ -259,8 +259,14 @@ def test_json_shape(linear_result):
         "method",
         "shift",
         "u_c",
+        "dead_time",
+        "T_determined",
+        "T_on_bound",
+        "shift_on_bound",
+        "glitch_rows",
+        "left_out_rows",
     ]
-    assert list(j["model"]) == ["T", "K"]
+    assert list(j["model"]) == ["T", "K", "dead_time"]
     assert j["rows"][0]["i_ss"] == pytest.approx(linear_table(MOTOR)[0].i_ss)  # mA as entered
     assert len(j["step"]["T_ci"]) == 2
     assert list(identify(TABLE, R).to_json()) == ["R", "rows", "k_v", "k_a", "f"]

@@ -12,7 +12,6 @@ import base64
 import math
 import re
 import xml.etree.ElementTree as ET
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -23,8 +22,9 @@ from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.report import svg
 from minseg_tui.report.write import write_report
 from tests.report.test_report import _session
+from tests.shared_data import SHARED_DATA
 
-REAL = Path(__file__).resolve().parents[3] / "shared" / "data" / "real-motors"
+REAL = SHARED_DATA / "real-motors"
 
 NUM = r"[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?"
 
@@ -258,6 +258,7 @@ def test_the_step_section_gives_k_with_its_interval_and_the_63_percent_note(repo
     assert step.T_63_note and step.T_63_note in section
 
 
+@pytest.mark.shared_data
 def test_a_real_motor_outside_the_list_shows_its_caveats_and_current_limit(tmp_path):
     """ubc-motor-7V: the driver's current limit caps the acceleration (issue 7)."""
     with Session.create(tmp_path, ["A"], date="2026-11-22") as s:

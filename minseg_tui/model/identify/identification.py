@@ -11,7 +11,7 @@ table's u_ss is taken as exact.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -20,6 +20,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.observations import (
     Observation,
+    fit_observations,
     step_observations,
     table_observations,
 )
@@ -33,10 +34,28 @@ from minseg_tui.model.identify.stepfit import (
 )
 from minseg_tui.model.identify.steps import step_windows
 from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
-from minseg_tui.model.steplog import StepLog, command, find_edges, problem
+from minseg_tui.model.steplog import (
+    StepLog,
+    clock_problem,
+    command,
+    find_edges,
+    problem,
+    switch_on_glitches,
+)
 
 U_TASK15: float = 5.0
 """The applied voltage of Task 15, V."""
+
+DETERMINED: float = 10.0
+"""An interval whose ends are further apart than this factor says the log does not tell the
+value: it is printed as "not determined by this log", never as numbers."""
+
+
+def determined(ci: tuple[float, float]) -> bool:
+    """True when the interval ``ci`` (lo, hi) of a positive quantity is finite and spans at
+    most a factor of :data:`DETERMINED`."""
+    lo, hi = ci
+    return math.isfinite(lo) and math.isfinite(hi) and lo > 0 and hi <= DETERMINED * lo
 
 
 @dataclass(frozen=True)
@@ -44,7 +63,9 @@ class StepResult:
     """Tasks 11-13 from a step log.
 
     K: static gain (rad/s per V, median over rising steps of the fitted omega_ss / u_ss);
-    T: the least-squares time constant (s), the one the model uses; T_63: the median 63 %
+    T: the least-squares time constant (s), the one the model uses, with the dead time
+    ``dead_time`` (s, 0 when the response follows the steps within a sample period);
+    glitch_rows: switch-on glitch rows at the start of the log, left out of everything; T_63: the median 63 %
     reading (s, None if no step crossed); T_ci: 95 % interval of T (s); J: inertia (kg m^2);
     omega_ss: median fitted steady speed of the steps (rad/s); u_ss: the applied voltage K
     divides by (V); u_ss_how: how the table gave it (:func:`~.steady.u_ss_at`: 'row',
@@ -69,6 +90,29 @@ class StepResult:
     K_ci: tuple[float, float] = (math.nan, math.nan)
     T_63_model: float | None = None
     T_63_note: str | None = None
+    dead_time: float = 0.0
+    glitch_rows: int = 0
+
+    @property
+    def K_determined(self) -> bool:
+        """False when K's 95 % interval spans more than a factor of :data:`DETERMINED`."""
+        return determined(self.K_ci)
+
+    def model_equation(self, num: Callable[[float], str], w: str = "omega") -> str:
+        """Task 14's model as text, the numbers written by ``num`` and the speed named ``w``:
+        "T w' = -w + K u_A", with "(t)" and "u_A(t - D s)" when it has a dead time."""
+        if self.dead_time > 0:
+            return (
+                f"{num(self.T)} {w}'(t) = -{w}(t) + {num(self.K)} u_A(t - {num(self.dead_time)} s)"
+            )
+        return f"{num(self.T)} {w}' = -{w} + {num(self.K)} u_A"
+
+    @property
+    def T_determined(self) -> bool:
+        """False when T's 95 % interval spans more than a factor of :data:`DETERMINED` (the
+        log does not tell T: the interval is then not printed as numbers), or when T ended on
+        the bound of the range the fit tries (its interval then says nothing)."""
+        return determined(self.T_ci) and not self.fit.T_on_bound
 
 
 @dataclass(frozen=True)
@@ -85,7 +129,8 @@ class Identification:
 
     @property
     def model(self) -> FirstOrder | None:
-        """Task 14: T omega' = -omega + K u_A with the least-squares T and the step's K."""
+        """Task 14: T omega' = -omega + K u_A with the least-squares T and the step's K (the
+        dead time, when there is one, is ``step.dead_time``)."""
         return FirstOrder(T=self.step.T, K=self.step.K) if self.step else None
 
     @property
@@ -127,8 +172,14 @@ class Identification:
                 "method": s.fit.method,
                 "shift": s.fit.shift,
                 "u_c": s.fit.u_c,
+                "dead_time": s.dead_time,
+                "T_determined": s.T_determined,
+                "T_on_bound": s.fit.T_on_bound,
+                "shift_on_bound": s.fit.shift_on_bound,
+                "glitch_rows": s.glitch_rows,
+                "left_out_rows": [r + s.glitch_rows for r in s.fit.left_out],
             }
-            out["model"] = {"T": s.T, "K": s.K}
+            out["model"] = {"T": s.T, "K": s.K, "dead_time": s.dead_time}
             out["omega_at_5V"] = self.omega_at_5V
         return out
 
@@ -142,6 +193,10 @@ def _step_result(
     k_a: float,
     f: float,
 ) -> tuple[StepResult, list[Observation]]:
+    cmd, _ = command(log)
+    glitches = switch_on_glitches(cmd, log.omega)
+    whole_log = log
+    log = log.rows_from(glitches) if glitches else log
     windows, skipped = step_windows(log)
     if not windows:
         cmd, name = command(log)
@@ -156,6 +211,10 @@ def _step_result(
     refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
     if refused:
         raise InputError(log.source, None, refused)
+    if "t_us" in log.extra:  # the fit's clock against the log's
+        refused = clock_problem(log.t, log.extra["t_us"])
+        if refused:
+            raise InputError(log.source, log.line_of(0), refused)
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise InputError(log.source, None, "expected a usable rising step")
@@ -192,9 +251,14 @@ def _step_result(
         fit=fit,
         K_ci=_K_interval(K, K_each, u_used, fit),
         T_63_model=T_63_model,
-        T_63_note=_T_63_note(T, T_63, T_63_model, log.ts),
+        T_63_note=_T_63_note(T, T_63, T_63_model, log.ts, fit.dead_time, bool(fit.left_out)),
+        dead_time=fit.dead_time,
+        glitch_rows=glitches,
     )
-    observations = step_observations(rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped))
+    observations = step_observations(
+        rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time
+    )
+    observations += fit_observations(whole_log, glitches, fit, result.T_determined)
     return result, observations
 
 
@@ -214,8 +278,17 @@ def _K_interval(
     return (K - half, K + half)
 
 
-def _T_63_note(T: float, T_63: float | None, T_63_model: float | None, ts: float) -> str | None:
-    """How far the manual's 63 % reading is from the least-squares T, and why."""
+def _T_63_note(
+    T: float,
+    T_63: float | None,
+    T_63_model: float | None,
+    ts: float,
+    dead_time: float = 0.0,
+    stalled: bool = False,
+) -> str | None:
+    """How far the manual's 63 % reading is from the least-squares T, and why (the dead time
+    ``dead_time``, s, is part of it when the model has one; ``stalled``: rows of a logging
+    stall were left out)."""
     if T_63 is None:
         return None
     apart = T_63 - T
@@ -226,16 +299,22 @@ def _T_63_note(T: float, T_63: float | None, T_63_model: float | None, ts: float
     )
     if T_63_model is None:
         return out
-    sampled = T_63_model - T
+    sampled = T_63_model - T - dead_time
+    delay = (
+        f"the dead time moves the reading by {dead_time * 1e3:+.1f} ms and the sampling by "
+        if dead_time > 0
+        else "the sampling alone moves the reading by "
+    )
     out += (
         f" Read the same way on the fitted model sampled every {ts * 1e3:.3g} ms like this log, it gives "
-        f"{T_63_model * 1e3:.1f} ms: the sampling alone moves the reading by {sampled * 1e3:+.1f} ms "
+        f"{T_63_model * 1e3:.1f} ms: {delay}{sampled * 1e3:+.1f} ms "
         "(the logged speed is the mean over each sample interval, half a sample late, and the reading "
         "joins the samples by straight lines)"
     )
     rest = T_63 - T_63_model
     if abs(rest) > max(0.02 * T, 0.1 * abs(apart)):
-        out += f", and {rest * 1e3:+.1f} ms is the noise of reading single samples."
+        why = "reading across a logging stall's gap and" if stalled else "the noise of"
+        out += f", and {rest * 1e3:+.1f} ms is {why} reading single samples."
     else:
         out += ", which is the whole difference."
     return out + " The least-squares fit models the sampling, so its T is the one the model uses."

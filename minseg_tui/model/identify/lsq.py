@@ -110,14 +110,20 @@ def levenberg_marquardt(
     x0: FloatArray,
     max_iter: int = 60,
     xtol: float = 1e-9,
+    lower: FloatArray | None = None,
+    upper: FloatArray | None = None,
 ) -> Solution:
     """Minimise the residual sum of squares over the nonlinear parameters from ``x0``.
 
     Marquardt's damping on the Gauss-Newton step, scaled by the diagonal of J^T J; a step
     is taken only when it lowers the sum. Stops when a step changes no parameter by more
-    than ``xtol`` (in the units of x) or after ``max_iter`` steps.
+    than ``xtol`` (in the units of x) or after ``max_iter`` steps. ``lower`` and ``upper``
+    (default: none) box the parameters in: a parameter on its bound whose gradient points out
+    of the box is held there while the others move, and every step is clipped to the box.
     """
-    x = np.asarray(x0, dtype=float).copy()
+    lo = np.full(len(x0), -np.inf) if lower is None else np.asarray(lower, dtype=float)
+    hi = np.full(len(x0), np.inf) if upper is None else np.asarray(upper, dtype=float)
+    x = np.clip(np.asarray(x0, dtype=float), lo, hi)
     rss, coef, r = evaluate(x)
     lam = 1e-3
     it = 0
@@ -125,7 +131,11 @@ def levenberg_marquardt(
         J = jacobian(x, coef)
         A = J.T @ J
         g = J.T @ r
-        diag = np.maximum(np.diag(A), 1e-300)
+        held = ((x <= lo) & (g > 0)) | ((x >= hi) & (g < 0))  # pushing out of the box
+        A = np.where(held[:, None] | held[None, :], 0.0, A)
+        g = np.where(held, 0.0, g)
+        diag = np.where(held, 1.0, np.maximum(np.diag(A), 1e-300))
+        A[held, held] = 1.0
         taken = False
         while lam < 1e12:
             try:
@@ -133,7 +143,8 @@ def levenberg_marquardt(
             except np.linalg.LinAlgError:
                 lam *= 10.0
                 continue
-            trial = x + step
+            trial = np.clip(x + step, lo, hi)
+            step = trial - x
             rss_t, coef_t, r_t = evaluate(trial)
             if math.isfinite(rss_t) and rss_t <= rss:
                 lam = max(lam / 10.0, 1e-12)
@@ -161,6 +172,28 @@ class Covariance:
     def half_width(self, index: int) -> float:
         """Half the 95 % interval of parameter ``index``."""
         return t975(self.dof) * math.sqrt(max(float(self.cov[index, index]), 0.0))
+
+
+def _lagged_meat(g: FloatArray, top: int, lag: int) -> FloatArray:
+    """sum over k = -top..top of (1 - |k| / (lag + 1)) sum_n g_n+k g_n^T (Newey and West):
+    row by row for a few lags, else every lag at once through the FFT of each column pair."""
+    n, p = g.shape
+    meat: FloatArray = np.einsum("ni,nj->ij", g, g)
+    if top < 32:
+        for k in range(1, top + 1):
+            cross = np.einsum("ni,nj->ij", g[k:], g[:-k])
+            meat += (1.0 - k / (lag + 1.0)) * (cross + cross.T)
+        return meat
+    size = 1 << int(math.ceil(math.log2(2 * n)))
+    F = np.fft.rfft(g, n=size, axis=0)
+    w = 1.0 - np.arange(1, top + 1) / (lag + 1.0)
+    S = np.empty((p, p))
+    for i in range(p):
+        for j in range(p):
+            cross = np.fft.irfft(F[:, i] * np.conj(F[:, j]), n=size)[1 : top + 1]
+            S[i, j] = float(w @ cross)  # sum over k of w_k sum_n g_n+k,i g_n,j
+    out: FloatArray = meat + S + S.T
+    return out
 
 
 MANY_CLUSTERS: int = 64
@@ -192,10 +225,7 @@ def cluster_covariance(
     inv = np.linalg.pinv(bread)
     if C < FEW_CLUSTERS:
         g = J * r[:, None]
-        meat = np.einsum("ni,nj->ij", g, g)
-        for k in range(1, min(max(lag, 0), n - 1) + 1):
-            cross = np.einsum("ni,nj->ij", g[k:], g[:-k])
-            meat += (1.0 - k / (lag + 1.0)) * (cross + cross.T)
+        meat = _lagged_meat(g, min(max(lag, 0), n - 1), lag)
         cov = inv @ meat @ inv * n / max(n - p, 1)
         return Covariance(cov=cov, dof=max(n - p, 1), clusters=C)
     scores = np.add.reduceat(J * r[:, None], starts, axis=0)  # C x p

@@ -9,7 +9,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
-from minseg_tui.model.identify.stepfit import RisingStep
+from minseg_tui.model.identify.stepfit import RisingStep, TimeConstantFit
+from minseg_tui.model.steplog import StepLog
 from minseg_tui.units import format_number
 
 KV_OUTLIER: float = 0.15
@@ -36,7 +37,8 @@ def _row_name(index: int, r: Reading) -> str:
 
 
 def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> list[Observation]:
-    """What the table shows: dry friction, a bad reading, currents in the wrong unit."""
+    """What the table shows: dry friction, a bad reading, currents in the wrong unit, u_ss and
+    u_req swapped."""
     out: list[Observation] = []
     for i, row in enumerate(rows):
         r = row.reading
@@ -87,8 +89,32 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
                     ),
                 )
             )
+    above = [row.reading.u_ss > (1.0 + U_SS_ABOVE) * row.reading.u_req for row in rows]
+    if rows and all(above) and all(row.reading.u_req > 0 for row in rows):
+        out.append(
+            Observation(
+                "u_ss_above_u_req",
+                (
+                    f"u_ss is above u_req on every row (by {_above_range(rows)}): a motor driver gives "
+                    "the motor at most the voltage it is asked for, less its drop, so the two columns "
+                    "look swapped. k_v, k_a and f divide by these readings: check the table."
+                ),
+            )
+        )
     out += _dry_friction(rows, k_a)
     return out
+
+
+U_SS_ABOVE: float = 0.02
+"""u_ss this far (relative) above u_req on every row says the columns are swapped (a driver
+gives at most what is requested)."""
+
+
+def _above_range(rows: Sequence[Row]) -> str:
+    """'12 %' or '8-15 %': how far u_ss is above u_req over the rows."""
+    pct = [100.0 * (row.reading.u_ss / row.reading.u_req - 1.0) for row in rows]
+    lo, hi = min(pct), max(pct)
+    return f"{lo:.0f} %" if round(lo) == round(hi) else f"{lo:.0f}-{hi:.0f} %"
 
 
 def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
@@ -130,13 +156,14 @@ def step_observations(
     T_63: float | None,
     ts: float,
     skipped: int,
+    dead_time: float = 0.0,
 ) -> list[Observation]:
     """What the step log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
 
     rows: the table; steps: the rising steps used; hows: how u_ss was found for each step;
     u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
-    period (s); skipped: rising steps not usable.
+    period (s); skipped: rising steps not usable; dead_time: the model's dead time (s).
     """
     observations: list[Observation] = []
     levels = sorted({s.u_req for s in steps if s.u_req is not None})
@@ -204,8 +231,15 @@ def step_observations(
                 "T_63_differs",
                 (
                     f"The 63 % reading ({T_63 * 1e3:.3g} ms) and the least-squares T ({T * 1e3:.3g} ms) differ by "
-                    f"{abs(T_63 / T - 1) * 100:.0f} %. The measured speed is the mean over each sample interval, so "
-                    "it lags the true speed by half a sample; a velocity filter lags it more."
+                    f"{abs(T_63 / T - 1) * 100:.0f} %. "
+                    + (
+                        f"The reading counts from the logged step, so it holds the dead time of "
+                        f"{dead_time * 1e3:.3g} ms that T does not; besides, the measured speed is the "
+                        "mean over each sample interval and lags the true speed by half a sample."
+                        if dead_time > 0
+                        else "The measured speed is the mean over each sample interval, so "
+                        "it lags the true speed by half a sample; a velocity filter lags it more."
+                    )
                 ),
             )
         )
@@ -231,3 +265,157 @@ def step_observations(
             )
         )
     return observations
+
+
+def _lines(log: StepLog, rows: Sequence[int]) -> str:
+    """'line 12' / 'lines 5-6' / 'rows 1-2' for 0-based rows of ``log``."""
+    lines = [log.line_of(r) for r in rows]
+    if all(x is not None for x in lines):
+        nums = [int(x) for x in lines if x is not None]
+        word, first, last = "line", nums[0], nums[-1]
+    else:
+        word, first, last = "row", rows[0] + 1, rows[-1] + 1
+    return f"{word} {first}" if first == last else f"{word}s {first}-{last}"
+
+
+def fit_observations(
+    log: StepLog, glitches: int, fit: TimeConstantFit, T_determined: bool
+) -> list[Observation]:
+    """What the fit of T had to do with this log: switch-on glitch rows and logging stalls left
+    out, a dead time in the model, a time shift or a T on its bound, a T the log does not
+    determine.
+
+    log: the whole log as read; glitches: its first rows left out as switch-on glitches; fit:
+    the fit of T (its rows count from the first row after the glitches); T_determined: whether
+    T's interval spans at most a factor of ten.
+    """
+    out: list[Observation] = []
+    ts = log.ts
+    if glitches:
+        rows = list(range(glitches))
+        speeds = ", ".join(f"{float(log.omega[r]):.3g}" for r in rows)
+        out.append(
+            Observation(
+                "glitch_rows",
+                (
+                    f"The first {glitches} row(s) ({_lines(log, rows)}) read {speeds} rad/s while the "
+                    "command holds still, further from the speed of the rows after them than any later "
+                    "row ever is: switch-on glitches, not motion. They are left out: the fit starts at "
+                    f"{_lines(log, [glitches])}."
+                ),
+            )
+        )
+    t = log.board_time()
+    for r in fit.left_out:
+        k = r + glitches
+        gap = float(t[k] - t[k - 1])
+        out.append(
+            Observation(
+                "logging_stall",
+                (
+                    f"{_lines(log, [k]).capitalize()} comes after a gap of {gap * 1e3:.0f} ms in the logging "
+                    f"({gap / ts:.1f} sample periods) and its angle misses the fit by far more than any "
+                    "other row: the encoder value was read before its timestamp (a logging stall), so "
+                    "its speed is a one-row spike. It is left out of the fit."
+                ),
+            )
+        )
+    bound = fit.shift_bound
+    if fit.dead_time > 0:
+        out.append(
+            Observation(
+                "dead_time",
+                (
+                    f"The wheel answers {fit.dead_time * 1e3:.0f} ms after the logged steps, more than the "
+                    f"one sample period ({bound * 1e3:.3g} ms) that the sampling's lateness can explain: a "
+                    "dead time. It is fitted as the model check fits it and is part of the model "
+                    f"(Task 14): T omega'(t) = -omega(t) + K u_A(t - {fit.dead_time:.3g} s). T is counted "
+                    "from the moment the wheel answers."
+                ),
+            )
+        )
+    elif fit.shift_on_bound and fit.shift > 0:
+        late = (
+            "A dead time fits the log better, but it is not one: the wheel already moves before "
+            f"it would end ({fit.moved_early * 100:.0f} % of the way to its new speed), so the rise "
+            "starts at once but slowly, a shape the first-order model misses (an S-shaped start: "
+            "a second pole or a filtered speed; a ramp: a current limit). Read T with care."
+            if fit.moved_early is not None
+            else (
+                "A dead time does not fit the log clearly better."
+                if fit.dead_time_sought
+                else (
+                    "The wheel first moves "
+                    + (f"{fit.onset * 1e3:.3g} ms " if fit.onset is not None else "")
+                    + "after the steps, no later than the rise itself and the sampling explain, "
+                    "so there is no dead time to fit: the rise starts more slowly than one time "
+                    "constant gives (an S-shaped start: a second pole or a filtered speed), a shape "
+                    "the first-order model misses. Read T with care."
+                )
+            )
+        )
+        out.append(
+            Observation(
+                "shift_on_bound",
+                (
+                    f"The time shift of the steps against the samples ended on its bound of one sample "
+                    f"period ({fit.shift * 1e3:+.3g} ms): the wheel answers later than the sampling's "
+                    f"lateness explains. {late} T is the fit with the shift held there."
+                ),
+            )
+        )
+    elif fit.shift_on_bound and fit.moved_before_step:
+        out.append(
+            Observation(
+                "shift_on_bound",
+                (
+                    f"The time shift of the steps against the samples ended on its bound of one sample "
+                    f"period ({fit.shift * 1e3:+.3g} ms): the wheel moves earlier than the logged steps "
+                    "by more than the sampling's lateness explains. The steps in the log are placed late "
+                    "(a command logged after it acted); T is the fit with the shift held at the bound."
+                ),
+            )
+        )
+    elif fit.shift_on_bound:
+        out.append(
+            Observation(
+                "shift_on_bound",
+                (
+                    f"The time shift of the steps against the samples ended on its bound of one sample "
+                    f"period ({fit.shift * 1e3:+.3g} ms), earlier than the steps, although the wheel "
+                    "does not move before them"
+                    + (
+                        f" (it first moves {fit.onset * 1e3:.3g} ms after them)"
+                        if fit.onset is not None and fit.onset > 1.5 * bound
+                        else ""
+                    )
+                    + ": the rise is steeper at first and slower later than one "
+                    "time constant gives (a second, slower process), a shape the first-order model "
+                    "misses. T is the fit with the shift held at the bound; read it with care."
+                ),
+            )
+        )
+    if fit.T_on_bound:
+        lo, hi = fit.T_range
+        out.append(
+            Observation(
+                "T_on_bound",
+                (
+                    f"T = {fit.T * 1e3:.3g} ms ended on the bound of the range the fit tries "
+                    f"({lo * 1e3:.3g} ms to {hi:.3g} s): this log cannot tell T beyond it, and the "
+                    "first-order model does not describe it well."
+                ),
+            )
+        )
+    if not T_determined:
+        out.append(
+            Observation(
+                "T_not_determined",
+                (
+                    f"T's 95 % interval spans more than a factor of ten: T is not determined by this "
+                    f"log; {fit.T * 1e3:.3g} ms is only the best fit. Longer steps, more of them, or a "
+                    "faster sampling would tell it."
+                ),
+            )
+        )
+    return out

@@ -18,7 +18,8 @@ step that may not have settled.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -30,6 +31,32 @@ from minseg_tui.model.identify.windowfit import WindowsFit, fit_windows
 from minseg_tui.model.steplog import StepLog, command, find_edges
 
 FloatArray = NDArray[np.float64]
+
+SHIFT_SAMPLES: float = 1.0
+"""The time shift of the steps against the samples (the sampling's lateness, a nuisance) stays
+within this many sample periods either way; a response later than that is a dead time, fitted
+and named as such, and one earlier than that is said to be on the bound (a misfit)."""
+
+DEAD_TIME_F: float = 25.0
+"""A dead time beyond the shift's bound enters the model when it lowers the residual sum of
+squares by this many times its residual variance (as dry friction does)."""
+
+DEAD_TIME_SHARE: float = 0.8
+"""The longest dead time tried, as a share of the shortest rising step (as the check does)."""
+
+T_MIN_SAMPLES: float = 0.05
+"""The shortest T the fit tries, in sample periods (T far below a sample cannot be seen)."""
+
+T_MAX_STEPS: float = 10.0
+"""The longest T the fit tries, in lengths of the longest rising step."""
+
+GAP: float = 1.5
+"""A sample interval this many times the median is a gap in the logging (a stall)."""
+
+STALL_SIGMAS: float = 6.0
+"""The row after a gap whose angle misses the fit by this many robust standard deviations of
+the residual (and by more than the encoder's step) is a logging stall: the encoder value was
+read before its timestamp. It is left out of the fit."""
 
 ADEQUATE: float = 1.3
 """The whole-log fit is used when the rms of its angle residuals on the rising steps' rows is
@@ -74,7 +101,15 @@ class TimeConstantFit:
     gain: the whole-log fit's K per volt of the log's u (rad/s per V, None for the other);
     u_c: dry friction's breakaway voltage (V, 0 when not found); dof: degrees of freedom of
     the t quantile (clusters of rows less one); predicted: the fitted angle (rad) at every
-    row (NaN where the fit does not reach).
+    row (NaN where the fit does not reach); dead_time: the dead time in the model (s, 0 when
+    none: the response is then no later than ``shift_bound``, one sample period); shift_on_bound:
+    the shift ended on its bound; T_range: the range of T the fit tried (s) and T_on_bound:
+    whether T ended on it; left_out: rows (0-based) left out of the fit (logging stalls);
+    moved_early: when a dead time fitted better but the wheel already moved before it would
+    end, the share of the rise done by then (None otherwise); onset: the time (s) from the
+    rising steps to where the wheel first answers (the median; None if unseen);
+    moved_before_step: the wheel was already moving at the rows of the rising steps;
+    dead_time_sought: whether the wheel started late enough for a dead time to be fitted.
     """
 
     T: float
@@ -95,18 +130,124 @@ class TimeConstantFit:
     u_c: float
     dof: int
     predicted: FloatArray
+    dead_time: float = 0.0
+    shift_bound: float = math.inf
+    shift_on_bound: bool = False
+    T_range: tuple[float, float] = (0.0, math.inf)
+    T_on_bound: bool = False
+    left_out: tuple[int, ...] = ()
+    moved_early: float | None = None
+    onset: float | None = None
+    moved_before_step: bool = False
+    dead_time_sought: bool = False
 
 
 def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
-    """Least-squares T over the usable rising steps of ``log`` (None if there are none)."""
+    """Least-squares T over the usable rising steps of ``log`` (None if there are none).
+
+    Rows right after a gap in the logging whose angle misses the fit far more than the rest
+    (a logging stall: the encoder value lags its timestamp) are left out and the fit is done
+    again without them."""
     windows, _ = step_windows(log)
     if not windows:
         return None
+    first = _fit(log, windows, None)
+    stalls = _stalls(log, first)
+    if not stalls:
+        return first
+    keep = np.ones(len(log), dtype=bool)
+    keep[list(stalls)] = False
+    again = _fit(log, windows, keep, first)
+    return replace(again, left_out=stalls)
+
+
+def _stalls(log: StepLog, fit: TimeConstantFit) -> tuple[int, ...]:
+    """Rows after a gap in the logging whose angle misses the fit by :data:`STALL_SIGMAS`."""
+    t = log.board_time()
+    dt = np.diff(t)
+    after_gap = np.flatnonzero(dt > GAP * float(np.median(dt))) + 1
+    if not after_gap.size:
+        return ()
+    theta, _ = log.angle()
+    r = theta - fit.predicted
+    used = np.isfinite(r)
+    if np.count_nonzero(used) < 8:
+        return ()
+    mad = float(np.median(np.abs(r[used] - np.median(r[used]))))
+    step = 2.0 * math.pi / log.cpr
+    limit = max(STALL_SIGMAS * 1.4826 * mad, 2.0 * step)
+    return tuple(int(k) for k in after_gap if used[k] and abs(r[k]) > limit)
+
+
+def _fit(
+    log: StepLog,
+    windows: list[StepWindow],
+    keep: NDArray[np.bool_] | None,
+    prior: TimeConstantFit | None = None,
+) -> TimeConstantFit:
+    """The fit of :func:`fit_time_constant` on the rows ``keep`` (default: all); ``prior``: a
+    fit of the same log on more rows, whose T and shift the search starts from (and whose
+    finding of a dead time or none it keeps, without searching again)."""
     t = log.board_time()
     theta, angle_source = log.angle()
     u = np.asarray(log.u, dtype=float)
     ts = log.ts
-    steps_fit = fit_windows(t, theta, windows, ts)
+    bound = SHIFT_SAMPLES * ts
+    longest = max(float(t[w.post_last] - t[w.edge.start]) for w in windows)
+    shortest = min(float(t[w.post_last] - t[w.edge.start]) for w in windows)
+    T_range = (T_MIN_SAMPLES * ts, T_MAX_STEPS * max(longest, ts))
+    d_max = DEAD_TIME_SHARE * shortest
+    onset = _onset(log, windows)
+    delays: tuple[float, ...] = ()
+
+    def late_start(T: float) -> bool:
+        """Whether the wheel starts later than a first-order rise of T (s) would show, by
+        more than 1.5 sample periods: then a dead time is looked for, whatever the shift of
+        the fit without one (a rise steep at first can pull that shift early)."""
+        nonlocal delays
+        if onset is None or d_max <= 1.5 * bound:
+            return False
+        late = onset - STILL_SHARE * T - 0.5 * ts  # the rise's own time to show, the Euler lag
+        if late <= 1.5 * bound:
+            return False
+        delays = tuple(
+            sorted({min(max(onset - f * ts, bound), d_max) for f in (0.0, 0.5, 1.0, 1.5)})
+        )
+        sought.append(True)
+        return True
+
+    sought: list[bool] = []  # whether a dead time was looked for
+
+    moved: list[float] = []  # how far a rejected dead time's rise had come by its end
+    if prior is not None:
+        if prior.moved_early is not None:
+            moved.append(prior.moved_early)
+    reach = (-bound, d_max) if prior is not None and prior.dead_time > 0 else (-bound, bound)
+    near = (0.8, 1.0, 1.25)
+
+    def dead(d: float, rss: float, rss_late: float, n: int, p: int) -> bool:
+        """A dead time d (s): later than the bound, clearly better, and the wheel stands
+        until it ends."""
+        if not (d > bound and _significant(rss, rss_late, n, p)):
+            return False
+        share = _moved_before(log, windows, d - bound)
+        if share > STILL_SHARE:
+            moved.append(share)
+            return False
+        return True
+
+    if prior is None:
+        steps_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep)
+    else:
+        T_near = tuple(f * prior.T for f in near)
+        steps_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep, (prior.shift,), T_near)
+    if prior is None and late_start(steps_fit.T):
+        T_starts = tuple(f * steps_fit.T for f in WIDE_T_FACTORS)
+        late = fit_windows(
+            t, theta, windows, ts, (-bound, d_max), T_range, keep, (0.0, *delays), T_starts
+        )
+        if dead(late.d, steps_fit.rss, late.rss, late.rows.size, late.n_params):
+            steps_fit = late
     cmd, _ = command(log)
     clusters = np.unique(np.array([0, *(e.start for e in find_edges(cmd))], dtype=np.int64))
     stamped = "t_us" in log.extra
@@ -114,15 +255,49 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
     # firmware) or on the board's sample grid (firmware that sets the output on a timer);
     # without them, where a step falls between the logged instants is not known
     timings = [t, board_grid(t)] if stamped else [t]
-    whole = fit_whole_log(t, u, theta, steps_fit.T, clusters, timings, offsets=not stamped)
+    weights = None if keep is None else keep.astype(float)
+
+    def whole_fit(shift: tuple[float, float], T0: float, **kw: Any) -> WholeLogFit | None:
+        return fit_whole_log(
+            t, u, theta, T0, clusters, timings, not stamped, shift, T_range, weights, **kw
+        )
+
+    T0 = min(max(steps_fit.T, T_range[0]), T_range[1])
+    if prior is None:
+        whole = whole_fit(reach, T0)
+    else:
+        whole = whole_fit(reach, prior.T, shift_starts=(prior.shift,), T_factors=near)
+    if prior is None and whole is not None and late_start(whole.T):
+        late_w = whole_fit(
+            (-bound, d_max), whole.T, shift_starts=(0.0, *delays), T_factors=WIDE_T_FACTORS
+        )
+        if late_w is not None and dead(
+            late_w.d, whole.rss, late_w.rss, late_w.n_used, late_w.n_params
+        ):
+            whole = late_w
     time_source = "the board's timestamps (t_us)" if stamped else "the t column"
     n_w = steps_fit.rows.size
     sigma_w = math.sqrt(steps_fit.rss / max(n_w - steps_fit.n_params, 1))
+    common: dict[str, Any] = dict(
+        shift_bound=bound,
+        T_range=T_range,
+        moved_early=max(moved) if moved else None,
+        onset=onset,
+        dead_time_sought=bool(sought) or (prior is not None and prior.dead_time_sought),
+        moved_before_step=_moved_before(log, windows, 0.0, at_step=True) > STILL_SHARE,
+    )
     if whole is not None:
         on_steps = whole.residuals[steps_fit.rows]
         rms = math.sqrt(dot(on_steps, on_steps) / max(n_w, 1))
         if rms <= ADEQUATE * sigma_w:
-            return _from_whole(log, whole, windows, theta, angle_source, time_source, rms, sigma_w)
+            fit = _from_whole(log, whole, windows, theta, angle_source, time_source, rms, sigma_w)
+            return replace(
+                fit,
+                dead_time=whole.d if whole.d > bound else 0.0,
+                shift_on_bound=whole.d_on_bound,
+                T_on_bound=whole.T_on_bound,
+                **common,
+            )
         why = (
             f"the first-order model over the whole log leaves {rms / sigma_w:.1f} times the "
             "residual of the steps fitted one by one (the wheel between the steps does not "
@@ -131,7 +306,93 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
         )
     else:
         why = "the applied voltage u never changes in the log, so T comes from the rising steps"
-    return _from_steps(log, steps_fit, windows, theta, angle_source, time_source, sigma_w, why)
+    fit = _from_steps(log, steps_fit, windows, theta, angle_source, time_source, sigma_w, why)
+    return replace(
+        fit,
+        dead_time=steps_fit.d if steps_fit.d > bound else 0.0,
+        shift_on_bound=steps_fit.d_on_bound,
+        T_on_bound=steps_fit.T_on_bound,
+        **common,
+    )
+
+
+WIDE_T_FACTORS: tuple[float, ...] = (0.1, 0.2, 0.35, 0.5, 0.7, 1.0, 1.4)
+"""Where the search for T starts when it looks for a dead time, in multiples of the T found
+without one (a T that had to stretch to reach a late response is too long)."""
+
+
+STILL_SHARE: float = 0.02
+"""A dead time is one only while the wheel stands: by one sample period before it ends, the
+speed (a 3-row running median) has not come this share of the way from its level before a
+rising step to the level after it (the median over the steps; plus three times the speed's
+scatter before the step over the change). A response that starts at once but slowly (an
+S-shaped rise, a ramp) also fits better late; it is not a dead time. (A second pole of T/3
+has come 3 % of the way one sample of T/12 before the delay a fit gives it.)"""
+
+
+def _smooth(w: FloatArray) -> FloatArray:
+    """A 3-row running median of ``w`` (one-row spikes out; the ends kept)."""
+    out = w.copy()
+    if w.size >= 3:
+        out[1:-1] = np.median(np.stack((w[:-2], w[1:-1], w[2:])), axis=0)
+    return out
+
+
+def _levels(w: FloatArray, win: StepWindow) -> tuple[float, float]:
+    """The speed (rad/s) before a rising step and at the end of it (medians)."""
+    k = win.edge.start
+    tail = win.post_last - max((win.post_last - k) // 4, 1)
+    return float(np.median(w[win.pre_from : k + 1])), float(np.median(w[tail : win.post_last + 1]))
+
+
+def _onset(log: StepLog, windows: list[StepWindow]) -> float | None:
+    """Where the wheel first answers the rising steps: the median over the steps of the time
+    (s) from the step to the first row whose speed (a 3-row running median) has come
+    :data:`STILL_SHARE` of the way to its new level; None when no step shows it."""
+    w = np.asarray(log.omega, dtype=float)
+    smooth = _smooth(w)
+    t = log.board_time()
+    found = []
+    for win in windows:
+        k = win.edge.start
+        w0, w1 = _levels(w, win)
+        if w1 <= w0:
+            continue
+        share = (smooth[k + 1 : win.post_last + 1] - w0) / (w1 - w0)
+        hit = np.flatnonzero(share > STILL_SHARE)
+        if hit.size:
+            found.append(float(t[k + 1 + int(hit[0])] - t[k]))
+    return float(np.median(found)) if found else None
+
+
+def _moved_before(
+    log: StepLog, windows: list[StepWindow], until: float, at_step: bool = False
+) -> float:
+    """The median over the rising steps of the largest share of the speed's change reached
+    on the rows up to ``until`` (s) after each step (``at_step``: on the step's own row and
+    the one before, whose speeds were measured before the step acts)."""
+    w = np.asarray(log.omega, dtype=float)
+    smooth = _smooth(w)
+    t = log.board_time()
+    shares = []
+    for win in windows:
+        k = win.edge.start
+        rows = np.arange(k + 1, win.post_last + 1)
+        before = np.arange(max(k - 1, 1), k + 1) if at_step else rows[t[rows] <= t[k] + until]
+        w0, w1 = _levels(w, win)
+        if not before.size or w1 == w0:
+            continue
+        scatter = 3.0 * float(np.std(w[win.pre_from : k + 1])) / abs(w1 - w0)
+        shares.append(float(np.max((smooth[before] - w0) / (w1 - w0))) - scatter)
+    return float(np.median(shares)) if shares else 0.0
+
+
+def _significant(rss: float, rss_late: float, n: int, p: int) -> bool:
+    """True when the dead time lowers the residual sum of squares from ``rss`` to ``rss_late``
+    by more than :data:`DEAD_TIME_F` residual variances (n rows, p parameters)."""
+    if not (math.isfinite(rss_late) and rss_late > 0):
+        return rss_late < rss
+    return (rss - rss_late) > DEAD_TIME_F * rss_late / max(n - p, 1)
 
 
 def board_grid(t: FloatArray) -> FloatArray:
@@ -259,6 +520,8 @@ def rising_steps(log: StepLog, fit: TimeConstantFit | None = None) -> list[Risin
     _, name = command(log)
     omega = np.asarray(log.omega, dtype=float)
     t = np.asarray(log.t, dtype=float)
+    skip = np.zeros(t.size, dtype=bool)
+    skip[list(fit.left_out)] = True
     out = []
     for w, w_ss in zip(windows, fit.omega_ss, strict=True):
         e = w.edge
@@ -273,7 +536,7 @@ def rising_steps(log: StepLog, fit: TimeConstantFit | None = None) -> list[Risin
                 omega0=w0,
                 omega_ss=float(w_ss),
                 duration=float(t[w.post_last] - t[e.start]),
-                T_63=reading_63(t, omega, e.start, w.post_last, w0, float(w_ss)),
+                T_63=reading_63(t, omega, e.start, w.post_last, w0, float(w_ss), skip),
             )
         )
     return out
@@ -295,12 +558,14 @@ def model_reading_63(log: StepLog, fit: TimeConstantFit, steps: list[RisingStep]
     th = fit.predicted
     speed = np.zeros(th.size)
     speed[1:] = np.diff(th) / np.diff(t)
+    skip = np.zeros(t.size, dtype=bool)
+    skip[list(fit.left_out)] = True
     reads = []
     for w, s in zip(windows, steps, strict=True):
         lo, hi = w.edge.start, w.post_last
         if not np.all(np.isfinite(speed[lo + 1 : hi + 1])):
             continue
-        r = reading_63(t, speed, lo, hi, s.omega0, s.omega_ss)
+        r = reading_63(t, speed, lo, hi, s.omega0, s.omega_ss, skip)
         if r is not None:
             reads.append(r)
     return float(np.median(reads)) if reads else None

@@ -90,19 +90,29 @@ def _level_end(cmd: FloatArray, e: Edge, upto: int, span: float) -> int:
 
 
 def reading_63(
-    t: FloatArray, omega: FloatArray, start: int, post_last: int, w0: float, w_ss: float
+    t: FloatArray,
+    omega: FloatArray,
+    start: int,
+    post_last: int,
+    w0: float,
+    w_ss: float,
+    skip: NDArray[np.bool_] | None = None,
 ) -> float | None:
     """The manual's reading: the time (s) from the step at row ``start`` until the speed
     ``omega`` (rad/s) first reaches 63 % of the way from w0 to w_ss (rad/s), interpolated
-    linearly between samples; None if it never does by row ``post_last``."""
+    linearly between samples; None if it never does by row ``post_last``. Rows marked in
+    ``skip`` (a logging stall's spike) are not read."""
     if w_ss <= w0:
         return None
     level = w0 + E63 * (w_ss - w0)
     after = omega[start + 1 : post_last + 1]
-    hit = np.flatnonzero(after >= level)
+    ok = np.ones(after.size, dtype=bool) if skip is None else ~skip[start + 1 : post_last + 1]
+    hit = np.flatnonzero((after >= level) & ok)
     if not hit.size:
         return None
     k = start + 1 + int(hit[0])
-    prev_t, prev_w = (t[k - 1], omega[k - 1]) if k - 1 > start else (t[start], w0)
+    before = np.flatnonzero(ok[: int(hit[0])])
+    j = start + 1 + int(before[-1]) if before.size else start
+    prev_t, prev_w = (t[j], omega[j]) if j > start else (t[start], w0)
     frac = (level - prev_w) / (omega[k] - prev_w) if omega[k] != prev_w else 1.0
     return float(prev_t + frac * (t[k] - prev_t) - t[start])

@@ -53,7 +53,7 @@ class WholeLogFit:
 
     T: time constant (s); d: time shift of the edges (s); K: gain (rad/s per V of the log's u);
     u_c: dry friction's breakaway voltage (V, 0 when not in the model); friction: whether u_c
-    was fitted; offsets: whether the angle got a free offset per stretch between edges;
+    was fitted; T_on_bound, d_on_bound: whether T or d ended on its bound; n_used: rows fitted; offsets: whether the angle got a free offset per stretch between edges;
     covariance: cluster-robust covariance of (K, T, d[, u_c]); residuals: angle residuals (rad)
     at every row; predicted: the model's angle (rad) at every row.
     """
@@ -66,6 +66,9 @@ class WholeLogFit:
     offsets: bool
     rss: float
     n_params: int
+    T_on_bound: bool
+    d_on_bound: bool
+    n_used: int
     covariance: Covariance
     residuals: FloatArray
     predicted: FloatArray
@@ -168,14 +171,20 @@ class _Problem:
     ``starts``)."""
 
     def __init__(
-        self, model: _Model, theta: FloatArray, friction: bool, starts: NDArray[np.int64]
+        self,
+        model: _Model,
+        theta: FloatArray,
+        friction: bool,
+        starts: NDArray[np.int64],
+        weights: FloatArray,
     ) -> None:
         self.model = model
         self.theta = (theta - theta[0]) * (model.sign if model.sign else 1.0)
         self.friction = friction
         self.starts = starts
-        self.counts = np.diff(np.concatenate((self.starts, [theta.size])))
-        self.group = np.repeat(np.arange(self.starts.size), self.counts)
+        self.w = weights  # 1 for a row the fit uses, 0 for one it leaves out
+        self.counts = np.maximum(np.add.reduceat(weights, starts), 1e-300)
+        self.group = np.repeat(np.arange(self.starts.size), np.diff(np.append(starts, theta.size)))
         self._last: tuple[bytes, tuple[FloatArray, FloatArray]] | None = None
 
     def response(self, x: FloatArray) -> tuple[FloatArray, FloatArray]:
@@ -187,10 +196,22 @@ class _Problem:
         return self._last[1]
 
     def demean(self, v: FloatArray) -> FloatArray:
-        """v less its mean over each cluster of rows (the per-cluster angle offsets)."""
+        """v less its mean over the used rows of each cluster (the per-cluster angle offsets),
+        zero at the rows left out."""
+        w = self.w
         if v.ndim == 1:
-            return v - (np.add.reduceat(v, self.starts) / self.counts)[self.group]
-        return v - (np.add.reduceat(v, self.starts, axis=0) / self.counts[:, None])[self.group]
+            return w * (v - (np.add.reduceat(w * v, self.starts) / self.counts)[self.group])
+        means = np.add.reduceat(w[:, None] * v, self.starts, axis=0) / self.counts[:, None]
+        return w[:, None] * (v - means[self.group])
+
+    def every_residual(self, x: FloatArray, K: float) -> FloatArray:
+        """The angle residual (rad) at every row, those left out included (the offsets and K
+        from the rows used)."""
+        col = self.response(x)[0]
+        out: FloatArray = self.theta - K * col
+        means = np.add.reduceat(self.w * out, self.starts) / self.counts
+        res: FloatArray = out - means[self.group]
+        return res
 
     def unpack(self, x: FloatArray) -> tuple[float, float, float]:
         return math.exp(float(x[0])), float(x[1]), float(x[2]) if self.friction else 0.0
@@ -242,13 +263,29 @@ class _Problem:
         return -(D - np.outer(cc, (cc @ D) / dot(cc, cc)))
 
 
-def _starts(problem: _Problem, start: FloatArray) -> tuple[float, FloatArray]:
-    """The best of T from half to twice the start's: (residual sum of squares, x)."""
+T_FACTORS: tuple[float, ...] = (0.5, 0.7, 1.0, 1.4, 2.0)
+"""Where the search for T starts, in multiples of the start's T."""
+
+
+def _starts(
+    problem: _Problem,
+    start: FloatArray,
+    shifts: tuple[float, ...] = (),
+    factors: tuple[float, ...] = T_FACTORS,
+    lower: FloatArray | None = None,
+    upper: FloatArray | None = None,
+) -> tuple[float, FloatArray]:
+    """The best start of T at ``factors`` times the start's and the shift at the start's or
+    at each of ``shifts`` (s), inside the box: (residual sum of squares, x)."""
     tries = []
-    for f in (0.5, 0.7, 1.0, 1.4, 2.0):
-        x = start.copy()
-        x[0] += math.log(f)
-        tries.append((problem.evaluate(x)[0], x))
+    for d in shifts or (float(start[1]),):
+        for f in factors:
+            x = start.copy()
+            x[0] += math.log(f)
+            x[1] = d
+            if lower is not None and upper is not None:
+                x = np.clip(x, lower, upper)
+            tries.append((problem.evaluate(x)[0], x))
     return min(tries, key=lambda pair: pair[0])
 
 
@@ -269,6 +306,11 @@ def fit_whole_log(
     clusters: NDArray[np.int64],
     edge_times: list[FloatArray],
     offsets: bool,
+    shift: tuple[float, float] = (-math.inf, math.inf),
+    T_range: tuple[float, float] = (1e-9, 2e4),
+    weights: FloatArray | None = None,
+    shift_starts: tuple[float, ...] = (),
+    T_factors: tuple[float, ...] = T_FACTORS,
 ) -> WholeLogFit | None:
     """Fit the first-order model to the whole log.
 
@@ -277,34 +319,45 @@ def fit_whole_log(
     stretches from each edge of the command to the next (the first at row 0); edge_times:
     where the voltage of each row may begin to act (s, one array per hypothesis; the one that
     fits best is kept); offsets: give each stretch its own angle offset (the edges' instants
-    known only to within a jitter) instead of carrying the angle through every edge. None
-    when the voltage never changes.
+    known only to within a jitter) instead of carrying the angle through every edge; shift:
+    the range (s) the time shift of the edges may take; T_range: the range of T (s);
+    weights: 1 for each row the fit uses, 0 for one it leaves out (default: all);
+    shift_starts: shifts (s) the search may start from (default 0), each with T at
+    ``T_factors`` times T0. None when the voltage never changes.
     """
     th = np.asarray(theta, dtype=float)
     n = th.size
+    w = np.ones(n) if weights is None else np.asarray(weights, dtype=float)
     starts = clusters if offsets and clusters.size > 1 else np.zeros(1, dtype=np.int64)
-    start = np.array([math.log(T0), 0.0])
+    lo = np.array([math.log(T_range[0]), shift[0]])
+    hi = np.array([math.log(T_range[1]), shift[1]])
+    start = np.clip(np.array([math.log(T0), 0.0]), lo, hi)
     candidates = []
     for when in edge_times:
         m = _Model(np.asarray(t, float), np.asarray(u, float), when)
         if m.v.size < 2:
             return None
-        p = _Problem(m, th, False, starts)
-        sol = levenberg_marquardt(p.evaluate, p.jacobian, _starts(p, start)[1])
+        p = _Problem(m, th, False, starts, w)
+        x0 = _starts(p, start, shift_starts, T_factors, lo, hi)[1]
+        sol = levenberg_marquardt(p.evaluate, p.jacobian, x0, lower=lo, upper=hi)
         candidates.append((sol.rss, sol, m, p))
     _, best, model, chosen = min(candidates, key=lambda c: c[0])
     if model.can_stick:
-        stick = _Problem(model, th, True, starts)
+        stick = _Problem(model, th, True, starts, w)
         top = float(np.max(np.abs(u)))
         tries = [np.array([best.x[0], best.x[1], f * top]) for f in (0.0, 0.02, 0.05, 0.1, 0.2)]
         first = min(tries, key=lambda x: stick.evaluate(x)[0])
-        with_c = levenberg_marquardt(stick.evaluate, stick.jacobian, first)
+        lo3, hi3 = np.append(lo, -np.inf), np.append(hi, np.inf)
+        with_c = levenberg_marquardt(stick.evaluate, stick.jacobian, first, lower=lo3, upper=hi3)
         found = stick.unpack(with_c.x)[2] > 0  # a breakaway voltage, not a push
-        if found and _better(best, with_c, 1, n, chosen.n_linear + 3, FRICTION_F):
+        used = int(np.count_nonzero(w))
+        if found and _better(best, with_c, 1, used, chosen.n_linear + 3, FRICTION_F):
             best, chosen = with_c, stick
     T, d, u_c = chosen.unpack(best.x)
     D = chosen.derivatives(best.x, best.coef)
     D[:, 0] /= T  # d/d ln T -> d/d T
+    on_bound = (best.x[:2] <= lo + 1e-9) | (best.x[:2] >= hi - 1e-9)
+    D[:, :2] = np.where(on_bound, 0.0, D[:, :2])  # a parameter held on its bound is not fitted
     col = chosen.demean(model.column(T, d, u_c))
     J = np.column_stack((col, D))  # (K, T, d[, u_c]), the offsets projected off
     lag = math.ceil(2.0 * T / max(float(np.median(np.diff(t))), 1e-9))  # two time constants
@@ -319,7 +372,10 @@ def fit_whole_log(
         offsets=chosen.starts.size > 1,
         rss=best.rss,
         n_params=chosen.n_linear + best.x.size,
+        T_on_bound=bool(on_bound[0]),
+        d_on_bound=bool(on_bound[1]),
+        n_used=int(np.count_nonzero(w)),
         covariance=cov,
         residuals=best.residuals * sign,
-        predicted=th - best.residuals * sign,
+        predicted=th - chosen.every_residual(best.x, float(best.coef[0])) * sign,
     )

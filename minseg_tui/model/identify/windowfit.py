@@ -38,14 +38,16 @@ _P = 4  # columns: a, w0, w1, c
 
 @dataclass(frozen=True)
 class WindowsFit:
-    """T (s) and the time shift d (s) with their cluster-robust covariance (one cluster per
-    step), each step's final speed w1 (rad/s) with its standard error, the residuals (rad) and
+    """T (s) and the time shift d (s) (each maybe on its bound) with their cluster-robust
+    covariance (one cluster per step), each step's final speed w1 (rad/s) with its standard error, the residuals (rad) and
     the model's angle (rad) at the rows used (``rows``, in window order)."""
 
     T: float
     d: float
     rss: float
     n_params: int
+    T_on_bound: bool
+    d_on_bound: bool
     covariance: Covariance
     omega_ss: FloatArray
     omega_ss_se: FloatArray
@@ -55,11 +57,17 @@ class WindowsFit:
 
 
 class _Problem:
-    def __init__(self, t: FloatArray, theta: FloatArray, windows: list[StepWindow]) -> None:
+    def __init__(
+        self,
+        t: FloatArray,
+        theta: FloatArray,
+        windows: list[StepWindow],
+        keep: NDArray[np.bool_] | None = None,
+    ) -> None:
         taus, ths, rows_all, seg, still, npre = [], [], [], [], [], []
         for i, w in enumerate(windows):
             k = w.edge.start
-            rows = w.rows
+            rows = w.rows if keep is None else w.rows[keep[w.rows] | (w.rows == k)]
             at_rest = bool(np.all(theta[w.pre_from : k + 1] == theta[k]))
             if at_rest:
                 rows = rows[rows >= k]
@@ -139,19 +147,38 @@ class _Problem:
 
 
 def fit_windows(
-    t: FloatArray, theta: FloatArray, windows: list[StepWindow], ts: float
+    t: FloatArray,
+    theta: FloatArray,
+    windows: list[StepWindow],
+    ts: float,
+    shift: tuple[float, float] = (-math.inf, math.inf),
+    T_range: tuple[float, float] = (1e-9, 2e4),
+    keep: NDArray[np.bool_] | None = None,
+    shift_starts: tuple[float, ...] = (0.0,),
+    T_starts: tuple[float, ...] = (),
 ) -> WindowsFit:
     """Fit T and the time shift to the rising steps' windows: board times ``t`` (s), angle
-    ``theta`` (rad) at every row, the usable ``windows``; ``ts``: sample period (s)."""
-    prob = _Problem(np.asarray(t, float), np.asarray(theta, float), windows)
+    ``theta`` (rad) at every row, the usable ``windows``; ``ts``: sample period (s); shift:
+    the range (s) of the time shift; T_range: the range of T (s); keep: the rows the fit may
+    use (default: all); shift_starts: the shifts (s) the search may start from, each with T
+    at ``T_starts`` (s; default: a grid from ts/20 to the longest step)."""
+    prob = _Problem(np.asarray(t, float), np.asarray(theta, float), windows, keep)
+    lo = np.array([math.log(T_range[0]), shift[0]])
+    hi = np.array([math.log(T_range[1]), shift[1]])
     longest = float(np.max(prob.tau))
-    grid = np.geomspace(max(ts / 20.0, 1e-4), max(longest, ts), 24)
-    rss = [prob.evaluate(np.array([math.log(T), 0.0]))[0] for T in grid]
-    start = np.array([math.log(float(grid[int(np.argmin(rss))])), 0.0])
-    sol = levenberg_marquardt(prob.evaluate, prob.jacobian, start)
+    grid = (
+        np.array(T_starts)
+        if T_starts
+        else np.geomspace(max(ts / 20.0, 1e-4, T_range[0]), min(max(longest, ts), T_range[1]), 24)
+    )
+    tries = [np.clip(np.array([math.log(float(T)), d]), lo, hi) for d in shift_starts for T in grid]
+    start = min(tries, key=lambda x: prob.evaluate(x)[0])
+    sol = levenberg_marquardt(prob.evaluate, prob.jacobian, start, lower=lo, upper=hi)
     T, d = math.exp(float(sol.x[0])), float(sol.x[1])
     J = -prob.jacobian(sol.x, sol.coef)  # the derivatives with each step's own terms projected off
     J[:, 0] /= T
+    on_bound = (sol.x <= lo + 1e-9) | (sol.x >= hi - 1e-9)
+    J = np.where(on_bound, 0.0, J)  # a parameter held on its bound is not fitted
     lag = math.ceil(2.0 * T / ts)  # two time constants
     cov = cluster_covariance(J, sol.residuals, prob.starts, lag)
     coef = sol.coef.reshape(-1, _P)
@@ -168,6 +195,8 @@ def fit_windows(
         d=d,
         rss=sol.rss,
         n_params=int(prob.mask.sum()) + 2,
+        T_on_bound=bool(on_bound[0]),
+        d_on_bound=bool(on_bound[1]),
         covariance=cov,
         omega_ss=coef[:, 2].copy(),
         omega_ss_se=se,

@@ -20,10 +20,12 @@ class ConnectPanel(Static):
         d = self.device
         if d is None:
             return "No device yet. Ctrl+P → Switch to virtual board to practise."
+        check = "\nF10: board check (does the wheel turn when asked, and the count follow?)."
         if d.virtual:
             return (
                 f"Connected to the VIRTUAL MinSeg ({d.firmware})"
                 + (": no board was found." if d.fallback else ".")
                 + " Plug a board in and restart with --port, or keep practising."
+                + check
             )
-        return f"Connected to {d.name} on {d.port}, firmware {d.firmware}."
+        return f"Connected to {d.name} on {d.port}, firmware {d.firmware}." + check

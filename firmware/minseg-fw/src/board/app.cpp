@@ -11,8 +11,16 @@ namespace {
 
 class AvrBoard : public minseg::Board {
  public:
-  int32_t encoder_count() override { return hal_encoder_count(); }
+  uint8_t connectors() override { return hal_connectors(); }
+  int32_t encoder_count(uint8_t i) override { return hal_encoder_count(i); }
+  uint32_t encoder_edges(uint8_t i) override { return hal_encoder_edges(i); }
+  uint8_t encoder_pins(uint8_t i) override { return hal_encoder_pins(i); }
   void encoder_zero() override { hal_encoder_zero(); }
+  void set_direction(uint8_t dir) override {
+    hal_set_direction((dir & minseg::kDirEncoderRev) != 0, (dir & minseg::kDirMotorRev) != 0);
+  }
+  uint8_t load_direction() override { return hal_load_direction(); }
+  void save_direction(uint8_t dir) override { hal_save_direction(dir); }
   void drive(int32_t u_mV, uint16_t vsupply_mV, bool brake) override {
     minseg::BridgeLevels l = minseg::bridge_levels(u_mV, vsupply_mV, brake);
     hal_bridge(l.a, l.b);
@@ -47,4 +55,5 @@ void minseg_loop() {
   while (budget-- > 0 && (c = hal_uart_getc()) >= 0)
     controller.feed(static_cast<char>(c), hal_micros());
   controller.poll(hal_micros());
+  hal_poll();
 }

@@ -2,7 +2,7 @@
 
 namespace minseg {
 
-const char kFirmware[] = "minseg-fw 2.0.0";
+const char kFirmware[] = "minseg-fw 3.0.0";
 
 int32_t clamp_i32(int32_t v, int32_t lo, int32_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
 
@@ -58,11 +58,15 @@ Controller::Controller(Board* board, const char* board_name)
       step_half_samples_(1),
       next_due_(0),
       seq_(0),
-      last_valid_(0) {
+      last_valid_(0),
+      dir_(0),
+      active_(kNoConnector) {
   step_args_[0] = step_args_[1] = step_args_[2] = 0;
 }
 
 void Controller::begin(uint32_t now_us) {
+  dir_ = static_cast<uint8_t>(board_->load_direction() & (kDirEncoderRev | kDirMotorRev));
+  board_->set_direction(dir_);
   board_->drive(0, vsup_, brake_);
   LineWriter w("BOOT");
   w.str(kFirmware).u32(kProtoVersion);
@@ -109,8 +113,60 @@ void Controller::send_id() {
   LineWriter w("ID");
   w.str(kFirmware).u32(kProtoVersion).str(board_name_).u32(kCountsPerRev).u32(period_).u32(vsup_);
   w.str(brake_ ? "BRAKE" : "COAST");
+  w.str((dir_ & kDirEncoderRev) ? "REV" : "FWD").str((dir_ & kDirMotorRev) ? "REV" : "FWD");
   const char* s = w.finish();
   board_->send(s, w.len(), false);
+}
+
+// $DIAG,<drive>,<active>,<conn>:<AB>:<edges>...: every connector is driven.
+void Controller::send_diag() {
+  find_active();
+  const uint8_t n = board_->connectors();
+  char drive[3 * kMaxConnectors];
+  uint8_t k = 0;
+  for (uint8_t i = 0; i < n && i < kMaxConnectors; ++i) {
+    if (i > 0) drive[k++] = '+';
+    drive[k++] = 'M';
+    drive[k++] = static_cast<char>('1' + i);
+  }
+  drive[k] = '\0';
+  char active[5] = {'N', 'O', 'N', 'E', '\0'};
+  if (active_ != kNoConnector) {
+    active[0] = 'M';
+    active[1] = static_cast<char>('1' + active_);
+    active[2] = '\0';
+  }
+  LineWriter w("DIAG");
+  w.str(drive).str(active);
+  for (uint8_t i = 0; i < n && i < kMaxConnectors; ++i) {
+    // one field: M<i>:<A><B>:<edges>
+    const uint8_t ab = board_->encoder_pins(i);
+    char f[18] = {'M', static_cast<char>('1' + i), ':', static_cast<char>('0' + ((ab >> 1) & 1u)),
+                  static_cast<char>('0' + (ab & 1u)), ':'};
+    uint8_t e = format_u32(board_->encoder_edges(i), f + 6);
+    f[6 + e] = '\0';
+    w.str(f);
+  }
+  const char* s = w.finish();
+  board_->send(s, w.len(), false);
+}
+
+// The first connector whose encoder counted kActiveEdges edges since reset
+// becomes the active one, for good (until the next reset).
+void Controller::find_active() {
+  if (active_ != kNoConnector) return;
+  const uint8_t n = board_->connectors();
+  for (uint8_t i = 0; i < n && i < kMaxConnectors; ++i) {
+    if (board_->encoder_edges(i) >= kActiveEdges) {
+      active_ = static_cast<int8_t>(i);
+      return;
+    }
+  }
+}
+
+int32_t Controller::count() {
+  find_active();
+  return active_ == kNoConnector ? 0 : board_->encoder_count(static_cast<uint8_t>(active_));
 }
 
 void Controller::handle_line(const char* s, uint8_t n, uint32_t now_us) {
@@ -118,7 +174,7 @@ void Controller::handle_line(const char* s, uint8_t n, uint32_t now_us) {
   char detail[12];
   Err e = parse_command(s, n, &c, detail);
   if (e == kIgnore) return;
-  if (e == kOk && c.id == kStep && step_active()) {
+  if (e == kOk && (c.id == kStep || c.id == kDir) && step_active()) {
     e = kErrBusy;
     detail[0] = '\0';
   }
@@ -214,6 +270,23 @@ void Controller::execute(const Command& c, uint32_t now_us) {
       board_->send(s, w.len(), false);
       break;
     }
+    case kDir: {
+      dir_ = static_cast<uint8_t>((c.arg[0] != 0 ? kDirEncoderRev : 0) |
+                                  (c.arg[1] != 0 ? kDirMotorRev : 0));
+      board_->set_direction(dir_);
+      board_->save_direction(dir_);
+      board_->drive(u_, vsup_, brake_);  // the new polarity at once
+      LineWriter w("OK");
+      const char* s = w.str("DIR")
+                          .str((dir_ & kDirEncoderRev) ? "REV" : "FWD")
+                          .str((dir_ & kDirMotorRev) ? "REV" : "FWD")
+                          .finish();
+      board_->send(s, w.len(), false);
+      break;
+    }
+    case kDiag:
+      send_diag();
+      break;
     case kStream: {
       stream_ = c.arg[0] != 0;
       LineWriter w("OK");
@@ -227,6 +300,7 @@ void Controller::execute(const Command& c, uint32_t now_us) {
 }
 
 void Controller::poll(uint32_t now_us) {
+  find_active();
   if (running() && static_cast<uint32_t>(now_us - last_valid_) > kWatchdogUs) {
     stop_motor();
     LineWriter w("EV");
@@ -252,11 +326,11 @@ void Controller::sample(uint32_t now_us) {
     u_ = pending_u_;
   }
   board_->drive(u_, vsup_, brake_);
-  int32_t count = board_->encoder_count();
+  int32_t n = count();
 
   if (stream_) {
     LineWriter w("S");
-    const char* s = w.u32(seq_).u32(now_us).i32(count).i32(u_).finish();
+    const char* s = w.u32(seq_).u32(now_us).i32(n).i32(u_).finish();
     board_->send(s, w.len(), true);  // a dropped sample shows as a gap in seq
     ++seq_;
   }

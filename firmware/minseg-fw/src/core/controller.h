@@ -1,6 +1,7 @@
-// The board's behaviour under protocol 2, independent of the hardware:
+// The board's behaviour under protocol 3, independent of the hardware:
 // command handling with clamping, the sample schedule, the board-timed step
-// sequencer and the host-silence watchdog. No Arduino or AVR headers, no
+// sequencer, the host-silence watchdog, the run-time direction (DIR) and the
+// choice of the connector whose count the samples carry. No Arduino or AVR headers, no
 // dynamic memory. The AVR build and the host tests drive it through Board.
 #ifndef MINSEG_CONTROLLER_H
 #define MINSEG_CONTROLLER_H
@@ -11,7 +12,7 @@
 
 namespace minseg {
 
-extern const char kFirmware[];            // "minseg-fw 2.0.0"
+extern const char kFirmware[];            // "minseg-fw 3.0.0"
 static const uint16_t kCountsPerRev = 720;  // x4 decoding, per wheel revolution
 
 // Limits and defaults (PROTOCOL.md, "Host to board").
@@ -26,19 +27,43 @@ static const int32_t kHalfMinMs = 20;
 static const int32_t kHalfMaxMs = 60000;
 static const int32_t kStepsMin = 1;
 static const int32_t kStepsMax = 1000;
+static const uint8_t kMaxConnectors = 2;
+// A connector becomes the active one (the samples' count follows it) once its
+// encoder counted this many edges since reset (PROTOCOL.md).
+static const uint32_t kActiveEdges = 4;
+static const int8_t kNoConnector = -1;
+
+// Direction bits as kept in EEPROM and passed to Board::set_direction.
+static const uint8_t kDirEncoderRev = 1;
+static const uint8_t kDirMotorRev = 2;
 
 int32_t clamp_i32(int32_t v, int32_t lo, int32_t hi);
 // P argument -> applied period: clamped to 2000..100000 us, rounded to the
 // nearest multiple of 1000 us (half up).
 uint32_t clamp_period_us(int32_t requested_us);
 
-// What the controller needs from the hardware.
+// What the controller needs from the hardware. Connectors are numbered
+// 0..connectors()-1 and named M1, M2, ... in $DIAG.
 class Board {
  public:
-  virtual int32_t encoder_count() = 0;
-  virtual void encoder_zero() = 0;
-  // Apply a motor command now (duty = |u| / V_supply, see drive.h).
+  virtual uint8_t connectors() = 0;  // 1..kMaxConnectors
+  // Connector i's encoder: its count (x4, already in the direction set by
+  // set_direction), every edge it saw since reset whatever its direction, and
+  // the raw levels of its pins now, (A << 1) | B.
+  virtual int32_t encoder_count(uint8_t i) = 0;
+  virtual uint32_t encoder_edges(uint8_t i) = 0;
+  virtual uint8_t encoder_pins(uint8_t i) = 0;
+  virtual void encoder_zero() = 0;  // every connector's count (not the edges)
+  // Apply a motor command now to every connector (duty = |u| / V_supply, see
+  // drive.h), in the polarity set by set_direction.
   virtual void drive(int32_t u_mV, uint16_t vsupply_mV, bool brake) = 0;
+  // kDirEncoderRev: count the other way from now on (the count itself kept);
+  // kDirMotorRev: swap the bridge inputs (takes effect at the next drive()).
+  virtual void set_direction(uint8_t dir) = 0;
+  // The direction kept over resets (EEPROM): load at begin(), save on DIR (the
+  // board writes only when it changed).
+  virtual uint8_t load_direction() = 0;
+  virtual void save_direction(uint8_t dir) = 0;
   // Queue a line for the host. A droppable line (a sample) may be dropped
   // when the transmit buffer is full: then it returns false.
   virtual bool send(const char* s, uint8_t n, bool droppable) = 0;
@@ -87,6 +112,8 @@ class Controller {
   bool step_active() const { return step_.active() || step_pending_; }
   uint32_t next_sample_us() const { return next_due_; }
   uint32_t seq() const { return seq_; }
+  uint8_t direction() const { return dir_; }
+  int8_t active_connector() const { return active_; }
 
  private:
   bool running() const;
@@ -94,6 +121,9 @@ class Controller {
   void send_ok(const char* name);
   void send_err(Err e, const char* detail);
   void send_id();
+  void send_diag();
+  void find_active();
+  int32_t count();
   void execute(const Command& c, uint32_t now_us);
   void sample(uint32_t now_us);
 
@@ -114,6 +144,8 @@ class Controller {
   uint32_t next_due_;    // next sample instant (micros)
   uint32_t seq_;
   uint32_t last_valid_;  // time of the last valid command (micros)
+  uint8_t dir_;          // kDirEncoderRev | kDirMotorRev
+  int8_t active_;        // connector the count follows, kNoConnector until one has 4 edges
 };
 
 }  // namespace minseg

@@ -124,7 +124,7 @@ LineAssembler::Status LineAssembler::feed(char c) {
 
 namespace {
 
-enum ArgKind { kNoArgs, kInts, kMode, kBit };
+enum ArgKind { kNoArgs, kInts, kMode, kBit, kDirs };
 
 struct CmdSpec {
   const char* name;
@@ -132,11 +132,11 @@ struct CmdSpec {
   uint8_t kind;
 };
 
-// The host commands of protocol 2, indexed by CmdId.
+// The host commands of protocol 3, indexed by CmdId.
 const CmdSpec kCmds[kCmdCount] = {
     {"ID", 0, kNoArgs},   {"PING", 0, kNoArgs}, {"V", 1, kInts},   {"STEP", 4, kInts},
     {"STOP", 0, kNoArgs}, {"P", 1, kInts},      {"Z", 0, kNoArgs}, {"SUP", 1, kInts},
-    {"ZM", 1, kMode},     {"STREAM", 1, kBit},
+    {"ZM", 1, kMode},     {"STREAM", 1, kBit},  {"DIR", 2, kDirs},  {"DIAG", 0, kNoArgs},
 };
 
 bool field_equals(const char* f, uint8_t n, const char* lit) {
@@ -255,6 +255,10 @@ Err parse_command(const char* line, uint8_t len, Command* cmd, char* detail) {
     } else if (spec.kind == kMode) {
       if (field_equals(f, fl, "BRAKE")) cmd->arg[nf] = 1;
       else if (field_equals(f, fl, "COAST")) cmd->arg[nf] = 0;
+      else return kErrArgs;
+    } else if (spec.kind == kDirs) {
+      if (field_equals(f, fl, "FWD")) cmd->arg[nf] = 0;
+      else if (field_equals(f, fl, "REV")) cmd->arg[nf] = 1;
       else return kErrArgs;
     } else if (spec.kind == kBit) {
       if (field_equals(f, fl, "0")) cmd->arg[nf] = 0;

@@ -1,4 +1,4 @@
-// Protocol version 2 (firmware/PROTOCOL.md): framing, checksums, number
+// Protocol version 3 (firmware/PROTOCOL.md): framing, checksums, number
 // formatting, the line assembler and the command parser.
 // Board-independent: no Arduino or AVR headers, no dynamic memory.
 #ifndef MINSEG_PROTOCOL_H
@@ -8,7 +8,7 @@
 
 namespace minseg {
 
-static const uint8_t kProtoVersion = 2;
+static const uint8_t kProtoVersion = 3;
 static const uint8_t kMaxLine = 80;  // longest accepted line, without "\r\n"
 
 // The frame checksum of n bytes (the bytes between '$' and '*'): CRC-16/CCITT-FALSE,
@@ -63,13 +63,14 @@ class LineAssembler {
 enum Err { kOk = 0, kErrChecksum, kErrUnknown, kErrArgs, kErrRange, kErrBusy, kIgnore };
 const char* err_name(Err e);
 
-enum CmdId { kId, kPing, kV, kStep, kStop, kP, kZ, kSup, kZm, kStream, kCmdCount };
+enum CmdId { kId, kPing, kV, kStep, kStop, kP, kZ, kSup, kZm, kStream, kDir, kDiag, kCmdCount };
 const char* cmd_name(CmdId c);
 
 struct Command {
   CmdId id;
   uint8_t nargs;
-  int32_t arg[4];  // ZM: arg[0] = 1 for BRAKE, 0 for COAST; STREAM: 0 or 1
+  int32_t arg[4];  // ZM: arg[0] = 1 for BRAKE, 0 for COAST; STREAM: 0 or 1;
+                   // DIR: arg[0], arg[1] = 1 for REV, 0 for FWD
 };
 
 // Parses one host line (without '\n'). Returns kOk and fills cmd, or an

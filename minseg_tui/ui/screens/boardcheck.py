@@ -1,0 +1,109 @@
+"""The board check on screen: the question it may ask (did the wheel turn?), its answer, and
+the hand check (turn the wheel once, then Enter)."""
+
+from __future__ import annotations
+
+import threading
+
+from textual import on
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Vertical
+from textual.screen import ModalScreen
+from textual.widgets import OptionList
+from textual.widgets.option_list import Option
+
+from minseg_tui.ui.widgets.prose import Prose
+
+TURN_ANSWERS: tuple[tuple[str, str], ...] = (
+    ("yes", "It turned"),
+    ("no", "It did not turn"),
+    ("unsure", "I did not see"),
+)
+"""The answers to "did the wheel turn?": (answer, words)."""
+
+
+class WheelQuestionScreen(ModalScreen[str]):
+    """Asks whether the wheel turned while the board check drove it; dismissed with ``yes``,
+    ``no`` or ``unsure`` (Escape)."""
+
+    BINDINGS = [Binding("escape", "unsure", "I did not see")]
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="ask", classes="dialog"):
+            yield Prose("Board check: no counts", classes="title")
+            yield Prose(
+                "The board drove the motor for half a second and the encoder counted "
+                "nothing. Did the wheel turn?",
+                classes="para",
+            )
+            yield OptionList(*[Option(text, id=key) for key, text in TURN_ANSWERS], id="answers")
+
+    def on_mount(self) -> None:
+        self.query_one("#answers", OptionList).focus()
+
+    @on(OptionList.OptionSelected, "#answers")
+    def _answer(self, event: OptionList.OptionSelected) -> None:
+        self.dismiss(event.option.id or "unsure")
+
+    def action_unsure(self) -> None:
+        self.dismiss("unsure")
+
+
+class BoardCheckScreen(ModalScreen[None]):
+    """What the board check found (``ok`` or not, and its ``text``); Enter or Escape closes."""
+
+    BINDINGS = [
+        Binding("escape", "close", "Close"),
+        Binding("enter", "close", "Close"),
+    ]
+
+    def __init__(self, ok: bool, text: str, what: str = "Board check") -> None:
+        super().__init__()
+        self.ok = ok
+        self.text = text
+        self.what = what
+
+    def compose(self) -> ComposeResult:
+        title = f"{self.what}: " + ("all well" if self.ok else "something is wrong")
+        with Vertical(id="board-check", classes="dialog"):
+            yield Prose(title, classes="title")
+            yield Prose(self.text, id="check-text", classes="para")
+            yield Prose("Enter or Escape closes; F10 checks again.", classes="para")
+
+    def action_close(self) -> None:
+        self.dismiss(None)
+
+
+class RevolutionScreen(ModalScreen[None]):
+    """The hand check: turn the wheel once by hand, then Enter (sets ``done``); Escape sets
+    ``cancelled`` and ``done`` and closes."""
+
+    BINDINGS = [
+        Binding("enter", "turned", "Turned once"),
+        Binding("escape", "cancel", "Cancel"),
+    ]
+
+    def __init__(self, done: threading.Event, cancelled: threading.Event) -> None:
+        super().__init__()
+        self.done = done
+        self.cancelled = cancelled
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="revolution", classes="dialog"):
+            yield Prose("Counts per revolution", classes="title")
+            yield Prose(
+                "Mark the wheel (a piece of tape), turn it exactly once by hand, either way, "
+                "then press Enter. The motor is off. 720 counts are expected.",
+                id="revolution-text",
+                classes="para",
+            )
+
+    def action_turned(self) -> None:
+        self.query_one("#revolution-text", Prose).update("Counting the last samples…")
+        self.done.set()
+
+    def action_cancel(self) -> None:
+        self.cancelled.set()
+        self.done.set()
+        self.dismiss(None)

@@ -1,0 +1,199 @@
+"""The board check in the TUI, end to end on the real virtual MinSeg (real factory, link and
+URL board, real time) wired with each fault: F10 (or the palette) on Task 1, the fix of a
+reversed count, Task 5's question about the meter, the question "did the wheel turn?" on a
+board without a multimeter, and the hint when a voltage is set and nothing is counted.
+
+The board runs on the host's clock: the tests wait for what the app hears, never for a time."""
+
+from __future__ import annotations
+
+from minseg_tui.device.factory import open_device
+from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.config import UiConfig
+from minseg_tui.ui.screens.boardcheck import (
+    BoardCheckScreen,
+    RevolutionScreen,
+    WheelQuestionScreen,
+)
+from minseg_tui.ui.widgets.prose import Prose
+from tests.ui.conftest import DATE, board_url, real_app
+from tests.ui.helpers import Heard, goto, settle, start
+
+
+def _heard(app) -> list[str]:
+    """Every notification the app shows from now on (its text), in a list."""
+    said: list[str] = []
+    notify = app.notify
+
+    def keep(message, *args, **kwargs):
+        said.append(str(message))
+        return notify(message, *args, **kwargs)
+
+    app.notify = keep
+    return said
+
+
+def _check_text(app) -> str:
+    return app.screen.query_one("#check-text", Prose).text
+
+
+async def _f10(pilot, heard: Heard) -> BoardCheckScreen:
+    """F10, and the board check's answer once it is on screen."""
+    app = pilot.app
+    await pilot.press("f10")
+    await heard.until(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+    return app.screen
+
+
+async def _in_lab(pilot, step: str) -> None:
+    app = pilot.app
+    await settle(pilot, lambda: app.device is not None)
+    await start(pilot)
+    await goto(pilot, step)
+
+
+async def test_task1_offers_the_check_and_a_good_board_passes(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=2))
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task1")
+        assert "F10: board check" in str(app.screen.panel.render())
+        screen = await _f10(pilot, heard)
+        assert screen.ok and "the count follows" in _check_text(app)
+        await pilot.press("enter")
+        await settle(pilot, lambda: not isinstance(app.screen, BoardCheckScreen))
+        assert app.motor == "off"
+
+
+async def test_encoder_off_is_named_from_the_palette(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=2) + "&fault=encoder-off")
+    heard = Heard()
+    async with app.run_test(size=(120, 40), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task1")
+        await pilot.press("ctrl+p")
+        await pilot.press(*"Board check")
+        await pilot.press("enter")
+        await heard.until(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+        text = _check_text(app)
+        assert not app.screen.ok
+        assert "encoder cable" in text and "M1 11" in text and "power switch" not in text
+
+
+async def test_a_reversed_count_is_fixed_on_the_board(tmp_path):
+    url = board_url(seed=2) + "&fault=encoder-reversed"
+    app = real_app(tmp_path / "sessions", url)
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task1")
+        screen = await _f10(pilot, heard)
+        assert screen.ok and "Fixed" in _check_text(app) and "DIR,REV,FWD" in _check_text(app)
+        assert app._device.ident.enc_dir == "REV"
+        await pilot.press("escape")
+        screen = await _f10(pilot, heard)  # again: now it counts up
+        assert screen.ok and "the count follows" in _check_text(app)
+
+
+async def test_task5_a_motor_that_does_not_turn_asks_about_the_meter(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=2) + "&fault=motor-off")
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task5")
+        screen = await _f10(pilot, heard)
+        assert not screen.ok
+        assert "meter on mA, in series across the jumper pins" in _check_text(app)
+
+
+async def test_a_voltage_with_no_counts_offers_the_check(tmp_path):
+    """Task 4: F3 sets 2.5 V, the encoder is unplugged: the app says so and offers F10,
+    instead of the old hint about the cable and the jumper."""
+    app = real_app(tmp_path / "sessions", board_url(seed=2) + "&fault=encoder-off")
+    heard = Heard()
+    said = _heard(app)
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task4")
+        await pilot.press("f3")
+        await heard.until(pilot, lambda: any("counts nothing" in s for s in said))
+        (note,) = [s for s in said if "counts nothing" in s]
+        assert "2.5 V" in note and "F10 runs the board check" in note
+        await pilot.press("f2")
+
+
+async def test_task5_no_counts_hint_asks_about_the_meter(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=2) + "&fault=motor-off")
+    heard = Heard()
+    said = _heard(app)
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task5")
+        await pilot.press("f3")
+        await heard.until(pilot, lambda: any("counts nothing" in s for s in said))
+        (note,) = [s for s in said if "counts nothing" in s]
+        assert "meter on mA, in series across the jumper pins" in note
+        await pilot.press("f2")
+
+
+class RealBoardView:
+    """The link to a virtual board seen as a real board is: no multimeter (the firmware
+    answers METER with $ERR,UNKNOWN, which Link.meter turns into None) and no virtual board
+    behind it. Everything else is the link's."""
+
+    board = None
+
+    def __init__(self, link) -> None:
+        self._link = link
+
+    def __getattr__(self, name):
+        return getattr(self._link, name)
+
+    def meter(self):
+        return None
+
+
+async def test_on_a_board_without_a_meter_the_group_is_asked(tmp_path):
+    url = board_url(seed=2) + "&fault=motor-off"
+    cfg = UiConfig(
+        device=url, sessions=tmp_path / "sessions", today=DATE, animations=False, refresh=0.25
+    )
+    app = LabApp(cfg, lambda spec: RealBoardView(open_device(spec)))
+    heard = Heard()
+    said = _heard(app)
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await settle(pilot, lambda: app.device is not None)
+        assert any("F10 runs the board check" in s for s in said)  # offered on connect
+        await start(pilot)
+        await goto(pilot, "task1")
+        await pilot.press("f10")
+        await heard.until(pilot, lambda: isinstance(app.screen, WheelQuestionScreen))
+        await pilot.press("down", "enter")  # It did not turn
+        await heard.until(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+        text = _check_text(app)
+        assert "did not turn" in text and "power switch" in text and "encoder cable" not in text
+
+
+async def test_one_revolution_by_hand_from_the_palette(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=2))
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task1")
+        await pilot.press("ctrl+p")
+        await pilot.press(*"Count one revolution")
+        await pilot.press("enter")
+        await heard.until(pilot, lambda: isinstance(app.screen, RevolutionScreen))
+        _t, count, _u = app.live.snapshot()
+        before = int(count[-1])
+        app._device.board.turn_by_hand(1.0)  # a hand on the virtual wheel
+        await heard.until(pilot, lambda: int(app.live.snapshot()[1][-1]) != before)
+        await pilot.press("enter")
+        await heard.until(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+        assert app.screen.ok and "720 counts for one revolution" in _check_text(app)
+
+
+async def test_the_hand_check_can_be_cancelled(tmp_path):
+    app = real_app(tmp_path / "sessions", board_url(seed=2))
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task1")
+        app.action_count_revolution()
+        await heard.until(pilot, lambda: isinstance(app.screen, RevolutionScreen))
+        await pilot.press("escape")
+        await settle(pilot, lambda: app._tap is None)
+        assert not isinstance(app.screen, BoardCheckScreen | RevolutionScreen)
