@@ -664,11 +664,12 @@ def _finding(
 
 
 _TELL: dict[frozenset[str], str] = {
-    frozenset({"dead_time", "second_pole"}): "a faster sampling would (a delay leaves the "
-    "first samples after a step flat and then turns a corner, a pole bends smoothly from the "
-    "start)",
-    frozenset({"dead_time", "velocity_filter"}): "a faster sampling or the raw encoder counts "
-    "would (a delay shifts the rise, an average turns it into a ramp)",
+    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
+    "samples after each step (more counts per sample, a faster sampling where the counts "
+    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
+    "bends smoothly from the start)",
+    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
+    "(a delay shifts the rise, an average turns it into a ramp)",
     frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
     "of the speed acts on the measurement only, a pole on the motor)",
     frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
