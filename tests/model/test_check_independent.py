@@ -120,3 +120,18 @@ def test_never_a_pure_delay_when_another_explanation_fits_nearly_as_well():
     assert r.finding.cause == "dead_time" and r.finding.ambiguous_with
     assert "a pure delay" not in text(r)
     assert "cannot tell dead time from" in text(r)
+
+
+def test_an_averaged_speed_leaves_out_the_rows_a_stall_of_the_logger_reaches():
+    # an 11-tap average of the speed and a 40 ms stall whose row read the counts late: the
+    # average carries the wrong read into the next 11 rows; left out, the fit is exact again
+    log = make(503, ("velocity_filter",))
+    assert "stall" in log.how
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == ["velocity_filter"]
+    assert abs(r.extended.params["taps"] - 11) <= 1
+    assert r.extended.params["T"] == pytest.approx(log.T, rel=0.02)
+    left = [a for a in r.anomalies if a.kind == "gap_rows_left_out"]
+    assert len(left) == 1 and "were left out of the fit" in left[0].text
+    assert "late_step" not in kinds(r)  # the stall's read is no step that started late
+    assert r.baseline.rows < r.t.size

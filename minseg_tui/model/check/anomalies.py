@@ -411,3 +411,20 @@ def glitch_anomaly(t: FloatArray, y: FloatArray, rows: int) -> Anomaly:
         t_end=float(t[rows]),
         row_end=int(rows),
     )
+
+
+def averaged_gaps(t: FloatArray, starts: list[int], taps: int) -> Anomaly:
+    """The sentence for the rows left out after gaps in the sample times of an averaged
+    speed (``starts``: the rows right after each gap; ``taps``: the average's length)."""
+    first = starts[0]
+    return Anomaly(
+        "gap_rows_left_out",
+        int(first),
+        float(t[first]),
+        float(len(starts)),
+        "gaps",
+        "the speed is averaged over several samples, so a read the logger got wrong across a "
+        f"gap in the sample times stays in it for as many rows: the {taps + 1} rows after each "
+        f"of the {len(starts)} gap(s) (the first at t = {t[first]:.3f} s) were left out of the fit",
+        row_end=int(min(first + taps + 1, t.size)),
+    )

@@ -151,6 +151,16 @@ def check(
             full = replace_y(full, an.repair(y, res, wild, taps) if wild else y)
             head = full.head(MAX_FIT_ROWS)
             ext, base = refit(head, ext, rng), refit(head, base, rng)
+    gap_after = an.gap_starts(t, ts) if taps > 1 and samp.regular else []
+    if gap_after:
+        # an average over taps samples carries whatever the logger read across a gap (a
+        # stall's late read) into the next taps rows: they are left out
+        for g in gap_after:
+            pre[g : g + taps + 1] = 0.0
+        full = full.with_weights(full.weights * pre)
+        head = full.head(MAX_FIT_ROWS)
+        ext, base = refit(head, ext, rng), refit(head, base, rng)
+        notes.append(an.averaged_gaps(t, gap_after, taps))
     settle = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
     near = 3  # the model chosen follows the steps: look from a few rows after each
@@ -348,7 +358,15 @@ def _report(
     )
     if not misses:
         late = an.late_steps(
-            t, u, res, moved.predict(full) - e_pred, shift, samp.ts, ext.T, e_pred, angle_noise
+            t,
+            u,
+            np.where(keep, res, 0.0),
+            moved.predict(full) - e_pred,
+            shift,
+            samp.ts,
+            ext.T,
+            e_pred,
+            angle_noise,
         )
         edges = int(np.count_nonzero(np.diff(u) != 0))
         if len(late) >= dist.REPEAT_MIN and len(late) >= dist.REPEAT_SHARE * edges:
