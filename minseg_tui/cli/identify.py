@@ -8,6 +8,7 @@ import sys
 import textwrap
 
 from minseg_tui.cli.output import print_json
+from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify
 from minseg_tui.units import NUMBER
@@ -49,8 +50,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Read the files, compute, print. InputError reaches the dispatcher (exit 2)."""
+    if args.step == "":
+        raise InputError("--step", None, "expected a step log file name, got ''")
     readings = read_table(args.table)
-    log = read_step_log(args.step) if args.step else None
+    log = read_step_log(args.step) if args.step is not None else None
     result = identify(readings, args.R, log, source=args.table)
     if args.json:
         print_json(result.to_json())

@@ -67,6 +67,7 @@ from minseg_tui.ui.screens.boardcheck import (
     RevolutionScreen,
     WheelQuestionScreen,
 )
+from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.quit import QuitScreen, SaveElsewhereScreen
@@ -303,6 +304,11 @@ class LabApp(App[None]):
         elif isinstance(wanted, StartScreen.Resume):
             await self._resume(wanted)
 
+    def action_class_view(self) -> None:
+        """F12 on the start screen: every group of the sessions folder, one row each."""
+        if isinstance(self.screen, StartScreen):
+            self.push_screen(ClassScreen(Path(self.config.sessions)))
+
     @on(StartScreen.NewSession)
     async def _new(self, event: StartScreen.NewSession) -> None:
         names = [m.strip() for m in event.members.split(",") if m.strip()]
@@ -342,9 +348,9 @@ class LabApp(App[None]):
         if session.readonly:
             self.notify(
                 "opened read-only: "
-                + (session.damaged or "the file is damaged")
+                + (session.damaged or "to look, not to change")
                 + "; nothing typed here is saved (start a new session to go on)",
-                title="damaged session",
+                title="damaged session" if session.damaged else "read-only session",
                 severity="warning",
                 timeout=20,
             )

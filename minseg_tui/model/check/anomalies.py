@@ -262,8 +262,14 @@ def late_steps(
     for e, dx, st, res_t in zip(edges.tolist(), x.tolist(), strength, resolution, strict=True):
         off = dx - med
         # the shift must be a good part of a sample, well above what the noise allows and
-        # well above the timing the angle quantum allows for this edge
-        if abs(off) > max(0.25 * ts, LATE_SIGMAS * res_t) and abs(off) / shift * st > 6 * noise:
+        # well above the timing the angle quantum allows for this edge; and at most a
+        # sample: a step between samples acts within one period of its sample time, and a
+        # larger figure is the linear estimate outside its range (an edge that is no step,
+        # such as noise on u), which says nothing of when the step acted
+        if (
+            max(0.25 * ts, LATE_SIGMAS * res_t) < abs(off) <= ts
+            and abs(off) / shift * st > 6 * noise
+        ):
             out.append(
                 Anomaly(
                     "late_step",

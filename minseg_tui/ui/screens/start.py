@@ -33,6 +33,7 @@ class StartScreen(StatusScreen):
         # the app's before any widget's: the lab opens before the keys typed after Enter are
         # handed on, so they go into the lab (the app asks :meth:`request` what Enter wants)
         Binding("enter", "app.start_lab", show=False, priority=True),
+        Binding("f12", "app.class_view", "Class view"),
     ]
 
     @dataclass
