@@ -352,6 +352,9 @@ class RunView:
     T_63_lab: float | None
     T_ls: float | None
     T_ci: tuple[float, float] | None
+    T_hidden: bool = False
+    """The T readings are left out (None): Task 12's answer, hidden until the group has
+    entered its own T (:func:`hidden`)."""
 
 
 def _median(values: Sequence[float | None]) -> float | None:
@@ -370,7 +373,7 @@ def _t63(log: StepLog) -> float | None:
 RUN_VIEWS_KEPT = 8
 """How many run views :func:`runs` keeps (two a session)."""
 
-_run_views: dict[tuple[str, str, int, bool], RunView] = {}
+_run_views: dict[tuple[object, ...], RunView] = {}
 """The run views built, by (session folder, run, samples, interrupted): a recorded run's log
 does not change, and its three fits took about 0.4 s every time Task 10 was shown."""
 
@@ -417,7 +420,17 @@ def runs(session: Session) -> tuple[RunView, ...]:
         _run_views[key] = out[-1]
         while len(_run_views) > RUN_VIEWS_KEPT:
             del _run_views[next(iter(_run_views))]
-    return tuple(out)
+    if "own.T" not in hidden(session):
+        return tuple(out)
+    shown = []  # the readings are Task 12's answer: left out, each view made once too
+    for v in out:
+        hidden_key = (str(session.folder), v.name, v.samples, v.interrupted, "T hidden")
+        if hidden_key not in _run_views:
+            _run_views[hidden_key] = replace(
+                v, T_63=None, T_63_lab=None, T_ls=None, T_ci=None, T_hidden=True
+            )
+        shown.append(_run_views[hidden_key])
+    return tuple(shown)
 
 
 # -- Tasks 11-15: the results ---------------------------------------------------------------------

@@ -68,3 +68,19 @@ async def test_J_from_the_groups_63_percent_T_is_not_shown_as_39_percent_off(qui
         assert f"from your T = {T_ms:g}" in compare and "+0.2 %" in compare, compare
         assert "least squares" in compare and "J grows in proportion to T" in compare
         assert "+3" not in compare.splitlines()[0]  # not the least-squares J's +30-odd %
+
+
+async def test_task10_keeps_its_T_readings_until_the_group_has_its_own_T(quiet):
+    app = quiet()
+    async with app.run_test(size=(120, 40)) as pilot:
+        await start_with_a_run(pilot, "task10")
+        with app.session as s:
+            T_63 = s.results().identification.step.T_63
+        readings = _text(app, "#t-readings")
+        assert "steps-1" in readings and "shown once you enter your own T" in readings
+        assert f"{T_63:.3g}" not in readings
+        await goto(pilot, "task12")
+        await type_in(pilot, "own.T", "50 ms")
+        await goto(pilot, "task10", focus=None)
+        readings = _text(app, "#t-readings")
+        assert "shown once" not in readings and "steps-1" in readings
