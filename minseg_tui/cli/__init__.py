@@ -2,9 +2,10 @@
 
 Each subcommand lives in its own module with ``add_arguments(parser)`` and
 ``run(args) -> int``; this table is the only place that lists them.
-Exit codes: 0 ok, 2 bad input or usage (or output that cannot be written), 1 device or
-other failure. A headless command never prints a Python warning: numeric warnings while it
-computes become one note on stderr.
+Exit codes: 0 ok, 2 bad input or usage (or output that cannot be written, a closed stdout
+included), 1 device or other failure (a memory limit met: the limit said in one line). A
+headless command never prints a Python warning: numeric warnings while it computes become
+one note on stderr.
 """
 
 from __future__ import annotations
@@ -41,6 +42,10 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
         "write the lab firmware to a MinSeg with avrdude and check that it answers",
     ),
     "report": ("minseg_tui.cli.report", "write a session's report (Markdown, HTML, CSV)"),
+    "class": (
+        "minseg_tui.cli.classview",
+        "the class at a glance: one row per group of a sessions folder, what stands out",
+    ),
     "tui": ("minseg_tui.cli.tui", "start the lab assistant (the default)"),
 }
 
@@ -77,10 +82,18 @@ def build_parser(selected: str | None = None) -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the console script; returns the exit code."""
+    args = list(sys.argv[1:] if argv is None else argv)
+    command = args[0] if args and args[0] in SUBCOMMANDS else ""
+    if sys.stdout is None:  # started with stdout closed (`>&-`): Python gives None
+        return _fail(command, "cannot write the output (stdout is closed)", 2)
     try:
-        return _main(list(sys.argv[1:] if argv is None else argv))
+        return _main(args)
     except KeyboardInterrupt:
         return 130
+    except MemoryError as exc:
+        exc.__traceback__ = None  # let the frames and their arrays go before saying so
+        del exc
+        return _fail(command, f"ran out of memory: {memory_limit()}", 1)
     except BrokenPipeError:  # `minseg-tui ports | head`: the reader left, not an error of ours
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
@@ -177,8 +190,31 @@ def _parse(parser: argparse.ArgumentParser, args_list: list[str]) -> argparse.Na
 
 
 def _fail(command: str, message: str, code: int) -> int:
-    print(f"minseg-tui{' ' if command else ''}{command}: {message}", file=sys.stderr)
+    if sys.stderr is not None:  # closed too: the exit code is all that can be said
+        print(f"minseg-tui{' ' if command else ''}{command}: {message}", file=sys.stderr)
     return code
+
+
+def memory_limit() -> str:
+    """Which memory limit a MemoryError met, in words: the process's address-space limit
+    (``ulimit -v``, RLIMIT_AS) or data limit (``ulimit -d``, RLIMIT_DATA) when one is set,
+    in MiB, else the machine's memory."""
+    import resource
+
+    for name, what, shell in (
+        ("RLIMIT_AS", "of address space", "ulimit -v"),
+        ("RLIMIT_DATA", "of data", "ulimit -d"),
+    ):
+        which = getattr(resource, name, None)
+        if which is None:
+            continue
+        soft, _hard = resource.getrlimit(which)
+        if soft != resource.RLIM_INFINITY:
+            return (
+                f"this process may use at most {soft / 2**20:.0f} MiB {what} ({shell}, "
+                f"{name}); raise that limit or give a shorter input"
+            )
+    return "the machine has no memory left for this input; give a shorter one"
 
 
 def _drop_stdout(stream: TextIO) -> None:

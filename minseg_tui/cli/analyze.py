@@ -12,9 +12,8 @@ from __future__ import annotations
 import argparse
 import csv
 import math
-from pathlib import Path
 
-from minseg_tui.cli.output import output_file, print_json
+from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log
 from minseg_tui.model.check import CheckResult, check, text
@@ -51,7 +50,7 @@ def _sample_period(meta: dict[str, str]) -> float | None:
 
 def write_predictions(path: str, r: CheckResult) -> None:
     """t,omega,baseline,extended for every row (s, rad/s), full precision."""
-    with Path(path).open("w", encoding="utf-8", newline="") as fh:
+    with open_output(path, "predictions") as fh:
         w = csv.writer(fh, lineterminator="\n")
         w.writerow(["t", "omega", "baseline", "extended"])
         for row in zip(r.t, r.omega, r.baseline_pred, r.extended_pred, strict=True):
@@ -60,7 +59,7 @@ def write_predictions(path: str, r: CheckResult) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Analyse the log; 0 on success (InputError propagates: exit 2 with one line)."""
-    if args.predictions:
+    if args.predictions is not None:
         output_file(args.predictions, {args.log: "the log being analysed"}, "predictions")
     log = read_step_log(args.log)
     ts = _sample_period(dict(log.metadata))
@@ -68,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
     if refused:
         raise InputError(log.source, None, refused)
     result = check(log.t, log.u, log.omega, ts=ts, cpr=log.declared_cpr, omega_over=log.omega_over)
-    if args.predictions:
+    if args.predictions is not None:
         try:
             write_predictions(args.predictions, result)
         except OSError as exc:

@@ -8,6 +8,7 @@ import sys
 import textwrap
 
 from minseg_tui.cli.output import print_json
+from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify
 from minseg_tui.units import NUMBER
@@ -49,9 +50,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Read the files, compute, print. InputError reaches the dispatcher (exit 2)."""
+    if args.step == "":
+        raise InputError("--step", None, "expected a step log file name, got ''")
     readings = read_table(args.table)
-    log = read_step_log(args.step) if args.step else None
-    result = identify(readings, args.R, log, source=args.table)
+    log = read_step_log(args.step) if args.step is not None else None
+    try:
+        result = identify(readings, args.R, log, source=args.table)
+    except (ArithmeticError, ValueError) as exc:  # numpy's LinAlgError is a ValueError
+        raise InputError(
+            args.step or args.table,
+            None,
+            f"expected a step log whose rising steps can be fitted; the fit failed ({exc})",
+        ) from None
     if args.json:
         print_json(result.to_json())
     else:
@@ -148,5 +158,9 @@ def render(result: Identification) -> str:
     if result.observations:
         out += [f"- {f.message}" for f in result.observations]
     else:
-        out.append("- nothing unusual: the rows agree and the step fits the model.")
+        out.append(
+            "- nothing unusual: the rows agree and the step fits the model."
+            if s is not None
+            else "- nothing unusual: the rows agree (no step log, so no step to judge)."
+        )
     return "\n".join(out) + "\n"

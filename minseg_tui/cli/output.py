@@ -8,11 +8,14 @@ written as null, the JSON for "no value".
 
 from __future__ import annotations
 
+import errno
 import json
 import math
 import os
+import stat
 from collections.abc import Mapping
 from pathlib import Path
+from typing import TextIO
 
 from minseg_tui.errors import InputError
 
@@ -41,14 +44,63 @@ def print_json(obj: object, indent: int | None = None) -> None:
     print(json_text(obj, indent))
 
 
+def _not_regular(path: Path) -> str | None:
+    """What ``path`` is when it exists and is not a regular file (a FIFO, a device, a
+    socket), else None."""
+    try:
+        mode = path.stat().st_mode
+    except OSError:
+        return None
+    if stat.S_ISREG(mode):
+        return None
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (a named pipe)"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "not a regular file"
+
+
+def open_output(path: str, what: str) -> TextIO:
+    """``path`` opened for writing text (created or truncated) without ever blocking: a FIFO
+    or a device swapped in after :func:`output_file` looked is refused (InputError)."""
+    try:
+        fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_NONBLOCK | os.O_CLOEXEC, 0o644)
+    except OSError as exc:
+        if exc.errno == errno.ENXIO:  # a FIFO nobody reads
+            raise InputError(
+                path, None, f"expected a regular file for the {what}; this is a FIFO, not written"
+            ) from None
+        raise
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            raise InputError(
+                path, None, f"expected a regular file for the {what}; this is not one, not written"
+            )
+        os.set_blocking(fd, True)
+        os.ftruncate(fd, 0)
+        return os.fdopen(fd, "w", encoding="utf-8", newline="")
+    except BaseException:
+        os.close(fd)
+        raise
+
+
 def output_file(path: str, inputs: Mapping[str, str], what: str) -> Path:
-    """``path`` checked as a file to write ``what`` into (InputError otherwise): not a
-    directory, in a folder that exists, and none of ``inputs`` (path -> what it is, for the
+    """``path`` checked as a file to write ``what`` into (InputError otherwise): a name, not a
+    directory nor a FIFO, device or socket (writing would block or go nowhere), in a folder that exists, and none of ``inputs`` (path -> what it is, for the
     message), whatever the name: the same path spelled differently, a symlink or a hard
     link to it."""
+    if not path:
+        raise InputError(f"--{what}", None, f"expected a file name for the {what}, got ''")
     out = Path(path)
     if out.is_dir():
         raise InputError(path, None, f"expected a file name for the {what}, got a directory")
+    kind = _not_regular(out)
+    if kind:
+        raise InputError(
+            path, None, f"expected a regular file for the {what}; this is {kind}, not written"
+        )
     for name, role in inputs.items():
         same = out.resolve() == Path(name).resolve()
         if not same and out.exists():

@@ -9,6 +9,7 @@ symlink removed) with exit code 0.
 from __future__ import annotations
 
 import argparse
+import os
 import signal
 import sys
 from types import FrameType
@@ -38,6 +39,34 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--link", metavar="PATH", help="also make a symlink PATH to the device")
 
 
+def _ours(path: str) -> bool:
+    """``path`` is a link a sim makes (a symlink to a pseudo-terminal, maybe one left by a sim
+    that was killed), which may be replaced."""
+    if not os.path.islink(path):
+        return False
+    return os.readlink(path).startswith(("/dev/pts/", "/dev/tty"))
+
+
+def check_link_path(path: str) -> None:
+    """InputError unless ``path`` (and the ``.new`` name the link is made under) is free or
+    a link of ours: the sim never replaces a file, a folder or another symlink."""
+    for p in (path, f"{path}.new"):
+        if os.path.lexists(p) and not _ours(p):
+            kind = (
+                "a folder"
+                if os.path.isdir(p) and not os.path.islink(p)
+                else "a symlink"
+                if os.path.islink(p)
+                else "a file"
+            )
+            raise InputError(
+                p,
+                None,
+                f"expected a new path for the device link; this is {kind} that is not a "
+                "link to a pseudo-terminal, and it is left as it is",
+            )
+
+
 class _Terminated(Exception):
     """SIGTERM arrived (`kill PID`, a service manager stopping the sim)."""
 
@@ -57,6 +86,10 @@ def run(args: argparse.Namespace) -> int:
         settings = settings_from(values)
     except ValueError as exc:
         raise InputError("", None, str(exc)) from None
+    if args.link is not None:
+        if not args.link:
+            raise InputError("--link", None, "expected a path for the device link, got ''")
+        check_link_path(args.link)
     try:
         server = PtyServer(VirtualBoard(settings), link_path=args.link)
     except OSError as exc:

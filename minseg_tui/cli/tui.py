@@ -25,7 +25,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Start the app; returns 0 when the user quits."""
+    """Start the app; returns 0 when the user quits, 128 + n when signal n (SIGTERM,
+    SIGHUP) ended it, what was typed stored first."""
     from minseg_tui.report.write import write_report
     from minseg_tui.ui.app import make_app
     from minseg_tui.ui.config import UiConfig
@@ -37,4 +38,4 @@ def run(args: argparse.Namespace) -> int:
     device = "sim" if args.sim else (args.port or "auto")
     app = make_app(UiConfig(device=device, sessions=sessions), lambda s: write_report(s).paths)
     app.run()
-    return 0
+    return app.return_code or 0  # 128 + n after signal n (SIGTERM: 143), as shells expect

@@ -7,9 +7,11 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   once as a :class:`~minseg_tui.device.samples.SampleBatch` (numpy arrays). The buffer is
   bounded (``capacity``); if nobody takes samples for that long the oldest go and
   ``stats.overflow`` counts them.
-- A corrupt line (bad checksum or format, or a sample whose seq or time no real gap
-  explains: :mod:`minseg_tui.device.timebase`) is counted in ``stats.corrupt`` and
-  dropped; a gap in ``seq`` is counted in ``stats.dropped``. Neither ever becomes a sample.
+- A corrupt line (bad checksum or format, or a sample whose seq, time or count no real
+  gap explains: :mod:`minseg_tui.device.timebase`) is counted in ``stats.corrupt`` and
+  dropped; so is an old sample line sent again (a USB hub or bridge replaying a block:
+  seq goes back with no restart), counted in ``stats.replayed`` too; a gap in ``seq`` is
+  counted in ``stats.dropped``. None of them ever becomes a sample.
 - ``seq`` and ``t_us`` are unwrapped (uint32 on the wire, int64 here). Each connection
   (the board resets when the port opens) is an *epoch*: across epochs seq continues at
   +1 and t_us continues by the host's estimate of the gap (the one place the host clock
@@ -23,7 +25,9 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   supply and zero mode and says ``connected``. The motor voltage is never restored (the
   safe default is motor off): :attr:`Link.u_req` becomes 0 and, if the motor was on, a
   ``motor`` event says so in one line, for the status line. A ``$BOOT`` mid-stream (the
-  board restarted by itself) does the same.
+  board restarted by itself) does the same once the samples after it start a new time
+  base (an old ``$BOOT`` sent again is counted as replayed, and changes nothing); so does a
+  restart whose ``$BOOT`` was lost.
 - One program per board (:mod:`minseg_tui.device.port`): a second minseg-tui gets
   "in use by minseg-tui (pid N)", a plain serial monitor cannot open the port.
 - Keep-alive: a PING every ``keepalive_s`` (0.25 s), so the board's 1 s watchdog stays
@@ -91,12 +95,15 @@ class LinkEvent:
 
 @dataclass
 class LinkStats:
-    """Counters since open: samples kept, dropped (seq gaps), corrupt lines, overflow
-    (samples pushed out of a full buffer), reconnects, lines received."""
+    """Counters since open: samples kept, dropped (seq gaps), corrupt lines (every line
+    refused: bad checksum or format, impossible samples, old lines sent again), replayed
+    (of those, the old sample lines sent again), overflow (samples pushed out of a full
+    buffer), reconnects, lines received."""
 
     samples: int = 0
     dropped: int = 0
     corrupt: int = 0
+    replayed: int = 0
     overflow: int = 0
     reconnects: int = 0
     lines: int = 0
@@ -163,6 +170,8 @@ class Link:
         self._thread: threading.Thread | None = None
         self._clock: Callable[[], float] = time.monotonic
         self._timeline = Timeline()
+        self._epoch_said = -1  # the last epoch the link has said (connected, boot)
+        self._boot_fw: str | None = None  # the fw of a $BOOT not yet confirmed
         self._bad_lines = 0  # lines that failed the checksum or the format
         self._last_rx = 0.0
         self._last_tx = 0.0
@@ -347,6 +356,8 @@ class Link:
             self._u_req, self._step_low = None, int(ok.values[0]) / 1000.0
         elif ok.command == "STOP":
             self._u_req = 0.0
+        elif ok.command == "Z":
+            self._timeline.count_zeroed()
         elif ok.command == "DIR" and len(ok.values) == 2 and self.ident is not None:
             self.ident = dataclasses.replace(
                 self.ident, enc_dir=ok.values[0], motor_dir=ok.values[1]
@@ -538,10 +549,10 @@ class Link:
         elif isinstance(msg, P.EvStepDone):
             self._u_req = self._step_low
             self._emit("stepdone", "step sequence done")
-        elif isinstance(msg, P.Boot):
-            self._new_epoch()
-            self._emit("boot", f"{self.port}: the board restarted ({msg.fw})")
-            self._motor_off(f"{self.port}: the board restarted")
+        elif isinstance(msg, P.Boot):  # said once the samples show it (timebase.boot)
+            self._boot_fw = msg.fw
+            self._timeline.boot()
+            self._said_restart()
 
     def _on_reply(self, msg: P.Message) -> None:
         if isinstance(msg, P.Ok):
@@ -567,13 +578,35 @@ class Link:
             target.done.set()
 
     def _new_epoch(self) -> None:
+        """A new connection: a new epoch, said by the caller (connected)."""
+        if self.ident is not None and self.ident.cpr > 0:
+            self._timeline.cpr = self.ident.cpr
         self._timeline.new_epoch()
+        self._epoch_said = self._timeline.epoch
+        self._boot_fw = None
+
+    def _said_restart(self) -> None:
+        """Say a restart the timeline has taken (a $BOOT confirmed, or one whose $BOOT was
+        lost): the motor is off."""
+        tl = self._timeline
+        if tl.epoch == self._epoch_said:
+            return
+        self._epoch_said = tl.epoch
+        fw, self._boot_fw = self._boot_fw, None
+        what = f"({fw})" if fw is not None else "(its $BOOT line was lost)"
+        self._emit("boot", f"{self.port}: the board restarted {what}")
+        self._motor_off(f"{self.port}: the board restarted")
 
     def _on_sample(self, s: P.SampleLine) -> None:
         tl = self._timeline
         rows = tl.place(s, self._clock(), time.monotonic())
+        self._said_restart()
+        if not tl.boot_pending:
+            self._boot_fw = None
         self.stats.dropped = tl.dropped
-        self.stats.corrupt = self._bad_lines + tl.refused + tl.repeated
+        replayed = tl.replayed + tl.repeated + tl.false_boots
+        self.stats.replayed = replayed
+        self.stats.corrupt = self._bad_lines + tl.refused + replayed
         if not rows:
             return
         with self._lock:

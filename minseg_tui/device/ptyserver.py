@@ -104,8 +104,9 @@ class PtyServer:
                 os.close(self.master)
                 self.master = None
         if self.link_path:
-            with contextlib.suppress(FileNotFoundError):
-                os.unlink(self.link_path)
+            with contextlib.suppress(OSError):
+                if os.readlink(self.link_path) == self.slave_name:  # still ours: remove it
+                    os.unlink(self.link_path)
 
     def serve_forever(self) -> None:
         """Run the board until :meth:`stop` (or KeyboardInterrupt in the caller)."""

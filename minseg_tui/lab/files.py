@@ -181,6 +181,13 @@ def read_table(path: str | Path) -> list[Reading]:
         problem = r.problem()
         if problem:
             raise InputError(f.source, number, problem)
+        if not r.u_req > 0:  # the other values are > 0: a wheel turning forwards
+            raise InputError(
+                f.source,
+                number,
+                f"expected u_req > 0 V (the row's omega_ss, u_ss and i_ss say the wheel turns "
+                f"forwards, as a positive request drives it), got {r.u_req:g}",
+            )
         readings.append(r)
     return readings
 

@@ -145,10 +145,13 @@ def compute(
         return Results(None, run.name if run and log else None, tuple(problems))
     try:
         ident = identify(readings, R, log, source="table", u_ss_table=u_ss_table)
-    except InputError as exc:
+    except (InputError, ArithmeticError, ValueError) as exc:
+        # ArithmeticError, ValueError (numpy's LinAlgError): a log the fit cannot take; the
+        # table's results stand, and the step says why it has none (never a traceback)
+        why = str(exc) if isinstance(exc, InputError) else f"its steps cannot be fitted ({exc})"
         if log is None:
-            return Results(None, None, (*problems, str(exc)))
-        problems.append(f"run {run.name if run else ''} gives no step result: {exc}")
+            return Results(None, None, (*problems, why))
+        problems.append(f"run {run.name if run else ''} gives no step result: {why}")
         try:
             ident = identify(readings, R, None, source="table")
         except InputError as exc2:

@@ -14,9 +14,12 @@ from __future__ import annotations
 
 import math
 import re
+import sys
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
+
+from minseg_tui.lab.steps import FIELDS, STEP_INDEX, STEPS
 
 SCHEMA: int = 1
 """Version of session.json's layout; a file with another version is refused."""
@@ -26,8 +29,21 @@ KIND: str = "minseg-tui session"
 
 
 def _show(value: object) -> str:
+    if isinstance(value, int) and value.bit_length() > 64:
+        return f"a whole number of {_digits(value)} digits"
     text = repr(value)
     return text if len(text) <= 40 else text[:37] + "..."
+
+
+def _digits(value: int) -> int:
+    """How many decimal digits ``value`` has, without writing it out (Python refuses to
+    write out more than 4300)."""
+    return max(1, int(abs(value).bit_length() * math.log10(2)) + 1)
+
+
+COUNT_MAX = 2**53
+"""The largest whole number a count in a session file may hold (beyond it a float can no
+longer hold every count: no run, sample or capture comes near)."""
 
 
 class Node:
@@ -73,7 +89,12 @@ class Number(Node):
             what = "a whole number" if self.integer else "a number"
             return f"{where}: expected {what}, got {_show(value)}"
         assert isinstance(value, int | float)
-        if not math.isfinite(value):
+        if isinstance(value, int):
+            # a long whole number is no float: math.isfinite would raise OverflowError
+            top = COUNT_MAX if self.integer else sys.float_info.max
+            if abs(value) > top:
+                return f"{where}: expected a number below {top:.4g}, got {_show(value)}"
+        elif not math.isfinite(value):
             return f"{where}: expected a finite number, got {_show(value)}"
         if self.low is not None and value < self.low:
             return f"{where}: expected at least {self.low:g}, got {value!r}"
@@ -157,13 +178,61 @@ class MapOf(Node):
         if not isinstance(value, dict):
             return f"{where}: expected an object, got {_show(value)}"
         for k, v in value.items():
-            why = self.item.check(v, f"{where}.{k}" if where else str(k))
+            why = self.check_item(k, v, f"{where}.{k}" if where else str(k))
             if why:
                 return why
         return None
 
+    def check_item(self, key: str, value: object, where: str) -> str | None:
+        """Why the value under ``key`` breaks the schema, or None."""
+        return self.item.check(value, where)
+
     def default(self) -> object:
         return {}
+
+
+@dataclass(frozen=True)
+class EntryMap(MapOf):
+    """The entries: each an :data:`ENTRY` whose value is of its field's kind (a number
+    for a quantity or a formula, option indices for a choice, none for text). A key of no
+    field here (a newer program's) is checked as an entry only."""
+
+    def check_item(self, key: str, value: object, where: str) -> str | None:
+        why = self.item.check(value, where)
+        if why or not isinstance(value, dict) or value.get("value") is None:
+            return why
+        fld = FIELDS.get(key)
+        if fld is None:
+            return None
+        v, at = value["value"], f"{where}.value"
+        if fld.kind == "text":
+            return f"{at}: expected no value (a text field), got {_show(v)}"
+        if fld.kind == "choice":
+            if not isinstance(v, list) or not v:
+                return f"{at}: expected the chosen options (a list), got {_show(v)}"
+            if any(k >= len(fld.options) for k in v):
+                return f"{at}: expected options below {len(fld.options)}, got {_show(v)}"
+            if len(v) > 1 and not fld.multiple:
+                return f"{at}: expected one option (one answer), got {_show(v)}"
+            return None
+        if not isinstance(v, int | float) or isinstance(v, bool):
+            return f"{at}: expected a number (a {fld.kind} field), got {_show(v)}"
+        return None
+
+
+@dataclass(frozen=True)
+class StepName(Node):
+    """The id of one of the lab's steps (:data:`minseg_tui.lab.steps.STEPS`)."""
+
+    def check(self, value: object, where: str) -> str | None:
+        if not isinstance(value, str):
+            return f"{where}: expected text, got {_show(value)}"
+        if value not in STEP_INDEX:
+            return f"{where}: names an unknown step {_show(value)}"
+        return None
+
+    def default(self) -> object:
+        return STEPS[0].id
 
 
 @dataclass(frozen=True)
@@ -175,7 +244,15 @@ class OneOf(Node):
     def check(self, value: object, where: str) -> str | None:
         if value is None and None in self.options:
             return None
-        whys = [n.check(value, where) for n in self.options if n is not None]
+        nodes = [n for n in self.options if n is not None]
+        whys = [n.check(value, where) for n in nodes]
+        if not all(whys):
+            return None
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            # a number that breaks the Number option: say why (too long, not finite)
+            for n, why in zip(nodes, whys, strict=True):
+                if isinstance(n, Number):
+                    return why
         if all(whys):
             return whys[0] if len(whys) == 1 else f"{where}: unexpected {_show(value)}"
         return None
@@ -287,8 +364,8 @@ SESSION = Record(
         "date": Text(),
         "created": Text(),
         "modified": Text(),
-        "current_step": Text(),
-        "entries": MapOf(ENTRY),
+        "current_step": StepName(),
+        "entries": EntryMap(ENTRY),
         "captures": MapOf(CAPTURE),
         "runs": ListOf(RUN),
     },
@@ -321,7 +398,7 @@ def salvage(data: dict[str, Any]) -> tuple[dict[str, Any], list[str]]:
         if isinstance(node, MapOf) and isinstance(value, dict):
             keep = {}
             for k, v in value.items():
-                why = node.item.check(v, f"{name}.{k}")
+                why = node.check_item(k, v, f"{name}.{k}")
                 if why:
                     lost.append(why)
                 else:

@@ -81,7 +81,6 @@ from minseg_tui.lab.store import (
     RUNS_DIR,
     SESSION_FILE,
     SaveProblem,
-    SessionDamaged,
     SessionNotWritable,
     atomic_write_bytes,
     atomic_write_text,
@@ -229,12 +228,6 @@ class Session:
         folder = Path(folder)
         if readonly:
             data, damaged = salvage_session_file(folder / SESSION_FILE)
-            if data["current_step"] not in STEP_INDEX:
-                damaged = damaged or (
-                    f"{folder / SESSION_FILE}: names an unknown step "
-                    f"{data['current_step']!r}; shown from the first step"
-                )
-                data["current_step"] = STEPS[0].id
             s = cls(folder, data, lock=None, clock=clock, readonly=True)
             s.damaged = damaged
             return s
@@ -251,12 +244,6 @@ class Session:
             ) from None
         try:
             data = read_session_file(folder / SESSION_FILE)
-            if data["current_step"] not in STEP_INDEX:
-                raise SessionDamaged(
-                    str(folder / SESSION_FILE),
-                    None,
-                    f"names an unknown step {data['current_step']!r}; the file is left untouched",
-                )
             s = cls(folder, data, lock=lock, clock=clock, readonly=False)
             s.recovery_notes += [
                 f"removed {name}, left by a program that was killed"

@@ -469,7 +469,8 @@ def _omega_ss(level: float) -> Field:
                 0.5,
                 15.0,
                 low="the wheel hardly turns (or turns backwards): F10 runs the board check, which says what is wrong",
-                high="faster than this motor goes (about 7 rad/s at 4.5 V): check the counts-to-radians scaling",
+                high="faster than this motor goes (about 7 rad/s at 4.5 V): typed in rpm? Write 'rpm' after "
+                "the number. Else check the counts-to-radians scaling",
             ),
         ),
     )

@@ -218,6 +218,10 @@ def _load(path: Path) -> object:
         raise SessionDamaged(
             str(path), None, damaged_message(path, "is nested too deeply to be a session")
         ) from None
+    except ValueError as exc:  # a whole number longer than Python reads (4300 digits)
+        raise SessionDamaged(
+            str(path), None, damaged_message(path, f"holds a number too long to read ({exc})")
+        ) from None
 
 
 def _identity_problem(data: object) -> str | None:
@@ -317,11 +321,17 @@ def new_session_folder(root: Path, base: str) -> tuple[Path, FileLock]:
     try:
         root.mkdir(parents=True, exist_ok=True)
         sid, k = base, 1
-        while exists(root / sid):
-            k += 1
-            sid = f"{base}-{k}"
-        folder = root / sid
-        (folder / RUNS_DIR).mkdir(parents=True)
+        while True:
+            folder = root / sid
+            try:
+                # mkdir is the claim: a name another program took between looking and making
+                # (a race) is passed over for the next free one, never an error
+                folder.mkdir()
+                break
+            except FileExistsError:
+                k += 1
+                sid = f"{base}-{k}"
+        (folder / RUNS_DIR).mkdir()
     except OSError as exc:
         raise SessionNotWritable(
             str(root),
@@ -402,6 +412,11 @@ def _info(folder: Path) -> SessionInfo | None:
     except InputError as exc:
         return SessionInfo(
             folder.name, folder, (), "", "", _mtime(path), damaged=str(exc), locked_by=locked_by
+        )
+    except Exception as exc:
+        why = damaged_message(path, f"cannot be read ({type(exc).__name__}: {exc})")
+        return SessionInfo(
+            folder.name, folder, (), "", "", _mtime(path), damaged=why, locked_by=locked_by
         )
     return SessionInfo(
         id=data["id"],

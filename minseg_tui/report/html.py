@@ -28,6 +28,11 @@ th { background: #f2f2f2; }
 figure { margin: 1em 0; } figcaption { font-style: italic; color: #555; }
 figure svg { display: block; width: 100%; height: auto; }
 .byline { color: #555; }
+@media print {
+  body { max-width: none; margin: 0; padding: 0; font-size: 9pt; }
+  .table { overflow: visible; } th, td { padding: 0.1em 0.3em; }
+  figure, tr { break-inside: avoid; } h2 { break-after: avoid; }
+}
 """
 
 

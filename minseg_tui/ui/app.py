@@ -15,8 +15,10 @@ loop never waits on the board.
 
 from __future__ import annotations
 
+import asyncio
 import datetime as _dt
 import queue
+import signal
 import threading
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -30,6 +32,7 @@ from textual.app import App, SystemCommand
 from textual.await_complete import AwaitComplete
 from textual.binding import Binding
 from textual.dom import DOMNode
+from textual.notifications import SeverityLevel
 from textual.reactive import reactive
 from textual.screen import Screen
 from textual.signal import Signal
@@ -67,6 +70,7 @@ from minseg_tui.ui.screens.boardcheck import (
     RevolutionScreen,
     WheelQuestionScreen,
 )
+from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.quit import QuitScreen, SaveElsewhereScreen
@@ -153,6 +157,11 @@ METER_PERIOD = 0.25
 SAVE_RETRY = 3.0
 """While the session cannot be saved, it is tried again this often, s."""
 
+TERMINATING: tuple[int, ...] = tuple(
+    sig for sig in (getattr(signal, "SIGTERM", None), getattr(signal, "SIGHUP", None)) if sig
+)
+"""The signals that end the app as Ctrl+Q does (what stands in the entries stored first)."""
+
 REVOLUTION_TIMEOUT = 300.0
 """Longest the hand check counts without an Enter, s."""
 
@@ -232,6 +241,7 @@ class LabApp(App[None]):
         """The wait for the wheel to stand before a run (None: no run waits)."""
         self._pending_plan: str | None = None
         self._stop = threading.Event()
+        self._signals: list[int] = []  # the terminating signals the app answers
         self._tap: queue.Queue[SampleBatch] | None = None
         """While the board check runs: the stream's samples, for the check (the stream
         worker is the one reader of the device)."""
@@ -239,6 +249,20 @@ class LabApp(App[None]):
         self._step_id = ""
         if not config.animations:
             self.animation_level = "none"
+
+    def notify(
+        self,
+        message: str,
+        *,
+        title: str = "",
+        severity: SeverityLevel = "information",
+        timeout: float | None = None,
+        markup: bool = True,
+    ) -> None:
+        """Show a notification as plain text, whoever asks (a widget's ``notify`` asks with
+        markup on): the messages hold what was typed, refused text and file names, which
+        are shown as they are, never read as markup ('Cy [/]' was a MarkupError)."""
+        super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
 
     # -- start-up ---------------------------------------------------------------------
     def on_mount(self) -> None:
@@ -253,6 +277,33 @@ class LabApp(App[None]):
         self.push_screen(start.data_bind(LabApp.device, LabApp.link, LabApp.motor))
         self._connect(self.config.device)
         self.set_interval(SAVE_RETRY, self.retry_save)
+        self._catch_signals()
+
+    def _catch_signals(self) -> None:
+        """SIGTERM and SIGHUP (a shutdown, a closed terminal window, ``kill``) end the app
+        the way Ctrl+Q does: :meth:`terminated`. Where the loop cannot take them (not the
+        main thread, another platform) they keep their default."""
+        loop = asyncio.get_running_loop()
+        for signum in TERMINATING:
+            try:
+                loop.add_signal_handler(signum, self.terminated, signum)
+            except (NotImplementedError, RuntimeError, ValueError):
+                continue
+            self._signals.append(signum)
+
+    def terminated(self, signum: int) -> None:
+        """A terminating signal: store what stands in the entries, save the session (what
+        cannot be saved is lost with the program, as with 'quit anyway'), then exit as Ctrl+Q
+        does, with the terminal restored; the exit status is 128 + the signal's number, as
+        the shell expects of a program that a signal ended (143 for SIGTERM)."""
+        screen = self._lab_screen()
+        if screen is not None:
+            screen.store_typed()
+        if self.session is not None:
+            with self.session as s:
+                if not s.readonly and s.unsaved:
+                    s.save()
+        self.exit(return_code=128 + signum)
 
     @work(thread=True, exclusive=True, group="connect", name="open device")
     def _connect(self, spec: str) -> None:
@@ -305,6 +356,11 @@ class LabApp(App[None]):
         elif isinstance(wanted, StartScreen.Resume):
             await self._resume(wanted)
 
+    def action_class_view(self) -> None:
+        """F12 on the start screen: every group of the sessions folder, one row each."""
+        if isinstance(self.screen, StartScreen):
+            self.push_screen(ClassScreen(Path(self.config.sessions)))
+
     @on(StartScreen.NewSession)
     async def _new(self, event: StartScreen.NewSession) -> None:
         names = [m.strip() for m in event.members.split(",") if m.strip()]
@@ -344,9 +400,9 @@ class LabApp(App[None]):
         if session.readonly:
             self.notify(
                 "opened read-only: "
-                + (session.damaged or "the file is damaged")
+                + (session.damaged or "to look, not to change")
                 + "; nothing typed here is saved (start a new session to go on)",
-                title="damaged session",
+                title="damaged session" if session.damaged else "read-only session",
                 severity="warning",
                 timeout=20,
             )
@@ -761,10 +817,14 @@ class LabApp(App[None]):
         with self.session as s:
             if s.readonly or s.save_problem is None:
                 return
+            runs = len(s.runs)
             saved = s.save()
+            kept = len(s.runs) != runs  # a run that finished while nothing could be written
         self._saved_or_not()
         if saved:
             self.notify("saved: everything is on disk again", title="session")
+        if kept:  # Task 10 and the results show it now, not once the group pages away
+            self.lab_changed.publish(None)
 
     def save_elsewhere(self, folder: str) -> str:
         """Save the session under ``folder`` and go on there; the one line to show."""
@@ -1050,6 +1110,10 @@ class LabApp(App[None]):
 
     def on_unmount(self) -> None:
         self._stop.set()
+        loop = asyncio.get_running_loop()
+        for signum in self._signals:
+            loop.remove_signal_handler(signum)
+        self._signals.clear()
         if self.recording is not None:
             self.finish_run("app closed")
         if self._device is not None:

@@ -303,3 +303,22 @@ def test_nxt_small_rise_miss_is_not_called_scattered(tmp_path, capsys):
     evidence = d["finding"]["evidence"]
     assert "too scattered" not in evidence
     assert "but no cause from the list is clear enough to name; the best extension" in evidence
+
+
+@pytest.mark.parametrize("how", ["noise", "rounded"])
+def test_a_late_step_is_never_said_to_act_further_than_a_sample(tmp_path, capsys, how):
+    """A u column with noise on it has an 'edge' at every row; the linear estimate of when
+    such an edge acts ran to seconds ('acts about +2492 ms' at 25 ms; the issue saw
+    -28161809 ms). A step between samples acts within one period (issue 18, item 12)."""
+    log = make_log("none", param=0, seed=3)
+    rng = np.random.default_rng(1)
+    u = log.u + rng.normal(0.0, 1e-3 if how == "noise" else 0.01, log.u.size)
+    if how == "rounded":
+        u = np.round(u, 2)
+    path = tmp_path / "log.csv"
+    write_step_log(path, StepLog(t=log.t, u=u, omega=log.omega, extra={"count": log.count}))
+    assert main(["analyze", str(path), "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    ts_ms = 1e3 * float(np.median(np.diff(log.t)))
+    late = [a for a in result["anomalies"] if a["kind"] == "late_step"]
+    assert all(abs(a["size"]) <= ts_ms for a in late), late

@@ -25,6 +25,7 @@ from minseg_tui.device.boardcheck import (
 from minseg_tui.device.factory import open_device
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.virtual import forget_board
+from tests.device.doubles import RealBoardView
 
 _names = itertools.count()
 
@@ -44,20 +45,6 @@ def board():
     for link, name in made:
         link.close()
         forget_board(name)
-
-
-class RealBoardView:
-    """A link seen as a real board is: no multimeter (the firmware answers METER with
-    $ERR,UNKNOWN, which Link.meter turns into None). Everything else is the link's."""
-
-    def __init__(self, link) -> None:
-        self._link = link
-
-    def __getattr__(self, name):
-        return getattr(self._link, name)
-
-    def meter(self):
-        return None
 
 
 def test_a_good_board_counts_up(board):

@@ -74,3 +74,48 @@ def test_by_hand_a_period_change_is_learnt_and_a_repeat_is_not_kept():
     assert got[0] == [] and got[1] == [] and [r[0] for r in got[2]] == [5, 6, 7]
     assert tl.refused == 0 and tl.dropped == 0 and tl.period_us == 25000
     assert [r[0] for r in tl.place(SampleLine(8, 41000 + 25000 * 4, 0, 0), 1.2, 1.2)] == [8]
+
+
+def test_a_restart_that_repeats_the_last_one_line_for_line_is_kept_once_seen_live():
+    """A board whose $BOOT was lost and whose first lines are copies of the last epoch's (same
+    seq, same micros): held as a replay, until it has run live for RESTART_S; then a new
+    epoch, nothing lost. The same lines sent in a burst stay a replay."""
+    start = [SampleLine(k, 1_500_000 + 10000 * k, 0, 0) for k in range(400)]
+    tl = Timeline()
+    tl.new_epoch()
+    kept = []
+    for k, s in enumerate(start):
+        kept += tl.place(s, 1.5 + 0.01 * k, 1.5 + 0.01 * k)
+    assert len(kept) == 400
+    # a burst of the first 50 lines again (a replay): nothing kept, nothing started
+    for s in start[:50]:
+        assert tl.place(s, 5.6, 5.6) == []
+    assert tl.epoch == 0
+    kept += tl.place(SampleLine(400, 1_500_000 + 10000 * 400, 0, 0), 5.61, 5.61)
+    assert len(kept) == 401 and tl.replayed == 50
+    # now the board restarts, line for line as before, live
+    again = []
+    for k, s in enumerate(start):
+        again += tl.place(s, 8.0 + 0.01 * k, 8.0 + 0.01 * k)
+    assert tl.epoch == 1 and len(again) == 400
+    assert [r[2] for r in again] == [0] * len(again) and tl.refused == 0
+    assert all(r[4] == 1 for r in again)
+
+
+def test_old_lines_of_an_earlier_epoch_after_a_restart_are_a_replay():
+    tl = Timeline()
+    tl.new_epoch()
+    first = [SampleLine(k, 1_500_000 + 10000 * k, 3 * k, 0) for k in range(100)]
+    for k, s in enumerate(first):
+        tl.place(s, 1.5 + 0.01 * k, 1.5 + 0.01 * k)
+    tl.new_epoch()  # a $BOOT
+    second = [SampleLine(k, 1_700_000 + 10000 * k, 0, 0) for k in range(100)]
+    out = []
+    for k, s in enumerate(second[:50]):
+        out += tl.place(s, 4.0 + 0.01 * k, 4.0 + 0.01 * k)
+    for s in first[10:40]:  # the first epoch's lines again: they start again, but are copies
+        assert tl.place(s, 4.5, 4.5) == []
+    for k, s in enumerate(second[50:]):
+        out += tl.place(s, 4.5 + 0.01 * k, 4.5 + 0.01 * k)
+    assert [r[0] - out[0][0] for r in out] == list(range(100)) and tl.epoch == 1
+    assert tl.replayed + tl.refused == 30 and tl.dropped == 0

@@ -39,6 +39,9 @@ def _set(data, path, value):
     node[last] = value
 
 
+_CHOICE_AS_NUMBER = {"text": "b", "ok": True, "value": 1.0}
+_CHOICE_BEYOND = {"text": "b", "ok": True, "value": [1, 40]}
+
 WRONG = {
     "history is a number": (("entries", "R", "history"), 5, "entries.R.history"),
     "refused holds a number": (("entries", "R", "refused"), [1], "entries.R.refused"),
@@ -54,6 +57,15 @@ WRONG = {
     "members is text": (("members",), "Ada", "members"),
     "selected_run is a number": (("selected_run",), 5, "selected_run"),
     "a value is NaN": (("entries", "R", "value"), float("nan"), "entries.R.value"),
+    # issue 18: a long whole number was an OverflowError that kept the TUI from starting
+    "a value of 401 digits": (("entries", "R", "value"), 10**400, "entries.R.value"),
+    "a capture of 401 digits": (("captures", "omega_ss@2.5", "omega_ss"), -(10**400), "captures"),
+    "a run's samples beyond any count": (("runs", 0, "samples"), 2**64, "runs[0].samples"),
+    # one verdict: what the listing calls sound, report and the TUI read as sound
+    "a quantity's value is a list": (("entries", "R", "value"), [1, 2], "entries.R.value"),
+    "a choice's value is a number": (("entries", "summary.1"), _CHOICE_AS_NUMBER, "summary.1"),
+    "a choice beyond its options": (("entries", "summary.1"), _CHOICE_BEYOND, "summary.1"),
+    "an unknown step": (("current_step",), "task99", "current_step"),
 }
 
 
@@ -92,6 +104,29 @@ def test_a_wrong_type_anywhere_is_damage(tmp_path, capsys, case):
         ro.table()
         ro.model_check()
     assert path.read_bytes() == content  # never written over
+
+
+def test_a_number_too_long_to_read_is_damage_and_hides_nothing(tmp_path, capsys):
+    """5000 digits: Python refuses to read it (ValueError), which stopped the TUI and report."""
+    root = tmp_path / "sessions"
+    folder = _good_session(root)
+    other = Session.create(root, ["Bo"], date="2026-11-23")
+    other.close()
+    path = folder / "session.json"
+    path.write_text(
+        path.read_text(encoding="utf-8").replace(
+            '"schema": 1,', '"schema": 1, "x": ' + "9" * 5000 + ","
+        ),
+        encoding="utf-8",
+    )
+    with pytest.raises(SessionDamaged, match="number too long"):
+        Session.open(folder)
+    listed = {s.path: s for s in list_sessions(root)}
+    assert "number too long" in listed[folder].damaged
+    assert listed[other.folder].damaged is None
+    assert main(["report", str(folder)]) == 2
+    err = capsys.readouterr().err
+    assert "number too long" in err and err.count("\n") == 1
 
 
 def test_nested_brackets_do_not_hide_the_other_sessions(tmp_path):

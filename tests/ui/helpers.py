@@ -284,3 +284,16 @@ def record_step_run(session: Session, seed: int = 5) -> str:
     info = session.finish_run(rec)
     assert info is not None
     return info.name
+
+
+def heard_notifications(app) -> list[str]:
+    """Every notification the app shows from now on (its text), in a list."""
+    said: list[str] = []
+    notify = app.notify
+
+    def keep(message, *args, **kwargs):
+        said.append(str(message))
+        return notify(message, *args, **kwargs)
+
+    app.notify = keep
+    return said

@@ -16,21 +16,9 @@ from minseg_tui.ui.screens.boardcheck import (
     WheelQuestionScreen,
 )
 from minseg_tui.ui.widgets.prose import Prose
+from tests.device.doubles import RealBoardView
 from tests.ui.conftest import DATE, board_url, real_app
-from tests.ui.helpers import Heard, goto, settle, start
-
-
-def _heard(app) -> list[str]:
-    """Every notification the app shows from now on (its text), in a list."""
-    said: list[str] = []
-    notify = app.notify
-
-    def keep(message, *args, **kwargs):
-        said.append(str(message))
-        return notify(message, *args, **kwargs)
-
-    app.notify = keep
-    return said
+from tests.ui.helpers import Heard, goto, heard_notifications, settle, start
 
 
 def _check_text(app) -> str:
@@ -108,7 +96,7 @@ async def test_a_voltage_with_no_counts_offers_the_check(tmp_path):
     instead of the old hint about the cable and the jumper."""
     app = real_app(tmp_path / "sessions", board_url(seed=2) + "&fault=encoder-off")
     heard = Heard()
-    said = _heard(app)
+    said = heard_notifications(app)
     async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
         await _in_lab(pilot, "task4")
         await pilot.press("f3")
@@ -121,7 +109,7 @@ async def test_a_voltage_with_no_counts_offers_the_check(tmp_path):
 async def test_task5_no_counts_hint_asks_about_the_meter(tmp_path):
     app = real_app(tmp_path / "sessions", board_url(seed=2) + "&fault=motor-off")
     heard = Heard()
-    said = _heard(app)
+    said = heard_notifications(app)
     async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
         await _in_lab(pilot, "task5")
         await pilot.press("f3")
@@ -131,23 +119,6 @@ async def test_task5_no_counts_hint_asks_about_the_meter(tmp_path):
         await pilot.press("f2")
 
 
-class RealBoardView:
-    """The link to a virtual board seen as a real board is: no multimeter (the firmware
-    answers METER with $ERR,UNKNOWN, which Link.meter turns into None) and no virtual board
-    behind it. Everything else is the link's."""
-
-    board = None
-
-    def __init__(self, link) -> None:
-        self._link = link
-
-    def __getattr__(self, name):
-        return getattr(self._link, name)
-
-    def meter(self):
-        return None
-
-
 async def test_on_a_board_without_a_meter_the_group_is_asked(tmp_path):
     url = board_url(seed=2) + "&fault=motor-off"
     cfg = UiConfig(
@@ -155,7 +126,7 @@ async def test_on_a_board_without_a_meter_the_group_is_asked(tmp_path):
     )
     app = LabApp(cfg, lambda spec: RealBoardView(open_device(spec)))
     heard = Heard()
-    said = _heard(app)
+    said = heard_notifications(app)
     async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
         await settle(pilot, lambda: app.device is not None)
         assert any("F10 runs the board check" in s for s in said)  # offered on connect

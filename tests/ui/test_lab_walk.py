@@ -33,6 +33,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
+    heard_notifications,
     record_step_run,
     resume,
     settle,
@@ -66,19 +67,6 @@ def _stored(app, key: str):
 
 def _status(app) -> str:
     return str(app.screen.query_one(DeviceStatus).render())
-
-
-def _heard(app) -> list[str]:
-    """Every notification the app shows from now on (its text), in a list."""
-    said: list[str] = []
-    notify = app.notify
-
-    def keep(message, *args, **kwargs):
-        said.append(str(message))
-        return notify(message, *args, **kwargs)
-
-    app.notify = keep
-    return said
 
 
 # -- item 3: typing lands in the first empty entry, in view, and never appends ----------------
@@ -454,7 +442,7 @@ async def test_a_damaged_session_opens_read_only_and_says_why(quiet, tmp_path):
     (s.folder / "session.json").write_text(json.dumps(data))
     before = (s.folder / "session.json").read_bytes()
     app = quiet()
-    said = _heard(app)
+    said = heard_notifications(app)
     async with app.run_test(size=(80, 24)) as pilot:
         await settle(pilot, lambda: bool(app.screen.query("#sessions")))
         label = str(app.screen.query_one("#sessions").get_option_at_index(0).prompt)
@@ -519,7 +507,7 @@ async def test_a_resumed_session_with_recovery_notes_says_them(quiet, tmp_path):
     s.close()
     (s.folder / ".session.json.999999.tmp").write_text("{")
     app = quiet()
-    said = _heard(app)
+    said = heard_notifications(app)
     async with app.run_test(size=(80, 24)) as pilot:
         await resume(pilot)
         assert any("removed .session.json.999999.tmp" in m for m in said)

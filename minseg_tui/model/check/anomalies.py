@@ -262,8 +262,14 @@ def late_steps(
     for e, dx, st, res_t in zip(edges.tolist(), x.tolist(), strength, resolution, strict=True):
         off = dx - med
         # the shift must be a good part of a sample, well above what the noise allows and
-        # well above the timing the angle quantum allows for this edge
-        if abs(off) > max(0.25 * ts, LATE_SIGMAS * res_t) and abs(off) / shift * st > 6 * noise:
+        # well above the timing the angle quantum allows for this edge; and at most a
+        # sample: a step between samples acts within one period of its sample time, and a
+        # larger figure is the linear estimate outside its range (an edge that is no step,
+        # such as noise on u), which says nothing of when the step acted
+        if (
+            max(0.25 * ts, LATE_SIGMAS * res_t) < abs(off) <= ts
+            and abs(off) / shift * st > 6 * noise
+        ):
             out.append(
                 Anomaly(
                     "late_step",
@@ -318,4 +324,113 @@ def disturbance(
         "input moved the wheel (a hand on it, a snag); those rows were left out of the fit",
         t_end=t1,
         row_end=int(end),
+    )
+
+
+def repeated_miss(t: FloatArray, starts: list[int], edges: str, what: str) -> Anomaly:
+    """One sentence for departures that come back edge after edge (``starts``: the rows of
+    those edges; ``edges``: 'rising', 'falling' or both; ``what``: what repeats, in words):
+    the model misses something at those edges; it is not a disturbance."""
+    times = ", ".join(f"{t[s]:.2f}" for s in starts[:6]) + (" ..." if len(starts) > 6 else "")
+    return Anomaly(
+        "model_miss",
+        int(starts[0]),
+        float(t[starts[0]]),
+        float(len(starts)),
+        "edges",
+        f"{what} after {len(starts)} {edges} edges (t = {times} s): a departure that comes back "
+        "edge after edge is what the model misses there, not a hand on the wheel; those rows "
+        "stay in the fit",
+    )
+
+
+def gap_rows(t: FloatArray, ts: float) -> set[int]:
+    """Rows right after a sample interval longer than 1.5 nominal periods, and the row after
+    each (where a read that lagged its timestamp is caught up)."""
+    return {r for a in gap_starts(t, ts) for r in (a, a + 1) if r < t.size}
+
+
+def gap_starts(t: FloatArray, ts: float) -> list[int]:
+    """Rows right after a sample interval longer than 1.5 nominal periods."""
+    return [int(a) for a in (np.flatnonzero(np.diff(t) > 1.5 * ts) + 1).tolist()]
+
+
+def logging_artefact(
+    t: FloatArray, row: int, end: int, size: float, at: int | None = None
+) -> Anomaly:
+    """The sentence for a spike right after a gap in the sample times (``at``: the row after
+    the gap, default ``row``), with rows row..end (exclusive) left out of the fit: the
+    logger's clock and its encoder read disagree there, the wheel did not move so."""
+    at = row if at is None else at
+    gap = float(t[at] - t[at - 1]) if at > 0 else 0.0
+    out = f"row {row}" if end - row <= 1 else f"rows {row}-{end - 1}"
+    return Anomaly(
+        "logging_artefact",
+        int(row),
+        float(t[row]),
+        float(size),
+        "rad/s",
+        f"row {at} (t = {t[at]:.3f} s), right after a gap of {1e3 * gap:.0f} ms in the sample "
+        f"times: the speed jumps by {size:+.3g} rad/s and straight back, as when the logger stalls "
+        "and reads the encoder and its clock at different moments (a logging artefact, not the "
+        f"wheel); {out} left out of the fit",
+        t_end=float(t[min(end, t.size - 1)]),
+        row_end=int(end),
+    )
+
+
+def start_glitch(u: FloatArray, y: FloatArray) -> int:
+    """How many rows at the very start (1-3) are a switch-on glitch: fast against the log's
+    top speed, then the speed falls by more than three quarters in one sample with the input
+    unchanged (no motor slows so in one sample when it turns that fast by itself); 0 if none."""
+    top = float(np.max(np.abs(y))) if y.size else 0.0
+    if top <= 0 or y.size < 8:
+        return 0
+    fast = [k for k in range(min(4, y.size)) if abs(y[k]) > 0.2 * top]
+    if not fast:
+        return 0
+    last = max(fast)
+    nxt = last + 1
+    if last > 2 or np.any(u[: nxt + 1] != u[0]):
+        return 0
+    small = min(abs(float(y[k])) for k in fast)
+    if (
+        abs(float(y[nxt])) <= 0.25 * small
+        and float(np.max(np.abs(y[nxt : nxt + 4]))) <= 0.25 * small
+    ):
+        return nxt
+    return 0
+
+
+def glitch_anomaly(t: FloatArray, y: FloatArray, rows: int) -> Anomaly:
+    """The sentence for ``rows`` switch-on glitch rows at the start."""
+    top = float(np.max(np.abs(y[:rows])))
+    return Anomaly(
+        "start_glitch",
+        0,
+        float(t[0]),
+        top,
+        "rad/s",
+        f"the first {rows} row(s) (to t = {t[rows - 1]:.3f} s) read up to {top:.3g} rad/s and the "
+        "next one close to 0 with the input unchanged: a glitch as the logger starts, not the "
+        "wheel; left out of the fit",
+        t_end=float(t[rows]),
+        row_end=int(rows),
+    )
+
+
+def averaged_gaps(t: FloatArray, starts: list[int], taps: int) -> Anomaly:
+    """The sentence for the rows left out after gaps in the sample times of an averaged
+    speed (``starts``: the rows right after each gap; ``taps``: the average's length)."""
+    first = starts[0]
+    return Anomaly(
+        "gap_rows_left_out",
+        int(first),
+        float(t[first]),
+        float(len(starts)),
+        "gaps",
+        "the speed is averaged over several samples, so a read the logger got wrong across a "
+        f"gap in the sample times stays in it for as many rows: the {taps + 1} rows after each "
+        f"of the {len(starts)} gap(s) (the first at t = {t[first]:.3f} s) were left out of the fit",
+        row_end=int(min(first + taps + 1, t.size)),
     )

@@ -374,3 +374,60 @@ def ranked(sel: Selection) -> list[str]:
     cause is taken out of the model."""
     f = sel.chosen
     return sorted(f.causes, key=lambda c: -sel.without[c].sse_white if c in sel.without else 0.0)
+
+
+AMBIGUOUS_RATIO = 1.1
+"""A different set of causes that leaves at most this many times the chosen model's whitened
+residual fits about as well: the log cannot tell the two apart (calibrated on the tuning
+seeds of the independent generator, tests/model/physics_gen.py)."""
+
+
+def rivals(
+    sel: Selection,
+    prob: Problem,
+    rng: dict[str, Range],
+    noise: float,
+    floor: Callable[[int], float | None] = lambda n: None,
+    ratio: float | None = None,
+    fewer: bool = False,
+) -> list[tuple[Fit, float]]:
+    """Other explanations with as many causes as the chosen one that fit about as well: each
+    with the ratio of its whitened residual to the chosen model's (of the plain speed error's
+    sum of squares when its averaging length differs; at most ``ratio``, default
+    ``AMBIGUOUS_RATIO``), best first. Each is clear against the baseline and passes
+    every test a named cause must pass (no parameter on its bound, no coast as fast as
+    braking, ...). ``fewer``: the chosen model without one of its causes competes too (the
+    log may not tell whether that cause acts at all). Empty when nothing is named."""
+    limit = AMBIGUOUS_RATIO if ratio is None else ratio
+    chosen = sel.chosen
+    k = len(chosen.causes)
+    if k == 0 or chosen.sse_white <= 0:
+        return []
+    pool = list(sel.singles.values()) if k == 1 else list(sel.tried)
+    if k >= 2 and fewer:
+        pool += list(sel.without.values())
+    base_raw = _raw_sse(prob, sel.base)
+    best: dict[frozenset[str], tuple[Fit, float]] = {}
+    raw_c: float | None = None
+    for f in pool:
+        key = frozenset(f.causes)
+        if not (len(f.causes) == k or (fewer and len(f.causes) == k - 1)):
+            continue
+        if key == frozenset(chosen.causes):
+            continue
+        if not math.isfinite(f.sse_white):
+            continue
+        if f.effects.taps != chosen.effects.taps:
+            # another averaging length whitens with another stride: compare the speed itself
+            raw_c = raw_c if raw_c is not None else _raw_sse(prob, chosen)
+            r = _raw_sse(prob, f) / raw_c if raw_c > 0 else math.inf
+        else:
+            r = f.sse_white / chosen.sse_white
+        if r > limit or (key in best and best[key][1] <= r):
+            continue
+        if not compare(f, sel.base).clear:
+            continue
+        if any(_why_not(prob, f, c, rng, base_raw, noise, floor) is not None for c in f.causes):
+            continue
+        best[key] = (f, r)
+    return sorted(best.values(), key=lambda x: x[1])

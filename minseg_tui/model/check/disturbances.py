@@ -120,3 +120,85 @@ def fence(n: int, found: list[Disturbance]) -> FloatArray:
     for d in found:
         w[d.start : d.end] = 0.0
     return w
+
+
+REPEAT_MIN = 3
+"""A departure found after this many edges of one kind..."""
+
+REPEAT_SHARE = 0.5
+"""...and after at least this share of them is the model's miss, not a disturbance."""
+
+
+def edge_kinds(u: FloatArray) -> tuple[list[tuple[int, int, str]], dict[str, int]]:
+    """Every stretch of constant input as (first row, end row exclusive, kind): 'rising'
+    when its level is larger in size than the one before (a step up, or a start from rest),
+    'falling' otherwise, 'start' for the first; and how many driven stretches of each kind
+    are long enough to hold a disturbance."""
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    bounds = np.concatenate(([0], change, [u.size]))
+    out: list[tuple[int, int, str]] = []
+    count: dict[str, int] = {}
+    for a, b in zip(bounds[:-1], bounds[1:], strict=True):
+        kind = "start" if a == 0 else ("rising" if abs(u[a]) > abs(u[a - 1]) else "falling")
+        out.append((int(a), int(b), kind))
+        if u[a] != 0 and b - a >= 4 * MIN_ROWS:
+            count[kind] = count.get(kind, 0) + 1
+    return out, count
+
+
+def split_repeated(
+    found: list[Disturbance], u: FloatArray, settle: int = 0
+) -> tuple[list[Disturbance], list[Disturbance], str]:
+    """(local, repeated, kind): a departure that comes back after most edges of one kind
+    (at least ``REPEAT_MIN`` of them and ``REPEAT_SHARE`` of that kind's driven stretches),
+    or after two edges or more while the response to them has not settled (within
+    ``settle`` rows of the edge), is what the model misses at those edges, not something
+    that touched the wheel; the others stay disturbances. ``kind`` names the edges of the
+    repeated ones ('' if none)."""
+    stretches, count = edge_kinds(u)
+    early = [
+        d for d in found if d.start - next(a for a, b, _ in stretches if a <= d.start < b) < settle
+    ]
+    if len({next(a for a, b, _ in stretches if a <= d.start < b) for d in early}) < 2:
+        early = []
+    if len(found) < REPEAT_MIN and not early:
+        return found, [], ""
+    by_kind: dict[str, list[Disturbance]] = {}
+    for d in found:
+        for a, b, kind in stretches:
+            if a <= d.start < b:
+                by_kind.setdefault(kind, []).append(d)
+                break
+
+    def first_row(d: Disturbance) -> int:
+        return next(a for a, b, _ in stretches if a <= d.start < b)
+
+    repeated: list[Disturbance] = []
+    kinds: list[str] = []
+    for kind, ds in by_kind.items():
+        spans = {first_row(d) for d in ds}
+        if len(spans) >= REPEAT_MIN and len(spans) >= REPEAT_SHARE * count.get(kind, 0):
+            repeated += ds
+            kinds.append(kind)
+    if early:
+        repeated += [d for d in early if d not in repeated]
+        for d in early:
+            k = next(kind for a, b, kind in stretches if a <= d.start < b)
+            if k not in kinds:
+                kinds.append(k)
+    if repeated:
+        # the same miss after an edge of another kind, no later after its edge than the
+        # repeated ones come after theirs, is that miss too
+        reach = max(d.start - first_row(d) for d in repeated)
+        more = [d for d in found if d not in repeated and d.start - first_row(d) <= 1.5 * reach + 2]
+        if more:
+            repeated += more
+            kinds.append("other")
+    local = [d for d in found if d not in repeated]
+    return local, repeated, " and ".join(kinds)
+
+
+def edges_of(found: list[Disturbance], u: FloatArray) -> list[int]:
+    """The first rows of the stretches (after their edges) that hold the disturbances."""
+    stretches, _ = edge_kinds(u)
+    return sorted({next(a for a, b, _ in stretches if a <= d.start < b) for d in found})

@@ -14,9 +14,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
-from minseg_tui.model.check.decide import Selection, compare, ranked, select
+from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, ranges
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, in_words, ranges
 from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, falls
 from minseg_tui.model.check.figures import above, angle_rms, close_up, folds, lead, systematic
 from minseg_tui.model.check.fit import (
@@ -77,10 +77,18 @@ def check(
         raise ValueError(refused)
     ts = float(np.median(np.diff(t))) if ts is None else float(ts)
     samp = sampling(t, u, y, ts, cpr, omega_over)
-    full = Problem(t, u, y, ts, over_interval=samp.over_interval)
     notes: list[an.Anomaly] = []
+    y_raw = y
+    pre = np.ones(y.size)  # rows left out before anything is fitted (a switch-on glitch)
+    glitch = an.start_glitch(u, y)
+    if glitch:
+        notes.append(an.glitch_anomaly(t, y, glitch))
+        y = y.copy()
+        y[:glitch] = y[glitch]
+        pre[:glitch] = 0.0
+    full = Problem(t, u, y, ts, weights=pre, over_interval=samp.over_interval)
     rng0 = ranges(t, u, ts, 0.05)
-    if _in_motion(y):
+    if not glitch and _in_motion(y):
         if u[0] != 0:
             full.z0 = None
             how = f"taken as the steady speed under its first input ({u[0]:g} V)"
@@ -112,6 +120,7 @@ def check(
 
     # a hand on the wheel, against the baseline: fenced off before the causes are chosen
     found = dist.find(t, u, full.y - base.predict(full), base.predict(full), settle, noise)
+    found, _, _ = dist.split_repeated(found, u)  # the baseline's own miss: the causes' business
     if found:
         full, head, base = _fenced(full, found, rng0)
 
@@ -142,16 +151,30 @@ def check(
             full = replace_y(full, an.repair(y, res, wild, taps) if wild else y)
             head = full.head(MAX_FIT_ROWS)
             ext, base = refit(head, ext, rng), refit(head, base, rng)
+    gap_after = an.gap_starts(t, ts) if taps > 1 and samp.regular else []
+    if gap_after:
+        # an average over taps samples carries whatever the logger read across a gap (a
+        # stall's late read) into the next taps rows: they are left out
+        for g in gap_after:
+            pre[g : g + taps + 1] = 0.0
+        full = full.with_weights(full.weights * pre)
+        head = full.head(MAX_FIT_ROWS)
+        ext, base = refit(head, ext, rng), refit(head, base, rng)
+        notes.append(an.averaged_gaps(t, gap_after, taps))
     settle = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
     near = 3  # the model chosen follows the steps: look from a few rows after each
     found2 = dist.find(
         t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1
     )
+    rise = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
+    found2, repeated, repeated_at = dist.split_repeated(found2, u, rise)
     if _rows(found2) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
-        full = full.with_weights(dist.fence(y.size, found) * _wild_weights(y.size, wild, taps))
+        full = full.with_weights(
+            dist.fence(y.size, found) * _wild_weights(y.size, wild, taps) * pre
+        )
         head = full.head(MAX_FIT_ROWS)
         base = fit_baseline(head, rng0)
         sel = select(head, base, rng, noise, samp.column_floor, names)
@@ -160,8 +183,33 @@ def check(
         settle = dist.settle_rows(ext.T, ext.effects.delay, ext.effects.taps, ts)
         noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
     log = replace(log, noise=noise)
+    if repeated:
+        notes.append(
+            an.repeated_miss(
+                t,
+                dist.edges_of(repeated, u),
+                repeated_at,
+                "the speed departs from the model's simulation the same way",
+            )
+        )
     return _report(
-        t, u, y, full, head, samp, noise, sel, base, ext, rng, wild, found, notes, log, unjudged
+        t,
+        u,
+        y,
+        full,
+        head,
+        samp,
+        noise,
+        sel,
+        base,
+        ext,
+        rng,
+        wild,
+        found,
+        notes,
+        log,
+        unjudged,
+        y_raw,
     )
 
 
@@ -206,19 +254,23 @@ def _report(
     notes: list[an.Anomaly],
     log: Log,
     unjudged: dict[str, str],
+    y_raw: FloatArray,
 ) -> CheckResult:
-    """Predictions, figures, words."""
+    """Predictions, figures, words. Every rms and fit figure covers the rows the fit used
+    (``full.weights`` > 0, with wild samples repaired); ``y_raw`` is the speed as logged."""
     named = bool(ext.causes)
     b_pred = base.predict(full)
     e_pred = ext.predict(full) if named else b_pred
     keep = full.weights > 0
+    used = int(np.count_nonzero(keep))
     b_int = intervals(head, base, rng)
     baseline = ModelFit(
         "first_order",
         {"T": base.T, "K": base.K},
-        rmse(y, b_pred),
-        fit_percent(y, b_pred),
+        rmse(full.y[keep], b_pred[keep]),
+        fit_percent(full.y[keep], b_pred[keep]),
         {k: b_int[k] for k in ("T", "K")},
+        rows=used,
     )
     order = ranked(sel) if named else []
     if named:
@@ -230,9 +282,10 @@ def _report(
                 "K": ext.K,
                 **{BY_CAUSE[c].param: ext.params[BY_CAUSE[c].param] for c in order},
             },
-            rmse(y, e_pred),
-            fit_percent(y, e_pred),
+            rmse(full.y[keep], e_pred[keep]),
+            fit_percent(full.y[keep], e_pred[keep]),
             e_int,
+            rows=used,
         )
     else:
         extended = baseline
@@ -271,12 +324,26 @@ def _report(
     keep_dev &= keep
     devs = deviations(u, np.where(keep_dev, y - b_pred, 0.0), base.T, samp.ts, keep_dev)
     misses = miss is not None
-    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full)
+    alts = rivals(sel, head, rng, noise, samp.column_floor) if named else []
+    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full, alts)
 
     # anomalies, against the model the finding settles on
     res = full.y - e_pred
     anomalies = list(notes)
-    anomalies += an.wild_anomalies(t, y, y - e_pred, wild, ext.effects.taps)
+    gap_rows = an.gap_rows(t, samp.ts) if samp.regular else set()
+    for a in an.wild_anomalies(t, y, y - e_pred, wild, ext.effects.taps):
+        if a.row in gap_rows:
+            a = an.logging_artefact(t, int(a.row), int(a.row) + 1, a.size)
+        anomalies.append(a)
+    artefacts = [d for d in found if _at_gap(d, res, gap_rows)]
+    found = [d for d in found if d not in artefacts]
+    starts = an.gap_starts(t, samp.ts)
+    anomalies += [
+        an.logging_artefact(
+            t, d.start, d.end, d.size, next((g for g in starts if d.start <= g < d.end), None)
+        )
+        for d in artefacts
+    ]
     anomalies += [an.disturbance(t, u, d.start, d.end, d.size, d.level) for d in found]
     if not misses:
         cr = an.creep(t, u, np.where(keep, res, 0.0), e_pred, ext.T + ext.effects.delay, samp.ts)
@@ -290,9 +357,31 @@ def _report(
         taps * samp.ts * an.robust_sigma(whiten(res, taps)[moving]) if np.any(moving) else 0.0
     )
     if not misses:
-        anomalies += an.late_steps(
-            t, u, res, moved.predict(full) - e_pred, shift, samp.ts, ext.T, e_pred, angle_noise
+        late = an.late_steps(
+            t,
+            u,
+            np.where(keep, res, 0.0),
+            moved.predict(full) - e_pred,
+            shift,
+            samp.ts,
+            ext.T,
+            e_pred,
+            angle_noise,
         )
+        edges = int(np.count_nonzero(np.diff(u) != 0))
+        if len(late) >= dist.REPEAT_MIN and len(late) >= dist.REPEAT_SHARE * edges:
+            late = [
+                an.repeated_miss(
+                    t,
+                    [int(a.row) for a in late if a.row is not None],
+                    f"of the {edges}",
+                    "the response looks shifted in time (by "
+                    + ", ".join(f"{a.size:+.0f}" for a in late[:6])
+                    + (" ..." if len(late) > 6 else "")
+                    + " ms)",
+                )
+            ]
+        anomalies += late
     gp = an.gaps(t, samp.ts, samp.regular)
     if gp:
         anomalies.append(gp)
@@ -316,13 +405,24 @@ def _report(
         describe(devs),
         anomalies,
         t,
-        y,
+        y_raw,
         b_pred,
         e_pred,
         samp,
         lead(gain, named, _turning(full.y, b_pred, e_pred, keep)),
         cu,
     )
+
+
+def _at_gap(d: dist.Disturbance, res: FloatArray, gap_rows: set[int]) -> bool:
+    """True when disturbance ``d`` is a spike at the rows right after a gap in the sample
+    times: its rows hold a gap row, and away from the gap rows it departs by less than a
+    third of its largest departure."""
+    rows = set(range(d.start, d.end))
+    if not rows & gap_rows:
+        return False
+    rest = [abs(float(res[r])) for r in rows - gap_rows]
+    return not rest or max(rest) < abs(d.size) / 3.0
 
 
 def _turning(
@@ -435,6 +535,7 @@ def _finding(
     miss: tuple[float, str, float] | None,
     unjudged: dict[str, str],
     full: Problem,
+    alts: list[tuple[Fit, float]] | None = None,
 ) -> Finding:
     floor = samp.floor if samp.resolution_how.startswith("# cpr") else None
     taps = ext.effects.taps
@@ -491,9 +592,10 @@ def _finding(
     if not order:
         runner, why = _none_runner(sel)
         if explained:
-            rms_b = _rmse_kept(log.y, log.base_pred, np.ones(log.y.size, dtype=bool))
+            kept = full.weights > 0
+            rms_b = _rmse_kept(log.y, log.base_pred, kept)
             left = above(rms_b, level) or 0.0
-            turning = an.moving_rows(log.y).astype(bool)
+            turning = an.moving_rows(log.y).astype(bool) & kept
             rms_t = _rmse_kept(log.y, log.base_pred, turning)
             left_t = above(rms_t, level) or 0.0
             turning_words = (
@@ -520,7 +622,7 @@ def _finding(
                     f"the first-order model misses by {left:.2g} rad/s rms above the noise "
                     f"({level:.3g} rad/s), but no cause from the list is clear enough to name"
                 )
-            pct = fit_percent(log.y, log.base_pred)
+            pct = fit_percent(log.y[kept], log.base_pred[kept])
             at_noise = level > 0 and left < 0.5 * level and not turning_words
             if pct < 80.0 and at_noise:
                 fit_words += (
@@ -553,7 +655,74 @@ def _finding(
                 f"{1 / max(1 - vc.reduction, 1e-12):.1f} times the whitened residual",
             )
         )
-    return Finding(cause, evidence, others, caveats, explained, runner, why)
+    ambiguous: list[list[str]] = []
+    for f, ratio in alts or []:
+        causes = list(f.causes)
+        ambiguous.append(causes)
+        caveats.append(
+            Caveat(
+                "cannot_tell",
+                causes[0],
+                f"this log cannot tell {in_words('+'.join(order))} from "
+                f"{in_words('+'.join(causes))}: the second leaves {ratio:.2f} times the "
+                + (
+                    "whitened residual"
+                    if f.effects.taps == ext.effects.taps
+                    else "squared speed error (their averages differ, so their whitened residuals "
+                    "cannot be compared)"
+                )
+                + f" of the first; {_what_would_tell(order, causes)}",
+            )
+        )
+    if ambiguous:
+        # a claim that holds only against a rival the log cannot rule out goes
+        evidence = _untold(evidence, ambiguous)
+        others = [replace(o, evidence=_untold(o.evidence, ambiguous)) for o in others]
+    return Finding(cause, evidence, others, caveats, explained, runner, why, ambiguous)
+
+
+_TELL: dict[frozenset[str], str] = {
+    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
+    "samples after each step (more counts per sample, a faster sampling where the counts "
+    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
+    "bends smoothly from the start)",
+    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
+    "(a delay shifts the rise, an average turns it into a ramp)",
+    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
+    "of the speed acts on the measurement only, a pole on the motor)",
+    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
+    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
+    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
+    "limits the big steps only, friction takes the same volts off every level)",
+    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
+    "would (a coast acts only at 0)",
+}
+
+
+def _what_would_tell(a: list[str], b: list[str]) -> str:
+    """What kind of log would tell causes ``a`` from ``b`` apart, in words."""
+    diff = frozenset(set(a) ^ set(b))
+    for pair, words in _TELL.items():
+        if pair <= diff:
+            return words
+    return (
+        "steps of other sizes, a step down to a small voltage and a faster sampling would "
+        "show more of each"
+    )
+
+
+def _untold(evidence: str, ambiguous: list[list[str]]) -> str:
+    """``evidence`` without the claims that a rival the log cannot rule out would contradict
+    (never 'a pure delay' when a pole fits nearly as well)."""
+    rivals_named = {c for a in ambiguous for c in a}
+    if "second_pole" in rivals_named or "velocity_filter" in rivals_named:
+        evidence = evidence.replace(
+            "(a pure delay; an extra pole would start at once, only more slowly)",
+            "(a delay, or in this log an extra pole or an average about as well)",
+        )
+    if "dead_time" in rivals_named:
+        evidence = evidence.replace(" (a pure delay would show a corner)", "")
+    return evidence
 
 
 def _none_runner(sel: Selection) -> tuple[str | None, str]:

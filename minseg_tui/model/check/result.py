@@ -21,14 +21,17 @@ FloatArray = NDArray[np.float64]
 @dataclass(frozen=True)
 class ModelFit:
     """A model as reported: name, parameters (T in s, K in rad/s/V, each cause's own), how
-    well its simulation matches every row: rmse (rad/s) and fit_percent, and a 95 % interval
-    (lo, hi) per parameter (empty for the baseline when not computed)."""
+    well its simulation matches the rows the fit used: rmse (rad/s) and fit_percent over
+    ``rows`` rows (wild samples repaired; disturbances, glitches and logging artefacts left
+    out; 0: every row of the log), and a 95 % interval (lo, hi) per parameter (empty for the
+    baseline when not computed)."""
 
     model: str
     params: dict[str, float]
     rmse: float
     fit_percent: float
     intervals: dict[str, tuple[float, float]] = field(default_factory=dict)
+    rows: int = 0
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -36,6 +39,7 @@ class ModelFit:
             "params": dict(self.params),
             "rmse": self.rmse,
             "fit_percent": self.fit_percent,
+            "rows": self.rows,
             "intervals": {k: [lo, hi] for k, (lo, hi) in self.intervals.items()},
         }
 
@@ -72,8 +76,8 @@ class Caveat:
 class Finding:
     """The cause (a contract name: the largest effect, or 'none'), its evidence in words,
     the other effects in the model, and what the check says plainly besides: caveats,
-    whether the model explains the log down to its noise, and the runner-up with why it
-    lost."""
+    whether the model explains the log down to its noise, the runner-up with why it lost,
+    and the other explanations the log cannot tell from the one named."""
 
     cause: str
     evidence: str
@@ -82,6 +86,9 @@ class Finding:
     explained: bool = True
     runner_up: str | None = None
     runner_up_why: str = ""
+    ambiguous_with: list[list[str]] = field(default_factory=list)
+    """Other sets of causes (each like [cause, *others]) that fit this log about as well as
+    the one named: the log cannot tell them apart (a 'cannot_tell' caveat says so)."""
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -92,6 +99,7 @@ class Finding:
             "explained": self.explained,
             "runner_up": self.runner_up,
             "runner_up_why": self.runner_up_why,
+            "ambiguous_with": [list(a) for a in self.ambiguous_with],
         }
 
 

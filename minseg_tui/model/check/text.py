@@ -49,6 +49,15 @@ def _pair(r: CheckResult, key: str) -> str:
     return f"{b:.3g} -> {e:.3g} {unit}"
 
 
+def _over(r: CheckResult) -> str:
+    """Which rows the rms and fit figures cover: all of them, or those the fit used."""
+    n = int(r.t.size)
+    used = r.baseline.rows or n
+    if used >= n:
+        return f"over all {n} rows"
+    return f"over the {used} of {n} rows the fit used ({n - used} left out, see the anomalies)"
+
+
 def text(r: CheckResult) -> str:
     """The human report: how the log was sampled, the baseline, where it deviates, the
     cause and its evidence, the extended model, the gain (the figure that means most
@@ -59,7 +68,8 @@ def text(r: CheckResult) -> str:
         lines.append(f"Log: {r.sampling.text()}")
     lines += [
         f"Baseline (first order): {_params(b.params, b.intervals)}",
-        f"  simulated on the measured input: rmse {b.rmse:.3f} rad/s, fit {b.fit_percent:.1f} %",
+        f"  simulated on the measured input: rmse {b.rmse:.3f} rad/s, fit {b.fit_percent:.1f} %"
+        f" ({_over(r)})",
         f"Where it deviates: {r.where}",
     ]
     for d in r.deviations:
@@ -73,7 +83,7 @@ def text(r: CheckResult) -> str:
         lines.append(f"  also: {o.cause} ({_params(o.params)}): {o.evidence}")
     if f.cause != "none":
         lines.append(f"Extended model ({e.model}): {_params(e.params, e.intervals)}")
-        lines.append(f"  rmse {e.rmse:.3f} rad/s, fit {e.fit_percent:.1f} %")
+        lines.append(f"  rmse {e.rmse:.3f} rad/s, fit {e.fit_percent:.1f} % ({_over(r)})")
     else:
         lines.append("Extended model: none needed (it is the baseline)")
     if r.lead is not None:
@@ -99,7 +109,12 @@ def text(r: CheckResult) -> str:
         rest.append(
             f"rmse {g['rmse_reduction_percent']:.1f} % lower, fit {g['fit_percent_gain']:+.1f} points"
         )
-    lines.append("  " + "; ".join(rest))
+    held = (
+        ", the held-out error over the rows of the steps each fit left out"
+        if g.get("heldout_baseline_rmse") is not None
+        else ""
+    )
+    lines.append("  " + "; ".join(rest) + f" (rms, noise and fit figures {_over(r)}{held})")
     if f.caveats:
         lines.append("What the check cannot say here:")
         lines.extend(f"  - {c.text}" for c in f.caveats)

@@ -184,6 +184,18 @@ class Identification:
         return out
 
 
+_HOW = {
+    "off": "the driver is off at 0 V",
+    "extrapolated": "below the driver's drop in the table",
+    "requested": "as requested",
+    "interpolated": "interpolated in the table",
+    "row": "the table's row",
+    "log": "the log's u",
+}
+"""How u_ss of a step was found (:func:`~.steady.u_ss_at`), in words of a step at 0 V;
+least direct first."""
+
+
 def _step_result(
     log: StepLog,
     rows: tuple[Row, ...],
@@ -215,6 +227,14 @@ def _step_result(
         refused = clock_problem(log.t, log.extra["t_us"])
         if refused:
             raise InputError(log.source, log.line_of(0), refused)
+    theta, angle_source = log.angle()
+    if not np.ptp(theta) > 0:  # nothing to fit: the least squares would divide by zero
+        raise InputError(
+            log.source,
+            None,
+            f"expected the wheel to turn; its angle ({angle_source}) never changes in the log, "
+            "so T, K and J cannot be found from it",
+        )
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise InputError(log.source, None, "expected a usable rising step")
@@ -228,11 +248,26 @@ def _step_result(
             u, how = u_ss_at(u_ss_table, s.u_req)
             u_used.append(u)
             hows.append(how)
+    for s, u, how_u in zip(steps, u_used, hows, strict=True):
+        if u == 0:  # K = omega_ss / u_ss has no value
+            at = "" if s.u_req is None else f"u_req = {s.u_req:g} V, "
+            raise InputError(
+                log.source,
+                s.line,
+                f"expected each rising step to put a voltage on the motor; the step at "
+                f"t = {s.t:.4g} s ends at {at}0 V on the motor ({_HOW[how_u]}), so K = "
+                "omega_ss / u_ss cannot be computed: record steps that end above the driver's "
+                "drop (steps that only go negative end at 0 V)",
+            )
     K_each = [s.omega_ss / u for s, u in zip(steps, u_used, strict=True)]
     K = float(np.median(K_each))
     omega_ss = float(np.median([s.omega_ss for s in steps]))
     u_ss = float(np.median(u_used))
-    how = hows[len(hows) // 2] if len(set(hows)) > 1 else hows[0]
+    # how the median u_ss was found: that of the step(s) in the middle by u_ss (not by time),
+    # the least direct of the two when the median is the mean of two found differently
+    order = sorted(range(len(u_used)), key=lambda k: u_used[k])
+    middle = {hows[order[len(order) // 2]], hows[order[(len(order) - 1) // 2]]}
+    how = next(h for h in (*_HOW, *middle) if h in middle)
     T = fit.T
     reads = [s.T_63 for s in steps if s.T_63 is not None]
     T_63 = float(np.median(reads)) if reads else None

@@ -19,6 +19,13 @@ KV_OUTLIER: float = 0.15
 STEP_VS_TABLE: float = 0.10
 """Step and table steady-state speeds further apart than this (relative) are reported."""
 
+RPM_GAIN: float = 6.0
+"""omega_ss / u_ss above this (rad/s per V; the lab's motor turns about 1.6) but not when read
+as rpm: the row's omega_ss was typed in rpm (k_v would come out about ten times small)."""
+
+RPM: float = 2.0 * math.pi / 60.0
+"""rad/s per rpm."""
+
 SHORT_T_SAMPLES: float = 3.0
 """T below this many sample periods: the 63 % reading measures the sampling, not the motor."""
 
@@ -54,6 +61,13 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
                 Observation(
                     "i_ss_high",
                     f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says you are probably measuring the wrong thing or the meter is in the wrong mode.",
+                )
+            )
+        if r.omega_ss / r.u_ss > RPM_GAIN and r.omega_ss * RPM / r.u_ss <= RPM_GAIN:
+            out.append(
+                Observation(
+                    "omega_ss_units",
+                    f"{_row_name(i, r)}: omega_ss = {r.omega_ss:g} is {r.omega_ss / r.u_ss:.3g} per volt, more than this motor turns; it looks like rpm, the table wants rad/s ({r.omega_ss * RPM:.4g} rad/s?).",
                 )
             )
         if row.k_v <= 0:

@@ -143,13 +143,17 @@ class TimeConstantFit:
 
 
 def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
-    """Least-squares T over the usable rising steps of ``log`` (None if there are none).
+    """Least-squares T over the usable rising steps of ``log`` (None if there are none, or
+    if the angle never changes: an encoder not read gives nothing to fit).
 
     Rows right after a gap in the logging whose angle misses the fit far more than the rest
     (a logging stall: the encoder value lags its timestamp) are left out and the fit is done
     again without them."""
     windows, _ = step_windows(log)
     if not windows:
+        return None
+    theta, _ = log.angle()
+    if not np.ptp(theta) > 0:  # no residual to compare the fits by: it would divide by zero
         return None
     first = _fit(log, windows, None)
     stalls = _stalls(log, first)
@@ -289,7 +293,7 @@ def _fit(
     if whole is not None:
         on_steps = whole.residuals[steps_fit.rows]
         rms = math.sqrt(dot(on_steps, on_steps) / max(n_w, 1))
-        if rms <= ADEQUATE * sigma_w:
+        if rms <= ADEQUATE * sigma_w and sigma_w > 0:  # (0: the steps fit exactly, no scale)
             fit = _from_whole(log, whole, windows, theta, angle_source, time_source, rms, sigma_w)
             return replace(
                 fit,
@@ -298,8 +302,9 @@ def _fit(
                 T_on_bound=whole.T_on_bound,
                 **common,
             )
+        times = f"{rms / sigma_w:.1f} times" if sigma_w > 0 else "more than"
         why = (
-            f"the first-order model over the whole log leaves {rms / sigma_w:.1f} times the "
+            f"the first-order model over the whole log leaves {times} the "
             "residual of the steps fitted one by one (the wheel between the steps does not "
             "follow it: coasting at zero command, or a speed that wanders), so T comes from "
             "the rising steps alone"
@@ -515,7 +520,7 @@ def rising_steps(log: StepLog, fit: TimeConstantFit | None = None) -> list[Risin
     if not windows:
         return []
     fit = fit if fit is not None else fit_time_constant(log)
-    if fit is None:  # cannot happen with usable windows
+    if fit is None:  # the angle never changes
         return []
     _, name = command(log)
     omega = np.asarray(log.omega, dtype=float)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
@@ -16,7 +17,11 @@ class ConnectPanel(Static):
     def __init__(self) -> None:
         super().__init__("", classes="panel")
 
-    def render(self) -> str:
+    def render(self) -> Content:
+        """Plain text: a file's or a port's name with brackets in it is shown as it is."""
+        return Content(self._text())
+
+    def _text(self) -> str:
         d = self.device
         if d is None:
             return "No device yet. Ctrl+P → Switch to virtual board to practise."

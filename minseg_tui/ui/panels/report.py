@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
@@ -21,7 +22,11 @@ class ReportPanel(Static):
         types in in view (the list pushed it under the footer at 80x24)."""
         self.call_after_refresh(self.post_message, ViewPanel.Drawn())
 
-    def render(self) -> str:
+    def render(self) -> Content:
+        """Plain text: a file's or a port's name with brackets in it is shown as it is."""
+        return Content(self._text())
+
+    def _text(self) -> str:
         paths = self.exported
         return "F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV." + (
             "\nwritten:\n" + "\n".join(f"  {p}" for p in paths) if paths else ""

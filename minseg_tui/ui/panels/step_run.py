@@ -67,7 +67,7 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
             yield TracePlot("25 ms run", "t [s]", "omega [rad/s]", id="plot-slow")
             yield TracePlot("5 ms run", "t [s]", "omega [rad/s]", id="plot-fast")
         yield Prose(FAST_WHY, classes="para")
-        yield Static("", id="t-readings")
+        yield Static("", id="t-readings", markup=False)
 
     def build(self, session: Session) -> tuple[RunView, ...]:
         return views.runs(session)

@@ -9,6 +9,7 @@ from textual import on
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
+from textual.content import Content
 from textual.message import Message
 from textual.widgets import Footer, Input, OptionList, Static
 from textual.widgets.option_list import Option
@@ -33,6 +34,7 @@ class StartScreen(StatusScreen):
         # the app's before any widget's: the lab opens before the keys typed after Enter are
         # handed on, so they go into the lab (the app asks :meth:`request` what Enter wants)
         Binding("enter", "app.start_lab", show=False, priority=True),
+        Binding("f12", "app.class_view", "Class view"),
     ]
 
     @dataclass
@@ -66,12 +68,13 @@ class StartScreen(StatusScreen):
                 "Enter on the names starts the lab. Tab moves on.", id="start-msg", classes="hint"
             )
             yield Static("Resume a session", classes="title")
+            # a label holds what was typed (names) and file names: shown as is, never as markup
             options = [
-                Option(self._label(s), id=key, disabled=s.locked_by is not None)
+                Option(Content(self._label(s)), id=key, disabled=s.locked_by is not None)
                 for key, s in self._sessions.items()
             ]
             if self._unreadable:
-                options = [Option(f"✗ {self._unreadable}", id="", disabled=True)]
+                options = [Option(Content(f"✗ {self._unreadable}"), id="", disabled=True)]
             elif not options:
                 options = [Option("no saved sessions yet", id="", disabled=True)]
             yield OptionList(*options, id="sessions")

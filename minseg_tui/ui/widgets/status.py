@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
@@ -45,9 +46,11 @@ class DeviceStatus(Static):
     motor: reactive[str] = reactive("off")
     saving: reactive[str] = reactive("", layout=True)
 
-    def render(self) -> str:
+    def render(self) -> Content:
+        """The line (and the save problem), as plain text: a port's or a folder's name with
+        brackets in it is shown as it is, never read as markup."""
         width = self.size.width or 78
         line = status_text(self.device, self.link, self.motor, width)
         if self.saving:
-            return f"{line}\n! {self.saving} (Ctrl+P → Save the session to another folder)"
-        return line
+            return Content(f"{line}\n! {self.saving} (Ctrl+P → Save the session to another folder)")
+        return Content(line)

@@ -1,0 +1,141 @@
+"""`minseg-tui class [--sessions DIR] [--json] [--out DIR]`: the class at a glance.
+
+One row per group of the sessions folder (names, date, the step reached, R, k_v, k_a, f,
+K, T by the 63 % reading and by least squares, J, the model check's cause, the group's own
+values against the computed ones) and, per group, what stands out, in words. ``--json``
+prints ``{"groups": [...]}`` instead (SI units); ``--out DIR`` also writes class.md,
+class.html (self-contained, fit to print) and class.csv into DIR.
+
+The sessions are opened read-only: no lock is taken and nothing in them is written.
+
+Bad input, one line on stderr and exit 2: a folder that does not exist or holds no
+session, an --out that cannot be written, and a session that cannot be read at all (the
+others are still listed and written first; the unreadable one is listed with why).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from minseg_tui.cli.output import print_json
+from minseg_tui.errors import InputError
+from minseg_tui.lab import classread
+from minseg_tui.lab.classview import QUANTITIES, ClassView
+from minseg_tui.lab.store import atomic_write_text, os_reason
+from minseg_tui.report import class_content, html, markdown
+from minseg_tui.units import format_number
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Arguments of `minseg-tui class`."""
+    parser.add_argument(
+        "--sessions",
+        metavar="DIR",
+        type=Path,
+        default=Path("sessions"),
+        help="folder holding the groups' sessions (default: ./sessions)",
+    )
+    parser.add_argument("--json", action="store_true", help="print the class as JSON (SI units)")
+    parser.add_argument(
+        "--out",
+        metavar="DIR",
+        type=Path,
+        default=None,
+        help="also write class.md, class.html and class.csv into DIR (made if needed)",
+    )
+    parser.add_argument(
+        "--workers",
+        metavar="N",
+        type=int,
+        default=None,
+        help="processes for the sessions not read before (default: the CPUs; 1: none)",
+    )
+
+
+def _cell(v: float | None) -> str:
+    return "-" if v is None else format_number(v)
+
+
+def text(view: ClassView) -> str:
+    """The class as plain text: a table, then per group what stands out and what is missing."""
+    head = [
+        "#",
+        "group",
+        "members",
+        "step",
+        *(q.key for q in QUANTITIES),
+        "model check",
+        "own vs computed",
+    ]
+    rows = [
+        [
+            str(k),
+            g.id,
+            class_content.members(g),
+            g.step or "-",
+            *(_cell(g.value(q.key)) for q in QUANTITIES),
+            g.cause or "-",
+            class_content.own_cell(g),
+        ]
+        for k, g in enumerate(view.groups, 1)
+    ]
+    widths = [max(len(r[c]) for r in [head, *rows]) for c in range(len(head))]
+    lines = [
+        "  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip()
+        for r in [head, *rows]
+    ]
+    lines.append("units: " + ", ".join(f"{q.key} {q.unit}" for q in QUANTITIES))
+    for k, g in enumerate(view.groups, 1):
+        if not (g.flags or g.lacks):
+            continue
+        lines.append("")
+        lines.append(f"#{k} {g.id} ({class_content.members(g)}, {g.date or 'no date'})")
+        lines += [f"  ! {f}" for f in g.flags]
+        lines += [f"  - lacks: {x}" for x in g.lacks]
+    if not any(g.flags for g in view.groups):
+        lines += ["", "Nothing stands out."]
+    return "\n".join(lines)
+
+
+def write(view: ClassView, out: Path) -> tuple[Path, ...]:
+    """Write class.md, class.html and class.csv into ``out`` (made if needed); InputError,
+    one line, when it cannot be written."""
+    rep = class_content.build(view)
+    files = (
+        (out / "class.md", markdown.render(rep)),
+        (out / "class.html", html.render(rep)),
+        (out / "class.csv", class_content.csv_text(view)),
+    )
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        for path, body in files:
+            atomic_write_text(path, body)
+    except OSError as exc:
+        raise InputError(
+            str(out),
+            None,
+            f"cannot write the class report here ({os_reason(exc)}): give another --out DIR",
+        ) from None
+    return tuple(p for p, _ in files)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Show (and write) the class view; 2 when a session could not be read at all."""
+    if args.workers is not None and args.workers < 1:
+        raise InputError(
+            "--workers", None, f"expected a whole number of at least 1, got {args.workers}"
+        )
+    view = classread.build(args.sessions, workers=args.workers)
+    written = write(view, args.out) if args.out is not None else ()
+    if args.json:
+        print_json(view.to_json(), indent=2)
+    else:
+        print(text(view))
+        for p in written:
+            print(p)
+    bad = view.unreadable
+    for g in bad:
+        print(f"minseg-tui class: {g.damaged}", file=sys.stderr)
+    return 2 if bad else 0

@@ -1,0 +1,449 @@
+"""The class at a glance: one row per group of a sessions folder, and what stands out.
+
+:func:`build` opens every session under a folder read-only (:meth:`Session.open` with
+``readonly=True``: no lock taken, nothing written) and takes its numbers from the session
+itself: :meth:`Session.results` (Tasks 6-15, the same numbers ``minseg-tui report``
+writes), :meth:`Session.model_check` and :meth:`Session.comparisons`. Nothing here
+computes a motor parameter a second time; it only sets the groups side by side and says,
+in words, what stands out:
+
+- the slips the lab manual warns about (:func:`slips`): i_ss above 100 mA (or a current
+  typed in amperes into the mA column), R outside 3-6 Ω, an omega_ss that looks like rpm,
+  a u_ss above the requested voltage;
+- a value far from the rest of the class (:func:`spread` and :func:`outliers`), judged by
+  the median and the median absolute deviation.
+
+A session that cannot be read, is damaged or is unfinished is listed with what it lacks
+(:attr:`Group.lacks`); it never hides another. Units: SI throughout (V, A, Ω, rad/s, s,
+V s/rad, N m/A, N m s/rad, rad/s/V, kg m^2).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from minseg_tui.errors import InputError
+from minseg_tui.lab import steps as lab_steps
+from minseg_tui.lab.session import Session
+from minseg_tui.lab.steps import LEVELS
+from minseg_tui.lab.store import SESSION_FILE, SessionsUnreadable
+from minseg_tui.model.check.effects import in_words
+from minseg_tui.units import format_number
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A column of the class table: its ``key`` (also the JSON key), the ``unit`` of its SI
+    value, and its ``label`` with the unit for headers."""
+
+    key: str
+    unit: str
+    words: str
+
+    @property
+    def label(self) -> str:
+        """``key (unit)``, as a column header."""
+        return f"{self.key} ({self.unit})"
+
+
+QUANTITIES: tuple[Quantity, ...] = (
+    Quantity("R", "Ω", "motor resistance (Task 2)"),
+    Quantity("k_v", "V s/rad", "back-emf constant (Task 7)"),
+    Quantity("k_a", "N m/A", "torque constant (Task 8)"),
+    Quantity("f", "N m s/rad", "viscous friction (Task 9)"),
+    Quantity("K", "rad/s/V", "static gain (Task 11)"),
+    Quantity("T_63", "s", "time constant, 63 % reading (Task 12)"),
+    Quantity("T", "s", "time constant, least squares (Task 12)"),
+    Quantity("J", "kg m^2", "inertia (Task 13)"),
+)
+"""The numbers of a row, in the order of the lab."""
+
+JUDGED: tuple[str, ...] = ("R", "k_v", "f", "K", "T_63", "T", "J")
+"""The quantities judged against the class (k_a is 0.65 k_v: judged with k_v)."""
+
+THRESHOLD: float = 3.5
+"""A value is far from the class when it lies more than this many robust standard
+deviations from the class median (the modified z-score of Iglewicz and Hoaglin, 1993).
+
+The robust standard deviation is 1.4826 times the median absolute deviation (MAD): for
+normally scattered values it equals the standard deviation, but one group's typo (i_ss in
+amperes makes k_v and f wrong by orders of magnitude) moves neither the median nor the MAD,
+whereas it would inflate the mean and the standard deviation so much that the typo itself,
+and any other group's slip, would look normal. 3.5 is the usual cut of the modified
+z-score: a class of 30 honest groups has no value beyond it about 99 times in 100, while a
+reading on the wrong range or in the wrong unit is far beyond it."""
+
+MAD_TO_SIGMA: float = 1.4826
+"""MAD times this is the standard deviation of normally scattered values."""
+
+REL_FLOOR: float = 0.02
+"""The robust spread is at least 2 % of the median's size: groups that read the same motor
+alike (a MAD near 0) are not called far apart for a difference of a few per cent."""
+
+MIN_GROUPS: int = 4
+"""Fewer groups with a value than this: the class has no median worth judging by."""
+
+R_RANGE: tuple[float, float] = (3.0, 6.0)
+"""The motor resistance the manual expects, Ω (Task 2)."""
+
+I_SS_MAX: float = 0.100
+"""Above this steady-state current, A, the manual says the wrong thing is measured (Task 5)."""
+
+I_SS_AMPERES: float = 1e-3
+"""A current below this, A (under 1 mA in the mA column), was typed in amperes."""
+
+OMEGA_MAX: float = 15.0
+"""Faster than this motor turns at the lab's voltages, rad/s (it reaches about 7 rad/s)."""
+
+OMEGA_MIN: float = 0.5
+"""Below this the wheel hardly turns, rad/s."""
+
+RPM: float = 2.0 * math.pi / 60.0
+"""One rpm in rad/s."""
+
+
+@dataclass(frozen=True)
+class Own:
+    """One of the group's own values beside the computed one (SI; text for the model):
+    ``rel_diff`` = own / computed - 1 when both are numbers."""
+
+    key: str
+    label: str
+    unit: str
+    own: float | str | None
+    computed: float | str | None
+    rel_diff: float | None
+
+
+@dataclass(frozen=True)
+class Group:
+    """One row of the class view.
+
+    ``id`` is the session folder's name; ``step`` the name of the step the group is at
+    ("Task 12"); ``values`` the numbers of :data:`QUANTITIES` by key (SI, None when not
+    computed); ``cause`` the model check's cause in words ('' when it has not run, "none"
+    when the first-order model explains the log); ``own`` the group's own values against
+    the computed ones; ``lacks`` what keeps a result from being computed (one sentence
+    each); ``damaged`` why the file is damaged or cannot be read (None when it is sound);
+    ``readable`` False when nothing of the session could be read; ``flags`` what stands
+    out, one sentence each."""
+
+    id: str
+    folder: Path
+    members: tuple[str, ...] = ()
+    date: str = ""
+    step: str = ""
+    values: dict[str, float | None] = field(default_factory=dict)
+    cause: str = ""
+    cause_code: str = ""
+    own: tuple[Own, ...] = ()
+    lacks: tuple[str, ...] = ()
+    damaged: str | None = None
+    readable: bool = True
+    flags: tuple[str, ...] = ()
+
+    def value(self, key: str) -> float | None:
+        """The value of ``key`` (SI), None when not computed or not finite."""
+        v = self.values.get(key)
+        return v if v is not None and math.isfinite(v) else None
+
+    def to_json(self) -> dict[str, object]:
+        """The group as ``minseg-tui class --json`` writes it (SI units)."""
+        out: dict[str, object] = {
+            "id": self.id,
+            "folder": str(self.folder),
+            "members": list(self.members),
+            "date": self.date,
+            "step": self.step,
+        }
+        out.update({q.key: self.value(q.key) for q in QUANTITIES})
+        out["cause"] = self.cause
+        out["own"] = [
+            {
+                "key": o.key,
+                "label": o.label,
+                "own": o.own,
+                "computed": o.computed,
+                "rel_diff": o.rel_diff,
+            }
+            for o in self.own
+        ]
+        out["lacks"] = list(self.lacks)
+        out["damaged"] = self.damaged
+        out["flags"] = list(self.flags)
+        return out
+
+
+@dataclass(frozen=True)
+class Spread:
+    """The class's middle for one quantity: ``median``, the robust standard deviation
+    ``sigma`` (1.4826 MAD, at least :data:`REL_FLOOR` of the median), the band
+    median ± :data:`THRESHOLD` sigma outside which a value stands out, and ``n`` groups."""
+
+    key: str
+    median: float
+    sigma: float
+    n: int
+
+    @property
+    def band(self) -> tuple[float, float]:
+        """(low, high) of the band, in the quantity's SI unit."""
+        return (self.median - THRESHOLD * self.sigma, self.median + THRESHOLD * self.sigma)
+
+
+@dataclass(frozen=True)
+class ClassView:
+    """Every group of a sessions folder (sorted by id) and the class's spread per judged
+    quantity (absent where fewer than :data:`MIN_GROUPS` groups have the value)."""
+
+    root: Path
+    groups: tuple[Group, ...]
+    spreads: dict[str, Spread]
+
+    @property
+    def unreadable(self) -> tuple[Group, ...]:
+        """The groups whose session could not be read at all."""
+        return tuple(g for g in self.groups if not g.readable)
+
+    def to_json(self) -> dict[str, object]:
+        """``minseg-tui class --json``: the folder, ``groups[]`` and the class's spreads."""
+        return {
+            "sessions": str(self.root),
+            "groups": [g.to_json() for g in self.groups],
+            "class": {
+                k: {"median": s.median, "sigma": s.sigma, "band": list(s.band), "n": s.n}
+                for k, s in self.spreads.items()
+            },
+            "threshold": THRESHOLD,
+        }
+
+
+def step_name(step_id: str) -> str:
+    """The name a student knows a step by: "Task 12", "Tasks 6-9", "Preparation 3"."""
+    try:
+        title = lab_steps.step(step_id).title
+    except KeyError:
+        return step_id
+    return title.split(":")[0].split(" (")[0]
+
+
+def _num(v: float) -> str:
+    return format_number(v)
+
+
+def _unit(key: str) -> str:
+    return next(q.unit for q in QUANTITIES if q.key == key)
+
+
+def slips(session: Session) -> list[str]:
+    """The slips the lab manual warns about in ``session``'s readings, one sentence each."""
+    out = [f"refused: {e.message}" for e in session.entries.values() if not e.ok]
+    R = session.value("R")
+    if R is not None and not R_RANGE[0] <= R <= R_RANGE[1]:
+        out.append(
+            f"R = {_num(R)} Ω is outside the 3-6 Ω this motor reads (Task 2): a meter on the "
+            "wrong range, a loose motor cable or the current jumper missing"
+        )
+    for lv in LEVELS:
+        i = session.value(f"i_ss@{lv:g}")
+        if i is not None and i > I_SS_MAX:
+            out.append(
+                f"i_ss at {lv:g} V = {_num(i * 1e3)} mA is above 100 mA: the manual says the "
+                "wrong thing is measured or the meter is in the wrong mode (expect 20-50 mA)"
+            )
+        elif i is not None and 0 < i < I_SS_AMPERES:
+            out.append(
+                f"i_ss at {lv:g} V = {_num(i * 1e3)} mA looks like amperes typed into the mA "
+                f"column ({_num(i * 1e6)} mA?): k_v and f follow from it"
+            )
+        w = session.value(f"omega_ss@{lv:g}")
+        if w is not None and abs(w) > OMEGA_MAX and OMEGA_MIN <= abs(w) * RPM <= OMEGA_MAX:
+            out.append(
+                f"omega_ss at {lv:g} V = {_num(w)} rad/s looks like rpm: this motor does not "
+                f"turn that fast; read as rpm it is {_num(w * RPM)} rad/s"
+            )
+        u = session.value(f"u_ss@{lv:g}")
+        if u is not None and u > lv:
+            out.append(
+                f"u_ss at {lv:g} V = {_num(u)} V is above the requested {lv:g} V: the driver "
+                "only loses voltage, so the meter or the request was wrong"
+            )
+    return out
+
+
+def _values(session: Session) -> tuple[dict[str, float | None], tuple[str, ...]]:
+    res = session.results()
+    ident = res.identification
+    st = ident.step if ident is not None else None
+    values: dict[str, float | None] = {
+        "R": session.value("R"),
+        "k_v": ident.k_v if ident else None,
+        "k_a": ident.k_a if ident else None,
+        "f": ident.f if ident else None,
+        "K": st.K if st else None,
+        "T_63": st.T_63 if st else None,
+        "T": st.T if st else None,
+        "J": st.J if st else None,
+    }
+    lacks = list(res.problems)
+    if not session.runs:
+        lacks.append("no step run recorded yet (Task 10)")
+    return values, tuple(dict.fromkeys(lacks))
+
+
+def read_group(folder: Path) -> Group:
+    """The row of the session in ``folder``, opened read-only (no lock, nothing written).
+    A session that cannot be read at all gives a row that says why (``readable`` False)."""
+    try:
+        session = Session.open(folder, readonly=True)
+    except InputError as exc:
+        return Group(
+            folder.name,
+            folder,
+            lacks=(f"cannot be read: {exc}",),
+            damaged=str(exc),
+            readable=False,
+        )
+    cause, code = "", ""
+    values: dict[str, float | None] = {"R": session.value("R")}
+    try:
+        values, lacks = _values(session)
+        mc = session.model_check()
+        if mc.result is not None:
+            code = mc.result.finding.cause
+            cause = in_words(code)
+        elif mc.run is not None:
+            lacks = (*lacks, f"model check: {mc.problem}")
+    except (InputError, ValueError, ArithmeticError, KeyError) as exc:
+        # one session's trouble never hides the others: the row says what went wrong
+        lacks = (f"its numbers cannot be computed: {exc}",)
+    if session.damaged:
+        lacks = (f"damaged: {session.damaged}", *lacks)
+    own = tuple(
+        Own(c.key, c.label, c.unit, c.own, c.computed, c.rel_diff)
+        for c in session.comparisons()
+        if c.own is not None
+    )
+    return Group(
+        id=session.id or folder.name,
+        folder=folder,
+        members=tuple(session.members),
+        date=session.date,
+        step=step_name(session.current_step),
+        values=values,
+        cause=cause,
+        cause_code=code,
+        own=own,
+        lacks=lacks,
+        damaged=session.damaged,
+        flags=tuple(slips(session)),
+    )
+
+
+def _median(xs: Sequence[float]) -> float:
+    s = sorted(xs)
+    n = len(s)
+    return s[n // 2] if n % 2 else 0.5 * (s[n // 2 - 1] + s[n // 2])
+
+
+def spread(key: str, values: Sequence[float]) -> Spread | None:
+    """The class's :class:`Spread` of ``values`` (finite ones), None with fewer than
+    :data:`MIN_GROUPS`."""
+    xs = [v for v in values if math.isfinite(v)]
+    if len(xs) < MIN_GROUPS:
+        return None
+    m = _median(xs)
+    mad = _median([abs(x - m) for x in xs])
+    return Spread(key, m, max(MAD_TO_SIGMA * mad, REL_FLOOR * abs(m)), len(xs))
+
+
+def outlier(s: Spread, value: float) -> str | None:
+    """The sentence for ``value`` of quantity ``s.key`` when it lies outside the class's
+    band, else None."""
+    lo, hi = s.band
+    if lo <= value <= hi or s.sigma <= 0:
+        return None
+    unit = _unit(s.key)
+    times = abs(value - s.median) / s.sigma
+    side = "above" if value > s.median else "below"
+    return (
+        f"{s.key} = {_num(value)} {unit} is far {side} the class (median {_num(s.median)} "
+        f"{unit}, {times:.0f} robust standard deviations away; beyond {THRESHOLD:g} stands out)"
+    )
+
+
+def judge(groups: Sequence[Group]) -> ClassView:
+    """The class view of ``groups``: their spreads and each group's outlier sentences
+    appended to its flags."""
+    spreads: dict[str, Spread] = {}
+    for key in JUDGED:
+        vals = [v for g in groups if (v := g.value(key)) is not None]
+        s = spread(key, vals)
+        if s is not None:
+            spreads[key] = s
+    out = []
+    for g in groups:
+        extra = []
+        for key, s in spreads.items():
+            v = g.value(key)
+            why = None if v is None else outlier(s, v)
+            if why:
+                extra.append(why)
+        out.append(replace(g, flags=(*g.flags, *extra)) if extra else g)
+    root = groups[0].folder.parent if groups else Path()
+    return ClassView(root, tuple(out), spreads)
+
+
+def session_folders(root: Path) -> list[Path]:
+    """The folders under ``root`` that hold a session file, sorted by name.
+
+    InputError (one line) when ``root`` does not exist, is not a folder, cannot be listed
+    or holds no session."""
+    root = Path(root)
+    try:
+        if not root.is_dir():
+            why = "is not a folder" if root.exists() else "does not exist"
+            raise InputError(str(root), None, f"{why}: give the sessions folder (--sessions DIR)")
+        names = sorted(os.listdir(root))
+    except OSError as exc:
+        raise SessionsUnreadable(
+            str(root), None, f"cannot list the sessions folder ({exc.strerror or exc})"
+        ) from None
+    found = []
+    for name in names:
+        folder = root / name
+        try:
+            if folder.is_dir() and os.path.lexists(folder / SESSION_FILE):
+                found.append(folder)
+        except OSError:
+            continue
+    if not found:
+        raise InputError(
+            str(root),
+            None,
+            f"holds no session (no folder with a {SESSION_FILE}); is it the sessions folder?",
+        )
+    return found
+
+
+__all__ = [
+    "JUDGED",
+    "QUANTITIES",
+    "THRESHOLD",
+    "ClassView",
+    "Group",
+    "Own",
+    "Quantity",
+    "Spread",
+    "judge",
+    "outlier",
+    "read_group",
+    "session_folders",
+    "slips",
+    "spread",
+    "step_name",
+]

@@ -1,0 +1,222 @@
+"""The class report as data: the table of groups, what stands out, one figure per quantity.
+
+:func:`build` turns a :class:`~minseg_tui.lab.classview.ClassView` into a
+:class:`~minseg_tui.report.content.Report`, so :mod:`.markdown` and :mod:`.html` render it
+as they render a session's report; :func:`csv_text` writes the table as CSV (SI units,
+full precision). The numbers are the class view's, which are the sessions' own
+(:meth:`~minseg_tui.lab.session.Session.results`): nothing is computed here but layout.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+
+from minseg_tui.lab.classview import JUDGED, QUANTITIES, THRESHOLD, ClassView, Group
+from minseg_tui.lab.entry import format_quantity
+from minseg_tui.report.content import Figure, Figures, Report, Section, Table
+from minseg_tui.report.svg import Band, Line, Mark, plot
+from minseg_tui.units import format_number
+
+FLAGGED_COLOR = "#d62728"
+GROUP_COLOR = "#1f77b4"
+
+
+def _cell(v: float | None) -> str:
+    return "–" if v is None or not math.isfinite(v) else format_number(v)
+
+
+def members(g: Group) -> str:
+    """The group's names, or why there are none."""
+    return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
+
+
+def own_cell(g: Group) -> str:
+    """The group's own values against the computed ones, in one cell: "T_63 +12 %"."""
+    parts = [
+        f"{o.key.removeprefix('own.')} {o.rel_diff * 100:+.0f} %"
+        for o in g.own
+        if o.rel_diff is not None
+    ]
+    return ", ".join(parts) or "–"
+
+
+def table(view: ClassView) -> Table:
+    """The class table: one row per group, the numbers in the units of the header."""
+    header = (
+        "#",
+        "group",
+        "members",
+        "date",
+        "step",
+        *(q.label for q in QUANTITIES),
+        "model check",
+        "own vs computed",
+        "flags",
+    )
+    rows = []
+    for k, g in enumerate(view.groups, 1):
+        rows.append(
+            (
+                str(k),
+                g.id,
+                members(g),
+                g.date or "–",
+                g.step or "–",
+                *(_cell(g.value(q.key)) for q in QUANTITIES),
+                g.cause or "–",
+                own_cell(g),
+                str(len(g.flags)) if g.flags else "",
+            )
+        )
+    return Table(header, tuple(rows))
+
+
+def _figure(view: ClassView, key: str) -> Figure | None:
+    """One quantity across the class: each group a point at its number in the table, the
+    class median and its band (median ± THRESHOLD robust standard deviations)."""
+    q = next(q for q in QUANTITIES if q.key == key)
+    pts = [(k, g.value(key), g) for k, g in enumerate(view.groups, 1)]
+    have = [(k, v, g) for k, v, g in pts if v is not None]
+    if not have:
+        return None
+    s = view.spreads.get(key)
+    lines = []
+    flagged = False
+    for n, (k, v, _) in enumerate(have):
+        out = s is not None and not (s.band[0] <= v <= s.band[1])
+        flagged |= out
+        lines.append(
+            Line(
+                "" if n else "a group",
+                [float(k)],
+                [v],
+                color=FLAGGED_COLOR if out else GROUP_COLOR,
+                dots=True,
+            )
+        )
+    if flagged:
+        lines.append(Line("stands out", [], [], color=FLAGGED_COLOR, dots=True))
+    x = [0.5, len(view.groups) + 0.5]
+    bands, marks = [], []
+    if s is not None:
+        lo, hi = s.band
+        bands.append(Band(f"band: ± {THRESHOLD:g} robust std", x, [lo, lo], [hi, hi]))
+        marks.append(Mark(f"median {format_quantity(s.median, q.unit)}", y=s.median))
+    svg = plot(
+        lines,
+        bands=bands,
+        marks=marks,
+        title=f"{q.key}: {q.words}",
+        xlabel="group (# in the table)",
+        ylabel=q.label,
+        width=440,
+        height=230,
+    )
+    caption = (
+        f"{q.key} of {len(have)} groups"
+        + (
+            f"; class median {format_quantity(s.median, q.unit)}, the band holds what lies "
+            f"within {THRESHOLD:g} robust standard deviations of it"
+            if s is not None
+            else "; too few groups for a class median"
+        )
+        + "."
+    )
+    return Figure(svg, 440, caption)
+
+
+def build(view: ClassView) -> Report:
+    """The class report of ``view``."""
+    n = len(view.groups)
+    sections = [Section("Groups", [table(view)])]
+    sections[0].blocks.append(
+        "Numbers in SI units (the header gives each unit); T_63 is the 63 % reading, T the "
+        "least-squares fit on the encoder angle. 'own vs computed' is how far the group's own "
+        "values are from the computed ones. '–': not computed yet (see What is missing)."
+    )
+    flags = [
+        f"#{k} {g.id} ({members(g)}): {f}" for k, g in enumerate(view.groups, 1) for f in g.flags
+    ]
+    sections.append(
+        Section(
+            "What stands out",
+            [
+                flags or "Nothing stands out.",
+                f"A value stands out when it lies more than {THRESHOLD:g} robust standard "
+                "deviations (1.4826 times the median absolute deviation) from the class "
+                "median: one group's typo moves neither, so it cannot hide another's. The "
+                "slips the lab manual warns about are named on their own.",
+            ],
+        )
+    )
+    lacks = [f"#{k} {g.id}: {'; '.join(g.lacks)}" for k, g in enumerate(view.groups, 1) if g.lacks]
+    sections.append(Section("What is missing", [lacks or "Every session is complete."]))
+    own_rows = tuple(
+        (
+            f"#{k} {g.id}",
+            o.label,
+            _q(o.own, o.unit),
+            _q(o.computed, o.unit),
+            "" if o.rel_diff is None else f"{o.rel_diff * 100:+.0f} %",
+        )
+        for k, g in enumerate(view.groups, 1)
+        for o in g.own
+    )
+    if own_rows:
+        sections.append(
+            Section(
+                "The groups' own values against the computed ones",
+                [Table(("group", "value", "theirs", "computed", "difference"), own_rows)],
+            )
+        )
+    figs = tuple(f for key in ("R", *JUDGED[1:]) if (f := _figure(view, key)) is not None)
+    if figs:
+        sections.append(Section("The class per quantity", [Figures(figs)]))
+    return Report(
+        title="DC-motor lab: the class at a glance",
+        byline=f"{n} group{'s' if n != 1 else ''} in {view.root}",
+        sections=sections,
+    )
+
+
+def _q(v: float | str | None, unit: str) -> str:
+    if v is None or isinstance(v, str):
+        return v or "–"
+    return "–" if not math.isfinite(v) else format_quantity(v, unit)
+
+
+def csv_text(view: ClassView) -> str:
+    """The class table as CSV: one row per group, numbers in SI units at full precision
+    (empty where not computed), flags and what is missing joined by ' | '."""
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(
+        (
+            "id",
+            "members",
+            "date",
+            "step",
+            *(q.label for q in QUANTITIES),
+            "model check cause",
+            "own vs computed",
+            "flags",
+            "lacks",
+        )
+    )
+    for g in view.groups:
+        w.writerow(
+            (
+                g.id,
+                "; ".join(g.members),
+                g.date,
+                g.step,
+                *("" if (v := g.value(q.key)) is None else repr(v) for q in QUANTITIES),
+                g.cause,
+                own_cell(g) if g.own else "",
+                " | ".join(g.flags),
+                " | ".join(g.lacks),
+            )
+        )
+    return buf.getvalue()

@@ -1,0 +1,205 @@
+"""The class view in the lab assistant: every group of the sessions folder, one row each.
+
+Opened from the start screen (F12). The groups are read in a worker thread, each session
+opened read-only (:func:`minseg_tui.lab.classview.read_group`: no lock, nothing written),
+and each row appears as soon as its session is read; once all are in, the class's median
+decides what stands out. Under the table, the highlighted group in full: every number with
+its unit, the model check's cause, the group's own values against the computed ones, what
+stands out and what is missing. Enter opens the group's session read-only (as the start
+screen opens a damaged one); Escape goes back. Everything works from the keyboard at 80x24.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from rich.text import Text
+from textual import on, work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import VerticalScroll
+from textual.message import Message
+from textual.screen import Screen
+from textual.widgets import DataTable, Footer, Static
+
+from minseg_tui.errors import InputError
+from minseg_tui.lab import classread, classview
+from minseg_tui.lab.classview import QUANTITIES, ClassView, Group
+from minseg_tui.lab.entry import format_quantity
+from minseg_tui.ui.screens.start import StartScreen
+from minseg_tui.units import format_number
+
+COLUMNS: tuple[tuple[str, str], ...] = (
+    ("#", "n"),
+    ("group", "members"),
+    ("step", "step"),
+    ("!", "flags"),
+    ("R", "R"),
+    ("k_v", "k_v"),
+    ("K", "K"),
+    ("T", "T"),
+    ("J", "J"),
+)
+"""The table's columns (header, what it holds), narrow enough for 80 columns: ``!`` counts
+what stands out; the numbers are in SI units (the group's detail below gives each unit)."""
+
+
+def _num(v: float | None) -> str:
+    return "–" if v is None else format_number(v)
+
+
+def _members(g: Group) -> str:
+    return ", ".join(g.members) or ("(cannot be read)" if not g.readable else g.id)
+
+
+def row(k: int, g: Group) -> tuple[str, ...]:
+    """The table's cells for group number ``k``."""
+    return (
+        str(k),
+        _members(g),
+        g.step or "–",
+        str(len(g.flags)) if g.flags else ("?" if not g.readable else ""),
+        *(_num(g.value(key)) for key in ("R", "k_v", "K", "T", "J")),
+    )
+
+
+def detail(k: int, g: Group) -> Text:
+    """Everything of group number ``k``, as lines of text (no markup: names are the
+    students' own)."""
+    out = Text()
+    out.append(f"#{k} {_members(g)}", style="bold")
+    out.append(f"  {g.date or 'no date'} · at {g.step or '?'} · {g.id}\n")
+    nums = [
+        f"{q.key} {'–' if (v := g.value(q.key)) is None else format_quantity(v, q.unit)}"
+        for q in QUANTITIES
+    ]
+    out.append(" · ".join(nums) + "\n")
+    out.append(f"model check: {g.cause or 'not run'}\n")
+    for o in g.own:
+        if o.rel_diff is not None:
+            out.append(f"own {o.label}: {o.rel_diff * 100:+.0f} % from the computed value\n")
+    for f in g.flags:
+        out.append(f"! {f}\n", style="bold")
+    for x in g.lacks:
+        out.append(f"- lacks: {x}\n")
+    if not g.flags and not g.lacks:
+        out.append("Nothing stands out; nothing is missing.\n")
+    return out
+
+
+class ClassScreen(Screen[None]):
+    """The class view of ``root`` (a sessions folder)."""
+
+    BINDINGS = [
+        Binding("escape", "back", "Back"),
+        Binding("enter", "open_group", "Open read-only", priority=True),
+    ]
+
+    @dataclass
+    class GroupRead(Message):
+        """A group's row is ready (its number in the table from 1)."""
+
+        number: int
+        group: Group
+
+    @dataclass
+    class ClassRead(Message):
+        """Every group is read and judged against the class (or ``error``: why not)."""
+
+        view: ClassView | None
+        error: str = ""
+
+    def __init__(self, root: Path) -> None:
+        super().__init__()
+        self.root = Path(root)
+        self.groups: list[Group] = []
+        self.done = False
+
+    def compose(self) -> ComposeResult:
+        yield Static(Text(f"Class view of {self.root} — reading the sessions…"), id="class-title")
+        table: DataTable[Text] = DataTable(id="class-table", cursor_type="row", zebra_stripes=True)
+        yield table
+        with VerticalScroll(id="class-detail"):
+            yield Static("", id="class-group")
+        yield Footer()
+
+    def on_mount(self) -> None:
+        table = self.query_one(DataTable)
+        for header, key in COLUMNS:
+            table.add_column(header, key=key)
+        table.focus()
+        self._read()
+
+    @work(thread=True, exclusive=True, group="class", name="read the class")
+    def _read(self) -> None:
+        """Worker: read each session (read-only), post its row, then judge the class."""
+        try:
+            folders = classview.session_folders(self.root)
+        except InputError as exc:
+            self.post_message(self.ClassRead(None, str(exc)))
+            return
+        groups = []
+        for k, folder in enumerate(folders, 1):
+            if not self.is_attached:
+                return  # the screen was left: the rest is not wanted
+            g = classread.read(folder)
+            groups.append(g)
+            self.post_message(self.GroupRead(k, g))
+        view = classview.judge(groups)
+        self.post_message(self.ClassRead(view))
+
+    @on(GroupRead)
+    def _group_read(self, event: GroupRead) -> None:
+        self.groups.append(event.group)
+        table = self.query_one(DataTable)
+        table.add_row(*map(Text, row(event.number, event.group)), key=str(event.number))
+        if event.number == 1:
+            self._show(0)
+
+    @on(ClassRead)
+    def _class_read(self, event: ClassRead) -> None:
+        title = self.query_one("#class-title", Static)
+        if event.view is None:
+            title.update(Text(f"Class view: {event.error}"))
+            return
+        self.done = True
+        self.groups = list(event.view.groups)
+        table = self.query_one(DataTable)
+        for k, g in enumerate(self.groups, 1):
+            table.update_cell(str(k), "flags", Text(row(k, g)[3]))
+        flagged = sum(1 for g in self.groups if g.flags)
+        title.update(
+            Text(
+                f"Class view of {self.root}: {len(self.groups)} groups, {flagged} with something "
+                "that stands out. ↑↓ pick a group, Enter opens it read-only, Esc goes back."
+            )
+        )
+        self._show(table.cursor_row)
+
+    def _show(self, index: int) -> None:
+        if 0 <= index < len(self.groups):
+            self.query_one("#class-group", Static).update(detail(index + 1, self.groups[index]))
+
+    @on(DataTable.RowHighlighted)
+    def _highlighted(self, event: DataTable.RowHighlighted) -> None:
+        self._show(event.cursor_row)
+
+    @on(DataTable.RowSelected)
+    async def _selected(self, event: DataTable.RowSelected) -> None:
+        await self.action_open_group()
+
+    async def action_open_group(self) -> None:
+        """Open the highlighted group's session read-only in the lab (back on the start
+        screen first, which is where the app opens a session from)."""
+        index = self.query_one(DataTable).cursor_row
+        if not 0 <= index < len(self.groups) or not self.groups[index].readable:
+            self.notify("this session cannot be read; see what it lacks below", timeout=5)
+            return
+        folder = self.groups[index].folder
+        await self.app.pop_screen()
+        self.app.post_message(StartScreen.Resume(str(folder), readonly=True))
+
+    async def action_back(self) -> None:
+        """Back to the start screen."""
+        await self.app.pop_screen()

@@ -1,0 +1,137 @@
+"""The model check on logs of the independent generator (tests/model/physics_gen.py), written
+from the physics and not from the check's own simulation: what the check says about the
+artefacts of a logger and about a hand on the wheel. Tuning seeds only (the held-out seeds
+are for benchmarks/model_check_independent.py's figures).
+"""
+
+import numpy as np
+import pytest
+
+from minseg_tui.model.check import check, text
+from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, make
+
+
+def named(r):
+    return sorted(c for c in [r.finding.cause, *(o.cause for o in r.finding.others)] if c != "none")
+
+
+def kinds(r):
+    return [a.kind for a in r.anomalies]
+
+
+def test_the_generator_keeps_its_held_out_seeds_apart():
+    assert not set(TUNING_SEEDS) & set(HELD_OUT_SEEDS)
+    a, b = make(7, ("coulomb_friction",)), make(7, ("coulomb_friction",))
+    assert np.array_equal(a.omega, b.omega)  # seeded
+    assert a.causes["coulomb_friction"] > 0 and a.T > 0
+
+
+@pytest.mark.parametrize(("seed", "causes"), [(21, ("coulomb_friction",)), (25, ())])
+def test_a_spike_after_a_stall_of_the_logger_is_an_artefact_not_a_hand(seed, causes):
+    log = make(seed, causes, artefacts=True)
+    r = check(log.t, log.u, log.omega)
+    assert "disturbance" not in kinds(r)
+    art = [a for a in r.anomalies if a.kind == "logging_artefact"]
+    assert len(art) == 1
+    # it sits at the stall: the row after the gap, or the row before it the smoothing adds
+    stall = log.artefact_rows[0]
+    assert art[0].row is not None and stall - 1 <= art[0].row <= stall + 1
+    assert "right after a gap of" in art[0].text and "not the wheel" in art[0].text
+    assert named(r) == sorted(causes)
+
+
+def test_switch_on_glitch_rows_are_named_and_left_out_of_every_figure():
+    log = make(21, ("coulomb_friction",), artefacts=True)
+    r = check(log.t, log.u, log.omega)
+    glitch = [a for a in r.anomalies if a.kind == "start_glitch"]
+    assert len(glitch) == 1 and "starts_moving" not in kinds(r)
+    assert glitch[0].row_end is not None and glitch[0].row_end >= max(
+        x for x in log.artefact_rows if x < 5
+    )
+    # the headline covers the rows the fit used, and says so
+    assert r.baseline.rows < r.t.size and r.extended.rows == r.baseline.rows
+    assert np.all(r.omega == log.omega)  # the speed as logged
+    report = text(r)
+    assert f"over the {r.baseline.rows} of {r.t.size} rows the fit used" in report
+    assert r.to_dict()["baseline"]["rows"] == r.baseline.rows
+    # over every row (the glitch and the stall's spike in) the error would be twice as large
+    err_all = float(np.sqrt(np.mean((r.omega - r.baseline_pred) ** 2)))
+    assert r.baseline.rmse < 0.6 * err_all
+
+
+def test_a_clean_log_figures_cover_every_row():
+    log = make(3, (), artefacts=False)
+    r = check(log.t, log.u, log.omega)
+    assert r.baseline.rows == r.t.size
+    assert f"over all {r.t.size} rows" in text(r)
+
+
+def ringing_log():
+    """A motor whose speed rings after every step (an elastic load: speed/input a second-order
+    system, natural frequency 25 rad/s, damping 0.25, K 10 rad/s/V), 15 s at 10 ms, 720-count
+    Euler speed: no cause of the check models a ringing, so every edge is missed alike."""
+    ts, n = 0.01, 1500
+    t = np.arange(n) * ts
+    u = np.zeros(n)
+    levels = [0, 3, 0, 4, 1.5, 0, 3.5, 0, 2.5, 0, 4, 0, 3, 0]
+    for i, level in enumerate(levels):
+        u[int(i * n / len(levels)) :] = level
+    wn, zeta, k_gain, dt = 25.0, 0.25, 10.0, 1e-4
+    w = dw = theta = 0.0
+    per = int(round(ts / dt))
+    angle = []
+    for j in range(n * per):
+        if j % per == 0:
+            angle.append(theta)
+        acc = wn * wn * (k_gain * u[j // per] - w) - 2 * zeta * wn * dw
+        w, dw, theta = w + dt * dw, dw + dt * acc, theta + dt * w
+    counts = np.floor(np.array(angle) * 720 / (2 * np.pi) + 0.3)
+    return t, u, np.diff(counts, prepend=counts[0]) * 2 * np.pi / 720 / ts
+
+
+def test_a_departure_after_every_edge_is_the_models_miss_not_a_hand():
+    t, u, y = ringing_log()
+    r = check(t, u, y)
+    assert "disturbance" not in kinds(r)
+    miss = [a for a in r.anomalies if a.kind == "model_miss"]
+    assert len(miss) == 1
+    rising = int(np.count_nonzero(np.diff(u) > 0))
+    assert miss[0].size >= rising  # every rising edge (and the step down to 1.5 V alike)
+    assert "edge after edge is what the model misses there, not a hand" in miss[0].text
+    # and the finding says the model misses, instead of naming a cause for it
+    assert "misses" in [c.kind for c in r.finding.caveats]
+
+
+def test_when_a_different_pair_fits_about_as_well_the_check_says_it_cannot_tell():
+    # friction and a first-order IIR filter on the speed (a pole on the measurement): the
+    # check prefers an average of the speed with friction, and says the true pair fits as well
+    log = make(204, ("coulomb_friction", "second_pole"))
+    r = check(log.t, log.u, log.omega)
+    assert ["coulomb_friction", "second_pole"] in [sorted(a) for a in r.finding.ambiguous_with]
+    told = [c for c in r.finding.caveats if c.kind == "cannot_tell" and "this log cannot" in c.text]
+    assert len(told) == 1
+    assert "dry friction + second pole" in told[0].text and "would" in told[0].text
+    assert r.to_dict()["finding"]["ambiguous_with"] == r.finding.ambiguous_with
+
+
+def test_never_a_pure_delay_when_another_explanation_fits_nearly_as_well():
+    log = make(205, ("second_pole",))
+    r = check(log.t, log.u, log.omega)
+    assert r.finding.cause == "dead_time" and r.finding.ambiguous_with
+    assert "a pure delay" not in text(r)
+    assert "cannot tell dead time from" in text(r)
+
+
+def test_an_averaged_speed_leaves_out_the_rows_a_stall_of_the_logger_reaches():
+    # an 11-tap average of the speed and a 40 ms stall whose row read the counts late: the
+    # average carries the wrong read into the next 11 rows; left out, the fit is exact again
+    log = make(503, ("velocity_filter",))
+    assert "stall" in log.how
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == ["velocity_filter"]
+    assert abs(r.extended.params["taps"] - 11) <= 1
+    assert r.extended.params["T"] == pytest.approx(log.T, rel=0.02)
+    left = [a for a in r.anomalies if a.kind == "gap_rows_left_out"]
+    assert len(left) == 1 and "were left out of the fit" in left[0].text
+    assert "late_step" not in kinds(r)  # the stall's read is no step that started late
+    assert r.baseline.rows < r.t.size
