@@ -188,7 +188,7 @@ def capture_live(session: Session, level: float, t: ArrayLike, count: ArrayLike)
     return _verdict(e, "")
 
 
-REVEAL_KEY = "F12"
+REVEAL_KEY = "Ctrl+R"
 """The key a lab assistant presses to show a step's computed values before the group answers."""
 
 

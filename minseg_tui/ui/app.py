@@ -93,7 +93,7 @@ KEYS: list[tuple[str, str]] = [
     ("F8", "export the report (Markdown, HTML, CSV)"),
     ("F9", "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)"),
     ("F10", "board check: does the wheel turn, does the count follow?"),
-    ("F12", "lab assistant: show the computed values before the answers"),
+    ("Ctrl+R", "lab assistant: show the computed values before the answers"),
     ("Alt+← →", "previous / next step of the log (Tasks 11-15)"),
     ("Ctrl+← →", "the same, outside a text entry"),
     ("[ ] z", "the same on the focused plot; z zooms"),
@@ -125,7 +125,7 @@ PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
     ("f9", "zoom_next", "Zoom", "zooming the step log"),
     ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
     ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
-    ("f12", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
+    ("ctrl+r", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
 )
 """Keys that act on the current step's panel: (keys, the panel's method, footer label, what it
 is; no label: not in the footer). The footer shows a key on the steps whose panel offers the
@@ -1069,7 +1069,7 @@ class LabApp(App[None]):
                 "reveal",
                 "Reveal computed values",
                 "Lab assistant: show this step's values before the group answers; the report "
-                "says so (F12)",
+                "says so (Ctrl+R)",
                 self.action_reveal,
             ),
         ):

@@ -111,7 +111,7 @@ class CaptureRequested(Message):
 
 @dataclass
 class RevealRequested(Message):
-    """F12 (a lab assistant): show the computed values of step ``step_id`` before the group
+    """Ctrl+R (a lab assistant): show the computed values of step ``step_id`` before the group
     has entered its own."""
 
     step_id: str

@@ -61,7 +61,7 @@ def test_the_computed_values_wait_for_the_groups_own(tmp_path):
         st = s.results().identification.step  # type: ignore[union-attr]
         K = views._fmt(st.K, "rad/s/V")
         text = _lines(s, "task11")
-        assert f"K = {K}" not in text and "K: shown once you enter yours (F12" in text
+        assert f"K = {K}" not in text and "K: shown once you enter yours (Ctrl+R" in text
         assert "T (63 %)" not in text and "J =" not in text and "omega' =" not in text
         assert "omega at 5 V =" not in text and "u_ss = " in text  # their own table value stays
         assert {"own.K", "own.T", "own.omega_step"} <= views.results(s, "task11").hidden

@@ -1,5 +1,5 @@
 """Issue 20, items 1-2 in the TUI: the group's own value before the computed one on Tasks
-11-15, F12 for a lab assistant, and comparisons made the group's way (Pilot, real session
+11-15, Ctrl+R for a lab assistant, and comparisons made the group's way (Pilot, real session
 folder, the seeded plant's step run)."""
 
 from __future__ import annotations
@@ -31,15 +31,15 @@ async def test_task11_shows_K_only_once_the_group_has_typed_its_own(quiet):
         assert "your K: yours 1.9 · computed" in _text(app, "#compare")
 
 
-async def test_f12_reveals_the_step_and_the_session_keeps_it(quiet):
+async def test_ctrl_r_reveals_the_step_and_the_session_keeps_it(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task12")
         assert app.check_action("panel", ("reveal",))
-        assert app.screen.active_bindings["f12"].binding.description == "Reveal"
-        assert any(k == "F12" for k, _ in KEYS)  # in F1's list
+        assert app.screen.active_bindings["ctrl+r"].binding.description == "Reveal"
+        assert any(k == "Ctrl+R" for k, _ in KEYS)  # in F1's list
         assert "T (63 %)" not in _text(app, "#results-lines")
-        await pilot.press("f12")
+        await pilot.press("ctrl+r")  # from within the entry of T
         await settle(pilot)
         assert "T (63 %)" in _text(app, "#results-lines")
         assert "revealed before answering" in _text(app, "#compare")

@@ -129,7 +129,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
         )
 
     def reveal(self) -> None:
-        """F12 (a lab assistant): show this step's computed values before the group answers."""
+        """Ctrl+R (a lab assistant): show this step's computed values before the group answers."""
         self.post_message(RevealRequested(self.step.id))
 
     def pick(self, delta: int) -> None:

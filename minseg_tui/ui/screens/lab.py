@@ -599,7 +599,7 @@ class LabScreen(StatusScreen):
 
     @on(RevealRequested)
     def _reveal(self, event: RevealRequested) -> None:
-        """F12: the step's computed values shown before the group answered (the report says so)."""
+        """Ctrl+R: the step's computed values shown before the group answered (the report says so)."""
         event.stop()
         with self.session as s:
             keys = s.reveal(event.step_id)
