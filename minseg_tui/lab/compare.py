@@ -136,9 +136,9 @@ def compare_fields(
             elif fld.key == "own.T":
                 computed, lsq = st.T_63, st.T
                 how = "the 63 % reading, median over the rising steps"
-                why = st.T_63_note or (
-                    "The least-squares T fits the whole rise of every step; the 63 % reading "
-                    "takes one sampled point of it."
+                why = (
+                    "The 63 % reading takes one sampled point of each rise, which the sampling "
+                    "moves; the least-squares T fits the whole rise with the sampling modelled."
                 )
             elif fld.key == "own.J":
                 T_used, how = (

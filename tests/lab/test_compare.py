@@ -169,3 +169,12 @@ def test_no_example_in_a_hint_is_an_answer(tmp_path):
                 for a in answers[f.key]:
                     assert not (a / 1.5 < x < a * 1.5), (sid, f.hint, a)
     assert seen >= 6
+
+
+def test_T_is_compared_with_the_63_percent_reading_and_the_fit_stands_beside_it(tmp_path):
+    with _lab(tmp_path) as s:
+        st = s.results().identification.step  # type: ignore[union-attr]
+        s.enter("own.T", "57 ms")
+        (c,) = s.comparisons("task12")
+        assert c.computed == st.T_63 and c.least_squares == st.T
+        assert c.why.count(". ") == 0 and "sampling" in c.why  # one sentence
