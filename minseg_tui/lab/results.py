@@ -82,8 +82,12 @@ class Results:
 
 @dataclass(frozen=True)
 class Comparison:
-    """A student's own reading beside the computed value (same SI unit; ``unit`` is the
-    form unit for display); rel_diff = own / computed - 1 when both are numbers."""
+    """A student's own reading beside the value computed the group's way (same SI unit;
+    ``unit`` is the form unit for display); rel_diff = own / computed - 1 when both are
+    numbers. ``how``: how the group's way was computed ("from your T = 56.8 ms"; '' when
+    it is the program's value); ``least_squares``: the program's least-squares value when it
+    differs from the group's way (None otherwise), ``why`` one sentence on why the two
+    differ; ``revealed_early``: a lab assistant showed the value before the group answered."""
 
     key: str
     label: str
@@ -91,6 +95,10 @@ class Comparison:
     own: float | str | None
     computed: float | str | None
     rel_diff: float | None
+    how: str = ""
+    least_squares: float | str | None = None
+    why: str = ""
+    revealed_early: bool = False
 
 
 @dataclass(frozen=True)

@@ -370,9 +370,10 @@ SESSION = Record(
         "captures": MapOf(CAPTURE),
         "runs": ListOf(RUN),
     },
-    optional={"selected_run": OneOf((None, Text()))},
+    optional={"selected_run": OneOf((None, Text())), "revealed": ListOf(Text())},
 )
-"""session.json, whole."""
+"""session.json, whole (``revealed``: fields of Tasks 11-15 shown before the group
+answered them)."""
 
 PARTIAL_HEADER = Record(
     required={},

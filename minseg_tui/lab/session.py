@@ -48,6 +48,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab import answers
 from minseg_tui.lab import steps as lab_steps
 from minseg_tui.lab.capture import DEFAULT_WINDOW, Capture, capture
+from minseg_tui.lab.compare import compare_fields, reveal_keys
 from minseg_tui.lab.entries import Entry, parsed_values, read_entry, revise
 from minseg_tui.lab.expr import Formula
 from minseg_tui.lab.files import read_step_log
@@ -630,25 +631,32 @@ class Session:
         return out
 
     def comparisons(self, step_id: str | None = None) -> list[Comparison]:
-        """Each of the group's own readings (fields with ``compare``) beside the computed value."""
-        res = self.results()
+        """Each of the group's own readings (fields with ``compare``) beside the value
+        computed the group's way and the least-squares one (:func:`lab.compare.compare_fields`)."""
         fields = lab_steps.step(step_id).fields if step_id else [f for s in STEPS for f in s.fields]
-        out = []
-        for fld in fields:
-            if not fld.compare:
-                continue
-            e = self._entries.get(fld.key)
-            own: float | str | None
-            if fld.kind == "text":
-                own = e.text if e and e.text.strip() else None
-            else:
-                own = self.value(fld.key)
-            computed = res.lookup(fld.compare)
-            rel = None
-            if isinstance(own, float) and isinstance(computed, float) and computed != 0:
-                rel = own / computed - 1.0
-            out.append(Comparison(fld.key, fld.label, fld.unit, own, computed, rel))
-        return out
+
+        def text(key: str) -> str | None:
+            e = self._entries.get(key)
+            return e.text if e and e.text.strip() else None
+
+        return compare_fields(fields, self.value, text, self.results(), self.revealed())
+
+    def answered(self) -> set[str]:
+        """The keys of the fields the group has answered (an accepted, non-empty entry)."""
+        return {k for k, e in self._entries.items() if e.ok and e.text.strip()}
+
+    def revealed(self) -> set[str]:
+        """The fields of Tasks 11-15 a lab assistant revealed before the group answered."""
+        return set(self._data.get("revealed", []))
+
+    def reveal(self, step_id: str) -> list[str]:
+        """Show the computed values of step ``step_id`` before the group answered them:
+        the fields so marked (saved; the report says "revealed before answering")."""
+        keys = reveal_keys(lab_steps.step(step_id).fields, self.answered())
+        if keys:
+            self._data["revealed"] = sorted(self.revealed() | set(keys))
+            self._changed()
+        return keys
 
     # -- runs ----------------------------------------------------------------------------------
 

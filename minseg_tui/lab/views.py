@@ -24,6 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab import capture as lab_capture
+from minseg_tui.lab import compare as lab_compare
 from minseg_tui.lab.entry import UNITS, format_quantity
 from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import step
@@ -187,10 +188,27 @@ def capture_live(session: Session, level: float, t: ArrayLike, count: ArrayLike)
     return _verdict(e, "")
 
 
+REVEAL_KEY = "Ctrl+R"
+"""The key a lab assistant presses to show a step's computed values before the group answers."""
+
+
+def hidden(session: Session) -> set[str]:
+    """The fields of Tasks 11-15 whose computed value is still hidden from the group (the
+    lab's policy, :func:`minseg_tui.lab.compare.concealed`)."""
+    return lab_compare.concealed(policy(session), session.answered(), session.revealed())
+
+
+def policy(session: Session) -> lab_compare.Policy:
+    """The lab's policy, from lab.toml in the folder that holds the session."""
+    return lab_compare.read_policy(session.folder.parent)
+
+
 def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], ...]:
-    """The group's own readings on step ``step_id`` beside the computed values: (label,
-    yours, computed with the relative difference)."""
+    """The group's own readings on step ``step_id`` beside the values computed their way:
+    (label, yours, computed with the relative difference; then, on a second line, the
+    least-squares value and why the two differ). A value still hidden says how to see it."""
     out = []
+    conceal = hidden(session)
     for c in session.comparisons(step_id):
         typed_ = session.entry(c.key)
         own = (
@@ -202,6 +220,9 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             if typed_ is not None and typed_.ok
             else _fmt(c.own, c.unit)
         )
+        if c.key in conceal:
+            out.append((c.label, own, f"shown once you enter yours ({REVEAL_KEY}: lab assistant)"))
+            continue
         # the computed value in the unit the group typed theirs in ("57 ms" beside "56.91 ms")
         unit = c.unit
         if typed_ is not None and typed_.ok and typed_.unit and typed_.unit in UNITS:
@@ -212,8 +233,17 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             if c.computed is None
             else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, unit))
         )
+        if c.how:
+            comp += f" ({c.how})"
         if c.rel_diff is not None:
-            comp += f" ({c.rel_diff:+.0%})"
+            comp += f": {lab_compare.format_diff(c.rel_diff)}"
+        if c.revealed_early:
+            comp += " · revealed before answering"
+        if c.least_squares is not None:
+            lsq = (
+                c.least_squares if isinstance(c.least_squares, str) else _fmt(c.least_squares, unit)
+            )
+            comp += f"\n  least squares: {lsq}. {c.why}".rstrip()
         out.append((c.label, own, comp))
     return tuple(out)
 
@@ -324,6 +354,9 @@ class RunView:
     T_ci: tuple[float, float] | None
     interruption: str = ""
     """What interrupted the run, in words ("" for a complete run)."""
+    T_hidden: bool = False
+    """The T readings are left out (None): Task 12's answer, hidden until the group has
+    entered its own T (:func:`hidden`)."""
 
 
 def _median(values: Sequence[float | None]) -> float | None:
@@ -342,7 +375,7 @@ def _t63(log: StepLog) -> float | None:
 RUN_VIEWS_KEPT = 8
 """How many run views :func:`runs` keeps (two a session)."""
 
-_run_views: dict[tuple[str, str, int, bool], RunView] = {}
+_run_views: dict[tuple[object, ...], RunView] = {}
 """The run views built, by (session folder, run, samples, interrupted): a recorded run's log
 does not change, and its three fits took about 0.4 s every time Task 10 was shown."""
 
@@ -390,7 +423,17 @@ def runs(session: Session) -> tuple[RunView, ...]:
         _run_views[key] = out[-1]
         while len(_run_views) > RUN_VIEWS_KEPT:
             del _run_views[next(iter(_run_views))]
-    return tuple(out)
+    if "own.T" not in hidden(session):
+        return tuple(out)
+    shown = []  # the readings are Task 12's answer: left out, each view made once too
+    for v in out:
+        hidden_key = (str(session.folder), v.name, v.samples, v.interrupted, "T hidden")
+        if hidden_key not in _run_views:
+            _run_views[hidden_key] = replace(
+                v, T_63=None, T_63_lab=None, T_ls=None, T_ci=None, T_hidden=True
+            )
+        shown.append(_run_views[hidden_key])
+    return tuple(shown)
 
 
 # -- Tasks 11-15: the results ---------------------------------------------------------------------
@@ -457,6 +500,9 @@ class ResultsView:
     lines: tuple[str, ...]
     compare: tuple[tuple[str, str, str], ...] = ()
     problems: tuple[str, ...] = ()
+    hidden: frozenset[str] = frozenset()
+    """Fields of Tasks 11-15 whose computed value the group has not seen yet: the plot
+    leaves their readings out too (own.omega_step: the steady speed; own.T: the crossing)."""
 
 
 def results(session: Session, step_id: str) -> ResultsView:
@@ -475,21 +521,54 @@ def results(session: Session, step_id: str) -> ResultsView:
     steps: tuple[StepWindow, ...] = ()
     if ident is not None and ident.step is not None:
         st = ident.step
+        conceal = hidden(session)
+
+        def shown(key: str, line: str, what: str, task: str) -> str:
+            if key not in conceal:
+                return line
+            if key in keys_here:
+                return f"{what}: shown once you enter yours ({REVEAL_KEY}: lab assistant)"
+            return f"{what}: shown once you enter yours on {task}"
+
+        keys_here = {f.key for f in step(step_id).fields}
         lines += [
-            f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s')}   "
-            f"u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
-            f"K = {_fmt(st.K, 'rad/s/V')}"
-            f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else ', 95 % CI not determined by this log'}",
-            f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
-            f"{_ci(st.T_ci, 's') if st.T_determined else ', 95 % CI not determined by this log'}",
-            *([st.T_63_note] if st.T_63_note else []),
-            f"J = {_fmt(st.J, 'kg m^2')}",
-            f"model: {st.model_equation(_num)}",
-            f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s')}",
+            shown(
+                "own.omega_step",
+                f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s')}",
+                "omega_ss in the steps",
+                "Task 11",
+            )
+            + f"   u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
+            shown(
+                "own.K",
+                f"K = {_fmt(st.K, 'rad/s/V')}"
+                f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else ', 95 % CI not determined by this log'}",
+                "K",
+                "Task 11",
+            ),
+            shown(
+                "own.T",
+                f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
+                f"{_ci(st.T_ci, 's') if st.T_determined else ', 95 % CI not determined by this log'}",
+                "T",
+                "Task 12",
+            ),
+            *([st.T_63_note] if st.T_63_note and "own.T" not in conceal else []),
+            shown("own.J", f"J = {_fmt(st.J, 'kg m^2')}", "J", "Task 13"),
+            shown("own.model", f"model: {st.model_equation(_num)}", "the model", "Task 14"),
+            shown(
+                "own.omega_5",
+                f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s')}",
+                "omega at 5 V",
+                "Task 15",
+            ),
         ]
         ts = log.ts if log is not None else 0.0
         steps = tuple(step_window(s, st.T, ts) for s in st.steps)
     problems = list(res.problems)
+    rule = policy(session)
+    if rule.problem:
+        problems.append(rule.problem)
     used = next((r for r in session.runs if r.name == res.run), None)
     if used is not None and used.interrupted:
         problems.append(
@@ -505,6 +584,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         tuple(lines),
         compare,
         tuple(problems),
+        frozenset(hidden(session)),
     )
 
 

@@ -14,6 +14,7 @@ import io
 import math
 
 from minseg_tui.lab.classview import JUDGED, QUANTITIES, THRESHOLD, ClassView, Group
+from minseg_tui.lab.compare import format_diff
 from minseg_tui.lab.entry import format_quantity
 from minseg_tui.report.content import Figure, Figures, Report, Section, Table
 from minseg_tui.report.svg import Band, Line, Mark, plot
@@ -35,7 +36,7 @@ def members(g: Group) -> str:
 def own_cell(g: Group) -> str:
     """The group's own values against the computed ones, in one cell: "T_63 +12 %"."""
     parts = [
-        f"{o.key.removeprefix('own.')} {o.rel_diff * 100:+.0f} %"
+        f"{o.key.removeprefix('own.')} {format_diff(o.rel_diff)}"
         for o in g.own
         if o.rel_diff is not None
     ]
@@ -159,7 +160,7 @@ def build(view: ClassView) -> Report:
             o.label,
             _q(o.own, o.unit),
             _q(o.computed, o.unit),
-            "" if o.rel_diff is None else f"{o.rel_diff * 100:+.0f} %",
+            "" if o.rel_diff is None else format_diff(o.rel_diff),
         )
         for k, g in enumerate(view.groups, 1)
         for o in g.own

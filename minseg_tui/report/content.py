@@ -15,6 +15,7 @@ import numpy as np
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab import steps as lab_steps
+from minseg_tui.lab.compare import ANSWERED_FIRST, format_diff
 from minseg_tui.lab.entry import format_quantity, format_reading
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.views import step_window
@@ -241,21 +242,55 @@ def _step_section(session: Session) -> Section:
         if zoom is not None:
             sec.blocks.append(zoom)
     comps = session.comparisons()
-    if any(c.own is not None for c in comps):
+    if any(c.own is not None or c.revealed_early for c in comps):
         rows = []
+        notes = []
         for c in comps:
-            if c.own is None:
+            if c.own is None and not c.revealed_early:
                 continue
-            own = c.own if isinstance(c.own, str) else _reading(c.own, c.unit)
+            own = (
+                "–"
+                if c.own is None
+                else c.own
+                if isinstance(c.own, str)
+                else _reading(c.own, c.unit)
+            )
             comp = (
                 c.computed
                 if isinstance(c.computed, str) or c.computed is None
                 else _q(c.computed, c.unit)
             )
-            diff = "" if c.rel_diff is None else f"{c.rel_diff * 100:+.0f} %"
-            rows.append((c.label, own, comp or "–", diff))
-        sec.blocks.append("The group's own readings beside the computed values:")
-        sec.blocks.append(Table(("reading", "yours", "computed", "difference"), tuple(rows)))
+            if c.how:
+                comp = f"{comp} ({c.how})"
+            lsq = (
+                ""
+                if c.least_squares is None
+                else c.least_squares
+                if isinstance(c.least_squares, str)
+                else _q(c.least_squares, c.unit)
+            )
+            diff = "" if c.rel_diff is None else format_diff(c.rel_diff)
+            shown = (
+                "revealed before answering"
+                if c.revealed_early
+                else "after answering"
+                if c.key in ANSWERED_FIRST
+                else ""
+            )
+            rows.append((c.label, own, comp or "–", diff, lsq or "–", shown))
+            if lsq and c.why:
+                notes.append(f"{c.label}: {c.why}")
+        sec.blocks.append(
+            "The group's own readings beside the values computed their way (J from their "
+            "own T, K from their omega_ss and u_ss, ...), with the least-squares value:"
+        )
+        sec.blocks.append(
+            Table(
+                ("reading", "yours", "computed your way", "difference", "least squares", "shown"),
+                tuple(rows),
+            )
+        )
+        sec.blocks.extend(notes)
     return sec
 
 

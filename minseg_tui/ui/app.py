@@ -93,6 +93,7 @@ KEYS: list[tuple[str, str]] = [
     ("F8", "export the report (Markdown, HTML, CSV)"),
     ("F9", "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)"),
     ("F10", "board check: does the wheel turn, does the count follow?"),
+    ("Ctrl+R", "lab assistant: show the computed values before the answers"),
     ("Alt+← →", "previous / next step of the log (Tasks 11-15)"),
     ("Ctrl+← →", "the same, outside a text entry"),
     ("[ ] z", "the same on the focused plot; z zooms"),
@@ -133,6 +134,7 @@ PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
     ("f9", "zoom_next", "Zoom", "zooming the step log"),
     ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
     ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
+    ("ctrl+r", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
 )
 """Keys that act on the current step's panel: (keys, the panel's method, footer label, what it
 is; no label: not in the footer). The footer shows a key on the steps whose panel offers the
@@ -1002,6 +1004,9 @@ class LabApp(App[None]):
     def action_zoom_next(self) -> None:
         self._panel_action("zoom_next", "zooming the step log")
 
+    def action_reveal(self) -> None:
+        self._panel_action("reveal", "revealing computed values")
+
     def action_export(self) -> None:
         if self.session is None:
             self.notify("start or resume a session first", severity="warning")
@@ -1082,6 +1087,13 @@ class LabApp(App[None]):
                 "Run fast step sequence",
                 "Task 10 at 5 ms, board-timed (F6)",
                 self.action_run_fast,
+            ),
+            (
+                "reveal",
+                "Reveal computed values",
+                "Lab assistant: show this step's values before the group answers; the report "
+                "says so (Ctrl+R)",
+                self.action_reveal,
             ),
         ):
             if self._panel_method(method, screen) is not None:

@@ -110,6 +110,14 @@ class CaptureRequested(Message):
 
 
 @dataclass
+class RevealRequested(Message):
+    """Ctrl+R (a lab assistant): show the computed values of step ``step_id`` before the group
+    has entered its own."""
+
+    step_id: str
+
+
+@dataclass
 class LogImportRequested(Message):
     """Load the step log at ``path`` (recorded elsewhere); ``reply`` gets the one line to show."""
 

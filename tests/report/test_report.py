@@ -227,3 +227,25 @@ def test_intervals_say_which_side_the_log_does_not_bound():
     )
     assert content._interval(-math.inf, 3.0, "s") == "up to 3.000 s: no lower bound from this log"
     assert content._interval(-math.inf, math.inf, "s") == "not bounded by this log"
+
+
+def test_the_report_compares_the_groups_way_and_says_what_was_revealed(tmp_path):
+    """J from the group's own T, the least-squares J beside it with why, and a reveal."""
+    from minseg_tui.model.motor import inertia_from_time_constant
+
+    s = _session(tmp_path)
+    ident = s.results().identification
+    assert ident is not None and ident.step is not None
+    T_own = 0.0568
+    s.enter("own.T", "56.8 ms")
+    J_own = inertia_from_time_constant(T_own, ident.R, ident.f, ident.k_v, ident.k_a)
+    s.enter("own.J", f"{J_own * 1.003:.5g}")
+    assert s.reveal("task15") == ["own.omega_5"]
+    md = write_report(s).markdown.read_text(encoding="utf-8")
+    s.close()
+    (row,) = [line for line in md.splitlines() if line.startswith("| your J")]
+    assert "from your T = 56.8" in row and "+0.3 %" in row and "+0 %" not in row
+    assert format_number(ident.step.J) in row and "after answering" in row
+    (row5,) = [line for line in md.splitlines() if line.startswith("| your omega at 5 V")]
+    assert "revealed before answering" in row5
+    assert "J grows in proportion to T" in md

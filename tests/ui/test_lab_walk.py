@@ -201,6 +201,7 @@ async def test_numbers_keep_their_digits_and_units_stay_on_their_line(quiet):
         with app.session as s:
             record_step_run(s)
             K = s.results().identification.step.K
+            s.enter("own.K", "1.9")  # the computed K is shown once the group has its own
         await goto(pilot, "task11")
         lines = str(app.screen.query_one("#results-lines").render())
         assert f"K = {K:.4g} rad/s/V" in lines  # four digits, as the value has them
@@ -301,8 +302,16 @@ async def test_the_zoom_shows_the_rise_with_its_63_percent_level_and_crossing(qu
             st = s.results().identification.step
         await goto(pilot, "task12")
         plot = app.screen.query_one(StepPlot)
-        by_label = {tr.label: tr for tr in plot.traces}
         first = st.steps[0]
+        # before the group has read T, the crossing (the answer) is neither drawn nor said
+        assert "crossing" not in {tr.label for tr in plot.traces}
+        note = app.screen.query_one("#zoom-note", Prose).text
+        assert "read T there" in note and f"{first.T_63:.4g} s" not in note
+        with app.session as s:
+            s.enter("own.T", "50 ms")
+        app.lab_changed.publish(None)
+        await settle(pilot)
+        by_label = {tr.label: tr for tr in plot.traces}
         x = np.asarray(by_label["omega"].x)  # time after the edge
         assert x[0] < 0 < x[-1]  # a little before the edge...
         # ...to several T after it: from 1 T (at least 3 samples) before to 5 T (at least 12

@@ -12,6 +12,7 @@ from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import Step
 from minseg_tui.lab.views import ResultsView
+from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
@@ -109,21 +110,33 @@ class ResultsPanel(ViewPanel[ResultsView]):
         ]
         lo, hi = w.z0 - w.t0, w.z1 - w.t0
         traces.append(Trace([lo, hi], [w.level, w.level], "63 %", "-"))
-        if w.T_63 is not None:
+        read_T = "own.T" not in v.hidden  # the crossing is Task 12's answer
+        if w.T_63 is not None and read_T:
             traces.append(Trace([w.T_63, w.T_63], [w.omega0, w.level], "crossing", "|"))
         plot.set_axes(f"step {self.zoom + 1}: the rise", "t after the edge [s]")
         plot.show(traces, (lo, hi))
         crossing = (
-            f"crosses it {format_value(w.T_63, 's')} after the edge"
+            "the speed crosses it: read T there"
+            if not read_T
+            else f"the speed crosses it {format_value(w.T_63, 's')} after the edge"
             if w.T_63 is not None
-            else "never crosses it"
+            else "the speed never crosses it"
+        )
+        change = (
+            "the line is 63 % of the change"  # the steady speed is Task 11's answer
+            if "own.omega_step" in v.hidden
+            else f"from {format_value(w.omega0, 'rad/s', 3)} to "
+            f"{format_value(w.omega_ss, 'rad/s', 3)}; "
+            f"63 % of the change is {format_value(w.level, 'rad/s', 3)}"
         )
         note.update(
-            f"run {v.run}, step {self.zoom + 1} of {len(v.steps)}: from "
-            f"{format_value(w.omega0, 'rad/s', 3)} to {format_value(w.omega_ss, 'rad/s', 3)}; "
-            f"63 % of the change is {format_value(w.level, 'rad/s', 3)}, the speed "
+            f"run {v.run}, step {self.zoom + 1} of {len(v.steps)}: {change}, "
             f"{crossing} · alt+←/→ Step · f9 Zoom (the next step)"
         )
+
+    def reveal(self) -> None:
+        """Ctrl+R (a lab assistant): show this step's computed values before the group answers."""
+        self.post_message(RevealRequested(self.step.id))
 
     def pick(self, delta: int) -> None:
         """Zoom to the previous/next rising step."""

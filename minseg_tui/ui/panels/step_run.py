@@ -130,6 +130,8 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
             )
         if not runs:
             rows.append("no run yet: F5 (25 ms), then F6 (5 ms)")
+        elif any(v.T_hidden for v in runs):
+            rows.append("T: shown once you enter your own T (Task 12)")
         self.query_one("#t-readings", Static).update("\n".join(rows))
         if not self.recording:
             said = ", ".join(

@@ -26,6 +26,7 @@ from textual.widgets import DataTable, Footer, Static
 from minseg_tui.errors import InputError
 from minseg_tui.lab import classread, classview
 from minseg_tui.lab.classview import QUANTITIES, ClassView, Group
+from minseg_tui.lab.compare import format_diff
 from minseg_tui.lab.entry import format_quantity
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.units import format_number
@@ -78,7 +79,7 @@ def detail(k: int, g: Group) -> Text:
     out.append(f"model check: {g.cause or 'not run'}\n")
     for o in g.own:
         if o.rel_diff is not None:
-            out.append(f"own {o.label}: {o.rel_diff * 100:+.0f} % from the computed value\n")
+            out.append(f"own {o.label}: {format_diff(o.rel_diff)} from the computed value\n")
     for f in g.flags:
         out.append(f"! {f}\n", style="bold")
     for x in g.lacks:

@@ -35,7 +35,12 @@ from minseg_tui.lab.steps import STEPS, Step
 from minseg_tui.lab.views import EntryView
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.live import LiveBuffer
-from minseg_tui.ui.messages import CaptureRequested, LogImportRequested, StepShown
+from minseg_tui.ui.messages import (
+    CaptureRequested,
+    LogImportRequested,
+    RevealRequested,
+    StepShown,
+)
 from minseg_tui.ui.panels.connect import ConnectPanel
 from minseg_tui.ui.panels.live import LivePanel
 from minseg_tui.ui.panels.model_check import ModelCheckPanel
@@ -597,6 +602,18 @@ class LabScreen(StatusScreen):
         self._changed()
         if result.ok:  # next comes the multimeter reading at the same voltage
             self.focus_after(f"omega_ss@{event.level:g}")
+
+    @on(RevealRequested)
+    def _reveal(self, event: RevealRequested) -> None:
+        """Ctrl+R: the step's computed values shown before the group answered (the report says so)."""
+        event.stop()
+        with self.session as s:
+            keys = s.reveal(event.step_id)
+        if not keys:
+            self.notify("nothing hidden on this step", severity="information")
+            return
+        self.notify("computed values shown; the report says they were revealed before answering")
+        self._changed()
 
     @on(LogImportRequested)
     def _import(self, event: LogImportRequested) -> None:

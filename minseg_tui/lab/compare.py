@@ -1,0 +1,217 @@
+"""The group's own values of Tasks 11-15 first, then fair comparisons.
+
+The instructor's policy for a lab (:func:`read_policy`, ``lab.toml`` in the sessions folder)
+says whether the group enters its own value before the program shows the computed one;
+:func:`concealed` says which values are still hidden. :func:`compare_fields` sets each of the
+group's values beside the value computed the group's way (K from their omega_ss and u_ss, J
+from their own T or from the 63 % reading, ...), with the least-squares value and one
+sentence on why the two differ. :func:`format_diff` writes a relative difference. Pure
+functions apart from reading the policy file; no Textual. Units: SI (V, rad/s, s, kg m^2).
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from collections.abc import Callable, Collection, Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from minseg_tui.lab.results import Comparison, Results
+from minseg_tui.lab.steps import Field
+from minseg_tui.model.motor import inertia_from_time_constant
+from minseg_tui.units import format_number
+
+POLICY_FILE = "lab.toml"
+"""The instructor's settings for every session in a sessions folder (beside the sessions)."""
+
+U_TASK15 = 5.0
+"""Task 15's held voltage u_A, V."""
+
+ANSWERED_FIRST: tuple[str, ...] = (
+    "own.omega_step",
+    "own.K",
+    "own.T",
+    "own.J",
+    "own.model",
+    "own.omega_5",
+)
+"""The fields of Tasks 11-15 the group answers before the computed value is shown."""
+
+
+@dataclass(frozen=True)
+class Policy:
+    """The lab's policy: ``answers_first`` (the group's own value before the computed one);
+    ``problem``: one line when the policy file could not be read (the default then holds)."""
+
+    answers_first: bool = True
+    problem: str = ""
+
+
+def read_policy(sessions: Path) -> Policy:
+    """The policy in ``sessions``/lab.toml (``answers_first = true|false``); answers first
+    when there is no file, or when it cannot be read (then ``problem`` says why)."""
+    path = Path(sessions) / POLICY_FILE
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        return Policy()
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        return Policy(True, f"{path}: cannot be read ({exc}); answers first")
+    value = data.get("answers_first", True)
+    if not isinstance(value, bool):
+        return Policy(
+            True, f"{path}: answers_first must be true or false, got {value!r}; answers first"
+        )
+    return Policy(value)
+
+
+def concealed(policy: Policy, answered: Collection[str], revealed: Collection[str]) -> set[str]:
+    """The fields of :data:`ANSWERED_FIRST` whose computed value is still hidden: not
+    answered by the group and not revealed by a lab assistant (none when the policy lets the
+    program show everything)."""
+    if not policy.answers_first:
+        return set()
+    return {k for k in ANSWERED_FIRST if k not in answered and k not in revealed}
+
+
+def format_diff(rel: float) -> str:
+    """A relative difference as the group reads it: "+39 %", "-2 %"; under 0.5 % with one
+    more digit ("+0.3 %") and under 0.05 % as "< 0.05 %", never "+0 %"."""
+    pct = rel * 100.0
+    if abs(pct) >= 0.5:
+        return f"{pct:+.0f} %"
+    if abs(pct) >= 0.05:
+        return f"{pct:+.1f} %"
+    return "< 0.05 %"
+
+
+def _ms(T: float) -> str:
+    return f"{format_number(T * 1e3)} ms"
+
+
+def _model(T: float, K: float) -> str:
+    return f"{format_number(T)} omega' = -omega + {format_number(K)} u_A"
+
+
+def compare_fields(
+    fields: Iterable[Field],
+    value: Callable[[str], float | None],
+    text: Callable[[str], str | None],
+    res: Results,
+    revealed: Collection[str] = (),
+) -> list[Comparison]:
+    """Each field with ``compare`` beside the value computed the group's way.
+
+    value(key): the group's number for a field (SI) or None; text(key): its text (a model)
+    or None; ``res``: the session's results; ``revealed``: fields shown before the group
+    answered (said in the comparison)."""
+    ident = res.identification
+    st = ident.step if ident is not None else None
+    own_T = value("own.T")
+    own_K = value("own.K")
+    own_w = value("own.omega_step")
+    out: list[Comparison] = []
+    for fld in fields:
+        if not fld.compare:
+            continue
+        own: float | str | None = text(fld.key) if fld.kind == "text" else value(fld.key)
+        computed: float | str | None = res.lookup(fld.compare)
+        how = why = ""
+        lsq: float | str | None = None
+        if st is not None and ident is not None:
+            if fld.key == "own.K":
+                lsq = st.K
+                if own_w is not None and st.u_ss:
+                    computed = own_w / st.u_ss
+                    how = (
+                        f"your omega_ss / u_ss = {format_number(own_w)} / {format_number(st.u_ss)}"
+                    )
+                    why = (
+                        "The least-squares K is the median over every rising step of the fitted "
+                        "steady speed over u_ss; yours divides one reading of it."
+                    )
+                else:
+                    computed, lsq = st.K, None
+            elif fld.key == "own.T":
+                computed, lsq = st.T_63, st.T
+                how = "the 63 % reading, median over the rising steps"
+                why = (
+                    "The 63 % reading takes one sampled point of each rise, which the sampling "
+                    "moves; the least-squares T fits the whole rise with the sampling modelled."
+                )
+            elif fld.key == "own.J":
+                T_used, how = (
+                    (own_T, f"from your T = {_ms(own_T)}")
+                    if own_T is not None
+                    else (st.T_63, "from the 63 % reading T = " + _ms(st.T_63))
+                    if st.T_63 is not None
+                    else (None, "")
+                )
+                lsq = st.J
+                if T_used is not None:
+                    computed = inertia_from_time_constant(
+                        T_used, ident.R, ident.f, ident.k_v, ident.k_a
+                    )
+                    why = (
+                        f"The least-squares J uses T = {_ms(st.T)} fitted over the whole rise; "
+                        "J grows in proportion to T, so the two differ as the two T do."
+                    )
+                else:
+                    computed, lsq, how = st.J, None, ""
+            elif fld.key == "own.model":
+                T_m = own_T if own_T is not None else st.T_63
+                K_m = own_K if own_K is not None else st.K
+                lsq = _model(st.T, st.K)
+                if T_m is not None:
+                    computed = _model(T_m, K_m)
+                    how = "with your T and K" if own_T is not None and own_K is not None else ""
+                    why = "The least-squares model uses the fitted T and K."
+                    if computed == lsq:
+                        lsq, why = None, ""
+            elif fld.key == "own.omega_5" and ident.omega_at_5V is not None:
+                lsq = ident.omega_at_5V
+                if own_K is not None:
+                    computed = own_K * U_TASK15
+                    how = f"5 V × your K = {format_number(own_K)} rad/s/V"
+                    why = "The least-squares value uses the K fitted over every rising step."
+                else:
+                    lsq = None
+        rel = None
+        if isinstance(own, float) and isinstance(computed, float) and computed != 0:
+            rel = own / computed - 1.0
+        if isinstance(lsq, float) and not math.isfinite(lsq):
+            lsq = None
+        out.append(
+            Comparison(
+                fld.key,
+                fld.label,
+                fld.unit,
+                own,
+                computed,
+                rel,
+                how=how,
+                least_squares=lsq,
+                why=why,
+                revealed_early=fld.key in revealed,
+            )
+        )
+    return out
+
+
+def reveal_keys(fields: Sequence[Field], answered: Collection[str]) -> list[str]:
+    """The fields of a step a lab assistant's reveal marks as "revealed before answering":
+    those of :data:`ANSWERED_FIRST` the group has not answered yet."""
+    return [f.key for f in fields if f.key in ANSWERED_FIRST and f.key not in answered]
+
+
+__all__ = [
+    "ANSWERED_FIRST",
+    "POLICY_FILE",
+    "Policy",
+    "compare_fields",
+    "concealed",
+    "format_diff",
+    "read_policy",
+    "reveal_keys",
+]

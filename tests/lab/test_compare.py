@@ -1,0 +1,180 @@
+"""The group's own values of Tasks 11-15 first, and fair comparisons (issue 20, items 1-2):
+on a real session folder with a run of the seeded plant."""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+
+from minseg_tui.lab import views
+from minseg_tui.lab.compare import format_diff, read_policy
+from minseg_tui.lab.session import Session
+from minseg_tui.lab.steps import step
+from minseg_tui.model.motor import inertia_from_time_constant
+from minseg_tui.model.plant import PlantParams, record
+
+
+def _lab(root: Path) -> Session:
+    s = Session.create(root, ["A"])
+    s.enter("R", "5.26")
+    for lv, u, w, i in (
+        (2.5, "2.05", "3.8", "29.8 mA"),
+        (3.5, "3.05", "5.8", "33.5"),
+        (4.5, "4.05", "7.8", "37.2"),
+    ):
+        s.enter(f"u_ss@{lv:g}", u)
+        s.enter(f"omega_ss@{lv:g}", w)
+        s.enter(f"i_ss@{lv:g}", i)
+    plan = dict(step("task10").plans)["manual"]
+    n = int(round(plan.duration / plan.ts))
+    k = np.arange(n)
+    u = np.concatenate(
+        (np.zeros(20), np.where((k * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
+    )
+    data = record(PlantParams(), u, ts=plan.ts, seed=3, jitter_us=1000)
+    rec = s.start_run("steps", plan)
+    for j in range(u.size):
+        rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), int(round(u[j] * 1000)))
+    s.finish_run(rec)
+    return s
+
+
+def _lines(s: Session, step_id: str) -> str:
+    return "\n".join(views.results(s, step_id).lines)
+
+
+def _compare(s: Session, step_id: str) -> dict[str, tuple[str, str]]:
+    return {label: (own, comp) for label, own, comp in views.comparisons(s, step_id)}
+
+
+def test_differences_under_half_a_percent_keep_a_digit():
+    assert format_diff(0.39) == "+39 %" and format_diff(-0.021) == "-2 %"
+    assert format_diff(0.003) == "+0.3 %" and format_diff(-0.0049) == "-0.5 %"
+    assert format_diff(0.0001) == "< 0.05 %" and format_diff(0.0) == "< 0.05 %"
+
+
+def test_the_computed_values_wait_for_the_groups_own(tmp_path):
+    with _lab(tmp_path) as s:
+        st = s.results().identification.step  # type: ignore[union-attr]
+        K = views._fmt(st.K, "rad/s/V")
+        text = _lines(s, "task11")
+        assert f"K = {K}" not in text and "K: shown once you enter yours (Ctrl+R" in text
+        assert "T (63 %)" not in text and "J =" not in text and "omega' =" not in text
+        assert "omega at 5 V =" not in text and "u_ss = " in text  # their own table value stays
+        assert {"own.K", "own.T", "own.omega_step"} <= views.results(s, "task11").hidden
+        assert _compare(s, "task11")["your K"][1].startswith("shown once you enter yours")
+        s.enter("own.K", "1.9")
+        text = _lines(s, "task11")
+        assert f"K = {K}" in text and "T (63 %)" not in text
+        assert "on Task 12" in text  # T waits for its own step
+
+
+def test_a_lab_that_shows_everything_says_so_in_lab_toml(tmp_path):
+    root = tmp_path / "sessions"
+    with _lab(root) as s:
+        (root / "lab.toml").write_text("answers_first = false\n", encoding="utf-8")
+        assert "T (63 %)" in _lines(s, "task11") and not views.results(s, "task11").hidden
+        (root / "lab.toml").write_text("answers_first = 'maybe'\n", encoding="utf-8")
+        said = views.results(s, "task11").problems
+        assert any("answers_first must be true or false" in p for p in said)
+        assert "T (63 %)" not in _lines(s, "task11")
+    assert read_policy(tmp_path / "none").answers_first
+
+
+def test_a_reveal_is_saved_and_the_comparison_says_so(tmp_path):
+    with _lab(tmp_path) as s:
+        s.enter("own.T", "57 ms")
+        assert s.reveal("task12") == []  # answered: nothing to reveal
+        assert s.reveal("task13") == ["own.J"]
+        folder = s.folder
+        assert "J = " in _lines(s, "task13")
+    data = json.loads((folder / "session.json").read_text(encoding="utf-8"))
+    assert data["revealed"] == ["own.J"]
+    with Session.open(folder) as again:
+        assert again.revealed() == {"own.J"}
+        (c,) = again.comparisons("task13")
+        assert c.revealed_early and c.own is None
+        assert "revealed before answering" in _compare(again, "task13")["your J"][1]
+    del data["revealed"]  # a session from before the reveal opens as it was
+    (folder / "session.json").write_text(json.dumps(data), encoding="utf-8")
+    with Session.open(folder) as old:
+        assert old.revealed() == set() and "J = " not in _lines(old, "task13")
+
+
+def test_J_is_compared_with_J_from_the_groups_own_T(tmp_path):
+    with _lab(tmp_path) as s:
+        ident = s.results().identification
+        assert ident is not None and ident.step is not None and ident.step.T_63 is not None
+        st = ident.step
+        T_typed = round(st.T_63 * 1e3, 1)  # read at 63 % off the plot, in ms
+        s.enter("own.T", f"{T_typed} ms")
+        J_own = inertia_from_time_constant(T_typed / 1e3, ident.R, ident.f, ident.k_v, ident.k_a)
+        s.enter("own.J", f"{J_own:.3g}")
+        (c,) = s.comparisons("task13")
+        assert c.rel_diff is not None and abs(c.rel_diff) < 0.005  # not the +30 % of before
+        assert c.least_squares == st.J and "from your T" in c.how
+        assert st.J < J_own * 0.9  # the least-squares J is the one that differs
+        own, comp = _compare(s, "task13")["your J"]
+        assert "least squares" in comp and "J grows in proportion to T" in comp
+
+
+def test_J_without_a_typed_T_uses_the_63_percent_reading(tmp_path):
+    with _lab(tmp_path) as s:
+        ident = s.results().identification
+        assert ident is not None and ident.step is not None and ident.step.T_63 is not None
+        J63 = inertia_from_time_constant(ident.step.T_63, ident.R, ident.f, ident.k_v, ident.k_a)
+        s.enter("own.J", f"{J63:.4g}")
+        (c,) = s.comparisons("task13")
+        assert "63 % reading" in c.how and c.rel_diff is not None and abs(c.rel_diff) < 0.005
+
+
+def test_K_and_omega_at_5V_follow_the_groups_own_readings(tmp_path):
+    with _lab(tmp_path) as s:
+        st = s.results().identification.step  # type: ignore[union-attr]
+        s.enter("own.omega_step", "7.5")
+        s.enter("own.K", f"{7.5 / st.u_ss:.4g}")
+        s.enter("own.omega_5", f"{5 * 7.5 / st.u_ss:.4g}")
+        by = {c.key: c for c in s.comparisons()}
+        assert abs(by["own.K"].rel_diff or 1) < 0.005 and by["own.K"].least_squares == st.K
+        assert abs(by["own.omega_5"].rel_diff or 1) < 0.005
+        assert "your K" in by["own.omega_5"].how
+
+
+def test_no_example_in_a_hint_is_an_answer(tmp_path):
+    """Every number in the hints of Tasks 11-15 is at least a factor 1.5 from what the
+    virtual board's seeded plant gives for that field (T in s and in ms); the old hints
+    (7.3 rad/s, 1.9 rad/s/V, 0.057 s, 0.0013 kg m^2) were all within it."""
+    with _lab(tmp_path) as s:
+        ident = s.results().identification
+        assert ident is not None and ident.step is not None and ident.step.T_63 is not None
+        st = ident.step
+        Ts = [st.T, st.T_63, st.T * 1e3, st.T_63 * 1e3]
+        answers: dict[str, list[float]] = {
+            "own.omega_step": [st.omega_ss],
+            "own.K": [st.K],
+            "own.T": Ts,
+            "own.J": [st.J],
+            "own.omega_5": [ident.omega_at_5V or 0.0],
+            "own.model": [*Ts, st.K],
+        }
+    seen = 0
+    for sid in ("task11", "task12", "task13", "task14", "task15"):
+        for f in step(sid).fields:
+            for num in re.findall(r"\d+(?:\.\d+)?", f.hint):
+                seen += 1
+                x = float(num)
+                for a in answers[f.key]:
+                    assert not (a / 1.5 < x < a * 1.5), (sid, f.hint, a)
+    assert seen >= 6
+
+
+def test_T_is_compared_with_the_63_percent_reading_and_the_fit_stands_beside_it(tmp_path):
+    with _lab(tmp_path) as s:
+        st = s.results().identification.step  # type: ignore[union-attr]
+        s.enter("own.T", "57 ms")
+        (c,) = s.comparisons("task12")
+        assert c.computed == st.T_63 and c.least_squares == st.T
+        assert c.why.count(". ") == 0 and "sampling" in c.why  # one sentence
