@@ -24,6 +24,9 @@ LAB_TS: float = 0.025
 LAB_FIR_TAPS: int = 20
 """Length of the manual's moving-average velocity filter (coefficients 0.05), samples."""
 
+RPM: float = 2.0 * math.pi / 60.0
+"""One revolution per minute in rad/s (a speed typed in rpm where rad/s was asked)."""
+
 KA_OVER_KV: float = 0.65
 """The manual's ratio k_a / k_v (equation 3.3)."""
 

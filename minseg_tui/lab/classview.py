@@ -32,7 +32,7 @@ from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import LEVELS
 from minseg_tui.lab.store import SESSION_FILE, SessionsUnreadable
 from minseg_tui.model.check.effects import in_words
-from minseg_tui.units import format_number
+from minseg_tui.units import RPM, format_number
 
 
 @dataclass(frozen=True)
@@ -101,9 +101,6 @@ OMEGA_MAX: float = 15.0
 
 OMEGA_MIN: float = 0.5
 """Below this the wheel hardly turns, rad/s."""
-
-RPM: float = 2.0 * math.pi / 60.0
-"""One rpm in rad/s."""
 
 
 @dataclass(frozen=True)

@@ -40,7 +40,7 @@ from dataclasses import dataclass
 from decimal import Decimal
 
 from minseg_tui.errors import InputError
-from minseg_tui.units import DIGITS, format_number, format_value
+from minseg_tui.units import DIGITS, RPM, format_number, format_value
 
 
 @dataclass(frozen=True)
@@ -64,7 +64,7 @@ _UNITS: tuple[Unit, ...] = (
     Unit("MΩ", "resistance", 1e6, ("MΩ", "Mohm", "Mohms")),
     Unit("mΩ", "resistance", 1e-3, ("mΩ", "mohm", "mohms")),
     Unit("rad/s", "angular velocity", 1.0, ("rad/s", "rad/sec", "rads^-1", "rad*s^-1")),
-    Unit("rpm", "angular velocity", 2.0 * math.pi / 60.0, ("rpm", "r/min", "rev/min")),
+    Unit("rpm", "angular velocity", RPM, ("rpm", "r/min", "rev/min")),
     Unit("s", "time", 1.0, ("s", "sec", "secs", "second", "seconds")),
     Unit("ms", "time", 1e-3, ("ms", "msec")),
     Unit("min", "time", 60.0, ("min", "mins", "minute", "minutes")),

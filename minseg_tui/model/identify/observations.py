@@ -11,7 +11,7 @@ import numpy as np
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.identify.stepfit import RisingStep, TimeConstantFit
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.units import format_number
+from minseg_tui.units import RPM, format_number
 
 KV_OUTLIER: float = 0.15
 """A row's k_v this far (relative) from the median is called a bad reading."""
@@ -23,8 +23,6 @@ RPM_GAIN: float = 6.0
 """omega_ss / u_ss above this (rad/s per V; the lab's motor turns about 1.6) but not when read
 as rpm: the row's omega_ss was typed in rpm (k_v would come out about ten times small)."""
 
-RPM: float = 2.0 * math.pi / 60.0
-"""rad/s per rpm."""
 
 SHORT_T_SAMPLES: float = 3.0
 """T below this many sample periods: the 63 % reading measures the sampling, not the motor."""
