@@ -357,8 +357,9 @@ def revolution_text(counts: int) -> RevolutionResult:
         text = f"{n} counts for one revolution: {CPR} expected, the encoder is read in full."
     elif n < MIN_COUNTS:
         text = (
-            f"{n} counts: the encoder counted nothing while the wheel turned: check the encoder "
-            "cable and the board profile (run the board check)."
+            f"{n} counts: the encoder counted nothing. If the wheel did turn a whole revolution, "
+            "check the encoder cable and the board profile (run the board check); if it did "
+            "not, turn it and count again."
         )
     elif abs(n - CPR / 2) <= 0.1 * CPR / 2:
         text = f"{n} counts, half of {CPR}: only one of the encoder's two channels is read."

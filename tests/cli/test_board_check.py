@@ -199,6 +199,9 @@ def test_hand_check_without_a_hand_says_nothing_was_counted(capsys):
     assert main(["board-check", "--sim", "--turn", "--turn-seconds", "0.3", "--json"]) == 1
     out = json.loads(capsys.readouterr().out)
     assert out["counts"] == 0 and not out["ok"] and "counted nothing" in out["text"]
+    # nobody turned it: the text blames the encoder only if the wheel did turn
+    assert "If the wheel did turn" in out["text"] and "if it did not, turn it" in out["text"]
+    assert "while the wheel turned" not in out["text"]
 
 
 def _as_at_a_terminal() -> None:
