@@ -26,10 +26,19 @@ def _check_text(app) -> str:
 
 
 async def _f10(pilot, heard: Heard) -> BoardCheckScreen:
-    """F10, and the board check's answer once it is on screen."""
+    """F10, and the board check's answer once it is on screen (a check that ends in an error
+    or a question fails the test at once, instead of waiting for a screen that never comes)."""
     app = pilot.app
+    said = heard_notifications(app)
     await pilot.press("f10")
-    await heard.until(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+    await heard.until(
+        pilot,
+        lambda: (
+            isinstance(app.screen, BoardCheckScreen | WheelQuestionScreen)
+            or any(not s.startswith("board check:") for s in said)
+        ),
+    )
+    assert isinstance(app.screen, BoardCheckScreen), f"no answer on screen; heard {said}"
     return app.screen
 
 
