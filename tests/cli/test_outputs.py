@@ -66,6 +66,14 @@ def test_predictions_into_a_device_are_refused(tmp_path, capsys):
     )
 
 
+def _with_files(tmp_path, argv):
+    """``argv`` with LOG and TABLE replaced by a step log and a table written in tmp_path."""
+    _log(tmp_path / "log.csv")
+    (tmp_path / "table.csv").write_text(TABLE)
+    files = {"LOG": str(tmp_path / "log.csv"), "TABLE": str(tmp_path / "table.csv")}
+    return [files.get(a, a) for a in argv]
+
+
 @pytest.mark.parametrize(
     ("argv", "what"),
     [
@@ -74,16 +82,7 @@ def test_predictions_into_a_device_are_refused(tmp_path, capsys):
     ],
 )
 def test_an_empty_file_name_is_refused(tmp_path, capsys, argv, what):
-    _log(tmp_path / "log.csv")
-    (tmp_path / "table.csv").write_text(TABLE)
-    argv = [
-        str(tmp_path / "log.csv")
-        if a == "LOG"
-        else str(tmp_path / "table.csv")
-        if a == "TABLE"
-        else a
-        for a in argv
-    ]
+    argv = _with_files(tmp_path, argv)
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and what in err, err
@@ -105,16 +104,7 @@ def _closed_stdout() -> None:
 )
 def test_a_closed_stdout_is_one_line_and_exit_2(tmp_path, argv):
     """`minseg-tui ports >&-`: Python starts with sys.stdout None; exit 2 as /dev/full does."""
-    _log(tmp_path / "log.csv")
-    (tmp_path / "table.csv").write_text(TABLE)
-    argv = [
-        str(tmp_path / "log.csv")
-        if a == "LOG"
-        else str(tmp_path / "table.csv")
-        if a == "TABLE"
-        else a
-        for a in argv
-    ]
+    argv = _with_files(tmp_path, argv)
     proc = subprocess.run(
         [*_cli(), *argv],
         stderr=subprocess.PIPE,
