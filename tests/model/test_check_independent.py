@@ -135,3 +135,34 @@ def test_an_averaged_speed_leaves_out_the_rows_a_stall_of_the_logger_reaches():
     assert len(left) == 1 and "were left out of the fit" in left[0].text
     assert "late_step" not in kinds(r)  # the stall's read is no step that started late
     assert r.baseline.rows < r.t.size
+
+
+def test_a_hand_on_an_averaged_speed_is_reported_where_it_began_and_the_average_named():
+    # a 10-tap average of the speed: a hand brakes the wheel for 0.18 s from t = 3.533 s. The
+    # hand's rows are left out of every figure, the noise test of the average with them, so
+    # the average is named alone (it was 'second pole + dead time', the average rejected for
+    # a scatter of 0.12 rad/s that was the hand's own departure)
+    log = make(1006, ("velocity_filter",), touch=True)
+    assert log.touch is not None
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == ["velocity_filter"]
+    hands = [a for a in r.anomalies if a.kind == "disturbance"]
+    assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.15
+    assert "a hand on it" in hands[0].text
+
+
+def test_a_stall_spike_spread_by_an_average_is_a_logging_artefact_not_a_hand():
+    # a 9-tap average over the real intervals of an irregular loop: a 75 ms stall at 10.13 s
+    # whose row read the counts late lifts the next 9 rows by 5.3 rad/s and drops straight
+    # back; that is the stall's read carried by the average, not a hand
+    log = make(1012, ("velocity_filter",), touch=True)
+    assert "stall" in log.how and log.touch is not None
+    r = check(log.t, log.u, log.omega)
+    stall_t = float(log.t[log.artefact_rows[0]])
+    hands = [a for a in r.anomalies if a.kind == "disturbance"]
+    assert all(abs(a.t - stall_t) > 0.5 for a in hands)
+    assert any(abs(a.t - log.touch[0]) <= 0.15 for a in hands)
+    art = [a for a in r.anomalies if a.kind == "logging_artefact"]
+    assert len(art) == 1 and abs(art[0].t - stall_t) <= 0.05
+    assert named(r) == ["velocity_filter"]
+
