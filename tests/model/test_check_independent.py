@@ -166,3 +166,17 @@ def test_a_stall_spike_spread_by_an_average_is_a_logging_artefact_not_a_hand():
     assert len(art) == 1 and abs(art[0].t - stall_t) <= 0.05
     assert named(r) == ["velocity_filter"]
 
+
+def test_the_coast_sentence_times_the_fall_to_half_from_the_drop():
+    # coasting with dry friction: the sentence names the drop's time and how long after it the
+    # speed first reads under half its level before; both are checked against the rows
+    log = make(3, ("coulomb_friction", "coast_on_zero"))
+    r = check(log.t, log.u, log.omega)
+    assert r.finding.cause == "coast_on_zero"
+    words = r.finding.evidence
+    t_drop = float(words.split("drops to 0 at t = ")[1].split(" s")[0])
+    after = float(words.split("first reading under half, ")[1].split(" ms after the drop")[0])
+    a = int(np.argmin(np.abs(log.t - t_drop)))
+    before = float(np.mean(np.abs(log.omega[a - 4 : a])))
+    under = a + int(np.flatnonzero(np.abs(log.omega[a:]) < 0.5 * before)[0])
+    assert after == pytest.approx(1e3 * (log.t[under] - log.t[a]), abs=1.0)
