@@ -173,6 +173,9 @@ def test_an_s_shaped_rise_is_not_called_a_dead_time():
     # 'the noise of reading single samples'
     assert "is the shape of the rise, which one time constant does not follow" in st.T_63_note
     assert "is the noise of reading" not in st.T_63_note
+    # and the model read the same way moves by the time shift held at its bound too (+10 ms of
+    # the +27.5 ms), not by 'the sampling alone'
+    assert "the sampling and the steps' time shift, held at its bound, move" in st.T_63_note
 
 
 def test_u_ss_above_u_req_on_every_row_is_remarked():

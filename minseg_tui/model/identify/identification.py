@@ -348,6 +348,8 @@ def _T_63_note(
     delay = (
         f"the dead time moves the reading by {dead_time * 1e3:+.1f} ms and the sampling by "
         if dead_time > 0
+        else "the sampling and the steps' time shift, held at its bound, move the reading by "
+        if misfit
         else "the sampling alone moves the reading by "
     )
     out += (
