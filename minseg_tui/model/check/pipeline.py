@@ -559,14 +559,18 @@ def _finding(
         )
     if miss is not None:
         size, where, lvl = miss
+        against = (
+            f"{size / lvl:.0f} times what the noise leaves ({lvl:.3g} rad/s)"
+            if lvl > 0
+            else "where the speed's noise measures 0 rad/s"
+        )
         caveats.append(
             Caveat(
                 "misses",
                 None,
                 f"the best model found still misses {where}: its error held over 9 samples is "
-                f"{size:.3g} rad/s rms there, {size / lvl:.0f} times what the noise leaves "
-                f"({lvl:.3g} rad/s); something outside the list of causes acts in this log, so "
-                "the named cause(s) explain only part of it",
+                f"{size:.3g} rad/s rms there, {against}; something outside the list of causes "
+                "acts in this log, so the named cause(s) explain only part of it",
             )
         )
     if samp.smooth and any(c in ext.causes for c in ("velocity_filter", "second_pole")):
