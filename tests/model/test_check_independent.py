@@ -180,3 +180,28 @@ def test_the_coast_sentence_times_the_fall_to_half_from_the_drop():
     before = float(np.mean(np.abs(log.omega[a - 4 : a])))
     under = a + int(np.flatnonzero(np.abs(log.omega[a:]) < 0.5 * before)[0])
     assert after == pytest.approx(1e3 * (log.t[under] - log.t[a]), abs=1.0)
+
+
+def test_a_departure_hidden_after_every_rising_edge_of_a_generator_log_is_one_model_miss():
+    # a generator log with no effect; after every rising edge that has room, 5 T into the
+    # stretch, the speed dips by 20 % for 0.2 s and comes back, the same each time: a miss of
+    # the model at those edges (a load that engages after each start), never a hand
+    log = make(19, (), artefacts=False)
+    y = log.omega.copy()
+    edges = np.flatnonzero(np.diff(log.u) != 0) + 1
+    ends = [*edges[1:].tolist(), log.u.size]
+    hidden = []
+    for a, b in zip(edges.tolist(), ends, strict=True):
+        if abs(log.u[a]) <= abs(log.u[a - 1]):
+            continue
+        t0 = log.t[a] + 5 * log.T
+        rows = (log.t >= t0) & (log.t < t0 + 0.2) & (np.arange(y.size) < b)
+        if log.t[b - 1] - t0 > 0.4:
+            y[rows] *= 0.8
+            hidden.append(a)
+    assert len(hidden) >= 4
+    r = check(log.t, log.u, y)
+    assert "disturbance" not in kinds(r)
+    miss = [a for a in r.anomalies if a.kind == "model_miss"]
+    assert len(miss) == 1 and miss[0].size >= len(hidden) - 1
+    assert "not a hand on the wheel" in miss[0].text

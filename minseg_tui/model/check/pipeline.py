@@ -169,6 +169,8 @@ def check(
     )
     rise = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     found2, repeated, repeated_at = dist.split_repeated(found2, u, rise)
+    # a disturbance is local: the model chosen fits the rest of the log well below it
+    found2, _ = dist.split_local(found2, full.y - ext.predict(full), full.weights > 0)
     if _rows(found2) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
