@@ -3,7 +3,9 @@
 :func:`build` opens every session under a folder read-only (:meth:`Session.open` with
 ``readonly=True``: no lock taken, nothing written) and takes its numbers from the session
 itself: :meth:`Session.results` (Tasks 6-15, the same numbers ``minseg-tui report``
-writes), :meth:`Session.model_check` and :meth:`Session.comparisons`. Nothing here
+writes), :meth:`Session.model_check` and :meth:`Session.comparisons`; only K, T and the
+63 % reading of a session whose table lacks an i_ss (or R) are taken from its step run
+here (:func:`~minseg_tui.model.identify.step_alone`), since they need neither. Nothing here
 computes a motor parameter a second time; it only sets the groups side by side and says,
 in words, what stands out:
 
@@ -28,10 +30,12 @@ from pathlib import Path
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab import steps as lab_steps
+from minseg_tui.lab.files import read_step_log
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import LEVELS
 from minseg_tui.lab.store import SESSION_FILE, SessionsUnreadable
 from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.identify import step_alone
 from minseg_tui.units import RPM, format_number
 
 
@@ -345,7 +349,24 @@ def _values(session: Session) -> tuple[dict[str, float | None], tuple[str, ...]]
     lacks = list(res.problems)
     if not session.runs:
         lacks.append("no step run recorded yet (Task 10)")
+    elif ident is None:
+        values.update(_step_alone(session))
     return values, tuple(dict.fromkeys(lacks))
+
+
+def _step_alone(session: Session) -> dict[str, float | None]:
+    """K, T and T_63 from the session's step run and its table's u_ss alone, for a session
+    whose table is not complete enough for Tasks 6-9 (an i_ss or R missing): they need
+    neither. Empty when the run cannot give them (the lacks already say why)."""
+    run = session.step_run()
+    pairs = session.table_pairs()
+    if run is None or not pairs:
+        return {}
+    try:
+        st = step_alone(read_step_log(session.folder / run.file), pairs)
+    except InputError:
+        return {}
+    return {"K": st.K, "T_63": st.T_63, "T": st.T}
 
 
 def read_group(folder: Path) -> Group:
