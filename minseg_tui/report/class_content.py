@@ -181,6 +181,7 @@ def build(view: ClassView) -> Report:
         title="DC-motor lab: the class at a glance",
         byline=f"{n} group{'s' if n != 1 else ''} in {view.root}",
         sections=sections,
+        landscape=True,  # seventeen columns do not fit a portrait page
     )
 
 

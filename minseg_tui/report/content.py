@@ -63,11 +63,13 @@ class Section:
 
 @dataclass
 class Report:
-    """The whole report: title, a line of who/when, and sections."""
+    """The whole report: title, a line of who/when, and sections; ``landscape``: printed
+    on landscape pages (a table too wide for a portrait one)."""
 
     title: str
     byline: str
     sections: list[Section]
+    landscape: bool = False
 
 
 def _q(value: float | None, unit: str, digits: int = DIGITS) -> str:

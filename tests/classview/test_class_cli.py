@@ -156,6 +156,9 @@ def test_out_writes_markdown_html_and_csv(klass, tmp_path, capsys):
     assert page.count("<figure") == 7  # R, k_v, f, K, T_63, T, J
     assert not re.search(r"""(src|href)=["']?(https?:|//)""", page) and "<script" not in page
     assert "@media print" in page and "Nothing stands out" not in page
+    # seventeen columns: printed on landscape pages (on portrait ones the flags column was
+    # cut at the page's edge and each group id took five lines), two figures to a row
+    assert "@page { size: A4 landscape;" in page and "max-width: 48% !important" in page
     md = (out_dir / "class.md").read_text(encoding="utf-8")
     assert md.count("data:image/svg+xml;base64,") == 7 and "## What stands out" in md
     rows = list(csv.DictReader(io.StringIO((out_dir / "class.csv").read_text(encoding="utf-8"))))
