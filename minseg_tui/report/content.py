@@ -359,16 +359,30 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     )
 
 
+def _where(key: str) -> str | None:
+    """Where an entry stands, in the lab's words ("Task 4, omega_ss at 2.5 V"); None for a
+    key that is no entry (a finding's code: its sentence says what it is about)."""
+    for st in lab_steps.STEPS:
+        for fld in st.fields:
+            if fld.key == key:
+                return f"{st.title.split(':')[0]}, {fld.label}"
+    return None
+
+
 def _warnings_section(session: Session) -> Section:
     res = session.results()
-    items = [f"{n.source}: {n.message}" for n in session.warnings()]
+    items = [
+        f"{where}: {n.message}" if (where := _where(n.source)) else n.message
+        for n in session.warnings()
+    ]
     items += [
-        f"refused entry {e.key}: {e.text!r} — {e.message}"
+        f"refused entry {_where(e.key) or e.key}: {e.text!r} — {e.message}"
         for e in session.entries.values()
         if not e.ok
     ]
     items += [
-        f"refused entry {e.key}: {e.refused[0]!r} — {e.refused[1]} (still using {e.text!r})"
+        f"refused entry {_where(e.key) or e.key}: {e.refused[0]!r} — {e.refused[1]} (still "
+        f"using {e.text!r})"
         for e in session.entries.values()
         if e.refused
     ]
@@ -619,13 +633,9 @@ def _model_check_section(session: Session) -> Section | None:
         f"{_num(b.fit_percent, 3)} %).",
         *_two_fits(session, mc.run, b.params),
         f"Where it deviates: {r.where}.",
-        f"Most likely cause: {in_words(f.cause)} ({f.cause}). "
-        f"{f.evidence[:1].upper() + f.evidence[1:]}",
+        f"Most likely cause: {in_words(f.cause)}. {f.evidence[:1].upper() + f.evidence[1:]}",
     ]
-    items += [
-        f"Also: {in_words(o.cause)} ({o.cause}; {_params(o.params)}): {o.evidence}"
-        for o in f.others
-    ]
+    items += [f"Also: {in_words(o.cause)} ({_params(o.params)}): {o.evidence}" for o in f.others]
     if named:
         items.append(
             f"Extended model ({in_words(e.model)}): {_params(e.params, e.intervals)}; "
