@@ -24,7 +24,7 @@ from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import RisingStep, StepResult
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
-from minseg_tui.units import DIGITS, format_number
+from minseg_tui.units import DIGITS, format_interval, format_number
 
 
 @dataclass(frozen=True)
@@ -195,7 +195,7 @@ _UNDETERMINED = "not determined by this log"
 def _interval(lo: float, hi: float, unit: str) -> str:
     """A 95 % interval; a side the log does not bound is said (the check gives +-inf)."""
     if math.isfinite(lo) and math.isfinite(hi):
-        return f"{_num(lo)} – {_num(hi)} {unit}"
+        return format_interval(lo, hi, unit)
     if math.isfinite(lo):
         return f"{_num(lo)} {unit} or more: no upper bound from this log"
     if math.isfinite(hi):
