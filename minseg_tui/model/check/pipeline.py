@@ -38,7 +38,7 @@ from minseg_tui.model.check.result import (
     rmse,
 )
 from minseg_tui.model.check.sampling import Sampling, sampling, scatter
-from minseg_tui.model.check.search import golden
+from minseg_tui.model.optimize import golden
 from minseg_tui.model.steplog import problem
 
 FloatArray = NDArray[np.float64]
