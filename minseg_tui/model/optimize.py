@@ -26,6 +26,10 @@ Jacobian = Callable[[FloatArray, FloatArray], FloatArray]
 """(x, coefficients) -> d residual / d x, one column per nonlinear parameter."""
 
 
+TRIES: int = 8
+"""Steps tried from one point, each more damped, before the search stops there."""
+
+
 @dataclass(frozen=True)
 class Solution:
     """Where :func:`least_squares` stopped: the nonlinear parameters ``x``, the residual sum
@@ -51,12 +55,13 @@ def least_squares(
     """Minimise the residual sum of squares over the nonlinear parameters from ``x0``.
 
     Marquardt's damping on the Gauss-Newton step, scaled by the diagonal of J^T J; a step
-    is taken only when it does not raise the sum. Stops when a step changes no parameter by
-    more than ``xtol`` (in the units of x; an array: one per parameter), when it lowers the
-    sum by at most ``ftol`` times the sum, or after ``max_iter`` steps. ``lower`` and
-    ``upper`` (default: none) box the parameters in: a parameter on its bound whose gradient
-    points out of the box is held there while the others move, and every step is clipped to
-    the box.
+    is taken only when it does not raise the sum, else the damping grows sixfold, at most
+    :data:`TRIES` times (it falls fourfold after a step taken). Stops when a step changes no
+    parameter by more than ``xtol`` (in the units of x; an array: one per parameter), when it
+    lowers the sum by at most ``ftol`` times the sum, or after ``max_iter`` steps. ``lower``
+    and ``upper`` (default: none) box the parameters in: a parameter on its bound whose
+    gradient points out of the box is held there while the others move, and every step is
+    clipped to the box.
     """
     lo = np.full(len(x0), -np.inf) if lower is None else np.asarray(lower, dtype=float)
     hi = np.full(len(x0), np.inf) if upper is None else np.asarray(upper, dtype=float)
@@ -76,20 +81,20 @@ def least_squares(
         diag = np.where(held, 1.0, np.maximum(np.diag(A), 1e-300))
         A[held, held] = 1.0
         taken = False
-        while lam < 1e12:
+        for _ in range(TRIES):
             try:
                 step = np.linalg.solve(A + lam * np.diag(diag), -g)
             except np.linalg.LinAlgError:
-                lam *= 10.0
+                lam *= 6.0
                 continue
             trial = np.clip(x + step, lo, hi)
             step = trial - x
             rss_t, coef_t, r_t = evaluate(trial)
             if math.isfinite(rss_t) and rss_t <= rss:
-                lam = max(lam / 10.0, 1e-12)
+                lam = max(lam / 4.0, 1e-12)
                 taken = True
                 break
-            lam *= 10.0
+            lam *= 6.0
         if not taken:
             break
         done = bool(np.all(np.abs(step) <= xtol)) or (ftol > 0 and rss - rss_t <= ftol * rss)
