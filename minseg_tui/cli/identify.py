@@ -11,7 +11,7 @@ from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify
-from minseg_tui.units import NUMBER
+from minseg_tui.quantities import NUMBER
 
 
 def _ohms(text: str) -> float:
