@@ -5,6 +5,10 @@ Both problems are separable: for given nonlinear parameters (T, a time shift, a 
 parameter) the model is linear in the rest (K, offsets), which the caller solves exactly
 (variable projection). :func:`least_squares` searches the nonlinear ones; the caller says
 how the residual and its derivatives are computed.
+
+Written here rather than taken from scipy.optimize.least_squares: that finds the same
+minima, but importing scipy.optimize costs more CPU than the fits of a log take
+(benchmarks/lsq_engine.py measures both), and the CLI pays it on every run.
 """
 
 from __future__ import annotations
