@@ -1,7 +1,10 @@
 """Least-squares engines side by side: the same problems fitted by two or more source trees.
 
     .venv/bin/python benchmarks/lsq_engine.py [--trees main,WORK] [--seeds 16] [--check-seeds 10]
-        [--cli-runs 5] [--real DIR]
+        [--cli-runs 5] [--real DIR] [--parts cli,identify,real,check]
+
+``--trees main,s23-lsq-scipy,WORK`` adds the scipy candidate (branch s23-lsq-scipy: the same
+call sites, the search done by scipy.optimize.least_squares) that this tree's search won over.
 
 Each tree (a git ref, exported with ``git archive``, or WORK: this working tree) is measured
 in a child process of its own (PYTHONPATH = the tree), on:
@@ -209,14 +212,19 @@ def child(a: argparse.Namespace) -> None:
 
     synth = Path(minseg_tui.__file__).parent / "model" / "synth.py"
     _count_calls()
+    parts = a.parts.split(",")
     res: dict[str, Any] = {
         "package": str(Path(minseg_tui.__file__).parent),
         "synth": hashlib.sha1(synth.read_bytes()).hexdigest(),
-        "cli": _cli(a.cli_runs),
-        "identify": _identify_synth(a.seeds),
-        "real": _identify_real(Path(a.real)),
-        "check": _check(a.check_seeds),
     }
+    if "cli" in parts:
+        res["cli"] = _cli(a.cli_runs)
+    if "identify" in parts:
+        res["identify"] = _identify_synth(a.seeds)
+    if "real" in parts:
+        res["real"] = _identify_real(Path(a.real))
+    if "check" in parts:
+        res["check"] = _check(a.check_seeds)
     print(json.dumps(res))
 
 
@@ -242,6 +250,7 @@ def main() -> None:
     ap.add_argument("--check-seeds", type=int, default=10, help="seeds per cause")
     ap.add_argument("--cli-runs", type=int, default=5)
     ap.add_argument("--real", default=str(REAL))
+    ap.add_argument("--parts", default="cli,identify,real,check", help="what to measure")
     ap.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     a = ap.parse_args()
     if a.child:
@@ -255,7 +264,7 @@ def main() -> None:
             env = dict(os.environ, PYTHONPATH=str(tree))
             args = [sys.executable, __file__, "--child", "--seeds", str(a.seeds)]
             args += ["--check-seeds", str(a.check_seeds), "--cli-runs", str(a.cli_runs)]
-            args += ["--real", a.real]
+            args += ["--real", a.real, "--parts", a.parts]
             t0 = time.perf_counter()
             got = subprocess.run(args, check=True, capture_output=True, text=True, env=env)
             res[ref] = json.loads(got.stdout.strip().splitlines()[-1])
@@ -266,6 +275,20 @@ def main() -> None:
     w = max(14, *(len(r) for r in refs))
     cols = "".join(f"{r:>{w}}" for r in refs)
     print(f"load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; columns: {', '.join(refs)}")
+    parts = a.parts.split(",")
+    if "cli" in parts:
+        _print_cli(a, refs, res, w, cols)
+    if "identify" in parts:
+        _print_identify(a, refs, res, w, cols)
+    if "real" in parts:
+        _print_real(refs, res)
+    if "check" in parts:
+        _print_check(a, refs, res, w, cols)
+
+
+def _print_cli(
+    a: argparse.Namespace, refs: list[str], res: dict[str, Any], w: int, cols: str
+) -> None:
     print(f"\nCLI path (median of {a.cli_runs} runs, Python start included): wall s / CPU s")
     print(f"{'':34}{cols}")
     for name in ("identify", "analyze", "import", "numpy", "scipy"):
@@ -279,6 +302,11 @@ def main() -> None:
             "scipy": "import scipy.optimize",
         }.get(name, f"minseg-tui {name}")
         print(f"{label:34}{row}")
+
+
+def _print_identify(
+    a: argparse.Namespace, refs: list[str], res: dict[str, Any], w: int, cols: str
+) -> None:
     print(
         f"\nidentify on synthetic logs ({a.seeds} seeds x grid/sample x t_us or not per tier): "
         "|T error| median / p90 %, 95 % interval coverage %, CPU ms per identify"
@@ -289,6 +317,9 @@ def main() -> None:
         for key, fmt in (*keys, ("evals", ".1f")):
             row = "".join(f"{res[r]['identify'][tier][key]:>{w}{fmt}}" for r in refs)
             print(f"{tier + ' ' + key:34}{row}")
+
+
+def _print_real(refs: list[str], res: dict[str, Any]) -> None:
     print("\nidentify on real logs: T ms [95 % interval] (method), CPU ms")
     names = list(res[refs[0]]["real"])
     for n in names:
@@ -302,12 +333,17 @@ def main() -> None:
                 f"({v['method'][:5]}) {v['cpu_ms']:.0f} ms"
             )
         print(f"  {n:36}" + " | ".join(cells))
+
+
+def _print_check(
+    a: argparse.Namespace, refs: list[str], res: dict[str, Any], w: int, cols: str
+) -> None:
     print(
         f"\nmodel check ({a.check_seeds} seeds per cause): named right, median relative error "
         "of its parameter %"
     )
     print(f"{'':34}{cols}")
-    causes = [c for c in res[refs[0]]["check"] if c != "cpu_s"]
+    causes = [c for c in res[refs[0]]["check"] if c not in ("cpu_s", "evals")]
     for c in causes:
         row = "".join(
             f"{res[r]['check'][c]['right']:>{w - 9}d}/{res[r]['check'][c]['of']:<2d}"
@@ -315,10 +351,11 @@ def main() -> None:
             for r in refs
         )
         print(f"{c:34}{row}")
-    print(
-        f"{'CPU s per log (median)':34}"
-        + "".join(f"{res[r]['check']['cpu_s']:>{w}.3f}" for r in refs)
-    )
+    for key, label, fmt in (
+        ("cpu_s", "CPU s per log (median)", ".3f"),
+        ("evals", "model evaluations per log", ".1f"),
+    ):
+        print(f"{label:34}" + "".join(f"{res[r]['check'][key]:>{w}{fmt}}" for r in refs))
 
 
 if __name__ == "__main__":
