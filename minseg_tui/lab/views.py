@@ -24,6 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab import capture as lab_capture
+from minseg_tui.lab import check_words
 from minseg_tui.lab import compare as lab_compare
 from minseg_tui.lab.entry import UNITS, format_quantity
 from minseg_tui.lab.session import Entry, Session, TableRow
@@ -609,7 +610,10 @@ class CheckView:
     ``lead_why``; ``cause`` (the contract name) and ``cause_words`` (every cause named, in
     words), ``evidence`` in words, the extended model with its
     parameters, the other figures (``gain``), ``notes`` (what the check cannot say, the
-    anomalies; one line each); ``problem``: why there is no result."""
+    anomalies; one line each); ``problem``: why there is no result. ``story``: the two or
+    three sentences a student reads first (:func:`minseg_tui.lab.check_words.lead`), about
+    the close-up, whose title with its time span is ``close_title``; the rest are the
+    details."""
 
     run: str | None
     t: FloatArray = field(default_factory=_empty)
@@ -632,6 +636,8 @@ class CheckView:
     noise: float | None = None
     notes: tuple[str, ...] = ()
     cause_words: str = ""
+    story: tuple[str, ...] = ()
+    close_title: str = ""
 
 
 def _stem(key: str) -> str:
@@ -696,6 +702,12 @@ def check(session: Session) -> CheckView:
     notes = tuple(f"cannot say: {c.text}" for c in f.caveats) + tuple(
         f"anomaly: {a.text}" for a in r.anomalies
     )
+    u: FloatArray | None = None  # unread: the story says less about the close-up's step
+    if mc.run is not None:
+        try:
+            u = np.asarray(session.load_run(mc.run).u, dtype=np.float64)
+        except (InputError, KeyError):
+            u = None
     return CheckView(
         mc.run,
         t,
@@ -717,6 +729,8 @@ def check(session: Session) -> CheckView:
         noise=cu.noise if cu is not None else floor,
         notes=notes,
         cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),
+        story=check_words.lead(r, u),
+        close_title=check_words.close_up_title(r),
     )
 
 

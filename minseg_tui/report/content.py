@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab import check_words
 from minseg_tui.lab import steps as lab_steps
 from minseg_tui.lab.compare import ANSWERED_FIRST, format_diff
 from minseg_tui.lab.entry import format_quantity, format_reading
@@ -53,9 +54,18 @@ class Figures:
 
 
 @dataclass
+class Fold:
+    """Blocks a reader opens when they want them (HTML: a <details> fold; Markdown: a
+    subsection), under ``title``; ``blocks`` as in :class:`Section` (no Fold in a Fold)."""
+
+    title: str
+    blocks: list[object] = field(default_factory=list)
+
+
+@dataclass
 class Section:
     """A titled part of the report; ``blocks`` in order: str (a paragraph), Table, Figure,
-    Figures, or a list of str (bullet points)."""
+    Figures, a list of str (bullet points), or a Fold of such blocks."""
 
     title: str
     blocks: list[object] = field(default_factory=list)
@@ -603,9 +613,17 @@ def _model_check_section(session: Session) -> Section | None:
     if r is None:
         sec.blocks.append(f"The model check could not run on {mc.run}: {mc.problem}")
         return sec
+    try:
+        log: StepLog | None = session.load_run(mc.run)
+    except (InputError, KeyError):
+        log = None
+    u = np.asarray(log.u, float) if log is not None and len(log) == np.asarray(r.t).size else None
+    sec.blocks.append(check_words.join(check_words.lead(r, u)))
+    sec.blocks.append(_model_check_figures(mc.run, r, log))
+    details = Fold("Details")
     lead = _lead(r)
     if lead:
-        sec.blocks.append(lead)
+        details.blocks.append(lead)
     b, e, f = r.baseline, r.extended, r.finding
     named = f.cause != "none"
     items = []
@@ -617,8 +635,8 @@ def _model_check_section(session: Session) -> Section | None:
         f"{_num(b.fit_percent, 3)} %).",
         *_two_fits(session, mc.run, b.params),
         f"Where it deviates: {r.where}.",
-        f"Most likely cause: {in_words(f.cause)} ({f.cause}). "
-        f"{f.evidence[:1].upper() + f.evidence[1:]}",
+        f"Most likely cause: {in_words(f.cause)} ({f.cause}). The check's evidence, over the "
+        f"whole log: {f.evidence}",
     ]
     items += [
         f"Also: {in_words(o.cause)} ({o.cause}; {_params(o.params)}): {o.evidence}"
@@ -630,16 +648,16 @@ def _model_check_section(session: Session) -> Section | None:
             f"{_num(e.rmse, 3)} rad/s rms (fit {_num(e.fit_percent, 3)} %), "
             f"{_num(r.gain.get('rmse_reduction_percent'), 3)} % lower rms."
         )
-    sec.blocks.append(items)
+    details.blocks.append(items)
     head = (
         "figure",
         "first-order model",
         f"extended model ({in_words(e.model)})" if named else "extended",
     )
-    sec.blocks.append(Table(head, _gain_rows(r)))
+    details.blocks.append(Table(head, _gain_rows(r)))
     floor, noise, angle = (r.gain.get(k) for k in ("noise_floor", "noise", "angle_floor"))
     if floor is not None or noise is not None:
-        sec.blocks.append(
+        details.blocks.append(
             "The speed's noise: "
             + "; ".join(
                 x
@@ -657,16 +675,12 @@ def _model_check_section(session: Session) -> Section | None:
             + ". An error near it says nothing about a model; the part above it does."
         )
     if f.caveats:
-        sec.blocks.append("What the check cannot say here:")
-        sec.blocks.append([c.text for c in f.caveats])
+        details.blocks.append("What the check cannot say here:")
+        details.blocks.append([c.text for c in f.caveats])
     if r.anomalies:
-        sec.blocks.append("Anomalies (reported, not counted as causes):")
-        sec.blocks.append([a.text for a in r.anomalies])
-    try:
-        log: StepLog | None = session.load_run(mc.run)
-    except (InputError, KeyError):
-        log = None
-    sec.blocks.append(_model_check_figures(mc.run, r, log))
+        details.blocks.append("Anomalies (reported, not counted as causes):")
+        details.blocks.append([a.text for a in r.anomalies])
+    sec.blocks.append(details)
     return sec
 
 
