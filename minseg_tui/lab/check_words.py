@@ -15,7 +15,7 @@ analyze``). Units: s, V, rad/s, rad.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,7 +40,7 @@ EVERYDAY: dict[str, str] = {
     ),
     "coast_on_zero": (
         "at 0 V the driver lets the wheel spin freely instead of braking it, so it runs down "
-        "more slowly than the model says"
+        "at its own pace, not at the pace of a braked motor"
     ),
     "second_pole": (
         "the current needs time to build up in the motor's winding, so the speed starts "
@@ -79,6 +79,11 @@ FIGURE_UNITS: dict[str, str] = {
     "rmse": "rad/s",
 }
 
+SLOWER: dict[str, int] = {"coast_on_zero": -1}
+"""Which way each cause makes the first-order model miss in its close-up: +1 (the default)
+the measured wheel is slower than the model says (it stops sooner, starts later, rises
+more gently), -1 faster (it runs down more slowly)."""
+
 MIN_STILL_ROWS = 3
 """A wheel stands still from a row on when it reads still there and in at least this many
 rows after it, to the end of the close-up."""
@@ -102,6 +107,30 @@ class Moment:
     still: bool = False
 
 
+def stem(key: str) -> str:
+    """A gain figure's key without its model: 'heldout_extended_rmse' -> 'heldout_rmse',
+    'baseline_angle_rms' -> 'angle_rms'."""
+    return key.replace("baseline_", "").replace("extended_", "")
+
+
+def figure(gain: Mapping[str, float | None], key: str) -> tuple[float | None, float | None]:
+    """The first-order and the extended model's value of gain figure ``key`` (either
+    model's key, or its :func:`stem`): the keys are 'baseline_<stem>' and 'extended_<stem>',
+    or 'heldout_baseline_rmse' and 'heldout_extended_rmse'. None where the log does not give
+    it."""
+    s = stem(key)
+    for b, e in (
+        (f"baseline_{s}", f"extended_{s}"),
+        (
+            s.replace("heldout_", "heldout_baseline_", 1),
+            s.replace("heldout_", "heldout_extended_", 1),
+        ),
+    ):
+        if b in gain or e in gain:
+            return gain.get(b), gain.get(e)
+    return None, None
+
+
 def _v(x: float) -> str:
     return format_value(x, "V", 3)
 
@@ -112,6 +141,11 @@ def _w(x: float) -> str:
 
 def _s(x: float) -> str:
     return format_value(x, "s", 3)
+
+
+def _later(x: float) -> str:
+    """A time after a step: '175 ms', '1.2 s'."""
+    return f"{x * 1e3:.0f} ms" if x < 1.0 else format_value(x, "s", 2)
 
 
 def moment(r: CheckResult, u: ArrayLike | None) -> Moment | None:
@@ -156,8 +190,14 @@ def moment(r: CheckResult, u: ArrayLike | None) -> Moment | None:
         k = edge + (int(moving[-1]) + 1 if moving.size else 0)
         if k <= b - MIN_STILL_ROWS and abs(w[edge - 1]) > zero:
             return at(k, still=True)
-    miss = np.convolve(w[edge:b] - base[edge:b], np.ones(3) / 3.0, mode="same")
-    return at(edge + int(np.argmax(np.abs(miss)))) if miss.size else None
+    # the largest miss the way the cause makes it (|speed| below the model's for most),
+    # else the largest either way
+    sign = SLOWER.get(r.finding.cause, 1) * np.sign(base[edge:b] + w[edge:b])
+    miss = np.convolve(sign * (base[edge:b] - w[edge:b]), np.ones(3) / 3.0, mode="same")
+    if not miss.size:
+        return None
+    k = int(np.argmax(miss)) if np.max(miss) > 0 else int(np.argmax(np.abs(miss)))
+    return at(edge + k)
 
 
 def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
@@ -165,9 +205,9 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
     cu = r.close_up
     if cu is not None and cu.cause == "disturbance":
         return (
-            f"Between {_s(cu.t0)} and {_s(cu.t1)} something braked the wheel (a hand on it, "
-            "or the wheel touching something): no model of the motor explains that, so the "
-            "check leaves this stretch out."
+            "In this close-up something braked the wheel (a hand on it, or the wheel "
+            "touching something): no model of the motor explains that, so the check leaves "
+            "this stretch out."
         )
     named = r.finding.cause != "none"
     if not named:
@@ -191,15 +231,20 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
         if m.kind == "drop"
         else f"the voltage steps from {_v(m.u_from)} to {_v(m.u_to)} at t = {_s(m.edge)}"
     )
-    after = _s(m.at - m.edge)
+    after = _later(m.at - m.edge)
     if m.still and abs(m.first_order) > abs(m.measured):
         return (
             f"After {step}, the wheel stands still {after} later; the simple (first-order) "
             f"model says it still turns at {_w(m.first_order)} then."
         )
+    wheel = (
+        "the wheel has not moved yet"
+        if m.kind == "rise" and _w(m.measured) == _w(0.0)
+        else f"the wheel turns at {_w(m.measured)}"
+    )
     return (
-        f"After {step}, {after} later the wheel turns at {_w(m.measured)} where the simple "
-        f"(first-order) model says {_w(m.first_order)}."
+        f"After {step}, {after} later {wheel} where the simple (first-order) model says "
+        f"{_w(m.first_order)}."
     )
 
 
@@ -227,13 +272,13 @@ def _gain(r: CheckResult) -> str:
     f = r.finding
     if f.cause == "none" or r.lead is None:
         return ""
-    stem = r.lead.figure.removeprefix("baseline_").removeprefix("extended_")
-    b, e = r.gain.get(f"baseline_{stem}"), r.gain.get(f"extended_{stem}")
+    key = stem(r.lead.figure)
+    b, e = figure(r.gain, key)
     if b is None or e is None:
         return ""
     added = " and ".join(SHORT.get(c, c) for c in [f.cause, *(o.cause for o in f.others)])
-    words = FIGURE_WORDS.get(stem, stem)
-    unit = FIGURE_UNITS.get(stem, "")
+    words = FIGURE_WORDS.get(key, key)
+    unit = FIGURE_UNITS.get(key, "")
     if e >= b:
         return (
             f"With {added} added (the extended model), {words} is no smaller "
@@ -241,7 +286,7 @@ def _gain(r: CheckResult) -> str:
         )
     if e == 0:
         return f"With {added} added (the extended model), {words} falls to within the noise."
-    how = f"{b / e:.1f} times smaller" if b >= 1.5 * e else f"{100 * (1 - e / b):.0f} % smaller"
+    how = f"{b / e:.2g} times smaller" if b >= 1.5 * e else f"{100 * (1 - e / b):.0f} % smaller"
     return (
         f"With {added} added (the extended model), {words} falls from "
         f"{format_value(b, unit, 2)} to {format_value(e, unit, 2)}, {how}."

@@ -640,16 +640,14 @@ class CheckView:
     close_title: str = ""
 
 
-def _stem(key: str) -> str:
-    """A gain key without its baseline_/extended_ prefix."""
-    return key.removeprefix("baseline_").removeprefix("extended_")
+_stem = check_words.stem
 
 
 def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | None:
     """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
-    b, e = gain.get(f"baseline_{stem}"), gain.get(f"extended_{stem}")
+    b, e = check_words.figure(gain, key)
     unit = FIGURES.get(stem, (stem, ""))[1]
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)

@@ -423,17 +423,17 @@ _GAIN_FIGURES: tuple[tuple[str, str, str], ...] = (
 
 
 def _gain_name(key: str) -> tuple[str, str]:
-    bare = key.removeprefix("baseline_").removeprefix("extended_")
+    bare = check_words.stem(key)
     return next(((n, u) for k, n, u in _GAIN_FIGURES if k == bare), (bare, ""))
 
 
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     g = r.gain
     named = r.finding.cause != "none"
-    lead = r.lead.figure.removeprefix("baseline_").removeprefix("extended_") if r.lead else ""
+    lead = check_words.stem(r.lead.figure) if r.lead else ""
     rows = []
     for key, name, unit in sorted(_GAIN_FIGURES, key=lambda f: f[0] != lead):
-        b, e = g.get(f"baseline_{key}"), g.get(f"extended_{key}")
+        b, e = check_words.figure(g, key)
         if b is None:
             continue
         rows.append(
@@ -450,8 +450,7 @@ def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
     name, unit = _gain_name(r.lead.figure)
-    key = r.lead.figure.removeprefix("baseline_").removeprefix("extended_")
-    b, e = r.gain.get(f"baseline_{key}"), r.gain.get(f"extended_{key}")
+    b, e = check_words.figure(r.gain, r.lead.figure)
     if b is None:
         return None
     if r.finding.cause == "none" or e is None:
