@@ -164,6 +164,12 @@ def _layer(tr: Trace) -> int:
     return 0 if tr.steps else 1 if tr.marker in GUIDES else 2
 
 
+def drawing_order(traces: Sequence[Trace]) -> list[int]:
+    """The indices of ``traces`` in the order plotext draws them (each over the ones before):
+    the input's staircase, the guides, then the data, each kind in list order."""
+    return sorted(range(len(traces)), key=lambda k: _layer(traces[k]))
+
+
 def _colour(k: int, tr: Trace) -> tuple[str, str]:
     return COLOURS[(k if tr.colour is None else tr.colour) % len(COLOURS)]
 
@@ -218,8 +224,8 @@ class Canvas(PlotextPlot):
         # (a level, a marker line: '-' and '|'), then the data, which must show where it
         # crosses them (a dashed 63 % line hid the speed at its crossing); each trace keeps
         # its place in the list for its colour
-        order = sorted(enumerate(self.traces), key=lambda kt: _layer(kt[1]))
-        for k, tr in order:
+        for k in drawing_order(self.traces):
+            tr = self.traces[k]
             if len(tr.x):
                 x, y = drawn(tr)
                 if self.size.width:
