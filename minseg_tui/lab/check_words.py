@@ -22,7 +22,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import CheckResult
-from minseg_tui.units import format_value
+from minseg_tui.quantities import format_value
 
 FloatArray = NDArray[np.float64]
 
