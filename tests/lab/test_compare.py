@@ -11,11 +11,11 @@ import numpy as np
 
 from minseg_tui.lab import views
 from minseg_tui.lab.compare import format_diff, read_policy
-from minseg_tui.lab.entry import example
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.model.plant import PlantParams, record
+from minseg_tui.quantities import example
 
 
 def _lab(root: Path) -> Session:
