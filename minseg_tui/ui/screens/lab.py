@@ -121,6 +121,44 @@ class StepPane(VerticalScroll):
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
 
     @on(ViewPanel.Drawn)
+    def _drawn(self, event: ViewPanel.Drawn) -> None:
+        """The panel drew its view; what it newly shows (an answer's comparison) is brought
+        into view with the entry the group is in, else the entry alone."""
+        if event.reveal is None or not self._reveal_with_entry(event.reveal):
+            self._keep_entry_in_view()
+
+    def _reveal_with_entry(self, widget: Widget) -> bool:
+        """Scroll so that the focused entry and ``widget`` are both in view, the entry first
+        when both do not fit (False: no entry of this step has the focus, or the group
+        scrolled away)."""
+        focused = self.screen.focused
+        row = next(
+            (
+                a
+                for a in (focused.ancestors_with_self if focused else ())
+                if isinstance(a, FieldRow)
+            ),
+            None,
+        )
+        if row is None or self not in row.ancestors or self._scrolled:
+            return False
+        self._landing = None  # the group answered: the landing is over
+
+        def place(again: bool) -> None:
+            if not (row.is_attached and widget.is_attached):
+                return
+            view = self.scrollable_content_region
+            top = row.region.y - view.y + self.scroll_y
+            bottom = row.region.bottom - view.y + self.scroll_y
+            end = widget.region.bottom - view.y + self.scroll_y
+            y = min(max(self.scroll_y, end - view.height, bottom - view.height), top)
+            self.scroll_to(y=y, animate=False, immediate=True)
+            if again:  # once more when the layout has settled
+                self.call_after_refresh(place, False)
+
+        self.call_after_refresh(place, True)
+        return True
+
     @on(FieldRow.Reflowed)
     def _keep_entry_in_view(self) -> None:
         """The step grew or shrank above its entries (the panel drew its view, or the
