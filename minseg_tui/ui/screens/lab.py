@@ -13,7 +13,7 @@ import asyncio
 from collections.abc import Callable, Sequence
 from functools import partial
 from pathlib import Path
-from typing import TypeVar
+from typing import Literal, TypeVar
 
 from textual import events, on, work
 from textual.actions import SkipAction
@@ -94,13 +94,12 @@ class StepPane(VerticalScroll):
         # focusable where the step may land on its text (no entries, or a panel to read):
         # the arrow keys then scroll it
         self.can_focus = panel is not None or not step.fields
-        self._landing: FieldRow | None = None
-        """The entry the step landed in, while it has the focus and the group has not
-        scrolled: brought back into view when the panel's view is drawn (it comes from a
-        worker, before or after the landing) and moves the entry down."""
-        self._scrolled = False
-        """The group scrolled the step (arrows, mouse) since the focus last moved in it: it
-        stays where they put it when its content grows or shrinks."""
+        self._keep: FieldRow | Literal["focused", "scrolled"] = "focused"
+        """What stays in view when the step grows or shrinks above its entries: the entry the
+        step landed in, while it has the focus (placed again from the top of the step: the
+        panel's view comes from a worker, before or after the landing, and moves the entry
+        down); the focused entry; or nothing once the group scrolled (arrows, mouse) since
+        the focus last moved in the step: it stays where they put it."""
 
     def compose(self) -> ComposeResult:
         yield Prose(self.step.title, classes="title")
@@ -127,20 +126,22 @@ class StepPane(VerticalScroll):
         report's files after F8; an entry's hint moved under its box or back). The entry
         the step landed in is placed again from the top of the step; an entry the group
         moved to since stays in view. Either only while the group has not scrolled away."""
-        row = self._landing
-        if row is not None and row.is_attached and row.has_focus_within:
-            row.call_after_refresh(row.bring_into_view, True)
-            return
-        self._landing = None
+        landed = self._keep
+        if isinstance(landed, FieldRow):
+            if landed.is_attached and landed.has_focus_within:
+                landed.call_after_refresh(landed.bring_into_view, True)
+                return
+            self._keep = "focused"
         focused = self.screen.focused
-        if self._scrolled or focused is None:
+        if self._keep == "scrolled" or focused is None:
             return
         row = next((a for a in focused.ancestors_with_self if isinstance(a, FieldRow)), None)
         if row is not None and self in row.ancestors:
             row.call_after_refresh(row.bring_into_view)
 
     def on_descendant_focus(self, _: events.DescendantFocus) -> None:
-        self._scrolled = False
+        if self._keep == "scrolled":
+            self._keep = "focused"
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
         self._group_scrolled()
@@ -150,8 +151,7 @@ class StepPane(VerticalScroll):
 
     def _group_scrolled(self) -> None:
         """The group scrolls: the step stays where they put it."""
-        self._landing = None
-        self._scrolled = True
+        self._keep = "scrolled"
 
     def _scroll_lines(self, lines: int) -> None:
         """The arrow keys (on the step or in one of its entries): ``lines`` down (up if
@@ -198,7 +198,7 @@ class StepPane(VerticalScroll):
             row = self.landing_row()
             if row is not None:
                 row.focus_input(landing=True)
-                self._landing = row
+                self._keep = row
             else:
                 self.screen.set_focus(self)
             return
@@ -266,6 +266,9 @@ class LabScreen(StatusScreen):
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
     ]
     COMMANDS = StatusScreen.COMMANDS | {StepCommands}
+    AUTO_FOCUS = ""
+    """Nothing focused as the screen comes up (not the list of steps): the lab opens landed in
+    its step, its entry in view, as PgDn lands."""
 
     requested: reactive[float | None] = reactive(None)
     meter: reactive[MeterReading | None] = reactive(None)
@@ -316,9 +319,6 @@ class LabScreen(StatusScreen):
             current = s.current_step
         start = current if current in STEP_IDS else STEP_IDS[0]
         self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
-        # the list took the focus as the screen came up (Textual's auto-focus), not the group:
-        # the lab opens landed in its step, its entry in view, as PgDn lands
-        self._jump = ("entry",)
         await self.show_step(start)
         self.shown.set()
 
