@@ -29,8 +29,8 @@ from typing import Any
 from textual import on, work
 from textual.actions import ActionParseResult
 from textual.app import App, SystemCommand
-from textual.await_complete import AwaitComplete
 from textual.binding import Binding
+from textual.command import CommandPalette
 from textual.dom import DOMNode
 from textual.notifications import SeverityLevel
 from textual.reactive import reactive
@@ -73,6 +73,7 @@ from minseg_tui.ui.screens.boardcheck import (
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.screens.status import StatusScreen
@@ -344,14 +345,10 @@ class LabApp(App[None]):
                 timeout=15,
             )
 
-    def pop_screen(self) -> AwaitComplete:
-        """Close the screen on top (help, a question, the palette), never the start or the
-        lab screen under them (they are switched to, not pushed): Textual's palette closes
-        itself once per Enter it is handed, and two Enters in one burst ('Ctrl+P task 6
-        Enter ... Enter') closed the lab screen under it and left an empty terminal."""
-        if isinstance(self.screen, StatusScreen):
-            return AwaitComplete()
-        return super().pop_screen()
+    def action_command_palette(self) -> None:
+        """Ctrl+P: the palette, closed once however many Enters it is handed."""
+        if self.use_command_palette and not isinstance(self.screen, CommandPalette):
+            self.push_screen(Palette(id="--command-palette"))
 
     async def action_start_lab(self) -> None:
         """Enter on the start screen: open the lab it asks for, and return once the lab shows
