@@ -72,6 +72,26 @@ MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": "
 
 STEP_IDS = tuple(s.id for s in STEPS)
 
+PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
+    ("f3", "set_voltage", "Set V", "setting a voltage"),
+    ("f4", "capture", "Capture", "capturing omega_ss"),
+    ("f5", "run_steps", "Run", "the step experiment"),
+    ("f6", "run_fast", "Run 5 ms", "the fast step experiment"),
+    ("f7", "formula", "Formula", "a table formula"),
+    ("f9", "zoom_next", "Zoom", "zooming the step log"),
+    ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
+    ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
+    ("ctrl+r", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
+)
+"""Keys that act on the shown step's panel: (keys, the app's action, footer label, what it is;
+no label: not in the footer). The footer shows a key on the steps whose panel offers it
+(:meth:`LabScreen.panel_keys`); elsewhere the key says that it is not part of this step. None
+is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
+moves). The app binds them (its keys come first in the footer, where Reveal, a lab
+assistant's key, is the one cut at 80 columns)."""
+
+PANEL_ACTIONS = frozenset(action for _, action, _, _ in PANEL_KEYS)
+
 
 def nav_label(step: Step, status: str = "todo") -> str:
     """Short name in the navigator: a status mark and the title up to its colon, abbreviated."""
@@ -334,6 +354,39 @@ class LabScreen(StatusScreen):
         leaving), or None."""
         panes = self.query(StepPane)
         return panes.last().panel if panes else None
+
+    def panel_keys(self) -> dict[str, Callable[[], None]]:
+        """The panel keys of the step shown (:data:`PANEL_KEYS`): action -> what its panel
+        does (none on a step without a panel, or whose panel has no keys)."""
+        panel = self.panel
+        if isinstance(panel, LivePanel):
+            keys = {"set_voltage": panel.set_voltage, "capture": panel.capture}
+            return {action: run for action, run in keys.items() if panel.offers(action)}
+        if isinstance(panel, StepRunPanel):
+            return {"run_steps": panel.run_steps, "run_fast": panel.run_fast}
+        if isinstance(panel, TablePanel):
+            return {"formula": panel.formula}
+        if isinstance(panel, ResultsPanel):
+            return {
+                "zoom_next": panel.zoom_next,
+                "pick_prev": panel.pick_prev,
+                "pick_next": panel.pick_next,
+                "reveal": panel.reveal,
+            }
+        if isinstance(panel, ModelCheckPanel):
+            return {"zoom_next": panel.zoom_next}
+        return {}
+
+    async def press(self, action: str) -> None:
+        """Panel key ``action`` (:data:`PANEL_KEYS`): what the step's panel does, then wait
+        until what it asked (a capture, say) is done, so the keys typed after it act on the
+        result. Nothing on a step whose panel does not have it."""
+        run = self.panel_keys().get(action)
+        panel = self.panel
+        if run is None or panel is None:
+            return
+        run()
+        await self.settle_from(panel)
 
     def _panel_for(self, step: Step) -> Widget | None:
         """The panel of ``step``'s kind (None for steps that only take entries), bound to the
