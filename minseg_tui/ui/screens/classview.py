@@ -95,6 +95,7 @@ class ClassScreen(Screen[None]):
         Binding("escape", "back", "Back"),
         Binding("enter", "open_group", "Open read-only", priority=True),
     ]
+    AUTO_FOCUS = "#class-table"
 
     @dataclass
     class GroupRead(Message):
@@ -128,7 +129,6 @@ class ClassScreen(Screen[None]):
         table = self.query_one(DataTable)
         for header, key in COLUMNS:
             table.add_column(header, key=key)
-        table.focus()
         self._read()
 
     @work(thread=True, exclusive=True, group="class", name="read the class")
