@@ -51,7 +51,6 @@ from minseg_tui.lab.capture import DEFAULT_WINDOW, Capture, capture
 from minseg_tui.lab.compare import compare_fields, reveal_keys
 from minseg_tui.lab.entries import Entry, parsed_values, read_entry, revise
 from minseg_tui.lab.expr import Formula
-from minseg_tui.lab.files import read_step_log
 from minseg_tui.lab.results import (
     Comparison,
     ModelCheck,
@@ -72,7 +71,7 @@ from minseg_tui.lab.runs import (
     keep_run,
     new_name,
     read_partial,
-    remap_runs,
+    read_run,
     run_header,
     ts_of,
 )
@@ -159,7 +158,6 @@ class Session:
         self._unsaved = False
         # finished recordings whose log is not written yet, and whether each stopped early
         self._unkept: list[tuple[Recorder, bool, str]] = []
-        self._remap_due = False  # the runs' u column waits for a table change to be written
         self.recovered: list[str] = []
         """Names of runs rebuilt at open from a recording a crash interrupted."""
         self.recovery_notes: list[str] = []
@@ -282,13 +280,12 @@ class Session:
 
     @property
     def unsaved(self) -> bool:
-        """True while a change, a finished run or a run's new u column is only in memory."""
-        return self._unsaved or bool(self._unkept) or self._remap_due
+        """True while a change or a finished run is only in memory."""
+        return self._unsaved or bool(self._unkept)
 
     def save(self) -> bool:
         """Write everything not yet on disk: runs kept since the last save that worked,
-        session.json (atomically), the runs' u column after a table change. True when all
-        is on disk. A failed write never raises: it becomes :attr:`save_problem`, and the
+        session.json (atomically). True when all is on disk. A failed write never raises: it becomes :attr:`save_problem`, and the
         next change or call of :meth:`save` tries again (call it every few seconds while
         there is a problem)."""
         if self.readonly:
@@ -313,13 +310,6 @@ class Session:
             self._failed(exc)
             return False
         self._unsaved = False
-        if self._remap_due:
-            try:
-                remap_runs(self.folder, self._runs, self.table_pairs())
-                self._remap_due = False
-            except OSError as exc:
-                self._failed(exc)
-                ok = False
         if ok:
             self._problem = None
         return ok
@@ -457,8 +447,7 @@ class Session:
         ):
             self._captures.pop(key, None)
         if key.startswith("u_ss@") and entry.refused is None:
-            self._remap_due = True  # the runs' u column follows the table (written by save)
-            self._run_version += 1
+            self._run_version += 1  # the runs' applied voltage follows the table when read
         self._changed()
         return entry
 
@@ -610,7 +599,7 @@ class Session:
         cached = self._checks.get(key)
         if cached is not None:
             return cached
-        result = check_run(self.folder, run)
+        result = check_run(self.folder, run, self.table_pairs())
         self._checks = {key: result}
         return result
 
@@ -673,8 +662,13 @@ class Session:
         raise KeyError(name)
 
     def load_run(self, name: str) -> StepLog:
-        """Run ``name`` read back as a StepLog (InputError if its file is damaged)."""
-        return read_step_log(self.run_path(name), require_step=False)
+        """Run ``name`` read back as a StepLog, its u column the applied voltage u_A worked out
+        now from the table's u_ss (a recorded run; an imported one as it stands). KeyError for
+        an unknown run, InputError if its file is damaged."""
+        for r in self._runs:
+            if r.name == name:
+                return read_run(self.folder, r, self.table_pairs())
+        raise KeyError(name)
 
     def step_run(self) -> RunInfo | None:
         """The run Tasks 11-15 use: the one the group chose (it stays until they choose
@@ -787,7 +781,7 @@ class Session:
         too short. OSError when its log cannot be written."""
         if any(r.name == name for r in self._runs):
             return None
-        info = keep_run(self.folder, name, raw, self.table_pairs(), interrupted, ended_by)
+        info = keep_run(self.folder, name, raw, interrupted, ended_by)
         if info is None:
             return None
         self._runs.append(info)
@@ -801,9 +795,7 @@ class Session:
             rec, stopped_early, ended_by = self._unkept[0]
             raw = rec.raw()
             if not any(r.name == rec.name for r in self._runs):
-                info = keep_run(
-                    self.folder, rec.name, raw, self.table_pairs(), stopped_early, ended_by
-                )
+                info = keep_run(self.folder, rec.name, raw, stopped_early, ended_by)
                 if info is not None:
                     self._runs.append(info)
                     self._run_version += 1

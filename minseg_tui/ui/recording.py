@@ -5,8 +5,6 @@ from __future__ import annotations
 import threading
 from dataclasses import dataclass
 
-import numpy as np
-
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.lab.runs import Recorder
 from minseg_tui.lab.steps import RunPlan
@@ -54,20 +52,12 @@ class ActiveRun:
         return self.recorder.name
 
     def append(self, batch: SampleBatch) -> None:
-        """Keep every sample of ``batch`` as the board sent it (the Recorder's file holds the
-        requested voltage in mV); nothing once the run has ended."""
+        """Keep every sample of ``batch`` as the board sent it; nothing once the run has
+        ended."""
         with self._lock:
             if self.recorder.closed or self._ended or not len(batch):
                 return
-            u_mV = np.rint(batch.u_req * 1000.0).astype(np.int64)
-            for s, t, c, u in zip(
-                batch.seq.tolist(),
-                batch.t_us.tolist(),
-                batch.count.tolist(),
-                u_mV.tolist(),
-                strict=True,
-            ):
-                self.recorder.append(s, t, c, u)
+            self.recorder.add(batch)
             if self._first_us is None:
                 self._first_us = int(batch.t_us[0])
             self._last_us = int(batch.t_us[-1])

@@ -213,7 +213,7 @@ def test_finished_run_is_a_step_log_with_applied_voltage(tmp_path):
         info, data, u = _record_steps(s)
         assert info.name == "steps-1" and info.samples == u.size and info.dropped == 0
         assert not list((s.folder / "runs").glob("*.partial"))
-        log = read_step_log(s.folder / info.file)
+        log = s.load_run(info.name)
         assert list(log.extra["count"]) == list(data.count)
         assert log.t[0] == 0.0 and log.t[-1] == pytest.approx((data.t_us[-1] - data.t_us[0]) / 1e6)
         high = np.asarray(log.extra["u_req"]) == 4.5
@@ -227,10 +227,14 @@ def test_finished_run_is_a_step_log_with_applied_voltage(tmp_path):
         assert mc.run == "steps-1" and mc.result is not None and mc.problem == ""
         assert mc.result.t.size == u.size
         assert s.model_check() is mc  # cached until something changes
-        # a changed u_ss rewrites the run's u column and K follows
+        # a changed u_ss: the run read again has the new u column and K follows; the
+        # recording itself (what the board sent) is never written again
+        recorded = (s.folder / info.file).read_bytes()
+        assert set(np.asarray(read_step_log(s.folder / info.file).u)[high]) == {4.5}
         s.enter("u_ss@4.5", "4.2 V")
-        log2 = read_step_log(s.folder / info.file)
+        log2 = s.load_run(info.name)
         assert set(np.asarray(log2.u)[high]) == {4.2}
+        assert (s.folder / info.file).read_bytes() == recorded
         assert s.results().identification.step.u_ss == pytest.approx(4.2)
 
 
