@@ -32,6 +32,7 @@ from minseg_tui.errors import MinsegError
 from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import STEPS, Step
+from minseg_tui.lab.task10 import RunProgress
 from minseg_tui.lab.views import EntryView
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.live import LiveBuffer
@@ -49,7 +50,6 @@ from minseg_tui.ui.panels.results import ResultsPanel
 from minseg_tui.ui.panels.step_run import StepRunPanel
 from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
-from minseg_tui.ui.recording import RunProgress
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import EntryBox, FieldRow
