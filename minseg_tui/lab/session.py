@@ -107,6 +107,21 @@ def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
 
 
+class _Cache:
+    """What a session computed (Tasks 6-15, the model checks), each under the key of what it
+    was computed from; shared by a session and its snapshots, so a view built from a snapshot
+    is not computed again by the next one. Each attribute is replaced whole (never changed
+    in place), so threads may share it."""
+
+    def __init__(self) -> None:
+        self.results: tuple[object, Results] | None = None
+        self.checks: dict[tuple[int, str], ModelCheck] = {}
+
+
+class SessionFrozen(RuntimeError):
+    """A change asked of a snapshot (:meth:`Session.snapshot`): a program error."""
+
+
 @dataclass(frozen=True)
 class Moved:
     """Where :meth:`Session.move_to` put the session, and the run files it could not
@@ -151,8 +166,9 @@ class Session:
             k: Capture.from_json(v) for k, v in data["captures"].items()
         }
         self._runs: list[RunInfo] = [RunInfo.from_json(r) for r in data["runs"]]
-        self._results: tuple[object, Results] | None = None
-        self._checks: dict[tuple[int, str], ModelCheck] = {}
+        self._cache = _Cache()
+        self.frozen = False
+        """A snapshot (:meth:`snapshot`): it reads as the session did, and changes nothing."""
         self._run_version = 0
         self._problem: SaveProblem | None = None
         self._unsaved = False
@@ -272,6 +288,39 @@ class Session:
     def __exit__(self, *exc: object) -> None:
         self.close()
 
+    def snapshot(self) -> Session:
+        """A frozen copy of the session as it stands now, for another thread (a worker that
+        builds a view or writes the report): it reads as the session does (entries, runs,
+        results, the model check, its folder), shares nothing the session changes, and
+        refuses every change (:class:`SessionFrozen`). It holds no lock; what it computes
+        is kept for the session too (the same inputs give the same results)."""
+        data = {k: v for k, v in self._data.items() if k not in ("entries", "captures", "runs")}
+        snap = Session(
+            self.folder,
+            {**json.loads(json.dumps(data)), "entries": {}, "captures": {}, "runs": []},
+            lock=None,
+            clock=self._clock,
+            readonly=True,
+        )
+        snap._entries = dict(self._entries)  # Entry, Capture and RunInfo are frozen
+        snap._captures = dict(self._captures)
+        snap._runs = list(self._runs)
+        snap._cache = self._cache
+        snap._run_version = self._run_version
+        snap._problem = self._problem
+        snap._unsaved = self.unsaved
+        snap.readonly = self.readonly
+        snap.damaged = self.damaged
+        snap.recovered = list(self.recovered)
+        snap.recovery_notes = list(self.recovery_notes)
+        snap.frozen = True
+        return snap
+
+    def _change(self) -> None:
+        """Refuse a change of a snapshot (before anything is changed)."""
+        if self.frozen:
+            raise SessionFrozen(f"a snapshot of session {self.id} is not changed")
+
     @property
     def save_problem(self) -> SaveProblem | None:
         """Why the session is not all on disk (``.line``: one line for the status bar), or
@@ -288,6 +337,7 @@ class Session:
         session.json (atomically). True when all is on disk. A failed write never raises: it becomes :attr:`save_problem`, and the
         next change or call of :meth:`save` tries again (call it every few seconds while
         there is a problem)."""
+        self._change()
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
         ok = True
@@ -331,6 +381,7 @@ class Session:
         lock it there and go on there; the old folder is left as it is (and unlocked). The
         run files come along where they can be read. SessionNotWritable (one line, nothing
         changed) when ``root`` cannot take it."""
+        self._change()
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
         # the id as a folder name of its own: a file saying '../x' must not leave ``root``
@@ -378,11 +429,13 @@ class Session:
 
     def set_members(self, members: Sequence[str]) -> None:
         """Change the group's members (saved)."""
+        self._change()
         self._data["members"] = [str(m) for m in members]
         self._changed()
 
     def set_date(self, date: str) -> None:
         """Change the lab's date (saved)."""
+        self._change()
         self._data["date"] = str(date)
         self._changed()
 
@@ -398,6 +451,7 @@ class Session:
 
     def go_to(self, step_id: str) -> Step:
         """Move to ``step_id`` (KeyError if unknown); saved, so resume comes back here."""
+        self._change()
         new = lab_steps.step(step_id)
         self._data["current_step"] = new.id
         self.save()
@@ -432,6 +486,7 @@ class Session:
         entry: accepted with its value, note and warnings, or refused with a one-line message.
         The text is kept either way, and saved before this returns (or, when the save
         fails, kept in memory and said by :attr:`save_problem`)."""
+        self._change()
         entry = revise(
             self._entries.get(key),
             read_entry(FIELDS[key], text),
@@ -508,6 +563,7 @@ class Session:
         """Task 4: capture omega_ss at requested ``level`` (V) as the mean of the last
         ``window`` s of ``omega`` (rad/s) at times ``t`` (s); stores the capture (spread,
         window) and enters omega_ss@level. ValueError with fewer than 3 samples."""
+        self._change()
         key = f"omega_ss@{level:g}"
         if key not in FIELDS:
             raise KeyError(key)
@@ -569,10 +625,11 @@ class Session:
             run.name if run else None,
             self._run_version,
         )
-        if self._results is not None and self._results[0] == key:
-            return self._results[1]
+        cached = self._cache.results
+        if cached is not None and cached[0] == key:
+            return cached[1]
         res = self._compute()
-        self._results = (key, res)
+        self._cache.results = (key, res)
         return res
 
     def _compute(self) -> Results:
@@ -596,11 +653,11 @@ class Session:
                 "no step run recorded yet (Task 10)" if name is None else f"no run {name}",
             )
         key = (self._run_version, run.name)
-        cached = self._checks.get(key)
+        cached = self._cache.checks.get(key)
         if cached is not None:
             return cached
         result = check_run(self.folder, run, self.table_pairs())
-        self._checks = {key: result}
+        self._cache.checks = {key: result}
         return result
 
     def warnings(self, step_id: str | None = None) -> list[Notice]:
@@ -641,6 +698,7 @@ class Session:
     def reveal(self, step_id: str) -> list[str]:
         """Show the computed values of step ``step_id`` before the group answered them:
         the fields so marked (saved; the report says "revealed before answering")."""
+        self._change()
         keys = reveal_keys(lab_steps.step(step_id).fields, self.answered())
         if keys:
             self._data["revealed"] = sorted(self.revealed() | set(keys))
@@ -687,6 +745,7 @@ class Session:
     def select_run(self, name: str | None) -> None:
         """Use run ``name`` for Tasks 11-15 until the group picks another (None: the default
         of :meth:`step_run`); saved in the session."""
+        self._change()
         if name is not None:
             self.run_path(name)
         self._data["selected_run"] = name
@@ -707,6 +766,7 @@ class Session:
         the Recorder to append samples to. Nothing is lost to a crash beyond its flush
         interval, nor to a write that fails (the Recorder keeps the samples). Raises
         SessionNotWritable (one line) when its file cannot be made."""
+        self._change()
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
         ts_ = ts if ts is not None else (plan.ts if plan else 0.025)
@@ -747,6 +807,7 @@ class Session:
         :data:`minseg_tui.lab.runs.ENDED_BY` saying which). When the log cannot
         be written the run is kept in memory, saved with the next save that works, and
         SessionNotWritable says so."""
+        self._change()
         recorder.close()
         raw = recorder.raw()
         if raw.seq.size < 2:
@@ -770,6 +831,7 @@ class Session:
 
     def discard_run(self, recorder: Recorder) -> None:
         """Throw a recording away (the partial file is removed)."""
+        self._change()
         recorder.close()
         with contextlib.suppress(OSError):
             recorder.path.unlink(missing_ok=True)
@@ -839,6 +901,7 @@ class Session:
         """Copy a step log recorded elsewhere into runs/ (checked by read_step_log; InputError
         with file and line if it is not one, SessionNotWritable if it cannot be written) for
         the model check and Tasks 11-15."""
+        self._change()
         try:
             info = import_log(
                 self.folder,

@@ -11,7 +11,8 @@ the requests that need the device (:class:`VoltageRequested`, :class:`RunRequest
 The device is opened in a worker; a second worker drains it every 50 ms into the bounded
 live buffer (and into the Task 10 procedure, :class:`~minseg_tui.lab.task10.Task10`, which
 drives the run and keeps it) and posts coalesced messages, so the event loop never waits on
-the board; the app shows the run's progress.
+the board; the app shows the run's progress. Workers that only read the session (views,
+the report) get a frozen snapshot of it.
 """
 
 from __future__ import annotations
@@ -971,16 +972,18 @@ class LabApp(App[None]):
         if self.session is None:
             self.notify("start or resume a session first", severity="warning")
             return
-        self._export(self.session)
+        with self.session as s:
+            snapshot = s.snapshot()
+        self._export(snapshot)
 
     @work(thread=True, exclusive=True, group="export", name="report")
-    def _export(self, session: Shared[Session]) -> None:
-        """Worker: write the report (it computes every result and figure)."""
+    def _export(self, session: Session) -> None:
+        """Worker: write the report of ``session``, a frozen snapshot (it computes every
+        result and figure)."""
         try:
             if self._writer is None:
                 raise MinsegError("this program was started without the report writer")
-            with session as s:
-                paths = tuple(str(p) for p in self._writer(s))
+            paths = tuple(str(p) for p in self._writer(session))
         except (MinsegError, OSError) as exc:
             self.call_from_thread(self.notify, str(exc), title="report", severity="error")
             return

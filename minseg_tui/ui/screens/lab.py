@@ -397,12 +397,18 @@ class LabScreen(StatusScreen):
         if focus is not None and self._shown == step_id and pane.is_attached:
             pane.focus_on(focus)
 
-    @work(thread=True, exclusive=True, group="view", name="panel view")
     def _load(self, panel: ViewPanel[V]) -> None:
-        """Worker: build ``panel``'s view from the session and hand it over."""
-        worker = get_current_worker()
+        """Build ``panel``'s view in a worker, from a frozen snapshot of the session as it
+        stands now (the worker never reads the live session)."""
         with self.session as s:
-            view = panel.build(s)
+            snapshot = s.snapshot()
+        self._build(panel, snapshot)
+
+    @work(thread=True, exclusive=True, group="view", name="panel view")
+    def _build(self, panel: ViewPanel[V], session: Session) -> None:
+        """Worker: build ``panel``'s view from ``session`` (a snapshot) and hand it over."""
+        worker = get_current_worker()
+        view = panel.build(session)
         if not worker.is_cancelled:
             self.app.call_from_thread(self._deliver, panel, view)
 
