@@ -7,7 +7,7 @@ encoder count has not moved for :data:`STILL_FOR` s of board time, and the recor
 :data:`PRE_ROLL` samples of the standing wheel before the board starts the sequence.
 
 :class:`StandStill` judges the samples it is fed (by the Task 10 procedure,
-:mod:`minseg_tui.lab.task10`, in the TUI's stream worker or headless). It counts board time,
+:mod:`minseg_tui.lab.state.task10`, in the TUI's stream worker or headless). It counts board time,
 so the answer does not depend on how busy the host is.
 """
 

@@ -9,7 +9,7 @@ files); and ``lab_changed``, a signal published whenever the session changed. It
 the requests that need the device (:class:`VoltageRequested`, :class:`RunRequested`, F2, F8).
 
 The device is opened in a worker; a second worker drains it every 50 ms into the bounded
-live buffer (and into the Task 10 procedure, :class:`~minseg_tui.lab.task10.Task10`, which
+live buffer (and into the Task 10 procedure, :class:`~minseg_tui.lab.state.task10.Task10`, which
 drives the run and keeps it) and posts coalesced messages, so the event loop never waits on
 the board; the app shows the run's progress. Workers that only read the session (views,
 the report) get a frozen snapshot of it.
@@ -44,9 +44,9 @@ from minseg_tui.device.boardcheck import CHECK_U, NoCountWatch, check_board, cou
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import timeout_message
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import SessionInfo, SessionsUnreadable, list_sessions
-from minseg_tui.lab.task10 import ActiveRun, Outcome, RunProgress, Task10
+from minseg_tui.lab.saving.store import SessionInfo, SessionsUnreadable, list_sessions
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
@@ -161,7 +161,7 @@ ENDED_WORDS: dict[str, str] = {
     "quit": "app closed",
     "not started": "could not start",
 }
-"""What ended a run (:attr:`minseg_tui.lab.task10.Outcome.why`) in the words of the run's
+"""What ended a run (:attr:`minseg_tui.lab.state.task10.Outcome.why`) in the words of the run's
 last line, where a link event's words (:data:`EVENT_TEXT`) do not say it."""
 
 
@@ -673,7 +673,7 @@ class LabApp(App[None]):
         self.start_run(event.plan)
 
     def start_run(self, name: str) -> None:
-        """Task 10: the procedure (:class:`~minseg_tui.lab.task10.Task10`) for plan ``name``:
+        """Task 10: the procedure (:class:`~minseg_tui.lab.state.task10.Task10`) for plan ``name``:
         motor off now; the stream worker feeds it, and it starts the board's sequence once
         the wheel stands and keeps the run when it ends. The app shows its progress."""
         if self._device is None or self.session is None:
@@ -722,7 +722,7 @@ class LabApp(App[None]):
     def finish_run(self, why: str = "done", ended_by: str = "") -> None:
         """End Task 10 now (F2, quit; ``why`` ``done`` keeps the run as complete): a wait ends
         without a run, a run being recorded is kept, interrupted by ``ended_by`` (a key of
-        :data:`minseg_tui.lab.runs.ENDED_BY`). A run the group chose stays in use; without a
+        :data:`minseg_tui.lab.saving.runs.ENDED_BY`). A run the group chose stays in use; without a
         choice, Tasks 11-15 use the newest complete 25 ms run (:meth:`Session.step_run`)."""
         task = self.task10
         if task is None or not task.active:

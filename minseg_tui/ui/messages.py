@@ -17,8 +17,8 @@ from textual.message import Message
 
 from minseg_tui.device.boardcheck import CheckResult, RevolutionResult
 from minseg_tui.device.link import LinkEvent, LinkStats
-from minseg_tui.lab.steps import Step
-from minseg_tui.lab.task10 import Task10
+from minseg_tui.lab.content.steps import Step
+from minseg_tui.lab.state.task10 import Task10
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.device import Device
 

@@ -13,7 +13,7 @@ class Shared(Generic[T]):
     meant for one thread; the UI uses it from the event loop and from the stream worker
     (the Task 10 procedure records and keeps its run), so every use goes through here. The
     workers that only read it (views, the report) get a frozen snapshot instead
-    (:meth:`minseg_tui.lab.session.Session.snapshot`). Re-entrant."""
+    (:meth:`minseg_tui.lab.state.session.Session.snapshot`). Re-entrant."""
 
     def __init__(self, value: T) -> None:
         self._value = value

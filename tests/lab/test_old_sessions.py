@@ -15,8 +15,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.state.session import Session
 
 OLD = Path(__file__).parent / "old_sessions" / "schema1"
 

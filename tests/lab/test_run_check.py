@@ -5,7 +5,7 @@ The virtual board applies every STEP edge exactly at a sample instant (firmware/
 so the check must report no step "between samples" and no wild sample; its plant has Coulomb
 friction tau_c = 7.3e-3 N m, i.e. u_c = tau_c R / k_a = 0.119 V at the motor terminals
 (PlantParams.u_coulomb), which the check must name and measure. The run is recorded by
-the procedure the TUI runs (:mod:`minseg_tui.lab.task10`): STOP and wait for the wheel to
+the procedure the TUI runs (:mod:`minseg_tui.lab.state.task10`): STOP and wait for the wheel to
 stand, P, Session.start_run, a few samples of the standing wheel, STEP, every sample into
 the Recorder, finish_run on $EV,STEPDONE; the table holds the multimeter's u_ss at
 4.5 V, so the log's u is u_A. Every wait is on board time (the samples), so a busy machine
@@ -20,9 +20,9 @@ import pytest
 
 from minseg_tui.device.factory import open_device
 from minseg_tui.device.virtual import forget_board
-from minseg_tui.lab import task10
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import RunPlan
+from minseg_tui.lab.content.steps import RunPlan
+from minseg_tui.lab.state import task10
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams
 
 _names = itertools.count()
@@ -50,7 +50,7 @@ def record_task10(tmp_path, seed: int, ts: float):
 
     Every wait is on board time: the multimeter is read after 0.5 s of samples at 4.5 V
     (the command is in force), and the run starts once the wheel stands
-    (:func:`minseg_tui.lab.task10.record`, the TUI's procedure)."""
+    (:func:`minseg_tui.lab.state.task10.record`, the TUI's procedure)."""
     name = f"run-check-{next(_names)}"
     link = open_device(f"minseg://{name}?clock=virtual&seed={seed}")
     try:

@@ -16,12 +16,12 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab import store
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.runs import applied_voltage, read_partial
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step
-from minseg_tui.lab.store import SessionDamaged, SessionLocked, SessionMissing, list_sessions
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.saving import store
+from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.runs import applied_voltage, read_partial
+from minseg_tui.lab.saving.store import SessionDamaged, SessionLocked, SessionMissing, list_sessions
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams, record
 
 HERE = Path(__file__).parent
@@ -431,7 +431,7 @@ def test_lock_held_by_a_live_process(tmp_path):
     s = Session.create(tmp_path, ["A"])
     s.close()
     code = (
-        "import sys, time; from pathlib import Path; from minseg_tui.lab.session import Session; "
+        "import sys, time; from pathlib import Path; from minseg_tui.lab.state.session import Session; "
         "s = Session.open(Path(sys.argv[1])); print('open', flush=True); time.sleep(60)"
     )
     child = subprocess.Popen(
@@ -525,7 +525,7 @@ def test_a_kill_9_mid_save_leaves_a_temporary_file_that_the_next_open_removes(tm
     s.close()
     code = (
         "import os, signal, sys; from pathlib import Path\n"
-        "from minseg_tui.lab.session import Session\n"
+        "from minseg_tui.lab.state.session import Session\n"
         "s = Session.open(Path(sys.argv[1]))\n"
         "os.replace = lambda a, b: os.kill(os.getpid(), signal.SIGKILL)  # killed mid-save\n"
         "s.enter('R', '6.1')\n"
@@ -555,7 +555,7 @@ def _pid_of(names: list[str]) -> str:
 
 
 def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path):
-    from minseg_tui.lab import views
+    from minseg_tui.lab.views import session as views
 
     with Session.create(tmp_path, ["A"]) as s:
         _fill_table(s)
@@ -580,7 +580,7 @@ def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path)
 
 
 def test_the_computed_value_stands_in_the_unit_the_group_typed_theirs_in(tmp_path):
-    from minseg_tui.lab import views
+    from minseg_tui.lab.views import session as views
 
     with Session.create(tmp_path, ["A"]) as s:
         _fill_table(s)

@@ -7,8 +7,8 @@ import json
 
 import pytest
 
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session, SessionFrozen
+from minseg_tui.lab.state.session import Session, SessionFrozen
+from minseg_tui.lab.views import session as views
 from tests.lab.test_session import _fill_table, _record_steps
 
 

@@ -12,8 +12,8 @@ import numpy as np
 from minseg_tui.device.factory import open_device
 from minseg_tui.device.standstill import PRE_ROLL
 from minseg_tui.device.virtual import forget_board, named_board
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.task10 import Task10
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.task10 import Task10
 
 _names = itertools.count()
 GUARD = 120.0

@@ -10,9 +10,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.report.write import write_report
 

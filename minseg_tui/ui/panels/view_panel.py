@@ -8,7 +8,7 @@ from typing import Generic, TypeVar
 from textual.containers import Vertical
 from textual.message import Message
 
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
 
 V = TypeVar("V")
 
@@ -28,7 +28,7 @@ class ViewPanel(Vertical, Generic[V]):
 
     def build(self, session: Session) -> V:
         """The view from ``session`` (worker thread: a pure builder of
-        :mod:`minseg_tui.lab.views`, no widget)."""
+        :mod:`minseg_tui.lab.views.session`, no widget)."""
         raise NotImplementedError
 
     def receive(self, view: V) -> None:

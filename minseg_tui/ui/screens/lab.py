@@ -29,11 +29,11 @@ from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import STEPS, Step
-from minseg_tui.lab.task10 import RunProgress
-from minseg_tui.lab.views import EntryView
+from minseg_tui.lab.content.steps import STEPS, Step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.task10 import RunProgress
+from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (

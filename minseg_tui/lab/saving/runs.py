@@ -5,7 +5,7 @@ appended to ``runs/<name>.partial`` in chunks, each chunk written and fsynced at
 :data:`FLUSH_INTERVAL` s after its first sample arrived: a crash or kill -9 loses at most
 that much of the stream. When the run ends (or, after a crash, when the session is opened
 again) the samples become ``runs/<name>.csv``, a step log in the shared format
-(:mod:`minseg_tui.lab.files`), written atomically, with the columns
+(:mod:`minseg_tui.lab.saving.files`), written atomically, with the columns
 
     t (s, board time from the first sample), u (V: the voltage asked of the board, u_req;
     see below), omega (rad/s, mean speed over each sample interval from the count and the
@@ -38,9 +38,9 @@ from typing import Any
 import numpy as np
 
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.lab.files import read_step_log, write_step_log
-from minseg_tui.lab.schema import PARTIAL_HEADER
-from minseg_tui.lab.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
+from minseg_tui.lab.saving.files import read_step_log, write_step_log
+from minseg_tui.lab.saving.schema import PARTIAL_HEADER
+from minseg_tui.lab.saving.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
 from minseg_tui.model.identify import u_ss_at
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
@@ -143,7 +143,7 @@ class RunInfo:
 
     @classmethod
     def from_json(cls, d: Mapping[str, Any]) -> RunInfo:
-        """Inverse of :meth:`to_json` (``d`` checked by :data:`minseg_tui.lab.schema.RUN`)."""
+        """Inverse of :meth:`to_json` (``d`` checked by :data:`minseg_tui.lab.saving.schema.RUN`)."""
         return cls(
             name=str(d["name"]),
             file=str(d["file"]),
@@ -356,7 +356,7 @@ class Recorder:
 @dataclass(frozen=True)
 class RawRun:
     """Samples read back from a partial file (or a Recorder's memory), and its header (name,
-    kind, ts, plan, started; checked against :data:`minseg_tui.lab.schema.PARTIAL_HEADER`,
+    kind, ts, plan, started; checked against :data:`minseg_tui.lab.saving.schema.PARTIAL_HEADER`,
     broken fields left out and said in ``damage``)."""
 
     header: Mapping[str, object]
@@ -493,7 +493,7 @@ def build_log(raw: RawRun, ts: float) -> tuple[StepLog, int]:
 
 
 def write_log_atomic(path: Path, log: StepLog) -> None:
-    """Write ``log`` with :func:`minseg_tui.lab.files.write_step_log`, atomically."""
+    """Write ``log`` with :func:`minseg_tui.lab.saving.files.write_step_log`, atomically."""
     path = Path(path)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.build")
     try:

@@ -2,23 +2,23 @@
 
 The UI holds one :class:`Session`, renders its state and calls its methods; it does no
 arithmetic and no file I/O of its own. Every change is saved at once (atomically, see
-:mod:`minseg_tui.lab.store`); reopening a session restores it exactly, current step
+:mod:`minseg_tui.lab.saving.store`); reopening a session restores it exactly, current step
 included. Derived numbers (Tasks 6-15) are never stored: :meth:`Session.results`
 computes them from the entries and the chosen run with :mod:`minseg_tui.model.identify`,
 so changing an earlier entry changes every later result.
 
 The session holds the state and saves it; its parts are modules of their own:
-:mod:`~minseg_tui.lab.entries` (what was typed, read and revised),
-:mod:`~minseg_tui.lab.results` (Tasks 6-15, the table, the model check),
-:mod:`~minseg_tui.lab.runs` (recording and keeping runs), :mod:`~minseg_tui.lab.store`
-(the files on disk, the lock, what a failed save is), :mod:`~minseg_tui.lab.schema`
-(the session file's one schema) and :mod:`~minseg_tui.lab.answers` (checking answers).
+:mod:`~minseg_tui.lab.state.entries` (what was typed, read and revised),
+:mod:`~minseg_tui.lab.state.results` (Tasks 6-15, the table, the model check),
+:mod:`~minseg_tui.lab.saving.runs` (recording and keeping runs), :mod:`~minseg_tui.lab.saving.store`
+(the files on disk, the lock, what a failed save is), :mod:`~minseg_tui.lab.saving.schema`
+(the session file's one schema) and :mod:`~minseg_tui.lab.content.answers` (checking answers).
 
 A save that fails never raises: the session goes on in memory and says why in
 :attr:`Session.save_problem` (see :class:`Session`).
 
 Units: entries are stored as typed (``text``) and as parsed SI values (``value``: V, A,
-ohm, rad/s, s, ...); the form unit of each field is in :mod:`minseg_tui.lab.steps`.
+ohm, rad/s, s, ...); the form unit of each field is in :mod:`minseg_tui.lab.content.steps`.
 
 Typical use::
 
@@ -45,22 +45,11 @@ from pathlib import Path
 from typing import Any
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import answers
-from minseg_tui.lab import steps as lab_steps
-from minseg_tui.lab.capture import DEFAULT_WINDOW, Capture, capture
-from minseg_tui.lab.compare import compare_fields, reveal_keys
-from minseg_tui.lab.entries import Entry, parsed_values, read_entry, revise
-from minseg_tui.lab.expr import Formula
-from minseg_tui.lab.results import (
-    Comparison,
-    ModelCheck,
-    Notice,
-    Results,
-    TableRow,
-    check_run,
-    compute,
-)
-from minseg_tui.lab.runs import (
+from minseg_tui.lab.content import answers
+from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.content.expr import Formula
+from minseg_tui.lab.content.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
+from minseg_tui.lab.saving.runs import (
     FLUSH_INTERVAL,
     PARTIAL_SUFFIX,
     STEP_KINDS,
@@ -75,9 +64,8 @@ from minseg_tui.lab.runs import (
     run_header,
     ts_of,
 )
-from minseg_tui.lab.schema import KIND, RUN_NAME, SCHEMA
-from minseg_tui.lab.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
-from minseg_tui.lab.store import (
+from minseg_tui.lab.saving.schema import KIND, RUN_NAME, SCHEMA
+from minseg_tui.lab.saving.store import (
     RUNS_DIR,
     SESSION_FILE,
     SaveProblem,
@@ -91,6 +79,18 @@ from minseg_tui.lab.store import (
     read_session_file,
     salvage_session_file,
     take_lock,
+)
+from minseg_tui.lab.state.capture import DEFAULT_WINDOW, Capture, capture
+from minseg_tui.lab.state.compare import compare_fields, reveal_keys
+from minseg_tui.lab.state.entries import Entry, parsed_values, read_entry, revise
+from minseg_tui.lab.state.results import (
+    Comparison,
+    ModelCheck,
+    Notice,
+    Results,
+    TableRow,
+    check_run,
+    compute,
 )
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
@@ -804,7 +804,7 @@ class Session:
         records the run (saved) and the partial file goes. None (and nothing kept) when it
         holds fewer than 2 samples. ``stopped_early``: the run ended before its plan did
         (stopped, board lost, program closed; kept as ``interrupted``, ``ended_by`` a key of
-        :data:`minseg_tui.lab.runs.ENDED_BY` saying which). When the log cannot
+        :data:`minseg_tui.lab.saving.runs.ENDED_BY` saying which). When the log cannot
         be written the run is kept in memory, saved with the next save that works, and
         SessionNotWritable says so."""
         self._change()

@@ -3,7 +3,7 @@
 Nothing here is stored: :func:`compute` derives Tasks 6-15 with
 :func:`minseg_tui.model.identify.identify` from R, the table's complete rows and the run
 Tasks 11-15 use, and :func:`check_run` runs the model check on a recorded run. The
-dataclasses are what :class:`~minseg_tui.lab.session.Session` hands to the UI and the report.
+dataclasses are what :class:`~minseg_tui.lab.state.session.Session` hands to the UI and the report.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.runs import RunInfo, read_run
+from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import Identification, Reading, identify
 from minseg_tui.model.steplog import StepLog

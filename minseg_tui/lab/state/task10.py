@@ -7,7 +7,7 @@ speed, so :class:`Task10` stops the motor first, waits until the wheel stands
 period, starts the session's recording, takes :data:`PRE_ROLL` samples of the standing
 wheel and only then asks the board for its sequence; the run ends with the board's
 ``stepdone`` (complete), a link event that ends it, or :meth:`Task10.stop` (F2, quit), and
-is kept in the session (:meth:`~minseg_tui.lab.session.Session.finish_run`).
+is kept in the session (:meth:`~minseg_tui.lab.state.session.Session.finish_run`).
 
 It does not read the device itself: whoever does feeds it every batch and event
 (:meth:`Task10.feed`). The TUI's stream worker does (the one reader of the device); a
@@ -32,13 +32,13 @@ from minseg_tui.device.link import LinkEvent
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import PRE_ROLL, StandStill
 from minseg_tui.errors import DeviceError, MinsegError
-from minseg_tui.lab.runs import Recorder, RunInfo
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import RunPlan
-from minseg_tui.lab.steps import step as lab_step
+from minseg_tui.lab.content.steps import RunPlan
+from minseg_tui.lab.content.steps import step as lab_step
+from minseg_tui.lab.saving.runs import Recorder, RunInfo
+from minseg_tui.lab.state.session import Session
 
 RUN_KIND: dict[str, str] = {"manual": "steps", "fast": "fast"}
-"""Task 10's plans (:mod:`minseg_tui.lab.steps`) to the session's run kinds."""
+"""Task 10's plans (:mod:`minseg_tui.lab.content.steps`) to the session's run kinds."""
 
 LAB_PERIOD: float = 0.025
 """Sample period restored after a run at another period, s (the manual's)."""
@@ -51,7 +51,7 @@ RUN_ENDED_BY: dict[str, str] = {
     "error": "link",
 }
 """A link event that ends a run being recorded -> what interrupted it
-(:data:`minseg_tui.lab.runs.ENDED_BY`); ``stepdone`` ends it complete."""
+(:data:`minseg_tui.lab.saving.runs.ENDED_BY`); ``stepdone`` ends it complete."""
 
 WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error", "silent"})
 """Link events that end the wait for the wheel to stand (no run starts)."""
@@ -167,7 +167,7 @@ class Outcome:
     """How a Task 10 procedure ended.
 
     ``why``: ``done`` (the board's sequence ended), ``turning`` (the wheel did not stand),
-    a key of :data:`minseg_tui.lab.runs.ENDED_BY` (``stopped``, ``quit``, ``cable``, ...:
+    a key of :data:`minseg_tui.lab.saving.runs.ENDED_BY` (``stopped``, ``quit``, ``cable``, ...:
     what interrupted it), ``not started`` (the board refused the sequence), ``no run``
     (the recording could not be made) or, for a wait that a link event ended, the event's
     kind. ``event``: that link event. ``run``: the name of the run recorded ("" when none
@@ -317,7 +317,7 @@ class Task10:
 
     def stop(self, ended_by: str = "stopped", motor_off: bool = True) -> Outcome | None:
         """End now: a wait ends without a run; a run being recorded is kept as interrupted
-        by ``ended_by`` (a key of :data:`minseg_tui.lab.runs.ENDED_BY`), or as complete
+        by ``ended_by`` (a key of :data:`minseg_tui.lab.saving.runs.ENDED_BY`), or as complete
         with ``done``. ``motor_off``: the motor is switched off first (unless ``done``;
         False when the caller has done it). The outcome (None when the procedure never
         began)."""

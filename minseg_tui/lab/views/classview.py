@@ -29,11 +29,11 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import steps as lab_steps
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import LEVELS
-from minseg_tui.lab.store import SESSION_FILE, SessionsUnreadable
+from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.content.steps import LEVELS
+from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import step_alone
 from minseg_tui.units import RPM, format_number
