@@ -211,6 +211,7 @@ class Task10:
         self._flush_interval = flush_interval
         self._lock = threading.RLock()
         self._stand: StandStill | None = None
+        self._last_us: int | None = None  # board time of the last sample fed, us
         self.phase: Phase = "idle"
         self.run: ActiveRun | None = None
         """The run being recorded (None before the wheel stands and after it is kept)."""
@@ -264,7 +265,7 @@ class Task10:
                 self._wait(batch, events)
             elif self.phase in ("recording", "stepping") and self.run is not None:
                 run = self.run
-                run.append(batch)
+                run.append(batch if run.samples else self._at_period(batch))
                 if self.phase == "recording" and run.samples >= PRE_ROLL:
                     self._start_sequence()
                 for ev in events:
@@ -276,7 +277,27 @@ class Task10:
                         break
                 else:
                     run.tick()  # the run's samples reach the disk within its flush interval
+            if len(batch):
+                self._last_us = int(batch.t_us[-1])
             return self.phase != before
+
+    def _at_period(self, batch: SampleBatch) -> SampleBatch:
+        """``batch`` from its first sample taken at the plan's period on: the samples the
+        board sent before the new period took effect (25 ms apart before a 5 ms run) are no
+        part of the run. Within half a period is the plan's (the board's jitter is less)."""
+        t_us = batch.t_us.tolist()
+        prev = self._last_us
+        want = self.plan.ts * 1e6
+        for k, t in enumerate(t_us):
+            if prev is not None and abs(t - prev - want) <= want / 2:
+                return SampleBatch(
+                    *(
+                        getattr(batch, f)[k:]
+                        for f in ("seq", "t_us", "count", "u_req", "epoch", "t_host")
+                    )
+                )
+            prev = t
+        return SampleBatch.concat([])
 
     def _wait(self, batch: SampleBatch, events: Sequence[LinkEvent]) -> None:
         stand = self._stand
