@@ -1,6 +1,6 @@
 """What a session's report says, as data: sections of paragraphs, tables and figures.
 
-:func:`build` reads a :class:`~minseg_tui.lab.session.Session` (its entries, the results it
+:func:`build` reads a :class:`~minseg_tui.lab.state.session.Session` (its entries, the results it
 computes, its recorded runs) and returns a :class:`Report`; :mod:`.markdown` and
 :mod:`.html` only render it. The report is the one place where derived numbers are
 written down.
@@ -14,11 +14,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import check_words
-from minseg_tui.lab import steps as lab_steps
-from minseg_tui.lab.compare import ANSWERED_FIRST, format_diff
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.views import step_window
+from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.state.compare import ANSWERED_FIRST, format_diff
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import check_words
+from minseg_tui.lab.views.session import step_window
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import RisingStep, StepResult

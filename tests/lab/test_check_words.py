@@ -9,7 +9,7 @@ import re
 import numpy as np
 import pytest
 
-from minseg_tui.lab import check_words
+from minseg_tui.lab.views import check_words
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import NAMES
 from minseg_tui.model.synth import make_log

@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import FIELDS, STEPS
-from minseg_tui.lab.store import list_sessions
+from minseg_tui.lab.content.steps import FIELDS, STEPS
+from minseg_tui.lab.saving.store import list_sessions
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.report.content import build
 
 TRIALS = 120

@@ -11,7 +11,7 @@ import pytest
 
 from minseg_tui.cli import main
 from minseg_tui.cli.identify import render
-from minseg_tui.lab.files import read_step_log, write_step_log
+from minseg_tui.lab.saving.files import read_step_log, write_step_log
 from minseg_tui.model.identify import Reading, identify
 from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.steplog import (

@@ -16,8 +16,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.report import svg
 from minseg_tui.report.write import write_report

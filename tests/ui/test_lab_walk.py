@@ -15,8 +15,8 @@ import pytest
 
 from minseg_tui.device.link import LinkEvent
 from minseg_tui.device.standstill import PRE_ROLL
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import SessionsUnreadable, list_sessions
+from minseg_tui.lab.saving.store import SessionsUnreadable, list_sessions
+from minseg_tui.lab.state.session import Session
 from minseg_tui.quantities import NO_BREAK
 from minseg_tui.ui import app as app_module
 from minseg_tui.ui.panels.model_check import ModelCheckPanel

@@ -13,8 +13,8 @@ import sys
 from pathlib import Path
 
 from minseg_tui.device.virtual import named_board
-from minseg_tui.lab import views
-from minseg_tui.lab.store import list_sessions
+from minseg_tui.lab.saving.store import list_sessions
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.panels.live import LivePanel

@@ -8,10 +8,10 @@ from textual.binding import Binding
 from textual.containers import Vertical
 from textual.widget import Widget
 
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import Step
-from minseg_tui.lab.views import ResultsView
+from minseg_tui.lab.content.steps import Step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.session import ResultsView
 from minseg_tui.quantities import format_value
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel

@@ -9,7 +9,7 @@ from textual.containers import Vertical
 from textual.message import Message
 from textual.widget import Widget
 
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
 
 V = TypeVar("V")
 
@@ -34,7 +34,7 @@ class ViewPanel(Vertical, Generic[V]):
 
     def build(self, session: Session) -> V:
         """The view from ``session`` (worker thread: a pure builder of
-        :mod:`minseg_tui.lab.views`, no widget)."""
+        :mod:`minseg_tui.lab.views.session`, no widget)."""
         raise NotImplementedError
 
     def receive(self, view: V) -> None:

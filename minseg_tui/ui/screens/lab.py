@@ -29,10 +29,11 @@ from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import STEPS, Step
-from minseg_tui.lab.views import EntryView
+from minseg_tui.lab.content.steps import STEPS, Step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.task10 import RunProgress
+from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
@@ -49,7 +50,6 @@ from minseg_tui.ui.panels.results import ResultsPanel
 from minseg_tui.ui.panels.step_run import StepRunPanel
 from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
-from minseg_tui.ui.recording import RunProgress
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import EntryBox, FieldRow
@@ -488,12 +488,18 @@ class LabScreen(StatusScreen):
         if focus is not None and self._shown == step_id and pane.is_attached:
             pane.focus_on(focus)
 
-    @work(thread=True, exclusive=True, group="view", name="panel view")
     def _load(self, panel: ViewPanel[V]) -> None:
-        """Worker: build ``panel``'s view from the session and hand it over."""
-        worker = get_current_worker()
+        """Build ``panel``'s view in a worker, from a frozen snapshot of the session as it
+        stands now (the worker never reads the live session)."""
         with self.session as s:
-            view = panel.build(s)
+            snapshot = s.snapshot()
+        self._build(panel, snapshot)
+
+    @work(thread=True, exclusive=True, group="view", name="panel view")
+    def _build(self, panel: ViewPanel[V], session: Session) -> None:
+        """Worker: build ``panel``'s view from ``session`` (a snapshot) and hand it over."""
+        worker = get_current_worker()
+        view = panel.build(session)
         if not worker.is_cancelled:
             self.app.call_from_thread(self._deliver, panel, view)
 

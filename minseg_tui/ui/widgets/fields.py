@@ -16,8 +16,8 @@ from textual.strip import Strip
 from textual.widget import Widget
 from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList
 
-from minseg_tui.lab.steps import Field
-from minseg_tui.lab.views import EntryView
+from minseg_tui.lab.content.steps import Field
+from minseg_tui.lab.views.session import EntryView
 from minseg_tui.ui.widgets.prose import Prose
 
 

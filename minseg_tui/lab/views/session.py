@@ -1,6 +1,6 @@
 """What the lab's screens show, as plain data ready to render.
 
-Each builder reads a :class:`~minseg_tui.lab.session.Session` (or live samples) through its
+Each builder reads a :class:`~minseg_tui.lab.state.session.Session` (or live samples) through its
 public methods and returns frozen data: the live speed and Task 4's steady-state indicator,
 the verdict on an entry, the table of Tasks 6-9 with the formula behind every cell, the
 recorded runs with their T readings (Task 10), the results of Tasks 11-15 and the model
@@ -23,11 +23,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
-from minseg_tui.lab import capture as lab_capture
-from minseg_tui.lab import check_words
-from minseg_tui.lab import compare as lab_compare
-from minseg_tui.lab.session import Entry, Session, TableRow
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state import capture as lab_capture
+from minseg_tui.lab.state import compare as lab_compare
+from minseg_tui.lab.state.session import Entry, Session, TableRow
+from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
@@ -201,7 +201,7 @@ REVEAL_KEY = "Ctrl+R"
 
 def hidden(session: Session) -> set[str]:
     """The fields of Tasks 11-15 whose computed value is still hidden from the group (the
-    lab's policy, :func:`minseg_tui.lab.compare.concealed`)."""
+    lab's policy, :func:`minseg_tui.lab.state.compare.concealed`)."""
     return lab_compare.concealed(policy(session), session.answered(), session.revealed())
 
 
@@ -617,7 +617,7 @@ class CheckView:
     words), ``evidence`` in words, the extended model with its
     parameters, the other figures (``gain``), ``notes`` (what the check cannot say, the
     anomalies; one line each); ``problem``: why there is no result. ``story``: the two or
-    three sentences a student reads first (:func:`minseg_tui.lab.check_words.lead`), about
+    three sentences a student reads first (:func:`minseg_tui.lab.views.check_words.lead`), about
     the close-up, whose title with its time span is ``close_title``; the rest are the
     details."""
 

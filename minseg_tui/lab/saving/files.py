@@ -12,7 +12,7 @@ are kept.
 Generous where it is unambiguous (a BOM, \\r\\n, whitespace around fields, blank lines,
 column names in any case); anything else is refused with an InputError naming the file,
 the line and what was expected. Files are streamed in bounded memory
-(:mod:`minseg_tui.lab.csvread`, which also caps lines, bytes and waits); values beyond what
+(:mod:`minseg_tui.lab.saving.csvread`, which also caps lines, bytes and waits); values beyond what
 a MinSeg produces are refused (LIMITS), and so are more rows than a lab produces.
 """
 
@@ -27,7 +27,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.csvread import CsvColumns, read_csv
+from minseg_tui.lab.saving.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog, clock_problem, command, find_edges, header_problem
 from minseg_tui.quantities import NUMBER
