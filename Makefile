@@ -68,14 +68,15 @@ firmware-hex: $(STAMP)
 	$(MAKE) -C firmware all-profiles
 	$(PY) -m minseg_tui.device.flashing refresh firmware/build
 
-# The stages side by side (make -j, each stage's output printed whole when it ends): lint,
-# the firmware's host tests, its AVR builds and simavr runs (themselves in parallel), pytest.
-TEST_JOBS ?= 3
+# The stages side by side (make -j, each stage's output printed whole when it ends): pytest
+# (the longest, so it starts first), lint, the firmware's host tests, its AVR builds and
+# simavr runs (themselves in parallel as job slots free up).
+TEST_JOBS ?= 4
 
 test: $(STAMP)
 	@$(MAKE) --no-print-directory -j$(TEST_JOBS) -O test-stages
 
-test-stages: lint firmware-host-test firmware pytest
+test-stages: pytest lint firmware-host-test firmware
 
 bench: $(STAMP)
 	@for b in benchmarks/*.py; do echo "== $$b"; $(PY) $$b || exit 1; done
