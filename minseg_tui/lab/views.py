@@ -24,8 +24,8 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab import capture as lab_capture
+from minseg_tui.lab import check_words
 from minseg_tui.lab import compare as lab_compare
-from minseg_tui.lab.entry import UNITS, format_quantity
 from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import step
 from minseg_tui.model import identify as model_identify
@@ -34,7 +34,14 @@ from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.units import DIGITS, format_interval, format_number, format_value
+from minseg_tui.quantities import (
+    DIGITS,
+    UNITS,
+    format_interval,
+    format_number,
+    format_quantity,
+    format_value,
+)
 
 FloatArray = NDArray[np.float64]
 
@@ -60,7 +67,7 @@ def _empty() -> FloatArray:
 
 
 def _fmt(v: float | None, unit: str, digits: int = DIGITS) -> str:
-    """``v`` (SI) in the form unit ``unit`` (:func:`minseg_tui.lab.entry.format_quantity`)."""
+    """``v`` (SI) in the form unit ``unit`` (:func:`minseg_tui.quantities.format_quantity`)."""
     return "—" if v is None or not math.isfinite(v) else format_quantity(v, unit, digits)
 
 
@@ -609,7 +616,10 @@ class CheckView:
     ``lead_why``; ``cause`` (the contract name) and ``cause_words`` (every cause named, in
     words), ``evidence`` in words, the extended model with its
     parameters, the other figures (``gain``), ``notes`` (what the check cannot say, the
-    anomalies; one line each); ``problem``: why there is no result."""
+    anomalies; one line each); ``problem``: why there is no result. ``story``: the two or
+    three sentences a student reads first (:func:`minseg_tui.lab.check_words.lead`), about
+    the close-up, whose title with its time span is ``close_title``; the rest are the
+    details."""
 
     run: str | None
     t: FloatArray = field(default_factory=_empty)
@@ -632,18 +642,18 @@ class CheckView:
     noise: float | None = None
     notes: tuple[str, ...] = ()
     cause_words: str = ""
+    story: tuple[str, ...] = ()
+    close_title: str = ""
 
 
-def _stem(key: str) -> str:
-    """A gain key without its baseline_/extended_ prefix."""
-    return key.removeprefix("baseline_").removeprefix("extended_")
+_stem = check_words.stem
 
 
 def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | None:
     """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
-    b, e = gain.get(f"baseline_{stem}"), gain.get(f"extended_{stem}")
+    b, e = check_words.figure(gain, key)
     unit = FIGURES.get(stem, (stem, ""))[1]
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
@@ -696,6 +706,12 @@ def check(session: Session) -> CheckView:
     notes = tuple(f"cannot say: {c.text}" for c in f.caveats) + tuple(
         f"anomaly: {a.text}" for a in r.anomalies
     )
+    u: FloatArray | None = None  # unread: the story says less about the close-up's step
+    if mc.run is not None:
+        try:
+            u = np.asarray(session.load_run(mc.run).u, dtype=np.float64)
+        except (InputError, KeyError):
+            u = None
     return CheckView(
         mc.run,
         t,
@@ -717,6 +733,8 @@ def check(session: Session) -> CheckView:
         noise=cu.noise if cu is not None else floor,
         notes=notes,
         cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),
+        story=check_words.lead(r, u),
+        close_title=check_words.close_up_title(r),
     )
 
 

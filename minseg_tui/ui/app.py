@@ -29,8 +29,8 @@ from typing import Any
 from textual import on, work
 from textual.actions import ActionParseResult
 from textual.app import App, SystemCommand
-from textual.await_complete import AwaitComplete
 from textual.binding import Binding
+from textual.command import CommandPalette
 from textual.dom import DOMNode
 from textual.notifications import SeverityLevel
 from textual.reactive import reactive
@@ -72,7 +72,8 @@ from minseg_tui.ui.screens.boardcheck import (
 )
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.help import HelpScreen
-from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
+from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.screens.status import StatusScreen
@@ -125,29 +126,6 @@ RUN_ENDED_BY: dict[str, str] = {
 }
 """A link event that ends a run -> what interrupted it (:data:`minseg_tui.lab.runs.ENDED_BY`)."""
 
-PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
-    ("f3", "set_voltage", "Set V", "setting a voltage"),
-    ("f4", "capture", "Capture", "capturing omega_ss"),
-    ("f5", "run_steps", "Run", "the step experiment"),
-    ("f6", "run_fast", "Run 5 ms", "the fast step experiment"),
-    ("f7", "formula", "Formula", "a table formula"),
-    ("f9", "zoom_next", "Zoom", "zooming the step log"),
-    ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
-    ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
-    ("ctrl+r", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
-)
-"""Keys that act on the current step's panel: (keys, the panel's method, footer label, what it
-is; no label: not in the footer). The footer shows a key on the steps whose panel offers the
-method; elsewhere the key says that it is not part of this step. None is printable, so no key
-is taken from typing in an entry (Ctrl+arrows stay the entry's word moves)."""
-
-
-def _first(keys: str) -> bool:
-    """Whether a panel key is a function key (taken before any widget: no entry uses them;
-    the arrows with Alt or Ctrl stay the entry's word moves)."""
-    return keys.startswith("f")
-
-
 RUN_ENDS = frozenset({"stepdone", "disconnected", "watchdog", "boot", "error"})
 """Link events after which a run being recorded takes no more samples."""
 
@@ -199,13 +177,14 @@ class LabApp(App[None]):
         Binding("f8", "export", "Export"),
         Binding("f10", "board_check", "Check board", show=False, priority=True),
         # the F-keys are the app's before any widget's (priority): handled in the order typed,
-        # so F4 has captured and moved the focus on before the reading typed after it arrives
+        # so F4 has captured and moved the focus on before the reading typed after it arrives;
+        # the arrows with Alt or Ctrl stay the entry's word moves
         *[
-            Binding(keys, f"panel('{method}')", label, show=bool(label), priority=_first(keys))
-            for keys, method, label, _ in PANEL_KEYS
+            Binding(keys, action, label, show=bool(label), priority=keys.startswith("f"))
+            for keys, action, label, _ in PANEL_KEYS
         ],
         *[
-            Binding(keys, f"not_here('{what}')", show=False, priority=_first(keys))
+            Binding(keys, f"not_here('{what}')", show=False, priority=keys.startswith("f"))
             for keys, _, _, what in PANEL_KEYS
         ],
     ]
@@ -344,14 +323,10 @@ class LabApp(App[None]):
                 timeout=15,
             )
 
-    def pop_screen(self) -> AwaitComplete:
-        """Close the screen on top (help, a question, the palette), never the start or the
-        lab screen under them (they are switched to, not pushed): Textual's palette closes
-        itself once per Enter it is handed, and two Enters in one burst ('Ctrl+P task 6
-        Enter ... Enter') closed the lab screen under it and left an empty terminal."""
-        if isinstance(self.screen, StatusScreen):
-            return AwaitComplete()
-        return super().pop_screen()
+    def action_command_palette(self) -> None:
+        """Ctrl+P: the palette, closed once however many Enters it is handed."""
+        if self.use_command_palette and not isinstance(self.screen, CommandPalette):
+            self.push_screen(Palette(id="--command-palette"))
 
     async def action_start_lab(self) -> None:
         """Enter on the start screen: open the lab it asks for, and return once the lab shows
@@ -946,66 +921,49 @@ class LabApp(App[None]):
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
 
-    def _panel_method(
-        self, name: str, screen: Screen[Any] | None = None
-    ) -> Callable[[], None] | None:
-        """The method ``name`` of the panel of the step ``screen`` (default: the screen on
-        top) shows, or None (no lab screen, or not this step)."""
-        screen = self.screen if screen is None else screen
-        panel = screen.panel if isinstance(screen, LabScreen) else None
-        handler = getattr(panel, name, None)
-        offers = getattr(panel, "offers", None)
-        return None if handler is None or (offers is not None and not offers(name)) else handler
-
-    def _panel_action(self, name: str, what: str) -> None:
-        handler = self._panel_method(name)
-        if handler is not None:
-            handler()
-        elif self._lab_screen() is not None:
-            self.action_not_here(what)
-
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """A panel key is live (and in the footer) only on the steps whose panel has it."""
-        if action == "panel":
-            return self._panel_method(str(parameters[0])) is not None
+        if action in PANEL_ACTIONS:
+            screen = self._lab_screen()
+            return screen is not None and action in screen.panel_keys()
         return True
 
-    async def action_panel(self, name: str) -> None:
-        """A panel key: the panel's method, then wait until what it asked (a capture, say) is
-        done, so the keys typed after it act on the result."""
-        handler = self._panel_method(name)
+    async def _press(self, action: str) -> None:
         screen = self._lab_screen()
-        if handler is None or screen is None:
-            return
-        handler()
-        panel = screen.panel
-        if panel is not None:
-            await screen.settle_from(panel)
+        if screen is not None:
+            await screen.press(action)
+
+    async def action_set_voltage(self) -> None:
+        await self._press("set_voltage")
+
+    async def action_capture(self) -> None:
+        await self._press("capture")
+
+    async def action_run_steps(self) -> None:
+        await self._press("run_steps")
+
+    async def action_run_fast(self) -> None:
+        await self._press("run_fast")
+
+    async def action_formula(self) -> None:
+        await self._press("formula")
+
+    async def action_zoom_next(self) -> None:
+        await self._press("zoom_next")
+
+    async def action_pick_prev(self) -> None:
+        await self._press("pick_prev")
+
+    async def action_pick_next(self) -> None:
+        await self._press("pick_next")
+
+    async def action_reveal(self) -> None:
+        await self._press("reveal")
 
     def action_not_here(self, what: str) -> None:
+        """A panel key on a step whose panel does not have it (nothing off the lab screen)."""
         if self._lab_screen() is not None:
             self.notify(f"{what} is not part of this step", severity="information")
-
-    def action_set_voltage(self) -> None:
-        self._panel_action("set_voltage", "setting a voltage")
-
-    def action_capture(self) -> None:
-        self._panel_action("capture", "capturing omega_ss")
-
-    def action_run_steps(self) -> None:
-        self._panel_action("run_steps", "the step experiment")
-
-    def action_run_fast(self) -> None:
-        self._panel_action("run_fast", "the fast step experiment")
-
-    def action_formula(self) -> None:
-        self._panel_action("formula", "a table formula")
-
-    def action_zoom_next(self) -> None:
-        self._panel_action("zoom_next", "zooming the step log")
-
-    def action_reveal(self) -> None:
-        self._panel_action("reveal", "revealing computed values")
 
     def action_export(self) -> None:
         if self.session is None:
@@ -1063,41 +1021,26 @@ class LabApp(App[None]):
         only on the steps whose panel has it, as the footer shows its key."""
         yield from super().get_system_commands(screen)
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
-        for method, title, help_text, action in (
+        offered = screen.panel_keys() if isinstance(screen, LabScreen) else {}
+        for action, title, help_text in (
             (
                 "set_voltage",
                 "Set step voltage",
                 "Request the next of 2.5/3.5/4.5 V on the board (F3)",
-                self.action_set_voltage,
             ),
-            (
-                "capture",
-                "Capture omega_ss",
-                "Mean over the settled window (F4)",
-                self.action_capture,
-            ),
-            (
-                "run_steps",
-                "Run step sequence",
-                "Task 10 on the board, 25 ms (F5)",
-                self.action_run_steps,
-            ),
-            (
-                "run_fast",
-                "Run fast step sequence",
-                "Task 10 at 5 ms, board-timed (F6)",
-                self.action_run_fast,
-            ),
+            ("capture", "Capture omega_ss", "Mean over the settled window (F4)"),
+            ("run_steps", "Run step sequence", "Task 10 on the board, 25 ms (F5)"),
+            ("run_fast", "Run fast step sequence", "Task 10 at 5 ms, board-timed (F6)"),
             (
                 "reveal",
                 "Reveal computed values",
                 "Lab assistant: show this step's values before the group answers; the report "
                 "says so (Ctrl+R)",
-                self.action_reveal,
             ),
         ):
-            if self._panel_method(method, screen) is not None:
-                yield SystemCommand(title, help_text, action)
+            run = offered.get(action)
+            if run is not None:
+                yield SystemCommand(title, help_text, run)
         yield SystemCommand(
             "Board check",
             "Does the wheel turn when asked, and does the count follow it? (F10)",

@@ -135,7 +135,7 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         assert "step 2" in str(app.screen.query_one("#zoom-note").render())
         # the model check
         await goto(pilot, "model_check")
-        assert "cause:" in str(app.screen.query_one("#check-lines").render())
+        assert "Likely cause:" in str(app.screen.query_one("#check-story").render())
         # summary and the report
         await goto(pilot, "summary")
         await paste_in(pilot, "summary.unclear", "the filter")

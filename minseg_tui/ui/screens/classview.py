@@ -27,9 +27,8 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab import classread, classview
 from minseg_tui.lab.classview import QUANTITIES, ClassView, Group
 from minseg_tui.lab.compare import format_diff
-from minseg_tui.lab.entry import format_quantity
+from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.ui.screens.start import StartScreen
-from minseg_tui.units import format_number
 
 COLUMNS: tuple[tuple[str, str], ...] = (
     ("#", "n"),
@@ -96,6 +95,7 @@ class ClassScreen(Screen[None]):
         Binding("escape", "back", "Back"),
         Binding("enter", "open_group", "Open read-only", priority=True),
     ]
+    AUTO_FOCUS = "#class-table"
 
     @dataclass
     class GroupRead(Message):
@@ -129,7 +129,6 @@ class ClassScreen(Screen[None]):
         table = self.query_one(DataTable)
         for header, key in COLUMNS:
             table.add_column(header, key=key)
-        table.focus()
         self._read()
 
     @work(thread=True, exclusive=True, group="class", name="read the class")
