@@ -159,9 +159,9 @@ class StepPane(VerticalScroll):
             ),
             None,
         )
-        if row is None or self not in row.ancestors or self._scrolled:
+        if row is None or self not in row.ancestors or self._keep == "scrolled":
             return False
-        self._landing = None  # the group answered: the landing is over
+        self._keep = "focused"  # the group answered: the landing is over
 
         def place(again: bool) -> None:
             if not (row.is_attached and widget.is_attached):
