@@ -128,10 +128,14 @@ class _Collector:
 
     def until(self, cond: Callable[[SampleBatch], bool], timeout: float) -> SampleBatch:
         """All samples so far, once ``cond`` holds for them; DeviceError after ``timeout``
-        s (wall clock: a board that stopped sending)."""
+        s (wall clock) without a new sample: a board that stopped sending. A busy host that
+        takes the samples slowly is not one."""
         end = time.monotonic() + timeout
         while True:
-            self.got.append(self.take())
+            new = self.take()
+            if len(new):
+                end = time.monotonic() + timeout
+            self.got.append(new)
             batch = SampleBatch.concat(self.got)
             self.got = [batch]
             if cond(batch):
@@ -139,7 +143,7 @@ class _Collector:
             if time.monotonic() > end:
                 raise DeviceError(
                     f"{self.port}: the board sent too few samples for the check "
-                    f"({len(batch)} in {timeout:g} s)"
+                    f"({len(batch)}, then none for {timeout:g} s)"
                 )
             time.sleep(0.01)
 

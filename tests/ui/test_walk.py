@@ -12,6 +12,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from minseg_tui.device.virtual import named_board
 from minseg_tui.lab.saving.store import list_sessions
 from minseg_tui.lab.views import session as views
@@ -24,6 +26,8 @@ from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import DeviceStatus
 from tests.ui.conftest import board_url, real_app
 from tests.ui.helpers import Heard, goto, paste_in, resume, settle, start
+
+pytestmark = pytest.mark.slow
 
 
 def _status(app) -> str:
