@@ -377,6 +377,12 @@ def revolution_text(counts: int) -> RevolutionResult:
     return RevolutionResult(ok, counts, text)
 
 
+LAST_US = 100_000
+"""Board time the hand check still reads after the hand is done, us (the turn's last samples)."""
+LAST_WAIT_S = 5.0
+"""...waiting at most this long in host time for them, s (a board that went silent)."""
+
+
 def count_revolution(
     board: CheckedBoard,
     done: Callable[[], bool],
@@ -395,8 +401,20 @@ def count_revolution(
     while not done() and time.monotonic() < end:
         got.append(take())
         time.sleep(poll)
-    time.sleep(0.1)  # the last samples of the turn
-    got.append(take())
+    # the last samples of the turn: until the board's own clock is LAST_US past the newest
+    # sample seen when the hand was done (a busy host reads them late, never too early)
+    seen = [int(b.t_us[-1]) for b in got if len(b)]
+    since = max(seen) if seen else None
+    end = time.monotonic() + LAST_WAIT_S
+    while time.monotonic() < end:
+        b = take()
+        got.append(b)
+        if len(b):
+            if since is None:
+                since = int(b.t_us[0])
+            if int(b.t_us[-1]) >= since + LAST_US:
+                break
+        time.sleep(poll)
     batch = SampleBatch.concat(got)
     if len(batch) == 0:
         raise DeviceError(f"{board.port}: no samples came from the board while the wheel turned")

@@ -48,8 +48,10 @@ def test_a_schema_1_session_reads_the_values_it_read_before(tmp_path, readonly):
             assert np.array_equal(log.extra[name], column), name
         st = s.results().identification.step
         assert (st.u_ss, st.u_ss_how) == (4.1, "row")
-        assert st.K == pytest.approx(1.899000136983378, rel=1e-12)
-        assert st.T == pytest.approx(0.042619013801033175, rel=1e-12)
+        # the values the old program read, to the least-squares search's own tolerance (the
+        # search itself changed since: s23-lsq's one solver, K moved by 4e-11, T by 2e-9 relative)
+        assert st.K == pytest.approx(1.899000136983378, rel=1e-7)
+        assert st.T == pytest.approx(0.042619013801033175, rel=1e-7)
         mc = s.model_check()
         assert mc.result is not None and mc.result.finding.cause == "coulomb_friction"
         assert mc.result.extended.params["T"] == pytest.approx(0.04291441362325852, rel=1e-9)
