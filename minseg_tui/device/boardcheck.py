@@ -392,11 +392,18 @@ def count_revolution(
     poll: float = 0.02,
 ) -> RevolutionResult:
     """Count while a hand turns the wheel, until ``done()`` says it is done (or ``timeout``
-    s pass): the counts and what they mean. The motor is off meanwhile."""
+    s pass): the counts and what they mean. The motor is off meanwhile. ``samples``: a tap
+    of the samples opened when the check was asked for (else the link's own, read from its
+    newest sample on)."""
     take = samples or board.samples
     board.stop()
-    take()
-    got: list[SampleBatch] = []
+    # where the count begins: a tap (``samples``) opened when the check was asked for holds
+    # nothing older, so its first sample; the link's own backlog may hold rows from before
+    # (the motor driven), so its newest. A hand that turns as soon as it is asked, before
+    # the first read, is counted either way.
+    first = take()
+    got: list[SampleBatch] = [first] if samples is not None else []
+    start = int(first.count[-1]) if samples is None and len(first) else None
     end = time.monotonic() + timeout
     while not done() and time.monotonic() < end:
         got.append(take())
@@ -418,7 +425,7 @@ def count_revolution(
     batch = SampleBatch.concat(got)
     if len(batch) == 0:
         raise DeviceError(f"{board.port}: no samples came from the board while the wheel turned")
-    return revolution_text(int(batch.count[-1] - batch.count[0]))
+    return revolution_text(int(batch.count[-1]) - (int(batch.count[0]) if start is None else start))
 
 
 WATCH_S = 1.0
