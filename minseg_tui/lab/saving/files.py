@@ -103,25 +103,30 @@ def _check_limits(f: CsvColumns, units: Mapping[str, str]) -> None:
         unit = units.get(name, "a number")
         if name in LIMITS:
             limit, what = LIMITS[name]
-            bad = np.flatnonzero(np.abs(v) > limit)
-            if bad.size:
-                k = int(bad[0])
-                raise InputError(
-                    f.source,
-                    int(f.lines[k]),
-                    f"expected |{name} ({unit})| below {limit:g}, a plausible size for {what}; "
-                    f"got {_show(float(v[k]))}",
-                )
+            _refuse_first(
+                f,
+                np.abs(v) > limit,
+                v,
+                f"expected |{name} ({unit})| below {limit:g}, a plausible size for {what}",
+            )
         if name in UINT32_COLUMNS:
-            bad = np.flatnonzero((v < 0) | (v > 2.0**32 - 1) | (v != np.floor(v)))
-            if bad.size:
-                k = int(bad[0])
-                raise InputError(
-                    f.source,
-                    int(f.lines[k]),
-                    f"expected {name} ({unit}) to be {UINT32_COLUMNS[name]}, an integer from 0 "
-                    f"to 4294967295; got {_show(float(v[k]))}",
-                )
+            _refuse_first(
+                f,
+                (v < 0) | (v > 2.0**32 - 1) | (v != np.floor(v)),
+                v,
+                f"expected {name} ({unit}) to be {UINT32_COLUMNS[name]}, an integer from 0 "
+                "to 4294967295",
+            )
+
+
+def _refuse_first(
+    f: CsvColumns, bad: NDArray[np.bool_], v: NDArray[np.float64], expected: str
+) -> None:
+    """Refuse the first row where ``bad`` holds: ``expected``, and the value it got."""
+    rows = np.flatnonzero(bad)
+    if rows.size:
+        k = int(rows[0])
+        raise InputError(f.source, int(f.lines[k]), f"{expected}; got {_show(float(v[k]))}")
 
 
 def _check_sample_period(f: CsvColumns, t: NDArray[np.float64]) -> None:
