@@ -4,8 +4,13 @@ Tab moves to under the readout of Tasks 4-5. Each through the real TUI (Pilot)."
 
 from __future__ import annotations
 
-from textual.widgets import Input
+import pytest
+from textual.geometry import Region
+from textual.widgets import Footer, Input
+from textual.widgets._footer import FooterKey
 
+from minseg_tui.ui.panels.results import StepPlot
+from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.helpers import settle, start_with_a_run
 
@@ -41,3 +46,51 @@ async def test_typing_on_the_model_checks_fold_goes_into_its_notes(quiet):
         notes = app.screen.query_one("#" + field_id("model_check.notes"), FieldRow)
         assert notes.input.value == "ok"
         assert app.screen.query_one("#import-path", Input).value == ""
+
+
+def _footer_keys(app) -> list[tuple[str, Region]]:
+    """The keys the footer shows ('f9 Zoom') and where, the palette's last."""
+    footer = app.screen.query_one(Footer)
+    keys = [k for k in footer.query(FooterKey) if k.display]
+    keys.sort(key=lambda k: k.has_class("-command-palette"))
+    return [(f"{k.key_display} {k.description}".strip(), k.region) for k in keys]
+
+
+def _whole(app) -> list[str]:
+    """The footer's keys, each asserted shown whole: inside the screen, none over another
+    (the palette's key docked at the right)."""
+    keys = _footer_keys(app)
+    width = app.screen.size.width
+    for (name, region), (after, nxt) in zip(keys, keys[1:], strict=False):
+        assert region.right <= nxt.x, f"{name!r} runs into {after!r}"
+    assert all(0 <= r.x and r.right <= width for _, r in keys)
+    return [name for name, _ in keys]
+
+
+@pytest.mark.parametrize("step_id", ["task11", "task12", "task13", "task14", "task15"])
+async def test_the_footer_of_tasks_11_to_15_shows_every_key_whole_at_80x24(quiet, step_id):
+    """It showed 'alt+→ Step  ^' before the palette's key (Ctrl+R Reveal cut), and with the
+    plot focused its own keys pushed F8, F9, Alt+→ and Ctrl+R off the line."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, step_id)
+        await settle(pilot)
+        shown = _whole(app)
+        for key in ("f1 Help", "f2 STOP", "f8 Export", "f9 Zoom", "alt+→ Step", "^r Reveal"):
+            assert key in shown, shown
+        app.screen.query_one(StepPlot).focus()
+        await settle(pilot)
+        assert _whole(app) == shown
+
+
+async def test_the_footer_is_whole_again_after_the_board_checks_dialog(quiet):
+    """Closing the board check's dialog (F10) on Task 12 at 80x24 left a stray '^' in the
+    footer, before the palette's key."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        app.push_screen(BoardCheckScreen(True, "The wheel turns and the count follows."))
+        await settle(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+        await pilot.press("enter")
+        await settle(pilot, lambda: not isinstance(app.screen, BoardCheckScreen))
+        assert "^r Reveal" in _whole(app)

@@ -21,12 +21,14 @@ from minseg_tui.ui.widgets.prose import Prose
 
 class StepPlot(TracePlot):
     """The step log, whole or zoomed to one rising step. Focused, [ and ] pick the step and z
-    toggles; alt+left/right and F9 do the same from anywhere on the step (app keys)."""
+    toggles; alt+left/right and F9 do the same from anywhere on the step (app keys). Its
+    keys are left out of the footer, which shows the app's (they pushed F8, F9, Alt+→ and
+    Ctrl+R off its line at 80 columns); the F1 help lists them."""
 
     BINDINGS = [
-        Binding("left_square_bracket", "pick(-1)", "prev step"),
-        Binding("right_square_bracket", "pick(1)", "next step"),
-        Binding("z", "zoom", "zoom"),
+        Binding("left_square_bracket", "pick(-1)", "prev step", show=False),
+        Binding("right_square_bracket", "pick(1)", "next step", show=False),
+        Binding("z", "zoom", "zoom", show=False),
     ]
     can_focus = True
 

@@ -24,7 +24,7 @@ from textual.containers import Horizontal, VerticalScroll
 from textual.reactive import reactive
 from textual.signal import Signal
 from textual.widget import Widget
-from textual.widgets import Footer, OptionList, RadioSet, SelectionList, Static
+from textual.widgets import OptionList, RadioSet, SelectionList, Static
 from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
@@ -53,6 +53,7 @@ from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import EntryBox, FieldRow
+from minseg_tui.ui.widgets.footer import KeyFooter
 from minseg_tui.ui.widgets.prose import Prose
 
 V = TypeVar("V")
@@ -87,8 +88,8 @@ PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
 no label: not in the footer). The footer shows a key on the steps whose panel offers it
 (:meth:`LabScreen.panel_keys`); elsewhere the key says that it is not part of this step. None
 is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
-moves). The app binds them (its keys come first in the footer, where Reveal, a lab
-assistant's key, is the one cut at 80 columns)."""
+moves). The app binds them (its keys come first in the footer; Reveal, a lab assistant's
+key, is the last, the first the footer leaves out where a line cannot hold them all)."""
 
 PANEL_ACTIONS = frozenset(action for _, action, _, _ in PANEL_KEYS)
 
@@ -369,7 +370,7 @@ class LabScreen(StatusScreen):
                 id="nav",
             )
             yield Static("", classes="pane")
-        yield Footer()
+        yield KeyFooter()
 
     async def on_mount(self) -> None:
         self._lab_changed.subscribe(self, self._on_lab_changed)
