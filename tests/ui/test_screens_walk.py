@@ -12,6 +12,7 @@ from textual.widgets._footer import FooterKey
 from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.helpers import settle, start_with_a_run
 
 
@@ -94,3 +95,26 @@ async def test_the_footer_is_whole_again_after_the_board_checks_dialog(quiet):
         await pilot.press("enter")
         await settle(pilot, lambda: not isinstance(app.screen, BoardCheckScreen))
         assert "^r Reveal" in _whole(app)
+
+
+@pytest.mark.parametrize("size", [(80, 24), (120, 40)])
+@pytest.mark.parametrize("step_id", ["task11", "task12"])
+async def test_the_zoomed_rise_shows_the_applied_voltage_on_its_own_axis(quiet, size, step_id):
+    """At 80x24 u_A's level after the edge (4.02 V) fell on the row of the dashed 63 % line
+    and was drawn under it: only the edge's two dots were seen, and no axis said volts. Now
+    u_A has the right axis, labelled, and its level a row that the other lines leave free."""
+    app = quiet()
+    async with app.run_test(size=size) as pilot:
+        await start_with_a_run(pilot, step_id)
+        canvas = app.screen.query_one(StepPlot).query_one(Canvas)
+        lines = str(canvas.render()).split("\n")
+        top = next(k for k, ln in enumerate(lines) if "┌" in ln)
+        bottom = next(k for k, ln in enumerate(lines) if "└" in ln)
+        first = lines[top].index("┌") + 1
+        last = lines[top].index("┐", first)
+        edge = first + round((last - first) * -canvas.xlim[0] / (canvas.xlim[1] - canvas.xlim[0]))
+        after = last - edge - 1
+        level = max(lines[top + 1 : bottom], key=lambda ln: ln[edge + 1 : last].count("•"))
+        assert level[edge + 1 : last].count("•") >= 0.8 * after, "\n".join(lines)
+        assert "u_A [V]" in lines[bottom + 2]  # the right axis' label, beside omega's
+        assert any(ln[last + 1 :].strip() for ln in lines[top:bottom])  # its ticks

@@ -108,7 +108,12 @@ class ResultsPanel(ViewPanel[ResultsView]):
             return
         if self.zoom is None or not v.steps:
             plot.set_axes("step log", "t [s]")
-            plot.show([Trace(v.t, v.omega, "omega"), Trace(v.t, v.u, "u_A [V]", "dot", steps=True)])
+            plot.show(
+                [
+                    Trace(v.t, v.omega, "omega"),
+                    Trace(v.t, v.u, "u_A [V]", "dot", steps=True, right=True),
+                ]
+            )
             if v.steps:
                 said = f"{len(v.steps)} rising steps with results · f9 Zoom"
             elif not v.lines:  # no results at all: Tasks 11-15 need the table's R, u_ss, i_ss
@@ -122,7 +127,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
         x = v.t[keep] - w.t0  # time after the edge: the 63 % crossing is read off as T
         traces = [
             Trace(x, v.omega[keep], "omega"),
-            Trace(x, v.u[keep], "u_A [V]", "dot", steps=True),
+            Trace(x, v.u[keep], "u_A [V]", "dot", steps=True, right=True),
         ]
         lo, hi = w.z0 - w.t0, w.z1 - w.t0
         traces.append(Trace([lo, hi], [w.level, w.level], "63 %", "-"))
