@@ -13,7 +13,7 @@ from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas
-from tests.ui.helpers import settle, start_with_a_run
+from tests.ui.helpers import goto, settle, start_with_a_run
 
 
 async def test_tab_on_the_model_check_reaches_the_notes_before_the_log_to_load(quiet):
@@ -118,3 +118,26 @@ async def test_the_zoomed_rise_shows_the_applied_voltage_on_its_own_axis(quiet, 
         assert level[edge + 1 : last].count("•") >= 0.8 * after, "\n".join(lines)
         assert "u_A [V]" in lines[bottom + 2]  # the right axis' label, beside omega's
         assert any(ln[last + 1 :].strip() for ln in lines[top:bottom])  # its ticks
+
+
+@pytest.mark.parametrize("step_id", ["task4", "task5"])
+async def test_tab_never_leaves_the_focused_entry_under_the_readout(quiet, step_id):
+    """On Task 4 at 80x24 Tab moved to u_ss at 2.5 V and left its box under the lines kept
+    at the bottom of the step (steady state, requested voltage, multimeter), as it did the
+    last two entries: the group typed into a box they could not see."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "prep1")
+        await goto(pilot, step_id)
+        readout = app.screen.query_one(".readout")
+        boxes = [r.input for r in app.screen.query(FieldRow)]
+        seen = 0
+        for _ in range(2 * len(boxes)):
+            await pilot.press("tab")
+            await settle(pilot)
+            if app.focused in boxes:
+                seen += 1
+                box = app.focused
+                assert not box.region.overlaps(readout.region), (box.region, readout.region)
+                assert app.screen.can_view_entire(box)
+        assert seen >= len(boxes)
