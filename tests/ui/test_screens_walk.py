@@ -141,3 +141,15 @@ async def test_tab_never_leaves_the_focused_entry_under_the_readout(quiet, step_
                 assert not box.region.overlaps(readout.region), (box.region, readout.region)
                 assert app.screen.can_view_entire(box)
         assert seen >= len(boxes)
+
+
+async def test_the_board_checks_dialog_stands_in_the_middle_of_the_screen(quiet):
+    """F10's dialog stood in the top left corner, over the status line, where the help and
+    the quit dialogs stand in the middle."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        app.push_screen(BoardCheckScreen(True, "The wheel turns and the count follows."))
+        await settle(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+        box = app.screen.query_one("#board-check").region
+        assert abs(box.x - (80 - box.right)) <= 1 and abs(box.y - (24 - box.bottom)) <= 1
