@@ -10,7 +10,7 @@ import textwrap
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_step_log, read_table
-from minseg_tui.model.identify import Identification, identify
+from minseg_tui.model.identify import Identification, identify, u_ss_words
 from minseg_tui.quantities import NO_WIDTH, NUMBER, format_interval, format_number, format_reading
 
 
@@ -108,12 +108,7 @@ def render(result: Identification) -> str:
     ]
     s = result.step
     if s is not None:
-        how = {
-            "row": "the table's row",
-            "interpolated": "interpolated in the table",
-            "extrapolated": "extrapolated from the table",
-            "log": "the log's applied voltage",
-        }[s.u_ss_how]
+        how = u_ss_words(s.u_ss_how)
         t63 = (
             f"{s.T_63 * 1e3:.1f} ms"
             if s.T_63 is not None

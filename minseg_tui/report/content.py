@@ -21,7 +21,7 @@ from minseg_tui.lab.views import check_words
 from minseg_tui.lab.views.session import step_window
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
-from minseg_tui.model.identify import RisingStep, StepResult
+from minseg_tui.model.identify import RisingStep, StepResult, u_ss_words
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import (
     DIGITS,
@@ -190,18 +190,8 @@ def _table_section(session: Session) -> Section:
     return sec
 
 
-_U_SS_HOW: dict[str, str] = {
-    "row": "the table's row at {levels}",
-    "interpolated": "interpolated between the table's rows: no row at {levels}",
-    "extrapolated": "extrapolated: no table row at {levels}, the nearest row's driver drop",
-    "log": "the log's applied voltage: it has no u_req column",
-}
-"""How Task 11's u_ss was found (:func:`minseg_tui.model.identify.u_ss_at`), in words."""
-
-
 def _u_ss_how(s: StepResult) -> str:
-    levels = " and ".join(f"{v:g} V" for v in sorted({x.u_req for x in s.steps if x.u_req}))
-    return _U_SS_HOW.get(s.u_ss_how, s.u_ss_how).format(levels=levels or "that level")
+    return u_ss_words(s.u_ss_how, [x.u_req for x in s.steps if x.u_req])
 
 
 _UNDETERMINED = "not determined by this log"

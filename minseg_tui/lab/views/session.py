@@ -545,7 +545,7 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "omega_ss in the steps",
                 "Task 11",
             )
-            + f"   u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
+            + f"   u_ss = {_fmt(st.u_ss, 'V', 3)} ({model_identify.u_ss_words(st.u_ss_how)})",
             shown(
                 "own.K",
                 f"K = {_fmt(st.K, 'rad/s/V')}"
