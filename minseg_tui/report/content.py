@@ -423,27 +423,12 @@ def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | Non
     return ", ".join(out)
 
 
-_GAIN_FIGURES: tuple[tuple[str, str, str], ...] = (
-    ("rmse", "rms error of the speed", "rad/s"),
-    ("above_floor", "speed error above the encoder's noise floor", "rad/s"),
-    ("above_noise", "speed error above the measured noise", "rad/s"),
-    ("angle_rms", "rms error of the angle", "rad"),
-    ("heldout_rmse", "speed error on held-out steps", "rad/s"),
-)
-"""The gain figures of the model check (keys ``baseline_<k>`` / ``extended_<k>``): words, unit."""
-
-
-def _gain_name(key: str) -> tuple[str, str]:
-    bare = check_words.stem(key)
-    return next(((n, u) for k, n, u in _GAIN_FIGURES if k == bare), (bare, ""))
-
-
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     g = r.gain
     named = r.finding.cause != "none"
     lead = check_words.stem(r.lead.figure) if r.lead else ""
     rows = []
-    for key, name, unit in sorted(_GAIN_FIGURES, key=lambda f: f[0] != lead):
+    for key, (name, unit) in sorted(check_words.FIGURES.items(), key=lambda f: f[0] != lead):
         b, e = check_words.figure(g, key)
         if b is None:
             continue
@@ -460,7 +445,7 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
 def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
-    name, unit = _gain_name(r.lead.figure)
+    name, unit = check_words.figure_name(r.lead.figure)
     b, e = check_words.figure(r.gain, r.lead.figure)
     if b is None:
         return None

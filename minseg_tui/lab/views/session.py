@@ -596,17 +596,6 @@ def results(session: Session, step_id: str) -> ResultsView:
 
 
 # -- the model check ---------------------------------------------------------------------------
-FIGURES: dict[str, tuple[str, str]] = {
-    "angle_rms": ("angle error", "rad"),
-    "heldout_rmse": ("error on held-out steps", "rad/s"),
-    "above_noise": ("speed error above the noise", "rad/s"),
-    "above_floor": ("speed error above the encoder's floor", "rad/s"),
-    "rmse": ("rms speed error", "rad/s"),
-}
-"""The model check's gain figures (``gain`` keys without their baseline_/extended_ prefix):
-what they are called here and their unit."""
-
-
 @dataclass(frozen=True)
 class CheckView:
     """The model check of one run: measured, baseline and extended speeds (rad/s) at t (s),
@@ -654,7 +643,7 @@ def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | No
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
     b, e = check_words.figure(gain, key)
-    unit = FIGURES.get(stem, (stem, ""))[1]
+    unit = check_words.figure_name(stem)[1]
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
     if not named or e is None:
@@ -687,11 +676,11 @@ def check(session: Session) -> CheckView:
     if r.lead is not None:
         shown = _figure(g, r.lead.figure, named)
         if shown is not None:
-            lead = f"{FIGURES.get(led, (led, ''))[0]}: {shown}"
+            lead = f"{check_words.figure_name(led)[0]}: {shown}"
             lead_why = r.lead.why
     others = [
-        f"{FIGURES[stem][0]} {shown}"
-        for stem in FIGURES
+        f"{check_words.FIGURES[stem][0]} {shown}"
+        for stem in check_words.FIGURES
         if stem != led and (shown := _figure(g, stem, named)) is not None
     ]
     floor = g.get("noise_floor")
