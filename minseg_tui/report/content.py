@@ -18,7 +18,7 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.state.compare import ANSWERED_FIRST, format_diff
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import check_words
-from minseg_tui.lab.views.session import step_window
+from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import RisingStep, StepResult, u_ss_words
@@ -322,7 +322,7 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     st = _read_step(s.steps, s.T_63)
     t = np.asarray(log.t, dtype=float)
     w = np.asarray(log.omega, dtype=float)
-    zoom = step_window(st, s.T, log.ts)  # the same window as the TUI's zoom
+    zoom = rise_zoom(st, s.T, log.ts)  # the same window as the TUI's zoom
     sel = (t >= zoom.z0 - 1e-9) & (t <= zoom.z1 + 1e-9)
     level = zoom.level
     marks = [

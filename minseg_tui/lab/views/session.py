@@ -24,6 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state.session import Entry, Session, TableRow
@@ -56,8 +57,13 @@ samples: quiet enough to judge steadiness, and without the manual's 0.5 s lag.""
 CAPTURE_WINDOW: float = lab_capture.DEFAULT_WINDOW
 """The window the indicator judges and a capture averages over, s."""
 
-TABLE_COLUMNS = ("u\nV", "u_ss\nV", "omega_ss\nrad/s", "i_ss\nmA", "k_v\nV s/rad", "f\nmN m s/rad")
-"""The table's headers: name over unit (the cells hold bare numbers in these units)."""
+TABLE_HEADERS: tuple[str, ...] = (
+    *(f"{'u' if name == 'u_req' else name}\n{unit}" for name, unit in TABLE_COLUMNS.items()),
+    "k_v\nV s/rad",
+    "f\nmN m s/rad",
+)
+"""The table's headers: name over unit (the cells hold bare numbers in these units), the
+readings' units those of the table's file (:data:`~minseg_tui.lab.saving.files.TABLE_COLUMNS`)."""
 
 _FORMULAS = dict(step("table").formulas)
 
@@ -334,7 +340,7 @@ def table(session: Session) -> TableView:
         )
     warnings = tuple(n.message for n in session.warnings("table")) + tuple(res.problems)
     return TableView(
-        TABLE_COLUMNS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
+        TABLE_HEADERS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
     )
 
 
@@ -455,7 +461,7 @@ ZOOM_MIN_SAMPLES: int = 3
 
 
 @dataclass(frozen=True)
-class StepWindow:
+class RiseZoom:
     """One rising step of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
     the speed before (``omega0``) and settled (``omega_ss``, rad/s), its 63 % reading
     ``T_63`` (s or None); the zoom to its rise from ``z0`` to ``z1`` (s: a little before the
@@ -481,7 +487,7 @@ class StepWindow:
         return None if self.T_63 is None else self.t0 + self.T_63
 
 
-def step_window(step_: model_identify.RisingStep, T: float | None, ts: float) -> StepWindow:
+def rise_zoom(step_: model_identify.RisingStep, T: float | None, ts: float) -> RiseZoom:
     """The window of one rising step, zoomed to its rise with time constant ``T`` (s; the
     step's own 63 % reading when None) at sample period ``ts`` (s)."""
     T_ref = T if T is not None and T > 0 else step_.T_63
@@ -490,7 +496,7 @@ def step_window(step_: model_identify.RisingStep, T: float | None, ts: float) ->
     t1 = step_.t + step_.duration
     z0 = step_.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
     z1 = min(step_.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
-    return StepWindow(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
+    return RiseZoom(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
 
 
 @dataclass(frozen=True)
@@ -503,7 +509,7 @@ class ResultsView:
     t: FloatArray
     omega: FloatArray
     u: FloatArray
-    steps: tuple[StepWindow, ...]
+    steps: tuple[RiseZoom, ...]
     lines: tuple[str, ...]
     compare: tuple[tuple[str, str, str], ...] = ()
     problems: tuple[str, ...] = ()
@@ -525,7 +531,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             log = None
     ident = res.identification
     lines: list[str] = []
-    steps: tuple[StepWindow, ...] = ()
+    steps: tuple[RiseZoom, ...] = ()
     if ident is not None and ident.step is not None:
         st = ident.step
         conceal = hidden(session)
@@ -571,7 +577,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
         ]
         ts = log.ts if log is not None else 0.0
-        steps = tuple(step_window(s, st.T, ts) for s in st.steps)
+        steps = tuple(rise_zoom(s, st.T, ts) for s in st.steps)
     problems = list(res.problems)
     rule = policy(session)
     if rule.problem:
