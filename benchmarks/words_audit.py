@@ -4,7 +4,7 @@ Counts, over minseg_tui/ (and README.md for the keys), each thing that should co
 place, and says where it stands:
 
 - number formats: format specs in f-strings (``{x:.3g}``, ``{x:.1f}``, ``{x:g}``...) outside
-  quantities.py, the one module that writes numbers for people; split into those in modules
+  quantities.py (an SVG's coordinates left out), the one module that writes numbers for people; split into those in modules
   of words people read (the UI, the report, the CLI, lab/views, identify's observations)
   and the rest (messages of refusals, files, the board's protocol, the model check);
 - formatting helpers: module-level ``_num``/``_fmt``/``_g``-like wrappers around quantities;
@@ -24,7 +24,6 @@ from collections import Counter, defaultdict
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-PKG = ROOT / "minseg_tui"
 
 SPEC = re.compile(r"\{[^{}]*?:[+ ]?\d*(?:\.\d+)?[gfe%]\}")
 """A number's format spec inside an f-string: {x:.3g}, {x:+.1f}, {x:g}, {x:.0f}."""
@@ -41,12 +40,15 @@ PLACES: dict[str, re.Pattern[str]] = {
 }
 
 
-def _sources() -> list[Path]:
-    return sorted(p for p in PKG.rglob("*.py") if ".venv" not in p.parts)
+def _geometry(text: str, m: re.Match[str]) -> bool:
+    """A number in an SVG attribute or a point list (x="{px:.1f}", "{a:.1f},{b:.1f}"): a
+    drawing's coordinates, not a number people read."""
+    before, after = text[m.start() - 2 : m.start()], text[m.end() : m.end() + 1]
+    return before == '="' or before.endswith(",") or after == ","
 
 
-def _rel(p: Path) -> str:
-    return str(p.relative_to(PKG))
+def _sources(pkg: Path) -> list[Path]:
+    return sorted(p for p in pkg.rglob("*.py") if ".venv" not in p.parts)
 
 
 def _defined(tree: ast.Module) -> tuple[list[str], list[str]]:
@@ -69,18 +71,21 @@ def _defined(tree: ast.Module) -> tuple[list[str], list[str]]:
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--list", action="store_true", help="print every hit")
+    ap.add_argument("--root", type=Path, default=ROOT, help="a checkout to count in")
     args = ap.parse_args()
+    root = args.root.resolve()
+    pkg = root / "minseg_tui"
     people: Counter[str] = Counter()
     rest: Counter[str] = Counter()
     helpers: list[str] = []
     places: dict[str, list[str]] = defaultdict(list)
     classes: dict[str, list[str]] = defaultdict(list)
     tables: dict[str, list[str]] = defaultdict(list)
-    for p in _sources():
+    for p in _sources(pkg):
         text = p.read_text(encoding="utf-8")
-        rel = _rel(p)
+        rel = str(p.relative_to(pkg))
         if rel != "quantities.py":
-            n = len(SPEC.findall(text))
+            n = sum(not _geometry(text, m) for m in SPEC.finditer(text))
             if n:
                 (people if rel.startswith(PEOPLE) else rest)[rel] += n
         helpers += [f"{rel}: {m.group(1) or m.group(2)}" for m in HELPER.finditer(text)]
@@ -92,7 +97,7 @@ def main() -> None:
             classes[name].append(rel)
         for name in t:
             tables[name].append(rel)
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    readme = (root / "README.md").read_text(encoding="utf-8")
     for what, pattern in PLACES.items():
         if pattern.search(readme):
             places[what].append("README.md")

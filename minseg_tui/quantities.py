@@ -45,6 +45,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 from decimal import Decimal
 
@@ -112,6 +113,32 @@ def format_number(value: float, digits: int = DIGITS) -> str:
         return f"{value:.{digits - 1}e}"
     decimals = max(digits - 1 - exponent, 0)
     return f"{rounded:.{decimals}f}"
+
+
+def format_signed(value: float, digits: int = DIGITS) -> str:
+    """:func:`format_number` with its sign always written: a shift or a difference (+1.20,
+    -0.0350; 0 stays "0")."""
+    text = format_number(value, digits)
+    return f"+{text}" if value > 0 and math.isfinite(value) else text
+
+
+def format_ticks(values: Sequence[float]) -> list[str]:
+    """The labels of evenly spaced axis ticks, on the screen's plots and the report's
+    figures alike: as many decimals as their step and values need (a step of 2.5 one more
+    than 2), the same for every tick (0.0, 0.5, 1.0), never '-0'."""
+    if len(values) < 2:
+        return [f"{v:g}" for v in values]
+    step = values[1] - values[0]
+    least = max(0, -math.floor(math.log10(step) + 1e-9))
+    decimals = next(
+        (
+            d
+            for d in range(least, least + 4)
+            if all(abs(round(v, d) - v) < step * 1e-6 for v in values)
+        ),
+        least + 4,
+    )
+    return [f"{round(v, decimals) + 0.0:.{decimals}f}" for v in values]
 
 
 NO_WIDTH = "not determined: the interval has no width"
