@@ -36,7 +36,7 @@ HELPER = re.compile(r"^(?:def (_num|_fmt|_q|_g|_v|_w|_s|_read)\(|(_g|_fmt|_num) 
 PLACES: dict[str, re.Pattern[str]] = {
     "how u_ss was found": re.compile(r'"interpolated":|\{st\.u_ss_how\}'),
     "the check's figure names": re.compile(r'"(?:rms error of the angle|angle error)", "rad"'),
-    "the key help (what F5 does)": re.compile(r'^\| F5|\("F5", "|\("f5", "', re.M),
+    "the key help (what F5 does)": re.compile(r'^\| F5|\("F5", "|\("f5", "|Key\(\s*"F5"', re.M),
 }
 
 
