@@ -122,6 +122,12 @@ def format_signed(value: float, digits: int = DIGITS) -> str:
     return f"+{text}" if value > 0 and math.isfinite(value) else text
 
 
+def format_spread(spread: float, unit: str = "") -> str:
+    """The spread of a captured speed around its mean, as the live readout, the table and
+    the report write it: "± 0.03 rad/s" (two decimals, the speed's in rad/s)."""
+    return f"± {spread:.2f} {unit}".rstrip()
+
+
 def format_ticks(values: Sequence[float]) -> list[str]:
     """The labels of evenly spaced axis ticks, on the screen's plots and the report's
     figures alike: as many decimals as their step and values need (a step of 2.5 one more

@@ -29,6 +29,7 @@ from minseg_tui.quantities import (
     format_number,
     format_quantity,
     format_reading,
+    format_spread,
 )
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
 
@@ -143,9 +144,9 @@ def _table_section(session: Session) -> Section:
     for r in session.table():
         omega = _reading(r.omega_ss, "rad/s")
         if r.spread is not None and r.omega_ss is not None:
-            omega += f" ± {r.spread:.2g}"
+            omega += f" {format_spread(r.spread)}"
         window = (
-            f"{r.window[0]:.3g}–{r.window[1]:.3g} s"
+            f"{format_number(r.window[0], 3)}–{format_number(r.window[1], 3)} s"
             if r.window
             else "typed"
             if r.omega_ss is not None

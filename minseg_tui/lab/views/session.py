@@ -41,6 +41,7 @@ from minseg_tui.quantities import (
     format_interval,
     format_number,
     format_quantity,
+    format_spread,
     format_value,
 )
 
@@ -302,7 +303,7 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
 
 
 def _table_row(r: TableRow, R: float | None, k_a: float | None) -> tuple[Cell, ...]:
-    spread = "" if r.spread is None else f" ±{r.spread:.2f}"
+    spread = "" if r.spread is None else f" {format_spread(r.spread)}"
     omega_how = (
         "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
         if r.spread is not None
