@@ -150,6 +150,9 @@ def format_ticks(values: Sequence[float]) -> list[str]:
 NO_WIDTH = "not determined: the interval has no width"
 """What an interval whose ends are one number says instead of 'x – x'."""
 
+NOT_DETERMINED = "not determined by this log"
+"""What a 95 % interval the log does not determine says instead of numbers."""
+
 
 def format_interval(
     lo: float, hi: float, unit: str = "", digits: int = DIGITS, sep: str = " – "
@@ -157,7 +160,13 @@ def format_interval(
     """A finite interval (lo, hi) in ``unit``: its ends with ``digits`` significant digits,
     or with as many more as it takes to tell them apart, so that a narrow interval shows its
     real width ("12.3004 – 12.3012 rad/s/V", never "12.30 – 12.30"); an interval without
-    width (lo == hi) is :data:`NO_WIDTH`."""
+    width (lo == hi) is :data:`NO_WIDTH`; an end the log does not bound (infinite) is said."""
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        if math.isfinite(lo):
+            return f"{format_number(lo, digits)} {unit} or more: no upper bound from this log"
+        if math.isfinite(hi):
+            return f"up to {format_number(hi, digits)} {unit}: no lower bound from this log"
+        return "not bounded by this log"
     if not hi > lo:
         return NO_WIDTH
     a, b = format_number(lo, digits), format_number(hi, digits)

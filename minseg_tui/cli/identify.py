@@ -13,6 +13,7 @@ from minseg_tui.lab.saving.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify, u_ss_words
 from minseg_tui.quantities import (
     NO_WIDTH,
+    NOT_DETERMINED,
     NUMBER,
     format_interval,
     format_number,
@@ -123,11 +124,11 @@ def render(result: Identification) -> str:
         )
         fit = s.fit
         interval = (
-            f"95 % interval {format_interval(s.T_ci[0] * 1e3, s.T_ci[1] * 1e3, 'ms', sep=' to ')}"
+            f"95 % interval {format_interval(s.T_ci[0] * 1e3, s.T_ci[1] * 1e3, 'ms')}"
             if s.T_determined and s.T_ci[1] > s.T_ci[0]
             else f"95 % interval: {NO_WIDTH}"
             if s.T_determined
-            else "95 % interval: not determined by this log"
+            else f"95 % interval: {NOT_DETERMINED}"
         )
         on_bound = " (on its bound)" if fit.T_on_bound else ""
         timing = (
@@ -150,7 +151,7 @@ def render(result: Identification) -> str:
                 if s.K_determined and s.K_ci[1] > s.K_ci[0]
                 else f"(95 % interval: {NO_WIDTH}; Task 11)"
                 if s.K_determined
-                else "(95 % interval: not determined by this log; Task 11)"
+                else f"(95 % interval: {NOT_DETERMINED}; Task 11)"
             ),
             f"T, 63 % reading      = {t63} (Task 12, median over the rising steps)",
             f"T, least squares     = {_g(s.T * 1e3)} ms{on_bound}, {interval}",

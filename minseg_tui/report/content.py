@@ -25,6 +25,7 @@ from minseg_tui.model.identify import RisingStep, StepResult, u_ss_words
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import (
     DIGITS,
+    NOT_DETERMINED,
     format_interval,
     format_number,
     format_quantity,
@@ -195,20 +196,6 @@ def _u_ss_how(s: StepResult) -> str:
     return u_ss_words(s.u_ss_how, [x.u_req for x in s.steps if x.u_req])
 
 
-_UNDETERMINED = "not determined by this log"
-
-
-def _interval(lo: float, hi: float, unit: str) -> str:
-    """A 95 % interval; a side the log does not bound is said (the check gives +-inf)."""
-    if math.isfinite(lo) and math.isfinite(hi):
-        return format_interval(lo, hi, unit)
-    if math.isfinite(lo):
-        return f"{_num(lo)} {unit} or more: no upper bound from this log"
-    if math.isfinite(hi):
-        return f"up to {_num(hi)} {unit}: no lower bound from this log"
-    return "not bounded by this log"
-
-
 def _step_section(session: Session) -> Section:
     res = session.results()
     sec = Section("Step response and model (Tasks 10-15)")
@@ -230,12 +217,12 @@ def _step_section(session: Session) -> Section:
                     (
                         "K (Task 11, 95 % interval)",
                         f"{_num(s.K)} rad/s/V "
-                        f"({_interval(*s.K_ci, 'rad/s/V') if s.K_determined else _UNDETERMINED})",
+                        f"({format_interval(*s.K_ci, 'rad/s/V') if s.K_determined else NOT_DETERMINED})",
                     ),
                     ("T, 63 % reading (Task 12)", t63),
                     (
                         "T, least squares (95 % interval)",
-                        f"{_num(s.T)} s ({_interval(*s.T_ci, 's') if s.T_determined else _UNDETERMINED})",
+                        f"{_num(s.T)} s ({format_interval(*s.T_ci, 's') if s.T_determined else NOT_DETERMINED})",
                     ),
                     ("J (Task 13)", f"{_num(s.J)} kg m^2"),
                     ("model (Task 14)", s.model_equation(_num)),
@@ -419,7 +406,7 @@ def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | Non
         unit = UNITS.get(k, "")
         text = f"{k} = {_num(v)} {unit}".rstrip()
         if intervals and k in intervals:
-            text += f" (95 %: {_interval(*intervals[k], unit)})"
+            text += f" (95 %: {format_interval(*intervals[k], unit)})"
         out.append(text)
     return ", ".join(out)
 

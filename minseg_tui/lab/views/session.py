@@ -37,6 +37,7 @@ from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import (
     DIGITS,
+    NOT_DETERMINED,
     UNITS,
     format_interval,
     format_number,
@@ -88,11 +89,11 @@ def _num(v: float | None, digits: int = DIGITS) -> str:
 
 
 def _ci(ci: tuple[float, float], unit: str) -> str:
-    """ ", 95 % CI lo..hi unit" for a finite interval; '' when it is not known."""
+    """ ", 95 % interval lo – hi unit" for a finite interval; '' when it is not known."""
     lo, hi = ci
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return ""
-    return f", 95 % CI {format_interval(lo, hi, unit, sep='..')}"
+    return f", 95 % interval {format_interval(lo, hi, unit)}"
 
 
 # -- Task 4: the live stream ------------------------------------------------------------------
@@ -556,14 +557,14 @@ def results(session: Session, step_id: str) -> ResultsView:
             shown(
                 "own.K",
                 f"K = {_fmt(st.K, 'rad/s/V')}"
-                f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else ', 95 % CI not determined by this log'}",
+                f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "K",
                 "Task 11",
             ),
             shown(
                 "own.T",
                 f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
-                f"{_ci(st.T_ci, 's') if st.T_determined else ', 95 % CI not determined by this log'}",
+                f"{_ci(st.T_ci, 's') if st.T_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "T",
                 "Task 12",
             ),
