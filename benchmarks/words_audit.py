@@ -76,6 +76,7 @@ def main() -> None:
     root = args.root.resolve()
     pkg = root / "minseg_tui"
     people: Counter[str] = Counter()
+    given = 0
     rest: Counter[str] = Counter()
     helpers: list[str] = []
     places: dict[str, list[str]] = defaultdict(list)
@@ -85,9 +86,12 @@ def main() -> None:
         text = p.read_text(encoding="utf-8")
         rel = str(p.relative_to(pkg))
         if rel != "quantities.py":
-            n = sum(not _geometry(text, m) for m in SPEC.finditer(text))
+            found = [m for m in SPEC.finditer(text) if not _geometry(text, m)]
+            n = len(found)
             if n:
                 (people if rel.startswith(PEOPLE) else rest)[rel] += n
+                if rel.startswith(PEOPLE):
+                    given += sum(m.group().endswith(":g}") for m in found)
         helpers += [f"{rel}: {m.group(1) or m.group(2)}" for m in HELPER.finditer(text)]
         for what, pattern in PLACES.items():
             if pattern.search(text):
@@ -106,7 +110,8 @@ def main() -> None:
 
     print(
         f"number formats outside quantities.py, in modules people read: "
-        f"{sum(people.values())} in {len(people)} modules"
+        f"{sum(people.values())} in {len(people)} modules, of which {given} are :g (a level, "
+        "a setting or a reading written as given)"
     )
     if args.list:
         for rel, n in people.most_common():
