@@ -122,6 +122,12 @@ def format_signed(value: float, digits: int = DIGITS) -> str:
     return f"+{text}" if value > 0 and math.isfinite(value) else text
 
 
+def format_percent(fraction: float) -> str:
+    """A share or a relative difference (``fraction``, 0.17 for 17 %) in whole percent, as
+    the sentences about the numbers write it: "17 %"."""
+    return f"{fraction * 100:.0f} %"
+
+
 def format_spread(spread: float, unit: str = "") -> str:
     """The spread of a captured speed around its mean, as the live readout, the table and
     the report write it: "± 0.03 rad/s" (two decimals, the speed's in rad/s)."""

@@ -11,7 +11,13 @@ import numpy as np
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.identify.stepfit import RisingStep, TimeConstantFit
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.quantities import RPM, format_number, format_reading, format_signed
+from minseg_tui.quantities import (
+    RPM,
+    format_number,
+    format_percent,
+    format_reading,
+    format_signed,
+)
 
 KV_OUTLIER: float = 0.15
 """A row's k_v this far (relative) from the median is called a bad reading."""
@@ -83,7 +89,7 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
                     Observation(
                         "k_v_outlier",
                         (
-                            f"{_row_name(i, row.reading)}: k_v = {format_number(row.k_v)} V s/rad is {abs(dev) * 100:.0f} % "
+                            f"{_row_name(i, row.reading)}: k_v = {format_number(row.k_v)} V s/rad is {format_percent(abs(dev))} "
                             f"{'above' if dev > 0 else 'below'} the median {format_number(k_v)}: probably a bad reading "
                             "(u_ss, omega_ss or i_ss of that row); the median keeps it out of the result."
                         ),
@@ -96,7 +102,7 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
                 Observation(
                     "k_v_disagree",
                     (
-                        f"The two rows give k_v = {format_number(a)} and {format_number(b)} V s/rad, {abs(a - b) / abs(k_v) * 100:.0f} % apart: "
+                        f"The two rows give k_v = {format_number(a)} and {format_number(b)} V s/rad, {format_percent(abs(a - b) / abs(k_v))} apart: "
                         "one is probably a bad reading, and with two rows the median cannot tell which. Measure a third voltage."
                     ),
                 )
@@ -224,7 +230,7 @@ def step_observations(
                     "step_vs_table",
                     (
                         f"The step at t = {format_number(s.t, 3)} s settles at {format_number(s.omega_ss, 3)} rad/s, but the table gives "
-                        f"{format_number(w_table, 3)} rad/s at u_req = {s.u_req:g} V ({abs(s.omega_ss / w_table - 1) * 100:.0f} % apart): "
+                        f"{format_number(w_table, 3)} rad/s at u_req = {s.u_req:g} V ({format_percent(abs(s.omega_ss / w_table - 1))} apart): "
                         "the two experiments do not agree (a different wheel load, battery level, or a misread value)."
                     ),
                 )
@@ -247,7 +253,7 @@ def step_observations(
                 "T_63_differs",
                 (
                     f"The 63 % reading ({format_number(T_63 * 1e3, 3)} ms) and the least-squares T ({format_number(T * 1e3, 3)} ms) differ by "
-                    f"{abs(T_63 / T - 1) * 100:.0f} %. "
+                    f"{format_percent(abs(T_63 / T - 1))}. "
                     + (
                         f"The reading counts from the logged step, so it holds the dead time of "
                         f"{format_number(dead_time * 1e3, 3)} ms that T does not; besides, the measured speed is the "
@@ -357,7 +363,7 @@ def fit_observations(
     elif fit.shift_on_bound and fit.shift > 0:
         late = (
             "A dead time fits the log better, but it is not one: the wheel already moves before "
-            f"it would end ({fit.moved_early * 100:.0f} % of the way to its new speed), so the rise "
+            f"it would end ({format_percent(fit.moved_early)} of the way to its new speed), so the rise "
             "starts at once but slowly, a shape the first-order model misses (an S-shaped start: "
             "a second pole or a filtered speed; a ramp: a current limit). Read T with care."
             if fit.moved_early is not None
