@@ -14,7 +14,14 @@ import io
 import math
 
 from minseg_tui.lab.state.compare import format_diff
-from minseg_tui.lab.views.classview import JUDGED, QUANTITIES, THRESHOLD, ClassView, Group
+from minseg_tui.lab.views.classview import (
+    JUDGED,
+    QUANTITIES,
+    THRESHOLD,
+    ClassView,
+    members,
+    own_cell,
+)
 from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.report.content import Figure, Figures, Report, Section, Table
 from minseg_tui.report.svg import Band, Line, Mark, plot
@@ -25,21 +32,6 @@ GROUP_COLOR = "#1f77b4"
 
 def _cell(v: float | None) -> str:
     return "–" if v is None or not math.isfinite(v) else format_number(v)
-
-
-def members(g: Group) -> str:
-    """The group's names, or why there are none."""
-    return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
-
-
-def own_cell(g: Group) -> str:
-    """The group's own values against the computed ones, in one cell: "T_63 +12 %"."""
-    parts = [
-        f"{o.key.removeprefix('own.')} {format_diff(o.rel_diff)}"
-        for o in g.own
-        if o.rel_diff is not None
-    ]
-    return ", ".join(parts) or "–"
 
 
 def table(view: ClassView) -> Table:

@@ -1,13 +1,16 @@
 """The class at a glance: one row per group of a sessions folder, and what stands out.
 
-:func:`build` opens every session under a folder read-only (:meth:`Session.open` with
+:func:`read_group` opens a session read-only (:meth:`Session.open` with
 ``readonly=True``: no lock taken, nothing written) and takes its numbers from the session
 itself: :meth:`Session.results` (Tasks 6-15, the same numbers ``minseg-tui report``
 writes), :meth:`Session.model_check` and :meth:`Session.comparisons`; only K, T and the
 63 % reading of a session whose table lacks an i_ss (or R) are taken from its step run
-here (:func:`~minseg_tui.model.identify.step_alone`), since they need neither. Nothing here
-computes a motor parameter a second time; it only sets the groups side by side and says,
-in words, what stands out:
+here (:func:`~minseg_tui.model.identify.step_alone`), since they need neither. The model
+check's cause and Tasks 11-13's numbers come from what the session file keeps of its run
+(:meth:`Session.kept`, written by the lab when it computed them) whenever that was computed
+from this very run and table: the run is then neither checked nor fitted again, which is
+most of the cost of a row. Nothing here computes a motor parameter a second time; it only
+sets the groups side by side and says, in words, what stands out:
 
 - the slips the lab manual warns about (:func:`slips`): i_ss above 100 mA (or a current
   typed in amperes into the mA column), R outside 3-6 Ω, an omega_ss that looks like rpm,
@@ -31,8 +34,11 @@ from pathlib import Path
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.steps import LEVELS
+from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import read_run
 from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable
+from minseg_tui.lab.state.compare import format_diff
+from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import step_alone
@@ -254,6 +260,21 @@ def _num(v: float) -> str:
     return format_number(v)
 
 
+def members(g: Group) -> str:
+    """The group's names, or why there are none."""
+    return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
+
+
+def own_cell(g: Group) -> str:
+    """The group's own values against the computed ones, in one cell: "T +12 %"."""
+    parts = [
+        f"{o.key.removeprefix('own.')} {format_diff(o.rel_diff)}"
+        for o in g.own
+        if o.rel_diff is not None
+    ]
+    return ", ".join(parts) or "–"
+
+
 def _unit(key: str) -> str:
     return next(q.unit for q in QUANTITIES if q.key == key)
 
@@ -332,10 +353,11 @@ def slips(session: Session) -> list[str]:
     return [s.text for s in slip_list(session)]
 
 
-def _values(session: Session) -> tuple[dict[str, float | None], tuple[str, ...]]:
-    res = session.results()
+def _values(
+    session: Session, res: Results, kept: Kept | None
+) -> tuple[dict[str, float | None], tuple[str, ...]]:
     ident = res.identification
-    st = ident.step if ident is not None else None
+    st = res.step if ident is not None else None
     values: dict[str, float | None] = {
         "R": session.value("R"),
         "k_v": ident.k_v if ident else None,
@@ -349,6 +371,8 @@ def _values(session: Session) -> tuple[dict[str, float | None], tuple[str, ...]]
     lacks = list(res.problems)
     if not session.runs:
         lacks.append("no step run recorded yet (Task 10)")
+    elif ident is None and kept is not None and kept.step is not None:
+        values.update({"K": kept.step.K, "T_63": kept.step.T_63, "T": kept.step.T})
     elif ident is None:
         values.update(_step_alone(session))
     return values, tuple(dict.fromkeys(lacks))
@@ -375,34 +399,65 @@ def read_group(folder: Path) -> Group:
     try:
         session = Session.open(folder, readonly=True)
     except InputError as exc:
-        return Group(
-            folder.name,
-            folder,
-            lacks=(f"cannot be read: {exc}",),
-            damaged=str(exc),
-            readable=False,
-        )
+        return _unreadable(folder, exc)
+    return _row(folder, session)
+
+
+def read_kept(folder: Path) -> Group | None:
+    """The row of the session in ``folder`` as :func:`read_group` gives it, when it costs
+    no fit and no model check: the session has no step run, or its file keeps both for the
+    run as it is now (:meth:`Session.kept`); None otherwise (or when it cannot be read)."""
+    try:
+        session = Session.open(folder, readonly=True)
+    except InputError:
+        return None
+    if session.step_run() is not None:
+        kept = session.kept()
+        if kept is None or kept.step is None or kept.check is None:
+            return None
+    return _row(folder, session)
+
+
+def _unreadable(folder: Path, exc: InputError) -> Group:
+    return Group(
+        folder.name,
+        folder,
+        lacks=(f"cannot be read: {exc}",),
+        damaged=str(exc),
+        readable=False,
+    )
+
+
+def _row(folder: Path, session: Session) -> Group:
     cause, code = "", ""
     values: dict[str, float | None] = {"R": session.value("R")}
+    own: tuple[Own, ...] = ()
     try:
-        values, lacks = _values(session)
-        mc = session.model_check()
-        if mc.result is not None:
-            code = mc.result.finding.cause
+        kept = session.kept()
+        res = session.results(kept.step if kept is not None else None)
+        values, lacks = _values(session, res, kept)
+        check = kept.check if kept is not None else None
+        if check is None:
+            mc = session.model_check()
+            code = mc.result.finding.cause if mc.result is not None else ""
+            problem = mc.problem if mc.run is not None else ""
+        else:
+            code, problem = check.cause, check.problem
+        if code:
             cause = in_words(code)
-        elif mc.run is not None:
-            lacks = (*lacks, f"model check: {mc.problem}")
+        elif problem:
+            lacks = (*lacks, f"model check: {problem}")
+        own = tuple(
+            Own(c.key, c.label, c.unit, c.own, c.computed, c.rel_diff)
+            for c in session.comparisons(results=res)
+            if c.own is not None
+        )
     except (InputError, ValueError, ArithmeticError, KeyError) as exc:
         # one session's trouble never hides the others: the row says what went wrong
         lacks = (f"its numbers cannot be computed: {exc}",)
     if session.damaged:
         lacks = (f"damaged: {session.damaged}", *lacks)
     found = slip_list(session)
-    own = tuple(
-        Own(c.key, c.label, c.unit, c.own, c.computed, c.rel_diff)
-        for c in session.comparisons()
-        if c.own is not None
-    )
     return Group(
         id=session.id or folder.name,
         folder=folder,
@@ -518,8 +573,11 @@ __all__ = [
     "Slip",
     "Spread",
     "judge",
+    "members",
     "outlier",
+    "own_cell",
     "read_group",
+    "read_kept",
     "session_folders",
     "slip_list",
     "slips",
