@@ -54,7 +54,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _cell(v: float | None) -> str:
-    return "-" if v is None else format_number(v)
+    return "–" if v is None else format_number(v)
 
 
 def text(view: ClassView) -> str:
@@ -73,9 +73,9 @@ def text(view: ClassView) -> str:
             str(k),
             g.id,
             members(g),
-            g.step or "-",
+            g.step or "–",
             *(_cell(g.value(q.key)) for q in QUANTITIES),
-            g.cause or "-",
+            g.cause or "–",
             own_cell(g),
         ]
         for k, g in enumerate(view.groups, 1)
@@ -90,7 +90,8 @@ def text(view: ClassView) -> str:
         if not (g.flags or g.lacks):
             continue
         lines.append("")
-        lines.append(f"#{k} {g.id} ({members(g)}, {g.date or 'no date'})")
+        who = f"{members(g)}, {g.date or 'no date'}" if g.readable else "cannot be read"
+        lines.append(f"#{k} {g.id} ({who})")
         lines += [f"  ! {f}" for f in g.flags]
         lines += [f"  - lacks: {x}" for x in g.lacks]
     if not any(g.flags for g in view.groups):

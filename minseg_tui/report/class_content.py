@@ -119,6 +119,18 @@ def _figure(view: ClassView, key: str) -> Figure | None:
     return Figure(svg, 440, caption)
 
 
+def stand_out(view: ClassView) -> Table | None:
+    """What stands out, one row per group that has something (the group named once, its
+    number in the class table beside it), each flag a sentence on a line of its own (one
+    paragraph in Markdown); None when nothing does."""
+    rows = tuple(
+        (str(k), f"{members(g)}\n{g.id}", "\n".join(g.flags))
+        for k, g in enumerate(view.groups, 1)
+        if g.flags
+    )
+    return Table(("#", "group", "what stands out"), rows) if rows else None
+
+
 def build(view: ClassView) -> Report:
     """The class report of ``view``."""
     n = len(view.groups)
@@ -128,14 +140,11 @@ def build(view: ClassView) -> Report:
         "least-squares fit on the encoder angle. 'own vs computed' is how far the group's own "
         "values are from the computed ones. '–': not computed yet (see What is missing)."
     )
-    flags = [
-        f"#{k} {g.id} ({members(g)}): {f}" for k, g in enumerate(view.groups, 1) for f in g.flags
-    ]
     sections.append(
         Section(
             "What stands out",
             [
-                flags or "Nothing stands out.",
+                stand_out(view) or "Nothing stands out.",
                 f"A value stands out when it lies more than {THRESHOLD:g} robust standard "
                 "deviations (1.4826 times the median absolute deviation) from the class "
                 "median: one group's typo moves neither, so it cannot hide another's. The "

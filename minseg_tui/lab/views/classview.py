@@ -291,11 +291,12 @@ def _resistance_slip(R: float) -> Slip:
         (1e3, "the meter on its kΩ range, read as Ω"),
     ):
         if lo <= R * factor <= hi:
-            text = f"{head}: it looks like {R * factor:.4g} Ω with {why}"
+            text = f"{head}: it looks like {R * factor:.4g} Ω with {why}."
             break
     else:
         text = (
-            f"{head}: a meter on the wrong range, a loose motor cable or the current jumper missing"
+            f"{head}: a meter on the wrong range, a loose motor cable or the current jumper "
+            "missing."
         )
     return Slip(text, ("R", *FROM_TABLE))
 
@@ -304,7 +305,11 @@ def slip_list(session: Session) -> list[Slip]:
     """The slips the lab manual warns about in ``session``'s readings, each with the
     quantities that rest on the slipped reading; a refused entry is said too (it feeds
     nothing)."""
-    out = [Slip(f"refused: {e.message}") for e in session.entries.values() if not e.ok]
+    out = [
+        Slip(f"{e.message}; refused, so nothing is computed from it.")
+        for e in session.entries.values()
+        if not e.ok
+    ]
     R = session.value("R")
     if R is not None and not R_RANGE[0] <= R <= R_RANGE[1]:
         out.append(_resistance_slip(R))
@@ -315,7 +320,7 @@ def slip_list(session: Session) -> list[Slip]:
                 Slip(
                     f"i_ss at {lv:g} V = {_num(i * 1e3)} mA is above 100 mA: the manual says "
                     "the wrong thing is measured or the meter is in the wrong mode (expect "
-                    "20-50 mA)",
+                    "20-50 mA).",
                     FROM_TABLE,
                 )
             )
@@ -323,7 +328,7 @@ def slip_list(session: Session) -> list[Slip]:
             out.append(
                 Slip(
                     f"i_ss at {lv:g} V = {_num(i * 1e3)} mA looks like amperes typed into the "
-                    f"mA column ({_num(i * 1e6)} mA?): k_v and f follow from it",
+                    f"mA column ({_num(i * 1e6)} mA?), and k_v and f follow from it.",
                     FROM_TABLE,
                 )
             )
@@ -332,7 +337,7 @@ def slip_list(session: Session) -> list[Slip]:
             out.append(
                 Slip(
                     f"omega_ss at {lv:g} V = {_num(w)} rad/s looks like rpm: this motor does "
-                    f"not turn that fast; read as rpm it is {_num(w * RPM)} rad/s",
+                    f"not turn that fast; read as rpm it is {_num(w * RPM)} rad/s.",
                     FROM_TABLE,
                 )
             )
@@ -341,7 +346,7 @@ def slip_list(session: Session) -> list[Slip]:
             out.append(
                 Slip(
                     f"u_ss at {lv:g} V = {_num(u)} V is above the requested {lv:g} V: the "
-                    "driver only loses voltage, so the meter or the request was wrong",
+                    "driver only loses voltage, so the meter or the request was wrong.",
                     (*FROM_TABLE, "K"),  # K divides by the table's u_ss
                 )
             )
@@ -502,8 +507,8 @@ def outlier(s: Spread, value: float) -> str | None:
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {_num(value)} {unit} is far {side} the class (median {_num(s.median)} "
-        f"{unit}, {times:.0f} robust standard deviations away; beyond {THRESHOLD:g} stands out)"
+        f"{s.key} = {_num(value)} {unit} is far {side} the class: {times:.0f} robust standard "
+        f"deviations from its median of {_num(s.median)} {unit}."
     )
 
 
