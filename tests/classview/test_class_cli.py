@@ -8,6 +8,7 @@ import io
 import json
 import os
 import re
+import shutil
 from pathlib import Path
 
 import pytest
@@ -303,3 +304,12 @@ def test_a_cache_that_cannot_be_written_changes_nothing(tmp_path, capsys, monkey
     monkeypatch.setenv("MINSEG_TUI_CACHE", str(blocker / "cache"))
     code, out, err = _run(capsys, "--sessions", str(root), "--json")
     assert code == 0 and err == "" and json.loads(out)["groups"][0]["members"] == ["A"]
+
+
+def test_a_copied_session_is_named_by_its_own_folder(tmp_path, capsys):
+    root = tmp_path / "s"
+    folder = group(root, ["Ada"], seed=1, run=False)
+    shutil.copytree(folder, root / "ada-copy")  # its file still says the first id
+    _, out, _ = _run(capsys, "--sessions", str(root), "--json")
+    ids = [g["id"] for g in json.loads(out)["groups"]]
+    assert sorted(ids) == sorted([folder.name, "ada-copy"])

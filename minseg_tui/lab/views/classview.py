@@ -464,7 +464,7 @@ def _row(folder: Path, session: Session) -> Group:
         lacks = (f"damaged: {session.damaged}", *lacks)
     found = slip_list(session)
     return Group(
-        id=session.id or folder.name,
+        id=folder.name,
         folder=folder,
         members=tuple(session.members),
         date=session.date,
