@@ -38,6 +38,7 @@ from __future__ import annotations
 import contextlib
 import json
 import re
+import threading
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from datetime import UTC, datetime
@@ -124,6 +125,9 @@ class _Cache:
         """What the session file is to keep of the run in use, stamped with the run version
         and the run's name it was computed at (:meth:`Session.save` writes it while they
         still hold)."""
+        self.kept_lock = threading.Lock()
+        """Held while a part is merged into :attr:`kept` (the results and the model check
+        may be computed by two workers at once: neither part is lost)."""
 
 
 class SessionFrozen(RuntimeError):
@@ -413,8 +417,9 @@ class Session:
             return
         new = Kept(run.name, key, step, None if check is None else check_figures(check))
         stamp = (self._run_version, run.name)
-        got = self._cache.kept
-        self._cache.kept = (stamp, got[1].merged(new) if got and got[0] == stamp else new)
+        with self._cache.kept_lock:
+            got = self._cache.kept
+            self._cache.kept = (stamp, got[1].merged(new) if got and got[0] == stamp else new)
 
     def kept(self) -> Kept | None:
         """What the session file keeps of the run in use (its model check in brief and Tasks
