@@ -19,14 +19,12 @@ from pathlib import Path
 
 from minseg_tui.lab.content.steps import Field
 from minseg_tui.lab.state.results import Comparison, Results
+from minseg_tui.model.identify import U_TASK15
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.quantities import format_number
 
 POLICY_FILE = "lab.toml"
 """The instructor's settings for every session in a sessions folder (beside the sessions)."""
-
-U_TASK15 = 5.0
-"""Task 15's held voltage u_A, V."""
 
 ANSWERED_FIRST: tuple[str, ...] = (
     "own.omega_step",

@@ -19,8 +19,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.kept import CheckFigures, StepFigures
 from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.identify import Identification, Reading, StepResult, identify
-from minseg_tui.model.identify.identification import U_TASK15
+from minseg_tui.model.identify import U_TASK15, Identification, Reading, StepResult, identify
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import format_number

@@ -42,7 +42,7 @@ from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import step_alone
-from minseg_tui.quantities import RPM, format_number
+from minseg_tui.quantities import RPM, format_number, format_reading
 
 
 @dataclass(frozen=True)
@@ -291,7 +291,7 @@ def _resistance_slip(R: float) -> Slip:
         (1e3, "the meter on its kΩ range, read as Ω"),
     ):
         if lo <= R * factor <= hi:
-            text = f"{head}: it looks like {R * factor:.4g} Ω with {why}."
+            text = f"{head}: it looks like {format_reading(R * factor, 'Ω')} with {why}."
             break
     else:
         text = (
