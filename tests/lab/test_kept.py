@@ -160,3 +160,16 @@ def test_a_schema_1_session_from_before_keeps_nothing_until_computed_then_reads_
         got = s.kept()
         assert got is not None and got.step is not None and got.step.K == K
         assert got.check is not None and got.check.cause == "coulomb_friction"
+
+
+def test_a_change_to_the_code_that_computes_them_gives_another_key(computed, monkeypatch):
+    # kept results follow the model check's and identify's code as well as the run: the key
+    # hashes their source, so a new program never reads an old program's numbers as its own
+    names = {p.relative_to(p.parents[2]).as_posix() for p in kept.computing_sources()}
+    assert {"model/check/pipeline.py", "model/identify/identification.py"} <= names
+    with Session.open(computed, readonly=True) as s:
+        run = s.step_run()
+    before = kept.run_key(computed, run, [(2.5, 2.4)])
+    monkeypatch.setattr(kept, "code_fingerprint", lambda: "another program")
+    assert run is not None and before is not None
+    assert kept.run_key(computed, run, [(2.5, 2.4)]) != before

@@ -14,7 +14,8 @@ file (atomically, :mod:`~minseg_tui.lab.saving.store`)::
                        "others": [], "params": {"T": ..., "K": ..., "u_c": ...},
                        "gain": {...}, "problem": ""}}
 
-:func:`run_key` hashes everything these numbers follow from: :data:`VERSION`, the run's
+:func:`run_key` hashes everything these numbers follow from: :data:`VERSION`, the source
+of the code that computes them (:func:`code_fingerprint`), the run's
 log file byte for byte, its kind and sample period, and the table's (u_req, u_ss) pairs
 the applied voltage is mapped through. A reader uses what is kept only when the key it
 computes now is the one kept (:func:`read`): a run, a u_ss or a program that changed gives
@@ -29,6 +30,7 @@ parameters in the units of :data:`minseg_tui.model.check.effects.UNITS`).
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
 from collections.abc import Mapping, Sequence
@@ -39,9 +41,35 @@ from minseg_tui.lab.saving.runs import RunInfo
 from minseg_tui.lab.saving.store import read_regular
 
 VERSION: int = 1
-"""Version of what is kept and of the code that computes it. Raise it whenever the model
-check or identify may give another cause or number for the same log: every kept result of
-an older version is then computed again."""
+"""Version of the shape of what is kept. The code that computes it is keyed apart, by
+:func:`code_fingerprint`, so a changed model check or identify never reuses old results."""
+
+_COMPUTED_BY = ("model", "signals.py")
+"""The package and module of minseg_tui whose code the kept numbers follow from."""
+
+
+def computing_sources() -> list[Path]:
+    """The source files the kept numbers are computed by (:data:`_COMPUTED_BY`), in a fixed
+    order."""
+    root = Path(__file__).resolve().parents[2]
+    out: list[Path] = []
+    for part in _COMPUTED_BY:
+        out += [root / part] if part.endswith(".py") else sorted((root / part).rglob("*.py"))
+    return out
+
+
+@functools.cache
+def code_fingerprint() -> str:
+    """A SHA-256 of :func:`computing_sources`: any change to the model check or identify,
+    even one nobody remembered to mark with a new :data:`VERSION`, gives every run another
+    key. Computed once per process (a few ms: the files are small)."""
+    root = Path(__file__).resolve().parents[2]
+    h = hashlib.sha256()
+    for source in computing_sources():
+        h.update(source.relative_to(root).as_posix().encode() + b"\0")
+        h.update(source.read_bytes())
+    return h.hexdigest()
+
 
 MAX_LOG = 64 << 20
 """A run's log larger than this is not hashed (its results are then never kept)."""
@@ -184,15 +212,15 @@ def from_json(d: object) -> Kept | None:
 
 def run_key(folder: Path, run: RunInfo, table: Sequence[tuple[float, float]]) -> str | None:
     """The key of the results of ``run`` (its log in ``folder``) read through ``table``, the
-    (u_req, u_ss) pairs in V: a SHA-256 of :data:`VERSION`, the log's bytes, the run's kind
-    and sample period and the pairs. None when the log cannot be read (nothing is kept)."""
+    (u_req, u_ss) pairs in V: a SHA-256 of :data:`VERSION`, the code's fingerprint, the
+    log's bytes, the run's kind and sample period and the pairs. None when the log cannot be read (nothing is kept)."""
     try:
         data = read_regular(Path(folder) / run.file, MAX_LOG)
     except OSError:
         return None
     if len(data) > MAX_LOG:
         return None
-    h = hashlib.sha256(f"minseg-tui kept results {VERSION}\0".encode())
+    h = hashlib.sha256(f"minseg-tui kept results {VERSION}\0{code_fingerprint()}\0".encode())
     h.update(f"{run.kind == 'imported'}\0{run.ts!r}\0".encode())
     h.update(repr([(float(a), float(b)) for a, b in table]).encode() + b"\0")
     h.update(len(data).to_bytes(8, "little"))
