@@ -105,7 +105,7 @@ def compare_fields(
     or None; ``res``: the session's results; ``revealed``: fields shown before the group
     answered (said in the comparison)."""
     ident = res.identification
-    st = ident.step if ident is not None else None
+    st = res.step if ident is not None else None
     own_T = value("own.T")
     own_K = value("own.K")
     own_w = value("own.omega_step")
@@ -167,8 +167,8 @@ def compare_fields(
                     why = "The least-squares model uses the fitted T and K."
                     if computed == lsq:
                         lsq, why = None, ""
-            elif fld.key == "own.omega_5" and ident.omega_at_5V is not None:
-                lsq = ident.omega_at_5V
+            elif fld.key == "own.omega_5":
+                lsq = st.K * U_TASK15
                 if own_K is not None:
                     computed = own_K * U_TASK15
                     how = f"5 V × your K = {format_number(own_K)} rad/s/V"
