@@ -16,7 +16,10 @@ For given T and effect parameters the response is proportional to K, which is so
 linear least squares. The other parameters (T on a log scale, each effect's own) are
 started from a coarse grid and polished jointly by Levenberg-Marquardt within their
 ranges (:mod:`.search`); the moving average's length is an integer, scanned cheaply
-(the angle does not depend on it). Rows with weight 0 (wild samples, a hand on the wheel,
+(the angle does not depend on it). Where the side of an extra pole shows (with dry
+friction, a coast or a cap, it matters whether the pole acts on the drive or on the
+measurement) both sides are fitted and the better kept, and a current limit is fitted
+capped while accelerating only and capped both ways. Rows with weight 0 (wild samples, a hand on the wheel,
 held-out steps) do not count: their residual is set to zero before the whitening.
 """
 
@@ -24,7 +27,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -37,7 +40,14 @@ from minseg_tui.model.check.effects import (
     reported,
 )
 from minseg_tui.model.check.search import golden, least_squares
-from minseg_tui.model.check.simulate import Effects, Stretches, measured, pieces, response
+from minseg_tui.model.check.simulate import (
+    Effects,
+    Stretches,
+    angle_at,
+    measured,
+    pieces,
+    response,
+)
 
 FloatArray = NDArray[np.float64]
 
@@ -255,6 +265,8 @@ class Model:
         self.hi = np.array([a.hi for a in self.axes])
         self.step = np.array([a.step for a in self.axes])
         self.taps = 1
+        self.pole_measured = False
+        self.cap_both = False
         self.evaluations = 0
 
     def effects(self, x: FloatArray) -> tuple[float, Effects]:
@@ -264,7 +276,12 @@ class Model:
         }
         if "velocity_filter" in self.causes:
             values["velocity_filter"] = float(self.taps)
-        return T, effects_of(values)
+        fx = effects_of(values)
+        if self.pole_measured and "second_pole" in self.causes:
+            fx = replace(fx, pole_measured=True)
+        if self.cap_both and "current_limit" in self.causes:
+            fx = replace(fx, cap_both=True)
+        return T, fx
 
     def x_of(self, T: float, values: dict[str, float]) -> FloatArray:
         """The vector of T (s) and {cause: Effects field value}."""
@@ -359,8 +376,7 @@ class Model:
         top = max(tries)
         p = self.prob
         tb = p.t[0] - p.ts * np.arange(top, 0, -1)
-        table = pieces(p.st, T, fx, p.z0)
-        theta = table.angle(np.concatenate((tb, p.t)) - fx.delay)
+        theta = angle_at(pieces(p.st, T, fx, p.z0), np.concatenate((tb, p.t)), fx)
         self.evaluations += 1
         best, best_sse = 1, math.inf
         for n in tries:
@@ -393,14 +409,60 @@ def fit_causes(
     max_iter: int = 25,
     scan: bool | None = True,
     polish: tuple[str, ...] = (),
+    pole: bool | None = None,
+    cap: bool | None = None,
 ) -> Fit:
     """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
     ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
     among the causes its length is first scanned in full (``scan`` True), else only around
     the start's (False), or both ways (None). For each cause in ``polish`` the best two
     starts with other values of it are polished too (a cause that does not act at the best
-    start has no gradient to grow by), and the best result kept."""
+    start has no gradient to grow by), and the best result kept.
+
+    ``pole``: the extra pole on the measurement (True) or on the drive (False); None: both
+    when a cause that is not linear (dry friction, a coast, a cap) acts with it, where the
+    side shows, and the better kept. ``cap``: the current limit holds while braking too
+    (True) or only while accelerating (False); None: both tried when it is among the causes."""
+    sides = [bool(pole)]
+    if pole is None and "second_pole" in causes and NONLINEAR & set(causes):
+        sides = [False, True]
+    caps = [bool(cap)]
+    if cap is None and "current_limit" in causes:
+        caps = [False, True]
+    out: Fit | None = None
+    for side in sides:
+        for both in caps:
+            if out is None:
+                f = _fit_side(prob, causes, rng, starts, max_iter, scan, polish, side, both)
+            else:
+                # the other variant from where the first ended (and the best start): the
+                # variants differ only where the wheel stops, coasts or is capped
+                again = [(out.T, values_of(out)), *starts[:1]]
+                f = _fit_side(prob, causes, rng, again, max_iter, False, (), side, both)
+            if out is None or f.sse_white < out.sse_white:
+                out = f
+    assert out is not None
+    return out
+
+
+NONLINEAR = frozenset({"coulomb_friction", "coast_on_zero", "current_limit"})
+"""Causes after which an extra pole on the drive and one on the measurement differ."""
+
+
+def _fit_side(
+    prob: Problem,
+    causes: Sequence[str],
+    rng: dict[str, Range],
+    starts: Sequence[tuple[float, dict[str, float]]],
+    max_iter: int,
+    scan: bool | None,
+    polish: tuple[str, ...],
+    pole_measured: bool,
+    cap_both: bool,
+) -> Fit:
     m = Model(prob, causes, rng)
+    m.pole_measured = pole_measured
+    m.cap_both = cap_both
     scored = []
     for T, values in starts:
         if "velocity_filter" in causes:
@@ -445,7 +507,16 @@ def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fi
     """``f``'s causes fitted again on ``prob`` (other weights), started from ``f``."""
     if not f.causes:
         return fit_baseline_near(prob, rng, f.T)
-    return fit_causes(prob, f.causes, rng, [(f.T, values_of(f))], max_iter, scan=False)
+    return fit_causes(
+        prob,
+        f.causes,
+        rng,
+        [(f.T, values_of(f))],
+        max_iter,
+        scan=False,
+        pole=f.effects.pole_measured,
+        cap=f.effects.cap_both,
+    )
 
 
 def fit_baseline_near(prob: Problem, rng: dict[str, Range], T: float) -> Fit:
@@ -471,6 +542,8 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     """
     m = Model(prob, f.causes, rng)
     m.taps = f.effects.taps
+    m.pole_measured = f.effects.pole_measured
+    m.cap_both = f.effects.cap_both
     x = m.x_of(f.T, values_of(f))
     T, fx = m.effects(x)
     g = m.response(T, fx)
@@ -526,7 +599,7 @@ def _taps_interval(m: Model, x: FloatArray, f: Fit, tol: float) -> tuple[float, 
     hi = int(m.rng["velocity_filter"].hi)
     top = hi
     tb = p.t[0] - p.ts * np.arange(top, 0, -1)
-    theta = pieces(p.st, T, fx, p.z0).angle(np.concatenate((tb, p.t)) - fx.delay)
+    theta = angle_at(pieces(p.st, T, fx, p.z0), np.concatenate((tb, p.t)), fx)
     ok = []
     for n in range(1, hi + 1):
         g = measured(theta[top:], p.t, theta[top - n : top], p.ts, n, p.over_interval)
