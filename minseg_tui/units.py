@@ -91,6 +91,27 @@ def format_number(value: float, digits: int = DIGITS) -> str:
     return f"{rounded:.{decimals}f}"
 
 
+NO_WIDTH = "not determined: the interval has no width"
+"""What an interval whose ends are one number says instead of 'x – x'."""
+
+
+def format_interval(
+    lo: float, hi: float, unit: str = "", digits: int = DIGITS, sep: str = " – "
+) -> str:
+    """A finite interval (lo, hi) in ``unit``: its ends with ``digits`` significant digits,
+    or with as many more as it takes to tell them apart, so that a narrow interval shows its
+    real width ("12.3004 – 12.3012 rad/s/V", never "12.30 – 12.30"); an interval without
+    width (lo == hi) is :data:`NO_WIDTH`."""
+    if not hi > lo:
+        return NO_WIDTH
+    a, b = format_number(lo, digits), format_number(hi, digits)
+    d = digits
+    while a == b and d < 17:
+        d += 1
+        a, b = format_number(lo, d), format_number(hi, d)
+    return f"{a}{sep}{b} {unit}".rstrip()
+
+
 def format_value(value: float | None, unit: str = "", digits: int = DIGITS) -> str:
     """``value`` (already in ``unit``) with ``digits`` significant digits and its unit:
     ``format_value(1.9962, "rad/s/V") == "1.996 rad/s/V"``; '—' for None or not finite."""

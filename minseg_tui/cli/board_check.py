@@ -25,6 +25,7 @@ from minseg_tui.device.boardcheck import (
 )
 from minseg_tui.device.factory import VIRTUAL, open_device
 from minseg_tui.device.link import Link
+from minseg_tui.device.port import not_a_device
 from minseg_tui.device.virtual import wiring_faults
 from minseg_tui.errors import DeviceError, InputError
 
@@ -79,6 +80,9 @@ def _spec(args: argparse.Namespace) -> str:
             spec += "&" + urllib.parse.urlencode({"fault": ",".join(args.fault)})
         return spec
     if args.port:
+        why = not_a_device(str(args.port))
+        if why:
+            raise InputError("--port", None, why)
         return str(args.port)
     found = discovery.find_board()
     if found is None:

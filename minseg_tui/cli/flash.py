@@ -6,7 +6,7 @@ The board is found as the lab assistant finds it (by USB id: a Mega 2560 with a 
 profile's .hex through the board's bootloader (-U flash only: the bootloader stays, so a
 cut-short write is mended by flashing again). Exit 0: written and the board answers with
 this minseg-tui's protocol and the profile written; 2: bad input (an unknown profile, no
-avrdude, a URL for a port); 1: a device problem (no board, not a MinSeg, avrdude failed,
+avrdude, a URL or a file that is not a device for a port); 1: a device problem (no board, not a MinSeg, avrdude failed,
 no answer after the write), each in one line that says what state the board is in.
 """
 
@@ -20,7 +20,7 @@ from pathlib import Path
 from minseg_tui.device import discovery, flashing, hexfile
 from minseg_tui.device import protocol as P
 from minseg_tui.device.link import Link
-from minseg_tui.device.port import lock_path
+from minseg_tui.device.port import lock_path, not_a_device
 from minseg_tui.errors import DeviceError, InputError
 from minseg_tui.lock import FileLock, LockHeld
 
@@ -87,6 +87,9 @@ def _port(requested: str | None, force: bool) -> str:
             f"expected the board's serial device (/dev/ttyACM0, /dev/ttyUSB0, COM3), got the "
             f"URL {requested!r}: avrdude writes to real boards only",
         )
+    why = not_a_device(requested)
+    if why:
+        raise InputError("--port", None, f"{why}; nothing was written")
     real = os.path.realpath(requested)
     listed = {os.path.realpath(c.device): c for c in discovery.candidates()}
     cand = listed.get(real)

@@ -11,7 +11,7 @@ from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify
-from minseg_tui.units import NUMBER
+from minseg_tui.units import NO_WIDTH, NUMBER, format_interval
 
 
 def _ohms(text: str) -> float:
@@ -117,7 +117,9 @@ def render(result: Identification) -> str:
         )
         fit = s.fit
         interval = (
-            f"95 % interval {s.T_ci[0] * 1e3:.2f} to {s.T_ci[1] * 1e3:.2f} ms"
+            f"95 % interval {format_interval(s.T_ci[0] * 1e3, s.T_ci[1] * 1e3, 'ms', sep=' to ')}"
+            if s.T_determined and s.T_ci[1] > s.T_ci[0]
+            else f"95 % interval: {NO_WIDTH}"
             if s.T_determined
             else "95 % interval: not determined by this log"
         )
@@ -139,6 +141,8 @@ def render(result: Identification) -> str:
             f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V "
             + (
                 f"+- {_g((s.K_ci[1] - s.K_ci[0]) / 2, 2)} (95 %, Task 11)"
+                if s.K_determined and s.K_ci[1] > s.K_ci[0]
+                else f"(95 % interval: {NO_WIDTH}; Task 11)"
                 if s.K_determined
                 else "(95 % interval: not determined by this log; Task 11)"
             ),

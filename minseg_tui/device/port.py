@@ -17,9 +17,11 @@ device: no lock file, no tty; its handler lets one link attach to a board at a t
 from __future__ import annotations
 
 import contextlib
+import errno
 import fcntl
 import os
 import re
+import stat
 import tempfile
 import termios
 from dataclasses import dataclass
@@ -55,6 +57,59 @@ def _exclusive_tty(ser: Any, on: bool) -> None:
         return
     with contextlib.suppress(OSError):
         fcntl.ioctl(fd, request)
+
+
+PORTS_HINT = "`minseg-tui ports` lists the serial ports"
+
+
+def not_a_device(port: str) -> str | None:
+    """Why ``port`` cannot be a serial port when it names a file that is not a device (a
+    regular file, a folder), one line; None for a device, a URL or a path that does not
+    exist (that is the board not plugged in, said when it fails to open)."""
+    if "://" in port or os.name != "posix":
+        return None
+    try:
+        mode = os.stat(port).st_mode
+    except OSError:
+        return None
+    if stat.S_ISCHR(mode):
+        return None
+    kind = (
+        "a folder"
+        if stat.S_ISDIR(mode)
+        else "a regular file"
+        if stat.S_ISREG(mode)
+        else "no device"
+    )
+    return (
+        f"expected the board's serial port (a device such as /dev/ttyACM0 or /dev/ttyUSB0), "
+        f"got {port}, {kind}; {PORTS_HINT}"
+    )
+
+
+def _errno(exc: BaseException) -> int | None:
+    """The OS error number behind a pyserial or OS error (pyserial puts some in its text)."""
+    n = getattr(exc, "errno", None)
+    if isinstance(n, int):
+        return n
+    m = re.search(r"\[Errno (\d+)\]|\((\d+), '", str(exc))
+    return int(m.group(1) or m.group(2)) if m else None
+
+
+def _why(port: str, exc: BaseException) -> str:
+    """One line of our own words for a port that did not open (never pyserial's text)."""
+    n = _errno(exc)
+    if n == errno.ENOENT:
+        return f"{port}: no such port (is the board plugged in? {PORTS_HINT})"
+    if n in (errno.EACCES, errno.EPERM):
+        return (
+            f"{port}: not allowed to open it; on Linux add yourself to the dialout group "
+            "(sudo usermod -aG dialout $USER) and log in again"
+        )
+    if n in (errno.ENOTTY, errno.EISDIR, errno.ENXIO, errno.ENODEV):
+        return f"{port} is not a serial port that answers (a device such as /dev/ttyACM0); {PORTS_HINT}"
+    reason = os.strerror(n) if n is not None else "the system refused it"
+    return f"cannot open {port} ({reason}); {PORTS_HINT}"
 
 
 @dataclass
@@ -93,11 +148,11 @@ def open_exclusive(port: str, baud: int, program: str = "minseg-tui") -> OpenPor
                 f"{port} is in use by another program: close that program first "
                 "(one program per board)"
             ) from None
-        raise DeviceError(f"cannot open {port}: {text}") from None
+        raise DeviceError(_why(port, exc)) from None
     except (OSError, ValueError) as exc:
         if lock is not None:
             lock.release()
-        raise DeviceError(f"cannot open {port}: {exc}") from None
+        raise DeviceError(_why(port, exc)) from None
     _exclusive_tty(ser, True)
     return OpenPort(ser, lock)
 
@@ -111,4 +166,4 @@ def close(opened: OpenPort) -> None:
         opened.lock.release()
 
 
-__all__ = ["OpenPort", "close", "lock_path", "open_exclusive"]
+__all__ = ["OpenPort", "close", "lock_path", "not_a_device", "open_exclusive"]

@@ -97,6 +97,7 @@ def _to_json(g: Group) -> dict[str, object]:
         "damaged": g.damaged,
         "readable": g.readable,
         "flags": list(g.flags),
+        "slipped": list(g.slipped),
     }
 
 
@@ -125,6 +126,7 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
         damaged=None if d["damaged"] is None else str(d["damaged"]),
         readable=bool(d["readable"]),
         flags=_texts(d["flags"]),
+        slipped=_texts(d["slipped"]),
     )
 
 

@@ -3,7 +3,9 @@
 :func:`build` opens every session under a folder read-only (:meth:`Session.open` with
 ``readonly=True``: no lock taken, nothing written) and takes its numbers from the session
 itself: :meth:`Session.results` (Tasks 6-15, the same numbers ``minseg-tui report``
-writes), :meth:`Session.model_check` and :meth:`Session.comparisons`. Nothing here
+writes), :meth:`Session.model_check` and :meth:`Session.comparisons`; only K, T and the
+63 % reading of a session whose table lacks an i_ss (or R) are taken from its step run
+here (:func:`~minseg_tui.model.identify.step_alone`), since they need neither. Nothing here
 computes a motor parameter a second time; it only sets the groups side by side and says,
 in words, what stands out:
 
@@ -28,10 +30,12 @@ from pathlib import Path
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab import steps as lab_steps
+from minseg_tui.lab.files import read_step_log
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import LEVELS
 from minseg_tui.lab.store import SESSION_FILE, SessionsUnreadable
 from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.identify import step_alone
 from minseg_tui.units import RPM, format_number
 
 
@@ -102,6 +106,21 @@ OMEGA_MAX: float = 15.0
 OMEGA_MIN: float = 0.5
 """Below this the wheel hardly turns, rad/s."""
 
+FROM_TABLE: tuple[str, ...] = ("k_v", "k_a", "f", "J")
+"""The quantities computed from the table's rows (and R): k_v = (u_ss - R i_ss) / omega_ss,
+k_a = 0.65 k_v, f = k_a i_ss / omega_ss, and J from them with T."""
+
+
+@dataclass(frozen=True)
+class Slip:
+    """One of the manual's slips in a group's readings: the sentence that says it, and the
+    quantities of :data:`QUANTITIES` whose value rests on the slipped reading (they are left
+    out of the class's median and MAD, so that a slip cannot move the yardstick the other
+    groups are judged by)."""
+
+    text: str
+    affects: tuple[str, ...] = ()
+
 
 @dataclass(frozen=True)
 class Own:
@@ -127,7 +146,8 @@ class Group:
     the computed ones; ``lacks`` what keeps a result from being computed (one sentence
     each); ``damaged`` why the file is damaged or cannot be read (None when it is sound);
     ``readable`` False when nothing of the session could be read; ``flags`` what stands
-    out, one sentence each."""
+    out, one sentence each; ``slipped`` the keys of the values that rest on one of the
+    manual's slips (:class:`Slip`): left out of the class's median and MAD."""
 
     id: str
     folder: Path
@@ -142,6 +162,7 @@ class Group:
     damaged: str | None = None
     readable: bool = True
     flags: tuple[str, ...] = ()
+    slipped: tuple[str, ...] = ()
 
     def value(self, key: str) -> float | None:
         """The value of ``key`` (SI), None when not computed or not finite."""
@@ -172,6 +193,7 @@ class Group:
         out["lacks"] = list(self.lacks)
         out["damaged"] = self.damaged
         out["flags"] = list(self.flags)
+        out["left_out_of_class"] = [q.key for q in QUANTITIES if q.key in self.slipped]
         return out
 
 
@@ -236,40 +258,78 @@ def _unit(key: str) -> str:
     return next(q.unit for q in QUANTITIES if q.key == key)
 
 
-def slips(session: Session) -> list[str]:
-    """The slips the lab manual warns about in ``session``'s readings, one sentence each."""
-    out = [f"refused: {e.message}" for e in session.entries.values() if not e.ok]
+def _resistance_slip(R: float) -> Slip:
+    """The sentence for an R outside :data:`R_RANGE`: a decimal point dropped or misplaced,
+    or a reading in kΩ, when R moved by a power of ten falls in the range; else the usual
+    causes."""
+    lo, hi = R_RANGE
+    head = f"R = {_num(R)} Ω is outside the 3-6 Ω this motor reads (Task 2)"
+    for factor, why in (
+        (0.1, "its decimal point dropped"),
+        (10.0, "its decimal point one place too far left"),
+        (1e3, "the meter on its kΩ range, read as Ω"),
+    ):
+        if lo <= R * factor <= hi:
+            text = f"{head}: it looks like {R * factor:.4g} Ω with {why}"
+            break
+    else:
+        text = (
+            f"{head}: a meter on the wrong range, a loose motor cable or the current jumper missing"
+        )
+    return Slip(text, ("R", *FROM_TABLE))
+
+
+def slip_list(session: Session) -> list[Slip]:
+    """The slips the lab manual warns about in ``session``'s readings, each with the
+    quantities that rest on the slipped reading; a refused entry is said too (it feeds
+    nothing)."""
+    out = [Slip(f"refused: {e.message}") for e in session.entries.values() if not e.ok]
     R = session.value("R")
     if R is not None and not R_RANGE[0] <= R <= R_RANGE[1]:
-        out.append(
-            f"R = {_num(R)} Ω is outside the 3-6 Ω this motor reads (Task 2): a meter on the "
-            "wrong range, a loose motor cable or the current jumper missing"
-        )
+        out.append(_resistance_slip(R))
     for lv in LEVELS:
         i = session.value(f"i_ss@{lv:g}")
         if i is not None and i > I_SS_MAX:
             out.append(
-                f"i_ss at {lv:g} V = {_num(i * 1e3)} mA is above 100 mA: the manual says the "
-                "wrong thing is measured or the meter is in the wrong mode (expect 20-50 mA)"
+                Slip(
+                    f"i_ss at {lv:g} V = {_num(i * 1e3)} mA is above 100 mA: the manual says "
+                    "the wrong thing is measured or the meter is in the wrong mode (expect "
+                    "20-50 mA)",
+                    FROM_TABLE,
+                )
             )
         elif i is not None and 0 < i < I_SS_AMPERES:
             out.append(
-                f"i_ss at {lv:g} V = {_num(i * 1e3)} mA looks like amperes typed into the mA "
-                f"column ({_num(i * 1e6)} mA?): k_v and f follow from it"
+                Slip(
+                    f"i_ss at {lv:g} V = {_num(i * 1e3)} mA looks like amperes typed into the "
+                    f"mA column ({_num(i * 1e6)} mA?): k_v and f follow from it",
+                    FROM_TABLE,
+                )
             )
         w = session.value(f"omega_ss@{lv:g}")
         if w is not None and abs(w) > OMEGA_MAX and OMEGA_MIN <= abs(w) * RPM <= OMEGA_MAX:
             out.append(
-                f"omega_ss at {lv:g} V = {_num(w)} rad/s looks like rpm: this motor does not "
-                f"turn that fast; read as rpm it is {_num(w * RPM)} rad/s"
+                Slip(
+                    f"omega_ss at {lv:g} V = {_num(w)} rad/s looks like rpm: this motor does "
+                    f"not turn that fast; read as rpm it is {_num(w * RPM)} rad/s",
+                    FROM_TABLE,
+                )
             )
         u = session.value(f"u_ss@{lv:g}")
         if u is not None and u > lv:
             out.append(
-                f"u_ss at {lv:g} V = {_num(u)} V is above the requested {lv:g} V: the driver "
-                "only loses voltage, so the meter or the request was wrong"
+                Slip(
+                    f"u_ss at {lv:g} V = {_num(u)} V is above the requested {lv:g} V: the "
+                    "driver only loses voltage, so the meter or the request was wrong",
+                    (*FROM_TABLE, "K"),  # K divides by the table's u_ss
+                )
             )
     return out
+
+
+def slips(session: Session) -> list[str]:
+    """The slips the lab manual warns about in ``session``'s readings, one sentence each."""
+    return [s.text for s in slip_list(session)]
 
 
 def _values(session: Session) -> tuple[dict[str, float | None], tuple[str, ...]]:
@@ -289,7 +349,24 @@ def _values(session: Session) -> tuple[dict[str, float | None], tuple[str, ...]]
     lacks = list(res.problems)
     if not session.runs:
         lacks.append("no step run recorded yet (Task 10)")
+    elif ident is None:
+        values.update(_step_alone(session))
     return values, tuple(dict.fromkeys(lacks))
+
+
+def _step_alone(session: Session) -> dict[str, float | None]:
+    """K, T and T_63 from the session's step run and its table's u_ss alone, for a session
+    whose table is not complete enough for Tasks 6-9 (an i_ss or R missing): they need
+    neither. Empty when the run cannot give them (the lacks already say why)."""
+    run = session.step_run()
+    pairs = session.table_pairs()
+    if run is None or not pairs:
+        return {}
+    try:
+        st = step_alone(read_step_log(session.folder / run.file), pairs)
+    except InputError:
+        return {}
+    return {"K": st.K, "T_63": st.T_63, "T": st.T}
 
 
 def read_group(folder: Path) -> Group:
@@ -320,6 +397,7 @@ def read_group(folder: Path) -> Group:
         lacks = (f"its numbers cannot be computed: {exc}",)
     if session.damaged:
         lacks = (f"damaged: {session.damaged}", *lacks)
+    found = slip_list(session)
     own = tuple(
         Own(c.key, c.label, c.unit, c.own, c.computed, c.rel_diff)
         for c in session.comparisons()
@@ -337,7 +415,8 @@ def read_group(folder: Path) -> Group:
         own=own,
         lacks=lacks,
         damaged=session.damaged,
-        flags=tuple(slips(session)),
+        flags=tuple(s.text for s in found),
+        slipped=tuple(q.key for q in QUANTITIES if any(q.key in s.affects for s in found)),
     )
 
 
@@ -375,10 +454,11 @@ def outlier(s: Spread, value: float) -> str | None:
 
 def judge(groups: Sequence[Group]) -> ClassView:
     """The class view of ``groups``: their spreads and each group's outlier sentences
-    appended to its flags."""
+    appended to its flags. A value that rests on one of the manual's slips (``slipped``)
+    is left out of the spread: it is judged against the class, never part of it."""
     spreads: dict[str, Spread] = {}
     for key in JUDGED:
-        vals = [v for g in groups if (v := g.value(key)) is not None]
+        vals = [v for g in groups if key not in g.slipped and (v := g.value(key)) is not None]
         s = spread(key, vals)
         if s is not None:
             spreads[key] = s
@@ -435,11 +515,13 @@ __all__ = [
     "Group",
     "Own",
     "Quantity",
+    "Slip",
     "Spread",
     "judge",
     "outlier",
     "read_group",
     "session_folders",
+    "slip_list",
     "slips",
     "spread",
     "step_name",

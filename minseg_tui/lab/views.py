@@ -34,7 +34,7 @@ from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.units import DIGITS, format_number, format_value
+from minseg_tui.units import DIGITS, format_interval, format_number, format_value
 
 FloatArray = NDArray[np.float64]
 
@@ -78,7 +78,7 @@ def _ci(ci: tuple[float, float], unit: str) -> str:
     lo, hi = ci
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return ""
-    return f", 95 % CI {_num(lo)}..{_num(hi)} {unit}"
+    return f", 95 % CI {format_interval(lo, hi, unit, sep='..')}"
 
 
 # -- Task 4: the live stream ------------------------------------------------------------------

@@ -148,7 +148,9 @@ def build(view: ClassView) -> Report:
                 f"A value stands out when it lies more than {THRESHOLD:g} robust standard "
                 "deviations (1.4826 times the median absolute deviation) from the class "
                 "median: one group's typo moves neither, so it cannot hide another's. The "
-                "slips the lab manual warns about are named on their own.",
+                "slips the lab manual warns about are named on their own, and the values "
+                "that rest on a slipped reading are left out of the class median and its "
+                "spread (they are still judged against them).",
             ],
         )
     )
@@ -179,6 +181,7 @@ def build(view: ClassView) -> Report:
         title="DC-motor lab: the class at a glance",
         byline=f"{n} group{'s' if n != 1 else ''} in {view.root}",
         sections=sections,
+        landscape=True,  # seventeen columns do not fit a portrait page
     )
 
 

@@ -24,7 +24,7 @@ from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import RisingStep, StepResult
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
-from minseg_tui.units import DIGITS, format_number
+from minseg_tui.units import DIGITS, format_interval, format_number
 
 
 @dataclass(frozen=True)
@@ -63,11 +63,13 @@ class Section:
 
 @dataclass
 class Report:
-    """The whole report: title, a line of who/when, and sections."""
+    """The whole report: title, a line of who/when, and sections; ``landscape``: printed
+    on landscape pages (a table too wide for a portrait one)."""
 
     title: str
     byline: str
     sections: list[Section]
+    landscape: bool = False
 
 
 def _q(value: float | None, unit: str, digits: int = DIGITS) -> str:
@@ -193,7 +195,7 @@ _UNDETERMINED = "not determined by this log"
 def _interval(lo: float, hi: float, unit: str) -> str:
     """A 95 % interval; a side the log does not bound is said (the check gives +-inf)."""
     if math.isfinite(lo) and math.isfinite(hi):
-        return f"{_num(lo)} – {_num(hi)} {unit}"
+        return format_interval(lo, hi, unit)
     if math.isfinite(lo):
         return f"{_num(lo)} {unit} or more: no upper bound from this log"
     if math.isfinite(hi):
@@ -357,16 +359,30 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     )
 
 
+def _where(key: str) -> str | None:
+    """Where an entry stands, in the lab's words ("Task 4, omega_ss at 2.5 V"); None for a
+    key that is no entry (a finding's code: its sentence says what it is about)."""
+    for st in lab_steps.STEPS:
+        for fld in st.fields:
+            if fld.key == key:
+                return f"{st.title.split(':')[0]}, {fld.label}"
+    return None
+
+
 def _warnings_section(session: Session) -> Section:
     res = session.results()
-    items = [f"{n.source}: {n.message}" for n in session.warnings()]
+    items = [
+        f"{where}: {n.message}" if (where := _where(n.source)) else n.message
+        for n in session.warnings()
+    ]
     items += [
-        f"refused entry {e.key}: {e.text!r} — {e.message}"
+        f"refused entry {_where(e.key) or e.key}: {e.text!r} — {e.message}"
         for e in session.entries.values()
         if not e.ok
     ]
     items += [
-        f"refused entry {e.key}: {e.refused[0]!r} — {e.refused[1]} (still using {e.text!r})"
+        f"refused entry {_where(e.key) or e.key}: {e.refused[0]!r} — {e.refused[1]} (still "
+        f"using {e.text!r})"
         for e in session.entries.values()
         if e.refused
     ]
@@ -617,13 +633,9 @@ def _model_check_section(session: Session) -> Section | None:
         f"{_num(b.fit_percent, 3)} %).",
         *_two_fits(session, mc.run, b.params),
         f"Where it deviates: {r.where}.",
-        f"Most likely cause: {in_words(f.cause)} ({f.cause}). "
-        f"{f.evidence[:1].upper() + f.evidence[1:]}",
+        f"Most likely cause: {in_words(f.cause)}. {f.evidence[:1].upper() + f.evidence[1:]}",
     ]
-    items += [
-        f"Also: {in_words(o.cause)} ({o.cause}; {_params(o.params)}): {o.evidence}"
-        for o in f.others
-    ]
+    items += [f"Also: {in_words(o.cause)} ({_params(o.params)}): {o.evidence}" for o in f.others]
     if named:
         items.append(
             f"Extended model ({in_words(e.model)}): {_params(e.params, e.intervals)}; "

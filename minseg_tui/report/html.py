@@ -36,6 +36,13 @@ figure svg { display: block; width: 100%; height: auto; }
 """
 
 
+_LANDSCAPE = """
+@page { size: A4 landscape; margin: 12mm; }
+@media print { figure { flex: 1 1 40% !important; max-width: 48% !important; } }
+"""
+"""For a report with a wide table: landscape pages, and two figures side by side."""
+
+
 def _table(t: Table) -> str:
     head = "".join(f"<th>{escape(h)}</th>" for h in t.header)
     rows = "".join(
@@ -61,7 +68,9 @@ def render(report: Report) -> str:
     out = [
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8">',
-        f"<title>{escape(report.title)}</title><style>{_CSS}</style></head><body>",
+        f"<title>{escape(report.title)}</title><style>{_CSS}"
+        + (_LANDSCAPE if report.landscape else "")
+        + "</style></head><body>",
         f"<h1>{escape(report.title)}</h1>",
         f'<p class="byline">{escape(report.byline)}</p>',
     ]

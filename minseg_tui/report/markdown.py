@@ -1,14 +1,42 @@
-"""A :class:`~minseg_tui.report.content.Report` as Markdown (figures as inline SVG data URIs)."""
+"""A :class:`~minseg_tui.report.content.Report` as Markdown (figures as inline SVG data URIs).
+
+Every text is escaped (:func:`escape`): names, answers and notes a group typed are shown
+as typed, never read as Markdown ("*x* | y" in a name neither turns italic nor splits a
+table row; "# ..." at the start of an answer is no heading)."""
 
 from __future__ import annotations
 
 import base64
+import re
 
 from minseg_tui.report.content import Figure, Figures, Report, Table
 
+_INLINE = re.compile(
+    r"[\\`*\[\]|~]"  # emphasis, code, links and images, table cells, strikethrough
+    r"|(?<![A-Za-z0-9])_|_(?![A-Za-z0-9])"  # '_' that can open or close emphasis (k_v cannot)
+    r"|<(?=[A-Za-z/!?])"  # an HTML tag or an autolink
+    r"|&(?=[A-Za-z#])"  # an entity
+)
+_BLOCK = re.compile(r"^[#>+=-]")
+"""A mark that makes a line a heading, a quote, a list item or a setext underline."""
+
+_ORDERED = re.compile(r"^(\d{1,9})([.)])(?=\s|$)")
+"""A number that makes a line an ordered list's item ("1. ", "2) ")."""
+
+
+def escape(text: str) -> str:
+    """``text`` with every character that Markdown would read as markup backslash-escaped,
+    on each line (leading spaces dropped: four would make a code block)."""
+    out = []
+    for line in text.split("\n"):
+        line = _INLINE.sub(lambda m: "\\" + m.group(0), line.lstrip())
+        line = _BLOCK.sub(lambda m: "\\" + m.group(0), line)
+        out.append(_ORDERED.sub(r"\1\\\2", line))
+    return "\n".join(out)
+
 
 def _cell(text: str) -> str:
-    return text.replace("|", "\\|").replace("\n", " ")
+    return escape(text.replace("\n", " "))
 
 
 def _table(t: Table) -> str:
@@ -19,18 +47,19 @@ def _table(t: Table) -> str:
 
 def _figure(f: Figure) -> str:
     data = base64.b64encode(f.svg.encode("utf-8")).decode("ascii")
-    return f"![{_alt(f.caption)}](data:image/svg+xml;base64,{data})\n\n*{f.caption}*"
+    caption = _cell(f.caption)
+    return f"![{caption}](data:image/svg+xml;base64,{data})\n\n*{caption}*"
 
 
-def _alt(text: str) -> str:
-    return text.replace("[", "(").replace("]", ")")
+def _heading(text: str) -> str:
+    return _cell(text).replace("#", "\\#")
 
 
 def render(report: Report) -> str:
     """The report as one Markdown document."""
-    out = [f"# {report.title}", "", report.byline, ""]
+    out = [f"# {_heading(report.title)}", "", escape(report.byline), ""]
     for sec in report.sections:
-        out += [f"## {sec.title}", ""]
+        out += [f"## {_heading(sec.title)}", ""]
         for b in sec.blocks:
             if isinstance(b, Table):
                 out.append(_table(b))
@@ -41,6 +70,6 @@ def render(report: Report) -> str:
             elif isinstance(b, list):
                 out.append("\n".join(f"- {_cell(str(i))}" for i in b))
             else:
-                out.append(str(b))
+                out.append(escape(str(b)))
             out.append("")
     return "\n".join(out)

@@ -83,7 +83,8 @@ def test_json_one_row_per_group_numbers_are_the_sessions_own(klass, capsys):
 
 def test_slips_and_far_values_are_said_in_words(klass, capsys):
     _, out, _ = _run(capsys, "--sessions", str(klass), "--json")
-    g = _by_members(json.loads(out))
+    doc = json.loads(out)
+    g = _by_members(doc)
     flags = " / ".join(g["Rpm Man"]["flags"])
     assert "R = 12.00 Ω is outside the 3-6 Ω" in flags
     assert "omega_ss at 4.5 V = 74.30 rad/s looks like rpm" in flags and "7.781 rad/s" in flags
@@ -93,6 +94,32 @@ def test_slips_and_far_values_are_said_in_words(klass, capsys):
     amp = " / ".join(g["Amp Ere"]["flags"])
     assert "i_ss at 2.5 V = 0.02980 mA looks like amperes" in amp
     assert "f = " in amp and "far below the class" in amp  # f rests on that current
+    # what rests on a slip is judged, never part of the class's median and MAD
+    assert g["Rpm Man"]["left_out_of_class"] == ["R", "k_v", "k_a", "f", "K", "J"]
+    assert g["Amp Ere"]["left_out_of_class"] == ["k_v", "k_a", "f", "J"]
+    assert g["Ada 0 Bo 0"]["left_out_of_class"] == []
+    spreads = doc["class"]
+    assert spreads["R"]["n"] == NORMAL + 2  # Amp Ere's and Late Comer's R count
+    assert spreads["k_v"]["n"] == NORMAL + 1 and spreads["K"]["n"] == NORMAL + 1
+    assert spreads["T"]["n"] == NORMAL + 2  # T rests on none of these readings
+
+
+def test_a_dropped_decimal_point_in_R_is_named(tmp_path, capsys):
+    root = tmp_path / "s"
+    for k in range(4):
+        group(root, [f"G{k}"], seed=k, run=False)
+    group(root, ["Dot"], seed=9, R="53", run=False)
+    group(root, ["Kilo"], seed=10, R="0.0052", run=False)
+    code, out, _ = _run(capsys, "--sessions", str(root), "--json")
+    doc = json.loads(out)
+    g = _by_members(doc)
+    assert code == 0
+    assert g["Dot"]["flags"][0] == (
+        "R = 53.00 Ω is outside the 3-6 Ω this motor reads (Task 2): it looks like 5.3 Ω "
+        "with its decimal point dropped"
+    )
+    assert "looks like 5.2 Ω with the meter on its kΩ range" in g["Kilo"]["flags"][0]
+    assert doc["class"]["R"]["n"] == 4 and doc["class"]["k_v"]["n"] == 4
 
 
 def test_unfinished_and_damaged_are_listed_with_what_they_lack(klass, capsys):
@@ -129,6 +156,9 @@ def test_out_writes_markdown_html_and_csv(klass, tmp_path, capsys):
     assert page.count("<figure") == 7  # R, k_v, f, K, T_63, T, J
     assert not re.search(r"""(src|href)=["']?(https?:|//)""", page) and "<script" not in page
     assert "@media print" in page and "Nothing stands out" not in page
+    # seventeen columns: printed on landscape pages (on portrait ones the flags column was
+    # cut at the page's edge and each group id took five lines), two figures to a row
+    assert "@page { size: A4 landscape;" in page and "max-width: 48% !important" in page
     md = (out_dir / "class.md").read_text(encoding="utf-8")
     assert md.count("data:image/svg+xml;base64,") == 7 and "## What stands out" in md
     rows = list(csv.DictReader(io.StringIO((out_dir / "class.csv").read_text(encoding="utf-8"))))

@@ -3,10 +3,20 @@
 from __future__ import annotations
 
 import statistics
+from pathlib import Path
 
 import numpy as np
+import pytest
 
-from minseg_tui.lab.classview import MIN_GROUPS, THRESHOLD, outlier, spread, step_name
+from minseg_tui.lab.classview import (
+    MIN_GROUPS,
+    THRESHOLD,
+    Group,
+    judge,
+    outlier,
+    spread,
+    step_name,
+)
 
 
 def test_two_typos_are_both_found_where_mean_and_std_miss_one():
@@ -46,3 +56,24 @@ def test_steps_are_named_as_the_lab_names_them():
     assert (
         step_name("prep3") == "Preparation 3" and step_name("summary") == "Summary and reflections"
     )
+
+
+def _row(k: int, R: float, slipped: tuple[str, ...] = ()) -> Group:
+    return Group(f"g{k}", Path(f"g{k}"), values={"R": R}, slipped=slipped)
+
+
+def test_a_slipped_value_is_judged_but_never_moves_the_class_median_or_mad():
+    honest = [5.2, 5.2, 5.2, 5.2, 5.21, 5.19]
+    near = 5.8  # read on a warm motor, or a poor contact: 0.6 Ω from the rest
+    typos = [52.0, 0.53, 12.0, 31.0, 1.4]  # the manual's slips, each flagged on its own
+    groups = [_row(k, R) for k, R in enumerate([*honest, near])]
+    groups += [_row(10 + k, R, slipped=("R",)) for k, R in enumerate(typos)]
+    view = judge(groups)
+    s = view.spreads["R"]
+    assert s.n == len(honest) + 1 and s.median == pytest.approx(5.2)
+    flagged = {g.id: g.flags for g in view.groups}
+    assert flagged["g6"] and "far above the class" in flagged["g6"][0]
+    assert all(flagged[f"g{10 + k}"] for k in range(len(typos)))  # still judged
+    # had the typos fed the MAD, the spread would have hidden the group at 5.8 Ω
+    wide = spread("R", [*honest, near, *typos])
+    assert wide is not None and outlier(wide, near) is None

@@ -195,6 +195,24 @@ def test_command_on_a_port_that_is_no_board_is_one_line_exit_1(capsys, tmp_path)
     assert err.count("\n") == 1 and err.startswith("minseg-tui board-check: ")
 
 
+def test_a_port_that_does_not_exist_is_said_in_our_words(capsys, tmp_path):
+    assert main(["board-check", "--port", "/dev/nonexistent"]) == 1
+    err = capsys.readouterr().err
+    assert err == (
+        "minseg-tui board-check: /dev/nonexistent: no such port (is the board plugged in? "
+        "`minseg-tui ports` lists the serial ports)\n"
+    )
+
+
+def test_a_file_that_is_not_a_device_is_bad_input(capsys, tmp_path):
+    regular = tmp_path / "ttyUSB0"
+    regular.write_text("", encoding="utf-8")
+    assert main(["board-check", "--port", str(regular)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"got {regular}, a regular file" in err
+    assert "Errno" not in err and "could not" not in err
+
+
 def test_hand_check_without_a_hand_says_nothing_was_counted(capsys):
     assert main(["board-check", "--sim", "--turn", "--turn-seconds", "0.3", "--json"]) == 1
     out = json.loads(capsys.readouterr().out)

@@ -259,6 +259,20 @@ def test_no_such_port_and_no_board(avrdude, tmp_path, capsys, monkeypatch):
     assert not avrdude.exists()
 
 
+@pytest.mark.parametrize("dry_run", [True, False])
+def test_a_file_that_is_not_a_device_is_no_port(avrdude, tmp_path, capsys, dry_run):
+    regular = tmp_path / "ttyACM0"
+    regular.write_text("", encoding="utf-8")
+    for port, kind in ((regular, "a regular file"), (tmp_path, "a folder")):
+        argv = ["--port", str(port), *(["--dry-run"] if dry_run else [])]
+        assert flash(*argv) == 2
+        out, err = capsys.readouterr()
+        assert out == "" and err.count("\n") == 1
+        assert err.startswith("minseg-tui flash: --port: expected the board's serial port")
+        assert f"got {port}, {kind}" in err and "nothing was written" in err
+    assert not avrdude.exists() and regular.read_text(encoding="utf-8") == ""
+
+
 def test_no_bootloader_answers(board, avrdude, capsys, monkeypatch):
     monkeypatch.setenv("FAKE_AVRDUDE_MODE", "nosync")
     assert flash("--port", board.path) == 1

@@ -127,7 +127,8 @@ def test_report_files_hold_the_sessions_values(tmp_path):
     assert format_value(ident.step.K, "rad/s/V") in md and format_value(
         ident.step.T, "s"
     ) in unescape(html).replace("\u00a0", " ")
-    assert "T_short" in md  # identify's findings land in the warnings
+    # identify's findings land in the warnings, in words (not by their code, T_short)
+    assert "is shorter than 3 sample periods" in md and "T_short" not in md
 
 
 def test_html_is_self_contained(tmp_path):
@@ -206,7 +207,7 @@ def test_refused_entries_are_listed(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:
         s.enter("i_ss@2.5", "4.7 V")
         md = write_report(s).markdown.read_text(encoding="utf-8")
-    assert "refused entry i_ss@2.5: '4.7 V'" in md
+    assert "refused entry Task 5, i_ss at 2.5 V: '4.7 V'" in md
 
 
 def test_svg_ticks_and_thinning():

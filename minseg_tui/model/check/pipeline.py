@@ -843,6 +843,7 @@ def _runner_up(sel: Selection, ext: Fit, full: Problem) -> tuple[str | None, str
         return None, ""
     best = min(pool, key=lambda f: f.sse_white)
     name = best.name
+    said = in_words(name)  # the sentence names it in words, never by its contract name
     new = [c for c in best.causes if c not in ext.causes]
     reason = next((sel.left_out[c] for c in new if c in sel.left_out), None)
     if best.sse_white < ext.sse_white:
@@ -851,18 +852,18 @@ def _runner_up(sel: Selection, ext: Fit, full: Problem) -> tuple[str | None, str
         b_rms = _rmse_kept(full.y, best.predict(full), keep)
         if b_rms > e_rms:
             return name, (
-                f"the next best explanation ({name}) leaves less whitened residual, but its "
+                f"the next best explanation ({said}) leaves less whitened residual, but its "
                 f"simulated speed misses the measured speed by more (rmse {b_rms:.3g} rad/s "
                 f"against {e_rms:.3g} rad/s)" + (f", and {reason}" if reason else "")
             )
         if reason:
             return name, (
-                f"the next best explanation ({name}) leaves less whitened residual but is not "
+                f"the next best explanation ({said}) leaves less whitened residual but is not "
                 f"named: {reason}"
             )
     ratio = best.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
     return name, (
-        f"the next best explanation ({name}) leaves {ratio:.1f} times as much whitened residual"
+        f"the next best explanation ({said}) leaves {ratio:.1f} times as much whitened residual"
         + (f" ({reason})" if reason else "")
     )
 

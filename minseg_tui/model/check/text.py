@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from minseg_tui.model.check.effects import UNITS
 from minseg_tui.model.check.result import CheckResult
+from minseg_tui.units import format_interval
 
 _FIGURES: dict[str, tuple[str, str]] = {
     "extended_angle_rms": ("angle error", "rad"),
@@ -25,7 +26,7 @@ def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | Non
         s = f"{k} = {v:.4g} {UNITS.get(k, '')}".rstrip()
         if intervals and k in intervals:
             lo, hi = intervals[k]
-            s += f" (95 %: {lo:.3g}-{hi:.3g})"
+            s += f" (95 %: {format_interval(lo, hi, digits=3, sep='-')})"
         out.append(s)
     return ", ".join(out)
 

@@ -24,6 +24,7 @@ from minseg_tui.model.identify.identification import (
     Identification,
     StepResult,
     identify,
+    step_alone,
 )
 from minseg_tui.model.identify.observations import (
     Observation,
@@ -62,6 +63,7 @@ __all__ = [
     "omega_ss_at",
     "rising_steps",
     "steady_state",
+    "step_alone",
     "step_observations",
     "step_windows",
     "table_observations",

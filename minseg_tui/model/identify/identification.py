@@ -290,11 +290,21 @@ def _step_result(
         dead_time=fit.dead_time,
         glitch_rows=glitches,
     )
-    observations = step_observations(
-        rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time
+    observations = (
+        step_observations(rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time)
+        if rows
+        else []
     )
     observations += fit_observations(whole_log, glitches, fit, result.T_determined)
     return result, observations
+
+
+def step_alone(log: StepLog, u_ss_table: Sequence[tuple[float, float]]) -> StepResult:
+    """Tasks 11-12 from the step log and the table's ``(u_req, u_ss)`` pairs (V) alone: K,
+    T and the 63 % reading, which need neither R nor i_ss. J (Task 13) needs R, k_v and f:
+    it is NaN here. Raises InputError as :func:`identify` does for the log."""
+    step, _ = _step_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
+    return step
 
 
 def _K_interval(
