@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from minseg_tui.units import NO_BREAK, format_number, format_value, join_units
+from minseg_tui.quantities import NO_BREAK, format_number, format_value, join_units
 
 
 @pytest.mark.parametrize(

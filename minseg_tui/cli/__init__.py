@@ -69,7 +69,7 @@ def build_parser(selected: str | None = None) -> argparse.ArgumentParser:
     """The parser; only the ``selected`` subcommand's module is imported (start-up time).
 
     Every available subcommand is listed with its help line; its own arguments are added
-    only when it is the one being run, so `minseg-tui sim` does not pay for scipy.
+    only when it is the one being run, so `minseg-tui sim` does not pay for the model.
     """
     parser = _Parser(prog="minseg-tui", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", parser_class=_Parser)

@@ -24,8 +24,8 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab import classread
 from minseg_tui.lab.classview import QUANTITIES, ClassView
 from minseg_tui.lab.store import atomic_write_text, os_reason
+from minseg_tui.quantities import format_number
 from minseg_tui.report import class_content, html, markdown
-from minseg_tui.units import format_number
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -11,7 +11,7 @@ from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify
-from minseg_tui.units import NO_WIDTH, NUMBER, format_interval
+from minseg_tui.quantities import NO_WIDTH, NUMBER, format_interval, format_number, format_reading
 
 
 def _ohms(text: str) -> float:
@@ -69,8 +69,12 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _g(x: float, digits: int = 4) -> str:
-    return f"{x:.{digits}g}"
+_g = format_number  # a computed value: four significant digits, trailing zeros kept
+
+
+def _read(x: float) -> str:
+    """A reading (R, the table's columns) with the digits it was typed with."""
+    return format_reading(x, "")
 
 
 def _wrap(text: str) -> list[str]:
@@ -80,14 +84,14 @@ def _wrap(text: str) -> list[str]:
 
 def render(result: Identification) -> str:
     """The human report: the table of Tasks 4-9, then Tasks 11-15, then what the numbers show."""
-    out = [f"R = {_g(result.R)} ohm (Task 2)", ""]
+    out = [f"R = {_read(result.R)} ohm (Task 2)", ""]
     head = ("u_req V", "u_ss V", "omega_ss rad/s", "i_ss mA", "k_v V s/rad", "f N m s/rad")
     body = [
         (
-            _g(r.reading.u_req),
-            _g(r.reading.u_ss),
-            _g(r.reading.omega_ss),
-            _g(r.reading.i_ss),
+            _read(r.reading.u_req),
+            _read(r.reading.u_ss),
+            _read(r.reading.omega_ss),
+            _read(r.reading.i_ss),
             _g(r.k_v),
             _g(r.f, 3),
         )
@@ -137,7 +141,7 @@ def render(result: Identification) -> str:
         out += [
             "",
             f"Step log: {len(s.steps)} rising step(s); angle from {fit.angle_source}, time from {fit.time_source}",
-            f"omega_ss = {_g(s.omega_ss)} rad/s (fitted), u_ss = {_g(s.u_ss)} V ({how})",
+            f"omega_ss = {_g(s.omega_ss)} rad/s (fitted), u_ss = {_read(s.u_ss) if s.u_ss_how == 'row' else _g(s.u_ss)} V ({how})",
             f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V "
             + (
                 f"+- {_g((s.K_ci[1] - s.K_ci[0]) / 2, 2)} (95 %, Task 11)"

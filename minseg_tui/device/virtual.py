@@ -55,7 +55,8 @@ import numpy as np
 from minseg_tui.device import protocol as P
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import MeterReading, Plant, PlantParams, ZeroMode
-from minseg_tui.units import KA_OVER_KV, NUMBER
+from minseg_tui.quantities import NUMBER
+from minseg_tui.units import KA_OVER_KV
 
 FIRMWARE = "minseg-virtual 3.0.0"
 BOARD = "Virtual"

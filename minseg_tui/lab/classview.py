@@ -36,7 +36,7 @@ from minseg_tui.lab.steps import LEVELS
 from minseg_tui.lab.store import SESSION_FILE, SessionsUnreadable
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import step_alone
-from minseg_tui.units import RPM, format_number
+from minseg_tui.quantities import RPM, format_number
 
 
 @dataclass(frozen=True)

@@ -20,7 +20,7 @@ from pathlib import Path
 from minseg_tui.lab.results import Comparison, Results
 from minseg_tui.lab.steps import Field
 from minseg_tui.model.motor import inertia_from_time_constant
-from minseg_tui.units import format_number
+from minseg_tui.quantities import format_number
 
 POLICY_FILE = "lab.toml"
 """The instructor's settings for every session in a sessions folder (beside the sessions)."""

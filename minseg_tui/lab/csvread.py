@@ -28,7 +28,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
-from minseg_tui.units import NUMBER
+from minseg_tui.quantities import NUMBER
 
 MAX_LINE_BYTES: int = 4096
 """Longest line read, bytes (a lab CSV line is under 200; Python's csv module stops at

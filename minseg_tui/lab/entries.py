@@ -15,8 +15,8 @@ from typing import Any
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.answers import read_formula
-from minseg_tui.lab.entry import parse_quantity
 from minseg_tui.lab.steps import FIELDS, Field
+from minseg_tui.quantities import parse_quantity
 
 
 @dataclass(frozen=True)

@@ -30,7 +30,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog, clock_problem, command, find_edges, header_problem
-from minseg_tui.units import NUMBER
+from minseg_tui.quantities import NUMBER
 
 TABLE_COLUMNS: dict[str, str] = {
     "u_req": "V",

@@ -18,7 +18,7 @@ from minseg_tui.lab.runs import RunInfo
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import Identification, Reading, identify
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.units import format_number
+from minseg_tui.quantities import format_number
 
 
 @dataclass(frozen=True)

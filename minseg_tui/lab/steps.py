@@ -7,7 +7,7 @@ renders these and the session stores what was typed; neither needs a case per st
 :mod:`minseg_tui.lab.answers` tells a right answer from a wrong one by these checks.
 
 Field kinds:
-- ``quantity``: a number with a unit, parsed by :mod:`minseg_tui.lab.entry` (value in SI);
+- ``quantity``: a number with a unit, parsed by :mod:`minseg_tui.quantities` (value in SI);
 - ``formula``: a formula in the names the field allows, read by :mod:`minseg_tui.lab.expr`;
 - ``choice``: one (or, with ``multiple``, several) of ``options``, stored as indices;
 - ``text``: free text, never checked.
@@ -25,8 +25,8 @@ from dataclasses import dataclass
 from typing import Literal
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.entry import Plausible
 from minseg_tui.lab.expr import parse_formula
+from minseg_tui.quantities import Plausible
 
 FieldKind = Literal["quantity", "formula", "choice", "text"]
 Status = Literal["right", "wrong", "missing"]
@@ -41,7 +41,7 @@ class Field:
 
     key: the entry's key in the session (``"R"``, ``"u_ss@2.5"``, ``"prep8.T"``);
     label: short name shown beside the input; unit: the form unit of a quantity (a symbol
-    of :data:`minseg_tui.lab.entry.UNITS`; a bare number is read in it); names: the
+    of :data:`minseg_tui.quantities.UNITS`; a bare number is read in it); names: the
     names a formula may use; options: the choices; compare: for a student's own reading,
     the path of the computed value in :meth:`Session.results` to show beside it
     (``"step.K"``); level: the requested voltage (V) of a table field.

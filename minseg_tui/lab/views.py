@@ -25,7 +25,6 @@ from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab import capture as lab_capture
 from minseg_tui.lab import compare as lab_compare
-from minseg_tui.lab.entry import UNITS, format_quantity
 from minseg_tui.lab.session import Entry, Session, TableRow
 from minseg_tui.lab.steps import step
 from minseg_tui.model import identify as model_identify
@@ -34,7 +33,14 @@ from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.units import DIGITS, format_interval, format_number, format_value
+from minseg_tui.quantities import (
+    DIGITS,
+    UNITS,
+    format_interval,
+    format_number,
+    format_quantity,
+    format_value,
+)
 
 FloatArray = NDArray[np.float64]
 
@@ -60,7 +66,7 @@ def _empty() -> FloatArray:
 
 
 def _fmt(v: float | None, unit: str, digits: int = DIGITS) -> str:
-    """``v`` (SI) in the form unit ``unit`` (:func:`minseg_tui.lab.entry.format_quantity`)."""
+    """``v`` (SI) in the form unit ``unit`` (:func:`minseg_tui.quantities.format_quantity`)."""
     return "—" if v is None or not math.isfinite(v) else format_quantity(v, unit, digits)
 
 

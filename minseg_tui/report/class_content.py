@@ -15,10 +15,9 @@ import math
 
 from minseg_tui.lab.classview import JUDGED, QUANTITIES, THRESHOLD, ClassView, Group
 from minseg_tui.lab.compare import format_diff
-from minseg_tui.lab.entry import format_quantity
+from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.report.content import Figure, Figures, Report, Section, Table
 from minseg_tui.report.svg import Band, Line, Mark, plot
-from minseg_tui.units import format_number
 
 FLAGGED_COLOR = "#d62728"
 GROUP_COLOR = "#1f77b4"

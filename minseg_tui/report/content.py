@@ -16,15 +16,20 @@ import numpy as np
 from minseg_tui.errors import InputError
 from minseg_tui.lab import steps as lab_steps
 from minseg_tui.lab.compare import ANSWERED_FIRST, format_diff
-from minseg_tui.lab.entry import format_quantity, format_reading
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.views import step_window
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import RisingStep, StepResult
 from minseg_tui.model.steplog import StepLog
+from minseg_tui.quantities import (
+    DIGITS,
+    format_interval,
+    format_number,
+    format_quantity,
+    format_reading,
+)
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
-from minseg_tui.units import DIGITS, format_interval, format_number
 
 
 @dataclass(frozen=True)

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from html import escape
 
+from minseg_tui.quantities import join_units
 from minseg_tui.report.content import Figure, Figures, Report, Table
-from minseg_tui.units import join_units
 
 
 def _text(text: str) -> str:

@@ -7,14 +7,14 @@ import math
 import pytest
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.entry import (
+from minseg_tui.lab.expr import FormulaRefused, parse_formula
+from minseg_tui.quantities import (
     EntryRefused,
     Plausible,
     format_quantity,
     format_reading,
     parse_quantity,
 )
-from minseg_tui.lab.expr import FormulaRefused, parse_formula
 
 
 @pytest.mark.parametrize(

@@ -8,7 +8,7 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from minseg_tui.lab.entry import CEILING, UNITS, format_quantity, parse_quantity
+from minseg_tui.quantities import CEILING, UNITS, format_quantity, parse_quantity
 
 SHOWN = sorted(s for s in UNITS if s)
 FAST = settings(max_examples=300, derandomize=True, database=None, deadline=None)

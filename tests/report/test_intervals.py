@@ -9,8 +9,8 @@ import pytest
 
 from minseg_tui.cli import main
 from minseg_tui.lab.session import Session
+from minseg_tui.quantities import NO_WIDTH, format_interval
 from minseg_tui.report import content, markdown
-from minseg_tui.units import NO_WIDTH, format_interval
 from tests.classview.build import group
 
 

@@ -16,9 +16,9 @@ from minseg_tui.cli import main
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import step
 from minseg_tui.model.plant import PlantParams, record
+from minseg_tui.quantities import format_number, format_value
 from minseg_tui.report import content, svg
 from minseg_tui.report.write import write_report
-from minseg_tui.units import format_number, format_value
 
 
 class _Clock:

@@ -17,6 +17,7 @@ from minseg_tui.device.link import LinkEvent
 from minseg_tui.device.standstill import PRE_ROLL
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.store import SessionsUnreadable, list_sessions
+from minseg_tui.quantities import NO_BREAK
 from minseg_tui.ui import app as app_module
 from minseg_tui.ui.panels.model_check import ModelCheckPanel
 from minseg_tui.ui.panels.results import ResultsPanel, StepPlot
@@ -27,7 +28,6 @@ from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import TracePlot
 from minseg_tui.ui.widgets.prose import Prose, wrap
 from minseg_tui.ui.widgets.status import DeviceStatus
-from minseg_tui.units import NO_BREAK
 from tests.ui.fakes import QuietDevice, step_stream
 from tests.ui.helpers import (
     TABLE,

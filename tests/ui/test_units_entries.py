@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from textual.widgets import OptionList
 
-from minseg_tui.lab.entry import parse_quantity
+from minseg_tui.quantities import parse_quantity
 from minseg_tui.ui.app import PANEL_KEYS
 from minseg_tui.ui.widgets.fields import field_id
 from minseg_tui.ui.widgets.prose import Prose

@@ -13,8 +13,8 @@ Modules, in the order the check uses them:
 - simulate: the model and its effects in closed form per mode on a piecewise-constant input;
 - effects: the causes as data (names, parameters, what they mean, their search ranges);
 - guess: where each cause's search starts, read off the log;
-- search: golden section and Levenberg-Marquardt in a box;
-- fit: whitened least squares (K solved linearly), any set of causes jointly, 95 % intervals;
+- fit: whitened least squares (K solved linearly), any set of causes jointly (by
+  :mod:`minseg_tui.model.optimize`, the search identify uses too), 95 % intervals;
 - decide: the criterion with a margin, causes added and dropped one at a time;
 - disturbances: a hand on the wheel, found in the settled stretches and fenced off;
 - anomalies: wild samples, creep, late steps, gaps, disturbances, in words;

@@ -15,11 +15,12 @@ differences per nominal period.
 For given T and effect parameters the response is proportional to K, which is solved by
 linear least squares. The other parameters (T on a log scale, each effect's own) are
 started from a coarse grid and polished jointly by Levenberg-Marquardt within their
-ranges (:mod:`.search`); the moving average's length is an integer, scanned cheaply
-(the angle does not depend on it). Where the side of an extra pole shows (with dry
-friction, a coast or a cap, it matters whether the pole acts on the drive or on the
-measurement) both sides are fitted and the better kept, and a current limit is fitted
-capped while accelerating only and capped both ways. Rows with weight 0 (wild samples, a hand on the wheel,
+ranges (:func:`minseg_tui.model.optimize.least_squares`, the derivatives by forward
+differences); the moving average's length is an integer, scanned cheaply (the angle does
+not depend on it). Where the side of an extra pole shows (with dry friction, a coast or a
+cap, it matters whether the pole acts on the drive or on the measurement) both sides are
+fitted and the better kept, and a current limit is fitted capped while accelerating only
+and capped both ways. Rows with weight 0 (wild samples, a hand on the wheel,
 held-out steps) do not count: their residual is set to zero before the whitening.
 """
 
@@ -39,7 +40,6 @@ from minseg_tui.model.check.effects import (
     field_value,
     reported,
 )
-from minseg_tui.model.check.search import golden, least_squares
 from minseg_tui.model.check.simulate import (
     Effects,
     Stretches,
@@ -48,6 +48,7 @@ from minseg_tui.model.check.simulate import (
     pieces,
     response,
 )
+from minseg_tui.model.optimize import golden, least_squares
 
 FloatArray = NDArray[np.float64]
 
@@ -252,6 +253,9 @@ def _axes(prob: Problem, causes: Sequence[str], rng: dict[str, Range]) -> list[_
     return out
 
 
+_NO_COEF = np.zeros(0)
+
+
 class Model:
     """One set of causes on one problem: the parameters as a vector in a box, and the
     whitened residual (K solved) of any point in it."""
@@ -268,6 +272,7 @@ class Model:
         self.pole_measured = False
         self.cap_both = False
         self.evaluations = 0
+        self._last: tuple[bytes, FloatArray] = (b"", np.zeros(0))
 
     def effects(self, x: FloatArray) -> tuple[float, Effects]:
         T = math.exp(float(x[0]))
@@ -316,9 +321,37 @@ class Model:
         r = self.residual(x)
         return float(np.dot(r, r)) if np.all(np.isfinite(r)) else math.inf
 
+    def evaluate(self, x: FloatArray) -> tuple[float, FloatArray, FloatArray]:
+        """(whitened sum of squares, no coefficients, whitened residual) at x, for
+        :func:`least_squares` (K is solved inside the residual)."""
+        r = self.residual(x)
+        self._last = (x.tobytes(), r)
+        sse = float(np.dot(r, r)) if np.all(np.isfinite(r)) else math.inf
+        return sse, _NO_COEF, r
+
+    def jacobian(self, x: FloatArray, coef: FloatArray) -> FloatArray:
+        """d whitened residual / d x by forward differences of each axis' step (backward at
+        the upper bound); a model that fails there counts as flat."""
+        key = x.tobytes()
+        r = self._last[1] if self._last[0] == key else self.residual(x)
+        jac = np.empty((r.size, x.size))
+        for i in range(x.size):
+            h = self.step[i] if x[i] + self.step[i] <= self.hi[i] else -self.step[i]
+            xp = x.copy()
+            xp[i] += h
+            jac[:, i] = (self.residual(xp) - r) / h
+        out: FloatArray = np.nan_to_num(jac, nan=0.0, posinf=0.0, neginf=0.0)
+        return out
+
+    def _solve(self, x0: FloatArray, max_iter: int) -> tuple[FloatArray, float]:
+        sol = least_squares(
+            self.evaluate, self.jacobian, x0, self.lo, self.hi, max_iter, 1e-3 * self.step, 1e-6
+        )
+        return sol.x, sol.rss
+
     def fit(self, x0: FloatArray, max_iter: int = 25) -> Fit:
         """Levenberg-Marquardt from x0 (the taps, if any, scanned around as well)."""
-        x, f, _ = least_squares(self.residual, x0, self.lo, self.hi, self.step, max_iter)
+        x, f = self._solve(x0, max_iter)
         if "velocity_filter" in self.causes:
             # the length trades against T (one more sample of averaging, half a sample less
             # of T): each neighbour is judged with the other parameters fitted again
@@ -332,9 +365,7 @@ class Model:
                         continue
                     tried.add(n)
                     self.taps = n
-                    xn, fn, _ = least_squares(
-                        self.residual, best[1], self.lo, self.hi, self.step, max_iter
-                    )
+                    xn, fn = self._solve(best[1], max_iter)
                     if fn < best[0]:
                         best = (fn, xn, n)
                 if best[2] == centre:

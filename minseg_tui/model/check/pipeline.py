@@ -39,8 +39,9 @@ from minseg_tui.model.check.result import (
     rmse,
 )
 from minseg_tui.model.check.sampling import Sampling, sampling, scatter
-from minseg_tui.model.check.search import golden
+from minseg_tui.model.optimize import golden
 from minseg_tui.model.steplog import problem
+from minseg_tui.quantities import format_number
 
 FloatArray = NDArray[np.float64]
 
@@ -527,7 +528,7 @@ def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
 
 
 def _params_text(p: dict[str, float]) -> str:
-    return ", ".join(f"{k} = {v:.4g} {UNITS.get(k, '')}".rstrip() for k, v in p.items())
+    return ", ".join(f"{k} = {format_number(v)} {UNITS.get(k, '')}".rstrip() for k, v in p.items())
 
 
 POLE_OR_DELAY = 1.5

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from minseg_tui.model.check.effects import UNITS
 from minseg_tui.model.check.result import CheckResult
-from minseg_tui.units import format_interval
+from minseg_tui.quantities import format_interval, format_number
 
 _FIGURES: dict[str, tuple[str, str]] = {
     "extended_angle_rms": ("angle error", "rad"),
@@ -23,7 +23,7 @@ _FIGURES: dict[str, tuple[str, str]] = {
 def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | None = None) -> str:
     out = []
     for k, v in p.items():
-        s = f"{k} = {v:.4g} {UNITS.get(k, '')}".rstrip()
+        s = f"{k} = {format_number(v)} {UNITS.get(k, '')}".rstrip()
         if intervals and k in intervals:
             lo, hi = intervals[k]
             s += f" (95 %: {format_interval(lo, hi, digits=3, sep='-')})"

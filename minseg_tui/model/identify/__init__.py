@@ -10,8 +10,8 @@ The package, one module per room:
 - :mod:`.steps`: the rising steps of a step log and the manual's 63 % reading;
 - :mod:`.stepfit`: T and the steady speeds by least squares (Tasks 11-12), from one of
   :mod:`.wholelog` (the model of Task 14 over the whole log) and :mod:`.windowfit` (each
-  rising step on its own), with the machinery of :mod:`.lsq` (the search, intervals that
-  hold with correlated residuals, Student's t);
+  rising step on its own), searched by :func:`minseg_tui.model.optimize.least_squares`, with
+  the intervals of :mod:`.lsq` (they hold with correlated residuals; Student's t);
 - :mod:`.observations`: what the numbers show, in sentences a student understands;
 - :mod:`.identification`: Tasks 6-15 put together (K, T, J, the model of Task 14, omega at
   5 V) and the ``--json`` object.

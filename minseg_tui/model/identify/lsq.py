@@ -1,8 +1,5 @@
-"""Least squares with a few nonlinear parameters, and 95 % intervals that hold.
-
-The step fits are separable: for given nonlinear parameters (T, a time shift, a friction
-voltage) the model is linear in the rest, which a linear solve gives exactly (variable
-projection). :func:`levenberg_marquardt` searches the nonlinear ones.
+"""95 % intervals that hold for the step fits' least-squares parameters (the search itself
+is :func:`minseg_tui.model.optimize.least_squares`).
 
 The intervals do not trust the residuals to be independent. What a fit leaves out is
 correlated in time: the rounding of a slowly turning encoder repeats, a step that the log
@@ -17,7 +14,6 @@ clusters for that; its rows' correlation over a couple of time constants is esti
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -25,51 +21,46 @@ from numpy.typing import NDArray
 
 FloatArray = NDArray[np.float64]
 
-T975: tuple[float, ...] = (
-    12.706205,
-    4.302653,
-    3.182446,
-    2.776445,
-    2.570582,
-    2.446912,
-    2.364624,
-    2.306004,
-    2.262157,
-    2.228139,
-    2.200985,
-    2.178813,
-    2.160369,
-    2.144787,
-    2.13145,
-    2.119905,
-    2.109816,
-    2.100922,
-    2.093024,
-    2.085963,
-    2.079614,
-    2.073873,
-    2.068658,
-    2.063899,
-    2.059539,
-    2.055529,
-    2.051831,
-    2.048407,
-    2.04523,
-    2.042272,
-)
-"""The 97.5 % quantile of Student's t for 1-30 degrees of freedom (from scipy.stats.t.ppf)."""
+
+def _t_cdf(x: float, dof: int) -> float:
+    """P(T <= x) for Student's t with a whole number ``dof`` of degrees of freedom, from its
+    finite series (Abramowitz and Stegun 26.7.3-4)."""
+    theta = math.atan2(x, math.sqrt(dof))
+    s, c = math.sin(theta), math.cos(theta)
+    if dof % 2:  # odd: 2 theta / pi + 2 / pi sin cos (1 + 2/3 cos^2 + ...)
+        term, total = c, c if dof > 1 else 0.0
+        for k in range(3, dof - 1, 2):
+            term *= c * c * (k - 1) / k
+            total += term
+        a = (2.0 * theta + 2.0 * s * total) / math.pi
+    else:  # even: sin (1 + 1/2 cos^2 + 1.3/2.4 cos^4 + ...)
+        term = total = 1.0
+        for k in range(2, dof - 1, 2):
+            term *= c * c * (k - 1) / k
+            total += term
+        a = s * total
+    return 0.5 + 0.5 * a
+
 
 _Z975 = 1.959963984540054
 
 
 def t975(dof: int) -> float:
-    """The 97.5 % quantile of Student's t with ``dof`` degrees of freedom (at least 1): from
-    :data:`T975` up to 30, beyond that the Cornish-Fisher expansion (error below 1e-7)."""
+    """The 97.5 % quantile of Student's t with ``dof`` degrees of freedom (at least 1): up to
+    30 the root of the distribution function (Newton's method from the normal quantile),
+    beyond that the Cornish-Fisher expansion (error below 1e-7)."""
     if dof < 1:
         raise ValueError("a t quantile needs at least one degree of freedom")
-    if dof <= len(T975):
-        return T975[dof - 1]
     z, v = _Z975, float(dof)
+    if dof <= 30:
+        norm = math.gamma((v + 1) / 2) / (math.sqrt(v * math.pi) * math.gamma(v / 2))
+        x = z
+        for _ in range(30):
+            step = (_t_cdf(x, dof) - 0.975) / (norm * (1 + x * x / v) ** (-(v + 1) / 2))
+            x -= step
+            if abs(step) < 1e-13 * x:
+                break
+        return x
     return (
         z
         + (z**3 + z) / (4 * v)
@@ -83,81 +74,6 @@ def dot(a: FloatArray, b: FloatArray) -> float:
     """The sum of a_i b_i of two long vectors. (Not ``a @ b``: a threaded BLAS dot of a long
     vector can take a hundred times longer on a busy machine.)"""
     return float(np.einsum("i,i->", a, b))
-
-
-Evaluate = Callable[[FloatArray], tuple[float, FloatArray, FloatArray]]
-"""x -> (residual sum of squares, linear coefficients, residuals) for nonlinear parameters x."""
-
-Jacobian = Callable[[FloatArray, FloatArray], FloatArray]
-"""(x, coefficients) -> d residual / d x, one column per nonlinear parameter."""
-
-
-@dataclass(frozen=True)
-class Solution:
-    """Where :func:`levenberg_marquardt` stopped: the nonlinear parameters ``x``, the residual
-    sum of squares ``rss``, the linear coefficients and the residuals there."""
-
-    x: FloatArray
-    rss: float
-    coef: FloatArray
-    residuals: FloatArray
-    iterations: int
-
-
-def levenberg_marquardt(
-    evaluate: Evaluate,
-    jacobian: Jacobian,
-    x0: FloatArray,
-    max_iter: int = 60,
-    xtol: float = 1e-9,
-    lower: FloatArray | None = None,
-    upper: FloatArray | None = None,
-) -> Solution:
-    """Minimise the residual sum of squares over the nonlinear parameters from ``x0``.
-
-    Marquardt's damping on the Gauss-Newton step, scaled by the diagonal of J^T J; a step
-    is taken only when it lowers the sum. Stops when a step changes no parameter by more
-    than ``xtol`` (in the units of x) or after ``max_iter`` steps. ``lower`` and ``upper``
-    (default: none) box the parameters in: a parameter on its bound whose gradient points out
-    of the box is held there while the others move, and every step is clipped to the box.
-    """
-    lo = np.full(len(x0), -np.inf) if lower is None else np.asarray(lower, dtype=float)
-    hi = np.full(len(x0), np.inf) if upper is None else np.asarray(upper, dtype=float)
-    x = np.clip(np.asarray(x0, dtype=float), lo, hi)
-    rss, coef, r = evaluate(x)
-    lam = 1e-3
-    it = 0
-    for it in range(1, max_iter + 1):  # noqa: B007 (the count is returned)
-        J = jacobian(x, coef)
-        A = J.T @ J
-        g = J.T @ r
-        held = ((x <= lo) & (g > 0)) | ((x >= hi) & (g < 0))  # pushing out of the box
-        A = np.where(held[:, None] | held[None, :], 0.0, A)
-        g = np.where(held, 0.0, g)
-        diag = np.where(held, 1.0, np.maximum(np.diag(A), 1e-300))
-        A[held, held] = 1.0
-        taken = False
-        while lam < 1e12:
-            try:
-                step = np.linalg.solve(A + lam * np.diag(diag), -g)
-            except np.linalg.LinAlgError:
-                lam *= 10.0
-                continue
-            trial = np.clip(x + step, lo, hi)
-            step = trial - x
-            rss_t, coef_t, r_t = evaluate(trial)
-            if math.isfinite(rss_t) and rss_t <= rss:
-                lam = max(lam / 10.0, 1e-12)
-                taken = True
-                break
-            lam *= 10.0
-        if not taken:
-            break
-        done = float(np.max(np.abs(step))) <= xtol
-        x, rss, coef, r = trial, rss_t, coef_t, r_t
-        if done:
-            break
-    return Solution(x=x, rss=rss, coef=coef, residuals=r, iterations=it)
 
 
 @dataclass(frozen=True)

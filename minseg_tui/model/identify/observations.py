@@ -11,7 +11,7 @@ import numpy as np
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.identify.stepfit import RisingStep, TimeConstantFit
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.units import RPM, format_number
+from minseg_tui.quantities import RPM, format_number
 
 KV_OUTLIER: float = 0.15
 """A row's k_v this far (relative) from the median is called a bad reading."""

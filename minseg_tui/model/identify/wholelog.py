@@ -32,13 +32,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.identify.lsq import (
-    Covariance,
-    Solution,
-    cluster_covariance,
-    dot,
-    levenberg_marquardt,
-)
+from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, dot
+from minseg_tui.model.optimize import Solution, least_squares
 
 FloatArray = NDArray[np.float64]
 
@@ -339,7 +334,7 @@ def fit_whole_log(
             return None
         p = _Problem(m, th, False, starts, w)
         x0 = _starts(p, start, shift_starts, T_factors, lo, hi)[1]
-        sol = levenberg_marquardt(p.evaluate, p.jacobian, x0, lower=lo, upper=hi)
+        sol = least_squares(p.evaluate, p.jacobian, x0, lower=lo, upper=hi)
         candidates.append((sol.rss, sol, m, p))
     _, best, model, chosen = min(candidates, key=lambda c: c[0])
     if model.can_stick:
@@ -348,7 +343,7 @@ def fit_whole_log(
         tries = [np.array([best.x[0], best.x[1], f * top]) for f in (0.0, 0.02, 0.05, 0.1, 0.2)]
         first = min(tries, key=lambda x: stick.evaluate(x)[0])
         lo3, hi3 = np.append(lo, -np.inf), np.append(hi, np.inf)
-        with_c = levenberg_marquardt(stick.evaluate, stick.jacobian, first, lower=lo3, upper=hi3)
+        with_c = least_squares(stick.evaluate, stick.jacobian, first, lower=lo3, upper=hi3)
         found = stick.unpack(with_c.x)[2] > 0  # a breakaway voltage, not a push
         used = int(np.count_nonzero(w))
         if found and _better(best, with_c, 1, used, chosen.n_linear + 3, FRICTION_F):

@@ -23,13 +23,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.identify.lsq import (
-    Covariance,
-    cluster_covariance,
-    dot,
-    levenberg_marquardt,
-)
+from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, dot
 from minseg_tui.model.identify.steps import StepWindow
+from minseg_tui.model.optimize import least_squares
 
 FloatArray = NDArray[np.float64]
 
@@ -173,7 +169,7 @@ def fit_windows(
     )
     tries = [np.clip(np.array([math.log(float(T)), d]), lo, hi) for d in shift_starts for T in grid]
     start = min(tries, key=lambda x: prob.evaluate(x)[0])
-    sol = levenberg_marquardt(prob.evaluate, prob.jacobian, start, lower=lo, upper=hi)
+    sol = least_squares(prob.evaluate, prob.jacobian, start, lower=lo, upper=hi)
     T, d = math.exp(float(sol.x[0])), float(sol.x[1])
     J = -prob.jacobian(sol.x, sol.coef)  # the derivatives with each step's own terms projected off
     J[:, 0] /= T

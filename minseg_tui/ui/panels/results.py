@@ -12,11 +12,11 @@ from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import Step
 from minseg_tui.lab.views import ResultsView
+from minseg_tui.quantities import format_value
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
-from minseg_tui.units import format_value
 
 
 class StepPlot(TracePlot):

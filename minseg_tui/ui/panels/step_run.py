@@ -11,13 +11,13 @@ from minseg_tui.lab import views
 from minseg_tui.lab.session import Session
 from minseg_tui.lab.steps import Step
 from minseg_tui.lab.views import RunView
+from minseg_tui.quantities import format_number, format_value
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import RunRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.recording import RunProgress
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
-from minseg_tui.units import format_number, format_value
 
 FAST_WHY = (
     "Why 5 ms matters: the published MinSeg figures give T near 0.04 s, under two 25 ms "

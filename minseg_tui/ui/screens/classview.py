@@ -27,9 +27,8 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab import classread, classview
 from minseg_tui.lab.classview import QUANTITIES, ClassView, Group
 from minseg_tui.lab.compare import format_diff
-from minseg_tui.lab.entry import format_quantity
+from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.ui.screens.start import StartScreen
-from minseg_tui.units import format_number
 
 COLUMNS: tuple[tuple[str, str], ...] = (
     ("#", "n"),

@@ -1,7 +1,7 @@
 """Text that wraps at the widget's width without tearing a number from its unit.
 
 Textual breaks a line at any space, "2.216 mN m s/rad" included. :class:`Prose` breaks
-only where :func:`minseg_tui.units.join_units` allows: never between a number and its unit,
+only where :func:`minseg_tui.quantities.join_units` allows: never between a number and its unit,
 never inside a unit of several words.
 """
 
@@ -16,7 +16,7 @@ from textual.style import Style
 from textual.visual import RenderOptions, Visual
 from textual.widgets import Static
 
-from minseg_tui.units import NO_BREAK, join_units
+from minseg_tui.quantities import NO_BREAK, join_units
 
 CONTINUED = ("! ", "✗ ")
 """Starts of a line whose wrapped lines are indented under its text."""
