@@ -8,7 +8,12 @@ STAMP  := $(VENV)/.installed
 # AVR=0 skips the firmware cross-build (for a laptop without gcc-avr and without root).
 AVR    ?= 1
 
-.PHONY: run test lint typecheck pytest snapshot-update firmware firmware-host-test firmware-hex bench clean
+# Python may cache the bytecode of the package and the tests (__pycache__/, ignored by git):
+# with PYTHONDONTWRITEBYTECODE set, every pytest worker and every command a test starts
+# compiled them from source again.
+unexport PYTHONDONTWRITEBYTECODE
+
+.PHONY: run test test-stages lint typecheck pytest snapshot-update firmware firmware-host-test firmware-hex bench clean
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV) || { echo "error: could not create a virtualenv with $(PYTHON) -m venv (Debian: apt-get install python3-venv)"; exit 2; }
@@ -28,10 +33,11 @@ lint: $(STAMP)
 typecheck: $(STAMP)
 	$(VENV)/bin/mypy
 
-# The suite in one process by default; PYTEST_WORKERS=2 spreads it over two (pytest-xdist),
-# faster on a quiet machine. With a core busy elsewhere, two workers starve the tests that
-# run the virtual board in real time (a reply later than the link's 1 s timeout).
-PYTEST_WORKERS ?= 0
+# pytest over two processes (pytest-xdist); PYTEST_WORKERS=0 runs it in one. The tests that
+# run the virtual board in real time wait for what they hear, and the link takes a reply for
+# missing only once its reader has looked after the timeout: a busy machine makes them
+# slower, not red.
+PYTEST_WORKERS ?= 2
 
 pytest: $(STAMP)
 	$(PY) -m pytest -q -n $(PYTEST_WORKERS) $(PYTEST_ARGS)
@@ -50,7 +56,8 @@ ifeq ($(AVR),0)
 	@echo "AVR=0: firmware cross-build for the ATmega2560 not run"
 else
 	@sh firmware/ensure-toolchain.sh
-	$(MAKE) -C firmware all-profiles sim-test-all
+	$(MAKE) -C firmware all-profiles
+	$(MAKE) -C firmware sim-test-all
 	$(PY) -m minseg_tui.device.flashing check firmware/build
 endif
 
@@ -61,7 +68,15 @@ firmware-hex: $(STAMP)
 	$(MAKE) -C firmware all-profiles
 	$(PY) -m minseg_tui.device.flashing refresh firmware/build
 
-test: $(STAMP) lint firmware-host-test firmware pytest
+# The stages side by side (make -j, each stage's output printed whole when it ends): pytest
+# (the longest, so it starts first), lint, the firmware's host tests, its AVR builds and
+# simavr runs (themselves in parallel as job slots free up).
+TEST_JOBS ?= 4
+
+test: $(STAMP)
+	@$(MAKE) --no-print-directory -j$(TEST_JOBS) -O test-stages
+
+test-stages: pytest lint firmware-host-test firmware
 
 bench: $(STAMP)
 	@for b in benchmarks/*.py; do echo "== $$b"; $(PY) $$b || exit 1; done

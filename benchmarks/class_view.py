@@ -26,8 +26,8 @@ from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams, record
 
 

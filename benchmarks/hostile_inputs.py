@@ -40,7 +40,7 @@ import numpy as np
 from minseg_tui.device import protocol as P
 from minseg_tui.device.link import Link
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.lab.files import write_step_log
+from minseg_tui.lab.saving.files import write_step_log
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import make_log
 

@@ -42,7 +42,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from minseg_tui.lab.files import read_step_log
+from minseg_tui.lab.saving.files import read_step_log
 from minseg_tui.model.identify import Reading, identify
 from minseg_tui.model.steplog import StepLog, command, find_edges
 from tests.model.identgen import make, table

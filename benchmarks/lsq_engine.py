@@ -109,7 +109,7 @@ def _identify_synth(seeds: int) -> dict[str, Any]:
 
 
 def _identify_real(folder: Path) -> dict[str, Any]:
-    from minseg_tui.lab.files import read_step_log
+    from minseg_tui.lab.saving.files import read_step_log
     from minseg_tui.model.identify import Reading, identify
     from minseg_tui.model.steplog import command, find_edges
 
@@ -177,7 +177,7 @@ def _cli(runs: int) -> dict[str, Any]:
     sys.path.insert(0, str(ROOT / "benchmarks"))
     import identify_peers as peers
 
-    from minseg_tui.lab.files import write_step_log
+    from minseg_tui.lab.saving.files import write_step_log
     from minseg_tui.model.steplog import StepLog
     from minseg_tui.model.synth import make_log
 

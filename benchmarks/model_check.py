@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab.files import write_step_log
+from minseg_tui.lab.saving.files import write_step_log
 from minseg_tui.model.check import check
 from minseg_tui.model.check.simulate import Effects, Stretches, pieces
 from minseg_tui.model.steplog import StepLog

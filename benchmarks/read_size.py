@@ -18,12 +18,12 @@ from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab import files
+from minseg_tui.lab.saving import files
 
 CHILD = """
 import json, resource, sys, time
 from minseg_tui.errors import InputError
-from minseg_tui.lab.files import read_step_log, read_table
+from minseg_tui.lab.saving.files import read_step_log, read_table
 kind, path = sys.argv[1], sys.argv[2]
 t0 = time.perf_counter()
 rows, refused = 0, ""

@@ -15,7 +15,7 @@ import math
 
 from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab.files import read_step_log
+from minseg_tui.lab.saving.files import read_step_log
 from minseg_tui.model.check import CheckResult, check, text
 from minseg_tui.model.steplog import problem
 

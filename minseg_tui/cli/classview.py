@@ -21,9 +21,9 @@ from pathlib import Path
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab import classread
-from minseg_tui.lab.classview import QUANTITIES, ClassView
-from minseg_tui.lab.store import atomic_write_text, os_reason
+from minseg_tui.lab.saving.store import atomic_write_text, os_reason
+from minseg_tui.lab.views import classread
+from minseg_tui.lab.views.classview import QUANTITIES, ClassView
 from minseg_tui.quantities import format_number
 from minseg_tui.report import class_content, html, markdown
 

@@ -9,7 +9,7 @@ import textwrap
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab.files import read_step_log, read_table
+from minseg_tui.lab.saving.files import read_step_log, read_table
 from minseg_tui.model.identify import Identification, identify
 from minseg_tui.quantities import NO_WIDTH, NUMBER, format_interval, format_number, format_reading
 

@@ -12,8 +12,8 @@ import argparse
 from pathlib import Path
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import SessionDamaged, os_reason, resolve
+from minseg_tui.lab.saving.store import SessionDamaged, os_reason, resolve
+from minseg_tui.lab.state.session import Session
 from minseg_tui.report.write import write_report
 
 

@@ -7,7 +7,7 @@ import os
 from pathlib import Path
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.store import list_sessions
+from minseg_tui.lab.saving.store import list_sessions
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

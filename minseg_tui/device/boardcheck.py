@@ -128,10 +128,14 @@ class _Collector:
 
     def until(self, cond: Callable[[SampleBatch], bool], timeout: float) -> SampleBatch:
         """All samples so far, once ``cond`` holds for them; DeviceError after ``timeout``
-        s (wall clock: a board that stopped sending)."""
+        s (wall clock) without a new sample: a board that stopped sending. A busy host that
+        takes the samples slowly is not one."""
         end = time.monotonic() + timeout
         while True:
-            self.got.append(self.take())
+            new = self.take()
+            if len(new):
+                end = time.monotonic() + timeout
+            self.got.append(new)
             batch = SampleBatch.concat(self.got)
             self.got = [batch]
             if cond(batch):
@@ -139,7 +143,7 @@ class _Collector:
             if time.monotonic() > end:
                 raise DeviceError(
                     f"{self.port}: the board sent too few samples for the check "
-                    f"({len(batch)} in {timeout:g} s)"
+                    f"({len(batch)}, then none for {timeout:g} s)"
                 )
             time.sleep(0.01)
 
@@ -373,6 +377,12 @@ def revolution_text(counts: int) -> RevolutionResult:
     return RevolutionResult(ok, counts, text)
 
 
+LAST_US = 100_000
+"""Board time the hand check still reads after the hand is done, us (the turn's last samples)."""
+LAST_WAIT_S = 5.0
+"""...waiting at most this long in host time for them, s (a board that went silent)."""
+
+
 def count_revolution(
     board: CheckedBoard,
     done: Callable[[], bool],
@@ -382,21 +392,40 @@ def count_revolution(
     poll: float = 0.02,
 ) -> RevolutionResult:
     """Count while a hand turns the wheel, until ``done()`` says it is done (or ``timeout``
-    s pass): the counts and what they mean. The motor is off meanwhile."""
+    s pass): the counts and what they mean. The motor is off meanwhile. ``samples``: a tap
+    of the samples opened when the check was asked for (else the link's own, read from its
+    newest sample on)."""
     take = samples or board.samples
     board.stop()
-    take()
-    got: list[SampleBatch] = []
+    # where the count begins: a tap (``samples``) opened when the check was asked for holds
+    # nothing older, so its first sample; the link's own backlog may hold rows from before
+    # (the motor driven), so its newest. A hand that turns as soon as it is asked, before
+    # the first read, is counted either way.
+    first = take()
+    got: list[SampleBatch] = [first] if samples is not None else []
+    start = int(first.count[-1]) if samples is None and len(first) else None
     end = time.monotonic() + timeout
     while not done() and time.monotonic() < end:
         got.append(take())
         time.sleep(poll)
-    time.sleep(0.1)  # the last samples of the turn
-    got.append(take())
+    # the last samples of the turn: until the board's own clock is LAST_US past the newest
+    # sample seen when the hand was done (a busy host reads them late, never too early)
+    seen = [int(b.t_us[-1]) for b in got if len(b)]
+    since = max(seen) if seen else None
+    end = time.monotonic() + LAST_WAIT_S
+    while time.monotonic() < end:
+        b = take()
+        got.append(b)
+        if len(b):
+            if since is None:
+                since = int(b.t_us[0])
+            if int(b.t_us[-1]) >= since + LAST_US:
+                break
+        time.sleep(poll)
     batch = SampleBatch.concat(got)
     if len(batch) == 0:
         raise DeviceError(f"{board.port}: no samples came from the board while the wheel turned")
-    return revolution_text(int(batch.count[-1] - batch.count[0]))
+    return revolution_text(int(batch.count[-1]) - (int(batch.count[0]) if start is None else start))
 
 
 WATCH_S = 1.0

@@ -116,6 +116,10 @@ class _Waiter:
     reply: P.Message | None = None
 
 
+REPLY_GUARD = 30.0
+"""The longest a command waits for its reply however busy the host, s (real time)."""
+
+
 def _proto_of(line: str) -> tuple[str, int] | None:
     """(fw, proto) from a $BOOT or $ID line even if the rest does not parse (other versions)."""
     m = re.match(r"\$(?:BOOT|ID),([^,*]*),(-?\d+)", line)
@@ -178,6 +182,7 @@ class Link:
         self._silent = False
         self._gave_up = False
         self._heard = 0  # bytes received during the last handshake
+        self._pass_begun = 0.0  # monotonic s: when the reader's last complete pass began
 
     # -- opening and closing -------------------------------------------------------------
     def open(self) -> P.Ident:
@@ -340,12 +345,29 @@ class Link:
             raise DeviceError(f"{self.port}: cannot send {name}: {exc}") from None
         if name in ("P", "SUP", "ZM", "STREAM"):
             self._restore[name] = line.decode().strip()
-        if not waiter.done.wait(self.reply_timeout_s if timeout is None else timeout):
+        if not self._await_reply(waiter, self.reply_timeout_s if timeout is None else timeout):
             self._drop_waiter(waiter)
             raise DeviceError(f"{self.port}: no reply to {name} from the board")
         if waiter.reply is None:
             raise DeviceError(f"{self.port}: the board was disconnected before it answered {name}")
         return waiter.reply
+
+    def _await_reply(self, waiter: _Waiter, limit: float) -> bool:
+        """Wait for ``waiter``'s reply (true once it came). The reply is missing once the
+        reader has read and handled the port in a pass begun ``limit`` s (real time) after
+        the command went out: a host too busy to run the reader (a loaded machine) delays
+        that pass, so a reply already on its way is never taken for a missing one, while a
+        silent board is found out after ``limit`` s as before. :data:`REPLY_GUARD` caps the
+        wait (a reader that no longer runs)."""
+        sent = time.monotonic()
+        if waiter.done.wait(limit):
+            return True
+        while self._pass_begun <= sent + limit:
+            if time.monotonic() - sent > REPLY_GUARD:
+                return waiter.done.is_set()
+            if waiter.done.wait(0.02):
+                return True
+        return waiter.done.is_set()
 
     def _note_motor(self, ok: P.Ok) -> None:
         """Follow the requested voltage through the board's replies (V, STEP, STOP), in the
@@ -493,6 +515,7 @@ class Link:
                 buf.clear()
                 skipping = False
                 continue
+            begun = time.monotonic()
             try:
                 data = ser.read(max(1, ser.in_waiting))
                 now = self._clock()
@@ -518,6 +541,7 @@ class Link:
                     self.stats.corrupt += 1
                     buf.clear()
                     skipping = True
+            self._pass_begun = begun  # every reply read in this pass has been handed over
             if now - self._last_rx > self.silence_s and not self._silent:
                 self._silent = True
                 self._emit(

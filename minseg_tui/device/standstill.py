@@ -6,20 +6,16 @@ early step where there is none. So the motor is stopped first, the run waits unt
 encoder count has not moved for :data:`STILL_FOR` s of board time, and the recording takes
 :data:`PRE_ROLL` samples of the standing wheel before the board starts the sequence.
 
-:class:`StandStill` judges the samples it is fed (the TUI feeds it from its stream worker);
-:func:`wait_until_still` is the same wait on a :class:`~minseg_tui.device.link.Link` for a
-program that reads the link itself (the headless tests, a script). Both count board time,
+:class:`StandStill` judges the samples it is fed (by the Task 10 procedure,
+:mod:`minseg_tui.lab.state.task10`, in the TUI's stream worker or headless). It counts board time,
 so the answer does not depend on how busy the host is.
 """
 
 from __future__ import annotations
 
-import time
 from typing import Literal
 
-from minseg_tui.device.link import Link
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.errors import DeviceError
 
 STILL_FOR: float = 0.15
 """The count must stay the same this long (board time, s): six 25 ms samples; the wheel
@@ -32,10 +28,6 @@ motor coasting without friction)."""
 PRE_ROLL: int = 4
 """Samples of the standing wheel a run records before the board starts the sequence (its
 first step then has a speed before the edge to start from)."""
-
-HOST_GUARD: float = 30.0
-"""Host seconds :func:`wait_until_still` waits for samples at all (a board that sends
-nothing: a hang guard, not a measure of the wheel)."""
 
 State = Literal["waiting", "still", "turning"]
 
@@ -91,34 +83,3 @@ class StandStill:
                 self.state = "turning"
                 break
         return self.state
-
-
-def wait_until_still(
-    link: Link,
-    still_for: float = STILL_FOR,
-    timeout: float = STILL_TIMEOUT,
-    poll: float = 0.005,
-) -> SampleBatch:
-    """Stop the motor on ``link`` and read its samples until the wheel stands (board time,
-    :class:`StandStill`); the samples read. DeviceError with one line when it still turns
-    after ``timeout`` s of board time, or when no sample comes for :data:`HOST_GUARD` s."""
-    link.samples()  # what came before: the motor was still on
-    link.stop()
-    watch = StandStill(still_for, timeout)
-    seen: list[SampleBatch] = []
-    quiet_since = time.monotonic()
-    while True:
-        batch = link.samples()
-        if len(batch):
-            seen.append(batch)
-            quiet_since = time.monotonic()
-            state = watch.feed(batch)
-            if state == "still":
-                return SampleBatch.concat(seen)
-            if state == "turning":
-                raise DeviceError(timeout_message(timeout))
-        elif time.monotonic() - quiet_since > HOST_GUARD:
-            raise DeviceError(
-                f"{link.port}: no samples for {HOST_GUARD:g} s while waiting for the wheel to stand"
-            )
-        time.sleep(poll)

@@ -3,7 +3,7 @@
 A step log has one row per sample: time ``t`` (s), the voltage on the motor ``u``
 (V, u_A; in force from this row's instant until the next row), the measured speed
 ``omega`` (rad/s) and any other columns (``u_req`` V, ``theta`` rad, ``count``,
-``t_us`` us, ...). The files live in :mod:`minseg_tui.lab.files`; this module is the
+``t_us`` us, ...). The files live in :mod:`minseg_tui.lab.saving.files`; this module is the
 data and the arithmetic on it (no I/O).
 """
 

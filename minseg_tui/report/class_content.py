@@ -1,10 +1,10 @@
 """The class report as data: the table of groups, what stands out, one figure per quantity.
 
-:func:`build` turns a :class:`~minseg_tui.lab.classview.ClassView` into a
+:func:`build` turns a :class:`~minseg_tui.lab.views.classview.ClassView` into a
 :class:`~minseg_tui.report.content.Report`, so :mod:`.markdown` and :mod:`.html` render it
 as they render a session's report; :func:`csv_text` writes the table as CSV (SI units,
 full precision). The numbers are the class view's, which are the sessions' own
-(:meth:`~minseg_tui.lab.session.Session.results`): nothing is computed here but layout.
+(:meth:`~minseg_tui.lab.state.session.Session.results`): nothing is computed here but layout.
 """
 
 from __future__ import annotations
@@ -13,8 +13,8 @@ import csv
 import io
 import math
 
-from minseg_tui.lab.classview import JUDGED, QUANTITIES, THRESHOLD, ClassView, Group
-from minseg_tui.lab.compare import format_diff
+from minseg_tui.lab.state.compare import format_diff
+from minseg_tui.lab.views.classview import JUDGED, QUANTITIES, THRESHOLD, ClassView, Group
 from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.report.content import Figure, Figures, Report, Section, Table
 from minseg_tui.report.svg import Band, Line, Mark, plot

@@ -1,6 +1,6 @@
 """What a session's report says, as data: sections of paragraphs, tables and figures.
 
-:func:`build` reads a :class:`~minseg_tui.lab.session.Session` (its entries, the results it
+:func:`build` reads a :class:`~minseg_tui.lab.state.session.Session` (its entries, the results it
 computes, its recorded runs) and returns a :class:`Report`; :mod:`.markdown` and
 :mod:`.html` only render it. The report is the one place where derived numbers are
 written down.
@@ -14,10 +14,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import steps as lab_steps
-from minseg_tui.lab.compare import ANSWERED_FIRST, format_diff
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.views import step_window
+from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.state.compare import ANSWERED_FIRST, format_diff
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import check_words
+from minseg_tui.lab.views.session import step_window
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import RisingStep, StepResult
@@ -58,9 +59,18 @@ class Figures:
 
 
 @dataclass
+class Fold:
+    """Blocks a reader opens when they want them (HTML: a <details> fold; Markdown: a
+    subsection), under ``title``; ``blocks`` as in :class:`Section` (no Fold in a Fold)."""
+
+    title: str
+    blocks: list[object] = field(default_factory=list)
+
+
+@dataclass
 class Section:
     """A titled part of the report; ``blocks`` in order: str (a paragraph), Table, Figure,
-    Figures, or a list of str (bullet points)."""
+    Figures, a list of str (bullet points), or a Fold of such blocks."""
 
     title: str
     blocks: list[object] = field(default_factory=list)
@@ -434,17 +444,17 @@ _GAIN_FIGURES: tuple[tuple[str, str, str], ...] = (
 
 
 def _gain_name(key: str) -> tuple[str, str]:
-    bare = key.removeprefix("baseline_").removeprefix("extended_")
+    bare = check_words.stem(key)
     return next(((n, u) for k, n, u in _GAIN_FIGURES if k == bare), (bare, ""))
 
 
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     g = r.gain
     named = r.finding.cause != "none"
-    lead = r.lead.figure.removeprefix("baseline_").removeprefix("extended_") if r.lead else ""
+    lead = check_words.stem(r.lead.figure) if r.lead else ""
     rows = []
     for key, name, unit in sorted(_GAIN_FIGURES, key=lambda f: f[0] != lead):
-        b, e = g.get(f"baseline_{key}"), g.get(f"extended_{key}")
+        b, e = check_words.figure(g, key)
         if b is None:
             continue
         rows.append(
@@ -461,8 +471,7 @@ def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
     name, unit = _gain_name(r.lead.figure)
-    key = r.lead.figure.removeprefix("baseline_").removeprefix("extended_")
-    b, e = r.gain.get(f"baseline_{key}"), r.gain.get(f"extended_{key}")
+    b, e = check_words.figure(r.gain, r.lead.figure)
     if b is None:
         return None
     if r.finding.cause == "none" or e is None:
@@ -624,9 +633,17 @@ def _model_check_section(session: Session) -> Section | None:
     if r is None:
         sec.blocks.append(f"The model check could not run on {mc.run}: {mc.problem}")
         return sec
+    try:
+        log: StepLog | None = session.load_run(mc.run)
+    except (InputError, KeyError):
+        log = None
+    u = np.asarray(log.u, float) if log is not None and len(log) == np.asarray(r.t).size else None
+    sec.blocks.append(check_words.join(check_words.lead(r, u)))
+    sec.blocks.append(_model_check_figures(mc.run, r, log))
+    details = Fold("Details")
     lead = _lead(r)
     if lead:
-        sec.blocks.append(lead)
+        details.blocks.append(lead)
     b, e, f = r.baseline, r.extended, r.finding
     named = f.cause != "none"
     items = []
@@ -638,7 +655,8 @@ def _model_check_section(session: Session) -> Section | None:
         f"{_num(b.fit_percent, 3)} %).",
         *_two_fits(session, mc.run, b.params),
         f"Where it deviates: {r.where}.",
-        f"Most likely cause: {in_words(f.cause)}. {f.evidence[:1].upper() + f.evidence[1:]}",
+        f"Most likely cause: {in_words(f.cause)}. The check's evidence, over the whole log: "
+        f"{f.evidence}",
     ]
     items += [f"Also: {in_words(o.cause)} ({_params(o.params)}): {o.evidence}" for o in f.others]
     if named:
@@ -647,16 +665,16 @@ def _model_check_section(session: Session) -> Section | None:
             f"{_num(e.rmse, 3)} rad/s rms (fit {_num(e.fit_percent, 3)} %), "
             f"{_num(r.gain.get('rmse_reduction_percent'), 3)} % lower rms."
         )
-    sec.blocks.append(items)
+    details.blocks.append(items)
     head = (
         "figure",
         "first-order model",
         f"extended model ({in_words(e.model)})" if named else "extended",
     )
-    sec.blocks.append(Table(head, _gain_rows(r)))
+    details.blocks.append(Table(head, _gain_rows(r)))
     floor, noise, angle = (r.gain.get(k) for k in ("noise_floor", "noise", "angle_floor"))
     if floor is not None or noise is not None:
-        sec.blocks.append(
+        details.blocks.append(
             "The speed's noise: "
             + "; ".join(
                 x
@@ -674,16 +692,12 @@ def _model_check_section(session: Session) -> Section | None:
             + ". An error near it says nothing about a model; the part above it does."
         )
     if f.caveats:
-        sec.blocks.append("What the check cannot say here:")
-        sec.blocks.append([c.text for c in f.caveats])
+        details.blocks.append("What the check cannot say here:")
+        details.blocks.append([c.text for c in f.caveats])
     if r.anomalies:
-        sec.blocks.append("Anomalies (reported, not counted as causes):")
-        sec.blocks.append([a.text for a in r.anomalies])
-    try:
-        log: StepLog | None = session.load_run(mc.run)
-    except (InputError, KeyError):
-        log = None
-    sec.blocks.append(_model_check_figures(mc.run, r, log))
+        details.blocks.append("Anomalies (reported, not counted as causes):")
+        details.blocks.append([a.text for a in r.anomalies])
+    sec.blocks.append(details)
     return sec
 
 

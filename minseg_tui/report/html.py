@@ -9,7 +9,7 @@ from __future__ import annotations
 from html import escape
 
 from minseg_tui.quantities import join_units
-from minseg_tui.report.content import Figure, Figures, Report, Table
+from minseg_tui.report.content import Figure, Figures, Fold, Report, Table
 
 
 def _text(text: str) -> str:
@@ -28,10 +28,12 @@ th { background: #f2f2f2; }
 figure { margin: 1em 0; } figcaption { font-style: italic; color: #555; }
 figure svg { display: block; width: 100%; height: auto; }
 .byline { color: #555; }
+details { margin: 1em 0; } summary { cursor: pointer; font-weight: bold; }
 @media print {
   body { max-width: none; margin: 0; padding: 0; font-size: 9pt; }
   .table { overflow: visible; } th, td { padding: 0.1em 0.3em; }
   figure, tr { break-inside: avoid; } h2 { break-after: avoid; }
+  details > * { display: block; }
 }
 """
 
@@ -63,6 +65,22 @@ def _figure(f: Figure) -> str:
     )
 
 
+def _block(b: object) -> str:
+    """One block of a section as HTML (a Fold: a <details> the reader opens)."""
+    if isinstance(b, Table):
+        return _table(b)
+    if isinstance(b, Figure):
+        return _figure(b)
+    if isinstance(b, Figures):
+        return '<div class="figures">' + "".join(_figure(f) for f in b.figures) + "</div>"
+    if isinstance(b, Fold):
+        inner = "\n".join(_block(x) for x in b.blocks)
+        return f"<details><summary>{escape(b.title)}</summary>\n{inner}\n</details>"
+    if isinstance(b, list):
+        return "<ul>" + "".join(f"<li>{_text(str(i))}</li>" for i in b) + "</ul>"
+    return f"<p>{_text(str(b))}</p>"
+
+
 def render(report: Report) -> str:
     """The report as an HTML document (text)."""
     out = [
@@ -76,18 +94,6 @@ def render(report: Report) -> str:
     ]
     for sec in report.sections:
         out.append(f"<h2>{escape(sec.title)}</h2>")
-        for b in sec.blocks:
-            if isinstance(b, Table):
-                out.append(_table(b))
-            elif isinstance(b, Figure):
-                out.append(_figure(b))
-            elif isinstance(b, Figures):
-                out.append(
-                    '<div class="figures">' + "".join(_figure(f) for f in b.figures) + "</div>"
-                )
-            elif isinstance(b, list):
-                out.append("<ul>" + "".join(f"<li>{_text(str(i))}</li>" for i in b) + "</ul>")
-            else:
-                out.append(f"<p>{_text(str(b))}</p>")
+        out += [_block(b) for b in sec.blocks]
     out.append("</body></html>")
     return "\n".join(out)

@@ -9,7 +9,7 @@ from __future__ import annotations
 import base64
 import re
 
-from minseg_tui.report.content import Figure, Figures, Report, Table
+from minseg_tui.report.content import Figure, Figures, Fold, Report, Table
 
 _INLINE = re.compile(
     r"[\\`*\[\]|~]"  # emphasis, code, links and images, table cells, strikethrough
@@ -61,15 +61,23 @@ def render(report: Report) -> str:
     for sec in report.sections:
         out += [f"## {_heading(sec.title)}", ""]
         for b in sec.blocks:
-            if isinstance(b, Table):
-                out.append(_table(b))
-            elif isinstance(b, Figure):
-                out.append(_figure(b))
-            elif isinstance(b, Figures):
-                out.append("\n\n".join(_figure(f) for f in b.figures))
-            elif isinstance(b, list):
-                out.append("\n".join(f"- {_cell(str(i))}" for i in b))
+            if isinstance(b, Fold):  # a subsection of the section
+                out += [f"### {_heading(b.title)}", ""]
+                for x in b.blocks:
+                    out += [_block(x), ""]
             else:
-                out.append(escape(str(b)))
-            out.append("")
+                out += [_block(b), ""]
     return "\n".join(out)
+
+
+def _block(b: object) -> str:
+    """One block of a section as Markdown."""
+    if isinstance(b, Table):
+        return _table(b)
+    if isinstance(b, Figure):
+        return _figure(b)
+    if isinstance(b, Figures):
+        return "\n\n".join(_figure(f) for f in b.figures)
+    if isinstance(b, list):
+        return "\n".join(f"- {_cell(str(i))}" for i in b)
+    return escape(str(b))

@@ -5,8 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import atomic_write_text
+from minseg_tui.lab.saving.store import atomic_write_text
+from minseg_tui.lab.state.session import Session
 from minseg_tui.report import content, html, markdown
 
 

@@ -9,8 +9,10 @@ files); and ``lab_changed``, a signal published whenever the session changed. It
 the requests that need the device (:class:`VoltageRequested`, :class:`RunRequested`, F2, F8).
 
 The device is opened in a worker; a second worker drains it every 50 ms into the bounded
-live buffer (and into the run being recorded) and posts coalesced messages, so the event
-loop never waits on the board.
+live buffer (and into the Task 10 procedure, :class:`~minseg_tui.lab.state.task10.Task10`, which
+drives the run and keeps it) and posts coalesced messages, so the event loop never waits on
+the board; the app shows the run's progress. Workers that only read the session (views,
+the report) get a frozen snapshot of it.
 """
 
 from __future__ import annotations
@@ -29,8 +31,8 @@ from typing import Any
 from textual import on, work
 from textual.actions import ActionParseResult
 from textual.app import App, SystemCommand
-from textual.await_complete import AwaitComplete
 from textual.binding import Binding
+from textual.command import CommandPalette
 from textual.dom import DOMNode
 from textual.notifications import SeverityLevel
 from textual.reactive import reactive
@@ -40,11 +42,11 @@ from textual.worker import get_current_worker
 
 from minseg_tui.device.boardcheck import CHECK_U, NoCountWatch, check_board, count_revolution
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.device.standstill import PRE_ROLL, StandStill, timeout_message
+from minseg_tui.device.standstill import timeout_message
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step as lab_step
-from minseg_tui.lab.store import SessionInfo, SessionsUnreadable, list_sessions
+from minseg_tui.lab.saving.store import SessionInfo, SessionsUnreadable, list_sessions
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
@@ -57,14 +59,12 @@ from minseg_tui.ui.messages import (
     MotorKnown,
     NoCounts,
     RevolutionCounted,
-    RunArmed,
     RunRequested,
     SamplesArrived,
     StepShown,
+    Task10Moved,
     VoltageRequested,
-    WheelStood,
 )
-from minseg_tui.ui.recording import ActiveRun, RunProgress
 from minseg_tui.ui.screens.boardcheck import (
     BoardCheckScreen,
     RevolutionScreen,
@@ -72,7 +72,8 @@ from minseg_tui.ui.screens.boardcheck import (
 )
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.help import HelpScreen
-from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
+from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.screens.status import StatusScreen
@@ -116,46 +117,6 @@ EVENT_TEXT: dict[str, str] = {
 }
 """What the status line says at once for a link event (``error`` shows the link's own line)."""
 
-RUN_ENDED_BY: dict[str, str] = {
-    "disconnected": "cable",
-    "watchdog": "watchdog",
-    "boot": "restart",
-    "motor": "restart",
-    "error": "link",
-}
-"""A link event that ends a run -> what interrupted it (:data:`minseg_tui.lab.runs.ENDED_BY`)."""
-
-PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
-    ("f3", "set_voltage", "Set V", "setting a voltage"),
-    ("f4", "capture", "Capture", "capturing omega_ss"),
-    ("f5", "run_steps", "Run", "the step experiment"),
-    ("f6", "run_fast", "Run 5 ms", "the fast step experiment"),
-    ("f7", "formula", "Formula", "a table formula"),
-    ("f9", "zoom_next", "Zoom", "zooming the step log"),
-    ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
-    ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
-    ("ctrl+r", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
-)
-"""Keys that act on the current step's panel: (keys, the panel's method, footer label, what it
-is; no label: not in the footer). The footer shows a key on the steps whose panel offers the
-method; elsewhere the key says that it is not part of this step. None is printable, so no key
-is taken from typing in an entry (Ctrl+arrows stay the entry's word moves)."""
-
-
-def _first(keys: str) -> bool:
-    """Whether a panel key is a function key (taken before any widget: no entry uses them;
-    the arrows with Alt or Ctrl stay the entry's word moves)."""
-    return keys.startswith("f")
-
-
-RUN_ENDS = frozenset({"stepdone", "disconnected", "watchdog", "boot", "error"})
-"""Link events after which a run being recorded takes no more samples."""
-
-RUN_KIND = {"manual": "steps", "fast": "fast"}
-"""Task 10's plans (lab.steps) to the session's run kinds."""
-
-LAB_PERIOD = 0.025
-"""Sample period restored after a fast run, s (the manual's)."""
 
 STREAM_PERIOD = 0.05
 """How often the stream worker drains the device, s."""
@@ -174,8 +135,13 @@ TERMINATING: tuple[int, ...] = tuple(
 REVOLUTION_TIMEOUT = 300.0
 """Longest the hand check counts without an Enter, s."""
 
-WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error", "silent"})
-"""Link events that end the wait for the wheel to stand before a run (no run starts)."""
+ENDED_WORDS: dict[str, str] = {
+    "stopped": "stopped",
+    "quit": "app closed",
+    "not started": "could not start",
+}
+"""What ended a run (:attr:`minseg_tui.lab.state.task10.Outcome.why`) in the words of the run's
+last line, where a link event's words (:data:`EVENT_TEXT`) do not say it."""
 
 
 def motor_words(u_req: float | None, plan_high: float | None = None) -> str:
@@ -199,13 +165,14 @@ class LabApp(App[None]):
         Binding("f8", "export", "Export"),
         Binding("f10", "board_check", "Check board", show=False, priority=True),
         # the F-keys are the app's before any widget's (priority): handled in the order typed,
-        # so F4 has captured and moved the focus on before the reading typed after it arrives
+        # so F4 has captured and moved the focus on before the reading typed after it arrives;
+        # the arrows with Alt or Ctrl stay the entry's word moves
         *[
-            Binding(keys, f"panel('{method}')", label, show=bool(label), priority=_first(keys))
-            for keys, method, label, _ in PANEL_KEYS
+            Binding(keys, action, label, show=bool(label), priority=keys.startswith("f"))
+            for keys, action, label, _ in PANEL_KEYS
         ],
         *[
-            Binding(keys, f"not_here('{what}')", show=False, priority=_first(keys))
+            Binding(keys, f"not_here('{what}')", show=False, priority=keys.startswith("f"))
             for keys, _, _, what in PANEL_KEYS
         ],
     ]
@@ -241,14 +208,12 @@ class LabApp(App[None]):
         self.session: Shared[Session] | None = None
         """The open session (None on the start screen)."""
         self.live = LiveBuffer()
-        self.recording: ActiveRun | None = None
-        """The Task 10 run being recorded."""
+        self.task10: Task10 | None = None
+        """The Task 10 procedure under way (fed by the stream worker), or None."""
+        self._run: ActiveRun | None = None
         self.lab_changed: Signal[None] = Signal(self, "lab-changed")
         """Published whenever the session changed (an entry, a capture, a run, an import)."""
         self._meter_wanted = False
-        self._stand: StandStill | None = None
-        """The wait for the wheel to stand before a run (None: no run waits)."""
-        self._pending_plan: str | None = None
         self._stop = threading.Event()
         self._signals: list[int] = []  # the terminating signals the app answers
         self._tap: queue.Queue[SampleBatch] | None = None
@@ -258,6 +223,17 @@ class LabApp(App[None]):
         self._step_id = ""
         if not config.animations:
             self.animation_level = "none"
+
+    @property
+    def recording(self) -> ActiveRun | None:
+        """The Task 10 run being recorded, as the screen knows it: from the message that it
+        started to the one that it ended (None: none, or the wheel is still awaited)."""
+        return self._run
+
+    @property
+    def _run_busy(self) -> bool:
+        """Task 10 waits for the wheel or records."""
+        return self.task10 is not None and self.task10.active
 
     def notify(
         self,
@@ -344,14 +320,10 @@ class LabApp(App[None]):
                 timeout=15,
             )
 
-    def pop_screen(self) -> AwaitComplete:
-        """Close the screen on top (help, a question, the palette), never the start or the
-        lab screen under them (they are switched to, not pushed): Textual's palette closes
-        itself once per Enter it is handed, and two Enters in one burst ('Ctrl+P task 6
-        Enter ... Enter') closed the lab screen under it and left an empty terminal."""
-        if isinstance(self.screen, StatusScreen):
-            return AwaitComplete()
-        return super().pop_screen()
+    def action_command_palette(self) -> None:
+        """Ctrl+P: the palette, closed once however many Enters it is handed."""
+        if self.use_command_palette and not isinstance(self.screen, CommandPalette):
+            self.push_screen(Palette(id="--command-palette"))
 
     async def action_start_lab(self) -> None:
         """Enter on the start screen: open the lab it asks for, and return once the lab shows
@@ -433,8 +405,13 @@ class LabApp(App[None]):
         while not worker.is_cancelled and not self._stop.wait(STREAM_PERIOD):
             batch = device.samples()
             events = device.events()
-            rec = self.recording
-            watch = self._stand
+            task = self.task10
+            # the procedure takes the samples first (it drives the board and keeps the run:
+            # here, never on the UI thread); the screen hears that it went on before the
+            # samples, and that it ended after the link's events (the event that ended it)
+            moved = task is not None and task.active and task.feed(batch, events)
+            if moved and task is not None and task.outcome is None:
+                self.post_message(Task10Moved(task))
             if len(batch):
                 self.live.extend(batch)
                 tap = self._tap
@@ -442,26 +419,14 @@ class LabApp(App[None]):
                     tap.put(batch)
                 elif (u := self._watch.feed(batch)) is not None:
                     self.post_message(NoCounts(u))
-                if rec is not None:
-                    rec.append(batch)
-                    if not rec.armed and rec.samples >= PRE_ROLL:
-                        rec.armed = True
-                        self.post_message(RunArmed(rec.name))
-                if watch is not None and watch.state == "waiting":
-                    state = watch.feed(batch)
-                    if state != "waiting":
-                        self.post_message(WheelStood(watch, state))
                 self.post_message(SamplesArrived(replace(device.stats), self.live.total))
             if device.u_req != u_req:
                 u_req = device.u_req
                 self.post_message(MotorKnown(u_req))
-            if rec is not None:
-                if any(ev.kind in RUN_ENDS for ev in events):
-                    rec.end()
-                rec.tick()  # the run's samples reach the disk within a second (the flush
-                # fsyncs: here, never on the UI thread)
             for ev in events:
                 self.post_message(LinkEventArrived(ev))
+            if moved and task is not None and task.outcome is not None:
+                self.post_message(Task10Moved(task))
             now = time.monotonic()
             if self._meter_wanted and device.board is not None and now >= next_meter:
                 next_meter = now + METER_PERIOD
@@ -484,7 +449,7 @@ class LabApp(App[None]):
     @on(MotorKnown)
     def _motor_known(self, event: MotorKnown) -> None:
         """The link's own idea of the motor (after a reconnect: off, nothing restored)."""
-        if self.recording is not None or self._stand is not None:
+        if self._run_busy:
             return  # the run's own words stand
         self.motor = motor_words(event.u_req)
         if event.u_req is not None and self.requested != event.u_req:
@@ -501,17 +466,9 @@ class LabApp(App[None]):
         kind = ev.kind
         if kind == "step":
             return
-        if kind == "stepdone":
-            self.motor = "off"
+        if kind in ("stepdone", "disconnected", "watchdog", "boot", "error", "motor"):
+            self.motor = "off"  # a run these end is ended by the Task 10 procedure
             self.requested = None
-            self.finish_run("done")
-        elif kind in ("disconnected", "watchdog", "boot", "error", "motor"):
-            self.motor = "off"
-            self.requested = None
-            if self.recording is not None:
-                self.finish_run(EVENT_TEXT.get(kind, "stopped"), RUN_ENDED_BY.get(kind, "link"))
-        if kind in WAIT_ENDS and self._stand is not None:
-            self._cancel_wait(f"{EVENT_TEXT.get(kind, ev.message)}: the run did not start")
         if kind == "connected" and self.link.event == "":
             self.link = self.link.after(ev, "")
             return
@@ -536,7 +493,7 @@ class LabApp(App[None]):
         if self._tap is not None:
             self.notify("the board check is running", severity="information")
             return None
-        if self.recording is not None or self._stand is not None:
+        if self._run_busy:
             self.notify("a run is in progress: F2 stops it, then F10 checks", severity="warning")
             return None
         if isinstance(self.screen, BoardCheckScreen):
@@ -692,14 +649,15 @@ class LabApp(App[None]):
         self.start_run(event.plan)
 
     def start_run(self, name: str) -> None:
-        """Task 10: stop the motor and, once the wheel stands (:class:`StandStill` on the
-        stream), start the board's step sequence for plan ``name`` and record it."""
+        """Task 10: the procedure (:class:`~minseg_tui.lab.state.task10.Task10`) for plan ``name``:
+        motor off now; the stream worker feeds it, and it starts the board's sequence once
+        the wheel stands and keeps the run when it ends. The app shows its progress."""
         if self._device is None or self.session is None:
             self.notify(
                 "no device: the run needs the board or the virtual MinSeg", severity="error"
             )
             return
-        if self.recording is not None or self._stand is not None:
+        if self._run_busy:
             self.notify("a run is in progress; F2 stops it", severity="warning")
             return
         with self.session as s:
@@ -711,102 +669,84 @@ class LabApp(App[None]):
                 severity="error",
             )
             return
+        task = Task10.of(self.session, self._device, name)
         try:
-            self._device.stop()
+            task.begin()
         except MinsegError as exc:
             self.notify(str(exc), title="run", severity="error")
             return
+        self.task10 = task
         self.motor = "off"
         self.requested = None
-        self._pending_plan = name
-        self._stand = StandStill()
-        self.run_progress = RunProgress(
-            0.0,
-            "motor off; the run starts once the wheel stands · F2 cancels",
-            recording=False,
-            waiting=True,
-            kind=RUN_KIND[name],
-        )
+        self.run_progress = task.progress()
 
-    @on(WheelStood)
-    def _wheel_stood(self, event: WheelStood) -> None:
-        if event.watch is not self._stand or self._pending_plan is None:
-            return  # a wait that was cancelled
-        name = self._pending_plan
-        if event.state != "still":
-            self._cancel_wait(timeout_message(event.watch.timeout))
+    @on(Task10Moved)
+    def _task10_moved(self, event: Task10Moved) -> None:
+        """The procedure went on: the board runs the sequence, or it ended."""
+        task = event.task
+        if task is not self.task10:
             return
-        self._stand, self._pending_plan = None, None
-        self._begin_run(name)
+        if task.outcome is not None:
+            self._task10_ended(task.outcome)
+            return
+        self._run = task.run
+        if task.phase == "stepping":
+            self.motor = motor_words(None, task.plan.high)
+            self.requested = None
+        self.run_progress = task.progress()
 
-    def _cancel_wait(self, why: str) -> None:
-        """The wait for the wheel ends without a run: say ``why``."""
-        self._stand, self._pending_plan = None, None
-        self.run_progress = RunProgress(0.0, why, recording=False)
-        self.notify(why, title="Task 10", severity="warning")
+    def finish_run(self, why: str = "done", ended_by: str = "") -> None:
+        """End Task 10 now (F2, quit; ``why`` ``done`` keeps the run as complete): a wait ends
+        without a run, a run being recorded is kept, interrupted by ``ended_by`` (a key of
+        :data:`minseg_tui.lab.saving.runs.ENDED_BY`). A run the group chose stays in use; without a
+        choice, Tasks 11-15 use the newest complete 25 ms run (:meth:`Session.step_run`)."""
+        task = self.task10
+        if task is None or not task.active:
+            return
+        # F2 has switched the motor off; on quit the app switches it off after
+        outcome = task.stop("done" if why == "done" else ended_by or "stopped", motor_off=False)
+        if outcome is not None:
+            self._task10_ended(outcome)
 
-    def _begin_run(self, name: str) -> None:
-        """The wheel stands: the sample period of plan ``name`` and a new run; the board's
-        sequence starts once the run holds a few samples of the standing wheel
-        (:class:`RunArmed`)."""
-        if self._device is None or self.session is None:
+    def _task10_ended(self, outcome: Outcome) -> None:
+        """Say how Task 10 ended, once."""
+        if self.task10 is None:
             return
-        plan = dict(lab_step("task10").plans)[name]
-        try:
-            self._device.set_period(plan.ts)
-            with self.session as s:
-                recorder = s.start_run(RUN_KIND[name], plan)
-        except MinsegError as exc:
-            self.notify(str(exc), title="run", severity="error")
-            self.run_progress = RunProgress(0.0, f"could not start: {exc}", recording=False)
+        self.task10, self._run = None, None
+        if outcome.problem and outcome.why in ("no run", "not started"):
+            self.notify(outcome.problem, title="run", severity="error")
+        if not outcome.started:
+            if outcome.why == "no run":
+                why = f"could not start: {outcome.problem}"
+                self.run_progress = RunProgress(0.0, why, recording=False)
+                return
+            if outcome.why == "turning":
+                why = timeout_message()
+            elif outcome.event is not None:
+                said = EVENT_TEXT.get(outcome.event.kind, outcome.event.message)
+                why = f"{said}: the run did not start"
+            else:
+                why = "run cancelled (F2): the motor is off"
+            self.run_progress = RunProgress(0.0, why, recording=False)
+            self.notify(why, title="Task 10", severity="warning")
             return
-        self.recording = ActiveRun(recorder, plan, RUN_KIND[name])
-        self.run_progress = self.recording.progress()
-
-    @on(RunArmed)
-    def _run_armed(self, event: RunArmed) -> None:
-        """The run holds the standing wheel: the board starts the sequence."""
-        rec = self.recording
-        if rec is None or rec.name != event.recorder_name or rec.started or self._device is None:
-            return
-        rec.started = True
-        plan = rec.plan
-        try:
-            self._device.step(plan.low, plan.high, plan.half_period, plan.periods)
-        except MinsegError as exc:
-            self.notify(str(exc), title="run", severity="error")
-            self.finish_run("could not start", "not started")
-            return
-        self.motor = motor_words(None, plan.high)
-        self.requested = None
-
-    def finish_run(self, why: str, ended_by: str = "") -> None:
-        """The run ended (done, stopped, board lost): keep what was recorded, with what
-        interrupted it (``ended_by``, a key of :data:`minseg_tui.lab.runs.ENDED_BY`; "" when
-        it went to the end). A run the group chose stays in use; without a choice, Tasks
-        11-15 use the newest complete 25 ms run (:meth:`Session.step_run`)."""
-        rec, self.recording = self.recording, None
-        if rec is None or self.session is None:
-            return
-        try:
-            rec.close()
-            with self.session as s:
-                info = s.finish_run(rec.recorder, stopped_early=why != "done", ended_by=ended_by)
-            kept = (
-                f"run {rec.name}: too few samples, nothing kept"
-                if info is None
-                else f"run {info.name}: {info.samples} samples kept"
-                + (f", {info.dropped} lost on the link" if info.dropped else "")
+        if outcome.event is not None:
+            said = EVENT_TEXT.get(outcome.event.kind, "stopped")
+        else:
+            said = ENDED_WORDS.get(outcome.why, outcome.why)
+        info = outcome.info
+        if outcome.problem and outcome.why != "not started":
+            kept = outcome.problem
+        elif info is None:
+            kept = f"run {outcome.run}: too few samples, nothing kept"
+        else:
+            kept = f"run {info.name}: {info.samples} samples kept" + (
+                f", {info.dropped} lost on the link" if info.dropped else ""
             )
-        except MinsegError as exc:
-            kept = str(exc)
-        self.notify(f"{why}: {kept}", title="Task 10")
-        self.run_progress = RunProgress(1.0 if why == "done" else 0.0, f"{why}: {kept}", False)
-        if self._device is not None and rec.plan.ts != LAB_PERIOD:
-            try:
-                self._device.set_period(LAB_PERIOD)
-            except MinsegError:
-                pass
+        self.notify(f"{said}: {kept}", title="Task 10")
+        self.run_progress = RunProgress(
+            1.0 if outcome.why == "done" else 0.0, f"{said}: {kept}", False
+        )
         self.lab_changed.publish(None)
 
     # -- saving ----------------------------------------------------------------------------
@@ -938,89 +878,71 @@ class LabApp(App[None]):
                 self.notify(
                     f"{exc} (a board without USB power stops by itself)", severity="warning"
                 )
-        if self._stand is not None:
-            self._cancel_wait("run cancelled (F2): the motor is off")
-        if self.recording is not None:
-            self.finish_run("stopped", "stopped")
+        self.finish_run("stopped", "stopped")
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
 
-    def _panel_method(
-        self, name: str, screen: Screen[Any] | None = None
-    ) -> Callable[[], None] | None:
-        """The method ``name`` of the panel of the step ``screen`` (default: the screen on
-        top) shows, or None (no lab screen, or not this step)."""
-        screen = self.screen if screen is None else screen
-        panel = screen.panel if isinstance(screen, LabScreen) else None
-        handler = getattr(panel, name, None)
-        offers = getattr(panel, "offers", None)
-        return None if handler is None or (offers is not None and not offers(name)) else handler
-
-    def _panel_action(self, name: str, what: str) -> None:
-        handler = self._panel_method(name)
-        if handler is not None:
-            handler()
-        elif self._lab_screen() is not None:
-            self.action_not_here(what)
-
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """A panel key is live (and in the footer) only on the steps whose panel has it."""
-        if action == "panel":
-            return self._panel_method(str(parameters[0])) is not None
+        if action in PANEL_ACTIONS:
+            screen = self._lab_screen()
+            return screen is not None and action in screen.panel_keys()
         return True
 
-    async def action_panel(self, name: str) -> None:
-        """A panel key: the panel's method, then wait until what it asked (a capture, say) is
-        done, so the keys typed after it act on the result."""
-        handler = self._panel_method(name)
+    async def _press(self, action: str) -> None:
         screen = self._lab_screen()
-        if handler is None or screen is None:
-            return
-        handler()
-        panel = screen.panel
-        if panel is not None:
-            await screen.settle_from(panel)
+        if screen is not None:
+            await screen.press(action)
+
+    async def action_set_voltage(self) -> None:
+        await self._press("set_voltage")
+
+    async def action_capture(self) -> None:
+        await self._press("capture")
+
+    async def action_run_steps(self) -> None:
+        await self._press("run_steps")
+
+    async def action_run_fast(self) -> None:
+        await self._press("run_fast")
+
+    async def action_formula(self) -> None:
+        await self._press("formula")
+
+    async def action_zoom_next(self) -> None:
+        await self._press("zoom_next")
+
+    async def action_pick_prev(self) -> None:
+        await self._press("pick_prev")
+
+    async def action_pick_next(self) -> None:
+        await self._press("pick_next")
+
+    async def action_reveal(self) -> None:
+        await self._press("reveal")
 
     def action_not_here(self, what: str) -> None:
+        """A panel key on a step whose panel does not have it (nothing off the lab screen)."""
         if self._lab_screen() is not None:
             self.notify(f"{what} is not part of this step", severity="information")
-
-    def action_set_voltage(self) -> None:
-        self._panel_action("set_voltage", "setting a voltage")
-
-    def action_capture(self) -> None:
-        self._panel_action("capture", "capturing omega_ss")
-
-    def action_run_steps(self) -> None:
-        self._panel_action("run_steps", "the step experiment")
-
-    def action_run_fast(self) -> None:
-        self._panel_action("run_fast", "the fast step experiment")
-
-    def action_formula(self) -> None:
-        self._panel_action("formula", "a table formula")
-
-    def action_zoom_next(self) -> None:
-        self._panel_action("zoom_next", "zooming the step log")
-
-    def action_reveal(self) -> None:
-        self._panel_action("reveal", "revealing computed values")
 
     def action_export(self) -> None:
         if self.session is None:
             self.notify("start or resume a session first", severity="warning")
             return
-        self._export(self.session)
+        with self.session as s:
+            snapshot = s.snapshot()
+        self._export(snapshot)
 
     @work(thread=True, exclusive=True, group="export", name="report")
-    def _export(self, session: Shared[Session]) -> None:
-        """Worker: write the report (it computes every result and figure)."""
+    def _export(self, session: Session) -> None:
+        """Worker: write the report of ``session``, a frozen snapshot (it computes every
+        result and figure)."""
         try:
             if self._writer is None:
                 raise MinsegError("this program was started without the report writer")
-            with session as s:
-                paths = tuple(str(p) for p in self._writer(s))
+            paths = tuple(str(p) for p in self._writer(session))
         except (MinsegError, OSError) as exc:
             self.call_from_thread(self.notify, str(exc), title="report", severity="error")
             return
@@ -1063,41 +985,26 @@ class LabApp(App[None]):
         only on the steps whose panel has it, as the footer shows its key."""
         yield from super().get_system_commands(screen)
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
-        for method, title, help_text, action in (
+        offered = screen.panel_keys() if isinstance(screen, LabScreen) else {}
+        for action, title, help_text in (
             (
                 "set_voltage",
                 "Set step voltage",
                 "Request the next of 2.5/3.5/4.5 V on the board (F3)",
-                self.action_set_voltage,
             ),
-            (
-                "capture",
-                "Capture omega_ss",
-                "Mean over the settled window (F4)",
-                self.action_capture,
-            ),
-            (
-                "run_steps",
-                "Run step sequence",
-                "Task 10 on the board, 25 ms (F5)",
-                self.action_run_steps,
-            ),
-            (
-                "run_fast",
-                "Run fast step sequence",
-                "Task 10 at 5 ms, board-timed (F6)",
-                self.action_run_fast,
-            ),
+            ("capture", "Capture omega_ss", "Mean over the settled window (F4)"),
+            ("run_steps", "Run step sequence", "Task 10 on the board, 25 ms (F5)"),
+            ("run_fast", "Run fast step sequence", "Task 10 at 5 ms, board-timed (F6)"),
             (
                 "reveal",
                 "Reveal computed values",
                 "Lab assistant: show this step's values before the group answers; the report "
                 "says so (Ctrl+R)",
-                self.action_reveal,
             ),
         ):
-            if self._panel_method(method, screen) is not None:
-                yield SystemCommand(title, help_text, action)
+            run = offered.get(action)
+            if run is not None:
+                yield SystemCommand(title, help_text, run)
         yield SystemCommand(
             "Board check",
             "Does the wheel turn when asked, and does the count follow it? (F10)",
@@ -1137,8 +1044,7 @@ class LabApp(App[None]):
         for signum in self._signals:
             loop.remove_signal_handler(signum)
         self._signals.clear()
-        if self.recording is not None:
-            self.finish_run("app closed", "quit")
+        self.finish_run("app closed", "quit")
         if self._device is not None:
             try:
                 self._device.stop()

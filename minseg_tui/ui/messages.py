@@ -1,8 +1,8 @@
 """The UI's messages: small dataclasses, coalesced where they come in floods.
 
 From the app's workers to the app: :class:`DeviceOpened`, :class:`SamplesArrived`,
-:class:`LinkEventArrived`, :class:`MeterRead`, :class:`MotorKnown`, :class:`WheelStood`,
-:class:`RunArmed`, :class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the screen up: the
+:class:`LinkEventArrived`, :class:`MeterRead`, :class:`MotorKnown`, :class:`Task10Moved`,
+:class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the screen up: the
 requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which drives the
 device; :class:`CaptureRequested`, :class:`LogImportRequested`, :class:`RunChosen` for the
 lab screen, which holds the session's entries) and :class:`StepShown`.
@@ -17,8 +17,8 @@ from textual.message import Message
 
 from minseg_tui.device.boardcheck import CheckResult, RevolutionResult
 from minseg_tui.device.link import LinkEvent, LinkStats
-from minseg_tui.device.standstill import StandStill, State
-from minseg_tui.lab.steps import Step
+from minseg_tui.lab.content.steps import Step
+from minseg_tui.lab.state.task10 import Task10
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.device import Device
 
@@ -72,20 +72,11 @@ class MotorKnown(Message):
 
 
 @dataclass
-class WheelStood(Message):
-    """The wait before a step run ended: ``state`` is ``still`` (start the run) or
-    ``turning`` (the wheel did not stand in time); ``watch`` says which wait it was."""
+class Task10Moved(Message):
+    """The Task 10 procedure ``task`` went on to its next phase (recording, the board's
+    sequence, ended: its ``outcome`` says how)."""
 
-    watch: StandStill
-    state: State
-
-
-@dataclass
-class RunArmed(Message):
-    """The run being recorded (``recorder_name``) holds its first samples of the standing
-    wheel: the board's step sequence may start."""
-
-    recorder_name: str
+    task: Task10
 
 
 @dataclass

@@ -10,8 +10,10 @@ T = TypeVar("T")
 
 class Shared(Generic[T]):
     """Holds ``value`` behind a lock: ``with shared as value: ...``. The lab's Session is
-    meant for one thread; the UI reads it from the event loop and from workers (results,
-    the model check, the report), so every use goes through here. Re-entrant."""
+    meant for one thread; the UI uses it from the event loop and from the stream worker
+    (the Task 10 procedure records and keeps its run), so every use goes through here. The
+    workers that only read it (views, the report) get a frozen snapshot instead
+    (:meth:`minseg_tui.lab.state.session.Session.snapshot`). Re-entrant."""
 
     def __init__(self, value: T) -> None:
         self._value = value

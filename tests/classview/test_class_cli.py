@@ -13,8 +13,8 @@ from pathlib import Path
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import lock_owner
+from minseg_tui.lab.saving.store import lock_owner
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import in_words
 
 from .build import group

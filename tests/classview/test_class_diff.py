@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from minseg_tui.lab.classview import read_group
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views.classview import read_group
 from minseg_tui.report.class_content import own_cell
 
 from .build import group

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from minseg_tui.lab.classview import QUANTITIES, judge, read_group
+from minseg_tui.lab.views.classview import QUANTITIES, judge, read_group
 from minseg_tui.report.class_content import table
 
 from .build import LEVELS, group

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from minseg_tui.lab.classview import (
+from minseg_tui.lab.views.classview import (
     MIN_GROUPS,
     THRESHOLD,
     Group,

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.files import write_step_log
+from minseg_tui.lab.saving.files import write_step_log
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import make_log
 from tests.shared_data import SHARED_DATA

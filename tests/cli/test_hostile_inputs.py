@@ -19,8 +19,8 @@ import pytest
 from minseg_tui.cli import main
 from minseg_tui.cli.output import json_text
 from minseg_tui.device.virtual import settings_from
-from minseg_tui.lab import csvread, files
-from minseg_tui.lab.files import write_step_log
+from minseg_tui.lab.saving import csvread, files
+from minseg_tui.lab.saving.files import write_step_log
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import make_log
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.files import write_step_log
+from minseg_tui.lab.saving.files import write_step_log
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
 from minseg_tui.model.steplog import StepLog

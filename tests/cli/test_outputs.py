@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.files import write_step_log
+from minseg_tui.lab.saving.files import write_step_log
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.model.synth import make_log
 
@@ -121,6 +121,13 @@ def test_a_closed_stdout_is_one_line_and_exit_2(tmp_path, argv):
     )
 
 
+@pytest.fixture(scope="module")
+def big_log(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """2M rows (59 MB, written once for the module: writing it takes seconds); the commands
+    only read it."""
+    return _big_log(tmp_path_factory.mktemp("big") / "log.csv", 2_000_000)
+
+
 def _big_log(path: Path, rows: int) -> Path:
     t = np.arange(rows) * 0.001
     u = np.where((t // 1.5) % 2 == 0, 2.5, 0.0)
@@ -135,9 +142,9 @@ def _big_log(path: Path, rows: int) -> Path:
     ("argv", "mib"),
     [(["analyze", "LOG"], 300), (["identify", "TABLE", "--R", "5.3", "--step", "LOG"], 500)],
 )
-def test_a_memory_limit_is_named_in_one_line(tmp_path, argv, mib):
+def test_a_memory_limit_is_named_in_one_line(tmp_path, big_log, argv, mib):
     """2M rows under an address-space limit (ulimit -v): the limit said, no traceback."""
-    log = _big_log(tmp_path / "log.csv", 2_000_000)
+    log = big_log
     (tmp_path / "table.csv").write_text(TABLE)
     argv = [
         str(log) if a == "LOG" else str(tmp_path / "table.csv") if a == "TABLE" else a for a in argv

@@ -18,8 +18,8 @@ import pytest
 from minseg_tui.device import protocol as P
 from minseg_tui.device.link import Link
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import RunPlan
+from minseg_tui.lab.content.steps import RunPlan
+from minseg_tui.lab.state.session import Session
 
 from .conftest import wait_for
 

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams, record
 
 ENTRIES = [

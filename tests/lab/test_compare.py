@@ -9,12 +9,13 @@ from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab import views
-from minseg_tui.lab.compare import format_diff, read_policy
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state.compare import format_diff, read_policy
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.model.plant import PlantParams, record
+from minseg_tui.quantities import example
 
 
 def _lab(root: Path) -> Session:
@@ -146,7 +147,9 @@ def test_K_and_omega_at_5V_follow_the_groups_own_readings(tmp_path):
 def test_no_example_in_a_hint_is_an_answer(tmp_path):
     """Every number in the hints of Tasks 11-15 is at least a factor 1.5 from what the
     virtual board's seeded plant gives for that field (T in s and in ms); the old hints
-    (7.3 rad/s, 1.9 rad/s/V, 0.057 s, 0.0013 kg m^2) were all within it."""
+    (7.3 rad/s, 1.9 rad/s/V, 0.057 s, 0.0013 kg m^2) were all within it. The example a
+    refusal gives for the field's unit too (a walk typed '7,8/4,05' for K and was told 'e.g.
+    1.9 rad/s/V')."""
     with _lab(tmp_path) as s:
         ident = s.results().identification
         assert ident is not None and ident.step is not None and ident.step.T_63 is not None
@@ -163,12 +166,12 @@ def test_no_example_in_a_hint_is_an_answer(tmp_path):
     seen = 0
     for sid in ("task11", "task12", "task13", "task14", "task15"):
         for f in step(sid).fields:
-            for num in re.findall(r"\d+(?:\.\d+)?", f.hint):
+            for num in re.findall(r"\d+(?:\.\d+)?", f"{f.hint} {example(f.unit)}"):
                 seen += 1
                 x = float(num)
                 for a in answers[f.key]:
                     assert not (a / 1.5 < x < a * 1.5), (sid, f.hint, a)
-    assert seen >= 6
+    assert seen >= 11
 
 
 def test_T_is_compared_with_the_63_percent_reading_and_the_fit_stands_beside_it(tmp_path):

@@ -14,7 +14,7 @@ EACH = 20
 
 def _worker(root: str, start, results) -> None:
     from minseg_tui.errors import MinsegError
-    from minseg_tui.lab.session import Session
+    from minseg_tui.lab.state.session import Session
 
     start.wait()
     out = []

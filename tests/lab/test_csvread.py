@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import csvread
-from minseg_tui.lab.csvread import NUMBER, read_csv
+from minseg_tui.lab.saving import csvread
+from minseg_tui.lab.saving.csvread import NUMBER, read_csv
 
 
 def reference(text: str) -> tuple[list[str], list[int], dict[str, list[str]]]:

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import SessionDamaged, list_sessions
+from minseg_tui.lab.saving.store import SessionDamaged, list_sessions
+from minseg_tui.lab.state.session import Session
 
 
 def _good_session(root):

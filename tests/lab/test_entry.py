@@ -7,7 +7,7 @@ import math
 import pytest
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.expr import FormulaRefused, parse_formula
+from minseg_tui.lab.content.expr import FormulaRefused, parse_formula
 from minseg_tui.quantities import (
     EntryRefused,
     Plausible,

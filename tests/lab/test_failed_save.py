@@ -19,8 +19,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import SessionNotWritable
+from minseg_tui.lab.saving.store import SessionNotWritable
+from minseg_tui.lab.state.session import Session
 from minseg_tui.lock import holder
 
 from .conftest import as_plain_user
@@ -108,7 +108,7 @@ CHILD = textwrap.dedent(
     import json, resource, signal, sys
     from pathlib import Path
     from minseg_tui.errors import MinsegError
-    from minseg_tui.lab.session import Session
+    from minseg_tui.lab.state.session import Session
 
     def say(**kw):
         print(json.dumps(kw), flush=True)
@@ -283,7 +283,7 @@ def test_an_unreadable_sessions_folder_is_one_line(tmp_path):
 
 def test_create_where_nothing_can_be_written_says_so(tmp_path):
     code = (
-        "import sys; from minseg_tui.lab.session import Session\n"
+        "import sys; from minseg_tui.lab.state.session import Session\n"
         "from minseg_tui.errors import MinsegError\n"
         "try:\n    Session.create(sys.argv[1], ['Ada'])\n"
         "except MinsegError as exc:\n    print(exc)\n"

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.files import read_step_log, read_table, write_step_log, write_table
+from minseg_tui.lab.saving.files import read_step_log, read_table, write_step_log, write_table
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog
 

@@ -8,9 +8,9 @@ from __future__ import annotations
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab import views
-from minseg_tui.lab.files import write_step_log
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.saving.files import write_step_log
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
 from minseg_tui.model.steplog import StepLog

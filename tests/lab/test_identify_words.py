@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from minseg_tui.cli import main
-from minseg_tui.lab.files import read_step_log, read_table, write_step_log
+from minseg_tui.lab.saving.files import read_step_log, read_table, write_step_log
 from minseg_tui.model.identify import identify
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
 
 WORKERS = 8
 TRIALS = 300
@@ -24,7 +24,7 @@ TRIALS = 300
 
 def _worker(tasks, results, start, tried) -> None:
     from minseg_tui.errors import MinsegError
-    from minseg_tui.lab.session import Session
+    from minseg_tui.lab.state.session import Session
 
     while True:
         folder = tasks.get()

@@ -10,15 +10,15 @@ from __future__ import annotations
 import json
 import random
 
-import numpy as np
 import pytest
 
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import FIELDS, STEPS
-from minseg_tui.lab.store import list_sessions
+from minseg_tui.lab.content.steps import FIELDS, STEPS
+from minseg_tui.lab.saving.store import list_sessions
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.report.content import build
+from tests.lab.test_damaged import _good_session
 
 TRIALS = 120
 
@@ -30,20 +30,13 @@ VALUES = [
 
 
 def _sound(root):
-    s = Session.create(root, ["Ada"], date="2026-11-22")
-    s.enter("R", "5.2")
-    s.enter("R", "5.2 kg")
-    s.enter("u_ss@2.5", "2.05")
-    s.enter("summary.1", "b")
-    s.enter("prep1.notes", "wheel [b]")
-    t = np.arange(100) * 0.025
-    s.capture_omega(2.5, t, 3.8 + 0.01 * np.sin(t))
-    rec = s.start_run("free", ts=0.025)
-    for k in range(20):
-        rec.append(k, 25000 * k, 3 * k, 2000)
-    s.finish_run(rec)
-    s.close()
-    return s.folder
+    """The damaged-session tests' good session, with a choice, a note and a refusal more."""
+    folder = _good_session(root)
+    with Session.open(folder) as s:
+        s.enter("R", "5.2 kg")
+        s.enter("summary.1", "b")
+        s.enter("prep1.notes", "wheel [b]")
+    return folder
 
 
 def _places(node, where=()):

@@ -4,10 +4,10 @@ the model check cleanly at both sample periods.
 The virtual board applies every STEP edge exactly at a sample instant (firmware/PROTOCOL.md),
 so the check must report no step "between samples" and no wild sample; its plant has Coulomb
 friction tau_c = 7.3e-3 N m, i.e. u_c = tau_c R / k_a = 0.119 V at the motor terminals
-(PlantParams.u_coulomb), which the check must name and measure. The run is recorded as the
-TUI does it: STOP and wait for the wheel to stand, P, Session.start_run, a few samples of
-the standing wheel, STEP, every sample
-into the Recorder, finish_run on $EV,STEPDONE; the table holds the multimeter's u_ss at
+(PlantParams.u_coulomb), which the check must name and measure. The run is recorded by
+the procedure the TUI runs (:mod:`minseg_tui.lab.state.task10`): STOP and wait for the wheel to
+stand, P, Session.start_run, a few samples of the standing wheel, STEP, every sample into
+the Recorder, finish_run on $EV,STEPDONE; the table holds the multimeter's u_ss at
 4.5 V, so the log's u is u_A. Every wait is on board time (the samples), so a busy machine
 makes the test slower, never different.
 """
@@ -19,10 +19,10 @@ import time
 import pytest
 
 from minseg_tui.device.factory import open_device
-from minseg_tui.device.standstill import PRE_ROLL, wait_until_still
 from minseg_tui.device.virtual import forget_board
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import RunPlan
+from minseg_tui.lab.content.steps import RunPlan
+from minseg_tui.lab.state import task10
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams
 
 _names = itertools.count()
@@ -50,7 +50,7 @@ def record_task10(tmp_path, seed: int, ts: float):
 
     Every wait is on board time: the multimeter is read after 0.5 s of samples at 4.5 V
     (the command is in force), and the run starts once the wheel stands
-    (:func:`wait_until_still`), as the TUI does it."""
+    (:func:`minseg_tui.lab.state.task10.record`, the TUI's procedure)."""
     name = f"run-check-{next(_names)}"
     link = open_device(f"minseg://{name}?clock=virtual&seed={seed}")
     try:
@@ -69,24 +69,10 @@ def record_task10(tmp_path, seed: int, ts: float):
         u_A = statistics.median(link.meter().u_A for _ in range(9))
         s.enter("u_ss@4.5", f"{u_A:.2f} V")
         plan = RunPlan(ts=ts)
-        wait_until_still(link)
-        link.set_period(plan.ts)
-        link.samples()
-        link.events()
-        rec = s.start_run("fast" if ts != 0.025 else "steps", plan)
-        done = []
-
-        def keep(b) -> bool:
-            for q, t_us, c, u in zip(b.seq, b.t_us, b.count, b.u_req, strict=True):
-                rec.append(int(q), int(t_us), int(c), round(float(u) * 1000))
-            done.extend(e for e in link.events() if e.kind == "stepdone")
-            return bool(done)
-
-        _samples_until(link, lambda b: keep(b) or rec.samples >= PRE_ROLL)  # the wheel stands
-        link.step(plan.low, plan.high, plan.half_period, plan.periods)
-        _samples_until(link, keep)
-        keep(link.samples())  # the samples that came with the last edge's event
-        info = s.finish_run(rec)
+        # Task 10 as the TUI runs it: the same procedure, here reading the link itself
+        outcome = task10.record(s, link, plan, "fast" if ts != 0.025 else "steps")
+        assert outcome.why == "done" and outcome.problem == "", outcome
+        info = outcome.info
         assert info is not None and info.dropped == 0
         return s, info
     finally:

@@ -16,12 +16,12 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab import store
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.runs import applied_voltage, read_partial
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step
-from minseg_tui.lab.store import SessionDamaged, SessionLocked, SessionMissing, list_sessions
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.saving import store
+from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.runs import applied_voltage, read_partial
+from minseg_tui.lab.saving.store import SessionDamaged, SessionLocked, SessionMissing, list_sessions
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams, record
 
 HERE = Path(__file__).parent
@@ -213,7 +213,7 @@ def test_finished_run_is_a_step_log_with_applied_voltage(tmp_path):
         info, data, u = _record_steps(s)
         assert info.name == "steps-1" and info.samples == u.size and info.dropped == 0
         assert not list((s.folder / "runs").glob("*.partial"))
-        log = read_step_log(s.folder / info.file)
+        log = s.load_run(info.name)
         assert list(log.extra["count"]) == list(data.count)
         assert log.t[0] == 0.0 and log.t[-1] == pytest.approx((data.t_us[-1] - data.t_us[0]) / 1e6)
         high = np.asarray(log.extra["u_req"]) == 4.5
@@ -227,10 +227,14 @@ def test_finished_run_is_a_step_log_with_applied_voltage(tmp_path):
         assert mc.run == "steps-1" and mc.result is not None and mc.problem == ""
         assert mc.result.t.size == u.size
         assert s.model_check() is mc  # cached until something changes
-        # a changed u_ss rewrites the run's u column and K follows
+        # a changed u_ss: the run read again has the new u column and K follows; the
+        # recording itself (what the board sent) is never written again
+        recorded = (s.folder / info.file).read_bytes()
+        assert set(np.asarray(read_step_log(s.folder / info.file).u)[high]) == {4.5}
         s.enter("u_ss@4.5", "4.2 V")
-        log2 = read_step_log(s.folder / info.file)
+        log2 = s.load_run(info.name)
         assert set(np.asarray(log2.u)[high]) == {4.2}
+        assert (s.folder / info.file).read_bytes() == recorded
         assert s.results().identification.step.u_ss == pytest.approx(4.2)
 
 
@@ -427,7 +431,7 @@ def test_lock_held_by_a_live_process(tmp_path):
     s = Session.create(tmp_path, ["A"])
     s.close()
     code = (
-        "import sys, time; from pathlib import Path; from minseg_tui.lab.session import Session; "
+        "import sys, time; from pathlib import Path; from minseg_tui.lab.state.session import Session; "
         "s = Session.open(Path(sys.argv[1])); print('open', flush=True); time.sleep(60)"
     )
     child = subprocess.Popen(
@@ -521,7 +525,7 @@ def test_a_kill_9_mid_save_leaves_a_temporary_file_that_the_next_open_removes(tm
     s.close()
     code = (
         "import os, signal, sys; from pathlib import Path\n"
-        "from minseg_tui.lab.session import Session\n"
+        "from minseg_tui.lab.state.session import Session\n"
         "s = Session.open(Path(sys.argv[1]))\n"
         "os.replace = lambda a, b: os.kill(os.getpid(), signal.SIGKILL)  # killed mid-save\n"
         "s.enter('R', '6.1')\n"
@@ -551,7 +555,7 @@ def _pid_of(names: list[str]) -> str:
 
 
 def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path):
-    from minseg_tui.lab import views
+    from minseg_tui.lab.views import session as views
 
     with Session.create(tmp_path, ["A"]) as s:
         _fill_table(s)
@@ -576,7 +580,7 @@ def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path)
 
 
 def test_the_computed_value_stands_in_the_unit_the_group_typed_theirs_in(tmp_path):
-    from minseg_tui.lab import views
+    from minseg_tui.lab.views import session as views
 
     with Session.create(tmp_path, ["A"]) as s:
         _fill_table(s)

@@ -6,10 +6,10 @@ import math
 
 import pytest
 
-from minseg_tui.lab import answers, steps
-from minseg_tui.lab.answers import check_answer
-from minseg_tui.lab.expr import parse_formula
-from minseg_tui.lab.steps import CHECKS, FIELDS, LEVELS, STEPS, step
+from minseg_tui.lab.content import answers, steps
+from minseg_tui.lab.content.answers import check_answer
+from minseg_tui.lab.content.expr import parse_formula
+from minseg_tui.lab.content.steps import CHECKS, FIELDS, LEVELS, STEPS, step
 
 
 def _f(key: str, text: str):

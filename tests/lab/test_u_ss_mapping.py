@@ -10,10 +10,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from minseg_tui.lab import views
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.report.write import write_report
 
@@ -37,7 +36,7 @@ def _record(s: Session, seed: int = 4) -> str:
         rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), int(round(u[j] * 1000)))
     info = s.finish_run(rec)
     assert info is not None
-    return info.file
+    return info.name
 
 
 def _session(tmp_path, rows_45: dict[str, str]) -> Session:
@@ -64,8 +63,8 @@ def _task11(s: Session) -> str:
 def test_a_row_with_u_ss_but_no_i_ss_is_the_one_every_place_uses(tmp_path):
     """The issue's case: the 4.5 V row holds u_ss = 3.8 V (and omega_ss) but no i_ss yet."""
     with _session(tmp_path, {"u_ss": "3.8 V", "omega_ss": "7.6"}) as s:
-        file = _record(s)
-        log = read_step_log(s.folder / file)
+        name = _record(s)
+        log = s.load_run(name)
         high = np.asarray(log.extra["u_req"]) == 4.5
         assert set(np.asarray(log.u)[high]) == {3.8}  # the run's own log
         assert "4.5 V -> 3.8 V (the table's row)" in log.metadata["u"]
@@ -80,7 +79,7 @@ def test_a_row_with_u_ss_but_no_i_ss_is_the_one_every_place_uses(tmp_path):
         assert "extrapolated" not in md and "No table row has" not in md
         # a new u_ss in that incomplete row: the run's u column and K follow at once
         s.enter("u_ss@4.5", "3.9 V")
-        log2 = read_step_log(s.folder / file)
+        log2 = s.load_run(name)
         assert set(np.asarray(log2.u)[high]) == {3.9}
         assert s.results().identification.step.u_ss == pytest.approx(3.9)
 
@@ -88,8 +87,8 @@ def test_a_row_with_u_ss_but_no_i_ss_is_the_one_every_place_uses(tmp_path):
 def test_a_row_with_only_u_ss_counts(tmp_path):
     """No omega_ss and no i_ss at 4.5 V: its u_ss still maps the 4.5 V steps."""
     with _session(tmp_path, {"u_ss": "3.95 V"}) as s:
-        file = _record(s)
-        log = read_step_log(s.folder / file)
+        name = _record(s)
+        log = s.load_run(name)
         assert set(np.asarray(log.u)[np.asarray(log.extra["u_req"]) == 4.5]) == {3.95}
         st = s.results().identification.step
         assert (st.u_ss, st.u_ss_how) == (3.95, "row")
@@ -100,8 +99,8 @@ def test_no_row_at_the_level_is_extrapolated_and_said_so_everywhere(tmp_path):
     """No u_ss at 4.5 V: the 3.5 V row's driver drop (0.45 V) gives 4.05 V in the run, in
     Task 11 and in the report, each saying it is extrapolated."""
     with _session(tmp_path, {"omega_ss": "7.6"}) as s:
-        file = _record(s)
-        log = read_step_log(s.folder / file)
+        name = _record(s)
+        log = s.load_run(name)
         high = np.asarray(log.extra["u_req"]) == 4.5
         assert np.asarray(log.u)[high] == pytest.approx(4.05)
         assert "4.5 V -> 4.05 V (extrapolated" in log.metadata["u"]
@@ -117,8 +116,7 @@ def test_recorded_runs_say_how_their_speed_was_taken(tmp_path):
     """Every recorded run's header says # cpr: 720 and # omega_over: interval, and the model
     check of the session takes them from there instead of detecting them."""
     with _session(tmp_path, {"u_ss": "3.8 V"}) as s:
-        file = _record(s)
-        head = (s.folder / file).read_text(encoding="utf-8").split("\nt,", 1)[0]
+        head = s.run_path(_record(s)).read_text(encoding="utf-8").split("\nt,", 1)[0]
         assert "# cpr: 720" in head.splitlines() and "# omega_over: interval" in head.splitlines()
         samp = s.model_check().result.sampling
         assert samp.how == "header" and samp.over_interval

@@ -310,8 +310,8 @@ def _estimate(
     # timed edges: counts over the time between the last edge of the window and the last edge
     # of the window before; no edge for four periods reads zero
     change = np.flatnonzero(np.diff(grid_counts) != 0) + 1
-    if not change.size:
-        return np.zeros(t_count.size)  # the encoder never counted: no edge to time
+    if change.size == 0:  # the wheel never turned a count: every row reads zero
+        return np.zeros(t_count.size)
     change_t = grid[change]
     k = np.searchsorted(change_t, t_count, side="right") - 1
     last = np.where(k >= 0, change_t[np.maximum(k, 0)], -np.inf)

@@ -14,7 +14,7 @@ from functools import cache
 
 import pytest
 
-from minseg_tui.lab.files import read_step_log
+from minseg_tui.lab.saving.files import read_step_log
 from minseg_tui.model.check import CheckResult, check, text
 from tests.shared_data import SHARED_DATA
 

@@ -11,7 +11,7 @@ import pytest
 
 from minseg_tui.cli import main
 from minseg_tui.cli.identify import render
-from minseg_tui.lab.files import read_step_log, write_step_log
+from minseg_tui.lab.saving.files import read_step_log, write_step_log
 from minseg_tui.model.identify import Reading, identify
 from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.steplog import (
@@ -21,6 +21,7 @@ from minseg_tui.model.steplog import (
     switch_on_glitches,
 )
 from tests.model.identgen import make, table
+from tests.shared_data import SHARED_DATA
 
 R = 5.0
 FAMILIES = {
@@ -167,6 +168,14 @@ def test_an_s_shaped_rise_is_not_called_a_dead_time():
     assert st.dead_time == 0
     said = [o.message for o in r.observations if o.code == "shift_on_bound"]
     assert said and "S-shaped start" in said[0] and "dead time" in said[0]
+    # the 63 % reading's distance from the model read the same way is the rise's shape (the
+    # noise, 0.05 rad/s on 48 rad/s, moves a reading by a fraction of a millisecond), not
+    # 'the noise of reading single samples'
+    assert "is the shape of the rise, which one time constant does not follow" in st.T_63_note
+    assert "is the noise of reading" not in st.T_63_note
+    # and the model read the same way moves by the time shift held at its bound too (+10 ms of
+    # the +27.5 ms), not by 'the sampling alone'
+    assert "the sampling and the steps' time shift, held at its bound, move" in st.T_63_note
 
 
 def test_u_ss_above_u_req_on_every_row_is_remarked():
@@ -214,3 +223,18 @@ def test_intervals_of_the_clean_logs_stay_numbers():
     g, r = run(seed=0)
     assert r.step.T_determined and r.step.K_determined
     assert math.isfinite(r.step.T_ci[0]) and "not determined" not in render(r)
+
+
+@pytest.mark.shared_data
+def test_a_ramp_that_one_time_constant_misses_is_named_as_the_gap_between_T_and_the_reading():
+    # ubc-motor-7V (../shared/data/real-motors): a bench supply's current limit makes the rise a
+    # ramp, 0 to 500 rad/s in 1.2 s. The 63 % reading (686 ms) and T (542 ms) are 144 ms apart,
+    # 136 ms of it the ramp's shape: not the half sample (2.5 ms) a mean over the interval lags
+    path = SHARED_DATA / "real-motors" / "ubc-motor-7V" / "step.csv"
+    r = identify(table(72.0), R, read_step_log(path))
+    st = r.step
+    assert st is not None and st.fit.shift_on_bound
+    said = [o.message for o in r.observations if o.code == "T_63_differs"]
+    assert said and "is the shape of the rise" in said[0]
+    assert "lags the true speed by half a sample" not in said[0]
+    assert "is the shape of the rise, which one time constant does not follow" in st.T_63_note

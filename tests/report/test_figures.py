@@ -16,8 +16,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.report import svg
 from minseg_tui.report.write import write_report
@@ -232,12 +232,29 @@ def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     assert "angle error (rad)" == _texts(angle, "ylabel")[0].text
 
 
-def test_the_model_check_section_leads_with_the_figure_that_means_most(report):
-    html, md, result, *_ = report
+def test_the_model_check_section_leads_with_what_a_student_reads(report):
+    """Issue 20, item 4: two or three sentences about the close-up (what the first-order
+    model gets wrong at its step, the cause in everyday words, the gain in one figure),
+    the figures, then the details in a fold (HTML) or a subsection (Markdown)."""
+    html, md, result, _, log = report
     section = md.split("## Model check", 1)[1].split("\n## ", 1)[0]
     first = section.strip().split("\n\n", 1)[0]
-    assert first.startswith("The figure that means most for this log: the rms error of the angle")
-    assert result.lead.why in first
+    assert "whitened" not in first and "criterion" not in first and "coulomb" not in first
+    assert "Likely cause: dry friction" in first and "constant braking torque" in first
+    base, ext = result.gain["baseline_angle_rms"], result.gain["extended_angle_rms"]
+    assert f"from {base:.2g} rad to {ext:.2g} rad" in first
+    # the step it speaks of is the one the close-up shows
+    m = re.search(rf"drops from ({NUM}) V to 0 V at t = ({NUM}) s", first)
+    assert m and result.close_up.t0 < float(m.group(2)) < result.close_up.t1
+    details = section.split("### Details", 1)[1]
+    assert section.index("![") < section.index("### Details")  # the figures before the fold
+    assert details.strip().startswith(
+        "The figure that means most for this log: the rms error of the angle"
+    )
+    assert result.lead.why in details and "whitened" in details
+    html_section = html.split("<h2>Model check</h2>", 1)[1].split("<h2>", 1)[0]
+    assert html_section.index("Likely cause") < html_section.index("<details><summary>Details")
+    assert "The figure that means most" in html_section.split("<details>", 1)[1]
     rows = [ln for ln in section.splitlines() if ln.startswith("| rms error")]
     assert rows[0].startswith("| rms error of the angle (leads) |")  # the table leads with it
     (ext,) = [ln for ln in section.splitlines() if ln.startswith("- Extended model")]

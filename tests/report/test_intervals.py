@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
 from minseg_tui.quantities import NO_WIDTH, format_interval
 from minseg_tui.report import content, markdown
 from tests.classview.build import group

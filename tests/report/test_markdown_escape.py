@@ -7,7 +7,7 @@ from pathlib import Path
 
 from markdown_it import MarkdownIt
 
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
 from minseg_tui.report import content, markdown
 from minseg_tui.report.content import Report, Section, Table
 

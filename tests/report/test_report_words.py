@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import CANDIDATES
 from minseg_tui.report import content, markdown
 from tests.classview.build import group

@@ -20,8 +20,8 @@ from textual.pilot import Pilot
 from textual.worker import WorkerCancelled
 
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.messages import LinkEventArrived

@@ -5,6 +5,7 @@ after it into the new step; after Enter, into the next entry."""
 
 from __future__ import annotations
 
+import pytest
 from textual.command import CommandPalette
 
 from minseg_tui.ui.screens.lab import LabScreen
@@ -177,3 +178,32 @@ async def test_two_enters_in_the_palette_leave_the_lab_on_screen(quiet):
         await settle(pilot)
         assert isinstance(app.screen, LabScreen) and shown(app)
         assert [type(s) for s in app.screen_stack[1:]] == [LabScreen]
+
+
+@pytest.mark.parametrize(
+    "keys",
+    [
+        ["ctrl+u", *"0,63", "enter"],
+        ["ctrl+u", *"0,63"],
+        ["end", "backspace", "backspace", "backspace", *"0,63", "enter"],
+        ["end", "backspace", "backspace", "backspace", *"0,63"],
+        ["home", "shift+end", "delete", *"0,63", "enter"],
+    ],
+)
+async def test_editing_keys_in_a_burst_act_before_the_text_typed_after_them(quiet, keys):
+    """Found in a walk: 'Ctrl+U 0,63 Enter' in one burst on an answered entry stored 0,63 but
+    left the box empty ('End Backspace x3 0,63' left '0'): the text went in first, the
+    editing keys after it; leaving the step then stored the box over the answer."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep4")
+        await burst(pilot, *"0,5", "enter")
+        await goto(pilot, "prep4")
+        await burst(pilot, *keys)
+        assert _box(app, "prep4.fraction") == "0,63"
+        if keys[-1] == "enter":
+            assert _typed(app, "prep4.fraction") == "0,63"
+        await burst(pilot, "pagedown")
+        assert shown(app, "prep5")
+        assert _typed(app, "prep4.fraction") == "0,63"

@@ -9,9 +9,9 @@ from textual.message import Message
 from textual.widgets import DataTable, OptionList, RadioSet, SelectionList
 
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import list_sessions
+from minseg_tui.lab.saving.store import list_sessions
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.ui.device import DeviceInfo, LinkState
 from minseg_tui.ui.messages import CaptureRequested, RunRequested, VoltageRequested
 from minseg_tui.ui.panels.live import LivePanel

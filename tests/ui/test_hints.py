@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.helpers import goto, settle, start

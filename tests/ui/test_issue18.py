@@ -12,8 +12,8 @@ from textual.widgets import OptionList
 from textual.widgets._toast import Toast
 
 from minseg_tui.device.protocol import Ident
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import SessionNotWritable
+from minseg_tui.lab.saving.store import SessionNotWritable
+from minseg_tui.lab.state.session import Session
 from minseg_tui.ui.panels.connect import ConnectPanel
 from minseg_tui.ui.panels.report import ReportPanel
 from minseg_tui.ui.screens.classview import ClassScreen

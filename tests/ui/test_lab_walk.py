@@ -15,8 +15,8 @@ import pytest
 
 from minseg_tui.device.link import LinkEvent
 from minseg_tui.device.standstill import PRE_ROLL
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.store import SessionsUnreadable, list_sessions
+from minseg_tui.lab.saving.store import SessionsUnreadable, list_sessions
+from minseg_tui.lab.state.session import Session
 from minseg_tui.quantities import NO_BREAK
 from minseg_tui.ui import app as app_module
 from minseg_tui.ui.panels.model_check import ModelCheckPanel
@@ -347,21 +347,24 @@ async def test_model_check_at_80x24_scrolls_with_the_arrows_and_shows_all_its_te
             await pilot.press("down")
         await settle(pilot)
         assert nav.highlighted == at and pane.scroll_y > 0  # the pane scrolled, not the list
+        story = app.screen.query_one("#check-story", Prose)
+        assert story.outer_size.height >= len(wrap(story.text, story.content_size.width))
+        assert _in_view(pane, story) or pane.scroll_y == pane.max_scroll_y
+        # causes in words, not the JSON contract's names; the details wait in their fold
+        assert "Likely cause: dry friction" in story.text and "coulomb_friction" not in story.text
         lines = app.screen.query_one("#check-lines", Prose)
-        assert lines.outer_size.height >= len(wrap(lines.text, lines.content_size.width))
-        assert _in_view(pane, lines) or pane.scroll_y == pane.max_scroll_y
+        assert not lines.region.height  # folded
         text = lines.text
-        assert text.index("angle error") < text.index("evidence:")  # the lead figure first
-        # causes in words, not the JSON contract's names
-        assert "cause: dry friction" in text and "coulomb_friction" not in text
+        assert text.index("angle error") < text.index("evidence")  # the lead figure first
+        assert "cause: dry friction" in text
         panel = app.screen.query_one(ModelCheckPanel)
-        assert panel.close_up and "close-up:" in text
+        assert panel.close_up and "close-up" in story.text
         for plot in app.screen.query(TracePlot):  # the legend is a line under the plot
             canvas, legend = plot.children
             assert legend.region.y >= canvas.region.bottom
         await pilot.press("f9")
         await settle(pilot)
-        assert not panel.close_up and "the whole log" in lines.text
+        assert not panel.close_up and "the whole log" in story.text
 
 
 # -- issue 10: saves that fail, quitting, another folder, damaged sessions, reconnects ----------

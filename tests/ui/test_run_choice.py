@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import json
 
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state.session import Session
 from minseg_tui.report.content import Table, build
 from minseg_tui.ui.screens.quit import QuitScreen
 from tests.ui.fakes import QuietDevice

@@ -4,8 +4,8 @@ of fitting 2400 samples three times over (about 0.4 s a time, in the walk's sess
 
 from __future__ import annotations
 
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from tests.ui.helpers import record_step_run
 
 

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from minseg_tui.lab.store import list_sessions
+from minseg_tui.lab.saving.store import list_sessions
 
 GUARD = 60.0
 """Most seconds a wait reads the pty without seeing what it waits for (a hang guard)."""

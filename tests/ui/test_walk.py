@@ -12,9 +12,11 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from minseg_tui.device.virtual import named_board
-from minseg_tui.lab import views
-from minseg_tui.lab.store import list_sessions
+from minseg_tui.lab.saving.store import list_sessions
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.panels.live import LivePanel
@@ -24,6 +26,8 @@ from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.status import DeviceStatus
 from tests.ui.conftest import board_url, real_app
 from tests.ui.helpers import Heard, goto, paste_in, resume, settle, start
+
+pytestmark = pytest.mark.slow
 
 
 def _status(app) -> str:
@@ -131,7 +135,7 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         assert "step 2" in str(app.screen.query_one("#zoom-note").render())
         # the model check
         await goto(pilot, "model_check")
-        assert "cause:" in str(app.screen.query_one("#check-lines").render())
+        assert "Likely cause:" in str(app.screen.query_one("#check-story").render())
         # summary and the report
         await goto(pilot, "summary")
         await paste_in(pilot, "summary.unclear", "the filter")

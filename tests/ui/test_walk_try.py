@@ -12,7 +12,7 @@ from textual.widgets import RadioButton, RadioSet
 
 from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from minseg_tui.ui.widgets.plots import Canvas
+from minseg_tui.ui.widgets.plots import Canvas, drawing_order
 from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.helpers import (
     TABLE,
@@ -63,7 +63,7 @@ async def test_the_zoomed_rise_draws_u_a_as_the_board_holds_it_rising_at_the_edg
         await start_with_a_run(pilot, "task11")
         plot = app.screen.query_one(StepPlot)
         labels = [tr.label for tr in plot.traces]
-        k = labels.index("u_A [V]")
+        k = drawing_order(plot.traces).index(labels.index("u_A [V]"))  # plotext's signal
         monitor = plot.query_one(Canvas).plt.monitor  # what plotext was asked to draw
         x, u = np.asarray(monitor.x[k]), np.asarray(monitor.y[k])
         changes = np.flatnonzero(np.diff(u) != 0)

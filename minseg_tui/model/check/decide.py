@@ -140,7 +140,7 @@ def _own_noise(prob: Problem, f: Fit) -> float:
     """The speed's noise (rad/s) around the model ``f`` (the largest tenth of the departures
     left out, so that a wild sample, smeared over the average's length, does not count)."""
     settle = max(3, int(math.ceil((5.0 * f.T + f.effects.delay) / prob.ts)) + f.effects.taps)
-    return scatter(prob.y - f.predict(prob), prob.u, settle, prob.y != 0, keep=0.9)
+    return scatter(prob.y - f.predict(prob), prob.u, settle, (prob.y != 0) & prob.keep, keep=0.9)
 
 
 def _explained(prob: Problem, f: Fit, floor: Callable[[int], float | None]) -> bool:

@@ -198,6 +198,37 @@ def split_repeated(
     return local, repeated, " and ".join(kinds)
 
 
+LOCAL = 4.0
+"""A disturbance departs from the model by at least this many times the model's error held
+over ``LOCAL_ROWS`` rows elsewhere in the log (rms): a departure no larger than the model
+misses by elsewhere is the model's miss, not something that touched the wheel."""
+
+LOCAL_ROWS = 9
+"""Rows the model's error elsewhere is averaged over (noise drops out, a miss stays)."""
+
+
+def split_local(
+    found: list[Disturbance], residual: FloatArray, keep: NDArray[np.bool_]
+) -> tuple[list[Disturbance], list[Disturbance]]:
+    """(local, not local): the disturbances that depart by more than ``LOCAL`` times the
+    rms of the residual (measured - model, rad/s), averaged over ``LOCAL_ROWS`` rows, on
+    the rows ``keep`` outside every disturbance; the others, where the model misses the
+    rest of the log about as much."""
+    if not found:
+        return found, []
+    k = np.asarray(keep, dtype=bool).copy()
+    for d in found:
+        k[d.start : d.end] = False
+    if not np.any(k):
+        return found, []
+    r = np.where(k, residual, 0.0)
+    n = np.convolve(k.astype(float), np.ones(LOCAL_ROWS), mode="same")
+    m = np.convolve(r, np.ones(LOCAL_ROWS), mode="same") / np.maximum(n, 1.0)
+    rest = float(np.sqrt(np.mean(m[k] ** 2)))
+    local = [d for d in found if abs(d.size) > LOCAL * rest]
+    return local, [d for d in found if d not in local]
+
+
 def edges_of(found: list[Disturbance], u: FloatArray) -> list[int]:
     """The first rows of the stretches (after their edges) that hold the disturbances."""
     stretches, _ = edge_kinds(u)

@@ -179,8 +179,9 @@ def _coast(log: Log, ext: Fit) -> str:
     a, w0 = s.row, abs(s.speed)
     return (
         f"right after the command drops to 0 at t = {log.t[a]:.3f} s the speed falls at "
-        f"{decel:.3g} rad/s^2 (a line through the speed over the {_ms(span)} it takes to fall "
-        f"to half), where a braked motor (T = "
+        f"{decel:.3g} rad/s^2 (a line through the speed from the row before the drop to the "
+        f"first reading under half, {_ms(span - float(log.t[a] - log.t[a - 1]))} after the "
+        f"drop), where a braked motor (T = "
         f"{_ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
         f"wheel coast, with a time constant of {tc:.3g} s at zero command"
     )

@@ -171,6 +171,8 @@ def check(
     )
     rise = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     found2, repeated, repeated_at = dist.split_repeated(found2, u, rise)
+    # a disturbance is local: the model chosen fits the rest of the log well below it
+    found2, _ = dist.split_local(found2, full.y - ext.predict(full), full.weights > 0)
     if _rows(found2) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
@@ -343,9 +345,9 @@ def _report(
         if a.row in gap_rows:
             a = an.logging_artefact(t, int(a.row), int(a.row) + 1, a.size)
         anomalies.append(a)
-    artefacts = [d for d in found if _at_gap(d, res, gap_rows)]
-    found = [d for d in found if d not in artefacts]
     starts = an.gap_starts(t, samp.ts)
+    artefacts = [d for d in found if _at_gap(d, res, starts, ext.effects.taps)]
+    found = [d for d in found if d not in artefacts]
     anomalies += [
         an.logging_artefact(
             t, d.start, d.end, d.size, next((g for g in starts if d.start <= g < d.end), None)
@@ -422,15 +424,20 @@ def _report(
     )
 
 
-def _at_gap(d: dist.Disturbance, res: FloatArray, gap_rows: set[int]) -> bool:
-    """True when disturbance ``d`` is a spike at the rows right after a gap in the sample
-    times: its rows hold a gap row, and away from the gap rows it departs by less than a
-    third of its largest departure."""
-    rows = set(range(d.start, d.end))
-    if not rows & gap_rows:
-        return False
-    rest = [abs(float(res[r])) for r in rows - gap_rows]
-    return not rest or max(rest) < abs(d.size) / 3.0
+def _at_gap(d: dist.Disturbance, res: FloatArray, starts: list[int], taps: int) -> bool:
+    """True when disturbance ``d`` is a spike at the rows right after a long interval in the
+    sample times (``starts``: the rows after each interval over 1.5 nominal periods, on a
+    regular clock or not): where it departs by a third of its largest departure or more,
+    it stays within the row before such an interval and the rows the late read reaches,
+    the row after it and, through an average over ``taps`` samples, as many more (a
+    stalled logger's read that lags its timestamp; a hand slows the wheel for longer and
+    the wheel comes back over T, not in one row). One whose departure is gone from ``res``
+    (the read repaired as a wild sample) is one when it holds the row after such an
+    interval."""
+    big = [r for r in range(d.start, d.end) if abs(float(res[r])) >= abs(d.size) / 3.0]
+    if not big:
+        return any(d.start <= g < d.end for g in starts)
+    return any(g - 1 <= min(big) and max(big) <= g + taps for g in starts)
 
 
 def _turning(
@@ -629,19 +636,18 @@ def _finding(
         )
     if miss is not None:
         size, where, lvl = miss
+        against = (
+            f"{size / lvl:.0f} times what the noise leaves ({lvl:.3g} rad/s)"
+            if lvl > 0
+            else "where the speed's noise measures 0 rad/s"
+        )
         caveats.append(
             Caveat(
                 "misses",
                 None,
                 f"the best model found still misses {where}: its error held over 9 samples is "
-                f"{size:.3g} rad/s rms there, "
-                + (
-                    f"{size / lvl:.0f} times what the noise leaves ({lvl:.3g} rad/s)"
-                    if lvl > 0
-                    else "where the speed shows no noise"
-                )
-                + "; something outside the list of causes acts in this log, so "
-                "the named cause(s) explain only part of it",
+                f"{size:.3g} rad/s rms there, {against}; something outside the list of causes "
+                "acts in this log, so the named cause(s) explain only part of it",
             )
         )
     if samp.smooth and any(c in ext.causes for c in ("velocity_filter", "second_pole")):

@@ -286,12 +286,21 @@ def _step_result(
         fit=fit,
         K_ci=_K_interval(K, K_each, u_used, fit),
         T_63_model=T_63_model,
-        T_63_note=_T_63_note(T, T_63, T_63_model, log.ts, fit.dead_time, bool(fit.left_out)),
+        T_63_note=_T_63_note(
+            T, T_63, T_63_model, log.ts, fit.dead_time, bool(fit.left_out), fit.shift_on_bound
+        ),
         dead_time=fit.dead_time,
         glitch_rows=glitches,
     )
+    shape = (
+        T_63 - T_63_model
+        if fit.shift_on_bound and T_63 is not None and T_63_model is not None
+        else None
+    )
     observations = (
-        step_observations(rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time)
+        step_observations(
+            rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time, shape
+        )
         if rows
         else []
     )
@@ -330,10 +339,13 @@ def _T_63_note(
     ts: float,
     dead_time: float = 0.0,
     stalled: bool = False,
+    misfit: bool = False,
 ) -> str | None:
     """How far the manual's 63 % reading is from the least-squares T, and why (the dead time
     ``dead_time``, s, is part of it when the model has one; ``stalled``: rows of a logging
-    stall were left out)."""
+    stall were left out; ``misfit``: the steps' time shift ended on its bound, so the rise
+    has a shape one time constant does not follow, and the rest is that shape, not only
+    noise)."""
     if T_63 is None:
         return None
     apart = T_63 - T
@@ -348,6 +360,8 @@ def _T_63_note(
     delay = (
         f"the dead time moves the reading by {dead_time * 1e3:+.1f} ms and the sampling by "
         if dead_time > 0
+        else "the sampling and the steps' time shift, held at its bound, move the reading by "
+        if misfit
         else "the sampling alone moves the reading by "
     )
     out += (
@@ -358,8 +372,14 @@ def _T_63_note(
     )
     rest = T_63 - T_63_model
     if abs(rest) > max(0.02 * T, 0.1 * abs(apart)):
-        why = "reading across a logging stall's gap and" if stalled else "the noise of"
-        out += f", and {rest * 1e3:+.1f} ms is {why} reading single samples."
+        if misfit:
+            out += (
+                f", and {rest * 1e3:+.1f} ms is the shape of the rise, which one time constant does "
+                "not follow (see the time shift below), with the noise of reading single samples."
+            )
+        else:
+            why = "reading across a logging stall's gap and" if stalled else "the noise of"
+            out += f", and {rest * 1e3:+.1f} ms is {why} reading single samples."
     else:
         out += ", which is the whole difference."
     return out + " The least-squares fit models the sampling, so its T is the one the model uses."

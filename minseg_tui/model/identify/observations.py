@@ -169,13 +169,17 @@ def step_observations(
     ts: float,
     skipped: int,
     dead_time: float = 0.0,
+    shape: float | None = None,
 ) -> list[Observation]:
     """What the step log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
 
     rows: the table; steps: the rising steps used; hows: how u_ss was found for each step;
     u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
-    period (s); skipped: rising steps not usable; dead_time: the model's dead time (s).
+    period (s); skipped: rising steps not usable; dead_time: the model's dead time (s);
+    shape: when the rise has a shape one time constant does not follow (the steps' time
+    shift on its bound), the part of the reading the fitted model read the same way does not
+    give (s), else None.
     """
     observations: list[Observation] = []
     levels = sorted({s.u_req for s in steps if s.u_req is not None})
@@ -249,6 +253,10 @@ def step_observations(
                         f"{dead_time * 1e3:.3g} ms that T does not; besides, the measured speed is the "
                         "mean over each sample interval and lags the true speed by half a sample."
                         if dead_time > 0
+                        else f"Most of it ({shape * 1e3:+.3g} ms) is the shape of the rise, which one "
+                        "time constant does not follow (see the time shift below): no one time "
+                        "constant meets both the 63 % point and the whole rise here."
+                        if shape is not None and abs(shape) > 0.5 * abs(T_63 - T)
                         else "The measured speed is the mean over each sample interval, so "
                         "it lags the true speed by half a sample; a velocity filter lags it more."
                     )

@@ -459,9 +459,9 @@ def _from_whole(
         time_source=time_source,
         method=WHOLE_LOG,
         why=(
-            "the first-order model explains the whole log (on the rising steps its residual is "
-            f"{rms / sigma_w:.2f} times that of the steps fitted one by one), so every edge, "
-            f"rising and falling, is used{friction}"
+            "one first-order model fits the whole log as well as the steps fitted one by one do "
+            f"(on the rising steps its residual is {rms / sigma_w:.2f} times theirs), so every "
+            f"edge, rising and falling, is used{friction}"
         ),
         shift=fit.d,
         shift_ci=_interval(fit.d, cov.half_width(2)),

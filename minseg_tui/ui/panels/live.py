@@ -9,8 +9,8 @@ from textual.containers import Horizontal, Vertical
 from textual.reactive import reactive
 from textual.widget import Widget
 
-from minseg_tui.lab import views
-from minseg_tui.lab.steps import LEVELS, Step
+from minseg_tui.lab.content.steps import LEVELS, Step
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.device import DeviceInfo
 from minseg_tui.ui.live import LiveBuffer

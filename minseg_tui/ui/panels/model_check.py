@@ -5,23 +5,29 @@ from __future__ import annotations
 from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal
-from textual.widgets import Input
+from textual.widgets import Collapsible, Input
 
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.views import CheckView
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.session import CheckView
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
+DETAILS = "Details: figures, evidence, noise · Enter opens"
+"""The fold's title (the details follow the sentences a student reads first)."""
+
 
 class ModelCheckPanel(ViewPanel[CheckView]):
     """What the first-order model gets wrong in the run: first the close-up where the cause
     acts (measured, both models, and their residuals against the noise floor), F9 switches
-    to the whole log and back; the gain figure that means most leads the text, then the
-    cause, its evidence, the extended model, the other figures and what the check cannot
-    say. A log recorded elsewhere can be loaded (Enter in the path asks for it)."""
+    to the whole log and back; under it two or three sentences a student reads first (what
+    the simple model gets wrong at the close-up's step, the likely cause in everyday words,
+    how much better the extended model does), then a fold with the details: the figure
+    that leads and why, the check's evidence, the extended model, the other figures and
+    what the check cannot say. A log recorded elsewhere can be loaded (Enter in the path
+    asks for it)."""
 
     def __init__(self) -> None:
         super().__init__()
@@ -32,7 +38,9 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         with Horizontal(classes="plots check-plots"):
             yield TracePlot("measured vs models", "t [s]", "omega [rad/s]", id="plot-check")
             yield TracePlot("residual", "t [s]", "rad/s", id="plot-residual")
-        yield Prose("computing…", id="check-lines")
+        yield Prose("computing…", id="check-story")
+        with Collapsible(title=DETAILS, id="check-details", collapsed=True):
+            yield Prose("", id="check-lines")
         yield Input(placeholder="load a step log (CSV path), Enter", id="import-path")
         yield Prose("", id="import-msg", classes="hint")
 
@@ -43,22 +51,25 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         v = self.view
         if v is None:
             return
+        story = self.query_one("#check-story", Prose)
         lines = self.query_one("#check-lines", Prose)
         if v.problem:
-            lines.update(f"run {v.run or '—'}: {v.problem}")
+            story.update(f"run {v.run or '—'}: {v.problem}")
+            lines.update("")
             return
         self._plot()
         where = (
-            f"close-up: {v.close_what} · F9 the whole log"
+            f"run {v.run}, {v.close_title} · f9 Zoom (the whole log)"
             if self.close_up and v.close_t.size
-            else "the whole log · F9 the close-up where the cause acts"
+            else f"run {v.run}, the whole log · f9 Zoom (the close-up of the step the words "
+            "speak of)"
         )
-        text = [f"run {v.run} · cause: {v.cause_words or v.cause}"]
+        story.update("\n".join([where, " ".join(v.story)]))
+        text = [f"cause: {v.cause_words or v.cause}"]
         if v.lead:
             text += [f"{v.lead}", f"(this figure leads: {v.lead_why})"]
         text += [
-            where,
-            f"evidence: {v.evidence}",
+            f"the check's evidence, over the whole log: {v.evidence}",
             f"extended model: {v.extended_model}",
             f"also: {v.gain}",
         ]

@@ -8,10 +8,10 @@ from textual.binding import Binding
 from textual.containers import Vertical
 from textual.widget import Widget
 
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import Step
-from minseg_tui.lab.views import ResultsView
+from minseg_tui.lab.content.steps import Step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.session import ResultsView
 from minseg_tui.quantities import format_value
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
@@ -51,15 +51,21 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self.zoom: int | None = 0 if step.id in ("task11", "task12") else None
         self._lines = Prose("computing…", id="results-lines")
         self._compare = Prose("", id="compare")
+        self._details = Vertical(self._compare, self._lines, classes="details")
+        self._said: tuple[object, ...] | None = None
+        """The results and comparisons last drawn (None: nothing drawn yet)."""
+        self._reveal = False
+        """The view just drawn shows results or comparisons it did not show before."""
 
     def compose(self) -> ComposeResult:
         yield StepPlot("step log", "t [s]", "omega [rad/s]", id="plot-log")
         yield Prose("", id="zoom-note", classes="hint")
 
     def after_rows(self) -> Widget:
-        """The numbers, shown under the group's entries: the entry to type a reading into
-        sits right under the plot it is read from."""
-        return Vertical(self._lines, self._compare, classes="details")
+        """The numbers, shown under the group's entries (the entry to type a reading into
+        sits right under the plot it is read from): first the group's own values against
+        the computed ones, right under the entries they typed them in, then the results."""
+        return self._details
 
     def build(self, session: Session) -> ResultsView:
         return views.results(session, self.step.id)
@@ -71,14 +77,22 @@ class ResultsPanel(ViewPanel[ResultsView]):
         if self.zoom is not None and self.zoom >= len(view.steps):
             self.zoom = 0 if view.steps else None
         self._plot()
+        said = (view.lines, view.compare, view.problems)
+        self._reveal = self._said is not None and said != self._said
+        self._said = said
         lines = list(view.lines) or ["no step result yet"]
         lines += [f"! {p}" for p in view.problems]
         self._lines.update("\n".join(lines))
-        self._compare.update(
-            "\n".join(
-                f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare
-            )
+        compared = "\n".join(
+            f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare
         )
+        self._compare.update(compared)
+        self._compare.display = bool(compared)
+
+    def revealed(self) -> Widget | None:
+        """The comparisons under the entries, when an answer (or a new run) changed what
+        is shown: a group at 80x24 had them below the screen after answering."""
+        return self._compare if self._reveal and self._compare.display else None
 
     def _plot(self) -> None:
         v = self.view

@@ -7,15 +7,15 @@ from textual.containers import Horizontal
 from textual.reactive import reactive
 from textual.widgets import ProgressBar, Static
 
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import Step
-from minseg_tui.lab.views import RunView
+from minseg_tui.lab.content.steps import Step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.task10 import RunProgress
+from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.session import RunView
 from minseg_tui.quantities import format_number, format_value
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import RunRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
-from minseg_tui.ui.recording import RunProgress
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 

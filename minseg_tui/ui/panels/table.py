@@ -5,9 +5,9 @@ from __future__ import annotations
 from textual.app import ComposeResult
 from textual.widgets import DataTable
 
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.views import TableView
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.session import TableView
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.prose import Prose
 

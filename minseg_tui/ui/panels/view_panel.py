@@ -7,8 +7,9 @@ from typing import Generic, TypeVar
 
 from textual.containers import Vertical
 from textual.message import Message
+from textual.widget import Widget
 
-from minseg_tui.lab.session import Session
+from minseg_tui.lab.state.session import Session
 
 V = TypeVar("V")
 
@@ -20,7 +21,12 @@ class ViewPanel(Vertical, Generic[V]):
 
     class Drawn(Message):
         """The panel drew its view: its height may have changed (the step it is in brings
-        the entry it landed in back into view)."""
+        the entry it landed in back into view). ``reveal``: what the view newly shows that
+        the group should see with the entry they are in (an answer's comparison), or None."""
+
+        def __init__(self, reveal: Widget | None = None) -> None:
+            super().__init__()
+            self.reveal = reveal
 
     def __init__(self, classes: str = "") -> None:
         super().__init__(classes=f"panel {classes}".rstrip())
@@ -28,7 +34,7 @@ class ViewPanel(Vertical, Generic[V]):
 
     def build(self, session: Session) -> V:
         """The view from ``session`` (worker thread: a pure builder of
-        :mod:`minseg_tui.lab.views`, no widget)."""
+        :mod:`minseg_tui.lab.views.session`, no widget)."""
         raise NotImplementedError
 
     def receive(self, view: V) -> None:
@@ -38,7 +44,11 @@ class ViewPanel(Vertical, Generic[V]):
 
     def _draw(self) -> None:
         self.show_view()
-        self.post_message(self.Drawn())
+        self.post_message(self.Drawn(self.revealed()))
+
+    def revealed(self) -> Widget | None:
+        """What the view just drawn newly shows for the group to see (None: nothing)."""
+        return None
 
     def show_view(self) -> None:
         """Draw :attr:`view`."""

@@ -28,6 +28,7 @@ class WheelQuestionScreen(ModalScreen[str]):
     ``no`` or ``unsure`` (Escape)."""
 
     BINDINGS = [Binding("escape", "unsure", "I did not see")]
+    AUTO_FOCUS = "#answers"
 
     def compose(self) -> ComposeResult:
         with Vertical(id="ask", classes="dialog"):
@@ -39,12 +40,10 @@ class WheelQuestionScreen(ModalScreen[str]):
             )
             yield OptionList(*[Option(text, id=key) for key, text in TURN_ANSWERS], id="answers")
 
-    def on_mount(self) -> None:
-        self.query_one("#answers", OptionList).focus()
-
     @on(OptionList.OptionSelected, "#answers")
     def _answer(self, event: OptionList.OptionSelected) -> None:
-        self.dismiss(event.option.id or "unsure")
+        if self.is_current:  # not an answer handed on after the first one closed it
+            self.dismiss(event.option.id or "unsure")
 
     def action_unsure(self) -> None:
         self.dismiss("unsure")

@@ -1,7 +1,7 @@
 """The class view in the lab assistant: every group of the sessions folder, one row each.
 
 Opened from the start screen (F12). The groups are read in a worker thread, each session
-opened read-only (:func:`minseg_tui.lab.classview.read_group`: no lock, nothing written),
+opened read-only (:func:`minseg_tui.lab.views.classview.read_group`: no lock, nothing written),
 and each row appears as soon as its session is read; once all are in, the class's median
 decides what stands out. Under the table, the highlighted group in full: every number with
 its unit, the model check's cause, the group's own values against the computed ones, what
@@ -24,9 +24,9 @@ from textual.screen import Screen
 from textual.widgets import DataTable, Footer, Static
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import classread, classview
-from minseg_tui.lab.classview import QUANTITIES, ClassView, Group
-from minseg_tui.lab.compare import format_diff
+from minseg_tui.lab.state.compare import format_diff
+from minseg_tui.lab.views import classread, classview
+from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
 from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.ui.screens.start import StartScreen
 
@@ -95,6 +95,7 @@ class ClassScreen(Screen[None]):
         Binding("escape", "back", "Back"),
         Binding("enter", "open_group", "Open read-only", priority=True),
     ]
+    AUTO_FOCUS = "#class-table"
 
     @dataclass
     class GroupRead(Message):
@@ -128,7 +129,6 @@ class ClassScreen(Screen[None]):
         table = self.query_one(DataTable)
         for header, key in COLUMNS:
             table.add_column(header, key=key)
-        table.focus()
         self._read()
 
     @work(thread=True, exclusive=True, group="class", name="read the class")

@@ -13,7 +13,7 @@ import asyncio
 from collections.abc import Callable, Sequence
 from functools import partial
 from pathlib import Path
-from typing import TypeVar
+from typing import Literal, TypeVar
 
 from textual import events, on, work
 from textual.actions import SkipAction
@@ -29,10 +29,11 @@ from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab import views
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import STEPS, Step
-from minseg_tui.lab.views import EntryView
+from minseg_tui.lab.content.steps import STEPS, Step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.task10 import RunProgress
+from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
@@ -49,7 +50,6 @@ from minseg_tui.ui.panels.results import ResultsPanel
 from minseg_tui.ui.panels.step_run import StepRunPanel
 from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
-from minseg_tui.ui.recording import RunProgress
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import EntryBox, FieldRow
@@ -71,6 +71,26 @@ MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": "
 """The navigator's mark of a step's status (a character, not a colour)."""
 
 STEP_IDS = tuple(s.id for s in STEPS)
+
+PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
+    ("f3", "set_voltage", "Set V", "setting a voltage"),
+    ("f4", "capture", "Capture", "capturing omega_ss"),
+    ("f5", "run_steps", "Run", "the step experiment"),
+    ("f6", "run_fast", "Run 5 ms", "the fast step experiment"),
+    ("f7", "formula", "Formula", "a table formula"),
+    ("f9", "zoom_next", "Zoom", "zooming the step log"),
+    ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
+    ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
+    ("ctrl+r", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
+)
+"""Keys that act on the shown step's panel: (keys, the app's action, footer label, what it is;
+no label: not in the footer). The footer shows a key on the steps whose panel offers it
+(:meth:`LabScreen.panel_keys`); elsewhere the key says that it is not part of this step. None
+is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
+moves). The app binds them (its keys come first in the footer, where Reveal, a lab
+assistant's key, is the one cut at 80 columns)."""
+
+PANEL_ACTIONS = frozenset(action for _, action, _, _ in PANEL_KEYS)
 
 
 def nav_label(step: Step, status: str = "todo") -> str:
@@ -94,13 +114,12 @@ class StepPane(VerticalScroll):
         # focusable where the step may land on its text (no entries, or a panel to read):
         # the arrow keys then scroll it
         self.can_focus = panel is not None or not step.fields
-        self._landing: FieldRow | None = None
-        """The entry the step landed in, while it has the focus and the group has not
-        scrolled: brought back into view when the panel's view is drawn (it comes from a
-        worker, before or after the landing) and moves the entry down."""
-        self._scrolled = False
-        """The group scrolled the step (arrows, mouse) since the focus last moved in it: it
-        stays where they put it when its content grows or shrinks."""
+        self._keep: FieldRow | Literal["focused", "scrolled"] = "focused"
+        """What stays in view when the step grows or shrinks above its entries: the entry the
+        step landed in, while it has the focus (placed again from the top of the step: the
+        panel's view comes from a worker, before or after the landing, and moves the entry
+        down); the focused entry; or nothing once the group scrolled (arrows, mouse) since
+        the focus last moved in the step: it stays where they put it."""
 
     def compose(self) -> ComposeResult:
         yield Prose(self.step.title, classes="title")
@@ -121,26 +140,66 @@ class StepPane(VerticalScroll):
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
 
     @on(ViewPanel.Drawn)
+    def _drawn(self, event: ViewPanel.Drawn) -> None:
+        """The panel drew its view; what it newly shows (an answer's comparison) is brought
+        into view with the entry the group is in, else the entry alone."""
+        if event.reveal is None or not self._reveal_with_entry(event.reveal):
+            self._keep_entry_in_view()
+
+    def _reveal_with_entry(self, widget: Widget) -> bool:
+        """Scroll so that the focused entry and ``widget`` are both in view, the entry first
+        when both do not fit (False: no entry of this step has the focus, or the group
+        scrolled away)."""
+        focused = self.screen.focused
+        row = next(
+            (
+                a
+                for a in (focused.ancestors_with_self if focused else ())
+                if isinstance(a, FieldRow)
+            ),
+            None,
+        )
+        if row is None or self not in row.ancestors or self._keep == "scrolled":
+            return False
+        self._keep = "focused"  # the group answered: the landing is over
+
+        def place(again: bool) -> None:
+            if not (row.is_attached and widget.is_attached):
+                return
+            view = self.scrollable_content_region
+            top = row.region.y - view.y + self.scroll_y
+            bottom = row.region.bottom - view.y + self.scroll_y
+            end = widget.region.bottom - view.y + self.scroll_y
+            y = min(max(self.scroll_y, end - view.height, bottom - view.height), top)
+            self.scroll_to(y=y, animate=False, immediate=True)
+            if again:  # once more when the layout has settled
+                self.call_after_refresh(place, False)
+
+        self.call_after_refresh(place, True)
+        return True
+
     @on(FieldRow.Reflowed)
     def _keep_entry_in_view(self) -> None:
         """The step grew or shrank above its entries (the panel drew its view, or the
         report's files after F8; an entry's hint moved under its box or back). The entry
         the step landed in is placed again from the top of the step; an entry the group
         moved to since stays in view. Either only while the group has not scrolled away."""
-        row = self._landing
-        if row is not None and row.is_attached and row.has_focus_within:
-            row.call_after_refresh(row.bring_into_view, True)
-            return
-        self._landing = None
+        landed = self._keep
+        if isinstance(landed, FieldRow):
+            if landed.is_attached and landed.has_focus_within:
+                landed.call_after_refresh(landed.bring_into_view, True)
+                return
+            self._keep = "focused"
         focused = self.screen.focused
-        if self._scrolled or focused is None:
+        if self._keep == "scrolled" or focused is None:
             return
         row = next((a for a in focused.ancestors_with_self if isinstance(a, FieldRow)), None)
         if row is not None and self in row.ancestors:
             row.call_after_refresh(row.bring_into_view)
 
     def on_descendant_focus(self, _: events.DescendantFocus) -> None:
-        self._scrolled = False
+        if self._keep == "scrolled":
+            self._keep = "focused"
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
         self._group_scrolled()
@@ -150,8 +209,7 @@ class StepPane(VerticalScroll):
 
     def _group_scrolled(self) -> None:
         """The group scrolls: the step stays where they put it."""
-        self._landing = None
-        self._scrolled = True
+        self._keep = "scrolled"
 
     def _scroll_lines(self, lines: int) -> None:
         """The arrow keys (on the step or in one of its entries): ``lines`` down (up if
@@ -198,7 +256,7 @@ class StepPane(VerticalScroll):
             row = self.landing_row()
             if row is not None:
                 row.focus_input(landing=True)
-                self._landing = row
+                self._keep = row
             else:
                 self.screen.set_focus(self)
             return
@@ -266,6 +324,9 @@ class LabScreen(StatusScreen):
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
     ]
     COMMANDS = StatusScreen.COMMANDS | {StepCommands}
+    AUTO_FOCUS = ""
+    """Nothing focused as the screen comes up (not the list of steps): the lab opens landed in
+    its step, its entry in view, as PgDn lands."""
 
     requested: reactive[float | None] = reactive(None)
     meter: reactive[MeterReading | None] = reactive(None)
@@ -316,9 +377,6 @@ class LabScreen(StatusScreen):
             current = s.current_step
         start = current if current in STEP_IDS else STEP_IDS[0]
         self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
-        # the list took the focus as the screen came up (Textual's auto-focus), not the group:
-        # the lab opens landed in its step, its entry in view, as PgDn lands
-        self._jump = ("entry",)
         await self.show_step(start)
         self.shown.set()
 
@@ -334,6 +392,39 @@ class LabScreen(StatusScreen):
         leaving), or None."""
         panes = self.query(StepPane)
         return panes.last().panel if panes else None
+
+    def panel_keys(self) -> dict[str, Callable[[], None]]:
+        """The panel keys of the step shown (:data:`PANEL_KEYS`): action -> what its panel
+        does (none on a step without a panel, or whose panel has no keys)."""
+        panel = self.panel
+        if isinstance(panel, LivePanel):
+            keys = {"set_voltage": panel.set_voltage, "capture": panel.capture}
+            return {action: run for action, run in keys.items() if panel.offers(action)}
+        if isinstance(panel, StepRunPanel):
+            return {"run_steps": panel.run_steps, "run_fast": panel.run_fast}
+        if isinstance(panel, TablePanel):
+            return {"formula": panel.formula}
+        if isinstance(panel, ResultsPanel):
+            return {
+                "zoom_next": panel.zoom_next,
+                "pick_prev": panel.pick_prev,
+                "pick_next": panel.pick_next,
+                "reveal": panel.reveal,
+            }
+        if isinstance(panel, ModelCheckPanel):
+            return {"zoom_next": panel.zoom_next}
+        return {}
+
+    async def press(self, action: str) -> None:
+        """Panel key ``action`` (:data:`PANEL_KEYS`): what the step's panel does, then wait
+        until what it asked (a capture, say) is done, so the keys typed after it act on the
+        result. Nothing on a step whose panel does not have it."""
+        run = self.panel_keys().get(action)
+        panel = self.panel
+        if run is None or panel is None:
+            return
+        run()
+        await self.settle_from(panel)
 
     def _panel_for(self, step: Step) -> Widget | None:
         """The panel of ``step``'s kind (None for steps that only take entries), bound to the
@@ -397,12 +488,18 @@ class LabScreen(StatusScreen):
         if focus is not None and self._shown == step_id and pane.is_attached:
             pane.focus_on(focus)
 
-    @work(thread=True, exclusive=True, group="view", name="panel view")
     def _load(self, panel: ViewPanel[V]) -> None:
-        """Worker: build ``panel``'s view from the session and hand it over."""
-        worker = get_current_worker()
+        """Build ``panel``'s view in a worker, from a frozen snapshot of the session as it
+        stands now (the worker never reads the live session)."""
         with self.session as s:
-            view = panel.build(s)
+            snapshot = s.snapshot()
+        self._build(panel, snapshot)
+
+    @work(thread=True, exclusive=True, group="view", name="panel view")
+    def _build(self, panel: ViewPanel[V], session: Session) -> None:
+        """Worker: build ``panel``'s view from ``session`` (a snapshot) and hand it over."""
+        worker = get_current_worker()
+        view = panel.build(session)
         if not worker.is_cancelled:
             self.app.call_from_thread(self._deliver, panel, view)
 

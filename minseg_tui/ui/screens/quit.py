@@ -34,6 +34,7 @@ class QuitScreen(ModalScreen[str]):
     the key of a choice (Escape: keep)."""
 
     BINDINGS = [Binding("escape", "keep", "Keep working")]
+    AUTO_FOCUS = "#answers"
 
     def __init__(
         self,
@@ -52,12 +53,10 @@ class QuitScreen(ModalScreen[str]):
             yield Prose(self._problem, classes="para")
             yield OptionList(*[Option(text, id=key) for key, text in self._choices], id="answers")
 
-    def on_mount(self) -> None:
-        self.query_one("#answers", OptionList).focus()
-
     @on(OptionList.OptionSelected, "#answers")
     def _answer(self, event: OptionList.OptionSelected) -> None:
-        self.dismiss(event.option.id or "keep")
+        if self.is_current:  # not an answer handed on after the first one closed it
+            self.dismiss(event.option.id or "keep")
 
     def action_keep(self) -> None:
         self.dismiss("keep")
@@ -68,6 +67,7 @@ class SaveElsewhereScreen(ModalScreen[None]):
     to show); stays open on a refusal so another folder can be typed. Escape closes."""
 
     BINDINGS = [Binding("escape", "close", "Close")]
+    AUTO_FOCUS = "#folder"
 
     def __init__(self, suggestion: str, save: Callable[[str], str]) -> None:
         super().__init__()
@@ -85,13 +85,12 @@ class SaveElsewhereScreen(ModalScreen[None]):
             yield Input(value=self._suggestion, id="folder", select_on_focus=True)
             yield Prose("", id="saved")
 
-    def on_mount(self) -> None:
-        self.query_one("#folder", Input).focus()
-
     @on(Input.Submitted, "#folder")
     def _submitted(self, event: Input.Submitted) -> None:
         event.stop()
         folder = event.value.strip()
+        if not self.is_current:  # saved and closed by an Enter before this one
+            return
         if not folder:
             self.query_one("#saved", Prose).update("✗ type a folder first")
             return

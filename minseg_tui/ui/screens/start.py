@@ -14,8 +14,8 @@ from textual.message import Message
 from textual.widgets import Footer, Input, OptionList, Static
 from textual.widgets.option_list import Option
 
-from minseg_tui.lab.steps import STEP_INDEX, step
-from minseg_tui.lab.store import SessionInfo
+from minseg_tui.lab.content.steps import STEP_INDEX, step
+from minseg_tui.lab.saving.store import SessionInfo
 from minseg_tui.ui.screens.status import StatusScreen
 
 

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from rich.segment import Segment
 from textual import events, on
 from textual.app import ComposeResult
+from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical
 from textual.geometry import Size
 from textual.message import Message
@@ -15,8 +16,8 @@ from textual.strip import Strip
 from textual.widget import Widget
 from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList
 
-from minseg_tui.lab.steps import Field
-from minseg_tui.lab.views import EntryView
+from minseg_tui.lab.content.steps import Field
+from minseg_tui.lab.views.session import EntryView
 from minseg_tui.ui.widgets.prose import Prose
 
 
@@ -59,6 +60,13 @@ class Ticks(SelectionList[int]):
         return Strip(segments, strip.cell_length)
 
 
+EDITING_KEYS: dict[str, str] = {
+    b.key: b.action for b in Binding.make_bindings(Input.BINDINGS) if b.key != "enter"
+}
+"""The text box's own keys (Textual's Input bindings) -> their actions; Enter is the lab
+screen's (it stores the entry and moves on)."""
+
+
 class EntryBox(Input):
     """The text box of an entry: focusing it selects what it holds (typing replaces it),
     except right after :meth:`start_with`, which begins it with a typed character."""
@@ -90,8 +98,17 @@ class EntryBox(Input):
         return self._starting
 
     # Textual calls the handler of every class in the MRO: these run before Input's own.
-    def on_key(self, event: events.Key) -> None:
+    async def on_key(self, event: events.Key) -> None:
+        """An editing key (Backspace, Ctrl+U, End, ...) acts here, in the order it was typed.
+        Left to Textual, it would go up to the app to find its binding while the characters
+        typed after it in the same burst went into the box first ('Ctrl+U 0,63' left the box
+        empty)."""
         self.select_on_focus = True  # the next focus selects again
+        action = EDITING_KEYS.get(event.key)
+        if action is not None:
+            event.stop()
+            event.prevent_default()
+            await self.run_action(action)
 
     def on_focus(self, event: events.Focus) -> None:
         self._starting = False

@@ -61,6 +61,9 @@ def drawn(tr: Trace) -> tuple[list[float], list[float]]:
     return x, y
 
 
+GUIDES = frozenset({"-", "|"})
+"""Markers of lines that guide the eye (a level, a time, a noise band): drawn under the data."""
+
 MOST_TICKS = 4
 """Most intervals between the labelled ticks of an axis (so at most five labels)."""
 
@@ -156,6 +159,17 @@ def thin(x: Sequence[float], y: Sequence[float], most: int) -> tuple[list[float]
     return [x[k] for k in at], [y[k] for k in at]
 
 
+def _layer(tr: Trace) -> int:
+    """Where a trace is drawn, bottom up: 0 the input's staircase, 1 a guide, 2 the data."""
+    return 0 if tr.steps else 1 if tr.marker in GUIDES else 2
+
+
+def drawing_order(traces: Sequence[Trace]) -> list[int]:
+    """The indices of ``traces`` in the order plotext draws them (each over the ones before):
+    the input's staircase, the guides, then the data, each kind in list order."""
+    return sorted(range(len(traces)), key=lambda k: _layer(traces[k]))
+
+
 def _colour(k: int, tr: Trace) -> tuple[str, str]:
     return COLOURS[(k if tr.colour is None else tr.colour) % len(COLOURS)]
 
@@ -206,7 +220,12 @@ class Canvas(PlotextPlot):
         plt.ylabel(self._ylabel)
         xs: list[float] = []
         ys: list[float] = []
-        for k, tr in enumerate(self.traces):
+        # plotext draws over what it drew before: the input's staircase first, then the guides
+        # (a level, a marker line: '-' and '|'), then the data, which must show where it
+        # crosses them (a dashed 63 % line hid the speed at its crossing); each trace keeps
+        # its place in the list for its colour
+        for k in drawing_order(self.traces):
+            tr = self.traces[k]
             if len(tr.x):
                 x, y = drawn(tr)
                 if self.size.width:

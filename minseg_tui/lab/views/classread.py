@@ -27,8 +27,8 @@ from functools import cache
 from pathlib import Path
 
 import minseg_tui
-from minseg_tui.lab.classview import ClassView, Group, Own, judge, read_group, session_folders
-from minseg_tui.lab.store import LOCK_FILE, atomic_write_text, read_regular
+from minseg_tui.lab.saving.store import LOCK_FILE, atomic_write_text, read_regular
+from minseg_tui.lab.views.classview import ClassView, Group, Own, judge, read_group, session_folders
 
 MAX_FILE = 64 << 20
 """Session files larger than this are not hashed (the row is then computed every time)."""
@@ -149,7 +149,7 @@ def store(k: str, g: Group) -> None:
 
 
 def read(session_folder: Path) -> Group:
-    """The row of ``session_folder`` (:func:`minseg_tui.lab.classview.read_group`), from the
+    """The row of ``session_folder`` (:func:`minseg_tui.lab.views.classview.read_group`), from the
     cache when its files and the code are unchanged, else computed and kept."""
     k = key(session_folder)
     if k is not None:

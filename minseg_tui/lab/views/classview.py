@@ -29,11 +29,11 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import steps as lab_steps
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.session import Session
-from minseg_tui.lab.steps import LEVELS
-from minseg_tui.lab.store import SESSION_FILE, SessionsUnreadable
+from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.content.steps import LEVELS
+from minseg_tui.lab.saving.runs import read_run
+from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable
+from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import step_alone
 from minseg_tui.quantities import RPM, format_number
@@ -363,7 +363,7 @@ def _step_alone(session: Session) -> dict[str, float | None]:
     if run is None or not pairs:
         return {}
     try:
-        st = step_alone(read_step_log(session.folder / run.file), pairs)
+        st = step_alone(read_run(session.folder, run, pairs, require_step=True), pairs)
     except InputError:
         return {}
     return {"K": st.K, "T_63": st.T_63, "T": st.T}

@@ -1,4 +1,4 @@
-"""Checking a group's answers against the steps' :class:`~minseg_tui.lab.steps.Check` data.
+"""Checking a group's answers against the steps' :class:`~minseg_tui.lab.content.steps.Check` data.
 
 A formula answer is compared with the expected formula at seeded sample points, a number
 with the expected value (which may use other entries), a choice with the right options;
@@ -12,8 +12,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from minseg_tui.lab.expr import Formula, parse_formula
-from minseg_tui.lab.steps import FIELDS, Check, Feedback, Field
+from minseg_tui.lab.content.expr import Formula, parse_formula
+from minseg_tui.lab.content.steps import FIELDS, Check, Feedback, Field
 
 _SAMPLE_SEED = 20240416
 

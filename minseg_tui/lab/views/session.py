@@ -1,6 +1,6 @@
 """What the lab's screens show, as plain data ready to render.
 
-Each builder reads a :class:`~minseg_tui.lab.session.Session` (or live samples) through its
+Each builder reads a :class:`~minseg_tui.lab.state.session.Session` (or live samples) through its
 public methods and returns frozen data: the live speed and Task 4's steady-state indicator,
 the verdict on an entry, the table of Tasks 6-9 with the formula behind every cell, the
 recorded runs with their T readings (Task 10), the results of Tasks 11-15 and the model
@@ -23,10 +23,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
-from minseg_tui.lab import capture as lab_capture
-from minseg_tui.lab import compare as lab_compare
-from minseg_tui.lab.session import Entry, Session, TableRow
-from minseg_tui.lab.steps import step
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state import capture as lab_capture
+from minseg_tui.lab.state import compare as lab_compare
+from minseg_tui.lab.state.session import Entry, Session, TableRow
+from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
@@ -200,7 +201,7 @@ REVEAL_KEY = "Ctrl+R"
 
 def hidden(session: Session) -> set[str]:
     """The fields of Tasks 11-15 whose computed value is still hidden from the group (the
-    lab's policy, :func:`minseg_tui.lab.compare.concealed`)."""
+    lab's policy, :func:`minseg_tui.lab.state.compare.concealed`)."""
     return lab_compare.concealed(policy(session), session.answered(), session.revealed())
 
 
@@ -615,7 +616,10 @@ class CheckView:
     ``lead_why``; ``cause`` (the contract name) and ``cause_words`` (every cause named, in
     words), ``evidence`` in words, the extended model with its
     parameters, the other figures (``gain``), ``notes`` (what the check cannot say, the
-    anomalies; one line each); ``problem``: why there is no result."""
+    anomalies; one line each); ``problem``: why there is no result. ``story``: the two or
+    three sentences a student reads first (:func:`minseg_tui.lab.views.check_words.lead`), about
+    the close-up, whose title with its time span is ``close_title``; the rest are the
+    details."""
 
     run: str | None
     t: FloatArray = field(default_factory=_empty)
@@ -638,18 +642,18 @@ class CheckView:
     noise: float | None = None
     notes: tuple[str, ...] = ()
     cause_words: str = ""
+    story: tuple[str, ...] = ()
+    close_title: str = ""
 
 
-def _stem(key: str) -> str:
-    """A gain key without its baseline_/extended_ prefix."""
-    return key.removeprefix("baseline_").removeprefix("extended_")
+_stem = check_words.stem
 
 
 def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | None:
     """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
-    b, e = gain.get(f"baseline_{stem}"), gain.get(f"extended_{stem}")
+    b, e = check_words.figure(gain, key)
     unit = FIGURES.get(stem, (stem, ""))[1]
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
@@ -702,6 +706,12 @@ def check(session: Session) -> CheckView:
     notes = tuple(f"cannot say: {c.text}" for c in f.caveats) + tuple(
         f"anomaly: {a.text}" for a in r.anomalies
     )
+    u: FloatArray | None = None  # unread: the story says less about the close-up's step
+    if mc.run is not None:
+        try:
+            u = np.asarray(session.load_run(mc.run).u, dtype=np.float64)
+        except (InputError, KeyError):
+            u = None
     return CheckView(
         mc.run,
         t,
@@ -723,6 +733,8 @@ def check(session: Session) -> CheckView:
         noise=cu.noise if cu is not None else floor,
         notes=notes,
         cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),
+        story=check_words.lead(r, u),
+        close_title=check_words.close_up_title(r),
     )
 
 

@@ -3,7 +3,7 @@
 Nothing here is stored: :func:`compute` derives Tasks 6-15 with
 :func:`minseg_tui.model.identify.identify` from R, the table's complete rows and the run
 Tasks 11-15 use, and :func:`check_run` runs the model check on a recorded run. The
-dataclasses are what :class:`~minseg_tui.lab.session.Session` hands to the UI and the report.
+dataclasses are what :class:`~minseg_tui.lab.state.session.Session` hands to the UI and the report.
 """
 
 from __future__ import annotations
@@ -13,8 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.runs import RunInfo
+from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import Identification, Reading, identify
 from minseg_tui.model.steplog import StepLog
@@ -138,7 +137,8 @@ def compute(
     log: StepLog | None = None
     if run is not None:
         try:
-            log = read_step_log(folder / run.file)
+            table = [(r.u_req, r.u_ss) for r in complete_rows] if u_ss_table is None else u_ss_table
+            log = read_run(folder, run, table, require_step=True)
         except InputError as exc:
             problems.append(f"run {run.name} cannot be used: {exc}")
     if R is None or not readings:
@@ -160,12 +160,15 @@ def compute(
     return Results(ident, run.name if (run and log is not None) else None, tuple(problems))
 
 
-def check_run(folder: Path, run: RunInfo) -> ModelCheck:
-    """The model check (:func:`minseg_tui.model.check.check`) of ``run``, read from ``folder``,
-    told the log's ``# cpr:`` and ``# omega_over:`` when its header says (a recorded run's
+def check_run(
+    folder: Path, run: RunInfo, u_ss_table: Sequence[tuple[float, float]] = ()
+) -> ModelCheck:
+    """The model check (:func:`minseg_tui.model.check.check`) of ``run``, read from ``folder``
+    (its applied voltage mapped through ``u_ss_table``, the (u_req, u_ss) pairs in V), told
+    the log's ``# cpr:`` and ``# omega_over:`` when its header says (a recorded run's
     does); a run that cannot be read or checked gives the reason in one line."""
     try:
-        log = read_step_log(folder / run.file)
+        log = read_run(folder, run, u_ss_table, require_step=True)
         result = check(
             log.t, log.u, log.omega, ts=run.ts, cpr=log.declared_cpr, omega_over=log.omega_over
         )

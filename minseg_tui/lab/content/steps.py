@@ -4,11 +4,11 @@ The text is ours (the manual's steps retold for the terminal, without Simulink).
 is a :class:`Step`; what a group enters is a :class:`Field` (keyed by a string that is
 also the key in the session's entries); a checkable answer has a :class:`Check`. The UI
 renders these and the session stores what was typed; neither needs a case per step.
-:mod:`minseg_tui.lab.answers` tells a right answer from a wrong one by these checks.
+:mod:`minseg_tui.lab.content.answers` tells a right answer from a wrong one by these checks.
 
 Field kinds:
 - ``quantity``: a number with a unit, parsed by :mod:`minseg_tui.quantities` (value in SI);
-- ``formula``: a formula in the names the field allows, read by :mod:`minseg_tui.lab.expr`;
+- ``formula``: a formula in the names the field allows, read by :mod:`minseg_tui.lab.content.expr`;
 - ``choice``: one (or, with ``multiple``, several) of ``options``, stored as indices;
 - ``text``: free text, never checked.
 
@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.expr import parse_formula
+from minseg_tui.lab.content.expr import parse_formula
 from minseg_tui.quantities import Plausible
 
 FieldKind = Literal["quantity", "formula", "choice", "text"]

@@ -5,17 +5,21 @@ appended to ``runs/<name>.partial`` in chunks, each chunk written and fsynced at
 :data:`FLUSH_INTERVAL` s after its first sample arrived: a crash or kill -9 loses at most
 that much of the stream. When the run ends (or, after a crash, when the session is opened
 again) the samples become ``runs/<name>.csv``, a step log in the shared format
-(:mod:`minseg_tui.lab.files`), written atomically, with the columns
+(:mod:`minseg_tui.lab.saving.files`), written atomically, with the columns
 
-    t (s, board time from the first sample), u (V, applied: see below), omega (rad/s, mean
-    speed over each sample interval from the count and the board's timestamps),
-    u_req (V), omega_lab (rad/s, the manual's Euler derivative at the nominal period then the
-    20-tap average), theta (rad), count, t_us (board micros), seq.
+    t (s, board time from the first sample), u (V: the voltage asked of the board, u_req;
+    see below), omega (rad/s, mean speed over each sample interval from the count and the
+    board's timestamps), u_req (V), omega_lab (rad/s, the manual's Euler derivative at the
+    nominal period then the 20-tap average), theta (rad), count, t_us (board micros), seq.
 
-``u`` is u_A mapped from u_req through the table's u_ss (:func:`applied_voltage`, by
-:func:`minseg_tui.model.identify.u_ss_at`): the same mapping Task 11 divides by. Without u_ss
-in the table u = u_req. The log's metadata says which, and its header says ``# cpr: 720``
-and ``# omega_over: interval`` so the model check need not detect them.
+Every column is what the board sent (u requested, counts, board time) or follows from it
+alone, so a recording is written once and never again. The applied voltage u_A depends on
+the table the group types (u_ss), so it is worked out when the run is read
+(:func:`applied_log`, mapping u_req through the table's u_ss by
+:func:`minseg_tui.model.identify.u_ss_at`: the same mapping Task 11 divides by). Runs
+recorded before this (their u column held u_A as mapped when the table last changed) read
+the same: their u_req column is mapped the same way. The header says ``# cpr: 720`` and
+``# omega_over: interval`` so the model check need not detect them.
 """
 
 from __future__ import annotations
@@ -33,10 +37,10 @@ from typing import Any
 
 import numpy as np
 
-from minseg_tui.errors import InputError
-from minseg_tui.lab.files import read_step_log, write_step_log
-from minseg_tui.lab.schema import PARTIAL_HEADER
-from minseg_tui.lab.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
+from minseg_tui.device.samples import SampleBatch
+from minseg_tui.lab.saving.files import read_step_log, write_step_log
+from minseg_tui.lab.saving.schema import PARTIAL_HEADER
+from minseg_tui.lab.saving.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
 from minseg_tui.model.identify import u_ss_at
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
@@ -63,6 +67,12 @@ OMEGA_OVER = "interval"
 """How a recorded run's ``omega`` is computed, for its ``# omega_over:`` header: over each
 sample's real interval on the board's clock (:func:`minseg_tui.signals.timestamp_velocity`)."""
 _HEADER = "seq,t_us,count,u_mV"
+
+U_AS_SENT = (
+    "u = u_req, the voltage asked of the board; the lab maps it to the applied voltage u_A "
+    "through the table's u_ss when it reads the run"
+)
+"""The ``# u:`` header of a recording as written: its u column is what the board was asked."""
 
 
 STEP_KINDS: tuple[str, ...] = ("steps", "fast", "imported")
@@ -133,7 +143,7 @@ class RunInfo:
 
     @classmethod
     def from_json(cls, d: Mapping[str, Any]) -> RunInfo:
-        """Inverse of :meth:`to_json` (``d`` checked by :data:`minseg_tui.lab.schema.RUN`)."""
+        """Inverse of :meth:`to_json` (``d`` checked by :data:`minseg_tui.lab.saving.schema.RUN`)."""
         return cls(
             name=str(d["name"]),
             file=str(d["file"]),
@@ -267,6 +277,23 @@ class Recorder:
         if now - self._first_unflushed >= self.flush_interval:
             self.flush()
 
+    def add(self, batch: SampleBatch) -> None:
+        """Every sample of ``batch`` as the link hands it over (u_req in V is the board's mV
+        over 1000, so it is kept in mV exactly, the whole batch at once)."""
+        if self.closed:
+            raise ValueError("the run is finished")
+        if not len(batch):
+            return
+        rows = np.empty((len(batch), 4), dtype=np.int64)
+        rows[:, 0], rows[:, 1], rows[:, 2] = batch.seq, batch.t_us, batch.count
+        rows[:, 3] = np.rint(batch.u_req * 1000.0)
+        self._samples.frombytes(rows.tobytes())
+        now = self._clock()
+        if self._first_unflushed is None:
+            self._first_unflushed = now
+        if now - self._first_unflushed >= self.flush_interval:
+            self.flush()
+
     def extend(self, samples: Iterable[object]) -> None:
         """Append samples with attributes ``seq, t_us, count, u_mV`` (e.g. protocol SampleLine)."""
         for s in samples:
@@ -329,7 +356,7 @@ class Recorder:
 @dataclass(frozen=True)
 class RawRun:
     """Samples read back from a partial file (or a Recorder's memory), and its header (name,
-    kind, ts, plan, started; checked against :data:`minseg_tui.lab.schema.PARTIAL_HEADER`,
+    kind, ts, plan, started; checked against :data:`minseg_tui.lab.saving.schema.PARTIAL_HEADER`,
     broken fields left out and said in ``damage``)."""
 
     header: Mapping[str, object]
@@ -412,8 +439,9 @@ def _unwrap(values: np.ndarray, bits: int = 32) -> np.ndarray:
     )
 
 
-def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> tuple[StepLog, int]:
-    """The step log of a raw run, and the number of samples lost on the link.
+def build_log(raw: RawRun, ts: float) -> tuple[StepLog, int]:
+    """The step log of a raw run as the board sent it (its u column is u_req: see
+    :func:`applied_log`), and the number of samples lost on the link.
 
     Samples whose (unwrapped) board time does not increase are dropped (a repeated line).
     """
@@ -427,7 +455,6 @@ def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> t
     u_req = raw.u_mV[keep].astype(float) / 1000.0
     t = t_rel / 1e6
     dropped = int(np.sum(np.maximum(np.diff(seq_u) - 1, 0))) if seq_u.size > 1 else 0
-    u, how = applied_voltage(u_req, table)
     theta = angle(count)
     omega = timestamp_velocity(t, count)
     omega_lab = lab_velocity(count, ts)
@@ -435,7 +462,7 @@ def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> t
         "source": "minseg-tui session recording",
         "ts": f"{ts:g}",
         "cpr": str(COUNTS_PER_REV),
-        "u": how,
+        "u": U_AS_SENT,
         "omega": "mean speed over each sample interval, from the encoder count and the board's timestamps",
         "omega_over": OMEGA_OVER,
         "omega_lab": f"the manual's estimate: Euler derivative at the nominal Ts = {ts:g} s, then the 20-tap average",
@@ -450,7 +477,7 @@ def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> t
             )
     log = StepLog(
         t=t,
-        u=u,
+        u=u_req.copy(),
         omega=omega,
         extra={
             "u_req": u_req,
@@ -466,7 +493,7 @@ def build_log(raw: RawRun, table: Sequence[tuple[float, float]], ts: float) -> t
 
 
 def write_log_atomic(path: Path, log: StepLog) -> None:
-    """Write ``log`` with :func:`minseg_tui.lab.files.write_step_log`, atomically."""
+    """Write ``log`` with :func:`minseg_tui.lab.saving.files.write_step_log`, atomically."""
     path = Path(path)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.build")
     try:
@@ -477,18 +504,28 @@ def write_log_atomic(path: Path, log: StepLog) -> None:
             tmp.unlink()
 
 
-def remap_log(path: Path, table: Sequence[tuple[float, float]]) -> None:
-    """Recompute the ``u`` column of the run at ``path`` from its u_req with a new table."""
-    log = read_step_log(path, require_step=False)
+def applied_log(log: StepLog, table: Sequence[tuple[float, float]]) -> StepLog:
+    """``log`` of a recorded run as the lab reads it: its u column u_A, mapped from its u_req
+    through the table's (u_req, u_ss) pairs (:func:`applied_voltage`), the metadata saying
+    how. A log without u_req (recorded elsewhere) is returned as it is."""
     if "u_req" not in log.extra:
-        return
+        return log
     u, how = applied_voltage(np.asarray(log.extra["u_req"], dtype=float), table)
-    meta = dict(log.metadata)
-    meta["u"] = how
+    meta = {**log.metadata, "u": how}
     meta.setdefault("cpr", str(COUNTS_PER_REV))  # runs recorded before these were written
     meta.setdefault("omega_over", OMEGA_OVER)
-    meta.pop("format", None)
-    write_log_atomic(path, StepLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta))
+    return StepLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta)
+
+
+def read_run(
+    folder: Path, run: RunInfo, table: Sequence[tuple[float, float]], require_step: bool = False
+) -> StepLog:
+    """Run ``run`` of the session in ``folder`` read back, its u column the applied voltage
+    from ``table`` for a recorded run (:func:`applied_log`), as it stands for an imported
+    one. InputError (file and line) when its file is damaged (or, with ``require_step``,
+    holds no step)."""
+    log = read_step_log(folder / run.file, require_step=require_step)
+    return log if run.kind == "imported" else applied_log(log, table)
 
 
 # -- the runs of a session folder --------------------------------------------------------------
@@ -514,7 +551,6 @@ def keep_run(
     folder: Path,
     name: str,
     raw: RawRun,
-    table: Sequence[tuple[float, float]],
     interrupted: bool,
     ended_by: str = "",
 ) -> RunInfo | None:
@@ -524,7 +560,7 @@ def keep_run(
     if raw.seq.size < 2:
         return None
     ts = ts_of(raw)
-    log, dropped = build_log(raw, table, ts)
+    log, dropped = build_log(raw, ts)
     file = f"{RUNS_DIR}/{name}.csv"
     write_log_atomic(folder / file, log)
     plan = raw.header.get("plan")
@@ -566,16 +602,3 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
         dropped=0,
         started=started,
     )
-
-
-def remap_runs(folder: Path, runs: Iterable[RunInfo], table: Sequence[tuple[float, float]]) -> None:
-    """Recompute the ``u`` column of every recorded (not imported) run with a new table."""
-    for r in runs:
-        if r.kind == "imported":
-            continue
-        path = folder / r.file
-        if path.exists():
-            try:
-                remap_log(path, table)
-            except InputError:
-                continue

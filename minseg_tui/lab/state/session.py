@@ -2,23 +2,23 @@
 
 The UI holds one :class:`Session`, renders its state and calls its methods; it does no
 arithmetic and no file I/O of its own. Every change is saved at once (atomically, see
-:mod:`minseg_tui.lab.store`); reopening a session restores it exactly, current step
+:mod:`minseg_tui.lab.saving.store`); reopening a session restores it exactly, current step
 included. Derived numbers (Tasks 6-15) are never stored: :meth:`Session.results`
 computes them from the entries and the chosen run with :mod:`minseg_tui.model.identify`,
 so changing an earlier entry changes every later result.
 
 The session holds the state and saves it; its parts are modules of their own:
-:mod:`~minseg_tui.lab.entries` (what was typed, read and revised),
-:mod:`~minseg_tui.lab.results` (Tasks 6-15, the table, the model check),
-:mod:`~minseg_tui.lab.runs` (recording and keeping runs), :mod:`~minseg_tui.lab.store`
-(the files on disk, the lock, what a failed save is), :mod:`~minseg_tui.lab.schema`
-(the session file's one schema) and :mod:`~minseg_tui.lab.answers` (checking answers).
+:mod:`~minseg_tui.lab.state.entries` (what was typed, read and revised),
+:mod:`~minseg_tui.lab.state.results` (Tasks 6-15, the table, the model check),
+:mod:`~minseg_tui.lab.saving.runs` (recording and keeping runs), :mod:`~minseg_tui.lab.saving.store`
+(the files on disk, the lock, what a failed save is), :mod:`~minseg_tui.lab.saving.schema`
+(the session file's one schema) and :mod:`~minseg_tui.lab.content.answers` (checking answers).
 
 A save that fails never raises: the session goes on in memory and says why in
 :attr:`Session.save_problem` (see :class:`Session`).
 
 Units: entries are stored as typed (``text``) and as parsed SI values (``value``: V, A,
-ohm, rad/s, s, ...); the form unit of each field is in :mod:`minseg_tui.lab.steps`.
+ohm, rad/s, s, ...); the form unit of each field is in :mod:`minseg_tui.lab.content.steps`.
 
 Typical use::
 
@@ -45,23 +45,11 @@ from pathlib import Path
 from typing import Any
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab import answers
-from minseg_tui.lab import steps as lab_steps
-from minseg_tui.lab.capture import DEFAULT_WINDOW, Capture, capture
-from minseg_tui.lab.compare import compare_fields, reveal_keys
-from minseg_tui.lab.entries import Entry, parsed_values, read_entry, revise
-from minseg_tui.lab.expr import Formula
-from minseg_tui.lab.files import read_step_log
-from minseg_tui.lab.results import (
-    Comparison,
-    ModelCheck,
-    Notice,
-    Results,
-    TableRow,
-    check_run,
-    compute,
-)
-from minseg_tui.lab.runs import (
+from minseg_tui.lab.content import answers
+from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.content.expr import Formula
+from minseg_tui.lab.content.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
+from minseg_tui.lab.saving.runs import (
     FLUSH_INTERVAL,
     PARTIAL_SUFFIX,
     STEP_KINDS,
@@ -72,13 +60,12 @@ from minseg_tui.lab.runs import (
     keep_run,
     new_name,
     read_partial,
-    remap_runs,
+    read_run,
     run_header,
     ts_of,
 )
-from minseg_tui.lab.schema import KIND, RUN_NAME, SCHEMA
-from minseg_tui.lab.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
-from minseg_tui.lab.store import (
+from minseg_tui.lab.saving.schema import KIND, RUN_NAME, SCHEMA
+from minseg_tui.lab.saving.store import (
     RUNS_DIR,
     SESSION_FILE,
     SaveProblem,
@@ -93,6 +80,18 @@ from minseg_tui.lab.store import (
     salvage_session_file,
     take_lock,
 )
+from minseg_tui.lab.state.capture import DEFAULT_WINDOW, Capture, capture
+from minseg_tui.lab.state.compare import compare_fields, reveal_keys
+from minseg_tui.lab.state.entries import Entry, parsed_values, read_entry, revise
+from minseg_tui.lab.state.results import (
+    Comparison,
+    ModelCheck,
+    Notice,
+    Results,
+    TableRow,
+    check_run,
+    compute,
+)
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog
@@ -106,6 +105,21 @@ def _now() -> datetime:
 
 def _slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
+
+
+class _Cache:
+    """What a session computed (Tasks 6-15, the model checks), each under the key of what it
+    was computed from; shared by a session and its snapshots, so a view built from a snapshot
+    is not computed again by the next one. Each attribute is replaced whole (never changed
+    in place), so threads may share it."""
+
+    def __init__(self) -> None:
+        self.results: tuple[object, Results] | None = None
+        self.checks: dict[tuple[int, str], ModelCheck] = {}
+
+
+class SessionFrozen(RuntimeError):
+    """A change asked of a snapshot (:meth:`Session.snapshot`): a program error."""
 
 
 @dataclass(frozen=True)
@@ -152,14 +166,14 @@ class Session:
             k: Capture.from_json(v) for k, v in data["captures"].items()
         }
         self._runs: list[RunInfo] = [RunInfo.from_json(r) for r in data["runs"]]
-        self._results: tuple[object, Results] | None = None
-        self._checks: dict[tuple[int, str], ModelCheck] = {}
+        self._cache = _Cache()
+        self.frozen = False
+        """A snapshot (:meth:`snapshot`): it reads as the session did, and changes nothing."""
         self._run_version = 0
         self._problem: SaveProblem | None = None
         self._unsaved = False
         # finished recordings whose log is not written yet, and whether each stopped early
         self._unkept: list[tuple[Recorder, bool, str]] = []
-        self._remap_due = False  # the runs' u column waits for a table change to be written
         self.recovered: list[str] = []
         """Names of runs rebuilt at open from a recording a crash interrupted."""
         self.recovery_notes: list[str] = []
@@ -274,6 +288,39 @@ class Session:
     def __exit__(self, *exc: object) -> None:
         self.close()
 
+    def snapshot(self) -> Session:
+        """A frozen copy of the session as it stands now, for another thread (a worker that
+        builds a view or writes the report): it reads as the session does (entries, runs,
+        results, the model check, its folder), shares nothing the session changes, and
+        refuses every change (:class:`SessionFrozen`). It holds no lock; what it computes
+        is kept for the session too (the same inputs give the same results)."""
+        data = {k: v for k, v in self._data.items() if k not in ("entries", "captures", "runs")}
+        snap = Session(
+            self.folder,
+            {**json.loads(json.dumps(data)), "entries": {}, "captures": {}, "runs": []},
+            lock=None,
+            clock=self._clock,
+            readonly=True,
+        )
+        snap._entries = dict(self._entries)  # Entry, Capture and RunInfo are frozen
+        snap._captures = dict(self._captures)
+        snap._runs = list(self._runs)
+        snap._cache = self._cache
+        snap._run_version = self._run_version
+        snap._problem = self._problem
+        snap._unsaved = self.unsaved
+        snap.readonly = self.readonly
+        snap.damaged = self.damaged
+        snap.recovered = list(self.recovered)
+        snap.recovery_notes = list(self.recovery_notes)
+        snap.frozen = True
+        return snap
+
+    def _change(self) -> None:
+        """Refuse a change of a snapshot (before anything is changed)."""
+        if self.frozen:
+            raise SessionFrozen(f"a snapshot of session {self.id} is not changed")
+
     @property
     def save_problem(self) -> SaveProblem | None:
         """Why the session is not all on disk (``.line``: one line for the status bar), or
@@ -282,15 +329,15 @@ class Session:
 
     @property
     def unsaved(self) -> bool:
-        """True while a change, a finished run or a run's new u column is only in memory."""
-        return self._unsaved or bool(self._unkept) or self._remap_due
+        """True while a change or a finished run is only in memory."""
+        return self._unsaved or bool(self._unkept)
 
     def save(self) -> bool:
         """Write everything not yet on disk: runs kept since the last save that worked,
-        session.json (atomically), the runs' u column after a table change. True when all
-        is on disk. A failed write never raises: it becomes :attr:`save_problem`, and the
+        session.json (atomically). True when all is on disk. A failed write never raises: it becomes :attr:`save_problem`, and the
         next change or call of :meth:`save` tries again (call it every few seconds while
         there is a problem)."""
+        self._change()
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
         ok = True
@@ -313,13 +360,6 @@ class Session:
             self._failed(exc)
             return False
         self._unsaved = False
-        if self._remap_due:
-            try:
-                remap_runs(self.folder, self._runs, self.table_pairs())
-                self._remap_due = False
-            except OSError as exc:
-                self._failed(exc)
-                ok = False
         if ok:
             self._problem = None
         return ok
@@ -341,6 +381,7 @@ class Session:
         lock it there and go on there; the old folder is left as it is (and unlocked). The
         run files come along where they can be read. SessionNotWritable (one line, nothing
         changed) when ``root`` cannot take it."""
+        self._change()
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
         # the id as a folder name of its own: a file saying '../x' must not leave ``root``
@@ -388,11 +429,13 @@ class Session:
 
     def set_members(self, members: Sequence[str]) -> None:
         """Change the group's members (saved)."""
+        self._change()
         self._data["members"] = [str(m) for m in members]
         self._changed()
 
     def set_date(self, date: str) -> None:
         """Change the lab's date (saved)."""
+        self._change()
         self._data["date"] = str(date)
         self._changed()
 
@@ -408,6 +451,7 @@ class Session:
 
     def go_to(self, step_id: str) -> Step:
         """Move to ``step_id`` (KeyError if unknown); saved, so resume comes back here."""
+        self._change()
         new = lab_steps.step(step_id)
         self._data["current_step"] = new.id
         self.save()
@@ -442,6 +486,7 @@ class Session:
         entry: accepted with its value, note and warnings, or refused with a one-line message.
         The text is kept either way, and saved before this returns (or, when the save
         fails, kept in memory and said by :attr:`save_problem`)."""
+        self._change()
         entry = revise(
             self._entries.get(key),
             read_entry(FIELDS[key], text),
@@ -457,8 +502,7 @@ class Session:
         ):
             self._captures.pop(key, None)
         if key.startswith("u_ss@") and entry.refused is None:
-            self._remap_due = True  # the runs' u column follows the table (written by save)
-            self._run_version += 1
+            self._run_version += 1  # the runs' applied voltage follows the table when read
         self._changed()
         return entry
 
@@ -519,6 +563,7 @@ class Session:
         """Task 4: capture omega_ss at requested ``level`` (V) as the mean of the last
         ``window`` s of ``omega`` (rad/s) at times ``t`` (s); stores the capture (spread,
         window) and enters omega_ss@level. ValueError with fewer than 3 samples."""
+        self._change()
         key = f"omega_ss@{level:g}"
         if key not in FIELDS:
             raise KeyError(key)
@@ -580,10 +625,11 @@ class Session:
             run.name if run else None,
             self._run_version,
         )
-        if self._results is not None and self._results[0] == key:
-            return self._results[1]
+        cached = self._cache.results
+        if cached is not None and cached[0] == key:
+            return cached[1]
         res = self._compute()
-        self._results = (key, res)
+        self._cache.results = (key, res)
         return res
 
     def _compute(self) -> Results:
@@ -607,11 +653,11 @@ class Session:
                 "no step run recorded yet (Task 10)" if name is None else f"no run {name}",
             )
         key = (self._run_version, run.name)
-        cached = self._checks.get(key)
+        cached = self._cache.checks.get(key)
         if cached is not None:
             return cached
-        result = check_run(self.folder, run)
-        self._checks = {key: result}
+        result = check_run(self.folder, run, self.table_pairs())
+        self._cache.checks = {key: result}
         return result
 
     def warnings(self, step_id: str | None = None) -> list[Notice]:
@@ -652,6 +698,7 @@ class Session:
     def reveal(self, step_id: str) -> list[str]:
         """Show the computed values of step ``step_id`` before the group answered them:
         the fields so marked (saved; the report says "revealed before answering")."""
+        self._change()
         keys = reveal_keys(lab_steps.step(step_id).fields, self.answered())
         if keys:
             self._data["revealed"] = sorted(self.revealed() | set(keys))
@@ -673,8 +720,13 @@ class Session:
         raise KeyError(name)
 
     def load_run(self, name: str) -> StepLog:
-        """Run ``name`` read back as a StepLog (InputError if its file is damaged)."""
-        return read_step_log(self.run_path(name), require_step=False)
+        """Run ``name`` read back as a StepLog, its u column the applied voltage u_A worked out
+        now from the table's u_ss (a recorded run; an imported one as it stands). KeyError for
+        an unknown run, InputError if its file is damaged."""
+        for r in self._runs:
+            if r.name == name:
+                return read_run(self.folder, r, self.table_pairs())
+        raise KeyError(name)
 
     def step_run(self) -> RunInfo | None:
         """The run Tasks 11-15 use: the one the group chose (it stays until they choose
@@ -693,6 +745,7 @@ class Session:
     def select_run(self, name: str | None) -> None:
         """Use run ``name`` for Tasks 11-15 until the group picks another (None: the default
         of :meth:`step_run`); saved in the session."""
+        self._change()
         if name is not None:
             self.run_path(name)
         self._data["selected_run"] = name
@@ -713,6 +766,7 @@ class Session:
         the Recorder to append samples to. Nothing is lost to a crash beyond its flush
         interval, nor to a write that fails (the Recorder keeps the samples). Raises
         SessionNotWritable (one line) when its file cannot be made."""
+        self._change()
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
         ts_ = ts if ts is not None else (plan.ts if plan else 0.025)
@@ -750,9 +804,10 @@ class Session:
         records the run (saved) and the partial file goes. None (and nothing kept) when it
         holds fewer than 2 samples. ``stopped_early``: the run ended before its plan did
         (stopped, board lost, program closed; kept as ``interrupted``, ``ended_by`` a key of
-        :data:`minseg_tui.lab.runs.ENDED_BY` saying which). When the log cannot
+        :data:`minseg_tui.lab.saving.runs.ENDED_BY` saying which). When the log cannot
         be written the run is kept in memory, saved with the next save that works, and
         SessionNotWritable says so."""
+        self._change()
         recorder.close()
         raw = recorder.raw()
         if raw.seq.size < 2:
@@ -776,6 +831,7 @@ class Session:
 
     def discard_run(self, recorder: Recorder) -> None:
         """Throw a recording away (the partial file is removed)."""
+        self._change()
         recorder.close()
         with contextlib.suppress(OSError):
             recorder.path.unlink(missing_ok=True)
@@ -787,7 +843,7 @@ class Session:
         too short. OSError when its log cannot be written."""
         if any(r.name == name for r in self._runs):
             return None
-        info = keep_run(self.folder, name, raw, self.table_pairs(), interrupted, ended_by)
+        info = keep_run(self.folder, name, raw, interrupted, ended_by)
         if info is None:
             return None
         self._runs.append(info)
@@ -801,9 +857,7 @@ class Session:
             rec, stopped_early, ended_by = self._unkept[0]
             raw = rec.raw()
             if not any(r.name == rec.name for r in self._runs):
-                info = keep_run(
-                    self.folder, rec.name, raw, self.table_pairs(), stopped_early, ended_by
-                )
+                info = keep_run(self.folder, rec.name, raw, stopped_early, ended_by)
                 if info is not None:
                     self._runs.append(info)
                     self._run_version += 1
@@ -847,6 +901,7 @@ class Session:
         """Copy a step log recorded elsewhere into runs/ (checked by read_step_log; InputError
         with file and line if it is not one, SessionNotWritable if it cannot be written) for
         the model check and Tasks 11-15."""
+        self._change()
         try:
             info = import_log(
                 self.folder,

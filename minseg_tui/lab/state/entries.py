@@ -1,6 +1,6 @@
 """What a group typed in each field, as the session keeps it: the :class:`Entry`.
 
-:func:`read_entry` reads text typed in a field (:mod:`minseg_tui.lab.steps`) into an
+:func:`read_entry` reads text typed in a field (:mod:`minseg_tui.lab.content.steps`) into an
 entry, accepted with its SI value or refused with a one-line message; :func:`revise`
 decides what is in effect after a new text, keeping the history and never letting a
 refused text displace an accepted one. Pure functions: the session stores and saves.
@@ -14,8 +14,8 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.answers import read_formula
-from minseg_tui.lab.steps import FIELDS, Field
+from minseg_tui.lab.content.answers import read_formula
+from minseg_tui.lab.content.steps import FIELDS, Field
 from minseg_tui.quantities import parse_quantity
 
 

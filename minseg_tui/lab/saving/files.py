@@ -12,7 +12,7 @@ are kept.
 Generous where it is unambiguous (a BOM, \\r\\n, whitespace around fields, blank lines,
 column names in any case); anything else is refused with an InputError naming the file,
 the line and what was expected. Files are streamed in bounded memory
-(:mod:`minseg_tui.lab.csvread`, which also caps lines, bytes and waits); values beyond what
+(:mod:`minseg_tui.lab.saving.csvread`, which also caps lines, bytes and waits); values beyond what
 a MinSeg produces are refused (LIMITS), and so are more rows than a lab produces.
 """
 
@@ -27,7 +27,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.csvread import CsvColumns, read_csv
+from minseg_tui.lab.saving.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.steplog import StepLog, clock_problem, command, find_edges, header_problem
 from minseg_tui.quantities import NUMBER
@@ -103,25 +103,30 @@ def _check_limits(f: CsvColumns, units: Mapping[str, str]) -> None:
         unit = units.get(name, "a number")
         if name in LIMITS:
             limit, what = LIMITS[name]
-            bad = np.flatnonzero(np.abs(v) > limit)
-            if bad.size:
-                k = int(bad[0])
-                raise InputError(
-                    f.source,
-                    int(f.lines[k]),
-                    f"expected |{name} ({unit})| below {limit:g}, a plausible size for {what}; "
-                    f"got {_show(float(v[k]))}",
-                )
+            _refuse_first(
+                f,
+                np.abs(v) > limit,
+                v,
+                f"expected |{name} ({unit})| below {limit:g}, a plausible size for {what}",
+            )
         if name in UINT32_COLUMNS:
-            bad = np.flatnonzero((v < 0) | (v > 2.0**32 - 1) | (v != np.floor(v)))
-            if bad.size:
-                k = int(bad[0])
-                raise InputError(
-                    f.source,
-                    int(f.lines[k]),
-                    f"expected {name} ({unit}) to be {UINT32_COLUMNS[name]}, an integer from 0 "
-                    f"to 4294967295; got {_show(float(v[k]))}",
-                )
+            _refuse_first(
+                f,
+                (v < 0) | (v > 2.0**32 - 1) | (v != np.floor(v)),
+                v,
+                f"expected {name} ({unit}) to be {UINT32_COLUMNS[name]}, an integer from 0 "
+                "to 4294967295",
+            )
+
+
+def _refuse_first(
+    f: CsvColumns, bad: NDArray[np.bool_], v: NDArray[np.float64], expected: str
+) -> None:
+    """Refuse the first row where ``bad`` holds: ``expected``, and the value it got."""
+    rows = np.flatnonzero(bad)
+    if rows.size:
+        k = int(rows[0])
+        raise InputError(f.source, int(f.lines[k]), f"{expected}; got {_show(float(v[k]))}")
 
 
 def _check_sample_period(f: CsvColumns, t: NDArray[np.float64]) -> None:

@@ -6,7 +6,7 @@ A schema is built from a few small node types (:class:`Text`, :class:`Number`,
 (``entries.R.history: expected a list, got 5``), or None. The check descends only as
 deep as the schema, so no file, however deeply nested, can exhaust the stack here.
 
-:data:`SESSION` is session.json as :class:`~minseg_tui.lab.session.Session` writes it;
+:data:`SESSION` is session.json as :class:`~minseg_tui.lab.state.session.Session` writes it;
 :func:`salvage` keeps what is sound in a damaged one for a read-only look.
 """
 
@@ -19,7 +19,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from minseg_tui.lab.steps import FIELDS, STEP_INDEX, STEPS
+from minseg_tui.lab.content.steps import FIELDS, STEP_INDEX, STEPS
 
 SCHEMA: int = 1
 """Version of session.json's layout; a file with another version is refused."""
@@ -222,7 +222,7 @@ class EntryMap(MapOf):
 
 @dataclass(frozen=True)
 class StepName(Node):
-    """The id of one of the lab's steps (:data:`minseg_tui.lab.steps.STEPS`)."""
+    """The id of one of the lab's steps (:data:`minseg_tui.lab.content.steps.STEPS`)."""
 
     def check(self, value: object, where: str) -> str | None:
         if not isinstance(value, str):
@@ -323,7 +323,7 @@ ENTRY = Record(
         "refused": OneOf((None, Pair((Text(), Text(), Text())))),
     },
 )
-"""One entry (:meth:`minseg_tui.lab.entries.Entry.to_json`)."""
+"""One entry (:meth:`minseg_tui.lab.state.entries.Entry.to_json`)."""
 
 CAPTURE = Record(
     required={
@@ -335,7 +335,7 @@ CAPTURE = Record(
     },
     optional={"velocity": Text()},
 )
-"""One steady-state capture (:meth:`minseg_tui.lab.capture.Capture.to_json`)."""
+"""One steady-state capture (:meth:`minseg_tui.lab.state.capture.Capture.to_json`)."""
 
 PLAN = MapOf(Number())
 """A run's step plan: low, high, half_period, periods, ts."""
@@ -354,7 +354,7 @@ RUN = Record(
     },
     rules=(_run_file,),
 )
-"""One recorded run (:meth:`minseg_tui.lab.runs.RunInfo.to_json`)."""
+"""One recorded run (:meth:`minseg_tui.lab.saving.runs.RunInfo.to_json`)."""
 
 SESSION = Record(
     required={
@@ -385,7 +385,7 @@ PARTIAL_HEADER = Record(
         "plan": PLAN,
     },
 )
-"""The header line of a run's partial file (:func:`minseg_tui.lab.runs.run_header`)."""
+"""The header line of a run's partial file (:func:`minseg_tui.lab.saving.runs.run_header`)."""
 
 
 def salvage(data: dict[str, Any]) -> tuple[dict[str, Any], list[str]]:

@@ -17,8 +17,8 @@ from collections.abc import Callable, Collection, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from minseg_tui.lab.results import Comparison, Results
-from minseg_tui.lab.steps import Field
+from minseg_tui.lab.content.steps import Field
+from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.quantities import format_number
 

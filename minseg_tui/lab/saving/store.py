@@ -8,7 +8,7 @@ that has it open, :mod:`minseg_tui.lock`) and the reports.
 Every write of a whole file goes to a temporary file in the same folder, is flushed and
 fsynced, replaces the old file with ``os.replace`` and then the folder is fsynced: a crash
 leaves either the old or the new file, never a mix. A session file that cannot be read
-(bad JSON, a part that breaks the schema of :mod:`minseg_tui.lab.schema`) raises
+(bad JSON, a part that breaks the schema of :mod:`minseg_tui.lab.saving.schema`) raises
 :class:`SessionDamaged` and is never written over. A write that fails (a full disk, a
 read-only folder, a drive pulled out) is a :class:`SaveProblem` the session keeps.
 """
@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from minseg_tui.errors import InputError, MinsegError
-from minseg_tui.lab.schema import KIND, SCHEMA, SESSION, problem, salvage
+from minseg_tui.lab.saving.schema import KIND, SCHEMA, SESSION, problem, salvage
 from minseg_tui.lock import FileLock, LockHeld, holder, pid_alive
 
 MAX_SESSION_BYTES = 16 * 2**20
@@ -236,7 +236,7 @@ def _identity_problem(data: object) -> str | None:
 
 
 def schema_problem(data: object) -> str | None:
-    """Why ``data`` is not a session of this schema (:data:`minseg_tui.lab.schema.SESSION`,
+    """Why ``data`` is not a session of this schema (:data:`minseg_tui.lab.saving.schema.SESSION`,
     checked whole), or None when it is."""
     why = _identity_problem(data)
     if why:

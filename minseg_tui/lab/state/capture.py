@@ -41,7 +41,7 @@ class Capture:
 
     @classmethod
     def from_json(cls, d: Mapping[str, Any]) -> Capture:
-        """Inverse of :meth:`to_json` (``d`` checked by :data:`minseg_tui.lab.schema.CAPTURE`)."""
+        """Inverse of :meth:`to_json` (``d`` checked by :data:`minseg_tui.lab.saving.schema.CAPTURE`)."""
         return cls(
             omega_ss=float(d["omega_ss"]),
             spread=float(d["spread"]),

@@ -1,0 +1,316 @@
+"""The model check told to a second-year student: two or three sentences about the close-up
+they look at, the details after them.
+
+The model layer (:mod:`minseg_tui.model.check`) gives records: the cause and the others,
+the gain figures, the figure that leads, the close-up's rows. This module reads them, and
+the run's input voltage, and writes what the lab screen and the report both lead with:
+
+1. what the simple (first-order) model gets wrong in the close-up, at the step it shows;
+2. the likely cause in everyday words;
+3. how much better the extended model does, in one figure.
+
+The full text for lab assistants stays :func:`minseg_tui.model.check.text` (``minseg-tui
+analyze``). Units: s, V, rad/s, rad.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from minseg_tui.model.check import CheckResult
+from minseg_tui.quantities import format_value
+
+FloatArray = NDArray[np.float64]
+
+EVERYDAY: dict[str, str] = {
+    "coulomb_friction": (
+        "dry friction in the gearbox and the brushes: a constant braking torque, so the "
+        "wheel stops sooner than the model says (the model only knows a friction that "
+        "shrinks with the speed)"
+    ),
+    "dead_time": (
+        "a delay: the motor answers a little after the command, as if the voltage arrived late"
+    ),
+    "velocity_filter": (
+        "the speed you see is an average over several samples, which turns every jump into a ramp"
+    ),
+    "coast_on_zero": (
+        "at 0 V the driver lets the wheel spin freely instead of braking it, so it runs down "
+        "at its own pace, not at the pace of a braked motor"
+    ),
+    "second_pole": (
+        "the current needs time to build up in the motor's winding, so the speed starts "
+        "rising gently instead of at once"
+    ),
+    "current_limit": (
+        "the driver limits the current, so the wheel can only speed up so fast at first"
+    ),
+}
+"""Each cause the check can name, in the words of someone who has not met it yet."""
+
+SHORT: dict[str, str] = {
+    "coulomb_friction": "dry friction",
+    "dead_time": "a delay",
+    "velocity_filter": "an averaged speed",
+    "coast_on_zero": "coasting at 0 V",
+    "second_pole": "a slow current build-up",
+    "current_limit": "a current limit",
+}
+"""Each cause in two or three words (for 'with ... added' and 'or ...')."""
+
+FIGURE_WORDS: dict[str, str] = {
+    "angle_rms": "its error in the wheel's angle",
+    "heldout_rmse": "its speed error on steps it was not fitted to",
+    "above_noise": "its speed error beyond the noise",
+    "above_floor": "its speed error beyond the encoder's noise",
+    "rmse": "its rms speed error",
+}
+"""The gain figures (``gain`` keys without their baseline_/extended_ prefix) in words."""
+
+FIGURE_UNITS: dict[str, str] = {
+    "angle_rms": "rad",
+    "heldout_rmse": "rad/s",
+    "above_noise": "rad/s",
+    "above_floor": "rad/s",
+    "rmse": "rad/s",
+}
+
+SLOWER: dict[str, int] = {"coast_on_zero": -1}
+"""Which way each cause makes the first-order model miss in its close-up: +1 (the default)
+the measured wheel is slower than the model says (it stops sooner, starts later, rises
+more gently), -1 faster (it runs down more slowly)."""
+
+MIN_STILL_ROWS = 3
+"""A wheel stands still from a row on when it reads still there and in at least this many
+rows after it, to the end of the close-up."""
+
+
+@dataclass(frozen=True)
+class Moment:
+    """What the close-up shows at its step: ``kind`` 'drop' (the voltage falls), 'rise', or
+    '' (no step in it); the step's time ``edge`` and the voltages around it (V); the row
+    described (``at``, s) with the measured, first-order and extended speeds there (rad/s);
+    ``still``: the wheel stands still from ``at`` on (a drop that stops it)."""
+
+    kind: str
+    edge: float
+    u_from: float
+    u_to: float
+    at: float
+    measured: float
+    first_order: float
+    extended: float
+    still: bool = False
+
+
+def stem(key: str) -> str:
+    """A gain figure's key without its model: 'heldout_extended_rmse' -> 'heldout_rmse',
+    'baseline_angle_rms' -> 'angle_rms'."""
+    return key.replace("baseline_", "").replace("extended_", "")
+
+
+def figure(gain: Mapping[str, float | None], key: str) -> tuple[float | None, float | None]:
+    """The first-order and the extended model's value of gain figure ``key`` (either
+    model's key, or its :func:`stem`): the keys are 'baseline_<stem>' and 'extended_<stem>',
+    or 'heldout_baseline_rmse' and 'heldout_extended_rmse'. None where the log does not give
+    it."""
+    s = stem(key)
+    for b, e in (
+        (f"baseline_{s}", f"extended_{s}"),
+        (
+            s.replace("heldout_", "heldout_baseline_", 1),
+            s.replace("heldout_", "heldout_extended_", 1),
+        ),
+    ):
+        if b in gain or e in gain:
+            return gain.get(b), gain.get(e)
+    return None, None
+
+
+def _v(x: float) -> str:
+    return format_value(x, "V", 3)
+
+
+def _w(x: float) -> str:
+    return format_value(abs(x) if abs(x) >= 0.005 else 0.0, "rad/s", 2)
+
+
+def _s(x: float) -> str:
+    return format_value(x, "s", 3)
+
+
+def _later(x: float) -> str:
+    """A time after a step: '175 ms', '1.2 s'."""
+    return f"{x * 1e3:.0f} ms" if x < 1.0 else format_value(x, "s", 2)
+
+
+def moment(r: CheckResult, u: ArrayLike | None) -> Moment | None:
+    """What happens at the step the close-up shows, read off the rows of ``r`` and the
+    run's input ``u`` (V, one value per row of ``r.t``): the row where the wheel stands
+    still after a drop (when it does), else the row where the first-order model misses the
+    measured speed most (a mean over three rows, so one noisy sample does not decide).
+    None: no close-up, no input of the same length, or no step in the close-up."""
+    cu = r.close_up
+    t = np.asarray(r.t, dtype=float)
+    if cu is None or u is None:
+        return None
+    uu = np.asarray(u, dtype=float)
+    if uu.size != t.size:
+        return None
+    a, b = cu.start, min(cu.end, t.size)
+    edge = next((k for k in range(max(a, 1), b) if uu[k] != uu[k - 1]), None)
+    if edge is None:
+        return None
+    w = np.asarray(r.omega, dtype=float)
+    base = np.asarray(r.baseline_pred, dtype=float)
+    ext = np.asarray(r.extended_pred, dtype=float)
+    drop = abs(uu[edge]) < abs(uu[edge - 1])
+    res = r.sampling.resolution if r.sampling is not None else None
+    zero = 0.5 * res if res else max(cu.noise, 1e-9)
+
+    def at(k: int, still: bool = False) -> Moment:
+        return Moment(
+            "drop" if drop else "rise",
+            float(t[edge]),
+            float(uu[edge - 1]),
+            float(uu[edge]),
+            float(t[k]),
+            float(w[k]),
+            float(base[k]),
+            float(ext[k]),
+            still,
+        )
+
+    if drop:
+        moving = np.flatnonzero(np.abs(w[edge:b]) > zero)
+        k = edge + (int(moving[-1]) + 1 if moving.size else 0)
+        if k <= b - MIN_STILL_ROWS and abs(w[edge - 1]) > zero:
+            return at(k, still=True)
+    # the largest miss the way the cause makes it (|speed| below the model's for most),
+    # else the largest either way
+    sign = SLOWER.get(r.finding.cause, 1) * np.sign(base[edge:b] + w[edge:b])
+    miss = np.convolve(sign * (base[edge:b] - w[edge:b]), np.ones(3) / 3.0, mode="same")
+    if not miss.size:
+        return None
+    k = int(np.argmax(miss)) if np.max(miss) > 0 else int(np.argmax(np.abs(miss)))
+    return at(edge + k)
+
+
+def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
+    """Sentence 1: what the first-order model gets wrong in the close-up."""
+    cu = r.close_up
+    if cu is not None and cu.cause == "disturbance":
+        return (
+            "In this close-up something braked the wheel (a hand on it, or the wheel "
+            "touching something): no model of the motor explains that, so the check leaves "
+            "this stretch out."
+        )
+    named = r.finding.cause != "none"
+    if not named:
+        if r.finding.explained:
+            noise = format_value(cu.noise, "rad/s", 2) if cu is not None else "its noise"
+            return (
+                "The simple (first-order) model follows the measured speed to within its "
+                f"noise (± {noise}): nothing needs adding for this run."
+            )
+        return (
+            "The simple (first-order) model misses the measured speed by more than its noise, "
+            "and none of the effects the check knows explains it (the details say more)."
+        )
+    if m is None:
+        return (
+            "The simple (first-order) model misses the measured speed in this close-up by more "
+            "than its noise."
+        )
+    step = (
+        f"the voltage drops from {_v(m.u_from)} to {_v(m.u_to)} at t = {_s(m.edge)}"
+        if m.kind == "drop"
+        else f"the voltage steps from {_v(m.u_from)} to {_v(m.u_to)} at t = {_s(m.edge)}"
+    )
+    after = _later(m.at - m.edge)
+    if m.still and abs(m.first_order) > abs(m.measured):
+        return (
+            f"After {step}, the wheel stands still {after} later; the simple (first-order) "
+            f"model says it still turns at {_w(m.first_order)} then."
+        )
+    wheel = (
+        "the wheel has not moved yet"
+        if m.kind == "rise" and _w(m.measured) == _w(0.0)
+        else f"the wheel turns at {_w(m.measured)}"
+    )
+    return (
+        f"After {step}, {after} later {wheel} where the simple (first-order) model says "
+        f"{_w(m.first_order)}."
+    )
+
+
+def _cause(r: CheckResult) -> str:
+    """Sentence 2: the likely cause in everyday words (and what the log cannot tell it from)."""
+    f = r.finding
+    if f.cause == "none":
+        return ""
+    text = f"Likely cause: {EVERYDAY.get(f.cause, f.cause)}."
+    also = [SHORT.get(o.cause, o.cause) for o in f.others]
+    if also:
+        text += f" The check finds {' and '.join(also)} too."
+    alike = [
+        " with ".join(SHORT.get(c, c) for c in group)
+        for group in f.ambiguous_with
+        if group and group[0] != "none"
+    ]
+    if alike:
+        text += f" This run cannot tell it from {' or '.join(alike)}."
+    return text
+
+
+def _gain(r: CheckResult) -> str:
+    """Sentence 3: how much better the extended model does, in the one figure that leads."""
+    f = r.finding
+    if f.cause == "none" or r.lead is None:
+        return ""
+    key = stem(r.lead.figure)
+    b, e = figure(r.gain, key)
+    if b is None or e is None:
+        return ""
+    added = " and ".join(SHORT.get(c, c) for c in [f.cause, *(o.cause for o in f.others)])
+    words = FIGURE_WORDS.get(key, key)
+    unit = FIGURE_UNITS.get(key, "")
+    if e >= b:
+        return (
+            f"With {added} added (the extended model), {words} is no smaller "
+            f"({format_value(e, unit, 2)} against {format_value(b, unit, 2)})."
+        )
+    if e == 0:
+        return f"With {added} added (the extended model), {words} falls to within the noise."
+    how = f"{b / e:.2g} times smaller" if b >= 1.5 * e else f"{100 * (1 - e / b):.0f} % smaller"
+    return (
+        f"With {added} added (the extended model), {words} falls from "
+        f"{format_value(b, unit, 2)} to {format_value(e, unit, 2)}, {how}."
+    )
+
+
+def lead(r: CheckResult, u: ArrayLike | None) -> tuple[str, ...]:
+    """The two or three sentences a student reads first: what the first-order model gets
+    wrong at the step the close-up shows, the likely cause in everyday words, and how much
+    better the extended model does (one figure). ``u``: the run's input (V, one per row of
+    ``r.t``), or None when it cannot be read (then the first sentence is general)."""
+    m = moment(r, u)
+    return tuple(s for s in (_what_is_wrong(r, m), _cause(r), _gain(r)) if s)
+
+
+def close_up_title(r: CheckResult) -> str:
+    """What the close-up shows, with its time span: 'close-up 1.38-1.78 s: a step-down,
+    where the wheel slows and stops'."""
+    cu = r.close_up
+    if cu is None:
+        return "the whole log"
+    return f"close-up {format_value(cu.t0, '', 3)}-{_s(cu.t1)}: {cu.what}"
+
+
+def join(sentences: Sequence[str]) -> str:
+    """The sentences as one paragraph."""
+    return " ".join(sentences)

@@ -1,0 +1,75 @@
+"""The model check told to a student (issue 20, item 4): on seeded logs of every cause, the
+sentences speak of the step the close-up shows, name the cause in everyday words, and give
+the gain in the figure that leads, whichever it is (the held-out error too)."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from minseg_tui.lab.views import check_words
+from minseg_tui.model.check import check
+from minseg_tui.model.check.effects import NAMES
+from minseg_tui.model.synth import make_log
+
+NUM = r"[0-9]+(?:\.[0-9]+)?"
+JARGON = ("whitened", "criterion", "residual", "interval", "noise floor", "_")
+
+
+def _checked(cause: str, seed: int = 3, **kw: object):
+    log = make_log(cause, seed=seed, **kw)  # type: ignore[arg-type]
+    return log, check(log.t, log.u, log.omega, ts=0.025)
+
+
+@pytest.mark.parametrize("cause", NAMES)
+def test_the_sentences_speak_of_the_close_up_in_everyday_words(cause):
+    log, r = _checked(cause)
+    lead = check_words.lead(r, log.u)
+    text = " ".join(lead)
+    assert 1 <= len(lead) <= 3
+    for word in JARGON:
+        assert word not in text, (word, text)
+    m = re.search(rf"(?:drops|steps) from ({NUM}) V to ({NUM}) V at t = ({NUM}) s", text)
+    assert m is not None, text
+    cu = r.close_up
+    assert cu is not None and cu.t0 < float(m.group(3)) < cu.t1
+    # the step it names is in the log: the voltage changes there
+    k = int(np.searchsorted(log.t, float(m.group(3)) - 1e-9))
+    assert log.u[k] != log.u[k - 1]
+    if r.finding.cause != "none":
+        assert f"Likely cause: {check_words.EVERYDAY[r.finding.cause]}" in text
+        b, e = check_words.figure(r.gain, r.lead.figure)
+        assert b is not None and e is not None
+        shown = re.search(rf"falls from ({NUM}) (rad/s|rad) to ({NUM}) (rad/s|rad)", text)
+        assert shown is not None, text  # the held-out figure leads too: it was left out
+        assert float(shown.group(1)) == pytest.approx(b, rel=0.05)
+        assert float(shown.group(3)) == pytest.approx(e, rel=0.05)
+
+
+def test_a_log_the_first_order_model_explains_says_so():
+    log, r = _checked("none")
+    assert r.finding.cause == "none"
+    (said,) = check_words.lead(r, log.u)
+    assert "follows the measured speed to within its noise" in said
+
+
+def test_a_hand_on_the_wheel_is_said_as_such():
+    log, r = _checked("none", touch=True)
+    assert r.close_up is not None and r.close_up.cause == "disturbance"
+    assert "something braked the wheel" in check_words.lead(r, log.u)[0]
+
+
+def test_without_the_input_the_first_sentence_stays_general():
+    log, r = _checked("coulomb_friction")
+    first = check_words.lead(r, None)[0]
+    assert "misses the measured speed" in first and "t =" not in first
+
+
+def test_the_held_out_figure_is_found_under_its_own_keys():
+    gain = {"heldout_baseline_rmse": 0.4, "heldout_extended_rmse": 0.1, "baseline_rmse": 1.0}
+    assert check_words.figure(gain, "heldout_extended_rmse") == (0.4, 0.1)
+    assert check_words.figure(gain, "heldout_rmse") == (0.4, 0.1)
+    assert check_words.figure(gain, "extended_rmse") == (1.0, None)
+    assert check_words.figure(gain, "angle_rms") == (None, None)

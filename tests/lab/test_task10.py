@@ -1,0 +1,77 @@
+"""The Task 10 procedure without a screen (lab.task10), on the virtual MinSeg behind the real
+link: stopped mid-run, and a cable pulled mid-run. Every wait is on what the board sends."""
+
+from __future__ import annotations
+
+import itertools
+import time
+from contextlib import nullcontext
+
+import numpy as np
+
+from minseg_tui.device.factory import open_device
+from minseg_tui.device.standstill import PRE_ROLL
+from minseg_tui.device.virtual import forget_board, named_board
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.task10 import Task10
+
+_names = itertools.count()
+GUARD = 120.0
+"""Host seconds against a hang (never a measure: the waits are on board samples)."""
+
+
+def _feed_until(task: Task10, link, done) -> None:
+    end = time.monotonic() + GUARD
+    while not done():
+        assert time.monotonic() < end, "the board sent nothing more"
+        task.feed(link.samples(), link.events())
+        time.sleep(0.002)
+
+
+def test_stopped_mid_run_keeps_what_was_recorded_with_the_motor_off(tmp_path):
+    name = f"task10-{next(_names)}"
+    link = open_device(f"minseg://{name}?clock=virtual&seed=2")
+    try:
+        with Session.create(tmp_path, ["A"]) as s:
+            task = Task10.of(nullcontext(s), link, "fast")
+            assert task.plan.ts == 0.005 and task.kind == "fast"
+            task.begin()
+            assert task.phase == "waiting" and task.run is None and link.u_req == 0
+            _feed_until(task, link, lambda: task.run is not None and task.run.samples >= 200)
+            assert task.phase == "stepping" and link.u_req is None  # the board's sequence
+            outcome = task.stop("stopped")
+            assert outcome is not None and task.outcome is outcome and not task.active
+            assert link.u_req == 0  # the motor is off
+            assert outcome.why == "stopped" and outcome.problem == "" and outcome.started
+            info = outcome.info
+            assert info is not None and info.kind == "fast" and info.ts == 0.005
+            assert info.interrupted and info.interruption == "stopped"
+            assert info.samples == outcome.samples >= 200
+            log = s.load_run(info.name)
+            assert np.all(np.asarray(log.u)[:PRE_ROLL] == 0.0)  # the standing wheel first
+            assert np.all(np.asarray(log.omega)[:PRE_ROLL] == 0.0)
+            assert s.runs == [info] and task.stop() is outcome  # ended once
+    finally:
+        link.close()
+        forget_board(name)
+
+
+def test_a_cable_pulled_mid_run_keeps_the_samples(tmp_path):
+    name = f"task10-{next(_names)}"
+    link = open_device(f"minseg://{name}?clock=virtual&seed=3")
+    try:
+        with Session.create(tmp_path, ["A"]) as s:
+            task = Task10.of(nullcontext(s), link, "manual")
+            task.begin()
+            _feed_until(task, link, lambda: task.run is not None and task.run.samples >= 80)
+            named_board(name).unplug()
+            _feed_until(task, link, lambda: task.outcome is not None)
+            outcome = task.outcome
+            assert outcome is not None and outcome.why == "cable"
+            assert outcome.event is not None and outcome.event.kind == "disconnected"
+            assert outcome.info is not None and outcome.info.interruption.startswith("board lost")
+            assert [r.name for r in s.runs] == [outcome.run]
+            assert outcome.info.samples >= 80
+    finally:
+        link.close()
+        forget_board(name)
