@@ -196,6 +196,8 @@ def test_a_pair_hidden_in_independent_data_is_named_or_honestly_ambiguous(seed, 
     r = check(log.t, log.u, log.omega)
     assert _right_or_honest(r, log, pair), (named(r), r.finding.ambiguous_with, log.how)
     assert "disturbance" not in kinds(r)
+
+
 def test_a_hand_on_an_averaged_speed_is_reported_where_it_began_and_the_average_named():
     # a 10-tap average of the speed: a hand brakes the wheel for 0.18 s from t = 3.533 s. The
     # hand's rows are left out of every figure, the noise test of the average with them, so
