@@ -91,8 +91,9 @@ CANDIDATES: tuple[Candidate, ...] = (
         "rad/s^2",
         "rate",
         math.inf,
-        "the drive caps the current, so the speed ramps at a constant acceleration a_max until "
-        "the back-EMF takes over (on some drives braking after a step down is capped too)",
+        "the drive caps the current, so the speed ramps at a_max (less what the wheel's own "
+        "drag takes as it speeds up) until the back-EMF takes over (on some drives braking "
+        "after a step down is capped too)",
         log_scale=True,
         label="current limit",
     ),

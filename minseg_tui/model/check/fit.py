@@ -20,7 +20,8 @@ differences); the moving average's length is an integer, scanned cheaply (the an
 not depend on it). Where the side of an extra pole shows (with dry friction, a coast or a
 cap, it matters whether the pole acts on the drive or on the measurement) both sides are
 fitted and the better kept, and a current limit is fitted capped while accelerating only
-and capped both ways. Rows with weight 0 (wild samples, a hand on the wheel,
+and capped both ways, with the share of viscous drag that bends its ramp (:data:`DRAG`) as
+a parameter of its own. Rows with weight 0 (wild samples, a hand on the wheel,
 held-out steps) do not count: their residual is set to zero before the whitening.
 """
 
@@ -250,7 +251,19 @@ def _axes(prob: Problem, causes: Sequence[str], rng: dict[str, Range]) -> list[_
         else:
             unit = u_scale if c == "coulomb_friction" else prob.ts
             out.append(_Axis(c, r.lo / unit, r.hi / unit, 5e-3, False, unit))
+    if "current_limit" in causes:
+        out.append(_Axis(DRAG, 0.0, DRAG_MAX, 5e-3, False, 1.0))
     return out
+
+
+DRAG = "cap_drag"
+"""The axis (and the key among a fit's values) of the current limit's second parameter: the
+share of the damping that is viscous drag (:attr:`Effects.drag`), which bends the capped
+ramp. A capped ramp is straight only on a motor without drag; 0 is that motor."""
+
+DRAG_MAX = 0.5
+"""Largest drag share fitted (the drag as large as the back-EMF's braking; a motor's viscous drag
+is far below that)."""
 
 
 _NO_COEF = np.zeros(0)
@@ -279,9 +292,12 @@ class Model:
         values: dict[str, float] = {
             a.cause: a.value(float(v)) for a, v in zip(self.axes[1:], x[1:], strict=True)
         }
+        drag = values.pop(DRAG, 0.0)
         if "velocity_filter" in self.causes:
             values["velocity_filter"] = float(self.taps)
         fx = effects_of(values)
+        if drag > 0.0:
+            fx = replace(fx, drag=drag)
         if self.pole_measured and "second_pole" in self.causes:
             fx = replace(fx, pole_measured=True)
         if self.cap_both and "current_limit" in self.causes:
@@ -292,7 +308,7 @@ class Model:
         """The vector of T (s) and {cause: Effects field value}."""
         x = [self.axes[0].coord(T)]
         for a in self.axes[1:]:
-            x.append(a.coord(values[a.cause]))
+            x.append(a.coord(values.get(DRAG, 0.0) if a.cause == DRAG else values[a.cause]))
         return np.array(x)
 
     def residual(self, x: FloatArray) -> FloatArray:
@@ -530,8 +546,11 @@ def _fit_side(
 
 
 def values_of(f: Fit) -> dict[str, float]:
-    """{cause: Effects field value} of a fit."""
-    return {c: f.value(c) for c in f.causes}
+    """{cause: Effects field value} of a fit (and the cap's drag share under ``DRAG``)."""
+    out = {c: f.value(c) for c in f.causes}
+    if "current_limit" in f.causes:
+        out[DRAG] = f.effects.drag
+    return out
 
 
 def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fit:
@@ -607,6 +626,8 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
             lo_x, hi_x = max(lo_x, -700.0), min(hi_x, 700.0)
         if a.cause == "T":
             out["T"] = (math.exp(lo_x), math.exp(hi_x))
+            continue
+        if a.cause == DRAG:
             continue
         name = BY_CAUSE[a.cause].param
         lo_v, hi_v = (

@@ -754,14 +754,18 @@ def _finding(
                 "cannot_tell",
                 causes[0],
                 f"this log cannot tell {in_words('+'.join(order))} from "
-                f"{in_words('+'.join(causes))}: the second leaves {ratio:.2f} times the "
+                f"{in_words('+'.join(causes))}: "
                 + (
-                    "whitened residual"
+                    f"the second leaves {ratio:.2f} times the whitened residual of the first"
                     if f.effects.taps == ext.effects.taps
-                    else "squared speed error (their averages differ, so their whitened residuals "
-                    "cannot be compared)"
+                    else f"the second leaves {ratio:.2f} times the squared speed error (their "
+                    "averages differ, so their whitened residuals cannot be compared) of the first"
+                    if ratio >= 1.0
+                    else f"the second misses the speed itself slightly less ({ratio:.2f} times "
+                    "the squared speed error of the first; their averages differ, so their "
+                    "whitened residuals, where the first is ahead, cannot be compared)"
                 )
-                + f" of the first; {_what_would_tell(order, causes)}",
+                + f"; {_what_would_tell(order, causes)}",
             )
         )
     if ambiguous:

@@ -7,7 +7,7 @@ command (its own time constant), an extra pole on the drive, and a current limit
 on the acceleration the drive gives in the direction of motion, or both ways: braking
 capped too). Within one *mode*
 (coasting, stuck, capped, or driven linearly) the speed is a constant plus at most two
-exponentials, or a straight ramp, so the simulation walks the constant-input stretches
+exponentials, or a straight ramp (capped, on a wheel without viscous drag), so the simulation walks the constant-input stretches
 once, finds when the mode changes (a stop, a breakaway, the cap starting or ending: in
 closed form, or by bisection on a function with at most one extremum, which is found in
 closed form) and writes down a table of *pieces*; each gives the wheel angle from its
@@ -77,6 +77,12 @@ class Effects:
     """The extra pole acts on the measurement (a compliant coupling to the encoder, a
     first-order filter of the speed), after the friction, the coast and the cap, instead
     of on the drive."""
+    drag: float = 0.0
+    """The share of the driven damping that is the wheel's own viscous drag (T/J_b with
+    J/b the drag's time constant in s, 0 to below 1; the rest is the back-EMF). While the
+    current is capped the back-EMF no longer brakes but the drag still does, so the capped
+    speed bends: w' = rate - drag w/T (not a straight ramp), and the cap lets go when the
+    torque the drive asks for, (v - (1 - drag) w)/T, falls to the cap."""
 
 
 class Pieces:
@@ -228,14 +234,14 @@ def _stretch(
             left = _stuck(out, s, left, u, uc, T2)
             continue
         sign = math.copysign(1.0, s.w if s.w != 0.0 else drive if drive != 0.0 else u)
-        push = sign * (drive - s.w)
+        push = sign * (drive - (1.0 - fx.drag) * s.w)
         over = T * rate * (1.0 + 1e-9)
         if math.isfinite(rate) and (s.capping or push > over or (fx.cap_both and -push > over)):
             s.capping = False
             d = 1.0 if push > 0.0 else -1.0
-            left = _capped(out, s, left, u, sign, T, T2, uc, rate, d)
+            left = _capped(out, s, left, u, sign, T, T2, uc, rate, d, fx.drag)
         else:
-            left = _linear(out, s, left, u, sign, T, T2, uc, rate, fx.cap_both)
+            left = _linear(out, s, left, u, sign, T, T2, uc, rate, fx.cap_both, fx.drag)
     out.add(s.t, s.th, 0.0)  # pathological chattering: hold (never met in practice)
 
 
@@ -289,35 +295,70 @@ def _capped(
     uc: float,
     rate: float,
     d: float = 1.0,
+    drag: float = 0.0,
 ) -> float:
-    """The current limit holds: a straight ramp, w' = sign (d rate - u_c/T) (d = 1 while the
-    drive accelerates the wheel, -1 while it brakes it), until the drive no longer asks for
+    """The current limit holds: w' = sign (d rate - u_c/T) - drag w/T (d = 1 while the drive
+    accelerates the wheel, -1 while it brakes it): a straight ramp without drag, else an
+    exponential towards T/drag times the ramp's rate, until the drive no longer asks for
     more than the cap (or, braking or with the cap below friction, the wheel stops)."""
     acc = sign * (d * rate - uc / T)
     w0, v0 = s.w, s.v
-    out.add(s.t, s.th, w0, 0.5 * acc)
+    keep = 1.0 - drag  # the share of the speed the back-EMF takes from the drive
+    if drag > 0.0:
+        tc = T / drag
+        w_inf = acc * tc
+        a = w0 - w_inf
+        out.add(s.t, s.th, w_inf, 0.0, a, tc)
+
+        def w_at(tau: float) -> float:
+            return w_inf + a * _exp(-tau / tc)
+
+    else:
+        out.add(s.t, s.th, w0, 0.5 * acc)
+
+        def w_at(tau: float) -> float:
+            return w0 + acc * tau
+
     events = []
+    stop = math.inf
     if sign * acc < 0.0:
-        events.append(abs(w0 / acc))
+        stop = abs(w0 / acc) if drag == 0.0 else tc * math.log(a / -w_inf)
+        events.append(stop)
     if not T2:
-        if d * sign * acc > 0.0:
-            events.append((d * sign * (u - w0) - T * rate) / (d * sign * acc))
+        # d sign (u - keep w) = T rate at w = w_end
+        w_end = (u - d * sign * T * rate) / keep
+        if drag == 0.0:
+            if d * sign * acc > 0.0:
+                events.append((d * sign * (u - w0) - T * rate) / (d * sign * acc))
+        elif d * sign * a < 0.0:
+            # the torque asked for falls only while the speed moves towards w_inf this way
+            ratio = (w_end - w_inf) / a
+            if 0.0 < ratio <= 1.0:
+                events.append(-tc * math.log(ratio))
     else:
 
         def g(tau: float) -> float:
-            return d * sign * (u + (v0 - u) * _exp(-tau / T2) - w0 - acc * tau) - T * rate
+            return d * sign * (u + (v0 - u) * _exp(-tau / T2) - keep * w_at(tau)) - T * rate
 
-        ext = None
-        if (v0 - u) != 0.0 and -acc * T2 / (v0 - u) > 0.0:
-            x = -T2 * math.log(-acc * T2 / (v0 - u))
-            ext = x if x > 0.0 else None
+        if drag > 0.0:
+            ext = _two_exp_extremum(v0 - u, T2, -keep * a, tc)
+        else:
+            ext = None
+            if (v0 - u) != 0.0 and -acc * T2 / (v0 - u) > 0.0:
+                x = -T2 * math.log(-acc * T2 / (v0 - u))
+                ext = x if x > 0.0 else None
         hit = _first_zero(g, ext, min(left, 50.0 * T2 + 50.0 * T))
         if hit is not None:
             events.append(hit)
     h = min([left, *[e for e in events if e >= 0.0]])
-    s.th += w0 * h + 0.5 * acc * h * h
-    s.w = w0 + acc * h
-    if sign * acc < 0.0 and h == abs(w0 / acc):
+    if drag > 0.0:
+        e = _exp(-h / tc)
+        s.th += w_inf * h + a * tc * (1.0 - e)
+        s.w = w_inf + a * e
+    else:
+        s.th += w0 * h + 0.5 * acc * h * h
+        s.w = w0 + acc * h
+    if h == stop:
         s.w = 0.0
     if T2:
         s.v = u + (v0 - u) * _exp(-h / T2)
@@ -325,8 +366,8 @@ def _capped(
     if h < left and s.w != 0.0:
         # nudge past the switch so the next mode is the linear one
         s.v = s.v if T2 else u
-        if math.isfinite(rate) and d * sign * (s.v - s.w) > T * rate:
-            s.w = s.v - d * sign * T * rate
+        if math.isfinite(rate) and d * sign * (s.v - keep * s.w) > T * rate:
+            s.w = (s.v - d * sign * T * rate) / keep
     return left - h
 
 
@@ -341,9 +382,11 @@ def _linear(
     uc: float,
     rate: float,
     both: bool = False,
+    drag: float = 0.0,
 ) -> float:
     """Driven, below the cap: T w' = v - w - u_c sgn(w), T2 v' = u - v; ends at a stop (the
-    speed reaches 0 with friction or a cap about), or when the cap starts to hold."""
+    speed reaches 0 with friction or a cap about), or when the cap starts to hold (the
+    torque asked for, (v - (1 - drag) w)/T, reaches the cap)."""
     c = u - sign * uc
     w0, v0 = s.w, s.v
     if T2:
@@ -368,16 +411,33 @@ def _linear(
                 stop_at = hit
         events.append(stop_at)
     cap_at = math.inf
+    keep = 1.0 - drag
     if T2 and math.isfinite(rate):
-        kv = v0 - u - B  # s (v - w) - T rate = sign (u - c + kv e2 - A e1) - T rate
+        # s (v - keep w) - T rate = sign (u - keep c + kv e2 - keep A e1) - T rate
+        kv = v0 - u - keep * B
+        base = u - keep * c
 
         for d in (1.0, -1.0) if both else (1.0,):
 
             def g(tau: float, d: float = d) -> float:
-                return d * sign * (u - c + kv * _exp(-tau / T2) - A * _exp(-tau / T)) - T * rate
+                return (
+                    d * sign * (base + kv * _exp(-tau / T2) - keep * A * _exp(-tau / T)) - T * rate
+                )
 
-            hit = _first_zero(g, _two_exp_extremum(kv, T2, -A, T), min(left, 50.0 * (T + T2)))
+            hit = _first_zero(
+                g, _two_exp_extremum(kv, T2, -keep * A, T), min(left, 50.0 * (T + T2))
+            )
             if hit is not None:
+                events.append(hit)
+                cap_at = min(cap_at, hit)
+    elif drag > 0.0 and math.isfinite(rate) and A != 0.0:
+        # with drag the torque asked for at the end of a stretch need not be below the cap
+        for d in (1.0, -1.0) if both else (1.0,):
+            if d * sign * A <= 0.0:
+                continue  # the torque asked for falls this way: the cap cannot start
+            e1 = (d * sign * (u - keep * c) - T * rate) / (d * sign * keep * A)
+            if 0.0 < e1 < 1.0:
+                hit = -T * math.log(e1)
                 events.append(hit)
                 cap_at = min(cap_at, hit)
     h = min([left, *events])
