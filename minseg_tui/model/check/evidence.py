@@ -222,14 +222,6 @@ def _pole(log: Log, ext: Fit) -> str:
             f": {_ms(w * log.ts)} after the step the speed has risen {np.median(got):.3g} rad/s "
             f"where the first-order model rises {np.median(model):.3g} rad/s"
         )
-    if ext.effects.pole_filtered:
-        share = 1.0 - math.exp(-log.ts / t2)
-        return text + (
-            f"; the speed column is filtered sample by sample (each reading takes {share:.2f} "
-            f"of the new speed and keeps the rest of the one before: a first-order filter of "
-            f"{_ms(t2)}, as a logger's firmware runs it), which fits better than a lag of the "
-            "angle or a pole on the drive (a pure delay would show a corner)"
-        )
     if ext.effects.pole_measured:
         where = [
             w

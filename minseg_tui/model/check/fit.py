@@ -283,7 +283,6 @@ class Model:
         self.step = np.array([a.step for a in self.axes])
         self.taps = 1
         self.pole_measured = False
-        self.pole_filtered = False
         self.cap_both = False
         self.evaluations = 0
         self._last: tuple[bytes, FloatArray] = (b"", np.zeros(0))
@@ -301,8 +300,6 @@ class Model:
             fx = replace(fx, drag=drag)
         if self.pole_measured and "second_pole" in self.causes:
             fx = replace(fx, pole_measured=True)
-            if self.pole_filtered and "velocity_filter" not in self.causes:
-                fx = replace(fx, pole_filtered=True)
         if self.cap_both and "current_limit" in self.causes:
             fx = replace(fx, cap_both=True)
         return T, fx
@@ -461,7 +458,6 @@ def fit_causes(
     polish: tuple[str, ...] = (),
     pole: bool | None = None,
     cap: bool | None = None,
-    filtered: bool | None = None,
 ) -> Fit:
     """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
     ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
@@ -473,18 +469,10 @@ def fit_causes(
     ``pole``: the extra pole on the measurement (True) or on the drive (False); None: both
     when a cause that is not linear (dry friction, a coast, a cap) acts with it, where the
     side shows, and the better kept. ``cap``: the current limit holds while braking too
-    (True) or only while accelerating (False); None: both tried when it is among the causes.
-    ``filtered``: a pole on the measurement is the logger's filter of the speed column
-    (:attr:`Effects.pole_filtered`); None: tried too, without an average among the causes
-    (a filter sample by sample is not a lag of the angle: on the independent generator's
-    tuning seeds the lag took T2 36 % short of such a filter, or named an average and a pole
-    for it)."""
-    sides = [(bool(pole), bool(filtered))]
+    (True) or only while accelerating (False); None: both tried when it is among the causes."""
+    sides = [bool(pole)]
     if pole is None and "second_pole" in causes and NONLINEAR & set(causes):
-        sides = [(False, False), (True, False)]
-    if filtered is None and pole is None and "second_pole" in causes:
-        if "velocity_filter" not in causes:
-            sides.append((True, True))
+        sides = [False, True]
     caps = [bool(cap)]
     if cap is None and "current_limit" in causes:
         caps = [False, True]
@@ -497,22 +485,11 @@ def fit_causes(
                 # the other variant from where the first ended (and the best start): the
                 # variants differ only where the wheel stops, coasts or is capped
                 again = [(out.T, values_of(out)), *starts[:1]]
-                if side[1] and not out.effects.pole_filtered:
-                    again.insert(0, (out.T, _as_filter(values_of(out), prob.ts)))
                 f = _fit_side(prob, causes, rng, again, max_iter, False, (), side, both)
             if out is None or f.sse_white < out.sse_white:
                 out = f
     assert out is not None
     return out
-
-
-def _as_filter(values: dict[str, float], ts: float) -> dict[str, float]:
-    """``values`` with the lag of the angle T2 (s) turned into the filter of the speed column
-    that delays the reading as much: ts a/(1 - a) = T2 with a = exp(-ts/T2_filter)."""
-    t2 = values.get("second_pole", 0.0)
-    if t2 <= 0.0:
-        return values
-    return {**values, "second_pole": ts / math.log1p(ts / t2)}
 
 
 NONLINEAR = frozenset({"coulomb_friction", "coast_on_zero", "current_limit"})
@@ -527,11 +504,11 @@ def _fit_side(
     max_iter: int,
     scan: bool | None,
     polish: tuple[str, ...],
-    side: tuple[bool, bool],
+    pole_measured: bool,
     cap_both: bool,
 ) -> Fit:
     m = Model(prob, causes, rng)
-    m.pole_measured, m.pole_filtered = side
+    m.pole_measured = pole_measured
     m.cap_both = cap_both
     scored = []
     for T, values in starts:
@@ -588,7 +565,6 @@ def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fi
         max_iter,
         scan=False,
         pole=f.effects.pole_measured,
-        filtered=f.effects.pole_filtered,
         cap=f.effects.cap_both,
     )
 
@@ -617,7 +593,6 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     m = Model(prob, f.causes, rng)
     m.taps = f.effects.taps
     m.pole_measured = f.effects.pole_measured
-    m.pole_filtered = f.effects.pole_filtered
     m.cap_both = f.effects.cap_both
     x = m.x_of(f.T, values_of(f))
     T, fx = m.effects(x)
