@@ -50,6 +50,21 @@ not met; on the tuning seeds most failures that remain name an extra cause on th
 log as well (a second pole of 2 ms at 20 ms samples), which is the pair decisions' business.
 The present tiers hold (benchmarks/model_check.py, 10 seeds: single causes 70 of 70, 0 false
 alarms; model_check_pairs.py's hand tier 70 of 70).
+
+Then (--seeds 5 --only pairs, the same 75 logs; 17b1e36 -> ebfe99b, a current cap's ramp bent
+by the wheel's viscous drag, its second parameter, and a cap with friction started from the
+cap raised by u_c/T): right 64.0 -> 74.7 %, honestly ambiguous 17.3 -> 13.3 % (right or
+honestly ambiguous 81.3 -> 88.0 %), ambiguous in all 21.3 -> 16.0 %, confidently wrong 14.7
+-> 9.3 %, untouched logs with a disturbance 2 -> 0. On the tuning seeds 0-4: right or
+honestly ambiguous 82.7 -> 88.0 %, confidently wrong 17.3 -> 12.0 %. CPU per log (check
+only) on 15 tuning pair logs run side by side with 17b1e36: median 0.97 -> 1.04 s, mean 1.26
+-> 1.56 s (the held-out run's own medians, 1.0-1.6 s in parts, were taken at a load average
+of 15-22 on two cores). A logger's first-order filter of the speed column as a side of the
+pole (5925a70) helped two tuning logs but lost one held-out pair log and a cap + delay test
+log: reverted. Still short of 90 % and 5 %: what is left is mostly an average with a pole
+(0 of 5 right, 3 honestly ambiguous), a cap or a coast with a pole (a pole on the
+inductance or the driver: T2 off by more than 25 %, or the cap not named), a cap with a
+delay, and a logger's filter of the speed column (its T2 read about 36 % short).
 """
 
 from __future__ import annotations
