@@ -266,3 +266,29 @@ def test_a_departure_hidden_after_every_rising_edge_of_a_generator_log_is_one_mo
     miss = [a for a in r.anomalies if a.kind == "model_miss"]
     assert len(miss) == 1 and miss[0].size >= len(hidden) - 1
     assert "not a hand on the wheel" in miss[0].text
+
+
+def test_a_hands_rows_are_left_out_until_the_wheel_is_back_on_the_model():
+    # the hand lets go of the wheel at 6.25 s, 0.43 s (under 2 T) before the input steps down
+    # at 6.68 s: the wheel is still coming back when the step comes, and goes on coming back
+    # after it. Those rows are left out too, across the step, until the model meets the
+    # speed again (they were kept from the step on, 2.3 rad/s off the model)
+    log = make(1012, ("velocity_filter",), touch=True)
+    assert log.touch is not None
+    r = check(log.t, log.u, log.omega)
+    hand = next(a for a in r.anomalies if a.kind == "disturbance")
+    edges = log.t[np.flatnonzero(np.diff(log.u) != 0) + 1]
+    step = float(edges[edges > log.touch[1]][0])
+    words = hand.text.split("the rows from t = ")[1]
+    first = float(words.split(" s to ")[0])
+    last = float(words.split(" s to ")[1].split(" s ")[0])
+    assert first <= hand.t and last > step + 0.5
+    assert "the wheel's way back until the model meets the speed again" in words
+    left = (log.t >= first) & (log.t <= last)
+    assert r.baseline.rows <= r.t.size - np.count_nonzero(left)
+    # where the rows are taken back, the model chosen follows the speed within 0.1 rad/s
+    # (0.2 % of the speed there; the old fence took them back 2.3 rad/s off)
+    err = r.omega - r.extended_pred
+    after = np.flatnonzero(log.t > last)[:5]
+    assert float(np.sqrt(np.mean(err[after] ** 2))) < 0.1
+    assert named(r) == ["velocity_filter"]
