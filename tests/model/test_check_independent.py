@@ -292,3 +292,15 @@ def test_a_hands_rows_are_left_out_until_the_wheel_is_back_on_the_model():
     after = np.flatnonzero(log.t > last)[:5]
     assert float(np.sqrt(np.mean(err[after] ** 2))) < 0.1
     assert named(r) == ["velocity_filter"]
+
+
+@pytest.mark.parametrize("seed", [507, 509])
+def test_a_cap_whose_ramp_no_two_samples_can_show_is_not_named(seed):
+    # an averaged speed alone, 25 ms samples: a current cap fitted beside the average cut the
+    # whitened residual by more than a second cause needs, but it would hold for less than
+    # one sample after the largest step (at 509: a_max 187 rad/s^2, T 0.32 s), so no two
+    # samples lie on its ramp: the log cannot show a cap, and the average is named alone
+    log = make(seed, ("velocity_filter",))
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == ["velocity_filter"]
+    assert abs(r.extended.params["taps"] - log.causes["velocity_filter"]) <= 1
