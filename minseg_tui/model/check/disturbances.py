@@ -203,9 +203,16 @@ def recovered(
     level = float(np.median(residual[kept])) if kept.size else 0.0
     band = _calm_band(residual, spans, [level] * len(spans), noise, keep)
     dev = residual - level
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+
+    def lead(d: Disturbance) -> int:
+        # never back past the step of its own stretch: the input stays the same throughout
+        before = change[change <= d.start]
+        return max(min(recover, d.start - (int(before[-1]) if before.size else 0) - 1), 0)
+
     return [
         replace(
-            d, until=rejoin(dev, d.end, band, recover), since=onset(dev, d.start, band, recover)
+            d, until=rejoin(dev, d.end, band, recover), since=onset(dev, d.start, band, lead(d))
         )
         for d in found
     ]

@@ -370,7 +370,7 @@ def _report(
     ]
     anomalies += [
         an.disturbance(
-            t, u, d.start, d.end, d.size, d.level, (d.fence_start, min(d.fence_end, t.size))
+            t, u, d.fence_start, d.end, d.size, d.level, (d.fence_start, min(d.fence_end, t.size))
         )
         for d in found
     ]
