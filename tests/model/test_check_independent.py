@@ -304,3 +304,18 @@ def test_a_cap_whose_ramp_no_two_samples_can_show_is_not_named(seed):
     r = check(log.t, log.u, log.omega)
     assert named(r) == ["velocity_filter"]
     assert abs(r.extended.params["taps"] - log.causes["velocity_filter"]) <= 1
+
+
+def test_a_hand_seen_through_an_average_is_reported_from_where_the_speed_leaves_the_model():
+    # a 12-tap average (240 ms at 20 ms samples): the hand's departure grows through the
+    # average, and its running mean crossed the detection threshold 0.187 s after the touch;
+    # the speed leaves the model's calm band 0.106 s after it, and the hand is reported from
+    # there, with the rows left out from there on
+    log = make(1014, ("velocity_filter",), touch=True)
+    assert log.touch is not None
+    r = check(log.t, log.u, log.omega)
+    hands = [a for a in r.anomalies if a.kind == "disturbance"]
+    assert len(hands) == 1 and 0.0 <= hands[0].t - log.touch[0] <= 0.15
+    assert f"from t = {hands[0].t:.3f} s to" in hands[0].text
+    assert f"the rows from t = {hands[0].t:.3f} s to" in hands[0].text
+    assert named(r) == ["velocity_filter"]
