@@ -239,17 +239,20 @@ def rejoin(dev: FloatArray, end: int, band: float, recover: int) -> int:
 
 def onset(dev: FloatArray, start: int, band: float, lead: int) -> int:
     """The first row of the departure that a disturbance found from row ``start`` begins
-    with: the row after the last ``MIN_ROWS`` rows, before ``start``, whose running mean of
-    ``dev`` lies within ``band``, at most ``lead`` rows back. Rows found by a threshold
-    far above the noise start late: the departure grows from the touch on."""
+    with: going back from ``start`` (at most ``lead`` rows), the rows whose running mean of
+    ``dev`` still departs the same way by more than ``band`` and no more than the row after
+    it (a hand's departure grows from the touch on; noise or a miss of the model before it
+    does not keep shrinking into the past). Rows found by a threshold far above the noise
+    start late."""
     first = max(start - lead, 0)
-    sm = np.abs(np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same"))
-    calm = 0
-    for k in range(start - 1, first - 1, -1):
-        calm = calm + 1 if sm[k] <= band else 0
-        if calm >= MIN_ROWS:
-            return k + MIN_ROWS
-    return first
+    if start <= first or start >= dev.size:
+        return start
+    sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")
+    sign = 1.0 if sm[start] >= 0 else -1.0
+    k = start
+    while k > first and sign * sm[k - 1] > band and sign * sm[k - 1] <= sign * sm[k]:
+        k -= 1
+    return k
 
 
 def fence(n: int, found: list[Disturbance]) -> FloatArray:

@@ -368,9 +368,18 @@ def _report(
         )
         for d in artefacts
     ]
+    # a hand is reported from where the speed leaves the model, but no further back from
+    # where its departure crossed the threshold than an average and a running mean reach
+    reach = ext.effects.taps + dist.SMOOTH
     anomalies += [
         an.disturbance(
-            t, u, d.fence_start, d.end, d.size, d.level, (d.fence_start, min(d.fence_end, t.size))
+            t,
+            u,
+            max(d.fence_start, d.start - reach),
+            d.end,
+            d.size,
+            d.level,
+            (d.fence_start, min(d.fence_end, t.size)),
         )
         for d in found
     ]
