@@ -177,6 +177,30 @@ FILTER_NOISE = 3.0
 this many times that is not such an average."""
 
 
+def cap_ramp(prob: Problem, f: Fit) -> float:
+    """How long (s) the current cap of ``f`` holds after the step where it holds longest:
+    from rest (or a steady level) the first-order model with the cap ramps at its rate until
+    the uncapped rate (u - z)/T falls to it, |du|/rate - T later (K = 1 units). A step that
+    decelerates counts only when the cap holds braking too; a step across zero counts from 0
+    (braking first). It ignores the friction and a pole on the drive, which only shorten
+    the ramp."""
+    fx = f.effects
+    if not math.isfinite(fx.rate) or fx.rate <= 0:
+        return 0.0
+    vals = prob.st.value
+    prev = [0.0 if prob.z0 == 0.0 else float(vals[0]), *vals[:-1].tolist()]
+    longest = 0.0
+    for a, b in zip(prev, vals.tolist(), strict=True):
+        if fx.cap_both:
+            du = abs(b - a)
+        elif a * b < 0:
+            du = abs(b)
+        else:
+            du = max(abs(b) - abs(a), 0.0)
+        longest = max(longest, du / fx.rate - f.T)
+    return longest
+
+
 def _why_not(
     prob: Problem,
     f: Fit,
@@ -196,6 +220,11 @@ def _why_not(
         return f"its parameter sits on the {side} bound of its range"
     if cause == "coast_on_zero" and f.value(cause) < COAST_RATIO * f.T:
         return "it would be a coast no slower than braking"
+    if cause == "current_limit" and cap_ramp(prob, f) < prob.ts:
+        return (
+            "the ramp that cap makes would last less than one sample period after every step: "
+            "no two samples lie on it, so this log cannot show a cap"
+        )
     if cause == "velocity_filter":
         n = f.effects.taps
         fl = floor(n)

@@ -121,7 +121,9 @@ def check(
     rng = ranges(head.t, head.u, ts, base.T)
 
     # a hand on the wheel, against the baseline: fenced off before the causes are chosen
-    found = dist.find(t, u, full.y - base.predict(full), base.predict(full), settle, noise)
+    found = dist.find(
+        t, u, full.y - base.predict(full), base.predict(full), settle, noise, recover=settle
+    )
     found, _, _ = dist.split_repeated(found, u)  # the baseline's own miss: the causes' business
     if found:
         full, head, base = _fenced(full, found, rng0)
@@ -166,19 +168,26 @@ def check(
     settle = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
     near = 3  # the model chosen follows the steps: look from a few rows after each
-    found2 = dist.find(
-        t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1
-    )
     rise = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
+    found2 = dist.find(
+        t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1, rise
+    )
     found2, repeated, repeated_at = dist.split_repeated(found2, u, rise)
     # a disturbance is local: the model chosen fits the rest of the log well below it
     found2, _ = dist.split_local(found2, full.y - ext.predict(full), full.weights > 0)
     if _rows(found2) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
-        full = full.with_weights(
-            dist.fence(y.size, found) * _wild_weights(y.size, wild, taps) * pre
+        others = _wild_weights(y.size, wild, taps) * pre
+        full = full.with_weights(dist.fence(y.size, found) * others)
+        head = full.head(MAX_FIT_ROWS)
+        # where the wheel rejoins the model, judged against the model fitted without the
+        # disturbance's rows
+        apart = refit(head, ext, rng)
+        found = dist.recovered(
+            found, u, full.y - apart.predict(full), full.weights > 0, rise, noise, rise
         )
+        full = full.with_weights(dist.fence(y.size, found) * others)
         head = full.head(MAX_FIT_ROWS)
         base = fit_baseline(head, rng0)
         sel = select(head, base, rng, noise, samp.column_floor, names)
@@ -223,7 +232,7 @@ def replace_y(p: Problem, y: FloatArray) -> Problem:
 
 
 def _rows(found: list[dist.Disturbance]) -> list[tuple[int, int]]:
-    return [(d.start, d.end) for d in found]
+    return [(d.start, d.fence_end) for d in found]
 
 
 def _wild_weights(n: int, wild: list[int], taps: int) -> FloatArray:
@@ -350,11 +359,30 @@ def _report(
     found = [d for d in found if d not in artefacts]
     anomalies += [
         an.logging_artefact(
-            t, d.start, d.end, d.size, next((g for g in starts if d.start <= g < d.end), None)
+            t,
+            d.start,
+            d.end,
+            d.size,
+            next((g for g in starts if d.start <= g < d.end), None),
+            (d.fence_start, min(d.fence_end, t.size)),
         )
         for d in artefacts
     ]
-    anomalies += [an.disturbance(t, u, d.start, d.end, d.size, d.level) for d in found]
+    # a hand is reported from where the speed leaves the model, but no further back from
+    # where its departure crossed the threshold than an average and a running mean reach
+    reach = ext.effects.taps + dist.SMOOTH
+    anomalies += [
+        an.disturbance(
+            t,
+            u,
+            max(d.fence_start, d.start - reach),
+            d.end,
+            d.size,
+            d.level,
+            (d.fence_start, min(d.fence_end, t.size)),
+        )
+        for d in found
+    ]
     if not misses:
         cr = an.creep(t, u, np.where(keep, res, 0.0), e_pred, ext.T + ext.effects.delay, samp.ts)
         if cr:
