@@ -21,10 +21,11 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Horizontal, VerticalScroll
+from textual.css.query import NoMatches
 from textual.reactive import reactive
 from textual.signal import Signal
 from textual.widget import Widget
-from textual.widgets import Footer, OptionList, RadioSet, SelectionList, Static
+from textual.widgets import OptionList, RadioSet, SelectionList, Static
 from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
@@ -53,6 +54,7 @@ from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import EntryBox, FieldRow
+from minseg_tui.ui.widgets.footer import KeysFooter
 from minseg_tui.ui.widgets.prose import Prose
 
 V = TypeVar("V")
@@ -369,7 +371,7 @@ class LabScreen(StatusScreen):
                 id="nav",
             )
             yield Static("", classes="pane")
-        yield Footer()
+        yield KeysFooter()
 
     async def on_mount(self) -> None:
         self._lab_changed.subscribe(self, self._on_lab_changed)
@@ -389,8 +391,12 @@ class LabScreen(StatusScreen):
     @property
     def panel(self) -> Widget | None:
         """The panel of the step on screen (the last pane mounted; the one before may still be
-        leaving), or None."""
-        panes = self.query(StepPane)
+        leaving), or None. Read from the body's children, not by a walk of the whole screen:
+        the footer asks for the panel keys (:meth:`panel_keys`) whenever the keys change."""
+        try:
+            panes = self.get_child_by_id("body").query_children(StepPane)
+        except NoMatches:  # not composed yet
+            return None
         return panes.last().panel if panes else None
 
     def panel_keys(self) -> dict[str, Callable[[], None]]:
