@@ -258,6 +258,15 @@ class OneOf(Node):
         return None
 
 
+@dataclass(frozen=True)
+class Memo(Node):
+    """Anything: a part the program only keeps as a memo and reads itself, passing over
+    what it cannot read (:mod:`minseg_tui.lab.saving.kept`); never a reason to refuse a file."""
+
+    def check(self, value: object, where: str) -> str | None:
+        return None
+
+
 Rule = Callable[[Mapping[str, Any], str], str | None]
 
 
@@ -370,10 +379,17 @@ SESSION = Record(
         "captures": MapOf(CAPTURE),
         "runs": ListOf(RUN),
     },
-    optional={"selected_run": OneOf((None, Text())), "revealed": ListOf(Text())},
+    optional={
+        "selected_run": OneOf((None, Text())),
+        "revealed": ListOf(Text()),
+        "kept": Memo(),
+    },
 )
 """session.json, whole (``revealed``: fields of Tasks 11-15 shown before the group
-answered them)."""
+answered them; ``kept``: the run's results as last computed, which
+:mod:`minseg_tui.lab.saving.kept` reads, and passes over when it cannot: a memo, never a
+reason to refuse the file). Optional parts added since keep the schema at 1: a file
+without them reads as before, and an older program ignores them."""
 
 PARTIAL_HEADER = Record(
     required={},

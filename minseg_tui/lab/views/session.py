@@ -23,9 +23,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.content.steps import FIELDS, step
+from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
+from minseg_tui.lab.state.entries import read_entry
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
@@ -36,10 +38,13 @@ from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import (
     DIGITS,
+    NOT_DETERMINED,
     UNITS,
     format_interval,
     format_number,
     format_quantity,
+    format_reading,
+    format_spread,
     format_value,
 )
 
@@ -56,8 +61,13 @@ samples: quiet enough to judge steadiness, and without the manual's 0.5 s lag.""
 CAPTURE_WINDOW: float = lab_capture.DEFAULT_WINDOW
 """The window the indicator judges and a capture averages over, s."""
 
-TABLE_COLUMNS = ("u\nV", "u_ss\nV", "omega_ss\nrad/s", "i_ss\nmA", "k_v\nV s/rad", "f\nmN m s/rad")
-"""The table's headers: name over unit (the cells hold bare numbers in these units)."""
+TABLE_HEADERS: tuple[str, ...] = (
+    *(f"{'u' if name == 'u_req' else name}\n{unit}" for name, unit in TABLE_COLUMNS.items()),
+    "k_v\nV s/rad",
+    "f\nmN m s/rad",
+)
+"""The table's headers: name over unit (the cells hold bare numbers in these units), the
+readings' units those of the table's file (:data:`~minseg_tui.lab.saving.files.TABLE_COLUMNS`)."""
 
 _FORMULAS = dict(step("table").formulas)
 
@@ -81,11 +91,11 @@ def _num(v: float | None, digits: int = DIGITS) -> str:
 
 
 def _ci(ci: tuple[float, float], unit: str) -> str:
-    """ ", 95 % CI lo..hi unit" for a finite interval; '' when it is not known."""
+    """ ", 95 % interval lo – hi unit" for a finite interval; '' when it is not known."""
     lo, hi = ci
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return ""
-    return f", 95 % CI {format_interval(lo, hi, unit, sep='..')}"
+    return f", 95 % interval {format_interval(lo, hi, unit)}"
 
 
 # -- Task 4: the live stream ------------------------------------------------------------------
@@ -174,6 +184,26 @@ def typed(session: Session, key: str) -> str:
     """What field ``key`` shows: the text typed last (a refused attempt too), or ''."""
     e = session.entry(key)
     return e.typed if e else ""
+
+
+def held(session: Session, key: str) -> str:
+    """The text in effect for field ``key`` (an accepted answer, not a refused attempt over
+    it), or '' when nothing was entered: what Escape brings back in the field."""
+    e = session.entry(key)
+    return e.text if e else ""
+
+
+def previous_answer(session: Session, key: str) -> str | None:
+    """The answer stored for field ``key`` before the one in effect: the newest earlier
+    text that reads as an answer and differs from it (None: there is none). Ctrl+Z in the
+    field enters it again."""
+    e = session.entry(key)
+    if e is None or key not in FIELDS:
+        return None
+    for text, _at in reversed(e.history):
+        if text.strip() != e.text.strip() and text.strip() and read_entry(FIELDS[key], text).ok:
+            return text
+    return None
 
 
 def chosen(session: Session, key: str) -> tuple[int, ...]:
@@ -278,11 +308,12 @@ class TableView:
 
 def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> str:
     """The formula of a computed cell of row ``r`` with the row's numbers in it (R in ohm,
-    k_a in N m/A, the final one)."""
+    k_a in N m/A, the final one). R stands as the group typed it: 5,3 is "5.3 Ω", not
+    "5.30 Ω" (:func:`minseg_tui.quantities.format_reading`)."""
     if name == "k_v" and r.k_v is not None and r.u_ss is not None and r.i_ss is not None:
         if r.omega_ss is not None and R is not None:
             return (
-                f"k_v = (u_ss - R i_ss) / omega_ss = ({_num(r.u_ss, 3)} V - {_num(R, 3)} Ω × "
+                f"k_v = (u_ss - R i_ss) / omega_ss = ({_num(r.u_ss, 3)} V - {format_reading(R, 'Ω')} × "
                 f"{_num(r.i_ss, 3)} A) / {_num(r.omega_ss, 3)} rad/s = {_num(r.k_v)} V s/rad"
             )
     if name == "f" and r.f is not None and r.i_ss is not None and r.omega_ss is not None:
@@ -296,7 +327,7 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
 
 
 def _table_row(r: TableRow, R: float | None, k_a: float | None) -> tuple[Cell, ...]:
-    spread = "" if r.spread is None else f" ±{r.spread:.2f}"
+    spread = "" if r.spread is None else f" {format_spread(r.spread)}"
     omega_how = (
         "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
         if r.spread is not None
@@ -334,7 +365,7 @@ def table(session: Session) -> TableView:
         )
     warnings = tuple(n.message for n in session.warnings("table")) + tuple(res.problems)
     return TableView(
-        TABLE_COLUMNS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
+        TABLE_HEADERS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
     )
 
 
@@ -455,7 +486,7 @@ ZOOM_MIN_SAMPLES: int = 3
 
 
 @dataclass(frozen=True)
-class StepWindow:
+class RiseZoom:
     """One rising step of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
     the speed before (``omega0``) and settled (``omega_ss``, rad/s), its 63 % reading
     ``T_63`` (s or None); the zoom to its rise from ``z0`` to ``z1`` (s: a little before the
@@ -481,7 +512,7 @@ class StepWindow:
         return None if self.T_63 is None else self.t0 + self.T_63
 
 
-def step_window(step_: model_identify.RisingStep, T: float | None, ts: float) -> StepWindow:
+def rise_zoom(step_: model_identify.RisingStep, T: float | None, ts: float) -> RiseZoom:
     """The window of one rising step, zoomed to its rise with time constant ``T`` (s; the
     step's own 63 % reading when None) at sample period ``ts`` (s)."""
     T_ref = T if T is not None and T > 0 else step_.T_63
@@ -490,7 +521,7 @@ def step_window(step_: model_identify.RisingStep, T: float | None, ts: float) ->
     t1 = step_.t + step_.duration
     z0 = step_.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
     z1 = min(step_.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
-    return StepWindow(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
+    return RiseZoom(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
 
 
 @dataclass(frozen=True)
@@ -503,7 +534,7 @@ class ResultsView:
     t: FloatArray
     omega: FloatArray
     u: FloatArray
-    steps: tuple[StepWindow, ...]
+    steps: tuple[RiseZoom, ...]
     lines: tuple[str, ...]
     compare: tuple[tuple[str, str, str], ...] = ()
     problems: tuple[str, ...] = ()
@@ -525,7 +556,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             log = None
     ident = res.identification
     lines: list[str] = []
-    steps: tuple[StepWindow, ...] = ()
+    steps: tuple[RiseZoom, ...] = ()
     if ident is not None and ident.step is not None:
         st = ident.step
         conceal = hidden(session)
@@ -545,18 +576,18 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "omega_ss in the steps",
                 "Task 11",
             )
-            + f"   u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
+            + f"   u_ss = {_fmt(st.u_ss, 'V', 3)} ({model_identify.u_ss_words(st.u_ss_how)})",
             shown(
                 "own.K",
                 f"K = {_fmt(st.K, 'rad/s/V')}"
-                f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else ', 95 % CI not determined by this log'}",
+                f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "K",
                 "Task 11",
             ),
             shown(
                 "own.T",
                 f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
-                f"{_ci(st.T_ci, 's') if st.T_determined else ', 95 % CI not determined by this log'}",
+                f"{_ci(st.T_ci, 's') if st.T_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "T",
                 "Task 12",
             ),
@@ -571,7 +602,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
         ]
         ts = log.ts if log is not None else 0.0
-        steps = tuple(step_window(s, st.T, ts) for s in st.steps)
+        steps = tuple(rise_zoom(s, st.T, ts) for s in st.steps)
     problems = list(res.problems)
     rule = policy(session)
     if rule.problem:
@@ -596,17 +627,6 @@ def results(session: Session, step_id: str) -> ResultsView:
 
 
 # -- the model check ---------------------------------------------------------------------------
-FIGURES: dict[str, tuple[str, str]] = {
-    "angle_rms": ("angle error", "rad"),
-    "heldout_rmse": ("error on held-out steps", "rad/s"),
-    "above_noise": ("speed error above the noise", "rad/s"),
-    "above_floor": ("speed error above the encoder's floor", "rad/s"),
-    "rmse": ("rms speed error", "rad/s"),
-}
-"""The model check's gain figures (``gain`` keys without their baseline_/extended_ prefix):
-what they are called here and their unit."""
-
-
 @dataclass(frozen=True)
 class CheckView:
     """The model check of one run: measured, baseline and extended speeds (rad/s) at t (s),
@@ -654,7 +674,7 @@ def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | No
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
     b, e = check_words.figure(gain, key)
-    unit = FIGURES.get(stem, (stem, ""))[1]
+    unit = check_words.figure_name(stem)[1]
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
     if not named or e is None:
@@ -687,11 +707,11 @@ def check(session: Session) -> CheckView:
     if r.lead is not None:
         shown = _figure(g, r.lead.figure, named)
         if shown is not None:
-            lead = f"{FIGURES.get(led, (led, ''))[0]}: {shown}"
+            lead = f"{check_words.figure_name(led)[0]}: {shown}"
             lead_why = r.lead.why
     others = [
-        f"{FIGURES[stem][0]} {shown}"
-        for stem in FIGURES
+        f"{check_words.FIGURES[stem][0]} {shown}"
+        for stem in check_words.FIGURES
         if stem != led and (shown := _figure(g, stem, named)) is not None
     ]
     floor = g.get("noise_floor")

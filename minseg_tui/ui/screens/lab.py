@@ -36,6 +36,7 @@ from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
+from minseg_tui.ui.keys import panel_keys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
     CaptureRequested,
@@ -74,17 +75,7 @@ MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": "
 
 STEP_IDS = tuple(s.id for s in STEPS)
 
-PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
-    ("f3", "set_voltage", "Set V", "setting a voltage"),
-    ("f4", "capture", "Capture", "capturing omega_ss"),
-    ("f5", "run_steps", "Run", "the step experiment"),
-    ("f6", "run_fast", "Run 5 ms", "the fast step experiment"),
-    ("f7", "formula", "Formula", "a table formula"),
-    ("f9", "zoom_next", "Zoom", "zooming the step log"),
-    ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
-    ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
-    ("ctrl+r", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
-)
+PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = panel_keys()
 """Keys that act on the shown step's panel: (keys, the app's action, footer label, what it is;
 no label: not in the footer). The footer shows a key on the steps whose panel offers it
 (:meth:`LabScreen.panel_keys`); elsewhere the key says that it is not part of this step. None
@@ -463,6 +454,7 @@ class LabScreen(StatusScreen):
                     views.entry(s, f.key),
                     views.chosen(s, f.key),
                     readonly=self.readonly,
+                    held=views.held(s, f.key),
                 )
                 for f in step.fields
             ]
@@ -524,6 +516,7 @@ class LabScreen(StatusScreen):
         with self.session as s:
             for row in panes.last().query(FieldRow):
                 text = views.typed(s, row.field.key)
+                row.held = views.held(s, row.field.key)
                 if row.sent is not None and text != row.sent:
                     row.refresh_from_lab(text, views.entry(s, row.field.key))
         panel = panes.last().panel
@@ -662,12 +655,39 @@ class LabScreen(StatusScreen):
             result = EntryView(False, "this session is open read-only (damaged): not stored")
             row.show_result(result)
             return result
+        key = row.field.key
         with self.session as s:
-            s.enter(row.field.key, text)
-            result = views.entry(s, row.field.key) or EntryView(True)
+            old = s.entry(key)
+            before = old.text if old is not None and old.ok else ""
+            s.enter(key, text)
+            result = views.entry(s, key) or EntryView(True)
+            row.held = views.held(s, key)
         row.show_result(result)
+        if not submitted and before.strip() and row.held != before:
+            # an answer replaced by leaving the field, not by Enter (a stray key, say): said,
+            # and Ctrl+Z in the field brings the old one back
+            self.notify(
+                f"{row.field.label}: {text.strip()!r} stored in place of {before.strip()!r} "
+                "(not confirmed with Enter); Ctrl+Z in the field brings the old answer back",
+                title="answer replaced",
+            )
         self._changed()
         return result
+
+    @on(FieldRow.Restore)
+    def _restore(self, event: FieldRow.Restore) -> None:
+        """Ctrl+Z in an entry: the answer stored before the one in effect, entered again."""
+        event.stop()
+        with self.session as s:
+            previous = views.previous_answer(s, event.key)
+        if previous is None:
+            self.notify(f"{event.row.field.label}: no earlier answer to bring back")
+            return
+        event.row.refresh_from_lab(previous, None)
+        event.row.input.cursor_position = len(previous)
+        result = self._store(event.row, previous, submitted=True)
+        if result.ok:
+            self.notify(f"{event.row.field.label}: back to {previous.strip()!r}")
 
     @on(FieldRow.Typed)
     def _typed(self, event: FieldRow.Typed) -> None:
