@@ -21,7 +21,7 @@ from textual.binding import Binding
 from textual.containers import VerticalScroll
 from textual.message import Message
 from textual.screen import Screen
-from textual.widgets import DataTable, Footer, Static
+from textual.widgets import DataTable, Static
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.state.compare import format_diff
@@ -29,6 +29,7 @@ from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
 from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.ui.screens.start import StartScreen
+from minseg_tui.ui.widgets.footer import KeyFooter
 
 COLUMNS: tuple[tuple[str, str], ...] = (
     ("#", "n"),
@@ -123,7 +124,7 @@ class ClassScreen(Screen[None]):
         yield table
         with VerticalScroll(id="class-detail"):
             yield Static("", id="class-group")
-        yield Footer()
+        yield KeyFooter()
 
     def on_mount(self) -> None:
         table = self.query_one(DataTable)

@@ -21,6 +21,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Horizontal, VerticalScroll
+from textual.css.query import NoMatches
 from textual.reactive import reactive
 from textual.signal import Signal
 from textual.widget import Widget
@@ -381,8 +382,12 @@ class LabScreen(StatusScreen):
     @property
     def panel(self) -> Widget | None:
         """The panel of the step on screen (the last pane mounted; the one before may still be
-        leaving), or None."""
-        panes = self.query(StepPane)
+        leaving), or None. Read from the body's children, not by a walk of the whole screen:
+        the footer asks for the panel keys (:meth:`panel_keys`) whenever the keys change."""
+        try:
+            panes = self.get_child_by_id("body").query_children(StepPane)
+        except NoMatches:  # not composed yet
+            return None
         return panes.last().panel if panes else None
 
     def panel_keys(self) -> dict[str, Callable[[], None]]:

@@ -11,12 +11,13 @@ from textual.binding import Binding
 from textual.containers import Vertical
 from textual.content import Content
 from textual.message import Message
-from textual.widgets import Footer, Input, OptionList, Static
+from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from minseg_tui.lab.content.steps import STEP_INDEX, step
 from minseg_tui.lab.saving.store import SessionInfo
 from minseg_tui.ui.screens.status import StatusScreen
+from minseg_tui.ui.widgets.footer import KeyFooter
 
 
 def step_name(step_id: str) -> str:
@@ -85,7 +86,7 @@ class StartScreen(StatusScreen):
             elif not options:
                 options = [Option("no saved sessions yet", id="", disabled=True)]
             yield OptionList(*options, id="sessions")
-        yield Footer()
+        yield KeyFooter()
 
     @staticmethod
     def _label(s: SessionInfo) -> str:

@@ -7,12 +7,14 @@ plot's top-left corner, where a step response or a live stream has its points.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections import OrderedDict
+from collections.abc import Hashable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
+from rich.text import Text
 from textual.app import ComposeResult
 from textual.containers import Vertical
 from textual.content import Content
@@ -217,8 +219,33 @@ def free_row(covered: set[tuple[int, int]], columns: set[int], rows: int) -> int
     return min(candidates, key=lambda r: sum((c, r) in covered for c in columns))
 
 
+BUILDS_KEPT = 32
+"""How many plots built by plotext are kept (:class:`Canvas`)."""
+
+_built: OrderedDict[Hashable, Text] = OrderedDict()
+"""Plots built by plotext, by what they draw (the newest last): a plot drawn again as it
+was (the same step's view on a return to it, Tasks 11 and 12 zoomed on the same rise, a
+redraw of the screen around it) is not built again (10-40 ms each)."""
+
+
+def _signature(traces: Sequence[Trace]) -> tuple[object, ...]:
+    """What ``traces`` draw, hashable (their values as bytes)."""
+    return tuple(
+        (
+            np.asarray(tr.x, dtype=float).tobytes(),
+            np.asarray(tr.y, dtype=float).tobytes(),
+            tr.label,
+            tr.marker,
+            tr.colour,
+            tr.steps,
+        )
+        for tr in traces
+    )
+
+
 class Canvas(PlotextPlot):
-    """The plot itself (no legend)."""
+    """The plot itself (no legend). The text plotext builds is kept by what it draws
+    (:data:`_built`)."""
 
     def __init__(self, title: str, xlabel: str, ylabel: str) -> None:
         super().__init__(classes="canvas")
@@ -227,6 +254,8 @@ class Canvas(PlotextPlot):
         self._ylabel = ylabel
         self.traces: tuple[Trace, ...] = ()
         self.xlim: tuple[float, float] | None = None
+        self._drawn: Hashable = None
+        """What :meth:`draw` last handed plotext (the key of its build in :data:`_built`)."""
 
     def on_mount(self) -> None:
         super().on_mount()
@@ -242,6 +271,14 @@ class Canvas(PlotextPlot):
         self._xlabel = xlabel
 
     def draw(self) -> None:
+        self._drawn = (
+            self._title,
+            self._xlabel,
+            self._ylabel,
+            self.xlim,
+            self.size,
+            _signature(self.traces),
+        )
         plt = self.plt
         plt.clear_data()
         plt.clear_figure()
@@ -325,6 +362,20 @@ class Canvas(PlotextPlot):
     def on_resize(self) -> None:
         self.draw()  # the y ticks sit on rows
 
+    def render(self) -> Text:
+        """plotext's build of what :meth:`draw` handed it, at the widget's size (kept)."""
+        key = (self._drawn, self.size, self.app.theme, self.theme)
+        text = _built.get(key)
+        if text is None:
+            built = super().render()
+            assert isinstance(built, Text)
+            _built[key] = text = built
+            while len(_built) > BUILDS_KEPT:
+                _built.popitem(last=False)
+        else:
+            _built.move_to_end(key)
+        return text.copy()
+
 
 class TracePlot(Vertical):
     """A plot with a title and axis labels, and its legend on a line below it; :meth:`show`
@@ -365,6 +416,8 @@ class TracePlot(Vertical):
         """Draw ``traces`` (and nothing else) at the next refresh, over ``xlim`` (s) if given."""
         self._canvas.traces = tuple(traces)
         self._canvas.xlim = xlim
-        self._legend.update(legend(traces))
+        shown, now = legend(traces), self._legend.content
+        if not (isinstance(now, Content) and (now.plain, now.spans) == (shown.plain, shown.spans)):
+            self._legend.update(shown)  # a layout of the screen: only when it changed
         if self._canvas.is_mounted:
             self._canvas.draw()

@@ -73,8 +73,12 @@ class Prose(Static):
         super().__init__(Wrapped(text), id=id, classes=classes, markup=False)
 
     def update(self, content: object = "", *, layout: bool = True) -> None:
-        """Show ``content`` (plain text)."""
-        super().update(Wrapped(str(content)), layout=layout)
+        """Show ``content`` (plain text); the same text again changes nothing (no layout of
+        the screen: panels show their whole view again whenever the lab changes)."""
+        text = str(content)
+        if isinstance(self.content, Wrapped) and self.content.text == text:
+            return
+        super().update(Wrapped(text), layout=layout)
 
     @property
     def text(self) -> str:
