@@ -438,6 +438,16 @@ _R_PLAUSIBLE = Plausible(
 )
 
 
+_F_PLAUSIBLE = Plausible(
+    5e-5,
+    0.05,
+    low="below 0.05 mN m s/rad, a thousandth of this motor's usual few mN m s/rad: typed in "
+    "N m s/rad? Write the unit after the number",
+    high="above 50 mN m s/rad, a thousand times this motor's usual few mN m s/rad: is the unit "
+    "right? The table's f is in mN m s/rad",
+)
+
+
 def _u_ss(level: float) -> Field:
     return Field(
         f"u_ss@{level:g}",
@@ -571,7 +581,14 @@ _LAB: tuple[Step, ...] = (
         fields=(
             Field("own.k_v", "your k_v", unit="V s/rad", optional=True, compare="k_v"),
             Field("own.k_a", "your k_a", unit="N m/A", optional=True, compare="k_a"),
-            Field("own.f", "your f", unit="mN m s/rad", optional=True, compare="f"),
+            Field(
+                "own.f",
+                "your f",
+                unit="mN m s/rad",
+                optional=True,
+                compare="f",
+                plausible=(_F_PLAUSIBLE,),
+            ),
         ),
         formulas=(
             ("k_v", "k_v = (u_ss - R i_ss) / omega_ss, per row; final k_v = median of the rows"),
