@@ -286,7 +286,13 @@ def _step_section(session: Session) -> Section:
                 if isinstance(c.least_squares, str)
                 else _q(c.least_squares, c.unit)
             )
-            diff = "" if c.rel_diff is None else format_diff(c.rel_diff)
+            diff = (
+                ("✓ " if c.right else "✗ ") + c.verdict
+                if c.verdict
+                else ""
+                if c.rel_diff is None
+                else format_diff(c.rel_diff)
+            )
             shown = (
                 "revealed before answering"
                 if c.revealed_early

@@ -548,6 +548,8 @@ class Session:
         if not answered:
             return "todo"
         wrong = any(fb.status == "wrong" for fb in self.feedback(step_id))
+        if not wrong and any(f.compare and f.kind == "text" for f in st.fields):
+            wrong = any(c.right is False for c in self.comparisons(step_id))
         return "wrong" if wrong else "done"
 
     # -- the table -----------------------------------------------------------------------------

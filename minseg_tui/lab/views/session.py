@@ -244,6 +244,8 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             comp += f" ({c.how})"
         if c.rel_diff is not None:
             comp += f": {lab_compare.format_diff(c.rel_diff)}"
+        if c.verdict:
+            comp += f"\n  {c.verdict}"
         if c.revealed_early:
             comp += " · revealed before answering"
         if c.least_squares is not None:
