@@ -356,6 +356,12 @@ RUN = Record(
 )
 """One recorded run (:meth:`minseg_tui.lab.saving.runs.RunInfo.to_json`)."""
 
+BOARD_CHECK = Record(
+    required={"ok": Flag(), "text": Text(), "at": Text()},
+    optional={"counts": Number(integer=True)},
+)
+"""One board check's result (:meth:`minseg_tui.lab.state.session.Session.record_check`)."""
+
 SESSION = Record(
     required={
         "kind": Exactly(KIND),
@@ -370,10 +376,15 @@ SESSION = Record(
         "captures": MapOf(CAPTURE),
         "runs": ListOf(RUN),
     },
-    optional={"selected_run": OneOf((None, Text())), "revealed": ListOf(Text())},
+    optional={
+        "selected_run": OneOf((None, Text())),
+        "revealed": ListOf(Text()),
+        "board_checks": MapOf(BOARD_CHECK),
+    },
 )
 """session.json, whole (``revealed``: fields of Tasks 11-15 shown before the group
-answered them)."""
+answered them; ``board_checks``: the newest result of each board check, by key of
+:data:`minseg_tui.lab.content.steps.BOARD_CHECKS`)."""
 
 PARTIAL_HEADER = Record(
     required={},
@@ -423,6 +434,7 @@ def salvage(data: dict[str, Any]) -> tuple[dict[str, Any], list[str]]:
 
 
 __all__ = [
+    "BOARD_CHECK",
     "CAPTURE",
     "ENTRY",
     "KIND",
