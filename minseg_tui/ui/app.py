@@ -75,7 +75,7 @@ from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
 from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
-from minseg_tui.ui.screens.start import StartScreen
+from minseg_tui.ui.screens.start import StartScreen, split_names
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 
@@ -346,7 +346,7 @@ class LabApp(App[None]):
 
     @on(StartScreen.NewSession)
     async def _new(self, event: StartScreen.NewSession) -> None:
-        names = [m.strip() for m in event.members.split(",") if m.strip()]
+        names = split_names(event.members)
         root = Path(self.config.sessions)
         await self._enter_lab(lambda: Session.create(root, names, event.date or None))
 
