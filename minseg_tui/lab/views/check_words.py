@@ -144,8 +144,8 @@ def _s(x: float) -> str:
 
 
 def _at(x: float) -> str:
-    """A step's time to the millisecond, as the details write it ('4.625 s', '1.25 s')."""
-    return f"{x:.3f}".rstrip("0").rstrip(".") + " s"
+    """A step's board time to the millisecond, as the details write it ('4.625 s')."""
+    return f"{x:.3f} s"
 
 
 def _later(x: float) -> str:
