@@ -47,6 +47,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 from decimal import Decimal
 
@@ -116,8 +117,49 @@ def format_number(value: float, digits: int = DIGITS) -> str:
     return f"{rounded:.{decimals}f}"
 
 
+def format_signed(value: float, digits: int = DIGITS) -> str:
+    """:func:`format_number` with its sign always written: a shift or a difference (+1.20,
+    -0.0350; 0 stays "0")."""
+    text = format_number(value, digits)
+    return f"+{text}" if value > 0 and math.isfinite(value) else text
+
+
+def format_percent(fraction: float) -> str:
+    """A share or a relative difference (``fraction``, 0.17 for 17 %) in whole percent, as
+    the sentences about the numbers write it: "17 %"."""
+    return f"{fraction * 100:.0f} %"
+
+
+def format_spread(spread: float, unit: str = "") -> str:
+    """The spread of a captured speed around its mean, as the live readout, the table and
+    the report write it: "± 0.03 rad/s" (two decimals, the speed's in rad/s)."""
+    return f"± {spread:.2f} {unit}".rstrip()
+
+
+def format_ticks(values: Sequence[float]) -> list[str]:
+    """The labels of evenly spaced axis ticks, on the screen's plots and the report's
+    figures alike: as many decimals as their step and values need (a step of 2.5 one more
+    than 2), the same for every tick (0.0, 0.5, 1.0), never '-0'."""
+    if len(values) < 2:
+        return [f"{v:g}" for v in values]
+    step = values[1] - values[0]
+    least = max(0, -math.floor(math.log10(step) + 1e-9))
+    decimals = next(
+        (
+            d
+            for d in range(least, least + 4)
+            if all(abs(round(v, d) - v) < step * 1e-6 for v in values)
+        ),
+        least + 4,
+    )
+    return [f"{round(v, decimals) + 0.0:.{decimals}f}" for v in values]
+
+
 NO_WIDTH = "not determined: the interval has no width"
 """What an interval whose ends are one number says instead of 'x – x'."""
+
+NOT_DETERMINED = "not determined by this log"
+"""What a 95 % interval the log does not determine says instead of numbers."""
 
 
 def format_interval(
@@ -126,7 +168,13 @@ def format_interval(
     """A finite interval (lo, hi) in ``unit``: its ends with ``digits`` significant digits,
     or with as many more as it takes to tell them apart, so that a narrow interval shows its
     real width ("12.3004 – 12.3012 rad/s/V", never "12.30 – 12.30"); an interval without
-    width (lo == hi) is :data:`NO_WIDTH`."""
+    width (lo == hi) is :data:`NO_WIDTH`; an end the log does not bound (infinite) is said."""
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        if math.isfinite(lo):
+            return f"{format_number(lo, digits)} {unit} or more: no upper bound from this log"
+        if math.isfinite(hi):
+            return f"up to {format_number(hi, digits)} {unit}: no lower bound from this log"
+        return "not bounded by this log"
     if not hi > lo:
         return NO_WIDTH
     a, b = format_number(lo, digits), format_number(hi, digits)

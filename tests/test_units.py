@@ -49,3 +49,21 @@ def test_join_units_keeps_numbers_and_units_together():
     assert "0.0025 at" in joined  # a number before a word that is no unit: a normal space
     assert joined.replace(NO_BREAK, " ") == text
     assert join_units("u_2 V and x2 s") == "u_2 V and x2 s"  # inside names: left alone
+
+
+def test_a_signed_number_keeps_its_sign_and_its_zeros():
+    from minseg_tui.quantities import format_signed
+
+    assert format_signed(0.0123, 3) == "+0.0123"
+    assert format_signed(-1.2, 3) == "-1.20"
+    assert format_signed(12.0) == "+12.00"
+    assert format_signed(0.0) == "0" and format_signed(math.nan) == "—"
+
+
+def test_percents_spreads_and_ticks_are_written_one_way():
+    from minseg_tui.quantities import format_percent, format_spread, format_ticks
+
+    assert format_percent(0.174) == "17 %" and format_percent(0.0) == "0 %"
+    assert format_spread(0.0312, "rad/s") == "± 0.03 rad/s" and format_spread(0.2) == "± 0.20"
+    assert format_ticks([0.0, 0.5, 1.0]) == ["0.0", "0.5", "1.0"]  # the report wrote "1"
+    assert format_ticks([0.0, 20.0, 40.0]) == ["0", "20", "40"]

@@ -17,6 +17,7 @@ from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_step_log
 from minseg_tui.model.check import CheckResult, check, text
+from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.steplog import problem
 
 
@@ -57,6 +58,26 @@ def write_predictions(path: str, r: CheckResult) -> None:
             w.writerow([repr(float(v)) for v in row])
 
 
+def in_words_text(r: CheckResult) -> str:
+    """The check's text (:func:`minseg_tui.model.check.text`) with its headings naming the
+    cause, the other causes and the extended model in words ("Cause: dry friction",
+    "Extended model (first order + dry friction)"), not by their contract names, which stay
+    in ``--json``."""
+    f, e = r.finding, r.extended
+    heads = {f"Cause: {f.cause}": f"Cause: {in_words(f.cause)}"}
+    heads[f"Extended model ({e.model}):"] = f"Extended model ({in_words(e.model)}):"
+    for o in f.others:
+        heads[f"  also: {o.cause} ("] = f"  also: {in_words(o.cause)} ("
+    out = []
+    for line in text(r).split("\n"):
+        for old, new in heads.items():
+            if line == old or (old.endswith((":", "(")) and line.startswith(old)):
+                line = new + line[len(old) :]
+                break
+        out.append(line)
+    return "\n".join(out)
+
+
 def run(args: argparse.Namespace) -> int:
     """Analyse the log; 0 on success (InputError propagates: exit 2 with one line)."""
     if args.predictions is not None:
@@ -77,5 +98,5 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(result.to_dict(), indent=2)
     else:
-        print(text(result))
+        print(in_words_text(result))
     return 0

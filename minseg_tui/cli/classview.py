@@ -23,9 +23,8 @@ from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.store import atomic_write_text, os_reason
 from minseg_tui.lab.views import classread
-from minseg_tui.lab.views.classview import QUANTITIES, ClassView
+from minseg_tui.lab.views.classview import QUANTITIES, ClassView, members, own_cell
 from minseg_tui.quantities import format_number
-from minseg_tui.report import class_content, html, markdown
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -55,7 +54,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _cell(v: float | None) -> str:
-    return "-" if v is None else format_number(v)
+    return "–" if v is None else format_number(v)
 
 
 def text(view: ClassView) -> str:
@@ -73,11 +72,11 @@ def text(view: ClassView) -> str:
         [
             str(k),
             g.id,
-            class_content.members(g),
-            g.step or "-",
+            members(g),
+            g.step or "–",
             *(_cell(g.value(q.key)) for q in QUANTITIES),
-            g.cause or "-",
-            class_content.own_cell(g),
+            g.cause or "–",
+            own_cell(g),
         ]
         for k, g in enumerate(view.groups, 1)
     ]
@@ -91,7 +90,8 @@ def text(view: ClassView) -> str:
         if not (g.flags or g.lacks):
             continue
         lines.append("")
-        lines.append(f"#{k} {g.id} ({class_content.members(g)}, {g.date or 'no date'})")
+        who = f"{members(g)}, {g.date or 'no date'}" if g.readable else "cannot be read"
+        lines.append(f"#{k} {g.id} ({who})")
         lines += [f"  ! {f}" for f in g.flags]
         lines += [f"  - lacks: {x}" for x in g.lacks]
     if not any(g.flags for g in view.groups):
@@ -102,6 +102,8 @@ def text(view: ClassView) -> str:
 def write(view: ClassView, out: Path) -> tuple[Path, ...]:
     """Write class.md, class.html and class.csv into ``out`` (made if needed); InputError,
     one line, when it cannot be written."""
+    from minseg_tui.report import class_content, html, markdown  # only for --out: slow to load
+
     rep = class_content.build(view)
     files = (
         (out / "class.md", markdown.render(rep)),

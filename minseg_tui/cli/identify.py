@@ -10,8 +10,16 @@ import textwrap
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_step_log, read_table
-from minseg_tui.model.identify import Identification, identify
-from minseg_tui.quantities import NO_WIDTH, NUMBER, format_interval, format_number, format_reading
+from minseg_tui.model.identify import Identification, identify, u_ss_words
+from minseg_tui.quantities import (
+    NO_WIDTH,
+    NOT_DETERMINED,
+    NUMBER,
+    format_interval,
+    format_number,
+    format_reading,
+    format_signed,
+)
 
 
 def _ohms(text: str) -> float:
@@ -108,34 +116,29 @@ def render(result: Identification) -> str:
     ]
     s = result.step
     if s is not None:
-        how = {
-            "row": "the table's row",
-            "interpolated": "interpolated in the table",
-            "extrapolated": "extrapolated from the table",
-            "log": "the log's applied voltage",
-        }[s.u_ss_how]
+        how = u_ss_words(s.u_ss_how)
         t63 = (
-            f"{s.T_63 * 1e3:.1f} ms"
+            f"{_g(s.T_63 * 1e3)} ms"
             if s.T_63 is not None
             else "not read (the speed never reached 63 %)"
         )
         fit = s.fit
         interval = (
-            f"95 % interval {format_interval(s.T_ci[0] * 1e3, s.T_ci[1] * 1e3, 'ms', sep=' to ')}"
+            f"95 % interval {format_interval(s.T_ci[0] * 1e3, s.T_ci[1] * 1e3, 'ms')}"
             if s.T_determined and s.T_ci[1] > s.T_ci[0]
             else f"95 % interval: {NO_WIDTH}"
             if s.T_determined
-            else "95 % interval: not determined by this log"
+            else f"95 % interval: {NOT_DETERMINED}"
         )
         on_bound = " (on its bound)" if fit.T_on_bound else ""
         timing = (
             "with a time shift of the steps against the samples as a nuisance, kept within one "
-            f"sample period: {fit.shift * 1e3:+.2f} ms"
+            f"sample period: {format_signed(fit.shift * 1e3, 3)} ms"
             + (", on that bound" if fit.shift_on_bound else "")
         )
         if s.dead_time:
             timing = (
-                f"with a dead time of {s.dead_time * 1e3:.1f} ms (the wheel answers later than the one "
+                f"with a dead time of {_g(s.dead_time * 1e3)} ms (the wheel answers later than the one "
                 "sample period the sampling's lateness explains), part of the model"
             )
         out += [
@@ -148,10 +151,10 @@ def render(result: Identification) -> str:
                 if s.K_determined and s.K_ci[1] > s.K_ci[0]
                 else f"(95 % interval: {NO_WIDTH}; Task 11)"
                 if s.K_determined
-                else "(95 % interval: not determined by this log; Task 11)"
+                else f"(95 % interval: {NOT_DETERMINED}; Task 11)"
             ),
             f"T, 63 % reading      = {t63} (Task 12, median over the rising steps)",
-            f"T, least squares     = {s.T * 1e3:.2f} ms{on_bound}, {interval}",
+            f"T, least squares     = {_g(s.T * 1e3)} ms{on_bound}, {interval}",
             *_wrap(
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "
                 f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T)"

@@ -14,7 +14,14 @@ import io
 import math
 
 from minseg_tui.lab.state.compare import format_diff
-from minseg_tui.lab.views.classview import JUDGED, QUANTITIES, THRESHOLD, ClassView, Group
+from minseg_tui.lab.views.classview import (
+    JUDGED,
+    QUANTITIES,
+    THRESHOLD,
+    ClassView,
+    members,
+    own_cell,
+)
 from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.report.content import Figure, Figures, Report, Section, Table
 from minseg_tui.report.svg import Band, Line, Mark, plot
@@ -25,21 +32,6 @@ GROUP_COLOR = "#1f77b4"
 
 def _cell(v: float | None) -> str:
     return "–" if v is None or not math.isfinite(v) else format_number(v)
-
-
-def members(g: Group) -> str:
-    """The group's names, or why there are none."""
-    return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
-
-
-def own_cell(g: Group) -> str:
-    """The group's own values against the computed ones, in one cell: "T_63 +12 %"."""
-    parts = [
-        f"{o.key.removeprefix('own.')} {format_diff(o.rel_diff)}"
-        for o in g.own
-        if o.rel_diff is not None
-    ]
-    return ", ".join(parts) or "–"
 
 
 def table(view: ClassView) -> Table:
@@ -127,6 +119,18 @@ def _figure(view: ClassView, key: str) -> Figure | None:
     return Figure(svg, 440, caption)
 
 
+def stand_out(view: ClassView) -> Table | None:
+    """What stands out, one row per group that has something (the group named once, its
+    number in the class table beside it), each flag a sentence on a line of its own (one
+    paragraph in Markdown); None when nothing does."""
+    rows = tuple(
+        (str(k), f"{members(g)}\n{g.id}", "\n".join(g.flags))
+        for k, g in enumerate(view.groups, 1)
+        if g.flags
+    )
+    return Table(("#", "group", "what stands out"), rows) if rows else None
+
+
 def build(view: ClassView) -> Report:
     """The class report of ``view``."""
     n = len(view.groups)
@@ -136,14 +140,11 @@ def build(view: ClassView) -> Report:
         "least-squares fit on the encoder angle. 'own vs computed' is how far the group's own "
         "values are from the computed ones. '–': not computed yet (see What is missing)."
     )
-    flags = [
-        f"#{k} {g.id} ({members(g)}): {f}" for k, g in enumerate(view.groups, 1) for f in g.flags
-    ]
     sections.append(
         Section(
             "What stands out",
             [
-                flags or "Nothing stands out.",
+                stand_out(view) or "Nothing stands out.",
                 f"A value stands out when it lies more than {THRESHOLD:g} robust standard "
                 "deviations (1.4826 times the median absolute deviation) from the class "
                 "median: one group's typo moves neither, so it cannot hide another's. The "

@@ -18,17 +18,19 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.state.compare import ANSWERED_FIRST, format_diff
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import check_words
-from minseg_tui.lab.views.session import step_window
+from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
-from minseg_tui.model.identify import RisingStep, StepResult
+from minseg_tui.model.identify import RisingStep, StepResult, u_ss_words
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import (
     DIGITS,
+    NOT_DETERMINED,
     format_interval,
     format_number,
     format_quantity,
     format_reading,
+    format_spread,
 )
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
 
@@ -168,9 +170,9 @@ def _table_section(session: Session) -> Section:
     for r in session.table():
         omega = _reading(r.omega_ss, "rad/s")
         if r.spread is not None and r.omega_ss is not None:
-            omega += f" ± {r.spread:.2g}"
+            omega += f" {format_spread(r.spread)}"
         window = (
-            f"{r.window[0]:.3g}–{r.window[1]:.3g} s"
+            f"{format_number(r.window[0], 3)}–{format_number(r.window[1], 3)} s"
             if r.window
             else "typed"
             if r.omega_ss is not None
@@ -215,32 +217,8 @@ def _table_section(session: Session) -> Section:
     return sec
 
 
-_U_SS_HOW: dict[str, str] = {
-    "row": "the table's row at {levels}",
-    "interpolated": "interpolated between the table's rows: no row at {levels}",
-    "extrapolated": "extrapolated: no table row at {levels}, the nearest row's driver drop",
-    "log": "the log's applied voltage: it has no u_req column",
-}
-"""How Task 11's u_ss was found (:func:`minseg_tui.model.identify.u_ss_at`), in words."""
-
-
 def _u_ss_how(s: StepResult) -> str:
-    levels = " and ".join(f"{v:g} V" for v in sorted({x.u_req for x in s.steps if x.u_req}))
-    return _U_SS_HOW.get(s.u_ss_how, s.u_ss_how).format(levels=levels or "that level")
-
-
-_UNDETERMINED = "not determined by this log"
-
-
-def _interval(lo: float, hi: float, unit: str) -> str:
-    """A 95 % interval; a side the log does not bound is said (the check gives +-inf)."""
-    if math.isfinite(lo) and math.isfinite(hi):
-        return format_interval(lo, hi, unit)
-    if math.isfinite(lo):
-        return f"{_num(lo)} {unit} or more: no upper bound from this log"
-    if math.isfinite(hi):
-        return f"up to {_num(hi)} {unit}: no lower bound from this log"
-    return "not bounded by this log"
+    return u_ss_words(s.u_ss_how, [x.u_req for x in s.steps if x.u_req])
 
 
 def _step_section(session: Session) -> Section:
@@ -264,12 +242,12 @@ def _step_section(session: Session) -> Section:
                     (
                         "K (Task 11, 95 % interval)",
                         f"{_num(s.K)} rad/s/V "
-                        f"({_interval(*s.K_ci, 'rad/s/V') if s.K_determined else _UNDETERMINED})",
+                        f"({format_interval(*s.K_ci, 'rad/s/V') if s.K_determined else NOT_DETERMINED})",
                     ),
                     ("T, 63 % reading (Task 12)", t63),
                     (
                         "T, least squares (95 % interval)",
-                        f"{_num(s.T)} s ({_interval(*s.T_ci, 's') if s.T_determined else _UNDETERMINED})",
+                        f"{_num(s.T)} s ({format_interval(*s.T_ci, 's') if s.T_determined else NOT_DETERMINED})",
                     ),
                     ("J (Task 13)", f"{_num(s.J)} kg m^2"),
                     ("model (Task 14)", s.model_equation(_num)),
@@ -363,7 +341,7 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     st = _read_step(s.steps, s.T_63)
     t = np.asarray(log.t, dtype=float)
     w = np.asarray(log.omega, dtype=float)
-    zoom = step_window(st, s.T, log.ts)  # the same window as the TUI's zoom
+    zoom = rise_zoom(st, s.T, log.ts)  # the same window as the TUI's zoom
     sel = (t >= zoom.z0 - 1e-9) & (t <= zoom.z1 + 1e-9)
     level = zoom.level
     marks = [
@@ -459,24 +437,9 @@ def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | Non
         unit = UNITS.get(k, "")
         text = f"{k} = {_num(v)} {unit}".rstrip()
         if intervals and k in intervals:
-            text += f" (95 %: {_interval(*intervals[k], unit)})"
+            text += f" (95 %: {format_interval(*intervals[k], unit)})"
         out.append(text)
     return ", ".join(out)
-
-
-_GAIN_FIGURES: tuple[tuple[str, str, str], ...] = (
-    ("rmse", "rms error of the speed", "rad/s"),
-    ("above_floor", "speed error above the encoder's noise floor", "rad/s"),
-    ("above_noise", "speed error above the measured noise", "rad/s"),
-    ("angle_rms", "rms error of the angle", "rad"),
-    ("heldout_rmse", "speed error on held-out steps", "rad/s"),
-)
-"""The gain figures of the model check (keys ``baseline_<k>`` / ``extended_<k>``): words, unit."""
-
-
-def _gain_name(key: str) -> tuple[str, str]:
-    bare = check_words.stem(key)
-    return next(((n, u) for k, n, u in _GAIN_FIGURES if k == bare), (bare, ""))
 
 
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
@@ -484,7 +447,7 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     named = r.finding.cause != "none"
     lead = check_words.stem(r.lead.figure) if r.lead else ""
     rows = []
-    for key, name, unit in sorted(_GAIN_FIGURES, key=lambda f: f[0] != lead):
+    for key, (name, unit) in sorted(check_words.FIGURES.items(), key=lambda f: f[0] != lead):
         b, e = check_words.figure(g, key)
         if b is None:
             continue
@@ -501,7 +464,7 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
 def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
-    name, unit = _gain_name(r.lead.figure)
+    name, unit = check_words.figure_name(r.lead.figure)
     b, e = check_words.figure(r.gain, r.lead.figure)
     if b is None:
         return None

@@ -39,16 +39,26 @@ details { margin: 1em 0; } summary { cursor: pointer; font-weight: bold; }
 
 
 _LANDSCAPE = """
+body { max-width: none; }
 @page { size: A4 landscape; margin: 12mm; }
-@media print { figure { flex: 1 1 40% !important; max-width: 48% !important; } }
+@media print {
+  figure { flex: 1 1 40% !important; max-width: 48% !important; }
+  h2:has(+ .figures) { break-before: page; }
+}
 """
-"""For a report with a wide table: landscape pages, and two figures side by side."""
+"""For a report with a wide table: the window's width on screen; landscape pages, the
+figures from a new page (else their heading could end a page alone), two side by side."""
+
+
+def _cell(text: str) -> str:
+    """A table cell: each line of ``text`` on a line of its own."""
+    return "<br>".join(_text(line) for line in text.split("\n"))
 
 
 def _table(t: Table) -> str:
     head = "".join(f"<th>{escape(h)}</th>" for h in t.header)
     rows = "".join(
-        "<tr>" + "".join(f"<td>{_text(c)}</td>" for c in row) + "</tr>" for row in t.rows
+        "<tr>" + "".join(f"<td>{_cell(c)}</td>" for c in row) + "</tr>" for row in t.rows
     )
     return (
         f'<div class="table"><table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody>'

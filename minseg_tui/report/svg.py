@@ -24,6 +24,8 @@ from html import escape
 import numpy as np
 from numpy.typing import ArrayLike
 
+from minseg_tui.quantities import format_ticks
+
 MAX_POINTS = 1600
 COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#555555")
 
@@ -91,10 +93,6 @@ def nice_ticks(lo: float, hi: float, n: int = 5) -> list[float]:
     step = next(m * mag for m in (1, 2, 2.5, 5, 10) if m * mag >= raw)
     first = math.ceil(lo / step - 1e-9) * step
     return [round(first + k * step, 12) for k in range(int((hi - first) / step + 1e-9) + 1)]
-
-
-def _fmt(v: float) -> str:
-    return f"{v:.4g}"
 
 
 def thin(
@@ -242,18 +240,20 @@ def plot(
         f'<rect class="plot-area" x="{ml}" y="{mt}" width="{pw}" height="{ph}" fill="none" '
         'stroke="#999"/>'
     )
-    for v in nice_ticks(x0, x1, 8):
+    xticks = nice_ticks(x0, x1, 8)
+    for v, label in zip(xticks, format_ticks(xticks), strict=True):
         px = float(sx(v))
         out.append(f'<line x1="{px:.1f}" y1="{mt}" x2="{px:.1f}" y2="{mt + ph}" stroke="#eee"/>')
         out.append(
             f'<text class="xtick" x="{px:.1f}" y="{mt + ph + 13}" text-anchor="middle">'
-            f"{_fmt(v)}</text>"
+            f"{label}</text>"
         )
-    for v in nice_ticks(y0, y1, 5):
+    yticks = nice_ticks(y0, y1, 5)
+    for v, label in zip(yticks, format_ticks(yticks), strict=True):
         py = float(sy(v))
         out.append(f'<line x1="{ml}" y1="{py:.1f}" x2="{ml + pw}" y2="{py:.1f}" stroke="#eee"/>')
         out.append(
-            f'<text class="ytick" x="{ml - 4}" y="{py + 4:.1f}" text-anchor="end">{_fmt(v)}</text>'
+            f'<text class="ytick" x="{ml - 4}" y="{py + 4:.1f}" text-anchor="end">{label}</text>'
         )
     if y0 < 0 < y1:
         py = float(sy(0.0))

@@ -50,6 +50,7 @@ from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
+from minseg_tui.ui.keys import app_bindings, help_lines
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
     BoardChecked,
@@ -83,28 +84,8 @@ ReportWriter = Callable[[Session], Sequence[Path]]
 """Writes a session's report into its folder; the files written (the CLI hands in
 :func:`minseg_tui.report.write.write_report`: the report layer sits beside the UI)."""
 
-KEYS: list[tuple[str, str]] = [
-    ("F1", "this help"),
-    ("F2", "STOP the motor (works everywhere, always)"),
-    ("F3", "set the next voltage 2.5/3.5/4.5 V (Task 4/5)"),
-    ("F4", "capture omega_ss over the settled window"),
-    ("F5", "run the step sequence (Task 10)"),
-    ("F6", "run it fast: 5 ms board-timed samples"),
-    ("F7", "the formula behind the table cell"),
-    ("F8", "export the report (Markdown, HTML, CSV)"),
-    ("F9", "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)"),
-    ("F10", "board check: does the wheel turn, does the count follow?"),
-    ("Ctrl+R", "lab assistant: show the computed values before the answers"),
-    ("Alt+← →", "previous / next step of the log (Tasks 11-15)"),
-    ("Ctrl+← →", "the same, outside a text entry"),
-    ("[ ] z", "the same on the focused plot; z zooms"),
-    ("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
-    ("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
-    ("Tab", "next field; Enter stores what you typed"),
-    ("Space", "tick an answer (summary questions)"),
-    ("Ctrl+P", "command palette (go to a step, pick the run, stop...)"),
-    ("Ctrl+Q", "quit (the session is already saved)"),
-]
+KEYS: list[tuple[str, str]] = help_lines()
+"""F1's list of keys (:data:`minseg_tui.ui.keys.KEYMAP`)."""
 
 EVENT_TEXT: dict[str, str] = {
     "disconnected": "board disconnected — everything recorded is kept",
@@ -160,10 +141,7 @@ class LabApp(App[None]):
     TITLE = "minseg-tui"
     CSS_PATH = "lab.tcss"
     BINDINGS = [
-        Binding("f1", "help", "Help"),
-        Binding("f2", "stop_motor", "STOP", priority=True),
-        Binding("f8", "export", "Export"),
-        Binding("f10", "board_check", "Check board", show=False, priority=True),
+        *app_bindings(),
         # the F-keys are the app's before any widget's (priority): handled in the order typed,
         # so F4 has captured and moved the focus on before the reading typed after it arrives;
         # the arrows with Alt or Ctrl stay the entry's word moves

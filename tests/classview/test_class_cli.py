@@ -8,6 +8,7 @@ import io
 import json
 import os
 import re
+import shutil
 from pathlib import Path
 
 import pytest
@@ -90,7 +91,14 @@ def test_slips_and_far_values_are_said_in_words(klass, capsys):
     assert "omega_ss at 4.5 V = 74.30 rad/s looks like rpm" in flags and "7.781 rad/s" in flags
     assert "u_ss at 4.5 V = 4.600 V is above the requested 4.5 V" in flags
     assert "i_ss at 3.5 V = 350.0 mA is above 100 mA" in flags
-    assert re.search(r"R = 12\.00 Ω is far above the class \(median 5\.\d+ Ω", flags)
+    assert re.search(
+        r"R = 12\.00 Ω is far above the class: \d+ robust standard deviations from its "
+        r"median of 5\.\d+ Ω\.",
+        flags,
+    )
+    # each flag a sentence about the value: it names no group and ends as a sentence
+    for f in [*g["Rpm Man"]["flags"], *g["Amp Ere"]["flags"]]:
+        assert f.endswith(".") and "rpm-man" not in f and "Rpm" not in f, f
     amp = " / ".join(g["Amp Ere"]["flags"])
     assert "i_ss at 2.5 V = 0.02980 mA looks like amperes" in amp
     assert "f = " in amp and "far below the class" in amp  # f rests on that current
@@ -116,7 +124,7 @@ def test_a_dropped_decimal_point_in_R_is_named(tmp_path, capsys):
     assert code == 0
     assert g["Dot"]["flags"][0] == (
         "R = 53.00 Ω is outside the 3-6 Ω this motor reads (Task 2): it looks like 5.3 Ω "
-        "with its decimal point dropped"
+        "with its decimal point dropped."
     )
     assert "looks like 5.2 Ω with the meter on its kΩ range" in g["Kilo"]["flags"][0]
     assert doc["class"]["R"]["n"] == 4 and doc["class"]["k_v"]["n"] == 4
@@ -161,6 +169,15 @@ def test_out_writes_markdown_html_and_csv(klass, tmp_path, capsys):
     assert "@page { size: A4 landscape;" in page and "max-width: 48% !important" in page
     md = (out_dir / "class.md").read_text(encoding="utf-8")
     assert md.count("data:image/svg+xml;base64,") == 7 and "## What stands out" in md
+    # what stands out: one row per group, the group named once, its flags one per line
+    stands = md.split("## What stands out")[1].split("##")[0]
+    rpm = next(g for g in groups if g["members"] == ["Rpm", "Man"])
+    rows = [line for line in stands.splitlines() if line.startswith("| ")]
+    assert rows[0] == "| \\# | group | what stands out |"
+    assert sum(rpm["id"] in line for line in rows) == 1
+    assert len([g for g in groups if g["flags"]]) == len(rows) - 1
+    cell = next(line for line in page.split("<tr>") if rpm["id"] in line and "<br>" in line)
+    assert cell.count("<br>") == len(rpm["flags"])  # the id's line, then one per flag
     rows = list(csv.DictReader(io.StringIO((out_dir / "class.csv").read_text(encoding="utf-8"))))
     assert [r["id"] for r in rows] == [g["id"] for g in groups]
     for r, g in zip(rows, groups, strict=True):
@@ -287,3 +304,12 @@ def test_a_cache_that_cannot_be_written_changes_nothing(tmp_path, capsys, monkey
     monkeypatch.setenv("MINSEG_TUI_CACHE", str(blocker / "cache"))
     code, out, err = _run(capsys, "--sessions", str(root), "--json")
     assert code == 0 and err == "" and json.loads(out)["groups"][0]["members"] == ["A"]
+
+
+def test_a_copied_session_is_named_by_its_own_folder(tmp_path, capsys):
+    root = tmp_path / "s"
+    folder = group(root, ["Ada"], seed=1, run=False)
+    shutil.copytree(folder, root / "ada-copy")  # its file still says the first id
+    _, out, _ = _run(capsys, "--sessions", str(root), "--json")
+    ids = [g["id"] for g in json.loads(out)["groups"]]
+    assert sorted(ids) == sorted([folder.name, "ada-copy"])

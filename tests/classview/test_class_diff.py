@@ -3,8 +3,7 @@
 from __future__ import annotations
 
 from minseg_tui.lab.state.session import Session
-from minseg_tui.lab.views.classview import read_group
-from minseg_tui.report.class_content import own_cell
+from minseg_tui.lab.views.classview import own_cell, read_group
 
 from .build import group
 

@@ -3,16 +3,19 @@ rows, the highlighted group in full, Enter opening a group read-only, Escape bac
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
 from textual.widgets import DataTable, Static
 
+from minseg_tui.lab.saving.store import list_sessions
+from minseg_tui.lab.state.session import Session
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.start import StartScreen
 from tests.ui.conftest import quiet_app
-from tests.ui.helpers import settle
+from tests.ui.helpers import goto, settle, start_with_a_run
 
 from .build import group
 
@@ -97,3 +100,21 @@ def test_class_screen_snapshot(snap_compare, tmp_path, monkeypatch: pytest.Monke
         await settle(pilot)
 
     assert snap_compare(quiet_app(Path("sessions")), terminal_size=(80, 24), run_before=run_before)
+
+
+async def test_the_lab_keeps_what_its_screens_computed_for_the_class_view(tmp_path):
+    root = tmp_path / "sessions"
+    app = quiet_app(root)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")  # Tasks 11-15 computed for the step's view
+        await goto(pilot, "model_check")  # and the model check, in the screens' workers
+        assert "Likely cause:" in str(app.screen.query_one("#check-story").render())
+    folder = list_sessions(root)[0].path
+    kept = json.loads((Path(folder) / "session.json").read_text(encoding="utf-8"))["kept"]
+    assert kept["check"]["cause"] and kept["step"]["K"] > 0
+    with Session.open(Path(folder), readonly=True) as s:  # what the class view will take
+        got = s.kept()
+        res = s.results()
+        assert got is not None and got.check is not None and got.step is not None
+        assert res.step is not None and got.step.K == res.step.K
+        assert got.check.cause == s.model_check().result.finding.cause

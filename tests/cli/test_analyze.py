@@ -52,9 +52,11 @@ def test_human_report(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "Baseline (first order)" in out
     assert "Where it deviates" in out
-    assert "Cause: coulomb_friction" in out
+    # the headings name the cause and the model in words; the contract names stay in --json
+    assert "Cause: dry friction\n" in out
     assert "stands still" in out and "in finite time" in out
-    assert "Extended model (first_order+coulomb_friction)" in out
+    assert "Extended model (first order + dry friction): T = " in out
+    assert "coulomb_friction" not in out and "first_order" not in out
     assert "Gain:" in out
     assert "misread encoder count" in out
 

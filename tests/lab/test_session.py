@@ -303,10 +303,10 @@ def test_resume_is_exact(tmp_path):
     s.capture_omega(2.5, np.arange(100) * 0.025, 3.8 + 0.05 * rng.standard_normal(100))
     _record_steps(s)
     s.go_to("task12")
-    before = (s.folder / "session.json").read_bytes()
     entries, table, runs = s.entries, s.table(), s.runs
     res = s.results().to_json()
-    s.close()
+    s.close()  # which writes the results just computed (kept for the class view)
+    before = (s.folder / "session.json").read_bytes()
     s2 = Session.open(s.folder, clock=clock)
     assert (s.folder / "session.json").read_bytes() == before  # opening writes nothing
     assert s2.current_step == "task12" and s2.step.id == "task12"

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.errors import InputError
-from minseg_tui.model.identify import Reading, identify, steady_state, u_ss_at
+from minseg_tui.model.identify import U_SS_HOW, Reading, identify, steady_state, u_ss_at, u_ss_words
 from minseg_tui.model.identify.steady import table_of
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
@@ -303,3 +303,21 @@ def test_a_table_whose_median_k_v_is_not_positive_is_refused():
     rows = [Reading(2.5, 2.0, 3.0, 125.0, line=2), Reading(1.5, 1.0, 1.0, 375.0, line=3)]
     with pytest.raises(InputError, match="positive k_v"):
         identify(rows, 4.0, source="t.csv")
+
+
+def test_every_way_u_ss_is_found_is_said_in_words():
+    """Each provenance u_ss_at gives (and 'log', a log without u_req) has its words, and the
+    detail names the levels where it needs them."""
+    table = [(2.5, 2.1), (4.5, 4.0)]
+    found = {u_ss_at(table, lv)[1] for lv in (0.0, 2.5, 3.5, 6.0)} | {u_ss_at([], 3.5)[1]}
+    assert found | {"log"} == set(U_SS_HOW)
+    assert all(u_ss_words(how) != how for how in U_SS_HOW)
+    assert u_ss_words("extrapolated") == "extrapolated from the table"
+    assert u_ss_words("extrapolated", [4.5, 4.5]) == (
+        "extrapolated from the table: no table row at 4.5 V, the nearest row's driver drop"
+    )
+    assert u_ss_words("interpolated", [3.5, 2.5]) == (
+        "interpolated between the table's rows: no row at 2.5 V and 3.5 V"
+    )
+    assert u_ss_words("row", [4.5]) == "the table's row"
+    assert u_ss_words("log", []) == "the log's applied voltage: it has no u_req column"

@@ -16,7 +16,7 @@ from minseg_tui.cli import main
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams, record
-from minseg_tui.quantities import format_number, format_value
+from minseg_tui.quantities import format_interval, format_number, format_value
 from minseg_tui.report import content, markdown, svg
 from minseg_tui.report.write import write_report
 
@@ -256,12 +256,10 @@ def test_svg_ticks_and_thinning():
 
 
 def test_intervals_say_which_side_the_log_does_not_bound():
-    assert content._interval(0.04, 0.05, "s") == "0.04000 – 0.05000 s"
-    assert (
-        content._interval(0.11, math.inf, "V") == "0.1100 V or more: no upper bound from this log"
-    )
-    assert content._interval(-math.inf, 3.0, "s") == "up to 3.000 s: no lower bound from this log"
-    assert content._interval(-math.inf, math.inf, "s") == "not bounded by this log"
+    assert format_interval(0.04, 0.05, "s") == "0.04000 – 0.05000 s"
+    assert format_interval(0.11, math.inf, "V") == "0.1100 V or more: no upper bound from this log"
+    assert format_interval(-math.inf, 3.0, "s") == "up to 3.000 s: no lower bound from this log"
+    assert format_interval(-math.inf, math.inf, "s") == "not bounded by this log"
 
 
 def test_the_report_compares_the_groups_way_and_says_what_was_revealed(tmp_path):

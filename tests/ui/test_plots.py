@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from minseg_tui.ui.widgets.plots import Canvas, TracePlot, row_ticks, thin, tick_labels, ticks
+from minseg_tui.quantities import format_ticks as tick_labels
+from minseg_tui.ui.widgets.plots import Canvas, TracePlot, row_ticks, thin, ticks
 from tests.ui.helpers import goto, standing, start
 
 

@@ -41,7 +41,7 @@ from minseg_tui.device.samples import SampleBatch
 from minseg_tui.lab.saving.files import read_step_log, write_step_log
 from minseg_tui.lab.saving.schema import PARTIAL_HEADER
 from minseg_tui.lab.saving.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
-from minseg_tui.model.identify import u_ss_at
+from minseg_tui.model.identify import u_ss_at, u_ss_words
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
 from minseg_tui.units import COUNTS_PER_REV
@@ -161,13 +161,6 @@ class RunInfo:
 # -- the applied voltage -----------------------------------------------------------------------
 
 
-_HOW: dict[str, str] = {
-    "row": "the table's row",
-    "interpolated": "interpolated between rows",
-    "extrapolated": "extrapolated: no row at that level, the nearest row's drop",
-}
-
-
 def applied_voltage(
     u_req: np.ndarray, table: Sequence[tuple[float, float]]
 ) -> tuple[np.ndarray, str]:
@@ -190,7 +183,7 @@ def applied_voltage(
             continue
         v, how = u_ss_at(table, float(level))
         out[u == level] = v
-        said.append(f"{level:g} V -> {v:.4g} V ({_HOW.get(how, how)})")
+        said.append(f"{level:g} V -> {v:.4g} V ({u_ss_words(how, [float(level)])})")
     how = "u = u_A mapped from u_req through the table's u_ss" + (
         ": " + "; ".join(said) if said else ""
     )

@@ -258,6 +258,15 @@ class OneOf(Node):
         return None
 
 
+@dataclass(frozen=True)
+class Memo(Node):
+    """Anything: a part the program only keeps as a memo and reads itself, passing over
+    what it cannot read (:mod:`minseg_tui.lab.saving.kept`); never a reason to refuse a file."""
+
+    def check(self, value: object, where: str) -> str | None:
+        return None
+
+
 Rule = Callable[[Mapping[str, Any], str], str | None]
 
 
@@ -379,12 +388,16 @@ SESSION = Record(
     optional={
         "selected_run": OneOf((None, Text())),
         "revealed": ListOf(Text()),
+        "kept": Memo(),
         "board_checks": MapOf(BOARD_CHECK),
     },
 )
 """session.json, whole (``revealed``: fields of Tasks 11-15 shown before the group
-answered them; ``board_checks``: the newest result of each board check, by key of
-:data:`minseg_tui.lab.content.steps.BOARD_CHECKS`)."""
+answered them; ``kept``: the run's results as last computed, which
+:mod:`minseg_tui.lab.saving.kept` reads, and passes over when it cannot: a memo, never a
+reason to refuse the file; ``board_checks``: the newest result of each board check, by key
+of :data:`minseg_tui.lab.content.steps.BOARD_CHECKS`). Optional parts added since keep the
+schema at 1: a file without them reads as before, and an older program ignores them."""
 
 PARTIAL_HEADER = Record(
     required={},

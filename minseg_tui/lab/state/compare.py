@@ -21,14 +21,12 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.steps import Field
 from minseg_tui.lab.state.results import Comparison, Results
+from minseg_tui.model.identify import U_TASK15
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.quantities import format_number
 
 POLICY_FILE = "lab.toml"
 """The instructor's settings for every session in a sessions folder (beside the sessions)."""
-
-U_TASK15 = 5.0
-"""Task 15's held voltage u_A, V."""
 
 ANSWERED_FIRST: tuple[str, ...] = (
     "own.omega_step",
@@ -109,7 +107,7 @@ def compare_fields(
     or None; ``res``: the session's results; ``revealed``: fields shown before the group
     answered (said in the comparison)."""
     ident = res.identification
-    st = ident.step if ident is not None else None
+    st = res.step if ident is not None else None
     own_T = value("own.T")
     own_K = value("own.K")
     own_w = value("own.omega_step")
@@ -174,8 +172,8 @@ def compare_fields(
                         lsq, why = None, ""
                     if isinstance(own, str):
                         right, verdict = judge_model(own, T_m, K_m)
-            elif fld.key == "own.omega_5" and ident.omega_at_5V is not None:
-                lsq = ident.omega_at_5V
+            elif fld.key == "own.omega_5":
+                lsq = st.K * U_TASK15
                 if own_K is not None:
                     computed = own_K * U_TASK15
                     how = f"5 V × your K = {format_number(own_K)} rad/s/V"

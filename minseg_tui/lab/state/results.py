@@ -4,18 +4,23 @@ Nothing here is stored: :func:`compute` derives Tasks 6-15 with
 :func:`minseg_tui.model.identify.identify` from R, the table's complete rows and the run
 Tasks 11-15 use, and :func:`check_run` runs the model check on a recorded run. The
 dataclasses are what :class:`~minseg_tui.lab.state.session.Session` hands to the UI and the report.
+:func:`step_figures` and :func:`check_figures` take from them what the session file keeps
+(:mod:`minseg_tui.lab.saving.kept`); :func:`compute` given kept figures does not fit the run
+again.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.saving.kept import CheckFigures, StepFigures
 from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.identify import Identification, Reading, identify
+from minseg_tui.model.identify import U_TASK15, Identification, Reading, StepResult, identify
+from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import format_number
 
@@ -50,15 +55,46 @@ class TableRow:
 class Results:
     """Tasks 6-15 computed now from the entries: ``identification`` (None when the table is
     not far enough), the run used for Tasks 11-15 (None without one), and ``problems``:
-    one line each for what keeps a result from being computed."""
+    one line each for what keeps a result from being computed.
+
+    ``kept_step``: Tasks 11-13's numbers as the session file keeps them, when :func:`compute`
+    was given them instead of fitting the run (``identification.step`` is then None and its
+    observations are the table's only); :attr:`step` gives them either way."""
 
     identification: Identification | None
     run: str | None
     problems: tuple[str, ...] = ()
+    kept_step: StepFigures | None = None
+
+    @property
+    def step(self) -> StepFigures | None:
+        """Tasks 11-13's numbers (J included): of the identification's step, else the kept
+        ones; None without a step result."""
+        ident = self.identification
+        if ident is not None and ident.step is not None:
+            return step_figures(ident.step)
+        return self.kept_step
 
     def to_json(self) -> dict[str, object] | None:
-        """The --json dict of ``minseg-tui identify`` for these results, or None."""
-        return self.identification.to_json() if self.identification else None
+        """The --json dict of ``minseg-tui identify`` for these results, or None (with kept
+        numbers, their part of ``step``, ``model`` and ``omega_at_5V``)."""
+        if self.identification is None:
+            return None
+        out = self.identification.to_json()
+        k = self.kept_step
+        if k is not None and "step" not in out:
+            out["step"] = {
+                "K": k.K,
+                "T": k.T,
+                "T_63": k.T_63,
+                "J": k.J,
+                "omega_ss": k.omega_ss,
+                "u_ss": k.u_ss,
+                "dead_time": k.dead_time,
+            }
+            out["model"] = {"T": k.T, "K": k.K, "dead_time": k.dead_time}
+            out["omega_at_5V"] = k.K * U_TASK15
+        return out
 
     def lookup(self, path: str) -> float | str | None:
         """A computed value by path (``k_v``, ``step.K``, ``step.T_63``, ``omega_at_5V``,
@@ -114,18 +150,49 @@ class ModelCheck:
     problem: str = ""
 
 
+def step_figures(st: StepResult) -> StepFigures:
+    """What the session file keeps of a step result (and J)."""
+    return StepFigures(
+        K=st.K,
+        T=st.T,
+        T_63=st.T_63,
+        u_ss=st.u_ss,
+        omega_ss=st.omega_ss,
+        dead_time=st.dead_time,
+        J=st.J,
+    )
+
+
+def check_figures(mc: ModelCheck) -> CheckFigures:
+    """What the session file keeps of a model check: its cause and figures, or its problem."""
+    r = mc.result
+    if r is None:
+        return CheckFigures("", problem=mc.problem)
+    return CheckFigures(
+        cause=r.finding.cause,
+        model=r.extended.model,
+        others=tuple(o.cause for o in r.finding.others),
+        params={k: float(v) for k, v in r.extended.params.items()},
+        gain={k: None if v is None else float(v) for k, v in r.gain.items()},
+    )
+
+
 def compute(
     R: float | None,
     complete_rows: Sequence[Reading],
     run: RunInfo | None,
     folder: Path,
     u_ss_table: Sequence[tuple[float, float]] | None = None,
+    kept: StepFigures | None = None,
 ) -> Results:
     """Tasks 6-15 from R (ohm), the table's complete rows and the run Tasks 11-15 use (its
     log read from ``folder``); every reason a result is missing becomes a problem line.
 
     ``u_ss_table``: the (u_req, u_ss) pairs (V) of every row with a u_ss, complete or not,
-    the mapping K divides by (default: the complete rows'), as the run's u column uses it."""
+    the mapping K divides by (default: the complete rows'), as the run's u column uses it.
+    ``kept``: Tasks 11-13's numbers of ``run`` as the session file keeps them (computed
+    from this very log and table, :func:`minseg_tui.lab.saving.kept.read`): the run is then
+    neither read nor fitted again, J follows from them and the table (``kept_step``)."""
     problems: list[str] = []
     if R is None:
         problems.append("R is not entered yet (Task 2)")
@@ -139,21 +206,22 @@ def compute(
     if not readings:
         problems.append("no complete row in the table yet (u_ss, omega_ss and i_ss; Tasks 4-5)")
     log: StepLog | None = None
-    if run is not None:
+    if run is not None and kept is None:
         try:
             table = [(r.u_req, r.u_ss) for r in complete_rows] if u_ss_table is None else u_ss_table
             log = read_run(folder, run, table, require_step=True)
         except InputError as exc:
             problems.append(f"run {run.name} cannot be used: {exc}")
+    read = run is not None and (log is not None or kept is not None)
     if R is None or not readings:
-        return Results(None, run.name if run and log else None, tuple(problems))
+        return Results(None, run.name if run and read else None, tuple(problems))
     try:
         ident = identify(readings, R, log, source="table", u_ss_table=u_ss_table)
     except (InputError, ArithmeticError, ValueError) as exc:
         # ArithmeticError, ValueError (numpy's LinAlgError): a log the fit cannot take; the
         # table's results stand, and the step says why it has none (never a traceback)
         why = str(exc) if isinstance(exc, InputError) else f"its steps cannot be fitted ({exc})"
-        if log is None:
+        if not read:
             return Results(None, None, (*problems, why))
         problems.append(f"run {run.name if run else ''} gives no step result: {why}")
         try:
@@ -161,7 +229,11 @@ def compute(
         except InputError as exc2:
             return Results(None, None, (*problems, str(exc2)))
         return Results(ident, None, tuple(problems))
-    return Results(ident, run.name if (run and log is not None) else None, tuple(problems))
+    with_J = None
+    if kept is not None:
+        J = inertia_from_time_constant(kept.T, ident.R, ident.f, ident.k_v, ident.k_a)
+        with_J = replace(kept, J=J)
+    return Results(ident, run.name if (run and read) else None, tuple(problems), with_J)
 
 
 def check_run(
@@ -189,6 +261,8 @@ __all__ = [
     "Notice",
     "Results",
     "TableRow",
+    "check_figures",
     "check_run",
     "compute",
+    "step_figures",
 ]

@@ -38,6 +38,7 @@ from __future__ import annotations
 import contextlib
 import json
 import re
+import threading
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from datetime import UTC, datetime
@@ -52,6 +53,8 @@ from minseg_tui.lab.content import answers
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.expr import Formula
 from minseg_tui.lab.content.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
+from minseg_tui.lab.saving import kept as kept_results
+from minseg_tui.lab.saving.kept import Kept, StepFigures
 from minseg_tui.lab.saving.runs import (
     FLUSH_INTERVAL,
     PARTIAL_SUFFIX,
@@ -92,8 +95,10 @@ from minseg_tui.lab.state.results import (
     Notice,
     Results,
     TableRow,
+    check_figures,
     check_run,
     compute,
+    step_figures,
 )
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
@@ -119,6 +124,13 @@ class _Cache:
     def __init__(self) -> None:
         self.results: tuple[object, Results] | None = None
         self.checks: dict[tuple[int, str], ModelCheck] = {}
+        self.kept: tuple[tuple[int, str], Kept] | None = None
+        """What the session file is to keep of the run in use, stamped with the run version
+        and the run's name it was computed at (:meth:`Session.save` writes it while they
+        still hold)."""
+        self.kept_lock = threading.Lock()
+        """Held while a part is merged into :attr:`kept` (the results and the model check
+        may be computed by two workers at once: neither part is lost)."""
 
 
 class SessionFrozen(RuntimeError):
@@ -282,6 +294,9 @@ class Session:
         if self._lock is not None:
             if self.unsaved:
                 self.save()
+            elif self._take_kept():  # results computed since the last save: a memo, so
+                with contextlib.suppress(OSError):  # its time stays that of the last change
+                    self._write_file()
             self._lock.release()
             self._lock = None
 
@@ -353,11 +368,9 @@ class Session:
         self._data["captures"] = {k: c.to_json() for k, c in self._captures.items()}
         self._data["runs"] = [r.to_json() for r in self._runs]
         self._data["modified"] = self._clock().isoformat(timespec="seconds")
+        self._take_kept()
         try:
-            atomic_write_text(
-                self.folder / SESSION_FILE,
-                json.dumps(self._data, indent=1, ensure_ascii=False) + "\n",
-            )
+            self._write_file()
         except OSError as exc:
             self._unsaved = True
             self._failed(exc)
@@ -366,6 +379,57 @@ class Session:
         if ok:
             self._problem = None
         return ok
+
+    def _write_file(self) -> None:
+        """session.json from ``_data``, atomically (OSError when it cannot be written)."""
+        atomic_write_text(
+            self.folder / SESSION_FILE,
+            json.dumps(self._data, indent=1, ensure_ascii=False) + "\n",
+        )
+
+    def _take_kept(self) -> bool:
+        """Put into ``_data`` what the session computed of the run in use and the file does
+        not keep yet (merged with the file's record of the same key); True when it did."""
+        got = self._cache.kept
+        run = self.step_run()
+        if got is None or run is None or got[0] != (self._run_version, run.name):
+            return False
+        old = kept_results.from_json(self._data.get("kept"))
+        new = got[1] if old is None else old.merged(got[1])
+        as_json = new.to_json()
+        if self._data.get("kept") == as_json:
+            return False
+        self._data["kept"] = as_json
+        return True
+
+    def _note_kept(
+        self,
+        run: RunInfo,
+        table: Sequence[tuple[float, float]],
+        step: StepFigures | None = None,
+        check: ModelCheck | None = None,
+    ) -> None:
+        """Note what the session file is to keep of ``run`` (the run in use, read through
+        ``table``): Tasks 11-13's numbers or the model check in brief. Shared with the
+        session's snapshots, written by its next save (or its close); a read-only session
+        notes nothing (it never writes)."""
+        if self.readonly or run != self.step_run():
+            return
+        key = kept_results.run_key(self.folder, run, table)
+        if key is None:
+            return
+        new = Kept(run.name, key, step, None if check is None else check_figures(check))
+        stamp = (self._run_version, run.name)
+        with self._cache.kept_lock:
+            got = self._cache.kept
+            self._cache.kept = (stamp, got[1].merged(new) if got and got[0] == stamp else new)
+
+    def kept(self) -> Kept | None:
+        """What the session file keeps of the run in use (its model check in brief and Tasks
+        11-13's numbers), when it was computed from this very run and table; else None."""
+        return kept_results.read(
+            self._data.get("kept"), self.folder, self.step_run(), self.table_pairs()
+        )
 
     def _failed(self, exc: OSError) -> None:
         old = self._problem
@@ -671,10 +735,24 @@ class Session:
 
     # -- results -------------------------------------------------------------------------------
 
-    def results(self) -> Results:
+    def results(self, kept: StepFigures | None = None) -> Results:
         """Tasks 6-15 from the current entries and the chosen run (cached until R, a table
-        value or the run changes)."""
+        value or the run changes); the run's numbers of Tasks 11-13 are noted for the
+        session file to keep (:meth:`kept`).
+
+        ``kept``: those numbers as the file keeps them (``self.kept().step``): the run is
+        then not fitted again (for the class view; ``identification.step`` is None, the
+        numbers are in :attr:`Results.step`; not cached)."""
         run = self.step_run()
+        if kept is not None:
+            return compute(
+                self.value("R"),
+                self.readings(),
+                run,
+                self.folder,
+                self.table_pairs(),
+                kept=kept,
+            )
         key = (
             self.value("R"),
             tuple(self.readings()),
@@ -687,6 +765,9 @@ class Session:
             return cached[1]
         res = self._compute()
         self._cache.results = (key, res)
+        ident = res.identification
+        if run is not None and ident is not None and ident.step is not None:
+            self._note_kept(run, self.table_pairs(), step=step_figures(ident.step))
         return res
 
     def _compute(self) -> Results:
@@ -713,8 +794,10 @@ class Session:
         cached = self._cache.checks.get(key)
         if cached is not None:
             return cached
-        result = check_run(self.folder, run, self.table_pairs())
+        table = self.table_pairs()
+        result = check_run(self.folder, run, table)
         self._cache.checks = {key: result}
+        self._note_kept(run, table, check=result)
         return result
 
     def warnings(self, step_id: str | None = None) -> list[Notice]:
@@ -733,16 +816,20 @@ class Session:
                 out += [Notice(f.code, f.message) for f in res.identification.observations]
         return out
 
-    def comparisons(self, step_id: str | None = None) -> list[Comparison]:
+    def comparisons(
+        self, step_id: str | None = None, results: Results | None = None
+    ) -> list[Comparison]:
         """Each of the group's own readings (fields with ``compare``) beside the value
-        computed the group's way and the least-squares one (:func:`lab.compare.compare_fields`)."""
+        computed the group's way and the least-squares one (:func:`lab.compare.compare_fields`);
+        ``results``: those to compare with (default: :meth:`results`)."""
         fields = lab_steps.step(step_id).fields if step_id else [f for s in STEPS for f in s.fields]
 
         def text(key: str) -> str | None:
             e = self._entries.get(key)
             return e.text if e and e.text.strip() else None
 
-        return compare_fields(fields, self.value, text, self.results(), self.revealed())
+        res = self.results() if results is None else results
+        return compare_fields(fields, self.value, text, res, self.revealed())
 
     def answered(self) -> set[str]:
         """The keys of the fields the group has answered (an accepted, non-empty entry)."""

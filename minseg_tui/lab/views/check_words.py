@@ -107,6 +107,24 @@ class Moment:
     still: bool = False
 
 
+FIGURES: dict[str, tuple[str, str]] = {
+    "angle_rms": ("rms error of the angle", "rad"),
+    "heldout_rmse": ("speed error on held-out steps", "rad/s"),
+    "above_noise": ("speed error above the measured noise", "rad/s"),
+    "above_floor": ("speed error above the encoder's noise floor", "rad/s"),
+    "rmse": ("rms error of the speed", "rad/s"),
+}
+"""The model check's gain figures (``gain`` keys without their baseline_/extended_ prefix,
+:func:`stem`): what the screens and the report call them and their unit, the most telling
+first."""
+
+
+def figure_name(key: str) -> tuple[str, str]:
+    """The name and unit of gain figure ``key`` (either model's key, or its :func:`stem`)."""
+    s = stem(key)
+    return FIGURES.get(s, (s, ""))
+
+
 def stem(key: str) -> str:
     """A gain figure's key without its model: 'heldout_extended_rmse' -> 'heldout_rmse',
     'baseline_angle_rms' -> 'angle_rms'."""

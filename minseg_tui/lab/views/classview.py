@@ -1,13 +1,16 @@
 """The class at a glance: one row per group of a sessions folder, and what stands out.
 
-:func:`build` opens every session under a folder read-only (:meth:`Session.open` with
+:func:`read_group` opens a session read-only (:meth:`Session.open` with
 ``readonly=True``: no lock taken, nothing written) and takes its numbers from the session
 itself: :meth:`Session.results` (Tasks 6-15, the same numbers ``minseg-tui report``
 writes), :meth:`Session.model_check` and :meth:`Session.comparisons`; only K, T and the
 63 % reading of a session whose table lacks an i_ss (or R) are taken from its step run
-here (:func:`~minseg_tui.model.identify.step_alone`), since they need neither. Nothing here
-computes a motor parameter a second time; it only sets the groups side by side and says,
-in words, what stands out:
+here (:func:`~minseg_tui.model.identify.step_alone`), since they need neither. The model
+check's cause and Tasks 11-13's numbers come from what the session file keeps of its run
+(:meth:`Session.kept`, written by the lab when it computed them) whenever that was computed
+from this very run and table: the run is then neither checked nor fitted again, which is
+most of the cost of a row. Nothing here computes a motor parameter a second time; it only
+sets the groups side by side and says, in words, what stands out:
 
 - the slips the lab manual warns about (:func:`slips`): i_ss above 100 mA (or a current
   typed in amperes into the mA column), R outside 3-6 Ω, an omega_ss that looks like rpm,
@@ -31,12 +34,15 @@ from pathlib import Path
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.steps import LEVELS
+from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import read_run
 from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_key
+from minseg_tui.lab.state.compare import format_diff
+from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import step_alone
-from minseg_tui.quantities import RPM, format_number
+from minseg_tui.quantities import RPM, format_number, format_reading
 
 
 @dataclass(frozen=True)
@@ -254,6 +260,21 @@ def _num(v: float) -> str:
     return format_number(v)
 
 
+def members(g: Group) -> str:
+    """The group's names, or why there are none."""
+    return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
+
+
+def own_cell(g: Group) -> str:
+    """The group's own values against the computed ones, in one cell: "T +12 %"."""
+    parts = [
+        f"{o.key.removeprefix('own.')} {format_diff(o.rel_diff)}"
+        for o in g.own
+        if o.rel_diff is not None
+    ]
+    return ", ".join(parts) or "–"
+
+
 def _unit(key: str) -> str:
     return next(q.unit for q in QUANTITIES if q.key == key)
 
@@ -270,11 +291,12 @@ def _resistance_slip(R: float) -> Slip:
         (1e3, "the meter on its kΩ range, read as Ω"),
     ):
         if lo <= R * factor <= hi:
-            text = f"{head}: it looks like {R * factor:.4g} Ω with {why}"
+            text = f"{head}: it looks like {format_reading(R * factor, 'Ω')} with {why}."
             break
     else:
         text = (
-            f"{head}: a meter on the wrong range, a loose motor cable or the current jumper missing"
+            f"{head}: a meter on the wrong range, a loose motor cable or the current jumper "
+            "missing."
         )
     return Slip(text, ("R", *FROM_TABLE))
 
@@ -283,7 +305,11 @@ def slip_list(session: Session) -> list[Slip]:
     """The slips the lab manual warns about in ``session``'s readings, each with the
     quantities that rest on the slipped reading; a refused entry is said too (it feeds
     nothing)."""
-    out = [Slip(f"refused: {e.message}") for e in session.entries.values() if not e.ok]
+    out = [
+        Slip(f"{e.message}; refused, so nothing is computed from it.")
+        for e in session.entries.values()
+        if not e.ok
+    ]
     R = session.value("R")
     if R is not None and not R_RANGE[0] <= R <= R_RANGE[1]:
         out.append(_resistance_slip(R))
@@ -294,7 +320,7 @@ def slip_list(session: Session) -> list[Slip]:
                 Slip(
                     f"i_ss at {lv:g} V = {_num(i * 1e3)} mA is above 100 mA: the manual says "
                     "the wrong thing is measured or the meter is in the wrong mode (expect "
-                    "20-50 mA)",
+                    "20-50 mA).",
                     FROM_TABLE,
                 )
             )
@@ -302,7 +328,7 @@ def slip_list(session: Session) -> list[Slip]:
             out.append(
                 Slip(
                     f"i_ss at {lv:g} V = {_num(i * 1e3)} mA looks like amperes typed into the "
-                    f"mA column ({_num(i * 1e6)} mA?): k_v and f follow from it",
+                    f"mA column ({_num(i * 1e6)} mA?), and k_v and f follow from it.",
                     FROM_TABLE,
                 )
             )
@@ -311,7 +337,7 @@ def slip_list(session: Session) -> list[Slip]:
             out.append(
                 Slip(
                     f"omega_ss at {lv:g} V = {_num(w)} rad/s looks like rpm: this motor does "
-                    f"not turn that fast; read as rpm it is {_num(w * RPM)} rad/s",
+                    f"not turn that fast; read as rpm it is {_num(w * RPM)} rad/s.",
                     FROM_TABLE,
                 )
             )
@@ -320,7 +346,7 @@ def slip_list(session: Session) -> list[Slip]:
             out.append(
                 Slip(
                     f"u_ss at {lv:g} V = {_num(u)} V is above the requested {lv:g} V: the "
-                    "driver only loses voltage, so the meter or the request was wrong",
+                    "driver only loses voltage, so the meter or the request was wrong.",
                     (*FROM_TABLE, "K"),  # K divides by the table's u_ss
                 )
             )
@@ -332,10 +358,11 @@ def slips(session: Session) -> list[str]:
     return [s.text for s in slip_list(session)]
 
 
-def _values(session: Session) -> tuple[dict[str, float | None], tuple[str, ...]]:
-    res = session.results()
+def _values(
+    session: Session, res: Results, kept: Kept | None
+) -> tuple[dict[str, float | None], tuple[str, ...]]:
     ident = res.identification
-    st = ident.step if ident is not None else None
+    st = res.step if ident is not None else None
     values: dict[str, float | None] = {
         "R": session.value("R"),
         "k_v": ident.k_v if ident else None,
@@ -349,6 +376,8 @@ def _values(session: Session) -> tuple[dict[str, float | None], tuple[str, ...]]
     lacks = list(res.problems)
     if not session.runs:
         lacks.append("no step run recorded yet (Task 10)")
+    elif ident is None and kept is not None and kept.step is not None:
+        values.update({"K": kept.step.K, "T_63": kept.step.T_63, "T": kept.step.T})
     elif ident is None:
         values.update(_step_alone(session))
     return values, tuple(dict.fromkeys(lacks))
@@ -375,36 +404,67 @@ def read_group(folder: Path) -> Group:
     try:
         session = Session.open(folder, readonly=True)
     except InputError as exc:
-        return Group(
-            folder.name,
-            folder,
-            lacks=(f"cannot be read: {exc}",),
-            damaged=str(exc),
-            readable=False,
-        )
+        return _unreadable(folder, exc)
+    return _row(folder, session)
+
+
+def read_kept(folder: Path) -> Group | None:
+    """The row of the session in ``folder`` as :func:`read_group` gives it, when it costs
+    no fit and no model check: the session has no step run, or its file keeps both for the
+    run as it is now (:meth:`Session.kept`); None otherwise (or when it cannot be read)."""
+    try:
+        session = Session.open(folder, readonly=True)
+    except InputError:
+        return None
+    if session.step_run() is not None:
+        kept = session.kept()
+        if kept is None or kept.step is None or kept.check is None:
+            return None
+    return _row(folder, session)
+
+
+def _unreadable(folder: Path, exc: InputError) -> Group:
+    return Group(
+        folder.name,
+        folder,
+        lacks=(f"cannot be read: {exc}",),
+        damaged=str(exc),
+        readable=False,
+    )
+
+
+def _row(folder: Path, session: Session) -> Group:
     cause, code = "", ""
     values: dict[str, float | None] = {"R": session.value("R")}
+    own: tuple[Own, ...] = ()
     try:
-        values, lacks = _values(session)
-        mc = session.model_check()
-        if mc.result is not None:
-            code = mc.result.finding.cause
+        kept = session.kept()
+        res = session.results(kept.step if kept is not None else None)
+        values, lacks = _values(session, res, kept)
+        check = kept.check if kept is not None else None
+        if check is None:
+            mc = session.model_check()
+            code = mc.result.finding.cause if mc.result is not None else ""
+            problem = mc.problem if mc.run is not None else ""
+        else:
+            code, problem = check.cause, check.problem
+        if code:
             cause = in_words(code)
-        elif mc.run is not None:
-            lacks = (*lacks, f"model check: {mc.problem}")
+        elif problem:
+            lacks = (*lacks, f"model check: {problem}")
+        own = tuple(
+            Own(c.key, c.label, c.unit, c.own, c.computed, c.rel_diff)
+            for c in session.comparisons(results=res)
+            if c.own is not None
+        )
     except (InputError, ValueError, ArithmeticError, KeyError) as exc:
         # one session's trouble never hides the others: the row says what went wrong
         lacks = (f"its numbers cannot be computed: {exc}",)
     if session.damaged:
         lacks = (f"damaged: {session.damaged}", *lacks)
     found = slip_list(session)
-    own = tuple(
-        Own(c.key, c.label, c.unit, c.own, c.computed, c.rel_diff)
-        for c in session.comparisons()
-        if c.own is not None
-    )
     return Group(
-        id=session.id or folder.name,
+        id=folder.name,
         folder=folder,
         members=tuple(session.members),
         date=session.date,
@@ -447,8 +507,8 @@ def outlier(s: Spread, value: float) -> str | None:
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {_num(value)} {unit} is far {side} the class (median {_num(s.median)} "
-        f"{unit}, {times:.0f} robust standard deviations away; beyond {THRESHOLD:g} stands out)"
+        f"{s.key} = {_num(value)} {unit} is far {side} the class: {times:.0f} robust standard "
+        f"deviations from its median of {_num(s.median)} {unit}."
     )
 
 
@@ -527,8 +587,11 @@ __all__ = [
     "Slip",
     "Spread",
     "judge",
+    "members",
     "outlier",
+    "own_cell",
     "read_group",
+    "read_kept",
     "session_folders",
     "slip_list",
     "slips",

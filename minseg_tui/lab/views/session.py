@@ -24,6 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import STEP_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
@@ -37,10 +38,12 @@ from minseg_tui.model.identify.steps import E63
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import (
     DIGITS,
+    NOT_DETERMINED,
     UNITS,
     format_interval,
     format_number,
     format_quantity,
+    format_spread,
     format_value,
 )
 
@@ -57,8 +60,13 @@ samples: quiet enough to judge steadiness, and without the manual's 0.5 s lag.""
 CAPTURE_WINDOW: float = lab_capture.DEFAULT_WINDOW
 """The window the indicator judges and a capture averages over, s."""
 
-TABLE_COLUMNS = ("u\nV", "u_ss\nV", "omega_ss\nrad/s", "i_ss\nmA", "k_v\nV s/rad", "f\nmN m s/rad")
-"""The table's headers: name over unit (the cells hold bare numbers in these units)."""
+TABLE_HEADERS: tuple[str, ...] = (
+    *(f"{'u' if name == 'u_req' else name}\n{unit}" for name, unit in TABLE_COLUMNS.items()),
+    "k_v\nV s/rad",
+    "f\nmN m s/rad",
+)
+"""The table's headers: name over unit (the cells hold bare numbers in these units), the
+readings' units those of the table's file (:data:`~minseg_tui.lab.saving.files.TABLE_COLUMNS`)."""
 
 _FORMULAS = dict(step("table").formulas)
 
@@ -82,11 +90,11 @@ def _num(v: float | None, digits: int = DIGITS) -> str:
 
 
 def _ci(ci: tuple[float, float], unit: str) -> str:
-    """ ", 95 % CI lo..hi unit" for a finite interval; '' when it is not known."""
+    """ ", 95 % interval lo – hi unit" for a finite interval; '' when it is not known."""
     lo, hi = ci
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return ""
-    return f", 95 % CI {format_interval(lo, hi, unit, sep='..')}"
+    return f", 95 % interval {format_interval(lo, hi, unit)}"
 
 
 # -- Task 4: the live stream ------------------------------------------------------------------
@@ -299,7 +307,7 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
 
 
 def _table_row(r: TableRow, R: float | None, k_a: float | None) -> tuple[Cell, ...]:
-    spread = "" if r.spread is None else f" ±{r.spread:.2f}"
+    spread = "" if r.spread is None else f" {format_spread(r.spread)}"
     omega_how = (
         "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
         if r.spread is not None
@@ -337,7 +345,7 @@ def table(session: Session) -> TableView:
         )
     warnings = tuple(n.message for n in session.warnings("table")) + tuple(res.problems)
     return TableView(
-        TABLE_COLUMNS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
+        TABLE_HEADERS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
     )
 
 
@@ -480,7 +488,7 @@ ZOOM_MIN_SAMPLES: int = 3
 
 
 @dataclass(frozen=True)
-class StepWindow:
+class RiseZoom:
     """One rising step of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
     the speed before (``omega0``) and settled (``omega_ss``, rad/s), its 63 % reading
     ``T_63`` (s or None); the zoom to its rise from ``z0`` to ``z1`` (s: a little before the
@@ -506,7 +514,7 @@ class StepWindow:
         return None if self.T_63 is None else self.t0 + self.T_63
 
 
-def step_window(step_: model_identify.RisingStep, T: float | None, ts: float) -> StepWindow:
+def rise_zoom(step_: model_identify.RisingStep, T: float | None, ts: float) -> RiseZoom:
     """The window of one rising step, zoomed to its rise with time constant ``T`` (s; the
     step's own 63 % reading when None) at sample period ``ts`` (s)."""
     T_ref = T if T is not None and T > 0 else step_.T_63
@@ -515,7 +523,7 @@ def step_window(step_: model_identify.RisingStep, T: float | None, ts: float) ->
     t1 = step_.t + step_.duration
     z0 = step_.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
     z1 = min(step_.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
-    return StepWindow(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
+    return RiseZoom(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
 
 
 @dataclass(frozen=True)
@@ -528,7 +536,7 @@ class ResultsView:
     t: FloatArray
     omega: FloatArray
     u: FloatArray
-    steps: tuple[StepWindow, ...]
+    steps: tuple[RiseZoom, ...]
     lines: tuple[str, ...]
     compare: tuple[tuple[str, str, str], ...] = ()
     problems: tuple[str, ...] = ()
@@ -550,7 +558,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             log = None
     ident = res.identification
     lines: list[str] = []
-    steps: tuple[StepWindow, ...] = ()
+    steps: tuple[RiseZoom, ...] = ()
     if ident is not None and ident.step is not None:
         st = ident.step
         conceal = hidden(session)
@@ -570,18 +578,18 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "omega_ss in the steps",
                 "Task 11",
             )
-            + f"   u_ss = {_fmt(st.u_ss, 'V', 3)} ({st.u_ss_how})",
+            + f"   u_ss = {_fmt(st.u_ss, 'V', 3)} ({model_identify.u_ss_words(st.u_ss_how)})",
             shown(
                 "own.K",
                 f"K = {_fmt(st.K, 'rad/s/V')}"
-                f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else ', 95 % CI not determined by this log'}",
+                f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "K",
                 "Task 11",
             ),
             shown(
                 "own.T",
                 f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
-                f"{_ci(st.T_ci, 's') if st.T_determined else ', 95 % CI not determined by this log'}",
+                f"{_ci(st.T_ci, 's') if st.T_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "T",
                 "Task 12",
             ),
@@ -596,7 +604,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
         ]
         ts = log.ts if log is not None else 0.0
-        steps = tuple(step_window(s, st.T, ts) for s in st.steps)
+        steps = tuple(rise_zoom(s, st.T, ts) for s in st.steps)
     problems = list(res.problems)
     rule = policy(session)
     if rule.problem:
@@ -621,17 +629,6 @@ def results(session: Session, step_id: str) -> ResultsView:
 
 
 # -- the model check ---------------------------------------------------------------------------
-FIGURES: dict[str, tuple[str, str]] = {
-    "angle_rms": ("angle error", "rad"),
-    "heldout_rmse": ("error on held-out steps", "rad/s"),
-    "above_noise": ("speed error above the noise", "rad/s"),
-    "above_floor": ("speed error above the encoder's floor", "rad/s"),
-    "rmse": ("rms speed error", "rad/s"),
-}
-"""The model check's gain figures (``gain`` keys without their baseline_/extended_ prefix):
-what they are called here and their unit."""
-
-
 @dataclass(frozen=True)
 class CheckView:
     """The model check of one run: measured, baseline and extended speeds (rad/s) at t (s),
@@ -679,7 +676,7 @@ def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | No
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
     b, e = check_words.figure(gain, key)
-    unit = FIGURES.get(stem, (stem, ""))[1]
+    unit = check_words.figure_name(stem)[1]
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
     if not named or e is None:
@@ -712,11 +709,11 @@ def check(session: Session) -> CheckView:
     if r.lead is not None:
         shown = _figure(g, r.lead.figure, named)
         if shown is not None:
-            lead = f"{FIGURES.get(led, (led, ''))[0]}: {shown}"
+            lead = f"{check_words.figure_name(led)[0]}: {shown}"
             lead_why = r.lead.why
     others = [
-        f"{FIGURES[stem][0]} {shown}"
-        for stem in FIGURES
+        f"{check_words.FIGURES[stem][0]} {shown}"
+        for stem in check_words.FIGURES
         if stem != led and (shown := _figure(g, stem, named)) is not None
     ]
     floor = g.get("noise_floor")

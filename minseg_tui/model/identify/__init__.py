@@ -31,7 +31,15 @@ from minseg_tui.model.identify.observations import (
     step_observations,
     table_observations,
 )
-from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at, steady_state, u_ss_at
+from minseg_tui.model.identify.steady import (
+    U_SS_HOW,
+    Reading,
+    Row,
+    omega_ss_at,
+    steady_state,
+    u_ss_at,
+    u_ss_words,
+)
 from minseg_tui.model.identify.stepfit import (
     RISING_STEPS,
     WHOLE_LOG,
@@ -68,4 +76,6 @@ __all__ = [
     "step_windows",
     "table_observations",
     "u_ss_at",
+    "u_ss_words",
+    "U_SS_HOW",
 ]

@@ -24,7 +24,15 @@ from minseg_tui.model.identify.observations import (
     step_observations,
     table_observations,
 )
-from minseg_tui.model.identify.steady import Reading, Row, steady_state, table_of, u_ss_at
+from minseg_tui.model.identify.steady import (
+    U_SS_HOW,
+    Reading,
+    Row,
+    steady_state,
+    table_of,
+    u_ss_at,
+    u_ss_words,
+)
 from minseg_tui.model.identify.stepfit import (
     RisingStep,
     TimeConstantFit,
@@ -184,16 +192,8 @@ class Identification:
         return out
 
 
-_HOW = {
-    "off": "the driver is off at 0 V",
-    "extrapolated": "below the driver's drop in the table",
-    "requested": "as requested",
-    "interpolated": "interpolated in the table",
-    "row": "the table's row",
-    "log": "the log's u",
-}
-"""How u_ss of a step was found (:func:`~.steady.u_ss_at`), in words of a step at 0 V;
-least direct first."""
+_AT_ZERO = "below the driver's drop in the table"
+"""Why an extrapolated u_ss is 0 V: the step's level is below the nearest row's drop."""
 
 
 def _step_result(
@@ -250,12 +250,13 @@ def _step_result(
             hows.append(how)
     for s, u, how_u in zip(steps, u_used, hows, strict=True):
         if u == 0:  # K = omega_ss / u_ss has no value
+            why = _AT_ZERO if how_u == "extrapolated" else u_ss_words(how_u)
             at = "" if s.u_req is None else f"u_req = {s.u_req:g} V, "
             raise InputError(
                 log.source,
                 s.line,
                 f"expected each rising step to put a voltage on the motor; the step at "
-                f"t = {s.t:.4g} s ends at {at}0 V on the motor ({_HOW[how_u]}), so K = "
+                f"t = {s.t:.4g} s ends at {at}0 V on the motor ({why}), so K = "
                 "omega_ss / u_ss cannot be computed: record steps that end above the driver's "
                 "drop (steps that only go negative end at 0 V)",
             )
@@ -267,7 +268,7 @@ def _step_result(
     # the least direct of the two when the median is the mean of two found differently
     order = sorted(range(len(u_used)), key=lambda k: u_used[k])
     middle = {hows[order[len(order) // 2]], hows[order[(len(order) - 1) // 2]]}
-    how = next(h for h in (*_HOW, *middle) if h in middle)
+    how = next(h for h in (*U_SS_HOW, *middle) if h in middle)
     T = fit.T
     reads = [s.T_63 for s in steps if s.T_63 is not None]
     T_63 = float(np.median(reads)) if reads else None

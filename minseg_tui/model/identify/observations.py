@@ -11,7 +11,13 @@ import numpy as np
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.identify.stepfit import RisingStep, TimeConstantFit
 from minseg_tui.model.steplog import StepLog
-from minseg_tui.quantities import RPM, format_number
+from minseg_tui.quantities import (
+    RPM,
+    format_number,
+    format_percent,
+    format_reading,
+    format_signed,
+)
 
 KV_OUTLIER: float = 0.15
 """A row's k_v this far (relative) from the median is called a bad reading."""
@@ -65,14 +71,14 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
             out.append(
                 Observation(
                     "omega_ss_units",
-                    f"{_row_name(i, r)}: omega_ss = {r.omega_ss:g} is {r.omega_ss / r.u_ss:.3g} per volt, more than this motor turns; it looks like rpm, the table wants rad/s ({r.omega_ss * RPM:.4g} rad/s?).",
+                    f"{_row_name(i, r)}: omega_ss = {r.omega_ss:g} is {format_number(r.omega_ss / r.u_ss, 3)} per volt, more than this motor turns; it looks like rpm, the table wants rad/s ({format_reading(r.omega_ss * RPM, 'rad/s')}?).",
                 )
             )
         if row.k_v <= 0:
             out.append(
                 Observation(
                     "k_v_nonpositive",
-                    f"{_row_name(i, r)}: R i_ss = {R * r.i_ss * 1e-3:.3g} V is not below u_ss = {r.u_ss:g} V, so k_v comes out {row.k_v:.3g}; check R and i_ss.",
+                    f"{_row_name(i, r)}: R i_ss = {format_number(R * r.i_ss * 1e-3, 3)} V is not below u_ss = {r.u_ss:g} V, so k_v comes out {format_number(row.k_v, 3)}; check R and i_ss.",
                 )
             )
     if len(rows) >= 3:
@@ -83,8 +89,8 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
                     Observation(
                         "k_v_outlier",
                         (
-                            f"{_row_name(i, row.reading)}: k_v = {row.k_v:.4g} V s/rad is {abs(dev) * 100:.0f} % "
-                            f"{'above' if dev > 0 else 'below'} the median {k_v:.4g}: probably a bad reading "
+                            f"{_row_name(i, row.reading)}: k_v = {format_number(row.k_v)} V s/rad is {format_percent(abs(dev))} "
+                            f"{'above' if dev > 0 else 'below'} the median {format_number(k_v)}: probably a bad reading "
                             "(u_ss, omega_ss or i_ss of that row); the median keeps it out of the result."
                         ),
                     )
@@ -96,7 +102,7 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
                 Observation(
                     "k_v_disagree",
                     (
-                        f"The two rows give k_v = {a:.4g} and {b:.4g} V s/rad, {abs(a - b) / abs(k_v) * 100:.0f} % apart: "
+                        f"The two rows give k_v = {format_number(a)} and {format_number(b)} V s/rad, {format_percent(abs(a - b) / abs(k_v))} apart: "
                         "one is probably a bad reading, and with two rows the median cannot tell which. Measure a third voltage."
                     ),
                 )
@@ -143,14 +149,14 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
     line = ""
     if slope > 0 and intercept > 0:
         line = (
-            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {slope:.3g} N m s/rad "
-            f"and a dry friction torque tau_c = {intercept:.3g} N m."
+            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {format_number(slope, 3)} N m s/rad "
+            f"and a dry friction torque tau_c = {format_number(intercept, 3)} N m."
         )
     return [
         Observation(
             "dry_friction",
             (
-                f"f falls with speed, from {format_number(f[0])} N m s/rad at {w[0]:.3g} rad/s to {format_number(f[-1])} N m s/rad at {w[-1]:.3g} rad/s: "
+                f"f falls with speed, from {format_number(f[0])} N m s/rad at {format_reading(w[0], 'rad/s', 3)} to {format_number(f[-1])} N m s/rad at {format_reading(w[-1], 'rad/s', 3)}: "
                 "part of the friction is dry (Coulomb) friction, a torque that does not grow with speed. "
                 "The lab's model has viscous friction only, so its f depends on the speed it was measured at."
                 + line
@@ -189,7 +195,7 @@ def step_observations(
                 "u_ss_from_log",
                 (
                     f"The log has no u_req column, so K divides by the applied voltage the log recorded "
-                    f"({u_ss:.3g} V) instead of u_ss from the table."
+                    f"({format_number(u_ss, 3)} V) instead of u_ss from the table."
                 ),
             )
         )
@@ -200,7 +206,7 @@ def step_observations(
                 f"u_ss_{'extrapolated' if 'extrapolated' in hows else 'interpolated'}",
                 (
                     f"No table row has u_req = {', '.join(f'{v:g}' for v in levels)} V, the step's requested level; "
-                    f"u_ss = {u_ss:.3g} V is {which} the table's rows."
+                    f"u_ss = {format_number(u_ss, 3)} V is {which} the table's rows."
                 ),
             )
         )
@@ -223,8 +229,8 @@ def step_observations(
                 Observation(
                     "step_vs_table",
                     (
-                        f"The step at t = {s.t:.3g} s settles at {s.omega_ss:.3g} rad/s, but the table gives "
-                        f"{w_table:.3g} rad/s at u_req = {s.u_req:g} V ({abs(s.omega_ss / w_table - 1) * 100:.0f} % apart): "
+                        f"The step at t = {format_number(s.t, 3)} s settles at {format_number(s.omega_ss, 3)} rad/s, but the table gives "
+                        f"{format_number(w_table, 3)} rad/s at u_req = {s.u_req:g} V ({format_percent(abs(s.omega_ss / w_table - 1))} apart): "
                         "the two experiments do not agree (a different wheel load, battery level, or a misread value)."
                     ),
                 )
@@ -235,7 +241,7 @@ def step_observations(
             Observation(
                 "T_short",
                 (
-                    f"T = {T * 1e3:.3g} ms is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {ts * 1e3:.3g} ms): "
+                    f"T = {format_number(T * 1e3, 3)} ms is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {format_reading(ts, 'ms', 3)}): "
                     "the speed rises within a few samples, so the 63 % reading measures the sampling and the "
                     "velocity computation as much as the motor. The least-squares T models the sampling and is the one to use."
                 ),
@@ -246,14 +252,14 @@ def step_observations(
             Observation(
                 "T_63_differs",
                 (
-                    f"The 63 % reading ({T_63 * 1e3:.3g} ms) and the least-squares T ({T * 1e3:.3g} ms) differ by "
-                    f"{abs(T_63 / T - 1) * 100:.0f} %. "
+                    f"The 63 % reading ({format_number(T_63 * 1e3, 3)} ms) and the least-squares T ({format_number(T * 1e3, 3)} ms) differ by "
+                    f"{format_percent(abs(T_63 / T - 1))}. "
                     + (
                         f"The reading counts from the logged step, so it holds the dead time of "
-                        f"{dead_time * 1e3:.3g} ms that T does not; besides, the measured speed is the "
+                        f"{format_number(dead_time * 1e3, 3)} ms that T does not; besides, the measured speed is the "
                         "mean over each sample interval and lags the true speed by half a sample."
                         if dead_time > 0
-                        else f"Most of it ({shape * 1e3:+.3g} ms) is the shape of the rise, which one "
+                        else f"Most of it ({format_signed(shape * 1e3, 3)} ms) is the shape of the rise, which one "
                         "time constant does not follow (see the time shift below): no one time "
                         "constant meets both the 63 % point and the whole rise here."
                         if shape is not None and abs(shape) > 0.5 * abs(T_63 - T)
@@ -269,7 +275,7 @@ def step_observations(
             Observation(
                 "not_settled",
                 (
-                    f"{len(short)} step(s) last less than 5 T ({5 * T:.3g} s): the speed has not quite settled "
+                    f"{len(short)} step(s) last less than 5 T ({format_number(5 * T, 3)} s): the speed has not quite settled "
                     "by their end, so omega_ss is the final speed of the fitted response rather than a reading "
                     "of it (a mean over the end of a step would come out low); longer steps would check it."
                 ),
@@ -313,7 +319,7 @@ def fit_observations(
     ts = log.ts
     if glitches:
         rows = list(range(glitches))
-        speeds = ", ".join(f"{float(log.omega[r]):.3g}" for r in rows)
+        speeds = ", ".join(format_reading(float(log.omega[r]), "", 3) for r in rows)
         out.append(
             Observation(
                 "glitch_rows",
@@ -347,9 +353,9 @@ def fit_observations(
                 "dead_time",
                 (
                     f"The wheel answers {fit.dead_time * 1e3:.0f} ms after the logged steps, more than the "
-                    f"one sample period ({bound * 1e3:.3g} ms) that the sampling's lateness can explain: a "
+                    f"one sample period ({format_reading(bound, 'ms', 3)}) that the sampling's lateness can explain: a "
                     "dead time. It is fitted as the model check fits it and is part of the model "
-                    f"(Task 14): T omega'(t) = -omega(t) + K u_A(t - {fit.dead_time:.3g} s). T is counted "
+                    f"(Task 14): T omega'(t) = -omega(t) + K u_A(t - {format_number(fit.dead_time, 3)} s). T is counted "
                     "from the moment the wheel answers."
                 ),
             )
@@ -357,7 +363,7 @@ def fit_observations(
     elif fit.shift_on_bound and fit.shift > 0:
         late = (
             "A dead time fits the log better, but it is not one: the wheel already moves before "
-            f"it would end ({fit.moved_early * 100:.0f} % of the way to its new speed), so the rise "
+            f"it would end ({format_percent(fit.moved_early)} of the way to its new speed), so the rise "
             "starts at once but slowly, a shape the first-order model misses (an S-shaped start: "
             "a second pole or a filtered speed; a ramp: a current limit). Read T with care."
             if fit.moved_early is not None
@@ -366,7 +372,7 @@ def fit_observations(
                 if fit.dead_time_sought
                 else (
                     "The wheel first moves "
-                    + (f"{fit.onset * 1e3:.3g} ms " if fit.onset is not None else "")
+                    + (f"{format_number(fit.onset * 1e3, 3)} ms " if fit.onset is not None else "")
                     + "after the steps, no later than the rise itself and the sampling explain, "
                     "so there is no dead time to fit: the rise starts more slowly than one time "
                     "constant gives (an S-shaped start: a second pole or a filtered speed), a shape "
@@ -379,7 +385,7 @@ def fit_observations(
                 "shift_on_bound",
                 (
                     f"The time shift of the steps against the samples ended on its bound of one sample "
-                    f"period ({fit.shift * 1e3:+.3g} ms): the wheel answers later than the sampling's "
+                    f"period ({format_signed(fit.shift * 1e3, 3)} ms): the wheel answers later than the sampling's "
                     f"lateness explains. {late} T is the fit with the shift held there."
                 ),
             )
@@ -390,7 +396,7 @@ def fit_observations(
                 "shift_on_bound",
                 (
                     f"The time shift of the steps against the samples ended on its bound of one sample "
-                    f"period ({fit.shift * 1e3:+.3g} ms): the wheel moves earlier than the logged steps "
+                    f"period ({format_signed(fit.shift * 1e3, 3)} ms): the wheel moves earlier than the logged steps "
                     "by more than the sampling's lateness explains. The steps in the log are placed late "
                     "(a command logged after it acted); T is the fit with the shift held at the bound."
                 ),
@@ -402,10 +408,10 @@ def fit_observations(
                 "shift_on_bound",
                 (
                     f"The time shift of the steps against the samples ended on its bound of one sample "
-                    f"period ({fit.shift * 1e3:+.3g} ms), earlier than the steps, although the wheel "
+                    f"period ({format_signed(fit.shift * 1e3, 3)} ms), earlier than the steps, although the wheel "
                     "does not move before them"
                     + (
-                        f" (it first moves {fit.onset * 1e3:.3g} ms after them)"
+                        f" (it first moves {format_number(fit.onset * 1e3, 3)} ms after them)"
                         if fit.onset is not None and fit.onset > 1.5 * bound
                         else ""
                     )
@@ -421,8 +427,8 @@ def fit_observations(
             Observation(
                 "T_on_bound",
                 (
-                    f"T = {fit.T * 1e3:.3g} ms ended on the bound of the range the fit tries "
-                    f"({lo * 1e3:.3g} ms to {hi:.3g} s): this log cannot tell T beyond it, and the "
+                    f"T = {format_number(fit.T * 1e3, 3)} ms ended on the bound of the range the fit tries "
+                    f"({format_reading(lo, 'ms', 3)} to {format_reading(hi, 's', 3)}): this log cannot tell T beyond it, and the "
                     "first-order model does not describe it well."
                 ),
             )
@@ -433,7 +439,7 @@ def fit_observations(
                 "T_not_determined",
                 (
                     f"T's 95 % interval spans more than a factor of ten: T is not determined by this "
-                    f"log; {fit.T * 1e3:.3g} ms is only the best fit. Longer steps, more of them, or a "
+                    f"log; {format_number(fit.T * 1e3, 3)} ms is only the best fit. Longer steps, more of them, or a "
                     "faster sampling would tell it."
                 ),
             )

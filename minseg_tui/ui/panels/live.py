@@ -12,6 +12,7 @@ from textual.widget import Widget
 from minseg_tui.lab.content.steps import LEVELS, Step
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
+from minseg_tui.quantities import format_spread
 from minseg_tui.ui.device import DeviceInfo
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
@@ -92,7 +93,7 @@ class LivePanel(Vertical):
         if "capture_omega" in self.step.actions:
             s = views.steady(t, count)
             state = "SETTLED" if s.settled else "not settled"
-            mean = "—" if s.mean != s.mean else f"{s.mean:.2f} ± {s.spread:.2f} rad/s"
+            mean = "—" if s.mean != s.mean else f"{s.mean:.2f} {format_spread(s.spread, 'rad/s')}"
             note = "" if s.ready else "(window filling)"
             text = (
                 f"steady: {state} · {mean} over {views.CAPTURE_WINDOW:g} s {note}".rstrip()

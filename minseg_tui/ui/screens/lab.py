@@ -35,6 +35,7 @@ from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
+from minseg_tui.ui.keys import panel_keys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
     CaptureRequested,
@@ -72,17 +73,7 @@ MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": "
 
 STEP_IDS = tuple(s.id for s in STEPS)
 
-PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = (
-    ("f3", "set_voltage", "Set V", "setting a voltage"),
-    ("f4", "capture", "Capture", "capturing omega_ss"),
-    ("f5", "run_steps", "Run", "the step experiment"),
-    ("f6", "run_fast", "Run 5 ms", "the fast step experiment"),
-    ("f7", "formula", "Formula", "a table formula"),
-    ("f9", "zoom_next", "Zoom", "zooming the step log"),
-    ("alt+left,ctrl+left", "pick_prev", "", "moving through the step log"),
-    ("alt+right,ctrl+right", "pick_next", "Step", "moving through the step log"),
-    ("ctrl+r", "reveal", "Reveal", "revealing computed values"),  # last: a lab assistant's key
-)
+PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = panel_keys()
 """Keys that act on the shown step's panel: (keys, the app's action, footer label, what it is;
 no label: not in the footer). The footer shows a key on the steps whose panel offers it
 (:meth:`LabScreen.panel_keys`); elsewhere the key says that it is not part of this step. None

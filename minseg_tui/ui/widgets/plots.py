@@ -18,6 +18,8 @@ from textual.content import Content
 from textual.widgets import Static
 from textual_plotext import PlotextPlot
 
+from minseg_tui.quantities import format_ticks
+
 Values = Sequence[float] | NDArray[np.float64]
 """The x or y values of a trace."""
 
@@ -115,24 +117,6 @@ def _round(value: float) -> float:
     """A multiple of a round step without the float noise of the product (0.30000000000000004
     is 0.3), never -0."""
     return round(value, 10) + 0.0
-
-
-def tick_labels(values: Sequence[float]) -> list[str]:
-    """The labels of evenly spaced ticks: as many decimals as their step and values need
-    (a step of 2.5 one more than 2), never '-0'."""
-    if len(values) < 2:
-        return [f"{v:g}" for v in values]
-    step = values[1] - values[0]
-    least = max(0, -math.floor(math.log10(step) + 1e-9))
-    decimals = next(
-        (
-            d
-            for d in range(least, least + 4)
-            if all(abs(round(v, d) - v) < step * 1e-6 for v in values)
-        ),
-        least + 4,
-    )
-    return [f"{round(v, decimals) + 0.0:.{decimals}f}" for v in values]
 
 
 POINTS_PER_COLUMN = 4
@@ -238,12 +222,12 @@ class Canvas(PlotextPlot):
         if xs:
             lo, hi, at = ticks(min(xs), max(xs))
             plt.xlim(lo, hi)
-            plt.xticks(at, tick_labels(at))
+            plt.xticks(at, format_ticks(at))
         rows = self.size.height - 3 - bool(self._title) - bool(self._xlabel or self._ylabel)
         if ys and rows >= 2:  # laid out: the rows are known (drawn again on a resize)
             lo, hi, at = row_ticks(min(ys), max(ys), rows)
             plt.ylim(lo, hi)
-            plt.yticks(at, tick_labels(at))
+            plt.yticks(at, format_ticks(at))
         self.refresh()
 
     def on_resize(self) -> None:

@@ -1,0 +1,138 @@
+"""Where the words and numbers people read are written (issue 19, item 3 "Words once").
+
+Counts, over minseg_tui/ (and README.md for the keys), each thing that should come from one
+place, and says where it stands:
+
+- number formats: format specs in f-strings (``{x:.3g}``, ``{x:.1f}``, ``{x:g}``...) outside
+  quantities.py (an SVG's coordinates left out), the one module that writes numbers for people; split into those in modules
+  of words people read (the UI, the report, the CLI, lab/views, identify's observations)
+  and the rest (messages of refusals, files, the board's protocol, the model check);
+- formatting helpers: module-level ``_num``/``_fmt``/``_g``-like wrappers around quantities;
+- the places that spell how u_ss was found (a table with an ``"interpolated"`` entry, or the
+  bare code shown), the
+  model check's figure names (a table naming the angle error), the key help (a table or
+  README line saying what F5 does);
+- names defined in more than one module: classes, and UPPER_CASE tables at module level.
+
+Run: ``.venv/bin/python benchmarks/words_audit.py`` (``--list`` prints every hit).
+"""
+
+import argparse
+import ast
+import re
+from collections import Counter, defaultdict
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+SPEC = re.compile(r"\{[^{}]*?:[+ ]?\d*(?:\.\d+)?[gfe%]\}")
+"""A number's format spec inside an f-string: {x:.3g}, {x:+.1f}, {x:g}, {x:.0f}."""
+
+PEOPLE = ("ui/", "report/", "cli/", "lab/views/", "model/identify/observations.py")
+"""Modules whose text is the words a student reads (screens, report, headless output)."""
+
+HELPER = re.compile(r"^(?:def (_num|_fmt|_q|_g|_v|_w|_s|_read)\(|(_g|_fmt|_num) = format)", re.M)
+
+PLACES: dict[str, re.Pattern[str]] = {
+    "how u_ss was found": re.compile(r'"interpolated":|\{st\.u_ss_how\}'),
+    "the check's figure names": re.compile(r'"(?:rms error of the angle|angle error)", "rad"'),
+    "the key help (what F5 does)": re.compile(r'^\| F5|\("F5", "|\("f5", "|Key\(\s*"F5"', re.M),
+}
+
+
+def _geometry(text: str, m: re.Match[str]) -> bool:
+    """A number in an SVG attribute or a point list (x="{px:.1f}", "{a:.1f},{b:.1f}"): a
+    drawing's coordinates, not a number people read."""
+    before, after = text[m.start() - 2 : m.start()], text[m.end() : m.end() + 1]
+    return before == '="' or before.endswith(",") or after == ","
+
+
+def _sources(pkg: Path) -> list[Path]:
+    return sorted(p for p in pkg.rglob("*.py") if ".venv" not in p.parts)
+
+
+def _defined(tree: ast.Module) -> tuple[list[str], list[str]]:
+    """Classes and UPPER_CASE module-level names a module defines."""
+    classes, tables = [], []
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            classes.append(node.name)
+        targets: list[ast.expr] = []
+        if isinstance(node, ast.Assign):
+            targets = node.targets
+        elif isinstance(node, ast.AnnAssign):
+            targets = [node.target]
+        for t in targets:
+            if isinstance(t, ast.Name) and t.id.isupper() and len(t.id) > 1:
+                tables.append(t.id)
+    return classes, tables
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--list", action="store_true", help="print every hit")
+    ap.add_argument("--root", type=Path, default=ROOT, help="a checkout to count in")
+    args = ap.parse_args()
+    root = args.root.resolve()
+    pkg = root / "minseg_tui"
+    people: Counter[str] = Counter()
+    given = 0
+    rest: Counter[str] = Counter()
+    helpers: list[str] = []
+    places: dict[str, list[str]] = defaultdict(list)
+    classes: dict[str, list[str]] = defaultdict(list)
+    tables: dict[str, list[str]] = defaultdict(list)
+    for p in _sources(pkg):
+        text = p.read_text(encoding="utf-8")
+        rel = str(p.relative_to(pkg))
+        if rel != "quantities.py":
+            found = [m for m in SPEC.finditer(text) if not _geometry(text, m)]
+            n = len(found)
+            if n:
+                (people if rel.startswith(PEOPLE) else rest)[rel] += n
+                if rel.startswith(PEOPLE):
+                    given += sum(m.group().endswith(":g}") for m in found)
+        helpers += [f"{rel}: {m.group(1) or m.group(2)}" for m in HELPER.finditer(text)]
+        for what, pattern in PLACES.items():
+            if pattern.search(text):
+                places[what].append(rel)
+        c, t = _defined(ast.parse(text))
+        for name in c:
+            classes[name].append(rel)
+        for name in t:
+            tables[name].append(rel)
+    readme = (root / "README.md").read_text(encoding="utf-8")
+    for what, pattern in PLACES.items():
+        if pattern.search(readme):
+            places[what].append("README.md")
+    twice_c = {k: v for k, v in classes.items() if len(v) > 1}
+    twice_t = {k: v for k, v in tables.items() if len(v) > 1}
+
+    print(
+        f"number formats outside quantities.py, in modules people read: "
+        f"{sum(people.values())} in {len(people)} modules, of which {given} are :g (a level, "
+        "a setting or a reading written as given)"
+    )
+    if args.list:
+        for rel, n in people.most_common():
+            print(f"    {n:3d}  {rel}")
+    print(f"number formats elsewhere (refusals, files, protocol, check): {sum(rest.values())}")
+    if args.list:
+        for rel, n in rest.most_common():
+            print(f"    {n:3d}  {rel}")
+    print(f"formatting helpers beside quantities': {len(helpers)}")
+    if args.list:
+        for h in helpers:
+            print(f"    {h}")
+    for what in PLACES:
+        print(f"{what}: written in {len(places[what])} places ({', '.join(places[what])})")
+    print(f"classes defined in more than one module: {len(twice_c)}")
+    for name, where in sorted(twice_c.items()):
+        print(f"    {name}: {', '.join(where)}")
+    print(f"UPPER_CASE tables defined in more than one module: {len(twice_t)}")
+    for name, where in sorted(twice_t.items()):
+        print(f"    {name}: {', '.join(where)}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,154 @@
+"""The app's keys in one table: what each is called, what F1 says it does, and the binding
+behind it (its action, its footer label, and for a step panel's key what it is when a step
+has no such panel). F1's list (:func:`help_lines`), the app's bindings (:func:`app_bindings`)
+and the step panels' keys (:func:`panel_keys`) are made from it, so a key's words are written
+once."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from textual.binding import Binding
+
+
+@dataclass(frozen=True)
+class Key:
+    """One key (or the keys of one line of help).
+
+    ``name``/``help``: the key as F1 writes it and what it does there (no name: no line of
+    its own). ``keys``: Textual's key names of its binding ('': bound elsewhere, by the
+    screen or the widget that owns it, or Textual's own); ``action``: the app's action;
+    ``label``: in the footer ('': not there); ``shown``: whether the footer shows it;
+    ``priority``: the app's before any widget's. ``panel``: a key that acts on the shown
+    step's panel, and what it is, for the line saying it is not part of this step;
+    ``assistant``: a lab assistant's key (last in the footer, the one cut at 80 columns)."""
+
+    name: str
+    help: str
+    keys: str = ""
+    action: str = ""
+    label: str = ""
+    shown: bool = True
+    priority: bool = False
+    panel: str = ""
+    assistant: bool = False
+
+
+KEYMAP: tuple[Key, ...] = (
+    Key("F1", "this help", "f1", "help", "Help"),
+    Key(
+        "F2", "STOP the motor (works everywhere, always)", "f2", "stop_motor", "STOP", priority=True
+    ),
+    Key(
+        "F3",
+        "set the next voltage 2.5/3.5/4.5 V (Task 4/5)",
+        "f3",
+        "set_voltage",
+        "Set V",
+        panel="setting a voltage",
+    ),
+    Key(
+        "F4",
+        "capture omega_ss over the settled window",
+        "f4",
+        "capture",
+        "Capture",
+        panel="capturing omega_ss",
+    ),
+    Key(
+        "F5",
+        "run the step sequence (Task 10)",
+        "f5",
+        "run_steps",
+        "Run",
+        panel="the step experiment",
+    ),
+    Key(
+        "F6",
+        "run it fast: 5 ms board-timed samples",
+        "f6",
+        "run_fast",
+        "Run 5 ms",
+        panel="the fast step experiment",
+    ),
+    Key(
+        "F7",
+        "the formula behind the table cell",
+        "f7",
+        "formula",
+        "Formula",
+        panel="a table formula",
+    ),
+    Key("F8", "export the report (Markdown, HTML, CSV)", "f8", "export", "Export"),
+    Key(
+        "F9",
+        "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)",
+        "f9",
+        "zoom_next",
+        "Zoom",
+        panel="zooming the step log",
+    ),
+    Key(
+        "F10",
+        "board check: does the wheel turn, does the count follow?",
+        "f10",
+        "board_check",
+        "Check board",
+        shown=False,
+        priority=True,
+    ),
+    Key(
+        "Ctrl+R",
+        "lab assistant: show the computed values before the answers",
+        "ctrl+r",
+        "reveal",
+        "Reveal",
+        panel="revealing computed values",
+        assistant=True,
+    ),
+    Key(
+        "Alt+← →",
+        "previous / next step of the log (Tasks 11-15)",
+        "alt+left,ctrl+left",
+        "pick_prev",
+        panel="moving through the step log",
+    ),
+    Key(
+        "",
+        "",
+        "alt+right,ctrl+right",
+        "pick_next",
+        "Step",
+        panel="moving through the step log",
+    ),
+    Key("Ctrl+← →", "the same, outside a text entry"),
+    Key("[ ] z", "the same on the focused plot; z zooms"),
+    Key("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
+    Key("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
+    Key("Tab", "next field; Enter stores what you typed"),
+    Key("Space", "tick an answer (summary questions)"),
+    Key("Ctrl+P", "command palette (go to a step, pick the run, stop...)"),
+    Key("Ctrl+Q", "quit (the session is already saved)"),
+)
+"""Every key F1 lists, in its order, with the bindings the app makes for them."""
+
+
+def help_lines() -> list[tuple[str, str]]:
+    """F1's list: (the key as written, what it does)."""
+    return [(k.name, k.help) for k in KEYMAP if k.name]
+
+
+def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
+    """The keys that act on the shown step's panel: (keys, the app's action, footer label,
+    what it is), a lab assistant's keys last."""
+    panel = sorted((k for k in KEYMAP if k.panel), key=lambda k: k.assistant)
+    return tuple((k.keys, k.action, k.label, k.panel) for k in panel)
+
+
+def app_bindings() -> list[Binding]:
+    """The app's own keys' bindings (those of the step panels are :func:`panel_keys`)."""
+    return [
+        Binding(k.keys, k.action, k.label, show=k.shown, priority=k.priority)
+        for k in KEYMAP
+        if k.keys and not k.panel
+    ]
