@@ -21,7 +21,8 @@ class Key:
     ``label``: in the footer ('': not there); ``shown``: whether the footer shows it;
     ``priority``: the app's before any widget's. ``panel``: a key that acts on the shown
     step's panel, and what it is, for the line saying it is not part of this step;
-    ``assistant``: a lab assistant's key (last in the footer, the one cut at 80 columns)."""
+    ``assistant``: a lab assistant's key (last in the footer, the first left out where its
+    line cannot hold every key)."""
 
     name: str
     help: str

@@ -244,8 +244,9 @@ async def test_table_fits_80_columns_and_f7_gives_the_row_formula_with_its_numbe
         await settle(pilot)
         text = str(app.screen.query_one("#formula").render())
         # k_v = (u_ss - R i_ss) / omega_ss with row 1's numbers: (2.05 - 5.3 * 0.028) / 3.1
-        # three significant digits with their zeros (issue 9): 5.30 Ω, not 5.3 Ω
-        assert "(2.05 V - 5.30 Ω × 0.0280 A) / 3.10 rad/s" in text and "= 0.6134 V s/rad" in text
+        # three significant digits with their zeros (issue 9), but R as the group typed it
+        # (issue 20, walk 2 defect 11: '5,3' was shown as 5.30 Ω)
+        assert "(2.05 V - 5.3 Ω × 0.0280 A) / 3.10 rad/s" in text and "= 0.6134 V s/rad" in text
         assert str(table.get_cell_at((0, 4))) == "0.6134"
 
 

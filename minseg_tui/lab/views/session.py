@@ -23,11 +23,12 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.content.steps import FIELDS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import STEP_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
+from minseg_tui.lab.state.entries import read_entry
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
@@ -43,6 +44,7 @@ from minseg_tui.quantities import (
     format_interval,
     format_number,
     format_quantity,
+    format_reading,
     format_spread,
     format_value,
 )
@@ -185,6 +187,26 @@ def typed(session: Session, key: str) -> str:
     return e.typed if e else ""
 
 
+def held(session: Session, key: str) -> str:
+    """The text in effect for field ``key`` (an accepted answer, not a refused attempt over
+    it), or '' when nothing was entered: what Escape brings back in the field."""
+    e = session.entry(key)
+    return e.text if e else ""
+
+
+def previous_answer(session: Session, key: str) -> str | None:
+    """The answer stored for field ``key`` before the one in effect: the newest earlier
+    text that reads as an answer and differs from it (None: there is none). Ctrl+Z in the
+    field enters it again."""
+    e = session.entry(key)
+    if e is None or key not in FIELDS:
+        return None
+    for text, _at in reversed(e.history):
+        if text.strip() != e.text.strip() and text.strip() and read_entry(FIELDS[key], text).ok:
+            return text
+    return None
+
+
 def chosen(session: Session, key: str) -> tuple[int, ...]:
     """The options (0-based) stored for choice field ``key``."""
     e = session.entry(key)
@@ -289,11 +311,12 @@ class TableView:
 
 def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> str:
     """The formula of a computed cell of row ``r`` with the row's numbers in it (R in ohm,
-    k_a in N m/A, the final one)."""
+    k_a in N m/A, the final one). R stands as the group typed it: 5,3 is "5.3 Ω", not
+    "5.30 Ω" (:func:`minseg_tui.quantities.format_reading`)."""
     if name == "k_v" and r.k_v is not None and r.u_ss is not None and r.i_ss is not None:
         if r.omega_ss is not None and R is not None:
             return (
-                f"k_v = (u_ss - R i_ss) / omega_ss = ({_num(r.u_ss, 3)} V - {_num(R, 3)} Ω × "
+                f"k_v = (u_ss - R i_ss) / omega_ss = ({_num(r.u_ss, 3)} V - {format_reading(R, 'Ω')} × "
                 f"{_num(r.i_ss, 3)} A) / {_num(r.omega_ss, 3)} rad/s = {_num(r.k_v)} V s/rad"
             )
     if name == "f" and r.f is not None and r.i_ss is not None and r.omega_ss is not None:

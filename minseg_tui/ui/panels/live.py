@@ -54,7 +54,7 @@ class LivePanel(Vertical):
         """The lines to keep in sight while typing (the steady-state indicator, the requested
         voltage and keys, the multimeter): the step pane docks them at its bottom."""
         parts = [w for w in (self._steady, self._meter) if w is not None]
-        return Vertical(*parts, classes="readout") if parts else None
+        return Readout(*parts) if parts else None
 
     def on_mount(self) -> None:
         self.redraw()
@@ -130,3 +130,54 @@ class LivePanel(Vertical):
             self.notify("set a voltage first (F3)", severity="warning")
             return
         self.post_message(CaptureRequested(self.requested))
+
+
+class Readout(Vertical):
+    """The lines docked at the bottom of a step (:meth:`LivePanel.readout`). An entry of the
+    step that takes the focus under them (Tab: Textual scrolls a widget into view only when
+    it is outside the step, and these lines lie inside it) is scrolled up above them: its
+    whole row when it fits, else its box."""
+
+    def __init__(self, *parts: Widget) -> None:
+        super().__init__(*parts, classes="readout")
+
+    def on_mount(self) -> None:
+        self.watch(self.screen, "focused", self._focused, init=False)
+
+    def _focused(self, focused: Widget | None) -> None:
+        step = self.parent
+        if focused is None or step is None or step not in focused.ancestors:
+            return
+
+        def lift(again: bool) -> None:
+            self._lift(focused)
+            if again:  # once more when the layout has settled (a hint moved under its box)
+                self.call_after_refresh(lift, False)
+
+        self.call_after_refresh(lift, True)
+
+    def _lift(self, focused: Widget) -> None:
+        step = self.parent
+        if not (
+            isinstance(step, Widget)
+            and focused.is_attached
+            and self.is_attached
+            and self.screen.focused is focused
+        ):
+            return
+        row = next(
+            (
+                a
+                for a in focused.ancestors_with_self
+                if isinstance(a, Widget) and a.has_class("field")
+            ),
+            focused,
+        )
+        top = step.scrollable_content_region.y
+        for shown in (row, focused):
+            under = shown.region.bottom - self.region.y
+            if under <= 0:
+                return
+            if shown.region.y - under >= top:
+                step.scroll_to(y=step.scroll_y + under, animate=False, immediate=True)
+                return

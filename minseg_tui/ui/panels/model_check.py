@@ -2,16 +2,19 @@
 
 from __future__ import annotations
 
-from textual import on
+from textual import events, on
 from textual.app import ComposeResult
-from textual.containers import Horizontal
+from textual.containers import Horizontal, Vertical
+from textual.widget import Widget
 from textual.widgets import Collapsible, Input
+from textual.widgets._collapsible import CollapsibleTitle
 
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import CheckView
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
+from minseg_tui.ui.widgets.fields import FieldRow
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
@@ -27,12 +30,14 @@ class ModelCheckPanel(ViewPanel[CheckView]):
     how much better the extended model does), then a fold with the details: the figure
     that leads and why, the check's evidence, the extended model, the other figures and
     what the check cannot say. A log recorded elsewhere can be loaded (Enter in the path
-    asks for it)."""
+    asks for it): its box stands under the step's notes (:meth:`after_rows`), so that Tab
+    reaches the notes first and notes are never typed into it."""
 
     def __init__(self) -> None:
         super().__init__()
         self.close_up = True
         """The close-up where the cause acts (False: the whole log)."""
+        self._import = ImportBox()
 
     def compose(self) -> ComposeResult:
         with Horizontal(classes="plots check-plots"):
@@ -41,8 +46,25 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         yield Prose("computing…", id="check-story")
         with Collapsible(title=DETAILS, id="check-details", collapsed=True):
             yield Prose("", id="check-lines")
-        yield Input(placeholder="load a step log (CSV path), Enter", id="import-path")
-        yield Prose("", id="import-msg", classes="hint")
+
+    def after_rows(self) -> Widget:
+        """The box to load a log recorded elsewhere, under the step's notes."""
+        return self._import
+
+    def on_key(self, event: events.Key) -> None:
+        """Letters typed on the fold's title (which takes only Enter) go into the step's
+        notes, as they do on the step's text; they were lost."""
+        if not (event.is_printable and event.character and event.character != " "):
+            return
+        if not isinstance(self.screen.focused, CollapsibleTitle):
+            return
+        typing_row = getattr(self.parent, "typing_row", None)  # the step's (StepPane)
+        row = typing_row() if callable(typing_row) else None
+        if isinstance(row, FieldRow):
+            event.stop()
+            event.prevent_default()
+            row.input.start_with(event.character)
+            self.screen.scroll_to_widget(row, animate=False)
 
     def build(self, session: Session) -> CheckView:
         return views.check(session)
@@ -117,6 +139,23 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         """F9: the close-up, or the whole log."""
         self.close_up = not self.close_up
         self.show_view()
+
+    def imported(self, text: str) -> None:
+        """Say what became of the log asked for (one line)."""
+        self._import.imported(text)
+
+
+class ImportBox(Vertical):
+    """A step log recorded elsewhere: its path, Enter asks for it (the lab screen loads it
+    and answers in one line under the box)."""
+
+    def __init__(self) -> None:
+        super().__init__(classes="import")
+
+    def compose(self) -> ComposeResult:
+        yield Prose("A step log recorded elsewhere (CSV): its path, then Enter", classes="hint")
+        yield Input(placeholder="load a step log (CSV path), Enter", id="import-path")
+        yield Prose("", id="import-msg", classes="hint")
 
     @on(Input.Submitted, "#import-path")
     def _import(self, event: Input.Submitted) -> None:

@@ -21,12 +21,14 @@ from minseg_tui.ui.widgets.prose import Prose
 
 class StepPlot(TracePlot):
     """The step log, whole or zoomed to one rising step. Focused, [ and ] pick the step and z
-    toggles; alt+left/right and F9 do the same from anywhere on the step (app keys)."""
+    toggles; alt+left/right and F9 do the same from anywhere on the step (app keys). Its
+    keys are left out of the footer, which shows the app's (they pushed F8, F9, Alt+→ and
+    Ctrl+R off its line at 80 columns); the F1 help lists them."""
 
     BINDINGS = [
-        Binding("left_square_bracket", "pick(-1)", "prev step"),
-        Binding("right_square_bracket", "pick(1)", "next step"),
-        Binding("z", "zoom", "zoom"),
+        Binding("left_square_bracket", "pick(-1)", "prev step", show=False),
+        Binding("right_square_bracket", "pick(1)", "next step", show=False),
+        Binding("z", "zoom", "zoom", show=False),
     ]
     can_focus = True
 
@@ -106,7 +108,12 @@ class ResultsPanel(ViewPanel[ResultsView]):
             return
         if self.zoom is None or not v.steps:
             plot.set_axes("step log", "t [s]")
-            plot.show([Trace(v.t, v.omega, "omega"), Trace(v.t, v.u, "u_A [V]", "dot", steps=True)])
+            plot.show(
+                [
+                    Trace(v.t, v.omega, "omega"),
+                    Trace(v.t, v.u, "u_A [V]", "dot", steps=True, right=True),
+                ]
+            )
             if v.steps:
                 said = f"{len(v.steps)} rising steps with results · f9 Zoom"
             elif not v.lines:  # no results at all: Tasks 11-15 need the table's R, u_ss, i_ss
@@ -120,7 +127,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
         x = v.t[keep] - w.t0  # time after the edge: the 63 % crossing is read off as T
         traces = [
             Trace(x, v.omega[keep], "omega"),
-            Trace(x, v.u[keep], "u_A [V]", "dot", steps=True),
+            Trace(x, v.u[keep], "u_A [V]", "dot", steps=True, right=True),
         ]
         lo, hi = w.z0 - w.t0, w.z1 - w.t0
         traces.append(Trace([lo, hi], [w.level, w.level], "63 %", "-"))

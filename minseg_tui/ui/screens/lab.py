@@ -24,7 +24,7 @@ from textual.containers import Horizontal, VerticalScroll
 from textual.reactive import reactive
 from textual.signal import Signal
 from textual.widget import Widget
-from textual.widgets import Footer, OptionList, RadioSet, SelectionList, Static
+from textual.widgets import OptionList, RadioSet, SelectionList, Static
 from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
@@ -54,6 +54,7 @@ from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import EntryBox, FieldRow
+from minseg_tui.ui.widgets.footer import KeyFooter
 from minseg_tui.ui.widgets.prose import Prose
 
 V = TypeVar("V")
@@ -78,8 +79,8 @@ PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = panel_keys()
 no label: not in the footer). The footer shows a key on the steps whose panel offers it
 (:meth:`LabScreen.panel_keys`); elsewhere the key says that it is not part of this step. None
 is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
-moves). The app binds them (its keys come first in the footer, where Reveal, a lab
-assistant's key, is the one cut at 80 columns)."""
+moves). The app binds them (its keys come first in the footer; Reveal, a lab assistant's
+key, is the last, the first the footer leaves out where a line cannot hold them all)."""
 
 PANEL_ACTIONS = frozenset(action for _, action, _, _ in PANEL_KEYS)
 
@@ -363,7 +364,7 @@ class LabScreen(StatusScreen):
                 id="nav",
             )
             yield Static("", classes="pane")
-        yield Footer()
+        yield KeyFooter()
 
     async def on_mount(self) -> None:
         self._lab_changed.subscribe(self, self._on_lab_changed)
@@ -451,6 +452,7 @@ class LabScreen(StatusScreen):
                     views.entry(s, f.key),
                     views.chosen(s, f.key),
                     readonly=self.readonly,
+                    held=views.held(s, f.key),
                 )
                 for f in step.fields
             ]
@@ -512,6 +514,7 @@ class LabScreen(StatusScreen):
         with self.session as s:
             for row in panes.last().query(FieldRow):
                 text = views.typed(s, row.field.key)
+                row.held = views.held(s, row.field.key)
                 if row.sent is not None and text != row.sent:
                     row.refresh_from_lab(text, views.entry(s, row.field.key))
         panel = panes.last().panel
@@ -650,12 +653,39 @@ class LabScreen(StatusScreen):
             result = EntryView(False, "this session is open read-only (damaged): not stored")
             row.show_result(result)
             return result
+        key = row.field.key
         with self.session as s:
-            s.enter(row.field.key, text)
-            result = views.entry(s, row.field.key) or EntryView(True)
+            old = s.entry(key)
+            before = old.text if old is not None and old.ok else ""
+            s.enter(key, text)
+            result = views.entry(s, key) or EntryView(True)
+            row.held = views.held(s, key)
         row.show_result(result)
+        if not submitted and before.strip() and row.held != before:
+            # an answer replaced by leaving the field, not by Enter (a stray key, say): said,
+            # and Ctrl+Z in the field brings the old one back
+            self.notify(
+                f"{row.field.label}: {text.strip()!r} stored in place of {before.strip()!r} "
+                "(not confirmed with Enter); Ctrl+Z in the field brings the old answer back",
+                title="answer replaced",
+            )
         self._changed()
         return result
+
+    @on(FieldRow.Restore)
+    def _restore(self, event: FieldRow.Restore) -> None:
+        """Ctrl+Z in an entry: the answer stored before the one in effect, entered again."""
+        event.stop()
+        with self.session as s:
+            previous = views.previous_answer(s, event.key)
+        if previous is None:
+            self.notify(f"{event.row.field.label}: no earlier answer to bring back")
+            return
+        event.row.refresh_from_lab(previous, None)
+        event.row.input.cursor_position = len(previous)
+        result = self._store(event.row, previous, submitted=True)
+        if result.ok:
+            self.notify(f"{event.row.field.label}: back to {previous.strip()!r}")
 
     @on(FieldRow.Typed)
     def _typed(self, event: FieldRow.Typed) -> None:

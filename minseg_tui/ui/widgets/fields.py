@@ -67,9 +67,18 @@ EDITING_KEYS: dict[str, str] = {
 screen's (it stores the entry and moves on)."""
 
 
+DESELECTING_KEYS = frozenset({"backspace", "delete", "left", "right", "home", "end"})
+"""Keys that edit a refused text by one character (or move in it) rather than replace it."""
+
+
 class EntryBox(Input):
     """The text box of an entry: focusing it selects what it holds (typing replaces it),
-    except right after :meth:`start_with`, which begins it with a typed character."""
+    except right after :meth:`start_with`, which begins it with a typed character.
+
+    A refused text stays selected (:meth:`hold_refused`): the next value typed replaces it,
+    while Backspace, Delete, the arrows and Home/End edit it one character at a time. Escape
+    brings back the text the lab holds for the row; Ctrl+Z the answer stored before it
+    (:class:`FieldRow.Restore`)."""
 
     def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
         super().__init__(
@@ -81,6 +90,14 @@ class EntryBox(Input):
         )
         self._starting = False
         """Set by :meth:`start_with` until the box has the focus."""
+        self._refused = False
+        """The whole refused text is selected (:meth:`hold_refused`) and no key acted since."""
+
+    def hold_refused(self) -> None:
+        """The text was refused: select it whole, so that the next value typed replaces it
+        (not appended to it), while an editing key edits it by one character."""
+        self.select_all()
+        self._refused = True
 
     def start_with(self, character: str) -> None:
         """Replace the text with ``character`` (typed somewhere else, e.g. on the list of
@@ -104,6 +121,17 @@ class EntryBox(Input):
         typed after it in the same burst went into the box first ('Ctrl+U 0,63' left the box
         empty)."""
         self.select_on_focus = True  # the next focus selects again
+        if self._refused:
+            self._refused = False
+            if event.key in DESELECTING_KEYS:  # edit the refused text, from its end
+                self.cursor_position = len(self.value)
+        if event.key in ("escape", "ctrl+z"):
+            row = next((a for a in self.ancestors if isinstance(a, FieldRow)), None)
+            if row is not None:
+                event.stop()
+                event.prevent_default()
+                row.restore(previous=event.key == "ctrl+z")
+            return
         action = EDITING_KEYS.get(event.key)
         if action is not None:
             event.stop()
@@ -116,6 +144,7 @@ class EntryBox(Input):
     def on_blur(self, event: events.Blur) -> None:
         self.select_on_focus = True
         self._starting = False
+        self._refused = False
 
 
 class FieldRow(Vertical):
@@ -140,6 +169,14 @@ class FieldRow(Vertical):
         indices: tuple[int, ...]
 
     @dataclass
+    class Restore(Message):
+        """Ctrl+Z in the row: the group wants back the answer stored before the one in effect
+        (Escape needs no message: the row holds the text the lab holds)."""
+
+        row: FieldRow
+        key: str
+
+    @dataclass
     class Typed(Message):
         """The group typed ``text`` for ``key`` (``submitted``: with Enter, not by leaving)."""
 
@@ -155,12 +192,16 @@ class FieldRow(Vertical):
         result: EntryView | None = None,
         chosen: tuple[int, ...] = (),
         readonly: bool = False,
+        held: str | None = None,
     ) -> None:
         super().__init__(
             id=field_id(field.key), classes="field choice" if field.options else "field"
         )
         self.field = field
         self._text = text
+        self.held = text if held is None else held
+        """The text the lab holds in effect for this row (an accepted answer, not a refused
+        attempt over it): what Escape brings back. The screen keeps it up to date."""
         self._result = result
         self._sent: str | None = text
         self._chosen = tuple(chosen)
@@ -290,6 +331,19 @@ class FieldRow(Vertical):
         self.input.select_all()
         return text
 
+    def restore(self, previous: bool = False) -> None:
+        """Escape: the box shows again the text the lab holds (:attr:`held`), whatever was
+        typed over it and not confirmed; nothing is stored. Ctrl+Z (``previous``): ask the
+        screen for the answer stored before that one (:class:`Restore`)."""
+        if self.field.options or self._readonly:
+            return
+        if previous:
+            self.post_message(self.Restore(self, self.field.key))
+            return
+        box = self.input
+        box.value = self.held
+        box.cursor_position = len(box.value)
+
     def _choose(self, indices: tuple[int, ...]) -> None:
         if indices != self._chosen:
             self._chosen = indices
@@ -338,10 +392,10 @@ class FieldRow(Vertical):
         self.set_class(not result.ok, "refused")
         self.set_class(bool(result.warnings), "warned")
         if not result.ok and self.query(EntryBox):
-            # a refused text is to be corrected, not replaced: the cursor at its end, nothing
-            # selected (Backspace deletes one character), and the whole refusal in view
+            # a refused text stays selected: a new value typed replaces it, while Backspace
+            # and the arrows edit it by one character; and the whole refusal in view
             box = self.input
-            box.cursor_position = len(box.value)
+            box.hold_refused()
             if self.screen.focused is box:
                 self.call_after_refresh(self.bring_into_view)
 

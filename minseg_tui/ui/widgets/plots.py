@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -43,7 +44,10 @@ class Trace:
     ``colour``: an index into :data:`COLOURS` (None: the trace's own place in the plot), so
     two lines of one thing (a band's edges) share a colour and one legend entry; ``steps``:
     each value holds until the next x (a voltage the board applies from one sample to the
-    next), drawn as a staircase, not as a line sloping between the samples."""
+    next), drawn as a staircase, not as a line sloping between the samples; ``right``: on
+    the plot's right axis, its own scale, labelled with the trace's label (one such trace
+    a plot; a voltage beside a speed), its highest value on the row the other lines cover
+    least (:func:`free_row`), so that a level line or the speed does not hide it."""
 
     x: Values
     y: Values
@@ -51,6 +55,7 @@ class Trace:
     marker: str = "braille"
     colour: int | None = None
     steps: bool = False
+    right: bool = False
 
 
 def drawn(tr: Trace) -> tuple[list[float], list[float]]:
@@ -159,7 +164,8 @@ def _colour(k: int, tr: Trace) -> tuple[str, str]:
 
 
 def legend(traces: Sequence[Trace]) -> Content:
-    """The legend line: each labelled trace's marker, in its colour, and label."""
+    """The legend line: each labelled trace's marker, in its colour, and label (a trace on
+    the right axis says so)."""
     parts: list[str | tuple[str, str]] = []
     for k, tr in enumerate(traces):
         if not tr.label:
@@ -167,8 +173,48 @@ def legend(traces: Sequence[Trace]) -> Content:
         if parts:
             parts.append("  ")
         parts += [(GLYPHS.get(tr.marker, tr.marker * 2), _colour(k, tr)[1]), " "]
-        parts.append(tr.label)
+        parts.append(tr.label + (", right axis" if tr.right else ""))
     return Content.assemble(*parts)
+
+
+def _cells(
+    x: Sequence[float],
+    y: Sequence[float],
+    braille: bool,
+    box: tuple[float, float, float, float],
+    cols: int,
+    rows: int,
+) -> set[tuple[int, int]]:
+    """The (column, row) cells a line through the points (x, y) covers in a plot of ``cols``
+    by ``rows`` cells spanning ``box`` = (x lo, x hi, y lo, y hi); row 0 at the bottom. A
+    braille line has four dots a cell in height (plotext puts a value on its dot row)."""
+    x_lo, x_hi, y_lo, y_hi = box
+    sub = 4 if braille else 1
+
+    def at(px: float, py: float) -> tuple[int, int]:
+        c = round((px - x_lo) / (x_hi - x_lo) * (cols - 1))
+        r = (
+            round((py - y_lo) / (y_hi - y_lo) * (rows * sub - 1)) // sub
+            if braille
+            else round((py - y_lo) / (y_hi - y_lo) * (rows - 1))
+        )
+        return c, r
+
+    pts = [at(a, b) for a, b in zip(x, y, strict=True) if math.isfinite(a) and math.isfinite(b)]
+    cells = set(pts[:1])
+    for (c0, r0), (c1, r1) in zip(pts, pts[1:], strict=False):
+        n = max(abs(c1 - c0), abs(r1 - r0), 1)
+        cells.update(
+            (c0 + round((c1 - c0) * j / n), r0 + round((r1 - r0) * j / n)) for j in range(n + 1)
+        )
+    return cells
+
+
+def free_row(covered: set[tuple[int, int]], columns: set[int], rows: int) -> int:
+    """The row, in the upper half of ``rows`` rows (row 0 at the bottom), that the cells
+    ``covered`` by other lines leave freest over ``columns``; the highest of equals."""
+    candidates = range(rows - 1, max((rows - 1) // 2, 1) - 1, -1)
+    return min(candidates, key=lambda r: sum((c, r) in covered for c in columns))
 
 
 class Canvas(PlotextPlot):
@@ -204,6 +250,7 @@ class Canvas(PlotextPlot):
         plt.ylabel(self._ylabel)
         xs: list[float] = []
         ys: list[float] = []
+        lines: list[tuple[Trace, list[float], list[float]]] = []
         # plotext draws over what it drew before: the input's staircase first, then the guides
         # (a level, a marker line: '-' and '|'), then the data, which must show where it
         # crosses them (a dashed 63 % line hid the speed at its crossing); each trace keeps
@@ -214,9 +261,12 @@ class Canvas(PlotextPlot):
                 x, y = drawn(tr)
                 if self.size.width:
                     x, y = thin(x, y, POINTS_PER_COLUMN * self.size.width)
-                plt.plot(x, y, marker=tr.marker, color=_colour(k, tr)[0])
+                side = "right" if tr.right else "left"
+                plt.plot(x, y, marker=tr.marker, color=_colour(k, tr)[0], yside=side)
                 xs += [v for v in x if math.isfinite(v)]
-                ys += [v for v in y if math.isfinite(v)]
+                if not tr.right:
+                    ys += [v for v in y if math.isfinite(v)]
+                lines.append((tr, x, y))
         if self.xlim is not None:
             xs = list(self.xlim)
         if xs:
@@ -228,7 +278,49 @@ class Canvas(PlotextPlot):
             lo, hi, at = row_ticks(min(ys), max(ys), rows)
             plt.ylim(lo, hi)
             plt.yticks(at, format_ticks(at))
+            if xs:
+                self._right_axis(lines, (min(xs), max(xs), lo, hi), rows)
         self.refresh()
+
+    def _right_axis(
+        self,
+        lines: list[tuple[Trace, list[float], list[float]]],
+        box: tuple[float, float, float, float],
+        rows: int,
+    ) -> None:
+        """The scale of the trace on the right axis (if any): its lowest value on the bottom
+        row, its highest on the row the others leave freest where it is at its highest,
+        ticks at both, its label under the axis."""
+        right = [(tr, x, y) for tr, x, y in lines if tr.right]
+        if not right:
+            return
+        tr, x, y = right[0]
+        values = [v for v in y if math.isfinite(v)]
+        if not values:
+            return
+        u_lo, u_hi = min(values), max(values)
+        if not u_hi > u_lo:
+            u_hi = u_lo + 1.0
+        x_lo, x_hi = box[0], box[1]
+        if self.xlim is not None:
+            x_lo, x_hi = self.xlim
+        if not x_hi > x_lo:
+            return
+        cols = max(self.size.width - 12, 8)  # about the plot's columns (the axes' ticks aside)
+        covered: set[tuple[int, int]] = set()
+        for other, ox, oy in lines:
+            if not other.right:
+                covered |= _cells(
+                    ox, oy, other.marker == "braille", (x_lo, x_hi, box[2], box[3]), cols, rows
+                )
+        high = {c for c, r in _cells(x, y, False, (x_lo, x_hi, u_lo, u_hi), cols, 2) if r == 1}
+        row = free_row(covered, high, rows)
+        # textual-plotext's stub types yside as a number and leaves it out of ylabel;
+        # plotext takes "right" in all three
+        side: Any = "right"
+        self.plt.ylim(u_lo, u_lo + (u_hi - u_lo) * (rows - 1) / row, yside=side)
+        self.plt.yticks([u_lo, u_hi], format_ticks([u_lo, u_hi]), yside=side)
+        self.plt.ylabel(tr.label, yside=side)  # type: ignore[call-arg]
 
     def on_resize(self) -> None:
         self.draw()  # the y ticks sit on rows
