@@ -28,6 +28,16 @@ all 0 -> 17.3 %, confidently wrong 52.0 -> 37.3 %, untouched logs with a disturb
 12 -> 3; a hand found with the cause kept 12 -> 13 of 20. The issue's targets (>= 90 %
 right or honestly ambiguous, <= 5 % confidently wrong, 0 disturbances) are not met.
 
+Then (--seeds 5 --only pairs, the same 75 logs; 7cfdf8f -> the pole on the measurement,
+the cap that brakes too, a third cause held to half of what the pair leaves): right 45.3
+-> 64.0 %, honestly ambiguous 8.0 -> 17.3 % (right or honestly ambiguous 53.3 -> 81.3 %),
+ambiguous in all 17.3 -> 21.3 %, confidently wrong 37.3 -> 14.7 %, untouched logs with a
+disturbance 3 -> 2; CPU per log (check only) median 0.78 -> 1.10 s, max 7.14 -> 6.12 s.
+Still short of 90 % and 5 %: what is left is mostly logs with a current cap (likely
+because the generator's viscous drag bends the capped ramp, which the check's constant
+rate cannot follow; not measured), an average of the speed with a pole or a coast, and a
+spurious third cause.
+
 Item 3 (a disturbance is local), held-out seeds, 7cfdf8f -> f6fb0dd: a hand found with the
 cause kept 13 -> 13 of 20 (the same seven fail: six name another cause or an extra one, three
 report the hand 0.18-0.22 s after the touch or not at all, two of them both);
@@ -40,6 +50,35 @@ not met; on the tuning seeds most failures that remain name an extra cause on th
 log as well (a second pole of 2 ms at 20 ms samples), which is the pair decisions' business.
 The present tiers hold (benchmarks/model_check.py, 10 seeds: single causes 70 of 70, 0 false
 alarms; model_check_pairs.py's hand tier 70 of 70).
+
+Then (--seeds 5 --only pairs, the same 75 logs; 17b1e36 -> ebfe99b, a current cap's ramp bent
+by the wheel's viscous drag, its second parameter, and a cap with friction started from the
+cap raised by u_c/T): right 64.0 -> 74.7 %, honestly ambiguous 17.3 -> 13.3 % (right or
+honestly ambiguous 81.3 -> 88.0 %), ambiguous in all 21.3 -> 16.0 %, confidently wrong 14.7
+-> 9.3 %, untouched logs with a disturbance 2 -> 0. On the tuning seeds 0-4: right or
+honestly ambiguous 82.7 -> 88.0 %, confidently wrong 17.3 -> 12.0 %. CPU per log (check
+only) on 15 tuning pair logs run side by side with 17b1e36: median 0.97 -> 1.04 s, mean 1.26
+-> 1.56 s (the held-out run's own medians, 1.0-1.6 s in parts, were taken at a load average
+of 15-22 on two cores). A logger's first-order filter of the speed column as a side of the
+pole (5925a70) helped two tuning logs but lost one held-out pair log and a cap + delay test
+log: reverted. Still short of 90 % and 5 %: what is left is mostly an average with a pole
+(0 of 5 right, 3 honestly ambiguous), a cap or a coast with a pole (a pole on the
+inductance or the driver: T2 off by more than 25 %, or the cap not named), a cap with a
+delay, and a logger's filter of the speed column (its T2 read about 36 % short).
+
+s24-hands (held-out seeds, --seeds 5 --touch-seeds 5; 17b1e36 -> 329194e): a hand's rows are
+left out from the departure's onset until the wheel is back on the model (across a step if
+its recovery runs past one), it is reported from that onset, and a current cap whose ramp
+would last under one sample is not named. A hand found with the cause kept 15 -> 12 of 20
+(reported within 0.15 s 17 -> 18); the pair figures unchanged (right 64.0 %, honestly
+ambiguous 17.3 %, ambiguous in all 21.3 %, confidently wrong 14.7 %, untouched logs with a
+disturbance 0), the single causes unchanged. The hand figure fell because the hand no longer
+dilutes the whitened residual: left in, the wheel's recovery made every cause's share of it
+small. With the hand's rows out, the log reads like the same log without a hand, and on
+this generator those logs already name small extra causes. On tuning seeds 1008
+(coulomb_friction) and 1017 (none), the same log with the hand's torque set to 0 names
+friction + a 0.43 ms pole and a 4.5 mV friction, before this change too. Those extra
+causes are the single and pair decisions' business, not the hand's.
 """
 
 from __future__ import annotations
@@ -107,7 +146,12 @@ def pairs(seeds: list[int], verbose: bool) -> None:
         for s in seeds:
             log = make(s, (a, b))
             t0 = time.process_time()
-            r = check(log.t, log.u, log.omega)
+            try:
+                r = check(log.t, log.u, log.omega)
+            except ValueError as e:  # refused: a wheel that never turns (friction above a cap)
+                row["wrong"] += 1
+                wrong_lines.append(f"  refused {a}+{b} seed {s}: {e}; {log.how}")
+                continue
             cpu.append(time.process_time() - t0)
             named = _named(r)
             amb = _ambiguous(r)

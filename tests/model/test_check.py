@@ -384,3 +384,55 @@ def test_every_cause_has_words_for_people():
         "first order + dry friction + averaged speed (velocity filter)"
     )
     assert in_words("current_limit") == "current limit" and in_words("none") == "none"
+
+
+def _fine(t_end, dt, u_of, T, rate, both):
+    """The first-order model with a cap on the acceleration, by small Euler steps (K = 1):
+    the cap holds while accelerating and, ``both``, while braking."""
+    n = int(round(t_end / dt))
+    w, out = 0.0, []
+    for k in range(n + 1):
+        out.append(w)
+        acc = (u_of(k * dt) - w) / T
+        s = math.copysign(1.0, w) if w != 0 else math.copysign(1.0, acc)
+        if s * acc > rate or (both and -s * acc > rate):
+            acc = math.copysign(rate, acc)
+        w += dt * acc
+    return np.array(out)
+
+
+@pytest.mark.parametrize("both", [False, True])
+def test_a_cap_while_braking_too_is_simulated_as_a_ramp_down(both):
+    # 4 V for 0.6 s then 0: T = 0.1 s, cap 20 V/s (a_max 20 K rad/s^2). Braking from 4 V
+    # asks for 40 V/s: with the cap on both ways the speed ramps down at 20 V/s
+    T, rate = 0.1, 20.0
+    st = Stretches(start=np.array([0.0, 0.6]), value=np.array([4.0, 0.0]))
+    t = np.arange(0.0, 1.2, 0.005)
+    tab = pieces(st, T, Effects(rate=rate, cap_both=both))
+    w = np.diff(tab.angle(t)) / 0.005
+    ref = _fine(1.2, 1e-5, lambda x: 4.0 if x < 0.6 else 0.0, T, rate, both)
+    mid = np.interp(t[:-1] + 0.0025, np.arange(ref.size) * 1e-5, ref)
+    assert np.max(np.abs(w - mid)) < 0.01
+    fall = w[(t[:-1] > 0.61) & (t[:-1] < 0.65)]
+    slope = np.polyfit(np.arange(fall.size) * 0.005, fall, 1)[0]
+    assert slope == pytest.approx(-rate, rel=0.02) if both else slope < -1.3 * rate
+
+
+def test_a_pole_on_the_measurement_lags_the_angle_exactly():
+    # lag() against small Euler steps of tau y' = x - y, x straight between irregular samples
+    from minseg_tui.model.check.simulate import lag
+
+    rng = np.random.default_rng(3)
+    t = np.cumsum(np.r_[0.0, rng.uniform(0.009, 0.012, 800)])
+    x = 3.0 * np.sin(2.0 * t) + t
+    tau, dt = 0.03, 2e-5
+    fine_t = np.arange(0.0, t[-1], dt)
+    fine_x = np.interp(fine_t, t, x)
+    y = np.empty(fine_t.size)
+    y[0] = x[0] - tau * (x[1] - x[0]) / (t[1] - t[0])
+    for k in range(1, y.size):
+        y[k] = y[k - 1] + dt / tau * (fine_x[k - 1] - y[k - 1])
+    assert np.max(np.abs(lag(t, x, tau) - np.interp(t, fine_t, y))) < 1e-3
+    # far shorter than a sample, and far longer than the log: no overflow, the right limits
+    assert np.allclose(lag(t, x, 1e-7), x, atol=1e-4)
+    assert np.all(np.isfinite(lag(t, x, 50.0)))

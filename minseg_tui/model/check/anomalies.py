@@ -306,13 +306,30 @@ def gaps(t: FloatArray, ts: float, regular: bool = True) -> Anomaly | None:
 
 
 def disturbance(
-    t: FloatArray, u: FloatArray, start: int, end: int, size: float, level: float
+    t: FloatArray,
+    u: FloatArray,
+    start: int,
+    end: int,
+    size: float,
+    level: float,
+    left: tuple[int, int] | None = None,
 ) -> Anomaly:
     """The sentence for a disturbance over rows start..end (exclusive): ``size`` the largest
-    change of speed (rad/s, measured - model) against the model's ``level`` there."""
+    change of speed (rad/s, measured - model) against the model's ``level`` there; ``left``:
+    the rows left out of the fit (first, end exclusive) when more than start..end (the
+    departure's onset before it, the wheel's way back to the model after it)."""
     t1 = float(t[min(end, t.size - 1)]) if end < t.size else float(t[-1])
     word = "drops" if size * np.sign(level or 1.0) < 0 else "rises"
     share = f" ({100 * abs(size / level):.0f} %)" if level else ""
+    if left is None or left == (start, end):
+        out = "those rows were left out of the fit"
+    else:
+        a, b = left
+        out = (
+            f"the rows from t = {t[a]:.3f} s to {t[min(b, t.size) - 1]:.3f} s (the departure, "
+            "and the wheel's way back until the model meets the speed again) were left out of "
+            "the fit"
+        )
     return Anomaly(
         "disturbance",
         int(start),
@@ -321,7 +338,7 @@ def disturbance(
         "rad/s",
         f"from t = {t[start]:.3f} s to {t1:.3f} s the speed {word} by {abs(size):.3g} rad/s{share} "
         f"while the input stays at {u[start]:g} V, and comes back: something other than the "
-        "input moved the wheel (a hand on it, a snag); those rows were left out of the fit",
+        f"input moved the wheel (a hand on it, a snag); {out}",
         t_end=t1,
         row_end=int(end),
     )
@@ -356,14 +373,21 @@ def gap_starts(t: FloatArray, ts: float) -> list[int]:
 
 
 def logging_artefact(
-    t: FloatArray, row: int, end: int, size: float, at: int | None = None
+    t: FloatArray,
+    row: int,
+    end: int,
+    size: float,
+    at: int | None = None,
+    left: tuple[int, int] | None = None,
 ) -> Anomaly:
     """The sentence for a spike right after a gap in the sample times (``at``: the row after
-    the gap, default ``row``), with rows row..end (exclusive) left out of the fit: the
-    logger's clock and its encoder read disagree there, the wheel did not move so."""
+    the gap, default ``row``), with rows row..end (exclusive) left out of the fit (or the
+    rows ``left``, first and end exclusive, when given): the logger's clock and its encoder
+    read disagree there, the wheel did not move so."""
     at = row if at is None else at
     gap = float(t[at] - t[at - 1]) if at > 0 else 0.0
-    out = f"row {row}" if end - row <= 1 else f"rows {row}-{end - 1}"
+    a, b = (row, end) if left is None else left
+    out = f"row {a}" if b - a <= 1 else f"rows {a}-{b - 1}"
     return Anomaly(
         "logging_artefact",
         int(row),

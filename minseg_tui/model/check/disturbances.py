@@ -5,15 +5,20 @@ starts and ends abruptly, and leaves the rest of the log fitting well. It is fou
 the residual of a model within those stretches (after the step has settled, or, against a
 model that follows the steps, from a few rows after it), against the stretch's own level
 and the noise: a run of rows whose running mean departs by more than ``MIN_SHARE`` of the
-speed there and ``SIGMAS`` times the noise of that mean, with quiet rows before it. Its rows (and the recovery
-after it, until the residual is back within the noise) are fenced off: left out of the
-fit, and never turned into a cause.
+speed there and ``SIGMAS`` times the noise of that mean, with quiet rows before it. Its rows
+are fenced off (left out of the fit, and never turned into a cause) together with its onset
+before them and the wheel's recovery after them: the rows until the model meets the data
+again, within ``CALM`` times the residual's own spread in the settled stretches, across a
+step of the input if the recovery runs on past one. A wheel a hand let go of comes back
+with the motor's own time constant from a speed the model does not know; left in, that
+recovery is a slow error that the whitened residual (a leaky sum, much like an angle)
+carries on for seconds, into the comparison of the causes.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -43,11 +48,39 @@ class Disturbance:
     end: int
     size: float
     level: float
+    until: int = -1
+    """End (exclusive) of the rows left out: ``end`` and the wheel's recovery after it, until
+    the model rejoins the data (-1: ``end``)."""
+
+    since: int = -1
+    """First row left out: ``start``, or earlier where the departure already shows above
+    the model's calm band (-1: ``start``)."""
+
+    @property
+    def fence_end(self) -> int:
+        return max(self.end, self.until)
+
+    @property
+    def fence_start(self) -> int:
+        return self.start if self.since < 0 else min(self.start, self.since)
 
 
 def settle_rows(T: float, delay: float, taps: int, ts: float) -> int:
     """Rows after a step until the response has settled: 5 T plus the delay and the filter."""
     return max(3, int(math.ceil((5.0 * T + delay) / ts)) + taps)
+
+
+def _spans(u: FloatArray, settle: int) -> list[tuple[int, int]]:
+    """The settled part (from ``settle`` rows after its step) of every driven stretch long
+    enough to hold a disturbance, as (first row, end row exclusive)."""
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    bounds = np.concatenate(([0], change, [u.size]))
+    spans = [
+        (int(a) + settle if a > 0 else int(a) + 1, int(b))
+        for a, b in zip(bounds[:-1], bounds[1:], strict=True)
+        if u[a] != 0
+    ]
+    return [(a0, b) for a0, b in spans if b - a0 >= 4 * MIN_ROWS]
 
 
 def find(
@@ -59,6 +92,7 @@ def find(
     noise: float,
     own_level: bool = True,
     carry: int = 0,
+    recover: int = 0,
 ) -> list[Disturbance]:
     """Disturbances in the settled part of every driven stretch (see the module docstring).
 
@@ -68,21 +102,16 @@ def find(
     median (a model that misses the levels), else against the median of all the settled
     rows (a model that fits: a long disturbance cannot shift its own reference); ``carry``:
     rows the measured speed carries a disturbance on after it ends (an average over that
-    many samples).
+    many samples); ``recover``: rows at most the wheel takes to rejoin the model after a
+    disturbance lets go (see :func:`rejoin`).
     """
-    change = np.flatnonzero(np.diff(u) != 0) + 1
-    bounds = np.concatenate(([0], change, [u.size]))
-    spans = [
-        (a + settle if a > 0 else a + 1, b)
-        for a, b in zip(bounds[:-1], bounds[1:], strict=True)
-        if u[a] != 0
-    ]
-    spans = [(a0, b) for a0, b in spans if b - a0 >= 4 * MIN_ROWS]
+    spans = _spans(u, settle)
     common = float(np.median(np.concatenate([residual[a0:b] for a0, b in spans]))) if spans else 0.0
+    levels = [float(np.median(residual[a0:b])) if own_level else common for a0, b in spans]
+    band = _calm_band(residual, spans, levels, noise)
     out: list[Disturbance] = []
-    for a0, b in spans:
+    for (a0, b), level in zip(spans, levels, strict=True):
         seg = residual[a0:b]
-        level = float(np.median(seg)) if own_level else common
         dev = seg - level
         speed = float(np.median(np.abs(pred[a0:b])))
         thr = max(SIGMAS * noise / math.sqrt(SMOOTH), MIN_SHARE * speed)
@@ -109,16 +138,128 @@ def find(
                 if s >= 2:  # quiet rows before it: it starts inside the stretch
                     big = int(np.argmax(np.abs(dev[s : e + 1]))) + s
                     end = min(a0 + e + 2 + carry, u.size)
-                    out.append(Disturbance(a0 + s, end, float(dev[big]), float(pred[a0 + big])))
+                    whole = residual - level
+                    out.append(
+                        Disturbance(
+                            a0 + s,
+                            end,
+                            float(dev[big]),
+                            float(pred[a0 + big]),
+                            rejoin(whole, end, band, recover),
+                            onset(whole, a0 + s, band, min(recover, s + settle)),
+                        )
+                    )
             k = j + 1
     return out
+
+
+CALM = 3.0
+"""The model has rejoined the data when the running mean of the residual is back within
+this many times its own spread in the settled stretches (a robust sigma: most rows there
+hold no disturbance)."""
+
+
+def _calm_band(
+    residual: FloatArray,
+    spans: list[tuple[int, int]],
+    levels: list[float],
+    noise: float,
+    keep: NDArray[np.bool_] | None = None,
+) -> float:
+    """How far (rad/s) the running mean of the residual strays from its level in the
+    settled stretches (on the rows ``keep``, default all): ``CALM`` robust sigmas, at most
+    twice the noise of that mean."""
+    parts = []
+    for (a0, b), lv in zip(spans, levels, strict=True):
+        sm = np.convolve(residual[a0:b] - lv, np.ones(SMOOTH) / SMOOTH, mode="same")
+        parts.append(sm if keep is None else sm[keep[a0:b]])
+    sm_all = np.concatenate(parts) if parts else np.zeros(0)
+    cap = 2.0 * noise / math.sqrt(SMOOTH)
+    if sm_all.size < 4 * MIN_ROWS:
+        return cap
+    return min(CALM * 1.4826 * float(np.median(np.abs(sm_all))), cap)
+
+
+def recovered(
+    found: list[Disturbance],
+    u: FloatArray,
+    residual: FloatArray,
+    keep: NDArray[np.bool_],
+    settle: int,
+    noise: float,
+    recover: int,
+) -> list[Disturbance]:
+    """``found`` with the onset and the end of the recovery of each found again against
+    ``residual`` (measured - model, rad/s) of a model fitted without their rows (``keep``
+    False there, and on other rows left out): one fitted with them bends towards the hand
+    and misjudges where the wheel rejoins it. ``settle``: rows after a step before the
+    stretch counts as settled; ``recover``: rows at most the recovery (and the onset)
+    takes."""
+    if not found:
+        return found
+    spans = _spans(u, settle)
+    rows = [np.flatnonzero(keep[a0:b]) + a0 for a0, b in spans]
+    kept = np.concatenate(rows) if rows else np.zeros(0, dtype=int)
+    level = float(np.median(residual[kept])) if kept.size else 0.0
+    band = _calm_band(residual, spans, [level] * len(spans), noise, keep)
+    dev = residual - level
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+
+    def lead(d: Disturbance) -> int:
+        # never back past the step of its own stretch: the input stays the same throughout
+        before = change[change <= d.start]
+        return max(min(recover, d.start - (int(before[-1]) if before.size else 0) - 1), 0)
+
+    return [
+        replace(
+            d, until=rejoin(dev, d.end, band, recover), since=onset(dev, d.start, band, lead(d))
+        )
+        for d in found
+    ]
+
+
+def rejoin(dev: FloatArray, end: int, band: float, recover: int) -> int:
+    """The row (exclusive) from which the model rejoins the data after a disturbance that
+    ends at row ``end``: the first of ``MIN_ROWS`` rows whose running mean of ``dev`` (the
+    residual against its settled level, rad/s) lies within ``band``, at most ``recover``
+    rows on. The wheel a hand let go of recovers with the motor's own time constant, from
+    a speed the model does not know, and the recovery runs on across a step of the input;
+    left in, it is a slow error the whitened residual piles up."""
+    last = min(end + recover, dev.size)
+    if last <= end:
+        return end
+    sm = np.abs(np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same"))
+    calm = 0
+    for k in range(end, last):
+        calm = calm + 1 if sm[k] <= band else 0
+        if calm >= MIN_ROWS:
+            return k - MIN_ROWS + 1
+    return last
+
+
+def onset(dev: FloatArray, start: int, band: float, lead: int) -> int:
+    """The first row of the departure that a disturbance found from row ``start`` begins
+    with: going back from ``start`` (at most ``lead`` rows), the rows whose running mean of
+    ``dev`` still departs the same way by more than ``band`` and no more than the row after
+    it (a hand's departure grows from the touch on; noise or a miss of the model before it
+    does not keep shrinking into the past). Rows found by a threshold far above the noise
+    start late."""
+    first = max(start - lead, 0)
+    if start <= first or start >= dev.size:
+        return start
+    sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")
+    sign = 1.0 if sm[start] >= 0 else -1.0
+    k = start
+    while k > first and sign * sm[k - 1] > band and sign * sm[k - 1] <= sign * sm[k]:
+        k -= 1
+    return k
 
 
 def fence(n: int, found: list[Disturbance]) -> FloatArray:
     """Row weights: 0 on the disturbances' rows, 1 elsewhere."""
     w = np.ones(n)
     for d in found:
-        w[d.start : d.end] = 0.0
+        w[d.fence_start : d.fence_end] = 0.0
     return w
 
 
@@ -218,7 +359,7 @@ def split_local(
         return found, []
     k = np.asarray(keep, dtype=bool).copy()
     for d in found:
-        k[d.start : d.end] = False
+        k[d.fence_start : d.fence_end] = False
     if not np.any(k):
         return found, []
     r = np.where(k, residual, 0.0)

@@ -81,7 +81,8 @@ CANDIDATES: tuple[Candidate, ...] = (
         "s",
         "T2",
         0.0,
-        "an extra pole (for instance the armature's L/R) delays the torque",
+        "an extra pole delays the torque (the armature's L/R, a driver's own lag) or lags the "
+        "reading (a compliant coupling to the encoder, a first-order filter of the speed)",
         label="second pole",
     ),
     Candidate(
@@ -90,8 +91,9 @@ CANDIDATES: tuple[Candidate, ...] = (
         "rad/s^2",
         "rate",
         math.inf,
-        "the drive caps the current, so the speed ramps at a constant acceleration a_max until "
-        "the back-EMF takes over",
+        "the drive caps the current, so the speed ramps at a_max (less what the wheel's own "
+        "drag takes as it speeds up) until the back-EMF takes over (on some drives braking "
+        "after a step down is capped too)",
         log_scale=True,
         label="current limit",
     ),
@@ -151,7 +153,8 @@ def ranges(t: FloatArray, u: FloatArray, ts: float, T: float) -> dict[str, Range
     first-order time constant T (s).
 
     u_c: up to the smallest level the log drives at; delay: up to 0.8 of the shortest stretch
-    of constant input that follows a step; taps: up to 40 and that stretch; T_coast:
+    of constant input that follows a step; taps: up to 40 and the longest such stretch (an
+    average longer than a short stretch still shows, as a ramp cut off by the next step); T_coast:
     from T to 30 s; T2: up to 3 T; rate (V/s): from 1/1000 of the largest step over T/10
     (beyond, the cap never holds).
     """
@@ -163,14 +166,15 @@ def ranges(t: FloatArray, u: FloatArray, ts: float, T: float) -> dict[str, Range
     lengths = [float(ends[b] - t[a]) for a, b in zip(bounds[:-1], bounds[1:], strict=True)]
     inner = lengths[:-1] if len(lengths) > 1 else lengths  # the last one may be cut short
     shortest = min(inner) if inner else float(t[-1] - t[0])
-    rows = max(2, int(round(shortest / ts)))
+    longest = max(inner) if inner else float(t[-1] - t[0])
+    rows_long = max(2, int(round(longest / ts)))
     jump = float(np.max(np.abs(np.diff(u)))) if u.size > 1 else 1.0
     jump = max(jump, float(np.max(np.abs(u))), 1e-9)
     rate_hi = jump / (0.1 * T)
     return {
         "coulomb_friction": Range(0.0, 0.98 * u_min, False),
         "dead_time": Range(0.0, max(0.8 * shortest, 3.0 * ts), False),
-        "velocity_filter": Range(1.0, float(min(40, rows)), False),
+        "velocity_filter": Range(1.0, float(min(40, rows_long)), False),
         "coast_on_zero": Range(max(0.5 * T, 0.002), 30.0, True),
         "second_pole": Range(0.0, 3.0 * T, False),
         "current_limit": Range(rate_hi / 1000.0, rate_hi, True),

@@ -234,6 +234,22 @@ def _pole(log: Log, ext: Fit) -> str:
             f": {_ms(w * log.ts)} after the step the speed has risen {np.median(got):.3g} rad/s "
             f"where the first-order model rises {np.median(model):.3g} rad/s"
         )
+    if ext.effects.pole_measured:
+        where = [
+            w
+            for c, w in (
+                ("coulomb_friction", "the wheel stops"),
+                ("coast_on_zero", "it coasts"),
+                ("current_limit", "the cap holds"),
+            )
+            if c in ext.causes
+        ]
+        return text + (
+            f"; an extra pole of {_ms(t2)} on the measurement (a compliant coupling to the "
+            "encoder, or a first-order filter of the speed) lags what the encoder reads: on "
+            f"the drive it fits worse where {' and where '.join(where) or 'the effects act'} "
+            "(a pure delay would show a corner)"
+        )
     return (
         text + f"; an extra pole of {_ms(t2)} delays the torque (a pure delay would show a corner)"
     )
@@ -252,9 +268,15 @@ def _limit(log: Log, ext: Fit) -> str:
             f"; the same motor without a cap would start at K u/T = "
             f"{abs(ext.K) * jump / ext.T:.3g} rad/s^2, steepest at once"
         )
+    both = (
+        " both ways (braking after a step down is capped too: the speed falls along a ramp "
+        "as well, which a cap on accelerating alone does not fit as well)"
+        if ext.effects.cap_both
+        else ""
+    )
     return (
         f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
-        f"into the plateau{top}: the drive caps the current, a_max = {a:.3g} rad/s^2"
+        f"into the plateau{top}: the drive caps the current{both}, a_max = {a:.3g} rad/s^2"
     )
 
 

@@ -16,8 +16,12 @@ For given T and effect parameters the response is proportional to K, which is so
 linear least squares. The other parameters (T on a log scale, each effect's own) are
 started from a coarse grid and polished jointly by Levenberg-Marquardt within their
 ranges (:func:`minseg_tui.model.optimize.least_squares`, the derivatives by forward
-differences); the moving average's length is an integer, scanned cheaply
-(the angle does not depend on it). Rows with weight 0 (wild samples, a hand on the wheel,
+differences); the moving average's length is an integer, scanned cheaply (the angle does
+not depend on it). Where the side of an extra pole shows (with dry friction, a coast or a
+cap, it matters whether the pole acts on the drive or on the measurement) both sides are
+fitted and the better kept, and a current limit is fitted capped while accelerating only
+and capped both ways, with the share of viscous drag that bends its ramp (:data:`DRAG`) as
+a parameter of its own. Rows with weight 0 (wild samples, a hand on the wheel,
 held-out steps) do not count: their residual is set to zero before the whitening.
 """
 
@@ -25,7 +29,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -37,7 +41,14 @@ from minseg_tui.model.check.effects import (
     field_value,
     reported,
 )
-from minseg_tui.model.check.simulate import Effects, Stretches, measured, pieces, response
+from minseg_tui.model.check.simulate import (
+    Effects,
+    Stretches,
+    angle_at,
+    measured,
+    pieces,
+    response,
+)
 from minseg_tui.model.optimize import golden, least_squares
 
 FloatArray = NDArray[np.float64]
@@ -240,7 +251,19 @@ def _axes(prob: Problem, causes: Sequence[str], rng: dict[str, Range]) -> list[_
         else:
             unit = u_scale if c == "coulomb_friction" else prob.ts
             out.append(_Axis(c, r.lo / unit, r.hi / unit, 5e-3, False, unit))
+    if "current_limit" in causes:
+        out.append(_Axis(DRAG, 0.0, DRAG_MAX, 5e-3, False, 1.0))
     return out
+
+
+DRAG = "cap_drag"
+"""The axis (and the key among a fit's values) of the current limit's second parameter: the
+share of the damping that is viscous drag (:attr:`Effects.drag`), which bends the capped
+ramp. A capped ramp is straight only on a motor without drag; 0 is that motor."""
+
+DRAG_MAX = 0.5
+"""Largest drag share fitted (the drag as large as the back-EMF's braking; a motor's viscous drag
+is far below that)."""
 
 
 _NO_COEF = np.zeros(0)
@@ -259,6 +282,8 @@ class Model:
         self.hi = np.array([a.hi for a in self.axes])
         self.step = np.array([a.step for a in self.axes])
         self.taps = 1
+        self.pole_measured = False
+        self.cap_both = False
         self.evaluations = 0
         self._last: tuple[bytes, FloatArray] = (b"", np.zeros(0))
 
@@ -267,15 +292,23 @@ class Model:
         values: dict[str, float] = {
             a.cause: a.value(float(v)) for a, v in zip(self.axes[1:], x[1:], strict=True)
         }
+        drag = values.pop(DRAG, 0.0)
         if "velocity_filter" in self.causes:
             values["velocity_filter"] = float(self.taps)
-        return T, effects_of(values)
+        fx = effects_of(values)
+        if drag > 0.0:
+            fx = replace(fx, drag=drag)
+        if self.pole_measured and "second_pole" in self.causes:
+            fx = replace(fx, pole_measured=True)
+        if self.cap_both and "current_limit" in self.causes:
+            fx = replace(fx, cap_both=True)
+        return T, fx
 
     def x_of(self, T: float, values: dict[str, float]) -> FloatArray:
         """The vector of T (s) and {cause: Effects field value}."""
         x = [self.axes[0].coord(T)]
         for a in self.axes[1:]:
-            x.append(a.coord(values[a.cause]))
+            x.append(a.coord(values.get(DRAG, 0.0) if a.cause == DRAG else values[a.cause]))
         return np.array(x)
 
     def residual(self, x: FloatArray) -> FloatArray:
@@ -390,8 +423,7 @@ class Model:
         top = max(tries)
         p = self.prob
         tb = p.t[0] - p.ts * np.arange(top, 0, -1)
-        table = pieces(p.st, T, fx, p.z0)
-        theta = table.angle(np.concatenate((tb, p.t)) - fx.delay)
+        theta = angle_at(pieces(p.st, T, fx, p.z0), np.concatenate((tb, p.t)), fx)
         self.evaluations += 1
         best, best_sse = 1, math.inf
         for n in tries:
@@ -424,14 +456,60 @@ def fit_causes(
     max_iter: int = 25,
     scan: bool | None = True,
     polish: tuple[str, ...] = (),
+    pole: bool | None = None,
+    cap: bool | None = None,
 ) -> Fit:
     """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
     ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
     among the causes its length is first scanned in full (``scan`` True), else only around
     the start's (False), or both ways (None). For each cause in ``polish`` the best two
     starts with other values of it are polished too (a cause that does not act at the best
-    start has no gradient to grow by), and the best result kept."""
+    start has no gradient to grow by), and the best result kept.
+
+    ``pole``: the extra pole on the measurement (True) or on the drive (False); None: both
+    when a cause that is not linear (dry friction, a coast, a cap) acts with it, where the
+    side shows, and the better kept. ``cap``: the current limit holds while braking too
+    (True) or only while accelerating (False); None: both tried when it is among the causes."""
+    sides = [bool(pole)]
+    if pole is None and "second_pole" in causes and NONLINEAR & set(causes):
+        sides = [False, True]
+    caps = [bool(cap)]
+    if cap is None and "current_limit" in causes:
+        caps = [False, True]
+    out: Fit | None = None
+    for side in sides:
+        for both in caps:
+            if out is None:
+                f = _fit_side(prob, causes, rng, starts, max_iter, scan, polish, side, both)
+            else:
+                # the other variant from where the first ended (and the best start): the
+                # variants differ only where the wheel stops, coasts or is capped
+                again = [(out.T, values_of(out)), *starts[:1]]
+                f = _fit_side(prob, causes, rng, again, max_iter, False, (), side, both)
+            if out is None or f.sse_white < out.sse_white:
+                out = f
+    assert out is not None
+    return out
+
+
+NONLINEAR = frozenset({"coulomb_friction", "coast_on_zero", "current_limit"})
+"""Causes after which an extra pole on the drive and one on the measurement differ."""
+
+
+def _fit_side(
+    prob: Problem,
+    causes: Sequence[str],
+    rng: dict[str, Range],
+    starts: Sequence[tuple[float, dict[str, float]]],
+    max_iter: int,
+    scan: bool | None,
+    polish: tuple[str, ...],
+    pole_measured: bool,
+    cap_both: bool,
+) -> Fit:
     m = Model(prob, causes, rng)
+    m.pole_measured = pole_measured
+    m.cap_both = cap_both
     scored = []
     for T, values in starts:
         if "velocity_filter" in causes:
@@ -468,15 +546,27 @@ def fit_causes(
 
 
 def values_of(f: Fit) -> dict[str, float]:
-    """{cause: Effects field value} of a fit."""
-    return {c: f.value(c) for c in f.causes}
+    """{cause: Effects field value} of a fit (and the cap's drag share under ``DRAG``)."""
+    out = {c: f.value(c) for c in f.causes}
+    if "current_limit" in f.causes:
+        out[DRAG] = f.effects.drag
+    return out
 
 
 def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fit:
     """``f``'s causes fitted again on ``prob`` (other weights), started from ``f``."""
     if not f.causes:
         return fit_baseline_near(prob, rng, f.T)
-    return fit_causes(prob, f.causes, rng, [(f.T, values_of(f))], max_iter, scan=False)
+    return fit_causes(
+        prob,
+        f.causes,
+        rng,
+        [(f.T, values_of(f))],
+        max_iter,
+        scan=False,
+        pole=f.effects.pole_measured,
+        cap=f.effects.cap_both,
+    )
 
 
 def fit_baseline_near(prob: Problem, rng: dict[str, Range], T: float) -> Fit:
@@ -502,6 +592,8 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     """
     m = Model(prob, f.causes, rng)
     m.taps = f.effects.taps
+    m.pole_measured = f.effects.pole_measured
+    m.cap_both = f.effects.cap_both
     x = m.x_of(f.T, values_of(f))
     T, fx = m.effects(x)
     g = m.response(T, fx)
@@ -535,6 +627,8 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
         if a.cause == "T":
             out["T"] = (math.exp(lo_x), math.exp(hi_x))
             continue
+        if a.cause == DRAG:
+            continue
         name = BY_CAUSE[a.cause].param
         lo_v, hi_v = (
             (math.exp(lo_x), math.exp(hi_x)) if a.log_scale else (lo_x * a.unit, hi_x * a.unit)
@@ -557,7 +651,7 @@ def _taps_interval(m: Model, x: FloatArray, f: Fit, tol: float) -> tuple[float, 
     hi = int(m.rng["velocity_filter"].hi)
     top = hi
     tb = p.t[0] - p.ts * np.arange(top, 0, -1)
-    theta = pieces(p.st, T, fx, p.z0).angle(np.concatenate((tb, p.t)) - fx.delay)
+    theta = angle_at(pieces(p.st, T, fx, p.z0), np.concatenate((tb, p.t)), fx)
     ok = []
     for n in range(1, hi + 1):
         g = measured(theta[top:], p.t, theta[top - n : top], p.ts, n, p.over_interval)

@@ -24,6 +24,7 @@ from minseg_tui.model.check.fit import (
     Fit,
     Problem,
     fit_baseline,
+    fit_causes,
     intervals,
     refit,
     whiten,
@@ -120,7 +121,9 @@ def check(
     rng = ranges(head.t, head.u, ts, base.T)
 
     # a hand on the wheel, against the baseline: fenced off before the causes are chosen
-    found = dist.find(t, u, full.y - base.predict(full), base.predict(full), settle, noise)
+    found = dist.find(
+        t, u, full.y - base.predict(full), base.predict(full), settle, noise, recover=settle
+    )
     found, _, _ = dist.split_repeated(found, u)  # the baseline's own miss: the causes' business
     if found:
         full, head, base = _fenced(full, found, rng0)
@@ -165,19 +168,26 @@ def check(
     settle = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
     near = 3  # the model chosen follows the steps: look from a few rows after each
-    found2 = dist.find(
-        t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1
-    )
     rise = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
+    found2 = dist.find(
+        t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1, rise
+    )
     found2, repeated, repeated_at = dist.split_repeated(found2, u, rise)
     # a disturbance is local: the model chosen fits the rest of the log well below it
     found2, _ = dist.split_local(found2, full.y - ext.predict(full), full.weights > 0)
     if _rows(found2) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
-        full = full.with_weights(
-            dist.fence(y.size, found) * _wild_weights(y.size, wild, taps) * pre
+        others = _wild_weights(y.size, wild, taps) * pre
+        full = full.with_weights(dist.fence(y.size, found) * others)
+        head = full.head(MAX_FIT_ROWS)
+        # where the wheel rejoins the model, judged against the model fitted without the
+        # disturbance's rows
+        apart = refit(head, ext, rng)
+        found = dist.recovered(
+            found, u, full.y - apart.predict(full), full.weights > 0, rise, noise, rise
         )
+        full = full.with_weights(dist.fence(y.size, found) * others)
         head = full.head(MAX_FIT_ROWS)
         base = fit_baseline(head, rng0)
         sel = select(head, base, rng, noise, samp.column_floor, names)
@@ -222,7 +232,7 @@ def replace_y(p: Problem, y: FloatArray) -> Problem:
 
 
 def _rows(found: list[dist.Disturbance]) -> list[tuple[int, int]]:
-    return [(d.start, d.end) for d in found]
+    return [(d.start, d.fence_end) for d in found]
 
 
 def _wild_weights(n: int, wild: list[int], taps: int) -> FloatArray:
@@ -328,7 +338,13 @@ def _report(
     devs = deviations(u, np.where(keep_dev, y - b_pred, 0.0), base.T, samp.ts, keep_dev)
     misses = miss is not None
     alts = rivals(sel, head, rng, noise, samp.column_floor) if named else []
+    swaps = {
+        c: _swap_ratio(sel, ext, head, rng, c, other)
+        for c, other in (("dead_time", "second_pole"), ("second_pole", "dead_time"))
+        if c in ext.causes and other not in ext.causes
+    }
     finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full, alts)
+    finding = _plain_words(finding, swaps)
 
     # anomalies, against the model the finding settles on
     res = full.y - e_pred
@@ -343,11 +359,30 @@ def _report(
     found = [d for d in found if d not in artefacts]
     anomalies += [
         an.logging_artefact(
-            t, d.start, d.end, d.size, next((g for g in starts if d.start <= g < d.end), None)
+            t,
+            d.start,
+            d.end,
+            d.size,
+            next((g for g in starts if d.start <= g < d.end), None),
+            (d.fence_start, min(d.fence_end, t.size)),
         )
         for d in artefacts
     ]
-    anomalies += [an.disturbance(t, u, d.start, d.end, d.size, d.level) for d in found]
+    # a hand is reported from where the speed leaves the model, but no further back from
+    # where its departure crossed the threshold than an average and a running mean reach
+    reach = ext.effects.taps + dist.SMOOTH
+    anomalies += [
+        an.disturbance(
+            t,
+            u,
+            max(d.fence_start, d.start - reach),
+            d.end,
+            d.size,
+            d.level,
+            (d.fence_start, min(d.fence_end, t.size)),
+        )
+        for d in found
+    ]
     if not misses:
         cr = an.creep(t, u, np.where(keep, res, 0.0), e_pred, ext.T + ext.effects.delay, samp.ts)
         if cr:
@@ -528,6 +563,73 @@ def _params_text(p: dict[str, float]) -> str:
     return ", ".join(f"{k} = {format_number(v)} {UNITS.get(k, '')}".rstrip() for k, v in p.items())
 
 
+POLE_OR_DELAY = 1.5
+"""A named delay is called pure (and a named pole said to show no corner) only when the
+other one, fitted in its place, leaves at least this many times the whitened residual."""
+
+
+def _swap_ratio(
+    sel: Selection,
+    ext: Fit,
+    head: Problem,
+    rng: dict,  # type: ignore[type-arg]
+    out: str,
+    into: str,
+) -> float:
+    """How many times the whitened residual of ``ext`` the same model leaves with cause
+    ``out`` replaced by ``into`` (fitted jointly again; from the fits the search made when
+    it made that one)."""
+    want = frozenset((*[c for c in ext.causes if c != out], into))
+    pool = [*sel.singles.values(), *sel.tried]
+    done = [f for f in pool if frozenset(f.causes) == want and math.isfinite(f.sse_white)]
+    if done:
+        f = min(done, key=lambda x: x.sse_white)
+    else:
+        vals = {c: ext.value(c) for c in ext.causes if c != out}
+        guess = ext.value(out) if out in ("dead_time", "second_pole") else 0.0
+        vals[into] = max(guess, head.ts)
+        f = fit_causes(head, tuple(want), rng, [(ext.T, vals), (0.7 * ext.T, vals)], scan=False)
+    return f.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
+
+
+_PURE_DELAY = "(a pure delay; an extra pole would start at once, only more slowly)"
+_NO_CORNER = " (a pure delay would show a corner)"
+
+
+def _plain_words(finding: Finding, swaps: dict[str, float]) -> Finding:
+    """The finding with the claims a delay and a pole make against each other stated with
+    the figure behind them: never 'a pure delay' when a pole in its place fits nearly as
+    well (within ``POLE_OR_DELAY`` times the whitened residual), and the reverse."""
+
+    def fix(text: str) -> str:
+        r = swaps.get("dead_time")
+        if r is not None and _PURE_DELAY in text:
+            text = text.replace(
+                _PURE_DELAY,
+                f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened "
+                "residual)"
+                if r >= POLE_OR_DELAY
+                else f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
+                "the whitened residual: this log hardly tells a delay from a pole)",
+            )
+        r = swaps.get("second_pole")
+        if r is not None and _NO_CORNER in text:
+            text = text.replace(
+                _NO_CORNER,
+                f" (a pure delay in its place leaves {r:.1f} times the whitened residual)"
+                if r >= POLE_OR_DELAY
+                else f" (though a pure delay in its place leaves only {r:.2f} times the "
+                "whitened residual: this log hardly tells a pole from a delay)",
+            )
+        return text
+
+    return replace(
+        finding,
+        evidence=fix(finding.evidence),
+        others=[replace(o, evidence=fix(o.evidence)) for o in finding.others],
+    )
+
+
 def _finding(
     sel: Selection,
     base: Fit,
@@ -578,9 +680,13 @@ def _finding(
             Caveat(
                 "cannot_tell",
                 "velocity_filter" if "velocity_filter" in ext.causes else "second_pole",
-                "this speed is smooth, not a difference of encoder counts: an averaging filter on "
-                "the speed and an extra pole in the motor look alike here, so the log cannot tell "
-                "them apart; the fit prefers the one named",
+                "this speed is smooth, not a difference of encoder counts: an average of the "
+                "speed and a first-order filter of it (a pole on the measurement) are both "
+                "filters of the reading, and the pole named acts there; the fit prefers it"
+                if ext.effects.pole_measured and "velocity_filter" not in ext.causes
+                else "this speed is smooth, not a difference of encoder counts: an averaging "
+                "filter on the speed and an extra pole in the motor look alike here, so the log "
+                "cannot tell them apart; the fit prefers the one named",
             )
         )
     col = samp.column_floor(taps)
@@ -673,14 +779,18 @@ def _finding(
                 "cannot_tell",
                 causes[0],
                 f"this log cannot tell {in_words('+'.join(order))} from "
-                f"{in_words('+'.join(causes))}: the second leaves {ratio:.2f} times the "
+                f"{in_words('+'.join(causes))}: "
                 + (
-                    "whitened residual"
+                    f"the second leaves {ratio:.2f} times the whitened residual of the first"
                     if f.effects.taps == ext.effects.taps
-                    else "squared speed error (their averages differ, so their whitened residuals "
-                    "cannot be compared)"
+                    else f"the second leaves {ratio:.2f} times the squared speed error (their "
+                    "averages differ, so their whitened residuals cannot be compared) of the first"
+                    if ratio >= 1.0
+                    else f"the second misses the speed itself slightly less ({ratio:.2f} times "
+                    "the squared speed error of the first; their averages differ, so their "
+                    "whitened residuals, where the first is ahead, cannot be compared)"
                 )
-                + f" of the first; {_what_would_tell(order, causes)}",
+                + f"; {_what_would_tell(order, causes)}",
             )
         )
     if ambiguous:

@@ -266,9 +266,15 @@ def scatter(
     for e in (np.flatnonzero(np.diff(u) != 0) + 1).tolist():
         ok[max(e - m // 2, 0) : e + settle] = False
     ok[: m // 2] = ok[n - m // 2 :] = False
-    mv = ok & np.asarray(moving, dtype=bool)
+    turning = np.asarray(moving, dtype=bool)
+    mv = ok & turning
     if np.count_nonzero(mv) >= 10:
         ok = mv
+    elif np.count_nonzero(turning) >= 10:
+        # the wheel stands still wherever the steps have settled (short stretches, a long
+        # average, a stop): the rows where it turns, unsettled or not, hold the noise
+        ok = turning.copy()
+        ok[: m // 2] = ok[n - m // 2 :] = False
     if np.count_nonzero(ok) < 10:
         ok = np.ones(n, dtype=bool)
     d = (y - np.convolve(y, np.ones(m) / m, mode="same"))[ok]

@@ -4,9 +4,10 @@ The input of a step log is held between samples: ``u[k]`` is in force from ``t[k
 ``t[k+1]``. Every effect the check knows keeps the motor piecewise linear: dry friction
 (a constant deceleration while the wheel turns, sticking at rest), coasting at zero
 command (its own time constant), an extra pole on the drive, and a current limit (a cap
-on the acceleration the drive gives in the direction of motion). Within one *mode*
+on the acceleration the drive gives in the direction of motion, or both ways: braking
+capped too). Within one *mode*
 (coasting, stuck, capped, or driven linearly) the speed is a constant plus at most two
-exponentials, or a straight ramp, so the simulation walks the constant-input stretches
+exponentials, or a straight ramp (capped, on a wheel without viscous drag), so the simulation walks the constant-input stretches
 once, finds when the mode changes (a stop, a breakaway, the cap starting or ending: in
 closed form, or by bisection on a function with at most one extremum, which is found in
 closed form) and writes down a table of *pieces*; each gives the wheel angle from its
@@ -15,7 +16,9 @@ start:
     theta(tau) = theta0 + c tau + q tau^2 + A1 T1 (1 - exp(-tau/T1)) + A2 T2 (1 - exp(-tau/T2))
 
 Evaluating the angle at the sample instants is then one vectorised expression, at any
-instants: a dead time is the same table read ``delay`` seconds earlier.
+instants: a dead time is the same table read ``delay`` seconds earlier, and an extra pole
+on the measurement (a compliant coupling, a filtered speed) is the table's angle through a
+first-order lag (:func:`lag`; the angle taken straight between the instants it is read at).
 
 Everything is computed with K = 1 (speeds in V, angles in V s, the current limit as a
 rate in V/s): every response is proportional to K, which the fit solves for linearly.
@@ -67,6 +70,19 @@ class Effects:
     T_coast: float | None = None
     T2: float = 0.0
     rate: float = math.inf
+    cap_both: bool = False
+    """The cap holds while braking too (the drive limits the current's size both ways), not
+    only while it accelerates the wheel in its direction of motion."""
+    pole_measured: bool = False
+    """The extra pole acts on the measurement (a compliant coupling to the encoder, a
+    first-order filter of the speed), after the friction, the coast and the cap, instead
+    of on the drive."""
+    drag: float = 0.0
+    """The share of the driven damping that is the wheel's own viscous drag (T/J_b with
+    J/b the drag's time constant in s, 0 to below 1; the rest is the back-EMF). While the
+    current is capped the back-EMF no longer brakes but the drag still does, so the capped
+    speed bends: w' = rate - drag w/T (not a straight ramp), and the cap lets go when the
+    torque the drive asks for, (v - (1 - drag) w)/T, falls to the cap."""
 
 
 class Pieces:
@@ -172,7 +188,7 @@ def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Piec
     The dead time and the measurement (``fx.delay``, ``fx.taps``) are applied when the
     table is read (:func:`response`).
     """
-    T2 = fx.T2 if fx.T2 > 0.0 else 0.0
+    T2 = fx.T2 if fx.T2 > 0.0 and not fx.pole_measured else 0.0
     if T2 and abs(T2 - T) < 1e-6 * T:
         T2 = T * (1.0 + 1e-6)
     if z0 is None:
@@ -218,11 +234,14 @@ def _stretch(
             left = _stuck(out, s, left, u, uc, T2)
             continue
         sign = math.copysign(1.0, s.w if s.w != 0.0 else drive if drive != 0.0 else u)
-        if math.isfinite(rate) and (s.capping or sign * (drive - s.w) > T * rate * (1.0 + 1e-9)):
+        push = sign * (drive - (1.0 - fx.drag) * s.w)
+        over = T * rate * (1.0 + 1e-9)
+        if math.isfinite(rate) and (s.capping or push > over or (fx.cap_both and -push > over)):
             s.capping = False
-            left = _capped(out, s, left, u, sign, T, T2, uc, rate)
+            d = 1.0 if push > 0.0 else -1.0
+            left = _capped(out, s, left, u, sign, T, T2, uc, rate, d, fx.drag)
         else:
-            left = _linear(out, s, left, u, sign, T, T2, uc, rate)
+            left = _linear(out, s, left, u, sign, T, T2, uc, rate, fx.cap_both, fx.drag)
     out.add(s.t, s.th, 0.0)  # pathological chattering: hold (never met in practice)
 
 
@@ -275,34 +294,71 @@ def _capped(
     T2: float,
     uc: float,
     rate: float,
+    d: float = 1.0,
+    drag: float = 0.0,
 ) -> float:
-    """The current limit holds: a straight ramp, w' = sign (rate - u_c/T), until the drive
-    no longer asks for more than the cap (or, with the cap below friction, the wheel stops)."""
-    acc = sign * (rate - uc / T)
+    """The current limit holds: w' = sign (d rate - u_c/T) - drag w/T (d = 1 while the drive
+    accelerates the wheel, -1 while it brakes it): a straight ramp without drag, else an
+    exponential towards T/drag times the ramp's rate, until the drive no longer asks for
+    more than the cap (or, braking or with the cap below friction, the wheel stops)."""
+    acc = sign * (d * rate - uc / T)
     w0, v0 = s.w, s.v
-    out.add(s.t, s.th, w0, 0.5 * acc)
+    keep = 1.0 - drag  # the share of the speed the back-EMF takes from the drive
+    if drag > 0.0:
+        tc = T / drag
+        w_inf = acc * tc
+        a = w0 - w_inf
+        out.add(s.t, s.th, w_inf, 0.0, a, tc)
+
+        def w_at(tau: float) -> float:
+            return w_inf + a * _exp(-tau / tc)
+
+    else:
+        out.add(s.t, s.th, w0, 0.5 * acc)
+
+        def w_at(tau: float) -> float:
+            return w0 + acc * tau
+
     events = []
+    stop = math.inf
     if sign * acc < 0.0:
-        events.append(abs(w0 / acc))
+        stop = abs(w0 / acc) if drag == 0.0 else tc * math.log(a / -w_inf)
+        events.append(stop)
     if not T2:
-        if sign * acc > 0.0:
-            events.append((sign * (u - w0) - T * rate) / (sign * acc))
+        # d sign (u - keep w) = T rate at w = w_end
+        w_end = (u - d * sign * T * rate) / keep
+        if drag == 0.0:
+            if d * sign * acc > 0.0:
+                events.append((d * sign * (u - w0) - T * rate) / (d * sign * acc))
+        elif d * sign * a < 0.0:
+            # the torque asked for falls only while the speed moves towards w_inf this way
+            ratio = (w_end - w_inf) / a
+            if 0.0 < ratio <= 1.0:
+                events.append(-tc * math.log(ratio))
     else:
 
         def g(tau: float) -> float:
-            return sign * (u + (v0 - u) * _exp(-tau / T2) - w0 - acc * tau) - T * rate
+            return d * sign * (u + (v0 - u) * _exp(-tau / T2) - keep * w_at(tau)) - T * rate
 
-        ext = None
-        if (v0 - u) != 0.0 and -acc * T2 / (v0 - u) > 0.0:
-            x = -T2 * math.log(-acc * T2 / (v0 - u))
-            ext = x if x > 0.0 else None
+        if drag > 0.0:
+            ext = _two_exp_extremum(v0 - u, T2, -keep * a, tc)
+        else:
+            ext = None
+            if (v0 - u) != 0.0 and -acc * T2 / (v0 - u) > 0.0:
+                x = -T2 * math.log(-acc * T2 / (v0 - u))
+                ext = x if x > 0.0 else None
         hit = _first_zero(g, ext, min(left, 50.0 * T2 + 50.0 * T))
         if hit is not None:
             events.append(hit)
     h = min([left, *[e for e in events if e >= 0.0]])
-    s.th += w0 * h + 0.5 * acc * h * h
-    s.w = w0 + acc * h
-    if sign * acc < 0.0 and h == abs(w0 / acc):
+    if drag > 0.0:
+        e = _exp(-h / tc)
+        s.th += w_inf * h + a * tc * (1.0 - e)
+        s.w = w_inf + a * e
+    else:
+        s.th += w0 * h + 0.5 * acc * h * h
+        s.w = w0 + acc * h
+    if h == stop:
         s.w = 0.0
     if T2:
         s.v = u + (v0 - u) * _exp(-h / T2)
@@ -310,8 +366,8 @@ def _capped(
     if h < left and s.w != 0.0:
         # nudge past the switch so the next mode is the linear one
         s.v = s.v if T2 else u
-        if math.isfinite(rate) and sign * (s.v - s.w) > T * rate:
-            s.w = s.v - sign * T * rate
+        if math.isfinite(rate) and d * sign * (s.v - keep * s.w) > T * rate:
+            s.w = (s.v - d * sign * T * rate) / keep
     return left - h
 
 
@@ -325,9 +381,12 @@ def _linear(
     T2: float,
     uc: float,
     rate: float,
+    both: bool = False,
+    drag: float = 0.0,
 ) -> float:
     """Driven, below the cap: T w' = v - w - u_c sgn(w), T2 v' = u - v; ends at a stop (the
-    speed reaches 0 with friction or a cap about), or when the cap starts to hold."""
+    speed reaches 0 with friction or a cap about), or when the cap starts to hold (the
+    torque asked for, (v - (1 - drag) w)/T, reaches the cap)."""
     c = u - sign * uc
     w0, v0 = s.w, s.v
     if T2:
@@ -352,16 +411,35 @@ def _linear(
                 stop_at = hit
         events.append(stop_at)
     cap_at = math.inf
+    keep = 1.0 - drag
     if T2 and math.isfinite(rate):
-        kv = v0 - u - B  # s (v - w) - T rate = sign (u - c + kv e2 - A e1) - T rate
+        # s (v - keep w) - T rate = sign (u - keep c + kv e2 - keep A e1) - T rate
+        kv = v0 - u - keep * B
+        base = u - keep * c
 
-        def g(tau: float) -> float:
-            return sign * (u - c + kv * _exp(-tau / T2) - A * _exp(-tau / T)) - T * rate
+        for d in (1.0, -1.0) if both else (1.0,):
 
-        hit = _first_zero(g, _two_exp_extremum(kv, T2, -A, T), min(left, 50.0 * (T + T2)))
-        if hit is not None:
-            events.append(hit)
-            cap_at = hit
+            def g(tau: float, d: float = d) -> float:
+                return (
+                    d * sign * (base + kv * _exp(-tau / T2) - keep * A * _exp(-tau / T)) - T * rate
+                )
+
+            hit = _first_zero(
+                g, _two_exp_extremum(kv, T2, -keep * A, T), min(left, 50.0 * (T + T2))
+            )
+            if hit is not None:
+                events.append(hit)
+                cap_at = min(cap_at, hit)
+    elif drag > 0.0 and math.isfinite(rate) and A != 0.0:
+        # with drag the torque asked for at the end of a stretch need not be below the cap
+        for d in (1.0, -1.0) if both else (1.0,):
+            if d * sign * A <= 0.0:
+                continue  # the torque asked for falls this way: the cap cannot start
+            e1 = (d * sign * (u - keep * c) - T * rate) / (d * sign * keep * A)
+            if 0.0 < e1 < 1.0:
+                hit = -T * math.log(e1)
+                events.append(hit)
+                cap_at = min(cap_at, hit)
     h = min([left, *events])
     s.capping = h == cap_at and h < left
     e1 = _exp(-h / T)
@@ -414,6 +492,54 @@ def response(
     before the first row is taken too, so a log that starts moving reads right at once."""
     n = fx.taps
     tb = t[0] - ts * np.arange(n, 0, -1)
-    table = pieces(st, T, fx, z0)
-    theta = table.angle(np.concatenate((tb, t)) - fx.delay)
+    theta = angle_at(pieces(st, T, fx, z0), np.concatenate((tb, t)), fx)
     return measured(theta[n:], t, theta[:n], ts, n, over_interval)
+
+
+def angle_at(table: Pieces, times: FloatArray, fx: Effects) -> FloatArray:
+    """The angle the encoder reads at ``times`` (s, ascending; V s at K = 1): the table read
+    ``fx.delay`` earlier, and through the extra pole when it acts on the measurement."""
+    theta = table.angle(times - fx.delay)
+    if fx.pole_measured and fx.T2 > 0.0:
+        theta = lag(times, theta, fx.T2)
+    return theta
+
+
+_LAG_SPAN = 200.0
+"""Time constants the closed-form sum of :func:`lag` covers at once (e^200 stays finite)."""
+
+
+def lag(times: FloatArray, x: FloatArray, tau: float) -> FloatArray:
+    """x (given at ``times``, s, ascending, straight between them) through a first-order
+    lag of time constant ``tau`` (s), exactly for a piecewise-linear input; it starts where a
+    ramp at the first interval's slope would have brought it (a log that starts moving).
+
+    Per interval h: y_k = a y_k-1 + (1 - a) x_k-1 + (x_k - x_k-1)(1 - tau (1 - a)/h) with
+    a = exp(-h/tau), summed in closed form over spans of ``_LAG_SPAN`` time constants."""
+    n = x.size
+    if n < 2:
+        return x.copy()
+    h = np.diff(times)
+    h = np.where(h > 0, h, 1e-12)
+    a = np.exp(-h / tau)
+    dx = np.diff(x)
+    b = (1.0 - a) * x[:-1] + dx * (1.0 - tau * (1.0 - a) / h)
+    out = np.empty(n)
+    out[0] = x[0] - tau * dx[0] / h[0]
+    if float(np.min(h)) > 30.0 * tau:
+        out[1:] = b  # a lag far shorter than a sample: each reading forgets the one before
+        return out
+    elapsed = np.concatenate(([0.0], np.cumsum(h))) / tau
+    start = 0
+    while start < n - 1:
+        if elapsed[start + 1] - elapsed[start] > _LAG_SPAN:
+            out[start + 1] = b[start]  # a gap of many time constants: nothing carries over
+            start += 1
+            continue
+        stop = int(np.searchsorted(elapsed, elapsed[start] + _LAG_SPAN, side="right"))
+        stop = min(stop, n)
+        e = elapsed[start + 1 : stop] - elapsed[start]
+        grow = np.exp(e)  # 1 / prod(a) from the span's start
+        out[start + 1 : stop] = (out[start] + np.cumsum(b[start : stop - 1] * grow)) / grow
+        start = stop - 1
+    return out
