@@ -35,7 +35,9 @@ Refused, with a message saying what was expected:
 - **a bare number below 1 in a mA field** (``0.047`` for i_ss): the lab's currents are
   20-50 mA, so such a number is most likely amperes typed without the unit, but it could
   also be a real reading in mA; rather than guess, it is refused and the message asks for
-  ``47 mA`` or ``0.047 A``. An explicit ``0.047 A`` or ``0.5 mA`` is accepted.
+  ``47 mA`` or ``0.047 A``. An explicit ``0.047 A`` or ``0.5 mA`` is accepted. A bare
+  number below 0.05 in a mN m s/rad field (f typed in N m s/rad, ``0.00186``) is refused
+  the same way (:data:`_BARE_BELOW`).
 
 Plausibility is separate from parsing: :class:`Plausible` ranges on a field give warnings
 (data, not refusals), e.g. R outside 1-20 ohm.
@@ -283,6 +285,16 @@ _NUMBER = re.compile(
 _PREFIXES = {"k", "m", "M", "µ", "u", "G"}
 
 
+_BARE_BELOW: dict[str, tuple[float, str, str, str]] = {
+    "mA": (1.0, "currents here are 20-50 mA", "amperes", "A"),
+    "mN m s/rad": (0.05, "f of this motor is a few mN m s/rad", "N m s/rad", "N m s/rad"),
+}
+"""Form unit -> (bound, the usual values, the unit 1000 times larger in words and as
+written): a bare number below the bound in a field of that unit is refused as ambiguous,
+since it is most likely the larger unit typed without its name (0.047 for 47 mA, 0.00186
+for 1.86 mN m s/rad)."""
+
+
 class EntryRefused(InputError):
     """A typed text that is not an acceptable value; ``str()`` is the one-line message."""
 
@@ -417,13 +429,16 @@ def parse_quantity(
     note = ""
     if not typed.symbol:
         typed = form
-        if form.symbol == "mA" and 0 < abs(number) < 1:
+        bare = _BARE_BELOW.get(form.symbol)
+        if bare is not None and 0 < abs(number) < bare[0]:
+            _, usual, looks, big = bare
             return _raise(
                 EntryRefused(
                     label,
                     None,
-                    f"{stripped!r} is ambiguous: currents here are 20-50 mA, so this looks like amperes; "
-                    f"type '{number * 1000:g} mA' or '{stripped} A' (or '{stripped} mA' if you mean it)",
+                    f"{stripped!r} is ambiguous: {usual}, so this looks like {looks}; type "
+                    f"'{_fmt(number * 1000)} {form.symbol}' or '{stripped} {big}' "
+                    f"(or '{stripped} {form.symbol}' if you mean it)",
                 )
             )
     elif typed.symbol != form.symbol:

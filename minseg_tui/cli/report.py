@@ -1,7 +1,8 @@
 """`minseg-tui report SESSION [--sessions DIR]`: write a session's report headless.
 
 SESSION is a session folder or a session id under --sessions (default ./sessions).
-Writes report.md and report.html into the session's folder and prints their paths and
+Writes report.md (its figures as report-figure-1.svg, ... beside it, linked relatively) and
+report.html (whole in one file) into the session's folder and prints the two paths and
 the run CSVs. A missing or damaged session, or a folder the report cannot be written
 into (a read-only stick): one line on stderr, exit 2.
 """

@@ -139,6 +139,31 @@ def _answers(session: Session, part: str) -> Section:
     return Section(title, [Table(("step", "question", "answer", "feedback"), tuple(rows))])
 
 
+def _board_section(session: Session) -> Section:
+    """Tasks 1 and 3: the board checks made (F10, the hand turn, the live speed watched)."""
+    got = session.board_checks()
+    sec = Section("Set-up: the board checks")
+    if not got:
+        sec.blocks.append(
+            "No board check was made (F10 checks that the count follows the motor; "
+            "Ctrl+P counts one revolution by hand)."
+        )
+        return sec
+    rows = tuple(
+        (
+            what,
+            ("✓ passed" if got[key]["ok"] else "✗ failed")
+            + (f" ({got[key]['counts']} counts)" if "counts" in got[key] else ""),
+            str(got[key]["text"]),
+            str(got[key]["at"]),
+        )
+        for key, what in lab_steps.BOARD_CHECKS.items()
+        if key in got
+    )
+    sec.blocks.append(Table(("check", "result", "what it found", "when"), rows))
+    return sec
+
+
 def _table_section(session: Session) -> Section:
     res = session.results()
     rows = []
@@ -264,7 +289,13 @@ def _step_section(session: Session) -> Section:
                 if isinstance(c.least_squares, str)
                 else _q(c.least_squares, c.unit)
             )
-            diff = "" if c.rel_diff is None else format_diff(c.rel_diff)
+            diff = (
+                ("✓ " if c.right else "✗ ") + c.verdict
+                if c.verdict
+                else ""
+                if c.rel_diff is None
+                else format_diff(c.rel_diff)
+            )
             shown = (
                 "revealed before answering"
                 if c.revealed_early
@@ -716,6 +747,7 @@ def build(session: Session) -> Report:
     sections = [
         _warnings_section(session),
         _answers(session, "Preparation"),
+        _board_section(session),
         _table_section(session),
         _step_section(session),
     ]

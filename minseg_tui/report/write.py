@@ -1,4 +1,6 @@
-"""Write a session's report into its folder: report.md, report.html (runs/*.csv are already there)."""
+"""Write a session's report into its folder: report.md with its figures as SVG files beside
+it (report-figure-1.svg, ...), and report.html, whole in one file (runs/*.csv are already
+there)."""
 
 from __future__ import annotations
 
@@ -12,11 +14,13 @@ from minseg_tui.report import content, html, markdown
 
 @dataclass(frozen=True)
 class Written:
-    """Paths written: the Markdown and HTML reports and the CSV of every recorded run."""
+    """Paths written: the Markdown and HTML reports and the CSV of every recorded run;
+    ``figures``: the Markdown's figures (SVG files beside it)."""
 
     markdown: Path
     html: Path
     runs: tuple[Path, ...]
+    figures: tuple[Path, ...] = ()
 
     @property
     def paths(self) -> tuple[Path, ...]:
@@ -24,13 +28,26 @@ class Written:
         return (self.markdown, self.html, *self.runs)
 
 
+FIGURE_PREFIX = "report-figure"
+"""The Markdown report's figures are report-figure-1.svg, report-figure-2.svg, ... beside it."""
+
+
 def write_report(session: Session) -> Written:
-    """Build the report of ``session`` and write report.md and report.html atomically into
-    its folder; returns the paths (the run CSVs listed are the session's own files)."""
+    """Build the report of ``session`` and write its figures, report.md and report.html
+    atomically into its folder (figures of an earlier report that this one has not are
+    removed); returns the paths (the run CSVs listed are the session's own files). OSError
+    when the folder cannot be written."""
     rep = content.build(session)
     md_path = session.folder / "report.md"
     html_path = session.folder / "report.html"
-    atomic_write_text(md_path, markdown.render(rep))
+    figures = []
+    for name, svg in markdown.figure_files(rep, FIGURE_PREFIX):
+        figures.append(session.folder / name)
+        atomic_write_text(figures[-1], svg)
+    for old in session.folder.glob(f"{FIGURE_PREFIX}-*.svg"):  # an earlier report's extra ones
+        if old not in figures:
+            old.unlink(missing_ok=True)
+    atomic_write_text(md_path, markdown.render(rep, FIGURE_PREFIX))
     atomic_write_text(html_path, html.render(rep))
     runs = tuple(session.folder / r.file for r in session.runs)
-    return Written(md_path, html_path, runs)
+    return Written(md_path, html_path, runs, tuple(figures))

@@ -76,7 +76,7 @@ from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
 from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
-from minseg_tui.ui.screens.start import StartScreen
+from minseg_tui.ui.screens.start import StartScreen, split_names
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 
@@ -199,6 +199,8 @@ class LabApp(App[None]):
         worker is the one reader of the device)."""
         self._watch = NoCountWatch()
         self._step_id = ""
+        self._watching_speed = False
+        """The shown step is done once the live speed is watched with the wheel turning."""
         if not config.animations:
             self.animation_level = "none"
 
@@ -322,7 +324,7 @@ class LabApp(App[None]):
 
     @on(StartScreen.NewSession)
     async def _new(self, event: StartScreen.NewSession) -> None:
-        names = [m.strip() for m in event.members.split(",") if m.strip()]
+        names = split_names(event.members)
         root = Path(self.config.sessions)
         await self._enter_lab(lambda: Session.create(root, names, event.date or None))
 
@@ -419,6 +421,23 @@ class LabApp(App[None]):
         self.link = self.link.counted(event.stats)
         if self.recording is not None:
             self.run_progress = self.recording.progress()
+        if self._watching_speed and self.session is not None:
+            t, count, _ = self.live.snapshot()
+            with self.session as s:
+                watched = s.watch_speed(t, count)
+            if watched:  # Task 3 done: its mark in the list of steps
+                self._watching_speed = False
+                self.lab_changed.publish(None)
+
+    def _record_check(self, key: str, ok: bool, text: str, counts: int | None) -> None:
+        """Keep a board check's result in the session (its step's mark, the report)."""
+        if self.session is None:
+            return
+        with self.session as s:
+            if s.readonly:
+                return
+            s.record_check(key, ok, text, counts)
+        self.lab_changed.publish(None)
 
     @on(MeterRead)
     def _meter_read(self, event: MeterRead) -> None:
@@ -437,6 +456,7 @@ class LabApp(App[None]):
     def _step_shown(self, event: StepShown) -> None:
         self._meter_wanted = "meter" in event.step.actions
         self._step_id = event.step.id
+        self._watching_speed = "speed_watched" in event.step.done_when
 
     @on(LinkEventArrived)
     def _link_event(self, event: LinkEventArrived) -> None:
@@ -537,7 +557,9 @@ class LabApp(App[None]):
         if event.result is None:
             self.notify(event.error, title="board check", severity="error", timeout=10)
             return
-        self.push_screen(BoardCheckScreen(event.result.ok, event.result.text))
+        r = event.result
+        self._record_check("board_check", r.ok, r.text, r.counts)
+        self.push_screen(BoardCheckScreen(r.ok, r.text))
 
     def action_count_revolution(self) -> None:
         """Palette: count one revolution turned by hand (720 expected)."""
@@ -583,9 +605,9 @@ class LabApp(App[None]):
             if event.error:
                 self.notify(event.error, title="counts per revolution", severity="error")
             return
-        self.push_screen(
-            BoardCheckScreen(event.result.ok, event.result.text, "Counts per revolution")
-        )
+        r = event.result
+        self._record_check("revolution", r.ok, r.text, r.counts)
+        self.push_screen(BoardCheckScreen(r.ok, r.text, "Counts per revolution"))
 
     @on(NoCounts)
     def _no_counts(self, event: NoCounts) -> None:

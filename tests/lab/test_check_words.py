@@ -73,3 +73,20 @@ def test_the_held_out_figure_is_found_under_its_own_keys():
     assert check_words.figure(gain, "heldout_rmse") == (0.4, 0.1)
     assert check_words.figure(gain, "extended_rmse") == (1.0, None)
     assert check_words.figure(gain, "angle_rms") == (None, None)
+
+
+@pytest.mark.parametrize("cause", ["coulomb_friction", "coast_on_zero"])
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_the_lead_the_evidence_and_the_close_up_speak_of_one_drop(cause, seed):
+    """The walk's Details named the drop at 4.625 s while the lead and the close-up showed
+    the one at 1.62 s: the evidence took the fastest stop, the close-up the first drop."""
+    log, r = _checked(cause, seed=seed)
+    assert r.finding.cause == cause
+    said = re.search(rf"drops (?:to 0 )?at t = ({NUM}) s", r.finding.evidence)
+    assert said is not None, r.finding.evidence
+    lead = " ".join(check_words.lead(r, log.u))
+    led = re.search(rf"drops from {NUM} V to {NUM} V at t = ({NUM}) s", lead)
+    assert led is not None, lead
+    assert float(led.group(1)) == pytest.approx(float(said.group(1)), abs=5e-4)
+    cu = r.close_up
+    assert cu is not None and cu.t0 < float(said.group(1)) < cu.t1

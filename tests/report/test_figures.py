@@ -8,7 +8,6 @@ Positions are read back into data units through the tick labels the figure shows
 
 from __future__ import annotations
 
-import base64
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -145,17 +144,19 @@ def report(tmp_path_factory):
     step = s.results().identification.step
     log = read_step_log(s.run_path("steps-1"))
     s.close()
-    return html, md, mc.result, step, log
+    return html, md, mc.result, step, log, s.folder
 
 
 def test_every_figure_has_axis_labels_with_units_and_its_legend_off_the_data(report):
-    html, md, *_ = report
+    html, md, *_, folder = report
     figs = _figures(html)
     assert len(figs) == 4
     for fig, _ in figs:
         _check_labels_and_legends(fig)
-    for target in re.findall(r"!\[[^\]]*\]\(data:image/svg\+xml;base64,([^)]*)\)", md):
-        _check_labels_and_legends(_parse(base64.b64decode(target).decode("utf-8")))
+    targets = re.findall(r"!\[[^\]]*\]\(([^)]*\.svg)\)", md)
+    assert len(targets) == len(figs)  # the Markdown's figures: files beside it
+    for target in targets:
+        _check_labels_and_legends(_parse((folder / target).read_text(encoding="utf-8")))
 
 
 def _crossings(log) -> list[tuple[float, float, float]]:
@@ -181,7 +182,7 @@ def _crossings(log) -> list[tuple[float, float, float]]:
 
 
 def test_the_zoomed_step_marks_the_63_percent_level_and_its_crossing(report):
-    html, _, _, step, log = report
+    html, _, _, step, log, _ = report
     ((fig, caption),) = [f for f in _figures(html) if f[1].startswith("One rising step")]
     (panel,) = _panels(fig)
     to_t, to_w = _axis(panel, "x"), _axis(panel, "y")
@@ -236,7 +237,7 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     """Issue 20, item 4: two or three sentences about the close-up (what the first-order
     model gets wrong at its step, the cause in everyday words, the gain in one figure),
     the figures, then the details in a fold (HTML) or a subsection (Markdown)."""
-    html, md, result, _, log = report
+    html, md, result, _, log, _ = report
     section = md.split("## Model check", 1)[1].split("\n## ", 1)[0]
     first = section.strip().split("\n\n", 1)[0]
     assert "whitened" not in first and "criterion" not in first and "coulomb" not in first
@@ -267,7 +268,7 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
 
 
 def test_the_step_section_gives_k_with_its_interval_and_the_63_percent_note(report):
-    _, md, _, step, _ = report
+    _, md, _, step, _, _ = report
     section = md.split("## Step response and model", 1)[1].split("\n## ", 1)[0]
     (row,) = [ln for ln in section.splitlines() if ln.startswith("| K (Task 11")]
     m = re.search(rf"({NUM}) rad/s/V \(({NUM}) – ({NUM}) rad/s/V\)", row)

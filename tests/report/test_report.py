@@ -17,7 +17,7 @@ from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.quantities import format_interval, format_number, format_value
-from minseg_tui.report import svg
+from minseg_tui.report import content, markdown, svg
 from minseg_tui.report.write import write_report
 
 
@@ -161,16 +161,50 @@ def test_html_is_self_contained(tmp_path):
     assert "style" in p.tags and "table" in p.tags
 
 
-def test_markdown_figures_are_inline_svg(tmp_path):
+def test_markdown_figures_are_svg_files_beside_it(tmp_path):
+    """report.md was 190 KB of base64: its figures are now files beside it, linked by a
+    relative name, and the Markdown is text a person reads (the HTML stays whole)."""
     s = _session(tmp_path)
-    md = write_report(s).markdown.read_text(encoding="utf-8")
+    written = write_report(s)
+    md = written.markdown.read_text(encoding="utf-8")
+    s.close()
+    assert "base64" not in md and len(md.encode("utf-8")) < 20_000
+    targets = re.findall(r"!\[[^\]]*\]\(([^)]*)\)", md)
+    assert targets == [f"report-figure-{k}.svg" for k in range(1, 5)]  # one per figure
+    assert written.figures == tuple(s.folder / t for t in targets)
+    for target in targets:
+        doc = (s.folder / target).read_text(encoding="utf-8")
+        assert doc.startswith("<svg") and doc.endswith("</svg>")
+    html = written.html.read_text(encoding="utf-8")
+    assert "report-figure-" not in html and html.count("<svg") == 11
+    # a later report with fewer figures leaves none of the earlier ones lying beside it
+    (s.folder / "report-figure-9.svg").write_text("<svg/>", encoding="utf-8")
+    with Session.open(s.folder, readonly=True) as again:
+        write_report(again)
+    assert not (s.folder / "report-figure-9.svg").exists()
+    assert (s.folder / "report-figure-4.svg").exists()
+
+
+def test_markdown_figures_inline_without_a_prefix(tmp_path):
+    s = _session(tmp_path)
+    md = markdown.render(content.build(s))
     s.close()
     targets = re.findall(r"!\[[^\]]*\]\(([^)]*)\)", md)
-    assert len(targets) == 4  # one image per figure, its panels inside
+    assert len(targets) == 4
     for target in targets:
         assert target.startswith("data:image/svg+xml;base64,")
         doc = base64.b64decode(target.split(",", 1)[1]).decode("utf-8")
         assert doc.startswith("<svg") and doc.endswith("</svg>")
+
+
+def test_cli_report_into_a_folder_it_cannot_write_says_so_in_one_line(tmp_path, capsys):
+    s = _session(tmp_path)
+    s.close()
+    (s.folder / "report-figure-1.svg").mkdir()  # in the way of the first figure
+    assert main(["report", str(s.folder)]) == 2
+    err = capsys.readouterr().err
+    assert "cannot write the report" in err and err.count("\n") == 1
+    assert not (s.folder / "report.md").exists()
 
 
 def test_report_does_not_touch_the_session(tmp_path):

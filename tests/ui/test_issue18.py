@@ -154,7 +154,7 @@ async def test_task10_shows_a_run_saved_late_at_once(quiet, tmp_path):
         (tmp_path / "gone").rename(root)
         app.retry_save()
         await settle(pilot, lambda: status.text != "no runs recorded yet")
-        assert status.text.startswith("steps-1 (40 samples")
+        assert status.text.startswith("▸ steps-1 (40 samples")  # the run in use, marked
 
 
 async def test_a_board_and_report_files_with_brackets_are_named_as_they_are(tmp_path):

@@ -16,5 +16,6 @@ def test_a_runs_view_is_built_once_and_again_for_a_new_run(tmp_path):
         (b,) = views.runs(s)
         assert a.name == first and b is a  # the same view, not fitted again
         second = record_step_run(s, seed=6)
-        (c,) = views.runs(s)
-        assert c.name == second and c is not a
+        again, c = views.runs(s)  # every run is listed; the new one in use
+        assert c.name == second and c is not a and c.in_use and not again.in_use
+        assert again.name == first and again.t is a.t  # marked anew, not fitted again

@@ -8,6 +8,7 @@ a typical mistake gets its own message. Pure functions: no state, no I/O.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping
 
 import numpy as np
@@ -79,8 +80,11 @@ def check_answer(chk: Check, answer: object, entries: Mapping[str, object]) -> F
 
 
 def read_formula(fld: Field, text: str) -> Formula:
-    """Parse ``text`` typed in the formula field ``fld`` (FormulaRefused on bad text)."""
-    return parse_formula(text, fld.names, label=fld.label)
+    """Parse ``text`` typed in the formula field ``fld`` (FormulaRefused on bad text). The
+    answer may begin with the field's own name and ``=``, as the step's text writes it
+    (``k_v = (u_ss - R i_ss)/omega_ss``)."""
+    m = re.match(rf"\s*{re.escape(fld.label)}\s*=(?!=)", text)
+    return parse_formula(text[m.end() :] if m else text, fld.names, label=fld.label)
 
 
 __all__ = ["check_answer", "read_formula"]

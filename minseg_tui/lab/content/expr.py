@@ -3,8 +3,9 @@
 Only numbers, the names a question allows, ``pi``, ``e``, the functions ``exp``, ``ln``,
 ``log``, ``sqrt``, ``+ - * / ^ **`` and parentheses are accepted; nothing is executed.
 ``^`` is a power, ``,`` is a decimal comma inside numbers, ``·``/``×`` are products, and a
-number written against a name or a parenthesis multiplies it (``2pi``, ``2(a+b)``).
-Two names side by side (``Kc``) are not a product: write ``K*c``.
+number written against a name or a parenthesis multiplies it (``2pi``, ``2(a+b)``), and so
+do names written apart, the way the lab's own text writes products (``R i_ss``,
+``T (R f + k_v k_a)``). Two names run together (``Kc``) are not a product: write ``K*c``.
 """
 
 from __future__ import annotations
@@ -46,7 +47,7 @@ class Formula:
             return math.nan
 
 
-def _prepare(text: str) -> str:
+def _prepare(text: str, names: tuple[str, ...] = ()) -> str:
     t = (
         text.strip()
         .replace("·", "*")
@@ -62,7 +63,21 @@ def _prepare(text: str) -> str:
     # implicit product: a number directly followed by a name or '(' (but not an exponent)
     t = re.sub(r"(\d\.?)(?![eE][-+]?\d)\s*(?=[A-Za-z_(])", r"\1*", t)
     t = re.sub(r"\)\s*(?=[A-Za-z_(\d])", ")*", t)
-    return t
+
+    # implicit product: a name (not a function) followed by a space and a name, a number or
+    # '(', or, when it is one of the allowed names, directly by '(' (R i_ss, k_v k_a, T (R f),
+    # T(R f))
+    def times(m: re.Match[str]) -> str:
+        name = m.group(1)
+        apart = m.group(0) != name
+        if name in _FUNCS or not (apart or name in names or name in _CONSTS):
+            return m.group(0)
+        return name + "*"
+
+    return _NAME_APART.sub(times, t)
+
+
+_NAME_APART = re.compile(r"(?<![\w.])([A-Za-z_]\w*)(?:\s+(?=[A-Za-z_(\d.])|(?=\())")
 
 
 def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Formula:
@@ -75,7 +90,7 @@ def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Fo
     if not text or not text.strip():
         raise FormulaRefused(label, None, f"nothing typed; expected {allowed}")
     try:
-        tree = ast.parse(_prepare(text), mode="eval")
+        tree = ast.parse(_prepare(text, names), mode="eval")
     except SyntaxError:
         raise FormulaRefused(
             label,

@@ -119,7 +119,9 @@ class RunPlan:
 class Step:
     """One step of the lab: ``id``, the ``part`` it belongs to, a ``title``, its ``goal``
     and ``todo`` (our words), the fields to enter, the checks, the actions it offers and,
-    for Task 10, the run plans (the manual's and a fast one)."""
+    for Task 10, the run plans (the manual's and a fast one); ``done_when``: for a step
+    without fields, the board checks (keys of :data:`BOARD_CHECKS`) that, passed, make it
+    done."""
 
     id: str
     part: str
@@ -131,6 +133,23 @@ class Step:
     actions: tuple[str, ...] = ()
     plans: tuple[tuple[str, RunPlan], ...] = ()
     formulas: tuple[tuple[str, str], ...] = ()
+    done_when: tuple[str, ...] = ()
+
+
+BOARD_CHECKS: dict[str, str] = {
+    "board_check": "board check (F10): does the count follow the motor",
+    "revolution": "one revolution by hand: 720 counts",
+    "speed_watched": "live speed watched while the wheel turned",
+}
+"""What the session records of the board besides entries and runs, by key: what each is,
+in words (the report's table). Steps name them in ``done_when``."""
+
+SPEED_WATCHED_COUNTS = 360
+"""Task 3 is done once the live speed was shown while the wheel turned at least this many
+counts (half a revolution) within :data:`SPEED_WATCHED_S`."""
+
+SPEED_WATCHED_S = 2.0
+"""...within this many seconds of board time, s."""
 
 
 def _note(key: str) -> Field:
@@ -438,6 +457,16 @@ _R_PLAUSIBLE = Plausible(
 )
 
 
+_F_PLAUSIBLE = Plausible(
+    5e-5,
+    0.05,
+    low="below 0.05 mN m s/rad, a thousandth of this motor's usual few mN m s/rad: typed in "
+    "N m s/rad? Write the unit after the number",
+    high="above 50 mN m s/rad, a thousand times this motor's usual few mN m s/rad: is the unit "
+    "right? The table's f is in mN m s/rad",
+)
+
+
 def _u_ss(level: float) -> Field:
     return Field(
         f"u_ss@{level:g}",
@@ -507,6 +536,7 @@ _LAB: tuple[Step, ...] = (
         "and what to look at if it does not. Ctrl+P → Count one revolution by hand checks the "
         "encoder's 720 counts.",
         actions=("connect",),
+        done_when=("board_check",),
     ),
     Step(
         "task2",
@@ -536,6 +566,7 @@ _LAB: tuple[Step, ...] = (
         "nominal 25 ms sample and averages the last 20 such values (half a second). Beside it is one "
         "that divides by the board's own timestamps. Compare how smooth and how late each is.",
         actions=("connect", "live_velocity"),
+        done_when=("speed_watched",),
     ),
     Step(
         "task4",
@@ -571,7 +602,14 @@ _LAB: tuple[Step, ...] = (
         fields=(
             Field("own.k_v", "your k_v", unit="V s/rad", optional=True, compare="k_v"),
             Field("own.k_a", "your k_a", unit="N m/A", optional=True, compare="k_a"),
-            Field("own.f", "your f", unit="mN m s/rad", optional=True, compare="f"),
+            Field(
+                "own.f",
+                "your f",
+                unit="mN m s/rad",
+                optional=True,
+                compare="f",
+                plausible=(_F_PLAUSIBLE,),
+            ),
         ),
         formulas=(
             ("k_v", "k_v = (u_ss - R i_ss) / omega_ss, per row; final k_v = median of the rows"),
@@ -806,6 +844,12 @@ def validate() -> list[str]:
         seen.add(s.id)
     keys = [f.key for s in STEPS for f in s.fields]
     problems += [f"duplicate field {k}" for k in set(keys) if keys.count(k) > 1]
+    for s in STEPS:
+        problems += [
+            f"step {s.id} is done by an unknown check {k}"
+            for k in s.done_when
+            if k not in BOARD_CHECKS
+        ]
     for c in CHECKS.values():
         if c.key not in FIELDS:
             problems.append(f"check on unknown field {c.key}")
@@ -828,11 +872,14 @@ def validate() -> list[str]:
 
 
 __all__ = [
+    "BOARD_CHECKS",
     "CHECKS",
     "FIELDS",
     "FIELD_STEP",
     "LEVELS",
     "PARTS",
+    "SPEED_WATCHED_COUNTS",
+    "SPEED_WATCHED_S",
     "STEPS",
     "STEP_INDEX",
     "Check",

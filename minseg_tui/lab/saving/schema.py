@@ -365,6 +365,12 @@ RUN = Record(
 )
 """One recorded run (:meth:`minseg_tui.lab.saving.runs.RunInfo.to_json`)."""
 
+BOARD_CHECK = Record(
+    required={"ok": Flag(), "text": Text(), "at": Text()},
+    optional={"counts": Number(integer=True)},
+)
+"""One board check's result (:meth:`minseg_tui.lab.state.session.Session.record_check`)."""
+
 SESSION = Record(
     required={
         "kind": Exactly(KIND),
@@ -383,13 +389,15 @@ SESSION = Record(
         "selected_run": OneOf((None, Text())),
         "revealed": ListOf(Text()),
         "kept": Memo(),
+        "board_checks": MapOf(BOARD_CHECK),
     },
 )
 """session.json, whole (``revealed``: fields of Tasks 11-15 shown before the group
 answered them; ``kept``: the run's results as last computed, which
 :mod:`minseg_tui.lab.saving.kept` reads, and passes over when it cannot: a memo, never a
-reason to refuse the file). Optional parts added since keep the schema at 1: a file
-without them reads as before, and an older program ignores them."""
+reason to refuse the file; ``board_checks``: the newest result of each board check, by key
+of :data:`minseg_tui.lab.content.steps.BOARD_CHECKS`). Optional parts added since keep the
+schema at 1: a file without them reads as before, and an older program ignores them."""
 
 PARTIAL_HEADER = Record(
     required={},
@@ -439,6 +447,7 @@ def salvage(data: dict[str, Any]) -> tuple[dict[str, Any], list[str]]:
 
 
 __all__ = [
+    "BOARD_CHECK",
     "CAPTURE",
     "ENTRY",
     "KIND",

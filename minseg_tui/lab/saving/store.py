@@ -21,6 +21,7 @@ import json
 import os
 import re
 import stat
+from collections.abc import Sequence
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
@@ -367,6 +368,23 @@ class SessionInfo:
     modified: str
     damaged: str | None = None
     locked_by: int | None = None
+
+
+def names_key(members: Sequence[str]) -> tuple[str, ...]:
+    """The group's names as compared: each without case or extra spaces, in any order
+    ("Ada, Bo" and "bo,  ada" are one group); empty names left out."""
+    return tuple(sorted(k for m in members if (k := " ".join(m.split()).casefold())))
+
+
+def same_names(sessions: Sequence[SessionInfo], members: Sequence[str]) -> list[SessionInfo]:
+    """The sessions of ``sessions`` that can be opened (not damaged, not in use) whose
+    group has the names ``members`` (:func:`names_key`), in the order given."""
+    key = names_key(members)
+    return [
+        s
+        for s in sessions
+        if key and names_key(s.members) == key and not s.damaged and s.locked_by is None
+    ]
 
 
 def list_sessions(root: Path) -> list[SessionInfo]:

@@ -17,6 +17,8 @@ from collections.abc import Callable, Collection, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from minseg_tui.errors import InputError
+from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.steps import Field
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.model.identify import U_TASK15
@@ -115,7 +117,8 @@ def compare_fields(
             continue
         own: float | str | None = text(fld.key) if fld.kind == "text" else value(fld.key)
         computed: float | str | None = res.lookup(fld.compare)
-        how = why = ""
+        how = why = verdict = ""
+        right: bool | None = None
         lsq: float | str | None = None
         if st is not None and ident is not None:
             if fld.key == "own.K":
@@ -167,6 +170,8 @@ def compare_fields(
                     why = "The least-squares model uses the fitted T and K."
                     if computed == lsq:
                         lsq, why = None, ""
+                    if isinstance(own, str):
+                        right, verdict = judge_model(own, T_m, K_m)
             elif fld.key == "own.omega_5":
                 lsq = st.K * U_TASK15
                 if own_K is not None:
@@ -192,9 +197,36 @@ def compare_fields(
                 least_squares=lsq,
                 why=why,
                 revealed_early=fld.key in revealed,
+                right=right,
+                verdict=verdict,
             )
         )
     return out
+
+
+MODEL_TOLERANCE = 0.10
+"""How far (relative) the T and the K of a group's model may be from the ones computed
+their way and still be right: their own readings rounded, or read off the plot."""
+
+
+def judge_model(text: str, T: float, K: float) -> tuple[bool, str]:
+    """Task 14: whether the model in ``text`` is T omega' = -omega + K u_A with the ``T`` (s)
+    and ``K`` (rad/s/V) computed the group's way (each within :data:`MODEL_TOLERANCE`), and
+    one line saying so (what is wrong, when it is)."""
+    try:
+        got = read_model(text)
+    except InputError as exc:
+        return False, f"not the model: {exc.expected}"
+    wrong = []
+    for name, mine, want, unit in (("T", got.T, T, "s"), ("K", got.K, K, "rad/s/V")):
+        if want and abs(mine / want - 1.0) > MODEL_TOLERANCE:
+            wrong.append(
+                f"{name} = {format_number(mine)} {unit} where {format_number(want)} {unit} "
+                f"was expected ({format_diff(mine / want - 1.0)})"
+            )
+    if wrong:
+        return False, "wrong: " + "; ".join(wrong)
+    return True, f"right: T = {format_number(got.T)} s and K = {format_number(got.K)} rad/s/V"
 
 
 def reveal_keys(fields: Sequence[Field], answered: Collection[str]) -> list[str]:
@@ -210,6 +242,7 @@ __all__ = [
     "compare_fields",
     "concealed",
     "format_diff",
+    "judge_model",
     "read_policy",
     "reveal_keys",
 ]

@@ -15,8 +15,9 @@ from typing import Any
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.answers import read_formula
+from minseg_tui.lab.content.expr import parse_formula
 from minseg_tui.lab.content.steps import FIELDS, Field
-from minseg_tui.quantities import parse_quantity
+from minseg_tui.quantities import EntryRefused, Parsed, lookup_unit, parse_quantity
 
 
 @dataclass(frozen=True)
@@ -113,6 +114,54 @@ def parse_choice(text: str, n: int) -> tuple[int, ...]:
     return tuple(sorted(set(out)))
 
 
+def _arithmetic(fld: Field, text: str) -> str | None:
+    """``text`` as a number and a unit when it is arithmetic on numbers with, perhaps, a
+    unit after it (``0.65*0.49``, ``0.65 * 0.49 N m/A``, ``(5.0 - 5.2*0.03)/6.8``): the
+    value written out with the unit, or None when it is no such thing."""
+    stripped = text.strip()
+    if not re.search(r"[-+*/^×·(]", stripped.lstrip("+-")):
+        return None
+    for cut in range(len(stripped), 0, -1):
+        unit = stripped[cut:].strip()
+        if unit and (not re.match(r"[A-Za-zµμΩ°%]", unit) or lookup_unit(unit) is None):
+            continue
+        try:
+            formula = parse_formula(stripped[:cut])
+        except InputError:
+            continue
+        return f"{formula.value({})!r} {unit}".strip()
+    return None
+
+
+def read_quantity(fld: Field, text: str) -> Parsed:
+    """``text`` typed in the quantity field ``fld``, read by :func:`parse_quantity`; a text
+    it refuses that is arithmetic on numbers (Task 8's ``0.65*0.49``), perhaps with a unit
+    after it, is worked out and read as its value. EntryRefused (the plain reading's
+    one line) when it is neither."""
+
+    def read(t: str) -> Parsed:
+        return parse_quantity(
+            t,
+            fld.unit,
+            label=fld.label,
+            allow_negative=fld.allow_negative,
+            allow_zero=fld.allow_zero,
+        )
+
+    try:
+        return read(text)
+    except InputError:
+        worked = _arithmetic(fld, text)
+        if worked is None:
+            raise
+    try:
+        return read(worked)
+    except EntryRefused as exc:  # said of what was typed, not of the worked-out value
+        raise EntryRefused(
+            exc.source, exc.line, exc.expected.replace(repr(worked), repr(text.strip()), 1)
+        ) from None
+
+
 def read_entry(fld: Field, text: str) -> Entry:
     """``text`` typed in field ``fld``, read: accepted with its value, unit, note and
     plausibility warnings, or refused with the one-line message (no time, source, history)."""
@@ -122,13 +171,7 @@ def read_entry(fld: Field, text: str) -> Entry:
         return Entry(fld.key, text, ok=True)
     try:
         if fld.kind == "quantity":
-            p = parse_quantity(
-                text,
-                fld.unit,
-                label=fld.label,
-                allow_negative=fld.allow_negative,
-                allow_zero=fld.allow_zero,
-            )
+            p = read_quantity(fld, text)
             warnings = tuple(w for rule in fld.plausible for w in rule.warnings(p.value))
             return Entry(
                 fld.key,
@@ -201,4 +244,4 @@ def parsed_values(entries: Mapping[str, Entry]) -> dict[str, object]:
     return out
 
 
-__all__ = ["Entry", "parse_choice", "parsed_values", "read_entry", "revise"]
+__all__ = ["Entry", "parse_choice", "parsed_values", "read_entry", "read_quantity", "revise"]

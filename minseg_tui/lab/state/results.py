@@ -122,7 +122,9 @@ class Comparison:
     numbers. ``how``: how the group's way was computed ("from your T = 56.8 ms"; '' when
     it is the program's value); ``least_squares``: the program's least-squares value when it
     differs from the group's way (None otherwise), ``why`` one sentence on why the two
-    differ; ``revealed_early``: a lab assistant showed the value before the group answered."""
+    differ; ``revealed_early``: a lab assistant showed the value before the group answered;
+    ``right``: for an answer judged right or wrong (Task 14's model), whether it is (None when
+    not judged), ``verdict`` one line saying so."""
 
     key: str
     label: str
@@ -134,6 +136,8 @@ class Comparison:
     least_squares: float | str | None = None
     why: str = ""
     revealed_early: bool = False
+    right: bool | None = None
+    verdict: str = ""
 
 
 @dataclass(frozen=True)

@@ -45,6 +45,9 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+from numpy.typing import ArrayLike
+
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import answers
 from minseg_tui.lab.content import steps as lab_steps
@@ -593,13 +596,19 @@ class Session:
         return out
 
     def step_status(self, step_id: str) -> str:
-        """``done`` (every required field accepted; for Task 10 a run recorded), ``wrong``
+        """``done`` (every required field accepted; for Task 10 a run recorded; for a step
+        done by board checks, its ``done_when`` checks passed), ``wrong``
         (answered, but a checked answer is wrong), ``started`` (something entered), ``todo``,
         or ``info`` (nothing to enter)."""
         st = lab_steps.step(step_id)
         if "run_steps" in st.actions:
             return "done" if any(r.kind in ("steps", "fast") for r in self._runs) else "todo"
         required = [f for f in st.fields if not f.optional]
+        if not st.fields and st.done_when:
+            got = self.board_checks()
+            if all(k in got and got[k]["ok"] for k in st.done_when):
+                return "done"
+            return "started" if any(k in got for k in st.done_when) else "todo"
         if not st.fields:
             return "info"
         answered = bool(required) and all(
@@ -612,7 +621,55 @@ class Session:
         if not answered:
             return "todo"
         wrong = any(fb.status == "wrong" for fb in self.feedback(step_id))
+        if not wrong and any(f.compare and f.kind == "text" for f in st.fields):
+            wrong = any(c.right is False for c in self.comparisons(step_id))
         return "wrong" if wrong else "done"
+
+    # -- the board checks ----------------------------------------------------------------------
+
+    def board_checks(self) -> dict[str, dict[str, Any]]:
+        """The newest result of each board check, by key of :data:`lab_steps.BOARD_CHECKS`:
+        ``ok``, ``text`` (what it found, in sentences), ``at`` (ISO time) and, where it
+        counted, ``counts``."""
+        return {k: dict(v) for k, v in self._data.get("board_checks", {}).items()}
+
+    def record_check(self, key: str, ok: bool, text: str, counts: int | None = None) -> None:
+        """Keep the result of board check ``key`` (KeyError for an unknown key), replacing an
+        earlier one of the same check; saved. ``counts``: the encoder counts it saw."""
+        self._change()
+        if key not in lab_steps.BOARD_CHECKS:
+            raise KeyError(key)
+        result: dict[str, Any] = {
+            "ok": bool(ok),
+            "text": str(text),
+            "at": self._clock().isoformat(timespec="seconds"),
+        }
+        if counts is not None:
+            result["counts"] = int(counts)
+        self._data["board_checks"] = {**self._data.get("board_checks", {}), key: result}
+        self._changed()
+
+    def watch_speed(self, t: ArrayLike, count: ArrayLike) -> bool:
+        """Task 3: the live speed was shown over board times ``t`` (s) with encoder counts
+        ``count``; when the wheel turned half a revolution within the last 2 s of them, record
+        ``speed_watched`` (once). Whether it is recorded now."""
+        if self.board_checks().get("speed_watched", {}).get("ok"):
+            return True
+        tt, cc = np.asarray(t, dtype=float), np.asarray(count, dtype=np.int64)
+        if tt.size < 2:
+            return False
+        recent = tt >= tt[-1] - lab_steps.SPEED_WATCHED_S
+        turned = int(np.ptp(cc[recent]))
+        if turned < lab_steps.SPEED_WATCHED_COUNTS:
+            return False
+        self.record_check(
+            "speed_watched",
+            True,
+            f"the live speed was watched while the wheel turned {turned} counts in "
+            f"{lab_steps.SPEED_WATCHED_S:g} s",
+            turned,
+        )
+        return True
 
     # -- the table -----------------------------------------------------------------------------
 

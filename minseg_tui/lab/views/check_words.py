@@ -161,6 +161,11 @@ def _s(x: float) -> str:
     return format_value(x, "s", 3)
 
 
+def _at(x: float) -> str:
+    """A step's board time to the millisecond, as the details write it ('4.625 s')."""
+    return f"{x:.3f} s"
+
+
 def _later(x: float) -> str:
     """A time after a step: '175 ms', '1.2 s'."""
     return f"{x * 1e3:.0f} ms" if x < 1.0 else format_value(x, "s", 2)
@@ -245,9 +250,9 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
             "than its noise."
         )
     step = (
-        f"the voltage drops from {_v(m.u_from)} to {_v(m.u_to)} at t = {_s(m.edge)}"
+        f"the voltage drops from {_v(m.u_from)} to {_v(m.u_to)} at t = {_at(m.edge)}"
         if m.kind == "drop"
-        else f"the voltage steps from {_v(m.u_from)} to {_v(m.u_to)} at t = {_s(m.edge)}"
+        else f"the voltage steps from {_v(m.u_from)} to {_v(m.u_to)} at t = {_at(m.edge)}"
     )
     after = _later(m.at - m.edge)
     if m.still and abs(m.first_order) > abs(m.measured):

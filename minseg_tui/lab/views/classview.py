@@ -36,7 +36,7 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.steps import LEVELS
 from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import read_run
-from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable
+from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_key
 from minseg_tui.lab.state.compare import format_diff
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import Session
@@ -522,9 +522,18 @@ def judge(groups: Sequence[Group]) -> ClassView:
         s = spread(key, vals)
         if s is not None:
             spreads[key] = s
+    by_names: dict[tuple[str, ...], list[str]] = {}
+    for g in groups:
+        by_names.setdefault(names_key(g.members), []).append(g.id)
     out = []
     for g in groups:
         extra = []
+        twins = [i for i in by_names.get(names_key(g.members), []) if i != g.id]
+        if twins and g.members:
+            extra.append(
+                f"another session of the same names: {', '.join(twins)} (one group's two "
+                "sessions: which one holds the work?)"
+            )
         for key, s in spreads.items():
             v = g.value(key)
             why = None if v is None else outlier(s, v)

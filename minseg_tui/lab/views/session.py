@@ -25,6 +25,7 @@ from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.steps import FIELDS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
+from minseg_tui.lab.saving.runs import STEP_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state.entries import read_entry
@@ -274,6 +275,8 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             comp += f" ({c.how})"
         if c.rel_diff is not None:
             comp += f": {lab_compare.format_diff(c.rel_diff)}"
+        if c.verdict:
+            comp += f"\n  {c.verdict}"
         if c.revealed_early:
             comp += " · revealed before answering"
         if c.least_squares is not None:
@@ -395,6 +398,10 @@ class RunView:
     T_hidden: bool = False
     """The T readings are left out (None): Task 12's answer, hidden until the group has
     entered its own T (:func:`hidden`)."""
+    in_use: bool = False
+    """Tasks 11-15 and the model check use this run (:meth:`Session.step_run`)."""
+    plotted: bool = True
+    """The newest run of its kind (steps, fast): the one its plot shows."""
 
 
 def _median(values: Sequence[float | None]) -> float | None:
@@ -410,8 +417,11 @@ def _t63(log: StepLog) -> float | None:
         return None
 
 
-RUN_VIEWS_KEPT = 8
-"""How many run views :func:`runs` keeps (two a session)."""
+RUN_VIEWS_KEPT = 24
+"""How many run views :func:`runs` keeps (a few sessions' runs)."""
+
+_marked_views: dict[tuple[object, ...], RunView] = {}
+"""The run views as :func:`runs` hands them out (T hidden or not, in use, plotted)."""
 
 _run_views: dict[tuple[object, ...], RunView] = {}
 """The run views built, by (session folder, run, samples, interrupted): a recorded run's log
@@ -419,13 +429,38 @@ does not change, and its three fits took about 0.4 s every time Task 10 was show
 
 
 def runs(session: Session) -> tuple[RunView, ...]:
-    """The latest 25 ms run and the latest fast run, with their T readings (a worker's job;
-    a run's view is built once)."""
-    latest = {r.kind: r for r in session.runs if r.kind in ("steps", "fast")}
+    """Every run the group can choose for Tasks 11-15 (step runs of 25 ms and 5 ms, and
+    imported logs), oldest first, with their T readings; the one in use marked (``in_use``,
+    also when it is interrupted), the newest 25 ms and the newest fast run ``plotted``
+    (a worker's job; a run's view is built once)."""
+    using = session.step_run()
+    newest = {r.kind: r.name for r in session.runs if r.kind in ("steps", "fast")}
+    conceal = "own.T" in hidden(session)
     out = []
-    for kind in ("steps", "fast"):
-        r = latest.get(kind)
-        if r is None:
+    for v in _run_list(session):
+        in_use = using is not None and v.name == using.name
+        plotted = newest.get(v.kind) == v.name
+        # each marked view made once too (the T readings are Task 12's answer: left out
+        # while hidden), so a view shown again is the same object
+        key = (str(session.folder), v.name, v.samples, v.interrupted, conceal, in_use, plotted)
+        if key not in _marked_views:
+            _marked_views[key] = (
+                replace(v, T_63=None, T_63_lab=None, T_ls=None, T_ci=None, T_hidden=True)
+                if conceal
+                else v
+            )
+            _marked_views[key] = replace(_marked_views[key], in_use=in_use, plotted=plotted)
+            while len(_marked_views) > 4 * RUN_VIEWS_KEPT:
+                del _marked_views[next(iter(_marked_views))]
+        out.append(_marked_views[key])
+    return tuple(out)
+
+
+def _run_list(session: Session) -> list[RunView]:
+    """The view of every run Tasks 11-15 can use, oldest first (built once each)."""
+    out = []
+    for r in session.runs:
+        if r.kind not in STEP_KINDS:
             continue
         key = (str(session.folder), r.name, r.samples, r.interrupted)
         kept = _run_views.get(key)
@@ -461,17 +496,7 @@ def runs(session: Session) -> tuple[RunView, ...]:
         _run_views[key] = out[-1]
         while len(_run_views) > RUN_VIEWS_KEPT:
             del _run_views[next(iter(_run_views))]
-    if "own.T" not in hidden(session):
-        return tuple(out)
-    shown = []  # the readings are Task 12's answer: left out, each view made once too
-    for v in out:
-        hidden_key = (str(session.folder), v.name, v.samples, v.interrupted, "T hidden")
-        if hidden_key not in _run_views:
-            _run_views[hidden_key] = replace(
-                v, T_63=None, T_63_lab=None, T_ls=None, T_ci=None, T_hidden=True
-            )
-        shown.append(_run_views[hidden_key])
-    return tuple(shown)
+    return out
 
 
 # -- Tasks 11-15: the results ---------------------------------------------------------------------

@@ -98,12 +98,25 @@ def _ms(x: float) -> str:
     return f"{x * 1e3:.0f} ms"
 
 
+def shown_stop(log: Log, cause: str) -> Stop | None:
+    """The step-down the evidence for ``cause`` speaks of, and the close-up shows: for dry
+    friction the fastest of those after which the wheel stands still, for a coast the fastest
+    drop to zero; None for another cause, or when the log has no such step-down."""
+    if cause == "coulomb_friction":
+        stops = [s for s in falls(log) if s.after is not None]
+    elif cause == "coast_on_zero":
+        stops = [s for s in falls(log) if s.to_zero]
+    else:
+        return None
+    return max(stops, key=lambda x: abs(x.speed)) if stops else None
+
+
 def _coulomb(log: Log, ext: Fit) -> str:
     uc = ext.params["u_c"]
-    stops = [s for s in falls(log) if s.after is not None]
+    shown = shown_stop(log, "coulomb_friction")
     coast = "coast_on_zero" in ext.causes
-    if stops:
-        s = max(stops, key=lambda x: abs(x.speed))
+    if shown is not None:
+        s = shown
         after = s.after if s.after is not None else 0.0
         k = int(np.searchsorted(log.t, log.t[s.row] + after))
         k = min(k, log.t.size - 1)
@@ -171,10 +184,9 @@ def _filter(log: Log, ext: Fit, floor: float | None) -> str:
 
 def _coast(log: Log, ext: Fit) -> str:
     tc = ext.params["T_coast"]
-    downs = [s for s in falls(log) if s.to_zero]
-    if not downs:
+    s = shown_stop(log, "coast_on_zero")
+    if s is None:
         return f"the wheel runs down slowly at zero command (time constant {tc:.3g} s)"
-    s = max(downs, key=lambda x: abs(x.speed))
     decel, span = _fall_rate(log, s)
     a, w0 = s.row, abs(s.speed)
     return (

@@ -202,11 +202,13 @@ def close_up(
     noise: float,
     fenced: tuple[float, float] | None = None,
     length: float | None = None,
+    edge: int | None = None,
 ) -> CloseUp:
     """The window to look at for ``cause``: one step-down for dry friction or coasting, one
     rise for the others (and for none), a disturbance's stretch when ``fenced`` (t, t_end)
     is given. T (s) and lag (s, delay plus filter) size it; ``length`` (s) overrides how long
-    the response lasts."""
+    the response lasts; ``edge`` (a row) the step-down to show, the one the evidence speaks
+    of (the first step-down when it is None or no step-down)."""
     ts = float(np.median(np.diff(t))) if t.size > 1 else 1.0
     change = (np.flatnonzero(np.diff(u) != 0) + 1).tolist()
     falls = [e for e in change if abs(u[e]) < abs(u[e - 1])]
@@ -217,7 +219,7 @@ def close_up(
         pad = max(0.5 * (b - a), 4.0 * T, 5 * ts)
         t0, t1, what = a - pad, b + pad, "the stretch where something braked the wheel"
     elif cause in ("coulomb_friction", "coast_on_zero") and falls:
-        e = falls[0]
+        e = edge if edge in falls else falls[0]
         t0, t1 = float(t[e]) - max(2.0 * T, 5 * ts), float(t[e]) + max(span, 10 * ts)
         what = "a step-down, where the wheel slows and stops"
     elif rises:

@@ -17,7 +17,7 @@ from minseg_tui.model.check import disturbances as dist
 from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
 from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, in_words, ranges
-from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, falls
+from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, shown_stop
 from minseg_tui.model.check.figures import above, angle_rms, close_up, folds, lead, systematic
 from minseg_tui.model.check.fit import (
     MAX_FIT_ROWS,
@@ -433,6 +433,7 @@ def _report(
         level,
         (float(t[fenced[0]]), float(t[min(fenced[1], t.size - 1)])) if fenced else None,
         _stop_time(log, order, ext) or _response_time(ext, u),
+        edge=shown.row if (shown := shown_stop(log, order[0]) if order else None) else None,
     )
     return CheckResult(
         baseline,
@@ -548,18 +549,14 @@ def _held_out(full: Problem, base: Fit, ext: Fit, rng: dict) -> dict[str, float 
 
 def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
     """How long the close-up of a step-down lasts (s): at least until the measured speed
-    stands still after the first step-down, with a quarter of that after it, when the cause
-    shown is dry friction or a coast and the wheel stops there; else None."""
-    if not order or order[0] not in ("coulomb_friction", "coast_on_zero"):
-        return None
-    first = next(iter(falls(log)), None)
-    downs = [
-        e for e in np.flatnonzero(np.diff(log.u) != 0) + 1 if abs(log.u[e]) < abs(log.u[e - 1])
-    ]
-    if first is None or first.after is None or not downs or first.row != int(downs[0]):
+    stands still after the step-down the evidence speaks of (:func:`shown_stop`), with a
+    quarter of that after it, when the cause shown is dry friction or a coast and the wheel
+    stops there; else None."""
+    shown = shown_stop(log, order[0]) if order else None
+    if shown is None or shown.after is None:
         return None
     usual = 6.0 * ext.T + ext.effects.delay + ext.effects.taps * log.ts
-    return max(1.25 * first.after, usual)
+    return max(1.25 * shown.after, usual)
 
 
 def _params_text(p: dict[str, float]) -> str:

@@ -112,20 +112,21 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
             return
         live = self.run_progress.kind if self.recording and self.run_progress else ""
         for v in runs:
-            if v.kind == live:
+            if v.kind == live or not v.plotted:
                 continue  # being recorded again: the plot shows the new run as it arrives
             plot = self.query_one(PLOT_OF.get(v.kind, "#plot-fast"), TracePlot)
             traces = [Trace(v.t, v.omega, "board time")]
             if v.kind == "steps":
                 traces.append(Trace(v.t, v.omega_lab, "manual", "dot"))
             plot.show(traces)
-        rows = [f"{'run':<9}{'T 63% manual':>13}{'T 63%':>10}{'T fit (95% CI)':>27}"]
+        rows = [f"{'run':<11}{'T 63% manual':>13}{'T 63%':>10}{'T fit (95% CI)':>27}"]
         for v in runs:
             ci = (
                 f" ({format_number(v.T_ci[0], 3)}..{format_number(v.T_ci[1], 3)})" if v.T_ci else ""
             )
+            name = ("▸ " if v.in_use else "  ") + v.name
             rows.append(
-                f"{v.name:<9}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>10}"
+                f"{name:<11}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>10}"
                 f"{_s(v.T_ls) + ci:>27}"
             )
         if not runs:
@@ -135,7 +136,9 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
         self.query_one("#t-readings", Static).update("\n".join(rows))
         if not self.recording:
             said = ", ".join(
-                f"{v.name} ({v.samples} samples{f', interrupted: {v.interruption}' if v.interruption else ''})"
+                f"{'▸ ' if v.in_use else ''}{v.name} ({v.samples} samples"
+                f"{f', interrupted: {v.interruption}' if v.interrupted else ''}"
+                f"{', in use for Tasks 11-15' if v.in_use else ''})"
                 for v in runs
             )
             self.query_one("#run-status", Prose).update(said or "no runs recorded yet")

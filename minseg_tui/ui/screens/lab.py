@@ -267,17 +267,20 @@ class StepCommands(Provider):
         if not isinstance(screen, LabScreen):
             return []
         with screen.session as s:
-            runs = [r.name for r in s.runs]
+            runs = [
+                (r.name, f" ({r.interruption or 'interrupted'})" if r.interrupted else "")
+                for r in s.runs
+            ]
         go, use = screen.go_to, screen.use_run
         return (
             [(f"Go to: {s.title}", partial(go, s.id), "move to this step") for s in STEPS]
             + [
                 (
-                    f"Use run {name} for Tasks 11-15",
+                    f"Use run {name}{why} for Tasks 11-15",
                     partial(use, name),
                     "the run the results and the model check use",
                 )
-                for name in runs
+                for name, why in runs
             ]
             + [
                 (

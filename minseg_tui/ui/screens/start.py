@@ -15,7 +15,7 @@ from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from minseg_tui.lab.content.steps import STEP_INDEX, step
-from minseg_tui.lab.saving.store import SessionInfo
+from minseg_tui.lab.saving.store import SessionInfo, names_key, same_names
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
 
@@ -24,6 +24,11 @@ def step_name(step_id: str) -> str:
     """The step's name as the lab calls it: its title up to the colon ("Task 13",
     "Preparation 12"); the id itself for a step this program does not know."""
     return step(step_id).title.split(":")[0] if step_id in STEP_INDEX else step_id
+
+
+def split_names(members: str) -> list[str]:
+    """The group's names as typed in one box, split at commas ("Ada L, Alan T")."""
+    return [m.strip() for m in members.split(",") if m.strip()]
 
 
 def why_closed(s: SessionInfo) -> str:
@@ -43,6 +48,7 @@ class StartScreen(StatusScreen):
         # handed on, so they go into the lab (the app asks :meth:`request` what Enter wants)
         Binding("enter", "app.start_lab", show=False, priority=True),
         Binding("f12", "app.class_view", "Class view"),
+        Binding("ctrl+n", "new_anyway", "New anyway", show=False),
     ]
 
     @dataclass
@@ -65,6 +71,9 @@ class StartScreen(StatusScreen):
         self._sessions = {str(s.path): s for s in sessions}
         self._today = today
         self._unreadable = unreadable
+        self._offered: tuple[tuple[str, ...], str] | None = None
+        """The names typed and the session of those names offered for them (Enter again
+        opens it), once Enter found one."""
 
     def compose(self) -> ComposeResult:
         yield self.status_line()
@@ -107,10 +116,38 @@ class StartScreen(StatusScreen):
                 self.query_one("#start-msg", Static).update("Type the group members' names first.")
                 self.query_one("#members", Input).focus()
                 return None
+            names = split_names(members)
+            if self._offered is not None and self._offered[0] == names_key(names):
+                return self._resume(self._offered[1])  # Enter again: the session offered
+            same = same_names(list(self._sessions.values()), names)
+            if same:
+                self._offer(names, same[0])
+                return None
             return self.NewSession(members, date)
         if isinstance(focused, OptionList) and focused.highlighted is not None:
             return self._resume(focused.get_option_at_index(focused.highlighted).id)
         return None
+
+    def _offer(self, names: Sequence[str], info: SessionInfo) -> None:
+        """Say that a session of these names exists, and what Enter and Ctrl+N do now."""
+        self._offered = (names_key(names), str(info.path))
+        self.query_one("#start-msg", Static).update(
+            Content(
+                f"A session of {', '.join(info.members)} exists ({info.date}, at "
+                f"{step_name(info.last_step)}, session {info.id}): Enter resumes it; Ctrl+N "
+                "starts a second one anyway, in a folder of its own."
+            )
+        )
+        keys = list(self._sessions)
+        self.query_one("#sessions", OptionList).highlighted = keys.index(str(info.path))
+
+    def action_new_anyway(self) -> None:
+        """Ctrl+N: a new session of the names typed, although one of them exists."""
+        members = self.query_one("#members", Input).value.strip()
+        if not members:
+            self.query_one("#start-msg", Static).update("Type the group members' names first.")
+            return
+        self.post_message(self.NewSession(members, self.query_one("#date", Input).value.strip()))
 
     def _resume(self, key: str | None) -> StartScreen.Resume | None:
         info = self._sessions.get(key or "")
