@@ -161,6 +161,22 @@ async def test_keys_typed_on_a_step_shown_by_pgdn_all_land_in_its_entry(quiet):
         assert _typed(app, "model_check.notes") == "why 0 rising steps?"  # F8 stored it
 
 
+async def test_keys_typed_on_the_list_of_steps_all_go_into_one_entry(quiet):
+    """Seen in tmux (walk 3, stop 24): '7,8 Enter Tab 7,8/4,05' in one burst on Task 11. Enter
+    stored omega_ss and moved to K, Tab moved to the list of steps, and the keys typed there
+    go into the first empty entry, K. The first did; the rest, handed to the list before the
+    focus reached K, looked for the first empty entry again, found K filled by the first, and
+    replaced omega_ss ('7' stored as K, ',8/4,05' over omega_ss)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        await goto(pilot, "task11")
+        await burst(pilot, *"7,8", "enter", "tab", *"7,8/4,05", "enter")
+        assert _typed(app, "own.omega_step") == "7,8"
+        assert _box(app, "own.omega_step") == "7,8"
+        assert _typed(app, "own.K") == "7,8/4,05"
+
+
 async def test_two_enters_in_the_palette_leave_the_lab_on_screen(quiet):
     """Seen in tmux: 'Ctrl+P task 6 Enter 0,497 Tab ... Enter' in one burst left an empty
     terminal and a traceback: the palette closes itself once per Enter it is handed, and

@@ -231,10 +231,14 @@ class StepPane(VerticalScroll):
         return next((r for r in rows if r.is_empty), rows[0] if rows else None)
 
     def typing_row(self) -> FieldRow | None:
-        """Where keys typed outside an entry go: the landing entry, else the first empty
+        """Where keys typed outside an entry go: the entry the keys before them in the same
+        burst went into (it is not focused yet), else the landing entry, else the first empty
         entry (a notes field too), else the first; text entries only (a question to tick,
         the summary's, takes no text)."""
         rows = [r for r in self.query(FieldRow) if not r.field.options]
+        started = next((r for r in rows if r.input.starting), None)
+        if started is not None:  # the first key filled it: not the first empty one any more
+            return started
         landing = self.landing_row()
         if landing in rows:
             return landing
