@@ -22,44 +22,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import CheckResult
+from minseg_tui.model.check.effects import CANDIDATES
 from minseg_tui.quantities import format_value
 
 FloatArray = NDArray[np.float64]
 
-EVERYDAY: dict[str, str] = {
-    "coulomb_friction": (
-        "dry friction in the gearbox and the brushes: a constant braking torque, so the "
-        "wheel stops sooner than the model says (the model only knows a friction that "
-        "shrinks with the speed)"
-    ),
-    "dead_time": (
-        "a delay: the motor answers a little after the command, as if the voltage arrived late"
-    ),
-    "velocity_filter": (
-        "the speed you see is an average over several samples, which turns every jump into a ramp"
-    ),
-    "coast_on_zero": (
-        "at 0 V the driver lets the wheel spin freely instead of braking it, so it runs down "
-        "at its own pace, not at the pace of a braked motor"
-    ),
-    "second_pole": (
-        "the current needs time to build up in the motor's winding, so the speed starts "
-        "rising gently instead of at once"
-    ),
-    "current_limit": (
-        "the driver limits the current, so the wheel can only speed up so fast at first"
-    ),
-}
-"""Each cause the check can name, in the words of someone who has not met it yet."""
+EVERYDAY: dict[str, str] = {c.cause: c.everyday for c in CANDIDATES}
+"""Each cause the check can name, in the words of someone who has not met it yet (its
+``everyday`` in :data:`~minseg_tui.model.check.effects.CANDIDATES`)."""
 
-SHORT: dict[str, str] = {
-    "coulomb_friction": "dry friction",
-    "dead_time": "a delay",
-    "velocity_filter": "an averaged speed",
-    "coast_on_zero": "coasting at 0 V",
-    "second_pole": "a slow current build-up",
-    "current_limit": "a current limit",
-}
+SHORT: dict[str, str] = {c.cause: c.short for c in CANDIDATES}
 """Each cause in two or three words (for 'with ... added' and 'or ...')."""
 
 FIGURE_WORDS: dict[str, str] = {

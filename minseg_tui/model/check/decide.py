@@ -39,10 +39,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from minseg_tui.model.check.deviations import regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range, starts
 from minseg_tui.model.check.figures import systematic
 from minseg_tui.model.check.fit import T_BOUNDS, Fit, Problem, fit_causes, values_of
-from minseg_tui.model.check.guess import starts
 from minseg_tui.model.check.sampling import scatter
 
 MIN_REDUCTION = 0.25
@@ -115,7 +114,7 @@ def on_bound(f: Fit, cause: str, rng: dict[str, Range]) -> str | None:
     null = BY_CAUSE[cause].null
     if x >= hi - tol and not math.isinf(null):
         return "upper"
-    if x <= lo + tol and null != r.lo and not (cause == "second_pole"):
+    if x <= lo + tol and null != r.lo:
         return "lower"
     return None
 

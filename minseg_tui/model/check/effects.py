@@ -1,29 +1,105 @@
-"""The causes the model check can name, as data.
+"""The causes the model check can name: each one's every piece, registered in one list.
 
 Each cause is one effect with one parameter on top of the first-order model
-T w' = -w + K u; several can act at once (their simulation is :mod:`.simulate`). The
-names and the parameter names are the JSON contract. The search range of a parameter
-depends on the log (its steps, levels and time constant) and is worked out by
-:func:`ranges`.
+T w' = -w + K u; several can act at once. A :class:`Candidate` holds all of one cause: its
+contract names (the cause and its parameter: the JSON contract, never renamed), the
+:class:`~.simulate.Effects` field it sets and the value at which it is absent, its search
+range on a log (worked out from the log's steps, levels and time constant), where the
+search starts, what a log needs to show it, the sentence of its evidence, and its words for
+people. :data:`CANDIDATES` is the list; nothing else lists the causes.
+
+Six causes are modes of the motor, coupled to each other, and simulated together in closed
+form by :mod:`.simulate` (their ``field``). A cause that acts on the input or on the angle
+the encoder reads (before the speed is taken) can bring its own simulation piece instead:
+``drive`` or ``reading`` (:class:`~.simulate.Extra`), and needs no other module.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
+from minseg_tui.model.check import evidence as ev
+from minseg_tui.model.check.guess import first_motion, levels_offset, steepest_rate
 from minseg_tui.model.check.simulate import Effects
+
+if TYPE_CHECKING:
+    from minseg_tui.model.check.fit import Fit
 
 FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
+class Range:
+    """Search range of one cause's Effects field on this log (lo, hi), and its scale."""
+
+    lo: float
+    hi: float
+    log_scale: bool
+
+
+@dataclass(frozen=True)
+class Shape:
+    """What the search ranges are worked out from, read off one log: the nominal period ts
+    (s), the first-order time constant T (s), the smallest level driven at u_min (V), the
+    shortest and longest stretch of constant input that follows a step (s; the last one may
+    be cut short and does not count), the longest in rows, the largest step (V), and the
+    largest |u| (V)."""
+
+    ts: float
+    T: float
+    u_min: float
+    shortest: float
+    longest: float
+    rows_long: int
+    jump: float
+    u_top: float
+
+
+@dataclass(frozen=True)
+class Seen:
+    """What the starts of a search are read off: the log (t in s, u in V, y the measured
+    speed in rad/s), its nominal period ts (s), the model's T (s) and K (rad/s/V), the
+    speed's scatter (rad/s) and the cause's search range."""
+
+    t: FloatArray
+    u: FloatArray
+    y: FloatArray
+    ts: float
+    T: float
+    K: float
+    noise: float
+    rng: Range
+
+
+Words = Callable[[ev.Log, "Fit", float | None], str]
+"""The sentence of a cause's evidence in one log: (the log, the fit that holds the cause,
+the speed's noise floor in rad/s when known) -> words, every number read off the log."""
+
+
+@dataclass(frozen=True)
 class Candidate:
-    """One cause: contract name, its parameter (contract name, unit), the field of
-    :class:`Effects` it sets, the value at which it is absent, and what it is."""
+    """One cause, every piece of it.
+
+    cause / param / unit: contract names (the cause, its parameter) and the parameter's
+    unit; field: the :class:`Effects` field it sets (K = 1 units: V, s, V/s); null: the
+    value at which it is absent (0, 1 or infinity); meaning: one sentence of what it is;
+    log_scale: searched on a log scale; label: a few words for people; everyday: what a
+    student who has not met it is told; short: two or three words ('with ... added').
+
+    range: its search range on a log; starts: the start values of its field; needs: what
+    a log must hold to show it (None: every log); words: the sentence of its evidence;
+    scale: the unit of a linear search axis, 'V' (the log's largest |u|) or 's' (ts);
+    reported: the contract parameter from the field and K (default: the field itself);
+    nonlinear: the wheel stops, coasts or is capped (an extra pole on the drive and one on
+    the measurement differ then); stop: the step-downs that show it (the close-up and its
+    evidence speak of the fastest; None: it is shown at a rise).
+    """
 
     cause: str
     param: str
@@ -31,72 +107,187 @@ class Candidate:
     field: str
     null: float
     meaning: str
+    range: Callable[[Shape], Range]
+    starts: Callable[[Seen], list[float]]
+    words: Words
     log_scale: bool = False
     label: str = ""
-    """The cause in a few words for people (the contract name is for programs)."""
+    everyday: str = ""
+    short: str = ""
+    needs: ev.Needs | None = None
+    scale: str = "s"
+    reported: Callable[[float, float], float] = lambda value, K: value
+    nonlinear: bool = False
+    stop: Callable[[ev.Stop], bool] | None = None
+
+
+# -- the causes ---------------------------------------------------------------------------
+
+
+def _friction_starts(s: Seen) -> list[float]:
+    vals = [s.rng.hi * f for f in (0.05, 0.15, 0.35, 0.6)]
+    off = levels_offset(s.u, s.y, s.T, s.ts)
+    if off is not None and 0 < off < s.rng.hi:
+        vals.append(off)
+    return vals
+
+
+COULOMB_FRICTION = Candidate(
+    "coulomb_friction",
+    "u_c",
+    "V",
+    "u_c",
+    0.0,
+    "dry friction: the motor needs u_c volts to break away, and a wheel left to itself stops "
+    "in finite time",
+    range=lambda s: Range(0.0, 0.98 * s.u_min, False),
+    starts=_friction_starts,
+    words=lambda log, f, floor: ev.coulomb_words(log, f),
+    label="dry friction",
+    everyday=(
+        "dry friction in the gearbox and the brushes: a constant braking torque, so the "
+        "wheel stops sooner than the model says (the model only knows a friction that "
+        "shrinks with the speed)"
+    ),
+    short="dry friction",
+    needs=ev.NEEDS_TWO_LEVELS,
+    scale="V",
+    nonlinear=True,
+    stop=ev.stands_still,
+)
+
+
+def _delay_starts(s: Seen) -> list[float]:
+    lags = first_motion(s.t, s.u, s.y, s.noise)
+    vals = [f * s.ts for f in (0.5, 1.0, 2.0)] + [0.5 * s.T]
+    if lags:
+        lag = float(np.median(lags))
+        vals += [max(lag - 1.5 * s.ts, 0.0), max(lag - s.ts - 0.3 * s.T, 0.0)]
+    return vals
+
+
+DEAD_TIME = Candidate(
+    "dead_time",
+    "delay",
+    "s",
+    "delay",
+    0.0,
+    "a pure delay between command and motor",
+    range=lambda s: Range(0.0, max(0.8 * s.shortest, 3.0 * s.ts), False),
+    starts=_delay_starts,
+    words=lambda log, f, floor: ev.dead_time_words(log, f),
+    label="dead time",
+    everyday=(
+        "a delay: the motor answers a little after the command, as if the voltage arrived late"
+    ),
+    short="a delay",
+    needs=ev.NEEDS_RISE,
+)
+
+VELOCITY_FILTER = Candidate(
+    "velocity_filter",
+    "taps",
+    "samples",
+    "taps",
+    1.0,
+    "the measured speed is a moving average of the Euler velocity over N samples",
+    # an average longer than a short stretch still shows, as a ramp cut off by the next step
+    range=lambda s: Range(1.0, float(min(40, s.rows_long)), False),
+    starts=lambda s: [1.0],
+    words=ev.filter_words,
+    label="averaged speed (velocity filter)",
+    everyday=(
+        "the speed you see is an average over several samples, which turns every jump into a ramp"
+    ),
+    short="an averaged speed",
+    needs=ev.NEEDS_RISE,
+)
+
+COAST_ON_ZERO = Candidate(
+    "coast_on_zero",
+    "T_coast",
+    "s",
+    "T_coast",
+    math.inf,
+    "at zero command the bridge is open and the wheel coasts with its own time constant",
+    range=lambda s: Range(max(0.5 * s.T, 0.002), 30.0, True),
+    starts=lambda s: [s.T * f for f in (1.5, 3.0, 8.0)] + [1.0, 5.0],
+    words=lambda log, f, floor: ev.coast_words(log, f),
+    log_scale=True,
+    label="coasting at zero command",
+    everyday=(
+        "at 0 V the driver lets the wheel spin freely instead of braking it, so it runs down "
+        "at its own pace, not at the pace of a braked motor"
+    ),
+    short="coasting at 0 V",
+    needs=ev.NEEDS_DROP_TO_ZERO,
+    nonlinear=True,
+    stop=ev.drops_to_zero,
+)
+
+SECOND_POLE = Candidate(
+    "second_pole",
+    "T2",
+    "s",
+    "T2",
+    0.0,
+    "an extra pole delays the torque (the armature's L/R, a driver's own lag) or lags the "
+    "reading (a compliant coupling to the encoder, a first-order filter of the speed)",
+    range=lambda s: Range(0.0, 3.0 * s.T, False),
+    starts=lambda s: [s.T * f for f in (0.1, 0.25, 0.5, 0.9)],
+    words=lambda log, f, floor: ev.pole_words(log, f),
+    label="second pole",
+    everyday=(
+        "the current needs time to build up in the motor's winding, so the speed starts "
+        "rising gently instead of at once"
+    ),
+    short="a slow current build-up",
+    needs=ev.NEEDS_RISE,
+)
+
+
+def _cap_range(s: Shape) -> Range:
+    hi = s.jump / (0.1 * s.T)  # beyond, the cap never holds
+    return Range(hi / 1000.0, hi, True)
+
+
+def _cap_starts(s: Seen) -> list[float]:
+    vals = [s.rng.hi * f for f in (0.01, 0.025, 0.045, 0.07, 0.1)]
+    r = steepest_rate(s.t, s.u, s.y, s.K)
+    if r is not None:
+        vals += [0.8 * r, r, 1.25 * r]
+    return vals
+
+
+CURRENT_LIMIT = Candidate(
+    "current_limit",
+    "a_max",
+    "rad/s^2",
+    "rate",
+    math.inf,
+    "the drive caps the current, so the speed ramps at a_max (less what the wheel's own "
+    "drag takes as it speeds up) until the back-EMF takes over (on some drives braking "
+    "after a step down is capped too)",
+    range=_cap_range,
+    starts=_cap_starts,
+    words=lambda log, f, floor: ev.limit_words(log, f),
+    log_scale=True,
+    label="current limit",
+    everyday="the driver limits the current, so the wheel can only speed up so fast at first",
+    short="a current limit",
+    needs=ev.NEEDS_RISE,
+    reported=lambda value, K: abs(K) * value,  # a_max = |K| rate
+    nonlinear=True,
+)
 
 
 CANDIDATES: tuple[Candidate, ...] = (
-    Candidate(
-        "coulomb_friction",
-        "u_c",
-        "V",
-        "u_c",
-        0.0,
-        "dry friction: the motor needs u_c volts to break away, and a wheel left to itself stops "
-        "in finite time",
-        label="dry friction",
-    ),
-    Candidate(
-        "dead_time",
-        "delay",
-        "s",
-        "delay",
-        0.0,
-        "a pure delay between command and motor",
-        label="dead time",
-    ),
-    Candidate(
-        "velocity_filter",
-        "taps",
-        "samples",
-        "taps",
-        1.0,
-        "the measured speed is a moving average of the Euler velocity over N samples",
-        label="averaged speed (velocity filter)",
-    ),
-    Candidate(
-        "coast_on_zero",
-        "T_coast",
-        "s",
-        "T_coast",
-        math.inf,
-        "at zero command the bridge is open and the wheel coasts with its own time constant",
-        log_scale=True,
-        label="coasting at zero command",
-    ),
-    Candidate(
-        "second_pole",
-        "T2",
-        "s",
-        "T2",
-        0.0,
-        "an extra pole delays the torque (the armature's L/R, a driver's own lag) or lags the "
-        "reading (a compliant coupling to the encoder, a first-order filter of the speed)",
-        label="second pole",
-    ),
-    Candidate(
-        "current_limit",
-        "a_max",
-        "rad/s^2",
-        "rate",
-        math.inf,
-        "the drive caps the current, so the speed ramps at a_max (less what the wheel's own "
-        "drag takes as it speeds up) until the back-EMF takes over (on some drives braking "
-        "after a step down is capped too)",
-        log_scale=True,
-        label="current limit",
-    ),
+    COULOMB_FRICTION,
+    DEAD_TIME,
+    VELOCITY_FILTER,
+    COAST_ON_ZERO,
+    SECOND_POLE,
+    CURRENT_LIMIT,
 )
 """Every cause besides ``none``, in the order they are tried."""
 
@@ -134,30 +325,18 @@ def field_value(fx: Effects, cause: str) -> float:
 
 
 def reported(cause: str, value: float, K: float) -> float:
-    """The contract parameter of ``cause`` from its Effects field: a_max = |K| rate (rad/s^2);
-    the others are the field itself."""
-    return abs(K) * value if cause == "current_limit" else value
+    """The contract parameter of ``cause`` (its unit) from its Effects field (K = 1 units)
+    and K (rad/s/V)."""
+    return BY_CAUSE[cause].reported(value, K)
 
 
-@dataclass(frozen=True)
-class Range:
-    """Search range of one cause's Effects field on this log (lo, hi), and its scale."""
-
-    lo: float
-    hi: float
-    log_scale: bool
+NONLINEAR = frozenset(c.cause for c in CANDIDATES if c.nonlinear)
+"""Causes after which an extra pole on the drive and one on the measurement differ."""
 
 
-def ranges(t: FloatArray, u: FloatArray, ts: float, T: float) -> dict[str, Range]:
-    """The search range of every cause on this log: u (V) at t (s), nominal period ts (s),
-    first-order time constant T (s).
-
-    u_c: up to the smallest level the log drives at; delay: up to 0.8 of the shortest stretch
-    of constant input that follows a step; taps: up to 40 and the longest such stretch (an
-    average longer than a short stretch still shows, as a ramp cut off by the next step); T_coast:
-    from T to 30 s; T2: up to 3 T; rate (V/s): from 1/1000 of the largest step over T/10
-    (beyond, the cap never holds).
-    """
+def shape(t: FloatArray, u: FloatArray, ts: float, T: float) -> Shape:
+    """What the search ranges of a log are worked out from: u (V) at t (s), nominal period
+    ts (s), first-order time constant T (s)."""
     levels = np.abs(u[u != 0])
     u_min = float(np.min(levels)) if levels.size else 1.0
     change = np.flatnonzero(np.diff(u) != 0) + 1
@@ -169,13 +348,35 @@ def ranges(t: FloatArray, u: FloatArray, ts: float, T: float) -> dict[str, Range
     longest = max(inner) if inner else float(t[-1] - t[0])
     rows_long = max(2, int(round(longest / ts)))
     jump = float(np.max(np.abs(np.diff(u)))) if u.size > 1 else 1.0
-    jump = max(jump, float(np.max(np.abs(u))), 1e-9)
-    rate_hi = jump / (0.1 * T)
-    return {
-        "coulomb_friction": Range(0.0, 0.98 * u_min, False),
-        "dead_time": Range(0.0, max(0.8 * shortest, 3.0 * ts), False),
-        "velocity_filter": Range(1.0, float(min(40, rows_long)), False),
-        "coast_on_zero": Range(max(0.5 * T, 0.002), 30.0, True),
-        "second_pole": Range(0.0, 3.0 * T, False),
-        "current_limit": Range(rate_hi / 1000.0, rate_hi, True),
-    }
+    top = float(np.max(np.abs(u))) if u.size else 0.0
+    jump = max(jump, top, 1e-9)
+    return Shape(ts, T, u_min, shortest, longest, rows_long, jump, top)
+
+
+def ranges(t: FloatArray, u: FloatArray, ts: float, T: float) -> dict[str, Range]:
+    """The search range of every cause on this log (:func:`shape`; each cause's ``range``)."""
+    s = shape(t, u, ts, T)
+    return {c.cause: c.range(s) for c in CANDIDATES}
+
+
+def starts(
+    cause: str,
+    t: FloatArray,
+    u: FloatArray,
+    y: FloatArray,
+    ts: float,
+    T: float,
+    K: float,
+    noise: float,
+    rng: Range,
+) -> list[float]:
+    """Start values of ``cause``'s Effects field for a log (t s, u V, y rad/s, period ts s)
+    whose model has T (s), K (rad/s/V) and whose speed scatters ``noise`` (rad/s), within
+    its range."""
+    vals = BY_CAUSE[cause].starts(Seen(t, u, y, ts, T, K, noise, rng))
+    return [min(max(v, rng.lo), rng.hi) for v in vals]
+
+
+def cannot_judge(log: ev.Log) -> dict[str, str]:
+    """The causes this log cannot show at all, and why (they are not tried)."""
+    return ev.cannot_judge(log, [(c.cause, c.needs) for c in CANDIDATES])

@@ -8,14 +8,17 @@ measured on the rises. What a log cannot show is said too (:func:`cannot_judge`)
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.check.fit import Fit
 from minseg_tui.model.check.guess import first_motion, levels_offset, rises, steepest_rate
+
+if TYPE_CHECKING:  # the causes' words are registered with them (effects), which fit imports
+    from minseg_tui.model.check.fit import Fit
 
 FloatArray = NDArray[np.float64]
 
@@ -98,22 +101,30 @@ def _ms(x: float) -> str:
     return f"{x * 1e3:.0f} ms"
 
 
-def shown_stop(log: Log, cause: str) -> Stop | None:
-    """The step-down the evidence for ``cause`` speaks of, and the close-up shows: for dry
-    friction the fastest of those after which the wheel stands still, for a coast the fastest
-    drop to zero; None for another cause, or when the log has no such step-down."""
-    if cause == "coulomb_friction":
-        stops = [s for s in falls(log) if s.after is not None]
-    elif cause == "coast_on_zero":
-        stops = [s for s in falls(log) if s.to_zero]
-    else:
+def stands_still(s: Stop) -> bool:
+    """The wheel stands still within the stretch after the step-down ``s``."""
+    return s.after is not None
+
+
+def drops_to_zero(s: Stop) -> bool:
+    """The command drops to zero at the step-down ``s``."""
+    return s.to_zero
+
+
+def shown_stop(log: Log, which: Callable[[Stop], bool] | None) -> Stop | None:
+    """The step-down the evidence for a cause speaks of, and the close-up shows: the fastest
+    of the step-downs ``which`` accepts (the cause's :attr:`~.effects.Candidate.stop`: for dry
+    friction those after which the wheel stands still, for a coast the drops to zero); None
+    for a cause shown at a rise (``which`` None), or when the log has no such step-down."""
+    if which is None:
         return None
+    stops = [s for s in falls(log) if which(s)]
     return max(stops, key=lambda x: abs(x.speed)) if stops else None
 
 
-def _coulomb(log: Log, ext: Fit) -> str:
+def coulomb_words(log: Log, ext: Fit) -> str:
     uc = ext.params["u_c"]
-    shown = shown_stop(log, "coulomb_friction")
+    shown = shown_stop(log, stands_still)
     coast = "coast_on_zero" in ext.causes
     if shown is not None:
         s = shown
@@ -142,7 +153,7 @@ def _coulomb(log: Log, ext: Fit) -> str:
     return text
 
 
-def _dead(log: Log, ext: Fit) -> str:
+def dead_time_words(log: Log, ext: Fit) -> str:
     d = ext.params["delay"]
     lags = first_motion(log.t, log.u, log.y, log.noise)
     seen = (
@@ -157,7 +168,7 @@ def _dead(log: Log, ext: Fit) -> str:
     )
 
 
-def _filter(log: Log, ext: Fit, floor: float | None) -> str:
+def filter_words(log: Log, ext: Fit, floor: float | None) -> str:
     n = int(ext.params["taps"])
     edges = int(np.count_nonzero(np.diff(log.u)))
     which = "every edge becomes" if edges > 1 else "the step becomes"
@@ -182,9 +193,9 @@ def _filter(log: Log, ext: Fit, floor: float | None) -> str:
     return f"{ramp}: the speed looks averaged over {n} samples"
 
 
-def _coast(log: Log, ext: Fit) -> str:
+def coast_words(log: Log, ext: Fit) -> str:
     tc = ext.params["T_coast"]
-    s = shown_stop(log, "coast_on_zero")
+    s = shown_stop(log, drops_to_zero)
     if s is None:
         return f"the wheel runs down slowly at zero command (time constant {tc:.3g} s)"
     decel, span = _fall_rate(log, s)
@@ -217,7 +228,7 @@ def _fall_rate(log: Log, s: Stop) -> tuple[float, float]:
     return -slope, float(tt[-1])
 
 
-def _pole(log: Log, ext: Fit) -> str:
+def pole_words(log: Log, ext: Fit) -> str:
     t2 = ext.params["T2"]
     w = max(2, int(math.ceil(max(t2, ext.T / 2) / log.ts)))
     got, model = [], []
@@ -255,7 +266,7 @@ def _pole(log: Log, ext: Fit) -> str:
     )
 
 
-def _limit(log: Log, ext: Fit) -> str:
+def limit_words(log: Log, ext: Fit) -> str:
     a = ext.params["a_max"]
     r = steepest_rate(log.t, log.u, log.y, 1.0)
     seen = f"the speed ramps at about {r:.3g} rad/s^2" if r else "the speed ramps"
@@ -280,28 +291,32 @@ def _limit(log: Log, ext: Fit) -> str:
     )
 
 
-WORDS: dict[str, Callable[[Log, Fit, float | None], str]] = {
-    "coulomb_friction": lambda log, f, floor: _coulomb(log, f),
-    "dead_time": lambda log, f, floor: _dead(log, f),
-    "velocity_filter": _filter,
-    "coast_on_zero": lambda log, f, floor: _coast(log, f),
-    "second_pole": lambda log, f, floor: _pole(log, f),
-    "current_limit": lambda log, f, floor: _limit(log, f),
-}
-"""Cause -> the sentence that states its evidence in this log."""
+@dataclass(frozen=True)
+class Needs:
+    """What a log must hold for a cause to show in it at all (else it is not tried, and the
+    report says why): ``has`` tells, ``why`` says what is missing; the report lists the
+    causes a log cannot show by ``rank``, then in the order they are tried."""
+
+    rank: int
+    why: str
+    has: Callable[[Log], bool]
 
 
-def cannot_judge(log: Log) -> dict[str, str]:
-    """The causes this log cannot show at all, and why (they are not tried)."""
-    out: dict[str, str] = {}
-    u = log.u
-    downs = falls(log)
-    levels = {round(abs(float(v)), 9) for v in u if v != 0}
-    if not rises(u):
-        for c in ("dead_time", "velocity_filter", "second_pole", "current_limit"):
-            out[c] = "the log has no step up to show it"
-    if not any(s.to_zero for s in downs):
-        out["coast_on_zero"] = "the command never drops to zero while the wheel turns"
-    if not downs and len(levels) < 2:
-        out["coulomb_friction"] = "the log has one driven level and no step-down"
-    return out
+NEEDS_RISE = Needs(0, "the log has no step up to show it", lambda log: bool(rises(log.u)))
+NEEDS_DROP_TO_ZERO = Needs(
+    1,
+    "the command never drops to zero while the wheel turns",
+    lambda log: any(s.to_zero for s in falls(log)),
+)
+NEEDS_TWO_LEVELS = Needs(
+    2,
+    "the log has one driven level and no step-down",
+    lambda log: bool(falls(log)) or len({round(abs(float(v)), 9) for v in log.u if v != 0}) >= 2,
+)
+
+
+def cannot_judge(log: Log, needs: Iterable[tuple[str, Needs | None]]) -> dict[str, str]:
+    """The causes this log cannot show at all, and why (they are not tried): of ``needs``,
+    (cause, what it needs) in the order the causes are tried."""
+    out = [(n.rank, i, c, n.why) for i, (c, n) in enumerate(needs) if n and not n.has(log)]
+    return {c: why for _, _, c, why in sorted(out)}

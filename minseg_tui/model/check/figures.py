@@ -203,9 +203,10 @@ def close_up(
     fenced: tuple[float, float] | None = None,
     length: float | None = None,
     edge: int | None = None,
+    at_fall: bool = False,
 ) -> CloseUp:
-    """The window to look at for ``cause``: one step-down for dry friction or coasting, one
-    rise for the others (and for none), a disturbance's stretch when ``fenced`` (t, t_end)
+    """The window to look at for ``cause``: one step-down for a cause shown there
+    (``at_fall``: dry friction, a coast), one rise for the others (and for none), a disturbance's stretch when ``fenced`` (t, t_end)
     is given. T (s) and lag (s, delay plus filter) size it; ``length`` (s) overrides how long
     the response lasts; ``edge`` (a row) the step-down to show, the one the evidence speaks
     of (the first step-down when it is None or no step-down)."""
@@ -218,7 +219,7 @@ def close_up(
         a, b = fenced
         pad = max(0.5 * (b - a), 4.0 * T, 5 * ts)
         t0, t1, what = a - pad, b + pad, "the stretch where something braked the wheel"
-    elif cause in ("coulomb_friction", "coast_on_zero") and falls:
+    elif at_fall and falls:
         e = edge if edge in falls else falls[0]
         t0, t1 = float(t[e]) - max(2.0 * T, 5 * ts), float(t[e]) + max(span, 10 * ts)
         what = "a step-down, where the wheel slows and stops"

@@ -16,8 +16,8 @@ from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
 from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, in_words, ranges
-from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, shown_stop
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, cannot_judge, in_words, ranges
+from minseg_tui.model.check.evidence import Log, shown_stop
 from minseg_tui.model.check.figures import above, angle_rms, close_up, folds, lead, systematic
 from minseg_tui.model.check.fit import (
     MAX_FIT_ROWS,
@@ -424,6 +424,8 @@ def _report(
     if gp:
         anomalies.append(gp)
     fenced = (found[0].start, found[0].end) if found and not named else None
+    stop = BY_CAUSE[order[0]].stop if order else None
+    shown = shown_stop(log, stop)
     cu = close_up(
         t,
         u,
@@ -433,7 +435,8 @@ def _report(
         level,
         (float(t[fenced[0]]), float(t[min(fenced[1], t.size - 1)])) if fenced else None,
         _stop_time(log, order, ext) or _response_time(ext, u),
-        edge=shown.row if (shown := shown_stop(log, order[0]) if order else None) else None,
+        edge=shown.row if shown else None,
+        at_fall=stop is not None,
     )
     return CheckResult(
         baseline,
@@ -552,7 +555,7 @@ def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
     stands still after the step-down the evidence speaks of (:func:`shown_stop`), with a
     quarter of that after it, when the cause shown is dry friction or a coast and the wheel
     stops there; else None."""
-    shown = shown_stop(log, order[0]) if order else None
+    shown = shown_stop(log, BY_CAUSE[order[0]].stop) if order else None
     if shown is None or shown.after is None:
         return None
     usual = 6.0 * ext.T + ext.effects.delay + ext.effects.taps * log.ts
@@ -752,7 +755,7 @@ def _finding(
     cause = order[0]
     v = compare(ext, sel.without[cause]) if cause in sel.without else compare(ext, base)
     evidence = (
-        f"{WORDS[cause](log, ext, floor)}. It removes {100 * v.reduction:.1f} % of the "
+        f"{BY_CAUSE[cause].words(log, ext, floor)}. It removes {100 * v.reduction:.1f} % of the "
         f"whitened residual the model leaves without it (criterion gain {v.d:.0f})"
     )
     runner, why = _runner_up(sel, ext, full)
@@ -766,7 +769,7 @@ def _finding(
             Other(
                 c,
                 {p: ext.params[p]},
-                f"{WORDS[c](log, ext, floor)}; taking it out of the model leaves "
+                f"{BY_CAUSE[c].words(log, ext, floor)}; taking it out of the model leaves "
                 f"{1 / max(1 - vc.reduction, 1e-12):.1f} times the whitened residual",
             )
         )
