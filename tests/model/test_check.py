@@ -310,7 +310,7 @@ def test_irregular_samples_are_simulated_as_measured(over_interval):
     assert r.baseline.params["T"] == pytest.approx(PlantParams().motor.T, rel=0.05)
     # simulated the way it was measured, the model misses by about the noise only (the
     # other way it would predict speed spikes after every long interval)
-    assert r.baseline.rmse < 3.0 * r.gain["noise_floor"]
+    assert r.baseline.rmse < 3.0 * r.gain.noise_floor
 
 
 def test_lost_samples_on_a_regular_clock_are_gaps():
@@ -335,11 +335,11 @@ def test_the_gain_survives_the_encoder_noise():
     assert r.finding.cause == "coulomb_friction"
     assert r.extended.params["u_c"] == pytest.approx(p.u_coulomb, rel=0.2)
     g = r.gain
-    assert g["noise_floor"] == pytest.approx(2 * math.pi / 720 / 0.005 / math.sqrt(6))
-    assert g["rmse_reduction_percent"] < 20  # the plain rmse hardly moves...
-    assert g["extended_angle_rms"] < 0.5 * g["baseline_angle_rms"]  # ...the angle does
+    assert g.noise_floor == pytest.approx(2 * math.pi / 720 / 0.005 / math.sqrt(6))
+    assert g.rmse_reduction_percent < 20  # the plain rmse hardly moves...
+    assert g.extended_angle_rms < 0.5 * g.baseline_angle_rms  # ...the angle does
     assert r.lead.figure == "extended_angle_rms" and "noise" in r.lead.why
-    assert g["heldout_extended_rmse"] <= g["heldout_baseline_rmse"]
+    assert g.heldout_extended_rmse <= g.heldout_baseline_rmse
 
 
 def test_json_keeps_every_key_and_adds_what_the_ui_needs():

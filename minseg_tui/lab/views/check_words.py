@@ -23,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
+from minseg_tui.model.check.figures import Gain
 from minseg_tui.quantities import format_value
 
 FloatArray = NDArray[np.float64]
@@ -103,11 +104,12 @@ def stem(key: str) -> str:
     return key.replace("baseline_", "").replace("extended_", "")
 
 
-def figure(gain: Mapping[str, float | None], key: str) -> tuple[float | None, float | None]:
+def figure(gain: Gain | Mapping[str, float | None], key: str) -> tuple[float | None, float | None]:
     """The first-order and the extended model's value of gain figure ``key`` (either
     model's key, or its :func:`stem`): the keys are 'baseline_<stem>' and 'extended_<stem>',
     or 'heldout_baseline_rmse' and 'heldout_extended_rmse'. None where the log does not give
-    it."""
+    it. ``gain``: the check's record, or its JSON as a session keeps it."""
+    g = gain.to_dict() if isinstance(gain, Gain) else gain
     s = stem(key)
     for b, e in (
         (f"baseline_{s}", f"extended_{s}"),
@@ -116,8 +118,8 @@ def figure(gain: Mapping[str, float | None], key: str) -> tuple[float | None, fl
             s.replace("heldout_", "heldout_extended_", 1),
         ),
     ):
-        if b in gain or e in gain:
-            return gain.get(b), gain.get(e)
+        if b in g or e in g:
+            return g.get(b), g.get(e)
     return None, None
 
 

@@ -25,8 +25,9 @@ Modules, in the order the check uses them:
 - pipeline: :func:`check`, from start to end.
 """
 
+from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.check.pipeline import check
 from minseg_tui.model.check.result import CheckResult
 from minseg_tui.model.check.text import text
 
-__all__ = ["CheckResult", "check", "text"]
+__all__ = ["CheckResult", "Gain", "check", "text"]
