@@ -39,7 +39,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from minseg_tui.model.check.deviations import regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range, starts
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range, excluded, starts
 from minseg_tui.model.check.figures import systematic
 from minseg_tui.model.check.fit import T_BOUNDS, Fit, Problem, fit_causes, values_of
 from minseg_tui.model.check.sampling import scatter
@@ -259,7 +259,7 @@ def select(
             break  # a pair that leaves only noise needs no third cause
         tries: dict[str, Fit] = {}
         for c in names:
-            if c in chosen:
+            if c in chosen or excluded(c, chosen):
                 continue
             if not chosen:
                 tries[c] = singles[c]
@@ -320,6 +320,7 @@ def select(
         for x in names:
             if (
                 x in chosen
+                or excluded(x, rest)
                 or not sel.verdicts[x].clear
                 or singles[x].sse_white > SWAP_RATIO * singles[first].sse_white
             ):

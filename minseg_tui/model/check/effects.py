@@ -9,9 +9,8 @@ search starts, what a log needs to show it, the sentence of its evidence, and it
 people. :data:`CANDIDATES` is the list; nothing else lists the causes.
 
 Six causes are modes of the motor, coupled to each other, and simulated together in closed
-form by :mod:`.simulate` (their ``field``). A cause that acts on the input or on the angle
-the encoder reads (before the speed is taken) can bring its own simulation piece instead:
-``drive`` or ``reading`` (:class:`~.simulate.Extra`), and needs no other module.
+form by :mod:`.simulate` (their ``field``). A cause that acts on the input can bring its own
+simulation piece instead, ``drive`` (:class:`~.simulate.Extra`), and needs no other module.
 """
 
 from __future__ import annotations
@@ -26,7 +25,7 @@ from numpy.typing import NDArray
 
 from minseg_tui.model.check import evidence as ev
 from minseg_tui.model.check.guess import first_motion, levels_offset, steepest_rate
-from minseg_tui.model.check.simulate import Effects
+from minseg_tui.model.check.simulate import Drive, Effects, Extra
 
 if TYPE_CHECKING:
     from minseg_tui.model.check.fit import Fit
@@ -98,7 +97,7 @@ class Candidate:
     reported: the contract parameter from the field and K (default: the field itself);
     nonlinear: the wheel stops, coasts or is capped (an extra pole on the drive and one on
     the measurement differ then); stop: the step-downs that show it (the close-up and its
-    evidence speak of the fastest; None: it is shown at a rise).
+    evidence speak of the fastest; None: it is shown at a rise); drive: see below.
     """
 
     cause: str
@@ -119,6 +118,12 @@ class Candidate:
     reported: Callable[[float, float], float] = lambda value, K: value
     nonlinear: bool = False
     stop: Callable[[ev.Stop], bool] | None = None
+    excludes: frozenset[str] = frozenset()
+    """Causes one model never holds beside this one: the log cannot tell them apart when both
+    act (their sum is all it shows), so a fit of both would split one effect in two."""
+    drive: Drive | None = None
+    """Its own simulation piece, for a cause that acts on the input (then ``field`` is
+    empty): the levels the motor gets from the levels in force and the parameter."""
 
 
 # -- the causes ---------------------------------------------------------------------------
@@ -310,24 +315,39 @@ UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in C
 
 
 def effects_of(values: dict[str, float]) -> Effects:
-    """Effects from {cause: value of its Effects field} (taps rounded)."""
+    """Effects from {cause: value of its Effects field} (taps rounded); a cause with its
+    own piece goes into ``extra``."""
     kw: dict[str, float | int] = {}
+    extra: list[Extra] = []
     for cause, value in values.items():
-        f = BY_CAUSE[cause].field
-        kw[f] = int(round(value)) if f == "taps" else float(value)
-    return Effects(**kw)  # type: ignore[arg-type]
+        c = BY_CAUSE[cause]
+        if c.drive is not None:
+            extra.append(Extra(cause, float(value), c.drive))
+            continue
+        kw[c.field] = int(round(value)) if c.field == "taps" else float(value)
+    return Effects(**kw, extra=tuple(extra))  # type: ignore[arg-type]
 
 
 def field_value(fx: Effects, cause: str) -> float:
     """The value of the Effects field behind ``cause`` (the null value when absent)."""
-    v = getattr(fx, BY_CAUSE[cause].field)
-    return BY_CAUSE[cause].null if v is None else float(v)
+    c = BY_CAUSE[cause]
+    if c.drive is not None:
+        return next((x.value for x in fx.extra if x.cause == cause), c.null)
+    v = getattr(fx, c.field)
+    return c.null if v is None else float(v)
 
 
 def reported(cause: str, value: float, K: float) -> float:
     """The contract parameter of ``cause`` (its unit) from its Effects field (K = 1 units)
     and K (rad/s/V)."""
     return BY_CAUSE[cause].reported(value, K)
+
+
+def excluded(cause: str, others: tuple[str, ...]) -> bool:
+    """``cause`` may not join a model holding ``others`` (:attr:`Candidate.excludes`, either
+    way)."""
+    mine = BY_CAUSE[cause].excludes
+    return any(o in mine or cause in BY_CAUSE[o].excludes for o in others)
 
 
 NONLINEAR = frozenset(c.cause for c in CANDIDATES if c.nonlinear)
