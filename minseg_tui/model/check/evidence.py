@@ -97,7 +97,7 @@ def _before_s(log: Log, s: Stop) -> float:
     return float(log.t[s.row] - log.t[s.row - s.rows])
 
 
-def _ms(x: float) -> str:
+def ms(x: float) -> str:
     return f"{x * 1e3:.0f} ms"
 
 
@@ -135,8 +135,8 @@ def coulomb_words(log: Log, ext: Fit) -> str:
         how = "coasts and " if coast else ""
         text = (
             f"after the drive drops at t = {log.t[s.row]:.3f} s the wheel {how}stands still "
-            f"{_ms(after)} later (measured, from {abs(s.speed):.3g} rad/s, its mean over the "
-            f"{_ms(_before_s(log, s))} before the drop)"
+            f"{ms(after)} later (measured, from {abs(s.speed):.3g} rad/s, its mean over the "
+            f"{ms(_before_s(log, s))} before the drop)"
         )
         if left > max(log.zero, 2.0 * log.noise):
             text += f", where the first-order model still turns at {left:.2f} rad/s"
@@ -158,12 +158,12 @@ def dead_time_words(log: Log, ext: Fit) -> str:
     lags = first_motion(log.t, log.u, log.y, log.noise)
     seen = (
         f"after the step{'s' if len(lags) > 1 else ''} the measured speed first moves "
-        f"{_ms(float(np.median(lags)))} later"
+        f"{ms(float(np.median(lags)))} later"
         if lags
         else "the response starts late"
     )
     return (
-        f"{seen}: a first-order response that starts {_ms(d)} after the command fits "
+        f"{seen}: a first-order response that starts {ms(d)} after the command fits "
         f"(a pure delay; an extra pole would start at once, only more slowly)"
     )
 
@@ -172,11 +172,11 @@ def filter_words(log: Log, ext: Fit, floor: float | None) -> str:
     n = int(ext.params["taps"])
     edges = int(np.count_nonzero(np.diff(log.u)))
     which = "every edge becomes" if edges > 1 else "the step becomes"
-    ramp = f"{which} a ramp about {n} samples ({_ms(n * log.ts)}) long"
+    ramp = f"{which} a ramp about {n} samples ({ms(n * log.ts)}) long"
     if log.smooth:
         return (
             f"{'the rises are' if edges > 1 else 'the rise is'} smoothed as an average of the "
-            f"speed over {n} samples ({_ms(n * log.ts)}) would smooth it; an extra pole in the "
+            f"speed over {n} samples ({ms(n * log.ts)}) would smooth it; an extra pole in the "
             "motor would look alike in this smooth signal"
         )
     if floor is not None:
@@ -203,9 +203,9 @@ def coast_words(log: Log, ext: Fit) -> str:
     return (
         f"right after the command drops to 0 at t = {log.t[a]:.3f} s the speed falls at "
         f"{decel:.3g} rad/s^2 (a line through the speed from the row before the drop to the "
-        f"first reading under half, {_ms(span - float(log.t[a] - log.t[a - 1]))} after the "
+        f"first reading under half, {ms(span - float(log.t[a] - log.t[a - 1]))} after the "
         f"drop), where a braked motor (T = "
-        f"{_ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
+        f"{ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
         f"wheel coast, with a time constant of {tc:.3g} s at zero command"
     )
 
@@ -242,7 +242,7 @@ def pole_words(log: Log, ext: Fit) -> str:
         text += " (in this smooth signal an average of the speed would look alike)"
     if got:
         text += (
-            f": {_ms(w * log.ts)} after the step the speed has risen {np.median(got):.3g} rad/s "
+            f": {ms(w * log.ts)} after the step the speed has risen {np.median(got):.3g} rad/s "
             f"where the first-order model rises {np.median(model):.3g} rad/s"
         )
     if ext.effects.pole_measured:
@@ -256,13 +256,13 @@ def pole_words(log: Log, ext: Fit) -> str:
             if c in ext.causes
         ]
         return text + (
-            f"; an extra pole of {_ms(t2)} on the measurement (a compliant coupling to the "
+            f"; an extra pole of {ms(t2)} on the measurement (a compliant coupling to the "
             "encoder, or a first-order filter of the speed) lags what the encoder reads: on "
             f"the drive it fits worse where {' and where '.join(where) or 'the effects act'} "
             "(a pure delay would show a corner)"
         )
     return (
-        text + f"; an extra pole of {_ms(t2)} delays the torque (a pure delay would show a corner)"
+        text + f"; an extra pole of {ms(t2)} delays the torque (a pure delay would show a corner)"
     )
 
 
