@@ -56,7 +56,7 @@ from scipy import stats as sstats
 
 from minseg_tui.model.identify import identify
 from minseg_tui.model.motor import PUBLISHED
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import identification_log, identification_table
 
 F = NDArray[np.float64]
@@ -72,7 +72,7 @@ TIERS: dict[str, tuple[float, float, float, float]] = {
 class Log:
     """A generated log and its truth: T (s), K (rad/s per V of u_A)."""
 
-    log: StepLog
+    log: RunLog
     T: float
     K: float
     ts: float

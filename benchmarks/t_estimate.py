@@ -1,4 +1,4 @@
-"""Spread of the time constant T over many clean step logs, against the Cramer-Rao bound.
+"""Spread of the time constant T over many clean run logs, against the Cramer-Rao bound.
 
 Logs: the plant with the published MinSeg motor (T about 0.043 s), no dry friction, brake
 at zero command, Ts = 0.025 s, loop jitter up to 2 ms, 720-count encoder; 5 rising steps
@@ -45,10 +45,10 @@ import time
 
 import numpy as np
 
-from minseg_tui.model.identify import fit_time_constant, rising_steps
+from minseg_tui.model.identify import fit_time_constant, rises
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.signals import timestamp_velocity
 
 SEEDS = 300
@@ -86,7 +86,7 @@ def main() -> int:
     methods: list[str] = []
     for seed in range(SEEDS):
         rec = record(params, cmd, ts=TS, seed=seed, jitter_us=JITTER_US)
-        log = StepLog(
+        log = RunLog(
             t=rec.t,
             u=rec.u_A,
             omega=timestamp_velocity(rec.t, rec.count),
@@ -98,7 +98,7 @@ def main() -> int:
         sig.append(fit.sigma)
         inside.append(fit.ci[0] <= T_true <= fit.ci[1])
         methods.append(fit.method)
-        reads = [s.T_63 for s in rising_steps(log, fit) if s.T_63 is not None]
+        reads = [s.T_63 for s in rises(log, fit) if s.T_63 is not None]
         T_63.append(float(np.median(reads)))
         crb_unit.append(crb_T(rec.t, rec.u_req, T_true, w_inf, 1.0))
     elapsed = time.perf_counter() - started

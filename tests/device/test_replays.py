@@ -4,7 +4,7 @@ counts no motor makes, through the real Link on a real pty, into a recorded run.
 The adversarial board is scripted (``ScriptedBoard``): it sends the true stream of a Task
 10 step run, and between its lines blocks of lines it sent before, re-encoded with valid
 checksums. The run is recorded as the TUI records it (a session's Recorder fed with every
-batch the link hands over) and kept as a step log; what is saved must be the true stream,
+batch the link hands over) and kept as a run log; what is saved must be the true stream,
 and the link's counters must say what happened.
 """
 

@@ -188,7 +188,7 @@ async def test_resume_on_a_step_with_a_panel(quiet, step_id):
             assert app2.screen.query_one("#table", DataTable).row_count == 3
 
 
-async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quiet):
+async def test_run_log_keys_work_whatever_has_focus_but_leave_typing_alone(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task2")

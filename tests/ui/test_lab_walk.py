@@ -302,7 +302,7 @@ async def test_the_zoom_shows_the_rise_with_its_63_percent_level_and_crossing(qu
             st = s.results().identification.step
         await goto(pilot, "task12")
         plot = app.screen.query_one(StepPlot)
-        first = st.steps[0]
+        first = st.rises[0]
         # before the group has read T, the crossing (the answer) is neither drawn nor said
         assert "crossing" not in {tr.label for tr in plot.traces}
         note = app.screen.query_one("#zoom-note", Prose).text
@@ -326,7 +326,7 @@ async def test_the_zoom_shows_the_rise_with_its_63_percent_level_and_crossing(qu
         await settle(pilot)
         assert "step 2 of 4" in app.screen.query_one("#zoom-note", Prose).text
         second = {tr.label: tr for tr in plot.traces}["crossing"]
-        assert list(second.x) == pytest.approx([st.steps[1].T_63] * 2)
+        assert list(second.x) == pytest.approx([st.rises[1].T_63] * 2)
         # the group's reading goes in right under the plot it is read from
         panel = app.screen.query_one(ResultsPanel)
         row = _row(app, "own.T")

@@ -21,7 +21,7 @@ from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import U_TASK15, Identification, Reading, StepResult, identify
 from minseg_tui.model.motor import inertia_from_time_constant
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import format_number
 
 
@@ -205,7 +205,7 @@ def compute(
             readings.append(r)
     if not readings:
         problems.append("no complete row in the table yet (u_ss, omega_ss and i_ss; Tasks 4-5)")
-    log: StepLog | None = None
+    log: RunLog | None = None
     if run is not None and kept is None:
         try:
             table = [(r.u_req, r.u_ss) for r in complete_rows] if u_ss_table is None else u_ss_table

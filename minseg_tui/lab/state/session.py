@@ -102,7 +102,7 @@ from minseg_tui.lab.state.results import (
 )
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 
 Clock = Callable[[], datetime]
 
@@ -857,14 +857,14 @@ class Session:
         return list(self._runs)
 
     def run_path(self, name: str) -> Path:
-        """The step-log CSV of run ``name``."""
+        """The run-log CSV of run ``name``."""
         for r in self._runs:
             if r.name == name:
                 return self.folder / r.file
         raise KeyError(name)
 
-    def load_run(self, name: str) -> StepLog:
-        """Run ``name`` read back as a StepLog, its u column the applied voltage u_A worked out
+    def load_run(self, name: str) -> RunLog:
+        """Run ``name`` read back as a RunLog, its u column the applied voltage u_A worked out
         now from the table's u_ss (a recorded run; an imported one as it stands). KeyError for
         an unknown run, InputError if its file is damaged."""
         for r in self._runs:
@@ -1042,7 +1042,7 @@ class Session:
                 partial.unlink(missing_ok=True)
 
     def import_run(self, path: Path) -> RunInfo:
-        """Copy a step log recorded elsewhere into runs/ (checked by read_step_log; InputError
+        """Copy a run log recorded elsewhere into runs/ (checked by read_run_log; InputError
         with file and line if it is not one, SessionNotWritable if it cannot be written) for
         the model check and Tasks 11-15."""
         self._change()

@@ -35,8 +35,8 @@ from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify.identification import determined
-from minseg_tui.model.identify.steps import E63
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.identify.rises import E63
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
     NOT_DETERMINED,
@@ -409,10 +409,10 @@ def _median(values: Sequence[float | None]) -> float | None:
     return float(np.median(vs)) if vs else None
 
 
-def _t63(log: StepLog) -> float | None:
+def _t63(log: RunLog) -> float | None:
     """The manual's 63 % reading of the log's speed: the median over its rising steps, s."""
     try:
-        return _median([s.T_63 for s in model_identify.rising_steps(log)])
+        return _median([s.T_63 for s in model_identify.rises(log)])
     except (InputError, ValueError):
         return None
 
@@ -537,16 +537,16 @@ class RiseZoom:
         return None if self.T_63 is None else self.t0 + self.T_63
 
 
-def rise_zoom(step_: model_identify.RisingStep, T: float | None, ts: float) -> RiseZoom:
+def rise_zoom(rise: model_identify.Rise, T: float | None, ts: float) -> RiseZoom:
     """The window of one rising step, zoomed to its rise with time constant ``T`` (s; the
     step's own 63 % reading when None) at sample period ``ts`` (s)."""
-    T_ref = T if T is not None and T > 0 else step_.T_63
+    T_ref = T if T is not None and T > 0 else rise.T_63
     if T_ref is None or not T_ref > 0:
-        T_ref = step_.duration / ZOOM_AFTER_T
-    t1 = step_.t + step_.duration
-    z0 = step_.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
-    z1 = min(step_.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
-    return RiseZoom(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
+        T_ref = rise.duration / ZOOM_AFTER_T
+    t1 = rise.t + rise.duration
+    z0 = rise.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
+    z1 = min(rise.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
+    return RiseZoom(rise.t, t1, rise.T_63, rise.omega0, rise.omega_ss, z0, z1)
 
 
 @dataclass(frozen=True)
@@ -559,7 +559,7 @@ class ResultsView:
     t: FloatArray
     omega: FloatArray
     u: FloatArray
-    steps: tuple[RiseZoom, ...]
+    rises: tuple[RiseZoom, ...]
     lines: tuple[str, ...]
     compare: tuple[tuple[str, str, str], ...] = ()
     problems: tuple[str, ...] = ()
@@ -581,7 +581,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             log = None
     ident = res.identification
     lines: list[str] = []
-    steps: tuple[RiseZoom, ...] = ()
+    rises: tuple[RiseZoom, ...] = ()
     if ident is not None and ident.step is not None:
         st = ident.step
         conceal = hidden(session)
@@ -627,7 +627,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
         ]
         ts = log.ts if log is not None else 0.0
-        steps = tuple(rise_zoom(s, st.T, ts) for s in st.steps)
+        rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
     problems = list(res.problems)
     rule = policy(session)
     if rule.problem:
@@ -636,14 +636,14 @@ def results(session: Session, step_id: str) -> ResultsView:
     if used is not None and used.interrupted:
         problems.append(
             f"run {used.name} ended before its plan did ({used.interruption}; {used.samples} samples, "
-            f"{len(steps)} rising steps): a whole run gives more steps to read T from"
+            f"{len(rises)} rising steps): a whole run gives more steps to read T from"
         )
     return ResultsView(
         res.run,
         np.asarray(log.t, dtype=float) if log else _empty(),
         np.asarray(log.omega, dtype=float) if log else _empty(),
         np.asarray(log.u, dtype=float) if log else _empty(),
-        steps,
+        rises,
         tuple(lines),
         compare,
         tuple(problems),

@@ -1,4 +1,4 @@
-"""Tasks 6-15 put together: the table, the step log, the model of Task 14 and what they show.
+"""Tasks 6-15 put together: the table, the run log, the model of Task 14 and what they show.
 
 K (Task 11) is the steady speed the fit gives for each rising step over the u_ss the table
 gives at the step's requested voltage (the median over the steps); T (Task 12) the least-
@@ -24,6 +24,14 @@ from minseg_tui.model.identify.observations import (
     step_observations,
     table_observations,
 )
+from minseg_tui.model.identify.risefit import (
+    Rise,
+    TimeConstantFit,
+    fit_time_constant,
+    model_reading_63,
+    rises,
+)
+from minseg_tui.model.identify.rises import rise_windows
 from minseg_tui.model.identify.steady import (
     U_SS_HOW,
     Reading,
@@ -33,17 +41,9 @@ from minseg_tui.model.identify.steady import (
     u_ss_at,
     u_ss_words,
 )
-from minseg_tui.model.identify.stepfit import (
-    RisingStep,
-    TimeConstantFit,
-    fit_time_constant,
-    model_reading_63,
-    rising_steps,
-)
-from minseg_tui.model.identify.steps import step_windows
 from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
-from minseg_tui.model.steplog import (
-    StepLog,
+from minseg_tui.model.runlog import (
+    RunLog,
     clock_problem,
     command,
     find_edges,
@@ -68,7 +68,7 @@ def determined(ci: tuple[float, float]) -> bool:
 
 @dataclass(frozen=True)
 class StepResult:
-    """Tasks 11-13 from a step log.
+    """Tasks 11-13 from a run log.
 
     K: static gain (rad/s per V, median over rising steps of the fitted omega_ss / u_ss);
     T: the least-squares time constant (s), the one the model uses, with the dead time
@@ -92,7 +92,7 @@ class StepResult:
     omega_ss: float
     u_ss: float
     u_ss_how: str
-    steps: tuple[RisingStep, ...]
+    rises: tuple[Rise, ...]
     fit: TimeConstantFit
     model_uses: str = "least_squares"
     K_ci: tuple[float, float] = (math.nan, math.nan)
@@ -125,7 +125,7 @@ class StepResult:
 
 @dataclass(frozen=True)
 class Identification:
-    """Everything of Tasks 6-15. ``step`` is None without a step log."""
+    """Everything of Tasks 6-15. ``step`` is None without a run log."""
 
     R: float
     rows: tuple[Row, ...]
@@ -197,7 +197,7 @@ _AT_ZERO = "below the driver's drop in the table"
 
 
 def _step_result(
-    log: StepLog,
+    log: RunLog,
     rows: tuple[Row, ...],
     u_ss_table: Sequence[tuple[float, float]],
     R: float,
@@ -209,7 +209,7 @@ def _step_result(
     glitches = switch_on_glitches(cmd, log.omega)
     whole_log = log
     log = log.rows_from(glitches) if glitches else log
-    windows, skipped = step_windows(log)
+    windows, skipped = rise_windows(log)
     if not windows:
         cmd, name = command(log)
         raise InputError(
@@ -238,7 +238,7 @@ def _step_result(
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise InputError(log.source, None, "expected a usable rising step")
-    steps = rising_steps(log, fit)
+    steps = rises(log, fit)
     u_used, hows = [], []
     for s in steps:
         if s.u_req is None:
@@ -283,7 +283,7 @@ def _step_result(
         omega_ss=omega_ss,
         u_ss=u_ss,
         u_ss_how=how,
-        steps=tuple(steps),
+        rises=tuple(steps),
         fit=fit,
         K_ci=_K_interval(K, K_each, u_used, fit),
         T_63_model=T_63_model,
@@ -309,8 +309,8 @@ def _step_result(
     return result, observations
 
 
-def step_alone(log: StepLog, u_ss_table: Sequence[tuple[float, float]]) -> StepResult:
-    """Tasks 11-12 from the step log and the table's ``(u_req, u_ss)`` pairs (V) alone: K,
+def step_alone(log: RunLog, u_ss_table: Sequence[tuple[float, float]]) -> StepResult:
+    """Tasks 11-12 from the run log and the table's ``(u_req, u_ss)`` pairs (V) alone: K,
     T and the 63 % reading, which need neither R nor i_ss. J (Task 13) needs R, k_v and f:
     it is NaN here. Raises InputError as :func:`identify` does for the log."""
     step, _ = _step_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
@@ -389,11 +389,11 @@ def _T_63_note(
 def identify(
     readings: Sequence[Reading],
     R: float,
-    log: StepLog | None = None,
+    log: RunLog | None = None,
     source: str = "table",
     u_ss_table: Sequence[tuple[float, float]] | None = None,
 ) -> Identification:
-    """Tasks 6-15 from the table's readings, the resistance R (ohm) and optionally a step log.
+    """Tasks 6-15 from the table's readings, the resistance R (ohm) and optionally a run log.
 
     ``u_ss_table``: the ``(u_req, u_ss)`` pairs (V) of every table row that has a u_ss,
     complete or not, which K divides by (:func:`~.steady.u_ss_at`); default: the readings'.

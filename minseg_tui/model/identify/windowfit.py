@@ -24,7 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, dot
-from minseg_tui.model.identify.steps import StepWindow
+from minseg_tui.model.identify.rises import RiseWindow
 from minseg_tui.model.optimize import least_squares
 
 FloatArray = NDArray[np.float64]
@@ -57,7 +57,7 @@ class _Problem:
         self,
         t: FloatArray,
         theta: FloatArray,
-        windows: list[StepWindow],
+        windows: list[RiseWindow],
         keep: NDArray[np.bool_] | None = None,
     ) -> None:
         taus, ths, rows_all, seg, still, npre = [], [], [], [], [], []
@@ -145,7 +145,7 @@ class _Problem:
 def fit_windows(
     t: FloatArray,
     theta: FloatArray,
-    windows: list[StepWindow],
+    windows: list[RiseWindow],
     ts: float,
     shift: tuple[float, float] = (-math.inf, math.inf),
     T_range: tuple[float, float] = (1e-9, 2e4),

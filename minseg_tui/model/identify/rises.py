@@ -1,4 +1,4 @@
-"""The rising steps of a step log (Task 10's experiment) and the manual's 63 % reading on them.
+"""The rising steps of a run log (Task 10's experiment) and the manual's 63 % reading on them.
 
 A rising step is usable when at least one row comes before it and five after it at the new
 level. Falling steps are not read: at zero command the driver brakes or coasts and dry
@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.steplog import Edge, StepLog, command, find_edges, segment_end
+from minseg_tui.model.runlog import Edge, RunLog, command, find_edges, segment_end
 
 FloatArray = NDArray[np.float64]
 
@@ -26,7 +26,7 @@ MIN_AFTER: int = 5
 
 
 @dataclass(frozen=True)
-class StepWindow:
+class RiseWindow:
     """The rows around one usable rising step.
 
     edge: the step (``edge.start`` is the first row at the new level, the step happens at
@@ -46,14 +46,14 @@ class StepWindow:
         return np.arange(self.pre_from, self.post_last + 1)
 
 
-def step_windows(log: StepLog) -> tuple[list[StepWindow], list[Edge]]:
+def rise_windows(log: RunLog) -> tuple[list[RiseWindow], list[Edge]]:
     """The usable rising steps of ``log`` and the rising edges that are not (too short, or
     at the very start). Time and work grow in proportion to the log's length."""
     cmd, _ = command(log)
     edges = find_edges(cmd)
     n = len(log)
     span = float(np.ptp(cmd)) if n else 0.0
-    used: list[StepWindow] = []
+    used: list[RiseWindow] = []
     skipped: list[Edge] = []
     prev_end = 0  # first row after the previous edge
     for i, e in enumerate(edges):
@@ -68,7 +68,7 @@ def step_windows(log: StepLog) -> tuple[list[StepWindow], list[Edge]]:
         if e.start < 1 or post_last - e.end < MIN_AFTER - 1:
             skipped.append(e)
             continue
-        used.append(StepWindow(e, low_from, max(pre_from, 0), post_last))
+        used.append(RiseWindow(e, low_from, max(pre_from, 0), post_last))
     return used, skipped
 
 
@@ -81,7 +81,7 @@ def _level_start(cmd: FloatArray, e: Edge, earliest: int, span: float) -> int:
 
 
 def _level_end(cmd: FloatArray, e: Edge, upto: int, span: float) -> int:
-    """:func:`~minseg_tui.model.steplog.segment_end` looking only as far as row ``upto``
+    """:func:`~minseg_tui.model.runlog.segment_end` looking only as far as row ``upto``
     (the end of the next edge) first, so that all steps together take time O(rows)."""
     away = np.flatnonzero(np.abs(cmd[e.end : upto] - e.after) > 0.03 * span)
     if away.size:
