@@ -28,7 +28,7 @@ from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import TracePlot
 from minseg_tui.ui.widgets.prose import Prose, wrap
 from minseg_tui.ui.widgets.status import DeviceStatus
-from tests.ui.fakes import QuietDevice, step_stream
+from tests.ui.fakes import QuietDevice, square_wave_stream
 from tests.ui.helpers import (
     TABLE,
     enter_all,
@@ -251,7 +251,7 @@ async def test_task10_waits_for_the_wheel_then_plots_the_run_as_it_arrives(quiet
         assert rec is not None and rec.samples >= PRE_ROLL  # the standing wheel is on record
         plot = app.screen.query_one("#plot-slow", TracePlot)
         assert plot.traces == () or len(plot.traces[0].x) <= rec.samples
-        dev.feed(step_stream(seq, (seq + 1) * 25_000, 2.0))
+        dev.feed(square_wave_stream(seq, (seq + 1) * 25_000, 2.0))
         await taken(pilot, seq + 80)
         x = np.asarray(plot.traces[0].x)
         assert x.size == rec.samples and x[-1] == pytest.approx(rec.elapsed, abs=1e-9)

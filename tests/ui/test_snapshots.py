@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from tests.ui.conftest import quiet_app
-from tests.ui.fakes import METER, QuietDevice, frozen_stream, step_stream
+from tests.ui.fakes import METER, QuietDevice, frozen_stream, square_wave_stream
 from tests.ui.helpers import (
     TABLE,
     enter_all,
@@ -105,7 +105,7 @@ def test_step_run_mid_run(snap_compare, tmp_path, size):
         enter_all(app, TABLE)
         await goto(pilot, "task10")
         seq = await start_run_on(pilot, dev)
-        dev.feed(step_stream(seq, (seq + 1) * 25_000, 4.0))
+        dev.feed(square_wave_stream(seq, (seq + 1) * 25_000, 4.0))
         await taken(pilot, seq + 160)
 
     assert snap_compare(
