@@ -13,7 +13,7 @@ over the nominal period of 20 or 25 ms), on held-out seeds (5000 on; the tests u
   0.3-0.8 sample periods before its timestamp;
 - all three at once;
 
-each on logs of four step periods and on logs of one rising step after six rows of rest
+each on logs of four step periods and on logs of one rise after six rows of rest
 (where the shift used to slide). For a noise-free first-order rise a careful reading (the 63 %
 time from the instant the wheel starts, the Euler speed's half-sample lag taken off) is T
 itself, so T is compared with the generator's T.
@@ -94,7 +94,7 @@ def one(family: str, seed: int, periods: int) -> dict[str, float]:
 
 
 def careful_reading(log: RunLog) -> tuple[float, float] | None:
-    """T (s) read with care off the first rising step of a real log, two ways (see the
+    """T (s) read with care off the first rise of a real log, two ways (see the
     docstring): the 63 % time and the angle's asymptote, each from the onset."""
     cmd, _ = command(log)
     rising = [e for e in find_edges(cmd) if e.rising]

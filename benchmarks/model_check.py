@@ -73,7 +73,7 @@ def confusion(seeds: int) -> None:
 
 
 def _t63(t: np.ndarray, u: np.ndarray, y: np.ndarray) -> float:
-    """The manual's 63 % reading averaged over the rising steps: time from the edge until the
+    """The manual's 63 % reading averaged over the rises: time from the edge until the
     measured speed first reaches 63 % of the step's final value (linear interpolation)."""
     out = []
     edges = np.flatnonzero(np.diff(u) > 0) + 1

@@ -338,7 +338,7 @@ def identification_log(
 ) -> IdentLog:
     """A seeded log as issue 11's side-by-side measures: the published MinSeg with T drawn
     from ``T_range`` (s, through J), no dry friction, braking at zero; 0.2 s at rest, then
-    4 rising steps of 5 T to a level from IDENT_LEVELS and back to 0; the loop late by
+    4 rises of 5 T to a level from IDENT_LEVELS and back to 0; the loop late by
     0-``late_us`` us, the command on the board's grid (``on_grid``) or right after the late
     read; the encoder starting anywhere within a count; the Euler speed over the nominal
     ``ts``. ``stamped``: t is the read instants and the log has t_us; else t = k ts."""

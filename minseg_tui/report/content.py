@@ -21,7 +21,7 @@ from minseg_tui.lab.views import check_words
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
-from minseg_tui.model.identify import Rise, StepResult, u_ss_words
+from minseg_tui.model.identify import ResponseResult, Rise, u_ss_words
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
@@ -217,7 +217,7 @@ def _table_section(session: Session) -> Section:
     return sec
 
 
-def _u_ss_how(s: StepResult) -> str:
+def _u_ss_how(s: ResponseResult) -> str:
     return u_ss_words(s.u_ss_how, [x.u_req for x in s.rises if x.u_req])
 
 
@@ -328,7 +328,7 @@ def _read_step(steps: tuple[Rise, ...], T_63: float | None) -> Rise:
     return min(read, key=lambda x: abs((x.T_63 or 0.0) - T_63))
 
 
-def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | None:
+def _zoom_figure(session: Session, run: str | None, s: ResponseResult) -> Figure | None:
     """Tasks 11-12 on one rise: the samples from a little before the edge to several T
     after it, the speed before and the settled speed, the 63 % level and the time the
     samples (joined by straight lines, as the manual reads them) cross it."""

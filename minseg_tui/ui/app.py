@@ -699,7 +699,7 @@ class LabApp(App[None]):
         """End Task 10 now (F2, quit; ``why`` ``done`` keeps the run as complete): a wait ends
         without a run, a run being recorded is kept, interrupted by ``ended_by`` (a key of
         :data:`minseg_tui.lab.saving.runs.ENDED_BY`). A run the group chose stays in use; without a
-        choice, Tasks 11-15 use the newest complete 25 ms run (:meth:`Session.step_run`)."""
+        choice, Tasks 11-15 use the newest complete 25 ms run (:meth:`Session.response_run`)."""
         task = self.task10
         if task is None or not task.active:
             return

@@ -571,7 +571,7 @@ def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path)
         assert short is not None and short.interrupted
     with Session.open(s.folder) as again:  # kept in the session file
         assert again.runs[-1].interrupted and again.runs[-1].interruption == "stopped"
-        assert again.step_run() == info  # never an interrupted run the group did not choose
+        assert again.response_run() == info  # never an interrupted run the group did not choose
         again.select_run(short.name)
         said = views.results(again, "task11").problems
         assert any(

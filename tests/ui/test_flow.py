@@ -26,7 +26,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     resume,
     settle,
     shown,
@@ -44,7 +44,7 @@ def _chosen(app, key: str) -> tuple[int, ...]:
 
 def _run_in_use(app) -> str | None:
     with app.session as s:
-        run = s.step_run()
+        run = s.response_run()
     return run.name if run else None
 
 
@@ -257,7 +257,7 @@ async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            first, second = record_step_run(s, seed=5), record_step_run(s, seed=6)
+            first, second = record_response_run(s, seed=5), record_response_run(s, seed=6)
         texts = [t for t, _, _ in StepCommands(app.screen).entries()]
         assert (
             f"Use run {first} for Tasks 11-15" in texts

@@ -34,7 +34,7 @@ from tests.ui.helpers import (
     enter_all,
     goto,
     heard_notifications,
-    record_step_run,
+    record_response_run,
     resume,
     settle,
     standing,
@@ -199,7 +199,7 @@ async def test_numbers_keep_their_digits_and_units_stay_on_their_line(quiet):
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            record_step_run(s)
+            record_response_run(s)
             K = s.results().identification.step.K
             s.enter("own.K", "1.9")  # the computed K is shown once the group has its own
         await goto(pilot, "task11")
@@ -298,7 +298,7 @@ async def test_the_zoom_shows_the_rise_with_its_63_percent_level_and_crossing(qu
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            record_step_run(s)
+            record_response_run(s)
             st = s.results().identification.step
         await goto(pilot, "task12")
         plot = app.screen.query_one(StepPlot)

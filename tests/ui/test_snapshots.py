@@ -11,7 +11,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     settle,
     start,
     start_run_on,
@@ -34,7 +34,7 @@ def _to(
         enter_all(app, entries or {})
         if run:
             with app.session as s:
-                record_step_run(s)
+                record_response_run(s)
         if live:
             app.live.extend(frozen_stream())
         app.meter = METER

@@ -75,7 +75,7 @@ U_AS_SENT = (
 """The ``# u:`` header of a recording as written: its u column is what the board was asked."""
 
 
-STEP_KINDS: tuple[str, ...] = ("steps", "fast", "imported")
+RESPONSE_KINDS: tuple[str, ...] = ("steps", "fast", "imported")
 """The kinds of run Tasks 11-15 can read the steps of."""
 
 ENDED_BY: dict[str, str] = {

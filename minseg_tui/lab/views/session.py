@@ -25,7 +25,7 @@ from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.steps import FIELDS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
-from minseg_tui.lab.saving.runs import STEP_KINDS
+from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state.entries import read_entry
@@ -399,7 +399,7 @@ class RunView:
     """The T readings are left out (None): Task 12's answer, hidden until the group has
     entered its own T (:func:`hidden`)."""
     in_use: bool = False
-    """Tasks 11-15 and the model check use this run (:meth:`Session.step_run`)."""
+    """Tasks 11-15 and the model check use this run (:meth:`Session.response_run`)."""
     plotted: bool = True
     """The newest run of its kind (steps, fast): the one its plot shows."""
 
@@ -410,7 +410,7 @@ def _median(values: Sequence[float | None]) -> float | None:
 
 
 def _t63(log: RunLog) -> float | None:
-    """The manual's 63 % reading of the log's speed: the median over its rising steps, s."""
+    """The manual's 63 % reading of the log's speed: the median over its rises, s."""
     try:
         return _median([s.T_63 for s in model_identify.rises(log)])
     except (InputError, ValueError):
@@ -433,7 +433,7 @@ def runs(session: Session) -> tuple[RunView, ...]:
     imported logs), oldest first, with their T readings; the one in use marked (``in_use``,
     also when it is interrupted), the newest 25 ms and the newest fast run ``plotted``
     (a worker's job; a run's view is built once)."""
-    using = session.step_run()
+    using = session.response_run()
     newest = {r.kind: r.name for r in session.runs if r.kind in ("steps", "fast")}
     conceal = "own.T" in hidden(session)
     out = []
@@ -460,7 +460,7 @@ def _run_list(session: Session) -> list[RunView]:
     """The view of every run Tasks 11-15 can use, oldest first (built once each)."""
     out = []
     for r in session.runs:
-        if r.kind not in STEP_KINDS:
+        if r.kind not in RESPONSE_KINDS:
             continue
         key = (str(session.folder), r.name, r.samples, r.interrupted)
         kept = _run_views.get(key)
@@ -512,7 +512,7 @@ ZOOM_MIN_SAMPLES: int = 3
 
 @dataclass(frozen=True)
 class RiseZoom:
-    """One rising step of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
+    """One rise of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
     the speed before (``omega0``) and settled (``omega_ss``, rad/s), its 63 % reading
     ``T_63`` (s or None); the zoom to its rise from ``z0`` to ``z1`` (s: a little before the
     edge to several T after it), the 63 % level ``level`` (rad/s) and ``t_63``, the board
@@ -538,7 +538,7 @@ class RiseZoom:
 
 
 def rise_zoom(rise: model_identify.Rise, T: float | None, ts: float) -> RiseZoom:
-    """The window of one rising step, zoomed to its rise with time constant ``T`` (s; the
+    """The window of one rise, zoomed to its rise with time constant ``T`` (s; the
     step's own 63 % reading when None) at sample period ``ts`` (s)."""
     T_ref = T if T is not None and T > 0 else rise.T_63
     if T_ref is None or not T_ref > 0:
@@ -551,7 +551,7 @@ def rise_zoom(rise: model_identify.Rise, T: float | None, ts: float) -> RiseZoom
 
 @dataclass(frozen=True)
 class ResultsView:
-    """Tasks 11-15: the log used (t s, omega rad/s, u V), its rising steps, result lines and
+    """Tasks 11-15: the log used (t s, omega rad/s, u V), its rises, result lines and
     the group's readings beside the computed ones (``compare``: label, yours, computed);
     ``problems``: what keeps a result from being computed, one line each."""
 
@@ -786,5 +786,5 @@ def check(session: Session) -> CheckView:
 # -- the run in use -----------------------------------------------------------------------------
 def run_in_use(session: Session) -> str:
     """One line saying which run Tasks 11-15 and the model check use."""
-    run = session.step_run()
+    run = session.response_run()
     return f"Tasks 11-15 and the model check use run {run.name if run else '— (none yet)'}"

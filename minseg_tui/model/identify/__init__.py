@@ -7,10 +7,10 @@ The package, one module per room:
 
 - :mod:`.steady`: Tasks 6-9 from the table (k_v, k_a, f per row and their medians) and the
   table's u_ss and omega_ss at a requested voltage;
-- :mod:`.rises`: the rising steps of a run log and the manual's 63 % reading;
+- :mod:`.rises`: the rises of a run log and the manual's 63 % reading;
 - :mod:`.risefit`: T and the steady speeds by least squares (Tasks 11-12), from one of
   :mod:`.wholelog` (the model of Task 14 over the whole log) and :mod:`.windowfit` (each
-  rising step on its own), searched by :func:`minseg_tui.model.optimize.least_squares`, with
+  rise on its own), searched by :func:`minseg_tui.model.optimize.least_squares`, with
   the intervals of :mod:`.lsq` (they hold with correlated residuals; Student's t);
 - :mod:`.observations`: what the numbers show, in sentences a student understands;
 - :mod:`.identification`: Tasks 6-15 put together (K, T, J, the model of Task 14, omega at
@@ -22,13 +22,13 @@ Other layers import from here (``from minseg_tui.model.identify import identify`
 from minseg_tui.model.identify.identification import (
     U_TASK15,
     Identification,
-    StepResult,
+    ResponseResult,
     identify,
-    step_alone,
+    response_alone,
 )
 from minseg_tui.model.identify.observations import (
     Observation,
-    step_observations,
+    response_observations,
     table_observations,
 )
 from minseg_tui.model.identify.risefit import (
@@ -64,15 +64,15 @@ __all__ = [
     "Reading",
     "Rise",
     "Row",
-    "StepResult",
+    "ResponseResult",
     "TimeConstantFit",
     "fit_time_constant",
     "identify",
     "omega_ss_at",
     "rises",
     "steady_state",
-    "step_alone",
-    "step_observations",
+    "response_alone",
+    "response_observations",
     "rise_windows",
     "table_observations",
     "u_ss_at",

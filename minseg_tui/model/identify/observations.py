@@ -165,7 +165,7 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
     ]
 
 
-def step_observations(
+def response_observations(
     rows: Sequence[Row],
     steps: Sequence[Rise],
     hows: Sequence[str],
@@ -180,9 +180,9 @@ def step_observations(
     """What the run log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
 
-    rows: the table; steps: the rising steps used; hows: how u_ss was found for each step;
+    rows: the table; steps: the rises used; hows: how u_ss was found for each step;
     u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
-    period (s); skipped: rising steps not usable; dead_time: the model's dead time (s);
+    period (s); skipped: rises not usable; dead_time: the model's dead time (s);
     shape: when the rise has a shape one time constant does not follow (the steps' time
     shift on its bound), the part of the reading the fitted model read the same way does not
     give (s), else None.

@@ -6,10 +6,10 @@ parameter (:mod:`.wholelog`, :mod:`.windowfit`):
 
 - the model of Task 14 over the whole log, every edge rising and falling, dry friction when
   the log shows it: the most the log can tell about T, when the log follows that model;
-- each rising step on its own, T shared: robust to what happens between the steps (a wheel
+- each rise on its own, T shared: robust to what happens between the steps (a wheel
   that coasts at zero command, a speed that wanders).
 
-The whole-log fit is used when it explains the rising steps about as well as the step-by-step
+The whole-log fit is used when it explains the rises about as well as the step-by-step
 fit does (its residuals on their rows at most :data:`ADEQUATE` times theirs); otherwise the
 step-by-step fit. Either way K comes from the fitted steady speeds, not from means over a
 step that may not have settled.
@@ -42,13 +42,13 @@ DEAD_TIME_F: float = 25.0
 squares by this many times its residual variance (as dry friction does)."""
 
 DEAD_TIME_SHARE: float = 0.8
-"""The longest dead time tried, as a share of the shortest rising step (as the check does)."""
+"""The longest dead time tried, as a share of the shortest rise (as the check does)."""
 
 T_MIN_SAMPLES: float = 0.05
 """The shortest T the fit tries, in sample periods (T far below a sample cannot be seen)."""
 
 T_MAX_RISES: float = 10.0
-"""The longest T the fit tries, in lengths of the longest rising step."""
+"""The longest T the fit tries, in lengths of the longest rise."""
 
 GAP: float = 1.5
 """A sample interval this many times the median is a gap in the logging (a stall)."""
@@ -59,7 +59,7 @@ the residual (and by more than the encoder's step) is a logging stall: the encod
 read before its timestamp. It is left out of the fit."""
 
 ADEQUATE: float = 1.3
-"""The whole-log fit is used when the rms of its angle residuals on the rising steps' rows is
+"""The whole-log fit is used when the rms of its angle residuals on the rises' rows is
 at most this many times the step-by-step fit's residual standard deviation."""
 
 WHOLE_LOG = "whole_log"
@@ -68,7 +68,7 @@ RISES = "rising_steps"
 
 @dataclass(frozen=True)
 class Rise:
-    """One rising step of the log.
+    """One rise of the log.
 
     row: first row (0-based) at the high level; line: its file line; t: step time (s);
     u_req: requested high level (V, None if the log has no u_req); u_high: mean applied u
@@ -91,13 +91,13 @@ class Rise:
 @dataclass(frozen=True)
 class TimeConstantFit:
     """The least-squares T (s) with its 95 % interval (s) and standard error (s), the residual
-    standard deviation of the angle (rad), the rows and rising steps used, where the angle and
+    standard deviation of the angle (rad), the rows and rises used, where the angle and
     the time came from, and:
 
     method: ``whole_log`` or ``rising_steps`` (see the module docstring) and ``why``, a
     sentence; shift: the fitted time shift of the steps (s; > 0: the motor answers later than
     the log says, < 0: the samples are read late) with its 95 % interval; omega_ss and
-    omega_ss_se: the fitted steady speed of each rising step and its standard error (rad/s);
+    omega_ss_se: the fitted steady speed of each rise and its standard error (rad/s);
     gain: the whole-log fit's K per volt of the log's u (rad/s per V, None for the other);
     u_c: dry friction's breakaway voltage (V, 0 when not found); dof: degrees of freedom of
     the t quantile (clusters of rows less one); predicted: the fitted angle (rad) at every
@@ -107,8 +107,8 @@ class TimeConstantFit:
     whether T ended on it; left_out: rows (0-based) left out of the fit (logging stalls);
     moved_early: when a dead time fitted better but the wheel already moved before it would
     end, the share of the rise done by then (None otherwise); onset: the time (s) from the
-    rising steps to where the wheel first answers (the median; None if unseen);
-    moved_before_rise: the wheel was already moving at the rows of the rising steps;
+    rises to where the wheel first answers (the median; None if unseen);
+    moved_before_rise: the wheel was already moving at the rows of the rises;
     dead_time_sought: whether the wheel started late enough for a dead time to be fitted.
     """
 
@@ -143,7 +143,7 @@ class TimeConstantFit:
 
 
 def fit_time_constant(log: RunLog) -> TimeConstantFit | None:
-    """Least-squares T over the usable rising steps of ``log`` (None if there are none, or
+    """Least-squares T over the usable rises of ``log`` (None if there are none, or
     if the angle never changes: an encoder not read gives nothing to fit).
 
     Rows right after a gap in the logging whose angle misses the fit far more than the rest
@@ -329,7 +329,7 @@ without one (a T that had to stretch to reach a late response is too long)."""
 STILL_SHARE: float = 0.02
 """A dead time is one only while the wheel stands: by one sample period before it ends, the
 speed (a 3-row running median) has not come this share of the way from its level before a
-rising step to the level after it (the median over the steps; plus three times the speed's
+rise to the level after it (the median over the steps; plus three times the speed's
 scatter before the step over the change). A response that starts at once but slowly (an
 S-shaped rise, a ramp) also fits better late; it is not a dead time. (A second pole of T/3
 has come 3 % of the way one sample of T/12 before the delay a fit gives it.)"""
@@ -344,14 +344,14 @@ def _smooth(w: FloatArray) -> FloatArray:
 
 
 def _levels(w: FloatArray, win: RiseWindow) -> tuple[float, float]:
-    """The speed (rad/s) before a rising step and at the end of it (medians)."""
+    """The speed (rad/s) before a rise and at the end of it (medians)."""
     k = win.edge.start
     tail = win.post_last - max((win.post_last - k) // 4, 1)
     return float(np.median(w[win.pre_from : k + 1])), float(np.median(w[tail : win.post_last + 1]))
 
 
 def _onset(log: RunLog, windows: list[RiseWindow]) -> float | None:
-    """Where the wheel first answers the rising steps: the median over the steps of the time
+    """Where the wheel first answers the rises: the median over the steps of the time
     (s) from the step to the first row whose speed (a 3-row running median) has come
     :data:`STILL_SHARE` of the way to its new level; None when no step shows it."""
     w = np.asarray(log.omega, dtype=float)
@@ -373,7 +373,7 @@ def _onset(log: RunLog, windows: list[RiseWindow]) -> float | None:
 def _moved_before(
     log: RunLog, windows: list[RiseWindow], until: float, at_edge: bool = False
 ) -> float:
-    """The median over the rising steps of the largest share of the speed's change reached
+    """The median over the rises of the largest share of the speed's change reached
     on the rows up to ``until`` (s) after each step (``at_edge``: on the step's own row and
     the one before, whose speeds were measured before the step acts)."""
     w = np.asarray(log.omega, dtype=float)
@@ -511,7 +511,7 @@ def _from_rises(
 
 
 def rises(log: RunLog, fit: TimeConstantFit | None = None) -> list[Rise]:
-    """Each usable rising step with its levels and the manual's 63 % reading (Tasks 11-12).
+    """Each usable rise with its levels and the manual's 63 % reading (Tasks 11-12).
 
     The steady speed of each step is the fitted one (``fit``, computed when not given); the
     63 % reading is taken on the log's omega from the mean speed before the step to it.

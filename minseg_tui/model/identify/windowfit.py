@@ -1,7 +1,7 @@
-"""The first-order response fitted to each rising step on its own, T shared: the fit for logs
+"""The first-order response fitted to each rise on its own, T shared: the fit for logs
 the whole-log model does not explain (a coasting wheel, a speed that wanders between steps).
 
-Around each rising step at t_e, with s = t - t_e - d (d: a time shift of the steps against
+Around each rise at t_e, with s = t - t_e - d (d: a time shift of the steps against
 the samples, shared, a nuisance parameter), the angle is
 
     before the step:  theta = a + w0 s + c s^2 / 2
@@ -153,7 +153,7 @@ def fit_windows(
     shift_starts: tuple[float, ...] = (0.0,),
     T_starts: tuple[float, ...] = (),
 ) -> WindowsFit:
-    """Fit T and the time shift to the rising steps' windows: board times ``t`` (s), angle
+    """Fit T and the time shift to the rises' windows: board times ``t`` (s), angle
     ``theta`` (rad) at every row, the usable ``windows``; ``ts``: sample period (s); shift:
     the range (s) of the time shift; T_range: the range of T (s); keep: the rows the fit may
     use (default: all); shift_starts: the shifts (s) the search may start from, each with T
