@@ -52,10 +52,8 @@ FIGURE_UNITS: dict[str, str] = {
     "rmse": "rad/s",
 }
 
-SLOWER: dict[str, int] = {"coast_on_zero": -1}
-"""Which way each cause makes the first-order model miss in its close-up: +1 (the default)
-the measured wheel is slower than the model says (it stops sooner, starts later, rises
-more gently), -1 faster (it runs down more slowly)."""
+SLOWER: dict[str, int] = {c.cause: c.slower for c in CANDIDATES}
+"""Which way each cause makes the first-order model miss in its close-up (its ``slower``)."""
 
 MIN_STILL_ROWS = 3
 """A wheel stands still from a row on when it reads still there and in at least this many

@@ -118,6 +118,10 @@ class Candidate:
     reported: Callable[[float, float], float] = lambda value, K: value
     nonlinear: bool = False
     stop: Callable[[ev.Stop], bool] | None = None
+    slower: int = 1
+    """Which way it makes the first-order model miss in its close-up: +1 the measured wheel
+    is slower than the model says (it stops sooner, starts later, rises more gently), -1
+    faster (it runs down more slowly)."""
     excludes: frozenset[str] = frozenset()
     """Causes one model never holds beside this one: causes the log tells apart by one
     feature only, which the check does not follow closely enough on a real motor to share
@@ -337,6 +341,7 @@ COAST_ON_ZERO = Candidate(
     needs=ev.NEEDS_DROP_TO_ZERO,
     nonlinear=True,
     stop=ev.drops_to_zero,
+    slower=-1,
 )
 
 
