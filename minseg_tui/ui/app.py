@@ -226,7 +226,12 @@ class LabApp(App[None]):
     ) -> None:
         """Show a notification as plain text, whoever asks (a widget's ``notify`` asks with
         markup on): the messages hold what was typed, refused text and file names, which
-        are shown as they are, never read as markup ('Cy [/]' was a MarkupError)."""
+        are shown as they are, never read as markup ('Cy [/]' was a MarkupError).
+
+        An override, because Textual offers no app-wide setting for it: ``App.notify`` and
+        ``Widget.notify`` default to ``markup=True``, and every widget's goes through this
+        one. ``markup=False`` at each of the 43 calls (or a helper of another name) would
+        hold only as long as every new call remembered it."""
         super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
 
     # -- start-up ---------------------------------------------------------------------
