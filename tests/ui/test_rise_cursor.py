@@ -92,3 +92,17 @@ async def test_shift_arrows_jump_and_the_cursor_stays_in_the_plot(quiet):
         await pilot.press("left")
         await settle(pilot)
         assert panel.cursor == last - first - 1
+
+
+async def test_a_click_on_the_rise_puts_the_cursor_on_that_column(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        panel = app.screen.query_one(ResultsPanel)
+        plot = panel.query_one(StepPlot)
+        first, _last = _frame(plot.query_one(Canvas))
+        await pilot.click(StepPlot, offset=(first + 20, 6))
+        await settle(pilot)
+        assert app.focused is plot
+        assert panel.cursor == 20 and panel.reading is not None
+        assert _cursor_column(plot.query_one(Canvas)) == first + 20
