@@ -38,7 +38,7 @@ async def test_the_cursor_reads_T_to_a_few_ms_at_80x24(quiet):
         canvas = plot.query_one(Canvas)
         view = panel.view
         assert view is not None and "own.T" in view.hidden  # the group has no T yet
-        rise = view.steps[0]
+        rise = view.rises[0]
         lo, hi = canvas.xlim or (0.0, 0.0)
         first, last = _frame(canvas)
         ms_per_column = 1000 * (hi - lo) / (last - first)
