@@ -19,7 +19,7 @@ from tests.ui.helpers import (
     burst,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     settle,
     shown,
     start,
@@ -96,7 +96,7 @@ async def test_every_step_opens_with_its_title_instructions_and_entry_in_view(qu
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            record_step_run(s)
+            record_response_run(s)
         app.lab_changed.publish(None)
         await settle(pilot)
         assert await _walk(pilot, STEPS) == {}
@@ -120,7 +120,7 @@ async def test_a_step_landing_on_a_later_entry_shows_its_title_and_that_entry(
             | {"own.omega_step": "7.8", "own.k_v": "0.59"},
         )
         with app.session as s:
-            record_step_run(s)
+            record_response_run(s)
         await goto(pilot, step_id)
         await settle(pilot)
         row = next(a for a in app.focused.ancestors_with_self if isinstance(a, FieldRow))
