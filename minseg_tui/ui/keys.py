@@ -124,6 +124,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key("Ctrl+← →", "the same, outside a text entry"),
     Key("[ ] z", "the same on the focused plot; z zooms"),
+    Key("← → on a rise", "the focused plot's cursor: t and omega at its column (Shift: 5)"),
     Key("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
     Key("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
     Key("Tab", "next field; Enter stores what you typed"),

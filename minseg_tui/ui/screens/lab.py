@@ -20,7 +20,7 @@ from textual.actions import SkipAction
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
-from textual.containers import Horizontal, VerticalScroll
+from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.css.query import NoMatches
 from textual.reactive import reactive
 from textual.signal import Signal
@@ -94,10 +94,31 @@ def nav_label(step: Step, status: str = "todo") -> str:
     return f"{MARKS.get(status, ' ')} {head}"
 
 
+HEADING_ROWS = 2
+"""The rows of a step's :class:`Heading` (lab.tcss)."""
+
+
+class Heading(Vertical):
+    """The step's title and the start of what to do, on one line each, kept at the top of
+    the step while its own title is scrolled away (a layer of its own over the step, so the
+    step's text does not move when it shows). At 80x24 a step taller than the screen landed
+    on its entry with its title and instructions above the screen: the group did not see
+    what the step asks."""
+
+    def __init__(self, step: Step) -> None:
+        super().__init__(
+            Static(step.title, classes="heading-title", markup=False),
+            Static("What to do: " + step.todo, classes="heading-todo", markup=False),
+            classes="heading",
+        )
+        self.display = False
+
+
 class StepPane(VerticalScroll):
     """Title, goal, what to do, the step's own panel (and the readout it keeps in sight at the
-    bottom) and its entry rows. :meth:`focus_on` focuses its landing entry or a widget in it
-    (the screen calls it once the pane is mounted)."""
+    bottom) and its entry rows; the :class:`Heading` over its top while it is scrolled down.
+    :meth:`focus_on` focuses its landing entry or a widget in it (the screen calls it once the
+    pane is mounted)."""
 
     def __init__(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
         super().__init__(classes="pane")
@@ -107,6 +128,7 @@ class StepPane(VerticalScroll):
         # focusable where the step may land on its text (no entries, or a panel to read):
         # the arrow keys then scroll it
         self.can_focus = panel is not None or not step.fields
+        self._heading = Heading(step)
         self._keep: FieldRow | Literal["focused", "scrolled"] = "focused"
         """What stays in view when the step grows or shrinks above its entries: the entry the
         step landed in, while it has the focus (placed again from the top of the step: the
@@ -115,6 +137,7 @@ class StepPane(VerticalScroll):
         the focus last moved in the step: it stays where they put it."""
 
     def compose(self) -> ComposeResult:
+        yield self._heading
         yield Prose(self.step.title, classes="title")
         yield Prose("Goal: " + self.step.goal, classes="goal")
         yield Prose("What to do: " + self.step.todo, classes="todo")
@@ -163,7 +186,10 @@ class StepPane(VerticalScroll):
             top = row.region.y - view.y + self.scroll_y
             bottom = row.region.bottom - view.y + self.scroll_y
             end = widget.region.bottom - view.y + self.scroll_y
+            # the entry's top below the heading, which covers the step's top once it scrolls
             y = min(max(self.scroll_y, end - view.height, bottom - view.height), top)
+            if y > 0:
+                y = min(y, max(top - HEADING_ROWS, 0))
             self.scroll_to(y=y, animate=False, immediate=True)
             if again:  # once more when the layout has settled
                 self.call_after_refresh(place, False)
@@ -190,9 +216,29 @@ class StepPane(VerticalScroll):
         if row is not None and self in row.ancestors:
             row.call_after_refresh(row.bring_into_view)
 
-    def on_descendant_focus(self, _: events.DescendantFocus) -> None:
+    def on_descendant_focus(self, event: events.DescendantFocus) -> None:
         if self._keep == "scrolled":
             self._keep = "focused"
+        self.call_after_refresh(self._clear_heading, event.widget)
+
+    def watch_scroll_y(self, old: float, new: float) -> None:
+        """The heading shows while the step's own title is scrolled away."""
+        super().watch_scroll_y(old, new)
+        self._heading.display = round(new) > 0
+
+    @property
+    def heading_rows(self) -> int:
+        """Rows the heading covers at the top of the step (0 while it is hidden)."""
+        return HEADING_ROWS if self._heading.display else 0
+
+    def _clear_heading(self, widget: Widget) -> None:
+        """A focused ``widget`` under the heading (Textual scrolls a widget above the view to
+        the top edge, where the heading lies) is scrolled down from under it."""
+        if not (widget.is_attached and self.is_attached and widget.has_focus and widget.region):
+            return  # an empty region: not on the screen at all (below it, say), not under it
+        over = self.scrollable_content_region.y + self.heading_rows - widget.region.y
+        if over > 0:
+            self.scroll_to(y=max(self.scroll_y - over, 0), animate=False, immediate=True)
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
         self._group_scrolled()
