@@ -15,9 +15,8 @@ import numpy as np
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
-from minseg_tui.lab.state.compare import ANSWERED_FIRST, format_diff
 from minseg_tui.lab.state.session import Session
-from minseg_tui.lab.views import check_words
+from minseg_tui.lab.views import check_words, own_first
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
@@ -25,7 +24,6 @@ from minseg_tui.model.identify import RisingStep, StepResult, u_ss_words
 from minseg_tui.model.steplog import StepLog
 from minseg_tui.quantities import (
     DIGITS,
-    NOT_DETERMINED,
     format_interval,
     format_number,
     format_quantity,
@@ -126,15 +124,13 @@ def _answers(session: Session, part: str) -> Section:
                 shown = e.text if e else ""
             fb = verdicts.get(fld.key)
             verdict = (
-                ""
+                "not checked"
                 if fb is None
                 else {"right": "✓ ", "wrong": "✗ ", "missing": ""}[fb.status] + fb.message
             )
             if e is not None and not e.ok:
                 verdict = f"refused: {e.message}"
-            rows.append(
-                (st.title if fld.kind != "choice" else "", fld.label, shown.strip() or "–", verdict)
-            )
+            rows.append((st.title, fld.label, shown.strip() or own_first.NOT_ANSWERED, verdict))
     title = "Preparation" if part == "Preparation" else "Summary and reflections"
     return Section(title, [Table(("step", "question", "answer", "feedback"), tuple(rows))])
 
@@ -185,12 +181,16 @@ def _table_section(session: Session) -> Section:
                 omega,
                 window,
                 _reading(r.i_ss, "mA"),
-                _num(r.k_v),
-                _num(r.f),
+                _q(r.k_v, "V s/rad"),
+                _q(r.f, _F_UNIT),
             )
         )
     sec = Section("Steady state (Tasks 2 and 4-9)")
     sec.blocks.append(f"R = {_reading(session.value('R'), 'Ω')} (Task 2).")
+    sec.blocks.append(
+        "The group's readings (Tasks 4-5) and, in the last two columns, k_v and f that the "
+        "program computed from them for each row (Tasks 6 and 9):"
+    )
     sec.blocks.append(
         Table(
             (
@@ -199,22 +199,22 @@ def _table_section(session: Session) -> Section:
                 "omega_ss (± spread)",
                 "capture window",
                 "i_ss",
-                "k_v (V s/rad)",
-                "f (N m s/rad)",
+                "k_v, computed (Task 6)",
+                "f, computed (Task 9)",
             ),
             tuple(rows),
         )
     )
-    ident = res.identification
-    if ident is not None:
+    if res.identification is not None:
+        sec.blocks.append("The motor constants, the group's own value first:")
         sec.blocks.append(
-            [
-                f"k_v = {_num(ident.k_v)} V s/rad (median of the rows, Task 7)",
-                f"k_a = 0.65 k_v = {_num(ident.k_a)} N m/A (Task 8)",
-                f"f = {_num(ident.f)} N m s/rad (median of the rows, Task 9)",
-            ]
+            Table(own_first.TABLE_HEADER, tuple(r.cells for r in own_first.table_rows(session)))
         )
     return sec
+
+
+_F_UNIT = lab_steps.FIELDS["own.f"].unit
+"""f in the unit the group types it in (Task 9's entry)."""
 
 
 def _u_ss_how(s: StepResult) -> str:
@@ -224,99 +224,28 @@ def _u_ss_how(s: StepResult) -> str:
 def _step_section(session: Session) -> Section:
     res = session.results()
     sec = Section("Step response and model (Tasks 10-15)")
+    sec.blocks.append(own_first.run_used(session))
     ident = res.identification
     if ident is None or ident.step is None:
         sec.blocks.append(
             "No step result yet" + (": " + "; ".join(res.problems) if res.problems else ".")
         )
-    else:
-        s = ident.step
-        t63 = "–" if s.T_63 is None else f"{_num(s.T_63)} s"
-        sec.blocks.append(f"From run {res.run}:")
-        sec.blocks.append(
-            Table(
-                ("quantity", "value"),
-                (
-                    ("omega_ss in the steps", f"{_num(s.omega_ss)} rad/s"),
-                    ("u_ss used for K", f"{_num(s.u_ss)} V ({_u_ss_how(s)})"),
-                    (
-                        "K (Task 11, 95 % interval)",
-                        f"{_num(s.K)} rad/s/V "
-                        f"({format_interval(*s.K_ci, 'rad/s/V') if s.K_determined else NOT_DETERMINED})",
-                    ),
-                    ("T, 63 % reading (Task 12)", t63),
-                    (
-                        "T, least squares (95 % interval)",
-                        f"{_num(s.T)} s ({format_interval(*s.T_ci, 's') if s.T_determined else NOT_DETERMINED})",
-                    ),
-                    ("J (Task 13)", f"{_num(s.J)} kg m^2"),
-                    ("model (Task 14)", s.model_equation(_num)),
-                    ("omega at u_A = 5 V (Task 15)", f"{_num(ident.omega_at_5V)} rad/s"),
-                ),
-            )
-        )
-        if s.T_63_note:
-            sec.blocks.append(s.T_63_note)
-        sec.blocks.append(f"How T was fitted: {s.fit.why}.")
-        zoom = _zoom_figure(session, res.run, s)
-        if zoom is not None:
-            sec.blocks.append(zoom)
-    comps = session.comparisons()
-    if any(c.own is not None or c.revealed_early for c in comps):
-        rows = []
-        notes = []
-        for c in comps:
-            if c.own is None and not c.revealed_early:
-                continue
-            own = (
-                "–"
-                if c.own is None
-                else c.own
-                if isinstance(c.own, str)
-                else _reading(c.own, c.unit)
-            )
-            comp = (
-                c.computed
-                if isinstance(c.computed, str) or c.computed is None
-                else _q(c.computed, c.unit)
-            )
-            if c.how:
-                comp = f"{comp} ({c.how})"
-            lsq = (
-                ""
-                if c.least_squares is None
-                else c.least_squares
-                if isinstance(c.least_squares, str)
-                else _q(c.least_squares, c.unit)
-            )
-            diff = (
-                ("✓ " if c.right else "✗ ") + c.verdict
-                if c.verdict
-                else ""
-                if c.rel_diff is None
-                else format_diff(c.rel_diff)
-            )
-            shown = (
-                "revealed before answering"
-                if c.revealed_early
-                else "after answering"
-                if c.key in ANSWERED_FIRST
-                else ""
-            )
-            rows.append((c.label, own, comp or "–", diff, lsq or "–", shown))
-            if lsq and c.why:
-                notes.append(f"{c.label}: {c.why}")
-        sec.blocks.append(
-            "The group's own readings beside the values computed their way (J from their "
-            "own T, K from their omega_ss and u_ss, ...), with the least-squares value:"
-        )
-        sec.blocks.append(
-            Table(
-                ("reading", "yours", "computed your way", "difference", "least squares", "shown"),
-                tuple(rows),
-            )
-        )
-        sec.blocks.extend(notes)
+        return sec
+    s = ident.step
+    rows = own_first.step_rows(session)
+    sec.blocks.append(
+        "Each value the group worked out, first as the group gave it, then computed the "
+        "group's way (J from their own T, K from their omega_ss and u_ss, ...), then the "
+        "program's least-squares value:"
+    )
+    sec.blocks.append(Table(own_first.STEP_HEADER, tuple(r.cells for r in rows)))
+    sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
+    if s.T_63_note:
+        sec.blocks.append(s.T_63_note)
+    sec.blocks.append(f"How T was fitted: {s.fit.why}.")
+    zoom = _zoom_figure(session, res.run, s)
+    if zoom is not None:
+        sec.blocks.append(zoom)
     return sec
 
 
@@ -707,7 +636,7 @@ def _runs_section(session: Session) -> Section:
             f"{r.samples}",
             f"{r.ts * 1e3:g} ms",
             f"{r.dropped}",
-            r.interruption or "—",
+            r.interruption or "not interrupted",
             r.file,
         )
         for r in session.runs

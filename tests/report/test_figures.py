@@ -271,7 +271,7 @@ def test_the_step_section_gives_k_with_its_interval_and_the_63_percent_note(repo
     _, md, _, step, _, _ = report
     section = md.split("## Step response and model", 1)[1].split("\n## ", 1)[0]
     (row,) = [ln for ln in section.splitlines() if ln.startswith("| K (Task 11")]
-    m = re.search(rf"({NUM}) rad/s/V \(({NUM}) – ({NUM}) rad/s/V\)", row)
+    m = re.search(rf"({NUM}) rad/s/V \(95 % interval ({NUM}) – ({NUM}) rad/s/V", row)
     assert m and [float(v) for v in m.groups()] == pytest.approx([step.K, *step.K_ci], rel=1e-3)
     assert step.T_63_note and step.T_63_note in section
 
