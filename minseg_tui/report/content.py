@@ -561,6 +561,8 @@ def _model_check_section(session: Session) -> Section | None:
     except (InputError, KeyError):
         log = None
     u = np.asarray(log.u, float) if log is not None and len(log) == np.asarray(r.t).size else None
+    # as on the screen: the run and what the close-up shows, then the sentences about it
+    sec.blocks.append(f"Run {mc.run}, {check_words.close_up_title(r)}.")
     sec.blocks.append(check_words.join(check_words.lead(r, u)))
     sec.blocks.append(_model_check_figures(mc.run, r, log))
     details = Fold("Details")

@@ -9,6 +9,7 @@ import re
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
@@ -164,3 +165,28 @@ def test_the_report_names_the_run_it_used_and_what_interrupted_it(tmp_path: Path
         f"before its plan did, interrupted by: quit ({samples} samples)."
         in _section(md, "Step response and model")
     )
+
+
+def test_the_model_check_opens_as_the_screen_does_on_the_edge_its_close_up_shows(
+    tmp_path: Path,
+) -> None:
+    """As on the screen: the run and the close-up's span first, then the sentences a student
+    reads, about the edge the close-up shows (and the evidence in the details names the
+    same edge), then the figures, the details last."""
+    s = _session(tmp_path)
+    r = s.model_check().result
+    md = _report(s)
+    s.close()
+    assert r is not None and r.close_up is not None
+    check = _section(md, "Model check")
+    paragraphs = [p for p in check.split("\n\n") if p.strip()]
+    head = re.match(r"Run steps-1, close-up ([0-9.]+)-([0-9.]+) s: ", paragraphs[0])
+    assert head, paragraphs[0]
+    t0, t1 = (float(x) for x in head.groups())
+    assert (t0, t1) == pytest.approx((r.close_up.t0, r.close_up.t1), abs=0.006)
+    story, details = paragraphs[1], check.split("### Details", 1)[1]
+    evidence = details.split("The check's evidence, over the whole log:", 1)[1].split("\n")[0]
+    for text in (story, evidence):
+        edges = [float(x) for x in re.findall(r"t = ([0-9.]+) s", text)]
+        assert edges and all(t0 <= t <= t1 for t in edges), (t0, t1, text)
+    assert check.index(story) < check.index("![") < check.index("### Details")
