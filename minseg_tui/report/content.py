@@ -17,7 +17,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import check_words, own_first
-from minseg_tui.lab.views.session import rise_zoom
+from minseg_tui.lab.views.session import policy, rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import RisingStep, StepResult, u_ss_words
@@ -340,6 +340,9 @@ def _warnings_section(session: Session) -> Section:
         if e.refused
     ]
     items += list(res.problems)
+    rule = policy(session)
+    if rule.problem:  # the grader reads which policy the "shown to the group" cells follow
+        items.append(rule.problem)
     return Section("Warnings", [items if items else "None."])
 
 

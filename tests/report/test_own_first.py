@@ -190,3 +190,17 @@ def test_the_model_check_opens_as_the_screen_does_on_the_edge_its_close_up_shows
         edges = [float(x) for x in re.findall(r"t = ([0-9.]+) s", text)]
         assert edges and all(t0 <= t <= t1 for t in edges), (t0, t1, text)
     assert check.index(story) < check.index("![") < check.index("### Details")
+
+
+def test_a_policy_file_that_cannot_be_read_is_a_warning(tmp_path: Path) -> None:
+    """The "shown to the group" cells follow lab.toml: one that cannot be read (answers
+    first then holds) is said in the report's warnings, as Tasks 11-15 say it on screen."""
+    s = _session(tmp_path)
+    s.close()
+    (tmp_path / "lab.toml").write_text("answers_first = maybe\n", encoding="utf-8")
+    with Session.open(s.folder, readonly=True) as again:
+        md = write_report(again).markdown.read_text(encoding="utf-8")
+    warnings = _section(md, "Warnings")
+    assert "lab.toml: cannot be read" in warnings and "answers first" in warnings
+    (table,) = _tables(_section(md, "Step response and model"))
+    assert _row(table, "T (Task 12)")["shown to the group"] == "after the group answered"
