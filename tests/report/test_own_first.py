@@ -108,7 +108,7 @@ def test_the_shown_column_says_when_the_group_saw_each_value(tmp_path: Path) -> 
     shown = {r[0]: r[-1] for r in table[1:]}
     assert shown["T (Task 12)"] == "after the group answered"
     assert shown["J (Task 13)"].startswith("revealed before answering")
-    assert shown["K (Task 11)"].startswith("never shown to the group: not answered")
+    assert shown["K (Task 11)"] == "hidden from the group on Tasks 11-15: not answered"
     assert len(shown) == 6  # every value of Tasks 11-15, answered or not
     # a lab whose policy shows the computed values at once says so in every row
     (tmp_path / "lab.toml").write_text("answers_first = false\n", encoding="utf-8")
@@ -162,7 +162,7 @@ def test_the_report_names_the_run_it_used_and_what_interrupted_it(tmp_path: Path
     samples = _row(runs, quit_run)["samples"]
     assert (
         f"Tasks 11-15 and the model check use run {quit_run}, chosen by the group; it ended "
-        f"before its plan did, interrupted by: quit ({samples} samples)."
+        f"before its plan did ({samples} samples), interrupted by: quit."
         in _section(md, "Step response and model")
     )
 

@@ -44,7 +44,7 @@ SHOWN_AT_ONCE = (
     "false) shows the computed values at once"
 )
 SHOWN_AFTER = "after the group answered"
-NOT_SHOWN = "never shown to the group: not answered (the computed value stays hidden until then)"
+NOT_SHOWN = "hidden from the group on Tasks 11-15: not answered"
 REVEALED = f"{lab_compare.REVEALED_EARLY} (a lab assistant showed it)"
 
 TASK: dict[str, str] = {
@@ -111,7 +111,7 @@ class OwnRow:
 def shown(session: Session, key: str) -> str:
     """When the group was shown the computed value of field ``key``, in words a grader
     reads: from the start in the table (Tasks 6-9), or for Tasks 11-15 after they answered,
-    revealed before (by a lab assistant), at once by the lab's policy, or never."""
+    revealed before (by a lab assistant), at once by the lab's policy, or not yet (hidden)."""
     if key not in lab_compare.ANSWERED_FIRST:
         return SHOWN_IN_TABLE
     if key in session.revealed():
@@ -270,8 +270,8 @@ def run_used(session: Session) -> str:
     text = f"Tasks 11-15 and the model check use run {run.name}, {why}"
     if run.interrupted:
         text += (
-            f"; it ended before its plan did, interrupted by: {run.interruption} "
-            f"({run.samples} samples)"
+            f"; it ended before its plan did ({run.samples} samples), interrupted by: "
+            f"{run.interruption}"
         )
     return text + "."
 
