@@ -97,9 +97,17 @@ def _num(value: float | None, digits: int = DIGITS) -> str:
     return "–" if value is None or not math.isfinite(value) else format_number(value, digits)
 
 
-def _reading(value: float | None, unit: str) -> str:
-    """What the group typed, captured or read off the meter, with the digits it has."""
-    return "–" if value is None or not math.isfinite(value) else format_reading(value, unit)
+def _reading(value: float | None, unit: str, missing: str = "–") -> str:
+    """What the group typed, captured or read off the meter, with the digits it has
+    (``missing`` when there is none)."""
+    return missing if value is None or not math.isfinite(value) else format_reading(value, unit)
+
+
+NOT_ENTERED = "not entered"
+"""A reading of the table the group has not entered."""
+
+NOT_COMPUTED = "not computed: the row is incomplete"
+"""k_v or f of a row without all three readings (or without R)."""
 
 
 def _verdicts(session: Session) -> dict[str, lab_steps.Feedback]:
@@ -164,7 +172,7 @@ def _table_section(session: Session) -> Section:
     res = session.results()
     rows = []
     for r in session.table():
-        omega = _reading(r.omega_ss, "rad/s")
+        omega = _reading(r.omega_ss, "rad/s", NOT_ENTERED)
         if r.spread is not None and r.omega_ss is not None:
             omega += f" {format_spread(r.spread)}"
         window = (
@@ -172,21 +180,21 @@ def _table_section(session: Session) -> Section:
             if r.window
             else "typed"
             if r.omega_ss is not None
-            else "–"
+            else "no capture"
         )
         rows.append(
             (
                 f"{r.level:g} V",
-                _reading(r.u_ss, "V"),
+                _reading(r.u_ss, "V", NOT_ENTERED),
                 omega,
                 window,
-                _reading(r.i_ss, "mA"),
-                _q(r.k_v, "V s/rad"),
-                _q(r.f, _F_UNIT),
+                _reading(r.i_ss, "mA", NOT_ENTERED),
+                NOT_COMPUTED if r.k_v is None else _q(r.k_v, "V s/rad"),
+                NOT_COMPUTED if r.f is None else _q(r.f, _F_UNIT),
             )
         )
     sec = Section("Steady state (Tasks 2 and 4-9)")
-    sec.blocks.append(f"R = {_reading(session.value('R'), 'Ω')} (Task 2).")
+    sec.blocks.append(f"R = {_reading(session.value('R'), 'Ω', NOT_ENTERED)} (Task 2).")
     sec.blocks.append(
         "The group's readings (Tasks 4-5) and, in the last two columns, k_v and f that the "
         "program computed from them for each row (Tasks 6 and 9):"

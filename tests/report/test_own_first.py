@@ -204,3 +204,17 @@ def test_a_policy_file_that_cannot_be_read_is_a_warning(tmp_path: Path) -> None:
     assert "lab.toml: cannot be read" in warnings and "answers first" in warnings
     (table,) = _tables(_section(md, "Step response and model"))
     assert _row(table, "T (Task 12)")["shown to the group"] == "after the group answered"
+
+
+def test_an_incomplete_row_says_what_is_missing(tmp_path: Path) -> None:
+    """A row the group has not filled read '–' in every cell: the readings now say they were
+    not entered, the program's k_v and f that the row is incomplete."""
+    with Session.create(tmp_path, ["A"], date="2026-11-22") as s:
+        s.enter("R", "5.26")
+        s.enter("u_ss@4.5", "4.05 V")
+        md = _report(s)
+    readings = _tables(_section(md, "Steady state"))[0]
+    row = _row(readings, "4.5 V")
+    assert row["u_ss"] == "4.05 V" and row["omega_ss (± spread)"] == "not entered"
+    assert row["capture window"] == "no capture" and row["i_ss"] == "not entered"
+    assert row["k_v, computed (Task 6)"] == "not computed: the row is incomplete"
