@@ -299,7 +299,7 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     svg = plot(
         [Line("omega, measured samples", t[sel], w[sel], dots=True)],
         marks=marks,
-        title=f"run {run}: the rise at t = {_num(st.t)} s, read as in Tasks 11-12",
+        title=f"run {run}: the rise at t = {_num(st.t)} s, read by the program as in Tasks 11-12",
         xlabel="t (s)",
         ylabel="omega (rad/s)",
         width=640,
@@ -314,7 +314,8 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     return Figure(
         svg,
         640,
-        f"One rising step of run {run} close up (Tasks 11-12): the measured speed goes from "
+        f"The program's reading of one rising step of run {run} (Tasks 11-12, as the manual "
+        "reads it; the group's own values are in the table above): the measured speed goes from "
         f"{_num(st.omega0)} to {_num(st.omega_ss)} rad/s; {crossed}. The least-squares T is "
         f"{_num(s.T * 1e3)} ms.",
     )
