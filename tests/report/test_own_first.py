@@ -110,7 +110,9 @@ def test_the_shown_column_says_when_the_group_saw_each_value(tmp_path: Path) -> 
     (table,) = _tables(_section(md, "Step response and model"))
     shown = {r[0]: r[-1] for r in table[1:]}
     assert shown["T (Task 12)"] == "after the group answered"
-    assert shown["J (Task 13)"].startswith("revealed before answering")
+    assert (
+        shown["J (Task 13)"] == "revealed before answering (with Ctrl+R, the lab assistant's key)"
+    )
     assert shown["K (Task 11)"] == "hidden from the group on Tasks 11-15: not answered"
     assert len(shown) == 6  # every value of Tasks 11-15, answered or not
     # a lab whose policy shows the computed values at once says so in every row

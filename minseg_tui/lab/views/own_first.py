@@ -19,6 +19,7 @@ from minseg_tui.lab.content.steps import STEPS, RunPlan
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state.results import Comparison
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views.session import REVEAL_KEY
 from minseg_tui.model.identify import u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
@@ -45,7 +46,7 @@ SHOWN_AT_ONCE = (
 )
 SHOWN_AFTER = "after the group answered"
 NOT_SHOWN = "hidden from the group on Tasks 11-15: not answered"
-REVEALED = f"{lab_compare.REVEALED_EARLY} (a lab assistant showed it)"
+REVEALED = f"{lab_compare.REVEALED_EARLY} (with {REVEAL_KEY}, the lab assistant's key)"
 
 TASK: dict[str, str] = {
     "own.k_v": "k_v (Task 7)",
