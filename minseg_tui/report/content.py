@@ -559,11 +559,26 @@ def _two_fits(session: Session, run: str | None, params: dict[str, float]) -> li
     ]
 
 
+CHECK_NOTES = "model_check.notes"
+"""The group's notes on the model check: they lead its section (not among the Notes)."""
+
+
+def _check_notes(session: Session) -> str:
+    e = session.entry(CHECK_NOTES)
+    text = e.text.strip() if e is not None else ""
+    return (
+        f"The group's notes on the model check: {text}"
+        if text
+        else "The group wrote no notes on the model check; what follows is the program's."
+    )
+
+
 def _model_check_section(session: Session) -> Section | None:
     mc = session.model_check()
     if mc.run is None:
         return None
     sec = Section("Model check")
+    sec.blocks.append(_check_notes(session))  # the group's own first
     r = mc.result
     if r is None:
         sec.blocks.append(f"The model check could not run on {mc.run}: {mc.problem}")
@@ -668,10 +683,13 @@ def _runs_section(session: Session) -> Section:
     return sec
 
 
-def _notes_section(session: Session) -> Section | None:
+def _notes_section(session: Session, shown: tuple[str, ...] = ()) -> Section | None:
+    """The group's notes on the steps (``shown``: keys already in another section)."""
     items = []
     for st in lab_steps.STEPS:
         for fld in st.fields:
+            if fld.key in shown:
+                continue
             e = session.entry(fld.key)
             if (
                 fld.kind == "text"
@@ -699,7 +717,7 @@ def build(session: Session) -> Report:
         sections.append(check)
     sections.append(_runs_section(session))
     sections.append(_answers(session, "Summary"))
-    notes = _notes_section(session)
+    notes = _notes_section(session, (CHECK_NOTES,) if check is not None else ())
     if notes is not None:
         sections.append(notes)
     return Report(

@@ -239,7 +239,8 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     the figures, then the details in a fold (HTML) or a subsection (Markdown)."""
     html, md, result, _, log, _ = report
     section = md.split("## Model check", 1)[1].split("\n## ", 1)[0]
-    where, first = section.strip().split("\n\n")[:2]  # as on the screen: run and close-up first
+    notes, where, first = section.strip().split("\n\n")[:3]  # the group's notes, then
+    assert notes.startswith("The group")  # as on the screen: run and close-up, the story
     assert where.startswith("Run ") and ", close-up " in where
     assert "whitened" not in first and "criterion" not in first and "coulomb" not in first
     assert "Likely cause: dry friction" in first and "constant braking torque" in first

@@ -185,11 +185,12 @@ def test_the_model_check_opens_as_the_screen_does_on_the_edge_its_close_up_shows
     assert r is not None and r.close_up is not None
     check = _section(md, "Model check")
     paragraphs = [p for p in check.split("\n\n") if p.strip()]
-    head = re.match(r"Run steps-1, close-up ([0-9.]+)-([0-9.]+) s: ", paragraphs[0])
-    assert head, paragraphs[0]
+    assert paragraphs[0].startswith("The group wrote no notes on the model check")
+    head = re.match(r"Run steps-1, close-up ([0-9.]+)-([0-9.]+) s: ", paragraphs[1])
+    assert head, paragraphs[1]
     t0, t1 = (float(x) for x in head.groups())
     assert (t0, t1) == pytest.approx((r.close_up.t0, r.close_up.t1), abs=0.006)
-    story, details = paragraphs[1], check.split("### Details", 1)[1]
+    story, details = paragraphs[2], check.split("### Details", 1)[1]
     evidence = details.split("The check's evidence, over the whole log:", 1)[1].split("\n")[0]
     for text in (story, evidence):
         edges = [float(x) for x in re.findall(r"t = ([0-9.]+) s", text)]
@@ -223,3 +224,17 @@ def test_an_incomplete_row_says_what_is_missing(tmp_path: Path) -> None:
     assert row["u_ss"] == "4.05 V" and row["omega_ss (± spread)"] == "not entered"
     assert row["capture window"] == "no capture" and row["i_ss"] == "not entered"
     assert row["k_v, computed (Task 6)"] == "not computed: the row is incomplete"
+
+
+def test_the_groups_notes_lead_the_model_check(tmp_path: Path) -> None:
+    """The model check is the program's work; what the group wrote about it came only at the
+    end of the report, among the Notes. It now opens the section, and is not repeated."""
+    s = _session(tmp_path)
+    s.enter("model_check.notes", "the wheel stops early after each drop")
+    md = _report(s)
+    s.close()
+    check = _section(md, "Model check")
+    first = check.strip().split("\n\n")[0]
+    assert first == "The group's notes on the model check: the wheel stops early after each drop"
+    assert md.count("the wheel stops early after each drop") == 1
+    assert "y' = 0 gives y = K c" in _section(md, "Notes")  # the other notes stay there
