@@ -525,7 +525,7 @@ def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figu
     close = Figure(
         stack(panels),
         440,
-        f"Close-up of run {name}, {_num(cu.t0)}-{_num(cu.t1)} s: {cu.what}"
+        f"Run {name}, {check_words.close_up_title(r)}"
         + (f" ({in_words(cu.cause)})" if cu.cause != "none" else "")
         + f". The shaded band is ± the noise there ({_num(cu.noise, 3)} rad/s): a model whose "
         "residual stays inside it explains the log down to its noise."

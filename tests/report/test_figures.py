@@ -205,7 +205,7 @@ def test_the_zoomed_step_marks_the_63_percent_level_and_its_crossing(report):
 def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     html, _, result, *_ = report
     cu = result.close_up
-    ((fig, caption),) = [f for f in _figures(html) if f[1].startswith("Close-up")]
+    ((fig, caption),) = [f for f in _figures(html) if ", close-up " in f[1]]
     speed, residual, angle = _panels(fig)
     assert cu.what in caption and in_words(cu.cause) in caption
     # where the cause acts: the close-up's own window, not the whole run

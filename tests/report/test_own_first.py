@@ -196,6 +196,9 @@ def test_the_model_check_opens_as_the_screen_does_on_the_edge_its_close_up_shows
         edges = [float(x) for x in re.findall(r"t = ([0-9.]+) s", text)]
         assert edges and all(t0 <= t <= t1 for t in edges), (t0, t1, text)
     assert check.index(story) < check.index("![") < check.index("### Details")
+    # the close-up's caption spells its span as the line above the story does
+    captions = re.findall(r"^\*(.*)\*$", check, re.M)
+    assert any(c.startswith(paragraphs[1].rstrip(".")) for c in captions), captions
 
 
 def test_a_policy_file_that_cannot_be_read_is_a_warning(tmp_path: Path) -> None:
