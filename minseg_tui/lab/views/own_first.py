@@ -255,7 +255,7 @@ def step_rows(session: Session) -> tuple[OwnRow, ...]:
 def run_used(session: Session) -> str:
     """One sentence: the run Tasks 11-15 and the model check use, why that one (the group's
     choice, or the newest complete run), and what interrupted it when it ended early."""
-    run = session.step_run()
+    run = session.response_run()
     if run is None:
         return "Tasks 11-15 and the model check have no run to use: no step run recorded yet (Task 10)."
     ts, manual = format_quantity(run.ts, "ms", 2), format_quantity(RunPlan().ts, "ms", 2)
