@@ -310,7 +310,7 @@ def _zoom_figure(session: Session, run: str | None, s: ResponseResult) -> Figure
     return Figure(
         svg,
         640,
-        f"The program's reading of one rising step of run {run} (Tasks 11-12, as the manual "
+        f"The program's reading of one rise of run {run} (Tasks 11-12, as the manual "
         "reads it; the group's own values are in the table above): the measured speed goes from "
         f"{_num(st.omega0)} to {_num(st.omega_ss)} rad/s; {crossed}. The least-squares T is "
         f"{_num(s.T * 1e3)} ms.",

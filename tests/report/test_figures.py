@@ -183,7 +183,7 @@ def _crossings(log) -> list[tuple[float, float, float]]:
 
 def test_the_zoomed_step_marks_the_63_percent_level_and_its_crossing(report):
     html, _, _, step, log, _ = report
-    ((fig, caption),) = [f for f in _figures(html) if "reading of one rising step" in f[1]]
+    ((fig, caption),) = [f for f in _figures(html) if "reading of one rise of run" in f[1]]
     (panel,) = _panels(fig)
     to_t, to_w = _axis(panel, "x"), _axis(panel, "y")
     colors = _legend_colors(panel)

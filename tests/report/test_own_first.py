@@ -89,7 +89,7 @@ def test_every_value_leads_with_the_groups_own(tmp_path: Path) -> None:
     assert model["computed the group's way"].endswith("(with your T and K)")
     # the close-up of one rise is the program's reading, and says so
     (caption,) = re.findall(r"^\*(.*)\*$", results, re.M)
-    assert caption.startswith("The program's reading of one rising step of run steps-1")
+    assert caption.startswith("The program's reading of one rise of run steps-1")
     # why the group's way and the program's differ, one sentence each, after the table
     assert "J (Task 13): The least-squares J uses T = " in results
     assert "T (Task 12): The 63 % reading takes one sampled point" in results

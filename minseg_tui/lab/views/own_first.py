@@ -205,7 +205,7 @@ def step_rows(session: Session) -> tuple[OwnRow, ...]:
         """The program's value of field ``key`` in ``unit``, and how it was had."""
         q = format_quantity
         if key == "own.omega_step":
-            return f"{q(st.omega_ss, unit)} (the median fitted steady speed of the rising steps)"
+            return f"{q(st.omega_ss, unit)} (the median fitted steady speed of the rises)"
         if key == "own.K":
             return (
                 f"{q(st.K, unit)} ({_interval(st.K_ci, st.K_determined, unit)}; "
