@@ -886,6 +886,12 @@ class Session:
             return r
         return None
 
+    def chosen_run(self) -> str | None:
+        """The run the group chose for Tasks 11-15 (None: no choice, :meth:`response_run`'s
+        default holds)."""
+        sel = self._data.get("selected_run")
+        return sel if isinstance(sel, str) else None
+
     def select_run(self, name: str | None) -> None:
         """Use run ``name`` for Tasks 11-15 until the group picks another (None: the default
         of :meth:`response_run`); saved in the session."""

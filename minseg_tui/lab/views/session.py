@@ -278,7 +278,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         if c.verdict:
             comp += f"\n  {c.verdict}"
         if c.revealed_early:
-            comp += " · revealed before answering"
+            comp += f" · {lab_compare.REVEALED_EARLY}"
         if c.least_squares is not None:
             lsq = (
                 c.least_squares if isinstance(c.least_squares, str) else _fmt(c.least_squares, unit)
