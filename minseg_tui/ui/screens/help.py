@@ -9,7 +9,8 @@ from textual.screen import ModalScreen
 from textual.widgets import Static
 
 INTRO = (
-    "The left column lists the lab's steps in order (✓ done, ✗ answered but wrong, … started); "
+    "The left column lists the lab's steps in order (✓ done, ✗ answered but wrong, ? an entry "
+    "refused, … started); "
     "the right shows the goal, what to do and what to type. Everything typed is saved at once."
 )
 

@@ -70,7 +70,7 @@ _SHORT = {
 NOTES = ".notes"
 """The key ending of a step's own notes field."""
 
-MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": " "}
+MARKS = {"done": "✓", "wrong": "✗", "refused": "?", "started": "…", "todo": " ", "info": " "}
 """The navigator's mark of a step's status (a character, not a colour)."""
 
 STEP_IDS = tuple(s.id for s in STEPS)
@@ -683,8 +683,13 @@ class LabScreen(StatusScreen):
 
     @on(FieldRow.Restore)
     def _restore(self, event: FieldRow.Restore) -> None:
-        """Ctrl+Z in an entry: the answer stored before the one in effect, entered again."""
+        """Escape in an entry: a refused text the lab keeps there is dropped with its refusal
+        (the answer in effect stands alone again, and its mark in the list of steps comes
+        back). Ctrl+Z: the answer stored before the one in effect, entered again."""
         event.stop()
+        if event.how == "held":
+            self._withdraw(event.row)
+            return
         with self.session as s:
             previous = views.previous_answer(s, event.key)
         if previous is None:
@@ -695,6 +700,22 @@ class LabScreen(StatusScreen):
         result = self._store(event.row, previous, submitted=True)
         if result.ok:
             self.notify(f"{event.row.field.label}: back to {previous.strip()!r}")
+
+    def _withdraw(self, row: FieldRow) -> None:
+        """Escape in ``row``: the refused text the lab keeps for it dropped (nothing else
+        stored), and the row shows what is in effect, without the refusal."""
+        if self.readonly:
+            return
+        key = row.field.key
+        with self.session as s:
+            if not s.withdraw_refused(key):
+                return
+            held = views.held(s, key)
+            result = views.entry(s, key) or EntryView(True)
+            row.held = held
+        row.refresh_from_lab(held, result)
+        row.input.cursor_position = len(held)
+        self._changed()
 
     @on(FieldRow.Typed)
     def _typed(self, event: FieldRow.Typed) -> None:
