@@ -161,8 +161,10 @@ class FieldRow(Vertical):
     choice field is a list to tick with the keys (arrows, Space or Enter) and posts
     :class:`FieldRow.Chosen`. The screen answers with :meth:`show_result`.
 
-    Typing never lands on the end of a value: focusing the box selects what it holds, and so
-    does Enter, so the next keys replace it (an arrow key or Home/End keeps it to edit)."""
+    Typing never lands on the end of a value the group comes back to: focusing the box
+    selects what it holds, so the next keys replace it (an arrow key or Home/End keeps it to
+    edit). After Enter the cursor stands at the end of an accepted value, nothing selected
+    (a digit typed next is appended); a refused text stays selected."""
 
     class Reflowed(Message):
         """The row grew or shrank once laid out (its hint moved under the box or back): the
@@ -332,13 +334,14 @@ class FieldRow(Vertical):
 
     def submitted(self) -> str | None:
         """Enter (the screen handles it): the text to store, sent again even if unchanged;
-        what the box holds is selected, so keys typed if the focus stays here replace it.
-        None on a list of answers."""
+        the cursor at its end, nothing selected, so a key typed if the focus stays here goes
+        on after it (a refused text is selected again by :meth:`show_result`). None on a
+        list of answers."""
         if self.field.options:
             return None
         text = self.input.value
         self._sent = text
-        self.input.select_all()
+        self.input.cursor_position = len(text)
         return text
 
     def restore(self, how: Restoring = "held") -> None:
@@ -421,7 +424,7 @@ class FieldRow(Vertical):
         event.stop()
         self._sent = None  # Enter always re-sends
         self._send(submitted=True)
-        self.input.select_all()  # if the focus stays here, the next keys replace the value
+        self.input.cursor_position = len(self.input.value)  # a digit typed next goes on after
 
     @on(Input.Blurred)
     def _blurred(self, event: Input.Blurred) -> None:
