@@ -9,7 +9,7 @@ from __future__ import annotations
 from textual.widgets import OptionList
 
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import goto, settle, start, type_in
+from tests.ui.helpers import goto, heard_notifications, settle, start, type_in
 
 
 def _row(app, key: str) -> FieldRow:
@@ -82,3 +82,63 @@ async def test_after_enter_a_digit_typed_goes_on_after_the_accepted_value(quiet)
         await pilot.press(*"2*pi/720", "enter")
         await settle(pilot)
         assert row.input.value == "2*pi/720" and not row.has_class("refused")
+
+
+async def test_ctrl_z_says_what_it_brought_back_and_ctrl_y_brings_the_newer_one_forward(quiet):
+    """Walk 3, defect 7: Ctrl+Z brought back an older wrong answer without a word, Ctrl+Y did
+    nothing, and neither was in F1's list of keys."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep5")
+        await type_in(pilot, "prep5.percent", "50")
+        await type_in(pilot, "prep5.percent", "63,2")
+        assert _mark(app, "prep5") == "✓"
+        said = heard_notifications(app)
+        await pilot.press("ctrl+z")
+        await settle(pilot)
+        with app.session as s:
+            assert s.entry("prep5.percent").text == "50"  # type: ignore[union-attr]
+        assert _mark(app, "prep5") == "✗" and _row(app, "prep5.percent").input.value == "50"
+        (back,) = said
+        assert "'50'" in back and "'63,2'" in back and "marked wrong" in back, back
+        assert "Ctrl+Y" in back
+        await pilot.press("ctrl+y")
+        await settle(pilot)
+        with app.session as s:
+            assert s.entry("prep5.percent").text == "63,2"  # type: ignore[union-attr]
+        assert _mark(app, "prep5") == "✓" and _row(app, "prep5.percent").input.value == "63,2"
+        assert "'63,2'" in said[-1] and "right" in said[-1] and "wrong" not in said[-1]
+        await pilot.press("ctrl+y")  # nothing more to bring forward: said, nothing stored
+        await settle(pilot)
+        assert "nothing to bring forward" in said[-1]
+        with app.session as s:
+            assert s.entry("prep5.percent").text == "63,2"  # type: ignore[union-attr]
+        await pilot.press("f1")
+        await settle(pilot)
+        keys = str(app.screen.query_one("#help-keys").render())
+        assert "Ctrl+Z" in keys and "Ctrl+Y" in keys and "Esc" in keys
+
+
+async def test_ctrl_z_twice_goes_further_back_and_a_new_answer_ends_ctrl_y(quiet):
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task2")
+        for typed in ("4,9", "5,1", "5,3"):
+            await type_in(pilot, "R", typed)
+        await pilot.press("ctrl+z", "ctrl+z")
+        await settle(pilot)
+        with app.session as s:
+            assert s.entry("R").text == "4,9"  # type: ignore[union-attr]
+        await pilot.press("ctrl+y")
+        await settle(pilot)
+        with app.session as s:
+            assert s.entry("R").text == "5,1"  # type: ignore[union-attr]
+        await type_in(pilot, "R", "5,2")
+        said = heard_notifications(app)
+        await pilot.press("ctrl+y")
+        await settle(pilot)
+        with app.session as s:
+            assert s.entry("R").text == "5,2"  # type: ignore[union-attr]
+        assert "nothing to bring forward" in said[-1]

@@ -71,11 +71,11 @@ screen's (it stores the entry and moves on)."""
 DESELECTING_KEYS = frozenset({"backspace", "delete", "left", "right", "home", "end"})
 """Keys that edit a refused text by one character (or move in it) rather than replace it."""
 
-Restoring = Literal["held", "undo"]
+Restoring = Literal["held", "undo", "redo"]
 """What a key in an entry brings back: the text the lab holds (Escape), the answer stored
-before it (Ctrl+Z)."""
+before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
 
-RESTORING_KEYS: dict[str, Restoring] = {"escape": "held", "ctrl+z": "undo"}
+RESTORING_KEYS: dict[str, Restoring] = {"escape": "held", "ctrl+z": "undo", "ctrl+y": "redo"}
 
 
 class EntryBox(Input):
@@ -85,7 +85,7 @@ class EntryBox(Input):
     A refused text stays selected (:meth:`hold_refused`): the next value typed replaces it,
     while Backspace, Delete, the arrows and Home/End edit it one character at a time. Escape
     brings back the text the lab holds for the row and drops a refused text over it; Ctrl+Z
-    the answer stored before it (:class:`FieldRow.Restore`)."""
+    the answer stored before it, Ctrl+Y the one Ctrl+Z took back (:class:`FieldRow.Restore`)."""
 
     def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
         super().__init__(
@@ -180,9 +180,10 @@ class FieldRow(Vertical):
 
     @dataclass
     class Restore(Message):
-        """Escape or Ctrl+Z in the row (``how``). Escape has put back in the box the text
-        the lab holds: the screen drops a refused text the lab keeps over it, and its
-        refusal. Ctrl+Z: the group wants back the answer stored before the one in effect."""
+        """Escape, Ctrl+Z or Ctrl+Y in the row (``how``). Escape has put back in the box the
+        text the lab holds: the screen drops a refused text the lab keeps over it, and its
+        refusal. Ctrl+Z: the group wants back the answer stored before the one in effect;
+        Ctrl+Y: the answer the last Ctrl+Z took back."""
 
         row: FieldRow
         key: str
@@ -347,8 +348,8 @@ class FieldRow(Vertical):
     def restore(self, how: Restoring = "held") -> None:
         """Escape (``held``): the box shows again the text the lab holds (:attr:`held`),
         whatever was typed over it and not confirmed, and the screen drops a refused text
-        (:class:`Restore`). Ctrl+Z (``undo``): ask the screen for the answer stored before
-        the one in effect."""
+        (:class:`Restore`). Ctrl+Z (``undo``) / Ctrl+Y (``redo``): ask the screen for the
+        answer stored before the one in effect / the one Ctrl+Z took back."""
         if self.field.options or self._readonly:
             return
         if how == "held":
