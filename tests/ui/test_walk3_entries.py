@@ -6,8 +6,10 @@ what the session stores."""
 
 from __future__ import annotations
 
+from textual.command import CommandList
 from textual.widgets import OptionList
 
+from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.helpers import goto, heard_notifications, settle, start, type_in
 
@@ -142,3 +144,23 @@ async def test_ctrl_z_twice_goes_further_back_and_a_new_answer_ends_ctrl_y(quiet
         with app.session as s:
             assert s.entry("R").text == "5,2"  # type: ignore[union-attr]
         assert "nothing to bring forward" in said[-1]
+
+
+async def test_the_palette_lists_keys_once_and_it_opens_f1s_list(quiet):
+    """Walk 3, defect 9: the palette listed "Keys" twice, Textual's own (its key panel) and
+    ours (F1's list)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await pilot.press("ctrl+p")
+        await pilot.press(*"keys")
+        await settle(pilot, lambda: bool(app.screen.query(CommandList)))
+        hits = app.screen.query_one(CommandList)
+        titles = [
+            str(hits.get_option_at_index(k).prompt).split("\n")[0] for k in range(hits.option_count)
+        ]
+        assert titles.count("Keys") == 1, titles
+        hits.highlighted = titles.index("Keys")
+        await pilot.press("enter")
+        await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
+        assert "Ctrl+Z" in str(app.screen.query_one("#help-keys").render())
