@@ -164,3 +164,26 @@ async def test_the_palette_lists_keys_once_and_it_opens_f1s_list(quiet):
         await pilot.press("enter")
         await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
         assert "Ctrl+Z" in str(app.screen.query_one("#help-keys").render())
+
+
+async def test_preparation_7_says_consistent_not_right(quiet):
+    """Walk 3, defect 9: invented readings of the oven's figure (not in the program) got
+    'right' for T and K; the check can only see that T and K follow from the group's own
+    readings."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep7")
+        for key, typed in (
+            ("prep7.y_final", "90"),
+            ("prep7.t_63", "12 min"),
+            ("prep7.T", "8 min"),
+            ("prep7.K", "0,09"),
+        ):
+            await type_in(pilot, key, typed)
+        for key in ("prep7.T", "prep7.K"):
+            said = _row(app, key).message
+            assert said.startswith("consistent with your readings") and "right" not in said, said
+        assert _mark(app, "prep7") == "✓"  # the method done as asked: the step is done
+        await type_in(pilot, "prep7.T", "12 min")  # the 4 min forgotten: still named wrong
+        assert "4 min" in _row(app, "prep7.T").message and _mark(app, "prep7") == "✗"

@@ -31,6 +31,10 @@ from minseg_tui.quantities import Plausible
 FieldKind = Literal["quantity", "formula", "choice", "text"]
 Status = Literal["right", "wrong", "missing"]
 
+CONSISTENT = "consistent with your readings"
+"""What a check says of an answer it can only compare with the group's own readings (the
+figure of Preparation 7 is not in the program, so its readings cannot be checked)."""
+
 LEVELS: tuple[float, ...] = (2.5, 3.5, 4.5)
 """Requested voltages u_req (V) of Tasks 4-5, one table row each."""
 
@@ -73,7 +77,9 @@ class Check:
     formula whose value (SI) the answer must match; it may use other entries through
     ``env`` (name -> entry key), e.g. the oven's K from the final temperature typed.
     ``mistakes`` are typical wrong answers (formula, what to say); ``correct`` are the
-    right option indices of a choice; ``explain`` is said when the answer is right.
+    right option indices of a choice; ``explain`` is said when the answer is right;
+    ``holds``: the word for an answer that passes, "right", or :data:`CONSISTENT` where the
+    check can only compare the answer with the group's own readings, not with the truth.
     """
 
     key: str
@@ -84,6 +90,7 @@ class Check:
     mistakes: tuple[tuple[str, str], ...] = ()
     correct: tuple[int, ...] = ()
     explain: str = ""
+    holds: str = "right"
 
 
 @dataclass(frozen=True)
@@ -263,7 +270,9 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation 7: an oven's time constant and gain",
         "Read T and K of a first-order system off a recorded step response.",
         "In Figure 2.1 the heater goes from 0 to 1000 W at t = 4 min. Read the final temperature "
-        "and the time at which 63 % of it is reached, then give T and K.",
+        "and the time at which 63 % of it is reached, then give T and K. The program does not "
+        "have the figure: it checks that your T and K follow from your readings, not the "
+        "readings themselves.",
         fields=(
             Field("prep7.y_final", "final temperature", unit="°C"),
             Field("prep7.t_63", "time at 63 % (figure's axis)", unit="min"),
@@ -281,6 +290,7 @@ _PREPARATION: tuple[Step, ...] = (
                     ("t_63", "the heater came on at t = 4 min, not at 0: count T from there"),
                 ),
                 explain="T is the time from the step to 63 % of the final value",
+                holds=CONSISTENT,
             ),
             Check(
                 "prep7.K",
@@ -291,6 +301,7 @@ _PREPARATION: tuple[Step, ...] = (
                     ("y_final", "divide the final temperature by the step in power, 1000 W"),
                 ),
                 explain="K = final temperature / input step (the room is at 0 °C)",
+                holds=CONSISTENT,
             ),
         ),
     ),
