@@ -187,3 +187,22 @@ async def test_preparation_7_says_consistent_not_right(quiet):
         assert _mark(app, "prep7") == "✓"  # the method done as asked: the step is done
         await type_in(pilot, "prep7.T", "12 min")  # the 4 min forgotten: still named wrong
         assert "4 min" in _row(app, "prep7.T").message and _mark(app, "prep7") == "✗"
+
+
+async def test_a_preparation_to_read_or_confirm_is_ticked_once_the_group_says_it_did_it(quiet):
+    """Walk 3, defect 9: Preparations 1-3, 9 and 13 (read, or see for yourself what the text
+    already says) never got a ✓ (nothing in them but notes, and notes alone ticked them).
+    Notes alone now mark the step started; picking what the step asked for marks it done."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        for step_id in ("prep1", "prep2", "prep3", "prep9", "prep13"):
+            await goto(pilot, step_id)
+            assert _mark(app, step_id) == " "
+            await type_in(pilot, f"{step_id}.notes", "ok")  # Enter moves on to 'done?'
+            assert _mark(app, step_id) == "…"
+            await pilot.press("enter")  # picks what the step asked for
+            await settle(pilot)
+            assert _mark(app, step_id) == "✓", step_id
+            with app.session as s:
+                assert s.entry(f"{step_id}.done").value == (0,)  # type: ignore[union-attr]

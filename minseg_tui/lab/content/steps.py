@@ -163,6 +163,12 @@ def _note(key: str) -> Field:
     return Field(key, "notes", kind="text", optional=True, hint="your own notes (not checked)")
 
 
+def _done(step_id: str, what: str) -> Field:
+    """The field of a step that asks only to read, or to see for oneself what its text already
+    says: the group picks ``what`` (what they did) once they did it, and the step is done."""
+    return Field(f"{step_id}.done", "done?", kind="choice", options=(what,))
+
+
 _MOTOR = ("R", "J", "f", "k_v", "k_a")
 
 _PREPARATION: tuple[Step, ...] = (
@@ -171,8 +177,9 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation",
         "Preparation 1: reading",
         "Know what a first-order system and its step response are before the lab.",
-        "Read sections 2.1 and 2.6 of Ljung & Glad. Nothing to check here; jot down questions.",
-        fields=(_note("prep1.notes"),),
+        "Read sections 2.1 and 2.6 of Ljung & Glad and jot down questions; nothing is checked "
+        "here. Say when you have read them.",
+        fields=(_note("prep1.notes"), _done("prep1", "we have read sections 2.1 and 2.6")),
     ),
     Step(
         "prep2",
@@ -180,8 +187,12 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation 2: the step response solves the equation",
         "Convince yourself that y(t) = K(1 - e^(-t/T))c satisfies T y' = -y + K u for a step of size c.",
         "Differentiate the proposed y(t), put y and y' into the equation and see that both sides "
-        "agree for t > 0; check y(0) = 0 too. Do not solve the equation from scratch.",
-        fields=(_note("prep2.notes"),),
+        "agree for t > 0; check y(0) = 0 too. Do not solve the equation from scratch. Say when "
+        "it checks out.",
+        fields=(
+            _note("prep2.notes"),
+            _done("prep2", "both sides agree, and y(0) = 0"),
+        ),
     ),
     Step(
         "prep3",
@@ -189,8 +200,8 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation 3: where the output settles",
         "See two ways that the step response ends at K c.",
         "Let t grow without bound in the solution; then, separately, set y' = 0 in the equation "
-        "(nothing changes any more in steady state) and solve for y.",
-        fields=(_note("prep3.notes"),),
+        "(nothing changes any more in steady state) and solve for y. Say when both give K c.",
+        fields=(_note("prep3.notes"), _done("prep3", "both ways give K c")),
     ),
     Step(
         "prep4",
@@ -338,8 +349,9 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation",
         "Preparation 9: read the whole lab",
         "Arrive knowing every task and which answers the preparations feed into.",
-        "Read through all the steps of this program; the remaining preparations are met on the way.",
-        fields=(_note("prep9.notes"),),
+        "Read through all the steps of this program; the remaining preparations are met on the "
+        "way. Say when you have read them.",
+        fields=(_note("prep9.notes"), _done("prep9", "we have read every step")),
     ),
     Step(
         "prep10",
@@ -409,8 +421,9 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation 13: one equation for the motor",
         "Eliminate the current between the electrical and the mechanical equation.",
         "Solve the electrical equation (L = 0) for i, put it into k_a i = J omega' + f omega and "
-        "multiply by R; you should reach R J omega' = -(R f + k_v k_a) omega + k_a u_A.",
-        fields=(_note("prep13.notes"),),
+        "multiply by R; you should reach R J omega' = -(R f + k_v k_a) omega + k_a u_A. Say "
+        "when you have.",
+        fields=(_note("prep13.notes"), _done("prep13", "we reached that equation")),
     ),
     Step(
         "prep14",
