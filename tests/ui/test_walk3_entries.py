@@ -6,12 +6,15 @@ what the session stores."""
 
 from __future__ import annotations
 
+import re
+
 from textual.command import CommandList
 from textual.widgets import OptionList
 
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import goto, heard_notifications, settle, start, type_in
+from minseg_tui.ui.widgets.prose import Prose
+from tests.ui.helpers import goto, heard_notifications, settle, start, start_with_a_run, type_in
 
 
 def _row(app, key: str) -> FieldRow:
@@ -206,3 +209,52 @@ async def test_a_preparation_to_read_or_confirm_is_ticked_once_the_group_says_it
             assert _mark(app, step_id) == "✓", step_id
             with app.session as s:
                 assert s.entry(f"{step_id}.done").value == (0,)  # type: ignore[union-attr]
+
+
+def _examples(text: str) -> list[float]:
+    """The numbers a hint or a refusal gives as examples (after 'e.g.')."""
+    return [
+        float(num)
+        for tail in re.findall(r"e\.g\. ([^)]*)", text)
+        for num in re.findall(r"(?<![\^\d.])\d+(?:\.\d+)?", tail)
+    ]
+
+
+async def test_the_examples_of_tasks_11_to_15_look_like_values_of_the_lab_but_are_none(quiet):
+    """Walk 3, defect 9: 'e.g. 31.4' for omega_ss (the wheel turns at about 7 rad/s) looked
+    odd. Each example on screen, in the hint or in a refusal, is at least a factor 1.5 from
+    the value the run gives (so it never gives the answer away) and within a factor 3 of it
+    (so it reads as a value of this lab)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        with app.session as s:
+            ident = s.results().identification
+        assert ident is not None and ident.step is not None and ident.step.T_63 is not None
+        st = ident.step
+        answers = {
+            "own.omega_step": [st.omega_ss],
+            "own.K": [st.K],
+            "own.T": [st.T, st.T_63, st.T * 1e3, st.T_63 * 1e3],
+            "own.J": [st.J],
+            "own.omega_5": [ident.omega_at_5V or 0.0],
+        }
+        seen = 0
+        for step_id, key in (
+            ("task11", "own.omega_step"),
+            ("task11", "own.K"),
+            ("task12", "own.T"),
+            ("task13", "own.J"),
+            ("task15", "own.omega_5"),
+        ):
+            await goto(pilot, step_id)
+            row = _row(app, key)
+            under = row.query_one(".field-hint", Prose)
+            shown = under.text if under.display else row.input.placeholder
+            row = await type_in(pilot, key, "about")
+            assert row.has_class("refused")
+            for x in _examples(shown) + _examples(row.message):
+                seen += 1
+                assert all(not (a / 1.5 < x < a * 1.5) for a in answers[key]), (key, x)
+                assert any(a / 3 < x < a * 3 for a in answers[key]), (key, x)
+        assert seen >= 11
