@@ -70,8 +70,23 @@ _SHORT = {
 NOTES = ".notes"
 """The key ending of a step's own notes field."""
 
-MARKS = {"done": "✓", "wrong": "✗", "refused": "?", "started": "…", "todo": " ", "info": " "}
-"""The navigator's mark of a step's status (a character, not a colour)."""
+STATUS_WORDS: tuple[tuple[str, str, str], ...] = (
+    ("done", "✓", "done"),
+    ("wrong", "✗", "answered but wrong"),
+    ("refused", "?", "an entry refused"),
+    ("started", "…", "started"),
+)
+"""The navigator's marks of a step's status that show (a character, not a colour): status,
+mark and what F1 says it means."""
+
+MARKS = {status: mark for status, mark, _ in STATUS_WORDS} | {"todo": " ", "info": " "}
+"""The navigator's mark of a step's status (blank: nothing to say)."""
+
+
+def marks_legend() -> str:
+    """What the marks mean, for F1: '✓ done, ✗ answered but wrong, ...'."""
+    return ", ".join(f"{mark} {words}" for _, mark, words in STATUS_WORDS)
+
 
 STEP_IDS = tuple(s.id for s in STEPS)
 
