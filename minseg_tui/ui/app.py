@@ -462,9 +462,9 @@ class LabApp(App[None]):
     def _link_event(self, event: LinkEventArrived) -> None:
         ev = event.event
         kind = ev.kind
-        if kind == "step":
+        if kind == "edge":
             return
-        if kind in ("stepdone", "disconnected", "watchdog", "boot", "error", "motor"):
+        if kind in ("square_wave_done", "disconnected", "watchdog", "boot", "error", "motor"):
             self.motor = "off"  # a run these end is ended by the Task 10 procedure
             self.requested = None
         if kind == "connected" and self.link.event == "":
@@ -690,7 +690,7 @@ class LabApp(App[None]):
             self._task10_ended(task.outcome)
             return
         self._run = task.run
-        if task.phase == "stepping":
+        if task.phase == "square_wave":
             self.motor = motor_words(None, task.plan.high)
             self.requested = None
         self.run_progress = task.progress()
@@ -699,7 +699,7 @@ class LabApp(App[None]):
         """End Task 10 now (F2, quit; ``why`` ``done`` keeps the run as complete): a wait ends
         without a run, a run being recorded is kept, interrupted by ``ended_by`` (a key of
         :data:`minseg_tui.lab.saving.runs.ENDED_BY`). A run the group chose stays in use; without a
-        choice, Tasks 11-15 use the newest complete 25 ms run (:meth:`Session.step_run`)."""
+        choice, Tasks 11-15 use the newest complete 25 ms run (:meth:`Session.response_run`)."""
         task = self.task10
         if task is None or not task.active:
             return
