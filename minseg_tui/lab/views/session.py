@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.steps import FIELDS, step
+from minseg_tui.lab.content.steps import FIELDS, STEPS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
@@ -194,17 +194,35 @@ def held(session: Session, key: str) -> str:
     return e.text if e else ""
 
 
-def previous_answer(session: Session, key: str) -> str | None:
+def previous_answer(session: Session, key: str, skip: Sequence[str] = ()) -> str | None:
     """The answer stored for field ``key`` before the one in effect: the newest earlier
-    text that reads as an answer and differs from it (None: there is none). Ctrl+Z in the
-    field enters it again."""
+    text that reads as an answer and differs from it and from those in ``skip`` (the ones
+    Ctrl+Z already took back, so that Ctrl+Z again goes further back); None: there is none.
+    Ctrl+Z in the field enters it again."""
     e = session.entry(key)
     if e is None or key not in FIELDS:
         return None
+    passed = {e.text.strip(), *(t.strip() for t in skip)}
     for text, _at in reversed(e.history):
-        if text.strip() != e.text.strip() and text.strip() and read_entry(FIELDS[key], text).ok:
+        if text.strip() not in passed and text.strip() and read_entry(FIELDS[key], text).ok:
             return text
     return None
+
+
+def judged(session: Session, key: str) -> str:
+    """How the answer in effect for field ``key`` is judged, in words for a notice: "marked
+    wrong (why)", the check's words when it holds ("right: ..."), or "" for a field nothing
+    judges (or no answer yet)."""
+    for fb in session.feedback("*"):
+        if fb.key == key and fb.status != "missing":
+            return f"marked wrong ({fb.message})" if fb.status == "wrong" else fb.message
+    fld = FIELDS.get(key)
+    if fld is not None and fld.compare and fld.kind == "text":
+        owner = next(st.id for st in STEPS if fld in st.fields)
+        for c in session.comparisons(owner):
+            if c.key == key and c.right is not None:
+                return "marked right" if c.right else "marked wrong"
+    return ""
 
 
 def chosen(session: Session, key: str) -> tuple[int, ...]:

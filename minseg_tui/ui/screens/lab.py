@@ -70,8 +70,23 @@ _SHORT = {
 NOTES = ".notes"
 """The key ending of a step's own notes field."""
 
-MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": " "}
-"""The navigator's mark of a step's status (a character, not a colour)."""
+STATUS_WORDS: tuple[tuple[str, str, str], ...] = (
+    ("done", "✓", "done"),
+    ("wrong", "✗", "answered but wrong"),
+    ("refused", "?", "an entry refused"),
+    ("started", "…", "started"),
+)
+"""The navigator's marks of a step's status that show (a character, not a colour): status,
+mark and what F1 says it means."""
+
+MARKS = {status: mark for status, mark, _ in STATUS_WORDS} | {"todo": " ", "info": " "}
+"""The navigator's mark of a step's status (blank: nothing to say)."""
+
+
+def marks_legend() -> str:
+    """What the marks mean, for F1: '✓ done, ✗ answered but wrong, ...'."""
+    return ", ".join(f"{mark} {words}" for _, mark, words in STATUS_WORDS)
+
 
 STEP_IDS = tuple(s.id for s in STEPS)
 
@@ -401,6 +416,9 @@ class LabScreen(StatusScreen):
         may be None, "leave it")."""
         self._paging = False
         """Set by PgDn/PgUp: the step shown next takes the focus, wherever it was."""
+        self._undone: dict[str, list[str]] = {}
+        """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
+        forward again (until another answer is stored in the field)."""
         self.shown = asyncio.Event()
         """Set once the first step is on screen and focused (the app waits for it before it
         hands on the keys typed after the Enter that opened the lab)."""
@@ -703,7 +721,12 @@ class LabScreen(StatusScreen):
                 if text is not None:
                     self._store(row, text, submitted=False)
 
-    def _store(self, row: FieldRow, text: str, submitted: bool) -> EntryView:
+    def _store(self, row: FieldRow, text: str, submitted: bool, undoing: bool = False) -> EntryView:
+        """Store ``text`` for ``row`` (``submitted``: with Enter) and show the verdict. An
+        answer stored by any means but Ctrl+Z or Ctrl+Y (``undoing``) ends what Ctrl+Y
+        could bring forward in that field."""
+        if not undoing:
+            self._undone.pop(row.field.key, None)
         if self.readonly:
             result = EntryView(False, "this session is open read-only (damaged): not stored")
             row.show_result(result)
@@ -729,18 +752,66 @@ class LabScreen(StatusScreen):
 
     @on(FieldRow.Restore)
     def _restore(self, event: FieldRow.Restore) -> None:
-        """Ctrl+Z in an entry: the answer stored before the one in effect, entered again."""
+        """Escape in an entry: a refused text the lab keeps there is dropped with its refusal
+        (the answer in effect stands alone again, and its mark in the list of steps comes
+        back). Ctrl+Z: the answer stored before the one in effect (one further back each
+        time), entered again; Ctrl+Y: the answer the last Ctrl+Z took back. Either says what
+        it brought back, in place of what, and how it is judged."""
         event.stop()
-        with self.session as s:
-            previous = views.previous_answer(s, event.key)
-        if previous is None:
-            self.notify(f"{event.row.field.label}: no earlier answer to bring back")
+        if event.how == "held":
+            self._withdraw(event.row)
             return
-        event.row.refresh_from_lab(previous, None)
-        event.row.input.cursor_position = len(previous)
-        result = self._store(event.row, previous, submitted=True)
-        if result.ok:
-            self.notify(f"{event.row.field.label}: back to {previous.strip()!r}")
+        row, key, label = event.row, event.key, event.row.field.label
+        undone = self._undone.setdefault(key, [])
+        with self.session as s:
+            current = views.held(s, key)
+            if event.how == "undo":
+                target = views.previous_answer(s, key, skip=undone)
+            else:
+                target = undone[-1] if undone else None
+        if target is None:
+            self.notify(
+                f"{label}: no earlier answer to bring back"
+                if event.how == "undo"
+                else f"{label}: nothing to bring forward (Ctrl+Y undoes a Ctrl+Z)",
+                title="undo" if event.how == "undo" else "redo",
+            )
+            return
+        row.refresh_from_lab(target, None)
+        row.input.cursor_position = len(target)
+        result = self._store(row, target, submitted=True, undoing=True)
+        if event.how == "undo":
+            undone.append(current)
+        else:
+            undone.pop()
+        with self.session as s:
+            verdict = views.judged(s, key) if result.ok else ""
+            further = views.previous_answer(s, key, skip=undone) is not None
+        said = f"{label}: back to {target.strip()!r}"
+        if current.strip():
+            said += f" in place of {current.strip()!r}"
+        if verdict:
+            said += f"; {verdict}"
+        keys = ["Ctrl+Z goes further back"] if further else []
+        if undone:
+            keys.append(f"Ctrl+Y brings {undone[-1].strip()!r} back")
+        self.notify(said + (f" ({', '.join(keys)})" if keys else ""), title="answer brought back")
+
+    def _withdraw(self, row: FieldRow) -> None:
+        """Escape in ``row``: the refused text the lab keeps for it dropped (nothing else
+        stored), and the row shows what is in effect, without the refusal."""
+        if self.readonly:
+            return
+        key = row.field.key
+        with self.session as s:
+            if not s.withdraw_refused(key):
+                return
+            held = views.held(s, key)
+            result = views.entry(s, key) or EntryView(True)
+            row.held = held
+        row.refresh_from_lab(held, result)
+        row.input.cursor_position = len(held)
+        self._changed()
 
     @on(FieldRow.Typed)
     def _typed(self, event: FieldRow.Typed) -> None:
