@@ -226,7 +226,12 @@ class LabApp(App[None]):
     ) -> None:
         """Show a notification as plain text, whoever asks (a widget's ``notify`` asks with
         markup on): the messages hold what was typed, refused text and file names, which
-        are shown as they are, never read as markup ('Cy [/]' was a MarkupError)."""
+        are shown as they are, never read as markup ('Cy [/]' was a MarkupError).
+
+        An override, because Textual offers no app-wide setting for it: ``App.notify`` and
+        ``Widget.notify`` default to ``markup=True``, and every widget's goes through this
+        one. ``markup=False`` at each of the 43 calls (or a helper of another name) would
+        hold only as long as every new call remembered it."""
         super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
 
     # -- start-up ---------------------------------------------------------------------
@@ -982,8 +987,11 @@ class LabApp(App[None]):
 
     def get_system_commands(self, screen: Screen[Any]) -> Iterable[SystemCommand]:
         """The palette's actions on ``screen``; a step panel's (set a voltage, capture, run)
-        only on the steps whose panel has it, as the footer shows its key."""
-        yield from super().get_system_commands(screen)
+        only on the steps whose panel has it, as the footer shows its key. Textual's own
+        "Keys" (its key panel) is left out: ours, the last, opens F1's list."""
+        for command in super().get_system_commands(screen):
+            if command.title != "Keys":
+                yield command
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
         offered = screen.panel_keys() if isinstance(screen, LabScreen) else {}
         for action, title, help_text in (
