@@ -311,6 +311,8 @@ def without(f: Fit, cause: str) -> Fit:
         fx = replace(fx, T2=0.0, pole_measured=False)
     elif cause == "current_limit":
         fx = replace(fx, rate=math.inf, drag=0.0, cap_both=False)
+    else:  # a cause with its own simulation piece (Candidate.drive)
+        fx = replace(fx, extra=tuple(x for x in fx.extra if x.cause != cause))
     return replace(f, effects=fx)
 
 
