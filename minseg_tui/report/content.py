@@ -21,8 +21,8 @@ from minseg_tui.lab.views import check_words
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
-from minseg_tui.model.identify import RisingStep, StepResult, u_ss_words
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.identify import ResponseResult, Rise, u_ss_words
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
     NOT_DETERMINED,
@@ -217,8 +217,8 @@ def _table_section(session: Session) -> Section:
     return sec
 
 
-def _u_ss_how(s: StepResult) -> str:
-    return u_ss_words(s.u_ss_how, [x.u_req for x in s.steps if x.u_req])
+def _u_ss_how(s: ResponseResult) -> str:
+    return u_ss_words(s.u_ss_how, [x.u_req for x in s.rises if x.u_req])
 
 
 def _step_section(session: Session) -> Section:
@@ -320,7 +320,7 @@ def _step_section(session: Session) -> Section:
     return sec
 
 
-def _read_step(steps: tuple[RisingStep, ...], T_63: float | None) -> RisingStep:
+def _read_step(steps: tuple[Rise, ...], T_63: float | None) -> Rise:
     """The step whose 63 % reading is nearest the median reading (the first without one)."""
     read = [x for x in steps if x.T_63 is not None]
     if not read or T_63 is None:
@@ -328,17 +328,17 @@ def _read_step(steps: tuple[RisingStep, ...], T_63: float | None) -> RisingStep:
     return min(read, key=lambda x: abs((x.T_63 or 0.0) - T_63))
 
 
-def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | None:
+def _zoom_figure(session: Session, run: str | None, s: ResponseResult) -> Figure | None:
     """Tasks 11-12 on one rise: the samples from a little before the edge to several T
     after it, the speed before and the settled speed, the 63 % level and the time the
     samples (joined by straight lines, as the manual reads them) cross it."""
-    if run is None or not s.steps:
+    if run is None or not s.rises:
         return None
     try:
         log = session.load_run(run)
     except (InputError, KeyError):
         return None
-    st = _read_step(s.steps, s.T_63)
+    st = _read_step(s.rises, s.T_63)
     t = np.asarray(log.t, dtype=float)
     w = np.asarray(log.omega, dtype=float)
     zoom = rise_zoom(st, s.T, log.ts)  # the same window as the TUI's zoom
@@ -370,7 +370,7 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     )
     crossed = (
         f"it crosses the 63 % level {_num(st.T_63 * 1e3)} ms after the step (T_63 of this "
-        f"step; the median over {len(s.steps)} steps is {_num((s.T_63 or 0.0) * 1e3)} ms)"
+        f"step; the median over {len(s.rises)} steps is {_num((s.T_63 or 0.0) * 1e3)} ms)"
         if st.T_63 is not None
         else "it does not reach the 63 % level within the step"
     )
@@ -414,7 +414,7 @@ def _warnings_section(session: Session) -> Section:
     return Section("Warnings", [items if items else "None."])
 
 
-def _run_figure(log: StepLog, name: str) -> Figure:
+def _run_figure(log: RunLog, name: str) -> Figure:
     t = np.asarray(log.t, float)
     lines = [Line("omega, mean over each sample interval", t, log.omega)]
     if "omega_lab" in log.extra:
@@ -475,7 +475,7 @@ def _lead(r: CheckResult) -> str | None:
     return f"The figure that means most for this log: the {name}, {value}. It leads because {r.lead.why}."
 
 
-def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figures:
+def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figures:
     """The whole run against both models with the residuals, and beside it the close-up
     where the cause acts with the noise floor marked."""
     t = np.asarray(r.t, float)
@@ -628,7 +628,7 @@ def _model_check_section(session: Session) -> Section | None:
         sec.blocks.append(f"The model check could not run on {mc.run}: {mc.problem}")
         return sec
     try:
-        log: StepLog | None = session.load_run(mc.run)
+        log: RunLog | None = session.load_run(mc.run)
     except (InputError, KeyError):
         log = None
     u = np.asarray(log.u, float) if log is not None and len(log) == np.asarray(r.t).size else None

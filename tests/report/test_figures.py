@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.report import svg
@@ -142,7 +142,7 @@ def report(tmp_path_factory):
     md = w.markdown.read_text(encoding="utf-8")
     mc = s.model_check()
     step = s.results().identification.step
-    log = read_step_log(s.run_path("steps-1"))
+    log = read_run_log(s.run_path("steps-1"))
     s.close()
     return html, md, mc.result, step, log, s.folder
 

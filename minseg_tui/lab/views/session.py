@@ -25,7 +25,7 @@ from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.steps import FIELDS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
-from minseg_tui.lab.saving.runs import STEP_KINDS
+from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state.entries import read_entry
@@ -35,8 +35,8 @@ from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify.identification import determined
-from minseg_tui.model.identify.steps import E63
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.identify.rises import E63
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
     NOT_DETERMINED,
@@ -399,7 +399,7 @@ class RunView:
     """The T readings are left out (None): Task 12's answer, hidden until the group has
     entered its own T (:func:`hidden`)."""
     in_use: bool = False
-    """Tasks 11-15 and the model check use this run (:meth:`Session.step_run`)."""
+    """Tasks 11-15 and the model check use this run (:meth:`Session.response_run`)."""
     plotted: bool = True
     """The newest run of its kind (steps, fast): the one its plot shows."""
 
@@ -409,10 +409,10 @@ def _median(values: Sequence[float | None]) -> float | None:
     return float(np.median(vs)) if vs else None
 
 
-def _t63(log: StepLog) -> float | None:
-    """The manual's 63 % reading of the log's speed: the median over its rising steps, s."""
+def _t63(log: RunLog) -> float | None:
+    """The manual's 63 % reading of the log's speed: the median over its rises, s."""
     try:
-        return _median([s.T_63 for s in model_identify.rising_steps(log)])
+        return _median([s.T_63 for s in model_identify.rises(log)])
     except (InputError, ValueError):
         return None
 
@@ -433,7 +433,7 @@ def runs(session: Session) -> tuple[RunView, ...]:
     imported logs), oldest first, with their T readings; the one in use marked (``in_use``,
     also when it is interrupted), the newest 25 ms and the newest fast run ``plotted``
     (a worker's job; a run's view is built once)."""
-    using = session.step_run()
+    using = session.response_run()
     newest = {r.kind: r.name for r in session.runs if r.kind in ("steps", "fast")}
     conceal = "own.T" in hidden(session)
     out = []
@@ -460,7 +460,7 @@ def _run_list(session: Session) -> list[RunView]:
     """The view of every run Tasks 11-15 can use, oldest first (built once each)."""
     out = []
     for r in session.runs:
-        if r.kind not in STEP_KINDS:
+        if r.kind not in RESPONSE_KINDS:
             continue
         key = (str(session.folder), r.name, r.samples, r.interrupted)
         kept = _run_views.get(key)
@@ -512,7 +512,7 @@ ZOOM_MIN_SAMPLES: int = 3
 
 @dataclass(frozen=True)
 class RiseZoom:
-    """One rising step of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
+    """One rise of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
     the speed before (``omega0``) and settled (``omega_ss``, rad/s), its 63 % reading
     ``T_63`` (s or None); the zoom to its rise from ``z0`` to ``z1`` (s: a little before the
     edge to several T after it), the 63 % level ``level`` (rad/s) and ``t_63``, the board
@@ -537,21 +537,21 @@ class RiseZoom:
         return None if self.T_63 is None else self.t0 + self.T_63
 
 
-def rise_zoom(step_: model_identify.RisingStep, T: float | None, ts: float) -> RiseZoom:
-    """The window of one rising step, zoomed to its rise with time constant ``T`` (s; the
+def rise_zoom(rise: model_identify.Rise, T: float | None, ts: float) -> RiseZoom:
+    """The window of one rise, zoomed to its rise with time constant ``T`` (s; the
     step's own 63 % reading when None) at sample period ``ts`` (s)."""
-    T_ref = T if T is not None and T > 0 else step_.T_63
+    T_ref = T if T is not None and T > 0 else rise.T_63
     if T_ref is None or not T_ref > 0:
-        T_ref = step_.duration / ZOOM_AFTER_T
-    t1 = step_.t + step_.duration
-    z0 = step_.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
-    z1 = min(step_.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
-    return RiseZoom(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
+        T_ref = rise.duration / ZOOM_AFTER_T
+    t1 = rise.t + rise.duration
+    z0 = rise.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
+    z1 = min(rise.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
+    return RiseZoom(rise.t, t1, rise.T_63, rise.omega0, rise.omega_ss, z0, z1)
 
 
 @dataclass(frozen=True)
 class ResultsView:
-    """Tasks 11-15: the log used (t s, omega rad/s, u V), its rising steps, result lines and
+    """Tasks 11-15: the log used (t s, omega rad/s, u V), its rises, result lines and
     the group's readings beside the computed ones (``compare``: label, yours, computed);
     ``problems``: what keeps a result from being computed, one line each."""
 
@@ -559,7 +559,7 @@ class ResultsView:
     t: FloatArray
     omega: FloatArray
     u: FloatArray
-    steps: tuple[RiseZoom, ...]
+    rises: tuple[RiseZoom, ...]
     lines: tuple[str, ...]
     compare: tuple[tuple[str, str, str], ...] = ()
     problems: tuple[str, ...] = ()
@@ -581,7 +581,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             log = None
     ident = res.identification
     lines: list[str] = []
-    steps: tuple[RiseZoom, ...] = ()
+    rises: tuple[RiseZoom, ...] = ()
     if ident is not None and ident.step is not None:
         st = ident.step
         conceal = hidden(session)
@@ -627,7 +627,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
         ]
         ts = log.ts if log is not None else 0.0
-        steps = tuple(rise_zoom(s, st.T, ts) for s in st.steps)
+        rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
     problems = list(res.problems)
     rule = policy(session)
     if rule.problem:
@@ -636,14 +636,14 @@ def results(session: Session, step_id: str) -> ResultsView:
     if used is not None and used.interrupted:
         problems.append(
             f"run {used.name} ended before its plan did ({used.interruption}; {used.samples} samples, "
-            f"{len(steps)} rising steps): a whole run gives more steps to read T from"
+            f"{len(rises)} rising steps): a whole run gives more steps to read T from"
         )
     return ResultsView(
         res.run,
         np.asarray(log.t, dtype=float) if log else _empty(),
         np.asarray(log.omega, dtype=float) if log else _empty(),
         np.asarray(log.u, dtype=float) if log else _empty(),
-        steps,
+        rises,
         tuple(lines),
         compare,
         tuple(problems),
@@ -786,5 +786,5 @@ def check(session: Session) -> CheckView:
 # -- the run in use -----------------------------------------------------------------------------
 def run_in_use(session: Session) -> str:
     """One line saying which run Tasks 11-15 and the model check use."""
-    run = session.step_run()
+    run = session.response_run()
     return f"Tasks 11-15 and the model check use run {run.name if run else '— (none yet)'}"

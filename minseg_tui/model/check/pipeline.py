@@ -40,7 +40,7 @@ from minseg_tui.model.check.result import (
 )
 from minseg_tui.model.check.sampling import Sampling, sampling, scatter
 from minseg_tui.model.optimize import golden
-from minseg_tui.model.steplog import problem
+from minseg_tui.model.runlog import problem
 from minseg_tui.quantities import format_number
 
 FloatArray = NDArray[np.float64]
@@ -62,7 +62,7 @@ def check(
     cpr: int | None = None,
     omega_over: str | None = None,
 ) -> CheckResult:
-    """The model check of one step log.
+    """The model check of one run log.
 
     t: sample times, s; u: voltage applied to the motor (u_A), V, in force from each row on;
     omega: measured speed, rad/s (the Euler velocity of encoder counts, a moving average of

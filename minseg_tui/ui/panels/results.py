@@ -76,8 +76,8 @@ class ResultsPanel(ViewPanel[ResultsView]):
         view = self.view
         if view is None:
             return
-        if self.zoom is not None and self.zoom >= len(view.steps):
-            self.zoom = 0 if view.steps else None
+        if self.zoom is not None and self.zoom >= len(view.rises):
+            self.zoom = 0 if view.rises else None
         self._plot()
         said = (view.lines, view.compare, view.problems)
         self._reveal = self._said is not None and said != self._said
@@ -106,7 +106,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
             plot.show([])
             note.update("no step run yet (Task 10)")
             return
-        if self.zoom is None or not v.steps:
+        if self.zoom is None or not v.rises:
             plot.set_axes("step log", "t [s]")
             plot.show(
                 [
@@ -114,15 +114,15 @@ class ResultsPanel(ViewPanel[ResultsView]):
                     Trace(v.t, v.u, "u_A [V]", "dot", steps=True, right=True),
                 ]
             )
-            if v.steps:
-                said = f"{len(v.steps)} rising steps with results · f9 Zoom"
+            if v.rises:
+                said = f"{len(v.rises)} rising steps with results · f9 Zoom"
             elif not v.lines:  # no results at all: Tasks 11-15 need the table's R, u_ss, i_ss
                 said = "no results yet: they need the table of Tasks 4-9 filled"
             else:
                 said = "no rising step long enough to read results from"
             note.update(f"run {v.run}: whole log, {said}")
             return
-        w = v.steps[self.zoom]
+        w = v.rises[self.zoom]
         keep = (v.t >= w.z0) & (v.t <= w.z1)
         x = v.t[keep] - w.t0  # time after the edge: the 63 % crossing is read off as T
         traces = [
@@ -151,7 +151,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
             f"63 % of the change is {format_value(w.level, 'rad/s', 3)}"
         )
         note.update(
-            f"run {v.run}, step {self.zoom + 1} of {len(v.steps)}: {change}, "
+            f"run {v.run}, step {self.zoom + 1} of {len(v.rises)}: {change}, "
             f"{crossing} · alt+←/→ Step · f9 Zoom (the next step)"
         )
 
@@ -161,9 +161,9 @@ class ResultsPanel(ViewPanel[ResultsView]):
 
     def pick(self, delta: int) -> None:
         """Zoom to the previous/next rising step."""
-        if self.view is None or not self.view.steps:
+        if self.view is None or not self.view.rises:
             return
-        n = len(self.view.steps)
+        n = len(self.view.rises)
         self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
         self._plot()
 
@@ -182,11 +182,11 @@ class ResultsPanel(ViewPanel[ResultsView]):
 
     def zoom_next(self) -> None:
         """F9: the next step, then the whole log, then the first step again."""
-        if self.view is None or not self.view.steps:
+        if self.view is None or not self.view.rises:
             return
         if self.zoom is None:
             self.zoom = 0
-        elif self.zoom + 1 >= len(self.view.steps):
+        elif self.zoom + 1 >= len(self.view.rises):
             self.zoom = None
         else:
             self.zoom += 1
