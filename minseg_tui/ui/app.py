@@ -971,8 +971,11 @@ class LabApp(App[None]):
 
     def get_system_commands(self, screen: Screen[Any]) -> Iterable[SystemCommand]:
         """The palette's actions on ``screen``; a step panel's (set a voltage, capture, run)
-        only on the steps whose panel has it, as the footer shows its key."""
-        yield from super().get_system_commands(screen)
+        only on the steps whose panel has it, as the footer shows its key. Textual's own
+        "Keys" (its key panel) is left out: ours, the last, opens F1's list."""
+        for command in super().get_system_commands(screen):
+            if command.title != "Keys":
+                yield command
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
         offered = screen.panel_keys() if isinstance(screen, LabScreen) else {}
         for action, title, help_text in (

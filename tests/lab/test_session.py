@@ -334,9 +334,17 @@ def test_step_status(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:
         assert s.step_status("task2") == "todo"
         s.enter("R", "x")
-        assert s.step_status("task2") == "started"
+        assert s.step_status("task2") == "refused"
         s.enter("R", "5")
         assert s.step_status("task2") == "done"
+        s.enter("R", "5 V")  # refused over the answer in effect: no tick while it shows
+        assert s.step_status("task2") == "refused" and s.value("R") == 5.0
+        assert s.withdraw_refused("R") and s.step_status("task2") == "done"
+        assert not s.withdraw_refused("R") and s.entry("R").text == "5"  # type: ignore[union-attr]
+        s.enter("prep8.T", "a/")  # never accepted: withdrawn, the field is empty again
+        assert s.step_status("prep8") == "refused"
+        assert s.withdraw_refused("prep8.T") and s.entry("prep8.T") is None
+        assert s.step_status("prep8") == "todo"
         assert s.step_status("task1") == "todo"  # done once the board check passes
         assert s.step_status("task10") == "todo"
 

@@ -573,6 +573,22 @@ class Session:
         self._changed()
         return entry
 
+    def withdraw_refused(self, key: str) -> bool:
+        """Escape in field ``key``: the refused text shown there is dropped (the group took
+        it back), so the field holds what is in effect again: the accepted answer the refusal
+        stood over, or nothing when no answer was ever accepted. Saved. Whether anything was
+        dropped."""
+        self._change()
+        e = self._entries.get(key)
+        if e is None or (e.ok and e.refused is None):
+            return False
+        if e.ok:
+            self._entries[key] = replace(e, refused=None)
+        else:
+            del self._entries[key]
+        self._changed()
+        return True
+
     def choose(self, key: str, options: Sequence[int]) -> Entry:
         """Pick option indices (0-based) of a choice field; saved. Same as typing letters."""
         return self.enter(key, ", ".join(chr(ord("a") + k) for k in options))
@@ -598,11 +614,15 @@ class Session:
     def step_status(self, step_id: str) -> str:
         """``done`` (every required field accepted; for Task 10 a run recorded; for a step
         done by board checks, its ``done_when`` checks passed), ``wrong``
-        (answered, but a checked answer is wrong), ``started`` (something entered), ``todo``,
-        or ``info`` (nothing to enter)."""
+        (answered, but a checked answer is wrong), ``refused`` (a field shows a text that was
+        refused, even over an accepted answer still in effect), ``started`` (something
+        entered), ``todo``, or ``info`` (nothing to enter)."""
         st = lab_steps.step(step_id)
         if "run_steps" in st.actions:
             return "done" if any(r.kind in ("steps", "fast") for r in self._runs) else "todo"
+        shown = [self._entries.get(f.key) for f in st.fields]
+        if any(e is not None and (e.refused is not None or not e.ok) for e in shown):
+            return "refused"
         required = [f for f in st.fields if not f.optional]
         if not st.fields and st.done_when:
             got = self.board_checks()
@@ -885,6 +905,12 @@ class Session:
         for r in (*manual, *complete):
             return r
         return None
+
+    def chosen_run(self) -> str | None:
+        """The run the group chose for Tasks 11-15 (None: no choice, :meth:`response_run`'s
+        default holds)."""
+        sel = self._data.get("selected_run")
+        return sel if isinstance(sel, str) else None
 
     def select_run(self, name: str | None) -> None:
         """Use run ``name`` for Tasks 11-15 until the group picks another (None: the default

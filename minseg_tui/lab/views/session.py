@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.steps import FIELDS, step
+from minseg_tui.lab.content.steps import FIELDS, STEPS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
@@ -194,17 +194,35 @@ def held(session: Session, key: str) -> str:
     return e.text if e else ""
 
 
-def previous_answer(session: Session, key: str) -> str | None:
+def previous_answer(session: Session, key: str, skip: Sequence[str] = ()) -> str | None:
     """The answer stored for field ``key`` before the one in effect: the newest earlier
-    text that reads as an answer and differs from it (None: there is none). Ctrl+Z in the
-    field enters it again."""
+    text that reads as an answer and differs from it and from those in ``skip`` (the ones
+    Ctrl+Z already took back, so that Ctrl+Z again goes further back); None: there is none.
+    Ctrl+Z in the field enters it again."""
     e = session.entry(key)
     if e is None or key not in FIELDS:
         return None
+    passed = {e.text.strip(), *(t.strip() for t in skip)}
     for text, _at in reversed(e.history):
-        if text.strip() != e.text.strip() and text.strip() and read_entry(FIELDS[key], text).ok:
+        if text.strip() not in passed and text.strip() and read_entry(FIELDS[key], text).ok:
             return text
     return None
+
+
+def judged(session: Session, key: str) -> str:
+    """How the answer in effect for field ``key`` is judged, in words for a notice: "marked
+    wrong (why)", the check's words when it holds ("right: ..."), or "" for a field nothing
+    judges (or no answer yet)."""
+    for fb in session.feedback("*"):
+        if fb.key == key and fb.status != "missing":
+            return f"marked wrong ({fb.message})" if fb.status == "wrong" else fb.message
+    fld = FIELDS.get(key)
+    if fld is not None and fld.compare and fld.kind == "text":
+        owner = next(st.id for st in STEPS if fld in st.fields)
+        for c in session.comparisons(owner):
+            if c.key == key and c.right is not None:
+                return "marked right" if c.right else "marked wrong"
+    return ""
 
 
 def chosen(session: Session, key: str) -> tuple[int, ...]:
@@ -278,7 +296,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         if c.verdict:
             comp += f"\n  {c.verdict}"
         if c.revealed_early:
-            comp += " · revealed before answering"
+            comp += f" · {lab_compare.REVEALED_EARLY}"
         if c.least_squares is not None:
             lsq = (
                 c.least_squares if isinstance(c.least_squares, str) else _fmt(c.least_squares, unit)
@@ -509,6 +527,16 @@ ZOOM_AFTER_T: float = 5.0
 ZOOM_MIN_SAMPLES: int = 3
 """At least this many samples before the edge, whatever T."""
 
+CLOSE_BEFORE_SAMPLES: int = 2
+"""The close-up to read T on (Task 12) starts this many samples before the edge..."""
+
+CLOSE_AFTER_T: float = 3.0
+"""...and ends this many time constants after it (95 % of the change), or
+:data:`CLOSE_AFTER_SAMPLES` samples when they last longer: at 80 columns a column of the
+0.375 s zoom was 7.2 ms of a 25 ms run, of the close-up 3.8 ms."""
+
+CLOSE_AFTER_SAMPLES: int = 6
+
 
 @dataclass(frozen=True)
 class RiseZoom:
@@ -516,7 +544,8 @@ class RiseZoom:
     the speed before (``omega0``) and settled (``omega_ss``, rad/s), its 63 % reading
     ``T_63`` (s or None); the zoom to its rise from ``z0`` to ``z1`` (s: a little before the
     edge to several T after it), the 63 % level ``level`` (rad/s) and ``t_63``, the board
-    time (s) the speed crosses it (None if it does not)."""
+    time (s) the speed crosses it (None if it does not); ``c0`` to ``c1`` (s): the close-up on
+    its first few T to read T on (Task 12)."""
 
     t0: float
     t1: float
@@ -525,6 +554,8 @@ class RiseZoom:
     omega_ss: float = 0.0
     z0: float = 0.0
     z1: float = 0.0
+    c0: float = 0.0
+    c1: float = 0.0
 
     @property
     def level(self) -> float:
@@ -546,7 +577,57 @@ def rise_zoom(rise: model_identify.Rise, T: float | None, ts: float) -> RiseZoom
     t1 = rise.t + rise.duration
     z0 = rise.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
     z1 = min(rise.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
-    return RiseZoom(rise.t, t1, rise.T_63, rise.omega0, rise.omega_ss, z0, z1)
+    c0 = rise.t - max(CLOSE_BEFORE_SAMPLES * ts, 0.5 * T_ref)
+    c1 = min(rise.t + max(CLOSE_AFTER_T * T_ref, CLOSE_AFTER_SAMPLES * ts), t1)
+    return RiseZoom(rise.t, t1, rise.T_63, rise.omega0, rise.omega_ss, z0, z1, c0, c1)
+
+
+@dataclass(frozen=True)
+class CursorReading:
+    """What a cursor on the zoomed rise reads: at ``t`` (s after the edge), the speed
+    ``omega`` (rad/s) of the line the plot draws there, which joins the samples at
+    ``t_before`` and ``t_after`` (s after the edge; the same sample when ``t`` is on one)
+    straight. A reading of the log itself, as a scope's cursor gives it: never a fitted
+    T, so it does not answer Task 12 for the group."""
+
+    t: float
+    omega: float
+    t_before: float
+    t_after: float
+
+    def text(self) -> str:
+        """One line for people: the time in ms, the speed, the samples around it."""
+        ms = 1000.0
+        between = (
+            f"the sample at {format_value(self.t_before * ms, 'ms', 3)}"
+            if self.t_before == self.t_after
+            else f"between the samples at {format_value(self.t_before * ms, 'ms', 3)} "
+            f"and {format_value(self.t_after * ms, 'ms', 3)}"
+        )
+        return (
+            f"t = {format_value(self.t * ms, 'ms', 3)} after the edge: "
+            f"omega = {format_value(self.omega, 'rad/s', 3)} ({between})"
+        )
+
+
+def cursor_reading(t: ArrayLike, omega: ArrayLike, at: float) -> CursorReading | None:
+    """The cursor's reading at ``at`` (s) of the speed ``omega`` (rad/s) sampled at ``t`` (s,
+    rising; both as the plot draws them): the straight line between the two samples around
+    ``at``. None outside the samples (or without any)."""
+    ts = np.asarray(t, dtype=float)
+    ws = np.asarray(omega, dtype=float)
+    ok = np.isfinite(ts) & np.isfinite(ws)
+    ts, ws = ts[ok], ws[ok]
+    if ts.size == 0 or not ts[0] <= at <= ts[-1]:
+        return None
+    k = int(np.searchsorted(ts, at, side="right"))  # ts[k - 1] <= at < ts[k]
+    before = k - 1
+    after = min(k, ts.size - 1)
+    if ts[before] == at or before == after:
+        return CursorReading(at, float(ws[before]), float(ts[before]), float(ts[before]))
+    share = (at - ts[before]) / (ts[after] - ts[before])
+    omega_at = float(ws[before] + share * (ws[after] - ws[before]))
+    return CursorReading(at, omega_at, float(ts[before]), float(ts[after]))
 
 
 @dataclass(frozen=True)

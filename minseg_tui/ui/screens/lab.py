@@ -20,12 +20,12 @@ from textual.actions import SkipAction
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
-from textual.containers import Horizontal
+from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
 from textual.reactive import reactive
 from textual.signal import Signal
 from textual.widget import Widget
-from textual.widgets import OptionList
+from textual.widgets import OptionList, Static
 from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
@@ -54,7 +54,7 @@ from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
-from minseg_tui.ui.widgets.fields import FieldForm, FieldRow, Store
+from minseg_tui.ui.widgets.fields import FieldForm, FieldRow, Restoring, Store
 from minseg_tui.ui.widgets.footer import KeyFooter
 from minseg_tui.ui.widgets.prose import Prose
 
@@ -70,8 +70,23 @@ _SHORT = {
 NOTES = ".notes"
 """The key ending of a step's own notes field."""
 
-MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": " "}
-"""The navigator's mark of a step's status (a character, not a colour)."""
+STATUS_WORDS: tuple[tuple[str, str, str], ...] = (
+    ("done", "✓", "done"),
+    ("wrong", "✗", "answered but wrong"),
+    ("refused", "?", "an entry refused"),
+    ("started", "…", "started"),
+)
+"""The navigator's marks of a step's status that show (a character, not a colour): status,
+mark and what F1 says it means."""
+
+MARKS = {status: mark for status, mark, _ in STATUS_WORDS} | {"todo": " ", "info": " "}
+"""The navigator's mark of a step's status (blank: nothing to say)."""
+
+
+def marks_legend() -> str:
+    """What the marks mean, for F1: '✓ done, ✗ answered but wrong, ...'."""
+    return ", ".join(f"{mark} {words}" for _, mark, words in STATUS_WORDS)
+
 
 STEP_IDS = tuple(s.id for s in STEPS)
 
@@ -94,20 +109,42 @@ def nav_label(step: Step, status: str = "todo") -> str:
     return f"{MARKS.get(status, ' ')} {head}"
 
 
+HEADING_ROWS = 2
+"""The rows of a step's :class:`Heading` (lab.tcss)."""
+
+
+class Heading(Vertical):
+    """The step's title and the start of what to do, on one line each, kept at the top of
+    the step while its own title is scrolled away (a layer of its own over the step, so the
+    step's text does not move when it shows). At 80x24 a step taller than the screen landed
+    on its entry with its title and instructions above the screen: the group did not see
+    what the step asks."""
+
+    def __init__(self, step: Step) -> None:
+        super().__init__(
+            Static(step.title, classes="heading-title", markup=False),
+            Static("What to do: " + step.todo, classes="heading-todo", markup=False),
+            classes="heading",
+        )
+        self.display = False
+
+
 class StepPane(FieldForm):
     """The step on the right: title, goal, what to do, the step's own panel (and the readout
     it keeps in sight at the bottom) and its entry rows, in the one form that owns the rows'
-    keys (:class:`~minseg_tui.ui.widgets.fields.FieldForm`). It outlives the step:
+    keys (:class:`~minseg_tui.ui.widgets.fields.FieldForm`); the :class:`Heading` over its
+    top while it is scrolled down. It outlives the step:
     :meth:`show` puts the next step's widgets in it, so that the keys typed after PgDn, still
     on their way to it, land in the new step. :meth:`focus_on` lands in the step."""
 
     def __init__(
-        self, store: Store, restore: Callable[[FieldRow], None], readonly: bool = False
+        self, store: Store, restore: Callable[[FieldRow, Restoring], None], readonly: bool = False
     ) -> None:
         super().__init__(store, restore, readonly, classes="pane")
         self.step: Step | None = None
         """The step shown (None before the first)."""
         self.panel: Widget | None = None
+        self._heading: Heading | None = None
         self._keep: FieldRow | Literal["focused", "scrolled"] = "focused"
         """What stays in view when the step grows or shrinks above its entries: the entry the
         step landed in, while it has the focus (placed again from the top of the step: the
@@ -121,7 +158,9 @@ class StepPane(FieldForm):
         self.current = None
         self._keep = "focused"
         await self.remove_children()
+        self._heading = Heading(step)
         widgets: list[Widget] = [
+            self._heading,
             Prose(step.title, classes="title"),
             Prose("Goal: " + step.goal, classes="goal"),
             Prose("What to do: " + step.todo, classes="todo"),
@@ -164,7 +203,10 @@ class StepPane(FieldForm):
             top = row.region.y - view.y + self.scroll_y
             bottom = row.region.bottom - view.y + self.scroll_y
             end = widget.region.bottom - view.y + self.scroll_y
+            # the entry's top below the heading, which covers the step's top once it scrolls
             y = min(max(self.scroll_y, end - view.height, bottom - view.height), top)
+            if y > 0:
+                y = min(y, max(top - HEADING_ROWS, 0))
             self.scroll_to(y=y, animate=False, immediate=True)
             if again:  # once more when the layout has settled
                 self.call_after_refresh(place, False)
@@ -188,14 +230,37 @@ class StepPane(FieldForm):
         if self._keep != "scrolled" and row is not None:
             row.call_after_refresh(row.bring_into_view)
 
-    def on_descendant_focus(self, _: events.DescendantFocus) -> None:
+    def on_descendant_focus(self, event: events.DescendantFocus) -> None:
         if self._keep == "scrolled":
             self._keep = "focused"
+        self.call_after_refresh(self._clear_heading, event.widget)
+
+    def watch_scroll_y(self, old: float, new: float) -> None:
+        """The heading shows while the step's own title is scrolled away."""
+        super().watch_scroll_y(old, new)
+        if self._heading is not None:
+            self._heading.display = round(new) > 0
+
+    @property
+    def heading_rows(self) -> int:
+        """Rows the heading covers at the top of the step (0 while it is hidden)."""
+        return HEADING_ROWS if self._heading is not None and self._heading.display else 0
+
+    def _clear_heading(self, widget: Widget) -> None:
+        """A focused ``widget`` under the heading (Textual scrolls a widget above the view to
+        the top edge, where the heading lies) is scrolled down from under it."""
+        if not (widget.is_attached and self.is_attached and widget.has_focus and widget.region):
+            return  # an empty region: not on the screen at all (below it, say), not under it
+        over = self.scrollable_content_region.y + self.heading_rows - widget.region.y
+        if over > 0:
+            self.scroll_to(y=max(self.scroll_y - over, 0), animate=False, immediate=True)
 
     def watch_current(self, old: FieldRow | None, new: FieldRow | None) -> None:
         super().watch_current(old, new)
         if new is not None and self._keep == "scrolled":
             self._keep = "focused"
+        if new is not None and new.is_attached and not new.field.options:
+            self.call_after_refresh(self._clear_heading, new.input)
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
         self._group_scrolled()
@@ -357,6 +422,9 @@ class LabScreen(StatusScreen):
         may be None, "leave it")."""
         self._paging = False
         """Set by PgDn/PgUp: the step shown next takes the focus, wherever it was."""
+        self._undone: dict[str, list[str]] = {}
+        """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
+        forward again (until another answer is stored in the field)."""
         self.shown = asyncio.Event()
         """Set once the first step is on screen and focused (the app waits for it before it
         hands on the keys typed after the Enter that opened the lab)."""
@@ -623,7 +691,12 @@ class LabScreen(StatusScreen):
             if text is not None:
                 self._store(row, text, submitted=False)
 
-    def _store(self, row: FieldRow, text: str, submitted: bool) -> EntryView:
+    def _store(self, row: FieldRow, text: str, submitted: bool, undoing: bool = False) -> EntryView:
+        """Store ``text`` for ``row`` (``submitted``: with Enter) and show the verdict. An
+        answer stored by any means but Ctrl+Z or Ctrl+Y (``undoing``) ends what Ctrl+Y
+        could bring forward in that field."""
+        if not undoing:
+            self._undone.pop(row.field.key, None)
         if self.readonly:
             result = EntryView(False, "this session is open read-only (damaged): not stored")
             row.show_result(result)
@@ -647,18 +720,66 @@ class LabScreen(StatusScreen):
         self._changed()
         return result
 
-    def _restore(self, row: FieldRow) -> None:
-        """Ctrl+Z in an entry: the answer stored before the one in effect, entered again."""
-        with self.session as s:
-            previous = views.previous_answer(s, row.field.key)
-        if previous is None:
-            self.notify(f"{row.field.label}: no earlier answer to bring back")
+    def _restore(self, row: FieldRow, how: Restoring) -> None:
+        """Escape in an entry: a refused text the lab keeps there is dropped with its refusal
+        (the answer in effect stands alone again, and its mark in the list of steps comes
+        back). Ctrl+Z: the answer stored before the one in effect (one further back each
+        time), entered again; Ctrl+Y: the answer the last Ctrl+Z took back. Either says what
+        it brought back, in place of what, and how it is judged."""
+        if how == "held":
+            self._withdraw(row)
             return
-        row.refresh_from_lab(previous, None)
-        row.input.cursor_position = len(previous)
-        result = self._store(row, previous, submitted=True)
-        if result.ok:
-            self.notify(f"{row.field.label}: back to {previous.strip()!r}")
+        key, label = row.field.key, row.field.label
+        undone = self._undone.setdefault(key, [])
+        with self.session as s:
+            current = views.held(s, key)
+            if how == "undo":
+                target = views.previous_answer(s, key, skip=undone)
+            else:
+                target = undone[-1] if undone else None
+        if target is None:
+            self.notify(
+                f"{label}: no earlier answer to bring back"
+                if how == "undo"
+                else f"{label}: nothing to bring forward (Ctrl+Y undoes a Ctrl+Z)",
+                title="undo" if how == "undo" else "redo",
+            )
+            return
+        row.refresh_from_lab(target, None)
+        row.input.cursor_position = len(target)
+        result = self._store(row, target, submitted=True, undoing=True)
+        if how == "undo":
+            undone.append(current)
+        else:
+            undone.pop()
+        with self.session as s:
+            verdict = views.judged(s, key) if result.ok else ""
+            further = views.previous_answer(s, key, skip=undone) is not None
+        said = f"{label}: back to {target.strip()!r}"
+        if current.strip():
+            said += f" in place of {current.strip()!r}"
+        if verdict:
+            said += f"; {verdict}"
+        keys = ["Ctrl+Z goes further back"] if further else []
+        if undone:
+            keys.append(f"Ctrl+Y brings {undone[-1].strip()!r} back")
+        self.notify(said + (f" ({', '.join(keys)})" if keys else ""), title="answer brought back")
+
+    def _withdraw(self, row: FieldRow) -> None:
+        """Escape in ``row``: the refused text the lab keeps for it dropped (nothing else
+        stored), and the row shows what is in effect, without the refusal."""
+        if self.readonly:
+            return
+        key = row.field.key
+        with self.session as s:
+            if not s.withdraw_refused(key):
+                return
+            held = views.held(s, key)
+            result = views.entry(s, key) or EntryView(True)
+            row.held = held
+        row.refresh_from_lab(held, result)
+        row.input.cursor_position = len(held)
+        self._changed()
 
     @on(FieldRow.Chosen)
     def _chosen(self, event: FieldRow.Chosen) -> None:

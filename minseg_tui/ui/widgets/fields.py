@@ -6,6 +6,7 @@ import asyncio
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Literal
 
 from rich.segment import Segment
 from textual import events, on
@@ -73,6 +74,12 @@ screen's (it stores the entry and moves on)."""
 DESELECTING_KEYS = frozenset({"backspace", "delete", "left", "right", "home", "end"})
 """Keys that edit a refused text by one character (or move in it) rather than replace it."""
 
+Restoring = Literal["held", "undo", "redo"]
+"""What a key in an entry brings back: the text the lab holds (Escape), the answer stored
+before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
+
+RESTORING_KEYS: dict[str, Restoring] = {"escape": "held", "ctrl+z": "undo", "ctrl+y": "redo"}
+
 
 class EntryBox(Input, can_focus=False):
     """The text box of an entry. It never takes the focus: its form (:class:`FieldForm`) does,
@@ -80,7 +87,9 @@ class EntryBox(Input, can_focus=False):
     it then shows as focused (:meth:`show_current`), cursor and selection included.
 
     A refused text stays selected (:meth:`hold_refused`): the next value typed replaces it,
-    while Backspace, Delete, the arrows and Home/End edit it one character at a time."""
+    while Backspace, Delete, the arrows and Home/End edit it one character at a time. Escape
+    brings back the text the lab holds for the row and drops a refused text over it; Ctrl+Z
+    the answer stored before it, Ctrl+Y the one Ctrl+Z took back (the form asks the lab)."""
 
     def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
         super().__init__(
@@ -135,8 +144,10 @@ class FieldRow(Vertical):
     Enter) and posts :class:`FieldRow.Chosen`. The lab's verdict shows with
     :meth:`show_result`.
 
-    Typing never lands on the end of a value: focusing the box selects what it holds, and so
-    does Enter, so the next keys replace it (an arrow key or Home/End keeps it to edit)."""
+    Typing never lands on the end of a value the group comes back to: focusing the box
+    selects what it holds, so the next keys replace it (an arrow key or Home/End keeps it to
+    edit). After Enter the cursor stands at the end of an accepted value, nothing selected
+    (a digit typed next is appended); a refused text stays selected."""
 
     class Reflowed(Message):
         """The row grew or shrank once laid out (its hint moved under the box or back): the
@@ -284,13 +295,14 @@ class FieldRow(Vertical):
 
     def submitted(self) -> str | None:
         """Enter (the screen handles it): the text to store, sent again even if unchanged;
-        what the box holds is selected, so keys typed if the focus stays here replace it.
-        None on a list of answers."""
+        the cursor at its end, nothing selected, so a key typed if the focus stays here goes
+        on after it (a refused text is selected again by :meth:`show_result`). None on a
+        list of answers."""
         if self.field.options:
             return None
         text = self.input.value
         self._sent = text
-        self.input.select_all()
+        self.input.cursor_position = len(text)
         return text
 
     def restore(self) -> None:
@@ -389,7 +401,7 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     def __init__(
         self,
         store: Store,
-        restore: Callable[[FieldRow], None],
+        restore: Callable[[FieldRow, Restoring], None],
         readonly: bool = False,
         classes: str = "",
     ) -> None:
@@ -573,11 +585,11 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
                 if result.ok:  # accepted: on to the next entry at once
                     self.focus_after(row.field.key)
             return True
-        if key == "escape":
-            row.restore()
-            return True
-        if key == "ctrl+z":
-            self._restore(row)
+        how = RESTORING_KEYS.get(key)
+        if how is not None:  # Escape, Ctrl+Z, Ctrl+Y: what the lab holds, or held before
+            if how == "held":
+                row.restore()
+            self._restore(row, how)
             return True
         if box.disabled:
             return False
