@@ -40,8 +40,8 @@ import numpy as np
 from minseg_tui.device import protocol as P
 from minseg_tui.device.link import Link
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.lab.saving.files import write_step_log
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.lab.saving.files import write_run_log
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import make_log
 
 OUTCOMES = ("clean", "traceback", "hang", "wrong-but-confident", "data lost")
@@ -93,11 +93,11 @@ def _files(d: Path) -> None:
         (d / name).write_bytes(data)
     (d / "folder").mkdir()
     log = make_log("none", param=0, seed=3)
-    write_step_log(d / "log.csv", StepLog(t=log.t, u=log.u, omega=log.omega))
+    write_run_log(d / "log.csv", RunLog(t=log.t, u=log.u, omega=log.omega))
     ORIGINALS["log.csv"] = (d / "log.csv").read_bytes()
     rng = np.random.default_rng(1)
     noisy = np.round(log.u + rng.normal(0.0, 0.01, log.u.size), 2)
-    write_step_log(d / "noisy_u.csv", StepLog(t=log.t, u=noisy, omega=log.omega))
+    write_run_log(d / "noisy_u.csv", RunLog(t=log.t, u=noisy, omega=log.omega))
     (d / "empty.csv").write_text("")
     (d / "garbage.csv").write_bytes(bytes(range(256)) * 40)
     (d / "header_only.csv").write_text("t,u,omega\n")

@@ -13,7 +13,7 @@ over the nominal period of 20 or 25 ms), on held-out seeds (5000 on; the tests u
   0.3-0.8 sample periods before its timestamp;
 - all three at once;
 
-each on logs of four step periods and on logs of one rising step after six rows of rest
+each on logs of four step periods and on logs of one rise after six rows of rest
 (where the shift used to slide). For a noise-free first-order rise a careful reading (the 63 %
 time from the instant the wheel starts, the Euler speed's half-sample lag taken off) is T
 itself, so T is compared with the generator's T.
@@ -42,9 +42,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.identify import Reading, identify
-from minseg_tui.model.steplog import StepLog, command, find_edges
+from minseg_tui.model.runlog import RunLog, command, find_edges
 from tests.model.identgen import make, table
 
 FAMILIES: dict[str, tuple[float | None, int, bool]] = {
@@ -93,8 +93,8 @@ def one(family: str, seed: int, periods: int) -> dict[str, float]:
     }
 
 
-def careful_reading(log: StepLog) -> tuple[float, float] | None:
-    """T (s) read with care off the first rising step of a real log, two ways (see the
+def careful_reading(log: RunLog) -> tuple[float, float] | None:
+    """T (s) read with care off the first rise of a real log, two ways (see the
     docstring): the 63 % time and the angle's asymptote, each from the onset."""
     cmd, _ = command(log)
     rising = [e for e in find_edges(cmd) if e.rising]
@@ -138,7 +138,7 @@ def real(folder: Path) -> None:
         f"{'shift ms':>9} {'dead ms':>8}  said"
     )
     for path in sorted(folder.glob("*/step.csv")):
-        log = read_step_log(path)
+        log = read_run_log(path)
         cmd, _ = command(log)
         levels = sorted({abs(e.after) for e in find_edges(cmd) if e.rising and e.after})
         r = identify([Reading(v, v, 10.0, 50.0) for v in levels], 5.0, log)

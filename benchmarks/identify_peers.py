@@ -5,7 +5,7 @@
 Logs come from the project's generator (minseg_tui.model.synth.identification_log: the
 plant of minseg_tui.model.plant with the published MinSeg motor, its inertia set for the
 wanted T, no dry friction, brake at zero command, 0.45 V driver drop, 720-count encoder read
-as integer counts, starting at a random fraction of a count), seeded. Each log: 4 rising steps (the lab's plan has 4
+as integer counts, starting at a random fraction of a count), seeded. Each log: 4 rises (the lab's plan has 4
 periods) to 2, 3 or 4 V, each level held 5 T; the speed column is the Euler derivative of the
 counts at the nominal Ts, as the lab's sketch computes it. Tiers: T 0.08-0.3 s at Ts = 25 ms
 and at 5 ms, and a fast tier, T 0.04-0.08 s at 25 ms. The loop is late by a uniform 0-2 ms
@@ -22,11 +22,11 @@ read) or without them (t = k Ts).
 
 Estimators, all on the same logs:
 
-- 63 % reading: the manual's Task 12 on the speed column, per rising step (final value: mean
+- 63 % reading: the manual's Task 12 on the speed column, per rise (final value: mean
   of the step's last quarter; start: the speed before the step; linear interpolation between
   samples), median over the steps; K = final value / u;
 - curve fit: scipy.optimize.curve_fit of w_ss - (w_ss - w0) e^(-(t - t_step)/T) to the speed
-  samples of every rising step, T shared, what curve_fit or lmfit users do; interval from pcov;
+  samples of every rise, T shared, what curve_fit or lmfit users do; interval from pcov;
 - ARX(1,1): omega_k = a omega_k-1 + b u_k-1 by least squares over the whole log (what
   sysidentpy fits), T = -Ts / ln a, K = b / (1 - a);
 - FOPDT: the first-order-plus-dead-time model T w' = -w + K u(t - Td) simulated with the held
@@ -56,7 +56,7 @@ from scipy import stats as sstats
 
 from minseg_tui.model.identify import identify
 from minseg_tui.model.motor import PUBLISHED
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import identification_log, identification_table
 
 F = NDArray[np.float64]
@@ -72,7 +72,7 @@ TIERS: dict[str, tuple[float, float, float, float]] = {
 class Log:
     """A generated log and its truth: T (s), K (rad/s per V of u_A)."""
 
-    log: StepLog
+    log: RunLog
     T: float
     K: float
     ts: float
@@ -96,7 +96,7 @@ Estimate = tuple[float, float, tuple[float, float] | None, tuple[float, float] |
 
 
 def _rising(u_req: F) -> list[tuple[int, int]]:
-    """(first row at the high level, last row at it) of every rising step."""
+    """(first row at the high level, last row at it) of every rise."""
     up = np.flatnonzero(np.diff(u_req) > 0) + 1
     down = np.flatnonzero(np.diff(u_req) < 0) + 1
     out = []

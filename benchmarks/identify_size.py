@@ -1,4 +1,4 @@
-"""Time and memory of identify (Tasks 11-15) against the length of the step log.
+"""Time and memory of identify (Tasks 11-15) against the length of the run log.
 
     .venv/bin/python benchmarks/identify_size.py [--rows 10000,100000,1000000]
 
@@ -22,7 +22,7 @@ import numpy as np
 
 from minseg_tui.model.identify import Reading, identify
 from minseg_tui.model.motor import PUBLISHED
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 
 TS = 0.025
 HALF = 40  # rows per level: 1 s
@@ -30,7 +30,7 @@ V_DROP = 0.45
 U_C = 0.12  # breakaway voltage of the dry friction, V (tau_c R / k_a of the MinSeg)
 
 
-def make(rows: int, seed: int = 1) -> StepLog:
+def make(rows: int, seed: int = 1) -> RunLog:
     """A long square-wave log: first-order motor with dry friction, integer counts."""
     rng = np.random.default_rng(seed)
     T, K = PUBLISHED.T, PUBLISHED.K
@@ -61,7 +61,7 @@ def make(rows: int, seed: int = 1) -> StepLog:
         theta[i] = angle
     count = np.floor(theta / (2 * math.pi / 720)).astype(np.int64)
     omega = np.concatenate(([0.0], np.diff(count) * (2 * math.pi / 720) / np.diff(t)))
-    return StepLog(
+    return RunLog(
         t=t,
         u=u,
         omega=omega,

@@ -109,14 +109,14 @@ def _identify_synth(seeds: int) -> dict[str, Any]:
 
 
 def _identify_real(folder: Path) -> dict[str, Any]:
-    from minseg_tui.lab.saving.files import read_step_log
+    from minseg_tui.lab.saving.files import read_run_log
     from minseg_tui.model.identify import Reading, identify
-    from minseg_tui.model.steplog import command, find_edges
+    from minseg_tui.model.runlog import command, find_edges
 
     out: dict[str, Any] = {}
     paths = sorted(folder.glob("*/step.csv")) + sorted(folder.glob("probes/*.csv"))
     for path in paths:
-        log = read_step_log(path)
+        log = read_run_log(path)
         cmd, _ = command(log)
         levels = sorted({abs(e.after) for e in find_edges(cmd) if e.rising and e.after})
         t0 = time.process_time()
@@ -177,21 +177,21 @@ def _cli(runs: int) -> dict[str, Any]:
     sys.path.insert(0, str(ROOT / "benchmarks"))
     import identify_peers as peers
 
-    from minseg_tui.lab.saving.files import write_step_log
-    from minseg_tui.model.steplog import StepLog
+    from minseg_tui.lab.saving.files import write_run_log
+    from minseg_tui.model.runlog import RunLog
     from minseg_tui.model.synth import make_log
 
     env = dict(os.environ)
     out: dict[str, Any] = {}
     with tempfile.TemporaryDirectory() as d:
         step, table, log20 = Path(d) / "step.csv", Path(d) / "table.csv", Path(d) / "20s.csv"
-        write_step_log(step, peers.make("25ms", 1000, True, "grid").log)
+        write_run_log(step, peers.make("25ms", 1000, True, "grid").log)
         table.write_text(
             "u_req,u_ss,omega_ss,i_ss\n"
             + "".join(f"{r.u_req},{r.u_ss},{r.omega_ss},{r.i_ss}\n" for r in peers.TABLE)
         )
         g = make_log("coulomb_friction", seed=5)
-        write_step_log(log20, StepLog(t=g.t, u=g.u, omega=g.omega, extra={"count": g.count}))
+        write_run_log(log20, RunLog(t=g.t, u=g.u, omega=g.omega, extra={"count": g.count}))
         py = sys.executable
         cmds = {
             "identify": [py, "-m", "minseg_tui", "identify", str(table), "--R", "5.26"]

@@ -22,10 +22,10 @@ from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab.saving.files import write_step_log
+from minseg_tui.lab.saving.files import write_run_log
 from minseg_tui.model.check import check
 from minseg_tui.model.check.simulate import Effects, Stretches, pieces
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import CAUSES, PARAM_RANGES, make_log
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -73,7 +73,7 @@ def confusion(seeds: int) -> None:
 
 
 def _t63(t: np.ndarray, u: np.ndarray, y: np.ndarray) -> float:
-    """The manual's 63 % reading averaged over the rising steps: time from the edge until the
+    """The manual's 63 % reading averaged over the rises: time from the edge until the
     measured speed first reaches 63 % of the step's final value (linear interpolation)."""
     out = []
     edges = np.flatnonzero(np.diff(u) > 0) + 1
@@ -169,9 +169,7 @@ def timings(skip_hour: bool) -> None:
         for cause, also in TIMED:
             log = make_log(cause, seed=5, also=also)
             p = Path(d) / "20s.csv"
-            write_step_log(
-                p, StepLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count})
-            )
+            write_run_log(p, RunLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count}))
             wall, cpu = _cli_time(p, 7)
             name = cause + (f"+{also}" if also else "")
             print(
@@ -188,7 +186,7 @@ def timings(skip_hour: bool) -> None:
         r = check(big.t, big.u, big.omega)
         inproc = time.perf_counter() - t0
         p = Path(d) / "hour.csv"
-        write_step_log(p, StepLog(t=big.t, u=big.u, omega=big.omega, extra={"count": big.count}))
+        write_run_log(p, RunLog(t=big.t, u=big.u, omega=big.omega, extra={"count": big.count}))
         cli = _cli_time(p, 1)[0][0]
         print(
             f"one-hour log at 40 Hz ({big.t.size} rows; generated in {gen:.1f} s): check() "

@@ -79,6 +79,29 @@ this generator those logs already name small extra causes. On tuning seeds 1008
 (coulomb_friction) and 1017 (none), the same log with the hand's torque set to 0 names
 friction + a 0.43 ms pole and a 4.5 mV friction, before this change too. Those extra
 causes are the single and pair decisions' business, not the hand's.
+
+s25-check (held-out seeds, --seeds 5 --touch-seeds 5; ed6f341 -> 4b93dc1): no pole or dead
+time under a quarter of the sample period is named, nor a cause whose effect on the
+simulated speed, held over 9 samples, stays within what the noise leaves over as many; a
+delay-like cause of the chosen model is also fitted swapped for the other two, so a pair the
+search never fitted can be reported as fitting about as well. Pairs: right 74.7 -> 74.7 %,
+honestly ambiguous 13.3 -> 14.7 % (right or honestly ambiguous 88.0 -> 89.3 %), ambiguous
+in all 16.0 -> 17.3 %, confidently wrong 9.3 -> 8.0 %, untouched logs with a disturbance
+0 -> 0; CPU per log (check only) median 1.16 -> 1.05 s, max 7.82 -> 6.09 s (load average
+10-15 on two cores). A hand found with the cause kept 13 -> 14 of 20 (friction: 2 -> 3 of
+3). One effect or none, named alone with its parameters: friction 3 -> 5 of 5, average
+2 -> 3, dead time 4 -> 4 (seed 900502 named friction + a pole before, none now), the
+others unchanged. Still short of 90 % / 5 % / 90 %: what is left is an average or a cap
+that gains a spurious cap or friction beside it, a logger's filter of the speed column
+(T2 read about 36 % short), a pole on the driver with a coast or a cap (T2 or T off by
+more than the margin), and three-cause models that stand a delay and a pole in for an
+average. Restarting the whitened sums after the rows left out around a hand (tried together
+with the rules above) made a spurious cap clear beside an average on tuning seeds 1006 and
+1014 (two hand tests of test_check_independent failed): not kept. Comparing a cause's
+effect with the noise of one sample instead dropped those caps and the 5 mV friction of
+tuning seed 1017 too (41 touched tuning logs, seeds 1006-1017, with the restart: 30 -> 38
+right), but also the virtual MinSeg's real 0.12 V friction at 5 ms samples, which shows in
+the angle only (test_the_gain_survives_the_encoder_noise): not kept.
 """
 
 from __future__ import annotations

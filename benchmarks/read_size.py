@@ -1,7 +1,7 @@
-"""Reading large step logs and tables: rows per second and peak memory.
+"""Reading large run logs and tables: rows per second and peak memory.
 
 Each read runs in a fresh process (peak resident memory is per process), on files written
-here: session-style step logs (t,u,omega,u_req,omega_lab,theta,count,t_us,seq) of 100k,
+here: session-style run logs (t,u,omega,u_req,omega_lab,theta,count,t_us,seq) of 100k,
 1M and 2M rows (MAX_LOG_ROWS) and tables of 10M rows, which are refused at row
 MAX_TABLE_ROWS + 1. Prints one line per file: rows, file size, seconds, rows/s, peak
 resident memory and, for comparison, that of a process that only imports the reader.
@@ -23,13 +23,13 @@ from minseg_tui.lab.saving import files
 CHILD = """
 import json, resource, sys, time
 from minseg_tui.errors import InputError
-from minseg_tui.lab.saving.files import read_step_log, read_table
+from minseg_tui.lab.saving.files import read_run_log, read_table
 kind, path = sys.argv[1], sys.argv[2]
 t0 = time.perf_counter()
 rows, refused = 0, ""
 if kind != "none":
     try:
-        rows = len(read_step_log(path) if kind == "log" else read_table(path))
+        rows = len(read_run_log(path) if kind == "log" else read_table(path))
     except InputError as exc:
         refused = str(exc).split(": ", 1)[1]
 dt = time.perf_counter() - t0

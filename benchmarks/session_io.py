@@ -54,7 +54,7 @@ def main() -> None:
         t0 = time.perf_counter()
         s.finish_run(rec)
         print(
-            f"finish_run of {n} samples (step log written atomically): {(time.perf_counter() - t0) * 1e3:.0f} ms"
+            f"finish_run of {n} samples (run log written atomically): {(time.perf_counter() - t0) * 1e3:.0f} ms"
         )
         t0 = time.perf_counter()
         s.results()

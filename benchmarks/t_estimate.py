@@ -1,7 +1,7 @@
-"""Spread of the time constant T over many clean step logs, against the Cramer-Rao bound.
+"""Spread of the time constant T over many clean run logs, against the Cramer-Rao bound.
 
 Logs: the plant with the published MinSeg motor (T about 0.043 s), no dry friction, brake
-at zero command, Ts = 0.025 s, loop jitter up to 2 ms, 720-count encoder; 5 rising steps
+at zero command, Ts = 0.025 s, loop jitter up to 2 ms, 720-count encoder; 5 rises
 0 -> 4.5 V per log, each held 1 s. Every log is seeded.
 
 Estimators (minseg_tui.model.identify):
@@ -11,12 +11,12 @@ Estimators (minseg_tui.model.identify):
   of Task 14 to the whole log, every edge rising and falling, when the log follows it (these
   logs do: brake at zero command, no dry friction), so it uses about twice the data the bound
   below assumes and its spread may come out under it;
-- the manual's 63 % reading on the recorded Euler speed, median over the rising steps.
+- the manual's 63 % reading on the recorded Euler speed, median over the rises.
 
 Cramer-Rao bound. The measurement is the encoder angle theta_k = theta(t_k) + e_k, where
 e_k is the count's rounding (one count q = 2 pi / 720 rad wide, variance q^2 / 12 when the
 wheel moves); we treat e_k as white with the variance measured from the fits' residuals
-(the "measured noise level"; it comes out close to q^2/12). Around each rising step at t_e
+(the "measured noise level"; it comes out close to q^2/12). Around each rise at t_e
 the wheel is at rest (speed 0), and with tau = t - t_e >= 0
 
     theta(tau) = a_i + w_i (tau - T (1 - e^(-tau/T)))
@@ -45,10 +45,10 @@ import time
 
 import numpy as np
 
-from minseg_tui.model.identify import fit_time_constant, rising_steps
+from minseg_tui.model.identify import fit_time_constant, rises
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.signals import timestamp_velocity
 
 SEEDS = 300
@@ -86,7 +86,7 @@ def main() -> int:
     methods: list[str] = []
     for seed in range(SEEDS):
         rec = record(params, cmd, ts=TS, seed=seed, jitter_us=JITTER_US)
-        log = StepLog(
+        log = RunLog(
             t=rec.t,
             u=rec.u_A,
             omega=timestamp_velocity(rec.t, rec.count),
@@ -98,7 +98,7 @@ def main() -> int:
         sig.append(fit.sigma)
         inside.append(fit.ci[0] <= T_true <= fit.ci[1])
         methods.append(fit.method)
-        reads = [s.T_63 for s in rising_steps(log, fit) if s.T_63 is not None]
+        reads = [s.T_63 for s in rises(log, fit) if s.T_63 is not None]
         T_63.append(float(np.median(reads)))
         crb_unit.append(crb_T(rec.t, rec.u_req, T_true, w_inf, 1.0))
     elapsed = time.perf_counter() - started

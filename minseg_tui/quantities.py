@@ -347,25 +347,26 @@ def describe(unit: str) -> str:
 
 
 def example(unit: str) -> str:
-    """A typical entry for a field in ``unit``, for messages (e.g. ``47 mA``). Never the
-    virtual board's answer for Tasks 11-15 (omega, K, T, J): a refusal is no place to learn
-    it (1.9 rad/s/V was K within 3 %)."""
+    """A typical entry for a field in ``unit``, for messages (e.g. ``47 mA``): a value of the
+    magnitude the lab's motor gives, but never within a factor 1.5 of the virtual board's
+    answer for Tasks 6-15 (k_v, k_a, f, omega, K, T, J): a refusal is no place to learn it
+    (1.9 rad/s/V was K within 3 %, 0.32 N m/A was k_a)."""
     samples = {
         "V": "4.1 V",
         "mV": "4100 mV",
         "A": "0.047 A",
         "mA": "47 mA",
         "Ω": "5.2 Ω",
-        "rad/s": "31.4 rad/s",
-        "s": "0.25 s",
-        "ms": "250 ms",
+        "rad/s": "4.6 rad/s",
+        "s": "0.12 s",
+        "ms": "120 ms",
         "min": "3.5 min",
-        "rad/s/V": "12.5 rad/s/V",
-        "V s/rad": "0.5 V s/rad",
-        "N m/A": "0.32 N m/A",
-        "N m s/rad": "0.0006 N m s/rad",
-        "mN m s/rad": "2.2 mN m s/rad",
-        "kg m^2": "0.00004 kg m^2",
+        "rad/s/V": "1.2 rad/s/V",
+        "V s/rad": "0.3 V s/rad",
+        "N m/A": "0.2 N m/A",
+        "N m s/rad": "0.0045 N m s/rad",
+        "mN m s/rad": "4.5 mN m s/rad",
+        "kg m^2": "0.0008 kg m^2",
         "°C": "250 °C",
         "°C/W": "0.25 °C/W",
         "%": "50 %",

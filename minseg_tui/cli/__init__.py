@@ -25,11 +25,11 @@ from minseg_tui.errors import InputError, MinsegError
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "identify": (
         "minseg_tui.cli.identify",
-        "Tasks 6-15 from a table of steady-state readings (and a step log)",
+        "Tasks 6-15 from a table of steady-state readings (and a run log)",
     ),
     "analyze": (
         "minseg_tui.cli.analyze",
-        "model check: what the first-order model gets wrong in a step log",
+        "model check: what the first-order model gets wrong in a run log",
     ),
     "ports": ("minseg_tui.cli.ports", "list serial ports and say which looks like a MinSeg"),
     "sim": ("minseg_tui.cli.sim", "run a virtual MinSeg on a pseudo-terminal"),

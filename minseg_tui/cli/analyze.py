@@ -1,10 +1,10 @@
-"""`minseg-tui analyze LOG.csv [--json] [--predictions OUT.csv]`: the model check of a step log.
+"""`minseg-tui analyze LOG.csv [--json] [--predictions OUT.csv]`: the model check of a run log.
 
 Fits the first-order model, simulates it on the measured input, says where it deviates,
 names the causes and their evidence, fits the extended model and measures the gain. The
 log's header lines ``# ts:``, ``# cpr:`` and ``# omega_over:`` tell it the nominal period,
 the encoder's resolution and how the speed was computed (else they are read off the data).
-Bad input exits 2 with one line (from read_step_log).
+Bad input exits 2 with one line (from read_run_log).
 """
 
 from __future__ import annotations
@@ -15,16 +15,16 @@ import math
 
 from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.check import CheckResult, check, text
 from minseg_tui.model.check.effects import in_words
-from minseg_tui.model.steplog import problem
+from minseg_tui.model.runlog import problem
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The subcommand's arguments."""
     parser.add_argument(
-        "log", metavar="LOG.csv", help="step log: columns t (s), u (V), omega (rad/s)"
+        "log", metavar="LOG.csv", help="run log: columns t (s), u (V), omega (rad/s)"
     )
     parser.add_argument(
         "--json", action="store_true", help="print one JSON object instead of the report"
@@ -82,7 +82,7 @@ def run(args: argparse.Namespace) -> int:
     """Analyse the log; 0 on success (InputError propagates: exit 2 with one line)."""
     if args.predictions is not None:
         output_file(args.predictions, {args.log: "the log being analysed"}, "predictions")
-    log = read_step_log(args.log)
+    log = read_run_log(args.log)
     ts = _sample_period(dict(log.metadata))
     refused = problem(log.t, log.u, log.omega, ts)
     if refused:

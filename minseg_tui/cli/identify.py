@@ -9,7 +9,7 @@ import textwrap
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab.saving.files import read_step_log, read_table
+from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import Identification, identify, u_ss_words
 from minseg_tui.quantities import (
     NO_WIDTH,
@@ -49,7 +49,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--step",
         metavar="LOG.csv",
-        help="step log (t,u,omega,...) for K, T, J and the model (Tasks 11-15)",
+        help="run log (t,u,omega,...) for K, T, J and the model (Tasks 11-15)",
     )
     parser.add_argument(
         "--json", action="store_true", help="print one JSON object instead of the report"
@@ -59,16 +59,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Read the files, compute, print. InputError reaches the dispatcher (exit 2)."""
     if args.step == "":
-        raise InputError("--step", None, "expected a step log file name, got ''")
+        raise InputError("--step", None, "expected a run log file name, got ''")
     readings = read_table(args.table)
-    log = read_step_log(args.step) if args.step is not None else None
+    log = read_run_log(args.step) if args.step is not None else None
     try:
         result = identify(readings, args.R, log, source=args.table)
     except (ArithmeticError, ValueError) as exc:  # numpy's LinAlgError is a ValueError
         raise InputError(
             args.step or args.table,
             None,
-            f"expected a step log whose rising steps can be fitted; the fit failed ({exc})",
+            f"expected a run log whose rising steps can be fitted; the fit failed ({exc})",
         ) from None
     if args.json:
         print_json(result.to_json())
@@ -143,7 +143,7 @@ def render(result: Identification) -> str:
             )
         out += [
             "",
-            f"Step log: {len(s.steps)} rising step(s); angle from {fit.angle_source}, time from {fit.time_source}",
+            f"Run log: {len(s.rises)} rising step(s); angle from {fit.angle_source}, time from {fit.time_source}",
             f"omega_ss = {_g(s.omega_ss)} rad/s (fitted), u_ss = {_read(s.u_ss) if s.u_ss_how == 'row' else _g(s.u_ss)} V ({how})",
             f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V "
             + (
@@ -172,6 +172,6 @@ def render(result: Identification) -> str:
         out.append(
             "- nothing unusual: the rows agree and the step fits the model."
             if s is not None
-            else "- nothing unusual: the rows agree (no step log, so no step to judge)."
+            else "- nothing unusual: the rows agree (no run log, so no step to judge)."
         )
     return "\n".join(out) + "\n"

@@ -17,7 +17,7 @@ it except in :meth:`Link.command`, which waits (with a timeout) for the board's 
   +1 and t_us continues by the host's estimate of the gap (the one place the host clock
   enters the time base); the encoder count restarts at 0 with the board.
 - Events (:class:`LinkEvent`) say what happened: connected, disconnected, silent, alive,
-  watchdog, step, stepdone, boot, error. Take them with :meth:`Link.events`, or pass
+  watchdog, edge, square_wave_done, boot, error. Take them with :meth:`Link.events`, or pass
   ``on_event`` to hear them at once (called from the reader thread: keep it short).
 - A pulled cable (OSError/SerialException) gives a ``disconnected`` event at once; the
   samples already received stay; the link reopens the same path (or the same USB
@@ -62,8 +62,8 @@ EVENT_KINDS = (
     "silent",
     "alive",
     "watchdog",
-    "step",
-    "stepdone",
+    "edge",
+    "square_wave_done",
     "boot",
     "error",
     "motor",
@@ -168,8 +168,8 @@ class Link:
         self._events: deque[LinkEvent] = deque(maxlen=10000)
         self._waiters: deque[_Waiter] = deque()
         self._restore: dict[str, str] = {}
-        self._u_req: float | None = 0.0  # V as the host knows it; None: a step sequence runs
-        self._step_low = 0.0  # V, where a step sequence ends
+        self._u_req: float | None = 0.0  # V as the host knows it; None: a square wave runs
+        self._square_wave_low = 0.0  # V, where a square wave ends
         self._closing = threading.Event()
         self._thread: threading.Thread | None = None
         self._clock: Callable[[], float] = time.monotonic
@@ -375,7 +375,7 @@ class Link:
         if ok.command == "V" and ok.values:
             self._u_req = int(ok.values[0]) / 1000.0
         elif ok.command == "STEP" and ok.values:
-            self._u_req, self._step_low = None, int(ok.values[0]) / 1000.0
+            self._u_req, self._square_wave_low = None, int(ok.values[0]) / 1000.0
         elif ok.command == "STOP":
             self._u_req = 0.0
         elif ok.command == "Z":
@@ -389,7 +389,7 @@ class Link:
     def u_req(self) -> float | None:
         """The voltage (V) the motor is requested at, as far as the link knows: what the last
         V asked for, 0 after STOP, the board's watchdog or a restart (a reconnect restores
-        no voltage), None while a board-timed step sequence runs."""
+        no voltage), None while a board-timed square wave runs."""
         return self._u_req
 
     def _motor_off(self, why: str) -> None:
@@ -398,7 +398,7 @@ class Link:
         was, self._u_req = self._u_req, 0.0
         if was == 0.0:
             return
-        before = "running a step sequence" if was is None else f"at {was:g} V"
+        before = "running a square wave" if was is None else f"at {was:g} V"
         self._emit(
             "motor",
             f"{why}: the motor is off (it was {before}); nothing is restored, "
@@ -430,14 +430,14 @@ class Link:
         """Request u (V) from the next sample on; returns the voltage applied (clamped), V."""
         return int(self._ok(P.SetVoltage(round(u * 1000))).values[0]) / 1000.0
 
-    def step(self, low: float, high: float, half_period: float, periods: int) -> P.Ok:
+    def square_wave(self, low: float, high: float, half_period: float, periods: int) -> P.Ok:
         """Board-timed square wave: levels in V, half period in s, number of periods."""
         return self._ok(
             P.SquareWave(round(low * 1000), round(high * 1000), round(half_period * 1000), periods)
         )
 
     def stop(self) -> P.Ok:
-        """Zero command, abort a step sequence."""
+        """Zero command, abort a square wave."""
         return self._ok(P.Stop())
 
     def set_period(self, ts: float) -> float:
@@ -568,11 +568,11 @@ class Link:
         elif isinstance(msg, P.EvWatchdog):
             self._u_req = 0.0
             self._emit("watchdog", "the board's watchdog stopped the motor (host silent > 1 s)")
-        elif isinstance(msg, P.EvStep):
-            self._emit("step", f"step edge {msg.k} of {msg.n}")
-        elif isinstance(msg, P.EvStepDone):
-            self._u_req = self._step_low
-            self._emit("stepdone", "step sequence done")
+        elif isinstance(msg, P.EvSquareWaveEdge):
+            self._emit("edge", f"square wave edge {msg.k} of {msg.n}")
+        elif isinstance(msg, P.EvSquareWaveDone):
+            self._u_req = self._square_wave_low
+            self._emit("square_wave_done", "square wave done")
         elif isinstance(msg, P.Boot):  # said once the samples show it (timebase.boot)
             self._boot_fw = msg.fw
             self._timeline.boot()

@@ -231,16 +231,16 @@ class EvWatchdog:
 
 
 @dataclass(frozen=True)
-class EvStep:
-    """$EV,STEP: a step sequence reached edge k of n."""
+class EvSquareWaveEdge:
+    """$EV,STEP: a square wave reached edge k of n."""
 
     k: int
     n: int
 
 
 @dataclass(frozen=True)
-class EvStepDone:
-    """$EV,STEPDONE: the step sequence finished; the motor is at the low level."""
+class EvSquareWaveDone:
+    """$EV,STEPDONE: the square wave finished; the motor is at the low level."""
 
 
 @dataclass(frozen=True)
@@ -265,7 +265,7 @@ class Ping:
 
 @dataclass(frozen=True)
 class SetVoltage:
-    """V: requested voltage in mV (aborts a step sequence)."""
+    """V: requested voltage in mV (aborts a square wave)."""
 
     mV: int
 
@@ -282,7 +282,7 @@ class SquareWave:
 
 @dataclass(frozen=True)
 class Stop:
-    """STOP: zero command, abort the step sequence."""
+    """STOP: zero command, abort the square wave."""
 
 
 @dataclass(frozen=True)
@@ -344,8 +344,8 @@ Message = (
     | Ok
     | Err
     | EvWatchdog
-    | EvStep
-    | EvStepDone
+    | EvSquareWaveEdge
+    | EvSquareWaveDone
     | Meter
     | Diag
     | Identify
@@ -391,8 +391,8 @@ LINES: tuple[LineKind, ...] = (
     LineKind("OK", None, "board", Ok, ("name", "text*")),
     LineKind("ERR", None, "board", Err, ("err", "text?")),
     LineKind("EV", "WDOG", "board", EvWatchdog, ()),
-    LineKind("EV", "STEP", "board", EvStep, ("int", "int")),
-    LineKind("EV", "STEPDONE", "board", EvStepDone, ()),
+    LineKind("EV", "STEP", "board", EvSquareWaveEdge, ("int", "int")),
+    LineKind("EV", "STEPDONE", "board", EvSquareWaveDone, ()),
     LineKind("METER", None, "board", Meter, ("int", "int", "int")),
     LineKind("DIAG", None, "board", Diag, ("text", "text", "conn*")),
     LineKind("ID", None, "host", Identify, ()),

@@ -1,6 +1,6 @@
-"""Waiting for the wheel to stand before a step run (Task 10).
+"""Waiting for the wheel to stand before a square-wave run (Task 10).
 
-A step run that starts with the wheel still turning (the motor was at 4.5 V a moment
+A square-wave run that starts with the wheel still turning (the motor was at 4.5 V a moment
 before, in Task 4) has a first step that starts from speed, and the model check finds an
 early step where there is none. So the motor is stopped first, the run waits until the
 encoder count has not moved for :data:`STILL_FOR` s of board time, and the recording takes

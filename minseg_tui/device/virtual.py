@@ -13,7 +13,7 @@ simavr, this board in tests/device/test_conformance.py). Written down:
 
 - ``V`` takes effect at the next sample instant, so the ``u_mV`` of every ``$S`` line is
   exactly the command in force from that sample on. ``STOP``, the watchdog and ``P``
-  during a step sequence stop the motor at once; the next ``$S`` shows 0.
+  during a square wave stop the motor at once; the next ``$S`` shows 0.
 - ``STEP`` starts at the next sample instant with edge 1 (high); each half period is
   ``half_ms / period`` samples rounded to nearest, halves up (at least 1), so every edge
   falls on a sample, and ``$OK,STEP`` reports the half period so used.
@@ -24,7 +24,7 @@ simavr, this board in tests/device/test_conformance.py). Written down:
 - The first sample comes one sample period after ``$BOOT``; ``seq`` advances only while
   streaming.
 - ``$EV,WDOG`` is sent once per silence, and only when there was something to stop
-  (a non-zero command or a step sequence).
+  (a non-zero command or a square wave).
 - The shortest sample period is 1000 us here (the real board's floor is 2000 us).
 - Duty = |u| / V_supply (the ``SUP`` setting, clamped to 1); the bridge then puts
   duty x the true supply (``PlantParams.v_supply``) into the driver model, so a wrong
@@ -254,7 +254,7 @@ def settings_from(values: Mapping[str, str | float | int | bool]) -> VirtualSett
 
 # -- the board --------------------------------------------------------------------------
 @dataclass
-class _StepSeq:
+class _SquareWaveRun:
     low: int
     high: int
     half: int  # samples per half period
@@ -310,7 +310,7 @@ class VirtualBoard:
             self.stream = True
             self.u_mV = 0
             self._pending_mV: int | None = None
-            self._step: _StepSeq | None = None
+            self._square_wave: _SquareWaveRun | None = None
             self._seq = s.seq0 & 0xFFFFFFFF
             self._count_base = 0  # the count when the reference below was taken
             self._raw_ref = self._raw_count()
@@ -354,7 +354,7 @@ class VirtualBoard:
 
     def _watchdog_armed(self) -> bool:
         return not self._wdog_fired and (
-            self.u_mV != 0 or self._step is not None or bool(self._pending_mV)
+            self.u_mV != 0 or self._square_wave is not None or bool(self._pending_mV)
         )
 
     def run_until(self, t: float, stop_on_output: bool = False) -> None:
@@ -450,7 +450,7 @@ class VirtualBoard:
             return
         if self._watchdog_armed() and now >= self._last_host + WATCHDOG_S:
             self._wdog_fired = True
-            self._step = None
+            self._square_wave = None
             self._pending_mV = None
             self.u_mV = 0
             self._drive(0)
@@ -463,20 +463,20 @@ class VirtualBoard:
         count = self._connector_count() if self.active else 0
         count = ((count + 2**31) & 0xFFFFFFFF) - 2**31
         events: list[P.Message] = []
-        step = self._step
-        if step is not None:
-            if step.i == 2 * step.n * step.half:
-                self.u_mV = step.low
-                self._step = None
-                events.append(P.EvStepDone())
-            elif step.i % step.half == 0:
-                edge = step.i // step.half
+        wave = self._square_wave
+        if wave is not None:
+            if wave.i == 2 * wave.n * wave.half:
+                self.u_mV = wave.low
+                self._square_wave = None
+                events.append(P.EvSquareWaveDone())
+            elif wave.i % wave.half == 0:
+                edge = wave.i // wave.half
                 if edge % 2 == 0:
-                    self.u_mV = step.high
-                    events.append(P.EvStep(edge // 2 + 1, step.n))
+                    self.u_mV = wave.high
+                    events.append(P.EvSquareWaveEdge(edge // 2 + 1, wave.n))
                 else:
-                    self.u_mV = step.low
-            step.i += 1
+                    self.u_mV = wave.low
+            wave.i += 1
         elif self._pending_mV is not None:
             self.u_mV = self._pending_mV
             self._pending_mV = None
@@ -580,7 +580,7 @@ class VirtualBoard:
             return  # an empty line: no reply
         try:
             cmd = P.parse_command(raw)
-            if isinstance(cmd, P.SquareWave | P.SetDirection) and self._step is not None:
+            if isinstance(cmd, P.SquareWave | P.SetDirection) and self._square_wave is not None:
                 raise P.ProtocolError("BUSY")
         except P.ProtocolError as exc:
             detail = "" if exc.code in ("CHECKSUM", "BUSY") else exc.detail
@@ -593,12 +593,12 @@ class VirtualBoard:
         self._emit(reply)
         self.changed.notify_all()
 
-    def _abort_step(self) -> None:
-        self._step = None
+    def _abort_square_wave(self) -> None:
+        self._square_wave = None
 
     def _stop_now(self) -> None:
-        """Zero command at once: no step sequence, nothing pending, the bridge off."""
-        self._step = None
+        """Zero command at once: no square wave, nothing pending, the bridge off."""
+        self._square_wave = None
         self._pending_mV = None
         self.u_mV = 0
         self._drive(0)
@@ -621,11 +621,11 @@ class VirtualBoard:
 
     def _cmd_v(self, c: P.SetVoltage) -> P.Message:
         mv = _clamp(c.mV, -self.sup_mV, self.sup_mV)
-        self._abort_step()
+        self._abort_square_wave()
         self._pending_mV = mv
         return P.Ok("V", (str(mv),))
 
-    def _cmd_step(self, c: P.SquareWave) -> P.Message:
+    def _cmd_square_wave(self, c: P.SquareWave) -> P.Message:
         lo = _clamp(c.low_mV, -self.sup_mV, self.sup_mV)
         hi = _clamp(c.high_mV, -self.sup_mV, self.sup_mV)
         half = _clamp(c.half_ms, *HALF_LIMITS_MS)
@@ -633,7 +633,7 @@ class VirtualBoard:
         # whole sample periods, nearest with halves up, at least one (as the firmware)
         samples = max(1, (half * 1000 + self.period_us // 2) // self.period_us)
         self._pending_mV = None
-        self._step = _StepSeq(lo, hi, samples, n)
+        self._square_wave = _SquareWaveRun(lo, hi, samples, n)
         used_ms = samples * self.period_us // 1000
         return P.Ok("STEP", (str(lo), str(hi), str(used_ms), str(n)))
 
@@ -644,8 +644,8 @@ class VirtualBoard:
     def _cmd_p(self, c: P.SetPeriod) -> P.Message:
         clamped = _clamp(c.period_us, *PERIOD_LIMITS_US)
         us = (clamped + 500) // 1000 * 1000  # the nearest 1000 us, halves up
-        if self._step is not None:
-            self._stop_now()  # P aborts a step sequence and sets the command to 0
+        if self._square_wave is not None:
+            self._stop_now()  # P aborts a square wave and sets the command to 0
         last = self._next_nominal - self.period_us * 1e-6
         self.period_us = us
         self._next_nominal = max(last + us * 1e-6, self.now)
@@ -672,9 +672,9 @@ class VirtualBoard:
         self.u_mV = _clamp(self.u_mV, -lim, lim)  # what is in force and what will be
         if self._pending_mV is not None:
             self._pending_mV = _clamp(self._pending_mV, -lim, lim)
-        if self._step is not None:
-            self._step.low = _clamp(self._step.low, -lim, lim)
-            self._step.high = _clamp(self._step.high, -lim, lim)
+        if self._square_wave is not None:
+            self._square_wave.low = _clamp(self._square_wave.low, -lim, lim)
+            self._square_wave.high = _clamp(self._square_wave.high, -lim, lim)
         self._drive(self.u_mV)
         return P.Ok("SUP", (str(self.sup_mV),))
 
@@ -695,7 +695,7 @@ class VirtualBoard:
         P.Identify: _cmd_id,  # type: ignore[dict-item]
         P.Ping: _cmd_ping,  # type: ignore[dict-item]
         P.SetVoltage: _cmd_v,  # type: ignore[dict-item]
-        P.SquareWave: _cmd_step,  # type: ignore[dict-item]
+        P.SquareWave: _cmd_square_wave,  # type: ignore[dict-item]
         P.Stop: _cmd_stop,  # type: ignore[dict-item]
         P.SetPeriod: _cmd_p,  # type: ignore[dict-item]
         P.Zero: _cmd_z,  # type: ignore[dict-item]
@@ -713,7 +713,7 @@ class VirtualBoard:
         with self.lock:
             self.plugged = False
             self.powered = False
-            self._step = None
+            self._square_wave = None
             self._pending_mV = None
             self.u_mV = 0
             self._drive(0)

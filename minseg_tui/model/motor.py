@@ -24,8 +24,8 @@ class FirstOrder:
         """Final speed in rad/s for a constant input u (V)."""
         return self.K * u
 
-    def step(self, t: float, amplitude: float, y0: float = 0.0) -> float:
-        """Speed in rad/s at time t (s) after a step of ``amplitude`` V from speed y0."""
+    def edge_response(self, t: float, amplitude: float, y0: float = 0.0) -> float:
+        """Speed in rad/s at time t (s) after an input edge of ``amplitude`` V from speed y0."""
         if t <= 0.0:
             return y0
         y_inf = self.K * amplitude

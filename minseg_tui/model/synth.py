@@ -1,4 +1,4 @@
-"""Realistic step logs with hidden effects, for tests, benchmarks and a practice mode.
+"""Realistic run logs with hidden effects, for tests, benchmarks and a practice mode.
 
 A log is what a MinSeg board records while a square wave of requested voltages drives
 the motor: Ts = 0.025 s, the encoder's integer counts (720 per revolution), loop jitter
@@ -38,7 +38,7 @@ from numpy.typing import NDArray
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import Plant, PlantParams, Touch, record
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 
 TS = 0.025
 """The board's sample period, s."""
@@ -58,7 +58,7 @@ CAUSES: tuple[str, ...] = ("none", *PARAM_RANGES)
 
 @dataclass(frozen=True)
 class SynthLog:
-    """A generated step log and the truth behind it.
+    """A generated run log and the truth behind it.
 
     t: board time, s; u: voltage applied to the motor (u_A as the board reports it), V;
     omega: measured speed, rad/s; count: encoder counts; u_req: requested voltage, V;
@@ -310,7 +310,7 @@ class IdentLog:
     """A first-order log for the identification and its truth: T (s) and K (rad/s per V
     of u_A), the plant it came from."""
 
-    log: StepLog
+    log: RunLog
     T: float
     K: float
     params: PlantParams
@@ -338,7 +338,7 @@ def identification_log(
 ) -> IdentLog:
     """A seeded log as issue 11's side-by-side measures: the published MinSeg with T drawn
     from ``T_range`` (s, through J), no dry friction, braking at zero; 0.2 s at rest, then
-    4 rising steps of 5 T to a level from IDENT_LEVELS and back to 0; the loop late by
+    4 rises of 5 T to a level from IDENT_LEVELS and back to 0; the loop late by
     0-``late_us`` us, the command on the board's grid (``on_grid``) or right after the late
     read; the encoder starting anywhere within a count; the Euler speed over the nominal
     ``ts``. ``stamped``: t is the read instants and the log has t_us; else t = k ts."""
@@ -358,7 +358,7 @@ def identification_log(
     if stamped:
         extra["t_us"] = rec.t_us
     t = rec.t if stamped else np.arange(cmd.size, dtype=np.float64) * ts
-    log = StepLog(t=t, u=rec.u_A, omega=omega, extra=extra, source="synth")
+    log = RunLog(t=t, u=rec.u_A, omega=omega, extra=extra, source="synth")
     return IdentLog(log, T, motor.K, params)
 
 

@@ -15,17 +15,15 @@ import numpy as np
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
-from minseg_tui.lab.state.compare import ANSWERED_FIRST, format_diff
 from minseg_tui.lab.state.session import Session
-from minseg_tui.lab.views import check_words
-from minseg_tui.lab.views.session import rise_zoom
+from minseg_tui.lab.views import check_words, own_first
+from minseg_tui.lab.views.session import policy, rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
-from minseg_tui.model.identify import RisingStep, StepResult, u_ss_words
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.identify import ResponseResult, Rise
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
-    NOT_DETERMINED,
     format_interval,
     format_number,
     format_quantity,
@@ -99,9 +97,17 @@ def _num(value: float | None, digits: int = DIGITS) -> str:
     return "–" if value is None or not math.isfinite(value) else format_number(value, digits)
 
 
-def _reading(value: float | None, unit: str) -> str:
-    """What the group typed, captured or read off the meter, with the digits it has."""
-    return "–" if value is None or not math.isfinite(value) else format_reading(value, unit)
+def _reading(value: float | None, unit: str, missing: str = "–") -> str:
+    """What the group typed, captured or read off the meter, with the digits it has
+    (``missing`` when there is none)."""
+    return missing if value is None or not math.isfinite(value) else format_reading(value, unit)
+
+
+NOT_ENTERED = "not entered"
+"""A reading of the table the group has not entered."""
+
+NOT_COMPUTED = "not computed: the row is incomplete"
+"""k_v or f of a row without all three readings (or without R)."""
 
 
 def _verdicts(session: Session) -> dict[str, lab_steps.Feedback]:
@@ -126,15 +132,13 @@ def _answers(session: Session, part: str) -> Section:
                 shown = e.text if e else ""
             fb = verdicts.get(fld.key)
             verdict = (
-                ""
+                "not checked"
                 if fb is None
                 else {"right": "✓ ", "wrong": "✗ ", "missing": ""}[fb.status] + fb.message
             )
             if e is not None and not e.ok:
                 verdict = f"refused: {e.message}"
-            rows.append(
-                (st.title if fld.kind != "choice" else "", fld.label, shown.strip() or "–", verdict)
-            )
+            rows.append((st.title, fld.label, shown.strip() or own_first.NOT_ANSWERED, verdict))
     title = "Preparation" if part == "Preparation" else "Summary and reflections"
     return Section(title, [Table(("step", "question", "answer", "feedback"), tuple(rows))])
 
@@ -168,7 +172,7 @@ def _table_section(session: Session) -> Section:
     res = session.results()
     rows = []
     for r in session.table():
-        omega = _reading(r.omega_ss, "rad/s")
+        omega = _reading(r.omega_ss, "rad/s", NOT_ENTERED)
         if r.spread is not None and r.omega_ss is not None:
             omega += f" {format_spread(r.spread)}"
         window = (
@@ -176,21 +180,25 @@ def _table_section(session: Session) -> Section:
             if r.window
             else "typed"
             if r.omega_ss is not None
-            else "–"
+            else "no capture"
         )
         rows.append(
             (
                 f"{r.level:g} V",
-                _reading(r.u_ss, "V"),
+                _reading(r.u_ss, "V", NOT_ENTERED),
                 omega,
                 window,
-                _reading(r.i_ss, "mA"),
-                _num(r.k_v),
-                _num(r.f),
+                _reading(r.i_ss, "mA", NOT_ENTERED),
+                NOT_COMPUTED if r.k_v is None else _q(r.k_v, "V s/rad"),
+                NOT_COMPUTED if r.f is None else _q(r.f, _F_UNIT),
             )
         )
     sec = Section("Steady state (Tasks 2 and 4-9)")
-    sec.blocks.append(f"R = {_reading(session.value('R'), 'Ω')} (Task 2).")
+    sec.blocks.append(f"R = {_reading(session.value('R'), 'Ω', NOT_ENTERED)} (Task 2).")
+    sec.blocks.append(
+        "The group's readings (Tasks 4-5) and, in the last two columns, k_v and f that the "
+        "program computed from them for each row (Tasks 6 and 9):"
+    )
     sec.blocks.append(
         Table(
             (
@@ -199,128 +207,53 @@ def _table_section(session: Session) -> Section:
                 "omega_ss (± spread)",
                 "capture window",
                 "i_ss",
-                "k_v (V s/rad)",
-                "f (N m s/rad)",
+                "k_v, computed (Task 6)",
+                "f, computed (Task 9)",
             ),
             tuple(rows),
         )
     )
-    ident = res.identification
-    if ident is not None:
+    if res.identification is not None:
+        sec.blocks.append("The motor constants, the group's own value first:")
         sec.blocks.append(
-            [
-                f"k_v = {_num(ident.k_v)} V s/rad (median of the rows, Task 7)",
-                f"k_a = 0.65 k_v = {_num(ident.k_a)} N m/A (Task 8)",
-                f"f = {_num(ident.f)} N m s/rad (median of the rows, Task 9)",
-            ]
+            Table(own_first.TABLE_HEADER, tuple(r.cells for r in own_first.table_rows(session)))
         )
     return sec
 
 
-def _u_ss_how(s: StepResult) -> str:
-    return u_ss_words(s.u_ss_how, [x.u_req for x in s.steps if x.u_req])
+_F_UNIT = lab_steps.FIELDS["own.f"].unit
+"""f in the unit the group types it in (Task 9's entry)."""
 
 
 def _step_section(session: Session) -> Section:
     res = session.results()
     sec = Section("Step response and model (Tasks 10-15)")
+    sec.blocks.append(own_first.run_used(session))
     ident = res.identification
     if ident is None or ident.step is None:
         sec.blocks.append(
             "No step result yet" + (": " + "; ".join(res.problems) if res.problems else ".")
         )
-    else:
-        s = ident.step
-        t63 = "–" if s.T_63 is None else f"{_num(s.T_63)} s"
-        sec.blocks.append(f"From run {res.run}:")
-        sec.blocks.append(
-            Table(
-                ("quantity", "value"),
-                (
-                    ("omega_ss in the steps", f"{_num(s.omega_ss)} rad/s"),
-                    ("u_ss used for K", f"{_num(s.u_ss)} V ({_u_ss_how(s)})"),
-                    (
-                        "K (Task 11, 95 % interval)",
-                        f"{_num(s.K)} rad/s/V "
-                        f"({format_interval(*s.K_ci, 'rad/s/V') if s.K_determined else NOT_DETERMINED})",
-                    ),
-                    ("T, 63 % reading (Task 12)", t63),
-                    (
-                        "T, least squares (95 % interval)",
-                        f"{_num(s.T)} s ({format_interval(*s.T_ci, 's') if s.T_determined else NOT_DETERMINED})",
-                    ),
-                    ("J (Task 13)", f"{_num(s.J)} kg m^2"),
-                    ("model (Task 14)", s.model_equation(_num)),
-                    ("omega at u_A = 5 V (Task 15)", f"{_num(ident.omega_at_5V)} rad/s"),
-                ),
-            )
-        )
-        if s.T_63_note:
-            sec.blocks.append(s.T_63_note)
-        sec.blocks.append(f"How T was fitted: {s.fit.why}.")
-        zoom = _zoom_figure(session, res.run, s)
-        if zoom is not None:
-            sec.blocks.append(zoom)
-    comps = session.comparisons()
-    if any(c.own is not None or c.revealed_early for c in comps):
-        rows = []
-        notes = []
-        for c in comps:
-            if c.own is None and not c.revealed_early:
-                continue
-            own = (
-                "–"
-                if c.own is None
-                else c.own
-                if isinstance(c.own, str)
-                else _reading(c.own, c.unit)
-            )
-            comp = (
-                c.computed
-                if isinstance(c.computed, str) or c.computed is None
-                else _q(c.computed, c.unit)
-            )
-            if c.how:
-                comp = f"{comp} ({c.how})"
-            lsq = (
-                ""
-                if c.least_squares is None
-                else c.least_squares
-                if isinstance(c.least_squares, str)
-                else _q(c.least_squares, c.unit)
-            )
-            diff = (
-                ("✓ " if c.right else "✗ ") + c.verdict
-                if c.verdict
-                else ""
-                if c.rel_diff is None
-                else format_diff(c.rel_diff)
-            )
-            shown = (
-                "revealed before answering"
-                if c.revealed_early
-                else "after answering"
-                if c.key in ANSWERED_FIRST
-                else ""
-            )
-            rows.append((c.label, own, comp or "–", diff, lsq or "–", shown))
-            if lsq and c.why:
-                notes.append(f"{c.label}: {c.why}")
-        sec.blocks.append(
-            "The group's own readings beside the values computed their way (J from their "
-            "own T, K from their omega_ss and u_ss, ...), with the least-squares value:"
-        )
-        sec.blocks.append(
-            Table(
-                ("reading", "yours", "computed your way", "difference", "least squares", "shown"),
-                tuple(rows),
-            )
-        )
-        sec.blocks.extend(notes)
+        return sec
+    s = ident.step
+    rows = own_first.step_rows(session)
+    sec.blocks.append(
+        "Each value the group worked out, first as the group gave it, then computed the "
+        "group's way (J from their own T, K from their omega_ss and u_ss, ...), then the "
+        "program's least-squares value:"
+    )
+    sec.blocks.append(Table(own_first.STEP_HEADER, tuple(r.cells for r in rows)))
+    sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
+    if s.T_63_note:
+        sec.blocks.append(s.T_63_note)
+    sec.blocks.append(f"How T was fitted: {s.fit.why}.")
+    zoom = _zoom_figure(session, res.run, s)
+    if zoom is not None:
+        sec.blocks.append(zoom)
     return sec
 
 
-def _read_step(steps: tuple[RisingStep, ...], T_63: float | None) -> RisingStep:
+def _read_step(steps: tuple[Rise, ...], T_63: float | None) -> Rise:
     """The step whose 63 % reading is nearest the median reading (the first without one)."""
     read = [x for x in steps if x.T_63 is not None]
     if not read or T_63 is None:
@@ -328,17 +261,17 @@ def _read_step(steps: tuple[RisingStep, ...], T_63: float | None) -> RisingStep:
     return min(read, key=lambda x: abs((x.T_63 or 0.0) - T_63))
 
 
-def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | None:
+def _zoom_figure(session: Session, run: str | None, s: ResponseResult) -> Figure | None:
     """Tasks 11-12 on one rise: the samples from a little before the edge to several T
     after it, the speed before and the settled speed, the 63 % level and the time the
     samples (joined by straight lines, as the manual reads them) cross it."""
-    if run is None or not s.steps:
+    if run is None or not s.rises:
         return None
     try:
         log = session.load_run(run)
     except (InputError, KeyError):
         return None
-    st = _read_step(s.steps, s.T_63)
+    st = _read_step(s.rises, s.T_63)
     t = np.asarray(log.t, dtype=float)
     w = np.asarray(log.omega, dtype=float)
     zoom = rise_zoom(st, s.T, log.ts)  # the same window as the TUI's zoom
@@ -362,7 +295,7 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     svg = plot(
         [Line("omega, measured samples", t[sel], w[sel], dots=True)],
         marks=marks,
-        title=f"run {run}: the rise at t = {_num(st.t)} s, read as in Tasks 11-12",
+        title=f"run {run}: the rise at t = {_num(st.t)} s, read by the program as in Tasks 11-12",
         xlabel="t (s)",
         ylabel="omega (rad/s)",
         width=640,
@@ -370,14 +303,15 @@ def _zoom_figure(session: Session, run: str | None, s: StepResult) -> Figure | N
     )
     crossed = (
         f"it crosses the 63 % level {_num(st.T_63 * 1e3)} ms after the step (T_63 of this "
-        f"step; the median over {len(s.steps)} steps is {_num((s.T_63 or 0.0) * 1e3)} ms)"
+        f"step; the median over {len(s.rises)} steps is {_num((s.T_63 or 0.0) * 1e3)} ms)"
         if st.T_63 is not None
         else "it does not reach the 63 % level within the step"
     )
     return Figure(
         svg,
         640,
-        f"One rising step of run {run} close up (Tasks 11-12): the measured speed goes from "
+        f"The program's reading of one rise of run {run} (Tasks 11-12, as the manual "
+        "reads it; the group's own values are in the table above): the measured speed goes from "
         f"{_num(st.omega0)} to {_num(st.omega_ss)} rad/s; {crossed}. The least-squares T is "
         f"{_num(s.T * 1e3)} ms.",
     )
@@ -411,10 +345,13 @@ def _warnings_section(session: Session) -> Section:
         if e.refused
     ]
     items += list(res.problems)
+    rule = policy(session)
+    if rule.problem:  # the grader reads which policy the "shown to the group" cells follow
+        items.append(rule.problem)
     return Section("Warnings", [items if items else "None."])
 
 
-def _run_figure(log: StepLog, name: str) -> Figure:
+def _run_figure(log: RunLog, name: str) -> Figure:
     t = np.asarray(log.t, float)
     lines = [Line("omega, mean over each sample interval", t, log.omega)]
     if "omega_lab" in log.extra:
@@ -475,7 +412,7 @@ def _lead(r: CheckResult) -> str | None:
     return f"The figure that means most for this log: the {name}, {value}. It leads because {r.lead.why}."
 
 
-def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figures:
+def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figures:
     """The whole run against both models with the residuals, and beside it the close-up
     where the cause acts with the noise floor marked."""
     t = np.asarray(r.t, float)
@@ -584,7 +521,7 @@ def _model_check_figures(name: str, r: CheckResult, log: StepLog | None) -> Figu
     close = Figure(
         stack(panels),
         440,
-        f"Close-up of run {name}, {_num(cu.t0)}-{_num(cu.t1)} s: {cu.what}"
+        f"Run {name}, {check_words.close_up_title(r)}"
         + (f" ({in_words(cu.cause)})" if cu.cause != "none" else "")
         + f". The shaded band is ± the noise there ({_num(cu.noise, 3)} rad/s): a model whose "
         "residual stays inside it explains the log down to its noise."
@@ -618,20 +555,37 @@ def _two_fits(session: Session, run: str | None, params: dict[str, float]) -> li
     ]
 
 
+CHECK_NOTES = "model_check.notes"
+"""The group's notes on the model check: they lead its section (not among the Notes)."""
+
+
+def _check_notes(session: Session) -> str:
+    e = session.entry(CHECK_NOTES)
+    text = e.text.strip() if e is not None else ""
+    return (
+        f"The group's notes on the model check: {text}"
+        if text
+        else "The group wrote no notes on the model check; what follows is the program's."
+    )
+
+
 def _model_check_section(session: Session) -> Section | None:
     mc = session.model_check()
     if mc.run is None:
         return None
     sec = Section("Model check")
+    sec.blocks.append(_check_notes(session))  # the group's own first
     r = mc.result
     if r is None:
         sec.blocks.append(f"The model check could not run on {mc.run}: {mc.problem}")
         return sec
     try:
-        log: StepLog | None = session.load_run(mc.run)
+        log: RunLog | None = session.load_run(mc.run)
     except (InputError, KeyError):
         log = None
     u = np.asarray(log.u, float) if log is not None and len(log) == np.asarray(r.t).size else None
+    # as on the screen: the run and what the close-up shows, then the sentences about it
+    sec.blocks.append(f"Run {mc.run}, {check_words.close_up_title(r)}.")
     sec.blocks.append(check_words.join(check_words.lead(r, u)))
     sec.blocks.append(_model_check_figures(mc.run, r, log))
     details = Fold("Details")
@@ -707,7 +661,7 @@ def _runs_section(session: Session) -> Section:
             f"{r.samples}",
             f"{r.ts * 1e3:g} ms",
             f"{r.dropped}",
-            r.interruption or "—",
+            r.interruption or "not interrupted",
             r.file,
         )
         for r in session.runs
@@ -725,10 +679,13 @@ def _runs_section(session: Session) -> Section:
     return sec
 
 
-def _notes_section(session: Session) -> Section | None:
+def _notes_section(session: Session, shown: tuple[str, ...] = ()) -> Section | None:
+    """The group's notes on the steps (``shown``: keys already in another section)."""
     items = []
     for st in lab_steps.STEPS:
         for fld in st.fields:
+            if fld.key in shown:
+                continue
             e = session.entry(fld.key)
             if (
                 fld.kind == "text"
@@ -756,7 +713,7 @@ def build(session: Session) -> Report:
         sections.append(check)
     sections.append(_runs_section(session))
     sections.append(_answers(session, "Summary"))
-    notes = _notes_section(session)
+    notes = _notes_section(session, (CHECK_NOTES,) if check is not None else ())
     if notes is not None:
         sections.append(notes)
     return Report(

@@ -226,7 +226,12 @@ class LabApp(App[None]):
     ) -> None:
         """Show a notification as plain text, whoever asks (a widget's ``notify`` asks with
         markup on): the messages hold what was typed, refused text and file names, which
-        are shown as they are, never read as markup ('Cy [/]' was a MarkupError)."""
+        are shown as they are, never read as markup ('Cy [/]' was a MarkupError).
+
+        An override, because Textual offers no app-wide setting for it: ``App.notify`` and
+        ``Widget.notify`` default to ``markup=True``, and every widget's goes through this
+        one. ``markup=False`` at each of the 43 calls (or a helper of another name) would
+        hold only as long as every new call remembered it."""
         super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
 
     # -- start-up ---------------------------------------------------------------------
@@ -462,9 +467,9 @@ class LabApp(App[None]):
     def _link_event(self, event: LinkEventArrived) -> None:
         ev = event.event
         kind = ev.kind
-        if kind == "step":
+        if kind == "edge":
             return
-        if kind in ("stepdone", "disconnected", "watchdog", "boot", "error", "motor"):
+        if kind in ("square_wave_done", "disconnected", "watchdog", "boot", "error", "motor"):
             self.motor = "off"  # a run these end is ended by the Task 10 procedure
             self.requested = None
         if kind == "connected" and self.link.event == "":
@@ -690,7 +695,7 @@ class LabApp(App[None]):
             self._task10_ended(task.outcome)
             return
         self._run = task.run
-        if task.phase == "stepping":
+        if task.phase == "square_wave":
             self.motor = motor_words(None, task.plan.high)
             self.requested = None
         self.run_progress = task.progress()
@@ -699,7 +704,7 @@ class LabApp(App[None]):
         """End Task 10 now (F2, quit; ``why`` ``done`` keeps the run as complete): a wait ends
         without a run, a run being recorded is kept, interrupted by ``ended_by`` (a key of
         :data:`minseg_tui.lab.saving.runs.ENDED_BY`). A run the group chose stays in use; without a
-        choice, Tasks 11-15 use the newest complete 25 ms run (:meth:`Session.step_run`)."""
+        choice, Tasks 11-15 use the newest complete 25 ms run (:meth:`Session.response_run`)."""
         task = self.task10
         if task is None or not task.active:
             return
@@ -982,8 +987,11 @@ class LabApp(App[None]):
 
     def get_system_commands(self, screen: Screen[Any]) -> Iterable[SystemCommand]:
         """The palette's actions on ``screen``; a step panel's (set a voltage, capture, run)
-        only on the steps whose panel has it, as the footer shows its key."""
-        yield from super().get_system_commands(screen)
+        only on the steps whose panel has it, as the footer shows its key. Textual's own
+        "Keys" (its key panel) is left out: ours, the last, opens F1's list."""
+        for command in super().get_system_commands(screen):
+            if command.title != "Keys":
+                yield command
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
         offered = screen.panel_keys() if isinstance(screen, LabScreen) else {}
         for action, title, help_text in (

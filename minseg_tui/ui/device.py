@@ -28,7 +28,7 @@ class Device(Protocol):
     def u_req(self) -> float | None:
         """The voltage (V) the motor is requested at as far as the link knows: 0 after STOP,
         the watchdog, a reconnect or a board restart (nothing is restored); None while a
-        board-timed step sequence runs."""
+        board-timed square wave runs."""
         ...
 
     def samples(self) -> SampleBatch:
@@ -44,14 +44,14 @@ class Device(Protocol):
         ...
 
     def stop(self) -> object:
-        """Motor off, any step sequence aborted."""
+        """Motor off, any square wave aborted."""
         ...
 
     def set_period(self, ts: float) -> object:
         """Sample every ``ts`` s (board-timed)."""
         ...
 
-    def step(self, low: float, high: float, half_period: float, periods: int) -> object:
+    def square_wave(self, low: float, high: float, half_period: float, periods: int) -> object:
         """Board-timed square wave between ``low`` and ``high`` V, ``half_period`` s at each,
         ``periods`` times."""
         ...

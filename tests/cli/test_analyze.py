@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.saving.files import write_step_log
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.lab.saving.files import write_run_log
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import make_log
 from tests.shared_data import SHARED_DATA
 
@@ -18,9 +18,9 @@ NXT = SHARED_DATA / "nxt-motor-real"
 
 
 def _write(path, log):
-    write_step_log(
+    write_run_log(
         path,
-        StepLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count, "u_req": log.u_req}),
+        RunLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count, "u_req": log.u_req}),
         {"source": f"synth {log.cause} {log.param}"},
     )
     return path
@@ -118,9 +118,9 @@ def test_header_says_how_the_speed_was_taken(tmp_path, capsys):
     the speed simulated the way the header says."""
     log = make_log("none", seed=34, duration=6.0)
     path = tmp_path / "log.csv"
-    write_step_log(
+    write_run_log(
         path,
-        StepLog(t=log.t, u=log.u, omega=log.omega),
+        RunLog(t=log.t, u=log.u, omega=log.omega),
         {"ts": "0.025", "cpr": "720", "omega_over": "nominal"},
     )
     d = _analyze(path, capsys)
@@ -165,7 +165,7 @@ def _nxt_logs(tmp_path, sheet):
     k = np.concatenate(([k[0] - 3, k[0] - 2, k[0] - 1], k))
     a = np.concatenate(([0, 0, 0], a))
     u1 = np.where(k >= k[3] - 1, 1.0, 0.0)
-    run1 = StepLog(t=(k - k[3]) * TS, u=u1, omega=_speed(k, a), extra={"count": a})
+    run1 = RunLog(t=(k - k[3]) * TS, u=u1, omega=_speed(k, a), extra={"count": a})
     kb, b = _nxt_counts(sheet, "B_encoder_count_run2")
     w1 = _speed(k, a)
     steady = float(np.median(w1[-20:]))
@@ -173,10 +173,10 @@ def _nxt_logs(tmp_path, sheet):
     w2[0] = steady
     u2 = np.zeros(w2.size)
     u2[0] = 1.0
-    run2 = StepLog(t=(kb - kb[0]) * TS, u=u2, omega=w2)
+    run2 = RunLog(t=(kb - kb[0]) * TS, u=u2, omega=w2)
     p1, p2 = tmp_path / f"{sheet}_run1.csv", tmp_path / f"{sheet}_run2.csv"
-    write_step_log(p1, run1, {**NXT_META, "source": f"NXT {sheet} run1, assumed Ts"})
-    write_step_log(p2, run2, {**NXT_META, "source": f"NXT {sheet} run2, assumed Ts"})
+    write_run_log(p1, run1, {**NXT_META, "source": f"NXT {sheet} run1, assumed Ts"})
+    write_run_log(p2, run2, {**NXT_META, "source": f"NXT {sheet} run2, assumed Ts"})
     return p1, p2
 
 
@@ -318,7 +318,7 @@ def test_a_late_step_is_never_said_to_act_further_than_a_sample(tmp_path, capsys
     if how == "rounded":
         u = np.round(u, 2)
     path = tmp_path / "log.csv"
-    write_step_log(path, StepLog(t=log.t, u=u, omega=log.omega, extra={"count": log.count}))
+    write_run_log(path, RunLog(t=log.t, u=u, omega=log.omega, extra={"count": log.count}))
     assert main(["analyze", str(path), "--json"]) == 0
     result = json.loads(capsys.readouterr().out)
     ts_ms = 1e3 * float(np.median(np.diff(log.t)))

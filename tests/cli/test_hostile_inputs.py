@@ -20,8 +20,8 @@ from minseg_tui.cli import main
 from minseg_tui.cli.output import json_text
 from minseg_tui.device.virtual import settings_from
 from minseg_tui.lab.saving import csvread, files
-from minseg_tui.lab.saving.files import write_step_log
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.lab.saving.files import write_run_log
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import make_log
 
 TABLE = "u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,30\n3.5,3.05,5.8,34\n4.5,4.05,7.8,37\n"
@@ -37,9 +37,9 @@ def _strict_json(text: str) -> object:
 def _log_file(path: Path, *, u=None, t=None, extra=None, meta=None, seed=3) -> Path:
     log = make_log("none", param=0, seed=seed)
     cols = {"count": log.count, "u_req": log.u_req, **(extra or {})}
-    write_step_log(
+    write_run_log(
         path,
-        StepLog(
+        RunLog(
             t=log.t if t is None else t, u=log.u if u is None else u, omega=log.omega, extra=cols
         ),
         meta or {},
@@ -156,7 +156,7 @@ def test_numbers_python_would_read_but_a_lab_file_never_holds(tmp_path, capsys, 
     )
 
 
-def test_underscore_in_a_step_log_is_refused(tmp_path, capsys):
+def test_underscore_in_a_run_log_is_refused(tmp_path, capsys):
     path = _log_file(tmp_path / "log.csv")
     lines = _lines_of(path)
     header = next(i for i, x in enumerate(lines) if x.startswith("t,"))

@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.saving.files import write_step_log
+from minseg_tui.lab.saving.files import write_run_log
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.signals import timestamp_velocity
 
 MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.325, f=6e-4, J=1.3e-3)
@@ -27,13 +27,13 @@ def files(tmp_path_factory):
     (d / "table.csv").write_text(TABLE)
     params = PlantParams(motor=MOTOR, tau_c=0.0, v_drop=0.5)
     rec = record(params, square_wave(0.0, 4.5, 40, 3, lead=20), ts=0.025, seed=7, jitter_us=2000)
-    log = StepLog(
+    log = RunLog(
         t=rec.t,
         u=rec.u_A,
         omega=timestamp_velocity(rec.t, rec.count),
         extra={"u_req": rec.u_req, "count": rec.count, "t_us": rec.t_us},
     )
-    write_step_log(d / "log.csv", log, {"source": "plant, seed 7"})
+    write_run_log(d / "log.csv", log, {"source": "plant, seed 7"})
     return d
 
 

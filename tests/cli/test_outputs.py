@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.saving.files import write_step_log
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.lab.saving.files import write_run_log
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import make_log
 
 TABLE = "u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,30\n3.5,3.05,5.8,34\n4.5,4.05,7.8,37\n"
@@ -28,7 +28,7 @@ def _cli() -> list[str]:
 
 def _log(path: Path) -> Path:
     log = make_log("none", param=0, seed=3)
-    write_step_log(path, StepLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count}))
+    write_run_log(path, RunLog(t=log.t, u=log.u, omega=log.omega, extra={"count": log.count}))
     return path
 
 
@@ -67,7 +67,7 @@ def test_predictions_into_a_device_are_refused(tmp_path, capsys):
 
 
 def _with_files(tmp_path, argv):
-    """``argv`` with LOG and TABLE replaced by a step log and a table written in tmp_path."""
+    """``argv`` with LOG and TABLE replaced by a run log and a table written in tmp_path."""
     _log(tmp_path / "log.csv")
     (tmp_path / "table.csv").write_text(TABLE)
     files = {"LOG": str(tmp_path / "log.csv"), "TABLE": str(tmp_path / "table.csv")}
@@ -78,7 +78,7 @@ def _with_files(tmp_path, argv):
     ("argv", "what"),
     [
         (["analyze", "LOG", "--predictions", ""], "--predictions: expected a file name"),
-        (["identify", "TABLE", "--R", "5.3", "--step", ""], "--step: expected a step log file"),
+        (["identify", "TABLE", "--R", "5.3", "--step", ""], "--step: expected a run log file"),
     ],
 )
 def test_an_empty_file_name_is_refused(tmp_path, capsys, argv, what):

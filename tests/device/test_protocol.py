@@ -41,7 +41,7 @@ def test_malformed_commands_get_their_error_code(case):
 def test_golden_values_by_hand():
     s = P.parse("$S,4294967295,4294967292,2147483647,-4500*916B")
     assert s == P.SampleLine(4294967295, 4294967292, 2147483647, -4500)
-    assert P.parse("$EV,STEP,3,10*9F38") == P.EvStep(3, 10)
+    assert P.parse("$EV,STEP,3,10*9F38") == P.EvSquareWaveEdge(3, 10)
     assert P.parse("$ERR,ARGS,V*DCDA") == P.Err("ARGS", "V")
     assert P.parse("$OK,STEP,0,4500,1000,5*CD5B") == P.Ok("STEP", ("0", "4500", "1000", "5"))
     assert P.checksum("PING") == 0x6427

@@ -4,7 +4,7 @@ counts no motor makes, through the real Link on a real pty, into a recorded run.
 The adversarial board is scripted (``ScriptedBoard``): it sends the true stream of a Task
 10 step run, and between its lines blocks of lines it sent before, re-encoded with valid
 checksums. The run is recorded as the TUI records it (a session's Recorder fed with every
-batch the link hands over) and kept as a step log; what is saved must be the true stream,
+batch the link hands over) and kept as a run log; what is saved must be the true stream,
 and the link's counters must say what happened.
 """
 
@@ -28,7 +28,7 @@ SEQ0 = 51_000  # the board has been streaming for a while
 T0 = 1_300_000_000  # its micros() then, us (21.7 min after reset)
 
 
-def step_run(n: int, rng: np.random.Generator) -> list[P.SampleLine]:
+def square_wave_run(n: int, rng: np.random.Generator) -> list[P.SampleLine]:
     """A Task 10 run as the board sends it: square wave 0 / 2.5 V every 1.5 s, the wheel
     a first-order motor (K = 2 rad/s/V, T = 45 ms), 720 counts per revolution, up to
     40 us of loop jitter."""
@@ -85,7 +85,7 @@ def test_replayed_blocks_are_dropped_counted_and_the_saved_run_is_the_true_strea
     scripted, tmp_path
 ):
     rng = np.random.default_rng(18)
-    true = step_run(487, rng)
+    true = square_wave_run(487, rng)
     wire: list[P.SampleLine] = []
     replayed = 0
     for k, line in enumerate(true[:-1]):
@@ -126,7 +126,7 @@ def test_a_seq_jump_is_a_gap_never_a_restart(scripted):
     """The stream's seq jumps by +5 at 36 places (time goes on a period): each is 4 samples
     lost, every line is kept, one epoch."""
     rng = np.random.default_rng(5)
-    true = step_run(486, rng)
+    true = square_wave_run(486, rng)
     jumps = sorted(rng.choice(np.arange(20, 480, 12), 36, replace=False).tolist())
     offset, wire = 0, []
     for k, s in enumerate(true):
@@ -151,7 +151,7 @@ def test_single_lines_with_seq_plus_5_are_refused_not_restarts(scripted):
     """36 lines whose seq alone was altered (+5, a valid checksum): each is refused and is one
     lost sample; no restart, nothing else lost."""
     rng = np.random.default_rng(7)
-    true = step_run(486, rng)
+    true = square_wave_run(486, rng)
     altered = set(rng.choice(np.arange(5, 480), 36, replace=False).tolist())
     wire = [
         P.SampleLine(s.seq + 5, s.t_us, s.count, s.u_mV) if k in altered else s
@@ -179,7 +179,7 @@ def test_a_count_no_motor_makes_is_refused(scripted, jump):
     """A count that moved further in one period than the wheel can turn (250 counts in 25 ms
     is 87 rad/s) is refused and counted; the sample is lost, the rest kept."""
     rng = np.random.default_rng(3)
-    true = step_run(120, rng)
+    true = square_wave_run(120, rng)
     wire = list(true)
     wire[60] = P.SampleLine(true[60].seq, true[60].t_us, true[60].count + jump, true[60].u_mV)
     link = _open(scripted)
@@ -197,7 +197,7 @@ def test_a_count_no_motor_makes_is_refused(scripted, jump):
 def test_a_zeroed_count_is_kept(scripted):
     """After $OK,Z the count starts again at 0: that jump is the board's, not a false line."""
     rng = np.random.default_rng(4)
-    true = step_run(120, rng)
+    true = square_wave_run(120, rng)
     zero_at = true[70].count
     wire = [
         s if k < 70 else P.SampleLine(s.seq, s.t_us, s.count - zero_at, s.u_mV)
@@ -220,7 +220,7 @@ def test_a_block_of_lines_with_seq_plus_5_is_no_restart(scripted):
     true: the stream's time goes on through them, so no restart; every line is kept (their
     counts are the board's) and the jump counts at most its 5 samples (seq + 6) as lost."""
     rng = np.random.default_rng(9)
-    true = step_run(300, rng)
+    true = square_wave_run(300, rng)
     wire = [
         P.SampleLine(s.seq + 5, s.t_us, s.count, s.u_mV) if 100 <= k < 136 else s
         for k, s in enumerate(true)
@@ -245,7 +245,7 @@ def test_an_old_boot_line_sent_again_is_no_restart(scripted):
     """A $BOOT line replayed mid-stream (the stream goes on as before): no restart, no
     'motor off', the line counted as replayed."""
     rng = np.random.default_rng(12)
-    true = step_run(200, rng)
+    true = square_wave_run(200, rng)
     link = _open(scripted)
     try:
         link.events()
@@ -263,7 +263,7 @@ def test_an_old_boot_line_sent_again_is_no_restart(scripted):
 
 def test_a_real_boot_is_a_restart_said_once_its_samples_start_again(scripted):
     rng = np.random.default_rng(13)
-    true = step_run(100, rng)
+    true = square_wave_run(100, rng)
     again = [P.SampleLine(k, 1_500_000 + PERIOD * (k + 1), 0, 0) for k in range(50)]
     link = _open(scripted)
     try:
@@ -283,7 +283,7 @@ def test_a_real_boot_is_a_restart_said_once_its_samples_start_again(scripted):
 
 def test_a_restart_whose_boot_line_was_lost_is_said(scripted):
     rng = np.random.default_rng(14)
-    true = step_run(100, rng)
+    true = square_wave_run(100, rng)
     again = [P.SampleLine(k, 1_500_000 + PERIOD * (k + 1), 0, 0) for k in range(50)]
     link = _open(scripted)
     try:

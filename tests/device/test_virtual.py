@@ -63,9 +63,9 @@ def test_step_edges_fall_on_sample_instants():
     expect[25000 + 25000 * 16] = 0
     assert {t: u[t] for t in expect} == expect
     events = [P.parse(x) for x in lines if x.startswith("$EV")]
-    assert events == [P.EvStep(1, 2), P.EvStep(2, 2), P.EvStepDone()]
+    assert events == [P.EvSquareWaveEdge(1, 2), P.EvSquareWaveEdge(2, 2), P.EvSquareWaveDone()]
     # each event right after the $S line of its edge
-    i = lines.index(P.format_line(P.EvStep(2, 2)))
+    i = lines.index(P.format_line(P.EvSquareWaveEdge(2, 2)))
     assert P.parse(lines[i - 1]).t_us == 225000
     # a second STEP while one runs is refused
     port.write(b"STEP,0,3000,100,2\nSTEP,0,1000,100,2\n")

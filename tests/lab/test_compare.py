@@ -145,11 +145,11 @@ def test_K_and_omega_at_5V_follow_the_groups_own_readings(tmp_path):
 
 
 def test_no_example_in_a_hint_is_an_answer(tmp_path):
-    """Every number in the hints of Tasks 11-15 is at least a factor 1.5 from what the
+    """Every number in the hints of Tasks 6-15 is at least a factor 1.5 from what the
     virtual board's seeded plant gives for that field (T in s and in ms); the old hints
     (7.3 rad/s, 1.9 rad/s/V, 0.057 s, 0.0013 kg m^2) were all within it. The example a
     refusal gives for the field's unit too (a walk typed '7,8/4,05' for K and was told 'e.g.
-    1.9 rad/s/V')."""
+    1.9 rad/s/V'; 'e.g. 0.32 N m/A' was k_a)."""
     with _lab(tmp_path) as s:
         ident = s.results().identification
         assert ident is not None and ident.step is not None and ident.step.T_63 is not None
@@ -162,9 +162,12 @@ def test_no_example_in_a_hint_is_an_answer(tmp_path):
             "own.J": [st.J],
             "own.omega_5": [ident.omega_at_5V or 0.0],
             "own.model": [*Ts, st.K],
+            "own.k_v": [ident.k_v],
+            "own.k_a": [ident.k_a],
+            "own.f": [ident.f * 1e3],  # the field's unit: mN m s/rad
         }
     seen = 0
-    for sid in ("task11", "task12", "task13", "task14", "task15"):
+    for sid in ("table", "task11", "task12", "task13", "task14", "task15"):
         for f in step(sid).fields:
             for num in re.findall(r"\d+(?:\.\d+)?", f"{f.hint} {example(f.unit)}"):
                 seen += 1

@@ -1,12 +1,12 @@
-"""TABLE.csv and step logs: what is accepted, what is refused, and the messages."""
+"""TABLE.csv and run logs: what is accepted, what is refused, and the messages."""
 
 import numpy as np
 import pytest
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.saving.files import read_step_log, read_table, write_step_log, write_table
+from minseg_tui.lab.saving.files import read_run_log, read_table, write_run_log, write_table
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 
 GOOD_TABLE = "u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,30\n3.5,3.05,5.8,34\n4.5,4.05,7.8,37\n"
 
@@ -103,12 +103,12 @@ def test_table_not_utf8_and_missing_file(tmp_path):
     assert "directory" in refused(read_table, tmp_path)
 
 
-# -- step logs -----------------------------------------------------------------------------
+# -- run logs -----------------------------------------------------------------------------
 
 
-def test_step_log_reads_columns_metadata_and_lines(tmp_path):
+def test_run_log_reads_columns_metadata_and_lines(tmp_path):
     text = "# source: plant\n# ts = 0.025\nt,u,omega,u_req,count,note\n0,0,0,0,0,a\n# mid comment\n0.025,4,0,4.5,3,b\n0.05,4,2.5,4.5,10,c\n"
-    log = read_step_log(write(tmp_path, "log.csv", text))
+    log = read_run_log(write(tmp_path, "log.csv", text))
     assert log.metadata == {"source": "plant", "ts": "0.025"}
     assert log.t.tolist() == [0.0, 0.025, 0.05]
     assert log.u.tolist() == [0.0, 4.0, 4.0]
@@ -120,9 +120,9 @@ def test_step_log_reads_columns_metadata_and_lines(tmp_path):
     assert log.source == str(tmp_path / "log.csv")
 
 
-def test_step_log_round_trip(tmp_path):
+def test_run_log_round_trip(tmp_path):
     t = np.arange(10) * 0.025 + 1e-6 * np.arange(10)
-    log = StepLog(
+    log = RunLog(
         t=t,
         u=np.where(t > 0.1, 4.05, 0.0),
         omega=np.linspace(0, 7, 10),
@@ -133,8 +133,8 @@ def test_step_log_round_trip(tmp_path):
         },
         metadata={"source": "virtual MinSeg, seed 3"},
     )
-    write_step_log(tmp_path / "out.csv", log, {"ts": "0.025"})
-    back = read_step_log(tmp_path / "out.csv")
+    write_run_log(tmp_path / "out.csv", log, {"ts": "0.025"})
+    back = read_run_log(tmp_path / "out.csv")
     assert back.metadata["source"] == "virtual MinSeg, seed 3" and back.metadata["ts"] == "0.025"
     assert back.columns == ["t", "u", "omega", "u_req", "count", "t_us"]
     for name in back.columns:
@@ -142,9 +142,9 @@ def test_step_log_round_trip(tmp_path):
     assert back.extra["t_us"].dtype.kind == "i"
 
 
-def test_step_log_generous(tmp_path):
+def test_run_log_generous(tmp_path):
     text = "\ufeff# x: 1\r\n T , U ,omega\r\n0, 0 ,0\r\n\r\n0.025,4,1\r\n0.05,4,2\r\n\r\n"
-    log = read_step_log(write(tmp_path, "log.csv", text))
+    log = read_run_log(write(tmp_path, "log.csv", text))
     assert log.u.tolist() == [0.0, 4.0, 4.0] and log.lines.tolist() == [3, 5, 6]
 
 
@@ -200,8 +200,8 @@ def test_step_log_generous(tmp_path):
         ),
     ],
 )
-def test_step_log_bad_input(tmp_path, text, where, what):
-    msg = refused(read_step_log, write(tmp_path, "log.csv", text))
+def test_run_log_bad_input(tmp_path, text, where, what):
+    msg = refused(read_run_log, write(tmp_path, "log.csv", text))
     assert msg.startswith(str(tmp_path / where)), msg
     assert what in msg
 
@@ -209,10 +209,10 @@ def test_step_log_bad_input(tmp_path, text, where, what):
 def test_t_us_wrapping_at_2_32_is_not_refused(tmp_path):
     # 7000 us later, then past 2^32 = 4294967296 to 24704: 296 + 24704 = 25000 us later
     rows = ["0,0,0,4294960000", "0.025,4,1,4294967000", "0.05,4,2,24704"]
-    log = read_step_log(write(tmp_path, "log.csv", log_text(header="t,u,omega,t_us", rows=rows)))
+    log = read_run_log(write(tmp_path, "log.csv", log_text(header="t,u,omega,t_us", rows=rows)))
     np.testing.assert_allclose(log.board_time(), [0.0, 0.007, 0.032])
 
 
-def test_step_log_without_step_can_be_read_when_asked(tmp_path):
+def test_run_log_without_step_can_be_read_when_asked(tmp_path):
     p = write(tmp_path, "flat.csv", log_text(rows=["0,4,0", "0.025,4,1", "0.05,4,2"]))
-    assert len(read_step_log(p, require_step=False)) == 3
+    assert len(read_run_log(p, require_step=False)) == 3

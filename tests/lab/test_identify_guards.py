@@ -8,12 +8,12 @@ from __future__ import annotations
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.saving.files import write_step_log
+from minseg_tui.lab.saving.files import write_run_log
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.signals import timestamp_velocity
 
 MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.325, f=6e-4, J=1.3e-3)
@@ -36,7 +36,7 @@ CASES = {
 
 
 def _log(path, high: float, how: str) -> None:
-    """A seeded plant's square wave 0 <-> ``high`` V as a step log, altered as ``how`` says."""
+    """A seeded plant's square wave 0 <-> ``high`` V as a run log, altered as ``how`` says."""
     params = PlantParams(motor=MOTOR, tau_c=0.0, v_drop=0.5)
     rec = record(params, square_wave(0.0, high, 40, 3, lead=20), ts=0.025, seed=7, jitter_us=2000)
     extra = {"u_req": rec.u_req, "count": rec.count, "t_us": rec.t_us}
@@ -48,7 +48,7 @@ def _log(path, high: float, how: str) -> None:
         del extra["count"]
         extra["theta"] = rec.count * 0.0 + 1.0
     omega = timestamp_velocity(rec.t, rec.count)  # the speed column as logged
-    write_step_log(path, StepLog(t=rec.t, u=rec.u_A, omega=omega, extra=extra), {})
+    write_run_log(path, RunLog(t=rec.t, u=rec.u_A, omega=omega, extra=extra), {})
 
 
 @pytest.mark.parametrize("case", list(CASES))

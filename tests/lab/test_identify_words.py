@@ -7,11 +7,11 @@ from __future__ import annotations
 import numpy as np
 
 from minseg_tui.cli import main
-from minseg_tui.lab.saving.files import read_step_log, read_table, write_step_log
+from minseg_tui.lab.saving.files import read_run_log, read_table, write_run_log
 from minseg_tui.model.identify import identify
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.signals import timestamp_velocity
 
 MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.325, f=6e-4, J=1.3e-3)
@@ -36,26 +36,26 @@ def test_u_ss_is_said_extrapolated_when_the_median_step_was(tmp_path, capsys):
     high = rec.u_req > 0
     number = np.cumsum(np.diff(np.concatenate(([0], high.astype(int)))) == 1)  # step 1, 2, 3
     u_req = np.where(high, np.array([0.0, 2.0, 3.0, 2.0])[number], 0.0)
-    log = StepLog(
+    log = RunLog(
         t=rec.t,
         u=rec.u_A,
         omega=timestamp_velocity(rec.t, rec.count),
         extra={"u_req": u_req, "count": rec.count, "t_us": rec.t_us},
     )
-    write_step_log(tmp_path / "log.csv", log, {})
+    write_run_log(tmp_path / "log.csv", log, {})
     (tmp_path / "t.csv").write_text(TABLE_CSV)
-    result = identify(read_table(tmp_path / "t.csv"), 5.0, read_step_log(tmp_path / "log.csv"))
+    result = identify(read_table(tmp_path / "t.csv"), 5.0, read_run_log(tmp_path / "log.csv"))
     assert result.step is not None
-    assert sorted(s.u_req for s in result.step.steps) == [2.0, 2.0, 3.0]
+    assert sorted(s.u_req for s in result.step.rises) == [2.0, 2.0, 3.0]
     assert result.step.u_ss_how == "extrapolated"
     code, out, _ = _identify(tmp_path, capsys, TABLE_CSV, "--step", str(tmp_path / "log.csv"))
     assert code == 0 and "(extrapolated from the table)" in out
 
 
-def test_no_step_log_claims_no_step(tmp_path, capsys):
+def test_no_run_log_claims_no_step(tmp_path, capsys):
     code, out, _ = _identify(tmp_path, capsys, QUIET_TABLE)
     assert code == 0
-    assert "nothing unusual" in out and "step fits" not in out and "no step log" in out
+    assert "nothing unusual" in out and "step fits" not in out and "no run log" in out
 
 
 def test_omega_ss_in_rpm_is_flagged_as_i_ss_in_amperes_is(tmp_path, capsys):

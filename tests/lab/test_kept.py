@@ -168,7 +168,7 @@ def test_a_change_to_the_code_that_computes_them_gives_another_key(computed, mon
     names = {p.relative_to(p.parents[2]).as_posix() for p in kept.computing_sources()}
     assert {"model/check/pipeline.py", "model/identify/identification.py"} <= names
     with Session.open(computed, readonly=True) as s:
-        run = s.step_run()
+        run = s.response_run()
     before = kept.run_key(computed, run, [(2.5, 2.4)])
     monkeypatch.setattr(kept, "code_fingerprint", lambda: "another program")
     assert run is not None and before is not None

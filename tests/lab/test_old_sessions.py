@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.session import Session
 
 OLD = Path(__file__).parent / "old_sessions" / "schema1"
@@ -29,7 +29,7 @@ def _copy(tmp_path: Path) -> Path:
 
 def test_the_old_form_is_what_it_says():
     assert json.loads((OLD / "session.json").read_text(encoding="utf-8"))["schema"] == 1
-    log = read_step_log(OLD / "runs" / "steps-1.csv")
+    log = read_run_log(OLD / "runs" / "steps-1.csv")
     high = np.asarray(log.extra["u_req"]) == 4.5
     assert set(np.asarray(log.u)[high]) == {4.1}  # u_A, as the old program wrote it
     assert log.metadata["u"].startswith("u = u_A mapped from u_req")
@@ -40,7 +40,7 @@ def test_a_schema_1_session_reads_the_values_it_read_before(tmp_path, readonly):
     folder = _copy(tmp_path)
     with Session.open(folder, readonly=readonly) as s:
         assert [r.name for r in s.runs] == ["steps-1"]
-        on_disk = read_step_log(folder / "runs" / "steps-1.csv")
+        on_disk = read_run_log(folder / "runs" / "steps-1.csv")
         log = s.load_run("steps-1")
         for name in ("t", "u", "omega"):
             assert np.array_equal(getattr(log, name), getattr(on_disk, name)), name

@@ -18,7 +18,7 @@ import pytest
 from minseg_tui.cli import main
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.saving import store
-from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.saving.runs import applied_voltage, read_partial
 from minseg_tui.lab.saving.store import SessionDamaged, SessionLocked, SessionMissing, list_sessions
 from minseg_tui.lab.state.session import Session
@@ -206,7 +206,7 @@ def test_capture_mean_spread_and_window(tmp_path):
 # -- runs --------------------------------------------------------------------------------------
 
 
-def test_finished_run_is_a_step_log_with_applied_voltage(tmp_path):
+def test_finished_run_is_a_run_log_with_applied_voltage(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:
         _fill_table(s)
         s.enter("R", "5.26")
@@ -230,7 +230,7 @@ def test_finished_run_is_a_step_log_with_applied_voltage(tmp_path):
         # a changed u_ss: the run read again has the new u column and K follows; the
         # recording itself (what the board sent) is never written again
         recorded = (s.folder / info.file).read_bytes()
-        assert set(np.asarray(read_step_log(s.folder / info.file).u)[high]) == {4.5}
+        assert set(np.asarray(read_run_log(s.folder / info.file).u)[high]) == {4.5}
         s.enter("u_ss@4.5", "4.2 V")
         log2 = s.load_run(info.name)
         assert set(np.asarray(log2.u)[high]) == {4.2}
@@ -334,9 +334,17 @@ def test_step_status(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:
         assert s.step_status("task2") == "todo"
         s.enter("R", "x")
-        assert s.step_status("task2") == "started"
+        assert s.step_status("task2") == "refused"
         s.enter("R", "5")
         assert s.step_status("task2") == "done"
+        s.enter("R", "5 V")  # refused over the answer in effect: no tick while it shows
+        assert s.step_status("task2") == "refused" and s.value("R") == 5.0
+        assert s.withdraw_refused("R") and s.step_status("task2") == "done"
+        assert not s.withdraw_refused("R") and s.entry("R").text == "5"  # type: ignore[union-attr]
+        s.enter("prep8.T", "a/")  # never accepted: withdrawn, the field is empty again
+        assert s.step_status("prep8") == "refused"
+        assert s.withdraw_refused("prep8.T") and s.entry("prep8.T") is None
+        assert s.step_status("prep8") == "todo"
         assert s.step_status("task1") == "todo"  # done once the board check passes
         assert s.step_status("task10") == "todo"
 
@@ -571,7 +579,7 @@ def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path)
         assert short is not None and short.interrupted
     with Session.open(s.folder) as again:  # kept in the session file
         assert again.runs[-1].interrupted and again.runs[-1].interruption == "stopped"
-        assert again.step_run() == info  # never an interrupted run the group did not choose
+        assert again.response_run() == info  # never an interrupted run the group did not choose
         again.select_run(short.name)
         said = views.results(again, "task11").problems
         assert any(

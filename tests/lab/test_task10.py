@@ -38,7 +38,7 @@ def test_stopped_mid_run_keeps_what_was_recorded_with_the_motor_off(tmp_path):
             task.begin()
             assert task.phase == "waiting" and task.run is None and link.u_req == 0
             _feed_until(task, link, lambda: task.run is not None and task.run.samples >= 200)
-            assert task.phase == "stepping" and link.u_req is None  # the board's sequence
+            assert task.phase == "square_wave" and link.u_req is None  # the board's sequence
             outcome = task.stop("stopped")
             assert outcome is not None and task.outcome is outcome and not task.active
             assert link.u_req == 0  # the motor is off

@@ -1,4 +1,4 @@
-"""A small seeded generator of step logs for identify, written from the physics alone (not from
+"""A small seeded generator of run logs for identify, written from the physics alone (not from
 minseg_tui.model.synth or the check's simulator): a first-order motor T w' = -w + K u(t - D)
 driven by a held command, its angle read by a 720-count encoder late by a busy loop, and the
 speed the lab's Euler derivative of the counts over the nominal period. On top of that the
@@ -18,7 +18,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 
 CPR = 720
 Q = 2.0 * math.pi / CPR
@@ -33,7 +33,7 @@ class Generated:
     """A log and its truth: T (s), K (rad/s per V of u_A), the dead time D (s), the sample
     period ts (s), the glitch rows and the stall row (None without)."""
 
-    log: StepLog
+    log: RunLog
     T: float
     K: float
     D: float
@@ -118,7 +118,7 @@ def make(
     extra: dict[str, NDArray[np.generic]] = {"u_req": u_req}
     if stamped:
         extra["t_us"] = np.round(t_read * 1e6).astype(np.int64)
-    log = StepLog(t=t, u=u_a, omega=omega, extra=extra, source=f"identgen seed {seed}")
+    log = RunLog(t=t, u=u_a, omega=omega, extra=extra, source=f"identgen seed {seed}")
     if stall_row is not None:
         stall_row = int(np.searchsorted(rows, stall_row))
     return Generated(log, T, K, delay, ts, glitch_rows, stall_row)

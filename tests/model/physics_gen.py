@@ -1,4 +1,4 @@
-"""An independent generator of step logs, written from the physics of a DC motor alone.
+"""An independent generator of run logs, written from the physics of a DC motor alone.
 
 It shares no code and no formulas with minseg_tui.model.check.simulate or
 minseg_tui.model.synth (it was written without reading them), so the model check can be

@@ -336,6 +336,11 @@ def test_a_hands_rows_are_left_out_until_the_wheel_is_back_on_the_model():
     first = float(words.split(" s to ")[0])
     last = float(words.split(" s to ")[1].split(" s ")[0])
     assert first <= hand.t and last > step + 0.5
+    # the departure itself ends by the step: the sentence says the input stays put there (it
+    # said 6.701 s, a row past the step at 6.676 s, through the 9-tap average)
+    said = float(hand.text.split(f"from t = {hand.t:.3f} s to ")[1].split(" s ")[0])
+    assert hand.t_end is not None and said == pytest.approx(hand.t_end, abs=1e-3)
+    assert hand.t_end <= step + 1e-9
     assert "the wheel's way back until the model meets the speed again" in words
     left = (log.t >= first) & (log.t <= last)
     assert r.baseline.rows <= r.t.size - np.count_nonzero(left)

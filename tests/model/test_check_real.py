@@ -1,4 +1,4 @@
-"""The model check on real motors: ten step logs measured by others (../shared/data/
+"""The model check on real motors: ten run logs measured by others (../shared/data/
 real-motors, see its README and each PROVENANCE.txt) and the probes made from them.
 
 Each test pins what a look at the data supports (plots of data, predictions and residuals,
@@ -14,7 +14,7 @@ from functools import cache
 
 import pytest
 
-from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.check import CheckResult, check, text
 from tests.shared_data import SHARED_DATA
 
@@ -30,7 +30,7 @@ PROBES = sorted(p.name for p in (REAL / "probes").glob("*.csv")) or ["probes abs
 def analyze(name: str) -> tuple[CheckResult, str]:
     """The check of a real log as ``minseg-tui analyze`` runs it (its header read), and its text."""
     path = REAL / name / "step.csv" if (REAL / name).is_dir() else REAL / "probes" / name
-    log = read_step_log(path)
+    log = read_run_log(path)
     ts = float(log.metadata["ts"]) if "ts" in log.metadata else None
     r = check(log.t, log.u, log.omega, ts=ts, cpr=log.declared_cpr, omega_over=log.omega_over)
     return r, text(r)

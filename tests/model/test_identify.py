@@ -1,4 +1,4 @@
-"""Tasks 6-15: hand-computed table values, and T and K recovered from simulated step logs."""
+"""Tasks 6-15: hand-computed table values, and T and K recovered from simulated run logs."""
 
 import math
 
@@ -10,7 +10,7 @@ from minseg_tui.model.identify import U_SS_HOW, Reading, identify, steady_state,
 from minseg_tui.model.identify.steady import table_of
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.signals import timestamp_velocity
 
 R = 5.0
@@ -106,7 +106,7 @@ def test_u_ss_mapping_edges():
     assert how == "row" and u == pytest.approx(3.85)
 
 
-# -- step logs from the plant ---------------------------------------------------------------
+# -- run logs from the plant ---------------------------------------------------------------
 
 MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.325, f=6e-4, J=1.3e-3)
 DAMP = 5.0 * 6e-4 + 0.5 * 0.325  # R f + k_v k_a
@@ -123,7 +123,7 @@ def plant_log(params, high=4.5, seed=1, with_count=True, half=40, periods=4):
     if with_count:
         extra["count"] = rec.count
     omega = timestamp_velocity(rec.t, rec.count)
-    return StepLog(t=rec.t, u=rec.u_A, omega=omega, extra=extra, source="log.csv")
+    return RunLog(t=rec.t, u=rec.u_A, omega=omega, extra=extra, source="log.csv")
 
 
 def linear_table(motor, u_reqs=(2.5, 3.5, 4.5)):
@@ -166,7 +166,7 @@ def test_63_percent_reading_lags_when_T_is_short(linear_result):
     assert s.T_63 > T_TRUE + 0.005
     assert "T_short" in codes(linear_result)
     assert "dry_friction" not in codes(linear_result)
-    assert len(s.steps) == 4
+    assert len(s.rises) == 4
 
 
 def test_slow_motor_63_percent_reading_agrees():
@@ -208,7 +208,7 @@ def test_step_level_not_in_table_is_interpolated():
 def test_log_without_u_req_uses_the_applied_voltage():
     params = PlantParams(motor=MOTOR, tau_c=0.0, v_drop=V_DROP)
     full = plant_log(params)
-    log = StepLog(t=full.t, u=full.u, omega=full.omega, extra={"count": full.extra["count"]})
+    log = RunLog(t=full.t, u=full.u, omega=full.omega, extra={"count": full.extra["count"]})
     r = identify(linear_table(MOTOR), MOTOR.R, log)
     assert "u_ss_from_log" in codes(r)
     assert r.step.u_ss == pytest.approx(4.5 - V_DROP)
@@ -235,7 +235,7 @@ def test_k_divides_by_a_row_that_has_only_its_u_ss():
 def test_log_with_only_a_falling_step_is_refused():
     t = np.arange(60) * 0.025
     u = np.where(t < 0.5, 4.0, 0.0)
-    log = StepLog(t=t, u=u, omega=np.zeros(60), source="down.csv", lines=np.arange(60) + 2)
+    log = RunLog(t=t, u=u, omega=np.zeros(60), source="down.csv", lines=np.arange(60) + 2)
     with pytest.raises(InputError) as exc:
         identify(TABLE, R, log)
     assert str(exc.value).startswith("down.csv:2: expected a rising step")
@@ -287,9 +287,9 @@ def test_T_recovered_when_the_wheel_coasts_or_keeps_moving(zero_mode, low, with_
     extra = {"count": rec.count, "t_us": rec.t_us}
     if with_u_req:
         extra["u_req"] = rec.u_req
-    log = StepLog(t=rec.t, u=rec.u_A, omega=timestamp_velocity(rec.t, rec.count), extra=extra)
+    log = RunLog(t=rec.t, u=rec.u_A, omega=timestamp_velocity(rec.t, rec.count), extra=extra)
     r = identify(linear_table(MOTOR), MOTOR.R, log)
-    assert len(r.step.steps) == 4
+    assert len(r.step.rises) == 4
     assert r.step.T == pytest.approx(T_TRUE, rel=0.03)
     if with_u_req or zero_mode == "brake":
         # without u_req a coasting wheel's voltage hides where the low level began, so only a

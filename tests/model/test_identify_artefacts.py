@@ -11,12 +11,12 @@ import pytest
 
 from minseg_tui.cli import main
 from minseg_tui.cli.identify import render
-from minseg_tui.lab.saving.files import read_step_log, write_step_log
+from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.model.identify import Reading, identify
 from minseg_tui.model.identify.identification import determined
-from minseg_tui.model.steplog import (
+from minseg_tui.model.runlog import (
     CLOCK_AGREE,
-    StepLog,
+    RunLog,
     clock_problem,
     switch_on_glitches,
 )
@@ -162,7 +162,7 @@ def test_an_s_shaped_rise_is_not_called_a_dead_time():
     s = np.maximum(t - 0.3, 0.0)
     w = K * 4.0 * (1 - (T * np.exp(-s / T) - T2 * np.exp(-s / T2)) / (T - T2))
     omega = w + rng.normal(0, 0.05, n)
-    log = StepLog(t=t, u=u, omega=omega)
+    log = RunLog(t=t, u=u, omega=omega)
     r = identify([Reading(4.0, 4.0, 48.0, 50.0)], R, log)
     st = r.step
     assert st.dead_time == 0
@@ -190,11 +190,11 @@ def test_a_t_us_that_does_not_keep_time_with_t_is_refused(tmp_path, capsys):
     g = make(seed=1, stamped=True)
     assert clock_problem(g.log.t, g.log.extra["t_us"]) is None
     fast = {**g.log.extra, "t_us": np.round(g.log.t * 1e5).astype(np.int64)}  # 10x too slow
-    bad = StepLog(t=g.log.t, u=g.log.u, omega=g.log.omega, extra=fast)
+    bad = RunLog(t=g.log.t, u=g.log.u, omega=g.log.omega, extra=fast)
     said = clock_problem(bad.t, bad.extra["t_us"])
     assert said and f"within {CLOCK_AGREE * 100:g} %" in said and "0.1 times as far" in said
     path = tmp_path / "log.csv"
-    write_step_log(path, bad)
+    write_run_log(path, bad)
     (tmp_path / "table.csv").write_text(
         "u_req,u_ss,omega_ss,i_ss\n" + "".join(f"{v:g},{v - 0.45:g},30,50\n" for v in (2, 3, 4))
     )
@@ -209,12 +209,12 @@ def test_a_t_us_that_does_not_keep_time_with_t_is_refused(tmp_path, capsys):
 def test_a_ts_header_must_agree_with_t_within_two_percent(tmp_path, ts, ok):
     g = make(seed=1)
     path = tmp_path / "log.csv"
-    write_step_log(path, g.log, {"ts": ts})
+    write_run_log(path, g.log, {"ts": ts})
     if ok:
-        assert read_step_log(path).ts == pytest.approx(0.025)
+        assert read_run_log(path).ts == pytest.approx(0.025)
         return
     with pytest.raises(Exception) as exc:
-        read_step_log(path)
+        read_run_log(path)
     assert "within 2 %" in str(exc.value) and "1.04 times" not in str(exc.value)
     assert "0.9615 times the header's" in str(exc.value)
 
@@ -231,7 +231,7 @@ def test_a_ramp_that_one_time_constant_misses_is_named_as_the_gap_between_T_and_
     # ramp, 0 to 500 rad/s in 1.2 s. The 63 % reading (686 ms) and T (542 ms) are 144 ms apart,
     # 136 ms of it the ramp's shape: not the half sample (2.5 ms) a mean over the interval lags
     path = SHARED_DATA / "real-motors" / "ubc-motor-7V" / "step.csv"
-    r = identify(table(72.0), R, read_step_log(path))
+    r = identify(table(72.0), R, read_run_log(path))
     st = r.step
     assert st is not None and st.fit.shift_on_bound
     said = [o.message for o in r.observations if o.code == "T_63_differs"]

@@ -8,12 +8,12 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from minseg_tui.model.identify import RISING_STEPS, WHOLE_LOG, identify
+from minseg_tui.model.identify import RISES, WHOLE_LOG, identify
 from minseg_tui.model.identify.lsq import t975
-from minseg_tui.model.identify.stepfit import board_grid
+from minseg_tui.model.identify.risefit import board_grid
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import Plant, PlantParams
-from minseg_tui.model.steplog import StepLog, find_edges
+from minseg_tui.model.runlog import RunLog, find_edges
 from minseg_tui.model.synth import IDENT_V_DROP, identification_log, identification_table
 
 Q = 2 * math.pi / 720
@@ -111,7 +111,7 @@ def test_dry_friction_is_fitted_and_named():
         plant.advance(t[k] - plant.t)
         count[k] = plant.count
         plant.set_command(float(cmd[k]))
-    log = StepLog(
+    log = RunLog(
         t=t,
         u=np.array([params.u_applied(v) for v in cmd]),
         omega=np.concatenate(([0.0], np.diff(count) * Q / np.diff(t))),
@@ -127,11 +127,11 @@ def test_dry_friction_is_fitted_and_named():
     assert s.omega_ss == pytest.approx(PUBLISHED.K * (u_a - params.u_coulomb), rel=0.005)
 
 
-def test_a_log_whose_u_never_changes_uses_the_rising_steps():
+def test_a_log_whose_u_never_changes_uses_the_rises():
     log, T, _ = plant_log(2, grid=False, stamped=True)
     flat = replace(log, u=np.full(len(log), 3.0))  # u_req steps, u does not: nothing to model
     s = identify(TABLE, PUBLISHED.R, flat).step
-    assert s.fit.method == RISING_STEPS
+    assert s.fit.method == RISES
     assert "never changes" in s.fit.why
     assert s.T == pytest.approx(T, rel=0.02)
 

@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from minseg_tui.lab.saving.files import read_step_log
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.report import svg
@@ -142,7 +142,7 @@ def report(tmp_path_factory):
     md = w.markdown.read_text(encoding="utf-8")
     mc = s.model_check()
     step = s.results().identification.step
-    log = read_step_log(s.run_path("steps-1"))
+    log = read_run_log(s.run_path("steps-1"))
     s.close()
     return html, md, mc.result, step, log, s.folder
 
@@ -183,7 +183,7 @@ def _crossings(log) -> list[tuple[float, float, float]]:
 
 def test_the_zoomed_step_marks_the_63_percent_level_and_its_crossing(report):
     html, _, _, step, log, _ = report
-    ((fig, caption),) = [f for f in _figures(html) if f[1].startswith("One rising step")]
+    ((fig, caption),) = [f for f in _figures(html) if "reading of one rise of run" in f[1]]
     (panel,) = _panels(fig)
     to_t, to_w = _axis(panel, "x"), _axis(panel, "y")
     colors = _legend_colors(panel)
@@ -205,7 +205,7 @@ def test_the_zoomed_step_marks_the_63_percent_level_and_its_crossing(report):
 def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     html, _, result, *_ = report
     cu = result.close_up
-    ((fig, caption),) = [f for f in _figures(html) if f[1].startswith("Close-up")]
+    ((fig, caption),) = [f for f in _figures(html) if ", close-up " in f[1]]
     speed, residual, angle = _panels(fig)
     assert cu.what in caption and in_words(cu.cause) in caption
     # where the cause acts: the close-up's own window, not the whole run
@@ -239,7 +239,9 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     the figures, then the details in a fold (HTML) or a subsection (Markdown)."""
     html, md, result, _, log, _ = report
     section = md.split("## Model check", 1)[1].split("\n## ", 1)[0]
-    first = section.strip().split("\n\n", 1)[0]
+    notes, where, first = section.strip().split("\n\n")[:3]  # the group's notes, then
+    assert notes.startswith("The group")  # as on the screen: run and close-up, the story
+    assert where.startswith("Run ") and ", close-up " in where
     assert "whitened" not in first and "criterion" not in first and "coulomb" not in first
     assert "Likely cause: dry friction" in first and "constant braking torque" in first
     base, ext = result.gain["baseline_angle_rms"], result.gain["extended_angle_rms"]
@@ -271,7 +273,7 @@ def test_the_step_section_gives_k_with_its_interval_and_the_63_percent_note(repo
     _, md, _, step, _, _ = report
     section = md.split("## Step response and model", 1)[1].split("\n## ", 1)[0]
     (row,) = [ln for ln in section.splitlines() if ln.startswith("| K (Task 11")]
-    m = re.search(rf"({NUM}) rad/s/V \(({NUM}) – ({NUM}) rad/s/V\)", row)
+    m = re.search(rf"({NUM}) rad/s/V \(95 % interval ({NUM}) – ({NUM}) rad/s/V", row)
     assert m and [float(v) for v in m.groups()] == pytest.approx([step.K, *step.K_ci], rel=1e-3)
     assert step.T_63_note and step.T_63_note in section
 

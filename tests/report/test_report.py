@@ -103,7 +103,7 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             "2.05 V",
             "3.82 rad/s",
             format_number((2.05 - 5.26 * 0.0298) / 3.82),
-            f"k_v = {format_number(k_v)} V s/rad",
+            f"{format_number(k_v)} V s/rad (median of the rows",
             f"{format_number(0.65 * k_v)} N m/A",
             "a/b",
             "b/c",
@@ -114,7 +114,7 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             "y' = 0 gives y = K c",
             "steps-1",
             "runs/steps-1.csv",
-            "T, least squares",
+            "the program's value (least squares)",
             "0.09 s",
             "omega at u_A = 5 V",
             "Most likely cause: ",
@@ -276,9 +276,9 @@ def test_the_report_compares_the_groups_way_and_says_what_was_revealed(tmp_path)
     assert s.reveal("task15") == ["own.omega_5"]
     md = write_report(s).markdown.read_text(encoding="utf-8")
     s.close()
-    (row,) = [line for line in md.splitlines() if line.startswith("| your J")]
+    (row,) = [line for line in md.splitlines() if line.startswith("| J (Task 13)")]
     assert "from your T = 56.8" in row and "+0.3 %" in row and "+0 %" not in row
-    assert format_number(ident.step.J) in row and "after answering" in row
-    (row5,) = [line for line in md.splitlines() if line.startswith("| your omega at 5 V")]
+    assert format_number(ident.step.J) in row and "after the group answered" in row
+    (row5,) = [line for line in md.splitlines() if line.startswith("| omega at u_A = 5 V")]
     assert "revealed before answering" in row5
     assert "J grows in proportion to T" in md

@@ -59,7 +59,7 @@ class QuietDevice:
         self.commands.append(f"P {ts:g}")
         return ts
 
-    def step(self, low: float, high: float, half_period: float, periods: int) -> None:
+    def square_wave(self, low: float, high: float, half_period: float, periods: int) -> None:
         self.commands.append(f"STEP {low:g} {high:g} {half_period:g} {periods}")
         self.u_req = None
 
@@ -82,7 +82,7 @@ def frozen_stream(seed: int = 3, u: float = 2.5, seconds: float = 4.0) -> Sample
     return SampleBatch.from_rows(rows)
 
 
-def step_stream(first_seq: int, first_us: int, seconds: float, seed: int = 5) -> SampleBatch:
+def square_wave_stream(first_seq: int, first_us: int, seconds: float, seed: int = 5) -> SampleBatch:
     """Task 10's 25 ms plan as the board sends it, from a standing wheel: the seeded plant
     driven 0 -> 4.5 V every 1.5 s, ``seconds`` s of it, sequence numbers from ``first_seq``
     and board times from ``first_us`` (us)."""

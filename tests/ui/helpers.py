@@ -180,12 +180,12 @@ async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") ->
 
 async def start_with_a_run(pilot: Pilot[None], step_id: str) -> None:
     """A new session with the table's entries (:data:`TABLE`) and the seeded step run of
-    :func:`record_step_run`, then ``step_id`` shown and its entry focused (:func:`goto`)."""
+    :func:`record_response_run`, then ``step_id`` shown and its entry focused (:func:`goto`)."""
     app = pilot.app
     await start(pilot)
     enter_all(app, TABLE)
     with app.session as s:
-        record_step_run(s)
+        record_response_run(s)
     await goto(pilot, step_id)
 
 
@@ -268,7 +268,7 @@ async def taken(pilot: Pilot[None], total: int) -> None:
     raise AssertionError(f"the stream worker took {app.live.total} of {total} samples")
 
 
-def record_step_run(session: Session, seed: int = 5) -> str:
+def record_response_run(session: Session, seed: int = 5) -> str:
     """Task 10's 25 ms plan on the seeded plant, appended to the session's Recorder as a board
     would send it; the run's name."""
     plan = dict(step("task10").plans)["manual"]

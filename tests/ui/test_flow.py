@@ -26,7 +26,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     resume,
     settle,
     shown,
@@ -44,7 +44,7 @@ def _chosen(app, key: str) -> tuple[int, ...]:
 
 def _run_in_use(app) -> str | None:
     with app.session as s:
-        run = s.step_run()
+        run = s.response_run()
     return run.name if run else None
 
 
@@ -188,7 +188,7 @@ async def test_resume_on_a_step_with_a_panel(quiet, step_id):
             assert app2.screen.query_one("#table", DataTable).row_count == 3
 
 
-async def test_step_log_keys_work_whatever_has_focus_but_leave_typing_alone(quiet):
+async def test_run_log_keys_work_whatever_has_focus_but_leave_typing_alone(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task2")
@@ -257,7 +257,7 @@ async def test_the_palette_picks_the_run_tasks_11_to_15_use(quiet):
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            first, second = record_step_run(s, seed=5), record_step_run(s, seed=6)
+            first, second = record_response_run(s, seed=5), record_response_run(s, seed=6)
         texts = [t for t, _, _ in StepCommands(app.screen).entries()]
         assert (
             f"Use run {first} for Tasks 11-15" in texts

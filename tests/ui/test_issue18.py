@@ -9,7 +9,6 @@ import json
 
 import pytest
 from textual.widgets import OptionList
-from textual.widgets._toast import Toast
 
 from minseg_tui.device.protocol import Ident
 from minseg_tui.lab.saving.store import SessionNotWritable
@@ -50,7 +49,9 @@ async def test_a_step_without_k_says_what_is_missing_on_every_resume(quiet, tmp_
 
 
 def _toasts(app) -> str:
-    return " ".join(str(t.render()) for t in app.screen.query(Toast))
+    """The notifications shown (Textual's Toast widgets, found by their type name: the
+    class itself is not exported)."""
+    return " ".join(str(t.render()) for t in app.screen.query("Toast"))
 
 
 async def test_names_with_markup_are_shown_as_typed_and_keep_the_folder_open(tmp_path):

@@ -16,7 +16,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     resume,
     settle,
     start,
@@ -39,8 +39,8 @@ async def test_the_chosen_run_survives_a_new_run_a_quit_and_a_resume(quiet):
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            chosen = record_step_run(s, seed=5)
-            record_step_run(s, seed=6)
+            chosen = record_response_run(s, seed=5)
+            record_response_run(s, seed=6)
         app.screen.use_run(chosen)
         await goto(pilot, "task10")
         await start_run_on(pilot, dev)
@@ -58,7 +58,7 @@ async def test_the_chosen_run_survives_a_new_run_a_quit_and_a_resume(quiet):
     async with again.run_test(size=(80, 24)) as pilot:
         await resume(pilot)
         with again.session as s:
-            assert s.step_run().name == chosen
+            assert s.response_run().name == chosen
             ended = next(r for r in s.runs if r.name == recording)
             assert ended.interrupted and ended.interruption == "quit"
             assert s.recovered == []
@@ -81,14 +81,14 @@ def _stopped_run(session: Session) -> str:
 def test_without_a_choice_the_newest_complete_25_ms_run_is_used(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:
         enter_all_session(s)
-        complete = record_step_run(s)
+        complete = record_response_run(s)
         _stopped_run(s)  # newer, but interrupted
         fast = dict(step("task10").plans)["fast"]
         rec = s.start_run("fast", fast)
         for k in range(200):
             rec.append(k, k * 5_000, k, 4500)
         assert s.finish_run(rec) is not None  # newer, complete, but 5 ms
-        assert s.step_run().name == complete
+        assert s.response_run().name == complete
         assert build(s).sections  # the report is built from it
 
 
@@ -102,7 +102,7 @@ def test_an_old_session_file_follows_the_same_rule(tmp_path):
     'selected_run'): an interrupted newest run is not used, and says its cause is unknown."""
     with Session.create(tmp_path, ["A"]) as s:
         enter_all_session(s)
-        complete = record_step_run(s)
+        complete = record_response_run(s)
         stopped = _stopped_run(s)
         folder = s.folder
     path = folder / "session.json"
@@ -113,7 +113,7 @@ def test_an_old_session_file_follows_the_same_rule(tmp_path):
         r.pop("ended_by", None)
     path.write_text(json.dumps(data))
     with Session.open(folder) as old:
-        assert old.step_run().name == complete
+        assert old.response_run().name == complete
         (r,) = [r for r in old.runs if r.name == stopped]
         assert r.interrupted and r.interruption == "cause not recorded"
         header = _runs_table(old).header

@@ -6,12 +6,12 @@ from __future__ import annotations
 
 import pytest
 from textual.geometry import Region
-from textual.widgets import Footer, Input
-from textual.widgets._footer import FooterKey
+from textual.widgets import Input
 
 from minseg_tui.ui.panels.results import StepPlot
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
 from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.helpers import goto, settle, start_with_a_run
 
@@ -51,9 +51,9 @@ async def test_typing_on_the_model_checks_fold_goes_into_its_notes(quiet):
 
 def _footer_keys(app) -> list[tuple[str, Region]]:
     """The keys the footer shows ('f9 Zoom') and where, the palette's last."""
-    footer = app.screen.query_one(Footer)
-    keys = [k for k in footer.query(FooterKey) if k.display]
-    keys.sort(key=lambda k: k.has_class("-command-palette"))
+    footer = app.screen.query_one(KeyFooter)
+    keys = [k for k in footer.query(KeyLabel) if k.display]
+    keys.sort(key=lambda k: k.has_class("-palette"))
     return [(f"{k.key_display} {k.description}".strip(), k.region) for k in keys]
 
 

@@ -16,7 +16,7 @@ from tests.ui.helpers import (
     burst,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     resume,
     settle,
     start,
@@ -27,7 +27,7 @@ async def _lab_with_a_run(app, pilot) -> None:
     await start(pilot)
     enter_all(app, TABLE)
     with app.session as s:
-        record_step_run(s)
+        record_response_run(s)
 
 
 async def test_a_burst_of_arrow_keys_scrolls_as_many_lines(quiet):

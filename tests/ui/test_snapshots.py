@@ -6,12 +6,12 @@ from __future__ import annotations
 import pytest
 
 from tests.ui.conftest import quiet_app
-from tests.ui.fakes import METER, QuietDevice, frozen_stream, step_stream
+from tests.ui.fakes import METER, QuietDevice, frozen_stream, square_wave_stream
 from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     settle,
     start,
     start_run_on,
@@ -34,7 +34,7 @@ def _to(
         enter_all(app, entries or {})
         if run:
             with app.session as s:
-                record_step_run(s)
+                record_response_run(s)
         if live:
             app.live.extend(frozen_stream())
         app.meter = METER
@@ -105,7 +105,7 @@ def test_step_run_mid_run(snap_compare, tmp_path, size):
         enter_all(app, TABLE)
         await goto(pilot, "task10")
         seq = await start_run_on(pilot, dev)
-        dev.feed(step_stream(seq, (seq + 1) * 25_000, 4.0))
+        dev.feed(square_wave_stream(seq, (seq + 1) * 25_000, 4.0))
         await taken(pilot, seq + 160)
 
     assert snap_compare(

@@ -15,7 +15,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     settle,
     start,
     start_with_a_run,
@@ -37,7 +37,7 @@ async def test_f_is_asked_for_in_the_unit_the_table_shows_it_in(quiet):
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            record_step_run(s)
+            record_response_run(s)
         await goto(pilot, "table")
         with app.session as s:
             f = s.results().identification.f
@@ -120,7 +120,7 @@ async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(qu
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         with app.session as s:
-            record_step_run(s)
+            record_response_run(s)
         await goto(pilot, "task11")
         await settle(pilot)
         note = str(app.screen.query_one("#zoom-note").render())

@@ -23,7 +23,7 @@ from tests.ui.helpers import (
     Heard,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     settle,
     shown,
     start,
@@ -49,10 +49,10 @@ async def test_the_run_list_keeps_the_run_in_use_after_an_interrupted_run(quiet)
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            used = record_step_run(s, seed=5)
+            used = record_response_run(s, seed=5)
             quit_run = _interrupted(s, "quit")
             cable_run = _interrupted(s, "cable")
-            assert s.step_run().name == used
+            assert s.response_run().name == used
         await goto(pilot, "task10", focus=None)
         panel = app.screen.query_one(StepRunPanel)
 

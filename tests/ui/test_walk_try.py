@@ -18,7 +18,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
-    record_step_run,
+    record_response_run,
     settle,
     start,
     start_with_a_run,
@@ -82,7 +82,7 @@ async def test_every_plot_shows_its_title_at_80x24(quiet, step_id):
         await start(pilot)
         enter_all(app, TABLE)
         with app.session as s:
-            record_step_run(s)
+            record_response_run(s)
         await goto(pilot, step_id)
         canvases = list(app.screen.query(Canvas))
         assert canvases

@@ -72,7 +72,9 @@ def check_answer(chk: Check, answer: object, entries: Mapping[str, object]) -> F
     if not isinstance(answer, Formula | float):
         return Feedback(chk.key, "missing", "no answer yet")
     if _same(answer, chk.expected, fld.names, env, chk.rel_tol, chk.abs_tol):
-        return Feedback(chk.key, "right", f"right: {chk.explain}" if chk.explain else "right")
+        return Feedback(
+            chk.key, "right", f"{chk.holds}: {chk.explain}" if chk.explain else chk.holds
+        )
     for wrong, message in chk.mistakes:
         if _same(answer, wrong, fld.names, env, chk.rel_tol, chk.abs_tol):
             return Feedback(chk.key, "wrong", message)

@@ -31,6 +31,10 @@ from minseg_tui.quantities import Plausible
 FieldKind = Literal["quantity", "formula", "choice", "text"]
 Status = Literal["right", "wrong", "missing"]
 
+CONSISTENT = "consistent with your readings"
+"""What a check says of an answer it can only compare with the group's own readings (the
+figure of Preparation 7 is not in the program, so its readings cannot be checked)."""
+
 LEVELS: tuple[float, ...] = (2.5, 3.5, 4.5)
 """Requested voltages u_req (V) of Tasks 4-5, one table row each."""
 
@@ -73,7 +77,9 @@ class Check:
     formula whose value (SI) the answer must match; it may use other entries through
     ``env`` (name -> entry key), e.g. the oven's K from the final temperature typed.
     ``mistakes`` are typical wrong answers (formula, what to say); ``correct`` are the
-    right option indices of a choice; ``explain`` is said when the answer is right.
+    right option indices of a choice; ``explain`` is said when the answer is right;
+    ``holds``: the word for an answer that passes, "right", or :data:`CONSISTENT` where the
+    check can only compare the answer with the group's own readings, not with the truth.
     """
 
     key: str
@@ -84,6 +90,7 @@ class Check:
     mistakes: tuple[tuple[str, str], ...] = ()
     correct: tuple[int, ...] = ()
     explain: str = ""
+    holds: str = "right"
 
 
 @dataclass(frozen=True)
@@ -156,6 +163,12 @@ def _note(key: str) -> Field:
     return Field(key, "notes", kind="text", optional=True, hint="your own notes (not checked)")
 
 
+def _done(step_id: str, what: str) -> Field:
+    """The field of a step that asks only to read, or to see for oneself what its text already
+    says: the group picks ``what`` (what they did) once they did it, and the step is done."""
+    return Field(f"{step_id}.done", "done?", kind="choice", options=(what,))
+
+
 _MOTOR = ("R", "J", "f", "k_v", "k_a")
 
 _PREPARATION: tuple[Step, ...] = (
@@ -164,8 +177,9 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation",
         "Preparation 1: reading",
         "Know what a first-order system and its step response are before the lab.",
-        "Read sections 2.1 and 2.6 of Ljung & Glad. Nothing to check here; jot down questions.",
-        fields=(_note("prep1.notes"),),
+        "Read sections 2.1 and 2.6 of Ljung & Glad and jot down questions; nothing is checked "
+        "here. Say when you have read them.",
+        fields=(_note("prep1.notes"), _done("prep1", "we have read sections 2.1 and 2.6")),
     ),
     Step(
         "prep2",
@@ -173,8 +187,12 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation 2: the step response solves the equation",
         "Convince yourself that y(t) = K(1 - e^(-t/T))c satisfies T y' = -y + K u for a step of size c.",
         "Differentiate the proposed y(t), put y and y' into the equation and see that both sides "
-        "agree for t > 0; check y(0) = 0 too. Do not solve the equation from scratch.",
-        fields=(_note("prep2.notes"),),
+        "agree for t > 0; check y(0) = 0 too. Do not solve the equation from scratch. Say when "
+        "it checks out.",
+        fields=(
+            _note("prep2.notes"),
+            _done("prep2", "both sides agree, and y(0) = 0"),
+        ),
     ),
     Step(
         "prep3",
@@ -182,8 +200,8 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation 3: where the output settles",
         "See two ways that the step response ends at K c.",
         "Let t grow without bound in the solution; then, separately, set y' = 0 in the equation "
-        "(nothing changes any more in steady state) and solve for y.",
-        fields=(_note("prep3.notes"),),
+        "(nothing changes any more in steady state) and solve for y. Say when both give K c.",
+        fields=(_note("prep3.notes"), _done("prep3", "both ways give K c")),
     ),
     Step(
         "prep4",
@@ -263,7 +281,9 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation 7: an oven's time constant and gain",
         "Read T and K of a first-order system off a recorded step response.",
         "In Figure 2.1 the heater goes from 0 to 1000 W at t = 4 min. Read the final temperature "
-        "and the time at which 63 % of it is reached, then give T and K.",
+        "and the time at which 63 % of it is reached, then give T and K. The program does not "
+        "have the figure: it checks that your T and K follow from your readings, not the "
+        "readings themselves.",
         fields=(
             Field("prep7.y_final", "final temperature", unit="°C"),
             Field("prep7.t_63", "time at 63 % (figure's axis)", unit="min"),
@@ -281,6 +301,7 @@ _PREPARATION: tuple[Step, ...] = (
                     ("t_63", "the heater came on at t = 4 min, not at 0: count T from there"),
                 ),
                 explain="T is the time from the step to 63 % of the final value",
+                holds=CONSISTENT,
             ),
             Check(
                 "prep7.K",
@@ -291,6 +312,7 @@ _PREPARATION: tuple[Step, ...] = (
                     ("y_final", "divide the final temperature by the step in power, 1000 W"),
                 ),
                 explain="K = final temperature / input step (the room is at 0 °C)",
+                holds=CONSISTENT,
             ),
         ),
     ),
@@ -327,8 +349,9 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation",
         "Preparation 9: read the whole lab",
         "Arrive knowing every task and which answers the preparations feed into.",
-        "Read through all the steps of this program; the remaining preparations are met on the way.",
-        fields=(_note("prep9.notes"),),
+        "Read through all the steps of this program; the remaining preparations are met on the "
+        "way. Say when you have read them.",
+        fields=(_note("prep9.notes"), _done("prep9", "we have read every step")),
     ),
     Step(
         "prep10",
@@ -398,8 +421,9 @@ _PREPARATION: tuple[Step, ...] = (
         "Preparation 13: one equation for the motor",
         "Eliminate the current between the electrical and the mechanical equation.",
         "Solve the electrical equation (L = 0) for i, put it into k_a i = J omega' + f omega and "
-        "multiply by R; you should reach R J omega' = -(R f + k_v k_a) omega + k_a u_A.",
-        fields=(_note("prep13.notes"),),
+        "multiply by R; you should reach R J omega' = -(R f + k_v k_a) omega + k_a u_A. Say "
+        "when you have.",
+        fields=(_note("prep13.notes"), _done("prep13", "we reached that equation")),
     ),
     Step(
         "prep14",
@@ -641,7 +665,7 @@ _LAB: tuple[Step, ...] = (
                 unit="rad/s",
                 optional=True,
                 compare="step.omega_ss",
-                hint="in rad/s, e.g. 31.4",
+                hint="in rad/s, e.g. 4.6",
             ),
             Field(
                 "own.K",
@@ -649,7 +673,7 @@ _LAB: tuple[Step, ...] = (
                 unit="rad/s/V",
                 optional=True,
                 compare="step.K",
-                hint="in rad/s/V, e.g. 12.5",
+                hint="in rad/s/V, e.g. 1.2",
             ),
         ),
         actions=("results",),
@@ -668,7 +692,7 @@ _LAB: tuple[Step, ...] = (
                 unit="s",
                 optional=True,
                 compare="step.T_63",
-                hint="in s or ms, e.g. 0.25 s or 250 ms",
+                hint="in s or ms, e.g. 0.12 s or 120 ms",
             ),
         ),
         actions=("results",),
@@ -686,7 +710,7 @@ _LAB: tuple[Step, ...] = (
                 unit="kg m^2",
                 optional=True,
                 compare="step.J",
-                hint="in kg m^2, e.g. 0.00004",
+                hint="in kg m^2, e.g. 0.0008",
             ),
         ),
         actions=("results",),
@@ -713,7 +737,7 @@ _LAB: tuple[Step, ...] = (
                 unit="rad/s",
                 optional=True,
                 compare="omega_at_5V",
-                hint="in rad/s, e.g. 60",
+                hint="in rad/s, e.g. 5.8",
             ),
         ),
         actions=("results",),

@@ -1,4 +1,4 @@
-"""Reading one of the lab's CSV files (a table, a step log) in bounded memory and time.
+"""Reading one of the lab's CSV files (a table, a run log) in bounded memory and time.
 
 The file is streamed: lines are split, checked and turned into columns of numbers a block
 of rows at a time, so memory grows with the numbers kept (8 bytes each), not with the
@@ -35,7 +35,7 @@ MAX_LINE_BYTES: int = 4096
 131072 characters per field)."""
 
 MAX_FILE_BYTES: int = 512 * 2**20
-"""Most bytes read from one file (a 2-million-row step log is about 200 MB)."""
+"""Most bytes read from one file (a 2-million-row run log is about 200 MB)."""
 
 PIPE_WAIT_S: float = 10.0
 """Longest wait for data from a pipe, FIFO or device, s."""

@@ -1,9 +1,9 @@
-"""The lab's two file formats: the table of steady-state readings and step logs.
+"""The lab's two file formats: the table of steady-state readings and run logs.
 
 TABLE.csv: header ``u_req,u_ss,omega_ss,i_ss`` (V, V, rad/s, mA, the manual's units), one
 row per requested voltage.
 
-Step log: CSV with a header row; ``#`` comment lines anywhere (``# key: value`` lines
+Run log: CSV with a header row; ``#`` comment lines anywhere (``# key: value`` lines
 before the header are metadata, such as the sample period and the source); required
 columns ``t`` (s), ``u`` (V applied to the motor, u_A, in force from this row on) and
 ``omega`` (rad/s as measured); any others (``u_req``, ``theta``, ``count``, ``t_us``, ...)
@@ -29,7 +29,7 @@ from numpy.typing import NDArray
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steplog import StepLog, clock_problem, command, find_edges, header_problem
+from minseg_tui.model.runlog import RunLog, clock_problem, command, find_edges, header_problem
 from minseg_tui.quantities import NUMBER
 
 TABLE_COLUMNS: dict[str, str] = {
@@ -41,7 +41,7 @@ TABLE_COLUMNS: dict[str, str] = {
 """Columns of TABLE.csv and their units."""
 
 LOG_REQUIRED: dict[str, str] = {"t": "s", "u": "V", "omega": "rad/s"}
-"""Required columns of a step log and their units."""
+"""Required columns of a run log and their units."""
 
 LOG_NUMERIC: dict[str, str] = {
     "u_req": "V",
@@ -52,13 +52,13 @@ LOG_NUMERIC: dict[str, str] = {
     "current": "A",
     "omega_true": "rad/s",
 }
-"""Optional step-log columns that must hold numbers when present."""
+"""Optional run-log columns that must hold numbers when present."""
 
 MAX_TABLE_ROWS: int = 1000
 """Most rows a table may have (one per requested voltage; the lab's tables have about ten)."""
 
 MAX_LOG_ROWS: int = 2_000_000
-"""Most rows a step log may have: what the link keeps of one recording, 67 min of samples
+"""Most rows a run log may have: what the link keeps of one recording, 67 min of samples
 at the board's fastest period of 2 ms."""
 
 LIMITS: dict[str, tuple[float, str]] = {
@@ -204,11 +204,11 @@ def write_table(path: str | Path, readings: list[Reading]) -> None:
     Path(path).write_text("\n".join(lines) + "\n", encoding="utf-8")
 
 
-# -- step logs ---------------------------------------------------------------------------------
+# -- run logs ---------------------------------------------------------------------------------
 
 
-def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
-    """A step log (see the module docstring) as a StepLog, ``source`` the path as given.
+def read_run_log(path: str | Path, require_step: bool = True) -> RunLog:
+    """A run log (see the module docstring) as a RunLog, ``source`` the path as given.
 
     Refuses (InputError naming file and line): a header field the log format defines with a
     value it does not allow (``# cpr:`` not a whole number above 0, ``# omega_over:`` other
@@ -217,7 +217,7 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
     count, t_us, seq, ...), a value beyond what a MinSeg produces (LIMITS, UINT32_COLUMNS),
     more than MAX_LOG_ROWS rows, time (t, or t_us modulo 2^32) that does not increase, a
     ``# ts:`` header more than TS_AGREE (2 %) from t's median interval, a t_us that does not
-    keep time with t (within steplog.CLOCK_AGREE, 2 %), and, unless ``require_step``
+    keep time with t (within runlog.CLOCK_AGREE, 2 %), and, unless ``require_step``
     is False, a log in which the command (u_req, else u) never steps or u is 0 on every
     row while u_req steps (no voltage on the motor: no K). Unknown columns are kept: as
     numbers when every field is one, else as text.
@@ -273,7 +273,7 @@ def read_step_log(path: str | Path, require_step: bool = True) -> StepLog:
         refused = clock_problem(t, extra["t_us"])
         if refused:
             raise InputError(f.source, int(lines[0]), refused)
-    log = StepLog(
+    log = RunLog(
         t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines
     )
     if require_step:
@@ -305,10 +305,8 @@ def _format_column(values: NDArray[Any]) -> list[str]:
     return [str(v) for v in values]
 
 
-def write_step_log(
-    path: str | Path, log: StepLog, metadata: Mapping[str, str] | None = None
-) -> None:
-    """Write ``log`` as a step log: ``# key: value`` lines (the log's metadata, updated with
+def write_run_log(path: str | Path, log: RunLog, metadata: Mapping[str, str] | None = None) -> None:
+    """Write ``log`` as a run log: ``# key: value`` lines (the log's metadata, updated with
     ``metadata``), then the header t,u,omega,<extra columns>, then one row per sample."""
     meta = {"format": "minseg-tui step log 1", **dict(log.metadata), **dict(metadata or {})}
     names = log.columns

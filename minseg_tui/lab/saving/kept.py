@@ -76,7 +76,7 @@ MAX_LOG = 64 << 20
 
 
 @dataclass(frozen=True)
-class StepFigures:
+class ResponseFigures:
     """Tasks 11-13's numbers of a run: K (rad/s/V), the least-squares T (s), the 63 %
     reading T_63 (s, None when no step crossed 63 %), the applied voltage u_ss K divides by
     (V), the fitted steady speed omega_ss (rad/s), the dead time (s) and J (kg m^2; NaN
@@ -112,7 +112,7 @@ class Kept:
 
     run: str
     key: str
-    step: StepFigures | None = None
+    step: ResponseFigures | None = None
     check: CheckFigures | None = None
 
     def merged(self, other: Kept) -> Kept:
@@ -166,9 +166,9 @@ def _map(x: object) -> dict[str, object]:
     return {str(k): v for k, v in x.items()}
 
 
-def _step(d: object) -> StepFigures:
+def _step(d: object) -> ResponseFigures:
     m = _map(d)
-    return StepFigures(
+    return ResponseFigures(
         K=_finite(m["K"]),
         T=_finite(m["T"]),
         T_63=None if m["T_63"] is None else _finite(m["T_63"]),
@@ -245,7 +245,7 @@ __all__ = [
     "VERSION",
     "CheckFigures",
     "Kept",
-    "StepFigures",
+    "ResponseFigures",
     "from_json",
     "read",
     "run_key",

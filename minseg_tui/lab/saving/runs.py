@@ -1,10 +1,10 @@
-"""Recorded runs: the stream written to disk while it arrives, then kept as a step log.
+"""Recorded runs: the stream written to disk while it arrives, then kept as a run log.
 
 While a run records, raw samples (``seq, t_us, count, u_mV`` as the board sends them) are
 appended to ``runs/<name>.partial`` in chunks, each chunk written and fsynced at most
 :data:`FLUSH_INTERVAL` s after its first sample arrived: a crash or kill -9 loses at most
 that much of the stream. When the run ends (or, after a crash, when the session is opened
-again) the samples become ``runs/<name>.csv``, a step log in the shared format
+again) the samples become ``runs/<name>.csv``, a run log in the shared format
 (:mod:`minseg_tui.lab.saving.files`), written atomically, with the columns
 
     t (s, board time from the first sample), u (V: the voltage asked of the board, u_req;
@@ -38,11 +38,11 @@ from typing import Any
 import numpy as np
 
 from minseg_tui.device.samples import SampleBatch
-from minseg_tui.lab.saving.files import read_step_log, write_step_log
+from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.lab.saving.schema import PARTIAL_HEADER
 from minseg_tui.lab.saving.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
 from minseg_tui.model.identify import u_ss_at, u_ss_words
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
 from minseg_tui.units import COUNTS_PER_REV
 
@@ -75,7 +75,7 @@ U_AS_SENT = (
 """The ``# u:`` header of a recording as written: its u column is what the board was asked."""
 
 
-STEP_KINDS: tuple[str, ...] = ("steps", "fast", "imported")
+RESPONSE_KINDS: tuple[str, ...] = ("steps", "fast", "imported")
 """The kinds of run Tasks 11-15 can read the steps of."""
 
 ENDED_BY: dict[str, str] = {
@@ -432,8 +432,8 @@ def _unwrap(values: np.ndarray, bits: int = 32) -> np.ndarray:
     )
 
 
-def build_log(raw: RawRun, ts: float) -> tuple[StepLog, int]:
-    """The step log of a raw run as the board sent it (its u column is u_req: see
+def build_log(raw: RawRun, ts: float) -> tuple[RunLog, int]:
+    """The run log of a raw run as the board sent it (its u column is u_req: see
     :func:`applied_log`), and the number of samples lost on the link.
 
     Samples whose (unwrapped) board time does not increase are dropped (a repeated line).
@@ -468,7 +468,7 @@ def build_log(raw: RawRun, ts: float) -> tuple[StepLog, int]:
                 if not isinstance(raw.header[k], str)
                 else str(raw.header[k])
             )
-    log = StepLog(
+    log = RunLog(
         t=t,
         u=u_req.copy(),
         omega=omega,
@@ -485,19 +485,19 @@ def build_log(raw: RawRun, ts: float) -> tuple[StepLog, int]:
     return log, dropped
 
 
-def write_log_atomic(path: Path, log: StepLog) -> None:
-    """Write ``log`` with :func:`minseg_tui.lab.saving.files.write_step_log`, atomically."""
+def write_log_atomic(path: Path, log: RunLog) -> None:
+    """Write ``log`` with :func:`minseg_tui.lab.saving.files.write_run_log`, atomically."""
     path = Path(path)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.build")
     try:
-        write_step_log(tmp, log)
+        write_run_log(tmp, log)
         atomic_write_bytes(path, tmp.read_bytes())
     finally:
         with contextlib.suppress(FileNotFoundError):
             tmp.unlink()
 
 
-def applied_log(log: StepLog, table: Sequence[tuple[float, float]]) -> StepLog:
+def applied_log(log: RunLog, table: Sequence[tuple[float, float]]) -> RunLog:
     """``log`` of a recorded run as the lab reads it: its u column u_A, mapped from its u_req
     through the table's (u_req, u_ss) pairs (:func:`applied_voltage`), the metadata saying
     how. A log without u_req (recorded elsewhere) is returned as it is."""
@@ -507,17 +507,17 @@ def applied_log(log: StepLog, table: Sequence[tuple[float, float]]) -> StepLog:
     meta = {**log.metadata, "u": how}
     meta.setdefault("cpr", str(COUNTS_PER_REV))  # runs recorded before these were written
     meta.setdefault("omega_over", OMEGA_OVER)
-    return StepLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta)
+    return RunLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta)
 
 
 def read_run(
     folder: Path, run: RunInfo, table: Sequence[tuple[float, float]], require_step: bool = False
-) -> StepLog:
+) -> RunLog:
     """Run ``run`` of the session in ``folder`` read back, its u column the applied voltage
     from ``table`` for a recorded run (:func:`applied_log`), as it stands for an imported
     one. InputError (file and line) when its file is damaged (or, with ``require_step``,
     holds no step)."""
-    log = read_step_log(folder / run.file, require_step=require_step)
+    log = read_run_log(folder / run.file, require_step=require_step)
     return log if run.kind == "imported" else applied_log(log, table)
 
 
@@ -572,13 +572,13 @@ def keep_run(
 
 
 def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
-    """Copy the step log at ``path`` (checked by read_step_log; InputError with file and line
+    """Copy the run log at ``path`` (checked by read_run_log; InputError with file and line
     if it is not one) into ``folder/runs/<name>.csv``; its record."""
-    log = read_step_log(Path(path))
+    log = read_run_log(Path(path))
     file = f"{RUNS_DIR}/{name}.csv"
     write_log_atomic(
         folder / file,
-        StepLog(
+        RunLog(
             t=log.t,
             u=log.u,
             omega=log.omega,

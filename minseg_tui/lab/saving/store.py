@@ -1,7 +1,7 @@
 """Session files on disk: atomic writes, the session file's schema, the lock, the list.
 
 A session is a folder ``<sessions>/<id>/`` holding ``session.json`` (what the group
-entered; schema :data:`SCHEMA`), ``runs/<name>.csv`` (recorded runs as step logs),
+entered; schema :data:`SCHEMA`), ``runs/<name>.csv`` (recorded runs as run logs),
 ``runs/<name>.partial`` while a run is being recorded, ``lock`` (locked by the program
 that has it open, :mod:`minseg_tui.lock`) and the reports.
 

@@ -38,6 +38,10 @@ ANSWERED_FIRST: tuple[str, ...] = (
 )
 """The fields of Tasks 11-15 the group answers before the computed value is shown."""
 
+REVEALED_EARLY = "revealed before answering"
+"""Said of a computed value a lab assistant showed before the group answered (the TUI's
+comparisons and the report)."""
+
 
 @dataclass(frozen=True)
 class Policy:
@@ -166,7 +170,14 @@ def compare_fields(
                 lsq = _model(st.T, st.K)
                 if T_m is not None:
                     computed = _model(T_m, K_m)
-                    how = "with your T and K" if own_T is not None and own_K is not None else ""
+                    how = (
+                        "with your T and K"
+                        if own_T is not None and own_K is not None
+                        else "with "
+                        + ("your T" if own_T is not None else "the 63 % reading T")
+                        + " and "
+                        + ("your K" if own_K is not None else "the least-squares K")
+                    )
                     why = "The least-squares model uses the fitted T and K."
                     if computed == lsq:
                         lsq, why = None, ""
@@ -238,6 +249,7 @@ def reveal_keys(fields: Sequence[Field], answered: Collection[str]) -> list[str]
 __all__ = [
     "ANSWERED_FIRST",
     "POLICY_FILE",
+    "REVEALED_EARLY",
     "Policy",
     "compare_fields",
     "concealed",

@@ -4,7 +4,7 @@ Nothing here is stored: :func:`compute` derives Tasks 6-15 with
 :func:`minseg_tui.model.identify.identify` from R, the table's complete rows and the run
 Tasks 11-15 use, and :func:`check_run` runs the model check on a recorded run. The
 dataclasses are what :class:`~minseg_tui.lab.state.session.Session` hands to the UI and the report.
-:func:`step_figures` and :func:`check_figures` take from them what the session file keeps
+:func:`response_figures` and :func:`check_figures` take from them what the session file keeps
 (:mod:`minseg_tui.lab.saving.kept`); :func:`compute` given kept figures does not fit the run
 again.
 """
@@ -16,12 +16,12 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.saving.kept import CheckFigures, StepFigures
+from minseg_tui.lab.saving.kept import CheckFigures, ResponseFigures
 from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.identify import U_TASK15, Identification, Reading, StepResult, identify
+from minseg_tui.model.identify import U_TASK15, Identification, Reading, ResponseResult, identify
 from minseg_tui.model.motor import inertia_from_time_constant
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import format_number
 
 
@@ -57,23 +57,23 @@ class Results:
     not far enough), the run used for Tasks 11-15 (None without one), and ``problems``:
     one line each for what keeps a result from being computed.
 
-    ``kept_step``: Tasks 11-13's numbers as the session file keeps them, when :func:`compute`
+    ``kept_response``: Tasks 11-13's numbers as the session file keeps them, when :func:`compute`
     was given them instead of fitting the run (``identification.step`` is then None and its
     observations are the table's only); :attr:`step` gives them either way."""
 
     identification: Identification | None
     run: str | None
     problems: tuple[str, ...] = ()
-    kept_step: StepFigures | None = None
+    kept_response: ResponseFigures | None = None
 
     @property
-    def step(self) -> StepFigures | None:
+    def step(self) -> ResponseFigures | None:
         """Tasks 11-13's numbers (J included): of the identification's step, else the kept
         ones; None without a step result."""
         ident = self.identification
         if ident is not None and ident.step is not None:
-            return step_figures(ident.step)
-        return self.kept_step
+            return response_figures(ident.step)
+        return self.kept_response
 
     def to_json(self) -> dict[str, object] | None:
         """The --json dict of ``minseg-tui identify`` for these results, or None (with kept
@@ -81,7 +81,7 @@ class Results:
         if self.identification is None:
             return None
         out = self.identification.to_json()
-        k = self.kept_step
+        k = self.kept_response
         if k is not None and "step" not in out:
             out["step"] = {
                 "K": k.K,
@@ -150,9 +150,9 @@ class ModelCheck:
     problem: str = ""
 
 
-def step_figures(st: StepResult) -> StepFigures:
+def response_figures(st: ResponseResult) -> ResponseFigures:
     """What the session file keeps of a step result (and J)."""
-    return StepFigures(
+    return ResponseFigures(
         K=st.K,
         T=st.T,
         T_63=st.T_63,
@@ -183,7 +183,7 @@ def compute(
     run: RunInfo | None,
     folder: Path,
     u_ss_table: Sequence[tuple[float, float]] | None = None,
-    kept: StepFigures | None = None,
+    kept: ResponseFigures | None = None,
 ) -> Results:
     """Tasks 6-15 from R (ohm), the table's complete rows and the run Tasks 11-15 use (its
     log read from ``folder``); every reason a result is missing becomes a problem line.
@@ -192,7 +192,7 @@ def compute(
     the mapping K divides by (default: the complete rows'), as the run's u column uses it.
     ``kept``: Tasks 11-13's numbers of ``run`` as the session file keeps them (computed
     from this very log and table, :func:`minseg_tui.lab.saving.kept.read`): the run is then
-    neither read nor fitted again, J follows from them and the table (``kept_step``)."""
+    neither read nor fitted again, J follows from them and the table (``kept_response``)."""
     problems: list[str] = []
     if R is None:
         problems.append("R is not entered yet (Task 2)")
@@ -205,7 +205,7 @@ def compute(
             readings.append(r)
     if not readings:
         problems.append("no complete row in the table yet (u_ss, omega_ss and i_ss; Tasks 4-5)")
-    log: StepLog | None = None
+    log: RunLog | None = None
     if run is not None and kept is None:
         try:
             table = [(r.u_req, r.u_ss) for r in complete_rows] if u_ss_table is None else u_ss_table
@@ -264,5 +264,5 @@ __all__ = [
     "check_figures",
     "check_run",
     "compute",
-    "step_figures",
+    "response_figures",
 ]

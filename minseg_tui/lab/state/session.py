@@ -54,11 +54,11 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.expr import Formula
 from minseg_tui.lab.content.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
 from minseg_tui.lab.saving import kept as kept_results
-from minseg_tui.lab.saving.kept import Kept, StepFigures
+from minseg_tui.lab.saving.kept import Kept, ResponseFigures
 from minseg_tui.lab.saving.runs import (
     FLUSH_INTERVAL,
     PARTIAL_SUFFIX,
-    STEP_KINDS,
+    RESPONSE_KINDS,
     RawRun,
     Recorder,
     RunInfo,
@@ -98,11 +98,11 @@ from minseg_tui.lab.state.results import (
     check_figures,
     check_run,
     compute,
-    step_figures,
+    response_figures,
 )
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 
 Clock = Callable[[], datetime]
 
@@ -391,7 +391,7 @@ class Session:
         """Put into ``_data`` what the session computed of the run in use and the file does
         not keep yet (merged with the file's record of the same key); True when it did."""
         got = self._cache.kept
-        run = self.step_run()
+        run = self.response_run()
         if got is None or run is None or got[0] != (self._run_version, run.name):
             return False
         old = kept_results.from_json(self._data.get("kept"))
@@ -406,14 +406,14 @@ class Session:
         self,
         run: RunInfo,
         table: Sequence[tuple[float, float]],
-        step: StepFigures | None = None,
+        step: ResponseFigures | None = None,
         check: ModelCheck | None = None,
     ) -> None:
         """Note what the session file is to keep of ``run`` (the run in use, read through
         ``table``): Tasks 11-13's numbers or the model check in brief. Shared with the
         session's snapshots, written by its next save (or its close); a read-only session
         notes nothing (it never writes)."""
-        if self.readonly or run != self.step_run():
+        if self.readonly or run != self.response_run():
             return
         key = kept_results.run_key(self.folder, run, table)
         if key is None:
@@ -428,7 +428,7 @@ class Session:
         """What the session file keeps of the run in use (its model check in brief and Tasks
         11-13's numbers), when it was computed from this very run and table; else None."""
         return kept_results.read(
-            self._data.get("kept"), self.folder, self.step_run(), self.table_pairs()
+            self._data.get("kept"), self.folder, self.response_run(), self.table_pairs()
         )
 
     def _failed(self, exc: OSError) -> None:
@@ -573,6 +573,22 @@ class Session:
         self._changed()
         return entry
 
+    def withdraw_refused(self, key: str) -> bool:
+        """Escape in field ``key``: the refused text shown there is dropped (the group took
+        it back), so the field holds what is in effect again: the accepted answer the refusal
+        stood over, or nothing when no answer was ever accepted. Saved. Whether anything was
+        dropped."""
+        self._change()
+        e = self._entries.get(key)
+        if e is None or (e.ok and e.refused is None):
+            return False
+        if e.ok:
+            self._entries[key] = replace(e, refused=None)
+        else:
+            del self._entries[key]
+        self._changed()
+        return True
+
     def choose(self, key: str, options: Sequence[int]) -> Entry:
         """Pick option indices (0-based) of a choice field; saved. Same as typing letters."""
         return self.enter(key, ", ".join(chr(ord("a") + k) for k in options))
@@ -598,11 +614,15 @@ class Session:
     def step_status(self, step_id: str) -> str:
         """``done`` (every required field accepted; for Task 10 a run recorded; for a step
         done by board checks, its ``done_when`` checks passed), ``wrong``
-        (answered, but a checked answer is wrong), ``started`` (something entered), ``todo``,
-        or ``info`` (nothing to enter)."""
+        (answered, but a checked answer is wrong), ``refused`` (a field shows a text that was
+        refused, even over an accepted answer still in effect), ``started`` (something
+        entered), ``todo``, or ``info`` (nothing to enter)."""
         st = lab_steps.step(step_id)
         if "run_steps" in st.actions:
             return "done" if any(r.kind in ("steps", "fast") for r in self._runs) else "todo"
+        shown = [self._entries.get(f.key) for f in st.fields]
+        if any(e is not None and (e.refused is not None or not e.ok) for e in shown):
+            return "refused"
         required = [f for f in st.fields if not f.optional]
         if not st.fields and st.done_when:
             got = self.board_checks()
@@ -735,7 +755,7 @@ class Session:
 
     # -- results -------------------------------------------------------------------------------
 
-    def results(self, kept: StepFigures | None = None) -> Results:
+    def results(self, kept: ResponseFigures | None = None) -> Results:
         """Tasks 6-15 from the current entries and the chosen run (cached until R, a table
         value or the run changes); the run's numbers of Tasks 11-13 are noted for the
         session file to keep (:meth:`kept`).
@@ -743,7 +763,7 @@ class Session:
         ``kept``: those numbers as the file keeps them (``self.kept().step``): the run is
         then not fitted again (for the class view; ``identification.step`` is None, the
         numbers are in :attr:`Results.step`; not cached)."""
-        run = self.step_run()
+        run = self.response_run()
         if kept is not None:
             return compute(
                 self.value("R"),
@@ -767,12 +787,12 @@ class Session:
         self._cache.results = (key, res)
         ident = res.identification
         if run is not None and ident is not None and ident.step is not None:
-            self._note_kept(run, self.table_pairs(), step=step_figures(ident.step))
+            self._note_kept(run, self.table_pairs(), step=response_figures(ident.step))
         return res
 
     def _compute(self) -> Results:
         return compute(
-            self.value("R"), self.readings(), self.step_run(), self.folder, self.table_pairs()
+            self.value("R"), self.readings(), self.response_run(), self.folder, self.table_pairs()
         )
 
     def model_check(self, name: str | None = None) -> ModelCheck:
@@ -780,7 +800,7 @@ class Session:
         run Tasks 11-15 use): measured against the first-order model, the named cause, the
         extended model and the gain. Cached until something changes."""
         run = (
-            self.step_run()
+            self.response_run()
             if name is None
             else next((r for r in self._runs if r.name == name), None)
         )
@@ -857,14 +877,14 @@ class Session:
         return list(self._runs)
 
     def run_path(self, name: str) -> Path:
-        """The step-log CSV of run ``name``."""
+        """The run-log CSV of run ``name``."""
         for r in self._runs:
             if r.name == name:
                 return self.folder / r.file
         raise KeyError(name)
 
-    def load_run(self, name: str) -> StepLog:
-        """Run ``name`` read back as a StepLog, its u column the applied voltage u_A worked out
+    def load_run(self, name: str) -> RunLog:
+        """Run ``name`` read back as a RunLog, its u column the applied voltage u_A worked out
         now from the table's u_ss (a recorded run; an imported one as it stands). KeyError for
         an unknown run, InputError if its file is damaged."""
         for r in self._runs:
@@ -872,7 +892,7 @@ class Session:
                 return read_run(self.folder, r, self.table_pairs())
         raise KeyError(name)
 
-    def step_run(self) -> RunInfo | None:
+    def response_run(self) -> RunInfo | None:
         """The run Tasks 11-15 use: the one the group chose (it stays until they choose
         another), else the newest complete 25 ms step run (the manual's), else the newest
         complete step run of another period; never an interrupted run they did not choose."""
@@ -880,15 +900,21 @@ class Session:
         for r in self._runs:
             if r.name == sel:
                 return r
-        complete = [r for r in reversed(self._runs) if r.kind in STEP_KINDS and r.complete]
+        complete = [r for r in reversed(self._runs) if r.kind in RESPONSE_KINDS and r.complete]
         manual = [r for r in complete if abs(r.ts - RunPlan().ts) < 1e-6]
         for r in (*manual, *complete):
             return r
         return None
 
+    def chosen_run(self) -> str | None:
+        """The run the group chose for Tasks 11-15 (None: no choice, :meth:`response_run`'s
+        default holds)."""
+        sel = self._data.get("selected_run")
+        return sel if isinstance(sel, str) else None
+
     def select_run(self, name: str | None) -> None:
         """Use run ``name`` for Tasks 11-15 until the group picks another (None: the default
-        of :meth:`step_run`); saved in the session."""
+        of :meth:`response_run`); saved in the session."""
         self._change()
         if name is not None:
             self.run_path(name)
@@ -1042,7 +1068,7 @@ class Session:
                 partial.unlink(missing_ok=True)
 
     def import_run(self, path: Path) -> RunInfo:
-        """Copy a step log recorded elsewhere into runs/ (checked by read_step_log; InputError
+        """Copy a run log recorded elsewhere into runs/ (checked by read_run_log; InputError
         with file and line if it is not one, SessionNotWritable if it cannot be written) for
         the model check and Tasks 11-15."""
         self._change()

@@ -1,12 +1,12 @@
 """Task 10 as one procedure: stop the motor, wait for the wheel to stand, record, run the
 board's square wave, keep the run.
 
-A step run that starts with the wheel still turning has a first step that starts from
+A square-wave run that starts with the wheel still turning has a first step that starts from
 speed, so :class:`Task10` stops the motor first, waits until the wheel stands
 (:class:`~minseg_tui.device.standstill.StandStill`, on board time), sets the plan's sample
 period, starts the session's recording, takes :data:`PRE_ROLL` samples of the standing
 wheel and only then asks the board for its sequence; the run ends with the board's
-``stepdone`` (complete), a link event that ends it, or :meth:`Task10.stop` (F2, quit), and
+``square_wave_done`` (complete), a link event that ends it, or :meth:`Task10.stop` (F2, quit), and
 is kept in the session (:meth:`~minseg_tui.lab.state.session.Session.finish_run`).
 
 It does not read the device itself: whoever does feeds it every batch and event
@@ -51,7 +51,7 @@ RUN_ENDED_BY: dict[str, str] = {
     "error": "link",
 }
 """A link event that ends a run being recorded -> what interrupted it
-(:data:`minseg_tui.lab.saving.runs.ENDED_BY`); ``stepdone`` ends it complete."""
+(:data:`minseg_tui.lab.saving.runs.ENDED_BY`); ``square_wave_done`` ends it complete."""
 
 WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error", "silent"})
 """Link events that end the wait for the wheel to stand (no run starts)."""
@@ -60,7 +60,7 @@ HOST_GUARD: float = 30.0
 """Host seconds :func:`record` waits for samples at all (a board that sends nothing: a hang
 guard, not a measure of the run)."""
 
-Phase = Literal["idle", "waiting", "recording", "stepping", "ended"]
+Phase = Literal["idle", "waiting", "recording", "square_wave", "ended"]
 
 
 class Board(Protocol):
@@ -68,14 +68,14 @@ class Board(Protocol):
     UI's device); DeviceError with one line when it does not answer. Volts and seconds."""
 
     def stop(self) -> object:
-        """Motor off, any step sequence aborted."""
+        """Motor off, any square wave aborted."""
         ...
 
     def set_period(self, ts: float) -> object:
         """Sample every ``ts`` s."""
         ...
 
-    def step(self, low: float, high: float, half_period: float, periods: int) -> object:
+    def square_wave(self, low: float, high: float, half_period: float, periods: int) -> object:
         """The board-timed square wave."""
         ...
 
@@ -228,7 +228,7 @@ class Task10:
     @property
     def active(self) -> bool:
         """Begun and not yet ended."""
-        return self.phase in ("waiting", "recording", "stepping")
+        return self.phase in ("waiting", "recording", "square_wave")
 
     def begin(self) -> None:
         """Motor off; the run waits for the wheel to stand. DeviceError (nothing begun) when
@@ -263,13 +263,13 @@ class Task10:
             before = self.phase
             if self.phase == "waiting":  # the run takes the samples after the wheel stood
                 self._wait(batch, events)
-            elif self.phase in ("recording", "stepping") and self.run is not None:
+            elif self.phase in ("recording", "square_wave") and self.run is not None:
                 run = self.run
                 run.append(batch if run.samples else self._at_period(batch))
                 if self.phase == "recording" and run.samples >= PRE_ROLL:
                     self._start_sequence()
                 for ev in events:
-                    if ev.kind == "stepdone":
+                    if ev.kind == "square_wave_done":
                         self._finish("done")
                         break
                     if ev.kind in RUN_ENDED_BY:
@@ -330,11 +330,11 @@ class Task10:
         """The run holds the standing wheel: the board starts the sequence."""
         plan = self.plan
         try:
-            self.board.step(plan.low, plan.high, plan.half_period, plan.periods)
+            self.board.square_wave(plan.low, plan.high, plan.half_period, plan.periods)
         except MinsegError as exc:
             self._finish("not started", problem=str(exc))
             return
-        self.phase = "stepping"
+        self.phase = "square_wave"
 
     def stop(self, ended_by: str = "stopped", motor_off: bool = True) -> Outcome | None:
         """End now: a wait ends without a run; a run being recorded is kept as interrupted
@@ -350,7 +350,7 @@ class Task10:
                     self.board.stop()
             if self.phase == "waiting":
                 self._ended(Outcome(ended_by))
-            elif self.phase in ("recording", "stepping"):
+            elif self.phase in ("recording", "square_wave"):
                 self._finish(ended_by)
             return self.outcome
 
@@ -412,7 +412,7 @@ def record(
     while task.outcome is None:
         batch = link.samples()
         events = link.events()
-        if any(ev.kind == "stepdone" or ev.kind in RUN_ENDED_BY for ev in events):
+        if any(ev.kind == "square_wave_done" or ev.kind in RUN_ENDED_BY for ev in events):
             # the samples the board sent before that event may come just after the read
             batch = SampleBatch.concat([batch, link.samples()])
         task.feed(batch, events)

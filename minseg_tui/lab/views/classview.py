@@ -5,7 +5,7 @@
 itself: :meth:`Session.results` (Tasks 6-15, the same numbers ``minseg-tui report``
 writes), :meth:`Session.model_check` and :meth:`Session.comparisons`; only K, T and the
 63 % reading of a session whose table lacks an i_ss (or R) are taken from its step run
-here (:func:`~minseg_tui.model.identify.step_alone`), since they need neither. The model
+here (:func:`~minseg_tui.model.identify.response_alone`), since they need neither. The model
 check's cause and Tasks 11-13's numbers come from what the session file keeps of its run
 (:meth:`Session.kept`, written by the lab when it computed them) whenever that was computed
 from this very run and table: the run is then neither checked nor fitted again, which is
@@ -41,7 +41,7 @@ from minseg_tui.lab.state.compare import format_diff
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import in_words
-from minseg_tui.model.identify import step_alone
+from minseg_tui.model.identify import response_alone
 from minseg_tui.quantities import RPM, format_number, format_reading
 
 
@@ -379,20 +379,20 @@ def _values(
     elif ident is None and kept is not None and kept.step is not None:
         values.update({"K": kept.step.K, "T_63": kept.step.T_63, "T": kept.step.T})
     elif ident is None:
-        values.update(_step_alone(session))
+        values.update(_response_alone(session))
     return values, tuple(dict.fromkeys(lacks))
 
 
-def _step_alone(session: Session) -> dict[str, float | None]:
+def _response_alone(session: Session) -> dict[str, float | None]:
     """K, T and T_63 from the session's step run and its table's u_ss alone, for a session
     whose table is not complete enough for Tasks 6-9 (an i_ss or R missing): they need
     neither. Empty when the run cannot give them (the lacks already say why)."""
-    run = session.step_run()
+    run = session.response_run()
     pairs = session.table_pairs()
     if run is None or not pairs:
         return {}
     try:
-        st = step_alone(read_run(session.folder, run, pairs, require_step=True), pairs)
+        st = response_alone(read_run(session.folder, run, pairs, require_step=True), pairs)
     except InputError:
         return {}
     return {"K": st.K, "T_63": st.T_63, "T": st.T}
@@ -416,7 +416,7 @@ def read_kept(folder: Path) -> Group | None:
         session = Session.open(folder, readonly=True)
     except InputError:
         return None
-    if session.step_run() is not None:
+    if session.response_run() is not None:
         kept = session.kept()
         if kept is None or kept.step is None or kept.check is None:
             return None

@@ -23,9 +23,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.steps import FIELDS, step
+from minseg_tui.lab.content.steps import FIELDS, STEPS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
-from minseg_tui.lab.saving.runs import STEP_KINDS
+from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state.entries import read_entry
@@ -35,8 +35,8 @@ from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify.identification import determined
-from minseg_tui.model.identify.steps import E63
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.identify.rises import E63
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
     NOT_DETERMINED,
@@ -194,17 +194,35 @@ def held(session: Session, key: str) -> str:
     return e.text if e else ""
 
 
-def previous_answer(session: Session, key: str) -> str | None:
+def previous_answer(session: Session, key: str, skip: Sequence[str] = ()) -> str | None:
     """The answer stored for field ``key`` before the one in effect: the newest earlier
-    text that reads as an answer and differs from it (None: there is none). Ctrl+Z in the
-    field enters it again."""
+    text that reads as an answer and differs from it and from those in ``skip`` (the ones
+    Ctrl+Z already took back, so that Ctrl+Z again goes further back); None: there is none.
+    Ctrl+Z in the field enters it again."""
     e = session.entry(key)
     if e is None or key not in FIELDS:
         return None
+    passed = {e.text.strip(), *(t.strip() for t in skip)}
     for text, _at in reversed(e.history):
-        if text.strip() != e.text.strip() and text.strip() and read_entry(FIELDS[key], text).ok:
+        if text.strip() not in passed and text.strip() and read_entry(FIELDS[key], text).ok:
             return text
     return None
+
+
+def judged(session: Session, key: str) -> str:
+    """How the answer in effect for field ``key`` is judged, in words for a notice: "marked
+    wrong (why)", the check's words when it holds ("right: ..."), or "" for a field nothing
+    judges (or no answer yet)."""
+    for fb in session.feedback("*"):
+        if fb.key == key and fb.status != "missing":
+            return f"marked wrong ({fb.message})" if fb.status == "wrong" else fb.message
+    fld = FIELDS.get(key)
+    if fld is not None and fld.compare and fld.kind == "text":
+        owner = next(st.id for st in STEPS if fld in st.fields)
+        for c in session.comparisons(owner):
+            if c.key == key and c.right is not None:
+                return "marked right" if c.right else "marked wrong"
+    return ""
 
 
 def chosen(session: Session, key: str) -> tuple[int, ...]:
@@ -278,7 +296,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         if c.verdict:
             comp += f"\n  {c.verdict}"
         if c.revealed_early:
-            comp += " · revealed before answering"
+            comp += f" · {lab_compare.REVEALED_EARLY}"
         if c.least_squares is not None:
             lsq = (
                 c.least_squares if isinstance(c.least_squares, str) else _fmt(c.least_squares, unit)
@@ -399,7 +417,7 @@ class RunView:
     """The T readings are left out (None): Task 12's answer, hidden until the group has
     entered its own T (:func:`hidden`)."""
     in_use: bool = False
-    """Tasks 11-15 and the model check use this run (:meth:`Session.step_run`)."""
+    """Tasks 11-15 and the model check use this run (:meth:`Session.response_run`)."""
     plotted: bool = True
     """The newest run of its kind (steps, fast): the one its plot shows."""
 
@@ -409,10 +427,10 @@ def _median(values: Sequence[float | None]) -> float | None:
     return float(np.median(vs)) if vs else None
 
 
-def _t63(log: StepLog) -> float | None:
-    """The manual's 63 % reading of the log's speed: the median over its rising steps, s."""
+def _t63(log: RunLog) -> float | None:
+    """The manual's 63 % reading of the log's speed: the median over its rises, s."""
     try:
-        return _median([s.T_63 for s in model_identify.rising_steps(log)])
+        return _median([s.T_63 for s in model_identify.rises(log)])
     except (InputError, ValueError):
         return None
 
@@ -433,7 +451,7 @@ def runs(session: Session) -> tuple[RunView, ...]:
     imported logs), oldest first, with their T readings; the one in use marked (``in_use``,
     also when it is interrupted), the newest 25 ms and the newest fast run ``plotted``
     (a worker's job; a run's view is built once)."""
-    using = session.step_run()
+    using = session.response_run()
     newest = {r.kind: r.name for r in session.runs if r.kind in ("steps", "fast")}
     conceal = "own.T" in hidden(session)
     out = []
@@ -460,7 +478,7 @@ def _run_list(session: Session) -> list[RunView]:
     """The view of every run Tasks 11-15 can use, oldest first (built once each)."""
     out = []
     for r in session.runs:
-        if r.kind not in STEP_KINDS:
+        if r.kind not in RESPONSE_KINDS:
             continue
         key = (str(session.folder), r.name, r.samples, r.interrupted)
         kept = _run_views.get(key)
@@ -509,14 +527,25 @@ ZOOM_AFTER_T: float = 5.0
 ZOOM_MIN_SAMPLES: int = 3
 """At least this many samples before the edge, whatever T."""
 
+CLOSE_BEFORE_SAMPLES: int = 2
+"""The close-up to read T on (Task 12) starts this many samples before the edge..."""
+
+CLOSE_AFTER_T: float = 3.0
+"""...and ends this many time constants after it (95 % of the change), or
+:data:`CLOSE_AFTER_SAMPLES` samples when they last longer: at 80 columns a column of the
+0.375 s zoom was 7.2 ms of a 25 ms run, of the close-up 3.8 ms."""
+
+CLOSE_AFTER_SAMPLES: int = 6
+
 
 @dataclass(frozen=True)
 class RiseZoom:
-    """One rising step of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
+    """One rise of the log: the edge at ``t0`` (s), the high level until ``t1`` (s),
     the speed before (``omega0``) and settled (``omega_ss``, rad/s), its 63 % reading
     ``T_63`` (s or None); the zoom to its rise from ``z0`` to ``z1`` (s: a little before the
     edge to several T after it), the 63 % level ``level`` (rad/s) and ``t_63``, the board
-    time (s) the speed crosses it (None if it does not)."""
+    time (s) the speed crosses it (None if it does not); ``c0`` to ``c1`` (s): the close-up on
+    its first few T to read T on (Task 12)."""
 
     t0: float
     t1: float
@@ -525,6 +554,8 @@ class RiseZoom:
     omega_ss: float = 0.0
     z0: float = 0.0
     z1: float = 0.0
+    c0: float = 0.0
+    c1: float = 0.0
 
     @property
     def level(self) -> float:
@@ -537,21 +568,71 @@ class RiseZoom:
         return None if self.T_63 is None else self.t0 + self.T_63
 
 
-def rise_zoom(step_: model_identify.RisingStep, T: float | None, ts: float) -> RiseZoom:
-    """The window of one rising step, zoomed to its rise with time constant ``T`` (s; the
+def rise_zoom(rise: model_identify.Rise, T: float | None, ts: float) -> RiseZoom:
+    """The window of one rise, zoomed to its rise with time constant ``T`` (s; the
     step's own 63 % reading when None) at sample period ``ts`` (s)."""
-    T_ref = T if T is not None and T > 0 else step_.T_63
+    T_ref = T if T is not None and T > 0 else rise.T_63
     if T_ref is None or not T_ref > 0:
-        T_ref = step_.duration / ZOOM_AFTER_T
-    t1 = step_.t + step_.duration
-    z0 = step_.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
-    z1 = min(step_.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
-    return RiseZoom(step_.t, t1, step_.T_63, step_.omega0, step_.omega_ss, z0, z1)
+        T_ref = rise.duration / ZOOM_AFTER_T
+    t1 = rise.t + rise.duration
+    z0 = rise.t - max(ZOOM_BEFORE_T * T_ref, ZOOM_MIN_SAMPLES * ts)
+    z1 = min(rise.t + max(ZOOM_AFTER_T * T_ref, 4 * ZOOM_MIN_SAMPLES * ts), t1)
+    c0 = rise.t - max(CLOSE_BEFORE_SAMPLES * ts, 0.5 * T_ref)
+    c1 = min(rise.t + max(CLOSE_AFTER_T * T_ref, CLOSE_AFTER_SAMPLES * ts), t1)
+    return RiseZoom(rise.t, t1, rise.T_63, rise.omega0, rise.omega_ss, z0, z1, c0, c1)
+
+
+@dataclass(frozen=True)
+class CursorReading:
+    """What a cursor on the zoomed rise reads: at ``t`` (s after the edge), the speed
+    ``omega`` (rad/s) of the line the plot draws there, which joins the samples at
+    ``t_before`` and ``t_after`` (s after the edge; the same sample when ``t`` is on one)
+    straight. A reading of the log itself, as a scope's cursor gives it: never a fitted
+    T, so it does not answer Task 12 for the group."""
+
+    t: float
+    omega: float
+    t_before: float
+    t_after: float
+
+    def text(self) -> str:
+        """One line for people: the time in ms, the speed, the samples around it."""
+        ms = 1000.0
+        between = (
+            f"the sample at {format_value(self.t_before * ms, 'ms', 3)}"
+            if self.t_before == self.t_after
+            else f"between the samples at {format_value(self.t_before * ms, 'ms', 3)} "
+            f"and {format_value(self.t_after * ms, 'ms', 3)}"
+        )
+        return (
+            f"t = {format_value(self.t * ms, 'ms', 3)} after the edge: "
+            f"omega = {format_value(self.omega, 'rad/s', 3)} ({between})"
+        )
+
+
+def cursor_reading(t: ArrayLike, omega: ArrayLike, at: float) -> CursorReading | None:
+    """The cursor's reading at ``at`` (s) of the speed ``omega`` (rad/s) sampled at ``t`` (s,
+    rising; both as the plot draws them): the straight line between the two samples around
+    ``at``. None outside the samples (or without any)."""
+    ts = np.asarray(t, dtype=float)
+    ws = np.asarray(omega, dtype=float)
+    ok = np.isfinite(ts) & np.isfinite(ws)
+    ts, ws = ts[ok], ws[ok]
+    if ts.size == 0 or not ts[0] <= at <= ts[-1]:
+        return None
+    k = int(np.searchsorted(ts, at, side="right"))  # ts[k - 1] <= at < ts[k]
+    before = k - 1
+    after = min(k, ts.size - 1)
+    if ts[before] == at or before == after:
+        return CursorReading(at, float(ws[before]), float(ts[before]), float(ts[before]))
+    share = (at - ts[before]) / (ts[after] - ts[before])
+    omega_at = float(ws[before] + share * (ws[after] - ws[before]))
+    return CursorReading(at, omega_at, float(ts[before]), float(ts[after]))
 
 
 @dataclass(frozen=True)
 class ResultsView:
-    """Tasks 11-15: the log used (t s, omega rad/s, u V), its rising steps, result lines and
+    """Tasks 11-15: the log used (t s, omega rad/s, u V), its rises, result lines and
     the group's readings beside the computed ones (``compare``: label, yours, computed);
     ``problems``: what keeps a result from being computed, one line each."""
 
@@ -559,7 +640,7 @@ class ResultsView:
     t: FloatArray
     omega: FloatArray
     u: FloatArray
-    steps: tuple[RiseZoom, ...]
+    rises: tuple[RiseZoom, ...]
     lines: tuple[str, ...]
     compare: tuple[tuple[str, str, str], ...] = ()
     problems: tuple[str, ...] = ()
@@ -581,7 +662,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             log = None
     ident = res.identification
     lines: list[str] = []
-    steps: tuple[RiseZoom, ...] = ()
+    rises: tuple[RiseZoom, ...] = ()
     if ident is not None and ident.step is not None:
         st = ident.step
         conceal = hidden(session)
@@ -627,7 +708,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
         ]
         ts = log.ts if log is not None else 0.0
-        steps = tuple(rise_zoom(s, st.T, ts) for s in st.steps)
+        rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
     problems = list(res.problems)
     rule = policy(session)
     if rule.problem:
@@ -636,14 +717,14 @@ def results(session: Session, step_id: str) -> ResultsView:
     if used is not None and used.interrupted:
         problems.append(
             f"run {used.name} ended before its plan did ({used.interruption}; {used.samples} samples, "
-            f"{len(steps)} rising steps): a whole run gives more steps to read T from"
+            f"{len(rises)} rising steps): a whole run gives more steps to read T from"
         )
     return ResultsView(
         res.run,
         np.asarray(log.t, dtype=float) if log else _empty(),
         np.asarray(log.omega, dtype=float) if log else _empty(),
         np.asarray(log.u, dtype=float) if log else _empty(),
-        steps,
+        rises,
         tuple(lines),
         compare,
         tuple(problems),
@@ -786,5 +867,5 @@ def check(session: Session) -> CheckView:
 # -- the run in use -----------------------------------------------------------------------------
 def run_in_use(session: Session) -> str:
     """One line saying which run Tasks 11-15 and the model check use."""
-    run = session.step_run()
+    run = session.response_run()
     return f"Tasks 11-15 and the model check use run {run.name if run else '— (none yet)'}"

@@ -1,4 +1,4 @@
-"""The model check: what the first-order model gets wrong in a step log, and why.
+"""The model check: what the first-order model gets wrong in a run log, and why.
 
 Fit T w' = -w + K u, simulate it on the measured input, show where it deviates, name the
 causes among the candidates (several may act at once), fit the extended model holding all

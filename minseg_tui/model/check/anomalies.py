@@ -318,6 +318,10 @@ def disturbance(
     change of speed (rad/s, measured - model) against the model's ``level`` there; ``left``:
     the rows left out of the fit (first, end exclusive) when more than start..end (the
     departure's onset before it, the wheel's way back to the model after it)."""
+    # the sentence says the input stays put: it ends at the next step at the latest (through
+    # an average the departure runs on past it, in the rows left out)
+    step = np.flatnonzero(u[start + 1 :] != u[start])
+    end = min(end, start + 1 + int(step[0])) if step.size else end
     t1 = float(t[min(end, t.size - 1)]) if end < t.size else float(t[-1])
     word = "drops" if size * np.sign(level or 1.0) < 0 else "rises"
     share = f" ({100 * abs(size / level):.0f} %)" if level else ""

@@ -1,4 +1,4 @@
-"""Fitting the first-order model, alone or with any set of effects, to a step log.
+"""Fitting the first-order model, alone or with any set of effects, to a run log.
 
 The residual is compared where its noise is white. The measured speed is a difference
 of quantised angles, (theta_k - theta_k-N)/(N Ts), so its noise is differenced (lag-N
@@ -112,7 +112,7 @@ _CARRY_TERMS = 8  # (RHO^32)^8 < 1e-11
 
 @dataclass
 class Problem:
-    """A step log ready to fit: t (s), u (V, held from each row on), y measured speed (rad/s).
+    """A run log ready to fit: t (s), u (V, held from each row on), y measured speed (rad/s).
 
     ts: nominal sample period, s; z0: initial speed in K = 1 units (V), None for steady
     state under the first input; weights: 1 for rows that count, 0 for rows left out;

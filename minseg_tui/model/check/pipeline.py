@@ -14,7 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
-from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select
+from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select, swapped
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
 from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, in_words, ranges
 from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, shown_stop
@@ -40,7 +40,7 @@ from minseg_tui.model.check.result import (
 )
 from minseg_tui.model.check.sampling import Sampling, sampling, scatter
 from minseg_tui.model.optimize import golden
-from minseg_tui.model.steplog import problem
+from minseg_tui.model.runlog import problem
 from minseg_tui.quantities import format_number
 
 FloatArray = NDArray[np.float64]
@@ -62,7 +62,7 @@ def check(
     cpr: int | None = None,
     omega_over: str | None = None,
 ) -> CheckResult:
-    """The model check of one step log.
+    """The model check of one run log.
 
     t: sample times, s; u: voltage applied to the motor (u_A), V, in force from each row on;
     omega: measured speed, rad/s (the Euler velocity of encoder counts, a moving average of
@@ -337,6 +337,8 @@ def _report(
     keep_dev &= keep
     devs = deviations(u, np.where(keep_dev, y - b_pred, 0.0), base.T, samp.ts, keep_dev)
     misses = miss is not None
+    if named:
+        sel.tried += swapped(sel, head, rng, noise)
     alts = rivals(sel, head, rng, noise, samp.column_floor) if named else []
     swaps = {
         c: _swap_ratio(sel, ext, head, rng, c, other)

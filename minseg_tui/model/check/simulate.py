@@ -1,6 +1,6 @@
 """Exact simulation of the first-order model and its effects on a piecewise-constant input.
 
-The input of a step log is held between samples: ``u[k]`` is in force from ``t[k]`` to
+The input of a run log is held between samples: ``u[k]`` is in force from ``t[k]`` to
 ``t[k+1]``. Every effect the check knows keeps the motor piecewise linear: dry friction
 (a constant deceleration while the wheel turns, sticking at rest), coasting at zero
 command (its own time constant), an extra pole on the drive, and a current limit (a cap

@@ -7,10 +7,10 @@ The package, one module per room:
 
 - :mod:`.steady`: Tasks 6-9 from the table (k_v, k_a, f per row and their medians) and the
   table's u_ss and omega_ss at a requested voltage;
-- :mod:`.steps`: the rising steps of a step log and the manual's 63 % reading;
-- :mod:`.stepfit`: T and the steady speeds by least squares (Tasks 11-12), from one of
+- :mod:`.rises`: the rises of a run log and the manual's 63 % reading;
+- :mod:`.risefit`: T and the steady speeds by least squares (Tasks 11-12), from one of
   :mod:`.wholelog` (the model of Task 14 over the whole log) and :mod:`.windowfit` (each
-  rising step on its own), searched by :func:`minseg_tui.model.optimize.least_squares`, with
+  rise on its own), searched by :func:`minseg_tui.model.optimize.least_squares`, with
   the intervals of :mod:`.lsq` (they hold with correlated residuals; Student's t);
 - :mod:`.observations`: what the numbers show, in sentences a student understands;
 - :mod:`.identification`: Tasks 6-15 put together (K, T, J, the model of Task 14, omega at
@@ -22,15 +22,25 @@ Other layers import from here (``from minseg_tui.model.identify import identify`
 from minseg_tui.model.identify.identification import (
     U_TASK15,
     Identification,
-    StepResult,
+    ResponseResult,
     identify,
-    step_alone,
+    response_alone,
 )
 from minseg_tui.model.identify.observations import (
     Observation,
-    step_observations,
+    response_observations,
     table_observations,
 )
+from minseg_tui.model.identify.risefit import (
+    RISES,
+    WHOLE_LOG,
+    Rise,
+    TimeConstantFit,
+    fit_time_constant,
+    model_reading_63,
+    rises,
+)
+from minseg_tui.model.identify.rises import E63, RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.steady import (
     U_SS_HOW,
     Reading,
@@ -40,40 +50,30 @@ from minseg_tui.model.identify.steady import (
     u_ss_at,
     u_ss_words,
 )
-from minseg_tui.model.identify.stepfit import (
-    RISING_STEPS,
-    WHOLE_LOG,
-    RisingStep,
-    TimeConstantFit,
-    fit_time_constant,
-    model_reading_63,
-    rising_steps,
-)
-from minseg_tui.model.identify.steps import E63, StepWindow, reading_63, step_windows
 
 __all__ = [
     "E63",
-    "RISING_STEPS",
+    "RISES",
     "WHOLE_LOG",
-    "StepWindow",
+    "RiseWindow",
     "model_reading_63",
     "reading_63",
     "U_TASK15",
     "Observation",
     "Identification",
     "Reading",
-    "RisingStep",
+    "Rise",
     "Row",
-    "StepResult",
+    "ResponseResult",
     "TimeConstantFit",
     "fit_time_constant",
     "identify",
     "omega_ss_at",
-    "rising_steps",
+    "rises",
     "steady_state",
-    "step_alone",
-    "step_observations",
-    "step_windows",
+    "response_alone",
+    "response_observations",
+    "rise_windows",
     "table_observations",
     "u_ss_at",
     "u_ss_words",

@@ -1,6 +1,6 @@
-"""Tasks 6-15 put together: the table, the step log, the model of Task 14 and what they show.
+"""Tasks 6-15 put together: the table, the run log, the model of Task 14 and what they show.
 
-K (Task 11) is the steady speed the fit gives for each rising step over the u_ss the table
+K (Task 11) is the steady speed the fit gives for each rise over the u_ss the table
 gives at the step's requested voltage (the median over the steps); T (Task 12) the least-
 squares time constant, with the manual's 63 % reading beside it and a sentence saying how far
 apart the two are and how much of that the sampling explains; J (Task 13) from T; the model
@@ -21,9 +21,17 @@ from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.observations import (
     Observation,
     fit_observations,
-    step_observations,
+    response_observations,
     table_observations,
 )
+from minseg_tui.model.identify.risefit import (
+    Rise,
+    TimeConstantFit,
+    fit_time_constant,
+    model_reading_63,
+    rises,
+)
+from minseg_tui.model.identify.rises import rise_windows
 from minseg_tui.model.identify.steady import (
     U_SS_HOW,
     Reading,
@@ -33,17 +41,9 @@ from minseg_tui.model.identify.steady import (
     u_ss_at,
     u_ss_words,
 )
-from minseg_tui.model.identify.stepfit import (
-    RisingStep,
-    TimeConstantFit,
-    fit_time_constant,
-    model_reading_63,
-    rising_steps,
-)
-from minseg_tui.model.identify.steps import step_windows
 from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
-from minseg_tui.model.steplog import (
-    StepLog,
+from minseg_tui.model.runlog import (
+    RunLog,
     clock_problem,
     command,
     find_edges,
@@ -67,10 +67,10 @@ def determined(ci: tuple[float, float]) -> bool:
 
 
 @dataclass(frozen=True)
-class StepResult:
-    """Tasks 11-13 from a step log.
+class ResponseResult:
+    """Tasks 11-13 from a run log.
 
-    K: static gain (rad/s per V, median over rising steps of the fitted omega_ss / u_ss);
+    K: static gain (rad/s per V, median over rises of the fitted omega_ss / u_ss);
     T: the least-squares time constant (s), the one the model uses, with the dead time
     ``dead_time`` (s, 0 when the response follows the steps within a sample period);
     glitch_rows: switch-on glitch rows at the start of the log, left out of everything; T_63: the median 63 %
@@ -78,7 +78,7 @@ class StepResult:
     omega_ss: median fitted steady speed of the steps (rad/s); u_ss: the applied voltage K
     divides by (V); u_ss_how: how the table gave it (:func:`~.steady.u_ss_at`: 'row',
     'interpolated', 'extrapolated') or 'log' (no u_req column: the log's own u); steps: each
-    rising step; fit: details of the least-squares fit; K_ci: 95 % interval of K (rad/s per
+    rise; fit: details of the least-squares fit; K_ci: 95 % interval of K (rad/s per
     V); T_63_model: the 63 % reading taken on the fitted model sampled like the log (s);
     T_63_note: a sentence saying how far the 63 % reading is from T and why (None without a
     reading).
@@ -92,7 +92,7 @@ class StepResult:
     omega_ss: float
     u_ss: float
     u_ss_how: str
-    steps: tuple[RisingStep, ...]
+    rises: tuple[Rise, ...]
     fit: TimeConstantFit
     model_uses: str = "least_squares"
     K_ci: tuple[float, float] = (math.nan, math.nan)
@@ -125,14 +125,14 @@ class StepResult:
 
 @dataclass(frozen=True)
 class Identification:
-    """Everything of Tasks 6-15. ``step`` is None without a step log."""
+    """Everything of Tasks 6-15. ``step`` is None without a run log."""
 
     R: float
     rows: tuple[Row, ...]
     k_v: float
     k_a: float
     f: float
-    step: StepResult | None
+    step: ResponseResult | None
     observations: tuple[Observation, ...]
 
     @property
@@ -196,20 +196,20 @@ _AT_ZERO = "below the driver's drop in the table"
 """Why an extrapolated u_ss is 0 V: the step's level is below the nearest row's drop."""
 
 
-def _step_result(
-    log: StepLog,
+def _response_result(
+    log: RunLog,
     rows: tuple[Row, ...],
     u_ss_table: Sequence[tuple[float, float]],
     R: float,
     k_v: float,
     k_a: float,
     f: float,
-) -> tuple[StepResult, list[Observation]]:
+) -> tuple[ResponseResult, list[Observation]]:
     cmd, _ = command(log)
     glitches = switch_on_glitches(cmd, log.omega)
     whole_log = log
     log = log.rows_from(glitches) if glitches else log
-    windows, skipped = step_windows(log)
+    windows, skipped = rise_windows(log)
     if not windows:
         cmd, name = command(log)
         raise InputError(
@@ -238,7 +238,7 @@ def _step_result(
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise InputError(log.source, None, "expected a usable rising step")
-    steps = rising_steps(log, fit)
+    steps = rises(log, fit)
     u_used, hows = [], []
     for s in steps:
         if s.u_req is None:
@@ -274,7 +274,7 @@ def _step_result(
     T_63 = float(np.median(reads)) if reads else None
     T_63_model = model_reading_63(log, fit, steps) if T_63 is not None else None
     J = inertia_from_time_constant(T, R, f, k_v, k_a)
-    result = StepResult(
+    result = ResponseResult(
         K=K,
         T=T,
         T_63=T_63,
@@ -283,7 +283,7 @@ def _step_result(
         omega_ss=omega_ss,
         u_ss=u_ss,
         u_ss_how=how,
-        steps=tuple(steps),
+        rises=tuple(steps),
         fit=fit,
         K_ci=_K_interval(K, K_each, u_used, fit),
         T_63_model=T_63_model,
@@ -299,7 +299,7 @@ def _step_result(
         else None
     )
     observations = (
-        step_observations(
+        response_observations(
             rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time, shape
         )
         if rows
@@ -309,11 +309,11 @@ def _step_result(
     return result, observations
 
 
-def step_alone(log: StepLog, u_ss_table: Sequence[tuple[float, float]]) -> StepResult:
-    """Tasks 11-12 from the step log and the table's ``(u_req, u_ss)`` pairs (V) alone: K,
+def response_alone(log: RunLog, u_ss_table: Sequence[tuple[float, float]]) -> ResponseResult:
+    """Tasks 11-12 from the run log and the table's ``(u_req, u_ss)`` pairs (V) alone: K,
     T and the 63 % reading, which need neither R nor i_ss. J (Task 13) needs R, k_v and f:
     it is NaN here. Raises InputError as :func:`identify` does for the log."""
-    step, _ = _step_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
+    step, _ = _response_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
     return step
 
 
@@ -389,22 +389,22 @@ def _T_63_note(
 def identify(
     readings: Sequence[Reading],
     R: float,
-    log: StepLog | None = None,
+    log: RunLog | None = None,
     source: str = "table",
     u_ss_table: Sequence[tuple[float, float]] | None = None,
 ) -> Identification:
-    """Tasks 6-15 from the table's readings, the resistance R (ohm) and optionally a step log.
+    """Tasks 6-15 from the table's readings, the resistance R (ohm) and optionally a run log.
 
     ``u_ss_table``: the ``(u_req, u_ss)`` pairs (V) of every table row that has a u_ss,
     complete or not, which K divides by (:func:`~.steady.u_ss_at`); default: the readings'.
-    Raises InputError for a bad R, a bad row, or a log without a usable rising step.
+    Raises InputError for a bad R, a bad row, or a log without a usable rise.
     """
     rows, k_v, k_a, f = steady_state(readings, R, source)
     observations = table_observations(rows, R, k_v, k_a)
     step = None
     if log is not None:
         table = table_of(rows) if u_ss_table is None else list(u_ss_table)
-        step, more = _step_result(log, rows, table, R, k_v, k_a, f)
+        step, more = _response_result(log, rows, table, R, k_v, k_a, f)
         observations += more
     return Identification(
         R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, observations=tuple(observations)

@@ -8,9 +8,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from minseg_tui.model.identify.risefit import Rise, TimeConstantFit
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
-from minseg_tui.model.identify.stepfit import RisingStep, TimeConstantFit
-from minseg_tui.model.steplog import StepLog
+from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     RPM,
     format_number,
@@ -22,7 +22,7 @@ from minseg_tui.quantities import (
 KV_OUTLIER: float = 0.15
 """A row's k_v this far (relative) from the median is called a bad reading."""
 
-STEP_VS_TABLE: float = 0.10
+RISE_VS_TABLE: float = 0.10
 """Step and table steady-state speeds further apart than this (relative) are reported."""
 
 RPM_GAIN: float = 6.0
@@ -165,9 +165,9 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
     ]
 
 
-def step_observations(
+def response_observations(
     rows: Sequence[Row],
-    steps: Sequence[RisingStep],
+    steps: Sequence[Rise],
     hows: Sequence[str],
     u_ss: float,
     T: float,
@@ -177,12 +177,12 @@ def step_observations(
     dead_time: float = 0.0,
     shape: float | None = None,
 ) -> list[Observation]:
-    """What the step log shows (Tasks 11-13): where u_ss came from, steps that disagree with
+    """What the run log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
 
-    rows: the table; steps: the rising steps used; hows: how u_ss was found for each step;
+    rows: the table; steps: the rises used; hows: how u_ss was found for each step;
     u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
-    period (s); skipped: rising steps not usable; dead_time: the model's dead time (s);
+    period (s); skipped: rises not usable; dead_time: the model's dead time (s);
     shape: when the rise has a shape one time constant does not follow (the steps' time
     shift on its bound), the part of the reading the fitted model read the same way does not
     give (s), else None.
@@ -224,7 +224,7 @@ def step_observations(
         if s.u_req is None:
             continue
         w_table = omega_ss_at(rows, s.u_req)
-        if w_table is not None and abs(s.omega_ss - w_table) > STEP_VS_TABLE * w_table:
+        if w_table is not None and abs(s.omega_ss - w_table) > RISE_VS_TABLE * w_table:
             observations.append(
                 Observation(
                     "step_vs_table",
@@ -293,7 +293,7 @@ def step_observations(
     return observations
 
 
-def _lines(log: StepLog, rows: Sequence[int]) -> str:
+def _lines(log: RunLog, rows: Sequence[int]) -> str:
     """'line 12' / 'lines 5-6' / 'rows 1-2' for 0-based rows of ``log``."""
     lines = [log.line_of(r) for r in rows]
     if all(x is not None for x in lines):
@@ -305,7 +305,7 @@ def _lines(log: StepLog, rows: Sequence[int]) -> str:
 
 
 def fit_observations(
-    log: StepLog, glitches: int, fit: TimeConstantFit, T_determined: bool
+    log: RunLog, glitches: int, fit: TimeConstantFit, T_determined: bool
 ) -> list[Observation]:
     """What the fit of T had to do with this log: switch-on glitch rows and logging stalls left
     out, a dead time in the model, a time shift or a T on its bound, a T the log does not
@@ -390,7 +390,7 @@ def fit_observations(
                 ),
             )
         )
-    elif fit.shift_on_bound and fit.moved_before_step:
+    elif fit.shift_on_bound and fit.moved_before_rise:
         out.append(
             Observation(
                 "shift_on_bound",

@@ -1,7 +1,7 @@
-"""The first-order response fitted to each rising step on its own, T shared: the fit for logs
+"""The first-order response fitted to each rise on its own, T shared: the fit for logs
 the whole-log model does not explain (a coasting wheel, a speed that wanders between steps).
 
-Around each rising step at t_e, with s = t - t_e - d (d: a time shift of the steps against
+Around each rise at t_e, with s = t - t_e - d (d: a time shift of the steps against
 the samples, shared, a nuisance parameter), the angle is
 
     before the step:  theta = a + w0 s + c s^2 / 2
@@ -24,7 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, dot
-from minseg_tui.model.identify.steps import StepWindow
+from minseg_tui.model.identify.rises import RiseWindow
 from minseg_tui.model.optimize import least_squares
 
 FloatArray = NDArray[np.float64]
@@ -57,7 +57,7 @@ class _Problem:
         self,
         t: FloatArray,
         theta: FloatArray,
-        windows: list[StepWindow],
+        windows: list[RiseWindow],
         keep: NDArray[np.bool_] | None = None,
     ) -> None:
         taus, ths, rows_all, seg, still, npre = [], [], [], [], [], []
@@ -145,7 +145,7 @@ class _Problem:
 def fit_windows(
     t: FloatArray,
     theta: FloatArray,
-    windows: list[StepWindow],
+    windows: list[RiseWindow],
     ts: float,
     shift: tuple[float, float] = (-math.inf, math.inf),
     T_range: tuple[float, float] = (1e-9, 2e4),
@@ -153,7 +153,7 @@ def fit_windows(
     shift_starts: tuple[float, ...] = (0.0,),
     T_starts: tuple[float, ...] = (),
 ) -> WindowsFit:
-    """Fit T and the time shift to the rising steps' windows: board times ``t`` (s), angle
+    """Fit T and the time shift to the rises' windows: board times ``t`` (s), angle
     ``theta`` (rad) at every row, the usable ``windows``; ``ts``: sample period (s); shift:
     the range (s) of the time shift; T_range: the range of T (s); keep: the rows the fit may
     use (default: all); shift_starts: the shifts (s) the search may start from, each with T

@@ -173,7 +173,8 @@ class Readout(Vertical):
             ),
             focused,
         )
-        top = step.scrollable_content_region.y
+        # below the step's heading, which covers its top while it is scrolled down
+        top = step.scrollable_content_region.y + int(getattr(step, "heading_rows", 0))
         for shown in (row, focused):
             under = shown.region.bottom - self.region.y
             if under <= 0:

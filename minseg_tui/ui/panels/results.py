@@ -3,6 +3,9 @@ group's own readings."""
 
 from __future__ import annotations
 
+import numpy as np
+from numpy.typing import NDArray
+from textual import events
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
@@ -18,19 +21,47 @@ from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
+CURSOR_JUMP = 5
+"""Columns Shift+←/→ move the cursor at once."""
+
 
 class StepPlot(TracePlot):
     """The step log, whole or zoomed to one rising step. Focused, [ and ] pick the step and z
-    toggles; alt+left/right and F9 do the same from anywhere on the step (app keys). Its
+    toggles; alt+left/right and F9 do the same from anywhere on the step (app keys). On a
+    zoomed rise, ←/→ (Shift: five columns) move a cursor from column to column, and a click
+    puts it on the column clicked; it reads t and omega off the plotted line there. Its
     keys are left out of the footer, which shows the app's (they pushed F8, F9, Alt+→ and
-    Ctrl+R off its line at 80 columns); the F1 help lists them."""
+    Ctrl+R off its line at 80 columns); the line under the plot and the F1 help list them."""
 
     BINDINGS = [
         Binding("left_square_bracket", "pick(-1)", "prev step", show=False),
         Binding("right_square_bracket", "pick(1)", "next step", show=False),
         Binding("z", "zoom", "zoom", show=False),
+        Binding("left", "cursor(-1)", "cursor left", show=False),
+        Binding("right", "cursor(1)", "cursor right", show=False),
+        Binding("shift+left", f"cursor({-CURSOR_JUMP})", "cursor left", show=False),
+        Binding("shift+right", f"cursor({CURSOR_JUMP})", "cursor right", show=False),
     ]
     can_focus = True
+
+    def _panel(self) -> ResultsPanel | None:
+        return next((p for p in self.ancestors if isinstance(p, ResultsPanel)), None)
+
+    def action_cursor(self, columns: int) -> None:
+        panel = self._panel()
+        if panel is not None:
+            panel.move_cursor(columns)
+
+    def on_focus(self) -> None:
+        panel = self._panel()
+        if panel is not None:
+            panel.move_cursor(0)
+
+    def on_click(self, event: events.Click) -> None:
+        """The cursor on the column clicked (a zoomed rise)."""
+        panel = self._panel()
+        if panel is not None and self.columns is not None:
+            panel.put_cursor(event.screen_x - self.canvas_x - self.columns[0])
 
     def action_pick(self, delta: int) -> None:
         for p in self.ancestors:
@@ -54,6 +85,11 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self._lines = Prose("computing…", id="results-lines")
         self._compare = Prose("", id="compare")
         self._details = Vertical(self._compare, self._lines, classes="details")
+        self.cursor: int | None = None
+        """The cursor's column in the zoomed rise's data area, from 0 at its left (None: no
+        cursor yet; the plot's first focus puts it on the edge)."""
+        self.reading: views.CursorReading | None = None
+        """What the cursor reads now (None: no cursor shown)."""
         self._said: tuple[object, ...] | None = None
         """The results and comparisons last drawn (None: nothing drawn yet)."""
         self._reveal = False
@@ -61,6 +97,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
 
     def compose(self) -> ComposeResult:
         yield StepPlot("step log", "t [s]", "omega [rad/s]", id="plot-log")
+        yield Prose("", id="cursor")
         yield Prose("", id="zoom-note", classes="hint")
 
     def after_rows(self) -> Widget:
@@ -76,8 +113,8 @@ class ResultsPanel(ViewPanel[ResultsView]):
         view = self.view
         if view is None:
             return
-        if self.zoom is not None and self.zoom >= len(view.steps):
-            self.zoom = 0 if view.steps else None
+        if self.zoom is not None and self.zoom >= len(view.rises):
+            self.zoom = 0 if view.rises else None
         self._plot()
         said = (view.lines, view.compare, view.problems)
         self._reveal = self._said is not None and said != self._said
@@ -102,11 +139,13 @@ class ResultsPanel(ViewPanel[ResultsView]):
             return
         plot = self.query_one(StepPlot)
         note = self.query_one("#zoom-note", Prose)
+        self.reading = None
+        self.query_one("#cursor", Prose).display = False
         if v.t.size == 0:
             plot.show([])
             note.update("no step run yet (Task 10)")
             return
-        if self.zoom is None or not v.steps:
+        if self.zoom is None or not v.rises:
             plot.set_axes("step log", "t [s]")
             plot.show(
                 [
@@ -114,26 +153,29 @@ class ResultsPanel(ViewPanel[ResultsView]):
                     Trace(v.t, v.u, "u_A [V]", "dot", steps=True, right=True),
                 ]
             )
-            if v.steps:
-                said = f"{len(v.steps)} rising steps with results · f9 Zoom"
+            if v.rises:
+                said = f"{len(v.rises)} rising steps with results · f9 Zoom"
             elif not v.lines:  # no results at all: Tasks 11-15 need the table's R, u_ss, i_ss
                 said = "no results yet: they need the table of Tasks 4-9 filled"
             else:
                 said = "no rising step long enough to read results from"
             note.update(f"run {v.run}: whole log, {said}")
             return
-        w = v.steps[self.zoom]
-        keep = (v.t >= w.z0) & (v.t <= w.z1)
+        w = v.rises[self.zoom]
+        # Task 12 reads T: the close-up on the first few T, a few ms a column at 80 columns
+        z0, z1 = (w.c0, w.c1) if self.step.id == "task12" and w.c1 > w.c0 else (w.z0, w.z1)
+        keep = (v.t >= z0) & (v.t <= z1)
         x = v.t[keep] - w.t0  # time after the edge: the 63 % crossing is read off as T
         traces = [
             Trace(x, v.omega[keep], "omega"),
             Trace(x, v.u[keep], "u_A [V]", "dot", steps=True, right=True),
         ]
-        lo, hi = w.z0 - w.t0, w.z1 - w.t0
+        lo, hi = z0 - w.t0, z1 - w.t0
         traces.append(Trace([lo, hi], [w.level, w.level], "63 %", "-"))
         read_T = "own.T" not in v.hidden  # the crossing is Task 12's answer
         if w.T_63 is not None and read_T:
             traces.append(Trace([w.T_63, w.T_63], [w.omega0, w.level], "crossing", "|"))
+        self._cursor(plot, traces, x, v.omega[keep], (lo, hi))
         plot.set_axes(f"step {self.zoom + 1}: the rise", "t after the edge [s]")
         plot.show(traces, (lo, hi))
         crossing = (
@@ -151,9 +193,58 @@ class ResultsPanel(ViewPanel[ResultsView]):
             f"63 % of the change is {format_value(w.level, 'rad/s', 3)}"
         )
         note.update(
-            f"run {v.run}, step {self.zoom + 1} of {len(v.steps)}: {change}, "
-            f"{crossing} · alt+←/→ Step · f9 Zoom (the next step)"
+            f"run {v.run}, step {self.zoom + 1} of {len(v.rises)}: {change}, "
+            f"{crossing} · shift+tab, ←/→ Cursor · alt+←/→ Step · f9 Zoom (the next step)"
         )
+
+    def _cursor(
+        self,
+        plot: StepPlot,
+        traces: list[Trace],
+        x: NDArray[np.float64],
+        omega: NDArray[np.float64],
+        xlim: tuple[float, float],
+    ) -> None:
+        """The cursor's line among ``traces`` and its reading under the plot: at the time of
+        its column (plotext's columns span ``xlim`` evenly), the speed of the plotted line
+        ``(x, omega)``."""
+        line = self.query_one("#cursor", Prose)
+        columns = plot.columns
+        if self.cursor is None or columns is None:
+            return
+        line.display = True
+        width = columns[1] - columns[0]
+        self.cursor = max(0, min(self.cursor, width))
+        lo, hi = xlim
+        at = lo + (hi - lo) * self.cursor / width
+        self.reading = views.cursor_reading(x, omega, at)
+        if self.reading is None:
+            line.update("┆ cursor: no sample there · ←/→ move it")
+            return
+        traces.append(Trace([at, at], [float(np.min(omega)), float(np.max(omega))], "", "┆", 4))
+        line.update(f"┆ cursor: {self.reading.text()} · ←/→ move it")
+
+    def move_cursor(self, columns: int) -> None:
+        """Move the cursor ``columns`` to the right (left if negative); 0 puts a first
+        cursor on the edge. Only on a zoomed rise."""
+        if self.zoom is None or self.view is None or not self.view.rises:
+            return
+        plot = self.query_one(StepPlot)
+        if self.cursor is None:
+            span = plot.columns
+            lo, hi = plot.traces_xlim or (0.0, 0.0)
+            if span is None or not hi > lo:
+                return
+            self.cursor = round((span[1] - span[0]) * -lo / (hi - lo))  # on the edge
+        self.cursor += columns
+        self._plot()
+
+    def put_cursor(self, column: int) -> None:
+        """The cursor on ``column`` of the data area (a click)."""
+        if self.zoom is None or self.view is None or not self.view.rises:
+            return
+        self.cursor = column
+        self._plot()
 
     def reveal(self) -> None:
         """Ctrl+R (a lab assistant): show this step's computed values before the group answers."""
@@ -161,9 +252,9 @@ class ResultsPanel(ViewPanel[ResultsView]):
 
     def pick(self, delta: int) -> None:
         """Zoom to the previous/next rising step."""
-        if self.view is None or not self.view.steps:
+        if self.view is None or not self.view.rises:
             return
-        n = len(self.view.steps)
+        n = len(self.view.rises)
         self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
         self._plot()
 
@@ -182,11 +273,11 @@ class ResultsPanel(ViewPanel[ResultsView]):
 
     def zoom_next(self) -> None:
         """F9: the next step, then the whole log, then the first step again."""
-        if self.view is None or not self.view.steps:
+        if self.view is None or not self.view.rises:
             return
         if self.zoom is None:
             self.zoom = 0
-        elif self.zoom + 1 >= len(self.view.steps):
+        elif self.zoom + 1 >= len(self.view.rises):
             self.zoom = None
         else:
             self.zoom += 1

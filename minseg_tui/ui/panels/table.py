@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from textual.app import ComposeResult
+from textual.widget import Widget
 from textual.widgets import DataTable
 
 from minseg_tui.lab.state.session import Session
@@ -14,13 +15,22 @@ from minseg_tui.ui.widgets.prose import Prose
 
 class TablePanel(ViewPanel[TableView]):
     """The table of Tasks 6-9 with the final values and warnings; F7 (or Enter on a cell)
-    shows the formula behind the cell."""
+    shows the formula behind the cell. The warnings come under the group's entries (a step
+    lands on its first entry: at 80x24 the warnings above it pushed the table and the step's
+    title off the screen)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._warnings = Prose("", id="warnings", classes="para")
 
     def compose(self) -> ComposeResult:
         yield DataTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
         yield Prose("F7 on a cell: the formula behind it.", id="formula", classes="hint")
         yield Prose("", id="results")
-        yield Prose("", id="warnings")
+
+    def after_rows(self) -> Widget:
+        """The warnings, shown under the group's entries."""
+        return self._warnings
 
     def build(self, session: Session) -> TableView:
         return views.table(session)
@@ -43,7 +53,8 @@ class TablePanel(ViewPanel[TableView]):
             if own != "—"
         ]
         self.query_one("#results", Prose).update("\n".join(lines))
-        self.query_one("#warnings", Prose).update("\n".join(f"! {w}" for w in view.warnings))
+        self._warnings.update("\n".join(f"! {w}" for w in view.warnings))
+        self._warnings.display = bool(view.warnings)
 
     def formula(self) -> None:
         """Show the formula of the cell under the cursor."""

@@ -8,8 +8,10 @@ from textual.containers import VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Static
 
+from minseg_tui.ui.screens.lab import marks_legend
+
 INTRO = (
-    "The left column lists the lab's steps in order (✓ done, ✗ answered but wrong, … started); "
+    f"The left column lists the lab's steps in order ({marks_legend()}); "
     "the right shows the goal, what to do and what to type. Everything typed is saved at once."
 )
 

@@ -20,7 +20,7 @@ from textual.actions import SkipAction
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
-from textual.containers import Horizontal, VerticalScroll
+from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.css.query import NoMatches
 from textual.reactive import reactive
 from textual.signal import Signal
@@ -70,8 +70,23 @@ _SHORT = {
 NOTES = ".notes"
 """The key ending of a step's own notes field."""
 
-MARKS = {"done": "✓", "wrong": "✗", "started": "…", "todo": " ", "info": " "}
-"""The navigator's mark of a step's status (a character, not a colour)."""
+STATUS_WORDS: tuple[tuple[str, str, str], ...] = (
+    ("done", "✓", "done"),
+    ("wrong", "✗", "answered but wrong"),
+    ("refused", "?", "an entry refused"),
+    ("started", "…", "started"),
+)
+"""The navigator's marks of a step's status that show (a character, not a colour): status,
+mark and what F1 says it means."""
+
+MARKS = {status: mark for status, mark, _ in STATUS_WORDS} | {"todo": " ", "info": " "}
+"""The navigator's mark of a step's status (blank: nothing to say)."""
+
+
+def marks_legend() -> str:
+    """What the marks mean, for F1: '✓ done, ✗ answered but wrong, ...'."""
+    return ", ".join(f"{mark} {words}" for _, mark, words in STATUS_WORDS)
+
 
 STEP_IDS = tuple(s.id for s in STEPS)
 
@@ -94,10 +109,31 @@ def nav_label(step: Step, status: str = "todo") -> str:
     return f"{MARKS.get(status, ' ')} {head}"
 
 
+HEADING_ROWS = 2
+"""The rows of a step's :class:`Heading` (lab.tcss)."""
+
+
+class Heading(Vertical):
+    """The step's title and the start of what to do, on one line each, kept at the top of
+    the step while its own title is scrolled away (a layer of its own over the step, so the
+    step's text does not move when it shows). At 80x24 a step taller than the screen landed
+    on its entry with its title and instructions above the screen: the group did not see
+    what the step asks."""
+
+    def __init__(self, step: Step) -> None:
+        super().__init__(
+            Static(step.title, classes="heading-title", markup=False),
+            Static("What to do: " + step.todo, classes="heading-todo", markup=False),
+            classes="heading",
+        )
+        self.display = False
+
+
 class StepPane(VerticalScroll):
     """Title, goal, what to do, the step's own panel (and the readout it keeps in sight at the
-    bottom) and its entry rows. :meth:`focus_on` focuses its landing entry or a widget in it
-    (the screen calls it once the pane is mounted)."""
+    bottom) and its entry rows; the :class:`Heading` over its top while it is scrolled down.
+    :meth:`focus_on` focuses its landing entry or a widget in it (the screen calls it once the
+    pane is mounted)."""
 
     def __init__(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
         super().__init__(classes="pane")
@@ -107,6 +143,7 @@ class StepPane(VerticalScroll):
         # focusable where the step may land on its text (no entries, or a panel to read):
         # the arrow keys then scroll it
         self.can_focus = panel is not None or not step.fields
+        self._heading = Heading(step)
         self._keep: FieldRow | Literal["focused", "scrolled"] = "focused"
         """What stays in view when the step grows or shrinks above its entries: the entry the
         step landed in, while it has the focus (placed again from the top of the step: the
@@ -115,6 +152,7 @@ class StepPane(VerticalScroll):
         the focus last moved in the step: it stays where they put it."""
 
     def compose(self) -> ComposeResult:
+        yield self._heading
         yield Prose(self.step.title, classes="title")
         yield Prose("Goal: " + self.step.goal, classes="goal")
         yield Prose("What to do: " + self.step.todo, classes="todo")
@@ -163,7 +201,10 @@ class StepPane(VerticalScroll):
             top = row.region.y - view.y + self.scroll_y
             bottom = row.region.bottom - view.y + self.scroll_y
             end = widget.region.bottom - view.y + self.scroll_y
+            # the entry's top below the heading, which covers the step's top once it scrolls
             y = min(max(self.scroll_y, end - view.height, bottom - view.height), top)
+            if y > 0:
+                y = min(y, max(top - HEADING_ROWS, 0))
             self.scroll_to(y=y, animate=False, immediate=True)
             if again:  # once more when the layout has settled
                 self.call_after_refresh(place, False)
@@ -190,9 +231,29 @@ class StepPane(VerticalScroll):
         if row is not None and self in row.ancestors:
             row.call_after_refresh(row.bring_into_view)
 
-    def on_descendant_focus(self, _: events.DescendantFocus) -> None:
+    def on_descendant_focus(self, event: events.DescendantFocus) -> None:
         if self._keep == "scrolled":
             self._keep = "focused"
+        self.call_after_refresh(self._clear_heading, event.widget)
+
+    def watch_scroll_y(self, old: float, new: float) -> None:
+        """The heading shows while the step's own title is scrolled away."""
+        super().watch_scroll_y(old, new)
+        self._heading.display = round(new) > 0
+
+    @property
+    def heading_rows(self) -> int:
+        """Rows the heading covers at the top of the step (0 while it is hidden)."""
+        return HEADING_ROWS if self._heading.display else 0
+
+    def _clear_heading(self, widget: Widget) -> None:
+        """A focused ``widget`` under the heading (Textual scrolls a widget above the view to
+        the top edge, where the heading lies) is scrolled down from under it."""
+        if not (widget.is_attached and self.is_attached and widget.has_focus and widget.region):
+            return  # an empty region: not on the screen at all (below it, say), not under it
+        over = self.scrollable_content_region.y + self.heading_rows - widget.region.y
+        if over > 0:
+            self.scroll_to(y=max(self.scroll_y - over, 0), animate=False, immediate=True)
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
         self._group_scrolled()
@@ -355,6 +416,9 @@ class LabScreen(StatusScreen):
         may be None, "leave it")."""
         self._paging = False
         """Set by PgDn/PgUp: the step shown next takes the focus, wherever it was."""
+        self._undone: dict[str, list[str]] = {}
+        """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
+        forward again (until another answer is stored in the field)."""
         self.shown = asyncio.Event()
         """Set once the first step is on screen and focused (the app waits for it before it
         hands on the keys typed after the Enter that opened the lab)."""
@@ -657,7 +721,12 @@ class LabScreen(StatusScreen):
                 if text is not None:
                     self._store(row, text, submitted=False)
 
-    def _store(self, row: FieldRow, text: str, submitted: bool) -> EntryView:
+    def _store(self, row: FieldRow, text: str, submitted: bool, undoing: bool = False) -> EntryView:
+        """Store ``text`` for ``row`` (``submitted``: with Enter) and show the verdict. An
+        answer stored by any means but Ctrl+Z or Ctrl+Y (``undoing``) ends what Ctrl+Y
+        could bring forward in that field."""
+        if not undoing:
+            self._undone.pop(row.field.key, None)
         if self.readonly:
             result = EntryView(False, "this session is open read-only (damaged): not stored")
             row.show_result(result)
@@ -683,18 +752,66 @@ class LabScreen(StatusScreen):
 
     @on(FieldRow.Restore)
     def _restore(self, event: FieldRow.Restore) -> None:
-        """Ctrl+Z in an entry: the answer stored before the one in effect, entered again."""
+        """Escape in an entry: a refused text the lab keeps there is dropped with its refusal
+        (the answer in effect stands alone again, and its mark in the list of steps comes
+        back). Ctrl+Z: the answer stored before the one in effect (one further back each
+        time), entered again; Ctrl+Y: the answer the last Ctrl+Z took back. Either says what
+        it brought back, in place of what, and how it is judged."""
         event.stop()
-        with self.session as s:
-            previous = views.previous_answer(s, event.key)
-        if previous is None:
-            self.notify(f"{event.row.field.label}: no earlier answer to bring back")
+        if event.how == "held":
+            self._withdraw(event.row)
             return
-        event.row.refresh_from_lab(previous, None)
-        event.row.input.cursor_position = len(previous)
-        result = self._store(event.row, previous, submitted=True)
-        if result.ok:
-            self.notify(f"{event.row.field.label}: back to {previous.strip()!r}")
+        row, key, label = event.row, event.key, event.row.field.label
+        undone = self._undone.setdefault(key, [])
+        with self.session as s:
+            current = views.held(s, key)
+            if event.how == "undo":
+                target = views.previous_answer(s, key, skip=undone)
+            else:
+                target = undone[-1] if undone else None
+        if target is None:
+            self.notify(
+                f"{label}: no earlier answer to bring back"
+                if event.how == "undo"
+                else f"{label}: nothing to bring forward (Ctrl+Y undoes a Ctrl+Z)",
+                title="undo" if event.how == "undo" else "redo",
+            )
+            return
+        row.refresh_from_lab(target, None)
+        row.input.cursor_position = len(target)
+        result = self._store(row, target, submitted=True, undoing=True)
+        if event.how == "undo":
+            undone.append(current)
+        else:
+            undone.pop()
+        with self.session as s:
+            verdict = views.judged(s, key) if result.ok else ""
+            further = views.previous_answer(s, key, skip=undone) is not None
+        said = f"{label}: back to {target.strip()!r}"
+        if current.strip():
+            said += f" in place of {current.strip()!r}"
+        if verdict:
+            said += f"; {verdict}"
+        keys = ["Ctrl+Z goes further back"] if further else []
+        if undone:
+            keys.append(f"Ctrl+Y brings {undone[-1].strip()!r} back")
+        self.notify(said + (f" ({', '.join(keys)})" if keys else ""), title="answer brought back")
+
+    def _withdraw(self, row: FieldRow) -> None:
+        """Escape in ``row``: the refused text the lab keeps for it dropped (nothing else
+        stored), and the row shows what is in effect, without the refusal."""
+        if self.readonly:
+            return
+        key = row.field.key
+        with self.session as s:
+            if not s.withdraw_refused(key):
+                return
+            held = views.held(s, key)
+            result = views.entry(s, key) or EntryView(True)
+            row.held = held
+        row.refresh_from_lab(held, result)
+        row.input.cursor_position = len(held)
+        self._changed()
 
     @on(FieldRow.Typed)
     def _typed(self, event: FieldRow.Typed) -> None:

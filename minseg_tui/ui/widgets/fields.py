@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from typing import Literal
 
 from rich.segment import Segment
 from textual import events, on
@@ -70,6 +71,12 @@ screen's (it stores the entry and moves on)."""
 DESELECTING_KEYS = frozenset({"backspace", "delete", "left", "right", "home", "end"})
 """Keys that edit a refused text by one character (or move in it) rather than replace it."""
 
+Restoring = Literal["held", "undo", "redo"]
+"""What a key in an entry brings back: the text the lab holds (Escape), the answer stored
+before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
+
+RESTORING_KEYS: dict[str, Restoring] = {"escape": "held", "ctrl+z": "undo", "ctrl+y": "redo"}
+
 
 class EntryBox(Input):
     """The text box of an entry: focusing it selects what it holds (typing replaces it),
@@ -77,8 +84,8 @@ class EntryBox(Input):
 
     A refused text stays selected (:meth:`hold_refused`): the next value typed replaces it,
     while Backspace, Delete, the arrows and Home/End edit it one character at a time. Escape
-    brings back the text the lab holds for the row; Ctrl+Z the answer stored before it
-    (:class:`FieldRow.Restore`)."""
+    brings back the text the lab holds for the row and drops a refused text over it; Ctrl+Z
+    the answer stored before it, Ctrl+Y the one Ctrl+Z took back (:class:`FieldRow.Restore`)."""
 
     def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
         super().__init__(
@@ -125,12 +132,13 @@ class EntryBox(Input):
             self._refused = False
             if event.key in DESELECTING_KEYS:  # edit the refused text, from its end
                 self.cursor_position = len(self.value)
-        if event.key in ("escape", "ctrl+z"):
+        how = RESTORING_KEYS.get(event.key)
+        if how is not None:
             row = next((a for a in self.ancestors if isinstance(a, FieldRow)), None)
             if row is not None:
                 event.stop()
                 event.prevent_default()
-                row.restore(previous=event.key == "ctrl+z")
+                row.restore(how)
             return
         action = EDITING_KEYS.get(event.key)
         if action is not None:
@@ -153,8 +161,10 @@ class FieldRow(Vertical):
     choice field is a list to tick with the keys (arrows, Space or Enter) and posts
     :class:`FieldRow.Chosen`. The screen answers with :meth:`show_result`.
 
-    Typing never lands on the end of a value: focusing the box selects what it holds, and so
-    does Enter, so the next keys replace it (an arrow key or Home/End keeps it to edit)."""
+    Typing never lands on the end of a value the group comes back to: focusing the box
+    selects what it holds, so the next keys replace it (an arrow key or Home/End keeps it to
+    edit). After Enter the cursor stands at the end of an accepted value, nothing selected
+    (a digit typed next is appended); a refused text stays selected."""
 
     class Reflowed(Message):
         """The row grew or shrank once laid out (its hint moved under the box or back): the
@@ -170,11 +180,14 @@ class FieldRow(Vertical):
 
     @dataclass
     class Restore(Message):
-        """Ctrl+Z in the row: the group wants back the answer stored before the one in effect
-        (Escape needs no message: the row holds the text the lab holds)."""
+        """Escape, Ctrl+Z or Ctrl+Y in the row (``how``). Escape has put back in the box the
+        text the lab holds: the screen drops a refused text the lab keeps over it, and its
+        refusal. Ctrl+Z: the group wants back the answer stored before the one in effect;
+        Ctrl+Y: the answer the last Ctrl+Z took back."""
 
         row: FieldRow
         key: str
+        how: Restoring = "undo"
 
     @dataclass
     class Typed(Message):
@@ -322,27 +335,28 @@ class FieldRow(Vertical):
 
     def submitted(self) -> str | None:
         """Enter (the screen handles it): the text to store, sent again even if unchanged;
-        what the box holds is selected, so keys typed if the focus stays here replace it.
-        None on a list of answers."""
+        the cursor at its end, nothing selected, so a key typed if the focus stays here goes
+        on after it (a refused text is selected again by :meth:`show_result`). None on a
+        list of answers."""
         if self.field.options:
             return None
         text = self.input.value
         self._sent = text
-        self.input.select_all()
+        self.input.cursor_position = len(text)
         return text
 
-    def restore(self, previous: bool = False) -> None:
-        """Escape: the box shows again the text the lab holds (:attr:`held`), whatever was
-        typed over it and not confirmed; nothing is stored. Ctrl+Z (``previous``): ask the
-        screen for the answer stored before that one (:class:`Restore`)."""
+    def restore(self, how: Restoring = "held") -> None:
+        """Escape (``held``): the box shows again the text the lab holds (:attr:`held`),
+        whatever was typed over it and not confirmed, and the screen drops a refused text
+        (:class:`Restore`). Ctrl+Z (``undo``) / Ctrl+Y (``redo``): ask the screen for the
+        answer stored before the one in effect / the one Ctrl+Z took back."""
         if self.field.options or self._readonly:
             return
-        if previous:
-            self.post_message(self.Restore(self, self.field.key))
-            return
-        box = self.input
-        box.value = self.held
-        box.cursor_position = len(box.value)
+        if how == "held":
+            box = self.input
+            box.value = self.held
+            box.cursor_position = len(box.value)
+        self.post_message(self.Restore(self, self.field.key, how))
 
     def _choose(self, indices: tuple[int, ...]) -> None:
         if indices != self._chosen:
@@ -411,7 +425,7 @@ class FieldRow(Vertical):
         event.stop()
         self._sent = None  # Enter always re-sends
         self._send(submitted=True)
-        self.input.select_all()  # if the focus stays here, the next keys replace the value
+        self.input.cursor_position = len(self.input.value)  # a digit typed next goes on after
 
     @on(Input.Blurred)
     def _blurred(self, event: Input.Blurred) -> None:

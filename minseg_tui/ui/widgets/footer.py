@@ -3,75 +3,222 @@
 Textual's footer lays its keys out in one line and cuts the line where the screen ends: at
 80 columns Tasks 11-15 showed 'alt+→ Step  ^' and the palette key after it, a stray '^'
 where Ctrl+R Reveal had been cut. :class:`KeyFooter` closes its spacing up when the keys do
-not fit (Textual's compact style), and when they still do not, leaves out whole keys from
-the end of the line (the F1 help lists every key).
+not fit (the compact spacing), and when they still do not, leaves out whole keys from the
+end of the line (the F1 help lists every key).
 
 It is also built again only when the keys it shows change, once per refresh: Textual's own
 footer rebuilds itself (every key unmounted and mounted again, its style applied) after each
 change of the screen's bindings, each focus change and each reactive with bindings; a step
 change in the lab did that about five times over, the same keys each time (a quarter of the
 step change's CPU time).
+
+It is our own widget, made of Textual's public pieces (the screen's ``active_bindings`` and
+``bindings_updated_signal``, ``App.get_key_display``, ``App.simulate_key``, the theme's
+``$footer-*`` colours), not a subclass of Textual's ``Footer``: measuring that footer's keys
+took its private key class (``textual.widgets._footer.FooterKey``), and building it only when
+the keys change took overriding its signal handler and setting its private ``_bindings_ready``.
+Its keys are :class:`KeyLabel` widgets, spaced and coloured as Textual's footer spaces and
+colours its keys, so the screens look the same; their widths are ours to know.
 """
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 from rich.cells import cell_len
+from rich.text import Text
 from textual.app import ComposeResult
-from textual.binding import Binding
+from textual.containers import ScrollableContainer
+from textual.reactive import reactive
 from textual.screen import Screen
 from textual.widget import Widget
-from textual.widgets import Footer
-from textual.widgets._footer import FooterKey
-
-Shown = tuple[tuple[str, str, str, str, bool, str, str | None], ...]
-"""What the footer shows of each key: (key, as displayed, description, action, enabled,
-tooltip, group)."""
 
 
-class KeyFooter(Footer):
-    """A :class:`Footer` whose keys are shown whole or not at all, the palette's key kept at
-    the right: Textual's spacing where every key fits, else the compact spacing, else the
-    compact spacing without the keys from the last one on that do not fit. Decided from the
-    keys' text and Textual's spacing (the widths :func:`key_width` gives), before the keys
-    are laid out; only the compact palette key's margin, which the last key needs to end
-    where it begins, is taken away. Built again once per refresh at most, and only when the
-    keys it shows changed (:meth:`shown`)."""
+class ShownKey(NamedTuple):
+    """One key as the footer shows it."""
 
+    key: str
+    """The key pressed when the label is clicked ('f9')."""
+    display: str
+    """The key as written ('f9', '^r')."""
+    description: str
+    """What it does ('Zoom'; '': the key alone)."""
+    enabled: bool
+    """False: shown dimmed, a click rings the bell."""
+    tooltip: str
+    palette: bool = False
+    """The command palette's key, docked at the right of the line."""
+
+
+Shown = tuple[ShownKey, ...]
+"""What the footer shows, in order, the palette's key (if any) last."""
+
+
+class KeyLabel(Widget):
+    """One key of :class:`KeyFooter`, 'f9 Zoom': the key on the key colours, then what it
+    does. Spaced ' f9 Zoom ' or, compact, 'f9 Zoom' (the footer puts a space after it); the
+    palette's key is always compact. A click presses the key (a disabled one rings the
+    bell)."""
+
+    ALLOW_SELECT = False
+    COMPONENT_CLASSES = {"key-label--key", "key-label--description"}
     DEFAULT_CSS = """
-    KeyFooter.-compact FooterKey.-command-palette { margin: 0; }
+    KeyLabel {
+        width: auto;
+        height: 1;
+        text-wrap: nowrap;
+        background: $footer-item-background;
+        .key-label--key {
+            color: $footer-key-foreground;
+            background: $footer-key-background;
+            text-style: bold;
+        }
+        .key-label--description {
+            color: $footer-description-foreground;
+            background: $footer-description-background;
+        }
+        &:hover {
+            pointer: pointer;
+            color: $footer-key-foreground;
+            background: $block-hover-background;
+        }
+        &.-disabled {
+            text-style: dim;
+        }
+    }
     """
+
+    compact: reactive[bool] = reactive(True, layout=True)
+    """The compact spacing (the footer's, bound to it; the palette's key always)."""
+
+    def __init__(self, shown: ShownKey) -> None:
+        classes = ("-disabled " if not shown.enabled else "") + (
+            "-palette" if shown.palette else ""
+        )
+        super().__init__(classes=classes.strip())
+        self.key = shown.key
+        self.key_display = shown.display
+        self.description = shown.description
+        self.enabled = shown.enabled
+        self.set_reactive(Widget.shrink, False)  # a key keeps its width; whole keys go
+        if shown.tooltip:
+            self.tooltip = shown.tooltip
+
+    def render(self) -> Text:
+        key_style = self.get_component_rich_style("key-label--key")
+        if not self.description:
+            text = Text(self.key_display, key_style)
+        elif self.compact:
+            text = Text.assemble(
+                (self.key_display, key_style),
+                (" " + self.description, self.get_component_rich_style("key-label--description")),
+            )
+        else:
+            text = Text.assemble(
+                (f" {self.key_display} ", key_style),
+                (self.description + " ", self.get_component_rich_style("key-label--description")),
+            )
+        text.stylize_before(self.rich_style)
+        return text
+
+    def on_mouse_down(self) -> None:
+        if self.enabled:
+            self.app.simulate_key(self.key)
+        else:
+            self.app.bell()
+
+    def width(self, compact: bool) -> int:
+        """The columns this key takes in :class:`KeyFooter`, its margin included (see
+        :func:`key_width`)."""
+        return key_width(self.key_display, self.description, compact, self.has_class("-palette"))
+
+
+class KeyFooter(ScrollableContainer, can_focus=False, can_focus_children=False):
+    """The screen's keys in one line at its bottom, each shown whole or not at all, the
+    palette's key kept at the right: the roomy spacing where every key fits, else the
+    compact spacing, else the compact spacing without the keys from the last one on that do
+    not fit. Decided from the keys' text and spacing (:func:`key_width`) before the keys
+    are laid out. Built again once per refresh at most, and only when the keys it shows
+    changed (:meth:`shown`). One key per action (the first binding of it), as Textual's
+    footer shows them; binding groups are not drawn as groups (the lab has none)."""
+
+    ALLOW_SELECT = False
+    DEFAULT_CSS = """
+    KeyFooter {
+        layout: horizontal;
+        color: $footer-foreground;
+        background: $footer-background;
+        dock: bottom;
+        height: 1;
+        scrollbar-size: 0 0;
+        KeyLabel.-palette {
+            dock: right;
+            padding-right: 1;
+            border-left: vkey $foreground 20%;
+        }
+        &.-compact {
+            KeyLabel {
+                margin-right: 1;
+            }
+            KeyLabel.-palette {
+                padding-right: 0;
+                margin: 0;
+            }
+        }
+    }
+    """
+
+    compact: reactive[bool] = reactive(False, toggle_class="-compact")
+    """The compact spacing (chosen by :meth:`_fit`)."""
 
     def __init__(self) -> None:
         super().__init__()
+        self._ready = False
+        """The screen said its bindings are in place (nothing is shown before)."""
         self._pending = False
         self._drawn: Shown | None = None
         """What the footer last showed (None: never built with bindings)."""
 
+    def on_mount(self) -> None:
+        self.screen.bindings_updated_signal.subscribe(self, self.bindings_changed)
+
+    def on_unmount(self) -> None:
+        self.screen.bindings_updated_signal.unsubscribe(self)
+
     def shown(self) -> Shown:
-        """What the footer would show now: the screen's active keys, as its compose reads them."""
-        rows: list[tuple[Binding, bool, str]] = [
-            (binding, enabled, tooltip)
-            for (_, binding, enabled, tooltip) in self.screen.active_bindings.values()
-            if binding.show
-        ]
-        palette = self.screen.active_bindings.get(self.app.COMMAND_PALETTE_BINDING)
-        if palette is not None and self.show_command_palette and self.app.ENABLE_COMMAND_PALETTE:
-            rows.append((palette[1], palette[2], palette[3]))
-        return tuple(
-            (
-                b.key,
-                self.app.get_key_display(b),
-                b.description,
-                b.action,
-                enabled,
-                tooltip or b.tooltip,
-                b.group.description if b.group else None,
+        """What the footer would show now: the screen's active keys meant to be shown, one
+        per action, then the command palette's key."""
+        active = self.screen.active_bindings
+        line: dict[str, ShownKey] = {}
+        for _, binding, enabled, tooltip in active.values():
+            if binding.show and binding.action not in line:
+                line[binding.action] = ShownKey(
+                    binding.key,
+                    self.app.get_key_display(binding),
+                    binding.description,
+                    enabled,
+                    tooltip,
+                )
+        keys = list(line.values())
+        palette = active.get(self.app.COMMAND_PALETTE_BINDING)
+        if palette is not None and self.app.ENABLE_COMMAND_PALETTE:
+            _, binding, enabled, _ = palette
+            keys.append(
+                ShownKey(
+                    binding.key,
+                    self.app.get_key_display(binding),
+                    binding.description,
+                    enabled,
+                    binding.tooltip or binding.description,
+                    palette=True,
+                )
             )
-            for b, enabled, tooltip in rows
-        )
+        return tuple(keys)
 
     def bindings_changed(self, screen: Screen[object]) -> None:
-        self._bindings_ready = True
+        """The screen's bindings changed: build the footer again after the next refresh, if
+        its keys did."""
+        self._ready = True
         if not screen.app.app_focus:
             return
         if self.is_attached and screen is self.screen and not self._pending:
@@ -88,45 +235,47 @@ class KeyFooter(Footer):
             await self.recompose()
 
     def compose(self) -> ComposeResult:
-        widgets = list(super().compose())
-        self._fit(widgets, self.size.width)
-        yield from widgets
+        if not self._ready:
+            return
+        keys = [KeyLabel(k) for k in self.shown()]
+        for k in keys:
+            if not k.has_class("-palette"):
+                k.data_bind(compact=KeyFooter.compact)
+        self._fit(keys, self.size.width)
+        yield from keys
 
     def on_resize(self) -> None:
-        self._fit(list(self.children), self.size.width)
+        self._fit(list(self.query_children(KeyLabel)), self.size.width)
 
-    def _fit(self, widgets: list[Widget], width: int) -> None:
+    def _fit(self, keys: list[KeyLabel], width: int) -> None:
         """Choose the spacing and the keys shown for ``width`` columns (0: not laid out yet,
         everything shown)."""
-        keys = [w for w in widgets if isinstance(w, FooterKey)]
-        palette = [k for k in keys if k.has_class("-command-palette")]
-        line = [k for k in keys if not k.has_class("-command-palette")]
-        if len(line) != len(widgets) - len(palette):  # a group or a label: Textual's layout
-            return
+        palette = [k for k in keys if k.has_class("-palette")]
+        line = [k for k in keys if not k.has_class("-palette")]
         for compact in (False, True):
             gap = 1 if compact else 0  # the margin after a key, needed only before another
-            room = width - sum(key_width(k, compact, palette=True) for k in palette) + gap
-            used = sum(key_width(k, compact) for k in line)
+            room = width - sum(k.width(compact) for k in palette) + gap
+            used = sum(k.width(compact) for k in line)
             if used <= room or not width:
                 break
         self.compact = compact
         for k in line:
-            w = key_width(k, compact)
+            w = k.width(compact)
             k.display = w <= room
             room = room - w if k.display else -1  # the keys after one left out go too
 
 
-def key_width(key: FooterKey, compact: bool, palette: bool = False) -> int:
-    """The columns ``key`` takes in :class:`KeyFooter`, its margin included: ' f9 Zoom ' or,
+def key_width(display: str, description: str, compact: bool, palette: bool = False) -> int:
+    """The columns a key takes in :class:`KeyFooter`, its margin included: ' f9 Zoom ' or,
     compact, 'f9 Zoom' and a space. The palette's key, docked at the right, is always
-    written compact (Textual binds only the others to the footer's spacing), with a border
-    on its left and, when the footer is not compact, a space on its right."""
-    if not key.description:  # the key alone, unpadded (FooterKey.render)
-        text = cell_len(key.key_display)
+    written compact, with a border on its left and, when the footer is not compact, a space
+    on its right."""
+    if not description:  # the key alone, unpadded (KeyLabel.render)
+        text = cell_len(display)
     elif compact or palette:
-        text = cell_len(key.key_display) + 1 + cell_len(key.description)
+        text = cell_len(display) + 1 + cell_len(description)
     else:
-        text = cell_len(key.key_display) + 2 + cell_len(key.description) + 1
+        text = cell_len(display) + 2 + cell_len(description) + 1
     if palette:
         return 1 + text + (0 if compact else 1)  # its border, its padding on the right
     return text + (1 if compact else 0)  # its margin on the right

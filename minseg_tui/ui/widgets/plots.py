@@ -26,7 +26,14 @@ from minseg_tui.quantities import format_ticks
 Values = Sequence[float] | NDArray[np.float64]
 """The x or y values of a trace."""
 
-GLYPHS: dict[str, str] = {"braille": "⠶⠶", "dot": "••", "+": "++", "-": "--", "|": "|"}
+GLYPHS: dict[str, str] = {
+    "braille": "⠶⠶",
+    "dot": "••",
+    "+": "++",
+    "-": "--",
+    "|": "|",
+    "┆": "┆",
+}
 """How the legend shows each marker (what the trace looks like on the plot)."""
 
 COLOURS: tuple[tuple[str, str], ...] = (
@@ -70,7 +77,7 @@ def drawn(tr: Trace) -> tuple[list[float], list[float]]:
     return x, y
 
 
-GUIDES = frozenset({"-", "|"})
+GUIDES = frozenset({"-", "|", "┆"})
 """Markers of lines that guide the eye (a level, a time, a noise band): drawn under the data."""
 
 MOST_TICKS = 4
@@ -256,6 +263,10 @@ class Canvas(PlotextPlot):
         self.xlim: tuple[float, float] | None = None
         self._drawn: Hashable = None
         """What :meth:`draw` last handed plotext (the key of its build in :data:`_built`)."""
+        self.columns: tuple[int, int] | None = None
+        """The first and the last column of the plot's data area in the widget, as last
+        drawn (None: not drawn yet); plotext puts x on column first + round((last - first)
+        (x - lo) / (hi - lo))."""
 
     def on_mount(self) -> None:
         super().on_mount()
@@ -374,7 +385,18 @@ class Canvas(PlotextPlot):
                 _built.popitem(last=False)
         else:
             _built.move_to_end(key)
+        self.columns = data_columns(text.plain)
         return text.copy()
+
+
+def data_columns(plain: str) -> tuple[int, int] | None:
+    """The first and the last column of the data area of a plot drawn as ``plain`` text
+    (inside the corners of its frame), or None without a frame."""
+    for line in plain.split("\n"):
+        if "┌" in line and "┐" in line:
+            first, last = line.index("┌") + 1, line.rindex("┐") - 1
+            return (first, last) if last > first else None
+    return None
 
 
 class TracePlot(Vertical):
@@ -402,6 +424,21 @@ class TracePlot(Vertical):
     def traces(self) -> tuple[Trace, ...]:
         """What the plot draws now."""
         return self._canvas.traces
+
+    @property
+    def columns(self) -> tuple[int, int] | None:
+        """The first and the last column of the data area, in the plot (None: not drawn)."""
+        return self._canvas.columns
+
+    @property
+    def traces_xlim(self) -> tuple[float, float] | None:
+        """The x range the plot was last shown over (None: its data's own)."""
+        return self._canvas.xlim
+
+    @property
+    def canvas_x(self) -> int:
+        """The screen column of the plot's left edge."""
+        return self._canvas.region.x
 
     @property
     def legend(self) -> str:

@@ -1,4 +1,4 @@
-"""T and the steady speeds of a step log by least squares (Tasks 11-12), with 95 % intervals.
+"""T and the steady speeds of a run log by least squares (Tasks 11-12), with 95 % intervals.
 
 Two fits, both on what a log measures, the wheel angle at the board's timestamps (``t_us``
 when present), both with a time shift of the steps against the samples as a nuisance
@@ -6,10 +6,10 @@ parameter (:mod:`.wholelog`, :mod:`.windowfit`):
 
 - the model of Task 14 over the whole log, every edge rising and falling, dry friction when
   the log shows it: the most the log can tell about T, when the log follows that model;
-- each rising step on its own, T shared: robust to what happens between the steps (a wheel
+- each rise on its own, T shared: robust to what happens between the steps (a wheel
   that coasts at zero command, a speed that wanders).
 
-The whole-log fit is used when it explains the rising steps about as well as the step-by-step
+The whole-log fit is used when it explains the rises about as well as the step-by-step
 fit does (its residuals on their rows at most :data:`ADEQUATE` times theirs); otherwise the
 step-by-step fit. Either way K comes from the fitted steady speeds, not from means over a
 step that may not have settled.
@@ -25,10 +25,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.model.identify.lsq import dot
-from minseg_tui.model.identify.steps import StepWindow, reading_63, step_windows
+from minseg_tui.model.identify.rises import RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
 from minseg_tui.model.identify.windowfit import WindowsFit, fit_windows
-from minseg_tui.model.steplog import StepLog, command, find_edges
+from minseg_tui.model.runlog import RunLog, command, find_edges
 
 FloatArray = NDArray[np.float64]
 
@@ -42,13 +42,13 @@ DEAD_TIME_F: float = 25.0
 squares by this many times its residual variance (as dry friction does)."""
 
 DEAD_TIME_SHARE: float = 0.8
-"""The longest dead time tried, as a share of the shortest rising step (as the check does)."""
+"""The longest dead time tried, as a share of the shortest rise (as the check does)."""
 
 T_MIN_SAMPLES: float = 0.05
 """The shortest T the fit tries, in sample periods (T far below a sample cannot be seen)."""
 
-T_MAX_STEPS: float = 10.0
-"""The longest T the fit tries, in lengths of the longest rising step."""
+T_MAX_RISES: float = 10.0
+"""The longest T the fit tries, in lengths of the longest rise."""
 
 GAP: float = 1.5
 """A sample interval this many times the median is a gap in the logging (a stall)."""
@@ -59,16 +59,16 @@ the residual (and by more than the encoder's step) is a logging stall: the encod
 read before its timestamp. It is left out of the fit."""
 
 ADEQUATE: float = 1.3
-"""The whole-log fit is used when the rms of its angle residuals on the rising steps' rows is
+"""The whole-log fit is used when the rms of its angle residuals on the rises' rows is
 at most this many times the step-by-step fit's residual standard deviation."""
 
 WHOLE_LOG = "whole_log"
-RISING_STEPS = "rising_steps"
+RISES = "rising_steps"
 
 
 @dataclass(frozen=True)
-class RisingStep:
-    """One rising step of the log.
+class Rise:
+    """One rise of the log.
 
     row: first row (0-based) at the high level; line: its file line; t: step time (s);
     u_req: requested high level (V, None if the log has no u_req); u_high: mean applied u
@@ -91,13 +91,13 @@ class RisingStep:
 @dataclass(frozen=True)
 class TimeConstantFit:
     """The least-squares T (s) with its 95 % interval (s) and standard error (s), the residual
-    standard deviation of the angle (rad), the rows and rising steps used, where the angle and
+    standard deviation of the angle (rad), the rows and rises used, where the angle and
     the time came from, and:
 
     method: ``whole_log`` or ``rising_steps`` (see the module docstring) and ``why``, a
     sentence; shift: the fitted time shift of the steps (s; > 0: the motor answers later than
     the log says, < 0: the samples are read late) with its 95 % interval; omega_ss and
-    omega_ss_se: the fitted steady speed of each rising step and its standard error (rad/s);
+    omega_ss_se: the fitted steady speed of each rise and its standard error (rad/s);
     gain: the whole-log fit's K per volt of the log's u (rad/s per V, None for the other);
     u_c: dry friction's breakaway voltage (V, 0 when not found); dof: degrees of freedom of
     the t quantile (clusters of rows less one); predicted: the fitted angle (rad) at every
@@ -107,8 +107,8 @@ class TimeConstantFit:
     whether T ended on it; left_out: rows (0-based) left out of the fit (logging stalls);
     moved_early: when a dead time fitted better but the wheel already moved before it would
     end, the share of the rise done by then (None otherwise); onset: the time (s) from the
-    rising steps to where the wheel first answers (the median; None if unseen);
-    moved_before_step: the wheel was already moving at the rows of the rising steps;
+    rises to where the wheel first answers (the median; None if unseen);
+    moved_before_rise: the wheel was already moving at the rows of the rises;
     dead_time_sought: whether the wheel started late enough for a dead time to be fitted.
     """
 
@@ -117,7 +117,7 @@ class TimeConstantFit:
     se: float
     sigma: float
     n_rows: int
-    n_steps: int
+    n_rises: int
     angle_source: str
     time_source: str
     method: str
@@ -138,18 +138,18 @@ class TimeConstantFit:
     left_out: tuple[int, ...] = ()
     moved_early: float | None = None
     onset: float | None = None
-    moved_before_step: bool = False
+    moved_before_rise: bool = False
     dead_time_sought: bool = False
 
 
-def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
-    """Least-squares T over the usable rising steps of ``log`` (None if there are none, or
+def fit_time_constant(log: RunLog) -> TimeConstantFit | None:
+    """Least-squares T over the usable rises of ``log`` (None if there are none, or
     if the angle never changes: an encoder not read gives nothing to fit).
 
     Rows right after a gap in the logging whose angle misses the fit far more than the rest
     (a logging stall: the encoder value lags its timestamp) are left out and the fit is done
     again without them."""
-    windows, _ = step_windows(log)
+    windows, _ = rise_windows(log)
     if not windows:
         return None
     theta, _ = log.angle()
@@ -165,7 +165,7 @@ def fit_time_constant(log: StepLog) -> TimeConstantFit | None:
     return replace(again, left_out=stalls)
 
 
-def _stalls(log: StepLog, fit: TimeConstantFit) -> tuple[int, ...]:
+def _stalls(log: RunLog, fit: TimeConstantFit) -> tuple[int, ...]:
     """Rows after a gap in the logging whose angle misses the fit by :data:`STALL_SIGMAS`."""
     t = log.board_time()
     dt = np.diff(t)
@@ -184,8 +184,8 @@ def _stalls(log: StepLog, fit: TimeConstantFit) -> tuple[int, ...]:
 
 
 def _fit(
-    log: StepLog,
-    windows: list[StepWindow],
+    log: RunLog,
+    windows: list[RiseWindow],
     keep: NDArray[np.bool_] | None,
     prior: TimeConstantFit | None = None,
 ) -> TimeConstantFit:
@@ -199,7 +199,7 @@ def _fit(
     bound = SHIFT_SAMPLES * ts
     longest = max(float(t[w.post_last] - t[w.edge.start]) for w in windows)
     shortest = min(float(t[w.post_last] - t[w.edge.start]) for w in windows)
-    T_range = (T_MIN_SAMPLES * ts, T_MAX_STEPS * max(longest, ts))
+    T_range = (T_MIN_SAMPLES * ts, T_MAX_RISES * max(longest, ts))
     d_max = DEAD_TIME_SHARE * shortest
     onset = _onset(log, windows)
     delays: tuple[float, ...] = ()
@@ -241,17 +241,17 @@ def _fit(
         return True
 
     if prior is None:
-        steps_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep)
+        rises_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep)
     else:
         T_near = tuple(f * prior.T for f in near)
-        steps_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep, (prior.shift,), T_near)
-    if prior is None and late_start(steps_fit.T):
-        T_starts = tuple(f * steps_fit.T for f in WIDE_T_FACTORS)
+        rises_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep, (prior.shift,), T_near)
+    if prior is None and late_start(rises_fit.T):
+        T_starts = tuple(f * rises_fit.T for f in WIDE_T_FACTORS)
         late = fit_windows(
             t, theta, windows, ts, (-bound, d_max), T_range, keep, (0.0, *delays), T_starts
         )
-        if dead(late.d, steps_fit.rss, late.rss, late.rows.size, late.n_params):
-            steps_fit = late
+        if dead(late.d, rises_fit.rss, late.rss, late.rows.size, late.n_params):
+            rises_fit = late
     cmd, _ = command(log)
     clusters = np.unique(np.array([0, *(e.start for e in find_edges(cmd))], dtype=np.int64))
     stamped = "t_us" in log.extra
@@ -266,7 +266,7 @@ def _fit(
             t, u, theta, T0, clusters, timings, not stamped, shift, T_range, weights, **kw
         )
 
-    T0 = min(max(steps_fit.T, T_range[0]), T_range[1])
+    T0 = min(max(rises_fit.T, T_range[0]), T_range[1])
     if prior is None:
         whole = whole_fit(reach, T0)
     else:
@@ -280,19 +280,19 @@ def _fit(
         ):
             whole = late_w
     time_source = "the board's timestamps (t_us)" if stamped else "the t column"
-    n_w = steps_fit.rows.size
-    sigma_w = math.sqrt(steps_fit.rss / max(n_w - steps_fit.n_params, 1))
+    n_w = rises_fit.rows.size
+    sigma_w = math.sqrt(rises_fit.rss / max(n_w - rises_fit.n_params, 1))
     common: dict[str, Any] = dict(
         shift_bound=bound,
         T_range=T_range,
         moved_early=max(moved) if moved else None,
         onset=onset,
         dead_time_sought=bool(sought) or (prior is not None and prior.dead_time_sought),
-        moved_before_step=_moved_before(log, windows, 0.0, at_step=True) > STILL_SHARE,
+        moved_before_rise=_moved_before(log, windows, 0.0, at_edge=True) > STILL_SHARE,
     )
     if whole is not None:
-        on_steps = whole.residuals[steps_fit.rows]
-        rms = math.sqrt(dot(on_steps, on_steps) / max(n_w, 1))
+        on_rises = whole.residuals[rises_fit.rows]
+        rms = math.sqrt(dot(on_rises, on_rises) / max(n_w, 1))
         if rms <= ADEQUATE * sigma_w and sigma_w > 0:  # (0: the steps fit exactly, no scale)
             fit = _from_whole(log, whole, windows, theta, angle_source, time_source, rms, sigma_w)
             return replace(
@@ -311,12 +311,12 @@ def _fit(
         )
     else:
         why = "the applied voltage u never changes in the log, so T comes from the rising steps"
-    fit = _from_steps(log, steps_fit, windows, theta, angle_source, time_source, sigma_w, why)
+    fit = _from_rises(log, rises_fit, windows, theta, angle_source, time_source, sigma_w, why)
     return replace(
         fit,
-        dead_time=steps_fit.d if steps_fit.d > bound else 0.0,
-        shift_on_bound=steps_fit.d_on_bound,
-        T_on_bound=steps_fit.T_on_bound,
+        dead_time=rises_fit.d if rises_fit.d > bound else 0.0,
+        shift_on_bound=rises_fit.d_on_bound,
+        T_on_bound=rises_fit.T_on_bound,
         **common,
     )
 
@@ -329,7 +329,7 @@ without one (a T that had to stretch to reach a late response is too long)."""
 STILL_SHARE: float = 0.02
 """A dead time is one only while the wheel stands: by one sample period before it ends, the
 speed (a 3-row running median) has not come this share of the way from its level before a
-rising step to the level after it (the median over the steps; plus three times the speed's
+rise to the level after it (the median over the steps; plus three times the speed's
 scatter before the step over the change). A response that starts at once but slowly (an
 S-shaped rise, a ramp) also fits better late; it is not a dead time. (A second pole of T/3
 has come 3 % of the way one sample of T/12 before the delay a fit gives it.)"""
@@ -343,15 +343,15 @@ def _smooth(w: FloatArray) -> FloatArray:
     return out
 
 
-def _levels(w: FloatArray, win: StepWindow) -> tuple[float, float]:
-    """The speed (rad/s) before a rising step and at the end of it (medians)."""
+def _levels(w: FloatArray, win: RiseWindow) -> tuple[float, float]:
+    """The speed (rad/s) before a rise and at the end of it (medians)."""
     k = win.edge.start
     tail = win.post_last - max((win.post_last - k) // 4, 1)
     return float(np.median(w[win.pre_from : k + 1])), float(np.median(w[tail : win.post_last + 1]))
 
 
-def _onset(log: StepLog, windows: list[StepWindow]) -> float | None:
-    """Where the wheel first answers the rising steps: the median over the steps of the time
+def _onset(log: RunLog, windows: list[RiseWindow]) -> float | None:
+    """Where the wheel first answers the rises: the median over the steps of the time
     (s) from the step to the first row whose speed (a 3-row running median) has come
     :data:`STILL_SHARE` of the way to its new level; None when no step shows it."""
     w = np.asarray(log.omega, dtype=float)
@@ -371,10 +371,10 @@ def _onset(log: StepLog, windows: list[StepWindow]) -> float | None:
 
 
 def _moved_before(
-    log: StepLog, windows: list[StepWindow], until: float, at_step: bool = False
+    log: RunLog, windows: list[RiseWindow], until: float, at_edge: bool = False
 ) -> float:
-    """The median over the rising steps of the largest share of the speed's change reached
-    on the rows up to ``until`` (s) after each step (``at_step``: on the step's own row and
+    """The median over the rises of the largest share of the speed's change reached
+    on the rows up to ``until`` (s) after each step (``at_edge``: on the step's own row and
     the one before, whose speeds were measured before the step acts)."""
     w = np.asarray(log.omega, dtype=float)
     smooth = _smooth(w)
@@ -383,7 +383,7 @@ def _moved_before(
     for win in windows:
         k = win.edge.start
         rows = np.arange(k + 1, win.post_last + 1)
-        before = np.arange(max(k - 1, 1), k + 1) if at_step else rows[t[rows] <= t[k] + until]
+        before = np.arange(max(k - 1, 1), k + 1) if at_edge else rows[t[rows] <= t[k] + until]
         w0, w1 = _levels(w, win)
         if not before.size or w1 == w0:
             continue
@@ -434,9 +434,9 @@ def _interval(value: float, half: float) -> tuple[float, float]:
 
 
 def _from_whole(
-    log: StepLog,
+    log: RunLog,
     fit: WholeLogFit,
-    windows: list[StepWindow],
+    windows: list[RiseWindow],
     theta: FloatArray,
     angle_source: str,
     time_source: str,
@@ -454,7 +454,7 @@ def _from_whole(
         se=se,
         sigma=math.sqrt(fit.rss / max(theta.size - fit.n_params, 1)),
         n_rows=int(theta.size),
-        n_steps=len(windows),
+        n_rises=len(windows),
         angle_source=angle_source,
         time_source=time_source,
         method=WHOLE_LOG,
@@ -474,10 +474,10 @@ def _from_whole(
     )
 
 
-def _from_steps(
-    log: StepLog,
+def _from_rises(
+    log: RunLog,
     fit: WindowsFit,
-    windows: list[StepWindow],
+    windows: list[RiseWindow],
     theta: FloatArray,
     angle_source: str,
     time_source: str,
@@ -494,10 +494,10 @@ def _from_steps(
         se=se,
         sigma=sigma_w,
         n_rows=int(fit.rows.size),
-        n_steps=len(windows),
+        n_rises=len(windows),
         angle_source=angle_source,
         time_source=time_source,
-        method=RISING_STEPS,
+        method=RISES,
         why=why,
         shift=fit.d,
         shift_ci=_interval(fit.d, cov.half_width(1)),
@@ -510,13 +510,13 @@ def _from_steps(
     )
 
 
-def rising_steps(log: StepLog, fit: TimeConstantFit | None = None) -> list[RisingStep]:
-    """Each usable rising step with its levels and the manual's 63 % reading (Tasks 11-12).
+def rises(log: RunLog, fit: TimeConstantFit | None = None) -> list[Rise]:
+    """Each usable rise with its levels and the manual's 63 % reading (Tasks 11-12).
 
     The steady speed of each step is the fitted one (``fit``, computed when not given); the
     63 % reading is taken on the log's omega from the mean speed before the step to it.
     """
-    windows, _ = step_windows(log)
+    windows, _ = rise_windows(log)
     if not windows:
         return []
     fit = fit if fit is not None else fit_time_constant(log)
@@ -532,7 +532,7 @@ def rising_steps(log: StepLog, fit: TimeConstantFit | None = None) -> list[Risin
         e = w.edge
         w0 = _speed_before(omega, w)
         out.append(
-            RisingStep(
+            Rise(
                 row=e.start,
                 line=log.line_of(e.start),
                 t=float(t[e.start]),
@@ -547,18 +547,18 @@ def rising_steps(log: StepLog, fit: TimeConstantFit | None = None) -> list[Risin
     return out
 
 
-def _speed_before(omega: FloatArray, w: StepWindow) -> float:
+def _speed_before(omega: FloatArray, w: RiseWindow) -> float:
     """Mean speed (rad/s) over the rows before the step (row 0 has no previous sample)."""
     pre = np.arange(w.pre_from, w.edge.start + 1)
     pre = pre[pre >= 1] if pre.size > 1 else pre
     return float(np.mean(omega[pre]))
 
 
-def model_reading_63(log: StepLog, fit: TimeConstantFit, steps: list[RisingStep]) -> float | None:
+def model_reading_63(log: RunLog, fit: TimeConstantFit, steps: list[Rise]) -> float | None:
     """The manual's 63 % reading (s, median over the steps) taken on the fitted model instead
     of the measurements: the speed of the model's angle over each sample interval, read with
     the same levels at the log's own sample times. What the sampling alone makes of T."""
-    windows, _ = step_windows(log)
+    windows, _ = rise_windows(log)
     t = log.board_time()
     th = fit.predicted
     speed = np.zeros(th.size)
@@ -579,11 +579,11 @@ def model_reading_63(log: StepLog, fit: TimeConstantFit, steps: list[RisingStep]
 __all__ = [
     "ADEQUATE",
     "board_grid",
-    "RISING_STEPS",
+    "RISES",
     "WHOLE_LOG",
-    "RisingStep",
+    "Rise",
     "TimeConstantFit",
     "fit_time_constant",
     "model_reading_63",
-    "rising_steps",
+    "rises",
 ]

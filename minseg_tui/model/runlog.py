@@ -1,6 +1,6 @@
-"""A recorded step log as data, and where its steps are.
+"""A recorded run log as data, and where its edges (the changes of the voltage) are.
 
-A step log has one row per sample: time ``t`` (s), the voltage on the motor ``u``
+A run log has one row per sample: time ``t`` (s), the voltage on the motor ``u``
 (V, u_A; in force from this row's instant until the next row), the measured speed
 ``omega`` (rad/s) and any other columns (``u_req`` V, ``theta`` rad, ``count``,
 ``t_us`` us, ...). The files live in :mod:`minseg_tui.lab.saving.files`; this module is the
@@ -30,7 +30,7 @@ HEADER_FIELDS: dict[str, str] = {
     "omega_over": "how omega was computed: 'interval' (the angle change over each row's real "
     "sample interval) or 'nominal' (over the nominal period ts)",
 }
-"""``# key: value`` header lines whose values the step-log format defines (and checks)."""
+"""``# key: value`` header lines whose values the run-log format defines (and checks)."""
 
 
 def header_problem(key: str, value: str) -> str | None:
@@ -53,7 +53,7 @@ def header_problem(key: str, value: str) -> str | None:
 
 
 @dataclass(frozen=True, eq=False)
-class StepLog:
+class RunLog:
     """One recorded run.
 
     t: sample times in s (strictly increasing); u: voltage applied to the motor (u_A) in V,
@@ -129,9 +129,9 @@ class StepLog:
         v = self.metadata.get("omega_over")
         return None if v is None or header_problem("omega_over", v) else v.strip()
 
-    def rows_from(self, first: int) -> StepLog:
+    def rows_from(self, first: int) -> RunLog:
         """The same log without its first ``first`` rows (file lines and metadata kept)."""
-        return StepLog(
+        return RunLog(
             t=self.t[first:],
             u=self.u[first:],
             omega=self.omega[first:],
@@ -180,17 +180,17 @@ class StepLog:
 
 
 def _euler_period(w: FloatArray, dt: FloatArray, q: float) -> float | None:
-    """The fixed period Ts (s) with which ``w`` (rad/s) was computed as whole encoder steps
+    """The fixed period Ts (s) with which ``w`` (rad/s) was computed as whole encoder counts
     of ``q`` rad per sample, if it was (nearly every w Ts / q within 0.001 of a whole
     number while the wheel turns); None otherwise. ``dt``: the sample intervals (s)."""
     moving = np.abs(w) > 0
     if np.count_nonzero(moving) < 3 or dt.size != w.size:
         return None
     guess = float(np.median(dt))
-    steps = np.round(np.abs(w[moving]) * guess / q)
-    if not np.all(steps >= 1):
+    counts = np.round(np.abs(w[moving]) * guess / q)
+    if not np.all(counts >= 1):
         return None
-    ts = float(np.median(q * steps / np.abs(w[moving])))
+    ts = float(np.median(q * counts / np.abs(w[moving])))
     x = np.abs(w[moving]) * ts / q
     whole = np.abs(x - np.round(x)) <= 1e-3
     return ts if np.mean(whole) >= 0.99 else None
@@ -198,9 +198,9 @@ def _euler_period(w: FloatArray, dt: FloatArray, q: float) -> float | None:
 
 @dataclass(frozen=True)
 class Edge:
-    """A step in the command: rows ``start``..``end`` (0-based) carry the change.
+    """An edge of the command: rows ``start``..``end`` (0-based) carry the change.
 
-    ``start`` is the first row at the new level (the step happens at t[start]); before and
+    ``start`` is the first row at the new level (the edge happens at t[start]); before and
     after are the levels in V on either side; rising when after > before.
     """
 
@@ -211,12 +211,12 @@ class Edge:
 
     @property
     def rising(self) -> bool:
-        """True for a step up."""
+        """True for a rising edge."""
         return self.after > self.before
 
 
-MIN_STEP_V: float = 0.05
-"""Smallest change of the command, in V, that counts as a step."""
+MIN_EDGE_V: float = 0.05
+"""Smallest change of the command, in V, that counts as an edge."""
 
 
 def _changes(v: FloatArray, small: float) -> list[tuple[int, int]]:
@@ -233,18 +233,18 @@ def _changes(v: FloatArray, small: float) -> list[tuple[int, int]]:
 
 
 def find_edges(u: FloatArray) -> list[Edge]:
-    """Steps in a command ``u`` (V): changes of at least 30 % of its range (and 0.05 V),
-    done within a few rows. A ramp or noise is not a step."""
+    """Edges of a command ``u`` (V): changes of at least 30 % of its range (and 0.05 V),
+    done within a few rows. A ramp or noise is not an edge."""
     v = np.asarray(u, dtype=float)
     if v.size < 2:
         return []
     span = float(np.max(v) - np.min(v))
-    if span < MIN_STEP_V:
+    if span < MIN_EDGE_V:
         return []
     edges = []
     for first, last in _changes(v, 0.1 * span):
         before, after = float(v[first - 1]), float(v[last])
-        if abs(after - before) >= max(0.3 * span, MIN_STEP_V) and last - first < 3:
+        if abs(after - before) >= max(0.3 * span, MIN_EDGE_V) and last - first < 3:
             edges.append(Edge(first, last, before, after))
     return edges
 
@@ -259,8 +259,8 @@ def segment_end(u: FloatArray, edge: Edge) -> int:
     return edge.end + int(away[0]) - 1 if away.size else v.size - 1
 
 
-def command(log: StepLog) -> tuple[FloatArray, str]:
-    """The column whose steps define the experiment: ``u_req`` when the log has it (clean
+def command(log: RunLog) -> tuple[FloatArray, str]:
+    """The column whose edges define the experiment: ``u_req`` when the log has it (clean
     even when the motor coasts), else ``u``; and its name."""
     if "u_req" in log.extra and log.extra["u_req"].dtype.kind in "fi":
         return np.asarray(log.extra["u_req"], dtype=float), "u_req"
@@ -268,7 +268,7 @@ def command(log: StepLog) -> tuple[FloatArray, str]:
 
 
 MIN_ROWS: int = 8
-"""Fewest rows an analysis of a step log works on."""
+"""Fewest rows an analysis of a run log works on."""
 
 TS_RANGE: tuple[float, float] = (1e-4, 1.0)
 """Sample periods (s) an analysis accepts: the board samples every 2-100 ms."""
@@ -278,7 +278,7 @@ MAX_MAGNITUDE: float = 1e6
 
 
 def problem(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None) -> str | None:
-    """Why a step log cannot be analysed (Tasks 11-15, the model check), or None.
+    """Why a run log cannot be analysed (Tasks 11-15, the model check), or None.
 
     The answer is an 'expected ...' sentence for an InputError. t: sample times, s; u:
     applied voltage, V; omega: measured speed, rad/s; ts: the nominal sample period, s
@@ -309,7 +309,7 @@ def problem(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = Non
             "(is t in seconds?)"
         )
     if float(np.ptp(y)) == 0.0:
-        return f"expected the speed to change after the steps; omega stays at {float(y[0]):g} rad/s"
+        return f"expected the speed to change after the voltage changes; omega stays at {float(y[0]):g} rad/s"
     return None
 
 
@@ -333,7 +333,7 @@ def switch_on_glitches(u: ArrayLike, omega: ArrayLike) -> int:
     w = np.asarray(omega, dtype=float)
     if w.size < 2 * MAX_GLITCH_ROWS + 8:
         return 0
-    moved = np.flatnonzero(np.abs(v - v[0]) > max(MIN_STEP_V, 1e-9))
+    moved = np.flatnonzero(np.abs(v - v[0]) > max(MIN_EDGE_V, 1e-9))
     first_level = int(moved[0]) if moved.size else v.size
     if first_level < MAX_GLITCH_ROWS + 3:
         return 0

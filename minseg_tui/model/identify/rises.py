@@ -1,7 +1,7 @@
-"""The rising steps of a step log (Task 10's experiment) and the manual's 63 % reading on them.
+"""The rises of a run log (Task 10's experiment) and the manual's 63 % reading on them.
 
-A rising step is usable when at least one row comes before it and five after it at the new
-level. Falling steps are not read: at zero command the driver brakes or coasts and dry
+A rise is usable when at least one row comes before it and five after it at the new
+level. Falling edges are not read: at zero command the driver brakes or coasts and dry
 friction stops the wheel in finite time, so the 63 % rule does not hold for them (the whole-log
 fit of :mod:`.wholelog` models them instead).
 """
@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.steplog import Edge, StepLog, command, find_edges, segment_end
+from minseg_tui.model.runlog import Edge, RunLog, command, find_edges, segment_end
 
 FloatArray = NDArray[np.float64]
 
@@ -22,14 +22,14 @@ E63: float = 1.0 - math.exp(-1.0)
 """Fraction of the final change reached after one time constant (about 63 %)."""
 
 MIN_AFTER: int = 5
-"""Rows a rising step needs at its new level (the step's row included) to be usable."""
+"""Rows a rise needs at its new level (the edge's row included) to be usable."""
 
 
 @dataclass(frozen=True)
-class StepWindow:
-    """The rows around one usable rising step.
+class RiseWindow:
+    """The rows around one usable rise.
 
-    edge: the step (``edge.start`` is the first row at the new level, the step happens at
+    edge: the rising edge (``edge.start`` is the first row at the new level, the edge happens at
     its time); low_from: first row of the level before it; pre_from: first row used before
     it (the last third of that level); post_last: last row whose angle belongs to the new
     level (the row of the next edge: its angle is read before the next command acts).
@@ -42,18 +42,18 @@ class StepWindow:
 
     @property
     def rows(self) -> NDArray[np.int64]:
-        """The rows the step fit uses, pre_from..post_last."""
+        """The rows the fit of the rises uses, pre_from..post_last."""
         return np.arange(self.pre_from, self.post_last + 1)
 
 
-def step_windows(log: StepLog) -> tuple[list[StepWindow], list[Edge]]:
-    """The usable rising steps of ``log`` and the rising edges that are not (too short, or
+def rise_windows(log: RunLog) -> tuple[list[RiseWindow], list[Edge]]:
+    """The usable rises of ``log`` and the rising edges that are not (too short, or
     at the very start). Time and work grow in proportion to the log's length."""
     cmd, _ = command(log)
     edges = find_edges(cmd)
     n = len(log)
     span = float(np.ptp(cmd)) if n else 0.0
-    used: list[StepWindow] = []
+    used: list[RiseWindow] = []
     skipped: list[Edge] = []
     prev_end = 0  # first row after the previous edge
     for i, e in enumerate(edges):
@@ -68,7 +68,7 @@ def step_windows(log: StepLog) -> tuple[list[StepWindow], list[Edge]]:
         if e.start < 1 or post_last - e.end < MIN_AFTER - 1:
             skipped.append(e)
             continue
-        used.append(StepWindow(e, low_from, max(pre_from, 0), post_last))
+        used.append(RiseWindow(e, low_from, max(pre_from, 0), post_last))
     return used, skipped
 
 
@@ -81,8 +81,8 @@ def _level_start(cmd: FloatArray, e: Edge, earliest: int, span: float) -> int:
 
 
 def _level_end(cmd: FloatArray, e: Edge, upto: int, span: float) -> int:
-    """:func:`~minseg_tui.model.steplog.segment_end` looking only as far as row ``upto``
-    (the end of the next edge) first, so that all steps together take time O(rows)."""
+    """:func:`~minseg_tui.model.runlog.segment_end` looking only as far as row ``upto``
+    (the end of the next edge) first, so that all rises together take time O(rows)."""
     away = np.flatnonzero(np.abs(cmd[e.end : upto] - e.after) > 0.03 * span)
     if away.size:
         return e.end + int(away[0]) - 1
@@ -98,7 +98,7 @@ def reading_63(
     w_ss: float,
     skip: NDArray[np.bool_] | None = None,
 ) -> float | None:
-    """The manual's reading: the time (s) from the step at row ``start`` until the speed
+    """The manual's reading: the time (s) from the edge at row ``start`` until the speed
     ``omega`` (rad/s) first reaches 63 % of the way from w0 to w_ss (rad/s), interpolated
     linearly between samples; None if it never does by row ``post_last``. Rows marked in
     ``skip`` (a logging stall's spike) are not read."""

@@ -1,0 +1,290 @@
+"""The group's own values first, as a grader reads them in the report.
+
+For each value a group may work out (k_v, k_a and f of Tasks 7-9; omega_ss in the steps, K,
+T, J, the model and omega at 5 V of Tasks 11-15) one :class:`OwnRow`: what the group
+entered (or :data:`NOT_ANSWERED`), the value computed the group's way (J from their own T,
+K from their omega_ss, ...), the difference, the program's value (least squares for Tasks
+11-15) and whether, and when, the group was shown the computed value (:func:`shown`). Every
+cell says something: none is left blank. Also :func:`run_used`, the run behind Tasks 11-15
+and the model check, and what interrupted it. Plain data built from a
+:class:`~minseg_tui.lab.state.session.Session`; units as the fields' form units.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from minseg_tui.lab.content.steps import STEPS, RunPlan
+from minseg_tui.lab.state import compare as lab_compare
+from minseg_tui.lab.state.results import Comparison
+from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views.session import REVEAL_KEY
+from minseg_tui.model.identify import u_ss_words
+from minseg_tui.quantities import (
+    NOT_DETERMINED,
+    UNITS,
+    format_interval,
+    format_number,
+    format_quantity,
+    format_reading,
+)
+
+NOT_ANSWERED = "not answered"
+"""The group's cell of a value the group has not entered."""
+
+TABLE_STEP = "table"
+"""The step of Tasks 6-9, whose values the program's table shows from the start."""
+
+SHOWN_IN_TABLE = (
+    "shown in the program's Task 4-9 table from the start (the table computes it; the "
+    "group's own value is optional)"
+)
+SHOWN_AT_ONCE = (
+    f"shown from the start: the lab's policy ({lab_compare.POLICY_FILE}: answers_first = "
+    "false) shows the computed values at once"
+)
+SHOWN_AFTER = "after the group answered"
+NOT_SHOWN = "hidden from the group on Tasks 11-15: not answered"
+REVEALED = f"{lab_compare.REVEALED_EARLY} (with {REVEAL_KEY}, the lab assistant's key)"
+
+TASK: dict[str, str] = {
+    "own.k_v": "k_v (Task 7)",
+    "own.k_a": "k_a (Task 8)",
+    "own.f": "f (Task 9)",
+    "own.omega_step": "omega_ss in the steps (Task 11)",
+    "own.K": "K (Task 11)",
+    "own.T": "T (Task 12)",
+    "own.J": "J (Task 13)",
+    "own.model": "the model (Task 14)",
+    "own.omega_5": "omega at u_A = 5 V (Task 15)",
+}
+"""Each value the group may work out, named with its task, in the lab's order."""
+
+TABLE_HEADER: tuple[str, ...] = (
+    "quantity",
+    "the group's value",
+    "computed from the group's table",
+    "difference",
+    "shown to the group",
+)
+"""The columns of Tasks 7-9's rows (the program's value is the one from the group's table)."""
+
+STEP_HEADER: tuple[str, ...] = (
+    "quantity",
+    "the group's value",
+    "computed the group's way",
+    "difference",
+    "the program's value (least squares)",
+    "shown to the group",
+)
+"""The columns of Tasks 11-15's rows."""
+
+_TABLE_HOW: dict[str, str] = {
+    "own.k_v": "median of the rows, Task 6's formula",
+    "own.k_a": "0.65 k_v",
+    "own.f": "median of the rows",
+}
+
+_NEEDS: dict[str, str] = {
+    "own.K": "needs the group's omega_ss in the steps",
+    "own.omega_5": "needs the group's K",
+    "own.J": "needs a T: the group's, or the 63 % reading",
+    "own.model": "needs a T: the group's, or the 63 % reading",
+}
+"""Why the group's way has no value, by field."""
+
+_READ_OFF = "read off the run: nothing to compute"
+"""The group's way of omega_ss in the steps (a reading, not a computation)."""
+
+
+@dataclass(frozen=True)
+class OwnRow:
+    """One value, the group's first: ``cells`` in the order of :data:`TABLE_HEADER` or
+    :data:`STEP_HEADER`; ``why``: one sentence on why the group's way and the program's value
+    differ ('' when they do not, or there is no group's way)."""
+
+    key: str
+    cells: tuple[str, ...]
+    why: str = ""
+
+
+def shown(session: Session, key: str) -> str:
+    """When the group was shown the computed value of field ``key``, in words a grader
+    reads: from the start in the table (Tasks 6-9), or for Tasks 11-15 after they answered,
+    revealed before (by a lab assistant), at once by the lab's policy, or not yet (hidden)."""
+    if key not in lab_compare.ANSWERED_FIRST:
+        return SHOWN_IN_TABLE
+    if key in session.revealed():
+        return REVEALED
+    if not lab_compare.read_policy(session.folder.parent).answers_first:
+        return SHOWN_AT_ONCE
+    if key in session.answered():
+        return SHOWN_AFTER
+    return NOT_SHOWN
+
+
+def _value(v: float | str | None, unit: str) -> str | None:
+    if v is None or isinstance(v, str):
+        return v
+    return format_quantity(v, unit) if math.isfinite(v) else None
+
+
+def _unit(session: Session, c: Comparison) -> str:
+    """The unit the group typed their value in when it measures what ``c.unit`` does (T
+    typed in ms is compared in ms), else the field's form unit."""
+    e = session.entry(c.key)
+    typed = e.unit if e is not None and e.ok else ""
+    if typed in UNITS and c.unit in UNITS and UNITS[typed].quantity == UNITS[c.unit].quantity:
+        return typed
+    return c.unit
+
+
+def _own(session: Session, c: Comparison, unit: str) -> str:
+    """What the group entered, with the digits and in the unit they typed it with;
+    :data:`NOT_ANSWERED`, with a refused text named."""
+    e = session.entry(c.key)
+    if e is None or not e.text.strip():
+        return NOT_ANSWERED
+    if not e.ok:
+        return f"{NOT_ANSWERED} ({e.text.strip()!r} was refused: {e.message})"
+    if isinstance(c.own, float):
+        return format_reading(c.own, unit)
+    return e.text.strip()
+
+
+def _diff(c: Comparison, own: str, against: str) -> str:
+    if c.verdict:
+        return ("✓ " if c.right else "✗ ") + c.verdict
+    if c.rel_diff is not None:
+        return lab_compare.format_diff(c.rel_diff) + against
+    if own.startswith(NOT_ANSWERED):
+        return "nothing to compare: not answered"
+    return "cannot be compared: no computed value"
+
+
+def _interval(ci: tuple[float, float], determined: bool, unit: str) -> str:
+    """A 95 % interval ``ci`` (SI) in ``unit``, or why there is none."""
+    if not determined:
+        return f"95 % interval {NOT_DETERMINED}"
+    scale = UNITS[unit].scale
+    return f"95 % interval {format_interval(ci[0] / scale, ci[1] / scale, unit)}"
+
+
+def table_rows(session: Session) -> tuple[OwnRow, ...]:
+    """Tasks 7-9: k_v, k_a and f, the group's value first (:data:`TABLE_HEADER`)."""
+    out = []
+    for c in session.comparisons(TABLE_STEP):
+        unit = _unit(session, c)
+        own = _own(session, c, unit)
+        value = _value(c.computed, unit)
+        computed = (
+            f"{value} ({_TABLE_HOW.get(c.key, 'from the table')})"
+            if value
+            else "not computed: the table is not complete"
+        )
+        out.append(
+            OwnRow(
+                c.key,
+                (TASK.get(c.key, c.label), own, computed, _diff(c, own, ""), shown(session, c.key)),
+            )
+        )
+    return tuple(out)
+
+
+def step_rows(session: Session) -> tuple[OwnRow, ...]:
+    """Tasks 11-15, the group's value first (:data:`STEP_HEADER`): the group's way beside
+    the program's least-squares value, with why they differ; empty without a step result."""
+    res = session.results()
+    ident = res.identification
+    st = ident.step if ident is not None else None
+    if ident is None or st is None:
+        return ()
+
+    def program(key: str, unit: str) -> str:
+        """The program's value of field ``key`` in ``unit``, and how it was had."""
+        q = format_quantity
+        if key == "own.omega_step":
+            return f"{q(st.omega_ss, unit)} (the median fitted steady speed of the rises)"
+        if key == "own.K":
+            return (
+                f"{q(st.K, unit)} ({_interval(st.K_ci, st.K_determined, unit)}; "
+                f"u_ss = {q(st.u_ss, 'V')}, {u_ss_words(st.u_ss_how)})"
+            )
+        if key == "own.T":
+            return f"{q(st.T, unit)} ({_interval(st.T_ci, st.T_determined, unit)})"
+        if key == "own.J":
+            return f"{q(st.J, unit)} (from the least-squares T)"
+        if key == "own.omega_5":
+            w5 = _value(ident.omega_at_5V, unit) or "not computed"
+            return f"{w5} (5 V × the least-squares K)"
+        return st.model_equation(format_number)
+
+    out = []
+    for step in STEPS:
+        if step.part != "Results":
+            continue
+        for c in session.comparisons(step.id):
+            unit = _unit(session, c)
+            own = _own(session, c, unit)
+            computed = _value(c.computed, unit)
+            if c.key == "own.omega_step":
+                mine, against = _READ_OFF, " (against the program's value)"
+            elif c.how and computed:
+                mine, against = f"{computed} ({c.how})", ""
+            else:
+                mine, against = _NEEDS.get(c.key, "not computed"), " (against the program's value)"
+            why = c.why if c.how and c.least_squares is not None else ""
+            out.append(
+                OwnRow(
+                    c.key,
+                    (
+                        TASK.get(c.key, c.label),
+                        own,
+                        mine,
+                        _diff(c, own, against),
+                        program(c.key, unit),
+                        shown(session, c.key),
+                    ),
+                    why,
+                )
+            )
+    return tuple(out)
+
+
+def run_used(session: Session) -> str:
+    """One sentence: the run Tasks 11-15 and the model check use, why that one (the group's
+    choice, or the newest complete run), and what interrupted it when it ended early."""
+    run = session.response_run()
+    if run is None:
+        return "Tasks 11-15 and the model check have no run to use: no step run recorded yet (Task 10)."
+    ts, manual = format_quantity(run.ts, "ms", 2), format_quantity(RunPlan().ts, "ms", 2)
+    if session.chosen_run() == run.name:
+        why = "chosen by the group"
+    elif ts == manual:
+        why = f"the newest complete {ts} run (the group chose none)"
+    else:
+        why = (
+            f"the newest complete run, at {ts} (the group chose none, and there is no "
+            f"complete {manual} run)"
+        )
+    text = f"Tasks 11-15 and the model check use run {run.name}, {why}"
+    if run.interrupted:
+        text += (
+            f"; it ended before its plan did ({run.samples} samples), interrupted by: "
+            f"{run.interruption}"
+        )
+    return text + "."
+
+
+__all__ = [
+    "NOT_ANSWERED",
+    "STEP_HEADER",
+    "TABLE_HEADER",
+    "TASK",
+    "OwnRow",
+    "run_used",
+    "shown",
+    "step_rows",
+    "table_rows",
+]

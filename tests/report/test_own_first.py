@@ -1,0 +1,243 @@
+"""The report as an instructor grading a group reads it: the group's own value leads every
+section, the program's follows and is named as the program's, each row says when the group
+was shown the computed value, no cell is left blank, and the report names the run it used
+(and what interrupted it)."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.state.session import Session
+from minseg_tui.model.plant import PlantParams, record
+from minseg_tui.quantities import format_number
+from minseg_tui.report.write import write_report
+from tests.report.test_report import _session
+
+
+def _section(md: str, title: str) -> str:
+    return md.split(f"## {title}", 1)[1].split("\n## ", 1)[0]
+
+
+def _tables(text: str) -> list[list[list[str]]]:
+    """Every Markdown table in ``text``: rows of cells (header first, the rule left out),
+    backslash escapes undone."""
+    out: list[list[list[str]]] = []
+    rows: list[list[str]] = []
+    for line in [*text.splitlines(), ""]:
+        if line.startswith("|"):
+            if not line.startswith("|---"):
+                cells = re.split(r"(?<!\\)\|", line.strip()[1:-1])
+                rows.append([re.sub(r"\\(.)", r"\1", c).strip() for c in cells])
+        elif rows:
+            out.append(rows)
+            rows = []
+    return out
+
+
+def _row(table: list[list[str]], first: str) -> dict[str, str]:
+    (row,) = [r for r in table[1:] if r[0].startswith(first)]
+    return dict(zip(table[0], row, strict=True))
+
+
+def _report(s: Session) -> str:
+    return write_report(s).markdown.read_text(encoding="utf-8")
+
+
+def test_every_value_leads_with_the_groups_own(tmp_path: Path) -> None:
+    """The step section's first table held the program's T, J, model and omega at 5 V under
+    "value", the group's only further down; the steady state listed the program's k_v, k_a
+    and f alone. Now each row reads: the group's value, theirs computed their way, the
+    program's."""
+    s = _session(tmp_path)  # own.T = 0.09 s
+    s.enter("own.K", "2.2")
+    s.enter("own.k_v", "0.5 V s/rad")
+    st = s.results().identification
+    assert st is not None and st.step is not None
+    md = _report(s)
+    s.close()
+    steady = _section(md, "Steady state")
+    assert "- k_v = " not in steady  # no program value stands alone
+    readings, constants = _tables(steady)
+    assert readings[0][-2:] == ["k_v, computed (Task 6)", "f, computed (Task 9)"]
+    assert constants[0][:3] == ["quantity", "the group's value", "computed from the group's table"]
+    k_v = _row(constants, "k_v (Task 7)")
+    assert k_v["the group's value"] == "0.5 V s/rad"
+    assert k_v["computed from the group's table"].startswith(format_number(st.k_v))
+    assert _row(constants, "k_a (Task 8)")["the group's value"] == "not answered"
+    results = _section(md, "Step response and model")
+    (table,) = _tables(results)  # one table: no second one of the program's values
+    assert table[0][:2] == ["quantity", "the group's value"]
+    assert table[0][4] == "the program's value (least squares)"
+    K = _row(table, "K (Task 11)")
+    assert K["the group's value"] == "2.2 rad/s/V"
+    assert K["the program's value (least squares)"].startswith(format_number(st.step.K))
+    T = _row(table, "T (Task 12)")
+    assert T["the group's value"] == "0.09 s"
+    assert T["computed the group's way"].startswith(format_number(st.step.T_63 or 0.0))
+    assert "the 63 % reading" in T["computed the group's way"]
+    assert T["the program's value (least squares)"].startswith(format_number(st.step.T))
+    J = _row(table, "J (Task 13)")
+    assert J["the group's value"] == "not answered"
+    assert "from your T = 90.00 ms" in J["computed the group's way"]
+    assert J["the program's value (least squares)"].startswith(format_number(st.step.J))
+    model = _row(table, "the model (Task 14)")
+    assert model["computed the group's way"].endswith("(with your T and K)")
+    # the close-up of one rise is the program's reading, and says so
+    (caption,) = re.findall(r"^\*(.*)\*$", results, re.M)
+    assert caption.startswith("The program's reading of one rise of run steps-1")
+    # why the group's way and the program's differ, one sentence each, after the table
+    assert "J (Task 13): The least-squares J uses T = " in results
+    assert "T (Task 12): The 63 % reading takes one sampled point" in results
+
+
+def test_the_shown_column_says_when_the_group_saw_each_value(tmp_path: Path) -> None:
+    """Tasks 7-9's "shown" cells were blank though the table shows k_v, k_a and f from the
+    start; rows of Tasks 11-15 not yet answered were left out. Every row now says it."""
+    s = _session(tmp_path)  # own.T answered
+    s.enter("own.f", "1.9")
+    assert s.reveal("task13") == ["own.J"]
+    md = _report(s)
+    s.close()
+    (constants,) = _tables(_section(md, "Steady state"))[1:]
+    for name in ("k_v (Task 7)", "k_a (Task 8)", "f (Task 9)"):
+        shown = _row(constants, name)["shown to the group"]
+        assert shown.startswith("shown in the program's Task 4-9 table from the start"), shown
+    (table,) = _tables(_section(md, "Step response and model"))
+    shown = {r[0]: r[-1] for r in table[1:]}
+    assert shown["T (Task 12)"] == "after the group answered"
+    assert (
+        shown["J (Task 13)"] == "revealed before answering (with Ctrl+R, the lab assistant's key)"
+    )
+    assert shown["K (Task 11)"] == "hidden from the group on Tasks 11-15: not answered"
+    assert len(shown) == 6  # every value of Tasks 11-15, answered or not
+    # a lab whose policy shows the computed values at once says so in every row
+    (tmp_path / "lab.toml").write_text("answers_first = false\n", encoding="utf-8")
+    with Session.open(s.folder, readonly=True) as again:
+        md = write_report(again).markdown.read_text(encoding="utf-8")
+    (table,) = _tables(_section(md, "Step response and model"))
+    for row in table[1:]:
+        if row[0] != "J (Task 13)":  # a lab assistant's reveal is still said
+            assert row[-1].startswith("shown from the start: the lab's policy"), row
+
+
+def test_no_cell_of_the_report_is_blank(tmp_path: Path) -> None:
+    s = _session(tmp_path)
+    md = _report(s)
+    s.close()
+    for table in _tables(md):
+        for row in table:
+            assert all(cell for cell in row), (table[0], row)
+
+
+def _append_run(s: Session, periods: int, stopped_early: bool, ended_by: str = "") -> str:
+    plan = dict(step("task10").plans)["manual"]
+    n = int(round(plan.duration / plan.ts)) * periods // plan.periods
+    u = np.concatenate(
+        (np.zeros(20), np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
+    )
+    data = record(PlantParams(), u, ts=plan.ts, seed=22, jitter_us=800)
+    rec = s.start_run("steps", plan)
+    for k in range(u.size):
+        rec.append(int(data.seq[k]), int(data.t_us[k]), int(data.count[k]), int(round(u[k] * 1000)))
+    info = s.finish_run(rec, stopped_early=stopped_early, ended_by=ended_by)
+    assert info is not None
+    return info.name
+
+
+def test_the_report_names_the_run_it_used_and_what_interrupted_it(tmp_path: Path) -> None:
+    s = _session(tmp_path)  # steps-1, complete
+    quit_run = _append_run(s, 2, stopped_early=True, ended_by="quit")
+    md = _report(s)
+    results = _section(md, "Step response and model")
+    assert (
+        "Tasks 11-15 and the model check use run steps-1, the newest complete 25 ms run "
+        "(the group chose none)." in results
+    )
+    runs = _tables(_section(md, "Recorded runs"))[0]
+    assert _row(runs, quit_run)["interrupted by"] == "quit"
+    assert _row(runs, "steps-1")["interrupted by"] == "not interrupted"
+    s.select_run(quit_run)
+    md = _report(s)
+    s.close()
+    samples = _row(runs, quit_run)["samples"]
+    assert (
+        f"Tasks 11-15 and the model check use run {quit_run}, chosen by the group; it ended "
+        f"before its plan did ({samples} samples), interrupted by: quit."
+        in _section(md, "Step response and model")
+    )
+
+
+def test_the_model_check_opens_as_the_screen_does_on_the_edge_its_close_up_shows(
+    tmp_path: Path,
+) -> None:
+    """As on the screen: the run and the close-up's span first, then the sentences a student
+    reads, about the edge the close-up shows (and the evidence in the details names the
+    same edge), then the figures, the details last."""
+    s = _session(tmp_path)
+    r = s.model_check().result
+    md = _report(s)
+    s.close()
+    assert r is not None and r.close_up is not None
+    check = _section(md, "Model check")
+    paragraphs = [p for p in check.split("\n\n") if p.strip()]
+    assert paragraphs[0].startswith("The group wrote no notes on the model check")
+    head = re.match(r"Run steps-1, close-up ([0-9.]+)-([0-9.]+) s: ", paragraphs[1])
+    assert head, paragraphs[1]
+    t0, t1 = (float(x) for x in head.groups())
+    assert (t0, t1) == pytest.approx((r.close_up.t0, r.close_up.t1), abs=0.006)
+    story, details = paragraphs[2], check.split("### Details", 1)[1]
+    evidence = details.split("The check's evidence, over the whole log:", 1)[1].split("\n")[0]
+    for text in (story, evidence):
+        edges = [float(x) for x in re.findall(r"t = ([0-9.]+) s", text)]
+        assert edges and all(t0 <= t <= t1 for t in edges), (t0, t1, text)
+    assert check.index(story) < check.index("![") < check.index("### Details")
+    # the close-up's caption spells its span as the line above the story does
+    captions = re.findall(r"^\*(.*)\*$", check, re.M)
+    assert any(c.startswith(paragraphs[1].rstrip(".")) for c in captions), captions
+
+
+def test_a_policy_file_that_cannot_be_read_is_a_warning(tmp_path: Path) -> None:
+    """The "shown to the group" cells follow lab.toml: one that cannot be read (answers
+    first then holds) is said in the report's warnings, as Tasks 11-15 say it on screen."""
+    s = _session(tmp_path)
+    s.close()
+    (tmp_path / "lab.toml").write_text("answers_first = maybe\n", encoding="utf-8")
+    with Session.open(s.folder, readonly=True) as again:
+        md = write_report(again).markdown.read_text(encoding="utf-8")
+    warnings = _section(md, "Warnings")
+    assert "lab.toml: cannot be read" in warnings and "answers first" in warnings
+    (table,) = _tables(_section(md, "Step response and model"))
+    assert _row(table, "T (Task 12)")["shown to the group"] == "after the group answered"
+
+
+def test_an_incomplete_row_says_what_is_missing(tmp_path: Path) -> None:
+    """A row the group has not filled read '–' in every cell: the readings now say they were
+    not entered, the program's k_v and f that the row is incomplete."""
+    with Session.create(tmp_path, ["A"], date="2026-11-22") as s:
+        s.enter("R", "5.26")
+        s.enter("u_ss@4.5", "4.05 V")
+        md = _report(s)
+    readings = _tables(_section(md, "Steady state"))[0]
+    row = _row(readings, "4.5 V")
+    assert row["u_ss"] == "4.05 V" and row["omega_ss (± spread)"] == "not entered"
+    assert row["capture window"] == "no capture" and row["i_ss"] == "not entered"
+    assert row["k_v, computed (Task 6)"] == "not computed: the row is incomplete"
+
+
+def test_the_groups_notes_lead_the_model_check(tmp_path: Path) -> None:
+    """The model check is the program's work; what the group wrote about it came only at the
+    end of the report, among the Notes. It now opens the section, and is not repeated."""
+    s = _session(tmp_path)
+    s.enter("model_check.notes", "the wheel stops early after each drop")
+    md = _report(s)
+    s.close()
+    check = _section(md, "Model check")
+    first = check.strip().split("\n\n")[0]
+    assert first == "The group's notes on the model check: the wheel stops early after each drop"
+    assert md.count("the wheel stops early after each drop") == 1
+    assert "y' = 0 gives y = K c" in _section(md, "Notes")  # the other notes stay there
