@@ -128,13 +128,21 @@ def big_log(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return _big_log(tmp_path_factory.mktemp("big") / "log.csv", 2_000_000)
 
 
+BLOCK_ROWS = 100_000
+"""Rows :func:`_big_log` formats at once (a few MB of text)."""
+
+
 def _big_log(path: Path, rows: int) -> Path:
     t = np.arange(rows) * 0.001
     u = np.where((t // 1.5) % 2 == 0, 2.5, 0.0)
     omega = 2 * u * (1 - np.exp(-(t % 1.5) / 0.045))
+    # the text np.savetxt(fmt="%.6f", delimiter=",") writes, formatted a block of rows at a
+    # time: savetxt formats row by row, about four times the CPU (some 8 s for 2M rows)
+    table = np.column_stack([t, u, omega])
     with path.open("w") as fh:
         fh.write("t,u,omega\n")
-        np.savetxt(fh, np.column_stack([t, u, omega]), fmt="%.6f", delimiter=",")
+        for block in np.array_split(table, max(1, rows // BLOCK_ROWS)):
+            fh.write(("%.6f,%.6f,%.6f\n" * len(block)) % tuple(block.ravel().tolist()))
     return path
 
 

@@ -1,14 +1,20 @@
 """Fixtures: the app on a real session folder (tmp_path), on the real virtual MinSeg (real
 factory, link and URL board) or, for pinned screens, on a device double that sends nothing;
-every Input's cursor kept still. The async tests run under pytest-asyncio (auto mode)."""
+every Input's cursor kept still; Pilot's waits exact instead of timed. The async tests run
+under pytest-asyncio (auto mode)."""
 
 from __future__ import annotations
 
+import asyncio
 import itertools
 from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+import textual.app
+import textual.pilot
+from textual._context import active_app
+from textual.pilot import Pilot
 from textual.widgets import Input
 
 from minseg_tui.report.write import write_report
@@ -54,3 +60,42 @@ def quiet(tmp_path: Path) -> Callable[..., LabApp]:
         return quiet_app(tmp_path / "sessions", device)
 
     return _make
+
+
+DRAIN_ROUNDS = 8
+"""Most rounds :func:`drained` waits for the app's queues to empty. An app on the real-time
+board never empties them (its stream brings a message every 40 ms): there the key's own
+chain of messages is handled within the first rounds (:func:`tests.ui.helpers.settle`
+carries chains of four), and the rest is the stream's."""
+
+
+async def drained(_min_sleep: float = 0.0, _max_sleep: float = 0.0) -> None:
+    """Return once the app has processed every message: the key a Pilot just sent and all it
+    led to, round by round (each round waits until every node of the app and of its screens
+    has handled what was queued on it when the round began, a handler under way included),
+    until a round ends with every queue empty, or :data:`DRAIN_ROUNDS` rounds. Takes the
+    arguments of Textual's ``wait_for_idle`` and ignores them."""
+    for _ in range(3):  # the driver hands a key over through the loop (run_coroutine_threadsafe)
+        await asyncio.sleep(0)
+    try:
+        app = active_app.get()
+    except LookupError:
+        return
+    pilot = Pilot(app)
+    for _ in range(DRAIN_ROUNDS):
+        if not app.is_running:
+            return
+        await pilot._wait_for_screen()
+        nodes = [app, *(n for s in app.screen_stack for n in s.walk_children(with_self=True))]
+        if all(n.message_queue_size == 0 for n in nodes):
+            return
+
+
+@pytest.fixture(autouse=True)
+def exact_pilot_waits(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Pilot waits after every key it presses (and in ``pause()``) until the process has used
+    almost no CPU for 20 ms, at most 1 s: a guess on the clock, which the CPU that the app's
+    threads use (the board, the stream) makes last up to the second, key after key, and a busy
+    machine cuts short. :func:`drained` waits for exactly what the key set going."""
+    monkeypatch.setattr(textual.app, "wait_for_idle", drained)
+    monkeypatch.setattr(textual.pilot, "wait_for_idle", drained)
