@@ -488,12 +488,18 @@ def _in_unit(value: float, u: Unit) -> float:
     return value / u.scale
 
 
+def format_typed(value: float, digits: int = DIGITS) -> str:
+    """A typed number with at most ``digits`` significant digits and no zeros it was not
+    given: 0,057 is "0.057", never "0.05700" (the number of :func:`format_reading`)."""
+    return f"{float(format_number(value, digits)):g}"
+
+
 def format_reading(value: float, unit: str, digits: int = DIGITS) -> str:
     """A reading (typed, captured or from the meter; ``value`` SI) in the form unit ``unit``
     with at most ``digits`` significant digits and no zeros it was not given: R typed as
     5.26 stays "5.26 Ω", never "5.260 Ω" (a computed value uses :func:`format_quantity`)."""
     u = UNITS[unit]
-    return f"{float(format_number(_in_unit(value, u), digits)):g} {u.symbol}".rstrip()
+    return f"{format_typed(_in_unit(value, u), digits)} {u.symbol}".rstrip()
 
 
 @dataclass(frozen=True)

@@ -536,8 +536,8 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
 
 
 def _two_fits(session: Session, run: str | None, params: dict[str, float]) -> list[str]:
-    """Why the model check's first-order T and K are not those of Tasks 11-12 when both
-    come from the same run (one sentence, or none)."""
+    """Why the model check's first-order T and K are not the program's least-squares reading
+    used in Tasks 11-12 when both come from the same run (one sentence, or none)."""
     res = session.results()
     ident = res.identification
     if run is None or res.run != run or ident is None or ident.step is None:
@@ -546,13 +546,7 @@ def _two_fits(session: Session, run: str | None, params: dict[str, float]) -> li
     T, K = params.get("T"), params.get("K")
     if T is None or K is None or not st.T:
         return []
-    where = " over its rising steps" if st.fit.method == "rising_steps" else ""
-    return [
-        f"Tasks 11-12 give T = {_num(st.T)} s and K = {_num(st.K)} rad/s/V for the same run: "
-        f"they fit the encoder angle{where} with a time shift for the sampling, while "
-        "the model check fits the speed it simulates over the whole run, steps down "
-        f"included; here the two T differ by {_num(100.0 * abs(T / st.T - 1.0), 2)} %."
-    ]
+    return [check_words.two_fits(T, st.T, st.K, rising=st.fit.method == "rising_steps")]
 
 
 CHECK_NOTES = "model_check.notes"

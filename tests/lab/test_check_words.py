@@ -96,3 +96,23 @@ def test_the_lead_the_evidence_and_the_close_up_speak_of_one_drop(cause, seed):
     assert float(led.group(1)) == pytest.approx(float(said.group(1)), abs=5e-4)
     cu = r.close_up
     assert cu is not None and cu.t0 < float(said.group(1)) < cu.t1
+
+
+@pytest.mark.parametrize("cause", ["coulomb_friction", "none"])
+def test_the_first_sentence_names_the_model_it_simulated(cause):
+    """The walk of 11-27: "the simple (first-order) model says it still turns at 0.27 rad/s"
+    was read by a group as their own Task 14 model; it is the check's fit of the run, and the
+    sentence says so with its T and K (the fitted ones, not the least-squares or the group's)."""
+    log, r = _checked(cause)
+    first = check_words.lead(r, log.u)[0]
+    T, K = r.baseline.params["T"], r.baseline.params["K"]
+    m = re.search(
+        rf"the first-order model the check fitted to this run \(T = ({NUM}) ms, "
+        rf"K = ({NUM}) rad/s/V\)",
+        first,
+        re.I,
+    )
+    assert m is not None, first
+    assert float(m.group(1)) == pytest.approx(T * 1e3, rel=0.005)
+    assert float(m.group(2)) == pytest.approx(K, rel=0.005)
+    assert "simple (first-order) model says" not in first

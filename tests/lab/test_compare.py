@@ -12,10 +12,11 @@ import numpy as np
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.compare import format_diff, read_policy
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.model.plant import PlantParams, record
-from minseg_tui.quantities import example
+from minseg_tui.quantities import example, format_number
 
 
 def _lab(root: Path) -> Session:
@@ -184,3 +185,32 @@ def test_T_is_compared_with_the_63_percent_reading_and_the_fit_stands_beside_it(
         (c,) = s.comparisons("task12")
         assert c.computed == st.T_63 and c.least_squares == st.T
         assert c.why.count(". ") == 0 and "sampling" in c.why  # one sentence
+
+
+def test_the_groups_values_are_quoted_with_the_digits_they_typed(tmp_path):
+    """The walk of 11-27: "from your T = 57.00 ms" for "57ms", "T = 0.05700 s and K = 1.930"
+    for a model typed "0,057 ... 1,93", "7.800 / 4.050" for omega_ss typed "7,8". A reading
+    keeps the digits it was typed with, in the unit it was typed in, on the screen and in the
+    report; the program's own numbers (u_ss) keep theirs."""
+    with _lab(tmp_path) as s:
+        st = s.results().identification.step  # type: ignore[union-attr]
+        s.enter("own.omega_step", "7,8")
+        s.enter("own.K", "1,93")
+        s.enter("own.T", "57ms")
+        s.enter("own.model", "0,057 omega' = -omega + 1,93 u_A")
+        s.enter("own.J", "3e-3")  # shown once answered
+        by = {c.key: c for c in s.comparisons()}
+        assert "from your T = 57 ms" in by["own.J"].how, by["own.J"].how
+        assert "your omega_ss / u_ss = 7.8 rad/s ÷ " in by["own.K"].how, by["own.K"].how
+        assert f"{format_number(st.u_ss)} V" in by["own.K"].how  # computed: its digits
+        assert "5 V × your K = 1.93 rad/s/V" in by["own.omega_5"].how
+        assert by["own.model"].verdict == "right: T = 0.057 s and K = 1.93 rad/s/V"
+        screen = "\n".join(own + " " + comp for own, comp in _compare(s, "task13").values())
+        assert "from your T = 57 ms" in screen and "57.00" not in screen, screen
+        rows = {r.key: r.cells for r in own_first.step_rows(s)}
+        assert rows["own.T"][1] == "57 ms" and rows["own.K"][1] == "1.93 rad/s/V"
+        assert "from your T = 57 ms" in rows["own.J"][2]
+        assert "1.930" not in " ".join(rows["own.omega_5"]) + " ".join(rows["own.model"])
+        s.enter("own.T", "0,057")
+        (c,) = s.comparisons("task13")
+        assert "from your T = 0.057 s" in c.how, c.how

@@ -83,7 +83,7 @@ def test_every_value_leads_with_the_groups_own(tmp_path: Path) -> None:
     assert T["the program's value (least squares)"].startswith(format_number(st.step.T))
     J = _row(table, "J (Task 13)")
     assert J["the group's value"] == "not answered"
-    assert "from your T = 90.00 ms" in J["computed the group's way"]
+    assert "from your T = 0.09 s" in J["computed the group's way"]  # as typed
     assert J["the program's value (least squares)"].startswith(format_number(st.step.J))
     model = _row(table, "the model (Task 14)")
     assert model["computed the group's way"].endswith("(with your T and K)")

@@ -119,10 +119,16 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             "omega at u_A = 5 V",
             "Most likely cause: ",
             "First-order model fitted to steps-1",
-            "Tasks 11-12 give T = ",  # why the check's T is not Task 12's
+            # why the check's T is not Task 12's, saying whose that T is (walk of 11-27:
+            # "Tasks 11-12 give T = 0.04284 s" where the group's Tasks 11-12 gave 57 ms)
+            "The program's least-squares reading of the run used in Tasks 11-12 (not the "
+            "group's own values) gives T = ",
+            # the model the check simulated, named with its numbers (read as the group's)
+            "the first-order model the check fitted to this run (T = ",
             "the two T differ by",
         ):
             assert text in doc, text
+        assert "Tasks 11-12 give" not in doc
     ident = s.results().identification
     assert format_value(ident.step.K, "rad/s/V") in md and format_value(
         ident.step.T, "s"

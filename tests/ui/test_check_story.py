@@ -49,3 +49,28 @@ async def test_the_details_wait_in_a_fold_that_enter_opens(quiet):
         await settle(pilot)
         assert not fold.collapsed and lines.region.height > 0
         assert app.screen.query_one(ModelCheckPanel).close_up  # Enter did not zoom or move
+
+
+async def test_the_details_name_the_model_simulated_and_whose_T_tasks_11_12_show(quiet):
+    """The walk of 11-27: nothing on the screen said which first-order model the check
+    simulated, and its T was read as the group's. The details give the check's own fit with
+    its parameters, and say the T of Tasks 11-12 it differs from is the program's
+    least-squares reading, not the group's."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "model_check")
+        story = app.screen.query_one("#check-story", Prose).text
+        assert re.search(
+            r"the first-order model the check fitted to this run \(T = [0-9.]+ ms, "
+            r"K = [0-9.]+ rad/s/V\)",
+            story,
+        ), story
+        lines = app.screen.query_one("#check-lines", Prose).text
+        assert re.search(
+            r"first-order model the check fitted to this run and simulated: T = [0-9.]+ s, K = ",
+            lines,
+        ), lines
+        assert (
+            "The program's least-squares reading of the run used in Tasks 11-12 (not the "
+            "group's own values) gives T = " in lines
+        ), lines

@@ -23,7 +23,7 @@ from minseg_tui.lab.content.steps import Field
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.model.identify import U_TASK15
 from minseg_tui.model.motor import inertia_from_time_constant
-from minseg_tui.quantities import format_number
+from minseg_tui.quantities import format_number, format_reading, format_typed
 
 POLICY_FILE = "lab.toml"
 """The instructor's settings for every session in a sessions folder (beside the sessions)."""
@@ -94,8 +94,10 @@ def _ms(T: float) -> str:
     return f"{format_number(T * 1e3)} ms"
 
 
-def _model(T: float, K: float) -> str:
-    return f"{format_number(T)} omega' = -omega + {format_number(K)} u_A"
+def _model(T: str, K: str) -> str:
+    """The model with T (s) and K (rad/s/V) as written: the program's with its digits, the
+    group's as they typed them."""
+    return f"{T} omega' = -omega + {K} u_A"
 
 
 def compare_fields(
@@ -104,12 +106,20 @@ def compare_fields(
     text: Callable[[str], str | None],
     res: Results,
     revealed: Collection[str] = (),
+    reading: Callable[[str], str | None] | None = None,
 ) -> list[Comparison]:
     """Each field with ``compare`` beside the value computed the group's way.
 
     value(key): the group's number for a field (SI) or None; text(key): its text (a model)
     or None; ``res``: the session's results; ``revealed``: fields shown before the group
-    answered (said in the comparison)."""
+    answered (said in the comparison); reading(key): the group's value as they typed it,
+    with its unit ("57 ms"), wherever a text quotes it (default: the number in SI units with
+    the digits it has)."""
+
+    def typed(key: str, si: float, unit: str) -> str:
+        said = reading(key) if reading is not None else None
+        return said if said is not None else format_reading(si, unit)
+
     ident = res.identification
     st = res.step if ident is not None else None
     own_T = value("own.T")
@@ -130,7 +140,8 @@ def compare_fields(
                 if own_w is not None and st.u_ss:
                     computed = own_w / st.u_ss
                     how = (
-                        f"your omega_ss / u_ss = {format_number(own_w)} / {format_number(st.u_ss)}"
+                        f"your omega_ss / u_ss = {typed('own.omega_step', own_w, 'rad/s')} ÷ "
+                        f"{format_number(st.u_ss)} V"
                     )
                     why = (
                         "The least-squares K is the median over every rising step of the fitted "
@@ -147,7 +158,7 @@ def compare_fields(
                 )
             elif fld.key == "own.J":
                 T_used, how = (
-                    (own_T, f"from your T = {_ms(own_T)}")
+                    (own_T, f"from your T = {typed('own.T', own_T, 's')}")
                     if own_T is not None
                     else (st.T_63, "from the 63 % reading T = " + _ms(st.T_63))
                     if st.T_63 is not None
@@ -167,9 +178,12 @@ def compare_fields(
             elif fld.key == "own.model":
                 T_m = own_T if own_T is not None else st.T_63
                 K_m = own_K if own_K is not None else st.K
-                lsq = _model(st.T, st.K)
+                lsq = _model(format_number(st.T), format_number(st.K))
                 if T_m is not None:
-                    computed = _model(T_m, K_m)
+                    computed = _model(
+                        format_typed(T_m) if own_T is not None else format_number(T_m),
+                        format_typed(K_m) if own_K is not None else format_number(K_m),
+                    )
                     how = (
                         "with your T and K"
                         if own_T is not None and own_K is not None
@@ -179,7 +193,7 @@ def compare_fields(
                         + ("your K" if own_K is not None else "the least-squares K")
                     )
                     why = "The least-squares model uses the fitted T and K."
-                    if computed == lsq:
+                    if _model(format_number(T_m), format_number(K_m)) == lsq:
                         lsq, why = None, ""
                     if isinstance(own, str):
                         right, verdict = judge_model(own, T_m, K_m)
@@ -187,7 +201,7 @@ def compare_fields(
                 lsq = st.K * U_TASK15
                 if own_K is not None:
                     computed = own_K * U_TASK15
-                    how = f"5 V × your K = {format_number(own_K)} rad/s/V"
+                    how = f"5 V × your K = {typed('own.K', own_K, 'rad/s/V')}"
                     why = "The least-squares value uses the K fitted over every rising step."
                 else:
                     lsq = None
@@ -223,7 +237,8 @@ their way and still be right: their own readings rounded, or read off the plot."
 def judge_model(text: str, T: float, K: float) -> tuple[bool, str]:
     """Task 14: whether the model in ``text`` is T omega' = -omega + K u_A with the ``T`` (s)
     and ``K`` (rad/s/V) computed the group's way (each within :data:`MODEL_TOLERANCE`), and
-    one line saying so (what is wrong, when it is)."""
+    one line saying so (what is wrong, when it is); the group's T and K with the digits
+    they typed ("0,057" is "0.057 s", never "0.05700 s")."""
     try:
         got = read_model(text)
     except InputError as exc:
@@ -232,12 +247,14 @@ def judge_model(text: str, T: float, K: float) -> tuple[bool, str]:
     for name, mine, want, unit in (("T", got.T, T, "s"), ("K", got.K, K, "rad/s/V")):
         if want and abs(mine / want - 1.0) > MODEL_TOLERANCE:
             wrong.append(
-                f"{name} = {format_number(mine)} {unit} where {format_number(want)} {unit} "
+                f"{name} = {format_reading(mine, unit)} where {format_number(want)} {unit} "
                 f"was expected ({format_diff(mine / want - 1.0)})"
             )
     if wrong:
         return False, "wrong: " + "; ".join(wrong)
-    return True, f"right: T = {format_number(got.T)} s and K = {format_number(got.K)} rad/s/V"
+    return True, (
+        f"right: T = {format_reading(got.T, 's')} and K = {format_reading(got.K, 'rad/s/V')}"
+    )
 
 
 def reveal_keys(fields: Sequence[Field], answered: Collection[str]) -> list[str]:

@@ -103,6 +103,7 @@ from minseg_tui.lab.state.results import (
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import RunLog
+from minseg_tui.quantities import UNITS, format_reading
 
 Clock = Callable[[], datetime]
 
@@ -548,6 +549,18 @@ class Session:
         e = self._entries.get(key)
         return e.value if e is not None and e.ok and isinstance(e.value, float) else None
 
+    def reading(self, key: str) -> str | None:
+        """The group's accepted value of quantity field ``key`` as they typed it, wherever it
+        is quoted back to them: the digits they gave, in the unit they typed it in when that
+        measures what the field's unit does ("57ms" is "57 ms", "0,057" is "0.057 s", never
+        "57.00 ms"; :func:`~minseg_tui.quantities.format_reading`); None when there is none."""
+        e = self._entries.get(key)
+        if e is None or not e.ok or not isinstance(e.value, float) or key not in FIELDS:
+            return None
+        form = FIELDS[key].unit
+        same = e.unit in UNITS and UNITS[e.unit].quantity == UNITS[form].quantity
+        return format_reading(e.value, e.unit if same else form)
+
     def enter(self, key: str, text: str, source: str = "typed") -> Entry:
         """Store ``text`` typed in field ``key`` (KeyError for an unknown key) and return the
         entry: accepted with its value, note and warnings, or refused with a one-line message.
@@ -849,7 +862,7 @@ class Session:
             return e.text if e and e.text.strip() else None
 
         res = self.results() if results is None else results
-        return compare_fields(fields, self.value, text, res, self.revealed())
+        return compare_fields(fields, self.value, text, res, self.revealed(), self.reading)
 
     def answered(self) -> set[str]:
         """The keys of the fields the group has answered (an accepted, non-empty entry)."""

@@ -5,7 +5,8 @@ The model layer (:mod:`minseg_tui.model.check`) gives records: the cause and the
 the gain figures, the figure that leads, the close-up's rows. This module reads them, and
 the run's input voltage, and writes what the lab screen and the report both lead with:
 
-1. what the simple (first-order) model gets wrong in the close-up, at the step it shows;
+1. what the simple (first-order) model gets wrong in the close-up, at the step it shows,
+   naming the model it simulated (the check's own fit of the run, with its T and K);
 2. the likely cause in everyday words;
 3. how much better the extended model does, in one figure.
 
@@ -195,8 +196,43 @@ def moment(r: CheckResult, u: ArrayLike | None) -> Moment | None:
     return at(edge + k)
 
 
+def simulated(r: CheckResult) -> str:
+    """The first-order model the check simulated, named with its numbers: it is the check's
+    own fit of the run, neither the group's model (Task 14) nor the least-squares one of
+    Tasks 11-12, and a student must not read it as theirs: 'the first-order model the check
+    fitted to this run (T = 40.5 ms, K = 1.92 rad/s/V)' (T in ms, K in rad/s/V)."""
+    T, K = r.baseline.params.get("T"), r.baseline.params.get("K")
+    numbers = ", ".join(
+        x
+        for x in (
+            f"T = {format_value(T * 1e3, 'ms', 3)}" if T is not None else "",
+            f"K = {format_value(K, 'rad/s/V', 3)}" if K is not None else "",
+        )
+        if x
+    )
+    return "the first-order model the check fitted to this run" + (
+        f" ({numbers})" if numbers else ""
+    )
+
+
+def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
+    """Why the check's first-order ``T`` (s) is not the program's least-squares reading of
+    the same run, ``T_ls`` (s) and ``K_ls`` (rad/s/V), the one Tasks 11-12 show beside the
+    group's own values: whose reading it is, said so that no one takes it for the group's."""
+    where = " over its rising steps" if rising else ""
+    return (
+        "The program's least-squares reading of the run used in Tasks 11-12 (not the group's "
+        f"own values) gives T = {format_value(T_ls, 's')} and K = {format_value(K_ls, 'rad/s/V')}: "
+        f"it fits the encoder angle{where} with a time shift for the sampling, while the model "
+        "check fits the speed it simulates over the whole run, steps down included; here the "
+        f"two T differ by {format_value(100.0 * abs(T / T_ls - 1.0), '', 2)} %."
+    )
+
+
 def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
-    """Sentence 1: what the first-order model gets wrong in the close-up."""
+    """Sentence 1: what the first-order model gets wrong in the close-up; the model is
+    named (:func:`simulated`) so that no group takes it for its own."""
+    model = simulated(r)
     cu = r.close_up
     if cu is not None and cu.cause == "disturbance":
         return (
@@ -209,16 +245,16 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
         if r.finding.explained:
             noise = format_value(cu.noise, "rad/s", 2) if cu is not None else "its noise"
             return (
-                "The simple (first-order) model follows the measured speed to within its "
+                f"{model[0].upper()}{model[1:]} follows the measured speed to within its "
                 f"noise (± {noise}): nothing needs adding for this run."
             )
         return (
-            "The simple (first-order) model misses the measured speed by more than its noise, "
+            f"{model[0].upper()}{model[1:]} misses the measured speed by more than its noise, "
             "and none of the effects the check knows explains it (the details say more)."
         )
     if m is None:
         return (
-            "The simple (first-order) model misses the measured speed in this close-up by more "
+            f"{model[0].upper()}{model[1:]} misses the measured speed in this close-up by more "
             "than its noise."
         )
     step = (
@@ -229,18 +265,15 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
     after = _later(m.at - m.edge)
     if m.still and abs(m.first_order) > abs(m.measured):
         return (
-            f"After {step}, the wheel stands still {after} later; the simple (first-order) "
-            f"model says it still turns at {_w(m.first_order)} then."
+            f"After {step}, the wheel stands still {after} later; {model} says it still "
+            f"turns at {_w(m.first_order)} then."
         )
     wheel = (
         "the wheel has not moved yet"
         if m.kind == "rise" and _w(m.measured) == _w(0.0)
         else f"the wheel turns at {_w(m.measured)}"
     )
-    return (
-        f"After {step}, {after} later {wheel} where the simple (first-order) model says "
-        f"{_w(m.first_order)}."
-    )
+    return f"After {step}, {after} later {wheel} where {model} says {_w(m.first_order)}."
 
 
 def _cause(r: CheckResult) -> str:

@@ -149,7 +149,7 @@ def _own(session: Session, c: Comparison, unit: str) -> str:
     if not e.ok:
         return f"{NOT_ANSWERED} ({e.text.strip()!r} was refused: {e.message})"
     if isinstance(c.own, float):
-        return format_reading(c.own, unit)
+        return session.reading(c.key) or format_reading(c.own, unit)
     return e.text.strip()
 
 

@@ -746,7 +746,10 @@ class CheckView:
     anomalies; one line each); ``problem``: why there is no result. ``story``: the two or
     three sentences a student reads first (:func:`minseg_tui.lab.views.check_words.lead`), about
     the close-up, whose title with its time span is ``close_title``; the rest are the
-    details."""
+    details, among them ``first_order`` (the first-order model the check fitted and
+    simulated, with its parameters) and ``two_fits`` (why its T is not the program's
+    least-squares one of Tasks 11-12, whose reading that is; '' when they are not of one
+    run)."""
 
     run: str | None
     t: FloatArray = field(default_factory=_empty)
@@ -771,6 +774,8 @@ class CheckView:
     cause_words: str = ""
     story: tuple[str, ...] = ()
     close_title: str = ""
+    first_order: str = ""
+    two_fits: str = ""
 
 
 _stem = check_words.stem
@@ -839,6 +844,14 @@ def check(session: Session) -> CheckView:
             u = np.asarray(session.load_run(mc.run).u, dtype=np.float64)
         except (InputError, KeyError):
             u = None
+    res = session.results()
+    st = res.identification.step if res.identification is not None else None
+    T = r.baseline.params.get("T")
+    two_fits = (
+        check_words.two_fits(T, st.T, st.K, rising=st.fit.method == "rising_steps")
+        if st is not None and st.T and T is not None and res.run == mc.run
+        else ""
+    )
     return CheckView(
         mc.run,
         t,
@@ -862,6 +875,9 @@ def check(session: Session) -> CheckView:
         cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),
         story=check_words.lead(r, u),
         close_title=check_words.close_up_title(r),
+        first_order="first-order model the check fitted to this run and simulated: "
+        + _params(r.baseline.params),
+        two_fits=two_fits,
     )
 
 

@@ -71,6 +71,10 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         )
         story.update("\n".join([where, " ".join(v.story)]))
         text = [f"cause: {v.cause_words or v.cause}"]
+        if v.first_order:
+            text.append(v.first_order)
+        if v.two_fits:
+            text.append(v.two_fits)
         if v.lead:
             text += [f"{v.lead}", f"(this figure leads: {v.lead_why})"]
         text += [
