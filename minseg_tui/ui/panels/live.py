@@ -150,6 +150,11 @@ class Readout(Vertical):
         if isinstance(self.parent, FieldForm):
             self.watch(self.parent, "current", self._moved, init=False)
 
+    def on_resize(self) -> None:
+        """The lines changed height (a line wrapped, or the "waiting for samples" line went):
+        lift the focused entry again, out from under them."""
+        self._moved()
+
     def _moved(self) -> None:
         if self._target() is None:
             return
