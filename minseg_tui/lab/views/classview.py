@@ -40,6 +40,8 @@ from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_
 from minseg_tui.lab.state.compare import format_diff
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import own_first
+from minseg_tui.lab.views.own_first import OwnRow
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import response_alone
 from minseg_tui.quantities import RPM, format_number, format_reading
@@ -149,7 +151,9 @@ class Group:
     ("Task 12"); ``values`` the numbers of :data:`QUANTITIES` by key (SI, None when not
     computed); ``cause`` the model check's cause in words ('' when it has not run, "none"
     when the first-order model explains the log); ``own`` the group's own values against
-    the computed ones; ``lacks`` what keeps a result from being computed (one sentence
+    the computed ones; ``own_rows`` the same values as the session's report words them
+    (:mod:`.own_first`: Tasks 7-9's rows, then Tasks 11-15's), the ones the group entered;
+    ``lacks`` what keeps a result from being computed (one sentence
     each); ``damaged`` why the file is damaged or cannot be read (None when it is sound);
     ``readable`` False when nothing of the session could be read; ``flags`` what stands
     out, one sentence each; ``slipped`` the keys of the values that rest on one of the
@@ -164,6 +168,7 @@ class Group:
     cause: str = ""
     cause_code: str = ""
     own: tuple[Own, ...] = ()
+    own_rows: tuple[OwnRow, ...] = ()
     lacks: tuple[str, ...] = ()
     damaged: str | None = None
     readable: bool = True
@@ -437,6 +442,7 @@ def _row(folder: Path, session: Session) -> Group:
     cause, code = "", ""
     values: dict[str, float | None] = {"R": session.value("R")}
     own: tuple[Own, ...] = ()
+    own_rows: tuple[OwnRow, ...] = ()
     try:
         kept = session.kept()
         res = session.results(kept.step if kept is not None else None)
@@ -457,6 +463,11 @@ def _row(folder: Path, session: Session) -> Group:
             for c in session.comparisons(results=res)
             if c.own is not None
         )
+        own_rows = tuple(
+            r
+            for r in (*own_first.table_rows(session, res), *own_first.step_rows(session, res))
+            if r.cells[1] != own_first.NOT_ANSWERED
+        )
     except (InputError, ValueError, ArithmeticError, KeyError) as exc:
         # one session's trouble never hides the others: the row says what went wrong
         lacks = (f"its numbers cannot be computed: {exc}",)
@@ -473,6 +484,7 @@ def _row(folder: Path, session: Session) -> Group:
         cause=cause,
         cause_code=code,
         own=own,
+        own_rows=own_rows,
         lacks=lacks,
         damaged=session.damaged,
         flags=tuple(s.text for s in found),
