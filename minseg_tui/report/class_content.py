@@ -42,7 +42,7 @@ def table(view: ClassView) -> Table:
         "members",
         "date",
         "step",
-        *(q.label for q in QUANTITIES),
+        *(q.shown_label for q in QUANTITIES),
         "model check",
         "own vs computed",
         "flags",
@@ -56,7 +56,10 @@ def table(view: ClassView) -> Table:
                 members(g),
                 g.date or "–",
                 g.step or "–",
-                *(_cell(g.value(q.key)) for q in QUANTITIES),
+                *(
+                    _cell(None if (v := g.value(q.key)) is None else q.number(v))
+                    for q in QUANTITIES
+                ),
                 g.cause or "–",
                 own_cell(g),
                 str(len(g.flags)) if g.flags else "",
@@ -83,7 +86,7 @@ def _figure(view: ClassView, key: str) -> Figure | None:
             Line(
                 "" if n else "a group",
                 [float(k)],
-                [v],
+                [q.number(v)],
                 color=FLAGGED_COLOR if out else GROUP_COLOR,
                 dots=True,
             )
@@ -93,23 +96,23 @@ def _figure(view: ClassView, key: str) -> Figure | None:
     x = [0.5, len(view.groups) + 0.5]
     bands, marks = [], []
     if s is not None:
-        lo, hi = s.band
+        lo, hi = (q.number(b) for b in s.band)
         bands.append(Band(f"band: ± {THRESHOLD:g} robust std", x, [lo, lo], [hi, hi]))
-        marks.append(Mark(f"median {format_quantity(s.median, q.unit)}", y=s.median))
+        marks.append(Mark(f"median {format_quantity(s.median, q.display)}", y=q.number(s.median)))
     svg = plot(
         lines,
         bands=bands,
         marks=marks,
         title=f"{q.key}: {q.words}",
         xlabel="group (# in the table)",
-        ylabel=q.label,
+        ylabel=q.shown_label,
         width=440,
         height=230,
     )
     caption = (
         f"{q.key} of {len(have)} groups"
         + (
-            f"; class median {format_quantity(s.median, q.unit)}, the band holds what lies "
+            f"; class median {format_quantity(s.median, q.display)}, the band holds what lies "
             f"within {THRESHOLD:g} robust standard deviations of it"
             if s is not None
             else "; too few groups for a class median"
@@ -136,7 +139,7 @@ def build(view: ClassView) -> Report:
     n = len(view.groups)
     sections = [Section("Groups", [table(view)])]
     sections[0].blocks.append(
-        "Numbers in SI units (the header gives each unit); T_63 is the 63 % reading, T the "
+        "Numbers in the units of the header (SI, but f in mN m s/rad as in the lab's table); T_63 is the 63 % reading, T the "
         "least-squares fit on the encoder angle. 'own vs computed' is how far the group's own "
         "values are from the computed ones. '–': not computed yet (see What is missing)."
     )

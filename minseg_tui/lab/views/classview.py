@@ -44,29 +44,45 @@ from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views.own_first import OwnRow
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import response_alone
-from minseg_tui.quantities import RPM, format_number, format_reading
+from minseg_tui.quantities import F_UNIT, RPM, format_number, format_reading, in_unit
 
 
 @dataclass(frozen=True)
 class Quantity:
     """A column of the class table: its ``key`` (also the JSON key), the ``unit`` of its SI
-    value, and its ``label`` with the unit for headers."""
+    value, and its ``label`` with the unit for headers (CSV, SI); ``shown`` the unit it is
+    shown to people in when not ``unit`` (f in mN m s/rad, as the lab's table shows it)."""
 
     key: str
     unit: str
     words: str
+    shown: str = ""
 
     @property
     def label(self) -> str:
-        """``key (unit)``, as a column header."""
+        """``key (unit)``, as a column header of SI numbers."""
         return f"{self.key} ({self.unit})"
+
+    @property
+    def display(self) -> str:
+        """The unit the value is shown to people in."""
+        return self.shown or self.unit
+
+    @property
+    def shown_label(self) -> str:
+        """``key (display unit)``, as a column header of the numbers people read."""
+        return f"{self.key} ({self.display})"
+
+    def number(self, v: float) -> float:
+        """``v`` (SI) in :attr:`display`."""
+        return in_unit(v, self.display)
 
 
 QUANTITIES: tuple[Quantity, ...] = (
     Quantity("R", "Ω", "motor resistance (Task 2)"),
     Quantity("k_v", "V s/rad", "back-emf constant (Task 7)"),
     Quantity("k_a", "N m/A", "torque constant (Task 8)"),
-    Quantity("f", "N m s/rad", "viscous friction (Task 9)"),
+    Quantity("f", "N m s/rad", "viscous friction (Task 9)", F_UNIT),
     Quantity("K", "rad/s/V", "static gain (Task 11)"),
     Quantity("T_63", "s", "time constant, 63 % reading (Task 12)"),
     Quantity("T", "s", "time constant, least squares (Task 12)"),
@@ -280,8 +296,8 @@ def own_cell(g: Group) -> str:
     return ", ".join(parts) or "–"
 
 
-def _unit(key: str) -> str:
-    return next(q.unit for q in QUANTITIES if q.key == key)
+def _quantity(key: str) -> Quantity:
+    return next(q for q in QUANTITIES if q.key == key)
 
 
 def _resistance_slip(R: float) -> Slip:
@@ -515,12 +531,13 @@ def outlier(s: Spread, value: float) -> str | None:
     lo, hi = s.band
     if lo <= value <= hi or s.sigma <= 0:
         return None
-    unit = _unit(s.key)
+    q = _quantity(s.key)
+    unit = q.display
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {_num(value)} {unit} is far {side} the class: {times:.0f} robust standard "
-        f"deviations from its median of {_num(s.median)} {unit}."
+        f"{s.key} = {_num(q.number(value))} {unit} is far {side} the class: {times:.0f} robust "
+        f"standard deviations from its median of {_num(q.number(s.median))} {unit}."
     )
 
 
