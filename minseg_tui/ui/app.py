@@ -23,17 +23,15 @@ import queue
 import signal
 import threading
 import time
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from textual import on, work
-from textual.actions import ActionParseResult
 from textual.app import App, SystemCommand
 from textual.binding import Binding
 from textual.command import CommandPalette
-from textual.dom import DOMNode
 from textual.notifications import SeverityLevel
 from textual.reactive import reactive
 from textual.screen import Screen
@@ -77,7 +75,6 @@ from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
 from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen, split_names
-from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 
 ReportWriter = Callable[[Session], Sequence[Path]]
@@ -142,17 +139,11 @@ class LabApp(App[None]):
     CSS_PATH = "lab.tcss"
     BINDINGS = [
         *app_bindings(),
-        # the F-keys are the app's before any widget's (priority): handled in the order typed,
-        # so F4 has captured and moved the focus on before the reading typed after it arrives;
-        # the arrows with Alt or Ctrl stay the entry's word moves
-        *[
-            Binding(keys, action, label, show=bool(label), priority=keys.startswith("f"))
-            for keys, action, label, _ in PANEL_KEYS
-        ],
-        *[
-            Binding(keys, f"not_here('{what}')", show=False, priority=keys.startswith("f"))
-            for keys, _, _, what in PANEL_KEYS
-        ],
+        # the step's form runs them itself, in the order typed (F4 has captured and moved
+        # on before the reading typed after it arrives); in an entry, the arrows with Alt or
+        # Ctrl stay its word moves
+        *[Binding(keys, action, label, show=bool(label)) for keys, action, label, _ in PANEL_KEYS],
+        *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
     ]
 
     device: reactive[DeviceInfo | None] = reactive(None)
@@ -306,7 +297,9 @@ class LabApp(App[None]):
             )
 
     def action_command_palette(self) -> None:
-        """Ctrl+P: the palette, closed once however many Enters it is handed."""
+        """Ctrl+P: the palette, closed once however many Enters it is handed (what stands in
+        the step's entries stored first)."""
+        self._store_typed()
         if self.use_command_palette and not isinstance(self.screen, CommandPalette):
             self.push_screen(Palette(id="--command-palette"))
 
@@ -316,6 +309,7 @@ class LabApp(App[None]):
         screen = self.screen
         if not isinstance(screen, StartScreen):
             return
+        await screen.typed()
         wanted = screen.request()
         if isinstance(wanted, StartScreen.NewSession):
             await self._new(wanted)
@@ -849,31 +843,15 @@ class LabApp(App[None]):
         elif answer == "move":
             self.action_save_elsewhere()
 
-    async def run_action(
-        self,
-        action: str | ActionParseResult,
-        default_namespace: DOMNode | None = None,
-        namespaces: Mapping[str, DOMNode] | None = None,
-    ) -> bool:
-        """Every key that does something beyond the text box waits for the keys typed just
-        before it in the same burst, then stores what stands in the step's entries (PgDn, F2,
-        F8, Ctrl+P, Ctrl+Q, ...): nothing typed is lost (Enter stores its entry itself; on the
-        start screen it reads the names typed before it)."""
-        if default_namespace is None or isinstance(default_namespace, App | Screen):
-            if isinstance(self.screen, StatusScreen):
-                await self.screen.settle_typing()
-            screen = self._lab_screen()
-            if screen is not None and action != "submit_entry":
-                screen.store_typed()
-        return await super().run_action(action, default_namespace, namespaces)
-
     # -- actions -------------------------------------------------------------------------
     def action_help(self) -> None:
         if not isinstance(self.screen, HelpScreen):
             self.push_screen(HelpScreen(KEYS))
 
     def action_stop_motor(self) -> None:
-        """F2: motor off now; a run in progress keeps what it recorded."""
+        """F2: motor off now; a run in progress keeps what it recorded (and what stands in
+        the step's entries is stored: the key runs ahead of the step's form)."""
+        self._store_typed()
         self.motor = "off"
         self.requested = None
         if self._device is not None:
@@ -887,6 +865,12 @@ class LabApp(App[None]):
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
+
+    def _store_typed(self) -> None:
+        """Store what stands in the lab screen's entries (if it is on screen)."""
+        screen = self._lab_screen()
+        if screen is not None:
+            screen.store_typed()
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """A panel key is live (and in the footer) only on the steps whose panel has it."""

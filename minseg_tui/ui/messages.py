@@ -10,8 +10,9 @@ lab screen, which holds the session's entries) and :class:`StepShown`.
 
 from __future__ import annotations
 
+import asyncio
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from textual.message import Message
 
@@ -95,9 +96,12 @@ class RunRequested(Message):
 
 @dataclass
 class CaptureRequested(Message):
-    """F4: capture omega_ss at ``level`` V from the live stream."""
+    """F4: capture omega_ss at ``level`` V from the live stream; ``done`` is set once the
+    lab screen has (the key waits for it: the keys typed after F4 go into the entry after
+    omega_ss)."""
 
     level: float
+    done: asyncio.Event = field(default_factory=asyncio.Event, compare=False, repr=False)
 
 
 @dataclass

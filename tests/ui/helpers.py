@@ -26,7 +26,7 @@ from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
-from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.fields import EntryBox, FieldForm, FieldRow, field_id
 from tests.ui.fakes import QuietDevice
 
 TABLE = {
@@ -45,8 +45,8 @@ TABLE = {
 
 HOPS = 4
 """Rounds of message processing :func:`settle` always waits: a handler may post a message
-whose handler posts another (Enter in an entry: Submitted, Typed, the lab-changed signal,
-the view's worker); four rounds carry such a chain."""
+whose handler posts another (Enter in an entry: the lab-changed signal, the view's
+worker); four rounds carry such a chain."""
 
 ROUNDS = 1000
 """Most rounds :func:`settle` waits for a condition: a guard against a hang (a condition
@@ -141,14 +141,29 @@ async def start(pilot: Pilot[None], names: str = "Ada, Bo") -> None:
     await settle(pilot, lambda: isinstance(pilot.app.screen, LabScreen) and shown(pilot.app))
 
 
+def typing_box(app: LabApp) -> EntryBox | None:
+    """The text box the keys typed now go into: that of the step form's current row while
+    the form has the focus (None: none)."""
+    focused = app.focused
+    if not isinstance(focused, FieldForm):
+        return None
+    row = focused.typing
+    return row.input if row is not None else None
+
+
 def shown(app: LabApp, step_id: str | None = None) -> bool:
     """The lab screen shows ``step_id`` (any step if None), its pane mounted."""
     screen = app.screen
     if not isinstance(screen, LabScreen):
         return False
     panes = screen.query(StepPane)
-    pane = panes.last() if panes else None
-    return pane is not None and pane.is_mounted and step_id in (None, pane.step.id)
+    pane = panes.first() if panes else None
+    return (
+        pane is not None
+        and pane.is_mounted
+        and pane.step is not None
+        and step_id in (None, pane.step.id)
+    )
 
 
 async def resume(pilot: Pilot[None]) -> None:
@@ -168,12 +183,13 @@ async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") ->
     def there() -> bool:
         if not shown(app, step_id):
             return False
-        pane = app.screen.query(StepPane).last()
+        pane = app.screen.query_one(StepPane)
         if focus != "entry":
             return True
-        row = pane.landing_row()  # the first empty entry (the pane itself without entries)
-        target = pane if row is None else row
-        return app.focused is not None and target in app.focused.ancestors_with_self
+        row = pane.landing_row()  # the first empty entry (the step itself without entries)
+        if row is not None and row.field.options:  # a list of answers has the focus itself
+            return app.focused is not None and row in app.focused.ancestors
+        return app.focused is pane and pane.current is row
 
     await settle(pilot, there)
 

@@ -18,6 +18,7 @@ from tests.ui.helpers import (
     shown,
     start,
     start_with_a_run,
+    typing_box,
 )
 
 
@@ -58,7 +59,7 @@ async def test_keys_typed_after_enter_go_into_the_next_entry(quiet):
         assert _typed(app, "prep7.t_63") == "12 min"
         assert _typed(app, "prep7.T") == "8 min"
         assert _box(app, "prep7.K") == "0,09"
-        assert app.focused is app.screen.query_one(f"#{field_id('prep7.K')}", FieldRow).input
+        assert typing_box(app) is app.screen.query_one(f"#{field_id('prep7.K')}", FieldRow).input
 
 
 async def test_a_panel_key_right_after_pgdn_works_on_the_new_step(quiet):
@@ -95,7 +96,9 @@ async def test_the_reading_typed_right_after_f4_goes_into_the_next_entry(quiet):
         with app.session as s:
             assert s.value("omega_ss@2.5") is not None
         assert _typed(app, "u_ss@2.5") == "2,05"
-        assert app.focused is app.screen.query_one(f"#{field_id('omega_ss@3.5')}", FieldRow).input
+        assert (
+            typing_box(app) is app.screen.query_one(f"#{field_id('omega_ss@3.5')}", FieldRow).input
+        )
 
 
 async def test_keys_typed_right_after_the_names_land_in_the_lab(quiet):
@@ -125,7 +128,7 @@ async def test_keys_typed_after_tab_go_into_the_next_entry(quiet):
         assert _typed(app, "prep7.y_final") == "90"
         assert _typed(app, "prep7.T") == "8 min"  # stored by the Shift+Tab that left it
         assert _box(app, "prep7.t_63") == "11 min"  # Shift+Tab came back: typing replaced it
-        assert app.focused is app.screen.query_one(f"#{field_id('prep7.t_63')}", FieldRow).input
+        assert typing_box(app) is app.screen.query_one(f"#{field_id('prep7.t_63')}", FieldRow).input
 
 
 async def test_tab_tab_enter_on_the_start_screen_resumes_the_session(quiet, tmp_path):

@@ -34,6 +34,7 @@ from tests.ui.helpers import (
     start_run_on,
     start_with_a_run,
     type_in,
+    typing_box,
 )
 
 
@@ -202,7 +203,7 @@ async def test_run_log_keys_work_whatever_has_focus_but_leave_typing_alone(quiet
         note = app.screen.query_one("#zoom-note")
         assert app.screen.active_bindings["f9"].binding.description == "Zoom"
         own = await type_in(pilot, "own.K", "")
-        assert app.focused is own.input
+        assert typing_box(app) is own.input
         await pilot.press("alt+right")
         await settle(pilot)
         assert "step 2 of" in str(note.render())
@@ -468,7 +469,7 @@ async def test_typing_lands_in_the_step_and_enter_moves_on(quiet, tmp_path):
         await settle(pilot)
         with app.session as session:
             assert session.value("omega_ss@2.5") == 3.8
-        assert app.focused is app.screen.query_one(f"#{field_id('u_ss@2.5')}", FieldRow).input
+        assert typing_box(app) is app.screen.query_one(f"#{field_id('u_ss@2.5')}", FieldRow).input
         await pilot.press(*"2,05 kg", "enter")
         await settle(pilot)
         await goto(pilot, "task2")  # typing on the list of steps goes into the entry too
@@ -495,7 +496,7 @@ async def test_the_entry_a_step_lands_in_stays_in_view_when_its_view_comes_later
         await start_with_a_run(pilot, "task12")
         await settle(pilot)
         pane = app.screen.query(StepPane).last()
-        box = app.focused
+        box = typing_box(app)
         assert box is not None and box is pane.landing_row().input
         landed = pane.scroll_y
         assert landed > 0 and app.screen.can_view_entire(box)

@@ -41,6 +41,7 @@ from tests.ui.helpers import (
     start,
     start_with_a_run,
     taken,
+    typing_box,
 )
 
 
@@ -76,7 +77,7 @@ async def test_typing_lands_in_the_first_empty_entry_in_view_and_replaces(quiet)
         await start(pilot)
         enter_all(app, {"i_ss@2.5": "30 mA"})
         await goto(pilot, "task5")
-        assert app.focused is _row(app, "i_ss@3.5").input  # not the filled one above it
+        assert typing_box(app) is _row(app, "i_ss@3.5").input  # not the filled one above it
         assert _in_view(_pane(app), _row(app, "i_ss@3.5"))
         await pilot.press(*"37.2 mA", "enter")
         await settle(pilot)
@@ -86,11 +87,11 @@ async def test_typing_lands_in_the_first_empty_entry_in_view_and_replaces(quiet)
         enter_all(app, {"omega_ss@2.5": "3.8", "u_ss@2.5": "2.05", "omega_ss@3.5": "5.8"})
         await goto(pilot, "task4")
         row = _row(app, "u_ss@3.5")
-        assert app.focused is row.input and _in_view(_pane(app), row)
+        assert typing_box(app) is row.input and _in_view(_pane(app), row)
         # every entry filled: the first one is focused with its text selected; keys replace it
         enter_all(app, {"i_ss@3.5": "33 mA", "i_ss@4.5": "37 mA"})
         await goto(pilot, "task5")
-        assert app.focused is _row(app, "i_ss@2.5").input
+        assert typing_box(app) is _row(app, "i_ss@2.5").input
         await pilot.press(*"29,8", "enter")
         await settle(pilot)
         assert _stored(app, "i_ss@2.5").text == "29,8"  # not "30 mA29,8"

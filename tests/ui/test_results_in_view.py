@@ -8,7 +8,7 @@ import pytest
 
 from minseg_tui.ui.screens.lab import StepPane
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import settle, start_with_a_run
+from tests.ui.helpers import settle, start_with_a_run, typing_box
 
 
 def _visible(pane: StepPane, widget) -> bool:
@@ -32,7 +32,7 @@ async def test_an_answer_brings_its_comparison_into_view(quiet, step_id, key, ty
         await start_with_a_run(pilot, step_id)
         pane = app.screen.query(StepPane).last()
         row = app.screen.query_one(f"#{field_id(key)}", FieldRow)
-        assert app.focused is row.input
+        assert typing_box(app) is row.input
         await pilot.press(*typed, "enter")
         compare = app.screen.query_one("#compare")
         await settle(pilot, lambda: said in str(compare.render()))

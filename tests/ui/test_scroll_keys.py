@@ -20,6 +20,7 @@ from tests.ui.helpers import (
     resume,
     settle,
     start,
+    typing_box,
 )
 
 
@@ -79,7 +80,7 @@ async def test_the_focused_entry_stays_in_view_when_the_panel_above_it_grows(tmp
         await start(pilot)
         await goto(pilot, "summary")  # lands on the first question; typing goes below
         await burst(pilot, *"why does f fall with speed")
-        box = app.focused
+        box = typing_box(app)
         assert box is app.screen.query_one(f"#{field_id('summary.unclear')} Input")
         assert app.screen.can_view_entire(box)
         await burst(pilot, "f8")
@@ -101,7 +102,7 @@ async def test_a_resumed_step_shows_the_entry_it_lands_in(quiet):
         await resume(pilot)
         await settle(pilot)
         box = app.screen.query_one(f"#{field_id('own.T')} Input")
-        assert app.focused is box
+        assert typing_box(app) is box
         assert app.screen.can_view_entire(box)
 
 

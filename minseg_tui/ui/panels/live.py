@@ -17,6 +17,7 @@ from minseg_tui.ui.device import DeviceInfo
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
 from minseg_tui.ui.panels.meter import MeterPanel
+from minseg_tui.ui.widgets.fields import FieldForm
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
@@ -121,15 +122,18 @@ class LivePanel(Vertical):
         k = -1 if self.requested not in self.levels else self.levels.index(self.requested)
         self.post_message(VoltageRequested(self.levels[(k + 1) % len(self.levels)]))
 
-    def capture(self) -> None:
-        """F4: ask to take omega_ss from the settled window (refused while not settled)."""
+    def capture(self) -> CaptureRequested | None:
+        """F4: ask the lab screen to take omega_ss from the settled window (refused while not
+        settled); the request asked (None: none)."""
         if "capture_omega" not in self.step.actions:
             self.notify("capturing omega_ss is part of Task 4")
-            return
+            return None
         if self.requested is None:
             self.notify("set a voltage first (F3)", severity="warning")
-            return
-        self.post_message(CaptureRequested(self.requested))
+            return None
+        request = CaptureRequested(self.requested)
+        self.screen.post_message(request)
+        return request
 
 
 class Readout(Vertical):
@@ -142,27 +146,41 @@ class Readout(Vertical):
         super().__init__(*parts, classes="readout")
 
     def on_mount(self) -> None:
-        self.watch(self.screen, "focused", self._focused, init=False)
+        self.watch(self.screen, "focused", self._moved, init=False)
+        if isinstance(self.parent, FieldForm):
+            self.watch(self.parent, "current", self._moved, init=False)
 
-    def _focused(self, focused: Widget | None) -> None:
-        step = self.parent
-        if focused is None or step is None or step not in focused.ancestors:
+    def _moved(self) -> None:
+        if self._target() is None:
             return
 
         def lift(again: bool) -> None:
-            self._lift(focused)
+            self._lift()
             if again:  # once more when the layout has settled (a hint moved under its box)
                 self.call_after_refresh(lift, False)
 
         self.call_after_refresh(lift, True)
 
-    def _lift(self, focused: Widget) -> None:
+    def _target(self) -> Widget | None:
+        """Where the focus is in the step: the box of its form's current row, or a focused
+        widget in it (None: elsewhere)."""
         step = self.parent
+        focused = self.screen.focused
+        if isinstance(step, FieldForm) and focused is step:
+            row = step.typing
+            return row.input if row is not None else None
+        if focused is None or step is None or step not in focused.ancestors:
+            return None
+        return focused
+
+    def _lift(self) -> None:
+        step = self.parent
+        focused = self._target()
         if not (
             isinstance(step, Widget)
+            and focused is not None
             and focused.is_attached
             and self.is_attached
-            and self.screen.focused is focused
         ):
             return
         row = next(

@@ -2,19 +2,17 @@
 
 from __future__ import annotations
 
-from textual import events, on
+from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
 from textual.widget import Widget
 from textual.widgets import Collapsible, Input
-from textual.widgets.collapsible import CollapsibleTitle
 
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import CheckView
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
-from minseg_tui.ui.widgets.fields import FieldRow
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
@@ -50,21 +48,6 @@ class ModelCheckPanel(ViewPanel[CheckView]):
     def after_rows(self) -> Widget:
         """The box to load a log recorded elsewhere, under the step's notes."""
         return self._import
-
-    def on_key(self, event: events.Key) -> None:
-        """Letters typed on the fold's title (which takes only Enter) go into the step's
-        notes, as they do on the step's text; they were lost."""
-        if not (event.is_printable and event.character and event.character != " "):
-            return
-        if not isinstance(self.screen.focused, CollapsibleTitle):
-            return
-        typing_row = getattr(self.parent, "typing_row", None)  # the step's (StepPane)
-        row = typing_row() if callable(typing_row) else None
-        if isinstance(row, FieldRow):
-            event.stop()
-            event.prevent_default()
-            row.input.start_with(event.character)
-            self.screen.scroll_to_widget(row, animate=False)
 
     def build(self, session: Session) -> CheckView:
         return views.check(session)

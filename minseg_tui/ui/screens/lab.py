@@ -20,12 +20,12 @@ from textual.actions import SkipAction
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
-from textual.containers import Horizontal, Vertical, VerticalScroll
+from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
 from textual.reactive import reactive
 from textual.signal import Signal
 from textual.widget import Widget
-from textual.widgets import OptionList, RadioSet, SelectionList, Static
+from textual.widgets import OptionList, Static
 from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
@@ -54,7 +54,7 @@ from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
-from minseg_tui.ui.widgets.fields import EntryBox, FieldRow
+from minseg_tui.ui.widgets.fields import FieldForm, FieldRow, Restoring, Store
 from minseg_tui.ui.widgets.footer import KeyFooter
 from minseg_tui.ui.widgets.prose import Prose
 
@@ -129,21 +129,22 @@ class Heading(Vertical):
         self.display = False
 
 
-class StepPane(VerticalScroll):
-    """Title, goal, what to do, the step's own panel (and the readout it keeps in sight at the
-    bottom) and its entry rows; the :class:`Heading` over its top while it is scrolled down.
-    :meth:`focus_on` focuses its landing entry or a widget in it (the screen calls it once the
-    pane is mounted)."""
+class StepPane(FieldForm):
+    """The step on the right: title, goal, what to do, the step's own panel (and the readout
+    it keeps in sight at the bottom) and its entry rows, in the one form that owns the rows'
+    keys (:class:`~minseg_tui.ui.widgets.fields.FieldForm`); the :class:`Heading` over its
+    top while it is scrolled down. It outlives the step:
+    :meth:`show` puts the next step's widgets in it, so that the keys typed after PgDn, still
+    on their way to it, land in the new step. :meth:`focus_on` lands in the step."""
 
-    def __init__(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
-        super().__init__(classes="pane")
-        self.step = step
-        self.panel = panel
-        self._rows = rows
-        # focusable where the step may land on its text (no entries, or a panel to read):
-        # the arrow keys then scroll it
-        self.can_focus = panel is not None or not step.fields
-        self._heading = Heading(step)
+    def __init__(
+        self, store: Store, restore: Callable[[FieldRow, Restoring], None], readonly: bool = False
+    ) -> None:
+        super().__init__(store, restore, readonly, classes="pane")
+        self.step: Step | None = None
+        """The step shown (None before the first)."""
+        self.panel: Widget | None = None
+        self._heading: Heading | None = None
         self._keep: FieldRow | Literal["focused", "scrolled"] = "focused"
         """What stays in view when the step grows or shrinks above its entries: the entry the
         step landed in, while it has the focus (placed again from the top of the step: the
@@ -151,23 +152,32 @@ class StepPane(VerticalScroll):
         down); the focused entry; or nothing once the group scrolled (arrows, mouse) since
         the focus last moved in the step: it stays where they put it."""
 
-    def compose(self) -> ComposeResult:
-        yield self._heading
-        yield Prose(self.step.title, classes="title")
-        yield Prose("Goal: " + self.step.goal, classes="goal")
-        yield Prose("What to do: " + self.step.todo, classes="todo")
-        if self.panel is not None:
-            yield self.panel
-            if isinstance(self.panel, LivePanel):
-                readout = self.panel.readout()
+    async def show(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
+        """Put ``step``'s widgets in the form in place of the last step's; return once they
+        are mounted."""
+        self.current = None
+        self._keep = "focused"
+        await self.remove_children()
+        self._heading = Heading(step)
+        widgets: list[Widget] = [
+            self._heading,
+            Prose(step.title, classes="title"),
+            Prose("Goal: " + step.goal, classes="goal"),
+            Prose("What to do: " + step.todo, classes="todo"),
+        ]
+        if panel is not None:
+            widgets.append(panel)
+            if isinstance(panel, LivePanel):
+                readout = panel.readout()
                 if readout is not None:
-                    yield readout
-        yield from self._rows
-        after = getattr(self.panel, "after_rows", None)
+                    widgets.append(readout)
+        widgets += rows
+        after = getattr(panel, "after_rows", None)
         if callable(after):
-            yield after()
-
-    def on_mount(self) -> None:
+            widgets.append(after())
+        self.scroll_to(y=0, animate=False, immediate=True)
+        await self.mount_all(widgets)
+        self.step, self.panel = step, panel
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
 
     @on(ViewPanel.Drawn)
@@ -181,16 +191,8 @@ class StepPane(VerticalScroll):
         """Scroll so that the focused entry and ``widget`` are both in view, the entry first
         when both do not fit (False: no entry of this step has the focus, or the group
         scrolled away)."""
-        focused = self.screen.focused
-        row = next(
-            (
-                a
-                for a in (focused.ancestors_with_self if focused else ())
-                if isinstance(a, FieldRow)
-            ),
-            None,
-        )
-        if row is None or self not in row.ancestors or self._keep == "scrolled":
+        row = self.typing
+        if row is None or self._keep == "scrolled":
             return False
         self._keep = "focused"  # the group answered: the landing is over
 
@@ -220,15 +222,12 @@ class StepPane(VerticalScroll):
         moved to since stays in view. Either only while the group has not scrolled away."""
         landed = self._keep
         if isinstance(landed, FieldRow):
-            if landed.is_attached and landed.has_focus_within:
+            if landed.is_attached and landed is self.typing:
                 landed.call_after_refresh(landed.bring_into_view, True)
                 return
             self._keep = "focused"
-        focused = self.screen.focused
-        if self._keep == "scrolled" or focused is None:
-            return
-        row = next((a for a in focused.ancestors_with_self if isinstance(a, FieldRow)), None)
-        if row is not None and self in row.ancestors:
+        row = self.typing
+        if self._keep != "scrolled" and row is not None:
             row.call_after_refresh(row.bring_into_view)
 
     def on_descendant_focus(self, event: events.DescendantFocus) -> None:
@@ -239,12 +238,13 @@ class StepPane(VerticalScroll):
     def watch_scroll_y(self, old: float, new: float) -> None:
         """The heading shows while the step's own title is scrolled away."""
         super().watch_scroll_y(old, new)
-        self._heading.display = round(new) > 0
+        if self._heading is not None:
+            self._heading.display = round(new) > 0
 
     @property
     def heading_rows(self) -> int:
         """Rows the heading covers at the top of the step (0 while it is hidden)."""
-        return HEADING_ROWS if self._heading.display else 0
+        return HEADING_ROWS if self._heading is not None and self._heading.display else 0
 
     def _clear_heading(self, widget: Widget) -> None:
         """A focused ``widget`` under the heading (Textual scrolls a widget above the view to
@@ -254,6 +254,13 @@ class StepPane(VerticalScroll):
         over = self.scrollable_content_region.y + self.heading_rows - widget.region.y
         if over > 0:
             self.scroll_to(y=max(self.scroll_y - over, 0), animate=False, immediate=True)
+
+    def watch_current(self, old: FieldRow | None, new: FieldRow | None) -> None:
+        super().watch_current(old, new)
+        if new is not None and self._keep == "scrolled":
+            self._keep = "focused"
+        if new is not None and new.is_attached and not new.field.options:
+            self.call_after_refresh(self._clear_heading, new.input)
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
         self._group_scrolled()
@@ -286,40 +293,39 @@ class StepPane(VerticalScroll):
         """The entry the step lands in: the first one with nothing in it, else the first;
         on a step with a panel, its notes field does not count (the step lands at the top,
         on what the panel shows). None: no such entry."""
-        rows = [
-            r for r in self.query(FieldRow) if self.panel is None or not r.field.key.endswith(NOTES)
-        ]
+        rows = [r for r in self.rows() if self.panel is None or not r.field.key.endswith(NOTES)]
         return next((r for r in rows if r.is_empty), rows[0] if rows else None)
-
-    def typing_row(self) -> FieldRow | None:
-        """Where keys typed outside an entry go: the entry the keys before them in the same
-        burst went into (it is not focused yet), else the landing entry, else the first empty
-        entry (a notes field too), else the first; text entries only (a question to tick,
-        the summary's, takes no text)."""
-        rows = [r for r in self.query(FieldRow) if not r.field.options]
-        started = next((r for r in rows if r.input.starting), None)
-        if started is not None:  # the first key filled it: not the first empty one any more
-            return started
-        landing = self.landing_row()
-        if landing in rows:
-            return landing
-        return next((r for r in rows if r.is_empty), None) or (rows[0] if rows else None)
 
     def focus_on(self, what: str) -> None:
         """Focus the step's landing entry (``entry``: scrolled into view, its text selected
-        so that typing replaces it; the pane itself on a step without entries, so the arrow
-        keys scroll it) or the widget the selector ``what`` finds (scrolled into view). At
-        once, not after the messages already queued: keys of the same burst go here."""
+        so that typing replaces it; the step itself, at its top, where it has none, so the
+        arrow keys scroll it) or the widget the selector ``what`` finds (scrolled into
+        view). At once, not after the messages already queued: keys of the same burst go
+        here."""
         if what == "entry":
             row = self.landing_row()
             if row is not None:
-                row.focus_input(landing=True)
+                self.focus_row(row, landing=True)
                 self._keep = row
             else:
+                self.current = None
                 self.screen.set_focus(self)
             return
         for w in self.query(what):
             self.screen.set_focus(w)
+
+
+class StepList(OptionList):
+    """The list of steps: a character typed on it goes into the step's first empty entry
+    (:meth:`FieldForm.take`), not nowhere."""
+
+    def on_key(self, event: events.Key) -> None:
+        screen = self.screen
+        if isinstance(screen, LabScreen) and event.is_printable and event.character:
+            if screen.pane.typing_row() is not None and not screen.readonly:
+                event.stop()
+                event.prevent_default()
+                screen.pane.take(event.character)
 
 
 class StepCommands(Provider):
@@ -376,18 +382,18 @@ class LabScreen(StatusScreen):
     ``refresh`` the live plots' redraw period (s). The app binds the reactive attributes."""
 
     BINDINGS = [
+        # the screen's before any widget's (priority: a list or a table has its own PgDn),
+        # except the step's form's, which runs them itself in the order typed
         Binding("pagedown,ctrl+n", "next_step", "Next step", priority=True),
         Binding("pageup,ctrl+b", "prev_step", "Prev step", show=False, priority=True),
-        # Enter in an entry is the screen's (priority): the focus moves on before the keys
-        # typed after it are handed to a widget, so they go into the next entry
-        Binding("enter", "submit_entry", show=False, priority=True),
+        Binding("tab", "into_step(1)", show=False),
+        Binding("shift+tab", "into_step(-1)", show=False),
         Binding("ctrl+l", "focus_nav", "Steps", show=False),
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
     ]
     COMMANDS = StatusScreen.COMMANDS | {StepCommands}
-    AUTO_FOCUS = ""
-    """Nothing focused as the screen comes up (not the list of steps): the lab opens landed in
-    its step, its entry in view, as PgDn lands."""
+    AUTO_FOCUS = ".pane"
+    """The step's form (the lab opens landed in its step, its entry in view, as PgDn lands)."""
 
     requested: reactive[float | None] = reactive(None)
     meter: reactive[MeterReading | None] = reactive(None)
@@ -410,7 +416,7 @@ class LabScreen(StatusScreen):
         self._lab_changed = lab_changed
         self._refresh = refresh
         self._shown: str | None = None
-        """The step whose pane was last mounted (the DOM may not hold it yet)."""
+        """The step last asked for (its widgets may not be in the form yet)."""
         self._jump: tuple[str | None] | None = None
         """Set by :meth:`go_to`: what to focus once its step is shown (in a tuple: the focus
         may be None, "leave it")."""
@@ -428,11 +434,11 @@ class LabScreen(StatusScreen):
         with self.session as s:
             labels = [nav_label(st, s.step_status(st.id)) for st in STEPS]
         with Horizontal(id="body"):
-            yield OptionList(
+            yield StepList(
                 *[Option(label, id=st.id) for label, st in zip(labels, STEPS, strict=True)],
                 id="nav",
             )
-            yield Static("", classes="pane")
+            yield StepPane(self._store, self._restore, self.readonly)
         yield KeyFooter()
 
     async def on_mount(self) -> None:
@@ -446,9 +452,16 @@ class LabScreen(StatusScreen):
 
     # -- the step on screen --------------------------------------------------------------
     @property
+    def pane(self) -> StepPane:
+        """The form that shows the step."""
+        return self.query_one(StepPane)
+
+    @property
     def step(self) -> Step:
         """The step on screen."""
-        return self.query(StepPane).last().step
+        step = self.pane.step
+        assert step is not None
+        return step
 
     @property
     def panel(self) -> Widget | None:
@@ -459,9 +472,9 @@ class LabScreen(StatusScreen):
             panes = self.get_child_by_id("body").query_children(StepPane)
         except NoMatches:  # not composed yet
             return None
-        return panes.last().panel if panes else None
+        return panes.first().panel if panes else None
 
-    def panel_keys(self) -> dict[str, Callable[[], None]]:
+    def panel_keys(self) -> dict[str, Callable[[], object]]:
         """The panel keys of the step shown (:data:`PANEL_KEYS`): action -> what its panel
         does (none on a step without a panel, or whose panel has no keys)."""
         panel = self.panel
@@ -484,15 +497,15 @@ class LabScreen(StatusScreen):
         return {}
 
     async def press(self, action: str) -> None:
-        """Panel key ``action`` (:data:`PANEL_KEYS`): what the step's panel does, then wait
-        until what it asked (a capture, say) is done, so the keys typed after it act on the
-        result. Nothing on a step whose panel does not have it."""
+        """Panel key ``action`` (:data:`PANEL_KEYS`): what the step's panel does (nothing on
+        a step whose panel does not have it). F4's capture is done before this returns, so
+        the keys typed after it act on the result."""
         run = self.panel_keys().get(action)
-        panel = self.panel
-        if run is None or panel is None:
+        if run is None:
             return
-        run()
-        await self.settle_from(panel)
+        asked = run()
+        if isinstance(asked, CaptureRequested):
+            await asked.done.wait()
 
     def _panel_for(self, step: Step) -> Widget | None:
         """The panel of ``step``'s kind (None for steps that only take entries), bound to the
@@ -547,14 +560,12 @@ class LabScreen(StatusScreen):
         else:  # moved with PgDn/PgUp: land in the step; browsing the list stays on the list
             focus = None if self.focused is self.query_one("#nav") and not self._paging else "entry"
         self._paging = False
-        self.query(".pane").remove()  # not awaited: a step shown meanwhile removes this one
-        pane = StepPane(step, panel, self._rows(step))
-        mounted = self.query_one("#body").mount(pane)
+        pane = self.pane
         self.post_message(StepShown(step))
+        await pane.show(step, panel, self._rows(step))
         if isinstance(panel, ViewPanel):
             self._load(panel)
-        await mounted
-        if focus is not None and self._shown == step_id and pane.is_attached:
+        if focus is not None and self._shown == step_id:
             pane.focus_on(focus)
 
     def _load(self, panel: ViewPanel[V]) -> None:
@@ -581,16 +592,14 @@ class LabScreen(StatusScreen):
         """The session changed: the navigator's marks, the entries the lab changed (a
         capture), and the panel's view."""
         self.refresh_marks()
-        panes = self.query(StepPane)
-        if not panes:
-            return
+        pane = self.pane
         with self.session as s:
-            for row in panes.last().query(FieldRow):
+            for row in pane.rows():
                 text = views.typed(s, row.field.key)
                 row.held = views.held(s, row.field.key)
                 if row.sent is not None and text != row.sent:
                     row.refresh_from_lab(text, views.entry(s, row.field.key))
-        panel = panes.last().panel
+        panel = pane.panel
         if isinstance(panel, ViewPanel):
             self._load(panel)
 
@@ -607,9 +616,7 @@ class LabScreen(StatusScreen):
 
     @on(OptionList.OptionSelected, "#nav")
     def _selected(self, event: OptionList.OptionSelected) -> None:
-        panes = self.query(StepPane)
-        if panes:
-            self.call_after_refresh(panes.last().focus_on, "entry")
+        self.call_after_refresh(self.pane.focus_on, "entry")
 
     def go_to(self, step_id: str, focus: str | None = "entry") -> None:
         """Move the navigator (and so the pane) to ``step_id``; then focus its first entry
@@ -618,9 +625,8 @@ class LabScreen(StatusScreen):
         index = STEP_IDS.index(step_id)
         nav = self.query_one("#nav", OptionList)
         if nav.highlighted == index and self._shown == step_id:
-            panes = self.query(StepPane)
-            if panes and focus is not None:
-                panes.last().focus_on(focus)
+            if focus is not None:
+                self.pane.focus_on(focus)
             return
         self._jump = (focus,)
         nav.highlighted = index
@@ -628,6 +634,8 @@ class LabScreen(StatusScreen):
     async def _move(self, delta: int) -> None:
         """PgDn/PgUp: the next or previous step, shown (and focused) before the keys typed
         after it are handed on, so they land in the new step."""
+        if self.focused is self.pane and not self.pane.running:
+            raise SkipAction()  # the form's: after the keys typed before it
         nav = self.query_one("#nav", OptionList)
         index = max(0, min(len(STEPS) - 1, (nav.highlighted or 0) + delta))
         if index == nav.highlighted:
@@ -651,19 +659,9 @@ class LabScreen(StatusScreen):
     async def action_prev_step(self) -> None:
         await self._move(-1)
 
-    def action_submit_entry(self) -> None:
-        """Enter in a text entry: store it (the app has settled the typing first); accepted,
-        the focus moves to the next entry at once. Elsewhere Enter does what it does there."""
-        box = self.focused
-        row = box.parent.parent if isinstance(box, EntryBox) and box.parent else None
-        if not isinstance(row, FieldRow):
-            raise SkipAction()
-        text = row.submitted()
-        if text is None:
-            return
-        result = self._store(row, text, submitted=True)
-        if result.ok:
-            self.focus_after(row.field.key)
+    def action_into_step(self, delta: int) -> None:
+        """Tab (Shift+Tab) outside the step: into its first (last) field or widget."""
+        self.pane.enter(delta)
 
     def action_focus_nav(self) -> None:
         nav = self.query_one("#nav")
@@ -674,33 +672,6 @@ class LabScreen(StatusScreen):
         """Hide or show the list of steps (more room for the step at 80 columns)."""
         nav = self.query_one("#nav")
         nav.display = not nav.display
-
-    def on_key(self, event: events.Key) -> None:
-        """Typing on the list of steps (or on a step's text, or on a list of answers, where
-        letters do nothing) goes into the step's first empty text entry (replacing what a
-        filled one holds), not nowhere and never onto the end of a value."""
-        panes = self.query(StepPane)
-        if not panes or not event.is_printable or not event.character:
-            return
-        row = panes.last().typing_row()
-        if row is None or self.readonly:
-            return
-        if isinstance(self.focused, EntryBox):
-            # a box takes every printable key it is handed: this one was handed to the list,
-            # the step or a list of answers before the keys ahead of it in the burst moved the
-            # focus into the box; it goes on after them (it was lost)
-            event.stop()
-            event.prevent_default()
-            self.focused.insert_text_at_cursor(event.character)
-            return
-        on_answers = isinstance(self.focused, RadioSet | SelectionList) and (
-            event.character != " " or row.input.starting  # Space picks, unless mid-burst
-        )
-        if self.focused in (self.query_one("#nav"), panes.last()) or on_answers:
-            event.stop()
-            event.prevent_default()
-            row.input.start_with(event.character)
-            self.scroll_to_widget(row, animate=False)
 
     def refresh_marks(self) -> None:
         """Update the status marks in the navigator after an entry or a run."""
@@ -715,11 +686,10 @@ class LabScreen(StatusScreen):
     def store_typed(self) -> None:
         """Store what stands in the shown step's entries and was not stored yet (any key that
         leaves an entry, or the step, calls this): accepted or refused, as Enter does."""
-        for pane in self.query(StepPane):
-            for row in pane.query(FieldRow):
-                text = row.pending()
-                if text is not None:
-                    self._store(row, text, submitted=False)
+        for row in self.pane.rows():
+            text = row.pending()
+            if text is not None:
+                self._store(row, text, submitted=False)
 
     def _store(self, row: FieldRow, text: str, submitted: bool, undoing: bool = False) -> EntryView:
         """Store ``text`` for ``row`` (``submitted``: with Enter) and show the verdict. An
@@ -750,37 +720,35 @@ class LabScreen(StatusScreen):
         self._changed()
         return result
 
-    @on(FieldRow.Restore)
-    def _restore(self, event: FieldRow.Restore) -> None:
+    def _restore(self, row: FieldRow, how: Restoring) -> None:
         """Escape in an entry: a refused text the lab keeps there is dropped with its refusal
         (the answer in effect stands alone again, and its mark in the list of steps comes
         back). Ctrl+Z: the answer stored before the one in effect (one further back each
         time), entered again; Ctrl+Y: the answer the last Ctrl+Z took back. Either says what
         it brought back, in place of what, and how it is judged."""
-        event.stop()
-        if event.how == "held":
-            self._withdraw(event.row)
+        if how == "held":
+            self._withdraw(row)
             return
-        row, key, label = event.row, event.key, event.row.field.label
+        key, label = row.field.key, row.field.label
         undone = self._undone.setdefault(key, [])
         with self.session as s:
             current = views.held(s, key)
-            if event.how == "undo":
+            if how == "undo":
                 target = views.previous_answer(s, key, skip=undone)
             else:
                 target = undone[-1] if undone else None
         if target is None:
             self.notify(
                 f"{label}: no earlier answer to bring back"
-                if event.how == "undo"
+                if how == "undo"
                 else f"{label}: nothing to bring forward (Ctrl+Y undoes a Ctrl+Z)",
-                title="undo" if event.how == "undo" else "redo",
+                title="undo" if how == "undo" else "redo",
             )
             return
         row.refresh_from_lab(target, None)
         row.input.cursor_position = len(target)
         result = self._store(row, target, submitted=True, undoing=True)
-        if event.how == "undo":
+        if how == "undo":
             undone.append(current)
         else:
             undone.pop()
@@ -813,12 +781,6 @@ class LabScreen(StatusScreen):
         row.input.cursor_position = len(held)
         self._changed()
 
-    @on(FieldRow.Typed)
-    def _typed(self, event: FieldRow.Typed) -> None:
-        result = self._store(event.row, event.text, event.submitted)
-        if result.ok and event.submitted:  # Enter on an accepted entry moves on to the next one
-            self.focus_after(event.key)
-
     @on(FieldRow.Chosen)
     def _chosen(self, event: FieldRow.Chosen) -> None:
         if self.readonly:
@@ -832,23 +794,26 @@ class LabScreen(StatusScreen):
 
     def focus_after(self, key: str) -> None:
         """Focus the entry after field ``key`` (stays put on the last one)."""
-        rows = list(self.query(FieldRow))
-        keys = [r.field.key for r in rows]
-        if key in keys and keys.index(key) + 1 < len(rows):
-            rows[keys.index(key) + 1].focus_input()
+        self.pane.focus_after(key)
 
     @on(CaptureRequested)
     def _capture(self, event: CaptureRequested) -> None:
         """F4: omega_ss from the settled window of the live stream."""
         event.stop()
+        try:
+            self._capture_now(event.level)
+        finally:
+            event.done.set()
+
+    def _capture_now(self, level: float) -> None:
         t, count, _u = self._live.snapshot()
         with self.session as s:
-            result = views.capture_live(s, event.level, t, count)
+            result = views.capture_live(s, level, t, count)
         if not result.ok:  # a success shows in the field itself; a toast would hide the meter
             self.notify(result.message, severity="warning")
         self._changed()
         if result.ok:  # next comes the multimeter reading at the same voltage
-            self.focus_after(f"omega_ss@{event.level:g}")
+            self.focus_after(f"omega_ss@{level:g}")
 
     @on(RevealRequested)
     def _reveal(self, event: RevealRequested) -> None:

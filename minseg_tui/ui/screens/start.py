@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -47,6 +48,10 @@ class StartScreen(StatusScreen):
         # the app's before any widget's: the lab opens before the keys typed after Enter are
         # handed on, so they go into the lab (the app asks :meth:`request` what Enter wants)
         Binding("enter", "app.start_lab", show=False, priority=True),
+        # the focus moves when the key arrives, so that the Enter after it reads the box or
+        # the list it moved to
+        Binding("tab", "app.focus_next", show=False, priority=True),
+        Binding("shift+tab", "app.focus_previous", show=False, priority=True),
         Binding("f12", "app.class_view", "Class view"),
         Binding("ctrl+n", "new_anyway", "New anyway", show=False),
     ]
@@ -103,6 +108,15 @@ class StartScreen(StatusScreen):
         if why:
             return f"{s.path}: {why}" + (" (Enter opens it read-only)" if s.damaged else "")
         return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {step_name(s.last_step)}"
+
+    async def typed(self) -> None:
+        """Wait until the keys handed to the focused box before the Enter being handled (the
+        app's, before any widget's) are in it: the names typed in the same burst."""
+        focused = self.focused
+        if focused is not None:
+            done = asyncio.Event()
+            if focused.call_later(done.set):
+                await done.wait()
 
     def request(self) -> StartScreen.NewSession | StartScreen.Resume | None:
         """What Enter asks for where the focus is: a new session (in the names' or the date's

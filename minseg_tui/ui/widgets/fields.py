@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import asyncio
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
 
@@ -10,9 +12,10 @@ from rich.segment import Segment
 from textual import events, on
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Horizontal, ScrollableContainer, Vertical
+from textual.containers import Horizontal, ScrollableContainer, Vertical, VerticalScroll
 from textual.geometry import Size
 from textual.message import Message
+from textual.reactive import reactive
 from textual.strip import Strip
 from textual.widget import Widget
 from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList
@@ -78,27 +81,34 @@ before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
 RESTORING_KEYS: dict[str, Restoring] = {"escape": "held", "ctrl+z": "undo", "ctrl+y": "redo"}
 
 
-class EntryBox(Input):
-    """The text box of an entry: focusing it selects what it holds (typing replaces it),
-    except right after :meth:`start_with`, which begins it with a typed character.
+class EntryBox(Input, can_focus=False):
+    """The text box of an entry. It never takes the focus: its form (:class:`FieldForm`) does,
+    and hands it the keys typed while its row is the form's current one, in the order typed;
+    it then shows as focused (:meth:`show_current`), cursor and selection included.
 
     A refused text stays selected (:meth:`hold_refused`): the next value typed replaces it,
     while Backspace, Delete, the arrows and Home/End edit it one character at a time. Escape
     brings back the text the lab holds for the row and drops a refused text over it; Ctrl+Z
-    the answer stored before it, Ctrl+Y the one Ctrl+Z took back (:class:`FieldRow.Restore`)."""
+    the answer stored before it, Ctrl+Y the one Ctrl+Z took back (the form asks the lab)."""
 
     def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
         super().__init__(
-            value=value,
-            classes="field-input",
-            select_on_focus=True,
-            placeholder=placeholder,
-            disabled=disabled,
+            value=value, classes="field-input", placeholder=placeholder, disabled=disabled
         )
-        self._starting = False
-        """Set by :meth:`start_with` until the box has the focus."""
         self._refused = False
         """The whole refused text is selected (:meth:`hold_refused`) and no key acted since."""
+
+    def show_current(self, current: bool) -> None:
+        """Shown as the box typing goes into (its row is the focused form's current one), or
+        not: Textual's Input draws its cursor and its focused look from ``has_focus``."""
+        self.has_focus = current
+
+    def focus(self, scroll_visible: bool = True) -> EntryBox:
+        """Focusing the box focuses its form at its row (what it holds selected)."""
+        row = self.parent.parent if self.parent is not None else None
+        if isinstance(row, FieldRow):
+            row.focus_input()
+        return self
 
     def hold_refused(self) -> None:
         """The text was refused: select it whole, so that the next value typed replaces it
@@ -106,60 +116,33 @@ class EntryBox(Input):
         self.select_all()
         self._refused = True
 
-    def start_with(self, character: str) -> None:
-        """Replace the text with ``character`` (typed somewhere else, e.g. on the list of
-        steps), focus the box and go on typing after it (this focus selects nothing). Keys
-        of the same burst that arrive before the focus has moved here go on after it."""
-        self.value = self.value + character if self._starting else character
-        self.cursor_position = len(self.value)
-        self.select_on_focus = False
-        self._starting = True
-        self.focus()
+    def type_text(self, text: str) -> None:
+        """Text typed (a character) or pasted: it replaces what is selected, else goes in at
+        the cursor."""
+        self._refused = False
+        start, end = self.selection
+        self.replace(text, start, end)
 
-    @property
-    def starting(self) -> bool:
-        """Keys typed elsewhere are on their way here (:meth:`start_with`; not focused yet)."""
-        return self._starting
-
-    # Textual calls the handler of every class in the MRO: these run before Input's own.
-    async def on_key(self, event: events.Key) -> None:
-        """An editing key (Backspace, Ctrl+U, End, ...) acts here, in the order it was typed.
-        Left to Textual, it would go up to the app to find its binding while the characters
-        typed after it in the same burst went into the box first ('Ctrl+U 0,63' left the box
-        empty)."""
-        self.select_on_focus = True  # the next focus selects again
+    async def edit(self, key: str) -> bool:
+        """An editing key (Backspace, Ctrl+U, End, ...: Textual's Input's own keys, not
+        Enter) acts here; False: not one of them."""
+        action = EDITING_KEYS.get(key)
+        if action is None:
+            return False
         if self._refused:
             self._refused = False
-            if event.key in DESELECTING_KEYS:  # edit the refused text, from its end
+            if key in DESELECTING_KEYS:  # edit the refused text, from its end
                 self.cursor_position = len(self.value)
-        how = RESTORING_KEYS.get(event.key)
-        if how is not None:
-            row = next((a for a in self.ancestors if isinstance(a, FieldRow)), None)
-            if row is not None:
-                event.stop()
-                event.prevent_default()
-                row.restore(how)
-            return
-        action = EDITING_KEYS.get(event.key)
-        if action is not None:
-            event.stop()
-            event.prevent_default()
-            await self.run_action(action)
-
-    def on_focus(self, event: events.Focus) -> None:
-        self._starting = False
-
-    def on_blur(self, event: events.Blur) -> None:
-        self.select_on_focus = True
-        self._starting = False
-        self._refused = False
+        await self.run_action(action)
+        return True
 
 
 class FieldRow(Vertical):
-    """One entry. Enter or leaving the field posts :class:`FieldRow.Typed` (and the screen
-    takes what stands in it with :meth:`pending` before any key that leaves the step); a
-    choice field is a list to tick with the keys (arrows, Space or Enter) and posts
-    :class:`FieldRow.Chosen`. The screen answers with :meth:`show_result`.
+    """One entry. A text field is typed into through its form (:class:`FieldForm`), which
+    hands what stands in it to the lab on Enter or when it is left (:meth:`pending`,
+    :meth:`submitted`); a choice field is a list to tick with the keys (arrows, Space or
+    Enter) and posts :class:`FieldRow.Chosen`. The lab's verdict shows with
+    :meth:`show_result`.
 
     Typing never lands on the end of a value the group comes back to: focusing the box
     selects what it holds, so the next keys replace it (an arrow key or Home/End keeps it to
@@ -177,26 +160,6 @@ class FieldRow(Vertical):
         row: FieldRow
         key: str
         indices: tuple[int, ...]
-
-    @dataclass
-    class Restore(Message):
-        """Escape, Ctrl+Z or Ctrl+Y in the row (``how``). Escape has put back in the box the
-        text the lab holds: the screen drops a refused text the lab keeps over it, and its
-        refusal. Ctrl+Z: the group wants back the answer stored before the one in effect;
-        Ctrl+Y: the answer the last Ctrl+Z took back."""
-
-        row: FieldRow
-        key: str
-        how: Restoring = "undo"
-
-    @dataclass
-    class Typed(Message):
-        """The group typed ``text`` for ``key`` (``submitted``: with Enter, not by leaving)."""
-
-        row: FieldRow
-        key: str
-        text: str
-        submitted: bool = False
 
     def __init__(
         self,
@@ -284,16 +247,13 @@ class FieldRow(Vertical):
         return not typed.strip() and not (self._sent or "").strip()
 
     def focus_input(self, landing: bool = False) -> None:
-        """Focus the text box (what it holds selected: typing replaces it) or the list of
-        options at once, not after the messages already queued (keys of the same burst go
-        here), and scroll it into view once the layout has settled (``landing``: the step
-        was just shown, see :meth:`bring_into_view`)."""
-        for w in self.query(".field-input, .field-choice"):
-            self.screen.set_focus(w, scroll_visible=False)
-            if isinstance(w, Input):
-                w.select_all()
-            self.call_after_refresh(self.bring_into_view, landing)
-            return
+        """Make this row the one typing goes into (its text box: what it holds selected, so
+        typing replaces it) or focus its list of options, at once, not after the messages
+        already queued (keys of the same burst go here); scrolled into view once the layout
+        has settled (``landing``: the step was just shown, see :meth:`bring_into_view`)."""
+        form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
+        if form is not None:
+            form.focus_row(self, landing)
 
     def bring_into_view(self, landing: bool = False) -> None:
         """The row in view now, and once more when the layout has settled (wrapped answers
@@ -315,7 +275,7 @@ class FieldRow(Vertical):
                 step = next((a for a in self.ancestors if isinstance(a, ScrollableContainer)), None)
                 if step is not None:
                     step.scroll_to(y=0, animate=False, immediate=True)
-            if box is not None and screen.focused is box and not screen.can_view_entire(box):
+            if box is not None and box.has_focus and not screen.can_view_entire(box):
                 screen.scroll_to_center(box, animate=False, origin_visible=True, immediate=True)
             screen.scroll_to_widget(self, animate=False, immediate=True)
 
@@ -345,18 +305,14 @@ class FieldRow(Vertical):
         self.input.cursor_position = len(text)
         return text
 
-    def restore(self, how: Restoring = "held") -> None:
-        """Escape (``held``): the box shows again the text the lab holds (:attr:`held`),
-        whatever was typed over it and not confirmed, and the screen drops a refused text
-        (:class:`Restore`). Ctrl+Z (``undo``) / Ctrl+Y (``redo``): ask the screen for the
-        answer stored before the one in effect / the one Ctrl+Z took back."""
+    def restore(self) -> None:
+        """Escape: the box shows again the text the lab holds (:attr:`held`), whatever was
+        typed over it and not confirmed; nothing is stored."""
         if self.field.options or self._readonly:
             return
-        if how == "held":
-            box = self.input
-            box.value = self.held
-            box.cursor_position = len(box.value)
-        self.post_message(self.Restore(self, self.field.key, how))
+        box = self.input
+        box.value = self.held
+        box.cursor_position = len(box.value)
 
     def _choose(self, indices: tuple[int, ...]) -> None:
         if indices != self._chosen:
@@ -410,24 +366,298 @@ class FieldRow(Vertical):
             # and the arrows edit it by one character; and the whole refusal in view
             box = self.input
             box.hold_refused()
-            if self.screen.focused is box:
+            if box.has_focus:
                 self.call_after_refresh(self.bring_into_view)
 
-    def _send(self, submitted: bool = False) -> None:
-        text = self.input.value
-        if text == self._sent:
+
+Store = Callable[[FieldRow, str, bool], EntryView]
+"""Hands the lab what was typed in a row (``submitted``: with Enter, not by leaving it) and
+returns its verdict, at once (the lab screen's)."""
+
+
+class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
+    """A step's text, its panel and its entry rows, as one focus target that owns the keys
+    typed into the rows. It outlives the step (:meth:`~minseg_tui.ui.screens.lab.StepPane.show`
+    puts the next step's widgets in it), so every key of a burst is handled here, in the
+    order typed, whatever it does: a character or an editing key goes into the current row,
+    Enter hands the row to the lab (``store``, a plain call: the verdict is there before the
+    next key) and moves on if it was accepted, Tab and Shift+Tab move between the rows and
+    the step's other focusable widgets, and any other key runs its binding here, after what
+    was typed before it is stored and before the keys typed after it.
+
+    ``current`` is the row typing goes into (None: the step itself, at its top; the arrows
+    scroll it). Keys a focused widget of the step (a list of answers, a plot) passes up, and
+    characters typed on the list of steps (:meth:`take`), go into the first empty entry."""
+
+    BINDINGS = [
+        Binding("up", "scroll_up", show=False),
+        Binding("down", "scroll_down", show=False),
+        Binding("home", "scroll_home", show=False),
+        Binding("end", "scroll_end", show=False),
+    ]
+
+    current: reactive[FieldRow | None] = reactive(None, init=False)
+
+    def __init__(
+        self,
+        store: Store,
+        restore: Callable[[FieldRow, Restoring], None],
+        readonly: bool = False,
+        classes: str = "",
+    ) -> None:
+        super().__init__(classes=classes)
+        self._store = store
+        self._restore = restore
+        self.readonly = readonly
+        self._taking = False
+        """Set by :meth:`take` until the form handles a key of its own: characters typed
+        elsewhere are on their way into the current row."""
+        self.running = False
+        """A key's binding runs on the form's behalf (:meth:`_binding`): a priority binding
+        the app ran ahead of the form's queue leaves the key to the form unless this is
+        set (:class:`~minseg_tui.ui.screens.lab.LabScreen`'s PgDn/PgUp)."""
+
+    # -- rows ------------------------------------------------------------------------------
+    def rows(self) -> list[FieldRow]:
+        return list(self.query(FieldRow))
+
+    @property
+    def typing(self) -> FieldRow | None:
+        """The current row if the form has the focus and it is a text row (None: keys go to
+        the step, not into a box)."""
+        row = self.current
+        if row is None or not row.is_attached or row.field.options:
+            return None
+        return row if self.screen.focused is self else None
+
+    def watch_current(self, old: FieldRow | None, new: FieldRow | None) -> None:
+        for row, shown in ((old, False), (new, self.screen.focused is self)):
+            if row is not None and row.is_attached and not row.field.options:
+                row.input.show_current(shown)
+
+    def on_focus(self) -> None:
+        if self.current is not None and self.current.is_attached:
+            self.watch_current(None, self.current)
+
+    def on_blur(self) -> None:
+        """Leaving the form stores what stands in its current row (as leaving a field does)."""
+        self.store_pending()
+        if self.current is not None and self.current.is_attached:
+            self.watch_current(self.current, None)
+
+    def store_pending(self) -> None:
+        """Hand the lab what stands in the current row and was not handed yet."""
+        row = self.current
+        if row is None or not row.is_attached or row.field.options:
             return
-        self._sent = text
-        self.post_message(self.Typed(self, self.field.key, text, submitted))
+        text = row.pending()
+        if text is not None:
+            self._store(row, text, False)
 
-    @on(Input.Submitted)
-    def _submitted(self, event: Input.Submitted) -> None:
-        event.stop()
-        self._sent = None  # Enter always re-sends
-        self._send(submitted=True)
-        self.input.cursor_position = len(self.input.value)  # a digit typed next goes on after
+    def focus_row(self, row: FieldRow, landing: bool = False) -> None:
+        """Focus ``row``: typing goes into its box (what it holds selected, so typing
+        replaces it); its list of options has the focus itself. At once, not after the
+        messages already queued: keys of the same burst go here."""
+        if row.field.options:
+            self.store_pending()
+            for w in row.query(".field-choice"):
+                self.screen.set_focus(w, scroll_visible=False)
+        else:
+            if row is not self.current:
+                self.store_pending()
+            self.current = row
+            if self.screen.focused is not self:
+                self.screen.set_focus(self, scroll_visible=False)
+            self.watch_current(None, row)
+            row.input.select_all()
+        row.call_after_refresh(row.bring_into_view, landing)
 
-    @on(Input.Blurred)
-    def _blurred(self, event: Input.Blurred) -> None:
+    def focus_after(self, key: str) -> None:
+        """Focus the entry after field ``key`` (stays put on the last one)."""
+        rows = self.rows()
+        keys = [r.field.key for r in rows]
+        if key in keys and keys.index(key) + 1 < len(rows):
+            self.focus_row(rows[keys.index(key) + 1])
+
+    def typing_row(self) -> FieldRow | None:
+        """The entry keys typed outside the rows go into: the first empty text entry, else
+        the first (None: the step has none)."""
+        rows = [r for r in self.rows() if not r.field.options]
+        return next((r for r in rows if r.is_empty), rows[0] if rows else None)
+
+    def take(self, character: str) -> None:
+        """A character typed outside the rows (on the list of steps, a list of answers, the
+        step's text): it goes into :meth:`typing_row`, replacing what that holds, and the
+        keys after it go on there."""
+        if self.readonly:
+            return
+        row = self.current if self._taking else None
+        if row is None or not row.is_attached:
+            row = self.typing_row()
+            if row is None:
+                return
+            self.focus_row(row)
+            self._taking = True
+        row.input.type_text(character)
+        self.screen.scroll_to_widget(row, animate=False)
+
+    # -- focus moves ---------------------------------------------------------------------
+    def _targets(self) -> list[Widget]:
+        """Where Tab goes in the step, in order: its focusable widgets and its text rows."""
+        chain = set(self.screen.focus_chain)
+        return [
+            w
+            for w in self.walk_children(Widget)
+            if (isinstance(w, FieldRow) and not w.field.options) or (w in chain)
+        ]
+
+    def move_focus(self, delta: int, here: Widget | None = None) -> None:
+        """Tab (``delta`` 1) or Shift+Tab (-1) from ``here`` (None: the current row, or the
+        top of the step): the next target in the step, else the widget outside it that the
+        screen's order puts next."""
+        targets = self._targets()
+        if here is None:
+            here = self.current if self.current in targets else None
+        if here in targets:
+            k = targets.index(here) + delta
+        else:
+            k = 0 if delta > 0 else len(targets) - 1
+        if 0 <= k < len(targets):
+            target = targets[k]
+            if isinstance(target, FieldRow):
+                self.focus_row(target)
+            else:
+                self.store_pending()
+                self.screen.set_focus(target)
+            return
+        chain = self.screen.focus_chain
+        outside = [w for w in chain if w is not self and self not in w.ancestors]
+        if not outside:
+            if targets:
+                self.move_focus(delta, None)
+            return
+        mine = [k for k, w in enumerate(chain) if w is self or self in w.ancestors]
+        if delta > 0:
+            after = [w for w in outside if chain.index(w) > max(mine, default=-1)]
+            self.screen.set_focus((after or outside)[0])
+        else:
+            before = [w for w in outside if chain.index(w) < min(mine, default=len(chain))]
+            self.screen.set_focus((before or outside)[-1])
+
+    def enter(self, delta: int) -> None:
+        """The focus comes in from outside (Tab from the list of steps): the first target
+        of the step (the last with Shift+Tab)."""
+        self.current = None
+        self.move_focus(delta, None)
+
+    # -- keys ------------------------------------------------------------------------------
+    async def on_key(self, event: events.Key) -> None:
+        """Every key handed to the form, in the order typed (see the class)."""
+        focused = self.screen.focused
+        if focused is not self:
+            self._passed_on(event, focused)
+            return
+        self._taking = False
+        key = event.key
+        if key in ("tab", "shift+tab"):
+            self._own(event)
+            self.move_focus(1 if key == "tab" else -1)
+            return
+        row = self.typing
+        if row is not None:
+            if await self._edit(row, event):
+                self._own(event)
+            return
+        if event.is_printable and event.character and self.typing_row() is not None:
+            self._own(event)
+            self.take(event.character)
+            return
+        await self._binding(event)
+
+    async def _edit(self, row: FieldRow, event: events.Key) -> bool:
+        """A key typed into ``row``; False: not one the row takes (a binding's)."""
+        key = event.key
+        box = row.input
+        if key == "enter":
+            text = row.submitted()
+            if text is not None:
+                result = self._store(row, text, True)
+                if result.ok:  # accepted: on to the next entry at once
+                    self.focus_after(row.field.key)
+            return True
+        how = RESTORING_KEYS.get(key)
+        if how is not None:  # Escape, Ctrl+Z, Ctrl+Y: what the lab holds, or held before
+            if how == "held":
+                row.restore()
+            self._restore(row, how)
+            return True
+        if box.disabled:
+            return False
+        if await box.edit(key):
+            return True
+        if event.is_printable and event.character:
+            box.type_text(event.character)
+            return True
+        return await self._binding(event)
+
+    async def _binding(self, event: events.Key) -> bool:
+        """Run the key's binding (of the screen or the app; not the form's own) once what
+        stands in the current row is stored, and wait for it: the keys typed after it wait
+        in the form's queue. It runs on the app's queue, as Textual runs a binding (what it
+        posts goes up from there)."""
+        bound = self.screen.active_bindings.get(event.key)
+        if bound is None or bound.node is self or not bound.enabled:
+            return False
+        self._own(event)
+        self.store_pending()
+        done = asyncio.Event()
+
+        async def run() -> None:
+            self.running = True
+            try:
+                await self.app.run_action(bound.binding.action, bound.node)
+            finally:
+                self.running = False
+                done.set()
+
+        if self.app.call_later(run):
+            await done.wait()
+        return True
+
+    def _passed_on(self, event: events.Key, focused: Widget | None) -> None:
+        """A key the form did not get as the focused widget: passed up by a widget of the
+        step that has the focus (Tab moves on from it; a character goes into the first empty
+        entry, Space only mid-word: it ticks an answer), or handed to the form before a key
+        ahead of it moved the focus away (it goes where the focus is now)."""
+        inside = focused is not None and self in focused.ancestors
+        key = event.key
+        if inside and key in ("tab", "shift+tab"):
+            self._own(event)
+            self.move_focus(1 if key == "tab" else -1, focused)
+            return
+        if event.is_printable and event.character and (event.character != " " or self._taking):
+            if self.typing_row() is not None and not self.readonly:
+                self._own(event)
+                self.take(event.character)
+            return
+        if not inside and focused is not None:
+            self._own(event)
+            focused.post_message(events.Key(key, event.character))
+
+    def on_paste(self, event: events.Paste) -> None:
+        """Text pasted (its first line, as a text box takes it) goes where typing goes."""
+        text = event.text.splitlines()[0] if event.text else ""
+        row = self.typing
+        if row is None:
+            row = self.typing_row()
+            if row is None or self.readonly:
+                return
+            self.focus_row(row)
         event.stop()
-        self._send()
+        if text and not row.input.disabled:
+            row.input.type_text(text)
+
+    @staticmethod
+    def _own(event: events.Key) -> None:
+        event.stop()
+        event.prevent_default()
