@@ -491,7 +491,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         show_xlabel=not on_angle,
     )
     panels = [top_cu, bottom_cu]
-    angle_floor = r.gain.get("angle_floor")
+    angle_floor = r.gain.angle_floor
     if on_angle:  # the figure that leads: the angle shows what the speed's noise hides
         dt = np.diff(t, prepend=t[0] - (t[1] - t[0] if t.size > 1 else 0.0))[a:b]
         ang = [Line("first order", tt, np.cumsum((w - base) * dt), color="#d62728", dots=True)]
@@ -611,7 +611,7 @@ def _model_check_section(session: Session) -> Section | None:
         items.append(
             f"Extended model ({in_words(e.model)}): {_params(e.params, e.intervals)}; "
             f"{_num(e.rmse, 3)} rad/s rms (fit {_num(e.fit_percent, 3)} %), "
-            f"{_num(r.gain.get('rmse_reduction_percent'), 3)} % lower rms."
+            f"{_num(r.gain.rmse_reduction_percent, 3)} % lower rms."
         )
     details.blocks.append(items)
     head = (
@@ -620,7 +620,7 @@ def _model_check_section(session: Session) -> Section | None:
         f"extended model ({in_words(e.model)})" if named else "extended",
     )
     details.blocks.append(Table(head, _gain_rows(r)))
-    floor, noise, angle = (r.gain.get(k) for k in ("noise_floor", "noise", "angle_floor"))
+    floor, noise, angle = r.gain.noise_floor, r.gain.noise, r.gain.angle_floor
     if floor is not None or noise is not None:
         details.blocks.append(
             "The speed's noise: "
@@ -628,9 +628,7 @@ def _model_check_section(session: Session) -> Section | None:
                 x
                 for x in (
                     f"the encoder's floor {_num(floor, 3)} rad/s" if floor is not None else "",
-                    f"the scatter measured in the log {_num(noise, 3)} rad/s"
-                    if noise is not None
-                    else "",
+                    f"the scatter measured in the log {_num(noise, 3)} rad/s",
                     f"the angle itself is known to {_num(angle, 3)} rad"
                     if angle is not None
                     else "",

@@ -244,7 +244,7 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     assert where.startswith("Run ") and ", close-up " in where
     assert "whitened" not in first and "criterion" not in first and "coulomb" not in first
     assert "Likely cause: dry friction" in first and "constant braking torque" in first
-    base, ext = result.gain["baseline_angle_rms"], result.gain["extended_angle_rms"]
+    base, ext = result.gain.baseline_angle_rms, result.gain.extended_angle_rms
     assert f"from {base:.2g} rad to {ext:.2g} rad" in first
     # the step it speaks of is the one the close-up shows
     m = re.search(rf"drops from ({NUM}) V to 0 V at t = ({NUM}) s", first)

@@ -173,7 +173,7 @@ def check_figures(mc: ModelCheck) -> CheckFigures:
         model=r.extended.model,
         others=tuple(o.cause for o in r.finding.others),
         params={k: float(v) for k, v in r.extended.params.items()},
-        gain={k: None if v is None else float(v) for k, v in r.gain.items()},
+        gain={k: None if v is None else float(v) for k, v in r.gain.to_dict().items()},
     )
 
 

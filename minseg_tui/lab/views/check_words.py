@@ -22,44 +22,17 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import CheckResult
+from minseg_tui.model.check.effects import CANDIDATES
+from minseg_tui.model.check.figures import Gain
 from minseg_tui.quantities import format_value
 
 FloatArray = NDArray[np.float64]
 
-EVERYDAY: dict[str, str] = {
-    "coulomb_friction": (
-        "dry friction in the gearbox and the brushes: a constant braking torque, so the "
-        "wheel stops sooner than the model says (the model only knows a friction that "
-        "shrinks with the speed)"
-    ),
-    "dead_time": (
-        "a delay: the motor answers a little after the command, as if the voltage arrived late"
-    ),
-    "velocity_filter": (
-        "the speed you see is an average over several samples, which turns every jump into a ramp"
-    ),
-    "coast_on_zero": (
-        "at 0 V the driver lets the wheel spin freely instead of braking it, so it runs down "
-        "at its own pace, not at the pace of a braked motor"
-    ),
-    "second_pole": (
-        "the current needs time to build up in the motor's winding, so the speed starts "
-        "rising gently instead of at once"
-    ),
-    "current_limit": (
-        "the driver limits the current, so the wheel can only speed up so fast at first"
-    ),
-}
-"""Each cause the check can name, in the words of someone who has not met it yet."""
+EVERYDAY: dict[str, str] = {c.cause: c.everyday for c in CANDIDATES}
+"""Each cause the check can name, in the words of someone who has not met it yet (its
+``everyday`` in :data:`~minseg_tui.model.check.effects.CANDIDATES`)."""
 
-SHORT: dict[str, str] = {
-    "coulomb_friction": "dry friction",
-    "dead_time": "a delay",
-    "velocity_filter": "an averaged speed",
-    "coast_on_zero": "coasting at 0 V",
-    "second_pole": "a slow current build-up",
-    "current_limit": "a current limit",
-}
+SHORT: dict[str, str] = {c.cause: c.short for c in CANDIDATES}
 """Each cause in two or three words (for 'with ... added' and 'or ...')."""
 
 FIGURE_WORDS: dict[str, str] = {
@@ -79,10 +52,8 @@ FIGURE_UNITS: dict[str, str] = {
     "rmse": "rad/s",
 }
 
-SLOWER: dict[str, int] = {"coast_on_zero": -1}
-"""Which way each cause makes the first-order model miss in its close-up: +1 (the default)
-the measured wheel is slower than the model says (it stops sooner, starts later, rises
-more gently), -1 faster (it runs down more slowly)."""
+SLOWER: dict[str, int] = {c.cause: c.slower for c in CANDIDATES}
+"""Which way each cause makes the first-order model miss in its close-up (its ``slower``)."""
 
 MIN_STILL_ROWS = 3
 """A wheel stands still from a row on when it reads still there and in at least this many
@@ -131,11 +102,12 @@ def stem(key: str) -> str:
     return key.replace("baseline_", "").replace("extended_", "")
 
 
-def figure(gain: Mapping[str, float | None], key: str) -> tuple[float | None, float | None]:
+def figure(gain: Gain | Mapping[str, float | None], key: str) -> tuple[float | None, float | None]:
     """The first-order and the extended model's value of gain figure ``key`` (either
     model's key, or its :func:`stem`): the keys are 'baseline_<stem>' and 'extended_<stem>',
     or 'heldout_baseline_rmse' and 'heldout_extended_rmse'. None where the log does not give
-    it."""
+    it. ``gain``: the check's record, or its JSON as a session keeps it."""
+    g = gain.to_dict() if isinstance(gain, Gain) else gain
     s = stem(key)
     for b, e in (
         (f"baseline_{s}", f"extended_{s}"),
@@ -144,8 +116,8 @@ def figure(gain: Mapping[str, float | None], key: str) -> tuple[float | None, fl
             s.replace("heldout_", "heldout_extended_", 1),
         ),
     ):
-        if b in gain or e in gain:
-            return gain.get(b), gain.get(e)
+        if b in g or e in g:
+            return g.get(b), g.get(e)
     return None, None
 
 

@@ -34,6 +34,7 @@ from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.identify.rises import E63
 from minseg_tui.model.runlog import RunLog
@@ -775,7 +776,7 @@ class CheckView:
 _stem = check_words.stem
 
 
-def _figure(gain: Mapping[str, float | None], key: str, named: bool) -> str | None:
+def _figure(gain: Gain, key: str, named: bool) -> str | None:
     """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)

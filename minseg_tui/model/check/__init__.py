@@ -11,8 +11,10 @@ Modules, in the order the check uses them:
 - sampling: how the log was sampled (speed over the real interval or the nominal period,
   jitter or lost samples, the speed's resolution and noise floor, counts or a smooth signal);
 - simulate: the model and its effects in closed form per mode on a piecewise-constant input;
-- effects: the causes as data (names, parameters, what they mean, their search ranges);
-- guess: where each cause's search starts, read off the log;
+- effects: the causes, each whole in one entry of one list (names, parameter, search range,
+  starts, what a log needs to show it, its evidence sentence and its words for people, and
+  its own simulation piece when it acts on the input);
+- guess: what the starts are read off the log with;
 - fit: whitened least squares (K solved linearly), any set of causes jointly (by
   :mod:`minseg_tui.model.optimize`, the search identify uses too), 95 % intervals;
 - decide: the criterion with a margin, causes added and dropped one at a time;
@@ -25,8 +27,9 @@ Modules, in the order the check uses them:
 - pipeline: :func:`check`, from start to end.
 """
 
+from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.check.pipeline import check
 from minseg_tui.model.check.result import CheckResult
 from minseg_tui.model.check.text import text
 
-__all__ = ["CheckResult", "check", "text"]
+__all__ = ["CheckResult", "Gain", "check", "text"]

@@ -39,10 +39,9 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from minseg_tui.model.check.deviations import regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range, excluded, starts
 from minseg_tui.model.check.figures import systematic
 from minseg_tui.model.check.fit import T_BOUNDS, Fit, Problem, fit_causes, values_of
-from minseg_tui.model.check.guess import starts
 from minseg_tui.model.check.sampling import scatter
 
 MIN_REDUCTION = 0.25
@@ -115,7 +114,7 @@ def on_bound(f: Fit, cause: str, rng: dict[str, Range]) -> str | None:
     null = BY_CAUSE[cause].null
     if x >= hi - tol and not math.isinf(null):
         return "upper"
-    if x <= lo + tol and null != r.lo and not (cause == "second_pole"):
+    if x <= lo + tol and null != r.lo:
         return "lower"
     return None
 
@@ -312,6 +311,8 @@ def without(f: Fit, cause: str) -> Fit:
         fx = replace(fx, T2=0.0, pole_measured=False)
     elif cause == "current_limit":
         fx = replace(fx, rate=math.inf, drag=0.0, cap_both=False)
+    else:  # a cause with its own simulation piece (Candidate.drive)
+        fx = replace(fx, extra=tuple(x for x in fx.extra if x.cause != cause))
     return replace(f, effects=fx)
 
 
@@ -345,7 +346,7 @@ def select(
             break  # a pair that leaves only noise needs no third cause
         tries: dict[str, Fit] = {}
         for c in names:
-            if c in chosen:
+            if c in chosen or excluded(c, chosen):
                 continue
             if not chosen:
                 tries[c] = singles[c]
@@ -406,6 +407,7 @@ def select(
         for x in names:
             if (
                 x in chosen
+                or excluded(x, rest)
                 or not sel.verdicts[x].clear
                 or singles[x].sse_white > SWAP_RATIO * singles[first].sse_white
             ):

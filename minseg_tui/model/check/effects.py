@@ -1,29 +1,104 @@
-"""The causes the model check can name, as data.
+"""The causes the model check can name: each one's every piece, registered in one list.
 
 Each cause is one effect with one parameter on top of the first-order model
-T w' = -w + K u; several can act at once (their simulation is :mod:`.simulate`). The
-names and the parameter names are the JSON contract. The search range of a parameter
-depends on the log (its steps, levels and time constant) and is worked out by
-:func:`ranges`.
+T w' = -w + K u; several can act at once. A :class:`Candidate` holds all of one cause: its
+contract names (the cause and its parameter: the JSON contract, never renamed), the
+:class:`~.simulate.Effects` field it sets and the value at which it is absent, its search
+range on a log (worked out from the log's steps, levels and time constant), where the
+search starts, what a log needs to show it, the sentence of its evidence, and its words for
+people. :data:`CANDIDATES` is the list; nothing else lists the causes.
+
+Six causes are modes of the motor, coupled to each other, and simulated together in closed
+form by :mod:`.simulate` (their ``field``). A cause that acts on the input can bring its own
+simulation piece instead, ``drive`` (:class:`~.simulate.Extra`), and needs no other module.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.check.simulate import Effects
+from minseg_tui.model.check import evidence as ev
+from minseg_tui.model.check.guess import first_motion, levels_offset, rises, steepest_rate
+from minseg_tui.model.check.simulate import Drive, Effects, Extra
+
+if TYPE_CHECKING:
+    from minseg_tui.model.check.fit import Fit
 
 FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
+class Range:
+    """Search range of one cause's Effects field on this log (lo, hi), and its scale."""
+
+    lo: float
+    hi: float
+    log_scale: bool
+
+
+@dataclass(frozen=True)
+class Shape:
+    """What the search ranges are worked out from, read off one log: the nominal period ts
+    (s), the first-order time constant T (s), the smallest level driven at u_min (V), the
+    shortest and longest stretch of constant input that follows a step (s; the last one may
+    be cut short and does not count), the longest in rows, the largest step (V), and the
+    largest |u| (V)."""
+
+    ts: float
+    T: float
+    u_min: float
+    shortest: float
+    longest: float
+    rows_long: int
+    jump: float
+    u_top: float
+
+
+@dataclass(frozen=True)
+class Seen:
+    """What the starts of a search are read off: the log (t in s, u in V, y the measured
+    speed in rad/s), its nominal period ts (s), the model's T (s) and K (rad/s/V), the
+    speed's scatter (rad/s) and the cause's search range."""
+
+    t: FloatArray
+    u: FloatArray
+    y: FloatArray
+    ts: float
+    T: float
+    K: float
+    noise: float
+    rng: Range
+
+
+Words = Callable[[ev.Log, "Fit", float | None], str]
+"""The sentence of a cause's evidence in one log: (the log, the fit that holds the cause,
+the speed's noise floor in rad/s when known) -> words, every number read off the log."""
+
+
+@dataclass(frozen=True)
 class Candidate:
-    """One cause: contract name, its parameter (contract name, unit), the field of
-    :class:`Effects` it sets, the value at which it is absent, and what it is."""
+    """One cause, every piece of it.
+
+    cause / param / unit: contract names (the cause, its parameter) and the parameter's
+    unit; field: the :class:`Effects` field it sets (K = 1 units: V, s, V/s); null: the
+    value at which it is absent (0, 1 or infinity); meaning: one sentence of what it is;
+    log_scale: searched on a log scale; label: a few words for people; everyday: what a
+    student who has not met it is told; short: two or three words ('with ... added').
+
+    range: its search range on a log; starts: the start values of its field; needs: what
+    a log must hold to show it (None: every log); words: the sentence of its evidence;
+    scale: the unit of a linear search axis, 'V' (the log's largest |u|) or 's' (ts);
+    reported: the contract parameter from the field and K (default: the field itself);
+    nonlinear: the wheel stops, coasts or is capped (an extra pole on the drive and one on
+    the measurement differ then); stop: the step-downs that show it (the close-up and its
+    evidence speak of the fastest; None: it is shown at a rise); drive: see below.
+    """
 
     cause: str
     param: str
@@ -31,72 +106,449 @@ class Candidate:
     field: str
     null: float
     meaning: str
+    range: Callable[[Shape], Range]
+    starts: Callable[[Seen], list[float]]
+    words: Words
     log_scale: bool = False
     label: str = ""
-    """The cause in a few words for people (the contract name is for programs)."""
+    everyday: str = ""
+    short: str = ""
+    needs: ev.Needs | None = None
+    scale: str = "s"
+    reported: Callable[[float, float], float] = lambda value, K: value
+    nonlinear: bool = False
+    stop: Callable[[ev.Stop], bool] | None = None
+    slower: int = 1
+    """Which way it makes the first-order model miss in its close-up: +1 the measured wheel
+    is slower than the model says (it stops sooner, starts later, rises more gently), -1
+    faster (it runs down more slowly)."""
+    excludes: frozenset[str] = frozenset()
+    """Causes one model never holds beside this one: causes the log tells apart by one
+    feature only, which the check does not follow closely enough on a real motor to share
+    one effect between them (a fit of both would split one effect in two)."""
+    drive: Drive | None = None
+    """Its own simulation piece, for a cause that acts on the input (then ``field`` is
+    empty): the levels the motor gets from the levels in force and the parameter."""
+
+
+# -- the causes ---------------------------------------------------------------------------
+
+
+def _friction_starts(s: Seen) -> list[float]:
+    vals = [s.rng.hi * f for f in (0.05, 0.15, 0.35, 0.6)]
+    off = levels_offset(s.u, s.y, s.T, s.ts)
+    if off is not None and 0 < off < s.rng.hi:
+        vals.append(off)
+    return vals
+
+
+def coulomb_words(log: ev.Log, ext: Fit) -> str:
+    uc = ext.params["u_c"]
+    shown = ev.shown_stop(log, ev.stands_still)
+    coast = "coast_on_zero" in ext.causes
+    if shown is not None:
+        s = shown
+        after = s.after if s.after is not None else 0.0
+        k = int(np.searchsorted(log.t, log.t[s.row] + after))
+        k = min(k, log.t.size - 1)
+        left = abs(float(log.base_pred[k]))
+        how = "coasts and " if coast else ""
+        text = (
+            f"after the drive drops at t = {log.t[s.row]:.3f} s the wheel {how}stands still "
+            f"{ev.ms(after)} later (measured, from {abs(s.speed):.3g} rad/s, its mean over the "
+            f"{ev.ms(ev.before_s(log, s))} before the drop)"
+        )
+        if left > max(log.zero, 2.0 * log.noise):
+            text += f", where the first-order model still turns at {left:.2f} rad/s"
+        return text + f": dry friction stops a wheel in finite time (u_c = {uc:.3g} V)"
+    off = levels_offset(log.u, log.y, ext.T, log.ts)
+    text = (
+        "the settled speeds are not proportional to the voltage"
+        + (f": a straight line through them meets zero speed at {off:.2f} V" if off else "")
+        + f"; dry friction with u_c = {uc:.3g} V does that (a voltage lost in the brushes or "
+        "the driver looks the same in steady state)"
+    )
+    if not ev.falls(log):
+        text += "; the log has no step-down, so a finite stop cannot be seen"
+    return text
+
+
+COULOMB_FRICTION = Candidate(
+    "coulomb_friction",
+    "u_c",
+    "V",
+    "u_c",
+    0.0,
+    "dry friction: the motor needs u_c volts to break away, and a wheel left to itself stops "
+    "in finite time",
+    range=lambda s: Range(0.0, 0.98 * s.u_min, False),
+    starts=_friction_starts,
+    words=lambda log, f, floor: coulomb_words(log, f),
+    label="dry friction",
+    everyday=(
+        "dry friction in the gearbox and the brushes: a constant braking torque, so the "
+        "wheel stops sooner than the model says (the model only knows a friction that "
+        "shrinks with the speed)"
+    ),
+    short="dry friction",
+    needs=ev.NEEDS_TWO_LEVELS,
+    scale="V",
+    nonlinear=True,
+    stop=ev.stands_still,
+)
+
+
+def _delay_starts(s: Seen) -> list[float]:
+    lags = first_motion(s.t, s.u, s.y, s.noise)
+    vals = [f * s.ts for f in (0.5, 1.0, 2.0)] + [0.5 * s.T]
+    if lags:
+        lag = float(np.median(lags))
+        vals += [max(lag - 1.5 * s.ts, 0.0), max(lag - s.ts - 0.3 * s.T, 0.0)]
+    return vals
+
+
+def dead_time_words(log: ev.Log, ext: Fit) -> str:
+    d = ext.params["delay"]
+    lags = first_motion(log.t, log.u, log.y, log.noise)
+    seen = (
+        f"after the step{'s' if len(lags) > 1 else ''} the measured speed first moves "
+        f"{ev.ms(float(np.median(lags)))} later"
+        if lags
+        else "the response starts late"
+    )
+    return (
+        f"{seen}: a first-order response that starts {ev.ms(d)} after the command fits "
+        f"(a pure delay; an extra pole would start at once, only more slowly)"
+    )
+
+
+DEAD_TIME = Candidate(
+    "dead_time",
+    "delay",
+    "s",
+    "delay",
+    0.0,
+    "a pure delay between command and motor",
+    range=lambda s: Range(0.0, max(0.8 * s.shortest, 3.0 * s.ts), False),
+    starts=_delay_starts,
+    words=lambda log, f, floor: dead_time_words(log, f),
+    label="dead time",
+    everyday=(
+        "a delay: the motor answers a little after the command, as if the voltage arrived late"
+    ),
+    short="a delay",
+    needs=ev.NEEDS_RISE,
+)
+
+
+def filter_words(log: ev.Log, ext: Fit, floor: float | None) -> str:
+    n = int(ext.params["taps"])
+    edges = int(np.count_nonzero(np.diff(log.u)))
+    which = "every edge becomes" if edges > 1 else "the step becomes"
+    ramp = f"{which} a ramp about {n} samples ({ev.ms(n * log.ts)}) long"
+    if log.smooth:
+        return (
+            f"{'the rises are' if edges > 1 else 'the rise is'} smoothed as an average of the "
+            f"speed over {n} samples ({ev.ms(n * log.ts)}) would smooth it; an extra pole in the "
+            "motor would look alike in this smooth signal"
+        )
+    if floor is not None:
+        return (
+            f"the speed scatters only {log.noise:.3g} rad/s where one count per sample alone "
+            f"gives a noise floor of {floor:.3g} rad/s, and {ramp}: the speed is an average "
+            f"over {n} samples, which divides the encoder noise by {n}"
+        )
+    if log.step is not None:
+        return (
+            f"the speed's values come in steps of only {log.step:.3g} rad/s and it scatters "
+            f"{log.noise:.3g} rad/s, and {ramp}: the speed is an average over {n} samples"
+        )
+    return f"{ramp}: the speed looks averaged over {n} samples"
+
+
+VELOCITY_FILTER = Candidate(
+    "velocity_filter",
+    "taps",
+    "samples",
+    "taps",
+    1.0,
+    "the measured speed is a moving average of the Euler velocity over N samples",
+    # an average longer than a short stretch still shows, as a ramp cut off by the next step
+    range=lambda s: Range(1.0, float(min(40, s.rows_long)), False),
+    starts=lambda s: [1.0],
+    words=filter_words,
+    label="averaged speed (velocity filter)",
+    everyday=(
+        "the speed you see is an average over several samples, which turns every jump into a ramp"
+    ),
+    short="an averaged speed",
+    needs=ev.NEEDS_RISE,
+)
+
+
+def coast_words(log: ev.Log, ext: Fit) -> str:
+    tc = ext.params["T_coast"]
+    s = ev.shown_stop(log, ev.drops_to_zero)
+    if s is None:
+        return f"the wheel runs down slowly at zero command (time constant {tc:.3g} s)"
+    decel, span = _fall_rate(log, s)
+    a, w0 = s.row, abs(s.speed)
+    return (
+        f"right after the command drops to 0 at t = {log.t[a]:.3f} s the speed falls at "
+        f"{decel:.3g} rad/s^2 (a line through the speed from the row before the drop to the "
+        f"first reading under half, {ev.ms(span - float(log.t[a] - log.t[a - 1]))} after the "
+        f"drop), where a braked motor (T = "
+        f"{ev.ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
+        f"wheel coast, with a time constant of {tc:.3g} s at zero command"
+    )
+
+
+FALL_TO = 0.5
+"""The share of the speed before a step-down that the fall rate is measured down to: far
+enough that one-count readings (20 % of a slow wheel's speed) do not set the rate."""
+
+
+def _fall_rate(log: ev.Log, s: ev.Stop) -> tuple[float, float]:
+    """How fast the speed falls after the step-down ``s`` (rad/s^2, the slope of a straight
+    line through the speed before it and the readings until the first under FALL_TO of it,
+    40 at most) and the span that covers (s, from the row before the step)."""
+    a, w0 = s.row, abs(s.speed)
+    seg = np.abs(log.y[a : a + 40])
+    below = np.flatnonzero(seg < FALL_TO * w0)
+    n = min(max(int(below[0]) + 1 if below.size else seg.size, 2), seg.size)
+    tt = log.t[a - 1 : a + n] - log.t[a - 1]
+    slope = float(np.polyfit(tt, np.concatenate(([w0], seg[:n])), 1)[0]) if tt[-1] > 0 else 0.0
+    return -slope, float(tt[-1])
+
+
+COAST_ON_ZERO = Candidate(
+    "coast_on_zero",
+    "T_coast",
+    "s",
+    "T_coast",
+    math.inf,
+    "at zero command the bridge is open and the wheel coasts with its own time constant",
+    range=lambda s: Range(max(0.5 * s.T, 0.002), 30.0, True),
+    starts=lambda s: [s.T * f for f in (1.5, 3.0, 8.0)] + [1.0, 5.0],
+    words=lambda log, f, floor: coast_words(log, f),
+    log_scale=True,
+    label="coasting at zero command",
+    everyday=(
+        "at 0 V the driver lets the wheel spin freely instead of braking it, so it runs down "
+        "at its own pace, not at the pace of a braked motor"
+    ),
+    short="coasting at 0 V",
+    needs=ev.NEEDS_DROP_TO_ZERO,
+    nonlinear=True,
+    stop=ev.drops_to_zero,
+    slower=-1,
+)
+
+
+def pole_words(log: ev.Log, ext: Fit) -> str:
+    t2 = ext.params["T2"]
+    w = max(2, int(math.ceil(max(t2, ext.T / 2) / log.ts)))
+    got, model = [], []
+    for a, b in rises(log.u):
+        if b - a <= w:
+            continue
+        got.append(abs(float(log.y[a + w - 1] - log.y[a - 1])))
+        model.append(abs(float(log.base_pred[a + w - 1] - log.base_pred[a - 1])))
+    text = "each rise starts with zero slope (an S-shaped start)"
+    if log.smooth:
+        text += " (in this smooth signal an average of the speed would look alike)"
+    if got:
+        text += (
+            f": {ev.ms(w * log.ts)} after the step the speed has risen {np.median(got):.3g} rad/s "
+            f"where the first-order model rises {np.median(model):.3g} rad/s"
+        )
+    if ext.effects.pole_measured:
+        where = [
+            w
+            for c, w in (
+                ("coulomb_friction", "the wheel stops"),
+                ("coast_on_zero", "it coasts"),
+                ("current_limit", "the cap holds"),
+            )
+            if c in ext.causes
+        ]
+        return text + (
+            f"; an extra pole of {ev.ms(t2)} on the measurement (a compliant coupling to the "
+            "encoder, or a first-order filter of the speed) lags what the encoder reads: on "
+            f"the drive it fits worse where {' and where '.join(where) or 'the effects act'} "
+            "(a pure delay would show a corner)"
+        )
+    return (
+        text
+        + f"; an extra pole of {ev.ms(t2)} delays the torque (a pure delay would show a corner)"
+    )
+
+
+SECOND_POLE = Candidate(
+    "second_pole",
+    "T2",
+    "s",
+    "T2",
+    0.0,
+    "an extra pole delays the torque (the armature's L/R, a driver's own lag) or lags the "
+    "reading (a compliant coupling to the encoder, a first-order filter of the speed)",
+    range=lambda s: Range(0.0, 3.0 * s.T, False),
+    starts=lambda s: [s.T * f for f in (0.1, 0.25, 0.5, 0.9)],
+    words=lambda log, f, floor: pole_words(log, f),
+    label="second pole",
+    everyday=(
+        "the current needs time to build up in the motor's winding, so the speed starts "
+        "rising gently instead of at once"
+    ),
+    short="a slow current build-up",
+    needs=ev.NEEDS_RISE,
+)
+
+
+def limit_words(log: ev.Log, ext: Fit) -> str:
+    a = ext.params["a_max"]
+    r = steepest_rate(log.t, log.u, log.y, 1.0)
+    seen = f"the speed ramps at about {r:.3g} rad/s^2" if r else "the speed ramps"
+    ups = rises(log.u)
+    top = ""
+    if ups:
+        k, _ = ups[0]
+        jump = abs(float(log.u[k] - log.u[k - 1]))
+        top = (
+            f"; the same motor without a cap would start at K u/T = "
+            f"{abs(ext.K) * jump / ext.T:.3g} rad/s^2, steepest at once"
+        )
+    both = (
+        " both ways (braking after a step down is capped too: the speed falls along a ramp "
+        "as well, which a cap on accelerating alone does not fit as well)"
+        if ext.effects.cap_both
+        else ""
+    )
+    return (
+        f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
+        f"into the plateau{top}: the drive caps the current{both}, a_max = {a:.3g} rad/s^2"
+    )
+
+
+def _cap_range(s: Shape) -> Range:
+    hi = s.jump / (0.1 * s.T)  # beyond, the cap never holds
+    return Range(hi / 1000.0, hi, True)
+
+
+def _cap_starts(s: Seen) -> list[float]:
+    vals = [s.rng.hi * f for f in (0.01, 0.025, 0.045, 0.07, 0.1)]
+    r = steepest_rate(s.t, s.u, s.y, s.K)
+    if r is not None:
+        vals += [0.8 * r, r, 1.25 * r]
+    return vals
+
+
+CURRENT_LIMIT = Candidate(
+    "current_limit",
+    "a_max",
+    "rad/s^2",
+    "rate",
+    math.inf,
+    "the drive caps the current, so the speed ramps at a_max (less what the wheel's own "
+    "drag takes as it speeds up) until the back-EMF takes over (on some drives braking "
+    "after a step down is capped too)",
+    range=_cap_range,
+    starts=_cap_starts,
+    words=lambda log, f, floor: limit_words(log, f),
+    log_scale=True,
+    label="current limit",
+    everyday="the driver limits the current, so the wheel can only speed up so fast at first",
+    short="a current limit",
+    needs=ev.NEEDS_RISE,
+    reported=lambda value, K: abs(K) * value,  # a_max = |K| rate
+    nonlinear=True,
+)
+
+
+def _lost(u: FloatArray, u_d: float) -> FloatArray:
+    """The driver's loss: |u| less u_d (V) while it drives, nothing below; 0 stays 0."""
+    out: FloatArray = np.sign(u) * np.maximum(np.abs(u) - u_d, 0.0)
+    return out
+
+
+def _loss_words(log: ev.Log, f: Fit, floor: float | None) -> str:
+    ud = f.params["u_d"]
+    off = levels_offset(log.u, log.y, f.T, log.ts)
+    text = (
+        "the settled speeds are not proportional to the voltage"
+        + (f": a straight line through them meets zero speed at {off:.2f} V" if off else "")
+        + f", and a voltage lost on the way, u_d = {ud:.3g} V, does that"
+    )
+    s = ev.shown_stop(log, ev.drops_to_zero)
+    if s is None:
+        return text
+    w0 = abs(s.speed)
+    # dry friction of the same volts stops the wheel T ln(1 + w0 / (|K| u_d)) after the drop
+    friction = f.T * math.log(1.0 + w0 / max(abs(f.K) * ud, 1e-12))
+    later = np.flatnonzero(log.u[s.row :] != log.u[s.row])
+    last = s.row + int(later[0]) - 1 if later.size else log.u.size - 1
+    span = float(log.t[last] - log.t[s.row])
+    ran = (
+        f"stands still {ev.ms(s.after)} later (measured, from {w0:.3g} rad/s)"
+        if s.after is not None
+        else f"still turns {ev.ms(span)} later (measured, from {w0:.3g} rad/s)"
+    )
+    return (
+        text + f"; yet after the command drops to 0 at t = {log.t[s.row]:.3f} s the wheel {ran}, "
+        f"where dry friction of {ud:.3g} V would stop it after {ev.ms(friction)}: the volts are "
+        "lost before the motor, in the driver, while it drives (the log's u is the voltage "
+        "asked for, not the u_A the motor gets)"
+    )
+
+
+def _has_loss_log(log: ev.Log) -> bool:
+    levels = {round(abs(float(v)), 9) for v in log.u if v != 0}
+    return len(levels) >= 2 and ev.NEEDS_DROP_TO_ZERO.has(log)
+
+
+DRIVER_LOSS = Candidate(
+    "driver_loss",
+    "u_d",
+    "V",
+    "",
+    0.0,
+    "the driver loses u_d volts while it drives (the motor gets |u| - u_d, nothing below), "
+    "and at zero command it brakes: the log's u is the voltage asked for, not the applied u_A",
+    range=lambda s: Range(0.0, 0.98 * s.u_min, False),
+    starts=_friction_starts,
+    words=_loss_words,
+    label="voltage lost in the driver",
+    everyday=(
+        "the motor gets less voltage than the log says: the driver chip loses some volts on "
+        "the way (the log holds the voltage asked for, not the one measured at the motor)"
+    ),
+    short="a voltage lost in the driver",
+    needs=ev.Needs(
+        3,
+        "the log needs two driven levels and a drop to zero while the wheel turns (with one "
+        "level a lost voltage is a smaller gain; without the drop, it is dry friction)",
+        _has_loss_log,
+    ),
+    scale="V",
+    stop=ev.drops_to_zero,
+    drive=_lost,
+    # dry friction takes the same volts off every level; only the stop after a drop to zero
+    # tells the two apart, and with both in one model the fit split the independent
+    # generator's friction (tuning seed 0: 1.53 V) into 1.20 V of friction and 0.31 V lost.
+    # So a model holds one of them; where both act, the larger is named with their sum (as
+    # before this cause was added)
+    excludes=frozenset({"coulomb_friction"}),
+)
 
 
 CANDIDATES: tuple[Candidate, ...] = (
-    Candidate(
-        "coulomb_friction",
-        "u_c",
-        "V",
-        "u_c",
-        0.0,
-        "dry friction: the motor needs u_c volts to break away, and a wheel left to itself stops "
-        "in finite time",
-        label="dry friction",
-    ),
-    Candidate(
-        "dead_time",
-        "delay",
-        "s",
-        "delay",
-        0.0,
-        "a pure delay between command and motor",
-        label="dead time",
-    ),
-    Candidate(
-        "velocity_filter",
-        "taps",
-        "samples",
-        "taps",
-        1.0,
-        "the measured speed is a moving average of the Euler velocity over N samples",
-        label="averaged speed (velocity filter)",
-    ),
-    Candidate(
-        "coast_on_zero",
-        "T_coast",
-        "s",
-        "T_coast",
-        math.inf,
-        "at zero command the bridge is open and the wheel coasts with its own time constant",
-        log_scale=True,
-        label="coasting at zero command",
-    ),
-    Candidate(
-        "second_pole",
-        "T2",
-        "s",
-        "T2",
-        0.0,
-        "an extra pole delays the torque (the armature's L/R, a driver's own lag) or lags the "
-        "reading (a compliant coupling to the encoder, a first-order filter of the speed)",
-        label="second pole",
-    ),
-    Candidate(
-        "current_limit",
-        "a_max",
-        "rad/s^2",
-        "rate",
-        math.inf,
-        "the drive caps the current, so the speed ramps at a_max (less what the wheel's own "
-        "drag takes as it speeds up) until the back-EMF takes over (on some drives braking "
-        "after a step down is capped too)",
-        log_scale=True,
-        label="current limit",
-    ),
+    COULOMB_FRICTION,
+    DEAD_TIME,
+    VELOCITY_FILTER,
+    COAST_ON_ZERO,
+    SECOND_POLE,
+    CURRENT_LIMIT,
+    DRIVER_LOSS,
 )
 """Every cause besides ``none``, in the order they are tried."""
 
@@ -119,45 +571,48 @@ UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in C
 
 
 def effects_of(values: dict[str, float]) -> Effects:
-    """Effects from {cause: value of its Effects field} (taps rounded)."""
+    """Effects from {cause: value of its Effects field} (taps rounded); a cause with its
+    own piece goes into ``extra``."""
     kw: dict[str, float | int] = {}
+    extra: list[Extra] = []
     for cause, value in values.items():
-        f = BY_CAUSE[cause].field
-        kw[f] = int(round(value)) if f == "taps" else float(value)
-    return Effects(**kw)  # type: ignore[arg-type]
+        c = BY_CAUSE[cause]
+        if c.drive is not None:
+            extra.append(Extra(cause, float(value), c.drive))
+            continue
+        kw[c.field] = int(round(value)) if c.field == "taps" else float(value)
+    return Effects(**kw, extra=tuple(extra))  # type: ignore[arg-type]
 
 
 def field_value(fx: Effects, cause: str) -> float:
     """The value of the Effects field behind ``cause`` (the null value when absent)."""
-    v = getattr(fx, BY_CAUSE[cause].field)
-    return BY_CAUSE[cause].null if v is None else float(v)
+    c = BY_CAUSE[cause]
+    if c.drive is not None:
+        return next((x.value for x in fx.extra if x.cause == cause), c.null)
+    v = getattr(fx, c.field)
+    return c.null if v is None else float(v)
 
 
 def reported(cause: str, value: float, K: float) -> float:
-    """The contract parameter of ``cause`` from its Effects field: a_max = |K| rate (rad/s^2);
-    the others are the field itself."""
-    return abs(K) * value if cause == "current_limit" else value
+    """The contract parameter of ``cause`` (its unit) from its Effects field (K = 1 units)
+    and K (rad/s/V)."""
+    return BY_CAUSE[cause].reported(value, K)
 
 
-@dataclass(frozen=True)
-class Range:
-    """Search range of one cause's Effects field on this log (lo, hi), and its scale."""
-
-    lo: float
-    hi: float
-    log_scale: bool
+def excluded(cause: str, others: tuple[str, ...]) -> bool:
+    """``cause`` may not join a model holding ``others`` (:attr:`Candidate.excludes`, either
+    way)."""
+    mine = BY_CAUSE[cause].excludes
+    return any(o in mine or cause in BY_CAUSE[o].excludes for o in others)
 
 
-def ranges(t: FloatArray, u: FloatArray, ts: float, T: float) -> dict[str, Range]:
-    """The search range of every cause on this log: u (V) at t (s), nominal period ts (s),
-    first-order time constant T (s).
+NONLINEAR = frozenset(c.cause for c in CANDIDATES if c.nonlinear)
+"""Causes after which an extra pole on the drive and one on the measurement differ."""
 
-    u_c: up to the smallest level the log drives at; delay: up to 0.8 of the shortest stretch
-    of constant input that follows a step; taps: up to 40 and the longest such stretch (an
-    average longer than a short stretch still shows, as a ramp cut off by the next step); T_coast:
-    from T to 30 s; T2: up to 3 T; rate (V/s): from 1/1000 of the largest step over T/10
-    (beyond, the cap never holds).
-    """
+
+def shape(t: FloatArray, u: FloatArray, ts: float, T: float) -> Shape:
+    """What the search ranges of a log are worked out from: u (V) at t (s), nominal period
+    ts (s), first-order time constant T (s)."""
     levels = np.abs(u[u != 0])
     u_min = float(np.min(levels)) if levels.size else 1.0
     change = np.flatnonzero(np.diff(u) != 0) + 1
@@ -169,13 +624,35 @@ def ranges(t: FloatArray, u: FloatArray, ts: float, T: float) -> dict[str, Range
     longest = max(inner) if inner else float(t[-1] - t[0])
     rows_long = max(2, int(round(longest / ts)))
     jump = float(np.max(np.abs(np.diff(u)))) if u.size > 1 else 1.0
-    jump = max(jump, float(np.max(np.abs(u))), 1e-9)
-    rate_hi = jump / (0.1 * T)
-    return {
-        "coulomb_friction": Range(0.0, 0.98 * u_min, False),
-        "dead_time": Range(0.0, max(0.8 * shortest, 3.0 * ts), False),
-        "velocity_filter": Range(1.0, float(min(40, rows_long)), False),
-        "coast_on_zero": Range(max(0.5 * T, 0.002), 30.0, True),
-        "second_pole": Range(0.0, 3.0 * T, False),
-        "current_limit": Range(rate_hi / 1000.0, rate_hi, True),
-    }
+    top = float(np.max(np.abs(u))) if u.size else 0.0
+    jump = max(jump, top, 1e-9)
+    return Shape(ts, T, u_min, shortest, longest, rows_long, jump, top)
+
+
+def ranges(t: FloatArray, u: FloatArray, ts: float, T: float) -> dict[str, Range]:
+    """The search range of every cause on this log (:func:`shape`; each cause's ``range``)."""
+    s = shape(t, u, ts, T)
+    return {c.cause: c.range(s) for c in CANDIDATES}
+
+
+def starts(
+    cause: str,
+    t: FloatArray,
+    u: FloatArray,
+    y: FloatArray,
+    ts: float,
+    T: float,
+    K: float,
+    noise: float,
+    rng: Range,
+) -> list[float]:
+    """Start values of ``cause``'s Effects field for a log (t s, u V, y rad/s, period ts s)
+    whose model has T (s), K (rad/s/V) and whose speed scatters ``noise`` (rad/s), within
+    its range."""
+    vals = BY_CAUSE[cause].starts(Seen(t, u, y, ts, T, K, noise, rng))
+    return [min(max(v, rng.lo), rng.hi) for v in vals]
+
+
+def cannot_judge(log: ev.Log) -> dict[str, str]:
+    """The causes this log cannot show at all, and why (they are not tried)."""
+    return ev.cannot_judge(log, [(c.cause, c.needs) for c in CANDIDATES])

@@ -9,12 +9,66 @@ Which figure leads for a log, and why, is data the text and the TUI use.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numpy.typing import NDArray
 
 FloatArray = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Gain:
+    """How much better the extended model does than the first-order baseline, in figures
+    that survive the encoder's noise (each field is a key of the JSON's ``gain``, in its
+    order; None where the log does not give the figure).
+
+    rmse_reduction_percent: how much lower the extended model's rms speed error is, %;
+    fit_percent_gain: its fit (%) less the baseline's, points; whitened_reduction_percent and
+    criterion_gain: the share of the whitened residual the causes remove (%) and the
+    criterion's gain D; baseline_rmse / extended_rmse: rms speed error, rad/s; noise_floor:
+    the speed's noise floor from one count per sample, rad/s; noise: its measured scatter,
+    rad/s; *_above_floor / *_above_noise: the rms error above the floor / above the larger of
+    floor and noise, rad/s; angle_floor: the angle's quantisation floor, rad;
+    *_angle_rms: rms error of the angle, rad; heldout_steps: rising steps in the held-out
+    halves (0: no folds); heldout_*_rmse: rms speed error on held-out steps, rad/s.
+    """
+
+    rmse_reduction_percent: float
+    fit_percent_gain: float
+    whitened_reduction_percent: float
+    criterion_gain: float
+    baseline_rmse: float
+    extended_rmse: float
+    noise_floor: float | None
+    noise: float
+    baseline_above_floor: float | None
+    extended_above_floor: float | None
+    baseline_above_noise: float | None
+    extended_above_noise: float | None
+    angle_floor: float | None
+    baseline_angle_rms: float
+    extended_angle_rms: float
+    heldout_steps: float
+    heldout_baseline_rmse: float | None
+    heldout_extended_rmse: float | None
+
+    def get(self, key: str) -> float | None:
+        """The figure named by its JSON key (as :attr:`Lead.figure` names one); None for a key
+        that names no figure."""
+        return getattr(self, key) if key in GAIN_KEYS else None
+
+    def has(self, key: str) -> bool:
+        """``key`` names a figure of the gain."""
+        return key in GAIN_KEYS
+
+    def to_dict(self) -> dict[str, float | None]:
+        """The JSON's ``gain`` object."""
+        return {k: getattr(self, k) for k in GAIN_KEYS}
+
+
+GAIN_KEYS: tuple[str, ...] = tuple(f.name for f in fields(Gain))
+"""The keys of the JSON's ``gain``, in order."""
 
 
 def above(rmse: float, floor: float | None) -> float | None:
@@ -97,9 +151,7 @@ SMALL_NOISE = 0.3
 by under 5 %: the plain rms error leads then."""
 
 
-def lead(
-    gain: dict[str, float | None], named: bool, turning: tuple[float, int, int] | None = None
-) -> Lead:
+def lead(gain: Gain, named: bool, turning: tuple[float, int, int] | None = None) -> Lead:
     """Which figure leads: the angle error where the speed error is mostly noise (or where
     the wheel stands still in most rows, which makes the rms error over the log small while
     it misses where the wheel turns), the held-out error where the log has
@@ -107,8 +159,8 @@ def lead(
     above the noise. ``named``: a cause was named (two models to tell apart; else one model
     to judge). ``turning``: the larger model's rms error where the wheel turns (rad/s), the
     rows where it stands still and all rows."""
-    noise = max(gain.get("noise_floor") or 0.0, gain.get("noise") or 0.0)
-    b, e = gain["baseline_rmse"] or 0.0, gain["extended_rmse"] or 0.0
+    noise = max(gain.noise_floor or 0.0, gain.noise or 0.0)
+    b, e = gain.baseline_rmse or 0.0, gain.extended_rmse or 0.0
     angle = "extended_angle_rms" if named else "baseline_angle_rms"
     if noise > 0 and turning and 2 * turning[1] > turning[2] and turning[0] >= 1.5 * noise:
         err, still, rows = turning
@@ -136,7 +188,7 @@ def lead(
                 "judges the model"
             ),
         )
-    if gain.get("heldout_baseline_rmse") is not None:
+    if gain.heldout_baseline_rmse is not None:
         return Lead(
             "heldout_extended_rmse" if named else "heldout_baseline_rmse",
             "the models predict steps they were not fitted on: the honest judge of a gain",
@@ -203,9 +255,10 @@ def close_up(
     fenced: tuple[float, float] | None = None,
     length: float | None = None,
     edge: int | None = None,
+    at_fall: bool = False,
 ) -> CloseUp:
-    """The window to look at for ``cause``: one step-down for dry friction or coasting, one
-    rise for the others (and for none), a disturbance's stretch when ``fenced`` (t, t_end)
+    """The window to look at for ``cause``: one step-down for a cause shown there
+    (``at_fall``: dry friction, a coast), one rise for the others (and for none), a disturbance's stretch when ``fenced`` (t, t_end)
     is given. T (s) and lag (s, delay plus filter) size it; ``length`` (s) overrides how long
     the response lasts; ``edge`` (a row) the step-down to show, the one the evidence speaks
     of (the first step-down when it is None or no step-down)."""
@@ -218,7 +271,7 @@ def close_up(
         a, b = fenced
         pad = max(0.5 * (b - a), 4.0 * T, 5 * ts)
         t0, t1, what = a - pad, b + pad, "the stretch where something braked the wheel"
-    elif cause in ("coulomb_friction", "coast_on_zero") and falls:
+    elif at_fall and falls:
         e = edge if edge in falls else falls[0]
         t0, t1 = float(t[e]) - max(2.0 * T, 5 * ts), float(t[e]) + max(span, 10 * ts)
         what = "a step-down, where the wheel slows and stops"

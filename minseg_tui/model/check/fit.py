@@ -36,6 +36,7 @@ from numpy.typing import NDArray
 
 from minseg_tui.model.check.effects import (
     BY_CAUSE,
+    NONLINEAR,
     Range,
     effects_of,
     field_value,
@@ -249,7 +250,7 @@ def _axes(prob: Problem, causes: Sequence[str], rng: dict[str, Range]) -> list[_
         if r.log_scale:
             out.append(_Axis(c, math.log(r.lo), math.log(r.hi), 5e-3, True, 1.0))
         else:
-            unit = u_scale if c == "coulomb_friction" else prob.ts
+            unit = u_scale if BY_CAUSE[c].scale == "V" else prob.ts
             out.append(_Axis(c, r.lo / unit, r.hi / unit, 5e-3, False, unit))
     if "current_limit" in causes:
         out.append(_Axis(DRAG, 0.0, DRAG_MAX, 5e-3, False, 1.0))
@@ -492,10 +493,6 @@ def fit_causes(
     return out
 
 
-NONLINEAR = frozenset({"coulomb_friction", "coast_on_zero", "current_limit"})
-"""Causes after which an extra pole on the drive and one on the measurement differ."""
-
-
 def _fit_side(
     prob: Problem,
     causes: Sequence[str],
@@ -635,9 +632,7 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
         )
         if not a.log_scale:
             lo_v = max(lo_v, 0.0)
-        if a.cause == "current_limit":
-            lo_v, hi_v = abs(k) * lo_v, abs(k) * hi_v
-        out[name] = (lo_v, hi_v)
+        out[name] = (reported(a.cause, lo_v, k), reported(a.cause, hi_v, k))
     if "velocity_filter" in f.causes:
         out["taps"] = _taps_interval(
             m, x, f, 1.0 + Z95**2 * (1.0 + rho) / (1.0 - rho) / max(n - p, 1)

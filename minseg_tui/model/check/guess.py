@@ -1,6 +1,6 @@
 """Where the search for each cause's parameter starts: a few values read off the log.
 
-The fit polishes jointly from the best start (:mod:`.fit`); good starts keep it short and
+The starts of each cause are in its entry of :mod:`.effects`. The fit polishes jointly from the best start (:mod:`.fit`); good starts keep it short and
 out of the wrong valley (a delay of a third of a second is found from where the wheel
 first moves, not by walking there from zero).
 """
@@ -11,8 +11,6 @@ import math
 
 import numpy as np
 from numpy.typing import NDArray
-
-from minseg_tui.model.check.effects import Range
 
 FloatArray = NDArray[np.float64]
 
@@ -96,44 +94,3 @@ def levels_offset(u: FloatArray, y: FloatArray, T: float, ts: float) -> float | 
     if slope <= 0:
         return None
     return float(-icpt / slope)
-
-
-def starts(
-    cause: str,
-    t: FloatArray,
-    u: FloatArray,
-    y: FloatArray,
-    ts: float,
-    T: float,
-    K: float,
-    noise: float,
-    rng: Range,
-) -> list[float]:
-    """Start values of ``cause``'s Effects field for a log whose baseline has T (s), K."""
-    lo, hi = rng.lo, rng.hi
-    vals: list[float]
-    if cause == "coulomb_friction":
-        vals = [hi * f for f in (0.05, 0.15, 0.35, 0.6)]
-        off = levels_offset(u, y, T, ts)
-        if off is not None and 0 < off < hi:
-            vals.append(off)
-    elif cause == "dead_time":
-        lags = first_motion(t, u, y, noise)
-        vals = [f * ts for f in (0.5, 1.0, 2.0)] + [0.5 * T]
-        if lags:
-            lag = float(np.median(lags))
-            vals += [max(lag - 1.5 * ts, 0.0), max(lag - ts - 0.3 * T, 0.0)]
-    elif cause == "velocity_filter":
-        vals = [1.0]
-    elif cause == "coast_on_zero":
-        vals = [T * f for f in (1.5, 3.0, 8.0)] + [1.0, 5.0]
-    elif cause == "second_pole":
-        vals = [T * f for f in (0.1, 0.25, 0.5, 0.9)]
-    elif cause == "current_limit":
-        vals = [hi * f for f in (0.01, 0.025, 0.045, 0.07, 0.1)]
-        r = steepest_rate(t, u, y, K)
-        if r is not None:
-            vals += [0.8 * r, r, 1.25 * r]
-    else:
-        raise ValueError(cause)
-    return [min(max(v, lo), hi) for v in vals]

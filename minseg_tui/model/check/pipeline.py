@@ -16,9 +16,17 @@ from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
 from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select, swapped
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, in_words, ranges
-from minseg_tui.model.check.evidence import WORDS, Log, cannot_judge, shown_stop
-from minseg_tui.model.check.figures import above, angle_rms, close_up, folds, lead, systematic
+from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, cannot_judge, in_words, ranges
+from minseg_tui.model.check.evidence import Log, shown_stop
+from minseg_tui.model.check.figures import (
+    Gain,
+    above,
+    angle_rms,
+    close_up,
+    folds,
+    lead,
+    systematic,
+)
 from minseg_tui.model.check.fit import (
     MAX_FIT_ROWS,
     Fit,
@@ -306,30 +314,33 @@ def _report(
     floor = samp.column_floor(ext.effects.taps)
     level = max(floor or 0.0, noise)
     b_kept, e_kept = _rmse_kept(full.y, b_pred, keep), _rmse_kept(full.y, e_pred, keep)
-    gain: dict[str, float | None] = {
-        "rmse_reduction_percent": 100.0 * (1.0 - extended.rmse / baseline.rmse)
+    held = _held_out(full, base, ext, rng)
+    gain = Gain(
+        rmse_reduction_percent=100.0 * (1.0 - extended.rmse / baseline.rmse)
         if baseline.rmse > 0
         else 0.0,
-        "fit_percent_gain": extended.fit_percent - baseline.fit_percent,
-        "whitened_reduction_percent": 100.0 * v.reduction if v else 0.0,
-        "criterion_gain": v.d if v else 0.0,
-        "baseline_rmse": baseline.rmse,
-        "extended_rmse": extended.rmse,
-        "noise_floor": floor,
-        "noise": noise,
-        "baseline_above_floor": above(b_kept, floor),
-        "extended_above_floor": above(e_kept, floor),
-        "baseline_above_noise": above(b_kept, level),
-        "extended_above_noise": above(e_kept, level),
-        "angle_floor": samp.angle_floor,
-        "baseline_angle_rms": angle_rms(
+        fit_percent_gain=extended.fit_percent - baseline.fit_percent,
+        whitened_reduction_percent=100.0 * v.reduction if v else 0.0,
+        criterion_gain=v.d if v else 0.0,
+        baseline_rmse=baseline.rmse,
+        extended_rmse=extended.rmse,
+        noise_floor=floor,
+        noise=noise,
+        baseline_above_floor=above(b_kept, floor),
+        extended_above_floor=above(e_kept, floor),
+        baseline_above_noise=above(b_kept, level),
+        extended_above_noise=above(e_kept, level),
+        angle_floor=samp.angle_floor,
+        baseline_angle_rms=angle_rms(
             t, u, full.y - b_pred, samp.ts, full.weights, samp.over_interval
         ),
-        "extended_angle_rms": angle_rms(
+        extended_angle_rms=angle_rms(
             t, u, full.y - e_pred, samp.ts, full.weights, samp.over_interval
         ),
-        **_held_out(full, base, ext, rng),
-    }
+        heldout_steps=held[0],
+        heldout_baseline_rmse=held[1],
+        heldout_extended_rmse=held[2],
+    )
     miss = _miss(full.y, e_pred, u, ext.T, samp, noise, full.weights, ext.effects.taps)
     keep_dev = np.ones(y.size, dtype=bool)
     for m in wild:
@@ -426,6 +437,8 @@ def _report(
     if gp:
         anomalies.append(gp)
     fenced = (found[0].start, found[0].end) if found and not named else None
+    stop = BY_CAUSE[order[0]].stop if order else None
+    shown = shown_stop(log, stop)
     cu = close_up(
         t,
         u,
@@ -435,7 +448,8 @@ def _report(
         level,
         (float(t[fenced[0]]), float(t[min(fenced[1], t.size - 1)])) if fenced else None,
         _stop_time(log, order, ext) or _response_time(ext, u),
-        edge=shown.row if (shown := shown_stop(log, order[0]) if order else None) else None,
+        edge=shown.row if shown else None,
+        at_fall=stop is not None,
     )
     return CheckResult(
         baseline,
@@ -525,12 +539,18 @@ def _response_time(f: Fit, u: FloatArray) -> float | None:
     return None
 
 
-def _held_out(full: Problem, base: Fit, ext: Fit, rng: dict) -> dict[str, float | None]:  # type: ignore[type-arg]
-    """Both models fitted on every other cycle and judged on the rest (rms, rad/s)."""
+def _held_out(
+    full: Problem,
+    base: Fit,
+    ext: Fit,
+    rng: dict,  # type: ignore[type-arg]
+) -> tuple[float, float | None, float | None]:
+    """Both models fitted on every other cycle and judged on the rest: the rising steps
+    held out, and each model's rms error on them (rad/s; None without folds)."""
     head = full.head(MAX_FIT_ROWS)
     parts = folds(head.u)
     if parts is None:
-        return {"heldout_steps": 0.0, "heldout_baseline_rmse": None, "heldout_extended_rmse": None}
+        return 0.0, None, None
     errs_b: list[FloatArray] = []
     errs_e: list[FloatArray] = []
     for m in parts:
@@ -546,7 +566,7 @@ def _held_out(full: Problem, base: Fit, ext: Fit, rng: dict) -> dict[str, float 
     n = sum(
         1 for e in np.flatnonzero(np.diff(head.u) != 0) + 1 if abs(head.u[e]) > abs(head.u[e - 1])
     )
-    return {"heldout_steps": float(n), "heldout_baseline_rmse": rb, "heldout_extended_rmse": re}
+    return float(n), rb, re
 
 
 def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
@@ -554,7 +574,7 @@ def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
     stands still after the step-down the evidence speaks of (:func:`shown_stop`), with a
     quarter of that after it, when the cause shown is dry friction or a coast and the wheel
     stops there; else None."""
-    shown = shown_stop(log, order[0]) if order else None
+    shown = shown_stop(log, BY_CAUSE[order[0]].stop) if order else None
     if shown is None or shown.after is None:
         return None
     usual = 6.0 * ext.T + ext.effects.delay + ext.effects.taps * log.ts
@@ -754,7 +774,7 @@ def _finding(
     cause = order[0]
     v = compare(ext, sel.without[cause]) if cause in sel.without else compare(ext, base)
     evidence = (
-        f"{WORDS[cause](log, ext, floor)}. It removes {100 * v.reduction:.1f} % of the "
+        f"{BY_CAUSE[cause].words(log, ext, floor)}. It removes {100 * v.reduction:.1f} % of the "
         f"whitened residual the model leaves without it (criterion gain {v.d:.0f})"
     )
     runner, why = _runner_up(sel, ext, full)
@@ -768,7 +788,7 @@ def _finding(
             Other(
                 c,
                 {p: ext.params[p]},
-                f"{WORDS[c](log, ext, floor)}; taking it out of the model leaves "
+                f"{BY_CAUSE[c].words(log, ext, floor)}; taking it out of the model leaves "
                 f"{1 / max(1 - vc.reduction, 1e-12):.1f} times the whitened residual",
             )
         )

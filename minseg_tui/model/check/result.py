@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from minseg_tui.model.check.anomalies import Anomaly
 from minseg_tui.model.check.deviations import Deviation
-from minseg_tui.model.check.figures import CloseUp, Lead
+from minseg_tui.model.check.figures import CloseUp, Gain, Lead
 from minseg_tui.model.check.sampling import Sampling
 
 FloatArray = NDArray[np.float64]
@@ -107,8 +107,8 @@ class Finding:
 class CheckResult:
     """Everything the model check says about one log.
 
-    baseline / extended: the fitted models; finding; gain: rmse_reduction_percent and the
-    other figures (rad/s, rad, %; None where a figure cannot be had); deviations: the
+    baseline / extended: the fitted models; finding; gain: the figures of how much better
+    the extended model does (rad/s, rad, %; None where a figure cannot be had); deviations: the
     baseline's residual per region, and ``where`` in words; anomalies; t, omega,
     baseline_pred, extended_pred: every row (s, rad/s) so anyone can recompute the figures;
     sampling: how the log was sampled; lead: the figure that means most for this log and
@@ -118,7 +118,7 @@ class CheckResult:
     baseline: ModelFit
     finding: Finding
     extended: ModelFit
-    gain: dict[str, float | None]
+    gain: Gain
     deviations: list[Deviation]
     where: str
     anomalies: list[Anomaly]
@@ -136,7 +136,7 @@ class CheckResult:
             "baseline": self.baseline.to_dict(),
             "finding": self.finding.to_dict(),
             "extended": self.extended.to_dict(),
-            "gain": dict(self.gain),
+            "gain": self.gain.to_dict(),
             "deviations": {"where": self.where, "regions": [d.to_dict() for d in self.deviations]},
             "anomalies": [a.to_dict() for a in self.anomalies],
             "rows": int(self.t.size),

@@ -54,6 +54,21 @@ class Stretches:
         return cls(start=np.asarray(t, float)[idx], value=np.asarray(u, float)[idx])
 
 
+Drive = Callable[[FloatArray, float], FloatArray]
+"""A cause's own simulation piece when it acts on the input: (the input levels in force,
+V; its parameter) -> the levels the motor gets (V at K = 1)."""
+
+
+@dataclass(frozen=True)
+class Extra:
+    """A cause that brings its own simulation piece (:attr:`.effects.Candidate.drive`):
+    its contract name, its parameter (K = 1 units) and the piece."""
+
+    cause: str
+    value: float
+    drive: Drive
+
+
 @dataclass(frozen=True)
 class Effects:
     """The effects on top of the first-order model (absent: 0, 1, None or infinity).
@@ -83,6 +98,9 @@ class Effects:
     current is capped the back-EMF no longer brakes but the drag still does, so the capped
     speed bends: w' = rate - drag w/T (not a straight ramp), and the cap lets go when the
     torque the drive asks for, (v - (1 - drag) w)/T, falls to the cap."""
+    extra: tuple[Extra, ...] = ()
+    """The causes that bring their own piece: each acts on the input before the modes above
+    (in this order)."""
 
 
 class Pieces:
@@ -186,14 +204,18 @@ def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Piec
 
     ``z0`` is the initial speed (V at K = 1); None means steady state under the first input.
     The dead time and the measurement (``fx.delay``, ``fx.taps``) are applied when the
-    table is read (:func:`response`).
+    table is read (:func:`response`). The causes with their own piece (``fx.extra``) change
+    the levels the motor gets; whether the bridge is open (a coast) follows the command.
     """
+    command = st.value
+    for x in fx.extra:
+        st = Stretches(st.start, x.drive(st.value, x.value))
     T2 = fx.T2 if fx.T2 > 0.0 and not fx.pole_measured else 0.0
     if T2 and abs(T2 - T) < 1e-6 * T:
         T2 = T * (1.0 + 1e-6)
     if z0 is None:
         u0 = float(st.value[0])
-        coasting = fx.T_coast is not None and u0 == 0.0
+        coasting = fx.T_coast is not None and command[0] == 0.0
         z0 = 0.0 if coasting else u0 - math.copysign(min(fx.u_c, abs(u0)), u0)
     out = Pieces()
     out.add(float(st.start[0]) - FAR, -z0 * FAR, z0)
@@ -210,23 +232,34 @@ def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Piec
                 w = u + a * e
         return out
     s = _State(float(st.start[0]), z0, z0 if T2 else float(st.value[0]), 0.0)
-    for t0, t1, u in zip(st.start.tolist(), ends.tolist(), st.value.tolist(), strict=True):
+    levels = zip(st.start.tolist(), ends.tolist(), st.value.tolist(), command.tolist(), strict=True)
+    for t0, t1, u, asked in levels:
         s.t = t0
         if not T2:
             s.v = u
-        _stretch(out, s, t1 - t0 if math.isfinite(t1) else FAR, u, T, T2, fx)
+        coast = fx.T_coast is not None and asked == 0.0
+        _stretch(out, s, t1 - t0 if math.isfinite(t1) else FAR, u, T, T2, fx, coast)
     return out
 
 
 def _stretch(
-    out: Pieces, s: _State, left: float, u: float, T: float, T2: float, fx: Effects
+    out: Pieces,
+    s: _State,
+    left: float,
+    u: float,
+    T: float,
+    T2: float,
+    fx: Effects,
+    coast: bool,
 ) -> None:
-    """Advance ``s`` by ``left`` s under the input u (V), adding the pieces to ``out``."""
+    """Advance ``s`` by ``left`` s under the input u (V), adding the pieces to ``out``;
+    ``coast``: the bridge is open (zero command, a coasting driver)."""
     uc, rate = fx.u_c, fx.rate
     for _ in range(12):  # a stretch changes mode a few times at most
         if left <= 0.0:
             return
-        if fx.T_coast is not None and u == 0.0:
+        if coast:
+            assert fx.T_coast is not None
             left = _coast(out, s, left, max(fx.T_coast, T), uc / T)
             continue
         drive = s.v

@@ -42,7 +42,7 @@ def _pair(r: CheckResult, key: str) -> str:
     if r.finding.cause == "none" or e is None:
         return f"{b:.3g} {unit}"
     if e == 0 and b > 0 and "above" in key:
-        rms = g["extended_rmse"]
+        rms = g.extended_rmse
         return (
             f"{b:.3g} -> 0 {unit}, the extended model's rms error ({rms:.3g} {unit}) is no "
             "larger than the noise"
@@ -91,28 +91,28 @@ def text(r: CheckResult) -> str:
         name = _FIGURES.get(r.lead.figure, (r.lead.figure, ""))[0]
         lines.append(f"Gain: {name} {_pair(r, r.lead.figure)} (leads because {r.lead.why})")
     rest = []
-    floor = g.get("noise_floor")
-    noise = g.get("noise")
+    floor = g.noise_floor
+    noise = g.noise
     if floor is not None:
         rest.append(f"noise floor {floor:.3g} rad/s")
     if noise is not None:
         rest.append(f"scatter {noise:.3g} rad/s")
     rest.append(f"rms error {_pair(r, 'extended_rmse')}")
-    above = g.get("baseline_above_noise")
-    if above is not None and (above > 0 or g.get("extended_above_noise")):
+    above = g.baseline_above_noise
+    if above is not None and (above > 0 or g.extended_above_noise):
         rest.append(f"above the noise {_pair(r, 'extended_above_noise')}")
-    if g.get("baseline_above_floor") is not None:
+    if g.baseline_above_floor is not None:
         rest.append(f"above the floor {_pair(r, 'extended_above_floor')}")
     rest.append(f"angle error {_pair(r, 'extended_angle_rms')}")
-    if g.get("heldout_baseline_rmse") is not None:
+    if g.heldout_baseline_rmse is not None:
         rest.append(f"on held-out steps {_pair(r, 'heldout_extended_rmse')}")
     if f.cause != "none":
         rest.append(
-            f"rmse {g['rmse_reduction_percent']:.1f} % lower, fit {g['fit_percent_gain']:+.1f} points"
+            f"rmse {g.rmse_reduction_percent:.1f} % lower, fit {g.fit_percent_gain:+.1f} points"
         )
     held = (
         ", the held-out error over the rows of the steps each fit left out"
-        if g.get("heldout_baseline_rmse") is not None
+        if g.heldout_baseline_rmse is not None
         else ""
     )
     lines.append("  " + "; ".join(rest) + f" (rms, noise and fit figures {_over(r)}{held})")
