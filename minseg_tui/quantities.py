@@ -479,6 +479,16 @@ def format_quantity(value: float, unit: str, digits: int = DIGITS) -> str:
     return format_value(_in_unit(value, UNITS[unit]), unit, digits)
 
 
+F_UNIT = "mN m s/rad"
+"""The one unit f is shown to people in (the table, the entries, the warnings, the CLI's
+text); machine output (JSON, CSV) keeps SI, N m s/rad."""
+
+
+def in_unit(value: float, unit: str) -> float:
+    """``value`` (SI) as a number in the form unit ``unit`` (f 0.00186 -> 1.86 mN m s/rad)."""
+    return _in_unit(value, UNITS[unit])
+
+
 def _in_unit(value: float, u: Unit) -> float:
     """``value`` (SI) in the unit ``u``: multiplied by a whole 1/scale where there is one
     (mA: 1000, exact), else divided by the scale (rpm: 2 pi/60)."""

@@ -74,7 +74,7 @@ def text(view: ClassView) -> str:
             g.id,
             members(g),
             g.step or "–",
-            *(_cell(g.value(q.key)) for q in QUANTITIES),
+            *(_cell(None if (v := g.value(q.key)) is None else q.number(v)) for q in QUANTITIES),
             g.cause or "–",
             own_cell(g),
         ]
@@ -85,7 +85,7 @@ def text(view: ClassView) -> str:
         "  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip()
         for r in [head, *rows]
     ]
-    lines.append("units: " + ", ".join(f"{q.key} {q.unit}" for q in QUANTITIES))
+    lines.append("units: " + ", ".join(f"{q.key} {q.display}" for q in QUANTITIES))
     for k, g in enumerate(view.groups, 1):
         if not (g.flags or g.lacks):
             continue

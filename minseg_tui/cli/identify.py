@@ -12,6 +12,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import Identification, identify, u_ss_words
 from minseg_tui.quantities import (
+    F_UNIT,
     NO_WIDTH,
     NOT_DETERMINED,
     NUMBER,
@@ -19,6 +20,7 @@ from minseg_tui.quantities import (
     format_number,
     format_reading,
     format_signed,
+    in_unit,
 )
 
 
@@ -93,7 +95,7 @@ def _wrap(text: str) -> list[str]:
 def render(result: Identification) -> str:
     """The human report: the table of Tasks 4-9, then Tasks 11-15, then what the numbers show."""
     out = [f"R = {_read(result.R)} ohm (Task 2)", ""]
-    head = ("u_req V", "u_ss V", "omega_ss rad/s", "i_ss mA", "k_v V s/rad", "f N m s/rad")
+    head = ("u_req V", "u_ss V", "omega_ss rad/s", "i_ss mA", "k_v V s/rad", f"f {F_UNIT}")
     body = [
         (
             _read(r.reading.u_req),
@@ -101,7 +103,7 @@ def render(result: Identification) -> str:
             _read(r.reading.omega_ss),
             _read(r.reading.i_ss),
             _g(r.k_v),
-            _g(r.f, 3),
+            _g(in_unit(r.f, F_UNIT), 3),
         )
         for r in result.rows
     ]
@@ -112,7 +114,7 @@ def render(result: Identification) -> str:
         "",
         f"k_v = {_g(result.k_v)} V s/rad   (Task 7, median of the rows)",
         f"k_a = {_g(result.k_a)} N m/A     (Task 8, 0.65 k_v)",
-        f"f   = {_g(result.f, 3)} N m s/rad (Task 9, median of the rows)",
+        f"f   = {_g(in_unit(result.f, F_UNIT), 3)} {F_UNIT} (Task 9, median of the rows)",
     ]
     s = result.step
     if s is not None:

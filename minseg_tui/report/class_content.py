@@ -13,7 +13,7 @@ import csv
 import io
 import math
 
-from minseg_tui.lab.state.compare import format_diff
+from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views.classview import (
     JUDGED,
     QUANTITIES,
@@ -42,7 +42,7 @@ def table(view: ClassView) -> Table:
         "members",
         "date",
         "step",
-        *(q.label for q in QUANTITIES),
+        *(q.shown_label for q in QUANTITIES),
         "model check",
         "own vs computed",
         "flags",
@@ -56,7 +56,10 @@ def table(view: ClassView) -> Table:
                 members(g),
                 g.date or "–",
                 g.step or "–",
-                *(_cell(g.value(q.key)) for q in QUANTITIES),
+                *(
+                    _cell(None if (v := g.value(q.key)) is None else q.number(v))
+                    for q in QUANTITIES
+                ),
                 g.cause or "–",
                 own_cell(g),
                 str(len(g.flags)) if g.flags else "",
@@ -83,7 +86,7 @@ def _figure(view: ClassView, key: str) -> Figure | None:
             Line(
                 "" if n else "a group",
                 [float(k)],
-                [v],
+                [q.number(v)],
                 color=FLAGGED_COLOR if out else GROUP_COLOR,
                 dots=True,
             )
@@ -93,23 +96,23 @@ def _figure(view: ClassView, key: str) -> Figure | None:
     x = [0.5, len(view.groups) + 0.5]
     bands, marks = [], []
     if s is not None:
-        lo, hi = s.band
+        lo, hi = (q.number(b) for b in s.band)
         bands.append(Band(f"band: ± {THRESHOLD:g} robust std", x, [lo, lo], [hi, hi]))
-        marks.append(Mark(f"median {format_quantity(s.median, q.unit)}", y=s.median))
+        marks.append(Mark(f"median {format_quantity(s.median, q.display)}", y=q.number(s.median)))
     svg = plot(
         lines,
         bands=bands,
         marks=marks,
         title=f"{q.key}: {q.words}",
         xlabel="group (# in the table)",
-        ylabel=q.label,
+        ylabel=q.shown_label,
         width=440,
         height=230,
     )
     caption = (
         f"{q.key} of {len(have)} groups"
         + (
-            f"; class median {format_quantity(s.median, q.unit)}, the band holds what lies "
+            f"; class median {format_quantity(s.median, q.display)}, the band holds what lies "
             f"within {THRESHOLD:g} robust standard deviations of it"
             if s is not None
             else "; too few groups for a class median"
@@ -136,7 +139,7 @@ def build(view: ClassView) -> Report:
     n = len(view.groups)
     sections = [Section("Groups", [table(view)])]
     sections[0].blocks.append(
-        "Numbers in SI units (the header gives each unit); T_63 is the 63 % reading, T the "
+        "Numbers in the units of the header (SI, but f in mN m s/rad as in the lab's table); T_63 is the 63 % reading, T the "
         "least-squares fit on the encoder angle. 'own vs computed' is how far the group's own "
         "values are from the computed ones. '–': not computed yet (see What is missing)."
     )
@@ -156,24 +159,9 @@ def build(view: ClassView) -> Report:
     )
     lacks = [f"#{k} {g.id}: {'; '.join(g.lacks)}" for k, g in enumerate(view.groups, 1) if g.lacks]
     sections.append(Section("What is missing", [lacks or "Every session is complete."]))
-    own_rows = tuple(
-        (
-            f"#{k} {g.id}",
-            o.label,
-            _q(o.own, o.unit),
-            _q(o.computed, o.unit),
-            "" if o.rel_diff is None else format_diff(o.rel_diff),
-        )
-        for k, g in enumerate(view.groups, 1)
-        for o in g.own
-    )
-    if own_rows:
-        sections.append(
-            Section(
-                "The groups' own values against the computed ones",
-                [Table(("group", "value", "theirs", "computed", "difference"), own_rows)],
-            )
-        )
+    own_section = own_values(view)
+    if own_section is not None:
+        sections.append(own_section)
     figs = tuple(f for key in ("R", *JUDGED[1:]) if (f := _figure(view, key)) is not None)
     if figs:
         sections.append(Section("The class per quantity", [Figures(figs)]))
@@ -185,10 +173,35 @@ def build(view: ClassView) -> Report:
     )
 
 
-def _q(v: float | str | None, unit: str) -> str:
-    if v is None or isinstance(v, str):
-        return v or "–"
-    return "–" if not math.isfinite(v) else format_quantity(v, unit)
+def own_values(view: ClassView) -> Section | None:
+    """The values each group worked out, in the rows and words of the session's report
+    (:mod:`~minseg_tui.lab.views.own_first`): the group's value, the value computed the
+    group's way, the difference, the program's (least squares for Tasks 11-15) and when the
+    group was shown it; only the values a group entered. None when no group entered one."""
+    groups = list(enumerate(view.groups, 1))
+
+    def rows(keys: frozenset[str]) -> tuple[tuple[str, ...], ...]:
+        return tuple(
+            (f"#{k} {g.id}", *r.cells) for k, g in groups for r in g.own_rows if r.key in keys
+        )
+
+    table_keys = frozenset(("own.k_v", "own.k_a", "own.f"))
+    steady = rows(table_keys)
+    step = rows(frozenset(own_first.TASK) - table_keys)
+    if not steady and not step:
+        return None
+    blocks: list[object] = []
+    if steady:
+        blocks.append(Table(("group", *own_first.TABLE_HEADER), steady))
+    if step:
+        blocks.append(Table(("group", *own_first.STEP_HEADER), step))
+        blocks.extend(
+            f"#{k} {g.id}, {own_first.TASK[r.key]}: {r.why}"
+            for k, g in groups
+            for r in g.own_rows
+            if r.why
+        )
+    return Section("The groups' own values against the computed ones", blocks)
 
 
 def csv_text(view: ClassView) -> str:

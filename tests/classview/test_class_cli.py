@@ -17,6 +17,7 @@ from minseg_tui.cli import main
 from minseg_tui.lab.saving.store import lock_owner
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import in_words
+from minseg_tui.quantities import format_number
 
 from .build import group
 
@@ -313,3 +314,19 @@ def test_a_copied_session_is_named_by_its_own_folder(tmp_path, capsys):
     _, out, _ = _run(capsys, "--sessions", str(root), "--json")
     ids = [g["id"] for g in json.loads(out)["groups"]]
     assert sorted(ids) == sorted([folder.name, "ada-copy"])
+
+
+def test_f_is_shown_in_mN_m_s_per_rad_and_kept_si_in_csv_and_json(klass, tmp_path, capsys):
+    """The class's text, report and figures showed f in N m s/rad while the lab's table and
+    Task 9's entry use mN m s/rad: one unit for f wherever people read it; the CSV and the
+    JSON keep SI."""
+    _, js, _ = _run(capsys, "--sessions", str(klass), "--json")
+    f = [g["f"] for g in json.loads(js)["groups"] if g["f"] is not None]
+    _, out, _ = _run(capsys, "--sessions", str(klass))
+    assert "f mN m s/rad" in out and " N m s/rad" not in out.replace("mN m s/rad", "")
+    _run(capsys, "--sessions", str(klass), "--out", str(tmp_path / "out"))
+    md = (tmp_path / "out" / "class.md").read_text(encoding="utf-8")
+    assert "| f (mN m s/rad) |" in md and "f (N m s/rad)" not in md
+    assert format_number(f[0] * 1e3) in md.split("## What stands out")[0]
+    rows = list(csv.DictReader(io.StringIO((tmp_path / "out" / "class.csv").read_text("utf-8"))))
+    assert [float(r["f (N m s/rad)"]) for r in rows if r["f (N m s/rad)"]] == f

@@ -64,6 +64,22 @@ def test_human_report(files, capsys):
         assert text in out
 
 
+def test_f_is_in_mN_m_s_per_rad_in_the_human_text(files, capsys):
+    """The table's column, the f line and the dry-friction sentence said N m s/rad while
+    the TUI's table and Task 9's entry use mN m s/rad: one unit for f in all human text
+    (the JSON keeps SI)."""
+    assert main(["identify", str(files / "table.csv"), "--R", "5"]) == 0
+    out = capsys.readouterr().out
+    kv = sorted([(2.1 - 0.15) / 3.6, (3.05 - 0.175) / 5.5, (4.0 - 0.2) / 7.2])[1]
+    f = sorted(0.65 * kv * i / w for i, w in ((0.030, 3.6), (0.035, 5.5), (0.040, 7.2)))[1]
+    assert f"f   = {f * 1e3:.3g} mN m s/rad (Task 9" in out
+    assert "f mN m s/rad" in out  # the table's column
+    assert "f falls with speed, from " in out
+    assert " N m s/rad" not in out.replace("mN m s/rad", "")
+    assert main(["identify", str(files / "table.csv"), "--R", "5", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["f"] == pytest.approx(f, rel=1e-12)
+
+
 def test_json_is_one_object_with_the_contract(files, capsys):
     code = main(
         [

@@ -45,7 +45,12 @@ def test_falling_f_is_called_dry_friction_with_the_line_through_the_rows():
     torque = result.k_a * np.array([0.030, 0.035, 0.040])
     wm, tm = w.mean(), torque.mean()
     slope = ((w - wm) * (torque - tm)).sum() / ((w - wm) ** 2).sum()
-    assert f"{slope:.3g}" in msg and f"{tm - slope * wm:.3g}" in msg
+    assert f"{tm - slope * wm:.3g}" in msg
+    # f in mN m s/rad, as the table and Task 9's entry show it (it was N m s/rad here)
+    assert f"viscous f = {slope * 1e3:.3g} mN m s/rad" in msg
+    f = sorted(row.f for row in result.rows)
+    assert f"from {f[-1] * 1e3:.4g} mN m s/rad at" in msg
+    assert " N m s/rad" not in msg.replace("mN m s/rad", "")
 
 
 def test_constant_f_is_not_dry_friction():

@@ -184,5 +184,5 @@ async def test_the_dry_friction_note_gives_f_with_the_tables_digits(quiet):
         enter_all(app, WALK_TABLE)
         await goto(pilot, "table")
         text = " ".join(p.text for p in app.screen.query(Prose))
-        assert "f falls with speed, from 0.002504 N m s/rad at" in text
-        assert "to 0.001536 N m s/rad" in text
+        assert "f falls with speed, from 2.504 mN m s/rad at" in text
+        assert "to 1.536 mN m s/rad" in text

@@ -28,6 +28,7 @@ from pathlib import Path
 
 import minseg_tui
 from minseg_tui.lab.saving.store import LOCK_FILE, read_regular
+from minseg_tui.lab.state.compare import POLICY_FILE
 from minseg_tui.lab.views.classview import (
     ClassView,
     Group,
@@ -37,6 +38,7 @@ from minseg_tui.lab.views.classview import (
     read_kept,
     session_folders,
 )
+from minseg_tui.lab.views.own_first import OwnRow
 
 MAX_FILE = 64 << 20
 """Session files larger than this are not hashed (the row is then computed every time)."""
@@ -70,10 +72,14 @@ def code_fingerprint() -> str:
 
 
 def key(session_folder: Path) -> str | None:
-    """The key of the row of ``session_folder``: a hash of the code and of every file in
-    the folder (names and bytes); None when a file cannot be read."""
+    """The key of the row of ``session_folder``: a hash of the code, of the lab's policy
+    beside the sessions (it says when the group was shown the computed values) and of every
+    file in the folder (names and bytes); None when a file cannot be read."""
     h = hashlib.sha256(code_fingerprint().encode())
     try:
+        policy = Path(session_folder).parent / POLICY_FILE
+        h.update(read_regular(policy, MAX_FILE) if policy.is_file() else b"no policy")
+        h.update(b"\0")
         files = sorted(
             p for p in Path(session_folder).rglob("*") if p.is_file() and p.name not in _SKIP
         )
@@ -101,6 +107,7 @@ def _to_json(g: Group) -> dict[str, object]:
         "cause": g.cause,
         "cause_code": g.cause_code,
         "own": [[o.key, o.label, o.unit, o.own, o.computed, o.rel_diff] for o in g.own],
+        "own_rows": [[r.key, list(r.cells), r.why] for r in g.own_rows],
         "lacks": list(g.lacks),
         "damaged": g.damaged,
         "readable": g.readable,
@@ -113,6 +120,17 @@ def _texts(x: object) -> tuple[str, ...]:
     if not isinstance(x, list):
         raise TypeError("expected a list")
     return tuple(str(v) for v in x)
+
+
+def _list(x: object) -> list[object]:
+    if not isinstance(x, list):
+        raise TypeError("expected a list")
+    return x
+
+
+def _own_row(x: object) -> OwnRow:
+    k, cells, why = _list(x)
+    return OwnRow(str(k), _texts(cells), str(why))
 
 
 def _from_json(d: dict[str, object], session_folder: Path) -> Group:
@@ -130,6 +148,7 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
         cause=str(d["cause"]),
         cause_code=str(d["cause_code"]),
         own=tuple(Own(*o) for o in own),
+        own_rows=tuple(_own_row(r) for r in _list(d["own_rows"])),
         lacks=_texts(d["lacks"]),
         damaged=None if d["damaged"] is None else str(d["damaged"]),
         readable=bool(d["readable"]),

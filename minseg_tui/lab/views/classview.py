@@ -40,31 +40,49 @@ from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_
 from minseg_tui.lab.state.compare import format_diff
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import own_first
+from minseg_tui.lab.views.own_first import OwnRow
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import response_alone
-from minseg_tui.quantities import RPM, format_number, format_reading
+from minseg_tui.quantities import F_UNIT, RPM, format_number, format_reading, in_unit
 
 
 @dataclass(frozen=True)
 class Quantity:
     """A column of the class table: its ``key`` (also the JSON key), the ``unit`` of its SI
-    value, and its ``label`` with the unit for headers."""
+    value, and its ``label`` with the unit for headers (CSV, SI); ``shown`` the unit it is
+    shown to people in when not ``unit`` (f in mN m s/rad, as the lab's table shows it)."""
 
     key: str
     unit: str
     words: str
+    shown: str = ""
 
     @property
     def label(self) -> str:
-        """``key (unit)``, as a column header."""
+        """``key (unit)``, as a column header of SI numbers."""
         return f"{self.key} ({self.unit})"
+
+    @property
+    def display(self) -> str:
+        """The unit the value is shown to people in."""
+        return self.shown or self.unit
+
+    @property
+    def shown_label(self) -> str:
+        """``key (display unit)``, as a column header of the numbers people read."""
+        return f"{self.key} ({self.display})"
+
+    def number(self, v: float) -> float:
+        """``v`` (SI) in :attr:`display`."""
+        return in_unit(v, self.display)
 
 
 QUANTITIES: tuple[Quantity, ...] = (
     Quantity("R", "Ω", "motor resistance (Task 2)"),
     Quantity("k_v", "V s/rad", "back-emf constant (Task 7)"),
     Quantity("k_a", "N m/A", "torque constant (Task 8)"),
-    Quantity("f", "N m s/rad", "viscous friction (Task 9)"),
+    Quantity("f", "N m s/rad", "viscous friction (Task 9)", F_UNIT),
     Quantity("K", "rad/s/V", "static gain (Task 11)"),
     Quantity("T_63", "s", "time constant, 63 % reading (Task 12)"),
     Quantity("T", "s", "time constant, least squares (Task 12)"),
@@ -149,7 +167,9 @@ class Group:
     ("Task 12"); ``values`` the numbers of :data:`QUANTITIES` by key (SI, None when not
     computed); ``cause`` the model check's cause in words ('' when it has not run, "none"
     when the first-order model explains the log); ``own`` the group's own values against
-    the computed ones; ``lacks`` what keeps a result from being computed (one sentence
+    the computed ones; ``own_rows`` the same values as the session's report words them
+    (:mod:`.own_first`: Tasks 7-9's rows, then Tasks 11-15's), the ones the group entered;
+    ``lacks`` what keeps a result from being computed (one sentence
     each); ``damaged`` why the file is damaged or cannot be read (None when it is sound);
     ``readable`` False when nothing of the session could be read; ``flags`` what stands
     out, one sentence each; ``slipped`` the keys of the values that rest on one of the
@@ -164,6 +184,7 @@ class Group:
     cause: str = ""
     cause_code: str = ""
     own: tuple[Own, ...] = ()
+    own_rows: tuple[OwnRow, ...] = ()
     lacks: tuple[str, ...] = ()
     damaged: str | None = None
     readable: bool = True
@@ -275,8 +296,8 @@ def own_cell(g: Group) -> str:
     return ", ".join(parts) or "–"
 
 
-def _unit(key: str) -> str:
-    return next(q.unit for q in QUANTITIES if q.key == key)
+def _quantity(key: str) -> Quantity:
+    return next(q for q in QUANTITIES if q.key == key)
 
 
 def _resistance_slip(R: float) -> Slip:
@@ -437,6 +458,7 @@ def _row(folder: Path, session: Session) -> Group:
     cause, code = "", ""
     values: dict[str, float | None] = {"R": session.value("R")}
     own: tuple[Own, ...] = ()
+    own_rows: tuple[OwnRow, ...] = ()
     try:
         kept = session.kept()
         res = session.results(kept.step if kept is not None else None)
@@ -457,6 +479,11 @@ def _row(folder: Path, session: Session) -> Group:
             for c in session.comparisons(results=res)
             if c.own is not None
         )
+        own_rows = tuple(
+            r
+            for r in (*own_first.table_rows(session, res), *own_first.step_rows(session, res))
+            if r.cells[1] != own_first.NOT_ANSWERED
+        )
     except (InputError, ValueError, ArithmeticError, KeyError) as exc:
         # one session's trouble never hides the others: the row says what went wrong
         lacks = (f"its numbers cannot be computed: {exc}",)
@@ -473,6 +500,7 @@ def _row(folder: Path, session: Session) -> Group:
         cause=cause,
         cause_code=code,
         own=own,
+        own_rows=own_rows,
         lacks=lacks,
         damaged=session.damaged,
         flags=tuple(s.text for s in found),
@@ -503,12 +531,13 @@ def outlier(s: Spread, value: float) -> str | None:
     lo, hi = s.band
     if lo <= value <= hi or s.sigma <= 0:
         return None
-    unit = _unit(s.key)
+    q = _quantity(s.key)
+    unit = q.display
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {_num(value)} {unit} is far {side} the class: {times:.0f} robust standard "
-        f"deviations from its median of {_num(s.median)} {unit}."
+        f"{s.key} = {_num(q.number(value))} {unit} is far {side} the class: {times:.0f} robust "
+        f"standard deviations from its median of {_num(q.number(s.median))} {unit}."
     )
 
 

@@ -17,10 +17,10 @@ from dataclasses import dataclass
 
 from minseg_tui.lab.content.steps import STEPS, RunPlan
 from minseg_tui.lab.state import compare as lab_compare
-from minseg_tui.lab.state.results import Comparison
+from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views.session import REVEAL_KEY
-from minseg_tui.model.identify import u_ss_words
+from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
     UNITS,
@@ -171,10 +171,11 @@ def _interval(ci: tuple[float, float], determined: bool, unit: str) -> str:
     return f"95 % interval {format_interval(ci[0] / scale, ci[1] / scale, unit)}"
 
 
-def table_rows(session: Session) -> tuple[OwnRow, ...]:
-    """Tasks 7-9: k_v, k_a and f, the group's value first (:data:`TABLE_HEADER`)."""
+def table_rows(session: Session, results: Results | None = None) -> tuple[OwnRow, ...]:
+    """Tasks 7-9: k_v, k_a and f, the group's value first (:data:`TABLE_HEADER`);
+    ``results``: those to compare with (default: the session's own)."""
     out = []
-    for c in session.comparisons(TABLE_STEP):
+    for c in session.comparisons(TABLE_STEP, results):
         unit = _unit(session, c)
         own = _own(session, c, unit)
         value = _value(c.computed, unit)
@@ -192,18 +193,23 @@ def table_rows(session: Session) -> tuple[OwnRow, ...]:
     return tuple(out)
 
 
-def step_rows(session: Session) -> tuple[OwnRow, ...]:
+def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow, ...]:
     """Tasks 11-15, the group's value first (:data:`STEP_HEADER`): the group's way beside
-    the program's least-squares value, with why they differ; empty without a step result."""
-    res = session.results()
+    the program's least-squares value, with why they differ; empty without a step result.
+    ``results``: those to compare with (default: the session's own); with the numbers the
+    session file keeps (the class view), the program's values are those, without intervals."""
+    res = session.results() if results is None else results
     ident = res.identification
     st = ident.step if ident is not None else None
-    if ident is None or st is None:
+    kept = res.kept_response if st is None else None
+    if ident is None or (st is None and kept is None):
         return ()
 
     def program(key: str, unit: str) -> str:
         """The program's value of field ``key`` in ``unit``, and how it was had."""
         q = format_quantity
+        if st is None:
+            return _kept(key, unit)
         if key == "own.omega_step":
             return f"{q(st.omega_ss, unit)} (the median fitted steady speed of the rises)"
         if key == "own.K":
@@ -220,11 +226,22 @@ def step_rows(session: Session) -> tuple[OwnRow, ...]:
             return f"{w5} (5 V × the least-squares K)"
         return st.model_equation(format_number)
 
+    def _kept(key: str, unit: str) -> str:
+        """:func:`program` from the numbers the session file keeps of the fit."""
+        assert kept is not None
+        how = "kept from the session's least-squares fit"
+        figures = {"own.omega_step": kept.omega_ss, "own.K": kept.K, "own.T": kept.T}
+        figures |= {"own.J": kept.J, "own.omega_5": kept.K * U_TASK15}
+        if key in figures:
+            return f"{_value(figures[key], unit) or 'not computed'} ({how})"
+        model = res.lookup("model")
+        return f"{model} ({how})" if isinstance(model, str) else f"not computed ({how})"
+
     out = []
     for step in STEPS:
         if step.part != "Results":
             continue
-        for c in session.comparisons(step.id):
+        for c in session.comparisons(step.id, res):
             unit = _unit(session, c)
             own = _own(session, c, unit)
             computed = _value(c.computed, unit)

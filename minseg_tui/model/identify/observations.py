@@ -12,9 +12,11 @@ from minseg_tui.model.identify.risefit import Rise, TimeConstantFit
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
+    F_UNIT,
     RPM,
     format_number,
     format_percent,
+    format_quantity,
     format_reading,
     format_signed,
 )
@@ -149,14 +151,14 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
     line = ""
     if slope > 0 and intercept > 0:
         line = (
-            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {format_number(slope, 3)} N m s/rad "
+            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {format_quantity(slope, F_UNIT, 3)} "
             f"and a dry friction torque tau_c = {format_number(intercept, 3)} N m."
         )
     return [
         Observation(
             "dry_friction",
             (
-                f"f falls with speed, from {format_number(f[0])} N m s/rad at {format_reading(w[0], 'rad/s', 3)} to {format_number(f[-1])} N m s/rad at {format_reading(w[-1], 'rad/s', 3)}: "
+                f"f falls with speed, from {format_quantity(f[0], F_UNIT)} at {format_reading(w[0], 'rad/s', 3)} to {format_quantity(f[-1], F_UNIT)} at {format_reading(w[-1], 'rad/s', 3)}: "
                 "part of the friction is dry (Coulomb) friction, a torque that does not grow with speed. "
                 "The lab's model has viscous friction only, so its f depends on the speed it was measured at."
                 + line

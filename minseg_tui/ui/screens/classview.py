@@ -72,7 +72,7 @@ def detail(k: int, g: Group) -> Text:
     out.append(f"#{k} {_members(g)}", style="bold")
     out.append(f"  {g.date or 'no date'} · at {g.step or '?'} · {g.id}\n")
     nums = [
-        f"{q.key} {'–' if (v := g.value(q.key)) is None else format_quantity(v, q.unit)}"
+        f"{q.key} {'–' if (v := g.value(q.key)) is None else format_quantity(v, q.display)}"
         for q in QUANTITIES
     ]
     out.append(" · ".join(nums) + "\n")
