@@ -140,7 +140,7 @@ async def test_tab_never_leaves_the_focused_entry_under_the_readout(quiet, step_
                 seen += 1
                 # the readout's lines change with the live samples (a line wraps, "waiting
                 # for samples" goes): the box must come out from under them each time
-                await settle(pilot, lambda: not box.region.overlaps(readout.region))
+                await settle(pilot, lambda b=box: not b.region.overlaps(readout.region))
                 assert app.screen.can_view_entire(box)
         assert seen >= len(boxes)
 
