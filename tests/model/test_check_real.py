@@ -82,10 +82,9 @@ def test_ev3_is_first_order_under_its_noise(name):
     # the low fit % is explained by the noise, not presented beside a claim it contradicts
     assert r.baseline.fit_percent < 60
     assert "because that noise is large" in words
-    # one level and no step-down: friction, coast and a voltage lost in the driver cannot be
-    # judged, and it says so
+    # one level and no step-down: friction and coast cannot be judged, and it says so
     judged = [c.cause for c in r.finding.caveats if c.kind == "cannot_judge"]
-    assert set(judged) == {"coulomb_friction", "coast_on_zero", "driver_loss"}
+    assert set(judged) == {"coulomb_friction", "coast_on_zero"}
 
 
 # -- micromouse-n20: firmware polls the mode once a second, so motion starts late ---------

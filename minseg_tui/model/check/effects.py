@@ -123,9 +123,8 @@ class Candidate:
     is slower than the model says (it stops sooner, starts later, rises more gently), -1
     faster (it runs down more slowly)."""
     excludes: frozenset[str] = frozenset()
-    """Causes one model never holds beside this one: causes the log tells apart by one
-    feature only, which the check does not follow closely enough on a real motor to share
-    one effect between them (a fit of both would split one effect in two)."""
+    """Causes one model never holds beside this one: the log cannot tell them apart when both
+    act (their sum is all it shows), so a fit of both would split one effect in two."""
     drive: Drive | None = None
     """Its own simulation piece, for a cause that acts on the input (then ``field`` is
     empty): the levels the motor gets from the levels in force and the parameter."""
@@ -465,82 +464,6 @@ CURRENT_LIMIT = Candidate(
 )
 
 
-def _lost(u: FloatArray, u_d: float) -> FloatArray:
-    """The driver's loss: |u| less u_d (V) while it drives, nothing below; 0 stays 0."""
-    out: FloatArray = np.sign(u) * np.maximum(np.abs(u) - u_d, 0.0)
-    return out
-
-
-def _loss_words(log: ev.Log, f: Fit, floor: float | None) -> str:
-    ud = f.params["u_d"]
-    off = levels_offset(log.u, log.y, f.T, log.ts)
-    text = (
-        "the settled speeds are not proportional to the voltage"
-        + (f": a straight line through them meets zero speed at {off:.2f} V" if off else "")
-        + f", and a voltage lost on the way, u_d = {ud:.3g} V, does that"
-    )
-    s = ev.shown_stop(log, ev.drops_to_zero)
-    if s is None:
-        return text
-    w0 = abs(s.speed)
-    # dry friction of the same volts stops the wheel T ln(1 + w0 / (|K| u_d)) after the drop
-    friction = f.T * math.log(1.0 + w0 / max(abs(f.K) * ud, 1e-12))
-    later = np.flatnonzero(log.u[s.row :] != log.u[s.row])
-    last = s.row + int(later[0]) - 1 if later.size else log.u.size - 1
-    span = float(log.t[last] - log.t[s.row])
-    ran = (
-        f"stands still {ev.ms(s.after)} later (measured, from {w0:.3g} rad/s)"
-        if s.after is not None
-        else f"still turns {ev.ms(span)} later (measured, from {w0:.3g} rad/s)"
-    )
-    return (
-        text + f"; yet after the command drops to 0 at t = {log.t[s.row]:.3f} s the wheel {ran}, "
-        f"where dry friction of {ud:.3g} V would stop it after {ev.ms(friction)}: the volts are "
-        "lost before the motor, in the driver, while it drives (the log's u is the voltage "
-        "asked for, not the u_A the motor gets)"
-    )
-
-
-def _has_loss_log(log: ev.Log) -> bool:
-    levels = {round(abs(float(v)), 9) for v in log.u if v != 0}
-    return len(levels) >= 2 and ev.NEEDS_DROP_TO_ZERO.has(log)
-
-
-DRIVER_LOSS = Candidate(
-    "driver_loss",
-    "u_d",
-    "V",
-    "",
-    0.0,
-    "the driver loses u_d volts while it drives (the motor gets |u| - u_d, nothing below), "
-    "and at zero command it brakes: the log's u is the voltage asked for, not the applied u_A",
-    range=lambda s: Range(0.0, 0.98 * s.u_min, False),
-    starts=_friction_starts,
-    words=_loss_words,
-    label="voltage lost in the driver",
-    everyday=(
-        "the motor gets less voltage than the log says: the driver chip loses some volts on "
-        "the way (the log holds the voltage asked for, not the one measured at the motor)"
-    ),
-    short="a voltage lost in the driver",
-    needs=ev.Needs(
-        3,
-        "the log needs two driven levels and a drop to zero while the wheel turns (with one "
-        "level a lost voltage is a smaller gain; without the drop, it is dry friction)",
-        _has_loss_log,
-    ),
-    scale="V",
-    stop=ev.drops_to_zero,
-    drive=_lost,
-    # dry friction takes the same volts off every level; only the stop after a drop to zero
-    # tells the two apart, and with both in one model the fit split the independent
-    # generator's friction (tuning seed 0: 1.53 V) into 1.20 V of friction and 0.31 V lost.
-    # So a model holds one of them; where both act, the larger is named with their sum (as
-    # before this cause was added)
-    excludes=frozenset({"coulomb_friction"}),
-)
-
-
 CANDIDATES: tuple[Candidate, ...] = (
     COULOMB_FRICTION,
     DEAD_TIME,
@@ -548,7 +471,6 @@ CANDIDATES: tuple[Candidate, ...] = (
     COAST_ON_ZERO,
     SECOND_POLE,
     CURRENT_LIMIT,
-    DRIVER_LOSS,
 )
 """Every cause besides ``none``, in the order they are tried."""
 
