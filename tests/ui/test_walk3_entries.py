@@ -258,3 +258,30 @@ async def test_the_examples_of_tasks_11_to_15_look_like_values_of_the_lab_but_ar
                 assert all(not (a / 1.5 < x < a * 1.5) for a in answers[key]), (key, x)
                 assert any(a / 3 < x < a * 3 for a in answers[key]), (key, x)
         assert seen >= 11
+
+
+async def test_f3_takes_the_typing_to_the_row_of_the_new_voltage(quiet):
+    """Walk 4: on Task 5 '0.0335' was refused in the 3.5 V row; the group pressed F3 for
+    4.5 V and typed that reading, which went over the refused text in the 3.5 V row, and
+    the next reading into the 4.5 V row: every reading one row off, without a word."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task5")
+        await pilot.press("f3")  # 2.5 V
+        await settle(pilot)
+        await type_in(pilot, "i_ss@2.5", "29,8")
+        await pilot.press("f3")  # 3.5 V
+        await settle(pilot)
+        row = await type_in(pilot, "i_ss@3.5", "0.0335")
+        assert row.has_class("refused")
+        await pilot.press("f3")  # 4.5 V
+        await settle(pilot)
+        await pilot.press(*"37,2 mA", "enter")
+        await settle(pilot)
+        with app.session as s:
+            high = s.entry("i_ss@4.5")
+            mid = s.entry("i_ss@3.5")
+        assert high is not None and high.text == "37,2 mA"
+        assert mid is not None and mid.text != "37,2 mA"
+        assert _row(app, "i_ss@3.5").input.value == "0.0335"  # the refused text stays

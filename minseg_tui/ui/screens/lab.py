@@ -796,6 +796,20 @@ class LabScreen(StatusScreen):
         """Focus the entry after field ``key`` (stays put on the last one)."""
         self.pane.focus_after(key)
 
+    def watch_requested(self, level: float | None) -> None:
+        """F3 set the motor to ``level`` (V) while the group types in a row of another voltage
+        (Tasks 4-5): typing goes on in the first empty row of the new voltage (else its
+        first), so the next reading lands in the row of the voltage on the motor."""
+        if level is None or not self.is_attached:
+            return
+        panes = self.query(StepPane)
+        pane = panes.first() if panes else None
+        if pane is None or pane.current is None or pane.current.field.level in (None, level):
+            return
+        rows = [r for r in pane.rows() if not r.field.options and r.field.level == level]
+        if rows:
+            pane.focus_row(next((r for r in rows if r.is_empty), rows[0]))
+
     @on(CaptureRequested)
     def _capture(self, event: CaptureRequested) -> None:
         """F4: omega_ss from the settled window of the live stream."""
