@@ -70,6 +70,9 @@ _SHORT = {
 NOTES = ".notes"
 """The key ending of a step's own notes field."""
 
+DONE = ".done"
+"""The key ending of a step's done? field (ticked once the group did what it asks)."""
+
 STATUS_WORDS: tuple[tuple[str, str, str], ...] = (
     ("done", "✓", "done"),
     ("wrong", "✗", "answered but wrong"),
@@ -291,9 +294,11 @@ class StepPane(FieldForm):
 
     def landing_row(self) -> FieldRow | None:
         """The entry the step lands in: the first one with nothing in it, else the first;
-        on a step with a panel, its notes field does not count (the step lands at the top,
-        on what the panel shows). None: no such entry."""
-        rows = [r for r in self.rows() if self.panel is None or not r.field.key.endswith(NOTES)]
+        on a step with a panel, its notes and its done? do not count (the step lands at the
+        top, on what the panel shows). None: no such entry."""
+        rows = [
+            r for r in self.rows() if self.panel is None or not r.field.key.endswith((NOTES, DONE))
+        ]
         return next((r for r in rows if r.is_empty), rows[0] if rows else None)
 
     def focus_on(self, what: str) -> None:
