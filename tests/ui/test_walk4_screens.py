@@ -4,11 +4,13 @@ zooms of Tasks 11-12, the virtual multimeter's R."""
 
 from __future__ import annotations
 
-from textual.widgets import OptionList, RadioSet
+from textual.geometry import Region
+from textual.strip import Strip
+from textual.widgets import OptionList, RadioButton, RadioSet
 
-from minseg_tui.lab.content.steps import STEPS
+from minseg_tui.lab.content.steps import STEPS, step
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import settle, start_with_a_run, typing_box
+from tests.ui.helpers import goto, settle, start, start_with_a_run, typing_box
 
 
 def _mark(app, step_id: str) -> str:
@@ -46,3 +48,74 @@ async def test_the_model_check_is_done_when_the_group_ticks_done_not_by_a_note(q
         with app.session as s:
             assert s.step_status("model_check") == "done"
         assert typing_box(app) is None
+
+
+def _drawn(widget) -> list[Strip]:
+    """The lines ``widget`` draws on the screen now (it must be on it)."""
+    assert widget.region.area and widget.screen.region.contains_region(widget.region)
+    return list(widget.render_lines(Region(0, 0, *widget.outer_size)))
+
+
+def _text(widget) -> str:
+    return " ".join(" ".join(strip.text.split()) for strip in _drawn(widget)).strip()
+
+
+def _cursor(buttons) -> list[str]:
+    """The answers drawn with the mark of the one Space would tick ('▶' before it)."""
+    return [str(b.label) for b in buttons if _text(b).startswith("▶")]
+
+
+def _label(app, key: str) -> str:
+    return _text(_row(app, key).query_one(".field-label, .choice-label"))
+
+
+async def test_the_focused_field_is_marked_in_the_text_not_by_colour_alone(quiet):
+    """Walk 4 at 80x24 in a plain terminal: the focused box looked like the others (its
+    colour was all that told them apart). Space went into the notes instead of the done?
+    choice; Tab moved on to the next summary question and Space ticked an answer there.
+    The row the keys go to is marked '▶' before its label, and in a list of answers the
+    one Space would tick is marked '▶' in place of its button's left edge; Tab goes down the rows in order."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep1")
+        assert typing_box(app) is _row(app, "prep1.notes").input  # the first empty entry
+        assert _label(app, "prep1.notes") == "▶ notes"
+        assert _label(app, "prep1.done") == "done?"
+        await pilot.press("tab")
+        await settle(pilot)
+        done = _row(app, "prep1.done")
+        assert app.focused is done.query_one(RadioSet)
+        assert _label(app, "prep1.notes") == "notes"
+        assert _label(app, "prep1.done") == "▶ done?"
+        assert _cursor(done.query(RadioButton)) == ["we have read sections 2.1 and 2.6"]
+        await pilot.press("space")
+        await settle(pilot)
+        with app.session as s:
+            assert s.step_status("prep1") == "done" and s.entry("prep1.notes") is None
+
+        await goto(pilot, "summary")
+        questions = [f.key for f in step("summary").fields if f.options]
+        first, second = (_row(app, k) for k in questions[:2])
+        assert app.focused is first.query_one(RadioSet)
+        assert _label(app, questions[0]).startswith("▶ The MinSeg DC-motor is")
+        await pilot.press("tab")  # the next question, marked; the first one no longer
+        await settle(pilot)
+        assert app.focused is second.query_one(RadioSet)
+        assert not _label(app, questions[0]).startswith("▶")
+        assert _label(app, questions[1]).startswith("▶ The differential equation")
+        options = list(second.query(RadioButton))
+        assert _cursor(options) == ["a model"] and not _cursor(first.query(RadioButton))
+        await pilot.press("down")
+        await settle(pilot)
+        assert _cursor(options) == ["a system"]
+        for key in questions[2:]:  # Tab goes down the questions in order, then to the text
+            await pilot.press("tab")
+            await settle(pilot)
+            assert _label(app, key).startswith("▶ ")
+        await pilot.press("tab")
+        await settle(pilot)
+        assert typing_box(app) is _row(app, "summary.unclear").input
+        assert _label(app, "summary.unclear").startswith("▶ Most unclear")
+        with app.session as s:  # nothing was ticked on the way
+            assert all(s.entry(k) is None for k in questions)

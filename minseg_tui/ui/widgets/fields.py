@@ -13,6 +13,7 @@ from textual import events, on
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical, VerticalScroll
+from textual.content import Content
 from textual.geometry import Size
 from textual.message import Message
 from textual.reactive import reactive
@@ -30,9 +31,15 @@ def field_id(key: str) -> str:
     return "f-" + re.sub(r"[^A-Za-z0-9_-]", "_", key)
 
 
+CURSOR_MARK = "▶"
+"""In the place of a focused list's left button edge, the answer Space (or Enter) would tick:
+Textual shows it by colour alone."""
+
+
 class Choice(RadioButton):
-    """A radio button whose mark says whether it is chosen without colour (NO_COLOR, a
-    monochrome terminal): ● chosen, blank not."""
+    """A radio button whose marks say without colour (NO_COLOR, a monochrome terminal)
+    whether it is chosen, ● chosen, blank not, and whether Space would tick it
+    (:data:`CURSOR_MARK` before it while its list has the focus)."""
 
     def __init__(self, label: str, value: bool = False) -> None:
         super().__init__(label, value=value)
@@ -49,6 +56,13 @@ class Choice(RadioButton):
         """As many lines as the answer wraps to (Textual's toggle buttons take one)."""
         return Widget.get_content_height(self, container, viewport, width)
 
+    def render(self) -> Content:
+        drawn = super().render()
+        parent = self.parent
+        if self.has_class("-selected") and isinstance(parent, Widget) and parent.has_focus:
+            return Content.assemble((CURSOR_MARK, "bold"), drawn[len(self.BUTTON_LEFT) :])
+        return drawn
+
 
 class Ticks(SelectionList[int]):
     """A list to tick whose marks say which are ticked without colour: X ticked, blank not."""
@@ -61,6 +75,8 @@ class Ticks(SelectionList[int]):
             return strip
         ticked = self.get_option_at_index(meta["option"]).value in self.selected
         segments[1] = Segment("X" if ticked else " ", segments[1].style)
+        if self.has_focus and meta["option"] == self.highlighted:
+            segments[0] = Segment(CURSOR_MARK, segments[0].style)
         return Strip(segments, strip.cell_length)
 
 
@@ -79,6 +95,9 @@ Restoring = Literal["held", "undo", "redo"]
 before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
 
 RESTORING_KEYS: dict[str, Restoring] = {"escape": "held", "ctrl+z": "undo", "ctrl+y": "redo"}
+
+FOCUS_MARK = "▶ "
+"""Before the label of the row the keys go to: the focus seen without colour."""
 
 
 class EntryBox(Input, can_focus=False):
@@ -183,13 +202,40 @@ class FieldRow(Vertical):
         self._chosen = tuple(chosen)
         self._readonly = readonly
 
-    def compose(self) -> ComposeResult:
-        unit = f" [{self.field.unit}]" if self.field.unit else ""
+    @property
+    def label_text(self) -> str:
+        """The row's label as written beside its box or above its answers (its unit, or that
+        several answers may be ticked), without the focus mark."""
         if self.field.options:
-            yield Label(
-                self.field.label + (" (tick all that apply)" if self.field.multiple else ""),
-                classes="choice-label",
-            )
+            return self.field.label + (" (tick all that apply)" if self.field.multiple else "")
+        return self.field.label + (f" [{self.field.unit}]" if self.field.unit else "")
+
+    def show_focus(self, focused: bool) -> None:
+        """Mark the row as the one the keys go to (:data:`FOCUS_MARK` before its label, the
+        label bold), or not. Without colour (a plain or monochrome terminal) the focused
+        box looked like the others: Space went into the notes instead of the done? choice."""
+        if focused == self.has_class("-focus"):
+            return
+        self.set_class(focused, "-focus")
+        for choice in self.query(Choice):  # the cursor's mark comes or goes
+            choice.refresh()
+        labels = self.query(".field-label, .choice-label")
+        if labels:
+            labels.first(Label).update((FOCUS_MARK if focused else "") + self.label_text)
+
+    def on_descendant_focus(self, event: events.DescendantFocus) -> None:
+        """A list of answers took the focus: its row is marked (a text row is marked by
+        its form, which keeps the focus itself)."""
+        if self.field.options:
+            self.show_focus(True)
+
+    def on_descendant_blur(self, event: events.DescendantBlur) -> None:
+        if self.field.options:
+            self.show_focus(False)
+
+    def compose(self) -> ComposeResult:
+        if self.field.options:
+            yield Label(self.label_text, classes="choice-label", markup=False)
             if self.field.multiple:
                 yield Ticks(
                     *[(o, k, k in self._chosen) for k, o in enumerate(self.field.options)],
@@ -203,7 +249,7 @@ class FieldRow(Vertical):
         else:
             with Horizontal(classes="field-line"):
                 # as text, not markup: '[V]' would be read as a style and vanish
-                yield Label(f"{self.field.label}{unit}", classes="field-label", markup=False)
+                yield Label(self.label_text, classes="field-label", markup=False)
                 yield EntryBox(self._text, self.field.hint, self._readonly)
             yield Prose(self.field.hint, classes="field-hint")
         yield Prose("", classes="field-msg")
@@ -434,6 +480,7 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         for row, shown in ((old, False), (new, self.screen.focused is self)):
             if row is not None and row.is_attached and not row.field.options:
                 row.input.show_current(shown)
+                row.show_focus(shown)
 
     def on_focus(self) -> None:
         if self.current is not None and self.current.is_attached:
