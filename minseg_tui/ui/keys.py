@@ -127,6 +127,7 @@ KEYMAP: tuple[Key, ...] = (
     Key("← → on a rise", "the focused plot's cursor: t and omega at its column (Shift: 5)"),
     Key("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
     Key("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
+    Key("Ctrl+O", "the whole of the step's What to do, over its top (again: folds it)"),
     Key("Tab", "next field; Enter stores what you typed"),
     Key("Esc", "in a field: back to the answer stored, dropping what was typed over it"),
     Key("Ctrl+Z", "in a field: back to the answer stored before (again: further back)"),

@@ -119,3 +119,41 @@ async def test_the_focused_field_is_marked_in_the_text_not_by_colour_alone(quiet
         assert _label(app, "summary.unclear").startswith("▶ Most unclear")
         with app.session as s:  # nothing was ticked on the way
             assert all(s.entry(k) is None for k in questions)
+
+
+async def test_one_key_shows_the_whole_of_what_to_do_from_anywhere_on_the_step(quiet):
+    """At 80x24 the heading over a step scrolled down showed the first line of "What to do"
+    cut off, and nothing told the group how to read the rest but scrolling up, away from
+    the entry. The cut line ends with '… Ctrl+O more'; Ctrl+O, from the entry or from the
+    plot, shows all of it over the top of the step, the entry still in sight and typed
+    into; Ctrl+O again folds it."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        pane = app.screen.pane
+        heading = pane.query_one(".heading")
+        todo = heading.query_one(".heading-todo")
+        whole = "What to do: " + step("task12").todo
+        assert heading.display and pane.scroll_y > 0  # landed on the entry, under the plot
+        line = _text(todo)
+        assert line.endswith("… Ctrl+O more") and len(line) < len(whole)
+        assert whole.startswith(line.removesuffix("… Ctrl+O more"))
+        entry = _row(app, "own.T").input
+        for key in ("ctrl+o", "5"):  # typing goes on in the entry under the heading
+            await pilot.press(key)
+            await settle(pilot)
+        assert _text(todo) == whole + " (Ctrl+O folds it)"
+        assert typing_box(app) is entry and entry.value == "5"
+        assert entry.region.y >= heading.region.bottom  # not under the heading
+        await pilot.press("ctrl+o")
+        await settle(pilot)
+        assert _text(todo) == line
+        await pilot.press("shift+tab")  # to the plot: the key works there too
+        await settle(pilot)
+        assert app.focused is not None and app.focused.id == "plot-log"
+        await pilot.press("ctrl+o")
+        await settle(pilot)
+        assert heading.display and _text(todo) == whole + " (Ctrl+O folds it)"
+        await pilot.press("f1")
+        await settle(pilot)
+        assert "Ctrl+O" in str(app.screen.query_one("#help-keys").render())

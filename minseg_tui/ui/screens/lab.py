@@ -56,7 +56,7 @@ from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import FieldForm, FieldRow, Restoring, Store
 from minseg_tui.ui.widgets.footer import KeyFooter
-from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.ui.widgets.prose import Prose, wrap
 
 V = TypeVar("V")
 
@@ -113,7 +113,45 @@ def nav_label(step: Step, status: str = "todo") -> str:
 
 
 HEADING_ROWS = 2
-"""The rows of a step's :class:`Heading` (lab.tcss)."""
+"""The rows of a step's :class:`Heading` (lab.tcss), its whole "What to do" folded."""
+
+WHOLE_TODO_KEY = "Ctrl+O"
+"""The key that shows the whole of a step's "What to do" in its heading (and folds it)."""
+
+MORE = f"… {WHOLE_TODO_KEY} more"
+"""The end of the heading's "What to do" line when the rest of it does not fit."""
+
+FOLD = f" ({WHOLE_TODO_KEY} folds it)"
+"""The end of the whole "What to do" in the heading."""
+
+
+def todo_lines(todo: str, width: int, whole: bool) -> list[str]:
+    """The heading's "What to do" at ``width`` columns: one line, cut with :data:`MORE` at
+    its end when it is longer; or ``whole``, all of it wrapped, :data:`FOLD` at its end."""
+    text = "What to do: " + todo
+    if whole:
+        return wrap(text + FOLD, width)
+    if len(text) <= width:
+        return [text]
+    cut = text[: max(width - len(MORE) + 1, 0)]
+    cut = cut[: cut.rindex(" ")] if " " in cut else cut[:-1]  # a word cut off goes whole
+    return [cut.rstrip(" ,;:") + MORE]
+
+
+class TodoLine(Static):
+    """The heading's "What to do": its first line, saying when more follows and the key
+    that shows it, or all of it (:func:`todo_lines`)."""
+
+    def __init__(self, todo: str) -> None:
+        super().__init__("", classes="heading-todo", markup=False)
+        self.todo = todo
+        self.whole = False
+
+    def render(self) -> str:
+        return "\n".join(todo_lines(self.todo, self.content_size.width, self.whole))
+
+    def on_resize(self) -> None:
+        self.refresh(layout=self.whole)
 
 
 class Heading(Vertical):
@@ -121,15 +159,31 @@ class Heading(Vertical):
     the step while its own title is scrolled away (a layer of its own over the step, so the
     step's text does not move when it shows). At 80x24 a step taller than the screen landed
     on its entry with its title and instructions above the screen: the group did not see
-    what the step asks."""
+    what the step asks. :data:`WHOLE_TODO_KEY` shows all of what to do in it, over the step
+    (it showed only its first line, and the rest was above the screen), and folds it."""
 
     def __init__(self, step: Step) -> None:
+        self.todo = TodoLine(step.todo)
         super().__init__(
             Static(step.title, classes="heading-title", markup=False),
-            Static("What to do: " + step.todo, classes="heading-todo", markup=False),
+            self.todo,
             classes="heading",
         )
         self.display = False
+
+    @property
+    def whole(self) -> bool:
+        """All of what to do shows."""
+        return self.todo.whole
+
+    def show_whole(self, whole: bool) -> None:
+        self.todo.whole = whole
+        self.set_class(whole, "-whole")
+        self.todo.refresh(layout=True)
+
+    def rows(self, width: int) -> int:
+        """The rows it covers at ``width`` columns."""
+        return 1 + len(todo_lines(self.todo.todo, width, self.whole))
 
 
 class StepPane(FieldForm):
@@ -239,15 +293,32 @@ class StepPane(FieldForm):
         self.call_after_refresh(self._clear_heading, event.widget)
 
     def watch_scroll_y(self, old: float, new: float) -> None:
-        """The heading shows while the step's own title is scrolled away."""
+        """The heading shows while the step's own title is scrolled away, or while it shows
+        all of what to do."""
         super().watch_scroll_y(old, new)
         if self._heading is not None:
-            self._heading.display = round(new) > 0
+            self._heading.display = round(new) > 0 or self._heading.whole
 
     @property
     def heading_rows(self) -> int:
         """Rows the heading covers at the top of the step (0 while it is hidden)."""
-        return HEADING_ROWS if self._heading is not None and self._heading.display else 0
+        heading = self._heading
+        if heading is None or not heading.display:
+            return 0
+        return heading.rows(self.scrollable_content_region.width)
+
+    def toggle_whole_todo(self) -> None:
+        """:data:`WHOLE_TODO_KEY`: all of the step's "What to do" over its top, or folded
+        again to its first line; the entry the group is in stays in sight under it."""
+        heading = self._heading
+        if heading is None:
+            return
+        heading.show_whole(not heading.whole)
+        heading.display = round(self.scroll_y) > 0 or heading.whole
+        row = self.typing
+        focused = row.input if row is not None else self.screen.focused
+        if focused is not None and focused is not self and self in focused.ancestors:
+            self.call_after_refresh(self._clear_heading, focused)
 
     def _clear_heading(self, widget: Widget) -> None:
         """A focused ``widget`` under the heading (Textual scrolls a widget above the view to
@@ -395,6 +466,7 @@ class LabScreen(StatusScreen):
         Binding("shift+tab", "into_step(-1)", show=False),
         Binding("ctrl+l", "focus_nav", "Steps", show=False),
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
+        Binding("ctrl+o", "whole_todo", "What to do", show=False),
     ]
     COMMANDS = StatusScreen.COMMANDS | {StepCommands}
     AUTO_FOCUS = ".pane"
@@ -672,6 +744,10 @@ class LabScreen(StatusScreen):
         nav = self.query_one("#nav")
         nav.display = True
         nav.focus()
+
+    def action_whole_todo(self) -> None:
+        """Ctrl+O: the whole of the step's "What to do" (again: folded)."""
+        self.pane.toggle_whole_todo()
 
     def action_toggle_nav(self) -> None:
         """Hide or show the list of steps (more room for the step at 80 columns)."""
