@@ -4,13 +4,20 @@ zooms of Tasks 11-12, the virtual multimeter's R."""
 
 from __future__ import annotations
 
+import pytest
 from textual.geometry import Region
 from textual.strip import Strip
 from textual.widgets import OptionList, RadioButton, RadioSet
 
 from minseg_tui.lab.content.steps import STEPS, step
+from minseg_tui.model.plant import MeterReading
+from minseg_tui.ui.messages import MeterRead
+from minseg_tui.ui.panels.meter import MeterPanel
+from minseg_tui.ui.panels.results import ResultsPanel, StepPlot
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import goto, settle, start, start_with_a_run, typing_box
+from minseg_tui.ui.widgets.plots import Canvas
+from tests.ui.conftest import board_url, real_app
+from tests.ui.helpers import Heard, goto, settle, start, start_with_a_run, typing_box
 
 
 def _mark(app, step_id: str) -> str:
@@ -157,3 +164,91 @@ async def test_one_key_shows_the_whole_of_what_to_do_from_anywhere_on_the_step(q
         await pilot.press("f1")
         await settle(pilot)
         assert "Ctrl+O" in str(app.screen.query_one("#help-keys").render())
+
+
+def _cursor_columns(canvas: Canvas) -> set[int]:
+    """The columns the cursor's line '┆' stands on, in the canvas."""
+    return {c for ln in str(canvas.render()).split("\n") for c, ch in enumerate(ln) if ch == "┆"}
+
+
+async def test_the_rise_cursor_stops_on_the_last_sample_and_reads_it(quiet):
+    """Shift+→ to the end of Task 12's close-up parked the cursor on the frame's last column,
+    a hair past the last sample: it read 'no sample there' and its line vanished. On the
+    edge it read 't = -6.94e-15 ms'. It now stops on the last column with a sample, drawn
+    and read there, and the edge reads 0 ms."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        panel = app.screen.query_one(ResultsPanel)
+        plot = panel.query_one(StepPlot)
+        canvas = plot.query_one(Canvas)
+        await pilot.press("shift+tab")
+        await settle(pilot)
+        assert app.focused is plot and panel.reading is not None
+        said = " ".join(str(panel.query_one("#cursor").render()).split())
+        assert said.startswith("┆ cursor: t = 0 ms after the edge") and "e-" not in said
+        first, last = plot.columns or (0, 0)
+        for _ in range(last - first):
+            await pilot.press("shift+right")
+        await settle(pilot)
+        view = panel.view
+        assert view is not None
+        rise = view.rises[0]
+        x = view.t[(view.t >= rise.c0) & (view.t <= rise.c1)] - rise.t0
+        assert panel.reading is not None and panel.reading.t == pytest.approx(x[-1])
+        assert len(_cursor_columns(canvas)) == 1 and max(_cursor_columns(canvas)) <= last
+        assert "no sample there" not in str(panel.query_one("#cursor").render())
+
+
+async def test_task11_zooms_on_the_whole_high_level_to_read_omega_ss(quiet):
+    """Task 11's zoom ended 0.3 s after the edge, 5 T: the settled speed showed over a
+    fifth of a second, in 1.5 rad/s rows, and was guessed. It now runs to the end of the
+    high level (1.4 s after the edge on the manual's run), and the cursor reads the speed
+    anywhere on it."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        panel = app.screen.query_one(ResultsPanel)
+        plot = panel.query_one(StepPlot)
+        view = panel.view
+        assert view is not None and view.rises
+        rise = view.rises[0]
+        lo, hi = plot.traces_xlim or (0.0, 0.0)
+        ts = 0.025
+        assert hi >= rise.t1 - rise.t0 - ts - 1e-9  # to the last sample of the high level
+        assert hi > 4 * (rise.z1 - rise.t0)  # 0.3 s before
+        note = " ".join(str(panel.query_one("#zoom-note").render()).split())
+        assert "to the end of its high level" in note and "read omega_ss" in note
+        await pilot.press("shift+tab")
+        await settle(pilot)
+        first, last = plot.columns or (0, 0)
+        for _ in range((last - first) // 2):  # to the middle of the settled part
+            await pilot.press("right")
+        await settle(pilot)
+        reading = panel.reading
+        assert reading is not None and reading.t > 0.5
+        assert abs(reading.omega - rise.omega_ss) < 0.5  # one count in 25 ms is 0.35 rad/s
+
+
+async def test_the_virtual_multimeter_holds_its_R_between_readings(tmp_path):
+    """The virtual multimeter read 5.3 or 5.4 ohm between readings (a one-sided noise half
+    a digit wide on R = 5.26 ohm); a meter on a resistor settles on one value. R now reads
+    the motor's with the leads' 0.04 ohm and a noise a tenth of a digit: 5.3 ohm, every
+    reading. Seed 6: the old meter read 5.4 ohm in its 1st and 14th readings."""
+    app = real_app(tmp_path / "sessions", board_url(seed=6))
+    readings: list[MeterReading] = []
+    heard = Heard()
+
+    def hook(message) -> None:
+        heard.hook(message)
+        if isinstance(message, MeterRead) and message.reading is not None:
+            readings.append(message.reading)
+
+    async with app.run_test(size=(80, 24), message_hook=hook) as pilot:
+        await settle(pilot, lambda: app.device is not None)
+        await start(pilot)
+        await goto(pilot, "task2")
+        await heard.until(pilot, lambda: len(readings) >= 20)
+        assert {m.R for m in readings} == {5.3}
+        line = str(app.screen.query_one(MeterPanel).render())
+        assert line.endswith("· 5.3 Ω")
