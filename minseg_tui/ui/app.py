@@ -76,6 +76,7 @@ from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen, split_names
 from minseg_tui.ui.shared import Shared
+from minseg_tui.ui.widgets.fields import after_typed_keys
 
 ReportWriter = Callable[[Session], Sequence[Path]]
 """Writes a session's report into its folder; the files written (the CLI hands in
@@ -296,12 +297,17 @@ class LabApp(App[None]):
                 timeout=15,
             )
 
-    def action_command_palette(self) -> None:
-        """Ctrl+P: the palette, closed once however many Enters it is handed (what stands in
-        the step's entries stored first)."""
+    async def action_command_palette(self) -> None:  # type: ignore[override]
+        # (Textual's is not async; its actions may be, and this one waits for the keys)
+        """Ctrl+P: the palette, closed once however many Enters it is handed; after the keys
+        typed before it (what they typed stored first), before those typed after it (they
+        go into the palette)."""
+        await after_typed_keys(self, self._open_palette)
+
+    async def _open_palette(self) -> None:
         self._store_typed()
         if self.use_command_palette and not isinstance(self.screen, CommandPalette):
-            self.push_screen(Palette(id="--command-palette"))
+            await self.push_screen(Palette(id="--command-palette"))
 
     async def action_start_lab(self) -> None:
         """Enter on the start screen: open the lab it asks for, and return once the lab shows
@@ -805,10 +811,13 @@ class LabApp(App[None]):
         self.push_screen(SaveElsewhereScreen(str(here), self.save_elsewhere))
 
     async def action_quit(self) -> None:
-        """Ctrl+Q: quit; everything typed is stored first. While a run is being recorded,
-        ask first: keep recording, or stop it and quit (Ctrl+Q again quits). If something is
-        not on disk (a failed save), ask: keep working, save to another folder, or quit
-        anyway."""
+        """Ctrl+Q: quit, after the keys typed before it; everything typed is stored first.
+        While a run is being recorded, ask first: keep recording, or stop it and quit (Ctrl+Q
+        again quits). If something is not on disk (a failed save), ask: keep working, save to
+        another folder, or quit anyway."""
+        await after_typed_keys(self, self._quit)
+
+    def _quit(self) -> None:
         screen = self._lab_screen()
         if screen is not None:
             screen.store_typed()
@@ -848,9 +857,13 @@ class LabApp(App[None]):
         if not isinstance(self.screen, HelpScreen):
             self.push_screen(HelpScreen(KEYS))
 
-    def action_stop_motor(self) -> None:
-        """F2: motor off now; a run in progress keeps what it recorded (and what stands in
-        the step's entries is stored: the key runs ahead of the step's form)."""
+    async def action_stop_motor(self) -> None:
+        """F2: motor off, after the keys typed before it (:meth:`stop_motor`)."""
+        await after_typed_keys(self, self.stop_motor)
+
+    def stop_motor(self) -> None:
+        """Motor off now; a run in progress keeps what it recorded, and what stands in the
+        step's entries is stored."""
         self._store_typed()
         self.motor = "off"
         self.requested = None
@@ -956,7 +969,7 @@ class LabApp(App[None]):
 
     def switch_to_virtual(self) -> None:
         """Drop the board and use the virtual MinSeg."""
-        self.action_stop_motor()
+        self.stop_motor()
         self.workers.cancel_group(self, "stream")
         old, self._device = self._device, None
         if old is not None:
@@ -976,7 +989,7 @@ class LabApp(App[None]):
         for command in super().get_system_commands(screen):
             if command.title != "Keys":
                 yield command
-        yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
+        yield SystemCommand("Stop motor", "Motor off now (F2)", self.stop_motor)
         offered = screen.panel_keys() if isinstance(screen, LabScreen) else {}
         for action, title, help_text in (
             (

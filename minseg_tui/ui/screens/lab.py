@@ -54,7 +54,13 @@ from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
-from minseg_tui.ui.widgets.fields import FieldForm, FieldRow, Restoring, Store
+from minseg_tui.ui.widgets.fields import (
+    FieldForm,
+    FieldRow,
+    Restoring,
+    Store,
+    after_typed_keys,
+)
 from minseg_tui.ui.widgets.footer import KeyFooter
 from minseg_tui.ui.widgets.prose import Prose
 
@@ -417,11 +423,6 @@ class LabScreen(StatusScreen):
         self._refresh = refresh
         self._shown: str | None = None
         """The step last asked for (its widgets may not be in the form yet)."""
-        self._jump: tuple[str | None] | None = None
-        """Set by :meth:`go_to`: what to focus once its step is shown (in a tuple: the focus
-        may be None, "leave it")."""
-        self._paging = False
-        """Set by PgDn/PgUp: the step shown next takes the focus, wherever it was."""
         self._undone: dict[str, list[str]] = {}
         """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
         forward again (until another answer is stored in the field)."""
@@ -446,8 +447,8 @@ class LabScreen(StatusScreen):
         with self.session as s:
             current = s.current_step
         start = current if current in STEP_IDS else STEP_IDS[0]
-        self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
-        await self.show_step(start)
+        self._highlight(STEP_IDS.index(start))
+        await self.show_step(start, "entry")
         self.shown.set()
 
     # -- the step on screen --------------------------------------------------------------
@@ -543,9 +544,10 @@ class LabScreen(StatusScreen):
                 for f in step.fields
             ]
 
-    async def show_step(self, step_id: str) -> None:
+    async def show_step(self, step_id: str, focus: str | None) -> None:
         """Put ``step_id`` on the right and remember it in the session; return once its pane
-        is mounted and focused (a key handled after this one acts on the new step)."""
+        is mounted and ``focus`` focused (see :meth:`StepPane.focus_on`; None: the focus stays
+        where it is), so that a key handled after this one acts on the new step."""
         if self._shown == step_id:  # not the DOM: a pane mounted with the screen is not in it yet
             return
         self.store_typed()  # what stands in the entries of the step being left
@@ -555,11 +557,6 @@ class LabScreen(StatusScreen):
             with self.session as s:
                 s.go_to(step_id)
         panel = self._panel_for(step)
-        if self._jump is not None:
-            (focus,), self._jump = self._jump, None
-        else:  # moved with PgDn/PgUp: land in the step; browsing the list stays on the list
-            focus = None if self.focused is self.query_one("#nav") and not self._paging else "entry"
-        self._paging = False
         pane = self.pane
         self.post_message(StepShown(step))
         await pane.show(step, panel, self._rows(step))
@@ -609,10 +606,20 @@ class LabScreen(StatusScreen):
     # -- moving ------------------------------------------------------------------------
     @on(OptionList.OptionHighlighted, "#nav")
     async def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
+        """The group browses the list of steps: each step shows, the focus stays on the list
+        (moved by the mouse from elsewhere: the step's entry)."""
         if event.option_index != event.option_list.highlighted:
             return  # stale: the list's first highlight on mount, after a resume moved it on
         if event.option.id:
-            await self.show_step(event.option.id)
+            focus = None if self.focused is event.option_list else "entry"
+            await self.show_step(event.option.id, focus)
+
+    def _highlight(self, index: int) -> None:
+        """Highlight step ``index`` in the list of steps without the message that the group
+        browsed there (the caller shows the step, with the focus it wants)."""
+        nav = self.query_one("#nav", OptionList)
+        with nav.prevent(OptionList.OptionHighlighted):
+            nav.highlighted = index
 
     @on(OptionList.OptionSelected, "#nav")
     def _selected(self, event: OptionList.OptionSelected) -> None:
@@ -628,25 +635,23 @@ class LabScreen(StatusScreen):
             if focus is not None:
                 self.pane.focus_on(focus)
             return
-        self._jump = (focus,)
-        nav.highlighted = index
+        self._highlight(index)
+        self.call_later(self.show_step, step_id, focus)
 
     async def _move(self, delta: int) -> None:
-        """PgDn/PgUp: the next or previous step, shown (and focused) before the keys typed
-        after it are handed on, so they land in the new step."""
-        if self.focused is self.pane and not self.pane.running:
-            raise SkipAction()  # the form's: after the keys typed before it
+        """PgDn/PgUp: the next or previous step, shown with its entry focused after the keys
+        typed before the key (they land in the step being left) and before those typed after
+        it are handed on (they land in the new step)."""
         nav = self.query_one("#nav", OptionList)
         index = max(0, min(len(STEPS) - 1, (nav.highlighted or 0) + delta))
         if index == nav.highlighted:
             return
-        self._paging = True
-        nav.highlighted = index  # the first of its message and the call below shows the step
+        self._highlight(index)
         shown = asyncio.Event()
 
         async def show() -> None:  # on the screen's own queue (its panels bind to it)
             try:
-                await self.show_step(STEP_IDS[index])
+                await self.show_step(STEP_IDS[index], "entry")
             finally:
                 shown.set()
 
@@ -654,10 +659,10 @@ class LabScreen(StatusScreen):
             await shown.wait()
 
     async def action_next_step(self) -> None:
-        await self._move(1)
+        await after_typed_keys(self.app, partial(self._move, 1))
 
     async def action_prev_step(self) -> None:
-        await self._move(-1)
+        await after_typed_keys(self.app, partial(self._move, -1))
 
     def action_into_step(self, delta: int) -> None:
         """Tab (Shift+Tab) outside the step: into its first (last) field or widget."""
