@@ -25,6 +25,7 @@ import threading
 import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import replace
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -889,40 +890,41 @@ class LabApp(App[None]):
         """A panel key is live (and in the footer) only on the steps whose panel has it."""
         if action in PANEL_ACTIONS:
             screen = self._lab_screen()
-            return screen is not None and action in screen.panel_keys()
+            return screen is not None and screen.offers(action)
         return True
 
-    async def _press(self, action: str) -> None:
+    # a panel key's binding, whatever has the focus: the step panel's own action runs
+    async def _panel_key(self, action: str) -> None:
         screen = self._lab_screen()
         if screen is not None:
-            await screen.press(action)
+            await screen.run_panel_key(action)
 
     async def action_set_voltage(self) -> None:
-        await self._press("set_voltage")
+        await self._panel_key("set_voltage")
 
     async def action_capture(self) -> None:
-        await self._press("capture")
+        await self._panel_key("capture")
 
     async def action_run_steps(self) -> None:
-        await self._press("run_steps")
+        await self._panel_key("run_steps")
 
     async def action_run_fast(self) -> None:
-        await self._press("run_fast")
+        await self._panel_key("run_fast")
 
     async def action_formula(self) -> None:
-        await self._press("formula")
+        await self._panel_key("formula")
 
     async def action_zoom_next(self) -> None:
-        await self._press("zoom_next")
+        await self._panel_key("zoom_next")
 
     async def action_pick_prev(self) -> None:
-        await self._press("pick_prev")
+        await self._panel_key("pick_prev")
 
     async def action_pick_next(self) -> None:
-        await self._press("pick_next")
+        await self._panel_key("pick_next")
 
     async def action_reveal(self) -> None:
-        await self._press("reveal")
+        await self._panel_key("reveal")
 
     def action_not_here(self, what: str) -> None:
         """A panel key on a step whose panel does not have it (nothing off the lab screen)."""
@@ -990,7 +992,7 @@ class LabApp(App[None]):
             if command.title != "Keys":
                 yield command
         yield SystemCommand("Stop motor", "Motor off now (F2)", self.stop_motor)
-        offered = screen.panel_keys() if isinstance(screen, LabScreen) else {}
+        lab = screen if isinstance(screen, LabScreen) else None
         for action, title, help_text in (
             (
                 "set_voltage",
@@ -1007,9 +1009,8 @@ class LabApp(App[None]):
                 "says so (Ctrl+R)",
             ),
         ):
-            run = offered.get(action)
-            if run is not None:
-                yield SystemCommand(title, help_text, run)
+            if lab is not None and lab.offers(action):
+                yield SystemCommand(title, help_text, partial(lab.run_panel_key, action))
         yield SystemCommand(
             "Board check",
             "Does the wheel turn when asked, and does the count follow it? (F10)",

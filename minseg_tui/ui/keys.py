@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from textual.binding import Binding
+from textual.binding import Binding, BindingType
 
 
 @dataclass(frozen=True)
@@ -148,6 +148,16 @@ def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
     what it is), a lab assistant's keys last."""
     panel = sorted((k for k in KEYMAP if k.panel), key=lambda k: k.assistant)
     return tuple((k.keys, k.action, k.label, k.panel) for k in panel)
+
+
+def panel_bindings(*actions: str) -> list[BindingType]:
+    """A step panel's ``BINDINGS``: the keys of ``actions`` (the panel's ``action_``
+    methods), with their footer labels."""
+    return [
+        Binding(k.keys, k.action, k.label, show=bool(k.label))
+        for k in KEYMAP
+        if k.panel and k.action in actions
+    ]
 
 
 def app_bindings() -> list[Binding]:

@@ -11,6 +11,7 @@ from textual.widgets import Collapsible, Input
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import CheckView
+from minseg_tui.ui.keys import panel_bindings
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -30,6 +31,8 @@ class ModelCheckPanel(ViewPanel[CheckView]):
     what the check cannot say. A log recorded elsewhere can be loaded (Enter in the path
     asks for it): its box stands under the step's notes (:meth:`after_rows`), so that Tab
     reaches the notes first and notes are never typed into it."""
+
+    BINDINGS = panel_bindings("zoom_next")
 
     def __init__(self) -> None:
         super().__init__()
@@ -122,7 +125,7 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         traces.append(Trace(t, om - ba, "first order", "braille", colour=1))
         residual.show(traces, span)
 
-    def zoom_next(self) -> None:
+    def action_zoom_next(self) -> None:
         """F9: the close-up, or the whole log."""
         self.close_up = not self.close_up
         self.show_view()

@@ -97,9 +97,11 @@ def marks_legend() -> str:
 STEP_IDS = tuple(s.id for s in STEPS)
 
 PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = panel_keys()
-"""Keys that act on the shown step's panel: (keys, the app's action, footer label, what it is;
-no label: not in the footer). The footer shows a key on the steps whose panel offers it
-(:meth:`LabScreen.panel_keys`); elsewhere the key says that it is not part of this step. None
+"""Keys that act on the shown step's panel: (keys, the panel's action, footer label, what it
+is; no label: not in the footer). Each panel binds its own (its ``BINDINGS``, its ``action_``
+methods); the app binds them too, for wherever the focus is, and runs the panel's action
+(:meth:`LabScreen.run_panel_key`). The footer shows a key on the steps whose panel offers it
+(:meth:`LabScreen.offers`); elsewhere the key says that it is not part of this step. None
 is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
 moves). The app binds them (its keys come first in the footer; Reveal, a lab assistant's
 key, is the last, the first the footer leaves out where a line cannot hold them all)."""
@@ -475,38 +477,21 @@ class LabScreen(StatusScreen):
             return None
         return panes.first().panel if panes else None
 
-    def panel_keys(self) -> dict[str, Callable[[], object]]:
-        """The panel keys of the step shown (:data:`PANEL_KEYS`): action -> what its panel
-        does (none on a step without a panel, or whose panel has no keys)."""
+    def offers(self, action: str) -> bool:
+        """Whether panel key ``action`` (:data:`PANEL_KEYS`) acts on the step shown: its panel
+        has the key (its ``BINDINGS``) and it does something here (its ``check_action``)."""
         panel = self.panel
-        if isinstance(panel, LivePanel):
-            keys = {"set_voltage": panel.set_voltage, "capture": panel.capture}
-            return {action: run for action, run in keys.items() if panel.offers(action)}
-        if isinstance(panel, StepRunPanel):
-            return {"run_steps": panel.run_steps, "run_fast": panel.run_fast}
-        if isinstance(panel, TablePanel):
-            return {"formula": panel.formula}
-        if isinstance(panel, ResultsPanel):
-            return {
-                "zoom_next": panel.zoom_next,
-                "pick_prev": panel.pick_prev,
-                "pick_next": panel.pick_next,
-                "reveal": panel.reveal,
-            }
-        if isinstance(panel, ModelCheckPanel):
-            return {"zoom_next": panel.zoom_next}
-        return {}
+        if panel is None or action not in {b.action for b in Binding.make_bindings(panel.BINDINGS)}:
+            return False
+        return panel.check_action(action, ()) is not False
 
-    async def press(self, action: str) -> None:
-        """Panel key ``action`` (:data:`PANEL_KEYS`): what the step's panel does (nothing on
-        a step whose panel does not have it). F4's capture is done before this returns, so
-        the keys typed after it act on the result."""
-        run = self.panel_keys().get(action)
-        if run is None:
-            return
-        asked = run()
-        if isinstance(asked, CaptureRequested):
-            await asked.done.wait()
+    async def run_panel_key(self, action: str) -> None:
+        """Panel key ``action``: the step's panel runs its action (nothing on a step whose
+        panel does not have it), and this returns once it is done (F4's capture: the keys
+        typed after it act on the result)."""
+        panel = self.panel
+        if panel is not None and self.offers(action):
+            await self.app.run_action(action, panel)
 
     def _panel_for(self, step: Step) -> Widget | None:
         """The panel of ``step``'s kind (None for steps that only take entries), bound to the
