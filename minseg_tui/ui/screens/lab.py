@@ -158,7 +158,13 @@ class StepPane(FieldForm):
         step landed in, while it has the focus (placed again from the top of the step: the
         panel's view comes from a worker, before or after the landing, and moves the entry
         down); the focused entry; or nothing once the group scrolled (arrows, mouse) since
-        the focus last moved in the step: it stays where they put it."""
+        the focus last moved in the step: it stays where they put it.
+
+        A flag of ours, as Textual offers nothing for it: it scrolls a widget into view when
+        the widget takes the focus, once, not when the content above it changes height later
+        (``Widget.anchor`` keeps a scrollable's end in view, for logs), and it has no event
+        that tells the group's scrolling from the program's (the form learns it from the
+        mouse wheel and its own arrow-key actions)."""
 
     async def show(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
         """Put ``step``'s widgets in the form in place of the last step's; return once they
@@ -325,7 +331,14 @@ class StepPane(FieldForm):
 
 class StepList(OptionList):
     """The list of steps: a character typed on it goes into the step's first empty entry
-    (:meth:`FieldForm.take`), not nowhere."""
+    (:meth:`FieldForm.take`), not nowhere.
+
+    A key handler, because nothing else of Textual's does it: a binding names a key, not
+    "any printable character"; an OptionList lets a character bubble up to the screen and
+    the app, where no one takes it; and the list keeps its focus (Ctrl+L, the arrows browse
+    the steps), so ``can_focus=False`` or a focus move would lose that. The handler runs in
+    the list's own queue, in the order typed, and hands the character to the form by a plain
+    call, no second queue: the characters after it follow it into the same entry."""
 
     def on_key(self, event: events.Key) -> None:
         screen = self.screen
