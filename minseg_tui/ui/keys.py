@@ -7,8 +7,10 @@ once."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
-from textual.binding import Binding, BindingType
+from textual.binding import Binding
+from textual.widget import Widget
 
 
 @dataclass(frozen=True)
@@ -150,14 +152,12 @@ def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
     return tuple((k.keys, k.action, k.label, k.panel) for k in panel)
 
 
-def panel_bindings(*actions: str) -> list[BindingType]:
-    """A step panel's ``BINDINGS``: the keys of ``actions`` (the panel's ``action_``
-    methods), with their footer labels."""
-    return [
-        Binding(k.keys, k.action, k.label, show=bool(k.label))
-        for k in KEYMAP
-        if k.panel and k.action in actions
-    ]
+class PanelKeys(Widget):
+    """A step panel with keys (:func:`panel_keys`): ``KEYS``, the actions of those it has,
+    each done by its ``action_`` method of that name; its ``check_action`` says on which
+    steps one does nothing. The app binds the keys (:class:`~minseg_tui.ui.app.LabApp`)."""
+
+    KEYS: ClassVar[tuple[str, ...]] = ()
 
 
 def app_bindings() -> list[Binding]:

@@ -14,7 +14,7 @@ from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import format_spread
 from minseg_tui.ui.device import DeviceInfo
-from minseg_tui.ui.keys import panel_bindings
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
 from minseg_tui.ui.panels.meter import MeterPanel
@@ -23,13 +23,13 @@ from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
 
-class LivePanel(Vertical):
+class LivePanel(Vertical, PanelKeys):
     """Angle and speed of the last seconds from the ``live`` buffer (redrawn every
     ``refresh`` s; never per sample), the manual's speed beside the timestamp one; the
     steady-state indicator (Task 4); F3 asks for the next voltage, F4 for a capture; the
     multimeter. Shows the app's ``requested`` voltage, ``meter`` reading and ``device``."""
 
-    BINDINGS = panel_bindings("set_voltage", "capture")
+    KEYS = ("set_voltage", "capture")
 
     requested: reactive[float | None] = reactive(None)
     meter: reactive[MeterReading | None] = reactive(None)

@@ -11,7 +11,7 @@ from textual.widgets import Collapsible, Input
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import CheckView
-from minseg_tui.ui.keys import panel_bindings
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -21,7 +21,7 @@ DETAILS = "Details: figures, evidence, noise · Enter opens"
 """The fold's title (the details follow the sentences a student reads first)."""
 
 
-class ModelCheckPanel(ViewPanel[CheckView]):
+class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
     """What the first-order model gets wrong in the run: first the close-up where the cause
     acts (measured, both models, and their residuals against the noise floor), F9 switches
     to the whole log and back; under it two or three sentences a student reads first (what
@@ -32,7 +32,7 @@ class ModelCheckPanel(ViewPanel[CheckView]):
     asks for it): its box stands under the step's notes (:meth:`after_rows`), so that Tab
     reaches the notes first and notes are never typed into it."""
 
-    BINDINGS = panel_bindings("zoom_next")
+    KEYS = ("zoom_next",)
 
     def __init__(self) -> None:
         super().__init__()

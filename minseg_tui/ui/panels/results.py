@@ -16,7 +16,7 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import ResultsView
 from minseg_tui.quantities import format_value
-from minseg_tui.ui.keys import panel_bindings
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -75,11 +75,11 @@ class StepPlot(TracePlot):
                 p.toggle_zoom()
 
 
-class ResultsPanel(ViewPanel[ResultsView]):
+class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
     """Tasks 11-15: the step log plotted, zoom to a step, K, T (63 % and least squares with
     its interval), J, the model, omega at 5 V, and the group's readings beside them."""
 
-    BINDINGS = panel_bindings("zoom_next", "pick_prev", "pick_next", "reveal")
+    KEYS = ("zoom_next", "pick_prev", "pick_next", "reveal")
 
     def __init__(self, step: Step) -> None:
         super().__init__("results")

@@ -9,18 +9,18 @@ from textual.widgets import DataTable
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import TableView
-from minseg_tui.ui.keys import panel_bindings
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.prose import Prose
 
 
-class TablePanel(ViewPanel[TableView]):
+class TablePanel(ViewPanel[TableView], PanelKeys):
     """The table of Tasks 6-9 with the final values and warnings; F7 (or Enter on a cell)
     shows the formula behind the cell. The warnings come under the group's entries (a step
     lands on its first entry: at 80x24 the warnings above it pushed the table and the step's
     title off the screen)."""
 
-    BINDINGS = panel_bindings("formula")
+    KEYS = ("formula",)
 
     def __init__(self) -> None:
         super().__init__()

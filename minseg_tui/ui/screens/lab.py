@@ -36,7 +36,7 @@ from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
-from minseg_tui.ui.keys import panel_keys
+from minseg_tui.ui.keys import PanelKeys, panel_keys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
     CaptureRequested,
@@ -98,13 +98,16 @@ STEP_IDS = tuple(s.id for s in STEPS)
 
 PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = panel_keys()
 """Keys that act on the shown step's panel: (keys, the panel's action, footer label, what it
-is; no label: not in the footer). Each panel binds its own (its ``BINDINGS``, its ``action_``
-methods); the app binds them too, for wherever the focus is, and runs the panel's action
+is; no label: not in the footer). Each panel names its own (:class:`~minseg_tui.ui.keys.PanelKeys`) and does
+them in its ``action_`` methods; the app binds them, for wherever the focus is (and in one
+place in the footer's order, whatever has the focus: bindings of the panel itself would
+come first while a widget of it has the focus), and runs the panel's action
 (:meth:`LabScreen.run_panel_key`). The footer shows a key on the steps whose panel offers it
 (:meth:`LabScreen.offers`); elsewhere the key says that it is not part of this step. None
 is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
 moves). The app binds them (its keys come first in the footer; Reveal, a lab assistant's
 key, is the last, the first the footer leaves out where a line cannot hold them all)."""
+
 
 PANEL_ACTIONS = frozenset(action for _, action, _, _ in PANEL_KEYS)
 
@@ -492,9 +495,9 @@ class LabScreen(StatusScreen):
 
     def offers(self, action: str) -> bool:
         """Whether panel key ``action`` (:data:`PANEL_KEYS`) acts on the step shown: its panel
-        has the key (its ``BINDINGS``) and it does something here (its ``check_action``)."""
+        has the key (its ``KEYS``) and it does something here (its ``check_action``)."""
         panel = self.panel
-        if panel is None or action not in {b.action for b in Binding.make_bindings(panel.BINDINGS)}:
+        if not isinstance(panel, PanelKeys) or action not in panel.KEYS:
             return False
         return panel.check_action(action, ()) is not False
 
