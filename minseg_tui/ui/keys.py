@@ -7,8 +7,10 @@ once."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 from textual.binding import Binding
+from textual.widget import Widget
 
 
 @dataclass(frozen=True)
@@ -149,6 +151,14 @@ def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
     what it is), a lab assistant's keys last."""
     panel = sorted((k for k in KEYMAP if k.panel), key=lambda k: k.assistant)
     return tuple((k.keys, k.action, k.label, k.panel) for k in panel)
+
+
+class PanelKeys(Widget):
+    """A step panel with keys (:func:`panel_keys`): ``KEYS``, the actions of those it has,
+    each done by its ``action_`` method of that name; its ``check_action`` says on which
+    steps one does nothing. The app binds the keys (:class:`~minseg_tui.ui.app.LabApp`)."""
+
+    KEYS: ClassVar[tuple[str, ...]] = ()
 
 
 def app_bindings() -> list[Binding]:

@@ -18,6 +18,7 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import ResultsView
 from minseg_tui.quantities import format_value
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -80,9 +81,11 @@ class StepPlot(TracePlot):
                 p.toggle_zoom()
 
 
-class ResultsPanel(ViewPanel[ResultsView]):
+class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
     """Tasks 11-15: the step log plotted, zoom to a step, K, T (63 % and least squares with
     its interval), J, the model, omega at 5 V, and the group's readings beside them."""
+
+    KEYS = ("zoom_next", "pick_prev", "pick_next", "reveal")
 
     def __init__(self, step: Step) -> None:
         super().__init__("results")
@@ -271,7 +274,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self.cursor = column
         self._plot()
 
-    def reveal(self) -> None:
+    def action_reveal(self) -> None:
         """Ctrl+R (a lab assistant): show this step's computed values before the group answers."""
         self.post_message(RevealRequested(self.step.id))
 
@@ -283,11 +286,11 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
         self._plot()
 
-    def pick_prev(self) -> None:
+    def action_pick_prev(self) -> None:
         """alt+left: the previous rising step."""
         self.pick(-1)
 
-    def pick_next(self) -> None:
+    def action_pick_next(self) -> None:
         """alt+right: the next rising step."""
         self.pick(1)
 
@@ -296,7 +299,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self.zoom = None if self.zoom is not None else 0
         self._plot()
 
-    def zoom_next(self) -> None:
+    def action_zoom_next(self) -> None:
         """F9: the next step, then the whole log, then the first step again."""
         if self.view is None or not self.view.rises:
             return

@@ -6,11 +6,13 @@ import asyncio
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
+from inspect import isawaitable
 from typing import Literal
 
 from rich.segment import Segment
 from textual import events, on
-from textual.app import ComposeResult
+from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical, VerticalScroll
 from textual.content import Content
@@ -458,10 +460,6 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         self._taking = False
         """Set by :meth:`take` until the form handles a key of its own: characters typed
         elsewhere are on their way into the current row."""
-        self.running = False
-        """A key's binding runs on the form's behalf (:meth:`_binding`): a priority binding
-        the app ran ahead of the form's queue leaves the key to the form unless this is
-        set (:class:`~minseg_tui.ui.screens.lab.LabScreen`'s PgDn/PgUp)."""
 
     # -- rows ------------------------------------------------------------------------------
     def rows(self) -> list[FieldRow]:
@@ -656,20 +654,28 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         if bound is None or bound.node is self or not bound.enabled:
             return False
         self._own(event)
+        await self._act(partial(self.app.run_action, bound.binding.action, bound.node))
+        return True
+
+    def in_turn(self, work: Callable[[], object]) -> None:
+        """Run ``work`` (a key's action) after the keys the form was handed so far and
+        before those it is handed next, as :meth:`_binding` runs a key's binding."""
+        self.call_later(self._act, work)
+
+    async def _act(self, work: Callable[[], object]) -> None:
+        """Store what stands in the current row, then run ``work`` on the app's queue and wait
+        for it: the keys typed after it wait in the form's queue."""
         self.store_pending()
         done = asyncio.Event()
 
         async def run() -> None:
-            self.running = True
             try:
-                await self.app.run_action(bound.binding.action, bound.node)
+                await _done(work())
             finally:
-                self.running = False
                 done.set()
 
         if self.app.call_later(run):
             await done.wait()
-        return True
 
     def _passed_on(self, event: events.Key, focused: Widget | None) -> None:
         """A key the form did not get as the focused widget: passed up by a widget of the
@@ -708,3 +714,34 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     def _own(event: events.Key) -> None:
         event.stop()
         event.prevent_default()
+
+
+async def after_typed_keys(app: App[None], work: Callable[[], object]) -> None:
+    """Run ``work``, the action of a key bound with priority (F2, Ctrl+P, Ctrl+Q, PgDn,
+    PgUp: keys that act on every screen, over any widget), after the keys typed before it.
+
+    Textual runs a priority binding on the app's queue the moment the app reads its key,
+    while each key read before it was handed to the queue of the widget focused then, where
+    it may still wait ('5,3 F2' stopped the motor before 5,3 was in its box). So with the
+    step form focused (which runs its keys' bindings on the app's queue and waits for them),
+    ``work`` joins the form's queue behind those keys (:meth:`FieldForm.in_turn`); with any
+    other widget focused (the list of steps, which hands the characters typed on it to the
+    form), the app waits until that widget has handled what it was handed, then runs
+    ``work``. The keys typed after it wait for ``work`` either way. (Not covered: a key that
+    such a widget acts on through a binding of its own, Enter ticking an answer: Textual
+    runs that binding on the app's queue once the key has bubbled up, after ``work``.)"""
+    focused = app.focused
+    if isinstance(focused, FieldForm):
+        focused.in_turn(work)
+        return
+    if focused is not None:
+        handled = asyncio.Event()
+        if focused.call_later(handled.set):  # False: it is being removed, its keys with it
+            await handled.wait()
+    await _done(work())
+
+
+async def _done(result: object) -> None:
+    """Wait for ``result`` if it is awaitable (an action may be async or not)."""
+    if isawaitable(result):
+        await result
