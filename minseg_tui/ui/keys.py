@@ -126,7 +126,10 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key("Ctrl+← →", "the same, outside a text entry"),
     Key("[ ] z", "the same on the focused plot; z zooms"),
-    Key("← → on a rise", "the focused plot's cursor: t and omega at its column (Shift: 5)"),
+    Key(
+        "← → on a rise",
+        "the focused plot's cursor: t and omega at its column (Shift: 5; Home/End: the ends)",
+    ),
     Key("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
     Key("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
     Key("Ctrl+O", "the whole of the step's What to do, over its top (again: folds it)"),

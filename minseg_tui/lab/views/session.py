@@ -617,17 +617,28 @@ class CursorReading:
 def cursor_reading(t: ArrayLike, omega: ArrayLike, at: float) -> CursorReading | None:
     """The cursor's reading at ``at`` (s) of the speed ``omega`` (rad/s) sampled at ``t`` (s,
     rising; both as the plot draws them): the straight line between the two samples around
-    ``at``. None outside the samples (or without any)."""
+    ``at``, or the sample ``at`` is on (within a thousandth of the sample time). None outside
+    the samples (or without any)."""
     ts = np.asarray(t, dtype=float)
     ws = np.asarray(omega, dtype=float)
     ok = np.isfinite(ts) & np.isfinite(ws)
     ts, ws = ts[ok], ws[ok]
     if ts.size == 0 or not ts[0] <= at <= ts[-1]:
         return None
+    # on a sample within a thousandth of the time grid's step: a time after the edge is a
+    # difference of board times, a hair off the sample's (50.0 ms read "between the samples
+    # at 25.0 ms and 50.0 ms")
+    steps = np.diff(ts)
+    steps = steps[steps > 0]
+    near = 1e-3 * float(steps.min()) if steps.size else 0.0
+    on = np.flatnonzero(np.abs(ts - at) <= near)
+    if on.size:
+        k = int(on[np.argmin(np.abs(ts[on] - at))])
+        return CursorReading(at, float(ws[k]), float(ts[k]), float(ts[k]))
     k = int(np.searchsorted(ts, at, side="right"))  # ts[k - 1] <= at < ts[k]
     before = k - 1
     after = min(k, ts.size - 1)
-    if ts[before] == at or before == after:
+    if before == after:
         return CursorReading(at, float(ws[before]), float(ts[before]), float(ts[before]))
     share = (at - ts[before]) / (ts[after] - ts[before])
     omega_at = float(ws[before] + share * (ws[after] - ws[before]))

@@ -8,6 +8,7 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 from textual import events
+from textual.actions import SkipAction
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
@@ -37,7 +38,7 @@ class StepPlot(TracePlot):
     toggles; alt+left/right and F9 do the same from anywhere on the step (app keys). On a
     zoomed rise, ←/→ (Shift: five columns) move a cursor from column to column, and a click
     puts it on the column clicked; it reads t and omega off the plotted line there. Its
-    keys are left out of the footer, which shows the app's (they pushed F8, F9, Alt+→ and
+    keys (Home/End: the first / last column with a sample) are left out of the footer, which shows the app's (they pushed F8, F9, Alt+→ and
     Ctrl+R off its line at 80 columns); the line under the plot and the F1 help list them."""
 
     BINDINGS = [
@@ -48,6 +49,8 @@ class StepPlot(TracePlot):
         Binding("right", "cursor(1)", "cursor right", show=False),
         Binding("shift+left", f"cursor({-CURSOR_JUMP})", "cursor left", show=False),
         Binding("shift+right", f"cursor({CURSOR_JUMP})", "cursor right", show=False),
+        Binding("home", "cursor_end(-1)", "cursor first", show=False),
+        Binding("end", "cursor_end(1)", "cursor last", show=False),
     ]
     can_focus = True
 
@@ -58,6 +61,13 @@ class StepPlot(TracePlot):
         panel = self._panel()
         if panel is not None:
             panel.move_cursor(columns)
+
+    def action_cursor_end(self, side: int) -> None:
+        """Home (``side`` -1) / End (1): the cursor on the first / last column with a sample;
+        off a zoomed rise the keys scroll the step as elsewhere."""
+        panel = self._panel()
+        if panel is None or not panel.cursor_to_end(side):
+            raise SkipAction()
 
     def on_focus(self) -> None:
         panel = self._panel()
@@ -266,6 +276,15 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
             self.cursor = round((span[1] - span[0]) * -lo / (hi - lo))  # on the edge
         self.cursor += columns
         self._plot()
+
+    def cursor_to_end(self, side: int) -> bool:
+        """The cursor on the first (``side`` < 0) or the last column with a sample of the
+        zoomed rise (:meth:`_cursor` keeps it within them); False: no zoomed rise."""
+        if self.zoom is None or self.view is None or not self.view.rises:
+            return False
+        self.cursor = -(10**6) if side < 0 else 10**6
+        self._plot()
+        return True
 
     def put_cursor(self, column: int) -> None:
         """The cursor on ``column`` of the data area (a click)."""

@@ -1,0 +1,57 @@
+"""The second walk of issue 20 on the screens (a new group at 80x24 on the virtual MinSeg):
+Home/End on the rise cursor and its words at a sample."""
+
+from __future__ import annotations
+
+import pytest
+
+from minseg_tui.lab.views.session import cursor_reading
+from minseg_tui.ui.keys import KEYMAP
+from minseg_tui.ui.panels.results import HELD_END, ResultsPanel, StepPlot
+from tests.ui.helpers import settle, start_with_a_run
+
+
+async def test_home_and_end_move_the_rise_cursor_to_the_ends_not_the_page(quiet):
+    """Task 11, the plot focused: End and Home scrolled the step instead of moving the
+    cursor; only ←/→ moved it. End puts it on the last column with a sample, Home on the
+    first, and the step stays where it was."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        panel = app.screen.query_one(ResultsPanel)
+        plot = panel.query_one(StepPlot)
+        await pilot.press("shift+tab")
+        await settle(pilot)
+        assert app.focused is plot and panel.reading is not None
+        pane = app.screen.pane
+        view = panel.view
+        assert view is not None
+        rise = view.rises[0]
+        z1 = max(rise.z1, rise.t1 - HELD_END)  # Task 11 shows the high level to its end
+        x = view.t[(view.t >= rise.z0) & (view.t <= z1)] - rise.t0
+        y = pane.scroll_y
+        await pilot.press("end")
+        await settle(pilot)
+        assert pane.scroll_y == y
+        assert panel.reading is not None and panel.reading.t == pytest.approx(x[-1], abs=1e-6)
+        await pilot.press("home")
+        await settle(pilot)
+        assert pane.scroll_y == y
+        assert panel.reading is not None and panel.reading.t == pytest.approx(x[0], abs=1e-6)
+        keys = " ".join(f"{k.name} {k.help}" for k in KEYMAP)
+        assert "Home/End" in keys
+
+
+def test_the_cursor_on_a_sample_says_it_is_on_it():
+    """t = 50.0 ms, a sample of a 25 ms log computed as a difference of times (a hair
+    off 0.05 s), read "(between the samples at 25.0 ms and 50.0 ms)"."""
+    t = [k * 0.025 + 1.3 for k in range(8)]
+    x = [v - 1.3 for v in t]  # times after the edge, as the plot has them
+    omega = [0.0, 1.0, 2.0, 3.0, 3.5, 3.8, 3.9, 4.0]
+    reading = cursor_reading(x, omega, round(0.05, 6))
+    assert reading is not None and x[2] != 0.05
+    assert reading.omega == pytest.approx(2.0)
+    assert "between" not in reading.text() and "the sample at 50.0 ms" in reading.text()
+    between = cursor_reading(x, omega, 0.0625)
+    assert between is not None and "between the samples at 50.0 ms and 75.0 ms" in between.text()
+
