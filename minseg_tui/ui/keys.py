@@ -133,7 +133,7 @@ KEYMAP: tuple[Key, ...] = (
     Key("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
     Key("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
     Key("Ctrl+O", "the whole of the step's What to do, over its top (again: folds it)"),
-    Key("Tab", "next field; Enter stores what you typed"),
+    Key("Tab", "next field; Enter stores and goes on to the next field"),
     Key("Esc", "in a field: back to the answer stored, dropping what was typed over it"),
     Key("Ctrl+Z", "in a field: back to the answer stored before (again: further back)"),
     Key("Ctrl+Y", "in a field: forward again to the answer Ctrl+Z took back"),

@@ -1,5 +1,5 @@
 """The second walk of issue 20 on the screens (a new group at 80x24 on the virtual MinSeg):
-Home/End on the rise cursor and its words at a sample."""
+Home/End on the rise cursor and its words at a sample, Enter's move said in F1."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import pytest
 from minseg_tui.lab.views.session import cursor_reading
 from minseg_tui.ui.keys import KEYMAP
 from minseg_tui.ui.panels.results import HELD_END, ResultsPanel, StepPlot
-from tests.ui.helpers import settle, start_with_a_run
+from tests.ui.helpers import goto, settle, start, start_with_a_run
 
 
 async def test_home_and_end_move_the_rise_cursor_to_the_ends_not_the_page(quiet):
@@ -55,3 +55,15 @@ def test_the_cursor_on_a_sample_says_it_is_on_it():
     between = cursor_reading(x, omega, 0.0625)
     assert between is not None and "between the samples at 50.0 ms and 75.0 ms" in between.text()
 
+
+async def test_f1_says_that_enter_goes_on_to_the_next_field(quiet):
+    """Enter stores and moves to the next field, so a Tab after it skipped one; F1 said only
+    "Enter stores what you typed". The move stays (the bursts rely on it) and F1 says it."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep5")
+        await pilot.press("f1")
+        await settle(pilot)
+        said = " ".join(str(app.screen.query_one("#help-keys").render()).split())
+        assert "Enter stores and goes on to the next field" in said
