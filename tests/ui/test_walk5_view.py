@@ -8,6 +8,7 @@ import pytest
 from minseg_tui.lab.views.session import cursor_reading
 from minseg_tui.ui.keys import KEYMAP
 from minseg_tui.ui.panels.results import HELD_END, ResultsPanel, StepPlot
+from minseg_tui.ui.widgets.plots import TracePlot
 from tests.ui.helpers import goto, settle, start, start_with_a_run
 
 
@@ -67,3 +68,25 @@ async def test_f1_says_that_enter_goes_on_to_the_next_field(quiet):
         await settle(pilot)
         said = " ".join(str(app.screen.query_one("#help-keys").render()).split())
         assert "Enter stores and goes on to the next field" in said
+
+
+async def test_the_model_checks_legends_show_every_entry_once_in_view(quiet):
+    """The model check at 80x24, the list of steps shown: each plot's legend wrapped to two
+    lines, the second under the screen's edge, and the visible line read across both plots
+    "++ extended ⠶⠶ first order -- noise ± ++ extended ⠶⠶" ('measured' missing, an entry
+    twice). Each legend now holds on one line (short labels where the full ones do not
+    fit), every entry of its plot in it once."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "model_check")
+        assert app.screen.query_one("#nav").display
+        wanted = {"plot-check": 3, "plot-residual": 3}
+        for plot_id, entries in wanted.items():
+            plot = app.screen.query_one(f"#{plot_id}", TracePlot)
+            shown = plot.query_one(".legend")
+            lines = [s.text.strip() for s in shown.render_lines(shown.region.reset_offset)]
+            assert len(lines) == 1, lines
+            labelled = [t.short or t.label for t in plot.traces if t.label]
+            assert len(labelled) == entries
+            assert all(lines[0].count(label) == 1 for label in labelled), lines
+            assert app.screen.can_view_entire(shown)  # at the landing, on its last row

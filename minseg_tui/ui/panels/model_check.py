@@ -106,9 +106,9 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         # drawn in this order: the measured speed (and the first order's miss) on top
         check.show(
             [
-                Trace(t, ex, "extended", "+", colour=2),
-                Trace(t, ba, "first order", "braille", colour=1),
-                Trace(t, om, "measured", "dot", colour=0),
+                Trace(t, ex, "extended", "+", colour=2, short="ext."),
+                Trace(t, ba, "first order", "braille", colour=1, short="1st order"),
+                Trace(t, om, "measured", "dot", colour=0, short="meas."),
             ],
             span,
         )
@@ -121,8 +121,8 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
                 Trace([lo, hi], [-v.noise, -v.noise], "", "-", colour=3),
             ]
         if v.cause != "none":
-            traces.append(Trace(t, om - ex, "extended", "+", colour=2))
-        traces.append(Trace(t, om - ba, "first order", "braille", colour=1))
+            traces.append(Trace(t, om - ex, "extended", "+", colour=2, short="ext."))
+        traces.append(Trace(t, om - ba, "first order", "braille", colour=1, short="1st order"))
         residual.show(traces, span)
 
     def action_zoom_next(self) -> None:

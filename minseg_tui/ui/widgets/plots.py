@@ -65,6 +65,8 @@ class Trace:
     colour: int | None = None
     steps: bool = False
     right: bool = False
+    short: str = ""
+    """The label in a legend too narrow for the full ones ('': the label)."""
 
 
 def drawn(tr: Trace) -> tuple[list[float], list[float]]:
@@ -172,18 +174,29 @@ def _colour(k: int, tr: Trace) -> tuple[str, str]:
     return COLOURS[(k if tr.colour is None else tr.colour) % len(COLOURS)]
 
 
-def legend(traces: Sequence[Trace]) -> Content:
+def legend(traces: Sequence[Trace], width: int | None = None) -> Content:
     """The legend line: each labelled trace's marker, in its colour, and label (a trace on
-    the right axis says so)."""
-    parts: list[str | tuple[str, str]] = []
-    for k, tr in enumerate(traces):
-        if not tr.label:
-            continue
-        if parts:
-            parts.append("  ")
-        parts += [(GLYPHS.get(tr.marker, tr.marker * 2), _colour(k, tr)[1]), " "]
-        parts.append(tr.label + (", right axis" if tr.right else ""))
-    return Content.assemble(*parts)
+    the right axis says so). Within ``width`` columns if it can be (None: no limit): else
+    tighter (one marker glyph, one space between entries), then with the traces' short
+    labels. Wrapped, its second line fell under the screen's edge beside another plot's
+    first, and the two read as one legend (the model check at 80x24)."""
+    forms = ((False, 2, "  "), (False, 1, " "), (True, 1, " "))
+    line = Content("")
+    for short, glyphs, gap in forms:
+        parts: list[str | tuple[str, str]] = []
+        for k, tr in enumerate(traces):
+            if not tr.label:
+                continue
+            if parts:
+                parts.append(gap)
+            glyph = GLYPHS.get(tr.marker, tr.marker * 2)
+            parts += [(glyph[:glyphs], _colour(k, tr)[1]), " "]
+            label = (tr.short or tr.label) if short else tr.label
+            parts.append(label + (", right axis" if tr.right else ""))
+        line = Content.assemble(*parts)
+        if width is None or line.cell_length <= width:
+            break
+    return line
 
 
 def _cells(
@@ -399,6 +412,28 @@ def data_columns(plain: str) -> tuple[int, int] | None:
     return None
 
 
+class Legend(Static):
+    """A plot's legend, drawn for its width (:func:`legend`)."""
+
+    def __init__(self) -> None:
+        super().__init__("", classes="legend")
+        self.traces: tuple[Trace, ...] = ()
+
+    def show(self, traces: Sequence[Trace]) -> None:
+        """Say ``traces``; a layout of the screen only when its entries changed."""
+        old = [(t.label, t.short, t.marker, t.colour, t.right) for t in self.traces]
+        self.traces = tuple(traces)
+        if old != [(t.label, t.short, t.marker, t.colour, t.right) for t in self.traces]:
+            self.refresh(layout=True)
+
+    def render(self) -> Content:
+        width = self.content_size.width
+        return legend(self.traces, width or None)
+
+    def on_resize(self) -> None:
+        self.refresh(layout=True)
+
+
 class TracePlot(Vertical):
     """A plot with a title and axis labels, and its legend on a line below it; :meth:`show`
     replaces what it draws.
@@ -414,7 +449,7 @@ class TracePlot(Vertical):
     def __init__(self, title: str, xlabel: str, ylabel: str, *, id: str | None = None) -> None:
         super().__init__(id=id)
         self._canvas = Canvas(title, xlabel, ylabel)
-        self._legend = Static("", classes="legend")
+        self._legend = Legend()
 
     def compose(self) -> ComposeResult:
         yield self._canvas
@@ -453,8 +488,6 @@ class TracePlot(Vertical):
         """Draw ``traces`` (and nothing else) at the next refresh, over ``xlim`` (s) if given."""
         self._canvas.traces = tuple(traces)
         self._canvas.xlim = xlim
-        shown, now = legend(traces), self._legend.content
-        if not (isinstance(now, Content) and (now.plain, now.spans) == (shown.plain, shown.spans)):
-            self._legend.update(shown)  # a layout of the screen: only when it changed
+        self._legend.show(traces)
         if self._canvas.is_mounted:
             self._canvas.draw()
