@@ -104,6 +104,10 @@ STREAM_PERIOD = 0.05
 METER_PERIOD = 0.25
 """How often the virtual multimeter is read while a step shows it, s."""
 
+NOTICE_S = 5.0
+"""How long a notice that something was done stays, s (F8's list of files stayed 10 s over
+the last field of the summary: issue 20, walk 5). Textual's default is 5 s."""
+
 SAVE_RETRY = 3.0
 """While the session cannot be saved, it is tried again this often, s."""
 
@@ -225,6 +229,9 @@ class LabApp(App[None]):
         ``Widget.notify`` default to ``markup=True``, and every widget's goes through this
         one. ``markup=False`` at each of the 43 calls (or a helper of another name) would
         hold only as long as every new call remembered it."""
+        screen = self._lab_screen()
+        if screen is not None:
+            screen.place_notices()  # away from the entry typed in
         super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
 
     # -- start-up ---------------------------------------------------------------------
@@ -959,7 +966,7 @@ class LabApp(App[None]):
             + ", ".join(paths[:2])
             + (f" and {len(paths) - 2} run CSV" if len(paths) > 2 else ""),
             title="report",
-            timeout=10,
+            timeout=NOTICE_S,
         )
         self.lab_changed.publish(None)
 

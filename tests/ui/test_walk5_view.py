@@ -4,12 +4,18 @@ Home/End on the rise cursor and its words at a sample, Enter's move said in F1."
 from __future__ import annotations
 
 import pytest
+from textual.widgets._toast import Toast
 
 from minseg_tui.lab.views.session import cursor_reading
+from minseg_tui.report.write import write_report
+from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.keys import KEYMAP
 from minseg_tui.ui.panels.results import HELD_END, ResultsPanel, StepPlot
 from minseg_tui.ui.widgets.plots import TracePlot
-from tests.ui.helpers import goto, settle, start, start_with_a_run
+from tests.ui.conftest import DATE
+from tests.ui.fakes import QuietDevice
+from tests.ui.helpers import burst, goto, settle, start, start_with_a_run, typing_box
 
 
 async def test_home_and_end_move_the_rise_cursor_to_the_ends_not_the_page(quiet):
@@ -90,3 +96,25 @@ async def test_the_model_checks_legends_show_every_entry_once_in_view(quiet):
             assert len(labelled) == entries
             assert all(lines[0].count(label) == 1 for label in labelled), lines
             assert app.screen.can_view_entire(shown)  # at the landing, on its last row
+
+
+async def test_the_f8_notice_expires_and_does_not_cover_the_entry_typed_in(tmp_path):
+    """Walk 5 at 80x24: on the summary, the last entry typed in, F8's list of the files
+    written covered that entry for 10 s. Notices now go to the half of the screen away
+    from the entry, and F8's stays 5 s (Textual's default), not 10."""
+    dev = QuietDevice(seed=1)
+    cfg = UiConfig(device="auto", sessions=tmp_path, today=DATE, animations=False, refresh=0)
+    app = LabApp(cfg, lambda spec: dev, lambda session: write_report(session).paths)
+    async with app.run_test(size=(80, 24), notifications=True) as pilot:
+        await start(pilot)
+        await goto(pilot, "summary")
+        await burst(pilot, *"why does f fall with speed")
+        box = typing_box(app)
+        assert box is not None and app.screen.can_view_entire(box)
+        await burst(pilot, "f8")
+        await settle(pilot, lambda: bool(app.exported))
+        await settle(pilot, lambda: bool(app.screen.query(Toast)))
+        (toast,) = app.screen.query(Toast)
+        assert "written:" in str(toast.render())
+        assert not toast.region.overlaps(box.region), (toast.region, box.region)
+        assert all(n.timeout <= 8 for n in app._notifications)

@@ -570,6 +570,21 @@ class LabScreen(StatusScreen):
             return None
         return panes.first().panel if panes else None
 
+    def place_notices(self) -> None:
+        """Notices (Textual's toasts) show in the half of the screen away from the entry
+        the group types in (or the widget focused in the step): at the bottom, where
+        Textual puts them, or at the top while that entry is in the lower half. F8's list
+        of files sat over the summary's last field, being typed in (issue 20, walk 5)."""
+        focused = self.focused
+        pane = self.pane if self.query(StepPane) else None
+        row = pane.typing if pane is not None else None
+        widget = row.input if row is not None else focused
+        low = False
+        if widget is not None and widget is not pane and widget.region:
+            middle = widget.region.y + widget.region.height / 2
+            low = middle >= self.size.height / 2
+        self.set_class(low, "-notices-top")
+
     def offers(self, action: str) -> bool:
         """Whether panel key ``action`` (:data:`PANEL_KEYS`) acts on the step shown: its panel
         has the key (its ``KEYS``) and it does something here (its ``check_action``)."""
