@@ -229,9 +229,9 @@ class LabApp(App[None]):
         ``Widget.notify`` default to ``markup=True``, and every widget's goes through this
         one. ``markup=False`` at each of the 43 calls (or a helper of another name) would
         hold only as long as every new call remembered it."""
-        screen = self._lab_screen()
-        if screen is not None:
-            screen.place_notices()  # away from the entry typed in
+        stack = self.screen_stack  # empty while the app closes (a run's notice at exit)
+        if stack and isinstance(stack[-1], LabScreen):
+            stack[-1].place_notices()  # away from the entry typed in
         super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
 
     # -- start-up ---------------------------------------------------------------------
