@@ -62,3 +62,30 @@ async def test_one_backspace_after_a_refusal_deletes_one_character_and_escape_wi
         with app.session as s:
             entry = s.entry("prep10.gain")
         assert entry is not None and entry.text == "2*pi/720" and entry.refused is None
+
+
+async def test_a_current_that_falls_as_the_voltage_rises_is_warned_beside_its_row(quiet):
+    """Walk 4: on Task 5 the readings went in one row off (37.2 mA in the 3.5 V row, 33.5 mA
+    in the 4.5 V row) without a word. The row of the higher voltage now says so, names both
+    rows and values, and the warning goes once the reading is put right; the table of Tasks
+    6-9 lists it among its warnings while it stands."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task5")
+        await type_in(pilot, "i_ss@2.5", "29,8")
+        await type_in(pilot, "i_ss@3.5", "37,2 mA")
+        high = await type_in(pilot, "i_ss@4.5", "33,5")
+        said = (
+            "! i_ss falls from 37.2 mA at 3.5 V to 33.5 mA at 4.5 V, yet it rises a little "
+            "with the speed: check that each reading is in its row."
+        )
+        assert said in high.message and high.has_class("warned"), high.message
+        assert "falls" not in _row(app, "i_ss@3.5").message
+        await goto(pilot, "table")
+        warnings = app.screen.query_one("#warnings")
+        assert said in str(warnings.render()).replace("\n", " ")
+        await goto(pilot, "task5")
+        await type_in(pilot, "i_ss@3.5", "33,5")  # put right in the other row
+        high = _row(app, "i_ss@4.5")
+        assert "falls" not in high.message and not high.has_class("warned"), high.message

@@ -177,9 +177,15 @@ def _verdict(e: Entry, feedback: str) -> EntryView:
 
 
 def entry(session: Session, key: str) -> EntryView | None:
-    """The verdict on the stored entry for field ``key`` (None when nothing was entered)."""
+    """The verdict on the stored entry for field ``key`` (None when nothing was entered),
+    with the warnings its row raises beside the others (a current that falls as the voltage
+    rises, on Task 5)."""
     e = session.entry(key)
-    return None if e is None else _verdict(e, _feedback(session, key))
+    if e is None:
+        return None
+    view = _verdict(e, _feedback(session, key))
+    beside = tuple(n.message for n in session.falling_currents() if n.source == key)
+    return replace(view, warnings=view.warnings + beside) if beside and view.ok else view
 
 
 def typed(session: Session, key: str) -> str:

@@ -170,6 +170,7 @@ class FieldRow(Vertical):
         """The text the lab holds in effect for this row (an accepted answer, not a refused
         attempt over it): what Escape brings back. The screen keeps it up to date."""
         self._result = result
+        self._shown: EntryView | None = None
         self._sent: str | None = text
         self._chosen = tuple(chosen)
         self._readonly = readonly
@@ -339,8 +340,16 @@ class FieldRow(Vertical):
         if result is not None:
             self.show_result(result)
 
+    def update_result(self, result: EntryView) -> None:
+        """The lab's verdict on this row after a change elsewhere (a reading in another row
+        of Task 5 makes a current fall as the voltage rises): shown if it is not the one
+        shown already."""
+        if result != self._shown:
+            self.show_result(result)
+
     def show_result(self, result: EntryView) -> None:
         """Show the lab's verdict: a refusal, the warnings, or a checker's feedback."""
+        self._shown = result
         parts = [("✗ " if not result.ok else "") + result.message] if result.message else []
         parts += [f"! {w}" for w in result.warnings]
         if result.feedback:
