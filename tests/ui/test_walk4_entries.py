@@ -4,8 +4,13 @@ said "write products with *" for an unclosed parenthesis."""
 
 from __future__ import annotations
 
+import re
+
+from textual.widgets import DataTable
+
+from minseg_tui.quantities import format_number
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import goto, settle, start, type_in
+from tests.ui.helpers import TABLE, enter_all, goto, settle, start, type_in
 
 
 def _row(app, key: str) -> FieldRow:
@@ -89,3 +94,47 @@ async def test_a_current_that_falls_as_the_voltage_rises_is_warned_beside_its_ro
         await type_in(pilot, "i_ss@3.5", "33,5")  # put right in the other row
         high = _row(app, "i_ss@4.5")
         assert "falls" not in high.message and not high.has_class("warned"), high.message
+
+
+def _worked(text: str) -> tuple[float, str]:
+    """The F7 line 'name = formula = (numbers) = result unit ...' worked out again from the
+    numbers it shows, and the result as it shows it."""
+    worked = text.split(" = ")[2]
+    result, unit = text.split(" = ")[3].split()[:2]
+    expr = re.sub(r"\s*(N m/A|V|Ω|A|rad/s)(?=[\s)]|$)", "", worked).replace("×", "*")
+    value = float(eval(expr, {"__builtins__": {}}))  # only numbers and + - * / ( ) left
+    return value * 1e3 if unit == "mN" else value, result
+
+
+async def test_f7_shows_inputs_whose_arithmetic_gives_the_result_shown(quiet):
+    """Walk 4: F7 on a k_v cell showed omega_ss = 3.82 rad/s (the capture's 3.8247 rounded),
+    and (2.05 - 5.3 x 0.0298) / 3.82 is 0.4953, not the 0.4948 shown. Every number on the
+    line now has the digits its result needs: worked out again from the text, each k_v and
+    f cell's formula gives the result it prints, to its printed digits."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(
+            app,
+            {
+                **TABLE,
+                "omega_ss@2.5": "3.8247",
+                "i_ss@2.5": "29,8 mA",
+                "omega_ss@3.5": "5.80613",
+                "omega_ss@4.5": "7.7871",
+            },
+        )
+        await goto(pilot, "table")
+        table = app.screen.query_one("#table", DataTable)
+        table.focus()
+        checked = 0
+        for row in range(3):
+            for column in (4, 5):
+                table.move_cursor(row=row, column=column)
+                await pilot.press("f7")
+                await settle(pilot)
+                text = str(app.screen.query_one("#formula").render()).replace("\n", " ")
+                value, shown = _worked(text)
+                assert format_number(value, len(shown.replace(".", "").lstrip("0"))) == shown, text
+                checked += 1
+        assert checked == 6

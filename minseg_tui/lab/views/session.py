@@ -15,7 +15,7 @@ it for one thread at a time.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -45,7 +45,6 @@ from minseg_tui.quantities import (
     format_interval,
     format_number,
     format_quantity,
-    format_reading,
     format_spread,
     format_value,
 )
@@ -334,22 +333,51 @@ class TableView:
     compare: tuple[tuple[str, str, str], ...] = ()
 
 
+WORKED_DIGITS: tuple[int, int] = (DIGITS, 10)
+"""The fewest and most significant digits of a number in a formula worked out with the
+row's numbers (:func:`_worked_inputs`): four, as the results are written, so that k_a reads
+the same on every row."""
+
+
+def _worked_inputs(
+    inputs: Sequence[float], work: Callable[[Sequence[float]], float], shown: str
+) -> tuple[list[str], str]:
+    """The ``inputs`` of a formula written with the fewest digits (no zeros they were not
+    given: R typed 5,3 stays 5.3) from which ``work`` gives the result as it is ``shown``
+    (:func:`format_number`), and '='; '≈' with the most digits when none does. Walk 4:
+    omega_ss captured as 3.8247 rad/s was shown 3.82, and the arithmetic on the line gave
+    0.4953 beside the 0.4947 printed."""
+    fewest, most = WORKED_DIGITS
+    for digits in range(fewest, most + 1):
+        texts = [format(float(format_number(v, digits)), f".{digits}g") for v in inputs]
+        if format_number(work([float(t) for t in texts])) == shown:
+            return texts, "="
+    return texts, "≈"
+
+
 def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> str:
     """The formula of a computed cell of row ``r`` with the row's numbers in it (R in ohm,
-    k_a in N m/A, the final one). R stands as the group typed it: 5,3 is "5.3 Ω", not
-    "5.30 Ω" (:func:`minseg_tui.quantities.format_reading`)."""
+    i_ss in A, k_a in N m/A, the final one), each with the digits the result needs: worked
+    out from the numbers shown, the line gives the result it prints (:func:`_worked_inputs`)."""
     if name == "k_v" and r.k_v is not None and r.u_ss is not None and r.i_ss is not None:
         if r.omega_ss is not None and R is not None:
+            shown = _num(r.k_v)
+            (u, res, i, w), eq = _worked_inputs(
+                (r.u_ss, R, r.i_ss, r.omega_ss), lambda x: (x[0] - x[1] * x[2]) / x[3], shown
+            )
             return (
-                f"k_v = (u_ss - R i_ss) / omega_ss = ({_num(r.u_ss, 3)} V - {format_reading(R, 'Ω')} × "
-                f"{_num(r.i_ss, 3)} A) / {_num(r.omega_ss, 3)} rad/s = {_num(r.k_v)} V s/rad"
+                f"k_v = (u_ss - R i_ss) / omega_ss = ({u} V - {res} Ω × {i} A) / {w} rad/s "
+                f"{eq} {shown} V s/rad"
             )
     if name == "f" and r.f is not None and r.i_ss is not None and r.omega_ss is not None:
         if k_a is not None:
+            shown = _num(r.f * 1e3)
+            (ka, i, w), eq = _worked_inputs(
+                (k_a, r.i_ss, r.omega_ss), lambda x: x[0] * x[1] / x[2] * 1e3, shown
+            )
             return (
-                f"f = k_a i_ss / omega_ss = {_num(k_a)} N m/A × {_num(r.i_ss, 3)} A / "
-                f"{_num(r.omega_ss, 3)} rad/s = {_num(r.f * 1e3)} mN m s/rad "
-                "(k_a = 0.65 × median k_v)"
+                f"f = k_a i_ss / omega_ss = {ka} N m/A × {i} A / {w} rad/s {eq} {shown} "
+                "mN m s/rad (k_a = 0.65 × median k_v)"
             )
     return _FORMULAS[name]
 
