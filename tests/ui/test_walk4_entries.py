@@ -9,6 +9,7 @@ import re
 from textual.widgets import DataTable
 
 from minseg_tui.quantities import format_number
+from minseg_tui.ui.panels.live import Readout
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.helpers import TABLE, enter_all, goto, settle, start, type_in
 
@@ -86,6 +87,9 @@ async def test_a_current_that_falls_as_the_voltage_rises_is_warned_beside_its_ro
             "with the speed: check that each reading is in its row."
         )
         assert said in high.message and high.has_class("warned"), high.message
+        await settle(pilot)
+        shown = high.query_one(".field-msg").region  # the whole warning in view: above the
+        assert shown.bottom <= app.screen.query_one(Readout).region.y  # lines docked under it
         assert "falls" not in _row(app, "i_ss@3.5").message
         await goto(pilot, "table")
         warnings = app.screen.query_one("#warnings")

@@ -360,11 +360,12 @@ class FieldRow(Vertical):
         msgs.first(Prose).update("\n".join(parts))
         self.set_class(not result.ok, "refused")
         self.set_class(bool(result.warnings), "warned")
-        if not result.ok and self.query(EntryBox):
+        if (not result.ok or result.warnings) and self.query(EntryBox):
             # a refused text stays to be mended, the cursor at its end, nothing selected;
-            # and the whole refusal in view
+            # and the whole refusal or warning in view
             box = self.input
-            box.hold_refused()
+            if not result.ok:
+                box.hold_refused()
             if box.has_focus:
                 self.call_after_refresh(self.bring_into_view)
 
