@@ -46,6 +46,7 @@ from minseg_tui.quantities import (
     format_number,
     format_quantity,
     format_spread,
+    format_typed,
     format_value,
 )
 
@@ -333,23 +334,34 @@ class TableView:
     compare: tuple[tuple[str, str, str], ...] = ()
 
 
-WORKED_DIGITS: tuple[int, int] = (DIGITS, 10)
-"""The fewest and most significant digits of a number in a formula worked out with the
-row's numbers (:func:`_worked_inputs`): four, as the results are written, so that k_a reads
-the same on every row."""
+WORKED_DIGITS: int = 10
+"""The most significant digits of a number in a formula worked out with the row's numbers
+(:func:`_worked_inputs`)."""
+
+Written = tuple[float, int, Callable[[float, int], str]]
+"""A number of a worked formula: its value, the fewest digits it is written with, and how
+(:func:`format_number`: 0.0280 A, its zeros kept; :func:`format_typed`: R as typed)."""
 
 
 def _worked_inputs(
-    inputs: Sequence[float], work: Callable[[Sequence[float]], float], shown: str
+    inputs: Sequence[Written], work: Callable[[Sequence[float]], float], shown: str
 ) -> tuple[list[str], str]:
-    """The ``inputs`` of a formula written with the fewest digits (no zeros they were not
-    given: R typed 5,3 stays 5.3) from which ``work`` gives the result as it is ``shown``
-    (:func:`format_number`), and '='; '≈' with the most digits when none does. Walk 4:
-    omega_ss captured as 3.8247 rad/s was shown 3.82, and the arithmetic on the line gave
-    0.4953 beside the 0.4947 printed."""
-    fewest, most = WORKED_DIGITS
-    for digits in range(fewest, most + 1):
-        texts = [format(float(format_number(v, digits)), f".{digits}g") for v in inputs]
+    """The ``inputs`` of a formula written so that ``work`` on the numbers as written gives
+    the result as it is ``shown`` (:func:`format_number`), and '=': each with its fewest
+    digits, and a number those do not write exactly (a captured omega_ss, k_a) with one more
+    digit at a time until the result follows; '≈' when none up to :data:`WORKED_DIGITS`
+    does. Walk 4: omega_ss captured as 3.8247 rad/s was shown 3.82, and the arithmetic on the
+    line gave 0.4953 beside the 0.4947 printed."""
+
+    def write(value: float, fewest: int, how: Callable[[float, int], str], digits: int) -> str:
+        text = how(value, fewest)
+        if math.isclose(float(text), value, rel_tol=1e-12):
+            return text
+        return how(value, max(fewest, digits))
+
+    texts: list[str] = []
+    for digits in range(3, WORKED_DIGITS + 1):
+        texts = [write(v, fewest, how, digits) for v, fewest, how in inputs]
         if format_number(work([float(t) for t in texts])) == shown:
             return texts, "="
     return texts, "≈"
@@ -363,7 +375,14 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
         if r.omega_ss is not None and R is not None:
             shown = _num(r.k_v)
             (u, res, i, w), eq = _worked_inputs(
-                (r.u_ss, R, r.i_ss, r.omega_ss), lambda x: (x[0] - x[1] * x[2]) / x[3], shown
+                (
+                    (r.u_ss, 3, format_number),
+                    (R, DIGITS, format_typed),  # as typed: 5,3 is 5.3 Ω, never 5.30 Ω
+                    (r.i_ss, 3, format_number),
+                    (r.omega_ss, 3, format_number),
+                ),
+                lambda x: (x[0] - x[1] * x[2]) / x[3],
+                shown,
             )
             return (
                 f"k_v = (u_ss - R i_ss) / omega_ss = ({u} V - {res} Ω × {i} A) / {w} rad/s "
@@ -373,7 +392,13 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
         if k_a is not None:
             shown = _num(r.f * 1e3)
             (ka, i, w), eq = _worked_inputs(
-                (k_a, r.i_ss, r.omega_ss), lambda x: x[0] * x[1] / x[2] * 1e3, shown
+                (
+                    (k_a, DIGITS, format_number),
+                    (r.i_ss, 3, format_number),
+                    (r.omega_ss, 3, format_number),
+                ),
+                lambda x: x[0] * x[1] / x[2] * 1e3,
+                shown,
             )
             return (
                 f"f = k_a i_ss / omega_ss = {ka} N m/A × {i} A / {w} rad/s {eq} {shown} "
