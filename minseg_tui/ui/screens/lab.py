@@ -665,7 +665,7 @@ class LabScreen(StatusScreen):
 
     def _on_lab_changed(self, _: None) -> None:
         """The session changed: the navigator's marks, the entries the lab changed (a
-        capture), and the panel's view."""
+        capture) or warns about anew, and the panel's view."""
         self.refresh_marks()
         pane = self.pane
         with self.session as s:
@@ -674,6 +674,8 @@ class LabScreen(StatusScreen):
                 row.held = views.held(s, row.field.key)
                 if row.sent is not None and text != row.sent:
                     row.refresh_from_lab(text, views.entry(s, row.field.key))
+                elif (result := views.entry(s, row.field.key)) is not None:
+                    row.update_result(result)  # a warning another row raised or cleared
         panel = pane.panel
         if isinstance(panel, ViewPanel):
             self._load(panel)
