@@ -12,7 +12,9 @@ from pathlib import Path
 
 from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
+from minseg_tui.report.write import write_report
 from tests.lab.test_compare import _lab
 
 OLD = Path(__file__).parent / "old_sessions" / "schema1"
@@ -118,3 +120,38 @@ def test_an_old_session_records_from_its_first_opening_on(tmp_path):
         assert p.at == s.shown_since
     data = _file(folder)
     assert data["shown_since"] == "2030-01-02T03:04:05+00:00" and data["shown"] == {}
+
+
+def test_task10_showing_its_T_readings_is_recorded_once_they_are_shown(tmp_path):
+    with _lab(tmp_path) as s:
+        runs = views.runs(s.snapshot())
+        assert runs and all(v.T_hidden for v in runs)
+        assert views.note_drawn(s, runs) == []  # T hidden: nothing shown
+        s.enter("own.T", "57 ms")
+        runs = views.runs(s.snapshot())
+        assert any(v.T_ls is not None for v in runs)
+        assert views.note_drawn(s, runs) == ["own.T"]
+        assert (s.shown()["own.T"].by, s.shown()["own.T"].answer) == ("answer", "57 ms")
+
+
+def test_a_broken_record_of_what_was_shown_is_named_and_left_out(tmp_path):
+    with _lab(tmp_path) as s:
+        folder = s.folder
+    data = _file(folder)
+    data["shown"] = {"own.T": {"at": 5, "by": "answer"}}
+    data["policy"] = "answers first"
+    (folder / "session.json").write_text(json.dumps(data), encoding="utf-8")
+    with Session.open(folder, readonly=True) as ro:
+        assert ro.damaged is not None
+        assert "shown.own.T.at: expected text" in ro.damaged and "(and 1 more)" in ro.damaged
+        assert ro.shown() == {} and ro.policies() == []
+    # the report claims neither "not shown" nor an older program of it
+    md = write_report_of(folder)
+    (row,) = [ln for ln in md.splitlines() if ln.startswith("| T (Task 12)")]
+    assert row.endswith(f"| {own_first.DAMAGED} |"), row
+    assert "is not known: the session file is damaged" in md
+
+
+def write_report_of(folder: Path) -> str:
+    with Session.open(folder, readonly=True) as ro:
+        return write_report(ro).markdown.read_text(encoding="utf-8")

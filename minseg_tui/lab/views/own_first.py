@@ -137,6 +137,14 @@ def when(iso: str) -> str:
     return t.strftime("%Y-%m-%d %H:%M:%S") + zone
 
 
+DAMAGED = "not known: the session file is damaged, and its record of this may be what was lost"
+
+
+def _not_known(session: Session) -> str:
+    """Why the report cannot say when a value was shown."""
+    return DAMAGED if session.damaged else NOT_KNOWN
+
+
 def _answered(session: Session, key: str) -> str:
     e = session.entry(key)
     if key not in session.answered() or e is None:
@@ -155,7 +163,9 @@ def shown(session: Session, key: str) -> str:
     since = session.shown_since
     rec = session.shown().get(key)
     if since is None or (rec is None and key in session.revealed()):
-        return REVEALED if key in session.revealed() else NOT_KNOWN
+        return REVEALED if key in session.revealed() else _not_known(session)
+    if rec is None and session.damaged:  # its record may be what was left out
+        return _not_known(session)
     late = (
         ""
         if since <= session.created
@@ -198,10 +208,14 @@ def policy_in_force(session: Session) -> tuple[str, tuple[str, ...]]:
     now = lab_compare.read_policy(session.folder.parent)
     current = _rule(PolicyRecord("", now.answers_first, now.problem, now.file))
     if not got:
+        why = (
+            "the session file is damaged, and its record of the policy may be what was lost"
+            if session.damaged
+            else "the session was begun with an older program, which did not record it"
+        )
         return (
-            "The lab's policy while the group worked is not known: the session was begun with "
-            f"an older program, which did not record it ({lab_compare.POLICY_FILE} now says: "
-            f"{current}).",
+            f"The lab's policy while the group worked is not known: {why} "
+            f"({lab_compare.POLICY_FILE} now says: {current}).",
             (
                 f"the lab's policy is not recorded in this session; {lab_compare.POLICY_FILE} "
                 "read now may not be what was in force while the group worked",
