@@ -367,3 +367,20 @@ def test_why_the_two_T_differ_names_what_the_fit_used(tmp_path: Path) -> None:
         "sampling modelled." in results
     )
     assert "J uses T = " in results and "fitted over the whole log (every edge" in results
+
+
+def test_an_old_session_continued_claims_nothing_from_before_its_record(tmp_path: Path) -> None:
+    """An older program's session opened again: what the group saw before that opening is
+    not known, so a value first recorded with the group's answer in place is not said to be
+    "after the group answered"; one shown before any answer still is revealed before."""
+    folder = tmp_path / "schema1"
+    shutil.copytree(Path(__file__).parents[1] / "lab" / "old_sessions" / "schema1", folder)
+    with Session.open(folder) as s:
+        assert s.shown_since is not None and s.shown_since > s.created
+        s.enter("own.T", "57 ms")
+        views.note_drawn(s, views.results(s.snapshot(), "task12"))
+        md = _report(s)
+    (table,) = _tables(_section(md, "Step response and model"))
+    T = _row(table, "T (Task 12)")["shown to the group"]
+    assert T.startswith("not known whether before or after answering: first recorded on "), T
+    assert "not known before: the session was begun with an older program" in T

@@ -179,6 +179,11 @@ def shown(session: Session, key: str) -> str:
         return (
             f"{lab_compare.REVEALED_EARLY}: shown {by}, {when(rec.at)}; {_answered(session, key)}"
         )
+    if late:  # an unrecorded showing may have come before the answer
+        return (
+            f"not known whether before or after answering: first recorded {by}, "
+            f"{when(rec.at)}, with the group's answer {rec.answer!r} in place{late}"
+        )
     e = session.entry(key)
     now = e.text.strip() if e is not None and e.ok else ""
     changed = (
@@ -186,7 +191,7 @@ def shown(session: Session, key: str) -> str:
         if e is not None and now and now != rec.answer
         else ""
     )
-    return f"{SHOWN_AFTER} ({rec.answer!r}): shown {by}, {when(rec.at)}{changed}{late}"
+    return f"{SHOWN_AFTER} ({rec.answer!r}): shown {by}, {when(rec.at)}{changed}"
 
 
 def _rule(p: PolicyRecord) -> str:
