@@ -354,7 +354,8 @@ def test_the_report_speaks_of_the_group_not_to_it(tmp_path: Path) -> None:
 
 def test_why_the_two_T_differ_names_what_the_fit_used(tmp_path: Path) -> None:
     """Issue 20, item 4: the report said the least-squares T "fits the whole rise" while its
-    own "How T was fitted" said one model fits the whole log, every edge rising and falling."""
+    own "How T was fitted" said one model fits the whole log, every edge rising and falling.
+    The sentence now holds for either way of fitting (and for the numbers a session keeps)."""
     s = _session(tmp_path)  # own.T = 0.09 s
     st = s.results().identification.step
     md = _report(s)
@@ -363,10 +364,10 @@ def test_why_the_two_T_differ_names_what_the_fit_used(tmp_path: Path) -> None:
     results = _section(md, "Step response and model")
     assert "whole rise" not in results
     assert (
-        "the least-squares T fits the whole log (every edge, rising and falling) with the "
-        "sampling modelled." in results
+        "the least-squares T fits whole stretches of the run with the sampling modelled." in results
     )
-    assert "J uses T = " in results and "fitted over the whole log (every edge" in results
+    assert "J uses T = " in results and "fitted over whole stretches of the run;" in results
+    assert "How T was fitted: one first-order model fits the whole log" in results
 
 
 def test_an_old_session_continued_claims_nothing_from_before_its_record(tmp_path: Path) -> None:

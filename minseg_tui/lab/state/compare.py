@@ -21,7 +21,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.steps import Field
 from minseg_tui.lab.state.results import Comparison, Results
-from minseg_tui.model.identify import RISES, U_TASK15, WHOLE_LOG
+from minseg_tui.model.identify import U_TASK15
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.quantities import format_number, format_reading, format_typed
 
@@ -133,15 +133,9 @@ def compare_fields(
 
     ident = res.identification
     st = res.step if ident is not None else None
-    fitted = (
-        ident.step.fit.method
-        if ident is not None and ident.step is not None
-        else ""  # numbers kept in the session file: the fit's way is not kept with them
-    )
-    span = {
-        WHOLE_LOG: "the whole log (every edge, rising and falling)",
-        RISES: "each whole rise",
-    }.get(fitted, "the recorded steps")
+    # true of both of the fit's ways (the whole log, or each rise; the report's "How T was
+    # fitted" says which), and of the numbers the session file keeps, which do not say
+    span = "whole stretches of the run"
     own_T = value("own.T")
     own_K = value("own.K")
     own_w = value("own.omega_step")
