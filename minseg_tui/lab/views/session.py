@@ -599,15 +599,18 @@ class CursorReading:
 
     def text(self) -> str:
         """One line for people: the time in ms, the speed, the samples around it."""
-        ms = 1000.0
+
+        def ms(t: float) -> str:  # to the ms at least: 1375 ms, not 1380 ms
+            value = 1000.0 * t
+            return format_value(value, "ms", max(3, len(str(int(abs(value))))))
+
         between = (
-            f"the sample at {format_value(self.t_before * ms, 'ms', 3)}"
+            f"the sample at {ms(self.t_before)}"
             if self.t_before == self.t_after
-            else f"between the samples at {format_value(self.t_before * ms, 'ms', 3)} "
-            f"and {format_value(self.t_after * ms, 'ms', 3)}"
+            else f"between the samples at {ms(self.t_before)} and {ms(self.t_after)}"
         )
         return (
-            f"t = {format_value(self.t * ms, 'ms', 3)} after the edge: "
+            f"t = {ms(self.t)} after the edge: "
             f"omega = {format_value(self.omega, 'rad/s', 3)} ({between})"
         )
 
