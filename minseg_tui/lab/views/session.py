@@ -28,6 +28,7 @@ from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
+from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import read_entry
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
@@ -710,6 +711,9 @@ class ResultsView:
     hidden: frozenset[str] = frozenset()
     """Fields of Tasks 11-15 whose computed value the group has not seen yet: the plot
     leaves their readings out too (own.omega_step: the steady speed; own.T: the crossing)."""
+    shows: frozenset[str] = frozenset()
+    """Fields of Tasks 11-15 whose computed value this view puts on the screen (the session
+    records the first time: :func:`note_drawn`)."""
 
 
 def results(session: Session, step_id: str) -> ResultsView:
@@ -726,6 +730,7 @@ def results(session: Session, step_id: str) -> ResultsView:
     ident = res.identification
     lines: list[str] = []
     rises: tuple[RiseZoom, ...] = ()
+    shows: frozenset[str] = frozenset()
     if ident is not None and ident.step is not None:
         st = ident.step
         conceal = hidden(session)
@@ -772,6 +777,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         ]
         ts = log.ts if log is not None else 0.0
         rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
+        shows = frozenset(k for k in lab_compare.ANSWERED_FIRST if k not in conceal)
     problems = list(res.problems)
     rule = policy(session)
     if rule.problem:
@@ -792,6 +798,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         compare,
         tuple(problems),
         frozenset(hidden(session)),
+        shows,
     )
 
 
@@ -838,6 +845,9 @@ class CheckView:
     close_title: str = ""
     first_order: str = ""
     two_fits: str = ""
+    shows: frozenset[str] = frozenset()
+    """Fields of Tasks 11-15 whose computed value the check puts on the screen: T and K of the
+    first-order model it fitted, and so the model (none without a result)."""
 
 
 _stem = check_words.stem
@@ -940,7 +950,22 @@ def check(session: Session) -> CheckView:
         first_order="first-order model the check fitted to this run and simulated: "
         + _params(r.baseline.params),
         two_fits=two_fits,
+        shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),
     )
+
+
+def note_drawn(session: Session, view: object) -> list[str]:
+    """A view was drawn on the group's screen: record in ``session`` (the live one, not a
+    snapshot) the computed values of Tasks 11-15 it showed for the first time, and by what:
+    Tasks 11-15 (:class:`ResultsView`), Task 10's runs with their T readings (a tuple of
+    :class:`RunView`) or the model check (:class:`CheckView`). The fields newly recorded."""
+    if isinstance(view, ResultsView):
+        return session.note_shown(view.shows, "results")
+    if isinstance(view, CheckView):
+        return session.note_shown(view.shows, lab_shown.MODEL_CHECK)
+    if isinstance(view, tuple) and any(isinstance(v, RunView) and v.T_ls is not None for v in view):
+        return session.note_shown(("own.T",), "results")
+    return []
 
 
 # -- the run in use -----------------------------------------------------------------------------

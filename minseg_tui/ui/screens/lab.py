@@ -658,10 +658,12 @@ class LabScreen(StatusScreen):
         if not worker.is_cancelled:
             self.app.call_from_thread(self._deliver, panel, view)
 
-    @staticmethod
-    def _deliver(panel: ViewPanel[V], view: V) -> None:
+    def _deliver(self, panel: ViewPanel[V], view: V) -> None:
         if panel.is_attached:  # else the step changed while the worker ran
             panel.receive(view)
+            if not self.readonly:  # the report says when the group first saw each value
+                with self.session as s:
+                    views.note_drawn(s, view)
 
     def _on_lab_changed(self, _: None) -> None:
         """The session changed: the navigator's marks, the entries the lab changed (a
