@@ -263,10 +263,6 @@ class Canvas(PlotextPlot):
         self.xlim: tuple[float, float] | None = None
         self._drawn: Hashable = None
         """What :meth:`draw` last handed plotext (the key of its build in :data:`_built`)."""
-        self.columns: tuple[int, int] | None = None
-        """The first and the last column of the plot's data area in the widget, as last
-        drawn (None: not drawn yet); plotext puts x on column first + round((last - first)
-        (x - lo) / (hi - lo))."""
 
     def on_mount(self) -> None:
         super().on_mount()
@@ -373,7 +369,7 @@ class Canvas(PlotextPlot):
     def on_resize(self) -> None:
         self.draw()  # the y ticks sit on rows
 
-    def render(self) -> Text:
+    def _build(self) -> Text:
         """plotext's build of what :meth:`draw` handed it, at the widget's size (kept)."""
         key = (self._drawn, self.size, self.app.theme, self.theme)
         text = _built.get(key)
@@ -385,8 +381,20 @@ class Canvas(PlotextPlot):
                 _built.popitem(last=False)
         else:
             _built.move_to_end(key)
-        self.columns = data_columns(text.plain)
-        return text.copy()
+        return text
+
+    def render(self) -> Text:
+        return self._build().copy()
+
+    @property
+    def columns(self) -> tuple[int, int] | None:
+        """The first and the last column of the plot's data area in the widget, as drawn
+        now (None: not laid out yet); plotext puts x on column first + round((last - first)
+        (x - lo) / (hi - lo)). Read off the build the screen shows (:data:`_built`), not
+        left behind by the last paint: a paint may come later, or, headless, never."""
+        if self._drawn is None or not self.size.area:
+            return None
+        return data_columns(self._build().plain)
 
 
 def data_columns(plain: str) -> tuple[int, int] | None:
