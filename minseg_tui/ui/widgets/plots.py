@@ -245,6 +245,7 @@ def _signature(traces: Sequence[Trace]) -> tuple[object, ...]:
             tr.marker,
             tr.colour,
             tr.steps,
+            tr.right,
         )
         for tr in traces
     )
@@ -278,7 +279,10 @@ class Canvas(PlotextPlot):
         self._xlabel = xlabel
 
     def draw(self) -> None:
-        self._drawn = (
+        """Hand plotext what :attr:`traces` draw, at the widget's size, and refresh; nothing
+        when that is what it was last handed (a view delivered again after each entry typed,
+        a redraw of a stream that brought nothing new): no repaint for the same picture."""
+        key = (
             self._title,
             self._xlabel,
             self._ylabel,
@@ -286,6 +290,9 @@ class Canvas(PlotextPlot):
             self.size,
             _signature(self.traces),
         )
+        if key == self._drawn:
+            return
+        self._drawn = key
         plt = self.plt
         plt.clear_data()
         plt.clear_figure()
