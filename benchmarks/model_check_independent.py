@@ -102,6 +102,59 @@ effect with the noise of one sample instead dropped those caps and the 5 mV fric
 tuning seed 1017 too (41 touched tuning logs, seeds 1006-1017, with the restart: 30 -> 38
 right), but also the virtual MinSeg's real 0.12 V friction at 5 ms samples, which shows in
 the angle only (test_the_gain_survives_the_encoder_noise): not kept.
+
+s26-wrong (b9f0638 -> 0f9b214): a pole on the measurement of a smooth speed column is fitted
+as a filter of that column sample by sample, as a logger runs it (a speed of counts keeps
+the lag of the angle); of three causes, one that moves the simulated speed by under a fifth
+of the smaller effect of the other two is left out. Changed and calibrated on the tuning
+seeds only; the held-out seeds were run once, at the end, for these figures. Tuning seeds
+(--tuning --seeds 5 --only pairs, 75 logs): right 78.7 -> 82.7 %, right or honestly
+ambiguous 89.3 -> 93.3 %, ambiguous in all 10.7 -> 10.7 %, confidently wrong 10.7 -> 6.7 %
+(seeds 0-9, 150 logs: right or honestly ambiguous 85.3 -> 89.3 %, confidently wrong 13.3 ->
+9.3 %, ambiguous in all 11.3 % both; no log right before was lost). Held-out (--seeds 5
+--touch-seeds 5): pairs right 74.7 -> 73.3 %, honestly ambiguous 14.7 -> 16.0 % (right or
+honestly ambiguous 89.3 -> 89.3 %), ambiguous in all 17.3 -> 18.7 %, confidently wrong 8.0
+-> 8.0 %, untouched logs with a disturbance 0 -> 0; CPU per log (check only) median 1.05 ->
+1.40 s, max 6.09 -> 8.08 s (load average about 15 on two cores, tests running beside it).
+One effect or none, named alone with its parameters: none 5, friction 5, dead time 4,
+average 3, coast 5, pole 3, cap 3 of 5 (friction, average and dead time as after s25-check).
+A hand found with the cause kept 14 -> 13 of 20 (not looked into: held-out logs are not for
+tuning).
+On the held-out pairs no spurious third cause and no logger's filter read short is left
+among the failures; what is left wrong: a pole on the driver or the inductance with a coast
+or a cap (T2 41 % long, or T 19 % short), a delay with a pole named as a delay alone, a cap
+with a delay named cap + pole, an average with a pole (0 of 5 right, 3 honestly ambiguous;
+one named delay + average with T half the truth), and a 2-tap average with a coast (taps 3,
+T 16 % short). A plainer ambiguity threshold was looked at on the tuning seeds (rivals up to
+2.5 times the whitened residual): most confidently wrong logs there have no rival near, and
+1.5 took ambiguous in all from 11 to 21 % for 2 % more right or honestly ambiguous, so
+AMBIGUOUS_RATIO stays 1.1. Still short of 90 % / 5 %.
+
+s26-hands (held-out seeds, --seeds 5 --touch-seeds 5 --only touches; b9f0638 -> this
+branch): a hand's onset is the corner of a line fitted through the residual before the row
+where its departure crossed the threshold (a constant, then a steady departure the same way),
+no longer a walk back from row to row that one noisy row stopped; it is reported from there,
+at most the wheel's time constant, the average and the running mean before that crossing.
+A hand found with the cause kept 14 -> 16 of 20. On the tuning seeds 1000-1079 (218 touched
+logs, --tuning --only touches) 176 -> 179 right, the hand reported within 0.15 s 205 -> 210
+(seeds 1020-1079: 130 -> 133 of 166; the late ones were mostly averages of 9-22 taps, reported
+0.19-0.26 s after the touch). Of the 36 tuning failures on seeds 1020-1079 before, 12 reported
+the hand late or not at all and 24 named another or an extra cause; 16 of those 24 name the
+same causes on the same log with the hand's torque set to 0 (the single and pair decisions'
+business), the others come from the rows left out: a fence that runs across a step takes that
+step's response out of the comparison, and on the rest of the log a spurious pole, cap or
+friction then clears the margin (coulomb_friction 1067: the hand-free log with the same rows
+left out leaves 8 % to a pole, 2 % with them in). The spurious cap beside an average
+(velocity_filter 1005, 1023, 1033, 1057) is not the hand's: the hand-free log of 1005 names it
+too once the rows its stall reaches are left out before the causes are chosen; its ramp is
+0.2-0.35 of the average's length, but true caps beside an average on tuning pair seeds 0-9
+reach down to 0.10, so that is no rule. Not kept: a smaller share (5 % instead of 8 %) for a
+departure from the model chosen found two more hands seen through 20-25-tap averages but
+also a disturbance on an untouched velocity_filter + current_limit pair log; restarting the
+whitened sums after a fence helps an 18-tap average (1031) but again brings the cap on 1006
+and 1014. Still failing on the held-out seeds: dead_time 901000 and second_pole 901001 named
+velocity_filter, coast_on_zero 901000 with a cap beside it, current_limit 901002 with a
+friction beside it and its hand reported 0.45 s before the touch.
 """
 
 from __future__ import annotations

@@ -102,6 +102,11 @@ class PlantParams:
         return m.K * (u_a - math.copysign(self.u_coulomb, u_a))
 
 
+LEADS_OHM = 0.04
+"""What the multimeter's leads and probe contacts add to a resistance it reads, ohm (the
+mean that the one-sided noise of the earlier reading added)."""
+
+
 @dataclass(frozen=True)
 class MeterReading:
     """What a multimeter on M1A/M1B shows: u_A in V, i in A, R in ohm (rounded to its digits)."""
@@ -157,11 +162,16 @@ class Plant:
         return (self.u_A - m.k_v * self.omega) / m.R
 
     def multimeter(self) -> MeterReading:
-        """A multimeter reading: last-digit noise, 0.01 V, 0.1 mA and 0.1 ohm resolution."""
+        """A multimeter reading at 0.01 V, 0.1 mA and 0.1 ohm resolution: u_A and i with
+        last-digit noise (the drive and the current ripple); R the motor's with the leads'
+        :data:`LEADS_OHM` and a noise a tenth of its last digit, so it holds still as a
+        meter on a resistor does once settled, its last digit flickering only on a value
+        at a rounding edge (with noise half a digit wide and one-sided, 5.26 ohm read 5.3
+        or 5.4 between readings)."""
         noise = self._rng.normal(0.0, 1.0, 3)
         u = round(self.u_A + 0.003 * noise[0], 2)
         i = round((self.current * 1e3 + 0.05 * noise[1]), 1) / 1e3
-        r = round(self.params.motor.R + 0.05 * abs(noise[2]), 1)
+        r = round(self.params.motor.R + LEADS_OHM + 0.01 * noise[2], 1)
         return MeterReading(u_A=u, i=i, R=r)
 
     # -- driving it -------------------------------------------------------------------

@@ -25,6 +25,7 @@ import threading
 import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import replace
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -76,6 +77,7 @@ from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen, split_names
 from minseg_tui.ui.shared import Shared
+from minseg_tui.ui.widgets.fields import after_typed_keys
 
 ReportWriter = Callable[[Session], Sequence[Path]]
 """Writes a session's report into its folder; the files written (the CLI hands in
@@ -296,12 +298,17 @@ class LabApp(App[None]):
                 timeout=15,
             )
 
-    def action_command_palette(self) -> None:
-        """Ctrl+P: the palette, closed once however many Enters it is handed (what stands in
-        the step's entries stored first)."""
+    async def action_command_palette(self) -> None:  # type: ignore[override]
+        # (Textual's is not async; its actions may be, and this one waits for the keys)
+        """Ctrl+P: the palette, closed once however many Enters it is handed; after the keys
+        typed before it (what they typed stored first), before those typed after it (they
+        go into the palette)."""
+        await after_typed_keys(self, self._open_palette)
+
+    async def _open_palette(self) -> None:
         self._store_typed()
         if self.use_command_palette and not isinstance(self.screen, CommandPalette):
-            self.push_screen(Palette(id="--command-palette"))
+            await self.push_screen(Palette(id="--command-palette"))
 
     async def action_start_lab(self) -> None:
         """Enter on the start screen: open the lab it asks for, and return once the lab shows
@@ -805,10 +812,13 @@ class LabApp(App[None]):
         self.push_screen(SaveElsewhereScreen(str(here), self.save_elsewhere))
 
     async def action_quit(self) -> None:
-        """Ctrl+Q: quit; everything typed is stored first. While a run is being recorded,
-        ask first: keep recording, or stop it and quit (Ctrl+Q again quits). If something is
-        not on disk (a failed save), ask: keep working, save to another folder, or quit
-        anyway."""
+        """Ctrl+Q: quit, after the keys typed before it; everything typed is stored first.
+        While a run is being recorded, ask first: keep recording, or stop it and quit (Ctrl+Q
+        again quits). If something is not on disk (a failed save), ask: keep working, save to
+        another folder, or quit anyway."""
+        await after_typed_keys(self, self._quit)
+
+    def _quit(self) -> None:
         screen = self._lab_screen()
         if screen is not None:
             screen.store_typed()
@@ -848,9 +858,13 @@ class LabApp(App[None]):
         if not isinstance(self.screen, HelpScreen):
             self.push_screen(HelpScreen(KEYS))
 
-    def action_stop_motor(self) -> None:
-        """F2: motor off now; a run in progress keeps what it recorded (and what stands in
-        the step's entries is stored: the key runs ahead of the step's form)."""
+    async def action_stop_motor(self) -> None:
+        """F2: motor off, after the keys typed before it (:meth:`stop_motor`)."""
+        await after_typed_keys(self, self.stop_motor)
+
+    def stop_motor(self) -> None:
+        """Motor off now; a run in progress keeps what it recorded, and what stands in the
+        step's entries is stored."""
         self._store_typed()
         self.motor = "off"
         self.requested = None
@@ -876,40 +890,41 @@ class LabApp(App[None]):
         """A panel key is live (and in the footer) only on the steps whose panel has it."""
         if action in PANEL_ACTIONS:
             screen = self._lab_screen()
-            return screen is not None and action in screen.panel_keys()
+            return screen is not None and screen.offers(action)
         return True
 
-    async def _press(self, action: str) -> None:
+    # a panel key's binding, whatever has the focus: the step panel's own action runs
+    async def _panel_key(self, action: str) -> None:
         screen = self._lab_screen()
         if screen is not None:
-            await screen.press(action)
+            await screen.run_panel_key(action)
 
     async def action_set_voltage(self) -> None:
-        await self._press("set_voltage")
+        await self._panel_key("set_voltage")
 
     async def action_capture(self) -> None:
-        await self._press("capture")
+        await self._panel_key("capture")
 
     async def action_run_steps(self) -> None:
-        await self._press("run_steps")
+        await self._panel_key("run_steps")
 
     async def action_run_fast(self) -> None:
-        await self._press("run_fast")
+        await self._panel_key("run_fast")
 
     async def action_formula(self) -> None:
-        await self._press("formula")
+        await self._panel_key("formula")
 
     async def action_zoom_next(self) -> None:
-        await self._press("zoom_next")
+        await self._panel_key("zoom_next")
 
     async def action_pick_prev(self) -> None:
-        await self._press("pick_prev")
+        await self._panel_key("pick_prev")
 
     async def action_pick_next(self) -> None:
-        await self._press("pick_next")
+        await self._panel_key("pick_next")
 
     async def action_reveal(self) -> None:
-        await self._press("reveal")
+        await self._panel_key("reveal")
 
     def action_not_here(self, what: str) -> None:
         """A panel key on a step whose panel does not have it (nothing off the lab screen)."""
@@ -956,7 +971,7 @@ class LabApp(App[None]):
 
     def switch_to_virtual(self) -> None:
         """Drop the board and use the virtual MinSeg."""
-        self.action_stop_motor()
+        self.stop_motor()
         self.workers.cancel_group(self, "stream")
         old, self._device = self._device, None
         if old is not None:
@@ -976,8 +991,8 @@ class LabApp(App[None]):
         for command in super().get_system_commands(screen):
             if command.title != "Keys":
                 yield command
-        yield SystemCommand("Stop motor", "Motor off now (F2)", self.action_stop_motor)
-        offered = screen.panel_keys() if isinstance(screen, LabScreen) else {}
+        yield SystemCommand("Stop motor", "Motor off now (F2)", self.stop_motor)
+        lab = screen if isinstance(screen, LabScreen) else None
         for action, title, help_text in (
             (
                 "set_voltage",
@@ -994,9 +1009,8 @@ class LabApp(App[None]):
                 "says so (Ctrl+R)",
             ),
         ):
-            run = offered.get(action)
-            if run is not None:
-                yield SystemCommand(title, help_text, run)
+            if lab is not None and lab.offers(action):
+                yield SystemCommand(title, help_text, partial(lab.run_panel_key, action))
         yield SystemCommand(
             "Board check",
             "Does the wheel turn when asked, and does the count follow it? (F10)",

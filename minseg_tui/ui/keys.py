@@ -7,8 +7,10 @@ once."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 from textual.binding import Binding
+from textual.widget import Widget
 
 
 @dataclass(frozen=True)
@@ -127,6 +129,7 @@ KEYMAP: tuple[Key, ...] = (
     Key("← → on a rise", "the focused plot's cursor: t and omega at its column (Shift: 5)"),
     Key("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
     Key("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
+    Key("Ctrl+O", "the whole of the step's What to do, over its top (again: folds it)"),
     Key("Tab", "next field; Enter stores what you typed"),
     Key("Esc", "in a field: back to the answer stored, dropping what was typed over it"),
     Key("Ctrl+Z", "in a field: back to the answer stored before (again: further back)"),
@@ -148,6 +151,14 @@ def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
     what it is), a lab assistant's keys last."""
     panel = sorted((k for k in KEYMAP if k.panel), key=lambda k: k.assistant)
     return tuple((k.keys, k.action, k.label, k.panel) for k in panel)
+
+
+class PanelKeys(Widget):
+    """A step panel with keys (:func:`panel_keys`): ``KEYS``, the actions of those it has,
+    each done by its ``action_`` method of that name; its ``check_action`` says on which
+    steps one does nothing. The app binds the keys (:class:`~minseg_tui.ui.app.LabApp`)."""
+
+    KEYS: ClassVar[tuple[str, ...]] = ()
 
 
 def app_bindings() -> list[Binding]:

@@ -748,8 +748,12 @@ _LAB: tuple[Step, ...] = (
         "Model check: what the first-order model misses",
         "Compare the recorded steps with the model's simulation and see where they differ.",
         "The program simulates the model on the recorded voltage and shows the measured speed, the "
-        "model's, an extended model's, and the residuals, with the most likely cause named.",
-        fields=(_note("model_check.notes"),),
+        "model's, an extended model's, and the residuals, with the most likely cause named. "
+        "The step is done when you tick done? (the notes are your own, not needed for it).",
+        fields=(
+            _note("model_check.notes"),
+            _done("model_check", "we have seen where the run and the model differ"),
+        ),
         actions=("model_check",),
     ),
 )

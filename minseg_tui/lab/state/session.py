@@ -98,6 +98,7 @@ from minseg_tui.lab.state.results import (
     check_figures,
     check_run,
     compute,
+    falling_currents,
     response_figures,
 )
 from minseg_tui.lock import FileLock
@@ -843,11 +844,27 @@ class Session:
             if keys is None or k in keys
             for w in e.warnings
         ]
+        out += [
+            n
+            for n in self.falling_currents()
+            if keys is None or n.source in keys or step_id == "table"
+        ]
         if step_id is None or lab_steps.step(step_id).part in ("Table", "Results", "Step response"):
             res = self.results()
             if res.identification:
                 out += [Notice(f.code, f.message) for f in res.identification.observations]
         return out
+
+    def falling_currents(self) -> list[Notice]:
+        """The Task 5 readings whose current falls as the voltage rises (a warning each, on
+        the field of the higher voltage; :func:`~minseg_tui.lab.state.results.falling_currents`)."""
+        rows = []
+        for level in LEVELS:
+            key = f"i_ss@{level:g}"
+            i_ss = self.value(key)
+            if i_ss is not None:  # both in the field's unit (mA), with the digits typed
+                rows.append((level, i_ss, format_reading(i_ss, FIELDS[key].unit)))
+        return falling_currents(rows)
 
     def comparisons(
         self, step_id: str | None = None, results: Results | None = None

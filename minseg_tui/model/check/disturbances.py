@@ -239,20 +239,44 @@ def rejoin(dev: FloatArray, end: int, band: float, recover: int) -> int:
 
 def onset(dev: FloatArray, start: int, band: float, lead: int) -> int:
     """The first row of the departure that a disturbance found from row ``start`` begins
-    with: going back from ``start`` (at most ``lead`` rows), the rows whose running mean of
-    ``dev`` still departs the same way by more than ``band`` and no more than the row after
-    it (a hand's departure grows from the touch on; noise or a miss of the model before it
-    does not keep shrinking into the past). Rows found by a threshold far above the noise
-    start late."""
+    with, looking back at most ``lead`` rows: the corner of the line that fits ``dev`` (the
+    residual against its settled level, rad/s) on those rows best as a constant that then
+    departs steadily the same way as at ``start`` (a hand's departure grows from the touch
+    on, with the wheel's own time constant, through any average of the reading), provided
+    the departure up to ``start`` exceeds ``band``. Rows found by a threshold far above the
+    noise start late; a corner fitted through the rows' noise, unlike a walk back from row
+    to row, is not stopped by one noisy row."""
     first = max(start - lead, 0)
-    if start <= first or start >= dev.size:
+    if start - first < ONSET_FLAT + 1 or start >= dev.size:
         return start
     sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")
     sign = 1.0 if sm[start] >= 0 else -1.0
-    k = start
-    while k > first and sign * sm[k - 1] > band and sign * sm[k - 1] <= sign * sm[k]:
-        k -= 1
-    return k
+    # never back past a row that departs the other way (a spike of the logger, another
+    # miss): a hand's departure does not hold that; single rows' outliers are clipped
+    other = np.flatnonzero(sign * sm[first:start] < -band)
+    if other.size:
+        first += int(other[-1]) + 1
+    if start - first < ONSET_FLAT + 1:
+        return start
+    top = abs(float(sm[start])) + band
+    x = np.clip(sign * dev[first : start + 1], -top, top)
+    n = x.size
+    j = np.arange(n, dtype=float)
+    best, best_sse = start, math.inf
+    for i0 in range(ONSET_FLAT, n - 1):
+        r = np.maximum(j - i0 + 1.0, 0.0)
+        a = np.vstack((np.ones(n), r)).T
+        coef, *_ = np.linalg.lstsq(a, x, rcond=None)
+        if coef[1] <= 0 or coef[1] * r[-1] <= band:
+            continue
+        sse = float(np.sum((x - a @ coef) ** 2))
+        if sse < best_sse:
+            best, best_sse = first + i0, sse
+    return min(best, start)
+
+
+ONSET_FLAT = 3
+"""Rows of the settled level at least, before a departure's corner."""
 
 
 def fence(n: int, found: list[Disturbance]) -> FloatArray:

@@ -361,6 +361,15 @@ def pole_words(log: ev.Log, ext: Fit) -> str:
             f": {ev.ms(w * log.ts)} after the step the speed has risen {np.median(got):.3g} rad/s "
             f"where the first-order model rises {np.median(model):.3g} rad/s"
         )
+    if ext.effects.pole_filtered:
+        share = 1.0 - math.exp(-log.ts / t2)
+        return text + (
+            "; the speed column is smooth, not a difference of encoder counts, so an extra pole "
+            "on the measurement is a filter of that column, run sample by sample as a logger "
+            f"runs it (each reading takes {share:.2f} of the new speed and keeps the rest of "
+            f"the one before: a first-order filter of {ev.ms(t2)}); a pole on the drive fits "
+            "this log worse (a pure delay would show a corner)"
+        )
     if ext.effects.pole_measured:
         where = [
             w

@@ -96,7 +96,7 @@ def check(
         y = y.copy()
         y[:glitch] = y[glitch]
         pre[:glitch] = 0.0
-    full = Problem(t, u, y, ts, weights=pre, over_interval=samp.over_interval)
+    full = Problem(t, u, y, ts, weights=pre, over_interval=samp.over_interval, smooth=samp.smooth)
     rng0 = ranges(t, u, ts, 0.05)
     if not glitch and _in_motion(y):
         if u[0] != 0:
@@ -236,7 +236,7 @@ def check(
 
 def replace_y(p: Problem, y: FloatArray) -> Problem:
     """The problem with another measured speed (same weights)."""
-    return Problem(p.t, p.u, y, p.ts, p.z0, p.weights, p.over_interval)
+    return Problem(p.t, p.u, y, p.ts, p.z0, p.weights, p.over_interval, p.smooth)
 
 
 def _rows(found: list[dist.Disturbance]) -> list[tuple[int, int]]:
@@ -382,8 +382,9 @@ def _report(
         for d in artefacts
     ]
     # a hand is reported from where the speed leaves the model, but no further back from
-    # where its departure crossed the threshold than an average and a running mean reach
-    reach = ext.effects.taps + dist.SMOOTH
+    # where its departure crossed the threshold than the wheel's own time constant (a
+    # braked wheel slows with it), an average and a running mean reach
+    reach = ext.effects.taps + dist.SMOOTH + math.ceil(ext.T / samp.ts)
     anomalies += [
         an.disturbance(
             t,
@@ -934,7 +935,9 @@ def _repaired(
     rng: dict,  # type: ignore[type-arg]
 ) -> tuple[Problem, Problem, Fit]:
     y2 = an.repair(full.y, residual, rows, taps)
-    fixed = Problem(full.t, full.u, y2, full.ts, full.z0, full.weights, full.over_interval)
+    fixed = Problem(
+        full.t, full.u, y2, full.ts, full.z0, full.weights, full.over_interval, full.smooth
+    )
     head = fixed.head(MAX_FIT_ROWS)
     return fixed, head, fit_baseline(head, rng)
 

@@ -92,6 +92,10 @@ class Effects:
     """The extra pole acts on the measurement (a compliant coupling to the encoder, a
     first-order filter of the speed), after the friction, the coast and the cap, instead
     of on the drive."""
+    pole_filtered: bool = False
+    """With ``pole_measured``: the pole is a first-order filter the logger runs on the speed
+    column, sample by sample (y_k = a y_k-1 + (1 - a) m_k, a = exp(-ts/T2), m_k the speed
+    of counts), not a lag of the angle (a compliant coupling)."""
     drag: float = 0.0
     """The share of the driven damping that is the wheel's own viscous drag (T/J_b with
     J/b the drag's time constant in s, 0 to below 1; the rest is the back-EMF). While the
@@ -526,14 +530,17 @@ def response(
     n = fx.taps
     tb = t[0] - ts * np.arange(n, 0, -1)
     theta = angle_at(pieces(st, T, fx, z0), np.concatenate((tb, t)), fx)
-    return measured(theta[n:], t, theta[:n], ts, n, over_interval)
+    out = measured(theta[n:], t, theta[:n], ts, n, over_interval)
+    if fx.pole_filtered and fx.pole_measured and fx.T2 > 0.0:
+        out = iir(out, math.exp(-ts / fx.T2))
+    return out
 
 
 def angle_at(table: Pieces, times: FloatArray, fx: Effects) -> FloatArray:
     """The angle the encoder reads at ``times`` (s, ascending; V s at K = 1): the table read
     ``fx.delay`` earlier, and through the extra pole when it acts on the measurement."""
     theta = table.angle(times - fx.delay)
-    if fx.pole_measured and fx.T2 > 0.0:
+    if fx.pole_measured and fx.T2 > 0.0 and not fx.pole_filtered:
         theta = lag(times, theta, fx.T2)
     return theta
 
@@ -575,4 +582,25 @@ def lag(times: FloatArray, x: FloatArray, tau: float) -> FloatArray:
         grow = np.exp(e)  # 1 / prod(a) from the span's start
         out[start + 1 : stop] = (out[start] + np.cumsum(b[start : stop - 1] * grow)) / grow
         start = stop - 1
+    return out
+
+
+def iir(y: FloatArray, a: float) -> FloatArray:
+    """``y`` through y_k = a y_k-1 + (1 - a) y_k-in (a first-order filter of a speed column
+    as a logger runs it, a = exp(-ts/T2)), settled on the first row: summed in closed form
+    over spans of ``_LAG_SPAN`` time constants."""
+    n = y.size
+    if n == 0 or not 0.0 < a < 1.0:
+        return y.copy()
+    b = (1.0 - a) * y
+    b[0] = y[0]
+    out = np.empty(n)
+    step = -math.log(a)  # time constants per row
+    span = max(1, int(_LAG_SPAN / step))
+    carry = 0.0
+    for start in range(0, n, span):
+        stop = min(n, start + span)
+        grow = np.exp(np.arange(stop - start) * step)
+        out[start:stop] = (a * carry + np.cumsum(b[start:stop] * grow)) / grow
+        carry = float(out[stop - 1])
     return out

@@ -14,6 +14,7 @@ from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import format_spread
 from minseg_tui.ui.device import DeviceInfo
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
 from minseg_tui.ui.panels.meter import MeterPanel
@@ -22,11 +23,13 @@ from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
 
-class LivePanel(Vertical):
+class LivePanel(Vertical, PanelKeys):
     """Angle and speed of the last seconds from the ``live`` buffer (redrawn every
     ``refresh`` s; never per sample), the manual's speed beside the timestamp one; the
     steady-state indicator (Task 4); F3 asks for the next voltage, F4 for a capture; the
     multimeter. Shows the app's ``requested`` voltage, ``meter`` reading and ``device``."""
+
+    KEYS = ("set_voltage", "capture")
 
     requested: reactive[float | None] = reactive(None)
     meter: reactive[MeterReading | None] = reactive(None)
@@ -106,15 +109,16 @@ class LivePanel(Vertical):
             text = "waiting for samples…\n" + text
         self._steady.update(text)
 
-    def offers(self, action: str) -> bool:
-        """Whether the panel's key ``action`` does something on this step (F3 where there are
-        voltages to set, F4 on Task 4)."""
-        return {
-            "set_voltage": bool(self.levels),
-            "capture": "capture_omega" in self.step.actions,
-        }.get(action, True)
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """F3 only where there are voltages to set, F4 only on Task 4 (elsewhere the key says
+        that it is not part of this step)."""
+        if action == "set_voltage":
+            return bool(self.levels)
+        if action == "capture":
+            return "capture_omega" in self.step.actions
+        return True
 
-    def set_voltage(self) -> None:
+    def action_set_voltage(self) -> None:
         """F3: ask for the next of this step's voltages."""
         if not self.levels:
             self.notify("no voltage to set on this step (Tasks 4-5)")
@@ -122,18 +126,18 @@ class LivePanel(Vertical):
         k = -1 if self.requested not in self.levels else self.levels.index(self.requested)
         self.post_message(VoltageRequested(self.levels[(k + 1) % len(self.levels)]))
 
-    def capture(self) -> CaptureRequested | None:
+    async def action_capture(self) -> None:
         """F4: ask the lab screen to take omega_ss from the settled window (refused while not
-        settled); the request asked (None: none)."""
+        settled), and wait until it did: the keys typed after F4 act on the result."""
         if "capture_omega" not in self.step.actions:
             self.notify("capturing omega_ss is part of Task 4")
-            return None
+            return
         if self.requested is None:
             self.notify("set a voltage first (F3)", severity="warning")
-            return None
+            return
         request = CaptureRequested(self.requested)
-        self.screen.post_message(request)
-        return request
+        if self.screen.post_message(request):
+            await request.done.wait()
 
 
 class Readout(Vertical):

@@ -11,6 +11,7 @@ from textual.widgets import Collapsible, Input
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import CheckView
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -20,7 +21,7 @@ DETAILS = "Details: figures, evidence, noise · Enter opens"
 """The fold's title (the details follow the sentences a student reads first)."""
 
 
-class ModelCheckPanel(ViewPanel[CheckView]):
+class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
     """What the first-order model gets wrong in the run: first the close-up where the cause
     acts (measured, both models, and their residuals against the noise floor), F9 switches
     to the whole log and back; under it two or three sentences a student reads first (what
@@ -30,6 +31,8 @@ class ModelCheckPanel(ViewPanel[CheckView]):
     what the check cannot say. A log recorded elsewhere can be loaded (Enter in the path
     asks for it): its box stands under the step's notes (:meth:`after_rows`), so that Tab
     reaches the notes first and notes are never typed into it."""
+
+    KEYS = ("zoom_next",)
 
     def __init__(self) -> None:
         super().__init__()
@@ -122,7 +125,7 @@ class ModelCheckPanel(ViewPanel[CheckView]):
         traces.append(Trace(t, om - ba, "first order", "braille", colour=1))
         residual.show(traces, span)
 
-    def zoom_next(self) -> None:
+    def action_zoom_next(self) -> None:
         """F9: the close-up, or the whole log."""
         self.close_up = not self.close_up
         self.show_view()

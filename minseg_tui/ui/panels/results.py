@@ -3,6 +3,8 @@ group's own readings."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 from textual import events
@@ -16,6 +18,7 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import ResultsView
 from minseg_tui.quantities import format_value
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -23,6 +26,10 @@ from minseg_tui.ui.widgets.prose import Prose
 
 CURSOR_JUMP = 5
 """Columns Shift+←/→ move the cursor at once."""
+
+HELD_END = 1e-6
+"""Task 11's zoom ends this long before the high level does (s): the sample at its end
+already reports the low voltage."""
 
 
 class StepPlot(TracePlot):
@@ -74,9 +81,11 @@ class StepPlot(TracePlot):
                 p.toggle_zoom()
 
 
-class ResultsPanel(ViewPanel[ResultsView]):
+class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
     """Tasks 11-15: the step log plotted, zoom to a step, K, T (63 % and least squares with
     its interval), J, the model, omega at 5 V, and the group's readings beside them."""
+
+    KEYS = ("zoom_next", "pick_prev", "pick_next", "reveal")
 
     def __init__(self, step: Step) -> None:
         super().__init__("results")
@@ -162,8 +171,12 @@ class ResultsPanel(ViewPanel[ResultsView]):
             note.update(f"run {v.run}: whole log, {said}")
             return
         w = v.rises[self.zoom]
-        # Task 12 reads T: the close-up on the first few T, a few ms a column at 80 columns
+        # Task 12 reads T: the close-up on the first few T, a few ms a column at 80 columns;
+        # Task 11 reads the settled speed: the rise and its high level to its end (the zoom
+        # to 5 T showed 0.2 s of it, too little to see where the speed settles)
         z0, z1 = (w.c0, w.c1) if self.step.id == "task12" and w.c1 > w.c0 else (w.z0, w.z1)
+        if self.step.id == "task11":
+            z1 = max(z1, w.t1 - HELD_END)
         keep = (v.t >= z0) & (v.t <= z1)
         x = v.t[keep] - w.t0  # time after the edge: the 63 % crossing is read off as T
         traces = [
@@ -171,6 +184,8 @@ class ResultsPanel(ViewPanel[ResultsView]):
             Trace(x, v.u[keep], "u_A [V]", "dot", steps=True, right=True),
         ]
         lo, hi = z0 - w.t0, z1 - w.t0
+        if x.size and self.step.id == "task11":
+            hi = float(x[-1])  # to its last sample, not a column past it
         traces.append(Trace([lo, hi], [w.level, w.level], "63 %", "-"))
         read_T = "own.T" not in v.hidden  # the crossing is Task 12's answer
         if w.T_63 is not None and read_T:
@@ -192,9 +207,14 @@ class ResultsPanel(ViewPanel[ResultsView]):
             f"{format_value(w.omega_ss, 'rad/s', 3)}; "
             f"63 % of the change is {format_value(w.level, 'rad/s', 3)}"
         )
+        if self.step.id == "task11":
+            read = "" if "own.omega_step" in v.hidden else f"{change}; "
+            said = f" to the end of its high level: {read}read omega_ss where it has settled"
+        else:
+            said = f": {change}, {crossing}"
         note.update(
-            f"run {v.run}, step {self.zoom + 1} of {len(v.rises)}: {change}, "
-            f"{crossing} · shift+tab, ←/→ Cursor · alt+←/→ Step · f9 Zoom (the next step)"
+            f"run {v.run}, step {self.zoom + 1} of {len(v.rises)}{said} · "
+            "shift+tab, ←/→ Cursor · alt+←/→ Step · f9 Zoom (the next step)"
         )
 
     def _cursor(
@@ -214,9 +234,17 @@ class ResultsPanel(ViewPanel[ResultsView]):
             return
         line.display = True
         width = columns[1] - columns[0]
-        self.cursor = max(0, min(self.cursor, width))
         lo, hi = xlim
-        at = lo + (hi - lo) * self.cursor / width
+        if x.size == 0 or not hi > lo or width <= 0:
+            return
+        # the columns with samples on both sides: at the frame's last column the cursor read
+        # 'no sample there' and vanished (its time a hair past the last sample's)
+        first = max(math.ceil((x[0] - lo) / (hi - lo) * width - 1e-6), 0)
+        last = min(math.floor((x[-1] - lo) / (hi - lo) * width + 1e-6), width)
+        self.cursor = max(first, min(self.cursor, last))
+        # to the µs and within the samples: the edge's column read "t = -6.94e-15 ms"
+        at = round(lo + (hi - lo) * self.cursor / width, 6)
+        at = min(max(at, float(x[0])), float(x[-1]))
         self.reading = views.cursor_reading(x, omega, at)
         if self.reading is None:
             line.update("┆ cursor: no sample there · ←/→ move it")
@@ -246,7 +274,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self.cursor = column
         self._plot()
 
-    def reveal(self) -> None:
+    def action_reveal(self) -> None:
         """Ctrl+R (a lab assistant): show this step's computed values before the group answers."""
         self.post_message(RevealRequested(self.step.id))
 
@@ -258,11 +286,11 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
         self._plot()
 
-    def pick_prev(self) -> None:
+    def action_pick_prev(self) -> None:
         """alt+left: the previous rising step."""
         self.pick(-1)
 
-    def pick_next(self) -> None:
+    def action_pick_next(self) -> None:
         """alt+right: the next rising step."""
         self.pick(1)
 
@@ -271,7 +299,7 @@ class ResultsPanel(ViewPanel[ResultsView]):
         self.zoom = None if self.zoom is not None else 0
         self._plot()
 
-    def zoom_next(self) -> None:
+    def action_zoom_next(self) -> None:
         """F9: the next step, then the whole log, then the first step again."""
         if self.view is None or not self.view.rises:
             return

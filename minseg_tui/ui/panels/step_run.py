@@ -13,6 +13,7 @@ from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import RunView
 from minseg_tui.quantities import format_number, format_value
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import RunRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
@@ -35,7 +36,8 @@ def _s(v: float | None) -> str:
     return format_value(v, "s", 3)
 
 
-class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
+class StepRunPanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
+    KEYS = ("run_steps", "run_fast")
     """F5/F6 ask for the board's step sequence; shows the app's ``run_progress`` while it
     waits for the wheel and while it records (F2 stops it at once), the run plotted as it
     arrives from the ``live`` buffer (redrawn every ``refresh`` s; at each progress when 0),
@@ -143,10 +145,10 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]]):
             )
             self.query_one("#run-status", Prose).update(said or "no runs recorded yet")
 
-    def run_steps(self) -> None:
+    def action_run_steps(self) -> None:
         """F5: the manual's plan at 25 ms."""
         self.post_message(RunRequested("manual"))
 
-    def run_fast(self) -> None:
+    def action_run_fast(self) -> None:
         """F6: the same at 5 ms."""
         self.post_message(RunRequested("fast"))

@@ -9,15 +9,18 @@ from textual.widgets import DataTable
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import TableView
+from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.prose import Prose
 
 
-class TablePanel(ViewPanel[TableView]):
+class TablePanel(ViewPanel[TableView], PanelKeys):
     """The table of Tasks 6-9 with the final values and warnings; F7 (or Enter on a cell)
     shows the formula behind the cell. The warnings come under the group's entries (a step
     lands on its first entry: at 80x24 the warnings above it pushed the table and the step's
     title off the screen)."""
+
+    KEYS = ("formula",)
 
     def __init__(self) -> None:
         super().__init__()
@@ -56,7 +59,7 @@ class TablePanel(ViewPanel[TableView]):
         self._warnings.update("\n".join(f"! {w}" for w in view.warnings))
         self._warnings.display = bool(view.warnings)
 
-    def formula(self) -> None:
+    def action_formula(self) -> None:
         """Show the formula of the cell under the cursor."""
         if self.view is None or not self.view.rows:
             return
@@ -68,4 +71,4 @@ class TablePanel(ViewPanel[TableView]):
         )
 
     def on_data_table_cell_selected(self, _event: DataTable.CellSelected) -> None:
-        self.formula()
+        self.action_formula()

@@ -36,7 +36,7 @@ from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
-from minseg_tui.ui.keys import panel_keys
+from minseg_tui.ui.keys import PanelKeys, panel_keys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
     CaptureRequested,
@@ -54,9 +54,15 @@ from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.shared import Shared
-from minseg_tui.ui.widgets.fields import FieldForm, FieldRow, Restoring, Store
+from minseg_tui.ui.widgets.fields import (
+    FieldForm,
+    FieldRow,
+    Restoring,
+    Store,
+    after_typed_keys,
+)
 from minseg_tui.ui.widgets.footer import KeyFooter
-from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.ui.widgets.prose import Prose, wrap
 
 V = TypeVar("V")
 
@@ -69,6 +75,9 @@ _SHORT = {
 
 NOTES = ".notes"
 """The key ending of a step's own notes field."""
+
+DONE = ".done"
+"""The key ending of a step's done? field (ticked once the group did what it asks)."""
 
 STATUS_WORDS: tuple[tuple[str, str, str], ...] = (
     ("done", "✓", "done"),
@@ -91,12 +100,17 @@ def marks_legend() -> str:
 STEP_IDS = tuple(s.id for s in STEPS)
 
 PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = panel_keys()
-"""Keys that act on the shown step's panel: (keys, the app's action, footer label, what it is;
-no label: not in the footer). The footer shows a key on the steps whose panel offers it
-(:meth:`LabScreen.panel_keys`); elsewhere the key says that it is not part of this step. None
+"""Keys that act on the shown step's panel: (keys, the panel's action, footer label, what it
+is; no label: not in the footer). Each panel names its own (:class:`~minseg_tui.ui.keys.PanelKeys`) and does
+them in its ``action_`` methods; the app binds them, for wherever the focus is (and in one
+place in the footer's order, whatever has the focus: bindings of the panel itself would
+come first while a widget of it has the focus), and runs the panel's action
+(:meth:`LabScreen.run_panel_key`). The footer shows a key on the steps whose panel offers it
+(:meth:`LabScreen.offers`); elsewhere the key says that it is not part of this step. None
 is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
 moves). The app binds them (its keys come first in the footer; Reveal, a lab assistant's
 key, is the last, the first the footer leaves out where a line cannot hold them all)."""
+
 
 PANEL_ACTIONS = frozenset(action for _, action, _, _ in PANEL_KEYS)
 
@@ -110,7 +124,45 @@ def nav_label(step: Step, status: str = "todo") -> str:
 
 
 HEADING_ROWS = 2
-"""The rows of a step's :class:`Heading` (lab.tcss)."""
+"""The rows of a step's :class:`Heading` (lab.tcss), its whole "What to do" folded."""
+
+WHOLE_TODO_KEY = "Ctrl+O"
+"""The key that shows the whole of a step's "What to do" in its heading (and folds it)."""
+
+MORE = f"… {WHOLE_TODO_KEY} more"
+"""The end of the heading's "What to do" line when the rest of it does not fit."""
+
+FOLD = f" ({WHOLE_TODO_KEY} folds it)"
+"""The end of the whole "What to do" in the heading."""
+
+
+def todo_lines(todo: str, width: int, whole: bool) -> list[str]:
+    """The heading's "What to do" at ``width`` columns: one line, cut with :data:`MORE` at
+    its end when it is longer; or ``whole``, all of it wrapped, :data:`FOLD` at its end."""
+    text = "What to do: " + todo
+    if whole:
+        return wrap(text + FOLD, width)
+    if len(text) <= width:
+        return [text]
+    cut = text[: max(width - len(MORE) + 1, 0)]
+    cut = cut[: cut.rindex(" ")] if " " in cut else cut[:-1]  # a word cut off goes whole
+    return [cut.rstrip(" ,;:") + MORE]
+
+
+class TodoLine(Static):
+    """The heading's "What to do": its first line, saying when more follows and the key
+    that shows it, or all of it (:func:`todo_lines`)."""
+
+    def __init__(self, todo: str) -> None:
+        super().__init__("", classes="heading-todo", markup=False)
+        self.todo = todo
+        self.whole = False
+
+    def render(self) -> str:
+        return "\n".join(todo_lines(self.todo, self.content_size.width, self.whole))
+
+    def on_resize(self) -> None:
+        self.refresh(layout=self.whole)
 
 
 class Heading(Vertical):
@@ -118,15 +170,31 @@ class Heading(Vertical):
     the step while its own title is scrolled away (a layer of its own over the step, so the
     step's text does not move when it shows). At 80x24 a step taller than the screen landed
     on its entry with its title and instructions above the screen: the group did not see
-    what the step asks."""
+    what the step asks. :data:`WHOLE_TODO_KEY` shows all of what to do in it, over the step
+    (it showed only its first line, and the rest was above the screen), and folds it."""
 
     def __init__(self, step: Step) -> None:
+        self.todo = TodoLine(step.todo)
         super().__init__(
             Static(step.title, classes="heading-title", markup=False),
-            Static("What to do: " + step.todo, classes="heading-todo", markup=False),
+            self.todo,
             classes="heading",
         )
         self.display = False
+
+    @property
+    def whole(self) -> bool:
+        """All of what to do shows."""
+        return self.todo.whole
+
+    def show_whole(self, whole: bool) -> None:
+        self.todo.whole = whole
+        self.set_class(whole, "-whole")
+        self.todo.refresh(layout=True)
+
+    def rows(self, width: int) -> int:
+        """The rows it covers at ``width`` columns."""
+        return 1 + len(todo_lines(self.todo.todo, width, self.whole))
 
 
 class StepPane(FieldForm):
@@ -150,7 +218,13 @@ class StepPane(FieldForm):
         step landed in, while it has the focus (placed again from the top of the step: the
         panel's view comes from a worker, before or after the landing, and moves the entry
         down); the focused entry; or nothing once the group scrolled (arrows, mouse) since
-        the focus last moved in the step: it stays where they put it."""
+        the focus last moved in the step: it stays where they put it.
+
+        A flag of ours, as Textual offers nothing for it: it scrolls a widget into view when
+        the widget takes the focus, once, not when the content above it changes height later
+        (``Widget.anchor`` keeps a scrollable's end in view, for logs), and it has no event
+        that tells the group's scrolling from the program's (the form learns it from the
+        mouse wheel and its own arrow-key actions)."""
 
     async def show(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
         """Put ``step``'s widgets in the form in place of the last step's; return once they
@@ -236,15 +310,32 @@ class StepPane(FieldForm):
         self.call_after_refresh(self._clear_heading, event.widget)
 
     def watch_scroll_y(self, old: float, new: float) -> None:
-        """The heading shows while the step's own title is scrolled away."""
+        """The heading shows while the step's own title is scrolled away, or while it shows
+        all of what to do."""
         super().watch_scroll_y(old, new)
         if self._heading is not None:
-            self._heading.display = round(new) > 0
+            self._heading.display = round(new) > 0 or self._heading.whole
 
     @property
     def heading_rows(self) -> int:
         """Rows the heading covers at the top of the step (0 while it is hidden)."""
-        return HEADING_ROWS if self._heading is not None and self._heading.display else 0
+        heading = self._heading
+        if heading is None or not heading.display:
+            return 0
+        return heading.rows(self.scrollable_content_region.width)
+
+    def toggle_whole_todo(self) -> None:
+        """:data:`WHOLE_TODO_KEY`: all of the step's "What to do" over its top, or folded
+        again to its first line; the entry the group is in stays in sight under it."""
+        heading = self._heading
+        if heading is None:
+            return
+        heading.show_whole(not heading.whole)
+        heading.display = round(self.scroll_y) > 0 or heading.whole
+        row = self.typing
+        focused = row.input if row is not None else self.screen.focused
+        if focused is not None and focused is not self and self in focused.ancestors:
+            self.call_after_refresh(self._clear_heading, focused)
 
     def _clear_heading(self, widget: Widget) -> None:
         """A focused ``widget`` under the heading (Textual scrolls a widget above the view to
@@ -291,9 +382,11 @@ class StepPane(FieldForm):
 
     def landing_row(self) -> FieldRow | None:
         """The entry the step lands in: the first one with nothing in it, else the first;
-        on a step with a panel, its notes field does not count (the step lands at the top,
-        on what the panel shows). None: no such entry."""
-        rows = [r for r in self.rows() if self.panel is None or not r.field.key.endswith(NOTES)]
+        on a step with a panel, its notes and its done? do not count (the step lands at the
+        top, on what the panel shows). None: no such entry."""
+        rows = [
+            r for r in self.rows() if self.panel is None or not r.field.key.endswith((NOTES, DONE))
+        ]
         return next((r for r in rows if r.is_empty), rows[0] if rows else None)
 
     def focus_on(self, what: str) -> None:
@@ -317,7 +410,14 @@ class StepPane(FieldForm):
 
 class StepList(OptionList):
     """The list of steps: a character typed on it goes into the step's first empty entry
-    (:meth:`FieldForm.take`), not nowhere."""
+    (:meth:`FieldForm.take`), not nowhere.
+
+    A key handler, because nothing else of Textual's does it: a binding names a key, not
+    "any printable character"; an OptionList lets a character bubble up to the screen and
+    the app, where no one takes it; and the list keeps its focus (Ctrl+L, the arrows browse
+    the steps), so ``can_focus=False`` or a focus move would lose that. The handler runs in
+    the list's own queue, in the order typed, and hands the character to the form by a plain
+    call, no second queue: the characters after it follow it into the same entry."""
 
     def on_key(self, event: events.Key) -> None:
         screen = self.screen
@@ -390,6 +490,7 @@ class LabScreen(StatusScreen):
         Binding("shift+tab", "into_step(-1)", show=False),
         Binding("ctrl+l", "focus_nav", "Steps", show=False),
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
+        Binding("ctrl+o", "whole_todo", "What to do", show=False),
     ]
     COMMANDS = StatusScreen.COMMANDS | {StepCommands}
     AUTO_FOCUS = ".pane"
@@ -417,11 +518,6 @@ class LabScreen(StatusScreen):
         self._refresh = refresh
         self._shown: str | None = None
         """The step last asked for (its widgets may not be in the form yet)."""
-        self._jump: tuple[str | None] | None = None
-        """Set by :meth:`go_to`: what to focus once its step is shown (in a tuple: the focus
-        may be None, "leave it")."""
-        self._paging = False
-        """Set by PgDn/PgUp: the step shown next takes the focus, wherever it was."""
         self._undone: dict[str, list[str]] = {}
         """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
         forward again (until another answer is stored in the field)."""
@@ -446,8 +542,8 @@ class LabScreen(StatusScreen):
         with self.session as s:
             current = s.current_step
         start = current if current in STEP_IDS else STEP_IDS[0]
-        self.query_one("#nav", OptionList).highlighted = STEP_IDS.index(start)
-        await self.show_step(start)
+        self._highlight(STEP_IDS.index(start))
+        await self.show_step(start, "entry")
         self.shown.set()
 
     # -- the step on screen --------------------------------------------------------------
@@ -474,38 +570,21 @@ class LabScreen(StatusScreen):
             return None
         return panes.first().panel if panes else None
 
-    def panel_keys(self) -> dict[str, Callable[[], object]]:
-        """The panel keys of the step shown (:data:`PANEL_KEYS`): action -> what its panel
-        does (none on a step without a panel, or whose panel has no keys)."""
+    def offers(self, action: str) -> bool:
+        """Whether panel key ``action`` (:data:`PANEL_KEYS`) acts on the step shown: its panel
+        has the key (its ``KEYS``) and it does something here (its ``check_action``)."""
         panel = self.panel
-        if isinstance(panel, LivePanel):
-            keys = {"set_voltage": panel.set_voltage, "capture": panel.capture}
-            return {action: run for action, run in keys.items() if panel.offers(action)}
-        if isinstance(panel, StepRunPanel):
-            return {"run_steps": panel.run_steps, "run_fast": panel.run_fast}
-        if isinstance(panel, TablePanel):
-            return {"formula": panel.formula}
-        if isinstance(panel, ResultsPanel):
-            return {
-                "zoom_next": panel.zoom_next,
-                "pick_prev": panel.pick_prev,
-                "pick_next": panel.pick_next,
-                "reveal": panel.reveal,
-            }
-        if isinstance(panel, ModelCheckPanel):
-            return {"zoom_next": panel.zoom_next}
-        return {}
+        if not isinstance(panel, PanelKeys) or action not in panel.KEYS:
+            return False
+        return panel.check_action(action, ()) is not False
 
-    async def press(self, action: str) -> None:
-        """Panel key ``action`` (:data:`PANEL_KEYS`): what the step's panel does (nothing on
-        a step whose panel does not have it). F4's capture is done before this returns, so
-        the keys typed after it act on the result."""
-        run = self.panel_keys().get(action)
-        if run is None:
-            return
-        asked = run()
-        if isinstance(asked, CaptureRequested):
-            await asked.done.wait()
+    async def run_panel_key(self, action: str) -> None:
+        """Panel key ``action``: the step's panel runs its action (nothing on a step whose
+        panel does not have it), and this returns once it is done (F4's capture: the keys
+        typed after it act on the result)."""
+        panel = self.panel
+        if panel is not None and self.offers(action):
+            await self.app.run_action(action, panel)
 
     def _panel_for(self, step: Step) -> Widget | None:
         """The panel of ``step``'s kind (None for steps that only take entries), bound to the
@@ -543,9 +622,10 @@ class LabScreen(StatusScreen):
                 for f in step.fields
             ]
 
-    async def show_step(self, step_id: str) -> None:
+    async def show_step(self, step_id: str, focus: str | None) -> None:
         """Put ``step_id`` on the right and remember it in the session; return once its pane
-        is mounted and focused (a key handled after this one acts on the new step)."""
+        is mounted and ``focus`` focused (see :meth:`StepPane.focus_on`; None: the focus stays
+        where it is), so that a key handled after this one acts on the new step."""
         if self._shown == step_id:  # not the DOM: a pane mounted with the screen is not in it yet
             return
         self.store_typed()  # what stands in the entries of the step being left
@@ -555,11 +635,6 @@ class LabScreen(StatusScreen):
             with self.session as s:
                 s.go_to(step_id)
         panel = self._panel_for(step)
-        if self._jump is not None:
-            (focus,), self._jump = self._jump, None
-        else:  # moved with PgDn/PgUp: land in the step; browsing the list stays on the list
-            focus = None if self.focused is self.query_one("#nav") and not self._paging else "entry"
-        self._paging = False
         pane = self.pane
         self.post_message(StepShown(step))
         await pane.show(step, panel, self._rows(step))
@@ -590,7 +665,7 @@ class LabScreen(StatusScreen):
 
     def _on_lab_changed(self, _: None) -> None:
         """The session changed: the navigator's marks, the entries the lab changed (a
-        capture), and the panel's view."""
+        capture) or warns about anew, and the panel's view."""
         self.refresh_marks()
         pane = self.pane
         with self.session as s:
@@ -599,6 +674,8 @@ class LabScreen(StatusScreen):
                 row.held = views.held(s, row.field.key)
                 if row.sent is not None and text != row.sent:
                     row.refresh_from_lab(text, views.entry(s, row.field.key))
+                elif (result := views.entry(s, row.field.key)) is not None:
+                    row.update_result(result)  # a warning another row raised or cleared
         panel = pane.panel
         if isinstance(panel, ViewPanel):
             self._load(panel)
@@ -609,10 +686,20 @@ class LabScreen(StatusScreen):
     # -- moving ------------------------------------------------------------------------
     @on(OptionList.OptionHighlighted, "#nav")
     async def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
+        """The group browses the list of steps: each step shows, the focus stays on the list
+        (moved by the mouse from elsewhere: the step's entry)."""
         if event.option_index != event.option_list.highlighted:
             return  # stale: the list's first highlight on mount, after a resume moved it on
         if event.option.id:
-            await self.show_step(event.option.id)
+            focus = None if self.focused is event.option_list else "entry"
+            await self.show_step(event.option.id, focus)
+
+    def _highlight(self, index: int) -> None:
+        """Highlight step ``index`` in the list of steps without the message that the group
+        browsed there (the caller shows the step, with the focus it wants)."""
+        nav = self.query_one("#nav", OptionList)
+        with nav.prevent(OptionList.OptionHighlighted):
+            nav.highlighted = index
 
     @on(OptionList.OptionSelected, "#nav")
     def _selected(self, event: OptionList.OptionSelected) -> None:
@@ -628,25 +715,23 @@ class LabScreen(StatusScreen):
             if focus is not None:
                 self.pane.focus_on(focus)
             return
-        self._jump = (focus,)
-        nav.highlighted = index
+        self._highlight(index)
+        self.call_later(self.show_step, step_id, focus)
 
     async def _move(self, delta: int) -> None:
-        """PgDn/PgUp: the next or previous step, shown (and focused) before the keys typed
-        after it are handed on, so they land in the new step."""
-        if self.focused is self.pane and not self.pane.running:
-            raise SkipAction()  # the form's: after the keys typed before it
+        """PgDn/PgUp: the next or previous step, shown with its entry focused after the keys
+        typed before the key (they land in the step being left) and before those typed after
+        it are handed on (they land in the new step)."""
         nav = self.query_one("#nav", OptionList)
         index = max(0, min(len(STEPS) - 1, (nav.highlighted or 0) + delta))
         if index == nav.highlighted:
             return
-        self._paging = True
-        nav.highlighted = index  # the first of its message and the call below shows the step
+        self._highlight(index)
         shown = asyncio.Event()
 
         async def show() -> None:  # on the screen's own queue (its panels bind to it)
             try:
-                await self.show_step(STEP_IDS[index])
+                await self.show_step(STEP_IDS[index], "entry")
             finally:
                 shown.set()
 
@@ -654,10 +739,10 @@ class LabScreen(StatusScreen):
             await shown.wait()
 
     async def action_next_step(self) -> None:
-        await self._move(1)
+        await after_typed_keys(self.app, partial(self._move, 1))
 
     async def action_prev_step(self) -> None:
-        await self._move(-1)
+        await after_typed_keys(self.app, partial(self._move, -1))
 
     def action_into_step(self, delta: int) -> None:
         """Tab (Shift+Tab) outside the step: into its first (last) field or widget."""
@@ -667,6 +752,10 @@ class LabScreen(StatusScreen):
         nav = self.query_one("#nav")
         nav.display = True
         nav.focus()
+
+    def action_whole_todo(self) -> None:
+        """Ctrl+O: the whole of the step's "What to do" (again: folded)."""
+        self.pane.toggle_whole_todo()
 
     def action_toggle_nav(self) -> None:
         """Hide or show the list of steps (more room for the step at 80 columns)."""

@@ -6,13 +6,16 @@ import asyncio
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
+from inspect import isawaitable
 from typing import Literal
 
 from rich.segment import Segment
 from textual import events, on
-from textual.app import ComposeResult
+from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical, VerticalScroll
+from textual.content import Content
 from textual.geometry import Size
 from textual.message import Message
 from textual.reactive import reactive
@@ -30,9 +33,15 @@ def field_id(key: str) -> str:
     return "f-" + re.sub(r"[^A-Za-z0-9_-]", "_", key)
 
 
+CURSOR_MARK = "▶"
+"""In the place of a focused list's left button edge, the answer Space (or Enter) would tick:
+Textual shows it by colour alone."""
+
+
 class Choice(RadioButton):
-    """A radio button whose mark says whether it is chosen without colour (NO_COLOR, a
-    monochrome terminal): ● chosen, blank not."""
+    """A radio button whose marks say without colour (NO_COLOR, a monochrome terminal)
+    whether it is chosen, ● chosen, blank not, and whether Space would tick it
+    (:data:`CURSOR_MARK` before it while its list has the focus)."""
 
     def __init__(self, label: str, value: bool = False) -> None:
         super().__init__(label, value=value)
@@ -49,6 +58,13 @@ class Choice(RadioButton):
         """As many lines as the answer wraps to (Textual's toggle buttons take one)."""
         return Widget.get_content_height(self, container, viewport, width)
 
+    def render(self) -> Content:
+        drawn = super().render()
+        parent = self.parent
+        if self.has_class("-selected") and isinstance(parent, Widget) and parent.has_focus:
+            return Content.assemble((CURSOR_MARK, "bold"), drawn[len(self.BUTTON_LEFT) :])
+        return drawn
+
 
 class Ticks(SelectionList[int]):
     """A list to tick whose marks say which are ticked without colour: X ticked, blank not."""
@@ -61,6 +77,8 @@ class Ticks(SelectionList[int]):
             return strip
         ticked = self.get_option_at_index(meta["option"]).value in self.selected
         segments[1] = Segment("X" if ticked else " ", segments[1].style)
+        if self.has_focus and meta["option"] == self.highlighted:
+            segments[0] = Segment(CURSOR_MARK, segments[0].style)
         return Strip(segments, strip.cell_length)
 
 
@@ -71,14 +89,14 @@ EDITING_KEYS: dict[str, str] = {
 screen's (it stores the entry and moves on)."""
 
 
-DESELECTING_KEYS = frozenset({"backspace", "delete", "left", "right", "home", "end"})
-"""Keys that edit a refused text by one character (or move in it) rather than replace it."""
-
 Restoring = Literal["held", "undo", "redo"]
 """What a key in an entry brings back: the text the lab holds (Escape), the answer stored
 before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
 
 RESTORING_KEYS: dict[str, Restoring] = {"escape": "held", "ctrl+z": "undo", "ctrl+y": "redo"}
+
+FOCUS_MARK = "▶ "
+"""Before the label of the row the keys go to: the focus seen without colour."""
 
 
 class EntryBox(Input, can_focus=False):
@@ -86,17 +104,17 @@ class EntryBox(Input, can_focus=False):
     and hands it the keys typed while its row is the form's current one, in the order typed;
     it then shows as focused (:meth:`show_current`), cursor and selection included.
 
-    A refused text stays selected (:meth:`hold_refused`): the next value typed replaces it,
-    while Backspace, Delete, the arrows and Home/End edit it one character at a time. Escape
-    brings back the text the lab holds for the row and drops a refused text over it; Ctrl+Z
-    the answer stored before it, Ctrl+Y the one Ctrl+Z took back (the form asks the lab)."""
+    A refused text stays as typed, nothing selected, the cursor at its end
+    (:meth:`hold_refused`): the missing ')' typed next goes on after it, Backspace deletes
+    one character (walk 4: a refused text left selected was replaced by the ')' typed to
+    mend it). Escape brings back the text the lab holds for the row and drops a refused text
+    over it; Ctrl+Z the answer stored before it, Ctrl+Y the one Ctrl+Z took back (the form
+    asks the lab)."""
 
     def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
         super().__init__(
             value=value, classes="field-input", placeholder=placeholder, disabled=disabled
         )
-        self._refused = False
-        """The whole refused text is selected (:meth:`hold_refused`) and no key acted since."""
 
     def show_current(self, current: bool) -> None:
         """Shown as the box typing goes into (its row is the focused form's current one), or
@@ -111,15 +129,13 @@ class EntryBox(Input, can_focus=False):
         return self
 
     def hold_refused(self) -> None:
-        """The text was refused: select it whole, so that the next value typed replaces it
-        (not appended to it), while an editing key edits it by one character."""
-        self.select_all()
-        self._refused = True
+        """The text was refused: it stays to be mended, nothing selected, the cursor at its
+        end (where a missing ')' or operand goes)."""
+        self.cursor_position = len(self.value)
 
     def type_text(self, text: str) -> None:
         """Text typed (a character) or pasted: it replaces what is selected, else goes in at
         the cursor."""
-        self._refused = False
         start, end = self.selection
         self.replace(text, start, end)
 
@@ -129,10 +145,6 @@ class EntryBox(Input, can_focus=False):
         action = EDITING_KEYS.get(key)
         if action is None:
             return False
-        if self._refused:
-            self._refused = False
-            if key in DESELECTING_KEYS:  # edit the refused text, from its end
-                self.cursor_position = len(self.value)
         await self.run_action(action)
         return True
 
@@ -146,8 +158,8 @@ class FieldRow(Vertical):
 
     Typing never lands on the end of a value the group comes back to: focusing the box
     selects what it holds, so the next keys replace it (an arrow key or Home/End keeps it to
-    edit). After Enter the cursor stands at the end of an accepted value, nothing selected
-    (a digit typed next is appended); a refused text stays selected."""
+    edit). After Enter the cursor stands at the end of the value, accepted or refused,
+    nothing selected (a digit or a missing ')' typed next is appended)."""
 
     class Reflowed(Message):
         """The row grew or shrank once laid out (its hint moved under the box or back): the
@@ -179,17 +191,45 @@ class FieldRow(Vertical):
         """The text the lab holds in effect for this row (an accepted answer, not a refused
         attempt over it): what Escape brings back. The screen keeps it up to date."""
         self._result = result
+        self._shown: EntryView | None = None
         self._sent: str | None = text
         self._chosen = tuple(chosen)
         self._readonly = readonly
 
-    def compose(self) -> ComposeResult:
-        unit = f" [{self.field.unit}]" if self.field.unit else ""
+    @property
+    def label_text(self) -> str:
+        """The row's label as written beside its box or above its answers (its unit, or that
+        several answers may be ticked), without the focus mark."""
         if self.field.options:
-            yield Label(
-                self.field.label + (" (tick all that apply)" if self.field.multiple else ""),
-                classes="choice-label",
-            )
+            return self.field.label + (" (tick all that apply)" if self.field.multiple else "")
+        return self.field.label + (f" [{self.field.unit}]" if self.field.unit else "")
+
+    def show_focus(self, focused: bool) -> None:
+        """Mark the row as the one the keys go to (:data:`FOCUS_MARK` before its label, the
+        label bold), or not. Without colour (a plain or monochrome terminal) the focused
+        box looked like the others: Space went into the notes instead of the done? choice."""
+        if focused == self.has_class("-focus"):
+            return
+        self.set_class(focused, "-focus")
+        for choice in self.query(Choice):  # the cursor's mark comes or goes
+            choice.refresh()
+        labels = self.query(".field-label, .choice-label")
+        if labels:
+            labels.first(Label).update((FOCUS_MARK if focused else "") + self.label_text)
+
+    def on_descendant_focus(self, event: events.DescendantFocus) -> None:
+        """A list of answers took the focus: its row is marked (a text row is marked by
+        its form, which keeps the focus itself)."""
+        if self.field.options:
+            self.show_focus(True)
+
+    def on_descendant_blur(self, event: events.DescendantBlur) -> None:
+        if self.field.options:
+            self.show_focus(False)
+
+    def compose(self) -> ComposeResult:
+        if self.field.options:
+            yield Label(self.label_text, classes="choice-label", markup=False)
             if self.field.multiple:
                 yield Ticks(
                     *[(o, k, k in self._chosen) for k, o in enumerate(self.field.options)],
@@ -203,7 +243,7 @@ class FieldRow(Vertical):
         else:
             with Horizontal(classes="field-line"):
                 # as text, not markup: '[V]' would be read as a style and vanish
-                yield Label(f"{self.field.label}{unit}", classes="field-label", markup=False)
+                yield Label(self.label_text, classes="field-label", markup=False)
                 yield EntryBox(self._text, self.field.hint, self._readonly)
             yield Prose(self.field.hint, classes="field-hint")
         yield Prose("", classes="field-msg")
@@ -296,8 +336,7 @@ class FieldRow(Vertical):
     def submitted(self) -> str | None:
         """Enter (the screen handles it): the text to store, sent again even if unchanged;
         the cursor at its end, nothing selected, so a key typed if the focus stays here goes
-        on after it (a refused text is selected again by :meth:`show_result`). None on a
-        list of answers."""
+        on after it. None on a list of answers."""
         if self.field.options:
             return None
         text = self.input.value
@@ -349,8 +388,16 @@ class FieldRow(Vertical):
         if result is not None:
             self.show_result(result)
 
+    def update_result(self, result: EntryView) -> None:
+        """The lab's verdict on this row after a change elsewhere (a reading in another row
+        of Task 5 makes a current fall as the voltage rises): shown if it is not the one
+        shown already."""
+        if result != self._shown:
+            self.show_result(result)
+
     def show_result(self, result: EntryView) -> None:
         """Show the lab's verdict: a refusal, the warnings, or a checker's feedback."""
+        self._shown = result
         parts = [("✗ " if not result.ok else "") + result.message] if result.message else []
         parts += [f"! {w}" for w in result.warnings]
         if result.feedback:
@@ -361,11 +408,12 @@ class FieldRow(Vertical):
         msgs.first(Prose).update("\n".join(parts))
         self.set_class(not result.ok, "refused")
         self.set_class(bool(result.warnings), "warned")
-        if not result.ok and self.query(EntryBox):
-            # a refused text stays selected: a new value typed replaces it, while Backspace
-            # and the arrows edit it by one character; and the whole refusal in view
+        if (not result.ok or result.warnings) and self.query(EntryBox):
+            # a refused text stays to be mended, the cursor at its end, nothing selected;
+            # and the whole refusal or warning in view
             box = self.input
-            box.hold_refused()
+            if not result.ok:
+                box.hold_refused()
             if box.has_focus:
                 self.call_after_refresh(self.bring_into_view)
 
@@ -412,10 +460,6 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         self._taking = False
         """Set by :meth:`take` until the form handles a key of its own: characters typed
         elsewhere are on their way into the current row."""
-        self.running = False
-        """A key's binding runs on the form's behalf (:meth:`_binding`): a priority binding
-        the app ran ahead of the form's queue leaves the key to the form unless this is
-        set (:class:`~minseg_tui.ui.screens.lab.LabScreen`'s PgDn/PgUp)."""
 
     # -- rows ------------------------------------------------------------------------------
     def rows(self) -> list[FieldRow]:
@@ -434,6 +478,7 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         for row, shown in ((old, False), (new, self.screen.focused is self)):
             if row is not None and row.is_attached and not row.field.options:
                 row.input.show_current(shown)
+                row.show_focus(shown)
 
     def on_focus(self) -> None:
         if self.current is not None and self.current.is_attached:
@@ -609,20 +654,28 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         if bound is None or bound.node is self or not bound.enabled:
             return False
         self._own(event)
+        await self._act(partial(self.app.run_action, bound.binding.action, bound.node))
+        return True
+
+    def in_turn(self, work: Callable[[], object]) -> None:
+        """Run ``work`` (a key's action) after the keys the form was handed so far and
+        before those it is handed next, as :meth:`_binding` runs a key's binding."""
+        self.call_later(self._act, work)
+
+    async def _act(self, work: Callable[[], object]) -> None:
+        """Store what stands in the current row, then run ``work`` on the app's queue and wait
+        for it: the keys typed after it wait in the form's queue."""
         self.store_pending()
         done = asyncio.Event()
 
         async def run() -> None:
-            self.running = True
             try:
-                await self.app.run_action(bound.binding.action, bound.node)
+                await _done(work())
             finally:
-                self.running = False
                 done.set()
 
         if self.app.call_later(run):
             await done.wait()
-        return True
 
     def _passed_on(self, event: events.Key, focused: Widget | None) -> None:
         """A key the form did not get as the focused widget: passed up by a widget of the
@@ -661,3 +714,34 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     def _own(event: events.Key) -> None:
         event.stop()
         event.prevent_default()
+
+
+async def after_typed_keys(app: App[None], work: Callable[[], object]) -> None:
+    """Run ``work``, the action of a key bound with priority (F2, Ctrl+P, Ctrl+Q, PgDn,
+    PgUp: keys that act on every screen, over any widget), after the keys typed before it.
+
+    Textual runs a priority binding on the app's queue the moment the app reads its key,
+    while each key read before it was handed to the queue of the widget focused then, where
+    it may still wait ('5,3 F2' stopped the motor before 5,3 was in its box). So with the
+    step form focused (which runs its keys' bindings on the app's queue and waits for them),
+    ``work`` joins the form's queue behind those keys (:meth:`FieldForm.in_turn`); with any
+    other widget focused (the list of steps, which hands the characters typed on it to the
+    form), the app waits until that widget has handled what it was handed, then runs
+    ``work``. The keys typed after it wait for ``work`` either way. (Not covered: a key that
+    such a widget acts on through a binding of its own, Enter ticking an answer: Textual
+    runs that binding on the app's queue once the key has bubbled up, after ``work``.)"""
+    focused = app.focused
+    if isinstance(focused, FieldForm):
+        focused.in_turn(work)
+        return
+    if focused is not None:
+        handled = asyncio.Event()
+        if focused.call_later(handled.set):  # False: it is being removed, its keys with it
+            await handled.wait()
+    await _done(work())
+
+
+async def _done(result: object) -> None:
+    """Wait for ``result`` if it is awaitable (an action may be async or not)."""
+    if isawaitable(result):
+        await result
