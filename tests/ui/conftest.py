@@ -122,6 +122,8 @@ def _unpainted_refresh(self: Screen[object]) -> None:
 
 
 @pytest.fixture(autouse=True)
-def no_headless_frames(monkeypatch: pytest.MonkeyPatch) -> None:
-    """See :func:`_unpainted_refresh`."""
-    monkeypatch.setattr(Screen, "_compositor_refresh", _unpainted_refresh)
+def no_headless_frames(monkeypatch: pytest.MonkeyPatch, request: pytest.FixtureRequest) -> None:
+    """See :func:`_unpainted_refresh`. The whole-lab walks (marked slow) paint every frame,
+    as the app does in a terminal, so a widget that fails while it is drawn fails them."""
+    if request.node.get_closest_marker("slow") is None:
+        monkeypatch.setattr(Screen, "_compositor_refresh", _unpainted_refresh)
