@@ -15,7 +15,7 @@ from minseg_tui.ui.panels.results import HELD_END, ResultsPanel, StepPlot
 from minseg_tui.ui.widgets.plots import TracePlot
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import burst, goto, settle, start, start_with_a_run, typing_box
+from tests.ui.helpers import burst, goto, settle, shown, start, start_with_a_run, typing_box
 
 
 async def test_home_and_end_move_the_rise_cursor_to_the_ends_not_the_page(quiet):
@@ -118,3 +118,27 @@ async def test_the_f8_notice_expires_and_does_not_cover_the_entry_typed_in(tmp_p
         assert "written:" in str(toast.render())
         assert not toast.region.overlaps(box.region), (toast.region, box.region)
         assert all(n.timeout <= 8 for n in app._notifications)
+
+
+async def test_the_arrows_on_the_list_of_steps_stop_at_its_ends_and_pgup_goes_back_one(quiet):
+    """Walk 5 at 80x24: from the model check, the list of steps focused, ↓ twice and PgUp
+    showed Preparation 1: the second ↓ went round from the summary, the last step, to the
+    first, and PgUp could go no further back; it read as PgUp jumping to the list's end.
+    The arrows stop at the ends of the list, and PgUp/PgDn move one step from there."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "model_check")
+        await pilot.press("ctrl+l")
+        await settle(pilot)
+        assert app.focused is app.screen.query_one("#nav")
+        for key, there in (("down", "summary"), ("down", "summary"), ("pageup", "model_check")):
+            await pilot.press(key)
+            await settle(pilot)
+            assert shown(app, there), (key, app.screen.pane.step.id)
+        app.screen.query_one("#nav").focus()
+        await settle(pilot)
+        await goto(pilot, "prep1", focus=None)
+        for key, there in (("up", "prep1"), ("pagedown", "prep2")):
+            await pilot.press(key)
+            await settle(pilot)
+            assert shown(app, there), (key, app.screen.pane.step.id)

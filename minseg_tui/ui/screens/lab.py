@@ -419,6 +419,18 @@ class StepList(OptionList):
     the list's own queue, in the order typed, and hands the character to the form by a plain
     call, no second queue: the characters after it follow it into the same entry."""
 
+    def action_cursor_down(self) -> None:
+        """↓: the next step, none after the last. Textual's list goes round to its first
+        entry: from the model check, ↓ ↓ then PgUp showed Preparation 1 (issue 20, walk 5),
+        PgUp seemingly jumping to the list's end."""
+        if self.highlighted is None or self.highlighted < self.option_count - 1:
+            super().action_cursor_down()
+
+    def action_cursor_up(self) -> None:
+        """↑: the step before, none before the first."""
+        if self.highlighted is None or self.highlighted > 0:
+            super().action_cursor_up()
+
     def on_key(self, event: events.Key) -> None:
         screen = self.screen
         if isinstance(screen, LabScreen) and event.is_printable and event.character:
