@@ -217,7 +217,7 @@ def response_observations(
             Observation(
                 "several_levels",
                 (
-                    f"The rising steps go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
+                    f"The rising edges go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
                     "of omega_ss / u_ss over the steps and omega_ss the median of their speeds."
                 ),
             )
@@ -287,9 +287,7 @@ def response_observations(
         observations.append(
             Observation(
                 "steps_skipped",
-                (
-                    f"{skipped} rising step(s) were too short or too close to the start of the log to use."
-                ),
+                (f"{skipped} rise(s) were too short or too close to the start of the log to use."),
             )
         )
     return observations
