@@ -695,7 +695,7 @@ _LAB: tuple[Step, ...] = (
         "Task 12: the time constant T",
         "Read T off the step response.",
         "On one rise, find when the speed has covered 63 % of its change; T is the time from "
-        "the step to that moment. The program also fits T by least squares, with its interval.",
+        "the rising edge to that moment. The program also fits T by least squares, with its interval.",
         fields=(
             Field(
                 "own.T",
