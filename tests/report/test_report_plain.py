@@ -67,3 +67,18 @@ def test_the_sampling_is_said_as_how_often_a_sample_came(tmp_path: Path) -> None
     got = re.search(r"a sample every ([\d.]+)-([\d.]+) ms \(mostly 25 ms\)", line)
     assert got is not None, line
     assert float(got.group(1)) < 25 < float(got.group(2))
+
+
+def test_the_warning_on_a_short_T_leaves_both_readings_fair(tmp_path: Path) -> None:
+    """Issue 20, second walk: the warning on a T of a few samples said "The least-squares T
+    models the sampling and is the one to use", while Task 12 accepts the group's 63 %
+    reading as right. It now says why the two differ and which one the model uses."""
+    with _session(tmp_path, 0.0) as s:
+        s.enter("own.T", "57 ms")  # the 63 % reading, as the manual has the group read it
+        md = markdown.render(content.build(s))
+    warnings = md.split("## Warnings")[1].split("\n## ")[0]
+    (short,) = [ln for ln in warnings.splitlines() if "sample periods" in ln]
+    assert "one to use" not in md
+    assert "Both are fair readings of T" in short, short
+    assert "the program's model and its least-squares J use the least-squares one" in short
+    assert "so the two differ" in short
