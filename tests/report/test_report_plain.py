@@ -82,3 +82,22 @@ def test_the_warning_on_a_short_T_leaves_both_readings_fair(tmp_path: Path) -> N
     assert "Both are fair readings of T" in short, short
     assert "the program's model and its least-squares J use the least-squares one" in short
     assert "so the two differ" in short
+
+
+def test_the_capture_windows_say_what_clock_they_count_on(tmp_path: Path) -> None:
+    """Issue 20, second walk: the table's capture windows read "222–224 s" with nothing to
+    say from when they count. The column names the board's clock, a sentence under the
+    table says where it starts, and each window has the time of day it was captured."""
+    with _session(tmp_path, 0.0) as s:
+        t = 222.0 + 0.025 * np.arange(120)
+        s.capture_omega(4.5, t.tolist(), (7.78 + 0.01 * np.sin(t)).tolist())
+        at = datetime.fromisoformat(s.entry("omega_ss@4.5").at)
+        md = markdown.render(content.build(s))
+    steady = md.split("## Steady state")[1].split("\n## ")[0]
+    assert "| capture window (board clock) |" in steady
+    (row,) = [ln for ln in steady.splitlines() if ln.startswith("| 4.5 V")]
+    assert f"223–225 s, captured {at.strftime('%H:%M:%S')} UTC" in row, row
+    (typed,) = [ln for ln in steady.splitlines() if ln.startswith("| 2.5 V")]
+    assert "| typed |" in typed
+    assert content.CAPTURE_CLOCK in steady
+    assert "starts near 0 s when the program connects to the board" in content.CAPTURE_CLOCK
