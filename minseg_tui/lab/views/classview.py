@@ -361,8 +361,8 @@ def slip_list(session: Session) -> list[Slip]:
     nothing)."""
     out = [
         Slip(
-            f"a refused entry, {_field_label(e.key)}: {e.text.strip()!r} (the program told the "
-            f"group: {e.message}); nothing is computed from it."
+            f"a refused entry, {_field_label(e.key)}: {e.text.strip()!r} ({own_first.TOLD} "
+            f"{e.message}); nothing is computed from it."
         )
         for e in session.entries.values()
         if not e.ok
