@@ -1,5 +1,6 @@
 """The second walk of issue 20 on the screens (a new group at 80x24 on the virtual MinSeg):
-Home/End on the rise cursor and its words at a sample, Enter's move said in F1."""
+Home/End on the rise cursor and its words at a sample, Enter's move said in F1, the model
+check's legends, F8's notice, the arrows on the list of steps."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.keys import KEYMAP
-from minseg_tui.ui.panels.results import HELD_END, ResultsPanel, StepPlot
+from minseg_tui.ui.panels.results import HELD_END, ResponsePlot, ResultsPanel
 from minseg_tui.ui.widgets.plots import TracePlot
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
@@ -26,7 +27,7 @@ async def test_home_and_end_move_the_rise_cursor_to_the_ends_not_the_page(quiet)
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task11")
         panel = app.screen.query_one(ResultsPanel)
-        plot = panel.query_one(StepPlot)
+        plot = panel.query_one(ResponsePlot)
         await pilot.press("shift+tab")
         await settle(pilot)
         assert app.focused is plot and panel.reading is not None

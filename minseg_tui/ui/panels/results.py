@@ -37,9 +37,10 @@ class ResponsePlot(TracePlot):
     """The run log, whole or zoomed to one rise. Focused, [ and ] pick the rise and z
     toggles; alt+left/right and F9 do the same from anywhere on the step (app keys). On a
     zoomed rise, ←/→ (Shift: five columns) move a cursor from column to column, and a click
-    puts it on the column clicked; it reads t and omega off the plotted line there. Its
-    keys (Home/End: the first / last column with a sample) are left out of the footer, which shows the app's (they pushed F8, F9, Alt+→ and
-    Ctrl+R off its line at 80 columns); the line under the plot and the F1 help list them."""
+    puts it on the column clicked (Home/End: on the first / last column with a sample); it
+    reads t and omega off the plotted line there. Its keys are left out of the footer,
+    which shows the app's (they pushed F8, F9, Alt+→ and Ctrl+R off its line at 80
+    columns); the line under the plot and the F1 help list them."""
 
     BINDINGS = [
         Binding("left_square_bracket", "pick(-1)", "prev step", show=False),
