@@ -97,6 +97,14 @@ EVENT_TEXT: dict[str, str] = {
 }
 """What the status line says at once for a link event (``error`` shows the link's own line)."""
 
+PASSING_EVENTS = frozenset({"alive", "connected"})
+"""Link events whose words are good news: shown for :data:`TRANSIENT_SHOWN`, then the link's
+counters again ("board answers again" stayed on the line for the rest of a session)."""
+
+TRANSIENT_SHOWN = 3.0
+"""How long the status line shows good news about the link, s of board time (the samples'
+clock: the line never changes while nothing comes)."""
+
 
 STREAM_PERIOD = 0.05
 """How often the stream worker drains the device, s."""
@@ -424,7 +432,7 @@ class LabApp(App[None]):
 
     @on(SamplesArrived)
     def _samples(self, event: SamplesArrived) -> None:
-        self.link = self.link.counted(event.stats)
+        self.link = self.link.counted(event.stats).aged(self.live.latest, TRANSIENT_SHOWN)
         if self.recording is not None:
             self.run_progress = self.recording.progress()
         if self._watching_speed and self.session is not None:
@@ -473,10 +481,13 @@ class LabApp(App[None]):
         if kind in ("square_wave_done", "disconnected", "watchdog", "boot", "error", "motor"):
             self.motor = "off"  # a run these end is ended by the Task 10 procedure
             self.requested = None
-        if kind == "connected" and self.link.event == "":
+        if (kind == "connected" and self.link.event == "") or (
+            kind == "alive" and self.link.state != "silent"
+        ):  # nothing was said that these would answer: "again" only after "silent"
             self.link = self.link.after(ev, "")
             return
-        self.link = self.link.after(ev, EVENT_TEXT.get(kind, ev.message))
+        text = EVENT_TEXT.get(kind, ev.message)
+        self.link = self.link.after(ev, text, kind in PASSING_EVENTS, self.live.latest)
         if kind in ("disconnected", "watchdog", "error", "motor"):
             self.notify(
                 self.link.event if kind not in ("error", "motor") else ev.message,
