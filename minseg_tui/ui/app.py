@@ -586,7 +586,8 @@ class LabApp(App[None]):
         self._tap = queue.Queue()
         self.requested = None
         done, cancelled = threading.Event(), threading.Event()
-        self.push_screen(RevolutionScreen(done, cancelled))
+        hand = getattr(device.board, "hand_turn", None)  # the virtual MinSeg's simulated hand
+        self.push_screen(RevolutionScreen(done, cancelled, hand))
         self._revolution(device, self._tap, done, cancelled)
 
     @work(thread=True, exclusive=True, group="check", name="revolution")
@@ -624,7 +625,14 @@ class LabApp(App[None]):
             return
         r = event.result
         self._record_check("revolution", r.ok, r.text, r.counts)
-        self.push_screen(BoardCheckScreen(r.ok, r.text, "Counts per revolution"))
+        self.push_screen(
+            BoardCheckScreen(
+                r.ok,
+                r.text,
+                "Counts per revolution",
+                "Ctrl+P → Count one revolution by hand counts again",
+            )
+        )
 
     @on(NoCounts)
     def _no_counts(self, event: NoCounts) -> None:
