@@ -274,6 +274,7 @@ class VirtualBoard:
         self.plant = Plant(s.params, seed=s.seed)
         self._rng = np.random.default_rng([s.seed, 1])  # loop jitter
         self._fault_rng = np.random.default_rng([s.seed, 2])
+        self._hand_turns = 0
         self.lock = threading.RLock()
         self.changed = threading.Condition(self.lock)
         self.now = 0.0
@@ -441,6 +442,23 @@ class VirtualBoard:
         with self.lock:
             self.plant.theta += 2.0 * math.pi * revolutions
             self._count_edges()
+
+    HAND_SPREAD = 0.015
+    """How far a hand asked to turn the wheel once misses it, as a fraction of a
+    revolution (one standard deviation; the lab's 5 % tolerance is over 3 of them)."""
+
+    def hand_turn(self) -> float:
+        """Turn the wheel once as a hand at the bench does, for the hand check on a board
+        nobody can touch: one revolution, a little over or under it (seeded by the board's
+        seed), either way round. The revolutions turned (signed)."""
+        with self.lock:
+            rng = np.random.default_rng([self.settings.seed, 3, self._hand_turns])
+            self._hand_turns += 1
+        revolutions = float(1.0 + self.HAND_SPREAD * rng.standard_normal())
+        if rng.random() < 0.5:
+            revolutions = -revolutions
+        self.turn_by_hand(revolutions)
+        return revolutions
 
     def _do_event(self) -> None:
         now = self.now

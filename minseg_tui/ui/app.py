@@ -97,6 +97,14 @@ EVENT_TEXT: dict[str, str] = {
 }
 """What the status line says at once for a link event (``error`` shows the link's own line)."""
 
+PASSING_EVENTS = frozenset({"alive", "connected"})
+"""Link events whose words are good news: shown for :data:`TRANSIENT_SHOWN`, then the link's
+counters again ("board answers again" stayed on the line for the rest of a session)."""
+
+TRANSIENT_SHOWN = 3.0
+"""How long the status line shows good news about the link, s of board time (the samples'
+clock: the line never changes while nothing comes)."""
+
 
 STREAM_PERIOD = 0.05
 """How often the stream worker drains the device, s."""
@@ -431,7 +439,7 @@ class LabApp(App[None]):
 
     @on(SamplesArrived)
     def _samples(self, event: SamplesArrived) -> None:
-        self.link = self.link.counted(event.stats)
+        self.link = self.link.counted(event.stats).aged(self.live.latest, TRANSIENT_SHOWN)
         if self.recording is not None:
             self.run_progress = self.recording.progress()
         if self._watching_speed and self.session is not None:
@@ -480,10 +488,13 @@ class LabApp(App[None]):
         if kind in ("square_wave_done", "disconnected", "watchdog", "boot", "error", "motor"):
             self.motor = "off"  # a run these end is ended by the Task 10 procedure
             self.requested = None
-        if kind == "connected" and self.link.event == "":
+        if (kind == "connected" and self.link.event == "") or (
+            kind == "alive" and self.link.state != "silent"
+        ):  # nothing was said that these would answer: "again" only after "silent"
             self.link = self.link.after(ev, "")
             return
-        self.link = self.link.after(ev, EVENT_TEXT.get(kind, ev.message))
+        text = EVENT_TEXT.get(kind, ev.message)
+        self.link = self.link.after(ev, text, kind in PASSING_EVENTS, self.live.latest)
         if kind in ("disconnected", "watchdog", "error", "motor"):
             self.notify(
                 self.link.event if kind not in ("error", "motor") else ev.message,
@@ -582,7 +593,8 @@ class LabApp(App[None]):
         self._tap = queue.Queue()
         self.requested = None
         done, cancelled = threading.Event(), threading.Event()
-        self.push_screen(RevolutionScreen(done, cancelled))
+        hand = getattr(device.board, "hand_turn", None)  # the virtual MinSeg's simulated hand
+        self.push_screen(RevolutionScreen(done, cancelled, hand))
         self._revolution(device, self._tap, done, cancelled)
 
     @work(thread=True, exclusive=True, group="check", name="revolution")
@@ -620,7 +632,14 @@ class LabApp(App[None]):
             return
         r = event.result
         self._record_check("revolution", r.ok, r.text, r.counts)
-        self.push_screen(BoardCheckScreen(r.ok, r.text, "Counts per revolution"))
+        self.push_screen(
+            BoardCheckScreen(
+                r.ok,
+                r.text,
+                "Counts per revolution",
+                "Ctrl+P → Count one revolution by hand counts again",
+            )
+        )
 
     @on(NoCounts)
     def _no_counts(self, event: NoCounts) -> None:

@@ -4,7 +4,7 @@ double in tests/ui/fakes.py; and who the status line says we talk to."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Protocol
 
 from minseg_tui.device import factory
@@ -112,20 +112,41 @@ LINK_STATES: dict[str, str] = {
 class LinkState:
     """How the link is: ``state`` (ok, lost, silent), the lines ``dropped`` (gaps in seq) and
     ``corrupt`` (refused) so far, and ``event``: what the last link event said, shown in place
-    of the counters until the link is fine again (empty then)."""
+    of the counters until the link is fine again (empty then). Good news (the board answers
+    again, reconnected) is ``passing``: shown for a few seconds of board time from ``since``
+    (s, the newest sample's board time when it came; None: no sample yet), then the counters
+    again (:meth:`aged`)."""
 
     state: str = "ok"
     dropped: int = 0
     corrupt: int = 0
     event: str = ""
+    passing: bool = False
+    since: float | None = None
 
-    def after(self, event: LinkEvent, text: str) -> LinkState:
-        """The state after ``event``, which the status line shows as ``text``."""
-        return LinkState(LINK_STATES.get(event.kind, self.state), self.dropped, self.corrupt, text)
+    def after(
+        self, event: LinkEvent, text: str, passing: bool = False, since: float | None = None
+    ) -> LinkState:
+        """The state after ``event``, which the status line shows as ``text`` (``passing``:
+        for a while from board time ``since``, s)."""
+        state = LINK_STATES.get(event.kind, self.state)
+        return LinkState(state, self.dropped, self.corrupt, text, passing and bool(text), since)
 
     def counted(self, stats: LinkStats) -> LinkState:
         """The same state with the link's counters now."""
-        return LinkState(self.state, stats.dropped, stats.corrupt, self.event)
+        return replace(self, dropped=stats.dropped, corrupt=stats.corrupt)
+
+    def aged(self, t: float | None, shown: float) -> LinkState:
+        """The state at board time ``t`` (s, the newest sample's): a passing text shown for
+        ``shown`` s gives way to the counters (so does one from before a board restart, whose
+        clock began again)."""
+        if not self.passing or t is None:
+            return self
+        if self.since is None:
+            return replace(self, since=t)
+        if t - self.since >= shown or t < self.since:
+            return replace(self, event="", passing=False, since=None)
+        return self
 
 
 def open_device(spec: str, seed: int = 0) -> Device:

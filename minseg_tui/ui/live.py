@@ -37,6 +37,12 @@ class LiveBuffer:
             self._u.extend(batch.u_req[k:].tolist())
             self.total += n
 
+    @property
+    def latest(self) -> float | None:
+        """The newest sample's board time, s (None: no sample yet)."""
+        with self._lock:
+            return self._t[-1] if self._t else None
+
     def clear(self) -> None:
         """Forget everything (new device)."""
         with self._lock:

@@ -246,3 +246,16 @@ def test_a_stalled_host_pauses_the_real_time_board_instead_of_tripping_its_watch
         host.now += 0.1
         board.run_until(clock())
     assert b"$EV,WDOG" in board.take_output() and board.u_mV == 0
+
+
+def test_the_simulated_hand_turns_once_give_or_take_and_is_seeded():
+    """The hand check on the virtual MinSeg (nobody can turn its wheel): its hand turns it
+    once, a little over or under, the same way for the same seed."""
+    turns = []
+    for seed in (1, 1, 2):
+        board = VirtualBoard(VirtualSettings(seed=seed))
+        turned = [board.hand_turn() for _ in range(20)]
+        turns.append(turned)
+        assert all(0.95 < abs(r) < 1.05 for r in turned)
+        assert len({round(abs(r), 6) for r in turned}) == 20  # over or under, never the same
+    assert turns[0] == turns[1] and turns[0] != turns[2]

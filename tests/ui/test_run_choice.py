@@ -11,6 +11,7 @@ from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.report.content import Table, build
 from minseg_tui.ui.screens.quit import QuitScreen
+from minseg_tui.ui.widgets.plots import TracePlot
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
     TABLE,
@@ -119,3 +120,28 @@ def test_an_old_session_file_follows_the_same_rule(tmp_path):
         header = _runs_table(old).header
         (row,) = [x for x in _runs_table(old).rows if x[0] == stopped]
         assert row[header.index("interrupted by")] == "cause not recorded"
+
+
+async def test_task10_plots_the_run_in_use_and_names_it(quiet):
+    """Issue 20, second walk: steps-2 was in use for Tasks 11-15 and Task 10's 25 ms plot
+    showed the newest run, one stopped early, without saying so. It shows the run in use now,
+    named in its title; with no run chosen, the newest complete one (the one in use)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_response_run(s, seed=5)
+            chosen = record_response_run(s, seed=6)
+            stopped = _stopped_run(s)
+            s.select_run(chosen)
+            in_use = s.response_run()
+            samples = in_use.samples
+        await goto(pilot, "task10")
+        plot = app.screen.query_one("#plot-slow", TracePlot)
+        await settle(pilot, lambda: bool(plot.traces))
+        assert plot._canvas.plot_title == f"25 ms run: {chosen}, in use"
+        assert plot.traces[0].x.size == samples  # the run in use, not the stopped one
+        app.screen.use_run(None)  # no choice: the newest complete run, not the stopped one
+        await settle(pilot, lambda: stopped not in plot._canvas.plot_title)
+        assert plot._canvas.plot_title == f"25 ms run: {chosen}, in use"

@@ -565,8 +565,9 @@ _LAB: tuple[Step, ...] = (
         "Set-up",
         "Task 1: connect the MinSeg",
         "Have a board (or the virtual MinSeg) talking to this program.",
-        "Plug the MinSeg in by USB and pick it, or pick the virtual MinSeg to practise. The program "
-        "already runs the board's code: there is nothing to build or download. Then press F10: "
+        "Plug the MinSeg in by USB before starting this program: it finds the board by itself, "
+        "and without one it runs the virtual MinSeg to practise on (the top line says which). "
+        "The program already runs the board's code: there is nothing to build or download. Then press F10: "
         "the board check turns the wheel for half a second and says whether the count follows, "
         "and what to look at if it does not. Ctrl+P → Count one revolution by hand checks the "
         "encoder's 720 counts.",

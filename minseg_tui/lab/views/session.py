@@ -480,7 +480,8 @@ class RunView:
     in_use: bool = False
     """Tasks 11-15 and the model check use this run (:meth:`Session.response_run`)."""
     plotted: bool = True
-    """The newest run of its kind (steps, fast): the one its plot shows."""
+    """The run its kind's plot (steps, fast) shows: the one in use if it is of that kind,
+    else the newest of it."""
 
 
 def _median(values: Sequence[float | None]) -> float | None:
@@ -510,10 +511,14 @@ does not change, and its three fits took about 0.4 s every time Task 10 was show
 def runs(session: Session) -> tuple[RunView, ...]:
     """Every run the group can choose for Tasks 11-15 (step runs of 25 ms and 5 ms, and
     imported logs), oldest first, with their T readings; the one in use marked (``in_use``,
-    also when it is interrupted), the newest 25 ms and the newest fast run ``plotted``
-    (a worker's job; a run's view is built once)."""
+    also when it is interrupted), and for each plot (25 ms, fast) the run it shows
+    ``plotted``: the run in use if it is of that kind, else the newest of it (the plot
+    showed a newer, interrupted run while another was in use). A worker's job; a run's
+    view is built once."""
     using = session.response_run()
     newest = {r.kind: r.name for r in session.runs if r.kind in ("steps", "fast")}
+    if using is not None and using.kind in newest:
+        newest[using.kind] = using.name
     conceal = "own.T" in hidden(session)
     out = []
     for v in _run_list(session):

@@ -31,6 +31,10 @@ FAST_WHY = (
 PLOT_OF = {"steps": "#plot-slow", "fast": "#plot-fast"}
 """The plot each kind of run is drawn in."""
 
+PLOT_TITLE = {"steps": "25 ms run", "fast": "5 ms run"}
+"""Each plot's title before it shows a run; then the run's name (and whether it is the one
+in use for Tasks 11-15) follows."""
+
 
 def _s(v: float | None) -> str:
     return format_value(v, "s", 3)
@@ -106,7 +110,9 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
         traces = [Trace(v.x, v.omega, "board time")]
         if p.kind == "steps":
             traces.append(Trace(v.x, v.omega_lab, "manual", "dot"))
-        self.query_one(PLOT_OF[p.kind], TracePlot).show(traces, (0.0, max(p.duration, 1e-3)))
+        plot = self.query_one(PLOT_OF[p.kind], TracePlot)
+        plot.set_axes(f"{PLOT_TITLE[p.kind]}: recording", "t [s]")
+        plot.show(traces, (0.0, max(p.duration, 1e-3)))
 
     def show_view(self) -> None:
         runs = self.view
@@ -117,6 +123,9 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
             if v.kind == live or not v.plotted:
                 continue  # being recorded again: the plot shows the new run as it arrives
             plot = self.query_one(PLOT_OF.get(v.kind, "#plot-fast"), TracePlot)
+            if v.kind in PLOT_TITLE:  # which run it shows, and whether it is the one in use
+                name = f"{v.name}, in use" if v.in_use else v.name
+                plot.set_axes(f"{PLOT_TITLE[v.kind]}: {name}", "t [s]")
             traces = [Trace(v.t, v.omega, "board time")]
             if v.kind == "steps":
                 traces.append(Trace(v.t, v.omega_lab, "manual", "dot"))

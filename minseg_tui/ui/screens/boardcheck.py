@@ -4,6 +4,7 @@ the hand check (turn the wheel once, then Enter)."""
 from __future__ import annotations
 
 import threading
+from collections.abc import Callable
 
 from textual import on
 from textual.app import ComposeResult
@@ -57,18 +58,26 @@ class BoardCheckScreen(ModalScreen[None]):
         Binding("enter", "close", "Close"),
     ]
 
-    def __init__(self, ok: bool, text: str, what: str = "Board check") -> None:
+    def __init__(
+        self,
+        ok: bool,
+        text: str,
+        what: str = "Board check",
+        again: str = "F10 checks again",
+    ) -> None:
         super().__init__()
         self.ok = ok
         self.text = text
         self.what = what
+        self.again = again
+        """How to make the check once more (the hand check is not F10's)."""
 
     def compose(self) -> ComposeResult:
         title = f"{self.what}: " + ("all well" if self.ok else "something is wrong")
         with Vertical(id="board-check", classes="dialog"):
             yield Prose(title, classes="title")
             yield Prose(self.text, id="check-text", classes="para")
-            yield Prose("Enter or Escape closes; F10 checks again.", classes="para")
+            yield Prose(f"Enter or Escape closes; {self.again}.", classes="para")
 
     def action_close(self) -> None:
         self.dismiss(None)
@@ -76,29 +85,45 @@ class BoardCheckScreen(ModalScreen[None]):
 
 class RevolutionScreen(ModalScreen[None]):
     """The hand check: turn the wheel once by hand, then Enter (sets ``done``); Escape sets
-    ``cancelled`` and ``done`` and closes."""
+    ``cancelled`` and ``done`` and closes. On the virtual MinSeg, whose wheel nobody can
+    turn, ``turn`` is its simulated hand: Enter has it turn the wheel once, a little over
+    or under, then counts."""
 
     BINDINGS = [
         Binding("enter", "turned", "Turned once"),
         Binding("escape", "cancel", "Cancel"),
     ]
 
-    def __init__(self, done: threading.Event, cancelled: threading.Event) -> None:
+    def __init__(
+        self,
+        done: threading.Event,
+        cancelled: threading.Event,
+        turn: Callable[[], object] | None = None,
+    ) -> None:
         super().__init__()
         self.done = done
         self.cancelled = cancelled
+        self.turn = turn
 
     def compose(self) -> ComposeResult:
         with Vertical(id="revolution", classes="dialog"):
             yield Prose("Counts per revolution", classes="title")
             yield Prose(
                 "Mark the wheel (a piece of tape), turn it exactly once by hand, either way, "
-                "then press Enter. The motor is off. 720 counts are expected.",
+                "then press Enter. The motor is off. 720 counts are expected."
+                if self.turn is None
+                else "The virtual MinSeg has no wheel to turn by hand: press Enter and a "
+                "simulated hand turns it once, a little over or under, as a hand does. On the "
+                "real board you turn it yourself. 720 counts are expected.",
                 id="revolution-text",
                 classes="para",
             )
 
     def action_turned(self) -> None:
+        if self.done.is_set():
+            return
+        if self.turn is not None:
+            self.turn()
         self.query_one("#revolution-text", Prose).update("Counting the last samples…")
         self.done.set()
 

@@ -66,8 +66,73 @@ class Choice(RadioButton):
         return drawn
 
 
+def _mid_word(widget: Answers | Ticks, event: events.Key) -> bool:
+    """Whether ``event``, read by a list of answers, goes on up to the step's form rather than
+    act here: a character goes into the first empty entry (:meth:`FieldForm.take`), and so
+    does a space typed right after one ('why does f fall' typed on the summary's first
+    question), while a space on its own ticks the answer. The list notes in
+    ``_word`` that it passed a character up."""
+    character = event.character if event.is_printable else None
+    if character and character != " ":
+        widget._word = True
+        return True
+    word = widget._word and character == " "
+    widget._word = word
+    return word
+
+
+class Answers(RadioSet):
+    """A list of answers of which one is picked. Its keys (the arrows, Space, Enter) act as
+    the list reads them, in the order typed, and a pick goes to the lab at once
+    (:meth:`FieldRow.take_choice`): Textual would run them through the list's bindings only
+    once the key has bubbled up to the app, after a key bound with priority typed after
+    them (Space then PgDn in one burst moved on first, and the tick was lost)."""
+
+    _word = False
+    """A character went up to the form through the list and no key acted here since."""
+
+    async def on_key(self, event: events.Key) -> None:
+        if _mid_word(self, event):
+            return
+        bindings = [b for b in self._bindings.key_to_bindings.get(event.key, ()) if not b.priority]
+        if not bindings:
+            return
+        event.stop()
+        event.prevent_default()
+        buttons = list(self.query(RadioButton))
+        before = [b.value for b in buttons]
+        await self.app.run_action(bindings[0].action, self)
+        picked = [k for k, b in enumerate(buttons) if b.value and not before[k]]
+        if picked and isinstance(self.parent, FieldRow):
+            self.parent.take_choice((picked[0],))
+
+
 class Ticks(SelectionList[int]):
-    """A list to tick whose marks say which are ticked without colour: X ticked, blank not."""
+    """A list to tick whose marks say which are ticked without colour: X ticked, blank not.
+    Space and Enter tick or untick the highlighted answer as the list reads them, in the
+    order typed, and the lab has the ticks at once (see :class:`Answers`); its other keys
+    (the arrows, Home, End) act as it reads them too."""
+
+    _word = False
+    """A character went up to the form through the list and no key acted here since."""
+
+    async def on_key(self, event: events.Key) -> None:
+        if _mid_word(self, event):
+            return
+        key = event.key
+        if key in ("space", "enter"):
+            event.stop()
+            event.prevent_default()
+            if self.highlighted is not None:
+                self.toggle(self.get_option_at_index(self.highlighted))
+                if isinstance(self.parent, FieldRow):
+                    self.parent.take_choice(tuple(sorted(self.selected)))
+            return
+        bindings = [b for b in self._bindings.key_to_bindings.get(key, ()) if not b.priority]
+        if bindings:
+            event.stop()
+            event.prevent_default()
+            await self.app.run_action(bindings[0].action, self)
 
     def render_line(self, y: int) -> Strip:
         strip = super().render_line(y)
@@ -236,7 +301,7 @@ class FieldRow(Vertical):
                     classes="field-choice",
                 )
             else:
-                yield RadioSet(
+                yield Answers(
                     *[Choice(o, value=k in self._chosen) for k, o in enumerate(self.field.options)],
                     classes="field-choice",
                 )
@@ -357,6 +422,15 @@ class FieldRow(Vertical):
         if indices != self._chosen:
             self._chosen = indices
             self.post_message(self.Chosen(self, self.field.key, indices))
+
+    def take_choice(self, indices: tuple[int, ...]) -> None:
+        """The group ticked ``indices`` with a key: handed to the screen's queue at once (not
+        from widget to widget up to it), so that it is stored before a key typed after it
+        acts there (:func:`after_typed_keys`). The list's own message, which follows, then
+        finds it chosen already."""
+        if indices != self._chosen:
+            self._chosen = indices
+            self.screen.post_message(self.Chosen(self, self.field.key, indices))
 
     @on(RadioSet.Changed)
     def _radio(self, event: RadioSet.Changed) -> None:
@@ -727,17 +801,19 @@ async def after_typed_keys(app: App[None], work: Callable[[], object]) -> None:
     ``work`` joins the form's queue behind those keys (:meth:`FieldForm.in_turn`); with any
     other widget focused (the list of steps, which hands the characters typed on it to the
     form), the app waits until that widget has handled what it was handed, then runs
-    ``work``. The keys typed after it wait for ``work`` either way. (Not covered: a key that
-    such a widget acts on through a binding of its own, Enter ticking an answer: Textual
-    runs that binding on the app's queue once the key has bubbled up, after ``work``.)"""
+    ``work``. The keys typed after it wait for ``work`` either way. A list of answers acts on its keys as it reads them
+    (:class:`Answers`, :class:`Ticks`: Textual would run their bindings on the app's queue
+    once the key has bubbled up, after ``work``) and hands a tick to the screen's queue, so
+    the app also waits until the screen has handled what it was handed meanwhile."""
     focused = app.focused
     if isinstance(focused, FieldForm):
         focused.in_turn(work)
         return
     if focused is not None:
-        handled = asyncio.Event()
-        if focused.call_later(handled.set):  # False: it is being removed, its keys with it
-            await handled.wait()
+        for node in (focused, focused.screen):
+            handled = asyncio.Event()
+            if node.call_later(handled.set):  # False: it is being removed, its keys with it
+                await handled.wait()
     await _done(work())
 
 

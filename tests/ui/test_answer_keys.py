@@ -1,0 +1,89 @@
+"""A tick typed on a list of answers right before PgDn or PgUp lands in the step being left.
+
+Issue 20's second walk: Space then PgDn in one burst on a "done?" choice, or on a summary
+question, showed the next step, and going back showed the answer unticked. The list acted
+on Space through its own binding, which Textual runs only once the key has bubbled up to
+the app: after PgDn's priority binding had already moved to the next step. Each test ticks
+an answer and moves in one burst, comes back, and checks that the tick is stored and shown,
+and that the move came after it."""
+
+from __future__ import annotations
+
+import pytest
+from textual.widgets import RadioSet
+
+from minseg_tui.ui.widgets.fields import FieldRow, Ticks, field_id
+from tests.ui.helpers import burst, goto, settle, shown, start
+
+
+def _chosen(app, key: str) -> str:
+    with app.session as s:
+        entry = s.entry(key)
+    return entry.typed if entry is not None else ""
+
+
+def _row(app, key: str) -> FieldRow:
+    return app.screen.query_one(f"#{field_id(key)}", FieldRow)
+
+
+async def _focus_answers(pilot, key: str) -> None:
+    row = _row(pilot.app, key)
+    row.focus_input()
+    await settle(
+        pilot, lambda: pilot.app.focused is not None and row in pilot.app.focused.ancestors
+    )
+
+
+def _ticked_on_screen(row: FieldRow) -> tuple[int, ...]:
+    """The answers the row shows ticked, 0-based."""
+    ticks = row.query(Ticks)
+    if ticks:
+        return tuple(sorted(ticks.first().selected))
+    radio = row.query_one(RadioSet)
+    return tuple(k for k, b in enumerate(radio.query("RadioButton")) if b.value)
+
+
+@pytest.mark.parametrize(
+    ("there", "key", "keys", "move", "back", "chosen", "ticked"),
+    [
+        # a done? choice (one answer), moving on and coming back
+        ("prep1", "prep1.done", ("space",), "pagedown", "pageup", "a", (0,)),
+        ("prep2", "prep2.done", ("space",), "pageup", "pagedown", "a", (0,)),
+        # a summary question of one answer, the second answer ticked (an arrow first)
+        ("summary", "summary.1", ("down", "space"), "pageup", "pagedown", "b", (1,)),
+        # the summary question of several answers: two ticked
+        (
+            "summary",
+            "summary.5",
+            ("down", "space", "down", "space"),
+            "pageup",
+            "pagedown",
+            "b, c",
+            (1, 2),
+        ),
+    ],
+)
+async def test_a_tick_typed_right_before_a_move_is_kept(
+    quiet, there, key, keys, move, back, chosen, ticked
+):
+    app = quiet()
+    moved_with: list[str] = []
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, there)
+        await _focus_answers(pilot, key)
+        screen = app.screen
+        move_step = screen._move
+
+        async def move_and_note(delta: int) -> None:
+            moved_with.append(_chosen(app, key))
+            await move_step(delta)
+
+        screen._move = move_and_note
+        await burst(pilot, *keys, move)
+        assert not shown(app, there)
+        assert moved_with == [chosen]  # the tick was stored before the step moved
+        assert _chosen(app, key) == chosen
+        await burst(pilot, back)
+        assert shown(app, there)
+        assert _ticked_on_screen(_row(app, key)) == ticked
