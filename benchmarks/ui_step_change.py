@@ -15,6 +15,10 @@ first pair (main thread only: the event loop, where Textual lays out and draws).
 ``net`` is the CPU time of a change less what the app spends idle (measured first, per
 second) over the change's wall time: on a loaded machine a change takes seconds of wall
 time, and the virtual board's stream alone then adds a good part of the CPU time.
+
+``--no-paint`` leaves out the painting of the frames, as the UI tests do
+(tests.ui.conftest._unpainted_refresh): the difference from a run without it is what painting
+costs (a terminal needs it; the headless driver throws the frames away).
 """
 
 from __future__ import annotations
@@ -30,6 +34,7 @@ from pathlib import Path
 
 import numpy as np
 from textual.pilot import Pilot
+from textual.screen import Screen
 
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
@@ -39,6 +44,7 @@ from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from tests.ui.conftest import _unpainted_refresh  # the UI tests' frames left unpainted
 from tests.ui.helpers import TABLE  # the filled Task 4-9 table the UI tests type
 
 PAIRS = (
@@ -155,7 +161,10 @@ def main() -> None:
     ap.add_argument("--idle", type=float, default=5.0, help="s of idle measured first")
     ap.add_argument("--only", nargs="*", help="only the pairs whose first step is one of these")
     ap.add_argument("--profile", help="write a cProfile of the first pair's changes here")
+    ap.add_argument("--no-paint", action="store_true", help="no frame painted (as in the tests)")
     args = ap.parse_args()
+    if args.no_paint:
+        Screen._compositor_refresh = _unpainted_refresh  # type: ignore[method-assign]
     with tempfile.TemporaryDirectory() as tmp:
         asyncio.run(run(args, Path(tmp) / "sessions"))
 

@@ -17,7 +17,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import check_words, own_first
-from minseg_tui.lab.views.session import policy, rise_zoom
+from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
 from minseg_tui.model.identify import ResponseResult, Rise
@@ -134,10 +134,10 @@ def _answers(session: Session, part: str) -> Section:
             verdict = (
                 "not checked"
                 if fb is None
-                else {"right": "✓ ", "wrong": "✗ ", "missing": ""}[fb.status] + fb.message
+                else {"right": "✓ ", "wrong": "✗ ", "missing": ""}[fb.status] + fb.for_grader
             )
             if e is not None and not e.ok:
-                verdict = f"refused: {e.message}"
+                verdict = f"refused; {own_first.TOLD} {e.message}"
             rows.append((st.title, fld.label, shown.strip() or own_first.NOT_ANSWERED, verdict))
     title = "Preparation" if part == "Preparation" else "Summary and reflections"
     return Section(title, [Table(("step", "question", "answer", "feedback"), tuple(rows))])
@@ -243,6 +243,7 @@ def _step_section(session: Session) -> Section:
         "program's least-squares value:"
     )
     sec.blocks.append(Table(own_first.STEP_HEADER, tuple(r.cells for r in rows)))
+    sec.blocks.append(own_first.policy_in_force(session)[0])
     sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
     if s.T_63_note:
         sec.blocks.append(s.T_63_note)
@@ -323,8 +324,14 @@ def _where(key: str) -> str | None:
     for st in lab_steps.STEPS:
         for fld in st.fields:
             if fld.key == key:
-                return f"{st.title.split(':')[0]}, {fld.label}"
+                return f"{st.title.split(':')[0]}, {_label(fld.label)}"
     return None
+
+
+def _label(label: str) -> str:
+    """A field's label as an instructor reads it: "your K" (the group's screen) is "the
+    group's K"."""
+    return own_first.GROUPS + label[4:] if label.startswith("your ") else label
 
 
 def _warnings_section(session: Session) -> Section:
@@ -334,20 +341,19 @@ def _warnings_section(session: Session) -> Section:
         for n in session.warnings()
     ]
     items += [
-        f"refused entry {_where(e.key) or e.key}: {e.text!r} — {e.message}"
+        f"refused entry {_where(e.key) or e.key}: {e.text!r} ({own_first.TOLD} {e.message})"
         for e in session.entries.values()
         if not e.ok
     ]
     items += [
-        f"refused entry {_where(e.key) or e.key}: {e.refused[0]!r} — {e.refused[1]} (still "
-        f"using {e.text!r})"
+        f"refused entry {_where(e.key) or e.key}: {e.refused[0]!r} ({own_first.TOLD} {e.refused[1]}; "
+        f"the answer in effect stays {e.text!r})"
         for e in session.entries.values()
         if e.refused
     ]
     items += list(res.problems)
-    rule = policy(session)
-    if rule.problem:  # the grader reads which policy the "shown to the group" cells follow
-        items.append(rule.problem)
+    # the grader reads which policy the "shown to the group" cells rest on
+    items += own_first.policy_in_force(session)[1]
     return Section("Warnings", [items if items else "None."])
 
 

@@ -124,16 +124,17 @@ def test_the_question_is_not_asked_when_counts_came(board):
 
 
 def test_one_revolution_by_hand_counts_720(board):
-    # the hand turns once counting has begun (the link read after the motor stopped), as a
+    # the hand turns once counting has begun (the link read a sample after the motor stopped), as a
     # student turns after the prompt, however late a busy machine gets there
     link = board()
     turned = threading.Event()
     counting = threading.Event()
     read = link.samples
 
-    def samples():  # the link's own read, noting when counting has begun
+    def samples():  # the link's own read, noting when counting has begun: a sample read
         batch = read()
-        counting.set()
+        if len(batch):
+            counting.set()
         return batch
 
     def hand():

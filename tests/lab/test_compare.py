@@ -209,7 +209,9 @@ def test_the_groups_values_are_quoted_with_the_digits_they_typed(tmp_path):
         assert "from your T = 57 ms" in screen and "57.00" not in screen, screen
         rows = {r.key: r.cells for r in own_first.step_rows(s)}
         assert rows["own.T"][1] == "57 ms" and rows["own.K"][1] == "1.93 rad/s/V"
-        assert "from your T = 57 ms" in rows["own.J"][2]
+        assert (
+            "from the group's T = 57 ms" in rows["own.J"][2]
+        )  # the report: an instructor reads it
         assert "1.930" not in " ".join(rows["own.omega_5"]) + " ".join(rows["own.model"])
         s.enter("own.T", "0,057")
         (c,) = s.comparisons("task13")

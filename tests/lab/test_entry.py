@@ -202,14 +202,14 @@ def test_formula_values(text, env, value):
     ("text", "fragment"),
     [
         ("", "nothing typed"),
-        ("Kc", "write products with *"),
+        ("ab", "write products with *: a*b"),
         ("x", "unknown name 'x'"),
         ("__import__('os')", "only exp(x)"),
-        ("a.b", "not a formula"),
-        ("[1]", "not a formula"),
+        ("a.b", "'.' has no place in a formula"),
+        ("[1]", "'[' has no place in a formula"),
         ("'a'", "not a number"),
-        ("a +", "cannot be read"),
-        ("a % b", "only + - * / ^"),
+        ("a +", "'+' at the end"),
+        ("a % b", "'%' goes right after a number"),
     ],
 )
 def test_formula_refused(text, fragment):

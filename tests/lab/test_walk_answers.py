@@ -105,7 +105,7 @@ def test_arithmetic_in_a_number_field(key, text, value):
         ("own.k_a", "0.65*0.49 V", "'0.65*0.49 V' is a voltage"),
         ("R", "2*-3", "'2*-3' is negative"),
         ("own.k_a", "4.7 5.2", "more than one number"),
-        ("own.k_a", "0.65*(0.49", "more than one number"),
+        ("own.k_a", "0.65*(0.49", "a '(' is not closed"),
     ],
 )
 def test_arithmetic_refused_in_one_line_about_what_was_typed(key, text, says):

@@ -6,6 +6,8 @@ was shown the computed value, no cell is left blank, and the report names the ru
 from __future__ import annotations
 
 import re
+import shutil
+from html import unescape
 from pathlib import Path
 
 import numpy as np
@@ -13,6 +15,7 @@ import pytest
 
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.quantities import format_number
 from minseg_tui.report.write import write_report
@@ -83,10 +86,10 @@ def test_every_value_leads_with_the_groups_own(tmp_path: Path) -> None:
     assert T["the program's value (least squares)"].startswith(format_number(st.step.T))
     J = _row(table, "J (Task 13)")
     assert J["the group's value"] == "not answered"
-    assert "from your T = 0.09 s" in J["computed the group's way"]  # as typed
+    assert "from the group's T = 0.09 s" in J["computed the group's way"]  # as typed
     assert J["the program's value (least squares)"].startswith(format_number(st.step.J))
     model = _row(table, "the model (Task 14)")
-    assert model["computed the group's way"].endswith("(with your T and K)")
+    assert model["computed the group's way"].endswith("(with the group's T and K)")
     # the close-up of one rise is the program's reading, and says so
     (caption,) = re.findall(r"^\*(.*)\*$", results, re.M)
     assert caption.startswith("The program's reading of one rise of run steps-1")
@@ -100,6 +103,7 @@ def test_the_shown_column_says_when_the_group_saw_each_value(tmp_path: Path) -> 
     start; rows of Tasks 11-15 not yet answered were left out. Every row now says it."""
     s = _session(tmp_path)  # own.T answered
     s.enter("own.f", "1.9")
+    views.note_drawn(s, views.results(s.snapshot(), "task12"))  # as the lab screen does
     assert s.reveal("task13") == ["own.J"]
     md = _report(s)
     s.close()
@@ -109,20 +113,34 @@ def test_the_shown_column_says_when_the_group_saw_each_value(tmp_path: Path) -> 
         assert shown.startswith("shown in the program's Task 4-9 table from the start"), shown
     (table,) = _tables(_section(md, "Step response and model"))
     shown = {r[0]: r[-1] for r in table[1:]}
-    assert shown["T (Task 12)"] == "after the group answered"
-    assert (
-        shown["J (Task 13)"] == "revealed before answering (with Ctrl+R, the lab assistant's key)"
-    )
-    assert shown["K (Task 11)"] == "hidden from the group on Tasks 11-15: not answered"
+    assert re.fullmatch(
+        r"after the group answered \('0.09 s'\): shown on Tasks 11-15, 2026-11-22 10:00:\d\d UTC",
+        shown["T (Task 12)"],
+    ), shown["T (Task 12)"]
+    assert re.fullmatch(
+        r"revealed before answering: shown with Ctrl\+R, the lab assistant's key, "
+        r"2026-11-22 10:00:\d\d UTC; not answered",
+        shown["J (Task 13)"],
+    ), shown["J (Task 13)"]
+    assert shown["K (Task 11)"] == "not shown on the group's screen in this session (not answered)"
     assert len(shown) == 6  # every value of Tasks 11-15, answered or not
-    # a lab whose policy shows the computed values at once says so in every row
+    results = _section(md, "Step response and model")
+    assert re.search(
+        r"The lab's policy while the group worked, as the session recorded it: answers first "
+        r"\(no lab.toml: the default\), from 2026-11-22 10:00:\d\d UTC\.",
+        results,
+    )
+    # lab.toml written after the group worked: the report keeps to what was in force (the
+    # rows said "shown from the start by the lab's policy", read from the file at export)
     (tmp_path / "lab.toml").write_text("answers_first = false\n", encoding="utf-8")
     with Session.open(s.folder, readonly=True) as again:
-        md = write_report(again).markdown.read_text(encoding="utf-8")
-    (table,) = _tables(_section(md, "Step response and model"))
-    for row in table[1:]:
-        if row[0] != "J (Task 13)":  # a lab assistant's reveal is still said
-            assert row[-1].startswith("shown from the start: the lab's policy"), row
+        md2 = write_report(again).markdown.read_text(encoding="utf-8")
+    (table2,) = _tables(_section(md2, "Step response and model"))
+    assert {r[0]: r[-1] for r in table2[1:]} == shown
+    assert (
+        "lab.toml now says: computed values at once (lab.toml: answers_first = false); while "
+        "the group worked it was: answers first (no lab.toml: the default)"
+    ) in _section(md2, "Warnings")
 
 
 def test_no_cell_of_the_report_is_blank(tmp_path: Path) -> None:
@@ -205,6 +223,7 @@ def test_a_policy_file_that_cannot_be_read_is_a_warning(tmp_path: Path) -> None:
     """The "shown to the group" cells follow lab.toml: one that cannot be read (answers
     first then holds) is said in the report's warnings, as Tasks 11-15 say it on screen."""
     s = _session(tmp_path)
+    views.note_drawn(s, views.results(s.snapshot(), "task12"))
     s.close()
     (tmp_path / "lab.toml").write_text("answers_first = maybe\n", encoding="utf-8")
     with Session.open(s.folder, readonly=True) as again:
@@ -212,7 +231,7 @@ def test_a_policy_file_that_cannot_be_read_is_a_warning(tmp_path: Path) -> None:
     warnings = _section(md, "Warnings")
     assert "lab.toml: cannot be read" in warnings and "answers first" in warnings
     (table,) = _tables(_section(md, "Step response and model"))
-    assert _row(table, "T (Task 12)")["shown to the group"] == "after the group answered"
+    assert _row(table, "T (Task 12)")["shown to the group"].startswith("after the group answered")
 
 
 def test_an_incomplete_row_says_what_is_missing(tmp_path: Path) -> None:
@@ -241,3 +260,128 @@ def test_the_groups_notes_lead_the_model_check(tmp_path: Path) -> None:
     assert first == "The group's notes on the model check: the wheel stops early after each drop"
     assert md.count("the wheel stops early after each drop") == 1
     assert "y' = 0 gives y = K c" in _section(md, "Notes")  # the other notes stay there
+
+
+def test_a_value_the_model_check_showed_first_was_revealed_before_answering(
+    tmp_path: Path,
+) -> None:
+    """Issue 20, item 1: the report said "after the group answered" of every value the group
+    had typed by the time of the export, though the model check, which writes the fitted T
+    and K, may have been on their screen before. What was recorded decides now."""
+    s = _session(tmp_path)  # own.T answered; K not yet
+    views.note_drawn(s, views.check(s.snapshot()))  # the group opens the model check
+    s.enter("own.K", "1.9")
+    views.note_drawn(s, views.results(s.snapshot(), "task11"))
+    md = _report(s)
+    s.close()
+    (table,) = _tables(_section(md, "Step response and model"))
+    K = _row(table, "K (Task 11)")["shown to the group"]
+    assert re.fullmatch(
+        r"revealed before answering: shown by the model check \(it writes the fitted T and K\), "
+        r"2026-11-22 10:00:\d\d UTC; answered 2026-11-22 10:00:\d\d UTC",
+        K,
+    ), K
+    T = _row(table, "T (Task 12)")["shown to the group"]
+    assert T.startswith("after the group answered ('0.09 s'): shown by the model check"), T
+    assert _row(table, "J (Task 13)")["shown to the group"].startswith("not shown")
+
+
+def test_an_answer_changed_after_the_value_was_shown_is_said(tmp_path: Path) -> None:
+    s = _session(tmp_path)  # own.T = 0.09 s
+    views.note_drawn(s, views.results(s.snapshot(), "task12"))
+    s.enter("own.T", "56 ms")  # the group saw the 63 % reading, then changed theirs
+    md = _report(s)
+    s.close()
+    (table,) = _tables(_section(md, "Step response and model"))
+    T = _row(table, "T (Task 12)")["shown to the group"]
+    assert T.startswith("after the group answered ('0.09 s')"), T
+    assert re.search(r"; the answer was changed after that, to '56 ms', 2026-11-22 10:00:\d\d", T)
+
+
+def test_an_old_session_says_what_it_cannot_know(tmp_path: Path) -> None:
+    """A session of a program that did not record showings or the policy: the report does not
+    claim "after the group answered", nor a policy read from today's file."""
+    folder = tmp_path / "schema1"
+    shutil.copytree(Path(__file__).parents[1] / "lab" / "old_sessions" / "schema1", folder)
+    with Session.open(folder, readonly=True) as s:
+        answered = s.answered()
+        md = _report(s)
+    (table,) = _tables(_section(md, "Step response and model"))
+    for row in table[1:]:
+        assert row[-1].startswith("not known: the session was begun with an older program"), row
+    assert answered  # the old group did answer some: no "after the group answered" for them
+    assert "The lab's policy while the group worked is not known" in md
+    assert "the lab's policy is not recorded in this session" in _section(md, "Warnings")
+
+
+_SECOND_PERSON = re.compile(r"\b(you|your|yours|yourselves)\b", re.I)
+
+
+def test_the_report_speaks_of_the_group_not_to_it(tmp_path: Path) -> None:
+    """Issue 20, item 3: an instructor reads the report; cells said "your T", "yours divides
+    ...", the Preparation feedback "check your working", a refused entry "your model". The
+    whole report, Markdown and HTML, now names the group; a message the program gave the
+    group is quoted as such."""
+    s = _session(tmp_path)
+    for key, text in (
+        ("own.omega_step", "7.0"),
+        ("own.K", "1.75"),
+        ("own.J", "0.0006"),
+        ("own.model", "0.09 omega' = -omega + 1.75 u_A"),
+        ("own.omega_5", "8.75"),
+        ("own.k_v", "0.49"),
+        ("prep14.T", "R J"),  # wrong, no named slip: "not right yet; check your working"
+        ("prep7.t_63", "10 min"),
+        ("prep7.T", "6 min"),  # "consistent with your readings"
+        ("prep7.K", "0.05"),  # "enter final temperature first"
+        ("own.f", "0.00186"),  # refused: "... if you mean it"
+    ):
+        s.enter(key, text)
+    views.note_drawn(s, views.results(s.snapshot(), "task15"))
+    written = write_report(s)
+    s.close()
+    md = written.markdown.read_text(encoding="utf-8")
+    html = re.sub(r"<[^>]+>", " ", unescape(written.html.read_text(encoding="utf-8")))
+    told = "the program told the group:"
+    for doc in (md, html):
+        said = [line.split(told)[0] for line in doc.splitlines()]
+        found = [m.group(0) for line in said for m in _SECOND_PERSON.finditer(line)]
+        assert not found, [line for line in said if _SECOND_PERSON.search(line)]
+    assert "consistent with the group's readings" in md and "not right" in md
+    assert "not checked: final temperature is not entered" in md
+    assert f"Tasks 6-9, the group's f: '0.00186' ({told} " in md
+
+
+def test_why_the_two_T_differ_names_what_the_fit_used(tmp_path: Path) -> None:
+    """Issue 20, item 4: the report said the least-squares T "fits the whole rise" while its
+    own "How T was fitted" said one model fits the whole log, every edge rising and falling.
+    The sentence now holds for either way of fitting (and for the numbers a session keeps)."""
+    s = _session(tmp_path)  # own.T = 0.09 s
+    st = s.results().identification.step
+    md = _report(s)
+    s.close()
+    assert st is not None and st.fit.method == "whole_log"
+    results = _section(md, "Step response and model")
+    assert "whole rise" not in results
+    assert (
+        "the least-squares T fits whole stretches of the run with the sampling modelled." in results
+    )
+    assert "J uses T = " in results and "fitted over whole stretches of the run;" in results
+    assert "How T was fitted: one first-order model fits the whole log" in results
+
+
+def test_an_old_session_continued_claims_nothing_from_before_its_record(tmp_path: Path) -> None:
+    """An older program's session opened again: what the group saw before that opening is
+    not known, so a value first recorded with the group's answer in place is not said to be
+    "after the group answered"; one shown before any answer still is revealed before."""
+    folder = tmp_path / "schema1"
+    shutil.copytree(Path(__file__).parents[1] / "lab" / "old_sessions" / "schema1", folder)
+    with Session.open(folder) as s:
+        assert s.shown_since is not None and s.shown_since > s.created
+        s.enter("own.T", "57 ms")
+        views.note_drawn(s, views.results(s.snapshot(), "task12"))
+        md = _report(s)
+    (table,) = _tables(_section(md, "Step response and model"))
+    T = _row(table, "T (Task 12)")["shown to the group"]
+    assert T.startswith("not known whether before or after answering: first recorded on "), T
+    assert "not known before: the session was begun with an older program" in T

@@ -15,6 +15,7 @@ import numpy as np
 from minseg_tui.cli import main
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.quantities import format_interval, format_number, format_value
 from minseg_tui.report import content, markdown, svg
@@ -279,11 +280,12 @@ def test_the_report_compares_the_groups_way_and_says_what_was_revealed(tmp_path)
     s.enter("own.T", "56.8 ms")
     J_own = inertia_from_time_constant(T_own, ident.R, ident.f, ident.k_v, ident.k_a)
     s.enter("own.J", f"{J_own * 1.003:.5g}")
+    views.note_drawn(s, views.results(s.snapshot(), "task13"))  # the group sees its J compared
     assert s.reveal("task15") == ["own.omega_5"]
     md = write_report(s).markdown.read_text(encoding="utf-8")
     s.close()
     (row,) = [line for line in md.splitlines() if line.startswith("| J (Task 13)")]
-    assert "from your T = 56.8" in row and "+0.3 %" in row and "+0 %" not in row
+    assert "from the group's T = 56.8" in row and "+0.3 %" in row and "+0 %" not in row
     assert format_number(ident.step.J) in row and "after the group answered" in row
     (row5,) = [line for line in md.splitlines() if line.startswith("| omega at u_A = 5 V")]
     assert "revealed before answering" in row5

@@ -1,6 +1,7 @@
 """Fixtures: the app on a real session folder (tmp_path), on the real virtual MinSeg (real
 factory, link and URL board) or, for pinned screens, on a device double that sends nothing;
-every Input's cursor kept still; Pilot's waits exact instead of timed. The async tests run
+every Input's cursor kept still; Pilot's waits exact instead of timed; no frame painted
+for a headless terminal that throws it away. The async tests run
 under pytest-asyncio (auto mode)."""
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import textual.app
 import textual.pilot
 from textual._context import active_app
 from textual.pilot import Pilot
+from textual.screen import Screen
 from textual.widgets import Input
 
 from minseg_tui.report.write import write_report
@@ -99,3 +101,29 @@ def exact_pilot_waits(monkeypatch: pytest.MonkeyPatch) -> None:
     machine cuts short. :func:`drained` waits for exactly what the key set going."""
     monkeypatch.setattr(textual.app, "wait_for_idle", drained)
     monkeypatch.setattr(textual.pilot, "wait_for_idle", drained)
+
+
+_compositor_refresh = Screen._compositor_refresh
+
+
+def _unpainted_refresh(self: Screen[object]) -> None:
+    """Textual's compositor refresh, except that a headless app's screen is not painted: its
+    driver throws every frame away (App._display), and painting them was about 40 % of a UI
+    test's CPU. Layout still runs (regions, scrolling, what is under a click), and what a test
+    reads off the screen is rendered when it asks: a widget's render(), the snapshots' full
+    render (App.export_screenshot), a plot's columns (Canvas.columns)."""
+    app = self.app
+    if not (app.is_headless and not app.is_inline and self is app.screen):
+        _compositor_refresh(self)
+        return
+    self._compositor._dirty_regions.clear()
+    self._dirty_widgets.clear()
+    app._update_mouse_over(self)
+
+
+@pytest.fixture(autouse=True)
+def no_headless_frames(monkeypatch: pytest.MonkeyPatch, request: pytest.FixtureRequest) -> None:
+    """See :func:`_unpainted_refresh`. The whole-lab walks (marked slow) paint every frame,
+    as the app does in a terminal, so a widget that fails while it is drawn fails them."""
+    if request.node.get_closest_marker("slow") is None:
+        monkeypatch.setattr(Screen, "_compositor_refresh", _unpainted_refresh)

@@ -94,8 +94,8 @@ async def test_wrong_entries_for_every_input_kind(quiet, tmp_path):
         assert "ambiguous" in row.message
         row = await type_in(pilot, "i_ss@3.5", "0.15 A")
         assert "above 100 mA" in row.message and not row.has_class("refused")
-        row = await type_in(pilot, "i_ss@4.5", "47 mA")
-        assert row.message == ""
+        row = await type_in(pilot, "i_ss@4.5", "47 mA")  # fine alone, but below 150 mA:
+        assert row.message.startswith("! i_ss falls from 150 mA at 3.5 V to 47 mA at 4.5 V")
         await goto(pilot, "task4")
         row = await type_in(pilot, "u_ss@3.5", "3.1 A")
         assert row.has_class("refused")

@@ -7,12 +7,26 @@ values, never the program's T."""
 
 from __future__ import annotations
 
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
 import numpy as np
 import pytest
 
 from minseg_tui.ui.panels.results import ResultsPanel, StepPlot
 from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.helpers import settle, start_with_a_run
+
+
+@asynccontextmanager
+async def _task12(quiet) -> AsyncIterator[tuple]:
+    """The lab at 80x24 on Task 12 with the seeded step run: (app, pilot, the results panel,
+    its zoomed plot)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        panel = app.screen.query_one(ResultsPanel)
+        yield app, pilot, panel, panel.query_one(StepPlot)
 
 
 def _frame(canvas: Canvas) -> tuple[int, int]:
@@ -30,11 +44,7 @@ def _cursor_column(canvas: Canvas) -> int:
 
 
 async def test_the_cursor_reads_T_to_a_few_ms_at_80x24(quiet):
-    app = quiet()
-    async with app.run_test(size=(80, 24)) as pilot:
-        await start_with_a_run(pilot, "task12")
-        panel = app.screen.query_one(ResultsPanel)
-        plot = panel.query_one(StepPlot)
+    async with _task12(quiet) as (app, pilot, panel, plot):
         canvas = plot.query_one(Canvas)
         view = panel.view
         assert view is not None and "own.T" in view.hidden  # the group has no T yet
@@ -72,11 +82,7 @@ async def test_the_cursor_reads_T_to_a_few_ms_at_80x24(quiet):
 
 
 async def test_shift_arrows_jump_and_the_cursor_stays_in_the_plot(quiet):
-    app = quiet()
-    async with app.run_test(size=(80, 24)) as pilot:
-        await start_with_a_run(pilot, "task12")
-        panel = app.screen.query_one(ResultsPanel)
-        plot = panel.query_one(StepPlot)
+    async with _task12(quiet) as (app, pilot, panel, plot):
         plot.focus()
         await settle(pilot)
         start = panel.cursor
@@ -95,11 +101,7 @@ async def test_shift_arrows_jump_and_the_cursor_stays_in_the_plot(quiet):
 
 
 async def test_a_click_on_the_rise_puts_the_cursor_on_that_column(quiet):
-    app = quiet()
-    async with app.run_test(size=(80, 24)) as pilot:
-        await start_with_a_run(pilot, "task12")
-        panel = app.screen.query_one(ResultsPanel)
-        plot = panel.query_one(StepPlot)
+    async with _task12(quiet) as (app, pilot, panel, plot):
         first, _last = _frame(plot.query_one(Canvas))
         await pilot.click(StepPlot, offset=(first + 20, 6))
         await settle(pilot)

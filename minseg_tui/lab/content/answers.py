@@ -14,7 +14,14 @@ from collections.abc import Mapping
 import numpy as np
 
 from minseg_tui.lab.content.expr import Formula, parse_formula
-from minseg_tui.lab.content.steps import FIELDS, Check, Feedback, Field
+from minseg_tui.lab.content.steps import (
+    CONSISTENT,
+    CONSISTENT_GRADER,
+    FIELDS,
+    Check,
+    Feedback,
+    Field,
+)
 
 _SAMPLE_SEED = 20240416
 
@@ -62,23 +69,28 @@ def check_answer(chk: Check, answer: object, entries: Mapping[str, object]) -> F
             return Feedback(chk.key, "right", f"right: {chk.explain}")
         if fld.multiple and set(chosen) < set(chk.correct):
             return Feedback(chk.key, "wrong", "partly: something else matters too")
-        return Feedback(chk.key, "wrong", "not quite; think again")
+        return Feedback(chk.key, "wrong", "not quite; think again", "wrong")
     env: dict[str, float] = {}
     for name, key in chk.env:
         v = entries.get(key)
         if not isinstance(v, float):
-            return Feedback(chk.key, "missing", f"enter {FIELDS[key].label} first")
+            return Feedback(
+                chk.key,
+                "missing",
+                f"enter {FIELDS[key].label} first",
+                f"not checked: {FIELDS[key].label} is not entered",
+            )
         env[name] = v
     if not isinstance(answer, Formula | float):
         return Feedback(chk.key, "missing", "no answer yet")
     if _same(answer, chk.expected, fld.names, env, chk.rel_tol, chk.abs_tol):
-        return Feedback(
-            chk.key, "right", f"{chk.holds}: {chk.explain}" if chk.explain else chk.holds
-        )
+        said = f"{chk.holds}: {chk.explain}" if chk.explain else chk.holds
+        grader = said.replace(CONSISTENT, CONSISTENT_GRADER) if chk.holds == CONSISTENT else ""
+        return Feedback(chk.key, "right", said, grader)
     for wrong, message in chk.mistakes:
         if _same(answer, wrong, fld.names, env, chk.rel_tol, chk.abs_tol):
             return Feedback(chk.key, "wrong", message)
-    return Feedback(chk.key, "wrong", "not right yet; check your working")
+    return Feedback(chk.key, "wrong", "not right yet; check your working", "not right")
 
 
 def read_formula(fld: Field, text: str) -> Formula:

@@ -11,6 +11,7 @@ do names written apart, the way the lab's own text writes products (``R i_ss``,
 from __future__ import annotations
 
 import ast
+import difflib
 import math
 import re
 from collections.abc import Callable, Mapping
@@ -99,6 +100,104 @@ def _prepare(text: str, names: tuple[str, ...] = ()) -> str:
 _NAME_APART = re.compile(r"(?<![\w.])([A-Za-z_]\w*)(?:\s+(?=[A-Za-z_(\d.])|(?=\())")
 
 
+_TOKEN = re.compile(
+    r"""(?P<space>\s+)
+    |(?P<number>\d[\d.]*(?:,\d[\d.]*)?(?:[eE][-+]?\d+)?|\.\d[\d.]*)
+    |(?P<name>[^\W\d]\w*)
+    |(?P<op>\*\*|[-+*/^·×−])
+    |(?P<open>\()|(?P<close>\))|(?P<percent>%)|(?P<other>.)""",
+    re.VERBOSE,
+)
+"""The pieces of a typed formula as :func:`formula_fault` reads them (before the
+implicit products and the decimal commas are worked out)."""
+
+
+def _split(name: str, known: tuple[str, ...]) -> list[str] | None:
+    """``name`` as known names run together ('Ri_ss' -> R, i_ss), or None."""
+    if not name:
+        return []
+    for k in sorted(known, key=len, reverse=True):
+        if name.startswith(k):
+            rest = _split(name[len(k) :], known)
+            if rest is not None:
+                return [k, *rest]
+    return None
+
+
+def _name_hint(name: str, names: tuple[str, ...]) -> str:
+    """What an unknown name probably is: allowed names run together (write the product
+    with *), or an allowed name misspelt ('' when neither)."""
+    known = (*names, *_CONSTS)
+    parts = _split(name, known)
+    if parts is not None and len(parts) > 1:
+        return f" (write products with *: {'*'.join(parts)})"
+    close = difflib.get_close_matches(name, names, n=1, cutoff=0.6)
+    return f" (did you mean {close[0]}?)" if close else ""
+
+
+def _tail(text: str, most: int = 16) -> str:
+    """The end of ``text``, at most ``most`` characters ('…' before it when cut)."""
+    return text if len(text) <= most else "…" + text[-most:]
+
+
+def formula_fault(text: str) -> str | None:
+    """The first fault in ``text`` that keeps it from being a formula, in one line that
+    names it (an unclosed '(', a ')' with no '(' before it, two operators in a row, an
+    operator with nothing before or after it, a number with two decimal points, two
+    numbers side by side, a ',' or a character no formula has); None when it finds none
+    (the caller then says the text cannot be read)."""
+    t = text.strip()
+    depth = 0
+    prev: tuple[str, str, int] | None = None  # the kind, text and start of the last piece
+    for m in _TOKEN.finditer(t):
+        kind, piece = m.lastgroup or "other", m.group()
+        if kind == "space":
+            continue
+        before = t[: m.start()].rstrip()
+        operand = prev is not None and prev[0] in ("number", "name", "close", "percent")
+        if kind == "number" and not re.fullmatch(
+            r"(?:\d+(?:[.,]\d*)?|\.\d+)(?:[eE][-+]?\d+)?", piece
+        ):
+            return f"{piece!r} is not a number: one decimal point at most"
+        if kind == "number" and prev is not None and prev[0] == "number":
+            return f"two numbers side by side ({prev[1]} {piece}): put an operator between them"
+        if kind in ("name", "number") and prev is not None and prev[1] in _FUNCS:
+            return f"{prev[1]} takes its argument in parentheses: {prev[1]}(x)"
+        if kind == "op" and piece not in "+-−" and not operand:
+            if prev is None:
+                return f"{piece!r} at the start: something must come before it"
+            if prev[0] == "open":
+                return f"{piece!r} right after '(': something must come before it"
+            return f"two operators in a row ({t[prev[2] : m.end()]!r}): one is too many"
+        if kind == "close":
+            if prev is not None and prev[0] == "open":
+                return "'()' with nothing inside"
+            if depth == 0:
+                where = f" after {_tail(before)!r}" if before else ""
+                return f"the ')'{where} has no '(' left to close"
+            if prev is not None and prev[0] == "op":
+                return f"nothing between {prev[1]!r} and ')'"
+            depth -= 1
+        if kind == "open":
+            depth += 1
+        if kind == "percent" and not (prev is not None and prev[0] == "number"):
+            return "'%' goes right after a number (63 %)"
+        if kind == "other":
+            if piece == ",":
+                return "a ',' outside a number: a decimal comma goes between digits (5,3)"
+            if piece == "=":
+                return "an '=' in the formula: type only what comes after it"
+            return f"{piece!r} has no place in a formula (numbers, names, + - * / ^ and ( ))"
+        prev = (kind, piece, m.start())
+    if prev is not None and prev[0] == "op":
+        return f"{prev[1]!r} at the end: something must come after it"
+    if depth == 1:
+        return "a '(' is not closed: add the ')'"
+    if depth > 1:
+        return f"{depth} '(' are not closed: add {depth} ')'"
+    return None
+
+
 def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Formula:
     """Read ``text`` as a formula in ``names``; raise :class:`FormulaRefused` with one line."""
     allowed = (
@@ -111,16 +210,15 @@ def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Fo
     try:
         tree = ast.parse(_prepare(text, names), mode="eval")
     except SyntaxError:
+        fault = formula_fault(text)
         raise FormulaRefused(
-            label,
-            None,
-            f"{text.strip()!r} cannot be read; expected {allowed} (write products with *)",
+            label, None, fault or f"{text.strip()!r} cannot be read; expected {allowed}"
         ) from None
     used: set[str] = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
             if node.id not in names and node.id not in _CONSTS and node.id not in _FUNCS:
-                hint = " (write products with *, e.g. K*c)" if len(node.id) > 1 else ""
+                hint = _name_hint(node.id, names)
                 raise FormulaRefused(
                     label, None, f"unknown name {node.id!r}{hint}; expected {allowed}"
                 )
@@ -146,14 +244,18 @@ def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Fo
         elif not isinstance(
             node, ast.Expression | ast.BinOp | ast.UnaryOp | ast.Load | ast.operator | ast.unaryop
         ):
+            fault = formula_fault(text)
             raise FormulaRefused(
-                label, None, f"{text.strip()!r} is not a formula; expected {allowed}"
+                label, None, fault or f"{text.strip()!r} is not a formula; expected {allowed}"
             )
     for node in ast.walk(tree):
         if isinstance(node, ast.BinOp) and not isinstance(
             node.op, ast.Add | ast.Sub | ast.Mult | ast.Div | ast.Pow
         ):
-            raise FormulaRefused(label, None, f"only + - * / ^ are allowed; expected {allowed}")
+            fault = formula_fault(text)
+            raise FormulaRefused(
+                label, None, fault or f"only + - * / ^ are allowed; expected {allowed}"
+            )
     formula = Formula(text=text.strip(), tree=tree, names=frozenset(used))
     if not names and not math.isfinite(formula.value({})):
         raise FormulaRefused(

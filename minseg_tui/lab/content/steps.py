@@ -35,6 +35,9 @@ CONSISTENT = "consistent with your readings"
 """What a check says of an answer it can only compare with the group's own readings (the
 figure of Preparation 7 is not in the program, so its readings cannot be checked)."""
 
+CONSISTENT_GRADER = "consistent with the group's readings"
+""":data:`CONSISTENT` as the report says it to an instructor."""
+
 LEVELS: tuple[float, ...] = (2.5, 3.5, 4.5)
 """Requested voltages u_req (V) of Tasks 4-5, one table row each."""
 
@@ -95,11 +98,19 @@ class Check:
 
 @dataclass(frozen=True)
 class Feedback:
-    """The verdict on one checked field: ``status`` and a one-line ``message``."""
+    """The verdict on one checked field: ``status`` and a one-line ``message`` to the group;
+    ``grader``: the same verdict worded for an instructor reading the report, where the
+    message speaks to the group ('' when the message reads as it is)."""
 
     key: str
     status: Status
     message: str
+    grader: str = ""
+
+    @property
+    def for_grader(self) -> str:
+        """The verdict as the report words it."""
+        return self.grader or self.message
 
 
 @dataclass(frozen=True)

@@ -371,6 +371,18 @@ BOARD_CHECK = Record(
 )
 """One board check's result (:meth:`minseg_tui.lab.state.session.Session.record_check`)."""
 
+SHOWN = Record(
+    required={"at": Text(), "by": Text()},
+    optional={"answer": OneOf((None, Text()))},
+)
+"""The first showing of one computed value (:class:`minseg_tui.lab.state.shown.Shown`)."""
+
+POLICY = Record(
+    required={"at": Text(), "answers_first": Flag()},
+    optional={"problem": Text(), "file": Flag()},
+)
+"""The lab's policy as recorded (:class:`minseg_tui.lab.state.shown.PolicyRecord`)."""
+
 SESSION = Record(
     required={
         "kind": Exactly(KIND),
@@ -390,13 +402,18 @@ SESSION = Record(
         "revealed": ListOf(Text()),
         "kept": Memo(),
         "board_checks": MapOf(BOARD_CHECK),
+        "shown": MapOf(SHOWN),
+        "shown_since": Text(),
+        "policy": ListOf(POLICY),
     },
 )
 """session.json, whole (``revealed``: fields of Tasks 11-15 shown before the group
 answered them; ``kept``: the run's results as last computed, which
 :mod:`minseg_tui.lab.saving.kept` reads, and passes over when it cannot: a memo, never a
 reason to refuse the file; ``board_checks``: the newest result of each board check, by key
-of :data:`minseg_tui.lab.content.steps.BOARD_CHECKS`). Optional parts added since keep the
+of :data:`minseg_tui.lab.content.steps.BOARD_CHECKS`; ``shown``: the first time each computed
+value of Tasks 11-15 was on the group's screen, recorded since ``shown_since``; ``policy``: the
+lab's policy when the session was opened and whenever it changed). Optional parts added since keep the
 schema at 1: a file without them reads as before, and an older program ignores them."""
 
 PARTIAL_HEADER = Record(
@@ -452,9 +469,11 @@ __all__ = [
     "ENTRY",
     "KIND",
     "PARTIAL_HEADER",
+    "POLICY",
     "RUN",
     "SCHEMA",
     "SESSION",
+    "SHOWN",
     "problem",
     "salvage",
 ]

@@ -46,10 +46,12 @@ comparisons and the report)."""
 @dataclass(frozen=True)
 class Policy:
     """The lab's policy: ``answers_first`` (the group's own value before the computed one);
-    ``problem``: one line when the policy file could not be read (the default then holds)."""
+    ``problem``: one line when the policy file could not be read (the default then holds);
+    ``file``: whether there was a policy file at all (no file: the default)."""
 
     answers_first: bool = True
     problem: str = ""
+    file: bool = False
 
 
 def read_policy(sessions: Path) -> Policy:
@@ -61,13 +63,15 @@ def read_policy(sessions: Path) -> Policy:
     except FileNotFoundError:
         return Policy()
     except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        return Policy(True, f"{path}: cannot be read ({exc}); answers first")
+        return Policy(True, f"{path}: cannot be read ({exc}); answers first", file=True)
     value = data.get("answers_first", True)
     if not isinstance(value, bool):
         return Policy(
-            True, f"{path}: answers_first must be true or false, got {value!r}; answers first"
+            True,
+            f"{path}: answers_first must be true or false, got {value!r}; answers first",
+            file=True,
         )
-    return Policy(value)
+    return Policy(value, file=True)
 
 
 def concealed(policy: Policy, answered: Collection[str], revealed: Collection[str]) -> set[str]:
@@ -100,6 +104,11 @@ def _model(T: str, K: str) -> str:
     return f"{T} omega' = -omega + {K} u_A"
 
 
+def _theirs(whose: str, name: str) -> str:
+    """The group's value of ``name`` standing alone: "yours", or "the group's K"."""
+    return "yours" if whose == "your" else f"{whose} {name}"
+
+
 def compare_fields(
     fields: Iterable[Field],
     value: Callable[[str], float | None],
@@ -107,6 +116,7 @@ def compare_fields(
     res: Results,
     revealed: Collection[str] = (),
     reading: Callable[[str], str | None] | None = None,
+    whose: str = "your",
 ) -> list[Comparison]:
     """Each field with ``compare`` beside the value computed the group's way.
 
@@ -114,7 +124,8 @@ def compare_fields(
     or None; ``res``: the session's results; ``revealed``: fields shown before the group
     answered (said in the comparison); reading(key): the group's value as they typed it,
     with its unit ("57 ms"), wherever a text quotes it (default: the number in SI units with
-    the digits it has)."""
+    the digits it has); ``whose``: the group's values as the texts name them, "your" on the
+    group's screen, "the group's" in the report an instructor reads."""
 
     def typed(key: str, si: float, unit: str) -> str:
         said = reading(key) if reading is not None else None
@@ -122,6 +133,9 @@ def compare_fields(
 
     ident = res.identification
     st = res.step if ident is not None else None
+    # true of both of the fit's ways (the whole log, or each rise; the report's "How T was
+    # fitted" says which), and of the numbers the session file keeps, which do not say
+    span = "whole stretches of the run"
     own_T = value("own.T")
     own_K = value("own.K")
     own_w = value("own.omega_step")
@@ -141,12 +155,12 @@ def compare_fields(
                 if own_w is not None and st.u_ss:
                     computed = own_w / st.u_ss
                     how = (
-                        f"your omega_ss / u_ss = {typed('own.omega_step', own_w, 'rad/s')} ÷ "
+                        f"{whose} omega_ss / u_ss = {typed('own.omega_step', own_w, 'rad/s')} ÷ "
                         f"{format_number(st.u_ss)} V"
                     )
                     why = (
                         "The least-squares K is the median over every rising step of the fitted "
-                        "steady speed over u_ss; yours divides one reading of it."
+                        f"steady speed over u_ss; {_theirs(whose, 'K')} is one reading of it over u_ss."
                     )
                 else:
                     computed, lsq = st.K, None
@@ -155,11 +169,11 @@ def compare_fields(
                 how = "the 63 % reading, median over the rising steps"
                 why = (
                     "The 63 % reading takes one sampled point of each rise, which the sampling "
-                    "moves; the least-squares T fits the whole rise with the sampling modelled."
+                    f"moves; the least-squares T fits {span} with the sampling modelled."
                 )
             elif fld.key == "own.J":
                 T_used, how = (
-                    (own_T, f"from your T = {typed('own.T', own_T, 's')}")
+                    (own_T, f"from {whose} T = {typed('own.T', own_T, 's')}")
                     if own_T is not None
                     else (st.T_63, "from the 63 % reading T = " + _ms(st.T_63))
                     if st.T_63 is not None
@@ -171,7 +185,7 @@ def compare_fields(
                         T_used, ident.R, ident.f, ident.k_v, ident.k_a
                     )
                     why = (
-                        f"The least-squares J uses T = {_ms(st.T)} fitted over the whole rise; "
+                        f"The least-squares J uses T = {_ms(st.T)} fitted over {span}; "
                         "J grows in proportion to T, so the two differ as the two T do."
                     )
                 else:
@@ -186,12 +200,12 @@ def compare_fields(
                         format_typed(K_m) if own_K is not None else format_number(K_m),
                     )
                     how = (
-                        "with your T and K"
+                        f"with {whose} T and K"
                         if own_T is not None and own_K is not None
                         else "with "
-                        + ("your T" if own_T is not None else "the 63 % reading T")
+                        + (f"{whose} T" if own_T is not None else "the 63 % reading T")
                         + " and "
-                        + ("your K" if own_K is not None else "the least-squares K")
+                        + (f"{whose} K" if own_K is not None else "the least-squares K")
                     )
                     why = "The least-squares model uses the fitted T and K."
                     if _model(format_number(T_m), format_number(K_m)) == lsq:
@@ -202,7 +216,7 @@ def compare_fields(
                 lsq = st.K * U_TASK15
                 if own_K is not None:
                     computed = own_K * U_TASK15
-                    how = f"5 V × your K = {typed('own.K', own_K, 'rad/s/V')}"
+                    how = f"5 V × {whose} K = {typed('own.K', own_K, 'rad/s/V')}"
                     why = "The least-squares value uses the K fitted over every rising step."
                 else:
                     lsq = None

@@ -16,7 +16,7 @@ from typing import Any
 from minseg_tui import quantities
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.answers import read_formula
-from minseg_tui.lab.content.expr import parse_formula
+from minseg_tui.lab.content.expr import formula_fault, parse_formula
 from minseg_tui.lab.content.steps import FIELDS, Field
 from minseg_tui.quantities import EntryRefused, Parsed, lookup_unit, parse_quantity
 
@@ -134,6 +134,19 @@ def _arithmetic(fld: Field, text: str) -> str | None:
     return None
 
 
+def _arithmetic_fault(text: str) -> str | None:
+    """What keeps ``text`` from being arithmetic on numbers, when it was meant as such (an
+    operator or a parenthesis in it: '(4.05 - 2.05/60 mA' lacks its ')'), in one line
+    (:func:`formula_fault`); None when it is no such thing or no fault is found."""
+    stripped = text.strip()
+    if not re.search(r"[-+*/^×·()]", stripped.lstrip("+-")):
+        return None
+    unit = re.search(r"\s*[A-Za-zµμΩ°][\w/ ·°]*$", stripped)
+    if unit is not None and lookup_unit(unit.group().strip()) is not None:
+        stripped = stripped[: unit.start()]
+    return formula_fault(stripped)
+
+
 def read_quantity(fld: Field, text: str) -> Parsed:
     """``text`` typed in the quantity field ``fld``, read by :func:`parse_quantity`; a text
     it refuses that is arithmetic on numbers (Task 8's ``0.65*0.49``), perhaps with a unit
@@ -154,7 +167,10 @@ def read_quantity(fld: Field, text: str) -> Parsed:
     except InputError:
         worked = _arithmetic(fld, text)
         if worked is None:
-            raise
+            fault = _arithmetic_fault(text)
+            if fault is None:
+                raise
+            raise EntryRefused(fld.label, None, fault) from None
     try:
         return read(worked)
     except EntryRefused as exc:  # said of what was typed, not of the worked-out value

@@ -33,6 +33,36 @@ class Notice:
     message: str
 
 
+I_SS_FALL: float = 0.05
+"""i_ss at a higher voltage this far (relative) below i_ss at a lower one is called a fall.
+The free-running wheel's current rises slowly with speed (k_a i_ss = tau_c + f omega): on
+the virtual board by about 3.7 mA (10 %) from one row to the next, so readings one row off
+fall by that much. Its meter's own noise (0.05 mA and the 0.1 mA digit) made falls of at most
+0.9 % over 200 seeds even with f = 0, where the current does not rise at all: 5 % is well
+above the noise and well below a mix-up."""
+
+
+def falling_currents(rows: Sequence[tuple[float, float, str]]) -> list[Notice]:
+    """A warning, on the row's i_ss field, for each row whose current is clearly below that of
+    a row at a lower voltage (:data:`I_SS_FALL`): a slip, or readings typed one row off.
+    ``rows``: (u_req V, i_ss A, i_ss as the warning writes it)."""
+    out = []
+    ordered = sorted(rows)
+    for k, (level, i_ss, typed) in enumerate(ordered):
+        above = [r for r in ordered[:k] if r[0] < level and i_ss < (1.0 - I_SS_FALL) * r[1]]
+        if not above:
+            continue
+        low_level, _, low_typed = max(above, key=lambda r: r[1])
+        out.append(
+            Notice(
+                f"i_ss@{level:g}",
+                f"i_ss falls from {low_typed} at {low_level:g} V to {typed} at {level:g} V, "
+                "yet it rises a little with the speed: check that each reading is in its row.",
+            )
+        )
+    return out
+
+
 @dataclass(frozen=True)
 class TableRow:
     """One row of the table of Tasks 4-9 (None where not known yet).

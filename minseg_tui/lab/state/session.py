@@ -39,7 +39,7 @@ import contextlib
 import json
 import re
 import threading
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from datetime import UTC, datetime
 from pathlib import Path
@@ -86,8 +86,15 @@ from minseg_tui.lab.saving.store import (
     salvage_session_file,
     take_lock,
 )
+from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.capture import DEFAULT_WINDOW, Capture, capture
-from minseg_tui.lab.state.compare import compare_fields, reveal_keys
+from minseg_tui.lab.state.compare import (
+    ANSWERED_FIRST,
+    Policy,
+    compare_fields,
+    read_policy,
+    reveal_keys,
+)
 from minseg_tui.lab.state.entries import Entry, parsed_values, read_entry, revise
 from minseg_tui.lab.state.results import (
     Comparison,
@@ -98,8 +105,10 @@ from minseg_tui.lab.state.results import (
     check_figures,
     check_run,
     compute,
+    falling_currents,
     response_figures,
 )
+from minseg_tui.lab.state.shown import PolicyRecord, Shown
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import RunLog
@@ -241,8 +250,11 @@ class Session:
             "entries": {},
             "captures": {},
             "runs": [],
+            "shown": {},
+            "shown_since": stamp,
         }
         s = cls(folder, data, lock=lock, clock=clock, readonly=False)
+        s.note_policy(save=False)
         s.save()
         return s
 
@@ -283,6 +295,7 @@ class Session:
             with contextlib.suppress(OSError):
                 (folder / RUNS_DIR).mkdir(exist_ok=True)
             s._recover_runs()
+            s._start_records()
         except BaseException:
             lock.release()
             raise
@@ -351,11 +364,12 @@ class Session:
         """True while a change or a finished run is only in memory."""
         return self._unsaved or bool(self._unkept)
 
-    def save(self) -> bool:
+    def save(self, memo: bool = False) -> bool:
         """Write everything not yet on disk: runs kept since the last save that worked,
         session.json (atomically). True when all is on disk. A failed write never raises: it becomes :attr:`save_problem`, and the
         next change or call of :meth:`save` tries again (call it every few seconds while
-        there is a problem)."""
+        there is a problem). ``memo``: what is saved is a record, not a change of the group's
+        (what they were shown, the lab's policy): the time of the last change stays."""
         self._change()
         if self.readonly:
             raise InputError(str(self.folder), None, "this session was opened read-only")
@@ -368,7 +382,8 @@ class Session:
         self._data["entries"] = {k: e.to_json() for k, e in self._entries.items()}
         self._data["captures"] = {k: c.to_json() for k, c in self._captures.items()}
         self._data["runs"] = [r.to_json() for r in self._runs]
-        self._data["modified"] = self._clock().isoformat(timespec="seconds")
+        if not memo:
+            self._data["modified"] = self._clock().isoformat(timespec="seconds")
         self._take_kept()
         try:
             self._write_file()
@@ -489,6 +504,11 @@ class Session:
     def date(self) -> str:
         """The lab's date (ISO)."""
         return str(self._data["date"])
+
+    @property
+    def created(self) -> str:
+        """When the session was created (ISO time)."""
+        return str(self._data["created"])
 
     @property
     def modified(self) -> str:
@@ -848,18 +868,35 @@ class Session:
             if keys is None or k in keys
             for w in e.warnings
         ]
+        out += [
+            n
+            for n in self.falling_currents()
+            if keys is None or n.source in keys or step_id == "table"
+        ]
         if step_id is None or lab_steps.step(step_id).part in ("Table", "Results", "Step response"):
             res = self.results()
             if res.identification:
                 out += [Notice(f.code, f.message) for f in res.identification.observations]
         return out
 
+    def falling_currents(self) -> list[Notice]:
+        """The Task 5 readings whose current falls as the voltage rises (a warning each, on
+        the field of the higher voltage; :func:`~minseg_tui.lab.state.results.falling_currents`)."""
+        rows = []
+        for level in LEVELS:
+            key = f"i_ss@{level:g}"
+            i_ss = self.value(key)
+            if i_ss is not None:  # both in the field's unit (mA), with the digits typed
+                rows.append((level, i_ss, format_reading(i_ss, FIELDS[key].unit)))
+        return falling_currents(rows)
+
     def comparisons(
-        self, step_id: str | None = None, results: Results | None = None
+        self, step_id: str | None = None, results: Results | None = None, whose: str = "your"
     ) -> list[Comparison]:
         """Each of the group's own readings (fields with ``compare``) beside the value
         computed the group's way and the least-squares one (:func:`lab.compare.compare_fields`);
-        ``results``: those to compare with (default: :meth:`results`)."""
+        ``results``: those to compare with (default: :meth:`results`); ``whose``: how the
+        texts name the group's values ("your" on the screen, "the group's" in the report)."""
         fields = lab_steps.step(step_id).fields if step_id else [f for s in STEPS for f in s.fields]
 
         def text(key: str) -> str | None:
@@ -867,7 +904,7 @@ class Session:
             return e.text if e and e.text.strip() else None
 
         res = self.results() if results is None else results
-        return compare_fields(fields, self.value, text, res, self.revealed(), self.reading)
+        return compare_fields(fields, self.value, text, res, self.revealed(), self.reading, whose)
 
     def answered(self) -> set[str]:
         """The keys of the fields the group has answered (an accepted, non-empty entry)."""
@@ -884,8 +921,117 @@ class Session:
         keys = reveal_keys(lab_steps.step(step_id).fields, self.answered())
         if keys:
             self._data["revealed"] = sorted(self.revealed() | set(keys))
+            self._note(keys, lab_shown.REVEAL)
             self._changed()
         return keys
+
+    # -- what the group was shown, and the lab's policy ----------------------------------------
+
+    def shown(self) -> dict[str, Shown]:
+        """The first time each computed value of Tasks 11-15 was on the group's screen, as
+        recorded since :attr:`shown_since` (a value not in it was not shown since then)."""
+        out: dict[str, Shown] = {}
+        got = self._data.get("shown")
+        for key, d in (got if isinstance(got, dict) else {}).items():
+            with contextlib.suppress(KeyError, TypeError, AttributeError):
+                out[key] = Shown.from_json(d)
+        return out
+
+    @property
+    def shown_since(self) -> str | None:
+        """Since when (ISO time) the session records what the group was shown and the lab's
+        policy: its creation, or its first opening by a program that records them (None: a
+        session of an older program, never opened since to be written)."""
+        since = self._data.get("shown_since")
+        return since if isinstance(since, str) and since else None
+
+    def note_shown(self, keys: Iterable[str], by: str) -> list[str]:
+        """The group's screen now shows the computed values of fields ``keys`` (of Tasks
+        11-15): record the first showing of each, with the group's answer then, if any (saved
+        at once; the time of the last change stays). ``by``: ``"results"`` (Tasks 11-15 drew
+        it: after the answer, by the lab's policy or by a reveal, whichever let it be shown)
+        or one of :data:`minseg_tui.lab.state.shown.BY`. The fields newly recorded; none on a
+        read-only session or a snapshot."""
+        if self.frozen or self.readonly:
+            return []
+        rule = self.note_policy()
+        if by == "results":
+            revealed = self.revealed()
+            new = [k for k in keys if k not in self.shown()]
+            for how, group in (
+                (lab_shown.REVEAL, [k for k in new if k in revealed]),
+                (
+                    lab_shown.POLICY,
+                    [k for k in new if k not in revealed and not rule.answers_first],
+                ),
+                (
+                    lab_shown.AFTER_ANSWER,
+                    [k for k in new if k not in revealed and rule.answers_first],
+                ),
+            ):
+                if how == lab_shown.AFTER_ANSWER:  # only an answer lets it be shown so
+                    group = [k for k in group if k in self.answered()]
+                self._note(group, how)
+            noted = [k for k in new if k in self.shown()]
+        else:
+            noted = self._note(keys, by)
+        if noted:
+            self.save(memo=True)
+        return noted
+
+    def _note(self, keys: Iterable[str], by: str) -> list[str]:
+        """Record the first showing of ``keys`` by ``by`` in the session's data (not saved)."""
+        got = self._data.get("shown")
+        known: dict[str, Any] = got if isinstance(got, dict) else {}
+        stamp = self._clock().isoformat(timespec="seconds")
+        noted = []
+        for key in keys:
+            if key not in ANSWERED_FIRST or key in known:
+                continue
+            e = self._entries.get(key)
+            answer = e.text.strip() if e is not None and e.ok and e.text.strip() else None
+            known[key] = Shown(stamp, by, answer).to_json()
+            noted.append(key)
+        self._data["shown"] = known
+        return noted
+
+    def policies(self) -> list[PolicyRecord]:
+        """The lab's policy as the session recorded it, oldest first: when it was opened, and
+        each change since (empty: a session of an older program)."""
+        out: list[PolicyRecord] = []
+        got = self._data.get("policy")
+        for d in got if isinstance(got, list) else []:
+            with contextlib.suppress(KeyError, TypeError, AttributeError):
+                out.append(PolicyRecord.from_json(d))
+        return out
+
+    def note_policy(self, save: bool = True) -> Policy:
+        """The lab's policy now (``lab.toml`` in the folder that holds the session), recorded
+        when it is not the one recorded last (saved at once unless ``save`` is False; the
+        time of the last change stays). Nothing is recorded on a read-only session."""
+        rule = read_policy(self.folder.parent)
+        if self.frozen or self.readonly:
+            return rule
+        now = PolicyRecord(
+            self._clock().isoformat(timespec="seconds"), rule.answers_first, rule.problem, rule.file
+        )
+        got = self.policies()
+        if not got or not got[-1].same_rule(now):
+            self._data["policy"] = [*(p.to_json() for p in got), now.to_json()]
+            if save:
+                self.save(memo=True)
+        return rule
+
+    def _start_records(self) -> None:
+        """At opening: a session of an older program begins to record what the group is shown
+        from now on; the lab's policy is recorded when it is not the one recorded last."""
+        if self.shown_since is None:
+            self._data["shown_since"] = self._clock().isoformat(timespec="seconds")
+            self._data.setdefault("shown", {})
+            self.note_policy(save=False)
+            self.save(memo=True)
+        else:
+            self.note_policy()
 
     # -- runs ----------------------------------------------------------------------------------
 

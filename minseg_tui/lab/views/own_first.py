@@ -14,11 +14,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from datetime import datetime, timedelta
 
 from minseg_tui.lab.content.steps import STEPS, RunPlan
 from minseg_tui.lab.state import compare as lab_compare
+from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.shown import PolicyRecord
 from minseg_tui.lab.views.session import REVEAL_KEY
 from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
@@ -30,6 +33,12 @@ from minseg_tui.quantities import (
     format_reading,
 )
 
+GROUPS = "the group's"
+"""How the report's texts name the group's values (the screen says "your" to the group)."""
+
+TOLD = "the program told the group:"
+"""Before a message the group was shown (a refusal speaks to them): quoted as said."""
+
 NOT_ANSWERED = "not answered"
 """The group's cell of a value the group has not entered."""
 
@@ -40,13 +49,21 @@ SHOWN_IN_TABLE = (
     "shown in the program's Task 4-9 table from the start (the table computes it; the "
     "group's own value is optional)"
 )
-SHOWN_AT_ONCE = (
-    f"shown from the start: the lab's policy ({lab_compare.POLICY_FILE}: answers_first = "
-    "false) shows the computed values at once"
-)
 SHOWN_AFTER = "after the group answered"
-NOT_SHOWN = "hidden from the group on Tasks 11-15: not answered"
+NOT_SHOWN = "not shown on the group's screen in this session"
 REVEALED = f"{lab_compare.REVEALED_EARLY} (with {REVEAL_KEY}, the lab assistant's key)"
+NOT_KNOWN = (
+    "not known: the session was begun with an older program, which did not record when the "
+    "computed values were shown"
+)
+_BY: dict[str, str] = {
+    lab_shown.REVEAL: f"with {REVEAL_KEY}, the lab assistant's key",
+    lab_shown.POLICY: f"at once, by the lab's policy ({lab_compare.POLICY_FILE}: answers_first = "
+    "false)",
+    lab_shown.MODEL_CHECK: "by the model check (it writes the fitted T and K)",
+    lab_shown.AFTER_ANSWER: "on Tasks 11-15",
+}
+"""What put a computed value on the group's screen, in words."""
 
 TASK: dict[str, str] = {
     "own.k_v": "k_v (Task 7)",
@@ -109,19 +126,118 @@ class OwnRow:
     why: str = ""
 
 
+def when(iso: str) -> str:
+    """An ISO time as a grader reads it: "2026-11-22 10:00:12 UTC" (as it stands when it
+    cannot be read)."""
+    try:
+        t = datetime.fromisoformat(iso)
+    except ValueError:
+        return iso
+    zone = " UTC" if t.utcoffset() == timedelta(0) else t.strftime(" %z") if t.tzinfo else ""
+    return t.strftime("%Y-%m-%d %H:%M:%S") + zone
+
+
+DAMAGED = "not known: the session file is damaged, and its record of this may be what was lost"
+
+
+def _not_known(session: Session) -> str:
+    """Why the report cannot say when a value was shown."""
+    return DAMAGED if session.damaged else NOT_KNOWN
+
+
+def _answered(session: Session, key: str) -> str:
+    e = session.entry(key)
+    if key not in session.answered() or e is None:
+        return "not answered"
+    return f"answered {when(e.at)}" if e.at else "answered"
+
+
 def shown(session: Session, key: str) -> str:
-    """When the group was shown the computed value of field ``key``, in words a grader
-    reads: from the start in the table (Tasks 6-9), or for Tasks 11-15 after they answered,
-    revealed before (by a lab assistant), at once by the lab's policy, or not yet (hidden)."""
+    """When the group was first shown the computed value of field ``key``, in words a grader
+    reads, and only as far as the session recorded it: from the start in the table (Tasks
+    6-9); for Tasks 11-15 after the group answered (with its answer then, and a later change
+    of it), revealed before answering (by a lab assistant, the lab's policy or the model
+    check), not shown, or not known (a session of an older program)."""
     if key not in lab_compare.ANSWERED_FIRST:
         return SHOWN_IN_TABLE
-    if key in session.revealed():
-        return REVEALED
-    if not lab_compare.read_policy(session.folder.parent).answers_first:
-        return SHOWN_AT_ONCE
-    if key in session.answered():
-        return SHOWN_AFTER
-    return NOT_SHOWN
+    since = session.shown_since
+    rec = session.shown().get(key)
+    if since is None or (rec is None and key in session.revealed()):
+        return REVEALED if key in session.revealed() else _not_known(session)
+    if rec is None and session.damaged:  # its record may be what was left out
+        return _not_known(session)
+    late = (
+        ""
+        if since <= session.created
+        else f" (recorded since {when(since)}; not known before: the session was begun with "
+        "an older program)"
+    )
+    if rec is None:
+        return f"{NOT_SHOWN} ({_answered(session, key)}){late}"
+    by = _BY.get(rec.by, rec.by)
+    if rec.answer is None:
+        return (
+            f"{lab_compare.REVEALED_EARLY}: shown {by}, {when(rec.at)}; {_answered(session, key)}"
+        )
+    if late:  # an unrecorded showing may have come before the answer
+        return (
+            f"not known whether before or after answering: first recorded {by}, "
+            f"{when(rec.at)}, with the group's answer {rec.answer!r} in place{late}"
+        )
+    e = session.entry(key)
+    now = e.text.strip() if e is not None and e.ok else ""
+    changed = (
+        f"; the answer was changed after that, to {now!r}, {when(e.at)}"
+        if e is not None and now and now != rec.answer
+        else ""
+    )
+    return f"{SHOWN_AFTER} ({rec.answer!r}): shown {by}, {when(rec.at)}{changed}"
+
+
+def _rule(p: PolicyRecord) -> str:
+    """A recorded policy in words."""
+    if p.problem:
+        return p.problem
+    if not p.file:
+        return f"answers first (no {lab_compare.POLICY_FILE}: the default)"
+    if p.answers_first:
+        return f"answers first ({lab_compare.POLICY_FILE}: answers_first = true)"
+    return f"computed values at once ({lab_compare.POLICY_FILE}: answers_first = false)"
+
+
+def policy_in_force(session: Session) -> tuple[str, tuple[str, ...]]:
+    """The lab's policy while the group worked, as the session recorded it (one sentence),
+    and the warnings a grader needs: the file now says otherwise, or nothing was recorded
+    (a session of an older program), or the file could not be read."""
+    got = session.policies()
+    now = lab_compare.read_policy(session.folder.parent)
+    current = _rule(PolicyRecord("", now.answers_first, now.problem, now.file))
+    if not got:
+        why = (
+            "the session file is damaged, and its record of the policy may be what was lost"
+            if session.damaged
+            else "the session was begun with an older program, which did not record it"
+        )
+        return (
+            f"The lab's policy while the group worked is not known: {why} "
+            f"({lab_compare.POLICY_FILE} now says: {current}).",
+            (
+                f"the lab's policy is not recorded in this session; {lab_compare.POLICY_FILE} "
+                "read now may not be what was in force while the group worked",
+            ),
+        )
+    said = "; ".join(f"{_rule(p)}, from {when(p.at)}" for p in got)
+    warnings = [p.problem for p in got if p.problem]
+    last = got[-1]
+    if not last.same_rule(PolicyRecord("", now.answers_first, now.problem, now.file)):
+        warnings.append(
+            f"{lab_compare.POLICY_FILE} now says: {current}; while the group worked it was: "
+            f"{_rule(last)} (recorded {when(last.at)}). The report follows what was recorded."
+        )
+    return (
+        f"The lab's policy while the group worked, as the session recorded it: {said}.",
+        tuple(dict.fromkeys(warnings)),
+    )
 
 
 def _value(v: float | str | None, unit: str) -> str | None:
@@ -147,7 +263,7 @@ def _own(session: Session, c: Comparison, unit: str) -> str:
     if e is None or not e.text.strip():
         return NOT_ANSWERED
     if not e.ok:
-        return f"{NOT_ANSWERED} ({e.text.strip()!r} was refused: {e.message})"
+        return f"{NOT_ANSWERED} ({e.text.strip()!r} was refused; {TOLD} {e.message})"
     if isinstance(c.own, float):
         return session.reading(c.key) or format_reading(c.own, unit)
     return e.text.strip()
@@ -180,7 +296,7 @@ def table_rows(session: Session, results: Results | None = None) -> tuple[OwnRow
     """Tasks 7-9: k_v, k_a and f, the group's value first (:data:`TABLE_HEADER`);
     ``results``: those to compare with (default: the session's own)."""
     out = []
-    for c in session.comparisons(TABLE_STEP, results):
+    for c in session.comparisons(TABLE_STEP, results, GROUPS):
         unit = _unit(session, c)
         own = _own(session, c, unit)
         value = _value(c.computed, unit)
@@ -246,7 +362,7 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
     for step in STEPS:
         if step.part != "Results":
             continue
-        for c in session.comparisons(step.id, res):
+        for c in session.comparisons(step.id, res, GROUPS):
             unit = _unit(session, c)
             own = _own(session, c, unit)
             computed = _value(c.computed, unit)
@@ -304,9 +420,12 @@ __all__ = [
     "STEP_HEADER",
     "TABLE_HEADER",
     "TASK",
+    "TOLD",
     "OwnRow",
+    "policy_in_force",
     "run_used",
     "shown",
     "step_rows",
     "table_rows",
+    "when",
 ]

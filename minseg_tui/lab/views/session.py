@@ -15,7 +15,7 @@ it for one thread at a time.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -28,6 +28,7 @@ from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
+from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import read_entry
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
@@ -45,8 +46,8 @@ from minseg_tui.quantities import (
     format_interval,
     format_number,
     format_quantity,
-    format_reading,
     format_spread,
+    format_typed,
     format_value,
 )
 
@@ -187,9 +188,15 @@ def _verdict(e: Entry, feedback: str) -> EntryView:
 
 
 def entry(session: Session, key: str) -> EntryView | None:
-    """The verdict on the stored entry for field ``key`` (None when nothing was entered)."""
+    """The verdict on the stored entry for field ``key`` (None when nothing was entered),
+    with the warnings its row raises beside the others (a current that falls as the voltage
+    rises, on Task 5)."""
     e = session.entry(key)
-    return None if e is None else _verdict(e, _feedback(session, key))
+    if e is None:
+        return None
+    view = _verdict(e, _feedback(session, key))
+    beside = tuple(n.message for n in session.falling_currents() if n.source == key)
+    return replace(view, warnings=view.warnings + beside) if beside and view.ok else view
 
 
 def typed(session: Session, key: str) -> str:
@@ -338,22 +345,75 @@ class TableView:
     compare: tuple[tuple[str, str, str], ...] = ()
 
 
+WORKED_DIGITS: int = 10
+"""The most significant digits of a number in a formula worked out with the row's numbers
+(:func:`_worked_inputs`)."""
+
+Written = tuple[float, int, Callable[[float, int], str]]
+"""A number of a worked formula: its value, the fewest digits it is written with, and how
+(:func:`format_number`: 0.0280 A, its zeros kept; :func:`format_typed`: R as typed)."""
+
+
+def _worked_inputs(
+    inputs: Sequence[Written], work: Callable[[Sequence[float]], float], shown: str
+) -> tuple[list[str], str]:
+    """The ``inputs`` of a formula written so that ``work`` on the numbers as written gives
+    the result as it is ``shown`` (:func:`format_number`), and '=': each with its fewest
+    digits, and a number those do not write exactly (a captured omega_ss, k_a) with one more
+    digit at a time until the result follows; '≈' when none up to :data:`WORKED_DIGITS`
+    does. Walk 4: omega_ss captured as 3.8247 rad/s was shown 3.82, and the arithmetic on the
+    line gave 0.4953 beside the 0.4947 printed."""
+
+    def write(value: float, fewest: int, how: Callable[[float, int], str], digits: int) -> str:
+        text = how(value, fewest)
+        if math.isclose(float(text), value, rel_tol=1e-12):
+            return text
+        return how(value, max(fewest, digits))
+
+    texts: list[str] = []
+    for digits in range(3, WORKED_DIGITS + 1):
+        texts = [write(v, fewest, how, digits) for v, fewest, how in inputs]
+        if format_number(work([float(t) for t in texts])) == shown:
+            return texts, "="
+    return texts, "≈"
+
+
 def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> str:
     """The formula of a computed cell of row ``r`` with the row's numbers in it (R in ohm,
-    k_a in N m/A, the final one). R stands as the group typed it: 5,3 is "5.3 Ω", not
-    "5.30 Ω" (:func:`minseg_tui.quantities.format_reading`)."""
+    i_ss in A, k_a in N m/A, the final one), each with the digits the result needs: worked
+    out from the numbers shown, the line gives the result it prints (:func:`_worked_inputs`)."""
     if name == "k_v" and r.k_v is not None and r.u_ss is not None and r.i_ss is not None:
         if r.omega_ss is not None and R is not None:
+            shown = _num(r.k_v)
+            (u, res, i, w), eq = _worked_inputs(
+                (
+                    (r.u_ss, 3, format_number),
+                    (R, DIGITS, format_typed),  # as typed: 5,3 is 5.3 Ω, never 5.30 Ω
+                    (r.i_ss, 3, format_number),
+                    (r.omega_ss, 3, format_number),
+                ),
+                lambda x: (x[0] - x[1] * x[2]) / x[3],
+                shown,
+            )
             return (
-                f"k_v = (u_ss - R i_ss) / omega_ss = ({_num(r.u_ss, 3)} V - {format_reading(R, 'Ω')} × "
-                f"{_num(r.i_ss, 3)} A) / {_num(r.omega_ss, 3)} rad/s = {_num(r.k_v)} V s/rad"
+                f"k_v = (u_ss - R i_ss) / omega_ss = ({u} V - {res} Ω × {i} A) / {w} rad/s "
+                f"{eq} {shown} V s/rad"
             )
     if name == "f" and r.f is not None and r.i_ss is not None and r.omega_ss is not None:
         if k_a is not None:
+            shown = _num(r.f * 1e3)
+            (ka, i, w), eq = _worked_inputs(
+                (
+                    (k_a, DIGITS, format_number),
+                    (r.i_ss, 3, format_number),
+                    (r.omega_ss, 3, format_number),
+                ),
+                lambda x: x[0] * x[1] / x[2] * 1e3,
+                shown,
+            )
             return (
-                f"f = k_a i_ss / omega_ss = {_num(k_a)} N m/A × {_num(r.i_ss, 3)} A / "
-                f"{_num(r.omega_ss, 3)} rad/s = {_num(r.f * 1e3)} mN m s/rad "
-                "(k_a = 0.65 × median k_v)"
+                f"f = k_a i_ss / omega_ss = {ka} N m/A × {i} A / {w} rad/s {eq} {shown} "
+                "mN m s/rad (k_a = 0.65 × median k_v)"
             )
     return _FORMULAS[name]
 
@@ -661,6 +721,9 @@ class ResultsView:
     hidden: frozenset[str] = frozenset()
     """Fields of Tasks 11-15 whose computed value the group has not seen yet: the plot
     leaves their readings out too (own.omega_step: the steady speed; own.T: the crossing)."""
+    shows: frozenset[str] = frozenset()
+    """Fields of Tasks 11-15 whose computed value this view puts on the screen (the session
+    records the first time: :func:`note_drawn`)."""
 
 
 def results(session: Session, step_id: str) -> ResultsView:
@@ -677,6 +740,7 @@ def results(session: Session, step_id: str) -> ResultsView:
     ident = res.identification
     lines: list[str] = []
     rises: tuple[RiseZoom, ...] = ()
+    shows: frozenset[str] = frozenset()
     if ident is not None and ident.step is not None:
         st = ident.step
         conceal = hidden(session)
@@ -723,6 +787,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         ]
         ts = log.ts if log is not None else 0.0
         rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
+        shows = frozenset(k for k in lab_compare.ANSWERED_FIRST if k not in conceal)
     problems = list(res.problems)
     rule = policy(session)
     if rule.problem:
@@ -743,6 +808,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         compare,
         tuple(problems),
         frozenset(hidden(session)),
+        shows,
     )
 
 
@@ -789,6 +855,9 @@ class CheckView:
     close_title: str = ""
     first_order: str = ""
     two_fits: str = ""
+    shows: frozenset[str] = frozenset()
+    """Fields of Tasks 11-15 whose computed value the check puts on the screen: T and K of the
+    first-order model it fitted, and so the model (none without a result)."""
 
 
 _stem = check_words.stem
@@ -891,7 +960,22 @@ def check(session: Session) -> CheckView:
         first_order="first-order model the check fitted to this run and simulated: "
         + _params(r.baseline.params),
         two_fits=two_fits,
+        shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),
     )
+
+
+def note_drawn(session: Session, view: object) -> list[str]:
+    """A view was drawn on the group's screen: record in ``session`` (the live one, not a
+    snapshot) the computed values of Tasks 11-15 it showed for the first time, and by what:
+    Tasks 11-15 (:class:`ResultsView`), Task 10's runs with their T readings (a tuple of
+    :class:`RunView`) or the model check (:class:`CheckView`). The fields newly recorded."""
+    if isinstance(view, ResultsView):
+        return session.note_shown(view.shows, "results")
+    if isinstance(view, CheckView):
+        return session.note_shown(view.shows, lab_shown.MODEL_CHECK)
+    if isinstance(view, tuple) and any(isinstance(v, RunView) and v.T_ls is not None for v in view):
+        return session.note_shown(("own.T",), "results")
+    return []
 
 
 # -- the run in use -----------------------------------------------------------------------------

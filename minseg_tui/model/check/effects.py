@@ -278,7 +278,7 @@ VELOCITY_FILTER = Candidate(
     words=filter_words,
     label="averaged speed (velocity filter)",
     everyday=(
-        "the speed you see is an average over several samples, which turns every jump into a ramp"
+        "the logged speed is an average over several samples, which turns every jump into a ramp"
     ),
     short="an averaged speed",
     needs=ev.NEEDS_RISE,

@@ -66,7 +66,7 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
             out.append(
                 Observation(
                     "i_ss_high",
-                    f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says you are probably measuring the wrong thing or the meter is in the wrong mode.",
+                    f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says the meter is probably measuring the wrong thing or is in the wrong mode.",
                 )
             )
         if r.omega_ss / r.u_ss > RPM_GAIN and r.omega_ss * RPM / r.u_ss <= RPM_GAIN:

@@ -658,14 +658,16 @@ class LabScreen(StatusScreen):
         if not worker.is_cancelled:
             self.app.call_from_thread(self._deliver, panel, view)
 
-    @staticmethod
-    def _deliver(panel: ViewPanel[V], view: V) -> None:
+    def _deliver(self, panel: ViewPanel[V], view: V) -> None:
         if panel.is_attached:  # else the step changed while the worker ran
             panel.receive(view)
+            if not self.readonly:  # the report says when the group first saw each value
+                with self.session as s:
+                    views.note_drawn(s, view)
 
     def _on_lab_changed(self, _: None) -> None:
         """The session changed: the navigator's marks, the entries the lab changed (a
-        capture), and the panel's view."""
+        capture) or warns about anew, and the panel's view."""
         self.refresh_marks()
         pane = self.pane
         with self.session as s:
@@ -674,6 +676,8 @@ class LabScreen(StatusScreen):
                 row.held = views.held(s, row.field.key)
                 if row.sent is not None and text != row.sent:
                     row.refresh_from_lab(text, views.entry(s, row.field.key))
+                elif (result := views.entry(s, row.field.key)) is not None:
+                    row.update_result(result)  # a warning another row raised or cleared
         panel = pane.panel
         if isinstance(panel, ViewPanel):
             self._load(panel)

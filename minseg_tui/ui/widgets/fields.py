@@ -89,9 +89,6 @@ EDITING_KEYS: dict[str, str] = {
 screen's (it stores the entry and moves on)."""
 
 
-DESELECTING_KEYS = frozenset({"backspace", "delete", "left", "right", "home", "end"})
-"""Keys that edit a refused text by one character (or move in it) rather than replace it."""
-
 Restoring = Literal["held", "undo", "redo"]
 """What a key in an entry brings back: the text the lab holds (Escape), the answer stored
 before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
@@ -107,17 +104,17 @@ class EntryBox(Input, can_focus=False):
     and hands it the keys typed while its row is the form's current one, in the order typed;
     it then shows as focused (:meth:`show_current`), cursor and selection included.
 
-    A refused text stays selected (:meth:`hold_refused`): the next value typed replaces it,
-    while Backspace, Delete, the arrows and Home/End edit it one character at a time. Escape
-    brings back the text the lab holds for the row and drops a refused text over it; Ctrl+Z
-    the answer stored before it, Ctrl+Y the one Ctrl+Z took back (the form asks the lab)."""
+    A refused text stays as typed, nothing selected, the cursor at its end
+    (:meth:`hold_refused`): the missing ')' typed next goes on after it, Backspace deletes
+    one character (walk 4: a refused text left selected was replaced by the ')' typed to
+    mend it). Escape brings back the text the lab holds for the row and drops a refused text
+    over it; Ctrl+Z the answer stored before it, Ctrl+Y the one Ctrl+Z took back (the form
+    asks the lab)."""
 
     def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
         super().__init__(
             value=value, classes="field-input", placeholder=placeholder, disabled=disabled
         )
-        self._refused = False
-        """The whole refused text is selected (:meth:`hold_refused`) and no key acted since."""
 
     def show_current(self, current: bool) -> None:
         """Shown as the box typing goes into (its row is the focused form's current one), or
@@ -132,15 +129,13 @@ class EntryBox(Input, can_focus=False):
         return self
 
     def hold_refused(self) -> None:
-        """The text was refused: select it whole, so that the next value typed replaces it
-        (not appended to it), while an editing key edits it by one character."""
-        self.select_all()
-        self._refused = True
+        """The text was refused: it stays to be mended, nothing selected, the cursor at its
+        end (where a missing ')' or operand goes)."""
+        self.cursor_position = len(self.value)
 
     def type_text(self, text: str) -> None:
         """Text typed (a character) or pasted: it replaces what is selected, else goes in at
         the cursor."""
-        self._refused = False
         start, end = self.selection
         self.replace(text, start, end)
 
@@ -150,10 +145,6 @@ class EntryBox(Input, can_focus=False):
         action = EDITING_KEYS.get(key)
         if action is None:
             return False
-        if self._refused:
-            self._refused = False
-            if key in DESELECTING_KEYS:  # edit the refused text, from its end
-                self.cursor_position = len(self.value)
         await self.run_action(action)
         return True
 
@@ -167,8 +158,8 @@ class FieldRow(Vertical):
 
     Typing never lands on the end of a value the group comes back to: focusing the box
     selects what it holds, so the next keys replace it (an arrow key or Home/End keeps it to
-    edit). After Enter the cursor stands at the end of an accepted value, nothing selected
-    (a digit typed next is appended); a refused text stays selected."""
+    edit). After Enter the cursor stands at the end of the value, accepted or refused,
+    nothing selected (a digit or a missing ')' typed next is appended)."""
 
     class Reflowed(Message):
         """The row grew or shrank once laid out (its hint moved under the box or back): the
@@ -200,6 +191,7 @@ class FieldRow(Vertical):
         """The text the lab holds in effect for this row (an accepted answer, not a refused
         attempt over it): what Escape brings back. The screen keeps it up to date."""
         self._result = result
+        self._shown: EntryView | None = None
         self._sent: str | None = text
         self._chosen = tuple(chosen)
         self._readonly = readonly
@@ -344,8 +336,7 @@ class FieldRow(Vertical):
     def submitted(self) -> str | None:
         """Enter (the screen handles it): the text to store, sent again even if unchanged;
         the cursor at its end, nothing selected, so a key typed if the focus stays here goes
-        on after it (a refused text is selected again by :meth:`show_result`). None on a
-        list of answers."""
+        on after it. None on a list of answers."""
         if self.field.options:
             return None
         text = self.input.value
@@ -397,8 +388,16 @@ class FieldRow(Vertical):
         if result is not None:
             self.show_result(result)
 
+    def update_result(self, result: EntryView) -> None:
+        """The lab's verdict on this row after a change elsewhere (a reading in another row
+        of Task 5 makes a current fall as the voltage rises): shown if it is not the one
+        shown already."""
+        if result != self._shown:
+            self.show_result(result)
+
     def show_result(self, result: EntryView) -> None:
         """Show the lab's verdict: a refusal, the warnings, or a checker's feedback."""
+        self._shown = result
         parts = [("✗ " if not result.ok else "") + result.message] if result.message else []
         parts += [f"! {w}" for w in result.warnings]
         if result.feedback:
@@ -409,11 +408,12 @@ class FieldRow(Vertical):
         msgs.first(Prose).update("\n".join(parts))
         self.set_class(not result.ok, "refused")
         self.set_class(bool(result.warnings), "warned")
-        if not result.ok and self.query(EntryBox):
-            # a refused text stays selected: a new value typed replaces it, while Backspace
-            # and the arrows edit it by one character; and the whole refusal in view
+        if (not result.ok or result.warnings) and self.query(EntryBox):
+            # a refused text stays to be mended, the cursor at its end, nothing selected;
+            # and the whole refusal or warning in view
             box = self.input
-            box.hold_refused()
+            if not result.ok:
+                box.hold_refused()
             if box.has_focus:
                 self.call_after_refresh(self.bring_into_view)
 

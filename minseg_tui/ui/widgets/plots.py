@@ -245,6 +245,7 @@ def _signature(traces: Sequence[Trace]) -> tuple[object, ...]:
             tr.marker,
             tr.colour,
             tr.steps,
+            tr.right,
         )
         for tr in traces
     )
@@ -263,10 +264,6 @@ class Canvas(PlotextPlot):
         self.xlim: tuple[float, float] | None = None
         self._drawn: Hashable = None
         """What :meth:`draw` last handed plotext (the key of its build in :data:`_built`)."""
-        self.columns: tuple[int, int] | None = None
-        """The first and the last column of the plot's data area in the widget, as last
-        drawn (None: not drawn yet); plotext puts x on column first + round((last - first)
-        (x - lo) / (hi - lo))."""
 
     def on_mount(self) -> None:
         super().on_mount()
@@ -282,7 +279,10 @@ class Canvas(PlotextPlot):
         self._xlabel = xlabel
 
     def draw(self) -> None:
-        self._drawn = (
+        """Hand plotext what :attr:`traces` draw, at the widget's size, and refresh; nothing
+        when that is what it was last handed (a view delivered again after each entry typed,
+        a redraw of a stream that brought nothing new): no repaint for the same picture."""
+        key = (
             self._title,
             self._xlabel,
             self._ylabel,
@@ -290,6 +290,9 @@ class Canvas(PlotextPlot):
             self.size,
             _signature(self.traces),
         )
+        if key == self._drawn:
+            return
+        self._drawn = key
         plt = self.plt
         plt.clear_data()
         plt.clear_figure()
@@ -373,7 +376,7 @@ class Canvas(PlotextPlot):
     def on_resize(self) -> None:
         self.draw()  # the y ticks sit on rows
 
-    def render(self) -> Text:
+    def _build(self) -> Text:
         """plotext's build of what :meth:`draw` handed it, at the widget's size (kept)."""
         key = (self._drawn, self.size, self.app.theme, self.theme)
         text = _built.get(key)
@@ -385,8 +388,20 @@ class Canvas(PlotextPlot):
                 _built.popitem(last=False)
         else:
             _built.move_to_end(key)
-        self.columns = data_columns(text.plain)
-        return text.copy()
+        return text
+
+    def render(self) -> Text:
+        return self._build().copy()
+
+    @property
+    def columns(self) -> tuple[int, int] | None:
+        """The first and the last column of the plot's data area in the widget, as drawn
+        now (None: not laid out yet); plotext puts x on column first + round((last - first)
+        (x - lo) / (hi - lo)). Read off the build the screen shows (:data:`_built`), not
+        left behind by the last paint: a paint may come later, or, headless, never."""
+        if self._drawn is None or not self.size.area:
+            return None
+        return data_columns(self._build().plain)
 
 
 def data_columns(plain: str) -> tuple[int, int] | None:
