@@ -23,7 +23,14 @@ from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.store import atomic_write_text, os_reason
 from minseg_tui.lab.views import classread
-from minseg_tui.lab.views.classview import QUANTITIES, ClassView, members, own_cell
+from minseg_tui.lab.views.classview import (
+    MARKED,
+    NOT_MARKED,
+    QUANTITIES,
+    ClassView,
+    members,
+    own_cell,
+)
 from minseg_tui.quantities import format_number
 
 
@@ -96,6 +103,7 @@ def text(view: ClassView) -> str:
         lines += [f"  - lacks: {x}" for x in g.lacks]
     if not any(g.flags for g in view.groups):
         lines += ["", "Nothing stands out."]
+    lines += ["", f"'!': {MARKED}. {NOT_MARKED}"]
     return "\n".join(lines)
 
 

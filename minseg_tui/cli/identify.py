@@ -70,7 +70,7 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(
             args.step or args.table,
             None,
-            f"expected a run log whose rising steps can be fitted; the fit failed ({exc})",
+            f"expected a run log whose rises can be fitted; the fit failed ({exc})",
         ) from None
     if args.json:
         print_json(result.to_json())
@@ -145,7 +145,7 @@ def render(result: Identification) -> str:
             )
         out += [
             "",
-            f"Run log: {len(s.rises)} rising step(s); angle from {fit.angle_source}, time from {fit.time_source}",
+            f"Run log: {len(s.rises)} rise(s); angle from {fit.angle_source}, time from {fit.time_source}",
             f"omega_ss = {_g(s.omega_ss)} rad/s (fitted), u_ss = {_read(s.u_ss) if s.u_ss_how == 'row' else _g(s.u_ss)} V ({how})",
             f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V "
             + (
@@ -155,7 +155,7 @@ def render(result: Identification) -> str:
                 if s.K_determined
                 else f"(95 % interval: {NOT_DETERMINED}; Task 11)"
             ),
-            f"T, 63 % reading      = {t63} (Task 12, median over the rising steps)",
+            f"T, 63 % reading      = {t63} (Task 12, median over the rises)",
             f"T, least squares     = {_g(s.T * 1e3)} ms{on_bound}, {interval}",
             *_wrap(
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "

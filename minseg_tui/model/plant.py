@@ -390,7 +390,7 @@ def record(
 def square_wave(
     low: float, high: float, half_period: int, periods: int, lead: int = 0, tail: int = 0
 ) -> NDArray[np.float64]:
-    """Commands per sample for a board-timed step sequence, in V.
+    """Commands per sample for a board-timed square wave, in V.
 
     ``lead`` samples at ``low``, then ``periods`` times ``half_period`` samples at ``high``
     and ``half_period`` at ``low``, then ``tail`` more samples at ``low``.

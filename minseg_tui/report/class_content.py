@@ -16,6 +16,8 @@ import math
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views.classview import (
     JUDGED,
+    MARKED,
+    NOT_MARKED,
     QUANTITIES,
     THRESHOLD,
     ClassView,
@@ -148,6 +150,7 @@ def build(view: ClassView) -> Report:
             "What stands out",
             [
                 stand_out(view) or "Nothing stands out.",
+                f"A group is listed here for {MARKED} (the '!' of the class view). " + NOT_MARKED,
                 f"A value stands out when it lies more than {THRESHOLD:g} robust standard "
                 "deviations (1.4826 times the median absolute deviation) from the class "
                 "median: one group's typo moves neither, so it cannot hide another's. The "

@@ -10,11 +10,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from datetime import datetime, timedelta
 
 import numpy as np
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import check_words, own_first
 from minseg_tui.lab.views.session import rise_zoom
@@ -168,6 +170,29 @@ def _board_section(session: Session) -> Section:
     return sec
 
 
+CAPTURE_CLOCK = (
+    "Capture window: the seconds of the live speed that omega_ss is the mean of, on the "
+    "board's clock, which starts near 0 s when the program connects to the board (the board "
+    "restarts then, so a session resumed later starts again near 0 s); the time of day beside "
+    "it is when the group captured it."
+)
+"""What the table's capture windows count from (said under the table)."""
+
+
+def _window(window: tuple[float, float], entry: Entry | None) -> str:
+    """A capture's window on the board's clock (s) and, when the entry holding it says, the
+    time of day it was captured: "222–224 s, captured 10:03:12 UTC"."""
+    said = f"{format_number(window[0], 3)}–{format_number(window[1], 3)} s"
+    try:
+        at = datetime.fromisoformat(entry.at) if entry is not None and entry.at else None
+    except ValueError:
+        at = None
+    if at is None:
+        return said
+    zone = " UTC" if at.utcoffset() == timedelta(0) else at.strftime(" %z") if at.tzinfo else ""
+    return f"{said}, captured {at.strftime('%H:%M:%S')}{zone}"
+
+
 def _table_section(session: Session) -> Section:
     res = session.results()
     rows = []
@@ -176,7 +201,7 @@ def _table_section(session: Session) -> Section:
         if r.spread is not None and r.omega_ss is not None:
             omega += f" {format_spread(r.spread)}"
         window = (
-            f"{format_number(r.window[0], 3)}–{format_number(r.window[1], 3)} s"
+            _window(r.window, session.entry(f"omega_ss@{r.level:g}"))
             if r.window
             else "typed"
             if r.omega_ss is not None
@@ -205,7 +230,7 @@ def _table_section(session: Session) -> Section:
                 "requested u",
                 "u_ss",
                 "omega_ss (± spread)",
-                "capture window",
+                "capture window (board clock)",
                 "i_ss",
                 "k_v, computed (Task 6)",
                 "f, computed (Task 9)",
@@ -213,6 +238,8 @@ def _table_section(session: Session) -> Section:
             tuple(rows),
         )
     )
+    if any(r.window for r in session.table()):
+        sec.blocks.append(CAPTURE_CLOCK)
     if res.identification is not None:
         sec.blocks.append("The motor constants, the group's own value first:")
         sec.blocks.append(

@@ -905,8 +905,8 @@ class LabApp(App[None]):
     async def action_capture(self) -> None:
         await self._panel_key("capture")
 
-    async def action_run_steps(self) -> None:
-        await self._panel_key("run_steps")
+    async def action_run_square_wave(self) -> None:
+        await self._panel_key("run_square_wave")
 
     async def action_run_fast(self) -> None:
         await self._panel_key("run_fast")
@@ -1000,8 +1000,8 @@ class LabApp(App[None]):
                 "Request the next of 2.5/3.5/4.5 V on the board (F3)",
             ),
             ("capture", "Capture omega_ss", "Mean over the settled window (F4)"),
-            ("run_steps", "Run step sequence", "Task 10 on the board, 25 ms (F5)"),
-            ("run_fast", "Run fast step sequence", "Task 10 at 5 ms, board-timed (F6)"),
+            ("run_square_wave", "Run the square wave", "Task 10 on the board, 25 ms (F5)"),
+            ("run_fast", "Run the square wave fast", "Task 10 at 5 ms, board-timed (F6)"),
             (
                 "reveal",
                 "Reveal computed values",
@@ -1033,7 +1033,7 @@ class LabApp(App[None]):
             self.action_save_elsewhere,
         )
         yield SystemCommand(
-            "Import a step log",
+            "Import a run log",
             "Load a log recorded elsewhere into the model check",
             self.import_log,
         )

@@ -60,9 +60,9 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "F5",
-        "run the step sequence (Task 10)",
+        "run the square wave (Task 10)",
         "f5",
-        "run_steps",
+        "run_square_wave",
         "Run",
         panel="the step experiment",
     ),
@@ -89,7 +89,7 @@ KEYMAP: tuple[Key, ...] = (
         "f9",
         "zoom_next",
         "Zoom",
-        panel="zooming the step log",
+        panel="zooming the run log",
     ),
     Key(
         "F10",
@@ -114,7 +114,7 @@ KEYMAP: tuple[Key, ...] = (
         "previous / next step of the log (Tasks 11-15)",
         "alt+left,ctrl+left",
         "pick_prev",
-        panel="moving through the step log",
+        panel="moving through the run log",
     ),
     Key(
         "",
@@ -122,7 +122,7 @@ KEYMAP: tuple[Key, ...] = (
         "alt+right,ctrl+right",
         "pick_next",
         "Step",
-        panel="moving through the step log",
+        panel="moving through the run log",
     ),
     Key("Ctrl+← →", "the same, outside a text entry"),
     Key("[ ] z", "the same on the focused plot; z zooms"),

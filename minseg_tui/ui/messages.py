@@ -67,7 +67,7 @@ class MeterRead(Message):
 @dataclass
 class MotorKnown(Message):
     """The link's idea of the motor changed: ``u_req`` V requested (0: off; None: a
-    board-timed step sequence runs). After a reconnect or a board restart it is 0."""
+    board-timed square wave runs). After a reconnect or a board restart it is 0."""
 
     u_req: float | None
 
@@ -114,7 +114,7 @@ class RevealRequested(Message):
 
 @dataclass
 class LogImportRequested(Message):
-    """Load the step log at ``path`` (recorded elsewhere); ``reply`` gets the one line to show."""
+    """Load the run log at ``path`` (recorded elsewhere); ``reply`` gets the one line to show."""
 
     path: str
     reply: Callable[[str], None]

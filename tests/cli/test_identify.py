@@ -150,7 +150,7 @@ BAD = [
         "t,u,omega\n0,4,0\n0.025,0,1\n0.05,0,1\n",
         ["--step"],
         "log.csv:2:",
-        "expected a rising step",
+        "expected a rising edge",
     ),
     (
         "table.csv",

@@ -243,7 +243,7 @@ def test_log_with_only_a_falling_step_is_refused():
     log = RunLog(t=t, u=u, omega=np.zeros(60), source="down.csv", lines=np.arange(60) + 2)
     with pytest.raises(InputError) as exc:
         identify(TABLE, R, log)
-    assert str(exc.value).startswith("down.csv:2: expected a rising step")
+    assert str(exc.value).startswith("down.csv:2: expected a rising edge")
 
 
 def test_json_shape(linear_result):

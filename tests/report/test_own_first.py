@@ -244,7 +244,7 @@ def test_an_incomplete_row_says_what_is_missing(tmp_path: Path) -> None:
     readings = _tables(_section(md, "Steady state"))[0]
     row = _row(readings, "4.5 V")
     assert row["u_ss"] == "4.05 V" and row["omega_ss (± spread)"] == "not entered"
-    assert row["capture window"] == "no capture" and row["i_ss"] == "not entered"
+    assert row["capture window (board clock)"] == "no capture" and row["i_ss"] == "not entered"
     assert row["k_v, computed (Task 6)"] == "not computed: the row is incomplete"
 
 

@@ -15,7 +15,7 @@ from minseg_tui.lab.views import session as views
 from minseg_tui.ui.device import DeviceInfo, LinkState
 from minseg_tui.ui.messages import CaptureRequested, RunRequested, VoltageRequested
 from minseg_tui.ui.panels.live import LivePanel
-from minseg_tui.ui.panels.step_run import StepRunPanel
+from minseg_tui.ui.panels.square_wave import SquareWavePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen, StepCommands, StepPane
@@ -358,7 +358,7 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
             "Stop motor",
             "Export report",
             "Switch to virtual board",
-            "Import a step log",
+            "Import a run log",
         } <= titles
         await pilot.press("ctrl+p")
         await pilot.press(*"Task 10")
@@ -373,14 +373,14 @@ async def test_the_palette_offers_a_step_panel_action_only_on_its_steps(quiet):
     panel_actions = {
         "Set step voltage",
         "Capture omega_ss",
-        "Run step sequence",
-        "Run fast step sequence",
+        "Run the square wave",
+        "Run the square wave fast",
     }
     offered = {
         "prep4": set(),
         "task3": {"Set step voltage"},
         "task4": {"Set step voltage", "Capture omega_ss"},
-        "task10": {"Run step sequence", "Run fast step sequence"},
+        "task10": {"Run the square wave", "Run the square wave fast"},
         "model_check": set(),
     }
     app = quiet()
@@ -538,7 +538,7 @@ async def test_panels_ask_with_messages_and_show_the_apps_state(quiet):
         await start_run_on(pilot, dev)
         assert [m.plan for m in asked(RunRequested)] == ["manual"]
         assert app.recording is not None and dev.commands[-1] == "STEP 0 4.5 1.5 4"
-        panel = app.screen.query_one(StepRunPanel)
+        panel = app.screen.query_one(SquareWavePanel)
         assert panel.run_progress is not None and panel.run_progress.recording
         await pilot.press("f2")
         await settle(pilot)

@@ -20,8 +20,8 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.quantities import NO_BREAK
 from minseg_tui.ui import app as app_module
 from minseg_tui.ui.panels.model_check import ModelCheckPanel
-from minseg_tui.ui.panels.results import ResultsPanel, StepPlot
-from minseg_tui.ui.panels.step_run import StepRunPanel
+from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
+from minseg_tui.ui.panels.square_wave import SquareWavePanel
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.screens.quit import QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
@@ -236,7 +236,7 @@ async def test_task10_waits_for_the_wheel_then_plots_the_run_as_it_arrives(quiet
         await pilot.press("f5")
         await settle(pilot)
         assert dev.commands[-1] == "STOP" and app.recording is None  # motor off, waiting
-        panel = app.screen.query_one(StepRunPanel)
+        panel = app.screen.query_one(SquareWavePanel)
         assert panel.run_progress.waiting and "once the wheel stands" in panel.run_progress.text
         # a wheel still coasting: no run
         dev.feed(
@@ -274,7 +274,7 @@ async def test_a_wheel_that_does_not_stand_keeps_the_run_from_starting(quiet):
         dev.feed(SampleBatchOf([(k, (k + 1) * 25_000, k, 0) for k in range(240)]))
         await taken(pilot, 240)
         assert app.recording is None and not any(c.startswith("STEP") for c in dev.commands)
-        said = app.screen.query_one(StepRunPanel).run_progress.text
+        said = app.screen.query_one(SquareWavePanel).run_progress.text
         assert said.startswith("the wheel still turns 5 s after the motor was switched off")
         # F2 cancels a wait too
         await pilot.press("f5")
@@ -303,7 +303,7 @@ async def test_the_zoom_shows_the_rise_with_its_63_percent_level_and_crossing(qu
             record_response_run(s)
             st = s.results().identification.step
         await goto(pilot, "task12")
-        plot = app.screen.query_one(StepPlot)
+        plot = app.screen.query_one(ResponsePlot)
         first = st.rises[0]
         # before the group has read T, the crossing (the answer) is neither drawn nor said
         assert "crossing" not in {tr.label for tr in plot.traces}

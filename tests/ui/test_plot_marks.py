@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from minseg_tui.ui.panels.results import StepPlot
+from minseg_tui.ui.panels.results import ResponsePlot
 from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.helpers import enter_all, settle, start_with_a_run
 
@@ -32,9 +32,9 @@ async def _zoomed(pilot) -> Canvas:
     enter_all(app, {"own.T": "0.057"})  # the crossing shows once the group has its T
     app.lab_changed.publish(None)
     await settle(
-        pilot, lambda: "crossing" in {t.label for t in app.screen.query_one(StepPlot).traces}
+        pilot, lambda: "crossing" in {t.label for t in app.screen.query_one(ResponsePlot).traces}
     )
-    return app.screen.query_one(StepPlot).query_one(Canvas)
+    return app.screen.query_one(ResponsePlot).query_one(Canvas)
 
 
 @pytest.mark.parametrize("size", [(80, 24), (120, 40), (100, 30)])

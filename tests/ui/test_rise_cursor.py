@@ -13,7 +13,7 @@ from contextlib import asynccontextmanager
 import numpy as np
 import pytest
 
-from minseg_tui.ui.panels.results import ResultsPanel, StepPlot
+from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
 from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.helpers import settle, start_with_a_run
 
@@ -26,7 +26,7 @@ async def _task12(quiet) -> AsyncIterator[tuple]:
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task12")
         panel = app.screen.query_one(ResultsPanel)
-        yield app, pilot, panel, panel.query_one(StepPlot)
+        yield app, pilot, panel, panel.query_one(ResponsePlot)
 
 
 def _frame(canvas: Canvas) -> tuple[int, int]:
@@ -103,7 +103,7 @@ async def test_shift_arrows_jump_and_the_cursor_stays_in_the_plot(quiet):
 async def test_a_click_on_the_rise_puts_the_cursor_on_that_column(quiet):
     async with _task12(quiet) as (app, pilot, panel, plot):
         first, _last = _frame(plot.query_one(Canvas))
-        await pilot.click(StepPlot, offset=(first + 20, 6))
+        await pilot.click(ResponsePlot, offset=(first + 20, 6))
         await settle(pilot)
         assert app.focused is plot
         assert panel.cursor == 20 and panel.reading is not None

@@ -8,7 +8,7 @@ import pytest
 from textual.geometry import Region
 from textual.widgets import Input
 
-from minseg_tui.ui.panels.results import StepPlot
+from minseg_tui.ui.panels.results import ResponsePlot
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
@@ -79,7 +79,7 @@ async def test_the_footer_of_tasks_11_to_15_shows_every_key_whole_at_80x24(quiet
         shown = _whole(app)
         for key in ("f1 Help", "f2 STOP", "f8 Export", "f9 Zoom", "alt+→ Step", "^r Reveal"):
             assert key in shown, shown
-        app.screen.query_one(StepPlot).focus()
+        app.screen.query_one(ResponsePlot).focus()
         await settle(pilot)
         assert _whole(app) == shown
 
@@ -106,7 +106,7 @@ async def test_the_zoomed_rise_shows_the_applied_voltage_on_its_own_axis(quiet, 
     app = quiet()
     async with app.run_test(size=size) as pilot:
         await start_with_a_run(pilot, step_id)
-        canvas = app.screen.query_one(StepPlot).query_one(Canvas)
+        canvas = app.screen.query_one(ResponsePlot).query_one(Canvas)
         lines = str(canvas.render()).split("\n")
         top = next(k for k, ln in enumerate(lines) if "┌" in ln)
         bottom = next(k for k, ln in enumerate(lines) if "└" in ln)

@@ -88,14 +88,14 @@ def test_table_step(snap_compare, tmp_path, size):
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_step_run(snap_compare, tmp_path, size):
+def test_square_wave_run(snap_compare, tmp_path, size):
     assert snap_compare(
         _app(tmp_path), terminal_size=size, run_before=_to("task10", TABLE, run=True)
     )
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_step_run_mid_run(snap_compare, tmp_path, size):
+def test_square_wave_mid_run(snap_compare, tmp_path, size):
     """Task 10 while it records: 4 s of the 25 ms run plotted as it arrived."""
     dev = QuietDevice(seed=1)
 
@@ -114,7 +114,7 @@ def test_step_run_mid_run(snap_compare, tmp_path, size):
 
 
 @pytest.mark.parametrize("size", SIZES)
-def test_zoomed_step_with_its_63_percent_marks(snap_compare, tmp_path, size):
+def test_zoomed_rise_with_its_63_percent_marks(snap_compare, tmp_path, size):
     """Task 12 lands in the group's T, right under the zoom to the first rise: the 63 %
     level and the time the speed crosses it."""
     assert snap_compare(

@@ -124,7 +124,7 @@ async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(qu
         await goto(pilot, "task11")
         await settle(pilot)
         note = str(app.screen.query_one("#zoom-note").render())
-        assert "0 rising steps" not in note and "table of Tasks 4-9" in note
+        assert "0 rises" not in note and "table of Tasks 4-9" in note
         enter_all(app, TABLE)
         await goto(pilot, "table")
         await goto(pilot, "task11")

@@ -100,7 +100,7 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         assert all(r.f is not None and r.f > 0 for r in rows)
         shown = str(app.screen.query_one("#results").render())
         assert "k_v = " in shown and "k_a = " in shown
-        # Task 10: the step sequence on the board, recorded as it arrives
+        # Task 10: the square wave on the board, recorded as it arrives
         await goto(pilot, "task10")
         await pilot.press("f5")
         # the motor stops; the run starts once the wheel stands (the board's clock decides)

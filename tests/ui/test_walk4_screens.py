@@ -13,7 +13,7 @@ from minseg_tui.lab.content.steps import STEPS, step
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.messages import MeterRead
 from minseg_tui.ui.panels.meter import MeterPanel
-from minseg_tui.ui.panels.results import ResultsPanel, StepPlot
+from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.conftest import board_url, real_app
@@ -180,7 +180,7 @@ async def test_the_rise_cursor_stops_on_the_last_sample_and_reads_it(quiet):
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task12")
         panel = app.screen.query_one(ResultsPanel)
-        plot = panel.query_one(StepPlot)
+        plot = panel.query_one(ResponsePlot)
         canvas = plot.query_one(Canvas)
         await pilot.press("shift+tab")
         await settle(pilot)
@@ -209,7 +209,7 @@ async def test_task11_zooms_on_the_whole_high_level_to_read_omega_ss(quiet):
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task11")
         panel = app.screen.query_one(ResultsPanel)
-        plot = panel.query_one(StepPlot)
+        plot = panel.query_one(ResponsePlot)
         view = panel.view
         assert view is not None and view.rises
         rise = view.rises[0]

@@ -12,7 +12,7 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views.classview import judge, read_group
 from minseg_tui.report import markdown
 from minseg_tui.report.content import build
-from minseg_tui.ui.panels.step_run import StepRunPanel
+from minseg_tui.ui.panels.square_wave import SquareWavePanel
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
 from minseg_tui.ui.screens.lab import StepCommands
 from minseg_tui.ui.screens.start import StartScreen
@@ -54,7 +54,7 @@ async def test_the_run_list_keeps_the_run_in_use_after_an_interrupted_run(quiet)
             cable_run = _interrupted(s, "cable")
             assert s.response_run().name == used
         await goto(pilot, "task10", focus=None)
-        panel = app.screen.query_one(StepRunPanel)
+        panel = app.screen.query_one(SquareWavePanel)
 
         def status() -> str:
             return str(app.screen.query_one("#run-status").render())

@@ -10,7 +10,7 @@ from textual import events
 from textual.geometry import Region
 from textual.widgets import RadioButton, RadioSet
 
-from minseg_tui.ui.panels.results import StepPlot
+from minseg_tui.ui.panels.results import ResponsePlot
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas, drawing_order
 from minseg_tui.ui.widgets.prose import Prose
@@ -61,7 +61,7 @@ async def test_the_zoomed_rise_draws_u_a_as_the_board_holds_it_rising_at_the_edg
     app = quiet()
     async with app.run_test(size=(120, 40)) as pilot:
         await start_with_a_run(pilot, "task11")
-        plot = app.screen.query_one(StepPlot)
+        plot = app.screen.query_one(ResponsePlot)
         labels = [tr.label for tr in plot.traces]
         k = drawing_order(plot.traces).index(labels.index("u_A [V]"))  # plotext's signal
         monitor = plot.query_one(Canvas).plt.monitor  # what plotext was asked to draw

@@ -15,7 +15,7 @@ Field kinds:
 Actions name what a step lets the group *do* besides typing (the UI binds them):
 ``connect`` (pick the board or the virtual MinSeg), ``live_velocity`` (Task 3's velocity
 next to the timestamped one), ``meter`` (read the virtual MinSeg's multimeter),
-``capture_omega`` (Task 4's steady-state capture), ``run_steps`` (Task 10),
+``capture_omega`` (Task 4's steady-state capture), ``run_square_wave`` (Task 10),
 ``results`` (Tasks 11-15 figures), ``model_check``.
 """
 
@@ -660,7 +660,7 @@ _LAB: tuple[Step, ...] = (
         "Start the run: the board switches the request between 0 and 4.5 V on its own clock and the "
         "program records every sample. You can stop at any time; the motor is switched off. The fast "
         "variant samples every 5 ms, to show what the 25 ms samples and the averaging hide.",
-        actions=("run_steps",),
+        actions=("run_square_wave",),
         plans=(("manual", RunPlan()), ("fast", RunPlan(ts=0.005))),
     ),
     Step(
@@ -694,8 +694,8 @@ _LAB: tuple[Step, ...] = (
         "Results",
         "Task 12: the time constant T",
         "Read T off the step response.",
-        "On one rising step, find when the speed has covered 63 % of its change; T is the time from "
-        "the step to that moment. The program also fits T by least squares, with its interval.",
+        "On one rise, find when the speed has covered 63 % of its change; T is the time from "
+        "the rising edge to that moment. The program also fits T by least squares, with its interval.",
         fields=(
             Field(
                 "own.T",

@@ -159,14 +159,14 @@ def compare_fields(
                         f"{format_number(st.u_ss)} V"
                     )
                     why = (
-                        "The least-squares K is the median over every rising step of the fitted "
+                        "The least-squares K is the median over every rise of the fitted "
                         f"steady speed over u_ss; {_theirs(whose, 'K')} is one reading of it over u_ss."
                     )
                 else:
                     computed, lsq = st.K, None
             elif fld.key == "own.T":
                 computed, lsq = st.T_63, st.T
-                how = "the 63 % reading, median over the rising steps"
+                how = "the 63 % reading, median over the rises"
                 why = (
                     "The 63 % reading takes one sampled point of each rise, which the sampling "
                     f"moves; the least-squares T fits {span} with the sampling modelled."
@@ -217,7 +217,7 @@ def compare_fields(
                 if own_K is not None:
                     computed = own_K * U_TASK15
                     how = f"5 V × {whose} K = {typed('own.K', own_K, 'rad/s/V')}"
-                    why = "The least-squares value uses the K fitted over every rising step."
+                    why = "The least-squares value uses the K fitted over every rise."
                 else:
                     lsq = None
         rel = None

@@ -653,7 +653,7 @@ class Session:
         them is stored but not judged yet, with nothing computed to compare it with),
         ``todo``, or ``info`` (nothing to enter)."""
         st = lab_steps.step(step_id)
-        if "run_steps" in st.actions:
+        if "run_square_wave" in st.actions:
             return "done" if any(r.kind in ("steps", "fast") for r in self._runs) else "todo"
         shown = [self._entries.get(f.key) for f in st.fields]
         if any(e is not None and (e.refused is not None or not e.ok) for e in shown):

@@ -219,7 +219,7 @@ def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
     """Why the check's first-order ``T`` (s) is not the program's least-squares reading of
     the same run, ``T_ls`` (s) and ``K_ls`` (rad/s/V), the one Tasks 11-12 show beside the
     group's own values: whose reading it is, said so that no one takes it for the group's."""
-    where = " over its rising steps" if rising else ""
+    where = " over its rises" if rising else ""
     return (
         "The program's least-squares reading of the run used in Tasks 11-12 (not the group's "
         f"own values) gives T = {format_value(T_ls, 's')} and K = {format_value(K_ls, 'rad/s/V')}: "

@@ -130,6 +130,33 @@ OMEGA_MAX: float = 15.0
 OMEGA_MIN: float = 0.5
 """Below this the wheel hardly turns, rad/s."""
 
+MARKED: str = (
+    "a slip the lab manual warns about, a refused entry, a value far from the class, or two "
+    "sessions of the same names"
+)
+"""What the class view marks with '!' (a group's :attr:`Group.flags`), in words."""
+
+NOT_MARKED: str = (
+    "Not counted: the other warnings of each group's report (its notes on the entries, the "
+    "readings and the run)."
+)
+"""What the class view's '!' does not count, though a group's report warns about it."""
+
+
+def marked_summary(view: ClassView) -> str:
+    """How many groups the class view holds and how many it marks with '!', and what the
+    mark counts: "1 group, 0 marked '!' (…)"."""
+    n = len(view.groups)
+    k = sum(1 for g in view.groups if g.flags)
+    return f"{n} group{'' if n == 1 else 's'}, {k} marked '!' ({MARKED})."
+
+
+def for_grader(label: str) -> str:
+    """A field's label as an instructor reads it: "your k_v" (the group's screen) is "the
+    group's k_v"."""
+    return "the group's " + label.removeprefix("your ") if label.startswith("your ") else label
+
+
 FROM_TABLE: tuple[str, ...] = ("k_v", "k_a", "f", "J")
 """The quantities computed from the table's rows (and R): k_v = (u_ss - R i_ss) / omega_ss,
 k_a = 0.65 k_v, f = k_a i_ss / omega_ss, and J from them with T."""
@@ -322,12 +349,21 @@ def _resistance_slip(R: float) -> Slip:
     return Slip(text, ("R", *FROM_TABLE))
 
 
+def _field_label(key: str) -> str:
+    """The label of field ``key`` as an instructor reads it (the key when it has none)."""
+    fld = lab_steps.FIELDS.get(key)
+    return for_grader(fld.label) if fld is not None else key
+
+
 def slip_list(session: Session) -> list[Slip]:
     """The slips the lab manual warns about in ``session``'s readings, each with the
     quantities that rest on the slipped reading; a refused entry is said too (it feeds
     nothing)."""
     out = [
-        Slip(f"{e.message}; refused, so nothing is computed from it.")
+        Slip(
+            f"a refused entry, {_field_label(e.key)}: {e.text.strip()!r} ({own_first.TOLD} "
+            f"{e.message}); nothing is computed from it."
+        )
         for e in session.entries.values()
         if not e.ok
     ]
@@ -475,7 +511,7 @@ def _row(folder: Path, session: Session) -> Group:
         elif problem:
             lacks = (*lacks, f"model check: {problem}")
         own = tuple(
-            Own(c.key, c.label, c.unit, c.own, c.computed, c.rel_diff)
+            Own(c.key, for_grader(c.label), c.unit, c.own, c.computed, c.rel_diff)
             for c in session.comparisons(results=res)
             if c.own is not None
         )
@@ -607,6 +643,8 @@ def session_folders(root: Path) -> list[Path]:
 
 __all__ = [
     "JUDGED",
+    "MARKED",
+    "NOT_MARKED",
     "QUANTITIES",
     "THRESHOLD",
     "ClassView",
@@ -615,7 +653,9 @@ __all__ = [
     "Quantity",
     "Slip",
     "Spread",
+    "for_grader",
     "judge",
+    "marked_summary",
     "members",
     "outlier",
     "own_cell",

@@ -796,7 +796,7 @@ def results(session: Session, step_id: str) -> ResultsView:
     if used is not None and used.interrupted:
         problems.append(
             f"run {used.name} ended before its plan did ({used.interruption}; {used.samples} samples, "
-            f"{len(rises)} rising steps): a whole run gives more steps to read T from"
+            f"{len(rises)} rises): a whole run gives more rises to read T from"
         )
     return ResultsView(
         res.run,

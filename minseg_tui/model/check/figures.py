@@ -30,7 +30,7 @@ class Gain:
     the speed's noise floor from one count per sample, rad/s; noise: its measured scatter,
     rad/s; *_above_floor / *_above_noise: the rms error above the floor / above the larger of
     floor and noise, rad/s; angle_floor: the angle's quantisation floor, rad;
-    *_angle_rms: rms error of the angle, rad; heldout_steps: rising steps in the held-out
+    *_angle_rms: rms error of the angle, rad; heldout_steps: rises in the held-out
     halves (0: no folds); heldout_*_rmse: rms speed error on held-out steps, rad/s.
     """
 

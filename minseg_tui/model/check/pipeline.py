@@ -546,7 +546,7 @@ def _held_out(
     ext: Fit,
     rng: dict,  # type: ignore[type-arg]
 ) -> tuple[float, float | None, float | None]:
-    """Both models fitted on every other cycle and judged on the rest: the rising steps
+    """Both models fitted on every other cycle and judged on the rest: the rises
     held out, and each model's rms error on them (rad/s; None without folds)."""
     head = full.head(MAX_FIT_ROWS)
     parts = folds(head.u)

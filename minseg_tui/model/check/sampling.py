@@ -94,21 +94,30 @@ class Sampling:
             "text": self.text(),
         }
 
+    def every(self) -> str:
+        """How often the log was sampled, in plain words: "a sample every 25 ms" when every
+        interval reads the same (to 3 digits), else "a sample every 24.2-25.8 ms (mostly
+        25 ms)", or for a loop without a fixed clock "irregular, a sample every 12-40 ms
+        (nominal 25 ms)"."""
+        lo, hi, ts = (f"{x * 1e3:.3g}" for x in (self.interval_min, self.interval_max, self.ts))
+        if self.how == "even":
+            return f"a sample every {ts} ms"
+        if lo == hi:
+            return f"a sample every {lo} ms"
+        if self.regular:
+            return f"a sample every {lo}-{hi} ms (mostly {ts} ms)"
+        return f"irregular, a sample every {lo}-{hi} ms (nominal {ts} ms)"
+
     def text(self) -> str:
         """One sentence on the sample times and the speed column."""
-        ms = 1e3
-        if self.how == "even":
-            times = f"even sample times ({self.ts * ms:.3g} ms)"
-        else:
+        times = self.every()
+        if self.how != "even":
             over = "its own interval" if self.over_interval else "the nominal period"
             src = "as the header says" if self.how == "header" else "detected from the data"
-            spread = f"{self.interval_min * ms:.3g}-{self.interval_max * ms:.3g} ms"
-            if self.regular:
-                times = f"sample times {spread} around {self.ts * ms:.3g} ms"
-            else:
-                times = (
-                    f"irregular sample times ({spread}, nominal {self.ts * ms:.3g} ms): a loop "
-                    "without a fixed clock; the long intervals are jitter, not lost samples"
+            if not self.regular:
+                times += (
+                    ": a loop without a fixed clock; the long intervals are jitter, not lost "
+                    "samples"
                 )
             times += f"; each row's speed is taken over {over} ({src}) and simulated so"
         if self.lost:

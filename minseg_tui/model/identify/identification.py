@@ -216,7 +216,7 @@ def _response_result(
             log.source,
             log.line_of(0),
             (
-                f"expected a rising step in {name} (V) with at least one sample before it and 5 after it; "
+                f"expected a rising edge in {name} (V) with at least one sample before it and 5 after it; "
                 f"found {sum(e.rising for e in find_edges(cmd))} rising edge(s), none usable"
             ),
         )
@@ -237,7 +237,7 @@ def _response_result(
         )
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
-        raise InputError(log.source, None, "expected a usable rising step")
+        raise InputError(log.source, None, "expected a usable rising edge")
     steps = rises(log, fit)
     u_used, hows = [], []
     for s in steps:
@@ -255,7 +255,7 @@ def _response_result(
             raise InputError(
                 log.source,
                 s.line,
-                f"expected each rising step to put a voltage on the motor; the step at "
+                f"expected each rising edge to put a voltage on the motor; the edge at "
                 f"t = {s.t:.4g} s ends at {at}0 V on the motor ({why}), so K = "
                 "omega_ss / u_ss cannot be computed: record steps that end above the driver's "
                 "drop (steps that only go negative end at 0 V)",

@@ -217,7 +217,7 @@ def response_observations(
             Observation(
                 "several_levels",
                 (
-                    f"The rising steps go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
+                    f"The rising edges go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
                     "of omega_ss / u_ss over the steps and omega_ss the median of their speeds."
                 ),
             )
@@ -244,8 +244,10 @@ def response_observations(
                 "T_short",
                 (
                     f"T = {format_number(T * 1e3, 3)} ms is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {format_reading(ts, 'ms', 3)}): "
-                    "the speed rises within a few samples, so the 63 % reading measures the sampling and the "
-                    "velocity computation as much as the motor. The least-squares T models the sampling and is the one to use."
+                    "the speed rises within a few samples. The 63 % reading, the manual's way, reads T off those samples, "
+                    "so the sampling and the velocity computation move it as much as the motor does; the least-squares T "
+                    "fits whole stretches of the run with the sampling modelled, so the two differ. Both are fair "
+                    "readings of T; the program's model and its least-squares J use the least-squares one."
                 ),
             )
         )
@@ -287,9 +289,7 @@ def response_observations(
         observations.append(
             Observation(
                 "steps_skipped",
-                (
-                    f"{skipped} rising step(s) were too short or too close to the start of the log to use."
-                ),
+                (f"{skipped} rise(s) were too short or too close to the start of the log to use."),
             )
         )
     return observations

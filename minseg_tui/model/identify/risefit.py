@@ -307,10 +307,10 @@ def _fit(
             f"the first-order model over the whole log leaves {times} the "
             "residual of the steps fitted one by one (the wheel between the steps does not "
             "follow it: coasting at zero command, or a speed that wanders), so T comes from "
-            "the rising steps alone"
+            "the rises alone"
         )
     else:
-        why = "the applied voltage u never changes in the log, so T comes from the rising steps"
+        why = "the applied voltage u never changes in the log, so T comes from the rises"
     fit = _from_rises(log, rises_fit, windows, theta, angle_source, time_source, sigma_w, why)
     return replace(
         fit,
@@ -460,7 +460,7 @@ def _from_whole(
         method=WHOLE_LOG,
         why=(
             "one first-order model fits the whole log as well as the steps fitted one by one do "
-            f"(on the rising steps its residual is {rms / sigma_w:.2f} times theirs), so every "
+            f"(on the rises its residual is {rms / sigma_w:.2f} times theirs), so every "
             f"edge, rising and falling, is used{friction}"
         ),
         shift=fit.d,

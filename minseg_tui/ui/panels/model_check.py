@@ -136,15 +136,15 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
 
 
 class ImportBox(Vertical):
-    """A step log recorded elsewhere: its path, Enter asks for it (the lab screen loads it
+    """A run log recorded elsewhere: its path, Enter asks for it (the lab screen loads it
     and answers in one line under the box)."""
 
     def __init__(self) -> None:
         super().__init__(classes="import")
 
     def compose(self) -> ComposeResult:
-        yield Prose("A step log recorded elsewhere (CSV): its path, then Enter", classes="hint")
-        yield Input(placeholder="load a step log (CSV path), Enter", id="import-path")
+        yield Prose("A run log recorded elsewhere (CSV): its path, then Enter", classes="hint")
+        yield Input(placeholder="load a run log (CSV path), Enter", id="import-path")
         yield Prose("", id="import-msg", classes="hint")
 
     @on(Input.Submitted, "#import-path")
@@ -152,7 +152,7 @@ class ImportBox(Vertical):
         event.stop()
         path = event.value.strip()
         if not path:
-            self.imported("type the path of a step log (t, u, omega columns) and press Enter")
+            self.imported("type the path of a run log (t, u, omega columns) and press Enter")
             return
         self.post_message(LogImportRequested(path, self.imported))
 

@@ -1,4 +1,4 @@
-"""Tasks 11-15: the step log, zoomed to one step or whole, and the results beside the
+"""Tasks 11-15: the run log, zoomed to one rise or whole, and the results beside the
 group's own readings."""
 
 from __future__ import annotations
@@ -32,8 +32,8 @@ HELD_END = 1e-6
 already reports the low voltage."""
 
 
-class StepPlot(TracePlot):
-    """The step log, whole or zoomed to one rising step. Focused, [ and ] pick the step and z
+class ResponsePlot(TracePlot):
+    """The run log, whole or zoomed to one rise. Focused, [ and ] pick the rise and z
     toggles; alt+left/right and F9 do the same from anywhere on the step (app keys). On a
     zoomed rise, ←/→ (Shift: five columns) move a cursor from column to column, and a click
     puts it on the column clicked; it reads t and omega off the plotted line there. Its
@@ -82,7 +82,7 @@ class StepPlot(TracePlot):
 
 
 class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
-    """Tasks 11-15: the step log plotted, zoom to a step, K, T (63 % and least squares with
+    """Tasks 11-15: the run log plotted, zoom to a rise, K, T (63 % and least squares with
     its interval), J, the model, omega at 5 V, and the group's readings beside them."""
 
     KEYS = ("zoom_next", "pick_prev", "pick_next", "reveal")
@@ -105,7 +105,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         """The view just drawn shows results or comparisons it did not show before."""
 
     def compose(self) -> ComposeResult:
-        yield StepPlot("step log", "t [s]", "omega [rad/s]", id="plot-log")
+        yield ResponsePlot("run log", "t [s]", "omega [rad/s]", id="plot-log")
         yield Prose("", id="cursor")
         yield Prose("", id="zoom-note", classes="hint")
 
@@ -146,7 +146,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         v = self.view
         if v is None:
             return
-        plot = self.query_one(StepPlot)
+        plot = self.query_one(ResponsePlot)
         note = self.query_one("#zoom-note", Prose)
         self.reading = None
         self.query_one("#cursor", Prose).display = False
@@ -155,7 +155,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
             note.update("no step run yet (Task 10)")
             return
         if self.zoom is None or not v.rises:
-            plot.set_axes("step log", "t [s]")
+            plot.set_axes("run log", "t [s]")
             plot.show(
                 [
                     Trace(v.t, v.omega, "omega"),
@@ -163,11 +163,11 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
                 ]
             )
             if v.rises:
-                said = f"{len(v.rises)} rising steps with results · f9 Zoom"
+                said = f"{len(v.rises)} rises with results · f9 Zoom"
             elif not v.lines:  # no results at all: Tasks 11-15 need the table's R, u_ss, i_ss
                 said = "no results yet: they need the table of Tasks 4-9 filled"
             else:
-                said = "no rising step long enough to read results from"
+                said = "no rise long enough to read results from"
             note.update(f"run {v.run}: whole log, {said}")
             return
         w = v.rises[self.zoom]
@@ -219,7 +219,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
 
     def _cursor(
         self,
-        plot: StepPlot,
+        plot: ResponsePlot,
         traces: list[Trace],
         x: NDArray[np.float64],
         omega: NDArray[np.float64],
@@ -257,7 +257,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         cursor on the edge. Only on a zoomed rise."""
         if self.zoom is None or self.view is None or not self.view.rises:
             return
-        plot = self.query_one(StepPlot)
+        plot = self.query_one(ResponsePlot)
         if self.cursor is None:
             span = plot.columns
             lo, hi = plot.traces_xlim or (0.0, 0.0)
@@ -279,7 +279,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         self.post_message(RevealRequested(self.step.id))
 
     def pick(self, delta: int) -> None:
-        """Zoom to the previous/next rising step."""
+        """Zoom to the previous/next rise."""
         if self.view is None or not self.view.rises:
             return
         n = len(self.view.rises)
@@ -287,11 +287,11 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         self._plot()
 
     def action_pick_prev(self) -> None:
-        """alt+left: the previous rising step."""
+        """alt+left: the previous rise."""
         self.pick(-1)
 
     def action_pick_next(self) -> None:
-        """alt+right: the next rising step."""
+        """alt+right: the next rise."""
         self.pick(1)
 
     def toggle_zoom(self) -> None:

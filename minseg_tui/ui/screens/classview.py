@@ -3,9 +3,10 @@
 Opened from the start screen (F12). The groups are read in a worker thread, each session
 opened read-only (:func:`minseg_tui.lab.views.classview.read_group`: no lock, nothing written),
 and each row appears as soon as its session is read; once all are in, the class's median
-decides what stands out. Under the table, the highlighted group in full: every number with
-its unit, the model check's cause, the group's own values against the computed ones, what
-stands out and what is missing. Enter opens the group's session read-only (as the start
+decides which values are far from the class, one of the things marked "!"
+(:data:`~minseg_tui.lab.views.classview.MARKED`). Under the table, the highlighted group in
+full: every number with its unit, the model check's cause, the group's own values against
+the computed ones, what is marked and what is missing. Enter opens the group's session read-only (as the start
 screen opens a damaged one); Escape goes back. Everything works from the keyboard at 80x24.
 """
 
@@ -43,7 +44,11 @@ COLUMNS: tuple[tuple[str, str], ...] = (
     ("J", "J"),
 )
 """The table's columns (header, what it holds), narrow enough for 80 columns: ``!`` counts
-what stands out; the numbers are in SI units (the group's detail below gives each unit)."""
+what the view marks (:data:`~minseg_tui.lab.views.classview.MARKED`); the numbers are in SI units (the group's detail below gives each unit)."""
+
+
+TITLE = "Class view for instructors (read-only)"
+"""How the screen names itself: the instructors' view of every group, which changes nothing."""
 
 
 def _num(v: float | None) -> str:
@@ -79,13 +84,18 @@ def detail(k: int, g: Group) -> Text:
     out.append(f"model check: {g.cause or 'not run'}\n")
     for o in g.own:
         if o.rel_diff is not None:
-            out.append(f"own {o.label}: {format_diff(o.rel_diff)} from the computed value\n")
+            out.append(
+                f"{o.label}: {format_diff(o.rel_diff)} from the value computed the group's way\n"
+            )
     for f in g.flags:
         out.append(f"! {f}\n", style="bold")
     for x in g.lacks:
         out.append(f"- lacks: {x}\n")
-    if not g.flags and not g.lacks:
-        out.append("Nothing stands out; nothing is missing.\n")
+    if not g.flags:
+        out.append(f"Nothing marked '!' ({classview.MARKED}).\n")
+    if not g.lacks:
+        out.append("Nothing is missing.\n")
+    out.append(classview.NOT_MARKED + "\n")
     return out
 
 
@@ -119,7 +129,7 @@ class ClassScreen(Screen[None]):
         self.done = False
 
     def compose(self) -> ComposeResult:
-        yield Static(Text(f"Class view of {self.root} — reading the sessions…"), id="class-title")
+        yield Static(Text(f"{TITLE} of {self.root} — reading the sessions…"), id="class-title")
         table: DataTable[Text] = DataTable(id="class-table", cursor_type="row", zebra_stripes=True)
         yield table
         with VerticalScroll(id="class-detail"):
@@ -162,20 +172,14 @@ class ClassScreen(Screen[None]):
     def _class_read(self, event: ClassRead) -> None:
         title = self.query_one("#class-title", Static)
         if event.view is None:
-            title.update(Text(f"Class view: {event.error}"))
+            title.update(Text(f"{TITLE}: {event.error}"))
             return
         self.done = True
         self.groups = list(event.view.groups)
         table = self.query_one(DataTable)
         for k, g in enumerate(self.groups, 1):
             table.update_cell(str(k), "flags", Text(row(k, g)[3]))
-        flagged = sum(1 for g in self.groups if g.flags)
-        title.update(
-            Text(
-                f"Class view of {self.root}: {len(self.groups)} groups, {flagged} with something "
-                "that stands out. ↑↓ pick a group, Enter opens it read-only, Esc goes back."
-            )
-        )
+        title.update(Text(f"{TITLE} of {self.root}: {classview.marked_summary(event.view)}"))
         self._show(table.cursor_row)
 
     def _show(self, index: int) -> None:

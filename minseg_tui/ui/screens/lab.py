@@ -49,7 +49,7 @@ from minseg_tui.ui.panels.live import LivePanel
 from minseg_tui.ui.panels.model_check import ModelCheckPanel
 from minseg_tui.ui.panels.report import ReportPanel
 from minseg_tui.ui.panels.results import ResultsPanel
-from minseg_tui.ui.panels.step_run import StepRunPanel
+from minseg_tui.ui.panels.square_wave import SquareWavePanel
 from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.status import StatusScreen
@@ -598,8 +598,10 @@ class LabScreen(StatusScreen):
             return ConnectPanel().data_bind(LabScreen.device)
         if step.id == "table":
             return TablePanel()
-        if "run_steps" in acts:
-            return StepRunPanel(step, self._live, self._refresh).data_bind(LabScreen.run_progress)
+        if "run_square_wave" in acts:
+            return SquareWavePanel(step, self._live, self._refresh).data_bind(
+                LabScreen.run_progress
+            )
         if "results" in acts:
             return ResultsPanel(step)
         if "model_check" in acts:
@@ -934,7 +936,7 @@ class LabScreen(StatusScreen):
 
     @on(LogImportRequested)
     def _import(self, event: LogImportRequested) -> None:
-        """A step log recorded elsewhere: it becomes the run Tasks 11-15 and the check use."""
+        """A run log recorded elsewhere: it becomes the run Tasks 11-15 and the check use."""
         event.stop()
         try:
             with self.session as s:

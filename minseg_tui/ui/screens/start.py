@@ -52,7 +52,7 @@ class StartScreen(StatusScreen):
         # the list it moved to
         Binding("tab", "app.focus_next", show=False, priority=True),
         Binding("shift+tab", "app.focus_previous", show=False, priority=True),
-        Binding("f12", "app.class_view", "Class view"),
+        Binding("f12", "app.class_view", "Class view (instructors)"),
         Binding("ctrl+n", "new_anyway", "New anyway", show=False),
     ]
 

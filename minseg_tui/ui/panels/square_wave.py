@@ -36,9 +36,9 @@ def _s(v: float | None) -> str:
     return format_value(v, "s", 3)
 
 
-class StepRunPanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
-    KEYS = ("run_steps", "run_fast")
-    """F5/F6 ask for the board's step sequence; shows the app's ``run_progress`` while it
+class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
+    KEYS = ("run_square_wave", "run_fast")
+    """F5/F6 ask for the board's square wave; shows the app's ``run_progress`` while it
     waits for the wheel and while it records (F2 stops it at once), the run plotted as it
     arrives from the ``live`` buffer (redrawn every ``refresh`` s; at each progress when 0),
     then the latest 25 ms run beside the 5 ms one with both T readings next to each other."""
@@ -145,7 +145,7 @@ class StepRunPanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
             )
             self.query_one("#run-status", Prose).update(said or "no runs recorded yet")
 
-    def action_run_steps(self) -> None:
+    def action_run_square_wave(self) -> None:
         """F5: the manual's plan at 25 ms."""
         self.post_message(RunRequested("manual"))
 
