@@ -37,7 +37,8 @@ Refused, with a message saying what was expected:
   also be a real reading in mA; rather than guess, it is refused and the message asks for
   ``47 mA`` or ``0.047 A``. An explicit ``0.047 A`` or ``0.5 mA`` is accepted. A bare
   number below 0.05 in a mN m s/rad field (f typed in N m s/rad, ``0.00186``) is refused
-  the same way (:data:`_BARE_BELOW`).
+  the same way, and a bare number above 1 in a field in s (T typed in ms, ``57``)
+  (:data:`_BARE`).
 
 Plausibility is separate from parsing: :class:`Plausible` ranges on a field give warnings
 (data, not refusals), e.g. R outside 1-20 ohm.
@@ -285,14 +286,32 @@ _NUMBER = re.compile(
 _PREFIXES = {"k", "m", "M", "µ", "u", "G"}
 
 
-_BARE_BELOW: dict[str, tuple[float, str, str, str]] = {
-    "mA": (1.0, "currents here are 20-50 mA", "amperes", "A"),
-    "mN m s/rad": (0.05, "f of this motor is a few mN m s/rad", "N m s/rad", "N m s/rad"),
+@dataclass(frozen=True)
+class _Bare:
+    """What a bare number (typed without a unit) in a field of one form unit may not be:
+    ``below`` or above ``bound`` (in the form unit) it is refused as ambiguous, since the
+    field's values are ``usual`` and such a number is most likely ``other`` (a unit
+    ``ratio`` times the form unit: A is 1000 mA, ms 0.001 s) typed without its name;
+    ``looks``: ``other`` in words."""
+
+    bound: float
+    below: bool
+    usual: str
+    looks: str
+    other: str
+    ratio: float
+
+
+_BARE: dict[str, _Bare] = {
+    "mA": _Bare(1.0, True, "currents here are 20-50 mA", "amperes", "A", 1000.0),
+    "mN m s/rad": _Bare(
+        0.05, True, "f of this motor is a few mN m s/rad", "N m s/rad", "N m s/rad", 1000.0
+    ),
+    "s": _Bare(1.0, False, "this motor's time constant is tens of ms", "milliseconds", "ms", 0.001),
 }
-"""Form unit -> (bound, the usual values, the unit 1000 times larger in words and as
-written): a bare number below the bound in a field of that unit is refused as ambiguous,
-since it is most likely the larger unit typed without its name (0.047 for 47 mA, 0.00186
-for 1.86 mN m s/rad)."""
+"""Form unit -> when a bare number in a field of that unit is refused as ambiguous: 0.047
+for i_ss (47 mA typed in A), 0.00186 for f (1.86 mN m s/rad typed in N m s/rad), 57 for T
+(57 ms: as seconds, far longer than the 1.5 s steps of Task 10 could show)."""
 
 
 class EntryRefused(InputError):
@@ -430,16 +449,17 @@ def parse_quantity(
     note = ""
     if not typed.symbol:
         typed = form
-        bare = _BARE_BELOW.get(form.symbol)
-        if bare is not None and 0 < abs(number) < bare[0]:
-            _, usual, looks, big = bare
+        bare = _BARE.get(form.symbol)
+        if bare is not None and (
+            0 < abs(number) < bare.bound if bare.below else abs(number) > bare.bound
+        ):
             return _raise(
                 EntryRefused(
                     label,
                     None,
-                    f"{stripped!r} is ambiguous: {usual}, so this looks like {looks}; type "
-                    f"'{_fmt(number * 1000)} {form.symbol}' or '{stripped} {big}' "
-                    f"(or '{stripped} {form.symbol}' if you mean it)",
+                    f"{stripped!r} is ambiguous: {bare.usual}, so this looks like {bare.looks}; "
+                    f"type '{_fmt(number * bare.ratio)} {form.symbol}' or "
+                    f"'{stripped} {bare.other}' (or '{stripped} {form.symbol}' if you mean it)",
                 )
             )
     elif typed.symbol != form.symbol:

@@ -48,6 +48,24 @@ class Formula:
             return math.nan
 
 
+_ALIAS = re.compile(r"(?<![\w.])(?:w|omega)(?:_\w+)?(?!\w)")
+"""A name that may be omega written otherwise: ``w_ss``, ``w``, ``omega`` (ω was spelt
+out before)."""
+
+
+def _alias(name: str, names: tuple[str, ...]) -> str:
+    """The allowed name ``name`` stands for when it is not one itself: omega spelt ``w``
+    (``w_ss`` is omega_ss), or ``w``/``omega`` alone for the one allowed omega name
+    (omega_ss in Preparation 11); else ``name`` unchanged."""
+    if name in names:
+        return name
+    spelt = "omega" + name[1:] if name.startswith("w") else name
+    if spelt in names:
+        return spelt
+    omegas = [n for n in names if n.startswith("omega")]
+    return omegas[0] if spelt == "omega" and len(omegas) == 1 else name
+
+
 def _prepare(text: str, names: tuple[str, ...] = ()) -> str:
     t = (
         text.strip()
@@ -57,6 +75,7 @@ def _prepare(text: str, names: tuple[str, ...] = ()) -> str:
         .replace("π", "pi")
         .replace("ω", "omega")
     )
+    t = _ALIAS.sub(lambda m: _alias(m.group(0), names), t)
     t = re.sub(r"(?<=\d),(?=\d)", ".", t)
     # a percentage: a number with % and nothing after it to take the remainder by (63 %)
     t = re.sub(r"(\d+(?:\.\d*)?|\.\d+)\s*%(?!\s*[\w(.])", r"(\1/100)", t)

@@ -143,6 +143,7 @@ def compare_fields(
     for fld in fields:
         if not fld.compare:
             continue
+        T_used: float | None = None
         own: float | str | None = text(fld.key) if fld.kind == "text" else value(fld.key)
         computed: float | str | None = res.lookup(fld.compare)
         how = why = verdict = ""
@@ -222,6 +223,15 @@ def compare_fields(
         rel = None
         if isinstance(own, float) and isinstance(computed, float) and computed != 0:
             rel = own / computed - 1.0
+        tol = TOLERANCE.get(fld.key)
+        if rel is not None and tol is not None and right is None:
+            right = abs(rel) <= tol
+            if not right:
+                verdict = (
+                    f"wrong: more than the {tol * 100:.0f} % off that reading or rounding explains"
+                )
+                if fld.key == "own.J" and ident and T_used is not None and isinstance(own, float):
+                    verdict += _j_slip(own, T_used, ident.R, ident.f, ident.k_v, ident.k_a)
         if isinstance(lsq, float) and not math.isfinite(lsq):
             lsq = None
         out.append(
@@ -241,6 +251,40 @@ def compare_fields(
             )
         )
     return out
+
+
+TOLERANCE: dict[str, float] = {
+    "own.k_v": 0.10,
+    "own.k_a": 0.10,
+    "own.f": 0.10,
+    "own.omega_step": 0.15,
+    "own.K": 0.10,
+    "own.T": 0.25,
+    "own.J": 0.10,
+    "own.omega_5": 0.10,
+}
+"""How far (relative) each of the group's numbers may be from the value computed their way
+and still be right (farther: marked wrong, ✗ in the list of steps). A value worked out
+from their own readings (k_v, k_a, f from their table, K from their omega_ss, J from their
+T, omega at 5 V from their K) differs only by rounding and by constants read off the table:
+10 %. A reading off the plot differs from the program's: the steady speed of one step
+against the median of all (15 %); T at 63 % of one rise, read with the cursor between
+samples 25 ms apart, against the median over the rises (25 %)."""
+
+
+def _j_slip(own: float, T: float, R: float, f: float, k_v: float, k_a: float) -> str:
+    """Task 13: the usual slip behind a J that is wrong (``own``, kg m^2, against ``T`` s,
+    ``R`` ohm, ``f`` N m s/rad, ``k_v`` V s/rad, ``k_a`` N m/A), as a clause: f put in the
+    formula in mN m s/rad (as the table shows it), or T in ms; '' when neither explains it."""
+    slips = (
+        (f * 1e3, T, "; f goes into this formula in N m s/rad (the table shows mN m s/rad)"),
+        (f, T * 1e3, "; T goes into this formula in s, not ms"),
+    )
+    for f_slip, T_slip, said in slips:
+        J = inertia_from_time_constant(T_slip, R, f_slip, k_v, k_a)
+        if J and abs(own / J - 1.0) <= TOLERANCE["own.J"]:
+            return said
+    return ""
 
 
 MODEL_TOLERANCE = 0.10
@@ -279,6 +323,7 @@ def reveal_keys(fields: Sequence[Field], answered: Collection[str]) -> list[str]
 
 __all__ = [
     "ANSWERED_FIRST",
+    "TOLERANCE",
     "POLICY_FILE",
     "REVEALED_EARLY",
     "Policy",

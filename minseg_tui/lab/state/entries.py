@@ -13,6 +13,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
+from minseg_tui import quantities
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.answers import read_formula
 from minseg_tui.lab.content.expr import formula_fault, parse_formula
@@ -178,6 +179,17 @@ def read_quantity(fld: Field, text: str) -> Parsed:
         ) from None
 
 
+def _echo(fld: Field, text: str, value: float) -> str:
+    """How ``text`` (accepted in the quantity field ``fld``, ``value`` SI) was read, when it
+    is not written as the lab writes it, a number with a decimal point and perhaps the form
+    unit: a decimal comma, a unit spelt out, arithmetic ('5,3 ohm' is "read as 5.3 Ω");
+    '' when it is."""
+    plain = rf"\+?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*(?:{re.escape(fld.unit)})?"
+    if re.fullmatch(plain, text.strip()):
+        return ""
+    return f"read as {quantities.format_reading(value, fld.unit)}"
+
+
 def read_entry(fld: Field, text: str) -> Entry:
     """``text`` typed in field ``fld``, read: accepted with its value, unit, note and
     plausibility warnings, or refused with the one-line message (no time, source, history)."""
@@ -195,7 +207,7 @@ def read_entry(fld: Field, text: str) -> Entry:
                 ok=True,
                 value=p.value,
                 unit=p.unit,
-                message=p.note,
+                message=p.note or _echo(fld, text, p.value),
                 warnings=warnings,
             )
         if fld.kind == "formula":

@@ -649,7 +649,9 @@ class Session:
         done by board checks, its ``done_when`` checks passed), ``wrong``
         (answered, but a checked answer is wrong), ``refused`` (a field shows a text that was
         refused, even over an accepted answer still in effect), ``started`` (something
-        entered), ``todo``, or ``info`` (nothing to enter)."""
+        entered; also a step of the group's own values, Tasks 6-9 and 11-15, while one of
+        them is stored but not judged yet, with nothing computed to compare it with),
+        ``todo``, or ``info`` (nothing to enter)."""
         st = lab_steps.step(step_id)
         if "run_square_wave" in st.actions:
             return "done" if any(r.kind in ("steps", "fast") for r in self._runs) else "todo"
@@ -674,9 +676,12 @@ class Session:
         if not answered:
             return "todo"
         wrong = any(fb.status == "wrong" for fb in self.feedback(step_id))
-        if not wrong and any(f.compare and f.kind == "text" for f in st.fields):
-            wrong = any(c.right is False for c in self.comparisons(step_id))
-        return "wrong" if wrong else "done"
+        if wrong or not any(f.compare for f in st.fields):
+            return "wrong" if wrong else "done"
+        judged = [c.right for c in self.comparisons(step_id) if c.key in self.answered()]
+        if any(r is False for r in judged):
+            return "wrong"
+        return "started" if any(r is None for r in judged) else "done"
 
     # -- the board checks ----------------------------------------------------------------------
 

@@ -271,7 +271,12 @@ def _own(session: Session, c: Comparison, unit: str) -> str:
 
 def _diff(c: Comparison, own: str, against: str) -> str:
     if c.verdict:
-        return ("✓ " if c.right else "✗ ") + c.verdict
+        said = ("✓ " if c.right else "✗ ") + c.verdict
+        return (
+            said
+            if c.rel_diff is None
+            else f"{lab_compare.format_diff(c.rel_diff)}{against}; {said}"
+        )
     if c.rel_diff is not None:
         return lab_compare.format_diff(c.rel_diff) + against
     if own.startswith(NOT_ANSWERED):

@@ -162,10 +162,20 @@ class EntryView:
     feedback: str = ""
 
 
+NOT_JUDGED = "stored, not judged yet: nothing computed to compare it with"
+"""Said under one of the group's own values (Tasks 6-9, 11-15) while the program has no
+value to judge it by (no table, no run yet); its step is then marked started, not ✓."""
+
+
 def _feedback(session: Session, key: str) -> str:
     for fb in session.feedback("*"):
         if fb.key == key and fb.status != "missing":
             return fb.message
+    fld = FIELDS.get(key)
+    if fld is not None and fld.compare and fld.kind != "text" and key in session.answered():
+        owner = next(st.id for st in STEPS if fld in st.fields)
+        if any(c.key == key and c.right is None for c in session.comparisons(owner)):
+            return NOT_JUDGED
     return ""
 
 
@@ -225,7 +235,7 @@ def judged(session: Session, key: str) -> str:
         if fb.key == key and fb.status != "missing":
             return f"marked wrong ({fb.message})" if fb.status == "wrong" else fb.message
     fld = FIELDS.get(key)
-    if fld is not None and fld.compare and fld.kind == "text":
+    if fld is not None and fld.compare:
         owner = next(st.id for st in STEPS if fld in st.fields)
         for c in session.comparisons(owner):
             if c.key == key and c.right is not None:
