@@ -66,7 +66,8 @@ async def test_the_run_list_keeps_the_run_in_use_after_an_interrupted_run(quiet)
         assert f"{cable_run} (80 samples, interrupted: board lost (cable pulled?))" in said
         readings = str(app.screen.query_one("#t-readings").render())
         assert f"▸ {used}" in readings and quit_run in readings and cable_run in readings
-        assert [v.name for v in panel.view or () if v.plotted] == [cable_run]
+        # the plot shows the run in use, not the newest interrupted one (walk 5, 2e6b9df)
+        assert [v.name for v in panel.view or () if v.plotted] == [used]
         texts = [t for t, _, _ in StepCommands(app.screen).entries()]
         assert f"Use run {quit_run} (quit) for Tasks 11-15" in texts
         assert f"Use run {used} for Tasks 11-15" in texts
