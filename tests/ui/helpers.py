@@ -205,6 +205,18 @@ async def start_with_a_run(pilot: Pilot[None], step_id: str) -> None:
     await goto(pilot, step_id)
 
 
+def stored_text(app: LabApp, key: str) -> str:
+    """What the session holds as typed for entry ``key`` ("" when nothing is stored)."""
+    with app.session as s:
+        entry = s.entry(key)
+    return entry.typed if entry is not None else ""
+
+
+def box_text(app: LabApp, key: str) -> str:
+    """What the text box of entry ``key`` on the lab screen shows."""
+    return app.screen.query_one(f"#{field_id(key)}", FieldRow).input.value
+
+
 async def type_in(pilot: Pilot[None], key: str, text: str) -> FieldRow:
     """Type ``text`` into field ``key`` and press Enter; the row, once the lab answered."""
     row = pilot.app.screen.query_one(f"#{field_id(key)}", FieldRow)

@@ -12,24 +12,19 @@ from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.fakes import QuietDevice, frozen_stream
 from tests.ui.helpers import (
+    box_text,
     burst,
     goto,
     settle,
     shown,
     start,
     start_with_a_run,
+    stored_text,
     typing_box,
 )
 
-
-def _typed(app, key: str) -> str:
-    with app.session as s:
-        entry = s.entry(key)
-    return entry.typed if entry is not None else ""
-
-
-def _box(app, key: str) -> str:
-    return app.screen.query_one(f"#{field_id(key)}", FieldRow).input.value
+_typed = stored_text
+_box = box_text
 
 
 async def test_keys_typed_around_pgdn_land_in_their_own_steps(quiet):

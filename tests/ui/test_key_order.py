@@ -15,23 +15,16 @@ from textual.command import CommandPalette
 
 from minseg_tui.lab.saving.store import list_sessions
 from minseg_tui.lab.state.session import Session
-from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import burst, goto, settle, shown, start
+from tests.ui.helpers import box_text, burst, goto, settle, shown, start, stored_text
 
 PLACES = ["entry", "list of steps"]
 """Where the focus is when the value is typed: in the step's entry, or on the list of steps
 (a character typed there goes into the step's first empty entry)."""
 
 
-def _typed(app, key: str) -> str:
-    with app.session as s:
-        entry = s.entry(key)
-    return entry.typed if entry is not None else ""
-
-
-def _box(app, key: str) -> str:
-    return app.screen.query_one(f"#{field_id(key)}", FieldRow).input.value
+_typed = stored_text
+_box = box_text
 
 
 async def _on(pilot, step_id: str, place: str) -> None:
