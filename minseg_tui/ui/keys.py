@@ -121,7 +121,7 @@ KEYMAP: tuple[Key, ...] = (
         "",
         "alt+right,ctrl+right",
         "pick_next",
-        "Step",
+        "Rise",
         panel="moving through the run log",
     ),
     Key("Ctrl+← →", "the same, outside a text entry"),

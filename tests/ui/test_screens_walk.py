@@ -77,7 +77,7 @@ async def test_the_footer_of_tasks_11_to_15_shows_every_key_whole_at_80x24(quiet
         await start_with_a_run(pilot, step_id)
         await settle(pilot)
         shown = _whole(app)
-        for key in ("f1 Help", "f2 STOP", "f8 Export", "f9 Zoom", "alt+→ Step", "^r Reveal"):
+        for key in ("f1 Help", "f2 STOP", "f8 Export", "f9 Zoom", "alt+→ Rise", "^r Reveal"):
             assert key in shown, shown
         app.screen.query_one(ResponsePlot).focus()
         await settle(pilot)

@@ -395,7 +395,7 @@ def run_used(session: Session) -> str:
     choice, or the newest complete run), and what interrupted it when it ended early."""
     run = session.response_run()
     if run is None:
-        return "Tasks 11-15 and the model check have no run to use: no step run recorded yet (Task 10)."
+        return "Tasks 11-15 and the model check have no run to use: no run recorded yet (Task 10)."
     ts, manual = format_quantity(run.ts, "ms", 2), format_quantity(RunPlan().ts, "ms", 2)
     if session.chosen_run() == run.name:
         why = "chosen by the group"

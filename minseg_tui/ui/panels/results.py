@@ -163,7 +163,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         self.query_one("#cursor", Prose).display = False
         if v.t.size == 0:
             plot.show([])
-            note.update("no step run yet (Task 10)")
+            note.update("no run recorded yet (Task 10)")
             return
         if self.zoom is None or not v.rises:
             plot.set_axes("run log", "t [s]")
