@@ -21,12 +21,11 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import check_words, own_first
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
-from minseg_tui.model.check.effects import UNITS, in_words
+from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import ResponseResult, Rise
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
-    format_interval,
     format_number,
     format_quantity,
     format_reading,
@@ -400,16 +399,9 @@ def _run_figure(log: RunLog, name: str) -> Figure:
 
 
 def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | None = None) -> str:
-    """Parameters with their units (:data:`minseg_tui.model.check.effects.UNITS`) and, when
-    given, their 95 % intervals."""
-    out = []
-    for k, v in p.items():
-        unit = UNITS.get(k, "")
-        text = f"{k} = {_num(v)} {unit}".rstrip()
-        if intervals and k in intervals:
-            text += f" (95 %: {format_interval(*intervals[k], unit)})"
-        out.append(text)
-    return ", ".join(out)
+    """Parameters as the screen's details give them (:func:`check_words.params`: T and the
+    delays in ms) and, when given, their 95 % intervals."""
+    return check_words.params(p, intervals)
 
 
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:

@@ -33,7 +33,6 @@ from minseg_tui.lab.state.entries import read_entry
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
-from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.identify.identification import determined
@@ -896,7 +895,7 @@ def _figure(gain: Gain, key: str, named: bool) -> str | None:
 
 
 def _params(params: Mapping[str, float]) -> str:
-    return ", ".join(f"{k} = {format_value(v, check_units.get(k, ''))}" for k, v in params.items())
+    return check_words.params(params)
 
 
 def check(session: Session) -> CheckView:
