@@ -244,6 +244,7 @@ def _table_section(session: Session) -> Section:
         sec.blocks.append(
             Table(own_first.TABLE_HEADER, tuple(r.cells for r in own_first.table_rows(session)))
         )
+        sec.blocks.append(own_first.MARKS_SAID)
     return sec
 
 
@@ -269,6 +270,7 @@ def _step_section(session: Session) -> Section:
         "program's least-squares value:"
     )
     sec.blocks.append(Table(own_first.STEP_HEADER, tuple(r.cells for r in rows)))
+    sec.blocks.append(own_first.MARKS_SAID)
     sec.blocks.append(own_first.policy_in_force(session)[0])
     sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
     if s.T_63_note:
