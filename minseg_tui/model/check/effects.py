@@ -426,10 +426,13 @@ def limit_words(log: ev.Log, ext: Fit) -> str:
             f"; the same motor without a cap would start at K u/T = "
             f"{abs(ext.K) * jump / ext.T:.3g} rad/s^2, steepest at once"
         )
+    edges = np.flatnonzero(np.diff(log.u) != 0) + 1
+    # a step down (|u| falls, or u reverses): the only place a log shows how the drive brakes
+    down = any(abs(log.u[k]) < abs(log.u[k - 1]) or log.u[k] * log.u[k - 1] < 0 for k in edges)
     both = (
         " both ways (braking after a step down is capped too: the speed falls along a ramp "
         "as well, which a cap on accelerating alone does not fit as well)"
-        if ext.effects.cap_both
+        if ext.effects.cap_both and down
         else ""
     )
     return (
