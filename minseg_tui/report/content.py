@@ -22,11 +22,11 @@ from minseg_tui.lab.views import check_words, own_first
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import UNITS, in_words
+from minseg_tui.model.check.text import bound_words, interval_words, value_words
 from minseg_tui.model.identify import ResponseResult, Rise
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
-    format_interval,
     format_number,
     format_quantity,
     format_reading,
@@ -405,9 +405,13 @@ def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | Non
     out = []
     for k, v in p.items():
         unit = UNITS.get(k, "")
-        text = f"{k} = {_num(v)} {unit}".rstrip()
-        if intervals and k in intervals:
-            text += f" (95 %: {format_interval(*intervals[k], unit)})"
+        value = value_words(k, v) if k == "taps" else _num(v)
+        text = f"{k} = {value} {unit}".rstrip()
+        bound = bound_words(k, v)
+        if bound is not None:
+            text += f" ({bound})"
+        elif intervals and k in intervals:
+            text += f" (95 %: {interval_words(k, *intervals[k], unit, DIGITS, ' – ')})"
         out.append(text)
     return ", ".join(out)
 

@@ -3,10 +3,12 @@ valid logs from the independent generator (tests/model/physics_gen.py), each rea
 assistant reads ``minseg-tui analyze``, and the sentence that was false on it pinned."""
 
 import math
+import re
+from dataclasses import replace
 
 import numpy as np
 
-from minseg_tui.model.check import check, text
+from minseg_tui.model.check import CheckResult, check, text
 from tests.model import physics_gen as pg
 
 
@@ -55,3 +57,51 @@ def test_reversals_are_not_said_to_be_one_driven_level_without_a_step_down():
     judged = {c.cause: c.text for c in r.finding.caveats if c.kind == "cannot_judge"}
     if "coulomb_friction" in judged:
         assert "one size of voltage only (12 V, forward and reversed)" in judged["coulomb_friction"]
+
+
+def _steps_check() -> CheckResult:
+    """The check of a 0/4 V square wave with a 60 ms dead time (named dead_time)."""
+    at = [0.5, 1.5, 2.5, 3.5, 4.5]
+    vals = [4.0, 0.0, 4.0, 0.0, 4.0]
+    t, u, omega = _log(_motor(delay=0.06), at, vals, 5.2)
+    return check(t, u, omega, ts=0.01, cpr=720)
+
+
+def test_an_interval_over_a_factor_of_ten_and_a_t_on_its_bound_are_not_printed_as_numbers():
+    # the issue's log: glitch rows pulled T to its 2 ms bound, printed with the interval
+    # '95 %: 2e-7-20 s'; and a filter's T printed as '95 %: 2.76e-24-2.62e+22'. The words of
+    # such a fit (the same result with those numbers put in) say what is true instead
+    r = _steps_check()
+    assert r.finding.cause == "dead_time"
+    base = replace(
+        r.baseline,
+        params={**r.baseline.params, "T": 0.002},
+        intervals={**r.baseline.intervals, "T": (2e-7, 20.0)},
+    )
+    lo = r.extended.params["delay"] / 30.0
+    ext = replace(
+        r.extended, intervals={**r.extended.intervals, "delay": (lo, 3e3 * lo), "T": (0, 0.2)}
+    )
+    words = text(replace(r, baseline=base, extended=ext))
+    baseline = next(s for s in words.splitlines() if s.startswith("Baseline"))
+    extended = next(s for s in words.splitlines() if s.startswith("Extended model"))
+    assert "T = 0.002000 s (on the lower end of the range the fit tries" in baseline
+    assert "2e-07" not in baseline and "2.00e-07" not in baseline
+    assert "delay = " in extended and extended.count("not determined by this log") == 2
+    # a determined interval still reads as numbers
+    assert re.search(r"K = [\d.]+ rad/s/V \(95 %: [\d.]+-[\d.]+\)", extended)
+
+
+def test_a_moving_average_of_one_length_only_is_not_said_to_be_undetermined():
+    # rtl-dc-5to15V: 'taps = 23.00 samples (95 %: not determined: the interval has no width)'
+    # where the width 0 meant that no length but 23 fits as well: the length is determined
+    r = _steps_check()
+    fx = replace(
+        r.extended,
+        model="first_order+velocity_filter",
+        params={"T": 0.08, "K": 15.0, "taps": 23.0},
+        intervals={"T": (0.07, 0.09), "K": (14.9, 15.1), "taps": (23.0, 23.0)},
+    )
+    words = text(replace(r, extended=fx))
+    assert "taps = 23 samples (95 %: 23 only: no other length fits as well)" in words
+    assert "no width" not in words
