@@ -105,3 +105,21 @@ def test_a_moving_average_of_one_length_only_is_not_said_to_be_undetermined():
     words = text(replace(r, extended=fx))
     assert "taps = 23 samples (95 %: 23 only: no other length fits as well)" in words
     assert "no width" not in words
+
+
+def test_a_coast_that_never_falls_to_half_is_not_said_to():
+    # independent generator, seed 11: a 5-tap average with coasting (T_coast 0.96 s) at 10 ms;
+    # after the drop at 10.41 s the wheel coasts from 68 rad/s and is driven again 0.42 s
+    # later at 45 rad/s, never under half. The evidence said "a line through the speed from
+    # the row before the drop to the first reading under half, 390 ms after the drop"
+    lg = pg.make(11, ("velocity_filter", "coast_on_zero"), artefacts=False)
+    r = check(lg.t, lg.u, lg.omega, ts=lg.ts, cpr=lg.cpr)
+    assert r.finding.cause == "coast_on_zero"
+    m = re.search(r"drops to 0 at t = ([\d.]+) s", r.finding.evidence)
+    assert m
+    a = int(np.searchsorted(lg.t, float(m.group(1)) - 1e-6))
+    nxt = a + int(np.flatnonzero(lg.u[a:] != 0)[0])
+    w0 = float(np.mean(lg.omega[a - 10 : a]))
+    assert np.all(np.abs(lg.omega[a:nxt]) > 0.5 * w0)  # the log: never under half
+    assert "first reading under half" not in r.finding.evidence
+    assert f"staying above half of its {w0:.3g} rad/s" in r.finding.evidence
