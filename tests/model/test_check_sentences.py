@@ -5,6 +5,7 @@ assistant reads ``minseg-tui analyze``, and the sentence that was false on it pi
 import math
 import re
 from dataclasses import replace
+from functools import cache
 
 import numpy as np
 
@@ -107,13 +108,18 @@ def test_a_moving_average_of_one_length_only_is_not_said_to_be_undetermined():
     assert "no width" not in words
 
 
+@cache
+def _seed11() -> tuple[pg.PhysLog, CheckResult]:
+    lg = pg.make(11, ("velocity_filter", "coast_on_zero"), artefacts=False)
+    return lg, check(lg.t, lg.u, lg.omega, ts=lg.ts, cpr=lg.cpr)
+
+
 def test_a_coast_that_never_falls_to_half_is_not_said_to():
     # independent generator, seed 11: a 5-tap average with coasting (T_coast 0.96 s) at 10 ms;
     # after the drop at 10.41 s the wheel coasts from 68 rad/s and is driven again 0.42 s
     # later at 45 rad/s, never under half. The evidence said "a line through the speed from
     # the row before the drop to the first reading under half, 390 ms after the drop"
-    lg = pg.make(11, ("velocity_filter", "coast_on_zero"), artefacts=False)
-    r = check(lg.t, lg.u, lg.omega, ts=lg.ts, cpr=lg.cpr)
+    lg, r = _seed11()
     assert r.finding.cause == "coast_on_zero"
     m = re.search(r"drops to 0 at t = ([\d.]+) s", r.finding.evidence)
     assert m
@@ -123,3 +129,17 @@ def test_a_coast_that_never_falls_to_half_is_not_said_to():
     assert np.all(np.abs(lg.omega[a:nxt]) > 0.5 * w0)  # the log: never under half
     assert "first reading under half" not in r.finding.evidence
     assert f"staying above half of its {w0:.3g} rad/s" in r.finding.evidence
+
+
+def test_the_noise_floor_of_an_averaged_speed_says_it_is_not_the_counts_floor():
+    # the same log: 'Log: ... a noise floor of 0.713 rad/s' (one count per sample), then the
+    # gain's details 'noise floor 0.143 rad/s' without a word: the floor of the 5-sample average
+    _, r = _seed11()
+    assert "velocity_filter" in {o.cause for o in r.finding.others}
+    words = text(r)
+    counts = r.sampling.floor
+    assert f"a noise floor of {counts:.3g} rad/s" in words
+    assert (
+        f"noise floor {r.gain.noise_floor:.3g} rad/s (the counts' {counts:.3g} rad/s over the "
+        "5-sample average)" in words
+    )

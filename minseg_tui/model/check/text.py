@@ -141,7 +141,14 @@ def text(r: CheckResult) -> str:
     floor = g.noise_floor
     noise = g.noise
     if floor is not None:
-        rest.append(f"noise floor {floor:.3g} rad/s")
+        counts = r.sampling.floor if r.sampling is not None else None
+        taps = round(e.params.get("taps", 1.0))
+        over = (
+            f" (the counts' {counts:.3g} rad/s over the {taps}-sample average)"
+            if counts is not None and taps > 1 and floor < counts
+            else ""
+        )
+        rest.append(f"noise floor {floor:.3g} rad/s{over}")
     if noise is not None:
         rest.append(f"scatter {noise:.3g} rad/s")
     rest.append(f"rms error {_pair(r, 'extended_rmse')}")
