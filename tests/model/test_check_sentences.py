@@ -8,9 +8,14 @@ from dataclasses import replace
 from functools import cache
 
 import numpy as np
+import pytest
 
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.check import CheckResult, check, text
+from minseg_tui.model.identify import identify
 from tests.model import physics_gen as pg
+from tests.model.identgen import table
+from tests.shared_data import SHARED_DATA
 
 
 def _motor(delay: float = 0.0, tau_f: float = 0.0) -> pg.Motor:
@@ -157,3 +162,18 @@ def test_a_scatter_the_simulation_follows_is_not_called_noise_no_model_explains(
     assert r.extended.rmse < 0.2 * r.gain.noise
     assert noise and "no model of the motor explains" not in noise[0]
     assert f"follows it to {r.extended.rmse:.3g} rad/s rms" in noise[0]
+
+
+@pytest.mark.shared_data
+@pytest.mark.parametrize("name", ["ubc-motor-7V", "ev3-large-duty30"])
+def test_identify_does_not_speak_of_falling_edges_a_log_has_not(name):
+    # one step up from rest, no step down: identify said "one first-order model fits the
+    # whole log as well as the steps fitted one by one do (...), so every edge, rising and
+    # falling, is used"
+    log = read_run_log(SHARED_DATA / "real-motors" / name / "step.csv")
+    r = identify(table(72.0), 5.3, log)
+    assert r.step is not None
+    why = r.step.fit.why
+    assert "fits the whole log as well as the rise fitted alone does" in why
+    assert "rising and falling" not in why and "one by one" not in why
+    assert "the log has 1 rising edge and no falling one" in why
