@@ -12,6 +12,7 @@ import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.check import CheckResult, check, text
+from minseg_tui.model.check.figures import lead
 from minseg_tui.model.identify import identify
 from tests.model import physics_gen as pg
 from tests.model.identgen import table
@@ -65,6 +66,7 @@ def test_reversals_are_not_said_to_be_one_driven_level_without_a_step_down():
         assert "one size of voltage only (12 V, forward and reversed)" in judged["coulomb_friction"]
 
 
+@cache
 def _steps_check() -> CheckResult:
     """The check of a 0/4 V square wave with a 60 ms dead time (named dead_time)."""
     at = [0.5, 1.5, 2.5, 3.5, 4.5]
@@ -177,3 +179,15 @@ def test_identify_does_not_speak_of_falling_edges_a_log_has_not(name):
     assert "fits the whole log as well as the rise fitted alone does" in why
     assert "rising and falling" not in why and "one by one" not in why
     assert "the log has 1 rising edge and no falling one" in why
+
+
+def test_a_held_out_error_that_gets_worse_is_said_to():
+    # the issue: 'Gain: error on held-out steps 1.16 -> 1.29 rad/s (leads because the models
+    # predict steps they were not fitted on: the honest judge of a gain)', without a word
+    # that the named cause made the prediction of the held-out steps worse
+    r = _steps_check()
+    assert r.lead is not None and r.lead.figure == "heldout_extended_rmse"
+    assert "worse" not in r.lead.why  # 60 ms dead time: held out, the delay predicts better
+    worse = replace(r.gain, heldout_baseline_rmse=1.16, heldout_extended_rmse=1.29)
+    why = lead(worse, True).why
+    assert "here the extended model predicts them worse (1.16 -> 1.29 rad/s)" in why
