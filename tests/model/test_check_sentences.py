@@ -35,16 +35,30 @@ def _motor(delay: float = 0.0, tau_f: float = 0.0) -> pg.Motor:
 
 
 def _log(
-    m: pg.Motor, at: list[float], vals: list[float], t_end: float, ts: float = 0.01, cpr: int = 720
+    m: pg.Motor,
+    at: list[float],
+    vals: list[float],
+    t_end: float,
+    ts: float = 0.01,
+    cpr: int = 720,
+    stall: tuple[int, float] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(t s, u V, omega rad/s): late-only jitter of 0.3 ms, Euler speed of counts over ts."""
+    """(t s, u V, omega rad/s): late-only jitter of 0.3 ms, Euler speed of counts over ts;
+    ``stall`` (row, gap s): the logger stalls before that row, whose counts are read 0.8 of
+    the gap before its timestamp."""
     rng = np.random.default_rng(1)
     n = int(t_end / ts)
     t = np.arange(n) * ts + rng.uniform(0.0, 3e-4, n)
+    t_count = t.copy()
+    if stall is not None:
+        r0, gap = stall
+        t[r0:] += gap
+        t_count[r0:] += gap
+        t_count[r0] -= 0.8 * gap
     grid, _, th = pg.simulate(
         m, float(t[-1]) + ts, np.array(at), np.array(vals), (math.inf, math.inf, 0.0)
     )
-    counts = np.floor(np.interp(t, grid, th) * cpr / (2 * math.pi) + 0.37)
+    counts = np.floor(np.interp(t_count, grid, th) * cpr / (2 * math.pi) + 0.37)
     omega = np.concatenate(([0.0], np.diff(counts) * 2 * math.pi / cpr / ts))
     idx = np.searchsorted(np.array(at), t, side="right") - 1
     u = np.where(idx >= 0, np.array(vals)[np.maximum(idx, 0)], 0.0)
@@ -93,7 +107,7 @@ def test_an_interval_over_a_factor_of_ten_and_a_t_on_its_bound_are_not_printed_a
     words = text(replace(r, baseline=base, extended=ext))
     baseline = next(s for s in words.splitlines() if s.startswith("Baseline"))
     extended = next(s for s in words.splitlines() if s.startswith("Extended model"))
-    assert "T = 0.002000 s (on the lower end of the range the fit tries" in baseline
+    assert "T = 2.000 ms (on the lower end of the range the fit tries, 0.002000-3.000 s" in baseline
     assert "2e-07" not in baseline and "2.00e-07" not in baseline
     assert "delay = " in extended and extended.count("not determined by this log") == 2
     # a determined interval still reads as numbers
@@ -191,3 +205,36 @@ def test_a_held_out_error_that_gets_worse_is_said_to():
     worse = replace(r.gain, heldout_baseline_rmse=1.16, heldout_extended_rmse=1.29)
     why = lead(worse, True).why
     assert "here the extended model predicts them worse (1.16 -> 1.29 rad/s)" in why
+
+
+def test_a_stall_spike_left_out_is_left_out_of_every_figure():
+    # a 0/4 V square wave whose logger stalls 60 ms at 5 s, in a driven stretch, reading the
+    # counts of the row after the gap 48 ms before its timestamp: rows 500 and 501 read
+    # -287 and +287 rad/s off the model. It said "row 500 ... left out of the fit" while
+    # the headline's rmse and fit were "over all 720 rows" (the two rows repaired with the
+    # model's values) and the regions under it counted 718
+    at = [0.5, 1.5, 2.5, 3.5, 4.5, 5.5, 6.5]
+    vals = [4.0, 0.0, 4.0, 0.0, 4.0, 0.0, 4.0]
+    t, u, omega = _log(_motor(), at, vals, 7.2, stall=(500, 0.06))
+    r = check(t, u, omega, ts=0.01, cpr=720)
+    words = text(r)
+    art = [a for a in r.anomalies if a.kind == "logging_artefact"]
+    assert art and art[0].row == 500 and "rows 500-501 left out of the fit" in art[0].text
+    assert "hand" not in words
+    assert r.baseline.rows == 718 == sum(d.rows for d in r.deviations)
+    assert "over the 718 of 720 rows the fit used (2 left out, see the anomalies)" in words
+
+
+def test_times_under_a_second_are_in_ms_in_the_parameters_as_in_the_evidence():
+    # n20-12v-pwm25 read 'T = 0.08836 s', 'T_coast = 0.2468 s' on the model's line, and
+    # 'a braked motor (T = 88 ms)', 'a time constant of 0.247 s' in the evidence: the same
+    # quantities in s in one place and ms in the next; now ms wherever under a second
+    _, r = _seed11()
+    words = text(r)
+    ext = next(s for s in words.splitlines() if s.startswith("Extended model"))
+    T, tc = r.extended.params["T"], r.extended.params["T_coast"]
+    assert tc < 1.0
+    assert f"T = {1e3 * T:.4g} ms" in ext and f"T_coast = {1e3 * tc:.4g} ms" in ext
+    assert f"(T = {1e3 * T:.0f} ms)" in r.finding.evidence
+    assert f"a time constant of {1e3 * tc:.0f} ms at zero command" in r.finding.evidence
+    assert not re.search(r"\b0\.\d+ s\b", ext)

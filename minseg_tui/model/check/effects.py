@@ -285,11 +285,16 @@ VELOCITY_FILTER = Candidate(
 )
 
 
+def _span(x: float) -> str:
+    """A duration (s) as the check's sentences write it: in ms under a second."""
+    return ev.ms(x) if x < 1.0 else f"{x:.3g} s"
+
+
 def coast_words(log: ev.Log, ext: Fit) -> str:
     tc = ext.params["T_coast"]
     s = ev.shown_stop(log, ev.drops_to_zero)
     if s is None:
-        return f"the wheel runs down slowly at zero command (time constant {tc:.3g} s)"
+        return f"the wheel runs down slowly at zero command (time constant {_span(tc)})"
     decel, span, half = _fall_rate(log, s)
     a, w0 = s.row, abs(s.speed)
     after = ev.ms(span - float(log.t[a] - log.t[a - 1]))
@@ -303,7 +308,7 @@ def coast_words(log: ev.Log, ext: Fit) -> str:
         f"right after the command drops to 0 at t = {log.t[a]:.3f} s the speed falls at "
         f"{decel:.3g} rad/s^2 (a line through the speed {line}), where a braked motor (T = "
         f"{ev.ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
-        f"wheel coast, with a time constant of {tc:.3g} s at zero command"
+        f"wheel coast, with a time constant of {_span(tc)} at zero command"
     )
 
 

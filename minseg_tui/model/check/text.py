@@ -66,14 +66,20 @@ def value_words(k: str, v: float) -> str:
 
 
 def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | None = None) -> str:
+    """Each parameter with its unit and 95 % interval; a time under a second in ms, as the
+    evidence sentences and ``identify`` write it (the JSON keeps seconds)."""
     out = []
     for k, v in p.items():
-        s = f"{k} = {value_words(k, v)} {UNITS.get(k, '')}".rstrip()
+        unit, scale = UNITS.get(k, ""), 1.0
+        if unit == "s" and abs(v) < 1.0:
+            unit, scale = "ms", 1e3
+        s = f"{k} = {value_words(k, v * scale)} {unit}".rstrip()
         bound = bound_words(k, v)
         if bound is not None:
             s += f" ({bound})"
         elif intervals and k in intervals:
-            s += f" (95 %: {interval_words(k, *intervals[k])})"
+            lo, hi = intervals[k]
+            s += f" (95 %: {interval_words(k, lo * scale, hi * scale)})"
         out.append(s)
     return ", ".join(out)
 
