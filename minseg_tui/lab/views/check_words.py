@@ -26,7 +26,13 @@ from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
 from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.figures import Gain
-from minseg_tui.quantities import format_constant, format_constant_interval, format_value
+from minseg_tui.model.check.text import bound_words, interval_words, value_words
+from minseg_tui.quantities import (
+    NOT_DETERMINED,
+    format_constant,
+    format_constant_interval,
+    format_value,
+)
 
 FloatArray = NDArray[np.float64]
 
@@ -226,9 +232,19 @@ def params(
     out = []
     for k, v in p.items():
         unit = check_units.get(k, "")
-        text = f"{k} = {format_constant(v, unit)}"
-        if intervals and k in intervals:
-            text += f" (95 %: {format_constant_interval(*intervals[k], unit)})"
+        text = (
+            f"{k} = {value_words(k, v)} {unit}".rstrip()
+            if k == "taps"
+            else f"{k} = {format_constant(v, unit)}"
+        )
+        bound = bound_words(k, v)
+        if bound is not None:
+            text += f" ({bound})"
+        elif intervals and k in intervals:
+            lo, hi = intervals[k]
+            words = interval_words(k, lo, hi, unit)
+            numbers = k != "taps" and not words.startswith(NOT_DETERMINED)
+            text += f" (95 %: {format_constant_interval(lo, hi, unit) if numbers else words})"
         out.append(text)
     return ", ".join(out)
 
