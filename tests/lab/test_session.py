@@ -22,6 +22,7 @@ from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.saving.runs import applied_voltage, read_partial
 from minseg_tui.lab.saving.store import SessionDamaged, SessionLocked, SessionMissing, list_sessions
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import PlantParams, record
 
 HERE = Path(__file__).parent
@@ -603,3 +604,42 @@ def test_the_computed_value_stands_in_the_unit_the_group_typed_theirs_in(tmp_pat
         (_, yours, computed), *_ = [c for c in views.comparisons(s, "task12") if c[1] != "—"]
         first = computed.splitlines()[0]  # the second line is the least-squares T
         assert yours == "0.057" and " s (" in first and " ms" not in first
+
+
+def test_unticking_every_answer_leaves_the_question_unanswered(tmp_path):
+    """Walk 6: every box of summary.5 unticked showed none ticked while 'b' stayed in
+    effect, refused in the file's letters ("expected one or more of a/b/c; got '' (still
+    using 'b')"). Now no answer ticked is no answer stored, as the list shows it."""
+    with Session.create(tmp_path, ["A"]) as s:
+        s.choose("summary.5", [1])
+        assert s.step_status("summary") == "started"
+        assert s.choose("summary.5", []) is None
+        assert s.entry("summary.5") is None
+        assert views.entry(s, "summary.5") is None
+        assert s.choose("summary.5", []) is None  # nothing to untick: nothing changes
+        assert s.choose("summary.5", [1, 2]).value == (1, 2)
+    with Session.open(s.folder) as again:
+        assert again.entry("summary.5").value == (1, 2)
+        with pytest.raises(KeyError):
+            again.choose("nope", [])
+
+
+def test_a_refused_choice_is_said_in_the_answers_words(tmp_path):
+    """A refusal on a question names its answers as the screen shows them, never by the
+    letters the session file keeps them in."""
+    with Session.create(tmp_path, ["A"]) as s:
+        s.choose("summary.5", [1])
+        s.enter("summary.5", "")
+        said = views.entry(s, "summary.5").message
+        assert said.endswith(": no answer ticked (still using 'the input amplitude')")
+        s.choose("summary.1", [1])
+        s.enter("summary.1", "a, b")
+        said = views.entry(s, "summary.1").message
+        assert said.endswith(
+            ": pick one answer, not 2: 'a model' and 'a system' (still using 'a system')"
+        )
+        s.enter("summary.3", "z")
+        said = views.entry(s, "summary.3").message
+        assert "'z' names none of the answers: 'how fast the system reacts" in said
+        for letters in ("a/b", "'b'", "expected one"):
+            assert letters not in said

@@ -9,7 +9,7 @@ refused text displace an accepted one. Pure functions: the session stores and sa
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -190,6 +190,21 @@ def _echo(fld: Field, text: str, value: float) -> str:
     return f"read as {quantities.format_reading(value, fld.unit)}"
 
 
+def choice_words(fld: Field, chosen: Sequence[int]) -> str:
+    """Options ``chosen`` (0-based) of choice field ``fld`` in their own words, quoted, as
+    the screen and the report show them: "'the input amplitude' and 'the static gain'"."""
+    words = [repr(fld.options[k]) for k in chosen if 0 <= k < len(fld.options)]
+    return " and ".join(words) if len(words) < 3 else ", ".join(words[:-1]) + " and " + words[-1]
+
+
+def _no_choice(fld: Field, text: str) -> str:
+    """Why ``text`` names no answer of choice field ``fld``, in the answers' words (the
+    letters are only how the session file keeps a choice)."""
+    if not text.strip():
+        return "no answer ticked" if fld.multiple else "no answer picked"
+    return f"{text.strip()!r} names none of the answers: " + ", ".join(map(repr, fld.options))
+
+
 def read_entry(fld: Field, text: str) -> Entry:
     """``text`` typed in field ``fld``, read: accepted with its value, unit, note and
     plausibility warnings, or refused with the one-line message (no time, source, history)."""
@@ -217,14 +232,11 @@ def read_entry(fld: Field, text: str) -> Entry:
         try:
             chosen = parse_choice(text, len(fld.options))
         except ValueError:
-            letters = "/".join(chr(ord("a") + k) for k in range(len(fld.options)))
-            raise InputError(
-                fld.label,
-                None,
-                f"expected {'one or more of' if fld.multiple else 'one of'} {letters}; got {text.strip()!r}",
-            ) from None
+            raise InputError(fld.label, None, _no_choice(fld, text)) from None
         if len(chosen) > 1 and not fld.multiple:
-            raise InputError(fld.label, None, f"expected one answer; got {len(chosen)}")
+            raise InputError(
+                fld.label, None, f"pick one answer, not {len(chosen)}: {choice_words(fld, chosen)}"
+            )
         return Entry(fld.key, text, ok=True, value=chosen)
     except InputError as exc:
         return Entry(fld.key, text, ok=False, message=str(exc))

@@ -622,9 +622,18 @@ class Session:
         self._changed()
         return True
 
-    def choose(self, key: str, options: Sequence[int]) -> Entry:
-        """Pick option indices (0-based) of a choice field; saved. Same as typing letters."""
-        return self.enter(key, ", ".join(chr(ord("a") + k) for k in options))
+    def choose(self, key: str, options: Sequence[int]) -> Entry | None:
+        """Pick option indices (0-based) of a choice field; saved. Same as typing letters.
+        No option (every box of a list to tick unticked): the question is not answered any
+        more, as the list shows it (None); its earlier answer is not kept in effect."""
+        if options:
+            return self.enter(key, ", ".join(chr(ord("a") + k) for k in options))
+        if key not in FIELDS:
+            raise KeyError(key)
+        self._change()
+        if self._entries.pop(key, None) is not None:
+            self._changed()
+        return None
 
     def parsed(self) -> dict[str, object]:
         """Accepted values by key, as checks use them (floats, Formulas, option tuples)."""

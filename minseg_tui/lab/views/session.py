@@ -29,7 +29,7 @@ from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state import shown as lab_shown
-from minseg_tui.lab.state.entries import read_entry
+from minseg_tui.lab.state.entries import choice_words, read_entry
 from minseg_tui.lab.state.results import Comparison
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
@@ -246,8 +246,13 @@ def under_entry(session: Session, c: Comparison) -> str:
 
 def _verdict(e: Entry, feedback: str) -> EntryView:
     if e.refused:  # a refused attempt over an accepted entry: say so, and what still counts
+        fld = FIELDS.get(e.key)
+        if fld is not None and fld.options and isinstance(e.value, tuple):
+            using = choice_words(fld, e.value)  # the answers' words, not the file's letters
+        else:
+            using = repr(e.text.strip())
         return EntryView(
-            False, f"{e.refused[1]} (still using {e.text.strip()!r})", tuple(e.warnings), feedback
+            False, f"{e.refused[1]} (still using {using})", tuple(e.warnings), feedback
         )
     return EntryView(e.ok, e.message, tuple(e.warnings), feedback)
 
