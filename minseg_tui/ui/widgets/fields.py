@@ -81,30 +81,73 @@ def _mid_word(widget: Answers | Ticks, event: events.Key) -> bool:
     return word
 
 
+def _moved_on(widget: Answers | Ticks, event: events.Key) -> bool:
+    """Whether ``event``, read by a list of answers, is not the list's to act on: a key typed
+    after a key that moved the focus away (Tab in the same burst; the app handed it to the
+    list while the list still had the focus) goes where the focus is now, and Tab or
+    Shift+Tab moves the focus at once (by the step's form), so that the keys after it
+    follow it. Walk 6: 'Enter Tab Down Enter' on the summary's first question moved the
+    cursor and picked a second answer there, and the second question stayed blank."""
+    focused = widget.screen.focused
+    if focused is not widget:
+        event.stop()
+        event.prevent_default()
+        if focused is not None:
+            focused.post_message(events.Key(event.key, event.character))
+        return True
+    if event.key in ("tab", "shift+tab"):
+        form = next((a for a in widget.ancestors if isinstance(a, FieldForm)), None)
+        if form is not None:
+            event.stop()
+            event.prevent_default()
+            form.move_focus(1 if event.key == "tab" else -1, widget)
+            return True
+    return False
+
+
 class Answers(RadioSet):
     """A list of answers of which one is picked. Its keys (the arrows, Space, Enter) act as
     the list reads them, in the order typed, and a pick goes to the lab at once
     (:meth:`FieldRow.take_choice`): Textual would run them through the list's bindings only
     once the key has bubbled up to the app, after a key bound with priority typed after
-    them (Space then PgDn in one burst moved on first, and the tick was lost)."""
+    them (Space then PgDn in one burst moved on first, and the tick was lost).
+
+    Space or Enter picks the answer under the cursor and clears the others at once
+    (:meth:`pick`): Textual's RadioSet clears the answer picked before only when it reads the
+    button's message, after the keys already queued, and a second Enter in the same burst on
+    the answer picked before turned it off there, then on again: two answers marked, and
+    Enter on the second did nothing after (walk 6)."""
 
     _word = False
     """A character went up to the form through the list and no key acted here since."""
 
     async def on_key(self, event: events.Key) -> None:
-        if _mid_word(self, event):
+        if _moved_on(self, event) or _mid_word(self, event):
             return
         bindings = [b for b in self._bindings.key_to_bindings.get(event.key, ()) if not b.priority]
         if not bindings:
             return
         event.stop()
         event.prevent_default()
-        buttons = list(self.query(RadioButton))
-        before = [b.value for b in buttons]
+        if event.key in ("space", "enter"):
+            if self._selected is not None and self.pick(self._selected):
+                if isinstance(self.parent, FieldRow):
+                    self.parent.take_choice((self._selected,))
+            return
         await self.app.run_action(bindings[0].action, self)
-        picked = [k for k, b in enumerate(buttons) if b.value and not before[k]]
-        if picked and isinstance(self.parent, FieldRow):
-            self.parent.take_choice((picked[0],))
+
+    def pick(self, index: int) -> bool:
+        """Answer ``index`` (0-based) marked as picked and every other not, at once, without
+        the buttons' messages (the row hands the pick to the lab); False: it was already the
+        one picked."""
+        buttons = list(self.query(RadioButton))
+        if all(b.value == (k == index) for k, b in enumerate(buttons)):
+            return False
+        with self.prevent(RadioButton.Changed):
+            for k, b in enumerate(buttons):
+                b.value = k == index
+        self._pressed_button = buttons[index]
+        return True
 
 
 class Ticks(SelectionList[int]):
@@ -117,7 +160,7 @@ class Ticks(SelectionList[int]):
     """A character went up to the form through the list and no key acted here since."""
 
     async def on_key(self, event: events.Key) -> None:
-        if _mid_word(self, event):
+        if _moved_on(self, event) or _mid_word(self, event):
             return
         key = event.key
         if key in ("space", "enter"):
