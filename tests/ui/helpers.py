@@ -17,6 +17,7 @@ from textual import events
 from textual.keys import _character_to_key
 from textual.message import Message
 from textual.pilot import Pilot
+from textual.widgets import OptionList
 from textual.worker import WorkerCancelled
 
 from minseg_tui.device.samples import SampleBatch
@@ -325,3 +326,9 @@ def heard_notifications(app) -> list[str]:
 
     app.notify = keep
     return said
+
+
+def nav_mark(app: LabApp, step_id: str) -> str:
+    """The mark before step ``step_id`` in the list of steps (✓, ✗, ?, … or a blank)."""
+    nav = app.screen.query_one("#nav", OptionList)
+    return str(nav.get_option(step_id).prompt)[0]
