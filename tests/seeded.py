@@ -21,10 +21,10 @@ HIGH = 4.5
 
 
 class Clock:
-    """A clock that ticks one second per call, from 2026-11-22 10:00 UTC."""
+    """A clock that ticks one second per call, from ``start`` (2026-11-22 10:00 UTC)."""
 
-    def __init__(self) -> None:
-        self.t = datetime(2026, 11, 22, 10, 0, 0, tzinfo=UTC)
+    def __init__(self, start: datetime = datetime(2026, 11, 22, 10, 0, 0, tzinfo=UTC)) -> None:
+        self.t = start
 
     def __call__(self) -> datetime:
         self.t += timedelta(seconds=1)
