@@ -25,7 +25,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
 from minseg_tui.model.check.figures import Gain
-from minseg_tui.quantities import format_value
+from minseg_tui.quantities import format_fixed, format_percent, format_typed, format_value
 
 FloatArray = NDArray[np.float64]
 
@@ -136,12 +136,12 @@ def _s(x: float) -> str:
 
 def _at(x: float) -> str:
     """A step's board time to the millisecond, as the details write it ('4.625 s')."""
-    return f"{x:.3f} s"
+    return format_fixed(x, 3, "s")
 
 
 def _later(x: float) -> str:
     """A time after a step: '175 ms', '1.2 s'."""
-    return f"{x * 1e3:.0f} ms" if x < 1.0 else format_value(x, "s", 2)
+    return format_fixed(x * 1e3, 0, "ms") if x < 1.0 else format_value(x, "s", 2)
 
 
 def moment(r: CheckResult, u: ArrayLike | None) -> Moment | None:
@@ -314,7 +314,11 @@ def _gain(r: CheckResult) -> str:
         )
     if e == 0:
         return f"With {added} added (the extended model), {words} falls to within the noise."
-    how = f"{b / e:.2g} times smaller" if b >= 1.5 * e else f"{100 * (1 - e / b):.0f} % smaller"
+    how = (
+        f"{format_typed(b / e, 2)} times smaller"
+        if b >= 1.5 * e
+        else f"{format_percent(1 - e / b)} smaller"
+    )
     return (
         f"With {added} added (the extended model), {words} falls from "
         f"{format_value(b, unit, 2)} to {format_value(e, unit, 2)}, {how}."

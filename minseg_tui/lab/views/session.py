@@ -43,6 +43,7 @@ from minseg_tui.quantities import (
     DIGITS,
     NOT_DETERMINED,
     UNITS,
+    format_diff,
     format_interval,
     format_number,
     format_quantity,
@@ -310,7 +311,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         if c.how:
             comp += f" ({c.how})"
         if c.rel_diff is not None:
-            comp += f": {lab_compare.format_diff(c.rel_diff)}"
+            comp += f": {format_diff(c.rel_diff)}"
         if c.verdict:
             comp += f"\n  {c.verdict}"
         if c.revealed_early:
