@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 from textual.message import Message
 
-from minseg_tui.device.boardcheck import CheckResult, RevolutionResult
+from minseg_tui.device.boardcheck import BoardCheckResult, RevolutionResult
 from minseg_tui.device.link import LinkEvent, LinkStats
 from minseg_tui.lab.content.steps import Step
 from minseg_tui.lab.state.task10 import Task10
@@ -138,7 +138,7 @@ class StepShown(Message):
 class BoardChecked(Message):
     """The board check finished: its ``result``, or None with the one-line ``error``."""
 
-    result: CheckResult | None
+    result: BoardCheckResult | None
     error: str = ""
 
 
