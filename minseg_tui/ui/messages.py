@@ -2,10 +2,10 @@
 
 From the app's workers to the app: :class:`DeviceOpened`, :class:`SamplesArrived`,
 :class:`LinkEventArrived`, :class:`MeterRead`, :class:`MotorKnown`, :class:`Task10Moved`,
-:class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the screen up: the
-requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which drives the
-device; :class:`CaptureRequested`, :class:`LogImportRequested`, :class:`RunChosen` for the
-lab screen, which holds the session's entries) and :class:`StepShown`.
+:class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the
+screen up: the requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which
+drives the device; :class:`CaptureRequested`, :class:`LogImportRequested` for the lab screen,
+which holds the session's entries) and :class:`StepShown`.
 """
 
 from __future__ import annotations
@@ -118,13 +118,6 @@ class LogImportRequested(Message):
 
     path: str
     reply: Callable[[str], None]
-
-
-@dataclass
-class RunChosen(Message):
-    """Tasks 11-15 and the model check use run ``name`` (None: the newest complete 25 ms run)."""
-
-    name: str | None
 
 
 @dataclass

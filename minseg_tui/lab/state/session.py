@@ -521,12 +521,6 @@ class Session:
         self._data["members"] = [str(m) for m in members]
         self._changed()
 
-    def set_date(self, date: str) -> None:
-        """Change the lab's date (saved)."""
-        self._change()
-        self._data["date"] = str(date)
-        self._changed()
-
     @property
     def current_step(self) -> str:
         """Id of the step the group is at."""
