@@ -16,7 +16,7 @@ import pytest
 import minseg_tui.device  # noqa: F401  (registers minseg://)
 from minseg_tui.cli import main
 from minseg_tui.device.boardcheck import (
-    CheckResult,
+    BoardCheckResult,
     NoCountWatch,
     check_board,
     count_revolution,
@@ -173,7 +173,7 @@ def test_counts_per_revolution_in_words(counts, ok, says):
 
 
 def test_json_keys():
-    keys = set(CheckResult(True, "forward", 1, "M1", "x").as_json())
+    keys = set(BoardCheckResult(True, "forward", 1, "M1", "x").as_json())
     assert {"ok", "direction", "counts", "connector", "text"} <= keys
 
 
