@@ -515,9 +515,11 @@ def fit_causes(
             if out is None:
                 f = _fit_side(prob, causes, rng, starts, max_iter, scan, polish, side, both)
             else:
-                # the other variant from where the first ended (and the best start): the
-                # variants differ only where the wheel stops, coasts or is capped
-                again = [(out.T, values_of(out)), *starts[:1]]
+                # the other variant from where the first ended, and from every start (scored
+                # again: a start far from the first variant's valley, a cap's ramp with
+                # little drag, may be the best in this one): the variants differ only where
+                # the wheel stops, coasts or is capped
+                again = [(out.T, values_of(out)), *starts]
                 if side[1] and not out.effects.pole_filtered:
                     again.insert(0, (out.T, _as_filter(values_of(out), prob.ts)))
                 f = _fit_side(prob, causes, rng, again, max_iter, False, (), side, both)
