@@ -314,6 +314,7 @@ class Model:
         self.taps = 1
         self.pole_measured = False
         self.pole_filtered = False
+        self.pole_driver = False
         self.cap_both = False
         self.evaluations = 0
         self._last: tuple[bytes, FloatArray] = (b"", np.zeros(0))
@@ -334,6 +335,8 @@ class Model:
             flags["pole_measured"] = True
             if self.pole_filtered and "velocity_filter" not in self.causes:
                 flags["pole_filtered"] = True
+        elif self.pole_driver and "second_pole" in self.causes:
+            flags["pole_driver"] = True
         if self.cap_both and "current_limit" in self.causes:
             flags["cap_both"] = True
         return T, replace(fx, **flags) if flags else fx
@@ -493,6 +496,7 @@ def fit_causes(
     pole: bool | None = None,
     cap: bool | None = None,
     filtered: bool | None = None,
+    driver: bool | None = None,
 ) -> Fit:
     """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
     ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
@@ -503,7 +507,9 @@ def fit_causes(
 
     ``pole``: the extra pole on the measurement (True) or on the drive (False); None: both
     when a cause that is not linear (dry friction, a coast, a cap) acts with it, where the
-    side shows, and the better kept. ``cap``: the current limit holds while braking too
+    side shows, and the better kept; with a coast, a pole on the drive is fitted both as the
+    armature's and as a driver's (``driver``, :attr:`Effects.pole_driver`; None: both).
+    ``cap``: the current limit holds while braking too
     (True) or only while accelerating (False); None: both tried when it is among the causes.
     ``filtered``: a pole on the measurement is the logger's filter of the speed column
     (:attr:`Effects.pole_filtered`); None: so when the column is smooth (``prob.smooth``)
@@ -519,12 +525,14 @@ def fit_causes(
     filt = (
         bool(filtered) if filtered is not None else prob.smooth and "velocity_filter" not in causes
     )
-    sides = [(bool(pole), bool(filtered))]
+    sides = [(bool(pole), bool(filtered), bool(driver))]
     if pole is None and "second_pole" in causes:
         if NONLINEAR & set(causes):
-            sides = [(False, False), (True, filt)]
+            sides = [(False, False, False), (True, filt, False)]
         elif filt:
-            sides = [(False, False), (True, True)]
+            sides = [(False, False, False), (True, True, False)]
+    if driver is None and not pole and {"second_pole", "coast_on_zero"} <= set(causes):
+        sides.append((False, False, True))
     caps = [bool(cap)]
     if cap is None and "current_limit" in causes:
         caps = [False, True]
@@ -534,9 +542,11 @@ def fit_causes(
             if out is None:
                 f = _fit_side(prob, causes, rng, starts, max_iter, scan, polish, side, both)
             else:
-                # the other variant from where the first ended (and the best start): the
-                # variants differ only where the wheel stops, coasts or is capped
-                again = [(out.T, values_of(out)), *starts[:1]]
+                # the other variant from where the first ended, and from every start (scored
+                # again: a start far from the first variant's valley, a cap's ramp with
+                # little drag, may be the best in this one): the variants differ only where
+                # the wheel stops, coasts or is capped
+                again = [(out.T, values_of(out)), *starts]
                 if side[1] and not out.effects.pole_filtered:
                     again.insert(0, (out.T, _as_filter(values_of(out), prob.ts)))
                 f = _fit_side(prob, causes, rng, again, max_iter, False, (), side, both)
@@ -563,11 +573,11 @@ def _fit_side(
     max_iter: int,
     scan: bool | None,
     polish: tuple[str, ...],
-    side: tuple[bool, bool],
+    side: tuple[bool, bool, bool],
     cap_both: bool,
 ) -> Fit:
     m = Model(prob, causes, rng)
-    m.pole_measured, m.pole_filtered = side
+    m.pole_measured, m.pole_filtered, m.pole_driver = side
     m.cap_both = cap_both
     scored = []
     for T, values in starts:
@@ -626,6 +636,7 @@ def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fi
         pole=f.effects.pole_measured,
         filtered=f.effects.pole_filtered,
         cap=f.effects.cap_both,
+        driver=f.effects.pole_driver,
     )
 
 
@@ -654,6 +665,7 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     m.taps = f.effects.taps
     m.pole_measured = f.effects.pole_measured
     m.pole_filtered = f.effects.pole_filtered
+    m.pole_driver = f.effects.pole_driver
     m.cap_both = f.effects.cap_both
     x = m.x_of(f.T, values_of(f))
     T, fx = m.effects(x)

@@ -96,6 +96,13 @@ class Effects:
     """With ``pole_measured``: the pole is a first-order filter the logger runs on the speed
     column, sample by sample (y_k = a y_k-1 + (1 - a) m_k, a = exp(-ts/T2), m_k the speed
     of counts), not a lag of the angle (a compliant coupling)."""
+    pole_driver: bool = False
+    """The extra pole on the drive is a driver's lag of its command, which runs on while the
+    bridge is open: through a coast the driver's output falls towards the zero command with
+    T2, and the wheel, still turning, meets that output when the bridge closes (braked
+    until it rises past the speed). Without it the pole is the armature's L/R: no current
+    flows while coasting, and it builds from zero when the bridge closes. The two differ
+    only after a coast."""
     drag: float = 0.0
     """The share of the driven damping that is the wheel's own viscous drag (T/J_b with
     J/b the drag's time constant in s, 0 to below 1; the rest is the back-EMF). While the
@@ -274,7 +281,10 @@ def _stretch(
             return
         if coast:
             assert fx.T_coast is not None
+            v0, before = s.v, left
             left = _coast(out, s, left, max(fx.T_coast, T), uc / T)
+            if T2 and fx.pole_driver:
+                s.v = v0 * _exp(-(before - left) / T2)
             continue
         drive = s.v
         if s.w == 0.0 and (abs(drive) < uc or drive == 0.0 and (u == 0.0 or not T2)):
