@@ -624,3 +624,62 @@ def iir(y: FloatArray, a: float) -> FloatArray:
         out[start:stop] = (a * carry + np.cumsum(b[start:stop] * grow)) / grow
         carry = float(out[stop - 1])
     return out
+
+
+def restart(
+    st: Stretches,
+    t: FloatArray,
+    ts: float,
+    T: float,
+    fx: Effects,
+    row: int,
+    over_interval: bool = False,
+) -> FloatArray:
+    """The measured speed (K = 1 units, per unit of departure) that a wheel off the model's
+    speed at the start of row ``row``'s reading adds to the model's from that row on: 0 on the
+    rows before it. A wheel a hand let go of picks up from the speed the hand left it at; the
+    model's own speed is the same equation from another start, so the difference dies away
+    with the motor's time constant T (s; while coasting, ``fx.T_coast``), through the same
+    dead time, average and pole on the measurement as the model's speed. Dry friction, the
+    cap and the wheel stopping are not followed: the departure is assumed to stay in the
+    linear range (it has mostly died away where the rows are taken up again).
+
+    The departure is started ``fx.delay`` before the first instant the reading of ``row``
+    looks at (the sample ``fx.taps`` periods earlier); started earlier, it would only be a
+    multiple of the same rows' values."""
+    n = fx.taps
+    out = np.zeros(t.size)
+    if row >= t.size:
+        return out
+    tt = np.concatenate((t[0] - ts * np.arange(n, 0, -1), t))
+    tau0 = float(tt[max(row, 0)]) - fx.delay
+    table = Pieces()
+    table.add(tau0 - FAR, 0.0, 0.0)
+    starts = st.start.tolist()
+    values = st.value.tolist()
+    th, amp = 0.0, 1.0
+    i = max(int(np.searchsorted(st.start, tau0, side="right")) - 1, 0)
+    s0 = tau0
+    while True:
+        coast = fx.T_coast is not None and values[i] == 0.0
+        tc = max(fx.T_coast, T) if coast and fx.T_coast is not None else T
+        table.add(s0, th, 0.0, 0.0, amp, tc)
+        if i + 1 >= len(starts):
+            break
+        s1 = float(starts[i + 1])
+        e = _exp(-(s1 - s0) / tc)
+        th += amp * tc * (1.0 - e)
+        amp *= e
+        s0, i = s1, i + 1
+        if amp < 1e-12:
+            table.add(s0, th, 0.0)
+            break
+    # nothing before the first instant read (one more, at rest, starts a lag at rest)
+    lo = max(row - 1, 0)
+    theta = np.zeros(tt.size)
+    theta[lo:] = angle_at(table, tt[lo:], fx)
+    out = measured(theta[n:], t, theta[:n], ts, n, over_interval)
+    if fx.pole_filtered and fx.pole_measured and fx.T2 > 0.0:
+        out = iir(out, math.exp(-ts / fx.T2))
+    out[:row] = 0.0
+    return out
