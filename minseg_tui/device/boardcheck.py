@@ -78,7 +78,7 @@ class CheckedBoard(Protocol):
 
 
 @dataclass(frozen=True)
-class CheckResult:
+class BoardCheckResult:
     """What the check found. ok: the count follows a positive voltage upwards (after a fix,
     if one was made); direction: what the count did ("forward", "reversed", "none");
     counts: the change of the count over the drive (before any fix); connector: the one the
@@ -252,7 +252,7 @@ def check_board(
     fix: bool = True,
     wheel_turned: Callable[[], bool | None] | bool | None = None,
     task5: bool = False,
-) -> CheckResult:
+) -> BoardCheckResult:
     """Drive the motor briefly and say whether the count follows (see the module).
 
     ``wheel_turned``: whether the group saw the wheel turn, or a function that asks them
@@ -266,7 +266,7 @@ def check_board(
     if d.current is not None:
         turned = abs(d.current) >= MIN_CURRENT
     if d.counts >= MIN_COUNTS:
-        return CheckResult(
+        return BoardCheckResult(
             True,
             "forward",
             d.counts,
@@ -280,7 +280,7 @@ def check_board(
         return _reversed(board, samples, d, connector, fix)
     if turned is None and wheel_turned is not None:
         turned = wheel_turned() if callable(wheel_turned) else wheel_turned
-    return CheckResult(
+    return BoardCheckResult(
         False,
         "none",
         d.counts,
@@ -297,7 +297,7 @@ def _reversed(
     d: Drive,
     connector: str | None,
     fix: bool,
-) -> CheckResult:
+) -> BoardCheckResult:
     ident = board.ident
     enc, motor = (ident.enc_dir, ident.motor_dir) if ident else ("FWD", "FWD")
     new = f"DIR,{_flip(enc)},{motor}"
@@ -306,7 +306,7 @@ def _reversed(
         "encoder counts the other way from the motor."
     )
     if not fix:
-        return CheckResult(
+        return BoardCheckResult(
             False,
             "reversed",
             d.counts,
@@ -319,7 +319,7 @@ def _reversed(
     board.set_direction(_flip(enc), motor)
     again = drive(board, samples)
     if again.counts >= MIN_COUNTS:
-        return CheckResult(
+        return BoardCheckResult(
             True,
             "reversed",
             d.counts,
@@ -330,7 +330,7 @@ def _reversed(
             wheel_turned=True,
             current=d.current,
         )
-    return CheckResult(
+    return BoardCheckResult(
         False,
         "reversed",
         d.counts,

@@ -14,9 +14,9 @@ from collections.abc import Callable
 from contextlib import suppress
 
 from textual import events
-from textual.keys import _character_to_key
 from textual.message import Message
 from textual.pilot import Pilot
+from textual.widgets import OptionList
 from textual.worker import WorkerCancelled
 
 from minseg_tui.device.samples import SampleBatch
@@ -28,6 +28,7 @@ from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.fields import EntryBox, FieldForm, FieldRow, field_id
 from tests.ui.fakes import QuietDevice
+from tests.ui.textual_internals import key_name
 
 TABLE = {
     "R": "5.3",
@@ -235,14 +236,10 @@ async def burst(pilot: Pilot[None], *keys: str) -> None:
     waiting for the app between them (``pilot.press`` waits after every key); then wait
     until the app has processed them all."""
     app = pilot.app
-    driver = app._driver
-    assert driver is not None
     for key in keys:
-        name = _character_to_key(key) if len(key) == 1 and not key.isalnum() else key
-        char = key if len(key) == 1 else None
-        event = events.Key(name, char)
+        event = events.Key(key_name(key), key if len(key) == 1 else None)
         event.set_sender(app)
-        driver.send_message(event)
+        app.post_message(event)
     await settle(pilot)
 
 
@@ -325,3 +322,9 @@ def heard_notifications(app) -> list[str]:
 
     app.notify = keep
     return said
+
+
+def nav_mark(app: LabApp, step_id: str) -> str:
+    """The mark before step ``step_id`` in the list of steps (✓, ✗, ?, … or a blank)."""
+    nav = app.screen.query_one("#nav", OptionList)
+    return str(nav.get_option(step_id).prompt)[0]
