@@ -186,7 +186,7 @@ class Readout(Vertical):
         step = self.parent
         focused = self._target()
         if not (
-            isinstance(step, Widget)
+            isinstance(step, FieldForm)
             and focused is not None
             and focused.is_attached
             and self.is_attached
@@ -201,7 +201,7 @@ class Readout(Vertical):
             focused,
         )
         # below the step's heading, which covers its top while it is scrolled down
-        top = step.scrollable_content_region.y + int(getattr(step, "heading_rows", 0))
+        top = step.scrollable_content_region.y + step.heading_rows
         for shown in (row, focused):
             under = shown.region.bottom - self.region.y
             if under <= 0:

@@ -246,9 +246,9 @@ class StepPane(FieldForm):
                 if readout is not None:
                     widgets.append(readout)
         widgets += rows
-        after = getattr(panel, "after_rows", None)
-        if callable(after):
-            widgets.append(after())
+        after = panel.after_rows() if isinstance(panel, ViewPanel) else None
+        if after is not None:
+            widgets.append(after)
         self.scroll_to(y=0, animate=False, immediate=True)
         await self.mount_all(widgets)
         self.step, self.panel = step, panel

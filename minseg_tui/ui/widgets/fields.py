@@ -535,6 +535,12 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         """Set by :meth:`take` until the form handles a key of its own: characters typed
         elsewhere are on their way into the current row."""
 
+    @property
+    def heading_rows(self) -> int:
+        """Rows a heading kept over the form's top covers (none here; the lab's step form
+        has one): a widget scrolled into view goes below them."""
+        return 0
+
     # -- rows ------------------------------------------------------------------------------
     def rows(self) -> list[FieldRow]:
         return list(self.query(FieldRow))
