@@ -176,8 +176,7 @@ class Readout(Vertical):
         step = self.parent
         focused = self.screen.focused
         if isinstance(step, FieldForm) and focused is step:
-            row = step.typing
-            return row.input if row is not None else None
+            return step.keys_box
         if focused is None or step is None or step not in focused.ancestors:
             return None
         return focused
