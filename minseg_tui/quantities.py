@@ -504,6 +504,37 @@ F_UNIT = "mN m s/rad"
 text); machine output (JSON, CSV) keeps SI, N m s/rad."""
 
 
+TIME_CONSTANT_UNIT = "ms"
+"""The one unit a time constant or a delay (T, the model check's delays and second time
+constants, all in s in machine output) is shown to people in, as :data:`F_UNIT` is f's."""
+
+SHOWN_UNITS: dict[str, str] = {"s": TIME_CONSTANT_UNIT, "N m s/rad": F_UNIT}
+"""The unit a constant of the motor or of the model check, given in its SI unit (the key), is
+shown to people in; a unit not listed is shown as it is."""
+
+
+def shown_unit(unit: str) -> str:
+    """The unit people read a constant in SI ``unit`` in (:data:`SHOWN_UNITS`)."""
+    return SHOWN_UNITS.get(unit, unit)
+
+
+def format_constant(value: float, unit: str, digits: int = DIGITS) -> str:
+    """A constant ``value`` in SI ``unit`` as people read it (:func:`shown_unit`): T =
+    0.04261 s is '42.61 ms', f = 0.001855 N m s/rad '1.855 mN m s/rad'; '—' if not finite."""
+    shown = shown_unit(unit)
+    if shown == unit or not math.isfinite(value):
+        return format_value(value, unit, digits)
+    return format_quantity(value, shown, digits)
+
+
+def format_constant_interval(lo: float, hi: float, unit: str, digits: int = DIGITS) -> str:
+    """A 95 % interval of a constant in SI ``unit``, in the unit people read it in
+    (:func:`format_interval`, :func:`shown_unit`)."""
+    shown = shown_unit(unit)
+    scale = UNITS[shown].scale if shown != unit else 1.0
+    return format_interval(lo / scale, hi / scale, shown, digits)
+
+
 def in_unit(value: float, unit: str) -> float:
     """``value`` (SI) as a number in the form unit ``unit`` (f 0.00186 -> 1.86 mN m s/rad)."""
     return _in_unit(value, UNITS[unit])

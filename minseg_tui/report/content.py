@@ -21,12 +21,11 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import check_words, own_first
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
-from minseg_tui.model.check.effects import UNITS, in_words
+from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import ResponseResult, Rise
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
-    format_interval,
     format_number,
     format_quantity,
     format_reading,
@@ -245,6 +244,7 @@ def _table_section(session: Session) -> Section:
         sec.blocks.append(
             Table(own_first.TABLE_HEADER, tuple(r.cells for r in own_first.table_rows(session)))
         )
+        sec.blocks.append(own_first.MARKS_SAID)
     return sec
 
 
@@ -270,6 +270,7 @@ def _step_section(session: Session) -> Section:
         "program's least-squares value:"
     )
     sec.blocks.append(Table(own_first.STEP_HEADER, tuple(r.cells for r in rows)))
+    sec.blocks.append(own_first.MARKS_SAID)
     sec.blocks.append(own_first.policy_in_force(session)[0])
     sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
     if s.T_63_note:
@@ -400,16 +401,9 @@ def _run_figure(log: RunLog, name: str) -> Figure:
 
 
 def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | None = None) -> str:
-    """Parameters with their units (:data:`minseg_tui.model.check.effects.UNITS`) and, when
-    given, their 95 % intervals."""
-    out = []
-    for k, v in p.items():
-        unit = UNITS.get(k, "")
-        text = f"{k} = {_num(v)} {unit}".rstrip()
-        if intervals and k in intervals:
-            text += f" (95 %: {format_interval(*intervals[k], unit)})"
-        out.append(text)
-    return ", ".join(out)
+    """Parameters as the screen's details give them (:func:`check_words.params`: T and the
+    delays in ms) and, when given, their 95 % intervals."""
+    return check_words.params(p, intervals)
 
 
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:

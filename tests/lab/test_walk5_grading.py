@@ -66,11 +66,19 @@ def test_a_unitless_57_for_T_is_refused_as_ambiguous_not_taken_as_57_s(tmp_path)
 def test_an_answer_with_nothing_to_compare_it_with_is_stored_not_ticked(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:  # no table, no run
         assert s.enter("own.T", "0.057").ok
-        assert s.step_status("task12") == "started"
+        assert s.step_status("task12") == "unjudged"
         view = views.entry(s, "own.T")
-        assert view is not None and view.feedback == views.NOT_JUDGED
+        assert view is not None and view.feedback == f"○ {views.NOT_JUDGED}"
         assert s.enter("own.f", "1,855").ok
-        assert s.step_status("table") == "started"
+        assert s.step_status("table") == "unjudged"
+
+
+def test_the_unjudged_mark_is_its_own_and_f1_says_what_it_means():
+    """Issue 20: "stored, not judged yet" shared '…' with a step merely begun; it has a mark
+    of its own, told apart from done, wrong, refused, started and not begun without colour."""
+    marks = [mark for _, mark, _ in views.STATUS_MARKS]
+    assert len(set(marks)) == len(marks) and " " not in marks
+    assert f"{views.MARK['unjudged']} stored, not judged yet" in views.marks_legend()
 
 
 def test_w_ss_and_w_and_omega_mean_omega_ss_in_a_formula():

@@ -255,6 +255,16 @@ def test_ubc_ramps_at_a_capped_acceleration(name, lo, hi):
     assert r.extended.rmse < 0.6 * {"ubc-motor-7V": 4.52, "ubc-motor-9V": 7.69}[name]
 
 
+@pytest.mark.parametrize("name", ["ubc-motor-7V", "ubc-motor-9V"])
+def test_a_cap_is_not_said_to_brake_on_a_log_without_a_step_down(name):
+    # one step up from rest and no step down: nothing in the log shows how the drive brakes,
+    # so the evidence must not speak of the speed falling along a ramp after a step down
+    r, words = analyze(name)
+    assert r.finding.cause == "current_limit"
+    assert "step down" not in r.finding.evidence
+    assert "both ways" not in words
+
+
 def test_ubc_limit_does_not_follow_the_resampling_period():
     # the same 7 V log resampled at 2, 5 and 20 ms: the old "filter" length followed the
     # period (40, 40, 21 taps); the acceleration cap is a property of the motor

@@ -385,3 +385,21 @@ def test_an_old_session_continued_claims_nothing_from_before_its_record(tmp_path
     T = _row(table, "T (Task 12)")["shown to the group"]
     assert T.startswith("not known whether before or after answering: first recorded on "), T
     assert "not known before: the session was begun with an older program" in T
+
+
+def test_the_report_marks_each_value_and_says_what_the_marks_mean(tmp_path: Path) -> None:
+    """Issue 20: the marks of the group's screen (✓ right, ✗ wrong, ○ stored, not judged yet)
+    are the report's, and the report says what each means under its tables."""
+    from tests.lab.test_compare import _lab
+
+    with _lab(tmp_path) as s:
+        st = s.results().identification.step  # type: ignore[union-attr]
+        s.enter("own.T", format_number(st.T_63 * 1e3) + " ms")  # right: the 63 % reading
+        s.enter("own.J", "1")  # wrong by far
+        md = _report(s)
+    steps = _section(md, "Step response and model (Tasks 10-15)")
+    said = " ".join(unescape(steps).split())
+    assert "Marks: ✓ right; ✗ wrong" in said and f"○ {views.NOT_JUDGED}" in said
+    (table,) = [t for t in _tables(steps) if t[0][0] == "quantity"]
+    assert "✓ right" in _row(table, "T (Task 12)")["difference"]
+    assert "✗ wrong" in _row(table, "J (Task 13)")["difference"]

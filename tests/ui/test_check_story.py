@@ -67,7 +67,7 @@ async def test_the_details_name_the_model_simulated_and_whose_T_tasks_11_12_show
         ), story
         lines = app.screen.query_one("#check-lines", Prose).text
         assert re.search(
-            r"first-order model the check fitted to this run and simulated: T = [0-9.]+ s, K = ",
+            r"first-order model the check fitted to this run and simulated: T = [0-9.]+ ms, K = ",
             lines,
         ), lines
         assert (

@@ -48,7 +48,7 @@ async def test_a_unitless_57_for_T_is_refused_and_an_unjudged_T_not_ticked(quiet
         await pilot.press("ctrl+u", *"0.057", "enter")
         await settle(pilot)
         assert "not judged yet" in " ".join(row.message.split())
-        assert _mark(app, "task12") == "…"  # stored, nothing to judge it by: not ✓
+        assert _mark(app, "task12") == "○"  # stored, nothing to judge it by: its own mark
 
 
 async def test_5_comma_3_ohm_says_what_was_stored(quiet):

@@ -259,17 +259,25 @@ TOLERANCE: dict[str, float] = {
     "own.f": 0.10,
     "own.omega_step": 0.15,
     "own.K": 0.10,
-    "own.T": 0.25,
+    "own.T": 0.30,
     "own.J": 0.10,
     "own.omega_5": 0.10,
 }
 """How far (relative) each of the group's numbers may be from the value computed their way
-and still be right (farther: marked wrong, ✗ in the list of steps). A value worked out
-from their own readings (k_v, k_a, f from their table, K from their omega_ss, J from their
-T, omega at 5 V from their K) differs only by rounding and by constants read off the table:
-10 %. A reading off the plot differs from the program's: the steady speed of one step
-against the median of all (15 %); T at 63 % of one rise, read with the cursor between
-samples 25 ms apart, against the median over the rises (25 %)."""
+and still be right (farther: marked wrong, ✗ in the list of steps). Measured over 300 seeded
+sessions of the virtual board's plant (``benchmarks/grading_tolerances.py``: an honest group
+reading with the program's cursor, typing 3 significant digits):
+
+- a value worked out from their own readings (k_v, k_a, f from their table, K from their
+  omega_ss, J from their T, omega at 5 V from their K) differs by rounding: at most 0.6 %,
+  7.6 % for f taken as the mean of the rows instead of their median: 10 %;
+- omega_ss read off one rise (the sample at its end) against the median over the rises of
+  the fitted steady speed: p95 3.5 %, max 4.6 %; 15 % leaves room for a real motor's noise;
+- T read at 63 % of one rise on the sample nearest the level (25 ms apart) against the
+  program's reading interpolated between samples, median over the rises: p95 21 %, max
+  27 % (25 % marked one session in 300 wrong): 30 %. Read on the line between the samples
+  (the cursor between them) it is at most 12 %; a group that takes the first sample past the
+  level is late by up to a sample, up to +57 %, and is marked wrong."""
 
 
 def _j_slip(own: float, T: float, R: float, f: float, k_v: float, k_a: float) -> str:

@@ -648,10 +648,10 @@ class Session:
         """``done`` (every required field accepted; for Task 10 a run recorded; for a step
         done by board checks, its ``done_when`` checks passed), ``wrong``
         (answered, but a checked answer is wrong), ``refused`` (a field shows a text that was
-        refused, even over an accepted answer still in effect), ``started`` (something
-        entered; also a step of the group's own values, Tasks 6-9 and 11-15, while one of
-        them is stored but not judged yet, with nothing computed to compare it with),
-        ``todo``, or ``info`` (nothing to enter)."""
+        refused, even over an accepted answer still in effect), ``unjudged`` (a step of the
+        group's own values, Tasks 6-9 and 11-15, answered, one of them stored but not judged
+        yet: nothing computed to compare it with), ``started`` (something entered), ``todo``,
+        or ``info`` (nothing to enter)."""
         st = lab_steps.step(step_id)
         if "run_square_wave" in st.actions:
             return "done" if any(r.kind in ("steps", "fast") for r in self._runs) else "todo"
@@ -681,7 +681,7 @@ class Session:
         judged = [c.right for c in self.comparisons(step_id) if c.key in self.answered()]
         if any(r is False for r in judged):
             return "wrong"
-        return "started" if any(r is None for r in judged) else "done"
+        return "unjudged" if any(r is None for r in judged) else "done"
 
     # -- the board checks ----------------------------------------------------------------------
 

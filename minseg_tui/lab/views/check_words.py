@@ -11,7 +11,7 @@ the run's input voltage, and writes what the lab screen and the report both lead
 3. how much better the extended model does, in one figure.
 
 The full text for lab assistants stays :func:`minseg_tui.model.check.text` (``minseg-tui
-analyze``). Units: s, V, rad/s, rad.
+analyze``). Units: s, V, rad/s, rad (said: T and the delays in ms).
 """
 
 from __future__ import annotations
@@ -24,8 +24,15 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
+from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.figures import Gain
-from minseg_tui.quantities import format_value
+from minseg_tui.model.check.text import bound_words, interval_words, value_words
+from minseg_tui.quantities import (
+    NOT_DETERMINED,
+    format_constant,
+    format_constant_interval,
+    format_value,
+)
 
 FloatArray = NDArray[np.float64]
 
@@ -205,7 +212,7 @@ def simulated(r: CheckResult) -> str:
     numbers = ", ".join(
         x
         for x in (
-            f"T = {format_value(T * 1e3, 'ms', 3)}" if T is not None else "",
+            f"T = {format_constant(T, 's', 3)}" if T is not None else "",
             f"K = {format_value(K, 'rad/s/V', 3)}" if K is not None else "",
         )
         if x
@@ -215,6 +222,33 @@ def simulated(r: CheckResult) -> str:
     )
 
 
+def params(
+    p: Mapping[str, float], intervals: Mapping[str, tuple[float, float]] | None = None
+) -> str:
+    """A model's parameters as the details on the screen and in the report give them, in the
+    units the story uses (T and the delays in ms: :func:`~minseg_tui.quantities.format_constant`)
+    and, when given, with their 95 % intervals: 'T = 42.61 ms (95 %: 42.1 – 43.0 ms), K =
+    1.996 rad/s/V'. Machine output (JSON, CSV) keeps SI."""
+    out = []
+    for k, v in p.items():
+        unit = check_units.get(k, "")
+        text = (
+            f"{k} = {value_words(k, v)} {unit}".rstrip()
+            if k == "taps"
+            else f"{k} = {format_constant(v, unit)}"
+        )
+        bound = bound_words(k, v)
+        if bound is not None:
+            text += f" ({bound})"
+        elif intervals and k in intervals:
+            lo, hi = intervals[k]
+            words = interval_words(k, lo, hi, unit)
+            numbers = k != "taps" and not words.startswith(NOT_DETERMINED)
+            text += f" (95 %: {format_constant_interval(lo, hi, unit) if numbers else words})"
+        out.append(text)
+    return ", ".join(out)
+
+
 def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
     """Why the check's first-order ``T`` (s) is not the program's least-squares reading of
     the same run, ``T_ls`` (s) and ``K_ls`` (rad/s/V), the one Tasks 11-12 show beside the
@@ -222,7 +256,8 @@ def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
     where = " over its rises" if rising else ""
     return (
         "The program's least-squares reading of the run used in Tasks 11-12 (not the group's "
-        f"own values) gives T = {format_value(T_ls, 's')} and K = {format_value(K_ls, 'rad/s/V')}: "
+        f"own values) gives T = {format_constant(T_ls, 's')} and "
+        f"K = {format_value(K_ls, 'rad/s/V')}: "
         f"it fits the encoder angle{where} with a time shift for the sampling, while the model "
         "check fits the speed it simulates over the whole run, steps down included; here the "
         f"two T differ by {format_value(100.0 * abs(T / T_ls - 1.0), '', 2)} %."

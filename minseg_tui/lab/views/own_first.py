@@ -22,7 +22,7 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.shown import PolicyRecord
-from minseg_tui.lab.views.session import REVEAL_KEY
+from minseg_tui.lab.views.session import MARK, NOT_JUDGED, REVEAL_KEY
 from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
@@ -269,9 +269,18 @@ def _own(session: Session, c: Comparison, unit: str) -> str:
     return e.text.strip()
 
 
+MARKS_SAID = (
+    f"Marks: {MARK['done']} right; {MARK['wrong']} wrong, farther from the value computed the "
+    "group's way than reading or rounding explains; "
+    f"{MARK['unjudged']} {NOT_JUDGED}."
+)
+"""What the marks in the difference column mean (said under the tables of the group's values;
+the same marks as the list of steps and the entries on the group's screen)."""
+
+
 def _diff(c: Comparison, own: str, against: str) -> str:
-    if c.verdict:
-        said = ("✓ " if c.right else "✗ ") + c.verdict
+    if c.right is not None or c.verdict:
+        said = (MARK["done"] if c.right else MARK["wrong"]) + " " + (c.verdict or "right")
         return (
             said
             if c.rel_diff is None
@@ -281,7 +290,7 @@ def _diff(c: Comparison, own: str, against: str) -> str:
         return lab_compare.format_diff(c.rel_diff) + against
     if own.startswith(NOT_ANSWERED):
         return "nothing to compare: not answered"
-    return "cannot be compared: no computed value"
+    return f"{MARK['unjudged']} {NOT_JUDGED}"
 
 
 def _interval(ci: tuple[float, float], determined: bool, unit: str) -> str:

@@ -30,10 +30,10 @@ from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import read_entry
+from minseg_tui.lab.state.results import Comparison
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
-from minseg_tui.model.check.effects import UNITS as check_units
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.identify.identification import determined
@@ -162,9 +162,29 @@ class EntryView:
     feedback: str = ""
 
 
+STATUS_MARKS: tuple[tuple[str, str, str], ...] = (
+    ("done", "✓", "done"),
+    ("wrong", "✗", "answered but wrong"),
+    ("refused", "?", "an entry refused"),
+    ("unjudged", "○", "stored, not judged yet"),
+    ("started", "…", "started"),
+)
+"""The marks of a step's status (:meth:`Session.step_status`) in the list of steps, and of a
+value under its entry and in the report: (status, a character, not a colour; what it means).
+A step with no mark has nothing to say (not begun, or nothing to enter)."""
+
+MARK: dict[str, str] = {status: mark for status, mark, _ in STATUS_MARKS}
+"""The mark of each status that has one."""
+
 NOT_JUDGED = "stored, not judged yet: nothing computed to compare it with"
 """Said under one of the group's own values (Tasks 6-9, 11-15) while the program has no
-value to judge it by (no table, no run yet); its step is then marked started, not ✓."""
+value to judge it by (no table, no run yet), after its mark (:data:`MARK` ``unjudged``);
+its step is then marked so too, not ✓."""
+
+
+def marks_legend() -> str:
+    """What the marks mean, in one line: '✓ done, ✗ answered but wrong, ...'."""
+    return ", ".join(f"{mark} {words}" for _, mark, words in STATUS_MARKS)
 
 
 def _feedback(session: Session, key: str) -> str:
@@ -172,11 +192,56 @@ def _feedback(session: Session, key: str) -> str:
         if fb.key == key and fb.status != "missing":
             return fb.message
     fld = FIELDS.get(key)
-    if fld is not None and fld.compare and fld.kind != "text" and key in session.answered():
+    if fld is not None and fld.compare and key in session.answered():
         owner = next(st.id for st in STEPS if fld in st.fields)
-        if any(c.key == key and c.right is None for c in session.comparisons(owner)):
-            return NOT_JUDGED
+        for c in session.comparisons(owner):
+            if c.key == key and (fld.kind != "text" or c.right is not None):
+                return under_entry(session, c)
     return ""
+
+
+def _shown_unit(session: Session, c: Comparison) -> str:
+    """The unit a comparison shows ``c``'s values in: the one the group typed theirs in, when
+    it measures the same quantity ("57 ms" beside "56.91 ms"), else the field's form unit."""
+    typed_ = session.entry(c.key)
+    if typed_ is not None and typed_.ok and typed_.unit and typed_.unit in UNITS:
+        if c.unit in UNITS and UNITS[typed_.unit].quantity == UNITS[c.unit].quantity:
+            return typed_.unit
+    return c.unit
+
+
+_AGAINST: dict[str, str] = {
+    "own.omega_step": "the program's steady speed (median over the rises)",
+    "own.T": "the program's 63 % reading (median over the rises)",
+}
+"""What a reading off the plot is compared with, under its entry (the other values are
+compared with the value computed the group's way)."""
+
+
+def under_entry(session: Session, c: Comparison) -> str:
+    """The verdict on the group's value ``c`` right under its entry, after its mark: right or
+    wrong, the difference from the value computed the group's way, and the least-squares
+    value beside it ('✓ right: +2 % from 2.010 rad/s/V, computed your way; least squares
+    1.996 rad/s/V'); ○ :data:`NOT_JUDGED` while nothing is computed to compare it with. The
+    panel under the entries says how each was computed and why the two differ."""
+    if c.right is None:
+        return f"{MARK['unjudged']} {NOT_JUDGED}"
+    mark, word = (MARK["done"], "right") if c.right else (MARK["wrong"], "wrong")
+    unit = _shown_unit(session, c)
+    if c.rel_diff is not None and isinstance(c.computed, float):
+        said = (
+            f"{word}: {lab_compare.format_diff(c.rel_diff)} from {_fmt(c.computed, unit)}, "
+            + _AGAINST.get(c.key, "computed your way")
+        )
+        why = c.verdict.removeprefix("wrong:").strip()
+        if why:
+            said += f", {why}"
+    else:
+        said = c.verdict or word
+    if c.least_squares is not None:
+        lsq = c.least_squares
+        said += f"; least squares {lsq if isinstance(lsq, str) else _fmt(lsq, unit)}"
+    return f"{mark} {said}"
 
 
 def _verdict(e: Entry, feedback: str) -> EntryView:
@@ -297,11 +362,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         if c.key in conceal:
             out.append((c.label, own, f"shown once you enter yours ({REVEAL_KEY}: lab assistant)"))
             continue
-        # the computed value in the unit the group typed theirs in ("57 ms" beside "56.91 ms")
-        unit = c.unit
-        if typed_ is not None and typed_.ok and typed_.unit and typed_.unit in UNITS:
-            if c.unit in UNITS and UNITS[typed_.unit].quantity == UNITS[c.unit].quantity:
-                unit = typed_.unit
+        unit = _shown_unit(session, c)  # in the unit the group typed theirs in
         comp = (
             "—"
             if c.computed is None
@@ -896,7 +957,7 @@ def _figure(gain: Gain, key: str, named: bool) -> str | None:
 
 
 def _params(params: Mapping[str, float]) -> str:
-    return ", ".join(f"{k} = {format_value(v, check_units.get(k, ''))}" for k, v in params.items())
+    return check_words.params(params)
 
 
 def check(session: Session) -> CheckView:

@@ -285,20 +285,30 @@ VELOCITY_FILTER = Candidate(
 )
 
 
+def _span(x: float) -> str:
+    """A duration (s) as the check's sentences write it: in ms under a second."""
+    return ev.ms(x) if x < 1.0 else f"{x:.3g} s"
+
+
 def coast_words(log: ev.Log, ext: Fit) -> str:
     tc = ext.params["T_coast"]
     s = ev.shown_stop(log, ev.drops_to_zero)
     if s is None:
-        return f"the wheel runs down slowly at zero command (time constant {tc:.3g} s)"
-    decel, span = _fall_rate(log, s)
+        return f"the wheel runs down slowly at zero command (time constant {_span(tc)})"
+    decel, span, half = _fall_rate(log, s)
     a, w0 = s.row, abs(s.speed)
+    after = ev.ms(span - float(log.t[a] - log.t[a - 1]))
+    line = (
+        f"from the row before the drop to the first reading under half, {after} after the drop"
+        if half
+        else f"from the row before the drop over the {after} after it, the speed staying above "
+        f"half of its {w0:.3g} rad/s throughout"
+    )
     return (
         f"right after the command drops to 0 at t = {log.t[a]:.3f} s the speed falls at "
-        f"{decel:.3g} rad/s^2 (a line through the speed from the row before the drop to the "
-        f"first reading under half, {ev.ms(span - float(log.t[a] - log.t[a - 1]))} after the "
-        f"drop), where a braked motor (T = "
+        f"{decel:.3g} rad/s^2 (a line through the speed {line}), where a braked motor (T = "
         f"{ev.ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
-        f"wheel coast, with a time constant of {tc:.3g} s at zero command"
+        f"wheel coast, with a time constant of {_span(tc)} at zero command"
     )
 
 
@@ -307,17 +317,20 @@ FALL_TO = 0.5
 enough that one-count readings (20 % of a slow wheel's speed) do not set the rate."""
 
 
-def _fall_rate(log: ev.Log, s: ev.Stop) -> tuple[float, float]:
+def _fall_rate(log: ev.Log, s: ev.Stop) -> tuple[float, float, bool]:
     """How fast the speed falls after the step-down ``s`` (rad/s^2, the slope of a straight
     line through the speed before it and the readings until the first under FALL_TO of it,
-    40 at most) and the span that covers (s, from the row before the step)."""
+    40 at most, none after the next step), the span that covers (s, from the row before the
+    step) and whether a reading fell under FALL_TO of the speed in it."""
     a, w0 = s.row, abs(s.speed)
-    seg = np.abs(log.y[a : a + 40])
+    edges = np.flatnonzero(np.diff(log.u[a:]) != 0)
+    end = a + 1 + int(edges[0]) if edges.size else log.u.size
+    seg = np.abs(log.y[a : min(a + 40, end)])
     below = np.flatnonzero(seg < FALL_TO * w0)
     n = min(max(int(below[0]) + 1 if below.size else seg.size, 2), seg.size)
     tt = log.t[a - 1 : a + n] - log.t[a - 1]
     slope = float(np.polyfit(tt, np.concatenate(([w0], seg[:n])), 1)[0]) if tt[-1] > 0 else 0.0
-    return -slope, float(tt[-1])
+    return -slope, float(tt[-1]), bool(below.size)
 
 
 COAST_ON_ZERO = Candidate(
@@ -426,10 +439,13 @@ def limit_words(log: ev.Log, ext: Fit) -> str:
             f"; the same motor without a cap would start at K u/T = "
             f"{abs(ext.K) * jump / ext.T:.3g} rad/s^2, steepest at once"
         )
+    edges = np.flatnonzero(np.diff(log.u) != 0) + 1
+    # a step down (|u| falls, or u reverses): the only place a log shows how the drive brakes
+    down = any(abs(log.u[k]) < abs(log.u[k - 1]) or log.u[k] * log.u[k - 1] < 0 for k in edges)
     both = (
         " both ways (braking after a step down is capped too: the speed falls along a ramp "
         "as well, which a cap on accelerating alone does not fit as well)"
-        if ext.effects.cap_both
+        if ext.effects.cap_both and down
         else ""
     )
     return (

@@ -128,6 +128,12 @@ class Needs:
     rank: int
     why: str
     has: Callable[[Log], bool]
+    words: Callable[[Log], str] | None = None
+    """``why`` in this log's own terms, when a fixed sentence would not be true of every log."""
+
+    def reason(self, log: Log) -> str:
+        """Why ``log`` cannot show the cause."""
+        return self.words(log) if self.words is not None else self.why
 
 
 NEEDS_RISE = Needs(0, "the log has no step up to show it", lambda log: bool(rises(log.u)))
@@ -136,15 +142,29 @@ NEEDS_DROP_TO_ZERO = Needs(
     "the command never drops to zero while the wheel turns",
     lambda log: any(s.to_zero for s in falls(log)),
 )
+
+
+def _one_size(log: Log) -> str:
+    """What a log without two driven levels holds: one level, or one size both ways."""
+    if np.any(log.u > 0) and np.any(log.u < 0):
+        size = float(np.max(np.abs(log.u)))
+        return (
+            f"the log drives at one size of voltage only ({size:.3g} V, forward and reversed) "
+            "and never lowers it to a smaller one"
+        )
+    return "the log has one driven level and no step-down"
+
+
 NEEDS_TWO_LEVELS = Needs(
     2,
     "the log has one driven level and no step-down",
     lambda log: bool(falls(log)) or len({round(abs(float(v)), 9) for v in log.u if v != 0}) >= 2,
+    _one_size,
 )
 
 
 def cannot_judge(log: Log, needs: Iterable[tuple[str, Needs | None]]) -> dict[str, str]:
     """The causes this log cannot show at all, and why (they are not tried): of ``needs``,
     (cause, what it needs) in the order the causes are tried."""
-    out = [(n.rank, i, c, n.why) for i, (c, n) in enumerate(needs) if n and not n.has(log)]
+    out = [(n.rank, i, c, n.reason(log)) for i, (c, n) in enumerate(needs) if n and not n.has(log)]
     return {c: why for _, _, c, why in sorted(out)}

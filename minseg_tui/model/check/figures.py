@@ -189,10 +189,15 @@ def lead(gain: Gain, named: bool, turning: tuple[float, int, int] | None = None)
             ),
         )
     if gain.heldout_baseline_rmse is not None:
-        return Lead(
-            "heldout_extended_rmse" if named else "heldout_baseline_rmse",
-            "the models predict steps they were not fitted on: the honest judge of a gain",
-        )
+        why = "the models predict steps they were not fitted on: the honest judge of a gain"
+        hb, he = gain.heldout_baseline_rmse, gain.heldout_extended_rmse
+        if named and he is not None and he > hb:
+            why += (
+                f"; here the extended model predicts them worse ({hb:.3g} -> {he:.3g} rad/s): "
+                "what the named cause gains on the rows it was fitted on does not carry over "
+                "to the steps it was not fitted on"
+            )
+        return Lead("heldout_extended_rmse" if named else "heldout_baseline_rmse", why)
     if noise > 0 and noise >= SMALL_NOISE * min(b, e):
         return Lead(
             "extended_above_noise" if named else "baseline_above_noise",

@@ -30,6 +30,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -74,6 +75,9 @@ def whiten(x: FloatArray, taps: int = 1) -> FloatArray:
     x = np.asarray(x, dtype=float)
     n = x.size
     rows = -(-n // taps)
+    if taps == 1 and rows <= _DIRECT:  # the same sum without the columns
+        one: FloatArray = np.cumsum(x * _INV_ALL[:n]) * _POW_ALL[:n]
+        return one
     if rows <= _DIRECT:  # e_k = rho^k sum_j rho^-j x_j in one cumulative sum
         buf = np.zeros(rows * taps)
         buf[:n] = x
@@ -132,12 +136,15 @@ class Problem:
     or analogue speed: :attr:`~.sampling.Sampling.smooth`)."""
     _yw: dict[int, FloatArray] = field(default_factory=dict, repr=False)
     _scale: dict[int, FloatArray | None] = field(default_factory=dict, repr=False)
+    _yw_kept: dict[int, FloatArray] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         if self.weights.size != self.y.size:
             self.weights = np.ones(self.y.size)
         self.st = Stretches.from_samples(self.t, self.u)
         self.keep = self.weights > 0
+        self._every_row = bool(np.all(self.weights == 1.0))
+        """Every row counts with weight 1 (the masks and the weighting change nothing)."""
 
     def scale(self, taps: int) -> FloatArray | None:
         """Per row, (t_k - t_k-N)/(N ts) for a speed taken over the real interval (None: 1)."""
@@ -152,13 +159,24 @@ class Problem:
     def white(self, g: FloatArray, taps: int) -> FloatArray:
         """The whitened form of a speed on every row (rows left out count as 0)."""
         s = self.scale(taps)
-        x = g * self.weights if s is None else g * s * self.weights
-        return whiten(x, taps)
+        if s is None:
+            return whiten(g if self._every_row else g * self.weights, taps)
+        return whiten(g * s * self.weights, taps)
 
     def y_white(self, taps: int) -> FloatArray:
         if taps not in self._yw:
             self._yw[taps] = self.white(self.y, taps)
         return self._yw[taps]
+
+    def y_white_kept(self, taps: int) -> FloatArray:
+        """:meth:`y_white` on the rows that count only."""
+        if taps not in self._yw_kept:
+            self._yw_kept[taps] = self.kept(self.y_white(taps))
+        return self._yw_kept[taps]
+
+    def kept(self, x: FloatArray) -> FloatArray:
+        """``x`` (one value per row) on the rows that count only."""
+        return x if self._every_row else x[self.keep]
 
     def with_weights(self, weights: FloatArray) -> Problem:
         """The same log with other row weights."""
@@ -309,15 +327,16 @@ class Model:
         if "velocity_filter" in self.causes:
             values["velocity_filter"] = float(self.taps)
         fx = effects_of(values)
+        flags: dict[str, Any] = {}
         if drag > 0.0:
-            fx = replace(fx, drag=drag)
+            flags["drag"] = drag
         if self.pole_measured and "second_pole" in self.causes:
-            fx = replace(fx, pole_measured=True)
+            flags["pole_measured"] = True
             if self.pole_filtered and "velocity_filter" not in self.causes:
-                fx = replace(fx, pole_filtered=True)
+                flags["pole_filtered"] = True
         if self.cap_both and "current_limit" in self.causes:
-            fx = replace(fx, cap_both=True)
-        return T, fx
+            flags["cap_both"] = True
+        return T, replace(fx, **flags) if flags else fx
 
     def x_of(self, T: float, values: dict[str, float]) -> FloatArray:
         """The vector of T (s) and {cause: Effects field value}."""
@@ -340,8 +359,8 @@ class Model:
     def fit_k(self, g: FloatArray, taps: int) -> tuple[FloatArray, float]:
         """(whitened residual on the rows that count, K) for the response g (K = 1)."""
         p = self.prob
-        gw = p.white(g, taps)[p.keep]
-        yw = p.y_white(taps)[p.keep]
+        gw = p.kept(p.white(g, taps))
+        yw = p.y_white_kept(taps)
         den = float(np.dot(gw, gw))
         if den <= 0.0 or not math.isfinite(den):
             return np.full(yw.size, math.inf), 0.0

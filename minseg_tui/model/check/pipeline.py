@@ -283,6 +283,8 @@ def _report(
     b_pred = base.predict(full)
     e_pred = ext.predict(full) if named else b_pred
     keep = full.weights > 0
+    for m in wild:  # a repaired sample carries the model's value: no row the fit used
+        keep[m : m + ext.effects.taps + 1] = False
     used = int(np.count_nonzero(keep))
     b_int = intervals(head, base, rng)
     baseline = ModelFit(
@@ -365,7 +367,10 @@ def _report(
     gap_rows = an.gap_rows(t, samp.ts) if samp.regular else set()
     for a in an.wild_anomalies(t, y, y - e_pred, wild, ext.effects.taps):
         if a.row in gap_rows:
-            a = an.logging_artefact(t, int(a.row), int(a.row) + 1, a.size)
+            row = int(a.row)
+            a = an.logging_artefact(
+                t, row, row + 1, a.size, left=(row, min(row + ext.effects.taps + 1, t.size))
+            )
         anomalies.append(a)
     starts = an.gap_starts(t, samp.ts)
     artefacts = [d for d in found if _at_gap(d, res, starts, ext.effects.taps)]
@@ -583,7 +588,16 @@ def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
 
 
 def _params_text(p: dict[str, float]) -> str:
-    return ", ".join(f"{k} = {format_number(v)} {UNITS.get(k, '')}".rstrip() for k, v in p.items())
+    """Parameters with their units, a time under a second in ms (as analyze's text)."""
+
+    def one(k: str, v: float) -> str:
+        if k == "taps":
+            return f"{k} = {round(v)} {UNITS[k]}"
+        if UNITS.get(k) == "s" and abs(v) < 1.0:
+            return f"{k} = {format_number(v * 1e3)} ms"
+        return f"{k} = {format_number(v)} {UNITS.get(k, '')}".rstrip()
+
+    return ", ".join(one(k, v) for k, v in p.items())
 
 
 POLE_OR_DELAY = 1.5
@@ -713,14 +727,25 @@ def _finding(
             )
         )
     col = samp.column_floor(taps)
-    if col is not None and noise > 1.5 * col * (1.22 if taps == 1 else 1.0):
+    over = 1.5 * (col or 0.0) * (1.22 if taps == 1 else 1.0)
+    if col is not None and noise > over:
+        scatter = (
+            f"the speed scatters {noise:.3g} rad/s from sample to sample, "
+            f"{noise / col:.1f} times what the encoder's counts explain ({col:.3g} rad/s)"
+        )
+        left = _rmse_kept(full.y, ext.predict(full), full.keep)
         caveats.append(
             Caveat(
                 "noise",
                 None,
-                f"the speed scatters {noise:.3g} rad/s from sample to sample, "
-                f"{noise / col:.1f} times what the encoder's counts explain ({col:.3g} rad/s): "
-                "timing jitter, ripple or resampling add noise no model of the motor explains",
+                # the simulation runs at the log's own sample times: what it follows is the
+                # sampling's timing, not noise
+                f"{scatter}, yet the model, simulated at the log's own sample times, follows "
+                f"it to {left:.3g} rad/s rms: the scatter is the sampling's timing, which the "
+                "simulation reproduces"
+                if left <= over
+                else f"{scatter}: timing jitter, ripple or resampling add noise no model of "
+                "the motor explains",
             )
         )
     for c, why in unjudged.items():

@@ -112,6 +112,10 @@ class Pieces:
 
     def __init__(self) -> None:
         self.rows: list[tuple[float, float, float, float, float, float, float, float]] = []
+        self.quadratic = False
+        """Some piece has a quadratic term (q != 0)."""
+        self.two_exp = False
+        """Some piece has a second exponential (a2 != 0)."""
 
     def add(
         self,
@@ -125,19 +129,25 @@ class Pieces:
         t2: float = 1.0,
     ) -> None:
         self.rows.append((t0, th0, c, q, a1, t1, a2, t2))
+        if q:
+            self.quadratic = True
+        if a2:
+            self.two_exp = True
 
     def angle(self, tau: FloatArray) -> FloatArray:
         """Angle (V s at K = 1) at the instants ``tau`` (s, ascending or not)."""
-        p = np.asarray(self.rows, dtype=float)
-        i = np.clip(np.searchsorted(p[:, 0], tau, side="right") - 1, 0, None)
-        q = p[i]
-        dt = tau - q[:, 0]
-        out: FloatArray = (
-            q[:, 1]
-            + (q[:, 2] + q[:, 3] * dt) * dt
-            - q[:, 4] * q[:, 5] * np.expm1(-dt / q[:, 5])
-            - q[:, 6] * q[:, 7] * np.expm1(-dt / q[:, 7])
-        )
+        t0, th0, c, q, a1, t1, a2, t2 = np.asarray(self.rows, dtype=float).T
+        i = np.searchsorted(t0, tau, side="right") - 1
+        np.maximum(i, 0, out=i)
+        dt = tau - t0[i]
+        # th0 + (c + q dt) dt - a1 t1 expm1(-dt/t1) - a2 t2 expm1(-dt/t2); the quadratic
+        # and the second exponential left out when they are 0 in every piece (the same
+        # numbers, fewer passes)
+        lin = c[i] + q[i] * dt if self.quadratic else c[i]
+        out: FloatArray = th0[i] + lin * dt
+        out -= (a1 * t1)[i] * np.expm1(-dt / t1[i])
+        if self.two_exp:
+            out -= (a2 * t2)[i] * np.expm1(-dt / t2[i])
         return out
 
 
@@ -223,11 +233,11 @@ def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Piec
         z0 = 0.0 if coasting else u0 - math.copysign(min(fx.u_c, abs(u0)), u0)
     out = Pieces()
     out.add(float(st.start[0]) - FAR, -z0 * FAR, z0)
-    ends = np.append(st.start[1:], math.inf)
+    ends = [*st.start[1:].tolist(), math.inf]
     if not T2 and fx.u_c == 0.0 and fx.T_coast is None and math.isinf(fx.rate):
         # plain first order: one exponential piece per stretch, no events
         w, th = z0, 0.0
-        for t0, t1, u in zip(st.start.tolist(), ends.tolist(), st.value.tolist(), strict=True):
+        for t0, t1, u in zip(st.start.tolist(), ends, st.value.tolist(), strict=True):
             a = w - u
             out.rows.append((t0, th, u, 0.0, a, T, 0.0, 1.0))
             if math.isfinite(t1):
@@ -236,7 +246,7 @@ def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Piec
                 w = u + a * e
         return out
     s = _State(float(st.start[0]), z0, z0 if T2 else float(st.value[0]), 0.0)
-    levels = zip(st.start.tolist(), ends.tolist(), st.value.tolist(), command.tolist(), strict=True)
+    levels = zip(st.start.tolist(), ends, st.value.tolist(), command.tolist(), strict=True)
     for t0, t1, u, asked in levels:
         s.t = t0
         if not T2:

@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 from minseg_tui.model.check.effects import UNITS
+from minseg_tui.model.check.fit import T_BOUNDS
 from minseg_tui.model.check.result import CheckResult
-from minseg_tui.quantities import format_interval, format_number
+from minseg_tui.model.identify.identification import DETERMINED, determined
+from minseg_tui.quantities import NOT_DETERMINED, format_interval, format_number
 
 _FIGURES: dict[str, tuple[str, str]] = {
     "extended_angle_rms": ("angle error", "rad"),
@@ -20,13 +22,64 @@ _FIGURES: dict[str, tuple[str, str]] = {
 }
 
 
+def bound_words(k: str, v: float) -> str | None:
+    """For T on an end of the range the fit tries (2 ms to 3 s), what to print in place of
+    its interval; None for any other parameter or value."""
+    if k != "T":
+        return None
+    end = (
+        "lower"
+        if v <= T_BOUNDS[0] * (1.0 + 1e-6)
+        else "upper"
+        if v >= T_BOUNDS[1] * (1.0 - 1e-6)
+        else None
+    )
+    if end is None:
+        return None
+    return (
+        f"on the {end} end of the range the fit tries, {format_number(T_BOUNDS[0])}"
+        f"-{format_number(T_BOUNDS[1])} s: {NOT_DETERMINED}"
+    )
+
+
+def interval_words(
+    k: str, lo: float, hi: float, unit: str = "", digits: int = 3, sep: str = "-"
+) -> str:
+    """The 95 % interval (lo, hi) of parameter ``k`` in ``unit``: the moving average's lengths
+    as whole samples (one length only when no other fits within the tolerance), "not
+    determined by this log" when it spans more than a factor of ten (or reaches 0), else its
+    ends (:func:`~minseg_tui.quantities.format_interval`)."""
+    if k == "taps":
+        a, b = round(lo), round(hi)
+        if a == b:
+            return f"{a} only: no other length fits as well"
+        return f"{a}{sep}{b} {unit}".rstrip()
+    size = (abs(lo), abs(hi)) if hi < 0 else (lo, hi)
+    if not determined((min(size), max(size))):
+        return f"{NOT_DETERMINED}: it spans more than a factor of {DETERMINED:g}"
+    return format_interval(lo, hi, unit, digits=digits, sep=sep)
+
+
+def value_words(k: str, v: float) -> str:
+    """A parameter's value: the moving average's length as a whole number of samples."""
+    return f"{round(v)}" if k == "taps" else format_number(v)
+
+
 def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | None = None) -> str:
+    """Each parameter with its unit and 95 % interval; a time under a second in ms, as the
+    evidence sentences and ``identify`` write it (the JSON keeps seconds)."""
     out = []
     for k, v in p.items():
-        s = f"{k} = {format_number(v)} {UNITS.get(k, '')}".rstrip()
-        if intervals and k in intervals:
+        unit, scale = UNITS.get(k, ""), 1.0
+        if unit == "s" and abs(v) < 1.0:
+            unit, scale = "ms", 1e3
+        s = f"{k} = {value_words(k, v * scale)} {unit}".rstrip()
+        bound = bound_words(k, v)
+        if bound is not None:
+            s += f" ({bound})"
+        elif intervals and k in intervals:
             lo, hi = intervals[k]
-            s += f" (95 %: {format_interval(lo, hi, digits=3, sep='-')})"
+            s += f" (95 %: {interval_words(k, lo * scale, hi * scale)})"
         out.append(s)
     return ", ".join(out)
 
@@ -94,7 +147,14 @@ def text(r: CheckResult) -> str:
     floor = g.noise_floor
     noise = g.noise
     if floor is not None:
-        rest.append(f"noise floor {floor:.3g} rad/s")
+        counts = r.sampling.floor if r.sampling is not None else None
+        taps = round(e.params.get("taps", 1.0))
+        over = (
+            f" (the counts' {counts:.3g} rad/s over the {taps}-sample average)"
+            if counts is not None and taps > 1 and floor < counts
+            else ""
+        )
+        rest.append(f"noise floor {floor:.3g} rad/s{over}")
     if noise is not None:
         rest.append(f"scatter {noise:.3g} rad/s")
     rest.append(f"rms error {_pair(r, 'extended_rmse')}")

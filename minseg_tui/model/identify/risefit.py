@@ -448,6 +448,9 @@ def _from_whole(
     u = np.asarray(log.u, dtype=float)
     highs = [float(np.mean(u[w.edge.end : w.post_last])) for w in windows]
     friction = f"; dry friction found: breakaway at u_c = {fit.u_c:.3g} V" if fit.friction else ""
+    one = len(windows) == 1
+    alone = "the rise fitted alone does" if one else "the rises fitted one by one do"
+    theirs = "that fit's" if one else "theirs"
     return TimeConstantFit(
         T=fit.T,
         ci=(max(fit.T - cov.half_width(1), 0.0), fit.T + cov.half_width(1)),
@@ -459,9 +462,10 @@ def _from_whole(
         time_source=time_source,
         method=WHOLE_LOG,
         why=(
-            "one first-order model fits the whole log as well as the steps fitted one by one do "
-            f"(on the rises its residual is {rms / sigma_w:.2f} times theirs), so every "
-            f"edge, rising and falling, is used{friction}"
+            f"one first-order model fits the whole log as well as {alone} "
+            f"(on the {'rise' if one else 'rises'} its residual is "
+            f"{rms / sigma_w:.2f} times {theirs}), so "
+            f"{_edges_used(u)}{friction}"
         ),
         shift=fit.d,
         shift_ci=_interval(fit.d, cov.half_width(2)),
@@ -472,6 +476,17 @@ def _from_whole(
         dof=cov.dof,
         predicted=fit.predicted,
     )
+
+
+def _edges_used(u: FloatArray) -> str:
+    """How many edges of the log (rising: |u| grows; falling: any other change of u) the
+    whole-log fit uses, in words."""
+    edges = np.flatnonzero(np.diff(u) != 0) + 1
+    up = int(sum(abs(u[k]) > abs(u[k - 1]) for k in edges))
+    down = edges.size - up
+    if down == 0:
+        return f"every edge is used (the log has {up} rising {'edge' if up == 1 else 'edges'} and no falling one)"
+    return f"every edge, rising and falling, is used ({up} rising, {down} falling)"
 
 
 def _from_rises(

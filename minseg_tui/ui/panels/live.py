@@ -172,7 +172,10 @@ class Readout(Vertical):
 
     def _target(self) -> Widget | None:
         """Where the focus is in the step: the box of its form's current row, or a focused
-        widget in it (None: elsewhere)."""
+        widget in it (None: elsewhere, or these lines left with their step: a lift deferred
+        to after a refresh comes after PgDn PgDn in one burst took the step away)."""
+        if not self.is_attached:
+            return None
         step = self.parent
         focused = self.screen.focused
         if isinstance(step, FieldForm) and focused is step:

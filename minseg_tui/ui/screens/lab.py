@@ -79,22 +79,12 @@ NOTES = ".notes"
 DONE = ".done"
 """The key ending of a step's done? field (ticked once the group did what it asks)."""
 
-STATUS_WORDS: tuple[tuple[str, str, str], ...] = (
-    ("done", "✓", "done"),
-    ("wrong", "✗", "answered but wrong"),
-    ("refused", "?", "an entry refused"),
-    ("started", "…", "started"),
-)
-"""The navigator's marks of a step's status that show (a character, not a colour): status,
-mark and what F1 says it means."""
+MARKS = views.MARK | {"todo": " ", "info": " "}
+"""The navigator's mark of a step's status (:data:`~minseg_tui.lab.views.session.STATUS_MARKS`,
+the same under an entry and in the report; blank: nothing to say)."""
 
-MARKS = {status: mark for status, mark, _ in STATUS_WORDS} | {"todo": " ", "info": " "}
-"""The navigator's mark of a step's status (blank: nothing to say)."""
-
-
-def marks_legend() -> str:
-    """What the marks mean, for F1: '✓ done, ✗ answered but wrong, ...'."""
-    return ", ".join(f"{mark} {words}" for _, mark, words in STATUS_WORDS)
+marks_legend = views.marks_legend
+"""What the marks mean, for F1: '✓ done, ✗ answered but wrong, ...'."""
 
 
 STEP_IDS = tuple(s.id for s in STEPS)
