@@ -390,11 +390,14 @@ def count_revolution(
     samples: Callable[[], SampleBatch] | None = None,
     timeout: float = 30.0,
     poll: float = 0.02,
+    turned_at: Callable[[], float | None] = lambda: None,
 ) -> RevolutionResult:
     """Count while a hand turns the wheel, until ``done()`` says it is done (or ``timeout``
     s pass): the counts and what they mean. The motor is off meanwhile. ``samples``: a tap
     of the samples opened when the check was asked for (else the link's own, read from its
-    newest sample on)."""
+    newest sample on). ``turned_at()``: the board time (s) at which a simulated hand turned
+    the wheel, when one did (the virtual MinSeg's): the last samples read reach past it, however
+    far the host's reading lags behind the board."""
     take = samples or board.samples
     board.stop()
     # where the count begins: a tap (``samples``) opened when the check was asked for holds
@@ -411,6 +414,9 @@ def count_revolution(
     # the last samples of the turn: until the board's own clock is LAST_US past the newest
     # sample seen when the hand was done (a busy host reads them late, never too early)
     seen = [int(b.t_us[-1]) for b in got if len(b)]
+    turn = turned_at()
+    if turn is not None:
+        seen.append(int(turn * 1e6))
     since = max(seen) if seen else None
     end = time.monotonic() + LAST_WAIT_S
     while time.monotonic() < end:

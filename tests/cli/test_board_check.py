@@ -156,6 +156,32 @@ def test_one_revolution_by_hand_counts_720(board):
     assert r.ok and abs(r.counts) == 720 and "720" in r.text
 
 
+def test_a_simulated_turn_is_counted_however_far_the_host_lags(board):
+    # a busy host reads the board two batches late: the samples in hand when the simulated hand
+    # turned the wheel, and the group said done, were all taken before the turn. The count reads on
+    # past the board time of the turn (it counted 0 when it stopped 100 ms past the newest sample
+    # read, the way a UI test under load once did)
+    link = board()
+    read = link.samples
+    late: list[SampleBatch] = []
+    turned: list[float] = []
+
+    def samples() -> SampleBatch:
+        late.append(read())
+        return late.pop(0) if len(late) > 2 else SampleBatch.concat([])
+
+    def done() -> bool:
+        if not turned:
+            with link.board.lock:
+                link.board.turn_by_hand(1.0)
+                turned.append(link.board.now)
+        return True
+
+    link.samples = samples
+    r = count_revolution(link, done, timeout=60, turned_at=lambda: turned[-1] if turned else None)
+    assert r.ok and abs(r.counts) == 720, r.text
+
+
 @pytest.mark.parametrize(
     ("counts", "ok", "says"),
     [

@@ -26,7 +26,7 @@ from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
-from minseg_tui.ui.widgets.fields import EntryBox, FieldForm, FieldRow, field_id
+from minseg_tui.ui.widgets.fields import AnswerList, EntryBox, FieldForm, FieldRow, field_id
 from tests.ui.fakes import QuietDevice
 from tests.ui.textual_internals import key_name
 
@@ -152,6 +152,24 @@ def typing_box(app: LabApp) -> EntryBox | None:
     return row.input if row is not None else None
 
 
+def answering(app: LabApp) -> AnswerList | None:
+    """The list of answers the keys typed now go to: that of the step form's current row
+    while the form has the focus (None: none)."""
+    focused = app.focused
+    if not isinstance(focused, FieldForm):
+        return None
+    return focused.answering
+
+
+def keys_box(app: LabApp) -> EntryBox | AnswerList | None:
+    """The text box or list of answers the keys typed now go to: that of the step form's
+    current row while the form has the focus (None: none)."""
+    focused = app.focused
+    if not isinstance(focused, FieldForm):
+        return None
+    return focused.keys_box
+
+
 def shown(app: LabApp, step_id: str | None = None) -> bool:
     """The lab screen shows ``step_id`` (any step if None), its pane mounted."""
     screen = app.screen
@@ -188,8 +206,6 @@ async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") ->
         if focus != "entry":
             return True
         row = pane.landing_row()  # the first empty entry (the step itself without entries)
-        if row is not None and row.field.options:  # a list of answers has the focus itself
-            return app.focused is not None and row in app.focused.ancestors
         return app.focused is pane and pane.current is row
 
     await settle(pilot, there)

@@ -19,7 +19,16 @@ from textual.widgets import RadioSet
 
 from minseg_tui.lab.content.steps import step
 from minseg_tui.ui.widgets.fields import Choice, FieldRow, Ticks, field_id
-from tests.ui.helpers import burst, goto, settle, shown, start, stored_text, typing_box
+from tests.ui.helpers import (
+    answering,
+    burst,
+    goto,
+    settle,
+    shown,
+    start,
+    stored_text,
+    typing_box,
+)
 
 ONE_ANSWER = ("summary.1", "summary.2", "summary.3", "summary.4", "summary.6")
 
@@ -59,9 +68,7 @@ async def _on_summary(pilot) -> None:
     await start(pilot)
     await goto(pilot, "summary")
     row = _row(pilot.app, "summary.1")
-    await settle(
-        pilot, lambda: pilot.app.focused is not None and row in pilot.app.focused.ancestors
-    )
+    await settle(pilot, lambda: answering(pilot.app) is row.answers)
 
 
 async def test_the_walks_bursts_on_the_summary_answer_every_question(quiet):
@@ -123,9 +130,9 @@ async def test_a_burst_on_a_question_already_answered_moves_its_one_dot(quiet):
         await burst(pilot, "pageup")
         await burst(pilot, "pagedown")
         assert shown(app, "summary")
-        await settle(pilot, lambda: app.focused is _row(app, "summary.2").query_one(RadioSet))
+        await settle(pilot, lambda: answering(app) is _row(app, "summary.2").answers)
         await burst(pilot, "shift+tab")  # back on Q1, its cursor on 'a model'
-        await settle(pilot, lambda: app.focused is _row(app, "summary.1").query_one(RadioSet))
+        await settle(pilot, lambda: answering(app) is _row(app, "summary.1").answers)
         await burst(pilot, "enter", "tab", "down", "enter")
         _check(app, {"summary.1": (0,), "summary.2": (1,), "summary.3": ()})
         await burst(pilot, "shift+tab")
@@ -143,7 +150,7 @@ async def test_unticking_every_box_shows_what_is_stored_in_the_answers_words(qui
         await _on_summary(pilot)
         await burst(pilot, "tab", "tab", "tab", "tab")
         row = _row(app, "summary.5")
-        await settle(pilot, lambda: app.focused is row.query_one(Ticks))
+        await settle(pilot, lambda: answering(app) is row.answers)
         await burst(pilot, "down")
         await burst(pilot, "enter")
         _check(app, {"summary.5": (1,)})

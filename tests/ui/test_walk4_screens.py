@@ -17,7 +17,16 @@ from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.conftest import board_url, real_app
-from tests.ui.helpers import Heard, goto, nav_mark, settle, start, start_with_a_run, typing_box
+from tests.ui.helpers import (
+    Heard,
+    answering,
+    goto,
+    nav_mark,
+    settle,
+    start,
+    start_with_a_run,
+    typing_box,
+)
 
 
 def _row(app, key: str) -> FieldRow:
@@ -41,7 +50,7 @@ async def test_the_model_check_is_done_when_the_group_ticks_done_not_by_a_note(q
         await settle(pilot)
         assert nav_mark(app, "model_check") == "…"  # a note alone: started, not done
         done = _row(app, "model_check.done")
-        assert app.focused is done.query_one(RadioSet)  # Enter in the notes moved on to it
+        assert answering(app) is done.query_one(RadioSet)  # Enter in the notes moved on to it
         await pilot.press("space")
         await settle(pilot)
         assert nav_mark(app, "model_check") == "✓"
@@ -85,7 +94,7 @@ async def test_the_focused_field_is_marked_in_the_text_not_by_colour_alone(quiet
         await pilot.press("tab")
         await settle(pilot)
         done = _row(app, "prep1.done")
-        assert app.focused is done.query_one(RadioSet)
+        assert answering(app) is done.query_one(RadioSet)
         assert _label(app, "prep1.notes") == "notes"
         assert _label(app, "prep1.done") == "▶ done?"
         assert _cursor(done.query(RadioButton)) == ["we have read sections 2.1 and 2.6"]
@@ -97,11 +106,11 @@ async def test_the_focused_field_is_marked_in_the_text_not_by_colour_alone(quiet
         await goto(pilot, "summary")
         questions = [f.key for f in step("summary").fields if f.options]
         first, second = (_row(app, k) for k in questions[:2])
-        assert app.focused is first.query_one(RadioSet)
+        assert answering(app) is first.query_one(RadioSet)
         assert _label(app, questions[0]).startswith("▶ The MinSeg DC-motor is")
         await pilot.press("tab")  # the next question, marked; the first one no longer
         await settle(pilot)
-        assert app.focused is second.query_one(RadioSet)
+        assert answering(app) is second.query_one(RadioSet)
         assert not _label(app, questions[0]).startswith("▶")
         assert _label(app, questions[1]).startswith("▶ The differential equation")
         options = list(second.query(RadioButton))

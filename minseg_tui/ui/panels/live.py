@@ -183,8 +183,7 @@ class Readout(Vertical):
         step = self.parent
         focused = self.screen.focused
         if isinstance(step, FieldForm) and focused is step:
-            row = step.typing
-            return row.input if row is not None else None
+            return step.keys_box
         if focused is None or step is None or step not in focused.ancestors:
             return None
         return focused
@@ -193,7 +192,7 @@ class Readout(Vertical):
         step = self.parent
         focused = self._target()
         if not (
-            isinstance(step, Widget)
+            isinstance(step, FieldForm)
             and focused is not None
             and focused.is_attached
             and self.is_attached
@@ -208,7 +207,7 @@ class Readout(Vertical):
             focused,
         )
         # below the step's heading, which covers its top while it is scrolled down
-        top = step.scrollable_content_region.y + int(getattr(step, "heading_rows", 0))
+        top = step.scrollable_content_region.y + step.heading_rows
         for shown in (row, focused):
             under = shown.region.bottom - self.region.y
             if under <= 0:
