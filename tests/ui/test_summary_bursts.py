@@ -170,3 +170,25 @@ async def test_unticking_every_box_shows_what_is_stored_in_the_answers_words(qui
         # then ticking two others works as shown
         await burst(pilot, "down", "enter")
         _check(app, {"summary.5": tuple(sorted({*shown_now, 2}))})
+
+
+async def test_picks_in_one_burst_on_one_question_leave_one_dot(quiet):
+    """Q1 answered 'a system', its cursor back on 'a model' (the step shown again), then
+    'Enter Down Enter' in one burst: 'a model' picked, then 'a system' again; one dot, on
+    'a system'. Textual's RadioSet clears the answer picked before only when it reads the
+    button's message: the second Enter turned 'a system' off, Textual turned it on again
+    next to 'a model', two dots (walk 6)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _on_summary(pilot)
+        await burst(pilot, "down")
+        await burst(pilot, "enter")
+        await burst(pilot, "pageup")
+        await burst(pilot, "pagedown")
+        await settle(pilot, lambda: answering(app) is _row(app, "summary.2").answers)
+        await burst(pilot, "shift+tab")
+        await settle(pilot, lambda: answering(app) is _row(app, "summary.1").answers)
+        await burst(pilot, "enter", "down", "enter")
+        _check(app, {"summary.1": (1,), "summary.2": ()})
+        await burst(pilot, "up", "enter", "down", "enter", "up", "enter")
+        _check(app, {"summary.1": (0,), "summary.2": ()})

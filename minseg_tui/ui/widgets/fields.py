@@ -97,7 +97,13 @@ class AnswerList(Widget):
 
 class Answers(RadioSet, AnswerList, can_focus=False):
     """A list of answers of which one is picked: the arrows move its cursor, Space or Enter
-    picks the answer under it."""
+    picks the answer under it and clears the others at once (:meth:`choose`).
+
+    Not Textual's toggle: its RadioSet clears the answer picked before only when it reads
+    the button's message, after the keys of the burst still in the form's queue. Walk 6:
+    Enter on 'a model', Down, Enter on 'a system' (picked before) turned 'a system' off,
+    then Textual turned it on again beside 'a model': two dots, and Enter on 'a system'
+    did nothing after, as its button was already on."""
 
     def press(self, key: str) -> bool:
         if key in ("down", "right"):
@@ -105,14 +111,24 @@ class Answers(RadioSet, AnswerList, can_focus=False):
         elif key in ("up", "left"):
             self.action_previous_button()
         elif key in ("space", "enter"):
-            buttons = list(self.query(RadioButton))
-            before = [b.value for b in buttons]
-            self.action_toggle_button()
-            picked = [k for k, b in enumerate(buttons) if b.value and not before[k]]
-            if picked and isinstance(self.parent, FieldRow):
-                self.parent.pick((picked[0],))
+            index = self._selected
+            if index is not None and self.choose(index) and isinstance(self.parent, FieldRow):
+                self.parent.pick((index,))
         else:
             return False
+        return True
+
+    def choose(self, index: int) -> bool:
+        """Answer ``index`` (0-based) marked as picked and every other not, at once, without
+        the buttons' messages (the row hands the pick to the lab); False: it was already
+        the one picked, alone."""
+        buttons = list(self.query(RadioButton))
+        if all(b.value == (k == index) for k, b in enumerate(buttons)):
+            return False
+        with self.prevent(RadioButton.Changed):
+            for k, b in enumerate(buttons):
+                b.value = k == index
+        self._pressed_button = buttons[index]
         return True
 
 
