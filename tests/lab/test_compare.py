@@ -248,7 +248,8 @@ def test_the_two_T_are_explained_in_one_sentence_on_every_screen(tmp_path):
             compared = " ".join(comp for _, _, comp in views.comparisons(s, sid))
             assert st.T_63_note is not None and st.T_63_note not in lines, sid
             assert (lines + compared).count("Both are fair readings of T") == 1, sid
-        assert said not in _lines(s, "task12")  # its comparison says it there
+        # under the results, not in Task 12's comparison: that stays short beside the entry
+        assert said in _lines(s, "task12") and said not in _compare(s, "task12")["your T"][1]
         (r,) = [r for r in own_first.step_rows(s) if r.key == "own.T"]
         assert r.why == two_T_of(st, "the group's") and "the group's T is graded" in r.why
         assert r.cells[2].startswith(format_number(st.T_63 * 1e3))

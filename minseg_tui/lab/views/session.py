@@ -380,7 +380,9 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             lsq = (
                 c.least_squares if isinstance(c.least_squares, str) else _fmt(c.least_squares, unit)
             )
-            comp += f"\n  least squares: {lsq}. {c.why}".rstrip()
+            # T's why is the long sentence on the two readings of T: it stands under the
+            # results (:func:`results`), so the comparison stays short beside the entry
+            comp += f"\n  least squares: {lsq}. {'' if c.key == 'own.T' else c.why}".rstrip()
         out.append((c.label, own, comp))
     return tuple(out)
 
@@ -833,11 +835,6 @@ def with_two_T(notices: Sequence[Notice], where: str) -> list[str]:
     return out
 
 
-def _compared(step_id: str) -> tuple[str, ...]:
-    """The fields of step ``step_id`` set beside the group's way under its entries."""
-    return tuple(f.key for f in step(step_id).fields if f.compare)
-
-
 def results(session: Session, step_id: str) -> ResultsView:
     """Tasks 11-15 from the session for step ``step_id`` (a worker's job: 0.4-0.5 s on long
     runs)."""
@@ -887,12 +884,8 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "T",
                 "Task 12",
             ),
-            # why the two T differ, said once: Task 12's comparison under the entry says it
-            *(
-                [lab_compare.two_T_of(st)]
-                if "own.T" not in conceal and "own.T" not in _compared(step_id)
-                else []
-            ),
+            # why the two T differ, said once on each screen (not in Task 12's comparison)
+            *([lab_compare.two_T_of(st)] if "own.T" not in conceal else []),
             shown("own.J", f"J = {_fmt(st.J, 'kg m^2')}", "J", "Task 13"),
             shown("own.model", f"model: {st.model_equation(_num)}", "the model", "Task 14"),
             shown(
