@@ -6,6 +6,7 @@ from textual.reactive import reactive
 from textual.widgets import Static
 
 from minseg_tui.model.plant import MeterReading
+from minseg_tui.quantities import format_fixed
 from minseg_tui.ui.device import DeviceInfo
 
 
@@ -25,4 +26,9 @@ class MeterPanel(Static):
         m = self.reading
         if m is None:
             return "multimeter (virtual, M1A-M1B): reading…"
-        return f"multimeter (virtual, M1A-M1B): {m.u_A:.2f} V · {m.i * 1000:.1f} mA · {m.R:.1f} Ω"
+        shown = (
+            format_fixed(m.u_A, 2, "V"),
+            format_fixed(m.i * 1000, 1, "mA"),
+            format_fixed(m.R, 1, "Ω"),
+        )
+        return "multimeter (virtual, M1A-M1B): " + " · ".join(shown)
