@@ -17,8 +17,10 @@ import numpy as np
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.state.entries import Entry
+from minseg_tui.lab.state.results import Notice
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import check_words, own_first
+from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import in_words
@@ -252,9 +254,12 @@ _F_UNIT = lab_steps.FIELDS["own.f"].unit
 """f in the unit the group types it in (Task 9's entry)."""
 
 
+_STEP_TITLE = "Step response and model (Tasks 10-15)"
+
+
 def _step_section(session: Session) -> Section:
     res = session.results()
-    sec = Section("Step response and model (Tasks 10-15)")
+    sec = Section(_STEP_TITLE)
     sec.blocks.append(own_first.run_used(session))
     ident = res.identification
     if ident is None or ident.step is None:
@@ -265,16 +270,17 @@ def _step_section(session: Session) -> Section:
     s = ident.step
     rows = own_first.step_rows(session)
     sec.blocks.append(
-        "Each value the group worked out, first as the group gave it, then computed the "
-        "group's way (J from their own T, K from their omega_ss and u_ss, ...), then the "
-        "program's least-squares value:"
+        "Each value the group worked out, first as the group gave it, then the group's way "
+        "(J from their own T, K from their omega_ss and u_ss, ...; T as the program reads it "
+        "by the group's method, at 63 % of each rise of the same run), then the program's "
+        "least-squares value:"
     )
     sec.blocks.append(Table(own_first.STEP_HEADER, tuple(r.cells for r in rows)))
     sec.blocks.append(own_first.MARKS_SAID)
     sec.blocks.append(own_first.policy_in_force(session)[0])
+    # T's why is the one sentence on the two readings of T (the model's own note, which
+    # the CLI gives, would say it a second time)
     sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
-    if s.T_63_note:
-        sec.blocks.append(s.T_63_note)
     sec.blocks.append(f"How T was fitted: {s.fit.why}.")
     zoom = _zoom_figure(session, res.run, s)
     if zoom is not None:
@@ -364,10 +370,15 @@ def _label(label: str) -> str:
 
 def _warnings_section(session: Session) -> Section:
     res = session.results()
-    items = [
-        f"{where}: {n.message}" if (where := _where(n.source)) else n.message
-        for n in session.warnings()
-    ]
+    # the findings on the two readings of T give the facts; why the two differ is said once,
+    # under the table of Tasks 11-15 (own_first.step_rows: T's why)
+    items = views.with_two_T(
+        [
+            Notice(n.source, f"{where}: {n.message}" if (where := _where(n.source)) else n.message)
+            for n in session.warnings()
+        ],
+        f"see {_STEP_TITLE}, the line T (Task 12) under its table",
+    )
     items += [
         f"refused entry {_where(e.key) or e.key}: {e.text!r} ({own_first.TOLD} {e.message})"
         for e in session.entries.values()

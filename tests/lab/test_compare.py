@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from minseg_tui.lab.content.steps import step
-from minseg_tui.lab.state.compare import read_policy
+from minseg_tui.lab.state.compare import read_policy, two_T, two_T_of
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
@@ -216,3 +216,76 @@ def test_the_groups_values_are_quoted_with_the_digits_they_typed(tmp_path):
         s.enter("own.T", "0,057")
         (c,) = s.comparisons("task13")
         assert "from your T = 0.057 s" in c.how, c.how
+
+
+def test_the_two_T_are_explained_in_one_sentence_on_every_screen(tmp_path):
+    """Walk 6, item 4: Tasks 11-15 said why the 63 % reading and the least-squares T differ
+    twice and differently: the model's note under the results ("... which is the whole
+    difference. The least-squares fit models the sampling, so its T is the one the model
+    uses.") and Task 12's comparison ("The 63 % reading takes one sampled point ..."). One
+    sentence now says it, the same wherever it stands, and on no screen twice; Task 12's
+    value is the program's reading by the group's method (item 5)."""
+    with _lab(tmp_path) as s:
+        st = s.results().identification.step  # type: ignore[union-attr]
+        assert st is not None and st.T_63 is not None
+        s.enter("own.T", "57 ms")
+        (c,) = s.comparisons("task12")
+        said = two_T_of(st)
+        assert c.why == said and said.count(". ") == 0 and said.endswith(".")
+        assert said.startswith(
+            f"Both are fair readings of T: the 63 % reading ({format_number(st.T_63 * 1e3)} ms)"
+        )
+        assert "is the one yours is graded against" in said
+        assert (
+            f"the least-squares T ({format_number(st.T * 1e3)} ms) is the one the program's model and its J use"
+            in said
+        )
+        apart = format_number(abs(st.T_63 - st.T) * 1e3, 3)
+        assert f"here it is {apart} ms longer" in said and "read off the logged samples" in said
+        assert c.how.startswith("the program's reading by your method: 63 % of each rise")
+        for sid in ("task11", "task12", "task13", "task14", "task15"):
+            lines = _lines(s, sid)
+            compared = " ".join(comp for _, _, comp in views.comparisons(s, sid))
+            assert st.T_63_note is not None and st.T_63_note not in lines, sid
+            assert (lines + compared).count("Both are fair readings of T") == 1, sid
+        # under the results, not in Task 12's comparison: that stays short beside the entry
+        assert said in _lines(s, "task12") and said not in _compare(s, "task12")["your T"][1]
+        (r,) = [r for r in own_first.step_rows(s) if r.key == "own.T"]
+        assert r.why == two_T_of(st, "the group's") and "the group's T is graded" in r.why
+        assert r.cells[2].startswith(format_number(st.T_63 * 1e3))
+        assert "(the program's reading by the group's method: 63 % of each rise" in r.cells[2]
+
+
+def test_the_one_sentence_on_the_two_T_says_what_it_knows():
+    """With a dead time it says the reading holds it; without a 63 % reading, that there is
+    none to grade against; the sign of the difference as it is."""
+    dead = two_T(0.043, 0.062, "the group's", dead_time=0.005)
+    assert (
+        "the 63 % reading counts from the logged step, so it holds the dead time of 5.000 ms"
+        in dead
+    )
+    assert "here it is 19.0 ms longer" in dead and "the one the group's T is graded" in dead
+    short = two_T(0.043, 0.040)
+    assert "here it is 3.00 ms shorter" in short and "dead time" not in short
+    none = two_T(0.043, None)
+    assert none.startswith("No rise of this run crossed 63 % of its step")
+    assert "the least-squares T (43.00 ms) is the one the program's model and its J use" in none
+    for said in (dead, short, none):
+        assert said.count(". ") == 0 and "whole difference" not in said
+
+
+def test_the_table_keeps_the_T_findings_back_until_the_group_read_T(tmp_path):
+    """Walk 6: the Tasks 4-9 table's warnings gave the least-squares T and the 63 % reading
+    before the group answered Task 12, with a third account of why the two differ. They wait
+    for the group's T, then give the facts in one warning that points to Task 12."""
+    with _lab(tmp_path) as s:
+        codes = {n.source for n in s.warnings("table")}
+        assert codes & set(views.TWO_T), codes  # the seeded plant's T is a few samples
+        before = " ".join(views.table(s).warnings)
+        assert "63 % reading" not in before and "least-squares T" not in before
+        s.enter("own.T", "57 ms")
+        after = [w for w in views.table(s).warnings if "least-squares T" in w]
+        assert len(after) == 1 and after[0].endswith(
+            "which one the program's model uses: Task 12 says it."
+        )
+        assert "Both are fair" not in after[0] and "lags the true speed" not in after[0]

@@ -79,21 +79,21 @@ def test_every_value_leads_with_the_groups_own(tmp_path: Path) -> None:
     assert K["the program's value (least squares)"].startswith(format_number(st.step.K))
     T = _row(table, "T (Task 12)")
     assert T["the group's value"] == "0.09 s"
-    assert T["computed the group's way"].startswith(format_number(st.step.T_63 or 0.0))
-    assert "the 63 % reading" in T["computed the group's way"]
+    assert T["computed or read the group's way"].startswith(format_number(st.step.T_63 or 0.0))
+    assert "the program's reading by the group's method" in T["computed or read the group's way"]
     assert T["the program's value (least squares)"].startswith(format_number(st.step.T))
     J = _row(table, "J (Task 13)")
     assert J["the group's value"] == "not answered"
-    assert "from the group's T = 0.09 s" in J["computed the group's way"]  # as typed
+    assert "from the group's T = 0.09 s" in J["computed or read the group's way"]  # as typed
     assert J["the program's value (least squares)"].startswith(format_number(st.step.J))
     model = _row(table, "the model (Task 14)")
-    assert model["computed the group's way"].endswith("(with the group's T and K)")
+    assert model["computed or read the group's way"].endswith("(with the group's T and K)")
     # the close-up of one rise is the program's reading, and says so
     (caption,) = re.findall(r"^\*(.*)\*$", results, re.M)
     assert caption.startswith("The program's reading of one rise of run steps-1")
     # why the group's way and the program's differ, one sentence each, after the table
     assert "J (Task 13): The least-squares J uses T = " in results
-    assert "T (Task 12): The 63 % reading takes one sampled point" in results
+    assert "T (Task 12): Both are fair readings of T: the 63 % reading" in results
 
 
 def test_the_shown_column_says_when_the_group_saw_each_value(tmp_path: Path) -> None:
@@ -354,9 +354,7 @@ def test_why_the_two_T_differ_names_what_the_fit_used(tmp_path: Path) -> None:
     assert st is not None and st.fit.method == "whole_log"
     results = _section(md, "Step response and model")
     assert "whole rise" not in results
-    assert (
-        "the least-squares T fits whole stretches of the run with the sampling modelled." in results
-    )
+    assert "the least-squares fit models the sampling, so its T describes the motor." in results
     assert "J uses T = " in results and "fitted over whole stretches of the run;" in results
     assert "How T was fitted: one first-order model fits the whole log" in results
 

@@ -51,16 +51,23 @@ def test_the_sampling_is_said_as_how_often_a_sample_came(tmp_path: Path) -> None
 def test_the_warning_on_a_short_T_leaves_both_readings_fair(tmp_path: Path) -> None:
     """Issue 20, second walk: the warning on a T of a few samples said "The least-squares T
     models the sampling and is the one to use", while Task 12 accepts the group's 63 %
-    reading as right. It now says why the two differ and which one the model uses."""
+    reading as right. Walk 6, item 4: the warnings then said "Both are fair readings of T"
+    and further down the report said the sampling alone was "the whole difference" and the
+    least-squares T "the one the model uses". The warnings now give the facts (T is short,
+    the two differ by so much) and point to the one sentence on why, which is said once."""
     with _session(tmp_path, 0.0) as s:
         s.enter("own.T", "57 ms")  # the 63 % reading, as the manual has the group read it
         md = markdown.render(content.build(s))
     warnings = md.split("## Warnings")[1].split("\n## ")[0]
     (short,) = [ln for ln in warnings.splitlines() if "sample periods" in ln]
     assert "one to use" not in md
-    assert "Both are fair readings of T" in short, short
-    assert "the program's model and its least-squares J use the least-squares one" in short
-    assert "so the two differ" in short
+    assert "differ by " in short and "see Step response and model (Tasks 10-15)" in short
+    assert "Both are fair" not in warnings and "lags the true speed" not in warnings
+    (why,) = [ln for ln in md.splitlines() if "Both are fair readings of T" in ln]
+    assert why.startswith("T (Task 12): Both are fair readings of T: the 63 % reading (")
+    assert "is the one the group's T is graded against" in why
+    assert "is the one the program's model and its J use" in why
+    assert "whole difference" not in md and "the one the model uses" not in md
 
 
 def test_the_capture_windows_say_what_clock_they_count_on(tmp_path: Path) -> None:

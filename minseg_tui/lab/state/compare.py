@@ -22,7 +22,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.steps import Field
 from minseg_tui.lab.state.results import Comparison, Results
-from minseg_tui.model.identify import U_TASK15
+from minseg_tui.model.identify import U_TASK15, ResponseResult
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.quantities import (
     format_diff,
@@ -105,6 +105,49 @@ def _theirs(whose: str, name: str) -> str:
     return "yours" if whose == "your" else f"{whose} {name}"
 
 
+READ_63 = (
+    "the program's reading by {whose} method: 63 % of each rise of this run, median over the rises"
+)
+"""What the T the group's is compared with is (``whose``: "your" or "the group's"): the
+program's own 63 % reading of the run, read the group's way, not computed from their values."""
+
+
+def two_T(T: float, T_63: float | None, whose: str = "your", dead_time: float = 0.0) -> str:
+    """The one sentence on the two readings of T, the same on the screen and in the report
+    (and from the numbers a session file keeps, which it needs no more of): both are fair,
+    the group's T is graded against the 63 % reading ``T_63`` (s; None: no rise crossed
+    63 %), the model and its J use the least-squares ``T`` (s), and why the two differ (the
+    sampling; the model's ``dead_time``, s, too). ``whose``: "your" (the screen) or "the
+    group's" (the report)."""
+    uses = f"the least-squares T ({_ms(T)}) is the one the program's model and its J use"
+    if T_63 is None:
+        return (
+            f"No rise of this run crossed 63 % of its step, so there is no 63 % reading for "
+            f"{_theirs(whose, 'T')} to be graded against; {uses}."
+        )
+    apart = T_63 - T
+    dead = (
+        f"counts from the logged step, so it holds the dead time of {_ms(dead_time)} that the "
+        "model keeps apart from T, and it "
+        if dead_time > 0
+        else ""
+    )
+    return (
+        f"Both are fair readings of T: the 63 % reading ({_ms(T_63)}), the manual's way, is "
+        f"the one {_theirs(whose, 'T')} is graded against, and {uses}; the 63 % reading "
+        f"{dead}is read off the logged samples, which move it (each logged speed is the mean "
+        "over its sample interval, half a sample late, and the reading joins the samples by "
+        f"straight lines): here it is {format_number(abs(apart) * 1e3, 3)} ms "
+        f"{'longer' if apart >= 0 else 'shorter'}, while the least-squares fit models the "
+        "sampling, so its T describes the motor."
+    )
+
+
+def two_T_of(step: ResponseResult, whose: str = "your") -> str:
+    """:func:`two_T` of a step result."""
+    return two_T(step.T, step.T_63, whose, step.dead_time)
+
+
 def compare_fields(
     fields: Iterable[Field],
     value: Callable[[str], float | None],
@@ -162,16 +205,13 @@ def compare_fields(
                     computed, lsq = st.K, None
             elif fld.key == "own.T":
                 computed, lsq = st.T_63, st.T
-                how = "the 63 % reading, median over the rises"
-                why = (
-                    "The 63 % reading takes one sampled point of each rise, which the sampling "
-                    f"moves; the least-squares T fits {span} with the sampling modelled."
-                )
+                how = READ_63.format(whose=whose)
+                why = two_T(st.T, st.T_63, whose, st.dead_time)
             elif fld.key == "own.J":
                 T_used, how = (
                     (own_T, f"from {whose} T = {typed('own.T', own_T, 's')}")
                     if own_T is not None
-                    else (st.T_63, "from the 63 % reading T = " + _ms(st.T_63))
+                    else (st.T_63, "from the program's 63 % reading T = " + _ms(st.T_63))
                     if st.T_63 is not None
                     else (None, "")
                 )
@@ -199,7 +239,7 @@ def compare_fields(
                         f"with {whose} T and K"
                         if own_T is not None and own_K is not None
                         else "with "
-                        + (f"{whose} T" if own_T is not None else "the 63 % reading T")
+                        + (f"{whose} T" if own_T is not None else "the program's 63 % reading T")
                         + " and "
                         + (f"{whose} K" if own_K is not None else "the least-squares K")
                     )
@@ -327,10 +367,13 @@ __all__ = [
     "ANSWERED_FIRST",
     "TOLERANCE",
     "POLICY_FILE",
+    "READ_63",
     "REVEALED_EARLY",
     "Policy",
     "compare_fields",
     "concealed",
+    "two_T",
+    "two_T_of",
     "judge_model",
     "read_policy",
     "reveal_keys",

@@ -91,7 +91,7 @@ TABLE_HEADER: tuple[str, ...] = (
 STEP_HEADER: tuple[str, ...] = (
     "quantity",
     "the group's value",
-    "computed the group's way",
+    "computed or read the group's way",
     "difference",
     "the program's value (least squares)",
     "shown to the group",
@@ -271,8 +271,8 @@ def _own(session: Session, c: Comparison, unit: str) -> str:
 
 
 MARKS_SAID = (
-    f"Marks: {MARK['done']} right; {MARK['wrong']} wrong, farther from the value computed the "
-    "group's way than reading or rounding explains; "
+    f"Marks: {MARK['done']} right; {MARK['wrong']} wrong, farther from the value computed or "
+    "read the group's way than reading or rounding explains; "
     f"{MARK['unjudged']} {NOT_JUDGED}."
 )
 """What the marks in the difference column mean (said under the tables of the group's values;

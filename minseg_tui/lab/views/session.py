@@ -30,7 +30,7 @@ from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import choice_words, read_entry
-from minseg_tui.lab.state.results import Comparison
+from minseg_tui.lab.state.results import Comparison, Notice
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
@@ -385,7 +385,9 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             lsq = (
                 c.least_squares if isinstance(c.least_squares, str) else _fmt(c.least_squares, unit)
             )
-            comp += f"\n  least squares: {lsq}. {c.why}".rstrip()
+            # T's why is the long sentence on the two readings of T: it stands under the
+            # results (:func:`results`), so the comparison stays short beside the entry
+            comp += f"\n  least squares: {lsq}. {'' if c.key == 'own.T' else c.why}".rstrip()
         out.append((c.label, own, comp))
     return tuple(out)
 
@@ -521,7 +523,13 @@ def table(session: Session) -> TableView:
             ("k_a", Cell(_fmt(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
             ("f", Cell(_fmt_milli(ident.f, "N m s/rad"), _FORMULAS["f"])),
         )
-    warnings = tuple(n.message for n in session.warnings("table")) + tuple(res.problems)
+    # the T findings name T, Task 12's answer: kept back until the group has given theirs
+    shown = [
+        n
+        for n in session.warnings("table")
+        if n.source not in TWO_T or "own.T" not in hidden(session)
+    ]
+    warnings = tuple(with_two_T(shown, "Task 12 says it")) + tuple(res.problems)
     return TableView(
         TABLE_HEADERS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
     )
@@ -808,6 +816,30 @@ class ResultsView:
     records the first time: :func:`note_drawn`)."""
 
 
+TWO_T: tuple[str, ...] = ("T_short", "T_63_differs")
+"""The findings (codes) that set the 63 % reading beside the least-squares T: why the two
+differ is said once (:func:`~minseg_tui.lab.state.compare.two_T`), so these keep only their
+first sentence, the fact, and point to it (:func:`with_two_T`)."""
+
+
+def with_two_T(notices: Sequence[Notice], where: str) -> list[str]:
+    """The messages of ``notices`` in order, those of :data:`TWO_T` cut to their first
+    sentence and joined into one, in the place of the first, which ends by pointing to
+    ``where`` the one sentence on the two readings of T stands."""
+    facts = [n.message.split(". ", 1)[0].rstrip(".") + "." for n in notices if n.source in TWO_T]
+    out: list[str] = []
+    for n in notices:
+        if n.source not in TWO_T:
+            out.append(n.message)
+        elif facts:
+            out.append(
+                " ".join(facts) + " Why the 63 % reading and the least-squares T differ, and "
+                f"which one the program's model uses: {where}."
+            )
+            facts = []
+    return out
+
+
 def results(session: Session, step_id: str) -> ResultsView:
     """Tasks 11-15 from the session for step ``step_id`` (a worker's job: 0.4-0.5 s on long
     runs)."""
@@ -857,7 +889,8 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "T",
                 "Task 12",
             ),
-            *([st.T_63_note] if st.T_63_note and "own.T" not in conceal else []),
+            # why the two T differ, said once on each screen (not in Task 12's comparison)
+            *([lab_compare.two_T_of(st)] if "own.T" not in conceal else []),
             shown("own.J", f"J = {_fmt(st.J, 'kg m^2')}", "J", "Task 13"),
             shown("own.model", f"model: {st.model_equation(_num)}", "the model", "Task 14"),
             shown(
