@@ -305,10 +305,16 @@ class StepPane(FieldForm):
 
     def watch_scroll_y(self, old: float, new: float) -> None:
         """The heading shows while the step's own title is scrolled away, or while it shows
-        all of what to do."""
+        all of what to do. Not on each scroll of an entry's placing (the step's top, then the
+        entry): each change of its display costs a layout of the screen, so it is set once
+        where the placing left the step (:meth:`placed`)."""
         super().watch_scroll_y(old, new)
-        if self._heading is not None:
+        if self._heading is not None and not self.is_placing:
             self._heading.display = round(new) > 0 or self._heading.whole
+
+    def placed(self) -> None:
+        if self._heading is not None:
+            self._heading.display = round(self.scroll_y) > 0 or self._heading.whole
 
     @property
     def heading_rows(self) -> int:

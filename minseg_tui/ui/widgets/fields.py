@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import asyncio
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager, nullcontext
 from functools import partial
 from inspect import isawaitable
 from typing import Literal
@@ -626,15 +627,24 @@ class FieldRow(Vertical):
         def place(settled: bool) -> None:
             if not self.is_attached:
                 return
-            if landing:
-                step = next((a for a in self.ancestors if isinstance(a, ScrollableContainer)), None)
-                if step is not None:
-                    step.scroll_to(y=0, animate=False, immediate=True)
-            # a list of answers is centred only once laid out (its answers wrap then)
-            centre = settled or not self.field.options
-            if box is not None and centre and self.is_current and not screen.can_view_entire(box):
-                screen.scroll_to_center(box, animate=False, origin_visible=True, immediate=True)
-            screen.scroll_to_widget(self, animate=False, immediate=True)
+            form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
+            with nullcontext() if form is None else form.placing():
+                if landing:
+                    step = next(
+                        (a for a in self.ancestors if isinstance(a, ScrollableContainer)), None
+                    )
+                    if step is not None:
+                        step.scroll_to(y=0, animate=False, immediate=True)
+                # a list of answers is centred only once laid out (its answers wrap then)
+                centre = settled or not self.field.options
+                if (
+                    box is not None
+                    and centre
+                    and self.is_current
+                    and not screen.can_view_entire(box)
+                ):
+                    screen.scroll_to_center(box, animate=False, origin_visible=True, immediate=True)
+                screen.scroll_to_widget(self, animate=False, immediate=True)
 
         place(False)
         self.call_after_refresh(place, True)
@@ -788,12 +798,36 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         self._taking = False
         """Set by :meth:`take` until the form handles a key of its own: characters typed
         elsewhere are on their way into the current row."""
+        self._placing = 0
+        """How deep in :meth:`placing` (0: not in it)."""
 
     @property
     def heading_rows(self) -> int:
         """Rows a heading kept over the form's top covers (none here; the lab's step form
         has one): a widget scrolled into view goes below them."""
         return 0
+
+    @contextmanager
+    def placing(self) -> Iterator[None]:
+        """Scrolls made in one go to place an entry (landing: the step's top, then the
+        entry): :meth:`placed` follows once, on where they left the form, and what watches
+        the scrolling in between may wait for it (:attr:`is_placing`)."""
+        self._placing += 1
+        try:
+            yield
+        finally:
+            self._placing -= 1
+            if not self._placing:
+                self.placed()
+
+    @property
+    def is_placing(self) -> bool:
+        """Within :meth:`placing`."""
+        return self._placing > 0
+
+    def placed(self) -> None:
+        """The form's scrolls of one :meth:`placing` are done (nothing to do here; the lab's
+        step form shows or hides its heading)."""
 
     # -- rows ------------------------------------------------------------------------------
     def rows(self) -> list[FieldRow]:
