@@ -58,7 +58,9 @@ def test_one_unit_and_the_typed_digits_for_each_quantity(tmp_path):
         assert own == "57 ms" and " s (" not in comp and " ms" in comp, (own, comp)
         s.enter("own.omega_5", "9,65")
         (w5,) = [c for c in s.comparisons("task15") if c.key == "own.omega_5"]
-        assert format_diff(w5.rel_diff or 0.0) == "0 %, the same value"
+        assert w5.rel_diff is not None and format_diff(w5.rel_diff) == "0 %"
+        said = views.entry(s, "own.omega_5")
+        assert said is not None and said.feedback.startswith("✓ right: 0 % from "), said
         s.enter("prep6.y10", "3,79")
         rows = own_first.table_rows(s)
         f_row = next(r for r in rows if r.key == "own.f").cells

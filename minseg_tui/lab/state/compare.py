@@ -95,10 +95,10 @@ def concealed(policy: Policy, answered: Collection[str], revealed: Collection[st
 def format_diff(rel: float) -> str:
     """A relative difference as the group reads it: "+39 %", "-2 %"; under 0.5 % with one
     more digit ("+0.3 %") and under 0.05 % as "< 0.05 %", never "+0 %"; the same number
-    (to the last few digits a float carries) as "0 %, the same value"."""
+    (to the last few digits a float carries) as "0 %": they match."""
     pct = rel * 100.0
     if abs(rel) < SAME:
-        return "0 %, the same value"
+        return "0 %"
     if abs(pct) >= 0.5:
         return f"{pct:+.0f} %"
     if abs(pct) >= 0.05:
