@@ -11,6 +11,7 @@ from textual.content import Content
 from textual.widgets import OptionList
 from textual.widgets._toast import Toast
 
+from minseg_tui.quantities import format_constant
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
@@ -25,6 +26,7 @@ from tests.ui.helpers import (
     record_response_run,
     settle,
     start,
+    start_with_a_run,
     type_in,
 )
 
@@ -135,3 +137,23 @@ async def test_f_typed_in_N_m_s_per_rad_is_judged_in_the_tables_unit(quiet):
         await settle(pilot)
         said = " ".join(row.message.replace("\u00a0", " ").split())
         assert "mN m s/rad" in said and " N m s/rad" not in said.replace("mN m s/rad", ""), said
+
+
+async def test_task_12_gives_T_in_ms_only(quiet):
+    """Walk 6, defect 6: one screen gave the same T as '0.05693 s' (the results lines) and
+    '56.93 ms' (the comparison and the zoom); T is in ms wherever it is shown."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        await type_in(pilot, "own.T", "0,057")
+        await settle(pilot)
+        lines = " ".join(str(app.screen.query_one("#results-lines").render()).split())
+        compare = " ".join(str(app.screen.query_one("#compare").render()).split())
+        assert "T (63 %) = " in lines and "T (least squares) = " in lines, lines
+        for said in (lines, compare):
+            assert not re.search(r"T[^=]*= [\d.]+ s\b", said), said
+            assert not re.search(r"\d s\b", said.replace("rad/s", "")), said
+        with app.session as s:
+            st = s.results().identification.step
+        assert f"T (63 %) = {format_constant(st.T_63, 's')}" in lines, lines
+        assert "yours 57 ms" in compare, compare

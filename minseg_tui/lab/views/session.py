@@ -43,7 +43,7 @@ from minseg_tui.quantities import (
     DIGITS,
     NOT_DETERMINED,
     UNITS,
-    format_interval,
+    format_constant_interval,
     format_number,
     format_quantity,
     format_spread,
@@ -95,11 +95,12 @@ def _num(v: float | None, digits: int = DIGITS) -> str:
 
 
 def _ci(ci: tuple[float, float], unit: str) -> str:
-    """ ", 95 % interval lo – hi unit" for a finite interval; '' when it is not known."""
+    """ ", 95 % interval lo – hi unit" for a finite interval (SI ``unit``, shown in the unit
+    people read it in: T in ms); '' when it is not known."""
     lo, hi = ci
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return ""
-    return f", 95 % interval {format_interval(lo, hi, unit)}"
+    return f", 95 % interval {format_constant_interval(lo, hi, unit)}"
 
 
 # -- Task 4: the live stream ------------------------------------------------------------------
@@ -850,7 +851,8 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
             shown(
                 "own.T",
-                f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
+                f"T (63 %) = {_fmt(st.T_63, shown_unit('s'))}   "
+                f"T (least squares) = {_fmt(st.T, shown_unit('s'))}"
                 f"{_ci(st.T_ci, 's') if st.T_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "T",
                 "Task 12",
