@@ -69,14 +69,16 @@ firmware-hex: $(STAMP)
 	$(PY) -m minseg_tui.device.flashing refresh firmware/build
 
 # The stages side by side (make -j, each stage's output printed whole when it ends): pytest
-# (the longest, so it starts first), lint, the firmware's host tests, its AVR builds and
-# simavr runs (themselves in parallel as job slots free up).
+# (the longest, so it starts first), lint, the firmware's AVR builds and simavr runs
+# (themselves in parallel as job slots free up). The firmware's host tests run inside
+# pytest (tests/firmware runs `make -C firmware host-test` and checks its result): as a stage
+# of their own beside it, a clean clone compiled the sanitized test binary twice at once.
 TEST_JOBS ?= 4
 
 test: $(STAMP)
 	@$(MAKE) --no-print-directory -j$(TEST_JOBS) -O test-stages
 
-test-stages: pytest lint firmware-host-test firmware
+test-stages: pytest lint firmware
 
 bench: $(STAMP)
 	@for b in benchmarks/*.py; do echo "== $$b"; $(PY) $$b || exit 1; done

@@ -30,30 +30,21 @@ import subprocess
 import sys
 import tempfile
 import time
-from datetime import UTC, datetime, timedelta
 from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
-from minseg_tui.model.plant import PlantParams, record
 
-
-class _Clock:
-    def __init__(self) -> None:
-        self.t = datetime(2026, 11, 22, 10, 0, 0, tzinfo=UTC)
-
-    def __call__(self) -> datetime:
-        self.t += timedelta(seconds=1)
-        return self.t
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from tests.seeded import Clock, record_square_wave  # the tests' seeded sessions
 
 
 def make_group(root: Path, k: int) -> Path:
     """Group ``k``: seeded readings, every 17th with a slip, and a step run."""
     rng = np.random.default_rng(k)
     s = Session.create(
-        root, [f"Student {2 * k}", f"Student {2 * k + 1}"], "2026-11-22", clock=_Clock()
+        root, [f"Student {2 * k}", f"Student {2 * k + 1}"], "2026-11-22", clock=Clock()
     )
     s.enter("R", "12 Ω" if k % 17 == 5 else f"{5.2 + 0.15 * rng.standard_normal():.2f} Ω")
     for lv in (2.5, 3.5, 4.5):
@@ -63,19 +54,7 @@ def make_group(root: Path, k: int) -> Path:
         s.enter(f"u_ss@{lv:g}", f"{u:.3f}")
         s.enter(f"omega_ss@{lv:g}", f"{w / (2 * np.pi / 60):.1f}" if k % 17 == 9 else f"{w:.3f}")
         s.enter(f"i_ss@{lv:g}", f"{i / 1000:.4f} mA" if k % 17 == 13 else f"{i:.1f} mA")
-    plan = dict(step("task10").plans)["manual"]
-    n = int(round(plan.duration / plan.ts))
-    u_req = np.concatenate(
-        (np.zeros(20), np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
-    )
-    p = PlantParams()
-    data = record(p, u_req, ts=plan.ts, seed=k, jitter_us=800)
-    rec = s.start_run("steps", plan)
-    for j in range(u_req.size):
-        rec.append(
-            int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), int(round(u_req[j] * 1000))
-        )
-    s.finish_run(rec)
+    record_square_wave(s, seed=k)
     s.go_to("task13")
     s.close()
     return s.folder

@@ -18,8 +18,9 @@ import subprocess
 import sys
 from pathlib import Path
 
+from minseg_tui.device.flashing import PROFILES  # the profiles firmware/Makefile builds
+
 FIRMWARE = Path(__file__).resolve().parents[1] / "firmware"
-PROFILES = ("MinSegMega", "M2V3", "M1V4")
 FIGURES = re.compile(
     r"^figures (?P<profile>\S+) (?P<conn>M\d) sign=(?P<sign>\S+) omega_err_pct=(?P<err>\S+) "
     r"counts_per_rev=(?P<cpr>\S+) dir_rev=(?P<dir>\S+) step_err_pct=(?P<step>\S+) "

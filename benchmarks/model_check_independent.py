@@ -155,6 +155,59 @@ whitened sums after a fence helps an 18-tap average (1031) but again brings the 
 and 1014. Still failing on the held-out seeds: dead_time 901000 and second_pole 901001 named
 velocity_filter, coast_on_zero 901000 with a cap beside it, current_limit 901002 with a
 friction beside it and its hand reported 0.45 s before the touch.
+
+s27-pairs (80fb17d -> 628f76e; changed on tuning seeds only, the held-out seeds run once, at
+the end): a fit's second variant (a cap both ways, a pole on the other side) is started
+from every start again, not only from where the first variant ended (a cap beside a delay
+had been polished in the accelerating-only cap's valley, and a pole named in place of the
+delay); a pole on the drive beside a coast is fitted both as the armature's (no current
+while coasting) and as a driver's lag, whose output falls towards zero through the coast
+(a driver's T2 had come out 25-57 % long). Tuning seeds (--tuning, pairs): seeds 0-9 right
+or honestly ambiguous 89.3 -> 90.7 % with the first change, confidently wrong 9.3 -> 8.0 %;
+seeds 0-4 with both 93.3 -> 96.0 %. Held-out (--seeds 5 --touch-seeds 5): pairs right 73.3
+-> 77.3 %, honestly ambiguous 16.0 -> 14.7 % (right or honestly ambiguous 89.3 -> 92.0 %),
+ambiguous in all 18.7 -> 17.3 %, confidently wrong 8.0 -> 5.3 % (4 of 75), untouched logs
+with a disturbance 0 -> 0; CPU per log (check only) median 1.40 -> 0.96 s, max 8.08 -> 5.51
+s (load average 10-16 on two cores both times; not a side-by-side run). One effect or none
+unchanged (none 5, friction 5, dead time 4, average 3, coast 5, pole 3, cap 3 of 5). A hand
+found with the cause kept 16 -> 14 of 20: friction 901001 now names a pole beside it and an
+average 901001 a cap beside it (both were right after s26-hands); not looked into on those
+seeds, which are not for tuning. On the tuning seeds' touched logs of friction, an average,
+a cap and a pole (seeds 1000-1049, 69 logs, run side by side with 80fb17d afterwards) one
+log changed: current_limit 1008, whose hand is now taken for the model's repeated miss
+(58 -> 57 right). Still wrong on the held-out pairs: a delay with a pole on
+the coupling named a delay alone, a 2-tap average with a coast (taps 3, T 16 % short), an
+average with the armature's pole when T2 equals T (named delay + average), the armature's
+pole with a cap (T 19 % short; likely because under the cap the check lets the pole's drive
+run on as a driver's does, while the armature's current is held at the cap: not measured),
+and two logs ambiguous
+between causes that are not the pair (an average or a cap with a pole). The confidently
+wrong share is still above 5 %.
+
+s27-hands (20bef0a): where the rows after a hand would be left out across a step (the wheel
+not back on the model by then), the model picks up from the speed the hand left the wheel at
+(simulate.restart, its size read before the next step), so those rows and that step's
+response stay in the fit. Tuning seeds 1000-1079 (218 touched logs, --tuning --only
+touches): right 179 -> 182 (reported within 0.15 s 210 -> 210, cause named alone 184 ->
+187): 7 gained (an average, a coast, a friction, a dead time and a cap that lost a spurious
+cap, friction or pole beside them) and 4 were lost (dead time 1008 and 1066 now name the cap
+or the friction that the same logs name with the hand's torque at 0; coast 1071 gains a
+friction its hand-free log does not name, average 1029 a friction, not looked into). A
+restart after every hand (also where the wheel is back on the model before the next step;
+measured on 213 of the 218 logs) gained 3 more but lost average 1014, whose hand-free log
+names a cap: test_check_independent pins it named alone, so the restart is kept to hands
+whose rows would reach past a step. Held-out (--seeds 5 --touch-seeds 5, run once at the
+end): a hand found with the cause kept 15 -> 15 of 20 (coast_on_zero 901000 loses its
+spurious cap, coulomb_friction 901002 gains one; dead_time 901000 and second_pole 901001
+still named velocity_filter, coulomb_friction 901001 with a pole, current_limit 901002 with
+a friction). CPU per check
+on the 20 held-out touched logs, run side by side with the code before at a load average
+of 12-13 on two cores: median 0.68 -> 1.13 s, max 2.46 -> 4.39 s (every fit evaluation also
+simulates the restart; logs without a hand are not touched). The target (>= 90 %) is not
+met: on the tuning seeds most of what is left names, beside the cause, the cap, friction or
+pole that the same log without the hand names too (23 of the 31 logs where the hand was found
+but the cause not named alone before this change), which is the single and pair decisions'
+business.
 """
 
 from __future__ import annotations

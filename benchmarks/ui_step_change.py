@@ -17,8 +17,8 @@ second) over the change's wall time: on a loaded machine a change takes seconds 
 time, and the virtual board's stream alone then adds a good part of the CPU time.
 
 ``--no-paint`` leaves out the painting of the frames, as the UI tests do
-(tests.ui.conftest._unpainted_refresh): the difference from a run without it is what painting
-costs (a terminal needs it; the headless driver throws the frames away).
+(tests.ui.textual_internals.unpainted_refresh): the difference from a run without it is
+what painting costs (a terminal needs it; the headless driver throws the frames away).
 """
 
 from __future__ import annotations
@@ -44,8 +44,8 @@ from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from tests.ui.conftest import _unpainted_refresh  # the UI tests' frames left unpainted
 from tests.ui.helpers import TABLE  # the filled Task 4-9 table the UI tests type
+from tests.ui.textual_internals import unpainted_refresh  # the UI tests' frames left unpainted
 
 PAIRS = (
     ("task11", "task12"),
@@ -164,7 +164,7 @@ def main() -> None:
     ap.add_argument("--no-paint", action="store_true", help="no frame painted (as in the tests)")
     args = ap.parse_args()
     if args.no_paint:
-        Screen._compositor_refresh = _unpainted_refresh  # type: ignore[method-assign]
+        Screen._compositor_refresh = unpainted_refresh  # type: ignore[method-assign]
     with tempfile.TemporaryDirectory() as tmp:
         asyncio.run(run(args, Path(tmp) / "sessions"))
 

@@ -131,10 +131,32 @@ def format_percent(fraction: float) -> str:
     return f"{fraction * 100:.0f} %"
 
 
+def format_diff(rel: float) -> str:
+    """A relative difference (``rel``, 0.39 for 39 %) as the group reads it: "+39 %", "-2 %";
+    under 0.5 % with one more digit ("+0.3 %") and under 0.05 % as "< 0.05 %", never "+0 %";
+    the same number (to the last few digits a float carries: 9.65 typed, 5 V x 1.93 computed)
+    as "0 %": they match."""
+    pct = rel * 100.0
+    if abs(rel) < 1e-9:
+        return "0 %"
+    if abs(pct) >= 0.5:
+        return f"{pct:+.0f} %"
+    if abs(pct) >= 0.05:
+        return f"{pct:+.1f} %"
+    return "< 0.05 %"
+
+
+def format_fixed(value: float, decimals: int, unit: str = "") -> str:
+    """``value`` (already in ``unit``) with a fixed number of ``decimals``, as an instrument or
+    a clock shows it: the virtual multimeter ("2.05 V", "29.8 mA"), a live mean ("3.82"), a
+    run's seconds ("4.2 of 8.0 s"), a board time ("4.625 s")."""
+    return f"{value:.{decimals}f} {unit}".rstrip()
+
+
 def format_spread(spread: float, unit: str = "") -> str:
     """The spread of a captured speed around its mean, as the live readout, the table and
     the report write it: "± 0.03 rad/s" (two decimals, the speed's in rad/s)."""
-    return f"± {spread:.2f} {unit}".rstrip()
+    return f"± {format_fixed(spread, 2, unit)}"
 
 
 def format_ticks(values: Sequence[float]) -> list[str]:

@@ -78,7 +78,7 @@ class CheckedBoard(Protocol):
 
 
 @dataclass(frozen=True)
-class CheckResult:
+class BoardCheckResult:
     """What the check found. ok: the count follows a positive voltage upwards (after a fix,
     if one was made); direction: what the count did ("forward", "reversed", "none");
     counts: the change of the count over the drive (before any fix); connector: the one the
@@ -256,7 +256,7 @@ def check_board(
     fix: bool = True,
     wheel_turned: Callable[[], bool | None] | bool | None = None,
     task5: bool = False,
-) -> CheckResult:
+) -> BoardCheckResult:
     """Drive the motor briefly and say whether the count follows (see the module).
 
     ``wheel_turned``: whether the group saw the wheel turn, or a function that asks them
@@ -270,7 +270,7 @@ def check_board(
     if d.current is not None:
         turned = abs(d.current) >= MIN_CURRENT
     if d.counts >= MIN_COUNTS:
-        return CheckResult(
+        return BoardCheckResult(
             True,
             "forward",
             d.counts,
@@ -284,7 +284,7 @@ def check_board(
         return _reversed(board, samples, d, connector, fix)
     if turned is None and wheel_turned is not None:
         turned = wheel_turned() if callable(wheel_turned) else wheel_turned
-    return CheckResult(
+    return BoardCheckResult(
         False,
         "none",
         d.counts,
@@ -301,7 +301,7 @@ def _reversed(
     d: Drive,
     connector: str | None,
     fix: bool,
-) -> CheckResult:
+) -> BoardCheckResult:
     ident = board.ident
     enc, motor = (ident.enc_dir, ident.motor_dir) if ident else ("FWD", "FWD")
     new = f"DIR,{_flip(enc)},{motor}"
@@ -310,7 +310,7 @@ def _reversed(
         "encoder counts the other way from the motor."
     )
     if not fix:
-        return CheckResult(
+        return BoardCheckResult(
             False,
             "reversed",
             d.counts,
@@ -323,7 +323,7 @@ def _reversed(
     board.set_direction(_flip(enc), motor)
     again = drive(board, samples)
     if again.counts >= MIN_COUNTS:
-        return CheckResult(
+        return BoardCheckResult(
             True,
             "reversed",
             d.counts,
@@ -334,7 +334,7 @@ def _reversed(
             wheel_turned=True,
             current=d.current,
         )
-    return CheckResult(
+    return BoardCheckResult(
         False,
         "reversed",
         d.counts,
@@ -394,11 +394,14 @@ def count_revolution(
     samples: Callable[[], SampleBatch] | None = None,
     timeout: float = 30.0,
     poll: float = 0.02,
+    turned_at: Callable[[], float | None] = lambda: None,
 ) -> RevolutionResult:
     """Count while a hand turns the wheel, until ``done()`` says it is done (or ``timeout``
     s pass): the counts and what they mean. The motor is off meanwhile. ``samples``: a tap
     of the samples opened when the check was asked for (else the link's own, read from its
-    newest sample on)."""
+    newest sample on). ``turned_at()``: the board time (s) at which a simulated hand turned
+    the wheel, when one did (the virtual MinSeg's): the last samples read reach past it, however
+    far the host's reading lags behind the board."""
     take = samples or board.samples
     board.stop()
     # where the count begins: a tap (``samples``) opened when the check was asked for holds
@@ -415,6 +418,9 @@ def count_revolution(
     # the last samples of the turn: until the board's own clock is LAST_US past the newest
     # sample seen when the hand was done (a busy host reads them late, never too early)
     seen = [int(b.t_us[-1]) for b in got if len(b)]
+    turn = turned_at()
+    if turn is not None:
+        seen.append(int(turn * 1e6))
     since = max(seen) if seen else None
     end = time.monotonic() + LAST_WAIT_S
     while time.monotonic() < end:

@@ -448,18 +448,6 @@ class Link:
         """Zero the encoder count."""
         return self._ok(P.Zero())
 
-    def set_supply(self, v_supply: float) -> float:
-        """Supply voltage (V) the board divides by for the duty cycle; returns the applied V."""
-        return int(self._ok(P.SetSupply(round(v_supply * 1000))).values[0]) / 1000.0
-
-    def set_zero_mode(self, mode: str) -> P.Ok:
-        """ "BRAKE" or "COAST" at zero command."""
-        return self._ok(P.SetZeroMode(mode.upper()))
-
-    def set_stream(self, on: bool) -> P.Ok:
-        """Sample stream on or off."""
-        return self._ok(P.SetStream(on))
-
     def set_direction(self, enc: str, motor: str) -> P.Ok:
         """The encoder's counting direction and the motor's polarity, "FWD" or "REV" each;
         the board keeps them (EEPROM) and :attr:`ident` follows."""

@@ -7,7 +7,6 @@ T omega' = -omega + K u_A,  T = R J / (R f + k_v k_a),  K = k_a / (R f + k_v k_a
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 from minseg_tui.units import KA_OVER_KV
@@ -23,13 +22,6 @@ class FirstOrder:
     def steady_state(self, u: float) -> float:
         """Final speed in rad/s for a constant input u (V)."""
         return self.K * u
-
-    def edge_response(self, t: float, amplitude: float, y0: float = 0.0) -> float:
-        """Speed in rad/s at time t (s) after an input edge of ``amplitude`` V from speed y0."""
-        if t <= 0.0:
-            return y0
-        y_inf = self.K * amplitude
-        return y_inf + (y0 - y_inf) * math.exp(-t / self.T)
 
 
 @dataclass(frozen=True)

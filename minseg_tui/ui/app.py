@@ -594,9 +594,17 @@ class LabApp(App[None]):
         self._tap = queue.Queue()
         self.requested = None
         done, cancelled = threading.Event(), threading.Event()
-        hand = getattr(device.board, "hand_turn", None)  # the virtual MinSeg's simulated hand
-        self.push_screen(RevolutionScreen(done, cancelled, hand))
-        self._revolution(device, self._tap, done, cancelled)
+        board = device.board  # the virtual MinSeg behind the link, or None at a real board
+        hand = getattr(board, "hand_turn", None)  # the virtual MinSeg's simulated hand
+        turned: list[float] = []  # board time of the simulated hand's turn, s
+
+        def turn() -> None:
+            if hand is not None:
+                hand()
+                turned.append(float(board.now))
+
+        self.push_screen(RevolutionScreen(done, cancelled, None if hand is None else turn))
+        self._revolution(device, self._tap, done, cancelled, lambda: turned[-1] if turned else None)
 
     @work(thread=True, exclusive=True, group="check", name="revolution")
     def _revolution(
@@ -605,8 +613,10 @@ class LabApp(App[None]):
         tap: queue.Queue[SampleBatch],
         done: threading.Event,
         cancelled: threading.Event,
+        turned_at: Callable[[], float | None],
     ) -> None:
-        """Worker: count until the group says the wheel turned once (or closes the dialog)."""
+        """Worker: count until the group says the wheel turned once (or closes the dialog);
+        ``turned_at()``: board time (s) of the simulated hand's turn, once it has turned."""
         stop = self._stop
 
         def finished() -> bool:
@@ -614,7 +624,11 @@ class LabApp(App[None]):
 
         try:
             result = count_revolution(
-                device, finished, samples=self._taker(tap), timeout=REVOLUTION_TIMEOUT
+                device,
+                finished,
+                samples=self._taker(tap),
+                timeout=REVOLUTION_TIMEOUT,
+                turned_at=turned_at,
             )
         except MinsegError as exc:
             self.post_message(RevolutionCounted(None, str(exc)))

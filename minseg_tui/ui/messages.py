@@ -2,10 +2,10 @@
 
 From the app's workers to the app: :class:`DeviceOpened`, :class:`SamplesArrived`,
 :class:`LinkEventArrived`, :class:`MeterRead`, :class:`MotorKnown`, :class:`Task10Moved`,
-:class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the screen up: the
-requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which drives the
-device; :class:`CaptureRequested`, :class:`LogImportRequested`, :class:`RunChosen` for the
-lab screen, which holds the session's entries) and :class:`StepShown`.
+:class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the
+screen up: the requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which
+drives the device; :class:`CaptureRequested`, :class:`LogImportRequested` for the lab screen,
+which holds the session's entries) and :class:`StepShown`.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 from textual.message import Message
 
-from minseg_tui.device.boardcheck import CheckResult, RevolutionResult
+from minseg_tui.device.boardcheck import BoardCheckResult, RevolutionResult
 from minseg_tui.device.link import LinkEvent, LinkStats
 from minseg_tui.lab.content.steps import Step
 from minseg_tui.lab.state.task10 import Task10
@@ -121,13 +121,6 @@ class LogImportRequested(Message):
 
 
 @dataclass
-class RunChosen(Message):
-    """Tasks 11-15 and the model check use run ``name`` (None: the newest complete 25 ms run)."""
-
-    name: str | None
-
-
-@dataclass
 class StepShown(Message):
     """The lab screen now shows ``step``."""
 
@@ -138,7 +131,7 @@ class StepShown(Message):
 class BoardChecked(Message):
     """The board check finished: its ``result``, or None with the one-line ``error``."""
 
-    result: CheckResult | None
+    result: BoardCheckResult | None
     error: str = ""
 
 

@@ -2,26 +2,12 @@
 
 from __future__ import annotations
 
-from datetime import UTC, datetime, timedelta
 from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
-from minseg_tui.model.plant import PlantParams, record
-
-
-class Clock:
-    """A clock that ticks one second per call, from a fixed start."""
-
-    def __init__(self) -> None:
-        self.t = datetime(2026, 11, 22, 10, 0, 0, tzinfo=UTC)
-
-    def __call__(self) -> datetime:
-        self.t += timedelta(seconds=1)
-        return self.t
-
+from tests.seeded import Clock, record_square_wave
 
 LEVELS = (2.5, 3.5, 4.5)
 
@@ -60,21 +46,7 @@ def group(
     if own_T is not None:
         s.enter("own.T", own_T)
     if run:
-        plan = dict(step("task10").plans)["manual"]
-        n = int(round(plan.duration / plan.ts))
-        u_req = np.concatenate(
-            (
-                np.zeros(20),
-                np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0),
-            )
-        )
-        data = record(PlantParams(), u_req, ts=plan.ts, seed=seed, jitter_us=800)
-        rec = s.start_run("steps", plan)
-        for k in range(u_req.size):
-            rec.append(
-                int(data.seq[k]), int(data.t_us[k]), int(data.count[k]), int(round(u_req[k] * 1000))
-            )
-        s.finish_run(rec)
+        record_square_wave(s, seed=seed)
     s.go_to(at)
     s.close()
     return s.folder

@@ -18,7 +18,7 @@ from minseg_tui.cli import main
 from minseg_tui.device.boardcheck import (
     CHECK_S,
     CHECK_U,
-    CheckResult,
+    BoardCheckResult,
     NoCountWatch,
     check_board,
     count_revolution,
@@ -138,27 +138,61 @@ def test_the_question_is_not_asked_when_counts_came(board):
 
 def test_one_revolution_by_hand_counts_720(board):
     # the hand turns once counting has begun (the link read a sample after the motor stopped), as a
-    # student turns after the prompt, however late a busy machine gets there
+    # student turns after the prompt, however late a busy machine gets there; and the student is
+    # done once the turn has reached the host. With the virtual clock, board time runs ahead of the
+    # host's while the link reads, so samples from before the turn can still be on their way when
+    # the hand lets go: done waits for a sample the board took after the turn, as a student at a
+    # real board presses Enter after the wheel has turned, well after its samples were sent
     link = board()
-    turned = threading.Event()
     counting = threading.Event()
+    turned_at: list[int] = []  # board time of the turn, us
+    past_turn = threading.Event()
     read = link.samples
 
-    def samples():  # the link's own read, noting when counting has begun: a sample read
+    def samples():  # the link's own read, noting when counting has begun and when the turn is in
         batch = read()
         if len(batch):
             counting.set()
+            if turned_at and int(batch.t_us[-1]) > turned_at[0]:
+                past_turn.set()
         return batch
 
     def hand():
         assert counting.wait(30)
-        link.board.turn_by_hand(1.0)
-        turned.set()
+        with link.board.lock:
+            link.board.turn_by_hand(1.0)
+            turned_at.append(int(link.board.now * 1e6))
 
     link.samples = samples
     threading.Thread(target=hand, daemon=True).start()
-    r = count_revolution(link, turned.is_set, timeout=60)
+    r = count_revolution(link, past_turn.is_set, timeout=60)
     assert r.ok and abs(r.counts) == 720 and "720" in r.text
+
+
+def test_a_simulated_turn_is_counted_however_far_the_host_lags(board):
+    # a busy host reads the board two batches late: the samples in hand when the simulated hand
+    # turned the wheel, and the group said done, were all taken before the turn. The count reads on
+    # past the board time of the turn (it counted 0 when it stopped 100 ms past the newest sample
+    # read, the way a UI test under load once did)
+    link = board()
+    read = link.samples
+    late: list[SampleBatch] = []
+    turned: list[float] = []
+
+    def samples() -> SampleBatch:
+        late.append(read())
+        return late.pop(0) if len(late) > 2 else SampleBatch.concat([])
+
+    def done() -> bool:
+        if not turned:
+            with link.board.lock:
+                link.board.turn_by_hand(1.0)
+                turned.append(link.board.now)
+        return True
+
+    link.samples = samples
+    r = count_revolution(link, done, timeout=60, turned_at=lambda: turned[-1] if turned else None)
+    assert r.ok and abs(r.counts) == 720, r.text
 
 
 @pytest.mark.parametrize(
@@ -178,7 +212,7 @@ def test_counts_per_revolution_in_words(counts, ok, says):
 
 
 def test_json_keys():
-    keys = set(CheckResult(True, "forward", 1, "M1", "x").as_json())
+    keys = set(BoardCheckResult(True, "forward", 1, "M1", "x").as_json())
     assert {"ok", "direction", "counts", "connector", "text"} <= keys
 
 

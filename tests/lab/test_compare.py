@@ -10,13 +10,13 @@ from pathlib import Path
 import numpy as np
 
 from minseg_tui.lab.content.steps import step
-from minseg_tui.lab.state.compare import format_diff, read_policy
+from minseg_tui.lab.state.compare import read_policy
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.model.plant import PlantParams, record
-from minseg_tui.quantities import example, format_reading
+from minseg_tui.quantities import example, format_diff, format_reading
 
 
 def _lab(root: Path) -> Session:

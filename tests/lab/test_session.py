@@ -23,19 +23,14 @@ from minseg_tui.lab.saving.runs import applied_voltage, read_partial
 from minseg_tui.lab.saving.store import SessionDamaged, SessionLocked, SessionMissing, list_sessions
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import PlantParams, record
+from tests.seeded import Clock
 
 HERE = Path(__file__).parent
 
 
-class FakeClock:
-    """A clock that advances one second per reading (deterministic timestamps)."""
-
-    def __init__(self) -> None:
-        self.t = datetime(2026, 11, 22, 9, 0, 0, tzinfo=UTC)
-
-    def __call__(self) -> datetime:
-        self.t += timedelta(seconds=1)
-        return self.t
+def FakeClock() -> Clock:
+    """A clock that advances one second per reading from 2026-11-22 09:00 UTC."""
+    return Clock(datetime(2026, 11, 22, 9, 0, 0, tzinfo=UTC))
 
 
 def _on_disk(s: Session) -> dict:

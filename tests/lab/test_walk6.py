@@ -3,10 +3,10 @@ program's own warning has a mark of its own, which F1's legend explains."""
 
 from __future__ import annotations
 
-from minseg_tui.lab.state.compare import format_diff
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
+from minseg_tui.quantities import format_diff
 from minseg_tui.report.content import build as build_report
 from minseg_tui.report.markdown import render as markdown
 from tests.lab.test_compare import _compare, _lab

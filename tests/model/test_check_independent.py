@@ -371,11 +371,13 @@ def test_a_departure_hidden_after_every_rising_edge_of_a_generator_log_is_one_mo
     assert "not a hand on the wheel" in miss[0].text
 
 
-def test_a_hands_rows_are_left_out_until_the_wheel_is_back_on_the_model():
+def test_the_model_picks_up_where_the_hand_let_go_and_follows_the_wheel_across_the_step():
     # the hand lets go of the wheel at 6.25 s, 0.43 s (under 2 T) before the input steps down
     # at 6.68 s: the wheel is still coming back when the step comes, and goes on coming back
-    # after it. Those rows are left out too, across the step, until the model meets the
-    # speed again (they were kept from the step on, 2.3 rad/s off the model)
+    # after it. The rows were left out until the model met the speed again, across the step,
+    # which took that step's response out of the fit; now the rows from where the hand let go
+    # stay in, the model restarted from the speed the wheel was left at (within 0.03 rad/s
+    # of the speed there; they were 2.3 rad/s off when kept from the step on, before that)
     log = make(1012, ("velocity_filter",), touch=True)
     assert log.touch is not None
     r = check(log.t, log.u, log.omega)
@@ -385,21 +387,59 @@ def test_a_hands_rows_are_left_out_until_the_wheel_is_back_on_the_model():
     words = hand.text.split("the rows from t = ")[1]
     first = float(words.split(" s to ")[0])
     last = float(words.split(" s to ")[1].split(" s ")[0])
-    assert first <= hand.t and last > step + 0.5
+    assert first <= hand.t and log.touch[1] <= last < step
     # the departure itself ends by the step: the sentence says the input stays put there (it
     # said 6.701 s, a row past the step at 6.676 s, through the 9-tap average)
     said = float(hand.text.split(f"from t = {hand.t:.3f} s to ")[1].split(" s ")[0])
     assert hand.t_end is not None and said == pytest.approx(hand.t_end, abs=1e-3)
     assert hand.t_end <= step + 1e-9
-    assert "the wheel's way back until the model meets the speed again" in words
+    assert "the model picks up from the speed the wheel was left at" in hand.text
     left = (log.t >= first) & (log.t <= last)
     assert r.baseline.rows <= r.t.size - np.count_nonzero(left)
-    # where the rows are taken back, the model chosen follows the speed within 0.1 rad/s
-    # (0.2 % of the speed there; the old fence took them back 2.3 rad/s off)
+    # from where the rows are taken back to a second past the step, the model chosen follows
+    # the speed within 0.1 rad/s (0.2 % of the speed there)
     err = r.omega - r.extended_pred
-    after = np.flatnonzero(log.t > last)[:5]
-    assert float(np.sqrt(np.mean(err[after] ** 2))) < 0.1
+    after = np.flatnonzero((log.t > last + 1e-3) & (log.t < step + 1.0))
+    assert float(np.max(np.abs(err[after]))) < 0.1
     assert named(r) == ["velocity_filter"]
+
+
+def test_the_restart_is_the_model_started_from_another_speed():
+    # a wheel off the model's speed where a hand let go comes back as the model started from
+    # that speed: the difference of two runs of the model from two speeds is the restart's
+    # departure times a constant, on every row read after it, through an average, a dead
+    # time and a coast (a linear model: no friction, no cap)
+    from minseg_tui.model.check.simulate import Effects, Stretches, response, restart
+
+    t = np.arange(300) * 0.01
+    u = np.where(t < 1.0, 2.0, np.where(t < 2.0, 0.0, 3.0))
+    st = Stretches.from_samples(t, u)
+    for fx in (Effects(taps=7), Effects(delay=0.03), Effects(taps=3, T_coast=0.6)):
+        d = response(st, t, 0.01, 0.2, fx, z0=0.5) - response(st, t, 0.01, 0.2, fx, z0=0.0)
+        col = restart(st, t, 0.01, 0.2, fx, 12)
+        assert np.all(col[:12] == 0.0)
+        rows = np.flatnonzero(np.abs(col) > 1e-9)
+        rows = rows[rows >= 12]
+        ratio = d[rows] / col[rows]
+        assert rows.size > 100
+        assert np.ptp(ratio) < 1e-6 * abs(float(ratio[0]))
+
+
+@pytest.mark.parametrize(
+    "cause,seed", [("velocity_filter", 1023), ("dead_time", 1067), ("coast_on_zero", 1063)]
+)
+def test_a_hand_leaves_the_rows_after_it_to_the_model_and_the_cause_is_named_alone(cause, seed):
+    # with the rows left out until the wheel was back on the model, a spurious cause cleared
+    # its margin on what was left (1023: a cap beside the 10-tap average, 12 % of the
+    # whitened residual; 1067: a cap beside the dead time; 1063: a friction beside the coast);
+    # the same logs without the hand name the cause alone. With the model restarted where
+    # the hand let go, the wheel's way back stays in the fit, and the cause is named alone
+    log = make(seed, (cause,), touch=True)
+    assert log.touch is not None
+    r = check(log.t, log.u, log.omega)
+    hands = [a for a in r.anomalies if a.kind == "disturbance"]
+    assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.15
+    assert named(r) == [cause]
 
 
 @pytest.mark.parametrize("seed", [507, 509])
@@ -443,3 +483,75 @@ def test_a_hands_onset_is_fitted_through_the_noise_not_walked_back_row_by_row():
     assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.1
     assert f"the rows from t = {hands[0].t:.3f} s to" in hands[0].text
     assert named(r) == ["velocity_filter"]
+
+
+@pytest.mark.parametrize(
+    ("seed", "pair"),
+    [
+        (7, ("current_limit", "dead_time")),
+        (17, ("current_limit", "dead_time")),
+        (12, ("current_limit", "velocity_filter")),
+    ],
+)
+def test_a_cap_with_a_delay_or_an_average_is_fitted_from_every_start_in_each_variant(seed, pair):
+    # a cap that brakes too, beside a delay of 15-47 ms or an 8-tap average: the cap that only
+    # accelerates is fitted first, and the cap both ways was polished from where that one
+    # ended, in another valley (cap + delay 14 and 94 times the residual the true pair
+    # leaves); the pole on the measurement or a delay came out in place of the true cause
+    log = make(seed, pair)
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == sorted(pair), (named(r), log.how)
+    assert _right_or_honest(r, log, pair), (r.extended.params, r.finding.ambiguous_with)
+    other = next(c for c in pair if c != "current_limit")
+    p = r.extended.params
+    assert p[BY_CAUSE[other].param] == pytest.approx(log.causes[other], rel=0.1)
+    assert p["a_max"] == pytest.approx(log.causes["current_limit"], rel=0.05)
+
+
+@pytest.mark.parametrize("seed", [1, 13])
+def test_a_pole_of_the_driver_runs_on_through_a_coast(seed):
+    # a driver that lags its command (T2 86-159 ms) and coasts at zero command: through the
+    # coast the driver's output falls towards zero, so when the bridge closes the wheel, still
+    # turning, is braked before it speeds up. Fitted as the armature's pole (no current while
+    # coasting, built from zero after it) T2 came out 25-57 % long
+    log = make(seed, ("coast_on_zero", "second_pole"))
+    assert "pole on the driver" in log.how
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == ["coast_on_zero", "second_pole"] and not r.finding.ambiguous_with
+    p = r.extended.params
+    assert p["T2"] == pytest.approx(log.causes["second_pole"], rel=0.05)
+    assert p["T_coast"] == pytest.approx(log.causes["coast_on_zero"], rel=0.05)
+    assert p["T"] == pytest.approx(log.T, rel=0.05)
+    assert "in the driver lags its command and runs on while the wheel coasts" in text(r)
+
+
+def test_after_a_coast_a_drivers_pole_starts_from_its_decayed_output_the_armatures_from_zero():
+    # 1 V for 2 s, a coast of 0.4 s (T_coast 2 s), 1 V again; T 0.2 s, T2 0.1 s (K = 1)
+    from minseg_tui.model.check.simulate import Effects, Stretches, response
+
+    ts = 0.01
+    t = np.arange(0.0, 3.0, ts)
+    u = np.where((t >= 2.0) & (t < 2.4), 0.0, 1.0)
+    st = Stretches.from_samples(t, u)
+    T, T2, tc = 0.2, 0.1, 2.0
+    arm = response(st, t, ts, T, Effects(T2=T2, T_coast=tc), None)
+    drv = response(st, t, ts, T, Effects(T2=T2, T_coast=tc, pole_driver=True), None)
+    k = int(round(2.4 / ts))
+    assert np.allclose(arm[:k], drv[:k])  # alike until the bridge closes
+    w_end = np.exp(-0.4 / tc)  # the speed the coast leaves
+    # the armature: T w' = v - w with v rising from w_end to 1, so w never falls (each row
+    # is the mean speed over the sample before it: row k is the coast's last)
+    assert np.all(np.diff(arm[k + 1 :]) > -1e-9) and np.min(arm[k + 1 :]) > w_end - 1e-6
+    # the driver: v = exp(-0.4/T2) = 0.018 V when the bridge closes: the wheel is braked first
+    assert np.min(drv[k : k + 8]) < w_end - 0.05
+    # the exact solution of T w' = v - w, T2 v' = 1 - v from (w_end, v0), as the Euler speed
+    v0 = np.exp(-0.4 / T2)
+    b = (v0 - 1.0) * T2 / (T2 - T)
+    a = w_end - 1.0 - b
+    fine = np.arange(0.0, 0.6, 1e-5)
+    w = 1.0 + a * np.exp(-fine / T) + b * np.exp(-fine / T2)
+    angle = np.concatenate(([0.0], np.cumsum(w[1:] + w[:-1]) * 0.5e-5))
+    tau = t[k:] - 2.4
+    inside = tau[1:] <= 0.59
+    seen = (np.interp(tau[1:], fine, angle) - np.interp(tau[:-1], fine, angle)) / ts
+    assert np.allclose(drv[k + 1 :][inside], seen[inside], atol=1e-4)

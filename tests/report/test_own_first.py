@@ -10,16 +10,14 @@ import shutil
 from html import unescape
 from pathlib import Path
 
-import numpy as np
 import pytest
 
-from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
-from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.quantities import format_constant, format_number
 from minseg_tui.report.write import write_report
 from tests.report.test_report import _session
+from tests.seeded import record_square_wave
 
 
 def _section(md: str, title: str) -> str:
@@ -153,16 +151,9 @@ def test_no_cell_of_the_report_is_blank(tmp_path: Path) -> None:
 
 
 def _append_run(s: Session, periods: int, stopped_early: bool, ended_by: str = "") -> str:
-    plan = dict(step("task10").plans)["manual"]
-    n = int(round(plan.duration / plan.ts)) * periods // plan.periods
-    u = np.concatenate(
-        (np.zeros(20), np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
+    info = record_square_wave(
+        s, seed=22, periods=periods, stopped_early=stopped_early, ended_by=ended_by
     )
-    data = record(PlantParams(), u, ts=plan.ts, seed=22, jitter_us=800)
-    rec = s.start_run("steps", plan)
-    for k in range(u.size):
-        rec.append(int(data.seq[k]), int(data.t_us[k]), int(data.count[k]), int(round(u[k] * 1000)))
-    info = s.finish_run(rec, stopped_early=stopped_early, ended_by=ended_by)
     assert info is not None
     return info.name
 

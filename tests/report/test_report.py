@@ -5,7 +5,6 @@ from __future__ import annotations
 import base64
 import math
 import re
-from datetime import UTC, datetime, timedelta
 from html import unescape
 from html.parser import HTMLParser
 from pathlib import Path
@@ -13,23 +12,12 @@ from pathlib import Path
 import numpy as np
 
 from minseg_tui.cli import main
-from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
-from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.quantities import format_constant, format_interval, format_number, format_value
 from minseg_tui.report import content, markdown, svg
 from minseg_tui.report.write import write_report
-
-
-class _Clock:
-    def __init__(self) -> None:
-        self.t = datetime(2026, 11, 22, 10, 0, 0, tzinfo=UTC)
-
-    def __call__(self) -> datetime:
-        self.t += timedelta(seconds=1)
-        return self.t
-
+from tests.seeded import Clock, record_square_wave
 
 ROWS = (
     (2.5, "2,05 V", "3.82", "29.8 mA"),
@@ -39,7 +27,7 @@ ROWS = (
 
 
 def _session(root: Path) -> Session:
-    s = Session.create(root, ["Ada Lovelace", "Bo Ek"], date="2026-11-22", clock=_Clock())
+    s = Session.create(root, ["Ada Lovelace", "Bo Ek"], date="2026-11-22", clock=Clock())
     s.enter("R", "5.26 Ω")
     for lv, u, w, i in ROWS:
         s.enter(f"u_ss@{lv:g}", u)
@@ -53,16 +41,7 @@ def _session(root: Path) -> Session:
     s.enter("summary.unclear", "why the 20-tap filter lags")
     s.enter("own.T", "0.09 s")
     s.enter("prep3.notes", "y' = 0 gives y = K c")
-    plan = dict(step("task10").plans)["manual"]
-    n = int(round(plan.duration / plan.ts))
-    u = np.concatenate(
-        (np.zeros(20), np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
-    )
-    data = record(PlantParams(), u, ts=plan.ts, seed=21, jitter_us=800)
-    rec = s.start_run("steps", plan)
-    for k in range(u.size):
-        rec.append(int(data.seq[k]), int(data.t_us[k]), int(data.count[k]), int(round(u[k] * 1000)))
-    s.finish_run(rec)
+    record_square_wave(s, seed=21)
     return s
 
 

@@ -6,47 +6,26 @@ written with the Session API, the seeded simulated motor."""
 from __future__ import annotations
 
 import re
-from datetime import UTC, datetime, timedelta
+from datetime import datetime
 from pathlib import Path
 
 import numpy as np
 
-from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
-from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.report import content, markdown
-
-
-class _Clock:
-    def __init__(self) -> None:
-        self.t = datetime(2026, 11, 22, 10, 0, 0, tzinfo=UTC)
-
-    def __call__(self) -> datetime:
-        self.t += timedelta(seconds=1)
-        return self.t
+from tests.seeded import Clock, record_square_wave
 
 
 def _session(root: Path, jitter_us: float) -> Session:
     """A group with the table typed and a step run of the seeded plant, its loop late by up
     to ``jitter_us`` (0: every interval exactly 25 ms, as the virtual board samples)."""
-    s = Session.create(root, ["Ada", "Bo"], date="2026-11-22", clock=_Clock())
+    s = Session.create(root, ["Ada", "Bo"], date="2026-11-22", clock=Clock())
     s.enter("R", "5.26 Ω")
     for lv, u, w, i in ((2.5, "2.05", "3.82", "29.8"), (3.5, "3.05", "5.81", "33.5")):
         s.enter(f"u_ss@{lv:g}", u)
         s.enter(f"omega_ss@{lv:g}", w)
         s.enter(f"i_ss@{lv:g}", i)
-    plan = dict(step("task10").plans)["manual"]
-    n = int(round(plan.duration / plan.ts))
-    u_req = np.concatenate(
-        (np.zeros(20), np.where((np.arange(n) * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
-    )
-    data = record(PlantParams(), u_req, ts=plan.ts, seed=21, jitter_us=jitter_us)
-    rec = s.start_run("steps", plan)
-    for k in range(u_req.size):
-        rec.append(
-            int(data.seq[k]), int(data.t_us[k]), int(data.count[k]), int(round(u_req[k] * 1000))
-        )
-    s.finish_run(rec)
+    record_square_wave(s, seed=21, jitter_us=jitter_us)
     return s
 
 

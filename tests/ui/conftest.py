@@ -12,17 +12,19 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-import textual.app
-import textual.pilot
-from textual._context import active_app
 from textual.pilot import Pilot
-from textual.screen import Screen
-from textual.widgets import Input
 
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import LabApp, make_app
 from minseg_tui.ui.config import UiConfig
 from tests.ui.fakes import QuietDevice
+from tests.ui.textual_internals import (
+    keep_cursors_still,
+    leave_headless_frames_unpainted,
+    make_waits_exact,
+    running_app,
+    wait_for_screen,
+)
 
 DATE = "2024-04-16"
 _names = itertools.count()
@@ -53,7 +55,7 @@ def real_app(root: Path, url: str) -> LabApp:
 def no_cursor_blink(monkeypatch: pytest.MonkeyPatch) -> None:
     """Keep every Input's cursor shown: a blinking cursor would make a screen depend on when
     it was taken (harlequin's tests do the same)."""
-    monkeypatch.setattr(Input, "_toggle_cursor", lambda _self: None)
+    keep_cursors_still(monkeypatch)
 
 
 @pytest.fixture
@@ -79,15 +81,14 @@ async def drained(_min_sleep: float = 0.0, _max_sleep: float = 0.0) -> None:
     arguments of Textual's ``wait_for_idle`` and ignores them."""
     for _ in range(3):  # the driver hands a key over through the loop (run_coroutine_threadsafe)
         await asyncio.sleep(0)
-    try:
-        app = active_app.get()
-    except LookupError:
+    app = running_app()
+    if app is None:
         return
     pilot = Pilot(app)
     for _ in range(DRAIN_ROUNDS):
         if not app.is_running:
             return
-        await pilot._wait_for_screen()
+        await wait_for_screen(pilot)
         nodes = [app, *(n for s in app.screen_stack for n in s.walk_children(with_self=True))]
         if all(n.message_queue_size == 0 for n in nodes):
             return
@@ -99,31 +100,14 @@ def exact_pilot_waits(monkeypatch: pytest.MonkeyPatch) -> None:
     almost no CPU for 20 ms, at most 1 s: a guess on the clock, which the CPU that the app's
     threads use (the board, the stream) makes last up to the second, key after key, and a busy
     machine cuts short. :func:`drained` waits for exactly what the key set going."""
-    monkeypatch.setattr(textual.app, "wait_for_idle", drained)
-    monkeypatch.setattr(textual.pilot, "wait_for_idle", drained)
-
-
-_compositor_refresh = Screen._compositor_refresh
-
-
-def _unpainted_refresh(self: Screen[object]) -> None:
-    """Textual's compositor refresh, except that a headless app's screen is not painted: its
-    driver throws every frame away (App._display), and painting them was about 40 % of a UI
-    test's CPU. Layout still runs (regions, scrolling, what is under a click), and what a test
-    reads off the screen is rendered when it asks: a widget's render(), the snapshots' full
-    render (App.export_screenshot), a plot's columns (Canvas.columns)."""
-    app = self.app
-    if not (app.is_headless and not app.is_inline and self is app.screen):
-        _compositor_refresh(self)
-        return
-    self._compositor._dirty_regions.clear()
-    self._dirty_widgets.clear()
-    app._update_mouse_over(self)
+    make_waits_exact(monkeypatch, drained)
 
 
 @pytest.fixture(autouse=True)
 def no_headless_frames(monkeypatch: pytest.MonkeyPatch, request: pytest.FixtureRequest) -> None:
-    """See :func:`_unpainted_refresh`. The whole-lab walks (marked slow) paint every frame,
-    as the app does in a terminal, so a widget that fails while it is drawn fails them."""
+    """A headless app's frames are not painted (``textual_internals.unpainted_refresh``:
+    painting frames its driver throws away was about 40 % of a UI test's CPU). The whole-lab
+    walks (marked slow) paint every frame, as the app does in a terminal, so a widget that
+    fails while it is drawn fails them."""
     if request.node.get_closest_marker("slow") is None:
-        monkeypatch.setattr(Screen, "_compositor_refresh", _unpainted_refresh)
+        leave_headless_frames_unpainted(monkeypatch)

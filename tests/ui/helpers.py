@@ -14,9 +14,9 @@ from collections.abc import Callable
 from contextlib import suppress
 
 from textual import events
-from textual.keys import _character_to_key
 from textual.message import Message
 from textual.pilot import Pilot
+from textual.widgets import OptionList
 from textual.worker import WorkerCancelled
 
 from minseg_tui.device.samples import SampleBatch
@@ -26,8 +26,9 @@ from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
-from minseg_tui.ui.widgets.fields import EntryBox, FieldForm, FieldRow, field_id
+from minseg_tui.ui.widgets.fields import AnswerList, EntryBox, FieldForm, FieldRow, field_id
 from tests.ui.fakes import QuietDevice
+from tests.ui.textual_internals import key_name
 
 TABLE = {
     "R": "5.3",
@@ -151,6 +152,24 @@ def typing_box(app: LabApp) -> EntryBox | None:
     return row.input if row is not None else None
 
 
+def answering(app: LabApp) -> AnswerList | None:
+    """The list of answers the keys typed now go to: that of the step form's current row
+    while the form has the focus (None: none)."""
+    focused = app.focused
+    if not isinstance(focused, FieldForm):
+        return None
+    return focused.answering
+
+
+def keys_box(app: LabApp) -> EntryBox | AnswerList | None:
+    """The text box or list of answers the keys typed now go to: that of the step form's
+    current row while the form has the focus (None: none)."""
+    focused = app.focused
+    if not isinstance(focused, FieldForm):
+        return None
+    return focused.keys_box
+
+
 def shown(app: LabApp, step_id: str | None = None) -> bool:
     """The lab screen shows ``step_id`` (any step if None), its pane mounted."""
     screen = app.screen
@@ -187,8 +206,6 @@ async def goto(pilot: Pilot[None], step_id: str, focus: str | None = "entry") ->
         if focus != "entry":
             return True
         row = pane.landing_row()  # the first empty entry (the step itself without entries)
-        if row is not None and row.field.options:  # a list of answers has the focus itself
-            return app.focused is not None and row in app.focused.ancestors
         return app.focused is pane and pane.current is row
 
     await settle(pilot, there)
@@ -235,14 +252,10 @@ async def burst(pilot: Pilot[None], *keys: str) -> None:
     waiting for the app between them (``pilot.press`` waits after every key); then wait
     until the app has processed them all."""
     app = pilot.app
-    driver = app._driver
-    assert driver is not None
     for key in keys:
-        name = _character_to_key(key) if len(key) == 1 and not key.isalnum() else key
-        char = key if len(key) == 1 else None
-        event = events.Key(name, char)
+        event = events.Key(key_name(key), key if len(key) == 1 else None)
         event.set_sender(app)
-        driver.send_message(event)
+        app.post_message(event)
     await settle(pilot)
 
 
@@ -325,3 +338,9 @@ def heard_notifications(app) -> list[str]:
 
     app.notify = keep
     return said
+
+
+def nav_mark(app: LabApp, step_id: str) -> str:
+    """The mark before step ``step_id`` in the list of steps (✓, ✗, ?, … or a blank)."""
+    nav = app.screen.query_one("#nav", OptionList)
+    return str(nav.get_option(step_id).prompt)[0]

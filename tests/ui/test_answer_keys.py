@@ -13,7 +13,7 @@ import pytest
 from textual.widgets import RadioSet
 
 from minseg_tui.ui.widgets.fields import FieldRow, Ticks, field_id
-from tests.ui.helpers import burst, goto, settle, shown, start
+from tests.ui.helpers import answering, burst, goto, settle, shown, start
 
 
 def _chosen(app, key: str) -> str:
@@ -29,9 +29,7 @@ def _row(app, key: str) -> FieldRow:
 async def _focus_answers(pilot, key: str) -> None:
     row = _row(pilot.app, key)
     row.focus_input()
-    await settle(
-        pilot, lambda: pilot.app.focused is not None and row in pilot.app.focused.ancestors
-    )
+    await settle(pilot, lambda: answering(pilot.app) is row.answers)
 
 
 def _ticked_on_screen(row: FieldRow) -> tuple[int, ...]:

@@ -422,7 +422,7 @@ async def test_no_color_is_respected(quiet, monkeypatch):
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         assert app.no_color
-        assert any(isinstance(f, Monochrome | NoColor) for f in app._filters)
+        assert any(isinstance(f, Monochrome | NoColor) for f in app.get_line_filters())
         await goto(pilot, "task2")
         row = await type_in(pilot, "R", "abc")
         assert row.message.startswith("✗")  # the refusal is in the text, not only in red

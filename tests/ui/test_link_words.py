@@ -8,6 +8,11 @@ the app the link's events and the board's samples, so nothing here depends on th
 
 from __future__ import annotations
 
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
+from textual.pilot import Pilot
+
 from minseg_tui.device.link import LinkEvent
 from minseg_tui.ui.app import TRANSIENT_SHOWN
 from minseg_tui.ui.widgets.status import DeviceStatus
@@ -38,13 +43,22 @@ async def _event(pilot, dev: QuietDevice, heard: Heard, seq: int, kind: str, tex
     return seq
 
 
-async def test_answers_again_follows_a_silence_and_gives_way_to_the_link_counters(quiet):
+@asynccontextmanager
+async def _on_a_standing_wheel(quiet) -> AsyncIterator[tuple[Pilot[None], QuietDevice, Heard, int]]:
+    """The app on the device double, a session started and a second of a standing wheel
+    taken: its pilot, the double, what the app heard, and the next sequence number."""
     dev = QuietDevice(seed=1)
     app = quiet(dev)
     heard = Heard()
     async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
         await start(pilot)
         seq = await _stream(pilot, dev, 0, 1.0)
+        yield pilot, dev, heard, seq
+
+
+async def test_answers_again_follows_a_silence_and_gives_way_to_the_link_counters(quiet):
+    async with _on_a_standing_wheel(quiet) as (pilot, dev, heard, seq):
+        app = pilot.app
         assert "link ok" in _status(app)
         seq = await _event(pilot, dev, heard, seq, "silent", "the board has not answered")
         assert "silent" in _status(app)
@@ -58,24 +72,16 @@ async def test_answers_again_follows_a_silence_and_gives_way_to_the_link_counter
 
 
 async def test_no_answers_again_without_a_silence_said_first(quiet):
-    dev = QuietDevice(seed=1)
-    app = quiet(dev)
-    heard = Heard()
-    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
-        await start(pilot)
-        seq = await _stream(pilot, dev, 0, 1.0)
+    async with _on_a_standing_wheel(quiet) as (pilot, dev, heard, seq):
+        app = pilot.app
         await _event(pilot, dev, heard, seq, "alive", "the board answers again")
         assert "again" not in _status(app)
         assert "link ok" in _status(app)
 
 
 async def test_board_reconnected_gives_way_to_the_link_counters(quiet):
-    dev = QuietDevice(seed=1)
-    app = quiet(dev)
-    heard = Heard()
-    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
-        await start(pilot)
-        seq = await _stream(pilot, dev, 0, 1.0)
+    async with _on_a_standing_wheel(quiet) as (pilot, dev, heard, seq):
+        app = pilot.app
         seq = await _event(pilot, dev, heard, seq, "disconnected", "the board is gone")
         assert "disconnected" in _status(app)
         seq = await _event(pilot, dev, heard, seq, "connected", "reconnected")

@@ -81,7 +81,7 @@ async def test_the_focused_entry_stays_in_view_when_the_panel_above_it_grows(tmp
         await goto(pilot, "summary")  # lands on the first question; typing goes below
         await burst(pilot, *"why does f fall with speed")
         box = typing_box(app)
-        assert box is app.screen.query_one(f"#{field_id('summary.unclear')} Input")
+        assert box is app.screen.query_one(f"#{field_id('summary.unclear')} EntryBox")
         assert app.screen.can_view_entire(box)
         await burst(pilot, "f8")
         await settle(pilot, lambda: bool(app.exported))
@@ -101,7 +101,7 @@ async def test_a_resumed_step_shows_the_entry_it_lands_in(quiet):
     async with app.run_test(size=(80, 24)) as pilot:
         await resume(pilot)
         await settle(pilot)
-        box = app.screen.query_one(f"#{field_id('own.T')} Input")
+        box = app.screen.query_one(f"#{field_id('own.T')} EntryBox")
         assert typing_box(app) is box
         assert app.screen.can_view_entire(box)
 

@@ -19,11 +19,11 @@ from tests.ui.helpers import (
     burst,
     enter_all,
     goto,
+    keys_box,
     record_response_run,
     settle,
     shown,
     start,
-    typing_box,
 )
 
 
@@ -67,7 +67,7 @@ def _what_is_missing(app, here) -> list[str]:
     )
     missing = [] if title else ["title"]
     missing += [] if todo else ["what to do"]
-    focused = typing_box(app) or app.focused  # the box the form types into, else the focus
+    focused = keys_box(app) or app.focused  # the box the form types into, else the focus
     row = next((a for a in focused.ancestors_with_self if isinstance(a, FieldRow)), None)
     if row is not None and not _seen(view, focused):
         missing.append(f"entry {row.field.key}")
@@ -124,7 +124,7 @@ async def test_a_step_landing_on_a_later_entry_shows_its_title_and_that_entry(
             record_response_run(s)
         await goto(pilot, step_id)
         await settle(pilot)
-        box = typing_box(app) or app.focused
+        box = keys_box(app) or app.focused
         row = next(a for a in box.ancestors_with_self if isinstance(a, FieldRow))
         assert row.field.key == landing
         assert _what_is_missing(app, step(step_id)) == []
@@ -148,6 +148,6 @@ async def test_an_entry_reached_upwards_is_never_under_the_heading(quiet):
         for _ in range(len(rows) - 1):
             await pilot.press("shift+tab")
             await settle(pilot)
-            box = typing_box(app) or app.focused
+            box = keys_box(app) or app.focused
             row = next(a for a in box.ancestors_with_self if isinstance(a, FieldRow))
             assert _seen(_view(pane), box), (row.field.key, pane.scroll_y)

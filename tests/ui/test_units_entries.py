@@ -15,6 +15,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
+    nav_mark,
     record_response_run,
     settle,
     start,
@@ -63,11 +64,6 @@ async def test_backspace_after_a_refusal_deletes_one_character(quiet):
         assert row.input.value == "5.3 "
 
 
-def _mark(app, step_id: str) -> str:
-    nav = app.screen.query_one("#nav", OptionList)
-    return str(nav.get_option(step_id).prompt)[0]
-
-
 async def test_a_wrong_answer_gets_its_own_mark_in_the_list_of_steps(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
@@ -75,10 +71,10 @@ async def test_a_wrong_answer_gets_its_own_mark_in_the_list_of_steps(quiet):
         await goto(pilot, "prep5")
         await type_in(pilot, "prep5.percent", "50")
         await settle(pilot)
-        assert _mark(app, "prep5") == "✗"
+        assert nav_mark(app, "prep5") == "✗"
         await type_in(pilot, "prep5.percent", "63,2")
         await settle(pilot)
-        assert _mark(app, "prep5") == "✓"
+        assert nav_mark(app, "prep5") == "✓"
 
 
 async def test_the_resume_list_names_the_step_as_the_lab_does(quiet):

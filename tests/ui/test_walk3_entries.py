@@ -9,21 +9,23 @@ from __future__ import annotations
 import re
 
 from textual.command import CommandList
-from textual.widgets import OptionList
 
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.prose import Prose
-from tests.ui.helpers import goto, heard_notifications, settle, start, start_with_a_run, type_in
+from tests.ui.helpers import (
+    goto,
+    heard_notifications,
+    nav_mark,
+    settle,
+    start,
+    start_with_a_run,
+    type_in,
+)
 
 
 def _row(app, key: str) -> FieldRow:
     return app.screen.query_one(f"#{field_id(key)}", FieldRow)
-
-
-def _mark(app, step_id: str) -> str:
-    nav = app.screen.query_one("#nav", OptionList)
-    return str(nav.get_option(step_id).prompt)[0]
 
 
 async def test_a_refused_text_takes_the_tick_away_until_corrected_or_escaped(quiet):
@@ -34,22 +36,22 @@ async def test_a_refused_text_takes_the_tick_away_until_corrected_or_escaped(qui
         await start(pilot)
         await goto(pilot, "task2")
         await type_in(pilot, "R", "5,3")
-        assert _mark(app, "task2") == "✓"
+        assert nav_mark(app, "task2") == "✓"
         row = await type_in(pilot, "R", "5.3 V")
         assert row.has_class("refused")
-        assert _mark(app, "task2") == "?"
+        assert nav_mark(app, "task2") == "?"
         await pilot.press("escape")
         await settle(pilot)
-        assert _mark(app, "task2") == "✓"
+        assert nav_mark(app, "task2") == "✓"
         said = row.message.replace("\u00a0", " ")  # what was stored, echoed: no refusal
         assert row.input.value == "5,3" and said == "read as 5.3 Ω" and not row.has_class("refused")
         with app.session as s:
             entry = s.entry("R")
             assert entry is not None and entry.text == "5,3" and entry.refused is None
         await type_in(pilot, "R", "5.3 V")
-        assert _mark(app, "task2") == "?"
+        assert nav_mark(app, "task2") == "?"
         await type_in(pilot, "R", "5,2")
-        assert _mark(app, "task2") == "✓"
+        assert nav_mark(app, "task2") == "✓"
 
 
 async def test_a_refused_first_answer_is_marked_and_escape_empties_the_field(quiet):
@@ -60,10 +62,10 @@ async def test_a_refused_first_answer_is_marked_and_escape_empties_the_field(qui
         await start(pilot)
         await goto(pilot, "task2")
         row = await type_in(pilot, "R", "five")
-        assert _mark(app, "task2") == "?"
+        assert nav_mark(app, "task2") == "?"
         await pilot.press("escape")
         await settle(pilot)
-        assert _mark(app, "task2") == " " and row.input.value == "" and row.message == ""
+        assert nav_mark(app, "task2") == " " and row.input.value == "" and row.message == ""
         with app.session as s:
             assert s.entry("R") is None
 
@@ -77,10 +79,10 @@ async def test_after_enter_a_digit_typed_goes_on_after_the_accepted_value(quiet)
         await start(pilot)
         await goto(pilot, "prep10")
         row = await type_in(pilot, "prep10.gain", "2*pi/72")
-        assert not row.has_class("refused") and _mark(app, "prep10") == "✗"
+        assert not row.has_class("refused") and nav_mark(app, "prep10") == "✗"
         await pilot.press("0", "enter")
         await settle(pilot)
-        assert row.input.value == "2*pi/720" and _mark(app, "prep10") == "✓"
+        assert row.input.value == "2*pi/720" and nav_mark(app, "prep10") == "✓"
         with app.session as s:
             assert s.entry("prep10.gain").text == "2*pi/720"  # type: ignore[union-attr]
         row = await type_in(pilot, "prep10.gain", "2*pi/")
@@ -99,13 +101,13 @@ async def test_ctrl_z_says_what_it_brought_back_and_ctrl_y_brings_the_newer_one_
         await goto(pilot, "prep5")
         await type_in(pilot, "prep5.percent", "50")
         await type_in(pilot, "prep5.percent", "63,2")
-        assert _mark(app, "prep5") == "✓"
+        assert nav_mark(app, "prep5") == "✓"
         said = heard_notifications(app)
         await pilot.press("ctrl+z")
         await settle(pilot)
         with app.session as s:
             assert s.entry("prep5.percent").text == "50"  # type: ignore[union-attr]
-        assert _mark(app, "prep5") == "✗" and _row(app, "prep5.percent").input.value == "50"
+        assert nav_mark(app, "prep5") == "✗" and _row(app, "prep5.percent").input.value == "50"
         (back,) = said
         assert "'50'" in back and "'63,2'" in back and "marked wrong" in back, back
         assert "Ctrl+Y" in back
@@ -113,7 +115,7 @@ async def test_ctrl_z_says_what_it_brought_back_and_ctrl_y_brings_the_newer_one_
         await settle(pilot)
         with app.session as s:
             assert s.entry("prep5.percent").text == "63,2"  # type: ignore[union-attr]
-        assert _mark(app, "prep5") == "✓" and _row(app, "prep5.percent").input.value == "63,2"
+        assert nav_mark(app, "prep5") == "✓" and _row(app, "prep5.percent").input.value == "63,2"
         assert "'63,2'" in said[-1] and "right" in said[-1] and "wrong" not in said[-1]
         await pilot.press("ctrl+y")  # nothing more to bring forward: said, nothing stored
         await settle(pilot)
@@ -188,9 +190,9 @@ async def test_preparation_7_says_consistent_not_right(quiet):
         for key in ("prep7.T", "prep7.K"):
             said = _row(app, key).message.splitlines()[-1]  # under 'read as 0.09 °C/W' for 0,09
             assert said.startswith("consistent with your readings") and "right" not in said, said
-        assert _mark(app, "prep7") == "✓"  # the method done as asked: the step is done
+        assert nav_mark(app, "prep7") == "✓"  # the method done as asked: the step is done
         await type_in(pilot, "prep7.T", "12 min")  # the 4 min forgotten: still named wrong
-        assert "4 min" in _row(app, "prep7.T").message and _mark(app, "prep7") == "✗"
+        assert "4 min" in _row(app, "prep7.T").message and nav_mark(app, "prep7") == "✗"
 
 
 async def test_a_preparation_to_read_or_confirm_is_ticked_once_the_group_says_it_did_it(quiet):
@@ -202,12 +204,12 @@ async def test_a_preparation_to_read_or_confirm_is_ticked_once_the_group_says_it
         await start(pilot)
         for step_id in ("prep1", "prep2", "prep3", "prep9", "prep13"):
             await goto(pilot, step_id)
-            assert _mark(app, step_id) == " "
+            assert nav_mark(app, step_id) == " "
             await type_in(pilot, f"{step_id}.notes", "ok")  # Enter moves on to 'done?'
-            assert _mark(app, step_id) == "…"
+            assert nav_mark(app, step_id) == "…"
             await pilot.press("enter")  # picks what the step asked for
             await settle(pilot)
-            assert _mark(app, step_id) == "✓", step_id
+            assert nav_mark(app, step_id) == "✓", step_id
             with app.session as s:
                 assert s.entry(f"{step_id}.done").value == (0,)  # type: ignore[union-attr]
 

@@ -7,9 +7,9 @@ from __future__ import annotations
 import pytest
 from textual.geometry import Region
 from textual.strip import Strip
-from textual.widgets import OptionList, RadioButton, RadioSet
+from textual.widgets import RadioButton, RadioSet
 
-from minseg_tui.lab.content.steps import STEPS, step
+from minseg_tui.lab.content.steps import step
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.messages import MeterRead
 from minseg_tui.ui.panels.meter import MeterPanel
@@ -17,14 +17,16 @@ from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.conftest import board_url, real_app
-from tests.ui.helpers import Heard, goto, settle, start, start_with_a_run, typing_box
-
-
-def _mark(app, step_id: str) -> str:
-    """The mark before ``step_id`` in the list of steps."""
-    nav = app.screen.query_one("#nav", OptionList)
-    k = [s.id for s in STEPS].index(step_id)
-    return str(nav.get_option_at_index(k).prompt)[0]
+from tests.ui.helpers import (
+    Heard,
+    answering,
+    goto,
+    nav_mark,
+    settle,
+    start,
+    start_with_a_run,
+    typing_box,
+)
 
 
 def _row(app, key: str) -> FieldRow:
@@ -40,18 +42,18 @@ async def test_the_model_check_is_done_when_the_group_ticks_done_not_by_a_note(q
         await start_with_a_run(pilot, "model_check")
         todo = app.screen.query_one(".todo").render()
         assert "done when you tick done?" in " ".join(str(todo).split())
-        assert _mark(app, "model_check") == " "
+        assert nav_mark(app, "model_check") == " "
         assert app.screen.pane.scroll_y == 0  # it still lands at the top, on the plots
         notes = _row(app, "model_check.notes")
         notes.input.focus()
         await pilot.press(*"slower", "enter")
         await settle(pilot)
-        assert _mark(app, "model_check") == "…"  # a note alone: started, not done
+        assert nav_mark(app, "model_check") == "…"  # a note alone: started, not done
         done = _row(app, "model_check.done")
-        assert app.focused is done.query_one(RadioSet)  # Enter in the notes moved on to it
+        assert answering(app) is done.query_one(RadioSet)  # Enter in the notes moved on to it
         await pilot.press("space")
         await settle(pilot)
-        assert _mark(app, "model_check") == "✓"
+        assert nav_mark(app, "model_check") == "✓"
         with app.session as s:
             assert s.step_status("model_check") == "done"
         assert typing_box(app) is None
@@ -92,7 +94,7 @@ async def test_the_focused_field_is_marked_in_the_text_not_by_colour_alone(quiet
         await pilot.press("tab")
         await settle(pilot)
         done = _row(app, "prep1.done")
-        assert app.focused is done.query_one(RadioSet)
+        assert answering(app) is done.query_one(RadioSet)
         assert _label(app, "prep1.notes") == "notes"
         assert _label(app, "prep1.done") == "▶ done?"
         assert _cursor(done.query(RadioButton)) == ["we have read sections 2.1 and 2.6"]
@@ -104,11 +106,11 @@ async def test_the_focused_field_is_marked_in_the_text_not_by_colour_alone(quiet
         await goto(pilot, "summary")
         questions = [f.key for f in step("summary").fields if f.options]
         first, second = (_row(app, k) for k in questions[:2])
-        assert app.focused is first.query_one(RadioSet)
+        assert answering(app) is first.query_one(RadioSet)
         assert _label(app, questions[0]).startswith("▶ The MinSeg DC-motor is")
         await pilot.press("tab")  # the next question, marked; the first one no longer
         await settle(pilot)
-        assert app.focused is second.query_one(RadioSet)
+        assert answering(app) is second.query_one(RadioSet)
         assert not _label(app, questions[0]).startswith("▶")
         assert _label(app, questions[1]).startswith("▶ The differential equation")
         options = list(second.query(RadioButton))

@@ -5,14 +5,7 @@ says what was stored (Pilot, real session folder, the seeded plant's step run)."
 
 from __future__ import annotations
 
-from textual.widgets import OptionList
-
-from tests.ui.helpers import goto, settle, start, start_with_a_run, type_in
-
-
-def _mark(app, step_id: str) -> str:
-    nav = app.screen.query_one("#nav", OptionList)
-    return str(nav.get_option(step_id).prompt)[0]
+from tests.ui.helpers import goto, nav_mark, settle, start, start_with_a_run, type_in
 
 
 async def test_a_J_with_f_in_mN_m_s_per_rad_gets_a_cross_and_the_unit_named(quiet):
@@ -33,7 +26,7 @@ async def test_a_J_with_f_in_mN_m_s_per_rad_gets_a_cross_and_the_unit_named(quie
             and "wrong: more than the 10 % off" in compare
             and "f goes into this formula in N m s/rad" in compare
         )
-        assert _mark(app, "task13") == "✗"
+        assert nav_mark(app, "task13") == "✗"
 
 
 async def test_a_unitless_57_for_T_is_refused_and_an_unjudged_T_not_ticked(quiet):
@@ -44,11 +37,11 @@ async def test_a_unitless_57_for_T_is_refused_and_an_unjudged_T_not_ticked(quiet
         row = await type_in(pilot, "own.T", "57")
         await settle(pilot)
         assert "'57' is ambiguous" in row.message and "'57 ms'" in " ".join(row.message.split())
-        assert _mark(app, "task12") == "?"
+        assert nav_mark(app, "task12") == "?"
         await pilot.press("ctrl+u", *"0.057", "enter")
         await settle(pilot)
         assert "not judged yet" in " ".join(row.message.split())
-        assert _mark(app, "task12") == "○"  # stored, nothing to judge it by: its own mark
+        assert nav_mark(app, "task12") == "○"  # stored, nothing to judge it by: its own mark
 
 
 async def test_5_comma_3_ohm_says_what_was_stored(quiet):

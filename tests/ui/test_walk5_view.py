@@ -5,7 +5,8 @@ check's legends, F8's notice, the arrows on the list of steps."""
 from __future__ import annotations
 
 import pytest
-from textual.widgets._toast import Toast
+from textual.message import Message
+from textual.notifications import Notification, Notify
 
 from minseg_tui.lab.views.session import cursor_reading
 from minseg_tui.report.write import write_report
@@ -106,7 +107,13 @@ async def test_the_f8_notice_expires_and_does_not_cover_the_entry_typed_in(tmp_p
     dev = QuietDevice(seed=1)
     cfg = UiConfig(device="auto", sessions=tmp_path, today=DATE, animations=False, refresh=0)
     app = LabApp(cfg, lambda spec: dev, lambda session: write_report(session).paths)
-    async with app.run_test(size=(80, 24), notifications=True) as pilot:
+    notices: list[Notification] = []
+
+    def hear(message: Message) -> None:
+        if isinstance(message, Notify):
+            notices.append(message.notification)
+
+    async with app.run_test(size=(80, 24), notifications=True, message_hook=hear) as pilot:
         await start(pilot)
         await goto(pilot, "summary")
         await burst(pilot, *"why does f fall with speed")
@@ -114,11 +121,11 @@ async def test_the_f8_notice_expires_and_does_not_cover_the_entry_typed_in(tmp_p
         assert box is not None and app.screen.can_view_entire(box)
         await burst(pilot, "f8")
         await settle(pilot, lambda: bool(app.exported))
-        await settle(pilot, lambda: bool(app.screen.query(Toast)))
-        (toast,) = app.screen.query(Toast)
+        await settle(pilot, lambda: bool(app.screen.query("Toast")))
+        (toast,) = app.screen.query("Toast")
         assert "written:" in str(toast.render())
         assert not toast.region.overlaps(box.region), (toast.region, box.region)
-        assert all(n.timeout <= 8 for n in app._notifications)
+        assert all(n.timeout <= 8 for n in notices)
 
 
 async def test_the_arrows_on_the_list_of_steps_stop_at_its_ends_and_pgup_goes_back_one(quiet):

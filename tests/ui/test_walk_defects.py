@@ -4,9 +4,7 @@ session of the same names."""
 
 from __future__ import annotations
 
-from textual.widgets import OptionList
-
-from minseg_tui.lab.content.steps import STEPS, step
+from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.saving.store import list_sessions
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views.classview import judge, read_group
@@ -23,6 +21,7 @@ from tests.ui.helpers import (
     Heard,
     enter_all,
     goto,
+    nav_mark,
     record_response_run,
     settle,
     shown,
@@ -77,13 +76,6 @@ async def test_the_run_list_keeps_the_run_in_use_after_an_interrupted_run(quiet)
         assert f"▸ {used}" not in status()
 
 
-def _mark(app, step_id: str) -> str:
-    """The mark before ``step_id`` in the list of steps."""
-    nav = app.screen.query_one("#nav", OptionList)
-    k = [s.id for s in STEPS].index(step_id)
-    return str(nav.get_option_at_index(k).prompt)[0]
-
-
 async def test_task1_and_task3_get_their_tick_and_the_board_check_reaches_the_report(tmp_path):
     """On the virtual MinSeg: F10 on Task 1 passes and Task 1 is ticked; on Task 3, F3 sets a
     voltage, the wheel turns under the live speed and Task 3 is ticked. The report says what
@@ -94,7 +86,7 @@ async def test_task1_and_task3_get_their_tick_and_the_board_check_reaches_the_re
         await settle(pilot, lambda: app.device is not None)
         await start(pilot)
         await goto(pilot, "task1")
-        assert _mark(app, "task1") == " " and _mark(app, "task3") == " "
+        assert nav_mark(app, "task1") == " " and nav_mark(app, "task3") == " "
         await pilot.press("f10")
         await heard.until(
             pilot,
@@ -105,10 +97,10 @@ async def test_task1_and_task3_get_their_tick_and_the_board_check_reaches_the_re
         assert app.screen.ok
         await pilot.press("enter")
         await settle(pilot, lambda: not isinstance(app.screen, BoardCheckScreen))
-        assert _mark(app, "task1") == "✓"
+        assert nav_mark(app, "task1") == "✓"
         await goto(pilot, "task3")
         await pilot.press("f3")  # 2.5 V: the wheel turns, the live speed shows it
-        await heard.until(pilot, lambda: _mark(app, "task3") == "✓")
+        await heard.until(pilot, lambda: nav_mark(app, "task3") == "✓")
         await pilot.press("f2")
         with app.session as s:
             checks = s.board_checks()

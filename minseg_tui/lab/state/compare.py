@@ -5,7 +5,8 @@ says whether the group enters its own value before the program shows the compute
 :func:`concealed` says which values are still hidden. :func:`compare_fields` sets each of the
 group's values beside the value computed the group's way (K from their omega_ss and u_ss, J
 from their own T or from the 63 % reading, ...), with the least-squares value and one
-sentence on why the two differ. :func:`format_diff` writes a relative difference. Pure
+sentence on why the two differ (a relative difference written by
+:func:`minseg_tui.quantities.format_diff`). Pure
 functions apart from reading the policy file; no Textual. Units: SI (V, rad/s, s, kg m^2).
 """
 
@@ -27,7 +28,9 @@ from minseg_tui.model.identify.identification import ResponseResult
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.quantities import (
     format_constant,
+    format_diff,
     format_number,
+    format_percent,
     format_quantity,
     format_reading,
     format_typed,
@@ -90,25 +93,6 @@ def concealed(policy: Policy, answered: Collection[str], revealed: Collection[st
     if not policy.answers_first:
         return set()
     return {k for k in ANSWERED_FIRST if k not in answered and k not in revealed}
-
-
-def format_diff(rel: float) -> str:
-    """A relative difference as the group reads it: "+39 %", "-2 %"; under 0.5 % with one
-    more digit ("+0.3 %") and under 0.05 % as "< 0.05 %", never "+0 %"; the same number
-    (to the last few digits a float carries) as "0 %": they match."""
-    pct = rel * 100.0
-    if abs(rel) < SAME:
-        return "0 %"
-    if abs(pct) >= 0.5:
-        return f"{pct:+.0f} %"
-    if abs(pct) >= 0.05:
-        return f"{pct:+.1f} %"
-    return "< 0.05 %"
-
-
-SAME = 1e-9
-"""A relative difference under which two numbers are the same value (9.65 typed, 5 V x 1.93
-computed): a float's rounding, not a difference."""
 
 
 def _ms(T: float) -> str:
@@ -253,9 +237,7 @@ def compare_fields(
         if rel is not None and tol is not None and right is None:
             right = abs(rel) <= tol
             if not right:
-                verdict = (
-                    f"wrong: more than the {tol * 100:.0f} % off that reading or rounding explains"
-                )
+                verdict = f"wrong: more than the {format_percent(tol)} off that reading or rounding explains"
                 if fld.key == "own.J" and ident and T_used is not None and isinstance(own, float):
                     verdict += _j_slip(own, T_used, ident.R, ident.f, ident.k_v, ident.k_a)
         if isinstance(lsq, float) and not math.isfinite(lsq):
@@ -364,7 +346,6 @@ __all__ = [
     "Policy",
     "compare_fields",
     "concealed",
-    "format_diff",
     "format_u_ss",
     "judge_model",
     "read_policy",

@@ -121,7 +121,7 @@ from minseg_tui.lab.state.shown import PolicyRecord, Shown
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import RunLog
-from minseg_tui.quantities import UNITS, format_reading, shown_unit
+from minseg_tui.quantities import UNITS, format_reading, format_typed, shown_unit
 
 Clock = Callable[[], datetime]
 
@@ -530,12 +530,6 @@ class Session:
         self._data["members"] = [str(m) for m in members]
         self._changed()
 
-    def set_date(self, date: str) -> None:
-        """Change the lab's date (saved)."""
-        self._change()
-        self._data["date"] = str(date)
-        self._changed()
-
     @property
     def current_step(self) -> str:
         """Id of the step the group is at."""
@@ -775,7 +769,7 @@ class Session:
             raise KeyError(key)
         cap = capture(t, omega, window, velocity)
         self._captures[key] = cap
-        return self.enter(key, f"{cap.omega_ss:.4g}", source="capture")
+        return self.enter(key, format_typed(cap.omega_ss), source="capture")
 
     def capture_of(self, level: float) -> Capture | None:
         """The capture behind omega_ss at ``level``, or None if it was typed or not taken."""

@@ -36,6 +36,7 @@ from minseg_tui.lab.content.steps import RunPlan
 from minseg_tui.lab.content.steps import step as lab_step
 from minseg_tui.lab.saving.runs import Recorder, RunInfo
 from minseg_tui.lab.state.session import Session
+from minseg_tui.quantities import format_fixed
 
 RUN_KIND: dict[str, str] = {"manual": "steps", "fast": "fast"}
 """Task 10's plans (:mod:`minseg_tui.lab.content.steps`) to the session's run kinds."""
@@ -155,7 +156,7 @@ class ActiveRun:
         return RunProgress(
             fraction,
             f"recording {self.name}: {self.samples} samples, "
-            f"{self.elapsed:.1f} of {duration:.1f} s · F2 stops",
+            f"{format_fixed(self.elapsed, 1)} of {format_fixed(duration, 1, 's')} · F2 stops",
             kind=self.kind,
             t0=None if self._first_us is None else self._first_us / 1e6,
             duration=duration,

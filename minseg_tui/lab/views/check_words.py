@@ -31,6 +31,9 @@ from minseg_tui.quantities import (
     NOT_DETERMINED,
     format_constant,
     format_constant_interval,
+    format_fixed,
+    format_percent,
+    format_typed,
     format_value,
 )
 
@@ -143,12 +146,12 @@ def _s(x: float) -> str:
 
 def _at(x: float) -> str:
     """A step's board time to the millisecond, as the details write it ('4.625 s')."""
-    return f"{x:.3f} s"
+    return format_fixed(x, 3, "s")
 
 
 def _later(x: float) -> str:
     """A time after a step: '175 ms', '1.2 s'."""
-    return f"{x * 1e3:.0f} ms" if x < 1.0 else format_value(x, "s", 2)
+    return format_fixed(x * 1e3, 0, "ms") if x < 1.0 else format_value(x, "s", 2)
 
 
 def moment(r: CheckResult, u: ArrayLike | None) -> Moment | None:
@@ -349,7 +352,11 @@ def _gain(r: CheckResult) -> str:
         )
     if e == 0:
         return f"With {added} added (the extended model), {words} falls to within the noise."
-    how = f"{b / e:.2g} times smaller" if b >= 1.5 * e else f"{100 * (1 - e / b):.0f} % smaller"
+    how = (
+        f"{format_typed(b / e, 2)} times smaller"
+        if b >= 1.5 * e
+        else f"{format_percent(1 - e / b)} smaller"
+    )
     return (
         f"With {added} added (the extended model), {words} falls from "
         f"{format_value(b, unit, 2)} to {format_value(e, unit, 2)}, {how}."

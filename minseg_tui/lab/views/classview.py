@@ -37,14 +37,21 @@ from minseg_tui.lab.content.steps import LEVELS
 from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import read_run
 from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_key
-from minseg_tui.lab.state.compare import format_diff
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views.own_first import OwnRow
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import response_alone
-from minseg_tui.quantities import F_UNIT, RPM, format_number, format_reading, in_unit
+from minseg_tui.quantities import (
+    F_UNIT,
+    RPM,
+    format_diff,
+    format_fixed,
+    format_number,
+    format_reading,
+    in_unit,
+)
 
 
 @dataclass(frozen=True)
@@ -572,7 +579,7 @@ def outlier(s: Spread, value: float) -> str | None:
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {_num(q.number(value))} {unit} is far {side} the class: {times:.0f} robust "
+        f"{s.key} = {_num(q.number(value))} {unit} is far {side} the class: {format_fixed(times, 0)} robust "
         f"standard deviations from its median of {_num(q.number(s.median))} {unit}."
     )
 

@@ -27,6 +27,7 @@ from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
     UNITS,
+    format_diff,
     format_interval,
     format_number,
     format_quantity,
@@ -283,13 +284,9 @@ the same marks as the list of steps and the entries on the group's screen)."""
 def _diff(c: Comparison, own: str, against: str) -> str:
     if c.right is not None or c.verdict:
         said = (MARK["done"] if c.right else MARK["wrong"]) + " " + (c.verdict or "right")
-        return (
-            said
-            if c.rel_diff is None
-            else f"{lab_compare.format_diff(c.rel_diff)}{against}; {said}"
-        )
+        return said if c.rel_diff is None else f"{format_diff(c.rel_diff)}{against}; {said}"
     if c.rel_diff is not None:
-        return lab_compare.format_diff(c.rel_diff) + against
+        return format_diff(c.rel_diff) + against
     if own.startswith(NOT_ANSWERED):
         return "nothing to compare: not answered"
     return f"{MARK['unjudged']} {NOT_JUDGED}"

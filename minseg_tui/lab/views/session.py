@@ -44,6 +44,7 @@ from minseg_tui.quantities import (
     NOT_DETERMINED,
     UNITS,
     format_constant_interval,
+    format_diff,
     format_number,
     format_quantity,
     format_spread,
@@ -233,9 +234,8 @@ def under_entry(session: Session, c: Comparison) -> str:
     mark, word = (MARK["done"], "right") if c.right else (MARK["wrong"], "wrong")
     unit = _shown_unit(session, c)
     if c.rel_diff is not None and isinstance(c.computed, float):
-        said = (
-            f"{word}: {lab_compare.format_diff(c.rel_diff)} from {_fmt(c.computed, unit)}, "
-            + _AGAINST.get(c.key, "computed your way")
+        said = f"{word}: {format_diff(c.rel_diff)} from {_fmt(c.computed, unit)}, " + _AGAINST.get(
+            c.key, "computed your way"
         )
         why = c.verdict.removeprefix("wrong:").strip()
         if why:
@@ -375,7 +375,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         if c.how:
             comp += f" ({c.how})"
         if c.rel_diff is not None:
-            comp += f": {lab_compare.format_diff(c.rel_diff)}"
+            comp += f": {format_diff(c.rel_diff)}"
         if c.verdict:
             comp += f"\n  {c.verdict}"
         if c.revealed_early:

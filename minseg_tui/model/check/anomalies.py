@@ -313,11 +313,14 @@ def disturbance(
     size: float,
     level: float,
     left: tuple[int, int] | None = None,
+    restarted: bool = False,
 ) -> Anomaly:
     """The sentence for a disturbance over rows start..end (exclusive): ``size`` the largest
     change of speed (rad/s, measured - model) against the model's ``level`` there; ``left``:
     the rows left out of the fit (first, end exclusive) when more than start..end (the
-    departure's onset before it, the wheel's way back to the model after it)."""
+    departure's onset before it, the wheel's way back to the model after it);
+    ``restarted``: the rows left out end where the hand let go, and from there the model
+    picks up from the speed the wheel was left at (the way back stays in the fit)."""
     # the sentence says the input stays put: it ends at the next step at the latest (through
     # an average the departure runs on past it, in the rows left out)
     step = np.flatnonzero(u[start + 1 :] != u[start])
@@ -325,7 +328,14 @@ def disturbance(
     t1 = float(t[min(end, t.size - 1)]) if end < t.size else float(t[-1])
     word = "drops" if size * np.sign(level or 1.0) < 0 else "rises"
     share = f" ({100 * abs(size / level):.0f} %)" if level else ""
-    if left is None or left == (start, end):
+    if restarted and left is not None:
+        a, b = left
+        out = (
+            f"the rows from t = {t[a]:.3f} s to {t[min(b, t.size) - 1]:.3f} s (the departure "
+            "until the hand let go) were left out of the fit; from there the model picks up "
+            "from the speed the wheel was left at, so its way back stays in the fit"
+        )
+    elif left is None or left == (start, end):
         out = "those rows were left out of the fit"
     else:
         a, b = left

@@ -319,7 +319,7 @@ def without(f: Fit, cause: str) -> Fit:
     elif cause == "coast_on_zero":
         fx = replace(fx, T_coast=None)
     elif cause == "second_pole":
-        fx = replace(fx, T2=0.0, pole_measured=False, pole_filtered=False)
+        fx = replace(fx, T2=0.0, pole_measured=False, pole_filtered=False, pole_driver=False)
     elif cause == "current_limit":
         fx = replace(fx, rate=math.inf, drag=0.0, cap_both=False)
     else:  # a cause with its own simulation piece (Candidate.drive)

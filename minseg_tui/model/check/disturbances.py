@@ -56,8 +56,19 @@ class Disturbance:
     """First row left out: ``start``, or earlier where the departure already shows above
     the model's calm band (-1: ``start``)."""
 
+    free: int = -1
+    """With the model restarted where the hand let go (:func:`restarted`): the first row
+    whose reading lies wholly after that, from which the rows count again (-1: not
+    restarted)."""
+
+    let_go: int = -1
+    """The first row read wholly after the last row where the departure was at its deepest
+    (where the hand let go of the wheel; -1: ``end``)."""
+
     @property
     def fence_end(self) -> int:
+        if self.free >= 0:
+            return self.free
         return max(self.end, self.until)
 
     @property
@@ -139,6 +150,11 @@ def find(
                     big = int(np.argmax(np.abs(dev[s : e + 1]))) + s
                     end = min(a0 + e + 2 + carry, u.size)
                     whole = residual - level
+                    # the hand lets go where the departure is deepest (a braked wheel slows
+                    # while it is held); a wheel held at rest stays there: the last such row
+                    way = np.sign(dev[big]) * sm[s : e + 1]
+                    deep = np.flatnonzero(way >= LET_GO * float(np.max(way)))
+                    last = s + int(deep[-1]) if deep.size else big
                     out.append(
                         Disturbance(
                             a0 + s,
@@ -147,6 +163,7 @@ def find(
                             float(pred[a0 + big]),
                             rejoin(whole, end, band, recover),
                             onset(whole, a0 + s, band, min(recover, s + settle)),
+                            let_go=min(a0 + last + carry // 2 + 2, end),
                         )
                     )
             k = j + 1
@@ -277,6 +294,43 @@ def onset(dev: FloatArray, start: int, band: float, lead: int) -> int:
 
 ONSET_FLAT = 3
 """Rows of the settled level at least, before a departure's corner."""
+
+
+LET_GO = 0.9
+"""The hand is taken to hold the wheel while the running mean of the departure stays within
+this share of its deepest value."""
+
+
+def restarted(
+    found: list[Disturbance], u: FloatArray, early: bool = True
+) -> tuple[list[Disturbance], tuple[int, ...]]:
+    """(the disturbances, the rows where the model picks up again). Where the wheel's way
+    back after a hand would be left out across a step of the input (it has not rejoined
+    the model by then), that step's response would be taken out of the comparison of the
+    causes with it; there the rows from where the hand let go stay in the fit instead, the
+    model restarting from the speed the hand left the wheel at (:func:`.simulate.restart`).
+    The rows from the first read wholly after the hand let go (``early``; else from the
+    departure's end) count again. Where fewer than ``RESTART_ROWS`` rows lie between there
+    and the next step (the speed the hand left cannot be read before the step's response),
+    or where the wheel is back on the model before the next step, the rows stay left out
+    until it is, as before."""
+    out: list[Disturbance] = []
+    rows: set[int] = set()
+    change = np.flatnonzero(np.diff(u) != 0) + 1
+    for d in found:
+        free = d.end if d.let_go < 0 or not early else d.let_go
+        after = change[change > free]
+        nxt = int(after[0]) if after.size else u.size
+        if nxt - free < RESTART_ROWS or free >= u.size or d.fence_end <= nxt:
+            out.append(d)
+            continue
+        out.append(replace(d, free=free))
+        rows.add(free)
+    return out, tuple(sorted(rows))
+
+
+RESTART_ROWS = 6
+"""Rows the speed the hand left the wheel at is read from, before the next step."""
 
 
 def fence(n: int, found: list[Disturbance]) -> FloatArray:

@@ -399,6 +399,13 @@ def pole_words(log: ev.Log, ext: Fit) -> str:
             f"the drive it fits worse where {' and where '.join(where) or 'the effects act'} "
             "(a pure delay would show a corner)"
         )
+    if ext.effects.pole_driver:
+        return text + (
+            f"; an extra pole of {ev.ms(t2)} in the driver lags its command and runs on while "
+            "the wheel coasts: its output has fallen towards zero when the bridge closes, so "
+            "the wheel is braked at first, which the armature's own lag (no current while "
+            "coasting) does not do (a pure delay would show a corner)"
+        )
     return (
         text
         + f"; an extra pole of {ev.ms(t2)} delays the torque (a pure delay would show a corner)"

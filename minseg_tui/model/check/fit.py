@@ -50,6 +50,7 @@ from minseg_tui.model.check.simulate import (
     measured,
     pieces,
     response,
+    restart,
 )
 from minseg_tui.model.optimize import golden, least_squares
 
@@ -134,8 +135,13 @@ class Problem:
     smooth: bool = False
     """The speed column is smooth from row to row, not a difference of counts (a filtered
     or analogue speed: :attr:`~.sampling.Sampling.smooth`)."""
+    restarts: tuple[int, ...] = ()
+    """Rows from which the model picks up again from the speed the wheel was left at (where
+    a hand let go of it, :func:`~.simulate.restart`): each adds a departure that dies away
+    with the motor's time constant, its size fitted with K."""
     _yw: dict[int, FloatArray] = field(default_factory=dict, repr=False)
     _scale: dict[int, FloatArray | None] = field(default_factory=dict, repr=False)
+    _restart: dict[tuple[object, ...], FloatArray] = field(default_factory=dict, repr=False)
     _yw_kept: dict[int, FloatArray] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
@@ -178,8 +184,8 @@ class Problem:
         """``x`` (one value per row) on the rows that count only."""
         return x if self._every_row else x[self.keep]
 
-    def with_weights(self, weights: FloatArray) -> Problem:
-        """The same log with other row weights."""
+    def with_weights(self, weights: FloatArray, restarts: tuple[int, ...] | None = None) -> Problem:
+        """The same log with other row weights (and other restarts, if given)."""
         return Problem(
             self.t,
             self.u,
@@ -189,7 +195,29 @@ class Problem:
             np.asarray(weights, float),
             self.over_interval,
             self.smooth,
+            self.restarts if restarts is None else restarts,
         )
+
+    def restart_columns(self, T: float, fx: Effects) -> list[tuple[int, FloatArray]]:
+        """The departure of each restart (K = 1 units) for the model (T, fx) on every row,
+        with the end (exclusive) of the rows its size is read from: those before the next
+        step of the input."""
+        out = []
+        change = np.flatnonzero(np.diff(self.u) != 0) + 1
+        for r in self.restarts:
+            if r >= self.y.size:
+                continue
+            # only T and the causes that act on the measurement or the coast shape it
+            key = (r, T, fx.delay, fx.taps, fx.T2, fx.pole_measured, fx.pole_filtered, fx.T_coast)
+            col = self._restart.get(key)
+            if col is None:
+                col = restart(self.st, self.t, self.ts, T, fx, r, self.over_interval)
+                if len(self._restart) > 64:
+                    self._restart.clear()
+                self._restart[key] = col
+            after = change[change > r]
+            out.append((int(after[0]) if after.size else self.y.size, col))
+        return out
 
     def head(self, rows: int) -> Problem:
         """The first ``rows`` rows as a problem of their own (same weights)."""
@@ -204,6 +232,7 @@ class Problem:
             self.weights[:rows].copy(),
             self.over_interval,
             self.smooth,
+            tuple(r for r in self.restarts if r < rows),
         )
 
     @property
@@ -223,6 +252,8 @@ class Fit:
     effects: Effects
     sse_white: float
     rows: int
+    restart: tuple[tuple[int, float], ...] = ()
+    """(row, size in K = 1 units) of each restart of the model (:attr:`Problem.restarts`)."""
 
     @property
     def name(self) -> str:
@@ -242,10 +273,17 @@ class Fit:
         return field_value(self.effects, cause)
 
     def predict(self, prob: Problem) -> FloatArray:
-        """Simulated measured speed on every row of ``prob``, rad/s."""
-        return self.K * response(
+        """Simulated measured speed on every row of ``prob``, rad/s (picking up from where
+        a hand left the wheel at each restart)."""
+        out = self.K * response(
             prob.st, prob.t, prob.ts, self.T, self.effects, prob.z0, prob.over_interval
         )
+        for row, c in self.restart:
+            if row < prob.y.size and c != 0.0:
+                out = out + c * restart(
+                    prob.st, prob.t, prob.ts, self.T, self.effects, row, prob.over_interval
+                )
+        return out
 
 
 # -- one model, its parameters as a vector -----------------------------------------------
@@ -314,6 +352,7 @@ class Model:
         self.taps = 1
         self.pole_measured = False
         self.pole_filtered = False
+        self.pole_driver = False
         self.cap_both = False
         self.evaluations = 0
         self._last: tuple[bytes, FloatArray] = (b"", np.zeros(0))
@@ -334,6 +373,8 @@ class Model:
             flags["pole_measured"] = True
             if self.pole_filtered and "velocity_filter" not in self.causes:
                 flags["pole_filtered"] = True
+        elif self.pole_driver and "second_pole" in self.causes:
+            flags["pole_driver"] = True
         if self.cap_both and "current_limit" in self.causes:
             flags["cap_both"] = True
         return T, replace(fx, **flags) if flags else fx
@@ -349,23 +390,50 @@ class Model:
         """Whitened residual on the rows that count, with the best K."""
         T, fx = self.effects(x)
         g = self.response(T, fx)
-        return self.fit_k(g, fx.taps)[0]
+        return self.fit_k(g, fx.taps, self.prob.restart_columns(T, fx))[0]
 
     def response(self, T: float, fx: Effects) -> FloatArray:
         self.evaluations += 1
         p = self.prob
         return response(p.st, p.t, p.ts, T, fx, p.z0, p.over_interval)
 
-    def fit_k(self, g: FloatArray, taps: int) -> tuple[FloatArray, float]:
-        """(whitened residual on the rows that count, K) for the response g (K = 1)."""
+    def fit_k(
+        self, g: FloatArray, taps: int, cols: Sequence[tuple[int, FloatArray]] = ()
+    ) -> tuple[FloatArray, float, tuple[float, ...]]:
+        """(whitened residual on the rows that count, K, the size of each restart) for the
+        response g and the restarts' departures ``cols`` (K = 1; each with the end of the
+        rows its size is read from). The size of a restart is the speed the hand left the
+        wheel at, read off the measured speed before the next step of the input (against
+        the model's speed with K fitted jointly first); K is then fitted with those sizes
+        held. A size fitted freely on the rows after the step would stand in for a miss of
+        the model at that step."""
         p = self.prob
         gw = p.kept(p.white(g, taps))
         yw = p.y_white_kept(taps)
         den = float(np.dot(gw, gw))
         if den <= 0.0 or not math.isfinite(den):
-            return np.full(yw.size, math.inf), 0.0
+            return np.full(yw.size, math.inf), 0.0, tuple(0.0 for _ in cols)
         k = float(np.dot(gw, yw)) / den
-        return yw - k * gw, k
+        if not cols:
+            return yw - k * gw, k, ()
+        hw = [p.kept(p.white(c, taps)) for _, c in cols]
+        use = [i for i, h in enumerate(hw) if float(np.dot(h, h)) > 1e-12 * den]
+        if use:
+            a = np.column_stack([gw, *(hw[i] for i in use)])
+            coef, *_ = np.linalg.lstsq(a, yw, rcond=None)
+            k = float(coef[0])
+        sizes = [0.0] * len(cols)
+        for i in use:
+            end, c = cols[i]
+            rows = np.flatnonzero(c[:end] != 0.0)
+            rows = rows[p.keep[rows]]
+            cc = c[rows]
+            cd = float(np.dot(cc, cc))
+            if cd > 0.0:
+                sizes[i] = float(np.dot(cc, p.y[rows] - k * g[rows])) / cd
+        rest = yw - sum((sizes[i] * hw[i] for i in use), np.zeros(yw.size))
+        k = float(np.dot(gw, rest)) / den
+        return rest - k * gw, k, tuple(sizes)
 
     def sse(self, x: FloatArray) -> float:
         r = self.residual(x)
@@ -426,9 +494,10 @@ class Model:
     def make(self, x: FloatArray, f: float | None = None) -> Fit:
         T, fx = self.effects(x)
         g = self.response(T, fx)
-        r, k = self.fit_k(g, fx.taps)
+        r, k, sizes = self.fit_k(g, fx.taps, self.prob.restart_columns(T, fx))
         sse = float(np.dot(r, r)) if f is None else f
-        return Fit(self.causes, T, k, fx, sse, self.prob.rows)
+        rows = [r for r in self.prob.restarts if r < self.prob.y.size]
+        return Fit(self.causes, T, k, fx, sse, self.prob.rows, tuple(zip(rows, sizes, strict=True)))
 
     def scan_taps(self, x: FloatArray, anchors: Sequence[float] = ()) -> FloatArray:
         """x with T and the moving-average length set to the best pair on a grid of T from
@@ -462,7 +531,7 @@ class Model:
         best, best_sse = 1, math.inf
         for n in tries:
             g = measured(theta[top:], p.t, theta[top - n : top], p.ts, n, p.over_interval)
-            r, _ = self.fit_k(g, n)
+            r, _, _ = self.fit_k(g, n, p.restart_columns(T, replace(fx, taps=n)))
             sse = float(np.dot(r, r))
             if sse < best_sse:
                 best, best_sse = n, sse
@@ -493,6 +562,7 @@ def fit_causes(
     pole: bool | None = None,
     cap: bool | None = None,
     filtered: bool | None = None,
+    driver: bool | None = None,
 ) -> Fit:
     """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
     ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
@@ -503,7 +573,9 @@ def fit_causes(
 
     ``pole``: the extra pole on the measurement (True) or on the drive (False); None: both
     when a cause that is not linear (dry friction, a coast, a cap) acts with it, where the
-    side shows, and the better kept. ``cap``: the current limit holds while braking too
+    side shows, and the better kept; with a coast, a pole on the drive is fitted both as the
+    armature's and as a driver's (``driver``, :attr:`Effects.pole_driver`; None: both).
+    ``cap``: the current limit holds while braking too
     (True) or only while accelerating (False); None: both tried when it is among the causes.
     ``filtered``: a pole on the measurement is the logger's filter of the speed column
     (:attr:`Effects.pole_filtered`); None: so when the column is smooth (``prob.smooth``)
@@ -519,12 +591,14 @@ def fit_causes(
     filt = (
         bool(filtered) if filtered is not None else prob.smooth and "velocity_filter" not in causes
     )
-    sides = [(bool(pole), bool(filtered))]
+    sides = [(bool(pole), bool(filtered), bool(driver))]
     if pole is None and "second_pole" in causes:
         if NONLINEAR & set(causes):
-            sides = [(False, False), (True, filt)]
+            sides = [(False, False, False), (True, filt, False)]
         elif filt:
-            sides = [(False, False), (True, True)]
+            sides = [(False, False, False), (True, True, False)]
+    if driver is None and not pole and {"second_pole", "coast_on_zero"} <= set(causes):
+        sides.append((False, False, True))
     caps = [bool(cap)]
     if cap is None and "current_limit" in causes:
         caps = [False, True]
@@ -534,9 +608,11 @@ def fit_causes(
             if out is None:
                 f = _fit_side(prob, causes, rng, starts, max_iter, scan, polish, side, both)
             else:
-                # the other variant from where the first ended (and the best start): the
-                # variants differ only where the wheel stops, coasts or is capped
-                again = [(out.T, values_of(out)), *starts[:1]]
+                # the other variant from where the first ended, and from every start (scored
+                # again: a start far from the first variant's valley, a cap's ramp with
+                # little drag, may be the best in this one): the variants differ only where
+                # the wheel stops, coasts or is capped
+                again = [(out.T, values_of(out)), *starts]
                 if side[1] and not out.effects.pole_filtered:
                     again.insert(0, (out.T, _as_filter(values_of(out), prob.ts)))
                 f = _fit_side(prob, causes, rng, again, max_iter, False, (), side, both)
@@ -563,11 +639,11 @@ def _fit_side(
     max_iter: int,
     scan: bool | None,
     polish: tuple[str, ...],
-    side: tuple[bool, bool],
+    side: tuple[bool, bool, bool],
     cap_both: bool,
 ) -> Fit:
     m = Model(prob, causes, rng)
-    m.pole_measured, m.pole_filtered = side
+    m.pole_measured, m.pole_filtered, m.pole_driver = side
     m.cap_both = cap_both
     scored = []
     for T, values in starts:
@@ -626,6 +702,7 @@ def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fi
         pole=f.effects.pole_measured,
         filtered=f.effects.pole_filtered,
         cap=f.effects.cap_both,
+        driver=f.effects.pole_driver,
     )
 
 
@@ -654,11 +731,13 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     m.taps = f.effects.taps
     m.pole_measured = f.effects.pole_measured
     m.pole_filtered = f.effects.pole_filtered
+    m.pole_driver = f.effects.pole_driver
     m.cap_both = f.effects.cap_both
     x = m.x_of(f.T, values_of(f))
     T, fx = m.effects(x)
     g = m.response(T, fx)
-    r0, k = m.fit_k(g, fx.taps)
+    starts = prob.restart_columns(T, fx)
+    r0, k, _ = m.fit_k(g, fx.taps, starts)
     gw = prob.white(g, fx.taps)[prob.keep]
     cols = [-gw]  # d r / d K
     for i, a in enumerate(m.axes):
@@ -668,7 +747,9 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
         Tp, fxp = m.effects(xp)
         gp = prob.white(m.response(Tp, fxp), fx.taps)[prob.keep]
         cols.append(-(k * (gp - gw)) / h)
-    jac = np.column_stack(cols)
+    # the size of each restart is fitted with K (its own dependence on T left out)
+    extra = [-prob.white(c, fx.taps)[prob.keep] for _, c in starts]
+    jac = np.column_stack([*cols, *extra])
     n, p = jac.shape
     s2 = float(np.dot(r0, r0)) / max(n - p, 1)
     rho = float(np.dot(r0[1:], r0[:-1]) / np.dot(r0, r0)) if n > 2 and np.dot(r0, r0) > 0 else 0.0
@@ -678,7 +759,7 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
         cov = np.linalg.pinv(jac.T @ jac) * s2
     except np.linalg.LinAlgError:
         cov = np.full((p, p), np.inf)
-    sd = np.sqrt(np.maximum(np.diag(cov), 0.0))
+    sd = np.sqrt(np.maximum(np.diag(cov), 0.0))[: len(cols)]
     sd = np.where(np.isfinite(sd), sd, np.inf)  # a parameter the log does not pin down
     out: dict[str, tuple[float, float]] = {"K": (k - Z95 * sd[0], k + Z95 * sd[0])}
     for i, a in enumerate(m.axes):
@@ -714,7 +795,7 @@ def _taps_interval(m: Model, x: FloatArray, f: Fit, tol: float) -> tuple[float, 
     ok = []
     for n in range(1, hi + 1):
         g = measured(theta[top:], p.t, theta[top - n : top], p.ts, n, p.over_interval)
-        r, _ = m.fit_k(g, n)
+        r, _, _ = m.fit_k(g, n, p.restart_columns(T, replace(fx, taps=n)))
         if float(np.dot(r, r)) <= tol * f.sse_white:
             ok.append(n)
     taps = f.effects.taps

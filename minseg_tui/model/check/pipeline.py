@@ -134,7 +134,9 @@ def check(
     )
     found, _, _ = dist.split_repeated(found, u)  # the baseline's own miss: the causes' business
     if found:
-        full, head, base = _fenced(full, found, rng0)
+        # the baseline does not know the average that carries the hand on: from its end
+        found, restarts = dist.restarted(found, u, early=False)
+        full, head, base = _fenced(full, found, rng0, restarts)
 
     from_cpr = samp.resolution_how.startswith("# cpr")
     log = Log(
@@ -183,11 +185,11 @@ def check(
     found2, repeated, repeated_at = dist.split_repeated(found2, u, rise)
     # a disturbance is local: the model chosen fits the rest of the log well below it
     found2, _ = dist.split_local(found2, full.y - ext.predict(full), full.weights > 0)
-    if _rows(found2) != _rows(found):
+    if _rows(dist.restarted(found2, u)[0]) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
         others = _wild_weights(y.size, wild, taps) * pre
-        full = full.with_weights(dist.fence(y.size, found) * others)
+        full = full.with_weights(dist.fence(y.size, found) * others, ())
         head = full.head(MAX_FIT_ROWS)
         # where the wheel rejoins the model, judged against the model fitted without the
         # disturbance's rows
@@ -195,7 +197,8 @@ def check(
         found = dist.recovered(
             found, u, full.y - apart.predict(full), full.weights > 0, rise, noise, rise
         )
-        full = full.with_weights(dist.fence(y.size, found) * others)
+        found, restarts = dist.restarted(found, u)
+        full = full.with_weights(dist.fence(y.size, found) * others, restarts)
         head = full.head(MAX_FIT_ROWS)
         base = fit_baseline(head, rng0)
         sel = select(head, base, rng, noise, samp.column_floor, names)
@@ -236,7 +239,7 @@ def check(
 
 def replace_y(p: Problem, y: FloatArray) -> Problem:
     """The problem with another measured speed (same weights)."""
-    return Problem(p.t, p.u, y, p.ts, p.z0, p.weights, p.over_interval, p.smooth)
+    return Problem(p.t, p.u, y, p.ts, p.z0, p.weights, p.over_interval, p.smooth, p.restarts)
 
 
 def _rows(found: list[dist.Disturbance]) -> list[tuple[int, int]]:
@@ -399,6 +402,7 @@ def _report(
             d.size,
             d.level,
             (d.fence_start, min(d.fence_end, t.size)),
+            d.free >= 0,
         )
         for d in found
     ]
@@ -971,8 +975,9 @@ def _fenced(
     full: Problem,
     found: list[dist.Disturbance],
     rng: dict,  # type: ignore[type-arg]
+    restarts: tuple[int, ...] = (),
 ) -> tuple[Problem, Problem, Fit]:
-    fixed = full.with_weights(full.weights * dist.fence(full.y.size, found))
+    fixed = full.with_weights(full.weights * dist.fence(full.y.size, found), restarts)
     head = fixed.head(MAX_FIT_ROWS)
     return fixed, head, fit_baseline(head, rng)
 

@@ -96,6 +96,13 @@ class Effects:
     """With ``pole_measured``: the pole is a first-order filter the logger runs on the speed
     column, sample by sample (y_k = a y_k-1 + (1 - a) m_k, a = exp(-ts/T2), m_k the speed
     of counts), not a lag of the angle (a compliant coupling)."""
+    pole_driver: bool = False
+    """The extra pole on the drive is a driver's lag of its command, which runs on while the
+    bridge is open: through a coast the driver's output falls towards the zero command with
+    T2, and the wheel, still turning, meets that output when the bridge closes (braked
+    until it rises past the speed). Without it the pole is the armature's L/R: no current
+    flows while coasting, and it builds from zero when the bridge closes. The two differ
+    only after a coast."""
     drag: float = 0.0
     """The share of the driven damping that is the wheel's own viscous drag (T/J_b with
     J/b the drag's time constant in s, 0 to below 1; the rest is the back-EMF). While the
@@ -274,7 +281,10 @@ def _stretch(
             return
         if coast:
             assert fx.T_coast is not None
+            v0, before = s.v, left
             left = _coast(out, s, left, max(fx.T_coast, T), uc / T)
+            if T2 and fx.pole_driver:
+                s.v = v0 * _exp(-(before - left) / T2)
             continue
         drive = s.v
         if s.w == 0.0 and (abs(drive) < uc or drive == 0.0 and (u == 0.0 or not T2)):
@@ -613,4 +623,63 @@ def iir(y: FloatArray, a: float) -> FloatArray:
         grow = np.exp(np.arange(stop - start) * step)
         out[start:stop] = (a * carry + np.cumsum(b[start:stop] * grow)) / grow
         carry = float(out[stop - 1])
+    return out
+
+
+def restart(
+    st: Stretches,
+    t: FloatArray,
+    ts: float,
+    T: float,
+    fx: Effects,
+    row: int,
+    over_interval: bool = False,
+) -> FloatArray:
+    """The measured speed (K = 1 units, per unit of departure) that a wheel off the model's
+    speed at the start of row ``row``'s reading adds to the model's from that row on: 0 on the
+    rows before it. A wheel a hand let go of picks up from the speed the hand left it at; the
+    model's own speed is the same equation from another start, so the difference dies away
+    with the motor's time constant T (s; while coasting, ``fx.T_coast``), through the same
+    dead time, average and pole on the measurement as the model's speed. Dry friction, the
+    cap and the wheel stopping are not followed: the departure is assumed to stay in the
+    linear range (it has mostly died away where the rows are taken up again).
+
+    The departure is started ``fx.delay`` before the first instant the reading of ``row``
+    looks at (the sample ``fx.taps`` periods earlier); started earlier, it would only be a
+    multiple of the same rows' values."""
+    n = fx.taps
+    out = np.zeros(t.size)
+    if row >= t.size:
+        return out
+    tt = np.concatenate((t[0] - ts * np.arange(n, 0, -1), t))
+    tau0 = float(tt[max(row, 0)]) - fx.delay
+    table = Pieces()
+    table.add(tau0 - FAR, 0.0, 0.0)
+    starts = st.start.tolist()
+    values = st.value.tolist()
+    th, amp = 0.0, 1.0
+    i = max(int(np.searchsorted(st.start, tau0, side="right")) - 1, 0)
+    s0 = tau0
+    while True:
+        coast = fx.T_coast is not None and values[i] == 0.0
+        tc = max(fx.T_coast, T) if coast and fx.T_coast is not None else T
+        table.add(s0, th, 0.0, 0.0, amp, tc)
+        if i + 1 >= len(starts):
+            break
+        s1 = float(starts[i + 1])
+        e = _exp(-(s1 - s0) / tc)
+        th += amp * tc * (1.0 - e)
+        amp *= e
+        s0, i = s1, i + 1
+        if amp < 1e-12:
+            table.add(s0, th, 0.0)
+            break
+    # nothing before the first instant read (one more, at rest, starts a lag at rest)
+    lo = max(row - 1, 0)
+    theta = np.zeros(tt.size)
+    theta[lo:] = angle_at(table, tt[lo:], fx)
+    out = measured(theta[n:], t, theta[:n], ts, n, over_interval)
+    if fx.pole_filtered and fx.pole_measured and fx.T2 > 0.0:
+        out = iir(out, math.exp(-ts / fx.T2))
+    out[:row] = 0.0
     return out

@@ -15,6 +15,7 @@ from minseg_tui.quantities import (
     F_UNIT,
     RPM,
     format_constant,
+    format_fixed,
     format_number,
     format_percent,
     format_quantity,
@@ -135,7 +136,8 @@ def _above_range(rows: Sequence[Row]) -> str:
     """'12 %' or '8-15 %': how far u_ss is above u_req over the rows."""
     pct = [100.0 * (row.reading.u_ss / row.reading.u_req - 1.0) for row in rows]
     lo, hi = min(pct), max(pct)
-    return f"{lo:.0f} %" if round(lo) == round(hi) else f"{lo:.0f}-{hi:.0f} %"
+    whole = format_fixed(hi, 0, "%")
+    return format_fixed(lo, 0, "%") if round(lo) == round(hi) else f"{format_fixed(lo, 0)}-{whole}"
 
 
 def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
@@ -342,8 +344,8 @@ def fit_observations(
             Observation(
                 "logging_stall",
                 (
-                    f"{_lines(log, [k]).capitalize()} comes after a gap of {gap * 1e3:.0f} ms in the logging "
-                    f"({gap / ts:.1f} sample periods) and its angle misses the fit by far more than any "
+                    f"{_lines(log, [k]).capitalize()} comes after a gap of {format_fixed(gap * 1e3, 0, 'ms')} in the logging "
+                    f"({format_fixed(gap / ts, 1)} sample periods) and its angle misses the fit by far more than any "
                     "other row: the encoder value was read before its timestamp (a logging stall), so "
                     "its speed is a one-row spike. It is left out of the fit."
                 ),
@@ -355,7 +357,7 @@ def fit_observations(
             Observation(
                 "dead_time",
                 (
-                    f"The wheel answers {fit.dead_time * 1e3:.0f} ms after the logged steps, more than the "
+                    f"The wheel answers {format_fixed(fit.dead_time * 1e3, 0, 'ms')} after the logged steps, more than the "
                     f"one sample period ({format_reading(bound, 'ms', 3)}) that the sampling's lateness can explain: a "
                     "dead time. It is fitted as the model check fits it and is part of the model "
                     f"(Task 14): T omega'(t) = -omega(t) + K u_A(t - {format_number(fit.dead_time, 3)} s). T is counted "

@@ -12,7 +12,7 @@ from textual.widget import Widget
 from minseg_tui.lab.content.steps import LEVELS, Step
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
-from minseg_tui.quantities import format_spread
+from minseg_tui.quantities import format_fixed, format_spread
 from minseg_tui.ui.device import DeviceInfo
 from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.live import LiveBuffer
@@ -99,7 +99,11 @@ class LivePanel(Vertical, PanelKeys):
         if "capture_omega" in self.step.actions:
             s = views.steady(t, count)
             state = "SETTLED" if s.settled else "not settled"
-            mean = "—" if s.mean != s.mean else f"{s.mean:.2f} {format_spread(s.spread, 'rad/s')}"
+            mean = (
+                "—"
+                if s.mean != s.mean
+                else f"{format_fixed(s.mean, 2)} {format_spread(s.spread, 'rad/s')}"
+            )
             note = "" if s.ready else "(window filling)"
             text = (
                 f"steady: {state} · {mean} over {views.CAPTURE_WINDOW:g} s {note}".rstrip()
@@ -181,8 +185,7 @@ class Readout(Vertical):
         step = self.parent
         focused = self.screen.focused
         if isinstance(step, FieldForm) and focused is step:
-            row = step.typing
-            return row.input if row is not None else None
+            return step.keys_box
         if focused is None or step is None or step not in focused.ancestors:
             return None
         return focused
@@ -191,7 +194,7 @@ class Readout(Vertical):
         step = self.parent
         focused = self._target()
         if not (
-            isinstance(step, Widget)
+            isinstance(step, FieldForm)
             and focused is not None
             and focused.is_attached
             and self.is_attached
@@ -206,7 +209,7 @@ class Readout(Vertical):
             focused,
         )
         # below the step's heading, which covers its top while it is scrolled down
-        top = step.scrollable_content_region.y + int(getattr(step, "heading_rows", 0))
+        top = step.scrollable_content_region.y + step.heading_rows
         for shown in (row, focused):
             under = shown.region.bottom - self.region.y
             if under <= 0:

@@ -6,6 +6,7 @@ from textual.reactive import reactive
 from textual.widgets import Static
 
 from minseg_tui.model.plant import MeterReading
+from minseg_tui.quantities import format_fixed
 from minseg_tui.ui.device import DeviceInfo
 
 MODES: dict[str, str] = {"Ω": "on Ω", "V": "on V=", "mA": "on mA, jumper out"}
@@ -33,7 +34,11 @@ class MeterPanel(Static):
         head = "multimeter (virtual, M1A-M1B" + (f", {MODES[self.unit]}" if self.unit else "")
         if m is None:
             return f"{head}): reading…"
-        shown = {"V": f"{m.u_A:.2f} V", "mA": f"{m.i * 1000:.1f} mA", "Ω": f"{m.R:.1f} Ω"}
+        shown = {
+            "V": format_fixed(m.u_A, 2, "V"),
+            "mA": format_fixed(m.i * 1000, 1, "mA"),
+            "Ω": format_fixed(m.R, 1, "Ω"),
+        }
         if self.unit:
             return f"{head}) · {shown[self.unit]}"
         return f"{head}): " + " · ".join(shown.values())

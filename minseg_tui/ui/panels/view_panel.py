@@ -46,6 +46,11 @@ class ViewPanel(Vertical, Generic[V]):
         self.show_view()
         self.post_message(self.Drawn(self.revealed()))
 
+    def after_rows(self) -> Widget | None:
+        """What the panel shows under the step's entries (the step's form puts it there), or
+        None: nothing."""
+        return None
+
     def revealed(self) -> Widget | None:
         """What the view just drawn newly shows for the group to see (None: nothing)."""
         return None

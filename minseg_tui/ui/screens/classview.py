@@ -25,10 +25,9 @@ from textual.screen import Screen
 from textual.widgets import DataTable, Static
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.state.compare import format_diff
 from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
-from minseg_tui.quantities import format_number, format_quantity
+from minseg_tui.quantities import format_diff, format_number, format_quantity
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
 

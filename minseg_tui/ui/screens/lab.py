@@ -196,9 +196,13 @@ class StepPane(FieldForm):
     on their way to it, land in the new step. :meth:`focus_on` lands in the step."""
 
     def __init__(
-        self, store: Store, restore: Callable[[FieldRow, Restoring], None], readonly: bool = False
+        self,
+        store: Store,
+        restore: Callable[[FieldRow, Restoring], None],
+        choose: Callable[[FieldRow, tuple[int, ...]], None],
+        readonly: bool = False,
     ) -> None:
-        super().__init__(store, restore, readonly, classes="pane")
+        super().__init__(store, restore, choose, readonly, classes="pane")
         self.step: Step | None = None
         """The step shown (None before the first)."""
         self.panel: Widget | None = None
@@ -236,9 +240,9 @@ class StepPane(FieldForm):
                 if readout is not None:
                     widgets.append(readout)
         widgets += rows
-        after = getattr(panel, "after_rows", None)
-        if callable(after):
-            widgets.append(after())
+        after = panel.after_rows() if isinstance(panel, ViewPanel) else None
+        if after is not None:
+            widgets.append(after)
         self.scroll_to(y=0, animate=False, immediate=True)
         await self.mount_all(widgets)
         self.step, self.panel = step, panel
@@ -322,15 +326,16 @@ class StepPane(FieldForm):
             return
         heading.show_whole(not heading.whole)
         heading.display = round(self.scroll_y) > 0 or heading.whole
-        row = self.typing
-        focused = row.input if row is not None else self.screen.focused
+        box = self.keys_box
+        focused = box if box is not None else self.screen.focused
         if focused is not None and focused is not self and self in focused.ancestors:
             self.call_after_refresh(self._clear_heading, focused)
 
     def _clear_heading(self, widget: Widget) -> None:
         """A focused ``widget`` under the heading (Textual scrolls a widget above the view to
         the top edge, where the heading lies) is scrolled down from under it."""
-        if not (widget.is_attached and self.is_attached and widget.has_focus and widget.region):
+        focused = widget.has_focus or widget is self.keys_box  # the keys go to it
+        if not (widget.is_attached and self.is_attached and focused and widget.region):
             return  # an empty region: not on the screen at all (below it, say), not under it
         over = self.scrollable_content_region.y + self.heading_rows - widget.region.y
         if over > 0:
@@ -340,8 +345,9 @@ class StepPane(FieldForm):
         super().watch_current(old, new)
         if new is not None and self._keep == "scrolled":
             self._keep = "focused"
-        if new is not None and new.is_attached and not new.field.options:
-            self.call_after_refresh(self._clear_heading, new.input)
+        box = new.box if new is not None and new.is_attached else None
+        if box is not None:
+            self.call_after_refresh(self._clear_heading, box)
 
     def on_mouse_scroll_down(self, _: events.MouseScrollDown) -> None:
         self._group_scrolled()
@@ -536,7 +542,7 @@ class LabScreen(StatusScreen):
                 *[Option(label, id=st.id) for label, st in zip(labels, STEPS, strict=True)],
                 id="nav",
             )
-            yield StepPane(self._store, self._restore, self.readonly)
+            yield StepPane(self._store, self._restore, self._choose, self.readonly)
         yield KeyFooter()
 
     async def on_mount(self) -> None:
@@ -579,8 +585,8 @@ class LabScreen(StatusScreen):
         of files sat over the summary's last field, being typed in (issue 20, walk 5)."""
         focused = self.focused
         pane = self.pane if self.query(StepPane) else None
-        row = pane.typing if pane is not None else None
-        widget = row.input if row is not None else focused
+        box = pane.keys_box if pane is not None else None
+        widget = box if box is not None else focused
         low = False
         if widget is not None and widget is not pane and widget.region:
             middle = widget.region.y + widget.region.height / 2
@@ -891,15 +897,17 @@ class LabScreen(StatusScreen):
         row.input.cursor_position = len(held)
         self._changed()
 
-    @on(FieldRow.Chosen)
-    def _chosen(self, event: FieldRow.Chosen) -> None:
+    def _choose(self, row: FieldRow, indices: tuple[int, ...]) -> None:
+        """The group ticked options ``indices`` (0-based) of ``row``'s list: stored, and the
+        verdict shown."""
         if self.readonly:
-            event.row.show_result(EntryView(False, "this session is open read-only: not stored"))
+            row.show_result(EntryView(False, "this session is open read-only: not stored"))
             return
+        key = row.field.key
         with self.session as s:
-            s.choose(event.key, list(event.indices))
-            result = views.entry(s, event.key) or EntryView(True)
-        event.row.show_result(result)
+            s.choose(key, list(indices))
+            result = views.entry(s, key) or EntryView(True)
+        row.show_result(result)
         self._changed()
 
     def focus_after(self, key: str) -> None:

@@ -1,16 +1,17 @@
-"""An entry row: label, input, and the one-line message the lab gave back."""
+"""The step form and its entry rows: label, text box or list of answers, and the message the
+lab gave back."""
 
 from __future__ import annotations
 
 import asyncio
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
 from functools import partial
 from inspect import isawaitable
 from typing import Literal
 
 from rich.segment import Segment
+from rich.text import Text
 from textual import events, on
 from textual.app import App, ComposeResult
 from textual.binding import Binding
@@ -21,7 +22,8 @@ from textual.message import Message
 from textual.reactive import reactive
 from textual.strip import Strip
 from textual.widget import Widget
-from textual.widgets import Input, Label, RadioButton, RadioSet, SelectionList
+from textual.widgets import Label, RadioButton, RadioSet, SelectionList
+from textual.widgets.input import Selection
 
 from minseg_tui.lab.content.steps import Field
 from minseg_tui.lab.views.session import EntryView
@@ -66,73 +68,76 @@ class Choice(RadioButton):
         return drawn
 
 
-def _mid_word(widget: Answers | Ticks, event: events.Key) -> bool:
-    """Whether ``event``, read by a list of answers, goes on up to the step's form rather than
-    act here: a character goes into the first empty entry (:meth:`FieldForm.take`), and so
-    does a space typed right after one ('why does f fall' typed on the summary's first
-    question), while a space on its own ticks the answer. The list notes in
-    ``_word`` that it passed a character up."""
-    character = event.character if event.is_printable else None
-    if character and character != " ":
-        widget._word = True
+class AnswerList(Widget):
+    """What the two lists of answers share: they never take the focus. Their step's form
+    (:class:`FieldForm`) does, and hands a list the keys typed while its row is the form's
+    current one (:meth:`press`), in the order typed, in the form's one queue; the list then
+    shows as focused (:meth:`show_current`), the mark of the answer Space would tick
+    included. A tick goes to the lab at once, by a plain call (:meth:`FieldRow.pick`)."""
+
+    def show_current(self, current: bool) -> None:
+        """Shown as the list the keys go to (its row is the focused form's current one), or
+        not: Textual draws a list's focused look and its cursor from ``has_focus``."""
+        self.has_focus = current
+        for choice in self.query(Choice):  # the cursor's mark comes or goes
+            choice.refresh()
+        self.refresh()
+
+    def focus(self, scroll_visible: bool = True) -> AnswerList:
+        """Focusing the list (a click on it) focuses its form at its row."""
+        row = self.parent
+        if isinstance(row, FieldRow):
+            row.focus_input()
+        return self
+
+    def press(self, key: str) -> bool:
+        """Key ``key`` acts on the list; False: not one of its keys."""
+        raise NotImplementedError
+
+
+class Answers(RadioSet, AnswerList, can_focus=False):
+    """A list of answers of which one is picked: the arrows move its cursor, Space or Enter
+    picks the answer under it."""
+
+    def press(self, key: str) -> bool:
+        if key in ("down", "right"):
+            self.action_next_button()
+        elif key in ("up", "left"):
+            self.action_previous_button()
+        elif key in ("space", "enter"):
+            buttons = list(self.query(RadioButton))
+            before = [b.value for b in buttons]
+            self.action_toggle_button()
+            picked = [k for k, b in enumerate(buttons) if b.value and not before[k]]
+            if picked and isinstance(self.parent, FieldRow):
+                self.parent.pick((picked[0],))
+        else:
+            return False
         return True
-    word = widget._word and character == " "
-    widget._word = word
-    return word
 
 
-class Answers(RadioSet):
-    """A list of answers of which one is picked. Its keys (the arrows, Space, Enter) act as
-    the list reads them, in the order typed, and a pick goes to the lab at once
-    (:meth:`FieldRow.take_choice`): Textual would run them through the list's bindings only
-    once the key has bubbled up to the app, after a key bound with priority typed after
-    them (Space then PgDn in one burst moved on first, and the tick was lost)."""
-
-    _word = False
-    """A character went up to the form through the list and no key acted here since."""
-
-    async def on_key(self, event: events.Key) -> None:
-        if _mid_word(self, event):
-            return
-        bindings = [b for b in self._bindings.key_to_bindings.get(event.key, ()) if not b.priority]
-        if not bindings:
-            return
-        event.stop()
-        event.prevent_default()
-        buttons = list(self.query(RadioButton))
-        before = [b.value for b in buttons]
-        await self.app.run_action(bindings[0].action, self)
-        picked = [k for k, b in enumerate(buttons) if b.value and not before[k]]
-        if picked and isinstance(self.parent, FieldRow):
-            self.parent.take_choice((picked[0],))
-
-
-class Ticks(SelectionList[int]):
+class Ticks(SelectionList[int], AnswerList, can_focus=False):
     """A list to tick whose marks say which are ticked without colour: X ticked, blank not.
-    Space and Enter tick or untick the highlighted answer as the list reads them, in the
-    order typed, and the lab has the ticks at once (see :class:`Answers`); its other keys
-    (the arrows, Home, End) act as it reads them too."""
+    Space and Enter tick or untick the highlighted answer; the arrows, Home and End move
+    the cursor."""
 
-    _word = False
-    """A character went up to the form through the list and no key acted here since."""
-
-    async def on_key(self, event: events.Key) -> None:
-        if _mid_word(self, event):
-            return
-        key = event.key
+    def press(self, key: str) -> bool:
         if key in ("space", "enter"):
-            event.stop()
-            event.prevent_default()
             if self.highlighted is not None:
                 self.toggle(self.get_option_at_index(self.highlighted))
                 if isinstance(self.parent, FieldRow):
-                    self.parent.take_choice(tuple(sorted(self.selected)))
-            return
-        bindings = [b for b in self._bindings.key_to_bindings.get(key, ()) if not b.priority]
-        if bindings:
-            event.stop()
-            event.prevent_default()
-            await self.app.run_action(bindings[0].action, self)
+                    self.parent.pick(tuple(sorted(self.selected)))
+        elif key == "down":
+            self.action_cursor_down()
+        elif key == "up":
+            self.action_cursor_up()
+        elif key == "home":
+            self.action_first()
+        elif key == "end":
+            self.action_last()
+        else:
+            return False
+        return True
 
     def render_line(self, y: int) -> Strip:
         strip = super().render_line(y)
@@ -147,13 +152,6 @@ class Ticks(SelectionList[int]):
         return Strip(segments, strip.cell_length)
 
 
-EDITING_KEYS: dict[str, str] = {
-    b.key: b.action for b in Binding.make_bindings(Input.BINDINGS) if b.key != "enter"
-}
-"""The text box's own keys (Textual's Input bindings) -> their actions; Enter is the lab
-screen's (it stores the entry and moves on)."""
-
-
 Restoring = Literal["held", "undo", "redo"]
 """What a key in an entry brings back: the text the lab holds (Escape), the answer stored
 before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
@@ -164,10 +162,19 @@ FOCUS_MARK = "▶ "
 """Before the label of the row the keys go to: the focus seen without colour."""
 
 
-class EntryBox(Input, can_focus=False):
-    """The text box of an entry. It never takes the focus: its form (:class:`FieldForm`) does,
-    and hands it the keys typed while its row is the form's current one, in the order typed;
-    it then shows as focused (:meth:`show_current`), cursor and selection included.
+_WORD_START = re.compile(r"(?<=\W)\w")
+"""Where a word starts (Ctrl+arrows move to one, Ctrl+W deletes back to one)."""
+
+
+class EntryBox(Widget, can_focus=False):
+    """The text box of an entry: one line of text with a cursor and a selection, drawn and
+    edited here (:meth:`edit`, :meth:`type_text`). It never takes the focus: its form
+    (:class:`FieldForm`) does, and hands it the keys typed while its row is the form's
+    current one, in the order typed; it then shows as focused (:meth:`show_current`),
+    cursor and selection included. It looks as Textual's Input does, and its keys are
+    Input's: the arrows (with Shift: select; with Ctrl: by word), Home/End (Ctrl+A/E),
+    Backspace, Delete (Ctrl+D), Ctrl+W, Ctrl+U, Ctrl+K, Ctrl+X/C/V. The cursor does not
+    blink.
 
     A refused text stays as typed, nothing selected, the cursor at its end
     (:meth:`hold_refused`): the missing ')' typed next goes on after it, Backspace deletes
@@ -176,15 +183,164 @@ class EntryBox(Input, can_focus=False):
     over it; Ctrl+Z the answer stored before it, Ctrl+Y the one Ctrl+Z took back (the form
     asks the lab)."""
 
-    def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
-        super().__init__(
-            value=value, classes="field-input", placeholder=placeholder, disabled=disabled
-        )
+    DEFAULT_CSS = """
+    EntryBox {
+        background: $surface;
+        color: $foreground;
+        padding: 0 2;
+        border: tall $border-blurred;
+        width: 100%;
+        height: 3;
+        pointer: text;
+        &.-current {
+            border: tall $border;
+            background-tint: $foreground 5%;
+        }
+        &>.entry-box--cursor {
+            background: $input-cursor-background;
+            color: $input-cursor-foreground;
+            text-style: $input-cursor-text-style;
+        }
+        &>.entry-box--selection {
+            background: $input-selection-background;
+            color: $input-selection-foreground;
+        }
+        &>.entry-box--placeholder {
+            color: $text-disabled;
+        }
+        &:ansi {
+            background: ansi_default;
+            color: ansi_default;
+            &>.entry-box--cursor {
+                background: ansi_white;
+                color: ansi_black;
+            }
+            &>.entry-box--placeholder {
+                text-style: dim;
+                color: ansi_default;
+            }
+        }
+    }
+    """
+    COMPONENT_CLASSES = {"entry-box--cursor", "entry-box--selection", "entry-box--placeholder"}
 
+    class Changed(Message):
+        """The text changed (typed, or set by the lab)."""
+
+    def __init__(self, value: str, placeholder: str, disabled: bool) -> None:
+        super().__init__(classes="field-input", disabled=disabled)
+        self._value = value
+        self._cursor = len(value)
+        self._anchor = self._cursor
+        """The other end of the selection (the cursor's place: nothing selected)."""
+        self._scroll_x = 0
+        """The first column of the text shown (a text longer than the box scrolls)."""
+        self.placeholder = placeholder
+        """Shown in the box while it is empty."""
+
+    # -- what it holds --------------------------------------------------------------------
+    @property
+    def value(self) -> str:
+        return self._value
+
+    @value.setter
+    def value(self, text: str) -> None:
+        if text == self._value:
+            return
+        self._value = text
+        self._cursor = min(self._cursor, len(text))
+        self._anchor = min(self._anchor, len(text))
+        self._changed()
+
+    @property
+    def cursor_position(self) -> int:
+        return self._cursor
+
+    @cursor_position.setter
+    def cursor_position(self, position: int) -> None:
+        """The cursor at ``position`` (clamped to the text), nothing selected."""
+        self._select(position, position)
+
+    @property
+    def selection(self) -> Selection:
+        """(anchor, cursor): the selected text lies between them (none if equal)."""
+        return Selection(self._anchor, self._cursor)
+
+    def select_all(self) -> None:
+        self._select(0, len(self._value))
+
+    def _select(self, anchor: int, cursor: int) -> None:
+        size = len(self._value)
+        self._anchor = max(0, min(anchor, size))
+        self._cursor = max(0, min(cursor, size))
+        self._scroll_to_cursor()
+        self.refresh()
+
+    def _changed(self) -> None:
+        self._scroll_to_cursor()
+        self.refresh()
+        self.post_message(self.Changed())
+
+    def _scroll_to_cursor(self) -> None:
+        width = max(self.content_size.width, 1)
+        if self._cursor < self._scroll_x:
+            self._scroll_x = self._cursor
+        elif self._cursor >= self._scroll_x + width:
+            self._scroll_x = self._cursor - width + 1
+        self._scroll_x = max(0, min(self._scroll_x, len(self._value)))
+
+    def on_resize(self) -> None:
+        self._scroll_x = 0
+        self._scroll_to_cursor()
+
+    # -- shown -----------------------------------------------------------------------------
     def show_current(self, current: bool) -> None:
         """Shown as the box typing goes into (its row is the focused form's current one), or
-        not: Textual's Input draws its cursor and its focused look from ``has_focus``."""
-        self.has_focus = current
+        not: the focused look, the cursor and the selection show only then."""
+        self.set_class(current, "-current")
+        self.refresh()
+
+    def render_line(self, y: int) -> Strip:
+        width = self.content_size.width
+        if y != 0:
+            return Strip.blank(width, self.rich_style)
+        current = self.has_class("-current")
+        console = self.app.console
+        options = self.app.console_options
+        # drawn as Textual's Input draws its line, one cell wider than the box (the cursor's
+        # cell after a text as wide as the box)
+        if not self._value:
+            text = Text(self.placeholder, justify="left", end="")
+            text.stylize(self.get_component_rich_style("entry-box--placeholder"))
+            if current:
+                if not text:
+                    text = Text(" ", end="")
+                text.stylize(self.get_component_rich_style("entry-box--cursor"), 0, 1)
+            strip = Strip(console.render(text, options.update_width(width + 1)))
+            return strip.apply_style(self.rich_style)
+        text = Text(self._value, no_wrap=True, overflow="ignore", end="")
+        cells = text.cell_len + 1  # the cursor's cell after the text
+        if current:
+            start, end = sorted((self._anchor, self._cursor))
+            if start != end:
+                selected = self.get_component_rich_style("entry-box--selection")
+                text.stylize_before(selected, start, end)
+            if self._cursor == len(self._value):
+                text.pad_right(1)
+            cursor = self.get_component_rich_style("entry-box--cursor")
+            text.stylize(cursor, self._cursor, self._cursor + 1)
+        strip = Strip(console.render(text, options.update_width(cells)))
+        strip = strip.crop(self._scroll_x, self._scroll_x + width + 1)
+        return strip.extend_cell_length(width + 1).apply_style(self.rich_style)
+
+    def on_click(self, event: events.Click) -> None:
+        """A click focuses the box's row and puts the cursor where it was."""
+        row = self.parent.parent if self.parent is not None else None
+        if isinstance(row, FieldRow):
+            row.focus_input()
+        offset = event.get_content_offset(self)
+        if offset is not None:
+            self.cursor_position = self._scroll_x + offset.x
 
     def focus(self, scroll_visible: bool = True) -> EntryBox:
         """Focusing the box focuses its form at its row (what it holds selected)."""
@@ -193,24 +349,92 @@ class EntryBox(Input, can_focus=False):
             row.focus_input()
         return self
 
+    # -- editing ---------------------------------------------------------------------------
     def hold_refused(self) -> None:
         """The text was refused: it stays to be mended, nothing selected, the cursor at its
         end (where a missing ')' or operand goes)."""
         self.cursor_position = len(self.value)
 
+    def replace(self, text: str, start: int, end: int) -> None:
+        """``text`` in place of the characters from ``start`` to ``end``, the cursor after it."""
+        start, end = sorted((max(0, start), min(end, len(self._value))))
+        self._value = self._value[:start] + text + self._value[end:]
+        self._cursor = self._anchor = start + len(text)
+        self._changed()
+
+    def insert_text_at_cursor(self, text: str) -> None:
+        self.type_text(text)
+
     def type_text(self, text: str) -> None:
         """Text typed (a character) or pasted: it replaces what is selected, else goes in at
         the cursor."""
-        start, end = self.selection
-        self.replace(text, start, end)
+        self.replace(text, self._anchor, self._cursor)
 
-    async def edit(self, key: str) -> bool:
-        """An editing key (Backspace, Ctrl+U, End, ...: Textual's Input's own keys, not
-        Enter) acts here; False: not one of them."""
-        action = EDITING_KEYS.get(key)
-        if action is None:
+    def _word_left(self) -> int:
+        hits = list(_WORD_START.finditer(self._value[: self._cursor]))
+        return hits[-1].start() if hits else 0
+
+    def _word_right(self) -> int:
+        hit = _WORD_START.search(self._value, self._cursor + 1)
+        return hit.start() if hit is not None else len(self._value)
+
+    def _cut(self, start: int, end: int) -> None:
+        """Delete from ``start`` to ``end``, or what is selected if anything is."""
+        if self._anchor != self._cursor:
+            self.replace("", self._anchor, self._cursor)
+        elif start != end:
+            self.replace("", start, end)
+
+    def edit(self, key: str) -> bool:
+        """An editing key (Backspace, Ctrl+U, End, ...: see the class; not Enter) acts here;
+        False: not one of them."""
+        at, size, selected = self._cursor, len(self._value), self._anchor != self._cursor
+        low, high = sorted((self._anchor, self._cursor))
+        moves = {
+            "left": (low if selected else at - 1),
+            "right": (high if selected else at + 1),
+            "ctrl+left": self._word_left(),
+            "ctrl+right": self._word_right(),
+            "home": 0,
+            "ctrl+a": 0,
+            "end": size,
+            "ctrl+e": size,
+        }
+        selects = {
+            "shift+left": at - 1,
+            "shift+right": at + 1,
+            "ctrl+shift+left": self._word_left(),
+            "ctrl+shift+right": self._word_right(),
+            "shift+home": 0,
+            "shift+end": size,
+        }
+        if key in moves:
+            self.cursor_position = moves[key]
+        elif key in selects:
+            self._select(self._anchor, selects[key])
+        elif key == "ctrl+shift+a":
+            self.select_all()
+        elif key == "backspace":
+            self._cut(at - 1, at)
+        elif key in ("delete", "ctrl+d"):
+            self._cut(at, at + 1)
+        elif key == "ctrl+w":
+            self._cut(self._word_left(), at)
+        elif key in ("ctrl+u", "super+backspace"):
+            self._cut(0, at)
+        elif key in ("ctrl+backspace", "alt+backspace"):
+            self._cut(at, self._word_right())
+        elif key == "ctrl+k":
+            self._cut(at, size)
+        elif key in ("ctrl+x", "ctrl+c", "super+c"):
+            if selected:
+                self.app.copy_to_clipboard(self._value[low:high])
+                if key == "ctrl+x":
+                    self._cut(low, high)
+        elif key == "ctrl+v":
+            self.type_text(self.app.clipboard)
+        else:
             return False
-        await self.run_action(action)
         return True
 
 
@@ -218,8 +442,8 @@ class FieldRow(Vertical):
     """One entry. A text field is typed into through its form (:class:`FieldForm`), which
     hands what stands in it to the lab on Enter or when it is left (:meth:`pending`,
     :meth:`submitted`); a choice field is a list to tick with the keys (arrows, Space or
-    Enter) and posts :class:`FieldRow.Chosen`. The lab's verdict shows with
-    :meth:`show_result`.
+    Enter), through its form too, which hands a tick to the lab at once (:meth:`pick`).
+    The lab's verdict shows with :meth:`show_result`.
 
     Typing never lands on the end of a value the group comes back to: focusing the box
     selects what it holds, so the next keys replace it (an arrow key or Home/End keeps it to
@@ -229,14 +453,6 @@ class FieldRow(Vertical):
     class Reflowed(Message):
         """The row grew or shrank once laid out (its hint moved under the box or back): the
         step keeps its focused entry in view."""
-
-    @dataclass
-    class Chosen(Message):
-        """The group ticked options ``indices`` (0-based) of choice field ``key``."""
-
-        row: FieldRow
-        key: str
-        indices: tuple[int, ...]
 
     def __init__(
         self,
@@ -276,21 +492,22 @@ class FieldRow(Vertical):
         if focused == self.has_class("-focus"):
             return
         self.set_class(focused, "-focus")
-        for choice in self.query(Choice):  # the cursor's mark comes or goes
-            choice.refresh()
         labels = self.query(".field-label, .choice-label")
         if labels:
             labels.first(Label).update((FOCUS_MARK if focused else "") + self.label_text)
 
-    def on_descendant_focus(self, event: events.DescendantFocus) -> None:
-        """A list of answers took the focus: its row is marked (a text row is marked by
-        its form, which keeps the focus itself)."""
-        if self.field.options:
-            self.show_focus(True)
+    @property
+    def is_current(self) -> bool:
+        """The keys go to this row (the focused form's current one)."""
+        return self.has_class("-focus")
 
-    def on_descendant_blur(self, event: events.DescendantBlur) -> None:
-        if self.field.options:
-            self.show_focus(False)
+    def show_current(self, current: bool) -> None:
+        """The row is the focused form's current one (the keys go to it), or not: its label
+        marked, its box or list shown as focused."""
+        box = self.box
+        if box is not None:
+            box.show_current(current)
+        self.show_focus(current)
 
     def compose(self) -> ComposeResult:
         if self.field.options:
@@ -321,7 +538,7 @@ class FieldRow(Vertical):
     def on_resize(self) -> None:
         self._place_hint()
 
-    @on(Input.Changed)
+    @on(EntryBox.Changed)
     def _place_hint(self) -> None:
         """The hint in the empty box if it fits there; if not (at 80 columns, 'multimeter on
         V=, between M1A and M1B' was cut to 'multimeter on V=, between M1A an'), in full on
@@ -343,6 +560,23 @@ class FieldRow(Vertical):
         return self.query_one(EntryBox)
 
     @property
+    def answers(self) -> AnswerList | None:
+        """The list of answers of a choice row (None: a text row, or not composed yet)."""
+        for box in self.query(".field-choice"):  # Textual's queries match first bases only
+            if isinstance(box, AnswerList):
+                return box
+        return None
+
+    @property
+    def box(self) -> EntryBox | AnswerList | None:
+        """Where the row's keys go: its text box or its list of answers (None: not composed
+        yet)."""
+        if self.field.options:
+            return self.answers
+        boxes = self.query(EntryBox)
+        return boxes.first() if boxes else None
+
+    @property
     def is_empty(self) -> bool:
         """Nothing typed or ticked here yet (nor stored)."""
         if self.field.options:
@@ -352,8 +586,8 @@ class FieldRow(Vertical):
         return not typed.strip() and not (self._sent or "").strip()
 
     def focus_input(self, landing: bool = False) -> None:
-        """Make this row the one typing goes into (its text box: what it holds selected, so
-        typing replaces it) or focus its list of options, at once, not after the messages
+        """Make this row the one the keys go to (its text box: what it holds selected, so
+        typing replaces it; or its list of answers), at once, not after the messages
         already queued (keys of the same burst go here); scrolled into view once the layout
         has settled (``landing``: the step was just shown, see :meth:`bring_into_view`)."""
         form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
@@ -373,19 +607,21 @@ class FieldRow(Vertical):
         boxes = self.query(".field-input, .field-choice")
         box = boxes.first() if boxes else None
 
-        def place() -> None:
+        def place(settled: bool) -> None:
             if not self.is_attached:
                 return
             if landing:
                 step = next((a for a in self.ancestors if isinstance(a, ScrollableContainer)), None)
                 if step is not None:
                     step.scroll_to(y=0, animate=False, immediate=True)
-            if box is not None and box.has_focus and not screen.can_view_entire(box):
+            # a list of answers is centred only once laid out (its answers wrap then)
+            centre = settled or not self.field.options
+            if box is not None and centre and self.is_current and not screen.can_view_entire(box):
                 screen.scroll_to_center(box, animate=False, origin_visible=True, immediate=True)
             screen.scroll_to_widget(self, animate=False, immediate=True)
 
-        place()
-        self.call_after_refresh(place)
+        place(False)
+        self.call_after_refresh(place, True)
 
     def pending(self) -> str | None:
         """The text standing in the box that the lab does not hold yet (None when there is
@@ -418,29 +654,26 @@ class FieldRow(Vertical):
         box.value = self.held
         box.cursor_position = len(box.value)
 
-    def _choose(self, indices: tuple[int, ...]) -> None:
+    def pick(self, indices: tuple[int, ...]) -> None:
+        """The group ticked options ``indices`` (0-based): handed to the lab at once, by a
+        plain call of the form (:meth:`FieldForm.chose`), so that it is stored before a key
+        typed after it acts. The list's own message, which follows, then finds it chosen
+        already (a click ticks through that message alone)."""
         if indices != self._chosen:
             self._chosen = indices
-            self.post_message(self.Chosen(self, self.field.key, indices))
-
-    def take_choice(self, indices: tuple[int, ...]) -> None:
-        """The group ticked ``indices`` with a key: handed to the screen's queue at once (not
-        from widget to widget up to it), so that it is stored before a key typed after it
-        acts there (:func:`after_typed_keys`). The list's own message, which follows, then
-        finds it chosen already."""
-        if indices != self._chosen:
-            self._chosen = indices
-            self.screen.post_message(self.Chosen(self, self.field.key, indices))
+            form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
+            if form is not None:
+                form.chose(self, indices)
 
     @on(RadioSet.Changed)
     def _radio(self, event: RadioSet.Changed) -> None:
         event.stop()
-        self._choose((event.index,))
+        self.pick((event.index,))
 
     @on(SelectionList.SelectedChanged)
     def _ticked(self, event: SelectionList.SelectedChanged[int]) -> None:
         event.stop()
-        self._choose(tuple(sorted(event.selection_list.selected)))
+        self.pick(tuple(sorted(event.selection_list.selected)))
 
     @property
     def message(self) -> str:
@@ -488,7 +721,7 @@ class FieldRow(Vertical):
             box = self.input
             if not result.ok:
                 box.hold_refused()
-            if box.has_focus:
+            if self.is_current:
                 self.call_after_refresh(self.bring_into_view)
 
 
@@ -503,13 +736,16 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     puts the next step's widgets in it), so every key of a burst is handled here, in the
     order typed, whatever it does: a character or an editing key goes into the current row,
     Enter hands the row to the lab (``store``, a plain call: the verdict is there before the
-    next key) and moves on if it was accepted, Tab and Shift+Tab move between the rows and
-    the step's other focusable widgets, and any other key runs its binding here, after what
-    was typed before it is stored and before the keys typed after it.
+    next key) and moves on if it was accepted; on a list of answers the arrows, Space and
+    Enter act on the list and a tick goes to the lab at once (``choose``, a plain call too);
+    Tab and Shift+Tab move between the rows and the step's other focusable widgets, and any
+    other key runs its binding here, after what was typed before it is stored and before
+    the keys typed after it. The rows' boxes and lists never take the focus.
 
-    ``current`` is the row typing goes into (None: the step itself, at its top; the arrows
-    scroll it). Keys a focused widget of the step (a list of answers, a plot) passes up, and
-    characters typed on the list of steps (:meth:`take`), go into the first empty entry."""
+    ``current`` is the row the keys go to (None: the step itself, at its top; the arrows
+    scroll it). Keys a focused widget of the step (a plot, a table) passes up, and
+    characters typed on the list of steps or on a list of answers (:meth:`take`), go into
+    the first empty entry."""
 
     BINDINGS = [
         Binding("up", "scroll_up", show=False),
@@ -524,16 +760,24 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         self,
         store: Store,
         restore: Callable[[FieldRow, Restoring], None],
+        choose: Callable[[FieldRow, tuple[int, ...]], None],
         readonly: bool = False,
         classes: str = "",
     ) -> None:
         super().__init__(classes=classes)
         self._store = store
         self._restore = restore
+        self._choose = choose
         self.readonly = readonly
         self._taking = False
         """Set by :meth:`take` until the form handles a key of its own: characters typed
         elsewhere are on their way into the current row."""
+
+    @property
+    def heading_rows(self) -> int:
+        """Rows a heading kept over the form's top covers (none here; the lab's step form
+        has one): a widget scrolled into view goes below them."""
+        return 0
 
     # -- rows ------------------------------------------------------------------------------
     def rows(self) -> list[FieldRow]:
@@ -548,11 +792,32 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             return None
         return row if self.screen.focused is self else None
 
+    @property
+    def answering(self) -> AnswerList | None:
+        """The list of answers of the current row if the form has the focus and it is a
+        choice row (None: the keys do not go to a list)."""
+        row = self.current
+        if row is None or not row.is_attached or not row.field.options:
+            return None
+        return row.answers if self.screen.focused is self else None
+
+    @property
+    def keys_box(self) -> EntryBox | AnswerList | None:
+        """The box or list of answers the keys go to (the current row's, while the form has
+        the focus; None: none)."""
+        row = self.current
+        if row is None or not row.is_attached or self.screen.focused is not self:
+            return None
+        return row.box
+
+    def chose(self, row: FieldRow, indices: tuple[int, ...]) -> None:
+        """``row``'s list was ticked: the lab stores it now (``choose``)."""
+        self._choose(row, indices)
+
     def watch_current(self, old: FieldRow | None, new: FieldRow | None) -> None:
         for row, shown in ((old, False), (new, self.screen.focused is self)):
-            if row is not None and row.is_attached and not row.field.options:
-                row.input.show_current(shown)
-                row.show_focus(shown)
+            if row is not None and row.is_attached:
+                row.show_current(shown)
 
     def on_focus(self) -> None:
         if self.current is not None and self.current.is_attached:
@@ -574,20 +839,16 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             self._store(row, text, False)
 
     def focus_row(self, row: FieldRow, landing: bool = False) -> None:
-        """Focus ``row``: typing goes into its box (what it holds selected, so typing
-        replaces it); its list of options has the focus itself. At once, not after the
-        messages already queued: keys of the same burst go here."""
-        if row.field.options:
+        """Focus ``row``: the keys go to it, into its box (what it holds selected, so typing
+        replaces it) or to its list of answers. At once, not after the messages already
+        queued: keys of the same burst go here."""
+        if row is not self.current:
             self.store_pending()
-            for w in row.query(".field-choice"):
-                self.screen.set_focus(w, scroll_visible=False)
-        else:
-            if row is not self.current:
-                self.store_pending()
-            self.current = row
-            if self.screen.focused is not self:
-                self.screen.set_focus(self, scroll_visible=False)
-            self.watch_current(None, row)
+        self.current = row
+        if self.screen.focused is not self:
+            self.screen.set_focus(self, scroll_visible=False)
+        self.watch_current(None, row)
+        if not row.field.options:
             row.input.select_all()
         row.call_after_refresh(row.bring_into_view, landing)
 
@@ -622,13 +883,9 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
 
     # -- focus moves ---------------------------------------------------------------------
     def _targets(self) -> list[Widget]:
-        """Where Tab goes in the step, in order: its focusable widgets and its text rows."""
+        """Where Tab goes in the step, in order: its focusable widgets and its rows."""
         chain = set(self.screen.focus_chain)
-        return [
-            w
-            for w in self.walk_children(Widget)
-            if (isinstance(w, FieldRow) and not w.field.options) or (w in chain)
-        ]
+        return [w for w in self.walk_children(Widget) if isinstance(w, FieldRow) or w in chain]
 
     def move_focus(self, delta: int, here: Widget | None = None) -> None:
         """Tab (``delta`` 1) or Shift+Tab (-1) from ``here`` (None: the current row, or the
@@ -687,6 +944,10 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             if await self._edit(row, event):
                 self._own(event)
             return
+        answers = self.answering
+        if answers is not None and answers.press(key):
+            self._own(event)
+            return
         if event.is_printable and event.character and self.typing_row() is not None:
             self._own(event)
             self.take(event.character)
@@ -712,7 +973,7 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             return True
         if box.disabled:
             return False
-        if await box.edit(key):
+        if box.edit(key):
             return True
         if event.is_printable and event.character:
             box.type_text(event.character)
@@ -753,8 +1014,8 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
 
     def _passed_on(self, event: events.Key, focused: Widget | None) -> None:
         """A key the form did not get as the focused widget: passed up by a widget of the
-        step that has the focus (Tab moves on from it; a character goes into the first empty
-        entry, Space only mid-word: it ticks an answer), or handed to the form before a key
+        step that has the focus (a plot, a table: Tab moves on from it; a character goes
+        into the first empty entry, Space only mid-word), or handed to the form before a key
         ahead of it moved the focus away (it goes where the focus is now)."""
         inside = focused is not None and self in focused.ancestors
         key = event.key
@@ -800,20 +1061,16 @@ async def after_typed_keys(app: App[None], work: Callable[[], object]) -> None:
     step form focused (which runs its keys' bindings on the app's queue and waits for them),
     ``work`` joins the form's queue behind those keys (:meth:`FieldForm.in_turn`); with any
     other widget focused (the list of steps, which hands the characters typed on it to the
-    form), the app waits until that widget has handled what it was handed, then runs
-    ``work``. The keys typed after it wait for ``work`` either way. A list of answers acts on its keys as it reads them
-    (:class:`Answers`, :class:`Ticks`: Textual would run their bindings on the app's queue
-    once the key has bubbled up, after ``work``) and hands a tick to the screen's queue, so
-    the app also waits until the screen has handled what it was handed meanwhile."""
+    form by a plain call), the app waits until that widget has handled what it was handed,
+    then runs ``work``. The keys typed after it wait for ``work`` either way."""
     focused = app.focused
     if isinstance(focused, FieldForm):
         focused.in_turn(work)
         return
     if focused is not None:
-        for node in (focused, focused.screen):
-            handled = asyncio.Event()
-            if node.call_later(handled.set):  # False: it is being removed, its keys with it
-                await handled.wait()
+        handled = asyncio.Event()
+        if focused.call_later(handled.set):  # False: it is being removed, its keys with it
+            await handled.wait()
     await _done(work())
 
 
