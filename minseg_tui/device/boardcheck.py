@@ -155,7 +155,7 @@ def drive(
     seconds: float = CHECK_S,
 ) -> Drive:
     """Drive ``u`` V for ``seconds`` of board time, then stop; the count's change over the
-    drive, the encoder edges per connector (DIAG after minus before), the current drawn
+    first ``seconds`` of the drive (the stop comes a batch of samples later), the encoder edges per connector (DIAG after minus before), the current drawn
     halfway (virtual board only)."""
     take = samples or board.samples
     board.stop()
@@ -177,6 +177,10 @@ def drive(
         board.stop()
     on = np.flatnonzero(np.abs(batch.u_req - applied) < 1e-6)
     first = int(on[0])
+    # the samples arrive in batches and the stop follows the one that completes the span, so
+    # the motor runs on past ``seconds`` (by a batch, or more on a busy host or a virtual
+    # clock): the count is taken over the first ``seconds`` of the drive, as said
+    on = on[batch.t[on] <= batch.t[first] + seconds + 1e-9]
     start = int(batch.count[first - 1]) if first > 0 else int(batch.count[first])
     counts = int(batch.count[on[-1]]) - start
     driven = float(batch.t[on[-1]] - batch.t[first])

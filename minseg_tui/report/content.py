@@ -131,8 +131,8 @@ def _answers(session: Session, part: str) -> Section:
                     if e and e.ok and isinstance(e.value, tuple)
                     else (e.text if e else "")
                 )
-            else:
-                shown = e.text if e else ""
+            else:  # a number as the tables give it: the digits typed, "3,79" as "3.79"
+                shown = (session.reading(fld.key) or e.text) if e else ""
             fb = verdicts.get(fld.key)
             verdict = (
                 "not checked"

@@ -65,6 +65,7 @@ from minseg_tui.ui.messages import (
     Task10Moved,
     VoltageRequested,
 )
+from minseg_tui.ui.panels.report import written_in
 from minseg_tui.ui.screens.boardcheck import (
     BoardCheckScreen,
     RevolutionScreen,
@@ -994,10 +995,12 @@ class LabApp(App[None]):
 
     def _exported(self, paths: tuple[str, ...]) -> None:
         self.exported = paths
+        folder, names = written_in(paths, Path(self.config.sessions))
         self.notify(
             "written: "
-            + ", ".join(paths[:2])
-            + (f" and {len(paths) - 2} run CSV" if len(paths) > 2 else ""),
+            + ", ".join(names[:2])
+            + (f" and {len(names) - 2} run CSV" if len(names) > 2 else "")
+            + (f", in the session folder {folder}" if folder else ""),
             title="report",
             timeout=NOTICE_S,
         )

@@ -16,6 +16,8 @@ import pytest
 import minseg_tui.device  # noqa: F401  (registers minseg://)
 from minseg_tui.cli import main
 from minseg_tui.device.boardcheck import (
+    CHECK_S,
+    CHECK_U,
     BoardCheckResult,
     NoCountWatch,
     check_board,
@@ -25,6 +27,7 @@ from minseg_tui.device.boardcheck import (
 from minseg_tui.device.factory import open_device
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.virtual import forget_board
+from minseg_tui.lab.content.steps import step
 from tests.device.doubles import RealBoardView
 
 _names = itertools.count()
@@ -52,6 +55,16 @@ def test_a_good_board_counts_up(board):
     assert r.ok and r.direction == "forward" and r.counts > 50
     assert r.connector == "M1" and not r.fixed and r.wheel_turned
     assert "the count follows" in r.text
+
+
+def test_the_check_counts_over_the_half_second_task_1_speaks_of(board):
+    """Walk 6, defect 7: Task 1 says the check turns the wheel for half a second while the
+    result read "over 0.6 s" (on the virtual clock "over 2.2 s"): the stop follows the batch
+    of samples that completes the drive. The count is taken over the drive's first 0.5 s."""
+    r = check_board(board())
+    assert f"for {CHECK_U:g} V over 0.5 s" in r.text, r.text
+    assert "turns the wheel for half a second" in " ".join(step("task1").todo.split())
+    assert CHECK_S == 0.5
 
 
 def test_a_reversed_encoder_is_fixed_and_the_fix_is_kept(board):

@@ -16,7 +16,7 @@ from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.model.plant import PlantParams, record
-from minseg_tui.quantities import example, format_diff, format_number
+from minseg_tui.quantities import example, format_diff, format_number, format_reading
 
 
 def _lab(root: Path) -> Session:
@@ -55,7 +55,7 @@ def _compare(s: Session, step_id: str) -> dict[str, tuple[str, str]]:
 def test_differences_under_half_a_percent_keep_a_digit():
     assert format_diff(0.39) == "+39 %" and format_diff(-0.021) == "-2 %"
     assert format_diff(0.003) == "+0.3 %" and format_diff(-0.0049) == "-0.5 %"
-    assert format_diff(0.0001) == "< 0.05 %" and format_diff(0.0) == "< 0.05 %"
+    assert format_diff(0.0001) == "< 0.05 %" and format_diff(0.0) == "0 %"
 
 
 def test_the_computed_values_wait_for_the_groups_own(tmp_path):
@@ -202,9 +202,9 @@ def test_the_groups_values_are_quoted_with_the_digits_they_typed(tmp_path):
         by = {c.key: c for c in s.comparisons()}
         assert "from your T = 57 ms" in by["own.J"].how, by["own.J"].how
         assert "your omega_ss / u_ss = 7.8 rad/s ÷ " in by["own.K"].how, by["own.K"].how
-        assert f"{format_number(st.u_ss)} V" in by["own.K"].how  # computed: its digits
+        assert f"÷ {format_reading(st.u_ss, 'V')}" in by["own.K"].how  # the row's: as typed
         assert "5 V × your K = 1.93 rad/s/V" in by["own.omega_5"].how
-        assert by["own.model"].verdict == "right: T = 0.057 s and K = 1.93 rad/s/V"
+        assert by["own.model"].verdict == "right: T = 57 ms and K = 1.93 rad/s/V"
         screen = "\n".join(own + " " + comp for own, comp in _compare(s, "task13").values())
         assert "from your T = 57 ms" in screen and "57.00" not in screen, screen
         rows = {r.key: r.cells for r in own_first.step_rows(s)}
@@ -215,7 +215,7 @@ def test_the_groups_values_are_quoted_with_the_digits_they_typed(tmp_path):
         assert "1.930" not in " ".join(rows["own.omega_5"]) + " ".join(rows["own.model"])
         s.enter("own.T", "0,057")
         (c,) = s.comparisons("task13")
-        assert "from your T = 0.057 s" in c.how, c.how
+        assert "from your T = 57 ms" in c.how, c.how  # T in ms, as everywhere (walk 6)
 
 
 def test_the_two_T_are_explained_in_one_sentence_on_every_screen(tmp_path):

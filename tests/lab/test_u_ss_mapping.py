@@ -75,7 +75,7 @@ def test_a_row_with_u_ss_but_no_i_ss_is_the_one_every_place_uses(tmp_path):
         text = _task11(s)
         assert "3.8" in text and "extrapolated" not in text
         md = write_report(s).markdown.read_text(encoding="utf-8")
-        assert "u_ss = 3.800 V, the table's row" in _report_row(md, "K (Task 11)")
+        assert "u_ss = 3.8 V, the table's row" in _report_row(md, "K (Task 11)")
         assert "extrapolated" not in md and "No table row has" not in md
         # a new u_ss in that incomplete row: the run's u column and K follow at once
         s.enter("u_ss@4.5", "3.9 V")

@@ -14,7 +14,7 @@ import pytest
 
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
-from minseg_tui.quantities import format_number
+from minseg_tui.quantities import format_constant, format_number
 from minseg_tui.report.write import write_report
 from tests.report.test_report import _session
 from tests.seeded import record_square_wave
@@ -78,13 +78,17 @@ def test_every_value_leads_with_the_groups_own(tmp_path: Path) -> None:
     assert K["the group's value"] == "2.2 rad/s/V"
     assert K["the program's value (least squares)"].startswith(format_number(st.step.K))
     T = _row(table, "T (Task 12)")
-    assert T["the group's value"] == "0.09 s"
-    assert T["computed or read the group's way"].startswith(format_number(st.step.T_63 or 0.0))
+    assert T["the group's value"] == "90 ms"  # typed '0.09 s': T in ms, as everywhere (walk 6)
+    assert T["computed or read the group's way"].startswith(
+        format_constant(st.step.T_63 or 0.0, "s")
+    )
     assert "the program's reading by the group's method" in T["computed or read the group's way"]
-    assert T["the program's value (least squares)"].startswith(format_number(st.step.T))
+    assert T["the program's value (least squares)"].startswith(format_constant(st.step.T, "s"))
     J = _row(table, "J (Task 13)")
     assert J["the group's value"] == "not answered"
-    assert "from the group's T = 0.09 s" in J["computed or read the group's way"]  # as typed
+    assert (
+        "from the group's T = 90 ms" in J["computed or read the group's way"]
+    )  # its digits, in ms
     assert J["the program's value (least squares)"].startswith(format_number(st.step.J))
     model = _row(table, "the model (Task 14)")
     assert model["computed or read the group's way"].endswith("(with the group's T and K)")

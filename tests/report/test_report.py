@@ -14,7 +14,7 @@ import numpy as np
 from minseg_tui.cli import main
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
-from minseg_tui.quantities import format_interval, format_number, format_value
+from minseg_tui.quantities import format_constant, format_interval, format_number, format_value
 from minseg_tui.report import content, markdown, svg
 from minseg_tui.report.write import write_report
 from tests.seeded import Clock, record_square_wave
@@ -95,7 +95,7 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             "steps-1",
             "runs/steps-1.csv",
             "the program's value (least squares)",
-            "0.09 s",
+            "90 ms",
             "omega at u_A = 5 V",
             "Most likely cause: ",
             "First-order model fitted to steps-1",
@@ -110,7 +110,7 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             assert text in doc, text
         assert "Tasks 11-12 give" not in doc
     ident = s.results().identification
-    assert format_value(ident.step.K, "rad/s/V") in md and format_value(
+    assert format_value(ident.step.K, "rad/s/V") in md and format_constant(
         ident.step.T, "s"
     ) in unescape(html).replace("\u00a0", " ")
     # identify's findings land in the warnings, in words (not by their code, T_short)

@@ -28,7 +28,7 @@ async def test_task11_shows_K_only_once_the_group_has_typed_its_own(quiet):
         await type_in(pilot, "own.K", "1.9")
         lines = _text(app, "#results-lines")
         assert f"K = {K:.4g}" in lines and "T (63 %)" not in lines  # T waits for Task 12
-        assert "your K: yours 1.9 · computed" in _text(app, "#compare")
+        assert "your K: yours 1.9 rad/s/V · computed" in _text(app, "#compare")
 
 
 async def test_ctrl_r_reveals_the_step_and_the_session_keeps_it(quiet):

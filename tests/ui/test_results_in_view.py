@@ -22,8 +22,8 @@ def _visible(pane: StepPane, widget) -> bool:
     ("step_id", "key", "typed", "said"),
     [
         ("task12", "own.T", "57 ms", "your T: yours 57 ms"),
-        ("task11", "own.omega_step", "7,8", "your omega_ss in the steps: yours 7,8"),
-        ("task13", "own.J", "0,0013", "your J: yours 0,0013"),
+        ("task11", "own.omega_step", "7,8", "your omega_ss in the steps: yours 7.8 rad/s"),
+        ("task13", "own.J", "0,0013", "your J: yours 0.0013 kg m^2"),
     ],
 )
 async def test_an_answer_brings_its_comparison_into_view(quiet, step_id, key, typed, said):

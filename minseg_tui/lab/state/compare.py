@@ -21,15 +21,19 @@ from pathlib import Path
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.steps import Field
+from minseg_tui.lab.saving.kept import ResponseFigures
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.model.identify import U_TASK15, ResponseResult
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.quantities import (
+    format_constant,
     format_diff,
     format_number,
     format_percent,
+    format_quantity,
     format_reading,
     format_typed,
+    shown_unit,
 )
 
 POLICY_FILE = "lab.toml"
@@ -91,7 +95,16 @@ def concealed(policy: Policy, answered: Collection[str], revealed: Collection[st
 
 
 def _ms(T: float) -> str:
-    return f"{format_number(T * 1e3)} ms"
+    return format_constant(T, "s")
+
+
+def format_u_ss(st: ResponseResult | ResponseFigures) -> str:
+    """The u_ss a step's K divides by: the table's row as typed there ("4,05" is "4.05 V",
+    never "4.050 V"), or, interpolated between rows, a computed number with its digits (the
+    numbers a session file keeps do not say which: as a reading)."""
+    if not isinstance(st, ResponseResult) or st.u_ss_how == "row":
+        return format_reading(st.u_ss, "V")
+    return format_quantity(st.u_ss, "V")
 
 
 def _model(T: str, K: str) -> str:
@@ -195,7 +208,7 @@ def compare_fields(
                     computed = own_w / st.u_ss
                     how = (
                         f"{whose} omega_ss / u_ss = {typed('own.omega_step', own_w, 'rad/s')} ÷ "
-                        f"{format_number(st.u_ss)} V"
+                        f"{format_u_ss(st)}"
                     )
                     why = (
                         "The least-squares K is the median over every rise of the fitted "
@@ -338,7 +351,7 @@ def judge_model(text: str, T: float, K: float) -> tuple[bool, str]:
     """Task 14: whether the model in ``text`` is T omega' = -omega + K u_A with the ``T`` (s)
     and ``K`` (rad/s/V) computed the group's way (each within :data:`MODEL_TOLERANCE`), and
     one line saying so (what is wrong, when it is); the group's T and K with the digits
-    they typed ("0,057" is "0.057 s", never "0.05700 s")."""
+    they typed, T in ms as everywhere it is shown ("0,057" is "57 ms", never "0.05700 s")."""
     try:
         got = read_model(text)
     except InputError as exc:
@@ -347,13 +360,14 @@ def judge_model(text: str, T: float, K: float) -> tuple[bool, str]:
     for name, mine, want, unit in (("T", got.T, T, "s"), ("K", got.K, K, "rad/s/V")):
         if want and abs(mine / want - 1.0) > MODEL_TOLERANCE:
             wrong.append(
-                f"{name} = {format_reading(mine, unit)} where {format_number(want)} {unit} "
+                f"{name} = {format_reading(mine, shown_unit(unit))} where "
+                f"{format_constant(want, unit)} "
                 f"was expected ({format_diff(mine / want - 1.0)})"
             )
     if wrong:
         return False, "wrong: " + "; ".join(wrong)
     return True, (
-        f"right: T = {format_reading(got.T, 's')} and K = {format_reading(got.K, 'rad/s/V')}"
+        f"right: T = {format_reading(got.T, 'ms')} and K = {format_reading(got.K, 'rad/s/V')}"
     )
 
 
@@ -374,6 +388,7 @@ __all__ = [
     "concealed",
     "two_T",
     "two_T_of",
+    "format_u_ss",
     "judge_model",
     "read_policy",
     "reveal_keys",

@@ -52,7 +52,16 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content import answers
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.expr import Formula
-from minseg_tui.lab.content.steps import FIELDS, LEVELS, STEP_INDEX, STEPS, Feedback, RunPlan, Step
+from minseg_tui.lab.content.steps import (
+    FIELDS,
+    LEVELS,
+    STEP_INDEX,
+    STEPS,
+    Feedback,
+    Field,
+    RunPlan,
+    Step,
+)
 from minseg_tui.lab.saving import kept as kept_results
 from minseg_tui.lab.saving.kept import Kept, ResponseFigures
 from minseg_tui.lab.saving.runs import (
@@ -112,7 +121,7 @@ from minseg_tui.lab.state.shown import PolicyRecord, Shown
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import RunLog
-from minseg_tui.quantities import UNITS, format_reading, format_typed
+from minseg_tui.quantities import UNITS, format_reading, format_typed, shown_unit
 
 Clock = Callable[[], datetime]
 
@@ -566,14 +575,16 @@ class Session:
     def reading(self, key: str) -> str | None:
         """The group's accepted value of quantity field ``key`` as they typed it, wherever it
         is quoted back to them: the digits they gave, in the unit they typed it in when that
-        measures what the field's unit does ("57ms" is "57 ms", "0,057" is "0.057 s", never
-        "57.00 ms"; :func:`~minseg_tui.quantities.format_reading`); None when there is none."""
+        measures what the field's unit does, T and f in the one unit they are shown in
+        (:func:`~minseg_tui.quantities.shown_unit`: "57ms" is "57 ms", "0,057" is "57 ms",
+        never "57.00 ms" or "0.057 s"; :func:`~minseg_tui.quantities.format_reading`); None
+        when there is none."""
         e = self._entries.get(key)
         if e is None or not e.ok or not isinstance(e.value, float) or key not in FIELDS:
             return None
         form = FIELDS[key].unit
         same = e.unit in UNITS and UNITS[e.unit].quantity == UNITS[form].quantity
-        return format_reading(e.value, e.unit if same else form)
+        return format_reading(e.value, shown_unit(e.unit if same else form))
 
     def enter(self, key: str, text: str, source: str = "typed") -> Entry:
         """Store ``text`` typed in field ``key`` (KeyError for an unknown key) and return the
@@ -651,7 +662,10 @@ class Session:
         """``done`` (every required field accepted; for Task 10 a run recorded; for a step
         done by board checks, its ``done_when`` checks passed), ``wrong``
         (answered, but a checked answer is wrong), ``refused`` (a field shows a text that was
-        refused, even over an accepted answer still in effect), ``unjudged`` (a step of the
+        refused, even over an accepted answer still in effect), ``warned`` (answered, but an
+        entry stored with a warning the program itself gives, e.g. a u_ss above the requested
+        voltage, which the driver cannot give: not done until the group looks again; a wrong
+        answer stays ``wrong``), ``unjudged`` (a step of the
         group's own values, Tasks 6-9 and 11-15, answered, one of them stored but not judged
         yet: nothing computed to compare it with), ``started`` (something entered), ``todo``,
         or ``info`` (nothing to enter)."""
@@ -679,12 +693,25 @@ class Session:
         if not answered:
             return "todo"
         wrong = any(fb.status == "wrong" for fb in self.feedback(step_id))
-        if wrong or not any(f.compare for f in st.fields):
-            return "wrong" if wrong else "done"
-        judged = [c.right for c in self.comparisons(step_id) if c.key in self.answered()]
-        if any(r is False for r in judged):
+        judged = (
+            [c.right for c in self.comparisons(step_id) if c.key in self.answered()]
+            if any(f.compare for f in st.fields)
+            else []
+        )
+        if wrong or any(r is False for r in judged):
             return "wrong"
+        if self._warned(st.fields):
+            return "warned"
         return "unjudged" if any(r is None for r in judged) else "done"
+
+    def _warned(self, fields: Sequence[Field]) -> bool:
+        """Whether one of ``fields`` stands with a warning of its own (stored, but outside
+        what the program calls possible or likely) or a Task 5 current falling as the voltage
+        rises (:meth:`falling_currents`)."""
+        keys = {f.key for f in fields}
+        if any(self._entries[k].warnings for k in keys if k in self._entries):
+            return True
+        return any(n.source in keys for n in self.falling_currents())
 
     # -- the board checks ----------------------------------------------------------------------
 

@@ -32,6 +32,7 @@ from minseg_tui.quantities import (
     format_number,
     format_quantity,
     format_reading,
+    shown_unit,
 )
 
 GROUPS = "the group's"
@@ -249,12 +250,13 @@ def _value(v: float | str | None, unit: str) -> str | None:
 
 def _unit(session: Session, c: Comparison) -> str:
     """The unit the group typed their value in when it measures what ``c.unit`` does (T
-    typed in ms is compared in ms), else the field's form unit."""
+    typed in ms is compared in ms), else the field's form unit; T and f in the one unit each
+    is shown in (:func:`~minseg_tui.quantities.shown_unit`)."""
     e = session.entry(c.key)
     typed = e.unit if e is not None and e.ok else ""
     if typed in UNITS and c.unit in UNITS and UNITS[typed].quantity == UNITS[c.unit].quantity:
-        return typed
-    return c.unit
+        return shown_unit(typed)
+    return shown_unit(c.unit)
 
 
 def _own(session: Session, c: Comparison, unit: str) -> str:
@@ -342,7 +344,7 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
         if key == "own.K":
             return (
                 f"{q(st.K, unit)} ({_interval(st.K_ci, st.K_determined, unit)}; "
-                f"u_ss = {q(st.u_ss, 'V')}, {u_ss_words(st.u_ss_how)})"
+                f"u_ss = {lab_compare.format_u_ss(st)}, {u_ss_words(st.u_ss_how)})"
             )
         if key == "own.T":
             return f"{q(st.T, unit)} ({_interval(st.T_ci, st.T_determined, unit)})"

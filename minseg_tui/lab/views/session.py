@@ -43,13 +43,14 @@ from minseg_tui.quantities import (
     DIGITS,
     NOT_DETERMINED,
     UNITS,
+    format_constant_interval,
     format_diff,
-    format_interval,
     format_number,
     format_quantity,
     format_spread,
     format_typed,
     format_value,
+    shown_unit,
 )
 
 FloatArray = NDArray[np.float64]
@@ -95,11 +96,12 @@ def _num(v: float | None, digits: int = DIGITS) -> str:
 
 
 def _ci(ci: tuple[float, float], unit: str) -> str:
-    """ ", 95 % interval lo – hi unit" for a finite interval; '' when it is not known."""
+    """ ", 95 % interval lo – hi unit" for a finite interval (SI ``unit``, shown in the unit
+    people read it in: T in ms); '' when it is not known."""
     lo, hi = ci
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return ""
-    return f", 95 % interval {format_interval(lo, hi, unit)}"
+    return f", 95 % interval {format_constant_interval(lo, hi, unit)}"
 
 
 # -- Task 4: the live stream ------------------------------------------------------------------
@@ -167,6 +169,7 @@ STATUS_MARKS: tuple[tuple[str, str, str], ...] = (
     ("done", "✓", "done"),
     ("wrong", "✗", "answered but wrong"),
     ("refused", "?", "an entry refused"),
+    ("warned", "!", "stored with a warning: look again"),
     ("unjudged", "○", "stored, not judged yet"),
     ("started", "…", "started"),
 )
@@ -203,12 +206,13 @@ def _feedback(session: Session, key: str) -> str:
 
 def _shown_unit(session: Session, c: Comparison) -> str:
     """The unit a comparison shows ``c``'s values in: the one the group typed theirs in, when
-    it measures the same quantity ("57 ms" beside "56.91 ms"), else the field's form unit."""
+    it measures the same quantity ("57 ms" beside "56.91 ms"), else the field's form unit; T
+    and f in the one unit each is shown in (:func:`~minseg_tui.quantities.shown_unit`)."""
     typed_ = session.entry(c.key)
     if typed_ is not None and typed_.ok and typed_.unit and typed_.unit in UNITS:
         if c.unit in UNITS and UNITS[typed_.unit].quantity == UNITS[c.unit].quantity:
-            return typed_.unit
-    return c.unit
+            return shown_unit(typed_.unit)
+    return shown_unit(c.unit)
 
 
 _AGAINST: dict[str, str] = {
@@ -360,7 +364,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             if c.own is None
             else c.own
             if isinstance(c.own, str)
-            else typed_.text.strip()
+            else session.reading(c.key) or typed_.text.strip()
             if typed_ is not None and typed_.ok
             else _fmt(c.own, c.unit)
         )
@@ -874,7 +878,7 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "omega_ss in the steps",
                 "Task 11",
             )
-            + f"   u_ss = {_fmt(st.u_ss, 'V', 3)} ({model_identify.u_ss_words(st.u_ss_how)})",
+            + f"   u_ss = {lab_compare.format_u_ss(st)} ({model_identify.u_ss_words(st.u_ss_how)})",
             shown(
                 "own.K",
                 f"K = {_fmt(st.K, 'rad/s/V')}"
@@ -884,7 +888,8 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
             shown(
                 "own.T",
-                f"T (63 %) = {_fmt(st.T_63, 's')}   T (least squares) = {_fmt(st.T, 's')}"
+                f"T (63 %) = {_fmt(st.T_63, shown_unit('s'))}   "
+                f"T (least squares) = {_fmt(st.T, shown_unit('s'))}"
                 f"{_ci(st.T_ci, 's') if st.T_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "T",
                 "Task 12",

@@ -14,6 +14,7 @@ from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     F_UNIT,
     RPM,
+    format_constant,
     format_fixed,
     format_number,
     format_percent,
@@ -245,7 +246,7 @@ def response_observations(
             Observation(
                 "T_short",
                 (
-                    f"T = {format_number(T * 1e3, 3)} ms is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {format_reading(ts, 'ms', 3)}): "
+                    f"T = {format_constant(T, 's')} is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {format_reading(ts, 'ms', 3)}): "
                     "the speed rises within a few samples. The 63 % reading, the manual's way, reads T off those samples, "
                     "so the sampling and the velocity computation move it as much as the motor does; the least-squares T "
                     "fits whole stretches of the run with the sampling modelled, so the two differ. Both are fair "
@@ -258,11 +259,11 @@ def response_observations(
             Observation(
                 "T_63_differs",
                 (
-                    f"The 63 % reading ({format_number(T_63 * 1e3, 3)} ms) and the least-squares T ({format_number(T * 1e3, 3)} ms) differ by "
+                    f"The 63 % reading ({format_constant(T_63, 's')}) and the least-squares T ({format_constant(T, 's')}) differ by "
                     f"{format_percent(abs(T_63 / T - 1))}. "
                     + (
                         f"The reading counts from the logged step, so it holds the dead time of "
-                        f"{format_number(dead_time * 1e3, 3)} ms that T does not; besides, the measured speed is the "
+                        f"{format_constant(dead_time, 's')} that T does not; besides, the measured speed is the "
                         "mean over each sample interval and lags the true speed by half a sample."
                         if dead_time > 0
                         else f"Most of it ({format_signed(shape * 1e3, 3)} ms) is the shape of the rise, which one "
@@ -281,7 +282,7 @@ def response_observations(
             Observation(
                 "not_settled",
                 (
-                    f"{len(short)} step(s) last less than 5 T ({format_number(5 * T, 3)} s): the speed has not quite settled "
+                    f"{len(short)} step(s) last less than 5 T ({format_constant(5 * T, 's')}): the speed has not quite settled "
                     "by their end, so omega_ss is the final speed of the fitted response rather than a reading "
                     "of it (a mean over the end of a step would come out low); longer steps would check it."
                 ),
@@ -376,7 +377,7 @@ def fit_observations(
                 if fit.dead_time_sought
                 else (
                     "The wheel first moves "
-                    + (f"{format_number(fit.onset * 1e3, 3)} ms " if fit.onset is not None else "")
+                    + (f"{format_constant(fit.onset, 's')} " if fit.onset is not None else "")
                     + "after the steps, no later than the rise itself and the sampling explain, "
                     "so there is no dead time to fit: the rise starts more slowly than one time "
                     "constant gives (an S-shaped start: a second pole or a filtered speed), a shape "
@@ -415,7 +416,7 @@ def fit_observations(
                     f"period ({format_signed(fit.shift * 1e3, 3)} ms), earlier than the steps, although the wheel "
                     "does not move before them"
                     + (
-                        f" (it first moves {format_number(fit.onset * 1e3, 3)} ms after them)"
+                        f" (it first moves {format_constant(fit.onset, 's')} after them)"
                         if fit.onset is not None and fit.onset > 1.5 * bound
                         else ""
                     )
@@ -431,7 +432,7 @@ def fit_observations(
             Observation(
                 "T_on_bound",
                 (
-                    f"T = {format_number(fit.T * 1e3, 3)} ms ended on the bound of the range the fit tries "
+                    f"T = {format_constant(fit.T, 's')} ended on the bound of the range the fit tries "
                     f"({format_reading(lo, 'ms', 3)} to {format_reading(hi, 's', 3)}): this log cannot tell T beyond it, and the "
                     "first-order model does not describe it well."
                 ),
@@ -443,7 +444,7 @@ def fit_observations(
                 "T_not_determined",
                 (
                     f"T's 95 % interval spans more than a factor of ten: T is not determined by this "
-                    f"log; {format_number(fit.T * 1e3, 3)} ms is only the best fit. Longer steps, more of them, or a "
+                    f"log; {format_constant(fit.T, 's')} is only the best fit. Longer steps, more of them, or a "
                     "faster sampling would tell it."
                 ),
             )

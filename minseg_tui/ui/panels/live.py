@@ -17,6 +17,7 @@ from minseg_tui.ui.device import DeviceInfo
 from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
+from minseg_tui.ui.panels.meter import MODES as METER_MODES
 from minseg_tui.ui.panels.meter import MeterPanel
 from minseg_tui.ui.widgets.fields import FieldForm
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -46,7 +47,8 @@ class LivePanel(Vertical, PanelKeys):
             self.levels = LEVELS  # Task 3 says "set a voltage": F3 steps through the lab's
         self.plots = bool({"live_velocity", "capture_omega"} & acts)
         self._steady = Prose("", id="steady") if self.levels or "capture_omega" in acts else None
-        self._meter = MeterPanel() if "meter" in acts else None
+        read = {f.unit for f in step.fields if f.unit in METER_MODES}  # what the meter is set to
+        self._meter = MeterPanel(read.pop() if len(read) == 1 else "") if "meter" in acts else None
 
     def compose(self) -> ComposeResult:
         if self.plots:

@@ -2,11 +2,29 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
 from minseg_tui.ui.panels.view_panel import ViewPanel
+
+
+def written_in(paths: tuple[str, ...], root: Path | None) -> tuple[str, tuple[str, ...]]:
+    """The files a report was written to, said so that no name breaks at 80x24: the session's
+    folder relative to the sessions folder ``root`` (its name, '2026-11-27-ada-bo'), and the
+    files relative to it ('report.md', 'runs/steps-1.csv'); ('', the paths as they are) when
+    the files are not all in one session folder under ``root``."""
+    if not paths or root is None:
+        return "", paths
+    folder = Path(paths[0]).parent
+    try:
+        where = folder.resolve().relative_to(Path(root).resolve())
+        names = tuple(Path(p).resolve().relative_to(folder.resolve()).as_posix() for p in paths)
+    except ValueError:
+        return "", paths
+    return where.as_posix(), names
 
 
 class ReportPanel(Static):
@@ -27,7 +45,10 @@ class ReportPanel(Static):
         return Content(self._text())
 
     def _text(self) -> str:
-        paths = self.exported
+        config = getattr(self.app, "config", None)  # the lab app's (the sessions folder)
+        sessions = getattr(config, "sessions", None)
+        folder, names = written_in(self.exported, Path(sessions) if sessions else None)
+        where = f" in the session folder {folder} (under the sessions folder)" if folder else ""
         return "F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV." + (
-            "\nwritten:\n" + "\n".join(f"  {p}" for p in paths) if paths else ""
+            f"\nwritten{where}:\n" + "\n".join(f"  {p}" for p in names) if names else ""
         )
