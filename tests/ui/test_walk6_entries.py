@@ -21,6 +21,7 @@ from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
     TABLE,
+    Heard,
     enter_all,
     goto,
     record_response_run,
@@ -113,12 +114,18 @@ async def test_the_virtual_meter_shows_what_each_step_measures(quiet):
     mA'), before Task 5 pulls the jumper to measure the current. A meter shows what it is
     set to: Ω on Task 2, V= on Task 4, mA (jumper out) on Task 5."""
     app = quiet()
-    async with app.run_test(size=(80, 24)) as pilot:
+    heard = Heard()  # the readings come with the device stream, at its pace
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
         await start(pilot)
         said = {}
-        for step_id in ("task2", "task4", "task5"):
+        for step_id, mode in (("task2", "on Ω"), ("task4", "on V="), ("task5", "on mA")):
             await goto(pilot, step_id, focus=None)
-            await settle(pilot, lambda: bool(app.screen.query(MeterPanel)))
+
+            def read(mode: str = mode) -> bool:  # the step's meter, past its 'reading…'
+                shown = [str(m.render()) for m in app.screen.query(MeterPanel)]
+                return any(mode in t and not t.endswith("reading…") for t in shown)
+
+            await heard.until(pilot, read)
             said[step_id] = str(app.screen.query_one(MeterPanel).render())
         assert re.search(r"on Ω\) · [\d.]+ Ω$", said["task2"]) and "mA" not in said["task2"], said
         assert re.search(r"on V=\) · [\d.]+ V$", said["task4"]) and "mA" not in said["task4"], said
