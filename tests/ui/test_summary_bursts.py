@@ -102,18 +102,24 @@ async def test_the_walks_bursts_on_the_summary_answer_every_question(quiet):
         assert shown(app, "summary")
 
 
+async def _enter_tab_down_enter_then_q1_again(pilot, app) -> None:
+    """'Enter Tab Down Enter' in one burst from Q1 (cursor on 'a model'): Q1 'a model', Q2
+    'a system'; then back on Q1 a slow Down and Enter moves its one dot to 'a system'."""
+    await burst(pilot, "enter", "tab", "down", "enter")
+    _check(app, {"summary.1": (0,), "summary.2": (1,), "summary.3": ()})
+    await burst(pilot, "shift+tab")
+    await burst(pilot, "down")
+    await burst(pilot, "enter")
+    _check(app, {"summary.1": (1,), "summary.2": (1,)})
+
+
 async def test_enter_tab_down_enter_answers_two_questions_with_one_dot_each(quiet):
     """'Enter Tab Down Enter' on Q1: Q1 'a model', Q2 'a system'. Then Q1 is not stuck: a
     slow Down and Enter (Shift+Tab back to it) picks 'a system' there, one dot."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await _on_summary(pilot)
-        await burst(pilot, "enter", "tab", "down", "enter")
-        _check(app, {"summary.1": (0,), "summary.2": (1,), "summary.3": ()})
-        await burst(pilot, "shift+tab")
-        await burst(pilot, "down")
-        await burst(pilot, "enter")
-        _check(app, {"summary.1": (1,), "summary.2": (1,)})
+        await _enter_tab_down_enter_then_q1_again(pilot, app)
 
 
 async def test_a_burst_on_a_question_already_answered_moves_its_one_dot(quiet):
@@ -133,12 +139,7 @@ async def test_a_burst_on_a_question_already_answered_moves_its_one_dot(quiet):
         await settle(pilot, lambda: answering(app) is _row(app, "summary.2").answers)
         await burst(pilot, "shift+tab")  # back on Q1, its cursor on 'a model'
         await settle(pilot, lambda: answering(app) is _row(app, "summary.1").answers)
-        await burst(pilot, "enter", "tab", "down", "enter")
-        _check(app, {"summary.1": (0,), "summary.2": (1,), "summary.3": ()})
-        await burst(pilot, "shift+tab")
-        await burst(pilot, "down")
-        await burst(pilot, "enter")
-        _check(app, {"summary.1": (1,), "summary.2": (1,)})
+        await _enter_tab_down_enter_then_q1_again(pilot, app)
 
 
 async def test_unticking_every_box_shows_what_is_stored_in_the_answers_words(quiet):

@@ -8,7 +8,6 @@ import re
 from pathlib import Path
 
 from textual.content import Content
-from textual.widgets import OptionList
 from textual.widgets._toast import Toast
 
 from minseg_tui.quantities import format_constant
@@ -24,17 +23,13 @@ from tests.ui.helpers import (
     Heard,
     enter_all,
     goto,
+    nav_mark,
     record_response_run,
     settle,
     start,
     start_with_a_run,
     type_in,
 )
-
-
-def _mark(app, step_id: str) -> str:
-    nav = app.screen.query_one("#nav", OptionList)
-    return str(nav.get_option(step_id).prompt)[0]
 
 
 async def test_an_impossible_u_ss_is_not_ticked(quiet):
@@ -48,10 +43,10 @@ async def test_an_impossible_u_ss_is_not_ticked(quiet):
         row = await type_in(pilot, "u_ss@4.5", "40.5")
         await settle(pilot)
         assert "above the requested 4.5 V" in " ".join(row.message.split())
-        assert _mark(app, "task4") == "!"
+        assert nav_mark(app, "task4") == "!"
         await type_in(pilot, "u_ss@4.5", "4.05")
         await settle(pilot)
-        assert _mark(app, "task4") == "✓"
+        assert nav_mark(app, "task4") == "✓"
 
 
 async def test_a_falling_current_and_an_unlikely_f_are_not_ticked(quiet):
@@ -64,14 +59,14 @@ async def test_a_falling_current_and_an_unlikely_f_are_not_ticked(quiet):
         await goto(pilot, "task5")
         await type_in(pilot, "i_ss@4.5", "30 mA")
         await settle(pilot)
-        assert _mark(app, "task5") == "!"
+        assert nav_mark(app, "task5") == "!"
         await type_in(pilot, "i_ss@4.5", "36 mA")
         await settle(pilot)
-        assert _mark(app, "task5") == "✓"
+        assert nav_mark(app, "task5") == "✓"
         await goto(pilot, "table")
         await type_in(pilot, "own.f", "0.00001 N m s/rad")
         await settle(pilot)
-        assert _mark(app, "table") in ("!", "✗")
+        assert nav_mark(app, "table") in ("!", "✗")
 
 
 def _lines(widget) -> list[str]:
