@@ -17,6 +17,10 @@ FIRMWARE = REPO / "firmware"
 GOLDEN = FIRMWARE / "golden" / "lines.txt"
 CLOSING = re.compile(r"^(\d+) passed, (\d+) failed$")
 
+# one pytest-xdist worker runs this module (make test's --dist loadgroup): its fixture builds
+# the sanitized test binary, and two workers each running a test of it built it twice at once
+pytestmark = pytest.mark.xdist_group("firmware-host-test")
+
 
 @pytest.fixture(scope="module")
 def host_test() -> tuple[Path, subprocess.CompletedProcess[str]]:
