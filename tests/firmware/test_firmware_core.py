@@ -32,7 +32,7 @@ def host_test() -> tuple[Path, subprocess.CompletedProcess[str]]:
         ["make", "-s", "-C", str(FIRMWARE), "host-test"],
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=1800,  # a hang guard: at a load average of 20 the build passed 300 s
     )
     return FIRMWARE / "build" / "host" / "test_core", proc
 
