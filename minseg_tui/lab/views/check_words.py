@@ -23,8 +23,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import CheckResult
-from minseg_tui.model.check.effects import CANDIDATES
-from minseg_tui.model.check.effects import UNITS as check_units
+from minseg_tui.model.check.effects import CANDIDATES, PARAM_UNITS
 from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.check.text import bound_words, interval_words, value_words
 from minseg_tui.quantities import (
@@ -234,7 +233,7 @@ def params(
     1.996 rad/s/V'. Machine output (JSON, CSV) keeps SI."""
     out = []
     for k, v in p.items():
-        unit = check_units.get(k, "")
+        unit = PARAM_UNITS.get(k, "")
         text = (
             f"{k} = {value_words(k, v)} {unit}".rstrip()
             if k == "taps"

@@ -16,7 +16,14 @@ from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
 from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select, swapped
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, cannot_judge, in_words, ranges
+from minseg_tui.model.check.effects import (
+    BY_CAUSE,
+    NAMES,
+    PARAM_UNITS,
+    cannot_judge,
+    in_words,
+    ranges,
+)
 from minseg_tui.model.check.evidence import Log, shown_stop
 from minseg_tui.model.check.figures import (
     Gain,
@@ -596,10 +603,10 @@ def _params_text(p: dict[str, float]) -> str:
 
     def one(k: str, v: float) -> str:
         if k == "taps":
-            return f"{k} = {round(v)} {UNITS[k]}"
-        if UNITS.get(k) == "s" and abs(v) < 1.0:
+            return f"{k} = {round(v)} {PARAM_UNITS[k]}"
+        if PARAM_UNITS.get(k) == "s" and abs(v) < 1.0:
             return f"{k} = {format_number(v * 1e3)} ms"
-        return f"{k} = {format_number(v)} {UNITS.get(k, '')}".rstrip()
+        return f"{k} = {format_number(v)} {PARAM_UNITS.get(k, '')}".rstrip()
 
     return ", ".join(one(k, v) for k, v in p.items())
 

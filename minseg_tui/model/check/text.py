@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from minseg_tui.model.check.effects import UNITS
+from minseg_tui.model.check.effects import PARAM_UNITS
 from minseg_tui.model.check.fit import T_BOUNDS
 from minseg_tui.model.check.result import CheckResult
 from minseg_tui.model.identify.identification import DETERMINED, determined
@@ -70,7 +70,7 @@ def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | Non
     evidence sentences and ``identify`` write it (the JSON keeps seconds)."""
     out = []
     for k, v in p.items():
-        unit, scale = UNITS.get(k, ""), 1.0
+        unit, scale = PARAM_UNITS.get(k, ""), 1.0
         if unit == "s" and abs(v) < 1.0:
             unit, scale = "ms", 1e3
         s = f"{k} = {value_words(k, v * scale)} {unit}".rstrip()
