@@ -670,10 +670,10 @@ def _model_check_section(session: Session) -> Section | None:
             + ". An error near it says nothing about a model; the part above it does."
         )
     if f.caveats:
-        details.blocks.append("What the check cannot say here:")
+        details.blocks.append(model_words.CAVEATS)
         details.blocks.append([c.text for c in f.caveats])
     if r.anomalies:
-        details.blocks.append("Anomalies (reported, not counted as causes):")
+        details.blocks.append(model_words.ANOMALIES)
         details.blocks.append([a.text for a in r.anomalies])
     sec.blocks.append(details)
     return sec

@@ -1096,7 +1096,12 @@ def note_drawn(session: Session, view: object) -> list[str]:
 
 
 # -- the run in use -----------------------------------------------------------------------------
+USES_RUN = "Tasks 11-15 and the model check use run"
+"""The start of every line that says which run they use (:func:`run_in_use`, and
+:func:`~minseg_tui.lab.views.own_first.run_used` with why)."""
+
+
 def run_in_use(session: Session) -> str:
     """One line saying which run Tasks 11-15 and the model check use."""
     run = session.response_run()
-    return f"Tasks 11-15 and the model check use run {run.name if run else '— (none yet)'}"
+    return f"{USES_RUN} {run.name if run else '— (none yet)'}"

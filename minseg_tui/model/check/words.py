@@ -173,6 +173,13 @@ def _n(x: float | None) -> str:
     return format_number(x, 3) if x is not None else "n/a"
 
 
+CAVEATS = "What the check cannot say here:"
+"""The heading of the check's caveats (``analyze`` and the report)."""
+
+ANOMALIES = "Anomalies (reported, not counted as causes):"
+"""The heading of the anomalies (``analyze`` and the report)."""
+
+
 def _over(r: CheckResult) -> str:
     """Which rows the rms and fit figures cover: all of them, or those the fit used."""
     n = int(r.t.size)
@@ -246,9 +253,9 @@ def text(r: CheckResult) -> str:
     )
     lines.append("  " + "; ".join(rest) + f" (rms, noise and fit figures {_over(r)}{held})")
     if f.caveats:
-        lines.append("What the check cannot say here:")
+        lines.append(CAVEATS)
         lines.extend(f"  - {c.text}" for c in f.caveats)
     if r.anomalies:
-        lines.append("Anomalies (reported, not counted as causes):")
+        lines.append(ANOMALIES)
         lines.extend(f"  - {a.text}" for a in r.anomalies)
     return "\n".join(lines)
