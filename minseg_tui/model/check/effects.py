@@ -76,6 +76,21 @@ class Seen:
     rng: Range
 
 
+@dataclass(frozen=True)
+class Second:
+    """A second parameter fitted with a cause and not reported (the current limit's drag):
+    its key among a fit's values, the :class:`Effects` field it sets (K = 1 units), and its
+    linear search range from 0 to ``hi``; 0 is the cause without it."""
+
+    key: str
+    field: str
+    hi: float
+
+
+Way = dict[str, bool]
+"""One way a cause can act: the :class:`Effects` flags it sets (an extra pole on the
+measurement, a cap that brakes too); {} is its plain way."""
+
 Words = Callable[[ev.Log, "Fit", float | None], str]
 """The sentence of a cause's evidence in one log: (the log, the fit that holds the cause,
 the speed's noise floor in rad/s when known) -> words, every number read off the log."""
@@ -128,6 +143,20 @@ class Candidate:
     drive: Drive | None = None
     """Its own simulation piece, for a cause that acts on the input (then ``field`` is
     empty): the levels the motor gets from the levels in force and the parameter."""
+    counted: bool = False
+    """Its parameter is a whole number of samples (an average's length, :attr:`Effects.taps`):
+    the fit scans it over whole numbers beside its search instead of making it an axis."""
+    second: tuple[Second, ...] = ()
+    """Parameters the fit finds with it that the contract does not report."""
+    flags: tuple[str, ...] = ()
+    """The :class:`Effects` flags its ways set (:attr:`ways`)."""
+    ways: Callable[[tuple[str, ...], bool], list[Way]] | None = None
+    """The ways it can act, each fitted and the best kept: (the causes of the model, whether
+    the speed column is smooth) -> the flags of each way, the first tried first; None: one."""
+    carry: Callable[[Way, Effects, dict[str, float], float], dict[str, float] | None] | None = None
+    """A start of the way ``way`` from a fit of another way: (way, that fit's effects, its
+    {cause: Effects field value}, the period ts in s) -> the values to start from besides
+    (None: none)."""
 
 
 # -- the causes ---------------------------------------------------------------------------
@@ -282,6 +311,7 @@ VELOCITY_FILTER = Candidate(
     ),
     short="an averaged speed",
     needs=ev.NEEDS_RISE,
+    counted=True,
 )
 
 
@@ -357,6 +387,36 @@ COAST_ON_ZERO = Candidate(
 )
 
 
+def _pole_ways(causes: tuple[str, ...], smooth: bool) -> list[Way]:
+    """The sides of an extra pole worth fitting: on the drive always; on the measurement where
+    the side shows (a cause that is not linear acts with it), or as the logger's filter of a
+    smooth speed column (with no average among the causes: then the average smooths it);
+    with a coast, as a driver's lag too (:func:`.fit.fit_causes`)."""
+    filt = smooth and not any(BY_CAUSE[c].counted for c in causes)
+    out: list[Way] = [{}]
+    if NONLINEAR & set(causes):
+        out.append({"pole_measured": True, "pole_filtered": filt})
+    elif filt:
+        out.append({"pole_measured": True, "pole_filtered": True})
+    if "coast_on_zero" in causes:
+        out.append({"pole_driver": True})
+    return out
+
+
+def _pole_carry(
+    way: Way, fx: Effects, values: dict[str, float], ts: float
+) -> dict[str, float] | None:
+    """A fit's lag of the angle T2 (s) turned into the filter of the speed column that delays
+    the reading as much (ts a/(1 - a) = T2 with a = exp(-ts/T2_filter)), to start the filter
+    from, when ``way`` is the filter and that fit's was not."""
+    if not way.get("pole_filtered") or fx.pole_filtered:
+        return None
+    t2 = values.get("second_pole", 0.0)
+    if t2 <= 0.0:
+        return values
+    return {**values, "second_pole": ts / math.log1p(ts / t2)}
+
+
 def pole_words(log: ev.Log, ext: Fit) -> str:
     t2 = ext.params["T2"]
     w = max(2, int(math.ceil(max(t2, ext.T / 2) / log.ts)))
@@ -430,6 +490,9 @@ SECOND_POLE = Candidate(
     ),
     short="a slow current build-up",
     needs=ev.NEEDS_RISE,
+    flags=("pole_measured", "pole_filtered", "pole_driver"),
+    ways=_pole_ways,
+    carry=_pole_carry,
 )
 
 
@@ -459,6 +522,16 @@ def limit_words(log: ev.Log, ext: Fit) -> str:
         f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
         f"into the plateau{top}: the drive caps the current{both}, a_max = {a:.3g} rad/s^2"
     )
+
+
+DRAG = "cap_drag"
+"""The key among a fit's values of the current limit's second parameter: the share of the
+damping that is viscous drag (:attr:`Effects.drag`), which bends the capped ramp. A capped
+ramp is straight only on a motor without drag; 0 is that motor."""
+
+DRAG_MAX = 0.5
+"""Largest drag share fitted (the drag as large as the back-EMF's braking; a motor's viscous drag
+is far below that)."""
 
 
 def _cap_range(s: Shape) -> Range:
@@ -493,6 +566,10 @@ CURRENT_LIMIT = Candidate(
     needs=ev.NEEDS_RISE,
     reported=lambda value, K: abs(K) * value,  # a_max = |K| rate
     nonlinear=True,
+    second=(Second(DRAG, "drag", DRAG_MAX),),
+    flags=("cap_both",),
+    # capped while accelerating only, and capped both ways
+    ways=lambda causes, smooth: [{}, {"cap_both": True}],
 )
 
 
@@ -534,7 +611,7 @@ def effects_of(values: dict[str, float]) -> Effects:
         if c.drive is not None:
             extra.append(Extra(cause, float(value), c.drive))
             continue
-        kw[c.field] = int(round(value)) if c.field == "taps" else float(value)
+        kw[c.field] = int(round(value)) if c.counted else float(value)
     return Effects(**kw, extra=tuple(extra))  # type: ignore[arg-type]
 
 
@@ -562,6 +639,29 @@ def excluded(cause: str, others: tuple[str, ...]) -> bool:
 
 NONLINEAR = frozenset(c.cause for c in CANDIDATES if c.nonlinear)
 """Causes after which an extra pole on the drive and one on the measurement differ."""
+
+OWNER: dict[str, str] = {flag: c.cause for c in CANDIDATES for flag in c.flags}
+"""The cause behind each :class:`Effects` flag a way sets."""
+
+
+def counted(causes: tuple[str, ...]) -> str | None:
+    """The cause among ``causes`` whose parameter is a whole number of samples, if any."""
+    return next((c for c in causes if BY_CAUSE[c].counted), None)
+
+
+def way_of(fx: Effects) -> Way:
+    """The flags of every way in ``fx``."""
+    return {flag: bool(getattr(fx, flag)) for flag in OWNER}
+
+
+def ways(causes: tuple[str, ...], smooth: bool) -> list[Way]:
+    """Every combination of the ways of ``causes`` (each cause's :attr:`Candidate.ways`,
+    the causes in :data:`CANDIDATES` order, the first cause's way changing slowest)."""
+    out: list[Way] = [{}]
+    for c in CANDIDATES:
+        if c.cause in causes and c.ways is not None:
+            out = [{**a, **b} for a in out for b in c.ways(causes, smooth)]
+    return out
 
 
 def shape(t: FloatArray, u: FloatArray, ts: float, T: float) -> Shape:
