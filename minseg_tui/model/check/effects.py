@@ -87,6 +87,22 @@ class Second:
     hi: float
 
 
+@dataclass(frozen=True)
+class Claim:
+    """A claim a cause's evidence makes against one rival cause (a delay is pure, a pole
+    shows no corner). text: the words of the claim in the sentence; rival: the cause fitted
+    in its place to back it; said: the words that replace ``text`` with the figure behind
+    it, from (r, holds): r the whitened residual the rival leaves in its place over the
+    cause's, holds r >= :data:`.pipeline.POLE_OR_DELAY`; voided_by: the rivals that take
+    the claim back when the log cannot rule them out, and ``void`` the words left then."""
+
+    text: str
+    rival: str
+    said: Callable[[float, bool], str]
+    voided_by: tuple[str, ...]
+    void: str
+
+
 Way = dict[str, bool]
 """One way a cause can act: the :class:`Effects` flags it sets (an extra pole on the
 measurement, a cap that brakes too); {} is its plain way."""
@@ -157,6 +173,12 @@ class Candidate:
     """A start of the way ``way`` from a fit of another way: (way, that fit's effects, its
     {cause: Effects field value}, the period ts in s) -> the values to start from besides
     (None: none)."""
+    claim: Claim | None = None
+    """A claim its evidence makes against a rival cause, stated with the figure behind it."""
+    smooth: Callable[[Fit], str] | None = None
+    """It acts on the reading, so in a smooth speed column (not a difference of counts) the
+    other causes that do cannot be told from it: the words of that caveat for the fit
+    (the first such cause in a model speaks)."""
 
 
 # -- the causes ---------------------------------------------------------------------------
@@ -235,6 +257,10 @@ def _delay_starts(s: Seen) -> list[float]:
     return vals
 
 
+PURE_DELAY = "(a pure delay; an extra pole would start at once, only more slowly)"
+"""The claim of a delay's evidence against a pole."""
+
+
 def dead_time_words(log: ev.Log, ext: Fit) -> str:
     d = ext.params["delay"]
     lags = first_motion(log.t, log.u, log.y, log.noise)
@@ -246,7 +272,7 @@ def dead_time_words(log: ev.Log, ext: Fit) -> str:
     )
     return (
         f"{seen}: a first-order response that starts {ev.ms(d)} after the command fits "
-        f"(a pure delay; an extra pole would start at once, only more slowly)"
+        + PURE_DELAY
     )
 
 
@@ -266,6 +292,18 @@ DEAD_TIME = Candidate(
     ),
     short="a delay",
     needs=ev.NEEDS_RISE,
+    claim=Claim(
+        PURE_DELAY,
+        "second_pole",
+        lambda r, holds: (
+            f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened residual)"
+            if holds
+            else f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
+            "the whitened residual: this log hardly tells a delay from a pole)"
+        ),
+        ("second_pole", "velocity_filter"),
+        "(a delay, or in this log an extra pole or an average about as well)",
+    ),
 )
 
 
@@ -312,6 +350,7 @@ VELOCITY_FILTER = Candidate(
     short="an averaged speed",
     needs=ev.NEEDS_RISE,
     counted=True,
+    smooth=lambda ext: SMOOTH_ALIKE,
 )
 
 
@@ -385,6 +424,26 @@ COAST_ON_ZERO = Candidate(
     stop=ev.drops_to_zero,
     slower=-1,
 )
+
+
+NO_CORNER = " (a pure delay would show a corner)"
+"""The claim of a pole's evidence against a delay."""
+
+SMOOTH_ALIKE = (
+    "this speed is smooth, not a difference of encoder counts: an averaging filter on the "
+    "speed and an extra pole in the motor look alike here, so the log cannot tell them "
+    "apart; the fit prefers the one named"
+)
+
+
+def _pole_smooth(ext: Fit) -> str:
+    if ext.effects.pole_measured:
+        return (
+            "this speed is smooth, not a difference of encoder counts: an average of the "
+            "speed and a first-order filter of it (a pole on the measurement) are both "
+            "filters of the reading, and the pole named acts there; the fit prefers it"
+        )
+    return SMOOTH_ALIKE
 
 
 def _pole_ways(causes: tuple[str, ...], smooth: bool) -> list[Way]:
@@ -493,6 +552,19 @@ SECOND_POLE = Candidate(
     flags=("pole_measured", "pole_filtered", "pole_driver"),
     ways=_pole_ways,
     carry=_pole_carry,
+    claim=Claim(
+        NO_CORNER,
+        "dead_time",
+        lambda r, holds: (
+            f" (a pure delay in its place leaves {r:.1f} times the whitened residual)"
+            if holds
+            else f" (though a pure delay in its place leaves only {r:.2f} times the "
+            "whitened residual: this log hardly tells a pole from a delay)"
+        ),
+        ("dead_time",),
+        "",
+    ),
+    smooth=_pole_smooth,
 )
 
 
@@ -596,6 +668,26 @@ def in_words(model: str) -> str:
         for p in model.split("+")
     )
 
+
+TELL_APART: dict[frozenset[str], str] = {
+    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
+    "samples after each step (more counts per sample, a faster sampling where the counts "
+    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
+    "bends smoothly from the start)",
+    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
+    "(a delay shifts the rise, an average turns it into a ramp)",
+    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
+    "of the speed acts on the measurement only, a pole on the motor)",
+    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
+    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
+    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
+    "limits the big steps only, friction takes the same volts off every level)",
+    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
+    "would (a coast acts only at 0)",
+}
+"""What kind of log would tell two causes apart, in words, for the pairs a log often
+cannot tell (the first pair found among the causes two models do not share speaks; a
+pair not here gets the check's general words)."""
 
 UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in CANDIDATES}}
 """Unit of every parameter a model reports."""
