@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -714,6 +714,20 @@ def field_value(fx: Effects, cause: str) -> float:
         return next((x.value for x in fx.extra if x.cause == cause), c.null)
     v = getattr(fx, c.field)
     return c.null if v is None else float(v)
+
+
+_ABSENT: dict[str, object] = {f.name: f.default for f in fields(Effects)}
+"""Every :class:`Effects` field at its value when absent."""
+
+
+def absent(fx: Effects, cause: str) -> Effects:
+    """``fx`` without ``cause``: its field, the flags of its ways and its second parameters at
+    their absent values (:class:`Effects`' defaults), or its own piece dropped."""
+    c = BY_CAUSE[cause]
+    if c.drive is not None:
+        return replace(fx, extra=tuple(x for x in fx.extra if x.cause != cause))
+    names = (c.field, *c.flags, *(s.field for s in c.second))
+    return replace(fx, **{n: _ABSENT[n] for n in names})  # type: ignore[arg-type]
 
 
 def reported(cause: str, value: float, K: float) -> float:
