@@ -443,9 +443,9 @@ def select(
     if len(chosen) == 1 and chosen[0] in LAGS:
         pair = tuple(x for x in LAGS if x != chosen[0] and x in names)
         if len(pair) == 2 and all(sel.verdicts[x].clear for x in pair):
-            vals = {x: singles[x].value(x) for x in pair}
-            begin = [(singles[x].T, vals) for x in pair] + [(current.T, vals)]
-            f = _fit_pair(prob, pair, rng, begin, False, ())
+            both = {x: singles[x].value(x) for x in pair}
+            from_both = [(singles[x].T, both) for x in pair] + [(current.T, both)]
+            f = _fit_pair(prob, pair, rng, from_both, False, ())
             sel.tried.append(f)
             alike = [g for g in singles.values() if g.effects.taps == f.effects.taps]
             if _stands_in(prob, f, current, base, alike) and all(
