@@ -574,3 +574,19 @@ def test_one_delay_like_cause_standing_in_for_the_other_two_gives_way_to_them():
     # delay against the pole when both are named
     told = [c.text for c in r.finding.caveats if c.kind == "cannot_tell"]
     assert all("a delay leaves those samples flat" not in w for w in told), told
+
+
+def test_a_delay_and_a_pole_standing_in_for_an_average_and_a_pole_give_way_to_them():
+    # a 6-tap average of the speed with a pole of 44 ms on the coupling at 20 ms samples
+    # (T 196 ms): the average alone was named first, then a delay of 45 ms and a pole of
+    # 194 ms (T 61 ms, the wheel's lag read as the pole) stood in for it, compared only with
+    # the average alone. The average with its pole, fitted again from the pair's values,
+    # leaves a ninth of the pair's speed error: it is named, with its parameters
+    log = make(88, ("velocity_filter", "second_pole"), measured_pole=True)
+    assert "coupling" in log.how
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == ["second_pole", "velocity_filter"], (named(r), r.finding.ambiguous_with)
+    p = r.extended.params
+    assert p["taps"] == log.causes["velocity_filter"]
+    assert p["T2"] == pytest.approx(log.causes["second_pole"], rel=0.1)
+    assert p["T"] == pytest.approx(log.T, rel=0.05)

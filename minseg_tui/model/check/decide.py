@@ -432,7 +432,8 @@ def select(
             sel.left_out.pop(swap[0], None)
             sel.without = {}
     # one delay-like cause alone may stand in for the other two together (an average's
-    # length picked for a delay and a pole): that pair is never fitted beside it
+    # length picked for a delay and a pole): that pair is never fitted beside it. It must
+    # also not fit clearly worse than the cause with a partner (:func:`_partnered`)
     if len(chosen) == 1 and chosen[0] in LAGS:
         pair = tuple(x for x in LAGS if x != chosen[0] and x in names)
         if len(pair) == 2 and all(sel.verdicts[x].clear for x in pair):
@@ -444,8 +445,15 @@ def select(
             if _stands_in(prob, f, current, base, alike) and all(
                 _why_not(prob, f, x, rng, base_raw, noise, floor) is None for x in pair
             ):
-                sel.left_out[chosen[0]] = f"{' and '.join(pair)} together explain the log better"
-                chosen, current = pair, f
+                wins = _partnered(prob, sel, f, current, rng, noise, floor)
+                for x in (chosen[0], *pair):
+                    if x not in wins.causes:
+                        sel.left_out[x] = (
+                            f"{' and '.join(wins.causes)} together explain the log better"
+                        )
+                    else:
+                        sel.left_out.pop(x, None)
+                chosen, current = wins.causes, wins
                 sel.without = {}
     # a cause whose parameter ended on a bound in the joint fit, or that fails its own test
     # there, leaves too
@@ -501,6 +509,52 @@ def _stands_in(prob: Problem, pair: Fit, single: Fit, base: Fit, alike: list[Fit
     return all(compare(pair, g).clear for g in alike) and _raw_sse(prob, pair) < (
         1.0 - STAND_IN_GAIN
     ) * _raw_sse(prob, single)
+
+
+def _partnered(
+    prob: Problem,
+    sel: Selection,
+    pair: Fit,
+    single: Fit,
+    rng: dict[str, Range],
+    noise: float,
+    floor: Callable[[int], float | None],
+) -> Fit:
+    """What replaces the delay-like cause named alone in ``single`` when the two others
+    (``pair``) stand in for it: ``pair``, unless that cause with one of those two as a partner
+    fits clearly better (by :func:`_about` beyond ``AMBIGUOUS_RATIO``) and can be named; then
+    the best such. An average with a pole on the coupling can be named a delay and a pole:
+    the forward search fitted the average with each partner from the average's own T, where
+    the partner can settle on a few ms, so each is fitted again from the pair's values too
+    (the pair may have swapped the wheel's T and its pole: its longest lag is a start). Where
+    the two fit about as well the pair is kept and :func:`rivals` names the other beside it."""
+    one = single.causes[0]
+    base_raw = _raw_sse(prob, sel.base)
+    for x in pair.causes:
+        vals = [pair.value(x), sel.singles[x].value(x), *_starts(prob, x, single, rng, noise)]
+        lags = (pair.T, pair.effects.T2, pair.T + pair.effects.delay + pair.effects.T2)
+        times = sorted({T0 for T0 in (*lags, single.T, sel.singles[x].T) if T0 > 0.0})
+        begin = [(T0, {one: single.value(one), x: v}) for T0 in times for v in vals]
+        sel.tried.append(_fit_pair(prob, (one, x), rng, begin, None, ()))
+    best = pair
+    for g in sel.tried:
+        if len(g.causes) != 2 or one not in g.causes or not compare(g, sel.base).clear:
+            continue
+        if _about(prob, best, g) <= AMBIGUOUS_RATIO:
+            continue
+        if all(_why_not(prob, g, x, rng, base_raw, noise, floor) is None for x in g.causes):
+            best = g
+    return best
+
+
+def _about(prob: Problem, g: Fit, f: Fit) -> float:
+    """How much more ``g`` leaves than ``f``, as :func:`rivals` measures it: the ratio of
+    their whitened sums of squares, or of their plain speed errors when their averaging
+    lengths differ (the whitened sums then stride differently)."""
+    if g.effects.taps == f.effects.taps:
+        return g.sse_white / f.sse_white if f.sse_white > 0 else math.inf
+    raw = _raw_sse(prob, f)
+    return _raw_sse(prob, g) / raw if raw > 0 else math.inf
 
 
 STAND_IN_GAIN = 0.05
