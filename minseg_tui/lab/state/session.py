@@ -662,7 +662,8 @@ class Session:
         refused, even over an accepted answer still in effect), ``warned`` (answered, but an
         entry stored with a warning the program itself gives, e.g. a u_ss above the requested
         voltage, which the driver cannot give: not done until the group looks again; a wrong
-        answer stays ``wrong``), ``unjudged`` (a step of the
+        answer stays ``wrong``), ``started`` also for a step of Tasks 11-15 with one of its own
+        values given and another not (Task 11's K), ``unjudged`` (a step of the
         group's own values, Tasks 6-9 and 11-15, answered, one of them stored but not judged
         yet: nothing computed to compare it with), ``started`` (something entered), ``todo``,
         or ``info`` (nothing to enter)."""
@@ -697,6 +698,10 @@ class Session:
         )
         if wrong or any(r is False for r in judged):
             return "wrong"
+        if st.part == "Results" and any(
+            f.compare and f.key not in self.answered() for f in st.fields
+        ):
+            return "started"  # Task 11: omega_ss given, K not yet (it read ✓)
         if self._warned(st.fields):
             return "warned"
         return "unjudged" if any(r is None for r in judged) else "done"
