@@ -87,18 +87,6 @@ class AnswerList(Widget, can_focus=False):
                 text-style: $block-cursor-text-style;
             }
         }
-        &:ansi {
-            &>.answer-list--button {
-                background: $ansi-background;
-                color: $ansi-foreground;
-                text-style: dim;
-            }
-            &>.answer-list--button-on {
-                color: $accent;
-                background: $ansi-background;
-                text-style: bold not dim;
-            }
-        }
     }
     """
     COMPONENT_CLASSES = {
