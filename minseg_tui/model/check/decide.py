@@ -39,7 +39,15 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from minseg_tui.model.check.deviations import regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, Range, excluded, starts
+from minseg_tui.model.check.effects import (
+    BY_CAUSE,
+    NAMES,
+    Range,
+    absent,
+    counted,
+    excluded,
+    starts,
+)
 from minseg_tui.model.check.figures import systematic
 from minseg_tui.model.check.fit import T_BOUNDS, Fit, Problem, fit_causes, values_of
 from minseg_tui.model.check.sampling import scatter
@@ -104,7 +112,7 @@ def on_bound(f: Fit, cause: str, rng: dict[str, Range]) -> str | None:
     search range (the null end of a range is no bound: it means no effect), else None."""
     r = rng[cause]
     v = f.value(cause)
-    if cause == "velocity_filter":
+    if BY_CAUSE[cause].counted:
         return "upper" if v >= r.hi and r.hi > 2 else None
     if r.log_scale:
         lo, hi, x = math.log(r.lo), math.log(r.hi), math.log(max(v, 1e-300))
@@ -309,22 +317,7 @@ def held_noise(prob: Problem, f: Fit) -> float:
 def without(f: Fit, cause: str) -> Fit:
     """``f`` with ``cause`` at its absent value, everything else (T, K, the other causes)
     kept."""
-    fx = f.effects
-    if cause == "coulomb_friction":
-        fx = replace(fx, u_c=0.0)
-    elif cause == "dead_time":
-        fx = replace(fx, delay=0.0)
-    elif cause == "velocity_filter":
-        fx = replace(fx, taps=1)
-    elif cause == "coast_on_zero":
-        fx = replace(fx, T_coast=None)
-    elif cause == "second_pole":
-        fx = replace(fx, T2=0.0, pole_measured=False, pole_filtered=False, pole_driver=False)
-    elif cause == "current_limit":
-        fx = replace(fx, rate=math.inf, drag=0.0, cap_both=False)
-    else:  # a cause with its own simulation piece (Candidate.drive)
-        fx = replace(fx, extra=tuple(x for x in fx.extra if x.cause != cause))
-    return replace(f, effects=fx)
+    return replace(f, effects=absent(f.effects, cause))
 
 
 def effect(prob: Problem, f: Fit, cause: str) -> float:
@@ -371,8 +364,8 @@ def select(
             far = not 0.5 < singles[c].T / current.T < 2.0
             scan: bool | None = (
                 True
-                if c == "velocity_filter"
-                else (None if far and "velocity_filter" in chosen else False)
+                if BY_CAUSE[c].counted
+                else (None if far and counted(chosen) is not None else False)
             )
             tries[c] = _fit_pair(prob, (*chosen, c), rng, begin, scan, _idle(c))
             sel.tried.append(tries[c])
@@ -426,7 +419,7 @@ def select(
             vals = [singles[x].value(x), *_starts(prob, x, current, rng, noise)]
             begin = [(current.T, {**keep, x: v}) for v in vals]
             begin.append((singles[x].T, {**keep, x: singles[x].value(x)}))
-            f = _fit_pair(prob, (*rest, x), rng, begin, x == "velocity_filter", _idle(x))
+            f = _fit_pair(prob, (*rest, x), rng, begin, BY_CAUSE[x].counted, _idle(x))
             sel.tried.append(f)
             if f.sse_white < (1.0 - MIN_REDUCTION_MORE) * current.sse_white and (
                 swap is None or f.sse_white < swap[1].sse_white
@@ -649,15 +642,16 @@ def swapped(
             continue
         rest = tuple(x for x in chosen.causes if x != c)
         keep = {k: v for k, v in values_of(chosen).items() if k != c}
-        lag = (chosen.value(c) - 1.0) / 2.0 * prob.ts if c == "velocity_filter" else chosen.value(c)
+        v = chosen.value(c)
+        lag = (v - 1.0) / 2.0 * prob.ts if BY_CAUSE[c].counted else v
         for x in LAGS:
             if x in chosen.causes or frozenset((*rest, x)) in seen:
                 continue
-            guess = 2.0 * lag / prob.ts + 1.0 if x == "velocity_filter" else lag
+            guess = 2.0 * lag / prob.ts + 1.0 if BY_CAUSE[x].counted else lag
             r = rng[x]
             vals = [min(max(guess, r.lo), r.hi), *_starts(prob, x, chosen, rng, noise)]
             begin = [(chosen.T, {**keep, x: v}) for v in vals]
-            f = _fit_pair(prob, (*rest, x), rng, begin, x == "velocity_filter", _idle(x))
+            f = _fit_pair(prob, (*rest, x), rng, begin, BY_CAUSE[x].counted, _idle(x))
             seen.add(frozenset(f.causes))
             out.append(f)
     return out

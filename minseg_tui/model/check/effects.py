@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -76,6 +76,37 @@ class Seen:
     rng: Range
 
 
+@dataclass(frozen=True)
+class Second:
+    """A second parameter fitted with a cause and not reported (the current limit's drag):
+    its key among a fit's values, the :class:`Effects` field it sets (K = 1 units), and its
+    linear search range from 0 to ``hi``; 0 is the cause without it."""
+
+    key: str
+    field: str
+    hi: float
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A claim a cause's evidence makes against one rival cause (a delay is pure, a pole
+    shows no corner). text: the words of the claim in the sentence; rival: the cause fitted
+    in its place to back it; said: the words that replace ``text`` with the figure behind
+    it, from (r, holds): r the whitened residual the rival leaves in its place over the
+    cause's, holds r >= :data:`.pipeline.POLE_OR_DELAY`; voided_by: the rivals that take
+    the claim back when the log cannot rule them out, and ``void`` the words left then."""
+
+    text: str
+    rival: str
+    said: Callable[[float, bool], str]
+    voided_by: tuple[str, ...]
+    void: str
+
+
+Way = dict[str, bool]
+"""One way a cause can act: the :class:`Effects` flags it sets (an extra pole on the
+measurement, a cap that brakes too); {} is its plain way."""
+
 Words = Callable[[ev.Log, "Fit", float | None], str]
 """The sentence of a cause's evidence in one log: (the log, the fit that holds the cause,
 the speed's noise floor in rad/s when known) -> words, every number read off the log."""
@@ -128,6 +159,26 @@ class Candidate:
     drive: Drive | None = None
     """Its own simulation piece, for a cause that acts on the input (then ``field`` is
     empty): the levels the motor gets from the levels in force and the parameter."""
+    counted: bool = False
+    """Its parameter is a whole number of samples (an average's length, :attr:`Effects.taps`):
+    the fit scans it over whole numbers beside its search instead of making it an axis."""
+    second: tuple[Second, ...] = ()
+    """Parameters the fit finds with it that the contract does not report."""
+    flags: tuple[str, ...] = ()
+    """The :class:`Effects` flags its ways set (:attr:`ways`)."""
+    ways: Callable[[tuple[str, ...], bool], list[Way]] | None = None
+    """The ways it can act, each fitted and the best kept: (the causes of the model, whether
+    the speed column is smooth) -> the flags of each way, the first tried first; None: one."""
+    carry: Callable[[Way, Effects, dict[str, float], float], dict[str, float] | None] | None = None
+    """A start of the way ``way`` from a fit of another way: (way, that fit's effects, its
+    {cause: Effects field value}, the period ts in s) -> the values to start from besides
+    (None: none)."""
+    claim: Claim | None = None
+    """A claim its evidence makes against a rival cause, stated with the figure behind it."""
+    smooth: Callable[[Fit], str] | None = None
+    """It acts on the reading, so in a smooth speed column (not a difference of counts) the
+    other causes that do cannot be told from it: the words of that caveat for the fit
+    (the first such cause in a model speaks)."""
 
 
 # -- the causes ---------------------------------------------------------------------------
@@ -206,6 +257,10 @@ def _delay_starts(s: Seen) -> list[float]:
     return vals
 
 
+PURE_DELAY = "(a pure delay; an extra pole would start at once, only more slowly)"
+"""The claim of a delay's evidence against a pole."""
+
+
 def dead_time_words(log: ev.Log, ext: Fit) -> str:
     d = ext.params["delay"]
     lags = first_motion(log.t, log.u, log.y, log.noise)
@@ -217,7 +272,7 @@ def dead_time_words(log: ev.Log, ext: Fit) -> str:
     )
     return (
         f"{seen}: a first-order response that starts {ev.ms(d)} after the command fits "
-        f"(a pure delay; an extra pole would start at once, only more slowly)"
+        + PURE_DELAY
     )
 
 
@@ -237,6 +292,18 @@ DEAD_TIME = Candidate(
     ),
     short="a delay",
     needs=ev.NEEDS_RISE,
+    claim=Claim(
+        PURE_DELAY,
+        "second_pole",
+        lambda r, holds: (
+            f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened residual)"
+            if holds
+            else f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
+            "the whitened residual: this log hardly tells a delay from a pole)"
+        ),
+        ("second_pole", "velocity_filter"),
+        "(a delay, or in this log an extra pole or an average about as well)",
+    ),
 )
 
 
@@ -282,6 +349,8 @@ VELOCITY_FILTER = Candidate(
     ),
     short="an averaged speed",
     needs=ev.NEEDS_RISE,
+    counted=True,
+    smooth=lambda ext: SMOOTH_ALIKE,
 )
 
 
@@ -357,6 +426,56 @@ COAST_ON_ZERO = Candidate(
 )
 
 
+NO_CORNER = " (a pure delay would show a corner)"
+"""The claim of a pole's evidence against a delay."""
+
+SMOOTH_ALIKE = (
+    "this speed is smooth, not a difference of encoder counts: an averaging filter on the "
+    "speed and an extra pole in the motor look alike here, so the log cannot tell them "
+    "apart; the fit prefers the one named"
+)
+
+
+def _pole_smooth(ext: Fit) -> str:
+    if ext.effects.pole_measured:
+        return (
+            "this speed is smooth, not a difference of encoder counts: an average of the "
+            "speed and a first-order filter of it (a pole on the measurement) are both "
+            "filters of the reading, and the pole named acts there; the fit prefers it"
+        )
+    return SMOOTH_ALIKE
+
+
+def _pole_ways(causes: tuple[str, ...], smooth: bool) -> list[Way]:
+    """The sides of an extra pole worth fitting: on the drive always; on the measurement where
+    the side shows (a cause that is not linear acts with it), or as the logger's filter of a
+    smooth speed column (with no average among the causes: then the average smooths it);
+    with a coast, as a driver's lag too (:func:`.fit.fit_causes`)."""
+    filt = smooth and not any(BY_CAUSE[c].counted for c in causes)
+    out: list[Way] = [{}]
+    if NONLINEAR & set(causes):
+        out.append({"pole_measured": True, "pole_filtered": filt})
+    elif filt:
+        out.append({"pole_measured": True, "pole_filtered": True})
+    if "coast_on_zero" in causes:
+        out.append({"pole_driver": True})
+    return out
+
+
+def _pole_carry(
+    way: Way, fx: Effects, values: dict[str, float], ts: float
+) -> dict[str, float] | None:
+    """A fit's lag of the angle T2 (s) turned into the filter of the speed column that delays
+    the reading as much (ts a/(1 - a) = T2 with a = exp(-ts/T2_filter)), to start the filter
+    from, when ``way`` is the filter and that fit's was not."""
+    if not way.get("pole_filtered") or fx.pole_filtered:
+        return None
+    t2 = values.get("second_pole", 0.0)
+    if t2 <= 0.0:
+        return values
+    return {**values, "second_pole": ts / math.log1p(ts / t2)}
+
+
 def pole_words(log: ev.Log, ext: Fit) -> str:
     t2 = ext.params["T2"]
     w = max(2, int(math.ceil(max(t2, ext.T / 2) / log.ts)))
@@ -430,6 +549,22 @@ SECOND_POLE = Candidate(
     ),
     short="a slow current build-up",
     needs=ev.NEEDS_RISE,
+    flags=("pole_measured", "pole_filtered", "pole_driver"),
+    ways=_pole_ways,
+    carry=_pole_carry,
+    claim=Claim(
+        NO_CORNER,
+        "dead_time",
+        lambda r, holds: (
+            f" (a pure delay in its place leaves {r:.1f} times the whitened residual)"
+            if holds
+            else f" (though a pure delay in its place leaves only {r:.2f} times the "
+            "whitened residual: this log hardly tells a pole from a delay)"
+        ),
+        ("dead_time",),
+        "",
+    ),
+    smooth=_pole_smooth,
 )
 
 
@@ -459,6 +594,16 @@ def limit_words(log: ev.Log, ext: Fit) -> str:
         f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
         f"into the plateau{top}: the drive caps the current{both}, a_max = {a:.3g} rad/s^2"
     )
+
+
+DRAG = "cap_drag"
+"""The key among a fit's values of the current limit's second parameter: the share of the
+damping that is viscous drag (:attr:`Effects.drag`), which bends the capped ramp. A capped
+ramp is straight only on a motor without drag; 0 is that motor."""
+
+DRAG_MAX = 0.5
+"""Largest drag share fitted (the drag as large as the back-EMF's braking; a motor's viscous drag
+is far below that)."""
 
 
 def _cap_range(s: Shape) -> Range:
@@ -493,6 +638,10 @@ CURRENT_LIMIT = Candidate(
     needs=ev.NEEDS_RISE,
     reported=lambda value, K: abs(K) * value,  # a_max = |K| rate
     nonlinear=True,
+    second=(Second(DRAG, "drag", DRAG_MAX),),
+    flags=("cap_both",),
+    # capped while accelerating only, and capped both ways
+    ways=lambda causes, smooth: [{}, {"cap_both": True}],
 )
 
 
@@ -520,6 +669,26 @@ def in_words(model: str) -> str:
     )
 
 
+TELL_APART: dict[frozenset[str], str] = {
+    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
+    "samples after each step (more counts per sample, a faster sampling where the counts "
+    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
+    "bends smoothly from the start)",
+    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
+    "(a delay shifts the rise, an average turns it into a ramp)",
+    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
+    "of the speed acts on the measurement only, a pole on the motor)",
+    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
+    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
+    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
+    "limits the big steps only, friction takes the same volts off every level)",
+    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
+    "would (a coast acts only at 0)",
+}
+"""What kind of log would tell two causes apart, in words, for the pairs a log often
+cannot tell (the first pair found among the causes two models do not share speaks; a
+pair not here gets the check's general words)."""
+
 UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in CANDIDATES}}
 """Unit of every parameter a model reports."""
 
@@ -534,7 +703,7 @@ def effects_of(values: dict[str, float]) -> Effects:
         if c.drive is not None:
             extra.append(Extra(cause, float(value), c.drive))
             continue
-        kw[c.field] = int(round(value)) if c.field == "taps" else float(value)
+        kw[c.field] = int(round(value)) if c.counted else float(value)
     return Effects(**kw, extra=tuple(extra))  # type: ignore[arg-type]
 
 
@@ -545,6 +714,20 @@ def field_value(fx: Effects, cause: str) -> float:
         return next((x.value for x in fx.extra if x.cause == cause), c.null)
     v = getattr(fx, c.field)
     return c.null if v is None else float(v)
+
+
+_ABSENT: dict[str, object] = {f.name: f.default for f in fields(Effects)}
+"""Every :class:`Effects` field at its value when absent."""
+
+
+def absent(fx: Effects, cause: str) -> Effects:
+    """``fx`` without ``cause``: its field, the flags of its ways and its second parameters at
+    their absent values (:class:`Effects`' defaults), or its own piece dropped."""
+    c = BY_CAUSE[cause]
+    if c.drive is not None:
+        return replace(fx, extra=tuple(x for x in fx.extra if x.cause != cause))
+    names = (c.field, *c.flags, *(s.field for s in c.second))
+    return replace(fx, **{n: _ABSENT[n] for n in names})  # type: ignore[arg-type]
 
 
 def reported(cause: str, value: float, K: float) -> float:
@@ -562,6 +745,29 @@ def excluded(cause: str, others: tuple[str, ...]) -> bool:
 
 NONLINEAR = frozenset(c.cause for c in CANDIDATES if c.nonlinear)
 """Causes after which an extra pole on the drive and one on the measurement differ."""
+
+OWNER: dict[str, str] = {flag: c.cause for c in CANDIDATES for flag in c.flags}
+"""The cause behind each :class:`Effects` flag a way sets."""
+
+
+def counted(causes: tuple[str, ...]) -> str | None:
+    """The cause among ``causes`` whose parameter is a whole number of samples, if any."""
+    return next((c for c in causes if BY_CAUSE[c].counted), None)
+
+
+def way_of(fx: Effects) -> Way:
+    """The flags of every way in ``fx``."""
+    return {flag: bool(getattr(fx, flag)) for flag in OWNER}
+
+
+def ways(causes: tuple[str, ...], smooth: bool) -> list[Way]:
+    """Every combination of the ways of ``causes`` (each cause's :attr:`Candidate.ways`,
+    the causes in :data:`CANDIDATES` order, the first cause's way changing slowest)."""
+    out: list[Way] = [{}]
+    for c in CANDIDATES:
+        if c.cause in causes and c.ways is not None:
+            out = [{**a, **b} for a in out for b in c.ways(causes, smooth)]
+    return out
 
 
 def shape(t: FloatArray, u: FloatArray, ts: float, T: float) -> Shape:

@@ -20,9 +20,10 @@ differences); the moving average's length is an integer, scanned cheaply (the an
 not depend on it). Where the side of an extra pole shows (with dry friction, a coast or a
 cap, it matters whether the pole acts on the drive or on the measurement) both sides are
 fitted and the better kept, and a current limit is fitted capped while accelerating only
-and capped both ways, with the share of viscous drag that bends its ramp (:data:`DRAG`) as
-a parameter of its own. Rows with weight 0 (wild samples, a hand on the wheel,
-held-out steps) do not count: their residual is set to zero before the whitening.
+and capped both ways, with the share of viscous drag that bends its ramp
+(:data:`.effects.DRAG`) as a parameter of its own (each cause's ``ways`` and ``second``
+in :mod:`.effects`). Rows with weight 0 (wild samples, a hand on the wheel, held-out
+steps) do not count: their residual is set to zero before the whitening.
 """
 
 from __future__ import annotations
@@ -37,11 +38,15 @@ from numpy.typing import NDArray
 
 from minseg_tui.model.check.effects import (
     BY_CAUSE,
-    NONLINEAR,
+    OWNER,
     Range,
+    Way,
+    counted,
     effects_of,
     field_value,
     reported,
+    way_of,
+    ways,
 )
 from minseg_tui.model.check.simulate import (
     Effects,
@@ -297,6 +302,7 @@ class _Axis:
     step: float
     log_scale: bool
     unit: float  # value = x * unit (linear axes)
+    second: str = ""  # the Effects field of a cause's second parameter (key in ``cause``)
 
     def value(self, x: float) -> float:
         return math.exp(x) if self.log_scale else x * self.unit
@@ -311,7 +317,7 @@ def _axes(prob: Problem, causes: Sequence[str], rng: dict[str, Range]) -> list[_
     u_scale = float(np.max(np.abs(prob.u))) or 1.0
     out = [_Axis("T", math.log(T_BOUNDS[0]), math.log(T_BOUNDS[1]), 2e-3, True, 1.0)]
     for c in causes:
-        if c == "velocity_filter":
+        if BY_CAUSE[c].counted:
             continue
         r = rng[c]
         if r.log_scale:
@@ -319,19 +325,10 @@ def _axes(prob: Problem, causes: Sequence[str], rng: dict[str, Range]) -> list[_
         else:
             unit = u_scale if BY_CAUSE[c].scale == "V" else prob.ts
             out.append(_Axis(c, r.lo / unit, r.hi / unit, 5e-3, False, unit))
-    if "current_limit" in causes:
-        out.append(_Axis(DRAG, 0.0, DRAG_MAX, 5e-3, False, 1.0))
+    for c in causes:
+        for sec in BY_CAUSE[c].second:
+            out.append(_Axis(sec.key, 0.0, sec.hi, 5e-3, False, 1.0, sec.field))
     return out
-
-
-DRAG = "cap_drag"
-"""The axis (and the key among a fit's values) of the current limit's second parameter: the
-share of the damping that is viscous drag (:attr:`Effects.drag`), which bends the capped
-ramp. A capped ramp is straight only on a motor without drag; 0 is that motor."""
-
-DRAG_MAX = 0.5
-"""Largest drag share fitted (the drag as large as the back-EMF's braking; a motor's viscous drag
-is far below that)."""
 
 
 _NO_COEF = np.zeros(0)
@@ -349,11 +346,9 @@ class Model:
         self.lo = np.array([a.lo for a in self.axes])
         self.hi = np.array([a.hi for a in self.axes])
         self.step = np.array([a.step for a in self.axes])
+        self.counted = counted(self.causes)
         self.taps = 1
-        self.pole_measured = False
-        self.pole_filtered = False
-        self.pole_driver = False
-        self.cap_both = False
+        self.way: Way = {}
         self.evaluations = 0
         self._last: tuple[bytes, FloatArray] = (b"", np.zeros(0))
 
@@ -362,28 +357,23 @@ class Model:
         values: dict[str, float] = {
             a.cause: a.value(float(v)) for a, v in zip(self.axes[1:], x[1:], strict=True)
         }
-        drag = values.pop(DRAG, 0.0)
-        if "velocity_filter" in self.causes:
-            values["velocity_filter"] = float(self.taps)
-        fx = effects_of(values)
         flags: dict[str, Any] = {}
-        if drag > 0.0:
-            flags["drag"] = drag
-        if self.pole_measured and "second_pole" in self.causes:
-            flags["pole_measured"] = True
-            if self.pole_filtered and "velocity_filter" not in self.causes:
-                flags["pole_filtered"] = True
-        elif self.pole_driver and "second_pole" in self.causes:
-            flags["pole_driver"] = True
-        if self.cap_both and "current_limit" in self.causes:
-            flags["cap_both"] = True
+        for a in self.axes[1:]:
+            if a.second:
+                v = values.pop(a.cause)
+                if v > 0.0:
+                    flags[a.second] = v
+        if self.counted is not None:
+            values[self.counted] = float(self.taps)
+        fx = effects_of(values)
+        flags.update({k: True for k, on in self.way.items() if on and OWNER[k] in self.causes})
         return T, replace(fx, **flags) if flags else fx
 
     def x_of(self, T: float, values: dict[str, float]) -> FloatArray:
         """The vector of T (s) and {cause: Effects field value}."""
         x = [self.axes[0].coord(T)]
         for a in self.axes[1:]:
-            x.append(a.coord(values.get(DRAG, 0.0) if a.cause == DRAG else values[a.cause]))
+            x.append(a.coord(values.get(a.cause, 0.0) if a.second else values[a.cause]))
         return np.array(x)
 
     def residual(self, x: FloatArray) -> FloatArray:
@@ -470,10 +460,10 @@ class Model:
     def fit(self, x0: FloatArray, max_iter: int = 25) -> Fit:
         """Levenberg-Marquardt from x0 (the taps, if any, scanned around as well)."""
         x, f = self._solve(x0, max_iter)
-        if "velocity_filter" in self.causes:
+        if self.counted is not None:
             # the length trades against T (one more sample of averaging, half a sample less
             # of T): each neighbour is judged with the other parameters fitted again
-            hi = int(self.rng["velocity_filter"].hi)
+            hi = int(self.rng[self.counted].hi)
             best = (f, x, self.taps)
             tried = {self.taps}
             while True:
@@ -507,7 +497,8 @@ class Model:
         ts = [math.exp(float(x[0])), *anchors]
         lo, hi = math.log(0.15 * min(ts)), math.log(1.5 * max(ts))
         grid = np.linspace(lo, hi, max(7, int(math.ceil((hi - lo) / 0.3)) + 1))
-        top = int(self.rng["velocity_filter"].hi)
+        assert self.counted is not None
+        top = int(self.rng[self.counted].hi)
         coarse = [n for n in _COARSE_TAPS if n <= top]
         for g in grid.tolist():
             xt = x.copy()
@@ -559,10 +550,7 @@ def fit_causes(
     max_iter: int = 25,
     scan: bool | None = True,
     polish: tuple[str, ...] = (),
-    pole: bool | None = None,
-    cap: bool | None = None,
-    filtered: bool | None = None,
-    driver: bool | None = None,
+    way: Way | None = None,
 ) -> Fit:
     """The first-order model with ``causes`` fitted jointly, from the best of ``starts``
     ((T in s, {cause: Effects field value})) by Levenberg-Marquardt. With a moving average
@@ -571,64 +559,29 @@ def fit_causes(
     starts with other values of it are polished too (a cause that does not act at the best
     start has no gradient to grow by), and the best result kept.
 
-    ``pole``: the extra pole on the measurement (True) or on the drive (False); None: both
-    when a cause that is not linear (dry friction, a coast, a cap) acts with it, where the
-    side shows, and the better kept; with a coast, a pole on the drive is fitted both as the
-    armature's and as a driver's (``driver``, :attr:`Effects.pole_driver`; None: both).
-    ``cap``: the current limit holds while braking too
-    (True) or only while accelerating (False); None: both tried when it is among the causes.
-    ``filtered``: a pole on the measurement is the logger's filter of the speed column
-    (:attr:`Effects.pole_filtered`); None: so when the column is smooth (``prob.smooth``)
-    and no average is among the causes, else a lag of the angle. A speed of counts differenced
-    over a lagged angle keeps the counts' steps; a smooth column was filtered after the
-    differencing (or is an analogue speed read at the row), and such a filter reads the
-    speed half a sample earlier than a lag of the angle differenced over the sample: on the
-    independent generator's tuning seeds the lag took a logger's filter's T2 36 % short
-    (28.6 ms for 44 ms at 25 ms samples). With an average among the causes the column is
-    smooth because of the average, and a pole beside it stays a lag of the angle. With only
-    linear causes a pole on the drive and a lag of the angle act alike, but the filter of
-    the column does not, so both are fitted then and the better kept."""
-    filt = (
-        bool(filtered) if filtered is not None else prob.smooth and "velocity_filter" not in causes
-    )
-    sides = [(bool(pole), bool(filtered), bool(driver))]
-    if pole is None and "second_pole" in causes:
-        if NONLINEAR & set(causes):
-            sides = [(False, False, False), (True, filt, False)]
-        elif filt:
-            sides = [(False, False, False), (True, True, False)]
-    if driver is None and not pole and {"second_pole", "coast_on_zero"} <= set(causes):
-        sides.append((False, False, True))
-    caps = [bool(cap)]
-    if cap is None and "current_limit" in causes:
-        caps = [False, True]
+    ``way``: the flags of the way each cause acts (an extra pole on the measurement, a cap
+    that brakes too: :attr:`.effects.Candidate.ways`); None: every way of every cause is
+    fitted, the first from ``starts``, and the better kept."""
     out: Fit | None = None
-    for side in sides:
-        for both in caps:
-            if out is None:
-                f = _fit_side(prob, causes, rng, starts, max_iter, scan, polish, side, both)
-            else:
-                # the other variant from where the first ended, and from every start (scored
-                # again: a start far from the first variant's valley, a cap's ramp with
-                # little drag, may be the best in this one): the variants differ only where
-                # the wheel stops, coasts or is capped
-                again = [(out.T, values_of(out)), *starts]
-                if side[1] and not out.effects.pole_filtered:
-                    again.insert(0, (out.T, _as_filter(values_of(out), prob.ts)))
-                f = _fit_side(prob, causes, rng, again, max_iter, False, (), side, both)
-            if out is None or f.sse_white < out.sse_white:
-                out = f
+    for w in ways(tuple(causes), prob.smooth) if way is None else [way]:
+        if out is None:
+            f = _fit_side(prob, causes, rng, starts, max_iter, scan, polish, w)
+        else:
+            # the other way from where the first ended, and from every start (scored
+            # again: a start far from the first way's valley, a cap's ramp with little
+            # drag, may be the best in this one): the ways differ only where the wheel
+            # stops, coasts or is capped; a cause may carry the first way's values over
+            again = [(out.T, values_of(out)), *starts]
+            for c in causes:
+                carry = BY_CAUSE[c].carry
+                moved = None if carry is None else carry(w, out.effects, values_of(out), prob.ts)
+                if moved is not None:
+                    again.insert(0, (out.T, moved))
+            f = _fit_side(prob, causes, rng, again, max_iter, False, (), w)
+        if out is None or f.sse_white < out.sse_white:
+            out = f
     assert out is not None
     return out
-
-
-def _as_filter(values: dict[str, float], ts: float) -> dict[str, float]:
-    """``values`` with the lag of the angle T2 (s) turned into the filter of the speed column
-    that delays the reading as much: ts a/(1 - a) = T2 with a = exp(-ts/T2_filter)."""
-    t2 = values.get("second_pole", 0.0)
-    if t2 <= 0.0:
-        return values
-    return {**values, "second_pole": ts / math.log1p(ts / t2)}
 
 
 def _fit_side(
@@ -639,16 +592,14 @@ def _fit_side(
     max_iter: int,
     scan: bool | None,
     polish: tuple[str, ...],
-    side: tuple[bool, bool, bool],
-    cap_both: bool,
+    way: Way,
 ) -> Fit:
     m = Model(prob, causes, rng)
-    m.pole_measured, m.pole_filtered, m.pole_driver = side
-    m.cap_both = cap_both
+    m.way = way
     scored = []
     for T, values in starts:
-        if "velocity_filter" in causes:
-            m.taps = int(round(values.get("velocity_filter", m.taps)))
+        if m.counted is not None:
+            m.taps = int(round(values.get(m.counted, m.taps)))
         x = m.x_of(T, values)
         scored.append((m.sse(x), m.taps, x, values))
     ok = [r for r in scored if math.isfinite(r[0])]
@@ -666,12 +617,12 @@ def _fit_side(
                 seen.add(r[3].get(c))
                 picks.append(r)
     best: Fit | None = None
-    ways = (True, False) if scan is None and "velocity_filter" in causes else (bool(scan),)
+    scans = (True, False) if scan is None and m.counted is not None else (bool(scan),)
     for _, taps, x, _ in picks:
-        for way in ways:
+        for full in scans:
             m.taps = taps
             xs = x
-            if "velocity_filter" in causes and way:
+            if m.counted is not None and full:
                 xs = m.scan_taps(x, sorted({T for T, _ in starts}))
             f = m.fit(xs, max_iter)
             if best is None or f.sse_white < best.sse_white:
@@ -681,10 +632,12 @@ def _fit_side(
 
 
 def values_of(f: Fit) -> dict[str, float]:
-    """{cause: Effects field value} of a fit (and the cap's drag share under ``DRAG``)."""
+    """{cause: Effects field value} of a fit (and each cause's second parameter under its
+    key, :attr:`.effects.Candidate.second`)."""
     out = {c: f.value(c) for c in f.causes}
-    if "current_limit" in f.causes:
-        out[DRAG] = f.effects.drag
+    for c in f.causes:
+        for sec in BY_CAUSE[c].second:
+            out[sec.key] = getattr(f.effects, sec.field)
     return out
 
 
@@ -699,10 +652,7 @@ def refit(prob: Problem, f: Fit, rng: dict[str, Range], max_iter: int = 8) -> Fi
         [(f.T, values_of(f))],
         max_iter,
         scan=False,
-        pole=f.effects.pole_measured,
-        filtered=f.effects.pole_filtered,
-        cap=f.effects.cap_both,
-        driver=f.effects.pole_driver,
+        way=way_of(f.effects),
     )
 
 
@@ -729,10 +679,7 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     """
     m = Model(prob, f.causes, rng)
     m.taps = f.effects.taps
-    m.pole_measured = f.effects.pole_measured
-    m.pole_filtered = f.effects.pole_filtered
-    m.pole_driver = f.effects.pole_driver
-    m.cap_both = f.effects.cap_both
+    m.way = way_of(f.effects)
     x = m.x_of(f.T, values_of(f))
     T, fx = m.effects(x)
     g = m.response(T, fx)
@@ -769,7 +716,7 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
         if a.cause == "T":
             out["T"] = (math.exp(lo_x), math.exp(hi_x))
             continue
-        if a.cause == DRAG:
+        if a.second:
             continue
         name = BY_CAUSE[a.cause].param
         lo_v, hi_v = (
@@ -778,8 +725,8 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
         if not a.log_scale:
             lo_v = max(lo_v, 0.0)
         out[name] = (reported(a.cause, lo_v, k), reported(a.cause, hi_v, k))
-    if "velocity_filter" in f.causes:
-        out["taps"] = _taps_interval(
+    if m.counted is not None:
+        out[BY_CAUSE[m.counted].param] = _taps_interval(
             m, x, f, 1.0 + Z95**2 * (1.0 + rho) / (1.0 - rho) / max(n - p, 1)
         )
     return out
@@ -788,7 +735,8 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
 def _taps_interval(m: Model, x: FloatArray, f: Fit, tol: float) -> tuple[float, float]:
     T, fx = m.effects(x)
     p = m.prob
-    hi = int(m.rng["velocity_filter"].hi)
+    assert m.counted is not None
+    hi = int(m.rng[m.counted].hi)
     top = hi
     tb = p.t[0] - p.ts * np.arange(top, 0, -1)
     theta = angle_at(pieces(p.st, T, fx, p.z0), np.concatenate((tb, p.t)), fx)

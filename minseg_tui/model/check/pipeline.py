@@ -16,7 +16,16 @@ from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
 from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select, swapped
 from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
-from minseg_tui.model.check.effects import BY_CAUSE, NAMES, UNITS, cannot_judge, in_words, ranges
+from minseg_tui.model.check.effects import (
+    BY_CAUSE,
+    CANDIDATES,
+    NAMES,
+    TELL_APART,
+    UNITS,
+    cannot_judge,
+    in_words,
+    ranges,
+)
 from minseg_tui.model.check.evidence import Log, shown_stop
 from minseg_tui.model.check.figures import (
     Gain,
@@ -357,9 +366,9 @@ def _report(
         sel.tried += swapped(sel, head, rng, noise)
     alts = rivals(sel, head, rng, noise, samp.column_floor) if named else []
     swaps = {
-        c: _swap_ratio(sel, ext, head, rng, c, other)
-        for c, other in (("dead_time", "second_pole"), ("second_pole", "dead_time"))
-        if c in ext.causes and other not in ext.causes
+        c.cause: _swap_ratio(sel, ext, head, rng, c.cause, c.claim.rival)
+        for c in CANDIDATES
+        if c.claim is not None and c.cause in ext.causes and c.claim.rival not in ext.causes
     }
     finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full, alts)
     finding = _plain_words(finding, swaps)
@@ -627,41 +636,23 @@ def _swap_ratio(
         f = min(done, key=lambda x: x.sse_white)
     else:
         vals = {c: ext.value(c) for c in ext.causes if c != out}
-        guess = ext.value(out) if out in ("dead_time", "second_pole") else 0.0
-        vals[into] = max(guess, head.ts)
+        # a claim's rival acts alike: it starts where the cause ended
+        vals[into] = max(ext.value(out), head.ts)
         f = fit_causes(head, tuple(want), rng, [(ext.T, vals), (0.7 * ext.T, vals)], scan=False)
     return f.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
 
 
-_PURE_DELAY = "(a pure delay; an extra pole would start at once, only more slowly)"
-_NO_CORNER = " (a pure delay would show a corner)"
-
-
 def _plain_words(finding: Finding, swaps: dict[str, float]) -> Finding:
-    """The finding with the claims a delay and a pole make against each other stated with
-    the figure behind them: never 'a pure delay' when a pole in its place fits nearly as
-    well (within ``POLE_OR_DELAY`` times the whitened residual), and the reverse."""
+    """The finding with the claims causes make against each other (:attr:`Candidate.claim`:
+    a delay is pure, a pole shows no corner) stated with the figure behind them: never 'a
+    pure delay' when a pole in its place fits nearly as well (within ``POLE_OR_DELAY`` times
+    the whitened residual), and the reverse."""
 
     def fix(text: str) -> str:
-        r = swaps.get("dead_time")
-        if r is not None and _PURE_DELAY in text:
-            text = text.replace(
-                _PURE_DELAY,
-                f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened "
-                "residual)"
-                if r >= POLE_OR_DELAY
-                else f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
-                "the whitened residual: this log hardly tells a delay from a pole)",
-            )
-        r = swaps.get("second_pole")
-        if r is not None and _NO_CORNER in text:
-            text = text.replace(
-                _NO_CORNER,
-                f" (a pure delay in its place leaves {r:.1f} times the whitened residual)"
-                if r >= POLE_OR_DELAY
-                else f" (though a pure delay in its place leaves only {r:.2f} times the "
-                "whitened residual: this log hardly tells a pole from a delay)",
-            )
+        for c in CANDIDATES:
+            r = swaps.get(c.cause)
+            if c.claim is not None and r is not None and c.claim.text in text:
+                text = text.replace(c.claim.text, c.claim.said(r, r >= POLE_OR_DELAY))
         return text
 
     return replace(
@@ -716,20 +707,11 @@ def _finding(
                 "acts in this log, so the named cause(s) explain only part of it",
             )
         )
-    if samp.smooth and any(c in ext.causes for c in ("velocity_filter", "second_pole")):
-        caveats.append(
-            Caveat(
-                "cannot_tell",
-                "velocity_filter" if "velocity_filter" in ext.causes else "second_pole",
-                "this speed is smooth, not a difference of encoder counts: an average of the "
-                "speed and a first-order filter of it (a pole on the measurement) are both "
-                "filters of the reading, and the pole named acts there; the fit prefers it"
-                if ext.effects.pole_measured and "velocity_filter" not in ext.causes
-                else "this speed is smooth, not a difference of encoder counts: an averaging "
-                "filter on the speed and an extra pole in the motor look alike here, so the log "
-                "cannot tell them apart; the fit prefers the one named",
-            )
-        )
+    on_reading = [c for c in CANDIDATES if c.smooth is not None and c.cause in ext.causes]
+    if samp.smooth and on_reading:
+        first = on_reading[0]
+        assert first.smooth is not None
+        caveats.append(Caveat("cannot_tell", first.cause, first.smooth(ext)))
     col = samp.column_floor(taps)
     over = 1.5 * (col or 0.0) * (1.22 if taps == 1 else 1.0)
     if col is not None and noise > over:
@@ -852,28 +834,10 @@ def _finding(
     return Finding(cause, evidence, others, caveats, explained, runner, why, ambiguous)
 
 
-_TELL: dict[frozenset[str], str] = {
-    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
-    "samples after each step (more counts per sample, a faster sampling where the counts "
-    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
-    "bends smoothly from the start)",
-    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
-    "(a delay shifts the rise, an average turns it into a ramp)",
-    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
-    "of the speed acts on the measurement only, a pole on the motor)",
-    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
-    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
-    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
-    "limits the big steps only, friction takes the same volts off every level)",
-    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
-    "would (a coast acts only at 0)",
-}
-
-
 def _what_would_tell(a: list[str], b: list[str]) -> str:
     """What kind of log would tell causes ``a`` from ``b`` apart, in words."""
     diff = frozenset(set(a) ^ set(b))
-    for pair, words in _TELL.items():
+    for pair, words in TELL_APART.items():
         if pair <= diff:
             return words
     return (
@@ -886,13 +850,9 @@ def _untold(evidence: str, ambiguous: list[list[str]]) -> str:
     """``evidence`` without the claims that a rival the log cannot rule out would contradict
     (never 'a pure delay' when a pole fits nearly as well)."""
     rivals_named = {c for a in ambiguous for c in a}
-    if "second_pole" in rivals_named or "velocity_filter" in rivals_named:
-        evidence = evidence.replace(
-            "(a pure delay; an extra pole would start at once, only more slowly)",
-            "(a delay, or in this log an extra pole or an average about as well)",
-        )
-    if "dead_time" in rivals_named:
-        evidence = evidence.replace(" (a pure delay would show a corner)", "")
+    for c in CANDIDATES:
+        if c.claim is not None and any(r in rivals_named for r in c.claim.voided_by):
+            evidence = evidence.replace(c.claim.text, c.claim.void)
     return evidence
 
 
