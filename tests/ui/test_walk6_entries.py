@@ -8,7 +8,6 @@ import re
 from pathlib import Path
 
 from textual.content import Content
-from textual.widgets._toast import Toast
 
 from minseg_tui.quantities import format_constant
 from minseg_tui.report.write import write_report
@@ -93,8 +92,8 @@ async def test_f8_names_the_folder_and_files_whole_at_80x24(tmp_path):
         await goto(pilot, "summary", focus=None)
         await pilot.press("f8")
         await settle(pilot, lambda: bool(app.exported))
-        await settle(pilot, lambda: bool(app.screen.query(Toast)))
-        (toast,) = app.screen.query(Toast)
+        await settle(pilot, lambda: bool(app.screen.query("Toast")))
+        (toast,) = app.screen.query("Toast")
         lines = _lines(toast)
         assert any(folder in line for line in lines), lines
         assert any("report.md" in line for line in lines), lines
