@@ -2,8 +2,8 @@
 // The real work is in src/: src/core (board-independent, host-tested) and
 // src/board (ATmega2560 registers; it does not use the Arduino core's
 // Serial, millis or analogWrite). Choose the board profile in
-// src/board/profile.h (default MinSegMega) or build with `make -C firmware
-// PROFILE=...`.
+// src/board/profile.h (default MinSegMega, the first of src/board/pins.def) or
+// build with `make -C firmware PROFILE=...`.
 #include "src/board/app.h"
 
 void setup() { minseg_setup(); }

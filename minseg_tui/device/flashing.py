@@ -26,11 +26,8 @@ from importlib import resources
 from pathlib import Path
 
 from minseg_tui.device import hexfile
-
-PROFILES = ("MinSegMega", "M2V3", "M1V4")
-"""The board profiles the firmware is built for (firmware/Makefile's PROFILES)."""
-
-DEFAULT_PROFILE = "MinSegMega"
+from minseg_tui.device.board_profiles import DEFAULT_PROFILE as DEFAULT_PROFILE
+from minseg_tui.device.board_profiles import PROFILES as PROFILES
 
 MCU = "atmega2560"
 PROGRAMMER = "wiring"
@@ -241,14 +238,17 @@ def memory_use(elf: Path) -> tuple[str, str]:
 
 def refresh_table(build: Path, readme: Path) -> list[str]:
     """Rewrite the rows of the profiles in ``readme``'s memory table (``| <profile> | flash
-    | RAM |``) with what avr-size says of the build; one line per row changed."""
+    | RAM |``) with what avr-size says of the build, a new profile's row put after the row of
+    the profile before it; one line per row written."""
     text = readme.read_text(encoding="utf-8")
-    done = []
+    done: list[str] = []
     for profile in PROFILES:
         flash, ram = memory_use(build / profile / "minseg-fw.elf")
         row = f"| {profile} | {flash} | {ram} |"
         text, n = re.subn(rf"^\| {profile} \| [^|\n]* \| [^|\n]* \|$", row, text, flags=re.M)
-        if n != 1:
+        if n == 0 and done and text.count(f"\n{done[-1]}\n") == 1:
+            text = text.replace(f"\n{done[-1]}\n", f"\n{done[-1]}\n{row}\n")
+        elif n != 1:
             raise ValueError(f"{readme}: expected one memory table row for {profile}, found {n}")
         done.append(row)
     readme.write_text(text, encoding="utf-8")

@@ -23,6 +23,7 @@ from minseg_tui.lab.views import check_words, own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
+from minseg_tui.model.check import words as model_words
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import ResponseResult, Rise
 from minseg_tui.model.runlog import RunLog
@@ -411,19 +412,14 @@ def _run_figure(log: RunLog, name: str) -> Figure:
     return Figure(stack((top, bottom)), 720, f"Run {name}: speed and voltage against time.")
 
 
-def _params(p: dict[str, float], intervals: dict[str, tuple[float, float]] | None = None) -> str:
-    """Parameters as the screen's details give them (:func:`check_words.params`: T and the
-    delays in ms) and, when given, their 95 % intervals."""
-    return check_words.params(p, intervals)
-
-
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     g = r.gain
     named = r.finding.cause != "none"
-    lead = check_words.stem(r.lead.figure) if r.lead else ""
+    lead = model_words.stem(r.lead.figure) if r.lead else ""
     rows = []
-    for key, (name, unit) in sorted(check_words.FIGURES.items(), key=lambda f: f[0] != lead):
-        b, e = check_words.figure(g, key)
+    for key, words in sorted(model_words.FIGURES.items(), key=lambda f: f[0] != lead):
+        name, unit = words.name, words.unit
+        b, e = model_words.figure(g, key)
         if b is None:
             continue
         rows.append(
@@ -439,8 +435,9 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
 def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
-    name, unit = check_words.figure_name(r.lead.figure)
-    b, e = check_words.figure(r.gain, r.lead.figure)
+    words = model_words.figure_words(r.lead.figure)
+    name, unit = words.name, words.unit
+    b, e = model_words.figure(r.gain, r.lead.figure)
     if b is None:
         return None
     if r.finding.cause == "none" or e is None:
@@ -630,7 +627,7 @@ def _model_check_section(session: Session) -> Section | None:
     if r.sampling is not None:
         items.append(f"The log: {r.sampling.text()}")
     items += [
-        f"First-order model fitted to {mc.run}: {_params(b.params, b.intervals)}; simulated on "
+        f"First-order model fitted to {mc.run}: {model_words.params(b.params, b.intervals)}; simulated on "
         f"the recorded voltage it misses by {_num(b.rmse, 3)} rad/s rms (fit "
         f"{_num(b.fit_percent, 3)} %).",
         *_two_fits(session, mc.run, b.params),
@@ -638,10 +635,13 @@ def _model_check_section(session: Session) -> Section | None:
         f"Most likely cause: {in_words(f.cause)}. The check's evidence, over the whole log: "
         f"{f.evidence}",
     ]
-    items += [f"Also: {in_words(o.cause)} ({_params(o.params)}): {o.evidence}" for o in f.others]
+    items += [
+        f"Also: {in_words(o.cause)} ({model_words.params(o.params)}): {o.evidence}"
+        for o in f.others
+    ]
     if named:
         items.append(
-            f"Extended model ({in_words(e.model)}): {_params(e.params, e.intervals)}; "
+            f"Extended model ({in_words(e.model)}): {model_words.params(e.params, e.intervals)}; "
             f"{_num(e.rmse, 3)} rad/s rms (fit {_num(e.fit_percent, 3)} %), "
             f"{_num(r.gain.rmse_reduction_percent, 3)} % lower rms."
         )
@@ -670,10 +670,10 @@ def _model_check_section(session: Session) -> Section | None:
             + ". An error near it says nothing about a model; the part above it does."
         )
     if f.caveats:
-        details.blocks.append("What the check cannot say here:")
+        details.blocks.append(model_words.CAVEATS)
         details.blocks.append([c.text for c in f.caveats])
     if r.anomalies:
-        details.blocks.append("Anomalies (reported, not counted as causes):")
+        details.blocks.append(model_words.ANOMALIES)
         details.blocks.append([a.text for a in r.anomalies])
     sec.blocks.append(details)
     return sec

@@ -136,7 +136,7 @@ def test_unfinished_and_damaged_are_listed_with_what_they_lack(klass, capsys):
     g = _by_members(json.loads(out))
     late = g["Late Comer"]
     assert late["step"] == "Tasks 6-9" and late["K"] is None and late["k_v"] is not None
-    assert late["lacks"] == ["no step run recorded yet (Task 10)"] and late["cause"] == ""
+    assert late["lacks"] == ["no run recorded yet (Task 10)"] and late["cause"] == ""
     broken = g["zz-broken"]
     assert broken["members"] == [] and broken["k_v"] is None
     assert (
@@ -153,7 +153,7 @@ def test_text_table_names_steps_and_units(klass, capsys):
     assert "units: R Ω, k_v V s/rad" in out
     ada = next(line for line in out.splitlines() if "Ada 0, Bo 0" in line)
     assert re.search(r"dry friction\s+T [+-]\d+ %$", ada)  # the group's own T against T_63
-    assert "! R = 12.00 Ω is outside" in out and "- lacks: no step run recorded yet" in out
+    assert "! R = 12.00 Ω is outside" in out and "- lacks: no run recorded yet" in out
 
 
 def test_out_writes_markdown_html_and_csv(klass, tmp_path, capsys):

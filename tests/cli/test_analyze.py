@@ -198,7 +198,7 @@ def test_nxt_large_run_down_stops_in_finite_time(tmp_path, capsys):
     # both models stay within the encoder's floor here: no "all noise" said of one of them
     assert main(["analyze", str(run2)]) == 0
     words = capsys.readouterr().out
-    assert "above the floor 0 -> 0 rad/s;" in words
+    assert "speed error above the encoder's noise floor 0 -> 0 rad/s;" in words
     assert "all noise" not in words
 
 

@@ -192,7 +192,7 @@ def test_the_gain_details_give_the_error_above_the_noise_the_tui_shows():
     # gave the floor's figure only, so the TUI said what the CLI did not
     _, words = analyze("micromouse-n20-duty100")
     details = words.split("\nGain: ")[1].splitlines()[1]
-    assert "above the noise 0.477 -> 0 rad/s" in details, details
+    assert "speed error above the measured noise 0.477 -> 0 rad/s" in details, details
 
 
 def test_aligned_probe_is_not_said_to_be_explained_down_to_its_noise():

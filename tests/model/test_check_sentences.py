@@ -110,8 +110,8 @@ def test_an_interval_over_a_factor_of_ten_and_a_t_on_its_bound_are_not_printed_a
     assert "T = 2.000 ms (on the lower end of the range the fit tries, 0.002000-3.000 s" in baseline
     assert "2e-07" not in baseline and "2.00e-07" not in baseline
     assert "delay = " in extended and extended.count("not determined by this log") == 2
-    # a determined interval still reads as numbers
-    assert re.search(r"K = [\d.]+ rad/s/V \(95 %: [\d.]+-[\d.]+\)", extended)
+    # a determined interval still reads as numbers, with its unit as on the screens
+    assert re.search(r"K = [\d.]+ rad/s/V \(95 %: [\d.]+ – [\d.]+ rad/s/V\)", extended)
 
 
 def test_a_moving_average_of_one_length_only_is_not_said_to_be_undetermined():

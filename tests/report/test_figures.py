@@ -18,9 +18,8 @@ import pytest
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.compare import two_T_of
 from minseg_tui.lab.state.session import Session
-from minseg_tui.model.check.effects import UNITS, in_words
-from minseg_tui.quantities import UNITS as QUANTITY_UNITS
-from minseg_tui.quantities import shown_unit
+from minseg_tui.model.check.effects import PARAM_UNITS, in_words
+from minseg_tui.quantities import UNITS, shown_unit
 from minseg_tui.report import svg
 from minseg_tui.report.write import write_report
 from tests.report.test_report import _session
@@ -265,8 +264,8 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     assert rows[0].startswith("| rms error of the angle (leads) |")  # the table leads with it
     (ext,) = [ln for ln in section.splitlines() if ln.startswith("- Extended model")]
     for p, (lo, hi) in result.extended.intervals.items():
-        said = shown_unit(UNITS[p])  # T and the delays in ms, as the story gives them
-        scale = QUANTITY_UNITS[said].scale if said != UNITS[p] else 1.0
+        said = shown_unit(PARAM_UNITS[p])  # T and the delays in ms, as the story gives them
+        scale = UNITS[said].scale if said != PARAM_UNITS[p] else 1.0
         unit = re.escape(said)
         m = re.search(rf"\b{p} = ({NUM}) {unit} \(95 %: ({NUM}) – ({NUM}) {unit}\)", ext)
         assert m, p

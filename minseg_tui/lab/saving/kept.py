@@ -25,7 +25,7 @@ be read is passed over (never a reason to refuse the session), and the file's sc
 before, reads as before).
 
 Units: SI (K rad/s/V, T, T_63, dead_time s, u_ss V, omega_ss rad/s; the check's
-parameters in the units of :data:`minseg_tui.model.check.effects.UNITS`).
+parameters in the units of :data:`minseg_tui.model.check.effects.PARAM_UNITS`).
 """
 
 from __future__ import annotations

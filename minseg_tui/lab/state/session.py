@@ -152,6 +152,11 @@ class _Cache:
         may be computed by two workers at once: neither part is lost)."""
 
 
+NO_RUN_YET = "no run recorded yet (Task 10)"
+"""What stands in for the model check and the class's figures before any run is recorded
+(the square wave of Task 10 records one)."""
+
+
 class SessionFrozen(RuntimeError):
     """A change asked of a snapshot (:meth:`Session.snapshot`): a program error."""
 
@@ -876,7 +881,7 @@ class Session:
             return ModelCheck(
                 None,
                 None,
-                "no step run recorded yet (Task 10)" if name is None else f"no run {name}",
+                NO_RUN_YET if name is None else f"no run {name}",
             )
         key = (self._run_version, run.name)
         cached = self._cache.checks.get(key)

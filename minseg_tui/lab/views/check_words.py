@@ -10,13 +10,14 @@ the run's input voltage, and writes what the lab screen and the report both lead
 2. the likely cause in everyday words;
 3. how much better the extended model does, in one figure.
 
-The full text for lab assistants stays :func:`minseg_tui.model.check.text` (``minseg-tui
-analyze``). Units: s, V, rad/s, rad (said: T and the delays in ms).
+The full text for lab assistants is :func:`minseg_tui.model.check.text` (``minseg-tui
+analyze``); the gain figures' names and a model's parameters are written for both by
+:mod:`minseg_tui.model.check.words`. Units: s, V, rad/s, rad (said: T and the delays in ms).
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,13 +25,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
-from minseg_tui.model.check.effects import UNITS as check_units
-from minseg_tui.model.check.figures import Gain
-from minseg_tui.model.check.text import bound_words, interval_words, value_words
+from minseg_tui.model.check.words import figure, figure_words, stem
 from minseg_tui.quantities import (
-    NOT_DETERMINED,
     format_constant,
-    format_constant_interval,
     format_fixed,
     format_percent,
     format_typed,
@@ -45,23 +42,6 @@ EVERYDAY: dict[str, str] = {c.cause: c.everyday for c in CANDIDATES}
 
 SHORT: dict[str, str] = {c.cause: c.short for c in CANDIDATES}
 """Each cause in two or three words (for 'with ... added' and 'or ...')."""
-
-FIGURE_WORDS: dict[str, str] = {
-    "angle_rms": "its error in the wheel's angle",
-    "heldout_rmse": "its speed error on steps it was not fitted to",
-    "above_noise": "its speed error beyond the noise",
-    "above_floor": "its speed error beyond the encoder's noise",
-    "rmse": "its rms speed error",
-}
-"""The gain figures (``gain`` keys without their baseline_/extended_ prefix) in words."""
-
-FIGURE_UNITS: dict[str, str] = {
-    "angle_rms": "rad",
-    "heldout_rmse": "rad/s",
-    "above_noise": "rad/s",
-    "above_floor": "rad/s",
-    "rmse": "rad/s",
-}
 
 SLOWER: dict[str, int] = {c.cause: c.slower for c in CANDIDATES}
 """Which way each cause makes the first-order model miss in its close-up (its ``slower``)."""
@@ -87,49 +67,6 @@ class Moment:
     first_order: float
     extended: float
     still: bool = False
-
-
-FIGURES: dict[str, tuple[str, str]] = {
-    "angle_rms": ("rms error of the angle", "rad"),
-    "heldout_rmse": ("speed error on held-out steps", "rad/s"),
-    "above_noise": ("speed error above the measured noise", "rad/s"),
-    "above_floor": ("speed error above the encoder's noise floor", "rad/s"),
-    "rmse": ("rms error of the speed", "rad/s"),
-}
-"""The model check's gain figures (``gain`` keys without their baseline_/extended_ prefix,
-:func:`stem`): what the screens and the report call them and their unit, the most telling
-first."""
-
-
-def figure_name(key: str) -> tuple[str, str]:
-    """The name and unit of gain figure ``key`` (either model's key, or its :func:`stem`)."""
-    s = stem(key)
-    return FIGURES.get(s, (s, ""))
-
-
-def stem(key: str) -> str:
-    """A gain figure's key without its model: 'heldout_extended_rmse' -> 'heldout_rmse',
-    'baseline_angle_rms' -> 'angle_rms'."""
-    return key.replace("baseline_", "").replace("extended_", "")
-
-
-def figure(gain: Gain | Mapping[str, float | None], key: str) -> tuple[float | None, float | None]:
-    """The first-order and the extended model's value of gain figure ``key`` (either
-    model's key, or its :func:`stem`): the keys are 'baseline_<stem>' and 'extended_<stem>',
-    or 'heldout_baseline_rmse' and 'heldout_extended_rmse'. None where the log does not give
-    it. ``gain``: the check's record, or its JSON as a session keeps it."""
-    g = gain.to_dict() if isinstance(gain, Gain) else gain
-    s = stem(key)
-    for b, e in (
-        (f"baseline_{s}", f"extended_{s}"),
-        (
-            s.replace("heldout_", "heldout_baseline_", 1),
-            s.replace("heldout_", "heldout_extended_", 1),
-        ),
-    ):
-        if b in g or e in g:
-            return g.get(b), g.get(e)
-    return None, None
 
 
 def _v(x: float) -> str:
@@ -225,33 +162,6 @@ def simulated(r: CheckResult) -> str:
     )
 
 
-def params(
-    p: Mapping[str, float], intervals: Mapping[str, tuple[float, float]] | None = None
-) -> str:
-    """A model's parameters as the details on the screen and in the report give them, in the
-    units the story uses (T and the delays in ms: :func:`~minseg_tui.quantities.format_constant`)
-    and, when given, with their 95 % intervals: 'T = 42.61 ms (95 %: 42.1 – 43.0 ms), K =
-    1.996 rad/s/V'. Machine output (JSON, CSV) keeps SI."""
-    out = []
-    for k, v in p.items():
-        unit = check_units.get(k, "")
-        text = (
-            f"{k} = {value_words(k, v)} {unit}".rstrip()
-            if k == "taps"
-            else f"{k} = {format_constant(v, unit)}"
-        )
-        bound = bound_words(k, v)
-        if bound is not None:
-            text += f" ({bound})"
-        elif intervals and k in intervals:
-            lo, hi = intervals[k]
-            words = interval_words(k, lo, hi, unit)
-            numbers = k != "taps" and not words.startswith(NOT_DETERMINED)
-            text += f" (95 %: {format_constant_interval(lo, hi, unit) if numbers else words})"
-        out.append(text)
-    return ", ".join(out)
-
-
 def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
     """Why the check's first-order ``T`` (s) is not the program's least-squares reading of
     the same run, ``T_ls`` (s) and ``K_ls`` (rad/s/V), the one Tasks 11-12 show beside the
@@ -343,8 +253,7 @@ def _gain(r: CheckResult) -> str:
     if b is None or e is None:
         return ""
     added = " and ".join(SHORT.get(c, c) for c in [f.cause, *(o.cause for o in f.others)])
-    words = FIGURE_WORDS.get(key, key)
-    unit = FIGURE_UNITS.get(key, "")
+    words, unit = figure_words(key).said, figure_words(key).unit
     if e >= b:
         return (
             f"With {added} added (the extended model), {words} is no smaller "

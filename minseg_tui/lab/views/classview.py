@@ -38,7 +38,7 @@ from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import read_run
 from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_key
 from minseg_tui.lab.state.results import Results
-from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.session import NO_RUN_YET, Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views.own_first import OwnRow
 from minseg_tui.model.check.effects import in_words
@@ -439,7 +439,7 @@ def _values(
     }
     lacks = list(res.problems)
     if not session.runs:
-        lacks.append("no step run recorded yet (Task 10)")
+        lacks.append(NO_RUN_YET)
     elif ident is None and kept is not None and kept.step is not None:
         values.update({"K": kept.step.K, "T_63": kept.step.T_63, "T": kept.step.T})
     elif ident is None:

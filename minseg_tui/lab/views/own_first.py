@@ -22,7 +22,7 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.shown import PolicyRecord
-from minseg_tui.lab.views.session import MARK, NOT_JUDGED, REVEAL_KEY
+from minseg_tui.lab.views.session import MARK, NOT_JUDGED, REVEAL_KEY, USES_RUN
 from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
@@ -414,7 +414,7 @@ def run_used(session: Session) -> str:
             f"the newest complete run, at {ts} (the group chose none, and there is no "
             f"complete {manual} run)"
         )
-    text = f"Tasks 11-15 and the model check use run {run.name}, {why}"
+    text = f"{USES_RUN} {run.name}, {why}"
     if run.interrupted:
         text += (
             f"; it ended before its plan did ({run.samples} samples), interrupted by: "

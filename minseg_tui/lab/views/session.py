@@ -15,7 +15,7 @@ it for one thread at a time.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -34,6 +34,7 @@ from minseg_tui.lab.state.results import Comparison, Notice
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_words
 from minseg_tui.model import identify as model_identify
+from minseg_tui.model.check import words as model_words
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.identify.identification import determined
@@ -980,15 +981,15 @@ class CheckView:
     first-order model it fitted, and so the model (none without a result)."""
 
 
-_stem = check_words.stem
+_stem = model_words.stem
 
 
 def _figure(gain: Gain, key: str, named: bool) -> str | None:
     """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
-    b, e = check_words.figure(gain, key)
-    unit = check_words.figure_name(stem)[1]
+    b, e = model_words.figure(gain, key)
+    unit = model_words.figure_words(stem).unit
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
     if not named or e is None:
@@ -997,10 +998,6 @@ def _figure(gain: Gain, key: str, named: bool) -> str | None:
         shown = format_value(b, unit, 3)
         return f"first order {shown} → extended 0 (rms error no larger than the noise)"
     return f"first order {_num(b, 3)} → extended {format_value(e, unit, 3)}"
-
-
-def _params(params: Mapping[str, float]) -> str:
-    return check_words.params(params)
 
 
 def check(session: Session) -> CheckView:
@@ -1012,7 +1009,7 @@ def check(session: Session) -> CheckView:
     f, e, g = r.finding, r.extended, r.gain
     named = f.cause != "none"
     ext = (
-        f"{in_words(e.model)}: {_params(e.params)}"
+        f"{in_words(e.model)}: {model_words.params(e.params)}"
         if named
         else "none needed (the baseline is enough)"
     )
@@ -1021,11 +1018,11 @@ def check(session: Session) -> CheckView:
     if r.lead is not None:
         shown = _figure(g, r.lead.figure, named)
         if shown is not None:
-            lead = f"{check_words.figure_name(led)[0]}: {shown}"
+            lead = f"{model_words.figure_words(led).name}: {shown}"
             lead_why = r.lead.why
     others = [
-        f"{check_words.FIGURES[stem][0]} {shown}"
-        for stem in check_words.FIGURES
+        f"{model_words.FIGURES[stem].name} {shown}"
+        for stem in model_words.FIGURES
         if stem != led and (shown := _figure(g, stem, named)) is not None
     ]
     floor = g.get("noise_floor")
@@ -1078,7 +1075,7 @@ def check(session: Session) -> CheckView:
         story=check_words.lead(r, u),
         close_title=check_words.close_up_title(r),
         first_order="first-order model the check fitted to this run and simulated: "
-        + _params(r.baseline.params),
+        + model_words.params(r.baseline.params),
         two_fits=two_fits,
         shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),
     )
@@ -1099,7 +1096,12 @@ def note_drawn(session: Session, view: object) -> list[str]:
 
 
 # -- the run in use -----------------------------------------------------------------------------
+USES_RUN = "Tasks 11-15 and the model check use run"
+"""The start of every line that says which run they use (:func:`run_in_use`, and
+:func:`~minseg_tui.lab.views.own_first.run_used` with why)."""
+
+
 def run_in_use(session: Session) -> str:
     """One line saying which run Tasks 11-15 and the model check use."""
     run = session.response_run()
-    return f"Tasks 11-15 and the model check use run {run.name if run else '— (none yet)'}"
+    return f"{USES_RUN} {run.name if run else '— (none yet)'}"

@@ -148,7 +148,7 @@ class Candidate:
     scale: str = "s"
     reported: Callable[[float, float], float] = lambda value, K: value
     nonlinear: bool = False
-    stop: Callable[[ev.Stop], bool] | None = None
+    stop: Callable[[ev.Fall], bool] | None = None
     slower: int = 1
     """Which way it makes the first-order model miss in its close-up: +1 the measured wheel
     is slower than the model says (it stops sooner, starts later, rises more gently), -1
@@ -386,7 +386,7 @@ FALL_TO = 0.5
 enough that one-count readings (20 % of a slow wheel's speed) do not set the rate."""
 
 
-def _fall_rate(log: ev.Log, s: ev.Stop) -> tuple[float, float, bool]:
+def _fall_rate(log: ev.Log, s: ev.Fall) -> tuple[float, float, bool]:
     """How fast the speed falls after the step-down ``s`` (rad/s^2, the slope of a straight
     line through the speed before it and the readings until the first under FALL_TO of it,
     40 at most, none after the next step), the span that covers (s, from the row before the
@@ -689,8 +689,9 @@ TELL_APART: dict[frozenset[str], str] = {
 cannot tell (the first pair found among the causes two models do not share speaks; a
 pair not here gets the check's general words)."""
 
-UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in CANDIDATES}}
-"""Unit of every parameter a model reports."""
+PARAM_UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in CANDIDATES}}
+"""Unit of every parameter a model reports (SI; by parameter name, where
+:data:`minseg_tui.quantities.UNITS` holds the units by symbol)."""
 
 
 def effects_of(values: dict[str, float]) -> Effects:

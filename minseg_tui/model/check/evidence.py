@@ -40,11 +40,12 @@ class Log:
 
 
 @dataclass(frozen=True)
-class Stop:
-    """A step down while the wheel turned: the row of the step, the speed before it (rad/s,
-    the mean over the ``rows`` rows before the step), and when the measured speed first stood
-    still for good within the stretch (s after the step; None when it still turns at the
-    stretch's end)."""
+class Fall:
+    """A fall: a step down while the wheel turned and the response after it (as a rise
+    follows a rising edge; not the board's STOP). The row of the step, the speed before it
+    (rad/s, the mean over the ``rows`` rows before the step), and when the measured speed
+    first stood still for good within the stretch (s after the step; None when it still
+    turns at the stretch's end)."""
 
     row: int
     speed: float
@@ -53,7 +54,7 @@ class Stop:
     rows: int
 
 
-def falls(log: Log) -> list[Stop]:
+def falls(log: Log) -> list[Fall]:
     """Every step that lowers |u| while the wheel turns, and when the wheel stood still."""
     u, y, t = log.u, log.y, log.t
     change = np.flatnonzero(np.diff(u) != 0) + 1
@@ -74,7 +75,7 @@ def falls(log: Log) -> list[Stop]:
         last_moving = int(run[-1]) if run.size else -1
         if last_moving < b - a - 3:
             after = float(t[a + last_moving + 1] - t[a])
-        out.append(Stop(int(a), speed, after, u[a] == 0, rows))
+        out.append(Fall(int(a), speed, after, u[a] == 0, rows))
     return out
 
 
@@ -89,7 +90,7 @@ def _before(log: Log, stretch: int) -> int:
     return max(3, min(round(BEFORE_S / log.ts), stretch // 4)) if stretch >= 3 else stretch
 
 
-def before_s(log: Log, s: Stop) -> float:
+def before_s(log: Log, s: Fall) -> float:
     """The span (s) the speed before the step-down ``s`` was averaged over."""
     return float(log.t[s.row] - log.t[s.row - s.rows])
 
@@ -98,17 +99,17 @@ def ms(x: float) -> str:
     return f"{x * 1e3:.0f} ms"
 
 
-def stands_still(s: Stop) -> bool:
+def stands_still(s: Fall) -> bool:
     """The wheel stands still within the stretch after the step-down ``s``."""
     return s.after is not None
 
 
-def drops_to_zero(s: Stop) -> bool:
+def drops_to_zero(s: Fall) -> bool:
     """The command drops to zero at the step-down ``s``."""
     return s.to_zero
 
 
-def shown_stop(log: Log, which: Callable[[Stop], bool] | None) -> Stop | None:
+def shown_stop(log: Log, which: Callable[[Fall], bool] | None) -> Fall | None:
     """The step-down the evidence for a cause speaks of, and the close-up shows: the fastest
     of the step-downs ``which`` accepts (the cause's :attr:`~.effects.Candidate.stop`: for dry
     friction those after which the wheel stands still, for a coast the drops to zero); None

@@ -21,7 +21,6 @@ from minseg_tui.model.check.effects import (
     CANDIDATES,
     NAMES,
     TELL_APART,
-    UNITS,
     cannot_judge,
     in_words,
     ranges,
@@ -56,9 +55,9 @@ from minseg_tui.model.check.result import (
     rmse,
 )
 from minseg_tui.model.check.sampling import Sampling, sampling, scatter
+from minseg_tui.model.check.words import params
 from minseg_tui.model.optimize import golden
 from minseg_tui.model.runlog import problem
-from minseg_tui.quantities import format_number
 
 FloatArray = NDArray[np.float64]
 
@@ -600,19 +599,6 @@ def _stop_time(log: Log, order: list[str], ext: Fit) -> float | None:
     return max(1.25 * shown.after, usual)
 
 
-def _params_text(p: dict[str, float]) -> str:
-    """Parameters with their units, a time under a second in ms (as analyze's text)."""
-
-    def one(k: str, v: float) -> str:
-        if k == "taps":
-            return f"{k} = {round(v)} {UNITS[k]}"
-        if UNITS.get(k) == "s" and abs(v) < 1.0:
-            return f"{k} = {format_number(v * 1e3)} ms"
-        return f"{k} = {format_number(v)} {UNITS.get(k, '')}".rstrip()
-
-    return ", ".join(one(k, v) for k, v in p.items())
-
-
 POLE_OR_DELAY = 1.5
 """A named delay is called pure (and a named pole said to show no corner) only when the
 other one, fitted in its place, leaves at least this many times the whitened residual."""
@@ -686,7 +672,7 @@ def _finding(
             Caveat(
                 "on_bound",
                 c,
-                f"{c} came out clear ({_params_text({p: f.params[p], 'T': f.T})}), but {why}: "
+                f"{c} came out clear ({params({p: f.params[p], 'T': f.T})}), but {why}: "
                 "the effect in this log is outside what that cause can express (or its range is "
                 "too small), so it is not named",
             )

@@ -116,21 +116,7 @@ void hal_uart_write(const char* s, uint8_t n) {
 #define MINSEG_UNIT(pin) MINSEG_UNIT_ pin
 #define MINSEG_PIN_LEVEL(pin) ((MINSEG_CAT(PIN, MINSEG_PORT(pin)) >> MINSEG_BIT(pin)) & 1u)
 
-#if defined(MINSEG_PROFILE_MINSEGMEGA)
-#define MINSEG_ONLY_MinSegMega(...) MINSEG_BODY(__VA_ARGS__)
-#else
-#define MINSEG_ONLY_MinSegMega(...)
-#endif
-#if defined(MINSEG_PROFILE_M2V3)
-#define MINSEG_ONLY_M2V3(...) MINSEG_BODY(__VA_ARGS__)
-#else
-#define MINSEG_ONLY_M2V3(...)
-#endif
-#if defined(MINSEG_PROFILE_M1V4)
-#define MINSEG_ONLY_M1V4(...) MINSEG_BODY(__VA_ARGS__)
-#else
-#define MINSEG_ONLY_M1V4(...)
-#endif
+// MINSEG_ONLY_<profile> is profile.h's (made from pins.def): the body for the profile built
 #define MINSEG_CONNECTOR(P, ...) MINSEG_ONLY_##P(__VA_ARGS__)
 #define MINSEG_SOURCE(P, N, TEXT)
 
