@@ -150,7 +150,7 @@ def two_T(T: float, T_63: float | None, whose: str = "your", dead_time: float = 
         f"the one {_theirs(whose, 'T')} is graded against, and {uses}; the 63 % reading "
         f"{dead}is read off the logged samples, which move it (each logged speed is the mean "
         "over its sample interval, half a sample late, and the reading joins the samples by "
-        f"straight lines): here it is {format_number(abs(apart) * 1e3, 3)} ms "
+        f"straight lines): here it is {_ms(abs(apart))} "
         f"{'longer' if apart >= 0 else 'shorter'}, while the least-squares fit models the "
         "sampling, so its T describes the motor."
     )

@@ -121,7 +121,7 @@ from minseg_tui.lab.state.shown import PolicyRecord, Shown
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import RunLog
-from minseg_tui.quantities import UNITS, format_reading, format_typed, shown_unit
+from minseg_tui.quantities import format_reading, format_typed, shown_unit
 
 Clock = Callable[[], datetime]
 
@@ -578,18 +578,15 @@ class Session:
         return e.value if e is not None and e.ok and isinstance(e.value, float) else None
 
     def reading(self, key: str) -> str | None:
-        """The group's accepted value of quantity field ``key`` as they typed it, wherever it
-        is quoted back to them: the digits they gave, in the unit they typed it in when that
-        measures what the field's unit does, T and f in the one unit they are shown in
-        (:func:`~minseg_tui.quantities.shown_unit`: "57ms" is "57 ms", "0,057" is "57 ms",
-        never "57.00 ms" or "0.057 s"; :func:`~minseg_tui.quantities.format_reading`); None
-        when there is none."""
+        """The group's accepted value of quantity field ``key`` wherever it is quoted back to
+        them: the digits they gave, in the one unit its quantity is shown in (the field's,
+        T and f in theirs: :func:`~minseg_tui.quantities.shown_unit`): "57ms" and "0,057" are
+        "57 ms", never "57.00 ms" or "0.057 s"; "80 rpm" is "8.378 rad/s", "0.0372 A"
+        "37.2 mA" (:func:`~minseg_tui.quantities.format_reading`); None when there is none."""
         e = self._entries.get(key)
         if e is None or not e.ok or not isinstance(e.value, float) or key not in FIELDS:
             return None
-        form = FIELDS[key].unit
-        same = e.unit in UNITS and UNITS[e.unit].quantity == UNITS[form].quantity
-        return format_reading(e.value, shown_unit(e.unit if same else form))
+        return format_reading(e.value, shown_unit(FIELDS[key].unit))
 
     def enter(self, key: str, text: str, source: str = "typed") -> Entry:
         """Store ``text`` typed in field ``key`` (KeyError for an unknown key) and return the

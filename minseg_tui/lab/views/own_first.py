@@ -249,13 +249,10 @@ def _value(v: float | str | None, unit: str) -> str | None:
 
 
 def _unit(session: Session, c: Comparison) -> str:
-    """The unit the group typed their value in when it measures what ``c.unit`` does (T
-    typed in ms is compared in ms), else the field's form unit; T and f in the one unit each
-    is shown in (:func:`~minseg_tui.quantities.shown_unit`)."""
-    e = session.entry(c.key)
-    typed = e.unit if e is not None and e.ok else ""
-    if typed in UNITS and c.unit in UNITS and UNITS[typed].quantity == UNITS[c.unit].quantity:
-        return shown_unit(typed)
+    """The unit ``c``'s values are shown in: one unit per quantity, the field's form unit,
+    T and f in the one unit each is shown in (:func:`~minseg_tui.quantities.shown_unit`),
+    whatever unit the group typed theirs in."""
+    del session
     return shown_unit(c.unit)
 
 

@@ -154,7 +154,7 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
     line = ""
     if slope > 0 and intercept > 0:
         line = (
-            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {format_quantity(slope, F_UNIT, 3)} "
+            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {format_quantity(slope, F_UNIT)} "
             f"and a dry friction torque tau_c = {format_number(intercept, 3)} N m."
         )
     return [
