@@ -669,7 +669,9 @@ class Session:
         entry stored with a warning the program itself gives, e.g. a u_ss above the requested
         voltage, which the driver cannot give, or a value right the group's way that rests on
         one of theirs marked wrong, Task 14's model with their wrong T: not done until the
-        group looks again; a wrong answer stays ``wrong``), ``unjudged`` (a step of the
+        group looks again; a wrong answer stays ``wrong``), ``started`` also for a step of
+        Tasks 11-15 with one of its own values given and another not (Task 11's K),
+        ``unjudged`` (a step of the
         group's own values, Tasks 6-9 and 11-15, answered, one of them stored but not judged
         yet: nothing computed to compare it with), ``started`` (something entered), ``todo``,
         or ``info`` (nothing to enter)."""
@@ -705,6 +707,10 @@ class Session:
         judged = [c.right for c in mine]
         if wrong or any(r is False for r in judged):
             return "wrong"
+        if st.part == "Results" and any(
+            f.compare and f.key not in self.answered() for f in st.fields
+        ):
+            return "started"  # Task 11: omega_ss given, K not yet (it read ✓)
         if self._warned(st.fields) or any(c.caveat for c in mine):
             return "warned"  # a value right the group's way, resting on one marked wrong
         return "unjudged" if any(r is None for r in judged) else "done"

@@ -1189,15 +1189,16 @@ def unanswered_line(session: Session, most: int = 8) -> str:
     names = list(dict.fromkeys(short for short, _, _ in unanswered(session)))
     if not names:
         return ""
-    groups: dict[str, list[str]] = {"Task": [], "Summary Q": [], "Prep": []}
-    for name in names:
-        kind = next(k for k in (*groups, "") if name.startswith(k))
-        groups.setdefault(kind, []).append(name.removeprefix(kind).strip() or name)
+    groups: dict[str, list[str]] = {"Task": [], "": [], "Summary Q": [], "Prep": []}
+    for name in names:  # "" holds a step named without a number: the model check
+        kind = next((k for k in groups if k and name.startswith(k)), "")
+        groups[kind].append(name.removeprefix(kind).strip())
     said: list[str] = []
     left = most
     for kind, numbers in groups.items():
         if numbers and left > 0:
-            said.append(f"{kind}{'' if kind.endswith('Q') else ' '}" + ", ".join(numbers[:left]))
+            head = "" if not kind else kind if kind.endswith("Q") else f"{kind} "
+            said.append(head + ", ".join(numbers[:left]))
             left -= len(numbers[:left])
     more = f" and {len(names) - most} more" if len(names) > most else ""
     return "unanswered, marked in the report: " + "; ".join(said) + more
