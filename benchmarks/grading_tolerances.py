@@ -17,7 +17,9 @@ The group's values, typed with the digits a group types (3 significant digits; T
   of the rows, k_a = 0.65 k_v; "mean" rows: the mean of the rows instead;
 - omega_ss (Task 11): read with the program's cursor (views.cursor_reading) on the last
   sample of the high level of one rise (a different rise per session);
-- K: their omega_ss / the table's u_ss at 4.5 V; omega at 5 V: 5 V x their K;
+- K: their omega_ss / the table's u_ss at 4.5 V; omega at 5 V: 5 V x their K; and, as a
+  careless group would, omega_ss / the requested 4.5 V (the slip Task 11 teaches: marked
+  wrong by name, whatever its difference);
 - T (Task 12) at 63 % of the way from the speed at the edge to their omega_ss, on the same
   rise, read with the cursor at sample resolution: "first sample" takes the first sample at
   or above the level, "nearest sample" the sample nearest the level, "on the line" the
@@ -28,9 +30,20 @@ The group's values, typed with the digits a group types (3 significant digits; T
 
 Each is entered in the session and compared by the program itself (Session.comparisons):
 the relative difference printed is the one the TUI and the report judge. Prints, per
-quantity, the median, p95 and max of |difference| and the tolerance in force.
+quantity, the median, p95 and max of |difference|, the tolerance in force and how many values
+the program marked wrong (by the tolerance, or as a named slip).
 
-    .venv/bin/python benchmarks/grading_tolerances.py [--seeds N]
+``--real``: the same 63 % reading of T on the ten real step logs of other people's motors
+(/work/shared/data/real-motors, see each PROVENANCE.txt; ../shared beside the clone), one
+table per log. On each rise a group reads the steady speed off the plot, either the last
+sample of the high level (as above) or by eye, the median of the high level's second half
+(the last sample of a coarse encoder is a count off), then T at 63 % of the way from the
+speed at the edge: the sample nearest the level, or the first sample past it. Each is set
+against the program's 63 % reading (interpolated between samples, median over the rises:
+what the lab grades T against, with the tolerance in force) and against the least-squares
+T (the fit the model uses).
+
+    .venv/bin/python benchmarks/grading_tolerances.py [--seeds N] [--real]
 """
 
 from __future__ import annotations
@@ -177,11 +190,18 @@ def read_rise(s: Session, seed: int) -> tuple[float, dict[str, float]]:
     }
 
 
-def rel(s: Session, step_id: str, key: str) -> float:
+MARKED_WRONG: dict[str, int] = {}
+"""How many of the sessions' values the program marked wrong (✗), by quantity and way: by
+the tolerance, or as a named slip (K divided by the requested voltage, ...)."""
+
+
+def rel(s: Session, step_id: str, key: str, name: str = "") -> float:
     for c in s.comparisons(step_id):
         if c.key == key:
             if c.rel_diff is None:
                 raise SystemExit(f"{key}: no comparison ({c.computed!r})")
+            name = name or key
+            MARKED_WRONG[name] = MARKED_WRONG.get(name, 0) + (c.right is False)
             return abs(c.rel_diff)
     raise SystemExit(f"{key}: not compared on {step_id}")
 
@@ -196,7 +216,7 @@ def one(root: Path, seed: int) -> dict[str, float]:
         s.enter("own.k_a", typed(v["k_a"]))
         s.enter("own.f", typed(v["f"] * 1e3) + " mN m s/rad")
         for key in ("own.k_v", "own.k_a", "own.f"):
-            out[f"{key} ({way})"] = rel(s, "table", key)
+            out[f"{key} ({way})"] = rel(s, "table", key, f"{key} ({way})")
     mine = table_values(s, "median")
     u_ss = s.value("u_ss@4.5")
     assert u_ss is not None
@@ -208,21 +228,119 @@ def one(root: Path, seed: int) -> dict[str, float]:
     out["own.omega_step"] = rel(s, "task11", "own.omega_step")
     out["own.K"] = rel(s, "task11", "own.K")
     out["own.omega_5"] = rel(s, "task15", "own.omega_5")
+    # the slip Task 11 teaches: omega_ss divided by the requested 4.5 V, not the measured u_ss
+    s.enter("own.K", typed(w_ss / 4.5))
+    out["own.K (slip: ÷ 4.5 V)"] = rel(s, "task11", "own.K", "own.K (slip: ÷ 4.5 V)")
+    s.enter("own.K", typed(K))
     for way, T in T_read.items():
         T_ms = round(T * 1e3)
         s.enter("own.T", f"{T_ms} ms")
-        out[f"own.T ({way})"] = rel(s, "task12", "own.T")
+        out[f"own.T ({way})"] = rel(s, "task12", "own.T", f"own.T ({way})")
         J = T_ms * 1e-3 * (mine["R"] * mine["f"] + mine["k_v"] * mine["k_a"]) / mine["R"]
         s.enter("own.J", typed(J))
-        out[f"own.J ({way})"] = rel(s, "task13", "own.J")
+        out[f"own.J ({way})"] = rel(s, "task13", "own.J", f"own.J ({way})")
     s.close()
     return out
+
+
+REAL = Path(__file__).resolve().parents[2] / "shared" / "data" / "real-motors"
+"""The real step logs (``../shared`` beside the clone)."""
+
+W_WAYS = ("last sample", "by eye")
+"""How the steady speed is read off a real rise (:func:`read_real`)."""
+
+
+def read_real(t: np.ndarray, w: np.ndarray, t0: float, duration: float) -> dict[str, float]:
+    """T (s) read at 63 % of one rise starting at ``t0`` (s) lasting ``duration`` (s) of the
+    speed ``w`` (rad/s) sampled at ``t`` (s), each way a group reads it: "<steady speed>,
+    <sample>" for the steady speed by :data:`W_WAYS` and the sample nearest the 63 % level
+    or the first one past it (nan when the speed never reaches the level)."""
+    high = np.flatnonzero((t >= t0 - 1e-9) & (t < t0 + duration - 1e-9))
+    second_half = high[high.size // 2 :]
+    w0 = float(w[high[0]])
+    out: dict[str, float] = {}
+    for w_way, w_ss in (
+        ("last sample", float(w[high[-1]])),
+        ("by eye", float(np.median(w[second_half]))),
+    ):
+        level = w0 + 0.632 * (w_ss - w0)
+        past = np.flatnonzero(w[high] >= level) if w_ss >= w0 else np.flatnonzero(w[high] <= level)
+        if past.size == 0 or high[past[0]] == 0:
+            out[f"{w_way}, nearest"] = out[f"{w_way}, first past"] = float("nan")
+            continue
+        k = int(high[past[0]])
+        first, before = t[k] - t0, t[k - 1] - t0
+        nearest = first if abs(w[k] - level) <= abs(w[k - 1] - level) else before
+        out[f"{w_way}, nearest"] = float(nearest)
+        out[f"{w_way}, first past"] = float(first)
+    return out
+
+
+def real(root: Path) -> None:
+    """The table of ``--real``: per log and way of reading, the group's T against the
+    program's 63 % reading (graded, with :data:`TOLERANCE`) and the least-squares T."""
+    from minseg_tui.lab.saving.files import read_run_log
+    from minseg_tui.model.identify.risefit import fit_time_constant, rises
+
+    tol = TOLERANCE["own.T"]
+    logs = sorted(p for p in root.iterdir() if (p / "step.csv").is_file()) if root.is_dir() else []
+    if not logs:
+        print(
+            f"--real: no step logs under {root} (expected ../shared beside the clone)",
+            file=sys.stderr,
+        )
+        raise SystemExit(2)
+    print(
+        f"{len(logs)} real step logs ({root}); the group's T read at 63 % against the program's "
+        f"63 % reading (graded, tolerance {tol * 100:.0f} %) and against the least-squares T:"
+    )
+    print(
+        f"{'log':<24} {'Ts ms':>5} {'T_63 ms':>8} {'T_ls ms':>8}  {'way':<24} {'read ms':>8} "
+        f"{'vs T_63':>8} {'vs T_ls':>8}"
+    )
+    graded: dict[str, list[float]] = {}
+    to_ls: dict[str, list[float]] = {}
+    for path in logs:
+        log = read_run_log(path / "step.csv")
+        fit = fit_time_constant(log)
+        steps = rises(log, fit)
+        t, w = np.asarray(log.t, float), np.asarray(log.omega, float)
+        T_63 = float(np.median([r.T_63 for r in steps if r.T_63 is not None]))
+        T_ls = float("nan") if fit is None else fit.T
+        read: dict[str, list[float]] = {}
+        for r in steps:
+            for way, T in read_real(t, w, r.t, r.duration).items():
+                read.setdefault(way, []).append(T)
+        for n, (way, Ts) in enumerate(read.items()):
+            T = float(np.median(Ts))
+            a, b = T / T_63 - 1.0, T / T_ls - 1.0
+            graded.setdefault(way, []).append(abs(a))
+            to_ls.setdefault(way, []).append(abs(b))
+            head = (
+                f"{path.name:<24} {log.ts * 1e3:5.0f} {T_63 * 1e3:8.1f} {T_ls * 1e3:8.1f}"
+                if n == 0
+                else " " * 49
+            )
+            print(f"{head}  {way:<24} {T * 1e3:8.1f} {a * 100:+7.1f}% {b * 100:+7.1f}%")
+    print(f"\nover the {len(logs)} logs, |T read / reference - 1|: median, max, over the tolerance")
+    for way in graded:
+        a, b = np.asarray(graded[way]) * 100, np.asarray(to_ls[way]) * 100
+        print(
+            f"{way:<24} vs T_63 {np.nanmedian(a):6.1f}% {np.nanmax(a):6.1f}% {int(np.sum(a > tol * 100)):3d}"
+            f"   vs T_ls {np.nanmedian(b):6.1f}% {np.nanmax(b):6.1f}% {int(np.sum(b > tol * 100)):3d}"
+        )
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--seeds", type=int, default=100, help="sessions (default 100)")
+    ap.add_argument(
+        "--real", action="store_true", help="T read at 63 %% on the ten real step logs instead"
+    )
     args = ap.parse_args()
+    if args.real:
+        real(REAL)
+        return
     if args.seeds < 1:
         print("--seeds: expected a positive number of sessions", file=sys.stderr)
         raise SystemExit(2)
@@ -232,14 +350,17 @@ def main() -> None:
             for k, v in one(Path(tmp), seed).items():
                 got.setdefault(k, []).append(v)
     print(f"{args.seeds} seeded sessions on the virtual board's plant; |own / compared - 1|:")
-    print(f"{'quantity':<28} {'median':>8} {'p95':>8} {'max':>8} {'tolerance':>10} {'over':>5}")
+    print(
+        f"{'quantity':<28} {'median':>8} {'p95':>8} {'max':>8} {'tolerance':>10} {'over':>5} "
+        f"{'marked ✗':>9}"
+    )
     for name, values in got.items():
         a = np.asarray(values) * 100.0
         tol = TOLERANCE[name.split(" ")[0]] * 100.0
         over = int(np.sum(a > tol))
         print(
             f"{name:<28} {np.median(a):7.2f}% {np.percentile(a, 95):7.2f}% {a.max():7.2f}% "
-            f"{tol:9.0f}% {over:5d}"
+            f"{tol:9.0f}% {over:5d} {MARKED_WRONG.get(name, 0):9d}"
         )
 
 

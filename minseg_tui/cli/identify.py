@@ -103,7 +103,7 @@ def render(result: Identification) -> str:
             _read(r.reading.omega_ss),
             _read(r.reading.i_ss),
             _g(r.k_v),
-            _g(in_unit(r.f, F_UNIT), 3),
+            _g(in_unit(r.f, F_UNIT)),
         )
         for r in result.rows
     ]
@@ -114,7 +114,7 @@ def render(result: Identification) -> str:
         "",
         f"k_v = {_g(result.k_v)} V s/rad   (Task 7, median of the rows)",
         f"k_a = {_g(result.k_a)} N m/A     (Task 8, 0.65 k_v)",
-        f"f   = {_g(in_unit(result.f, F_UNIT), 3)} {F_UNIT} (Task 9, median of the rows)",
+        f"f   = {_g(in_unit(result.f, F_UNIT))} {F_UNIT} (Task 9, median of the rows)",
     ]
     s = result.step
     if s is not None:
@@ -162,7 +162,7 @@ def render(result: Identification) -> str:
                 f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T)"
             ),
             *(_wrap(s.T_63_note) if s.T_63_note else []),
-            f"J = T (R f + k_v k_a) / R = {_g(s.J, 3)} kg m^2 (Task 13)",
+            f"J = T (R f + k_v k_a) / R = {_g(s.J)} kg m^2 (Task 13)",
             "",
             f"Model (Task 14): {s.model_equation(_g, 'w')}",
             f"At u_A = 5 V (Task 15): omega = {_g(s.K * 5.0)} rad/s",

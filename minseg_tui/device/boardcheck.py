@@ -387,6 +387,18 @@ LAST_WAIT_S = 5.0
 """...waiting at most this long in host time for them, s (a board that went silent)."""
 
 
+def board_time_at(batches: list[SampleBatch], host_t: float) -> int | None:
+    """The board time (us) at host time ``host_t`` (s, the clock the samples' ``t_host`` were
+    stamped with on arrival), at least: a sample taken at board time b that arrived at host
+    time h says the board's clock was already past b at h, and both clocks run at one rate,
+    so the board's time at ``host_t`` is at least b + (host_t - h); the least delayed sample
+    bounds it best. None without samples."""
+    offsets = [
+        int(np.max(b.t_us - np.round(b.t_host * 1e6).astype(np.int64))) for b in batches if len(b)
+    ]
+    return max(offsets) + round(host_t * 1e6) if offsets else None
+
+
 def count_revolution(
     board: CheckedBoard,
     done: Callable[[], bool],
@@ -395,13 +407,17 @@ def count_revolution(
     timeout: float = 30.0,
     poll: float = 0.02,
     turned_at: Callable[[], float | None] = lambda: None,
+    clock: Callable[[], float] = time.monotonic,
 ) -> RevolutionResult:
     """Count while a hand turns the wheel, until ``done()`` says it is done (or ``timeout``
     s pass): the counts and what they mean. The motor is off meanwhile. ``samples``: a tap
     of the samples opened when the check was asked for (else the link's own, read from its
-    newest sample on). ``turned_at()``: the board time (s) at which a simulated hand turned
-    the wheel, when one did (the virtual MinSeg's): the last samples read reach past it, however
-    far the host's reading lags behind the board."""
+    newest sample on). The count reads on until the board's clock is :data:`LAST_US` past
+    the moment the hand was done, that moment (host time by ``clock``, the one the samples'
+    arrival is stamped with) mapped to board time (:func:`board_time_at`), so that a host
+    reading the samples late does not cut the end of the turn. ``turned_at()``: the board
+    time (s) at which a simulated hand turned the wheel, when one did (the virtual
+    MinSeg's): the last samples read reach past it too."""
     take = samples or board.samples
     board.stop()
     # where the count begins: a tap (``samples``) opened when the check was asked for holds
@@ -411,19 +427,26 @@ def count_revolution(
     first = take()
     got: list[SampleBatch] = [first] if samples is not None else []
     start = int(first.count[-1]) if samples is None and len(first) else None
-    end = time.monotonic() + timeout
-    while not done() and time.monotonic() < end:
+    arrived = [first]  # every batch, for the board's time when the hand was done
+    end = clock() + timeout
+    while not done() and clock() < end:
         got.append(take())
+        arrived.append(got[-1])
         time.sleep(poll)
-    # the last samples of the turn: until the board's own clock is LAST_US past the newest
-    # sample seen when the hand was done (a busy host reads them late, never too early)
+    pressed = clock()
+    # the last samples of the turn: until the board's own clock is LAST_US past the moment
+    # the hand was done (a busy host reads them late, never too early): the newest sample
+    # seen then, or later, that moment in board time
     seen = [int(b.t_us[-1]) for b in got if len(b)]
     turn = turned_at()
     if turn is not None:
         seen.append(int(turn * 1e6))
+    at_board = board_time_at(arrived, pressed)
+    if at_board is not None:
+        seen.append(at_board)
     since = max(seen) if seen else None
-    end = time.monotonic() + LAST_WAIT_S
-    while time.monotonic() < end:
+    end = clock() + LAST_WAIT_S
+    while clock() < end:
         b = take()
         got.append(b)
         if len(b):

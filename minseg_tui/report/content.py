@@ -392,6 +392,15 @@ def _warnings_section(session: Session) -> Section:
         if e.refused
     ]
     items += list(res.problems)
+    missing = views.unanswered(session)
+    if missing:  # marked where each stands too ("not answered"); said first here, together
+        items.insert(
+            0,
+            "not answered when this report was written: "
+            + "; ".join(
+                f"{where}: {_label(label)}" if label else where for _, where, label in missing
+            ),
+        )
     # the grader reads which policy the "shown to the group" cells rest on
     items += own_first.policy_in_force(session)[1]
     return Section("Warnings", [items if items else "None."])

@@ -46,6 +46,7 @@ from minseg_tui.errors import MinsegError
 from minseg_tui.lab.saving.store import SessionInfo, SessionsUnreadable, list_sessions
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
+from minseg_tui.lab.views import session as lab_views
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
@@ -991,9 +992,11 @@ class LabApp(App[None]):
         except (MinsegError, OSError) as exc:
             self.call_from_thread(self.notify, str(exc), title="report", severity="error")
             return
-        self.call_from_thread(self._exported, paths)
+        self.call_from_thread(self._exported, paths, lab_views.unanswered_line(session))
 
-    def _exported(self, paths: tuple[str, ...]) -> None:
+    def _exported(self, paths: tuple[str, ...], unanswered: str = "") -> None:
+        """The report was written to ``paths``: say where, and what is still ``unanswered``
+        (one line, a warning of its own: the report is written all the same)."""
         self.exported = paths
         folder, names = written_in(paths, Path(self.config.sessions))
         self.notify(
@@ -1004,6 +1007,8 @@ class LabApp(App[None]):
             title="report",
             timeout=NOTICE_S,
         )
+        if unanswered:
+            self.notify(unanswered, title="report", severity="warning", timeout=NOTICE_S)
         self.lab_changed.publish(None)
 
     def import_log(self) -> None:

@@ -10,7 +10,9 @@ import signal
 import subprocess
 import sys
 import threading
+from dataclasses import fields, replace
 
+import numpy as np
 import pytest
 
 import minseg_tui.device  # noqa: F401  (registers minseg://)
@@ -192,6 +194,50 @@ def test_a_simulated_turn_is_counted_however_far_the_host_lags(board):
 
     link.samples = samples
     r = count_revolution(link, done, timeout=60, turned_at=lambda: turned[-1] if turned else None)
+    assert r.ok and abs(r.counts) == 720, r.text
+
+
+def _part(b: SampleBatch, keep: np.ndarray) -> SampleBatch:
+    """The samples of ``b`` where ``keep`` holds."""
+    return SampleBatch(*(getattr(b, f.name)[keep] for f in fields(SampleBatch)))
+
+
+def test_a_turn_just_before_enter_is_counted_when_the_host_reads_late(board):
+    # at a real board (no simulated hand to ask), a host reading the samples 2.5 s of board
+    # time behind the board cut the end of a turn made just before Enter: the count stopped
+    # 100 ms past the newest sample read, long before the turn. Each sample is stamped on
+    # arrival, 5 ms after the board took it, on a host clock that runs with the board's (the
+    # link keeps up, line by line, as at a real board; the reader of the samples does not),
+    # and Enter's host time on that clock is mapped to board time
+    link = board()
+    read = link.samples
+    held: list[SampleBatch] = []
+    turned: list[float] = []
+    behind = 100  # samples the reader is behind the link: 2.5 s at 25 ms
+
+    def host() -> float:  # the host's clock: the board's, a fixed distance off
+        return link.board.now + 1000.0
+
+    def samples() -> SampleBatch:  # handed over all but the newest 100
+        b = read()
+        arrived = b.t_us / 1e6 + 1000.0 + 0.005
+        pending = SampleBatch.concat([*held, replace(b, t_host=arrived)])
+        due = np.arange(len(pending)) < len(pending) - behind
+        held[:] = [_part(pending, ~due)]
+        return _part(pending, due)
+
+    def done() -> bool:  # the hand turns once the reader is behind, and Enter follows at once
+        if turned:
+            return True
+        if sum(len(b) for b in held) < behind:
+            return False
+        with link.board.lock:
+            link.board.turn_by_hand(1.0)
+            turned.append(link.board.now)
+        return True
+
+    link.samples = samples
+    r = count_revolution(link, done, timeout=60, poll=0.0, clock=host)
     assert r.ok and abs(r.counts) == 720, r.text
 
 

@@ -14,6 +14,7 @@ from minseg_tui.lab.saving.files import write_run_log
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
 from minseg_tui.model.runlog import RunLog
+from minseg_tui.quantities import format_number
 from minseg_tui.signals import timestamp_velocity
 
 MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.325, f=6e-4, J=1.3e-3)
@@ -72,7 +73,8 @@ def test_f_is_in_mN_m_s_per_rad_in_the_human_text(files, capsys):
     out = capsys.readouterr().out
     kv = sorted([(2.1 - 0.15) / 3.6, (3.05 - 0.175) / 5.5, (4.0 - 0.2) / 7.2])[1]
     f = sorted(0.65 * kv * i / w for i, w in ((0.030, 3.6), (0.035, 5.5), (0.040, 7.2)))[1]
-    assert f"f   = {f * 1e3:.3g} mN m s/rad (Task 9" in out
+    # with the four digits of the TUI's table (it had three, in the rows too)
+    assert f"f   = {format_number(f * 1e3)} mN m s/rad (Task 9" in out
     assert "f mN m s/rad" in out  # the table's column
     assert "f falls with speed, from " in out
     assert " N m s/rad" not in out.replace("mN m s/rad", "")

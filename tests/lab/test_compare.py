@@ -67,7 +67,7 @@ def test_the_computed_values_wait_for_the_groups_own(tmp_path):
         assert "T (63 %)" not in text and "J =" not in text and "omega' =" not in text
         assert "omega at 5 V =" not in text and "u_ss = " in text  # their own table value stays
         assert {"own.K", "own.T", "own.omega_step"} <= views.results(s, "task11").hidden
-        assert _compare(s, "task11")["your K"][1].startswith("shown once you enter yours")
+        assert _compare(s, "task11")["your K"][1].startswith("computed: shown once you enter yours")
         s.enter("own.K", "1.9")
         text = _lines(s, "task11")
         assert f"K = {K}" in text and "T (63 %)" not in text
@@ -240,7 +240,7 @@ def test_the_two_T_are_explained_in_one_sentence_on_every_screen(tmp_path):
             f"the least-squares T ({format_number(st.T * 1e3)} ms) is the one the program's model and its J use"
             in said
         )
-        apart = format_number(abs(st.T_63 - st.T) * 1e3, 3)
+        apart = format_number(abs(st.T_63 - st.T) * 1e3)  # with the digits of the two T
         assert f"here it is {apart} ms longer" in said and "read off the logged samples" in said
         assert c.how.startswith("the program's reading by your method: 63 % of each rise")
         for sid in ("task11", "task12", "task13", "task14", "task15"):
@@ -264,9 +264,9 @@ def test_the_one_sentence_on_the_two_T_says_what_it_knows():
         "the 63 % reading counts from the logged step, so it holds the dead time of 5.000 ms"
         in dead
     )
-    assert "here it is 19.0 ms longer" in dead and "the one the group's T is graded" in dead
+    assert "here it is 19.00 ms longer" in dead and "the one the group's T is graded" in dead
     short = two_T(0.043, 0.040)
-    assert "here it is 3.00 ms shorter" in short and "dead time" not in short
+    assert "here it is 3.000 ms shorter" in short and "dead time" not in short
     none = two_T(0.043, None)
     assert none.startswith("No rise of this run crossed 63 % of its step")
     assert "the least-squares T (43.00 ms) is the one the program's model and its J use" in none

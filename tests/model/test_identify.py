@@ -11,6 +11,7 @@ from minseg_tui.model.identify.steady import table_of
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
 from minseg_tui.model.runlog import RunLog
+from minseg_tui.quantities import format_number
 from minseg_tui.signals import timestamp_velocity
 
 R = 5.0
@@ -47,7 +48,8 @@ def test_falling_f_is_called_dry_friction_with_the_line_through_the_rows():
     slope = ((w - wm) * (torque - tm)).sum() / ((w - wm) ** 2).sum()
     assert f"{tm - slope * wm:.3g}" in msg
     # f in mN m s/rad, as the table and Task 9's entry show it (it was N m s/rad here)
-    assert f"viscous f = {slope * 1e3:.3g} mN m s/rad" in msg
+    # with the table's four digits (it had three here)
+    assert f"viscous f = {format_number(slope * 1e3)} mN m s/rad" in msg
     f = sorted(row.f for row in result.rows)
     assert f"from {f[-1] * 1e3:.4g} mN m s/rad at" in msg
     assert " N m s/rad" not in msg.replace("mN m s/rad", "")

@@ -10,9 +10,8 @@ and that the move came after it."""
 from __future__ import annotations
 
 import pytest
-from textual.widgets import RadioSet
 
-from minseg_tui.ui.widgets.fields import FieldRow, Ticks, field_id
+from minseg_tui.ui.widgets.fields import AnswerList, FieldRow, field_id
 from tests.ui.helpers import answering, burst, goto, settle, shown, start
 
 
@@ -34,11 +33,7 @@ async def _focus_answers(pilot, key: str) -> None:
 
 def _ticked_on_screen(row: FieldRow) -> tuple[int, ...]:
     """The answers the row shows ticked, 0-based."""
-    ticks = row.query(Ticks)
-    if ticks:
-        return tuple(sorted(ticks.first().selected))
-    radio = row.query_one(RadioSet)
-    return tuple(k for k, b in enumerate(radio.query("RadioButton")) if b.value)
+    return row.query_one(AnswerList).chosen
 
 
 @pytest.mark.parametrize(
@@ -85,3 +80,23 @@ async def test_a_tick_typed_right_before_a_move_is_kept(
         await burst(pilot, back)
         assert shown(app, there)
         assert _ticked_on_screen(_row(app, key)) == ticked
+
+
+async def test_a_click_on_an_answer_picks_it_and_the_keys_go_to_its_list(quiet):
+    """A click on an answer picks it (a list of one: the other cleared) or ticks it (a list of
+    several), stores it at once, and makes that list the one the keys go to."""
+    app = quiet()
+    async with app.run_test(size=(120, 40)) as pilot:
+        await start(pilot)
+        await goto(pilot, "summary")
+        row = _row(app, "summary.2")
+        answers = row.query_one(AnswerList)
+        # the list's border is one row over its first answer, its padding one column
+        await pilot.click(answers, offset=(4, 2))
+        await settle(pilot, lambda: answering(app) is answers)
+        assert _chosen(app, "summary.2") == "b" and _ticked_on_screen(row) == (1,)
+        await pilot.click(answers, offset=(4, 1))
+        await settle(pilot)
+        assert _chosen(app, "summary.2") == "a" and _ticked_on_screen(row) == (0,)
+        await burst(pilot, "down", "space")  # the cursor stood on the answer clicked
+        assert _chosen(app, "summary.2") == "b" and _ticked_on_screen(row) == (1,)

@@ -24,11 +24,11 @@ async def test_task11_shows_K_only_once_the_group_has_typed_its_own(quiet):
         lines = _text(app, "#results-lines")
         assert f"K = {K:.4g}" not in lines and "K: shown once you enter yours" in lines
         assert "T (63 %)" not in lines and "J = " not in lines
-        assert "your K: yours — · computed shown once you enter yours" in _text(app, "#compare")
+        assert "your K: yours — · computed: shown once you enter yours" in _text(app, "#compare")
         await type_in(pilot, "own.K", "1.9")
         lines = _text(app, "#results-lines")
         assert f"K = {K:.4g}" in lines and "T (63 %)" not in lines  # T waits for Task 12
-        assert "your K: yours 1.9 rad/s/V · computed" in _text(app, "#compare")
+        assert "your K: yours 1.9 rad/s/V · computed your way" in _text(app, "#compare")
 
 
 async def test_ctrl_r_reveals_the_step_and_the_session_keeps_it(quiet):

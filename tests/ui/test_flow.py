@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from textual.filter import Monochrome, NoColor
 from textual.message import Message
-from textual.widgets import DataTable, OptionList, RadioSet, SelectionList
+from textual.widgets import DataTable, OptionList
 
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.lab.saving.store import list_sessions
@@ -19,7 +19,7 @@ from minseg_tui.ui.panels.square_wave import SquareWavePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen, StepCommands, StepPane
-from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.fields import AnswerList, FieldRow, field_id
 from minseg_tui.ui.widgets.status import status_text
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
@@ -134,7 +134,7 @@ async def test_summary_answers_are_picked_with_keys(quiet, tmp_path):
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await goto(pilot, "summary")
-        radio = app.screen.query_one(f"#{field_id('summary.1')} RadioSet", RadioSet)
+        radio = app.screen.query_one(f"#{field_id('summary.1')} AnswerList", AnswerList)
         radio.focus()
         await pilot.press("down", "enter")
         await settle(pilot)
@@ -144,7 +144,7 @@ async def test_summary_answers_are_picked_with_keys(quiet, tmp_path):
         await pilot.press("up", "enter")  # a single-choice question keeps one answer
         await settle(pilot)
         assert _chosen(app, "summary.1") == (0,)
-        sel = app.screen.query_one(f"#{field_id('summary.5')} SelectionList", SelectionList)
+        sel = app.screen.query_one(f"#{field_id('summary.5')} AnswerList", AnswerList)
         sel.focus()
         await pilot.press("down", "space", "down", "space")
         await settle(pilot)
@@ -431,10 +431,11 @@ async def test_no_color_is_respected(quiet, monkeypatch):
             s.choose("summary.5", [1, 2])
         await goto(pilot, "summary")
         await settle(pilot)
-        radios = app.screen.query_one(f"#{field_id('summary.1')}").query("RadioButton")
-        assert [r.render().plain[1] for r in radios] == [" ", "●", " "]  # the choice, not a colour
-        ticks = app.screen.query_one(f"#{field_id('summary.5')}", FieldRow).query_one(SelectionList)
-        marks = [ticks.render_line(y).text[1] for y in range(ticks.option_count)]
+        radios = app.screen.query_one(f"#{field_id('summary.1')}", FieldRow).query_one(AnswerList)
+        lines = radios.render().plain.splitlines()
+        assert [line[1] for line in lines] == [" ", "●", " "]  # the choice, not a colour
+        ticks = app.screen.query_one(f"#{field_id('summary.5')}", FieldRow).query_one(AnswerList)
+        marks = [line[1] for line in ticks.render().plain.splitlines()]
         assert marks.count("X") == 2 and marks[1] == marks[2] == "X"
 
 

@@ -17,7 +17,7 @@ from minseg_tui.device.link import LinkEvent
 from minseg_tui.device.standstill import PRE_ROLL
 from minseg_tui.lab.saving.store import SessionsUnreadable, list_sessions
 from minseg_tui.lab.state.session import Session
-from minseg_tui.quantities import NO_BREAK
+from minseg_tui.quantities import NO_BREAK, format_constant
 from minseg_tui.ui import app as app_module
 from minseg_tui.ui.panels.model_check import ModelCheckPanel
 from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
@@ -323,7 +323,9 @@ async def test_the_zoom_shows_the_rise_with_its_63_percent_level_and_crossing(qu
         assert list(by_label["63 %"].y) == pytest.approx([level, level])
         assert list(by_label["crossing"].x) == pytest.approx([first.T_63, first.T_63])
         note = app.screen.query_one("#zoom-note", Prose).text
-        assert "step 1 of 4" in note and f"{first.T_63:.4g} s after the edge" in note
+        assert (
+            "step 1 of 4" in note and f"{format_constant(first.T_63, 's')} after the edge" in note
+        )
         await pilot.press("alt+right")
         await settle(pilot)
         assert "step 2 of 4" in app.screen.query_one("#zoom-note", Prose).text

@@ -15,7 +15,7 @@ import pytest
 
 from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
 from minseg_tui.ui.widgets.plots import Canvas
-from tests.ui.helpers import settle, start_with_a_run
+from tests.ui.helpers import burst, settle, start_with_a_run
 
 
 @asynccontextmanager
@@ -108,3 +108,24 @@ async def test_a_click_on_the_rise_puts_the_cursor_on_that_column(quiet):
         assert app.focused is plot
         assert panel.cursor == 20 and panel.reading is not None
         assert _cursor_column(plot.query_one(Canvas)) == first + 20
+
+
+async def test_the_plots_own_characters_act_on_it_and_type_nothing(quiet):
+    """On the focused plot, ] and [ pick the next and the previous rise and z shows the whole
+    log or the rise again, typed one by one or in one burst; none of them goes into an
+    entry. The step form took every character a plot passed up for the first empty entry,
+    before Textual ran the plot's binding: z typed 'z' into the group's T."""
+    async with _task12(quiet) as (app, pilot, panel, plot):
+        form = app.screen.pane
+        await pilot.press("shift+tab")  # from the group's T to the plot
+        await settle(pilot)
+        assert app.focused is plot and panel.zoom == 0
+        await pilot.press("right_square_bracket")
+        await settle(pilot)
+        assert panel.zoom == 1
+        await pilot.press("left_square_bracket", "z")
+        await settle(pilot)
+        assert panel.zoom is None
+        await burst(pilot, "z", "right_square_bracket")
+        assert panel.zoom == 1
+        assert all(not r.input.value for r in form.rows() if not r.field.options)

@@ -15,10 +15,8 @@ at once, :func:`~tests.ui.helpers.burst`)."""
 
 from __future__ import annotations
 
-from textual.widgets import RadioSet
-
 from minseg_tui.lab.content.steps import step
-from minseg_tui.ui.widgets.fields import Choice, FieldRow, Ticks, field_id
+from minseg_tui.ui.widgets.fields import AnswerList, FieldRow, field_id
 from tests.ui.helpers import (
     answering,
     burst,
@@ -39,12 +37,12 @@ def _row(app, key: str) -> FieldRow:
 
 def _shown_ticked(row: FieldRow) -> tuple[int, ...]:
     """The answers the row shows ticked (0-based): X in a list to tick, ● in a list of one."""
-    ticks = row.query(Ticks)
-    if ticks:
-        return tuple(sorted(ticks.first().selected))
-    choices = list(row.query_one(RadioSet).query(Choice))
-    dots = tuple(k for k, c in enumerate(choices) if "●" in str(c.render()))
-    values = tuple(k for k, c in enumerate(choices) if c.value)
+    answers = row.query_one(AnswerList)
+    if answers.multiple:
+        return answers.chosen
+    lines = answers.render().plain.splitlines()
+    dots = tuple(k for k, line in enumerate(lines) if "●" in line)
+    values = answers.chosen
     assert dots == values, (dots, values)
     return values
 

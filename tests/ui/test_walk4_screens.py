@@ -7,14 +7,13 @@ from __future__ import annotations
 import pytest
 from textual.geometry import Region
 from textual.strip import Strip
-from textual.widgets import RadioButton, RadioSet
 
 from minseg_tui.lab.content.steps import step
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.messages import MeterRead
 from minseg_tui.ui.panels.meter import MeterPanel
 from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
-from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.fields import AnswerList, FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas
 from tests.ui.conftest import board_url, real_app
 from tests.ui.helpers import (
@@ -50,7 +49,7 @@ async def test_the_model_check_is_done_when_the_group_ticks_done_not_by_a_note(q
         await settle(pilot)
         assert nav_mark(app, "model_check") == "…"  # a note alone: started, not done
         done = _row(app, "model_check.done")
-        assert answering(app) is done.query_one(RadioSet)  # Enter in the notes moved on to it
+        assert answering(app) is done.query_one(AnswerList)  # Enter in the notes moved on to it
         await pilot.press("space")
         await settle(pilot)
         assert nav_mark(app, "model_check") == "✓"
@@ -69,9 +68,13 @@ def _text(widget) -> str:
     return " ".join(" ".join(strip.text.split()) for strip in _drawn(widget)).strip()
 
 
-def _cursor(buttons) -> list[str]:
+def _cursor(answers: AnswerList) -> list[str]:
     """The answers drawn with the mark of the one Space would tick ('▶' before it)."""
-    return [str(b.label) for b in buttons if _text(b).startswith("▶")]
+    gutter, width = answers.styles.gutter, answers.outer_size.width
+    inside = [s.crop(gutter.left, width - gutter.right).text for s in _drawn(answers)]
+    marked = [line for line in inside if "▶" in line]
+    starts = [" ".join(line[line.index("▶") + 3 :].split()) for line in marked]
+    return [a for a in answers.answers if any(s and a.startswith(s) for s in starts)]
 
 
 def _label(app, key: str) -> str:
@@ -94,10 +97,10 @@ async def test_the_focused_field_is_marked_in_the_text_not_by_colour_alone(quiet
         await pilot.press("tab")
         await settle(pilot)
         done = _row(app, "prep1.done")
-        assert answering(app) is done.query_one(RadioSet)
+        assert answering(app) is done.query_one(AnswerList)
         assert _label(app, "prep1.notes") == "notes"
         assert _label(app, "prep1.done") == "▶ done?"
-        assert _cursor(done.query(RadioButton)) == ["we have read sections 2.1 and 2.6"]
+        assert _cursor(done.query_one(AnswerList)) == ["we have read sections 2.1 and 2.6"]
         await pilot.press("space")
         await settle(pilot)
         with app.session as s:
@@ -106,15 +109,15 @@ async def test_the_focused_field_is_marked_in_the_text_not_by_colour_alone(quiet
         await goto(pilot, "summary")
         questions = [f.key for f in step("summary").fields if f.options]
         first, second = (_row(app, k) for k in questions[:2])
-        assert answering(app) is first.query_one(RadioSet)
+        assert answering(app) is first.query_one(AnswerList)
         assert _label(app, questions[0]).startswith("▶ The MinSeg DC-motor is")
         await pilot.press("tab")  # the next question, marked; the first one no longer
         await settle(pilot)
-        assert answering(app) is second.query_one(RadioSet)
+        assert answering(app) is second.query_one(AnswerList)
         assert not _label(app, questions[0]).startswith("▶")
         assert _label(app, questions[1]).startswith("▶ The differential equation")
-        options = list(second.query(RadioButton))
-        assert _cursor(options) == ["a model"] and not _cursor(first.query(RadioButton))
+        options = second.query_one(AnswerList)
+        assert _cursor(options) == ["a model"] and not _cursor(first.query_one(AnswerList))
         await pilot.press("down")
         await settle(pilot)
         assert _cursor(options) == ["a system"]

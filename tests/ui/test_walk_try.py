@@ -8,10 +8,9 @@ import numpy as np
 import pytest
 from textual import events
 from textual.geometry import Region
-from textual.widgets import RadioButton, RadioSet
 
 from minseg_tui.ui.panels.results import ResponsePlot
-from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.fields import AnswerList, FieldRow, field_id
 from minseg_tui.ui.widgets.plots import Canvas, drawing_order
 from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.helpers import (
@@ -109,10 +108,13 @@ async def test_the_model_checks_two_plots_share_their_axes_rows(quiet, size):
 
 
 def _shown_text(widget) -> str:
-    """What ``widget`` shows, its lines joined by spaces (a wrapped line joins back)."""
+    """What ``widget`` shows inside its border and padding, its lines joined by spaces (a
+    wrapped line joins back)."""
     w, h = widget.outer_size
-    lines = widget.render_lines(Region(0, 0, w, h))
-    return " ".join(" ".join(strip.text.split()) for strip in lines).strip()
+    gutter = widget.styles.gutter
+    lines = widget.render_lines(Region(0, 0, w, h))[gutter.top : h - gutter.bottom]
+    shown = [strip.crop(gutter.left, w - gutter.right) for strip in lines]
+    return " ".join(" ".join(strip.text.split()) for strip in shown).strip()
 
 
 async def test_the_summary_questions_and_answers_show_whole_at_80x24(quiet):
@@ -122,10 +124,10 @@ async def test_the_summary_questions_and_answers_show_whole_at_80x24(quiet):
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await goto(pilot, "summary")
-        buttons = list(app.screen.query(RadioButton))
+        lists = list(app.screen.query(AnswerList))
         labels = list(app.screen.query(".choice-label"))
-        assert buttons and labels
-        for widget, text in [(b, str(b.label)) for b in buttons] + [
+        assert lists and labels
+        for widget, text in [(a, answer) for a in lists for answer in a.answers] + [
             (lb, str(lb.render())) for lb in labels
         ]:
             assert " ".join(text.split()) in _shown_text(widget)
@@ -144,7 +146,7 @@ async def test_typing_on_the_summarys_answers_goes_into_its_text_entry(quiet):
         await pilot.press(*"why T", "enter")
         await settle(pilot)
         assert _stored(app, "summary.unclear").text == "why T"
-        radio = app.screen.query(RadioSet).last()
+        radio = app.screen.query(AnswerList).last()
         radio.focus()
         await settle(pilot)
         await pilot.press("space")  # picks the highlighted answer, as before

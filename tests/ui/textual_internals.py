@@ -4,22 +4,24 @@ Each reach is here because Textual 8.2 offers no public way to do it; when an up
 Textual breaks one, this file is the one to read. Checked against Textual's source in the
 venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
-1. :func:`running_app`: ``textual._context.active_app``. Textual's own waits take no app,
-   and Textual exposes the running app only to its own nodes (``self.app``).
-2. :func:`wait_for_screen`: ``Pilot._wait_for_screen``. The exact wait Pilot itself uses
-   after a key (every node handles what was queued on it); Pilot's public ``pause()`` adds
-   a forced layout and, with no delay, the CPU-idle guess below.
-3. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
+Seven names of Textual's internals, in three reaches:
+
+1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``. The exact wait Pilot itself uses
+   after a key (every node handles what was queued on it); it also returns at once when
+   the app has failed (``App._exception_event``), which no public API shows. Pilot's
+   public ``pause()`` adds a forced layout and, with no delay, the CPU-idle guess below.
+2. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
    ``textual.app`` and ``textual.pilot``: ``Pilot.press`` and ``Pilot.pause()`` call it
    after every key, and App.run_test has no option to wait otherwise.
-4. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
+3. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
    the replacement the screen's ``_compositor._dirty_regions``, ``_dirty_widgets`` and
    ``App._update_mouse_over``. No public switch turns painting off in a headless app.
-5. :func:`keep_cursors_still`: ``Input._toggle_cursor``. ``Input.cursor_blink`` is public but
-   is set per Input, and the app makes its Inputs itself.
-6. :func:`key_name`: ``textual.keys._character_to_key``. Textual turns a typed character
-   into its key name (',' -> 'comma') only with this private function (the public
-   ``key_to_character`` goes the other way); Pilot.press uses it too.
+
+Done with public API here: the running app is ``MessagePump.app`` of a node attached to no
+app (not ``textual._context.active_app``); the still cursor is each Input's
+``cursor_blink`` set off as it is made (not ``Input._toggle_cursor``); a character's key
+name is made from its Unicode name and Textual's ``KEY_NAME_REPLACEMENTS`` (not
+``textual.keys._character_to_key``), checked against ``key_to_character``.
 
 Done with public API elsewhere: keys handed over in a burst go in with ``App.post_message``
 (not the driver, ``App._driver``), the notifications shown are the ``Notify`` messages heard
@@ -29,24 +31,28 @@ through ``run_test(message_hook=...)`` and the ``Toast`` widgets queried by type
 
 from __future__ import annotations
 
+import unicodedata
 from collections.abc import Awaitable, Callable
+from typing import Any
 
 import pytest
 import textual.app
 import textual.pilot
-from textual._context import active_app
 from textual.app import App
-from textual.keys import _character_to_key
+from textual.keys import KEY_NAME_REPLACEMENTS, key_to_character
+from textual.message_pump import MessagePump
 from textual.pilot import Pilot
 from textual.screen import Screen
 from textual.widgets import Input
 
 
 def running_app() -> App[object] | None:
-    """The app running in this task (``run_test``), None outside one."""
+    """The app running in this task (``run_test``), None outside one: what Textual's
+    documented ``MessagePump.app`` gives a node not attached to any app (the current
+    asyncio context's app)."""
     try:
-        return active_app.get()
-    except LookupError:
+        return MessagePump().app
+    except RuntimeError:  # Textual's NoActiveAppError: no app runs in this task
         return None
 
 
@@ -90,12 +96,30 @@ def leave_headless_frames_unpainted(monkeypatch: pytest.MonkeyPatch) -> None:
 
 def keep_cursors_still(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every Input's cursor stays shown: a blinking cursor would make a screen depend on when
-    it was taken (harlequin's tests do the same)."""
-    monkeypatch.setattr(Input, "_toggle_cursor", lambda _self: None)
+    it was taken (harlequin's tests do the same). Each Input is made with its public
+    ``cursor_blink`` off (the app's and Textual's own, the command palette's)."""
+    made = Input.__init__
+
+    def still(self: Input, *args: Any, **kwargs: Any) -> None:
+        made(self, *args, **kwargs)
+        self.cursor_blink = False
+
+    monkeypatch.setattr(Input, "__init__", still)
 
 
 def key_name(key: str) -> str:
     """The name Textual gives the key that types ``key`` when it is one character that is not
     a letter or digit (',' -> 'comma', ' ' -> 'space'), as a terminal's key arrives; any other
-    ``key`` (a letter, a digit, a key name such as 'enter') as it is."""
-    return _character_to_key(key) if len(key) == 1 and not key.isalnum() else key
+    ``key`` (a letter, a digit, a key name such as 'enter') as it is. Made as Textual makes
+    it (the character's Unicode name, with Textual's public ``KEY_NAME_REPLACEMENTS``), and
+    checked against Textual's public inverse, ``key_to_character``, where it knows the name
+    (it reads 'minus' as no character): a Textual that names a key otherwise fails here,
+    not in a test's burst."""
+    if len(key) != 1 or key.isalnum():
+        return key
+    name = unicodedata.name(key).lower().replace("-", "_").replace(" ", "_")
+    name = KEY_NAME_REPLACEMENTS.get(name, name)
+    read = key_to_character(name)
+    if read not in (key, None):
+        raise ValueError(f"Textual reads key {name!r} as {read!r}, not {key!r}")
+    return name

@@ -179,15 +179,26 @@ def read_quantity(fld: Field, text: str) -> Parsed:
         ) from None
 
 
-def _echo(fld: Field, text: str, value: float) -> str:
-    """How ``text`` (accepted in the quantity field ``fld``, ``value`` SI) was read, when it
-    is not written as the lab writes it, a number with a decimal point and perhaps the form
-    unit: a decimal comma, a unit spelt out, arithmetic ('5,3 ohm' is "read as 5.3 Ω");
-    '' when it is."""
-    plain = rf"\+?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*(?:{re.escape(fld.unit)})?"
-    if re.fullmatch(plain, text.strip()):
+def _echo(fld: Field, text: str, p: Parsed) -> str:
+    """How ``text`` (accepted in the quantity field ``fld`` as ``p``) was read, in the one
+    unit its quantity is shown in (:func:`~minseg_tui.quantities.shown_unit`: T in ms, f in
+    mN m s/rad), when it is not written as the lab writes it, a number with a decimal point
+    and perhaps that unit: a decimal comma, a unit spelt out, arithmetic ('5,3 ohm' is "read
+    as 5.3 Ω"); a value typed in another unit says what was typed ('500 rpm' is "read as
+    52.36 rad/s (typed 500 rpm)"); '' when it is written the lab's way."""
+    shown = quantities.shown_unit(fld.unit)
+    t = text.strip()
+    plain = r"\+?(?:\d+\.?\d*|\.\d+)"  # the lab's way: no exponent ("1e3" is echoed)
+    number = rf"{plain}(?:[eE][-+]?\d+)?"
+    bare = re.fullmatch(number, t) is not None
+    lab_way = re.fullmatch(plain, t) is not None
+    if re.fullmatch(rf"{plain}\s*{re.escape(shown)}", t) or (lab_way and fld.unit == shown):
         return ""
-    return f"read as {quantities.format_reading(value, fld.unit)}"
+    said = f"read as {quantities.format_reading(p.value, shown)}"
+    named = p.unit != fld.unit or not bare  # a unit was typed
+    if named and p.unit != shown and not re.fullmatch(rf"{number}\s*{re.escape(fld.unit)}", t):
+        said += f" (typed {t})"
+    return said
 
 
 def choice_words(fld: Field, chosen: Sequence[int]) -> str:
@@ -222,7 +233,7 @@ def read_entry(fld: Field, text: str) -> Entry:
                 ok=True,
                 value=p.value,
                 unit=p.unit,
-                message=p.note or _echo(fld, text, p.value),
+                message=_echo(fld, text, p),
                 warnings=warnings,
             )
         if fld.kind == "formula":

@@ -43,7 +43,6 @@ from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
     NOT_DETERMINED,
-    UNITS,
     format_constant_interval,
     format_diff,
     format_number,
@@ -206,13 +205,10 @@ def _feedback(session: Session, key: str) -> str:
 
 
 def _shown_unit(session: Session, c: Comparison) -> str:
-    """The unit a comparison shows ``c``'s values in: the one the group typed theirs in, when
-    it measures the same quantity ("57 ms" beside "56.91 ms"), else the field's form unit; T
-    and f in the one unit each is shown in (:func:`~minseg_tui.quantities.shown_unit`)."""
-    typed_ = session.entry(c.key)
-    if typed_ is not None and typed_.ok and typed_.unit and typed_.unit in UNITS:
-        if c.unit in UNITS and UNITS[typed_.unit].quantity == UNITS[c.unit].quantity:
-            return shown_unit(typed_.unit)
+    """The unit a comparison shows ``c``'s values in: one unit per quantity, the field's form
+    unit, T and f in the one unit each is shown in (:func:`~minseg_tui.quantities.shown_unit`),
+    whatever unit the group typed theirs in (80 rpm is compared as 8.378 rad/s)."""
+    del session  # what the group typed does not change the unit
     return shown_unit(c.unit)
 
 
@@ -231,7 +227,7 @@ def under_entry(session: Session, c: Comparison) -> str:
     1.996 rad/s/V'); ○ :data:`NOT_JUDGED` while nothing is computed to compare it with. The
     panel under the entries says how each was computed and why the two differ."""
     if c.right is None:
-        return f"{MARK['unjudged']} {NOT_JUDGED}"
+        return f"{MARK['unjudged']} " + (f"not judged: {c.verdict}" if c.verdict else NOT_JUDGED)
     mark, word = (MARK["done"], "right") if c.right else (MARK["wrong"], "wrong")
     unit = _shown_unit(session, c)
     if c.rel_diff is not None and isinstance(c.computed, float):
@@ -243,6 +239,8 @@ def under_entry(session: Session, c: Comparison) -> str:
             said += f", {why}"
     else:
         said = c.verdict or word
+    if c.caveat:
+        said += f"; {c.caveat}"
     if c.least_squares is not None:
         lsq = c.least_squares
         said += f"; least squares {lsq if isinstance(lsq, str) else _fmt(lsq, unit)}"
@@ -352,10 +350,24 @@ def policy(session: Session) -> lab_compare.Policy:
     return lab_compare.read_policy(session.folder.parent)
 
 
+_WAY: dict[str, str] = {
+    "own.omega_step": "the program's steady speed",
+    "own.T": "read your way",
+}
+"""How the value a group's reading is compared with was had, before it (the others: computed
+your way, from their own values; Tasks 7-9: from their table)."""
+
+_T_WHY = "The fit models the sampling, which moves the 63 % reading (the two T: under the results)."
+"""Task 12's one sentence on why the least-squares T is not the 63 % reading (the whole
+reason stands once under the results)."""
+
+
 def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], ...]:
     """The group's own readings on step ``step_id`` beside the values computed their way:
-    (label, yours, computed with the relative difference; then, on a second line, the
-    least-squares value and why the two differ). A value still hidden says how to see it."""
+    (label, yours, then how the value it is compared with was had, the value, the relative
+    difference; on a second line, the least-squares value and one sentence on why the two
+    differ): 'computed your way 2.069 rad/s/V (...): -3 %', 'read your way 56.14 ms (the
+    program's reading by your method: ...): +2 %'. A value still hidden says how to see it."""
     out = []
     conceal = hidden(session)
     for c in session.comparisons(step_id):
@@ -370,13 +382,29 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             else _fmt(c.own, c.unit)
         )
         if c.key in conceal:
-            out.append((c.label, own, f"shown once you enter yours ({REVEAL_KEY}: lab assistant)"))
+            out.append(
+                (
+                    c.label,
+                    own,
+                    f"computed: shown once you enter yours ({REVEAL_KEY}: lab assistant)",
+                )
+            )
             continue
-        unit = _shown_unit(session, c)  # in the unit the group typed theirs in
+        if c.computed is None and c.right is None and c.verdict:  # waits for an entry
+            out.append((c.label, own, f"{MARK['unjudged']} not judged: {c.verdict}"))
+            continue
+        unit = _shown_unit(session, c)
+        way = _WAY.get(
+            c.key, "computed from your table" if step_id == "table" else "computed your way"
+        )
         comp = (
-            "—"
-            if c.computed is None
-            else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, unit))
+            way
+            + " "
+            + (
+                "—"
+                if c.computed is None
+                else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, unit))
+            )
         )
         if c.how:
             comp += f" ({c.how})"
@@ -384,15 +412,17 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             comp += f": {format_diff(c.rel_diff)}"
         if c.verdict:
             comp += f"\n  {c.verdict}"
+        if c.caveat:
+            comp += f"\n  {c.caveat}"
         if c.revealed_early:
             comp += f" · {lab_compare.REVEALED_EARLY}"
         if c.least_squares is not None:
             lsq = (
                 c.least_squares if isinstance(c.least_squares, str) else _fmt(c.least_squares, unit)
             )
-            # T's why is the long sentence on the two readings of T: it stands under the
-            # results (:func:`results`), so the comparison stays short beside the entry
-            comp += f"\n  least squares: {lsq}. {'' if c.key == 'own.T' else c.why}".rstrip()
+            # T's whole why is the long sentence on the two readings of T: it stands under the
+            # results (:func:`results`), so the comparison keeps one short sentence
+            comp += f"\n  least squares: {lsq}. {_T_WHY if c.key == 'own.T' else c.why}".rstrip()
         out.append((c.label, own, comp))
     return tuple(out)
 
@@ -860,8 +890,9 @@ def results(session: Session, step_id: str) -> ResultsView:
     lines: list[str] = []
     rises: tuple[RiseZoom, ...] = ()
     shows: frozenset[str] = frozenset()
-    if ident is not None and ident.step is not None:
-        st = ident.step
+    st_run = res.response_result
+    if st_run is not None:
+        st = st_run
         conceal = hidden(session)
 
         def shown(key: str, line: str, what: str, task: str) -> str:
@@ -897,11 +928,14 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
             # why the two T differ, said once on each screen (not in Task 12's comparison)
             *([lab_compare.two_T_of(st)] if "own.T" not in conceal else []),
-            shown("own.J", f"J = {_fmt(st.J, 'kg m^2')}", "J", "Task 13"),
+            shown("own.J", f"J = {_fmt(st.J, 'kg m^2')}", "J", "Task 13")
+            if ident is not None
+            else "J: waits for R, k_v and f from the table of Tasks 2-9, which gives none yet "
+            "(why: below)",
             shown("own.model", f"model: {st.model_equation(_num)}", "the model", "Task 14"),
             shown(
                 "own.omega_5",
-                f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s')}",
+                f"omega at 5 V = {_fmt(st.K * model_identify.U_TASK15, 'rad/s')}",
                 "omega at 5 V",
                 "Task 15",
             ),
@@ -1105,3 +1139,66 @@ def run_in_use(session: Session) -> str:
     """One line saying which run Tasks 11-15 and the model check use."""
     run = session.response_run()
     return f"{USES_RUN} {run.name if run else '— (none yet)'}"
+
+
+# -- what is not answered yet -----------------------------------------------------------------
+ASKED_PARTS: tuple[str, ...] = ("Preparation", "Set-up", "Steady state", "Model check", "Summary")
+"""The parts whose required entries the lab asks for (their optional notes left out)."""
+
+
+def _short(step_id: str, title: str) -> str:
+    """A step's name as the list of steps writes it ('Task 12', 'Prep 7')."""
+    head = title.split(":")[0]
+    return head.replace("Preparation", "Prep") if step_id != "summary" else "Summary"
+
+
+def unanswered(session: Session) -> tuple[tuple[str, str, str], ...]:
+    """What the lab asks for that the group has not answered (an accepted entry), in the
+    lab's order: (the step's short name, with the question's number on the summary, 'Summary
+    Q4'; where it stands, 'Summary and reflections (section 3.2), question 4'; the field's
+    label, 'The static gain K describes', or '' for a step with nothing to type). Asked:
+    the required entries of the preparation, Tasks 2-5, the model check and the summary,
+    the board checks of Tasks 1 and 3, a run for Task 10, and the group's own values of
+    Tasks 11-15."""
+    answered = session.answered()
+    out: list[tuple[str, str, str]] = []
+    for st in STEPS:
+        short = _short(st.id, st.title)
+        if "run_square_wave" in st.actions or (st.done_when and not st.fields):
+            if session.step_status(st.id) != "done":  # no run recorded, a board check not passed
+                out.append((short, f"{st.title}: not done yet", ""))
+            continue
+        for f in st.fields:
+            asked = (st.part in ASKED_PARTS and not f.optional) or (
+                st.part == "Results" and bool(f.compare)
+            )
+            if not asked or f.key in answered:
+                continue
+            if st.id == "summary":
+                n = f.key.split(".")[-1]
+                out.append((f"Summary Q{n}", f"{st.title}, question {n}", f.label))
+            else:
+                out.append((short, st.title, f.label))
+    return tuple(out)
+
+
+def unanswered_line(session: Session, most: int = 8) -> str:
+    """One line for the F8 notice: what is still unanswered, the lab's tasks first, then the
+    summary and the preparation, numbers joined ('Task 12, 15; Summary Q4, Q5; Prep 7'), at
+    most ``most`` numbers and how many more; '' when everything is answered."""
+    names = list(dict.fromkeys(short for short, _, _ in unanswered(session)))
+    if not names:
+        return ""
+    groups: dict[str, list[str]] = {"Task": [], "": [], "Summary Q": [], "Prep": []}
+    for name in names:  # "" holds a step named without a number: the model check
+        kind = next((k for k in groups if k and name.startswith(k)), "")
+        groups[kind].append(name.removeprefix(kind).strip())
+    said: list[str] = []
+    left = most
+    for kind, numbers in groups.items():
+        if numbers and left > 0:
+            head = "" if not kind else kind if kind.endswith("Q") else f"{kind} "
+            said.append(head + ", ".join(numbers[:left]))
+            left -= len(numbers[:left])
+    more = f" and {len(names) - most} more" if len(names) > most else ""
+    return "unanswered, marked in the report: " + "; ".join(said) + more

@@ -50,6 +50,7 @@ from minseg_tui.model.runlog import (
     problem,
     switch_on_glitches,
 )
+from minseg_tui.quantities import format_constant
 
 U_TASK15: float = 5.0
 """The applied voltage of Task 15, V."""
@@ -352,8 +353,8 @@ def _T_63_note(
     apart = T_63 - T
     side = "longer" if apart > 0 else "shorter"
     out = (
-        f"The 63 % reading ({T_63 * 1e3:.1f} ms) is {abs(apart) * 1e3:.1f} ms ({abs(apart) / T * 100:.1f} %) "
-        f"{side} than the least-squares T ({T * 1e3:.1f} ms)."
+        f"The 63 % reading ({format_constant(T_63, 's')}) is {format_constant(abs(apart), 's')} "
+        f"({abs(apart) / T * 100:.1f} %) {side} than the least-squares T ({format_constant(T, 's')})."
     )
     if T_63_model is None:
         return out
@@ -367,7 +368,7 @@ def _T_63_note(
     )
     out += (
         f" Read the same way on the fitted model sampled every {ts * 1e3:.3g} ms like this log, it gives "
-        f"{T_63_model * 1e3:.1f} ms: {delay}{sampled * 1e3:+.1f} ms "
+        f"{format_constant(T_63_model, 's')}: {delay}{sampled * 1e3:+.1f} ms "
         "(the logged speed is the mean over each sample interval, half a sample late, and the reading "
         "joins the samples by straight lines)"
     )

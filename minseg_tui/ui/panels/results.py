@@ -18,7 +18,7 @@ from minseg_tui.lab.content.steps import Step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import ResultsView
-from minseg_tui.quantities import format_value
+from minseg_tui.quantities import format_constant, format_value
 from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
@@ -142,9 +142,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         lines = list(view.lines) or ["no step result yet"]
         lines += [f"! {p}" for p in view.problems]
         self._lines.update("\n".join(lines))
-        compared = "\n".join(
-            f"{label}: yours {own} · computed {comp}" for label, own, comp in view.compare
-        )
+        compared = "\n".join(f"{label}: yours {own} · {comp}" for label, own, comp in view.compare)
         self._compare.update(compared)
         self._compare.display = bool(compared)
 
@@ -207,7 +205,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         crossing = (
             "the speed crosses it: read T there"
             if not read_T
-            else f"the speed crosses it {format_value(w.T_63, 's')} after the edge"
+            else f"the speed crosses it {format_constant(w.T_63, 's')} after the edge"
             if w.T_63 is not None
             else "the speed never crosses it"
         )

@@ -51,9 +51,7 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         table.move_cursor(row=cursor.row, column=cursor.column, animate=False)
         lines = ["  ".join(f"{name} = {cell.text}" for name, cell in view.results)]
         lines += [
-            f"{label}: yours {own} · computed {comp}"
-            for label, own, comp in view.compare
-            if own != "—"
+            f"{label}: yours {own} · {comp}" for label, own, comp in view.compare if own != "—"
         ]
         self.query_one("#results", Prose).update("\n".join(lines))
         self._warnings.update("\n".join(f"! {w}" for w in view.warnings))

@@ -5,25 +5,24 @@ from __future__ import annotations
 
 import asyncio
 import re
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import contextmanager, nullcontext
 from functools import partial
 from inspect import isawaitable
 from typing import Literal
 
-from rich.segment import Segment
 from rich.text import Text
 from textual import events, on
 from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical, VerticalScroll
 from textual.content import Content
-from textual.geometry import Size
 from textual.message import Message
 from textual.reactive import reactive
 from textual.strip import Strip
+from textual.style import Style as VisualStyle
 from textual.widget import Widget
-from textual.widgets import Label, RadioButton, RadioSet, SelectionList
+from textual.widgets import Label
 from textual.widgets.input import Selection
 
 from minseg_tui.lab.content.steps import Field
@@ -41,132 +40,199 @@ CURSOR_MARK = "▶"
 Textual shows it by colour alone."""
 
 
-class Choice(RadioButton):
-    """A radio button whose marks say without colour (NO_COLOR, a monochrome terminal)
-    whether it is chosen, ● chosen, blank not, and whether Space would tick it
-    (:data:`CURSOR_MARK` before it while its list has the focus)."""
+class AnswerList(Widget, can_focus=False):
+    """A question's answers, one line each (wrapped if long) behind its mark: ● picked in a
+    list of one answer, X ticked in a list of several, blank not. Drawn and keyed here, as
+    :class:`EntryBox` is: it never takes the focus. Its step's form (:class:`FieldForm`)
+    does, and hands it the keys typed while its row is the form's current one
+    (:meth:`press`), in the order typed, in the form's one queue; it then shows as focused
+    (:meth:`show_current`), with :data:`CURSOR_MARK` before the answer Space would tick.
+    A pick goes to the lab at once, by a plain call (:meth:`FieldRow.pick`).
 
-    def __init__(self, label: str, value: bool = False) -> None:
-        super().__init__(label, value=value)
-        self._mark()
+    Keys: Up/Left and Down/Right move the cursor (round from the last answer to the first),
+    Home/End to the first/last; Space or Enter picks the answer under it, clearing the
+    others at once in a list of one (walk 6: Textual's RadioSet cleared the answer picked
+    before only when it read its button's message, after the keys of the burst still
+    queued, and showed two dots), and ticks or unticks it in a list of several.
 
-    def watch_value(self) -> None:
-        self._mark()
-        super().watch_value()
+    It looks as Textual's RadioSet of RadioButtons does (the snapshots are unchanged), the
+    answers wrapping instead of cut with an ellipsis."""
 
-    def _mark(self) -> None:
-        self.BUTTON_INNER = "●" if self.value else " "
+    DEFAULT_CSS = """
+    AnswerList {
+        border: tall $border-blurred;
+        background: $surface;
+        padding: 0 1;
+        height: auto;
+        width: 1fr;
+        text-wrap: wrap;
+        pointer: pointer;
+        &>.answer-list--button {
+            color: $panel-darken-2;
+            background: $panel;
+        }
+        &>.answer-list--button-on {
+            color: $text-success;
+            background: $panel;
+        }
+        &>.answer-list--cursor {
+            background: $block-cursor-blurred-background;
+        }
+        &.-current {
+            border: tall $border;
+            background-tint: $foreground 5%;
+            &>.answer-list--cursor {
+                background: $block-cursor-background;
+                color: $block-cursor-foreground;
+                text-style: $block-cursor-text-style;
+            }
+        }
+    }
+    """
+    COMPONENT_CLASSES = {
+        "answer-list--button",
+        "answer-list--button-on",
+        "answer-list--label",
+        "answer-list--cursor",
+    }
 
-    def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
-        """As many lines as the answer wraps to (Textual's toggle buttons take one)."""
-        return Widget.get_content_height(self, container, viewport, width)
+    def __init__(
+        self,
+        answers: Sequence[str],
+        chosen: Iterable[int] = (),
+        multiple: bool = False,
+        classes: str = "",
+    ) -> None:
+        super().__init__(classes=classes)
+        self.answers = tuple(answers)
+        """The answers, in order (0-based indices name them)."""
+        self.multiple = multiple
+        """Several answers may be ticked (False: one is picked)."""
+        self._chosen = tuple(sorted(set(chosen)))
+        if not multiple:
+            self._chosen = self._chosen[:1]
+        self._cursor = 0
 
-    def render(self) -> Content:
-        drawn = super().render()
-        parent = self.parent
-        if self.has_class("-selected") and isinstance(parent, Widget) and parent.has_focus:
-            return Content.assemble((CURSOR_MARK, "bold"), drawn[len(self.BUTTON_LEFT) :])
-        return drawn
+    @property
+    def chosen(self) -> tuple[int, ...]:
+        """The answers ticked or picked, 0-based, in order."""
+        return self._chosen
 
+    @property
+    def cursor(self) -> int:
+        """The answer under the cursor (0-based): Space or Enter picks it."""
+        return self._cursor
 
-class AnswerList(Widget):
-    """What the two lists of answers share: they never take the focus. Their step's form
-    (:class:`FieldForm`) does, and hands a list the keys typed while its row is the form's
-    current one (:meth:`press`), in the order typed, in the form's one queue; the list then
-    shows as focused (:meth:`show_current`), the mark of the answer Space would tick
-    included. A tick goes to the lab at once, by a plain call (:meth:`FieldRow.pick`)."""
+    @property
+    def mark(self) -> str:
+        """The mark of a chosen answer: ● (one answer) or X (several)."""
+        return "X" if self.multiple else "●"
+
+    @property
+    def is_current(self) -> bool:
+        """The keys go to this list (its row is the focused form's current one)."""
+        return self.has_class("-current")
 
     def show_current(self, current: bool) -> None:
-        """Shown as the list the keys go to (its row is the focused form's current one), or
-        not: Textual draws a list's focused look and its cursor from ``has_focus``."""
-        self.has_focus = current
-        for choice in self.query(Choice):  # the cursor's mark comes or goes
-            choice.refresh()
+        """Shown as the list the keys go to, or not: the focused look, and the cursor's
+        mark."""
+        self.set_class(current, "-current")
         self.refresh()
 
+    def move(self, index: int) -> None:
+        """The cursor on answer ``index`` (round from the last to the first and back)."""
+        if self.answers:
+            self._cursor = index % len(self.answers)
+            self.refresh()
+
+    def choose(self, index: int) -> bool:
+        """Answer ``index`` picked (one answer: every other cleared at once) or ticked and
+        unticked (several); False: nothing changed (the answer picked already)."""
+        if self.multiple:
+            ticked = set(self._chosen) ^ {index}
+        else:
+            ticked = {index}
+        chosen = tuple(sorted(ticked))
+        if chosen == self._chosen:
+            return False
+        self._chosen = chosen
+        self.refresh()
+        return True
+
+    def press(self, key: str) -> bool:
+        """Key ``key`` acts on the list (see the class); False: not one of its keys."""
+        if key in ("down", "right"):
+            self.move(self._cursor + 1)
+        elif key in ("up", "left"):
+            self.move(self._cursor - 1)
+        elif key == "home":
+            self.move(0)
+        elif key == "end":
+            self.move(-1)
+        elif key in ("space", "enter"):
+            self._pick(self._cursor)
+        else:
+            return False
+        return True
+
+    def _pick(self, index: int) -> None:
+        if self.answers and self.choose(index):
+            row = self.parent
+            if isinstance(row, FieldRow):
+                row.pick(self._chosen)
+
+    def _lines(self) -> list[Content]:
+        """Each answer's line, unwrapped: its mark and its text."""
+        button = self.get_visual_style("answer-list--button")
+        on = self.get_visual_style("answer-list--button-on")
+        label = self.get_visual_style("answer-list--label")
+        cursor = self.get_visual_style("answer-list--cursor")
+        back = self.background_colors[1]
+        current = self.is_current
+        lines = []
+        for k, answer in enumerate(self.answers):
+            chosen = k in self._chosen
+            style = on if chosen else button
+            side = VisualStyle(foreground=style.background, background=back)
+            left = (CURSOR_MARK, "bold") if current and k == self._cursor else ("▐", side)
+            text = Content(answer).first_line.rstrip().pad(1, 1)
+            lines.append(
+                Content.assemble(
+                    left,
+                    (self.mark if chosen else " ", style),
+                    ("▌", side),
+                    text.stylize_before(cursor if k == self._cursor else label),
+                )
+            )
+        return lines
+
+    def render(self) -> Content:
+        return Content("\n").join(self._lines())
+
+    def on_click(self, event: events.Click) -> None:
+        """A click on an answer focuses the list's row and picks the answer (ticks or
+        unticks it in a list of several)."""
+        offset = event.get_content_offset(self)
+        row = self.parent
+        if isinstance(row, FieldRow):
+            row.focus_input()
+        if offset is None:
+            return
+        width = self.content_size.width
+        top = 0
+        for k, line in enumerate(self._lines()):
+            top += len(line.wrap(width))  # as Textual wraps it (text-wrap: wrap)
+            if offset.y < top:
+                self.move(k)
+                self._pick(k)
+                return
+
     def focus(self, scroll_visible: bool = True) -> AnswerList:
-        """Focusing the list (a click on it) focuses its form at its row."""
+        """Focusing the list focuses its form at its row."""
         row = self.parent
         if isinstance(row, FieldRow):
             row.focus_input()
         return self
-
-    def press(self, key: str) -> bool:
-        """Key ``key`` acts on the list; False: not one of its keys."""
-        raise NotImplementedError
-
-
-class Answers(RadioSet, AnswerList, can_focus=False):
-    """A list of answers of which one is picked: the arrows move its cursor, Space or Enter
-    picks the answer under it and clears the others at once (:meth:`choose`).
-
-    Not Textual's toggle: its RadioSet clears the answer picked before only when it reads
-    the button's message, after the keys of the burst still in the form's queue. Walk 6:
-    Enter on 'a model', Down, Enter on 'a system' (picked before) turned 'a system' off,
-    then Textual turned it on again beside 'a model': two dots, and Enter on 'a system'
-    did nothing after, as its button was already on."""
-
-    def press(self, key: str) -> bool:
-        if key in ("down", "right"):
-            self.action_next_button()
-        elif key in ("up", "left"):
-            self.action_previous_button()
-        elif key in ("space", "enter"):
-            index = self._selected
-            if index is not None and self.choose(index) and isinstance(self.parent, FieldRow):
-                self.parent.pick((index,))
-        else:
-            return False
-        return True
-
-    def choose(self, index: int) -> bool:
-        """Answer ``index`` (0-based) marked as picked and every other not, at once, without
-        the buttons' messages (the row hands the pick to the lab); False: it was already
-        the one picked, alone."""
-        buttons = list(self.query(RadioButton))
-        if all(b.value == (k == index) for k, b in enumerate(buttons)):
-            return False
-        with self.prevent(RadioButton.Changed):
-            for k, b in enumerate(buttons):
-                b.value = k == index
-        self._pressed_button = buttons[index]
-        return True
-
-
-class Ticks(SelectionList[int], AnswerList, can_focus=False):
-    """A list to tick whose marks say which are ticked without colour: X ticked, blank not.
-    Space and Enter tick or untick the highlighted answer; the arrows, Home and End move
-    the cursor."""
-
-    def press(self, key: str) -> bool:
-        if key in ("space", "enter"):
-            if self.highlighted is not None:
-                self.toggle(self.get_option_at_index(self.highlighted))
-                if isinstance(self.parent, FieldRow):
-                    self.parent.pick(tuple(sorted(self.selected)))
-        elif key == "down":
-            self.action_cursor_down()
-        elif key == "up":
-            self.action_cursor_up()
-        elif key == "home":
-            self.action_first()
-        elif key == "end":
-            self.action_last()
-        else:
-            return False
-        return True
-
-    def render_line(self, y: int) -> Strip:
-        strip = super().render_line(y)
-        segments = list(strip)
-        meta = segments[1].style.meta if len(segments) > 1 and segments[1].style else {}
-        if "option" not in meta:
-            return strip
-        ticked = self.get_option_at_index(meta["option"]).value in self.selected
-        segments[1] = Segment("X" if ticked else " ", segments[1].style)
-        if self.has_focus and meta["option"] == self.highlighted:
-            segments[0] = Segment(CURSOR_MARK, segments[0].style)
-        return Strip(segments, strip.cell_length)
 
 
 Restoring = Literal["held", "undo", "redo"]
@@ -529,16 +595,9 @@ class FieldRow(Vertical):
     def compose(self) -> ComposeResult:
         if self.field.options:
             yield Label(self.label_text, classes="choice-label", markup=False)
-            if self.field.multiple:
-                yield Ticks(
-                    *[(o, k, k in self._chosen) for k, o in enumerate(self.field.options)],
-                    classes="field-choice",
-                )
-            else:
-                yield Answers(
-                    *[Choice(o, value=k in self._chosen) for k, o in enumerate(self.field.options)],
-                    classes="field-choice",
-                )
+            yield AnswerList(
+                self.field.options, self._chosen, self.field.multiple, classes="field-choice"
+            )
         else:
             with Horizontal(classes="field-line"):
                 # as text, not markup: '[V]' would be read as a style and vanish
@@ -579,10 +638,8 @@ class FieldRow(Vertical):
     @property
     def answers(self) -> AnswerList | None:
         """The list of answers of a choice row (None: a text row, or not composed yet)."""
-        for box in self.query(".field-choice"):  # Textual's queries match first bases only
-            if isinstance(box, AnswerList):
-                return box
-        return None
+        lists = self.query(AnswerList)
+        return lists.first() if lists else None
 
     @property
     def box(self) -> EntryBox | AnswerList | None:
@@ -683,23 +740,12 @@ class FieldRow(Vertical):
     def pick(self, indices: tuple[int, ...]) -> None:
         """The group ticked options ``indices`` (0-based): handed to the lab at once, by a
         plain call of the form (:meth:`FieldForm.chose`), so that it is stored before a key
-        typed after it acts. The list's own message, which follows, then finds it chosen
-        already (a click ticks through that message alone)."""
+        typed after it acts."""
         if indices != self._chosen:
             self._chosen = indices
             form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
             if form is not None:
                 form.chose(self, indices)
-
-    @on(RadioSet.Changed)
-    def _radio(self, event: RadioSet.Changed) -> None:
-        event.stop()
-        self.pick((event.index,))
-
-    @on(SelectionList.SelectedChanged)
-    def _ticked(self, event: SelectionList.SelectedChanged[int]) -> None:
-        event.stop()
-        self.pick(tuple(sorted(event.selection_list.selected)))
 
     @property
     def message(self) -> str:
@@ -1064,15 +1110,18 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
 
     def _passed_on(self, event: events.Key, focused: Widget | None) -> None:
         """A key the form did not get as the focused widget: passed up by a widget of the
-        step that has the focus (a plot, a table: Tab moves on from it; a character goes
-        into the first empty entry, Space only mid-word), or handed to the form before a key
-        ahead of it moved the focus away (it goes where the focus is now)."""
+        step that has the focus (a plot, a table: Tab moves on from it; a character it binds
+        goes on to its binding, z or [ on the run log; any other character goes into the
+        first empty entry, Space only mid-word), or handed to the form before a key ahead of
+        it moved the focus away (it goes where the focus is now)."""
         inside = focused is not None and self in focused.ancestors
         key = event.key
         if inside and key in ("tab", "shift+tab"):
             self._own(event)
             self.move_focus(1 if key == "tab" else -1, focused)
             return
+        if inside and focused is not None and self._binds(focused, key):
+            return  # Textual runs the binding once the key has bubbled up to the app
         if event.is_printable and event.character and (event.character != " " or self._taking):
             if self.typing_row() is not None and not self.readonly:
                 self._own(event)
@@ -1081,6 +1130,14 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         if not inside and focused is not None:
             self._own(event)
             focused.post_message(events.Key(key, event.character))
+
+    def _binds(self, focused: Widget, key: str) -> bool:
+        """A widget of the step from ``focused`` up to the form (not the form) binds ``key``
+        (the screen's active bindings, which Textual runs for a key that bubbled up)."""
+        bound = self.screen.active_bindings.get(key)
+        if bound is None or not bound.enabled:
+            return False
+        return bound.node is not self and self in bound.node.ancestors
 
     def on_paste(self, event: events.Paste) -> None:
         """Text pasted (its first line, as a text box takes it) goes where typing goes."""
