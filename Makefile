@@ -37,10 +37,12 @@ typecheck: $(STAMP)
 # run the virtual board in real time wait for what they hear, and the link takes a reply for
 # missing only once its reader has looked after the timeout: a busy machine makes them
 # slower, not red.
+# --dist loadgroup hands out tests one by one as -n does, except that the tests of an
+# xdist_group run on one worker (tests/firmware: its fixture builds the sanitized binary once).
 PYTEST_WORKERS ?= 2
 
 pytest: $(STAMP)
-	$(PY) -m pytest -q -n $(PYTEST_WORKERS) $(PYTEST_ARGS)
+	$(PY) -m pytest -q -n $(PYTEST_WORKERS) --dist loadgroup $(PYTEST_ARGS)
 
 # Re-pin the screens after a change meant to alter them; review the SVG diffs before committing.
 snapshot-update: $(STAMP)

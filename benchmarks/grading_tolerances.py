@@ -17,7 +17,9 @@ The group's values, typed with the digits a group types (3 significant digits; T
   of the rows, k_a = 0.65 k_v; "mean" rows: the mean of the rows instead;
 - omega_ss (Task 11): read with the program's cursor (views.cursor_reading) on the last
   sample of the high level of one rise (a different rise per session);
-- K: their omega_ss / the table's u_ss at 4.5 V; omega at 5 V: 5 V x their K;
+- K: their omega_ss / the table's u_ss at 4.5 V; omega at 5 V: 5 V x their K; and, as a
+  careless group would, omega_ss / the requested 4.5 V (the slip Task 11 teaches: marked
+  wrong by name, whatever its difference);
 - T (Task 12) at 63 % of the way from the speed at the edge to their omega_ss, on the same
   rise, read with the cursor at sample resolution: "first sample" takes the first sample at
   or above the level, "nearest sample" the sample nearest the level, "on the line" the
@@ -28,7 +30,8 @@ The group's values, typed with the digits a group types (3 significant digits; T
 
 Each is entered in the session and compared by the program itself (Session.comparisons):
 the relative difference printed is the one the TUI and the report judge. Prints, per
-quantity, the median, p95 and max of |difference| and the tolerance in force.
+quantity, the median, p95 and max of |difference|, the tolerance in force and how many values
+the program marked wrong (by the tolerance, or as a named slip).
 
 ``--real``: the same 63 % reading of T on the ten real step logs of other people's motors
 (/work/shared/data/real-motors, see each PROVENANCE.txt; ../shared beside the clone), one
@@ -187,11 +190,18 @@ def read_rise(s: Session, seed: int) -> tuple[float, dict[str, float]]:
     }
 
 
-def rel(s: Session, step_id: str, key: str) -> float:
+MARKED_WRONG: dict[str, int] = {}
+"""How many of the sessions' values the program marked wrong (✗), by quantity and way: by
+the tolerance, or as a named slip (K divided by the requested voltage, ...)."""
+
+
+def rel(s: Session, step_id: str, key: str, name: str = "") -> float:
     for c in s.comparisons(step_id):
         if c.key == key:
             if c.rel_diff is None:
                 raise SystemExit(f"{key}: no comparison ({c.computed!r})")
+            name = name or key
+            MARKED_WRONG[name] = MARKED_WRONG.get(name, 0) + (c.right is False)
             return abs(c.rel_diff)
     raise SystemExit(f"{key}: not compared on {step_id}")
 
@@ -206,7 +216,7 @@ def one(root: Path, seed: int) -> dict[str, float]:
         s.enter("own.k_a", typed(v["k_a"]))
         s.enter("own.f", typed(v["f"] * 1e3) + " mN m s/rad")
         for key in ("own.k_v", "own.k_a", "own.f"):
-            out[f"{key} ({way})"] = rel(s, "table", key)
+            out[f"{key} ({way})"] = rel(s, "table", key, f"{key} ({way})")
     mine = table_values(s, "median")
     u_ss = s.value("u_ss@4.5")
     assert u_ss is not None
@@ -218,13 +228,17 @@ def one(root: Path, seed: int) -> dict[str, float]:
     out["own.omega_step"] = rel(s, "task11", "own.omega_step")
     out["own.K"] = rel(s, "task11", "own.K")
     out["own.omega_5"] = rel(s, "task15", "own.omega_5")
+    # the slip Task 11 teaches: omega_ss divided by the requested 4.5 V, not the measured u_ss
+    s.enter("own.K", typed(w_ss / 4.5))
+    out["own.K (slip: ÷ 4.5 V)"] = rel(s, "task11", "own.K", "own.K (slip: ÷ 4.5 V)")
+    s.enter("own.K", typed(K))
     for way, T in T_read.items():
         T_ms = round(T * 1e3)
         s.enter("own.T", f"{T_ms} ms")
-        out[f"own.T ({way})"] = rel(s, "task12", "own.T")
+        out[f"own.T ({way})"] = rel(s, "task12", "own.T", f"own.T ({way})")
         J = T_ms * 1e-3 * (mine["R"] * mine["f"] + mine["k_v"] * mine["k_a"]) / mine["R"]
         s.enter("own.J", typed(J))
-        out[f"own.J ({way})"] = rel(s, "task13", "own.J")
+        out[f"own.J ({way})"] = rel(s, "task13", "own.J", f"own.J ({way})")
     s.close()
     return out
 
@@ -336,14 +350,17 @@ def main() -> None:
             for k, v in one(Path(tmp), seed).items():
                 got.setdefault(k, []).append(v)
     print(f"{args.seeds} seeded sessions on the virtual board's plant; |own / compared - 1|:")
-    print(f"{'quantity':<28} {'median':>8} {'p95':>8} {'max':>8} {'tolerance':>10} {'over':>5}")
+    print(
+        f"{'quantity':<28} {'median':>8} {'p95':>8} {'max':>8} {'tolerance':>10} {'over':>5} "
+        f"{'marked ✗':>9}"
+    )
     for name, values in got.items():
         a = np.asarray(values) * 100.0
         tol = TOLERANCE[name.split(" ")[0]] * 100.0
         over = int(np.sum(a > tol))
         print(
             f"{name:<28} {np.median(a):7.2f}% {np.percentile(a, 95):7.2f}% {a.max():7.2f}% "
-            f"{tol:9.0f}% {over:5d}"
+            f"{tol:9.0f}% {over:5d} {MARKED_WRONG.get(name, 0):9d}"
         )
 
 

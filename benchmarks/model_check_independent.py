@@ -208,6 +208,69 @@ met: on the tuning seeds most of what is left names, beside the cause, the cap, 
 pole that the same log without the hand names too (23 of the 31 logs where the hand was found
 but the cause not named alone before this change), which is the single and pair decisions'
 business.
+
+s28-pairs (b7462a6 -> e1167f6; changed on tuning seeds only, the held-out seeds run once, at
+the end): one delay-like cause named alone (an average, a delay or a pole) may stand in for
+the other two together, a pair the forward search never fitted beside it; that pair is now
+fitted and named in its place when it is clear, clearly better than each single cause with
+its own average, and leaves 5 % less of the speed's own error (tuning seed 65, delay + a pole
+on the coupling: a 9-tap average alone, now the pair with both parameters within 5 %; tuning
+seed 5 of the same pair, a logger's filter: ambiguous between wrong causes, now right). What
+would tell two explanations apart sets a cause of one against a cause of the other. Tuning
+seeds (--tuning --seeds 5 --touch-seeds 5): every figure unchanged (pairs right 86.7 %, right
+or honestly ambiguous 96.0 %, ambiguous in all 9.3 %, confidently wrong 4.0 %, 1 log with a
+disturbance; none of the changed logs is among seeds 0-4); on seeds 0-9 delay + pole 5 right,
+3 honestly ambiguous, 2 ambiguous but wrong -> 6, 3, 1. Held-out (--seeds 5 --touch-seeds 5):
+pairs right 77.3 -> 77.3 %, honestly ambiguous 14.7 -> 14.7 % (right or honestly ambiguous
+92.0 -> 92.0 %), ambiguous in all 17.3 -> 16.0 %, confidently wrong 5.3 -> 6.7 % (4 -> 5 of
+75), untouched logs with a disturbance 0 -> 0; CPU per log (check only) median 0.96 -> 1.15 s,
+max 5.51 -> 9.75 s (load average about 20 on two cores, other runs beside it). The log that
+went from ambiguous but wrong to confidently wrong is an average with a pole on the coupling,
+now named delay + pole: the new step compares the pair with the average alone, not with the
+average and a partner, which the forward search had fitted (not looked into on that seed).
+One effect or none unchanged (none 5, friction 5, dead time 4, average 3, coast 5, pole 3,
+cap 3 of 5). A hand found with the cause kept 14 of 20 (s27-hands measured 15 on its branch,
+s27-pairs 14 on its own; main after both was not measured on the held-out seeds, so there is
+no before figure here; the one more failure than s27-hands, an average 901001 with a cap
+beside it, is the one s27-pairs reported). benchmarks/model_check.py --seeds 10 --skip-hour:
+single causes 70 of 70, 0 false alarms on 10 clean logs; analyze 0.71-0.89 s CPU per log
+(Python start included; 4.3-5.8 s wall at a load average of 16-20).
+Not kept (side branch s28-pairs-armature): the armature's own pole under a cap (its current
+held at the cap; exact against the armature's physics, where a driver's lag is 1.4 % off):
+on tuning seed 37 T and T2 within 1 % (T 22 % long before), but the fit does not tell a
+driver's pole from the armature's reliably (seed 0 went from honestly ambiguous to T 25 %
+short). On the generator's pole on the inductance (L = R T2 with T2 0.2-0.6 T) the motor's
+two poles are complex for most draws (L/R over about a quarter of the mechanical time
+constant), and the generator then gives T = T2 = the decay time of the pair; no model of the
+check has complex poles, so T comes out 15-60 % off there (tuning seeds 15, 25, 31, 34, 39,
+41, 45, 66 with a cap, the held-out 'average with the armature's pole when T2 equals T').
+Some logs with a cap and an inductance's pole never reach the cap (tuning seeds 1, 49: the
+check's armature model with the true a_max does not cap at all), so the cap cannot be named.
+s28-hands (aecbb93; changed on tuning seeds only): a cause whose effect on the simulated
+speed, held over 9 samples, stays under 1 % of the largest speed the model reaches is not
+named (decide.SMALL_EFFECT). Why the extra causes were named: on a quiet log the whitened
+residual is mostly the load's slow ripple (tuning seed 1017, no cause, hand's torque at 0:
+base 380, 37 with the ripple at 0), and one more parameter of any kind takes a share of it; a
+4.5 mV friction moved the speed by 0.09 % of its 140 rad/s and took 39 %. held_noise did not
+stop it: the difference of neighbouring 9-row means saw 0.06 rad/s of a ripple whose 9-row
+means spread 0.10 rad/s and reach 0.29, while the friction moved the speed by 0.13. The
+spurious causes so named moved the speed by 0.09-0.92 % of its range, true causes by 1.5 %
+or more (pairs, tuning seeds 0-1), 6 % (singles, 500-502), 5 % (model/synth.py). Tuning
+seeds 1000-1079 (218 touched logs, --tuning --only touches --touch-seeds 80), main b7462a6
+-> aecbb93: right 181 -> 199 (91.3 %), 18 gained and none lost; what is left (19) is the
+hand not found (9, mostly through an average of 9-25 taps or at 10 ms samples), one lag
+named for another with the hand found (4: a delay, a pole, an average) and an extra cause
+of over 1 % beside the right one (6: a cap, friction or average beside a coast, a delay or
+a cap). Held-out (--seeds 5 --touch-seeds 5, run once at
+the end, main run beside it for the before figures): a hand found with the cause kept 14 ->
+16 of 20 (friction 1 -> 3 of 3); pairs unchanged (right 77.3 %, honestly ambiguous 14.7 %,
+right or honestly ambiguous 92.0 %, ambiguous in all 17.3 %, confidently wrong 5.3 %, 0
+disturbances on untouched logs), CPU per log (check only) median 1.19 -> 1.21 s, max 8.61
+-> 7.91 s (load average about 20 on two cores); one effect or none named alone: average 3
+-> 5, pole 3 -> 4, cap 3 -> 5 of 5, the others unchanged (none 5, friction 5, dead time 4,
+coast 5). benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 false
+alarms of 10. The hand target (>= 90 %) is met on the tuning seeds, not on the 20 held-out
+logs (80 %).
 """
 
 from __future__ import annotations

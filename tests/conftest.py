@@ -1,8 +1,15 @@
 """Tests that read ../shared/data carry the ``shared_data`` mark. Where that folder is absent
 they are not run and the session ends with one line saying so; with CI=true they fail."""
 
+import hashlib
+import threading
+from collections.abc import Iterator
+
+import numpy as np
 import pytest
 
+import minseg_tui.lab.state.results as lab_results
+from minseg_tui.model.check import CheckResult
 from tests.shared_data import absent_reason, required
 
 
@@ -39,3 +46,53 @@ def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
             f"{len(not_run)} tests that read ../shared/data were not run: "
             "it is not beside this clone (CI always has it)"
         )
+
+
+_checked: dict[bytes, CheckResult] = {}
+_checked_lock = threading.Lock()
+_check = lab_results.check
+
+
+def _key(t: object, u: object, omega: object, *rest: object) -> bytes:
+    """The inputs of one model check, as bytes: the three columns' exact values and the rest."""
+    h = hashlib.sha256()
+    for col in (t, u, omega):
+        a = np.ascontiguousarray(np.asarray(col, dtype=float))
+        h.update(repr(a.shape).encode())
+        h.update(a.tobytes())
+    h.update(repr(rest).encode())
+    return h.digest()
+
+
+def checked_once(
+    t: object,
+    u: object,
+    omega: object,
+    ts: float | None = None,
+    cpr: int | None = None,
+    omega_over: str | None = None,
+) -> CheckResult:
+    """The model check as the lab runs it (lab.state.results.check_run), computed once per
+    test process for each log: many tests build the same seeded run (tests.seeded, the
+    UI's recorded run) and read its check through a session, a report, the class view or a
+    screen. The check is deterministic (no clock, no unseeded randomness) and its result a
+    frozen record, so the second reading is the first one's result; the check itself is
+    tested on its own logs in tests/model, which call it directly."""
+    key = _key(t, u, omega, ts, cpr, omega_over)
+    with _checked_lock:
+        hit = _checked.get(key)
+    if hit is not None:
+        return hit
+    result = _check(t, u, omega, ts=ts, cpr=cpr, omega_over=omega_over)
+    with _checked_lock:
+        _checked.setdefault(key, result)
+    return result
+
+
+@pytest.fixture(autouse=True, scope="session")
+def model_check_once_per_log() -> Iterator[None]:
+    """The lab's model check of a run log runs once per log in a test process
+    (:func:`checked_once`)."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(lab_results, "check", checked_once)
+        yield

@@ -146,6 +146,7 @@ def _big_log(path: Path, rows: int) -> Path:
     return path
 
 
+@pytest.mark.xdist_group("big-log")  # both on one worker (make test): big_log written once
 @pytest.mark.parametrize(
     ("argv", "mib"),
     [(["analyze", "LOG"], 300), (["identify", "TABLE", "--R", "5.3", "--step", "LOG"], 500)],

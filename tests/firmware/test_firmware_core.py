@@ -17,6 +17,10 @@ FIRMWARE = REPO / "firmware"
 GOLDEN = FIRMWARE / "golden" / "lines.txt"
 CLOSING = re.compile(r"^(\d+) passed, (\d+) failed$")
 
+# one pytest-xdist worker runs this module (make test's --dist loadgroup): its fixture builds
+# the sanitized test binary, and two workers each running a test of it built it twice at once
+pytestmark = pytest.mark.xdist_group("firmware-host-test")
+
 
 @pytest.fixture(scope="module")
 def host_test() -> tuple[Path, subprocess.CompletedProcess[str]]:
@@ -28,7 +32,7 @@ def host_test() -> tuple[Path, subprocess.CompletedProcess[str]]:
         ["make", "-s", "-C", str(FIRMWARE), "host-test"],
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=1800,  # a hang guard: at a load average of 20 the build passed 300 s
     )
     return FIRMWARE / "build" / "host" / "test_core", proc
 

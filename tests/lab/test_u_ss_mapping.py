@@ -109,7 +109,9 @@ def test_no_row_at_the_level_is_extrapolated_and_said_so_everywhere(tmp_path):
         assert "extrapolated" in _task11(s)
         md = write_report(s).markdown.read_text(encoding="utf-8")
         assert "extrapolated" in _report_row(md, "K (Task 11)")
-        assert "No table row has u_req = 4.5 V" in md
+        # the 4.5 V row is there (omega_ss 7.6): its u_ss is what is missing (walk 7, D15)
+        assert "No table row has" not in md
+        assert "u_ss at 4.5 V is not entered (Task 4)" in md and "extrapolated from" in md
 
 
 def test_recorded_runs_say_how_their_speed_was_taken(tmp_path):

@@ -15,6 +15,7 @@ from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.model.runlog import RunLog, find_edges
 from minseg_tui.model.synth import IDENT_V_DROP, identification_log, identification_table
+from minseg_tui.quantities import format_constant
 
 Q = 2 * math.pi / 720
 V_DROP = IDENT_V_DROP
@@ -94,7 +95,8 @@ def test_63_percent_reading_is_explained_by_the_sampling():
     # read on the fitted model sampled like the log, the reading is the same within noise
     assert s.T_63_model == pytest.approx(s.T_63, abs=0.004)
     note = s.T_63_note
-    assert f"{s.T_63 * 1e3:.1f} ms" in note and f"{s.T * 1e3:.1f} ms" in note
+    # both T in ms with the same digits as everywhere else (quantities.format_constant)
+    assert format_constant(s.T_63, "s") in note and format_constant(s.T, "s") in note
     assert f"{abs(s.T_63 - s.T) / s.T * 100:.1f} %" in note
     assert "half a sample late" in note and "the sampling alone" in note
 

@@ -83,7 +83,7 @@ async def test_a_current_that_falls_as_the_voltage_rises_is_warned_beside_its_ro
         await type_in(pilot, "i_ss@3.5", "37,2 mA")
         high = await type_in(pilot, "i_ss@4.5", "33,5")
         said = (
-            "! i_ss falls from 37.2 mA at 3.5 V to 33.5 mA at 4.5 V, yet it rises a little "
+            "! i_ss falls from 37.2 mA at 3.5 V to 33.5 mA at 4.5 V, while i_ss should rise a little "
             "with the speed: check that each reading is in its row."
         )
         assert said in high.message and high.has_class("warned"), high.message

@@ -21,6 +21,7 @@ from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
+    nav_mark,
     record_response_run,
     settle,
     start,
@@ -164,5 +165,20 @@ async def test_the_same_T_has_the_same_digits_on_task12_and_the_model_check(quie
         await goto(pilot, "model_check", focus=None)
         await settle(pilot, lambda: bool(app.screen.query("#check-story")))
         story = app.screen.query_one("#check-story").text.replace("\u00a0", " ")
-        T = re.search(r"fitted to this run \(T = ([0-9.]+) ms", story)
-        assert T is not None and len(T.group(1).replace(".", "").lstrip("0")) == 4, story
+        T = re.search(r"fitted to this run \(T = ([0-9.]+) ms, K = ([0-9.]+) rad/s/V", story)
+        assert T is not None, story  # T and K as the details give them: four digits
+        assert all(len(T.group(k).replace(".", "").lstrip("0")) == 4 for k in (1, 2)), story
+
+
+async def test_task11_is_not_ticked_while_k_is_still_to_give(quiet):
+    """The walk at 80x24: omega_ss in the steps typed on Task 11, K not yet, and the list of
+    steps read '✓ Task 11'; it reads '…' (started) until K is given too."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        await type_in(pilot, "own.omega_step", "7.8")
+        await settle(pilot)
+        assert nav_mark(app, "task11") == "…"
+        await type_in(pilot, "own.K", "1.93")
+        await settle(pilot)
+        assert nav_mark(app, "task11") == "✓"

@@ -4,21 +4,24 @@ Each reach is here because Textual 8.2 offers no public way to do it; when an up
 Textual breaks one, this file is the one to read. Checked against Textual's source in the
 venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
-Six names of Textual's internals, in two reaches:
+Seven names of Textual's internals, in three reaches:
 
-1. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
+1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``. The exact wait Pilot itself uses
+   after a key (every node handles what was queued on it); it also returns at once when
+   the app has failed (``App._exception_event``), which no public API shows. Pilot's
+   public ``pause()`` adds a forced layout and, with no delay, the CPU-idle guess below.
+2. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
    ``textual.app`` and ``textual.pilot``: ``Pilot.press`` and ``Pilot.pause()`` call it
    after every key, and App.run_test has no option to wait otherwise.
-2. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
+3. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
    the replacement the screen's ``_compositor._dirty_regions``, ``_dirty_widgets`` and
    ``App._update_mouse_over``. No public switch turns painting off in a headless app.
 
 Done with public API here: the running app is ``MessagePump.app`` of a node attached to no
-app (not ``textual._context.active_app``); the wait for every node of the screen is made
-of their ``call_later`` as Pilot's own is (not ``Pilot._wait_for_screen``); the still
-cursor is each Input's ``cursor_blink`` set off as it is made (not ``Input._toggle_cursor``);
-a character's key name is made from its Unicode name and Textual's ``KEY_NAME_REPLACEMENTS``
-(not ``textual.keys._character_to_key``), checked against ``key_to_character``.
+app (not ``textual._context.active_app``); the still cursor is each Input's
+``cursor_blink`` set off as it is made (not ``Input._toggle_cursor``); a character's key
+name is made from its Unicode name and Textual's ``KEY_NAME_REPLACEMENTS`` (not
+``textual.keys._character_to_key``), checked against ``key_to_character``.
 
 Done with public API elsewhere: keys handed over in a burst go in with ``App.post_message``
 (not the driver, ``App._driver``), the notifications shown are the ``Notify`` messages heard
@@ -28,7 +31,6 @@ through ``run_test(message_hook=...)`` and the ``Toast`` widgets queried by type
 
 from __future__ import annotations
 
-import asyncio
 import unicodedata
 from collections.abc import Awaitable, Callable
 from typing import Any
@@ -54,34 +56,10 @@ def running_app() -> App[object] | None:
         return None
 
 
-WAIT_FOR_SCREEN_TIMEOUT = 30.0
-"""Longest :func:`wait_for_screen` waits (s), as Pilot's own wait: only an app that died
-mid-test (its nodes never run what was queued) makes it wait that long."""
-
-
 async def wait_for_screen(pilot: Pilot[object]) -> None:
     """Wait until the app and every node of its screen have handled what was queued on them
-    when this began (a handler under way included): each is asked to call back once it has
-    (``call_later``, public), as Pilot's own wait after a key does."""
-    app = pilot.app
-    try:
-        screen = app.screen
-    except Exception:  # no screen (the app is closing)
-        return
-    left = 0
-    done = asyncio.Event()
-
-    def handled() -> None:
-        nonlocal left
-        left -= 1
-        if left == 0:
-            done.set()
-
-    for node in (app, *screen.walk_children(with_self=True)):
-        if node.call_later(handled):  # False: the node is closing, nothing to wait for
-            left += 1
-    if left:
-        await asyncio.wait_for(done.wait(), WAIT_FOR_SCREEN_TIMEOUT)
+    when this began (a handler under way included)."""
+    await pilot._wait_for_screen()
 
 
 def make_waits_exact(

@@ -502,6 +502,18 @@ _F_PLAUSIBLE = Plausible(
 )
 
 
+_T_PLAUSIBLE = Plausible(
+    0.005,
+    0.5,
+    low="below 5 ms, a tenth of this motor's usual tens of ms: is the unit right? Write ms or s "
+    "after the number",
+    high="above 500 ms, ten times this motor's usual tens of ms: typed in s where ms was meant? "
+    "T runs from the rising edge to 63 % of the rise",
+)
+"""Task 12's T (s): this motor's time constant is tens of ms (43-57 ms on the virtual board);
+outside 5-500 ms the unit or the reading is wrong."""
+
+
 def _u_ss(level: float) -> Field:
     return Field(
         f"u_ss@{level:g}",
@@ -705,6 +717,7 @@ _LAB: tuple[Step, ...] = (
                 optional=True,
                 compare="step.T_63",
                 hint="in s or ms, e.g. 0.12 s or 120 ms",
+                plausible=(_T_PLAUSIBLE,),
             ),
         ),
         actions=("results",),

@@ -15,12 +15,12 @@ from __future__ import annotations
 import math
 import tomllib
 from collections.abc import Callable, Collection, Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.model_eq import read_model
-from minseg_tui.lab.content.steps import Field
+from minseg_tui.lab.content.steps import FIELDS, Field, RunPlan
 from minseg_tui.lab.saving.kept import ResponseFigures
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.model.identify import U_TASK15, ResponseResult
@@ -35,6 +35,7 @@ from minseg_tui.quantities import (
     format_typed,
     shown_unit,
 )
+from minseg_tui.units import KA_OVER_KV
 
 POLICY_FILE = "lab.toml"
 """The instructor's settings for every session in a sessions folder (beside the sessions)."""
@@ -52,6 +53,38 @@ ANSWERED_FIRST: tuple[str, ...] = (
 REVEALED_EARLY = "revealed before answering"
 """Said of a computed value a lab assistant showed before the group answered (the TUI's
 comparisons and the report)."""
+
+STEP_LEVEL: float = RunPlan().high
+"""The requested voltage of Task 10's steps (V): the table row whose u_ss K divides by."""
+
+SLIP: float = 0.01
+"""How close (relative) a group's value must come to the value a named slip gives to be
+called that slip (:func:`_is_slip`): 3 significant digits round by at most 0.6 %, and a
+value is called a slip only when it is also nearer the slip than the right value."""
+
+
+J_WAITS = (
+    "J needs R, k_v and f from the table of Tasks 2-9, and the table gives none yet (see "
+    "why under the results); the run alone gives omega_ss, K and T"
+)
+"""Why J is not judged while the table cannot give Tasks 6-9 but the run gives Tasks 11-12."""
+
+
+def _is_slip(own: float, slip: float, right: float) -> bool:
+    """Whether ``own`` is the value a slip gives (``slip``) rather than the ``right`` one:
+    within :data:`SLIP` of it and nearer to it than to ``right``."""
+    if not (slip and right and math.isfinite(slip) and math.isfinite(right)):
+        return False
+    off = abs(own / slip - 1.0)
+    return off <= SLIP and off < abs(own / right - 1.0)
+
+
+def u_ss_missing(level: float = STEP_LEVEL) -> str:
+    """Why K is not judged while the group's u_ss at ``level`` (V) is not entered."""
+    return (
+        f"u_ss at {level:g} V is not entered (Task 4); K divides by it, so K is judged once "
+        "it is there"
+    )
 
 
 @dataclass(frozen=True)
@@ -184,7 +217,7 @@ def compare_fields(
         return said if said is not None else format_reading(si, unit)
 
     ident = res.identification
-    st = res.step if ident is not None else None
+    st = res.step
     # true of both of the fit's ways (the whole log, or each rise; the report's "How T was
     # fitted" says which), and of the numbers the session file keeps, which do not say
     span = "whole stretches of the run"
@@ -198,17 +231,25 @@ def compare_fields(
         T_used: float | None = None
         own: float | str | None = text(fld.key) if fld.kind == "text" else value(fld.key)
         computed: float | str | None = res.lookup(fld.compare)
+        if computed is None and st is not None and fld.compare.startswith("step."):
+            got = getattr(st, fld.compare.removeprefix("step."), None)  # the run alone
+            computed = float(got) if isinstance(got, float) else None
         how = why = verdict = ""
         right: bool | None = None
         lsq: float | str | None = None
-        if st is not None and ident is not None:
+        if st is not None:
             if fld.key == "own.K":
                 lsq = st.K
-                if own_w is not None and st.u_ss:
-                    computed = own_w / st.u_ss
+                u_key = f"u_ss@{STEP_LEVEL:g}"
+                u_row = value(u_key)
+                if u_row is None:
+                    # K would divide by a u_ss the group never gave (extrapolated): not judged
+                    computed, lsq, verdict = None, None, u_ss_missing()
+                elif own_w is not None and u_row:
+                    computed = own_w / u_row
                     how = (
                         f"{whose} omega_ss / u_ss = {typed('own.omega_step', own_w, 'rad/s')} ÷ "
-                        f"{format_u_ss(st)}"
+                        f"{typed(u_key, u_row, 'V')}"
                     )
                     why = (
                         "The least-squares K is the median over every rise of the fitted "
@@ -216,6 +257,20 @@ def compare_fields(
                     )
                 else:
                     computed, lsq = st.K, None
+                w_used = own_w if own_w is not None else st.omega_ss
+                if (
+                    own_K is not None
+                    and u_row is not None
+                    and isinstance(computed, float)
+                    and _is_slip(own_K, w_used / STEP_LEVEL, computed)
+                ):
+                    right, verdict = (
+                        False,
+                        (
+                            f"wrong: this is omega_ss / {STEP_LEVEL:g} V, the requested voltage; the "
+                            f"task asks for the measured u_ss = {typed(u_key, u_row, 'V')}"
+                        ),
+                    )
             elif fld.key == "own.T":
                 computed, lsq = st.T_63, st.T
                 how = READ_63.format(whose=whose)
@@ -229,7 +284,10 @@ def compare_fields(
                     else (None, "")
                 )
                 lsq = st.J
-                if T_used is not None:
+                if ident is None:  # the run alone: J needs the table's k_v and f
+                    computed, lsq, how, T_used = None, None, "", None
+                    verdict = J_WAITS
+                elif T_used is not None:
                     computed = inertia_from_time_constant(
                         T_used, ident.R, ident.f, ident.k_v, ident.k_a
                     )
@@ -269,6 +327,44 @@ def compare_fields(
                     why = "The least-squares value uses the K fitted over every rise."
                 else:
                     lsq = None
+                w_used = own_w if own_w is not None else st.omega_ss
+                slip_5 = w_used * U_TASK15 / STEP_LEVEL
+                if (
+                    isinstance(own, float)
+                    and isinstance(computed, float)
+                    and value(f"u_ss@{STEP_LEVEL:g}") is not None
+                    and _is_slip(own, slip_5, computed)
+                ):
+                    right, verdict = (
+                        False,
+                        (
+                            f"wrong: this is omega_ss × {U_TASK15:g} V / {STEP_LEVEL:g} V, scaled by "
+                            f"the requested voltage; the speed follows u_A through K = omega_ss / u_ss "
+                            "with the measured u_ss"
+                        ),
+                    )
+        if ident is not None and fld.key == "own.k_a" and value("own.k_v") is not None:
+            own_kv = value("own.k_v")
+            assert own_kv is not None
+            computed = KA_OVER_KV * own_kv
+            how = f"{KA_OVER_KV:g} × {whose} k_v = {typed('own.k_v', own_kv, 'V s/rad')}"
+        if ident is not None and fld.key == "own.k_v" and isinstance(own, float):
+            with_req = sorted(
+                (r.reading.u_req - ident.R * r.reading.i_ss * 1e-3) / r.reading.omega_ss
+                for r in ident.rows
+                if r.reading.omega_ss
+            )
+            if with_req and isinstance(computed, float):
+                n = len(with_req)
+                slip_kv = (with_req[(n - 1) // 2] + with_req[n // 2]) / 2.0
+                if _is_slip(own, slip_kv, computed):
+                    right, verdict = (
+                        False,
+                        (
+                            "wrong: this is k_v with the requested voltages u_req in place of the "
+                            "measured u_ss; Task 6's formula takes u_ss, the voltage at the motor"
+                        ),
+                    )
         rel = None
         if isinstance(own, float) and isinstance(computed, float) and computed != 0:
             rel = own / computed - 1.0
@@ -297,7 +393,51 @@ def compare_fields(
                 verdict=verdict,
             )
         )
-    return out
+    return _with_caveats(out, value, text, res, whose)
+
+
+RESTS_ON: dict[str, tuple[str, ...]] = {
+    "own.J": ("own.T",),
+    "own.model": ("own.T", "own.K"),
+    "own.omega_5": ("own.K",),
+}
+"""The group's values each of these is worked out from (and judged against, by design:
+"computed your way")."""
+
+_TASK_OF = {"own.T": "Task 12", "own.K": "Task 11"}
+
+
+def _with_caveats(
+    out: list[Comparison],
+    value: Callable[[str], float | None],
+    text: Callable[[str], str | None],
+    res: Results,
+    whose: str,
+) -> list[Comparison]:
+    """``out`` with the caveat of each value judged right the group's way that rests on a
+    value of theirs marked wrong (Task 14's model is consistent with their T, and their T
+    was marked wrong): said, so that a right mark never hides the wrong one beneath it."""
+    need = {k for c in out if c.right for k in RESTS_ON.get(c.key, ()) if value(k) is not None}
+    if not need:
+        return out
+    upstream = {
+        c.key: c.right
+        for c in compare_fields([FIELDS[k] for k in sorted(need)], value, text, res, whose=whose)
+    }
+    done = []
+    for c in out:
+        wrong = [k for k in RESTS_ON.get(c.key, ()) if k in need and upstream.get(k) is False]
+        if c.right and wrong:
+            rests = " and ".join(k.removeprefix("own.") for k in RESTS_ON[c.key] if k in need)
+            names = " and ".join(k.removeprefix("own.") for k in wrong)
+            where = " and ".join(_TASK_OF[k] for k in wrong)
+            caveat = (
+                f"consistent with {whose} {rests}, and {whose} {names} "
+                f"{'was' if len(wrong) == 1 else 'were'} marked wrong ({where})"
+            )
+            c = replace(c, caveat=caveat)
+        done.append(c)
+    return done
 
 
 TOLERANCE: dict[str, float] = {
@@ -324,7 +464,11 @@ reading with the program's cursor, typing 3 significant digits):
   program's reading interpolated between samples, median over the rises: p95 21 %, max
   27 % (25 % marked one session in 300 wrong): 30 %. Read on the line between the samples
   (the cursor between them) it is at most 12 %; a group that takes the first sample past the
-  level is late by up to a sample, up to +57 %, and is marked wrong."""
+  level is late by up to a sample, up to +57 %, and is marked wrong. On the ten real step
+  logs of other motors (``--real``), with the steady speed read by eye, T read on the sample
+  nearest the level is at most 8.5 % from the program's reading, on the first sample past it
+  14.3 %: 30 % holds there too; a steady speed read on the last sample of a coarse encoder
+  (5-6 counts a sample) put one log 46 % off."""
 
 
 def _j_slip(own: float, T: float, R: float, f: float, k_v: float, k_a: float) -> str:
@@ -379,10 +523,13 @@ def reveal_keys(fields: Sequence[Field], answered: Collection[str]) -> list[str]
 
 __all__ = [
     "ANSWERED_FIRST",
+    "J_WAITS",
     "TOLERANCE",
     "POLICY_FILE",
     "READ_63",
     "REVEALED_EARLY",
+    "SLIP",
+    "STEP_LEVEL",
     "Policy",
     "compare_fields",
     "concealed",
@@ -392,4 +539,5 @@ __all__ = [
     "judge_model",
     "read_policy",
     "reveal_keys",
+    "u_ss_missing",
 ]

@@ -188,9 +188,11 @@ def _echo(fld: Field, text: str, p: Parsed) -> str:
     52.36 rad/s (typed 500 rpm)"); '' when it is written the lab's way."""
     shown = quantities.shown_unit(fld.unit)
     t = text.strip()
-    number = r"\+?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+    plain = r"\+?(?:\d+\.?\d*|\.\d+)"  # the lab's way: no exponent ("1e3" is echoed)
+    number = rf"{plain}(?:[eE][-+]?\d+)?"
     bare = re.fullmatch(number, t) is not None
-    if re.fullmatch(rf"{number}\s*{re.escape(shown)}", t) or (bare and fld.unit == shown):
+    lab_way = re.fullmatch(plain, t) is not None
+    if re.fullmatch(rf"{plain}\s*{re.escape(shown)}", t) or (lab_way and fld.unit == shown):
         return ""
     said = f"read as {quantities.format_reading(p.value, shown)}"
     named = p.unit != fld.unit or not bare  # a unit was typed

@@ -19,7 +19,14 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.kept import CheckFigures, ResponseFigures
 from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.identify import U_TASK15, Identification, Reading, ResponseResult, identify
+from minseg_tui.model.identify import (
+    U_TASK15,
+    Identification,
+    Reading,
+    ResponseResult,
+    identify,
+    response_alone,
+)
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import format_number
@@ -57,7 +64,7 @@ def falling_currents(rows: Sequence[tuple[float, float, str]]) -> list[Notice]:
             Notice(
                 f"i_ss@{level:g}",
                 f"i_ss falls from {low_typed} at {low_level:g} V to {typed} at {level:g} V, "
-                "yet it rises a little with the speed: check that each reading is in its row.",
+                "while i_ss should rise a little with the speed: check that each reading is in its row.",
             )
         )
     return out
@@ -95,15 +102,30 @@ class Results:
     run: str | None
     problems: tuple[str, ...] = ()
     kept_response: ResponseFigures | None = None
+    response: ResponseResult | None = None
+    """Tasks 11-12 from the run and the table's u_ss alone, when the table cannot give
+    Tasks 6-9 (no R, or no positive k_v): omega_ss in the steps, K and T need neither R nor
+    i_ss; J (Task 13) waits for k_v and f (NaN here)."""
 
     @property
     def step(self) -> ResponseFigures | None:
         """Tasks 11-13's numbers (J included): of the identification's step, else the kept
-        ones; None without a step result."""
+        ones, else those of the run alone (:attr:`response`, J NaN); None without a step
+        result."""
         ident = self.identification
         if ident is not None and ident.step is not None:
             return response_figures(ident.step)
+        if self.kept_response is None and self.response is not None:
+            return response_figures(self.response)
         return self.kept_response
+
+    @property
+    def response_result(self) -> ResponseResult | None:
+        """The run's step result: the identification's, else that of the run alone."""
+        ident = self.identification
+        if ident is not None and ident.step is not None:
+            return ident.step
+        return self.response
 
     def to_json(self) -> dict[str, object] | None:
         """The --json dict of ``minseg-tui identify`` for these results, or None (with kept
@@ -154,7 +176,7 @@ class Comparison:
     differs from the group's way (None otherwise), ``why`` one sentence on why the two
     differ; ``revealed_early``: a lab assistant showed the value before the group answered;
     ``right``: for an answer judged right or wrong (Task 14's model), whether it is (None when
-    not judged), ``verdict`` one line saying so."""
+    not judged), ``verdict`` one line saying so; ``caveat``: see below."""
 
     key: str
     label: str
@@ -168,6 +190,9 @@ class Comparison:
     revealed_early: bool = False
     right: bool | None = None
     verdict: str = ""
+    caveat: str = ""
+    """For a value right the group's way that rests on a value of theirs marked wrong (Task
+    14's model with their wrong T): one clause saying so ('' otherwise)."""
 
 
 @dataclass(frozen=True)
@@ -243,8 +268,26 @@ def compute(
         except InputError as exc:
             problems.append(f"run {run.name} cannot be used: {exc}")
     read = run is not None and (log is not None or kept is not None)
+    pairs = (
+        list(u_ss_table) if u_ss_table is not None else [(r.u_req, r.u_ss) for r in complete_rows]
+    )
+
+    def run_alone() -> Results:
+        """The table cannot give Tasks 6-9: the run's Tasks 11-12 alone, which need neither
+        R nor k_v (the plot, omega_ss, K and the 63 % reading)."""
+        name = run.name if run and read else None
+        if log is None or not pairs:
+            return Results(None, name, tuple(problems))
+        try:
+            alone = response_alone(log, pairs)
+        except (InputError, ArithmeticError, ValueError) as exc:
+            why = str(exc) if isinstance(exc, InputError) else f"its steps cannot be fitted ({exc})"
+            problems.append(f"run {run.name if run else ''} gives no step result: {why}")
+            return Results(None, name, tuple(problems))
+        return Results(None, name, tuple(problems), response=alone)
+
     if R is None or not readings:
-        return Results(None, run.name if run and read else None, tuple(problems))
+        return run_alone()
     try:
         ident = identify(readings, R, log, source="table", u_ss_table=u_ss_table)
     except (InputError, ArithmeticError, ValueError) as exc:
@@ -253,11 +296,12 @@ def compute(
         why = str(exc) if isinstance(exc, InputError) else f"its steps cannot be fitted ({exc})"
         if not read:
             return Results(None, None, (*problems, why))
-        problems.append(f"run {run.name if run else ''} gives no step result: {why}")
         try:
             ident = identify(readings, R, None, source="table")
-        except InputError as exc2:
-            return Results(None, None, (*problems, str(exc2)))
+        except InputError as exc2:  # the table's fault, not the run's
+            problems.append(str(exc2))
+            return run_alone()
+        problems.append(f"run {run.name if run else ''} gives no step result: {why}")
         return Results(ident, None, tuple(problems))
     with_J = None
     if kept is not None:

@@ -99,6 +99,7 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.capture import DEFAULT_WINDOW, Capture, capture
 from minseg_tui.lab.state.compare import (
     ANSWERED_FIRST,
+    STEP_LEVEL,
     Policy,
     compare_fields,
     read_policy,
@@ -121,7 +122,7 @@ from minseg_tui.lab.state.shown import PolicyRecord, Shown
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import RunLog
-from minseg_tui.quantities import format_reading, format_typed, shown_unit
+from minseg_tui.quantities import format_number, format_reading, format_typed, shown_unit
 
 Clock = Callable[[], datetime]
 
@@ -666,8 +667,11 @@ class Session:
         (answered, but a checked answer is wrong), ``refused`` (a field shows a text that was
         refused, even over an accepted answer still in effect), ``warned`` (answered, but an
         entry stored with a warning the program itself gives, e.g. a u_ss above the requested
-        voltage, which the driver cannot give: not done until the group looks again; a wrong
-        answer stays ``wrong``), ``unjudged`` (a step of the
+        voltage, which the driver cannot give, or a value right the group's way that rests on
+        one of theirs marked wrong, Task 14's model with their wrong T: not done until the
+        group looks again; a wrong answer stays ``wrong``), ``started`` also for a step of
+        Tasks 11-15 with one of its own values given and another not (Task 11's K),
+        ``unjudged`` (a step of the
         group's own values, Tasks 6-9 and 11-15, answered, one of them stored but not judged
         yet: nothing computed to compare it with), ``started`` (something entered), ``todo``,
         or ``info`` (nothing to enter)."""
@@ -695,15 +699,20 @@ class Session:
         if not answered:
             return "todo"
         wrong = any(fb.status == "wrong" for fb in self.feedback(step_id))
-        judged = (
-            [c.right for c in self.comparisons(step_id) if c.key in self.answered()]
+        mine = (
+            [c for c in self.comparisons(step_id) if c.key in self.answered()]
             if any(f.compare for f in st.fields)
             else []
         )
+        judged = [c.right for c in mine]
         if wrong or any(r is False for r in judged):
             return "wrong"
-        if self._warned(st.fields):
-            return "warned"
+        if st.part == "Results" and any(
+            f.compare and f.key not in self.answered() for f in st.fields
+        ):
+            return "started"  # Task 11: omega_ss given, K not yet (it read ✓)
+        if self._warned(st.fields) or any(c.caveat for c in mine):
+            return "warned"  # a value right the group's way, resting on one marked wrong
         return "unjudged" if any(r is None for r in judged) else "done"
 
     def _warned(self, fields: Sequence[Field]) -> bool:
@@ -908,8 +917,29 @@ class Session:
         if step_id is None or lab_steps.step(step_id).part in ("Table", "Results", "Step response"):
             res = self.results()
             if res.identification:
-                out += [Notice(f.code, f.message) for f in res.identification.observations]
+                out += [
+                    Notice(f.code, self._u_ss_said(f.code, f.message))
+                    for f in res.identification.observations
+                ]
         return out
+
+    def _u_ss_said(self, code: str, message: str) -> str:
+        """identify's sentence on a u_ss the table has no row for, as true of this table: the
+        row at the step's level is there, its u_ss is not entered (walk 7: "No table row has
+        u_req = 4.5 V" while the row held omega_ss and i_ss)."""
+        if code not in ("u_ss_extrapolated", "u_ss_interpolated"):
+            return message
+        level = STEP_LEVEL
+        if self.value(f"u_ss@{level:g}") is not None:
+            return message
+        st = self.results().step
+        which = "extrapolated from" if code == "u_ss_extrapolated" else "interpolated between"
+        got = f" (u_ss = {format_number(st.u_ss, 3)} V)" if st is not None else ""
+        return (
+            f"u_ss at {level:g} V is not entered (Task 4): the step's K divides by a u_ss "
+            f"{which} the table's other rows{got}, and a K typed on Task 11 is not judged until "
+            "it is entered."
+        )
 
     def falling_currents(self) -> list[Notice]:
         """The Task 5 readings whose current falls as the voltage rises (a warning each, on

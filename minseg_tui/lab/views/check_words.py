@@ -147,13 +147,13 @@ def simulated(r: CheckResult) -> str:
     """The first-order model the check simulated, named with its numbers: it is the check's
     own fit of the run, neither the group's model (Task 14) nor the least-squares one of
     Tasks 11-12, and a student must not read it as theirs: 'the first-order model the check
-    fitted to this run (T = 40.52 ms, K = 1.92 rad/s/V)' (T in ms, K in rad/s/V)."""
+    fitted to this run (T = 40.52 ms, K = 1.919 rad/s/V)' (T in ms, K in rad/s/V)."""
     T, K = r.baseline.params.get("T"), r.baseline.params.get("K")
     numbers = ", ".join(
         x
         for x in (
             f"T = {format_constant(T, 's')}" if T is not None else "",
-            f"K = {format_value(K, 'rad/s/V', 3)}" if K is not None else "",
+            f"K = {format_value(K, 'rad/s/V')}" if K is not None else "",
         )
         if x
     )

@@ -279,8 +279,12 @@ the same marks as the list of steps and the entries on the group's screen)."""
 
 
 def _diff(c: Comparison, own: str, against: str) -> str:
+    if c.right is None and c.verdict:
+        return f"{MARK['unjudged']} not judged: {c.verdict}"
     if c.right is not None or c.verdict:
         said = (MARK["done"] if c.right else MARK["wrong"]) + " " + (c.verdict or "right")
+        if c.caveat:
+            said += f"; {c.caveat}"
         return said if c.rel_diff is None else f"{format_diff(c.rel_diff)}{against}; {said}"
     if c.rel_diff is not None:
         return format_diff(c.rel_diff) + against
@@ -306,7 +310,7 @@ def table_rows(session: Session, results: Results | None = None) -> tuple[OwnRow
         own = _own(session, c, unit)
         value = _value(c.computed, unit)
         computed = (
-            f"{value} ({_TABLE_HOW.get(c.key, 'from the table')})"
+            f"{value} ({c.how or _TABLE_HOW.get(c.key, 'from the table')})"
             if value
             else "not computed: the table is not complete"
         )
@@ -375,6 +379,8 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
                 mine, against = _READ_OFF, " (against the program's value)"
             elif c.how and computed:
                 mine, against = f"{computed} ({c.how})", ""
+            elif c.right is None and c.verdict:
+                mine, against = f"not computed: {c.verdict}", ""
             else:
                 mine, against = _NEEDS.get(c.key, "not computed"), " (against the program's value)"
             why = c.why if c.how and c.least_squares is not None else ""

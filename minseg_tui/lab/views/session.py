@@ -227,7 +227,7 @@ def under_entry(session: Session, c: Comparison) -> str:
     1.996 rad/s/V'); ○ :data:`NOT_JUDGED` while nothing is computed to compare it with. The
     panel under the entries says how each was computed and why the two differ."""
     if c.right is None:
-        return f"{MARK['unjudged']} {NOT_JUDGED}"
+        return f"{MARK['unjudged']} " + (f"not judged: {c.verdict}" if c.verdict else NOT_JUDGED)
     mark, word = (MARK["done"], "right") if c.right else (MARK["wrong"], "wrong")
     unit = _shown_unit(session, c)
     if c.rel_diff is not None and isinstance(c.computed, float):
@@ -239,6 +239,8 @@ def under_entry(session: Session, c: Comparison) -> str:
             said += f", {why}"
     else:
         said = c.verdict or word
+    if c.caveat:
+        said += f"; {c.caveat}"
     if c.least_squares is not None:
         lsq = c.least_squares
         said += f"; least squares {lsq if isinstance(lsq, str) else _fmt(lsq, unit)}"
@@ -388,6 +390,9 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
                 )
             )
             continue
+        if c.computed is None and c.right is None and c.verdict:  # waits for an entry
+            out.append((c.label, own, f"{MARK['unjudged']} not judged: {c.verdict}"))
+            continue
         unit = _shown_unit(session, c)
         way = _WAY.get(
             c.key, "computed from your table" if step_id == "table" else "computed your way"
@@ -407,6 +412,8 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             comp += f": {format_diff(c.rel_diff)}"
         if c.verdict:
             comp += f"\n  {c.verdict}"
+        if c.caveat:
+            comp += f"\n  {c.caveat}"
         if c.revealed_early:
             comp += f" · {lab_compare.REVEALED_EARLY}"
         if c.least_squares is not None:
@@ -883,8 +890,9 @@ def results(session: Session, step_id: str) -> ResultsView:
     lines: list[str] = []
     rises: tuple[RiseZoom, ...] = ()
     shows: frozenset[str] = frozenset()
-    if ident is not None and ident.step is not None:
-        st = ident.step
+    st_run = res.response_result
+    if st_run is not None:
+        st = st_run
         conceal = hidden(session)
 
         def shown(key: str, line: str, what: str, task: str) -> str:
@@ -920,11 +928,14 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
             # why the two T differ, said once on each screen (not in Task 12's comparison)
             *([lab_compare.two_T_of(st)] if "own.T" not in conceal else []),
-            shown("own.J", f"J = {_fmt(st.J, 'kg m^2')}", "J", "Task 13"),
+            shown("own.J", f"J = {_fmt(st.J, 'kg m^2')}", "J", "Task 13")
+            if ident is not None
+            else "J: waits for R, k_v and f from the table of Tasks 2-9, which gives none yet "
+            "(why: below)",
             shown("own.model", f"model: {st.model_equation(_num)}", "the model", "Task 14"),
             shown(
                 "own.omega_5",
-                f"omega at 5 V = {_fmt(ident.omega_at_5V, 'rad/s')}",
+                f"omega at 5 V = {_fmt(st.K * model_identify.U_TASK15, 'rad/s')}",
                 "omega at 5 V",
                 "Task 15",
             ),
@@ -1178,15 +1189,16 @@ def unanswered_line(session: Session, most: int = 8) -> str:
     names = list(dict.fromkeys(short for short, _, _ in unanswered(session)))
     if not names:
         return ""
-    groups: dict[str, list[str]] = {"Task": [], "Summary Q": [], "Prep": []}
-    for name in names:
-        kind = next(k for k in (*groups, "") if name.startswith(k))
-        groups.setdefault(kind, []).append(name.removeprefix(kind).strip() or name)
+    groups: dict[str, list[str]] = {"Task": [], "": [], "Summary Q": [], "Prep": []}
+    for name in names:  # "" holds a step named without a number: the model check
+        kind = next((k for k in groups if k and name.startswith(k)), "")
+        groups[kind].append(name.removeprefix(kind).strip())
     said: list[str] = []
     left = most
     for kind, numbers in groups.items():
         if numbers and left > 0:
-            said.append(f"{kind}{'' if kind.endswith('Q') else ' '}" + ", ".join(numbers[:left]))
+            head = "" if not kind else kind if kind.endswith("Q") else f"{kind} "
+            said.append(head + ", ".join(numbers[:left]))
             left -= len(numbers[:left])
     more = f" and {len(names) - most} more" if len(names) > most else ""
     return "unanswered, marked in the report: " + "; ".join(said) + more

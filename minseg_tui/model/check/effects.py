@@ -686,8 +686,8 @@ TELL_APART: dict[frozenset[str], str] = {
     "would (a coast acts only at 0)",
 }
 """What kind of log would tell two causes apart, in words, for the pairs a log often
-cannot tell (the first pair found among the causes two models do not share speaks; a
-pair not here gets the check's general words)."""
+cannot tell (the first pair that sets a cause only one model holds against a cause only
+the other holds speaks; a pair not here gets the check's general words)."""
 
 PARAM_UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in CANDIDATES}}
 """Unit of every parameter a model reports (SI; by parameter name, where

@@ -822,9 +822,10 @@ def _finding(
 
 def _what_would_tell(a: list[str], b: list[str]) -> str:
     """What kind of log would tell causes ``a`` from ``b`` apart, in words."""
-    diff = frozenset(set(a) ^ set(b))
+    only_a, only_b = set(a) - set(b), set(b) - set(a)
     for pair, words in TELL_APART.items():
-        if pair <= diff:
+        # a pair that sets a cause of one against a cause of the other
+        if pair & only_a and pair & only_b:
             return words
     return (
         "steps of other sizes, a step down to a small voltage and a faster sampling would "

@@ -117,7 +117,8 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
             Observation(
                 "u_ss_above_u_req",
                 (
-                    f"u_ss is above u_req on every row (by {_above_range(rows)}): a motor driver gives "
+                    f"u_ss is above u_req on {'the one row' if len(rows) == 1 else 'both rows' if len(rows) == 2 else f'all {len(rows)} rows'} "
+                    f"the results use ({_above_range(rows)}): a motor driver gives "
                     "the motor at most the voltage it is asked for, less its drop, so the two columns "
                     "look swapped. k_v, k_a and f divide by these readings: check the table."
                 ),
@@ -133,11 +134,14 @@ gives at most what is requested)."""
 
 
 def _above_range(rows: Sequence[Row]) -> str:
-    """'12 %' or '8-15 %': how far u_ss is above u_req over the rows."""
-    pct = [100.0 * (row.reading.u_ss / row.reading.u_req - 1.0) for row in rows]
-    lo, hi = min(pct), max(pct)
-    whole = format_fixed(hi, 0, "%")
-    return format_fixed(lo, 0, "%") if round(lo) == round(hi) else f"{format_fixed(lo, 0)}-{whole}"
+    """'by 52 % at 2.5 V and 9 % at 3.5 V': how far u_ss is above u_req on each row (walk 7:
+    "by 9 %" alone read as true of every row of the table)."""
+    each = [
+        f"{format_fixed(100.0 * (row.reading.u_ss / row.reading.u_req - 1.0), 0, '%')} at "
+        f"{row.reading.u_req:g} V"
+        for row in rows
+    ]
+    return "by " + (each[0] if len(each) == 1 else ", ".join(each[:-1]) + " and " + each[-1])
 
 
 def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
