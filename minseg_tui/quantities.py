@@ -133,17 +133,15 @@ def format_percent(fraction: float) -> str:
 
 def format_diff(rel: float) -> str:
     """A relative difference (``rel``, 0.39 for 39 %) as the group reads it: "+39 %", "-2 %";
-    under 0.5 % with one more digit ("+0.3 %") and under 0.05 % as "< 0.05 %", never "+0 %";
-    the same number (to the last few digits a float carries: 9.65 typed, 5 V x 1.93 computed)
-    as "0 %": they match."""
+    under 0.5 % with one more digit ("+0.3 %"); under 0.05 % as "0 %", never "+0 %": the
+    same number (9.65 typed, 5 V x 1.93 computed) and one the same to the digits shown (1.95
+    typed, 7.9 / 4.05 = 1.9506 computed) both match, and read alike."""
     pct = rel * 100.0
-    if abs(rel) < 1e-9:
-        return "0 %"
     if abs(pct) >= 0.5:
         return f"{pct:+.0f} %"
     if abs(pct) >= 0.05:
         return f"{pct:+.1f} %"
-    return "< 0.05 %"
+    return "0 %"
 
 
 def format_fixed(value: float, decimals: int, unit: str = "") -> str:

@@ -132,8 +132,9 @@ def _answers(session: Session, part: str) -> Section:
                     if e and e.ok and isinstance(e.value, tuple)
                     else (e.text if e else "")
                 )
-            else:  # a number as the tables give it: the digits typed, "3,79" as "3.79"
-                shown = (session.reading(fld.key) or e.text) if e else ""
+            else:  # a number as the tables give it: the digits typed, "3,79" as "3.79";
+                # a formula as typed with its value: "1-exp(-1) = 0.6321"
+                shown = (views.answer(session, fld.key) or e.text) if e else ""
             fb = verdicts.get(fld.key)
             verdict = (
                 "not checked"
@@ -434,8 +435,8 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
         rows.append(
             (
                 name + (" (leads)" if key == lead else ""),
-                f"{_num(b, 3)} {unit}",
-                f"{_num(e, 3)} {unit}" if named and e is not None else "–",
+                f"{_num(b, check_words.GAIN_DIGITS)} {unit}",
+                f"{_num(e, check_words.GAIN_DIGITS)} {unit}" if named and e is not None else "–",
             )
         )
     return tuple(rows)
@@ -450,9 +451,9 @@ def _lead(r: CheckResult) -> str | None:
     if b is None:
         return None
     if r.finding.cause == "none" or e is None:
-        value = f"{_num(b, 3)} {unit} for the first-order model"
+        value = f"{_num(b, check_words.GAIN_DIGITS)} {unit} for the first-order model"
     else:
-        value = f"{_num(b, 3)} {unit} for the first-order model, {_num(e, 3)} {unit} extended"
+        value = f"{_num(b, check_words.GAIN_DIGITS)} {unit} for the first-order model, {_num(e, check_words.GAIN_DIGITS)} {unit} extended"
     return f"The figure that means most for this log: the {name}, {value}. It leads because {r.lead.why}."
 
 

@@ -23,6 +23,7 @@ import queue
 import signal
 import threading
 import time
+from collections import deque
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import replace
 from functools import partial
@@ -54,6 +55,7 @@ from minseg_tui.ui.keys import app_bindings, help_lines
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import (
     BoardChecked,
+    CommandFailed,
     DeviceOpened,
     LinkEventArrived,
     MeterRead,
@@ -200,6 +202,11 @@ class LabApp(App[None]):
         """Published whenever the session changed (an entry, a capture, a run, an import)."""
         self._meter_wanted = False
         self._stop = threading.Event()
+        self._commands: deque[tuple[str, Callable[[], object]]] = deque()
+        """Board commands (F2, F3) not yet sent, oldest first: one worker sends them in order."""
+        self._sending = False
+        """The worker that sends :attr:`_commands` runs (set and read under :attr:`_lock`)."""
+        self._lock = threading.Lock()
         self._signals: list[int] = []  # the terminating signals the app answers
         self._tap: queue.Queue[SampleBatch] | None = None
         """While the board check runs: the stream's samples, for the check (the stream
@@ -471,6 +478,9 @@ class LabApp(App[None]):
         """The link's own idea of the motor (after a reconnect: off, nothing restored)."""
         if self._run_busy:
             return  # the run's own words stand
+        with self._lock:
+            if self._sending:
+                return  # a command on its way: what the screen shows is what it asks for
         self.motor = motor_words(event.u_req)
         if event.u_req is not None and self.requested != event.u_req:
             self.requested = event.u_req or None
@@ -680,14 +690,11 @@ class LabApp(App[None]):
     def _set_voltage(self, event: VoltageRequested) -> None:
         """F3: the voltage on the motor."""
         event.stop()
-        if self._device is None:
+        device = self._device
+        if device is None:
             self.notify("no device: setting a voltage needs the board or the virtual MinSeg")
             return
-        try:
-            self._device.set_voltage(event.level)
-        except MinsegError as exc:
-            self.notify(str(exc), severity="error")
-            return
+        self._command("voltage", partial(device.set_voltage, event.level))
         self.requested = event.level
         self.motor = f"{event.level:g} V"
 
@@ -911,13 +918,46 @@ class LabApp(App[None]):
         self.motor = "off"
         self.requested = None
         if self._device is not None:
-            try:
-                self._device.stop()
-            except MinsegError as exc:
-                self.notify(
-                    f"{exc} (a board without USB power stops by itself)", severity="warning"
-                )
+            self._command("stop", self._device.stop)
         self.finish_run("stopped", "stopped")
+
+    def _command(self, what: str, send: Callable[[], object]) -> None:
+        """Send a board command (``what``: F2's ``stop`` or F3's ``voltage``) in a worker,
+        after those asked before it: the board's answer takes a round trip (seconds on a
+        loaded machine), and the keys typed after F2 or F3 must not wait for it (walk 7: a
+        PgDn after F2 was applied seconds late, carrying the group past a step)."""
+        with self._lock:
+            self._commands.append((what, send))
+            start, self._sending = not self._sending, True
+        if start:
+            self._send_commands()
+
+    @work(thread=True, group="board", name="board commands")
+    def _send_commands(self) -> None:
+        """Worker: send the board commands queued, in order, until none is left."""
+        while True:
+            with self._lock:
+                if not self._commands:
+                    self._sending = False
+                    return
+                what, send = self._commands.popleft()
+            try:
+                send()
+            except MinsegError as exc:
+                self.post_message(CommandFailed(what, str(exc)))
+
+    @on(CommandFailed)
+    def _command_failed(self, event: CommandFailed) -> None:
+        """A board command went wrong: say so; the motor is as the link knows it."""
+        if event.what == "stop":
+            self.notify(
+                f"{event.error} (a board without USB power stops by itself)", severity="warning"
+            )
+            return
+        self.notify(event.error, severity="error")
+        u = self._device.u_req if self._device is not None else 0.0
+        self.motor = motor_words(u)
+        self.requested = u or None
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
@@ -1085,11 +1125,12 @@ class LabApp(App[None]):
             "Load a log recorded elsewhere into the model check",
             self.import_log,
         )
-        yield SystemCommand(
-            "Switch to virtual board",
-            "Use the virtual MinSeg instead of the board",
-            self.switch_to_virtual,
-        )
+        if self._device is None or self._device.board is None:  # not on the virtual one
+            yield SystemCommand(
+                "Switch to virtual board",
+                "Use the virtual MinSeg instead of the board",
+                self.switch_to_virtual,
+            )
         yield SystemCommand("Keys", "The help screen (F1)", self.action_help)
 
     def on_unmount(self) -> None:

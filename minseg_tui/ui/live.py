@@ -58,3 +58,20 @@ class LiveBuffer:
                 np.array(self._count, dtype=np.int64),
                 np.array(self._u, dtype=float),
             )
+
+
+def at_level(
+    t: NDArray[np.float64], count: NDArray[np.int64], u: NDArray[np.float64], level: float | None
+) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+    """The newest samples (board time s, counts) taken at requested voltage ``level`` (V),
+    from the last sample at another voltage on: right after F3 the window of the old level
+    is no steady state of the new one (None: all of them)."""
+    if level is None or u.size == 0:
+        return t, count
+    other = np.flatnonzero(np.abs(u - level) > LEVEL_TOL)
+    first = int(other[-1]) + 1 if other.size else 0
+    return t[first:], count[first:]
+
+
+LEVEL_TOL = 0.0005
+"""Two requested voltages closer than this are one level, V (the link carries mV)."""

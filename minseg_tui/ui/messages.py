@@ -82,9 +82,19 @@ class Task10Moved(Message):
 
 @dataclass
 class VoltageRequested(Message):
-    """F3: put ``level`` V on the motor."""
+    """F3: put ``level`` V on the motor (posted to the app itself: a key typed after F3 runs
+    on the app's queue behind it, and sees the new level)."""
 
     level: float
+
+
+@dataclass
+class CommandFailed(Message):
+    """A board command sent in the app's worker (``what``: ``stop`` or ``voltage``) failed,
+    with the ``error`` in one line."""
+
+    what: str
+    error: str
 
 
 @dataclass

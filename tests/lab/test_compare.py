@@ -55,7 +55,7 @@ def _compare(s: Session, step_id: str) -> dict[str, tuple[str, str]]:
 def test_differences_under_half_a_percent_keep_a_digit():
     assert format_diff(0.39) == "+39 %" and format_diff(-0.021) == "-2 %"
     assert format_diff(0.003) == "+0.3 %" and format_diff(-0.0049) == "-0.5 %"
-    assert format_diff(0.0001) == "< 0.05 %" and format_diff(0.0) == "0 %"
+    assert format_diff(0.0001) == "0 %" and format_diff(0.0) == "0 %"
 
 
 def test_the_computed_values_wait_for_the_groups_own(tmp_path):

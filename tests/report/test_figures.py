@@ -19,7 +19,7 @@ from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.compare import two_T_of
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.check.effects import PARAM_UNITS, in_words
-from minseg_tui.quantities import UNITS, shown_unit
+from minseg_tui.quantities import UNITS, format_number, shown_unit
 from minseg_tui.report import svg
 from minseg_tui.report.write import write_report
 from tests.report.test_report import _session
@@ -247,7 +247,8 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     assert "whitened" not in first and "criterion" not in first and "coulomb" not in first
     assert "Likely cause: dry friction" in first and "constant braking torque" in first
     base, ext = result.gain.baseline_angle_rms, result.gain.extended_angle_rms
-    assert f"from {base:.2g} rad to {ext:.2g} rad" in first
+    # with the digits of the details' table (walk 7: the lead gave 0.013, the table 0.0130)
+    assert f"from {format_number(base, 3)} rad to {format_number(ext, 3)} rad" in first
     # the step it speaks of is the one the close-up shows
     m = re.search(rf"drops from ({NUM}) V to 0 V at t = ({NUM}) s", first)
     assert m and result.close_up.t0 < float(m.group(2)) < result.close_up.t1

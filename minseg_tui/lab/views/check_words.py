@@ -147,7 +147,8 @@ def simulated(r: CheckResult) -> str:
     """The first-order model the check simulated, named with its numbers: it is the check's
     own fit of the run, neither the group's model (Task 14) nor the least-squares one of
     Tasks 11-12, and a student must not read it as theirs: 'the first-order model the check
-    fitted to this run (T = 40.52 ms, K = 1.919 rad/s/V)' (T in ms, K in rad/s/V)."""
+    fitted to this run (T = 40.52 ms, K = 1.919 rad/s/V)' (T in ms, K in rad/s/V, with
+    the digits of the details)."""
     T, K = r.baseline.params.get("T"), r.baseline.params.get("K")
     numbers = ", ".join(
         x
@@ -243,6 +244,10 @@ def _cause(r: CheckResult) -> str:
     return text
 
 
+GAIN_DIGITS = 3
+"""Significant digits of a gain figure, in the lead's sentence as in the details' table."""
+
+
 def _gain(r: CheckResult) -> str:
     """Sentence 3: how much better the extended model does, in the one figure that leads."""
     f = r.finding
@@ -257,7 +262,7 @@ def _gain(r: CheckResult) -> str:
     if e >= b:
         return (
             f"With {added} added (the extended model), {words} is no smaller "
-            f"({format_value(e, unit, 2)} against {format_value(b, unit, 2)})."
+            f"({format_value(e, unit, GAIN_DIGITS)} against {format_value(b, unit, GAIN_DIGITS)})."
         )
     if e == 0:
         return f"With {added} added (the extended model), {words} falls to within the noise."
@@ -268,7 +273,7 @@ def _gain(r: CheckResult) -> str:
     )
     return (
         f"With {added} added (the extended model), {words} falls from "
-        f"{format_value(b, unit, 2)} to {format_value(e, unit, 2)}, {how}."
+        f"{format_value(b, unit, GAIN_DIGITS)} to {format_value(e, unit, GAIN_DIGITS)}, {how}."
     )
 
 

@@ -22,7 +22,7 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.shown import PolicyRecord
-from minseg_tui.lab.views.session import MARK, NOT_JUDGED, REVEAL_KEY, USES_RUN
+from minseg_tui.lab.views.session import MARK, NOT_JUDGED, REVEAL_KEY, USES_RUN, answer
 from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
@@ -265,7 +265,7 @@ def _own(session: Session, c: Comparison, unit: str) -> str:
     if not e.ok:
         return f"{NOT_ANSWERED} ({e.text.strip()!r} was refused; {TOLD} {e.message})"
     if isinstance(c.own, float):
-        return session.reading(c.key) or format_reading(c.own, unit)
+        return answer(session, c.key) or format_reading(c.own, unit)
     return e.text.strip()
 
 

@@ -50,6 +50,7 @@ from minseg_tui.quantities import (
     format_spread,
     format_typed,
     format_value,
+    parse_quantity,
     shown_unit,
 )
 
@@ -257,7 +258,19 @@ def _verdict(e: Entry, feedback: str) -> EntryView:
         return EntryView(
             False, f"{e.refused[1]} (still using {using})", tuple(e.warnings), feedback
         )
-    return EntryView(e.ok, e.message, tuple(e.warnings), feedback)
+    return EntryView(e.ok, _echo(e), tuple(e.warnings), feedback)
+
+
+def _echo(e: Entry) -> str:
+    """How accepted entry ``e`` was read, in this program's words: read again from its text,
+    so that a session saved by an older version shows what the program says now (its '85 ms'
+    for T was "read as 0.085 s" then, no echo now: T is in ms throughout); the stored
+    message when the text no longer reads as the value kept."""
+    fld = FIELDS.get(e.key)
+    if fld is None or not e.ok:
+        return e.message
+    again = read_entry(fld, e.text)
+    return again.message if again.ok and again.value == e.value else e.message
 
 
 def entry(session: Session, key: str) -> EntryView | None:
@@ -283,6 +296,28 @@ def held(session: Session, key: str) -> str:
     it), or '' when nothing was entered: what Escape brings back in the field."""
     e = session.entry(key)
     return e.text if e else ""
+
+
+def answer(session: Session, key: str) -> str:
+    """The group's accepted answer in field ``key`` as the report and the results quote it
+    back: a number in the one unit of its quantity with the digits typed
+    (:meth:`~minseg_tui.lab.state.session.Session.reading`: '3,79' is "3.79", '80 rpm'
+    "8.378 rad/s"); a formula or arithmetic worked out keeps the group's text with its value
+    beside it ('1-exp(-1)' is "1-exp(-1) = 0.6321"); any other text as typed; '' when
+    nothing was accepted."""
+    e = session.entry(key)
+    if e is None or not e.ok:
+        return ""
+    text = e.text.strip()
+    reading = session.reading(key)
+    if reading is None:
+        return text
+    fld = FIELDS[key]
+    try:  # a plain number, perhaps with a unit: its reading says it all
+        parse_quantity(text, fld.unit, allow_negative=True, allow_zero=True)
+    except InputError:
+        return f"{text} = {reading}"
+    return reading
 
 
 def previous_answer(session: Session, key: str, skip: Sequence[str] = ()) -> str | None:
@@ -377,7 +412,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             if c.own is None
             else c.own
             if isinstance(c.own, str)
-            else session.reading(c.key) or typed_.text.strip()
+            else answer(session, c.key) or typed_.text.strip()
             if typed_ is not None and typed_.ok
             else _fmt(c.own, c.unit)
         )

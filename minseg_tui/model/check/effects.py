@@ -26,6 +26,7 @@ from numpy.typing import NDArray
 from minseg_tui.model.check import evidence as ev
 from minseg_tui.model.check.guess import first_motion, levels_offset, rises, steepest_rate
 from minseg_tui.model.check.simulate import Drive, Effects, Extra
+from minseg_tui.quantities import format_number
 
 if TYPE_CHECKING:
     from minseg_tui.model.check.fit import Fit
@@ -210,12 +211,12 @@ def coulomb_words(log: ev.Log, ext: Fit) -> str:
         )
         if left > max(log.zero, 2.0 * log.noise):
             text += f", where the first-order model still turns at {left:.2f} rad/s"
-        return text + f": dry friction stops a wheel in finite time (u_c = {uc:.3g} V)"
+        return text + f": dry friction stops a wheel in finite time (u_c = {format_number(uc)} V)"
     off = levels_offset(log.u, log.y, ext.T, log.ts)
     text = (
         "the settled speeds are not proportional to the voltage"
         + (f": a straight line through them meets zero speed at {off:.2f} V" if off else "")
-        + f"; dry friction with u_c = {uc:.3g} V does that (a voltage lost in the brushes or "
+        + f"; dry friction with u_c = {format_number(uc)} V does that (a voltage lost in the brushes or "
         "the driver looks the same in steady state)"
     )
     if not ev.falls(log):

@@ -21,6 +21,7 @@ from minseg_tui.quantities import (
     format_quantity,
     format_reading,
     format_signed,
+    format_value,
 )
 
 KV_OUTLIER: float = 0.15
@@ -159,13 +160,13 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
     if slope > 0 and intercept > 0:
         line = (
             f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {format_quantity(slope, F_UNIT)} "
-            f"and a dry friction torque tau_c = {format_number(intercept, 3)} N m."
+            f"and a dry friction torque tau_c = {format_value(intercept * 1e3, 'mN m')}."
         )
     return [
         Observation(
             "dry_friction",
             (
-                f"f falls with speed, from {format_quantity(f[0], F_UNIT)} at {format_reading(w[0], 'rad/s', 3)} to {format_quantity(f[-1], F_UNIT)} at {format_reading(w[-1], 'rad/s', 3)}: "
+                f"f falls with speed, from {format_quantity(f[0], F_UNIT)} at {format_reading(w[0], 'rad/s')} to {format_quantity(f[-1], F_UNIT)} at {format_reading(w[-1], 'rad/s')}: "
                 "part of the friction is dry (Coulomb) friction, a torque that does not grow with speed. "
                 "The lab's model has viscous friction only, so its f depends on the speed it was measured at."
                 + line

@@ -29,6 +29,7 @@ from minseg_tui.model.identify.rises import RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
 from minseg_tui.model.identify.windowfit import WindowsFit, fit_windows
 from minseg_tui.model.runlog import RunLog, command, find_edges
+from minseg_tui.quantities import format_number
 
 FloatArray = NDArray[np.float64]
 
@@ -447,7 +448,12 @@ def _from_whole(
     se = math.sqrt(max(float(cov.cov[1, 1]), 0.0))
     u = np.asarray(log.u, dtype=float)
     highs = [float(np.mean(u[w.edge.end : w.post_last])) for w in windows]
-    friction = f"; dry friction found: breakaway at u_c = {fit.u_c:.3g} V" if fit.friction else ""
+    friction = (
+        f"; dry friction found: breakaway at u_c = {format_number(fit.u_c)} V in this fit "
+        "(the model check's fit of the speed finds its own u_c)"
+        if fit.friction
+        else ""
+    )
     one = len(windows) == 1
     alone = "the rise fitted alone does" if one else "the rises fitted one by one do"
     theirs = "that fit's" if one else "theirs"

@@ -15,7 +15,7 @@ from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import format_fixed, format_spread
 from minseg_tui.ui.device import DeviceInfo
 from minseg_tui.ui.keys import PanelKeys
-from minseg_tui.ui.live import LiveBuffer
+from minseg_tui.ui.live import LiveBuffer, at_level
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
 from minseg_tui.ui.panels.meter import MODES as METER_MODES
 from minseg_tui.ui.panels.meter import MeterPanel
@@ -68,8 +68,8 @@ class LivePanel(Vertical, PanelKeys):
             self.set_interval(self._refresh, self.redraw)
 
     def watch_requested(self) -> None:
-        t, count, _u = self._live.snapshot()
-        self._show_steady(t, count)
+        t, count, u = self._live.snapshot()
+        self._show_steady(t, count, u)
 
     def watch_meter(self, reading: MeterReading | None) -> None:
         if self._meter is not None:
@@ -81,7 +81,7 @@ class LivePanel(Vertical, PanelKeys):
 
     def redraw(self) -> None:
         """Replot from the buffer and update the indicator (a few times a second)."""
-        t, count, _u = self._live.snapshot()
+        t, count, u = self._live.snapshot()
         if self.plots:
             v = views.live(t, count)
             if v.x.size:
@@ -89,15 +89,17 @@ class LivePanel(Vertical, PanelKeys):
                 self.query_one("#plot-speed", TracePlot).show(
                     [Trace(v.x, v.omega, "board time"), Trace(v.x, v.omega_lab, "manual", "dot")]
                 )
-        self._show_steady(t, count)
+        self._show_steady(t, count, u)
 
-    def _show_steady(self, t: NDArray[np.float64], count: NDArray[np.int64]) -> None:
+    def _show_steady(
+        self, t: NDArray[np.float64], count: NDArray[np.int64], u: NDArray[np.float64]
+    ) -> None:
         if self._steady is None:
             return
         level = "0 V (motor off)" if self.requested is None else f"{self.requested:g} V"
         keys = "F3 next voltage · F2 stop"
         if "capture_omega" in self.step.actions:
-            s = views.steady(t, count)
+            s = views.steady(*at_level(t, count, u, self.requested))
             state = "SETTLED" if s.settled else "not settled"
             mean = (
                 "—"
@@ -125,12 +127,13 @@ class LivePanel(Vertical, PanelKeys):
         return True
 
     def action_set_voltage(self) -> None:
-        """F3: ask for the next of this step's voltages."""
+        """F3: ask the app for the next of this step's voltages (on its own queue, where the
+        keys typed after F3 run their bindings next: F4 captures at the new level)."""
         if not self.levels:
             self.notify("no voltage to set on this step (Tasks 4-5)")
             return
         k = -1 if self.requested not in self.levels else self.levels.index(self.requested)
-        self.post_message(VoltageRequested(self.levels[(k + 1) % len(self.levels)]))
+        self.app.post_message(VoltageRequested(self.levels[(k + 1) % len(self.levels)]))
 
     async def action_capture(self) -> None:
         """F4: ask the lab screen to take omega_ss from the settled window (refused while not

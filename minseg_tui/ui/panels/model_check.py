@@ -16,6 +16,7 @@ from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.ui.widgets.textbox import TextBox
 
 DETAILS = "Details: figures, evidence, noise · Enter opens"
 """The fold's title (the details follow the sentences a student reads first)."""
@@ -144,7 +145,7 @@ class ImportBox(Vertical):
 
     def compose(self) -> ComposeResult:
         yield Prose("A run log recorded elsewhere (CSV): its path, then Enter", classes="hint")
-        yield Input(placeholder="load a run log (CSV path), Enter", id="import-path")
+        yield TextBox(placeholder="load a run log (CSV path), Enter", id="import-path")
         yield Prose("", id="import-msg", classes="hint")
 
     @on(Input.Submitted, "#import-path")

@@ -37,7 +37,7 @@ from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.keys import PanelKeys, panel_keys
-from minseg_tui.ui.live import LiveBuffer
+from minseg_tui.ui.live import LiveBuffer, at_level
 from minseg_tui.ui.messages import (
     CaptureRequested,
     LogImportRequested,
@@ -944,7 +944,7 @@ class LabScreen(StatusScreen):
             event.done.set()
 
     def _capture_now(self, level: float) -> None:
-        t, count, _u = self._live.snapshot()
+        t, count = at_level(*self._live.snapshot(), level)
         with self.session as s:
             result = views.capture_live(s, level, t, count)
         if not result.ok:  # a success shows in the field itself; a toast would hide the meter

@@ -13,6 +13,7 @@ from textual.widgets import Input, OptionList
 from textual.widgets.option_list import Option
 
 from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.ui.widgets.textbox import TextBox
 
 QUIT_CHOICES: tuple[tuple[str, str], ...] = (
     ("keep", "Keep working (it keeps trying to save)"),
@@ -82,7 +83,7 @@ class SaveElsewhereScreen(ModalScreen[None]):
                 "Enter; the session is saved in a new folder inside it and goes on there.",
                 classes="para",
             )
-            yield Input(value=self._suggestion, id="folder", select_on_focus=True)
+            yield TextBox(value=self._suggestion, id="folder", select_on_focus=True)
             yield Prose("", id="saved")
 
     @on(Input.Submitted, "#folder")

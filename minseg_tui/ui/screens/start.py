@@ -19,6 +19,7 @@ from minseg_tui.lab.content.steps import STEP_INDEX, step
 from minseg_tui.lab.saving.store import SessionInfo, names_key, same_names
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
+from minseg_tui.ui.widgets.textbox import TextBox
 
 
 def step_name(step_id: str) -> str:
@@ -84,8 +85,8 @@ class StartScreen(StatusScreen):
         yield self.status_line()
         with Vertical(id="start"):
             yield Static("New session", classes="title")
-            yield Input(placeholder="group members, e.g. Ada L, Alan T", id="members")
-            yield Input(value=self._today, placeholder="date (YYYY-MM-DD)", id="date")
+            yield TextBox(placeholder="group members, e.g. Ada L, Alan T", id="members")
+            yield TextBox(value=self._today, placeholder="date (YYYY-MM-DD)", id="date")
             yield Static(
                 "Enter on the names starts the lab. Tab moves on.", id="start-msg", classes="hint"
             )

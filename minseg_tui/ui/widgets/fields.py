@@ -1025,6 +1025,9 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     # -- keys ------------------------------------------------------------------------------
     async def on_key(self, event: events.Key) -> None:
         """Every key handed to the form, in the order typed (see the class)."""
+        if self.app.screen is not self.screen:
+            await self._hand_over(event)
+            return
         focused = self.screen.focused
         if focused is not self:
             self._passed_on(event, focused)
@@ -1130,6 +1133,20 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         if not inside and focused is not None:
             self._own(event)
             focused.post_message(events.Key(key, event.character))
+
+    async def _hand_over(self, event: events.Key) -> None:
+        """A key handed to the form before a key ahead of it opened another screen over the
+        lab (Ctrl+P, F1): it goes to that screen, as the app would have sent it there had the
+        screen opened at once (a priority binding of it runs, any other key goes to its
+        focused widget). 'Ctrl+P Task 5' in one burst put 'Task 5' into the entry under the
+        palette (walk 7)."""
+        self._own(event)
+        screen = self.app.screen
+        bound = screen.active_bindings.get(event.key)
+        if bound is not None and bound.enabled and bound.binding.priority:
+            await self.app.run_action(bound.binding.action, bound.node)
+            return
+        (screen.focused or screen).post_message(events.Key(event.key, event.character))
 
     def _binds(self, focused: Widget, key: str) -> bool:
         """A widget of the step from ``focused`` up to the form (not the form) binds ``key``
