@@ -29,7 +29,7 @@ async def test_the_check_gives_T_in_ms_in_its_story_its_details_and_the_report(q
     check = md.split("## Model check", 1)[1].split(" ## ", 1)[0]
     for text in (story, details, check):
         assert not IN_S.search(text), IN_S.search(text)
-    assert f"T = {format_constant(T, 's', 3)}, K = " in story
+    assert f"T = {format_constant(T, 's')}, K = " in story
     for text in (details, check):
         assert f"T = {format_constant(T, 's')}" in text and " ms" in format_constant(T, "s")
         assert f"gives T = {format_constant(T_ls, 's')} and K = " in text
