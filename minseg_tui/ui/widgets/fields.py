@@ -365,7 +365,10 @@ class EntryBox(Widget, can_focus=False):
         self.post_message(self.Changed())
 
     def _scroll_to_cursor(self) -> None:
-        width = max(self.content_size.width, 1)
+        width = self.content_size.width
+        if width == 0:  # not laid out yet (a step opening): scrolled when its size comes
+            self._scroll_x = 0
+            return
         if self._cursor < self._scroll_x:
             self._scroll_x = self._cursor
         elif self._cursor >= self._scroll_x + width:
@@ -373,8 +376,11 @@ class EntryBox(Widget, can_focus=False):
         self._scroll_x = max(0, min(self._scroll_x, len(self._value)))
 
     def on_resize(self) -> None:
+        # the line may already be drawn at the new size before this message comes: draw it
+        # again with the text scrolled for that size
         self._scroll_x = 0
         self._scroll_to_cursor()
+        self.refresh()
 
     # -- shown -----------------------------------------------------------------------------
     def show_current(self, current: bool) -> None:
