@@ -19,11 +19,12 @@ class TextBox(Input):
     find for such a key (priority bindings aside, which the app runs before the box sees the
     key), so running them here changes nothing but the order."""
 
-    async def _on_key(self, event: events.Key) -> None:
+    async def on_key(self, event: events.Key) -> None:
+        # Textual calls a subclass's handler before Input's; prevent_default() keeps Input's
+        # own from seeing the key, and otherwise it handles it next (public API only)
         if not event.is_printable:
             for binding in BindingsMap(self.BINDINGS).key_to_bindings.get(event.key, ()):
                 if not binding.priority and await self.app.run_action(binding.action, self):
                     event.stop()
                     event.prevent_default()
                     return
-        await super()._on_key(event)
