@@ -46,7 +46,8 @@ def test_falling_f_is_called_dry_friction_with_the_line_through_the_rows():
     torque = result.k_a * np.array([0.030, 0.035, 0.040])
     wm, tm = w.mean(), torque.mean()
     slope = ((w - wm) * (torque - tm)).sum() / ((w - wm) ** 2).sum()
-    assert f"{tm - slope * wm:.3g}" in msg
+    # tau_c in mN m beside f in mN m s/rad (it was N m beside mN m s/rad: walk 7, D10)
+    assert f"tau_c = {format_number((tm - slope * wm) * 1e3)} mN m" in msg
     # f in mN m s/rad, as the table and Task 9's entry show it (it was N m s/rad here)
     # with the table's four digits (it had three here)
     assert f"viscous f = {format_number(slope * 1e3)} mN m s/rad" in msg
