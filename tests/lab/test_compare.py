@@ -7,16 +7,14 @@ import json
 import re
 from pathlib import Path
 
-import numpy as np
-
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.compare import read_policy, two_T, two_T_of
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import inertia_from_time_constant
-from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.quantities import example, format_diff, format_number, format_reading
+from tests.seeded import record_square_wave
 
 
 def _lab(root: Path) -> Session:
@@ -30,17 +28,7 @@ def _lab(root: Path) -> Session:
         s.enter(f"u_ss@{lv:g}", u)
         s.enter(f"omega_ss@{lv:g}", w)
         s.enter(f"i_ss@{lv:g}", i)
-    plan = dict(step("task10").plans)["manual"]
-    n = int(round(plan.duration / plan.ts))
-    k = np.arange(n)
-    u = np.concatenate(
-        (np.zeros(20), np.where((k * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
-    )
-    data = record(PlantParams(), u, ts=plan.ts, seed=3, jitter_us=1000)
-    rec = s.start_run("steps", plan)
-    for j in range(u.size):
-        rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), int(round(u[j] * 1000)))
-    s.finish_run(rec)
+    record_square_wave(s, seed=3, jitter_us=1000)
     return s
 
 

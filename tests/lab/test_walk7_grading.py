@@ -5,15 +5,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
-
-from minseg_tui.lab.content.steps import FIELDS, step
+from minseg_tui.lab.content.steps import FIELDS
 from minseg_tui.lab.state.entries import read_entry
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
-from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.report.write import write_report
+from tests.seeded import record_square_wave
 
 
 def _lab(root: Path, skip: tuple[str, ...] = ()) -> Session:
@@ -29,19 +27,7 @@ def _lab(root: Path, skip: tuple[str, ...] = ()) -> Session:
         for key, text in ((f"u_ss@{lv:g}", u), (f"omega_ss@{lv:g}", w), (f"i_ss@{lv:g}", i)):
             if key not in skip:
                 s.enter(key, text)
-    plan = dict(step("task10").plans)["manual"]
-    n = int(round(plan.duration / plan.ts))
-    k = np.arange(n)
-    u_req = np.concatenate(
-        (np.zeros(20), np.where((k * plan.ts // plan.half_period) % 2 == 0, 4.5, 0.0))
-    )
-    data = record(PlantParams(), u_req, ts=plan.ts, seed=3, jitter_us=1000)
-    rec = s.start_run("steps", plan)
-    for j in range(u_req.size):
-        rec.append(
-            int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), int(round(u_req[j] * 1000))
-        )
-    s.finish_run(rec)
+    record_square_wave(s, seed=3, jitter_us=1000)
     return s
 
 
