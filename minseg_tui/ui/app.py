@@ -481,9 +481,12 @@ class LabApp(App[None]):
         with self._lock:
             if self._sending:
                 return  # a command on its way: what the screen shows is what it asks for
-        self.motor = motor_words(event.u_req)
-        if event.u_req is not None and self.requested != event.u_req:
-            self.requested = event.u_req or None
+        # the link now, not when the stream read it: a check or a command may have changed it
+        # since, and a stale 1.8 V would stand until the stream's next read
+        u_req = self._device.u_req if self._device is not None else event.u_req
+        self.motor = motor_words(u_req)
+        if u_req is not None and self.requested != u_req:
+            self.requested = u_req or None
 
     @on(StepShown)
     def _step_shown(self, event: StepShown) -> None:
@@ -590,6 +593,8 @@ class LabApp(App[None]):
     def _board_checked(self, event: BoardChecked) -> None:
         self._tap = None
         self._watch = NoCountWatch()
+        if self._device is not None:
+            self.motor = motor_words(self._device.u_req)  # the check ends with the motor off
         if event.result is None:
             self.notify(event.error, title="board check", severity="error", timeout=10)
             return
