@@ -141,6 +141,12 @@ class Selection:
     left_out: dict[str, str] = field(default_factory=dict)
     bound: dict[str, tuple[Fit, str]] = field(default_factory=dict)
     tried: list[Fit] = field(default_factory=list)
+    plain: float = 0.0
+    """The first-order model's scatter (rad/s) an average's noise test is relaxed against
+    (0: not relaxed, see :data:`FILTER_NOISE`)."""
+    relaxable: bool = False
+    """True when, unrelaxed, an average was refused by the noise test alone and would pass
+    the relaxed one."""
 
 
 def _own_noise(prob: Problem, f: Fit) -> float:
@@ -189,7 +195,11 @@ average has taken away most of what the speed scattered by. On the independent g
 tuning seed 8 (a 9-tap average at 25 ms samples, 1440 counts per turn) the true average
 left 0.049 rad/s against a floor of 0.0079 rad/s while the first-order model left 0.54 and
 the delay and pole named in its place 0.35; a raw column scatters as much around an
-average as around the first-order model."""
+average as around the first-order model. Relaxed only once the rows of every disturbance
+are left out (:func:`select`'s relax): a hand the baseline did not see, left in the rows,
+let a 13-tap average with T 16 % short (tuning seed 1036, a 9-tap average) scatter 0.14
+rad/s against the first-order model's 1.41, and that average's miss at 4.06 s was
+reported as a second disturbance beside the hand."""
 
 
 def cap_ramp(prob: Problem, f: Fit) -> float:
@@ -378,13 +388,30 @@ def select(
     noise: float,
     floor: Callable[[int], float | None] = lambda n: None,
     names: tuple[str, ...] = NAMES,
+    relax: bool = True,
 ) -> Selection:
-    """Forward then backward selection of the causes (see the module docstring)."""
+    """Forward then backward selection of the causes (see the module docstring). relax: an
+    average's noise test is relaxed against the first-order model's scatter (see
+    :data:`FILTER_NOISE`); only once the rows of any disturbance are left out."""
     singles = {c: single(prob, c, base, rng, noise) for c in names}
     verdicts = {c: compare(f, base) for c, f in singles.items()}
-    sel = Selection(base, base, singles, verdicts)
     base_raw = _raw_sse(prob, base)
-    plain = min(noise, _own_noise(prob, base))
+    relaxed = min(noise, _own_noise(prob, base))
+    plain = relaxed if relax else 0.0
+    sel = Selection(base, base, singles, verdicts, plain=plain)
+
+    def why_not(f: Fit, c: str) -> str | None:
+        why = _why_not(prob, f, c, rng, base_raw, noise, floor, plain)
+        if (
+            why is not None
+            and not relax
+            and not sel.relaxable
+            and c == "velocity_filter"
+            and why.startswith("the speed scatters")
+        ):
+            sel.relaxable = _why_not(prob, f, c, rng, base_raw, noise, floor, relaxed) is None
+        return why
+
     current: Fit = base
     chosen: tuple[str, ...] = ()
     while len(chosen) < MAX_CAUSES:
@@ -420,7 +447,7 @@ def select(
             v = compare(f, current)
             if not v.clear:
                 continue
-            why = _why_not(prob, f, c, rng, base_raw, noise, floor, plain)
+            why = why_not(f, c)
             if why is None:
                 ok[c] = f
             elif c not in sel.left_out:
@@ -470,7 +497,7 @@ def select(
             if f.sse_white < (1.0 - MIN_REDUCTION_MORE) * current.sse_white and (
                 swap is None or f.sse_white < swap[1].sse_white
             ):
-                if _why_not(prob, f, x, rng, base_raw, noise, floor, plain) is None:
+                if why_not(f, x) is None:
                     swap = (x, f)
         if swap is not None:
             sel.left_out[first] = f"{swap[0]} explains the log better together with the others"
@@ -489,7 +516,7 @@ def select(
             sel.tried.append(f)
             alike = [g for g in singles.values() if g.effects.taps == f.effects.taps]
             if _stands_in(prob, f, current, base, alike) and all(
-                _why_not(prob, f, x, rng, base_raw, noise, floor, plain) is None for x in pair
+                why_not(f, x) is None for x in pair
             ):
                 wins = _partnered(prob, sel, f, current, rng, noise, floor)
                 for x in (chosen[0], *pair):
@@ -504,7 +531,7 @@ def select(
     # a cause whose parameter ended on a bound in the joint fit, or that fails its own test
     # there, leaves too
     for c in list(chosen):
-        why = _why_not(prob, current, c, rng, base_raw, noise, floor, plain)
+        why = why_not(current, c)
         if why is not None:
             rest = tuple(x for x in chosen if x != c)
             old = {k: v for k, v in values_of(current).items() if k != c}
@@ -576,7 +603,7 @@ def _partnered(
     the two fit about as well the pair is kept and :func:`rivals` names the other beside it."""
     one = single.causes[0]
     base_raw = _raw_sse(prob, sel.base)
-    plain = min(noise, _own_noise(prob, sel.base))
+    plain = sel.plain
     for x in pair.causes:
         vals = [pair.value(x), sel.singles[x].value(x), *_starts(prob, x, single, rng, noise)]
         lags = (pair.T, pair.effects.T2, pair.T + pair.effects.delay + pair.effects.T2)
@@ -727,7 +754,7 @@ def rivals(
     if k >= 2 and fewer:
         pool += list(sel.without.values())
     base_raw = _raw_sse(prob, sel.base)
-    plain = min(noise, _own_noise(prob, sel.base))
+    plain = sel.plain
     best: dict[frozenset[str], tuple[Fit, float]] = {}
     raw_c: float | None = None
     for f in pool:

@@ -160,8 +160,12 @@ def check(
     )
     unjudged = cannot_judge(log)
     names = tuple(c for c in NAMES if c not in unjudged)
-    sel = select(head, base, rng, noise, samp.column_floor, names)
+    # an average's noise test is not relaxed yet: a hand the baseline did not see, left in
+    # the rows, can make an average of the wrong length scatter far less than the
+    # first-order model and still far more than counts leave (tuning seed 1036)
+    sel = select(head, base, rng, noise, samp.column_floor, names, relax=False)
     ext = sel.chosen
+    noise0 = noise
 
     # against the model chosen: wild samples in the averaged form, disturbances again
     taps = ext.effects.taps
@@ -212,6 +216,13 @@ def check(
         sel = select(head, base, rng, noise, samp.column_floor, names)
         ext = sel.chosen
         log = replace(log, base_pred=base.predict(full))
+        settle = dist.settle_rows(ext.T, ext.effects.delay, ext.effects.taps, ts)
+        noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
+    elif sel.relaxable:
+        # the model chosen sees no disturbance the baseline hid: the rows are clean, and an
+        # average refused only for its scatter is judged against the first-order model's
+        sel = select(head, base, rng, noise0, samp.column_floor, names)
+        ext = sel.chosen
         settle = dist.settle_rows(ext.T, ext.effects.delay, ext.effects.taps, ts)
         noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
     log = replace(log, noise=noise)
