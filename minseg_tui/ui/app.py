@@ -52,7 +52,7 @@ from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
 from minseg_tui.ui.keys import app_bindings, help_lines
-from minseg_tui.ui.live import LiveBuffer
+from minseg_tui.ui.live import LEVEL_TOL, LiveBuffer
 from minseg_tui.ui.messages import (
     BoardChecked,
     CommandFailed,
@@ -206,6 +206,9 @@ class LabApp(App[None]):
         """Board commands (F2, F3) not yet sent, oldest first: one worker sends them in order."""
         self._sending = False
         """The worker that sends :attr:`_commands` runs (set and read under :attr:`_lock`)."""
+        self._motor_unread = False
+        """The link's motor was passed over while the commands were sent: the worker asks
+        for it again once the last is sent (set and read under :attr:`_lock`)."""
         self._lock = threading.Lock()
         self._signals: list[int] = []  # the terminating signals the app answers
         self._tap: queue.Queue[SampleBatch] | None = None
@@ -476,14 +479,24 @@ class LabApp(App[None]):
     @on(MotorKnown)
     def _motor_known(self, event: MotorKnown) -> None:
         """The link's own idea of the motor (after a reconnect: off, nothing restored)."""
-        if self._run_busy:
-            return  # the run's own words stand
+        self._motor_from_link()
+
+    def _motor_from_link(self) -> None:
+        """The status line's motor and F3's level as the link has them now, when the message
+        that asks is handled, never as a worker read them: a check, a command or a board
+        event may have changed the motor since, and what the screen took would stand until
+        the link changed again. Not while a run waits or records (its own words stand), nor
+        while board commands are on their way (what they ask is shown; the worker that sends
+        them asks again once the last is sent, :attr:`_motor_unread`); without a device, as it
+        is."""
+        device = self._device
+        if device is None or self._run_busy:
+            return
         with self._lock:
             if self._sending:
-                return  # a command on its way: what the screen shows is what it asks for
-        # the link now, not when the stream read it: a check or a command may have changed it
-        # since, and a stale 1.8 V would stand until the stream's next read
-        u_req = self._device.u_req if self._device is not None else event.u_req
+                self._motor_unread = True
+                return
+        u_req = device.u_req
         self.motor = motor_words(u_req)
         if u_req is not None and self.requested != u_req:
             self.requested = u_req or None
@@ -500,9 +513,15 @@ class LabApp(App[None]):
         kind = ev.kind
         if kind == "edge":
             return
-        if kind in ("square_wave_done", "disconnected", "watchdog", "boot", "error", "motor"):
-            self.motor = "off"  # a run these end is ended by the Task 10 procedure
-            self.requested = None
+        if kind in ("disconnected", "error"):
+            self.motor = "off"  # the board is gone (its watchdog stops it); the link keeps
+            self.requested = None  # the voltage last asked, which is no longer on the motor
+        elif kind in ("square_wave_done", "watchdog", "boot", "motor"):
+            # the link has the motor off (or at the square wave's low level): as it has it
+            # now, not "off" whatever happened since the stream read the event (an F3 handled
+            # in between put a voltage on the motor again, and the screen said "off" while the
+            # wheel turned); a run these end is ended by the Task 10 procedure
+            self._motor_from_link()
         if (kind == "connected" and self.link.event == "") or (
             kind == "alive" and self.link.state != "silent"
         ):  # nothing was said that these would answer: "again" only after "silent"
@@ -677,6 +696,10 @@ class LabApp(App[None]):
         """The motor is driven and the count stands: say what to do (Task 5: the meter)."""
         if self._tap is not None:
             return
+        device = self._device
+        u_now = device.u_req if device is not None else None
+        if u_now is None or abs(u_now - event.u) > LEVEL_TOL:
+            return  # the motor was stopped or set anew since the stream read the samples
         if self._step_id == "task5":
             text = (
                 f"The motor is driven at {event.u:g} V and the encoder counts nothing. If the "
@@ -944,12 +967,21 @@ class LabApp(App[None]):
             with self._lock:
                 if not self._commands:
                     self._sending = False
-                    return
+                    unread, self._motor_unread = self._motor_unread, False
+                    break
                 what, send = self._commands.popleft()
             try:
                 send()
             except MinsegError as exc:
+                if what == "stop":  # F2's "off" stands (a board without power stops by
+                    with self._lock:  # itself): what the link said before it is old news
+                        self._motor_unread = False
                 self.post_message(CommandFailed(what, str(exc)))
+        if unread:
+            # what the link said of the motor meanwhile (the stream's MotorKnown, a board
+            # event, a failed command) was passed over, and the stream says nothing more until
+            # the link changes again: the screen takes the link's motor now
+            self.post_message(MotorKnown(None))
 
     @on(CommandFailed)
     def _command_failed(self, event: CommandFailed) -> None:
@@ -960,9 +992,7 @@ class LabApp(App[None]):
             )
             return
         self.notify(event.error, severity="error")
-        u = self._device.u_req if self._device is not None else 0.0
-        self.motor = motor_words(u)
-        self.requested = u or None
+        self._motor_from_link()  # (not while later commands are on their way)
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
