@@ -425,8 +425,11 @@ class LabApp(App[None]):
             moved = task is not None and task.active and task.feed(batch, events)
             if moved and task is not None and task.outcome is None:
                 self.post_message(Task10Moved(task))
-            if len(batch):
+            with self._lock:  # not into the buffer of the device switched to meanwhile
+                if self._device is not device:
+                    return
                 self.live.extend(batch)
+            if len(batch):
                 tap = self._tap
                 if tap is not None:
                     tap.put(batch)
@@ -1096,13 +1099,14 @@ class LabApp(App[None]):
         """Drop the board and use the virtual MinSeg."""
         self.stop_motor()
         self.workers.cancel_group(self, "stream")
-        old, self._device = self._device, None
+        with self._lock:  # the old stream, were it between a read and the buffer, stops there
+            old, self._device = self._device, None
+            self.live.clear()
         if old is not None:
             try:
                 old.close()
             except MinsegError:
                 pass
-        self.live.clear()
         self.device = None
         self.link = LinkState(event="connecting…")
         self._connect("sim")
