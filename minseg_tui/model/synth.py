@@ -126,6 +126,28 @@ def plant_with(effects: dict[str, float]) -> PlantParams:
     return p
 
 
+def _driven(
+    u_req: NDArray[np.float64], effects: dict[str, float], params: PlantParams
+) -> NDArray[np.float64]:
+    """The requests (V) that make the plant put on the motor what the causes acting on the
+    input (an entry's ``drive``, not in the plant) make of the applied voltage; ``u_req``
+    itself when there is none. The log keeps the applied voltage before them."""
+    pieces = [
+        (c.drive, v)
+        for name, v in effects.items()
+        if (c := BY_CAUSE[name]).drive is not None
+        and c.hidden is not None
+        and c.hidden.plant is None
+    ]
+    if not pieces:
+        return u_req
+    applied = np.array([params.u_applied(v) for v in u_req])
+    for drive, v in pieces:
+        applied = drive(applied, v)
+    # the request that gives that voltage once the driver's own drop is taken off
+    return np.where(applied != 0.0, np.sign(applied) * (np.abs(applied) + params.v_drop), 0.0)
+
+
 def _draw(rng: np.random.Generator, cause: str) -> float:
     _, lo, hi = PARAM_RANGES[cause]
     hidden = BY_CAUSE[cause].hidden
@@ -175,6 +197,7 @@ def make_log(
         effects[also] = float(also_param)
     params = plant_with(effects)
     u_req = commands(rng, amplitudes, duration, half_period=half_period)
+    u_motor = _driven(u_req, effects, params)
     hand = _touch(rng, u_req, params, half_period) if touch else None
     if hand is not None:
         params = replace(params, touch=hand)
@@ -183,9 +206,9 @@ def make_log(
         edges = np.flatnonzero(np.diff(u_req) != 0) + 1
         late_row = int(edges[rng.integers(1, max(2, edges.size - 1))])
         frac = float(rng.uniform(0.3, 0.7))
-        t, count, omega_true = _sample_late(params, u_req, seed, jitter_us, late_row, frac)
+        t, count, omega_true = _sample_late(params, u_motor, seed, jitter_us, late_row, frac)
     else:
-        rec = record(params, u_req, ts=TS, seed=seed, jitter_us=jitter_us)
+        rec = record(params, u_motor, ts=TS, seed=seed, jitter_us=jitter_us)
         t, count, omega_true = rec.t, rec.count, rec.omega_true
     theta = count * (2.0 * math.pi / params.cpr)
     if creep:

@@ -134,8 +134,9 @@ class Hidden:
     """How :mod:`minseg_tui.model.synth` hides the cause in a generated log: the realistic
     range its parameter is drawn from (lo, hi, in the contract parameter's unit; a whole
     number when ``whole``), and ``plant``: the plant with it, from the plant without it
-    and the parameter (None: it is in the measurement, not the plant: the average of a
-    counted cause)."""
+    and the parameter. None: it is not in the plant: a cause with a ``drive`` acts on the
+    voltage the motor gets (the log keeps the voltage before it), a counted cause is the
+    average the speed is measured over."""
 
     lo: float
     hi: float
