@@ -45,6 +45,11 @@ def klass(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return root
 
 
+GROUP = pytest.mark.xdist_group("class-klass")
+"""The tests reading :func:`klass` run on one worker under make test's -n 2 (--dist
+loadgroup), so the module fixture's class of eight groups is built once, not once per worker."""
+
+
 def _run(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
     code = main(["class", *args])
     out, err = capsys.readouterr()
@@ -57,6 +62,7 @@ def _by_members(doc: dict[str, object]) -> dict[str, dict[str, object]]:
     return {" ".join(g["members"]) or g["id"]: g for g in groups}
 
 
+@GROUP
 def test_json_one_row_per_group_numbers_are_the_sessions_own(klass, capsys):
     code, out, err = _run(capsys, "--sessions", str(klass), "--json")
     doc = json.loads(out)
@@ -83,6 +89,7 @@ def test_json_one_row_per_group_numbers_are_the_sessions_own(klass, capsys):
         assert g[f"Ada {k} Bo {k}"]["lacks"] == []
 
 
+@GROUP
 def test_slips_and_far_values_are_said_in_words(klass, capsys):
     _, out, _ = _run(capsys, "--sessions", str(klass), "--json")
     doc = json.loads(out)
@@ -131,6 +138,7 @@ def test_a_dropped_decimal_point_in_R_is_named(tmp_path, capsys):
     assert doc["class"]["R"]["n"] == 4 and doc["class"]["k_v"]["n"] == 4
 
 
+@GROUP
 def test_unfinished_and_damaged_are_listed_with_what_they_lack(klass, capsys):
     _, out, _ = _run(capsys, "--sessions", str(klass), "--json")
     g = _by_members(json.loads(out))
@@ -144,6 +152,7 @@ def test_unfinished_and_damaged_are_listed_with_what_they_lack(klass, capsys):
     )
 
 
+@GROUP
 def test_text_table_names_steps_and_units(klass, capsys):
     code, out, err = _run(capsys, "--sessions", str(klass))
     assert code == 2 and "zz-broken" in err
@@ -156,6 +165,7 @@ def test_text_table_names_steps_and_units(klass, capsys):
     assert "! R = 12.00 Ω is outside" in out and "- lacks: no run recorded yet" in out
 
 
+@GROUP
 def test_out_writes_markdown_html_and_csv(klass, tmp_path, capsys):
     out_dir = tmp_path / "out"
     _run(capsys, "--sessions", str(klass), "--out", str(out_dir))
@@ -195,6 +205,7 @@ def _state(root: Path) -> dict[str, tuple[int, bytes]]:
     }
 
 
+@GROUP
 def test_sessions_are_never_written_nor_locked(klass, tmp_path, capsys):
     before = _state(klass)
     names = {p.name for p in klass.rglob("*")}
@@ -316,6 +327,7 @@ def test_a_copied_session_is_named_by_its_own_folder(tmp_path, capsys):
     assert sorted(ids) == sorted([folder.name, "ada-copy"])
 
 
+@GROUP
 def test_f_is_shown_in_mN_m_s_per_rad_and_kept_si_in_csv_and_json(klass, tmp_path, capsys):
     """The class's text, report and figures showed f in N m s/rad while the lab's table and
     Task 9's entry use mN m s/rad: one unit for f wherever people read it; the CSV and the
