@@ -310,11 +310,36 @@ class StepPane(FieldForm):
         where the placing left the step (:meth:`placed`)."""
         super().watch_scroll_y(old, new)
         if self._heading is not None and not self.is_placing:
-            self._heading.display = round(new) > 0 or self._heading.whole
+            self._heading.display = self._heading_wanted()
 
     def placed(self) -> None:
         if self._heading is not None:
-            self._heading.display = round(self.scroll_y) > 0 or self._heading.whole
+            self._heading.display = self._heading_wanted()
+
+    def _heading_wanted(self) -> bool:
+        """The heading shows while the step's own title is scrolled away, or with all of what
+        to do (:data:`WHOLE_TODO_KEY`), except while the step's own "What to do" is whole in
+        view below where it would end: over Task 5's own text at 80x24 it covered all but that
+        text's last line, which showed under it as a repeated line (walk 7, D3)."""
+        heading = self._heading
+        if heading is None:
+            return False
+        if heading.whole and self._own_todo_below(heading):
+            return False
+        return round(self.scroll_y) > 0 or heading.whole
+
+    def _own_todo_below(self, heading: Heading) -> bool:
+        """The step's own "What to do" stands whole in the step's view and reaches below the
+        rows the whole heading would cover: the heading over it would leave its end showing
+        under the heading (over it whole, it hides it and keeps the step's title in sight)."""
+        todo = next(iter(self.query_children(".todo")), None)
+        if todo is None or not todo.is_attached:
+            return False
+        view = self.scrollable_content_region
+        region = todo.virtual_region
+        top = region.y - round(self.scroll_y)
+        bottom = top + region.height
+        return top >= 0 and bottom <= view.height and bottom > heading.rows(view.width)
 
     @property
     def heading_rows(self) -> int:
@@ -331,7 +356,7 @@ class StepPane(FieldForm):
         if heading is None:
             return
         heading.show_whole(not heading.whole)
-        heading.display = round(self.scroll_y) > 0 or heading.whole
+        heading.display = self._heading_wanted()
         box = self.keys_box
         focused = box if box is not None else self.screen.focused
         if focused is not None and focused is not self and self in focused.ancestors:
