@@ -1,11 +1,25 @@
 """What walk 7 left on the screens, at 80x24 where it was seen (Pilot, real session folder):
-Ctrl+O's whole "What to do" over a step whose own text is in view (D3)."""
+Ctrl+O's whole "What to do" over a step whose own text is in view (D3); a resumed Task 10's
+plots (D11)."""
 
 from __future__ import annotations
 
+import threading
+
 from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.views import session as views
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import goto, settle, start, typing_box
+from minseg_tui.ui.widgets.plots import TracePlot
+from tests.ui.helpers import (
+    GUARD,
+    ROUNDS,
+    goto,
+    settle,
+    shown,
+    start,
+    start_with_a_run,
+    typing_box,
+)
 
 
 async def test_ctrl_o_never_shows_a_line_of_what_to_do_twice(quiet):
@@ -42,3 +56,49 @@ async def test_ctrl_o_never_shows_a_line_of_what_to_do_twice(quiet):
             shown == " ".join(("What to do: " + step("task5").todo).split()) + " (Ctrl+O folds it)"
         )
         assert own.region.bottom <= heading.region.bottom  # no line of it under the heading
+
+
+async def test_a_resumed_task_10_plots_the_run_in_use_before_its_fits_are_made(quiet, monkeypatch):
+    """After a resume Task 10 showed both plots empty for about 4 s (walk 7, D11): its view
+    waited for the three fits of each run. The fits are held here until the test lets them
+    go: the 25 ms plot shows the run in use meanwhile, and the T readings follow."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task10")
+        await settle(pilot)
+    monkeypatch.setattr(views, "_run_views", {})  # a new process: no fit made yet
+    monkeypatch.setattr(views, "_marked_views", {})
+    let_go = threading.Event()
+    fit = views.model_identify.fit_time_constant
+
+    def held(*args, **kwargs):
+        let_go.wait(GUARD)  # a guard against a hang, not a measure
+        return fit(*args, **kwargs)
+
+    monkeypatch.setattr(views.model_identify, "fit_time_constant", held)
+    app2 = quiet()
+    try:
+        async with app2.run_test(size=(80, 24)) as pilot:
+            await settle(pilot, lambda: bool(app2.screen.query("#sessions")))
+            app2.screen.query_one("#sessions").focus()
+            await pilot.press("enter")
+            plot = None
+            for _ in range(ROUNDS):  # rounds of message processing, not time
+                await pilot.pause(0)
+                if shown(app2, "task10"):
+                    plot = app2.screen.query_one("#plot-slow", TracePlot)
+                    if plot.traces:
+                        break
+            assert plot is not None and plot.traces, "the plot waited for the fits"
+            assert not let_go.is_set()
+            readings = str(app2.screen.query_one("#t-readings").render())
+            assert "working out the T readings" in readings
+            let_go.set()
+            await settle(
+                pilot,
+                lambda: "working out" not in str(app2.screen.query_one("#t-readings").render()),
+            )
+            readings = str(app2.screen.query_one("#t-readings").render())
+            assert "steps-1" in readings  # the runs, with what the step lets it show of T
+    finally:
+        let_go.set()

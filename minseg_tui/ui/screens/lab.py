@@ -710,6 +710,9 @@ class LabScreen(StatusScreen):
     def _build(self, panel: ViewPanel[V], session: Session) -> None:
         """Worker: build ``panel``'s view from ``session`` (a snapshot) and hand it over."""
         worker = get_current_worker()
+        quick = panel.sketch(session) if panel.view is None else None
+        if quick is not None and not worker.is_cancelled:  # shown first, while it builds
+            self.app.call_from_thread(self._deliver, panel, quick)
         view = panel.build(session)
         if not worker.is_cancelled:
             self.app.call_from_thread(self._deliver, panel, view)
