@@ -1,13 +1,16 @@
 """What walk 7 left on the screens, at 80x24 where it was seen (Pilot, real session folder):
 Ctrl+O's whole "What to do" over a step whose own text is in view (D3); a resumed Task 10's
-plots (D11)."""
+plots (D11); the palette with no match (D17)."""
 
 from __future__ import annotations
 
 import threading
 
+from textual.command import CommandList, CommandPalette
+
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.views import session as views
+from minseg_tui.ui.screens.lab import NO_MATCH
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import TracePlot
 from tests.ui.helpers import (
@@ -102,3 +105,36 @@ async def test_a_resumed_task_10_plots_the_run_in_use_before_its_fits_are_made(q
             assert "steps-1" in readings  # the runs, with what the step lets it show of T
     finally:
         let_go.set()
+
+
+def _palette_lines(app) -> list[str]:
+    """The palette's list, one line per option (its prompt, plain)."""
+    options = app.screen.query_one(CommandList)
+    return [
+        " ".join(str(options.get_option_at_index(i).prompt).split())
+        for i in range(options.option_count)
+    ]
+
+
+async def test_the_palette_says_when_no_command_matches(quiet):
+    """Ctrl+P 'unplug' showed an empty list (walk 7, D17). The palette now says that no command
+    matches the search, at once; a search that matches lists the commands without it."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task2")
+        await pilot.press("ctrl+p")
+        await settle(pilot, lambda: isinstance(app.screen, CommandPalette))
+        await pilot.press(*"unplug")
+        await settle(pilot)
+        lines = _palette_lines(app)
+        assert lines and lines[0].startswith(f"{NO_MATCH} 'unplug'"), lines
+        assert len(lines) == 1
+        await pilot.press(*["backspace"] * 6, *"board")
+        await settle(pilot)
+        lines = _palette_lines(app)
+        assert any("Board check" in line for line in lines), lines
+        assert not any(NO_MATCH in line for line in lines), lines
+        await pilot.press("escape")
+        await settle(pilot)
+        assert not isinstance(app.screen, CommandPalette)

@@ -513,6 +513,39 @@ class StepCommands(Provider):
                 yield Hit(score, matcher.highlight(text), action, text=text, help=help_text)
 
 
+NO_MATCH = "no command matches"
+"""The start of the palette's one line when nothing matches what was typed."""
+
+
+class NoMatch(Provider):
+    """The palette's line when no command matches the search: 'no command matches 'unplug''
+    with the kinds of commands there are, in place of an empty box (walk 7, D17: Textual's
+    own 'No matches found' came half a second late, after the group had looked). Matched as
+    Textual's system commands and :class:`StepCommands` match, on their titles."""
+
+    def titles(self) -> list[str]:
+        screen = self.screen
+        titles = [c.title for c in self.app.get_system_commands(screen)]
+        if isinstance(screen, LabScreen):
+            titles += [text for text, _, _ in StepCommands(screen).entries()]
+        return titles
+
+    async def search(self, query: str) -> Hits:
+        if not query.strip():
+            return
+        matcher = self.matcher(query)
+        if any(matcher.match(title) > 0 for title in self.titles()):
+            return
+        text = f"{NO_MATCH} '{query.strip()}'"
+        yield Hit(
+            1.0,
+            text,
+            lambda: None,
+            text=text,
+            help="try a step ('Task 5'), 'run', 'board', 'motor' or 'report'; Esc closes",
+        )
+
+
 class LabScreen(StatusScreen):
     """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves.
 
@@ -531,7 +564,7 @@ class LabScreen(StatusScreen):
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
         Binding("ctrl+o", "whole_todo", "What to do", show=False),
     ]
-    COMMANDS = StatusScreen.COMMANDS | {StepCommands}
+    COMMANDS = StatusScreen.COMMANDS | {StepCommands, NoMatch}
     AUTO_FOCUS = ".pane"
     """The step's form (the lab opens landed in its step, its entry in view, as PgDn lands)."""
 
