@@ -1,16 +1,22 @@
 """What walk 7 left on the screens, at 80x24 where it was seen (Pilot, real session folder):
 Ctrl+O's whole "What to do" over a step whose own text is in view (D3); a resumed Task 10's
-plots (D11); the palette with no match (D17)."""
+plots (D11); the palette with no match (D17); the group's names corrected."""
 
 from __future__ import annotations
 
+import json
 import threading
+from pathlib import Path
 
 from textual.command import CommandList, CommandPalette
+from textual.widgets import Input, OptionList
 
 from minseg_tui.lab.content.steps import step
+from minseg_tui.lab.saving.store import list_sessions
 from minseg_tui.lab.views import session as views
+from minseg_tui.report.write import write_report
 from minseg_tui.ui.screens.lab import NO_MATCH
+from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.plots import TracePlot
 from tests.ui.helpers import (
@@ -138,3 +144,41 @@ async def test_the_palette_says_when_no_command_matches(quiet):
         await pilot.press("escape")
         await settle(pilot)
         assert not isinstance(app.screen, CommandPalette)
+
+
+async def test_the_palette_corrects_a_misspelt_name(quiet, tmp_path):
+    """A name misspelt at the start (walk 7, D1: 'Omrr Haddad') could not be mended. The
+    palette's "Correct the group's names" asks for them, the ones in use filled in; the
+    session, its resume list and its report then give the new names, and the session keeps
+    the old ones."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot, "Lena Berg, Omrr Haddad")
+        await goto(pilot, "task2")
+        await pilot.press("ctrl+p")
+        await settle(pilot, lambda: isinstance(app.screen, CommandPalette))
+        await pilot.press(*"names")
+        await settle(pilot)
+        assert _palette_lines(app)[0].startswith("Correct the group's names")
+        await pilot.press("enter")
+        await settle(pilot, lambda: isinstance(app.screen, NamesScreen))
+        box = app.screen.query_one("#names", Input)
+        assert box.value == "Lena Berg, Omrr Haddad"
+        await pilot.press("end", *["backspace"] * len("mrr Haddad"), *"mar Haddad", "enter")
+        await settle(pilot, lambda: not isinstance(app.screen, NamesScreen))
+        with app.session as s:
+            assert s.members == ("Lena Berg", "Omar Haddad")
+            assert s.former_members == ("Lena Berg, Omrr Haddad",)
+            written = write_report(s)
+        report = (Path(written.paths[0]).parent / "report.md").read_text(encoding="utf-8")
+        assert "Group: Lena Berg, Omar Haddad" in report and "Omrr" not in report
+    (saved,) = list_sessions(tmp_path / "sessions")
+    assert saved.members == ("Lena Berg", "Omar Haddad")
+    data = json.loads((saved.path / "session.json").read_text(encoding="utf-8"))
+    assert data["former_members"] == ["Lena Berg, Omrr Haddad"]
+    app2 = quiet()
+    async with app2.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: bool(app2.screen.query("#sessions")))
+        listed = app2.screen.query_one("#sessions", OptionList)
+        label = str(listed.get_option_at_index(0).prompt)
+        assert "Lena Berg, Omar Haddad" in label and "Omrr" not in label
