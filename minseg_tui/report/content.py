@@ -254,12 +254,14 @@ def _step_section(session: Session) -> Section:
     sec = Section(_STEP_TITLE)
     sec.blocks.append(own_first.run_used(session))
     ident = res.identification
-    if ident is None or ident.step is None:
+    # the run alone (the table gives no k_v: walk 7, D14) gives omega_ss, K and T as the
+    # screen shows them; only J waits for the table
+    s = ident.step if ident is not None and ident.step is not None else res.response
+    if s is None:
         sec.blocks.append(
             "No step result yet" + (": " + "; ".join(res.problems) if res.problems else ".")
         )
         return sec
-    s = ident.step
     rows = own_first.step_rows(session)
     sec.blocks.append(
         "Each value the group worked out, first as the group gave it, then the group's way "
@@ -273,6 +275,12 @@ def _step_section(session: Session) -> Section:
     # T's why is the one sentence on the two readings of T (the model's own note, which
     # the CLI gives, would say it a second time)
     sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
+    if s is res.response:
+        sec.blocks.append(
+            "J waits for R, k_v and f from the table of Tasks 2-9, which gives none yet ("
+            + "; ".join(res.problems)
+            + "); omega_ss in the steps, K and T need only the run and u_ss."
+        )
     sec.blocks.append(f"How T was fitted: {s.fit.why}.")
     zoom = _zoom_figure(session, res.run, s)
     if zoom is not None:

@@ -342,3 +342,25 @@ def test_f_is_shown_in_mN_m_s_per_rad_and_kept_si_in_csv_and_json(klass, tmp_pat
     assert format_number(f[0] * 1e3) in md.split("## What stands out")[0]
     rows = list(csv.DictReader(io.StringIO((tmp_path / "out" / "class.csv").read_text("utf-8"))))
     assert [float(r["f (N m s/rad)"]) for r in rows if r["f (N m s/rad)"]] == f
+
+
+def test_a_K_divided_by_the_requested_step_height_is_named(tmp_path, capsys):
+    """Walk 7, D6's slip in the class view: a group that divided its omega_ss by the
+    requested 4.5 V (7.9 / 4.5 = 1.756) instead of by its measured u_ss (4.05 V) is flagged
+    by name; a group that divided by u_ss (7.9 / 4.05 = 1.951) is not. Real session folders,
+    `minseg-tui class --json`."""
+    root = tmp_path / "s"
+    rows = {4.5: ("4.05", "7.79", "37.2 mA")}
+    for name, K in (("Slip", "1,756"), ("Right", "1,951")):
+        folder = group(root, [name], seed=3, rows=rows, run=False)
+        with Session.open(folder) as s:
+            assert s.enter("own.omega_step", "7,9").ok and s.enter("own.K", K).ok
+    code, out, _ = _run(capsys, "--sessions", str(root), "--json")
+    g = _by_members(json.loads(out))
+    assert code == 0
+    (flag,) = [f for f in g["Slip"]["flags"] if f.startswith("K = ")]
+    assert flag == (
+        "K = 1.756 rad/s/V is omega_ss ÷ 4.5 V (the requested step height), not ÷ the "
+        "measured u_ss = 4.050 V (Task 11): 7.900 / 4.05 = 1.951 rad/s/V."
+    )
+    assert not [f for f in g["Right"]["flags"] if f.startswith("K = ")]

@@ -201,7 +201,7 @@ def test_the_groups_values_are_quoted_with_the_digits_they_typed(tmp_path):
             "from the group's T = 57 ms" in rows["own.J"][2]
         )  # the report: an instructor reads it
         assert "1.930" not in " ".join(rows["own.omega_5"]) + " ".join(rows["own.model"])
-        s.enter("own.T", "0,057")
+        s.enter("own.T", "57")
         (c,) = s.comparisons("task13")
         assert "from your T = 57 ms" in c.how, c.how  # T in ms, as everywhere (walk 6)
 
