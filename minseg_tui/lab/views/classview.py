@@ -418,9 +418,9 @@ def slip_list(session: Session) -> list[Slip]:
     if own_K is not None and own_w is not None and u_step and K_by_request(own_K, own_w, u_step):
         out.append(
             Slip(
-                f"K = {_num(own_K)} rad/s/V is omega_ss ÷ {STEP_LEVEL:g} V (the requested step "
-                f"height), not ÷ the measured u_ss = {_num(u_step)} V (Task 11): "
-                f"{_num(own_w)} / {u_step:.3g} = {_num(own_w / u_step)} rad/s/V."
+                f"K = {format_number(own_K)} rad/s/V is omega_ss ÷ {STEP_LEVEL:g} V (the requested step "
+                f"height), not ÷ the measured u_ss = {format_number(u_step)} V (Task 11): "
+                f"{format_number(own_w)} / {u_step:.3g} = {format_number(own_w / u_step)} rad/s/V."
             )
         )  # the group's own K only: the program's K, which the class is judged on, is right
     return out
