@@ -329,8 +329,8 @@ final change): a hand found with the cause kept 16 -> 16 of 20 (the same four fa
 dead_time 901000 and second_pole 901001 named velocity_filter, velocity_filter 901001 with a
 cap beside it, current_limit 901002 with a friction and its hand 0.62 s early). Held-out
 singles (35 untouched logs, with the running median below still in): 0 disturbances.
-benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 false alarms of
-10, analyze 1.20 s CPU per log. Not kept: a running median of 9 rows beside the 3-row mean
+benchmarks/model_check.py --seeds 10 --skip-hour, after the final change: single causes 70 of
+70, 0 false alarms of 10, analyze 1.08-1.49 s CPU per log (Python start included). Not kept: a running median of 9 rows beside the 3-row mean
 where the noise sets the threshold found the hands at 10 ms from counts (dead_time and
 coast_on_zero 1044), but took the real micromouse-n20-duty100's slow drift (8.4 % of the
 level over 0.19 s) for a hand. Target (>= 90 %) not met on the held-out seeds; what is left
