@@ -240,3 +240,23 @@ def test_a_ramp_that_one_time_constant_misses_is_named_as_the_gap_between_T_and_
     assert said and "is the shape of the rise" in said[0]
     assert "lags the true speed by half a sample" not in said[0]
     assert "is the shape of the rise, which one time constant does not follow" in st.T_63_note
+
+
+@pytest.mark.shared_data
+def test_a_63_percent_reading_inside_the_speeds_noise_is_called_noise_not_a_shape():
+    # ev3-large-duty30 (../shared/data/real-motors): 4.6 rad/s at the top with a scatter of about
+    # 1.4-1.9 rad/s (a 1-degree encoder, resampled to 5 ms); analyze finds the first-order model
+    # at the noise level. The first noisy sample over 63 % comes 24 ms before T (56.5 ms): that
+    # is the noise of single samples (it moves the crossing by about 60 ms here), not a shape
+    # one time constant does not follow, as identify said before
+    path = SHARED_DATA / "real-motors" / "ev3-large-duty30" / "step.csv"
+    r = identify(table(1.93), R, read_run_log(path))
+    st = r.step
+    assert st is not None and st.fit.shift_on_bound and st.T_63 is not None
+    said = [o.message for o in r.observations if o.code == "T_63_differs"]
+    assert said and "is the noise of reading single samples" in said[0], said
+    assert "shape of the rise" not in said[0] and "shape of the rise" not in st.T_63_note
+    # a ramp well above the noise keeps its word (ubc-motor-7V: 136 ms of shape, 7 ms of sway)
+    path = SHARED_DATA / "real-motors" / "ubc-motor-7V" / "step.csv"
+    said = [o.message for o in identify(table(72.0), R, read_run_log(path)).observations]
+    assert any("is the shape of the rise" in m for m in said)

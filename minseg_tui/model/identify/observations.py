@@ -186,6 +186,7 @@ def response_observations(
     skipped: int,
     dead_time: float = 0.0,
     shape: float | None = None,
+    noise: tuple[float, float] | None = None,
 ) -> list[Observation]:
     """What the run log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
@@ -195,7 +196,9 @@ def response_observations(
     period (s); skipped: rises not usable; dead_time: the model's dead time (s);
     shape: when the rise has a shape one time constant does not follow (the steps' time
     shift on its bound), the part of the reading the fitted model read the same way does not
-    give (s), else None.
+    give (s), else None; noise: the speed's scatter (rad/s) and how far it moves a reading of
+    single samples (s), from :func:`~.identification.reading_noise`, or None: a shape within
+    that sway is said to be the noise, not a shape one time constant does not follow.
     """
     observations: list[Observation] = []
     levels = sorted({s.u_req for s in steps if s.u_req is not None})
@@ -274,7 +277,17 @@ def response_observations(
                         else f"Most of it ({format_signed(shape * 1e3, 3)} ms) is the shape of the rise, which one "
                         "time constant does not follow (see the time shift below): no one time "
                         "constant meets both the 63 % point and the whole rise here."
-                        if shape is not None and abs(shape) > 0.5 * abs(T_63 - T)
+                        if shape is not None
+                        and abs(shape) > 0.5 * abs(T_63 - T)
+                        and (noise is None or abs(shape) > noise[1])
+                        else f"Most of it ({format_signed(shape * 1e3, 3)} ms) is the noise of reading "
+                        f"single samples: the speed scatters {format_number(noise[0], 3)} rad/s from "
+                        f"sample to sample, which moves where it first crosses 63 % by about "
+                        f"{noise[1] * 1e3:.3g} ms; the least-squares T uses every sample, so it is the "
+                        "one to trust."
+                        if shape is not None
+                        and noise is not None
+                        and abs(shape) > 0.5 * abs(T_63 - T)
                         else "The measured speed is the mean over each sample interval, so "
                         "it lags the true speed by half a sample; a velocity filter lags it more."
                     )
