@@ -254,8 +254,17 @@ def test_a_63_percent_reading_inside_the_speeds_noise_is_called_noise_not_a_shap
     st = r.step
     assert st is not None and st.fit.shift_on_bound and st.T_63 is not None
     said = [o.message for o in r.observations if o.code == "T_63_differs"]
-    assert said and "is the noise of reading single samples" in said[0], said
+    assert said and "ms the noise of reading single samples" in said[0], said
     assert "shape of the rise" not in said[0] and "shape of the rise" not in st.T_63_note
+    # n20-12v-pwm25: 24 ms apart, +15 ms of it the sampling and the time shift, +9 ms the noise
+    # (a count is 1.8 rad/s of a 9.3 rad/s rise); it said only "lags the true speed by half a
+    # sample (5 ms); a velocity filter lags it more", and the log has no filter
+    path = SHARED_DATA / "real-motors" / "n20-12v-pwm25" / "step.csv"
+    said = [o.message for o in identify(table(7.9), R, read_run_log(path)).observations]
+    said = [m for m in said if m.startswith("The 63 % reading")]
+    assert said and "a velocity filter lags it more" not in said[0], said
+    assert "is the sampling and the steps' time shift" in said[0]
+    assert "ms the noise of reading single samples" in said[0]
     # a ramp well above the noise keeps its word (ubc-motor-7V: 136 ms of shape, 7 ms of sway)
     path = SHARED_DATA / "real-motors" / "ubc-motor-7V" / "step.csv"
     said = [o.message for o in identify(table(72.0), R, read_run_log(path)).observations]

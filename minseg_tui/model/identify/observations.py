@@ -280,14 +280,14 @@ def response_observations(
                         if shape is not None
                         and abs(shape) > 0.5 * abs(T_63 - T)
                         and (noise is None or abs(shape) > noise[1])
-                        else f"Most of it ({format_signed(shape * 1e3, 3)} ms) is the noise of reading "
-                        f"single samples: the speed scatters {format_number(noise[0], 3)} rad/s from "
-                        f"sample to sample, which moves where it first crosses 63 % by about "
-                        f"{noise[1] * 1e3:.3g} ms; the least-squares T uses every sample, so it is the "
-                        "one to trust."
-                        if shape is not None
-                        and noise is not None
-                        and abs(shape) > 0.5 * abs(T_63 - T)
+                        else f"Of it, {format_signed((T_63 - T - shape) * 1e3, 3)} ms is the sampling "
+                        "and the steps' time shift, held at its bound (the measured speed is the mean "
+                        "over each sample interval, half a sample late), and "
+                        f"{format_signed(shape * 1e3, 3)} ms the noise of reading single samples: the "
+                        f"speed scatters {format_number(noise[0], 3)} rad/s from sample to sample, which "
+                        f"moves where it first crosses 63 % by about {noise[1] * 1e3:.3g} ms; the "
+                        "least-squares T uses every sample, so it is the one to trust."
+                        if shape is not None and noise is not None and abs(shape) <= noise[1]
                         else "The measured speed is the mean over each sample interval, so "
                         "it lags the true speed by half a sample; a velocity filter lags it more."
                     )
