@@ -19,7 +19,7 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
 from minseg_tui.lab.state.session import Session
-from minseg_tui.lab.views import check_words, own_first
+from minseg_tui.lab.views import check_text, check_words, own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
@@ -425,11 +425,11 @@ def _run_figure(log: RunLog, name: str) -> Figure:
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     g = r.gain
     named = r.finding.cause != "none"
-    lead = model_words.stem(r.lead.figure) if r.lead else ""
+    lead = check_text.stem(r.lead.figure) if r.lead else ""
     rows = []
-    for key, words in sorted(model_words.FIGURES.items(), key=lambda f: f[0] != lead):
+    for key, words in sorted(check_text.FIGURES.items(), key=lambda f: f[0] != lead):
         name, unit = words.name, words.unit
-        b, e = model_words.figure(g, key)
+        b, e = check_text.figure(g, key)
         if b is None:
             continue
         rows.append(
@@ -445,9 +445,9 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
 def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
-    words = model_words.figure_words(r.lead.figure)
+    words = check_text.figure_words(r.lead.figure)
     name, unit = words.name, words.unit
-    b, e = model_words.figure(r.gain, r.lead.figure)
+    b, e = check_text.figure(r.gain, r.lead.figure)
     if b is None:
         return None
     if r.finding.cause == "none" or e is None:
@@ -680,10 +680,10 @@ def _model_check_section(session: Session) -> Section | None:
             + ". An error near it says nothing about a model; the part above it does."
         )
     if f.caveats:
-        details.blocks.append(model_words.CAVEATS)
+        details.blocks.append(check_text.CAVEATS)
         details.blocks.append([c.text for c in f.caveats])
     if r.anomalies:
-        details.blocks.append(model_words.ANOMALIES)
+        details.blocks.append(check_text.ANOMALIES)
         details.blocks.append([a.text for a in r.anomalies])
     sec.blocks.append(details)
     return sec

@@ -10,9 +10,10 @@ the run's input voltage, and writes what the lab screen and the report both lead
 2. the likely cause in everyday words;
 3. how much better the extended model does, in one figure.
 
-The full text for lab assistants is :func:`minseg_tui.model.check.text` (``minseg-tui
-analyze``); the gain figures' names and a model's parameters are written for both by
-:mod:`minseg_tui.model.check.words`. Units: s, V, rad/s, rad (said: T and the delays in ms).
+The full text for lab assistants is :func:`minseg_tui.lab.views.check_text.text`
+(``minseg-tui analyze``); the gain figures' names are written for both there, and a model's
+parameters by :mod:`minseg_tui.model.check.words`. Units: s, V, rad/s, rad (said: T and the
+delays in ms).
 """
 
 from __future__ import annotations
@@ -23,9 +24,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from minseg_tui.lab.views.check_text import figure, figure_words, stem
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
-from minseg_tui.model.check.words import figure, figure_words, stem
 from minseg_tui.quantities import (
     format_constant,
     format_fixed,

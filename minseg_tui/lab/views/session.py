@@ -32,7 +32,7 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import choice_words, read_entry
 from minseg_tui.lab.state.results import Comparison, Notice
 from minseg_tui.lab.state.session import Entry, Session, TableRow
-from minseg_tui.lab.views import check_words
+from minseg_tui.lab.views import check_text, check_words
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check import words as model_words
 from minseg_tui.model.check.effects import in_words
@@ -1050,15 +1050,15 @@ class CheckView:
     first-order model it fitted, and so the model (none without a result)."""
 
 
-_stem = model_words.stem
+_stem = check_text.stem
 
 
 def _figure(gain: Gain, key: str, named: bool) -> str | None:
     """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
-    b, e = model_words.figure(gain, key)
-    unit = model_words.figure_words(stem).unit
+    b, e = check_text.figure(gain, key)
+    unit = check_text.figure_words(stem).unit
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
     if not named or e is None:
@@ -1087,11 +1087,11 @@ def check(session: Session) -> CheckView:
     if r.lead is not None:
         shown = _figure(g, r.lead.figure, named)
         if shown is not None:
-            lead = f"{model_words.figure_words(led).name}: {shown}"
+            lead = f"{check_text.figure_words(led).name}: {shown}"
             lead_why = r.lead.why
     others = [
-        f"{model_words.FIGURES[stem].name} {shown}"
-        for stem in model_words.FIGURES
+        f"{check_text.FIGURES[stem].name} {shown}"
+        for stem in check_text.FIGURES
         if stem != led and (shown := _figure(g, stem, named)) is not None
     ]
     floor = g.get("noise_floor")
