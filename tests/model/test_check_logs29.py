@@ -6,7 +6,8 @@ import re
 
 import numpy as np
 
-from minseg_tui.model.check import check, text
+from minseg_tui.lab.views.check_text import text
+from minseg_tui.model.check import check
 from minseg_tui.model.check.guess import first_motion
 from tests.model.physics_gen import make
 
