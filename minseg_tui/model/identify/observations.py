@@ -327,6 +327,11 @@ def _lines(log: RunLog, rows: Sequence[int]) -> str:
     return f"{word} {first}" if first == last else f"{word}s {first}-{last}"
 
 
+COARSE_COUNT = 0.1
+"""One count per sample above this share of the rise (rad/s over rad/s) is too coarse to show
+how a rise starts (n20-12v-pwm25: 1.8 rad/s of a 9.3 rad/s rise)."""
+
+
 def fit_observations(
     log: RunLog, glitches: int, fit: TimeConstantFit, T_determined: bool
 ) -> list[Observation]:
@@ -340,6 +345,9 @@ def fit_observations(
     """
     out: list[Observation] = []
     ts = log.ts
+    cpr = log.declared_cpr
+    count = 2.0 * math.pi / (cpr * ts) if cpr and ts > 0 else None  # rad/s per count per sample
+    rise = float(np.median(np.abs(fit.omega_ss))) if fit.omega_ss else 0.0
     if glitches:
         rows = list(range(glitches))
         speeds = ", ".join(format_reading(float(log.omega[r]), "", 3) for r in rows)
@@ -397,9 +405,16 @@ def fit_observations(
                     "The wheel first moves "
                     + (f"{format_constant(fit.onset, 's')} " if fit.onset is not None else "")
                     + "after the steps, no later than the rise itself and the sampling explain, "
-                    "so there is no dead time to fit: the rise starts more slowly than one time "
-                    "constant gives (an S-shaped start: a second pole or a filtered speed), a shape "
-                    "the first-order model misses. Read T with care."
+                    + (
+                        f"so there is no dead time to fit. One count per sample is {format_number(count, 3)} "
+                        f"rad/s, {format_percent(count / rise)} of the rise, too coarse to show how the "
+                        "rise starts: a slow start (a second pole or a filtered speed) and the counts' "
+                        "steps look alike here. Read T with care."
+                        if count is not None and count > COARSE_COUNT * rise
+                        else "so there is no dead time to fit: the rise starts more slowly than one "
+                        "time constant gives (an S-shaped start: a second pole or a filtered speed), "
+                        "a shape the first-order model misses. Read T with care."
+                    )
                 )
             )
         )
