@@ -188,9 +188,23 @@ def check(
     near = 3  # the model chosen follows the steps: look from a few rows after each
     rise = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     found2 = dist.find(
-        t, u, full.y - ext.predict(full), ext.predict(full), near, noise, False, taps - 1, rise
+        t,
+        u,
+        full.y - ext.predict(full),
+        ext.predict(full),
+        near,
+        noise,
+        False,
+        taps - 1,
+        rise,
+        longer=True,
     )
-    found2, repeated, repeated_at = dist.split_repeated(found2, u, rise)
+    # a stall's late read is the logger's, whichever edge it follows: it is no edge's miss
+    stalls = _at_gaps(found2, full.y - ext.predict(full), an.gap_starts(t, samp.ts), taps)
+    found2, repeated, repeated_at = dist.split_repeated(
+        [d for d in found2 if d not in stalls], u, rise
+    )
+    found2 += stalls
     # a disturbance is local: the model chosen fits the rest of the log well below it
     found2, _ = dist.split_local(found2, full.y - ext.predict(full), full.weights > 0)
     if _rows(dist.restarted(found2, u)[0]) != _rows(found):
@@ -485,6 +499,14 @@ def _report(
         lead(gain, named, _turning(full.y, b_pred, e_pred, keep)),
         cu,
     )
+
+
+def _at_gaps(
+    found: list[dist.Disturbance], res: FloatArray, starts: list[int], taps: int
+) -> list[dist.Disturbance]:
+    """The disturbances of ``found`` that are a spike at a gap in the sample times (see
+    :func:`_at_gap`)."""
+    return [d for d in found if _at_gap(d, res, starts, taps)]
 
 
 def _at_gap(d: dist.Disturbance, res: FloatArray, starts: list[int], taps: int) -> bool:
