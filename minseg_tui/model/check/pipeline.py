@@ -198,6 +198,7 @@ def check(
         taps - 1,
         rise,
         longer=True,
+        count=count or 0.0,
     )
     # a stall's late read is the logger's, whichever edge it follows: it is no edge's miss
     stalls = _at_gaps(found2, full.y - ext.predict(full), an.gap_starts(t, samp.ts), taps)
