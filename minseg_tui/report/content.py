@@ -417,18 +417,16 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     named = r.finding.cause != "none"
     lead = check_text.stem(r.lead.figure) if r.lead else ""
     rows = []
-    for key, words in sorted(check_text.FIGURES.items(), key=lambda f: f[0] != lead):
-        name, unit = words.name, words.unit
-        b, e = check_text.figure(g, key)
-        if b is None:
+    for key in sorted(check_text.FIGURES, key=lambda k: k != lead):
+        c = check_text.compared(g, key, named)
+        if c is None:
             continue
+        unit = c.words.unit
         rows.append(
             (
-                name + (" (leads)" if key == lead else ""),
-                f"{format_number(b, check_words.GAIN_DIGITS)} {unit}",
-                f"{format_number(e, check_words.GAIN_DIGITS)} {unit}"
-                if named and e is not None
-                else MISSING,
+                c.words.name + (" (leads)" if key == lead else ""),
+                f"{c.first} {unit}",
+                f"{c.extended} {unit}" if c.extended is not None else MISSING,
             )
         )
     return tuple(rows)
@@ -437,15 +435,13 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
 def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
-    words = check_text.figure_words(r.lead.figure)
-    name, unit = words.name, words.unit
-    b, e = check_text.figure(r.gain, r.lead.figure)
-    if b is None:
+    c = check_text.compared(r.gain, r.lead.figure, r.finding.cause != "none")
+    if c is None:
         return None
-    if r.finding.cause == "none" or e is None:
-        value = f"{format_number(b, check_words.GAIN_DIGITS)} {unit} for the first-order model"
-    else:
-        value = f"{format_number(b, check_words.GAIN_DIGITS)} {unit} for the first-order model, {format_number(e, check_words.GAIN_DIGITS)} {unit} extended"
+    name, unit = c.words.name, c.words.unit
+    value = f"{c.first} {unit} for the first-order model"
+    if c.extended is not None:
+        value += f", {c.extended} {unit} extended"
     return f"The figure that means most for this log: the {name}, {value}. It leads because {r.lead.why}."
 
 
