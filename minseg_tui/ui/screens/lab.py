@@ -532,6 +532,8 @@ class LabScreen(StatusScreen):
         self._refresh = refresh
         self._shown: str | None = None
         """The step last asked for (its widgets may not be in the form yet)."""
+        self._views_asked = 0
+        """How many panel views were asked for (:meth:`_load`): only the last is shown."""
         self._undone: dict[str, list[str]] = {}
         """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
         forward again (until another answer is stored in the field)."""
@@ -679,17 +681,24 @@ class LabScreen(StatusScreen):
         stands now (the worker never reads the live session)."""
         with self.session as s:
             snapshot = s.snapshot()
-        self._build(panel, snapshot)
+        self._views_asked += 1
+        self._build(panel, snapshot, self._views_asked)
 
     @work(thread=True, exclusive=True, group="view", name="panel view")
-    def _build(self, panel: ViewPanel[V], session: Session) -> None:
-        """Worker: build ``panel``'s view from ``session`` (a snapshot) and hand it over."""
+    def _build(self, panel: ViewPanel[V], session: Session, asked: int) -> None:
+        """Worker: build ``panel``'s view from ``session`` (a snapshot) and hand it over, as
+        the ``asked``-th view asked for."""
         worker = get_current_worker()
         view = panel.build(session)
         if not worker.is_cancelled:
-            self.app.call_from_thread(self._deliver, panel, view)
+            self.app.call_from_thread(self._deliver, panel, view, asked)
 
-    def _deliver(self, panel: ViewPanel[V], view: V) -> None:
+    def _deliver(self, panel: ViewPanel[V], view: V, asked: int) -> None:
+        if asked != self._views_asked:
+            # a view of an older snapshot: the worker passed its check for cancellation just
+            # before a newer view was asked for, and its hand-over may come after the newer
+            # one's, which it would replace until the session changed again
+            return
         if panel.is_attached:  # else the step changed while the worker ran
             panel.receive(view)
             if not self.readonly:  # the report says when the group first saw each value
