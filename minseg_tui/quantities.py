@@ -37,8 +37,8 @@ Refused, with a message saying what was expected:
   also be a real reading in mA; rather than guess, it is refused and the message asks for
   ``47 mA`` or ``0.047 A``. An explicit ``0.047 A`` or ``0.5 mA`` is accepted. A bare
   number below 0.05 in a mN m s/rad field (f typed in N m s/rad, ``0.00186``) is refused
-  the same way, and a bare number above 1 in a field in s (T typed in ms, ``57``)
-  (:data:`_BARE`).
+  the same way, a bare number above 1 in a field in s (T typed in ms, ``57``), and one
+  below 1 in a field in ms (Task 12's T typed in s, ``0.057``) (:data:`_BARE`).
 
 Plausibility is separate from parsing: :class:`Plausible` ranges on a field give warnings
 (data, not refusals), e.g. R outside 1-20 ohm.
@@ -103,11 +103,17 @@ _UNIT_RE = re.compile(
 )
 
 
-def format_number(value: float, digits: int = DIGITS) -> str:
+MISSING = "—"
+"""The mark of a value that is not there (a cell, a reading, a figure): the em dash. The en
+dash '–' has the other meaning, the one that joins a range's ends ('42.10 – 43.02 ms')."""
+
+
+def format_number(value: float | None, digits: int = DIGITS) -> str:
     """``value`` with ``digits`` significant digits, trailing zeros kept and no exponent
-    for 1e-4 <= |value| < 1e6 (1.996, 2.000, 0.04270, 1235); '—' when it is not finite."""
-    if not math.isfinite(value):
-        return "—"
+    for 1e-4 <= |value| < 1e6 (1.996, 2.000, 0.04270, 1235); :data:`MISSING` for None or
+    a value that is not finite."""
+    if value is None or not math.isfinite(value):
+        return MISSING
     if value == 0:
         return "0"
     rounded = float(f"{value:.{digits - 1}e}")  # the exponent after rounding (9.9996 -> 10.00)
@@ -208,9 +214,10 @@ def format_interval(
 
 def format_value(value: float | None, unit: str = "", digits: int = DIGITS) -> str:
     """``value`` (already in ``unit``) with ``digits`` significant digits and its unit:
-    ``format_value(1.9962, "rad/s/V") == "1.996 rad/s/V"``; '—' for None or not finite."""
+    ``format_value(1.9962, "rad/s/V") == "1.996 rad/s/V"``; :data:`MISSING` for None or not
+    finite."""
     if value is None or not math.isfinite(value):
-        return "—"
+        return MISSING
     return f"{format_number(value, digits)} {unit}".rstrip()
 
 
@@ -328,10 +335,12 @@ _BARE: dict[str, _Bare] = {
         0.05, True, "f of this motor is a few mN m s/rad", "N m s/rad", "N m s/rad", 1000.0
     ),
     "s": _Bare(1.0, False, "this motor's time constant is tens of ms", "milliseconds", "ms", 0.001),
+    "ms": _Bare(1.0, True, "this motor's time constant is tens of ms", "seconds", "s", 1000.0),
 }
 """Form unit -> when a bare number in a field of that unit is refused as ambiguous: 0.047
 for i_ss (47 mA typed in A), 0.00186 for f (1.86 mN m s/rad typed in N m s/rad), 57 for T
-(57 ms: as seconds, far longer than the 1.5 s steps of Task 10 could show)."""
+(57 ms: as seconds, far longer than the 1.5 s steps of Task 10 could show), 0.057 for T in a
+field in ms (Task 12's: 57 ms typed in s)."""
 
 
 class EntryRefused(InputError):
@@ -513,9 +522,11 @@ def _fmt(x: float) -> str:
     return f"{x:.4g}"
 
 
-def format_quantity(value: float, unit: str, digits: int = DIGITS) -> str:
+def format_quantity(value: float | None, unit: str, digits: int = DIGITS) -> str:
     """``value`` (SI) shown in the form unit ``unit`` with ``digits`` significant digits,
-    trailing zeros kept (:func:`format_value`)."""
+    trailing zeros kept (:func:`format_value`); :data:`MISSING` for None."""
+    if value is None:
+        return MISSING
     return format_value(_in_unit(value, UNITS[unit]), unit, digits)
 
 

@@ -52,7 +52,7 @@ from minseg_tui.model.plant import MeterReading
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
 from minseg_tui.ui.keys import app_bindings, help_lines
-from minseg_tui.ui.live import LiveBuffer
+from minseg_tui.ui.live import LEVEL_TOL, LiveBuffer
 from minseg_tui.ui.messages import (
     BoardChecked,
     CommandFailed,
@@ -77,6 +77,7 @@ from minseg_tui.ui.screens.boardcheck import (
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
+from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen, split_names
@@ -206,6 +207,13 @@ class LabApp(App[None]):
         """Board commands (F2, F3) not yet sent, oldest first: one worker sends them in order."""
         self._sending = False
         """The worker that sends :attr:`_commands` runs (set and read under :attr:`_lock`)."""
+        self._exports_asked = 0
+        """How many exports (F8) were asked for: only the last asked writes once it may."""
+        self._export_lock = threading.Lock()
+        """Held by the export writing the report (one at a time)."""
+        self._motor_unread = False
+        """The link's motor was passed over while the commands were sent: the worker asks
+        for it again once the last is sent (set and read under :attr:`_lock`)."""
         self._lock = threading.Lock()
         self._signals: list[int] = []  # the terminating signals the app answers
         self._tap: queue.Queue[SampleBatch] | None = None
@@ -422,8 +430,11 @@ class LabApp(App[None]):
             moved = task is not None and task.active and task.feed(batch, events)
             if moved and task is not None and task.outcome is None:
                 self.post_message(Task10Moved(task))
-            if len(batch):
+            with self._lock:  # not into the buffer of the device switched to meanwhile
+                if self._device is not device:
+                    return
                 self.live.extend(batch)
+            if len(batch):
                 tap = self._tap
                 if tap is not None:
                     tap.put(batch)
@@ -476,14 +487,24 @@ class LabApp(App[None]):
     @on(MotorKnown)
     def _motor_known(self, event: MotorKnown) -> None:
         """The link's own idea of the motor (after a reconnect: off, nothing restored)."""
-        if self._run_busy:
-            return  # the run's own words stand
+        self._motor_from_link()
+
+    def _motor_from_link(self) -> None:
+        """The status line's motor and F3's level as the link has them now, when the message
+        that asks is handled, never as a worker read them: a check, a command or a board
+        event may have changed the motor since, and what the screen took would stand until
+        the link changed again. Not while a run waits or records (its own words stand), nor
+        while board commands are on their way (what they ask is shown; the worker that sends
+        them asks again once the last is sent, :attr:`_motor_unread`); without a device, as it
+        is."""
+        device = self._device
+        if device is None or self._run_busy:
+            return
         with self._lock:
             if self._sending:
-                return  # a command on its way: what the screen shows is what it asks for
-        # the link now, not when the stream read it: a check or a command may have changed it
-        # since, and a stale 1.8 V would stand until the stream's next read
-        u_req = self._device.u_req if self._device is not None else event.u_req
+                self._motor_unread = True
+                return
+        u_req = device.u_req
         self.motor = motor_words(u_req)
         if u_req is not None and self.requested != u_req:
             self.requested = u_req or None
@@ -500,9 +521,15 @@ class LabApp(App[None]):
         kind = ev.kind
         if kind == "edge":
             return
-        if kind in ("square_wave_done", "disconnected", "watchdog", "boot", "error", "motor"):
-            self.motor = "off"  # a run these end is ended by the Task 10 procedure
-            self.requested = None
+        if kind in ("disconnected", "error"):
+            self.motor = "off"  # the board is gone (its watchdog stops it); the link keeps
+            self.requested = None  # the voltage last asked, which is no longer on the motor
+        elif kind in ("square_wave_done", "watchdog", "boot", "motor"):
+            # the link has the motor off (or at the square wave's low level): as it has it
+            # now, not "off" whatever happened since the stream read the event (an F3 handled
+            # in between put a voltage on the motor again, and the screen said "off" while the
+            # wheel turned); a run these end is ended by the Task 10 procedure
+            self._motor_from_link()
         if (kind == "connected" and self.link.event == "") or (
             kind == "alive" and self.link.state != "silent"
         ):  # nothing was said that these would answer: "again" only after "silent"
@@ -677,6 +704,10 @@ class LabApp(App[None]):
         """The motor is driven and the count stands: say what to do (Task 5: the meter)."""
         if self._tap is not None:
             return
+        device = self._device
+        u_now = device.u_req if device is not None else None
+        if u_now is None or abs(u_now - event.u) > LEVEL_TOL:
+            return  # the motor was stopped or set anew since the stream read the samples
         if self._step_id == "task5":
             text = (
                 f"The motor is driven at {event.u:g} V and the encoder counts nothing. If the "
@@ -865,6 +896,33 @@ class LabApp(App[None]):
             return
         self.push_screen(SaveElsewhereScreen(str(here), self.save_elsewhere))
 
+    def action_correct_names(self) -> None:
+        """Palette: correct the group's names (walk 7, D1: a name misspelt at the start)."""
+        if self.session is None:
+            return
+        with self.session as s:
+            readonly, names = s.readonly, ", ".join(s.members)
+        if readonly:
+            self.notify("this session is open read-only: nothing to change", severity="warning")
+            return
+        self.push_screen(NamesScreen(names, self.correct_names))
+
+    def correct_names(self, typed: str) -> str:
+        """Make ``typed`` (names split at commas) the group's names; the one line to show."""
+        names = split_names(typed)
+        if not names:
+            return "✗ type the group's names first, commas between them"
+        if self.session is None:
+            return "✗ no session is open"
+        with self.session as s:
+            s.set_members(names)
+        self._names_changed()
+        return f"the group's names are now {', '.join(names)}"
+
+    def _names_changed(self) -> None:
+        """Whatever shows the names is redrawn (the lab's panels rebuild on a change)."""
+        self.lab_changed.publish(None)
+
     async def action_quit(self) -> None:
         """Ctrl+Q: quit, after the keys typed before it; everything typed is stored first.
         While a run is being recorded, ask first: keep recording, or stop it and quit (Ctrl+Q
@@ -944,12 +1002,21 @@ class LabApp(App[None]):
             with self._lock:
                 if not self._commands:
                     self._sending = False
-                    return
+                    unread, self._motor_unread = self._motor_unread, False
+                    break
                 what, send = self._commands.popleft()
             try:
                 send()
             except MinsegError as exc:
+                if what == "stop":  # F2's "off" stands (a board without power stops by
+                    with self._lock:  # itself): what the link said before it is old news
+                        self._motor_unread = False
                 self.post_message(CommandFailed(what, str(exc)))
+        if unread:
+            # what the link said of the motor meanwhile (the stream's MotorKnown, a board
+            # event, a failed command) was passed over, and the stream says nothing more until
+            # the link changes again: the screen takes the link's motor now
+            self.post_message(MotorKnown(None))
 
     @on(CommandFailed)
     def _command_failed(self, event: CommandFailed) -> None:
@@ -960,9 +1027,7 @@ class LabApp(App[None]):
             )
             return
         self.notify(event.error, severity="error")
-        u = self._device.u_req if self._device is not None else 0.0
-        self.motor = motor_words(u)
-        self.requested = u or None
+        self._motor_from_link()  # (not while later commands are on their way)
 
     def _lab_screen(self) -> LabScreen | None:
         return self.screen if isinstance(self.screen, LabScreen) else None
@@ -1024,20 +1089,29 @@ class LabApp(App[None]):
             return
         with self.session as s:
             snapshot = s.snapshot()
-        self._export(snapshot)
+        self._exports_asked += 1
+        self._export(snapshot, self._exports_asked)
 
     @work(thread=True, exclusive=True, group="export", name="report")
-    def _export(self, session: Session) -> None:
+    def _export(self, session: Session, asked: int) -> None:
         """Worker: write the report of ``session``, a frozen snapshot (it computes every
-        result and figure)."""
-        try:
-            if self._writer is None:
-                raise MinsegError("this program was started without the report writer")
-            paths = tuple(str(p) for p in self._writer(session))
-        except (MinsegError, OSError) as exc:
-            self.call_from_thread(self.notify, str(exc), title="report", severity="error")
-            return
-        self.call_from_thread(self._exported, paths, lab_views.unanswered_line(session))
+        result and figure), the ``asked``-th export asked for.
+
+        One export writes at a time, and one that a newer export follows writes nothing: a
+        worker is cancelled only between its steps, so two F8s ran two writers on the same
+        files at once, and the older snapshot, finishing last, could stand on disk (and on
+        the screen, its notice last) after the newer one was said written."""
+        with self._export_lock:
+            if asked != self._exports_asked:
+                return  # a newer export was asked for since: it writes the report
+            try:
+                if self._writer is None:
+                    raise MinsegError("this program was started without the report writer")
+                paths = tuple(str(p) for p in self._writer(session))
+            except (MinsegError, OSError) as exc:
+                self.call_from_thread(self.notify, str(exc), title="report", severity="error")
+                return
+            self.call_from_thread(self._exported, paths, lab_views.unanswered_line(session))
 
     def _exported(self, paths: tuple[str, ...], unanswered: str = "") -> None:
         """The report was written to ``paths``: say where, and what is still ``unanswered``
@@ -1066,13 +1140,14 @@ class LabApp(App[None]):
         """Drop the board and use the virtual MinSeg."""
         self.stop_motor()
         self.workers.cancel_group(self, "stream")
-        old, self._device = self._device, None
+        with self._lock:  # the old stream, were it between a read and the buffer, stops there
+            old, self._device = self._device, None
+            self.live.clear()
         if old is not None:
             try:
                 old.close()
             except MinsegError:
                 pass
-        self.live.clear()
         self.device = None
         self.link = LinkState(event="connecting…")
         self._connect("sim")
@@ -1125,6 +1200,12 @@ class LabApp(App[None]):
             "pulled out): save it elsewhere and go on there",
             self.action_save_elsewhere,
         )
+        if self.session is not None:
+            yield SystemCommand(
+                "Correct the group's names",
+                "Mend a misspelt name; the report and the resume list show the new names",
+                self.action_correct_names,
+            )
         yield SystemCommand(
             "Import a run log",
             "Load a log recorded elsewhere into the model check",

@@ -66,8 +66,12 @@ class MeterRead(Message):
 
 @dataclass
 class MotorKnown(Message):
-    """The link's idea of the motor changed: ``u_req`` V requested (0: off; None: a
-    board-timed square wave runs). After a reconnect or a board restart it is 0."""
+    """The link's idea of the motor changed: ``u_req`` V requested as the stream read it (0:
+    off; None: a board-timed square wave runs; after a reconnect or a board restart it is
+    0). The app shows the link's motor as it is when it handles this, not ``u_req``: a
+    check, a command or a board event may have changed it since the read. The worker that
+    sends the board commands posts one (``u_req`` None) once the last is sent, if one was
+    passed over meanwhile."""
 
     u_req: float | None
 

@@ -7,7 +7,8 @@ are for benchmarks/model_check_independent.py's figures).
 import numpy as np
 import pytest
 
-from minseg_tui.model.check import check, text
+from minseg_tui.lab.views.check_text import text
+from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import BY_CAUSE
 from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, make
 
@@ -611,3 +612,30 @@ def test_a_cause_that_moves_the_speed_by_under_a_percent_is_not_named(cause, see
         assert r.finding.runner_up == "coulomb_friction"
         why = r.finding.runner_up_why
         assert "% of the" in why and "rad/s the speed reaches" in why
+
+
+def test_a_hand_behind_an_average_longer_than_its_hold_is_found():
+    # a 24-tap average (0.6 s at 25 ms samples) spreads a 0.18 s hand over the average's
+    # length: the averaged speed drops by 7 % of its level, under the 8 % a hand must move an
+    # unaveraged speed by. Behind an average longer than 0.15 s that share is taken down in
+    # proportion (to half at most), far above the averaged speed's noise here (0.06 rad/s)
+    log = make(1017, ("velocity_filter",), touch=True)
+    assert log.touch is not None
+    r = check(log.t, log.u, log.omega)
+    hands = [a for a in r.anomalies if a.kind == "disturbance"]
+    assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.15
+    assert named(r) == ["velocity_filter"]
+
+
+def test_a_stalls_spike_does_not_make_a_hand_an_edges_repeated_miss():
+    # a 9-tap average with a stall of the logger at 4.32 s and a hand at 7.93 s, each soon
+    # after its edge: counted together they were "a departure after 2 edges", the model's
+    # miss, and the hand was not reported. The stall's spike is the logger's
+    log = make(1073, ("velocity_filter",), touch=True)
+    assert log.touch is not None
+    r = check(log.t, log.u, log.omega)
+    kinds = [a.kind for a in r.anomalies]
+    assert "model_miss" not in kinds and "logging_artefact" in kinds
+    hands = [a for a in r.anomalies if a.kind == "disturbance"]
+    assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.15
+    assert named(r) == ["velocity_filter"]

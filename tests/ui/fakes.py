@@ -28,6 +28,9 @@ class QuietDevice:
         self.u_req: float | None = 0.0
         self._fed: list[SampleBatch] = []
         self._events: list[LinkEvent] = []
+        self.reads = 0
+        """How many times the app's stream worker has read the double (it reads once a turn,
+        samples first, and posts what it read before it reads again)."""
 
     def feed(self, batch: SampleBatch) -> None:
         """Hand the app ``batch`` at its next read (the double sends nothing of its own)."""
@@ -38,6 +41,7 @@ class QuietDevice:
         self._events.append(event)
 
     def samples(self) -> SampleBatch:
+        self.reads += 1
         fed, self._fed = self._fed, []
         return SampleBatch.concat(fed)
 

@@ -299,14 +299,29 @@ async def start_run_on(pilot: Pilot[None], device: QuietDevice, key: str = "f5")
 
 async def taken(pilot: Pilot[None], total: int) -> None:
     """Wait until the app's stream worker has taken ``total`` samples from the device double
-    (it reads every 50 ms on its own thread) and the app has handled what they brought."""
+    (it reads every 50 ms on its own thread) and the app has handled what they brought.
+
+    The live buffer has them before the worker posts what that read found (the samples'
+    message, the link's events, the run's end come after the buffer), and the worker's
+    thread may wait behind others on a busy machine: the samples are taken once the worker
+    has read the double again, which it does only after posting everything of the read
+    before; :func:`settle` then handles it."""
     app = pilot.app
+    device = app._device
+    assert isinstance(device, QuietDevice), "taken() counts the reads of the device double"
     for _ in range(GUARD):
         if app.live.total >= total:
+            break
+        await pilot.pause(0.01)
+    else:
+        raise AssertionError(f"the stream worker took {app.live.total} of {total} samples")
+    reads = device.reads
+    for _ in range(GUARD):
+        if device.reads > reads:
             await settle(pilot)
             return
         await pilot.pause(0.01)
-    raise AssertionError(f"the stream worker took {app.live.total} of {total} samples")
+    raise AssertionError("the stream worker never read the device double again")
 
 
 def record_response_run(session: Session, seed: int = 5) -> str:

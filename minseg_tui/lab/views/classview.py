@@ -14,7 +14,8 @@ sets the groups side by side and says, in words, what stands out:
 
 - the slips the lab manual warns about (:func:`slips`): i_ss above 100 mA (or a current
   typed in amperes into the mA column), R outside 3-6 Ω, an omega_ss that looks like rpm,
-  a u_ss above the requested voltage;
+  a u_ss above the requested voltage, the group's K divided by the requested step height
+  (4.5 V) rather than by its measured u_ss;
 - a value far from the rest of the class (:func:`spread` and :func:`outliers`), judged by
   the median and the median absolute deviation.
 
@@ -37,6 +38,7 @@ from minseg_tui.lab.content.steps import LEVELS
 from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import read_run
 from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_key
+from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import NO_RUN_YET, Session
 from minseg_tui.lab.views import own_first
@@ -45,6 +47,7 @@ from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import response_alone
 from minseg_tui.quantities import (
     F_UNIT,
+    MISSING,
     RPM,
     format_diff,
     format_fixed,
@@ -311,10 +314,6 @@ def step_name(step_id: str) -> str:
     return title.split(":")[0].split(" (")[0]
 
 
-def _num(v: float) -> str:
-    return format_number(v)
-
-
 def members(g: Group) -> str:
     """The group's names, or why there are none."""
     return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
@@ -327,7 +326,7 @@ def own_cell(g: Group) -> str:
         for o in g.own
         if o.rel_diff is not None
     ]
-    return ", ".join(parts) or "–"
+    return ", ".join(parts) or MISSING
 
 
 def _quantity(key: str) -> Quantity:
@@ -339,7 +338,7 @@ def _resistance_slip(R: float) -> Slip:
     or a reading in kΩ, when R moved by a power of ten falls in the range; else the usual
     causes."""
     lo, hi = R_RANGE
-    head = f"R = {_num(R)} Ω is outside the 3-6 Ω this motor reads (Task 2)"
+    head = f"R = {format_number(R)} Ω is outside the 3-6 Ω this motor reads (Task 2)"
     for factor, why in (
         (0.1, "its decimal point dropped"),
         (10.0, "its decimal point one place too far left"),
@@ -382,7 +381,7 @@ def slip_list(session: Session) -> list[Slip]:
         if i is not None and i > I_SS_MAX:
             out.append(
                 Slip(
-                    f"i_ss at {lv:g} V = {_num(i * 1e3)} mA is above 100 mA: the manual says "
+                    f"i_ss at {lv:g} V = {format_number(i * 1e3)} mA is above 100 mA: the manual says "
                     "the wrong thing is measured or the meter is in the wrong mode (expect "
                     "20-50 mA).",
                     FROM_TABLE,
@@ -391,8 +390,8 @@ def slip_list(session: Session) -> list[Slip]:
         elif i is not None and 0 < i < I_SS_AMPERES:
             out.append(
                 Slip(
-                    f"i_ss at {lv:g} V = {_num(i * 1e3)} mA looks like amperes typed into the "
-                    f"mA column ({_num(i * 1e6)} mA?), and k_v and f follow from it.",
+                    f"i_ss at {lv:g} V = {format_number(i * 1e3)} mA looks like amperes typed into the "
+                    f"mA column ({format_number(i * 1e6)} mA?), and k_v and f follow from it.",
                     FROM_TABLE,
                 )
             )
@@ -400,8 +399,8 @@ def slip_list(session: Session) -> list[Slip]:
         if w is not None and abs(w) > OMEGA_MAX and OMEGA_MIN <= abs(w) * RPM <= OMEGA_MAX:
             out.append(
                 Slip(
-                    f"omega_ss at {lv:g} V = {_num(w)} rad/s looks like rpm: this motor does "
-                    f"not turn that fast; read as rpm it is {_num(w * RPM)} rad/s.",
+                    f"omega_ss at {lv:g} V = {format_number(w)} rad/s looks like rpm: this motor does "
+                    f"not turn that fast; read as rpm it is {format_number(w * RPM)} rad/s.",
                     FROM_TABLE,
                 )
             )
@@ -409,11 +408,21 @@ def slip_list(session: Session) -> list[Slip]:
         if u is not None and u > lv:
             out.append(
                 Slip(
-                    f"u_ss at {lv:g} V = {_num(u)} V is above the requested {lv:g} V: the "
+                    f"u_ss at {lv:g} V = {format_number(u)} V is above the requested {lv:g} V: the "
                     "driver only loses voltage, so the meter or the request was wrong.",
                     (*FROM_TABLE, "K"),  # K divides by the table's u_ss
                 )
             )
+    own_K, own_w = session.value("own.K"), session.value("own.omega_step")
+    u_step = session.value(f"u_ss@{STEP_LEVEL:g}")
+    if own_K is not None and own_w is not None and u_step and K_by_request(own_K, own_w, u_step):
+        out.append(
+            Slip(
+                f"K = {format_number(own_K)} rad/s/V is omega_ss ÷ {STEP_LEVEL:g} V (the requested step "
+                f"height), not ÷ the measured u_ss = {format_number(u_step)} V (Task 11): "
+                f"{format_number(own_w)} / {u_step:.3g} = {format_number(own_w / u_step)} rad/s/V."
+            )
+        )  # the group's own K only: the program's K, which the class is judged on, is right
     return out
 
 
@@ -579,8 +588,8 @@ def outlier(s: Spread, value: float) -> str | None:
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {_num(q.number(value))} {unit} is far {side} the class: {format_fixed(times, 0)} robust "
-        f"standard deviations from its median of {_num(q.number(s.median))} {unit}."
+        f"{s.key} = {format_number(q.number(value))} {unit} is far {side} the class: {format_fixed(times, 0)} robust "
+        f"standard deviations from its median of {format_number(q.number(s.median))} {unit}."
     )
 
 

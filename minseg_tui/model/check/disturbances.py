@@ -28,6 +28,13 @@ FloatArray = NDArray[np.float64]
 MIN_SHARE = 0.08
 """A disturbance changes the speed by at least this share of the level there."""
 
+HAND = 0.15
+"""The shortest hold of a hand the check looks for (s). An average over a longer time than
+that shows the hand's change of speed spread over the average's length, and smaller:
+``MIN_SHARE`` is taken down in proportion, to ``AVERAGED_SHARE`` of it at most."""
+
+AVERAGED_SHARE = 0.5
+
 SIGMAS = 5.0
 """...and by this many times the noise of a mean over ``SMOOTH`` rows."""
 
@@ -117,6 +124,12 @@ def find(
     disturbance lets go (see :func:`rejoin`).
     """
     spans = _spans(u, settle)
+    ts = float(np.median(np.diff(t))) if t.size > 1 else 0.0
+    share = (
+        MIN_SHARE * min(1.0, max(AVERAGED_SHARE, HAND / ((carry + 1) * ts)))
+        if ts > 0
+        else MIN_SHARE
+    )
     common = float(np.median(np.concatenate([residual[a0:b] for a0, b in spans]))) if spans else 0.0
     levels = [float(np.median(residual[a0:b])) if own_level else common for a0, b in spans]
     band = _calm_band(residual, spans, levels, noise)
@@ -125,7 +138,7 @@ def find(
         seg = residual[a0:b]
         dev = seg - level
         speed = float(np.median(np.abs(pred[a0:b])))
-        thr = max(SIGMAS * noise / math.sqrt(SMOOTH), MIN_SHARE * speed)
+        thr = max(SIGMAS * noise / math.sqrt(SMOOTH), share * speed)
         if thr <= 0:
             continue
         sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")

@@ -36,10 +36,6 @@ PLOT_TITLE = {"steps": "25 ms run", "fast": "5 ms run"}
 in use for Tasks 11-15) follows."""
 
 
-def _s(v: float | None) -> str:
-    return format_value(v, "s", 3)
-
-
 class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
     KEYS = ("run_square_wave", "run_fast")
     """F5/F6 ask for the board's square wave; shows the app's ``run_progress`` while it
@@ -77,6 +73,12 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
 
     def build(self, session: Session) -> tuple[RunView, ...]:
         return views.runs(session)
+
+    def sketch(self, session: Session) -> tuple[RunView, ...] | None:
+        """The runs' speeds without their T readings when a run's fits are not made yet (a
+        resumed session): the plots show the run in use at once."""
+        quick = views.runs(session, fits=False)
+        return quick if any(not v.fitted for v in quick) else None
 
     @property
     def recording(self) -> bool:
@@ -137,11 +139,13 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
             )
             name = ("▸ " if v.in_use else "  ") + v.name
             rows.append(
-                f"{name:<11}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>10}"
-                f"{_s(v.T_ls) + ci:>27}"
+                f"{name:<11}{format_value(v.T_63_lab, 's', 3) if v.kind == 'steps' else '—':>13}{format_value(v.T_63, 's', 3):>10}"
+                f"{format_value(v.T_ls, 's', 3) + ci:>27}"
             )
         if not runs:
             rows.append("no run yet: F5 (25 ms), then F6 (5 ms)")
+        elif any(not v.fitted for v in runs):
+            rows = rows[:1] + ["working out the T readings…"]
         elif any(v.T_hidden for v in runs):
             rows.append("T: shown once you enter your own T (Task 12)")
         self.query_one("#t-readings", Static).update("\n".join(rows))
