@@ -77,6 +77,7 @@ from minseg_tui.ui.screens.boardcheck import (
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
+from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
 from minseg_tui.ui.screens.start import StartScreen, split_names
@@ -891,6 +892,33 @@ class LabApp(App[None]):
             return
         self.push_screen(SaveElsewhereScreen(str(here), self.save_elsewhere))
 
+    def action_correct_names(self) -> None:
+        """Palette: correct the group's names (walk 7, D1: a name misspelt at the start)."""
+        if self.session is None:
+            return
+        with self.session as s:
+            readonly, names = s.readonly, ", ".join(s.members)
+        if readonly:
+            self.notify("this session is open read-only: nothing to change", severity="warning")
+            return
+        self.push_screen(NamesScreen(names, self.correct_names))
+
+    def correct_names(self, typed: str) -> str:
+        """Make ``typed`` (names split at commas) the group's names; the one line to show."""
+        names = split_names(typed)
+        if not names:
+            return "✗ type the group's names first, commas between them"
+        if self.session is None:
+            return "✗ no session is open"
+        with self.session as s:
+            s.set_members(names)
+        self._names_changed()
+        return f"the group's names are now {', '.join(names)}"
+
+    def _names_changed(self) -> None:
+        """Whatever shows the names is redrawn (the lab's panels rebuild on a change)."""
+        self.lab_changed.publish(None)
+
     async def action_quit(self) -> None:
         """Ctrl+Q: quit, after the keys typed before it; everything typed is stored first.
         While a run is being recorded, ask first: keep recording, or stop it and quit (Ctrl+Q
@@ -1159,6 +1187,12 @@ class LabApp(App[None]):
             "pulled out): save it elsewhere and go on there",
             self.action_save_elsewhere,
         )
+        if self.session is not None:
+            yield SystemCommand(
+                "Correct the group's names",
+                "Mend a misspelt name; the report and the resume list show the new names",
+                self.action_correct_names,
+            )
         yield SystemCommand(
             "Import a run log",
             "Load a log recorded elsewhere into the model check",

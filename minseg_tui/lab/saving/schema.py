@@ -405,6 +405,7 @@ SESSION = Record(
         "shown": MapOf(SHOWN),
         "shown_since": Text(),
         "policy": ListOf(POLICY),
+        "former_members": ListOf(Text()),
     },
 )
 """session.json, whole (``revealed``: fields of Tasks 11-15 shown before the group
@@ -413,7 +414,8 @@ answered them; ``kept``: the run's results as last computed, which
 reason to refuse the file; ``board_checks``: the newest result of each board check, by key
 of :data:`minseg_tui.lab.content.steps.BOARD_CHECKS`; ``shown``: the first time each computed
 value of Tasks 11-15 was on the group's screen, recorded since ``shown_since``; ``policy``: the
-lab's policy when the session was opened and whenever it changed). Optional parts added since keep the
+lab's policy when the session was opened and whenever it changed; ``former_members``: the
+names the group had before each correction, joined by ', '). Optional parts added since keep the
 schema at 1: a file without them reads as before, and an older program ignores them."""
 
 PARTIAL_HEADER = Record(

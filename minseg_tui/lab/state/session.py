@@ -531,10 +531,21 @@ class Session:
         return str(self._data["modified"])
 
     def set_members(self, members: Sequence[str]) -> None:
-        """Change the group's members (saved)."""
+        """Change the group's members (saved); the names they replace are kept, in
+        :attr:`former_members` (a misspelt name mended: the instructor can see it was)."""
         self._change()
-        self._data["members"] = [str(m) for m in members]
+        old = [str(m) for m in self._data["members"]]
+        new = [str(m) for m in members]
+        if new != old:
+            self._data.setdefault("former_members", []).append(", ".join(old))
+        self._data["members"] = new
         self._changed()
+
+    @property
+    def former_members(self) -> tuple[str, ...]:
+        """The names the group had before each :meth:`set_members`, oldest first (each the
+        names joined by ', ')."""
+        return tuple(str(m) for m in self._data.get("former_members", []))
 
     @property
     def current_step(self) -> str:

@@ -636,6 +636,9 @@ class RunView:
     plotted: bool = True
     """The run its kind's plot (steps, fast) shows: the one in use if it is of that kind,
     else the newest of it."""
+    fitted: bool = True
+    """The T readings are worked out; False in the quick view drawn first (:func:`runs` with
+    ``fits=False``: the runs' speeds only, T None), while the fits are still being made."""
 
 
 def _median(values: Sequence[float | None]) -> float | None:
@@ -662,22 +665,27 @@ _run_views: dict[tuple[object, ...], RunView] = {}
 does not change, and its three fits took about 0.4 s every time Task 10 was shown."""
 
 
-def runs(session: Session) -> tuple[RunView, ...]:
+def runs(session: Session, fits: bool = True) -> tuple[RunView, ...]:
     """Every run the group can choose for Tasks 11-15 (step runs of 25 ms and 5 ms, and
     imported logs), oldest first, with their T readings; the one in use marked (``in_use``,
     also when it is interrupted), and for each plot (25 ms, fast) the run it shows
     ``plotted``: the run in use if it is of that kind, else the newest of it (the plot
     showed a newer, interrupted run while another was in use). A worker's job; a run's
-    view is built once."""
+    view is built once. ``fits`` False: a run whose view is not built yet comes without its
+    T readings (``fitted`` False), read from its log alone, for the plots to show at once
+    (after a resume its three fits took about 4 s on a loaded machine: walk 7, D11)."""
     using = session.response_run()
     newest = {r.kind: r.name for r in session.runs if r.kind in ("steps", "fast")}
     if using is not None and using.kind in newest:
         newest[using.kind] = using.name
     conceal = "own.T" in hidden(session)
     out = []
-    for v in _run_list(session):
+    for v in _run_list(session, fits):
         in_use = using is not None and v.name == using.name
         plotted = newest.get(v.kind) == v.name
+        if not v.fitted:  # a quick view, not kept
+            out.append(replace(v, in_use=in_use, plotted=plotted, T_hidden=conceal))
+            continue
         # each marked view made once too (the T readings are Task 12's answer: left out
         # while hidden), so a view shown again is the same object
         key = (str(session.folder), v.name, v.samples, v.interrupted, conceal, in_use, plotted)
@@ -694,8 +702,9 @@ def runs(session: Session) -> tuple[RunView, ...]:
     return tuple(out)
 
 
-def _run_list(session: Session) -> list[RunView]:
-    """The view of every run Tasks 11-15 can use, oldest first (built once each)."""
+def _run_list(session: Session, fits: bool = True) -> list[RunView]:
+    """The view of every run Tasks 11-15 can use, oldest first (built once each; with
+    ``fits`` False, a run not built yet comes without its T readings, not kept)."""
     out = []
     for r in session.runs:
         if r.kind not in RESPONSE_KINDS:
@@ -710,6 +719,15 @@ def _run_list(session: Session) -> list[RunView]:
         except InputError:
             continue
         lab = np.asarray(log.extra.get("omega_lab", log.omega), dtype=float)
+        if not fits:
+            t, omega = np.asarray(log.t, dtype=float), np.asarray(log.omega, dtype=float)
+            out.append(
+                RunView(
+                    r.name, r.kind, r.ts, r.samples, r.interrupted, t, omega, lab,
+                    None, None, None, None, r.interruption, fitted=False,
+                )
+            )  # fmt: skip
+            continue
         try:
             fit = model_identify.fit_time_constant(log)
         except (InputError, ValueError):

@@ -78,6 +78,12 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
     def build(self, session: Session) -> tuple[RunView, ...]:
         return views.runs(session)
 
+    def sketch(self, session: Session) -> tuple[RunView, ...] | None:
+        """The runs' speeds without their T readings when a run's fits are not made yet (a
+        resumed session): the plots show the run in use at once."""
+        quick = views.runs(session, fits=False)
+        return quick if any(not v.fitted for v in quick) else None
+
     @property
     def recording(self) -> bool:
         """Whether a run is being recorded (or waits for the wheel to stand) now."""
@@ -142,6 +148,8 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
             )
         if not runs:
             rows.append("no run yet: F5 (25 ms), then F6 (5 ms)")
+        elif any(not v.fitted for v in runs):
+            rows = rows[:1] + ["working out the T readings…"]
         elif any(v.T_hidden for v in runs):
             rows.append("T: shown once you enter your own T (Task 12)")
         self.query_one("#t-readings", Static).update("\n".join(rows))

@@ -37,6 +37,11 @@ class ViewPanel(Vertical, Generic[V]):
         :mod:`minseg_tui.lab.views.session`, no widget)."""
         raise NotImplementedError
 
+    def sketch(self, session: Session) -> V | None:
+        """A view quick to build, drawn while :meth:`build` works (worker thread), or None:
+        none (the view is quick to build)."""
+        return None
+
     def receive(self, view: V) -> None:
         """Keep ``view`` and draw it once the panel is composed."""
         self.view = view

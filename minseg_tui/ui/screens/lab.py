@@ -310,11 +310,36 @@ class StepPane(FieldForm):
         where the placing left the step (:meth:`placed`)."""
         super().watch_scroll_y(old, new)
         if self._heading is not None and not self.is_placing:
-            self._heading.display = round(new) > 0 or self._heading.whole
+            self._heading.display = self._heading_wanted()
 
     def placed(self) -> None:
         if self._heading is not None:
-            self._heading.display = round(self.scroll_y) > 0 or self._heading.whole
+            self._heading.display = self._heading_wanted()
+
+    def _heading_wanted(self) -> bool:
+        """The heading shows while the step's own title is scrolled away, or with all of what
+        to do (:data:`WHOLE_TODO_KEY`), except while the step's own "What to do" is whole in
+        view below where it would end: over Task 5's own text at 80x24 it covered all but that
+        text's last line, which showed under it as a repeated line (walk 7, D3)."""
+        heading = self._heading
+        if heading is None:
+            return False
+        if heading.whole and self._own_todo_below(heading):
+            return False
+        return round(self.scroll_y) > 0 or heading.whole
+
+    def _own_todo_below(self, heading: Heading) -> bool:
+        """The step's own "What to do" stands whole in the step's view and reaches below the
+        rows the whole heading would cover: the heading over it would leave its end showing
+        under the heading (over it whole, it hides it and keeps the step's title in sight)."""
+        todo = next(iter(self.query_children(".todo")), None)
+        if todo is None or not todo.is_attached:
+            return False
+        view = self.scrollable_content_region
+        region = todo.virtual_region
+        top = region.y - round(self.scroll_y)
+        bottom = top + region.height
+        return top >= 0 and bottom <= view.height and bottom > heading.rows(view.width)
 
     @property
     def heading_rows(self) -> int:
@@ -331,7 +356,7 @@ class StepPane(FieldForm):
         if heading is None:
             return
         heading.show_whole(not heading.whole)
-        heading.display = round(self.scroll_y) > 0 or heading.whole
+        heading.display = self._heading_wanted()
         box = self.keys_box
         focused = box if box is not None else self.screen.focused
         if focused is not None and focused is not self and self in focused.ancestors:
@@ -488,6 +513,39 @@ class StepCommands(Provider):
                 yield Hit(score, matcher.highlight(text), action, text=text, help=help_text)
 
 
+NO_MATCH = "no command matches"
+"""The start of the palette's one line when nothing matches what was typed."""
+
+
+class NoMatch(Provider):
+    """The palette's line when no command matches the search: 'no command matches 'unplug''
+    with the kinds of commands there are, in place of an empty box (walk 7, D17: Textual's
+    own 'No matches found' came half a second late, after the group had looked). Matched as
+    Textual's system commands and :class:`StepCommands` match, on their titles."""
+
+    def titles(self) -> list[str]:
+        screen = self.screen
+        titles = [c.title for c in self.app.get_system_commands(screen)]
+        if isinstance(screen, LabScreen):
+            titles += [text for text, _, _ in StepCommands(screen).entries()]
+        return titles
+
+    async def search(self, query: str) -> Hits:
+        if not query.strip():
+            return
+        matcher = self.matcher(query)
+        if any(matcher.match(title) > 0 for title in self.titles()):
+            return
+        text = f"{NO_MATCH} '{query.strip()}'"
+        yield Hit(
+            1.0,
+            text,
+            lambda: None,
+            text=text,
+            help="try a step ('Task 5'), 'run', 'board', 'motor' or 'report'; Esc closes",
+        )
+
+
 class LabScreen(StatusScreen):
     """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves.
 
@@ -506,7 +564,7 @@ class LabScreen(StatusScreen):
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
         Binding("ctrl+o", "whole_todo", "What to do", show=False),
     ]
-    COMMANDS = StatusScreen.COMMANDS | {StepCommands}
+    COMMANDS = StatusScreen.COMMANDS | {StepCommands, NoMatch}
     AUTO_FOCUS = ".pane"
     """The step's form (the lab opens landed in its step, its entry in view, as PgDn lands)."""
 
@@ -689,6 +747,9 @@ class LabScreen(StatusScreen):
         """Worker: build ``panel``'s view from ``session`` (a snapshot) and hand it over, as
         the ``asked``-th view asked for."""
         worker = get_current_worker()
+        quick = panel.sketch(session) if panel.view is None else None
+        if quick is not None and not worker.is_cancelled:  # shown first, while it builds
+            self.app.call_from_thread(self._deliver, panel, quick)
         view = panel.build(session)
         if not worker.is_cancelled:
             self.app.call_from_thread(self._deliver, panel, view, asked)
