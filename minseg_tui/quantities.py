@@ -103,11 +103,17 @@ _UNIT_RE = re.compile(
 )
 
 
-def format_number(value: float, digits: int = DIGITS) -> str:
+MISSING = "—"
+"""The mark of a value that is not there (a cell, a reading, a figure): the em dash. The en
+dash '–' has the other meaning, the one that joins a range's ends ('42.10 – 43.02 ms')."""
+
+
+def format_number(value: float | None, digits: int = DIGITS) -> str:
     """``value`` with ``digits`` significant digits, trailing zeros kept and no exponent
-    for 1e-4 <= |value| < 1e6 (1.996, 2.000, 0.04270, 1235); '—' when it is not finite."""
-    if not math.isfinite(value):
-        return "—"
+    for 1e-4 <= |value| < 1e6 (1.996, 2.000, 0.04270, 1235); :data:`MISSING` for None or
+    a value that is not finite."""
+    if value is None or not math.isfinite(value):
+        return MISSING
     if value == 0:
         return "0"
     rounded = float(f"{value:.{digits - 1}e}")  # the exponent after rounding (9.9996 -> 10.00)
@@ -208,9 +214,10 @@ def format_interval(
 
 def format_value(value: float | None, unit: str = "", digits: int = DIGITS) -> str:
     """``value`` (already in ``unit``) with ``digits`` significant digits and its unit:
-    ``format_value(1.9962, "rad/s/V") == "1.996 rad/s/V"``; '—' for None or not finite."""
+    ``format_value(1.9962, "rad/s/V") == "1.996 rad/s/V"``; :data:`MISSING` for None or not
+    finite."""
     if value is None or not math.isfinite(value):
-        return "—"
+        return MISSING
     return f"{format_number(value, digits)} {unit}".rstrip()
 
 
@@ -513,9 +520,11 @@ def _fmt(x: float) -> str:
     return f"{x:.4g}"
 
 
-def format_quantity(value: float, unit: str, digits: int = DIGITS) -> str:
+def format_quantity(value: float | None, unit: str, digits: int = DIGITS) -> str:
     """``value`` (SI) shown in the form unit ``unit`` with ``digits`` significant digits,
-    trailing zeros kept (:func:`format_value`)."""
+    trailing zeros kept (:func:`format_value`); :data:`MISSING` for None."""
+    if value is None:
+        return MISSING
     return format_value(_in_unit(value, UNITS[unit]), unit, digits)
 
 

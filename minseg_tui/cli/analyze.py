@@ -16,7 +16,8 @@ import math
 from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_run_log
-from minseg_tui.model.check import CheckResult, check, text
+from minseg_tui.lab.views.check_text import text
+from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.runlog import problem
 
@@ -59,7 +60,7 @@ def write_predictions(path: str, r: CheckResult) -> None:
 
 
 def in_words_text(r: CheckResult) -> str:
-    """The check's text (:func:`minseg_tui.model.check.text`) with its headings naming the
+    """The check's text (:func:`minseg_tui.lab.views.check_text.text`) with its headings naming the
     cause, the other causes and the extended model in words ("Cause: dry friction",
     "Extended model (first order + dry friction)"), not by their contract names, which stay
     in ``--json``."""

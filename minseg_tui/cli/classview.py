@@ -31,7 +31,7 @@ from minseg_tui.lab.views.classview import (
     members,
     own_cell,
 )
-from minseg_tui.quantities import format_number
+from minseg_tui.quantities import MISSING, format_number
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -60,10 +60,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def _cell(v: float | None) -> str:
-    return "–" if v is None else format_number(v)
-
-
 def text(view: ClassView) -> str:
     """The class as plain text: a table, then per group what stands out and what is missing."""
     head = [
@@ -80,9 +76,12 @@ def text(view: ClassView) -> str:
             str(k),
             g.id,
             members(g),
-            g.step or "–",
-            *(_cell(None if (v := g.value(q.key)) is None else q.number(v)) for q in QUANTITIES),
-            g.cause or "–",
+            g.step or MISSING,
+            *(
+                format_number(None if (v := g.value(q.key)) is None else q.number(v))
+                for q in QUANTITIES
+            ),
+            g.cause or MISSING,
             own_cell(g),
         ]
         for k, g in enumerate(view.groups, 1)

@@ -79,14 +79,6 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-_g = format_number  # a computed value: four significant digits, trailing zeros kept
-
-
-def _read(x: float) -> str:
-    """A reading (R, the table's columns) with the digits it was typed with."""
-    return format_reading(x, "")
-
-
 def _wrap(text: str) -> list[str]:
     """A long sentence as indented lines of at most 96 characters."""
     return textwrap.wrap(text, width=96, initial_indent="   ", subsequent_indent="   ")
@@ -94,16 +86,16 @@ def _wrap(text: str) -> list[str]:
 
 def render(result: Identification) -> str:
     """The human report: the table of Tasks 4-9, then Tasks 11-15, then what the numbers show."""
-    out = [f"R = {_read(result.R)} ohm (Task 2)", ""]
+    out = [f"R = {format_reading(result.R, '')} ohm (Task 2)", ""]
     head = ("u_req V", "u_ss V", "omega_ss rad/s", "i_ss mA", "k_v V s/rad", f"f {F_UNIT}")
     body = [
         (
-            _read(r.reading.u_req),
-            _read(r.reading.u_ss),
-            _read(r.reading.omega_ss),
-            _read(r.reading.i_ss),
-            _g(r.k_v),
-            _g(in_unit(r.f, F_UNIT)),
+            format_reading(r.reading.u_req, ""),
+            format_reading(r.reading.u_ss, ""),
+            format_reading(r.reading.omega_ss, ""),
+            format_reading(r.reading.i_ss, ""),
+            format_number(r.k_v),
+            format_number(in_unit(r.f, F_UNIT)),
         )
         for r in result.rows
     ]
@@ -112,15 +104,15 @@ def render(result: Identification) -> str:
     out += ["  ".join(c.rjust(w) for c, w in zip(b, widths, strict=True)) for b in body]
     out += [
         "",
-        f"k_v = {_g(result.k_v)} V s/rad   (Task 7, median of the rows)",
-        f"k_a = {_g(result.k_a)} N m/A     (Task 8, 0.65 k_v)",
-        f"f   = {_g(in_unit(result.f, F_UNIT))} {F_UNIT} (Task 9, median of the rows)",
+        f"k_v = {format_number(result.k_v)} V s/rad   (Task 7, median of the rows)",
+        f"k_a = {format_number(result.k_a)} N m/A     (Task 8, 0.65 k_v)",
+        f"f   = {format_number(in_unit(result.f, F_UNIT))} {F_UNIT} (Task 9, median of the rows)",
     ]
     s = result.step
     if s is not None:
         how = u_ss_words(s.u_ss_how)
         t63 = (
-            f"{_g(s.T_63 * 1e3)} ms"
+            f"{format_number(s.T_63 * 1e3)} ms"
             if s.T_63 is not None
             else "not read (the speed never reached 63 %)"
         )
@@ -140,32 +132,32 @@ def render(result: Identification) -> str:
         )
         if s.dead_time:
             timing = (
-                f"with a dead time of {_g(s.dead_time * 1e3)} ms (the wheel answers later than the one "
+                f"with a dead time of {format_number(s.dead_time * 1e3)} ms (the wheel answers later than the one "
                 "sample period the sampling's lateness explains), part of the model"
             )
         out += [
             "",
             f"Run log: {len(s.rises)} rise(s); angle from {fit.angle_source}, time from {fit.time_source}",
-            f"omega_ss = {_g(s.omega_ss)} rad/s (fitted), u_ss = {_read(s.u_ss) if s.u_ss_how == 'row' else _g(s.u_ss)} V ({how})",
-            f"K = omega_ss / u_ss = {_g(s.K)} rad/s per V "
+            f"omega_ss = {format_number(s.omega_ss)} rad/s (fitted), u_ss = {format_reading(s.u_ss, '') if s.u_ss_how == 'row' else format_number(s.u_ss)} V ({how})",
+            f"K = omega_ss / u_ss = {format_number(s.K)} rad/s per V "
             + (
-                f"+- {_g((s.K_ci[1] - s.K_ci[0]) / 2, 2)} (95 %, Task 11)"
+                f"+- {format_number((s.K_ci[1] - s.K_ci[0]) / 2, 2)} (95 %, Task 11)"
                 if s.K_determined and s.K_ci[1] > s.K_ci[0]
                 else f"(95 % interval: {NO_WIDTH}; Task 11)"
                 if s.K_determined
                 else f"(95 % interval: {NOT_DETERMINED}; Task 11)"
             ),
             f"T, 63 % reading      = {t63} (Task 12, median over the rises)",
-            f"T, least squares     = {_g(s.T * 1e3)} ms{on_bound}, {interval}",
+            f"T, least squares     = {format_number(s.T * 1e3)} ms{on_bound}, {interval}",
             *_wrap(
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "
                 f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T)"
             ),
             *(_wrap(s.T_63_note) if s.T_63_note else []),
-            f"J = T (R f + k_v k_a) / R = {_g(s.J)} kg m^2 (Task 13)",
+            f"J = T (R f + k_v k_a) / R = {format_number(s.J)} kg m^2 (Task 13)",
             "",
-            f"Model (Task 14): {s.model_equation(_g, 'w')}",
-            f"At u_A = 5 V (Task 15): omega = {_g(s.K * 5.0)} rad/s",
+            f"Model (Task 14): {s.model_equation(format_number, 'w')}",
+            f"At u_A = 5 V (Task 15): omega = {format_number(s.K * 5.0)} rad/s",
         ]
     out += ["", "What the numbers show:"]
     if result.observations:

@@ -7,7 +7,9 @@ of the sample instants, the Euler velocity (theta_k - theta_k-1)/Ts with the nom
 with the effects' :class:`PlantParams`; everything else in it is first order.
 
 Effects (the model check's cause names) and the range a parameter is drawn from; a log
-holds one (``cause``), or two at once (``cause`` and ``also``):
+holds one (``cause``), or two at once (``cause`` and ``also``). Each cause's range and the
+way it is made sit in its entry of the check's registry
+(:attr:`minseg_tui.model.check.effects.Candidate.hidden`); the table says what they are:
 
 =================  ======  ===========  ===========================================
 cause              param   range        how it is made
@@ -35,6 +37,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numpy.typing import NDArray
 
+from minseg_tui.model.check.effects import BY_CAUSE, CANDIDATES
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import Plant, PlantParams, Touch, record
@@ -44,14 +47,10 @@ TS = 0.025
 """The board's sample period, s."""
 
 PARAM_RANGES: dict[str, tuple[str, float, float]] = {
-    "coulomb_friction": ("u_c", 0.1, 0.4),
-    "dead_time": ("delay", 0.010, 0.060),
-    "velocity_filter": ("taps", 3, 20),
-    "coast_on_zero": ("T_coast", 0.3, 3.0),
-    "second_pole": ("T2", 0.010, 0.040),
-    "current_limit": ("a_max", 20.0, 60.0),
+    c.cause: (c.param, c.hidden.lo, c.hidden.hi) for c in CANDIDATES if c.hidden is not None
 }
-"""Cause -> (parameter name, low, high): the realistic range a hidden effect is drawn from."""
+"""Cause -> (parameter name, low, high): the realistic range a hidden effect is drawn from
+(each cause's :attr:`~minseg_tui.model.check.effects.Candidate.hidden`)."""
 
 CAUSES: tuple[str, ...] = ("none", *PARAM_RANGES)
 
@@ -118,28 +117,41 @@ def plant_for(cause: str, param: float | None) -> PlantParams:
 def plant_with(effects: dict[str, float]) -> PlantParams:
     """The plant that hides every effect in ``effects`` ({cause: parameter}) at once."""
     p = PlantParams(tau_c=0.0, v_drop=0.45, v_supply=5.0, zero_mode="brake")
-    m = p.motor
     for cause, param in effects.items():
-        if cause == "velocity_filter":
-            continue  # a property of the measurement, not of the plant
-        if cause == "coulomb_friction":
-            p = replace(p, tau_c=param * m.k_a / m.R)
-        elif cause == "dead_time":
-            p = replace(p, dead_time=param)
-        elif cause == "second_pole":
-            p = replace(p, T2=param)
-        elif cause == "coast_on_zero":
-            p = replace(p, zero_mode="coast", motor=replace(p.motor, f=m.J / param))
-        elif cause == "current_limit":
-            p = replace(p, i_max=param * m.J / m.k_a)
-        else:
+        c = BY_CAUSE.get(cause)
+        if c is None or c.hidden is None:
             raise ValueError(f"unknown cause {cause!r}")
+        if c.hidden.plant is not None:  # else a property of the measurement, not of the plant
+            p = c.hidden.plant(p, param)
     return p
+
+
+def _driven(
+    u_req: NDArray[np.float64], effects: dict[str, float], params: PlantParams
+) -> NDArray[np.float64]:
+    """The requests (V) that make the plant put on the motor what the causes acting on the
+    input (an entry's ``drive``, not in the plant) make of the applied voltage; ``u_req``
+    itself when there is none. The log keeps the applied voltage before them."""
+    pieces = [
+        (c.drive, v)
+        for name, v in effects.items()
+        if (c := BY_CAUSE[name]).drive is not None
+        and c.hidden is not None
+        and c.hidden.plant is None
+    ]
+    if not pieces:
+        return u_req
+    applied = np.array([params.u_applied(v) for v in u_req])
+    for drive, v in pieces:
+        applied = drive(applied, v)
+    # the request that gives that voltage once the driver's own drop is taken off
+    return np.where(applied != 0.0, np.sign(applied) * (np.abs(applied) + params.v_drop), 0.0)
 
 
 def _draw(rng: np.random.Generator, cause: str) -> float:
     _, lo, hi = PARAM_RANGES[cause]
-    if cause == "velocity_filter":
+    hidden = BY_CAUSE[cause].hidden
+    if hidden is not None and hidden.whole:
         return float(rng.integers(int(lo), int(hi) + 1))
     return float(rng.uniform(lo, hi))
 
@@ -185,6 +197,7 @@ def make_log(
         effects[also] = float(also_param)
     params = plant_with(effects)
     u_req = commands(rng, amplitudes, duration, half_period=half_period)
+    u_motor = _driven(u_req, effects, params)
     hand = _touch(rng, u_req, params, half_period) if touch else None
     if hand is not None:
         params = replace(params, touch=hand)
@@ -193,9 +206,9 @@ def make_log(
         edges = np.flatnonzero(np.diff(u_req) != 0) + 1
         late_row = int(edges[rng.integers(1, max(2, edges.size - 1))])
         frac = float(rng.uniform(0.3, 0.7))
-        t, count, omega_true = _sample_late(params, u_req, seed, jitter_us, late_row, frac)
+        t, count, omega_true = _sample_late(params, u_motor, seed, jitter_us, late_row, frac)
     else:
-        rec = record(params, u_req, ts=TS, seed=seed, jitter_us=jitter_us)
+        rec = record(params, u_motor, ts=TS, seed=seed, jitter_us=jitter_us)
         t, count, omega_true = rec.t, rec.count, rec.omega_true
     theta = count * (2.0 * math.pi / params.cpr)
     if creep:
@@ -208,7 +221,8 @@ def make_log(
         wild_row = int(rng.choice(steady))
         count = count.copy()
         count[wild_row] += int(rng.choice([-1, 1]) * rng.integers(15, 61))
-    taps = int(effects.get("velocity_filter", 1))
+    # the speed is an average over a counted cause's length (1: the plain Euler velocity)
+    taps = next((int(v) for c, v in effects.items() if BY_CAUSE[c].counted), 1)
     omega = _measured(count, params.cpr, taps)
     u = np.array([params.u_applied(v) for v in u_req])
     return SynthLog(

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import csv
 import io
-import math
 
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views.classview import (
@@ -24,16 +23,12 @@ from minseg_tui.lab.views.classview import (
     members,
     own_cell,
 )
-from minseg_tui.quantities import format_number, format_quantity
+from minseg_tui.quantities import MISSING, format_number, format_quantity
 from minseg_tui.report.content import Figure, Figures, Report, Section, Table
 from minseg_tui.report.svg import Band, Line, Mark, plot
 
 FLAGGED_COLOR = "#d62728"
 GROUP_COLOR = "#1f77b4"
-
-
-def _cell(v: float | None) -> str:
-    return "–" if v is None or not math.isfinite(v) else format_number(v)
 
 
 def table(view: ClassView) -> Table:
@@ -56,13 +51,13 @@ def table(view: ClassView) -> Table:
                 str(k),
                 g.id,
                 members(g),
-                g.date or "–",
-                g.step or "–",
+                g.date or MISSING,
+                g.step or MISSING,
                 *(
-                    _cell(None if (v := g.value(q.key)) is None else q.number(v))
+                    format_number(None if (v := g.value(q.key)) is None else q.number(v))
                     for q in QUANTITIES
                 ),
-                g.cause or "–",
+                g.cause or MISSING,
                 own_cell(g),
                 str(len(g.flags)) if g.flags else "",
             )

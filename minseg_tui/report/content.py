@@ -19,7 +19,7 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
 from minseg_tui.lab.state.session import Session
-from minseg_tui.lab.views import check_words, own_first
+from minseg_tui.lab.views import check_text, check_words, own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
@@ -28,7 +28,7 @@ from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import ResponseResult, Rise
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
-    DIGITS,
+    MISSING,
     format_number,
     format_quantity,
     format_reading,
@@ -91,17 +91,7 @@ class Report:
     landscape: bool = False
 
 
-def _q(value: float | None, unit: str, digits: int = DIGITS) -> str:
-    return (
-        "–" if value is None or not math.isfinite(value) else format_quantity(value, unit, digits)
-    )
-
-
-def _num(value: float | None, digits: int = DIGITS) -> str:
-    return "–" if value is None or not math.isfinite(value) else format_number(value, digits)
-
-
-def _reading(value: float | None, unit: str, missing: str = "–") -> str:
+def _reading(value: float | None, unit: str, missing: str = MISSING) -> str:
     """What the group typed, captured or read off the meter, with the digits it has
     (``missing`` when there is none)."""
     return missing if value is None or not math.isfinite(value) else format_reading(value, unit)
@@ -217,8 +207,8 @@ def _table_section(session: Session) -> Section:
                 omega,
                 window,
                 _reading(r.i_ss, "mA", NOT_ENTERED),
-                NOT_COMPUTED if r.k_v is None else _q(r.k_v, "V s/rad"),
-                NOT_COMPUTED if r.f is None else _q(r.f, _F_UNIT),
+                NOT_COMPUTED if r.k_v is None else format_quantity(r.k_v, "V s/rad"),
+                NOT_COMPUTED if r.f is None else format_quantity(r.f, _F_UNIT),
             )
         )
     sec = Section("Steady state (Tasks 2 and 4-9)")
@@ -315,15 +305,15 @@ def _zoom_figure(session: Session, run: str | None, s: ResponseResult) -> Figure
     sel = (t >= zoom.z0 - 1e-9) & (t <= zoom.z1 + 1e-9)
     level = zoom.level
     marks = [
-        Mark(f"the step, t = {_num(st.t)} s", x=st.t, color="#555555", dash=False),
-        Mark(f"omega before = {_num(st.omega0)} rad/s", y=st.omega0, color="#999999"),
-        Mark(f"omega_ss = {_num(st.omega_ss)} rad/s", y=st.omega_ss, color="#999999"),
-        Mark(f"63 % level = {_num(level)} rad/s", y=level, color="#ff7f0e"),
+        Mark(f"the step, t = {format_number(st.t)} s", x=st.t, color="#555555", dash=False),
+        Mark(f"omega before = {format_number(st.omega0)} rad/s", y=st.omega0, color="#999999"),
+        Mark(f"omega_ss = {format_number(st.omega_ss)} rad/s", y=st.omega_ss, color="#999999"),
+        Mark(f"63 % level = {format_number(level)} rad/s", y=level, color="#ff7f0e"),
     ]
     if st.T_63 is not None:
         marks.append(
             Mark(
-                f"crossing at t = {_num(st.t + st.T_63)} s: T_63 = {_num(st.T_63 * 1e3)} ms",
+                f"crossing at t = {format_number(st.t + st.T_63)} s: T_63 = {format_number(st.T_63 * 1e3)} ms",
                 x=st.t + st.T_63,
                 color="#d62728",
                 dot=level,
@@ -332,15 +322,15 @@ def _zoom_figure(session: Session, run: str | None, s: ResponseResult) -> Figure
     svg = plot(
         [Line("omega, measured samples", t[sel], w[sel], dots=True)],
         marks=marks,
-        title=f"run {run}: the rise at t = {_num(st.t)} s, read by the program as in Tasks 11-12",
+        title=f"run {run}: the rise at t = {format_number(st.t)} s, read by the program as in Tasks 11-12",
         xlabel="t (s)",
         ylabel="omega (rad/s)",
         width=640,
         height=300,
     )
     crossed = (
-        f"it crosses the 63 % level {_num(st.T_63 * 1e3)} ms after the step (T_63 of this "
-        f"step; the median over {len(s.rises)} steps is {_num((s.T_63 or 0.0) * 1e3)} ms)"
+        f"it crosses the 63 % level {format_number(st.T_63 * 1e3)} ms after the step (T_63 of this "
+        f"step; the median over {len(s.rises)} steps is {format_number((s.T_63 or 0.0) * 1e3)} ms)"
         if st.T_63 is not None
         else "it does not reach the 63 % level within the step"
     )
@@ -349,8 +339,8 @@ def _zoom_figure(session: Session, run: str | None, s: ResponseResult) -> Figure
         640,
         f"The program's reading of one rise of run {run} (Tasks 11-12, as the manual "
         "reads it; the group's own values are in the table above): the measured speed goes from "
-        f"{_num(st.omega0)} to {_num(st.omega_ss)} rad/s; {crossed}. The least-squares T is "
-        f"{_num(s.T * 1e3)} ms.",
+        f"{format_number(st.omega0)} to {format_number(st.omega_ss)} rad/s; {crossed}. The least-squares T is "
+        f"{format_number(s.T * 1e3)} ms.",
     )
 
 
@@ -425,18 +415,20 @@ def _run_figure(log: RunLog, name: str) -> Figure:
 def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     g = r.gain
     named = r.finding.cause != "none"
-    lead = model_words.stem(r.lead.figure) if r.lead else ""
+    lead = check_text.stem(r.lead.figure) if r.lead else ""
     rows = []
-    for key, words in sorted(model_words.FIGURES.items(), key=lambda f: f[0] != lead):
+    for key, words in sorted(check_text.FIGURES.items(), key=lambda f: f[0] != lead):
         name, unit = words.name, words.unit
-        b, e = model_words.figure(g, key)
+        b, e = check_text.figure(g, key)
         if b is None:
             continue
         rows.append(
             (
                 name + (" (leads)" if key == lead else ""),
-                f"{_num(b, check_words.GAIN_DIGITS)} {unit}",
-                f"{_num(e, check_words.GAIN_DIGITS)} {unit}" if named and e is not None else "–",
+                f"{format_number(b, check_words.GAIN_DIGITS)} {unit}",
+                f"{format_number(e, check_words.GAIN_DIGITS)} {unit}"
+                if named and e is not None
+                else MISSING,
             )
         )
     return tuple(rows)
@@ -445,15 +437,15 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
 def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
-    words = model_words.figure_words(r.lead.figure)
+    words = check_text.figure_words(r.lead.figure)
     name, unit = words.name, words.unit
-    b, e = model_words.figure(r.gain, r.lead.figure)
+    b, e = check_text.figure(r.gain, r.lead.figure)
     if b is None:
         return None
     if r.finding.cause == "none" or e is None:
-        value = f"{_num(b, check_words.GAIN_DIGITS)} {unit} for the first-order model"
+        value = f"{format_number(b, check_words.GAIN_DIGITS)} {unit} for the first-order model"
     else:
-        value = f"{_num(b, check_words.GAIN_DIGITS)} {unit} for the first-order model, {_num(e, check_words.GAIN_DIGITS)} {unit} extended"
+        value = f"{format_number(b, check_words.GAIN_DIGITS)} {unit} for the first-order model, {format_number(e, check_words.GAIN_DIGITS)} {unit} extended"
     return f"The figure that means most for this log: the {name}, {value}. It leads because {r.lead.why}."
 
 
@@ -504,7 +496,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
     if model:
         cu_lines.append(Line("extended model", tt, ext, color="#2ca02c"))
     band = Band(
-        f"{'extended' if model else 'model'} ± noise ({_num(cu.noise, 3)} rad/s)",
+        f"{'extended' if model else 'model'} ± noise ({format_number(cu.noise, 3)} rad/s)",
         tt,
         fit - cu.noise,
         fit + cu.noise,
@@ -513,7 +505,9 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
     top_cu = plot(
         cu_lines,
         bands=(band,),
-        marks=() if edge is None else (Mark(f"the input changes, t = {_num(edge)} s", x=edge),),
+        marks=()
+        if edge is None
+        else (Mark(f"the input changes, t = {format_number(edge)} s", x=edge),),
         title=f"close-up: {cu.what}",
         ylabel="omega (rad/s)",
         show_xlabel=False,
@@ -523,7 +517,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
     res_cu = [Line("measured - first order", tt, w - base, color="#d62728", dots=True)]
     if model:
         res_cu.append(Line("measured - extended", tt, w - ext, color="#2ca02c", dots=True))
-    floor = Band(f"± noise ({_num(cu.noise, 3)} rad/s)", tt, -cu.noise, cu.noise)
+    floor = Band(f"± noise ({format_number(cu.noise, 3)} rad/s)", tt, -cu.noise, cu.noise)
     on_angle = r.lead is not None and r.lead.figure.endswith("angle_rms")
     bottom_cu = plot(
         res_cu,
@@ -549,7 +543,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
                 if angle_floor is None
                 else (
                     Band(
-                        f"± the angle's floor {_num(angle_floor, 3)} rad",
+                        f"± the angle's floor {format_number(angle_floor, 3)} rad",
                         tt,
                         -angle_floor,
                         angle_floor,
@@ -568,7 +562,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         440,
         f"Run {name}, {check_words.close_up_title(r)}"
         + (f" ({in_words(cu.cause)})" if cu.cause != "none" else "")
-        + f". The shaded band is ± the noise there ({_num(cu.noise, 3)} rad/s): a model whose "
+        + f". The shaded band is ± the noise there ({format_number(cu.noise, 3)} rad/s): a model whose "
         "residual stays inside it explains the log down to its noise."
         + (
             " Below, the residual summed over the window: the angle error, which the speed's "
@@ -638,8 +632,8 @@ def _model_check_section(session: Session) -> Section | None:
         items.append(f"The log: {r.sampling.text()}")
     items += [
         f"First-order model fitted to {mc.run}: {model_words.params(b.params, b.intervals)}; simulated on "
-        f"the recorded voltage it misses by {_num(b.rmse, 3)} rad/s rms (fit "
-        f"{_num(b.fit_percent, 3)} %).",
+        f"the recorded voltage it misses by {format_number(b.rmse, 3)} rad/s rms (fit "
+        f"{format_number(b.fit_percent, 3)} %).",
         *_two_fits(session, mc.run, b.params),
         f"Where it deviates: {r.where}.",
         f"Most likely cause: {in_words(f.cause)}. The check's evidence, over the whole log: "
@@ -652,8 +646,8 @@ def _model_check_section(session: Session) -> Section | None:
     if named:
         items.append(
             f"Extended model ({in_words(e.model)}): {model_words.params(e.params, e.intervals)}; "
-            f"{_num(e.rmse, 3)} rad/s rms (fit {_num(e.fit_percent, 3)} %), "
-            f"{_num(r.gain.rmse_reduction_percent, 3)} % lower rms."
+            f"{format_number(e.rmse, 3)} rad/s rms (fit {format_number(e.fit_percent, 3)} %), "
+            f"{format_number(r.gain.rmse_reduction_percent, 3)} % lower rms."
         )
     details.blocks.append(items)
     head = (
@@ -669,9 +663,11 @@ def _model_check_section(session: Session) -> Section | None:
             + "; ".join(
                 x
                 for x in (
-                    f"the encoder's floor {_num(floor, 3)} rad/s" if floor is not None else "",
-                    f"the scatter measured in the log {_num(noise, 3)} rad/s",
-                    f"the angle itself is known to {_num(angle, 3)} rad"
+                    f"the encoder's floor {format_number(floor, 3)} rad/s"
+                    if floor is not None
+                    else "",
+                    f"the scatter measured in the log {format_number(noise, 3)} rad/s",
+                    f"the angle itself is known to {format_number(angle, 3)} rad"
                     if angle is not None
                     else "",
                 )
@@ -680,10 +676,10 @@ def _model_check_section(session: Session) -> Section | None:
             + ". An error near it says nothing about a model; the part above it does."
         )
     if f.caveats:
-        details.blocks.append(model_words.CAVEATS)
+        details.blocks.append(check_text.CAVEATS)
         details.blocks.append([c.text for c in f.caveats])
     if r.anomalies:
-        details.blocks.append(model_words.ANOMALIES)
+        details.blocks.append(check_text.ANOMALIES)
         details.blocks.append([a.text for a in r.anomalies])
     sec.blocks.append(details)
     return sec

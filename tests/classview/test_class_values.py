@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from minseg_tui.lab.views.classview import QUANTITIES, judge, read_group
+from minseg_tui.quantities import MISSING
 from minseg_tui.report.class_content import table
 
 from .build import LEVELS, group
@@ -26,5 +27,5 @@ def test_K_and_T_are_shown_when_only_i_ss_is_missing(tmp_path: Path) -> None:
     assert bare.value("J") is None and bare.value("k_v") is None  # these need i_ss
     cells = dict(zip(table(judge([bare])).header, table(judge([bare])).rows[0], strict=True))
     labels = {q.key: q.label for q in QUANTITIES}
-    assert cells[labels["K"]] != "–" and cells[labels["T"]] != "–"
-    assert cells[labels["J"]] == "–"
+    assert cells[labels["K"]] != MISSING and cells[labels["T"]] != MISSING
+    assert cells[labels["J"]] == MISSING

@@ -9,9 +9,8 @@ import re
 import numpy as np
 import pytest
 
-from minseg_tui.lab.views import check_words
+from minseg_tui.lab.views import check_text, check_words
 from minseg_tui.model.check import check
-from minseg_tui.model.check import words as model_words
 from minseg_tui.model.check.effects import NAMES
 from minseg_tui.model.synth import make_log
 
@@ -41,7 +40,7 @@ def test_the_sentences_speak_of_the_close_up_in_everyday_words(cause):
     assert log.u[k] != log.u[k - 1]
     if r.finding.cause != "none":
         assert f"Likely cause: {check_words.EVERYDAY[r.finding.cause]}" in text
-        b, e = model_words.figure(r.gain, r.lead.figure)
+        b, e = check_text.figure(r.gain, r.lead.figure)
         assert b is not None and e is not None
         shown = re.search(rf"falls from ({NUM}) (rad/s|rad) to ({NUM}) (rad/s|rad)", text)
         assert shown is not None, text  # the held-out figure leads too: it was left out
@@ -70,10 +69,10 @@ def test_without_the_input_the_first_sentence_stays_general():
 
 def test_the_held_out_figure_is_found_under_its_own_keys():
     gain = {"heldout_baseline_rmse": 0.4, "heldout_extended_rmse": 0.1, "baseline_rmse": 1.0}
-    assert model_words.figure(gain, "heldout_extended_rmse") == (0.4, 0.1)
-    assert model_words.figure(gain, "heldout_rmse") == (0.4, 0.1)
-    assert model_words.figure(gain, "extended_rmse") == (1.0, None)
-    assert model_words.figure(gain, "angle_rms") == (None, None)
+    assert check_text.figure(gain, "heldout_extended_rmse") == (0.4, 0.1)
+    assert check_text.figure(gain, "heldout_rmse") == (0.4, 0.1)
+    assert check_text.figure(gain, "extended_rmse") == (1.0, None)
+    assert check_text.figure(gain, "angle_rms") == (None, None)
 
 
 @pytest.mark.parametrize("cause", ["coulomb_friction", "coast_on_zero"])

@@ -7,7 +7,8 @@ are for benchmarks/model_check_independent.py's figures).
 import numpy as np
 import pytest
 
-from minseg_tui.model.check import check, text
+from minseg_tui.lab.views.check_text import text
+from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import BY_CAUSE
 from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, make
 

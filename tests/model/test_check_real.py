@@ -15,7 +15,8 @@ from functools import cache
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
-from minseg_tui.model.check import CheckResult, check, text
+from minseg_tui.lab.views.check_text import text
+from minseg_tui.model.check import CheckResult, check
 from tests.shared_data import SHARED_DATA
 
 pytestmark = pytest.mark.shared_data

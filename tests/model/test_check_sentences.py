@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
-from minseg_tui.model.check import CheckResult, check, text
+from minseg_tui.lab.views.check_text import text
+from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.figures import lead
 from minseg_tui.model.identify import identify
 from tests.model import physics_gen as pg

@@ -139,7 +139,8 @@ class Step:
     and ``todo`` (our words), the fields to enter, the checks, the actions it offers and,
     for Task 10, the run plans (the manual's and a fast one); ``done_when``: for a step
     without fields, the board checks (keys of :data:`BOARD_CHECKS`) that, passed, make it
-    done."""
+    done; ``nav``: its name in the list of steps when the title's head (up to its colon) is
+    too long for it."""
 
     id: str
     part: str
@@ -152,6 +153,7 @@ class Step:
     plans: tuple[tuple[str, RunPlan], ...] = ()
     formulas: tuple[tuple[str, str], ...] = ()
     done_when: tuple[str, ...] = ()
+    nav: str = ""
 
 
 BOARD_CHECKS: dict[str, str] = {
@@ -861,6 +863,7 @@ _SUMMARY = Step(
             explain="in the form T y' = -y + K u, T and K fix the equation",
         ),
     ),
+    nav="Summary",
 )
 
 STEPS: tuple[Step, ...] = (*_PREPARATION, *_LAB, _SUMMARY)

@@ -10,9 +10,10 @@ the run's input voltage, and writes what the lab screen and the report both lead
 2. the likely cause in everyday words;
 3. how much better the extended model does, in one figure.
 
-The full text for lab assistants is :func:`minseg_tui.model.check.text` (``minseg-tui
-analyze``); the gain figures' names and a model's parameters are written for both by
-:mod:`minseg_tui.model.check.words`. Units: s, V, rad/s, rad (said: T and the delays in ms).
+The full text for lab assistants is :func:`minseg_tui.lab.views.check_text.text`
+(``minseg-tui analyze``); the gain figures' names are written for both there, and a model's
+parameters by :mod:`minseg_tui.model.check.words`. Units: s, V, rad/s, rad (said: T and the
+delays in ms).
 """
 
 from __future__ import annotations
@@ -23,9 +24,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from minseg_tui.lab.views.check_text import figure, figure_words, stem
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
-from minseg_tui.model.check.words import figure, figure_words, stem
 from minseg_tui.quantities import (
     format_constant,
     format_fixed,
@@ -69,16 +70,8 @@ class Moment:
     still: bool = False
 
 
-def _v(x: float) -> str:
-    return format_value(x, "V", 3)
-
-
 def _w(x: float) -> str:
     return format_value(abs(x) if abs(x) >= 0.005 else 0.0, "rad/s", 2)
-
-
-def _s(x: float) -> str:
-    return format_value(x, "s", 3)
 
 
 def _at(x: float) -> str:
@@ -207,9 +200,9 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
             "than its noise."
         )
     step = (
-        f"the voltage drops from {_v(m.u_from)} to {_v(m.u_to)} at t = {_at(m.edge)}"
+        f"the voltage drops from {format_value(m.u_from, 'V', 3)} to {format_value(m.u_to, 'V', 3)} at t = {_at(m.edge)}"
         if m.kind == "drop"
-        else f"the voltage steps from {_v(m.u_from)} to {_v(m.u_to)} at t = {_at(m.edge)}"
+        else f"the voltage steps from {format_value(m.u_from, 'V', 3)} to {format_value(m.u_to, 'V', 3)} at t = {_at(m.edge)}"
     )
     after = _later(m.at - m.edge)
     if m.still and abs(m.first_order) > abs(m.measured):
@@ -292,7 +285,7 @@ def close_up_title(r: CheckResult) -> str:
     cu = r.close_up
     if cu is None:
         return "the whole log"
-    return f"close-up {format_value(cu.t0, '', 3)}-{_s(cu.t1)}: {cu.what}"
+    return f"close-up {format_value(cu.t0, '', 3)}-{format_value(cu.t1, 's', 3)}: {cu.what}"
 
 
 def join(sentences: Sequence[str]) -> str:

@@ -45,6 +45,7 @@ from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import response_alone
 from minseg_tui.quantities import (
     F_UNIT,
+    MISSING,
     RPM,
     format_diff,
     format_fixed,
@@ -311,10 +312,6 @@ def step_name(step_id: str) -> str:
     return title.split(":")[0].split(" (")[0]
 
 
-def _num(v: float) -> str:
-    return format_number(v)
-
-
 def members(g: Group) -> str:
     """The group's names, or why there are none."""
     return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
@@ -327,7 +324,7 @@ def own_cell(g: Group) -> str:
         for o in g.own
         if o.rel_diff is not None
     ]
-    return ", ".join(parts) or "–"
+    return ", ".join(parts) or MISSING
 
 
 def _quantity(key: str) -> Quantity:
@@ -339,7 +336,7 @@ def _resistance_slip(R: float) -> Slip:
     or a reading in kΩ, when R moved by a power of ten falls in the range; else the usual
     causes."""
     lo, hi = R_RANGE
-    head = f"R = {_num(R)} Ω is outside the 3-6 Ω this motor reads (Task 2)"
+    head = f"R = {format_number(R)} Ω is outside the 3-6 Ω this motor reads (Task 2)"
     for factor, why in (
         (0.1, "its decimal point dropped"),
         (10.0, "its decimal point one place too far left"),
@@ -382,7 +379,7 @@ def slip_list(session: Session) -> list[Slip]:
         if i is not None and i > I_SS_MAX:
             out.append(
                 Slip(
-                    f"i_ss at {lv:g} V = {_num(i * 1e3)} mA is above 100 mA: the manual says "
+                    f"i_ss at {lv:g} V = {format_number(i * 1e3)} mA is above 100 mA: the manual says "
                     "the wrong thing is measured or the meter is in the wrong mode (expect "
                     "20-50 mA).",
                     FROM_TABLE,
@@ -391,8 +388,8 @@ def slip_list(session: Session) -> list[Slip]:
         elif i is not None and 0 < i < I_SS_AMPERES:
             out.append(
                 Slip(
-                    f"i_ss at {lv:g} V = {_num(i * 1e3)} mA looks like amperes typed into the "
-                    f"mA column ({_num(i * 1e6)} mA?), and k_v and f follow from it.",
+                    f"i_ss at {lv:g} V = {format_number(i * 1e3)} mA looks like amperes typed into the "
+                    f"mA column ({format_number(i * 1e6)} mA?), and k_v and f follow from it.",
                     FROM_TABLE,
                 )
             )
@@ -400,8 +397,8 @@ def slip_list(session: Session) -> list[Slip]:
         if w is not None and abs(w) > OMEGA_MAX and OMEGA_MIN <= abs(w) * RPM <= OMEGA_MAX:
             out.append(
                 Slip(
-                    f"omega_ss at {lv:g} V = {_num(w)} rad/s looks like rpm: this motor does "
-                    f"not turn that fast; read as rpm it is {_num(w * RPM)} rad/s.",
+                    f"omega_ss at {lv:g} V = {format_number(w)} rad/s looks like rpm: this motor does "
+                    f"not turn that fast; read as rpm it is {format_number(w * RPM)} rad/s.",
                     FROM_TABLE,
                 )
             )
@@ -409,7 +406,7 @@ def slip_list(session: Session) -> list[Slip]:
         if u is not None and u > lv:
             out.append(
                 Slip(
-                    f"u_ss at {lv:g} V = {_num(u)} V is above the requested {lv:g} V: the "
+                    f"u_ss at {lv:g} V = {format_number(u)} V is above the requested {lv:g} V: the "
                     "driver only loses voltage, so the meter or the request was wrong.",
                     (*FROM_TABLE, "K"),  # K divides by the table's u_ss
                 )
@@ -579,8 +576,8 @@ def outlier(s: Spread, value: float) -> str | None:
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {_num(q.number(value))} {unit} is far {side} the class: {format_fixed(times, 0)} robust "
-        f"standard deviations from its median of {_num(q.number(s.median))} {unit}."
+        f"{s.key} = {format_number(q.number(value))} {unit} is far {side} the class: {format_fixed(times, 0)} robust "
+        f"standard deviations from its median of {format_number(q.number(s.median))} {unit}."
     )
 
 

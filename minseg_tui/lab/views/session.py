@@ -32,7 +32,7 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import choice_words, read_entry
 from minseg_tui.lab.state.results import Comparison, Notice
 from minseg_tui.lab.state.session import Entry, Session, TableRow
-from minseg_tui.lab.views import check_words
+from minseg_tui.lab.views import check_text, check_words
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check import words as model_words
 from minseg_tui.model.check.effects import in_words
@@ -42,6 +42,7 @@ from minseg_tui.model.identify.rises import E63
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     DIGITS,
+    MISSING,
     NOT_DETERMINED,
     format_constant_interval,
     format_diff,
@@ -82,18 +83,9 @@ def _empty() -> FloatArray:
     return np.zeros(0)
 
 
-def _fmt(v: float | None, unit: str, digits: int = DIGITS) -> str:
-    """``v`` (SI) in the form unit ``unit`` (:func:`minseg_tui.quantities.format_quantity`)."""
-    return "—" if v is None or not math.isfinite(v) else format_quantity(v, unit, digits)
-
-
 def _fmt_milli(v: float | None, unit: str, digits: int = DIGITS) -> str:
     """``v`` in thousandths of ``unit`` (f in mN m s/rad, as the table's column shows it)."""
     return format_value(None if v is None else v * 1e3, f"m{unit}", digits)
-
-
-def _num(v: float | None, digits: int = DIGITS) -> str:
-    return "—" if v is None else format_number(v, digits)
 
 
 def _ci(ci: tuple[float, float], unit: str) -> str:
@@ -232,8 +224,9 @@ def under_entry(session: Session, c: Comparison) -> str:
     mark, word = (MARK["done"], "right") if c.right else (MARK["wrong"], "wrong")
     unit = _shown_unit(session, c)
     if c.rel_diff is not None and isinstance(c.computed, float):
-        said = f"{word}: {format_diff(c.rel_diff)} from {_fmt(c.computed, unit)}, " + _AGAINST.get(
-            c.key, "computed your way"
+        said = (
+            f"{word}: {format_diff(c.rel_diff)} from {format_quantity(c.computed, unit)}, "
+            + _AGAINST.get(c.key, "computed your way")
         )
         why = c.verdict.removeprefix("wrong:").strip()
         if why:
@@ -244,7 +237,7 @@ def under_entry(session: Session, c: Comparison) -> str:
         said += f"; {c.caveat}"
     if c.least_squares is not None:
         lsq = c.least_squares
-        said += f"; least squares {lsq if isinstance(lsq, str) else _fmt(lsq, unit)}"
+        said += f"; least squares {lsq if isinstance(lsq, str) else format_quantity(lsq, unit)}"
     return f"{mark} {said}"
 
 
@@ -408,13 +401,13 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
     for c in session.comparisons(step_id):
         typed_ = session.entry(c.key)
         own = (
-            "—"
+            MISSING
             if c.own is None
             else c.own
             if isinstance(c.own, str)
             else answer(session, c.key) or typed_.text.strip()
             if typed_ is not None and typed_.ok
-            else _fmt(c.own, c.unit)
+            else format_quantity(c.own, c.unit)
         )
         if c.key in conceal:
             out.append(
@@ -436,9 +429,11 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             way
             + " "
             + (
-                "—"
+                MISSING
                 if c.computed is None
-                else (c.computed if isinstance(c.computed, str) else _fmt(c.computed, unit))
+                else (
+                    c.computed if isinstance(c.computed, str) else format_quantity(c.computed, unit)
+                )
             )
         )
         if c.how:
@@ -453,7 +448,9 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             comp += f" · {lab_compare.REVEALED_EARLY}"
         if c.least_squares is not None:
             lsq = (
-                c.least_squares if isinstance(c.least_squares, str) else _fmt(c.least_squares, unit)
+                c.least_squares
+                if isinstance(c.least_squares, str)
+                else format_quantity(c.least_squares, unit)
             )
             # T's whole why is the long sentence on the two readings of T: it stands under the
             # results (:func:`results`), so the comparison keeps one short sentence
@@ -522,7 +519,7 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
     out from the numbers shown, the line gives the result it prints (:func:`_worked_inputs`)."""
     if name == "k_v" and r.k_v is not None and r.u_ss is not None and r.i_ss is not None:
         if r.omega_ss is not None and R is not None:
-            shown = _num(r.k_v)
+            shown = format_number(r.k_v)
             (u, res, i, w), eq = _worked_inputs(
                 (
                     (r.u_ss, 3, format_number),
@@ -539,7 +536,7 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
             )
     if name == "f" and r.f is not None and r.i_ss is not None and r.omega_ss is not None:
         if k_a is not None:
-            shown = _num(r.f * 1e3)
+            shown = format_number(r.f * 1e3)
             (ka, i, w), eq = _worked_inputs(
                 (
                     (k_a, DIGITS, format_number),
@@ -567,14 +564,17 @@ def _table_row(r: TableRow, R: float | None, k_a: float | None) -> tuple[Cell, .
     )
     return (
         Cell(f"{r.level:g}", f"u = {r.level:g} V: the voltage requested on the board"),
-        Cell(_num(r.u_ss, 3), "u_ss: read on the multimeter (V)" if r.u_ss is not None else ""),
-        Cell(_num(r.omega_ss, 3) + spread, omega_how),
         Cell(
-            _num(None if r.i_ss is None else r.i_ss * 1e3, 3),
+            format_number(r.u_ss, 3),
+            "u_ss: read on the multimeter (V)" if r.u_ss is not None else "",
+        ),
+        Cell(format_number(r.omega_ss, 3) + spread, omega_how),
+        Cell(
+            format_number(None if r.i_ss is None else r.i_ss * 1e3, 3),
             "i_ss: read on the multimeter (mA)" if r.i_ss is not None else "",
         ),
-        Cell(_num(r.k_v), _row_formula("k_v", r, R, k_a)),
-        Cell(_num(None if r.f is None else r.f * 1e3), _row_formula("f", r, R, k_a)),
+        Cell(format_number(r.k_v), _row_formula("k_v", r, R, k_a)),
+        Cell(format_number(None if r.f is None else r.f * 1e3), _row_formula("f", r, R, k_a)),
     )
 
 
@@ -589,8 +589,8 @@ def table(session: Session) -> TableView:
     results: tuple[tuple[str, Cell], ...] = ()
     if ident is not None:
         results = (
-            ("k_v", Cell(_fmt(ident.k_v, "V s/rad"), _FORMULAS["k_v"])),
-            ("k_a", Cell(_fmt(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
+            ("k_v", Cell(format_quantity(ident.k_v, "V s/rad"), _FORMULAS["k_v"])),
+            ("k_a", Cell(format_quantity(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
             ("f", Cell(_fmt_milli(ident.f, "N m s/rad"), _FORMULAS["f"])),
         )
     # the T findings name T, Task 12's answer: kept back until the group has given theirs
@@ -959,36 +959,38 @@ def results(session: Session, step_id: str) -> ResultsView:
         lines += [
             shown(
                 "own.omega_step",
-                f"omega_ss in the steps = {_fmt(st.omega_ss, 'rad/s')}",
+                f"omega_ss in the steps = {format_quantity(st.omega_ss, 'rad/s')}",
                 "omega_ss in the steps",
                 "Task 11",
             )
             + f"   u_ss = {lab_compare.format_u_ss(st)} ({model_identify.u_ss_words(st.u_ss_how)})",
             shown(
                 "own.K",
-                f"K = {_fmt(st.K, 'rad/s/V')}"
+                f"K = {format_quantity(st.K, 'rad/s/V')}"
                 f"{_ci(st.K_ci, 'rad/s/V') if st.K_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "K",
                 "Task 11",
             ),
             shown(
                 "own.T",
-                f"T (63 %) = {_fmt(st.T_63, shown_unit('s'))}   "
-                f"T (least squares) = {_fmt(st.T, shown_unit('s'))}"
+                f"T (63 %) = {format_quantity(st.T_63, shown_unit('s'))}   "
+                f"T (least squares) = {format_quantity(st.T, shown_unit('s'))}"
                 f"{_ci(st.T_ci, 's') if st.T_determined else f', 95 % interval {NOT_DETERMINED}'}",
                 "T",
                 "Task 12",
             ),
             # why the two T differ, said once on each screen (not in Task 12's comparison)
             *([lab_compare.two_T_of(st)] if "own.T" not in conceal else []),
-            shown("own.J", f"J = {_fmt(st.J, 'kg m^2')}", "J", "Task 13")
+            shown("own.J", f"J = {format_quantity(st.J, 'kg m^2')}", "J", "Task 13")
             if ident is not None
             else "J: waits for R, k_v and f from the table of Tasks 2-9, which gives none yet "
             "(why: below)",
-            shown("own.model", f"model: {st.model_equation(_num)}", "the model", "Task 14"),
+            shown(
+                "own.model", f"model: {st.model_equation(format_number)}", "the model", "Task 14"
+            ),
             shown(
                 "own.omega_5",
-                f"omega at 5 V = {_fmt(st.K * model_identify.U_TASK15, 'rad/s')}",
+                f"omega at 5 V = {format_quantity(st.K * model_identify.U_TASK15, 'rad/s')}",
                 "omega at 5 V",
                 "Task 15",
             ),
@@ -1068,15 +1070,15 @@ class CheckView:
     first-order model it fitted, and so the model (none without a result)."""
 
 
-_stem = model_words.stem
+_stem = check_text.stem
 
 
 def _figure(gain: Gain, key: str, named: bool) -> str | None:
     """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
     None when the log does not give it; only the baseline's when no cause was named."""
     stem = _stem(key)
-    b, e = model_words.figure(gain, key)
-    unit = model_words.figure_words(stem).unit
+    b, e = check_text.figure(gain, key)
+    unit = check_text.figure_words(stem).unit
     if b is None or (b == 0 and not e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
     if not named or e is None:
@@ -1084,7 +1086,7 @@ def _figure(gain: Gain, key: str, named: bool) -> str | None:
     if e == 0 and stem.startswith("above"):
         shown = format_value(b, unit, 3)
         return f"first order {shown} → extended 0 (rms error no larger than the noise)"
-    return f"first order {_num(b, 3)} → extended {format_value(e, unit, 3)}"
+    return f"first order {format_number(b, 3)} → extended {format_value(e, unit, 3)}"
 
 
 def check(session: Session) -> CheckView:
@@ -1105,11 +1107,11 @@ def check(session: Session) -> CheckView:
     if r.lead is not None:
         shown = _figure(g, r.lead.figure, named)
         if shown is not None:
-            lead = f"{model_words.figure_words(led).name}: {shown}"
+            lead = f"{check_text.figure_words(led).name}: {shown}"
             lead_why = r.lead.why
     others = [
-        f"{model_words.FIGURES[stem].name} {shown}"
-        for stem in model_words.FIGURES
+        f"{check_text.FIGURES[stem].name} {shown}"
+        for stem in check_text.FIGURES
         if stem != led and (shown := _figure(g, stem, named)) is not None
     ]
     floor = g.get("noise_floor")

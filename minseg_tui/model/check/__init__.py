@@ -23,14 +23,16 @@ Modules, in the order the check uses them:
 - deviations: where the baseline is wrong;
 - evidence: the finding in words, every number read off the log;
 - figures: the gain past the noise, held-out steps, the figure that leads, the close-up;
-- result: the result and its JSON; words: the gain figures' names, a model's parameters in
-  words (the one writer of that line) and the report a student reads (:func:`text`);
+- result: the result and its JSON (typed records); words: a model's parameters in words
+  (the one writer of that line, which the check's own sentences use);
 - pipeline: :func:`check`, from start to end.
+
+The gain figures' names and the full text for lab assistants are made from the result
+outside the model, in :mod:`minseg_tui.lab.views.check_text`.
 """
 
 from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.check.pipeline import check
 from minseg_tui.model.check.result import CheckResult
-from minseg_tui.model.check.words import text
 
-__all__ = ["CheckResult", "Gain", "check", "text"]
+__all__ = ["CheckResult", "Gain", "check"]

@@ -41,7 +41,9 @@ import numpy as np
 from minseg_tui.model.check.deviations import regions
 from minseg_tui.model.check.effects import (
     BY_CAUSE,
+    CANDIDATES,
     NAMES,
+    Judged,
     Range,
     absent,
     counted,
@@ -66,8 +68,6 @@ armature's, ripple), and on the independent generator's two-effect logs
 (tests/model/physics_gen.py, tuning seeds) a spurious third cause took up to 40 % of
 what the true pair left; a third that acts removes far more."""
 
-COAST_RATIO = 1.5
-"""A coast must be this many times slower than the driven time constant to be named."""
 
 PENALTY = 10.0
 """Criterion margin in units of ln n (BIC's is 1 per parameter)."""
@@ -179,35 +179,6 @@ def single(prob: Problem, cause: str, base: Fit, rng: dict[str, Range], noise: f
     return fit_causes(prob, (cause,), rng, tries)
 
 
-FILTER_NOISE = 3.0
-"""An average over N samples of counts leaves noise floor/N; a speed that scatters more than
-this many times that is not such an average."""
-
-
-def cap_ramp(prob: Problem, f: Fit) -> float:
-    """How long (s) the current cap of ``f`` holds after the step where it holds longest:
-    from rest (or a steady level) the first-order model with the cap ramps at its rate until
-    the uncapped rate (u - z)/T falls to it, |du|/rate - T later (K = 1 units). A step that
-    decelerates counts only when the cap holds braking too; a step across zero counts from 0
-    (braking first). It ignores the friction and a pole on the drive, which only shorten
-    the ramp."""
-    fx = f.effects
-    if not math.isfinite(fx.rate) or fx.rate <= 0:
-        return 0.0
-    vals = prob.st.value
-    prev = [0.0 if prob.z0 == 0.0 else float(vals[0]), *vals[:-1].tolist()]
-    longest = 0.0
-    for a, b in zip(prev, vals.tolist(), strict=True):
-        if fx.cap_both:
-            du = abs(b - a)
-        elif a * b < 0:
-            du = abs(b)
-        else:
-            du = max(abs(b) - abs(a), 0.0)
-        longest = max(longest, du / fx.rate - f.T)
-    return longest
-
-
 def _why_not(
     prob: Problem,
     f: Fit,
@@ -225,26 +196,15 @@ def _why_not(
     side = on_bound(f, cause, rng)
     if side is not None:
         return f"its parameter sits on the {side} bound of its range"
-    if cause == "coast_on_zero" and f.value(cause) < COAST_RATIO * f.T:
-        return "it would be a coast no slower than braking"
-    if cause == "current_limit" and cap_ramp(prob, f) < prob.ts:
-        return (
-            "the ramp that cap makes would last less than one sample period after every step: "
-            "no two samples lie on it, so this log cannot show a cap"
-        )
-    if cause == "velocity_filter":
-        n = f.effects.taps
-        fl = floor(n)
-        own = _own_noise(prob, f) if fl is not None and n >= 2 else 0.0
-        if fl is not None and n >= 2 and own > FILTER_NOISE * fl:
-            return (
-                f"the speed scatters {own:.3g} rad/s around that model's simulation, far more "
-                f"than an average of counts over {n} samples leaves ({fl:.3g} rad/s)"
-            )
+    own = BY_CAUSE[cause].refuse
+    if own is not None:
+        why = own(Judged(prob, f, floor, lambda: _own_noise(prob, f)))
+        if why is not None:
+            return why
     if _raw_sse(prob, f) > base_raw:
         return "it matches the measured speed itself worse than the first-order model"
-    if cause in ("second_pole", "dead_time") and f.value(cause) < SUB_SAMPLE * prob.ts:
-        what = "a pole" if cause == "second_pole" else "a delay"
+    what = BY_CAUSE[cause].within_sample
+    if what and f.value(cause) < SUB_SAMPLE * prob.ts:
         return (
             f"{what} of {1e3 * f.value(cause):.3g} ms, under a quarter of the "
             f"{1e3 * prob.ts:.3g} ms sample period, acts within the first sample after a step: "
@@ -615,24 +575,20 @@ def _fit_pair(
     scan: bool | None,
     polish: tuple[str, ...],
 ) -> Fit:
-    """``causes`` fitted jointly from ``begin``; with dry friction and a current limit among
-    them, fitted again from the same starts with the cap raised by u_c/T and the better
-    kept. Under the cap the wheel ramps at rate - u_c/T, so a cap fitted without friction
-    (the ramp seen) is that much below the cap with it; started from the ramp seen, the
-    joint fit can settle on a small friction and a wrong T instead (the independent
-    generator's tuning seed 2 with both: 12 times the true pair's residual)."""
+    """``causes`` fitted jointly from ``begin``; with a cause among them that is started
+    again beside a partner also among them (:attr:`Candidate.again`: the current limit
+    beside dry friction, raised by u_c/T), fitted again from those starts and the better
+    kept."""
     f = fit_causes(prob, causes, rng, begin, scan=scan, polish=polish)
-    if "coulomb_friction" not in causes or "current_limit" not in causes:
-        return f
-    raised = []
-    for T, vals in begin:
-        uc, rate = vals.get("coulomb_friction", 0.0), vals.get("current_limit", math.inf)
-        if uc > 0.0 and math.isfinite(rate) and T > 0.0:
-            raised.append((T, {**vals, "current_limit": rate + uc / T}))
-    if not raised:
-        return f
-    g = fit_causes(prob, causes, rng, raised, scan=scan, polish=(*polish, "coulomb_friction"))
-    return g if g.sse_white < f.sse_white else f
+    for c in causes:
+        again = BY_CAUSE[c].again
+        if again is None or again.partner not in causes:
+            continue
+        raised = [(T, v) for T, vals in begin if (v := again.start(vals, T)) is not None]
+        if raised:
+            g = fit_causes(prob, causes, rng, raised, scan=scan, polish=(*polish, again.partner))
+            f = g if g.sse_white < f.sse_white else f
+    return f
 
 
 def _idle(cause: str) -> tuple[str, ...]:
@@ -736,9 +692,10 @@ def rivals(
     return sorted(best.values(), key=lambda x: x[1])
 
 
-LAGS = ("dead_time", "second_pole", "velocity_filter")
-"""Causes that each hold the response back after a step (a delay, a pole, an average): at
-the sample period, with a second cause beside them, one can stand in for another."""
+LAGS = tuple(sorted(c.cause for c in CANDIDATES if c.lag))
+"""Causes that each hold the response back after a step (a delay, a pole, an average,
+:attr:`Candidate.lag`): at the sample period, with a second cause beside them, one can stand
+in for another. In name order, the order in which a stand-in's partners are fitted."""
 
 
 def swapped(

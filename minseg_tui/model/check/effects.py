@@ -26,10 +26,11 @@ from numpy.typing import NDArray
 from minseg_tui.model.check import evidence as ev
 from minseg_tui.model.check.guess import first_motion, levels_offset, rises, steepest_rate
 from minseg_tui.model.check.simulate import Drive, Effects, Extra
+from minseg_tui.model.plant import PlantParams
 from minseg_tui.quantities import format_number
 
 if TYPE_CHECKING:
-    from minseg_tui.model.check.fit import Fit
+    from minseg_tui.model.check.fit import Fit, Problem
 
 FloatArray = NDArray[np.float64]
 
@@ -102,6 +103,45 @@ class Claim:
     said: Callable[[float, bool], str]
     voided_by: tuple[str, ...]
     void: str
+
+
+@dataclass(frozen=True)
+class Judged:
+    """What a cause's own test of a fit reads (:attr:`Candidate.refuse`): the log's problem
+    (its levels in force, the period ts in s, the start speed z0), the fit that holds the
+    cause, the noise floor (rad/s) the speed column would have were it an average over N
+    samples (None: not known), and the speed's noise around the fit (rad/s, worked out when
+    asked)."""
+
+    prob: Problem
+    fit: Fit
+    floor: Callable[[int], float | None]
+    own_noise: Callable[[], float]
+
+
+@dataclass(frozen=True)
+class Again:
+    """A joint fit beside ``partner`` started again from raised starts: ``start`` makes,
+    from one start's {cause: Effects field value} and its T (s), the values of the second
+    start (None: no second start from it); the partner is polished in that fit."""
+
+    partner: str
+    start: Callable[[dict[str, float], float], dict[str, float] | None]
+
+
+@dataclass(frozen=True)
+class Hidden:
+    """How :mod:`minseg_tui.model.synth` hides the cause in a generated log: the realistic
+    range its parameter is drawn from (lo, hi, in the contract parameter's unit; a whole
+    number when ``whole``), and ``plant``: the plant with it, from the plant without it
+    and the parameter. None: it is not in the plant: a cause with a ``drive`` acts on the
+    voltage the motor gets (the log keeps the voltage before it), a counted cause is the
+    average the speed is measured over."""
+
+    lo: float
+    hi: float
+    plant: Callable[[PlantParams, float], PlantParams] | None
+    whole: bool = False
 
 
 Way = dict[str, bool]
@@ -180,6 +220,21 @@ class Candidate:
     """It acts on the reading, so in a smooth speed column (not a difference of counts) the
     other causes that do cannot be told from it: the words of that caveat for the fit
     (the first such cause in a model speaks)."""
+    refuse: Callable[[Judged], str | None] | None = None
+    """Its own reason it cannot be named in a fit although clear (None: it can), tested
+    before the test of the speed's own error."""
+    within_sample: str = ""
+    """Its parameter is a time, and one under :data:`.decide.SUB_SAMPLE` of the sample period
+    is not named (it acts inside the first sample): what it is in words ('a delay'); '' no
+    such test."""
+    lag: bool = False
+    """It holds the response back after a step (a delay, a pole, an average): at the sample
+    period, with a second cause beside it, one such cause can stand in for another."""
+    again: Again | None = None
+    """A joint fit holding it and :attr:`Again.partner` is fitted again from other starts
+    and the better kept."""
+    hidden: Hidden | None = None
+    """How a generated log (:mod:`minseg_tui.model.synth`) holds it; None: it cannot."""
 
 
 # -- the causes ---------------------------------------------------------------------------
@@ -245,6 +300,7 @@ COULOMB_FRICTION = Candidate(
     needs=ev.NEEDS_TWO_LEVELS,
     scale="V",
     nonlinear=True,
+    hidden=Hidden(0.1, 0.4, lambda p, v: replace(p, tau_c=v * p.motor.k_a / p.motor.R)),
     stop=ev.stands_still,
 )
 
@@ -305,6 +361,9 @@ DEAD_TIME = Candidate(
         ("second_pole", "velocity_filter"),
         "(a delay, or in this log an extra pole or an average about as well)",
     ),
+    hidden=Hidden(0.010, 0.060, lambda p, v: replace(p, dead_time=v)),
+    within_sample="a delay",
+    lag=True,
 )
 
 
@@ -333,6 +392,23 @@ def filter_words(log: ev.Log, ext: Fit, floor: float | None) -> str:
     return f"{ramp}: the speed looks averaged over {n} samples"
 
 
+FILTER_NOISE = 3.0
+"""An average over N samples of counts leaves noise floor/N; a speed that scatters more than
+this many times that is not such an average."""
+
+
+def _filter_refuse(j: Judged) -> str | None:
+    n = j.fit.effects.taps
+    fl = j.floor(n)
+    own = j.own_noise() if fl is not None and n >= 2 else 0.0
+    if fl is not None and n >= 2 and own > FILTER_NOISE * fl:
+        return (
+            f"the speed scatters {own:.3g} rad/s around that model's simulation, far more "
+            f"than an average of counts over {n} samples leaves ({fl:.3g} rad/s)"
+        )
+    return None
+
+
 VELOCITY_FILTER = Candidate(
     "velocity_filter",
     "taps",
@@ -352,6 +428,9 @@ VELOCITY_FILTER = Candidate(
     needs=ev.NEEDS_RISE,
     counted=True,
     smooth=lambda ext: SMOOTH_ALIKE,
+    hidden=Hidden(3, 20, None, whole=True),
+    refuse=_filter_refuse,
+    lag=True,
 )
 
 
@@ -403,6 +482,10 @@ def _fall_rate(log: ev.Log, s: ev.Fall) -> tuple[float, float, bool]:
     return -slope, float(tt[-1]), bool(below.size)
 
 
+COAST_RATIO = 1.5
+"""A coast must be this many times slower than the driven time constant to be named."""
+
+
 COAST_ON_ZERO = Candidate(
     "coast_on_zero",
     "T_coast",
@@ -424,6 +507,16 @@ COAST_ON_ZERO = Candidate(
     nonlinear=True,
     stop=ev.drops_to_zero,
     slower=-1,
+    hidden=Hidden(
+        0.3,
+        3.0,
+        lambda p, v: replace(p, zero_mode="coast", motor=replace(p.motor, f=p.motor.J / v)),
+    ),
+    refuse=lambda j: (
+        "it would be a coast no slower than braking"
+        if j.fit.value("coast_on_zero") < COAST_RATIO * j.fit.T
+        else None
+    ),
 )
 
 
@@ -566,6 +659,9 @@ SECOND_POLE = Candidate(
         "",
     ),
     smooth=_pole_smooth,
+    hidden=Hidden(0.010, 0.040, lambda p, v: replace(p, T2=v)),
+    within_sample="a pole",
+    lag=True,
 )
 
 
@@ -620,6 +716,42 @@ def _cap_starts(s: Seen) -> list[float]:
     return vals
 
 
+def cap_ramp(prob: Problem, f: Fit) -> float:
+    """How long (s) the current cap of ``f`` holds after the step where it holds longest:
+    from rest (or a steady level) the first-order model with the cap ramps at its rate until
+    the uncapped rate (u - z)/T falls to it, |du|/rate - T later (K = 1 units). A step that
+    decelerates counts only when the cap holds braking too; a step across zero counts from 0
+    (braking first). It ignores the friction and a pole on the drive, which only shorten
+    the ramp."""
+    fx = f.effects
+    if not math.isfinite(fx.rate) or fx.rate <= 0:
+        return 0.0
+    vals = prob.st.value
+    prev = [0.0 if prob.z0 == 0.0 else float(vals[0]), *vals[:-1].tolist()]
+    longest = 0.0
+    for a, b in zip(prev, vals.tolist(), strict=True):
+        if fx.cap_both:
+            du = abs(b - a)
+        elif a * b < 0:
+            du = abs(b)
+        else:
+            du = max(abs(b) - abs(a), 0.0)
+        longest = max(longest, du / fx.rate - f.T)
+    return longest
+
+
+def _cap_beside_friction(vals: dict[str, float], T: float) -> dict[str, float] | None:
+    """A cap fitted beside dry friction, started again raised by u_c/T. Under the cap the
+    wheel ramps at rate - u_c/T, so a cap fitted without friction (the ramp seen) is that
+    much below the cap with it; started from the ramp seen, the joint fit can settle on a
+    small friction and a wrong T instead (the independent generator's tuning seed 2 with
+    both: 12 times the true pair's residual)."""
+    uc, rate = vals.get("coulomb_friction", 0.0), vals.get("current_limit", math.inf)
+    if uc > 0.0 and math.isfinite(rate) and T > 0.0:
+        return {**vals, "current_limit": rate + uc / T}
+    return None
+
+
 CURRENT_LIMIT = Candidate(
     "current_limit",
     "a_max",
@@ -643,6 +775,14 @@ CURRENT_LIMIT = Candidate(
     flags=("cap_both",),
     # capped while accelerating only, and capped both ways
     ways=lambda causes, smooth: [{}, {"cap_both": True}],
+    refuse=lambda j: (
+        "the ramp that cap makes would last less than one sample period after every step: "
+        "no two samples lie on it, so this log cannot show a cap"
+        if cap_ramp(j.prob, j.fit) < j.prob.ts
+        else None
+    ),
+    hidden=Hidden(20.0, 60.0, lambda p, v: replace(p, i_max=v * p.motor.J / p.motor.k_a)),
+    again=Again("coulomb_friction", _cap_beside_friction),
 )
 
 

@@ -12,7 +12,7 @@ from textual.widget import Widget
 from minseg_tui.lab.content.steps import LEVELS, Step
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
-from minseg_tui.quantities import format_fixed, format_spread
+from minseg_tui.quantities import MISSING, format_fixed, format_spread
 from minseg_tui.ui.device import DeviceInfo
 from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.live import LiveBuffer, at_level
@@ -102,7 +102,7 @@ class LivePanel(Vertical, PanelKeys):
             s = views.steady(*at_level(t, count, u, self.requested))
             state = "SETTLED" if s.settled else "not settled"
             mean = (
-                "—"
+                MISSING
                 if s.mean != s.mean
                 else f"{format_fixed(s.mean, 2)} {format_spread(s.spread, 'rad/s')}"
             )

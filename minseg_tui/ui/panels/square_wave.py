@@ -36,10 +36,6 @@ PLOT_TITLE = {"steps": "25 ms run", "fast": "5 ms run"}
 in use for Tasks 11-15) follows."""
 
 
-def _s(v: float | None) -> str:
-    return format_value(v, "s", 3)
-
-
 class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
     KEYS = ("run_square_wave", "run_fast")
     """F5/F6 ask for the board's square wave; shows the app's ``run_progress`` while it
@@ -143,8 +139,8 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
             )
             name = ("▸ " if v.in_use else "  ") + v.name
             rows.append(
-                f"{name:<11}{_s(v.T_63_lab) if v.kind == 'steps' else '—':>13}{_s(v.T_63):>10}"
-                f"{_s(v.T_ls) + ci:>27}"
+                f"{name:<11}{format_value(v.T_63_lab, 's', 3) if v.kind == 'steps' else '—':>13}{format_value(v.T_63, 's', 3):>10}"
+                f"{format_value(v.T_ls, 's', 3) + ci:>27}"
             )
         if not runs:
             rows.append("no run yet: F5 (25 ms), then F6 (5 ms)")

@@ -9,6 +9,7 @@ from textual.widgets import DataTable
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import TableView
+from minseg_tui.quantities import MISSING
 from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.prose import Prose
@@ -51,7 +52,7 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         table.move_cursor(row=cursor.row, column=cursor.column, animate=False)
         lines = ["  ".join(f"{name} = {cell.text}" for name, cell in view.results)]
         lines += [
-            f"{label}: yours {own} · {comp}" for label, own, comp in view.compare if own != "—"
+            f"{label}: yours {own} · {comp}" for label, own, comp in view.compare if own != MISSING
         ]
         self.query_one("#results", Prose).update("\n".join(lines))
         self._warnings.update("\n".join(f"! {w}" for w in view.warnings))

@@ -27,7 +27,7 @@ from textual.widgets import DataTable, Static
 from minseg_tui.errors import InputError
 from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
-from minseg_tui.quantities import format_diff, format_number, format_quantity
+from minseg_tui.quantities import MISSING, format_diff, format_number, format_quantity
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
 
@@ -50,10 +50,6 @@ TITLE = "Class view for instructors (read-only)"
 """How the screen names itself: the instructors' view of every group, which changes nothing."""
 
 
-def _num(v: float | None) -> str:
-    return "–" if v is None else format_number(v)
-
-
 def _members(g: Group) -> str:
     return ", ".join(g.members) or ("(cannot be read)" if not g.readable else g.id)
 
@@ -63,9 +59,9 @@ def row(k: int, g: Group) -> tuple[str, ...]:
     return (
         str(k),
         _members(g),
-        g.step or "–",
+        g.step or MISSING,
         str(len(g.flags)) if g.flags else ("?" if not g.readable else ""),
-        *(_num(g.value(key)) for key in ("R", "k_v", "K", "T", "J")),
+        *(format_number(g.value(key)) for key in ("R", "k_v", "K", "T", "J")),
     )
 
 

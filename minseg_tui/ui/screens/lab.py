@@ -68,7 +68,6 @@ V = TypeVar("V")
 
 _SHORT = {
     "Preparation": "Prep",
-    "Summary and reflections (section 3.2)": "Summary",
     "Tasks 6-9": "Task 6-9",
     "Model check": "Check",
 }
@@ -106,8 +105,9 @@ PANEL_ACTIONS = frozenset(action for _, action, _, _ in PANEL_KEYS)
 
 
 def nav_label(step: Step, status: str = "todo") -> str:
-    """Short name in the navigator: a status mark and the title up to its colon, abbreviated."""
-    head = step.title.split(":")[0]
+    """Short name in the navigator: a status mark and the step's ``nav`` name, else its title
+    up to its colon, abbreviated."""
+    head = step.nav or step.title.split(":")[0]
     for long, short in _SHORT.items():
         head = head.replace(long, short)
     return f"{MARKS.get(status, ' ')} {head}"
