@@ -240,3 +240,45 @@ def test_a_ramp_that_one_time_constant_misses_is_named_as_the_gap_between_T_and_
     assert said and "is the shape of the rise" in said[0]
     assert "lags the true speed by half a sample" not in said[0]
     assert "is the shape of the rise, which one time constant does not follow" in st.T_63_note
+
+
+@pytest.mark.shared_data
+def test_a_63_percent_reading_inside_the_speeds_noise_is_called_noise_not_a_shape():
+    # ev3-large-duty30 (../shared/data/real-motors): 4.6 rad/s at the top with a scatter of about
+    # 1.4-1.9 rad/s (a 1-degree encoder, resampled to 5 ms); analyze finds the first-order model
+    # at the noise level. The first noisy sample over 63 % comes 24 ms before T (56.5 ms): that
+    # is the noise of single samples (it moves the crossing by about 60 ms here), not a shape
+    # one time constant does not follow, as identify said before
+    path = SHARED_DATA / "real-motors" / "ev3-large-duty30" / "step.csv"
+    r = identify(table(1.93), R, read_run_log(path))
+    st = r.step
+    assert st is not None and st.fit.shift_on_bound and st.T_63 is not None
+    said = [o.message for o in r.observations if o.code == "T_63_differs"]
+    assert said and "ms the noise of reading single samples" in said[0], said
+    assert "shape of the rise" not in said[0] and "shape of the rise" not in st.T_63_note
+    # n20-12v-pwm25: 24 ms apart, +15 ms of it the sampling and the time shift, +9 ms the noise
+    # (a count is 1.8 rad/s of a 9.3 rad/s rise); it said only "lags the true speed by half a
+    # sample (5 ms); a velocity filter lags it more", and the log has no filter
+    path = SHARED_DATA / "real-motors" / "n20-12v-pwm25" / "step.csv"
+    said = [o.message for o in identify(table(7.9), R, read_run_log(path)).observations]
+    said = [m for m in said if m.startswith("The 63 % reading")]
+    assert said and "a velocity filter lags it more" not in said[0], said
+    assert "is the sampling and the steps' time shift" in said[0]
+    assert "ms the noise of reading single samples" in said[0]
+    # a ramp well above the noise keeps its word (ubc-motor-7V: 136 ms of shape, 7 ms of sway)
+    path = SHARED_DATA / "real-motors" / "ubc-motor-7V" / "step.csv"
+    said = [o.message for o in identify(table(72.0), R, read_run_log(path)).observations]
+    assert any("is the shape of the rise" in m for m in said)
+
+
+@pytest.mark.shared_data
+def test_counts_too_coarse_to_show_a_start_are_not_read_as_an_s_shaped_start():
+    # n20-12v-pwm25: one count per 10 ms sample is 1.8 rad/s, 19 % of its 9.3 rad/s rise; the
+    # time shift ends on its bound (+10 ms) and identify said "the rise starts more slowly than
+    # one time constant gives (an S-shaped start: a second pole or a filtered speed)", which
+    # those counts cannot show (analyze names no pole on this log)
+    path = SHARED_DATA / "real-motors" / "n20-12v-pwm25" / "step.csv"
+    r = identify(table(7.9), R, read_run_log(path))
+    said = [o.message for o in r.observations if o.code == "shift_on_bound"]
+    assert said and "too coarse to show how the rise starts" in said[0], said
+    assert "S-shaped start" not in said[0]

@@ -319,14 +319,26 @@ PURE_DELAY = "(a pure delay; an extra pole would start at once, only more slowly
 
 
 def dead_time_words(log: ev.Log, ext: Fit) -> str:
+    """The delay's evidence: when the speed first moves after the steps it was settled
+    before (a speed still moving at a step says nothing of the delay), and the fitted
+    delay; a pure delay only when the speed does not move before that delay ends (at
+    least half a sample earlier: then the start is slow rather than late)."""
     d = ext.params["delay"]
-    lags = first_motion(log.t, log.u, log.y, log.noise)
+    lags = first_motion(log.t, log.u, log.y, log.noise, settled=True)
+    lag = float(np.median(lags)) if lags else None
     seen = (
         f"after the step{'s' if len(lags) > 1 else ''} the measured speed first moves "
-        f"{ev.ms(float(np.median(lags)))} later"
-        if lags
+        f"{ev.ms(lag)} later"
+        if lag is not None
         else "the response starts late"
     )
+    if lag is not None and lag < d - 0.5 * log.ts:
+        return (
+            f"{seen}: a first-order response that starts {ev.ms(d)} after the command fits, "
+            "but the speed moves before that delay ends, so the start is slow rather than "
+            "late (an extra pole or an average of the speed starts so; the delay stands in "
+            "for it)"
+        )
     return (
         f"{seen}: a first-order response that starts {ev.ms(d)} after the command fits "
         + PURE_DELAY

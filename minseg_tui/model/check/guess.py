@@ -26,12 +26,16 @@ def rises(u: FloatArray) -> list[tuple[int, int]]:
     ]
 
 
-def first_motion(t: FloatArray, u: FloatArray, y: FloatArray, noise: float) -> list[float]:
+def first_motion(
+    t: FloatArray, u: FloatArray, y: FloatArray, noise: float, settled: bool = False
+) -> list[float]:
     """Per rise, the time (s) from the step until the measured speed first leaves its level
     before the step: by more than four times that level's own scatter from sample to sample
     and a twentieth of the change (rad/s). A wheel at rest has no scatter, so its first count
     is its first motion. ``noise`` (rad/s, the log's scatter) stands in when fewer than five
-    rows come before the step."""
+    rows come before the step. ``settled``: leave out rises whose speed still moved before the
+    step (its last five rows drift by more than that bound), where the time the speed leaves
+    its level says nothing of when the step acts (a speed still falling reads 0 s)."""
     edges = np.flatnonzero(np.diff(u) != 0) + 1
     out = []
     for a, b in rises(u):
@@ -47,7 +51,10 @@ def first_motion(t: FloatArray, u: FloatArray, y: FloatArray, noise: float) -> l
         change = float(np.max(np.abs(seg))) if seg.size else 0.0
         if change <= 0:
             continue
-        k = np.flatnonzero(np.abs(seg) > max(4.0 * scatter, 0.05 * change))
+        bound = max(4.0 * scatter, 0.05 * change)
+        if settled and before.size >= 5 and abs(float(before[-1] - before[-5])) > bound:
+            continue
+        k = np.flatnonzero(np.abs(seg) > bound)
         if k.size:
             out.append(float(t[a + int(k[0])] - t[a]))
     return out

@@ -50,7 +50,7 @@ from minseg_tui.model.runlog import (
     problem,
     switch_on_glitches,
 )
-from minseg_tui.quantities import format_constant
+from minseg_tui.quantities import format_constant, format_number
 
 U_TASK15: float = 5.0
 """The applied voltage of Task 15, V."""
@@ -274,6 +274,7 @@ def _response_result(
     reads = [s.T_63 for s in steps if s.T_63 is not None]
     T_63 = float(np.median(reads)) if reads else None
     T_63_model = model_reading_63(log, fit, steps) if T_63 is not None else None
+    noise = reading_noise(log, steps, T)
     J = inertia_from_time_constant(T, R, f, k_v, k_a)
     result = ResponseResult(
         K=K,
@@ -289,7 +290,14 @@ def _response_result(
         K_ci=_K_interval(K, K_each, u_used, fit),
         T_63_model=T_63_model,
         T_63_note=_T_63_note(
-            T, T_63, T_63_model, log.ts, fit.dead_time, bool(fit.left_out), fit.shift_on_bound
+            T,
+            T_63,
+            T_63_model,
+            log.ts,
+            fit.dead_time,
+            bool(fit.left_out),
+            fit.shift_on_bound,
+            noise,
         ),
         dead_time=fit.dead_time,
         glitch_rows=glitches,
@@ -301,7 +309,7 @@ def _response_result(
     )
     observations = (
         response_observations(
-            rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time, shape
+            rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time, shape, noise
         )
         if rows
         else []
@@ -316,6 +324,29 @@ def response_alone(log: RunLog, u_ss_table: Sequence[tuple[float, float]]) -> Re
     it is NaN here. Raises InputError as :func:`identify` does for the log."""
     step, _ = _response_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
     return step
+
+
+def reading_noise(log: RunLog, steps: Sequence[Rise], T: float) -> tuple[float, float] | None:
+    """How far the speed's sample-to-sample scatter moves a 63 % reading read off single
+    samples: ``(scatter, sway)``, the scatter of the settled speed (rad/s: the standard
+    deviation of successive differences over sqrt 2, counts' steps included, median over the
+    rises) and that scatter over the speed's slope where it crosses 63 % (s: the fitted rise's
+    slope, (omega_ss - omega0) e^-1 / T). None when no rise has ten settled rows (5 T after
+    its step)."""
+    t, w = log.t, log.omega
+    scatters, sways = [], []
+    for s in steps:
+        settled = np.flatnonzero((t >= s.t + 5.0 * T) & (t <= s.t + s.duration))
+        if settled.size < 10 or not T > 0:
+            continue
+        sd = float(np.std(np.diff(w[settled]))) / math.sqrt(2.0)
+        slope = abs(s.omega_ss - s.omega0) * math.exp(-1.0) / T
+        if slope > 0:
+            scatters.append(sd)
+            sways.append(sd / slope)
+    if not sways:
+        return None
+    return float(np.median(scatters)), float(np.median(sways))
 
 
 def _K_interval(
@@ -342,12 +373,14 @@ def _T_63_note(
     dead_time: float = 0.0,
     stalled: bool = False,
     misfit: bool = False,
+    noise: tuple[float, float] | None = None,
 ) -> str | None:
     """How far the manual's 63 % reading is from the least-squares T, and why (the dead time
     ``dead_time``, s, is part of it when the model has one; ``stalled``: rows of a logging
     stall were left out; ``misfit``: the steps' time shift ended on its bound, so the rise
-    has a shape one time constant does not follow, and the rest is that shape, not only
-    noise)."""
+    may have a shape one time constant does not follow, and the rest is that shape unless
+    it is within ``noise``, :func:`reading_noise`'s scatter (rad/s) and the sway (s) it gives
+    a reading of single samples)."""
     if T_63 is None:
         return None
     apart = T_63 - T
@@ -374,7 +407,13 @@ def _T_63_note(
     )
     rest = T_63 - T_63_model
     if abs(rest) > max(0.02 * T, 0.1 * abs(apart)):
-        if misfit:
+        if misfit and noise is not None and abs(rest) <= noise[1]:
+            out += (
+                f", and {rest * 1e3:+.1f} ms is the noise of reading single samples: the speed "
+                f"scatters {format_number(noise[0], 3)} rad/s from sample to sample, which moves "
+                f"where it first crosses 63 % by about {noise[1] * 1e3:.3g} ms."
+            )
+        elif misfit:
             out += (
                 f", and {rest * 1e3:+.1f} ms is the shape of the rise, which one time constant does "
                 "not follow (see the time shift below), with the noise of reading single samples."

@@ -186,6 +186,7 @@ def response_observations(
     skipped: int,
     dead_time: float = 0.0,
     shape: float | None = None,
+    noise: tuple[float, float] | None = None,
 ) -> list[Observation]:
     """What the run log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
@@ -195,7 +196,9 @@ def response_observations(
     period (s); skipped: rises not usable; dead_time: the model's dead time (s);
     shape: when the rise has a shape one time constant does not follow (the steps' time
     shift on its bound), the part of the reading the fitted model read the same way does not
-    give (s), else None.
+    give (s), else None; noise: the speed's scatter (rad/s) and how far it moves a reading of
+    single samples (s), from :func:`~.identification.reading_noise`, or None: a shape within
+    that sway is said to be the noise, not a shape one time constant does not follow.
     """
     observations: list[Observation] = []
     levels = sorted({s.u_req for s in steps if s.u_req is not None})
@@ -274,7 +277,17 @@ def response_observations(
                         else f"Most of it ({format_signed(shape * 1e3, 3)} ms) is the shape of the rise, which one "
                         "time constant does not follow (see the time shift below): no one time "
                         "constant meets both the 63 % point and the whole rise here."
-                        if shape is not None and abs(shape) > 0.5 * abs(T_63 - T)
+                        if shape is not None
+                        and abs(shape) > 0.5 * abs(T_63 - T)
+                        and (noise is None or abs(shape) > noise[1])
+                        else f"Of it, {format_signed((T_63 - T - shape) * 1e3, 3)} ms is the sampling "
+                        "and the steps' time shift, held at its bound (the measured speed is the mean "
+                        "over each sample interval, half a sample late), and "
+                        f"{format_signed(shape * 1e3, 3)} ms the noise of reading single samples: the "
+                        f"speed scatters {format_number(noise[0], 3)} rad/s from sample to sample, which "
+                        f"moves where it first crosses 63 % by about {noise[1] * 1e3:.3g} ms; the "
+                        "least-squares T uses every sample, so it is the one to trust."
+                        if shape is not None and noise is not None and abs(shape) <= noise[1]
                         else "The measured speed is the mean over each sample interval, so "
                         "it lags the true speed by half a sample; a velocity filter lags it more."
                     )
@@ -314,6 +327,11 @@ def _lines(log: RunLog, rows: Sequence[int]) -> str:
     return f"{word} {first}" if first == last else f"{word}s {first}-{last}"
 
 
+COARSE_COUNT = 0.1
+"""One count per sample above this share of the rise (rad/s over rad/s) is too coarse to show
+how a rise starts (n20-12v-pwm25: 1.8 rad/s of a 9.3 rad/s rise)."""
+
+
 def fit_observations(
     log: RunLog, glitches: int, fit: TimeConstantFit, T_determined: bool
 ) -> list[Observation]:
@@ -327,6 +345,9 @@ def fit_observations(
     """
     out: list[Observation] = []
     ts = log.ts
+    cpr = log.declared_cpr
+    count = 2.0 * math.pi / (cpr * ts) if cpr and ts > 0 else None  # rad/s per count per sample
+    rise = float(np.median(np.abs(fit.omega_ss))) if fit.omega_ss else 0.0
     if glitches:
         rows = list(range(glitches))
         speeds = ", ".join(format_reading(float(log.omega[r]), "", 3) for r in rows)
@@ -384,9 +405,16 @@ def fit_observations(
                     "The wheel first moves "
                     + (f"{format_constant(fit.onset, 's')} " if fit.onset is not None else "")
                     + "after the steps, no later than the rise itself and the sampling explain, "
-                    "so there is no dead time to fit: the rise starts more slowly than one time "
-                    "constant gives (an S-shaped start: a second pole or a filtered speed), a shape "
-                    "the first-order model misses. Read T with care."
+                    + (
+                        f"so there is no dead time to fit. One count per sample is {format_number(count, 3)} "
+                        f"rad/s, {format_percent(count / rise)} of the rise, too coarse to show how the "
+                        "rise starts: a slow start (a second pole or a filtered speed) and the counts' "
+                        "steps look alike here. Read T with care."
+                        if count is not None and count > COARSE_COUNT * rise
+                        else "so there is no dead time to fit: the rise starts more slowly than one "
+                        "time constant gives (an S-shaped start: a second pole or a filtered speed), "
+                        "a shape the first-order model misses. Read T with care."
+                    )
                 )
             )
         )
