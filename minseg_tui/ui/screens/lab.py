@@ -749,7 +749,7 @@ class LabScreen(StatusScreen):
         worker = get_current_worker()
         quick = panel.sketch(session) if panel.view is None else None
         if quick is not None and not worker.is_cancelled:  # shown first, while it builds
-            self.app.call_from_thread(self._deliver, panel, quick)
+            self.app.call_from_thread(self._deliver, panel, quick, asked)
         view = panel.build(session)
         if not worker.is_cancelled:
             self.app.call_from_thread(self._deliver, panel, view, asked)
