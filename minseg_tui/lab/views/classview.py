@@ -47,7 +47,7 @@ from minseg_tui.quantities import (
     F_UNIT,
     MISSING,
     RPM,
-    format_diff,
+    format_difference,
     format_fixed,
     format_number,
     format_reading,
@@ -320,7 +320,7 @@ def members(g: Group) -> str:
 def own_cell(g: Group) -> str:
     """The group's own values against the computed ones, in one cell: "T +12 %"."""
     parts = [
-        f"{o.key.removeprefix('own.')} {format_diff(o.rel_diff)}"
+        f"{o.key.removeprefix('own.')} {format_difference(o.own, o.computed)}"
         for o in g.own
         if o.rel_diff is not None
     ]

@@ -27,7 +27,7 @@ from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
     UNITS,
-    format_diff,
+    format_difference,
     format_interval,
     format_number,
     format_quantity,
@@ -285,9 +285,13 @@ def _diff(c: Comparison, own: str, against: str) -> str:
         said = (MARK["done"] if c.right else MARK["wrong"]) + " " + (c.verdict or "right")
         if c.caveat:
             said += f"; {c.caveat}"
-        return said if c.rel_diff is None else f"{format_diff(c.rel_diff)}{against}; {said}"
+        return (
+            said
+            if c.rel_diff is None
+            else f"{format_difference(c.own, c.computed)}{against}; {said}"
+        )
     if c.rel_diff is not None:
-        return format_diff(c.rel_diff) + against
+        return format_difference(c.own, c.computed) + against
     if own.startswith(NOT_ANSWERED):
         return "nothing to compare: not answered"
     return f"{MARK['unjudged']} {NOT_JUDGED}"

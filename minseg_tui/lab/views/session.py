@@ -45,7 +45,7 @@ from minseg_tui.quantities import (
     MISSING,
     NOT_DETERMINED,
     format_constant_interval,
-    format_diff,
+    format_difference,
     format_number,
     format_quantity,
     format_spread,
@@ -225,7 +225,7 @@ def under_entry(session: Session, c: Comparison) -> str:
     unit = _shown_unit(session, c)
     if c.rel_diff is not None and isinstance(c.computed, float):
         said = (
-            f"{word}: {format_diff(c.rel_diff)} from {format_quantity(c.computed, unit)}, "
+            f"{word}: {format_difference(c.own, c.computed)} from {format_quantity(c.computed, unit)}, "
             + _AGAINST.get(c.key, "computed your way")
         )
         why = c.verdict.removeprefix("wrong:").strip()
@@ -439,7 +439,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         if c.how:
             comp += f" ({c.how})"
         if c.rel_diff is not None:
-            comp += f": {format_diff(c.rel_diff)}"
+            comp += f": {format_difference(c.own, c.computed)}"
         if c.verdict:
             comp += f"\n  {c.verdict}"
         if c.caveat:

@@ -27,7 +27,7 @@ from textual.widgets import DataTable, Static
 from minseg_tui.errors import InputError
 from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
-from minseg_tui.quantities import MISSING, format_diff, format_number, format_quantity
+from minseg_tui.quantities import MISSING, format_difference, format_number, format_quantity
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
 
@@ -80,7 +80,7 @@ def detail(k: int, g: Group) -> Text:
     for o in g.own:
         if o.rel_diff is not None:
             out.append(
-                f"{o.label}: {format_diff(o.rel_diff)} from the value computed the group's way\n"
+                f"{o.label}: {format_difference(o.own, o.computed)} from the value computed the group's way\n"
             )
     for f in g.flags:
         out.append(f"! {f}\n", style="bold")
