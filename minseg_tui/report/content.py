@@ -270,9 +270,9 @@ def _step_section(session: Session) -> Section:
     sec.blocks.append(own_first.run_used(session))
     ident = res.identification
     if ident is None or ident.step is None:
-        sec.blocks.append(
-            "No step result yet" + (": " + "; ".join(res.problems) if res.problems else ".")
-        )
+        why = needs(views.waits_for(session, "K"))  # no run yet: say so, and where
+        said = [*res.problems, why] if why else list(res.problems)
+        sec.blocks.append("No step result yet" + (": " + "; ".join(said) if said else "."))
         return sec
     s = ident.step
     rows = own_first.step_rows(session)

@@ -111,3 +111,27 @@ def test_the_report_without_R_says_what_k_v_and_f_need(tmp_path):
     assert "the row is incomplete" not in md
     assert md.count("not computed: needs R (Task 2)") == 6  # k_v and f of three rows
     assert "The motor constants k_v, k_a and f: not computed, needs R (Task 2)." in md
+
+
+async def test_tasks_11_to_15_without_a_run_say_the_run_is_what_is_missing(quiet):
+    """The table complete, no run yet: Task 11's results said only "no step result yet";
+    they now say a step run (Task 10) is what they need."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        await goto(pilot, "task11")
+        await settle(pilot, lambda: "no step result" in _text(app, "#results-lines"))
+        assert _text(app, "#results-lines").startswith(
+            "no step result yet: needs a step run (Task 10)"
+        )
+
+
+def test_the_report_without_a_run_says_the_step_result_needs_one(tmp_path):
+    """report.md with the table complete and no run: "No step result yet." now says what
+    it needs and where."""
+    with Session.create(tmp_path, ["A"], date="2026-11-27") as s:
+        for key, text in TABLE.items():
+            s.enter(key, text)
+        md = write_report(s).markdown.read_text(encoding="utf-8")
+    assert "No step result yet: needs a step run (Task 10)" in md

@@ -992,6 +992,9 @@ class ResultsView:
     shows: frozenset[str] = frozenset()
     """Fields of Tasks 11-15 whose computed value this view puts on the screen (the session
     records the first time: :func:`note_drawn`)."""
+    waiting: str = ""
+    """Without a step result: which inputs it needs and where to enter them ('needs a step
+    run (Task 10)'; '' otherwise)."""
 
 
 TWO_T: tuple[str, ...] = ("T_short", "T_63_differs")
@@ -1113,6 +1116,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         tuple(problems),
         frozenset(hidden(session)),
         shows,
+        "" if st_run is not None else lab_needs.needs(waits_for(session, "K")),
     )
 
 
