@@ -287,6 +287,56 @@ seed 8 of the benchmark's own draw (a 9-tap average with a pole on the coupling,
 rows) is named delay + pole before the stand-in step is reached: the swap tries the true
 pair (11 taps, white 46 against 421) and the average's scatter test refuses it (0.049
 rad/s around the model against 0.0079 for an 11-sample average of counts).
+s29-pairs (tuning seeds only; nothing kept on the branch, the held-out seeds not run): main
+1b5b61c on --tuning --seeds 10 --only pairs (150 logs): right 81.3 %, honestly ambiguous
+10.0 % (right or honestly ambiguous 91.3 %), ambiguous in all 10.7 %, confidently wrong 8.0
+% (12 logs), 3 logs with a disturbance but no hand, CPU per log median 1.19 s. In
+velocity_filter + second_pole seed 8 (a 9-tap average at 25 ms samples, 1440 counts per
+turn, a pole on the coupling) every model with an average the search fits leaves 0.049-0.060
+rad/s of scatter, 6-8 times the column's rounding floor (0.0079), and FILTER_NOISE refuses
+it, while the first-order model leaves 0.40-0.54 (its scatter window still holds its misses
+after the steps) and the delay and pole named instead 0.35. The same seed with a delay or a
+cap (a stall, counts over the real interval, so no floor is read) fails otherwise: the
+average is fitted with 3-31 taps and a delay and a pole, or a cap and a delay, are named.
+The rest: a logger's filter of the speed column read 34-35 % short (seeds 9 with friction
+and with a cap), a cap not named beside a driver's or the inductance's pole (seeds 1, 4),
+the cap with friction (9: cap missed, T 4 times long), a delay with a cap named cap + pole
+(6), a delay with an average named pole + average (7), a 24-tap average with a coast named
+with a delay and a pole (4), and friction with a cap refused as a wheel that never turns
+(0). Side branch s29-pairs-filter-noise: the scatter test lets an average pass when it also
+scatters FILTER_NOISE times less than around the first-order model, and a delay or a pole
+beside an average scans the average's length again. With the search's noise as the
+reference: 150 tuning logs right 81.3 -> 83.3 %, right or honestly ambiguous 91.3 -> 92.7 %,
+confidently wrong 8.0 -> 6.7 % (seeds 7 and 4 above gained, none lost; seed 8 with the pole
+is named average + pole, but with 11 taps and T2 89 ms against 9 and 134 ms), yet two pinned
+hand tests through an average failed: in the first pass, before a hand is fenced, the hand
+inflates the reference (1036: the first-order model leaves 1.41-1.67 rad/s) and a 13-tap
+average with T 16 % short passes and reports a second disturbance at 4.06 s. Taking the
+smaller of that noise and the baseline's own scatter fixes 1014, not 1036: not kept.
+s29-hands (1b5b61c -> 12cda71; changed on tuning seeds only): behind an average longer than
+the shortest hold of a hand (0.15 s), the share of the level a hand must move the speed by
+(MIN_SHARE, 8 %) is taken down in proportion to the average's length, to half at most (a
+24-tap average at 25 ms spreads a 0.18 s hand to 7 % of the level, 120 times the averaged
+speed's noise); a spike at a stall of the logger no longer counts as an edge's repeated miss
+(with a hand soon after another edge it made "a departure after 2 edges" and no hand).
+Tuning touched logs of an average (--tuning --only touches --touch-seeds 80, the 34
+velocity_filter logs, run through check() one by one): 28 -> 32 right (1017, 1063, 1073,
+1075 gained, none lost; 1027 and 1066 still a delay for a 2- or 11-tap average). The whole
+tuning run (218 logs, 199 right on main on this machine) was not repeated after the final
+change: the other causes' logs change only where the model chosen holds an average or the
+log a stall, not measured. Held-out (--seeds 5 --touch-seeds 5 --only touches, run after the
+final change): a hand found with the cause kept 16 -> 16 of 20 (the same four fail:
+dead_time 901000 and second_pole 901001 named velocity_filter, velocity_filter 901001 with a
+cap beside it, current_limit 901002 with a friction and its hand 0.62 s early). Held-out
+singles (35 untouched logs, with the running median below still in): 0 disturbances.
+benchmarks/model_check.py --seeds 10 --skip-hour, after the final change: single causes 70 of
+70, 0 false alarms of 10, analyze 1.08-1.49 s CPU per log (Python start included). Not kept: a running median of 9 rows beside the 3-row mean
+where the noise sets the threshold found the hands at 10 ms from counts (dead_time and
+coast_on_zero 1044), but took the real micromouse-n20-duty100's slow drift (8.4 % of the
+level over 0.19 s) for a hand. Target (>= 90 %) not met on the held-out seeds; what is left
+on the tuning seeds is mostly a lag named for another (a delay, a pole, a short average),
+an extra friction, cap or average beside a coast (1.03-2.1 % of the range, above
+SMALL_EFFECT), and hands at 10 ms samples from counts.
 """
 
 from __future__ import annotations

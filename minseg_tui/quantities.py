@@ -37,8 +37,8 @@ Refused, with a message saying what was expected:
   also be a real reading in mA; rather than guess, it is refused and the message asks for
   ``47 mA`` or ``0.047 A``. An explicit ``0.047 A`` or ``0.5 mA`` is accepted. A bare
   number below 0.05 in a mN m s/rad field (f typed in N m s/rad, ``0.00186``) is refused
-  the same way, and a bare number above 1 in a field in s (T typed in ms, ``57``)
-  (:data:`_BARE`).
+  the same way, a bare number above 1 in a field in s (T typed in ms, ``57``), and one
+  below 1 in a field in ms (Task 12's T typed in s, ``0.057``) (:data:`_BARE`).
 
 Plausibility is separate from parsing: :class:`Plausible` ranges on a field give warnings
 (data, not refusals), e.g. R outside 1-20 ohm.
@@ -335,10 +335,12 @@ _BARE: dict[str, _Bare] = {
         0.05, True, "f of this motor is a few mN m s/rad", "N m s/rad", "N m s/rad", 1000.0
     ),
     "s": _Bare(1.0, False, "this motor's time constant is tens of ms", "milliseconds", "ms", 0.001),
+    "ms": _Bare(1.0, True, "this motor's time constant is tens of ms", "seconds", "s", 1000.0),
 }
 """Form unit -> when a bare number in a field of that unit is refused as ambiguous: 0.047
 for i_ss (47 mA typed in A), 0.00186 for f (1.86 mN m s/rad typed in N m s/rad), 57 for T
-(57 ms: as seconds, far longer than the 1.5 s steps of Task 10 could show)."""
+(57 ms: as seconds, far longer than the 1.5 s steps of Task 10 could show), 0.057 for T in a
+field in ms (Task 12's: 57 ms typed in s)."""
 
 
 class EntryRefused(InputError):

@@ -7,21 +7,11 @@ of the sample instants, the Euler velocity (theta_k - theta_k-1)/Ts with the nom
 with the effects' :class:`PlantParams`; everything else in it is first order.
 
 Effects (the model check's cause names) and the range a parameter is drawn from; a log
-holds one (``cause``), or two at once (``cause`` and ``also``). Each cause's range and the
-way it is made sit in its entry of the check's registry
-(:attr:`minseg_tui.model.check.effects.Candidate.hidden`); the table says what they are:
-
-=================  ======  ===========  ===========================================
-cause              param   range        how it is made
-=================  ======  ===========  ===========================================
-none               -       -            no dry friction, brake at zero command
-coulomb_friction   u_c     0.1-0.4 V    tau_c = u_c k_a / R
-dead_time          delay   10-60 ms     PlantParams.dead_time
-velocity_filter    taps    3-20         omega is the moving average of N Euler values
-coast_on_zero      T_coast 0.3-3 s      zero_mode coast, f = J / T_coast
-second_pole        T2      10-40 ms     PlantParams.T2
-current_limit      a_max   20-60 rad/s2 i_max = a_max J / k_a (the driver's current limit)
-=================  ======  ===========  ===========================================
+holds one (``cause``), or two at once (``cause`` and ``also``). Each cause's realistic
+range and the way it is made (a piece of the plant, the voltage the motor gets, or the
+average the speed is measured over) sit in its entry of the check's registry
+(:attr:`minseg_tui.model.check.effects.Candidate.hidden`); ``none`` is the plant without
+dry friction that brakes at zero command.
 
 Messiness a real log has, each optional: one wild sample (a misread count), a slow
 creep of the speed after each rise, one step whose command reaches the motor between

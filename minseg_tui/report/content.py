@@ -269,12 +269,14 @@ def _step_section(session: Session) -> Section:
     sec = Section(_STEP_TITLE)
     sec.blocks.append(own_first.run_used(session))
     ident = res.identification
-    if ident is None or ident.step is None:
+    # the run alone (the table gives no k_v: walk 7, D14) gives omega_ss, K and T as the
+    # screen shows them; only J waits for the table
+    s = ident.step if ident is not None and ident.step is not None else res.response
+    if s is None:
         why = needs(views.waits_for(session, "K"))  # no run yet: say so, and where
         said = [*res.problems, why] if why else list(res.problems)
         sec.blocks.append("No step result yet" + (": " + "; ".join(said) if said else "."))
         return sec
-    s = ident.step
     rows = own_first.step_rows(session)
     sec.blocks.append(
         "Each value the group worked out, first as the group gave it, then the group's way "
@@ -288,6 +290,12 @@ def _step_section(session: Session) -> Section:
     # T's why is the one sentence on the two readings of T (the model's own note, which
     # the CLI gives, would say it a second time)
     sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
+    if s is res.response:
+        sec.blocks.append(
+            "J waits for R, k_v and f from the table of Tasks 2-9, which gives none yet ("
+            + "; ".join(res.problems)
+            + "); omega_ss in the steps, K and T need only the run and u_ss."
+        )
     sec.blocks.append(f"How T was fitted: {s.fit.why}.")
     zoom = _zoom_figure(session, res.run, s)
     if zoom is not None:
@@ -432,18 +440,16 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     named = r.finding.cause != "none"
     lead = check_text.stem(r.lead.figure) if r.lead else ""
     rows = []
-    for key, words in sorted(check_text.FIGURES.items(), key=lambda f: f[0] != lead):
-        name, unit = words.name, words.unit
-        b, e = check_text.figure(g, key)
-        if b is None:
+    for key in sorted(check_text.FIGURES, key=lambda k: k != lead):
+        c = check_text.compared(g, key, named)
+        if c is None:
             continue
+        unit = c.words.unit
         rows.append(
             (
-                name + (" (leads)" if key == lead else ""),
-                f"{format_number(b, check_words.GAIN_DIGITS)} {unit}",
-                f"{format_number(e, check_words.GAIN_DIGITS)} {unit}"
-                if named and e is not None
-                else MISSING,
+                c.words.name + (" (leads)" if key == lead else ""),
+                f"{c.first} {unit}",
+                f"{c.extended} {unit}" if c.extended is not None else MISSING,
             )
         )
     return tuple(rows)
@@ -452,15 +458,13 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
 def _lead(r: CheckResult) -> str | None:
     if r.lead is None:
         return None
-    words = check_text.figure_words(r.lead.figure)
-    name, unit = words.name, words.unit
-    b, e = check_text.figure(r.gain, r.lead.figure)
-    if b is None:
+    c = check_text.compared(r.gain, r.lead.figure, r.finding.cause != "none")
+    if c is None:
         return None
-    if r.finding.cause == "none" or e is None:
-        value = f"{format_number(b, check_words.GAIN_DIGITS)} {unit} for the first-order model"
-    else:
-        value = f"{format_number(b, check_words.GAIN_DIGITS)} {unit} for the first-order model, {format_number(e, check_words.GAIN_DIGITS)} {unit} extended"
+    name, unit = c.words.name, c.words.unit
+    value = f"{c.first} {unit} for the first-order model"
+    if c.extended is not None:
+        value += f", {c.extended} {unit} extended"
     return f"The figure that means most for this log: the {name}, {value}. It leads because {r.lead.why}."
 
 

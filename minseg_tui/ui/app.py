@@ -207,6 +207,10 @@ class LabApp(App[None]):
         """Board commands (F2, F3) not yet sent, oldest first: one worker sends them in order."""
         self._sending = False
         """The worker that sends :attr:`_commands` runs (set and read under :attr:`_lock`)."""
+        self._exports_asked = 0
+        """How many exports (F8) were asked for: only the last asked writes once it may."""
+        self._export_lock = threading.Lock()
+        """Held by the export writing the report (one at a time)."""
         self._motor_unread = False
         """The link's motor was passed over while the commands were sent: the worker asks
         for it again once the last is sent (set and read under :attr:`_lock`)."""
@@ -1085,20 +1089,29 @@ class LabApp(App[None]):
             return
         with self.session as s:
             snapshot = s.snapshot()
-        self._export(snapshot)
+        self._exports_asked += 1
+        self._export(snapshot, self._exports_asked)
 
     @work(thread=True, exclusive=True, group="export", name="report")
-    def _export(self, session: Session) -> None:
+    def _export(self, session: Session, asked: int) -> None:
         """Worker: write the report of ``session``, a frozen snapshot (it computes every
-        result and figure)."""
-        try:
-            if self._writer is None:
-                raise MinsegError("this program was started without the report writer")
-            paths = tuple(str(p) for p in self._writer(session))
-        except (MinsegError, OSError) as exc:
-            self.call_from_thread(self.notify, str(exc), title="report", severity="error")
-            return
-        self.call_from_thread(self._exported, paths, lab_views.unanswered_line(session))
+        result and figure), the ``asked``-th export asked for.
+
+        One export writes at a time, and one that a newer export follows writes nothing: a
+        worker is cancelled only between its steps, so two F8s ran two writers on the same
+        files at once, and the older snapshot, finishing last, could stand on disk (and on
+        the screen, its notice last) after the newer one was said written."""
+        with self._export_lock:
+            if asked != self._exports_asked:
+                return  # a newer export was asked for since: it writes the report
+            try:
+                if self._writer is None:
+                    raise MinsegError("this program was started without the report writer")
+                paths = tuple(str(p) for p in self._writer(session))
+            except (MinsegError, OSError) as exc:
+                self.call_from_thread(self.notify, str(exc), title="report", severity="error")
+                return
+            self.call_from_thread(self._exported, paths, lab_views.unanswered_line(session))
 
     def _exported(self, paths: tuple[str, ...], unanswered: str = "") -> None:
         """The report was written to ``paths``: say where, and what is still ``unanswered``

@@ -45,6 +45,11 @@ def klass(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return root
 
 
+GROUP = pytest.mark.xdist_group("class-klass")
+"""The tests reading :func:`klass` run on one worker under make test's -n 2 (--dist
+loadgroup), so the module fixture's class of eight groups is built once, not once per worker."""
+
+
 def _run(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
     code = main(["class", *args])
     out, err = capsys.readouterr()
@@ -57,6 +62,7 @@ def _by_members(doc: dict[str, object]) -> dict[str, dict[str, object]]:
     return {" ".join(g["members"]) or g["id"]: g for g in groups}
 
 
+@GROUP
 def test_json_one_row_per_group_numbers_are_the_sessions_own(klass, capsys):
     code, out, err = _run(capsys, "--sessions", str(klass), "--json")
     doc = json.loads(out)
@@ -83,6 +89,7 @@ def test_json_one_row_per_group_numbers_are_the_sessions_own(klass, capsys):
         assert g[f"Ada {k} Bo {k}"]["lacks"] == []
 
 
+@GROUP
 def test_slips_and_far_values_are_said_in_words(klass, capsys):
     _, out, _ = _run(capsys, "--sessions", str(klass), "--json")
     doc = json.loads(out)
@@ -131,6 +138,7 @@ def test_a_dropped_decimal_point_in_R_is_named(tmp_path, capsys):
     assert doc["class"]["R"]["n"] == 4 and doc["class"]["k_v"]["n"] == 4
 
 
+@GROUP
 def test_unfinished_and_damaged_are_listed_with_what_they_lack(klass, capsys):
     _, out, _ = _run(capsys, "--sessions", str(klass), "--json")
     g = _by_members(json.loads(out))
@@ -144,6 +152,7 @@ def test_unfinished_and_damaged_are_listed_with_what_they_lack(klass, capsys):
     )
 
 
+@GROUP
 def test_text_table_names_steps_and_units(klass, capsys):
     code, out, err = _run(capsys, "--sessions", str(klass))
     assert code == 2 and "zz-broken" in err
@@ -156,6 +165,7 @@ def test_text_table_names_steps_and_units(klass, capsys):
     assert "! R = 12.00 Ω is outside" in out and "- lacks: no run recorded yet" in out
 
 
+@GROUP
 def test_out_writes_markdown_html_and_csv(klass, tmp_path, capsys):
     out_dir = tmp_path / "out"
     _run(capsys, "--sessions", str(klass), "--out", str(out_dir))
@@ -195,6 +205,7 @@ def _state(root: Path) -> dict[str, tuple[int, bytes]]:
     }
 
 
+@GROUP
 def test_sessions_are_never_written_nor_locked(klass, tmp_path, capsys):
     before = _state(klass)
     names = {p.name for p in klass.rglob("*")}
@@ -316,6 +327,7 @@ def test_a_copied_session_is_named_by_its_own_folder(tmp_path, capsys):
     assert sorted(ids) == sorted([folder.name, "ada-copy"])
 
 
+@GROUP
 def test_f_is_shown_in_mN_m_s_per_rad_and_kept_si_in_csv_and_json(klass, tmp_path, capsys):
     """The class's text, report and figures showed f in N m s/rad while the lab's table and
     Task 9's entry use mN m s/rad: one unit for f wherever people read it; the CSV and the
@@ -330,3 +342,25 @@ def test_f_is_shown_in_mN_m_s_per_rad_and_kept_si_in_csv_and_json(klass, tmp_pat
     assert format_number(f[0] * 1e3) in md.split("## What stands out")[0]
     rows = list(csv.DictReader(io.StringIO((tmp_path / "out" / "class.csv").read_text("utf-8"))))
     assert [float(r["f (N m s/rad)"]) for r in rows if r["f (N m s/rad)"]] == f
+
+
+def test_a_K_divided_by_the_requested_step_height_is_named(tmp_path, capsys):
+    """Walk 7, D6's slip in the class view: a group that divided its omega_ss by the
+    requested 4.5 V (7.9 / 4.5 = 1.756) instead of by its measured u_ss (4.05 V) is flagged
+    by name; a group that divided by u_ss (7.9 / 4.05 = 1.951) is not. Real session folders,
+    `minseg-tui class --json`."""
+    root = tmp_path / "s"
+    rows = {4.5: ("4.05", "7.79", "37.2 mA")}
+    for name, K in (("Slip", "1,756"), ("Right", "1,951")):
+        folder = group(root, [name], seed=3, rows=rows, run=False)
+        with Session.open(folder) as s:
+            assert s.enter("own.omega_step", "7,9").ok and s.enter("own.K", K).ok
+    code, out, _ = _run(capsys, "--sessions", str(root), "--json")
+    g = _by_members(json.loads(out))
+    assert code == 0
+    (flag,) = [f for f in g["Slip"]["flags"] if f.startswith("K = ")]
+    assert flag == (
+        "K = 1.756 rad/s/V is omega_ss ÷ 4.5 V (the requested step height), not ÷ the "
+        "measured u_ss = 4.050 V (Task 11): 7.900 / 4.05 = 1.951 rad/s/V."
+    )
+    assert not [f for f in g["Right"]["flags"] if f.startswith("K = ")]

@@ -13,6 +13,6 @@ def test_a_difference_under_half_a_percent_keeps_its_digit(tmp_path):
     with Session.open(folder) as s:
         ident = s.results().identification
         assert ident is not None and ident.step is not None and ident.step.T_63 is not None
-        s.enter("own.T", f"{ident.step.T_63 * 1.003:.6f}")
+        s.enter("own.T", f"{ident.step.T_63 * 1.003:.6f} s")
     cell = own_cell(read_group(folder))
     assert cell == "T +0.3 %", cell

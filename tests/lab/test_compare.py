@@ -13,7 +13,13 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import inertia_from_time_constant
-from minseg_tui.quantities import example, format_diff, format_number, format_reading
+from minseg_tui.quantities import (
+    example,
+    format_diff,
+    format_number,
+    format_quantity,
+    format_reading,
+)
 from tests.seeded import record_square_wave
 
 
@@ -49,7 +55,7 @@ def test_differences_under_half_a_percent_keep_a_digit():
 def test_the_computed_values_wait_for_the_groups_own(tmp_path):
     with _lab(tmp_path) as s:
         st = s.results().identification.step  # type: ignore[union-attr]
-        K = views._fmt(st.K, "rad/s/V")
+        K = format_quantity(st.K, "rad/s/V")
         text = _lines(s, "task11")
         assert f"K = {K}" not in text and "K: shown once you enter yours (Ctrl+R" in text
         assert "T (63 %)" not in text and "J =" not in text and "omega' =" not in text
@@ -201,7 +207,7 @@ def test_the_groups_values_are_quoted_with_the_digits_they_typed(tmp_path):
             "from the group's T = 57 ms" in rows["own.J"][2]
         )  # the report: an instructor reads it
         assert "1.930" not in " ".join(rows["own.omega_5"]) + " ".join(rows["own.model"])
-        s.enter("own.T", "0,057")
+        s.enter("own.T", "57")
         (c,) = s.comparisons("task13")
         assert "from your T = 57 ms" in c.how, c.how  # T in ms, as everywhere (walk 6)
 

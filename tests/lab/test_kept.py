@@ -31,6 +31,13 @@ def computed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return folder
 
 
+GROUP = pytest.mark.xdist_group("kept-computed")
+"""The tests reading :func:`computed` run on one worker under make test's -n 2 (--dist
+loadgroup), so the module fixture's session (its results and model check) is built once, not
+once per worker."""
+
+
+@GROUP
 def test_the_lab_keeps_the_results_of_its_run_in_the_session_file(computed, tmp_path):
     folder = tmp_path / "g"
     shutil.copytree(computed, folder)
@@ -57,6 +64,7 @@ def test_the_lab_keeps_the_results_of_its_run_in_the_session_file(computed, tmp_
     assert "J" not in part["step"]  # J follows the table's R, k_v and f: never kept
 
 
+@GROUP
 def test_kept_numbers_give_the_results_and_comparisons_the_fit_gives(computed):
     with Session.open(computed, readonly=True) as s:
         full = s.results()
@@ -71,6 +79,7 @@ def test_kept_numbers_give_the_results_and_comparisons_the_fit_gives(computed):
             assert short.lookup(path) == full.lookup(path), path
 
 
+@GROUP
 def test_kept_results_hold_only_for_the_run_and_table_they_were_computed_from(computed, tmp_path):
     folder = tmp_path / "g"
     shutil.copytree(computed, folder)
@@ -115,6 +124,7 @@ def test_closing_writes_results_computed_since_the_last_save_and_keeps_its_time(
     assert data["kept"]["check"]["cause"] and data["modified"] == before
 
 
+@GROUP
 def test_a_read_only_session_writes_nothing(computed, tmp_path):
     folder = tmp_path / "g"
     shutil.copytree(computed, folder)
@@ -128,6 +138,7 @@ def test_a_read_only_session_writes_nothing(computed, tmp_path):
 
 
 @pytest.mark.parametrize("part", [5, "x", {"version": 1, "run": 5}, {"version": 99}])
+@GROUP
 def test_a_kept_part_that_cannot_be_read_is_passed_over(computed, tmp_path, part):
     folder = tmp_path / "g"
     shutil.copytree(computed, folder)
@@ -162,6 +173,7 @@ def test_a_schema_1_session_from_before_keeps_nothing_until_computed_then_reads_
         assert got.check is not None and got.check.cause == "coulomb_friction"
 
 
+@GROUP
 def test_a_change_to_the_code_that_computes_them_gives_another_key(computed, monkeypatch):
     # kept results follow the model check's and identify's code as well as the run: the key
     # hashes their source, so a new program never reads an old program's numbers as its own

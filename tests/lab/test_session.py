@@ -595,7 +595,7 @@ def test_the_computed_value_stands_in_the_unit_the_group_typed_theirs_in(tmp_pat
         s.enter("own.T", "57 ms")
         (label, yours, computed), *_ = [c for c in views.comparisons(s, "task12") if c[1] != "—"]
         assert yours == "57 ms" and computed.startswith(f"read your way {T * 1e3:.4g} ms"), computed
-        s.enter("own.T", "0.057")  # no unit typed: seconds, shown in ms as T is everywhere
+        s.enter("own.T", "0.057 s")  # typed in s: shown in ms, as T is everywhere
         (_, yours, computed), *_ = [c for c in views.comparisons(s, "task12") if c[1] != "—"]
         first = computed.splitlines()[0]  # the second line is the least-squares T
         assert yours == "57 ms" and " ms (" in first and " s (" not in first

@@ -6,6 +6,8 @@ with a run of the seeded plant (tests/lab/test_compare.py's)."""
 
 from __future__ import annotations
 
+import pytest
+
 from minseg_tui.lab.content.expr import parse_formula
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
@@ -55,17 +57,20 @@ def test_far_off_readings_of_tasks_11_to_15_are_marked_wrong_close_ones_done(tmp
         assert s.step_status("task11") == "wrong"
 
 
-def test_a_unitless_57_for_T_is_refused_as_ambiguous_not_taken_as_57_s(tmp_path):
+def test_a_unitless_0_057_for_T_is_refused_as_ambiguous_not_taken_as_57_us(tmp_path):
+    """T's entry is in ms: a bare 57 is 57 ms; a bare 0.057 (seconds typed without the unit)
+    is refused with both readings offered."""
     with Session.create(tmp_path, ["A"]) as s:
-        e = s.enter("own.T", "57")
-        assert not e.ok and "'57' is ambiguous" in e.message
-        assert "'0.057 s' or '57 ms'" in e.message
-        assert s.enter("own.T", "0.057").ok and s.enter("own.T", "57 s").ok
+        e = s.enter("own.T", "0.057")
+        assert not e.ok and "'0.057' is ambiguous" in e.message
+        assert "'57 ms' or '0.057 s'" in e.message
+        assert s.enter("own.T", "57").ok and s.value("own.T") == pytest.approx(0.057)
+        assert s.enter("own.T", "0.057 s").ok and s.enter("own.T", "57 s").ok
 
 
 def test_an_answer_with_nothing_to_compare_it_with_is_stored_not_ticked(tmp_path):
     with Session.create(tmp_path, ["A"]) as s:  # no table, no run
-        assert s.enter("own.T", "0.057").ok
+        assert s.enter("own.T", "57").ok
         assert s.step_status("task12") == "unjudged"
         view = views.entry(s, "own.T")
         # what the value it is judged by waits for, and where (walk 8, D7)

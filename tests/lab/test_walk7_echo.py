@@ -25,9 +25,9 @@ def test_an_old_sessions_echo_of_T_in_seconds_reads_in_ms_now(tmp_path: Path) ->
     try:
         T = views.entry(s, "own.T")
         assert T is not None and T.ok and T.message == "", T  # typed the lab's way: no echo
-        s.enter("own.T", "0,085")
+        s.enter("own.T", "0,085 s")
         T = views.entry(s, "own.T")
-        assert T is not None and T.message == "read as 85 ms (typed 0,085)", T
+        assert T is not None and T.message == "read as 85 ms (typed 0,085 s)", T
         J = views.entry(s, "own.J")
         assert J is not None and J.message == "read as 0.00271 kg m^2", J
     finally:

@@ -113,7 +113,7 @@ def test_exponent_notation_is_echoed_and_T_out_of_range_is_warned():
         t = read_entry(FIELDS["own.T"], text)
         assert t.ok and t.warnings and "tens of ms" in t.warnings[0], text
     assert read_entry(FIELDS["own.T"], "57 ms").warnings == ()
-    assert read_entry(FIELDS["own.T"], "0.043").warnings == ()
+    assert read_entry(FIELDS["own.T"], "43").warnings == ()
 
 
 def test_a_negative_k_v_keeps_the_run_and_only_J_waits(tmp_path):

@@ -149,6 +149,12 @@ def report(tmp_path_factory):
     return html, md, mc.result, step, log, s.folder
 
 
+GROUP = pytest.mark.xdist_group("figures-report")
+"""The tests reading :func:`report` run on one worker under make test's -n 2 (--dist
+loadgroup), so the module fixture's session and report are built once, not once per worker."""
+
+
+@GROUP
 def test_every_figure_has_axis_labels_with_units_and_its_legend_off_the_data(report):
     html, md, *_, folder = report
     figs = _figures(html)
@@ -183,6 +189,7 @@ def _crossings(log) -> list[tuple[float, float, float]]:
     return out
 
 
+@GROUP
 def test_the_zoomed_step_marks_the_63_percent_level_and_its_crossing(report):
     html, _, _, step, log, _ = report
     ((fig, caption),) = [f for f in _figures(html) if "reading of one rise of run" in f[1]]
@@ -204,6 +211,7 @@ def test_the_zoomed_step_marks_the_63_percent_level_and_its_crossing(report):
     assert "Tasks 11-12" in caption
 
 
+@GROUP
 def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     html, _, result, *_ = report
     cu = result.close_up
@@ -235,6 +243,7 @@ def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     assert "angle error (rad)" == _texts(angle, "ylabel")[0].text
 
 
+@GROUP
 def test_the_model_check_section_leads_with_what_a_student_reads(report):
     """Issue 20, item 4: two or three sentences about the close-up (what the first-order
     model gets wrong at its step, the cause in everyday words, the gain in one figure),
@@ -274,6 +283,7 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
         assert shown == pytest.approx([result.extended.params[p], lo, hi], rel=1e-3)
 
 
+@GROUP
 def test_the_step_section_gives_k_with_its_interval_and_the_63_percent_note(report):
     _, md, _, step, _, _ = report
     section = md.split("## Step response and model", 1)[1].split("\n## ", 1)[0]

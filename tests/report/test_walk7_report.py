@@ -10,6 +10,7 @@ from pathlib import Path
 from minseg_tui.lab.state.session import Session
 from minseg_tui.quantities import format_constant
 from minseg_tui.report.write import write_report
+from tests.lab.test_walk7_grading import _lab
 from tests.report.test_own_first import _row, _section, _tables
 from tests.report.test_report import _session
 
@@ -52,3 +53,32 @@ def test_the_report_says_first_what_was_not_answered(tmp_path: Path) -> None:
     assert "Task 11: the static gain K: the group's K" in warnings, warnings
     summary = _section(md, "Summary and reflections")
     assert "not answered" in summary  # and where it stands
+
+
+def test_a_negative_k_v_report_shows_K_T_and_the_63_percent_reading(tmp_path: Path) -> None:
+    """Walk 7, D14: i_ss typed in A makes the table's k_v negative. The screen shows omega_ss
+    in the steps, K, T and the 63 % reading from the run alone; the report said only "No
+    step result yet". It now gives the same rows, with J waiting for the table and why."""
+    s = _lab(tmp_path)
+    s.enter("i_ss@3.5", "4.7 A")
+    s.enter("i_ss@2.5", "4.7 A")
+    s.enter("own.omega_step", "7.8")
+    s.enter("own.K", "1.93")
+    s.enter("own.T", "56 ms")
+    res = s.results()
+    assert res.identification is None and res.response is not None  # the run alone
+    st = res.response
+    md = _report(s)
+    s.close()
+    results = _section(md, "Step response and model")
+    assert "No step result yet" not in results, results
+    (table,) = _tables(results)
+    K = _row(table, "K (Task 11)")
+    assert K["the group's value"] == "1.93 rad/s/V" and "✓ right" in K["difference"], K
+    assert K["the program's value (least squares)"].startswith(format_constant(st.K, "rad/s/V"))
+    T = _row(table, "T (Task 12)")
+    assert T["computed or read the group's way"].startswith(format_constant(st.T_63, "s"))
+    assert T["the program's value (least squares)"].startswith(format_constant(st.T, "s"))
+    J = _row(table, "J (Task 13)")
+    assert "J needs R, k_v and f" in J["the program's value (least squares)"], J
+    assert "positive k_v" in " ".join(results.split())  # why J waits

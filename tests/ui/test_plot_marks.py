@@ -29,7 +29,7 @@ def _axis(lines: list[str]) -> tuple[dict[int, float], int]:
 async def _zoomed(pilot) -> Canvas:
     app = pilot.app
     await start_with_a_run(pilot, "task12")
-    enter_all(app, {"own.T": "0.057"})  # the crossing shows once the group has its T
+    enter_all(app, {"own.T": "57"})  # the crossing shows once the group has its T
     app.lab_changed.publish(None)
     await settle(
         pilot, lambda: "crossing" in {t.label for t in app.screen.query_one(ResponsePlot).traces}

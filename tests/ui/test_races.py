@@ -9,10 +9,20 @@ the machine's load. (CI failed once on the same defect with the board check: 1b5
 
 from __future__ import annotations
 
+import threading
+
+from textual.message import Message
+from textual.worker import Worker, WorkerState
+
 from minseg_tui.device.link import LinkEvent
 from minseg_tui.errors import DeviceError
+from minseg_tui.report.write import write_report
+from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.messages import LinkEventArrived, MotorKnown, NoCounts
-from tests.ui.helpers import burst, goto, heard_notifications, settle, start
+from tests.ui.conftest import DATE
+from tests.ui.fakes import QuietDevice
+from tests.ui.helpers import burst, enter_all, goto, heard_notifications, settle, start
 from tests.ui.test_walk7_keys import SlowBoard, post_keys, pump
 
 
@@ -105,3 +115,48 @@ async def test_what_the_link_said_while_a_command_was_on_its_way_is_read_once_it
         await settle(pilot)
         assert not dev.stalled
         assert app.motor == "off" and app.requested is None
+
+
+async def test_two_exports_leave_the_newer_report_on_disk(tmp_path):
+    """F8, a change, F8 again while the first report is still being written: both writers
+    ran at once on the same files, and the first (the older snapshot) finishing last stood
+    on disk after the second was said written. The second now writes after the first, the
+    newest snapshot last."""
+    gate = threading.Event()
+    calls: list[int] = []
+    finished: list[str] = []
+
+    def writer(session):
+        calls.append(len(calls))
+        if len(calls) == 1:  # the first export waits until the second is asked for
+            assert gate.wait(SlowBoard.GUARD), "the first export was never let go on"
+        paths = write_report(session).paths
+        entry = session.entry("summary.unclear")
+        finished.append(entry.typed if entry is not None else "")
+        return paths
+
+    cfg = UiConfig(device="auto", sessions=tmp_path, today=DATE, animations=False, refresh=0)
+    dev = QuietDevice(seed=1)
+    app = LabApp(cfg, lambda spec: dev, writer)
+    started: list[Worker[object]] = []
+
+    def hook(message: Message) -> None:
+        """Keep every report worker that starts (the second cancels the first)."""
+        if isinstance(message, Worker.StateChanged) and message.worker.group == "export":
+            if message.state == WorkerState.RUNNING:
+                started.append(message.worker)
+
+    async with app.run_test(size=(80, 24), message_hook=hook) as pilot:
+        await start(pilot)
+        enter_all(app, {"summary.unclear": "the first export"})
+        post_keys(app, "f8")
+        await pump(pilot, lambda: len(calls) == 1)
+        enter_all(app, {"summary.unclear": "the second export"})
+        post_keys(app, "f8")
+        await pump(pilot, lambda: len(started) == 2)
+        gate.set()
+        await settle(pilot, lambda: bool(app.exported))
+        assert finished[-1] == "the second export", finished
+        md = next(p for p in app.exported if p.endswith("report.md"))
+    text = " ".join(open(md, encoding="utf-8").read().split())
+    assert "the second export" in text and "the first export" not in text

@@ -29,16 +29,19 @@ async def test_a_J_with_f_in_mN_m_s_per_rad_gets_a_cross_and_the_unit_named(quie
         assert nav_mark(app, "task13") == "✗"
 
 
-async def test_a_unitless_57_for_T_is_refused_and_an_unjudged_T_not_ticked(quiet):
+async def test_a_unitless_0_057_for_T_is_refused_and_an_unjudged_T_not_ticked(quiet):
+    """T's entry is in ms (a bare 57 is 57 ms): a bare 0.057, seconds typed without the
+    unit, is refused as ambiguous with both readings offered."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await goto(pilot, "task12")
-        row = await type_in(pilot, "own.T", "57")
+        row = await type_in(pilot, "own.T", "0.057")
         await settle(pilot)
-        assert "'57' is ambiguous" in row.message and "'57 ms'" in " ".join(row.message.split())
+        said = " ".join(row.message.split())
+        assert "'0.057' is ambiguous" in said and "'57 ms'" in said and "'0.057 s'" in said
         assert nav_mark(app, "task12") == "?"
-        await pilot.press("ctrl+u", *"0.057", "enter")
+        await pilot.press("ctrl+u", *"57", "enter")
         await settle(pilot)
         assert "not judged yet" in " ".join(row.message.split())
         assert nav_mark(app, "task12") == "○"  # stored, nothing to judge it by: its own mark

@@ -147,7 +147,7 @@ async def test_task_12_gives_T_in_ms_only(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task12")
-        await type_in(pilot, "own.T", "0,057")
+        await type_in(pilot, "own.T", "57")
         await settle(pilot)
         lines = " ".join(str(app.screen.query_one("#results-lines").render()).split())
         compare = " ".join(str(app.screen.query_one("#compare").render()).split())

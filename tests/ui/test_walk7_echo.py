@@ -16,7 +16,7 @@ async def test_a_resumed_sessions_T_echo_reads_in_ms(quiet, tmp_path):
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await goto(pilot, "task12")
-        row = await type_in(pilot, "own.T", "0,085")
+        row = await type_in(pilot, "own.T", "0,085 s")
         assert row.message.startswith("read as 85 ms"), row.message
     (saved,) = list_sessions(tmp_path / "sessions")
     path = saved.path / "session.json"

@@ -715,10 +715,10 @@ _LAB: tuple[Step, ...] = (
             Field(
                 "own.T",
                 "your T",
-                unit="s",
+                unit="ms",
                 optional=True,
                 compare="step.T_63",
-                hint="in s or ms, e.g. 0.12 s or 120 ms",
+                hint="in ms, e.g. 120 ms (or 0.12 s)",
                 plausible=(_T_PLAUSIBLE,),
             ),
         ),

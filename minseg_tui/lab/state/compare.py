@@ -79,6 +79,15 @@ def _is_slip(own: float, slip: float, right: float) -> bool:
     return off <= SLIP and off < abs(own / right - 1.0)
 
 
+def K_by_request(own_K: float, omega: float, u_ss: float) -> bool:
+    """Whether a group's K (rad/s/V) is its omega_ss (rad/s) divided by the step's requested
+    :data:`STEP_LEVEL` (V) rather than by the measured ``u_ss`` (V) the task asks for: the
+    slip Task 11 names, within :data:`SLIP` of it and nearer to it than to the right K."""
+    if not (u_ss and omega):
+        return False
+    return _is_slip(own_K, omega / STEP_LEVEL, omega / u_ss)
+
+
 def u_ss_missing(level: float = STEP_LEVEL) -> str:
     """Why K is not judged while the group's u_ss at ``level`` (V) is not entered."""
     return (
@@ -262,7 +271,7 @@ def compare_fields(
                     own_K is not None
                     and u_row is not None
                     and isinstance(computed, float)
-                    and _is_slip(own_K, w_used / STEP_LEVEL, computed)
+                    and K_by_request(own_K, w_used, u_row)
                 ):
                     right, verdict = (
                         False,
@@ -529,6 +538,7 @@ __all__ = [
     "READ_63",
     "REVEALED_EARLY",
     "SLIP",
+    "K_by_request",
     "STEP_LEVEL",
     "Policy",
     "compare_fields",

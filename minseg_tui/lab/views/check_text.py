@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 from minseg_tui.model.check import CheckResult, Gain
 from minseg_tui.model.check.words import params
-from minseg_tui.quantities import format_number
+from minseg_tui.quantities import MISSING, format_number
 
 
 @dataclass(frozen=True)
@@ -79,26 +79,70 @@ def figure(gain: Gain | Mapping[str, float | None], key: str) -> tuple[float | N
     return None, None
 
 
-def _pair(r: CheckResult, key: str) -> str:
-    """A figure's name and 'baseline -> extended' with its unit (three digits)."""
-    words = figure_words(key)
-    b, e = figure(r.gain, key)
+GAIN_DIGITS = 3
+"""Significant digits of a gain figure, wherever one is shown (the CLI's text, the screen's
+details, the report's table, the lead's sentence)."""
+
+
+@dataclass(frozen=True)
+class Compared:
+    """One gain figure of both models, its values written once for every place that shows
+    the before and after (``analyze``'s text, the screen's details, the report's table):
+    ``words`` (its name and unit); ``b`` and ``e`` the first-order and the extended model's
+    value in that unit (``e`` None when the log does not give it), ``first`` and
+    ``extended`` the same written with :data:`GAIN_DIGITS` digits and no unit (``extended``
+    None when no cause is named or the log does not give it); ``to_noise``: the extended
+    model leaves none of this error above the noise where the first-order model leaves
+    some."""
+
+    words: FigureWords
+    b: float
+    e: float | None
+    first: str
+    extended: str | None
+    to_noise: bool
+
+    def with_unit(self, value: str) -> str:
+        """``value`` (:attr:`first` or :attr:`extended`) with the figure's unit, as
+        :func:`~minseg_tui.quantities.format_value` writes it (no unit after MISSING)."""
+        return value if value == MISSING else f"{value} {self.words.unit}".rstrip()
+
+
+def compared(gain: Gain | Mapping[str, float | None], key: str, named: bool) -> Compared | None:
+    """Gain figure ``key`` (either model's key, or its :func:`stem`) of both models, for a
+    check that named a cause (``named``) or not; None when the log does not give it."""
+    b, e = figure(gain, key)
     if b is None:
-        return f"{words.name} n/a"
-    if r.finding.cause == "none" or e is None:
-        return f"{words.name} {_n(b)} {words.unit}"
-    if e == 0 and b > 0 and stem(key).startswith("above"):
+        return None
+    words = figure_words(key)
+    if not named or e is None:
+        return Compared(words, b, e, format_number(b, GAIN_DIGITS), None, False)
+    to_noise = e == 0 and b > 0 and stem(key).startswith("above")
+    return Compared(
+        words, b, e, format_number(b, GAIN_DIGITS), format_number(e, GAIN_DIGITS), to_noise
+    )
+
+
+def _pair(r: CheckResult, key: str) -> str:
+    """A figure's name and 'baseline -> extended' with its unit (:func:`compared`)."""
+    c = compared(r.gain, key, r.finding.cause != "none")
+    if c is None:
+        return f"{figure_words(key).name} n/a"
+    name, unit = c.words.name, c.words.unit
+    if c.extended is None:
+        return f"{name} {c.first} {unit}"
+    if c.to_noise:
         rms = r.gain.extended_rmse
         return (
-            f"{words.name} {_n(b)} -> 0 {words.unit}, the extended model's rms error "
-            f"({_n(rms)} {words.unit}) is no larger than the noise"
+            f"{name} {c.first} -> 0 {unit}, the extended model's rms error "
+            f"({_n(rms)} {unit}) is no larger than the noise"
         )
-    return f"{words.name} {_n(b)} -> {_n(e)} {words.unit}"
+    return f"{name} {c.first} -> {c.extended} {unit}"
 
 
 def _n(x: float | None) -> str:
     """A figure of the gain with three significant digits, trailing zeros kept."""
-    return format_number(x, 3) if x is not None else "n/a"
+    return format_number(x, GAIN_DIGITS) if x is not None else "n/a"
 
 
 CAVEATS = "What the check cannot say here:"

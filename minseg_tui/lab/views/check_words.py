@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from minseg_tui.lab.views.check_text import figure, figure_words, stem
+from minseg_tui.lab.views.check_text import GAIN_DIGITS, figure, figure_words, stem
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
 from minseg_tui.quantities import (
@@ -235,10 +235,6 @@ def _cause(r: CheckResult) -> str:
     if alike:
         text += f" This run cannot tell it from {' or '.join(alike)}."
     return text
-
-
-GAIN_DIGITS = 3
-"""Significant digits of a gain figure, in the lead's sentence as in the details' table."""
 
 
 def _gain(r: CheckResult) -> str:

@@ -14,7 +14,8 @@ sets the groups side by side and says, in words, what stands out:
 
 - the slips the lab manual warns about (:func:`slips`): i_ss above 100 mA (or a current
   typed in amperes into the mA column), R outside 3-6 Ω, an omega_ss that looks like rpm,
-  a u_ss above the requested voltage;
+  a u_ss above the requested voltage, the group's K divided by the requested step height
+  (4.5 V) rather than by its measured u_ss;
 - a value far from the rest of the class (:func:`spread` and :func:`outliers`), judged by
   the median and the median absolute deviation.
 
@@ -37,6 +38,7 @@ from minseg_tui.lab.content.steps import LEVELS
 from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import read_run
 from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_key
+from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import NO_RUN_YET, Session
 from minseg_tui.lab.views import own_first
@@ -411,6 +413,16 @@ def slip_list(session: Session) -> list[Slip]:
                     (*FROM_TABLE, "K"),  # K divides by the table's u_ss
                 )
             )
+    own_K, own_w = session.value("own.K"), session.value("own.omega_step")
+    u_step = session.value(f"u_ss@{STEP_LEVEL:g}")
+    if own_K is not None and own_w is not None and u_step and K_by_request(own_K, own_w, u_step):
+        out.append(
+            Slip(
+                f"K = {format_number(own_K)} rad/s/V is omega_ss ÷ {STEP_LEVEL:g} V (the requested step "
+                f"height), not ÷ the measured u_ss = {format_number(u_step)} V (Task 11): "
+                f"{format_number(own_w)} / {u_step:.3g} = {format_number(own_w / u_step)} rad/s/V."
+            )
+        )  # the group's own K only: the program's K, which the class is judged on, is right
     return out
 
 

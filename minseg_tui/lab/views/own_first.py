@@ -341,7 +341,9 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
     ident = res.identification
     st = ident.step if ident is not None else None
     kept = res.kept_response if st is None else None
-    if ident is None or (st is None and kept is None):
+    if st is None and kept is None:
+        st = res.response  # the run alone (the table gives no k_v): J waits, the rest stands
+    if st is None and kept is None:
         return ()
 
     def program(key: str, unit: str) -> str:
@@ -359,9 +361,14 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
         if key == "own.T":
             return f"{q(st.T, unit)} ({_interval(st.T_ci, st.T_determined, unit)})"
         if key == "own.J":
+            if not math.isfinite(st.J):
+                return "not computed: J needs R, k_v and f from the table of Tasks 2-9"
             return f"{q(st.J, unit)} (from the least-squares T)"
         if key == "own.omega_5":
-            w5 = _value(ident.omega_at_5V, unit) or "not computed"
+            w5 = (
+                _value(ident.omega_at_5V if ident is not None else st.K * U_TASK15, unit)
+                or "not computed"
+            )
             return f"{w5} (5 V × the least-squares K)"
         return st.model_equation(format_number)
 

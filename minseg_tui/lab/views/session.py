@@ -1174,17 +1174,15 @@ _stem = check_text.stem
 def _figure(gain: Gain, key: str, named: bool) -> str | None:
     """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
     None when the log does not give it; only the baseline's when no cause was named."""
-    stem = _stem(key)
-    b, e = check_text.figure(gain, key)
-    unit = check_text.figure_words(stem).unit
-    if b is None or (b == 0 and not e):
+    c = check_text.compared(gain, key, named)
+    if c is None or (c.b == 0 and not c.e):
         return None  # not to be had, or nothing to show (no error above the noise at all)
-    if not named or e is None:
-        return f"first order {format_value(b, unit, 3)}"
-    if e == 0 and stem.startswith("above"):
-        shown = format_value(b, unit, 3)
+    if c.extended is None:
+        return f"first order {c.with_unit(c.first)}"
+    if c.to_noise:
+        shown = c.with_unit(c.first)
         return f"first order {shown} → extended 0 (rms error no larger than the noise)"
-    return f"first order {format_number(b, 3)} → extended {format_value(e, unit, 3)}"
+    return f"first order {c.first} → extended {c.with_unit(c.extended)}"
 
 
 def check(session: Session) -> CheckView:

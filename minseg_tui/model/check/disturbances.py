@@ -111,7 +111,6 @@ def find(
     own_level: bool = True,
     carry: int = 0,
     recover: int = 0,
-    longer: bool = False,
 ) -> list[Disturbance]:
     """Disturbances in the settled part of every driven stretch (see the module docstring).
 
@@ -122,9 +121,7 @@ def find(
     rows (a model that fits: a long disturbance cannot shift its own reference); ``carry``:
     rows the measured speed carries a disturbance on after it ends (an average over that
     many samples); ``recover``: rows at most the wheel takes to rejoin the model after a
-    disturbance lets go (see :func:`rejoin`); ``longer``: where the noise sets the
-    threshold, look at the running median over ``LONG`` rows too (against a model that
-    follows the steps: the baseline's miss of a lag would stand out over so many rows).
+    disturbance lets go (see :func:`rejoin`).
     """
     spans = _spans(u, settle)
     ts = float(np.median(np.diff(t))) if t.size > 1 else 0.0
@@ -146,8 +143,6 @@ def find(
             continue
         sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")
         out_rows = np.abs(sm) > thr
-        if longer and thr > share * speed:  # the noise sets the threshold: look longer too
-            out_rows |= _held(dev, noise, share * speed)
         k = 0
         while k < out_rows.size:
             if not out_rows[k]:
@@ -185,29 +180,6 @@ def find(
                         )
                     )
             k = j + 1
-    return out
-
-
-LONG = 9
-"""Rows of the running median a longer, shallower departure is looked at through: a hand
-that slows a wheel read at 10 ms from counts (a count's worth of noise on every row) stays
-under the threshold of ``SMOOTH`` rows, however long it holds."""
-
-
-def _held(dev: FloatArray, noise: float, share: float) -> NDArray[np.bool_]:
-    """Rows where the running median of ``dev`` (rad/s) over ``LONG`` rows departs by more
-    than ``SIGMAS`` times the noise of a mean over as many rows and ``share`` (rad/s): a
-    median, so that a single wild row cannot make it (a mean over ``LONG`` rows would
-    spread it over all of them)."""
-    out = np.zeros(dev.size, dtype=bool)
-    if dev.size < LONG:
-        return out
-    med = np.median(np.lib.stride_tricks.sliding_window_view(dev, LONG), axis=1)
-    thr = max(SIGMAS * noise / math.sqrt(LONG), share)
-    if thr <= 0:
-        return out
-    h = LONG // 2
-    out[h : h + med.size] = np.abs(med) > thr
     return out
 
 

@@ -197,7 +197,6 @@ def check(
         False,
         taps - 1,
         rise,
-        longer=True,
     )
     # a stall's late read is the logger's, whichever edge it follows: it is no edge's miss
     stalls = _at_gaps(found2, full.y - ext.predict(full), an.gap_starts(t, samp.ts), taps)
