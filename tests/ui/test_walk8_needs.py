@@ -28,6 +28,7 @@ def test_every_derived_value_names_the_readings_it_waits_for():
     assert needs(("R",)) == "needs R (Task 2)"
     assert needs(("R", "i_ss")) == "needs R (Task 2) and i_ss (Task 5)"
     assert needs_short(("R", "i_ss")) == "needs R…"
+    assert needs_short(("omega_ss", "i_ss")) == "needs omega_ss"  # at most 14 characters
 
 
 def _text(app, selector: str) -> str:
@@ -135,3 +136,23 @@ def test_the_report_without_a_run_says_the_step_result_needs_one(tmp_path):
             s.enter(key, text)
         md = write_report(s).markdown.read_text(encoding="utf-8")
     assert "No step result yet: needs a step run (Task 10)" in md
+
+
+async def test_a_table_barely_begun_says_what_each_row_needs_and_fits_80_columns(quiet):
+    """R and one u_ss typed: each row's k_v and f name the first reading they wait for, and
+    the table stays within the pane at 80 columns (no scroll bar under it)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, {"R": "5.3", "u_ss@2.5": "2.05"})
+        await goto(pilot, "table")
+        await settle(pilot)
+        table = app.screen.query_one("#table", DataTable)
+        cells = [[str(table.get_cell_at((r, c))) for c in (4, 5)] for r in range(3)]
+        assert cells == [
+            ["needs omega_ss", "needs omega_ss"],
+            ["needs u_ss…", "needs omega_ss"],
+            ["needs u_ss…", "needs omega_ss"],
+        ]
+        assert table.virtual_size.width <= table.scrollable_content_region.width
+        assert not table.show_horizontal_scrollbar

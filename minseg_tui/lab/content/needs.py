@@ -39,7 +39,7 @@ NEEDS: dict[str, tuple[str, ...]] = {
     "k_v": ("R", "row"),
     "k_a": ("k_v",),
     "f": ("k_a", "row"),
-    "f@row": ("k_a", "omega_ss", "i_ss"),
+    "f@row": ("omega_ss", "i_ss", "k_a"),
     "K": ("run",),
     "T": ("run",),
     "J": ("T", "R", "k_v", "k_a", "f"),
@@ -82,13 +82,20 @@ def needs(inputs: Sequence[str]) -> str:
     return "needs " + ", ".join(said[:-1]) + " and " + said[-1]
 
 
+SHORT_WIDTH = 14
+"""The most characters :func:`needs_short` writes: two such cells (k_v, f) beside the
+table's four readings fit the pane at 80 columns (15 each put a scroll bar under it)."""
+
+
 def needs_short(inputs: Sequence[str]) -> str:
     """The first of the missing ``inputs`` by name alone, for a narrow cell: 'needs R',
-    'needs i_ss…' (more are missing: F7 gives them all); '' for none."""
+    'needs i_ss…' (the '…': more are missing, F7 gives them all; left out where it would
+    make the text wider than :data:`SHORT_WIDTH`: 'needs omega_ss'); '' for none."""
     if not inputs:
         return ""
     first = INPUTS[inputs[0]].name if inputs[0] != "row" else "a row"
-    return f"needs {first}" + ("…" if len(inputs) > 1 else "")
+    said = f"needs {first}"
+    return said + "…" if len(inputs) > 1 and len(said) < SHORT_WIDTH else said
 
 
-__all__ = ["INPUTS", "NEEDS", "Input", "missing", "needs", "needs_short"]
+__all__ = ["INPUTS", "NEEDS", "SHORT_WIDTH", "Input", "missing", "needs", "needs_short"]
