@@ -16,13 +16,21 @@ import math
 from dataclasses import dataclass
 from datetime import datetime, timedelta
 
+from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.content.steps import STEPS, RunPlan
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.shown import PolicyRecord
-from minseg_tui.lab.views.session import MARK, NOT_JUDGED, REVEAL_KEY, USES_RUN, answer
+from minseg_tui.lab.views.session import (
+    MARK,
+    NOT_JUDGED,
+    REVEAL_KEY,
+    USES_RUN,
+    answer,
+    waits_for,
+)
 from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
@@ -316,7 +324,8 @@ def table_rows(session: Session, results: Results | None = None) -> tuple[OwnRow
         computed = (
             f"{value} ({c.how or _TABLE_HOW.get(c.key, 'from the table')})"
             if value
-            else "not computed: the table is not complete"
+            else "not computed: "
+            + (needs(waits_for(session, c.key)) or "the table is not complete")
         )
         out.append(
             OwnRow(
