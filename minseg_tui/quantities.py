@@ -150,6 +150,22 @@ def format_diff(rel: float) -> str:
     return "0 %"
 
 
+def format_difference(
+    own: float | str | None, computed: float | str | None, digits: int = DIGITS
+) -> str:
+    """The group's value ``own`` against the value ``computed`` their way (same unit) as
+    :func:`format_diff` writes it, taken from the two numbers as they stand side by side:
+    ``computed`` to the ``digits`` it is shown with (:func:`format_number`). J typed 0.00182
+    beside 0.001819 reads "+0.1 %" (the full 0.0018192 is 0.04 % off and read "0 %"); 9.65
+    beside 9.650 reads "0 %". The one formatter of a difference on the screens, in the
+    report and in the class view; a grade keeps the full value. :data:`MISSING` unless both
+    are numbers and ``computed`` is not 0."""
+    if not isinstance(own, int | float) or not isinstance(computed, int | float) or not computed:
+        return MISSING
+    shown = float(format_number(computed, digits)) if math.isfinite(computed) else computed
+    return format_diff(own / (shown or computed) - 1.0)
+
+
 def format_fixed(value: float, decimals: int, unit: str = "") -> str:
     """``value`` (already in ``unit``) with a fixed number of ``decimals``, as an instrument or
     a clock shows it: the virtual multimeter ("2.05 V", "29.8 mA"), a live mean ("3.82"), a

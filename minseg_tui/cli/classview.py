@@ -31,7 +31,7 @@ from minseg_tui.lab.views.classview import (
     members,
     own_cell,
 )
-from minseg_tui.quantities import MISSING, format_number
+from minseg_tui.quantities import MISSING
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -77,10 +77,7 @@ def text(view: ClassView) -> str:
             g.id,
             members(g),
             g.step or MISSING,
-            *(
-                format_number(None if (v := g.value(q.key)) is None else q.number(v))
-                for q in QUANTITIES
-            ),
+            *(q.text(g.value(q.key)) for q in QUANTITIES),
             g.cause or MISSING,
             own_cell(g),
         ]
@@ -93,15 +90,17 @@ def text(view: ClassView) -> str:
     ]
     lines.append("units: " + ", ".join(f"{q.key} {q.display}" for q in QUANTITIES))
     for k, g in enumerate(view.groups, 1):
-        if not (g.flags or g.lacks):
+        if not (g.flags or g.lacks or g.notes):
             continue
         lines.append("")
         who = f"{members(g)}, {g.date or 'no date'}" if g.readable else "cannot be read"
         lines.append(f"#{k} {g.id} ({who})")
         lines += [f"  ! {f}" for f in g.flags]
         lines += [f"  - lacks: {x}" for x in g.lacks]
+        lines += [f"  - note: {x}" for x in g.notes]
     if not any(g.flags for g in view.groups):
-        lines += ["", "Nothing stands out."]
+        noted = any(g.notes for g in view.groups)
+        lines += ["", "Nothing marked '!'." if noted else "Nothing stands out."]
     lines += ["", f"'!': {MARKED}. {NOT_MARKED}"]
     return "\n".join(lines)
 

@@ -86,11 +86,14 @@ def flash_hint(port: str) -> str:
 
 @dataclass(frozen=True)
 class LinkEvent:
-    """Something the session should hear about. kind: one of EVENT_KINDS; t_host: s (monotonic)."""
+    """Something the session should hear about. kind: one of EVENT_KINDS; t_host: s
+    (monotonic); silent_s: for ``alive``, how long the board had not answered (s, host
+    clock), so that the answer can say the silence it ends (None for the other kinds)."""
 
     kind: str
     message: str
     t_host: float
+    silent_s: float | None = None
 
 
 @dataclass
@@ -482,8 +485,8 @@ class Link:
             self._events.clear()
         return out
 
-    def _emit(self, kind: str, message: str) -> None:
-        ev = LinkEvent(kind, message, time.monotonic())
+    def _emit(self, kind: str, message: str, silent_s: float | None = None) -> None:
+        ev = LinkEvent(kind, message, time.monotonic(), silent_s)
         with self._lock:
             self._events.append(ev)
         if self.on_event is not None:
@@ -545,10 +548,13 @@ class Link:
                 self._bad_lines += 1
                 self.stats.corrupt += 1
             return
-        self._last_rx = self._clock()
+        before, self._last_rx = self._last_rx, self._clock()
         if self._silent:
             self._silent = False
-            self._emit("alive", f"{self.port}: the board answers again")
+            gap = self._last_rx - before
+            self._emit(
+                "alive", f"{self.port}: the board answers again after {gap:.1f} s", silent_s=gap
+            )
         if isinstance(msg, P.SampleLine):
             self._on_sample(msg)
         elif isinstance(msg, P.Ok | P.Err | P.Ident | P.Meter | P.Diag):

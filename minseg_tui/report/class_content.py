@@ -23,7 +23,7 @@ from minseg_tui.lab.views.classview import (
     members,
     own_cell,
 )
-from minseg_tui.quantities import MISSING, format_number, format_quantity
+from minseg_tui.quantities import MISSING, format_quantity
 from minseg_tui.report.content import Figure, Figures, Report, Section, Table
 from minseg_tui.report.svg import Band, Line, Mark, plot
 
@@ -53,10 +53,7 @@ def table(view: ClassView) -> Table:
                 members(g),
                 g.date or MISSING,
                 g.step or MISSING,
-                *(
-                    format_number(None if (v := g.value(q.key)) is None else q.number(v))
-                    for q in QUANTITIES
-                ),
+                *(q.text(g.value(q.key)) for q in QUANTITIES),
                 g.cause or MISSING,
                 own_cell(g),
                 str(len(g.flags)) if g.flags else "",
@@ -122,11 +119,12 @@ def _figure(view: ClassView, key: str) -> Figure | None:
 def stand_out(view: ClassView) -> Table | None:
     """What stands out, one row per group that has something (the group named once, its
     number in the class table beside it), each flag a sentence on a line of its own (one
-    paragraph in Markdown); None when nothing does."""
+    paragraph in Markdown), then its notes (an interrupted run in use: not marked '!', but
+    what K, T and J rest on); None when nothing does."""
     rows = tuple(
-        (str(k), f"{members(g)}\n{g.id}", "\n".join(g.flags))
+        (str(k), f"{members(g)}\n{g.id}", "\n".join((*g.flags, *(f"note: {x}" for x in g.notes))))
         for k, g in enumerate(view.groups, 1)
-        if g.flags
+        if g.flags or g.notes
     )
     return Table(("#", "group", "what stands out"), rows) if rows else None
 
@@ -136,7 +134,7 @@ def build(view: ClassView) -> Report:
     n = len(view.groups)
     sections = [Section("Groups", [table(view)])]
     sections[0].blocks.append(
-        "Numbers in the units of the header (SI, but f in mN m s/rad as in the lab's table); T_63 is the 63 % reading, T the "
+        "Numbers in the units of the header (SI, but f in mN m s/rad and T in ms as in the lab; R as typed); T_63 is the 63 % reading, T the "
         "least-squares fit on the encoder angle. 'own vs computed' is how far the group's own "
         "values are from the computed ones. '–': not computed yet (see What is missing)."
     )

@@ -16,9 +16,10 @@ import numpy as np
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
-from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.session import Session, TableRow
 from minseg_tui.lab.views import check_text, check_words, own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import rise_zoom
@@ -100,8 +101,18 @@ def _reading(value: float | None, unit: str, missing: str = MISSING) -> str:
 NOT_ENTERED = "not entered"
 """A reading of the table the group has not entered."""
 
-NOT_COMPUTED = "not computed: the row is incomplete"
-"""k_v or f of a row without all three readings (or without R)."""
+NOT_COMPUTED = "not computed"
+"""k_v or f of a row not computed though nothing is missing (the warnings say why); with a
+reading missing, what it needs follows (:func:`_row_value`)."""
+
+
+def _row_value(session: Session, name: str, r: TableRow, value: float | None, unit: str) -> str:
+    """A row's computed ``name`` (k_v, f) in ``unit``, or why there is none: 'not computed:
+    needs R (Task 2)' (:func:`~minseg_tui.lab.views.session.waits_for`)."""
+    if value is not None:
+        return format_quantity(value, unit)
+    why = needs(views.waits_for(session, f"{name}@row", r))
+    return f"{NOT_COMPUTED}: {why}" if why else NOT_COMPUTED
 
 
 def _verdicts(session: Session) -> dict[str, lab_steps.Feedback]:
@@ -207,8 +218,8 @@ def _table_section(session: Session) -> Section:
                 omega,
                 window,
                 _reading(r.i_ss, "mA", NOT_ENTERED),
-                NOT_COMPUTED if r.k_v is None else format_quantity(r.k_v, "V s/rad"),
-                NOT_COMPUTED if r.f is None else format_quantity(r.f, _F_UNIT),
+                _row_value(session, "k_v", r, r.k_v, "V s/rad"),
+                _row_value(session, "f", r, r.f, _F_UNIT),
             )
         )
     sec = Section("Steady state (Tasks 2 and 4-9)")
@@ -239,6 +250,10 @@ def _table_section(session: Session) -> Section:
             Table(own_first.TABLE_HEADER, tuple(r.cells for r in own_first.table_rows(session)))
         )
         sec.blocks.append(own_first.MARKS_SAID)
+    else:
+        why = needs(views.waits_for(session, "f"))
+        if why:
+            sec.blocks.append(f"The motor constants k_v, k_a and f: {NOT_COMPUTED}, {why}.")
     return sec
 
 
@@ -258,9 +273,9 @@ def _step_section(session: Session) -> Section:
     # screen shows them; only J waits for the table
     s = ident.step if ident is not None and ident.step is not None else res.response
     if s is None:
-        sec.blocks.append(
-            "No step result yet" + (": " + "; ".join(res.problems) if res.problems else ".")
-        )
+        why = needs(views.waits_for(session, "K"))  # no run yet: say so, and where
+        said = [*res.problems, why] if why else list(res.problems)
+        sec.blocks.append("No step result yet" + (": " + "; ".join(said) if said else "."))
         return sec
     rows = own_first.step_rows(session)
     sec.blocks.append(

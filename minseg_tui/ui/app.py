@@ -49,6 +49,7 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
 from minseg_tui.lab.views import session as lab_views
 from minseg_tui.model.plant import MeterReading
+from minseg_tui.quantities import format_fixed
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
 from minseg_tui.ui.keys import app_bindings, help_lines
@@ -101,6 +102,22 @@ EVENT_TEXT: dict[str, str] = {
     "motor": "motor off after the restart: nothing restored",
 }
 """What the status line says at once for a link event (``error`` shows the link's own line)."""
+
+
+def alive_text(silent_s: float | None, virtual: bool) -> str:
+    """What the status line says when the board answers after a silence: the silence it ends
+    with its length (s, host clock), so that the line is true even when the silence was too
+    short to be seen (the PC busy: the two link events handled in one pass). The virtual
+    MinSeg runs on the PC, so its silence can only be the PC being busy, and is said so
+    ("paused 0.6 s (PC busy)"; a board: "silent 0.6 s, answers again"), short enough for the
+    status line at 80 columns."""
+    if silent_s is None:
+        return EVENT_TEXT["alive"]
+    lasted = format_fixed(silent_s, 1, "s")
+    if virtual:
+        return f"paused {lasted} (PC busy)"
+    return f"silent {lasted}, answers again"
+
 
 PASSING_EVENTS = frozenset({"alive", "connected"})
 """Link events whose words are good news: shown for :data:`TRANSIENT_SHOWN`, then the link's
@@ -536,6 +553,9 @@ class LabApp(App[None]):
             self.link = self.link.after(ev, "")
             return
         text = EVENT_TEXT.get(kind, ev.message)
+        if kind == "alive":
+            device = self._device
+            text = alive_text(ev.silent_s, device is not None and device.board is not None)
         self.link = self.link.after(ev, text, kind in PASSING_EVENTS, self.live.latest)
         if kind in ("disconnected", "watchdog", "error", "motor"):
             self.notify(

@@ -61,7 +61,7 @@ async def test_rows_detail_and_opening_a_group_read_only(tmp_path):
         await pilot.press("down")
         await settle(pilot)
         detail = str(screen.query_one("#class-group", Static).render())
-        assert "#2 Cy, Di" in detail and "R = 12.00 Ω is outside the 3-6 Ω" in detail
+        assert "#2 Cy, Di" in detail and "R = 12 Ω is outside the 3-6 Ω" in detail
         await pilot.press("down", "down")
         await settle(pilot)
         detail = str(screen.query_one("#class-group", Static).render())

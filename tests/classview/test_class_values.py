@@ -26,6 +26,6 @@ def test_K_and_T_are_shown_when_only_i_ss_is_missing(tmp_path: Path) -> None:
         assert v is not None and v == full.value(key), key
     assert bare.value("J") is None and bare.value("k_v") is None  # these need i_ss
     cells = dict(zip(table(judge([bare])).header, table(judge([bare])).rows[0], strict=True))
-    labels = {q.key: q.label for q in QUANTITIES}
+    labels = {q.key: q.shown_label for q in QUANTITIES}
     assert cells[labels["K"]] != MISSING and cells[labels["T"]] != MISSING
     assert cells[labels["J"]] == MISSING

@@ -37,8 +37,7 @@ def test_the_sentence_says_value_median_and_how_far():
     assert s is not None
     why = outlier(s, 12.0)
     assert why == (
-        "R = 12.00 Ω is far above the class: 65 robust standard deviations from its median "
-        "of 5.200 Ω."
+        "R = 12 Ω is far above the class: 65 robust standard deviations from its median of 5.200 Ω."
     )
 
 

@@ -10,7 +10,7 @@ import pytest
 
 from minseg_tui.device import protocol as P
 from minseg_tui.device.factory import open_device
-from minseg_tui.device.link import Link
+from minseg_tui.device.link import Link, LinkEvent
 from minseg_tui.device.samples import SampleBatch, motion
 from minseg_tui.errors import DeviceError, InputError
 from minseg_tui.units import RAD_PER_COUNT
@@ -106,6 +106,30 @@ def test_board_that_stops_answering_is_reported(make_rig):
         assert wait_for(lambda: any(e.kind == "silent" for e in link.events()))
         rig.board.faults.silent = False
         assert wait_for(lambda: any(e.kind == "alive" for e in link.events()))
+    finally:
+        link.close()
+
+
+def test_the_answer_after_a_silence_says_how_long_it_lasted(make_rig):
+    """Walk 8, D5: the status line said "board answers again" with no silence said before
+    (both events handled in one pass on a busy PC): the answer now carries the silence's
+    length, at least the silence_s after which the silence was said."""
+    rig = make_rig()
+    link = rig.open(silence_s=0.5)
+    try:
+        rig.board.faults.silent = True  # the board double pauses
+        events: list[LinkEvent] = []
+
+        def seen(kind: str) -> bool:
+            events.extend(link.events())
+            return any(e.kind == kind for e in events)
+
+        assert wait_for(lambda: seen("silent"))
+        rig.board.faults.silent = False
+        assert wait_for(lambda: seen("alive"))
+        (alive,) = [e for e in events if e.kind == "alive"]
+        assert alive.silent_s is not None and alive.silent_s >= 0.5
+        assert f"answers again after {alive.silent_s:.1f} s" in alive.message
     finally:
         link.close()
 

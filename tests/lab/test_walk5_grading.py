@@ -73,7 +73,10 @@ def test_an_answer_with_nothing_to_compare_it_with_is_stored_not_ticked(tmp_path
         assert s.enter("own.T", "57").ok
         assert s.step_status("task12") == "unjudged"
         view = views.entry(s, "own.T")
-        assert view is not None and view.feedback == f"○ {views.NOT_JUDGED}"
+        # what the value it is judged by waits for, and where (walk 8, D7)
+        assert view is not None and view.feedback == (
+            "○ stored, not judged yet: the value to compare with needs a step run (Task 10)"
+        )
         assert s.enter("own.f", "1,855").ok
         assert s.step_status("table") == "unjudged"
 

@@ -231,7 +231,7 @@ def test_a_policy_file_that_cannot_be_read_is_a_warning(tmp_path: Path) -> None:
 
 def test_an_incomplete_row_says_what_is_missing(tmp_path: Path) -> None:
     """A row the group has not filled read '–' in every cell: the readings now say they were
-    not entered, the program's k_v and f that the row is incomplete."""
+    not entered, the program's k_v and f which readings they need and where (walk 8, D7)."""
     with Session.create(tmp_path, ["A"], date="2026-11-22") as s:
         s.enter("R", "5.26")
         s.enter("u_ss@4.5", "4.05 V")
@@ -240,7 +240,9 @@ def test_an_incomplete_row_says_what_is_missing(tmp_path: Path) -> None:
     row = _row(readings, "4.5 V")
     assert row["u_ss"] == "4.05 V" and row["omega_ss (± spread)"] == "not entered"
     assert row["capture window (board clock)"] == "no capture" and row["i_ss"] == "not entered"
-    assert row["k_v, computed (Task 6)"] == "not computed: the row is incomplete"
+    assert (
+        row["k_v, computed (Task 6)"] == "not computed: needs omega_ss (Task 4) and i_ss (Task 5)"
+    )
 
 
 def test_the_groups_notes_lead_the_model_check(tmp_path: Path) -> None:

@@ -88,3 +88,36 @@ async def test_board_reconnected_gives_way_to_the_link_counters(quiet):
         assert "reconnected" in _status(app)
         await _stream(pilot, dev, seq, TRANSIENT_SHOWN + 0.1)
         assert "link ok" in _status(app)
+
+
+async def _silence_in_one_pass(pilot, dev: QuietDevice, heard: Heard, seq: int) -> int:
+    """Walk 8, D5: a silence of 0.6 s and the answer that ends it, handed to the app in one
+    read (as on a busy PC, where the stream found both at once) and handled."""
+    dev.feed_event(LinkEvent("silent", "minseg://: the board has not answered", float(seq)))
+    dev.feed_event(
+        LinkEvent("alive", "minseg://: the board answers again", float(seq), silent_s=0.6)
+    )
+    seq = await _stream(pilot, dev, seq, 0.025)
+    await heard.until(pilot, lambda: "alive" in heard.kinds)
+    await settle(pilot)
+    return seq
+
+
+async def test_a_silence_seen_only_by_its_end_is_said_with_it(quiet):
+    """The virtual MinSeg runs on the PC: its pause is the PC's, and the line says so."""
+    async with _on_a_standing_wheel(quiet) as (pilot, dev, heard, seq):
+        app = pilot.app
+        seq = await _silence_in_one_pass(pilot, dev, heard, seq)
+        line = _status(app)
+        assert "paused 0.6 s (PC busy)" in line, line
+        await _stream(pilot, dev, seq, TRANSIENT_SHOWN + 0.1)
+        assert "paused" not in _status(app) and "link ok" in _status(app)
+
+
+async def test_a_real_boards_silence_is_said_with_its_length(quiet):
+    async with _on_a_standing_wheel(quiet) as (pilot, dev, heard, seq):
+        app = pilot.app
+        dev.board = None  # a board on a cable: its silence may be its own
+        await _silence_in_one_pass(pilot, dev, heard, seq)
+        line = _status(app)
+        assert "silent 0.6 s, answers again" in line, line

@@ -7,8 +7,7 @@ from __future__ import annotations
 
 from textual.widget import Widget
 
-from minseg_tui.lab.views import session as views
-from minseg_tui.quantities import format_number
+from minseg_tui.quantities import format_number, format_quantity
 from minseg_tui.ui.screens.lab import StepPane
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.helpers import settle, start_with_a_run, type_in
@@ -45,7 +44,7 @@ async def test_the_verdict_stands_under_the_entry_typed_in_at_80x24(quiet):
         await settle(pilot)
         said, msg = _message(app, "own.K")
         assert said.startswith("✓ right:") and "computed your way" in said, said
-        assert f"least squares {views._fmt(st.K, 'rad/s/V')}" in said
+        assert f"least squares {format_quantity(st.K, 'rad/s/V')}" in said
         assert _in_view(app, msg)
 
         await pilot.press("pagedown")

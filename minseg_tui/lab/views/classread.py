@@ -113,6 +113,7 @@ def _to_json(g: Group) -> dict[str, object]:
         "readable": g.readable,
         "flags": list(g.flags),
         "slipped": list(g.slipped),
+        "notes": list(g.notes),
     }
 
 
@@ -154,6 +155,7 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
         readable=bool(d["readable"]),
         flags=_texts(d["flags"]),
         slipped=_texts(d["slipped"]),
+        notes=_texts(d.get("notes", [])),
     )
 
 

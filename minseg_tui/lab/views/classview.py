@@ -36,7 +36,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.steps import LEVELS
 from minseg_tui.lab.saving.kept import Kept
-from minseg_tui.lab.saving.runs import read_run
+from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_key
 from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
 from minseg_tui.lab.state.results import Results
@@ -49,10 +49,11 @@ from minseg_tui.quantities import (
     F_UNIT,
     MISSING,
     RPM,
-    format_diff,
+    format_difference,
     format_fixed,
     format_number,
     format_reading,
+    format_typed,
     in_unit,
 )
 
@@ -67,6 +68,8 @@ class Quantity:
     unit: str
     words: str
     shown: str = ""
+    reading: bool = False
+    """A value the group read and typed (R): shown with the digits they gave, never padded."""
 
     @property
     def label(self) -> str:
@@ -87,15 +90,29 @@ class Quantity:
         """``v`` (SI) in :attr:`display`."""
         return in_unit(v, self.display)
 
+    def text(self, v: float | None) -> str:
+        """``v`` (SI) as people read it, in :attr:`display` without the unit: a reading with
+        the digits typed ("5.3", never "5.300"), a computed value with :data:`DIGITS`
+        significant digits (T 42.89 ms as "42.89"); :data:`MISSING` for None."""
+        if v is None or not math.isfinite(v):
+            return MISSING
+        n = self.number(v)
+        return format_typed(n) if self.reading else format_number(n)
+
+    def with_unit(self, v: float | None) -> str:
+        """:meth:`text` with the unit ("5.3 Ω", "42.89 ms"); :data:`MISSING` for None."""
+        t = self.text(v)
+        return t if t == MISSING else f"{t} {self.display}"
+
 
 QUANTITIES: tuple[Quantity, ...] = (
-    Quantity("R", "Ω", "motor resistance (Task 2)"),
+    Quantity("R", "Ω", "motor resistance (Task 2)", reading=True),
     Quantity("k_v", "V s/rad", "back-emf constant (Task 7)"),
     Quantity("k_a", "N m/A", "torque constant (Task 8)"),
     Quantity("f", "N m s/rad", "viscous friction (Task 9)", F_UNIT),
     Quantity("K", "rad/s/V", "static gain (Task 11)"),
-    Quantity("T_63", "s", "time constant, 63 % reading (Task 12)"),
-    Quantity("T", "s", "time constant, least squares (Task 12)"),
+    Quantity("T_63", "s", "time constant, 63 % reading (Task 12)", "ms"),
+    Quantity("T", "s", "time constant, least squares (Task 12)", "ms"),
     Quantity("J", "kg m^2", "inertia (Task 13)"),
 )
 """The numbers of a row, in the order of the lab."""
@@ -210,7 +227,9 @@ class Group:
     each); ``damaged`` why the file is damaged or cannot be read (None when it is sound);
     ``readable`` False when nothing of the session could be read; ``flags`` what stands
     out, one sentence each; ``slipped`` the keys of the values that rest on one of the
-    manual's slips (:class:`Slip`): left out of the class's median and MAD."""
+    manual's slips (:class:`Slip`): left out of the class's median and MAD; ``notes``
+    what a grader should know that is neither marked nor missing, one line each (the run
+    Tasks 11-15 use was interrupted: :func:`run_note`)."""
 
     id: str
     folder: Path
@@ -227,6 +246,7 @@ class Group:
     readable: bool = True
     flags: tuple[str, ...] = ()
     slipped: tuple[str, ...] = ()
+    notes: tuple[str, ...] = ()
 
     def value(self, key: str) -> float | None:
         """The value of ``key`` (SI), None when not computed or not finite."""
@@ -257,6 +277,7 @@ class Group:
         out["lacks"] = list(self.lacks)
         out["damaged"] = self.damaged
         out["flags"] = list(self.flags)
+        out["notes"] = list(self.notes)
         out["left_out_of_class"] = [q.key for q in QUANTITIES if q.key in self.slipped]
         return out
 
@@ -322,7 +343,7 @@ def members(g: Group) -> str:
 def own_cell(g: Group) -> str:
     """The group's own values against the computed ones, in one cell: "T +12 %"."""
     parts = [
-        f"{o.key.removeprefix('own.')} {format_diff(o.rel_diff)}"
+        f"{o.key.removeprefix('own.')} {format_difference(o.own, o.computed)}"
         for o in g.own
         if o.rel_diff is not None
     ]
@@ -338,7 +359,7 @@ def _resistance_slip(R: float) -> Slip:
     or a reading in kΩ, when R moved by a power of ten falls in the range; else the usual
     causes."""
     lo, hi = R_RANGE
-    head = f"R = {format_number(R)} Ω is outside the 3-6 Ω this motor reads (Task 2)"
+    head = f"R = {format_typed(R)} Ω is outside the 3-6 Ω this motor reads (Task 2)"
     for factor, why in (
         (0.1, "its decimal point dropped"),
         (10.0, "its decimal point one place too far left"),
@@ -471,6 +492,20 @@ def _response_alone(session: Session) -> dict[str, float | None]:
     return {"K": st.K, "T_63": st.T_63, "T": st.T}
 
 
+def run_note(run: RunInfo | None) -> str | None:
+    """The line saying that ``run``, the one Tasks 11-15 and the model check use, ended
+    before its plan did: "run steps-1 interrupted (quit), 7.8 of 12 s: K, T and J rest on
+    it" (seconds recorded of those planned); None for a complete run or none."""
+    if run is None or not run.interrupted:
+        return None
+    planned = 2.0 * run.plan.get("half_period", 0.0) * run.plan.get("periods", 0.0)
+    of = f" of {planned:g}" if planned > 0 else ""
+    return (
+        f"run {run.name} interrupted ({run.interruption}), "
+        f"{format_fixed(run.samples * run.ts, 1)}{of} s: K, T and J rest on it"
+    )
+
+
 def read_group(folder: Path) -> Group:
     """The row of the session in ``folder``, opened read-only (no lock, nothing written).
     A session that cannot be read at all gives a row that says why (``readable`` False)."""
@@ -557,6 +592,7 @@ def _row(folder: Path, session: Session) -> Group:
         damaged=session.damaged,
         flags=tuple(s.text for s in found),
         slipped=tuple(q.key for q in QUANTITIES if any(q.key in s.affects for s in found)),
+        notes=tuple(n for n in (run_note(session.response_run()),) if n),
     )
 
 
@@ -588,7 +624,7 @@ def outlier(s: Spread, value: float) -> str | None:
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {format_number(q.number(value))} {unit} is far {side} the class: {format_fixed(times, 0)} robust "
+        f"{s.key} = {q.with_unit(value)} is far {side} the class: {format_fixed(times, 0)} robust "
         f"standard deviations from its median of {format_number(q.number(s.median))} {unit}."
     )
 

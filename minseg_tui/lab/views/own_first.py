@@ -16,18 +16,26 @@ import math
 from dataclasses import dataclass
 from datetime import datetime, timedelta
 
+from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.content.steps import STEPS, RunPlan
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.shown import PolicyRecord
-from minseg_tui.lab.views.session import MARK, NOT_JUDGED, REVEAL_KEY, USES_RUN, answer
+from minseg_tui.lab.views.session import (
+    MARK,
+    NOT_JUDGED,
+    REVEAL_KEY,
+    USES_RUN,
+    answer,
+    waits_for,
+)
 from minseg_tui.model.identify import U_TASK15, u_ss_words
 from minseg_tui.quantities import (
     NOT_DETERMINED,
     UNITS,
-    format_diff,
+    format_difference,
     format_interval,
     format_number,
     format_quantity,
@@ -285,9 +293,13 @@ def _diff(c: Comparison, own: str, against: str) -> str:
         said = (MARK["done"] if c.right else MARK["wrong"]) + " " + (c.verdict or "right")
         if c.caveat:
             said += f"; {c.caveat}"
-        return said if c.rel_diff is None else f"{format_diff(c.rel_diff)}{against}; {said}"
+        return (
+            said
+            if c.rel_diff is None
+            else f"{format_difference(c.own, c.computed)}{against}; {said}"
+        )
     if c.rel_diff is not None:
-        return format_diff(c.rel_diff) + against
+        return format_difference(c.own, c.computed) + against
     if own.startswith(NOT_ANSWERED):
         return "nothing to compare: not answered"
     return f"{MARK['unjudged']} {NOT_JUDGED}"
@@ -312,7 +324,8 @@ def table_rows(session: Session, results: Results | None = None) -> tuple[OwnRow
         computed = (
             f"{value} ({c.how or _TABLE_HOW.get(c.key, 'from the table')})"
             if value
-            else "not computed: the table is not complete"
+            else "not computed: "
+            + (needs(waits_for(session, c.key)) or "the table is not complete")
         )
         out.append(
             OwnRow(

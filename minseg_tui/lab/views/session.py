@@ -23,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content import needs as lab_needs
 from minseg_tui.lab.content.steps import FIELDS, STEPS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import RESPONSE_KINDS
@@ -45,7 +46,7 @@ from minseg_tui.quantities import (
     MISSING,
     NOT_DETERMINED,
     format_constant_interval,
-    format_diff,
+    format_difference,
     format_number,
     format_quantity,
     format_spread,
@@ -220,12 +221,17 @@ def under_entry(session: Session, c: Comparison) -> str:
     1.996 rad/s/V'); ○ :data:`NOT_JUDGED` while nothing is computed to compare it with. The
     panel under the entries says how each was computed and why the two differ."""
     if c.right is None:
-        return f"{MARK['unjudged']} " + (f"not judged: {c.verdict}" if c.verdict else NOT_JUDGED)
+        if c.verdict:
+            return f"{MARK['unjudged']} not judged: {c.verdict}"
+        why = lab_needs.needs(waits_for(session, c.key)) if c.computed is None else ""
+        if why:  # say what keeps the value it is judged by from being computed
+            return f"{MARK['unjudged']} {NOT_JUDGED.split(':')[0]}: the value to compare with {why}"
+        return f"{MARK['unjudged']} {NOT_JUDGED}"
     mark, word = (MARK["done"], "right") if c.right else (MARK["wrong"], "wrong")
     unit = _shown_unit(session, c)
     if c.rel_diff is not None and isinstance(c.computed, float):
         said = (
-            f"{word}: {format_diff(c.rel_diff)} from {format_quantity(c.computed, unit)}, "
+            f"{word}: {format_difference(c.own, c.computed)} from {format_quantity(c.computed, unit)}, "
             + _AGAINST.get(c.key, "computed your way")
         )
         why = c.verdict.removeprefix("wrong:").strip()
@@ -425,8 +431,11 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         way = _WAY.get(
             c.key, "computed from your table" if step_id == "table" else "computed your way"
         )
+        why = lab_needs.needs(waits_for(session, c.key)) if c.computed is None else ""
         comp = (
-            way
+            f"{way}: not yet, {why}"
+            if why
+            else way
             + " "
             + (
                 MISSING
@@ -439,7 +448,7 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
         if c.how:
             comp += f" ({c.how})"
         if c.rel_diff is not None:
-            comp += f": {format_diff(c.rel_diff)}"
+            comp += f": {format_difference(c.own, c.computed)}"
         if c.verdict:
             comp += f"\n  {c.verdict}"
         if c.caveat:
@@ -478,6 +487,9 @@ class TableView:
     results: tuple[tuple[str, Cell], ...] = ()
     warnings: tuple[str, ...] = ()
     compare: tuple[tuple[str, str, str], ...] = ()
+    waiting: str = ""
+    """While the final k_v, k_a and f cannot be computed: which inputs they need and where
+    to enter them, one line ('' otherwise)."""
 
 
 WORKED_DIGITS: int = 10
@@ -553,7 +565,75 @@ def _row_formula(name: str, r: TableRow, R: float | None, k_a: float | None) -> 
     return _FORMULAS[name]
 
 
-def _table_row(r: TableRow, R: float | None, k_a: float | None) -> tuple[Cell, ...]:
+def _derived_cell(
+    name: str,
+    value: float | None,
+    text: str,
+    r: TableRow,
+    R: float | None,
+    k_a: float | None,
+    has: Callable[[str], bool],
+) -> Cell:
+    """The cell of a row's computed ``name`` (k_v or f): ``text`` with its worked formula, or,
+    while an input is missing, what it needs ('needs R'), F7 saying which inputs and where
+    to enter them before the formula."""
+    if value is not None:
+        return Cell(text, _row_formula(name, r, R, k_a))
+    miss = lab_needs.missing(f"{name}@row", has)
+    if not miss:
+        return Cell(MISSING, _row_formula(name, r, R, k_a))
+    return Cell(
+        lab_needs.needs_short(miss),
+        f"{name} here {lab_needs.needs(miss)}. {_FORMULAS[name]}",
+    )
+
+
+def _has(session: Session, rows: Sequence[TableRow], row: TableRow | None) -> Callable[[str], bool]:
+    """Which inputs of :data:`~minseg_tui.lab.content.needs.INPUTS` the session has: R, a
+    complete row among ``rows``, the run in use, and ``row``'s own u_ss, omega_ss, i_ss."""
+
+    def has(name: str) -> bool:
+        if name == "R":
+            return session.value("R") is not None
+        if name == "row":
+            return any(
+                x.u_ss is not None and x.omega_ss is not None and x.i_ss is not None for x in rows
+            )
+        if name == "run":
+            return session.response_run() is not None
+        return row is not None and getattr(row, name) is not None
+
+    return has
+
+
+_DERIVED: dict[str, str] = {
+    "own.k_v": "k_v",
+    "own.k_a": "k_a",
+    "own.f": "f",
+    "own.omega_step": "K",
+    "own.K": "K",
+    "own.T": "T",
+    "own.J": "J",
+    "own.model": "model",
+    "own.omega_5": "omega_5",
+}
+"""The derived value (:data:`~minseg_tui.lab.content.needs.NEEDS`) each of the group's own
+values is compared with."""
+
+
+def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[str, ...]:
+    """The inputs (:data:`~minseg_tui.lab.content.needs.INPUTS` keys) the value that field
+    ``key`` (own.k_v, ...) or derived value ``key`` (k_v, J, k_v@row with ``row``, ...) is
+    computed from still waits for; () when none is missing."""
+    name = _DERIVED.get(key, key)
+    if name not in lab_needs.NEEDS:
+        return ()
+    return lab_needs.missing(name, _has(session, session.table(), row))
+
+
+def _table_row(
+    r: TableRow, R: float | None, k_a: float | None, has: Callable[[str], bool]
+) -> tuple[Cell, ...]:
     spread = "" if r.spread is None else f" {format_spread(r.spread)}"
     omega_how = (
         "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
@@ -573,8 +653,8 @@ def _table_row(r: TableRow, R: float | None, k_a: float | None) -> tuple[Cell, .
             format_number(None if r.i_ss is None else r.i_ss * 1e3, 3),
             "i_ss: read on the multimeter (mA)" if r.i_ss is not None else "",
         ),
-        Cell(format_number(r.k_v), _row_formula("k_v", r, R, k_a)),
-        Cell(format_number(None if r.f is None else r.f * 1e3), _row_formula("f", r, R, k_a)),
+        _derived_cell("k_v", r.k_v, format_number(r.k_v), r, R, k_a, has),
+        _derived_cell("f", r.f, format_number(None if r.f is None else r.f * 1e3), r, R, k_a, has),
     )
 
 
@@ -585,14 +665,19 @@ def table(session: Session) -> TableView:
     res = session.results()
     ident = res.identification
     k_a = None if ident is None else ident.k_a
-    rows = tuple(_table_row(r, R, k_a) for r in session.table())
+    table_rows = session.table()
+    rows = tuple(_table_row(r, R, k_a, _has(session, table_rows, r)) for r in table_rows)
     results: tuple[tuple[str, Cell], ...] = ()
+    waiting = ""
     if ident is not None:
         results = (
             ("k_v", Cell(format_quantity(ident.k_v, "V s/rad"), _FORMULAS["k_v"])),
             ("k_a", Cell(format_quantity(ident.k_a, "N m/A"), _FORMULAS["k_a"])),
             ("f", Cell(_fmt_milli(ident.f, "N m s/rad"), _FORMULAS["f"])),
         )
+    else:
+        miss = lab_needs.missing("f", _has(session, table_rows, None))
+        waiting = f"k_v, k_a and f (the medians): {lab_needs.needs(miss)}" if miss else ""
     # the T findings name T, Task 12's answer: kept back until the group has given theirs
     shown = [
         n
@@ -601,7 +686,12 @@ def table(session: Session) -> TableView:
     ]
     warnings = tuple(with_two_T(shown, "Task 12 says it")) + tuple(res.problems)
     return TableView(
-        TABLE_HEADERS, rows, results, tuple(dict.fromkeys(warnings)), comparisons(session, "table")
+        TABLE_HEADERS,
+        rows,
+        results,
+        tuple(dict.fromkeys(warnings)),
+        comparisons(session, "table"),
+        waiting,
     )
 
 
@@ -902,6 +992,9 @@ class ResultsView:
     shows: frozenset[str] = frozenset()
     """Fields of Tasks 11-15 whose computed value this view puts on the screen (the session
     records the first time: :func:`note_drawn`)."""
+    waiting: str = ""
+    """Without a step result: which inputs it needs and where to enter them ('needs a step
+    run (Task 10)'; '' otherwise)."""
 
 
 TWO_T: tuple[str, ...] = ("T_short", "T_63_differs")
@@ -983,8 +1076,12 @@ def results(session: Session, step_id: str) -> ResultsView:
             *([lab_compare.two_T_of(st)] if "own.T" not in conceal else []),
             shown("own.J", f"J = {format_quantity(st.J, 'kg m^2')}", "J", "Task 13")
             if ident is not None
-            else "J: waits for R, k_v and f from the table of Tasks 2-9, which gives none yet "
-            "(why: below)",
+            else "J: "
+            + (
+                lab_needs.needs(waits_for(session, "J"))
+                or "waits for R, k_v and f from the table of Tasks 2-9, which gives none yet"
+            )
+            + " (why: below)",
             shown(
                 "own.model", f"model: {st.model_equation(format_number)}", "the model", "Task 14"
             ),
@@ -1019,6 +1116,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         tuple(problems),
         frozenset(hidden(session)),
         shows,
+        "" if st_run is not None else lab_needs.needs(waits_for(session, "K")),
     )
 
 

@@ -139,7 +139,9 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         said = (view.lines, view.compare, view.problems)
         self._reveal = self._said is not None and said != self._said
         self._said = said
-        lines = list(view.lines) or ["no step result yet"]
+        lines = list(view.lines) or [
+            "no step result yet" + (f": {view.waiting}" if view.waiting else "")
+        ]
         lines += [f"! {p}" for p in view.problems]
         self._lines.update("\n".join(lines))
         compared = "\n".join(f"{label}: yours {own} · {comp}" for label, own, comp in view.compare)

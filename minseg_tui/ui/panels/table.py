@@ -50,7 +50,7 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         for row in view.rows:
             table.add_row(*[c.text for c in row])
         table.move_cursor(row=cursor.row, column=cursor.column, animate=False)
-        lines = ["  ".join(f"{name} = {cell.text}" for name, cell in view.results)]
+        lines = ["  ".join(f"{name} = {cell.text}" for name, cell in view.results) or view.waiting]
         lines += [
             f"{label}: yours {own} · {comp}" for label, own, comp in view.compare if own != MISSING
         ]

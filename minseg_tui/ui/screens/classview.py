@@ -27,7 +27,7 @@ from textual.widgets import DataTable, Static
 from minseg_tui.errors import InputError
 from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
-from minseg_tui.quantities import MISSING, format_diff, format_number, format_quantity
+from minseg_tui.quantities import MISSING, format_difference
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
 
@@ -43,11 +43,28 @@ COLUMNS: tuple[tuple[str, str], ...] = (
     ("J", "J"),
 )
 """The table's columns (header, what it holds), narrow enough for 80 columns: ``!`` counts
-what the view marks (:data:`~minseg_tui.lab.views.classview.MARKED`); the numbers are in SI units (the group's detail below gives each unit)."""
+what the view marks (:data:`~minseg_tui.lab.views.classview.MARKED`); the numbers are in the units the
+lab shows them in (T in ms; the group's detail below gives each unit), R with the digits typed."""
+
+
+MEMBERS_WIDTH = 16
+"""The group column's width (characters): longer names are cut in the table, so that J, the
+last column, stays on an 80-column screen; the detail below gives them whole."""
 
 
 TITLE = "Class view for instructors (read-only)"
 """How the screen names itself: the instructors' view of every group, which changes nothing."""
+
+
+def _quantity(key: str) -> classview.Quantity:
+    return next(q for q in QUANTITIES if q.key == key)
+
+
+def _step(g: Group) -> str:
+    """The step the group is at, as the lab's list of steps names it ("Prep 7", "Summary"),
+    with "run cut" when the run Tasks 11-15 use was interrupted (the detail below says how)."""
+    step = g.step.replace("Preparation", "Prep").replace("Summary and reflections", "Summary")
+    return (step or MISSING) + (", run cut" if g.notes else "")
 
 
 def _members(g: Group) -> str:
@@ -59,9 +76,9 @@ def row(k: int, g: Group) -> tuple[str, ...]:
     return (
         str(k),
         _members(g),
-        g.step or MISSING,
+        _step(g),
         str(len(g.flags)) if g.flags else ("?" if not g.readable else ""),
-        *(format_number(g.value(key)) for key in ("R", "k_v", "K", "T", "J")),
+        *(_quantity(key).text(g.value(key)) for key in ("R", "k_v", "K", "T", "J")),
     )
 
 
@@ -72,24 +89,25 @@ def detail(k: int, g: Group) -> Text:
     out.append(f"#{k} {_members(g)}", style="bold")
     out.append(f"  {g.date or 'no date'} · at {g.step or '?'} · {g.id}\n")
     nums = [
-        f"{q.key} {'–' if (v := g.value(q.key)) is None else format_quantity(v, q.display)}"
-        for q in QUANTITIES
+        f"{q.key} {'–' if (v := g.value(q.key)) is None else q.with_unit(v)}" for q in QUANTITIES
     ]
     out.append(" · ".join(nums) + "\n")
     out.append(f"model check: {g.cause or 'not run'}\n")
     for o in g.own:
         if o.rel_diff is not None:
             out.append(
-                f"{o.label}: {format_diff(o.rel_diff)} from the value computed the group's way\n"
+                f"{o.label}: {format_difference(o.own, o.computed)} from the value computed the group's way\n"
             )
     for f in g.flags:
         out.append(f"! {f}\n", style="bold")
     for x in g.lacks:
         out.append(f"- lacks: {x}\n")
+    for x in g.notes:
+        out.append(f"- note: {x}\n")
     if not g.flags:
         out.append(f"Nothing marked '!' ({classview.MARKED}).\n")
     if not g.lacks:
-        out.append("Nothing is missing.\n")
+        out.append("Nothing else is missing.\n" if g.notes else "Nothing is missing.\n")
     out.append(classview.NOT_MARKED + "\n")
     return out
 
@@ -134,7 +152,7 @@ class ClassScreen(Screen[None]):
     def on_mount(self) -> None:
         table = self.query_one(DataTable)
         for header, key in COLUMNS:
-            table.add_column(header, key=key)
+            table.add_column(header, key=key, width=MEMBERS_WIDTH if key == "members" else None)
         self._read()
 
     @work(thread=True, exclusive=True, group="class", name="read the class")

@@ -465,6 +465,16 @@ class StepList(OptionList):
                 event.stop()
                 event.prevent_default()
                 screen.pane.take(event.character)
+                return
+        focused = screen.focused
+        if isinstance(screen, LabScreen) and focused is not None and focused is not self:
+            # a key the app sent here before a character ahead of it moved the focus into
+            # the entry: it goes where the focus is now, as the form passes on a key that
+            # came after the focus left it. '53' Enter in one burst after Shift+Tab put 53
+            # into R, and the list took the Enter (walk 8, D6): R kept '5,3'.
+            event.stop()
+            event.prevent_default()
+            focused.post_message(events.Key(event.key, event.character))
 
 
 class StepCommands(Provider):

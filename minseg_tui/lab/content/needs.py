@@ -1,0 +1,101 @@
+"""What each derived value of the lab is computed from, and where the group enters it.
+
+One table (:data:`NEEDS`) says which inputs each derived value (k_v of a row, the median
+k_v, k_a, f, K, T, J, ...) is computed from; :func:`missing` follows it down to the
+readings the group enters (:data:`INPUTS`: R in Task 2, u_ss and omega_ss in Task 4, ...)
+and gives those not there yet, so a value that cannot be computed says what it waits for
+("needs R (Task 2)") in the table, under F7, beside the group's own values and in the
+report (walk 8, D7: with R left out, Tasks 6-9 showed "—" everywhere and never said why).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Input:
+    """A reading the group enters: its name as the lab writes it, and where it is entered."""
+
+    name: str
+    where: str
+
+
+INPUTS: dict[str, Input] = {
+    "R": Input("R", "Task 2"),
+    "u_ss": Input("u_ss", "Task 4"),
+    "omega_ss": Input("omega_ss", "Task 4"),
+    "i_ss": Input("i_ss", "Task 5"),
+    "row": Input("a row with u_ss, omega_ss and i_ss", "Tasks 4-5"),
+    "run": Input("a step run", "Task 10"),
+}
+"""The readings derived values wait for. ``u_ss``, ``omega_ss`` and ``i_ss`` are those of
+one row of the table; ``row``: at least one complete row; ``run``: the step run Tasks
+11-15 use."""
+
+NEEDS: dict[str, tuple[str, ...]] = {
+    "k_v@row": ("R", "u_ss", "omega_ss", "i_ss"),
+    "k_v": ("R", "row"),
+    "k_a": ("k_v",),
+    "f": ("k_a", "row"),
+    "f@row": ("omega_ss", "i_ss", "k_a"),
+    "K": ("run",),
+    "T": ("run",),
+    "J": ("T", "R", "k_v", "k_a", "f"),
+    "model": ("K", "T"),
+    "omega_5": ("K",),
+}
+"""Each derived value and what it is computed from: inputs (:data:`INPUTS`) or other derived
+values. ``k_v@row``, ``f@row``: a row's own (k_v = (u_ss - R i_ss) / omega_ss, f = k_a i_ss
+/ omega_ss); ``k_v``, ``k_a``, ``f``: the final ones (medians over the complete rows); K, T
+(Tasks 11-12) from the step run, J (Task 13) from T and the table's constants, the model
+(Task 14) and omega at 5 V (Task 15) from K and T."""
+
+
+def missing(value: str, have: Callable[[str], bool]) -> tuple[str, ...]:
+    """The inputs (:data:`INPUTS` keys) derived value ``value`` waits for, first needed first,
+    each once: those for which ``have`` is False. () when every input is there (a value still
+    not computed then has another reason, which the caller says)."""
+    out: list[str] = []
+
+    def walk(name: str) -> None:
+        if name in INPUTS:
+            if not have(name) and name not in out:
+                out.append(name)
+            return
+        for part in NEEDS[name]:
+            walk(part)
+
+    walk(value)
+    return tuple(out)
+
+
+def needs(inputs: Sequence[str]) -> str:
+    """What the missing ``inputs`` are and where to enter them, in words: 'needs R (Task 2)',
+    'needs R (Task 2) and i_ss (Task 5)'; '' for none."""
+    said = [f"{INPUTS[k].name} ({INPUTS[k].where})" for k in inputs]
+    if not said:
+        return ""
+    if len(said) == 1:
+        return f"needs {said[0]}"
+    return "needs " + ", ".join(said[:-1]) + " and " + said[-1]
+
+
+SHORT_WIDTH = 14
+"""The most characters :func:`needs_short` writes: two such cells (k_v, f) beside the
+table's four readings fit the pane at 80 columns (15 each put a scroll bar under it)."""
+
+
+def needs_short(inputs: Sequence[str]) -> str:
+    """The first of the missing ``inputs`` by name alone, for a narrow cell: 'needs R',
+    'needs i_ss…' (the '…': more are missing, F7 gives them all; left out where it would
+    make the text wider than :data:`SHORT_WIDTH`: 'needs omega_ss'); '' for none."""
+    if not inputs:
+        return ""
+    first = INPUTS[inputs[0]].name if inputs[0] != "row" else "a row"
+    said = f"needs {first}"
+    return said + "…" if len(inputs) > 1 and len(said) < SHORT_WIDTH else said
+
+
+__all__ = ["INPUTS", "NEEDS", "SHORT_WIDTH", "Input", "missing", "needs", "needs_short"]
