@@ -10,6 +10,7 @@ from contextlib import nullcontext
 import numpy as np
 
 from minseg_tui.device.factory import open_device
+from minseg_tui.device.link import LinkEvent
 from minseg_tui.device.standstill import PRE_ROLL
 from minseg_tui.device.virtual import forget_board, named_board
 from minseg_tui.lab.state.session import Session
@@ -72,6 +73,26 @@ def test_a_cable_pulled_mid_run_keeps_the_samples(tmp_path):
             assert outcome.info is not None and outcome.info.interruption.startswith("board lost")
             assert [r.name for r in s.runs] == [outcome.run]
             assert outcome.info.samples >= 80
+    finally:
+        link.close()
+        forget_board(name)
+
+
+def test_a_silence_on_the_link_does_not_end_the_wait_for_the_wheel(tmp_path):
+    """The link says "silent" when no line came for a while on the host's clock: a busy PC
+    does that too (a whole-lab test hung at Task 10 on a loaded machine: the wait ended on
+    it, no run started). The wait goes on, on board time, and the run starts."""
+    name = f"task10-{next(_names)}"
+    link = open_device(f"minseg://{name}?clock=virtual&seed=2")
+    try:
+        with Session.create(tmp_path, ["A"]) as s:
+            task = Task10.of(nullcontext(s), link, "manual")
+            task.begin()
+            silent = LinkEvent("silent", f"minseg://{name}: the board has not answered", 0.0)
+            task.feed(link.samples(), [silent, *link.events()])
+            assert task.outcome is None and task.phase != "ended"
+            _feed_until(task, link, lambda: task.run is not None and task.run.samples >= 20)
+            assert task.outcome is None and task.phase in ("recording", "square_wave")
     finally:
         link.close()
         forget_board(name)

@@ -54,8 +54,11 @@ RUN_ENDED_BY: dict[str, str] = {
 """A link event that ends a run being recorded -> what interrupted it
 (:data:`minseg_tui.lab.saving.runs.ENDED_BY`); ``square_wave_done`` ends it complete."""
 
-WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error", "silent"})
-"""Link events that end the wait for the wheel to stand (no run starts)."""
+WAIT_ENDS = frozenset({"disconnected", "watchdog", "boot", "error"})
+"""Link events that end the wait for the wheel to stand (no run starts). Not ``silent``: the
+link says so when no line came for a while on the host's clock, which a busy PC causes as
+well as a board (the virtual MinSeg runs in the app's own process); the wait is on board
+time and goes on when the lines do, and a board that is gone says ``disconnected``."""
 
 HOST_GUARD: float = 30.0
 """Host seconds :func:`record` waits for samples at all (a board that sends nothing: a hang
