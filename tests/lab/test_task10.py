@@ -5,12 +5,13 @@ from __future__ import annotations
 
 import itertools
 import time
-from contextlib import nullcontext
+from collections.abc import Iterator
+from contextlib import contextmanager, nullcontext
 
 import numpy as np
 
 from minseg_tui.device.factory import open_device
-from minseg_tui.device.link import LinkEvent
+from minseg_tui.device.link import Link, LinkEvent
 from minseg_tui.device.standstill import PRE_ROLL
 from minseg_tui.device.virtual import forget_board, named_board
 from minseg_tui.lab.state.session import Session
@@ -19,6 +20,18 @@ from minseg_tui.lab.state.task10 import Task10
 _names = itertools.count()
 GUARD = 120.0
 """Host seconds against a hang (never a measure: the waits are on board samples)."""
+
+
+@contextmanager
+def _board(seed: int) -> Iterator[tuple[str, Link]]:
+    """A named virtual MinSeg on board time behind the real link; closed and forgotten after."""
+    name = f"task10-{next(_names)}"
+    link = open_device(f"minseg://{name}?clock=virtual&seed={seed}")
+    try:
+        yield name, link
+    finally:
+        link.close()
+        forget_board(name)
 
 
 def _feed_until(task: Task10, link, done) -> None:
@@ -30,9 +43,7 @@ def _feed_until(task: Task10, link, done) -> None:
 
 
 def test_stopped_mid_run_keeps_what_was_recorded_with_the_motor_off(tmp_path):
-    name = f"task10-{next(_names)}"
-    link = open_device(f"minseg://{name}?clock=virtual&seed=2")
-    try:
+    with _board(2) as (name, link):
         with Session.create(tmp_path, ["A"]) as s:
             task = Task10.of(nullcontext(s), link, "fast")
             assert task.plan.ts == 0.005 and task.kind == "fast"
@@ -52,15 +63,10 @@ def test_stopped_mid_run_keeps_what_was_recorded_with_the_motor_off(tmp_path):
             assert np.all(np.asarray(log.u)[:PRE_ROLL] == 0.0)  # the standing wheel first
             assert np.all(np.asarray(log.omega)[:PRE_ROLL] == 0.0)
             assert s.runs == [info] and task.stop() is outcome  # ended once
-    finally:
-        link.close()
-        forget_board(name)
 
 
 def test_a_cable_pulled_mid_run_keeps_the_samples(tmp_path):
-    name = f"task10-{next(_names)}"
-    link = open_device(f"minseg://{name}?clock=virtual&seed=3")
-    try:
+    with _board(3) as (name, link):
         with Session.create(tmp_path, ["A"]) as s:
             task = Task10.of(nullcontext(s), link, "manual")
             task.begin()
@@ -73,18 +79,13 @@ def test_a_cable_pulled_mid_run_keeps_the_samples(tmp_path):
             assert outcome.info is not None and outcome.info.interruption.startswith("board lost")
             assert [r.name for r in s.runs] == [outcome.run]
             assert outcome.info.samples >= 80
-    finally:
-        link.close()
-        forget_board(name)
 
 
 def test_a_silence_on_the_link_does_not_end_the_wait_for_the_wheel(tmp_path):
     """The link says "silent" when no line came for a while on the host's clock: a busy PC
     does that too (a whole-lab test hung at Task 10 on a loaded machine: the wait ended on
     it, no run started). The wait goes on, on board time, and the run starts."""
-    name = f"task10-{next(_names)}"
-    link = open_device(f"minseg://{name}?clock=virtual&seed=2")
-    try:
+    with _board(2) as (name, link):
         with Session.create(tmp_path, ["A"]) as s:
             task = Task10.of(nullcontext(s), link, "manual")
             task.begin()
@@ -93,6 +94,3 @@ def test_a_silence_on_the_link_does_not_end_the_wait_for_the_wheel(tmp_path):
             assert task.outcome is None and task.phase != "ended"
             _feed_until(task, link, lambda: task.run is not None and task.run.samples >= 20)
             assert task.outcome is None and task.phase in ("recording", "square_wave")
-    finally:
-        link.close()
-        forget_board(name)
