@@ -113,13 +113,22 @@ _TABLE_HOW: dict[str, str] = {
     "own.f": "median of the rows",
 }
 
-_NEEDS: dict[str, str] = {
-    "own.K": "needs the group's omega_ss in the steps",
-    "own.omega_5": "needs the group's K",
-    "own.J": "needs a T: the group's, or the 63 % reading",
-    "own.model": "needs a T: the group's, or the 63 % reading",
+_YOURS: dict[str, str] = {
+    "own.K": "K@yours",
+    "own.omega_5": "omega_5@yours",
+    "own.J": "J@yours",
+    "own.model": "model@yours",
 }
-"""Why the group's way has no value, by field."""
+"""The value worked out the group's way (:data:`~minseg_tui.lab.content.needs.NEEDS`) of
+each field whose group's way may wait for another of the group's values."""
+
+
+def _yours_waits(session: Session, key: str) -> str:
+    """Why the group's way of field ``key`` has no value, from the one table of inputs:
+    'needs the group's K (Task 11)'; 'not computed' when it names nothing."""
+    name = _YOURS.get(key)
+    return (needs(waits_for(session, name), GROUPS) if name else "") or "not computed"
+
 
 _READ_OFF = "read off the run: nothing to compute"
 """The group's way of omega_ss in the steps (a reading, not a computation)."""
@@ -366,7 +375,10 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
             return f"{q(st.T, unit)} ({_interval(st.T_ci, st.T_determined, unit)})"
         if key == "own.J":
             if not math.isfinite(st.J):
-                return "not computed: J needs R, k_v and f from the table of Tasks 2-9"
+                why = needs(waits_for(session, "J"), GROUPS)
+                return "not computed: " + (
+                    why or "J needs R, k_v and f from the table of Tasks 2-9"
+                )
             return f"{q(st.J, unit)} (from the least-squares T)"
         if key == "own.omega_5":
             w5 = (
@@ -402,7 +414,7 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
             elif c.right is None and c.verdict:
                 mine, against = f"not computed: {c.verdict}", ""
             else:
-                mine, against = _NEEDS.get(c.key, "not computed"), " (against the program's value)"
+                mine, against = _yours_waits(session, c.key), " (against the program's value)"
             why = c.why if c.how and c.least_squares is not None else ""
             out.append(
                 OwnRow(
@@ -447,6 +459,7 @@ def run_used(session: Session) -> str:
 
 
 __all__ = [
+    "GROUPS",
     "NOT_ANSWERED",
     "STEP_HEADER",
     "TABLE_HEADER",
