@@ -458,6 +458,26 @@ def run_used(session: Session) -> str:
     return text + "."
 
 
+def run_changed(session: Session, before: str | None) -> str:
+    """One sentence for the group when the run Tasks 11-15 use is no longer ``before`` (the
+    run in use when Task 10 began a new one) while answers of Tasks 11-15 stand: they are
+    judged against the new run now, and how to go back to the run in use when they were
+    given (walk 9, D10: Tasks 12-14 turned from ✓ to ✗ and ! after F5, with no word of
+    why); '' otherwise."""
+    run = session.response_run()
+    if before is None or run is None or run.name == before:
+        return ""
+    answered = [TASK[k] for k in lab_compare.ANSWERED_FIRST if k in session.answered()]
+    if not answered:
+        return ""
+    return (
+        f"Tasks 11-15 now use run {run.name}, not {before}: your answers ("
+        + ", ".join(answered)
+        + f") are judged against {run.name} now; Ctrl+P 'Use run {before}' goes back to the "
+        "run in use when you gave them"
+    )
+
+
 __all__ = [
     "GROUPS",
     "NOT_ANSWERED",
@@ -467,6 +487,7 @@ __all__ = [
     "TOLD",
     "OwnRow",
     "policy_in_force",
+    "run_changed",
     "run_used",
     "shown",
     "step_rows",
