@@ -21,6 +21,7 @@ from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.observations import (
     Observation,
     fit_observations,
+    friction_observations,
     response_observations,
     table_observations,
 )
@@ -117,6 +118,38 @@ class ResponseResult:
         return f"{num(self.T)} {w}' = -{w} + {num(self.K)} u_A"
 
     @property
+    def u_c(self) -> float:
+        """Dry friction's breakaway voltage (V) the whole-log fit found, 0 when it found none."""
+        return self.fit.u_c if self.fit.gain is not None else 0.0
+
+    @property
+    def K_above_u_c(self) -> float | None:
+        """With dry friction (:attr:`u_c` > 0), the fit's gain per volt above the breakaway
+        (rad/s per V of u_A): the steady speed is K_above_u_c (u_A - u_c); None without."""
+        return self.fit.gain if self.u_c > 0 else None
+
+    def omega_with_friction(self, u_A: float) -> float | None:
+        """The steady speed (rad/s) at the applied voltage ``u_A`` (V) of the fitted model
+        with the dry friction it found: K_above_u_c (u_A - u_c), 0 while |u_A| <= u_c. None
+        when the fit found no dry friction (then it is K u_A, the lab's model)."""
+        gain = self.K_above_u_c
+        if gain is None:
+            return None
+        if abs(u_A) <= self.u_c:
+            return 0.0
+        return gain * (u_A - math.copysign(self.u_c, u_A))
+
+    def friction_equation(self, num: Callable[[float], str], w: str = "omega") -> str | None:
+        """The fitted model with its dry friction as text ("T w' = -w + K' (u_A - u_c sgn
+        w)", with the dead time as in :meth:`model_equation`), None without dry friction."""
+        gain = self.K_above_u_c
+        if gain is None:
+            return None
+        u = f"u_A(t - {num(self.dead_time)} s)" if self.dead_time > 0 else "u_A"
+        t = "(t)" if self.dead_time > 0 else ""
+        return f"{num(self.T)} {w}'{t} = -{w}{t} + {num(gain)} ({u} - {num(self.u_c)} V sgn {w}{t})"
+
+    @property
     def T_determined(self) -> bool:
         """False when T's 95 % interval spans more than a factor of :data:`DETERMINED` (the
         log does not tell T: the interval is then not printed as numbers), or when T ended on
@@ -144,8 +177,16 @@ class Identification:
 
     @property
     def omega_at_5V(self) -> float | None:
-        """Task 15: the final speed for u_A = 5 V, rad/s."""
+        """Task 15 by the lab's model: the final speed for u_A = 5 V, K u_A (rad/s). It has
+        no dry friction; see :attr:`omega_at_5V_with_friction`."""
         return self.step.K * U_TASK15 if self.step else None
+
+    @property
+    def omega_at_5V_with_friction(self) -> float | None:
+        """Task 15 by the fitted model with the dry friction the fit found (rad/s; None when
+        it found none): K is omega_ss / u_ss at the step's level, a line through zero, and
+        with a breakaway voltage the speed at another voltage is not in proportion to it."""
+        return self.step.omega_with_friction(U_TASK15) if self.step else None
 
     def to_json(self) -> dict[str, object]:
         """The --json object of the issue (SI units, i_ss in mA as entered)."""
@@ -188,8 +229,15 @@ class Identification:
                 "glitch_rows": s.glitch_rows,
                 "left_out_rows": [r + s.glitch_rows for r in s.fit.left_out],
             }
-            out["model"] = {"T": s.T, "K": s.K, "dead_time": s.dead_time}
+            out["model"] = {
+                "T": s.T,
+                "K": s.K,
+                "dead_time": s.dead_time,
+                "u_c": s.u_c,
+                "K_above_u_c": s.K_above_u_c,
+            }
             out["omega_at_5V"] = self.omega_at_5V
+            out["omega_at_5V_with_friction"] = self.omega_at_5V_with_friction
         return out
 
 
@@ -315,6 +363,7 @@ def _response_result(
         else []
     )
     observations += fit_observations(whole_log, glitches, fit, result.T_determined)
+    observations += friction_observations(K, u_ss, result.u_c, result.K_above_u_c, U_TASK15)
     return result, observations
 
 

@@ -316,6 +316,42 @@ def response_observations(
     return observations
 
 
+FRICTION_APART: float = 0.005
+"""The lab's K u_A and the model with dry friction further apart than this (relative) at
+5 V: Task 15's answer is given both ways, with why."""
+
+
+def friction_observations(
+    K: float, u_ss: float, u_c: float, K_above_u_c: float | None, u_A: float
+) -> list[Observation]:
+    """Why Task 15's K u_A is not the speed the log's motor turns at ``u_A`` (V) when the fit
+    found dry friction: K (rad/s per V) = omega_ss / u_ss is read at the step's level u_ss (V)
+    and makes a line through zero; the fit's model is K_above_u_c (u_A - u_c) (rad/s per V,
+    V). Empty without dry friction or when the two agree within :data:`FRICTION_APART`."""
+    if K_above_u_c is None or not u_c > 0:
+        return []
+    lab = K * u_A
+    with_friction = K_above_u_c * (u_A - u_c) if u_A > u_c else 0.0
+    if not lab > 0 or abs(with_friction / lab - 1) <= FRICTION_APART:
+        return []
+    more = "more" if lab > with_friction else "less"
+    return [
+        Observation(
+            "friction_task15",
+            (
+                f"The fit found dry friction: its steady speed grows by {format_number(K_above_u_c, 4)} "
+                f"rad/s per volt above a breakaway voltage u_c = {format_number(u_c, 3)} V, a line "
+                "that does not pass through zero. K = omega_ss / u_ss "
+                f"({format_number(K, 4)} rad/s per V) is read at the step's {format_number(u_ss, 3)} V and "
+                "makes the speed proportional to u_A, as the lab's model (Task 14) has no friction. "
+                f"So at u_A = {u_A:g} V (Task 15) that model gives {format_number(lab, 4)} rad/s, "
+                f"{format_percent(abs(lab / with_friction - 1)) if with_friction > 0 else 'far'} {more} "
+                f"than the {format_number(with_friction, 4)} rad/s of the model with the friction."
+            ),
+        )
+    ]
+
+
 def _lines(log: RunLog, rows: Sequence[int]) -> str:
     """'line 12' / 'lines 5-6' / 'rows 1-2' for 0-based rows of ``log``."""
     lines = [log.line_of(r) for r in rows]
