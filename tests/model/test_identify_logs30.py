@@ -14,7 +14,7 @@ from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import IDENT_V_DROP, identification_table
-from minseg_tui.quantities import format_number, format_percent
+from minseg_tui.quantities import format_constant, format_number, format_percent
 from tests.model.identgen import table
 from tests.shared_data import SHARED_DATA
 
@@ -101,3 +101,24 @@ def test_task15_on_rtl_brake_is_true_of_the_logs_own_5V_level():
     said = [o.message for o in r.observations if o.code == "friction_task15"]
     apart = format_percent(r.omega_at_5V / r.omega_at_5V_with_friction - 1)
     assert said and "15.0 V" in said[0] and f"{apart} more" in said[0], said
+
+
+@pytest.mark.shared_data
+def test_a_long_dead_time_does_not_hide_a_miss_of_the_rise():
+    # micromouse-n20-duty255: the PWM starts 332-350 ms after the logged mode change; the fitted
+    # model (T 68.4 ms) rises more slowly than the wheel, whose 63 % reading counted from the
+    # dead time's end is 56.8 ms. The note said the dead time and the sampling were "the whole
+    # difference" (the model read the same way gives 402.7 ms, the log 388.5 ms: 14 ms, inside
+    # 10 % of the 320 ms the dead time makes of the difference), and the observation that the
+    # half-sample lag was the rest (a lag makes a reading longer; this one is shorter)
+    path = SHARED_DATA / "real-motors" / "micromouse-n20-duty255" / "step.csv"
+    r = identify(table(8.8), 5.0, read_run_log(path))
+    s = r.step
+    assert s is not None and s.dead_time > 0.3 and s.T_63 is not None
+    assert s.T_63_model is not None and s.T_63 - s.T_63_model < -0.010
+    assert "whole difference" not in s.T_63_note
+    assert f"{(s.T_63 - s.T_63_model) * 1e3:+.1f} ms is the shape of the rise" in s.T_63_note
+    said = [o.message for o in r.observations if o.code == "T_63_differs"]
+    assert said and "lags the true speed by half a sample" not in said[0], said
+    assert f"it is {format_constant(s.T_63 - s.dead_time, 's')}" in said[0]
+    assert "is the shape of the rise" in said[0]
