@@ -15,7 +15,7 @@ from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import IDENT_V_DROP, identification_table
 from minseg_tui.quantities import format_constant, format_number, format_percent
-from tests.model.identgen import table
+from tests.model.identgen import make, table
 from tests.shared_data import SHARED_DATA
 
 Q = 2 * math.pi / 720
@@ -122,3 +122,22 @@ def test_a_long_dead_time_does_not_hide_a_miss_of_the_rise():
     assert said and "lags the true speed by half a sample" not in said[0], said
     assert f"it is {format_constant(s.T_63 - s.dead_time, 's')}" in said[0]
     assert "is the shape of the rise" in said[0]
+
+
+def test_a_table_that_agrees_with_the_log_is_not_called_rpm():
+    # the independent generator's logs (tests/model/identgen.py, 8-16 rad/s per V) with their
+    # own exact table: every row read "omega_ss = 15.7454 is 10.2 per volt, more than this
+    # motor turns; it looks like rpm", while the log beside it turns at 10.2 rad/s per V
+    g = make(0, ts=0.025, delay=0.06, glitch=2, stall=True, periods=1, rest_rows=6)
+    assert g.K > 6.0
+    r = identify(table(g.K), 5.0, g.log)
+    assert r.step is not None and r.step.K == pytest.approx(g.K, rel=0.02)
+    assert "omega_ss_units" not in [o.code for o in r.observations]
+    assert "looks like rpm" not in render(r)
+    # the same table without the log, or beside a log that turns 9.5 times slower (a table
+    # typed in rpm), is still called rpm
+    assert "omega_ss_units" in [o.code for o in identify(table(g.K), 5.0).observations]
+    slow = make(0, ts=0.025, periods=1, rest_rows=6, K=g.K / 9.55)
+    r = identify(table(g.K), 5.0, slow.log)
+    assert r.step is not None and r.step.K == pytest.approx(g.K / 9.55, rel=0.02)
+    assert "omega_ss_units" in [o.code for o in r.observations]

@@ -499,12 +499,14 @@ def identify(
     Raises InputError for a bad R, a bad row, or a log without a usable rise.
     """
     rows, k_v, k_a, f = steady_state(readings, R, source)
-    observations = table_observations(rows, R, k_v, k_a)
-    step = None
+    step: ResponseResult | None = None
+    more: list[Observation] = []
     if log is not None:
         table = table_of(rows) if u_ss_table is None else list(u_ss_table)
         step, more = _response_result(log, rows, table, R, k_v, k_a, f)
-        observations += more
+    # the table first; a row in the log's unit is not called rpm (the log says how fast it turns)
+    observations = table_observations(rows, R, k_v, k_a, step.K if step is not None else None)
+    observations += more
     return Identification(
         R=R, rows=rows, k_v=k_v, k_a=k_a, f=f, step=step, observations=tuple(observations)
     )

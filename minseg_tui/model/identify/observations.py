@@ -52,9 +52,17 @@ def _row_name(index: int, r: Reading) -> str:
     return f"row {index + 1} (u_req {r.u_req:g} V{where})"
 
 
-def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> list[Observation]:
+LOG_AGREES: float = 0.3
+"""A row's omega_ss / u_ss this close (relative) to the run log's K says the row is in the
+log's unit, rad/s: it is not called rpm however fast the motor turns."""
+
+
+def table_observations(
+    rows: Sequence[Row], R: float, k_v: float, k_a: float, K_log: float | None = None
+) -> list[Observation]:
     """What the table shows: dry friction, a bad reading, currents in the wrong unit, u_ss and
-    u_req swapped."""
+    u_req swapped. ``K_log``: the run log's K (rad/s per V), when there is one: a row that
+    agrees with it within :data:`LOG_AGREES` is not said to be in rpm."""
     out: list[Observation] = []
     for i, row in enumerate(rows):
         r = row.reading
@@ -72,7 +80,12 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
                     f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says the meter is probably measuring the wrong thing or is in the wrong mode.",
                 )
             )
-        if r.omega_ss / r.u_ss > RPM_GAIN and r.omega_ss * RPM / r.u_ss <= RPM_GAIN:
+        log_agrees = K_log is not None and abs(r.omega_ss / r.u_ss / K_log - 1) <= LOG_AGREES
+        if (
+            r.omega_ss / r.u_ss > RPM_GAIN
+            and r.omega_ss * RPM / r.u_ss <= RPM_GAIN
+            and not log_agrees
+        ):
             out.append(
                 Observation(
                     "omega_ss_units",
