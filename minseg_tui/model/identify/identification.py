@@ -352,7 +352,9 @@ def _response_result(
     )
     shape = (
         T_63 - T_63_model
-        if (fit.shift_on_bound or fit.dead_time > 0) and T_63 is not None and T_63_model is not None
+        if (fit.shift_on_bound or (fit.dead_time > 0 and not fit.left_out))
+        and T_63 is not None
+        and T_63_model is not None
         else None
     )
     observations = (

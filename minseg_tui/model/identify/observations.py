@@ -208,7 +208,7 @@ def response_observations(
     u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
     period (s); skipped: rises not usable; dead_time: the model's dead time (s);
     shape: when the rise may have a shape one time constant does not follow (the steps' time
-    shift on its bound, or a dead time in the model), the part of the reading the fitted model read the same way does not
+    shift on its bound, or a dead time in the model and no logging stall read across), the part of the reading the fitted model read the same way does not
     give (s), else None; noise: the speed's scatter (rad/s) and how far it moves a reading of
     single samples (s), from :func:`~.identification.reading_noise`, or None: a shape within
     that sway is said to be the noise, not a shape one time constant does not follow.
@@ -297,8 +297,8 @@ def response_observations(
                         + "."
                         if dead_time > 0
                         and shape is not None
-                        and abs(shape) > max(0.02 * T, 0.1 * abs(T_63 - T - dead_time))
-                        and (noise is None or abs(shape) > noise[1])
+                        and noise is not None
+                        and abs(shape) > max(0.02 * T, 0.1 * abs(T_63 - T - dead_time), noise[1])
                         else f"The reading counts from the logged step, so it holds the dead time of "
                         f"{format_constant(dead_time, 's')} that T does not; besides, the measured speed is the "
                         "mean over each sample interval and lags the true speed by half a sample."
