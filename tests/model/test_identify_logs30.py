@@ -121,7 +121,7 @@ def test_a_long_dead_time_does_not_hide_a_miss_of_the_rise():
     said = [o.message for o in r.observations if o.code == "T_63_differs"]
     assert said and "lags the true speed by half a sample" not in said[0], said
     assert f"it is {format_constant(s.T_63 - s.dead_time, 's')}" in said[0]
-    assert "is the shape of the rise" in said[0]
+    assert "is the shape of the rise" in said[0] and said[0].endswith("Read T with care.")
 
 
 def test_a_table_that_agrees_with_the_log_is_not_called_rpm():

@@ -289,7 +289,7 @@ def response_observations(
                         f"same way gives {format_constant(T_63 - shape - dead_time, 's')}: the "
                         f"{format_signed(shape * 1e3, 3)} ms between them is the shape of the rise, which "
                         "one time constant does not follow, not the sampling (the speed's scatter "
-                        f"moves the reading by only about {noise[1] * 1e3:.3g} ms)."
+                        f"moves the reading by only about {noise[1] * 1e3:.3g} ms). Read T with care."
                         if dead_time > 0
                         and shape is not None
                         and noise is not None
