@@ -10,6 +10,7 @@ import pytest
 from minseg_tui.cli.identify import render
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.identify import WHOLE_LOG, identify
+from minseg_tui.model.identify.identification import reading_noise
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.model.runlog import RunLog
@@ -156,3 +157,24 @@ def test_a_reading_across_a_stall_is_not_called_the_shape_of_the_rise():
     assert "reading across a logging stall's gap" in s.T_63_note
     said = [o.message for o in r.observations if o.code == "T_63_differs"]
     assert said and "shape of the rise" not in said[0], said
+
+
+@pytest.mark.shared_data
+def test_the_noise_of_a_63_percent_reading_is_measured_where_the_rise_crosses_it():
+    # ev3-large-duty100: the speed's scatter grows with the speed (irregular loop times
+    # resampled to 5 ms): 4.36 rad/s once settled, about 1.5 rad/s around the 63 % crossing
+    # (0.3-2 T after the step). The note said the scatter moves the crossing by "about
+    # 51.6 ms", three times what the rows there can move it
+    path = SHARED_DATA / "real-motors" / "ev3-large-duty100" / "step.csv"
+    log = read_run_log(path)
+    r = identify(table(2.1), 5.0, log)
+    s = r.step
+    assert s is not None and s.T_63_note is not None
+    settled = reading_noise(log, s.rises, s.T)  # the settled rows alone, as before
+    near = reading_noise(log, s.rises, s.T, s.fit)
+    assert settled is not None and near is not None
+    assert settled[0] == pytest.approx(4.36, abs=0.01) and near[0] < 0.5 * settled[0]
+    assert f"scatters {format_number(near[0], 3)} rad/s" in s.T_63_note
+    assert f"by about {near[1] * 1e3:.3g} ms" in s.T_63_note and 0.010 < near[1] < 0.030
+    # the 63 % reading is still within that noise (-9.0 ms), and said to be
+    assert "ms is the noise of reading single samples" in s.T_63_note
