@@ -3,6 +3,7 @@ the s30-logs note). Each test pins one sentence or figure that plots of the data
 model and its residuals showed false or misleading."""
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -178,3 +179,26 @@ def test_the_noise_of_a_63_percent_reading_is_measured_where_the_rise_crosses_it
     assert f"by about {near[1] * 1e3:.3g} ms" in s.T_63_note and 0.010 < near[1] < 0.030
     # the 63 % reading is still within that noise (-9.0 ms), and said to be
     assert "ms is the noise of reading single samples" in s.T_63_note
+
+
+@pytest.mark.shared_data
+@pytest.mark.parametrize("end", [1.45, 1.5])
+def test_a_long_dead_time_on_a_short_log_finds_the_rise(end):
+    # micromouse-n20-duty255 cut 0.3-0.4 s after the wheel starts (1.13 s; the logged step at
+    # 0.78 s): the fit without a dead time ran T to its upper bound chasing the late rise, and
+    # the search with one started from 0.1-1.4 times that T (0.7-10 s): T came out 6.65 s (cut
+    # at 1.45 s) or 0.25 ms (1.5 s), both on their bounds, where the rise takes about 40 ms
+    # (the 1.3 s cut gives 34.9 ms, the whole log 68.4 ms with its wandering tail)
+    log = read_run_log(SHARED_DATA / "real-motors" / "micromouse-n20-duty255" / "step.csv")
+    n = int(np.searchsorted(log.t, end))
+    cut = replace(
+        log,
+        t=log.t[:n],
+        u=log.u[:n],
+        omega=log.omega[:n],
+        extra={k: v[:n] for k, v in log.extra.items()},
+        lines=None if log.lines is None else log.lines[:n],
+    )
+    s = identify(table(8.8), 5.0, cut).step
+    assert s is not None and not s.fit.T_on_bound and s.T_determined
+    assert 0.035 < s.T < 0.050 and 0.34 < s.dead_time < 0.36
