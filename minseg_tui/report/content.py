@@ -20,7 +20,7 @@ from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
 from minseg_tui.lab.state.session import Session, TableRow
-from minseg_tui.lab.views import check_text, check_words, own_first
+from minseg_tui.lab.views import check_says, check_text, check_words, own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
@@ -699,7 +699,7 @@ def _model_check_section(session: Session) -> Section | None:
         details.blocks.append([c.text for c in f.caveats])
     if r.anomalies:
         details.blocks.append(check_text.ANOMALIES)
-        details.blocks.append([a.text for a in r.anomalies])
+        details.blocks.append([check_says.anomaly(a) for a in r.anomalies])
     sec.blocks.append(details)
     return sec
 

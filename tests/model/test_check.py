@@ -12,6 +12,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from minseg_tui.lab.views.check_says import as_json
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import effects_of
 from minseg_tui.model.check.fit import whiten
@@ -89,7 +90,7 @@ def test_slow_creep_is_an_anomaly_not_a_cause(seed):
 
 def test_json_shape():
     log = make_log("dead_time", param=0.03, seed=5)
-    d = check(log.t, log.u, log.omega).to_dict()
+    d = as_json(check(log.t, log.u, log.omega))
     assert d["baseline"]["model"] == "first_order"
     assert set(d["baseline"]["params"]) == {"T", "K"}
     assert set(d["baseline"]) >= {"model", "params", "rmse", "fit_percent"}
@@ -345,7 +346,7 @@ def test_the_gain_survives_the_encoder_noise():
 def test_json_keeps_every_key_and_adds_what_the_ui_needs():
     """The keys the TUI, the report and the lab read stay; the new ones are there too."""
     log = make_log("coulomb_friction", seed=7, also="second_pole")
-    d = check(log.t, log.u, log.omega).to_dict()
+    d = as_json(check(log.t, log.u, log.omega))
     assert set(d) >= {"baseline", "finding", "extended", "gain", "deviations", "anomalies", "rows"}
     assert set(d) >= {"sampling", "lead", "close_up"}
     assert set(d["finding"]) >= {"cause", "evidence", "others", "caveats", "explained"}

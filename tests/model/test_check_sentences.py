@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
+from minseg_tui.lab.views.check_says import anomaly
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.figures import lead
@@ -220,7 +221,7 @@ def test_a_stall_spike_left_out_is_left_out_of_every_figure():
     r = check(t, u, omega, ts=0.01, cpr=720)
     words = text(r)
     art = [a for a in r.anomalies if a.kind == "logging_artefact"]
-    assert art and art[0].row == 500 and "rows 500-501 left out of the fit" in art[0].text
+    assert art and art[0].row == 500 and "rows 500-501 left out of the fit" in anomaly(art[0])
     assert "hand" not in words
     assert r.baseline.rows == 718 == sum(d.rows for d in r.deviations)
     assert "over the 718 of 720 rows the fit used (2 left out, see the anomalies)" in words

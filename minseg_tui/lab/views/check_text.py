@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+from minseg_tui.lab.views.check_says import anomaly
 from minseg_tui.model.check import CheckResult, Gain
 from minseg_tui.model.check.words import params
 from minseg_tui.quantities import MISSING, format_number
@@ -229,5 +230,5 @@ def text(r: CheckResult) -> str:
         lines.extend(f"  - {c.text}" for c in f.caveats)
     if r.anomalies:
         lines.append(ANOMALIES)
-        lines.extend(f"  - {a.text}" for a in r.anomalies)
+        lines.extend(f"  - {anomaly(a)}" for a in r.anomalies)
     return "\n".join(lines)

@@ -33,7 +33,7 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import choice_words, read_entry
 from minseg_tui.lab.state.results import Comparison, Notice
 from minseg_tui.lab.state.session import Entry, Session, TableRow
-from minseg_tui.lab.views import check_text, check_words
+from minseg_tui.lab.views import check_says, check_text, check_words
 from minseg_tui.model import identify as model_identify
 from minseg_tui.model.check import words as model_words
 from minseg_tui.model.check.effects import in_words
@@ -1220,7 +1220,7 @@ def check(session: Session) -> CheckView:
     cu = r.close_up
     window = slice(cu.start, cu.end) if cu is not None else slice(0, 0)
     notes = tuple(f"cannot say: {c.text}" for c in f.caveats) + tuple(
-        f"anomaly: {a.text}" for a in r.anomalies
+        f"anomaly: {check_says.anomaly(a)}" for a in r.anomalies
     )
     u: FloatArray | None = None  # unread: the story says less about the close-up's step
     if mc.run is not None:

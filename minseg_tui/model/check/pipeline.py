@@ -109,10 +109,8 @@ def check(
     if not glitch and _in_motion(y):
         if u[0] != 0:
             full.z0 = None
-            how = f"taken as the steady speed under its first input ({u[0]:g} V)"
         else:
             full.z0 = _initial_speed(full, rng0)
-            how = "its initial speed was fitted"
         notes.append(
             an.Anomaly(
                 "starts_moving",
@@ -120,7 +118,7 @@ def check(
                 float(t[0]),
                 float(y[min(1, y.size - 1)]),
                 "rad/s",
-                f"the log starts with the wheel already turning; {how}",
+                an.StartsMoving(float(u[0]), bool(u[0] == 0)),
             )
         )
 
@@ -240,14 +238,7 @@ def check(
         noise = scatter(full.y - ext.predict(full), u, settle, y != 0)
     log = replace(log, noise=noise)
     if repeated:
-        notes.append(
-            an.repeated_miss(
-                t,
-                dist.edges_of(repeated, u),
-                repeated_at,
-                "the speed departs from the model's simulation the same way",
-            )
-        )
+        notes.append(an.repeated_miss(t, dist.edges_of(repeated, u), repeated_at))
     return _report(
         t,
         u,
@@ -467,11 +458,8 @@ def _report(
                 an.repeated_miss(
                     t,
                     [int(a.row) for a in late if a.row is not None],
-                    f"of the {edges}",
-                    "the response looks shifted in time (by "
-                    + ", ".join(f"{a.size:+.0f}" for a in late[:6])
-                    + (" ..." if len(late) > 6 else "")
-                    + " ms)",
+                    of_edges=edges,
+                    shifts_ms=tuple(a.size for a in late),
                 )
             ]
         anomalies += late

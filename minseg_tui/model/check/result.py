@@ -6,6 +6,7 @@ Every key that existed keeps its meaning; new ones are added (see :meth:`CheckRe
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
@@ -16,6 +17,15 @@ from minseg_tui.model.check.figures import CloseUp, Gain, Lead
 from minseg_tui.model.check.sampling import Sampling
 
 FloatArray = NDArray[np.float64]
+
+
+class Says(Protocol):
+    """Who words the records for the JSON (:mod:`minseg_tui.lab.views.check_says`: the
+    model gives records, the sentences are made outside it)."""
+
+    def anomaly(self, a: Anomaly) -> str:
+        """The sentence of anomaly ``a``."""
+        ...
 
 
 @dataclass(frozen=True)
@@ -130,15 +140,15 @@ class CheckResult:
     lead: Lead | None = None
     close_up: CloseUp | None = None
 
-    def to_dict(self) -> dict[str, object]:
-        """The JSON object of ``minseg-tui analyze --json``."""
+    def to_dict(self, says: Says) -> dict[str, object]:
+        """The JSON object of ``minseg-tui analyze --json``, its sentences by ``says``."""
         return {
             "baseline": self.baseline.to_dict(),
             "finding": self.finding.to_dict(),
             "extended": self.extended.to_dict(),
             "gain": self.gain.to_dict(),
             "deviations": {"where": self.where, "regions": [d.to_dict() for d in self.deviations]},
-            "anomalies": [a.to_dict() for a in self.anomalies],
+            "anomalies": [a.to_dict(says.anomaly(a)) for a in self.anomalies],
             "rows": int(self.t.size),
             "sampling": self.sampling.to_dict() if self.sampling else None,
             "lead": self.lead.to_dict() if self.lead else None,
