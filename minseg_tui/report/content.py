@@ -656,10 +656,10 @@ def _model_check_section(session: Session) -> Section | None:
         *_two_fits(session, mc.run, b.params),
         f"Where it deviates: {r.where}.",
         f"Most likely cause: {in_words(f.cause)}. The check's evidence, over the whole log: "
-        f"{f.evidence}",
+        f"{check_says.evidence(f)}",
     ]
     items += [
-        f"Also: {in_words(o.cause)} ({model_words.params(o.params)}): {o.evidence}"
+        f"Also: {in_words(o.cause)} ({model_words.params(o.params)}): {check_says.other(o)}"
         for o in f.others
     ]
     if named:
@@ -696,7 +696,7 @@ def _model_check_section(session: Session) -> Section | None:
         )
     if f.caveats:
         details.blocks.append(check_text.CAVEATS)
-        details.blocks.append([c.text for c in f.caveats])
+        details.blocks.append([check_says.caveat(c) for c in f.caveats])
     if r.anomalies:
         details.blocks.append(check_text.ANOMALIES)
         details.blocks.append([check_says.anomaly(a) for a in r.anomalies])

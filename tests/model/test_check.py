@@ -12,7 +12,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from minseg_tui.lab.views.check_says import as_json
+from minseg_tui.lab.views.check_says import as_json, evidence
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import effects_of
 from minseg_tui.model.check.fit import whiten
@@ -37,7 +37,7 @@ SEEDS = (101, 102, 103)
 def test_finds_hidden_effect_and_its_parameter(cause, seed):
     log = make_log(cause, seed=seed)
     r = check(log.t, log.u, log.omega)
-    assert r.finding.cause == cause, r.finding.evidence
+    assert r.finding.cause == cause, evidence(r.finding)
     name, tol_abs, tol_rel = TOLERANCE[cause]
     est = r.extended.params[name]
     assert abs(est - log.param) <= tol_abs + tol_rel * log.param, (est, log.param)
@@ -50,7 +50,7 @@ def test_finds_hidden_effect_and_its_parameter(cause, seed):
 def test_clean_first_order_data_is_none(seed):
     log = make_log("none", seed=seed, amplitudes=(3.0,) if seed % 2 else (2.0, 3.0, 4.0))
     r = check(log.t, log.u, log.omega)
-    assert r.finding.cause == "none", r.finding.evidence
+    assert r.finding.cause == "none", evidence(r.finding)
     assert r.extended == r.baseline
     assert r.baseline.params["T"] == pytest.approx(0.043, rel=0.05)
     assert r.baseline.params["K"] == pytest.approx(1.98, rel=0.02)

@@ -7,7 +7,7 @@ are for benchmarks/model_check_independent.py's figures).
 import numpy as np
 import pytest
 
-from minseg_tui.lab.views.check_says import anomaly, as_json
+from minseg_tui.lab.views.check_says import anomaly, as_json, caveat, evidence
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import BY_CAUSE
@@ -112,9 +112,11 @@ def test_when_a_different_pair_fits_about_as_well_the_check_says_it_cannot_tell(
     r = check(log.t, log.u, log.omega)
     assert named(r) == ["current_limit", "dead_time"]
     assert ["current_limit", "second_pole"] in [sorted(a) for a in r.finding.ambiguous_with]
-    told = [c for c in r.finding.caveats if c.kind == "cannot_tell" and "this log cannot" in c.text]
+    told = [
+        c for c in r.finding.caveats if c.kind == "cannot_tell" and "this log cannot" in caveat(c)
+    ]
     assert len(told) == len(r.finding.ambiguous_with)
-    pole = next(c.text for c in told if "from current limit + second pole" in c.text)
+    pole = next(caveat(c) for c in told if "from current limit + second pole" in caveat(c))
     assert "a faster sampling" in pole and "would" in pole
     assert as_json(r)["finding"]["ambiguous_with"] == r.finding.ambiguous_with
     # the pole named is said to be a pole, not a delay that a pole could replace
@@ -339,7 +341,7 @@ def test_the_coast_sentence_times_the_fall_to_half_from_the_drop():
     log = make(3, ("coulomb_friction", "coast_on_zero"))
     r = check(log.t, log.u, log.omega)
     assert r.finding.cause == "coast_on_zero"
-    words = r.finding.evidence
+    words = evidence(r.finding)
     t_drop = float(words.split("drops to 0 at t = ")[1].split(" s")[0])
     after = float(words.split("first reading under half, ")[1].split(" ms after the drop")[0])
     a = int(np.argmin(np.abs(log.t - t_drop)))
@@ -574,7 +576,7 @@ def test_one_delay_like_cause_standing_in_for_the_other_two_gives_way_to_them():
     assert p["T"] == pytest.approx(log.T, rel=0.05)
     # what would tell them apart sets a cause of the pair against one of the rival, never the
     # delay against the pole when both are named
-    told = [c.text for c in r.finding.caveats if c.kind == "cannot_tell"]
+    told = [caveat(c) for c in r.finding.caveats if c.kind == "cannot_tell"]
     assert all("a delay leaves those samples flat" not in w for w in told), told
 
 

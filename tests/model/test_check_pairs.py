@@ -11,6 +11,7 @@ import itertools
 
 import pytest
 
+from minseg_tui.lab.views.check_says import evidence, other
 from minseg_tui.model.check import check
 from minseg_tui.model.synth import CAUSES, PARAM_RANGES, make_log, plant_with
 
@@ -31,7 +32,7 @@ def close(cause, est, truth):
 def test_both_effects_are_named_with_both_parameters(a, b):
     log = make_log(a, seed=3001, also=b)
     r = check(log.t, log.u, log.omega)
-    assert named(r) == sorted((a, b)), r.finding.evidence
+    assert named(r) == sorted((a, b)), evidence(r.finding)
     # the extended model holds both: largest first, both parameters, one T and K
     assert r.extended.model == "first_order+" + "+".join(
         [r.finding.cause, *(o.cause for o in r.finding.others)]
@@ -44,7 +45,7 @@ def test_both_effects_are_named_with_both_parameters(a, b):
         lo, hi = r.extended.intervals[p]
         assert lo <= r.extended.params[p] <= hi
     # every sentence is about this log's own numbers; the others say what each adds
-    assert all("taking it out of the model" in o.evidence for o in r.finding.others)
+    assert all("taking it out of the model" in other(o) for o in r.finding.others)
 
 
 @pytest.mark.parametrize("cause", CAUSES)

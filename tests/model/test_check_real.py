@@ -15,6 +15,7 @@ from functools import cache
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
+from minseg_tui.lab.views.check_says import evidence
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from tests.shared_data import SHARED_DATA
@@ -262,7 +263,7 @@ def test_a_cap_is_not_said_to_brake_on_a_log_without_a_step_down(name):
     # so the evidence must not speak of the speed falling along a ramp after a step down
     r, words = analyze(name)
     assert r.finding.cause == "current_limit"
-    assert "step down" not in r.finding.evidence
+    assert "step down" not in evidence(r.finding)
     assert "both ways" not in words
 
 

@@ -18,6 +18,7 @@ import pytest
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.compare import two_T_of
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views.check_says import caveat
 from minseg_tui.model.check.effects import PARAM_UNITS, in_words
 from minseg_tui.quantities import UNITS, format_number, shown_unit
 from minseg_tui.report import svg
@@ -308,7 +309,7 @@ def test_a_real_motor_outside_the_list_shows_its_caveats_and_current_limit(tmp_p
     assert re.search(r"a_max = [0-9.]+ rad/s\^2 \(95 %: ", section)
     assert "What the check cannot say here:" in section
     for c in r.finding.caveats:
-        assert c.text in section
+        assert caveat(c) in section
 
 
 # -- the plot itself ----------------------------------------------------------------------------

@@ -1,5 +1,5 @@
 """The model check's sentences, made from its typed records outside the model: the one place
-that words what the check found (the anomalies so far), for ``minseg-tui analyze`` (its
+that words what the check found (the evidence of the causes, the caveats, the anomalies), for ``minseg-tui analyze`` (its
 text and its ``--json``), the lab's screen and the report alike.
 
 The model (:mod:`minseg_tui.model.check`) gives records holding the numbers a sentence
@@ -14,6 +14,11 @@ import numpy as np
 
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check import anomalies as an
+from minseg_tui.model.check import effects as fx
+from minseg_tui.model.check import result as rs
+from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.check.words import params
+from minseg_tui.quantities import format_number
 
 
 def _miss(a: an.Anomaly, f: an.ModelMiss) -> str:
@@ -118,10 +123,384 @@ def anomaly(a: an.Anomaly) -> str:
     )
 
 
+SMOOTH: dict[rs.Alike, str] = {
+    "filters": "this speed is smooth, not a difference of encoder counts: an averaging filter "
+    "on the speed and an extra pole in the motor look alike here, so the log cannot tell "
+    "them apart; the fit prefers the one named",
+    "pole_measured": "this speed is smooth, not a difference of encoder counts: an average of "
+    "the speed and a first-order filter of it (a pole on the measurement) are both filters of "
+    "the reading, and the pole named acts there; the fit prefers it",
+}
+"""Why a smooth speed column cannot tell the causes that act on the reading apart."""
+
+TELL_APART: dict[frozenset[str], str] = {
+    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
+    "samples after each step (more counts per sample, a faster sampling where the counts "
+    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
+    "bends smoothly from the start)",
+    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
+    "(a delay shifts the rise, an average turns it into a ramp)",
+    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
+    "of the speed acts on the measurement only, a pole on the motor)",
+    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
+    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
+    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
+    "limits the big steps only, friction takes the same volts off every level)",
+    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
+    "would (a coast acts only at 0)",
+}
+"""What kind of log would tell two causes apart, in words, for the pairs a log often
+cannot tell (the first pair that sets a cause only one model holds against a cause only
+the other holds speaks; a pair not here gets the check's general words)."""
+
+
+def what_would_tell(a: tuple[str, ...], b: tuple[str, ...]) -> str:
+    """What kind of log would tell causes ``a`` from ``b`` apart, in words."""
+    only_a, only_b = set(a) - set(b), set(b) - set(a)
+    for pair, words in TELL_APART.items():
+        # a pair that sets a cause of one against a cause of the other
+        if pair & only_a and pair & only_b:
+            return words
+    return (
+        "steps of other sizes, a step down to a small voltage and a faster sampling would "
+        "show more of each"
+    )
+
+
+def _untold(f: rs.Untold) -> str:
+    how = {
+        "whitened": f"the second leaves {f.ratio:.2f} times the whitened residual of the first",
+        "squared": f"the second leaves {f.ratio:.2f} times the squared speed error (their "
+        "averages differ, so their whitened residuals cannot be compared) of the first",
+        "squared_less": f"the second misses the speed itself slightly less ({f.ratio:.2f} times "
+        "the squared speed error of the first; their averages differ, so their "
+        "whitened residuals, where the first is ahead, cannot be compared)",
+    }[f.compared]
+    return (
+        f"this log cannot tell {in_words('+'.join(f.named))} from "
+        f"{in_words('+'.join(f.other))}: {how}; {what_would_tell(f.named, f.other)}"
+    )
+
+
+def caveat(c: rs.Caveat) -> str:
+    """The sentence of caveat ``c``: what the check cannot say about this log, and why."""
+    f = c.facts
+    if isinstance(f, rs.OnBound):
+        return (
+            f"{c.cause} came out clear ({params(f.params)}), but {f.why}: "
+            "the effect in this log is outside what that cause can express (or its range is "
+            "too small), so it is not named"
+        )
+    if isinstance(f, rs.Misses):
+        against = (
+            f"{f.size / f.level:.0f} times what the noise leaves ({f.level:.3g} rad/s)"
+            if f.level > 0
+            else "where the speed's noise measures 0 rad/s"
+        )
+        return (
+            f"the best model found still misses {f.region.replace('_', ' ')}: its error held "
+            f"over 9 samples is {f.size:.3g} rad/s rms there, {against}; something outside the "
+            "list of causes acts in this log, so the named cause(s) explain only part of it"
+        )
+    if isinstance(f, rs.Smooth):
+        return SMOOTH[f.alike]
+    if isinstance(f, rs.Scatter):
+        scatter = (
+            f"the speed scatters {f.noise:.3g} rad/s from sample to sample, "
+            f"{f.noise / f.counts:.1f} times what the encoder's counts explain "
+            f"({f.counts:.3g} rad/s)"
+        )
+        if f.follows:
+            return (
+                f"{scatter}, yet the model, simulated at the log's own sample times, follows "
+                f"it to {f.left:.3g} rad/s rms: the scatter is the sampling's timing, which the "
+                "simulation reproduces"
+            )
+        return (
+            f"{scatter}: timing jitter, ripple or resampling add noise no model of the motor "
+            "explains"
+        )
+    if isinstance(f, rs.Unjudged):
+        return f"{c.cause} cannot be judged: {f.why}"
+    return _untold(f)
+
+
+def _ms(x: float) -> str:
+    """A time (s) in whole ms: '42 ms'."""
+    return f"{x * 1e3:.0f} ms"
+
+
+def _span(x: float) -> str:
+    """A duration (s) as the check's sentences write it: in ms under a second."""
+    return _ms(x) if x < 1.0 else f"{x:.3g} s"
+
+
+PURE_DELAY = "(a pure delay; an extra pole would start at once, only more slowly)"
+"""The claim of a delay's evidence against a pole."""
+
+NO_CORNER = " (a pure delay would show a corner)"
+"""The claim of a pole's evidence against a delay."""
+
+
+def _claim(b: rs.Because) -> str:
+    """The claim of ``b``'s cause against its rival, with the figure behind it when the
+    rival was fitted in its place, or taken back when the log cannot rule the rival out."""
+    r = b.rival_ratio
+    if b.cause == "dead_time":
+        if b.void:
+            return "(a delay, or in this log an extra pole or an average about as well)"
+        if r is None:
+            return PURE_DELAY
+        if b.holds:
+            return (
+                f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened "
+                "residual)"
+            )
+        return (
+            f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
+            "the whitened residual: this log hardly tells a delay from a pole)"
+        )
+    if b.void:
+        return ""
+    if r is None:
+        return NO_CORNER
+    if b.holds:
+        return f" (a pure delay in its place leaves {r:.1f} times the whitened residual)"
+    return (
+        f" (though a pure delay in its place leaves only {r:.2f} times the "
+        "whitened residual: this log hardly tells a pole from a delay)"
+    )
+
+
+def _friction_stop(f: fx.FrictionStop) -> str:
+    how = "coasts and " if f.coast else ""
+    text = (
+        f"after the drive drops at t = {f.t:.3f} s the wheel {how}stands still "
+        f"{_ms(f.after)} later (measured, from {f.speed:.3g} rad/s, its mean over the "
+        f"{_ms(f.before)} before the drop)"
+    )
+    if f.left is not None:
+        text += f", where the first-order model still turns at {f.left:.2f} rad/s"
+    return text + f": dry friction stops a wheel in finite time (u_c = {format_number(f.uc)} V)"
+
+
+def _friction_levels(f: fx.FrictionLevels) -> str:
+    text = (
+        "the settled speeds are not proportional to the voltage"
+        + (f": a straight line through them meets zero speed at {f.off:.2f} V" if f.off else "")
+        + f"; dry friction with u_c = {format_number(f.uc)} V does that (a voltage lost in the "
+        "brushes or the driver looks the same in steady state)"
+    )
+    if not f.falls:
+        text += "; the log has no step-down, so a finite stop cannot be seen"
+    return text
+
+
+def _delay(f: fx.Delay, claim: str) -> str:
+    seen = (
+        f"after the step{'s' if f.steps > 1 else ''} the measured speed first moves "
+        f"{_ms(f.lag)} later"
+        if f.lag is not None
+        else "the response starts late"
+    )
+    if f.slow:
+        return (
+            f"{seen}: a first-order response that starts {_ms(f.d)} after the command fits, "
+            "but the speed moves before that delay ends, so the start is slow rather than "
+            "late (an extra pole or an average of the speed starts so; the delay stands in "
+            "for it)"
+        )
+    return f"{seen}: a first-order response that starts {_ms(f.d)} after the command fits " + claim
+
+
+def _averaged(f: fx.Averaged) -> str:
+    n = f.n
+    which = "every edge becomes" if f.edges > 1 else "the step becomes"
+    ramp = f"{which} a ramp about {n} samples ({_ms(n * f.ts)}) long"
+    if f.smooth:
+        return (
+            f"{'the rises are' if f.edges > 1 else 'the rise is'} smoothed as an average of the "
+            f"speed over {n} samples ({_ms(n * f.ts)}) would smooth it; an extra pole in the "
+            "motor would look alike in this smooth signal"
+        )
+    if f.floor is not None:
+        return (
+            f"the speed scatters only {f.noise:.3g} rad/s where one count per sample alone "
+            f"gives a noise floor of {f.floor:.3g} rad/s, and {ramp}: the speed is an average "
+            f"over {n} samples, which divides the encoder noise by {n}"
+        )
+    if f.step is not None:
+        return (
+            f"the speed's values come in steps of only {f.step:.3g} rad/s and it scatters "
+            f"{f.noise:.3g} rad/s, and {ramp}: the speed is an average over {n} samples"
+        )
+    return f"{ramp}: the speed looks averaged over {n} samples"
+
+
+def _coast(f: fx.Coast) -> str:
+    if f.t is None:
+        return f"the wheel runs down slowly at zero command (time constant {_span(f.tc)})"
+    after = _ms(f.after)
+    line = (
+        f"from the row before the drop to the first reading under half, {after} after the drop"
+        if f.half
+        else f"from the row before the drop over the {after} after it, the speed staying above "
+        f"half of its {f.w0:.3g} rad/s throughout"
+    )
+    return (
+        f"right after the command drops to 0 at t = {f.t:.3f} s the speed falls at "
+        f"{f.decel:.3g} rad/s^2 (a line through the speed {line}), where a braked motor (T = "
+        f"{_ms(f.T)}) would fall at {f.w0 / f.T:.3g} rad/s^2 at first: the bridge lets the "
+        f"wheel coast, with a time constant of {_span(f.tc)} at zero command"
+    )
+
+
+POLE_BESIDE: dict[str, str] = {
+    "coulomb_friction": "the wheel stops",
+    "coast_on_zero": "it coasts",
+    "current_limit": "the cap holds",
+}
+"""Where a pole on the measurement shows beside each nonlinear cause (on the drive it fits
+worse there)."""
+
+
+def _pole(f: fx.Pole, claim: str) -> str:
+    text = "each rise starts with zero slope (an S-shaped start)"
+    if f.smooth:
+        text += " (in this smooth signal an average of the speed would look alike)"
+    if f.got is not None:
+        text += (
+            f": {_ms(f.after)} after the step the speed has risen {f.got:.3g} rad/s "
+            f"where the first-order model rises {f.model:.3g} rad/s"
+        )
+    if f.way == "filtered":
+        return text + (
+            "; the speed column is smooth, not a difference of encoder counts, so an extra pole "
+            "on the measurement is a filter of that column, run sample by sample as a logger "
+            f"runs it (each reading takes {f.share:.2f} of the new speed and keeps the rest of "
+            f"the one before: a first-order filter of {_ms(f.t2)}); a pole on the drive fits "
+            f"this log worse{claim}"
+        )
+    if f.way == "measured":
+        where = [POLE_BESIDE[c] for c in f.beside]
+        return text + (
+            f"; an extra pole of {_ms(f.t2)} on the measurement (a compliant coupling to the "
+            "encoder, or a first-order filter of the speed) lags what the encoder reads: on "
+            f"the drive it fits worse where {' and where '.join(where) or 'the effects act'}"
+            f"{claim}"
+        )
+    if f.way == "driver":
+        return text + (
+            f"; an extra pole of {_ms(f.t2)} in the driver lags its command and runs on while "
+            "the wheel coasts: its output has fallen towards zero when the bridge closes, so "
+            "the wheel is braked at first, which the armature's own lag (no current while "
+            f"coasting) does not do{claim}"
+        )
+    return text + f"; an extra pole of {_ms(f.t2)} delays the torque{claim}"
+
+
+def _cap(f: fx.Cap) -> str:
+    seen = f"the speed ramps at about {f.rate:.3g} rad/s^2" if f.rate else "the speed ramps"
+    top = (
+        f"; the same motor without a cap would start at K u/T = {f.uncapped:.3g} rad/s^2, "
+        "steepest at once"
+        if f.uncapped is not None
+        else ""
+    )
+    both = (
+        " both ways (braking after a step down is capped too: the speed falls along a ramp "
+        "as well, which a cap on accelerating alone does not fit as well)"
+        if f.both
+        else ""
+    )
+    return (
+        f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
+        f"into the plateau{top}: the drive caps the current{both}, a_max = {f.a_max:.3g} rad/s^2"
+    )
+
+
+def shown(b: rs.Because) -> str:
+    """What a cause's evidence reads off the log, in words, with its claim against a rival
+    (every number read off the log)."""
+    f = b.shown
+    if isinstance(f, fx.FrictionStop):
+        return _friction_stop(f)
+    if isinstance(f, fx.FrictionLevels):
+        return _friction_levels(f)
+    if isinstance(f, fx.Delay):
+        return _delay(f, _claim(b))
+    if isinstance(f, fx.Averaged):
+        return _averaged(f)
+    if isinstance(f, fx.Coast):
+        return _coast(f)
+    if isinstance(f, fx.Pole):
+        return _pole(f, _claim(b))
+    if isinstance(f, fx.Cap):
+        return _cap(f)
+    raise TypeError(f"no words for {type(f).__name__}")
+
+
+def _plain(p: rs.Plain) -> str:
+    """The evidence when no cause is named."""
+    if p.how == "unexplained":
+        return "no cause from the list explains what the first-order model misses"
+    if p.how == "fits":
+        text = "the first-order model fits the log"
+    elif p.how == "turning":
+        text = (
+            f"where the wheel turns ({p.turning} of {p.rows} rows; "
+            f"it stands still in the others) the first-order model misses by "
+            f"{p.left_turning:.2g} rad/s rms above the noise ({p.level:.3g} rad/s)"
+        )
+    elif p.how == "at_noise":
+        text = (
+            f"the first-order model's rms error is at the level of the speed's noise: "
+            f"{p.rms:.3g} rad/s against a noise of {p.level:.3g} rad/s"
+        )
+    else:
+        text = (
+            f"the first-order model misses by {p.left:.2g} rad/s rms above the noise "
+            f"({p.level:.3g} rad/s), but no cause from the list is clear enough to name"
+        )
+    if p.low_fit is not None:
+        text += (
+            f" (its fit is only {p.low_fit:.0f} % because that noise is large against the "
+            "speed's changes, not because the model is wrong)"
+        )
+    return text
+
+
+def evidence(f: rs.Finding) -> str:
+    """The finding's evidence in words: what the cause shows in the log and how much of the
+    residual it removes, and why the runner-up lost; or, when no cause is named, how the
+    first-order model does and why no cause was."""
+    e = f.evidence
+    if isinstance(e, rs.Plain):
+        text = _plain(e)
+        return f"{text}; {f.runner_up_why}" if f.runner_up_why else text
+    text = (
+        f"{shown(e)}. It removes {100 * e.reduction:.1f} % of the "
+        f"whitened residual the model leaves without it (criterion gain {e.gain:.0f})"
+    )
+    return f"{text}; {f.runner_up_why}" if f.runner_up else text
+
+
+def other(o: rs.Other) -> str:
+    """A further effect's evidence in words: what it shows, and what taking it out costs."""
+    e = o.evidence
+    return (
+        f"{shown(e)}; taking it out of the model leaves "
+        f"{1 / max(1 - e.reduction, 1e-12):.1f} times the whitened residual"
+    )
+
+
 class _Says:
     """The sentences here, as the result's JSON asks for them (:class:`~.result.Says`)."""
 
     anomaly = staticmethod(anomaly)
+    caveat = staticmethod(caveat)
+    evidence = staticmethod(evidence)
+    other = staticmethod(other)
 
 
 def as_json(r: CheckResult) -> dict[str, object]:

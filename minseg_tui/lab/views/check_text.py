@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from minseg_tui.lab.views.check_says import anomaly
+from minseg_tui.lab.views.check_says import anomaly, caveat, evidence, other
 from minseg_tui.model.check import CheckResult, Gain
 from minseg_tui.model.check.words import params
 from minseg_tui.quantities import MISSING, format_number
@@ -182,9 +182,9 @@ def text(r: CheckResult) -> str:
             f"  mean {d.mean:+.3f} rad/s"
         )
     lines.append(f"Cause: {f.cause}")
-    lines.append(f"  {f.evidence}")
+    lines.append(f"  {evidence(f)}")
     for o in f.others:
-        lines.append(f"  also: {o.cause} ({params(o.params)}): {o.evidence}")
+        lines.append(f"  also: {o.cause} ({params(o.params)}): {other(o)}")
     if f.cause != "none":
         lines.append(f"Extended model ({e.model}): {params(e.params, e.intervals)}")
         lines.append(f"  rmse {e.rmse:.3f} rad/s, fit {e.fit_percent:.1f} % ({_over(r)})")
@@ -227,7 +227,7 @@ def text(r: CheckResult) -> str:
     lines.append("  " + "; ".join(rest) + f" (rms, noise and fit figures {_over(r)}{held})")
     if f.caveats:
         lines.append(CAVEATS)
-        lines.extend(f"  - {c.text}" for c in f.caveats)
+        lines.extend(f"  - {caveat(c)}" for c in f.caveats)
     if r.anomalies:
         lines.append(ANOMALIES)
         lines.extend(f"  - {anomaly(a)}" for a in r.anomalies)

@@ -1219,7 +1219,7 @@ def check(session: Session) -> CheckView:
     t = np.asarray(r.t, dtype=float)
     cu = r.close_up
     window = slice(cu.start, cu.end) if cu is not None else slice(0, 0)
-    notes = tuple(f"cannot say: {c.text}" for c in f.caveats) + tuple(
+    notes = tuple(f"cannot say: {check_says.caveat(c)}" for c in f.caveats) + tuple(
         f"anomaly: {check_says.anomaly(a)}" for a in r.anomalies
     )
     u: FloatArray | None = None  # unread: the story says less about the close-up's step
@@ -1244,7 +1244,7 @@ def check(session: Session) -> CheckView:
         extended,
         omega - baseline,
         f.cause,
-        f.evidence,
+        check_says.evidence(f),
         ext,
         "; ".join(others),
         lead=lead,

@@ -6,13 +6,14 @@ Every key that existed keeps its meaning; new ones are added (see :meth:`CheckRe
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Protocol
+from typing import Literal, Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.model.check.anomalies import Anomaly
 from minseg_tui.model.check.deviations import Deviation
+from minseg_tui.model.check.effects import Shown
 from minseg_tui.model.check.figures import CloseUp, Gain, Lead
 from minseg_tui.model.check.sampling import Sampling
 
@@ -25,6 +26,18 @@ class Says(Protocol):
 
     def anomaly(self, a: Anomaly) -> str:
         """The sentence of anomaly ``a``."""
+        ...
+
+    def caveat(self, c: Caveat) -> str:
+        """The sentence of caveat ``c``."""
+        ...
+
+    def evidence(self, f: Finding) -> str:
+        """The evidence of finding ``f`` in words."""
+        ...
+
+    def other(self, o: Other) -> str:
+        """The evidence of a further effect ``o`` in words."""
         ...
 
 
@@ -55,15 +68,129 @@ class ModelFit:
 
 
 @dataclass(frozen=True)
+class Because:
+    """The evidence of a cause in the model: what it reads off the log (``shown``, the
+    cause's own record), the share of the whitened residual it removes (``reduction``, 0-1)
+    and its criterion gain (``gain``) against the model without it, and the claim it makes
+    against a rival (:attr:`.effects.Candidate.claim`): ``rival_ratio``: the rival in its
+    place leaves this many times the whitened residual (None: not fitted), ``holds``: by
+    enough to make the claim; ``void``: the log cannot rule the rival out, the claim is
+    taken back."""
+
+    cause: str
+    shown: Shown
+    reduction: float
+    gain: float
+    rival_ratio: float | None = None
+    holds: bool = False
+    void: bool = False
+
+
+FitSaid = Literal["fits", "turning", "at_noise", "above", "unexplained"]
+"""What the first-order model does when no cause is named: fits a log without noise,
+misses where the wheel turns (it stands still in most rows), errs at the level of the noise,
+misses above it but no cause is clear, or misses what no cause explains."""
+
+
+@dataclass(frozen=True)
+class Plain:
+    """The evidence when no cause is named (``how``, with its figures: the noise level,
+    rad/s; the rows where the wheel turns of all ``rows``; the miss above the noise there,
+    ``left_turning``, and over the log, ``left``; the rms error ``rms``, rad/s; ``low_fit``:
+    the fit (%) when it is low only because of the noise, else None)."""
+
+    how: FitSaid
+    level: float = 0.0
+    turning: int = 0
+    rows: int = 0
+    left_turning: float = 0.0
+    rms: float = 0.0
+    left: float = 0.0
+    low_fit: float | None = None
+
+
+@dataclass(frozen=True)
 class Other:
     """A further effect found on top of the cause: its name, parameter and evidence."""
 
     cause: str
     params: dict[str, float]
-    evidence: str
+    evidence: Because
 
-    def to_dict(self) -> dict[str, object]:
-        return {"cause": self.cause, "params": dict(self.params), "evidence": self.evidence}
+    def to_dict(self, says: Says) -> dict[str, object]:
+        """The effect's JSON, its evidence in words by ``says``."""
+        return {"cause": self.cause, "params": dict(self.params), "evidence": says.other(self)}
+
+
+@dataclass(frozen=True)
+class OnBound:
+    """A candidate that came out clear but sits on a bound: its parameter and T as fitted
+    (SI, by name) and why it is not named (the selection's reason, in words)."""
+
+    params: dict[str, float]
+    why: str
+
+
+@dataclass(frozen=True)
+class Misses:
+    """The best model still misses clearly: its error held over 9 samples (rad/s rms) in
+    the region where that is worst (a :data:`.deviations.REGIONS` name), against what the
+    noise leaves there (rad/s; 0: the noise measures 0)."""
+
+    size: float
+    region: str
+    level: float
+
+
+Alike = Literal["filters", "pole_measured"]
+"""Why a smooth speed column cannot tell the causes that act on the reading apart: an
+average and a pole on the drive look alike ('filters'), or the pole named is a filter of
+the reading itself ('pole_measured')."""
+
+
+@dataclass(frozen=True)
+class Smooth:
+    """A smooth speed column (not a difference of counts): the causes that act on the
+    reading cannot be told from the one named, for the reason ``alike``."""
+
+    alike: Alike
+
+
+@dataclass(frozen=True)
+class Scatter:
+    """The speed scatters ``noise`` (rad/s) from sample to sample, more than the counts
+    explain (``counts``, rad/s); ``left``: the model's rms error (rad/s); ``follows``: the
+    model simulated at the log's own sample times follows it (the scatter is the sampling's
+    timing), else it is noise no model explains."""
+
+    noise: float
+    counts: float
+    left: float
+    follows: bool
+
+
+@dataclass(frozen=True)
+class Unjudged:
+    """The log cannot show the cause: ``why`` (what it lacks, in words)."""
+
+    why: str
+
+
+Compared = Literal["whitened", "squared", "squared_less"]
+"""How two models the log cannot tell apart were compared: by their whitened residuals
+(same average), or by their squared speed errors (their averages differ), the second
+ahead there ('squared_less') or not ('squared')."""
+
+
+@dataclass(frozen=True)
+class Untold:
+    """This log cannot tell the causes named (``named``) from ``other``: the second leaves
+    ``ratio`` times the first's residual, compared as ``compared`` says."""
+
+    named: tuple[str, ...]
+    other: tuple[str, ...]
+    ratio: float
+    compared: Compared
 
 
 @dataclass(frozen=True)
@@ -72,14 +199,16 @@ class Caveat:
     whose parameter sits on its search bound; 'misses': the best model still misses clearly
     above the noise; 'cannot_judge': the log cannot show a cause; 'cannot_tell': two causes
     look alike in this log; 'noise': the speed scatters more than the encoder explains),
-    the cause concerned (or None) and a sentence."""
+    the cause concerned (or None) and what its sentence needs (``facts``; the sentence is
+    written outside the model, :mod:`minseg_tui.lab.views.check_says`)."""
 
     kind: str
     cause: str | None
-    text: str
+    facts: OnBound | Misses | Smooth | Scatter | Unjudged | Untold
 
-    def to_dict(self) -> dict[str, object]:
-        return {"kind": self.kind, "cause": self.cause, "text": self.text}
+    def to_dict(self, text: str) -> dict[str, object]:
+        """The caveat's JSON, ``text`` its sentence."""
+        return {"kind": self.kind, "cause": self.cause, "text": text}
 
 
 @dataclass(frozen=True)
@@ -90,7 +219,7 @@ class Finding:
     and the other explanations the log cannot tell from the one named."""
 
     cause: str
-    evidence: str
+    evidence: Because | Plain
     others: list[Other] = field(default_factory=list)
     caveats: list[Caveat] = field(default_factory=list)
     explained: bool = True
@@ -100,12 +229,13 @@ class Finding:
     """Other sets of causes (each like [cause, *others]) that fit this log about as well as
     the one named: the log cannot tell them apart (a 'cannot_tell' caveat says so)."""
 
-    def to_dict(self) -> dict[str, object]:
+    def to_dict(self, says: Says) -> dict[str, object]:
+        """The finding's JSON, its sentences by ``says``."""
         return {
             "cause": self.cause,
-            "evidence": self.evidence,
-            "others": [o.to_dict() for o in self.others],
-            "caveats": [c.to_dict() for c in self.caveats],
+            "evidence": says.evidence(self),
+            "others": [o.to_dict(says) for o in self.others],
+            "caveats": [c.to_dict(says.caveat(c)) for c in self.caveats],
             "explained": self.explained,
             "runner_up": self.runner_up,
             "runner_up_why": self.runner_up_why,
@@ -144,7 +274,7 @@ class CheckResult:
         """The JSON object of ``minseg-tui analyze --json``, its sentences by ``says``."""
         return {
             "baseline": self.baseline.to_dict(),
-            "finding": self.finding.to_dict(),
+            "finding": self.finding.to_dict(says),
             "extended": self.extended.to_dict(),
             "gain": self.gain.to_dict(),
             "deviations": {"where": self.where, "regions": [d.to_dict() for d in self.deviations]},
