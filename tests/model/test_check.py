@@ -12,7 +12,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from minseg_tui.lab.views.check_says import as_json, evidence
+from minseg_tui.lab.views.check_says import as_json, evidence, lead_why
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import effects_of
 from minseg_tui.model.check.fit import whiten
@@ -221,9 +221,10 @@ def test_two_effects_name_the_main_one_and_list_the_other(seed):
 
 
 def test_where_it_deviates_with_an_exact_steady_state():
-    from minseg_tui.model.check.deviations import Deviation, describe
+    from minseg_tui.lab.views.check_says import where
+    from minseg_tui.model.check.deviations import Deviation
 
-    text = describe(
+    text = where(
         [Deviation("after_rising_edges", 4, 0.2, 0.1), Deviation("steady_state", 5, 0.0, 0.0)]
     )
     assert "inf" not in text and "exact in steady state" in text and "0.200 rad/s" in text
@@ -339,7 +340,7 @@ def test_the_gain_survives_the_encoder_noise():
     assert g.noise_floor == pytest.approx(2 * math.pi / 720 / 0.005 / math.sqrt(6))
     assert g.rmse_reduction_percent < 20  # the plain rmse hardly moves...
     assert g.extended_angle_rms < 0.5 * g.baseline_angle_rms  # ...the angle does
-    assert r.lead.figure == "extended_angle_rms" and "noise" in r.lead.why
+    assert r.lead.figure == "extended_angle_rms" and "noise" in lead_why(r.lead)
     assert g.heldout_extended_rmse <= g.heldout_baseline_rmse
 
 

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
-from minseg_tui.lab.views.check_says import anomaly, caveat, evidence
+from minseg_tui.lab.views.check_says import anomaly, caveat, evidence, lead_why
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.figures import lead
@@ -203,9 +203,9 @@ def test_a_held_out_error_that_gets_worse_is_said_to():
     # that the named cause made the prediction of the held-out steps worse
     r = _steps_check()
     assert r.lead is not None and r.lead.figure == "heldout_extended_rmse"
-    assert "worse" not in r.lead.why  # 60 ms dead time: held out, the delay predicts better
+    assert "worse" not in lead_why(r.lead)  # 60 ms dead time: held out, the delay predicts better
     worse = replace(r.gain, heldout_baseline_rmse=1.16, heldout_extended_rmse=1.29)
-    why = lead(worse, True).why
+    why = lead_why(lead(worse, True))
     assert "here the extended model predicts them worse (1.16 -> 1.29 rad/s)" in why
 
 

@@ -16,7 +16,10 @@ from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import effects as fx
 from minseg_tui.model.check import result as rs
+from minseg_tui.model.check.deviations import Deviation
 from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.check.figures import CloseUp, Lead, Window
+from minseg_tui.model.check.sampling import Sampling
 from minseg_tui.model.check.words import params
 from minseg_tui.quantities import format_number
 
@@ -494,6 +497,139 @@ def other(o: rs.Other) -> str:
     )
 
 
+def lead_why(g: Lead) -> str:
+    """Why the figure that leads means most for this log, in words."""
+    named = g.named
+    if g.kind == "turning":
+        return (
+            f"the wheel stands still in {g.still} of {g.rows} rows, which makes the rms speed "
+            f"error ({g.error:.3g} rad/s) small; where it turns the error is {g.turning:.3g} "
+            f"rad/s rms against a noise of {g.noise:.3g} rad/s. The angle error adds up "
+            + (
+                "each model's misses over the run, so it tells them apart"
+                if named
+                else "the model's misses over the run, so it judges the model"
+            )
+        )
+    if g.kind == "noisy":
+        return (
+            f"the speed error ({g.error:.3g} rad/s rms) is mostly the noise of the speed "
+            f"({g.noise:.3g} rad/s), which hides "
+            + (
+                "the models' difference; the angle is known far better, so the angle error "
+                "tells them apart"
+                if named
+                else "what the model misses; the angle is known far better, so the angle error "
+                "judges the model"
+            )
+        )
+    if g.kind == "heldout":
+        why = "the models predict steps they were not fitted on: the honest judge of a gain"
+        if g.worse is not None:
+            hb, he = g.worse
+            why += (
+                f"; here the extended model predicts them worse ({hb:.3g} -> {he:.3g} rad/s): "
+                "what the named cause gains on the rows it was fitted on does not carry over "
+                "to the steps it was not fitted on"
+            )
+        return why
+    if g.kind == "above":
+        return (
+            f"this log's speed has a noise of {g.noise:.3g} rad/s rms that no model can "
+            "remove; only the part of the error above it "
+            + ("tells the models apart" if named else "judges the model")
+        )
+    if g.kind == "small_noise":
+        return f"the speed's noise ({g.noise:.3g} rad/s rms) is small against the " + (
+            "models' errors, so the rms error itself tells them apart"
+            if named
+            else "model's error, so the rms error itself judges the model"
+        )
+    return "the noise of this speed is not known, so the plain rms error is all there is"
+
+
+WINDOW: dict[Window, str] = {
+    "stretch": "the stretch where something braked the wheel",
+    "fall": "a step-down, where the wheel slows and stops",
+    "rise": "a rise, where the response starts",
+    "whole": "the whole log",
+}
+"""What a close-up shows, in words."""
+
+
+def close_up_what(c: CloseUp) -> str:
+    """What close-up ``c`` shows, in words."""
+    return WINDOW[c.shows]
+
+
+def every(s: Sampling) -> str:
+    """How often the log was sampled, in plain words: "a sample every 25 ms" when every
+    interval reads the same (to 3 digits), else "a sample every 24.2-25.8 ms (mostly
+    25 ms)", or for a loop without a fixed clock "irregular, a sample every 12-40 ms
+    (nominal 25 ms)"."""
+    lo, hi, ts = (f"{x * 1e3:.3g}" for x in (s.interval_min, s.interval_max, s.ts))
+    if s.how == "even":
+        return f"a sample every {ts} ms"
+    if lo == hi:
+        return f"a sample every {lo} ms"
+    if s.regular:
+        return f"a sample every {lo}-{hi} ms (mostly {ts} ms)"
+    return f"irregular, a sample every {lo}-{hi} ms (nominal {ts} ms)"
+
+
+def sampling(s: Sampling) -> str:
+    """One sentence on the sample times and the speed column."""
+    times = every(s)
+    if s.how != "even":
+        over = "its own interval" if s.over_interval else "the nominal period"
+        src = "as the header says" if s.how == "header" else "detected from the data"
+        if not s.regular:
+            times += (
+                ": a loop without a fixed clock; the long intervals are jitter, not lost samples"
+            )
+        times += f"; each row's speed is taken over {over} ({src}) and simulated so"
+    if s.lost:
+        times += f"; {s.lost} sample(s) lost"
+    if s.resolution is not None:
+        res = (
+            f"one count per sample is {s.resolution:.3g} rad/s ({s.resolution_how}), "
+            f"a noise floor of {s.floor:.3g} rad/s"
+        )
+    elif s.smooth:
+        res = "the speed is smooth, not a difference of counts (a tachometer or a filtered signal)"
+    else:
+        res = "the encoder's resolution is unknown (no # cpr: line, no count steps in the speed)"
+    return f"{times}; {res}"
+
+
+SAME = 1.2
+"""A region whose rms is within this factor of the steady state's is not called the worst."""
+
+
+def where(devs: list[Deviation]) -> str:
+    """One sentence: where the model is worst, against the steady state (about equally good
+    everywhere when no region is ``SAME`` times worse than the steady state)."""
+    if not devs:
+        return "no rows to compare"
+    worst = max(devs, key=lambda d: d.rms)
+    steady = next((d for d in devs if d.region == "steady_state"), None)
+    words = worst.region.replace("_", " ")
+    if steady is None or worst is steady:
+        return (
+            f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
+        )
+    if worst.rms < SAME * steady.rms:
+        return (
+            f"the model is about equally good everywhere ({words}: rms {worst.rms:.3f} rad/s, "
+            f"steady state {steady.rms:.3f} rad/s)"
+        )
+    ratio = f"{worst.rms / steady.rms:.1f}x" if steady.rms > 0 else "exact in steady state"
+    return (
+        f"the model is worst {words}: rms {worst.rms:.3f} rad/s there against "
+        f"{steady.rms:.3f} rad/s in steady state ({ratio})"
+    )
+
+
 class _Says:
     """The sentences here, as the result's JSON asks for them (:class:`~.result.Says`)."""
 
@@ -501,6 +637,10 @@ class _Says:
     caveat = staticmethod(caveat)
     evidence = staticmethod(evidence)
     other = staticmethod(other)
+    lead_why = staticmethod(lead_why)
+    close_up_what = staticmethod(close_up_what)
+    sampling = staticmethod(sampling)
+    where = staticmethod(where)
 
 
 def as_json(r: CheckResult) -> dict[str, object]:

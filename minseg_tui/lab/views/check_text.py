@@ -13,7 +13,15 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from minseg_tui.lab.views.check_says import anomaly, caveat, evidence, other
+from minseg_tui.lab.views.check_says import (
+    anomaly,
+    caveat,
+    evidence,
+    lead_why,
+    other,
+    sampling,
+    where,
+)
 from minseg_tui.model.check import CheckResult, Gain
 from minseg_tui.model.check.words import params
 from minseg_tui.quantities import MISSING, format_number
@@ -169,12 +177,12 @@ def text(r: CheckResult) -> str:
     b, e, f, g = r.baseline, r.extended, r.finding, r.gain
     lines = []
     if r.sampling is not None:
-        lines.append(f"Log: {r.sampling.text()}")
+        lines.append(f"Log: {sampling(r.sampling)}")
     lines += [
         f"Baseline (first order): {params(b.params, b.intervals)}",
         f"  simulated on the measured input: rmse {b.rmse:.3f} rad/s, fit {b.fit_percent:.1f} %"
         f" ({_over(r)})",
-        f"Where it deviates: {r.where}",
+        f"Where it deviates: {where(r.deviations)}",
     ]
     for d in r.deviations:
         lines.append(
@@ -191,7 +199,7 @@ def text(r: CheckResult) -> str:
     else:
         lines.append("Extended model: none needed (it is the baseline)")
     if r.lead is not None:
-        lines.append(f"Gain: {_pair(r, r.lead.figure)} (leads because {r.lead.why})")
+        lines.append(f"Gain: {_pair(r, r.lead.figure)} (leads because {lead_why(r.lead)})")
     rest = []
     floor = g.noise_floor
     noise = g.noise

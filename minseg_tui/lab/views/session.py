@@ -1204,7 +1204,7 @@ def check(session: Session) -> CheckView:
         shown = _figure(g, r.lead.figure, named)
         if shown is not None:
             lead = f"{check_text.figure_words(led).name}: {shown}"
-            lead_why = r.lead.why
+            lead_why = check_says.lead_why(r.lead)
     others = [
         f"{check_text.FIGURES[stem].name} {shown}"
         for stem in check_text.FIGURES
@@ -1253,7 +1253,7 @@ def check(session: Session) -> CheckView:
         close_omega=omega[window],
         close_baseline=baseline[window],
         close_extended=extended[window],
-        close_what=cu.what if cu is not None else "",
+        close_what=check_says.close_up_what(cu) if cu is not None else "",
         noise=cu.noise if cu is not None else floor,
         notes=notes,
         cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),

@@ -15,7 +15,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
 from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select, swapped
-from minseg_tui.model.check.deviations import REGIONS, describe, deviations, regions
+from minseg_tui.model.check.deviations import REGIONS, deviations, regions
 from minseg_tui.model.check.effects import (
     BY_CAUSE,
     CANDIDATES,
@@ -495,7 +495,6 @@ def _report(
         extended,
         gain,
         devs,
-        describe(devs),
         anomalies,
         t,
         y_raw,

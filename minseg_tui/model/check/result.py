@@ -40,6 +40,22 @@ class Says(Protocol):
         """The evidence of a further effect ``o`` in words."""
         ...
 
+    def lead_why(self, g: Lead) -> str:
+        """Why figure ``g`` leads, in words."""
+        ...
+
+    def close_up_what(self, c: CloseUp) -> str:
+        """What close-up ``c`` shows, in words."""
+        ...
+
+    def sampling(self, s: Sampling) -> str:
+        """How the log was sampled, in words."""
+        ...
+
+    def where(self, devs: list[Deviation]) -> str:
+        """Where the first-order model deviates most, in words."""
+        ...
+
 
 @dataclass(frozen=True)
 class ModelFit:
@@ -260,7 +276,6 @@ class CheckResult:
     extended: ModelFit
     gain: Gain
     deviations: list[Deviation]
-    where: str
     anomalies: list[Anomaly]
     t: FloatArray
     omega: FloatArray
@@ -277,12 +292,19 @@ class CheckResult:
             "finding": self.finding.to_dict(says),
             "extended": self.extended.to_dict(),
             "gain": self.gain.to_dict(),
-            "deviations": {"where": self.where, "regions": [d.to_dict() for d in self.deviations]},
+            "deviations": {
+                "where": says.where(self.deviations),
+                "regions": [d.to_dict() for d in self.deviations],
+            },
             "anomalies": [a.to_dict(says.anomaly(a)) for a in self.anomalies],
             "rows": int(self.t.size),
-            "sampling": self.sampling.to_dict() if self.sampling else None,
-            "lead": self.lead.to_dict() if self.lead else None,
-            "close_up": self.close_up.to_dict() if self.close_up else None,
+            "sampling": self.sampling.to_dict(says.sampling(self.sampling))
+            if self.sampling
+            else None,
+            "lead": self.lead.to_dict(says.lead_why(self.lead)) if self.lead else None,
+            "close_up": (
+                self.close_up.to_dict(says.close_up_what(self.close_up)) if self.close_up else None
+            ),
         }
 
 
