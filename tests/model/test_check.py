@@ -249,6 +249,7 @@ def test_logs_it_cannot_work_on_are_refused_in_words(change, says):
 
 def test_a_none_finding_says_which_test_the_best_candidate_failed():
     """The evidence for `none` names the rule that held the best extension back."""
+    from minseg_tui.lab.views.check_says import lost
     from minseg_tui.model.check.decide import PENALTY, Selection, Verdict
     from minseg_tui.model.check.fit import Fit
     from minseg_tui.model.check.pipeline import _none_runner
@@ -261,7 +262,8 @@ def test_a_none_finding_says_which_test_the_best_candidate_failed():
     def why(verdict, left_out=None):
         sel = Selection(base, base, {"dead_time": cand}, {"dead_time": verdict})
         sel.left_out.update(left_out or {})
-        return _none_runner(sel)
+        name, why = _none_runner(sel)
+        return name, lost(why)
 
     name, few = why(Verdict(900.0, 0.10, False))
     assert name == "dead_time"

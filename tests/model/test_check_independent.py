@@ -7,7 +7,7 @@ are for benchmarks/model_check_independent.py's figures).
 import numpy as np
 import pytest
 
-from minseg_tui.lab.views.check_says import anomaly, as_json, caveat, evidence
+from minseg_tui.lab.views.check_says import anomaly, as_json, caveat, evidence, runner_up_why
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import BY_CAUSE
@@ -613,7 +613,7 @@ def test_a_cause_that_moves_the_speed_by_under_a_percent_is_not_named(cause, see
     assert named(r) == ([] if cause == "none" else [cause])
     if cause == "none":
         assert r.finding.runner_up == "coulomb_friction"
-        why = r.finding.runner_up_why
+        why = runner_up_why(r.finding)
         assert "% of the" in why and "rad/s the speed reaches" in why
 
 

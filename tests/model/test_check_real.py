@@ -15,7 +15,7 @@ from functools import cache
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
-from minseg_tui.lab.views.check_says import close_up_what, evidence, lead_why, where
+from minseg_tui.lab.views.check_says import close_up_what, evidence, lead_why, runner_up_why, where
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from tests.shared_data import SHARED_DATA
@@ -307,7 +307,7 @@ def test_a_runner_up_that_misses_the_speed_more_is_not_said_to_fit_better(name):
     # whitening sums; "leaves less whitened residual" alone reads as "fits better", which the
     # speed contradicts, so the sentence must say how the runner-up matches the speed.
     r, _ = analyze(name)
-    why = r.finding.runner_up_why
+    why = runner_up_why(r.finding)
     # (on the ubc logs, since the cap's ramp bends with the drag, the named pair is a bent
     # cap with a pole and the runner-up the same cap with an average on its bound: 2.70
     # against 2.43 rad/s at 7 V, 4.46 against 4.32 at 9 V)

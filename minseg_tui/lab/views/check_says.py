@@ -12,15 +12,16 @@ from __future__ import annotations
 
 import numpy as np
 
+from minseg_tui.lab.views.check_params import params
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import effects as fx
 from minseg_tui.model.check import result as rs
 from minseg_tui.model.check.deviations import Deviation
 from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.check.evidence import Lack, Lacks
 from minseg_tui.model.check.figures import CloseUp, Lead, Window
 from minseg_tui.model.check.sampling import Sampling
-from minseg_tui.model.check.words import params
 from minseg_tui.quantities import format_number
 
 
@@ -170,6 +171,24 @@ def what_would_tell(a: tuple[str, ...], b: tuple[str, ...]) -> str:
     )
 
 
+LACKS: dict[Lack, str] = {
+    "rise": "the log has no step up to show it",
+    "drop_to_zero": "the command never drops to zero while the wheel turns",
+    "two_levels": "the log has one driven level and no step-down",
+}
+"""What a log lacks to show a cause, in words (one size both ways: :func:`lacks`)."""
+
+
+def lacks(w: Lacks) -> str:
+    """What a log lacks to show a cause, in words."""
+    if w.lack == "one_size":
+        return (
+            f"the log drives at one size of voltage only ({w.size:.3g} V, forward and reversed) "
+            "and never lowers it to a smaller one"
+        )
+    return LACKS[w.lack]
+
+
 def _untold(f: rs.Untold) -> str:
     how = {
         "whitened": f"the second leaves {f.ratio:.2f} times the whitened residual of the first",
@@ -224,7 +243,7 @@ def caveat(c: rs.Caveat) -> str:
             "explains"
         )
     if isinstance(f, rs.Unjudged):
-        return f"{c.cause} cannot be judged: {f.why}"
+        return f"{c.cause} cannot be judged: {lacks(f.why)}"
     return _untold(f)
 
 
@@ -480,12 +499,12 @@ def evidence(f: rs.Finding) -> str:
     e = f.evidence
     if isinstance(e, rs.Plain):
         text = _plain(e)
-        return f"{text}; {f.runner_up_why}" if f.runner_up_why else text
+        return f"{text}; {runner_up_why(f)}" if f.runner_up_why is not None else text
     text = (
         f"{shown(e)}. It removes {100 * e.reduction:.1f} % of the "
         f"whitened residual the model leaves without it (criterion gain {e.gain:.0f})"
     )
-    return f"{text}; {f.runner_up_why}" if f.runner_up else text
+    return f"{text}; {runner_up_why(f)}" if f.runner_up else text
 
 
 def other(o: rs.Other) -> str:
@@ -630,6 +649,52 @@ def where(devs: list[Deviation]) -> str:
     )
 
 
+def runner_up_why(f: rs.Finding) -> str:
+    """Why the runner-up of finding ``f`` lost, in words ('' without one)."""
+    return lost(f.runner_up_why)
+
+
+def lost(r: rs.RunnerUp | None) -> str:
+    """Why a runner-up lost, in words ('' without one): with no cause named, the best
+    extension by its contract name; with one, the next best explanation in words."""
+    if r is None:
+        return ""
+    name, reason = r.name, r.reason
+    if r.kind == "held_back":
+        return f"the best extension ({name}) is held back: {reason}"
+    share = f"{100 * max(r.share, 0.0):.1f} %"
+    if r.kind == "too_small":
+        return (
+            f"the best extension ({name}) removes only {share} of the whitened residual, and a "
+            f"cause needs at least {100 * r.needs:.0f} %"
+        )
+    if r.kind == "short_of_gain":
+        return (
+            f"the best extension ({name}) removes {share} of the whitened residual, but its "
+            f"criterion gain {r.gain:.0f} is below the {r.threshold:.0f} a cause needs on a log "
+            "this long"
+        )
+    said = in_words(name)  # the sentence names it in words, never by its contract name
+    if r.kind == "misses_more":
+        b_rms, e_rms = r.rms
+        # digits enough to show the two apart (gen15 printed 'rmse 1.8 against 1.8')
+        n = next((d for d in range(3, 7) if f"{b_rms:.{d}g}" != f"{e_rms:.{d}g}"), 6)
+        return (
+            f"the next best explanation ({said}) leaves less whitened residual, but its "
+            f"simulated speed misses the measured speed by more (rmse {b_rms:.{n}g} rad/s "
+            f"against {e_rms:.{n}g} rad/s)" + (f", and {reason}" if reason else "")
+        )
+    if r.kind == "not_named":
+        return (
+            f"the next best explanation ({said}) leaves less whitened residual but is not "
+            f"named: {reason}"
+        )
+    return (
+        f"the next best explanation ({said}) leaves {r.ratio:.1f} times as much whitened "
+        "residual" + (f" ({reason})" if reason else "")
+    )
+
+
 class _Says:
     """The sentences here, as the result's JSON asks for them (:class:`~.result.Says`)."""
 
@@ -641,6 +706,7 @@ class _Says:
     close_up_what = staticmethod(close_up_what)
     sampling = staticmethod(sampling)
     where = staticmethod(where)
+    runner_up_why = staticmethod(runner_up_why)
 
 
 def as_json(r: CheckResult) -> dict[str, object]:

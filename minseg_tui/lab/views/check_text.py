@@ -2,7 +2,7 @@
 place that names its gain figures (the lab's screens, the report and ``minseg-tui analyze``
 read them), says a figure's first-order and extended values, and writes the full text for
 lab assistants (:func:`text`, ``minseg-tui analyze``). A model's parameters are written by
-:func:`minseg_tui.model.check.words.params` (the check's own sentences use it too).
+:func:`minseg_tui.lab.views.check_params.params` (the check's sentences use it too).
 
 Units: s, V, rad/s, rad; a time (T, the delays) is said in ms, as everywhere people read it
 (:func:`~minseg_tui.quantities.format_constant`); the JSON keeps SI.
@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+from minseg_tui.lab.views.check_params import params
 from minseg_tui.lab.views.check_says import (
     anomaly,
     caveat,
@@ -23,7 +24,6 @@ from minseg_tui.lab.views.check_says import (
     where,
 )
 from minseg_tui.model.check import CheckResult, Gain
-from minseg_tui.model.check.words import params
 from minseg_tui.quantities import MISSING, format_number
 
 

@@ -12,7 +12,7 @@ the run's input voltage, and writes what the lab screen and the report both lead
 
 The full text for lab assistants is :func:`minseg_tui.lab.views.check_text.text`
 (``minseg-tui analyze``); the gain figures' names are written for both there, and a model's
-parameters by :mod:`minseg_tui.model.check.words`. Units: s, V, rad/s, rad (said: T and the
+parameters by :mod:`minseg_tui.lab.views.check_params`. Units: s, V, rad/s, rad (said: T and the
 delays in ms).
 """
 

@@ -932,6 +932,6 @@ def starts(
     return [min(max(v, rng.lo), rng.hi) for v in vals]
 
 
-def cannot_judge(log: ev.Log) -> dict[str, str]:
+def cannot_judge(log: ev.Log) -> dict[str, ev.Lacks]:
     """The causes this log cannot show at all, and why (they are not tried)."""
     return ev.cannot_judge(log, [(c.cause, c.needs) for c in CANDIDATES])

@@ -21,10 +21,9 @@ from minseg_tui.model.check.effects import (
     CANDIDATES,
     NAMES,
     cannot_judge,
-    in_words,
     ranges,
 )
-from minseg_tui.model.check.evidence import Log, shown_stop
+from minseg_tui.model.check.evidence import Lacks, Log, shown_stop
 from minseg_tui.model.check.figures import (
     Gain,
     above,
@@ -56,6 +55,8 @@ from minseg_tui.model.check.result import (
     OnBound,
     Other,
     Plain,
+    RunnerKind,
+    RunnerUp,
     Scatter,
     Smooth,
     Unjudged,
@@ -308,7 +309,7 @@ def _report(
     found: list[dist.Disturbance],
     notes: list[an.Anomaly],
     log: Log,
-    unjudged: dict[str, str],
+    unjudged: dict[str, Lacks],
     y_raw: FloatArray,
 ) -> CheckResult:
     """Predictions, figures, words. Every rms and fit figure covers the rows the fit used
@@ -685,7 +686,7 @@ def _finding(
     noise: float,
     level: float,
     miss: tuple[float, str, float] | None,
-    unjudged: dict[str, str],
+    unjudged: dict[str, Lacks],
     full: Problem,
     alts: list[tuple[Fit, float]] | None = None,
 ) -> Finding:
@@ -716,12 +717,12 @@ def _finding(
         # the simulation runs at the log's own sample times: what it follows is the
         # sampling's timing, not noise
         caveats.append(Caveat("noise", None, Scatter(noise, col, left, left <= over)))
-    for c, why in unjudged.items():
-        caveats.append(Caveat("cannot_judge", c, Unjudged(why)))
+    for c, lacking in unjudged.items():
+        caveats.append(Caveat("cannot_judge", c, Unjudged(lacking)))
     explained = miss is None
 
     if not order:
-        runner, why = _none_runner(sel)
+        runner, lost = _none_runner(sel)
         if explained:
             kept = full.weights > 0
             rms_b = _rmse_kept(log.y, log.base_pred, kept)
@@ -758,12 +759,12 @@ def _finding(
             )
         else:
             plain = Plain("unexplained")
-        return Finding("none", plain, [], caveats, explained, runner, why)
+        return Finding("none", plain, [], caveats, explained, runner, lost)
 
     cause = order[0]
     v = compare(ext, sel.without[cause]) if cause in sel.without else compare(ext, base)
     evidence = Because(cause, BY_CAUSE[cause].words(log, ext, floor), v.reduction, v.d)
-    runner, why = _runner_up(sel, ext, full)
+    runner, lost = _runner_up(sel, ext, full)
     others = []
     for c in order[1:]:
         vc = compare(ext, sel.without[c]) if c in sel.without else compare(ext, base)
@@ -793,7 +794,7 @@ def _finding(
         # a claim that holds only against a rival the log cannot rule out goes
         evidence = _untold(evidence, ambiguous)
         others = [replace(o, evidence=_untold(o.evidence, ambiguous)) for o in others]
-    return Finding(cause, evidence, others, caveats, explained, runner, why, ambiguous)
+    return Finding(cause, evidence, others, caveats, explained, runner, lost, ambiguous)
 
 
 def _untold(evidence: Because, ambiguous: list[list[str]]) -> Because:
@@ -806,26 +807,20 @@ def _untold(evidence: Because, ambiguous: list[list[str]]) -> Because:
     return evidence
 
 
-def _none_runner(sel: Selection) -> tuple[str | None, str]:
+def _none_runner(sel: Selection) -> tuple[str | None, RunnerUp | None]:
     """The best extension of a 'none' finding and the rule that held it back."""
     if not sel.singles:
-        return None, ""
+        return None, None
     name = min(sel.singles, key=lambda c: sel.singles[c].sse_white)
     v = sel.verdicts[name]
-    share = f"{100 * max(v.reduction, 0.0):.1f} %"
     if name in sel.left_out:
-        return name, f"the best extension ({name}) is held back: {sel.left_out[name]}"
+        return name, RunnerUp("held_back", name, sel.left_out[name])
     from minseg_tui.model.check.decide import MIN_REDUCTION, PENALTY
 
     threshold = PENALTY * math.log(max(sel.singles[name].rows, 2))
-    if v.reduction < MIN_REDUCTION:
-        return name, (
-            f"the best extension ({name}) removes only {share} of the whitened residual, and a "
-            f"cause needs at least {100 * MIN_REDUCTION:.0f} %"
-        )
-    return name, (
-        f"the best extension ({name}) removes {share} of the whitened residual, but its "
-        f"criterion gain {v.d:.0f} is below the {threshold:.0f} a cause needs on a log this long"
+    kind: RunnerKind = "too_small" if v.reduction < MIN_REDUCTION else "short_of_gain"
+    return name, RunnerUp(
+        kind, name, share=v.reduction, needs=MIN_REDUCTION, gain=v.d, threshold=threshold
     )
 
 
@@ -834,7 +829,7 @@ RMSE_APART = 0.01
 than that (gen15: 1.804 against 1.803 rad/s) it is not, and its other reason is given alone."""
 
 
-def _runner_up(sel: Selection, ext: Fit, full: Problem) -> tuple[str | None, str]:
+def _runner_up(sel: Selection, ext: Fit, full: Problem) -> tuple[str | None, RunnerUp | None]:
     """The best other explanation with as many causes, and why it lost. A runner-up whose
     whitened residual is smaller but whose simulated speed misses the measured one by more
     (an average's residual cancels in the whitening sums) is said to miss the speed, with
@@ -844,34 +839,21 @@ def _runner_up(sel: Selection, ext: Fit, full: Problem) -> tuple[str | None, str
     pool = [f for f in ([*sel.singles.values()] if k == 1 else sel.tried) if len(f.causes) == k]
     pool = [f for f in pool if set(f.causes) != set(ext.causes) and math.isfinite(f.sse_white)]
     if not pool:
-        return None, ""
+        return None, None
     best = min(pool, key=lambda f: f.sse_white)
     name = best.name
-    said = in_words(name)  # the sentence names it in words, never by its contract name
     new = [c for c in best.causes if c not in ext.causes]
-    reason = next((sel.left_out[c] for c in new if c in sel.left_out), None)
+    reason = next((sel.left_out[c] for c in new if c in sel.left_out), "")
     if best.sse_white < ext.sse_white:
         keep = full.weights > 0
         e_rms = _rmse_kept(full.y, ext.predict(full), keep)
         b_rms = _rmse_kept(full.y, best.predict(full), keep)
         if b_rms > (1.0 + RMSE_APART) * e_rms or (b_rms > e_rms and not reason):
-            # digits enough to show the two apart (gen15 printed 'rmse 1.8 against 1.8')
-            n = next((d for d in range(3, 7) if f"{b_rms:.{d}g}" != f"{e_rms:.{d}g}"), 6)
-            return name, (
-                f"the next best explanation ({said}) leaves less whitened residual, but its "
-                f"simulated speed misses the measured speed by more (rmse {b_rms:.{n}g} rad/s "
-                f"against {e_rms:.{n}g} rad/s)" + (f", and {reason}" if reason else "")
-            )
+            return name, RunnerUp("misses_more", name, reason, rms=(b_rms, e_rms))
         if reason:
-            return name, (
-                f"the next best explanation ({said}) leaves less whitened residual but is not "
-                f"named: {reason}"
-            )
+            return name, RunnerUp("not_named", name, reason)
     ratio = best.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
-    return name, (
-        f"the next best explanation ({said}) leaves {ratio:.1f} times as much whitened residual"
-        + (f" ({reason})" if reason else "")
-    )
+    return name, RunnerUp("leaves_more", name, reason, ratio=ratio)
 
 
 def _repaired(

@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 from minseg_tui.model.check.anomalies import Anomaly
 from minseg_tui.model.check.deviations import Deviation
 from minseg_tui.model.check.effects import Shown
+from minseg_tui.model.check.evidence import Lacks
 from minseg_tui.model.check.figures import CloseUp, Gain, Lead
 from minseg_tui.model.check.sampling import Sampling
 
@@ -54,6 +55,10 @@ class Says(Protocol):
 
     def where(self, devs: list[Deviation]) -> str:
         """Where the first-order model deviates most, in words."""
+        ...
+
+    def runner_up_why(self, f: Finding) -> str:
+        """Why the runner-up of ``f`` lost, in words ('' without one)."""
         ...
 
 
@@ -125,6 +130,35 @@ class Plain:
     low_fit: float | None = None
 
 
+RunnerKind = Literal[
+    "held_back", "too_small", "short_of_gain", "misses_more", "not_named", "leaves_more"
+]
+"""Why the runner-up lost. With no cause named, the best extension: is held back by the
+selection (``reason``), removes too small a share of the whitened residual, or falls short
+of the criterion gain a cause needs. With a cause named, the next best explanation: leaves
+less whitened residual but misses the speed by more, leaves less but is not named
+(``reason``), or leaves more."""
+
+
+@dataclass(frozen=True)
+class RunnerUp:
+    """Why the runner-up (``name``, a model's contract name) lost (``kind``), with what its
+    sentence needs: the selection's ``reason`` it was left out (words; '' none), the share of
+    the whitened residual it removes (0-1) against the share a cause needs (``needs``), its
+    criterion gain against the ``threshold``, the rms errors of it and of the model named
+    (``rms``, rad/s), or how many times the named model's whitened residual it leaves."""
+
+    kind: RunnerKind
+    name: str
+    reason: str = ""
+    share: float = 0.0
+    needs: float = 0.0
+    gain: float = 0.0
+    threshold: float = 0.0
+    rms: tuple[float, float] = (0.0, 0.0)
+    ratio: float = 0.0
+
+
 @dataclass(frozen=True)
 class Other:
     """A further effect found on top of the cause: its name, parameter and evidence."""
@@ -187,9 +221,9 @@ class Scatter:
 
 @dataclass(frozen=True)
 class Unjudged:
-    """The log cannot show the cause: ``why`` (what it lacks, in words)."""
+    """The log cannot show the cause: ``why``, what it lacks."""
 
-    why: str
+    why: Lacks
 
 
 Compared = Literal["whitened", "squared", "squared_less"]
@@ -240,7 +274,7 @@ class Finding:
     caveats: list[Caveat] = field(default_factory=list)
     explained: bool = True
     runner_up: str | None = None
-    runner_up_why: str = ""
+    runner_up_why: RunnerUp | None = None
     ambiguous_with: list[list[str]] = field(default_factory=list)
     """Other sets of causes (each like [cause, *others]) that fit this log about as well as
     the one named: the log cannot tell them apart (a 'cannot_tell' caveat says so)."""
@@ -254,7 +288,7 @@ class Finding:
             "caveats": [c.to_dict(says.caveat(c)) for c in self.caveats],
             "explained": self.explained,
             "runner_up": self.runner_up,
-            "runner_up_why": self.runner_up_why,
+            "runner_up_why": says.runner_up_why(self),
             "ambiguous_with": [list(a) for a in self.ambiguous_with],
         }
 
