@@ -250,7 +250,7 @@ def test_logs_it_cannot_work_on_are_refused_in_words(change, says):
 def test_a_none_finding_says_which_test_the_best_candidate_failed():
     """The evidence for `none` names the rule that held the best extension back."""
     from minseg_tui.lab.views.check_says import lost
-    from minseg_tui.model.check.decide import PENALTY, Selection, Verdict
+    from minseg_tui.model.check.decide import PENALTY, Reason, Selection, Verdict
     from minseg_tui.model.check.fit import Fit
     from minseg_tui.model.check.pipeline import _none_runner
 
@@ -271,7 +271,7 @@ def test_a_none_finding_says_which_test_the_best_candidate_failed():
     threshold = PENALTY * math.log(800)
     _, weak = why(Verdict(threshold - 1, 0.78, False))
     assert "removes 78.0 %" in weak and "criterion gain" in weak and "only" not in weak
-    _, held = why(Verdict(threshold + 100, 0.78, True), {"dead_time": "its parameter sits on ..."})
+    _, held = why(Verdict(threshold + 100, 0.78, True), {"dead_time": Reason("bound", "upper")})
     assert "held back: its parameter sits on" in held
 
 

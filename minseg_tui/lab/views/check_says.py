@@ -17,6 +17,7 @@ from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import effects as fx
 from minseg_tui.model.check import result as rs
+from minseg_tui.model.check.decide import Reason, ReasonKind
 from minseg_tui.model.check.deviations import Deviation
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.check.evidence import Lack, Lacks
@@ -189,6 +190,76 @@ def lacks(w: Lacks) -> str:
     return LACKS[w.lack]
 
 
+REFUSAL: dict[fx.RefusalKind, str] = {
+    "ramp_under_sample": "the ramp that cap makes would last less than one sample period after "
+    "every step: no two samples lie on it, so this log cannot show a cap",
+    "no_slower": "it would be a coast no slower than braking",
+}
+"""A cause's own reason not to be named, in words (an average's scatter: :func:`refusal`)."""
+
+
+def refusal(r: fx.Refusal) -> str:
+    """A cause's own reason not to be named, in words."""
+    if r.kind == "scatters":
+        return (
+            f"the speed scatters {r.scatter:.3g} rad/s around that model's simulation, far more "
+            f"than an average of counts over {r.taps} samples leaves ({r.floor:.3g} rad/s)"
+        )
+    return REFUSAL[r.kind]
+
+
+REASON: dict[ReasonKind, str] = {
+    "T_bound": "the time constant T it needs sits on the bound of its range",
+    "worse_raw": "it matches the measured speed itself worse than the first-order model",
+    "others_explain": "the other causes explain the log as well without it",
+    "whitened_only": "it cuts the whitened residual but not the error of the speed itself",
+}
+"""Why a clear cause was left out, in words, where the sentence has no figure
+(:func:`reason` for the others)."""
+
+
+def reason(r: Reason) -> str:
+    """Why a clear cause was left out, in words (every figure from the selection)."""
+    if r.kind == "bound":
+        return f"its parameter sits on the {r.side} bound of its range"
+    if r.kind == "refused" and r.refusal is not None:
+        return refusal(r.refusal)
+    if r.kind == "within_sample":
+        return (
+            f"{r.what} of {1e3 * r.value:.3g} ms, under a quarter of the "
+            f"{1e3 * r.ts:.3g} ms sample period, acts within the first sample after a step: "
+            "the samples show only a shift in time that the sampling's own lateness gives too"
+        )
+    if r.kind == "below_noise":
+        return (
+            f"nowhere does it move the simulated speed, held over {r.rows} samples, by more "
+            f"than {r.shown:.3g} rad/s, within what the speed's noise leaves over as many samples "
+            f"({r.level:.3g} rad/s): the log cannot show it"
+        )
+    if r.kind == "too_small":
+        return (
+            f"nowhere does it move the simulated speed, held over {r.rows} samples, by more "
+            f"than {r.shown:.3g} rad/s, {100 * r.shown / r.top:.2g} % of the {r.top:.3g} rad/s "
+            "the speed reaches: any model of a real motor misses by that much (a load that "
+            "ripples, drag that is not quite viscous, the encoder's timing), and a gain so "
+            "small is not a cause of its own"
+        )
+    if r.kind == "swapped":
+        return f"{r.causes[0]} explains the log better together with the others"
+    if r.kind == "together":
+        return f"{' and '.join(r.causes)} together explain the log better"
+    if r.kind == "third_small":
+        return (
+            f"beside {' and '.join(r.causes)} it moves the simulated speed, held over "
+            f"{r.rows} samples, by {r.shown:.3g} rad/s at most, under "
+            f"{100 * r.share:.0f} % of what each of them moves it: a third cause so "
+            "small is what any pair of causes leaves of a real motor, not a cause of its own"
+        )
+    if r.kind == "rival_better":
+        return f"{r.causes[0]} matches the speed itself far better"
+    return REASON[r.kind]
+
+
 def _untold(f: rs.Untold) -> str:
     how = {
         "whitened": f"the second leaves {f.ratio:.2f} times the whitened residual of the first",
@@ -209,7 +280,7 @@ def caveat(c: rs.Caveat) -> str:
     f = c.facts
     if isinstance(f, rs.OnBound):
         return (
-            f"{c.cause} came out clear ({params(f.params)}), but {f.why}: "
+            f"{c.cause} came out clear ({params(f.params)}), but {reason(f.why)}: "
             "the effect in this log is outside what that cause can express (or its range is "
             "too small), so it is not named"
         )
@@ -659,9 +730,9 @@ def lost(r: rs.RunnerUp | None) -> str:
     extension by its contract name; with one, the next best explanation in words."""
     if r is None:
         return ""
-    name, reason = r.name, r.reason
+    name, why = r.name, (reason(r.reason) if r.reason is not None else "")
     if r.kind == "held_back":
-        return f"the best extension ({name}) is held back: {reason}"
+        return f"the best extension ({name}) is held back: {why}"
     share = f"{100 * max(r.share, 0.0):.1f} %"
     if r.kind == "too_small":
         return (
@@ -682,16 +753,16 @@ def lost(r: rs.RunnerUp | None) -> str:
         return (
             f"the next best explanation ({said}) leaves less whitened residual, but its "
             f"simulated speed misses the measured speed by more (rmse {b_rms:.{n}g} rad/s "
-            f"against {e_rms:.{n}g} rad/s)" + (f", and {reason}" if reason else "")
+            f"against {e_rms:.{n}g} rad/s)" + (f", and {why}" if why else "")
         )
     if r.kind == "not_named":
         return (
             f"the next best explanation ({said}) leaves less whitened residual but is not "
-            f"named: {reason}"
+            f"named: {why}"
         )
     return (
         f"the next best explanation ({said}) leaves {r.ratio:.1f} times as much whitened "
-        "residual" + (f" ({reason})" if reason else "")
+        "residual" + (f" ({why})" if why else "")
     )
 
 

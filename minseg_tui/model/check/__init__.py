@@ -32,9 +32,10 @@ figure leads, the runner-up, the close-up, the sampling) are made from its recor
 the model, in :mod:`minseg_tui.lab.views.check_says` (the JSON of ``analyze --json``:
 :func:`~minseg_tui.lab.views.check_says.as_json`); the gain figures' names and the full
 text for lab assistants in :mod:`minseg_tui.lab.views.check_text`; a model's parameters in
-:mod:`minseg_tui.lab.views.check_params`. Still words here: the selection's reasons a cause
-was left out (:mod:`.decide`, a cause's ``refuse``), which the runner-up and the on-bound
-caveat quote, and each cause's labels (``label``, ``everyday``, ``short``).
+:mod:`minseg_tui.lab.views.check_params`. The selection's reasons a cause was left out are
+records too (:class:`.decide.Reason`, a cause's own :class:`.effects.Refusal`). Still words
+here: each cause's labels (``label``, ``everyday``, ``short``, ``meaning``, what
+``within_sample`` calls it), which :func:`.effects.in_words` and the sentences read.
 """
 
 from minseg_tui.model.check.figures import Gain

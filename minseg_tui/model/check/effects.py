@@ -117,6 +117,24 @@ class Judged:
     relaxed against (0: not relaxed; see :data:`FILTER_NOISE`)."""
 
 
+RefusalKind = Literal["ramp_under_sample", "scatters", "no_slower"]
+"""A cause's own reason not to be named (:attr:`Candidate.refuse`): a cap whose ramp lasts
+under a sample period after every step; an average that leaves far more scatter than an
+average of counts leaves; a coast no slower than braking."""
+
+
+@dataclass(frozen=True)
+class Refusal:
+    """A cause's own reason not to be named (``kind``), with its figures: for 'scatters' the
+    speed's scatter around the model (rad/s), the average's length (samples) and what an
+    average of counts over it leaves (rad/s)."""
+
+    kind: RefusalKind
+    scatter: float = 0.0
+    taps: int = 0
+    floor: float = 0.0
+
+
 @dataclass(frozen=True)
 class Again:
     """A joint fit beside ``partner`` started again from raised starts: ``start`` makes,
@@ -226,7 +244,7 @@ class Candidate:
     """It acts on the reading, so in a smooth speed column (not a difference of counts) the
     other causes that do cannot be told from it: why, for the fit (the caveat's
     :class:`~.result.Smooth`; the first such cause in a model speaks)."""
-    refuse: Callable[[Judged], str | None] | None = None
+    refuse: Callable[[Judged], Refusal | None] | None = None
     """Its own reason it cannot be named in a fit although clear (None: it can), tested
     before the test of the speed's own error."""
     within_sample: str = ""
@@ -425,15 +443,12 @@ not see, left in the rows, let a 13-tap average with T 16 % short (tuning seed 1
 average's miss at 4.06 s was reported as a second disturbance beside the hand."""
 
 
-def _filter_refuse(j: Judged) -> str | None:
+def _filter_refuse(j: Judged) -> Refusal | None:
     n = j.fit.effects.taps
     fl = j.floor(n)
     own = j.own_noise() if fl is not None and n >= 2 else 0.0
     if fl is not None and n >= 2 and own > FILTER_NOISE * fl and FILTER_NOISE * own > j.plain:
-        return (
-            f"the speed scatters {own:.3g} rad/s around that model's simulation, far more "
-            f"than an average of counts over {n} samples leaves ({fl:.3g} rad/s)"
-        )
+        return Refusal("scatters", own, n, fl)
     return None
 
 
@@ -541,9 +556,7 @@ COAST_ON_ZERO = Candidate(
         lambda p, v: replace(p, zero_mode="coast", motor=replace(p.motor, f=p.motor.J / v)),
     ),
     refuse=lambda j: (
-        "it would be a coast no slower than braking"
-        if j.fit.value("coast_on_zero") < COAST_RATIO * j.fit.T
-        else None
+        Refusal("no_slower") if j.fit.value("coast_on_zero") < COAST_RATIO * j.fit.T else None
     ),
 )
 
@@ -772,12 +785,7 @@ CURRENT_LIMIT = Candidate(
     flags=("cap_both",),
     # capped while accelerating only, and capped both ways
     ways=lambda causes, smooth: [{}, {"cap_both": True}],
-    refuse=lambda j: (
-        "the ramp that cap makes would last less than one sample period after every step: "
-        "no two samples lie on it, so this log cannot show a cap"
-        if cap_ramp(j.prob, j.fit) < j.prob.ts
-        else None
-    ),
+    refuse=lambda j: Refusal("ramp_under_sample") if cap_ramp(j.prob, j.fit) < j.prob.ts else None,
     hidden=Hidden(20.0, 60.0, lambda p, v: replace(p, i_max=v * p.motor.J / p.motor.k_a)),
     again=Again("coulomb_friction", _cap_beside_friction),
 )

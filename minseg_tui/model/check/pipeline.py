@@ -843,14 +843,14 @@ def _runner_up(sel: Selection, ext: Fit, full: Problem) -> tuple[str | None, Run
     best = min(pool, key=lambda f: f.sse_white)
     name = best.name
     new = [c for c in best.causes if c not in ext.causes]
-    reason = next((sel.left_out[c] for c in new if c in sel.left_out), "")
+    reason = next((sel.left_out[c] for c in new if c in sel.left_out), None)
     if best.sse_white < ext.sse_white:
         keep = full.weights > 0
         e_rms = _rmse_kept(full.y, ext.predict(full), keep)
         b_rms = _rmse_kept(full.y, best.predict(full), keep)
-        if b_rms > (1.0 + RMSE_APART) * e_rms or (b_rms > e_rms and not reason):
+        if b_rms > (1.0 + RMSE_APART) * e_rms or (b_rms > e_rms and reason is None):
             return name, RunnerUp("misses_more", name, reason, rms=(b_rms, e_rms))
-        if reason:
+        if reason is not None:
             return name, RunnerUp("not_named", name, reason)
     ratio = best.sse_white / ext.sse_white if ext.sse_white > 0 else math.inf
     return name, RunnerUp("leaves_more", name, reason, ratio=ratio)

@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.model.check.anomalies import Anomaly
+from minseg_tui.model.check.decide import Reason
 from minseg_tui.model.check.deviations import Deviation
 from minseg_tui.model.check.effects import Shown
 from minseg_tui.model.check.evidence import Lacks
@@ -143,14 +144,14 @@ less whitened residual but misses the speed by more, leaves less but is not name
 @dataclass(frozen=True)
 class RunnerUp:
     """Why the runner-up (``name``, a model's contract name) lost (``kind``), with what its
-    sentence needs: the selection's ``reason`` it was left out (words; '' none), the share of
+    sentence needs: the selection's ``reason`` it was left out (None: none), the share of
     the whitened residual it removes (0-1) against the share a cause needs (``needs``), its
     criterion gain against the ``threshold``, the rms errors of it and of the model named
     (``rms``, rad/s), or how many times the named model's whitened residual it leaves."""
 
     kind: RunnerKind
     name: str
-    reason: str = ""
+    reason: Reason | None = None
     share: float = 0.0
     needs: float = 0.0
     gain: float = 0.0
@@ -175,10 +176,10 @@ class Other:
 @dataclass(frozen=True)
 class OnBound:
     """A candidate that came out clear but sits on a bound: its parameter and T as fitted
-    (SI, by name) and why it is not named (the selection's reason, in words)."""
+    (SI, by name) and why it is not named (the selection's reason)."""
 
     params: dict[str, float]
-    why: str
+    why: Reason
 
 
 @dataclass(frozen=True)
