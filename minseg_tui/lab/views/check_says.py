@@ -10,6 +10,9 @@ here. Units: s, V, rad/s, ms as each sentence says.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
+
 import numpy as np
 
 from minseg_tui.lab.views.check_params import params
@@ -328,41 +331,53 @@ def _span(x: float) -> str:
     return _ms(x) if x < 1.0 else f"{x:.3g} s"
 
 
-PURE_DELAY = "(a pure delay; an extra pole would start at once, only more slowly)"
-"""The claim of a delay's evidence against a pole."""
+@dataclass(frozen=True)
+class ClaimWords:
+    """How a cause's evidence words its claim against a rival (:attr:`.effects.Candidate.claim`):
+    ``bare`` with no figure, ``holds`` and ``weak`` with the ratio the rival leaves (it holds,
+    or the log hardly tells the two apart), ``void`` when the log cannot rule the rival out."""
 
-NO_CORNER = " (a pure delay would show a corner)"
-"""The claim of a pole's evidence against a delay."""
+    bare: str
+    holds: Callable[[float], str]
+    weak: Callable[[float], str]
+    void: str
+
+
+CLAIMS: dict[str, ClaimWords] = {
+    "dead_time": ClaimWords(
+        "(a pure delay; an extra pole would start at once, only more slowly)",
+        lambda r: (
+            f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened residual)"
+        ),
+        lambda r: (
+            f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
+            "the whitened residual: this log hardly tells a delay from a pole)"
+        ),
+        "(a delay, or in this log an extra pole or an average about as well)",
+    ),
+    "second_pole": ClaimWords(
+        " (a pure delay would show a corner)",
+        lambda r: f" (a pure delay in its place leaves {r:.1f} times the whitened residual)",
+        lambda r: (
+            f" (though a pure delay in its place leaves only {r:.2f} times the "
+            "whitened residual: this log hardly tells a pole from a delay)"
+        ),
+        "",
+    ),
+}
+"""Each claim in words, by the cause that makes it."""
 
 
 def _claim(b: rs.Because) -> str:
     """The claim of ``b``'s cause against its rival, with the figure behind it when the
     rival was fitted in its place, or taken back when the log cannot rule the rival out."""
-    r = b.rival_ratio
-    if b.cause == "dead_time":
-        if b.void:
-            return "(a delay, or in this log an extra pole or an average about as well)"
-        if r is None:
-            return PURE_DELAY
-        if b.holds:
-            return (
-                f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened "
-                "residual)"
-            )
-        return (
-            f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
-            "the whitened residual: this log hardly tells a delay from a pole)"
-        )
+    w = CLAIMS[b.cause]
     if b.void:
-        return ""
+        return w.void
+    r = b.rival_ratio
     if r is None:
-        return NO_CORNER
-    if b.holds:
-        return f" (a pure delay in its place leaves {r:.1f} times the whitened residual)"
-    return (
-        f" (though a pure delay in its place leaves only {r:.2f} times the "
-        "whitened residual: this log hardly tells a pole from a delay)"
-    )
+        return w.bare
+    return w.holds(r) if b.holds else w.weak(r)
 
 
 def _friction_stop(f: fx.FrictionStop) -> str:
