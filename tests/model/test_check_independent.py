@@ -653,3 +653,24 @@ def test_an_average_that_scatters_far_less_than_the_first_order_model_is_named_w
     log = make(8, ("velocity_filter", "second_pole"))
     r = check(log.t, log.u, log.omega)
     assert named(r) == ["second_pole", "velocity_filter"]
+
+
+@pytest.mark.parametrize(("seed", "gap_ms"), [(502, 60), (509, 125)])
+def test_a_stalls_spike_through_a_filter_of_the_speed_column_is_an_artefact_not_a_hand(
+    seed, gap_ms
+):
+    # tuning singles of a pole that is the logger's first-order filter of the speed column,
+    # each with a stall: the stall's one-row spike (116 rad/s at 10 ms; 12 rad/s at 25 ms)
+    # dies away through the filter over 3 and 10 rows, past the one row an unaveraged
+    # speed allows, and was reported as a hand on a log no hand touched (502: "rises by
+    # 116 rad/s (113 %)"; 509: "rises by 8.11 rad/s (44 %)")
+    log = make(seed, ("second_pole",))
+    assert "pole on the iir" in log.how and "stall" in log.how and log.touch is None
+    r = check(log.t, log.u, log.omega)
+    assert "disturbance" not in kinds(r), text(r)
+    art = [a for a in r.anomalies if a.kind == "logging_artefact"]
+    stall = log.artefact_rows[0]
+    assert len(art) == 1 and art[0].row is not None and abs(art[0].row - stall) <= 1
+    # the sentence names the gap it follows, not the next interval
+    assert f"right after a gap of {gap_ms} ms" in art[0].text
+    assert "a hand on it" not in text(r)
