@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
+from minseg_tui.lab.views.check_says import runner_up_why
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import check
 from minseg_tui.model.check.guess import first_motion
@@ -48,7 +49,7 @@ def test_a_runner_up_does_not_lose_on_an_rmse_that_prints_the_same():
     # average of counts cannot leave) now stands alone
     g = make(15, ("second_pole",), artefacts=True)
     r = check(g.t, g.u, g.omega, ts=g.ts, cpr=g.cpr)
-    why = r.finding.runner_up_why
+    why = runner_up_why(r.finding)
     assert why
     for a, b in re.findall(r"rmse ([\d.]+) rad/s against ([\d.]+) rad/s", why):
         assert a != b and float(a) > 1.01 * float(b), why
