@@ -672,5 +672,5 @@ def test_a_stalls_spike_through_a_filter_of_the_speed_column_is_an_artefact_not_
     stall = log.artefact_rows[0]
     assert len(art) == 1 and art[0].row is not None and abs(art[0].row - stall) <= 1
     # the sentence names the gap it follows, not the next interval
-    assert f"right after a gap of {gap_ms} ms" in art[0].text
+    assert f"right after a gap of {gap_ms} ms" in anomaly(art[0])
     assert "a hand on it" not in text(r)
