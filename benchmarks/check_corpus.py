@@ -34,6 +34,7 @@ sys.path.insert(0, str(ROOT))
 
 from minseg_tui.cli.analyze import _sample_period, in_words_text  # noqa: E402
 from minseg_tui.lab.saving.files import read_run_log  # noqa: E402
+from minseg_tui.lab.views.check_says import as_json  # noqa: E402
 from minseg_tui.model.check import CheckResult, check  # noqa: E402
 from minseg_tui.model.synth import CAUSES as SYNTH_CAUSES  # noqa: E402
 from minseg_tui.model.synth import PARAM_RANGES, make_log  # noqa: E402
@@ -114,7 +115,7 @@ def collect(n: int) -> tuple[dict[str, object], float]:
             out[name] = {"refused": str(e)}
             continue
         cpu += time.process_time() - t0
-        out[name] = {"json": r.to_dict(), "text": in_words_text(r), "pred": _digest(r)}
+        out[name] = {"json": as_json(r), "text": in_words_text(r), "pred": _digest(r)}
     return out, cpu
 
 

@@ -436,6 +436,10 @@ def pairs(seeds: list[int], verbose: bool) -> None:
             p_ok, desc = _params_ok(r, log.causes, log.T)
             if _disturbances(r):
                 row["dist"] += 1
+                wrong_lines.append(
+                    f"  disturbance, untouched {a}+{b} seed {s}: at "
+                    f"{[round(x, 3) for x in _disturbances(r)]}; {log.how}"
+                )
             if amb:
                 if named == truth or truth in amb:
                     row["amb_ok"] += 1
@@ -482,6 +486,10 @@ def singles(seeds: list[int], verbose: bool) -> None:
             named_ok += named == want
             p_ok_n += named == want and ok
             dist += bool(_disturbances(r))
+            if verbose and _disturbances(r):
+                print(
+                    f"  disturbance, untouched {cause} seed {s}: at {_disturbances(r)}; {log.how}"
+                )
             if verbose and not (named == want and ok):
                 print(f"  {cause} seed {s}: named {named} amb {_ambiguous(r)}; {desc}; {log.how}")
         print(f"  {cause:>17}: {named_ok:3d} {p_ok_n:3d} {dist:3d} of {len(seeds)}")

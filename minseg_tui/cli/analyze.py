@@ -16,6 +16,7 @@ import math
 from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_run_log
+from minseg_tui.lab.views.check_says import as_json
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.effects import in_words
@@ -97,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
                 args.predictions, None, f"cannot write the predictions: {exc.strerror}"
             ) from exc
     if args.json:
-        print_json(result.to_dict(), indent=2)
+        print_json(as_json(result), indent=2)
     else:
         print(in_words_text(result))
     return 0

@@ -20,11 +20,11 @@ from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
 from minseg_tui.lab.state.session import Session, TableRow
-from minseg_tui.lab.views import check_text, check_words, own_first
+from minseg_tui.lab.views import check_params as model_words
+from minseg_tui.lab.views import check_says, check_text, check_words, own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
-from minseg_tui.model.check import words as model_words
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import ResponseResult, Rise
 from minseg_tui.model.runlog import RunLog
@@ -470,7 +470,7 @@ def _lead(r: CheckResult) -> str | None:
     value = f"{c.first} {unit} for the first-order model"
     if c.extended is not None:
         value += f", {c.extended} {unit} extended"
-    return f"The figure that means most for this log: the {name}, {value}. It leads because {r.lead.why}."
+    return f"The figure that means most for this log: the {name}, {value}. It leads because {check_says.lead_why(r.lead)}."
 
 
 def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figures:
@@ -532,7 +532,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         marks=()
         if edge is None
         else (Mark(f"the input changes, t = {format_number(edge)} s", x=edge),),
-        title=f"close-up: {cu.what}",
+        title=f"close-up: {check_says.close_up_what(cu)}",
         ylabel="omega (rad/s)",
         show_xlabel=False,
         width=440,
@@ -653,18 +653,18 @@ def _model_check_section(session: Session) -> Section | None:
     named = f.cause != "none"
     items = []
     if r.sampling is not None:
-        items.append(f"The log: {r.sampling.text()}")
+        items.append(f"The log: {check_says.sampling(r.sampling)}")
     items += [
         f"First-order model fitted to {mc.run}: {model_words.params(b.params, b.intervals)}; simulated on "
         f"the recorded voltage it misses by {format_number(b.rmse, 3)} rad/s rms (fit "
         f"{format_number(b.fit_percent, 3)} %).",
         *_two_fits(session, mc.run, b.params),
-        f"Where it deviates: {r.where}.",
+        f"Where it deviates: {check_says.where(r.deviations)}.",
         f"Most likely cause: {in_words(f.cause)}. The check's evidence, over the whole log: "
-        f"{f.evidence}",
+        f"{check_says.evidence(f)}",
     ]
     items += [
-        f"Also: {in_words(o.cause)} ({model_words.params(o.params)}): {o.evidence}"
+        f"Also: {in_words(o.cause)} ({model_words.params(o.params)}): {check_says.other(o)}"
         for o in f.others
     ]
     if named:
@@ -701,10 +701,10 @@ def _model_check_section(session: Session) -> Section | None:
         )
     if f.caveats:
         details.blocks.append(check_text.CAVEATS)
-        details.blocks.append([c.text for c in f.caveats])
+        details.blocks.append([check_says.caveat(c) for c in f.caveats])
     if r.anomalies:
         details.blocks.append(check_text.ANOMALIES)
-        details.blocks.append([a.text for a in r.anomalies])
+        details.blocks.append([check_says.anomaly(a) for a in r.anomalies])
     sec.blocks.append(details)
     return sec
 

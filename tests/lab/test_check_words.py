@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.lab.views import check_text, check_words
+from minseg_tui.lab.views.check_says import evidence
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import NAMES
 from minseg_tui.model.synth import make_log
@@ -82,8 +83,8 @@ def test_the_lead_the_evidence_and_the_close_up_speak_of_one_drop(cause, seed):
     the one at 1.62 s: the evidence took the fastest stop, the close-up the first drop."""
     log, r = _checked(cause, seed=seed)
     assert r.finding.cause == cause
-    said = re.search(rf"drops (?:to 0 )?at t = ({NUM}) s", r.finding.evidence)
-    assert said is not None, r.finding.evidence
+    said = re.search(rf"drops (?:to 0 )?at t = ({NUM}) s", evidence(r.finding))
+    assert said is not None, evidence(r.finding)
     lead = " ".join(check_words.lead(r, log.u))
     led = re.search(rf"drops from {NUM} V to {NUM} V at t = ({NUM}) s", lead)
     assert led is not None, lead

@@ -23,6 +23,7 @@ from minseg_tui.device.virtual import forget_board
 from minseg_tui.lab.content.steps import RunPlan
 from minseg_tui.lab.state import task10
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views.check_says import anomaly, evidence
 from minseg_tui.model.plant import PlantParams
 
 _names = itertools.count()
@@ -89,8 +90,8 @@ def test_virtual_task10_run_is_coulomb_without_anomalies(tmp_path, seed, ts):
     mc = s.model_check(info.name)
     assert mc.result is not None, mc.problem
     r = mc.result
-    assert [a.text for a in r.anomalies] == []
-    assert r.finding.cause == "coulomb_friction", r.finding.evidence
+    assert [anomaly(a) for a in r.anomalies] == []
+    assert r.finding.cause == "coulomb_friction", evidence(r.finding)
     # u_c within 10 % of the plant's (u_A mapped through the table's u_ss)
     assert r.extended.params["u_c"] == pytest.approx(u_c_true, rel=0.10)
     assert r.extended.params["T"] == pytest.approx(0.043, rel=0.05)

@@ -12,6 +12,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from minseg_tui.lab.views.check_says import as_json, evidence, lead_why
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import effects_of
 from minseg_tui.model.check.fit import whiten
@@ -36,7 +37,7 @@ SEEDS = (101, 102, 103)
 def test_finds_hidden_effect_and_its_parameter(cause, seed):
     log = make_log(cause, seed=seed)
     r = check(log.t, log.u, log.omega)
-    assert r.finding.cause == cause, r.finding.evidence
+    assert r.finding.cause == cause, evidence(r.finding)
     name, tol_abs, tol_rel = TOLERANCE[cause]
     est = r.extended.params[name]
     assert abs(est - log.param) <= tol_abs + tol_rel * log.param, (est, log.param)
@@ -49,7 +50,7 @@ def test_finds_hidden_effect_and_its_parameter(cause, seed):
 def test_clean_first_order_data_is_none(seed):
     log = make_log("none", seed=seed, amplitudes=(3.0,) if seed % 2 else (2.0, 3.0, 4.0))
     r = check(log.t, log.u, log.omega)
-    assert r.finding.cause == "none", r.finding.evidence
+    assert r.finding.cause == "none", evidence(r.finding)
     assert r.extended == r.baseline
     assert r.baseline.params["T"] == pytest.approx(0.043, rel=0.05)
     assert r.baseline.params["K"] == pytest.approx(1.98, rel=0.02)
@@ -89,7 +90,7 @@ def test_slow_creep_is_an_anomaly_not_a_cause(seed):
 
 def test_json_shape():
     log = make_log("dead_time", param=0.03, seed=5)
-    d = check(log.t, log.u, log.omega).to_dict()
+    d = as_json(check(log.t, log.u, log.omega))
     assert d["baseline"]["model"] == "first_order"
     assert set(d["baseline"]["params"]) == {"T", "K"}
     assert set(d["baseline"]) >= {"model", "params", "rmse", "fit_percent"}
@@ -220,9 +221,10 @@ def test_two_effects_name_the_main_one_and_list_the_other(seed):
 
 
 def test_where_it_deviates_with_an_exact_steady_state():
-    from minseg_tui.model.check.deviations import Deviation, describe
+    from minseg_tui.lab.views.check_says import where
+    from minseg_tui.model.check.deviations import Deviation
 
-    text = describe(
+    text = where(
         [Deviation("after_rising_edges", 4, 0.2, 0.1), Deviation("steady_state", 5, 0.0, 0.0)]
     )
     assert "inf" not in text and "exact in steady state" in text and "0.200 rad/s" in text
@@ -247,7 +249,8 @@ def test_logs_it_cannot_work_on_are_refused_in_words(change, says):
 
 def test_a_none_finding_says_which_test_the_best_candidate_failed():
     """The evidence for `none` names the rule that held the best extension back."""
-    from minseg_tui.model.check.decide import PENALTY, Selection, Verdict
+    from minseg_tui.lab.views.check_says import lost
+    from minseg_tui.model.check.decide import PENALTY, Reason, Selection, Verdict
     from minseg_tui.model.check.fit import Fit
     from minseg_tui.model.check.pipeline import _none_runner
 
@@ -259,7 +262,8 @@ def test_a_none_finding_says_which_test_the_best_candidate_failed():
     def why(verdict, left_out=None):
         sel = Selection(base, base, {"dead_time": cand}, {"dead_time": verdict})
         sel.left_out.update(left_out or {})
-        return _none_runner(sel)
+        name, why = _none_runner(sel)
+        return name, lost(why)
 
     name, few = why(Verdict(900.0, 0.10, False))
     assert name == "dead_time"
@@ -267,7 +271,7 @@ def test_a_none_finding_says_which_test_the_best_candidate_failed():
     threshold = PENALTY * math.log(800)
     _, weak = why(Verdict(threshold - 1, 0.78, False))
     assert "removes 78.0 %" in weak and "criterion gain" in weak and "only" not in weak
-    _, held = why(Verdict(threshold + 100, 0.78, True), {"dead_time": "its parameter sits on ..."})
+    _, held = why(Verdict(threshold + 100, 0.78, True), {"dead_time": Reason("bound", "upper")})
     assert "held back: its parameter sits on" in held
 
 
@@ -338,14 +342,14 @@ def test_the_gain_survives_the_encoder_noise():
     assert g.noise_floor == pytest.approx(2 * math.pi / 720 / 0.005 / math.sqrt(6))
     assert g.rmse_reduction_percent < 20  # the plain rmse hardly moves...
     assert g.extended_angle_rms < 0.5 * g.baseline_angle_rms  # ...the angle does
-    assert r.lead.figure == "extended_angle_rms" and "noise" in r.lead.why
+    assert r.lead.figure == "extended_angle_rms" and "noise" in lead_why(r.lead)
     assert g.heldout_extended_rmse <= g.heldout_baseline_rmse
 
 
 def test_json_keeps_every_key_and_adds_what_the_ui_needs():
     """The keys the TUI, the report and the lab read stay; the new ones are there too."""
     log = make_log("coulomb_friction", seed=7, also="second_pole")
-    d = check(log.t, log.u, log.omega).to_dict()
+    d = as_json(check(log.t, log.u, log.omega))
     assert set(d) >= {"baseline", "finding", "extended", "gain", "deviations", "anomalies", "rows"}
     assert set(d) >= {"sampling", "lead", "close_up"}
     assert set(d["finding"]) >= {"cause", "evidence", "others", "caveats", "explained"}

@@ -11,6 +11,7 @@ import itertools
 
 import pytest
 
+from minseg_tui.lab.views.check_says import close_up_what, evidence, other
 from minseg_tui.model.check import check
 from minseg_tui.model.synth import CAUSES, PARAM_RANGES, make_log, plant_with
 
@@ -31,7 +32,7 @@ def close(cause, est, truth):
 def test_both_effects_are_named_with_both_parameters(a, b):
     log = make_log(a, seed=3001, also=b)
     r = check(log.t, log.u, log.omega)
-    assert named(r) == sorted((a, b)), r.finding.evidence
+    assert named(r) == sorted((a, b)), evidence(r.finding)
     # the extended model holds both: largest first, both parameters, one T and K
     assert r.extended.model == "first_order+" + "+".join(
         [r.finding.cause, *(o.cause for o in r.finding.others)]
@@ -44,7 +45,7 @@ def test_both_effects_are_named_with_both_parameters(a, b):
         lo, hi = r.extended.intervals[p]
         assert lo <= r.extended.params[p] <= hi
     # every sentence is about this log's own numbers; the others say what each adds
-    assert all("taking it out of the model" in o.evidence for o in r.finding.others)
+    assert all("taking it out of the model" in other(o) for o in r.finding.others)
 
 
 @pytest.mark.parametrize("cause", CAUSES)
@@ -67,14 +68,14 @@ def test_a_hand_on_the_wheel_is_an_anomaly_not_a_cause(cause):
 def test_the_close_up_shows_where_the_cause_acts():
     friction = check(*(lambda x: (x.t, x.u, x.omega))(make_log("coulomb_friction", seed=5)))
     cu = friction.close_up
-    assert cu is not None and "step-down" in cu.what
+    assert cu is not None and "step-down" in close_up_what(cu)
     # the window holds a fall of the input and the rows it names are those times
     u = make_log("coulomb_friction", seed=5).u
     assert any(u[k] < u[k - 1] for k in range(cu.start + 1, cu.end))
     assert friction.t[cu.start] == cu.t0 and friction.t[cu.end - 1] == cu.t1
     delay = check(*(lambda x: (x.t, x.u, x.omega))(make_log("dead_time", seed=5)))
-    assert "rise" in delay.close_up.what
+    assert "rise" in close_up_what(delay.close_up)
     touch = make_log("none", seed=4002, touch=True)
     r = check(touch.t, touch.u, touch.omega)
-    assert r.close_up.what.startswith("the stretch where something braked")
+    assert close_up_what(r.close_up).startswith("the stretch where something braked")
     assert r.close_up.t0 <= touch.touch[0] and r.close_up.t1 >= touch.touch[1]

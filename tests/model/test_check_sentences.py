@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
+from minseg_tui.lab.views.check_says import anomaly, caveat, evidence, lead_why
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.figures import lead
@@ -76,7 +77,7 @@ def test_reversals_are_not_said_to_be_one_driven_level_without_a_step_down():
     r = check(t, u, omega, ts=0.01, cpr=720)
     words = text(r)
     assert "one driven level" not in words
-    judged = {c.cause: c.text for c in r.finding.caveats if c.kind == "cannot_judge"}
+    judged = {c.cause: caveat(c) for c in r.finding.caveats if c.kind == "cannot_judge"}
     if "coulomb_friction" in judged:
         assert "one size of voltage only (12 V, forward and reversed)" in judged["coulomb_friction"]
 
@@ -143,14 +144,14 @@ def test_a_coast_that_never_falls_to_half_is_not_said_to():
     # the row before the drop to the first reading under half, 390 ms after the drop"
     lg, r = _seed11()
     assert r.finding.cause == "coast_on_zero"
-    m = re.search(r"drops to 0 at t = ([\d.]+) s", r.finding.evidence)
+    m = re.search(r"drops to 0 at t = ([\d.]+) s", evidence(r.finding))
     assert m
     a = int(np.searchsorted(lg.t, float(m.group(1)) - 1e-6))
     nxt = a + int(np.flatnonzero(lg.u[a:] != 0)[0])
     w0 = float(np.mean(lg.omega[a - 10 : a]))
     assert np.all(np.abs(lg.omega[a:nxt]) > 0.5 * w0)  # the log: never under half
-    assert "first reading under half" not in r.finding.evidence
-    assert f"staying above half of its {w0:.3g} rad/s" in r.finding.evidence
+    assert "first reading under half" not in evidence(r.finding)
+    assert f"staying above half of its {w0:.3g} rad/s" in evidence(r.finding)
 
 
 def test_the_noise_floor_of_an_averaged_speed_says_it_is_not_the_counts_floor():
@@ -175,7 +176,7 @@ def test_a_scatter_the_simulation_follows_is_not_called_noise_no_model_explains(
     # model of the motor explains"
     lg = pg.make(32, ("dead_time",), touch=True, artefacts=False)
     r = check(lg.t, lg.u, lg.omega, ts=lg.ts, cpr=lg.cpr)
-    noise = [c.text for c in r.finding.caveats if c.kind == "noise"]
+    noise = [caveat(c) for c in r.finding.caveats if c.kind == "noise"]
     assert r.extended.rmse < 0.2 * r.gain.noise
     assert noise and "no model of the motor explains" not in noise[0]
     assert f"follows it to {r.extended.rmse:.3g} rad/s rms" in noise[0]
@@ -202,9 +203,9 @@ def test_a_held_out_error_that_gets_worse_is_said_to():
     # that the named cause made the prediction of the held-out steps worse
     r = _steps_check()
     assert r.lead is not None and r.lead.figure == "heldout_extended_rmse"
-    assert "worse" not in r.lead.why  # 60 ms dead time: held out, the delay predicts better
+    assert "worse" not in lead_why(r.lead)  # 60 ms dead time: held out, the delay predicts better
     worse = replace(r.gain, heldout_baseline_rmse=1.16, heldout_extended_rmse=1.29)
-    why = lead(worse, True).why
+    why = lead_why(lead(worse, True))
     assert "here the extended model predicts them worse (1.16 -> 1.29 rad/s)" in why
 
 
@@ -220,7 +221,7 @@ def test_a_stall_spike_left_out_is_left_out_of_every_figure():
     r = check(t, u, omega, ts=0.01, cpr=720)
     words = text(r)
     art = [a for a in r.anomalies if a.kind == "logging_artefact"]
-    assert art and art[0].row == 500 and "rows 500-501 left out of the fit" in art[0].text
+    assert art and art[0].row == 500 and "rows 500-501 left out of the fit" in anomaly(art[0])
     assert "hand" not in words
     assert r.baseline.rows == 718 == sum(d.rows for d in r.deviations)
     assert "over the 718 of 720 rows the fit used (2 left out, see the anomalies)" in words
@@ -236,6 +237,6 @@ def test_times_under_a_second_are_in_ms_in_the_parameters_as_in_the_evidence():
     T, tc = r.extended.params["T"], r.extended.params["T_coast"]
     assert tc < 1.0
     assert f"T = {1e3 * T:.4g} ms" in ext and f"T_coast = {1e3 * tc:.4g} ms" in ext
-    assert f"(T = {1e3 * T:.0f} ms)" in r.finding.evidence
-    assert f"a time constant of {1e3 * tc:.0f} ms at zero command" in r.finding.evidence
+    assert f"(T = {1e3 * T:.0f} ms)" in evidence(r.finding)
+    assert f"a time constant of {1e3 * tc:.0f} ms at zero command" in evidence(r.finding)
     assert not re.search(r"\b0\.\d+ s\b", ext)

@@ -18,6 +18,7 @@ import pytest
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.compare import two_T_of
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views.check_says import caveat, close_up_what, lead_why
 from minseg_tui.model.check.effects import PARAM_UNITS, in_words
 from minseg_tui.quantities import UNITS, format_number, shown_unit
 from minseg_tui.report import svg
@@ -217,7 +218,7 @@ def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     cu = result.close_up
     ((fig, caption),) = [f for f in _figures(html) if ", close-up " in f[1]]
     speed, residual, angle = _panels(fig)
-    assert cu.what in caption and in_words(cu.cause) in caption
+    assert close_up_what(cu) in caption and in_words(cu.cause) in caption
     # where the cause acts: the close-up's own window, not the whole run
     to_t = _axis(residual, "x")
     x, _, w, _ = _area(residual)
@@ -266,7 +267,7 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     assert details.strip().startswith(
         "The figure that means most for this log: the rms error of the angle"
     )
-    assert result.lead.why in details and "whitened" in details
+    assert lead_why(result.lead) in details and "whitened" in details
     html_section = html.split("<h2>Model check</h2>", 1)[1].split("<h2>", 1)[0]
     assert html_section.index("Likely cause") < html_section.index("<details><summary>Details")
     assert "The figure that means most" in html_section.split("<details>", 1)[1]
@@ -308,7 +309,7 @@ def test_a_real_motor_outside_the_list_shows_its_caveats_and_current_limit(tmp_p
     assert re.search(r"a_max = [0-9.]+ rad/s\^2 \(95 %: ", section)
     assert "What the check cannot say here:" in section
     for c in r.finding.caveats:
-        assert c.text in section
+        assert caveat(c) in section
 
 
 # -- the plot itself ----------------------------------------------------------------------------

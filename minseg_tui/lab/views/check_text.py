@@ -2,7 +2,7 @@
 place that names its gain figures (the lab's screens, the report and ``minseg-tui analyze``
 read them), says a figure's first-order and extended values, and writes the full text for
 lab assistants (:func:`text`, ``minseg-tui analyze``). A model's parameters are written by
-:func:`minseg_tui.model.check.words.params` (the check's own sentences use it too).
+:func:`minseg_tui.lab.views.check_params.params` (the check's sentences use it too).
 
 Units: s, V, rad/s, rad; a time (T, the delays) is said in ms, as everywhere people read it
 (:func:`~minseg_tui.quantities.format_constant`); the JSON keeps SI.
@@ -13,8 +13,17 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+from minseg_tui.lab.views.check_params import params
+from minseg_tui.lab.views.check_says import (
+    anomaly,
+    caveat,
+    evidence,
+    lead_why,
+    other,
+    sampling,
+    where,
+)
 from minseg_tui.model.check import CheckResult, Gain
-from minseg_tui.model.check.words import params
 from minseg_tui.quantities import MISSING, format_number
 
 
@@ -168,12 +177,12 @@ def text(r: CheckResult) -> str:
     b, e, f, g = r.baseline, r.extended, r.finding, r.gain
     lines = []
     if r.sampling is not None:
-        lines.append(f"Log: {r.sampling.text()}")
+        lines.append(f"Log: {sampling(r.sampling)}")
     lines += [
         f"Baseline (first order): {params(b.params, b.intervals)}",
         f"  simulated on the measured input: rmse {b.rmse:.3f} rad/s, fit {b.fit_percent:.1f} %"
         f" ({_over(r)})",
-        f"Where it deviates: {r.where}",
+        f"Where it deviates: {where(r.deviations)}",
     ]
     for d in r.deviations:
         lines.append(
@@ -181,16 +190,16 @@ def text(r: CheckResult) -> str:
             f"  mean {d.mean:+.3f} rad/s"
         )
     lines.append(f"Cause: {f.cause}")
-    lines.append(f"  {f.evidence}")
+    lines.append(f"  {evidence(f)}")
     for o in f.others:
-        lines.append(f"  also: {o.cause} ({params(o.params)}): {o.evidence}")
+        lines.append(f"  also: {o.cause} ({params(o.params)}): {other(o)}")
     if f.cause != "none":
         lines.append(f"Extended model ({e.model}): {params(e.params, e.intervals)}")
         lines.append(f"  rmse {e.rmse:.3f} rad/s, fit {e.fit_percent:.1f} % ({_over(r)})")
     else:
         lines.append("Extended model: none needed (it is the baseline)")
     if r.lead is not None:
-        lines.append(f"Gain: {_pair(r, r.lead.figure)} (leads because {r.lead.why})")
+        lines.append(f"Gain: {_pair(r, r.lead.figure)} (leads because {lead_why(r.lead)})")
     rest = []
     floor = g.noise_floor
     noise = g.noise
@@ -226,8 +235,8 @@ def text(r: CheckResult) -> str:
     lines.append("  " + "; ".join(rest) + f" (rms, noise and fit figures {_over(r)}{held})")
     if f.caveats:
         lines.append(CAVEATS)
-        lines.extend(f"  - {c.text}" for c in f.caveats)
+        lines.extend(f"  - {caveat(c)}" for c in f.caveats)
     if r.anomalies:
         lines.append(ANOMALIES)
-        lines.extend(f"  - {a.text}" for a in r.anomalies)
+        lines.extend(f"  - {anomaly(a)}" for a in r.anomalies)
     return "\n".join(lines)

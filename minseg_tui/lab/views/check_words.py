@@ -12,7 +12,7 @@ the run's input voltage, and writes what the lab screen and the report both lead
 
 The full text for lab assistants is :func:`minseg_tui.lab.views.check_text.text`
 (``minseg-tui analyze``); the gain figures' names are written for both there, and a model's
-parameters by :mod:`minseg_tui.model.check.words`. Units: s, V, rad/s, rad (said: T and the
+parameters by :mod:`minseg_tui.lab.views.check_params`. Units: s, V, rad/s, rad (said: T and the
 delays in ms).
 """
 
@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from minseg_tui.lab.views.check_says import close_up_what
 from minseg_tui.lab.views.check_text import GAIN_DIGITS, figure, figure_words, stem
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
@@ -281,7 +282,9 @@ def close_up_title(r: CheckResult) -> str:
     cu = r.close_up
     if cu is None:
         return "the whole log"
-    return f"close-up {format_value(cu.t0, '', 3)}-{format_value(cu.t1, 's', 3)}: {cu.what}"
+    return (
+        f"close-up {format_value(cu.t0, '', 3)}-{format_value(cu.t1, 's', 3)}: {close_up_what(cu)}"
+    )
 
 
 def join(sentences: Sequence[str]) -> str:

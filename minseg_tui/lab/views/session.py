@@ -33,9 +33,9 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import choice_words, read_entry
 from minseg_tui.lab.state.results import Comparison, Notice
 from minseg_tui.lab.state.session import Entry, Session, TableRow
-from minseg_tui.lab.views import check_text, check_words
+from minseg_tui.lab.views import check_params as model_words
+from minseg_tui.lab.views import check_says, check_text, check_words
 from minseg_tui.model import identify as model_identify
-from minseg_tui.model.check import words as model_words
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.identify.identification import determined
@@ -1193,7 +1193,7 @@ def check(session: Session) -> CheckView:
         shown = _figure(g, r.lead.figure, named)
         if shown is not None:
             lead = f"{check_text.figure_words(led).name}: {shown}"
-            lead_why = r.lead.why
+            lead_why = check_says.lead_why(r.lead)
     others = [
         f"{check_text.FIGURES[stem].name} {shown}"
         for stem in check_text.FIGURES
@@ -1208,8 +1208,8 @@ def check(session: Session) -> CheckView:
     t = np.asarray(r.t, dtype=float)
     cu = r.close_up
     window = slice(cu.start, cu.end) if cu is not None else slice(0, 0)
-    notes = tuple(f"cannot say: {c.text}" for c in f.caveats) + tuple(
-        f"anomaly: {a.text}" for a in r.anomalies
+    notes = tuple(f"cannot say: {check_says.caveat(c)}" for c in f.caveats) + tuple(
+        f"anomaly: {check_says.anomaly(a)}" for a in r.anomalies
     )
     u: FloatArray | None = None  # unread: the story says less about the close-up's step
     if mc.run is not None:
@@ -1233,7 +1233,7 @@ def check(session: Session) -> CheckView:
         extended,
         omega - baseline,
         f.cause,
-        f.evidence,
+        check_says.evidence(f),
         ext,
         "; ".join(others),
         lead=lead,
@@ -1242,7 +1242,7 @@ def check(session: Session) -> CheckView:
         close_omega=omega[window],
         close_baseline=baseline[window],
         close_extended=extended[window],
-        close_what=cu.what if cu is not None else "",
+        close_what=check_says.close_up_what(cu) if cu is not None else "",
         noise=cu.noise if cu is not None else floor,
         notes=notes,
         cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),

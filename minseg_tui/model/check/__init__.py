@@ -12,23 +12,30 @@ Modules, in the order the check uses them:
   jitter or lost samples, the speed's resolution and noise floor, counts or a smooth signal);
 - simulate: the model and its effects in closed form per mode on a piecewise-constant input;
 - effects: the causes, each whole in one entry of one list (names, parameter, search range,
-  starts, what a log needs to show it, its evidence sentence and its words for people, and
-  its own simulation piece when it acts on the input);
+  starts, what a log needs to show it, what its evidence reads off a log (a typed record)
+  and its labels for people, and its own simulation piece when it acts on the input);
 - guess: what the starts are read off the log with;
 - fit: whitened least squares (K solved linearly), any set of causes jointly (by
   :mod:`minseg_tui.model.optimize`, the search identify uses too), 95 % intervals;
 - decide: the criterion with a margin, causes added and dropped one at a time;
 - disturbances: a hand on the wheel, found in the settled stretches and fenced off;
-- anomalies: wild samples, creep, late steps, gaps, disturbances, in words;
+- anomalies: wild samples, creep, late steps, gaps, disturbances, as typed records;
 - deviations: where the baseline is wrong;
-- evidence: the finding in words, every number read off the log;
+- evidence: what the evidence reads off a log, and what a log needs to show a cause;
 - figures: the gain past the noise, held-out steps, the figure that leads, the close-up;
-- result: the result and its JSON (typed records); words: a model's parameters in words
-  (the one writer of that line, which the check's own sentences use);
+- result: the result and its JSON (typed records: caveats, evidence, the runner-up; the
+  JSON's sentences are asked of :class:`~.result.Says`);
 - pipeline: :func:`check`, from start to end.
 
-The gain figures' names and the full text for lab assistants are made from the result
-outside the model, in :mod:`minseg_tui.lab.views.check_text`.
+The check's sentences (evidence, caveats, anomalies, why a
+figure leads, the runner-up, the close-up, the sampling) are made from its records outside
+the model, in :mod:`minseg_tui.lab.views.check_says` (the JSON of ``analyze --json``:
+:func:`~minseg_tui.lab.views.check_says.as_json`); the gain figures' names and the full
+text for lab assistants in :mod:`minseg_tui.lab.views.check_text`; a model's parameters in
+:mod:`minseg_tui.lab.views.check_params`. The selection's reasons a cause was left out are
+records too (:class:`.decide.Reason`, a cause's own :class:`.effects.Refusal`). Still words
+here: each cause's labels (``label``, ``everyday``, ``short``, ``meaning``, what
+``within_sample`` calls it), which :func:`.effects.in_words` and the sentences read.
 """
 
 from minseg_tui.model.check.figures import Gain

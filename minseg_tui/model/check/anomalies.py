@@ -18,6 +18,7 @@ Each is reported for what it is, never forced into a cause:
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -48,21 +49,136 @@ def moving_rows(y: FloatArray) -> FloatArray:
 
 
 @dataclass(frozen=True)
+class StartsMoving:
+    """The log starts with the wheel turning: ``u0`` the first input (V); ``fitted``: the
+    initial speed was fitted (the first input is 0), else taken as the steady speed under
+    ``u0``."""
+
+    u0: float
+    fitted: bool
+
+
+@dataclass(frozen=True)
+class WildSample:
+    """A misread count: the row, its time and the jump (rad/s) are the anomaly's own."""
+
+
+@dataclass(frozen=True)
+class Creep:
+    """A creep after the rise: its size (%, signed: + creeps up) is the anomaly's own."""
+
+
+@dataclass(frozen=True)
+class LateStep:
+    """A step between samples: its row, time and shift (ms, signed) are the anomaly's own."""
+
+
+@dataclass(frozen=True)
+class Gaps:
+    """Gaps in the sample times on a regular clock: how many, the nominal period (ms), and
+    about how many samples were lost (the longest gap, ms, and the row after it are the
+    anomaly's own)."""
+
+    count: int
+    nominal_ms: float
+    lost: int
+
+
+LeftOut = Literal["those", "span", "restarted"]
+"""Which rows a disturbance left out of the fit: 'those' (the rows of the departure),
+'span' (the departure and the wheel's way back until the model meets the speed again, from
+``left_t0`` to ``left_t1``), 'restarted' (the departure until the hand let go, from where
+the model picks up from the speed the wheel was left at)."""
+
+
+@dataclass(frozen=True)
+class Hand:
+    """A disturbance: the model's speed there (rad/s; its change is the anomaly's size), the
+    input it stays at (V), which rows were left out of the fit and from when to when (s)."""
+
+    level: float
+    u: float
+    left: LeftOut
+    left_t0: float = 0.0
+    left_t1: float = 0.0
+
+
+@dataclass(frozen=True)
+class ModelMiss:
+    """A departure that comes back edge after edge: the times of those edges (s), which
+    edges (``edges``: the kinds as :func:`.disturbances.split_repeated` names them, or
+    ``of_edges``: of how many edges in all), and what repeats: the speed departs the same
+    way (``shifts_ms`` empty) or the response looks shifted in time by ``shifts_ms`` (ms,
+    signed)."""
+
+    times: tuple[float, ...]
+    edges: str = ""
+    of_edges: int = 0
+    shifts_ms: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True)
+class LoggingArtefact:
+    """A spike right after a gap in the sample times: the row after the gap and its time
+    (s), the gap (ms), and the first and last row left out of the fit."""
+
+    at: int
+    t_at: float
+    gap_ms: float
+    first: int
+    last: int
+
+
+@dataclass(frozen=True)
+class StartGlitch:
+    """A switch-on glitch: how many rows, the time of the last one (s); its top speed is the
+    anomaly's size."""
+
+    rows: int
+    t_last: float
+
+
+@dataclass(frozen=True)
+class AveragedGaps:
+    """Rows left out after gaps in the sample times of an averaged speed: the average's
+    length (samples); how many gaps and the first one's time are the anomaly's own."""
+
+    taps: int
+
+
+Facts = (
+    StartsMoving
+    | WildSample
+    | Creep
+    | LateStep
+    | Gaps
+    | Hand
+    | ModelMiss
+    | LoggingArtefact
+    | StartGlitch
+    | AveragedGaps
+)
+"""What the sentence of an anomaly needs beyond its kind, row, time and size; the sentence
+is written outside the model (:mod:`minseg_tui.lab.views.check_says`)."""
+
+
+@dataclass(frozen=True)
 class Anomaly:
     """One thing the log shows that is not a model effect: kind, row (0-based, or None),
-    time (s, or None), size (in ``unit``), a sentence for a student, and where it ends
-    (t_end, s; row_end, exclusive) for one that lasts (a disturbance), else None."""
+    time (s, or None), size (in ``unit``), what its sentence needs (``facts``), and where it
+    ends (t_end, s; row_end, exclusive) for one that lasts (a disturbance), else None."""
 
     kind: str
     row: int | None
     t: float | None
     size: float
     unit: str
-    text: str
+    facts: Facts
     t_end: float | None = None
     row_end: int | None = None
 
-    def to_dict(self) -> dict[str, object]:
+    def to_dict(self, text: str) -> dict[str, object]:
+        """The anomaly's JSON, ``text`` its sentence."""
         return {
             "kind": self.kind,
             "row": self.row,
@@ -71,7 +187,7 @@ class Anomaly:
             "row_end": self.row_end,
             "size": self.size,
             "unit": self.unit,
-            "text": self.text,
+            "text": text,
         }
 
 
@@ -151,7 +267,7 @@ def repair(y: FloatArray, residual: FloatArray, rows: list[int], taps: int) -> F
 def wild_anomalies(
     t: FloatArray, y: FloatArray, residual: FloatArray, rows: list[int], taps: int
 ) -> list[Anomaly]:
-    """Sentences for the wild rows found."""
+    """The wild rows found, as anomalies."""
     e = whiten(residual, taps)
     out = []
     for m in rows:
@@ -162,8 +278,7 @@ def wild_anomalies(
                 float(t[m]),
                 float(e[m]),
                 "rad/s",
-                f"row {m} (t = {t[m]:.3f} s): the speed jumps by {e[m]:+.2f} rad/s for one sample "
-                "and straight back, as a misread encoder count does; it was left out of the fit",
+                WildSample(),
             )
         )
     return out
@@ -201,16 +316,13 @@ def creep(
     else:
         sure = min(tstat) > 5.0
     if same >= 0.75 and abs(mean_rel) >= 0.02 and sure:
-        word = "creeps up" if mean_rel > 0 else "sags"
         return Anomaly(
             "creep",
             None,
             None,
             100 * mean_rel,
             "%",
-            f"after each step has settled the speed still {word} by about {abs(100 * mean_rel):.1f} % "
-            "over the rest of the step (warming up, a battery or a load that changes); "
-            "no first-order model does that, so it is not counted as a cause",
+            Creep(),
         )
     return None
 
@@ -277,8 +389,7 @@ def late_steps(
                     float(t[e]),
                     1e3 * off,
                     "ms",
-                    f"the step at row {e} (t = {t[e]:.3f} s) acts about {1e3 * off:+.0f} ms "
-                    "from its sample time compared with the others: it started between samples",
+                    LateStep(),
                 )
             )
     return out
@@ -299,9 +410,7 @@ def gaps(t: FloatArray, ts: float, regular: bool = True) -> Anomaly | None:
         float(t[k + 1]),
         float(1e3 * dt[k]),
         "ms",
-        f"{bad.size} gap(s) in the sample times, the longest {1e3 * dt[k]:.0f} ms before row {k + 1} "
-        f"(nominal {1e3 * ts:.1f} ms, the clock otherwise regular): about {lost} sample(s) were "
-        "lost; the simulation uses the real times",
+        Gaps(int(bad.size), 1e3 * ts, lost),
     )
 
 
@@ -315,7 +424,7 @@ def disturbance(
     left: tuple[int, int] | None = None,
     restarted: bool = False,
 ) -> Anomaly:
-    """The sentence for a disturbance over rows start..end (exclusive): ``size`` the largest
+    """A disturbance over rows start..end (exclusive): ``size`` the largest
     change of speed (rad/s, measured - model) against the model's ``level`` there; ``left``:
     the rows left out of the fit (first, end exclusive) when more than start..end (the
     departure's onset before it, the wheel's way back to the model after it);
@@ -326,52 +435,44 @@ def disturbance(
     step = np.flatnonzero(u[start + 1 :] != u[start])
     end = min(end, start + 1 + int(step[0])) if step.size else end
     t1 = float(t[min(end, t.size - 1)]) if end < t.size else float(t[-1])
-    word = "drops" if size * np.sign(level or 1.0) < 0 else "rises"
-    share = f" ({100 * abs(size / level):.0f} %)" if level else ""
     if restarted and left is not None:
         a, b = left
-        out = (
-            f"the rows from t = {t[a]:.3f} s to {t[min(b, t.size) - 1]:.3f} s (the departure "
-            "until the hand let go) were left out of the fit; from there the model picks up "
-            "from the speed the wheel was left at, so its way back stays in the fit"
-        )
+        facts = Hand(level, float(u[start]), "restarted", float(t[a]), float(t[min(b, t.size) - 1]))
     elif left is None or left == (start, end):
-        out = "those rows were left out of the fit"
+        facts = Hand(level, float(u[start]), "those")
     else:
         a, b = left
-        out = (
-            f"the rows from t = {t[a]:.3f} s to {t[min(b, t.size) - 1]:.3f} s (the departure, "
-            "and the wheel's way back until the model meets the speed again) were left out of "
-            "the fit"
-        )
+        facts = Hand(level, float(u[start]), "span", float(t[a]), float(t[min(b, t.size) - 1]))
     return Anomaly(
         "disturbance",
         int(start),
         float(t[start]),
         float(size),
         "rad/s",
-        f"from t = {t[start]:.3f} s to {t1:.3f} s the speed {word} by {abs(size):.3g} rad/s{share} "
-        f"while the input stays at {u[start]:g} V, and comes back: something other than the "
-        f"input moved the wheel (a hand on it, a snag); {out}",
+        facts,
         t_end=t1,
         row_end=int(end),
     )
 
 
-def repeated_miss(t: FloatArray, starts: list[int], edges: str, what: str) -> Anomaly:
-    """One sentence for departures that come back edge after edge (``starts``: the rows of
-    those edges; ``edges``: 'rising', 'falling' or both; ``what``: what repeats, in words):
-    the model misses something at those edges; it is not a disturbance."""
-    times = ", ".join(f"{t[s]:.2f}" for s in starts[:6]) + (" ..." if len(starts) > 6 else "")
+def repeated_miss(
+    t: FloatArray,
+    starts: list[int],
+    edges: str = "",
+    of_edges: int = 0,
+    shifts_ms: tuple[float, ...] = (),
+) -> Anomaly:
+    """Departures that come back edge after edge (``starts``: the rows of those edges;
+    ``edges``: 'rising', 'falling' or both, or ``of_edges``: of how many edges in all;
+    ``shifts_ms``: the response looks shifted by these (ms), else the speed departs the same
+    way): the model misses something at those edges; it is not a disturbance."""
     return Anomaly(
         "model_miss",
         int(starts[0]),
         float(t[starts[0]]),
         float(len(starts)),
         "edges",
-        f"{what} after {len(starts)} {edges} edges (t = {times} s): a departure that comes back "
-        "edge after edge is what the model misses there, not a hand on the wheel; those rows "
-        "stay in the fit",
+        ModelMiss(tuple(float(t[s]) for s in starts), edges, of_edges, shifts_ms),
     )
 
 
@@ -394,24 +495,20 @@ def logging_artefact(
     at: int | None = None,
     left: tuple[int, int] | None = None,
 ) -> Anomaly:
-    """The sentence for a spike right after a gap in the sample times (``at``: the row after
+    """A spike right after a gap in the sample times (``at``: the row after
     the gap, default ``row``), with rows row..end (exclusive) left out of the fit (or the
     rows ``left``, first and end exclusive, when given): the logger's clock and its encoder
     read disagree there, the wheel did not move so."""
     at = row if at is None else at
     gap = float(t[at] - t[at - 1]) if at > 0 else 0.0
     a, b = (row, end) if left is None else left
-    out = f"row {a}" if b - a <= 1 else f"rows {a}-{b - 1}"
     return Anomaly(
         "logging_artefact",
         int(row),
         float(t[row]),
         float(size),
         "rad/s",
-        f"row {at} (t = {t[at]:.3f} s), right after a gap of {1e3 * gap:.0f} ms in the sample "
-        f"times: the speed jumps by {size:+.3g} rad/s and straight back, as when the logger stalls "
-        "and reads the encoder and its clock at different moments (a logging artefact, not the "
-        f"wheel); {out} left out of the fit",
+        LoggingArtefact(int(at), float(t[at]), 1e3 * gap, int(a), int(b - 1)),
         t_end=float(t[min(end, t.size - 1)]),
         row_end=int(end),
     )
@@ -441,7 +538,7 @@ def start_glitch(u: FloatArray, y: FloatArray) -> int:
 
 
 def glitch_anomaly(t: FloatArray, y: FloatArray, rows: int) -> Anomaly:
-    """The sentence for ``rows`` switch-on glitch rows at the start."""
+    """``rows`` switch-on glitch rows at the start."""
     top = float(np.max(np.abs(y[:rows])))
     return Anomaly(
         "start_glitch",
@@ -449,16 +546,14 @@ def glitch_anomaly(t: FloatArray, y: FloatArray, rows: int) -> Anomaly:
         float(t[0]),
         top,
         "rad/s",
-        f"the first {rows} row(s) (to t = {t[rows - 1]:.3f} s) read up to {top:.3g} rad/s and the "
-        "next one close to 0 with the input unchanged: a glitch as the logger starts, not the "
-        "wheel; left out of the fit",
+        StartGlitch(int(rows), float(t[rows - 1])),
         t_end=float(t[rows]),
         row_end=int(rows),
     )
 
 
 def averaged_gaps(t: FloatArray, starts: list[int], taps: int) -> Anomaly:
-    """The sentence for the rows left out after gaps in the sample times of an averaged
+    """The rows left out after gaps in the sample times of an averaged
     speed (``starts``: the rows right after each gap; ``taps``: the average's length)."""
     first = starts[0]
     return Anomaly(
@@ -467,8 +562,6 @@ def averaged_gaps(t: FloatArray, starts: list[int], taps: int) -> Anomaly:
         float(t[first]),
         float(len(starts)),
         "gaps",
-        "the speed is averaged over several samples, so a read the logger got wrong across a "
-        f"gap in the sample times stays in it for as many rows: the {taps + 1} rows after each "
-        f"of the {len(starts)} gap(s) (the first at t = {t[first]:.3f} s) were left out of the fit",
+        AveragedGaps(int(taps)),
         row_end=int(min(first + taps + 1, t.size)),
     )

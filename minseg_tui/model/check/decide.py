@@ -35,6 +35,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
+from typing import Literal
 
 import numpy as np
 
@@ -45,6 +46,7 @@ from minseg_tui.model.check.effects import (
     NAMES,
     Judged,
     Range,
+    Refusal,
     absent,
     counted,
     excluded,
@@ -127,19 +129,70 @@ def on_bound(f: Fit, cause: str, rng: dict[str, Range]) -> str | None:
     return None
 
 
+ReasonKind = Literal[
+    "T_bound",
+    "bound",
+    "refused",
+    "worse_raw",
+    "within_sample",
+    "below_noise",
+    "too_small",
+    "others_explain",
+    "swapped",
+    "together",
+    "third_small",
+    "whitened_only",
+    "rival_better",
+]
+"""Why a clear cause was left out: the T it needs or its own parameter sits on a bound; its
+own test refuses it; it matches the speed itself worse than the first-order model; it acts
+within the first sample; its effect is within the noise, or too small against the speed;
+the other causes explain the log as well without it; another explains it better with the
+others; others together explain it better; a third cause too small beside the pair; it cuts
+only the whitened residual; a rival matches the speed itself far better."""
+
+
+@dataclass(frozen=True)
+class Reason:
+    """Why a clear cause was left out (``kind``), with what its sentence needs: the bound's
+    ``side``; the cause's own ``refusal``; what the cause is (``what``, 'a delay') and its
+    time ``value`` against the sample period ``ts`` (s); how far it moves the simulated
+    speed (``shown``, rad/s, held over ``rows`` samples) against the noise there
+    (``level``), the speed it reaches (``top``) or the share of the others' (``share``);
+    the other causes concerned (``causes``)."""
+
+    kind: ReasonKind
+    side: str = ""
+    refusal: Refusal | None = None
+    what: str = ""
+    value: float = 0.0
+    ts: float = 0.0
+    shown: float = 0.0
+    rows: int = 0
+    level: float = 0.0
+    top: float = 0.0
+    share: float = 0.0
+    causes: tuple[str, ...] = ()
+
+    @property
+    def bound(self) -> bool:
+        """It sits on a bound (the T it needs or its own parameter)."""
+        return self.kind in ("T_bound", "bound")
+
+
 @dataclass
 class Selection:
     """The outcome of the search: the chosen model (the baseline when nothing is named),
     every single cause's fit and verdict against the baseline, the chosen model without each
-    of its causes, and why each cause that was not named was left out (in words)."""
+    of its causes, and why each cause that was not named was left out (:class:`Reason`)."""
 
     base: Fit
     chosen: Fit
     singles: dict[str, Fit]
     verdicts: dict[str, Verdict]
     without: dict[str, Fit] = field(default_factory=dict)
-    left_out: dict[str, str] = field(default_factory=dict)
-    bound: dict[str, tuple[Fit, str]] = field(default_factory=dict)
+    left_out: dict[str, Reason] = field(default_factory=dict)
+    bound: dict[str, tuple[Fit, Reason]] = field(default_factory=dict)
     tried: list[Fit] = field(default_factory=list)
     plain: float = 0.0
     """The first-order model's scatter (rad/s) an average's noise test is relaxed against
@@ -194,48 +247,34 @@ def _why_not(
     noise: float,
     floor: Callable[[int], float | None],
     plain: float = 0.0,
-) -> str | None:
+) -> Reason | None:
     """Why ``cause`` in ``f`` cannot be named although clear (None: it can). ``floor(N)``:
     the noise floor of the speed column if it were an average over N samples; ``plain``:
     the speed's scatter (rad/s) around the first-order model, the smaller of ``noise`` and
     :func:`_own_noise` of the baseline (0: not known)."""
     lo, hi = math.log(T_BOUNDS[0]), math.log(T_BOUNDS[1])
     if not lo + BOUND_SHARE * (hi - lo) < math.log(f.T) < hi - BOUND_SHARE * (hi - lo):
-        return "the time constant T it needs sits on the bound of its range"
+        return Reason("T_bound")
     side = on_bound(f, cause, rng)
     if side is not None:
-        return f"its parameter sits on the {side} bound of its range"
+        return Reason("bound", side=side)
     own = BY_CAUSE[cause].refuse
     if own is not None:
-        why = own(Judged(prob, f, floor, lambda: _own_noise(prob, f), plain))
-        if why is not None:
-            return why
+        refusal = own(Judged(prob, f, floor, lambda: _own_noise(prob, f), plain))
+        if refusal is not None:
+            return Reason("refused", refusal=refusal)
     if _raw_sse(prob, f) > base_raw:
-        return "it matches the measured speed itself worse than the first-order model"
+        return Reason("worse_raw")
     what = BY_CAUSE[cause].within_sample
     if what and f.value(cause) < SUB_SAMPLE * prob.ts:
-        return (
-            f"{what} of {1e3 * f.value(cause):.3g} ms, under a quarter of the "
-            f"{1e3 * prob.ts:.3g} ms sample period, acts within the first sample after a step: "
-            "the samples show only a shift in time that the sampling's own lateness gives too"
-        )
+        return Reason("within_sample", what=what, value=f.value(cause), ts=prob.ts)
     shown = effect(prob, f, cause)
     level = held_noise(prob, f)
     if shown < level:
-        return (
-            f"nowhere does it move the simulated speed, held over {EFFECT_ROWS} samples, by more "
-            f"than {shown:.3g} rad/s, within what the speed's noise leaves over as many samples "
-            f"({level:.3g} rad/s): the log cannot show it"
-        )
+        return Reason("below_noise", shown=shown, rows=EFFECT_ROWS, level=level)
     top = speed_range(prob, f)
     if shown < SMALL_EFFECT * top:
-        return (
-            f"nowhere does it move the simulated speed, held over {EFFECT_ROWS} samples, by more "
-            f"than {shown:.3g} rad/s, {100 * shown / top:.2g} % of the {top:.3g} rad/s the "
-            "speed reaches: any model of a real motor misses by that much (a load that "
-            "ripples, drag that is not quite viscous, the encoder's timing), and a gain so "
-            "small is not a cause of its own"
-        )
+        return Reason("too_small", shown=shown, rows=EFFECT_ROWS, top=top)
     return None
 
 
@@ -348,14 +387,15 @@ def select(
     plain = relaxed if relax else 0.0
     sel = Selection(base, base, singles, verdicts, plain=plain)
 
-    def why_not(f: Fit, c: str) -> str | None:
+    def why_not(f: Fit, c: str) -> Reason | None:
         why = _why_not(prob, f, c, rng, base_raw, noise, floor, plain)
         if (
             why is not None
             and not relax
             and not sel.relaxable
             and c == "velocity_filter"
-            and why.startswith("the speed scatters")
+            and why.refusal is not None
+            and why.refusal.kind == "scatters"
         ):
             sel.relaxable = _why_not(prob, f, c, rng, base_raw, noise, floor, relaxed) is None
         return why
@@ -400,7 +440,7 @@ def select(
                 ok[c] = f
             elif c not in sel.left_out:
                 sel.left_out[c] = why
-                if "bound" in why:
+                if why.bound:
                     sel.bound[c] = (f, why)
         best = _pick(prob, ok, current, sel)
         if best is None:
@@ -419,7 +459,7 @@ def select(
             f = fit_causes(prob, rest, rng, [(current.T, old)], scan=False)
             sel.without[c] = f
             if not compare(current, f).clear:
-                sel.left_out[c] = "the other causes explain the log as well without it"
+                sel.left_out[c] = Reason("others_explain")
                 chosen, current = rest, f
                 sel.without = {}
                 changed = True
@@ -448,7 +488,7 @@ def select(
                 if why_not(f, x) is None:
                     swap = (x, f)
         if swap is not None:
-            sel.left_out[first] = f"{swap[0]} explains the log better together with the others"
+            sel.left_out[first] = Reason("swapped", causes=(swap[0],))
             chosen, current = (*rest, swap[0]), swap[1]
             sel.left_out.pop(swap[0], None)
             sel.without = {}
@@ -469,9 +509,7 @@ def select(
                 wins = _partnered(prob, sel, f, current, rng, noise, floor)
                 for x in (chosen[0], *pair):
                     if x not in wins.causes:
-                        sel.left_out[x] = (
-                            f"{' and '.join(wins.causes)} together explain the log better"
-                        )
+                        sel.left_out[x] = Reason("together", causes=tuple(wins.causes))
                     else:
                         sel.left_out.pop(x, None)
                 chosen, current = wins.causes, wins
@@ -483,7 +521,7 @@ def select(
         if why is not None:
             rest = tuple(x for x in chosen if x != c)
             old = {k: v for k, v in values_of(current).items() if k != c}
-            if "bound" in why:
+            if why.bound:
                 sel.bound[c] = (current, why)
             current = fit_causes(prob, rest, rng, [(current.T, old)], scan=False) if rest else base
             chosen = rest
@@ -499,11 +537,8 @@ def select(
             old = {k: v for k, v in values_of(current).items() if k != small}
             current = fit_causes(prob, rest, rng, [(current.T, old)], scan=False)
             chosen = rest
-            sel.left_out[small] = (
-                f"beside {' and '.join(rest)} it moves the simulated speed, held over "
-                f"{EFFECT_ROWS} samples, by {moves[small]:.3g} rad/s at most, under "
-                f"{100 * THIRD_EFFECT:.0f} % of what each of them moves it: a third cause so "
-                "small is what any pair of causes leaves of a real motor, not a cause of its own"
+            sel.left_out[small] = Reason(
+                "third_small", shown=moves[small], rows=EFFECT_ROWS, share=THIRD_EFFECT, causes=rest
             )
             sel.without = {}
     if len(chosen) == 1:
@@ -644,11 +679,11 @@ def _pick(prob: Problem, ok: dict[str, Fit], current: Fit, sel: Selection) -> st
         rivals = [n for n in left if left[n].effects.taps == current.effects.taps]
         why = None
         if raw > (1.0 - RAW_GAIN) * _raw_sse(prob, current):
-            why = "it cuts the whitened residual but not the error of the speed itself"
+            why = Reason("whitened_only")
         elif rivals:
             best = min(rivals, key=lambda n: _raw_sse(prob, left[n]))
             if RAW_RIVAL * _raw_sse(prob, left[best]) < raw:
-                why = f"{best} matches the speed itself far better"
+                why = Reason("rival_better", causes=(best,))
         if why is None:
             return c
         sel.left_out.setdefault(c, why)

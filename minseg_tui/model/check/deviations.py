@@ -52,31 +52,3 @@ def deviations(
                 Deviation(name, int(r.size), float(np.sqrt(np.mean(r * r))), float(np.mean(r)))
             )
     return out
-
-
-SAME = 1.2
-"""A region whose rms is within this factor of the steady state's is not called the worst."""
-
-
-def describe(devs: list[Deviation]) -> str:
-    """One sentence: where the model is worst, against the steady state (about equally good
-    everywhere when no region is ``SAME`` times worse than the steady state)."""
-    if not devs:
-        return "no rows to compare"
-    worst = max(devs, key=lambda d: d.rms)
-    steady = next((d for d in devs if d.region == "steady_state"), None)
-    words = worst.region.replace("_", " ")
-    if steady is None or worst is steady:
-        return (
-            f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
-        )
-    if worst.rms < SAME * steady.rms:
-        return (
-            f"the model is about equally good everywhere ({words}: rms {worst.rms:.3f} rad/s, "
-            f"steady state {steady.rms:.3f} rad/s)"
-        )
-    ratio = f"{worst.rms / steady.rms:.1f}x" if steady.rms > 0 else "exact in steady state"
-    return (
-        f"the model is worst {words}: rms {worst.rms:.3f} rad/s there against "
-        f"{steady.rms:.3f} rad/s in steady state ({ratio})"
-    )

@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, fields, replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -27,10 +27,10 @@ from minseg_tui.model.check import evidence as ev
 from minseg_tui.model.check.guess import first_motion, levels_offset, rises, steepest_rate
 from minseg_tui.model.check.simulate import Drive, Effects, Extra
 from minseg_tui.model.plant import PlantParams
-from minseg_tui.quantities import format_number
 
 if TYPE_CHECKING:
     from minseg_tui.model.check.fit import Fit, Problem
+    from minseg_tui.model.check.result import Alike
 
 FloatArray = NDArray[np.float64]
 
@@ -92,17 +92,12 @@ class Second:
 @dataclass(frozen=True)
 class Claim:
     """A claim a cause's evidence makes against one rival cause (a delay is pure, a pole
-    shows no corner). text: the words of the claim in the sentence; rival: the cause fitted
-    in its place to back it; said: the words that replace ``text`` with the figure behind
-    it, from (r, holds): r the whitened residual the rival leaves in its place over the
-    cause's, holds r >= :data:`.pipeline.POLE_OR_DELAY`; voided_by: the rivals that take
-    the claim back when the log cannot rule them out, and ``void`` the words left then."""
+    shows no corner): rival: the cause fitted in its place to back it (the figure the
+    sentence states, :attr:`.result.Because.rival_ratio`); voided_by: the rivals that take
+    the claim back when the log cannot rule them out (:attr:`.result.Because.void`)."""
 
-    text: str
     rival: str
-    said: Callable[[float, bool], str]
     voided_by: tuple[str, ...]
-    void: str
 
 
 @dataclass(frozen=True)
@@ -120,6 +115,24 @@ class Judged:
     plain: float = 0.0
     """The speed's scatter (rad/s) around the first-order model an average's noise test is
     relaxed against (0: not relaxed; see :data:`FILTER_NOISE`)."""
+
+
+RefusalKind = Literal["ramp_under_sample", "scatters", "no_slower"]
+"""A cause's own reason not to be named (:attr:`Candidate.refuse`): a cap whose ramp lasts
+under a sample period after every step; an average that leaves far more scatter than an
+average of counts leaves; a coast no slower than braking."""
+
+
+@dataclass(frozen=True)
+class Refusal:
+    """A cause's own reason not to be named (``kind``), with its figures: for 'scatters' the
+    speed's scatter around the model (rad/s), the average's length (samples) and what an
+    average of counts over it leaves (rad/s)."""
+
+    kind: RefusalKind
+    scatter: float = 0.0
+    taps: int = 0
+    floor: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -151,9 +164,17 @@ Way = dict[str, bool]
 """One way a cause can act: the :class:`Effects` flags it sets (an extra pole on the
 measurement, a cap that brakes too); {} is its plain way."""
 
-Words = Callable[[ev.Log, "Fit", float | None], str]
-"""The sentence of a cause's evidence in one log: (the log, the fit that holds the cause,
-the speed's noise floor in rad/s when known) -> words, every number read off the log."""
+
+@dataclass(frozen=True)
+class Shown:
+    """What a cause's evidence reads off one log, every number its sentence needs (each
+    cause has its own kind; the sentence is written outside the model, in
+    :mod:`minseg_tui.lab.views.check_says`)."""
+
+
+Words = Callable[[ev.Log, "Fit", float | None], Shown]
+"""What a cause's evidence reads off one log: (the log, the fit that holds the cause, the
+speed's noise floor in rad/s when known) -> its :class:`Shown` record."""
 
 
 @dataclass(frozen=True)
@@ -219,11 +240,11 @@ class Candidate:
     (None: none)."""
     claim: Claim | None = None
     """A claim its evidence makes against a rival cause, stated with the figure behind it."""
-    smooth: Callable[[Fit], str] | None = None
+    smooth: Callable[[Fit], Alike] | None = None
     """It acts on the reading, so in a smooth speed column (not a difference of counts) the
-    other causes that do cannot be told from it: the words of that caveat for the fit
-    (the first such cause in a model speaks)."""
-    refuse: Callable[[Judged], str | None] | None = None
+    other causes that do cannot be told from it: why, for the fit (the caveat's
+    :class:`~.result.Smooth`; the first such cause in a model speaks)."""
+    refuse: Callable[[Judged], Refusal | None] | None = None
     """Its own reason it cannot be named in a fit although clear (None: it can), tested
     before the test of the speed's own error."""
     within_sample: str = ""
@@ -251,7 +272,34 @@ def _friction_starts(s: Seen) -> list[float]:
     return vals
 
 
-def coulomb_words(log: ev.Log, ext: Fit) -> str:
+@dataclass(frozen=True)
+class FrictionStop(Shown):
+    """Dry friction seen at a step-down: the drive drops at ``t`` (s) and the wheel stands
+    still ``after`` s later (measured, from ``speed`` rad/s, its mean over the ``before`` s
+    before the drop), where the first-order model still turns at ``left`` rad/s (None: not
+    clearly); ``coast``: it coasts too; ``uc`` (V)."""
+
+    t: float
+    after: float
+    speed: float
+    before: float
+    left: float | None
+    coast: bool
+    uc: float
+
+
+@dataclass(frozen=True)
+class FrictionLevels(Shown):
+    """Dry friction seen in the settled speeds: a straight line through them meets zero
+    speed at ``off`` (V; None or 0: not said), ``uc`` (V); ``falls``: the log has a
+    step-down."""
+
+    off: float | None
+    uc: float
+    falls: bool
+
+
+def coulomb_words(log: ev.Log, ext: Fit) -> Shown:
     uc = ext.params["u_c"]
     shown = ev.shown_stop(log, ev.stands_still)
     coast = "coast_on_zero" in ext.causes
@@ -261,25 +309,17 @@ def coulomb_words(log: ev.Log, ext: Fit) -> str:
         k = int(np.searchsorted(log.t, log.t[s.row] + after))
         k = min(k, log.t.size - 1)
         left = abs(float(log.base_pred[k]))
-        how = "coasts and " if coast else ""
-        text = (
-            f"after the drive drops at t = {log.t[s.row]:.3f} s the wheel {how}stands still "
-            f"{ev.ms(after)} later (measured, from {abs(s.speed):.3g} rad/s, its mean over the "
-            f"{ev.ms(ev.before_s(log, s))} before the drop)"
+        return FrictionStop(
+            float(log.t[s.row]),
+            after,
+            abs(s.speed),
+            ev.before_s(log, s),
+            left if left > max(log.zero, 2.0 * log.noise) else None,
+            coast,
+            uc,
         )
-        if left > max(log.zero, 2.0 * log.noise):
-            text += f", where the first-order model still turns at {left:.2f} rad/s"
-        return text + f": dry friction stops a wheel in finite time (u_c = {format_number(uc)} V)"
     off = levels_offset(log.u, log.y, ext.T, log.ts)
-    text = (
-        "the settled speeds are not proportional to the voltage"
-        + (f": a straight line through them meets zero speed at {off:.2f} V" if off else "")
-        + f"; dry friction with u_c = {format_number(uc)} V does that (a voltage lost in the brushes or "
-        "the driver looks the same in steady state)"
-    )
-    if not ev.falls(log):
-        text += "; the log has no step-down, so a finite stop cannot be seen"
-    return text
+    return FrictionLevels(off, uc, bool(ev.falls(log)))
 
 
 COULOMB_FRICTION = Candidate(
@@ -317,11 +357,20 @@ def _delay_starts(s: Seen) -> list[float]:
     return vals
 
 
-PURE_DELAY = "(a pure delay; an extra pole would start at once, only more slowly)"
-"""The claim of a delay's evidence against a pole."""
+@dataclass(frozen=True)
+class Delay(Shown):
+    """A delay: the measured speed first moves ``lag`` s after the steps it was settled
+    before (None: not read; ``steps`` how many), the fitted delay ``d`` (s); ``slow``: the
+    speed moves before that delay ends (the start is slow rather than late; else the claim
+    of a pure delay stands, :attr:`Candidate.claim`)."""
+
+    lag: float | None
+    steps: int
+    d: float
+    slow: bool
 
 
-def dead_time_words(log: ev.Log, ext: Fit) -> str:
+def dead_time_words(log: ev.Log, ext: Fit) -> Shown:
     """The delay's evidence: when the speed first moves after the steps it was settled
     before (a speed still moving at a step says nothing of the delay), and the fitted
     delay; a pure delay only when the speed does not move before that delay ends (at
@@ -329,23 +378,7 @@ def dead_time_words(log: ev.Log, ext: Fit) -> str:
     d = ext.params["delay"]
     lags = first_motion(log.t, log.u, log.y, log.noise, settled=True)
     lag = float(np.median(lags)) if lags else None
-    seen = (
-        f"after the step{'s' if len(lags) > 1 else ''} the measured speed first moves "
-        f"{ev.ms(lag)} later"
-        if lag is not None
-        else "the response starts late"
-    )
-    if lag is not None and lag < d - 0.5 * log.ts:
-        return (
-            f"{seen}: a first-order response that starts {ev.ms(d)} after the command fits, "
-            "but the speed moves before that delay ends, so the start is slow rather than "
-            "late (an extra pole or an average of the speed starts so; the delay stands in "
-            "for it)"
-        )
-    return (
-        f"{seen}: a first-order response that starts {ev.ms(d)} after the command fits "
-        + PURE_DELAY
-    )
+    return Delay(lag, len(lags), d, lag is not None and lag < d - 0.5 * log.ts)
 
 
 DEAD_TIME = Candidate(
@@ -364,47 +397,33 @@ DEAD_TIME = Candidate(
     ),
     short="a delay",
     needs=ev.NEEDS_RISE,
-    claim=Claim(
-        PURE_DELAY,
-        "second_pole",
-        lambda r, holds: (
-            f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened residual)"
-            if holds
-            else f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
-            "the whitened residual: this log hardly tells a delay from a pole)"
-        ),
-        ("second_pole", "velocity_filter"),
-        "(a delay, or in this log an extra pole or an average about as well)",
-    ),
+    claim=Claim("second_pole", ("second_pole", "velocity_filter")),
     hidden=Hidden(0.010, 0.060, lambda p, v: replace(p, dead_time=v)),
     within_sample="a delay",
     lag=True,
 )
 
 
-def filter_words(log: ev.Log, ext: Fit, floor: float | None) -> str:
+@dataclass(frozen=True)
+class Averaged(Shown):
+    """An average of the speed over ``n`` samples of ``ts`` s; ``edges``: how many edges the
+    log has; ``smooth``: the speed is a smooth signal; ``noise``: its scatter (rad/s);
+    ``floor``: the noise floor one count per sample gives (rad/s, None: not known);
+    ``step``: the step its values come in (rad/s, None: not read off)."""
+
+    n: int
+    ts: float
+    edges: int
+    smooth: bool
+    noise: float
+    floor: float | None
+    step: float | None
+
+
+def filter_words(log: ev.Log, ext: Fit, floor: float | None) -> Shown:
     n = int(ext.params["taps"])
     edges = int(np.count_nonzero(np.diff(log.u)))
-    which = "every edge becomes" if edges > 1 else "the step becomes"
-    ramp = f"{which} a ramp about {n} samples ({ev.ms(n * log.ts)}) long"
-    if log.smooth:
-        return (
-            f"{'the rises are' if edges > 1 else 'the rise is'} smoothed as an average of the "
-            f"speed over {n} samples ({ev.ms(n * log.ts)}) would smooth it; an extra pole in the "
-            "motor would look alike in this smooth signal"
-        )
-    if floor is not None:
-        return (
-            f"the speed scatters only {log.noise:.3g} rad/s where one count per sample alone "
-            f"gives a noise floor of {floor:.3g} rad/s, and {ramp}: the speed is an average "
-            f"over {n} samples, which divides the encoder noise by {n}"
-        )
-    if log.step is not None:
-        return (
-            f"the speed's values come in steps of only {log.step:.3g} rad/s and it scatters "
-            f"{log.noise:.3g} rad/s, and {ramp}: the speed is an average over {n} samples"
-        )
-    return f"{ramp}: the speed looks averaged over {n} samples"
+    return Averaged(n, log.ts, edges, log.smooth, log.noise, floor, log.step)
 
 
 FILTER_NOISE = 3.0
@@ -424,15 +443,12 @@ not see, left in the rows, let a 13-tap average with T 16 % short (tuning seed 1
 average's miss at 4.06 s was reported as a second disturbance beside the hand."""
 
 
-def _filter_refuse(j: Judged) -> str | None:
+def _filter_refuse(j: Judged) -> Refusal | None:
     n = j.fit.effects.taps
     fl = j.floor(n)
     own = j.own_noise() if fl is not None and n >= 2 else 0.0
     if fl is not None and n >= 2 and own > FILTER_NOISE * fl and FILTER_NOISE * own > j.plain:
-        return (
-            f"the speed scatters {own:.3g} rad/s around that model's simulation, far more "
-            f"than an average of counts over {n} samples leaves ({fl:.3g} rad/s)"
-        )
+        return Refusal("scatters", own, n, fl)
     return None
 
 
@@ -454,38 +470,38 @@ VELOCITY_FILTER = Candidate(
     short="an averaged speed",
     needs=ev.NEEDS_RISE,
     counted=True,
-    smooth=lambda ext: SMOOTH_ALIKE,
+    smooth=lambda ext: "filters",
     hidden=Hidden(3, 20, None, whole=True),
     refuse=_filter_refuse,
     lag=True,
 )
 
 
-def _span(x: float) -> str:
-    """A duration (s) as the check's sentences write it: in ms under a second."""
-    return ev.ms(x) if x < 1.0 else f"{x:.3g} s"
+@dataclass(frozen=True)
+class Coast(Shown):
+    """A coast at zero command with time constant ``tc`` (s); at the drop to 0 it shows
+    (``t``, s; None: no such drop): the speed falls at ``decel`` rad/s^2 over the line from
+    the row before the drop to ``after`` s after it, to the first reading under half
+    (``half``) or staying above half of its ``w0`` rad/s; a braked motor of time constant
+    ``T`` (s) falls at w0/T."""
+
+    tc: float
+    t: float | None = None
+    decel: float = 0.0
+    after: float = 0.0
+    half: bool = False
+    w0: float = 0.0
+    T: float = 0.0
 
 
-def coast_words(log: ev.Log, ext: Fit) -> str:
+def coast_words(log: ev.Log, ext: Fit) -> Shown:
     tc = ext.params["T_coast"]
     s = ev.shown_stop(log, ev.drops_to_zero)
     if s is None:
-        return f"the wheel runs down slowly at zero command (time constant {_span(tc)})"
+        return Coast(tc)
     decel, span, half = _fall_rate(log, s)
     a, w0 = s.row, abs(s.speed)
-    after = ev.ms(span - float(log.t[a] - log.t[a - 1]))
-    line = (
-        f"from the row before the drop to the first reading under half, {after} after the drop"
-        if half
-        else f"from the row before the drop over the {after} after it, the speed staying above "
-        f"half of its {w0:.3g} rad/s throughout"
-    )
-    return (
-        f"right after the command drops to 0 at t = {log.t[a]:.3f} s the speed falls at "
-        f"{decel:.3g} rad/s^2 (a line through the speed {line}), where a braked motor (T = "
-        f"{ev.ms(ext.T)}) would fall at {w0 / ext.T:.3g} rad/s^2 at first: the bridge lets the "
-        f"wheel coast, with a time constant of {_span(tc)} at zero command"
-    )
+    return Coast(tc, float(log.t[a]), decel, span - float(log.t[a] - log.t[a - 1]), half, w0, ext.T)
 
 
 FALL_TO = 0.5
@@ -540,31 +556,13 @@ COAST_ON_ZERO = Candidate(
         lambda p, v: replace(p, zero_mode="coast", motor=replace(p.motor, f=p.motor.J / v)),
     ),
     refuse=lambda j: (
-        "it would be a coast no slower than braking"
-        if j.fit.value("coast_on_zero") < COAST_RATIO * j.fit.T
-        else None
+        Refusal("no_slower") if j.fit.value("coast_on_zero") < COAST_RATIO * j.fit.T else None
     ),
 )
 
 
-NO_CORNER = " (a pure delay would show a corner)"
-"""The claim of a pole's evidence against a delay."""
-
-SMOOTH_ALIKE = (
-    "this speed is smooth, not a difference of encoder counts: an averaging filter on the "
-    "speed and an extra pole in the motor look alike here, so the log cannot tell them "
-    "apart; the fit prefers the one named"
-)
-
-
-def _pole_smooth(ext: Fit) -> str:
-    if ext.effects.pole_measured:
-        return (
-            "this speed is smooth, not a difference of encoder counts: an average of the "
-            "speed and a first-order filter of it (a pole on the measurement) are both "
-            "filters of the reading, and the pole named acts there; the fit prefers it"
-        )
-    return SMOOTH_ALIKE
+def _pole_smooth(ext: Fit) -> Alike:
+    return "pole_measured" if ext.effects.pole_measured else "filters"
 
 
 def _pole_ways(causes: tuple[str, ...], smooth: bool) -> list[Way]:
@@ -597,7 +595,30 @@ def _pole_carry(
     return {**values, "second_pole": ts / math.log1p(ts / t2)}
 
 
-def pole_words(log: ev.Log, ext: Fit) -> str:
+PoleWay = Literal["filtered", "measured", "driver", "drive"]
+"""Where an extra pole acts: a filter of a smooth speed column, on the measurement, in the
+driver, or on the drive (the torque)."""
+
+
+@dataclass(frozen=True)
+class Pole(Shown):
+    """An extra pole of ``t2`` s, acting where ``way`` says; ``smooth``: a smooth speed
+    column; ``after``: the span (s) after each rise where the speed has risen ``got``
+    rad/s (median) against the first-order model's ``model`` (None: no rise long enough);
+    ``share``: the share of the new speed each reading of a filter takes; ``beside``: the
+    nonlinear causes it acts beside (on the measurement)."""
+
+    t2: float
+    way: PoleWay
+    smooth: bool
+    after: float
+    got: float | None
+    model: float | None
+    share: float = 0.0
+    beside: tuple[str, ...] = ()
+
+
+def pole_words(log: ev.Log, ext: Fit) -> Shown:
     t2 = ext.params["T2"]
     w = max(2, int(math.ceil(max(t2, ext.T / 2) / log.ts)))
     got, model = [], []
@@ -606,50 +627,23 @@ def pole_words(log: ev.Log, ext: Fit) -> str:
             continue
         got.append(abs(float(log.y[a + w - 1] - log.y[a - 1])))
         model.append(abs(float(log.base_pred[a + w - 1] - log.base_pred[a - 1])))
-    text = "each rise starts with zero slope (an S-shaped start)"
-    if log.smooth:
-        text += " (in this smooth signal an average of the speed would look alike)"
-    if got:
-        text += (
-            f": {ev.ms(w * log.ts)} after the step the speed has risen {np.median(got):.3g} rad/s "
-            f"where the first-order model rises {np.median(model):.3g} rad/s"
-        )
-    if ext.effects.pole_filtered:
-        share = 1.0 - math.exp(-log.ts / t2)
-        return text + (
-            "; the speed column is smooth, not a difference of encoder counts, so an extra pole "
-            "on the measurement is a filter of that column, run sample by sample as a logger "
-            f"runs it (each reading takes {share:.2f} of the new speed and keeps the rest of "
-            f"the one before: a first-order filter of {ev.ms(t2)}); a pole on the drive fits "
-            "this log worse (a pure delay would show a corner)"
-        )
-    if ext.effects.pole_measured:
-        where = [
-            w
-            for c, w in (
-                ("coulomb_friction", "the wheel stops"),
-                ("coast_on_zero", "it coasts"),
-                ("current_limit", "the cap holds"),
-            )
-            if c in ext.causes
-        ]
-        return text + (
-            f"; an extra pole of {ev.ms(t2)} on the measurement (a compliant coupling to the "
-            "encoder, or a first-order filter of the speed) lags what the encoder reads: on "
-            f"the drive it fits worse where {' and where '.join(where) or 'the effects act'} "
-            "(a pure delay would show a corner)"
-        )
-    if ext.effects.pole_driver:
-        return text + (
-            f"; an extra pole of {ev.ms(t2)} in the driver lags its command and runs on while "
-            "the wheel coasts: its output has fallen towards zero when the bridge closes, so "
-            "the wheel is braked at first, which the armature's own lag (no current while "
-            "coasting) does not do (a pure delay would show a corner)"
-        )
-    return (
-        text
-        + f"; an extra pole of {ev.ms(t2)} delays the torque (a pure delay would show a corner)"
+    said_got = float(np.median(got)) if got else None
+    said_model = float(np.median(model)) if got else None
+    fx = ext.effects
+    way: PoleWay = (
+        "filtered"
+        if fx.pole_filtered
+        else "measured"
+        if fx.pole_measured
+        else "driver"
+        if fx.pole_driver
+        else "drive"
     )
+    beside = tuple(
+        c for c in ("coulomb_friction", "coast_on_zero", "current_limit") if c in ext.causes
+    )
+    share = 1.0 - math.exp(-log.ts / t2) if way == "filtered" else 0.0
+    return Pole(t2, way, log.smooth, w * log.ts, said_got, said_model, share, beside)
 
 
 SECOND_POLE = Candidate(
@@ -673,18 +667,7 @@ SECOND_POLE = Candidate(
     flags=("pole_measured", "pole_filtered", "pole_driver"),
     ways=_pole_ways,
     carry=_pole_carry,
-    claim=Claim(
-        NO_CORNER,
-        "dead_time",
-        lambda r, holds: (
-            f" (a pure delay in its place leaves {r:.1f} times the whitened residual)"
-            if holds
-            else f" (though a pure delay in its place leaves only {r:.2f} times the "
-            "whitened residual: this log hardly tells a pole from a delay)"
-        ),
-        ("dead_time",),
-        "",
-    ),
+    claim=Claim("dead_time", ("dead_time",)),
     smooth=_pole_smooth,
     hidden=Hidden(0.010, 0.040, lambda p, v: replace(p, T2=v)),
     within_sample="a pole",
@@ -692,32 +675,32 @@ SECOND_POLE = Candidate(
 )
 
 
-def limit_words(log: ev.Log, ext: Fit) -> str:
+@dataclass(frozen=True)
+class Cap(Shown):
+    """A current limit: the speed ramps at about ``rate`` rad/s^2 (measured; None or 0: not
+    read), where the motor without a cap would start at ``uncapped`` rad/s^2 (K u/T of the
+    first rise; None: no rise); ``both``: capped braking too, shown at a step down;
+    ``a_max`` (rad/s^2)."""
+
+    rate: float | None
+    uncapped: float | None
+    both: bool
+    a_max: float
+
+
+def limit_words(log: ev.Log, ext: Fit) -> Shown:
     a = ext.params["a_max"]
     r = steepest_rate(log.t, log.u, log.y, 1.0)
-    seen = f"the speed ramps at about {r:.3g} rad/s^2" if r else "the speed ramps"
     ups = rises(log.u)
-    top = ""
+    top = None
     if ups:
         k, _ = ups[0]
         jump = abs(float(log.u[k] - log.u[k - 1]))
-        top = (
-            f"; the same motor without a cap would start at K u/T = "
-            f"{abs(ext.K) * jump / ext.T:.3g} rad/s^2, steepest at once"
-        )
+        top = abs(ext.K) * jump / ext.T
     edges = np.flatnonzero(np.diff(log.u) != 0) + 1
     # a step down (|u| falls, or u reverses): the only place a log shows how the drive brakes
     down = any(abs(log.u[k]) < abs(log.u[k - 1]) or log.u[k] * log.u[k - 1] < 0 for k in edges)
-    both = (
-        " both ways (braking after a step down is capped too: the speed falls along a ramp "
-        "as well, which a cap on accelerating alone does not fit as well)"
-        if ext.effects.cap_both and down
-        else ""
-    )
-    return (
-        f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
-        f"into the plateau{top}: the drive caps the current{both}, a_max = {a:.3g} rad/s^2"
-    )
+    return Cap(r, top, bool(ext.effects.cap_both and down), a)
 
 
 DRAG = "cap_drag"
@@ -802,12 +785,7 @@ CURRENT_LIMIT = Candidate(
     flags=("cap_both",),
     # capped while accelerating only, and capped both ways
     ways=lambda causes, smooth: [{}, {"cap_both": True}],
-    refuse=lambda j: (
-        "the ramp that cap makes would last less than one sample period after every step: "
-        "no two samples lie on it, so this log cannot show a cap"
-        if cap_ramp(j.prob, j.fit) < j.prob.ts
-        else None
-    ),
+    refuse=lambda j: Refusal("ramp_under_sample") if cap_ramp(j.prob, j.fit) < j.prob.ts else None,
     hidden=Hidden(20.0, 60.0, lambda p, v: replace(p, i_max=v * p.motor.J / p.motor.k_a)),
     again=Again("coulomb_friction", _cap_beside_friction),
 )
@@ -836,26 +814,6 @@ def in_words(model: str) -> str:
         for p in model.split("+")
     )
 
-
-TELL_APART: dict[frozenset[str], str] = {
-    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
-    "samples after each step (more counts per sample, a faster sampling where the counts "
-    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
-    "bends smoothly from the start)",
-    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
-    "(a delay shifts the rise, an average turns it into a ramp)",
-    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
-    "of the speed acts on the measurement only, a pole on the motor)",
-    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
-    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
-    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
-    "limits the big steps only, friction takes the same volts off every level)",
-    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
-    "would (a coast acts only at 0)",
-}
-"""What kind of log would tell two causes apart, in words, for the pairs a log often
-cannot tell (the first pair that sets a cause only one model holds against a cause only
-the other holds speaks; a pair not here gets the check's general words)."""
 
 PARAM_UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in CANDIDATES}}
 """Unit of every parameter a model reports (SI; by parameter name, where
@@ -982,6 +940,6 @@ def starts(
     return [min(max(v, rng.lo), rng.hi) for v in vals]
 
 
-def cannot_judge(log: ev.Log) -> dict[str, str]:
+def cannot_judge(log: ev.Log) -> dict[str, ev.Lacks]:
     """The causes this log cannot show at all, and why (they are not tried)."""
     return ev.cannot_judge(log, [(c.cause, c.needs) for c in CANDIDATES])

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -120,51 +121,62 @@ def shown_stop(log: Log, which: Callable[[Fall], bool] | None) -> Fall | None:
     return max(stops, key=lambda x: abs(x.speed)) if stops else None
 
 
+Lack = Literal["rise", "drop_to_zero", "two_levels", "one_size"]
+"""What a log lacks to show a cause: a step up; a drop to zero while the wheel turns; a
+second driven level or a step-down (one level only, or one size of voltage both ways)."""
+
+
+@dataclass(frozen=True)
+class Lacks:
+    """What a log lacks to show a cause (``lack``), and for 'one_size' the one size of
+    voltage it drives at, forward and reversed (V)."""
+
+    lack: Lack
+    size: float = 0.0
+
+
 @dataclass(frozen=True)
 class Needs:
     """What a log must hold for a cause to show in it at all (else it is not tried, and the
-    report says why): ``has`` tells, ``why`` says what is missing; the report lists the
+    report says why): ``has`` tells, ``lack`` says what is missing; the report lists the
     causes a log cannot show by ``rank``, then in the order they are tried."""
 
     rank: int
-    why: str
+    lack: Lack
     has: Callable[[Log], bool]
-    words: Callable[[Log], str] | None = None
-    """``why`` in this log's own terms, when a fixed sentence would not be true of every log."""
+    told: Callable[[Log], Lacks] | None = None
+    """What is missing in this log's own terms, when one kind would not be true of every
+    log."""
 
-    def reason(self, log: Log) -> str:
-        """Why ``log`` cannot show the cause."""
-        return self.words(log) if self.words is not None else self.why
+    def reason(self, log: Log) -> Lacks:
+        """What ``log`` lacks to show the cause."""
+        return self.told(log) if self.told is not None else Lacks(self.lack)
 
 
-NEEDS_RISE = Needs(0, "the log has no step up to show it", lambda log: bool(rises(log.u)))
+NEEDS_RISE = Needs(0, "rise", lambda log: bool(rises(log.u)))
 NEEDS_DROP_TO_ZERO = Needs(
     1,
-    "the command never drops to zero while the wheel turns",
+    "drop_to_zero",
     lambda log: any(s.to_zero for s in falls(log)),
 )
 
 
-def _one_size(log: Log) -> str:
+def _one_size(log: Log) -> Lacks:
     """What a log without two driven levels holds: one level, or one size both ways."""
     if np.any(log.u > 0) and np.any(log.u < 0):
-        size = float(np.max(np.abs(log.u)))
-        return (
-            f"the log drives at one size of voltage only ({size:.3g} V, forward and reversed) "
-            "and never lowers it to a smaller one"
-        )
-    return "the log has one driven level and no step-down"
+        return Lacks("one_size", float(np.max(np.abs(log.u))))
+    return Lacks("two_levels")
 
 
 NEEDS_TWO_LEVELS = Needs(
     2,
-    "the log has one driven level and no step-down",
+    "two_levels",
     lambda log: bool(falls(log)) or len({round(abs(float(v)), 9) for v in log.u if v != 0}) >= 2,
     _one_size,
 )
 
 
-def cannot_judge(log: Log, needs: Iterable[tuple[str, Needs | None]]) -> dict[str, str]:
+def cannot_judge(log: Log, needs: Iterable[tuple[str, Needs | None]]) -> dict[str, Lacks]:
     """The causes this log cannot show at all, and why (they are not tried): of ``needs``,
     (cause, what it needs) in the order the causes are tried."""
     out = [(n.rank, i, c, n.reason(log)) for i, (c, n) in enumerate(needs) if n and not n.has(log)]

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, fields
+from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -135,15 +136,36 @@ def folds(u: FloatArray) -> list[FloatArray] | None:
     return out
 
 
+LeadKind = Literal["turning", "noisy", "heldout", "above", "small_noise", "unknown"]
+"""Why a figure leads: the wheel stands still in most rows ('turning': the angle error);
+the speed error is mostly noise ('noisy': the angle error); the log has steps to hold out
+('heldout'); the noise is a good part of the error ('above': the error above the noise);
+the noise is small against the error ('small_noise': the rms error); the noise is not
+known ('unknown': the rms error)."""
+
+
 @dataclass(frozen=True)
 class Lead:
-    """The figure that means most for this log (a key of ``gain``) and why, in words."""
+    """The figure that means most for this log (a key of ``gain``) and why (``kind``), with
+    the figures its sentence needs: ``named`` (two models to tell apart, else one to judge),
+    ``noise`` (rad/s), ``error`` (the larger model's rms error, rad/s), for 'turning' the
+    error where the wheel turns (``turning``, rad/s rms), the rows where it stands still and
+    all ``rows``; for 'heldout' the held-out errors (rad/s) when the extended model predicts
+    the held-out steps worse (``worse``)."""
 
     figure: str
-    why: str
+    kind: LeadKind
+    named: bool = False
+    noise: float = 0.0
+    error: float = 0.0
+    turning: float = 0.0
+    still: int = 0
+    rows: int = 0
+    worse: tuple[float, float] | None = None
 
-    def to_dict(self) -> dict[str, str]:
-        return {"figure": self.figure, "why": self.why}
+    def to_dict(self, why: str) -> dict[str, str]:
+        """The lead's JSON, ``why`` in words."""
+        return {"figure": self.figure, "why": why}
 
 
 SMALL_NOISE = 0.3
@@ -164,61 +186,30 @@ def lead(gain: Gain, named: bool, turning: tuple[float, int, int] | None = None)
     angle = "extended_angle_rms" if named else "baseline_angle_rms"
     if noise > 0 and turning and 2 * turning[1] > turning[2] and turning[0] >= 1.5 * noise:
         err, still, rows = turning
-        return Lead(
-            angle,
-            f"the wheel stands still in {still} of {rows} rows, which makes the rms speed error "
-            f"({max(b, e):.3g} rad/s) small; where it turns the error is {err:.3g} rad/s rms "
-            f"against a noise of {noise:.3g} rad/s. The angle error adds up "
-            + (
-                "each model's misses over the run, so it tells them apart"
-                if named
-                else "the model's misses over the run, so it judges the model"
-            ),
-        )
+        return Lead(angle, "turning", named, noise, max(b, e), err, still, rows)
     if noise > 0 and max(b, e) < 1.5 * noise:
-        return Lead(
-            angle,
-            f"the speed error ({max(b, e):.3g} rad/s rms) is mostly the noise of the speed "
-            f"({noise:.3g} rad/s), which hides "
-            + (
-                "the models' difference; the angle is known far better, so the angle error "
-                "tells them apart"
-                if named
-                else "what the model misses; the angle is known far better, so the angle error "
-                "judges the model"
-            ),
-        )
+        return Lead(angle, "noisy", named, noise, max(b, e))
     if gain.heldout_baseline_rmse is not None:
-        why = "the models predict steps they were not fitted on: the honest judge of a gain"
         hb, he = gain.heldout_baseline_rmse, gain.heldout_extended_rmse
-        if named and he is not None and he > hb:
-            why += (
-                f"; here the extended model predicts them worse ({hb:.3g} -> {he:.3g} rad/s): "
-                "what the named cause gains on the rows it was fitted on does not carry over "
-                "to the steps it was not fitted on"
-            )
-        return Lead("heldout_extended_rmse" if named else "heldout_baseline_rmse", why)
+        worse = (hb, he) if named and he is not None and he > hb else None
+        return Lead(
+            "heldout_extended_rmse" if named else "heldout_baseline_rmse",
+            "heldout",
+            named,
+            worse=worse,
+        )
     if noise > 0 and noise >= SMALL_NOISE * min(b, e):
         return Lead(
-            "extended_above_noise" if named else "baseline_above_noise",
-            f"this log's speed has a noise of {noise:.3g} rad/s rms that no model can "
-            "remove; only the part of the error above it "
-            + ("tells the models apart" if named else "judges the model"),
+            "extended_above_noise" if named else "baseline_above_noise", "above", named, noise
         )
     if noise > 0:
-        return Lead(
-            "extended_rmse" if named else "baseline_rmse",
-            f"the speed's noise ({noise:.3g} rad/s rms) is small against the "
-            + (
-                "models' errors, so the rms error itself tells them apart"
-                if named
-                else "model's error, so the rms error itself judges the model"
-            ),
-        )
-    return Lead(
-        "extended_rmse" if named else "baseline_rmse",
-        "the noise of this speed is not known, so the plain rms error is all there is",
-    )
+        return Lead("extended_rmse" if named else "baseline_rmse", "small_noise", named, noise)
+    return Lead("extended_rmse" if named else "baseline_rmse", "unknown", named)
+
+
+Window = Literal["stretch", "fall", "rise", "whole"]
+"""What a close-up holds: the stretch where something braked the wheel, a step-down where
+the wheel slows and stops, a rise where the response starts, or the whole log."""
 
 
 @dataclass(frozen=True)
@@ -227,24 +218,25 @@ class CloseUp:
     the measured speed and both models there (slice the result's t, omega, baseline_pred
     and extended_pred with [start:end]); ``noise`` the speed's noise level (rad/s, the band
     a plot can draw around the measured speed), ``cause`` the cause it shows ('none' for
-    the first rise of a log without one, 'disturbance' for a hand on the wheel), ``what``
-    in words."""
+    the first rise of a log without one, 'disturbance' for a hand on the wheel), ``shows``:
+    what the window holds (:data:`Window`; in words outside the model)."""
 
     t0: float
     t1: float
     start: int
     end: int
-    what: str
+    shows: Window
     noise: float
     cause: str = "none"
 
-    def to_dict(self) -> dict[str, object]:
+    def to_dict(self, what: str) -> dict[str, object]:
+        """The close-up's JSON, ``what`` it shows in words."""
         return {
             "t0": self.t0,
             "t1": self.t1,
             "row0": self.start,
             "row1": self.end,
-            "what": self.what,
+            "what": what,
             "noise": self.noise,
             "cause": self.cause,
         }
@@ -272,20 +264,21 @@ def close_up(
     falls = [e for e in change if abs(u[e]) < abs(u[e - 1])]
     rises = [e for e in change if abs(u[e]) > abs(u[e - 1])]
     span = length if length is not None else 6.0 * T + lag
+    what: Window
     if fenced is not None:
         a, b = fenced
         pad = max(0.5 * (b - a), 4.0 * T, 5 * ts)
-        t0, t1, what = a - pad, b + pad, "the stretch where something braked the wheel"
+        t0, t1, what = a - pad, b + pad, "stretch"
     elif at_fall and falls:
         e = edge if edge in falls else falls[0]
         t0, t1 = float(t[e]) - max(2.0 * T, 5 * ts), float(t[e]) + max(span, 10 * ts)
-        what = "a step-down, where the wheel slows and stops"
+        what = "fall"
     elif rises:
         e = rises[0]
         t0, t1 = float(t[e]) - max(2.0 * T, 5 * ts), float(t[e]) + max(span, 10 * ts)
-        what = "a rise, where the response starts"
+        what = "rise"
     else:
-        t0, t1, what = float(t[0]), float(t[-1]), "the whole log"
+        t0, t1, what = float(t[0]), float(t[-1]), "whole"
     t0, t1 = max(t0, float(t[0])), min(t1, float(t[-1]))
     i0 = int(np.searchsorted(t, t0, side="left"))
     i1 = int(np.searchsorted(t, t1, side="right"))

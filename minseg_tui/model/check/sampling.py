@@ -77,7 +77,8 @@ class Sampling:
         """Noise of the angle itself, rad: one count / sqrt 12."""
         return None if self.resolution is None else self.resolution * self.ts / math.sqrt(12.0)
 
-    def to_dict(self) -> dict[str, object]:
+    def to_dict(self, text: str) -> dict[str, object]:
+        """How the log was sampled as JSON, ``text`` in words."""
         return {
             "ts": self.ts,
             "omega_over": "interval" if self.over_interval else "nominal",
@@ -91,49 +92,8 @@ class Sampling:
             "resolution_how": self.resolution_how,
             "noise_floor": self.floor,
             "smooth": self.smooth,
-            "text": self.text(),
+            "text": text,
         }
-
-    def every(self) -> str:
-        """How often the log was sampled, in plain words: "a sample every 25 ms" when every
-        interval reads the same (to 3 digits), else "a sample every 24.2-25.8 ms (mostly
-        25 ms)", or for a loop without a fixed clock "irregular, a sample every 12-40 ms
-        (nominal 25 ms)"."""
-        lo, hi, ts = (f"{x * 1e3:.3g}" for x in (self.interval_min, self.interval_max, self.ts))
-        if self.how == "even":
-            return f"a sample every {ts} ms"
-        if lo == hi:
-            return f"a sample every {lo} ms"
-        if self.regular:
-            return f"a sample every {lo}-{hi} ms (mostly {ts} ms)"
-        return f"irregular, a sample every {lo}-{hi} ms (nominal {ts} ms)"
-
-    def text(self) -> str:
-        """One sentence on the sample times and the speed column."""
-        times = self.every()
-        if self.how != "even":
-            over = "its own interval" if self.over_interval else "the nominal period"
-            src = "as the header says" if self.how == "header" else "detected from the data"
-            if not self.regular:
-                times += (
-                    ": a loop without a fixed clock; the long intervals are jitter, not lost "
-                    "samples"
-                )
-            times += f"; each row's speed is taken over {over} ({src}) and simulated so"
-        if self.lost:
-            times += f"; {self.lost} sample(s) lost"
-        if self.resolution is not None:
-            res = (
-                f"one count per sample is {self.resolution:.3g} rad/s ({self.resolution_how}), "
-                f"a noise floor of {self.floor:.3g} rad/s"
-            )
-        elif self.smooth:
-            res = "the speed is smooth, not a difference of counts (a tachometer or a filtered signal)"
-        else:
-            res = (
-                "the encoder's resolution is unknown (no # cpr: line, no count steps in the speed)"
-            )
-        return f"{times}; {res}"
 
 
 def _on(v: FloatArray, q: float) -> float:

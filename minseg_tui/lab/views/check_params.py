@@ -1,6 +1,6 @@
 """A model's parameters in words: the one writer of that line (:func:`params`), which the
-check's own sentences (a cause left out and why) and the layer above (the lab's screens,
-the report and ``minseg-tui analyze``, :mod:`minseg_tui.lab.views.check_text`) use.
+check's sentences (:mod:`minseg_tui.lab.views.check_says`), the lab's screens, the report
+and ``minseg-tui analyze`` (:mod:`minseg_tui.lab.views.check_text`) use.
 
 Units: s, V, rad/s, rad; a time (T, the delays) is said in ms, as everywhere people read it
 (:func:`~minseg_tui.quantities.format_constant`); the JSON keeps SI.

@@ -1,0 +1,800 @@
+"""The model check's sentences, made from its typed records outside the model: the one place
+that words what the check found (the evidence of the causes, the caveats, the anomalies), for ``minseg-tui analyze`` (its
+text and its ``--json``), the lab's screen and the report alike.
+
+The model (:mod:`minseg_tui.model.check`) gives records holding the numbers a sentence
+needs (which rows, when, how large); each function here turns one kind of record into the
+sentence people read. :func:`as_json` is ``analyze --json``'s object, its sentences from
+here. Units: s, V, rad/s, ms as each sentence says.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from minseg_tui.lab.views.check_params import params
+from minseg_tui.model.check import CheckResult
+from minseg_tui.model.check import anomalies as an
+from minseg_tui.model.check import effects as fx
+from minseg_tui.model.check import result as rs
+from minseg_tui.model.check.decide import Reason, ReasonKind
+from minseg_tui.model.check.deviations import Deviation
+from minseg_tui.model.check.effects import in_words
+from minseg_tui.model.check.evidence import Lack, Lacks
+from minseg_tui.model.check.figures import CloseUp, Lead, Window
+from minseg_tui.model.check.sampling import Sampling
+from minseg_tui.quantities import format_number
+
+
+def _miss(a: an.Anomaly, f: an.ModelMiss) -> str:
+    times = ", ".join(f"{x:.2f}" for x in f.times[:6]) + (" ..." if len(f.times) > 6 else "")
+    edges = f"of the {f.of_edges}" if f.of_edges else f.edges
+    what = (
+        "the response looks shifted in time (by "
+        + ", ".join(f"{x:+.0f}" for x in f.shifts_ms[:6])
+        + (" ..." if len(f.shifts_ms) > 6 else "")
+        + " ms)"
+        if f.shifts_ms
+        else "the speed departs from the model's simulation the same way"
+    )
+    return (
+        f"{what} after {len(f.times)} {edges} edges (t = {times} s): a departure that comes back "
+        "edge after edge is what the model misses there, not a hand on the wheel; those rows "
+        "stay in the fit"
+    )
+
+
+def _hand(a: an.Anomaly, f: an.Hand) -> str:
+    size, level = a.size, f.level
+    word = "drops" if size * np.sign(level or 1.0) < 0 else "rises"
+    share = f" ({100 * abs(size / level):.0f} %)" if level else ""
+    if f.left == "restarted":
+        out = (
+            f"the rows from t = {f.left_t0:.3f} s to {f.left_t1:.3f} s (the departure "
+            "until the hand let go) were left out of the fit; from there the model picks up "
+            "from the speed the wheel was left at, so its way back stays in the fit"
+        )
+    elif f.left == "those":
+        out = "those rows were left out of the fit"
+    else:
+        out = (
+            f"the rows from t = {f.left_t0:.3f} s to {f.left_t1:.3f} s (the departure, "
+            "and the wheel's way back until the model meets the speed again) were left out of "
+            "the fit"
+        )
+    return (
+        f"from t = {a.t:.3f} s to {a.t_end:.3f} s the speed {word} by {abs(size):.3g} rad/s{share} "
+        f"while the input stays at {f.u:g} V, and comes back: something other than the "
+        f"input moved the wheel (a hand on it, a snag); {out}"
+    )
+
+
+def anomaly(a: an.Anomaly) -> str:
+    """The sentence of anomaly ``a`` for a student: what the log shows, where, and what the
+    check did with those rows."""
+    f = a.facts
+    if isinstance(f, an.StartsMoving):
+        how = (
+            "its initial speed was fitted"
+            if f.fitted
+            else f"taken as the steady speed under its first input ({f.u0:g} V)"
+        )
+        return f"the log starts with the wheel already turning; {how}"
+    if isinstance(f, an.WildSample):
+        return (
+            f"row {a.row} (t = {a.t:.3f} s): the speed jumps by {a.size:+.2f} rad/s for one sample "
+            "and straight back, as a misread encoder count does; it was left out of the fit"
+        )
+    if isinstance(f, an.Creep):
+        word = "creeps up" if a.size > 0 else "sags"
+        return (
+            f"after each step has settled the speed still {word} by about {abs(a.size):.1f} % "
+            "over the rest of the step (warming up, a battery or a load that changes); "
+            "no first-order model does that, so it is not counted as a cause"
+        )
+    if isinstance(f, an.LateStep):
+        return (
+            f"the step at row {a.row} (t = {a.t:.3f} s) acts about {a.size:+.0f} ms "
+            "from its sample time compared with the others: it started between samples"
+        )
+    if isinstance(f, an.Gaps):
+        return (
+            f"{f.count} gap(s) in the sample times, the longest {a.size:.0f} ms before row {a.row} "
+            f"(nominal {f.nominal_ms:.1f} ms, the clock otherwise regular): about {f.lost} "
+            "sample(s) were lost; the simulation uses the real times"
+        )
+    if isinstance(f, an.Hand):
+        return _hand(a, f)
+    if isinstance(f, an.ModelMiss):
+        return _miss(a, f)
+    if isinstance(f, an.LoggingArtefact):
+        out = f"row {f.first}" if f.last <= f.first else f"rows {f.first}-{f.last}"
+        return (
+            f"row {f.at} (t = {f.t_at:.3f} s), right after a gap of {f.gap_ms:.0f} ms in the "
+            f"sample times: the speed jumps by {a.size:+.3g} rad/s and straight back, as when the "
+            "logger stalls and reads the encoder and its clock at different moments (a logging "
+            f"artefact, not the wheel); {out} left out of the fit"
+        )
+    if isinstance(f, an.StartGlitch):
+        return (
+            f"the first {f.rows} row(s) (to t = {f.t_last:.3f} s) read up to {a.size:.3g} rad/s "
+            "and the next one close to 0 with the input unchanged: a glitch as the logger "
+            "starts, not the wheel; left out of the fit"
+        )
+    return (
+        "the speed is averaged over several samples, so a read the logger got wrong across a "
+        f"gap in the sample times stays in it for as many rows: the {f.taps + 1} rows after each "
+        f"of the {int(a.size)} gap(s) (the first at t = {a.t:.3f} s) were left out of the fit"
+    )
+
+
+SMOOTH: dict[rs.Alike, str] = {
+    "filters": "this speed is smooth, not a difference of encoder counts: an averaging filter "
+    "on the speed and an extra pole in the motor look alike here, so the log cannot tell "
+    "them apart; the fit prefers the one named",
+    "pole_measured": "this speed is smooth, not a difference of encoder counts: an average of "
+    "the speed and a first-order filter of it (a pole on the measurement) are both filters of "
+    "the reading, and the pole named acts there; the fit prefers it",
+}
+"""Why a smooth speed column cannot tell the causes that act on the reading apart."""
+
+TELL_APART: dict[frozenset[str], str] = {
+    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
+    "samples after each step (more counts per sample, a faster sampling where the counts "
+    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
+    "bends smoothly from the start)",
+    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
+    "(a delay shifts the rise, an average turns it into a ramp)",
+    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
+    "of the speed acts on the measurement only, a pole on the motor)",
+    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
+    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
+    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
+    "limits the big steps only, friction takes the same volts off every level)",
+    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
+    "would (a coast acts only at 0)",
+}
+"""What kind of log would tell two causes apart, in words, for the pairs a log often
+cannot tell (the first pair that sets a cause only one model holds against a cause only
+the other holds speaks; a pair not here gets the check's general words)."""
+
+
+def what_would_tell(a: tuple[str, ...], b: tuple[str, ...]) -> str:
+    """What kind of log would tell causes ``a`` from ``b`` apart, in words."""
+    only_a, only_b = set(a) - set(b), set(b) - set(a)
+    for pair, words in TELL_APART.items():
+        # a pair that sets a cause of one against a cause of the other
+        if pair & only_a and pair & only_b:
+            return words
+    return (
+        "steps of other sizes, a step down to a small voltage and a faster sampling would "
+        "show more of each"
+    )
+
+
+LACKS: dict[Lack, str] = {
+    "rise": "the log has no step up to show it",
+    "drop_to_zero": "the command never drops to zero while the wheel turns",
+    "two_levels": "the log has one driven level and no step-down",
+}
+"""What a log lacks to show a cause, in words (one size both ways: :func:`lacks`)."""
+
+
+def lacks(w: Lacks) -> str:
+    """What a log lacks to show a cause, in words."""
+    if w.lack == "one_size":
+        return (
+            f"the log drives at one size of voltage only ({w.size:.3g} V, forward and reversed) "
+            "and never lowers it to a smaller one"
+        )
+    return LACKS[w.lack]
+
+
+REFUSAL: dict[fx.RefusalKind, str] = {
+    "ramp_under_sample": "the ramp that cap makes would last less than one sample period after "
+    "every step: no two samples lie on it, so this log cannot show a cap",
+    "no_slower": "it would be a coast no slower than braking",
+}
+"""A cause's own reason not to be named, in words (an average's scatter: :func:`refusal`)."""
+
+
+def refusal(r: fx.Refusal) -> str:
+    """A cause's own reason not to be named, in words."""
+    if r.kind == "scatters":
+        return (
+            f"the speed scatters {r.scatter:.3g} rad/s around that model's simulation, far more "
+            f"than an average of counts over {r.taps} samples leaves ({r.floor:.3g} rad/s)"
+        )
+    return REFUSAL[r.kind]
+
+
+REASON: dict[ReasonKind, str] = {
+    "T_bound": "the time constant T it needs sits on the bound of its range",
+    "worse_raw": "it matches the measured speed itself worse than the first-order model",
+    "others_explain": "the other causes explain the log as well without it",
+    "whitened_only": "it cuts the whitened residual but not the error of the speed itself",
+}
+"""Why a clear cause was left out, in words, where the sentence has no figure
+(:func:`reason` for the others)."""
+
+
+def reason(r: Reason) -> str:
+    """Why a clear cause was left out, in words (every figure from the selection)."""
+    if r.kind == "bound":
+        return f"its parameter sits on the {r.side} bound of its range"
+    if r.kind == "refused" and r.refusal is not None:
+        return refusal(r.refusal)
+    if r.kind == "within_sample":
+        return (
+            f"{r.what} of {1e3 * r.value:.3g} ms, under a quarter of the "
+            f"{1e3 * r.ts:.3g} ms sample period, acts within the first sample after a step: "
+            "the samples show only a shift in time that the sampling's own lateness gives too"
+        )
+    if r.kind == "below_noise":
+        return (
+            f"nowhere does it move the simulated speed, held over {r.rows} samples, by more "
+            f"than {r.shown:.3g} rad/s, within what the speed's noise leaves over as many samples "
+            f"({r.level:.3g} rad/s): the log cannot show it"
+        )
+    if r.kind == "too_small":
+        return (
+            f"nowhere does it move the simulated speed, held over {r.rows} samples, by more "
+            f"than {r.shown:.3g} rad/s, {100 * r.shown / r.top:.2g} % of the {r.top:.3g} rad/s "
+            "the speed reaches: any model of a real motor misses by that much (a load that "
+            "ripples, drag that is not quite viscous, the encoder's timing), and a gain so "
+            "small is not a cause of its own"
+        )
+    if r.kind == "swapped":
+        return f"{r.causes[0]} explains the log better together with the others"
+    if r.kind == "together":
+        return f"{' and '.join(r.causes)} together explain the log better"
+    if r.kind == "third_small":
+        return (
+            f"beside {' and '.join(r.causes)} it moves the simulated speed, held over "
+            f"{r.rows} samples, by {r.shown:.3g} rad/s at most, under "
+            f"{100 * r.share:.0f} % of what each of them moves it: a third cause so "
+            "small is what any pair of causes leaves of a real motor, not a cause of its own"
+        )
+    if r.kind == "rival_better":
+        return f"{r.causes[0]} matches the speed itself far better"
+    return REASON[r.kind]
+
+
+def _untold(f: rs.Untold) -> str:
+    how = {
+        "whitened": f"the second leaves {f.ratio:.2f} times the whitened residual of the first",
+        "squared": f"the second leaves {f.ratio:.2f} times the squared speed error (their "
+        "averages differ, so their whitened residuals cannot be compared) of the first",
+        "squared_less": f"the second misses the speed itself slightly less ({f.ratio:.2f} times "
+        "the squared speed error of the first; their averages differ, so their "
+        "whitened residuals, where the first is ahead, cannot be compared)",
+    }[f.compared]
+    return (
+        f"this log cannot tell {in_words('+'.join(f.named))} from "
+        f"{in_words('+'.join(f.other))}: {how}; {what_would_tell(f.named, f.other)}"
+    )
+
+
+def caveat(c: rs.Caveat) -> str:
+    """The sentence of caveat ``c``: what the check cannot say about this log, and why."""
+    f = c.facts
+    if isinstance(f, rs.OnBound):
+        return (
+            f"{c.cause} came out clear ({params(f.params)}), but {reason(f.why)}: "
+            "the effect in this log is outside what that cause can express (or its range is "
+            "too small), so it is not named"
+        )
+    if isinstance(f, rs.Misses):
+        against = (
+            f"{f.size / f.level:.0f} times what the noise leaves ({f.level:.3g} rad/s)"
+            if f.level > 0
+            else "where the speed's noise measures 0 rad/s"
+        )
+        return (
+            f"the best model found still misses {f.region.replace('_', ' ')}: its error held "
+            f"over 9 samples is {f.size:.3g} rad/s rms there, {against}; something outside the "
+            "list of causes acts in this log, so the named cause(s) explain only part of it"
+        )
+    if isinstance(f, rs.Smooth):
+        return SMOOTH[f.alike]
+    if isinstance(f, rs.Scatter):
+        scatter = (
+            f"the speed scatters {f.noise:.3g} rad/s from sample to sample, "
+            f"{f.noise / f.counts:.1f} times what the encoder's counts explain "
+            f"({f.counts:.3g} rad/s)"
+        )
+        if f.follows:
+            return (
+                f"{scatter}, yet the model, simulated at the log's own sample times, follows "
+                f"it to {f.left:.3g} rad/s rms: the scatter is the sampling's timing, which the "
+                "simulation reproduces"
+            )
+        return (
+            f"{scatter}: timing jitter, ripple or resampling add noise no model of the motor "
+            "explains"
+        )
+    if isinstance(f, rs.Unjudged):
+        return f"{c.cause} cannot be judged: {lacks(f.why)}"
+    return _untold(f)
+
+
+def _ms(x: float) -> str:
+    """A time (s) in whole ms: '42 ms'."""
+    return f"{x * 1e3:.0f} ms"
+
+
+def _span(x: float) -> str:
+    """A duration (s) as the check's sentences write it: in ms under a second."""
+    return _ms(x) if x < 1.0 else f"{x:.3g} s"
+
+
+@dataclass(frozen=True)
+class ClaimWords:
+    """How a cause's evidence words its claim against a rival (:attr:`.effects.Candidate.claim`):
+    ``bare`` with no figure, ``holds`` and ``weak`` with the ratio the rival leaves (it holds,
+    or the log hardly tells the two apart), ``void`` when the log cannot rule the rival out."""
+
+    bare: str
+    holds: Callable[[float], str]
+    weak: Callable[[float], str]
+    void: str
+
+
+CLAIMS: dict[str, ClaimWords] = {
+    "dead_time": ClaimWords(
+        "(a pure delay; an extra pole would start at once, only more slowly)",
+        lambda r: (
+            f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened residual)"
+        ),
+        lambda r: (
+            f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
+            "the whitened residual: this log hardly tells a delay from a pole)"
+        ),
+        "(a delay, or in this log an extra pole or an average about as well)",
+    ),
+    "second_pole": ClaimWords(
+        " (a pure delay would show a corner)",
+        lambda r: f" (a pure delay in its place leaves {r:.1f} times the whitened residual)",
+        lambda r: (
+            f" (though a pure delay in its place leaves only {r:.2f} times the "
+            "whitened residual: this log hardly tells a pole from a delay)"
+        ),
+        "",
+    ),
+}
+"""Each claim in words, by the cause that makes it."""
+
+
+def _claim(b: rs.Because) -> str:
+    """The claim of ``b``'s cause against its rival, with the figure behind it when the
+    rival was fitted in its place, or taken back when the log cannot rule the rival out."""
+    w = CLAIMS[b.cause]
+    if b.void:
+        return w.void
+    r = b.rival_ratio
+    if r is None:
+        return w.bare
+    return w.holds(r) if b.holds else w.weak(r)
+
+
+def _friction_stop(f: fx.FrictionStop) -> str:
+    how = "coasts and " if f.coast else ""
+    text = (
+        f"after the drive drops at t = {f.t:.3f} s the wheel {how}stands still "
+        f"{_ms(f.after)} later (measured, from {f.speed:.3g} rad/s, its mean over the "
+        f"{_ms(f.before)} before the drop)"
+    )
+    if f.left is not None:
+        text += f", where the first-order model still turns at {f.left:.2f} rad/s"
+    return text + f": dry friction stops a wheel in finite time (u_c = {format_number(f.uc)} V)"
+
+
+def _friction_levels(f: fx.FrictionLevels) -> str:
+    text = (
+        "the settled speeds are not proportional to the voltage"
+        + (f": a straight line through them meets zero speed at {f.off:.2f} V" if f.off else "")
+        + f"; dry friction with u_c = {format_number(f.uc)} V does that (a voltage lost in the "
+        "brushes or the driver looks the same in steady state)"
+    )
+    if not f.falls:
+        text += "; the log has no step-down, so a finite stop cannot be seen"
+    return text
+
+
+def _delay(f: fx.Delay, claim: str) -> str:
+    seen = (
+        f"after the step{'s' if f.steps > 1 else ''} the measured speed first moves "
+        f"{_ms(f.lag)} later"
+        if f.lag is not None
+        else "the response starts late"
+    )
+    if f.slow:
+        return (
+            f"{seen}: a first-order response that starts {_ms(f.d)} after the command fits, "
+            "but the speed moves before that delay ends, so the start is slow rather than "
+            "late (an extra pole or an average of the speed starts so; the delay stands in "
+            "for it)"
+        )
+    return f"{seen}: a first-order response that starts {_ms(f.d)} after the command fits " + claim
+
+
+def _averaged(f: fx.Averaged) -> str:
+    n = f.n
+    which = "every edge becomes" if f.edges > 1 else "the step becomes"
+    ramp = f"{which} a ramp about {n} samples ({_ms(n * f.ts)}) long"
+    if f.smooth:
+        return (
+            f"{'the rises are' if f.edges > 1 else 'the rise is'} smoothed as an average of the "
+            f"speed over {n} samples ({_ms(n * f.ts)}) would smooth it; an extra pole in the "
+            "motor would look alike in this smooth signal"
+        )
+    if f.floor is not None:
+        return (
+            f"the speed scatters only {f.noise:.3g} rad/s where one count per sample alone "
+            f"gives a noise floor of {f.floor:.3g} rad/s, and {ramp}: the speed is an average "
+            f"over {n} samples, which divides the encoder noise by {n}"
+        )
+    if f.step is not None:
+        return (
+            f"the speed's values come in steps of only {f.step:.3g} rad/s and it scatters "
+            f"{f.noise:.3g} rad/s, and {ramp}: the speed is an average over {n} samples"
+        )
+    return f"{ramp}: the speed looks averaged over {n} samples"
+
+
+def _coast(f: fx.Coast) -> str:
+    if f.t is None:
+        return f"the wheel runs down slowly at zero command (time constant {_span(f.tc)})"
+    after = _ms(f.after)
+    line = (
+        f"from the row before the drop to the first reading under half, {after} after the drop"
+        if f.half
+        else f"from the row before the drop over the {after} after it, the speed staying above "
+        f"half of its {f.w0:.3g} rad/s throughout"
+    )
+    return (
+        f"right after the command drops to 0 at t = {f.t:.3f} s the speed falls at "
+        f"{f.decel:.3g} rad/s^2 (a line through the speed {line}), where a braked motor (T = "
+        f"{_ms(f.T)}) would fall at {f.w0 / f.T:.3g} rad/s^2 at first: the bridge lets the "
+        f"wheel coast, with a time constant of {_span(f.tc)} at zero command"
+    )
+
+
+POLE_BESIDE: dict[str, str] = {
+    "coulomb_friction": "the wheel stops",
+    "coast_on_zero": "it coasts",
+    "current_limit": "the cap holds",
+}
+"""Where a pole on the measurement shows beside each nonlinear cause (on the drive it fits
+worse there)."""
+
+
+def _pole(f: fx.Pole, claim: str) -> str:
+    text = "each rise starts with zero slope (an S-shaped start)"
+    if f.smooth:
+        text += " (in this smooth signal an average of the speed would look alike)"
+    if f.got is not None:
+        text += (
+            f": {_ms(f.after)} after the step the speed has risen {f.got:.3g} rad/s "
+            f"where the first-order model rises {f.model:.3g} rad/s"
+        )
+    if f.way == "filtered":
+        return text + (
+            "; the speed column is smooth, not a difference of encoder counts, so an extra pole "
+            "on the measurement is a filter of that column, run sample by sample as a logger "
+            f"runs it (each reading takes {f.share:.2f} of the new speed and keeps the rest of "
+            f"the one before: a first-order filter of {_ms(f.t2)}); a pole on the drive fits "
+            f"this log worse{claim}"
+        )
+    if f.way == "measured":
+        where = [POLE_BESIDE[c] for c in f.beside]
+        return text + (
+            f"; an extra pole of {_ms(f.t2)} on the measurement (a compliant coupling to the "
+            "encoder, or a first-order filter of the speed) lags what the encoder reads: on "
+            f"the drive it fits worse where {' and where '.join(where) or 'the effects act'}"
+            f"{claim}"
+        )
+    if f.way == "driver":
+        return text + (
+            f"; an extra pole of {_ms(f.t2)} in the driver lags its command and runs on while "
+            "the wheel coasts: its output has fallen towards zero when the bridge closes, so "
+            "the wheel is braked at first, which the armature's own lag (no current while "
+            f"coasting) does not do{claim}"
+        )
+    return text + f"; an extra pole of {_ms(f.t2)} delays the torque{claim}"
+
+
+def _cap(f: fx.Cap) -> str:
+    seen = f"the speed ramps at about {f.rate:.3g} rad/s^2" if f.rate else "the speed ramps"
+    top = (
+        f"; the same motor without a cap would start at K u/T = {f.uncapped:.3g} rad/s^2, "
+        "steepest at once"
+        if f.uncapped is not None
+        else ""
+    )
+    both = (
+        " both ways (braking after a step down is capped too: the speed falls along a ramp "
+        "as well, which a cap on accelerating alone does not fit as well)"
+        if f.both
+        else ""
+    )
+    return (
+        f"{seen} (the mean slope between 20 % and 70 % of the rise, measured) and then bends "
+        f"into the plateau{top}: the drive caps the current{both}, a_max = {f.a_max:.3g} rad/s^2"
+    )
+
+
+def shown(b: rs.Because) -> str:
+    """What a cause's evidence reads off the log, in words, with its claim against a rival
+    (every number read off the log)."""
+    f = b.shown
+    if isinstance(f, fx.FrictionStop):
+        return _friction_stop(f)
+    if isinstance(f, fx.FrictionLevels):
+        return _friction_levels(f)
+    if isinstance(f, fx.Delay):
+        return _delay(f, _claim(b))
+    if isinstance(f, fx.Averaged):
+        return _averaged(f)
+    if isinstance(f, fx.Coast):
+        return _coast(f)
+    if isinstance(f, fx.Pole):
+        return _pole(f, _claim(b))
+    if isinstance(f, fx.Cap):
+        return _cap(f)
+    raise TypeError(f"no words for {type(f).__name__}")
+
+
+def _plain(p: rs.Plain) -> str:
+    """The evidence when no cause is named."""
+    if p.how == "unexplained":
+        return "no cause from the list explains what the first-order model misses"
+    if p.how == "fits":
+        text = "the first-order model fits the log"
+    elif p.how == "turning":
+        text = (
+            f"where the wheel turns ({p.turning} of {p.rows} rows; "
+            f"it stands still in the others) the first-order model misses by "
+            f"{p.left_turning:.2g} rad/s rms above the noise ({p.level:.3g} rad/s)"
+        )
+    elif p.how == "at_noise":
+        text = (
+            f"the first-order model's rms error is at the level of the speed's noise: "
+            f"{p.rms:.3g} rad/s against a noise of {p.level:.3g} rad/s"
+        )
+    else:
+        text = (
+            f"the first-order model misses by {p.left:.2g} rad/s rms above the noise "
+            f"({p.level:.3g} rad/s), but no cause from the list is clear enough to name"
+        )
+    if p.low_fit is not None:
+        text += (
+            f" (its fit is only {p.low_fit:.0f} % because that noise is large against the "
+            "speed's changes, not because the model is wrong)"
+        )
+    return text
+
+
+def evidence(f: rs.Finding) -> str:
+    """The finding's evidence in words: what the cause shows in the log and how much of the
+    residual it removes, and why the runner-up lost; or, when no cause is named, how the
+    first-order model does and why no cause was."""
+    e = f.evidence
+    if isinstance(e, rs.Plain):
+        text = _plain(e)
+        return f"{text}; {runner_up_why(f)}" if f.runner_up_why is not None else text
+    text = (
+        f"{shown(e)}. It removes {100 * e.reduction:.1f} % of the "
+        f"whitened residual the model leaves without it (criterion gain {e.gain:.0f})"
+    )
+    return f"{text}; {runner_up_why(f)}" if f.runner_up else text
+
+
+def other(o: rs.Other) -> str:
+    """A further effect's evidence in words: what it shows, and what taking it out costs."""
+    e = o.evidence
+    return (
+        f"{shown(e)}; taking it out of the model leaves "
+        f"{1 / max(1 - e.reduction, 1e-12):.1f} times the whitened residual"
+    )
+
+
+def lead_why(g: Lead) -> str:
+    """Why the figure that leads means most for this log, in words."""
+    named = g.named
+    if g.kind == "turning":
+        return (
+            f"the wheel stands still in {g.still} of {g.rows} rows, which makes the rms speed "
+            f"error ({g.error:.3g} rad/s) small; where it turns the error is {g.turning:.3g} "
+            f"rad/s rms against a noise of {g.noise:.3g} rad/s. The angle error adds up "
+            + (
+                "each model's misses over the run, so it tells them apart"
+                if named
+                else "the model's misses over the run, so it judges the model"
+            )
+        )
+    if g.kind == "noisy":
+        return (
+            f"the speed error ({g.error:.3g} rad/s rms) is mostly the noise of the speed "
+            f"({g.noise:.3g} rad/s), which hides "
+            + (
+                "the models' difference; the angle is known far better, so the angle error "
+                "tells them apart"
+                if named
+                else "what the model misses; the angle is known far better, so the angle error "
+                "judges the model"
+            )
+        )
+    if g.kind == "heldout":
+        why = "the models predict steps they were not fitted on: the honest judge of a gain"
+        if g.worse is not None:
+            hb, he = g.worse
+            why += (
+                f"; here the extended model predicts them worse ({hb:.3g} -> {he:.3g} rad/s): "
+                "what the named cause gains on the rows it was fitted on does not carry over "
+                "to the steps it was not fitted on"
+            )
+        return why
+    if g.kind == "above":
+        return (
+            f"this log's speed has a noise of {g.noise:.3g} rad/s rms that no model can "
+            "remove; only the part of the error above it "
+            + ("tells the models apart" if named else "judges the model")
+        )
+    if g.kind == "small_noise":
+        return f"the speed's noise ({g.noise:.3g} rad/s rms) is small against the " + (
+            "models' errors, so the rms error itself tells them apart"
+            if named
+            else "model's error, so the rms error itself judges the model"
+        )
+    return "the noise of this speed is not known, so the plain rms error is all there is"
+
+
+WINDOW: dict[Window, str] = {
+    "stretch": "the stretch where something braked the wheel",
+    "fall": "a step-down, where the wheel slows and stops",
+    "rise": "a rise, where the response starts",
+    "whole": "the whole log",
+}
+"""What a close-up shows, in words."""
+
+
+def close_up_what(c: CloseUp) -> str:
+    """What close-up ``c`` shows, in words."""
+    return WINDOW[c.shows]
+
+
+def every(s: Sampling) -> str:
+    """How often the log was sampled, in plain words: "a sample every 25 ms" when every
+    interval reads the same (to 3 digits), else "a sample every 24.2-25.8 ms (mostly
+    25 ms)", or for a loop without a fixed clock "irregular, a sample every 12-40 ms
+    (nominal 25 ms)"."""
+    lo, hi, ts = (f"{x * 1e3:.3g}" for x in (s.interval_min, s.interval_max, s.ts))
+    if s.how == "even":
+        return f"a sample every {ts} ms"
+    if lo == hi:
+        return f"a sample every {lo} ms"
+    if s.regular:
+        return f"a sample every {lo}-{hi} ms (mostly {ts} ms)"
+    return f"irregular, a sample every {lo}-{hi} ms (nominal {ts} ms)"
+
+
+def sampling(s: Sampling) -> str:
+    """One sentence on the sample times and the speed column."""
+    times = every(s)
+    if s.how != "even":
+        over = "its own interval" if s.over_interval else "the nominal period"
+        src = "as the header says" if s.how == "header" else "detected from the data"
+        if not s.regular:
+            times += (
+                ": a loop without a fixed clock; the long intervals are jitter, not lost samples"
+            )
+        times += f"; each row's speed is taken over {over} ({src}) and simulated so"
+    if s.lost:
+        times += f"; {s.lost} sample(s) lost"
+    if s.resolution is not None:
+        res = (
+            f"one count per sample is {s.resolution:.3g} rad/s ({s.resolution_how}), "
+            f"a noise floor of {s.floor:.3g} rad/s"
+        )
+    elif s.smooth:
+        res = "the speed is smooth, not a difference of counts (a tachometer or a filtered signal)"
+    else:
+        res = "the encoder's resolution is unknown (no # cpr: line, no count steps in the speed)"
+    return f"{times}; {res}"
+
+
+SAME = 1.2
+"""A region whose rms is within this factor of the steady state's is not called the worst."""
+
+
+def where(devs: list[Deviation]) -> str:
+    """One sentence: where the model is worst, against the steady state (about equally good
+    everywhere when no region is ``SAME`` times worse than the steady state)."""
+    if not devs:
+        return "no rows to compare"
+    worst = max(devs, key=lambda d: d.rms)
+    steady = next((d for d in devs if d.region == "steady_state"), None)
+    words = worst.region.replace("_", " ")
+    if steady is None or worst is steady:
+        return (
+            f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
+        )
+    if worst.rms < SAME * steady.rms:
+        return (
+            f"the model is about equally good everywhere ({words}: rms {worst.rms:.3f} rad/s, "
+            f"steady state {steady.rms:.3f} rad/s)"
+        )
+    ratio = f"{worst.rms / steady.rms:.1f}x" if steady.rms > 0 else "exact in steady state"
+    return (
+        f"the model is worst {words}: rms {worst.rms:.3f} rad/s there against "
+        f"{steady.rms:.3f} rad/s in steady state ({ratio})"
+    )
+
+
+def runner_up_why(f: rs.Finding) -> str:
+    """Why the runner-up of finding ``f`` lost, in words ('' without one)."""
+    return lost(f.runner_up_why)
+
+
+def lost(r: rs.RunnerUp | None) -> str:
+    """Why a runner-up lost, in words ('' without one): with no cause named, the best
+    extension by its contract name; with one, the next best explanation in words."""
+    if r is None:
+        return ""
+    name, why = r.name, (reason(r.reason) if r.reason is not None else "")
+    if r.kind == "held_back":
+        return f"the best extension ({name}) is held back: {why}"
+    share = f"{100 * max(r.share, 0.0):.1f} %"
+    if r.kind == "too_small":
+        return (
+            f"the best extension ({name}) removes only {share} of the whitened residual, and a "
+            f"cause needs at least {100 * r.needs:.0f} %"
+        )
+    if r.kind == "short_of_gain":
+        return (
+            f"the best extension ({name}) removes {share} of the whitened residual, but its "
+            f"criterion gain {r.gain:.0f} is below the {r.threshold:.0f} a cause needs on a log "
+            "this long"
+        )
+    said = in_words(name)  # the sentence names it in words, never by its contract name
+    if r.kind == "misses_more":
+        b_rms, e_rms = r.rms
+        # digits enough to show the two apart (gen15 printed 'rmse 1.8 against 1.8')
+        n = next((d for d in range(3, 7) if f"{b_rms:.{d}g}" != f"{e_rms:.{d}g}"), 6)
+        return (
+            f"the next best explanation ({said}) leaves less whitened residual, but its "
+            f"simulated speed misses the measured speed by more (rmse {b_rms:.{n}g} rad/s "
+            f"against {e_rms:.{n}g} rad/s)" + (f", and {why}" if why else "")
+        )
+    if r.kind == "not_named":
+        return (
+            f"the next best explanation ({said}) leaves less whitened residual but is not "
+            f"named: {why}"
+        )
+    return (
+        f"the next best explanation ({said}) leaves {r.ratio:.1f} times as much whitened "
+        "residual" + (f" ({why})" if why else "")
+    )
+
+
+class _Says:
+    """The sentences here, as the result's JSON asks for them (:class:`~.result.Says`)."""
+
+    anomaly = staticmethod(anomaly)
+    caveat = staticmethod(caveat)
+    evidence = staticmethod(evidence)
+    other = staticmethod(other)
+    lead_why = staticmethod(lead_why)
+    close_up_what = staticmethod(close_up_what)
+    sampling = staticmethod(sampling)
+    where = staticmethod(where)
+    runner_up_why = staticmethod(runner_up_why)
+
+
+def as_json(r: CheckResult) -> dict[str, object]:
+    """The JSON object of ``minseg-tui analyze --json``, its sentences made here."""
+    return r.to_dict(_Says())
