@@ -3,8 +3,16 @@ session folder."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
+from minseg_tui.report.write import write_report
+from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.config import UiConfig
+from minseg_tui.ui.panels.report import ReportPanel
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import goto, settle, start, stored_text
+from tests.ui.conftest import DATE
+from tests.ui.fakes import QuietDevice
+from tests.ui.helpers import goto, settle, start, stored_text, typing_box
 
 
 def _said(app, key: str) -> str:
@@ -31,3 +39,41 @@ async def test_a_share_typed_as_a_fraction_is_quoted_as_typed_never_as_the_answe
         for line in said[1:]:
             assert "63" not in line, line
         assert stored_text(app, "prep5.percent") == "0.9"
+
+
+async def test_f8_on_the_summary_says_in_view_where_the_report_is_with_the_whole_path(tmp_path):
+    """D2: on the summary, typed from its last entry, F8 said where the files went only in
+    the step's first lines, scrolled out of view, and nowhere the sessions folder's path:
+    "in the session folder 2026-11-27-mia-k-olle (under the sessions folder)". The notice
+    now gives the session folder's whole path, in view, off the entry typed in; the step's
+    own line too. Keys as walked: Down Space Tab for Q1-Q6, the last entry typed, Enter, F8."""
+    dev = QuietDevice(seed=1)
+    root = tmp_path / "walk9-sessions"
+    cfg = UiConfig(device="auto", sessions=root, today=DATE, animations=False, refresh=0)
+    app = LabApp(cfg, lambda spec: dev, lambda session: write_report(session).paths)
+    async with app.run_test(size=(80, 24), notifications=True) as pilot:
+        await start(pilot, "Mia K, Olle")
+        await goto(pilot, "summary")
+        for _ in range(6):
+            await pilot.press("down", "space", "tab")
+        await pilot.press(*"why the 63 % T and the fitted T differ", "enter")
+        await settle(pilot)
+        box = typing_box(app)
+        assert box is not None
+        await pilot.press("f8")
+        await settle(pilot, lambda: bool(app.exported))
+        await settle(pilot, lambda: bool(app.screen.query("Toast")))
+        folder = Path(app.exported[0]).parent.resolve().as_posix()
+        assert folder.startswith(root.resolve().as_posix())
+        screen = app.screen.region
+        said = [
+            (" ".join(str(t.render()).split()), t.region)
+            for t in app.screen.query("Toast")
+            if "written:" in str(t.render())
+        ]
+        assert len(said) == 1, said
+        text, region = said[0]
+        assert f"in{folder}" in text.replace(" ", ""), text  # a long path may wrap
+        assert screen.contains_region(region) and not region.overlaps(box.region)
+        panel = " ".join(str(app.screen.query_one(ReportPanel).render()).split())
+        assert f"written in {folder}:" in panel, panel
