@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
+import pytest
 from rich.cells import cell_len
-from textual.widgets import DataTable
+from textual.widgets import DataTable, Static
 
+from minseg_tui.cli import main
+from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import classread
 from minseg_tui.ui.screens.classview import COLUMNS, MEMBERS_WIDTH, ClassScreen, row
 from minseg_tui.ui.screens.start import StartScreen
@@ -46,10 +50,46 @@ async def test_the_columns_hold_the_values_as_soon_as_the_row_is_in(tmp_path: Pa
         screen._group_read(ClassScreen.GroupRead(1, g))
         table = screen.query_one(DataTable)
         cells = row(1, g)
-        assert cells[2] == "Task 4" and all(cells[4:]), cells
+        assert cells[2] == "Task 10" and all(cells[4:]), cells  # its run: reached Task 10
         assert _cut(table, cells) == []
         await settle(pilot)
         assert _cut(table, cells) == []
         line = " ".join(str(c) for c in table.get_row_at(0))
         assert cells[4] in line and cells[8] in line
         assert table.columns["members"].width == MEMBERS_WIDTH  # type: ignore[index]
+
+
+def _back_to_task4_after_the_summary(root: Path) -> Path:
+    """Walk 9's group: every step through the summary, then back to Task 4 and quit there."""
+    folder = group(root, ["Mia K", "Olle"], seed=1, at="summary")
+    s = Session.open(folder)
+    for key, answer in (("summary.1", "b"), ("summary.unclear", "why the two T differ")):
+        s.enter(key, answer)
+    s.go_to("task4")
+    s.close()
+    return folder
+
+
+async def test_the_step_column_is_the_furthest_step_reached_not_the_one_left_on(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+):
+    """D6: a group that reached the summary, went back to Task 4 and quit there was shown
+    "Task 4" (the class view and `minseg-tui class`), read by an instructor as a group that
+    stopped at Task 4. The step column is the furthest step reached; the detail says where
+    the group is now."""
+    root = tmp_path / "walk9-sessions"
+    _back_to_task4_after_the_summary(root)
+    assert main(["class", "--sessions", str(root), "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    rows = rows["groups"] if isinstance(rows, dict) else rows
+    assert rows[0]["step"] == "Summary and reflections" and rows[0]["at"] == "Task 4"
+    app = quiet_app(tmp_path / "sessions")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+        screen = ClassScreen(root)
+        await app.push_screen(screen)
+        await settle(pilot, lambda: screen.done)
+        cells = [str(c) for c in screen.query_one(DataTable).get_row_at(0)]
+        assert cells[2] == "Summary", cells
+        detail = " ".join(str(screen.query_one("#class-group", Static).render()).split())
+        assert "reached Summary and reflections, now at Task 4" in detail, detail

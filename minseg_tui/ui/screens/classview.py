@@ -62,7 +62,7 @@ def _quantity(key: str) -> classview.Quantity:
 
 
 def _step(g: Group) -> str:
-    """The step the group is at, as the lab's list of steps names it ("Prep 7", "Summary"),
+    """The furthest step the group reached, as the lab's list of steps names it ("Prep 7", "Summary"),
     with "run cut" when the run Tasks 11-15 use was interrupted (the detail below says how)."""
     step = g.step.replace("Preparation", "Prep").replace("Summary and reflections", "Summary")
     return (step or MISSING) + (", run cut" if g.notes else "")
@@ -88,7 +88,8 @@ def detail(k: int, g: Group) -> Text:
     students' own)."""
     out = Text()
     out.append(f"#{k} {_members(g)}", style="bold")
-    out.append(f"  {g.date or 'no date'} · at {g.step or '?'} · {g.id}\n")
+    where = f"reached {g.step or '?'}" + (f", now at {g.at}" if g.at and g.at != g.step else "")
+    out.append(f"  {g.date or 'no date'} · {where} · {g.id}\n")
     nums = [
         f"{q.key} {'–' if (v := g.value(q.key)) is None else q.with_unit(v)}" for q in QUANTITIES
     ]
