@@ -13,7 +13,7 @@ async def test_a_fraction_in_prep_5_is_not_told_it_reads_as_0_63_percent(quiet, 
     """Walk 9, D1: '0.5' or '0.9' typed for the share in % was told "that reads as 0.63 %:
     type the percentage, 63 %", which misquotes it and gives the answer away (the check's
     tolerance for the right 63 % took every answer under 1.6 % for the 0.63 % slip). They
-    are now simply not right; '0.63' still gets the slip's words."""
+    are now quoted with the group's own number ('did you mean 50 %?'); '0.63' too."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
@@ -22,8 +22,9 @@ async def test_a_fraction_in_prep_5_is_not_told_it_reads_as_0_63_percent(quiet, 
         await settle(pilot)
         said = " ".join(row.message.split())
         assert "0.63 %" not in said and "63 %" not in said, said
-        assert said == "not right yet; check your working", said
+        # quoted with the group's own number (s30-fixwalk's fc219f5, the walk's expectation)
+        assert said == f"that reads as {typed} %: did you mean {float(typed) * 100:g} %?", said
         row = await type_in(pilot, "prep5.percent", "0.63")
         await settle(pilot)
         said = " ".join(row.message.split())
-        assert "that reads as 0.63 %: type the percentage, 63 %" in said, said
+        assert "that reads as 0.63 %: did you mean 63 %?" in said, said
