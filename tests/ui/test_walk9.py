@@ -10,9 +10,18 @@ from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.panels.report import ReportPanel
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.plots import Canvas, TracePlot
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import goto, settle, start, stored_text, typing_box
+from tests.ui.helpers import (
+    goto,
+    settle,
+    shown,
+    start,
+    start_with_a_run,
+    stored_text,
+    typing_box,
+)
 
 
 def _said(app, key: str) -> str:
@@ -77,3 +86,26 @@ async def test_f8_on_the_summary_says_in_view_where_the_report_is_with_the_whole
         assert screen.contains_region(region) and not region.overlaps(box.region)
         panel = " ".join(str(app.screen.query_one(ReportPanel).render()).split())
         assert f"written in {folder}:" in panel, panel
+
+
+def _label_line(plot: TracePlot) -> str:
+    """The canvas's line of axis labels (its last), as drawn."""
+    canvas = plot.query_one(Canvas)
+    lines = [s.text for s in canvas.render_lines(canvas.region.reset_offset)]
+    return lines[-1]
+
+
+async def test_the_model_checks_close_up_says_its_x_axis_is_time(quiet):
+    """D3: on the model check (PgDn from Task 15) the left plot, the close-up of where the
+    cause acts, had no x label: "omega [rad/s]" filled its line of labels and its ticks,
+    seconds into the run (7.6 ... 7.9), read as speeds. Both plots now say "t [s]"."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task15")
+        await pilot.press("pagedown")
+        await settle(pilot, lambda: shown(app, "model_check"))
+        await settle(pilot)
+        for plot_id in ("#plot-check", "#plot-residual"):
+            plot = app.screen.query_one(plot_id, TracePlot)
+            assert "t [s]" in _label_line(plot), (plot_id, _label_line(plot))
+        assert "rad/s" in _label_line(app.screen.query_one("#plot-check", TracePlot))
