@@ -14,6 +14,7 @@ from minseg_tui.ui.widgets.plots import Canvas, TracePlot
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
+    box_text,
     goto,
     settle,
     shown,
@@ -109,3 +110,19 @@ async def test_the_model_checks_close_up_says_its_x_axis_is_time(quiet):
             plot = app.screen.query_one(plot_id, TracePlot)
             assert "t [s]" in _label_line(plot), (plot_id, _label_line(plot))
         assert "rad/s" in _label_line(app.screen.query_one("#plot-check", TracePlot))
+
+
+async def test_a_captured_omega_ss_keeps_its_digits(quiet):
+    """D8: a capture of 5.800098 rad/s was stored and shown as "5.8" while the other
+    captures showed three decimals ("3.823"): a measured reading keeps its digits. The wheel
+    here stands at 5.8 rad/s for the whole capture window (real samples, as F4 hands them
+    to the session)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        t = [0.025 * k for k in range(120)]
+        with app.session as s:
+            s.capture_omega(3.5, t, [5.800098] * len(t))
+        await goto(pilot, "task4")
+        assert stored_text(app, "omega_ss@3.5") == "5.800"
+        assert box_text(app, "omega_ss@3.5") == "5.800"
