@@ -179,6 +179,15 @@ class FileLock:
                 os.unlink(self.path)
         os.close(fd)
 
+    def __del__(self) -> None:
+        # a lock whose object is gone can never be released: let go of it now, so that it
+        # does not outlive what it guarded (a port closed when its pyserial object was
+        # collected); the file stays, which is harmless (nobody holds it)
+        fd, self._fd = getattr(self, "_fd", None), None
+        if fd is not None:
+            with contextlib.suppress(OSError):
+                os.close(fd)
+
     def __enter__(self) -> FileLock:
         self.acquire()
         return self

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import os
 import signal
 import subprocess
@@ -72,3 +73,17 @@ def test_a_pid_file_of_a_dead_program_is_no_lock(tmp_path):
 def test_a_folder_that_cannot_be_written_is_an_os_error(tmp_path):
     with pytest.raises(OSError):
         FileLock(tmp_path / "no such folder" / "lock").acquire()
+
+
+def test_a_lock_whose_object_is_collected_is_let_go(tmp_path):
+    """A held lock whose object nobody can reach any more (a port object dropped without
+    its close) no longer blocks the next program."""
+    path = tmp_path / "port.lock"
+    lock = FileLock(path)
+    lock.acquire()
+    assert holder(path) is not None
+    del lock
+    gc.collect()
+    assert holder(path) is None
+    with FileLock(path):
+        pass

@@ -538,6 +538,11 @@ class Link:
                 self._emit(
                     "silent", f"{self.port}: the board has not answered for {self.silence_s:g} s"
                 )
+        # closed: a port still here (close() gave up waiting for this thread) goes back now
+        with self._port_lock:
+            ser, self._ser = self._ser, None
+        if ser is not None:
+            self._close_port(ser)
 
     def _on_line(self, raw: bytes) -> None:
         self.stats.lines += 1
@@ -679,8 +684,13 @@ class Link:
             self.port = path
             self.ident = ident
             self._new_epoch()
-            with self._port_lock:
-                self._ser = ser
+            with self._port_lock:  # atomic with close()'s taking of the port
+                closed = self._closing.is_set()
+                if not closed:
+                    self._ser = ser
+            if closed:  # the program closed the link meanwhile: give the port back
+                self._close_port(ser)
+                return
             # motor off whatever the board did meanwhile; then period, supply, zero mode, stream
             for line in (P.encode(P.Stop()).decode().strip(), *self._restore.values()):
                 with contextlib.suppress(SerialException, OSError, DeviceError):

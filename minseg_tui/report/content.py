@@ -291,10 +291,15 @@ def _step_section(session: Session) -> Section:
     # the CLI gives, would say it a second time)
     sec.blocks.extend(f"{own_first.TASK[r.key]}: {r.why}" for r in rows if r.why)
     if s is res.response:
+        why = needs(views.waits_for(session, "J"), own_first.GROUPS)
         sec.blocks.append(
-            "J waits for R, k_v and f from the table of Tasks 2-9, which gives none yet ("
-            + "; ".join(res.problems)
-            + "); omega_ss in the steps, K and T need only the run and u_ss."
+            (
+                f"J {why}"
+                if why
+                else "J waits for R, k_v and f from the table of Tasks 2-9, which gives none "
+                "yet (" + "; ".join(res.problems) + ")"
+            )
+            + "; omega_ss in the steps, K and T need only the run and u_ss."
         )
     sec.blocks.append(f"How T was fitted: {s.fit.why}.")
     zoom = _zoom_figure(session, res.run, s)

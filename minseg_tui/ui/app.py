@@ -47,6 +47,7 @@ from minseg_tui.errors import MinsegError
 from minseg_tui.lab.saving.store import SessionInfo, SessionsUnreadable, list_sessions
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
+from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as lab_views
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import format_fixed
@@ -216,6 +217,8 @@ class LabApp(App[None]):
         self.task10: Task10 | None = None
         """The Task 10 procedure under way (fed by the stream worker), or None."""
         self._run: ActiveRun | None = None
+        self._used_before: str | None = None
+        """The run Tasks 11-15 used when Task 10 began the run now under way."""
         self.lab_changed: Signal[None] = Signal(self, "lab-changed")
         """Published whenever the session changed (an entry, a capture, a run, an import)."""
         self._meter_wanted = False
@@ -786,6 +789,9 @@ class LabApp(App[None]):
         except MinsegError as exc:
             self.notify(str(exc), title="run", severity="error")
             return
+        with self.session as s:
+            used = s.response_run()
+        self._used_before = used.name if used is not None else None
         self.task10 = task
         self.motor = "off"
         self.requested = None
@@ -855,6 +861,12 @@ class LabApp(App[None]):
                 f", {info.dropped} lost on the link" if info.dropped else ""
             )
         self.notify(f"{said}: {kept}", title="Task 10")
+        changed = ""
+        if self.session is not None:
+            with self.session as s:
+                changed = own_first.run_changed(s, self._used_before)
+        if changed:
+            self.notify(changed, title="Tasks 11-15", severity="warning", timeout=20)
         self.run_progress = RunProgress(
             1.0 if outcome.why == "done" else 0.0, f"{said}: {kept}", False
         )

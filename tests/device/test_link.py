@@ -4,6 +4,8 @@ URL (the ``make_rig`` fixture runs each on both), and what only one of them can 
 import os
 import subprocess
 import sys
+import threading
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -11,8 +13,10 @@ import pytest
 from minseg_tui.device import protocol as P
 from minseg_tui.device.factory import open_device
 from minseg_tui.device.link import Link, LinkEvent
+from minseg_tui.device.port import lock_path
 from minseg_tui.device.samples import SampleBatch, motion
 from minseg_tui.errors import DeviceError, InputError
+from minseg_tui.lock import holder
 from minseg_tui.units import RAD_PER_COUNT
 
 from .conftest import wait_for
@@ -262,3 +266,43 @@ def test_a_plain_serial_monitor_cannot_open_a_port_the_link_holds(pty_server):
     finally:
         link.close()
     assert wait_for(lambda: _plain_open(pty_server.slave_name) == "opened")  # free again
+
+
+class _GatedLink(Link):
+    """A link whose handshakes after the first wait at a gate the test opens (a reconnect
+    that is still under way when the program closes the link, as on a loaded machine)."""
+
+    def __init__(self, *args: object, **kwargs: object) -> None:
+        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
+        self.handshakes = 0
+        self.at_gate = threading.Event()
+        self.gate = threading.Event()
+
+    def _handshake(self, ser):  # type: ignore[no-untyped-def]
+        self.handshakes += 1
+        if self.handshakes > 1:
+            self.at_gate.set()
+            self.gate.wait()
+        return super()._handshake(ser)
+
+
+def test_a_reconnect_that_ends_after_close_gives_the_port_and_its_lock_back(pty_server):
+    """Closed while the reader was reconnecting: the port the reader then opened is closed
+    and its lock given back, so the next program (or a test given the same pty name, as
+    the kernel hands names out again) can open it. Before, the reader kept the port and
+    its lock past the close: the lock outlived the port once the port was collected."""
+    link = _GatedLink(pty_server.path, retry_s=0.02, boot_wait_s=0.5)
+    link.open()
+    pty_server.unplug()
+    pty_server.replug()
+    assert link.at_gate.wait(30), "the link did not try to reconnect"
+    link.close()  # the reader is held in the reconnect's handshake
+    link.gate.set()
+    assert link._thread is not None
+    link._thread.join(30)
+    assert not link._thread.is_alive()
+    assert not link.connected
+    assert holder(Path(lock_path(os.path.realpath(pty_server.path)))) is None
+    again = Link(pty_server.path, boot_wait_s=0.5)
+    again.open()  # the port opens again
+    again.close()

@@ -81,43 +81,67 @@ class Heard:
     :meth:`until` waits, message by message, for a condition. For the real-time board,
     whose stream brings about 25 messages a second. ``kinds``: the kind of every link
     event heard, in order (a status text may be replaced before a test reads it; the
-    events stay)."""
+    events stay).
+
+    The hang guards count only the app's own messages (minseg_tui's: the stream's samples,
+    the link's events, the procedure's moves), never Textual's (its timers and repaints
+    come many times a second whether or not the lab moves on, so a wait counted in them
+    could last an hour). The stream posts one message per read, so a busy machine, which
+    reads less often, brings fewer of them per second of board time: a guard counted in
+    them gives a slow machine more board time, never less."""
 
     SILENCE: float = 120.0
-    """A hang guard, s: the app heard nothing at all for this long (never reached by a
-    test that works, however busy the machine: the stream alone brings a message every
+    """A hang guard, s: the app heard none of its own messages for this long (never reached
+    by a test that works, however busy the machine: the stream alone brings one every
     40 ms), so the wait fails instead of blocking the suite."""
+
+    MOST: int = 6000
+    """A hang guard: most of the app's own messages one :meth:`until` waits through (about
+    four minutes of the stream on a quiet machine; the longest wait of the suite took 105 of
+    them on a quiet machine, fewer on a busy one)."""
 
     def __init__(self) -> None:
         self._new = asyncio.Event()
         self.count = 0
+        self.own = 0
         self.kinds: list[str] = []
 
     def hook(self, message: Message) -> None:
         self.count += 1
+        if type(message).__module__.startswith("minseg_tui."):
+            self.own += 1
         if isinstance(message, LinkEventArrived):
             self.kinds.append(message.event.kind)
         self._new.set()
 
     async def until(
-        self, pilot: Pilot[None], cond: Callable[[], bool], most: int = 100_000
+        self, pilot: Pilot[None], cond: Callable[[], bool], most: int | None = None
     ) -> None:
-        """Wait until ``cond()`` holds, checking it whenever the app hears a message (at most
-        ``most`` messages, and fail after :attr:`SILENCE` without one: hang guards). A board
-        watchdog heard meanwhile fails at once: the motor is off, and a wait for a speed or a
-        run would only end at the guard."""
+        """Wait until ``cond()`` holds, checking it whenever the app hears a message; fail
+        after ``most`` (default :attr:`MOST`) of the app's own messages, or after
+        :attr:`SILENCE` without one (hang guards). A board watchdog heard meanwhile fails at
+        once: the motor is off, and a wait for a speed or a run would only end at the
+        guard."""
+        loop = asyncio.get_running_loop()
         watchdogs = self.kinds.count("watchdog")
-        for _ in range(most):
-            if cond():
-                return
+        budget = self.MOST if most is None else most
+        last = self.own + budget
+        own, heard_at = self.own, loop.time()
+        while not cond():
             if self.kinds.count("watchdog") > watchdogs:
                 raise AssertionError("the board's watchdog stopped the motor during the wait")
+            if self.own >= last:
+                raise AssertionError(f"not after {budget} of the app's own messages")
+            if self.own != own:
+                own, heard_at = self.own, loop.time()
             self._new.clear()
-            try:
-                await asyncio.wait_for(self._new.wait(), self.SILENCE)
-            except TimeoutError:
-                raise AssertionError(f"the app heard nothing for {self.SILENCE:g} s") from None
-        raise AssertionError(f"not after {most} messages")
+            left = heard_at + self.SILENCE - loop.time()
+            if left <= 0:
+                raise AssertionError(
+                    f"the app heard none of its own messages for {self.SILENCE:g} s"
+                )
+            with suppress(TimeoutError):
+                await asyncio.wait_for(self._new.wait(), left)
 
 
 def lab_screen(app: LabApp) -> LabScreen:

@@ -156,3 +156,53 @@ async def test_a_table_barely_begun_says_what_each_row_needs_and_fits_80_columns
         ]
         assert table.virtual_size.width <= table.scrollable_content_region.width
         assert not table.show_horizontal_scrollbar
+
+
+async def test_tasks_13_and_15_without_R_say_what_they_wait_for_from_the_table(quiet):
+    """R left out, a run recorded (stop 30, issue 20's leftover): Task 13's own J said
+    "J needs R, k_v and f from the table of Tasks 2-9", in words of its own; it now says
+    what the one table of inputs gives, "needs R (Task 2)". Task 15 said "nothing computed
+    to compare it with" though omega at 5 V needs only K, which the run gives: it is now
+    judged against 5 V × the run's K."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, WITHOUT_R)
+        with app.session as s:
+            record_response_run(s)
+        await goto(pilot, "task13")
+        row = await type_in(pilot, "own.J", "0.0018")
+        await settle(pilot)
+        said = " ".join(row.message.split())
+        assert said == "○ not judged: J needs R (Task 2); the run alone gives omega_ss, K and T"
+        assert row.region.bottom <= 23
+        await goto(pilot, "task15")
+        row = await type_in(pilot, "own.omega_5", "9.6")
+        await settle(pilot)
+        said = " ".join(row.message.split())
+        assert said.startswith("✓ right: -1 % from 9.685 rad/s, computed your way"), said
+        assert "your omega at 5 V: yours 9.6 rad/s · computed your way 9.685 rad/s" in _text(
+            app, "#compare"
+        )
+
+
+def test_the_report_without_R_says_J_needs_R_and_the_group_s_way_what_it_waits_for(tmp_path):
+    """report.md from a real session folder, R left out, a run recorded, the group's J and
+    omega at 5 V typed but not their K: J's row and the line under the table said "J needs R,
+    k_v and f from the table of Tasks 2-9" and "J waits for R, k_v and f ... (R is not
+    entered yet (Task 2))", and omega at 5 V "needs the group's K"; all now come from the one
+    table of inputs, with where to enter what is missing."""
+    with Session.create(tmp_path, ["A"], date="2026-11-27") as s:
+        for key, text in WITHOUT_R.items():
+            s.enter(key, text)
+        record_response_run(s)
+        s.enter("own.J", "0.0018")
+        s.enter("own.omega_5", "9.6")
+        md = write_report(s).markdown.read_text(encoding="utf-8")
+    (J,) = [line for line in md.splitlines() if line.startswith("| J (Task 13)")]
+    assert "not computed: J needs R (Task 2); the run alone gives omega_ss, K and T" in J
+    assert J.count("needs R (Task 2)") == 3  # the group's way, the verdict, the program's
+    assert "J needs R, k_v and f" not in md and "J waits for" not in md
+    assert "J needs R (Task 2); omega_ss in the steps, K and T need only the run" in md
+    (w5,) = [line for line in md.splitlines() if line.startswith("| omega at u_A = 5 V")]
+    assert "| needs the group's K (Task 11) |" in w5

@@ -25,6 +25,11 @@ from minseg_tui.lab.content.steps import (
 
 _SAMPLE_SEED = 20240416
 
+SLIP_FACTOR = 10.0
+"""A typical mistake this many times smaller than the right value, or more, is judged with
+the check's tolerance scaled down to its size (:func:`_scale`); one of the same order (37 %
+for 63 %) with the check's own."""
+
 
 def _samples(names: tuple[str, ...], n: int = 6) -> list[dict[str, float]]:
     rng = np.random.default_rng(_SAMPLE_SEED)
@@ -51,6 +56,23 @@ def _same(
             for p in points
         )
     return _close(answer, target.value(dict(env)), rel, abs_)
+
+
+def _scale(wrong: str, expected: str, names: tuple[str, ...], env: Mapping[str, float]) -> float:
+    """How large a typical mistake ``wrong`` is against the right value ``expected`` (at the
+    first sample point), when it is a slip by a factor of :data:`SLIP_FACTOR` or more (a
+    percentage typed as a fraction); else 1. The check's absolute tolerance, made for the
+    right value, shrinks by it around such a mistake. Unscaled, Preparation 5's 0.01 around
+    the 0.0063 a percentage typed as a fraction gives took every answer under 1.6 % for
+    that slip: '0.5' and '0.9' were told "that reads as 0.63 %: type the percentage, 63 %"
+    (walk 9, D1), a misquote that gave the answer away."""
+    point = {**(_samples(names)[0] if names else {}), **env}
+    w = parse_formula(wrong, names + tuple(env)).value(point)
+    e = parse_formula(expected, names + tuple(env)).value(point)
+    if not (math.isfinite(w) and math.isfinite(e)) or e == 0:
+        return 1.0
+    ratio = abs(w / e)
+    return ratio if ratio * SLIP_FACTOR <= 1.0 else 1.0
 
 
 def check_answer(chk: Check, answer: object, entries: Mapping[str, object]) -> Feedback:
@@ -88,7 +110,8 @@ def check_answer(chk: Check, answer: object, entries: Mapping[str, object]) -> F
         grader = said.replace(CONSISTENT, CONSISTENT_GRADER) if chk.holds == CONSISTENT else ""
         return Feedback(chk.key, "right", said, grader)
     for wrong, message in chk.mistakes:
-        if _same(answer, wrong, fld.names, env, chk.rel_tol, chk.abs_tol):
+        tol = chk.abs_tol * _scale(wrong, chk.expected, fld.names, env)
+        if _same(answer, wrong, fld.names, env, chk.rel_tol, tol):
             return Feedback(chk.key, "wrong", message)
     return Feedback(chk.key, "wrong", "not right yet; check your working", "not right")
 

@@ -37,22 +37,35 @@ class ModelAnswer:
     K: float
 
 
+class ModelUnreadable(FormulaRefused):
+    """A model text that cannot be read as an equation at all (nothing typed, not one '=',
+    a side that is no formula, T or K left as letters): refused as the entry is typed, the
+    text kept to mend, as any other entry that cannot be read. An equation that is read but
+    is no first-order model (no omega' term, not linear, T < 0) is :class:`FormulaRefused`
+    only: an answer, and a wrong one."""
+
+
 def _refuse(why: str) -> FormulaRefused:
     return FormulaRefused("your model", None, f"{why}; {EXPECTED}")
+
+
+def _unreadable(why: str) -> ModelUnreadable:
+    return ModelUnreadable("your model", None, f"{why}; {EXPECTED}")
 
 
 def read_model(text: str) -> ModelAnswer:
     """The T (s) and K (rad/s/V) of the first-order model written in ``text``.
 
     FormulaRefused (one line) when it is not one equation, linear in omega', omega and u_A,
-    with an omega' term, an omega term and a u_A term, and T > 0."""
+    with an omega' term, an omega term and a u_A term, and T > 0; :class:`ModelUnreadable`
+    when it cannot be read as an equation at all."""
     t = text.strip().replace("ω", "omega").replace("\u2032", "'").replace("−", "-")
     t = re.sub(r"\(t\)", "", t)
     if not t:
-        raise _refuse("nothing typed")
+        raise _unreadable("nothing typed")
     sides = t.split("=")
     if len(sides) != 2:
-        raise _refuse("one equation with one '=' is needed")
+        raise _unreadable("one equation with one '=' is needed")
     parts = []
     for side in sides:
         s = _DERIVATIVE.sub(" D ", side)
@@ -62,8 +75,8 @@ def read_model(text: str) -> ModelAnswer:
             parts.append(parse_formula(s, ("D", "W", "U")))
         except InputError as exc:
             if re.search(r"unknown name '(T|K)'", str(exc)):
-                raise _refuse("put the numbers in for T and K") from None
-            raise _refuse(f"{side.strip()!r} cannot be read") from None
+                raise _unreadable("put the numbers in for T and K") from None
+            raise _unreadable(f"{side.strip()!r} cannot be read") from None
     left, right = parts
 
     def g(d: float, w: float, u: float) -> float:
@@ -93,4 +106,4 @@ def read_model(text: str) -> ModelAnswer:
     return ModelAnswer(T, K)
 
 
-__all__ = ["EXPECTED", "ModelAnswer", "read_model"]
+__all__ = ["EXPECTED", "ModelAnswer", "ModelUnreadable", "read_model"]

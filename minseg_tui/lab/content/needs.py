@@ -29,10 +29,15 @@ INPUTS: dict[str, Input] = {
     "i_ss": Input("i_ss", "Task 5"),
     "row": Input("a row with u_ss, omega_ss and i_ss", "Tasks 4-5"),
     "run": Input("a step run", "Task 10"),
+    "own.omega_step": Input("{whose} omega_ss in the steps", "Task 11"),
+    "own.K": Input("{whose} K", "Task 11"),
+    "own.T": Input("a T: {whose}, or a 63 % reading of the run", "Task 12"),
 }
 """The readings derived values wait for. ``u_ss``, ``omega_ss`` and ``i_ss`` are those of
 one row of the table; ``row``: at least one complete row; ``run``: the step run Tasks
-11-15 use."""
+11-15 use; ``own.*``: the group's own values of Tasks 11-12 that values worked out the
+group's way wait for (``{whose}``: "your" on the screen, "the group's" in the report;
+``own.T`` is there when the group gave T or the program read T at 63 % of a rise)."""
 
 NEEDS: dict[str, tuple[str, ...]] = {
     "k_v@row": ("R", "u_ss", "omega_ss", "i_ss"),
@@ -45,12 +50,18 @@ NEEDS: dict[str, tuple[str, ...]] = {
     "J": ("T", "R", "k_v", "k_a", "f"),
     "model": ("K", "T"),
     "omega_5": ("K",),
+    "K@yours": ("own.omega_step", "run"),
+    "J@yours": ("own.T", "R", "k_v", "k_a", "f"),
+    "model@yours": ("own.T",),
+    "omega_5@yours": ("own.K",),
 }
 """Each derived value and what it is computed from: inputs (:data:`INPUTS`) or other derived
 values. ``k_v@row``, ``f@row``: a row's own (k_v = (u_ss - R i_ss) / omega_ss, f = k_a i_ss
 / omega_ss); ``k_v``, ``k_a``, ``f``: the final ones (medians over the complete rows); K, T
 (Tasks 11-12) from the step run, J (Task 13) from T and the table's constants, the model
-(Task 14) and omega at 5 V (Task 15) from K and T."""
+(Task 14) and omega at 5 V (Task 15) from K and T. ``*@yours``: the same worked out the
+group's way (K from their omega_ss in the steps, J and the model from their T or the 63 %
+reading, omega at 5 V from their K), as Tasks 11-15 compare the group's values."""
 
 
 def missing(value: str, have: Callable[[str], bool]) -> tuple[str, ...]:
@@ -71,10 +82,11 @@ def missing(value: str, have: Callable[[str], bool]) -> tuple[str, ...]:
     return tuple(out)
 
 
-def needs(inputs: Sequence[str]) -> str:
+def needs(inputs: Sequence[str], whose: str = "your") -> str:
     """What the missing ``inputs`` are and where to enter them, in words: 'needs R (Task 2)',
-    'needs R (Task 2) and i_ss (Task 5)'; '' for none."""
-    said = [f"{INPUTS[k].name} ({INPUTS[k].where})" for k in inputs]
+    'needs R (Task 2) and i_ss (Task 5)', 'needs your K (Task 11)' (``whose``: how the
+    group's own values are named, "your" or "the group's"); '' for none."""
+    said = [f"{INPUTS[k].name.format(whose=whose)} ({INPUTS[k].where})" for k in inputs]
     if not said:
         return ""
     if len(said) == 1:
@@ -93,7 +105,7 @@ def needs_short(inputs: Sequence[str]) -> str:
     make the text wider than :data:`SHORT_WIDTH`: 'needs omega_ss'); '' for none."""
     if not inputs:
         return ""
-    first = INPUTS[inputs[0]].name if inputs[0] != "row" else "a row"
+    first = INPUTS[inputs[0]].name.format(whose="your") if inputs[0] != "row" else "a row"
     said = f"needs {first}"
     return said + "…" if len(inputs) > 1 and len(said) < SHORT_WIDTH else said
 

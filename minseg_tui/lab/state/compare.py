@@ -19,6 +19,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content import needs as lab_needs
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.steps import FIELDS, Field, RunPlan
 from minseg_tui.lab.saving.kept import ResponseFigures
@@ -68,6 +69,15 @@ J_WAITS = (
     "why under the results); the run alone gives omega_ss, K and T"
 )
 """Why J is not judged while the table cannot give Tasks 6-9 but the run gives Tasks 11-12."""
+
+
+def j_waits(has: Callable[[str], bool] | None, whose: str = "your") -> str:
+    """Why J is not judged while the table gives no k_v, k_a and f but the run gives Tasks
+    11-12, from the one table of inputs: 'J needs R (Task 2); the run alone gives omega_ss,
+    K and T' (:data:`J_WAITS` when ``has`` is None or every input is there, the table
+    failing for another reason)."""
+    said = lab_needs.needs(lab_needs.missing("J", has), whose) if has is not None else ""
+    return f"J {said}; the run alone gives omega_ss, K and T" if said else J_WAITS
 
 
 def _is_slip(own: float, slip: float, right: float) -> bool:
@@ -211,6 +221,7 @@ def compare_fields(
     revealed: Collection[str] = (),
     reading: Callable[[str], str | None] | None = None,
     whose: str = "your",
+    has: Callable[[str], bool] | None = None,
 ) -> list[Comparison]:
     """Each field with ``compare`` beside the value computed the group's way.
 
@@ -219,7 +230,9 @@ def compare_fields(
     answered (said in the comparison); reading(key): the group's value as they typed it,
     with its unit ("57 ms"), wherever a text quotes it (default: the number in SI units with
     the digits it has); ``whose``: the group's values as the texts name them, "your" on the
-    group's screen, "the group's" in the report an instructor reads."""
+    group's screen, "the group's" in the report an instructor reads; has(name): whether the
+    session has input ``name`` of :data:`~minseg_tui.lab.content.needs.INPUTS`, for what a
+    value not computed waits for (default: not said)."""
 
     def typed(key: str, si: float, unit: str) -> str:
         said = reading(key) if reading is not None else None
@@ -295,7 +308,7 @@ def compare_fields(
                 lsq = st.J
                 if ident is None:  # the run alone: J needs the table's k_v and f
                     computed, lsq, how, T_used = None, None, "", None
-                    verdict = J_WAITS
+                    verdict = j_waits(has, whose)
                 elif T_used is not None:
                     computed = inertia_from_time_constant(
                         T_used, ident.R, ident.f, ident.k_v, ident.k_a
@@ -336,6 +349,8 @@ def compare_fields(
                     why = "The least-squares value uses the K fitted over every rise."
                 else:
                     lsq = None
+                    if computed is None:  # the run alone gives K (the table gives none)
+                        computed = st.K * U_TASK15
                 w_used = own_w if own_w is not None else st.omega_ss
                 slip_5 = w_used * U_TASK15 / STEP_LEVEL
                 if (

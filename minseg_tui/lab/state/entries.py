@@ -17,6 +17,7 @@ from minseg_tui import quantities
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.answers import read_formula
 from minseg_tui.lab.content.expr import formula_fault, parse_formula
+from minseg_tui.lab.content.model_eq import ModelUnreadable, read_model
 from minseg_tui.lab.content.steps import FIELDS, Field
 from minseg_tui.quantities import EntryRefused, Parsed, lookup_unit, parse_quantity
 
@@ -220,6 +221,16 @@ def read_entry(fld: Field, text: str) -> Entry:
     """``text`` typed in field ``fld``, read: accepted with its value, unit, note and
     plausibility warnings, or refused with the one-line message (no time, source, history)."""
     if fld.kind == "text":
+        if fld.compare == "model" and text.strip():
+            # a model that cannot be read as an equation is refused, the text kept to mend
+            # (walk 9, D7: 'T=34ms K=1.93' was stored and graded wrong); one that is read
+            # but is no first-order model is an answer, judged wrong on Task 14
+            try:
+                read_model(text)
+            except ModelUnreadable as exc:
+                return Entry(fld.key, text, ok=False, message=str(exc))
+            except InputError:
+                pass
         return Entry(fld.key, text, ok=True)
     if not text.strip() and fld.optional:
         return Entry(fld.key, text, ok=True)

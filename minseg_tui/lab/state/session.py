@@ -845,6 +845,27 @@ class Session:
 
     # -- results -------------------------------------------------------------------------------
 
+    def has_input(self, name: str, row: TableRow | None = None) -> bool:
+        """Whether the session has input ``name`` of
+        :data:`~minseg_tui.lab.content.needs.INPUTS`: R, a complete row of the table, the
+        run in use, the group's own omega_ss in the steps, K, a T (theirs or the run's 63 %
+        reading), and ``row``'s own u_ss, omega_ss and i_ss."""
+        if name == "R":
+            return self.value("R") is not None
+        if name == "row":
+            return any(
+                x.u_ss is not None and x.omega_ss is not None and x.i_ss is not None
+                for x in self.table()
+            )
+        if name == "run":
+            return self.response_run() is not None
+        if name == "own.T":
+            st = self.results().step
+            return self.value(name) is not None or (st is not None and st.T_63 is not None)
+        if name.startswith("own."):
+            return self.value(name) is not None
+        return row is not None and getattr(row, name) is not None
+
     def results(self, kept: ResponseFigures | None = None) -> Results:
         """Tasks 6-15 from the current entries and the chosen run (cached until R, a table
         value or the run changes); the run's numbers of Tasks 11-13 are noted for the
@@ -977,7 +998,9 @@ class Session:
             return e.text if e and e.text.strip() else None
 
         res = self.results() if results is None else results
-        return compare_fields(fields, self.value, text, res, self.revealed(), self.reading, whose)
+        return compare_fields(
+            fields, self.value, text, res, self.revealed(), self.reading, whose, self.has_input
+        )
 
     def answered(self) -> set[str]:
         """The keys of the fields the group has answered (an accepted, non-empty entry)."""

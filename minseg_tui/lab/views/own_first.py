@@ -113,13 +113,22 @@ _TABLE_HOW: dict[str, str] = {
     "own.f": "median of the rows",
 }
 
-_NEEDS: dict[str, str] = {
-    "own.K": "needs the group's omega_ss in the steps",
-    "own.omega_5": "needs the group's K",
-    "own.J": "needs a T: the group's, or the 63 % reading",
-    "own.model": "needs a T: the group's, or the 63 % reading",
+_YOURS: dict[str, str] = {
+    "own.K": "K@yours",
+    "own.omega_5": "omega_5@yours",
+    "own.J": "J@yours",
+    "own.model": "model@yours",
 }
-"""Why the group's way has no value, by field."""
+"""The value worked out the group's way (:data:`~minseg_tui.lab.content.needs.NEEDS`) of
+each field whose group's way may wait for another of the group's values."""
+
+
+def _yours_waits(session: Session, key: str) -> str:
+    """Why the group's way of field ``key`` has no value, from the one table of inputs:
+    'needs the group's K (Task 11)'; 'not computed' when it names nothing."""
+    name = _YOURS.get(key)
+    return (needs(waits_for(session, name), GROUPS) if name else "") or "not computed"
+
 
 _READ_OFF = "read off the run: nothing to compute"
 """The group's way of omega_ss in the steps (a reading, not a computation)."""
@@ -366,7 +375,10 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
             return f"{q(st.T, unit)} ({_interval(st.T_ci, st.T_determined, unit)})"
         if key == "own.J":
             if not math.isfinite(st.J):
-                return "not computed: J needs R, k_v and f from the table of Tasks 2-9"
+                why = needs(waits_for(session, "J"), GROUPS)
+                return "not computed: " + (
+                    why or "J needs R, k_v and f from the table of Tasks 2-9"
+                )
             return f"{q(st.J, unit)} (from the least-squares T)"
         if key == "own.omega_5":
             w5 = (
@@ -402,7 +414,7 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
             elif c.right is None and c.verdict:
                 mine, against = f"not computed: {c.verdict}", ""
             else:
-                mine, against = _NEEDS.get(c.key, "not computed"), " (against the program's value)"
+                mine, against = _yours_waits(session, c.key), " (against the program's value)"
             why = c.why if c.how and c.least_squares is not None else ""
             out.append(
                 OwnRow(
@@ -446,7 +458,28 @@ def run_used(session: Session) -> str:
     return text + "."
 
 
+def run_changed(session: Session, before: str | None) -> str:
+    """One sentence for the group when the run Tasks 11-15 use is no longer ``before`` (the
+    run in use when Task 10 began a new one) while answers of Tasks 11-15 stand: they are
+    judged against the new run now, and how to go back to the run in use when they were
+    given (walk 9, D10: Tasks 12-14 turned from ✓ to ✗ and ! after F5, with no word of
+    why); '' otherwise."""
+    run = session.response_run()
+    if before is None or run is None or run.name == before:
+        return ""
+    answered = [TASK[k] for k in lab_compare.ANSWERED_FIRST if k in session.answered()]
+    if not answered:
+        return ""
+    return (
+        f"Tasks 11-15 now use run {run.name}, not {before}: your answers ("
+        + ", ".join(answered)
+        + f") are judged against {run.name} now; Ctrl+P 'Use run {before}' goes back to the "
+        "run in use when you gave them"
+    )
+
+
 __all__ = [
+    "GROUPS",
     "NOT_ANSWERED",
     "STEP_HEADER",
     "TABLE_HEADER",
@@ -454,6 +487,7 @@ __all__ = [
     "TOLD",
     "OwnRow",
     "policy_in_force",
+    "run_changed",
     "run_used",
     "shown",
     "step_rows",

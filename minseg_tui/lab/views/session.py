@@ -588,22 +588,11 @@ def _derived_cell(
     )
 
 
-def _has(session: Session, rows: Sequence[TableRow], row: TableRow | None) -> Callable[[str], bool]:
-    """Which inputs of :data:`~minseg_tui.lab.content.needs.INPUTS` the session has: R, a
-    complete row among ``rows``, the run in use, and ``row``'s own u_ss, omega_ss, i_ss."""
-
-    def has(name: str) -> bool:
-        if name == "R":
-            return session.value("R") is not None
-        if name == "row":
-            return any(
-                x.u_ss is not None and x.omega_ss is not None and x.i_ss is not None for x in rows
-            )
-        if name == "run":
-            return session.response_run() is not None
-        return row is not None and getattr(row, name) is not None
-
-    return has
+def _has(session: Session, row: TableRow | None) -> Callable[[str], bool]:
+    """Which inputs of :data:`~minseg_tui.lab.content.needs.INPUTS` the session has
+    (:meth:`~minseg_tui.lab.state.session.Session.has_input`), ``row``'s own readings
+    among them."""
+    return lambda name: session.has_input(name, row)
 
 
 _DERIVED: dict[str, str] = {
@@ -628,7 +617,7 @@ def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[
     name = _DERIVED.get(key, key)
     if name not in lab_needs.NEEDS:
         return ()
-    return lab_needs.missing(name, _has(session, session.table(), row))
+    return lab_needs.missing(name, _has(session, row))
 
 
 def _table_row(
@@ -666,7 +655,7 @@ def table(session: Session) -> TableView:
     ident = res.identification
     k_a = None if ident is None else ident.k_a
     table_rows = session.table()
-    rows = tuple(_table_row(r, R, k_a, _has(session, table_rows, r)) for r in table_rows)
+    rows = tuple(_table_row(r, R, k_a, _has(session, r)) for r in table_rows)
     results: tuple[tuple[str, Cell], ...] = ()
     waiting = ""
     if ident is not None:
@@ -676,7 +665,7 @@ def table(session: Session) -> TableView:
             ("f", Cell(_fmt_milli(ident.f, "N m s/rad"), _FORMULAS["f"])),
         )
     else:
-        miss = lab_needs.missing("f", _has(session, table_rows, None))
+        miss = lab_needs.missing("f", _has(session, None))
         waiting = f"k_v, k_a and f (the medians): {lab_needs.needs(miss)}" if miss else ""
     # the T findings name T, Task 12's answer: kept back until the group has given theirs
     shown = [

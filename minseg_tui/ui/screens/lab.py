@@ -480,7 +480,7 @@ class StepList(OptionList):
         if self.highlighted is None or self.highlighted > 0:
             super().action_cursor_up()
 
-    def on_key(self, event: events.Key) -> None:
+    async def on_key(self, event: events.Key) -> None:
         screen = self.screen
         if isinstance(screen, LabScreen) and event.is_printable and event.character:
             if screen.pane.typing_row() is not None and not screen.readonly:
@@ -491,12 +491,13 @@ class StepList(OptionList):
         focused = screen.focused
         if isinstance(screen, LabScreen) and focused is not None and focused is not self:
             # a key the app sent here before a character ahead of it moved the focus into
-            # the entry: it goes where the focus is now, as the form passes on a key that
-            # came after the focus left it. '53' Enter in one burst after Shift+Tab put 53
-            # into R, and the list took the Enter (walk 8, D6): R kept '5,3'.
-            event.stop()
-            event.prevent_default()
-            focused.post_message(events.Key(event.key, event.character))
+            # the step: the step's form takes it now, by a plain call in this queue, as it
+            # takes the characters ('53' Enter in one burst after Shift+Tab put 53 into R,
+            # and the list took the Enter as its own; R kept '5,3': walk 8, D6). Focused
+            # elsewhere, the key goes on up to the app, which runs that widget's binding.
+            pane = screen.pane
+            if focused is pane or pane in focused.ancestors:
+                await pane.type_key(event)
 
 
 class StepCommands(Provider):

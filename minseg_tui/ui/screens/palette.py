@@ -1,8 +1,12 @@
-"""The command palette, closed once however many Enters it is handed."""
+"""The command palette, closed once however many Enters it is handed, and closed by Escape
+before the keys typed after it are read."""
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from textual import on
+from textual.binding import Binding, BindingType
 from textual.command import CommandPalette
 from textual.widgets import Input, OptionList
 
@@ -11,7 +15,17 @@ class Palette(CommandPalette):
     """Textual's palette, which closes itself on each Enter it is handed (the box's Enter, or
     the pick of a command in its list): two Enters in one burst ('Ctrl+P task 6 Enter ...
     Enter') closed the lab screen under it too and left an empty terminal. An Enter that
-    reaches it once it has closed is not for it."""
+    reaches it once it has closed is not for it.
+
+    Escape is bound with priority, so the app runs it the moment it reads the key: the keys
+    typed after it go to the screen under the palette. Bound as Textual's palette binds it,
+    the app handed Escape to the palette's search box, which passed it back up to the app's
+    queue behind the keys typed after it; those went into the search box, and closed with
+    it ('Ctrl+P xyzzy Esc 5,3 Enter' in one burst left R empty: walk 8)."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("escape", "escape", "Exit the command palette", show=False, priority=True)
+    ]
 
     @on(Input.Submitted)
     @on(OptionList.OptionSelected)

@@ -22,7 +22,7 @@ from textual.reactive import reactive
 from textual.strip import Strip
 from textual.style import Style as VisualStyle
 from textual.widget import Widget
-from textual.widgets import Label
+from textual.widgets import Input, Label
 from textual.widgets.input import Selection
 
 from minseg_tui.lab.content.steps import Field
@@ -1035,6 +1035,12 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     # -- keys ------------------------------------------------------------------------------
     async def on_key(self, event: events.Key) -> None:
         """Every key handed to the form, in the order typed (see the class)."""
+        await self.type_key(event)
+
+    async def type_key(self, event: events.Key) -> None:
+        """A key for the form, handled now: one the app handed the form, or one the list of
+        steps read after a key ahead of it moved the focus into the step (it calls this, a
+        plain call in its own queue, where the keys typed after it wait)."""
         if self.app.screen is not self.screen:
             await self._hand_over(event)
             return
@@ -1126,7 +1132,9 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         step that has the focus (a plot, a table: Tab moves on from it; a character it binds
         goes on to its binding, z or [ on the run log; any other character goes into the
         first empty entry, Space only mid-word), or handed to the form before a key ahead of
-        it moved the focus away (it goes where the focus is now)."""
+        it moved the focus away: a character goes into the entry as well, any other key
+        goes on up to the app, which runs the binding of the widget focused now (↓ or Enter
+        on the list of steps), as Textual runs a key's binding. No key is posted again."""
         inside = focused is not None and self in focused.ancestors
         key = event.key
         if inside and key in ("tab", "shift+tab"):
@@ -1139,24 +1147,29 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             if self.typing_row() is not None and not self.readonly:
                 self._own(event)
                 self.take(event.character)
-            return
-        if not inside and focused is not None:
-            self._own(event)
-            focused.post_message(events.Key(key, event.character))
 
     async def _hand_over(self, event: events.Key) -> None:
         """A key handed to the form before a key ahead of it opened another screen over the
         lab (Ctrl+P, F1): it goes to that screen, as the app would have sent it there had the
-        screen opened at once (a priority binding of it runs, any other key goes to its
-        focused widget). 'Ctrl+P Task 5' in one burst put 'Task 5' into the entry under the
-        palette (walk 7)."""
-        self._own(event)
+        screen opened at once. A priority binding of it runs; a character goes into the text
+        box focused there, as the box puts a character it reads (replacing what it holds
+        selected); any other key goes on up to the app, which runs the binding of the widget
+        focused there (Enter, Backspace, ↓ in the palette), as Textual runs a key's binding.
+        'Ctrl+P Task 5' in one burst put 'Task 5' into the entry under the palette (walk
+        7). No key is posted again."""
         screen = self.app.screen
         bound = screen.active_bindings.get(event.key)
         if bound is not None and bound.enabled and bound.binding.priority:
+            self._own(event)
             await self.app.run_action(bound.binding.action, bound.node)
             return
-        (screen.focused or screen).post_message(events.Key(event.key, event.character))
+        box = screen.focused
+        if event.is_printable and event.character and isinstance(box, Input):
+            self._own(event)
+            if box.selection.is_empty:
+                box.insert_text_at_cursor(event.character)
+            else:
+                box.replace(event.character, *box.selection)
 
     def _binds(self, focused: Widget, key: str) -> bool:
         """A widget of the step from ``focused`` up to the form (not the form) binds ``key``
