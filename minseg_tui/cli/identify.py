@@ -10,7 +10,8 @@ import textwrap
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_run_log, read_table
-from minseg_tui.model.identify import Identification, identify, u_ss_words
+from minseg_tui.model.identify import U_TASK15, Identification, identify, u_ss_words
+from minseg_tui.model.identify.observations import FRICTION_APART
 from minseg_tui.quantities import (
     F_UNIT,
     NO_WIDTH,
@@ -82,6 +83,24 @@ def run(args: argparse.Namespace) -> int:
 def _wrap(text: str) -> list[str]:
     """A long sentence as indented lines of at most 96 characters."""
     return textwrap.wrap(text, width=96, initial_indent="   ", subsequent_indent="   ")
+
+
+def _task15(result: Identification) -> list[str]:
+    """Task 15's line, and when the fit found dry friction that changes the answer, the model
+    with the friction and its speed beside the lab's K u_A (the observation says why)."""
+    s, lab, friction = result.step, result.omega_at_5V, result.omega_at_5V_with_friction
+    assert s is not None and lab is not None
+    line = f"At u_A = {U_TASK15:g} V (Task 15): omega = {format_number(lab)} rad/s"
+    equation = s.friction_equation(format_number, "w")
+    if friction is None or equation is None or abs(friction - lab) <= FRICTION_APART * lab:
+        return [line]
+    return [
+        *_wrap(
+            f"(the lab's model has no dry friction; with the friction the fit found: {equation} "
+            "while the wheel turns)"
+        ),
+        f"{line} by the lab's model, {format_number(friction)} rad/s with the friction",
+    ]
 
 
 def render(result: Identification) -> str:
@@ -157,7 +176,7 @@ def render(result: Identification) -> str:
             f"J = T (R f + k_v k_a) / R = {format_number(s.J)} kg m^2 (Task 13)",
             "",
             f"Model (Task 14): {s.model_equation(format_number, 'w')}",
-            f"At u_A = 5 V (Task 15): omega = {format_number(s.K * 5.0)} rad/s",
+            *_task15(result),
         ]
     out += ["", "What the numbers show:"]
     if result.observations:

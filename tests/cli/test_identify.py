@@ -97,12 +97,17 @@ def test_json_is_one_object_with_the_contract(files, capsys):
     out = capsys.readouterr().out
     assert code == 0 and out.count("\n") == 1
     j = json.loads(out)
-    assert set(j) == {"R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"}
+    assert set(j) == {"R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"} | {
+        "omega_at_5V_with_friction"
+    }
     added = {"K_ci", "T_63_model", "T_63_note", "method", "shift", "u_c"}
     added |= {"dead_time", "T_determined", "T_on_bound", "shift_on_bound"}
     added |= {"glitch_rows", "left_out_rows"}
     assert set(j["step"]) == {"K", "T", "T_63", "T_ci", "J", "omega_ss"} | added
-    assert set(j["model"]) == {"T", "K", "dead_time"}
+    assert set(j["model"]) == {"T", "K", "dead_time", "u_c", "K_above_u_c"}
+    # a frictionless plant: no dry friction found, Task 15 has one answer
+    assert j["model"]["u_c"] == 0 and j["model"]["K_above_u_c"] is None
+    assert j["omega_at_5V_with_friction"] is None
     assert [set(r) for r in j["rows"]] == [{"u_req", "u_ss", "omega_ss", "i_ss", "k_v", "f"}] * 3
     assert j["rows"][2]["i_ss"] == 40.0
     assert j["R"] == 5.0

@@ -71,15 +71,18 @@ def make(
     stamped: bool = False,
     periods: int = 4,
     rest_rows: int | None = None,
+    K: float | None = None,
 ) -> Generated:
     """One seeded log: rest, then four periods of a rising step to 2, 3 or 4 V (u_req) and back
     to 0 V, each half period 6 T long (at least 8 samples). ``delay``: dead time (s);
     ``glitch``: that many switch-on glitch rows at the start (speeds above the steady speed);
     ``stall``: one logging stall of 3-6 samples during a rise, after which the encoder value is
-    read 0.3-0.8 sample periods before the row's timestamp; ``stamped``: add t_us."""
+    read 0.3-0.8 sample periods before the row's timestamp; ``stamped``: add t_us; ``K``: the
+    gain (rad/s per V) in place of the drawn one (the rest of the draw unchanged)."""
     rng = np.random.default_rng(seed)
     T = float(math.exp(rng.uniform(math.log(T_range[0]), math.log(T_range[1]))))
-    K = float(rng.uniform(8.0, 16.0))
+    drawn = float(rng.uniform(8.0, 16.0))
+    K = drawn if K is None else K
     half = max(8, int(math.ceil(6.0 * T / ts)))
     rest = max(8, half // 2) if rest_rows is None else rest_rows
     cmd = [np.zeros(rest)]

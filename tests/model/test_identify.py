@@ -251,7 +251,10 @@ def test_log_with_only_a_falling_step_is_refused():
 
 def test_json_shape(linear_result):
     j = linear_result.to_json()
-    assert list(j) == ["R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"]
+    assert list(j) == [
+        *("R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"),
+        "omega_at_5V_with_friction",
+    ]
     assert list(j["rows"][0]) == ["u_req", "u_ss", "omega_ss", "i_ss", "k_v", "f"]
     # the contract's fields first and unchanged, then the added ones
     assert list(j["step"]) == [
@@ -274,7 +277,7 @@ def test_json_shape(linear_result):
         "glitch_rows",
         "left_out_rows",
     ]
-    assert list(j["model"]) == ["T", "K", "dead_time"]
+    assert list(j["model"]) == ["T", "K", "dead_time", "u_c", "K_above_u_c"]
     assert j["rows"][0]["i_ss"] == pytest.approx(linear_table(MOTOR)[0].i_ss)  # mA as entered
     assert len(j["step"]["T_ci"]) == 2
     assert list(identify(TABLE, R).to_json()) == ["R", "rows", "k_v", "k_a", "f"]

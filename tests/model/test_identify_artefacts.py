@@ -73,6 +73,9 @@ def test_a_dead_time_is_fitted_named_and_in_the_model():
     assert "the sampling alone" not in s.T_63_note
     differs = [o.message for o in r.observations if o.code == "T_63_differs"]
     assert differs and "holds the dead time of 60" in differs[0]
+    # a clean first-order rise after its delay: the half-sample lag is the rest, no shape
+    assert "lags the true speed by half a sample" in differs[0]
+    assert "shape of the rise" not in differs[0] and "whole difference" in s.T_63_note
     assert "step_vs_table" not in codes(r)  # the table agrees with the log
 
 

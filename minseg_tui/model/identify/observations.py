@@ -52,9 +52,17 @@ def _row_name(index: int, r: Reading) -> str:
     return f"row {index + 1} (u_req {r.u_req:g} V{where})"
 
 
-def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) -> list[Observation]:
+LOG_AGREES: float = 0.3
+"""A row's omega_ss / u_ss this close (relative) to the run log's K says the row is in the
+log's unit, rad/s: it is not called rpm however fast the motor turns."""
+
+
+def table_observations(
+    rows: Sequence[Row], R: float, k_v: float, k_a: float, K_log: float | None = None
+) -> list[Observation]:
     """What the table shows: dry friction, a bad reading, currents in the wrong unit, u_ss and
-    u_req swapped."""
+    u_req swapped. ``K_log``: the run log's K (rad/s per V), when there is one: a row that
+    agrees with it within :data:`LOG_AGREES` is not said to be in rpm."""
     out: list[Observation] = []
     for i, row in enumerate(rows):
         r = row.reading
@@ -72,7 +80,12 @@ def table_observations(rows: Sequence[Row], R: float, k_v: float, k_a: float) ->
                     f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says the meter is probably measuring the wrong thing or is in the wrong mode.",
                 )
             )
-        if r.omega_ss / r.u_ss > RPM_GAIN and r.omega_ss * RPM / r.u_ss <= RPM_GAIN:
+        log_agrees = K_log is not None and abs(r.omega_ss / r.u_ss / K_log - 1) <= LOG_AGREES
+        if (
+            r.omega_ss / r.u_ss > RPM_GAIN
+            and r.omega_ss * RPM / r.u_ss <= RPM_GAIN
+            and not log_agrees
+        ):
             out.append(
                 Observation(
                     "omega_ss_units",
@@ -194,8 +207,8 @@ def response_observations(
     rows: the table; steps: the rises used; hows: how u_ss was found for each step;
     u_ss: the median u_ss (V); T: least-squares T (s); T_63: the 63 % reading (s); ts: sample
     period (s); skipped: rises not usable; dead_time: the model's dead time (s);
-    shape: when the rise has a shape one time constant does not follow (the steps' time
-    shift on its bound), the part of the reading the fitted model read the same way does not
+    shape: when the rise may have a shape one time constant does not follow (the steps' time
+    shift on its bound, or a dead time in the model and no logging stall read across), the part of the reading the fitted model read the same way does not
     give (s), else None; noise: the speed's scatter (rad/s) and how far it moves a reading of
     single samples (s), from :func:`~.identification.reading_noise`, or None: a shape within
     that sway is said to be the noise, not a shape one time constant does not follow.
@@ -271,6 +284,17 @@ def response_observations(
                     f"{format_percent(abs(T_63 / T - 1))}. "
                     + (
                         f"The reading counts from the logged step, so it holds the dead time of "
+                        f"{format_constant(dead_time, 's')} that T does not. Counted from the end of that dead time "
+                        f"it is {format_constant(T_63 - dead_time, 's')} where the fitted model read the "
+                        f"same way gives {format_constant(T_63 - shape - dead_time, 's')}: the "
+                        f"{format_signed(shape * 1e3, 3)} ms between them is the shape of the rise, which "
+                        "one time constant does not follow, not the sampling (the speed's scatter "
+                        f"moves the reading by only about {noise[1] * 1e3:.3g} ms). Read T with care."
+                        if dead_time > 0
+                        and shape is not None
+                        and noise is not None
+                        and abs(shape) > max(0.02 * T, 0.1 * abs(T_63 - T - dead_time), noise[1])
+                        else f"The reading counts from the logged step, so it holds the dead time of "
                         f"{format_constant(dead_time, 's')} that T does not; besides, the measured speed is the "
                         "mean over each sample interval and lags the true speed by half a sample."
                         if dead_time > 0
@@ -314,6 +338,42 @@ def response_observations(
             )
         )
     return observations
+
+
+FRICTION_APART: float = 0.005
+"""The lab's K u_A and the model with dry friction further apart than this (relative) at
+5 V: Task 15's answer is given both ways, with why."""
+
+
+def friction_observations(
+    K: float, u_ss: float, u_c: float, K_above_u_c: float | None, u_A: float
+) -> list[Observation]:
+    """Why Task 15's K u_A is not the speed the log's motor turns at ``u_A`` (V) when the fit
+    found dry friction: K (rad/s per V) = omega_ss / u_ss is read at the step's level u_ss (V)
+    and makes a line through zero; the fit's model is K_above_u_c (u_A - u_c) (rad/s per V,
+    V). Empty without dry friction or when the two agree within :data:`FRICTION_APART`."""
+    if K_above_u_c is None or not u_c > 0:
+        return []
+    lab = K * u_A
+    with_friction = K_above_u_c * (u_A - u_c) if u_A > u_c else 0.0
+    if not lab > 0 or abs(with_friction / lab - 1) <= FRICTION_APART:
+        return []
+    more = "more" if lab > with_friction else "less"
+    return [
+        Observation(
+            "friction_task15",
+            (
+                f"The fit found dry friction: its steady speed grows by {format_number(K_above_u_c, 4)} "
+                f"rad/s per volt above a breakaway voltage u_c = {format_number(u_c, 3)} V, a line "
+                "that does not pass through zero. K = omega_ss / u_ss "
+                f"({format_number(K, 4)} rad/s per V) is read at the step's {format_number(u_ss, 3)} V and "
+                "makes the speed proportional to u_A, as the lab's model (Task 14) has no friction. "
+                f"So at u_A = {u_A:g} V (Task 15) that model gives {format_number(lab, 4)} rad/s, "
+                f"{format_percent(abs(lab / with_friction - 1)) if with_friction > 0 else 'far'} {more} "
+                f"than the {format_number(with_friction, 4)} rad/s of the model with the friction."
+            ),
+        )
+    ]
 
 
 def _lines(log: RunLog, rows: Sequence[int]) -> str:

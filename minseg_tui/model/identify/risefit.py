@@ -203,6 +203,7 @@ def _fit(
     T_range = (T_MIN_SAMPLES * ts, T_MAX_RISES * max(longest, ts))
     d_max = DEAD_TIME_SHARE * shortest
     onset = _onset(log, windows)
+    rise_63 = _onset(log, windows, 1.0 - math.exp(-1.0))
     delays: tuple[float, ...] = ()
 
     def late_start(T: float) -> bool:
@@ -246,8 +247,15 @@ def _fit(
     else:
         T_near = tuple(f * prior.T for f in near)
         rises_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep, (prior.shift,), T_near)
+    # the rise's own time from its onset to 63 %: where the search for T with a dead time also
+    # starts (the T found without one may have run to its bound chasing a late response, and
+    # the factors of it then miss the rise: micromouse-n20-duty255 cut at 1.5 s went to T =
+    # 0.25 ms from starts of 0.7-10 s)
+    T_read = (
+        (rise_63 - onset,) if rise_63 is not None and onset is not None and rise_63 > onset else ()
+    )
     if prior is None and late_start(rises_fit.T):
-        T_starts = tuple(f * rises_fit.T for f in WIDE_T_FACTORS)
+        T_starts = (*(f * rises_fit.T for f in WIDE_T_FACTORS), *T_read)
         late = fit_windows(
             t, theta, windows, ts, (-bound, d_max), T_range, keep, (0.0, *delays), T_starts
         )
@@ -274,7 +282,10 @@ def _fit(
         whole = whole_fit(reach, prior.T, shift_starts=(prior.shift,), T_factors=near)
     if prior is None and whole is not None and late_start(whole.T):
         late_w = whole_fit(
-            (-bound, d_max), whole.T, shift_starts=(0.0, *delays), T_factors=WIDE_T_FACTORS
+            (-bound, d_max),
+            whole.T,
+            shift_starts=(0.0, *delays),
+            T_factors=(*WIDE_T_FACTORS, *(T / whole.T for T in T_read)),
         )
         if late_w is not None and dead(
             late_w.d, whole.rss, late_w.rss, late_w.n_used, late_w.n_params
@@ -351,10 +362,11 @@ def _levels(w: FloatArray, win: RiseWindow) -> tuple[float, float]:
     return float(np.median(w[win.pre_from : k + 1])), float(np.median(w[tail : win.post_last + 1]))
 
 
-def _onset(log: RunLog, windows: list[RiseWindow]) -> float | None:
+def _onset(log: RunLog, windows: list[RiseWindow], share_of: float = STILL_SHARE) -> float | None:
     """Where the wheel first answers the rises: the median over the steps of the time
     (s) from the step to the first row whose speed (a 3-row running median) has come
-    :data:`STILL_SHARE` of the way to its new level; None when no step shows it."""
+    ``share_of`` of the way to its new level (default :data:`STILL_SHARE`); None when no
+    step shows it."""
     w = np.asarray(log.omega, dtype=float)
     smooth = _smooth(w)
     t = log.board_time()
@@ -365,7 +377,7 @@ def _onset(log: RunLog, windows: list[RiseWindow]) -> float | None:
         if w1 <= w0:
             continue
         share = (smooth[k + 1 : win.post_last + 1] - w0) / (w1 - w0)
-        hit = np.flatnonzero(share > STILL_SHARE)
+        hit = np.flatnonzero(share > share_of)
         if hit.size:
             found.append(float(t[k + 1 + int(hit[0])] - t[k]))
     return float(np.median(found)) if found else None
