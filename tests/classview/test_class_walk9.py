@@ -93,3 +93,17 @@ async def test_the_step_column_is_the_furthest_step_reached_not_the_one_left_on(
         assert cells[2] == "Summary", cells
         detail = " ".join(str(screen.query_one("#class-group", Static).render()).split())
         assert "reached Summary and reflections, now at Task 4" in detail, detail
+
+
+def test_the_class_view_quotes_readings_with_the_digits_typed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+):
+    """D9: walk 9's second group typed 296 for i_ss and 2.6 for u_ss at 2.5 V; `minseg-tui
+    class` said "296.0 mA" and "2.600 V", digits the group never read off the meter (the
+    report wrote them as typed)."""
+    root = tmp_path / "walk9-sessions"
+    group(root, ["Ada L", "Alan T"], seed=2, rows={2.5: ("2.6", "3.823", "296")})
+    assert main(["class", "--sessions", str(root)]) == 0
+    out = capsys.readouterr().out
+    assert "i_ss at 2.5 V = 296 mA is above 100 mA" in out, out
+    assert "u_ss at 2.5 V = 2.6 V is above the requested 2.5 V" in out, out

@@ -415,7 +415,7 @@ def slip_list(session: Session) -> list[Slip]:
         if i is not None and i > I_SS_MAX:
             out.append(
                 Slip(
-                    f"i_ss at {lv:g} V = {format_number(i * 1e3)} mA is above 100 mA: the manual says "
+                    f"i_ss at {lv:g} V = {format_reading(i, 'mA')} is above 100 mA: the manual says "
                     "the wrong thing is measured or the meter is in the wrong mode (expect "
                     "20-50 mA).",
                     FROM_TABLE,
@@ -424,7 +424,7 @@ def slip_list(session: Session) -> list[Slip]:
         elif i is not None and 0 < i < I_SS_AMPERES:
             out.append(
                 Slip(
-                    f"i_ss at {lv:g} V = {format_number(i * 1e3)} mA looks like amperes typed into the "
+                    f"i_ss at {lv:g} V = {format_reading(i, 'mA')} looks like amperes typed into the "
                     f"mA column ({format_number(i * 1e6)} mA?), and k_v and f follow from it.",
                     FROM_TABLE,
                 )
@@ -442,7 +442,7 @@ def slip_list(session: Session) -> list[Slip]:
         if u is not None and u > lv:
             out.append(
                 Slip(
-                    f"u_ss at {lv:g} V = {format_number(u)} V is above the requested {lv:g} V: the "
+                    f"u_ss at {lv:g} V = {format_reading(u, 'V')} is above the requested {lv:g} V: the "
                     "driver only loses voltage, so the meter or the request was wrong.",
                     (*FROM_TABLE, "K"),  # K divides by the table's u_ss
                 )
