@@ -394,7 +394,13 @@ async def test_the_palette_offers_a_step_panel_action_only_on_its_steps(quiet):
             assert {"Stop motor", "Export report"} <= titles
         await pilot.press("ctrl+p")  # the palette asks about the screen under it
         await pilot.press(*"Capture")
-        await settle(pilot)
+        # the search is a worker's: wait for its list (a match, or the line saying none does)
+        await settle(
+            pilot,
+            lambda: any(
+                h.option_count for h in app.screen.query("CommandList").results(OptionList)
+            ),
+        )
         hits = app.screen.query_one("CommandList", OptionList)
         prompts = [str(hits.get_option_at_index(k).prompt) for k in range(hits.option_count)]
         assert not any("Capture omega_ss" in p for p in prompts)

@@ -160,7 +160,7 @@ async def test_the_palette_lists_keys_once_and_it_opens_f1s_list(quiet):
         await start(pilot)
         await pilot.press("ctrl+p")
         await pilot.press(*"keys")
-        await settle(pilot, lambda: bool(app.screen.query(CommandList)))
+        await settle(pilot, lambda: any(h.option_count for h in app.screen.query(CommandList)))
         hits = app.screen.query_one(CommandList)
         titles = [
             str(hits.get_option_at_index(k).prompt).split("\n")[0] for k in range(hits.option_count)

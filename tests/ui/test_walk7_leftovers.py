@@ -114,8 +114,12 @@ async def test_a_resumed_task_10_plots_the_run_in_use_before_its_fits_are_made(q
 
 
 def _palette_lines(app) -> list[str]:
-    """The palette's list, one line per option (its prompt, plain)."""
-    options = app.screen.query_one(CommandList)
+    """The palette's list, one line per option (its prompt, plain; none while the palette
+    is not composed yet)."""
+    found = app.screen.query(CommandList)
+    if not found:
+        return []
+    options = found.first()
     return [
         " ".join(str(options.get_option_at_index(i).prompt).split())
         for i in range(options.option_count)
@@ -132,12 +136,12 @@ async def test_the_palette_says_when_no_command_matches(quiet):
         await pilot.press("ctrl+p")
         await settle(pilot, lambda: isinstance(app.screen, CommandPalette))
         await pilot.press(*"unplug")
-        await settle(pilot)
+        await settle(pilot, lambda: bool(_palette_lines(app)))  # the search is a worker's
         lines = _palette_lines(app)
         assert lines and lines[0].startswith(f"{NO_MATCH} 'unplug'"), lines
         assert len(lines) == 1
         await pilot.press(*["backspace"] * 6, *"board")
-        await settle(pilot)
+        await settle(pilot, lambda: any("Board" in line for line in _palette_lines(app)))
         lines = _palette_lines(app)
         assert any("Board check" in line for line in lines), lines
         assert not any(NO_MATCH in line for line in lines), lines
@@ -158,7 +162,7 @@ async def test_the_palette_corrects_a_misspelt_name(quiet, tmp_path):
         await pilot.press("ctrl+p")
         await settle(pilot, lambda: isinstance(app.screen, CommandPalette))
         await pilot.press(*"names")
-        await settle(pilot)
+        await settle(pilot, lambda: bool(_palette_lines(app)))  # the search is a worker's
         assert _palette_lines(app)[0].startswith("Correct the group's names")
         await pilot.press("enter")
         await settle(pilot, lambda: isinstance(app.screen, NamesScreen))
