@@ -141,7 +141,9 @@ def test_percent_answer():
     assert check_answer(chk, 0.63, {}).status == "right"
     assert check_answer(chk, 0.60, {}).status == "wrong"
     fb = check_answer(chk, 0.00632, {})  # "0.632" typed in a % field
-    assert fb.status == "wrong" and "63 %" in fb.message
+    assert fb.status == "wrong" and "reads as 0.632 %: did you mean 63.2 %?" in fb.message
+    fb = check_answer(chk, 0.005, {})  # "0.5": its own value, never the answer (walk 9, D1)
+    assert fb.status == "wrong" and "reads as 0.5 %: did you mean 50 %?" in fb.message
     assert "37 %" in check_answer(chk, 0.37, {}).message
 
 

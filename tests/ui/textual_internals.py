@@ -6,13 +6,17 @@ venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
 Seven names of Textual's internals, in three reaches:
 
-1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``. The exact wait Pilot itself uses
-   after a key (every node handles what was queued on it); it also returns at once when
-   the app has failed (``App._exception_event``), which no public API shows. Pilot's
-   public ``pause()`` adds a forced layout and, with no delay, the CPU-idle guess below.
+1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``, done again here, step for step,
+   and put in its place. The exact wait Pilot itself uses after a key (every node handles
+   what was queued on it); it also returns at once when the app has failed
+   (``App._exception_event``), which no public API shows. Pilot's public ``pause()`` adds a
+   forced layout and, with no delay, the CPU-idle guess below. Pilot's own queues a new
+   closure on every node each time, and Textual works out each closure's signature
+   (``inspect.signature``) before it calls it; the callback here states its own.
 2. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
    ``textual.app`` and ``textual.pilot``: ``Pilot.press`` and ``Pilot.pause()`` call it
-   after every key, and App.run_test has no option to wait otherwise.
+   after every key, and App.run_test has no option to wait otherwise; and
+   ``Pilot._wait_for_screen`` with :func:`wait_for_screen`.
 3. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
    the replacement the screen's ``_compositor._dirty_regions``, ``_dirty_widgets`` and
    ``App._update_mouse_over``. No public switch turns painting off in a headless app.
@@ -31,7 +35,10 @@ through ``run_test(message_hook=...)`` and the ``Toast`` widgets queried by type
 
 from __future__ import annotations
 
+import asyncio
+import inspect
 import unicodedata
+from asyncio import FIRST_COMPLETED
 from collections.abc import Awaitable, Callable
 from typing import Any
 
@@ -41,7 +48,7 @@ import textual.pilot
 from textual.app import App
 from textual.keys import KEY_NAME_REPLACEMENTS, key_to_character
 from textual.message_pump import MessagePump
-from textual.pilot import Pilot
+from textual.pilot import Pilot, WaitForScreenTimeout
 from textual.screen import Screen
 from textual.widgets import Input
 
@@ -56,19 +63,66 @@ def running_app() -> App[object] | None:
         return None
 
 
-async def wait_for_screen(pilot: Pilot[object]) -> None:
+class _Countdown:
+    """The nodes yet to reach a :func:`wait_for_screen` callback (the countdown itself, called
+    on each node); ``zero`` is set when none is left. Its ``__signature__`` (Python's own
+    protocol, read first by ``inspect.signature``) says at once that it takes no argument:
+    Textual reads the signature of every callback before it calls it, and works out that of
+    a function or a bound method each time (``call_later`` wraps it in a new partial)."""
+
+    __signature__ = inspect.Signature()
+
+    def __init__(self) -> None:
+        self.count = 0
+        self.zero = asyncio.Event()
+
+    def __call__(self) -> None:
+        self.count -= 1
+        if self.count == 0:
+            self.zero.set()
+
+
+async def wait_for_screen(pilot: Pilot[object], timeout: float = 30.0) -> bool:
     """Wait until the app and every node of its screen have handled what was queued on them
-    when this began (a handler under way included)."""
-    await pilot._wait_for_screen()
+    when this began (a handler under way included): a callback queued on each of them, then
+    wait until all have run, or the app has failed. As ``Pilot._wait_for_screen`` of Textual
+    8.2 does, line for line, with a bound method for the callback. True: all of them ran;
+    raises Textual's ``WaitForScreenTimeout`` after ``timeout`` s (a hang guard)."""
+    app = pilot.app
+    try:
+        screen = app.screen
+    except Exception:
+        return False
+    countdown = _Countdown()
+    for node in [app, *screen.walk_children(with_self=True)]:
+        if node.call_later(countdown):
+            countdown.count += 1
+    if countdown.count:
+        waits = [
+            asyncio.create_task(countdown.zero.wait()),
+            asyncio.create_task(app._exception_event.wait()),
+        ]
+        _, pending = await asyncio.wait(waits, timeout=timeout, return_when=FIRST_COMPLETED)
+        for task in pending:
+            task.cancel()
+        if len(pending) == len(waits):
+            raise WaitForScreenTimeout(
+                "Timed out while waiting for widgets to process pending messages."
+            )
+        if countdown.count > 0:
+            return False
+    return True
 
 
 def make_waits_exact(
     monkeypatch: pytest.MonkeyPatch, wait: Callable[[float, float], Awaitable[None]]
 ) -> None:
     """Pilot's waits after a key and in ``pause()`` become ``wait`` (which takes the arguments
-    of Textual's ``wait_for_idle``: min and max sleep, s)."""
+    of Textual's ``wait_for_idle``: min and max sleep, s), and its wait for the screen
+    :func:`wait_for_screen`."""
     monkeypatch.setattr(textual.app, "wait_for_idle", wait)
     monkeypatch.setattr(textual.pilot, "wait_for_idle", wait)
+    monkeypatch.setattr(Pilot, "_wait_for_screen", wait_for_screen)
 
 
 _compositor_refresh = Screen._compositor_refresh

@@ -87,6 +87,16 @@ def check_answer(chk: Check, answer: object, entries: Mapping[str, object]) -> F
         said = f"{chk.holds}: {chk.explain}" if chk.explain else chk.holds
         grader = said.replace(CONSISTENT, CONSISTENT_GRADER) if chk.holds == CONSISTENT else ""
         return Feedback(chk.key, "right", said, grader)
+    if fld.unit == "%" and isinstance(answer, float) and 0 < abs(answer) < 0.01:
+        # a share typed as a fraction (0.5 for 50 %): said with the group's own number,
+        # never the right one (walk 9, D1: every fraction got "0.63 %: type 63 %")
+        typed = answer * 100
+        return Feedback(
+            chk.key,
+            "wrong",
+            f"that reads as {typed:.4g} %: did you mean {typed * 100:.4g} %?",
+            f"typed as a fraction ({typed:.4g} %)",
+        )
     for wrong, message in chk.mistakes:
         if _same(answer, wrong, fld.names, env, chk.rel_tol, chk.abs_tol):
             return Feedback(chk.key, "wrong", message)

@@ -251,10 +251,7 @@ _PREPARATION: tuple[Step, ...] = (
                 "prep5.percent",
                 "1 - exp(-1)",
                 abs_tol=0.01,
-                mistakes=(
-                    ("exp(-1)", "37 % is what is still missing at t = T"),
-                    ("(1 - exp(-1))/100", "that reads as 0.63 %: type the percentage, 63 %"),
-                ),
+                mistakes=(("exp(-1)", "37 % is what is still missing at t = T"),),
                 explain="63 %: the output has covered 1 - e^-1 of its change after one T",
             ),
         ),

@@ -122,7 +122,7 @@ from minseg_tui.lab.state.shown import PolicyRecord, Shown
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import RunLog
-from minseg_tui.quantities import format_number, format_reading, format_typed, shown_unit
+from minseg_tui.quantities import format_number, format_reading, shown_unit
 
 Clock = Callable[[], datetime]
 
@@ -800,7 +800,8 @@ class Session:
             raise KeyError(key)
         cap = capture(t, omega, window, velocity)
         self._captures[key] = cap
-        return self.enter(key, format_typed(cap.omega_ss), source="capture")
+        # a measured value keeps its digits: 5.800, not "5.8" (walk 9, D8)
+        return self.enter(key, format_number(cap.omega_ss), source="capture")
 
     def capture_of(self, level: float) -> Capture | None:
         """The capture behind omega_ss at ``level``, or None if it was typed or not taken."""

@@ -101,6 +101,7 @@ def _to_json(g: Group) -> dict[str, object]:
         "members": list(g.members),
         "date": g.date,
         "step": g.step,
+        "at": g.at,
         "values": {
             k: v if v is not None and math.isfinite(v) else None for k, v in g.values.items()
         },
@@ -145,6 +146,7 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
         members=_texts(d["members"]),
         date=str(d["date"]),
         step=str(d["step"]),
+        at=str(d.get("at", "")),
         values={str(k): (None if v is None else float(v)) for k, v in values.items()},
         cause=str(d["cause"]),
         cause_code=str(d["cause_code"]),

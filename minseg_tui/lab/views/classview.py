@@ -217,8 +217,8 @@ class Own:
 class Group:
     """One row of the class view.
 
-    ``id`` is the session folder's name; ``step`` the name of the step the group is at
-    ("Task 12"); ``values`` the numbers of :data:`QUANTITIES` by key (SI, None when not
+    ``id`` is the session folder's name; ``step`` the name of the furthest step the group
+    reached ("Task 12", :func:`reached`), ``at`` that of the step it is on; ``values`` the numbers of :data:`QUANTITIES` by key (SI, None when not
     computed); ``cause`` the model check's cause in words ('' when it has not run, "none"
     when the first-order model explains the log); ``own`` the group's own values against
     the computed ones; ``own_rows`` the same values as the session's report words them
@@ -236,6 +236,7 @@ class Group:
     members: tuple[str, ...] = ()
     date: str = ""
     step: str = ""
+    at: str = ""
     values: dict[str, float | None] = field(default_factory=dict)
     cause: str = ""
     cause_code: str = ""
@@ -261,6 +262,7 @@ class Group:
             "members": list(self.members),
             "date": self.date,
             "step": self.step,
+            "at": self.at,
         }
         out.update({q.key: self.value(q.key) for q in QUANTITIES})
         out["cause"] = self.cause
@@ -324,6 +326,17 @@ class ClassView:
             },
             "threshold": THRESHOLD,
         }
+
+
+def reached(session: Session) -> str:
+    """The id of the furthest step the group got to: the last in the lab's order with
+    anything entered or recorded, or the one it is on if that comes later. A group that went
+    back to Task 4 after the summary was shown as "at Task 4" (walk 9, D6)."""
+    ids = [st.id for st in lab_steps.STEPS]
+    here = session.current_step
+    got = [k for k, i in enumerate(ids) if session.step_status(i) not in ("todo", "info")]
+    k = max([ids.index(here) if here in ids else -1, *got])
+    return ids[k] if k >= 0 else here
 
 
 def step_name(step_id: str) -> str:
@@ -402,7 +415,7 @@ def slip_list(session: Session) -> list[Slip]:
         if i is not None and i > I_SS_MAX:
             out.append(
                 Slip(
-                    f"i_ss at {lv:g} V = {format_number(i * 1e3)} mA is above 100 mA: the manual says "
+                    f"i_ss at {lv:g} V = {format_reading(i, 'mA')} is above 100 mA: the manual says "
                     "the wrong thing is measured or the meter is in the wrong mode (expect "
                     "20-50 mA).",
                     FROM_TABLE,
@@ -411,7 +424,7 @@ def slip_list(session: Session) -> list[Slip]:
         elif i is not None and 0 < i < I_SS_AMPERES:
             out.append(
                 Slip(
-                    f"i_ss at {lv:g} V = {format_number(i * 1e3)} mA looks like amperes typed into the "
+                    f"i_ss at {lv:g} V = {format_reading(i, 'mA')} looks like amperes typed into the "
                     f"mA column ({format_number(i * 1e6)} mA?), and k_v and f follow from it.",
                     FROM_TABLE,
                 )
@@ -429,7 +442,7 @@ def slip_list(session: Session) -> list[Slip]:
         if u is not None and u > lv:
             out.append(
                 Slip(
-                    f"u_ss at {lv:g} V = {format_number(u)} V is above the requested {lv:g} V: the "
+                    f"u_ss at {lv:g} V = {format_reading(u, 'V')} is above the requested {lv:g} V: the "
                     "driver only loses voltage, so the meter or the request was wrong.",
                     (*FROM_TABLE, "K"),  # K divides by the table's u_ss
                 )
@@ -582,7 +595,8 @@ def _row(folder: Path, session: Session) -> Group:
         folder=folder,
         members=tuple(session.members),
         date=session.date,
-        step=step_name(session.current_step),
+        step=step_name(reached(session)),
+        at=step_name(session.current_step),
         values=values,
         cause=cause,
         cause_code=code,

@@ -47,8 +47,9 @@ class ReportPanel(Static):
     def _text(self) -> str:
         config = getattr(self.app, "config", None)  # the lab app's (the sessions folder)
         sessions = getattr(config, "sessions", None)
-        folder, names = written_in(self.exported, Path(sessions) if sessions else None)
-        where = f" in the session folder {folder} (under the sessions folder)" if folder else ""
+        root = Path(sessions) if sessions else None
+        folder, names = written_in(self.exported, root)
+        where = f" in {(root.resolve() / folder).as_posix()}" if folder and root else ""
         return "F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV." + (
             f"\nwritten{where}:\n" + "\n".join(f"  {p}" for p in names) if names else ""
         )

@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from rich.cells import cell_len
 from rich.text import Text
 from textual import on, work
 from textual.app import ComposeResult
@@ -61,7 +62,7 @@ def _quantity(key: str) -> classview.Quantity:
 
 
 def _step(g: Group) -> str:
-    """The step the group is at, as the lab's list of steps names it ("Prep 7", "Summary"),
+    """The furthest step the group reached, as the lab's list of steps names it ("Prep 7", "Summary"),
     with "run cut" when the run Tasks 11-15 use was interrupted (the detail below says how)."""
     step = g.step.replace("Preparation", "Prep").replace("Summary and reflections", "Summary")
     return (step or MISSING) + (", run cut" if g.notes else "")
@@ -87,7 +88,8 @@ def detail(k: int, g: Group) -> Text:
     students' own)."""
     out = Text()
     out.append(f"#{k} {_members(g)}", style="bold")
-    out.append(f"  {g.date or 'no date'} · at {g.step or '?'} · {g.id}\n")
+    where = f"reached {g.step or '?'}" + (f", now at {g.at}" if g.at and g.at != g.step else "")
+    out.append(f"  {g.date or 'no date'} · {where} · {g.id}\n")
     nums = [
         f"{q.key} {'–' if (v := g.value(q.key)) is None else q.with_unit(v)}" for q in QUANTITIES
     ]
@@ -150,10 +152,26 @@ class ClassScreen(Screen[None]):
         yield KeyFooter()
 
     def on_mount(self) -> None:
-        table = self.query_one(DataTable)
-        for header, key in COLUMNS:
-            table.add_column(header, key=key, width=MEMBERS_WIDTH if key == "members" else None)
+        self._fill()
         self._read()
+
+    def _fill(self) -> None:
+        """(Re)build the table from :attr:`groups`, each column as wide as its widest cell
+        (the group's names: :data:`MEMBERS_WIDTH`), the cursor kept on its row. The widths
+        are set here, with the values, not measured by the table once it is idle: on a
+        loaded PC the columns once kept their headers' widths and cut every number to it,
+        R "5", K "1", J "0" (walk 9, D5)."""
+        table = self.query_one(DataTable)
+        cursor = table.cursor_row
+        rows = [row(k, g) for k, g in enumerate(self.groups, 1)]
+        table.clear(columns=True)
+        for n, (header, key) in enumerate(COLUMNS):
+            width = max([cell_len(header), *(cell_len(r[n]) for r in rows)])
+            table.add_column(header, key=key, width=MEMBERS_WIDTH if key == "members" else width)
+        for k, cells in enumerate(rows, 1):
+            table.add_row(*map(Text, cells), key=str(k))
+        if rows:
+            table.move_cursor(row=min(max(cursor, 0), len(rows) - 1))
 
     @work(thread=True, exclusive=True, group="class", name="read the class")
     def _read(self) -> None:
@@ -176,8 +194,7 @@ class ClassScreen(Screen[None]):
     @on(GroupRead)
     def _group_read(self, event: GroupRead) -> None:
         self.groups.append(event.group)
-        table = self.query_one(DataTable)
-        table.add_row(*map(Text, row(event.number, event.group)), key=str(event.number))
+        self._fill()
         if event.number == 1:
             self._show(0)
 
@@ -189,9 +206,8 @@ class ClassScreen(Screen[None]):
             return
         self.done = True
         self.groups = list(event.view.groups)
+        self._fill()
         table = self.query_one(DataTable)
-        for k, g in enumerate(self.groups, 1):
-            table.update_cell(str(k), "flags", Text(row(k, g)[3]))
         title.update(Text(f"{TITLE} of {self.root}: {classview.marked_summary(event.view)}"))
         self._show(table.cursor_row)
 

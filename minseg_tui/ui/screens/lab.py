@@ -165,11 +165,17 @@ class Heading(Vertical):
 
     def __init__(self, step: Step) -> None:
         self.todo = TodoLine(step.todo)
-        super().__init__(
-            Static(step.title, classes="heading-title", markup=False),
-            self.todo,
-            classes="heading",
-        )
+        self.title = Static(step.title, classes="heading-title", markup=False)
+        super().__init__(self.title, self.todo, classes="heading")
+        self.display = False
+
+    def show_step(self, step: Step) -> None:
+        """Hold ``step``'s title and what to do, folded, hidden (as made for it)."""
+        self.title.update(step.title)
+        self.todo.todo = step.todo
+        if self.whole:
+            self.show_whole(False)
+        self.todo.refresh()
         self.display = False
 
     @property
@@ -207,6 +213,9 @@ class StepPane(FieldForm):
         """The step shown (None before the first)."""
         self.panel: Widget | None = None
         self._heading: Heading | None = None
+        self._text: tuple[Heading, Prose, Prose, Prose] | None = None
+        """The step's heading, title, goal and what to do: mounted with the first step, then
+        given each next step's words (:meth:`show`)."""
         self._keep: FieldRow | Literal["focused", "scrolled"] = "focused"
         """What stays in view when the step grows or shrinks above its entries: the entry the
         step landed in, while it has the focus (placed again from the top of the step: the
@@ -228,14 +237,24 @@ class StepPane(FieldForm):
         # the row is removed
         self.set_reactive(FieldForm.current, None)
         self._keep = "focused"
-        await self.remove_children()
-        self._heading = Heading(step)
-        widgets: list[Widget] = [
-            self._heading,
-            Prose(step.title, classes="title"),
-            Prose("Goal: " + step.goal, classes="goal"),
-            Prose("What to do: " + step.todo, classes="todo"),
-        ]
+        widgets: list[Widget] = []
+        text = self._text
+        if text is None:
+            self._heading = Heading(step)
+            text = self._text = (
+                self._heading,
+                Prose(step.title, classes="title"),
+                Prose("Goal: " + step.goal, classes="goal"),
+                Prose("What to do: " + step.todo, classes="todo"),
+            )
+            widgets += text
+        else:  # the step's text stays mounted, the next step's in it: fewer widgets to style
+            await self.remove_children([w for w in self.children if w not in text])
+            heading, title, goal, todo = text
+            heading.show_step(step)
+            title.update(step.title)
+            goal.update("Goal: " + step.goal)
+            todo.update("What to do: " + step.todo)
         if panel is not None:
             widgets.append(panel)
             if isinstance(panel, LivePanel):

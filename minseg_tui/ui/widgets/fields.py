@@ -580,10 +580,14 @@ class FieldRow(Vertical):
         box looked like the others: Space went into the notes instead of the done? choice."""
         if focused == self.has_class("-focus"):
             return
-        self.set_class(focused, "-focus")
+        # the row's class without a style pass over the row (its six widgets, the box's
+        # component classes): only the label's look changes, and it has the class too
+        self.set_class(focused, "-focus", update=False)
         labels = self.query(".field-label, .choice-label")
         if labels:
-            labels.first(Label).update((FOCUS_MARK if focused else "") + self.label_text)
+            label = labels.first(Label)
+            label.set_class(focused, "-focus")
+            label.update((FOCUS_MARK if focused else "") + self.label_text)
 
     @property
     def is_current(self) -> bool:

@@ -7,6 +7,7 @@ plot's top-left corner, where a step response or a live stream has its points.
 from __future__ import annotations
 
 import math
+import re
 from collections import OrderedDict
 from collections.abc import Hashable, Sequence
 from dataclasses import dataclass
@@ -291,6 +292,17 @@ class Canvas(PlotextPlot):
         self._title = title
         self._xlabel = xlabel
 
+    def _ylabel_fitting(self) -> str:
+        """The y label, or its unit alone ("omega [rad/s]" -> "rad/s") where plotext's line
+        of labels cannot hold it left of the x label, which it centres: on the model check's
+        narrow close-up, "omega [rad/s]" took the place of "t [s]", and the ticks, seconds
+        into the run, read as speeds (walk 9, D3)."""
+        label, width = self._ylabel, self.size.width
+        unit = re.search(r"\[(.+)\]", label)
+        if width and unit and len(label) + 1 > (width - len(self._xlabel)) // 2:
+            return unit.group(1)
+        return label
+
     def draw(self) -> None:
         """Hand plotext what :attr:`traces` draw, at the widget's size, and refresh; nothing
         when that is what it was last handed (a view delivered again after each entry typed,
@@ -311,7 +323,7 @@ class Canvas(PlotextPlot):
         plt.clear_figure()
         plt.title(self._title)
         plt.xlabel(self._xlabel)
-        plt.ylabel(self._ylabel)
+        plt.ylabel(self._ylabel_fitting())
         xs: list[float] = []
         ys: list[float] = []
         lines: list[tuple[Trace, list[float], list[float]]] = []
