@@ -1149,15 +1149,12 @@ class LabApp(App[None]):
         """The report was written to ``paths``: say where, and what is still ``unanswered``
         (one line, a warning of its own: the report is written all the same)."""
         self.exported = paths
-        root = Path(self.config.sessions)
-        folder, names = written_in(paths, root)
-        # the whole path of the folder: "the session folder X (under the sessions folder)"
-        # did not say where to look (walk 9, D2)
+        folder, names = written_in(paths, Path(self.config.sessions))
         self.notify(
             "written: "
             + ", ".join(names[:2])
             + (f" and {len(names) - 2} run CSV" if len(names) > 2 else "")
-            + (f", in {(root.resolve() / folder).as_posix()}" if folder else ""),
+            + (f", in {folder}" if folder else ""),
             title="report",
             timeout=NOTICE_S,
         )

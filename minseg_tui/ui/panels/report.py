@@ -12,19 +12,22 @@ from minseg_tui.ui.panels.view_panel import ViewPanel
 
 
 def written_in(paths: tuple[str, ...], root: Path | None) -> tuple[str, tuple[str, ...]]:
-    """The files a report was written to, said so that no name breaks at 80x24: the session's
-    folder relative to the sessions folder ``root`` (its name, '2026-11-27-ada-bo'), and the
-    files relative to it ('report.md', 'runs/steps-1.csv'); ('', the paths as they are) when
-    the files are not all in one session folder under ``root``."""
+    """The files a report was written to, said so that no name breaks at 80x24: the session
+    folder's whole path, as two lines (the sessions folder ``root`` with a trailing '/', then
+    the session's own name, '2026-11-27-ada-bo': a group sees where to look, walk 9's D2, and
+    a deep sessions folder never breaks the session's name, walk 6's D7), and the files
+    relative to it ('report.md', 'runs/steps-1.csv'); ('', the paths as they are) when the
+    files are not all in one session folder under ``root``."""
     if not paths or root is None:
         return "", paths
     folder = Path(paths[0]).parent
+    base = Path(root).resolve()
     try:
-        where = folder.resolve().relative_to(Path(root).resolve())
+        where = folder.resolve().relative_to(base)
         names = tuple(Path(p).resolve().relative_to(folder.resolve()).as_posix() for p in paths)
     except ValueError:
         return "", paths
-    return where.as_posix(), names
+    return f"{base.as_posix()}/\n{where.as_posix()}", names
 
 
 class ReportPanel(Static):
@@ -47,9 +50,8 @@ class ReportPanel(Static):
     def _text(self) -> str:
         config = getattr(self.app, "config", None)  # the lab app's (the sessions folder)
         sessions = getattr(config, "sessions", None)
-        root = Path(sessions) if sessions else None
-        folder, names = written_in(self.exported, root)
-        where = f" in {(root.resolve() / folder).as_posix()}" if folder and root else ""
+        folder, names = written_in(self.exported, Path(sessions) if sessions else None)
+        where = f" in {folder}" if folder else ""
         return "F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV." + (
             f"\nwritten{where}:\n" + "\n".join(f"  {p}" for p in names) if names else ""
         )
