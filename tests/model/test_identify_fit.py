@@ -12,10 +12,10 @@ from minseg_tui.model.identify import RISES, WHOLE_LOG, identify
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.risefit import board_grid
 from minseg_tui.model.motor import PUBLISHED
-from minseg_tui.model.plant import Plant, PlantParams
-from minseg_tui.model.runlog import RunLog, find_edges
+from minseg_tui.model.runlog import find_edges
 from minseg_tui.model.synth import IDENT_V_DROP, identification_log, identification_table
 from minseg_tui.quantities import format_constant
+from tests.model.plantlogs import friction_log
 
 Q = 2 * math.pi / 720
 V_DROP = IDENT_V_DROP
@@ -111,23 +111,7 @@ def test_63_percent_reading_is_explained_by_the_sampling():
 
 
 def test_dry_friction_is_fitted_and_named():
-    params = PlantParams(tau_c=7.3e-3, v_drop=V_DROP)  # the published MinSeg with its friction
-    rng = np.random.default_rng(8)
-    half = 60
-    cmd = np.concatenate([np.zeros(20)] + [np.full(half, 4.0), np.zeros(half)] * 4)
-    plant = Plant(params, seed=8)
-    t = np.arange(cmd.size) * 0.025 + rng.uniform(0, 0.002, cmd.size)
-    count = np.empty(cmd.size, dtype=np.int64)
-    for k in range(cmd.size):
-        plant.advance(t[k] - plant.t)
-        count[k] = plant.count
-        plant.set_command(float(cmd[k]))
-    log = RunLog(
-        t=t,
-        u=np.array([params.u_applied(v) for v in cmd]),
-        omega=np.concatenate(([0.0], np.diff(count) * Q / np.diff(t))),
-        extra={"u_req": cmd, "count": count, "t_us": np.round(t * 1e6).astype(np.int64)},
-    )
+    log, params = friction_log(4.0)  # the published MinSeg with its friction
     s = identify(TABLE, PUBLISHED.R, log).step
     assert s.fit.method == WHOLE_LOG
     assert s.fit.u_c == pytest.approx(params.u_coulomb, rel=0.1)
