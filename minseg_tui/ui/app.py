@@ -4,8 +4,8 @@
 the device, the open session and the state the screens show, as reactive attributes it
 binds into each screen it makes: ``device`` (who we talk to), ``link`` (its state and
 counters), ``motor``, ``requested`` (the voltage set with F3), ``meter`` (the virtual
-multimeter), ``run_progress`` (the Task 10 run being recorded) and ``exported`` (the report's
-files); and ``lab_changed``, a signal published whenever the session changed. It answers
+multimeter), ``run_progress`` (the Task 10 run being recorded) and ``written`` (where the
+report's files are); and ``lab_changed``, a signal published whenever the session changed. It answers
 the requests that need the device (:class:`VoltageRequested`, :class:`RunRequested`, F2, F8).
 
 The device is opened in a worker; a second worker drains it every 50 ms into the bounded
@@ -197,6 +197,8 @@ class LabApp(App[None]):
     """The Task 10 run being recorded, or the last one's end (None: none yet)."""
     exported: reactive[tuple[str, ...]] = reactive(())
     """The files the report was last written to."""
+    written: reactive[tuple[str, tuple[str, ...]]] = reactive(("", ()))
+    """Where they are, as :func:`written_in` says it (worked out by the export's worker)."""
     saving: reactive[str] = reactive("")
     """Why the session is not all on disk, in one line ('' when it is)."""
 
@@ -410,7 +412,7 @@ class LabApp(App[None]):
                 LabApp.requested,
                 LabApp.meter,
                 LabApp.run_progress,
-                LabApp.exported,
+                LabApp.written,
                 LabApp.saving,
             )
         )
@@ -1143,13 +1145,20 @@ class LabApp(App[None]):
             except (MinsegError, OSError) as exc:
                 self.call_from_thread(self.notify, str(exc), title="report", severity="error")
                 return
-            self.call_from_thread(self._exported, paths, lab_views.unanswered_line(session))
+            written = written_in(paths, Path(self.config.sessions))  # resolves: not on the UI
+            self.call_from_thread(
+                self._exported, paths, written, lab_views.unanswered_line(session)
+            )
 
-    def _exported(self, paths: tuple[str, ...], unanswered: str = "") -> None:
-        """The report was written to ``paths``: say where, and what is still ``unanswered``
-        (one line, a warning of its own: the report is written all the same)."""
+    def _exported(
+        self, paths: tuple[str, ...], written: tuple[str, tuple[str, ...]], unanswered: str = ""
+    ) -> None:
+        """The report was written to ``paths`` (``written``: where, in words): say where, and
+        what is still ``unanswered`` (one line, a warning of its own: the report is written
+        all the same)."""
         self.exported = paths
-        folder, names = written_in(paths, Path(self.config.sessions))
+        self.written = written
+        folder, names = written
         self.notify(
             "written: "
             + ", ".join(names[:2])

@@ -14,7 +14,7 @@ from minseg_tui.device.protocol import Ident
 from minseg_tui.lab.saving.store import SessionNotWritable
 from minseg_tui.lab.state.session import Session
 from minseg_tui.ui.panels.connect import ConnectPanel
-from minseg_tui.ui.panels.report import ReportPanel
+from minseg_tui.ui.panels.report import ReportPanel, written_in
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.start import StartScreen
@@ -174,7 +174,7 @@ async def test_a_board_and_report_files_with_brackets_are_named_as_they_are(tmp_
         assert "Mega [red] on /dev/tty[/]0, firmware fw [/] 1.0.0" in said
         assert "/dev/tty[/]0" in str(app.screen.query_one(DeviceStatus).render())
         await goto(pilot, "summary", focus=None)
-        app.screen.exported = (f"{tmp_path}/[/]report.md",)
+        app.screen.written = written_in((f"{tmp_path}/[/]report.md",), app.config.sessions)
         await settle(pilot)
         assert f"{tmp_path}/[/]report.md" in str(app.screen.query_one(ReportPanel).render())
 

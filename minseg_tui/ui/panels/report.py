@@ -31,14 +31,15 @@ def written_in(paths: tuple[str, ...], root: Path | None) -> tuple[str, tuple[st
 
 
 class ReportPanel(Static):
-    """Says how to write the report and lists the files ``exported`` (paths) so far."""
+    """Says how to write the report and lists the files it was last ``written`` to (the
+    session folder's words and the files' names, from :func:`written_in`)."""
 
-    exported: reactive[tuple[str, ...]] = reactive((), layout=True)
+    written: reactive[tuple[str, tuple[str, ...]]] = reactive(("", ()), layout=True)
 
     def __init__(self) -> None:
         super().__init__("", classes="panel")
 
-    def watch_exported(self) -> None:
+    def watch_written(self) -> None:
         """The files listed above the summary's entries: the step keeps the entry the group
         types in in view (the list pushed it under the footer at 80x24)."""
         self.call_after_refresh(self.post_message, ViewPanel.Drawn())
@@ -48,9 +49,7 @@ class ReportPanel(Static):
         return Content(self._text())
 
     def _text(self) -> str:
-        config = getattr(self.app, "config", None)  # the lab app's (the sessions folder)
-        sessions = getattr(config, "sessions", None)
-        folder, names = written_in(self.exported, Path(sessions) if sessions else None)
+        folder, names = self.written
         where = f" in {folder}" if folder else ""
         return "F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV." + (
             f"\nwritten{where}:\n" + "\n".join(f"  {p}" for p in names) if names else ""

@@ -604,7 +604,7 @@ class LabScreen(StatusScreen):
     requested: reactive[float | None] = reactive(None)
     meter: reactive[MeterReading | None] = reactive(None)
     run_progress: reactive[RunProgress | None] = reactive(None)
-    exported: reactive[tuple[str, ...]] = reactive(())
+    written: reactive[tuple[str, tuple[str, ...]]] = reactive(("", ()))
 
     def __init__(
         self,
@@ -729,7 +729,7 @@ class LabScreen(StatusScreen):
         if "model_check" in acts:
             return ModelCheckPanel()
         if step.id == "summary":
-            return ReportPanel().data_bind(LabScreen.exported)
+            return ReportPanel().data_bind(LabScreen.written)
         return None
 
     def _rows(self, step: Step) -> list[FieldRow]:
