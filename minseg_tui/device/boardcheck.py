@@ -450,9 +450,13 @@ def count_revolution(
         b = take()
         got.append(b)
         if len(b):
-            if since is None:
-                since = int(b.t_us[0])
-            if int(b.t_us[-1]) >= since + LAST_US:
+            # a sample that arrives after Enter bounds the board's time at Enter as well
+            # (taken at b, arrived at h: at least b - (h - pressed)); with none read before
+            # Enter, this alone places it (a host that had read nothing yet)
+            at = board_time_at([b], pressed)
+            if at is not None:
+                since = at if since is None else max(since, at)
+            if since is not None and int(b.t_us[-1]) >= since + LAST_US:
                 break
         time.sleep(poll)
     batch = SampleBatch.concat(got)

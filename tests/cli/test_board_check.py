@@ -241,6 +241,45 @@ def test_a_turn_just_before_enter_is_counted_when_the_host_reads_late(board):
     assert r.ok and abs(r.counts) == 720, r.text
 
 
+def test_a_turn_is_counted_when_the_host_had_read_no_sample_before_enter(board):
+    # the test above failed once on a busy machine: its reader had handed over no sample
+    # when Enter came (exactly 100 held back), so Enter could not be placed in board time and
+    # the count stopped 100 ms past the first sample read, 2.5 s before the turn: "0 counts".
+    # Here the reader hands nothing over before Enter, every time: the samples that arrive
+    # after Enter place it (a sample taken at b that arrived at h says the board's clock was
+    # past b - (h - Enter) at Enter)
+    link = board()
+    read = link.samples
+    held: list[SampleBatch] = []
+    turned: list[float] = []
+    behind = 100
+
+    def host() -> float:
+        return link.board.now + 1000.0
+
+    def samples() -> SampleBatch:
+        b = read()
+        arrived = b.t_us / 1e6 + 1000.0 + 0.005
+        pending = SampleBatch.concat([*held, replace(b, t_host=arrived)])
+        due = np.arange(len(pending)) < len(pending) - (behind if turned else len(pending))
+        held[:] = [_part(pending, ~due)]
+        return _part(pending, due)
+
+    def done() -> bool:
+        if turned:
+            return True
+        if sum(len(b) for b in held) < behind:
+            return False
+        with link.board.lock:
+            link.board.turn_by_hand(1.0)
+            turned.append(link.board.now)
+        return True
+
+    link.samples = samples
+    r = count_revolution(link, done, timeout=60, poll=0.0, clock=host)
+    assert r.ok and abs(r.counts) == 720, r.text
+
+
 @pytest.mark.parametrize(
     ("counts", "ok", "says"),
     [
