@@ -25,7 +25,7 @@ from minseg_tui.model.check.deviations import Deviation
 from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.check.evidence import Lack, Lacks
 from minseg_tui.model.check.figures import CloseUp, Lead, Window
-from minseg_tui.model.check.sampling import Sampling
+from minseg_tui.model.check.sampling import CountFrom, Sampling
 from minseg_tui.quantities import format_number
 
 
@@ -682,6 +682,20 @@ def every(s: Sampling) -> str:
     return f"irregular, a sample every {lo}-{hi} ms (nominal {ts} ms)"
 
 
+def resolution_how(s: Sampling) -> str:
+    """Where the speed's resolution came from, in words ('' when unknown): the header's
+    ``# cpr:`` line as it reads, or the lattice it was read off (one count in rad, or the
+    speed's step in rad/s)."""
+    if s.count_from is CountFrom.CPR:
+        return f"# cpr: {s.cpr}"
+    if s.resolution is None:
+        return ""
+    if s.count_from is CountFrom.INTERVAL_LATTICE:
+        q = s.resolution * s.ts
+        return f"each speed times its interval lies on a lattice of {q:.3g} rad, one count"
+    return f"the speeds lie on a lattice of {s.resolution:.3g} rad/s"
+
+
 def sampling(s: Sampling) -> str:
     """One sentence on the sample times and the speed column."""
     times = every(s)
@@ -697,7 +711,7 @@ def sampling(s: Sampling) -> str:
         times += f"; {s.lost} sample(s) lost"
     if s.resolution is not None:
         res = (
-            f"one count per sample is {s.resolution:.3g} rad/s ({s.resolution_how}), "
+            f"one count per sample is {s.resolution:.3g} rad/s ({resolution_how(s)}), "
             f"a noise floor of {s.floor:.3g} rad/s"
         )
     elif s.smooth:
@@ -791,6 +805,7 @@ class _Says:
     lead_why = staticmethod(lead_why)
     close_up_what = staticmethod(close_up_what)
     sampling = staticmethod(sampling)
+    resolution_how = staticmethod(resolution_how)
     where = staticmethod(where)
     runner_up_why = staticmethod(runner_up_why)
 
