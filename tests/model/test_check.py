@@ -380,16 +380,6 @@ def test_json_keeps_every_key_and_adds_what_the_ui_needs():
         assert set(a) >= {"kind", "row", "t", "t_end", "size", "unit", "text"}
 
 
-def test_every_cause_has_words_for_people():
-    from minseg_tui.model.check.effects import CANDIDATES, in_words
-
-    assert all(c.label and "_" not in c.label for c in CANDIDATES)
-    assert in_words("first_order+coulomb_friction+velocity_filter") == (
-        "first order + dry friction + averaged speed (velocity filter)"
-    )
-    assert in_words("current_limit") == "current limit" and in_words("none") == "none"
-
-
 def _fine(t_end, dt, u_of, T, rate, both):
     """The first-order model with a cap on the acceleration, by small Euler steps (K = 1):
     the cap holds while accelerating and, ``both``, while braking."""
