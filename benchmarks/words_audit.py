@@ -12,7 +12,10 @@ place, and says where it stands:
   bare code shown), the
   model check's figure names (a table naming the angle error), the key help (a table or
   README line saying what F5 does);
-- names defined in more than one module: classes, and UPPER_CASE tables at module level.
+- names defined in more than one module: classes, and UPPER_CASE tables at module level;
+- words in the model (issue 19 item 4: the model gives records, the words are made outside
+  it): string literals and f-strings of model/ with a space and over 20 characters of
+  text, docstrings left out, by folder; a refusal's 'expected ...' message counted apart.
 
 Run: ``.venv/bin/python benchmarks/words_audit.py`` (``--list`` prints every hit).
 """
@@ -38,6 +41,35 @@ PLACES: dict[str, re.Pattern[str]] = {
     "the check's figure names": re.compile(r'"(?:rms error of the angle|angle error)", "rad"'),
     "the key help (what F5 does)": re.compile(r'^\| F5|\("F5", "|\("f5", "|Key\(\s*"F5"', re.M),
 }
+
+
+def _prose(tree: ast.Module) -> list[tuple[int, str]]:
+    """The string literals and f-strings of a module with a space and over 20 characters of
+    literal text (an f-string's pieces counted as one), docstrings left out: (line, text)."""
+    docs: set[int] = set()
+    pieces: set[int] = set()
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        for st in body if isinstance(body, list) else []:
+            if (
+                isinstance(st, ast.Expr)
+                and isinstance(st.value, ast.Constant)
+                and isinstance(st.value.value, str)
+            ):
+                docs.add(id(st.value))
+        if isinstance(node, ast.JoinedStr):
+            pieces.update(id(v) for v in node.values)
+    out = []
+    for node in ast.walk(tree):
+        text = None
+        if isinstance(node, ast.Constant) and isinstance(node.value, str):
+            if id(node) not in docs and id(node) not in pieces:
+                text = node.value
+        elif isinstance(node, ast.JoinedStr):
+            text = "".join(v.value if isinstance(v, ast.Constant) else "{}" for v in node.values)
+        if text is not None and len(text) > 20 and " " in text:
+            out.append((node.lineno, text))
+    return out
 
 
 def _geometry(text: str, m: re.Match[str]) -> bool:
@@ -82,6 +114,7 @@ def main() -> None:
     places: dict[str, list[str]] = defaultdict(list)
     classes: dict[str, list[str]] = defaultdict(list)
     tables: dict[str, list[str]] = defaultdict(list)
+    said: dict[str, list[str]] = defaultdict(list)
     for p in _sources(pkg):
         text = p.read_text(encoding="utf-8")
         rel = str(p.relative_to(pkg))
@@ -96,7 +129,11 @@ def main() -> None:
         for what, pattern in PLACES.items():
             if pattern.search(text):
                 places[what].append(rel)
-        c, t = _defined(ast.parse(text))
+        tree = ast.parse(text)
+        if rel.startswith("model/"):
+            for line, words in sorted(_prose(tree)):
+                said[str(Path(rel).parent)].append(f"{rel}:{line}: {words[:90]}")
+        c, t = _defined(tree)
         for name in c:
             classes[name].append(rel)
         for name in t:
@@ -126,6 +163,16 @@ def main() -> None:
             print(f"    {h}")
     for what in PLACES:
         print(f"{what}: written in {len(places[what])} places ({', '.join(places[what])})")
+    refusals = sum(h.split(": ", 1)[1].startswith("expected") for v in said.values() for h in v)
+    print(
+        f"words in model/ (literals with a space, over 20 characters, no docstrings): "
+        f"{sum(len(v) for v in said.values())}, of which {refusals} refusals ('expected ...'); "
+        + ", ".join(f"{k} {len(v)}" for k, v in sorted(said.items()))
+    )
+    if args.list:
+        for where in said.values():
+            for h in where:
+                print(f"    {h}")
     print(f"classes defined in more than one module: {len(twice_c)}")
     for name, where in sorted(twice_c.items()):
         print(f"    {name}: {', '.join(where)}")
