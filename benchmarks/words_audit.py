@@ -23,10 +23,14 @@ Run: ``.venv/bin/python benchmarks/words_audit.py`` (``--list`` prints every hit
 import argparse
 import ast
 import re
+import sys
 from collections import Counter, defaultdict
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from tests.prose import prose  # noqa: E402
 
 SPEC = re.compile(r"\{[^{}]*?:[+ ]?\d*(?:\.\d+)?[gfe%]\}")
 """A number's format spec inside an f-string: {x:.3g}, {x:+.1f}, {x:g}, {x:.0f}."""
@@ -41,35 +45,6 @@ PLACES: dict[str, re.Pattern[str]] = {
     "the check's figure names": re.compile(r'"(?:rms error of the angle|angle error)", "rad"'),
     "the key help (what F5 does)": re.compile(r'^\| F5|\("F5", "|\("f5", "|Key\(\s*"F5"', re.M),
 }
-
-
-def _prose(tree: ast.Module) -> list[tuple[int, str]]:
-    """The string literals and f-strings of a module with a space and over 20 characters of
-    literal text (an f-string's pieces counted as one), docstrings left out: (line, text)."""
-    docs: set[int] = set()
-    pieces: set[int] = set()
-    for node in ast.walk(tree):
-        body = getattr(node, "body", None)
-        for st in body if isinstance(body, list) else []:
-            if (
-                isinstance(st, ast.Expr)
-                and isinstance(st.value, ast.Constant)
-                and isinstance(st.value.value, str)
-            ):
-                docs.add(id(st.value))
-        if isinstance(node, ast.JoinedStr):
-            pieces.update(id(v) for v in node.values)
-    out = []
-    for node in ast.walk(tree):
-        text = None
-        if isinstance(node, ast.Constant) and isinstance(node.value, str):
-            if id(node) not in docs and id(node) not in pieces:
-                text = node.value
-        elif isinstance(node, ast.JoinedStr):
-            text = "".join(v.value if isinstance(v, ast.Constant) else "{}" for v in node.values)
-        if text is not None and len(text) > 20 and " " in text:
-            out.append((node.lineno, text))
-    return out
 
 
 def _geometry(text: str, m: re.Match[str]) -> bool:
@@ -131,7 +106,7 @@ def main() -> None:
                 places[what].append(rel)
         tree = ast.parse(text)
         if rel.startswith("model/"):
-            for line, words in sorted(_prose(tree)):
+            for line, words in sorted(prose(tree)):
                 said[str(Path(rel).parent)].append(f"{rel}:{line}: {words[:90]}")
         c, t = _defined(tree)
         for name in c:
