@@ -12,7 +12,10 @@ place, and says where it stands:
   bare code shown), the
   model check's figure names (a table naming the angle error), the key help (a table or
   README line saying what F5 does);
-- names defined in more than one module: classes, and UPPER_CASE tables at module level.
+- names defined in more than one module: classes, and UPPER_CASE tables at module level;
+- words in the model (issue 19 item 4: the model gives records, the words are made outside
+  it): string literals and f-strings of model/ with a space and over 20 characters of
+  text, docstrings left out, by folder; a refusal's 'expected ...' message counted apart.
 
 Run: ``.venv/bin/python benchmarks/words_audit.py`` (``--list`` prints every hit).
 """
@@ -20,10 +23,14 @@ Run: ``.venv/bin/python benchmarks/words_audit.py`` (``--list`` prints every hit
 import argparse
 import ast
 import re
+import sys
 from collections import Counter, defaultdict
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from tests.prose import prose  # noqa: E402
 
 SPEC = re.compile(r"\{[^{}]*?:[+ ]?\d*(?:\.\d+)?[gfe%]\}")
 """A number's format spec inside an f-string: {x:.3g}, {x:+.1f}, {x:g}, {x:.0f}."""
@@ -82,6 +89,7 @@ def main() -> None:
     places: dict[str, list[str]] = defaultdict(list)
     classes: dict[str, list[str]] = defaultdict(list)
     tables: dict[str, list[str]] = defaultdict(list)
+    said: dict[str, list[str]] = defaultdict(list)
     for p in _sources(pkg):
         text = p.read_text(encoding="utf-8")
         rel = str(p.relative_to(pkg))
@@ -96,7 +104,11 @@ def main() -> None:
         for what, pattern in PLACES.items():
             if pattern.search(text):
                 places[what].append(rel)
-        c, t = _defined(ast.parse(text))
+        tree = ast.parse(text)
+        if rel.startswith("model/"):
+            for line, words in sorted(prose(tree)):
+                said[str(Path(rel).parent)].append(f"{rel}:{line}: {words[:90]}")
+        c, t = _defined(tree)
         for name in c:
             classes[name].append(rel)
         for name in t:
@@ -126,6 +138,16 @@ def main() -> None:
             print(f"    {h}")
     for what in PLACES:
         print(f"{what}: written in {len(places[what])} places ({', '.join(places[what])})")
+    refusals = sum(h.split(": ", 1)[1].startswith("expected") for v in said.values() for h in v)
+    print(
+        f"words in model/ (literals with a space, over 20 characters, no docstrings): "
+        f"{sum(len(v) for v in said.values())}, of which {refusals} refusals ('expected ...'); "
+        + ", ".join(f"{k} {len(v)}" for k, v in sorted(said.items()))
+    )
+    if args.list:
+        for where in said.values():
+            for h in where:
+                print(f"    {h}")
     print(f"classes defined in more than one module: {len(twice_c)}")
     for name, where in sorted(twice_c.items()):
         print(f"    {name}: {', '.join(where)}")

@@ -1,8 +1,11 @@
 """The layer contract: model < signals < device < lab < ui|report < cli; no Textual below the UI."""
 
+import ast
 import subprocess
 import sys
 from pathlib import Path
+
+from tests.prose import prose
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -28,3 +31,14 @@ def test_core_imports_without_textual():
         [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=120
     )
     assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr
+
+
+def test_the_model_check_holds_no_words():
+    """Issue 19 item 4: the check gives typed records and its words are made outside the
+    model (lab/views/check_says.py, CONTRIBUTING's recipe for a cause)."""
+    found = [
+        f"{p.relative_to(ROOT)}:{line}: {text}"
+        for p in sorted((ROOT / "minseg_tui" / "model" / "check").glob("*.py"))
+        for line, text in prose(ast.parse(p.read_text(encoding="utf-8")))
+    ]
+    assert found == [], "\n".join(found)

@@ -16,10 +16,9 @@ import math
 from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_run_log
-from minseg_tui.lab.views.check_says import as_json
+from minseg_tui.lab.views.check_says import as_json, in_words
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.runlog import problem
 
 

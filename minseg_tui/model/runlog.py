@@ -5,6 +5,14 @@ A run log has one row per sample: time ``t`` (s), the voltage on the motor ``u``
 ``omega`` (rad/s) and any other columns (``u_req`` V, ``theta`` rad, ``count``,
 ``t_us`` us, ...). The files live in :mod:`minseg_tui.lab.saving.files`; this module is the
 data and the arithmetic on it (no I/O).
+
+Two ``# key: value`` header lines have values the format defines (and
+:func:`header_problem` checks); other keys are free text:
+
+- ``# cpr:`` encoder counts per wheel revolution, a whole number above 0, at most
+  :data:`MAX_CPR`;
+- ``# omega_over:`` how omega was computed: ``interval`` (the angle change over each row's
+  real sample interval) or ``nominal`` (over the nominal period ts).
 """
 
 from __future__ import annotations
@@ -24,13 +32,6 @@ FloatArray = NDArray[np.float64]
 MAX_CPR: int = 1_000_000
 """Most encoder counts per revolution a ``# cpr:`` line may claim (a lab motor's encoder
 has hundreds to a few ten thousands)."""
-
-HEADER_FIELDS: dict[str, str] = {
-    "cpr": f"encoder counts per wheel revolution, a whole number above 0, at most {MAX_CPR}",
-    "omega_over": "how omega was computed: 'interval' (the angle change over each row's real "
-    "sample interval) or 'nominal' (over the nominal period ts)",
-}
-"""``# key: value`` header lines whose values the run-log format defines (and checks)."""
 
 
 def header_problem(key: str, value: str) -> str | None:

@@ -23,9 +23,9 @@ from minseg_tui.lab.state.session import Session, TableRow
 from minseg_tui.lab.views import check_params as model_words
 from minseg_tui.lab.views import check_says, check_text, check_words, own_first
 from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.lab.views.session import rise_zoom
 from minseg_tui.model.check import CheckResult
-from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import ResponseResult, Rise
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (

@@ -16,7 +16,7 @@ import pytest
 from minseg_tui.cli import main
 from minseg_tui.lab.saving.store import lock_owner
 from minseg_tui.lab.state.session import Session
-from minseg_tui.model.check.effects import in_words
+from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.quantities import format_number
 
 from .build import group

@@ -12,7 +12,7 @@ import pytest
 
 from minseg_tui.cli import main
 from minseg_tui.lab.state.session import Session
-from minseg_tui.model.check.effects import in_words
+from minseg_tui.lab.views.check_says import in_words
 
 from .build import group
 

@@ -111,3 +111,27 @@ def test_the_first_sentence_names_the_model_it_simulated(cause):
     assert float(m.group(1)) == pytest.approx(T * 1e3, rel=0.005)
     assert float(m.group(2)) == pytest.approx(K, rel=0.005)
     assert "simple (first-order) model says" not in first
+
+
+def test_every_cause_has_words_for_people():
+    from minseg_tui.lab.views.check_says import CAUSE_WORDS, in_words
+    from minseg_tui.model.check.effects import CANDIDATES
+
+    assert all(
+        CAUSE_WORDS[c.cause].label and "_" not in CAUSE_WORDS[c.cause].label for c in CANDIDATES
+    )
+    assert in_words("first_order+coulomb_friction+velocity_filter") == (
+        "first order + dry friction + averaged speed (velocity filter)"
+    )
+    assert in_words("current_limit") == "current limit" and in_words("none") == "none"
+
+
+def test_a_cause_within_the_first_sample_is_said_by_what_it_is():
+    from minseg_tui.lab.views.check_says import reason
+    from minseg_tui.model.check.decide import Reason
+
+    said = reason(Reason("within_sample", cause="dead_time", value=0.004, ts=0.025))
+    assert said.startswith("a delay of 4 ms, under a quarter of the 25 ms sample period")
+    assert reason(Reason("within_sample", cause="second_pole", value=0.0031, ts=0.02)).startswith(
+        "a pole of 3.1 ms, under a quarter of the 20 ms sample period"
+    )

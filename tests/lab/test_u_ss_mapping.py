@@ -13,6 +13,7 @@ import pytest
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
+from minseg_tui.lab.views.check_says import resolution_how
 from minseg_tui.model.plant import PlantParams, record
 from minseg_tui.report.write import write_report
 
@@ -122,5 +123,5 @@ def test_recorded_runs_say_how_their_speed_was_taken(tmp_path):
         assert "# cpr: 720" in head.splitlines() and "# omega_over: interval" in head.splitlines()
         samp = s.model_check().result.sampling
         assert samp.how == "header" and samp.over_interval
-        assert samp.resolution_how == "# cpr: 720"
+        assert resolution_how(samp) == "# cpr: 720"
         assert samp.resolution == pytest.approx(2 * np.pi / 720 / 0.025)

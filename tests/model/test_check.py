@@ -14,31 +14,37 @@ import pytest
 
 from minseg_tui.lab.views.check_says import as_json, evidence, lead_why
 from minseg_tui.model.check import check
-from minseg_tui.model.check.effects import effects_of
+from minseg_tui.model.check.effects import BY_CAUSE, CANDIDATES, effects_of
 from minseg_tui.model.check.fit import whiten
 from minseg_tui.model.check.simulate import Effects, Stretches, pieces
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.model.synth import make_log
 
-# cause -> (parameter, absolute tolerance, relative tolerance): |est - true| <= abs + rel * true
+# cause -> (absolute tolerance, relative tolerance) of its parameter: |est - true| <= abs +
+# rel * true; a cause not here is held to DEFAULT_TOLERANCE
 TOLERANCE = {
-    "coulomb_friction": ("u_c", 0.02, 0.05),
-    "dead_time": ("delay", 0.003, 0.05),
-    "velocity_filter": ("taps", 1.0, 0.0),
-    "coast_on_zero": ("T_coast", 0.0, 0.15),
-    "second_pole": ("T2", 0.004, 0.15),
+    "coulomb_friction": (0.02, 0.05),
+    "dead_time": (0.003, 0.05),
+    "velocity_filter": (1.0, 0.0),
+    "coast_on_zero": (0.0, 0.15),
+    "second_pole": (0.004, 0.15),
 }
+DEFAULT_TOLERANCE = (0.0, 0.05)
 SEEDS = (101, 102, 103)
+HIDDEN = sorted(c.cause for c in CANDIDATES if c.hidden is not None)
+"""Every cause synth's make_log can hide (its entry's ``hidden``): a cause added to
+CANDIDATES is tested here without a line of its own."""
 
 
 @pytest.mark.parametrize("seed", SEEDS)
-@pytest.mark.parametrize("cause", sorted(TOLERANCE))
+@pytest.mark.parametrize("cause", HIDDEN)
 def test_finds_hidden_effect_and_its_parameter(cause, seed):
     log = make_log(cause, seed=seed)
     r = check(log.t, log.u, log.omega)
     assert r.finding.cause == cause, evidence(r.finding)
-    name, tol_abs, tol_rel = TOLERANCE[cause]
+    name = BY_CAUSE[cause].param
+    tol_abs, tol_rel = TOLERANCE.get(cause, DEFAULT_TOLERANCE)
     est = r.extended.params[name]
     assert abs(est - log.param) <= tol_abs + tol_rel * log.param, (est, log.param)
     # T and K stay those of the motor behind the effect (published T about 0.043 s)
@@ -378,16 +384,6 @@ def test_json_keeps_every_key_and_adds_what_the_ui_needs():
     assert set(d["sampling"]) >= {"omega_over", "how", "regular", "lost_samples", "noise_floor"}
     for a in d["anomalies"]:
         assert set(a) >= {"kind", "row", "t", "t_end", "size", "unit", "text"}
-
-
-def test_every_cause_has_words_for_people():
-    from minseg_tui.model.check.effects import CANDIDATES, in_words
-
-    assert all(c.label and "_" not in c.label for c in CANDIDATES)
-    assert in_words("first_order+coulomb_friction+velocity_filter") == (
-        "first order + dry friction + averaged speed (velocity filter)"
-    )
-    assert in_words("current_limit") == "current limit" and in_words("none") == "none"
 
 
 def _fine(t_end, dt, u_of, T, rate, both):

@@ -15,7 +15,14 @@ from functools import cache
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
-from minseg_tui.lab.views.check_says import close_up_what, evidence, lead_why, runner_up_why, where
+from minseg_tui.lab.views.check_says import (
+    close_up_what,
+    evidence,
+    lead_why,
+    resolution_how,
+    runner_up_why,
+    where,
+)
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from tests.shared_data import SHARED_DATA
@@ -380,7 +387,7 @@ def test_speeds_over_their_own_interval_are_not_said_to_lie_on_a_lattice():
     # angle steps (speed x interval) that are whole degrees. Over the nominal period all do.
     r, words = analyze("ev3_100_irregular_actualdt.csv")
     assert "the speeds lie on a lattice" not in words
-    assert "speed times its interval" in r.sampling.resolution_how
+    assert "speed times its interval" in resolution_how(r.sampling)
     assert r.sampling.resolution == pytest.approx(3.98, rel=0.01)
     r2, words2 = analyze("ev3_100_irregular_nominaldt.csv")
     assert "the speeds lie on a lattice of 3.98 rad/s" in words2

@@ -18,8 +18,8 @@ import pytest
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.compare import two_T_of
 from minseg_tui.lab.state.session import Session
-from minseg_tui.lab.views.check_says import caveat, close_up_what, lead_why
-from minseg_tui.model.check.effects import PARAM_UNITS, in_words
+from minseg_tui.lab.views.check_says import caveat, close_up_what, in_words, lead_why
+from minseg_tui.model.check.effects import PARAM_UNITS
 from minseg_tui.quantities import UNITS, format_number, shown_unit
 from minseg_tui.report import svg
 from minseg_tui.report.write import write_report

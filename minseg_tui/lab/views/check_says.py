@@ -22,11 +22,75 @@ from minseg_tui.model.check import effects as fx
 from minseg_tui.model.check import result as rs
 from minseg_tui.model.check.decide import Reason, ReasonKind
 from minseg_tui.model.check.deviations import Deviation
-from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.check.evidence import Lack, Lacks
 from minseg_tui.model.check.figures import CloseUp, Lead, Window
-from minseg_tui.model.check.sampling import Sampling
+from minseg_tui.model.check.sampling import CountFrom, Sampling
 from minseg_tui.quantities import format_number
+
+
+@dataclass(frozen=True)
+class CauseWords:
+    """A cause of the model check in words: ``label``, a few words for people ('dry
+    friction'); ``everyday``, what a student who has not met it is told; ``short``, two or
+    three words ('with ... added', 'or ...'); ``within_sample``, what it is when its time is
+    under a quarter of the sample period ('a delay'; '' for a cause without that test,
+    :attr:`~minseg_tui.model.check.effects.Candidate.within_sample`)."""
+
+    label: str
+    everyday: str
+    short: str
+    within_sample: str = ""
+
+
+CAUSE_WORDS: dict[str, CauseWords] = {
+    "coulomb_friction": CauseWords(
+        "dry friction",
+        "dry friction in the gearbox and the brushes: a constant braking torque, so the "
+        "wheel stops sooner than the model says (the model only knows a friction that "
+        "shrinks with the speed)",
+        "dry friction",
+    ),
+    "dead_time": CauseWords(
+        "dead time",
+        "a delay: the motor answers a little after the command, as if the voltage arrived late",
+        "a delay",
+        within_sample="a delay",
+    ),
+    "velocity_filter": CauseWords(
+        "averaged speed (velocity filter)",
+        "the logged speed is an average over several samples, which turns every jump into a ramp",
+        "an averaged speed",
+    ),
+    "coast_on_zero": CauseWords(
+        "coasting at zero command",
+        "at 0 V the driver lets the wheel spin freely instead of braking it, so it runs down "
+        "at its own pace, not at the pace of a braked motor",
+        "coasting at 0 V",
+    ),
+    "second_pole": CauseWords(
+        "second pole",
+        "the current needs time to build up in the motor's winding, so the speed starts "
+        "rising gently instead of at once",
+        "a slow current build-up",
+        within_sample="a pole",
+    ),
+    "current_limit": CauseWords(
+        "current limit",
+        "the driver limits the current, so the wheel can only speed up so fast at first",
+        "a current limit",
+    ),
+}
+"""Every cause of :data:`~minseg_tui.model.check.effects.CANDIDATES` in words, by its contract
+name (the model holds its numbers, this its words)."""
+
+
+def in_words(model: str) -> str:
+    """A model or cause name in words: "first_order+coulomb_friction" -> "first order + dry
+    friction"; ``none`` stays "none"."""
+    return " + ".join(
+        "first order" if p == "first_order" else (CAUSE_WORDS[p].label if p in CAUSE_WORDS else p)
+        for p in model.split("+")
+    )
 
 
 def _miss(a: an.Anomaly, f: an.ModelMiss) -> str:
@@ -229,7 +293,7 @@ def reason(r: Reason) -> str:
         return refusal(r.refusal)
     if r.kind == "within_sample":
         return (
-            f"{r.what} of {1e3 * r.value:.3g} ms, under a quarter of the "
+            f"{CAUSE_WORDS[r.cause].within_sample} of {1e3 * r.value:.3g} ms, under a quarter of the "
             f"{1e3 * r.ts:.3g} ms sample period, acts within the first sample after a step: "
             "the samples show only a shift in time that the sampling's own lateness gives too"
         )
@@ -682,6 +746,20 @@ def every(s: Sampling) -> str:
     return f"irregular, a sample every {lo}-{hi} ms (nominal {ts} ms)"
 
 
+def resolution_how(s: Sampling) -> str:
+    """Where the speed's resolution came from, in words ('' when unknown): the header's
+    ``# cpr:`` line as it reads, or the lattice it was read off (one count in rad, or the
+    speed's step in rad/s)."""
+    if s.count_from is CountFrom.CPR:
+        return f"# cpr: {s.cpr}"
+    if s.resolution is None:
+        return ""
+    if s.count_from is CountFrom.INTERVAL_LATTICE:
+        q = s.resolution * s.ts
+        return f"each speed times its interval lies on a lattice of {q:.3g} rad, one count"
+    return f"the speeds lie on a lattice of {s.resolution:.3g} rad/s"
+
+
 def sampling(s: Sampling) -> str:
     """One sentence on the sample times and the speed column."""
     times = every(s)
@@ -697,7 +775,7 @@ def sampling(s: Sampling) -> str:
         times += f"; {s.lost} sample(s) lost"
     if s.resolution is not None:
         res = (
-            f"one count per sample is {s.resolution:.3g} rad/s ({s.resolution_how}), "
+            f"one count per sample is {s.resolution:.3g} rad/s ({resolution_how(s)}), "
             f"a noise floor of {s.floor:.3g} rad/s"
         )
     elif s.smooth:
@@ -791,6 +869,7 @@ class _Says:
     lead_why = staticmethod(lead_why)
     close_up_what = staticmethod(close_up_what)
     sampling = staticmethod(sampling)
+    resolution_how = staticmethod(resolution_how)
     where = staticmethod(where)
     runner_up_why = staticmethod(runner_up_why)
 

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from minseg_tui.lab.views.check_says import close_up_what
+from minseg_tui.lab.views.check_says import CAUSE_WORDS, close_up_what
 from minseg_tui.lab.views.check_text import GAIN_DIGITS, figure, figure_words, stem
 from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.effects import CANDIDATES
@@ -38,11 +38,11 @@ from minseg_tui.quantities import (
 
 FloatArray = NDArray[np.float64]
 
-EVERYDAY: dict[str, str] = {c.cause: c.everyday for c in CANDIDATES}
+EVERYDAY: dict[str, str] = {c: w.everyday for c, w in CAUSE_WORDS.items()}
 """Each cause the check can name, in the words of someone who has not met it yet (its
-``everyday`` in :data:`~minseg_tui.model.check.effects.CANDIDATES`)."""
+``everyday`` in :data:`~minseg_tui.lab.views.check_says.CAUSE_WORDS`)."""
 
-SHORT: dict[str, str] = {c.cause: c.short for c in CANDIDATES}
+SHORT: dict[str, str] = {c: w.short for c, w in CAUSE_WORDS.items()}
 """Each cause in two or three words (for 'with ... added' and 'or ...')."""
 
 SLOWER: dict[str, int] = {c.cause: c.slower for c in CANDIDATES}

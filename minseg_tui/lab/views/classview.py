@@ -42,8 +42,8 @@ from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import NO_RUN_YET, Session
 from minseg_tui.lab.views import own_first
+from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.lab.views.own_first import OwnRow
-from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.identify import response_alone
 from minseg_tui.quantities import (
     F_UNIT,

@@ -35,8 +35,8 @@ from minseg_tui.lab.state.results import Comparison, Notice
 from minseg_tui.lab.state.session import Entry, Session, TableRow
 from minseg_tui.lab.views import check_params as model_words
 from minseg_tui.lab.views import check_says, check_text, check_words
+from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.model import identify as model_identify
-from minseg_tui.model.check.effects import in_words
 from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.identify.rises import E63

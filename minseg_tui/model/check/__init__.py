@@ -12,8 +12,8 @@ Modules, in the order the check uses them:
   jitter or lost samples, the speed's resolution and noise floor, counts or a smooth signal);
 - simulate: the model and its effects in closed form per mode on a piecewise-constant input;
 - effects: the causes, each whole in one entry of one list (names, parameter, search range,
-  starts, what a log needs to show it, what its evidence reads off a log (a typed record)
-  and its labels for people, and its own simulation piece when it acts on the input);
+  starts, what a log needs to show it, what its evidence reads off a log (a typed record),
+  and its own simulation piece when it acts on the input);
 - guess: what the starts are read off the log with;
 - fit: whitened least squares (K solved linearly), any set of causes jointly (by
   :mod:`minseg_tui.model.optimize`, the search identify uses too), 95 % intervals;
@@ -33,9 +33,11 @@ the model, in :mod:`minseg_tui.lab.views.check_says` (the JSON of ``analyze --js
 :func:`~minseg_tui.lab.views.check_says.as_json`); the gain figures' names and the full
 text for lab assistants in :mod:`minseg_tui.lab.views.check_text`; a model's parameters in
 :mod:`minseg_tui.lab.views.check_params`. The selection's reasons a cause was left out are
-records too (:class:`.decide.Reason`, a cause's own :class:`.effects.Refusal`). Still words
-here: each cause's labels (``label``, ``everyday``, ``short``, ``meaning``, what
-``within_sample`` calls it), which :func:`.effects.in_words` and the sentences read.
+records too (:class:`.decide.Reason`, a cause's own :class:`.effects.Refusal`), and so is
+where the speed's resolution came from (:class:`.sampling.CountFrom`). Each cause's words (its
+label, what a student is told, its two or three words) are its row of
+:data:`~minseg_tui.lab.views.check_says.CAUSE_WORDS`, which
+:func:`~minseg_tui.lab.views.check_says.in_words` reads: the model holds no sentence.
 """
 
 from minseg_tui.model.check.figures import Gain

@@ -155,8 +155,8 @@ only the whitened residual; a rival matches the speed itself far better."""
 @dataclass(frozen=True)
 class Reason:
     """Why a clear cause was left out (``kind``), with what its sentence needs: the bound's
-    ``side``; the cause's own ``refusal``; what the cause is (``what``, 'a delay') and its
-    time ``value`` against the sample period ``ts`` (s); how far it moves the simulated
+    ``side``; the cause's own ``refusal``; the cause that acts within a sample (``cause``) and
+    its time ``value`` against the sample period ``ts`` (s); how far it moves the simulated
     speed (``shown``, rad/s, held over ``rows`` samples) against the noise there
     (``level``), the speed it reaches (``top``) or the share of the others' (``share``);
     the other causes concerned (``causes``)."""
@@ -164,7 +164,7 @@ class Reason:
     kind: ReasonKind
     side: str = ""
     refusal: Refusal | None = None
-    what: str = ""
+    cause: str = ""
     value: float = 0.0
     ts: float = 0.0
     shown: float = 0.0
@@ -265,9 +265,8 @@ def _why_not(
             return Reason("refused", refusal=refusal)
     if _raw_sse(prob, f) > base_raw:
         return Reason("worse_raw")
-    what = BY_CAUSE[cause].within_sample
-    if what and f.value(cause) < SUB_SAMPLE * prob.ts:
-        return Reason("within_sample", what=what, value=f.value(cause), ts=prob.ts)
+    if BY_CAUSE[cause].within_sample and f.value(cause) < SUB_SAMPLE * prob.ts:
+        return Reason("within_sample", cause=cause, value=f.value(cause), ts=prob.ts)
     shown = effect(prob, f, cause)
     level = held_noise(prob, f)
     if shown < level:

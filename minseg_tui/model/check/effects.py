@@ -5,8 +5,11 @@ T w' = -w + K u; several can act at once. A :class:`Candidate` holds all of one 
 contract names (the cause and its parameter: the JSON contract, never renamed), the
 :class:`~.simulate.Effects` field it sets and the value at which it is absent, its search
 range on a log (worked out from the log's steps, levels and time constant), where the
-search starts, what a log needs to show it, the sentence of its evidence, and its words for
-people. :data:`CANDIDATES` is the list; nothing else lists the causes.
+search starts, what a log needs to show it, and what its evidence reads off a log (its own
+:class:`Shown` record). :data:`CANDIDATES` is the list; nothing else in the model lists the
+causes. Its words (a label, its sentences) are made outside the model, by
+:mod:`minseg_tui.lab.views.check_says` (:data:`~minseg_tui.lab.views.check_says.CAUSE_WORDS`
+and one branch of ``shown()``).
 
 Six causes are modes of the motor, coupled to each other, and simulated together in closed
 form by :mod:`.simulate` (their ``field``). A cause that acts on the input can bring its own
@@ -183,12 +186,13 @@ class Candidate:
 
     cause / param / unit: contract names (the cause, its parameter) and the parameter's
     unit; field: the :class:`Effects` field it sets (K = 1 units: V, s, V/s); null: the
-    value at which it is absent (0, 1 or infinity); meaning: one sentence of what it is;
-    log_scale: searched on a log scale; label: a few words for people; everyday: what a
-    student who has not met it is told; short: two or three words ('with ... added').
+    value at which it is absent (0, 1 or infinity); log_scale: searched on a log scale. What
+    it is, in a sentence, is the entry's docstring; its words for people (a label, what a
+    student who has not met it is told, two or three words) are its row of
+    :data:`minseg_tui.lab.views.check_says.CAUSE_WORDS`, outside the model.
 
     range: its search range on a log; starts: the start values of its field; needs: what
-    a log must hold to show it (None: every log); words: the sentence of its evidence;
+    a log must hold to show it (None: every log); words: what its evidence reads off a log;
     scale: the unit of a linear search axis, 'V' (the log's largest |u|) or 's' (ts);
     reported: the contract parameter from the field and K (default: the field itself);
     nonlinear: the wheel stops, coasts or is capped (an extra pole on the drive and one on
@@ -201,14 +205,10 @@ class Candidate:
     unit: str
     field: str
     null: float
-    meaning: str
     range: Callable[[Shape], Range]
     starts: Callable[[Seen], list[float]]
     words: Words
     log_scale: bool = False
-    label: str = ""
-    everyday: str = ""
-    short: str = ""
     needs: ev.Needs | None = None
     scale: str = "s"
     reported: Callable[[float, float], float] = lambda value, K: value
@@ -247,10 +247,9 @@ class Candidate:
     refuse: Callable[[Judged], Refusal | None] | None = None
     """Its own reason it cannot be named in a fit although clear (None: it can), tested
     before the test of the speed's own error."""
-    within_sample: str = ""
+    within_sample: bool = False
     """Its parameter is a time, and one under :data:`.decide.SUB_SAMPLE` of the sample period
-    is not named (it acts inside the first sample): what it is in words ('a delay'); '' no
-    such test."""
+    is not named (it acts inside the first sample); False: no such test."""
     lag: bool = False
     """It holds the response back after a step (a delay, a pole, an average): at the sample
     period, with a second cause beside it, one such cause can stand in for another."""
@@ -328,24 +327,17 @@ COULOMB_FRICTION = Candidate(
     "V",
     "u_c",
     0.0,
-    "dry friction: the motor needs u_c volts to break away, and a wheel left to itself stops "
-    "in finite time",
     range=lambda s: Range(0.0, 0.98 * s.u_min, False),
     starts=_friction_starts,
     words=lambda log, f, floor: coulomb_words(log, f),
-    label="dry friction",
-    everyday=(
-        "dry friction in the gearbox and the brushes: a constant braking torque, so the "
-        "wheel stops sooner than the model says (the model only knows a friction that "
-        "shrinks with the speed)"
-    ),
-    short="dry friction",
     needs=ev.NEEDS_TWO_LEVELS,
     scale="V",
     nonlinear=True,
     hidden=Hidden(0.1, 0.4, lambda p, v: replace(p, tau_c=v * p.motor.k_a / p.motor.R)),
     stop=ev.stands_still,
 )
+"""Dry friction: the motor needs u_c volts to break away, and a wheel left to itself stops in
+finite time."""
 
 
 def _delay_starts(s: Seen) -> list[float]:
@@ -387,21 +379,16 @@ DEAD_TIME = Candidate(
     "s",
     "delay",
     0.0,
-    "a pure delay between command and motor",
     range=lambda s: Range(0.0, max(0.8 * s.shortest, 3.0 * s.ts), False),
     starts=_delay_starts,
     words=lambda log, f, floor: dead_time_words(log, f),
-    label="dead time",
-    everyday=(
-        "a delay: the motor answers a little after the command, as if the voltage arrived late"
-    ),
-    short="a delay",
     needs=ev.NEEDS_RISE,
     claim=Claim("second_pole", ("second_pole", "velocity_filter")),
     hidden=Hidden(0.010, 0.060, lambda p, v: replace(p, dead_time=v)),
-    within_sample="a delay",
+    within_sample=True,
     lag=True,
 )
+"""A pure delay between command and motor."""
 
 
 @dataclass(frozen=True)
@@ -458,16 +445,10 @@ VELOCITY_FILTER = Candidate(
     "samples",
     "taps",
     1.0,
-    "the measured speed is a moving average of the Euler velocity over N samples",
     # an average longer than a short stretch still shows, as a ramp cut off by the next step
     range=lambda s: Range(1.0, float(min(40, s.rows_long)), False),
     starts=lambda s: [1.0],
     words=filter_words,
-    label="averaged speed (velocity filter)",
-    everyday=(
-        "the logged speed is an average over several samples, which turns every jump into a ramp"
-    ),
-    short="an averaged speed",
     needs=ev.NEEDS_RISE,
     counted=True,
     smooth=lambda ext: "filters",
@@ -475,6 +456,7 @@ VELOCITY_FILTER = Candidate(
     refuse=_filter_refuse,
     lag=True,
 )
+"""The measured speed is a moving average of the Euler velocity over N samples."""
 
 
 @dataclass(frozen=True)
@@ -535,17 +517,10 @@ COAST_ON_ZERO = Candidate(
     "s",
     "T_coast",
     math.inf,
-    "at zero command the bridge is open and the wheel coasts with its own time constant",
     range=lambda s: Range(max(0.5 * s.T, 0.002), 30.0, True),
     starts=lambda s: [s.T * f for f in (1.5, 3.0, 8.0)] + [1.0, 5.0],
     words=lambda log, f, floor: coast_words(log, f),
     log_scale=True,
-    label="coasting at zero command",
-    everyday=(
-        "at 0 V the driver lets the wheel spin freely instead of braking it, so it runs down "
-        "at its own pace, not at the pace of a braked motor"
-    ),
-    short="coasting at 0 V",
     needs=ev.NEEDS_DROP_TO_ZERO,
     nonlinear=True,
     stop=ev.drops_to_zero,
@@ -559,6 +534,7 @@ COAST_ON_ZERO = Candidate(
         Refusal("no_slower") if j.fit.value("coast_on_zero") < COAST_RATIO * j.fit.T else None
     ),
 )
+"""At zero command the bridge is open and the wheel coasts with its own time constant."""
 
 
 def _pole_smooth(ext: Fit) -> Alike:
@@ -652,17 +628,9 @@ SECOND_POLE = Candidate(
     "s",
     "T2",
     0.0,
-    "an extra pole delays the torque (the armature's L/R, a driver's own lag) or lags the "
-    "reading (a compliant coupling to the encoder, a first-order filter of the speed)",
     range=lambda s: Range(0.0, 3.0 * s.T, False),
     starts=lambda s: [s.T * f for f in (0.1, 0.25, 0.5, 0.9)],
     words=lambda log, f, floor: pole_words(log, f),
-    label="second pole",
-    everyday=(
-        "the current needs time to build up in the motor's winding, so the speed starts "
-        "rising gently instead of at once"
-    ),
-    short="a slow current build-up",
     needs=ev.NEEDS_RISE,
     flags=("pole_measured", "pole_filtered", "pole_driver"),
     ways=_pole_ways,
@@ -670,9 +638,11 @@ SECOND_POLE = Candidate(
     claim=Claim("dead_time", ("dead_time",)),
     smooth=_pole_smooth,
     hidden=Hidden(0.010, 0.040, lambda p, v: replace(p, T2=v)),
-    within_sample="a pole",
+    within_sample=True,
     lag=True,
 )
+"""An extra pole delays the torque (the armature's L/R, a driver's own lag) or lags the reading
+(a compliant coupling to the encoder, a first-order filter of the speed)."""
 
 
 @dataclass(frozen=True)
@@ -768,16 +738,10 @@ CURRENT_LIMIT = Candidate(
     "rad/s^2",
     "rate",
     math.inf,
-    "the drive caps the current, so the speed ramps at a_max (less what the wheel's own "
-    "drag takes as it speeds up) until the back-EMF takes over (on some drives braking "
-    "after a step down is capped too)",
     range=_cap_range,
     starts=_cap_starts,
     words=lambda log, f, floor: limit_words(log, f),
     log_scale=True,
-    label="current limit",
-    everyday="the driver limits the current, so the wheel can only speed up so fast at first",
-    short="a current limit",
     needs=ev.NEEDS_RISE,
     reported=lambda value, K: abs(K) * value,  # a_max = |K| rate
     nonlinear=True,
@@ -789,6 +753,9 @@ CURRENT_LIMIT = Candidate(
     hidden=Hidden(20.0, 60.0, lambda p, v: replace(p, i_max=v * p.motor.J / p.motor.k_a)),
     again=Again("coulomb_friction", _cap_beside_friction),
 )
+"""The drive caps the current, so the speed ramps at a_max (less what the wheel's own drag
+takes as it speeds up) until the back-EMF takes over (on some drives braking after a step
+down is capped too)."""
 
 
 CANDIDATES: tuple[Candidate, ...] = (
@@ -804,15 +771,6 @@ CANDIDATES: tuple[Candidate, ...] = (
 BY_CAUSE: dict[str, Candidate] = {c.cause: c for c in CANDIDATES}
 
 NAMES: tuple[str, ...] = tuple(c.cause for c in CANDIDATES)
-
-
-def in_words(model: str) -> str:
-    """A model or cause name in words: "first_order+coulomb_friction" -> "first order + dry
-    friction"; ``none`` stays "none"."""
-    return " + ".join(
-        "first order" if p == "first_order" else (BY_CAUSE[p].label if p in BY_CAUSE else p)
-        for p in model.split("+")
-    )
 
 
 PARAM_UNITS: dict[str, str] = {"T": "s", "K": "rad/s/V", **{c.param: c.unit for c in CANDIDATES}}

@@ -96,10 +96,6 @@ def before_s(log: Log, s: Fall) -> float:
     return float(log.t[s.row] - log.t[s.row - s.rows])
 
 
-def ms(x: float) -> str:
-    return f"{x * 1e3:.0f} ms"
-
-
 def stands_still(s: Fall) -> bool:
     """The wheel stands still within the stretch after the step-down ``s``."""
     return s.after is not None

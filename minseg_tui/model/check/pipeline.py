@@ -65,7 +65,7 @@ from minseg_tui.model.check.result import (
     fit_percent,
     rmse,
 )
-from minseg_tui.model.check.sampling import Sampling, sampling, scatter
+from minseg_tui.model.check.sampling import CountFrom, Sampling, sampling, scatter
 from minseg_tui.model.optimize import golden
 from minseg_tui.model.runlog import problem
 
@@ -136,7 +136,7 @@ def check(
     head = full.head(MAX_FIT_ROWS)
     base = fit_baseline(head, rng0)
     moving = an.moving_rows(y)
-    count = samp.resolution if samp.resolution_how.startswith("# cpr") else 0.0
+    count = samp.resolution if samp.count_from is CountFrom.CPR else 0.0
     wild = an.find_wild(y - base.predict(full), 1, moving=moving, count=count or 0.0)
     if wild:
         full, head, base = _repaired(full, y - base.predict(full), wild, 1, rng0)
@@ -154,7 +154,7 @@ def check(
         found, restarts = dist.restarted(found, u, early=False)
         full, head, base = _fenced(full, found, rng0, restarts)
 
-    from_cpr = samp.resolution_how.startswith("# cpr")
+    from_cpr = samp.count_from is CountFrom.CPR
     log = Log(
         t,
         u,
@@ -745,7 +745,7 @@ def _finding(
     full: Problem,
     alts: list[tuple[Fit, float]] | None = None,
 ) -> Finding:
-    floor = samp.floor if samp.resolution_how.startswith("# cpr") else None
+    floor = samp.floor if samp.count_from is CountFrom.CPR else None
     taps = ext.effects.taps
     caveats: list[Caveat] = []
     # a candidate stopped by its bounds matters where the model does not explain the log

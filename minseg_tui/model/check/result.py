@@ -54,6 +54,10 @@ class Says(Protocol):
         """How the log was sampled, in words."""
         ...
 
+    def resolution_how(self, s: Sampling) -> str:
+        """Where the speed's resolution came from, in words ('' when unknown)."""
+        ...
+
     def where(self, devs: list[Deviation]) -> str:
         """Where the first-order model deviates most, in words."""
         ...
@@ -333,7 +337,9 @@ class CheckResult:
             },
             "anomalies": [a.to_dict(says.anomaly(a)) for a in self.anomalies],
             "rows": int(self.t.size),
-            "sampling": self.sampling.to_dict(says.sampling(self.sampling))
+            "sampling": self.sampling.to_dict(
+                says.sampling(self.sampling), says.resolution_how(self.sampling)
+            )
             if self.sampling
             else None,
             "lead": self.lead.to_dict(says.lead_why(self.lead)) if self.lead else None,

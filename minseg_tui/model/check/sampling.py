@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from enum import Enum
 
 import numpy as np
 from numpy.typing import NDArray
@@ -32,6 +33,18 @@ REGULAR = 0.05
 """A clock whose intervals spread less than this share (robust sd) is regular."""
 
 
+class CountFrom(Enum):
+    """Where the speed's resolution (one count per nominal period) came from: the header's
+    ``# cpr:`` line, the lattice that each speed times its own interval lies on (one count in
+    rad), the lattice that the speeds themselves lie on, or nowhere (unknown). Worded in
+    :func:`minseg_tui.lab.views.check_says.resolution_how`."""
+
+    CPR = "cpr"
+    INTERVAL_LATTICE = "interval_lattice"
+    SPEED_LATTICE = "speed_lattice"
+    UNKNOWN = "unknown"
+
+
 @dataclass(frozen=True)
 class Sampling:
     """How the log was sampled (see the module docstring). Times in s, speeds in rad/s.
@@ -41,8 +54,9 @@ class Sampling:
     interval_min/max: shortest and longest interval; jitter: robust sd of the intervals;
     regular: the clock is regular (so long intervals are lost samples); lost: samples
     lost; gap_row: the row after the longest gap (None without); resolution: one count per
-    nominal period (None: unknown); resolution_how: where it came from; smooth: the speed is
-    smooth from sample to sample (not a difference of counts).
+    nominal period (None: unknown); count_from: where it came from (:class:`CountFrom`), with
+    the header's ``cpr`` (counts per revolution, None unless it came from there); smooth: the
+    speed is smooth from sample to sample (not a difference of counts).
     """
 
     ts: float
@@ -55,7 +69,8 @@ class Sampling:
     lost: int
     gap_row: int | None
     resolution: float | None
-    resolution_how: str
+    count_from: CountFrom
+    cpr: int | None
     smooth: bool
 
     @property
@@ -70,15 +85,16 @@ class Sampling:
         divides)."""
         if self.floor is None:
             return None
-        return self.floor / taps if self.resolution_how.startswith("# cpr") else self.floor
+        return self.floor / taps if self.count_from is CountFrom.CPR else self.floor
 
     @property
     def angle_floor(self) -> float | None:
         """Noise of the angle itself, rad: one count / sqrt 12."""
         return None if self.resolution is None else self.resolution * self.ts / math.sqrt(12.0)
 
-    def to_dict(self, text: str) -> dict[str, object]:
-        """How the log was sampled as JSON, ``text`` in words."""
+    def to_dict(self, text: str, resolution_how: str) -> dict[str, object]:
+        """How the log was sampled as JSON, ``text`` in words and ``resolution_how``: where
+        the resolution came from, in words."""
         return {
             "ts": self.ts,
             "omega_over": "interval" if self.over_interval else "nominal",
@@ -89,7 +105,7 @@ class Sampling:
             "regular": self.regular,
             "lost_samples": self.lost,
             "resolution": self.resolution,
-            "resolution_how": self.resolution_how,
+            "resolution_how": resolution_how,
             "noise_floor": self.floor,
             "smooth": self.smooth,
             "text": text,
@@ -171,16 +187,15 @@ def sampling(
     else:
         over, how = _divides_by_interval(y, rel, u), "detected"
     q = lat_int if over else lat_nom
+    resolution: float | None
     if cpr is not None and cpr > 0:
-        resolution, res_how = 2.0 * math.pi / cpr / ts, f"# cpr: {cpr}"
+        resolution, count_from = 2.0 * math.pi / cpr / ts, CountFrom.CPR
     elif q is not None and over and not even:
-        resolution = q / ts
-        res_how = f"each speed times its interval lies on a lattice of {q:.3g} rad, one count"
+        resolution, count_from = q / ts, CountFrom.INTERVAL_LATTICE
     elif q is not None:
-        resolution = q / ts
-        res_how = f"the speeds lie on a lattice of {resolution:.3g} rad/s"
+        resolution, count_from = q / ts, CountFrom.SPEED_LATTICE
     else:
-        resolution, res_how = None, ""
+        resolution, count_from = None, CountFrom.UNKNOWN
     smooth = resolution is None and _smooth(y, u)
     return Sampling(
         ts=ts,
@@ -193,7 +208,8 @@ def sampling(
         lost=lost,
         gap_row=gap_row,
         resolution=resolution,
-        resolution_how=res_how,
+        count_from=count_from,
+        cpr=cpr if count_from is CountFrom.CPR else None,
         smooth=smooth,
     )
 
