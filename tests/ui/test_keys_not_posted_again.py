@@ -4,9 +4,9 @@ character moved the focus into an entry, the form under a palette that a key ahe
 opened: now the palette opens before the app reads the keys after Ctrl+P) reaches the
 widget focused now through Textual's own ways: it goes on up to the app, which runs that
 widget's binding, or, a character or a key for the step's form, by a plain call. Before,
-such a key was posted again as a new Key event (three places in ui/). Each test records every Key event the app's widgets handle (``message_hook``) and asks that
-they are the very events the burst sent, and that the keys did what the same keys typed one
-at a time do."""
+such a key was posted again as a new Key event (three places in ui/). Each test records
+every Key event the app's widgets handle (``message_hook``) and asks that they are the very
+events the burst sent, and that the keys did what the same keys typed one at a time do."""
 
 from __future__ import annotations
 
