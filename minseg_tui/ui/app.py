@@ -6,7 +6,7 @@ binds into each screen it makes: ``device`` (who we talk to), ``link`` (its stat
 counters), ``motor``, ``requested`` (the voltage set with F3), ``meter`` (the virtual
 multimeter), ``run_progress`` (the Task 10 run being recorded) and ``written`` (where the
 report's files are); and ``lab_changed``, a signal published whenever the session changed. It answers
-the requests that need the device (:class:`VoltageRequested`, :class:`RunRequested`, F2, F8).
+the requests that need the device (:class:`RunRequested`, F2, F3 through the lab screen, F8).
 
 The device is opened in a worker; a second worker drains it every 50 ms into the bounded
 live buffer (and into the Task 10 procedure, :class:`~minseg_tui.lab.state.task10.Task10`, which
@@ -31,6 +31,7 @@ from pathlib import Path
 from typing import Any
 
 from textual import on, work
+from textual.actions import SkipAction
 from textual.app import App, SystemCommand
 from textual.binding import Binding
 from textual.command import CommandPalette
@@ -68,7 +69,6 @@ from minseg_tui.ui.messages import (
     SamplesArrived,
     StepShown,
     Task10Moved,
-    VoltageRequested,
 )
 from minseg_tui.ui.panels.report import written_in
 from minseg_tui.ui.screens.boardcheck import (
@@ -85,6 +85,9 @@ from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewh
 from minseg_tui.ui.screens.start import StartScreen, split_names
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import after_typed_keys
+
+WORD_KEYS = ("ctrl+left", "ctrl+right")
+"""Panel keys that are a text entry's word moves as well: in an entry they move by word."""
 
 ReportWriter = Callable[[Session], Sequence[Path]]
 """Writes a session's report into its folder; the files written (the CLI hands in
@@ -176,10 +179,16 @@ class LabApp(App[None]):
     CSS_PATH = "lab.tcss"
     BINDINGS = [
         *app_bindings(),
-        # the step's form runs them itself, in the order typed (F4 has captured and moved
-        # on before the reading typed after it arrives); in an entry, the arrows with Alt or
-        # Ctrl stay its word moves
-        *[Binding(keys, action, label, show=bool(label)) for keys, action, label, _ in PANEL_KEYS],
+        # with priority, as the app reads them, once the keys ahead of them are handled
+        # (after_typed_keys: F4 has captured and moved on before the reading typed after it
+        # arrives); in an entry, the arrows with Alt or Ctrl stay its word moves
+        *[
+            Binding(key, f"{action}(True)", show=False, priority=True)
+            if key in WORD_KEYS
+            else Binding(key, action, label, show=bool(label), priority=True)
+            for keys, action, label, _ in PANEL_KEYS
+            for key in keys.split(",")
+        ],
         *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
     ]
 
@@ -366,11 +375,14 @@ class LabApp(App[None]):
 
     async def action_start_lab(self) -> None:
         """Enter on the start screen: open the lab it asks for, and return once the lab shows
-        its step (the keys typed after Enter wait for it and land in the lab)."""
+        its step (the keys typed after Enter wait for it and land in the lab); what was typed
+        in the boxes before it, in the same burst, is in them first."""
+        await after_typed_keys(self, self._start_lab)
+
+    async def _start_lab(self) -> None:
         screen = self.screen
         if not isinstance(screen, StartScreen):
             return
-        await screen.typed()
         wanted = screen.request()
         if isinstance(wanted, StartScreen.NewSession):
             await self._new(wanted)
@@ -403,7 +415,9 @@ class LabApp(App[None]):
             return
         self.session = Shared(session)
         self.lab_changed.subscribe(self, lambda _: self._saved_or_not())
-        screen = LabScreen(self.session, self.live, self.lab_changed, self.config.refresh)
+        screen = LabScreen(
+            self.session, self.live, self.lab_changed, self.set_voltage, self.config.refresh
+        )
         switched = self.switch_screen(
             screen.data_bind(
                 LabApp.device,
@@ -747,17 +761,15 @@ class LabApp(App[None]):
         self.notify(text, title="no counts", severity="warning", timeout=15)
 
     # -- what the panels ask for ------------------------------------------------------------
-    @on(VoltageRequested)
-    def _set_voltage(self, event: VoltageRequested) -> None:
-        """F3: the voltage on the motor."""
-        event.stop()
+    def set_voltage(self, level: float) -> None:
+        """F3: ``level`` V on the motor (the lab screen asks, for its step's panel)."""
         device = self._device
         if device is None:
             self.notify("no device: setting a voltage needs the board or the virtual MinSeg")
             return
-        self._command("voltage", partial(device.set_voltage, event.level))
-        self.requested = event.level
-        self.motor = f"{event.level:g} V"
+        self._command("voltage", partial(device.set_voltage, level))
+        self.requested = level
+        self.motor = f"{level:g} V"
 
     @on(RunRequested)
     def _run_requested(self, event: RunRequested) -> None:
@@ -1000,7 +1012,20 @@ class LabApp(App[None]):
             self.action_save_elsewhere()
 
     # -- actions -------------------------------------------------------------------------
-    def action_help(self) -> None:
+    async def action_help(self) -> None:
+        """F1: the keys, after the keys typed before it (those typed after it go to the help)."""
+        self._not_past_a_modal()
+        await after_typed_keys(self, self._help)
+
+    def _not_past_a_modal(self) -> None:
+        """F1 and F8 act behind no modal screen, as Textual keeps the app's other bindings:
+        bound with priority, they would reach past it. Skipped, the key goes on to the modal
+        screen (F1 on the help closes it, its own binding)."""
+        if self.screen.is_modal:
+            raise SkipAction()
+
+    def _help(self) -> None:
+        self._store_typed()
         if not isinstance(self.screen, HelpScreen):
             self.push_screen(HelpScreen(KEYS))
 
@@ -1079,11 +1104,24 @@ class LabApp(App[None]):
             return screen is not None and screen.offers(action)
         return True
 
-    # a panel key's binding, whatever has the focus: the step panel's own action runs
-    async def _panel_key(self, action: str) -> None:
-        screen = self._lab_screen()
-        if screen is not None:
+    # a panel key's binding, whatever has the focus: the step panel's own action runs, after
+    # the keys typed before it (what stands in the entries stored first)
+    async def _panel_key(self, action: str, word_key: bool = False) -> None:
+        """``word_key``: the key is a text entry's word move too (Ctrl+arrows), and does
+        that in an entry."""
+
+        async def run() -> bool:
+            screen = self._lab_screen()
+            if screen is None:
+                return True
+            if word_key and screen.pane.typing is not None:
+                return False  # in a text entry: its word move (the form's key)
+            screen.store_typed()
             await screen.run_panel_key(action)
+            return True
+
+        if await after_typed_keys(self, run) is False:
+            raise SkipAction()  # Textual hands the key on to the widget focused now
 
     async def action_set_voltage(self) -> None:
         await self._panel_key("set_voltage")
@@ -1103,11 +1141,11 @@ class LabApp(App[None]):
     async def action_zoom_next(self) -> None:
         await self._panel_key("zoom_next")
 
-    async def action_pick_prev(self) -> None:
-        await self._panel_key("pick_prev")
+    async def action_pick_prev(self, word_key: bool = False) -> None:
+        await self._panel_key("pick_prev", word_key)
 
-    async def action_pick_next(self) -> None:
-        await self._panel_key("pick_next")
+    async def action_pick_next(self, word_key: bool = False) -> None:
+        await self._panel_key("pick_next", word_key)
 
     async def action_reveal(self) -> None:
         await self._panel_key("reveal")
@@ -1117,7 +1155,14 @@ class LabApp(App[None]):
         if self._lab_screen() is not None:
             self.notify(f"{what} is not part of this step", severity="information")
 
-    def action_export(self) -> None:
+    async def action_export(self) -> None:
+        """F8: the report, after the keys typed before it (what they typed stored first)."""
+        self._not_past_a_modal()
+        await after_typed_keys(self, self.export)
+
+    def export(self) -> None:
+        """Write the report of the session as it stands now (in a worker)."""
+        self._store_typed()
         if self.session is None:
             self.notify("start or resume a session first", severity="warning")
             return
@@ -1233,7 +1278,7 @@ class LabApp(App[None]):
         yield SystemCommand(
             "Export report",
             "Markdown, HTML and CSV into the session folder (F8)",
-            self.action_export,
+            self.export,
         )
         yield SystemCommand(
             "Save the session to another folder",
@@ -1258,7 +1303,7 @@ class LabApp(App[None]):
                 "Use the virtual MinSeg instead of the board",
                 self.switch_to_virtual,
             )
-        yield SystemCommand("Keys", "The help screen (F1)", self.action_help)
+        yield SystemCommand("Keys", "The help screen (F1)", self._help)
 
     def on_unmount(self) -> None:
         self._stop.set()

@@ -38,7 +38,7 @@ class Key:
 
 
 KEYMAP: tuple[Key, ...] = (
-    Key("F1", "this help", "f1", "help", "Help"),
+    Key("F1", "this help", "f1", "help", "Help", priority=True),
     Key(
         "F2", "STOP the motor (works everywhere, always)", "f2", "stop_motor", "STOP", priority=True
     ),
@@ -82,7 +82,7 @@ KEYMAP: tuple[Key, ...] = (
         "Formula",
         panel="a table formula",
     ),
-    Key("F8", "export the report (Markdown, HTML, CSV)", "f8", "export", "Export"),
+    Key("F8", "export the report (Markdown, HTML, CSV)", "f8", "export", "Export", priority=True),
     Key(
         "F9",
         "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)",

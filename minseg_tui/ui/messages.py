@@ -3,9 +3,10 @@
 From the app's workers to the app: :class:`DeviceOpened`, :class:`SamplesArrived`,
 :class:`LinkEventArrived`, :class:`MeterRead`, :class:`MotorKnown`, :class:`Task10Moved`,
 :class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the
-screen up: the requests (:class:`VoltageRequested`, :class:`RunRequested` for the app, which
-drives the device; :class:`CaptureRequested`, :class:`LogImportRequested` for the lab screen,
-which holds the session's entries) and :class:`StepShown`.
+screen up: the requests (:class:`RunRequested` for the app, which drives the device;
+:class:`VoltageRequested`, :class:`CaptureRequested`, :class:`LogImportRequested` for the lab
+screen, which holds the session's entries, and has the app put a voltage on the motor) and
+:class:`StepShown`.
 """
 
 from __future__ import annotations
@@ -86,10 +87,12 @@ class Task10Moved(Message):
 
 @dataclass
 class VoltageRequested(Message):
-    """F3: put ``level`` V on the motor (posted to the app itself: a key typed after F3 runs
-    on the app's queue behind it, and sees the new level)."""
+    """F3: put ``level`` V on the motor; ``done`` is set once the lab screen has had the app
+    do it (the key waits for it: the app reads the keys typed after F3 only then, and they
+    see the new level; posted to the app, the request waited in its queue behind them)."""
 
     level: float
+    done: asyncio.Event = field(default_factory=asyncio.Event, compare=False, repr=False)
 
 
 @dataclass

@@ -1,12 +1,12 @@
 """No key is posted a second time (issue 19, item 1): a key handed to a widget that no longer
 has the focus (the step's form after Shift+Tab to the list of steps, the list after a
 character moved the focus into an entry, the form under a palette that a key ahead of it
-opened) reaches the widget focused now through Textual's own ways: it goes on up to the
-app, which runs that widget's binding, or, a character or a key for the step's form, by a
-plain call. Before, such a key was posted again as a new Key event (three places in ui/).
-Each test records every Key event the app's widgets handle (``message_hook``) and asks that
-they are the very events the burst sent, and that the keys did what the same keys typed one
-at a time do."""
+opened: now the palette opens before the app reads the keys after Ctrl+P) reaches the
+widget focused now through Textual's own ways: it goes on up to the app, which runs that
+widget's binding, or, a character or a key for the step's form, by a plain call. Before,
+such a key was posted again as a new Key event (three places in ui/). Each test records
+every Key event the app's widgets handle (``message_hook``) and asks that they are the very
+events the burst sent, and that the keys did what the same keys typed one at a time do."""
 
 from __future__ import annotations
 
@@ -72,8 +72,9 @@ async def test_keys_after_shift_tab_out_of_the_step_are_not_posted_again(quiet):
 
 async def test_keys_after_ctrl_p_go_into_the_palette_without_being_posted_again(quiet):
     """'Ctrl+P task 6' in one burst: the characters the form was handed before the palette
-    opened went to its search box as new events; they are now typed into the box as it types
-    a character it reads, and Backspace goes on up to the app, which runs the box's binding."""
+    opened went to its search box as new events. Ctrl+P is now a priority binding whose
+    action waits for the keys ahead of it and opens the palette before the app reads the keys
+    after it, so they go to its search box as the app reads them, once each."""
     keys = Keys()
     app = quiet()
     async with app.run_test(size=(80, 24), message_hook=keys.hook) as pilot:

@@ -126,14 +126,16 @@ class LivePanel(Vertical, PanelKeys):
             return "capture_omega" in self.step.actions
         return True
 
-    def action_set_voltage(self) -> None:
-        """F3: ask the app for the next of this step's voltages (on its own queue, where the
-        keys typed after F3 run their bindings next: F4 captures at the new level)."""
+    async def action_set_voltage(self) -> None:
+        """F3: ask the lab screen for the next of this step's voltages, and wait until the app
+        has set it: the keys typed after F3 see the new level (F4 captures at it)."""
         if not self.levels:
             self.notify("no voltage to set on this step (Tasks 4-5)")
             return
         k = -1 if self.requested not in self.levels else self.levels.index(self.requested)
-        self.app.post_message(VoltageRequested(self.levels[(k + 1) % len(self.levels)]))
+        request = VoltageRequested(self.levels[(k + 1) % len(self.levels)])
+        if self.screen.post_message(request):
+            await request.done.wait()
 
     async def action_capture(self) -> None:
         """F4: ask the lab screen to take omega_ss from the settled window (refused while not

@@ -43,6 +43,7 @@ from minseg_tui.ui.messages import (
     LogImportRequested,
     RevealRequested,
     StepShown,
+    VoltageRequested,
 )
 from minseg_tui.ui.panels.connect import ConnectPanel
 from minseg_tui.ui.panels.live import LivePanel
@@ -480,7 +481,7 @@ class StepList(OptionList):
         if self.highlighted is None or self.highlighted > 0:
             super().action_cursor_up()
 
-    async def on_key(self, event: events.Key) -> None:
+    def on_key(self, event: events.Key) -> None:
         screen = self.screen
         if isinstance(screen, LabScreen) and event.is_printable and event.character:
             if screen.pane.typing_row() is not None and not screen.readonly:
@@ -497,7 +498,7 @@ class StepList(OptionList):
             # elsewhere, the key goes on up to the app, which runs that widget's binding.
             pane = screen.pane
             if focused is pane or pane in focused.ancestors:
-                await pane.type_key(event)
+                pane.type_key(event)
 
 
 class StepCommands(Provider):
@@ -583,12 +584,14 @@ class LabScreen(StatusScreen):
     """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves.
 
     ``session`` is the open session, ``live`` the buffer the device worker fills,
-    ``lab_changed`` the app's signal that the session changed (published here too), and
-    ``refresh`` the live plots' redraw period (s). The app binds the reactive attributes."""
+    ``lab_changed`` the app's signal that the session changed (published here too),
+    ``set_voltage`` the app's way to put a voltage (V) on the motor (F3's request, handled
+    here), and ``refresh`` the live plots' redraw period (s). The app binds the reactive
+    attributes."""
 
     BINDINGS = [
         # the screen's before any widget's (priority: a list or a table has its own PgDn),
-        # except the step's form's, which runs them itself in the order typed
+        # run once the keys typed before them are handled (after_typed_keys)
         Binding("pagedown,ctrl+n", "next_step", "Next step", priority=True),
         Binding("pageup,ctrl+b", "prev_step", "Prev step", show=False, priority=True),
         Binding("tab", "into_step(1)", show=False),
@@ -611,10 +614,12 @@ class LabScreen(StatusScreen):
         session: Shared[Session],
         live: LiveBuffer,
         lab_changed: Signal[None],
+        set_voltage: Callable[[float], None],
         refresh: float = 0.25,
     ) -> None:
         super().__init__()
         self.session = session
+        self._set_voltage = set_voltage
         with session as s:
             self.readonly = s.readonly
             """A damaged session opened to be read only: nothing typed is stored."""
@@ -706,7 +711,7 @@ class LabScreen(StatusScreen):
         typed after it act on the result)."""
         panel = self.panel
         if panel is not None and self.offers(action):
-            await self.app.run_action(action, panel)
+            await panel.run_action(action)
 
     def _panel_for(self, step: Step) -> Widget | None:
         """The panel of ``step``'s kind (None for steps that only take entries), bound to the
@@ -1055,6 +1060,16 @@ class LabScreen(StatusScreen):
         self._changed()
         if result.ok:  # next comes the multimeter reading at the same voltage
             self.focus_after(f"omega_ss@{level:g}")
+
+    @on(VoltageRequested)
+    def _voltage(self, event: VoltageRequested) -> None:
+        """F3: the app puts the voltage on the motor, now (a plain call: the app reads the
+        keys typed after F3 once this is done)."""
+        event.stop()
+        try:
+            self._set_voltage(event.level)
+        finally:
+            event.done.set()
 
     @on(RevealRequested)
     def _reveal(self, event: RevealRequested) -> None:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import asyncio
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -109,15 +108,6 @@ class StartScreen(StatusScreen):
         if why:
             return f"{s.path}: {why}" + (" (Enter opens it read-only)" if s.damaged else "")
         return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {step_name(s.last_step)}"
-
-    async def typed(self) -> None:
-        """Wait until the keys handed to the focused box before the Enter being handled (the
-        app's, before any widget's) are in it: the names typed in the same burst."""
-        focused = self.focused
-        if focused is not None:
-            done = asyncio.Event()
-            if focused.call_later(done.set):
-                await done.wait()
 
     def request(self) -> StartScreen.NewSession | StartScreen.Resume | None:
         """What Enter asks for where the focus is: a new session (in the names' or the date's

@@ -7,7 +7,6 @@ import asyncio
 import re
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import contextmanager, nullcontext
-from functools import partial
 from inspect import isawaitable
 from typing import Literal
 
@@ -22,7 +21,7 @@ from textual.reactive import reactive
 from textual.strip import Strip
 from textual.style import Style as VisualStyle
 from textual.widget import Widget
-from textual.widgets import Input, Label
+from textual.widgets import Label
 from textual.widgets.input import Selection
 
 from minseg_tui.lab.content.steps import Field
@@ -820,9 +819,16 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     Enter hands the row to the lab (``store``, a plain call: the verdict is there before the
     next key) and moves on if it was accepted; on a list of answers the arrows, Space and
     Enter act on the list and a tick goes to the lab at once (``choose``, a plain call too);
-    Tab and Shift+Tab move between the rows and the step's other focusable widgets, and any
-    other key runs its binding here, after what was typed before it is stored and before
-    the keys typed after it. The rows' boxes and lists never take the focus.
+    Tab and Shift+Tab move between the rows and the step's other focusable widgets. The rows'
+    boxes and lists never take the focus.
+
+    These keys are the form's own, handled in its key handler as Input handles the
+    characters typed into it: Textual runs a widget's bindings only once its key has bubbled
+    up to the app, behind the keys typed after it, which the widget has handled by then.
+    Any other key goes on up to the app, which runs its binding as Textual does; the keys
+    that must act between the keys typed before and after them (PgDn, the F-keys, Ctrl+P)
+    are bound with priority, and their actions wait until the form has handled the keys
+    ahead of them (:func:`after_typed_keys`) and store what stands in the rows first.
 
     ``current`` is the row the keys go to (None: the step itself, at its top; the arrows
     scroll it). Keys a focused widget of the step (a plot, a table) passes up, and
@@ -1033,17 +1039,20 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         self.move_focus(delta, None)
 
     # -- keys ------------------------------------------------------------------------------
-    async def on_key(self, event: events.Key) -> None:
+    def on_key(self, event: events.Key) -> None:
         """Every key handed to the form, in the order typed (see the class)."""
-        await self.type_key(event)
+        self.type_key(event)
 
-    async def type_key(self, event: events.Key) -> None:
+    def type_key(self, event: events.Key) -> None:
         """A key for the form, handled now: one the app handed the form, or one the list of
         steps read after a key ahead of it moved the focus into the step (it calls this, a
-        plain call in its own queue, where the keys typed after it wait)."""
+        plain call in its own queue, where the keys typed after it wait). A key that is not
+        the form's goes on up to the app, which runs its binding (Textual's own way, from
+        the widget focused then); the keys bound to act in the order typed (PgDn, the
+        F-keys, Ctrl+P) never come here: the app runs them as it reads them, once the keys
+        ahead of them are handled (:func:`after_typed_keys`)."""
         if self.app.screen is not self.screen:
-            await self._hand_over(event)
-            return
+            return  # handed over before a key ahead of it opened another screen
         focused = self.screen.focused
         if focused is not self:
             self._passed_on(event, focused)
@@ -1056,7 +1065,7 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             return
         row = self.typing
         if row is not None:
-            if await self._edit(row, event):
+            if self._edit(row, event):
                 self._own(event)
             return
         answers = self.answering
@@ -1066,10 +1075,8 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         if event.is_printable and event.character and self.typing_row() is not None:
             self._own(event)
             self.take(event.character)
-            return
-        await self._binding(event)
 
-    async def _edit(self, row: FieldRow, event: events.Key) -> bool:
+    def _edit(self, row: FieldRow, event: events.Key) -> bool:
         """A key typed into ``row``; False: not one the row takes (a binding's)."""
         key = event.key
         box = row.input
@@ -1093,39 +1100,7 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         if event.is_printable and event.character:
             box.type_text(event.character)
             return True
-        return await self._binding(event)
-
-    async def _binding(self, event: events.Key) -> bool:
-        """Run the key's binding (of the screen or the app; not the form's own) once what
-        stands in the current row is stored, and wait for it: the keys typed after it wait
-        in the form's queue. It runs on the app's queue, as Textual runs a binding (what it
-        posts goes up from there)."""
-        bound = self.screen.active_bindings.get(event.key)
-        if bound is None or bound.node is self or not bound.enabled:
-            return False
-        self._own(event)
-        await self._act(partial(self.app.run_action, bound.binding.action, bound.node))
-        return True
-
-    def in_turn(self, work: Callable[[], object]) -> None:
-        """Run ``work`` (a key's action) after the keys the form was handed so far and
-        before those it is handed next, as :meth:`_binding` runs a key's binding."""
-        self.call_later(self._act, work)
-
-    async def _act(self, work: Callable[[], object]) -> None:
-        """Store what stands in the current row, then run ``work`` on the app's queue and wait
-        for it: the keys typed after it wait in the form's queue."""
-        self.store_pending()
-        done = asyncio.Event()
-
-        async def run() -> None:
-            try:
-                await _done(work())
-            finally:
-                done.set()
-
-        if self.app.call_later(run):
-            await done.wait()
+        return False
 
     def _passed_on(self, event: events.Key, focused: Widget | None) -> None:
         """A key the form did not get as the focused widget: passed up by a widget of the
@@ -1147,29 +1122,6 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             if self.typing_row() is not None and not self.readonly:
                 self._own(event)
                 self.take(event.character)
-
-    async def _hand_over(self, event: events.Key) -> None:
-        """A key handed to the form before a key ahead of it opened another screen over the
-        lab (Ctrl+P, F1): it goes to that screen, as the app would have sent it there had the
-        screen opened at once. A priority binding of it runs; a character goes into the text
-        box focused there, as the box puts a character it reads (replacing what it holds
-        selected); any other key goes on up to the app, which runs the binding of the widget
-        focused there (Enter, Backspace, ↓ in the palette), as Textual runs a key's binding.
-        'Ctrl+P Task 5' in one burst put 'Task 5' into the entry under the palette (walk
-        7). No key is posted again."""
-        screen = self.app.screen
-        bound = screen.active_bindings.get(event.key)
-        if bound is not None and bound.enabled and bound.binding.priority:
-            self._own(event)
-            await self.app.run_action(bound.binding.action, bound.node)
-            return
-        box = screen.focused
-        if event.is_printable and event.character and isinstance(box, Input):
-            self._own(event)
-            if box.selection.is_empty:
-                box.insert_text_at_cursor(event.character)
-            else:
-                box.replace(event.character, *box.selection)
 
     def _binds(self, focused: Widget, key: str) -> bool:
         """A widget of the step from ``focused`` up to the form (not the form) binds ``key``
@@ -1198,30 +1150,33 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         event.prevent_default()
 
 
-async def after_typed_keys(app: App[None], work: Callable[[], object]) -> None:
-    """Run ``work``, the action of a key bound with priority (F2, Ctrl+P, Ctrl+Q, PgDn,
-    PgUp: keys that act on every screen, over any widget), after the keys typed before it.
+async def after_typed_keys(app: App[None], work: Callable[[], object]) -> object:
+    """Run ``work``, the action of a key bound with priority (F2, Ctrl+P, Ctrl+Q, PgDn, the
+    panel keys: keys that act on every screen, over any widget), after the keys typed before
+    it.
 
     Textual runs a priority binding on the app's queue the moment the app reads its key,
     while each key read before it was handed to the queue of the widget focused then, where
-    it may still wait ('5,3 F2' stopped the motor before 5,3 was in its box). So with the
-    step form focused (which runs its keys' bindings on the app's queue and waits for them),
-    ``work`` joins the form's queue behind those keys (:meth:`FieldForm.in_turn`); with any
-    other widget focused (the list of steps, which hands the characters typed on it to the
-    form by a plain call), the app waits until that widget has handled what it was handed,
-    then runs ``work``. The keys typed after it wait for ``work`` either way."""
+    it may still wait ('5,3 F2' stopped the motor before 5,3 was in its box). So the app
+    waits until that widget has handled what it was handed (a key that moved the focus on:
+    the widget focused now, too), then runs ``work``. The app reads no key while it waits,
+    so the keys typed after it go where ``work`` left the focus (the palette's box, the next
+    step's entry). The widgets' key handlers never wait for the app, so this cannot wait
+    for itself. Returns what ``work`` returns."""
+    waited: set[int] = set()
     focused = app.focused
-    if isinstance(focused, FieldForm):
-        focused.in_turn(work)
-        return
-    if focused is not None:
+    while focused is not None and id(focused) not in waited:
+        waited.add(id(focused))
         handled = asyncio.Event()
-        if focused.call_later(handled.set):  # False: it is being removed, its keys with it
-            await handled.wait()
-    await _done(work())
+        if not focused.call_later(handled.set):  # it is being removed, its keys with it
+            break
+        await handled.wait()
+        focused = app.focused
+    return await _done(work())
 
 
-async def _done(result: object) -> None:
-    """Wait for ``result`` if it is awaitable (an action may be async or not)."""
+async def _done(result: object) -> object:
+    """``result``, awaited if it is awaitable (an action may be async or not)."""
     if isawaitable(result):
-        await result
+        return await result
+    return result
