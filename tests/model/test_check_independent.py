@@ -674,3 +674,28 @@ def test_a_stalls_spike_through_a_filter_of_the_speed_column_is_an_artefact_not_
     # the sentence names the gap it follows, not the next interval
     assert f"right after a gap of {gap_ms} ms" in anomaly(art[0])
     assert "a hand on it" not in text(r)
+
+
+def test_a_miss_inside_a_reversals_transient_is_judged_against_the_steps_size():
+    # tuning pair seed 5 of a delay with a pole (the logger's filter of the speed column):
+    # 8 rows into the response to a reversal from -4.2 V to 1.33 V (about 100 rad/s) the
+    # model misses by 1.4 rad/s, while it passes through -43 rad/s. Against the level of
+    # that stretch (the median of a speed crossing zero) that was 4.8 % and a hand; against
+    # the step it is 1.4 %, the model's miss inside a transient
+    log = make(5, ("dead_time", "second_pole"))
+    assert log.touch is None
+    r = check(log.t, log.u, log.omega)
+    assert "disturbance" not in kinds(r), text(r)
+    assert "a hand on it" not in text(r)
+
+
+def test_a_departure_the_model_chosen_at_the_end_follows_is_no_disturbance():
+    # tuning pair seed 4 of a 24-tap average with a coast: 14 rows into a rise from a coast
+    # the first pass's model (a delay, a coast and a pole) missed the speed by 6.6 rad/s (10 %)
+    # and the rows were fenced as a hand's; the average chosen after them follows those rows
+    # (it does not find them when it is judged there), so no hand is reported
+    log = make(4, ("velocity_filter", "coast_on_zero"))
+    assert log.touch is None
+    r = check(log.t, log.u, log.omega)
+    assert "disturbance" not in kinds(r), text(r)
+    assert "coast_on_zero" in named(r) and "velocity_filter" in named(r)

@@ -111,6 +111,7 @@ def find(
     own_level: bool = True,
     carry: int = 0,
     recover: int = 0,
+    transient: int = 0,
 ) -> list[Disturbance]:
     """Disturbances in the settled part of every driven stretch (see the module docstring).
 
@@ -121,7 +122,11 @@ def find(
     rows (a model that fits: a long disturbance cannot shift its own reference); ``carry``:
     rows the measured speed carries a disturbance on after it ends (an average over that
     many samples); ``recover``: rows at most the wheel takes to rejoin the model after a
-    disturbance lets go (see :func:`rejoin`).
+    disturbance lets go (see :func:`rejoin`); ``transient``: rows after a step while the
+    model's response to it has not settled. A departure there is judged against the size
+    of the step (the change of the model's speed across it, rad/s) where that is larger
+    than the stretch's level: what a model misses inside a transient grows with the step,
+    and a reversal's transient passes through a level near zero.
     """
     spans = _spans(u, settle)
     ts = float(np.median(np.diff(t))) if t.size > 1 else 0.0
@@ -142,7 +147,14 @@ def find(
         if thr <= 0:
             continue
         sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")
-        out_rows = np.abs(sm) > thr
+        limit = np.full(seg.size, thr)
+        edges = np.flatnonzero(np.diff(u[: a0 + 1]) != 0)
+        step = int(edges[-1]) + 1 if edges.size else 0
+        if step > 0 and transient > 0:
+            jump = abs(float(pred[b - 1]) - float(pred[step - 1]))
+            inside = max(0, min(seg.size, step + transient - a0))
+            limit[:inside] = np.maximum(limit[:inside], share * jump)
+        out_rows = np.abs(sm) > limit
         k = 0
         while k < out_rows.size:
             if not out_rows[k]:
