@@ -699,3 +699,20 @@ def test_a_departure_the_model_chosen_at_the_end_follows_is_no_disturbance():
     r = check(log.t, log.u, log.omega)
     assert "disturbance" not in kinds(r), text(r)
     assert "coast_on_zero" in named(r) and "velocity_filter" in named(r)
+
+
+@pytest.mark.parametrize("cause", ["dead_time", "coast_on_zero", "current_limit"])
+def test_a_hand_at_fast_sampling_is_looked_for_over_half_its_shortest_hold(cause):
+    # tuning seed 1044: 10 ms samples, Euler speed of 360 counts a turn (1.75 rad/s a count),
+    # a hand of 0.16 s that slows the wheel by about 1.7 rad/s (11 %). Through a running mean
+    # of three rows (30 ms) the counts' noise hid it (threshold 2.1 rad/s); left in, the
+    # hand's rows made the delay read as an average (dead_time: velocity_filter named, the
+    # same log with the hand's torque at 0 names the delay). Over 75 ms (7 rows) it shows
+    log = make(1044, (cause,), touch=True)
+    assert log.touch is not None and log.ts == 0.01
+    r = check(log.t, log.u, log.omega)
+    hands = [a for a in r.anomalies if a.kind == "disturbance"]
+    assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.15, text(r)
+    assert named(r) == [cause]
+    control = make(1044, (cause,), touch=True, hand_torque=0.0)
+    assert named(check(control.t, control.u, control.omega)) == [cause]

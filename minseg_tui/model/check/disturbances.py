@@ -4,12 +4,13 @@ It sits inside a stretch of constant input, after the response to the step has s
 starts and ends abruptly, and leaves the rest of the log fitting well. It is found from
 the residual of a model within those stretches (after the step has settled, or, against a
 model that follows the steps, from a few rows after it), against the stretch's own level
-and the noise: a run of rows whose running mean departs by more than ``MIN_SHARE`` of the
-speed there and ``SIGMAS`` times the noise of that mean, with quiet rows before it. Its rows
-are fenced off (left out of the fit, and never turned into a cause) together with its onset
-before them and the wheel's recovery after them: the rows until the model meets the data
-again, within ``CALM`` times the residual's own spread in the settled stretches, across a
-step of the input if the recovery runs on past one. A wheel a hand let go of comes back
+and the noise: a run of rows whose running mean (over ``SMOOTH`` rows, at least
+``SMOOTH_S``) departs by more than ``MIN_SHARE`` of the speed there and ``SIGMAS`` times the
+noise of that mean, with quiet rows before it. Its rows are fenced off (left out of the
+fit, and never turned into a cause) together with its onset before them and the wheel's
+recovery after them: the rows until the model meets the data again, within ``CALM`` times
+the residual's own spread in the settled stretches, across a step of the input if the
+recovery runs on past one. A wheel a hand let go of comes back
 with the motor's own time constant from a speed the model does not know; left in, that
 recovery is a slow error that the whitened residual (a leaky sum, much like an angle)
 carries on for seconds, into the comparison of the causes.
@@ -39,7 +40,11 @@ SIGMAS = 5.0
 """...and by this many times the noise of a mean over ``SMOOTH`` rows."""
 
 SMOOTH = 3
-"""Rows of the running mean the residual is looked at through."""
+"""Rows of the running mean the residual is looked at through, at least..."""
+
+SMOOTH_S = 0.075
+"""...and over at least this long (s; half the shortest hold of a hand, ``HAND``): at fast
+sampling three rows hold too little of a hand to lift it above the noise of counts."""
 
 MIN_ROWS = 3
 """...for at least this many rows."""
@@ -81,6 +86,12 @@ class Disturbance:
     @property
     def fence_start(self) -> int:
         return self.start if self.since < 0 else min(self.start, self.since)
+
+
+def smooth_rows(ts: float) -> int:
+    """Rows of the running mean a departure is looked for through at the sample period ``ts``
+    (s): ``SMOOTH``, or as many as ``SMOOTH_S`` holds."""
+    return max(SMOOTH, int(SMOOTH_S / ts + 1e-6)) if ts > 0 else SMOOTH
 
 
 def settle_rows(T: float, delay: float, taps: int, ts: float) -> int:
@@ -135,6 +146,7 @@ def find(
         if ts > 0
         else MIN_SHARE
     )
+    smooth = smooth_rows(ts)
     common = float(np.median(np.concatenate([residual[a0:b] for a0, b in spans]))) if spans else 0.0
     levels = [float(np.median(residual[a0:b])) if own_level else common for a0, b in spans]
     band = _calm_band(residual, spans, levels, noise)
@@ -143,10 +155,10 @@ def find(
         seg = residual[a0:b]
         dev = seg - level
         speed = float(np.median(np.abs(pred[a0:b])))
-        thr = max(SIGMAS * noise / math.sqrt(SMOOTH), share * speed)
+        thr = max(SIGMAS * noise / math.sqrt(smooth), share * speed)
         if thr <= 0:
             continue
-        sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")
+        sm = np.convolve(dev, np.ones(smooth) / smooth, mode="same")
         limit = np.full(seg.size, thr)
         edges = np.flatnonzero(np.diff(u[: a0 + 1]) != 0)
         step = int(edges[-1]) + 1 if edges.size else 0
@@ -166,6 +178,11 @@ def find(
             if j - k + 1 >= MIN_ROWS and k >= MIN_ROWS:
                 quiet = 2.0 * noise + 0.25 * thr
                 s = k
+                # a mean longer than SMOOTH rows crosses that many rows more ahead of the
+                # departure: from the first of them the departure itself reaches quiet in
+                ahead = min(k + (smooth - SMOOTH) // 2, j)
+                while s < ahead and abs(dev[s]) <= quiet:
+                    s += 1
                 while s > 0 and abs(dev[s - 1]) > quiet:
                     s -= 1
                 e = j

@@ -489,7 +489,7 @@ def _report(
     # a hand is reported from where the speed leaves the model, but no further back from
     # where its departure crossed the threshold than the wheel's own time constant (a
     # braked wheel slows with it), an average and a running mean reach
-    reach = ext.effects.taps + dist.SMOOTH + math.ceil(ext.T / samp.ts)
+    reach = ext.effects.taps + dist.smooth_rows(samp.ts) + math.ceil(ext.T / samp.ts)
     anomalies += [
         an.disturbance(
             t,
