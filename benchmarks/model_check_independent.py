@@ -441,8 +441,12 @@ filter of the speed column, 2 glitch rows) is the hand's: the control names the 
 (T2 52 ms, true 52), the touched log a 4-tap average. Its first pass, with the hand's rows
 in, names nothing; the choice after the fence names the average. Neither the noise read
 without the fenced rows (1.07 -> 0.80 rad/s; the control's 0.76) nor the unrelaxed noise
-test nor a restart that starts the logger's filter settled on the departure changes that:
-not kept, the cause not found.
+test nor a restart that starts the logger's filter settled on the departure changes that
+(not kept). Two controls place it: the hand-free log with the same rows fenced names the
+pole (T2 52.3 ms), and so does the touched log without the restart where the hand let go
+(its rows fenced until the wheel rejoins the model; T2 52.6 ms). So the restart (s27-hands)
+lets the average in on this log; why the 4-tap average follows the restarted rows better
+than the filter was not found.
 """
 
 from __future__ import annotations
