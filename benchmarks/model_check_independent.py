@@ -386,6 +386,67 @@ CPU per log (check only) median 1.57 s, max 12.34 s (load average 12-16 on two c
 The hand failures' kinds (a lag swap, a cap beside an average, friction beside a cap) were
 not worked on. analyze on the ten real logs: the same text; 0.58-2.70 s CPU per log,
 median 1.01 s (Python start included).
+
+s31-check (616ef68 and the commit after it; changed on tuning seeds only, the held-out seeds
+run once, at the end): (1) a departure inside the response to a step (the model's rise rows)
+is judged against the step's size, the change of the model's speed across it, where that is
+larger than the stretch's level (a reversal's transient passes through a level near zero),
+and the disturbances found against a first pass's model are judged again against the model
+chosen with their rows fenced: one it follows is dropped and the causes are chosen again on
+the rows left (tuning dead_time + second_pole 5: a 1.4 rad/s miss 8 rows into a 100 rad/s
+reversal; velocity_filter + coast_on_zero 4: a miss 14 rows into a rise from a coast, found
+against a delay and a pole, which the average chosen after follows). (2) A hand is looked
+for through a running mean of at least 75 ms (dist.SMOOTH_S, half the shortest hold), not
+three rows: at 10 ms samples of a 360-count encoder three rows left a 0.16 s hand that slowed
+the wheel by 11 % under the counts' noise (tuning seed 1044), and the hand's rows, left in,
+turned the delay into an average (dead_time 1044: velocity_filter named, the same log with
+the hand's torque at 0, physics_gen.make(hand_torque=0), names the delay). Only logs sampled
+faster than 18.75 ms change. Tuning: pairs (--tuning --seeds 10 --only pairs, 150 logs)
+untouched logs with a disturbance 2 -> 0, seeds 0-4 otherwise unchanged (right 86.7 %, right
+or honestly ambiguous 93.3 %, ambiguous in all 6.7 %, confidently wrong 6.7 %); the 66
+touched logs at 10 ms among seeds 1000-1079 (every cause and none) 62 -> 65 right (dead_time,
+coast_on_zero, current_limit 1044 gained, none lost) and 6 -> 0 second reports of one hand;
+the 60 untouched pair logs at 10 ms of seeds 11, 14, 21 and 23 and the 14 singles at 10 ms
+named and reported exactly as before (0 disturbances). Held-out (--seeds 5 --touch-seeds 5):
+pairs right 77.3 -> 77.3 %, honestly ambiguous 16.0 -> 16.0 % (right or honestly ambiguous
+93.3 -> 93.3 %), ambiguous in all 17.3 -> 17.3 %, confidently wrong 5.3 -> 5.3 % (4 of 75),
+untouched logs with a disturbance 1 -> 0; CPU per log (check only) median 0.77 s, max 4.82 s
+(load average 11-12 on two cores); singles 33 of 35 named alone, 0 disturbances; a hand found
+with the cause kept 16 -> 16 of 20: the same four fail (dead_time 901000 and second_pole
+901001 named velocity_filter, now with the hand found at 10 ms and 25 ms, so not the missed
+hand fixed here; velocity_filter 901001 with a cap beside it; current_limit 901002 with a
+friction and its hand 0.66 s early). benchmarks/model_check.py --seeds 10 --skip-hour: single
+causes 70 of 70, 0 false alarms of 10, analyze 0.55-0.68 s CPU per log (Python start
+included). Not met: hands >= 90 % (80 %) and confidently wrong <= 5 % (5.3 %). The confidently
+wrong tuning logs (13 of 150 on seeds 0-9) have no rival near: the true pair leaves 2.7 times
+the chosen model's whitened residual (dead_time + current_limit 6, named cap + pole) and 8
+times its plain speed error (velocity_filter + current_limit 8, named cap + delay); a cap is
+not named beside a pole on the driver or the inductance (second_pole + current_limit 1, 4;
+on seed 1 the check's model with the true a_max never caps, s28-pairs); a logger's filter of
+a column not judged smooth is fitted as a lag of the angle, its T2 read about half a sample
+short (coulomb_friction + second_pole 9, second_pole + current_limit 9). No calibrated
+threshold makes those honest ties.
+benchmarks/model_check_pairs.py --seeds 5 --touch-seeds 10, run side by side with 4b80504:
+pairs 74 -> 74 of 75 right (second_pole + current_limit 3004, its cap not named, both), a hand
+found with the cause kept 67 -> 68 of 70 (velocity_filter 4005 no longer names a friction
+beside the average; velocity_filter 4000, its hand not found, and current_limit 4003, a pole
+beside the cap, fail on both); CPU per log median 0.32 s both.
+On the hands that are left, tuning touched logs of a delay and a pole (seeds 1080-1159, 51
+logs) with their controls (hand_torque=0): 10 fail, 9 of them wrong on the control too: a
+pole on the inductance named an average or a delay with T a third of the truth (1081, 1106,
+1124, 1129, 1138, 1147, 1158; the complex pair of poles of s28-pairs, with or without a hand,
+the single decision's business), a cap beside a delay (1080) and a filter of the speed column
+at 10 ms (1153, its hand not found, the control named an average). second_pole 1150 (a logger's
+filter of the speed column, 2 glitch rows) is the hand's: the control names the pole
+(T2 52 ms, true 52), the touched log a 4-tap average. Its first pass, with the hand's rows
+in, names nothing; the choice after the fence names the average. Neither the noise read
+without the fenced rows (1.07 -> 0.80 rad/s; the control's 0.76) nor the unrelaxed noise
+test nor a restart that starts the logger's filter settled on the departure changes that
+(not kept). Two controls place it: the hand-free log with the same rows fenced names the
+pole (T2 52.3 ms), and so does the touched log without the restart where the hand let go
+(its rows fenced until the wheel rejoins the model; T2 52.6 ms). So the restart (s27-hands)
+lets the average in on this log; why the 4-tap average follows the restarted rows better
+than the filter was not found.
 """
 
 from __future__ import annotations

@@ -333,13 +333,15 @@ def make(
     touch: bool = False,
     artefacts: bool | None = None,
     measured_pole: bool | None = None,
+    hand_torque: float = 1.0,
 ) -> PhysLog:
     """A seeded log holding ``causes`` (contract names, at most one pole and one filter),
     parameters drawn from ranges wider than the check was tuned on. touch: a hand brakes the
     wheel for 0.15-0.3 s in a settled driven stretch. artefacts: a stall with a skewed
     timestamp and/or switch-on glitch rows (None: drawn, each in about one log in four).
     measured_pole: put second_pole on the measurement (coupling or IIR) instead of the drive
-    (None: drawn)."""
+    (None: drawn). hand_torque: the hand's torque is scaled by this (0: the same log, every
+    draw the same, with the hand's torque at 0: the control of what the hand does)."""
     rng = np.random.default_rng(seed)
     cset = set(causes)
     ts = float(rng.choice([0.01, 0.02, 0.025]))
@@ -486,7 +488,7 @@ def make(
             t0 = float(rng.uniform(lo, max(lo, hi)))
             dur = float(rng.uniform(0.15, 0.3))
             level = abs(vals[int(np.searchsorted(np.array(at), t0, side="right") - 1)])
-            torque = float(rng.uniform(0.25, 0.5)) * k * level / R
+            torque = float(rng.uniform(0.25, 0.5)) * k * level / R * hand_torque
             hand = (t0, t0 + dur, torque)
             touch_at = (t0, t0 + dur)
     # the load ripples: an AR(1) torque with a correlation time of 10-50 ms, 0.3-1.5 % of the

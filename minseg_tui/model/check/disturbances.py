@@ -4,12 +4,13 @@ It sits inside a stretch of constant input, after the response to the step has s
 starts and ends abruptly, and leaves the rest of the log fitting well. It is found from
 the residual of a model within those stretches (after the step has settled, or, against a
 model that follows the steps, from a few rows after it), against the stretch's own level
-and the noise: a run of rows whose running mean departs by more than ``MIN_SHARE`` of the
-speed there and ``SIGMAS`` times the noise of that mean, with quiet rows before it. Its rows
-are fenced off (left out of the fit, and never turned into a cause) together with its onset
-before them and the wheel's recovery after them: the rows until the model meets the data
-again, within ``CALM`` times the residual's own spread in the settled stretches, across a
-step of the input if the recovery runs on past one. A wheel a hand let go of comes back
+and the noise: a run of rows whose running mean (over ``SMOOTH`` rows, at least
+``SMOOTH_S``) departs by more than ``MIN_SHARE`` of the speed there and ``SIGMAS`` times the
+noise of that mean, with quiet rows before it. Its rows are fenced off (left out of the
+fit, and never turned into a cause) together with its onset before them and the wheel's
+recovery after them: the rows until the model meets the data again, within ``CALM`` times
+the residual's own spread in the settled stretches, across a step of the input if the
+recovery runs on past one. A wheel a hand let go of comes back
 with the motor's own time constant from a speed the model does not know; left in, that
 recovery is a slow error that the whitened residual (a leaky sum, much like an angle)
 carries on for seconds, into the comparison of the causes.
@@ -39,7 +40,11 @@ SIGMAS = 5.0
 """...and by this many times the noise of a mean over ``SMOOTH`` rows."""
 
 SMOOTH = 3
-"""Rows of the running mean the residual is looked at through."""
+"""Rows of the running mean the residual is looked at through, at least..."""
+
+SMOOTH_S = 0.075
+"""...and over at least this long (s; half the shortest hold of a hand, ``HAND``): at fast
+sampling three rows hold too little of a hand to lift it above the noise of counts."""
 
 MIN_ROWS = 3
 """...for at least this many rows."""
@@ -83,6 +88,12 @@ class Disturbance:
         return self.start if self.since < 0 else min(self.start, self.since)
 
 
+def smooth_rows(ts: float) -> int:
+    """Rows of the running mean a departure is looked for through at the sample period ``ts``
+    (s): ``SMOOTH``, or as many as ``SMOOTH_S`` holds."""
+    return max(SMOOTH, int(SMOOTH_S / ts + 1e-6)) if ts > 0 else SMOOTH
+
+
 def settle_rows(T: float, delay: float, taps: int, ts: float) -> int:
     """Rows after a step until the response has settled: 5 T plus the delay and the filter."""
     return max(3, int(math.ceil((5.0 * T + delay) / ts)) + taps)
@@ -111,6 +122,7 @@ def find(
     own_level: bool = True,
     carry: int = 0,
     recover: int = 0,
+    transient: int = 0,
 ) -> list[Disturbance]:
     """Disturbances in the settled part of every driven stretch (see the module docstring).
 
@@ -121,7 +133,11 @@ def find(
     rows (a model that fits: a long disturbance cannot shift its own reference); ``carry``:
     rows the measured speed carries a disturbance on after it ends (an average over that
     many samples); ``recover``: rows at most the wheel takes to rejoin the model after a
-    disturbance lets go (see :func:`rejoin`).
+    disturbance lets go (see :func:`rejoin`); ``transient``: rows after a step while the
+    model's response to it has not settled. A departure there is judged against the size
+    of the step (the change of the model's speed across it, rad/s) where that is larger
+    than the stretch's level: what a model misses inside a transient grows with the step,
+    and a reversal's transient passes through a level near zero.
     """
     spans = _spans(u, settle)
     ts = float(np.median(np.diff(t))) if t.size > 1 else 0.0
@@ -130,6 +146,7 @@ def find(
         if ts > 0
         else MIN_SHARE
     )
+    smooth = smooth_rows(ts)
     common = float(np.median(np.concatenate([residual[a0:b] for a0, b in spans]))) if spans else 0.0
     levels = [float(np.median(residual[a0:b])) if own_level else common for a0, b in spans]
     band = _calm_band(residual, spans, levels, noise)
@@ -138,11 +155,18 @@ def find(
         seg = residual[a0:b]
         dev = seg - level
         speed = float(np.median(np.abs(pred[a0:b])))
-        thr = max(SIGMAS * noise / math.sqrt(SMOOTH), share * speed)
+        thr = max(SIGMAS * noise / math.sqrt(smooth), share * speed)
         if thr <= 0:
             continue
-        sm = np.convolve(dev, np.ones(SMOOTH) / SMOOTH, mode="same")
-        out_rows = np.abs(sm) > thr
+        sm = np.convolve(dev, np.ones(smooth) / smooth, mode="same")
+        limit = np.full(seg.size, thr)
+        edges = np.flatnonzero(np.diff(u[: a0 + 1]) != 0)
+        step = int(edges[-1]) + 1 if edges.size else 0
+        if step > 0 and transient > 0:
+            jump = abs(float(pred[b - 1]) - float(pred[step - 1]))
+            inside = max(0, min(seg.size, step + transient - a0))
+            limit[:inside] = np.maximum(limit[:inside], share * jump)
+        out_rows = np.abs(sm) > limit
         k = 0
         while k < out_rows.size:
             if not out_rows[k]:
@@ -154,6 +178,11 @@ def find(
             if j - k + 1 >= MIN_ROWS and k >= MIN_ROWS:
                 quiet = 2.0 * noise + 0.25 * thr
                 s = k
+                # a mean longer than SMOOTH rows crosses that many rows more ahead of the
+                # departure: from the first of them the departure itself reaches quiet in
+                ahead = min(k + (smooth - SMOOTH) // 2, j)
+                while s < ahead and abs(dev[s]) <= quiet:
+                    s += 1
                 while s > 0 and abs(dev[s - 1]) > quiet:
                     s -= 1
                 e = j
