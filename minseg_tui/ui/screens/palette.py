@@ -33,3 +33,26 @@ class Palette(CommandPalette):
         if not self.is_current:
             event.stop()
             event.prevent_default()  # the palette's own handlers (a base class's) are not run
+
+    @on(Input.Submitted)
+    async def _enter_on_what_was_typed(self, event: Input.Submitted) -> None:
+        """Enter in the search box: wait until the search of the text typed before it is done,
+        so that Textual's own handler (run after this one) picks the best match of that text.
+
+        The search runs in a worker the box's every change starts anew; an Enter that came
+        with the query in one burst ('Ctrl+P names Enter') reached the palette while the
+        list still held the entries of an empty search, and ran the first of them:
+        Preparation 1, or the board check, which drives the motor (walk 10, D1). The box's
+        change of text reaches the palette before its Enter does (both pass up the same
+        queues), so the search running now is the search of what was typed."""
+        from contextlib import suppress
+
+        from textual.worker import WorkerCancelled
+
+        searches = [w for w in self.app.workers if w.node is self and not w.is_finished]
+        if searches:
+            with suppress(WorkerCancelled):  # Escape closed the palette meanwhile
+                await self.app.workers.wait_for_complete(searches)
+        if not self.is_current:  # closed meanwhile: nothing to run
+            event.stop()
+            event.prevent_default()

@@ -1,0 +1,84 @@
+"""Walk 10's defects (issue 20), each as the walk met it, at 80x24 with Pilot on a real
+session folder."""
+
+from __future__ import annotations
+
+import asyncio
+
+import pytest
+from textual.command import Hits, Provider
+
+from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.names import NamesScreen
+from tests.ui.fakes import QuietDevice
+from tests.ui.helpers import burst, goto, heard_notifications, settle, start, start_with_a_run
+
+
+class SlowSearch(Provider):
+    """A search that finds nothing and answers late (after many turns of the event loop, as
+    on a loaded machine): the keys of a burst are all read before it is done, whatever
+    the machine."""
+
+    TURNS = 500
+
+    async def search(self, query: str) -> Hits:
+        for _ in range(self.TURNS):
+            await asyncio.sleep(0)
+        for hit in ():
+            yield hit
+
+
+def _step(app) -> str:
+    with app.session as s:
+        return s.current_step
+
+
+@pytest.mark.parametrize(
+    ("at", "query", "lands", "slow"),
+    [
+        ("task11", "task 12", "task12", True),
+        ("task11", "task 14", "task14", True),
+        ("task10", "summary", "summary", True),
+        ("task2", "task 12", "task12", True),
+        ("task2", "task 12", "task12", False),
+    ],
+    ids=["task11-to-12", "task11-to-14", "task10-to-summary", "task2-to-12", "task2-to-12-as-is"],
+)
+async def test_palette_query_and_enter_in_one_burst_go_where_the_query_says(
+    quiet, monkeypatch, at, query, lands, slow
+):
+    """D1: 'Ctrl+P task 12 Enter' sent at once from Task 11's answer ran the board check
+    (the palette's first entry before the search was done), and from Task 10 every query
+    went to Preparation 1. Enter now goes where the typed text says; the motor is not
+    driven. With a slow search, the burst is read long before the search is done."""
+    if slow:
+        monkeypatch.setattr(LabScreen, "COMMANDS", LabScreen.COMMANDS | {SlowSearch})
+    device = QuietDevice(seed=1)
+    app = quiet(device)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, at)
+        said = heard_notifications(app)
+        before = list(device.commands)
+        await burst(pilot, "ctrl+p", *query, "enter")
+        await settle(pilot)
+        assert isinstance(app.screen, LabScreen)
+        assert _step(app) == lands
+        assert not [s for s in said if s.startswith("board check")]
+        assert device.commands == before  # the motor was not driven
+
+
+async def test_palette_names_and_enter_in_one_burst_opens_the_names_dialog(quiet):
+    """D1 at Task 2 (the board unpowered there): 'Ctrl+P names Enter' at once opened the
+    board check's result; now the names dialog opens and the motor stays off."""
+    device = QuietDevice(seed=1)
+    app = quiet(device)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task2")
+        said = heard_notifications(app)
+        await burst(pilot, "ctrl+p", *"names", "enter")
+        await settle(pilot)
+        assert isinstance(app.screen, NamesScreen)
+        assert not [s for s in said if s.startswith("board check")]
+        assert device.commands == []
+        assert _step(app) == "task2"
