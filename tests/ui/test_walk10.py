@@ -11,7 +11,15 @@ from textual.command import Hits, Provider
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import burst, goto, heard_notifications, settle, start, start_with_a_run
+from tests.ui.helpers import (
+    burst,
+    goto,
+    heard_notifications,
+    record_response_run,
+    settle,
+    start,
+    start_with_a_run,
+)
 
 
 class SlowSearch(Provider):
@@ -82,3 +90,29 @@ async def test_palette_names_and_enter_in_one_burst_opens_the_names_dialog(quiet
         assert not [s for s in said if s.startswith("board check")]
         assert device.commands == []
         assert _step(app) == "task2"
+
+
+def _text(app, selector: str) -> str:
+    return " ".join(str(app.screen.query_one(selector).render()).split())
+
+
+async def test_task11_with_a_run_and_no_u_ss_asks_for_the_u_ss_alone(quiet):
+    """D4 (walk 3 of walk 10): after F5 with the table empty, Task 11's plot said its results
+    'need the table of Tasks 4-9 filled' and the lines under it named R (Task 2) and a
+    complete row; the run's results need only a u_ss to divide by. Once u_ss at 4.5 V is
+    typed (R and i_ss still empty) they come."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        with app.session as s:
+            record_response_run(s)
+        await goto(pilot, "task11")
+        note, lines = _text(app, "#zoom-note"), _text(app, "#results-lines")
+        assert note.endswith("no results yet: needs u_ss at the steps' voltage (Task 4)"), note
+        assert lines == "no step result yet: needs u_ss at the steps' voltage (Task 4)", lines
+        with app.session as s:
+            s.enter("u_ss@4.5", "4,05")
+        await goto(pilot, "task12")
+        await goto(pilot, "task11")
+        assert "shown once you enter yours" in _text(app, "#results-lines")
+        assert "no results yet" not in _text(app, "#zoom-note")

@@ -850,7 +850,8 @@ class Session:
         """Whether the session has input ``name`` of
         :data:`~minseg_tui.lab.content.needs.INPUTS`: R, a complete row of the table, the
         run in use, the group's own omega_ss in the steps, K, a T (theirs or the run's 63 %
-        reading), and ``row``'s own u_ss, omega_ss and i_ss."""
+        reading), a u_ss for the run's steps (any row's), and ``row``'s own u_ss, omega_ss
+        and i_ss."""
         if name == "R":
             return self.value("R") is not None
         if name == "row":
@@ -860,6 +861,8 @@ class Session:
             )
         if name == "run":
             return self.response_run() is not None
+        if name == "u_ss@steps":
+            return bool(self.table_pairs())
         if name == "own.T":
             st = self.results().step
             return self.value(name) is not None or (st is not None and st.T_63 is not None)

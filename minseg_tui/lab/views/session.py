@@ -1084,7 +1084,9 @@ def results(session: Session, step_id: str) -> ResultsView:
         ts = log.ts if log is not None else 0.0
         rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
         shows = frozenset(k for k in lab_compare.ANSWERED_FIRST if k not in conceal)
-    problems = list(res.problems)
+    # without a step result, the table's problems are not why (K and T need only the run and a
+    # u_ss: ``waiting`` says what is missing); with one, J's line points to them
+    problems = list(res.problems if st_run is not None else res.run_problems)
     rule = policy(session)
     if rule.problem:
         problems.append(rule.problem)
