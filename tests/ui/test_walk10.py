@@ -116,3 +116,39 @@ async def test_task11_with_a_run_and_no_u_ss_asks_for_the_u_ss_alone(quiet):
         await goto(pilot, "task11")
         assert "shown once you enter yours" in _text(app, "#results-lines")
         assert "no results yet" not in _text(app, "#zoom-note")
+
+
+async def test_ctrl_r_with_nothing_computed_records_nothing_and_says_so(quiet):
+    """D5 (walk 10, walk 3): Ctrl+R on Task 11 with a run but no u_ss showed dashes, said
+    'computed values shown', and the session recorded both values as shown then; the report
+    later said they were revealed at that time. Now nothing is recorded, the notice says
+    what is missing; once u_ss is in, Ctrl+R shows and records them."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        with app.session as s:
+            record_response_run(s)
+        await goto(pilot, "task11")
+        said = heard_notifications(app)
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        assert said == [
+            "nothing to show yet: what this step computes needs u_ss at the steps' voltage "
+            "(Task 4); press Ctrl+R again once it is there"
+        ], said
+        assert "revealed before answering" not in _text(app, "#compare")
+        with app.session as s:
+            assert s.shown() == {} and s.revealed() == set()
+            s.enter("u_ss@4.5", "4,05")
+        await goto(pilot, "task12")
+        await goto(pilot, "task11")
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        assert said[-1].startswith("computed values shown"), said
+        assert "K = " in _text(app, "#results-lines")
+        with app.session as s:
+            assert s.revealed() == {"own.omega_step", "own.K"}
+            assert {k: v.by for k, v in s.shown().items()} == {
+                "own.omega_step": "reveal",
+                "own.K": "reveal",
+            }

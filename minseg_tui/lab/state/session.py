@@ -1016,9 +1016,17 @@ class Session:
 
     def reveal(self, step_id: str) -> list[str]:
         """Show the computed values of step ``step_id`` before the group answered them:
-        the fields so marked (saved; the report says "revealed before answering")."""
+        the fields so marked (saved; the report says "revealed before answering"). Only
+        those with a computed value now: one not computed yet cannot be shown, so it is
+        neither marked nor recorded as shown (walk 10, D5: a reveal with no u_ss showed
+        dashes, and the report said both values were revealed then)."""
         self._change()
-        keys = reveal_keys(lab_steps.step(step_id).fields, self.answered())
+        can = {
+            c.key
+            for c in self.comparisons(step_id)
+            if c.computed is not None or c.least_squares is not None
+        }
+        keys = [k for k in reveal_keys(lab_steps.step(step_id).fields, self.answered()) if k in can]
         if keys:
             self._data["revealed"] = sorted(self.revealed() | set(keys))
             self._note(keys, lab_shown.REVEAL)

@@ -1257,6 +1257,21 @@ def check(session: Session) -> CheckView:
     )
 
 
+def reveal_waits(session: Session, step_id: str) -> str:
+    """Why a lab assistant's reveal showed nothing on step ``step_id``: '' when none of its
+    values is hidden; else that they are not computed yet, and what the first waits for."""
+    keys = lab_compare.reveal_keys(step(step_id).fields, session.answered())
+    if not keys:
+        return ""
+    why = lab_needs.needs(waits_for(session, keys[0]))
+    if not why:
+        return "nothing to show yet: this step's values cannot be computed (the lines say why)"
+    return (
+        f"nothing to show yet: what this step computes {why}; press {REVEAL_KEY} again once "
+        "it is there"
+    )
+
+
 def note_drawn(session: Session, view: object) -> list[str]:
     """A view was drawn on the group's screen: record in ``session`` (the live one, not a
     snapshot) the computed values of Tasks 11-15 it showed for the first time, and by what:

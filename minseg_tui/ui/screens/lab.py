@@ -1062,8 +1062,9 @@ class LabScreen(StatusScreen):
         event.stop()
         with self.session as s:
             keys = s.reveal(event.step_id)
+            waiting = "" if keys else views.reveal_waits(s, event.step_id)
         if not keys:
-            self.notify("nothing hidden on this step", severity="information")
+            self.notify(waiting or "nothing hidden on this step", severity="information")
             return
         self.notify("computed values shown; the report says they were revealed before answering")
         self._changed()
