@@ -120,12 +120,13 @@ def alive_text(silent_s: float | None, virtual: bool) -> str:
     return f"silent {lasted}, answers again"
 
 
-PASSING_EVENTS = frozenset({"alive", "connected"})
-"""Link events whose words are good news: shown for :data:`TRANSIENT_SHOWN`, then the link's
-counters again ("board answers again" stayed on the line for the rest of a session)."""
+PASSING_EVENTS = frozenset({"alive", "connected", "square_wave_done"})
+"""Link events whose words are news, not a lasting state: shown for :data:`TRANSIENT_SHOWN`,
+then the link's counters again ("board answers again" stayed on the line for the rest of a
+session; so did "square wave done", through later runs: walk 10, D2)."""
 
 TRANSIENT_SHOWN = 3.0
-"""How long the status line shows good news about the link, s of board time (the samples'
+"""How long the status line shows news about the link, s of board time (the samples'
 clock: the line never changes while nothing comes)."""
 
 

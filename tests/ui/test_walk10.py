@@ -8,6 +8,7 @@ import asyncio
 import pytest
 from textual.command import Hits, Provider
 
+from minseg_tui.ui.app import TRANSIENT_SHOWN
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
 from tests.ui.fakes import QuietDevice
@@ -20,6 +21,7 @@ from tests.ui.helpers import (
     start,
     start_with_a_run,
 )
+from tests.ui.test_link_words import _event, _on_a_standing_wheel, _status, _stream
 
 
 class SlowSearch(Provider):
@@ -152,3 +154,16 @@ async def test_ctrl_r_with_nothing_computed_records_nothing_and_says_so(quiet):
                 "own.omega_step": "reveal",
                 "own.K": "reveal",
             }
+
+
+async def test_square_wave_done_gives_way_to_the_link_counters(quiet):
+    """D2 (walk 10, walk 3): after a run the top line said 'square wave done' for the rest of
+    the session, through later runs, and the link's counters never came back. It is news
+    now: shown for a few seconds of board time, then 'link ok · lost 0 · bad 0' again."""
+    async with _on_a_standing_wheel(quiet) as (pilot, dev, heard, seq):
+        app = pilot.app
+        seq = await _event(pilot, dev, heard, seq, "square_wave_done", "square wave done")
+        assert "square wave done" in _status(app)
+        seq = await _stream(pilot, dev, seq, TRANSIENT_SHOWN)
+        assert "square wave done" not in _status(app)
+        assert "link ok · lost 0 · bad 0" in _status(app)
