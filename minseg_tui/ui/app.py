@@ -53,7 +53,7 @@ from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import format_fixed
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
-from minseg_tui.ui.keys import app_bindings, help_lines
+from minseg_tui.ui.keys import FOOTER_ON, app_bindings, help_lines
 from minseg_tui.ui.live import LEVEL_TOL, LiveBuffer
 from minseg_tui.ui.messages import (
     BoardChecked,
@@ -1074,11 +1074,20 @@ class LabApp(App[None]):
             screen.store_typed()
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
-        """A panel key is live (and in the footer) only on the steps whose panel has it."""
+        """A panel key is live (and in the footer) only on the steps whose panel has it; a key
+        shown in the footer on some steps only (``in_footer``), only on those."""
         if action in PANEL_ACTIONS:
             screen = self._lab_screen()
             return screen is not None and screen.offers(action)
+        if action == "in_footer":
+            screen = self._lab_screen()
+            step = screen.pane.step if screen is not None else None
+            return step is not None and step.id in FOOTER_ON.get(str(parameters[0]), ())
         return True
+
+    async def action_in_footer(self, action: str) -> None:
+        """A key the footer shows on this step (F10 on Task 1): its own action."""
+        await self.run_action(action)
 
     # a panel key's binding, whatever has the focus: the step panel's own action runs
     async def _panel_key(self, action: str) -> None:

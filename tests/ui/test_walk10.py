@@ -11,6 +11,7 @@ from textual.command import Hits, Provider
 from minseg_tui.ui.app import TRANSIENT_SHOWN
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
+from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
     burst,
@@ -167,3 +168,31 @@ async def test_square_wave_done_gives_way_to_the_link_counters(quiet):
         seq = await _stream(pilot, dev, seq, TRANSIENT_SHOWN)
         assert "square wave done" not in _status(app)
         assert "link ok · lost 0 · bad 0" in _status(app)
+
+
+def _footer(app) -> list[str]:
+    footer = app.screen.query_one(KeyFooter)
+    return [f"{k.key_display} {k.description}".strip() for k in footer.query(KeyLabel) if k.display]
+
+
+async def test_task1_s_footer_shows_f10_which_works_on_every_step(quiet):
+    """D6: Task 1 asks for F10, but its footer showed 'pgdn Next step f1 Help f2 STOP f8
+    Export'; every other step shows its F-keys. F10 is in Task 1's footer now, and only
+    there, and it still runs the board check on any step (the app's priority key)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task1")
+        await settle(pilot)
+        assert "f10 Board check" in _footer(app), _footer(app)
+        await goto(pilot, "task2")
+        await settle(pilot)
+        assert not [k for k in _footer(app) if k.startswith("f10")], _footer(app)
+        for step_id in ("task1", "task2"):
+            await goto(pilot, step_id)
+            said = heard_notifications(app)
+            app.action_board_check = lambda said=said: said.append("F10")  # the check itself
+            await pilot.press("f10")
+            await settle(pilot)
+            assert said == ["F10"], (step_id, said)
+            del app.action_board_check
