@@ -7,7 +7,8 @@ from pathlib import Path
 
 from minseg_tui.lab.state.session import Session
 from minseg_tui.report.write import write_report
-from tests.report.test_own_first import _section
+from tests.report.test_own_first import _row, _section, _tables
+from tests.report.test_report import _session
 from tests.seeded import Clock, record_square_wave
 
 STEP = "Step response and model"
@@ -44,3 +45,22 @@ def test_a_table_of_u_ss_without_a_run_names_only_the_run_as_missing(tmp_path: P
             s.enter(f"u_ss@{level:g}", u)
         line = _no_step_result(_report(s))
     assert line == "No step result yet: needs a step run (Task 10).", line
+
+
+def _model_row(s: Session) -> dict[str, str]:
+    (table,) = _tables(_section(_report(s), STEP))
+    return _row(table, "the model (Task 14)")
+
+
+def test_the_group_s_model_stands_in_the_one_form_as_every_value_does(tmp_path: Path) -> None:
+    """D7 (walk 10): the group's model stood as typed ('0,057 omega' = -omega + 1,93 u_A')
+    while every other value of the table is normalised ('1,93' is 1.93 rad/s/V); the model
+    is now written T omega' = -omega + K u_A with the group's T and K as they typed them,
+    and a model written another way is given that way too, with the text typed."""
+    s = _session(tmp_path)
+    s.enter("own.model", "0,057 omega' = -omega + 1,93 u_A")
+    assert _model_row(s)["the group's value"] == "0.057 omega' = -omega + 1.93 u_A"
+    s.enter("own.model", "omega' = -omega/0,057 + 33,9 u_A")
+    mine = _model_row(s)["the group's value"]
+    s.close()
+    assert mine == "0.057 omega' = -omega + 1.932 u_A (typed \"omega' = -omega/0,057 + 33,9 u_A\")"
