@@ -6,7 +6,8 @@ from __future__ import annotations
 import asyncio
 
 import pytest
-from textual.command import Hits, Provider
+from textual.command import CommandInput, CommandPalette, Hits, Provider
+from textual.widgets import Input
 
 from minseg_tui.ui.app import TRANSIENT_SHOWN
 from minseg_tui.ui.screens.lab import LabScreen
@@ -196,3 +197,31 @@ async def test_task1_s_footer_shows_f10_which_works_on_every_step(quiet):
             await settle(pilot)
             assert said == ["F10"], (step_id, said)
             del app.action_board_check
+
+
+async def test_enter_queued_behind_many_changes_of_the_box_waits_for_the_last_search(quiet):
+    """D1 as the terminal gave it: the palette read the box's changes for 's', 'su', ...,
+    'summary' and the Enter one after the other, each change starting a search and
+    cancelling the one before; Enter came before any of those searches had run. Waiting
+    for them together ended at the first cancelled one, and Enter ran the list of the empty
+    search (the board check, from Task 12). Posted to the palette in one go, as they
+    reach it from the box."""
+    device = QuietDevice(seed=1)
+    app = quiet(device)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        said = heard_notifications(app)
+        await pilot.press("ctrl+p")
+        await settle(pilot, lambda: isinstance(app.screen, CommandPalette))
+        palette = app.screen
+        box = palette.query_one(CommandInput)
+        with box.prevent(Input.Changed):
+            box.value = "summary"
+        for n in range(1, len("summary") + 1):
+            palette.post_message(Input.Changed(box, "summary"[:n]))
+        palette.post_message(Input.Submitted(box, "summary"))
+        await settle(pilot)
+        assert isinstance(app.screen, LabScreen)
+        assert _step(app) == "summary"
+        assert not [s for s in said if s.startswith("board check")]
+        assert device.commands == []

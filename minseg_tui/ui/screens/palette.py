@@ -44,15 +44,20 @@ class Palette(CommandPalette):
         list still held the entries of an empty search, and ran the first of them:
         Preparation 1, or the board check, which drives the motor (walk 10, D1). The box's
         change of text reaches the palette before its Enter does (both pass up the same
-        queues), so the search running now is the search of what was typed."""
+        queues), so the search started last is the search of what was typed.
+
+        Each search is waited for on its own: the box's changes read in one go ('s', 'su',
+        ..., 'summary') start one each, each cancelling the one before, and a wait for all
+        of them together ended as soon as the first cancelled one did, with the last one
+        still running (the board check ran from Task 12 in tmux)."""
         from contextlib import suppress
 
         from textual.worker import WorkerCancelled
 
         searches = [w for w in self.app.workers if w.node is self and not w.is_finished]
-        if searches:
-            with suppress(WorkerCancelled):  # Escape closed the palette meanwhile
-                await self.app.workers.wait_for_complete(searches)
+        for search in searches:
+            with suppress(WorkerCancelled):  # a later change, or Escape, cancelled it
+                await search.wait()
         if not self.is_current:  # closed meanwhile: nothing to run
             event.stop()
             event.prevent_default()
