@@ -1081,8 +1081,8 @@ class LabApp(App[None]):
             return screen is not None and screen.offers(action)
         if action == "in_footer":
             screen = self._lab_screen()
-            step = screen.pane.step if screen is not None else None
-            return step is not None and step.id in FOOTER_ON.get(str(parameters[0]), ())
+            shown = screen.step_id_shown if screen is not None else None
+            return shown is not None and shown in FOOTER_ON.get(str(parameters[0]), ())
         return True
 
     async def action_in_footer(self, action: str) -> None:
