@@ -273,9 +273,11 @@ def _step_section(session: Session) -> Section:
     # screen shows them; only J waits for the table
     s = ident.step if ident is not None and ident.step is not None else res.response
     if s is None:
-        why = needs(views.waits_for(session, "K"))  # no run yet: say so, and where
-        said = [*res.problems, why] if why else list(res.problems)
-        sec.blocks.append("No step result yet" + (": " + "; ".join(said) if said else "."))
+        # what the run's results wait for (a run, a u_ss), and why a run gave none; not the
+        # table's R and rows, which only J needs (walk 10, D4)
+        why = needs(views.waits_for(session, "K"))
+        said = [*res.run_problems, why] if why else list(res.run_problems)
+        sec.blocks.append("No step result yet" + (": " + "; ".join(said) if said else "") + ".")
         return sec
     rows = own_first.step_rows(session)
     sec.blocks.append(

@@ -54,7 +54,7 @@ from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import format_fixed
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
-from minseg_tui.ui.keys import app_bindings, help_lines
+from minseg_tui.ui.keys import FOOTER_ON, app_bindings, help_lines
 from minseg_tui.ui.live import LEVEL_TOL, LiveBuffer
 from minseg_tui.ui.messages import (
     BoardChecked,
@@ -123,12 +123,13 @@ def alive_text(silent_s: float | None, virtual: bool) -> str:
     return f"silent {lasted}, answers again"
 
 
-PASSING_EVENTS = frozenset({"alive", "connected"})
-"""Link events whose words are good news: shown for :data:`TRANSIENT_SHOWN`, then the link's
-counters again ("board answers again" stayed on the line for the rest of a session)."""
+PASSING_EVENTS = frozenset({"alive", "connected", "square_wave_done"})
+"""Link events whose words are news, not a lasting state: shown for :data:`TRANSIENT_SHOWN`,
+then the link's counters again ("board answers again" stayed on the line for the rest of a
+session; so did "square wave done", through later runs: walk 10, D2)."""
 
 TRANSIENT_SHOWN = 3.0
-"""How long the status line shows good news about the link, s of board time (the samples'
+"""How long the status line shows news about the link, s of board time (the samples'
 clock: the line never changes while nothing comes)."""
 
 
@@ -1098,11 +1099,20 @@ class LabApp(App[None]):
             screen.store_typed()
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
-        """A panel key is live (and in the footer) only on the steps whose panel has it."""
+        """A panel key is live (and in the footer) only on the steps whose panel has it; a key
+        shown in the footer on some steps only (``in_footer``), only on those."""
         if action in PANEL_ACTIONS:
             screen = self._lab_screen()
             return screen is not None and screen.offers(action)
+        if action == "in_footer":
+            screen = self._lab_screen()
+            shown = screen.step_id_shown if screen is not None else None
+            return shown is not None and shown in FOOTER_ON.get(str(parameters[0]), ())
         return True
+
+    async def action_in_footer(self, action: str) -> None:
+        """A key the footer shows on this step (F10 on Task 1): its own action."""
+        await self.run_action(action)
 
     # a panel key's binding, whatever has the focus: the step panel's own action runs, after
     # the keys typed before it (what stands in the entries stored first)

@@ -24,7 +24,8 @@ class Key:
     ``priority``: the app's before any widget's. ``panel``: a key that acts on the shown
     step's panel, and what it is, for the line saying it is not part of this step;
     ``assistant``: a lab assistant's key (last in the footer, the first left out where its
-    line cannot hold every key)."""
+    line cannot hold every key); ``footer_on``: the steps whose footer shows a key that is
+    not shown elsewhere but works on every step (F10 on Task 1, which asks for it)."""
 
     name: str
     help: str
@@ -35,6 +36,7 @@ class Key:
     priority: bool = False
     panel: str = ""
     assistant: bool = False
+    footer_on: tuple[str, ...] = ()
 
 
 KEYMAP: tuple[Key, ...] = (
@@ -96,9 +98,10 @@ KEYMAP: tuple[Key, ...] = (
         "board check: does the wheel turn, does the count follow?",
         "f10",
         "board_check",
-        "Check board",
+        "Board check",
         shown=False,
         priority=True,
+        footer_on=("task1",),
     ),
     Key(
         "Ctrl+R",
@@ -164,10 +167,20 @@ class PanelKeys(Widget):
     KEYS: ClassVar[tuple[str, ...]] = ()
 
 
+FOOTER_ON: dict[str, tuple[str, ...]] = {k.action: k.footer_on for k in KEYMAP if k.footer_on}
+"""The app's actions shown in the footer on some steps only (:attr:`Key.footer_on`)."""
+
+
 def app_bindings() -> list[Binding]:
-    """The app's own keys' bindings (those of the step panels are :func:`panel_keys`)."""
-    return [
-        Binding(k.keys, k.action, k.label, show=k.shown, priority=k.priority)
-        for k in KEYMAP
-        if k.keys and not k.panel
-    ]
+    """The app's own keys' bindings (those of the step panels are :func:`panel_keys`). A key
+    with :attr:`Key.footer_on` has two: first one shown in the footer, live only on those
+    steps (``in_footer``: the app's ``check_action`` hides it elsewhere), then its own,
+    which runs wherever the first is not live."""
+    out: list[Binding] = []
+    for k in KEYMAP:
+        if not k.keys or k.panel:
+            continue
+        if k.footer_on:
+            out.append(Binding(k.keys, f"in_footer('{k.action}')", k.label, priority=k.priority))
+        out.append(Binding(k.keys, k.action, k.label, show=k.shown, priority=k.priority))
+    return out

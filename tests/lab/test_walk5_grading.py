@@ -75,7 +75,8 @@ def test_an_answer_with_nothing_to_compare_it_with_is_stored_not_ticked(tmp_path
         view = views.entry(s, "own.T")
         # what the value it is judged by waits for, and where (walk 8, D7)
         assert view is not None and view.feedback == (
-            "○ stored, not judged yet: the value to compare with needs a step run (Task 10)"
+            "○ stored, not judged yet: the value to compare with needs a step run (Task 10) "
+            "and u_ss at the steps' voltage (Task 4)"
         )
         assert s.enter("own.f", "1,855").ok
         assert s.step_status("table") == "unjudged"

@@ -45,6 +45,19 @@ def test_task15_with_dry_friction_gives_the_speed_the_motor_turns_at_5V():
     assert j["omega_at_5V_with_friction"] == r.omega_at_5V_with_friction
 
 
+def test_task15_s_friction_sentence_says_the_lab_s_model_has_viscous_friction():
+    # walk 10, D3: the report's warning said "the lab's model (Task 14) has no friction",
+    # while the model has viscous friction f (Tasks 9 and 13) and another warning of the same
+    # report says so; what the lab's model lacks is dry friction
+    log, _ = friction_log()
+    r = identify(identification_table(), PUBLISHED.R, log)
+    said = [o.message for o in r.observations if o.code == "friction_task15"]
+    assert len(said) == 1
+    assert "has no friction" not in said[0]
+    assert "the lab's model (Task 14) has viscous friction only, no dry friction" in said[0]
+    assert "rad/s of the model with dry friction." in said[0]
+
+
 def test_task15_has_one_answer_where_the_step_is_at_5V():
     # a step to 5 V on the motor, K read on the log's u: K u_A and the model with friction
     # agree at the step's own level, so nothing is said twice

@@ -111,7 +111,8 @@ async def test_the_zoom_note_names_f9_as_the_footer_does(quiet):
 
 
 async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(quiet):
-    """It said '0 rising steps': it meant steps with results, which need the table."""
+    """It said '0 rising steps': it meant steps with results, which need a u_ss (walk 10,
+    D4: not the whole table of Tasks 4-9, as it then said)."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
@@ -120,7 +121,7 @@ async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(qu
         await goto(pilot, "task11")
         await settle(pilot)
         note = str(app.screen.query_one("#zoom-note").render())
-        assert "0 rises" not in note and "table of Tasks 4-9" in note
+        assert "0 rises" not in note and "needs u_ss at the steps' voltage (Task 4)" in note
         enter_all(app, TABLE)
         await goto(pilot, "table")
         await goto(pilot, "task11")

@@ -29,13 +29,16 @@ INPUTS: dict[str, Input] = {
     "i_ss": Input("i_ss", "Task 5"),
     "row": Input("a row with u_ss, omega_ss and i_ss", "Tasks 4-5"),
     "run": Input("a step run", "Task 10"),
+    "u_ss@steps": Input("u_ss at the steps' voltage", "Task 4"),
     "own.omega_step": Input("{whose} omega_ss in the steps", "Task 11"),
     "own.K": Input("{whose} K", "Task 11"),
     "own.T": Input("a T: {whose}, or a 63 % reading of the run", "Task 12"),
 }
 """The readings derived values wait for. ``u_ss``, ``omega_ss`` and ``i_ss`` are those of
 one row of the table; ``row``: at least one complete row; ``run``: the step run Tasks
-11-15 use; ``own.*``: the group's own values of Tasks 11-12 that values worked out the
+11-15 use; ``u_ss@steps``: a u_ss in the table, which the run's requested voltage is mapped
+through (the one at the steps' own voltage is used as it is; any other is carried over,
+:func:`~minseg_tui.model.identify.steady.u_ss_at`); ``own.*``: the group's own values of Tasks 11-12 that values worked out the
 group's way wait for (``{whose}``: "your" on the screen, "the group's" in the report;
 ``own.T`` is there when the group gave T or the program read T at 63 % of a rise)."""
 
@@ -45,12 +48,12 @@ NEEDS: dict[str, tuple[str, ...]] = {
     "k_a": ("k_v",),
     "f": ("k_a", "row"),
     "f@row": ("omega_ss", "i_ss", "k_a"),
-    "K": ("run",),
-    "T": ("run",),
+    "K": ("run", "u_ss@steps"),
+    "T": ("run", "u_ss@steps"),
     "J": ("T", "R", "k_v", "k_a", "f"),
     "model": ("K", "T"),
     "omega_5": ("K",),
-    "K@yours": ("own.omega_step", "run"),
+    "K@yours": ("own.omega_step", "run", "u_ss@steps"),
     "J@yours": ("own.T", "R", "k_v", "k_a", "f"),
     "model@yours": ("own.T",),
     "omega_5@yours": ("own.K",),
@@ -58,7 +61,7 @@ NEEDS: dict[str, tuple[str, ...]] = {
 """Each derived value and what it is computed from: inputs (:data:`INPUTS`) or other derived
 values. ``k_v@row``, ``f@row``: a row's own (k_v = (u_ss - R i_ss) / omega_ss, f = k_a i_ss
 / omega_ss); ``k_v``, ``k_a``, ``f``: the final ones (medians over the complete rows); K, T
-(Tasks 11-12) from the step run, J (Task 13) from T and the table's constants, the model
+(Tasks 11-12) from the step run and the u_ss it ran at (neither R nor i_ss: walk 10, D4), J (Task 13) from T and the table's constants, the model
 (Task 14) and omega at 5 V (Task 15) from K and T. ``*@yours``: the same worked out the
 group's way (K from their omega_ss in the steps, J and the model from their T or the 63 %
 reading, omega at 5 V from their K), as Tasks 11-15 compare the group's values."""

@@ -159,7 +159,7 @@ def format_u_ss(st: ResponseResult | ResponseFigures) -> str:
     return format_quantity(st.u_ss, "V")
 
 
-def _model(T: str, K: str) -> str:
+def model_text(T: str, K: str) -> str:
     """The model with T (s) and K (rad/s/V) as written: the program's with its digits, the
     group's as they typed them."""
     return f"{T} omega' = -omega + {K} u_A"
@@ -322,9 +322,9 @@ def compare_fields(
             elif fld.key == "own.model":
                 T_m = own_T if own_T is not None else st.T_63
                 K_m = own_K if own_K is not None else st.K
-                lsq = _model(format_number(st.T), format_number(st.K))
+                lsq = model_text(format_number(st.T), format_number(st.K))
                 if T_m is not None:
-                    computed = _model(
+                    computed = model_text(
                         format_typed(T_m) if own_T is not None else format_number(T_m),
                         format_typed(K_m) if own_K is not None else format_number(K_m),
                     )
@@ -337,7 +337,7 @@ def compare_fields(
                         + (f"{whose} K" if own_K is not None else "the least-squares K")
                     )
                     why = "The least-squares model uses the fitted T and K."
-                    if _model(format_number(T_m), format_number(K_m)) == lsq:
+                    if model_text(format_number(T_m), format_number(K_m)) == lsq:
                         lsq, why = None, ""
                     if isinstance(own, str):
                         right, verdict = judge_model(own, T_m, K_m)
@@ -562,6 +562,7 @@ __all__ = [
     "two_T_of",
     "format_u_ss",
     "judge_model",
+    "model_text",
     "read_policy",
     "reveal_keys",
     "u_ss_missing",

@@ -106,6 +106,15 @@ class Results:
     """Tasks 11-12 from the run and the table's u_ss alone, when the table cannot give
     Tasks 6-9 (no R, or no positive k_v): omega_ss in the steps, K and T need neither R nor
     i_ss; J (Task 13) waits for k_v and f (NaN here)."""
+    table_problems: tuple[str, ...] = ()
+    """Those of :attr:`problems` that keep the table's k_v, k_a and f (and so J) from being
+    computed (R not entered, no complete row, a row left out): not why the run gives no K
+    or T, which need only the run and a u_ss (walk 10, D4)."""
+
+    @property
+    def run_problems(self) -> tuple[str, ...]:
+        """:attr:`problems` less :attr:`table_problems`: why the run gives no step result."""
+        return tuple(p for p in self.problems if p not in self.table_problems)
 
     @property
     def step(self) -> ResponseFigures | None:
@@ -260,6 +269,7 @@ def compute(
             readings.append(r)
     if not readings:
         problems.append("no complete row in the table yet (u_ss, omega_ss and i_ss; Tasks 4-5)")
+    table_problems = tuple(problems)
     log: RunLog | None = None
     if run is not None and kept is None:
         try:
@@ -277,14 +287,14 @@ def compute(
         R nor k_v (the plot, omega_ss, K and the 63 % reading)."""
         name = run.name if run and read else None
         if log is None or not pairs:
-            return Results(None, name, tuple(problems))
+            return Results(None, name, tuple(problems), table_problems=table_problems)
         try:
             alone = response_alone(log, pairs)
         except (InputError, ArithmeticError, ValueError) as exc:
             why = str(exc) if isinstance(exc, InputError) else f"its steps cannot be fitted ({exc})"
             problems.append(f"run {run.name if run else ''} gives no step result: {why}")
-            return Results(None, name, tuple(problems))
-        return Results(None, name, tuple(problems), response=alone)
+            return Results(None, name, tuple(problems), table_problems=table_problems)
+        return Results(None, name, tuple(problems), response=alone, table_problems=table_problems)
 
     if R is None or not readings:
         return run_alone()
@@ -295,19 +305,26 @@ def compute(
         # table's results stand, and the step says why it has none (never a traceback)
         why = str(exc) if isinstance(exc, InputError) else f"its steps cannot be fitted ({exc})"
         if not read:
-            return Results(None, None, (*problems, why))
+            return Results(None, None, (*problems, why), table_problems=(*table_problems, why))
         try:
             ident = identify(readings, R, None, source="table")
         except InputError as exc2:  # the table's fault, not the run's
             problems.append(str(exc2))
+            table_problems = (*table_problems, str(exc2))
             return run_alone()
         problems.append(f"run {run.name if run else ''} gives no step result: {why}")
-        return Results(ident, None, tuple(problems))
+        return Results(ident, None, tuple(problems), table_problems=table_problems)
     with_J = None
     if kept is not None:
         J = inertia_from_time_constant(kept.T, ident.R, ident.f, ident.k_v, ident.k_a)
         with_J = replace(kept, J=J)
-    return Results(ident, run.name if (run and read) else None, tuple(problems), with_J)
+    return Results(
+        ident,
+        run.name if (run and read) else None,
+        tuple(problems),
+        with_J,
+        table_problems=table_problems,
+    )
 
 
 def check_run(

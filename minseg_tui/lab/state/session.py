@@ -850,7 +850,8 @@ class Session:
         """Whether the session has input ``name`` of
         :data:`~minseg_tui.lab.content.needs.INPUTS`: R, a complete row of the table, the
         run in use, the group's own omega_ss in the steps, K, a T (theirs or the run's 63 %
-        reading), and ``row``'s own u_ss, omega_ss and i_ss."""
+        reading), a u_ss for the run's steps (any row's), and ``row``'s own u_ss, omega_ss
+        and i_ss."""
         if name == "R":
             return self.value("R") is not None
         if name == "row":
@@ -860,6 +861,8 @@ class Session:
             )
         if name == "run":
             return self.response_run() is not None
+        if name == "u_ss@steps":
+            return bool(self.table_pairs())
         if name == "own.T":
             st = self.results().step
             return self.value(name) is not None or (st is not None and st.T_63 is not None)
@@ -1013,9 +1016,17 @@ class Session:
 
     def reveal(self, step_id: str) -> list[str]:
         """Show the computed values of step ``step_id`` before the group answered them:
-        the fields so marked (saved; the report says "revealed before answering")."""
+        the fields so marked (saved; the report says "revealed before answering"). Only
+        those with a computed value now: one not computed yet cannot be shown, so it is
+        neither marked nor recorded as shown (walk 10, D5: a reveal with no u_ss showed
+        dashes, and the report said both values were revealed then)."""
         self._change()
-        keys = reveal_keys(lab_steps.step(step_id).fields, self.answered())
+        can = {
+            c.key
+            for c in self.comparisons(step_id)
+            if c.computed is not None or c.least_squares is not None
+        }
+        keys = [k for k in reveal_keys(lab_steps.step(step_id).fields, self.answered()) if k in can]
         if keys:
             self._data["revealed"] = sorted(self.revealed() | set(keys))
             self._note(keys, lab_shown.REVEAL)

@@ -16,6 +16,8 @@ import math
 from dataclasses import dataclass
 from datetime import datetime, timedelta
 
+from minseg_tui.errors import InputError
+from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.content.steps import STEPS, RunPlan
 from minseg_tui.lab.state import compare as lab_compare
@@ -40,6 +42,7 @@ from minseg_tui.quantities import (
     format_number,
     format_quantity,
     format_reading,
+    format_typed,
     shown_unit,
 )
 
@@ -283,7 +286,24 @@ def _own(session: Session, c: Comparison, unit: str) -> str:
         return f"{NOT_ANSWERED} ({e.text.strip()!r} was refused; {TOLD} {e.message})"
     if isinstance(c.own, float):
         return answer(session, c.key) or format_reading(c.own, unit)
+    if c.key == "own.model":
+        return _own_model(e.text.strip())
     return e.text.strip()
+
+
+def _own_model(text: str) -> str:
+    """The group's model written T omega' = -omega + K u_A with their T (s) and K (rad/s/V),
+    their digits, as every other value of theirs is normalised ('0,057 omega' = -omega + 1,93
+    u_A' is "0.057 omega' = -omega + 1.93 u_A": walk 10, D7); written another way, the text
+    they typed beside it; one that is no first-order model, as typed (its verdict says why)."""
+    try:
+        got = read_model(text)
+    except InputError:
+        return text
+    said = lab_compare.model_text(format_typed(got.T), format_typed(got.K))
+    if " ".join(text.replace(",", ".").split()) == said:
+        return said
+    return f"{said} (typed {text!r})"
 
 
 MARKS_SAID = (

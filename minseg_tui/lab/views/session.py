@@ -1084,7 +1084,9 @@ def results(session: Session, step_id: str) -> ResultsView:
         ts = log.ts if log is not None else 0.0
         rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
         shows = frozenset(k for k in lab_compare.ANSWERED_FIRST if k not in conceal)
-    problems = list(res.problems)
+    # without a step result, the table's problems are not why (K and T need only the run and a
+    # u_ss: ``waiting`` says what is missing); with one, J's line points to them
+    problems = list(res.problems if st_run is not None else res.run_problems)
     rule = policy(session)
     if rule.problem:
         problems.append(rule.problem)
@@ -1252,6 +1254,21 @@ def check(session: Session) -> CheckView:
         + model_words.params(r.baseline.params),
         two_fits=two_fits,
         shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),
+    )
+
+
+def reveal_waits(session: Session, step_id: str) -> str:
+    """Why a lab assistant's reveal showed nothing on step ``step_id``: '' when none of its
+    values is hidden; else that they are not computed yet, and what the first waits for."""
+    keys = lab_compare.reveal_keys(step(step_id).fields, session.answered())
+    if not keys:
+        return ""
+    why = lab_needs.needs(waits_for(session, keys[0]))
+    if not why:
+        return "nothing to show yet: this step's values cannot be computed (the lines say why)"
+    return (
+        f"nothing to show yet: what this step computes {why}; press {REVEAL_KEY} again once "
+        "it is there"
     )
 
 

@@ -367,10 +367,11 @@ def friction_observations(
                 f"rad/s per volt above a breakaway voltage u_c = {format_number(u_c, 3)} V, a line "
                 "that does not pass through zero. K = omega_ss / u_ss "
                 f"({format_number(K, 4)} rad/s per V) is read at the step's {format_number(u_ss, 3)} V and "
-                "makes the speed proportional to u_A, as the lab's model (Task 14) has no friction. "
+                "makes the speed proportional to u_A, as the lab's model (Task 14) has viscous "
+                "friction only, no dry friction. "
                 f"So at u_A = {u_A:g} V (Task 15) that model gives {format_number(lab, 4)} rad/s, "
                 f"{format_percent(abs(lab / with_friction - 1)) if with_friction > 0 else 'far'} {more} "
-                f"than the {format_number(with_friction, 4)} rad/s of the model with the friction."
+                f"than the {format_number(with_friction, 4)} rad/s of the model with dry friction."
             ),
         )
     ]

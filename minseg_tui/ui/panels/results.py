@@ -175,8 +175,8 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
             )
             if v.rises:
                 said = f"{len(v.rises)} rises with results · f9 Zoom"
-            elif not v.lines:  # no results at all: Tasks 11-15 need the table's R, u_ss, i_ss
-                said = "no results yet: they need the table of Tasks 4-9 filled"
+            elif not v.lines:  # no results at all: what they wait for, or why (the lines)
+                said = f"no results yet: {v.waiting}" if v.waiting else "no results (why: below)"
             else:
                 said = "no rise long enough to read results from"
             note.update(f"run {v.run}: whole log, {said}")

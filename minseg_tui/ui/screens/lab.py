@@ -682,6 +682,17 @@ class LabScreen(StatusScreen):
             return None
         return panes.first().panel if panes else None
 
+    @property
+    def step_id_shown(self) -> str | None:
+        """The id of the step on screen, read as :attr:`panel` is (the footer asks for it
+        too); None before the screen is composed or while it has no step."""
+        try:
+            panes = self.get_child_by_id("body").query_children(StepPane)
+        except NoMatches:  # not composed yet
+            return None
+        step = panes.first().step if panes else None
+        return step.id if step is not None else None
+
     def place_notices(self) -> None:
         """Notices (Textual's toasts) show in the half of the screen away from the entry
         the group types in (or the widget focused in the step): at the bottom, where
@@ -1077,8 +1088,9 @@ class LabScreen(StatusScreen):
         event.stop()
         with self.session as s:
             keys = s.reveal(event.step_id)
+            waiting = "" if keys else views.reveal_waits(s, event.step_id)
         if not keys:
-            self.notify("nothing hidden on this step", severity="information")
+            self.notify(waiting or "nothing hidden on this step", severity="information")
             return
         self.notify("computed values shown; the report says they were revealed before answering")
         self._changed()
