@@ -12,6 +12,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import U_TASK15, Identification, identify, u_ss_words
 from minseg_tui.model.identify.observations import FRICTION_APART
+from minseg_tui.model.identify.risefit import RISE_SPAN
 from minseg_tui.quantities import (
     F_UNIT,
     NO_WIDTH,
@@ -170,7 +171,13 @@ def render(result: Identification) -> str:
             f"T, least squares     = {format_number(s.T * 1e3)} ms{on_bound}, {interval}",
             *_wrap(
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "
-                f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T)"
+                f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T"
+                + (
+                    f"; the interval also holds the T of the rows up to {RISE_SPAN:g} T "
+                    f"after each edge alone, {format_number(fit.rise_T * 1e3)} ms)"
+                    if fit.rise_T is not None
+                    else ")"
+                )
             ),
             *(_wrap(s.T_63_note) if s.T_63_note else []),
             f"J = T (R f + k_v k_a) / R = {format_number(s.J)} kg m^2 (Task 13)",

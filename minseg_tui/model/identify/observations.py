@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from minseg_tui.model.identify.risefit import Rise, TimeConstantFit
+from minseg_tui.model.identify.risefit import RISE_SPAN, Rise, TimeConstantFit
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
@@ -16,6 +16,7 @@ from minseg_tui.quantities import (
     RPM,
     format_constant,
     format_fixed,
+    format_interval,
     format_number,
     format_percent,
     format_quantity,
@@ -516,6 +517,22 @@ def fit_observations(
                     + ": the rise is steeper at first and slower later than one "
                     "time constant gives (a second, slower process), a shape the first-order model "
                     "misses. T is the fit with the shift held at the bound; read it with care."
+                ),
+            )
+        )
+    if fit.rise_T is not None and fit.rise_ci is not None:
+        longer = fit.T > fit.rise_T
+        out.append(
+            Observation(
+                "T_rows_apart",
+                (
+                    f"T depends on which rows are fitted: the rows up to {RISE_SPAN:g} T after each "
+                    f"edge alone give {format_constant(fit.rise_T, 's')} (95 % "
+                    f"{format_interval(fit.rise_ci[0] * 1e3, fit.rise_ci[1] * 1e3, 'ms')}), every row "
+                    f"{format_constant(fit.T, 's')}: the later rows, long after the rise, pull T "
+                    f"{'longer' if longer else 'shorter'}: the rise and the speed after it do not "
+                    "follow one time constant, a shape the first-order model misses. The 95 % "
+                    "interval of T spans both fits. Read T with care."
                 ),
             )
         )

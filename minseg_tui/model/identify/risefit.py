@@ -59,6 +59,16 @@ STALL_SIGMAS: float = 6.0
 the residual (and by more than the encoder's step) is a logging stall: the encoder value was
 read before its timestamp. It is left out of the fit."""
 
+RISE_SPAN: float = 4.0
+"""The rows of the rises alone: up to this many time constants after each edge acts (the
+speed has then come 98 % of the way). T is fitted to them again to see whether the later rows
+pull it (a speed that keeps creeping long after the rise, a tail one time constant does not
+follow); the 95 % interval then spans both fits."""
+
+ROWS_APART: float = 3.0
+"""T of the rises alone differs from T of every row when they are further apart than this many
+times the larger of their standard errors (the two share rows, so chance keeps them closer)."""
+
 ADEQUATE: float = 1.3
 """The whole-log fit is used when the rms of its angle residuals on the rises' rows is
 at most this many times the step-by-step fit's residual standard deviation."""
@@ -110,7 +120,10 @@ class TimeConstantFit:
     end, the share of the rise done by then (None otherwise); onset: the time (s) from the
     rises to where the wheel first answers (the median; None if unseen);
     moved_before_rise: the wheel was already moving at the rows of the rises;
-    dead_time_sought: whether the wheel started late enough for a dead time to be fitted.
+    dead_time_sought: whether the wheel started late enough for a dead time to be fitted;
+    rise_T, rise_ci: T (s) and its 95 % interval (s) fitted to the rows up to
+    :data:`RISE_SPAN` time constants after each edge alone, when that differs from ``T`` by
+    more than :data:`ROWS_APART` standard errors (None otherwise): ``ci`` then spans both.
     """
 
     T: float
@@ -141,6 +154,8 @@ class TimeConstantFit:
     onset: float | None = None
     moved_before_rise: bool = False
     dead_time_sought: bool = False
+    rise_T: float | None = None
+    rise_ci: tuple[float, float] | None = None
 
 
 def fit_time_constant(log: RunLog) -> TimeConstantFit | None:
@@ -254,6 +269,7 @@ def _fit(
     T_read = (
         (rise_63 - onset,) if rise_63 is not None and onset is not None and rise_63 > onset else ()
     )
+    rises_reach = reach
     if prior is None and late_start(rises_fit.T):
         T_starts = (*(f * rises_fit.T for f in WIDE_T_FACTORS), *T_read)
         late = fit_windows(
@@ -261,6 +277,7 @@ def _fit(
         )
         if dead(late.d, rises_fit.rss, late.rss, late.rows.size, late.n_params):
             rises_fit = late
+            rises_reach = (-bound, d_max)
     cmd, _ = command(log)
     clusters = np.unique(np.array([0, *(e.start for e in find_edges(cmd))], dtype=np.int64))
     stamped = "t_us" in log.extra
@@ -270,9 +287,11 @@ def _fit(
     timings = [t, board_grid(t)] if stamped else [t]
     weights = None if keep is None else keep.astype(float)
 
-    def whole_fit(shift: tuple[float, float], T0: float, **kw: Any) -> WholeLogFit | None:
+    def whole_fit(
+        shift: tuple[float, float], T0: float, rows: FloatArray | None = weights, **kw: Any
+    ) -> WholeLogFit | None:
         return fit_whole_log(
-            t, u, theta, T0, clusters, timings, not stamped, shift, T_range, weights, **kw
+            t, u, theta, T0, clusters, timings, not stamped, shift, T_range, rows, **kw
         )
 
     T0 = min(max(rises_fit.T, T_range[0]), T_range[1])
@@ -280,6 +299,7 @@ def _fit(
         whole = whole_fit(reach, T0)
     else:
         whole = whole_fit(reach, prior.T, shift_starts=(prior.shift,), T_factors=near)
+    whole_reach = reach
     if prior is None and whole is not None and late_start(whole.T):
         late_w = whole_fit(
             (-bound, d_max),
@@ -291,6 +311,7 @@ def _fit(
             late_w.d, whole.rss, late_w.rss, late_w.n_used, late_w.n_params
         ):
             whole = late_w
+            whole_reach = (-bound, d_max)
     time_source = "the board's timestamps (t_us)" if stamped else "the t column"
     n_w = rises_fit.rows.size
     sigma_w = math.sqrt(rises_fit.rss / max(n_w - rises_fit.n_params, 1))
@@ -307,8 +328,22 @@ def _fit(
         rms = math.sqrt(dot(on_rises, on_rises) / max(n_w, 1))
         if rms <= ADEQUATE * sigma_w and sigma_w > 0:  # (0: the steps fit exactly, no scale)
             fit = _from_whole(log, whole, windows, theta, angle_source, time_source, rms, sigma_w)
+            rise: tuple[float, float, float] | None = None  # (T, se, half width) of the rises
+            if not whole.T_on_bound:
+                mask = _rise_rows(t, clusters[1:], whole.T, whole.d, keep)
+                if mask is not None:
+                    alone = whole_fit(
+                        whole_reach,
+                        whole.T,
+                        mask.astype(float),
+                        shift_starts=(whole.d,),
+                        T_factors=(0.5, 0.7, *near),
+                    )
+                    if alone is not None and not alone.T_on_bound:
+                        c = alone.covariance
+                        rise = (alone.T, math.sqrt(max(float(c.cov[1, 1]), 0.0)), c.half_width(1))
             return replace(
-                fit,
+                _rows_apart(fit, rise),
                 dead_time=whole.d if whole.d > bound else 0.0,
                 shift_on_bound=whole.d_on_bound,
                 T_on_bound=whole.T_on_bound,
@@ -324,12 +359,74 @@ def _fit(
     else:
         why = "the applied voltage u never changes in the log, so T comes from the rises"
     fit = _from_rises(log, rises_fit, windows, theta, angle_source, time_source, sigma_w, why)
+    rise = None
+    if not rises_fit.T_on_bound:
+        edges = np.array([w.edge.start for w in windows], dtype=np.int64)
+        mask = _rise_rows(t, edges, rises_fit.T, rises_fit.d, keep)
+        if mask is not None:
+            alone_w = fit_windows(
+                t,
+                theta,
+                windows,
+                ts,
+                rises_reach,
+                T_range,
+                mask,
+                (rises_fit.d,),
+                tuple(f * rises_fit.T for f in (0.5, 0.7, *near)),
+            )
+            if not alone_w.T_on_bound:
+                c = alone_w.covariance
+                rise = (alone_w.T, math.sqrt(max(float(c.cov[0, 0]), 0.0)), c.half_width(0))
     return replace(
-        fit,
+        _rows_apart(fit, rise),
         dead_time=rises_fit.d if rises_fit.d > bound else 0.0,
         shift_on_bound=rises_fit.d_on_bound,
         T_on_bound=rises_fit.T_on_bound,
         **common,
+    )
+
+
+def _rise_rows(
+    t: FloatArray,
+    edges: NDArray[np.int64],
+    T: float,
+    d: float,
+    keep: NDArray[np.bool_] | None,
+) -> NDArray[np.bool_] | None:
+    """The rows of the rises alone: every row but those more than :data:`RISE_SPAN` T (s)
+    after the edge before them (rows ``edges``) acts, d (s) after its row's time; rows before
+    the first edge stay. Rows outside ``keep`` stay out. None when that leaves out no row
+    more than ``keep`` does, or too few rows are left to fit."""
+    mask = np.ones(t.size, dtype=bool) if keep is None else keep.copy()
+    if not edges.size:
+        return None
+    last = np.searchsorted(edges, np.arange(t.size), side="right") - 1
+    after = last >= 0
+    since = t[after] - t[edges[last[after]]] - max(d, 0.0)
+    late = np.zeros(t.size, dtype=bool)
+    late[after] = since > RISE_SPAN * T
+    if not np.any(mask & late) or np.count_nonzero(mask & ~late) < 8 * edges.size:
+        return None
+    out: NDArray[np.bool_] = mask & ~late
+    return out
+
+
+def _rows_apart(fit: TimeConstantFit, rise: tuple[float, float, float] | None) -> TimeConstantFit:
+    """``fit`` with its interval widened to hold the rises' own T when that T (``rise``: T,
+    its standard error and half its 95 % interval, s) is further from the fit's than
+    :data:`ROWS_APART` times the larger standard error."""
+    if rise is None:
+        return fit
+    T_r, se_r, half_r = rise
+    if not abs(T_r - fit.T) > ROWS_APART * max(fit.se, se_r):
+        return fit
+    lo, hi = max(T_r - half_r, 0.0), T_r + half_r
+    return replace(
+        fit,
+        ci=(min(fit.ci[0], lo), max(fit.ci[1], hi)),
+        rise_T=T_r,
+        rise_ci=(lo, hi),
     )
 
 

@@ -1,0 +1,68 @@
+"""identify on the real logs and the generators, stop 31 (issue 17, items 3, 5 and 7): each test
+pins a figure or sentence that plots of the data, the fitted model and its residuals showed
+false or misleading on that log."""
+
+import math
+
+import numpy as np
+import pytest
+
+from minseg_tui.cli.identify import render
+from minseg_tui.lab.saving.files import read_run_log
+from minseg_tui.model.identify import identify
+from tests.model.identgen import make, table
+from tests.shared_data import SHARED_DATA
+
+REAL = SHARED_DATA / "real-motors"
+
+
+def _onset_63(t: np.ndarray, w: np.ndarray, ts: float) -> float:
+    """A careful 63 % reading of a log's one rise from rest: from the last row at rest (the
+    Euler speed still 0) to the interpolated 63 % crossing of the settled speed (the median
+    of the last half), half a sample taken off for the Euler speed's lag (s)."""
+    final = float(np.median(w[w.size // 2 :]))
+    still = int(np.flatnonzero(w > 0.02 * final)[0]) - 1
+    k = int(np.flatnonzero(w >= (1 - math.exp(-1)) * final)[0])
+    frac = (w[k] - (1 - math.exp(-1)) * final) / (w[k] - w[k - 1])
+    return float(t[k] - frac * (t[k] - t[k - 1]) - 0.5 * ts - t[still])
+
+
+@pytest.mark.shared_data
+def test_the_interval_of_T_holds_the_rise_where_the_tail_pulls_T():
+    # micromouse-n20-duty255: after its rise (about 40 ms from the wheel's start) the speed
+    # creeps 66.6 -> 70 rad/s for seconds. Fitted to every row, T is 68.4 ms with a 95 %
+    # interval of 57.7-79.1 ms; fitted to the rows up to 4 T after the edge it is 39.0 ms
+    # (and 34.9 ms on the log cut at 1.3 s). The interval rested on the residuals' noise
+    # alone and left out the careful 63 % readings from the wheel's start (37-46 ms) and
+    # identify's own reading from the dead time's end (56.8 ms)
+    log = read_run_log(REAL / "micromouse-n20-duty255" / "step.csv")
+    r = identify(table(8.8), 5.0, log)
+    s = r.step
+    assert s is not None and s.dead_time > 0.3 and s.T_63 is not None
+    assert s.fit.rise_T is not None and s.fit.rise_ci is not None
+    assert 0.035 < s.fit.rise_T < 0.045 and 0.060 < s.T < 0.075
+    # the wheel starts within the sample after its last row at rest: the reading from that
+    # row (36.6 ms) is known to within half a sample either way
+    careful = _onset_63(np.asarray(log.t), np.asarray(log.omega), log.ts)
+    assert careful == pytest.approx(0.0366, abs=0.0005)
+    assert s.T_ci[0] <= careful + 0.5 * log.ts and s.T_ci[1] >= careful
+    # benchmarks/identify_artefacts.py --real: the 63 % reading from the onset of a 5-row
+    # centred mean (45.7 ms) and the angle's area reading (64.6 ms); identify's own reading
+    # counted from the dead time's end
+    for reading in (0.0457, 0.0646, s.T_63 - s.dead_time):
+        assert s.T_ci[0] <= reading <= s.T_ci[1], (reading, s.T_ci)
+    assert s.T_ci[0] == pytest.approx(s.fit.rise_ci[0]) and s.T_determined
+    said = [o.message for o in r.observations if o.code == "T_rows_apart"]
+    assert len(said) == 1 and "pull T longer" in said[0] and "spans both fits" in said[0]
+    assert "the interval also holds the T of the rows up to 4 T" in " ".join(render(r).split())
+
+
+def test_a_clean_log_keeps_the_interval_of_every_row():
+    # the independent generator's first-order logs (tests/model/identgen.py): the rows of
+    # the rises alone give the same T within its noise, so the interval is not widened
+    for seed in range(4):
+        for periods in (4, 1):
+            g = make(seed, ts=0.025, periods=periods, rest_rows=6 if periods == 1 else None)
+            r = identify(table(g.K), 5.0, g.log)
+            assert r.step is not None and r.step.fit.rise_T is None, (seed, periods)
+            assert "T_rows_apart" not in [o.code for o in r.observations]
