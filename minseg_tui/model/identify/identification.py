@@ -19,6 +19,7 @@ import numpy as np
 from minseg_tui.errors import InputError
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.observations import (
+    FRICTION_APART,
     Observation,
     fit_observations,
     friction_observations,
@@ -138,6 +139,17 @@ class ResponseResult:
         if abs(u_A) <= self.u_c:
             return 0.0
         return gain * (u_A - math.copysign(self.u_c, u_A))
+
+    @property
+    def task15_with_friction(self) -> float | None:
+        """Task 15 by the fitted model with its dry friction (rad/s) when it differs from the
+        lab's K u_A by more than :data:`FRICTION_APART` (relative), so that both are said;
+        None otherwise (no friction found, or the two agree)."""
+        lab = self.K * U_TASK15
+        other = self.omega_with_friction(U_TASK15)
+        if other is None or not abs(other - lab) > FRICTION_APART * abs(lab):
+            return None
+        return other
 
     def friction_equation(self, num: Callable[[float], str], w: str = "omega") -> str | None:
         """The fitted model with its dry friction as text ("T w' = -w + K' (u_A - u_c sgn
