@@ -432,9 +432,15 @@ def fit_observations(
                 "logging_stall",
                 (
                     f"{_lines(log, [k]).capitalize()} comes after a gap of {format_fixed(gap * 1e3, 0, 'ms')} in the logging "
-                    f"({format_fixed(gap / ts, 1)} sample periods) and its angle misses the fit by far more than any "
-                    "other row: the encoder value was read before its timestamp (a logging stall), so "
-                    "its speed is a one-row spike. It is left out of the fit."
+                    f"({format_fixed(gap / ts, 1)} sample periods) and departs from the fit by far more than the "
+                    "other rows do: its encoder value or its speed does not belong to its timestamp (a "
+                    "logging stall), not the motor. It is left out of the fit"
+                    + (
+                        "; the angle rebuilt from the speed column carried that speed across the gap "
+                        "and stayed off after it, so the fit takes that step off the rows after it."
+                        if fit.angle_mended
+                        else "."
+                    )
                 ),
             )
         )

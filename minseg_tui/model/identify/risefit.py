@@ -123,7 +123,9 @@ class TimeConstantFit:
     dead_time_sought: whether the wheel started late enough for a dead time to be fitted;
     rise_T, rise_ci: T (s) and its 95 % interval (s) fitted to the rows up to
     :data:`RISE_SPAN` time constants after each edge alone, when that differs from ``T`` by
-    more than :data:`ROWS_APART` standard errors (None otherwise): ``ci`` then spans both.
+    more than :data:`ROWS_APART` standard errors (None otherwise): ``ci`` then spans both;
+    angle_mended: the angle, rebuilt from the speed column, was carried wrong across a stall's
+    gap and the fit took the step off every later row (:func:`_stall_offsets`).
     """
 
     T: float
@@ -156,6 +158,7 @@ class TimeConstantFit:
     dead_time_sought: bool = False
     rise_T: float | None = None
     rise_ci: tuple[float, float] | None = None
+    angle_mended: bool = False
 
 
 def fit_time_constant(log: RunLog) -> TimeConstantFit | None:
@@ -177,12 +180,38 @@ def fit_time_constant(log: RunLog) -> TimeConstantFit | None:
         return first
     keep = np.ones(len(log), dtype=bool)
     keep[list(stalls)] = False
-    again = _fit(log, windows, keep, first)
-    return replace(again, left_out=stalls)
+    offset = _stall_offsets(log, first, stalls)
+    again = _fit(log, windows, keep, first, offset)
+    return replace(again, left_out=stalls, angle_mended=offset is not None)
+
+
+def _stall_offsets(log: RunLog, fit: TimeConstantFit, stalls: tuple[int, ...]) -> FloatArray | None:
+    """What to add to the angle (rad) where it is rebuilt from the speed column and a stall's
+    row carried it wrong for good: the logged speed held across the gap (a speed read at one
+    instant, as timed edges give) is not the mean over the gap, so every later angle is off by
+    the same amount. It is the step of the residual across the row (the median of the 3 rows
+    after it less that of the 3 before), taken off the row and every row after; None when the
+    angle is measured (theta, count) or no step stays (a one-row spike comes back)."""
+    theta, source = log.angle()
+    if not source.startswith("the omega column"):
+        return None
+    r = theta - fit.predicted
+    step = 2.0 * math.pi / log.cpr
+    out = np.zeros(theta.size)
+    for k in stalls:
+        jump = _step_across(r, k)
+        if abs(jump) > 2.0 * step:
+            out[k:] -= jump
+    return out if np.any(out) else None
 
 
 def _stalls(log: RunLog, fit: TimeConstantFit) -> tuple[int, ...]:
-    """Rows after a gap in the logging whose angle misses the fit by :data:`STALL_SIGMAS`."""
+    """Rows after a gap in the logging whose angle misses the fit by :data:`STALL_SIGMAS`
+    robust standard deviations of the angle's residual (the encoder value read before its
+    timestamp), or whose logged speed misses the fit's mean speed over the row's interval by
+    as many of the speed's (a one-row spike: a speed that divides the counts of the whole gap
+    by one nominal period, or a count read early in a fast rise, where the angle's miss is a
+    count or two but the speed's is many times its scatter)."""
     t = log.board_time()
     dt = np.diff(t)
     after_gap = np.flatnonzero(dt > GAP * float(np.median(dt))) + 1
@@ -193,10 +222,45 @@ def _stalls(log: RunLog, fit: TimeConstantFit) -> tuple[int, ...]:
     used = np.isfinite(r)
     if np.count_nonzero(used) < 8:
         return ()
-    mad = float(np.median(np.abs(r[used] - np.median(r[used]))))
     step = 2.0 * math.pi / log.cpr
-    limit = max(STALL_SIGMAS * 1.4826 * mad, 2.0 * step)
-    return tuple(int(k) for k in after_gap if used[k] and abs(r[k]) > limit)
+    limit = max(STALL_SIGMAS * _robust_sd(r[used]), 2.0 * step)
+    # the speed: the logged one against the fit's mean over each row's interval
+    model_speed = np.full(t.size, np.nan)
+    model_speed[1:] = np.diff(fit.predicted) / np.where(dt > 0, dt, np.nan)
+    miss = np.asarray(log.omega, dtype=float) - model_speed
+    both = np.isfinite(miss)
+    both[after_gap] = False  # the scatter of the rows without a gap
+    w_limit = (
+        max(STALL_SIGMAS * _robust_sd(miss[both]), 2.0 * step / log.ts)
+        if np.count_nonzero(both) >= 8 and log.ts > 0
+        else math.inf
+    )
+    return tuple(
+        int(k)
+        for k in after_gap
+        if used[k]
+        and (
+            abs(r[k]) > limit
+            or (np.isfinite(miss[k]) and abs(miss[k]) > w_limit)
+            or abs(_step_across(r, int(k))) > limit
+        )
+    )
+
+
+def _step_across(r: FloatArray, k: int) -> float:
+    """How far the residual ``r`` (rad) steps across row k and stays: the median of the 3
+    rows after it less that of the 3 before (0 where those rows are not all fitted)."""
+    before, after = r[max(k - 3, 0) : k], r[k + 1 : k + 4]
+    if not (before.size and after.size and np.all(np.isfinite(before))):
+        return 0.0
+    if not np.all(np.isfinite(after)):
+        return 0.0
+    return float(np.median(after) - np.median(before))
+
+
+def _robust_sd(x: FloatArray) -> float:
+    """The standard deviation of ``x`` from its median absolute deviation."""
+    return 1.4826 * float(np.median(np.abs(x - np.median(x))))
 
 
 def _fit(
@@ -204,12 +268,16 @@ def _fit(
     windows: list[RiseWindow],
     keep: NDArray[np.bool_] | None,
     prior: TimeConstantFit | None = None,
+    offset: FloatArray | None = None,
 ) -> TimeConstantFit:
     """The fit of :func:`fit_time_constant` on the rows ``keep`` (default: all); ``prior``: a
     fit of the same log on more rows, whose T and shift the search starts from (and whose
-    finding of a dead time or none it keeps, without searching again)."""
+    finding of a dead time or none it keeps, without searching again); ``offset``: added to
+    the angle (rad) first (:func:`_stall_offsets`)."""
     t = log.board_time()
     theta, angle_source = log.angle()
+    if offset is not None:
+        theta = theta + offset
     u = np.asarray(log.u, dtype=float)
     ts = log.ts
     bound = SHIFT_SAMPLES * ts
