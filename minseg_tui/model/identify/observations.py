@@ -534,7 +534,7 @@ def fit_observations(
                 (
                     f"T depends on which rows are fitted: the rows up to {RISE_SPAN:g} T after each "
                     f"edge alone give {format_constant(fit.rise_T, 's')} (95 % "
-                    f"{format_interval(fit.rise_ci[0] * 1e3, fit.rise_ci[1] * 1e3, 'ms')}), every row "
+                    f"{format_interval(fit.rise_ci[0] * 1e3, fit.rise_ci[1] * 1e3, 'ms')}), all the rows the fit uses "
                     f"{format_constant(fit.T, 's')}: the later rows, long after the rise, pull T "
                     f"{'longer' if longer else 'shorter'}: the rise and the speed after it do not "
                     "follow one time constant, a shape the first-order model misses. The 95 % "

@@ -429,8 +429,8 @@ def _fit(
     fit = _from_rises(log, rises_fit, windows, theta, angle_source, time_source, sigma_w, why)
     rise = None
     if not rises_fit.T_on_bound:
-        edges = np.array([w.edge.start for w in windows], dtype=np.int64)
-        mask = _rise_rows(t, edges, rises_fit.T, rises_fit.d, keep)
+        starts = np.array([w.edge.start for w in windows], dtype=np.int64)
+        mask = _rise_rows(t, starts, rises_fit.T, rises_fit.d, keep)
         if mask is not None:
             alone_w = fit_windows(
                 t,
@@ -462,10 +462,12 @@ def _rise_rows(
     d: float,
     keep: NDArray[np.bool_] | None,
 ) -> NDArray[np.bool_] | None:
-    """The rows of the rises alone: every row but those more than :data:`RISE_SPAN` T (s)
-    after the edge before them (rows ``edges``) acts, d (s) after its row's time; rows before
-    the first edge stay. Rows outside ``keep`` stay out. None when that leaves out no row
-    more than ``keep`` does, or too few rows are left to fit."""
+    """The rows of the responses alone: the rows before the first edge (first rows
+    ``edges``) and those up to :data:`RISE_SPAN` T (s) after each edge acts, d (s) after its
+    row's time. Rows outside ``keep`` stay out. None when that leaves out no row more than
+    ``keep`` does, or too few rows are left to fit. (Leaving out the rows after the falling
+    edges too makes the fit of a short log's single rise fragile: 5 of 30 clean one-rise logs
+    of tests/model/identgen.py came out 2-8 % apart with standard errors under 1 %.)"""
     mask = np.ones(t.size, dtype=bool) if keep is None else keep.copy()
     if not edges.size:
         return None
