@@ -56,9 +56,8 @@ def test_the_interval_of_T_holds_the_rise_where_the_tail_pulls_T():
     assert s.T_ci[0] == pytest.approx(s.fit.rise_ci[0]) and s.T_determined
     said = [o.message for o in r.observations if o.code == "T_rows_apart"]
     assert len(said) == 1 and "pull T longer" in said[0] and "spans both fits" in said[0]
-    assert (
-        "the interval also holds the T of the rows up to 4 T after each edge alone"
-        in " ".join(render(r).split())
+    assert "the interval also holds the T of the rows up to 4 T after each edge alone" in " ".join(
+        render(r).split()
     )
 
 
