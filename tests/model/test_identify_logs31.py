@@ -126,3 +126,26 @@ def test_a_log_whose_loop_times_wander_has_no_logging_stall():
     r = identify(table(2.1), 5.0, log)
     assert r.step is not None and r.step.fit.left_out == ()
     assert "logging_stall" not in [o.code for o in r.observations]
+
+
+@pytest.mark.shared_data
+def test_a_fit_moved_early_is_not_said_to_rise_steeper_at_first():
+    # n20-12v-pwm255: the wheel moves from the step's next sample slowly at first (5.3, 14.1,
+    # 23.0 rad/s: an S-shaped start), while the fit of the rises, pulled by the wandering
+    # level after them, moves the response one sample early (-10 ms, its bound). The sentence
+    # read the shift's sign as "the rise is steeper at first and slower later than one time
+    # constant gives", the opposite of the log: over the first T after the step the measured
+    # speed is below the fitted response
+    log = read_run_log(REAL / "n20-12v-pwm255" / "step.csv")
+    r = identify(table(4.3), 5.0, log)
+    s = r.step
+    assert s is not None and s.fit.shift_on_bound and s.fit.shift < 0
+    t, w = np.asarray(log.t), np.asarray(log.omega)
+    model = np.full(t.size, np.nan)
+    model[1:] = np.diff(s.fit.predicted) / np.diff(t)
+    k = s.rises[0].row
+    first = np.flatnonzero((t > t[k]) & (t <= t[k] + s.T))
+    assert np.mean(w[first]) < np.mean(model[first]) - 0.02 * s.omega_ss
+    said = [o.message for o in r.observations if o.code == "shift_on_bound"]
+    assert len(said) == 1 and "steeper at first" not in said[0]
+    assert "starts before the wheel does and then rises more slowly than the wheel" in said[0]

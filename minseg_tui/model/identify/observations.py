@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from minseg_tui.model.identify.risefit import RISE_SPAN, Rise, TimeConstantFit
+from minseg_tui.model.identify.rises import rise_windows
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
@@ -393,6 +394,36 @@ COARSE_COUNT = 0.1
 how a rise starts (n20-12v-pwm25: 1.8 rad/s of a 9.3 rad/s rise)."""
 
 
+BEHIND_SHARE: float = 0.02
+"""The measured speed is behind the fitted response over the first time constant after the
+steps when its mean there is lower by more than this share of the rise (the median over the
+rises)."""
+
+
+def _behind_at_first(log: RunLog, fit: TimeConstantFit) -> bool:
+    """Whether the measured speed lags the fitted response over the first time constant
+    after the rises' steps (median over the rises, by more than :data:`BEHIND_SHARE` of each
+    rise): a wheel that starts later or more slowly than the response the fit moved early.
+    ``log``: the rows the fit used (its rows count from the first)."""
+    t = log.board_time()
+    w = np.asarray(log.omega, dtype=float)
+    model = np.full(t.size, np.nan)
+    model[1:] = np.diff(fit.predicted) / np.diff(t)
+    windows, _ = rise_windows(log)
+    behind = []
+    for win in windows:
+        k = win.edge.start
+        rows = np.arange(k + 1, win.post_last + 1)
+        rows = rows[t[rows] <= t[k] + fit.T]
+        rows = rows[np.isfinite(model[rows])]
+        tail = model[win.post_last]
+        before = float(np.median(w[win.pre_from : k + 1]))
+        rise = abs(tail - before) if np.isfinite(tail) else 0.0
+        if rows.size and rise > 0:
+            behind.append(float(np.mean(model[rows] - w[rows])) / rise)
+    return bool(behind) and float(np.median(behind)) > BEHIND_SHARE
+
+
 def fit_observations(
     log: RunLog, glitches: int, fit: TimeConstantFit, T_determined: bool
 ) -> list[Observation]:
@@ -508,6 +539,20 @@ def fit_observations(
             )
         )
     elif fit.shift_on_bound:
+        shape = (
+            ": the fitted response starts before the wheel does and then rises more slowly "
+            "than the wheel"
+            + (
+                " (the rows long after the rise pull the fit: see T's rows below)"
+                if fit.rise_T is not None
+                else ""
+            )
+            + ", a shape the first-order model misses"
+            if _behind_at_first(log.rows_from(glitches) if glitches else log, fit)
+            else ": the rise is steeper at first and slower later than one "
+            "time constant gives (a second, slower process), a shape the first-order model "
+            "misses"
+        )
         out.append(
             Observation(
                 "shift_on_bound",
@@ -520,9 +565,7 @@ def fit_observations(
                         if fit.onset is not None and fit.onset > 1.5 * bound
                         else ""
                     )
-                    + ": the rise is steeper at first and slower later than one "
-                    "time constant gives (a second, slower process), a shape the first-order model "
-                    "misses. T is the fit with the shift held at the bound; read it with care."
+                    + f"{shape}. T is the fit with the shift held at the bound; read it with care."
                 ),
             )
         )
