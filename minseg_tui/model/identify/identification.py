@@ -240,6 +240,9 @@ class Identification:
                 "shift_on_bound": s.fit.shift_on_bound,
                 "glitch_rows": s.glitch_rows,
                 "left_out_rows": [r + s.glitch_rows for r in s.fit.left_out],
+                "T_rise_rows": None
+                if s.fit.rise_T is None or s.fit.rise_ci is None
+                else {"T": s.fit.rise_T, "T_ci": [s.fit.rise_ci[0], s.fit.rise_ci[1]]},
             }
             out["model"] = {
                 "T": s.T,
