@@ -191,9 +191,10 @@ def _stall_offsets(log: RunLog, fit: TimeConstantFit, stalls: tuple[int, ...]) -
     instant, as timed edges give) is not the mean over the gap, so every later angle is off by
     the same amount. It is the step of the residual across the row (the median of the 3 rows
     after it less that of the 3 before), taken off the row and every row after; None when the
-    angle is measured (theta, count) or no step stays (a one-row spike comes back)."""
+    angle is measured (theta, count) or is the counts (an Euler speed over a fixed period:
+    its angle cannot stay off), or no step stays (a one-row spike comes back)."""
     theta, source = log.angle()
-    if not source.startswith("the omega column"):
+    if not source.startswith("the omega column read as the mean speed"):
         return None
     r = theta - fit.predicted
     step = 2.0 * math.pi / log.cpr
