@@ -11,7 +11,7 @@ from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import U_TASK15, Identification, identify, u_ss_words
-from minseg_tui.model.identify.observations import FRICTION_APART
+from minseg_tui.model.identify.risefit import RISE_SPAN
 from minseg_tui.quantities import (
     F_UNIT,
     NO_WIDTH,
@@ -88,11 +88,12 @@ def _wrap(text: str) -> list[str]:
 def _task15(result: Identification) -> list[str]:
     """Task 15's line, and when the fit found dry friction that changes the answer, the model
     with the friction and its speed beside the lab's K u_A (the observation says why)."""
-    s, lab, friction = result.step, result.omega_at_5V, result.omega_at_5V_with_friction
+    s, lab = result.step, result.omega_at_5V
     assert s is not None and lab is not None
     line = f"At u_A = {U_TASK15:g} V (Task 15): omega = {format_number(lab)} rad/s"
     equation = s.friction_equation(format_number, "w")
-    if friction is None or equation is None or abs(friction - lab) <= FRICTION_APART * lab:
+    friction = s.task15_with_friction
+    if friction is None or equation is None:
         return [line]
     return [
         *_wrap(
@@ -170,7 +171,13 @@ def render(result: Identification) -> str:
             f"T, least squares     = {format_number(s.T * 1e3)} ms{on_bound}, {interval}",
             *_wrap(
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "
-                f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T)"
+                f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T"
+                + (
+                    f"; the interval also holds the T of the rows up to {RISE_SPAN:g} T "
+                    f"after each edge alone, {format_number(fit.rise_T * 1e3)} ms)"
+                    if fit.rise_T is not None
+                    else ")"
+                )
             ),
             *(_wrap(s.T_63_note) if s.T_63_note else []),
             f"J = T (R f + k_v k_a) / R = {format_number(s.J)} kg m^2 (Task 13)",

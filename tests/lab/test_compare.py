@@ -283,3 +283,24 @@ def test_the_table_keeps_the_T_findings_back_until_the_group_read_T(tmp_path):
             "which one the program's model uses: Task 12 says it."
         )
         assert "Both are fair" not in after[0] and "lags the true speed" not in after[0]
+
+
+def test_task15_says_the_speed_with_the_friction_the_fit_found_as_the_report_does(tmp_path):
+    # the seeded plant's run (the published MinSeg, dry friction): the whole-log fit finds
+    # u_c = 0.117 V, and 5 V x K (9.612 rad/s) is 0.57 % below the model with the friction
+    # (9.667 rad/s). `minseg-tui identify` prints both; the lab's Task 15 said only the first
+    with _lab(tmp_path) as s:
+        st = s.results().identification.step  # type: ignore[union-attr]
+        other = st.task15_with_friction
+        assert st.u_c > 0 and other is not None and abs(other / (5.0 * st.K) - 1) > 0.005
+        s.enter("own.K", "1.9")
+        s.enter("own.omega_5", "9.5")
+        words = (
+            f"{format_quantity(5.0 * st.K, 'rad/s')} by the lab's model, "
+            f"{format_quantity(other, 'rad/s')} with the dry friction the fit found"
+        )
+        assert f"omega at 5 V = {words}" in _lines(s, "task15")
+        row = next(r for r in own_first.step_rows(s) if r.key == "own.omega_5")
+        assert (
+            f"{format_quantity(other, 'rad/s')} with the dry friction the fit found" in row.cells[4]
+        )

@@ -405,7 +405,13 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
                 _value(ident.omega_at_5V if ident is not None else st.K * U_TASK15, unit)
                 or "not computed"
             )
-            return f"{w5} (5 V × the least-squares K)"
+            other = st.task15_with_friction if ident is not None else None
+            if other is None:
+                return f"{w5} (5 V × the least-squares K)"
+            return (
+                f"{w5} (5 V × the least-squares K, the lab's model; "
+                f"{_value(other, unit)} with the dry friction the fit found)"
+            )
         return st.model_equation(format_number)
 
     def _kept(key: str, unit: str) -> str:

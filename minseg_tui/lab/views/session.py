@@ -1076,7 +1076,13 @@ def results(session: Session, step_id: str) -> ResultsView:
             ),
             shown(
                 "own.omega_5",
-                f"omega at 5 V = {format_quantity(st.K * model_identify.U_TASK15, 'rad/s')}",
+                f"omega at 5 V = {format_quantity(st.K * model_identify.U_TASK15, 'rad/s')}"
+                + (
+                    f" by the lab's model, {format_quantity(st.task15_with_friction, 'rad/s')} "
+                    "with the dry friction the fit found"
+                    if st.task15_with_friction is not None
+                    else ""
+                ),
                 "omega at 5 V",
                 "Task 15",
             ),

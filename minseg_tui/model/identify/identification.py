@@ -19,6 +19,7 @@ import numpy as np
 from minseg_tui.errors import InputError
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.observations import (
+    FRICTION_APART,
     Observation,
     fit_observations,
     friction_observations,
@@ -139,6 +140,17 @@ class ResponseResult:
             return 0.0
         return gain * (u_A - math.copysign(self.u_c, u_A))
 
+    @property
+    def task15_with_friction(self) -> float | None:
+        """Task 15 by the fitted model with its dry friction (rad/s) when it differs from the
+        lab's K u_A by more than :data:`FRICTION_APART` (relative), so that both are said;
+        None otherwise (no friction found, or the two agree)."""
+        lab = self.K * U_TASK15
+        other = self.omega_with_friction(U_TASK15)
+        if other is None or not abs(other - lab) > FRICTION_APART * abs(lab):
+            return None
+        return other
+
     def friction_equation(self, num: Callable[[float], str], w: str = "omega") -> str | None:
         """The fitted model with its dry friction as text ("T w' = -w + K' (u_A - u_c sgn
         w)", with the dead time as in :meth:`model_equation`), None without dry friction."""
@@ -228,6 +240,9 @@ class Identification:
                 "shift_on_bound": s.fit.shift_on_bound,
                 "glitch_rows": s.glitch_rows,
                 "left_out_rows": [r + s.glitch_rows for r in s.fit.left_out],
+                "T_rise_rows": None
+                if s.fit.rise_T is None or s.fit.rise_ci is None
+                else {"T": s.fit.rise_T, "T_ci": [s.fit.rise_ci[0], s.fit.rise_ci[1]]},
             }
             out["model"] = {
                 "T": s.T,

@@ -8,7 +8,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from minseg_tui.model.identify.risefit import Rise, TimeConstantFit
+from minseg_tui.model.identify.risefit import RISE_SPAN, Rise, TimeConstantFit
+from minseg_tui.model.identify.rises import rise_windows
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
@@ -16,6 +17,7 @@ from minseg_tui.quantities import (
     RPM,
     format_constant,
     format_fixed,
+    format_interval,
     format_number,
     format_percent,
     format_quantity,
@@ -393,6 +395,36 @@ COARSE_COUNT = 0.1
 how a rise starts (n20-12v-pwm25: 1.8 rad/s of a 9.3 rad/s rise)."""
 
 
+BEHIND_SHARE: float = 0.02
+"""The measured speed is behind the fitted response over the first time constant after the
+steps when its mean there is lower by more than this share of the rise (the median over the
+rises)."""
+
+
+def _behind_at_first(log: RunLog, fit: TimeConstantFit) -> bool:
+    """Whether the measured speed lags the fitted response over the first time constant
+    after the rises' steps (median over the rises, by more than :data:`BEHIND_SHARE` of each
+    rise): a wheel that starts later or more slowly than the response the fit moved early.
+    ``log``: the rows the fit used (its rows count from the first)."""
+    t = log.board_time()
+    w = np.asarray(log.omega, dtype=float)
+    model = np.full(t.size, np.nan)
+    model[1:] = np.diff(fit.predicted) / np.diff(t)
+    windows, _ = rise_windows(log)
+    behind = []
+    for win in windows:
+        k = win.edge.start
+        rows = np.arange(k + 1, win.post_last + 1)
+        rows = rows[t[rows] <= t[k] + fit.T]
+        rows = rows[np.isfinite(model[rows])]
+        tail = model[win.post_last]
+        before = float(np.median(w[win.pre_from : k + 1]))
+        rise = abs(tail - before) if np.isfinite(tail) else 0.0
+        if rows.size and rise > 0:
+            behind.append(float(np.mean(model[rows] - w[rows])) / rise)
+    return bool(behind) and float(np.median(behind)) > BEHIND_SHARE
+
+
 def fit_observations(
     log: RunLog, glitches: int, fit: TimeConstantFit, T_determined: bool
 ) -> list[Observation]:
@@ -432,9 +464,15 @@ def fit_observations(
                 "logging_stall",
                 (
                     f"{_lines(log, [k]).capitalize()} comes after a gap of {format_fixed(gap * 1e3, 0, 'ms')} in the logging "
-                    f"({format_fixed(gap / ts, 1)} sample periods) and its angle misses the fit by far more than any "
-                    "other row: the encoder value was read before its timestamp (a logging stall), so "
-                    "its speed is a one-row spike. It is left out of the fit."
+                    f"({format_fixed(gap / ts, 1)} sample periods) and departs from the fit by far more than the "
+                    "other rows do: its encoder value or its speed does not belong to its timestamp (a "
+                    "logging stall), not the motor. It is left out of the fit"
+                    + (
+                        "; the angle rebuilt from the speed column carried that speed across the gap "
+                        "and stayed off after it, so the fit takes that step off the rows after it."
+                        if fit.angle_mended
+                        else "."
+                    )
                 ),
             )
         )
@@ -502,6 +540,20 @@ def fit_observations(
             )
         )
     elif fit.shift_on_bound:
+        shape = (
+            ": the fitted response starts before the wheel does and then rises more slowly "
+            "than the wheel"
+            + (
+                " (the rows long after the rise pull the fit: see T's rows below)"
+                if fit.rise_T is not None
+                else ""
+            )
+            + ", a shape the first-order model misses"
+            if _behind_at_first(log.rows_from(glitches) if glitches else log, fit)
+            else ": the rise is steeper at first and slower later than one "
+            "time constant gives (a second, slower process), a shape the first-order model "
+            "misses"
+        )
         out.append(
             Observation(
                 "shift_on_bound",
@@ -514,9 +566,23 @@ def fit_observations(
                         if fit.onset is not None and fit.onset > 1.5 * bound
                         else ""
                     )
-                    + ": the rise is steeper at first and slower later than one "
-                    "time constant gives (a second, slower process), a shape the first-order model "
-                    "misses. T is the fit with the shift held at the bound; read it with care."
+                    + f"{shape}. T is the fit with the shift held at the bound; read it with care."
+                ),
+            )
+        )
+    if fit.rise_T is not None and fit.rise_ci is not None:
+        longer = fit.T > fit.rise_T
+        out.append(
+            Observation(
+                "T_rows_apart",
+                (
+                    f"T depends on which rows are fitted: the rows up to {RISE_SPAN:g} T after each "
+                    f"edge alone give {format_constant(fit.rise_T, 's')} (95 % "
+                    f"{format_interval(fit.rise_ci[0] * 1e3, fit.rise_ci[1] * 1e3, 'ms')}), all the rows the fit uses "
+                    f"{format_constant(fit.T, 's')}: the later rows, long after the rise, pull T "
+                    f"{'longer' if longer else 'shorter'}: the rise and the speed after it do not "
+                    "follow one time constant, a shape the first-order model misses. The 95 % "
+                    "interval of T spans both fits. Read T with care."
                 ),
             )
         )
