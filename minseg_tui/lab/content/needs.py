@@ -29,6 +29,10 @@ INPUTS: dict[str, Input] = {
     "i_ss": Input("i_ss", "Task 5"),
     "row": Input("a row with u_ss, omega_ss and i_ss", "Tasks 4-5"),
     "run": Input("a step run", "Task 10"),
+    "run.complete": Input(
+        "a complete step run",
+        "Task 10; every run recorded was interrupted: Ctrl+P 'Use run' uses one all the same",
+    ),
     "own.omega_step": Input("{whose} omega_ss in the steps", "Task 11"),
     "own.K": Input("{whose} K", "Task 11"),
     "own.T": Input("a T: {whose}, or a 63 % reading of the run", "Task 12"),
@@ -37,7 +41,9 @@ INPUTS: dict[str, Input] = {
 one row of the table; ``row``: at least one complete row; ``run``: the step run Tasks
 11-15 use; ``own.*``: the group's own values of Tasks 11-12 that values worked out the
 group's way wait for (``{whose}``: "your" on the screen, "the group's" in the report;
-``own.T`` is there when the group gave T or the program read T at 63 % of a rise)."""
+``own.T`` is there when the group gave T or the program read T at 63 % of a rise;
+``run.complete`` stands for ``run`` when runs were recorded but every one was interrupted,
+and none chosen, so that the words are true of the session: not "no run", but what to do)."""
 
 NEEDS: dict[str, tuple[str, ...]] = {
     "k_v@row": ("R", "u_ss", "omega_ss", "i_ss"),

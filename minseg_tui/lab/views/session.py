@@ -193,7 +193,9 @@ def _feedback(session: Session, key: str) -> str:
     if fld is not None and fld.compare and key in session.answered():
         owner = next(st.id for st in STEPS if fld in st.fields)
         for c in session.comparisons(owner):
-            if c.key == key and (fld.kind != "text" or c.right is not None):
+            if c.key == key and (
+                fld.kind != "text" or c.right is not None or c.verdict or waits_for(session, key)
+            ):
                 again = judged_again(session, key) if c.right is not None else ""
                 return under_entry(session, c) + (f"\n{again}" if again else "")
     return ""
@@ -639,7 +641,11 @@ def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[
     name = _DERIVED.get(key, key)
     if name not in lab_needs.NEEDS:
         return ()
-    return lab_needs.missing(name, _has(session, row))
+    miss = lab_needs.missing(name, _has(session, row))
+    if "run" in miss and any(r.kind in RESPONSE_KINDS for r in session.runs):
+        # step runs there, each interrupted (a complete one would be in use): what to do
+        miss = tuple("run.complete" if k == "run" else k for k in miss)
+    return miss
 
 
 def _table_row(
