@@ -30,6 +30,10 @@ INPUTS: dict[str, Input] = {
     "row": Input("a row with u_ss, omega_ss and i_ss", "Tasks 4-5"),
     "run": Input("a step run", "Task 10"),
     "u_ss@steps": Input("u_ss at the steps' voltage", "Task 4"),
+    "run.complete": Input(
+        "a complete step run",
+        "Task 10; every run recorded was interrupted: Ctrl+P 'Use run' uses one all the same",
+    ),
     "own.omega_step": Input("{whose} omega_ss in the steps", "Task 11"),
     "own.K": Input("{whose} K", "Task 11"),
     "own.T": Input("a T: {whose}, or a 63 % reading of the run", "Task 12"),
@@ -40,7 +44,9 @@ one row of the table; ``row``: at least one complete row; ``run``: the step run 
 through (the one at the steps' own voltage is used as it is; any other is carried over,
 :func:`~minseg_tui.model.identify.steady.u_ss_at`); ``own.*``: the group's own values of Tasks 11-12 that values worked out the
 group's way wait for (``{whose}``: "your" on the screen, "the group's" in the report;
-``own.T`` is there when the group gave T or the program read T at 63 % of a rise)."""
+``own.T`` is there when the group gave T or the program read T at 63 % of a rise;
+``run.complete`` stands for ``run`` when runs were recorded but every one was interrupted,
+and none chosen, so that the words are true of the session: not "no run", but what to do)."""
 
 NEEDS: dict[str, tuple[str, ...]] = {
     "k_v@row": ("R", "u_ss", "omega_ss", "i_ss"),

@@ -330,6 +330,7 @@ ENTRY = Record(
         "at": Text(),
         "history": ListOf(Pair((Text(), Text()))),
         "refused": OneOf((None, Pair((Text(), Text(), Text())))),
+        "run": Text(),
     },
 )
 """One entry (:meth:`minseg_tui.lab.state.entries.Entry.to_json`)."""

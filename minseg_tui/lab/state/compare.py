@@ -341,6 +341,12 @@ def compare_fields(
                         lsq, why = None, ""
                     if isinstance(own, str):
                         right, verdict = judge_model(own, T_m, K_m)
+                else:  # no T at all: neither the group's nor a 63 % reading of the run
+                    computed, lsq = None, None
+                    verdict = (
+                        f"the model {whose} way needs a T: {whose} own T (Task 12), "
+                        "or a 63 % reading of the run, which reads none on any rise"
+                    )
             elif fld.key == "own.omega_5":
                 lsq = st.K * U_TASK15
                 if own_K is not None:

@@ -30,7 +30,10 @@ class Entry:
     quantity (or a formula without names), tuple of option indices for a choice, None
     otherwise; unit: the unit it was typed in; message: why it was refused, or a note on
     how it was read (``read as 47 mA``); warnings: plausibility warnings; source: ``typed``,
-    ``capture`` or ``meter``; at: ISO time; history: earlier (text, at) pairs, oldest first.
+    ``capture`` or ``meter``; at: ISO time; history: earlier (text, at) pairs, oldest first;
+    run: for an answer of Tasks 11-15, the run those tasks used when it was given (it is
+    judged against the run in use now, which may be another); '' otherwise, or not known (a
+    session of an older program).
 
     A refused text never displaces an accepted one: the accepted entry stays in effect and
     carries the refused attempt in ``refused`` (text, message, at) until something is
@@ -48,6 +51,7 @@ class Entry:
     at: str = ""
     history: tuple[tuple[str, str], ...] = ()
     refused: tuple[str, str, str] | None = None
+    run: str = ""
 
     @property
     def typed(self) -> str:
@@ -69,6 +73,8 @@ class Entry:
         }
         if self.refused:
             out["refused"] = list(self.refused)
+        if self.run:
+            out["run"] = self.run
         return out
 
     @classmethod
@@ -94,6 +100,7 @@ class Entry:
             refused=(str(d["refused"][0]), str(d["refused"][1]), str(d["refused"][2]))
             if d.get("refused")
             else None,
+            run=str(d.get("run", "")),
         )
 
 

@@ -612,6 +612,10 @@ class Session:
             source,
             self._clock().isoformat(timespec="seconds"),
         )
+        if key in ANSWERED_FIRST and entry.ok and entry.refused is None and entry.text.strip():
+            # the run it is given on: judged against another, it is said to be judged again
+            run = self.response_run()
+            entry = replace(entry, run=run.name if run is not None else "")
         self._entries[key] = entry
         if (
             entry.ok

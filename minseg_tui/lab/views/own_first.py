@@ -31,6 +31,7 @@ from minseg_tui.lab.views.session import (
     REVEAL_KEY,
     USES_RUN,
     answer,
+    judged_again,
     waits_for,
 )
 from minseg_tui.model.identify import U_TASK15, u_ss_words
@@ -334,6 +335,18 @@ def _diff(c: Comparison, own: str, against: str) -> str:
     return f"{MARK['unjudged']} {NOT_JUDGED}"
 
 
+def _judged_on(session: Session, c: Comparison) -> str:
+    """The run the group's answer ``c`` is judged against, after its difference: "; judged
+    against run steps-1", and when the group gave it while another run was in use, that it
+    is judged again (:func:`~minseg_tui.lab.views.session.judged_again`); '' for a value not
+    judged (not answered, nothing computed to compare it with)."""
+    run = session.response_run()
+    if run is None or c.right is None or c.key not in session.answered():
+        return ""
+    again = judged_again(session, c.key, "the group", back=False)
+    return f"; {again}" if again else f"; judged against run {run.name}"
+
+
 def _interval(ci: tuple[float, float], determined: bool, unit: str) -> str:
     """A 95 % interval ``ci`` (SI) in ``unit``, or why there is none."""
     if not determined:
@@ -449,7 +462,7 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
                         TASK.get(c.key, c.label),
                         own,
                         mine,
-                        _diff(c, own, against),
+                        _diff(c, own, against) + _judged_on(session, c),
                         program(c.key, unit),
                         shown(session, c.key),
                     ),

@@ -193,9 +193,33 @@ def _feedback(session: Session, key: str) -> str:
     if fld is not None and fld.compare and key in session.answered():
         owner = next(st.id for st in STEPS if fld in st.fields)
         for c in session.comparisons(owner):
-            if c.key == key and (fld.kind != "text" or c.right is not None):
-                return under_entry(session, c)
+            if c.key == key and (
+                fld.kind != "text" or c.right is not None or c.verdict or waits_for(session, key)
+            ):
+                again = judged_again(session, key) if c.right is not None else ""
+                return under_entry(session, c) + (f"\n{again}" if again else "")
     return ""
+
+
+def judged_again(session: Session, key: str, whose: str = "you", back: bool = True) -> str:
+    """One line for an answer of Tasks 11-15 given while another run was in use than the one
+    Tasks 11-15 use now (the group chose another, or a new run took over): it is judged
+    again, against the run in use now; which run it was given on; and how to go back to that
+    one while the session has it ("judged again, against run steps-2: you gave it while run
+    steps-1 was in use; Ctrl+P 'Use run steps-1' judges it there"). '' otherwise: no answer,
+    given on the run in use, or not known on which (before any run, or in a session of an
+    older program). ``whose``: who gave it ("you" on the screen, "the group" in the report);
+    ``back``: with the key that goes back (the screen's, not the report's)."""
+    e = session.entry(key)
+    run = session.response_run()
+    if e is None or not e.run or run is None or e.run == run.name:
+        return ""
+    if key not in session.answered():
+        return ""
+    said = f"judged again, against run {run.name}: {whose} gave it while run {e.run} was in use"
+    if back and any(r.name == e.run for r in session.runs):
+        said += f"; Ctrl+P 'Use run {e.run}' judges it there"
+    return said
 
 
 def _shown_unit(session: Session, c: Comparison) -> str:
@@ -617,7 +641,11 @@ def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[
     name = _DERIVED.get(key, key)
     if name not in lab_needs.NEEDS:
         return ()
-    return lab_needs.missing(name, _has(session, row))
+    miss = lab_needs.missing(name, _has(session, row))
+    if "run" in miss and any(r.kind in RESPONSE_KINDS for r in session.runs):
+        # step runs there, each interrupted (a complete one would be in use): what to do
+        miss = tuple("run.complete" if k == "run" else k for k in miss)
+    return miss
 
 
 def _table_row(

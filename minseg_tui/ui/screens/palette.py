@@ -1,14 +1,57 @@
-"""The command palette, closed once however many Enters it is handed, and closed by Escape
-before the keys typed after it are read."""
+"""The command palette: Enter runs the command picked for what was typed, then hands the
+keys typed after it to the screen under the palette; closed once however many Enters it is
+handed, and closed by Escape before the keys typed after it are read."""
 
 from __future__ import annotations
 
+import asyncio
+from contextlib import suppress
+from inspect import isawaitable
 from typing import ClassVar
 
 from textual import on
 from textual.binding import Binding, BindingType
-from textual.command import CommandPalette
+from textual.command import Command, CommandInput, CommandList, CommandPalette
+from textual.dom import DOMNode
 from textual.widgets import Input, OptionList
+from textual.worker import WorkerCancelled
+
+
+async def handled(node: DOMNode) -> None:
+    """Return once ``node`` has handled every message queued on it now (its own queue: a
+    callback queued behind them runs after them); at once when it is being removed."""
+    done = asyncio.Event()
+    if node.call_later(done.set):
+        await done.wait()
+
+
+def _bindings(node: DOMNode, key: str) -> list[Binding]:
+    """The bindings of ``key`` in ``node``'s class that are not priority bindings, as Textual
+    merges its classes' ``BINDINGS``: a class's own in place of its bases'."""
+    for cls in type(node).__mro__:
+        bindings = Binding.make_bindings(cls.__dict__.get("BINDINGS", []))
+        got = [b for b in bindings if b.key == key and not b.priority]
+        if got:
+            return got
+    return []
+
+
+_IN_TURN: tuple[str, ...] = tuple(
+    sorted(
+        {
+            b.key
+            for cls in (*CommandInput.__mro__, CommandPalette)
+            for b in Binding.make_bindings(cls.__dict__.get("BINDINGS", []))
+            if not b.priority
+        }
+        - {"enter", "escape"}
+    )
+)
+"""The keys the search box and Textual's palette bind (editing keys, the arrows, Down to
+the next command), bar Enter and Escape: bound with priority on :class:`Palette` so that
+the app hands each to the box's queue in the order typed. Bound as Textual binds them, the
+box passed them up to the app, which ran them behind the characters typed after them
+('Tsk 5 Home Right a' in one burst gave 'Tsk 5a') and behind Enter's command."""
 
 
 class Palette(CommandPalette):
@@ -17,15 +60,101 @@ class Palette(CommandPalette):
     Enter') closed the lab screen under it too and left an empty terminal. An Enter that
     reaches it once it has closed is not for it.
 
-    Escape is bound with priority, so the app runs it the moment it reads the key: the keys
-    typed after it go to the screen under the palette. Bound as Textual's palette binds it,
-    the app handed Escape to the palette's search box, which passed it back up to the app's
-    queue behind the keys typed after it; those went into the search box, and closed with
-    it ('Ctrl+P xyzzy Esc 5,3 Enter' in one burst left R empty: walk 8)."""
+    Escape and Enter are bound with priority, so the app runs them the moment it reads the
+    key, before it reads the keys typed after them: those go to the screen under the
+    palette. Bound as Textual's palette binds them, the app handed the key to the palette's
+    search box, which passed it back up to the app's queue behind the keys typed after it;
+    those went into the search box, and closed with it ('Ctrl+P xyzzy Esc 5,3 Enter' in one
+    burst left R empty: walk 8). Enter also ran whatever the list showed when it came, the
+    hits of an earlier part of the search ('Ctrl+P Task 5 Enter 5,3 Enter' in one burst went
+    to Preparation 1, the first command listed for an empty search): it now waits for the
+    search of everything typed before it (:meth:`action_run`)."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
-        Binding("escape", "escape", "Exit the command palette", show=False, priority=True)
+        Binding("escape", "escape", "Exit the command palette", show=False, priority=True),
+        Binding("enter", "run", "Run the command", show=False, priority=True),
+        *[Binding(key, f"in_turn({key!r})", show=False, priority=True) for key in _IN_TURN],
     ]
+
+    ROUNDS: ClassVar[int] = 12
+    """Most rounds :meth:`_searched` waits for the box's keys to settle (a burst's keys
+    settle in three: typed, their change of the text passed up, its search done)."""
+
+    async def _searched(self) -> None:
+        """Wait until the list shows the hits of everything typed before now: the box has
+        handled the keys typed before (characters it takes itself; the rest passed up to
+        :meth:`on_key`), its changes of text have reached the palette, which starts a search
+        for each (a worker of the palette's; each cancels the one before), and the search of
+        the last is done. Round by round along the box and its ancestors up to the palette
+        until a round finds no search running and the box and the list as they were."""
+        box = self.query_one(CommandInput)
+        listing = self.query_one(CommandList)
+        chain = self._chain(box)
+        before: tuple[object, ...] | None = None
+        for _ in range(self.ROUNDS):
+            for node in chain:
+                await handled(node)
+            searches = [w for w in self.app.workers if w.node is self and not w.is_finished]
+            if searches:
+                with suppress(WorkerCancelled):
+                    await self.app.workers.wait_for_complete(searches)
+            now = (box.value, listing.option_count, listing.highlighted)
+            if not searches and now == before:
+                return
+            before = now
+
+    async def action_in_turn(self, key: str) -> None:
+        """A key the search box or the palette binds (Backspace, the arrows, Down to the next
+        command): run once the focused widget (the box) has handled the characters typed
+        before it, and before the app reads the keys typed after it (:meth:`_run_bound`)."""
+        node = self.focused or self.query_one(CommandInput)
+        await handled(node)
+        await self._run_bound(node, key)
+
+    async def _run_bound(self, node: DOMNode, key: str) -> None:
+        """``key``'s binding, as the app would run it: the first from ``node`` up to the
+        palette, then the app, whose action acts (a box's Down does not: it goes on to the
+        palette's, the next command)."""
+        for above in [*self._chain(node), self.app]:
+            for binding in _bindings(above, key):
+                if await self.app.run_action(binding.action, above):
+                    return
+
+    def _chain(self, node: DOMNode) -> list[DOMNode]:
+        """``node`` and its ancestors up to this palette."""
+        chain = []
+        for above in node.ancestors_with_self:
+            chain.append(above)
+            if above is self:
+                break
+        return chain
+
+    def _picked(self) -> Command | None:
+        """The command Enter runs: the one highlighted in the list (the best match of the
+        search unless the group moved to another), or the first there is; None: none."""
+        listing = self.query_one(CommandList)
+        index = listing.highlighted if listing.highlighted is not None else 0
+        if not 0 <= index < listing.option_count:
+            return None
+        option = listing.get_option_at_index(index)
+        return option if isinstance(option, Command) and not option.disabled else None
+
+    async def action_run(self) -> None:
+        """Enter: the command picked for everything typed before it, run once the palette has
+        closed; the app reads the keys typed after Enter only when this returns, so they go
+        where the command leaves the group (the first entry of the step it went to)."""
+        if not self.is_current:
+            return
+        await self._searched()
+        picked = self._picked()
+        if picked is None or not self.is_current:
+            return  # nothing to run: the palette stays, as Textual's does
+        self.app.post_message(CommandPalette.Closed(option_selected=True))
+        await self.dismiss()
+        ran = picked.hit.command()
+        if isawaitable(ran):
+            await ran
+        await handled(self.app.screen)  # what the command asked of the screen (a step shown)
 
     @on(Input.Submitted)
     @on(OptionList.OptionSelected)
@@ -33,31 +162,3 @@ class Palette(CommandPalette):
         if not self.is_current:
             event.stop()
             event.prevent_default()  # the palette's own handlers (a base class's) are not run
-
-    @on(Input.Submitted)
-    async def _enter_on_what_was_typed(self, event: Input.Submitted) -> None:
-        """Enter in the search box: wait until the search of the text typed before it is done,
-        so that Textual's own handler (run after this one) picks the best match of that text.
-
-        The search runs in a worker the box's every change starts anew; an Enter that came
-        with the query in one burst ('Ctrl+P names Enter') reached the palette while the
-        list still held the entries of an empty search, and ran the first of them:
-        Preparation 1, or the board check, which drives the motor (walk 10, D1). The box's
-        change of text reaches the palette before its Enter does (both pass up the same
-        queues), so the search started last is the search of what was typed.
-
-        Each search is waited for on its own: the box's changes read in one go ('s', 'su',
-        ..., 'summary') start one each, each cancelling the one before, and a wait for all
-        of them together ended as soon as the first cancelled one did, with the last one
-        still running (the board check ran from Task 12 in tmux)."""
-        from contextlib import suppress
-
-        from textual.worker import WorkerCancelled
-
-        searches = [w for w in self.app.workers if w.node is self and not w.is_finished]
-        for search in searches:
-            with suppress(WorkerCancelled):  # a later change, or Escape, cancelled it
-                await search.wait()
-        if not self.is_current:  # closed meanwhile: nothing to run
-            event.stop()
-            event.prevent_default()
