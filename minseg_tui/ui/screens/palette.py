@@ -157,8 +157,20 @@ class Palette(CommandPalette):
         await handled(self.app.screen)  # what the command asked of the screen (a step shown)
 
     @on(Input.Submitted)
+    def _submitted(self, event: Input.Submitted) -> None:
+        """The box's Enter, posted to the palette by other than a key (a key's Enter is the
+        priority binding's, :meth:`action_run`): run as that Enter runs, on the app's queue
+        (a screen cannot wait for its own dismissal in its own handler), never by Textual's
+        own handler, which runs whatever the list shows when it comes: 'summary' posted
+        change by change and then its Enter ran the board check from Task 12 (walk 10, D1)."""
+        event.stop()
+        event.prevent_default()  # the palette's own handler (a base class's) is not run
+        if self.is_current:
+            self.app.call_next(self.action_run)
+
     @on(OptionList.OptionSelected)
-    def _late_enter(self, event: Input.Submitted | OptionList.OptionSelected) -> None:
+    def _late_pick(self, event: OptionList.OptionSelected) -> None:
+        """A pick that reaches the palette once it has closed is not for it."""
         if not self.is_current:
             event.stop()
             event.prevent_default()  # the palette's own handlers (a base class's) are not run
