@@ -436,3 +436,33 @@ def test_a_pole_on_the_measurement_lags_the_angle_exactly():
     # far shorter than a sample, and far longer than the log: no overflow, the right limits
     assert np.allclose(lag(t, x, 1e-7), x, atol=1e-4)
     assert np.all(np.isfinite(lag(t, x, 50.0)))
+
+
+def test_a_residual_too_large_to_square_gives_unbounded_intervals_without_a_warning(monkeypatch):
+    # a Task 10 run recorded on a busy machine once made the interval's residual overflow
+    # numpy's squares: a RuntimeWarning (an error in these tests) inside fit.intervals. Here
+    # the residual the intervals are worked out from is made that large on purpose: the
+    # intervals are unbounded (the fit pins nothing down), the check's result stands
+    from minseg_tui.model.check import fit, pipeline
+
+    inside: list[bool] = []
+    real_intervals, real_fit_k = fit.intervals, fit.Model.fit_k
+
+    def intervals(*args, **kwargs):
+        inside.append(True)
+        try:
+            return real_intervals(*args, **kwargs)
+        finally:
+            inside.pop()
+
+    def fit_k(self, g, taps, cols=()):
+        r, k, sizes = real_fit_k(self, g, taps, cols)
+        return (r * 1e200 if inside else r), k, sizes
+
+    monkeypatch.setattr(pipeline, "intervals", intervals)
+    monkeypatch.setattr(fit.Model, "fit_k", fit_k)
+    log = make_log("coulomb_friction", seed=1)
+    r = check(log.t, log.u, log.omega)
+    assert r.finding.cause == "coulomb_friction"
+    lo, hi = r.baseline.intervals["K"]
+    assert lo == -math.inf and hi == math.inf

@@ -698,12 +698,19 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     extra = [-prob.white(c, fx.taps)[prob.keep] for _, c in starts]
     jac = np.column_stack([*cols, *extra])
     n, p = jac.shape
-    s2 = float(np.dot(r0, r0)) / max(n - p, 1)
-    rho = float(np.dot(r0[1:], r0[:-1]) / np.dot(r0, r0)) if n > 2 and np.dot(r0, r0) > 0 else 0.0
+    # a residual too large to square (a fit that ran away) pins nothing down: its sums are
+    # taken as infinite, without numpy's overflow warnings, and every interval is unbounded
+    with np.errstate(over="ignore", invalid="ignore"):
+        ss = float(np.dot(r0, r0))
+        lag1 = float(np.dot(r0[1:], r0[:-1]))
+    if not math.isfinite(ss) or not math.isfinite(lag1):
+        ss, lag1 = math.inf, 0.0
+    s2 = ss / max(n - p, 1)
+    rho = lag1 / ss if n > 2 and 0.0 < ss < math.inf else 0.0
     rho = min(max(rho, 0.0), 0.95)
     s2 *= (1.0 + rho) / (1.0 - rho)
     try:
-        cov = np.linalg.pinv(jac.T @ jac) * s2
+        cov = np.linalg.pinv(jac.T @ jac) * s2 if s2 < math.inf else np.full((p, p), np.inf)
     except np.linalg.LinAlgError:
         cov = np.full((p, p), np.inf)
     sd = np.sqrt(np.maximum(np.diag(cov), 0.0))[: len(cols)]
