@@ -384,7 +384,11 @@ def revolution_text(counts: int) -> RevolutionResult:
 LAST_US = 100_000
 """Board time the hand check still reads after the hand is done, us (the turn's last samples)."""
 LAST_WAIT_S = 5.0
-"""...waiting at most this long in host time for them, s (a board that went silent)."""
+"""...waiting for them until the board has been silent this long in host time, s (no new
+sample read: a board that went silent)..."""
+LAST_GIVE_UP_S = 30.0
+"""...and in all at most this long in host time, s (a board that streams samples whose
+times never reach the end of the turn)."""
 
 
 def board_time_at(batches: list[SampleBatch], host_t: float) -> int | None:
@@ -445,11 +449,19 @@ def count_revolution(
     if at_board is not None:
         seen.append(at_board)
     since = max(seen) if seen else None
-    end = clock() + LAST_WAIT_S
-    while clock() < end:
+    quiet_until = clock() + LAST_WAIT_S
+    give_up = quiet_until - LAST_WAIT_S + LAST_GIVE_UP_S
+    while True:
+        now = clock()
+        late = now >= quiet_until or now >= give_up
+        # past the wait, read once more: a host that stalled for the whole wait finds the
+        # samples that arrived meanwhile (a busy machine read the turn's end late, not never)
         b = take()
         got.append(b)
+        if late:
+            break
         if len(b):
+            quiet_until = clock() + LAST_WAIT_S
             # a sample that arrives after Enter bounds the board's time at Enter as well
             # (taken at b, arrived at h: at least b - (h - pressed)); with none read before
             # Enter, this alone places it (a host that had read nothing yet)
