@@ -202,18 +202,17 @@ def _part(b: SampleBatch, keep: np.ndarray) -> SampleBatch:
     return SampleBatch(*(getattr(b, f.name)[keep] for f in fields(SampleBatch)))
 
 
-def test_a_turn_just_before_enter_is_counted_when_the_host_reads_late(board):
-    # at a real board (no simulated hand to ask), a host reading the samples 2.5 s of board
-    # time behind the board cut the end of a turn made just before Enter: the count stopped
-    # 100 ms past the newest sample read, long before the turn. Each sample is stamped on
-    # arrival, 5 ms after the board took it, on a host clock that runs with the board's (the
-    # link keeps up, line by line, as at a real board; the reader of the samples does not),
-    # and Enter's host time on that clock is mapped to board time
-    link = board()
+def _count_with_a_late_reader(link, before_enter: bool):
+    """count_revolution on ``link`` read by a reader 100 samples (2.5 s at 25 ms) behind the
+    link, a hand turning the wheel once the reader is that far behind, and Enter at once.
+    Each sample is stamped on arrival, 5 ms after the board took it, on a host clock that
+    runs with the board's (the link keeps up, line by line, as at a real board; the reader
+    of the samples does not). ``before_enter``: the reader hands over what is 100 samples
+    old before Enter as well (else nothing until Enter)."""
     read = link.samples
     held: list[SampleBatch] = []
     turned: list[float] = []
-    behind = 100  # samples the reader is behind the link: 2.5 s at 25 ms
+    behind = 100
 
     def host() -> float:  # the host's clock: the board's, a fixed distance off
         return link.board.now + 1000.0
@@ -222,7 +221,8 @@ def test_a_turn_just_before_enter_is_counted_when_the_host_reads_late(board):
         b = read()
         arrived = b.t_us / 1e6 + 1000.0 + 0.005
         pending = SampleBatch.concat([*held, replace(b, t_host=arrived)])
-        due = np.arange(len(pending)) < len(pending) - behind
+        lag = behind if turned or before_enter else len(pending)
+        due = np.arange(len(pending)) < len(pending) - lag
         held[:] = [_part(pending, ~due)]
         return _part(pending, due)
 
@@ -237,46 +237,28 @@ def test_a_turn_just_before_enter_is_counted_when_the_host_reads_late(board):
         return True
 
     link.samples = samples
-    r = count_revolution(link, done, timeout=60, poll=0.0, clock=host)
+    return count_revolution(link, done, timeout=60, poll=0.0, clock=host)
+
+
+def test_a_turn_just_before_enter_is_counted_when_the_host_reads_late(board):
+    # at a real board (no simulated hand to ask), a host reading the samples 2.5 s of board
+    # time behind the board cut the end of a turn made just before Enter: the count stopped
+    # 100 ms past the newest sample read, long before the turn. Enter's host time is mapped
+    # to board time. On a busy machine the virtual board's time, which moves as the link's
+    # reader reads, ran seconds ahead of the samples handed over, and a 5 s wait counted from
+    # Enter ended before the turn's samples were read ("0 counts", 5 runs in 80 with two busy
+    # loops): the wait now lasts until the board has been silent that long
+    r = _count_with_a_late_reader(board(), before_enter=True)
     assert r.ok and abs(r.counts) == 720, r.text
 
 
 def test_a_turn_is_counted_when_the_host_had_read_no_sample_before_enter(board):
-    # the test above failed once on a busy machine: its reader had handed over no sample
-    # when Enter came (exactly 100 held back), so Enter could not be placed in board time and
-    # the count stopped 100 ms past the first sample read, 2.5 s before the turn: "0 counts".
-    # Here the reader hands nothing over before Enter, every time: the samples that arrive
-    # after Enter place it (a sample taken at b that arrived at h says the board's clock was
-    # past b - (h - Enter) at Enter)
-    link = board()
-    read = link.samples
-    held: list[SampleBatch] = []
-    turned: list[float] = []
-    behind = 100
-
-    def host() -> float:
-        return link.board.now + 1000.0
-
-    def samples() -> SampleBatch:
-        b = read()
-        arrived = b.t_us / 1e6 + 1000.0 + 0.005
-        pending = SampleBatch.concat([*held, replace(b, t_host=arrived)])
-        due = np.arange(len(pending)) < len(pending) - (behind if turned else len(pending))
-        held[:] = [_part(pending, ~due)]
-        return _part(pending, due)
-
-    def done() -> bool:
-        if turned:
-            return True
-        if sum(len(b) for b in held) < behind:
-            return False
-        with link.board.lock:
-            link.board.turn_by_hand(1.0)
-            turned.append(link.board.now)
-        return True
-
-    link.samples = samples
-    r = count_revolution(link, done, timeout=60, poll=0.0, clock=host)
+    # a reader that had handed over no sample when Enter came (on a busy machine, exactly
+    # 100 held back) could not place Enter in board time, and the count stopped 100 ms past
+    # the first sample read, 2.5 s before the turn: "0 counts". Here the reader hands nothing
+    # over before Enter, every time: the samples that arrive after Enter place it (a sample
+    # taken at b that arrived at h says the board's clock was past b - (h - Enter) at Enter)
+    r = _count_with_a_late_reader(board(), before_enter=False)
     assert r.ok and abs(r.counts) == 720, r.text
 
 
