@@ -825,6 +825,7 @@ class LabApp(App[None]):
         if task.phase == "square_wave":
             self.motor = motor_words(None, task.plan.high)
             self.requested = None
+            self.link = self.link.news_over()  # the last run's "square wave done" (walk 10, D2)
         self.run_progress = task.progress()
 
     def finish_run(self, why: str = "done", ended_by: str = "") -> None:

@@ -136,6 +136,13 @@ class LinkState:
         """The same state with the link's counters now."""
         return replace(self, dropped=stats.dropped, corrupt=stats.corrupt)
 
+    def news_over(self) -> LinkState:
+        """The same state with a passing text given way to the counters at once (a new run
+        begins: "square wave done" of the last one is no longer news)."""
+        if not self.passing:
+            return self
+        return replace(self, event="", passing=False, since=None)
+
     def aged(self, t: float | None, shown: float) -> LinkState:
         """The state at board time ``t`` (s, the newest sample's): a passing text shown for
         ``shown`` s gives way to the counters (so does one from before a board restart, whose
@@ -145,7 +152,7 @@ class LinkState:
         if self.since is None:
             return replace(self, since=t)
         if t - self.since >= shown or t < self.since:
-            return replace(self, event="", passing=False, since=None)
+            return self.news_over()
         return self
 
 

@@ -171,6 +171,26 @@ async def test_square_wave_done_gives_way_to_the_link_counters(quiet):
         assert "link ok · lost 0 · bad 0" in _status(app)
 
 
+async def test_a_new_run_takes_square_wave_done_off_the_top_line_at_once(quiet):
+    """D2's rest: F5 within the few seconds 'square wave done' of the last run is shown put
+    it beside 'motor steps' of the new run. The new run's square wave ends the news."""
+    async with _on_a_standing_wheel(quiet) as (pilot, dev, heard, seq):
+        app = pilot.app
+        await goto(pilot, "task10")
+        seq = await _event(pilot, dev, heard, seq, "square_wave_done", "square wave done")
+        said_at = seq
+        assert "square wave done" in _status(app)
+        await pilot.press("f5")
+        await settle(pilot)
+        while not (dev.commands and dev.commands[-1].startswith("STEP")):
+            seq = await _stream(pilot, dev, seq, 0.1)
+            assert (seq - said_at) * 0.025 < TRANSIENT_SHOWN, "the news ran out first"
+        await settle(pilot, lambda: app.task10 is not None and app.task10.phase == "square_wave")
+        assert (seq - said_at) * 0.025 < TRANSIENT_SHOWN
+        assert "square wave done" not in _status(app)
+        assert "link ok · lost 0 · bad 0" in _status(app)
+
+
 def _footer(app) -> list[str]:
     footer = app.screen.query_one(KeyFooter)
     return [f"{k.key_display} {k.description}".strip() for k in footer.query(KeyLabel) if k.display]
