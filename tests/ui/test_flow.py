@@ -514,9 +514,7 @@ async def test_the_entry_a_step_lands_in_stays_in_view_when_its_view_comes_later
             panel = pane.panel
             assert isinstance(panel, ViewPanel) and panel.view is not None
             panel.receive(panel.view)
-            # the step places its entry, then once more after the next refresh: settle's
-            # last round can end between the two (15 for 6, once in six loaded runs)
-            await settle(pilot, lambda: pane.scroll_y == landed)
+            await settle(pilot)
             assert pane.scroll_y == landed and app.screen.can_view_entire(box)
 
 
