@@ -72,8 +72,14 @@ class PtyServer:
 
     # -- the cable -------------------------------------------------------------------------
     def unplug(self) -> None:
-        """Pull the cable: the board loses power and the program's port fails."""
+        """Pull the cable: the board loses power and the program's port fails.
+
+        The symlink goes first, as udev removes a board's /dev/serial/by-id link when it is
+        unplugged: a program that tries the link meanwhile finds no such port. Left in
+        place, it would name the pty's number once the kernel hands that number to another
+        pty, and a program trying it would open (and lock) someone else's port."""
         with self._lock:
+            self._remove_link()
             if self.master is not None:
                 os.close(self.master)
                 self.master = None
@@ -103,9 +109,13 @@ class PtyServer:
             if self.master is not None:
                 os.close(self.master)
                 self.master = None
+        self._remove_link()
+
+    def _remove_link(self) -> None:
+        """Remove the symlink if it still names this server's pty (else it is not ours)."""
         if self.link_path:
             with contextlib.suppress(OSError):
-                if os.readlink(self.link_path) == self.slave_name:  # still ours: remove it
+                if os.readlink(self.link_path) == self.slave_name:
                     os.unlink(self.link_path)
 
     def serve_forever(self) -> None:

@@ -306,3 +306,16 @@ def test_a_reconnect_that_ends_after_close_gives_the_port_and_its_lock_back(pty_
     again = Link(pty_server.path, boot_wait_s=0.5)
     again.open()  # the port opens again
     again.close()
+
+
+def test_a_pulled_cable_takes_the_board_s_name_with_it(pty_server):
+    """The symlink goes with the cable, as udev's /dev/serial/by-id link does, and comes
+    back for the new pty: left behind, it named the old pty number, which the kernel hands
+    to the next pty anyone opens, and a link retrying it opened and locked that port (a
+    test in another process was told "in use by minseg-tui")."""
+    old = pty_server.slave_name
+    assert os.readlink(pty_server.path) == old
+    pty_server.unplug()
+    assert not os.path.lexists(pty_server.path)
+    pty_server.replug()
+    assert os.readlink(pty_server.path) == pty_server.slave_name
