@@ -1041,6 +1041,12 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     # -- keys ------------------------------------------------------------------------------
     def on_key(self, event: events.Key) -> None:
         """Every key handed to the form, in the order typed (see the class)."""
+        # The form's key handler, as Textual's Input takes its characters in its own
+        # (textual/widgets/_input.py:743-754). The editing keys, Enter and Tab are here too,
+        # not bindings: Textual runs a non-priority binding only once its key has bubbled up
+        # to the app (textual/app.py:4341-4343), behind the keys typed after it, which the
+        # form has handled by then (pinned by test_bursts's
+        # test_editing_keys_in_a_burst_act_before_the_text_typed_after_them).
         self.type_key(event)
 
     def type_key(self, event: events.Key) -> None:
