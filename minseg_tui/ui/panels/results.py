@@ -61,10 +61,11 @@ class ResponsePlot(TracePlot):
 
     def check_consume_key(self, key: str, character: str | None) -> bool:
         """Textual's question to a focused widget, whether it takes ``key`` itself (Textual
-        asks it to leave the widgets around it their bindings of the keys it takes,
-        textual/screen.py:426-435): the characters it binds, so that the step form around it
-        does not take them for the first empty entry, and its binding runs as Textual runs
-        it once the key has bubbled up to the app (z typed 'z' into the group's T)."""
+        then leaves out the bindings the widgets around it have of that key,
+        textual/screen.py:426-435): yes for the characters it binds, so that the step form
+        around it does not take them for the first empty entry, and its binding runs as
+        Textual runs it once the key has bubbled up to the app (z typed 'z' into the group's
+        T)."""
         return character is not None and character in self.OWN_CHARACTERS
 
     def _panel(self) -> ResultsPanel | None:
