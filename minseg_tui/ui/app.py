@@ -54,7 +54,7 @@ from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import format_fixed
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
-from minseg_tui.ui.keys import FOOTER_ON, app_bindings, help_lines
+from minseg_tui.ui.keys import FOOTER_ON, IN_FOOTER, app_bindings, help_lines
 from minseg_tui.ui.live import LEVEL_TOL, LiveBuffer
 from minseg_tui.ui.messages import (
     BoardChecked,
@@ -617,6 +617,10 @@ class LabApp(App[None]):
 
         return take
 
+    def action_board_check_in_footer(self) -> None:
+        """F10 as Task 1's footer shows it (live there only: :meth:`check_action`)."""
+        self.action_board_check()
+
     def action_board_check(self) -> None:
         """F10: drive the motor briefly and say whether the count follows (in a worker)."""
         device = self._check_device()
@@ -1101,19 +1105,17 @@ class LabApp(App[None]):
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """A panel key is live (and in the footer) only on the steps whose panel has it; a key
-        shown in the footer on some steps only (``in_footer``), only on those."""
+        shown in the footer on some steps only (its binding's action with ``IN_FOOTER``
+        after its name), only on those: elsewhere its own binding runs it, not shown."""
         if action in PANEL_ACTIONS:
             screen = self._lab_screen()
             return screen is not None and screen.offers(action)
-        if action == "in_footer":
+        own = action.removesuffix(IN_FOOTER)
+        if own != action and own in FOOTER_ON:
             screen = self._lab_screen()
             shown = screen.step_id_shown if screen is not None else None
-            return shown is not None and shown in FOOTER_ON.get(str(parameters[0]), ())
+            return shown is not None and shown in FOOTER_ON[own]
         return True
-
-    async def action_in_footer(self, action: str) -> None:
-        """A key the footer shows on this step (F10 on Task 1): its own action."""
-        await self.run_action(action)
 
     # a panel key's binding, whatever has the focus: the step panel's own action runs, after
     # the keys typed before it (what stands in the entries stored first)

@@ -25,7 +25,8 @@ class Key:
     step's panel, and what it is, for the line saying it is not part of this step;
     ``assistant``: a lab assistant's key (last in the footer, the first left out where its
     line cannot hold every key); ``footer_on``: the steps whose footer shows a key that is
-    not shown elsewhere but works on every step (F10 on Task 1, which asks for it)."""
+    not shown elsewhere but works on every step (F10 on Task 1, which asks for it); the
+    app has an action of its name with :data:`IN_FOOTER` after it, which runs it."""
 
     name: str
     help: str
@@ -170,17 +171,23 @@ class PanelKeys(Widget):
 FOOTER_ON: dict[str, tuple[str, ...]] = {k.action: k.footer_on for k in KEYMAP if k.footer_on}
 """The app's actions shown in the footer on some steps only (:attr:`Key.footer_on`)."""
 
+IN_FOOTER = "_in_footer"
+"""What the action of the binding the footer shows of a :data:`FOOTER_ON` key has after the
+key's own action's name ('board_check_in_footer')."""
+
 
 def app_bindings() -> list[Binding]:
     """The app's own keys' bindings (those of the step panels are :func:`panel_keys`). A key
-    with :attr:`Key.footer_on` has two: first one shown in the footer, live only on those
-    steps (``in_footer``: the app's ``check_action`` hides it elsewhere), then its own,
-    which runs wherever the first is not live."""
+    with :attr:`Key.footer_on` has two: first one shown in the footer, whose action (its
+    own with :data:`IN_FOOTER` after it) the app's ``check_action`` leaves out (not live,
+    not shown) on the other steps, then its own, which runs wherever the first is not live
+    (Textual tries a key's bindings in turn until one's action runs)."""
     out: list[Binding] = []
     for k in KEYMAP:
         if not k.keys or k.panel:
             continue
         if k.footer_on:
-            out.append(Binding(k.keys, f"in_footer('{k.action}')", k.label, priority=k.priority))
+            action = f"{k.action}{IN_FOOTER}"
+            out.append(Binding(k.keys, action, k.label, priority=k.priority))
         out.append(Binding(k.keys, k.action, k.label, show=k.shown, priority=k.priority))
     return out

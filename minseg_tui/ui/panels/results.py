@@ -4,6 +4,7 @@ group's own readings."""
 from __future__ import annotations
 
 import math
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -54,6 +55,18 @@ class ResponsePlot(TracePlot):
         Binding("end", "cursor_end(1)", "cursor last", show=False),
     ]
     can_focus = True
+
+    OWN_CHARACTERS: ClassVar[frozenset[str]] = frozenset("[]z")
+    """The characters bound above, which the plot keeps while it holds the focus."""
+
+    def check_consume_key(self, key: str, character: str | None) -> bool:
+        """Textual's question to a focused widget, whether it takes ``key`` itself (Textual
+        then leaves out the bindings the widgets around it have of that key,
+        textual/screen.py:426-435): yes for the characters it binds, so that the step form
+        around it does not take them for the first empty entry, and its binding runs as
+        Textual runs it once the key has bubbled up to the app (z typed 'z' into the group's
+        T)."""
+        return character is not None and character in self.OWN_CHARACTERS
 
     def _panel(self) -> ResultsPanel | None:
         return next((p for p in self.ancestors if isinstance(p, ResultsPanel)), None)

@@ -482,6 +482,12 @@ class StepList(OptionList):
             super().action_cursor_up()
 
     def on_key(self, event: events.Key) -> None:
+        # Stays: Textual hands each key to the widget focused when the app reads it, without
+        # waiting for the keys before it (textual/app.py:4136-4138), so the keys typed after
+        # a character that moves the focus into the step are already in this list's queue;
+        # and the form is not above the list, so nothing of them bubbles to it. Without the
+        # hand-over test_walk8_enter (4 of 4) and test_keys_not_posted_again's
+        # test_enter_after_characters_typed_on_the_list_is_not_posted_again fail.
         screen = self.screen
         if isinstance(screen, LabScreen) and event.is_printable and event.character:
             if screen.pane.typing_row() is not None and not screen.readonly:
@@ -722,6 +728,13 @@ class LabScreen(StatusScreen):
         typed after it act on the result)."""
         panel = self.panel
         if panel is not None and self.offers(action):
+            # Run by name on the panel (Textual's public Widget.run_action, which asks its
+            # check_action first): stays because Textual looks for a key's bindings only
+            # from the focused widget up (textual/screen.py:408-424), and the panel is never
+            # focused (the step's form around it holds the focus, and the list of steps may),
+            # so its own BINDINGS would never run. The app binds its keys with priority and
+            # hands them here (F4 on Task 5 from the form: test_bursts's
+            # test_the_reading_typed_right_after_f4_goes_into_the_next_entry).
             await panel.run_action(action)
 
     def _panel_for(self, step: Step) -> Widget | None:

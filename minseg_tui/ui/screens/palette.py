@@ -51,7 +51,16 @@ _IN_TURN: tuple[str, ...] = tuple(
 the next command), bar Enter and Escape: bound with priority on :class:`Palette` so that
 the app hands each to the box's queue in the order typed. Bound as Textual binds them, the
 box passed them up to the app, which ran them behind the characters typed after them
-('Tsk 5 Home Right a' in one burst gave 'Tsk 5a') and behind Enter's command."""
+('Tsk 5 Home Right a' in one burst gave 'Tsk 5a') and behind Enter's command.
+
+Stays, read from the classes' ``BINDINGS`` and run with ``app.run_action``
+(:meth:`Palette._run_bound`): Textual runs a priority binding as the app reads the key and
+hands any other key to the focused widget without waiting (textual/app.py:4136-4138), whose
+bindings run only once the key has bubbled back up to the app's queue (textual/app.py:
+4341-4343), behind the keys read meanwhile; the box is Textual's own CommandInput, composed by
+CommandPalette, so its editing keys cannot be made its key handler's. Without these bindings
+test_palette_enter's edited-in-the-burst and backspace-in-the-burst cases and its
+test_enter_runs_the_command_the_group_moved_to (Down) fail."""
 
 
 class Palette(CommandPalette):

@@ -1041,6 +1041,12 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     # -- keys ------------------------------------------------------------------------------
     def on_key(self, event: events.Key) -> None:
         """Every key handed to the form, in the order typed (see the class)."""
+        # The form's key handler, as Textual's Input takes its characters in its own
+        # (textual/widgets/_input.py:743-754). The editing keys, Enter and Tab are here too,
+        # not bindings: Textual runs a non-priority binding only once its key has bubbled up
+        # to the app (textual/app.py:4341-4343), behind the keys typed after it, which the
+        # form has handled by then (pinned by test_bursts's
+        # test_editing_keys_in_a_burst_act_before_the_text_typed_after_them).
         self.type_key(event)
 
     def type_key(self, event: events.Key) -> None:
@@ -1104,32 +1110,25 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
 
     def _passed_on(self, event: events.Key, focused: Widget | None) -> None:
         """A key the form did not get as the focused widget: passed up by a widget of the
-        step that has the focus (a plot, a table: Tab moves on from it; a character it binds
-        goes on to its binding, z or [ on the run log; any other character goes into the
-        first empty entry, Space only mid-word), or handed to the form before a key ahead of
-        it moved the focus away: a character goes into the entry as well, any other key
-        goes on up to the app, which runs the binding of the widget focused now (↓ or Enter
-        on the list of steps), as Textual runs a key's binding. No key is posted again."""
+        step that has the focus (a plot, a table: Tab moves on from it; a character it
+        takes itself, as it answers Textual's ``check_consume_key`` (z or [ on the run log),
+        goes on to its binding; any other character goes into the first empty entry, Space
+        only mid-word), or handed to the form before a key ahead of it moved the focus
+        away: a character goes into the entry as well, any other key goes on up to the app,
+        which runs the binding of the widget focused now (↓ or Enter on the list of steps),
+        as Textual runs a key's binding. No key is posted again."""
         inside = focused is not None and self in focused.ancestors
         key = event.key
         if inside and key in ("tab", "shift+tab"):
             self._own(event)
             self.move_focus(1 if key == "tab" else -1, focused)
             return
-        if inside and focused is not None and self._binds(focused, key):
-            return  # Textual runs the binding once the key has bubbled up to the app
+        if inside and focused is not None and focused.check_consume_key(key, event.character):
+            return  # Textual runs its binding once the key has bubbled up to the app
         if event.is_printable and event.character and (event.character != " " or self._taking):
             if self.typing_row() is not None and not self.readonly:
                 self._own(event)
                 self.take(event.character)
-
-    def _binds(self, focused: Widget, key: str) -> bool:
-        """A widget of the step from ``focused`` up to the form (not the form) binds ``key``
-        (the screen's active bindings, which Textual runs for a key that bubbled up)."""
-        bound = self.screen.active_bindings.get(key)
-        if bound is None or not bound.enabled:
-            return False
-        return bound.node is not self and self in bound.node.ancestors
 
     def on_paste(self, event: events.Paste) -> None:
         """Text pasted (its first line, as a text box takes it) goes where typing goes."""
