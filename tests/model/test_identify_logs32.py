@@ -117,3 +117,19 @@ def test_T_s_interval_covers_more_often_where_the_start_lies_between_samples():
         assert s is not None
         hits += s.T_ci[0] <= g.T <= s.T_ci[1]
     assert hits >= 12
+
+
+@pytest.mark.shared_data
+def test_an_s_shaped_start_does_not_widen_T_for_a_start_the_samples_show():
+    # ubc-motor-7V: a dead time was refused because the wheel had come 19 % of the way before
+    # it would end; the start is seen, the shape is the misfit. Widening T's interval with the
+    # shift free there said "the samples do not pin the start" beside "the wheel already moves
+    # before it would end", which contradict each other
+    log = read_run_log(REAL / "ubc-motor-7V" / "step.csv")
+    r = identify(table(72.0), 5.0, log)
+    s = r.step
+    assert s is not None and s.fit.shift_on_bound and s.fit.moved_early is not None
+    assert s.fit.free_T is None and r.to_json()["step"]["T_shift_free"] is None
+    said = " ".join(o.message for o in r.observations)
+    assert "the wheel already moves before it would end" in said
+    assert "the samples do not pin the start" not in said

@@ -461,8 +461,12 @@ def _fit(
     def late_end(d: float, d_on_bound: bool, T_on_bound: bool) -> bool:
         """Whether the shift ended on its upper bound, no dead time taken, while the wheel is
         first seen to move later: the log then holds a start anywhere up to there, and T's
-        interval with the shift held at the bound leaves that out."""
-        return d_on_bound and 0.0 < d <= bound and not T_on_bound and late_end_at > bound
+        interval with the shift held at the bound leaves that out. Not when a dead time was
+        refused because the wheel already moved before it would end (an S-shaped start: the
+        samples show the start, the shape is what the model misses)."""
+        return (
+            d_on_bound and 0.0 < d <= bound and not T_on_bound and late_end_at > bound and not moved
+        )
 
     time_source = "the board's timestamps (t_us)" if stamped else "the t column"
     n_w = rises_fit.rows.size
