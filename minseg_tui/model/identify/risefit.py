@@ -401,6 +401,15 @@ def _fit(
             whole = late_w
             whole_reach = (-bound, d_max)
     late_rise = False  # a dead time the rises' own rows show and the rows after them hide
+
+    def fixed_d(d: float, T0: float) -> float:
+        """The residual sum of squares of the fit of the rises' own rows with the dead time
+        held at d (s), T free from T0 (s)."""
+        f = fit_windows(
+            t, theta, windows, ts, (d, d + 1e-9), T_range, mask_r, (d,), (T0, 0.8 * T0, 1.25 * T0)
+        )
+        return f.rss
+
     if prior is None and sought and rises_fit.d <= bound and (whole is None or whole.d <= bound):
         # the wheel starts late, yet no dead time fitted every row: the rows long after the
         # rises (a slow creep that one time constant does not follow) outweigh the rises and
@@ -439,7 +448,9 @@ def _fit(
             if late_r is not None and dead(
                 late_r.d, plain.rss, late_r.rss, late_r.rows.size, late_r.n_params
             ):
-                held = (late_r.d, d_max)  # the response cannot start before the rises show it
+                # the response cannot start before the rises show it: the earliest dead time
+                # their rows allow (on coarse counts a start between samples trades against T)
+                held = (_earliest_start(late_r, bound, fixed_d), d_max)
                 rises_fit = fit_windows(
                     t,
                     theta,
@@ -611,6 +622,29 @@ def _rows_apart(fit: TimeConstantFit, rise: tuple[float, float, float] | None) -
         rise_T=T_r,
         rise_ci=(lo, hi),
     )
+
+
+PROFILE_CHI2: float = 3.84
+"""How far the residual sum of squares of the rises may grow, in residual variances, at the
+earliest dead time still held to fit them (the 95 % point of chi-squared with one degree of
+freedom)."""
+
+
+def _earliest_start(late: WindowsFit, bound: float, rss_at: Any) -> float:
+    """The earliest dead time (s) the rises' rows allow: stepping from the fitted one ``late.d``
+    towards the shift's bound, the last whose residual sum of squares (``rss_at(d, T0)``, T
+    fitted again from T0) stays within :data:`PROFILE_CHI2` residual variances of the best."""
+    n, p = late.rows.size, late.n_params
+    limit = late.rss * (1.0 + PROFILE_CHI2 / max(n - p, 1))
+    earliest = late.d
+    for d in np.linspace(late.d, bound, 7)[1:]:
+        try:
+            if rss_at(float(d), late.T) > limit:
+                break
+        except np.linalg.LinAlgError:
+            break
+        earliest = float(d)
+    return earliest
 
 
 def _shift_free(
