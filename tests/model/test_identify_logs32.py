@@ -132,7 +132,7 @@ def test_an_s_shaped_start_does_not_widen_T_for_a_start_the_samples_show():
     assert s.fit.free_T is None and r.to_json()["step"]["T_shift_free"] is None
     said = " ".join(o.message for o in r.observations)
     assert "the wheel already moves before it would end" in said
-    assert "the samples do not pin the start" not in said
+    assert "the samples do not pin where" not in said
 
 
 def test_a_dead_time_found_on_the_rise_s_rows_is_held_no_later_than_they_need():

@@ -555,8 +555,9 @@ def fit_observations(
                         f"{format_signed(fit.free_shift * 1e3, 3)} ms from the steps with T = "
                         f"{format_constant(fit.free_T, 's')} (95 % "
                         f"{format_interval(fit.free_ci[0] * 1e3, fit.free_ci[1] * 1e3, 'ms')}): "
-                        "a later start goes with a shorter T, and the samples do not pin the start, "
-                        "so the 95 % interval of T holds both fits."
+                        "a later start goes with a shorter T, and the samples do not pin where a "
+                        "first-order response would start (coarse counts, or a start that bends "
+                        "in smoothly), so the 95 % interval of T holds both fits."
                         if fit.free_T is not None
                         and fit.free_ci is not None
                         and fit.free_shift is not None
