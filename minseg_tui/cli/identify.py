@@ -174,10 +174,17 @@ def render(result: Identification) -> str:
                 f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T"
                 + (
                     f"; the interval also holds the T of the rows up to {RISE_SPAN:g} T "
-                    f"after each edge alone, {format_number(fit.rise_T * 1e3)} ms)"
+                    f"after each edge alone, {format_number(fit.rise_T * 1e3)} ms"
                     if fit.rise_T is not None
-                    else ")"
+                    else ""
                 )
+                + (
+                    "; the interval also holds the T of the fit with the shift free, "
+                    f"{format_number(fit.free_T * 1e3)} ms"
+                    if fit.free_T is not None
+                    else ""
+                )
+                + ")"
             ),
             *(_wrap(s.T_63_note) if s.T_63_note else []),
             f"J = T (R f + k_v k_a) / R = {format_number(s.J)} kg m^2 (Task 13)",

@@ -328,7 +328,8 @@ def switch_on_glitches(u: ArrayLike, omega: ArrayLike) -> int:
     which takes out a logging stall's spike and the row that catches up after it): a reading
     above every steady
     speed the motor reaches, at a voltage that holds still. Only an unbroken run from row 0
-    counts, and at least three rows of the first level must remain.
+    counts, or from row 1 after a first row of exactly 0 (a speed from counts has none there;
+    the count includes that row), and at least three rows of the first level must remain.
     """
     v = np.asarray(u, dtype=float)
     w = np.asarray(omega, dtype=float)
@@ -345,12 +346,21 @@ def switch_on_glitches(u: ArrayLike, omega: ArrayLike) -> int:
     smooth = np.median(np.stack([rest[k : n - 4 + k] for k in range(5)]), axis=0)
     later = float(np.max(np.abs(smooth - level)))
     far = np.abs(w[:MAX_GLITCH_ROWS] - level) > max(later, 1e-9)
-    n = 0
+    # a zeroed first row (a speed from counts has no sample before row 0, and loggers write 0
+    # there) may stand before the run: it is left out with the glitches after it
+    n = 1 if w[0] == 0.0 and not far[0] and far[1] else 0
     while n < MAX_GLITCH_ROWS and far[n]:
         n += 1
     # a glitch run ends before the rows that hold the level: anything left after it within
     # the first MAX_GLITCH_ROWS must not be far
     return n if not np.any(far[n:]) else 0
+
+
+def zeroed_first_row(omega: ArrayLike, glitches: int) -> bool:
+    """Whether the first of ``glitches`` switch-on rows (:func:`switch_on_glitches`) is a
+    zeroed first row, a speed of exactly 0 before the glitch rows, not a glitch itself."""
+    w = np.asarray(omega, dtype=float)
+    return glitches >= 2 and w[0] == 0.0 and w[1] != 0.0
 
 
 CLOCK_AGREE: float = 0.02

@@ -102,7 +102,7 @@ def test_json_is_one_object_with_the_contract(files, capsys):
     }
     added = {"K_ci", "T_63_model", "T_63_note", "method", "shift", "u_c"}
     added |= {"dead_time", "T_determined", "T_on_bound", "shift_on_bound"}
-    added |= {"glitch_rows", "left_out_rows", "T_rise_rows"}
+    added |= {"glitch_rows", "left_out_rows", "T_rise_rows", "T_shift_free"}
     assert set(j["step"]) == {"K", "T", "T_63", "T_ci", "J", "omega_ss"} | added
     assert set(j["model"]) == {"T", "K", "dead_time", "u_c", "K_above_u_c"}
     # a frictionless plant: no dry friction found, Task 15 has one answer

@@ -277,6 +277,7 @@ def test_json_shape(linear_result):
         "glitch_rows",
         "left_out_rows",
         "T_rise_rows",
+        "T_shift_free",
     ]
     assert list(j["model"]) == ["T", "K", "dead_time", "u_c", "K_above_u_c"]
     assert j["rows"][0]["i_ss"] == pytest.approx(linear_table(MOTOR)[0].i_ss)  # mA as entered

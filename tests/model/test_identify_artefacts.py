@@ -19,6 +19,7 @@ from minseg_tui.model.runlog import (
     RunLog,
     clock_problem,
     switch_on_glitches,
+    zeroed_first_row,
 )
 from tests.model.identgen import make, table
 from tests.shared_data import SHARED_DATA
@@ -123,8 +124,16 @@ def test_switch_on_glitches_rule():
     w5[20:22] = [200.0, 46.0]  # nor does the row that catches up after the spike
     assert switch_on_glitches(u, w5) == 2
     w4 = w.copy()
-    w4[1] = 45.0  # a spike after a normal first row is not a switch-on glitch run
-    assert switch_on_glitches(u, w4) == 0
+    w4[1] = 45.0  # a spike after a zeroed first row (an Euler speed has none at row 0)
+    assert switch_on_glitches(u, w4) == 2 and zeroed_first_row(w4, 2)
+    assert not zeroed_first_row(w1, 2)
+    u6 = np.array([2.0] * 8 + [3.0] * 20)
+    w6 = np.array([10.0] * 8 + list(np.linspace(10, 30, 20)))
+    w6[1] = 45.0  # a spike after a first row at the level (not zeroed) is no glitch run
+    assert switch_on_glitches(u6, w6) == 0
+    w7 = w.copy()
+    w7[2] = 45.0  # the zeroed row, a row at rest, then a spike: no unbroken run
+    assert switch_on_glitches(u, w7) == 0
 
 
 def test_a_T_the_log_cannot_tell_is_not_printed_as_numbers():

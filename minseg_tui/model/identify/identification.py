@@ -243,6 +243,13 @@ class Identification:
                 "T_rise_rows": None
                 if s.fit.rise_T is None or s.fit.rise_ci is None
                 else {"T": s.fit.rise_T, "T_ci": [s.fit.rise_ci[0], s.fit.rise_ci[1]]},
+                "T_shift_free": None
+                if s.fit.free_T is None or s.fit.free_ci is None
+                else {
+                    "T": s.fit.free_T,
+                    "T_ci": [s.fit.free_ci[0], s.fit.free_ci[1]],
+                    "shift": s.fit.free_shift,
+                },
             }
             out["model"] = {
                 "T": s.T,

@@ -11,7 +11,7 @@ import numpy as np
 from minseg_tui.model.identify.risefit import RISE_SPAN, Rise, TimeConstantFit
 from minseg_tui.model.identify.rises import rise_windows
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
-from minseg_tui.model.runlog import RunLog
+from minseg_tui.model.runlog import RunLog, zeroed_first_row
 from minseg_tui.quantities import (
     F_UNIT,
     RPM,
@@ -442,16 +442,26 @@ def fit_observations(
     count = 2.0 * math.pi / (cpr * ts) if cpr and ts > 0 else None  # rad/s per count per sample
     rise = float(np.median(np.abs(fit.omega_ss))) if fit.omega_ss else 0.0
     if glitches:
-        rows = list(range(glitches))
+        zeroed = zeroed_first_row(log.omega, glitches)
+        rows = list(range(1 if zeroed else 0, glitches))
         speeds = ", ".join(format_reading(float(log.omega[r]), "", 3) for r in rows)
+        first = (
+            f"{_lines(log, [0]).capitalize()} reads 0 rad/s, as the first row of a speed taken "
+            "from counts does (no sample before it), and the "
+            + (f"{len(rows)} rows after it" if len(rows) > 1 else "row after it")
+            + f" ({_lines(log, rows)}) read{'' if len(rows) > 1 else 's'} {speeds} rad/s"
+            if zeroed
+            else f"The first {glitches} row(s) ({_lines(log, rows)}) read {speeds} rad/s"
+        )
         out.append(
             Observation(
                 "glitch_rows",
                 (
-                    f"The first {glitches} row(s) ({_lines(log, rows)}) read {speeds} rad/s while the "
+                    f"{first} while the "
                     "command holds still, further from the speed of the rows after them than any later "
-                    "row ever is: switch-on glitches, not motion. They are left out: the fit starts at "
-                    f"{_lines(log, [glitches])}."
+                    "row ever is: switch-on glitches of the logging, not motion. They are left out"
+                    + (" with the zeroed row before them" if zeroed else "")
+                    + f": the fit starts at {_lines(log, [glitches])}."
                 ),
             )
         )
@@ -487,6 +497,21 @@ def fit_observations(
                     "dead time. It is fitted as the model check fits it and is part of the model "
                     f"(Task 14): T omega'(t) = -omega(t) + K u_A(t - {format_number(fit.dead_time, 3)} s). T is counted "
                     "from the moment the wheel answers."
+                    + (
+                        " The rows of the rise alone show it"
+                        + (
+                            f" (the speed first shows {format_constant(fit.onset, 's')} after the steps)"
+                            if fit.onset is not None
+                            else ""
+                        )
+                        + ": over every row, the slow part long after the rise, which one time "
+                        "constant does not follow, would hold a response without it early, "
+                        "starting before the wheel moves. The model check (analyze) fits the "
+                        "speed of every row, that slow part included, and can give a shorter "
+                        "dead time."
+                        if fit.dead_time_from_rise
+                        else ""
+                    )
                 ),
             )
         )
@@ -524,6 +549,21 @@ def fit_observations(
                     f"The time shift of the steps against the samples ended on its bound of one sample "
                     f"period ({format_signed(fit.shift * 1e3, 3)} ms): the wheel answers later than the sampling's "
                     f"lateness explains. {late} T is the fit with the shift held there."
+                    + (
+                        f" With the shift free up to where the wheel is first seen to move "
+                        f"({format_constant(fit.onset, 's')} after the steps), the fit starts the response "
+                        f"{format_signed(fit.free_shift * 1e3, 3)} ms from the steps with T = "
+                        f"{format_constant(fit.free_T, 's')} (95 % "
+                        f"{format_interval(fit.free_ci[0] * 1e3, fit.free_ci[1] * 1e3, 'ms')}): "
+                        "a later start goes with a shorter T, and the samples do not pin where a "
+                        "first-order response would start (coarse counts, or a start that bends "
+                        "in smoothly), so the 95 % interval of T holds both fits."
+                        if fit.free_T is not None
+                        and fit.free_ci is not None
+                        and fit.free_shift is not None
+                        and fit.onset is not None
+                        else ""
+                    )
                 ),
             )
         )

@@ -159,6 +159,10 @@ class TimeConstantFit:
     rise_T: float | None = None
     rise_ci: tuple[float, float] | None = None
     angle_mended: bool = False
+    dead_time_from_rise: bool = False
+    free_T: float | None = None
+    free_ci: tuple[float, float] | None = None
+    free_shift: float | None = None
 
 
 def fit_time_constant(log: RunLog) -> TimeConstantFit | None:
@@ -326,6 +330,8 @@ def _fit(
         if prior.moved_early is not None:
             moved.append(prior.moved_early)
     reach = (-bound, d_max) if prior is not None and prior.dead_time > 0 else (-bound, bound)
+    if prior is not None and prior.dead_time_from_rise:
+        reach = (prior.dead_time, d_max)
     near = (0.8, 1.0, 1.25)
 
     def dead(d: float, rss: float, rss_late: float, n: int, p: int) -> bool:
@@ -394,6 +400,85 @@ def _fit(
         ):
             whole = late_w
             whole_reach = (-bound, d_max)
+    late_rise = False  # a dead time the rises' own rows show and the rows after them hide
+
+    def fixed_d(d: float, T0: float) -> float:
+        """The residual sum of squares of the fit of the rises' own rows with the dead time
+        held at d (s), T free from T0 (s)."""
+        f = fit_windows(
+            t, theta, windows, ts, (d, d + 1e-9), T_range, mask_r, (d,), (T0, 0.8 * T0, 1.25 * T0)
+        )
+        return f.rss
+
+    if prior is None and sought and rises_fit.d <= bound and (whole is None or whole.d <= bound):
+        # the wheel starts late, yet no dead time fitted every row: the rows long after the
+        # rises (a slow creep that one time constant does not follow) outweigh the rises and
+        # hold the response early, before the wheel moves. The rises' own rows judge it
+        # (micromouse-n20-duty100: the wheel stands 30 ms after the logged step)
+        starts_r = np.array([w.edge.start for w in windows], dtype=np.int64)
+        # the rows up to RISE_SPAN T after the wheel first answers (a dead time tried up to
+        # there keeps rows after it in every window)
+        mask_r = _rise_rows(t, starts_r, rises_fit.T, max(rises_fit.d, onset or 0.0), keep)
+        if mask_r is not None:
+            plain = fit_windows(
+                t,
+                theta,
+                windows,
+                ts,
+                reach,
+                T_range,
+                mask_r,
+                (rises_fit.d,),
+                tuple(f * rises_fit.T for f in (0.5, 0.7, *near)),
+            )
+            try:
+                late_r: WindowsFit | None = fit_windows(
+                    t,
+                    theta,
+                    windows,
+                    ts,
+                    (-bound, d_max),
+                    T_range,
+                    mask_r,
+                    (0.0, *delays),
+                    (*(f * plain.T for f in WIDE_T_FACTORS), *T_read),
+                )
+            except np.linalg.LinAlgError:  # a dead time that leaves a window no row after it
+                late_r = None
+            if late_r is not None and dead(
+                late_r.d, plain.rss, late_r.rss, late_r.rows.size, late_r.n_params
+            ):
+                # the response cannot start before the rises show it: the earliest dead time
+                # their rows allow (on coarse counts a start between samples trades against T)
+                held = (_earliest_start(late_r, bound, fixed_d), d_max)
+                rises_fit = fit_windows(
+                    t,
+                    theta,
+                    windows,
+                    ts,
+                    held,
+                    T_range,
+                    keep,
+                    (late_r.d,),
+                    tuple(f * late_r.T for f in (1.0, 1.25, 1.5, 2.0)),
+                )
+                if whole is not None:
+                    whole = whole_fit(held, rises_fit.T, shift_starts=(late_r.d,), T_factors=near)
+                rises_reach = whole_reach = (-bound, d_max)
+                late_rise = True
+    # the latest the response can start: where the wheel is seen to move
+    late_end_at = min(d_max, onset) if onset is not None else bound
+
+    def late_end(d: float, d_on_bound: bool, T_on_bound: bool) -> bool:
+        """Whether the shift ended on its upper bound, no dead time taken, while the wheel is
+        first seen to move later: the log then holds a start anywhere up to there, and T's
+        interval with the shift held at the bound leaves that out. Not when a dead time was
+        refused because the wheel already moved before it would end (an S-shaped start: the
+        samples show the start, the shape is what the model misses)."""
+        return (
+            d_on_bound and 0.0 < d <= bound and not T_on_bound and late_end_at > bound and not moved
+        )
+
     time_source = "the board's timestamps (t_us)" if stamped else "the t column"
     n_w = rises_fit.rows.size
     sigma_w = math.sqrt(rises_fit.rss / max(n_w - rises_fit.n_params, 1))
@@ -424,10 +509,19 @@ def _fit(
                     if alone is not None and not alone.T_on_bound:
                         c = alone.covariance
                         rise = (alone.T, math.sqrt(max(float(c.cov[1, 1]), 0.0)), c.half_width(1))
+            free_w: tuple[float, float, float, float] | None = None
+            if late_end(whole.d, whole.d_on_bound, whole.T_on_bound):
+                held_w = whole_fit(
+                    (-bound, late_end_at), whole.T, shift_starts=(whole.d,), T_factors=near
+                )
+                if held_w is not None and not held_w.T_on_bound:
+                    c = held_w.covariance
+                    free_w = (held_w.T, held_w.d, c.half_width(1), 0.0)
             return replace(
-                _rows_apart(fit, rise),
+                _shift_free(_rows_apart(fit, rise), free_w),
                 dead_time=whole.d if whole.d > bound else 0.0,
-                shift_on_bound=whole.d_on_bound,
+                shift_on_bound=whole.d_on_bound and not late_rise,
+                dead_time_from_rise=late_rise,
                 T_on_bound=whole.T_on_bound,
                 **common,
             )
@@ -460,10 +554,26 @@ def _fit(
             if not alone_w.T_on_bound:
                 c = alone_w.covariance
                 rise = (alone_w.T, math.sqrt(max(float(c.cov[0, 0]), 0.0)), c.half_width(0))
+    free: tuple[float, float, float, float] | None = None
+    if late_end(rises_fit.d, rises_fit.d_on_bound, rises_fit.T_on_bound):
+        free_f = fit_windows(
+            t,
+            theta,
+            windows,
+            ts,
+            (-bound, late_end_at),
+            T_range,
+            keep,
+            (rises_fit.d,),
+            tuple(f * rises_fit.T for f in near),
+        )
+        if not free_f.T_on_bound:
+            free = (free_f.T, free_f.d, free_f.covariance.half_width(0), 0.0)
     return replace(
-        _rows_apart(fit, rise),
+        _shift_free(_rows_apart(fit, rise), free),
         dead_time=rises_fit.d if rises_fit.d > bound else 0.0,
-        shift_on_bound=rises_fit.d_on_bound,
+        shift_on_bound=rises_fit.d_on_bound and not late_rise,
+        dead_time_from_rise=late_rise,
         T_on_bound=rises_fit.T_on_bound,
         **common,
     )
@@ -511,6 +621,49 @@ def _rows_apart(fit: TimeConstantFit, rise: tuple[float, float, float] | None) -
         ci=(min(fit.ci[0], lo), max(fit.ci[1], hi)),
         rise_T=T_r,
         rise_ci=(lo, hi),
+    )
+
+
+PROFILE_CHI2: float = 3.84
+"""How far the residual sum of squares of the rises may grow, in residual variances, at the
+earliest dead time still held to fit them (the 95 % point of chi-squared with one degree of
+freedom)."""
+
+
+def _earliest_start(late: WindowsFit, bound: float, rss_at: Any) -> float:
+    """The earliest dead time (s) the rises' rows allow: stepping from the fitted one ``late.d``
+    towards the shift's bound, the last whose residual sum of squares (``rss_at(d, T0)``, T
+    fitted again from T0) stays within :data:`PROFILE_CHI2` residual variances of the best."""
+    n, p = late.rows.size, late.n_params
+    limit = late.rss * (1.0 + PROFILE_CHI2 / max(n - p, 1))
+    earliest = late.d
+    for d in np.linspace(late.d, bound, 7)[1:]:
+        try:
+            if rss_at(float(d), late.T) > limit:
+                break
+        except np.linalg.LinAlgError:
+            break
+        earliest = float(d)
+    return earliest
+
+
+def _shift_free(
+    fit: TimeConstantFit, free: tuple[float, float, float, float] | None
+) -> TimeConstantFit:
+    """``fit`` (its shift held on its upper bound) with T's interval widened to hold the fit
+    with the shift free up to where the wheel is first seen to move (``free``: its T, shift
+    and half its 95 % interval of T, s): the start of a rise that the counts do not show
+    trades against T (a later start, a shorter T), and the bound alone is no measurement."""
+    if free is None:
+        return fit
+    T_f, d_f, half_f, _ = free
+    lo, hi = max(T_f - half_f, 0.0), T_f + half_f
+    return replace(
+        fit,
+        ci=(min(fit.ci[0], lo), max(fit.ci[1], hi)),
+        free_T=T_f,
+        free_ci=(lo, hi),
+        free_shift=d_f,
     )
 
 
