@@ -8,6 +8,7 @@ from textual.containers import VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Static
 
+from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.screens.lab import marks_legend
 
 INTRO = (
@@ -17,9 +18,10 @@ INTRO = (
 
 
 class HelpScreen(ModalScreen[None]):
-    """Lists the keys; Escape, F1 or q closes it."""
+    """Lists the keys; Escape, F1 or q closes it, before the app reads the next key
+    (:func:`~minseg_tui.ui.screens.dialog.close_dialog`)."""
 
-    BINDINGS = [Binding("escape,f1,q", "dismiss", "Close")]
+    BINDINGS = [Binding("escape,f1,q", "close", "Close", priority=True)]
 
     def __init__(self, keys: list[tuple[str, str]]) -> None:
         super().__init__()
@@ -31,3 +33,6 @@ class HelpScreen(ModalScreen[None]):
             yield Static("Keys — Esc closes", classes="title")
             yield Static(INTRO, classes="para")
             yield Static("\n".join(lines), id="help-keys")
+
+    async def action_close(self) -> None:
+        await close_dialog(self, None)

@@ -12,6 +12,12 @@ from textual.screen import ModalScreen
 from textual.widgets import Input, OptionList
 from textual.widgets.option_list import Option
 
+from minseg_tui.ui.screens.dialog import (
+    answer_bindings,
+    close_dialog,
+    close_with_highlighted,
+    move_highlight,
+)
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.textbox import TextBox
 
@@ -32,9 +38,14 @@ RECORDING_CHOICES: tuple[tuple[str, str], ...] = (
 class QuitScreen(ModalScreen[str]):
     """Asks before quitting while the session is not all on disk (or, with ``title`` and
     ``choices`` :data:`RECORDING_CHOICES`, while a run is being recorded); dismissed with
-    the key of a choice (Escape: keep)."""
+    the key of a choice (Escape: keep). Enter and Escape close it before the app reads the
+    next key (:mod:`~minseg_tui.ui.screens.dialog`)."""
 
-    BINDINGS = [Binding("escape", "keep", "Keep working")]
+    BINDINGS = [
+        Binding("escape", "keep", "Keep working", priority=True),
+        Binding("enter", "answer", show=False, priority=True),
+        *answer_bindings(),
+    ]
     AUTO_FOCUS = "#answers"
 
     def __init__(
@@ -59,15 +70,22 @@ class QuitScreen(ModalScreen[str]):
         if self.is_current:  # not an answer handed on after the first one closed it
             self.dismiss(event.option.id or "keep")
 
-    def action_keep(self) -> None:
-        self.dismiss("keep")
+    def action_move(self, action: str) -> None:
+        move_highlight(self.query_one("#answers", OptionList), action)
+
+    async def action_answer(self) -> None:
+        await close_with_highlighted(self, self.query_one("#answers", OptionList), "keep")
+
+    async def action_keep(self) -> None:
+        await close_dialog(self, "keep")
 
 
 class SaveElsewhereScreen(ModalScreen[None]):
     """Asks for a folder and saves the session there with ``save`` (it returns the one line
-    to show); stays open on a refusal so another folder can be typed. Escape closes."""
+    to show); stays open on a refusal so another folder can be typed. Escape closes, before
+    the app reads the next key."""
 
-    BINDINGS = [Binding("escape", "close", "Close")]
+    BINDINGS = [Binding("escape", "close", "Close", priority=True)]
     AUTO_FOCUS = "#folder"
 
     def __init__(self, suggestion: str, save: Callable[[str], str]) -> None:
@@ -102,5 +120,5 @@ class SaveElsewhereScreen(ModalScreen[None]):
         self.app.notify(said, title="session", timeout=10)
         self.dismiss(None)
 
-    def action_close(self) -> None:
-        self.dismiss(None)
+    async def action_close(self) -> None:
+        await close_dialog(self, None)

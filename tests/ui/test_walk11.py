@@ -1,0 +1,76 @@
+"""Walk 11's defects (issue 20), each as the walk met it, at 80x24 with Pilot on a real
+session folder (/work/coord/WALK11.md)."""
+
+from __future__ import annotations
+
+import pytest
+
+from minseg_tui.ui.keys import help_lines
+from minseg_tui.ui.screens.boardcheck import BoardCheckScreen, WheelQuestionScreen
+from minseg_tui.ui.screens.help import HelpScreen
+from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
+from tests.ui.helpers import burst, goto, settle, start
+
+
+def _step(app) -> str:
+    with app.session as s:
+        return s.current_step
+
+
+def _board_check(app) -> None:
+    app.push_screen(BoardCheckScreen(True, "The wheel turns and the count follows."))
+
+
+def _help(app) -> None:
+    app.push_screen(HelpScreen(help_lines()))
+
+
+def _quit_asked(app) -> None:
+    app.push_screen(QuitScreen("Run steps-1 is being recorded.", "A run", RECORDING_CHOICES))
+
+
+@pytest.mark.parametrize(
+    ("open_it", "dialog", "close"),
+    [
+        (_board_check, BoardCheckScreen, "enter"),
+        (_board_check, BoardCheckScreen, "escape"),
+        (_help, HelpScreen, "escape"),
+        (_help, HelpScreen, "q"),
+        (_quit_asked, QuitScreen, "escape"),
+        (_quit_asked, QuitScreen, "enter"),
+    ],
+    ids=["board-check-enter", "board-check-esc", "help-esc", "help-q", "quit-esc", "quit-enter"],
+)
+async def test_a_key_typed_right_after_the_key_that_closes_a_dialog_acts_beneath(
+    quiet, open_it, dialog, close
+):
+    """D1: on Task 1, F10, then 'Enter PgDn' in one burst: the board check's answer closed
+    and the PgDn was lost (4 times in 4; F1 then 'Esc PgDn' too). The dialog's screen was
+    still the app's screen when the app read PgDn, and its own widgets had it. The key that
+    closes a dialog now closes it before the app reads the next key, which acts on the
+    screen beneath: here PgDn goes to the next step."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task1")
+        open_it(app)
+        await settle(pilot, lambda: isinstance(app.screen, dialog))
+        await burst(pilot, close, "pagedown")
+        await settle(pilot, lambda: not isinstance(app.screen, dialog))
+        assert _step(app) == "task2"
+
+
+async def test_arrows_before_enter_pick_the_answer_and_the_key_after_acts_beneath(quiet):
+    """D1 on a dialog of answers ('did the wheel turn?'): 'Down Enter PgDn' in one burst
+    answers what the arrow picked ('It did not turn'), and PgDn then goes to the next step."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task1")
+        answers: list[str] = []
+        app.push_screen(WheelQuestionScreen(), answers.append)
+        await settle(pilot, lambda: isinstance(app.screen, WheelQuestionScreen))
+        await burst(pilot, "down", "enter", "pagedown")
+        await settle(pilot, lambda: not isinstance(app.screen, WheelQuestionScreen))
+        assert answers == ["no"]
+        assert _step(app) == "task2"
