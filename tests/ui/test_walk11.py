@@ -9,7 +9,9 @@ from minseg_tui.ui.keys import help_lines
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen, WheelQuestionScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
-from tests.ui.helpers import burst, goto, settle, start
+from minseg_tui.ui.widgets.prose import Prose
+from tests.ui.fakes import QuietDevice
+from tests.ui.helpers import burst, goto, settle, standing, start, start_run_on, taken
 
 
 def _step(app) -> str:
@@ -74,3 +76,30 @@ async def test_arrows_before_enter_pick_the_answer_and_the_key_after_acts_beneat
         await settle(pilot, lambda: not isinstance(app.screen, WheelQuestionScreen))
         assert answers == ["no"]
         assert _step(app) == "task2"
+
+
+def _said(screen) -> str:
+    return "\n".join(p.text for p in screen.query(Prose))
+
+
+async def test_the_quit_dialogs_sample_count_follows_the_recording(quiet):
+    """Issue 20's note: Ctrl+Q while a run was recorded asked 'Run steps-1 is being recorded
+    (71 samples so far)', and the 71 stayed while the run went on behind the dialog (it
+    ended with 487). The count follows the samples the run keeps."""
+    device = QuietDevice(seed=1)
+    app = quiet(device)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task10")
+        seq = await start_run_on(pilot, device)
+        await pilot.press("ctrl+q")
+        await settle(pilot, lambda: isinstance(app.screen, QuitScreen))
+        before = app.recording.samples
+        assert f"({before} samples so far)" in _said(app.screen), _said(app.screen)
+        device.feed(standing(40, seq))
+        await taken(pilot, seq + 40)
+        await settle(pilot, lambda: app.recording.samples >= before + 40)
+        now = app.recording.samples
+        assert f"({now} samples so far)" in _said(app.screen), (now, _said(app.screen))
+        await pilot.press("escape")
+        await settle(pilot)
