@@ -3,15 +3,28 @@ session folder (/work/coord/WALK11.md)."""
 
 from __future__ import annotations
 
+import threading
+
 import pytest
 
 from minseg_tui.ui.keys import help_lines
+from minseg_tui.ui.panels.model_check import ModelCheckPanel
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen, WheelQuestionScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
 from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import burst, goto, settle, standing, start, start_run_on, taken
+from tests.ui.helpers import (
+    burst,
+    goto,
+    lab_screen,
+    settle,
+    standing,
+    start,
+    start_run_on,
+    start_with_a_run,
+    taken,
+)
 
 
 def _step(app) -> str:
@@ -103,3 +116,46 @@ async def test_the_quit_dialogs_sample_count_follows_the_recording(quiet):
         assert f"({now} samples so far)" in _said(app.screen), (now, _said(app.screen))
         await pilot.press("escape")
         await settle(pilot)
+
+
+async def _until(pilot, cond) -> None:
+    """Rounds of the app's messages until ``cond()`` holds (for a wait while a worker is
+    held on purpose, which :func:`settle` would wait for)."""
+    for _ in range(1000):
+        await pilot.pause(0)
+        if cond():
+            return
+    raise AssertionError("the app never got there")
+
+
+async def test_the_model_check_draws_no_empty_frames_while_it_works(quiet, monkeypatch):
+    """Issue 20's note: while the check was fitting the run, its panel showed two empty
+    plot frames titled 'measured vs models' and 'residual' (1-4 s in the walks), then the
+    real plots. While it works, the panel says so and draws no frame; the plots come with
+    the view."""
+    release = threading.Event()
+    build = ModelCheckPanel.build
+
+    def held(panel, session):
+        release.wait(60)
+        return build(panel, session)
+
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task10")
+        monkeypatch.setattr(ModelCheckPanel, "build", held)
+        lab_screen(app).go_to("model_check", "entry")
+
+        def panel() -> ModelCheckPanel | None:
+            found = app.screen.query(ModelCheckPanel)
+            return found.first() if found else None
+
+        try:
+            await _until(pilot, lambda: panel() is not None and panel().is_mounted)
+            check = panel()
+            plots = check.query_one(".check-plots")
+            assert not plots.display
+            assert "computing" in check.query_one("#check-story", Prose).text
+        finally:
+            release.set()
+        await settle(pilot, lambda: check.view is not None and plots.display)
