@@ -6,6 +6,7 @@ from __future__ import annotations
 import threading
 
 import pytest
+from textual.widgets import DataTable
 
 from minseg_tui.ui.keys import help_lines
 from minseg_tui.ui.panels.model_check import ModelCheckPanel
@@ -16,6 +17,7 @@ from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
     burst,
+    enter_all,
     goto,
     lab_screen,
     settle,
@@ -159,3 +161,22 @@ async def test_the_model_check_draws_no_empty_frames_while_it_works(quiet, monke
         finally:
             release.set()
         await settle(pilot, lambda: check.view is not None and plots.display)
+
+
+async def test_the_table_shows_readings_with_the_digits_typed(quiet):
+    """D4: i_ss typed '14' stood '14.0' in the Tasks 6-9 table, a digit the group never
+    read off the meter (the README: readings keep the digits they were typed with); a
+    u_ss typed with four digits lost one, and omega_ss typed 3,1 stood 3.10. The table's
+    readings are shown as typed (a captured omega_ss, a mean, keeps its 3 digits and spread)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        typed = {"R": "5.3", "u_ss@2.5": "2.053", "omega_ss@2.5": "3,1", "i_ss@2.5": "14"}
+        enter_all(app, typed | {"i_ss@3.5": "29,8"})
+        await goto(pilot, "table", focus=None)
+        table = app.screen.query_one("#table", DataTable)
+        await settle(pilot, lambda: table.row_count == 3)
+        first = [str(c) for c in table.get_row_at(0)]
+        second = [str(c) for c in table.get_row_at(1)]
+        assert first[1:4] == ["2.053", "3.1", "14"], first
+        assert second[3] == "29.8", second

@@ -648,6 +648,14 @@ def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[
     return miss
 
 
+def _typed(value: float | None, scale: float) -> str:
+    """A reading of the table (SI ``value`` times ``scale``: the column's unit) with the
+    digits it was typed with, as the report gives it (i_ss typed 14 is "14", never "14.0";
+    u_ss typed 2.053 keeps its 3); "—" when there is none. A captured omega_ss is a mean,
+    written with 3 digits beside its spread."""
+    return format_number(None) if value is None else format_typed(value * scale)
+
+
 def _table_row(
     r: TableRow, R: float | None, k_a: float | None, has: Callable[[str], bool]
 ) -> tuple[Cell, ...]:
@@ -662,12 +670,15 @@ def _table_row(
     return (
         Cell(f"{r.level:g}", f"u = {r.level:g} V: the voltage requested on the board"),
         Cell(
-            format_number(r.u_ss, 3),
+            _typed(r.u_ss, 1.0),
             "u_ss: read on the multimeter (V)" if r.u_ss is not None else "",
         ),
-        Cell(format_number(r.omega_ss, 3) + spread, omega_how),
         Cell(
-            format_number(None if r.i_ss is None else r.i_ss * 1e3, 3),
+            _typed(r.omega_ss, 1.0) if r.spread is None else format_number(r.omega_ss, 3) + spread,
+            omega_how,
+        ),
+        Cell(
+            _typed(r.i_ss, 1e3),
             "i_ss: read on the multimeter (mA)" if r.i_ss is not None else "",
         ),
         _derived_cell("k_v", r.k_v, format_number(r.k_v), r, R, k_a, has),
