@@ -10,9 +10,11 @@ from textual.widgets import DataTable
 
 from minseg_tui.ui.keys import help_lines
 from minseg_tui.ui.panels.model_check import ModelCheckPanel
+from minseg_tui.ui.panels.results import ResponsePlot
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen, WheelQuestionScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
+from minseg_tui.ui.widgets.plots import Canvas
 from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
@@ -20,6 +22,7 @@ from tests.ui.helpers import (
     enter_all,
     goto,
     lab_screen,
+    record_response_run,
     settle,
     standing,
     start,
@@ -180,3 +183,25 @@ async def test_the_table_shows_readings_with_the_digits_typed(quiet):
         second = [str(c) for c in table.get_row_at(1)]
         assert first[1:4] == ["2.053", "3.1", "14"], first
         assert second[3] == "29.8", second
+
+
+@pytest.mark.parametrize("step_id", ["task11", "task12"])
+async def test_the_plot_calls_the_voltage_u_a_only_once_u_ss_maps_it(quiet, step_id):
+    """D5: with a run and no u_ss typed, Task 11's plot drew the requested 4.5 V on its
+    right axis titled 'u_A [V]' (legend '•• u_A [V], right axis'); with u_ss at 4.5 V the
+    same axis reads 4.02. Without u_ss the trace is the requested voltage and says so."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        with app.session as s:
+            record_response_run(s)
+        await goto(pilot, step_id)
+        plot = app.screen.query_one(ResponsePlot)
+        labels = [t.label for t in plot.query_one(Canvas).traces if t.right]
+        assert labels == ["u requested [V]"], labels
+        enter_all(app, {"u_ss@4.5": "4.02"})
+        app.lab_changed.publish(None)
+        await settle(
+            pilot,
+            lambda: [t.label for t in plot.query_one(Canvas).traces if t.right] == ["u_A [V]"],
+        )

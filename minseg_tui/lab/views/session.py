@@ -1000,6 +1000,21 @@ def cursor_reading(t: ArrayLike, omega: ArrayLike, at: float) -> CursorReading |
     return CursorReading(at, omega_at, float(ts[before]), float(ts[after]))
 
 
+U_APPLIED = "u_A [V]"
+"""A run's voltage once it is the applied u_A (:attr:`ResultsView.u_label`)."""
+
+U_REQUESTED = "u requested [V]"
+"""A recorded run's voltage before any u_ss maps it to u_A: the voltage asked of the board."""
+
+
+def _u_label(log: RunLog | None) -> str:
+    """:attr:`ResultsView.u_label` of ``log``: whether its u column is u_A or still the
+    requested voltage (its metadata says how u was worked out: ``applied_voltage``)."""
+    if log is not None and log.metadata.get("u", "").startswith("u = u_req"):
+        return U_REQUESTED
+    return U_APPLIED
+
+
 @dataclass(frozen=True)
 class ResultsView:
     """Tasks 11-15: the log used (t s, omega rad/s, u V), its rises, result lines and
@@ -1023,6 +1038,10 @@ class ResultsView:
     waiting: str = ""
     """Without a step result: which inputs it needs and where to enter them ('needs a step
     run (Task 10)'; '' otherwise)."""
+    u_label: str = U_APPLIED
+    """What ``u`` is, as the plot's legend and right axis name it: u_A once the table's u_ss
+    maps the requested voltage to the applied one (an imported log's u is its own), else
+    the voltage requested of the board (:data:`U_REQUESTED`)."""
 
 
 TWO_T: tuple[str, ...] = ("T_short", "T_63_differs")
@@ -1153,6 +1172,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         frozenset(hidden(session)),
         shows,
         "" if st_run is not None else lab_needs.needs(waits_for(session, "K")),
+        _u_label(log),
     )
 
 
