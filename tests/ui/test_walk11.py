@@ -205,3 +205,17 @@ async def test_the_plot_calls_the_voltage_u_a_only_once_u_ss_maps_it(quiet, step
             pilot,
             lambda: [t.label for t in plot.query_one(Canvas).traces if t.right] == ["u_A [V]"],
         )
+
+
+async def test_the_help_wraps_a_long_line_under_its_description(quiet):
+    """D7: F1's line for F9 wrapped to the left edge at 80x24 ('log (check)' under 'F9'),
+    where the keys stand. A wrapped description goes on under the description."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await pilot.press("f1")
+        await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
+        keys = app.screen.query_one("#help-keys")
+        lines = [strip.text for strip in keys.render_lines(keys.region.reset_offset)]
+        at = next(k for k, line in enumerate(lines) if line.startswith("F9 "))
+        assert lines[at + 1].startswith(" " * 11), lines[at : at + 2]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from rich.table import Table
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import VerticalScroll
@@ -17,6 +18,21 @@ INTRO = (
 )
 
 
+KEY_WIDTH = 10
+"""The keys' column of F1's list (its widest key, 'Ctrl+← →' and the like, fits)."""
+
+
+def key_table(keys: list[tuple[str, str]]) -> Table:
+    """F1's list in two columns: a description too long for its line wraps under itself,
+    never under the keys (walk 11, D7: 'log (check)' stood under 'F9')."""
+    table = Table.grid(padding=(0, 1))
+    table.add_column(width=KEY_WIDTH, no_wrap=True)
+    table.add_column(ratio=1)
+    for key, what in keys:
+        table.add_row(key, what)
+    return table
+
+
 class HelpScreen(ModalScreen[None]):
     """Lists the keys; Escape, F1 or q closes it, before the app reads the next key
     (:func:`~minseg_tui.ui.screens.dialog.close_dialog`)."""
@@ -28,11 +44,10 @@ class HelpScreen(ModalScreen[None]):
         self._keys = keys
 
     def compose(self) -> ComposeResult:
-        lines = [f"{k:<10} {d}" for k, d in self._keys]
         with VerticalScroll(id="help"):
             yield Static("Keys — Esc closes", classes="title")
             yield Static(INTRO, classes="para")
-            yield Static("\n".join(lines), id="help-keys")
+            yield Static(key_table(self._keys), id="help-keys")
 
     async def action_close(self) -> None:
         await close_dialog(self, None)
