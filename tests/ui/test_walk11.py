@@ -22,12 +22,14 @@ from tests.ui.helpers import (
     enter_all,
     goto,
     lab_screen,
+    nav_mark,
     record_response_run,
     settle,
     standing,
     start,
     start_run_on,
     start_with_a_run,
+    stored_text,
     taken,
 )
 
@@ -219,3 +221,17 @@ async def test_the_help_wraps_a_long_line_under_its_description(quiet):
         lines = [strip.text for strip in keys.render_lines(keys.region.reset_offset)]
         at = next(k for k, line in enumerate(lines) if line.startswith("F9 "))
         assert lines[at + 1].startswith(" " * 11), lines[at : at + 2]
+
+
+async def test_a_blank_note_leaves_the_step_as_it_was(quiet):
+    """D6: on Prep 2 a Space meant for 'done?' went into the notes (the step's first empty
+    entry), was stored as ' ', and the list of steps showed Prep 2 as started ('…') while
+    the report said its notes were not answered. A blank text starts nothing."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep2")
+        await burst(pilot, " ", "pagedown")
+        assert stored_text(app, "prep2.notes") == " "
+        await settle(pilot, lambda: _step(app) == "prep3")
+        assert nav_mark(app, "prep2") == " ", nav_mark(app, "prep2")
