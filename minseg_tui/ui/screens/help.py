@@ -33,6 +33,15 @@ def key_table(keys: list[tuple[str, str]]) -> Table:
     return table
 
 
+class KeyList(Static):
+    """F1's list of keys, drawn as :func:`key_table`; ``text``: the same as plain text, one
+    key a line."""
+
+    def __init__(self, keys: list[tuple[str, str]], id: str | None = None) -> None:
+        super().__init__(key_table(keys), id=id)
+        self.text = "\n".join(f"{k:<{KEY_WIDTH}} {d}" for k, d in keys)
+
+
 class HelpScreen(ModalScreen[None]):
     """Lists the keys; Escape, F1 or q closes it, before the app reads the next key
     (:func:`~minseg_tui.ui.screens.dialog.close_dialog`)."""
@@ -47,7 +56,7 @@ class HelpScreen(ModalScreen[None]):
         with VerticalScroll(id="help"):
             yield Static("Keys — Esc closes", classes="title")
             yield Static(INTRO, classes="para")
-            yield Static(key_table(self._keys), id="help-keys")
+            yield KeyList(self._keys, id="help-keys")
 
     async def action_close(self) -> None:
         await close_dialog(self, None)
