@@ -81,7 +81,12 @@ from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.screens.palette import Palette
-from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen, SaveElsewhereScreen
+from minseg_tui.ui.screens.quit import (
+    RECORDING_CHOICES,
+    QuitScreen,
+    SaveElsewhereScreen,
+    recording_question,
+)
 from minseg_tui.ui.screens.start import StartScreen, split_names
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import after_typed_keys
@@ -499,6 +504,9 @@ class LabApp(App[None]):
         self.link = self.link.counted(event.stats).aged(self.live.latest, TRANSIENT_SHOWN)
         if self.recording is not None:
             self.run_progress = self.recording.progress()
+            asking = self.screen
+            if isinstance(asking, QuitScreen) and asking.choices is RECORDING_CHOICES:
+                asking.problem = recording_question(self.recording)
         if self._watching_speed and self.session is not None:
             t, count, _ = self.live.snapshot()
             with self.session as s:
@@ -990,8 +998,7 @@ class LabApp(App[None]):
         if rec is not None and not isinstance(self.screen, QuitScreen):
             self.push_screen(
                 QuitScreen(
-                    f"Run {rec.name} is being recorded ({rec.samples} samples so far). "
-                    "Quitting stops it before its plan ends.",
+                    recording_question(rec),
                     title="A run is being recorded",
                     choices=RECORDING_CHOICES,
                 ),

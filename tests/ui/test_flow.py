@@ -17,7 +17,7 @@ from minseg_tui.ui.messages import CaptureRequested, RunRequested, VoltageReques
 from minseg_tui.ui.panels.live import LivePanel
 from minseg_tui.ui.panels.square_wave import SquareWavePanel
 from minseg_tui.ui.panels.view_panel import ViewPanel
-from minseg_tui.ui.screens.help import HelpScreen
+from minseg_tui.ui.screens.help import HelpScreen, KeyList
 from minseg_tui.ui.screens.lab import LabScreen, StepCommands, StepPane
 from minseg_tui.ui.widgets.fields import AnswerList, FieldRow, field_id
 from minseg_tui.ui.widgets.status import status_text
@@ -347,7 +347,7 @@ async def test_help_lists_the_keys_and_the_palette_has_the_actions(quiet):
         await pilot.press("f1")
         await settle(pilot)
         assert isinstance(app.screen, HelpScreen)
-        text = str(app.screen.query_one("#help-keys").render())
+        text = app.screen.query_one(KeyList).text
         for key in ("F2", "STOP", "F5", "F8", "Ctrl+P"):
             assert key in text
         await pilot.press("escape")

@@ -10,7 +10,7 @@ import re
 
 from textual.command import CommandList
 
-from minseg_tui.ui.screens.help import HelpScreen
+from minseg_tui.ui.screens.help import HelpScreen, KeyList
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.helpers import (
@@ -124,7 +124,7 @@ async def test_ctrl_z_says_what_it_brought_back_and_ctrl_y_brings_the_newer_one_
             assert s.entry("prep5.percent").text == "63,2"  # type: ignore[union-attr]
         await pilot.press("f1")
         await settle(pilot)
-        keys = str(app.screen.query_one("#help-keys").render())
+        keys = app.screen.query_one(KeyList).text
         assert "Ctrl+Z" in keys and "Ctrl+Y" in keys and "Esc" in keys
 
 
@@ -169,7 +169,7 @@ async def test_the_palette_lists_keys_once_and_it_opens_f1s_list(quiet):
         hits.highlighted = titles.index("Keys")
         await pilot.press("enter")
         await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
-        assert "Ctrl+Z" in str(app.screen.query_one("#help-keys").render())
+        assert "Ctrl+Z" in app.screen.query_one(KeyList).text
 
 
 async def test_preparation_7_says_consistent_not_right(quiet):

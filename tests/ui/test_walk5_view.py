@@ -14,6 +14,7 @@ from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.keys import KEYMAP
 from minseg_tui.ui.panels.results import HELD_END, ResponsePlot, ResultsPanel
+from minseg_tui.ui.screens.help import KeyList
 from minseg_tui.ui.widgets.plots import TracePlot
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
@@ -74,7 +75,7 @@ async def test_f1_says_that_enter_goes_on_to_the_next_field(quiet):
         await goto(pilot, "prep5")
         await pilot.press("f1")
         await settle(pilot)
-        said = " ".join(str(app.screen.query_one("#help-keys").render()).split())
+        said = " ".join(app.screen.query_one(KeyList).text.split())
         assert "Enter stores and goes on to the next field" in said
 
 

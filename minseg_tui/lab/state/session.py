@@ -707,7 +707,7 @@ class Session:
         answered = bool(required) and all(
             self._entries.get(f.key) is not None and self._entries[f.key].ok for f in required
         )
-        if not answered and any(f.key in self._entries for f in st.fields):
+        if not answered and any(self._given(f.key) for f in st.fields):
             answered = not required
             if required:
                 return "started"
@@ -729,6 +729,13 @@ class Session:
         if self._warned(st.fields) or any(c.caveat for c in mine):
             return "warned"  # a value right the group's way, resting on one marked wrong
         return "unjudged" if any(r is None for r in judged) else "done"
+
+    def _given(self, key: str) -> bool:
+        """Whether something stands in field ``key``: an entry with a text that is not blank
+        (a Space or a Tab through an empty entry stores a blank one, which starts nothing:
+        walk 11, D6)."""
+        e = self._entries.get(key)
+        return e is not None and bool(e.text.strip())
 
     def _warned(self, fields: Sequence[Field]) -> bool:
         """Whether one of ``fields`` stands with a warning of its own (stored, but outside

@@ -648,6 +648,14 @@ def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[
     return miss
 
 
+def _typed(value: float | None, scale: float) -> str:
+    """A reading of the table (SI ``value`` times ``scale``: the column's unit) with the
+    digits it was typed with, as the report gives it (i_ss typed 14 is "14", never "14.0";
+    u_ss typed 2.053 keeps its 3); "—" when there is none. A captured omega_ss is a mean,
+    written with 3 digits beside its spread."""
+    return format_number(None) if value is None else format_typed(value * scale)
+
+
 def _table_row(
     r: TableRow, R: float | None, k_a: float | None, has: Callable[[str], bool]
 ) -> tuple[Cell, ...]:
@@ -662,12 +670,15 @@ def _table_row(
     return (
         Cell(f"{r.level:g}", f"u = {r.level:g} V: the voltage requested on the board"),
         Cell(
-            format_number(r.u_ss, 3),
+            _typed(r.u_ss, 1.0),
             "u_ss: read on the multimeter (V)" if r.u_ss is not None else "",
         ),
-        Cell(format_number(r.omega_ss, 3) + spread, omega_how),
         Cell(
-            format_number(None if r.i_ss is None else r.i_ss * 1e3, 3),
+            _typed(r.omega_ss, 1.0) if r.spread is None else format_number(r.omega_ss, 3) + spread,
+            omega_how,
+        ),
+        Cell(
+            _typed(r.i_ss, 1e3),
             "i_ss: read on the multimeter (mA)" if r.i_ss is not None else "",
         ),
         _derived_cell("k_v", r.k_v, format_number(r.k_v), r, R, k_a, has),
@@ -989,6 +1000,21 @@ def cursor_reading(t: ArrayLike, omega: ArrayLike, at: float) -> CursorReading |
     return CursorReading(at, omega_at, float(ts[before]), float(ts[after]))
 
 
+U_APPLIED = "u_A [V]"
+"""A run's voltage once it is the applied u_A (:attr:`ResultsView.u_label`)."""
+
+U_REQUESTED = "u requested [V]"
+"""A recorded run's voltage before any u_ss maps it to u_A: the voltage asked of the board."""
+
+
+def _u_label(log: RunLog | None) -> str:
+    """:attr:`ResultsView.u_label` of ``log``: whether its u column is u_A or still the
+    requested voltage (its metadata says how u was worked out: ``applied_voltage``)."""
+    if log is not None and log.metadata.get("u", "").startswith("u = u_req"):
+        return U_REQUESTED
+    return U_APPLIED
+
+
 @dataclass(frozen=True)
 class ResultsView:
     """Tasks 11-15: the log used (t s, omega rad/s, u V), its rises, result lines and
@@ -1012,6 +1038,10 @@ class ResultsView:
     waiting: str = ""
     """Without a step result: which inputs it needs and where to enter them ('needs a step
     run (Task 10)'; '' otherwise)."""
+    u_label: str = U_APPLIED
+    """What ``u`` is, as the plot's legend and right axis name it: u_A once the table's u_ss
+    maps the requested voltage to the applied one (an imported log's u is its own), else
+    the voltage requested of the board (:data:`U_REQUESTED`)."""
 
 
 TWO_T: tuple[str, ...] = ("T_short", "T_63_differs")
@@ -1142,6 +1172,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         frozenset(hidden(session)),
         shows,
         "" if st_run is not None else lab_needs.needs(waits_for(session, "K")),
+        _u_label(log),
     )
 
 

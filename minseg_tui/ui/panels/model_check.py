@@ -42,7 +42,9 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         self._import = ImportBox()
 
     def compose(self) -> ComposeResult:
-        with Horizontal(classes="plots check-plots"):
+        plots = Horizontal(classes="plots check-plots")
+        plots.display = False  # no empty frames while the check works: shown with its view
+        with plots:
             yield TracePlot("measured vs models", "t [s]", "omega [rad/s]", id="plot-check")
             yield TracePlot("residual", "t [s]", "rad/s", id="plot-residual")
         yield Prose("computing…", id="check-story")
@@ -62,11 +64,14 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             return
         story = self.query_one("#check-story", Prose)
         lines = self.query_one("#check-lines", Prose)
+        plots = self.query_one(".check-plots")
         if v.problem:
+            plots.display = False
             story.update(f"run {v.run or '—'}: {v.problem}")
             lines.update("")
             return
         self._plot()
+        plots.display = True
         where = (
             f"run {v.run}, {v.close_title} · f9 Zoom (the whole log)"
             if self.close_up and v.close_t.size

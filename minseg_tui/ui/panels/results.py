@@ -183,7 +183,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
             plot.show(
                 [
                     Trace(v.t, v.omega, "omega"),
-                    Trace(v.t, v.u, "u_A [V]", "dot", steps=True, right=True),
+                    Trace(v.t, v.u, v.u_label, "dot", steps=True, right=True),
                 ]
             )
             if v.rises:
@@ -205,7 +205,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         x = v.t[keep] - w.t0  # time after the edge: the 63 % crossing is read off as T
         traces = [
             Trace(x, v.omega[keep], "omega"),
-            Trace(x, v.u[keep], "u_A [V]", "dot", steps=True, right=True),
+            Trace(x, v.u[keep], v.u_label, "dot", steps=True, right=True),
         ]
         lo, hi = z0 - w.t0, z1 - w.t0
         if x.size and self.step.id == "task11":

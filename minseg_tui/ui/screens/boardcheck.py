@@ -14,6 +14,12 @@ from textual.screen import ModalScreen
 from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
+from minseg_tui.ui.screens.dialog import (
+    answer_bindings,
+    close_dialog,
+    close_with_highlighted,
+    move_highlight,
+)
 from minseg_tui.ui.widgets.prose import Prose
 
 TURN_ANSWERS: tuple[tuple[str, str], ...] = (
@@ -26,9 +32,14 @@ TURN_ANSWERS: tuple[tuple[str, str], ...] = (
 
 class WheelQuestionScreen(ModalScreen[str]):
     """Asks whether the wheel turned while the board check drove it; dismissed with ``yes``,
-    ``no`` or ``unsure`` (Escape)."""
+    ``no`` or ``unsure`` (Escape). Enter and Escape close it before the app reads the next
+    key (:mod:`~minseg_tui.ui.screens.dialog`)."""
 
-    BINDINGS = [Binding("escape", "unsure", "I did not see")]
+    BINDINGS = [
+        Binding("escape", "unsure", "I did not see", priority=True),
+        Binding("enter", "answer", show=False, priority=True),
+        *answer_bindings(),
+    ]
     AUTO_FOCUS = "#answers"
 
     def compose(self) -> ComposeResult:
@@ -46,16 +57,23 @@ class WheelQuestionScreen(ModalScreen[str]):
         if self.is_current:  # not an answer handed on after the first one closed it
             self.dismiss(event.option.id or "unsure")
 
-    def action_unsure(self) -> None:
-        self.dismiss("unsure")
+    def action_move(self, action: str) -> None:
+        move_highlight(self.query_one("#answers", OptionList), action)
+
+    async def action_answer(self) -> None:
+        await close_with_highlighted(self, self.query_one("#answers", OptionList), "unsure")
+
+    async def action_unsure(self) -> None:
+        await close_dialog(self, "unsure")
 
 
 class BoardCheckScreen(ModalScreen[None]):
-    """What the board check found (``ok`` or not, and its ``text``); Enter or Escape closes."""
+    """What the board check found (``ok`` or not, and its ``text``); Enter or Escape closes
+    it, before the app reads the next key (:func:`~minseg_tui.ui.screens.dialog.close_dialog`)."""
 
     BINDINGS = [
-        Binding("escape", "close", "Close"),
-        Binding("enter", "close", "Close"),
+        Binding("escape", "close", "Close", priority=True),
+        Binding("enter", "close", "Close", priority=True),
     ]
 
     def __init__(
@@ -79,8 +97,8 @@ class BoardCheckScreen(ModalScreen[None]):
             yield Prose(self.text, id="check-text", classes="para")
             yield Prose(f"Enter or Escape closes; {self.again}.", classes="para")
 
-    def action_close(self) -> None:
-        self.dismiss(None)
+    async def action_close(self) -> None:
+        await close_dialog(self, None)
 
 
 class RevolutionScreen(ModalScreen[None]):
@@ -91,7 +109,7 @@ class RevolutionScreen(ModalScreen[None]):
 
     BINDINGS = [
         Binding("enter", "turned", "Turned once"),
-        Binding("escape", "cancel", "Cancel"),
+        Binding("escape", "cancel", "Cancel", priority=True),
     ]
 
     def __init__(
@@ -127,7 +145,7 @@ class RevolutionScreen(ModalScreen[None]):
         self.query_one("#revolution-text", Prose).update("Counting the last samples…")
         self.done.set()
 
-    def action_cancel(self) -> None:
+    async def action_cancel(self) -> None:
         self.cancelled.set()
         self.done.set()
-        self.dismiss(None)
+        await close_dialog(self, None)

@@ -11,6 +11,7 @@ from textual.containers import Vertical
 from textual.screen import ModalScreen
 from textual.widgets import Input
 
+from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.textbox import TextBox
 
@@ -18,9 +19,9 @@ from minseg_tui.ui.widgets.textbox import TextBox
 class NamesScreen(ModalScreen[None]):
     """Asks for the group's names, the ones in use filled in, and hands them to ``rename``
     (it returns the one line to show; a line starting with '✗' keeps the dialog open).
-    Escape closes without a change."""
+    Escape closes without a change, before the app reads the next key."""
 
-    BINDINGS = [Binding("escape", "close", "Close")]
+    BINDINGS = [Binding("escape", "close", "Close", priority=True)]
     AUTO_FOCUS = "#names"
 
     def __init__(self, names: str, rename: Callable[[str], str]) -> None:
@@ -52,5 +53,5 @@ class NamesScreen(ModalScreen[None]):
         self.app.notify(said, title="session", timeout=8)
         self.dismiss(None)
 
-    def action_close(self) -> None:
-        self.dismiss(None)
+    async def action_close(self) -> None:
+        await close_dialog(self, None)

@@ -8,10 +8,18 @@ from textual import on
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
+from textual.reactive import reactive
 from textual.screen import ModalScreen
 from textual.widgets import Input, OptionList
 from textual.widgets.option_list import Option
 
+from minseg_tui.lab.state.task10 import ActiveRun
+from minseg_tui.ui.screens.dialog import (
+    answer_bindings,
+    close_dialog,
+    close_with_highlighted,
+    move_highlight,
+)
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.textbox import TextBox
 
@@ -29,13 +37,30 @@ RECORDING_CHOICES: tuple[tuple[str, str], ...] = (
 """What the group can do when quitting while Task 10 records a run: (answer, words)."""
 
 
+def recording_question(run: ActiveRun) -> str:
+    """The question of Ctrl+Q while ``run`` is being recorded, with the samples it holds
+    now (the app says it again as they come in)."""
+    return (
+        f"Run {run.name} is being recorded ({run.samples} samples so far). "
+        "Quitting stops it before its plan ends."
+    )
+
+
 class QuitScreen(ModalScreen[str]):
     """Asks before quitting while the session is not all on disk (or, with ``title`` and
     ``choices`` :data:`RECORDING_CHOICES`, while a run is being recorded); dismissed with
-    the key of a choice (Escape: keep)."""
+    the key of a choice (Escape: keep). Enter and Escape close it before the app reads the
+    next key (:mod:`~minseg_tui.ui.screens.dialog`). ``problem``: the question's words, which
+    the app may set again while the dialog is up (the samples a run has so far)."""
 
-    BINDINGS = [Binding("escape", "keep", "Keep working")]
+    BINDINGS = [
+        Binding("escape", "keep", "Keep working", priority=True),
+        Binding("enter", "answer", show=False, priority=True),
+        *answer_bindings(),
+    ]
     AUTO_FOCUS = "#answers"
+
+    problem: reactive[str] = reactive("", init=False)
 
     def __init__(
         self,
@@ -44,30 +69,45 @@ class QuitScreen(ModalScreen[str]):
         choices: tuple[tuple[str, str], ...] = QUIT_CHOICES,
     ) -> None:
         super().__init__()
-        self._problem = problem
+        self.set_reactive(QuitScreen.problem, problem)
         self._title = title
         self._choices = choices
 
     def compose(self) -> ComposeResult:
         with Vertical(id="ask", classes="dialog"):
             yield Prose(self._title, classes="title")
-            yield Prose(self._problem, classes="para")
+            yield Prose(self.problem, id="problem", classes="para")
             yield OptionList(*[Option(text, id=key) for key, text in self._choices], id="answers")
+
+    @property
+    def choices(self) -> tuple[tuple[str, str], ...]:
+        """The choices it offers (:data:`QUIT_CHOICES` or :data:`RECORDING_CHOICES`)."""
+        return self._choices
+
+    def watch_problem(self, problem: str) -> None:
+        self.query_one("#problem", Prose).update(problem)
 
     @on(OptionList.OptionSelected, "#answers")
     def _answer(self, event: OptionList.OptionSelected) -> None:
         if self.is_current:  # not an answer handed on after the first one closed it
             self.dismiss(event.option.id or "keep")
 
-    def action_keep(self) -> None:
-        self.dismiss("keep")
+    def action_move(self, action: str) -> None:
+        move_highlight(self.query_one("#answers", OptionList), action)
+
+    async def action_answer(self) -> None:
+        await close_with_highlighted(self, self.query_one("#answers", OptionList), "keep")
+
+    async def action_keep(self) -> None:
+        await close_dialog(self, "keep")
 
 
 class SaveElsewhereScreen(ModalScreen[None]):
     """Asks for a folder and saves the session there with ``save`` (it returns the one line
-    to show); stays open on a refusal so another folder can be typed. Escape closes."""
+    to show); stays open on a refusal so another folder can be typed. Escape closes, before
+    the app reads the next key."""
 
-    BINDINGS = [Binding("escape", "close", "Close")]
+    BINDINGS = [Binding("escape", "close", "Close", priority=True)]
     AUTO_FOCUS = "#folder"
 
     def __init__(self, suggestion: str, save: Callable[[str], str]) -> None:
@@ -102,5 +142,5 @@ class SaveElsewhereScreen(ModalScreen[None]):
         self.app.notify(said, title="session", timeout=10)
         self.dismiss(None)
 
-    def action_close(self) -> None:
-        self.dismiss(None)
+    async def action_close(self) -> None:
+        await close_dialog(self, None)
