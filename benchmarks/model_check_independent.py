@@ -447,6 +447,45 @@ pole (T2 52.3 ms), and so does the touched log without the restart where the han
 (its rows fenced until the wheel rejoins the model; T2 52.6 ms). So the restart (s27-hands)
 lets the average in on this log; why the 4-tap average follows the restarted rows better
 than the filter was not found.
+
+s32-check (8e31844 -> e672409, 52b05a5; changed on tuning seeds only, the held-out seeds run
+once, at the end, side by side with 8e31844): (1) an average is weighed against the model so
+far and its rivals on the speed itself without the rows after each gap that an average of
+its length carries a stall's late read into (decide.carried); (2) a friction, coast or cap
+that the other causes, fitted again without it, take over so far that the two models' speeds
+differ by under TAKEN_OVER (0.5 %) of the speed's range is not named (calibrated: spurious
+ones beside a coast 0.33 %, true ones in pairs 0.74 % or more; a cap beside a coast at 0.80 %,
+touched 1006, is still named); (3) an average the first pass refused because of a stall's rows
+is chosen again with those rows out, kept only if an average is named there. Tuning pairs
+(--tuning --seeds 10 --only pairs, 150 logs): right 82.7 -> 84.0 %, honestly ambiguous 8.7 ->
+9.3 % (right or honestly ambiguous 91.3 -> 93.3 %), ambiguous in all 8.7 -> 9.3 %, confidently
+wrong 8.7 -> 6.7 % (13 -> 10: the three logs of pair seed 8's 9-tap average with a stall), 0
+disturbances both, CPU per log median 0.53 -> 0.49 s (the load varied). Tuning touched logs
+(--tuning --only touches --touch-seeds 80, 218 logs, run side by side): 206 -> 209 (coasts
+1033, 1071, 1079 lose a spurious friction or average beside them; none lost). Tuning singles
+(70) unchanged (none 10, friction 9, delay 9, average 9, coast 9, pole 7, cap 10 of 10).
+Held-out (--seeds 5 --touch-seeds 5): every figure as before, log by log: pairs right 77.3 %,
+honestly ambiguous 16.0 % (right or honestly ambiguous 93.3 %), ambiguous in all 17.3 %,
+confidently wrong 5.3 % (4 of 75), 0 untouched logs with a disturbance; CPU per log (check
+only) median 0.56 -> 0.64 s, max 3.71 -> 4.84 s (run side by side, load average 8-10 on two
+cores); singles 33 of 35 named alone, 0 disturbances; a hand found with the cause kept 16 of
+20. None of the held-out failures is of the kinds fixed here. Two of the four confidently
+wrong held-out pairs are a pole on the inductance with T = T2 (the generator's two motor
+poles complex, which no model of the check can follow: its simulation has real exponentials
+only, see s28-pairs), and one failed hand is a pole on the inductance named an average; the
+others are a delay with a pole on the
+coupling named a delay alone, a 2-tap average with a coast (3 taps, T 16 % short), a delay
+named an average (touched dead_time 901000), a cap beside an average (velocity_filter 901001)
+and friction beside a cap with its hand 0.66 s early (current_limit 901002). Looked at and
+not kept: a cap beside a driver's pole that moves the speed by 0.99 % of its range (tuning
+pair seed 4, true a_max 612) is left out as too small (SMALL_EFFECT 1 %), while spurious
+causes reach 0.92 %: no threshold tells them apart, and saying that the log cannot tell
+whether such a cause acts (an ambiguity with one cause more) needs its own words; not done.
+benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 false alarms of
+10, analyze 0.51-0.65 s CPU per log (Python start included). benchmarks/model_check_pairs.py
+--seeds 5 --touch-seeds 10: pairs 74 of 75, a hand found with the cause kept 68 of 70 (as
+s31-check measured on main). The tests that read ../shared/data (72, the ten real logs'
+verdicts among them) pass.
 """
 
 from __future__ import annotations

@@ -322,6 +322,16 @@ def reason(r: Reason) -> str:
             f"{100 * r.share:.0f} % of what each of them moves it: a third cause so "
             "small is what any pair of causes leaves of a real motor, not a cause of its own"
         )
+    if r.kind == "taken_over":
+        return (
+            f"{' and '.join(r.causes)}, fitted again without it, "
+            f"{'takes' if len(r.causes) == 1 else 'take'} over nearly all it does: "
+            f"the two models' simulated speeds, held over {r.rows} samples, differ by "
+            f"{r.shown:.3g} rad/s at most, {100 * r.shown / r.top:.2g} % of the {r.top:.3g} "
+            "rad/s the speed reaches; any model of a real motor misses by that much (a load "
+            "that ripples, drag that is not quite viscous, the encoder's timing), and a gain "
+            "so small is not a cause of its own"
+        )
     if r.kind == "rival_better":
         return f"{r.causes[0]} matches the speed itself far better"
     return REASON[r.kind]
