@@ -28,7 +28,7 @@ from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.fields import AnswerList, EntryBox, FieldForm, FieldRow, field_id
 from tests.ui.fakes import QuietDevice
-from tests.ui.textual_internals import key_name
+from tests.ui.textual_internals import all_idle, key_name, marking_idle_nodes, wait_for_screen
 
 TABLE = {
     "R": "5.3",
@@ -59,19 +59,31 @@ minute), never a threshold a busy machine could cross."""
 
 
 async def settle(pilot: Pilot[None], until: Callable[[], bool] = lambda: True) -> None:
-    """Let the app finish what it was asked, exactly: rounds of ``pilot.pause(0)`` (each
-    returns once every message queued on the screen is processed) and waits for the workers
-    that build views or write the report (all but the device stream), until ``until()``
-    holds."""
+    """Let the app finish what it was asked, exactly: rounds that each return once every
+    message queued on the screen is processed, and waits for the workers that build views
+    or write the report (all but the device stream), until ``until()`` holds. A round
+    begun while every node of the app is idle (``textual_internals.idle``: nothing queued,
+    no handler under way) is ``pilot.pause(0)``, which also lays the screen out and runs
+    what waits for its refresh; one begun while some node is busy only waits for the busy
+    nodes (Textual's update timer lays out meanwhile, as it does in a terminal).
+    ``until()`` is asked, and settle returns, only after a ``pilot.pause(0)`` round that
+    began and ended with every node idle (so what waited for the screen's refresh has run
+    too), :data:`HOPS` rounds at least. In a process without the tests' fixtures (a
+    script a test starts) every round is ``pilot.pause(0)``."""
     app = pilot.app
+    marked = marking_idle_nodes()
     for k in range(ROUNDS):
-        await pilot.pause(0)
+        quiet = not marked or all_idle(app)
+        if quiet:
+            await pilot.pause(0)
+        else:
+            await wait_for_screen(pilot)
         busy = [w for w in app.workers if w.group != "stream" and not w.is_finished]
         if busy:
             with suppress(WorkerCancelled):
                 await app.workers.wait_for_complete(busy)
             continue
-        if k >= HOPS and until():
+        if k >= HOPS and quiet and (not marked or all_idle(app)) and until():
             return
     raise AssertionError("the app never got there")
 
