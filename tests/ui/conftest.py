@@ -19,7 +19,7 @@ from minseg_tui.ui.app import LabApp, make_app
 from minseg_tui.ui.config import UiConfig
 from tests.ui.fakes import QuietDevice
 from tests.ui.textual_internals import (
-    idle,
+    all_idle,
     keep_cursors_still,
     leave_headless_frames_unpainted,
     make_waits_exact,
@@ -79,9 +79,10 @@ async def drained(_min_sleep: float = 0.0, _max_sleep: float = 0.0) -> None:
     """Return once the app has processed every message: the key a Pilot just sent and all it
     led to, round by round (each round waits until every node of the app and of its screens
     has handled what was queued on it when the round began, a handler under way included),
-    until a round ends with every node idle (nothing queued, no handler under way:
-    ``textual_internals.idle``), or :data:`DRAIN_ROUNDS` rounds. Takes the arguments of
-    Textual's ``wait_for_idle`` and ignores them."""
+    until a round ends with the app and every node of its screen idle (nothing queued, no
+    handler under way: ``textual_internals.all_idle``) and nothing queued on the screens
+    under it, or :data:`DRAIN_ROUNDS` rounds. Takes the arguments of Textual's
+    ``wait_for_idle`` and ignores them."""
     for _ in range(3):  # the driver hands a key over through the loop (run_coroutine_threadsafe)
         await asyncio.sleep(0)
     app = running_app()
@@ -92,8 +93,8 @@ async def drained(_min_sleep: float = 0.0, _max_sleep: float = 0.0) -> None:
         if not app.is_running:
             return
         await wait_for_screen(pilot)
-        nodes = [app, *(n for s in app.screen_stack for n in s.walk_children(with_self=True))]
-        if all(idle(n) for n in nodes):
+        under = [n for s in app.screen_stack[:-1] for n in s.walk_children(with_self=True)]
+        if all_idle(app) and all(n.message_queue_size == 0 for n in under):
             return
 
 
