@@ -27,7 +27,7 @@ from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.fields import AnswerList, EntryBox, FieldForm, FieldRow, field_id
-from tests.ui.fakes import QuietDevice
+from tests.ui.fakes import QuietDevice, square_wave_stream
 from tests.ui.textual_internals import all_idle, key_name, marking_idle_nodes, wait_for_screen
 
 TABLE = {
@@ -332,6 +332,29 @@ async def start_run_on(pilot: Pilot[None], device: QuietDevice, key: str = "f5")
         seq += 4
         await taken(pilot, seq)
     raise AssertionError("the run never started")
+
+
+async def answer_T_on_a_run(pilot: Pilot[None]) -> str:
+    """:func:`start_with_a_run` on Task 12, and the group's T typed there (the run's T_63 in
+    ms, three digits): the run's name. Task 12 stays shown."""
+    app = pilot.app
+    await start_with_a_run(pilot, "task12")
+    with app.session as s:
+        run, T_63 = s.response_run().name, s.results().step.T_63
+    await type_in(pilot, "own.T", f"{T_63 * 1e3:.3g} ms")
+    return run
+
+
+async def record_a_square_wave(pilot: Pilot[None], device: QuietDevice) -> str:
+    """F5 on Task 10 (shown), the double's 12 s square wave (seed 9) taken as the run, and the
+    run finished; the name of the run Tasks 11-15 use then."""
+    app = pilot.app
+    seq = await start_run_on(pilot, device)
+    app.recording.append(square_wave_stream(seq, (seq + 1) * 25_000, 12.0, seed=9))
+    app.finish_run("done")
+    await settle(pilot)
+    with app.session as s:
+        return s.response_run().name
 
 
 async def taken(pilot: Pilot[None], total: int) -> None:
