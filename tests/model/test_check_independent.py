@@ -250,23 +250,6 @@ def test_a_speed_filtered_sample_by_sample_is_fitted_as_that_filter(seed, pair):
     assert "a filter of that column, run sample by sample" in text(r)
 
 
-@pytest.mark.parametrize(
-    ("seed", "pair"),
-    [
-        (0, ("dead_time", "velocity_filter")),
-        (8, ("velocity_filter", "coast_on_zero")),
-        (7, ("coast_on_zero", "current_limit")),
-    ],
-)
-def test_a_third_cause_far_smaller_than_the_pair_beside_it_is_not_named(seed, pair):
-    # a pair never fits the generator's motor exactly, and a third cause takes up part of
-    # what it leaves: a cap of 0.2 rad/s effect beside a delay and an average, frictions of
-    # 2 and 26 mV beside a coast (under 13 % of what the weaker of the pair moves the speed)
-    log = make(seed, pair)
-    r = check(log.t, log.u, log.omega)
-    assert named(r) == sorted(pair), (named(r), log.how)
-
-
 def test_the_filter_of_the_speed_column_runs_as_a_logger_runs_it():
     from minseg_tui.model.check.simulate import iir
 
@@ -292,6 +275,40 @@ def _right_or_honest(r, log, pair):
         est = p[BY_CAUSE[cause].param]
         ok = ok and (abs(est - value) <= (1.0 if cause == "velocity_filter" else 0.25 * value))
     return ok
+
+
+@pytest.mark.parametrize(
+    ("seed", "pair", "within"),
+    [
+        # a third cause far smaller than the pair beside it is not named: a pair never fits the
+        # generator's motor exactly, and a third cause takes up part of what it leaves: a cap
+        # of 0.2 rad/s effect beside a delay and an average, frictions of 2 and 26 mV beside a
+        # coast (under 13 % of what the weaker of the pair moves the speed)
+        (0, ("dead_time", "velocity_filter"), {}),
+        (8, ("velocity_filter", "coast_on_zero"), {}),
+        (7, ("coast_on_zero", "current_limit"), {}),
+        # a cap with a delay or an average is fitted from every start in each variant: a cap
+        # that brakes too, beside a delay of 15-47 ms or an 8-tap average: the cap that only
+        # accelerates is fitted first, and the cap both ways was polished from where that one
+        # ended, in another valley (cap + delay 14 and 94 times the residual the true pair
+        # leaves); the pole on the measurement or a delay came out in place of the true cause
+        (7, ("current_limit", "dead_time"), {"current_limit": 0.05, "dead_time": 0.1}),
+        (17, ("current_limit", "dead_time"), {"current_limit": 0.05, "dead_time": 0.1}),
+        (12, ("current_limit", "velocity_filter"), {"current_limit": 0.05, "velocity_filter": 0.1}),
+    ],
+)
+def test_a_pair_is_named_without_a_third_cause(seed, pair, within):
+    """The pair is named, and nothing beside it. ``within``: each cause's parameter within
+    that share of the generator's (rel), the pair then also right or honestly ambiguous
+    (:func:`_right_or_honest`)."""
+    log = make(seed, pair)
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == sorted(pair), (named(r), log.how)
+    if within:
+        assert _right_or_honest(r, log, pair), (r.extended.params, r.finding.ambiguous_with)
+    p = r.extended.params
+    for cause, rel in within.items():
+        assert p[BY_CAUSE[cause].param] == pytest.approx(log.causes[cause], rel=rel)
 
 
 @pytest.mark.parametrize(
@@ -495,29 +512,6 @@ def test_a_hands_onset_is_fitted_through_the_noise_not_walked_back_row_by_row():
     assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.1
     assert f"the rows from t = {hands[0].t:.3f} s to" in anomaly(hands[0])
     assert named(r) == ["velocity_filter"]
-
-
-@pytest.mark.parametrize(
-    ("seed", "pair"),
-    [
-        (7, ("current_limit", "dead_time")),
-        (17, ("current_limit", "dead_time")),
-        (12, ("current_limit", "velocity_filter")),
-    ],
-)
-def test_a_cap_with_a_delay_or_an_average_is_fitted_from_every_start_in_each_variant(seed, pair):
-    # a cap that brakes too, beside a delay of 15-47 ms or an 8-tap average: the cap that only
-    # accelerates is fitted first, and the cap both ways was polished from where that one
-    # ended, in another valley (cap + delay 14 and 94 times the residual the true pair
-    # leaves); the pole on the measurement or a delay came out in place of the true cause
-    log = make(seed, pair)
-    r = check(log.t, log.u, log.omega)
-    assert named(r) == sorted(pair), (named(r), log.how)
-    assert _right_or_honest(r, log, pair), (r.extended.params, r.finding.ambiguous_with)
-    other = next(c for c in pair if c != "current_limit")
-    p = r.extended.params
-    assert p[BY_CAUSE[other].param] == pytest.approx(log.causes[other], rel=0.1)
-    assert p["a_max"] == pytest.approx(log.causes["current_limit"], rel=0.05)
 
 
 @pytest.mark.parametrize("seed", [1, 13])

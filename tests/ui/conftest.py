@@ -19,9 +19,12 @@ from minseg_tui.ui.app import LabApp, make_app
 from minseg_tui.ui.config import UiConfig
 from tests.ui.fakes import QuietDevice
 from tests.ui.textual_internals import (
+    all_idle,
     keep_cursors_still,
     leave_headless_frames_unpainted,
     make_waits_exact,
+    mark_idle_nodes,
+    refresh_when_idle,
     running_app,
     wait_for_screen,
 )
@@ -77,8 +80,10 @@ async def drained(_min_sleep: float = 0.0, _max_sleep: float = 0.0) -> None:
     """Return once the app has processed every message: the key a Pilot just sent and all it
     led to, round by round (each round waits until every node of the app and of its screens
     has handled what was queued on it when the round began, a handler under way included),
-    until a round ends with every queue empty, or :data:`DRAIN_ROUNDS` rounds. Takes the
-    arguments of Textual's ``wait_for_idle`` and ignores them."""
+    until a round ends with the app and every node of its screen idle (nothing queued, no
+    handler under way: ``textual_internals.all_idle``) and nothing queued on the screens
+    under it, or :data:`DRAIN_ROUNDS` rounds. Takes the arguments of Textual's
+    ``wait_for_idle`` and ignores them."""
     for _ in range(3):  # the driver hands a key over through the loop (run_coroutine_threadsafe)
         await asyncio.sleep(0)
     app = running_app()
@@ -89,8 +94,8 @@ async def drained(_min_sleep: float = 0.0, _max_sleep: float = 0.0) -> None:
         if not app.is_running:
             return
         await wait_for_screen(pilot)
-        nodes = [app, *(n for s in app.screen_stack for n in s.walk_children(with_self=True))]
-        if all(n.message_queue_size == 0 for n in nodes):
+        under = [n for s in app.screen_stack[:-1] for n in s.walk_children(with_self=True)]
+        if all_idle(app) and all(n.message_queue_size == 0 for n in under):
             return
 
 
@@ -99,8 +104,14 @@ def exact_pilot_waits(monkeypatch: pytest.MonkeyPatch) -> None:
     """Pilot waits after every key it presses (and in ``pause()``) until the process has used
     almost no CPU for 20 ms, at most 1 s: a guess on the clock, which the CPU that the app's
     threads use (the board, the stream) makes last up to the second, key after key, and a busy
-    machine cuts short. :func:`drained` waits for exactly what the key set going."""
+    machine cuts short. :func:`drained` waits for exactly what the key set going, on the
+    nodes that are not idle (``textual_internals.idle``). Textual's update timer lays the
+    screen out only once the nodes are idle (``textual_internals.refresh_when_idle``): what
+    a busy node is about to tell the screen is laid out before what waits for the refresh
+    runs, as the waits' forced layouts (``pilot.pause(0)``) do."""
+    mark_idle_nodes(monkeypatch)
     make_waits_exact(monkeypatch, drained)
+    refresh_when_idle(monkeypatch)
 
 
 @pytest.fixture(autouse=True)

@@ -27,8 +27,8 @@ from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.fields import AnswerList, EntryBox, FieldForm, FieldRow, field_id
-from tests.ui.fakes import QuietDevice
-from tests.ui.textual_internals import key_name
+from tests.ui.fakes import QuietDevice, square_wave_stream
+from tests.ui.textual_internals import all_idle, key_name, marking_idle_nodes, wait_for_screen
 
 TABLE = {
     "R": "5.3",
@@ -59,19 +59,32 @@ minute), never a threshold a busy machine could cross."""
 
 
 async def settle(pilot: Pilot[None], until: Callable[[], bool] = lambda: True) -> None:
-    """Let the app finish what it was asked, exactly: rounds of ``pilot.pause(0)`` (each
-    returns once every message queued on the screen is processed) and waits for the workers
-    that build views or write the report (all but the device stream), until ``until()``
-    holds."""
+    """Let the app finish what it was asked, exactly: rounds that each return once every
+    message queued on the screen is processed, and waits for the workers that build views
+    or write the report (all but the device stream), until ``until()`` holds. A round
+    begun while every node of the app is idle (``textual_internals.idle``: nothing queued,
+    no handler under way) is ``pilot.pause(0)``, which also lays the screen out and runs
+    what waits for its refresh; one begun while some node is busy only waits for the busy
+    nodes (Textual's update timer lays out meanwhile, once every node is idle:
+    ``textual_internals.refresh_when_idle``).
+    ``until()`` is asked, and settle returns, only after a ``pilot.pause(0)`` round that
+    began and ended with every node idle (so what waited for the screen's refresh has run
+    too), :data:`HOPS` rounds at least. In a process without the tests' fixtures (a
+    script a test starts) every round is ``pilot.pause(0)``."""
     app = pilot.app
+    marked = marking_idle_nodes()
     for k in range(ROUNDS):
-        await pilot.pause(0)
+        quiet = not marked or all_idle(app)
+        if quiet:
+            await pilot.pause(0)
+        else:
+            await wait_for_screen(pilot)
         busy = [w for w in app.workers if w.group != "stream" and not w.is_finished]
         if busy:
             with suppress(WorkerCancelled):
                 await app.workers.wait_for_complete(busy)
             continue
-        if k >= HOPS and until():
+        if k >= HOPS and quiet and (not marked or all_idle(app)) and until():
             return
     raise AssertionError("the app never got there")
 
@@ -319,6 +332,29 @@ async def start_run_on(pilot: Pilot[None], device: QuietDevice, key: str = "f5")
         seq += 4
         await taken(pilot, seq)
     raise AssertionError("the run never started")
+
+
+async def answer_T_on_a_run(pilot: Pilot[None]) -> str:
+    """:func:`start_with_a_run` on Task 12, and the group's T typed there (the run's T_63 in
+    ms, three digits): the run's name. Task 12 stays shown."""
+    app = pilot.app
+    await start_with_a_run(pilot, "task12")
+    with app.session as s:
+        run, T_63 = s.response_run().name, s.results().step.T_63
+    await type_in(pilot, "own.T", f"{T_63 * 1e3:.3g} ms")
+    return run
+
+
+async def record_a_square_wave(pilot: Pilot[None], device: QuietDevice) -> str:
+    """F5 on Task 10 (shown), the double's 12 s square wave (seed 9) taken as the run, and the
+    run finished; the name of the run Tasks 11-15 use then."""
+    app = pilot.app
+    seq = await start_run_on(pilot, device)
+    app.recording.append(square_wave_stream(seq, (seq + 1) * 25_000, 12.0, seed=9))
+    app.finish_run("done")
+    await settle(pilot)
+    with app.session as s:
+        return s.response_run().name
 
 
 async def taken(pilot: Pilot[None], total: int) -> None:

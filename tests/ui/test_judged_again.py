@@ -6,17 +6,8 @@ it). Pilot at 80x24, a real session folder, the seeded plant's runs."""
 from __future__ import annotations
 
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.fakes import QuietDevice, square_wave_stream
-from tests.ui.helpers import (
-    TABLE,
-    enter_all,
-    goto,
-    record_response_run,
-    settle,
-    start,
-    start_run_on,
-    type_in,
-)
+from tests.ui.fakes import QuietDevice
+from tests.ui.helpers import answer_T_on_a_run, goto, record_a_square_wave, settle, type_in
 
 
 def _lines(app, key: str) -> list[str]:
@@ -28,21 +19,10 @@ async def test_an_answer_judged_against_a_newer_run_says_so_under_it(quiet):
     dev = QuietDevice(seed=1)
     app = quiet(dev)
     async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        enter_all(app, TABLE)
-        with app.session as s:
-            first = record_response_run(s)
-            T_63 = s.results().step.T_63
-        await goto(pilot, "task12")
-        await type_in(pilot, "own.T", f"{T_63 * 1e3:.3g} ms")
+        first = await answer_T_on_a_run(pilot)
         assert not [line for line in _lines(app, "own.T") if "judged again" in line]
         await goto(pilot, "task10")
-        seq = await start_run_on(pilot, dev)
-        app.recording.append(square_wave_stream(seq, (seq + 1) * 25_000, 12.0, seed=9))
-        app.finish_run("done")
-        await settle(pilot)
-        with app.session as s:
-            now = s.response_run().name
+        now = await record_a_square_wave(pilot, dev)
         assert now != first
         await goto(pilot, "task12")
         said = " ".join(" ".join(_lines(app, "own.T")).split())

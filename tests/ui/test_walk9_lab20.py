@@ -3,18 +3,15 @@ folder with the seeded step run)."""
 
 from __future__ import annotations
 
-from tests.ui.fakes import QuietDevice, square_wave_stream
+from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
-    TABLE,
+    answer_T_on_a_run,
     box_text,
-    enter_all,
     goto,
     heard_notifications,
     nav_mark,
-    record_response_run,
+    record_a_square_wave,
     settle,
-    start,
-    start_run_on,
     start_with_a_run,
     type_in,
 )
@@ -54,21 +51,10 @@ async def test_a_new_run_that_takes_over_tasks_11_to_15_says_so(quiet):
     dev = QuietDevice(seed=1)
     app = quiet(dev)
     async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        enter_all(app, TABLE)
-        with app.session as s:
-            first = record_response_run(s)
-            T_63 = s.results().step.T_63
-        await goto(pilot, "task12")
-        await type_in(pilot, "own.T", f"{T_63 * 1e3:.3g} ms")
+        first = await answer_T_on_a_run(pilot)
         said = heard_notifications(app)
         await goto(pilot, "task10")
-        seq = await start_run_on(pilot, dev)
-        app.recording.append(square_wave_stream(seq, (seq + 1) * 25_000, 12.0, seed=9))
-        app.finish_run("done")
-        await settle(pilot)
-        with app.session as s:
-            now = s.response_run().name
+        now = await record_a_square_wave(pilot, dev)
         assert now != first
         (changed,) = [n for n in said if n.startswith("Tasks 11-15 now use")]
         assert changed == (
@@ -78,8 +64,5 @@ async def test_a_new_run_that_takes_over_tasks_11_to_15_says_so(quiet):
         )
         app.screen.use_run(first)  # the group's choice: a new run does not take over
         said.clear()
-        seq = await start_run_on(pilot, dev)
-        app.recording.append(square_wave_stream(seq, (seq + 1) * 25_000, 12.0, seed=9))
-        app.finish_run("done")
-        await settle(pilot)
+        await record_a_square_wave(pilot, dev)
         assert not [n for n in said if n.startswith("Tasks 11-15 now use")]

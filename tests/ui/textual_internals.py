@@ -4,15 +4,18 @@ Each reach is here because Textual 8.2 offers no public way to do it; when an up
 Textual breaks one, this file is the one to read. Checked against Textual's source in the
 venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
-Seven names of Textual's internals, in three reaches:
+Thirteen names of Textual's internals, in five reaches:
 
-1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``, done again here, step for step,
-   and put in its place. The exact wait Pilot itself uses after a key (every node handles
-   what was queued on it); it also returns at once when the app has failed
+1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``, done again here, and put in its
+   place. The exact wait Pilot itself uses after a key (every node handles what was queued
+   on it, a handler under way included); it also returns at once when the app has failed
    (``App._exception_event``), which no public API shows. Pilot's public ``pause()`` adds a
    forced layout and, with no delay, the CPU-idle guess below. Pilot's own queues a new
    closure on every node each time, and Textual works out each closure's signature
-   (``inspect.signature``) before it calls it; the callback here states its own.
+   (``inspect.signature``) before it calls it; the callback here states its own. Pilot's
+   own also queues it on the nodes that are idle (reach 4), where it waits for nothing:
+   each such callback cost a message, an Idle event and the MRO walk for its handlers, and
+   the tests' waits were about half the messages the app processed.
 2. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
    ``textual.app`` and ``textual.pilot``: ``Pilot.press`` and ``Pilot.pause()`` call it
    after every key, and App.run_test has no option to wait otherwise; and
@@ -20,6 +23,19 @@ Seven names of Textual's internals, in three reaches:
 3. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
    the replacement the screen's ``_compositor._dirty_regions``, ``_dirty_widgets`` and
    ``App._update_mouse_over``. No public switch turns painting off in a headless app.
+4. :func:`mark_idle_nodes`: ``Queue.get`` of ``textual._queue`` wrapped so that a node's
+   queue (``MessagePump._message_queue``) says while the node's message loop waits in it:
+   the node then has nothing queued and no handler under way (its loop takes the next
+   message only once the one before, its Idle event and its ``call_next`` callbacks are
+   done). :func:`idle` reads it; no public API says whether a node is handling a message.
+5. :func:`refresh_when_idle`: ``Screen._on_timer_update`` replaced: the screen's update (lay
+   out, paint, then run what waits for the refresh), which Textual's update timer
+   (``Screen._update_timer``, a repeating ``Timer``) calls up to 60 times a second while
+   the screen has something to lay out. When the timer calls it (the timer's task,
+   ``Timer._task``, is the running one) while the app or a node of its screen is not idle
+   (reach 4), it waits a tick: what a busy node is about to tell the screen (a scroll, a
+   new size) is then laid out before what waits for the refresh runs. Pilot's ``pause()``
+   calls it as before. No public API ties the screen's refresh to the nodes' queues.
 
 Done with public API here: the running app is ``MessagePump.app`` of a node attached to no
 app (not ``textual._context.active_app``); the still cursor is each Input's
@@ -43,6 +59,7 @@ from collections.abc import Awaitable, Callable
 from typing import Any
 
 import pytest
+import textual._queue
 import textual.app
 import textual.pilot
 from textual.app import App
@@ -82,12 +99,99 @@ class _Countdown:
             self.zero.set()
 
 
+_WAITING = "_minseg_tests_waiting"
+"""The attribute :func:`mark_idle_nodes` sets on a node's queue while its loop waits in it."""
+
+_queue_get = textual._queue.Queue.get
+
+
+async def _marked_get(self: Any) -> Any:
+    """``Queue.get``, with the queue marked as waited in until it returns."""
+    setattr(self, _WAITING, True)
+    try:
+        return await _queue_get(self)
+    finally:
+        setattr(self, _WAITING, False)
+
+
+def mark_idle_nodes(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every node's queue says while the node's message loop waits in it (:func:`idle`)."""
+    monkeypatch.setattr(textual._queue.Queue, "get", _marked_get)
+
+
+def idle(node: MessagePump) -> bool:
+    """The node has nothing queued and no handler under way: its message loop waits for the
+    next message (False until it first does so, after its Compose and Mount, and when
+    :func:`mark_idle_nodes` is not in force)."""
+    queue = node._message_queue
+    return not queue.qsize() and getattr(queue, _WAITING, False)
+
+
+def marking_idle_nodes() -> bool:
+    """:func:`mark_idle_nodes` is in force (a test's fixtures; not in a process a test
+    starts, which waits as Pilot does)."""
+    return textual._queue.Queue.get is _marked_get
+
+
+def all_idle(app: App[object]) -> bool:
+    """The app and every node of its screen are idle (:func:`idle`; the nodes
+    :func:`wait_for_screen` waits for), or the app has ended (its nodes handle nothing
+    more). The screens under it are not asked: a node of theirs may stay under way while a
+    screen is over them (make test's first run with this had two tests wait in vain under
+    a modal screen, Help and Quit)."""
+    if not app.is_running:
+        return True
+    try:
+        screen = app.screen
+    except Exception:  # no screen yet or any more: nothing to wait for
+        return True
+    return idle(app) and all(idle(n) for n in screen.walk_children(with_self=True))
+
+
+MOST_WAITED_TICKS = 60
+"""Most ticks in a row the update timer waits for a busy node (:func:`refresh_when_idle`):
+a guard against a node that never idles, whose screen would then never be laid out, not a
+measure of time (the ticks come at most 60 a second, fewer on a busy machine)."""
+
+_timer_update = Screen._on_timer_update
+_WAITED = "_minseg_tests_waited_ticks"
+"""The attribute :func:`refresh_after_idle` keeps on a screen: ticks waited in a row."""
+
+
+def refresh_after_idle(self: Screen[object]) -> None:
+    """The screen's update (Textual's ``Screen._on_timer_update``), except that the update
+    timer's call waits while the app or a node of its screen is not idle (:func:`all_idle`),
+    at most :data:`MOST_WAITED_TICKS` ticks in a row: the timer stays running and calls
+    again a tick later. Textual's timer may fire between a node's change and the message
+    that tells the screen of it, and the update then runs what waits for the refresh on the
+    layout from before the change: the lab's step scrolled to place its entry (once at once,
+    once after the refresh) and the timer fired before the scroll's message reached the
+    screen, so the second placing read the layout of before the first one (scroll_y 15 for
+    6 in test_flow's entry-in-view test). A refresh a tick later is one a busy machine
+    gives too; here it always follows the messages the nodes had."""
+    timer = self._update_timer
+    if asyncio.current_task() is timer._task and self.is_current and not all_idle(self.app):
+        waited: int = getattr(self, _WAITED, 0)
+        if waited < MOST_WAITED_TICKS:
+            setattr(self, _WAITED, waited + 1)
+            return
+    setattr(self, _WAITED, 0)
+    _timer_update(self)
+
+
+def refresh_when_idle(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every screen's update timer lays it out only once the app and its nodes are idle
+    (:func:`refresh_after_idle`)."""
+    monkeypatch.setattr(Screen, "_on_timer_update", refresh_after_idle)
+
+
 async def wait_for_screen(pilot: Pilot[object], timeout: float = 30.0) -> bool:
     """Wait until the app and every node of its screen have handled what was queued on them
-    when this began (a handler under way included): a callback queued on each of them, then
-    wait until all have run, or the app has failed. As ``Pilot._wait_for_screen`` of Textual
-    8.2 does, line for line, with a bound method for the callback. True: all of them ran;
-    raises Textual's ``WaitForScreenTimeout`` after ``timeout`` s (a hang guard)."""
+    when this began (a handler under way included): a callback queued on each of them that
+    is not idle (:func:`idle`: it has nothing to handle), then wait until all have run, or
+    the app has failed. As ``Pilot._wait_for_screen`` of Textual 8.2 does, line for line,
+    with a bound method for the callback and the idle nodes left out. True: all of them
+    ran; raises Textual's ``WaitForScreenTimeout`` after ``timeout`` s (a hang guard)."""
     app = pilot.app
     try:
         screen = app.screen
@@ -95,7 +199,7 @@ async def wait_for_screen(pilot: Pilot[object], timeout: float = 30.0) -> bool:
         return False
     countdown = _Countdown()
     for node in [app, *screen.walk_children(with_self=True)]:
-        if node.call_later(countdown):
+        if not idle(node) and node.call_later(countdown):
             countdown.count += 1
     if countdown.count:
         waits = [
