@@ -712,7 +712,15 @@ class FieldRow(Vertical):
                     screen.scroll_to_center(box, animate=False, origin_visible=True, immediate=True)
                 screen.scroll_to_widget(self, animate=False, immediate=True)
 
+        scrollers = [a for a in self.ancestors_with_self if isinstance(a, Widget)]
+        before = [w.scroll_offset for w in scrollers]
         place(False)
+        if [w.scroll_offset for w in scrollers] != before:
+            # the second placing must see this scroll: a container tells the screen of its
+            # scroll only when it is next idle, and the screen's refresh may come first and
+            # lay nothing out (the second placing then measured the layout from before the
+            # scroll: the box read as cut off and was centred again, lower)
+            screen.refresh(layout=True)
         self.call_after_refresh(place, True)
 
     def pending(self) -> str | None:
