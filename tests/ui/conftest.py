@@ -24,7 +24,6 @@ from tests.ui.textual_internals import (
     leave_headless_frames_unpainted,
     make_waits_exact,
     mark_idle_nodes,
-    refresh_when_idle,
     running_app,
     wait_for_screen,
 )
@@ -105,13 +104,9 @@ def exact_pilot_waits(monkeypatch: pytest.MonkeyPatch) -> None:
     almost no CPU for 20 ms, at most 1 s: a guess on the clock, which the CPU that the app's
     threads use (the board, the stream) makes last up to the second, key after key, and a busy
     machine cuts short. :func:`drained` waits for exactly what the key set going, on the
-    nodes that are not idle (``textual_internals.idle``). Textual's update timer lays the
-    screen out only once the nodes are idle (``textual_internals.refresh_when_idle``): what
-    a busy node is about to tell the screen is laid out before what waits for the refresh
-    runs, as the waits' forced layouts (``pilot.pause(0)``) do."""
+    nodes that are not idle (``textual_internals.idle``)."""
     mark_idle_nodes(monkeypatch)
     make_waits_exact(monkeypatch, drained)
-    refresh_when_idle(monkeypatch)
 
 
 @pytest.fixture(autouse=True)

@@ -65,8 +65,7 @@ async def settle(pilot: Pilot[None], until: Callable[[], bool] = lambda: True) -
     begun while every node of the app is idle (``textual_internals.idle``: nothing queued,
     no handler under way) is ``pilot.pause(0)``, which also lays the screen out and runs
     what waits for its refresh; one begun while some node is busy only waits for the busy
-    nodes (Textual's update timer lays out meanwhile, once every node is idle:
-    ``textual_internals.refresh_when_idle``).
+    nodes (Textual's update timer lays out meanwhile, as it does in a terminal).
     ``until()`` is asked, and settle returns, only after a ``pilot.pause(0)`` round that
     began and ended with every node idle (so what waited for the screen's refresh has run
     too), :data:`HOPS` rounds at least. In a process without the tests' fixtures (a

@@ -4,7 +4,7 @@ Each reach is here because Textual 8.2 offers no public way to do it; when an up
 Textual breaks one, this file is the one to read. Checked against Textual's source in the
 venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
-Thirteen names of Textual's internals, in five reaches:
+Ten names of Textual's internals, in four reaches:
 
 1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``, done again here, and put in its
    place. The exact wait Pilot itself uses after a key (every node handles what was queued
@@ -28,14 +28,6 @@ Thirteen names of Textual's internals, in five reaches:
    the node then has nothing queued and no handler under way (its loop takes the next
    message only once the one before, its Idle event and its ``call_next`` callbacks are
    done). :func:`idle` reads it; no public API says whether a node is handling a message.
-5. :func:`refresh_when_idle`: ``Screen._on_timer_update`` replaced: the screen's update (lay
-   out, paint, then run what waits for the refresh), which Textual's update timer
-   (``Screen._update_timer``, a repeating ``Timer``) calls up to 60 times a second while
-   the screen has something to lay out. When the timer calls it (the timer's task,
-   ``Timer._task``, is the running one) while the app or a node of its screen is not idle
-   (reach 4), it waits a tick: what a busy node is about to tell the screen (a scroll, a
-   new size) is then laid out before what waits for the refresh runs. Pilot's ``pause()``
-   calls it as before. No public API ties the screen's refresh to the nodes' queues.
 
 Done with public API here: the running app is ``MessagePump.app`` of a node attached to no
 app (not ``textual._context.active_app``); the still cursor is each Input's
@@ -146,43 +138,6 @@ def all_idle(app: App[object]) -> bool:
     except Exception:  # no screen yet or any more: nothing to wait for
         return True
     return idle(app) and all(idle(n) for n in screen.walk_children(with_self=True))
-
-
-MOST_WAITED_TICKS = 60
-"""Most ticks in a row the update timer waits for a busy node (:func:`refresh_when_idle`):
-a guard against a node that never idles, whose screen would then never be laid out, not a
-measure of time (the ticks come at most 60 a second, fewer on a busy machine)."""
-
-_timer_update = Screen._on_timer_update
-_WAITED = "_minseg_tests_waited_ticks"
-"""The attribute :func:`refresh_after_idle` keeps on a screen: ticks waited in a row."""
-
-
-def refresh_after_idle(self: Screen[object]) -> None:
-    """The screen's update (Textual's ``Screen._on_timer_update``), except that the update
-    timer's call waits while the app or a node of its screen is not idle (:func:`all_idle`),
-    at most :data:`MOST_WAITED_TICKS` ticks in a row: the timer stays running and calls
-    again a tick later. Textual's timer may fire between a node's change and the message
-    that tells the screen of it, and the update then runs what waits for the refresh on the
-    layout from before the change: the lab's step scrolled to place its entry (once at once,
-    once after the refresh) and the timer fired before the scroll's message reached the
-    screen, so the second placing read the layout of before the first one (scroll_y 15 for
-    6 in test_flow's entry-in-view test). A refresh a tick later is one a busy machine
-    gives too; here it always follows the messages the nodes had."""
-    timer = self._update_timer
-    if asyncio.current_task() is timer._task and self.is_current and not all_idle(self.app):
-        waited: int = getattr(self, _WAITED, 0)
-        if waited < MOST_WAITED_TICKS:
-            setattr(self, _WAITED, waited + 1)
-            return
-    setattr(self, _WAITED, 0)
-    _timer_update(self)
-
-
-def refresh_when_idle(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every screen's update timer lays it out only once the app and its nodes are idle
-    (:func:`refresh_after_idle`)."""
-    monkeypatch.setattr(Screen, "_on_timer_update", refresh_after_idle)
 
 
 async def wait_for_screen(pilot: Pilot[object], timeout: float = 30.0) -> bool:
