@@ -26,7 +26,13 @@ class Key:
     ``assistant``: a lab assistant's key (last in the footer, the first left out where its
     line cannot hold every key); ``footer_on``: the steps whose footer shows a key that is
     not shown elsewhere but works on every step (F10 on Task 1, which asks for it); the
-    app has an action of its name with :data:`IN_FOOTER` after it, which runs it."""
+    app has an action of its name with :data:`IN_FOOTER` after it, which runs it.
+    ``written``: the key as a note under a plot writes it (:func:`key_hint`; '': its first
+    Textual key name, 'f9').
+
+    ``label`` is the key's one name: the footer shows it, F1's line starts with it (a line
+    of two keys, Alt+← →, with that of the one the footer shows) and a note names the key
+    with it (:func:`key_hint`), so a key reads the same wherever it is named."""
 
     name: str
     help: str
@@ -38,16 +44,22 @@ class Key:
     panel: str = ""
     assistant: bool = False
     footer_on: tuple[str, ...] = ()
+    written: str = ""
 
 
 KEYMAP: tuple[Key, ...] = (
-    Key("F1", "this help", "f1", "help", "Help", priority=True),
+    Key("F1", "this list of keys", "f1", "help", "Help", priority=True),
     Key(
-        "F2", "STOP the motor (works everywhere, always)", "f2", "stop_motor", "STOP", priority=True
+        "F2",
+        "the motor stops (works everywhere, always)",
+        "f2",
+        "stop_motor",
+        "STOP",
+        priority=True,
     ),
     Key(
         "F3",
-        "set the next voltage 2.5/3.5/4.5 V (Task 4/5)",
+        "the next voltage, 2.5/3.5/4.5 V (Task 4/5)",
         "f3",
         "set_voltage",
         "Set V",
@@ -55,7 +67,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "F4",
-        "capture omega_ss over the settled window",
+        "omega_ss over the settled window (Task 4/5)",
         "f4",
         "capture",
         "Capture",
@@ -63,7 +75,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "F5",
-        "run the square wave (Task 10)",
+        "the square wave on the board (Task 10)",
         "f5",
         "run_square_wave",
         "Run",
@@ -71,7 +83,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "F6",
-        "run it fast: 5 ms board-timed samples",
+        "the square wave with 5 ms board-timed samples",
         "f6",
         "run_fast",
         "Run 5 ms",
@@ -79,16 +91,19 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "F7",
-        "the formula behind the table cell",
+        "how the table cell is worked out",
         "f7",
         "formula",
         "Formula",
         panel="a table formula",
     ),
-    Key("F8", "export the report (Markdown, HTML, CSV)", "f8", "export", "Export", priority=True),
+    Key(
+        "F8", "the report as Markdown, HTML and CSV files", "f8", "export", "Export", priority=True
+    ),
     Key(
         "F9",
-        "zoom: next step / whole log (Tasks 11-15); close-up / whole log (check)",
+        "the next rise, after the last the whole log (Tasks 11-15); the close-up or the "
+        "whole log (model check)",
         "f9",
         "zoom_next",
         "Zoom",
@@ -96,7 +111,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "F10",
-        "board check: does the wheel turn, does the count follow?",
+        "does the wheel turn, does the count follow?",
         "f10",
         "board_check",
         "Board check",
@@ -106,7 +121,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "Ctrl+R",
-        "lab assistant: show the computed values before the answers",
+        "a lab assistant shows the computed values before the group answers",
         "ctrl+r",
         "reveal",
         "Reveal",
@@ -115,7 +130,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "Alt+← →",
-        "previous / next step of the log (Tasks 11-15)",
+        "the previous / next rise: the speed after a voltage step up (Tasks 11-15)",
         "alt+left,ctrl+left",
         "pick_prev",
         panel="moving through the run log",
@@ -127,6 +142,7 @@ KEYMAP: tuple[Key, ...] = (
         "pick_next",
         "Rise",
         panel="moving through the run log",
+        written="alt+←/→",
     ),
     Key("Ctrl+← →", "the same, outside a text entry"),
     Key("[ ] z", "the same on the focused plot; z zooms"),
@@ -134,7 +150,7 @@ KEYMAP: tuple[Key, ...] = (
         "← → on a rise",
         "the focused plot's cursor: t and omega at its column (Shift: 5; Home/End: the ends)",
     ),
-    Key("PgDn/PgUp", "next / previous lab step (Ctrl+N / Ctrl+B)"),
+    Key("PgDn/PgUp", "the next lab step; PgUp the one before (Ctrl+N / Ctrl+B)", label="Next step"),
     Key("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
     Key("Ctrl+O", "the whole of the step's What to do, over its top (again: folds it)"),
     Key("Tab", "next field; Enter stores and goes on to the next field"),
@@ -142,15 +158,45 @@ KEYMAP: tuple[Key, ...] = (
     Key("Ctrl+Z", "in a field: back to the answer stored before (again: further back)"),
     Key("Ctrl+Y", "in a field: forward again to the answer Ctrl+Z took back"),
     Key("Space", "tick an answer (summary questions)"),
-    Key("Ctrl+P", "command palette (go to a step, pick the run, stop...)"),
+    # Textual's own binding and footer word ('palette'), written here as the footer shows it
+    Key("Ctrl+P", "the command palette: go to a step, pick the run, stop...", label="palette"),
     Key("Ctrl+Q", "quit (the session is already saved)"),
 )
 """Every key F1 lists, in its order, with the bindings the app makes for them."""
 
 
 def help_lines() -> list[tuple[str, str]]:
-    """F1's list: (the key as written, what it does)."""
-    return [(k.name, k.help) for k in KEYMAP if k.name]
+    """F1's list: (the key as written, what it does), what it does after the key's footer
+    label ('Zoom: the next rise, ...'), the words the footer and the notes name it with."""
+    out: list[tuple[str, str]] = []
+    for i, k in enumerate(KEYMAP):
+        if not k.name:
+            continue
+        label = k.label or _partner(i).label
+        out.append((k.name, f"{label}: {k.help}" if label else k.help))
+    return out
+
+
+def key_label(name: str) -> str:
+    """The footer label of the key F1 lists as ``name``, for a binding made elsewhere (the
+    lab screen's PgDn: 'Next step')."""
+    return next(k.label for k in KEYMAP if k.name == name)
+
+
+def _partner(i: int) -> Key:
+    """The row after F1's line ``i`` with no line of its own, the other key of that line
+    (Alt+→ after Alt+←), or the row itself."""
+    after = KEYMAP[i + 1] if i + 1 < len(KEYMAP) else None
+    return after if after is not None and not after.name else KEYMAP[i]
+
+
+def key_hint(action: str, what: str = "") -> str:
+    """The key of the app's ``action`` as a note under a plot names it, with its footer
+    label: 'f9 Zoom', 'alt+←/→ Rise'; ``what``: what it does there, after it in brackets
+    ('f9 Zoom (rise 2)')."""
+    k = next(k for k in KEYMAP if k.action == action)
+    hint = f"{k.written or k.keys.split(',')[0]} {k.label}"
+    return f"{hint} ({what})" if what else hint
 
 
 def panel_keys() -> tuple[tuple[str, str, str, str], ...]:

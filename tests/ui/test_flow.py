@@ -207,20 +207,20 @@ async def test_run_log_keys_work_whatever_has_focus_but_leave_typing_alone(quiet
         assert typing_box(app) is own.input
         await pilot.press("alt+right")
         await settle(pilot)
-        assert "step 2 of" in str(note.render())
+        assert "rise 2 of" in str(note.render())
         await pilot.press("left_square_bracket", "z")  # printable keys stay in the entry
         await settle(pilot)
-        assert own.input.value == "[z" and "step 2 of" in str(note.render())
+        assert own.input.value == "[z" and "rise 2 of" in str(note.render())
         app.screen.query_one("#nav").focus()
         await pilot.press("ctrl+right")
         await settle(pilot)
-        assert "step 3 of" in str(note.render())
+        assert "rise 3 of" in str(note.render())
         await pilot.press("alt+left", "alt+left")
         await settle(pilot)
-        assert "step 1 of" in str(note.render())
+        assert "rise 1 of" in str(note.render())
         await pilot.press("f9", "f9")
         await settle(pilot)
-        assert "step 3 of" in str(note.render())
+        assert "rise 3 of" in str(note.render())
 
 
 async def test_table_fits_80_columns_and_f7_gives_the_row_formula_with_its_numbers(quiet):

@@ -324,11 +324,11 @@ async def test_the_zoom_shows_the_rise_with_its_63_percent_level_and_crossing(qu
         assert list(by_label["crossing"].x) == pytest.approx([first.T_63, first.T_63])
         note = app.screen.query_one("#zoom-note", Prose).text
         assert (
-            "step 1 of 4" in note and f"{format_constant(first.T_63, 's')} after the edge" in note
+            "rise 1 of 4" in note and f"{format_constant(first.T_63, 's')} after the edge" in note
         )
         await pilot.press("alt+right")
         await settle(pilot)
-        assert "step 2 of 4" in app.screen.query_one("#zoom-note", Prose).text
+        assert "rise 2 of 4" in app.screen.query_one("#zoom-note", Prose).text
         second = {tr.label: tr for tr in plot.traces}["crossing"]
         assert list(second.x) == pytest.approx([st.rises[1].T_63] * 2)
         # the group's reading goes in right under the plot it is read from

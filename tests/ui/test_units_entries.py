@@ -127,7 +127,7 @@ async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(qu
         await goto(pilot, "task11")
         await settle(pilot)
         note = str(app.screen.query_one("#zoom-note").render())
-        assert "step 1 of 4" in note  # the table filled: the steps have results
+        assert "rise 1 of 4" in note  # the table filled: the rises have results
 
 
 async def test_a_refusal_is_brought_into_view_whole(quiet):

@@ -132,7 +132,7 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         await paste_in(pilot, "own.K", "1.8")
         assert "yours 1.8" in str(app.screen.query_one("#compare").render())
         await pilot.press("f9")
-        assert "step 2" in str(app.screen.query_one("#zoom-note").render())
+        assert "rise 2" in str(app.screen.query_one("#zoom-note").render())
         # the model check
         await goto(pilot, "model_check")
         assert "Likely cause:" in str(app.screen.query_one("#check-story").render())

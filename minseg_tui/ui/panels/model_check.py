@@ -11,7 +11,7 @@ from textual.widgets import Collapsible, Input
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import CheckView
-from minseg_tui.ui.keys import PanelKeys
+from minseg_tui.ui.keys import PanelKeys, key_hint
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -73,10 +73,10 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         self._plot()
         plots.display = True
         where = (
-            f"run {v.run}, {v.close_title} · f9 Zoom (the whole log)"
+            f"run {v.run}, {v.close_title} · {key_hint('zoom_next', 'the whole log')}"
             if self.close_up and v.close_t.size
-            else f"run {v.run}, the whole log · f9 Zoom (the close-up of the step the words "
-            "speak of)"
+            else f"run {v.run}, the whole log · "
+            f"{key_hint('zoom_next', 'the close-up the words speak of')}"
         )
         story.update("\n".join([where, " ".join(v.story)]))
         text = [f"cause: {v.cause_words or v.cause}"]

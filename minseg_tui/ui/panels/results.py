@@ -20,7 +20,7 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import ResultsView
 from minseg_tui.quantities import format_constant, format_value
-from minseg_tui.ui.keys import PanelKeys
+from minseg_tui.ui.keys import PanelKeys, key_hint
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
@@ -44,8 +44,8 @@ class ResponsePlot(TracePlot):
     columns); the line under the plot and the F1 help list them."""
 
     BINDINGS = [
-        Binding("left_square_bracket", "pick(-1)", "prev step", show=False),
-        Binding("right_square_bracket", "pick(1)", "next step", show=False),
+        Binding("left_square_bracket", "pick(-1)", "previous rise", show=False),
+        Binding("right_square_bracket", "pick(1)", "next rise", show=False),
         Binding("z", "zoom", "zoom", show=False),
         Binding("left", "cursor(-1)", "cursor left", show=False),
         Binding("right", "cursor(1)", "cursor right", show=False),
@@ -187,7 +187,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
                 ]
             )
             if v.rises:
-                said = f"{len(v.rises)} rises with results · f9 Zoom"
+                said = f"{len(v.rises)} rises with results · {key_hint('zoom_next', 'rise 1')}"
             elif not v.lines:  # no results at all: what they wait for, or why (the lines)
                 said = f"no results yet: {v.waiting}" if v.waiting else "no results (why: below)"
             else:
@@ -215,7 +215,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         if w.T_63 is not None and read_T:
             traces.append(Trace([w.T_63, w.T_63], [w.omega0, w.level], "crossing", "|"))
         self._cursor(plot, traces, x, v.omega[keep], (lo, hi))
-        plot.set_axes(f"step {self.zoom + 1}: the rise", "t after the edge [s]")
+        plot.set_axes(f"rise {self.zoom + 1}, after a voltage step up", "t after the edge [s]")
         plot.show(traces, (lo, hi))
         crossing = (
             "the speed crosses it: read T there"
@@ -236,9 +236,11 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
             said = f" to the end of its high level: {read}read omega_ss where it has settled"
         else:
             said = f": {change}, {crossing}"
+        last = self.zoom + 1 >= len(v.rises)
+        f9 = key_hint("zoom_next", "the whole log" if last else f"rise {self.zoom + 2}")
         note.update(
-            f"run {v.run}, step {self.zoom + 1} of {len(v.rises)}{said} · "
-            "shift+tab, ←/→ Cursor · alt+←/→ Step · f9 Zoom (the next step)"
+            f"run {v.run}, rise {self.zoom + 1} of {len(v.rises)}{said} · "
+            f"shift+tab, ←/→ Cursor · {key_hint('pick_next')} · {f9}"
         )
 
     def _cursor(
@@ -328,12 +330,12 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         self.pick(1)
 
     def toggle_zoom(self) -> None:
-        """One step, or the whole log."""
+        """One rise, or the whole log."""
         self.zoom = None if self.zoom is not None else 0
         self._plot()
 
     def action_zoom_next(self) -> None:
-        """F9: the next step, then the whole log, then the first step again."""
+        """F9: the next rise, after the last the whole log, then the first rise again."""
         if self.view is None or not self.view.rises:
             return
         if self.zoom is None:

@@ -36,7 +36,7 @@ from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import EntryView
 from minseg_tui.model.plant import MeterReading
-from minseg_tui.ui.keys import PanelKeys, panel_keys
+from minseg_tui.ui.keys import PanelKeys, key_label, panel_keys
 from minseg_tui.ui.live import LiveBuffer, at_level
 from minseg_tui.ui.messages import (
     CaptureRequested,
@@ -598,7 +598,7 @@ class LabScreen(StatusScreen):
     BINDINGS = [
         # the screen's before any widget's (priority: a list or a table has its own PgDn),
         # run once the keys typed before them are handled (after_typed_keys)
-        Binding("pagedown,ctrl+n", "next_step", "Next step", priority=True),
+        Binding("pagedown,ctrl+n", "next_step", key_label("PgDn/PgUp"), priority=True),
         Binding("pageup,ctrl+b", "prev_step", "Prev step", show=False, priority=True),
         Binding("tab", "into_step(1)", show=False),
         Binding("shift+tab", "into_step(-1)", show=False),
