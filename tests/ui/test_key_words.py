@@ -10,7 +10,7 @@ import re
 from minseg_tui.ui.screens.help import HelpScreen, KeyList
 from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
 from minseg_tui.ui.widgets.prose import Prose
-from tests.ui.helpers import settle, start_with_a_run
+from tests.ui.helpers import goto, settle, start, start_with_a_run
 
 BARE_STEP = re.compile(r"(?<!voltage )(?<!lab )\bstep\b", re.IGNORECASE)
 """'step' that is neither a lab step nor a voltage step ('steps-1', a run's name, is not)."""
@@ -91,3 +91,17 @@ async def test_the_model_checks_line_names_f9_as_the_footer_does(quiet):
         await settle(pilot)
         first = app.screen.query_one("#check-story", Prose).text.splitlines()[0]
         assert f"f9 {zoom} (the close-up the words speak of)" in first, first
+
+
+async def test_the_live_plots_line_names_f3_f2_and_f4_as_the_footer_does(quiet):
+    """Task 4's line under the live plot said 'F3 next voltage · F2 stop · F4 capture'
+    where the footer says 'f3 Set V', 'f2 STOP' and 'f4 Capture'."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task4")
+        steady = app.screen.query_one("#steady", Prose)
+        await settle(pilot, lambda: "requested" in steady.text)
+        words = _footer_words(app)
+        for key in ("f3", "f2", "f4"):
+            assert f"{key} {words[key]}" in steady.text, (key, words[key], steady.text)

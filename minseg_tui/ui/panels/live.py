@@ -14,7 +14,7 @@ from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import MISSING, format_fixed, format_spread
 from minseg_tui.ui.device import DeviceInfo
-from minseg_tui.ui.keys import PanelKeys
+from minseg_tui.ui.keys import PanelKeys, key_hint
 from minseg_tui.ui.live import LiveBuffer, at_level
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
 from minseg_tui.ui.panels.meter import MODES as METER_MODES
@@ -97,7 +97,7 @@ class LivePanel(Vertical, PanelKeys):
         if self._steady is None:
             return
         level = "0 V (motor off)" if self.requested is None else f"{self.requested:g} V"
-        keys = "F3 next voltage · F2 stop"
+        keys = f"{key_hint('set_voltage')} · {key_hint('stop_motor')}"
         if "capture_omega" in self.step.actions:
             s = views.steady(*at_level(t, count, u, self.requested))
             state = "SETTLED" if s.settled else "not settled"
@@ -109,7 +109,7 @@ class LivePanel(Vertical, PanelKeys):
             note = "" if s.ready else "(window filling)"
             text = (
                 f"steady: {state} · {mean} over {views.CAPTURE_WINDOW:g} s {note}".rstrip()
-                + f"\nrequested {level} · {keys} · F4 capture"
+                + f"\nrequested {level} · {keys} · {key_hint('capture')}"
             )
         else:
             text = f"requested {level} · {keys}"
