@@ -7,11 +7,13 @@ import asyncio
 import re
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import contextmanager, nullcontext
+from functools import partial
 from inspect import isawaitable
 from typing import Literal
 
 from rich.text import Text
 from textual import events, on
+from textual.actions import SkipAction
 from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical, VerticalScroll
@@ -157,6 +159,9 @@ class AnswerList(Widget, can_focus=False):
         self._chosen = chosen
         self.refresh()
         return True
+
+    KEYS: tuple[str, ...] = ("down", "right", "up", "left", "home", "end", "space", "enter")
+    """The keys :meth:`press` takes."""
 
     def press(self, key: str) -> bool:
         """Key ``key`` acts on the list (see the class); False: not one of its keys."""
@@ -472,6 +477,15 @@ class EntryBox(Widget, can_focus=False):
             self.replace("", self._anchor, self._cursor)
         elif start != end:
             self.replace("", start, end)
+
+    KEYS: tuple[str, ...] = (
+        "left", "right", "ctrl+left", "ctrl+right", "home", "ctrl+a", "end", "ctrl+e",
+        "shift+left", "shift+right", "ctrl+shift+left", "ctrl+shift+right", "shift+home",
+        "shift+end", "ctrl+shift+a", "backspace", "delete", "ctrl+d", "ctrl+w", "ctrl+u",
+        "super+backspace", "ctrl+backspace", "alt+backspace", "ctrl+k", "ctrl+x", "ctrl+c",
+        "super+c", "ctrl+v",
+    )  # fmt: skip
+    """The editing keys :meth:`edit` takes."""
 
     def edit(self, key: str) -> bool:
         """An editing key (Backspace, Ctrl+U, End, ...: see the class; not Enter) acts here;
@@ -819,6 +833,12 @@ Store = Callable[[FieldRow, str, bool], EntryView]
 returns its verdict, at once (the lab screen's)."""
 
 
+ROW_KEYS: tuple[str, ...] = tuple(
+    dict.fromkeys(k for k in (*EntryBox.KEYS, *AnswerList.KEYS) if k != "enter")
+)
+"""The keys that act on the form's current row: a text box's editing keys, a list's keys."""
+
+
 class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     """A step's text, its panel and its entry rows, as one focus target that owns the keys
     typed into the rows. It outlives the step (:meth:`~minseg_tui.ui.screens.lab.StepPane.show`
@@ -830,13 +850,15 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     Tab and Shift+Tab move between the rows and the step's other focusable widgets. The rows'
     boxes and lists never take the focus.
 
-    These keys are the form's own, handled in its key handler as Input handles the
-    characters typed into it: Textual runs a widget's bindings only once its key has bubbled
-    up to the app, behind the keys typed after it, which the widget has handled by then.
-    Any other key goes on up to the app, which runs its binding as Textual does; the keys
+    These keys are the form's bindings, bound with priority so that Textual runs them as the
+    app reads the key; each action first waits until the form has handled the keys ahead of
+    it (:func:`after_typed_keys`), and one that does nothing then is skipped, so Textual
+    hands its key on to the widget focused now. The characters typed go into the rows from
+    the form's key handler, as Textual's Input takes them in its own. Any other key goes on
+    up to the app, which runs its binding as Textual does; the app's and the screen's keys
     that must act between the keys typed before and after them (PgDn, the F-keys, Ctrl+P)
-    are bound with priority, and their actions wait until the form has handled the keys
-    ahead of them (:func:`after_typed_keys`) and store what stands in the rows first.
+    are bound with priority too, and their actions wait the same way and store what stands
+    in the rows first.
 
     ``current`` is the row the keys go to (None: the step itself, at its top; the arrows
     scroll it). Keys a focused widget of the step (a plot, a table) passes up, and
@@ -848,6 +870,14 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         Binding("down", "scroll_down", show=False),
         Binding("home", "scroll_home", show=False),
         Binding("end", "scroll_end", show=False),
+        *(Binding(key, f"row_key('{key}')", show=False, priority=True) for key in ROW_KEYS),
+        Binding("enter", "enter", show=False, priority=True),
+        *(
+            Binding(key, f"bring_back('{how}')", show=False, priority=True)
+            for key, how in RESTORING_KEYS.items()
+        ),
+        Binding("tab", "tab(1)", show=False, priority=True),
+        Binding("shift+tab", "tab(-1)", show=False, priority=True),
     ]
 
     current: reactive[FieldRow | None] = reactive(None, init=False)
@@ -1047,74 +1077,151 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         self.move_focus(delta, None)
 
     # -- keys ------------------------------------------------------------------------------
-    def on_key(self, event: events.Key) -> None:
-        """Every key handed to the form, in the order typed (see the class)."""
-        # The form's key handler, as Textual's Input takes its characters in its own
-        # (textual/widgets/_input.py:743-754). The editing keys, Enter and Tab are here too,
-        # not bindings: Textual runs a non-priority binding only once its key has bubbled up
-        # to the app (textual/app.py:4341-4343), behind the keys typed after it, which the
-        # form has handled by then (pinned by test_bursts's
-        # test_editing_keys_in_a_burst_act_before_the_text_typed_after_them).
-        self.type_key(event)
+    # The keys that act on the rows (the editing keys, Enter, Escape, Ctrl+Z/Y, Tab) are the
+    # form's bindings, bound with priority: Textual runs a widget's other bindings only once
+    # its key has bubbled up to the app (textual/app.py:4341-4343), behind the keys typed
+    # after it, which the form has handled by then (pinned by test_bursts's
+    # test_editing_keys_in_a_burst_act_before_the_text_typed_after_them). The app runs a
+    # priority binding as it reads the key (textual/app.py:4136), so each action first
+    # waits until the keys typed before it are handled (after_typed_keys); a key that does
+    # nothing in the row then (the focus left the form, the row is a list, ...) is skipped
+    # (SkipAction), and Textual hands it on to the widget focused now. The characters stay
+    # in the form's key handler, as Textual's Input takes its characters in its own
+    # (textual/widgets/_input.py:743-754).
 
-    def type_key(self, event: events.Key) -> None:
-        """A key for the form, handled now: one the app handed the form, or one the list of
-        steps read after a key ahead of it moved the focus into the step (it calls this, a
-        plain call in its own queue, where the keys typed after it wait). A key that is not
-        the form's goes on up to the app, which runs its binding (Textual's own way, from
-        the widget focused then); the keys bound to act in the order typed (PgDn, the
-        F-keys, Ctrl+P) never come here: the app runs them as it reads them, once the keys
-        ahead of them are handled (:func:`after_typed_keys`)."""
+    async def _in_turn(self, act: Callable[[], bool]) -> None:
+        """Run ``act`` once the keys typed before its key are handled; it returns False
+        where the key does nothing: Textual then hands it on (SkipAction)."""
+        if not await after_typed_keys(self.app, lambda: self._on_form() and act()):
+            raise SkipAction()
+
+    def _on_form(self) -> bool:
+        """The keys go to the form: its screen is shown and it has the focus."""
+        if self.app.screen is not self.screen or self.screen.focused is not self:
+            return False
+        self._taking = False
+        return True
+
+    async def action_row_key(self, key: str) -> None:
+        """An editing key of the current text box, or a key of its list of answers."""
+        await self._in_turn(partial(self._row_key, key))
+
+    async def action_enter(self) -> None:
+        """Enter: the current entry to the lab, on to the next if it was accepted; on a list
+        of answers, picks the one under the cursor."""
+        await self._in_turn(self._enter)
+
+    async def action_bring_back(self, how: Restoring) -> None:
+        """Escape, Ctrl+Z, Ctrl+Y: what the lab holds for the current entry, or held
+        before."""
+        await self._in_turn(partial(self._bring_back, how))
+
+    async def action_tab(self, delta: int) -> None:
+        """Tab (``delta`` 1) or Shift+Tab (-1): the next target of the step, from the current
+        row or from the widget of the step that has the focus (a plot, a table)."""
+        if not await after_typed_keys(self.app, partial(self._tab, delta)):
+            raise SkipAction()
+
+    def _row_key(self, key: str) -> bool:
+        row = self.typing
+        if row is not None:
+            return not row.input.disabled and row.input.edit(key)
+        answers = self.answering
+        return answers is not None and answers.press(key)
+
+    def _enter(self) -> bool:
+        row = self.typing
+        if row is None:
+            return self._row_key("enter")
+        text = row.submitted()
+        if text is not None:
+            result = self._store(row, text, True)
+            if result.ok:  # accepted: on to the next entry at once
+                self.focus_after(row.field.key)
+        return True
+
+    def _bring_back(self, how: Restoring) -> bool:
+        row = self.typing
+        if row is None:
+            return False
+        if how == "held":
+            row.restore()
+        self._restore(row, how)
+        return True
+
+    def _tab(self, delta: int) -> bool:
         if self.app.screen is not self.screen:
-            return  # handed over before a key ahead of it opened another screen
+            return False
+        focused = self.screen.focused
+        if focused is self:
+            self._taking = False
+            self.move_focus(delta)
+            return True
+        if focused is not None and self in focused.ancestors:
+            self.move_focus(delta, focused)
+            return True
+        return False
+
+    def _act_now(self, key: str) -> bool:
+        """Key ``key``'s binding's work done now (:meth:`type_key`); False: none of the
+        form's, or it does nothing here."""
+        if key in ("tab", "shift+tab"):
+            return self._tab(1 if key == "tab" else -1)
+        if not self._on_form():
+            return False
+        if key == "enter":
+            return self._enter()
+        how = RESTORING_KEYS.get(key)
+        if how is not None:
+            return self._bring_back(how)
+        return key in ROW_KEYS and self._row_key(key)
+
+    def on_key(self, event: events.Key) -> None:
+        """A character typed into the form (see the keys' note above), or a key a focused
+        widget of the step passes up (:meth:`_passed_on`)."""
+        if self.app.screen is not self.screen:
+            return
         focused = self.screen.focused
         if focused is not self:
             self._passed_on(event, focused)
             return
         self._taking = False
-        key = event.key
-        if key in ("tab", "shift+tab"):
+        self._character(event)
+
+    def type_key(self, event: events.Key) -> None:
+        """A key handed over by the list of steps, which read it after a key ahead of it
+        moved the focus into the step (it calls this, a plain call in its own queue, where
+        the keys typed after it wait): the form's binding of it does its work now (the app
+        looked for bindings from the list, not the form), a character goes into the row.
+        A key that is neither goes on up to the app, which runs its binding (Textual's own
+        way, from the widget focused then); the keys bound to act in the order typed (PgDn,
+        the F-keys, Ctrl+P) never come here: the app runs them as it reads them, once the
+        keys ahead of them are handled (:func:`after_typed_keys`)."""
+        if self.app.screen is not self.screen:
+            return  # handed over before a key ahead of it opened another screen
+        if self._act_now(event.key):
             self._own(event)
-            self.move_focus(1 if key == "tab" else -1)
+            return
+        focused = self.screen.focused
+        if focused is not self:
+            self._passed_on(event, focused)
+            return
+        self._character(event)
+
+    def _character(self, event: events.Key) -> None:
+        """A printable key with the form focused: into the current text box, or (on a list
+        of answers, or at the step's top) into the first empty entry."""
+        if not (event.is_printable and event.character):
             return
         row = self.typing
         if row is not None:
-            if self._edit(row, event):
+            if not row.input.disabled:
                 self._own(event)
+                row.input.type_text(event.character)
             return
-        answers = self.answering
-        if answers is not None and answers.press(key):
-            self._own(event)
-            return
-        if event.is_printable and event.character and self.typing_row() is not None:
+        if self.typing_row() is not None:
             self._own(event)
             self.take(event.character)
-
-    def _edit(self, row: FieldRow, event: events.Key) -> bool:
-        """A key typed into ``row``; False: not one the row takes (a binding's)."""
-        key = event.key
-        box = row.input
-        if key == "enter":
-            text = row.submitted()
-            if text is not None:
-                result = self._store(row, text, True)
-                if result.ok:  # accepted: on to the next entry at once
-                    self.focus_after(row.field.key)
-            return True
-        how = RESTORING_KEYS.get(key)
-        if how is not None:  # Escape, Ctrl+Z, Ctrl+Y: what the lab holds, or held before
-            if how == "held":
-                row.restore()
-            self._restore(row, how)
-            return True
-        if box.disabled:
-            return False
-        if box.edit(key):
-            return True
-        if event.is_printable and event.character:
-            box.type_text(event.character)
-            return True
-        return False
 
     def _passed_on(self, event: events.Key, focused: Widget | None) -> None:
         """A key the form did not get as the focused widget: passed up by a widget of the
@@ -1127,10 +1234,6 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         as Textual runs a key's binding. No key is posted again."""
         inside = focused is not None and self in focused.ancestors
         key = event.key
-        if inside and key in ("tab", "shift+tab"):
-            self._own(event)
-            self.move_focus(1 if key == "tab" else -1, focused)
-            return
         if inside and focused is not None and focused.check_consume_key(key, event.character):
             return  # Textual runs its binding once the key has bubbled up to the app
         if event.is_printable and event.character and (event.character != " " or self._taking):
