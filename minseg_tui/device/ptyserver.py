@@ -31,6 +31,7 @@ class PtyServer:
         self.board = board or VirtualBoard()
         self.link_path = link_path
         self.clock = RealTime(self.board.now)
+        self.board.clock = self.clock  # a hand's turn happens now (VirtualBoard.turn_by_hand)
         self.master: int | None = None
         self.slave_name = ""
         self.lost_bytes = 0

@@ -278,6 +278,10 @@ class VirtualBoard:
         self.lock = threading.RLock()
         self.changed = threading.Condition(self.lock)
         self.now = 0.0
+        self.clock: Callable[[], float] | None = None
+        """The real-time clock of whatever runs the board as host time passes (s of board
+        time; set by the ``minseg://`` port and the pty server), None when it runs on its
+        own virtual time: what moves it on only when it is read."""
         self._out = bytearray()
         self._inbuf = bytearray()
         self.lines_out = 0
@@ -438,8 +442,13 @@ class VirtualBoard:
 
     def turn_by_hand(self, revolutions: float) -> None:
         """Turn the wheel by hand by ``revolutions`` (positive: the way a positive voltage
-        turns it), at once; the encoder sees every edge on the way."""
+        turns it), at once; the encoder sees every edge on the way. On a board run in real
+        time, at the present moment: the board is first brought up to its clock, or the
+        samples of the time since it was last read would all be made after the turn (a
+        host that read late counted no turn at all)."""
         with self.lock:
+            if self.clock is not None:
+                self.run_until(self.clock())
             self.plant.theta += 2.0 * math.pi * revolutions
             self._count_edges()
 

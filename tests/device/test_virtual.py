@@ -1,6 +1,7 @@
 """The virtual MinSeg's firmware behaviour, on a virtual clock (deterministic)."""
 
 import math
+import time
 
 import pytest
 
@@ -259,3 +260,41 @@ def test_the_simulated_hand_turns_once_give_or_take_and_is_seeded():
         assert all(0.95 < abs(r) < 1.05 for r in turned)
         assert len({round(abs(r), 6) for r in turned}) == 20  # over or under, never the same
     assert turns[0] == turns[1] and turns[0] != turns[2]
+
+
+def _samples(board):
+    out = board.take_output().decode("ascii", "replace").splitlines()
+    got = []
+    for line in out:
+        try:
+            msg = P.parse(line)
+        except P.ProtocolError:
+            continue
+        if isinstance(msg, P.SampleLine):
+            got.append(msg)
+    return got
+
+
+def test_a_hand_turns_the_wheel_now_even_when_nobody_has_read_the_board_for_a_while():
+    """A board run in real time and not read for a while (a busy host's reader): a hand's
+    turn is at the present moment, so the samples of the time before it keep the count
+    from before. They were made after the turn, all turned already: the TUI's hand check
+    read them as its first samples and counted 0 (test_board_check's palette test, once
+    under load)."""
+    board = VirtualBoard()
+    board.clock = RealTime(board.now)
+    board.run_until(board.clock())
+    time.sleep(0.5)
+    board.run_until(board.clock())
+    before = _samples(board)
+    assert before, "the board streams"
+    count0 = before[-1].count
+    time.sleep(0.15)  # nobody reads: the board's time stands where the last read left it
+    now = board.clock()
+    board.hand_turn()
+    time.sleep(0.06)  # a sample or two after the turn
+    board.run_until(board.clock())
+    after = _samples(board)
+    pre = [s for s in after if s.t_us < (now - 0.03) * 1e6]
+    assert pre and all(s.count == count0 for s in pre)
+    assert abs(after[-1].count - count0) > 600

@@ -50,6 +50,7 @@ class Serial(SerialBase):
 
     board: VirtualBoard
     board_clock: Callable[[], float] | None
+    _clock: RealTime | None = None  # the board's real-time clock; None: virtual time
 
     def open(self) -> None:
         """Open (and reset) the board named by the URL."""
@@ -75,10 +76,14 @@ class Serial(SerialBase):
                 )
             board.attached = True
             self._virtual = clock == "virtual"
-            if not self._virtual:
-                if not isinstance(getattr(board, "clock", None), RealTime):
-                    board.clock = RealTime(board.now)  # type: ignore[attr-defined]
-                board.run_until(board.clock())  # type: ignore[attr-defined]
+            if self._virtual:
+                board.clock = None
+                self._clock = None
+            else:
+                if not isinstance(board.clock, RealTime):
+                    board.clock = RealTime(board.now)
+                self._clock = board.clock
+                board.run_until(self._clock())
             board.reset()
         self.board = board
         self.board_clock = (lambda: board.now) if self._virtual else None
@@ -112,8 +117,8 @@ class Serial(SerialBase):
             raise SerialException("read failed: [Errno 5] Input/output error")
 
     def _sync(self) -> None:
-        if not self._virtual:
-            self.board.run_until(self.board.clock())  # type: ignore[attr-defined]
+        if self._clock is not None:
+            self.board.run_until(self._clock())
 
     @property
     def in_waiting(self) -> int:
@@ -137,14 +142,16 @@ class Serial(SerialBase):
                         break
                     board.run_until(end, stop_on_output=True)
             else:
+                clock = self._clock
+                assert clock is not None  # a real-time port has its clock
                 end = time.monotonic() + timeout
                 while True:
-                    board.run_until(board.clock())  # type: ignore[attr-defined]
+                    board.run_until(clock())
                     out += board.take_output(size - len(out))
                     left = end - time.monotonic()
                     if len(out) >= size or left <= 0 or not board.plugged or not self.is_open:
                         break
-                    wait = min(left, board.next_event() - board.clock())  # type: ignore[attr-defined]
+                    wait = min(left, board.next_event() - clock())
                     board.changed.wait(max(wait, 0.0))
         if not out:
             self._check()
