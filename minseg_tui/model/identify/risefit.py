@@ -615,13 +615,17 @@ def _rows_apart(fit: TimeConstantFit, rise: tuple[float, float, float] | None) -
     T_r, se_r, half_r = rise
     if not abs(T_r - fit.T) > ROWS_APART * max(fit.se, se_r):
         return fit
-    lo, hi = max(T_r - half_r, 0.0), T_r + half_r
-    return replace(
-        fit,
-        ci=(min(fit.ci[0], lo), max(fit.ci[1], hi)),
-        rise_T=T_r,
-        rise_ci=(lo, hi),
-    )
+    ci, own = _holding(fit.ci, T_r, half_r)
+    return replace(fit, ci=ci, rise_T=T_r, rise_ci=own)
+
+
+def _holding(
+    ci: tuple[float, float], T: float, half: float
+) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The interval ``ci`` (s) widened to hold the interval ``T`` +- ``half`` (s, not below
+    0), and that interval itself."""
+    lo, hi = max(T - half, 0.0), T + half
+    return (min(ci[0], lo), max(ci[1], hi)), (lo, hi)
 
 
 PROFILE_CHI2: float = 3.84
@@ -657,14 +661,8 @@ def _shift_free(
     if free is None:
         return fit
     T_f, d_f, half_f, _ = free
-    lo, hi = max(T_f - half_f, 0.0), T_f + half_f
-    return replace(
-        fit,
-        ci=(min(fit.ci[0], lo), max(fit.ci[1], hi)),
-        free_T=T_f,
-        free_ci=(lo, hi),
-        free_shift=d_f,
-    )
+    ci, own = _holding(fit.ci, T_f, half_f)
+    return replace(fit, ci=ci, free_T=T_f, free_ci=own, free_shift=d_f)
 
 
 WIDE_T_FACTORS: tuple[float, ...] = (0.1, 0.2, 0.35, 0.5, 0.7, 1.0, 1.4)
