@@ -36,12 +36,17 @@ async def _help_lines(pilot) -> dict[str, str]:
     return lines
 
 
+async def _footer_on_task12(pilot) -> dict[str, str]:
+    """A new session with a step run, on Task 12 (its first rise): the footer's words."""
+    await start_with_a_run(pilot, "task12")
+    await settle(pilot)
+    return _footer_words(pilot.app)
+
+
 async def test_the_footer_the_plots_line_and_f1_name_alt_arrows_and_f9_alike(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await start_with_a_run(pilot, "task12")
-        await settle(pilot)
-        words = _footer_words(app)
+        words = await _footer_on_task12(pilot)
         rise, zoom = words["alt+→"], words["f9"]  # Task 12 opens on the first rise
         note = app.screen.query_one("#zoom-note", Prose).text
         assert f"alt+←/→ {rise} ·" in note and f"f9 {zoom} (rise 2)" in note, note
@@ -66,9 +71,7 @@ async def test_the_footer_the_plots_line_and_f1_name_alt_arrows_and_f9_alike(qui
 async def test_every_key_the_footer_shows_reads_the_same_in_f1(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await start_with_a_run(pilot, "task12")
-        await settle(pilot)
-        words = _footer_words(app)
+        words = await _footer_on_task12(pilot)
         help_ = await _help_lines(pilot)
         in_help = {"alt+→": "Alt+← →", "^r": "Ctrl+R", "^p": "Ctrl+P", "pgdn": "PgDn/PgUp"}
         for shown, word in words.items():

@@ -100,6 +100,14 @@ def _text(app, selector: str) -> str:
     return " ".join(str(app.screen.query_one(selector).render()).split())
 
 
+async def _task11_with_a_run_alone(pilot) -> None:
+    """A new session, a step run recorded and nothing typed (no u_ss), on Task 11."""
+    await start(pilot)
+    with pilot.app.session as s:
+        record_response_run(s)
+    await goto(pilot, "task11")
+
+
 async def test_task11_with_a_run_and_no_u_ss_asks_for_the_u_ss_alone(quiet):
     """D4 (walk 3 of walk 10): after F5 with the table empty, Task 11's plot said its results
     'need the table of Tasks 4-9 filled' and the lines under it named R (Task 2) and a
@@ -107,10 +115,7 @@ async def test_task11_with_a_run_and_no_u_ss_asks_for_the_u_ss_alone(quiet):
     typed (R and i_ss still empty) they come."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        with app.session as s:
-            record_response_run(s)
-        await goto(pilot, "task11")
+        await _task11_with_a_run_alone(pilot)
         note, lines = _text(app, "#zoom-note"), _text(app, "#results-lines")
         assert note.endswith("no results yet: needs u_ss at the steps' voltage (Task 4)"), note
         assert lines == "no step result yet: needs u_ss at the steps' voltage (Task 4)", lines
@@ -129,10 +134,7 @@ async def test_ctrl_r_with_nothing_computed_records_nothing_and_says_so(quiet):
     what is missing; once u_ss is in, Ctrl+R shows and records them."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        with app.session as s:
-            record_response_run(s)
-        await goto(pilot, "task11")
+        await _task11_with_a_run_alone(pilot)
         said = heard_notifications(app)
         await pilot.press("ctrl+r")
         await settle(pilot)
