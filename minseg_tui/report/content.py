@@ -16,6 +16,7 @@ import numpy as np
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import steps as lab_steps
+from minseg_tui.lab.content.keys import key_name
 from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
@@ -155,8 +156,8 @@ def _board_section(session: Session) -> Section:
     sec = Section("Set-up: the board checks")
     if not got:
         sec.blocks.append(
-            "No board check was made (F10 checks that the count follows the motor; "
-            "Ctrl+P counts one revolution by hand)."
+            f"No board check was made ({key_name('board_check')} checks that the count follows "
+            f"the motor; {key_name('palette')} counts one revolution by hand)."
         )
         return sec
     rows = tuple(

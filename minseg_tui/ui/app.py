@@ -45,6 +45,7 @@ from minseg_tui.device.boardcheck import CHECK_U, NoCountWatch, check_board, cou
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import timeout_message
 from minseg_tui.errors import MinsegError
+from minseg_tui.lab.content.keys import COUNT_BY_HAND, in_palette, key_name
 from minseg_tui.lab.saving.store import SessionInfo, SessionsUnreadable, list_sessions
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
@@ -747,7 +748,7 @@ class LabApp(App[None]):
                 r.ok,
                 r.text,
                 "Counts per revolution",
-                "Ctrl+P → Count one revolution by hand counts again",
+                f"{in_palette(COUNT_BY_HAND)} counts again",
             )
         )
 
@@ -1265,39 +1266,46 @@ class LabApp(App[None]):
         for command in super().get_system_commands(screen):
             if command.title != "Keys":
                 yield command
-        yield SystemCommand("Stop motor", "Motor off now (F2)", self.stop_motor)
+        yield SystemCommand(
+            "Stop motor", f"Motor off now ({key_name('stop_motor')})", self.stop_motor
+        )
         lab = screen if isinstance(screen, LabScreen) else None
         for action, title, help_text in (
             (
                 "set_voltage",
                 "Set step voltage",
-                "Request the next of 2.5/3.5/4.5 V on the board (F3)",
+                "Request the next of 2.5/3.5/4.5 V on the board",
             ),
-            ("capture", "Capture omega_ss", "Mean over the settled window (F4)"),
-            ("run_square_wave", "Run the square wave", "Task 10 on the board, 25 ms (F5)"),
-            ("run_fast", "Run the square wave fast", "Task 10 at 5 ms, board-timed (F6)"),
+            ("capture", "Capture omega_ss", "Mean over the settled window"),
+            ("run_square_wave", "Run the square wave", "Task 10 on the board, 25 ms"),
+            ("run_fast", "Run the square wave fast", "Task 10 at 5 ms, board-timed"),
             (
                 "reveal",
                 "Reveal computed values",
                 "Lab assistant: show this step's values before the group answers; the report "
-                "says so (Ctrl+R)",
+                "says so",
             ),
         ):
             if lab is not None and lab.offers(action):
-                yield SystemCommand(title, help_text, partial(lab.run_panel_key, action))
+                yield SystemCommand(
+                    title,
+                    f"{help_text} ({key_name(action)})",
+                    partial(lab.run_panel_key, action),
+                )
         yield SystemCommand(
             "Board check",
-            "Does the wheel turn when asked, and does the count follow it? (F10)",
+            "Does the wheel turn when asked, and does the count follow it? "
+            f"({key_name('board_check')})",
             self.action_board_check,
         )
         yield SystemCommand(
-            "Count one revolution by hand",
+            COUNT_BY_HAND,
             "Turn the wheel once by hand: 720 counts expected",
             self.action_count_revolution,
         )
         yield SystemCommand(
             "Export report",
-            "Markdown, HTML and CSV into the session folder (F8)",
+            f"Markdown, HTML and CSV into the session folder ({key_name('export')})",
             self.export,
         )
         yield SystemCommand(
@@ -1323,7 +1331,7 @@ class LabApp(App[None]):
                 "Use the virtual MinSeg instead of the board",
                 self.switch_to_virtual,
             )
-        yield SystemCommand("Keys", "The help screen (F1)", self._help)
+        yield SystemCommand("Keys", f"The help screen ({key_name('help')})", self._help)
 
     def on_unmount(self) -> None:
         self._stop.set()

@@ -12,6 +12,8 @@ from typing import ClassVar
 from textual.binding import Binding
 from textual.widget import Widget
 
+from minseg_tui.lab.content.keys import KEY_NAMES
+
 
 @dataclass(frozen=True)
 class Key:
@@ -48,9 +50,9 @@ class Key:
 
 
 KEYMAP: tuple[Key, ...] = (
-    Key("F1", "this list of keys", "f1", "help", "Help", priority=True),
+    Key(KEY_NAMES["help"], "this list of keys", "f1", "help", "Help", priority=True),
     Key(
-        "F2",
+        KEY_NAMES["stop_motor"],
         "the motor stops (works everywhere, always)",
         "f2",
         "stop_motor",
@@ -58,7 +60,7 @@ KEYMAP: tuple[Key, ...] = (
         priority=True,
     ),
     Key(
-        "F3",
+        KEY_NAMES["set_voltage"],
         "the next voltage, 2.5/3.5/4.5 V (Task 4/5)",
         "f3",
         "set_voltage",
@@ -66,7 +68,7 @@ KEYMAP: tuple[Key, ...] = (
         panel="setting a voltage",
     ),
     Key(
-        "F4",
+        KEY_NAMES["capture"],
         "omega_ss over the settled window (Task 4/5)",
         "f4",
         "capture",
@@ -74,7 +76,7 @@ KEYMAP: tuple[Key, ...] = (
         panel="capturing omega_ss",
     ),
     Key(
-        "F5",
+        KEY_NAMES["run_square_wave"],
         "the square wave on the board (Task 10)",
         "f5",
         "run_square_wave",
@@ -82,7 +84,7 @@ KEYMAP: tuple[Key, ...] = (
         panel="the step experiment",
     ),
     Key(
-        "F6",
+        KEY_NAMES["run_fast"],
         "the square wave with 5 ms board-timed samples",
         "f6",
         "run_fast",
@@ -90,7 +92,7 @@ KEYMAP: tuple[Key, ...] = (
         panel="the fast step experiment",
     ),
     Key(
-        "F7",
+        KEY_NAMES["formula"],
         "how the table cell is worked out",
         "f7",
         "formula",
@@ -98,10 +100,15 @@ KEYMAP: tuple[Key, ...] = (
         panel="a table formula",
     ),
     Key(
-        "F8", "the report as Markdown, HTML and CSV files", "f8", "export", "Export", priority=True
+        KEY_NAMES["export"],
+        "the report as Markdown, HTML and CSV files",
+        "f8",
+        "export",
+        "Export",
+        priority=True,
     ),
     Key(
-        "F9",
+        KEY_NAMES["zoom_next"],
         "the next rise, after the last the whole log (Tasks 11-15); the close-up or the "
         "whole log (model check)",
         "f9",
@@ -110,7 +117,7 @@ KEYMAP: tuple[Key, ...] = (
         panel="zooming the run log",
     ),
     Key(
-        "F10",
+        KEY_NAMES["board_check"],
         "does the wheel turn, does the count follow?",
         "f10",
         "board_check",
@@ -120,7 +127,7 @@ KEYMAP: tuple[Key, ...] = (
         footer_on=("task1",),
     ),
     Key(
-        "Ctrl+R",
+        KEY_NAMES["reveal"],
         "a lab assistant shows the computed values before the group answers",
         "ctrl+r",
         "reveal",
@@ -155,12 +162,19 @@ KEYMAP: tuple[Key, ...] = (
     Key("Ctrl+O", "the whole of the step's What to do, over its top (again: folds it)"),
     Key("Tab", "next field; Enter stores and goes on to the next field"),
     Key("Esc", "in a field: back to the answer stored, dropping what was typed over it"),
-    Key("Ctrl+Z", "in a field: back to the answer stored before (again: further back)"),
-    Key("Ctrl+Y", "in a field: forward again to the answer Ctrl+Z took back"),
+    Key(KEY_NAMES["undo"], "in a field: back to the answer stored before (again: further back)"),
+    Key(
+        KEY_NAMES["redo"],
+        f"in a field: forward again to the answer {KEY_NAMES['undo']} took back",
+    ),
     Key("Space", "tick an answer (summary questions)"),
     # Textual's own binding and footer word ('palette'), written here as the footer shows it
-    Key("Ctrl+P", "the command palette: go to a step, pick the run, stop...", label="palette"),
-    Key("Ctrl+Q", "quit (the session is already saved)"),
+    Key(
+        KEY_NAMES["palette"],
+        "the command palette: go to a step, pick the run, stop...",
+        label="palette",
+    ),
+    Key(KEY_NAMES["quit"], "quit (the session is already saved)"),
 )
 """Every key F1 lists, in its order, with the bindings the app makes for them."""
 

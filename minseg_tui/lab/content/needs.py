@@ -13,6 +13,8 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from minseg_tui.lab.content.keys import USE_RUN, key_name
+
 
 @dataclass(frozen=True)
 class Input:
@@ -32,7 +34,8 @@ INPUTS: dict[str, Input] = {
     "u_ss@steps": Input("u_ss at the steps' voltage", "Task 4"),
     "run.complete": Input(
         "a complete step run",
-        "Task 10; every run recorded was interrupted: Ctrl+P 'Use run' uses one all the same",
+        f"Task 10; every run recorded was interrupted: {key_name('palette')} '{USE_RUN}' uses "
+        "one all the same",
     ),
     "own.omega_step": Input("{whose} omega_ss in the steps", "Task 11"),
     "own.K": Input("{whose} K", "Task 11"),

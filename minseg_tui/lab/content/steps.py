@@ -26,6 +26,7 @@ from typing import Literal
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.expr import parse_formula
+from minseg_tui.lab.content.keys import COUNT_BY_HAND, in_palette, key_name
 from minseg_tui.quantities import Plausible
 
 FieldKind = Literal["quantity", "formula", "choice", "text"]
@@ -157,7 +158,7 @@ class Step:
 
 
 BOARD_CHECKS: dict[str, str] = {
-    "board_check": "board check (F10): does the count follow the motor",
+    "board_check": f"board check ({key_name('board_check')}): does the count follow the motor",
     "revolution": "one revolution by hand: 720 counts",
     "speed_watched": "live speed watched while the wheel turned",
 }
@@ -543,7 +544,8 @@ def _omega_ss(level: float) -> Field:
             Plausible(
                 0.5,
                 15.0,
-                low="the wheel hardly turns (or turns backwards): F10 runs the board check, which says what is wrong",
+                low=f"the wheel hardly turns (or turns backwards): {key_name('board_check')} runs the board "
+                "check, which says what is wrong",
                 high="faster than this motor goes (about 7 rad/s at 4.5 V): typed in rpm? Write 'rpm' after "
                 "the number. Else check the counts-to-radians scaling",
             ),
@@ -578,9 +580,10 @@ _LAB: tuple[Step, ...] = (
         "Have a board (or the virtual MinSeg) talking to this program.",
         "Plug the MinSeg in by USB before starting this program: it finds the board by itself, "
         "and without one it runs the virtual MinSeg to practise on (the top line says which). "
-        "The program already runs the board's code: there is nothing to build or download. Then press F10: "
+        "The program already runs the board's code: there is nothing to build or download. "
+        f"Then press {key_name('board_check')}: "
         "the board check turns the wheel for half a second and says whether the count follows, "
-        "and what to look at if it does not. Ctrl+P → Count one revolution by hand checks the "
+        f"and what to look at if it does not. {in_palette(COUNT_BY_HAND)} checks the "
         "encoder's 720 counts.",
         actions=("connect",),
         done_when=("board_check",),

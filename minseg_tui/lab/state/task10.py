@@ -32,6 +32,7 @@ from minseg_tui.device.link import LinkEvent
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import PRE_ROLL, StandStill
 from minseg_tui.errors import DeviceError, MinsegError
+from minseg_tui.lab.content.keys import key_name
 from minseg_tui.lab.content.steps import RunPlan
 from minseg_tui.lab.content.steps import step as lab_step
 from minseg_tui.lab.saving.runs import Recorder, RunInfo
@@ -159,7 +160,8 @@ class ActiveRun:
         return RunProgress(
             fraction,
             f"recording {self.name}: {self.samples} samples, "
-            f"{format_fixed(self.elapsed, 1)} of {format_fixed(duration, 1, 's')} · F2 stops",
+            f"{format_fixed(self.elapsed, 1)} of {format_fixed(duration, 1, 's')} · "
+            f"{key_name('stop_motor')} stops",
             kind=self.kind,
             t0=None if self._first_us is None else self._first_us / 1e6,
             duration=duration,
@@ -250,7 +252,8 @@ class Task10:
             if self.phase == "waiting":
                 return RunProgress(
                     0.0,
-                    "motor off; the run starts once the wheel stands · F2 cancels",
+                    "motor off; the run starts once the wheel stands · "
+                    f"{key_name('stop_motor')} cancels",
                     recording=False,
                     waiting=True,
                     kind=self.kind,

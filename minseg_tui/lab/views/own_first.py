@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from datetime import datetime, timedelta
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.content.steps import STEPS, RunPlan
@@ -512,8 +513,8 @@ def run_changed(session: Session, before: str | None) -> str:
     return (
         f"Tasks 11-15 now use run {run.name}, not {before}: your answers ("
         + ", ".join(answered)
-        + f") are judged against {run.name} now; Ctrl+P 'Use run {before}' goes back to the "
-        "run in use when you gave them"
+        + f") are judged against {run.name} now; {key_name('palette')} '{USE_RUN} {before}' goes "
+        "back to the run in use when you gave them"
     )
 
 

@@ -24,6 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui import signals
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import needs as lab_needs
+from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.steps import FIELDS, STEPS, step
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import RESPONSE_KINDS
@@ -218,7 +219,7 @@ def judged_again(session: Session, key: str, whose: str = "you", back: bool = Tr
         return ""
     said = f"judged again, against run {run.name}: {whose} gave it while run {e.run} was in use"
     if back and any(r.name == e.run for r in session.runs):
-        said += f"; Ctrl+P 'Use run {e.run}' judges it there"
+        said += f"; {key_name('palette')} '{USE_RUN} {e.run}' judges it there"
     return said
 
 
@@ -393,7 +394,7 @@ def capture_live(session: Session, level: float, t: ArrayLike, count: ArrayLike)
     return _verdict(e, "")
 
 
-REVEAL_KEY = "Ctrl+R"
+REVEAL_KEY = key_name("reveal")
 """The key a lab assistant presses to show a step's computed values before the group answers."""
 
 

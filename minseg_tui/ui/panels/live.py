@@ -9,6 +9,7 @@ from textual.containers import Horizontal, Vertical
 from textual.reactive import reactive
 from textual.widget import Widget
 
+from minseg_tui.lab.content.keys import key_name
 from minseg_tui.lab.content.steps import LEVELS, Step
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
@@ -144,7 +145,7 @@ class LivePanel(Vertical, PanelKeys):
             self.notify("capturing omega_ss is part of Task 4")
             return
         if self.requested is None:
-            self.notify("set a voltage first (F3)", severity="warning")
+            self.notify(f"set a voltage first ({key_name('set_voltage')})", severity="warning")
             return
         request = CaptureRequested(self.requested)
         if self.screen.post_message(request):

@@ -30,6 +30,7 @@ from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
 from minseg_tui.errors import MinsegError
+from minseg_tui.lab.content.keys import USE_RUN
 from minseg_tui.lab.content.steps import STEPS, Step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import RunProgress
@@ -526,7 +527,7 @@ class StepCommands(Provider):
             [(f"Go to: {s.title}", partial(go, s.id), "move to this step") for s in STEPS]
             + [
                 (
-                    f"Use run {name}{why} for Tasks 11-15",
+                    f"{USE_RUN} {name}{why} for Tasks 11-15",
                     partial(use, name),
                     "the run the results and the model check use",
                 )
