@@ -5,7 +5,7 @@ place, and says where it stands:
 
 - number formats: format specs in f-strings (``{x:.3g}``, ``{x:.1f}``, ``{x:g}``...) outside
   quantities.py (an SVG's coordinates left out), the one module that writes numbers for people; split into those in modules
-  of words people read (the UI, the report, the CLI, lab/views, identify's observations)
+  of words people read (the UI, the report, the CLI, lab/views, identify's sentences)
   and the rest (messages of refusals, files, the board's protocol, the model check);
 - formatting helpers: module-level ``_num``/``_fmt``/``_g``-like wrappers around quantities;
 - the places that spell how u_ss was found (a table with an ``"interpolated"`` entry, or the
@@ -35,7 +35,7 @@ from tests.prose import prose  # noqa: E402
 SPEC = re.compile(r"\{[^{}]*?:[+ ]?\d*(?:\.\d+)?[gfe%]\}")
 """A number's format spec inside an f-string: {x:.3g}, {x:+.1f}, {x:g}, {x:.0f}."""
 
-PEOPLE = ("ui/", "report/", "cli/", "lab/views/", "model/identify/observations.py")
+PEOPLE = ("ui/", "report/", "cli/", "lab/views/", "lab/content/identify_says.py")
 """Modules whose text is the words a student reads (screens, report, headless output)."""
 
 HELPER = re.compile(r"^(?:def (_num|_fmt|_q|_g|_v|_w|_s|_read)\(|(_g|_fmt|_num) = format)", re.M)

@@ -9,6 +9,7 @@ import textwrap
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.identify_says import sentence
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import U_TASK15, Identification, identify, u_ss_words
 from minseg_tui.model.identify.risefit import RISE_SPAN
@@ -194,7 +195,7 @@ def render(result: Identification) -> str:
         ]
     out += ["", "What the numbers show:"]
     if result.observations:
-        out += [f"- {f.message}" for f in result.observations]
+        out += [f"- {sentence(f)}" for f in result.observations]
     else:
         out.append(
             "- nothing unusual: the rows agree and the step fits the model."

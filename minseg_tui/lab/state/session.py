@@ -52,6 +52,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content import answers
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.expr import Formula
+from minseg_tui.lab.content.identify_says import sentence
 from minseg_tui.lab.content.steps import (
     FIELDS,
     LEVELS,
@@ -965,7 +966,7 @@ class Session:
             res = self.results()
             if res.identification:
                 out += [
-                    Notice(f.code, self._u_ss_said(f.code, f.message))
+                    Notice(f.code, self._u_ss_said(f.code, sentence(f)))
                     for f in res.identification.observations
                 ]
         return out
