@@ -9,7 +9,7 @@ import textwrap
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.identify_says import sentence
+from minseg_tui.lab.content.identify_says import as_json, sentence, t63_note
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import U_TASK15, Identification, identify, u_ss_words
 from minseg_tui.model.identify.risefit import RISE_SPAN
@@ -75,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
             f"expected a run log whose rises can be fitted; the fit failed ({exc})",
         ) from None
     if args.json:
-        print_json(result.to_json())
+        print_json(as_json(result))
     else:
         sys.stdout.write(render(result))
     return 0
@@ -187,7 +187,7 @@ def render(result: Identification) -> str:
                 )
                 + ")"
             ),
-            *(_wrap(s.T_63_note) if s.T_63_note else []),
+            *(_wrap(t63_note(s.T_63_note)) if s.T_63_note else []),
             f"J = T (R f + k_v k_a) / R = {format_number(s.J)} kg m^2 (Task 13)",
             "",
             f"Model (Task 14): {s.model_equation(format_number, 'w')}",

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.identify_says import sentence
+from minseg_tui.lab.content.identify_says import as_json, sentence
 from minseg_tui.model.identify import U_SS_HOW, Reading, identify, steady_state, u_ss_at, u_ss_words
 from minseg_tui.model.identify.steady import table_of
 from minseg_tui.model.motor import MotorParams
@@ -251,7 +251,7 @@ def test_log_with_only_a_falling_step_is_refused():
 
 
 def test_json_shape(linear_result):
-    j = linear_result.to_json()
+    j = as_json(linear_result)
     assert list(j) == [
         *("R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"),
         "omega_at_5V_with_friction",
@@ -283,7 +283,7 @@ def test_json_shape(linear_result):
     assert list(j["model"]) == ["T", "K", "dead_time", "u_c", "K_above_u_c"]
     assert j["rows"][0]["i_ss"] == pytest.approx(linear_table(MOTOR)[0].i_ss)  # mA as entered
     assert len(j["step"]["T_ci"]) == 2
-    assert list(identify(TABLE, R).to_json()) == ["R", "rows", "k_v", "k_a", "f"]
+    assert list(as_json(identify(TABLE, R))) == ["R", "rows", "k_v", "k_a", "f"]
 
 
 @pytest.mark.parametrize(

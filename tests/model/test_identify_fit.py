@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
+from minseg_tui.lab.content.identify_says import t63_note
 from minseg_tui.model.identify import RISES, WHOLE_LOG, identify
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.risefit import board_grid
@@ -103,7 +104,7 @@ def test_63_percent_reading_is_explained_by_the_sampling():
     assert s.T_63 - s.T == pytest.approx(0.0125, abs=0.006)
     # read on the fitted model sampled like the log, the reading is the same within noise
     assert s.T_63_model == pytest.approx(s.T_63, abs=0.004)
-    note = s.T_63_note
+    note = t63_note(s.T_63_note)
     # both T in ms with the same digits as everywhere else (quantities.format_constant)
     assert format_constant(s.T_63, "s") in note and format_constant(s.T, "s") in note
     assert f"{abs(s.T_63 - s.T) / s.T * 100:.1f} %" in note

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli.identify import render
-from minseg_tui.lab.content.identify_says import sentence
+from minseg_tui.lab.content.identify_says import as_json, sentence
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.identify import identify
 from minseg_tui.model.runlog import RunLog
@@ -46,7 +46,7 @@ def test_a_wheel_that_stands_after_the_step_gets_its_dead_time_though_a_tail_hid
     assert "shift_on_bound" not in [o.code for o in r.observations]
     words = " ".join(render(r).split())
     assert "u_A(t - 0.0" in words and "earlier than the steps" not in words
-    assert math.isclose(r.to_json()["step"]["dead_time"], s.dead_time)
+    assert math.isclose(as_json(r)["step"]["dead_time"], s.dead_time)
 
 
 @pytest.mark.parametrize("seed", [1, 3])
@@ -101,7 +101,7 @@ def test_T_s_interval_holds_the_start_the_counts_cannot_pin():
     said = [sentence(o) for o in r.observations if o.code == "shift_on_bound"]
     assert len(said) == 1 and "With the shift free up to where the wheel is first seen" in said[0]
     assert "so the 95 % interval of T holds both fits" in said[0]
-    j = r.to_json()["step"]["T_shift_free"]
+    j = as_json(r)["step"]["T_shift_free"]
     assert j == {"T": s.fit.free_T, "T_ci": list(s.fit.free_ci), "shift": s.fit.free_shift}
 
 
@@ -130,7 +130,7 @@ def test_an_s_shaped_start_does_not_widen_T_for_a_start_the_samples_show():
     r = identify(table(72.0), 5.0, log)
     s = r.step
     assert s is not None and s.fit.shift_on_bound and s.fit.moved_early is not None
-    assert s.fit.free_T is None and r.to_json()["step"]["T_shift_free"] is None
+    assert s.fit.free_T is None and as_json(r)["step"]["T_shift_free"] is None
     said = " ".join(sentence(o) for o in r.observations)
     assert "the wheel already moves before it would end" in said
     assert "the samples do not pin where" not in said

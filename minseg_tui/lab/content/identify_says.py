@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from functools import singledispatch
 
+from minseg_tui.model.identify.identification import Identification, RestWhy, T63Note
 from minseg_tui.model.identify.observations import (
     CurrentHigh,
     CurrentInAmperes,
@@ -457,3 +458,125 @@ def _(o: TNotDetermined) -> str:
         f"log; {format_constant(o.T, 's')} is only the best fit. Longer steps, more of them, or a "
         "faster sampling would tell it."
     )
+
+
+def t63_note(n: T63Note) -> str:
+    """How far the 63 % reading is from the least-squares T, and why, in sentences (the CLI's
+    text and the ``T_63_note`` of its JSON)."""
+    T_63, T, dead_time = n.T_63, n.T, n.dead_time
+    apart = T_63 - T
+    side = "longer" if apart > 0 else "shorter"
+    out = (
+        f"The 63 % reading ({format_constant(T_63, 's')}) is {format_constant(abs(apart), 's')} "
+        f"({abs(apart) / T * 100:.1f} %) {side} than the least-squares T ({format_constant(T, 's')})."
+    )
+    if n.model is None:
+        return out
+    sampled = n.model - T - dead_time
+    delay = (
+        f"the dead time moves the reading by {dead_time * 1e3:+.1f} ms and the sampling by "
+        if dead_time > 0
+        else "the sampling and the steps' time shift, held at its bound, move the reading by "
+        if n.misfit
+        else "the sampling alone moves the reading by "
+    )
+    out += (
+        f" Read the same way on the fitted model sampled every {n.ts * 1e3:.3g} ms like this log, it gives "
+        f"{format_constant(n.model, 's')}: {delay}{sampled * 1e3:+.1f} ms "
+        "(the logged speed is the mean over each sample interval, half a sample late, and the reading "
+        "joins the samples by straight lines)"
+    )
+    rest = T_63 - n.model
+    noise = n.noise
+    if n.rest is RestWhy.NOISE and noise is not None:
+        out += (
+            f", and {rest * 1e3:+.1f} ms is the noise of reading single samples: the speed "
+            f"scatters {format_number(noise[0], 3)} rad/s from sample to sample, which moves "
+            f"where it first crosses 63 % by about {noise[1] * 1e3:.3g} ms."
+        )
+    elif n.rest is RestWhy.SHAPE_MISFIT:
+        out += (
+            f", and {rest * 1e3:+.1f} ms is the shape of the rise, which one time constant does "
+            "not follow (see the time shift below), with the noise of reading single samples."
+        )
+    elif n.rest is RestWhy.SHAPE and noise is not None:
+        out += (
+            f", and {rest * 1e3:+.1f} ms is the shape of the rise, which one time constant does "
+            f"not follow: the speed scatters {format_number(noise[0], 3)} rad/s from sample to "
+            f"sample, which moves where it first crosses 63 % by only about "
+            f"{noise[1] * 1e3:.3g} ms."
+        )
+    elif n.rest in (RestWhy.STALL, RestWhy.SINGLE):
+        why = (
+            "reading across a logging stall's gap and"
+            if n.rest is RestWhy.STALL
+            else "the noise of"
+        )
+        out += f", and {rest * 1e3:+.1f} ms is {why} reading single samples."
+    else:
+        out += ", which is the whole difference."
+    return out + " The least-squares fit models the sampling, so its T is the one the model uses."
+
+
+def as_json(result: Identification) -> dict[str, object]:
+    """``minseg-tui identify --json``'s object (SI units, i_ss in mA as entered), its
+    ``T_63_note`` in words (:func:`t63_note`)."""
+    out: dict[str, object] = {
+        "R": result.R,
+        "rows": [
+            {
+                "u_req": r.reading.u_req,
+                "u_ss": r.reading.u_ss,
+                "omega_ss": r.reading.omega_ss,
+                "i_ss": r.reading.i_ss,
+                "k_v": r.k_v,
+                "f": r.f,
+            }
+            for r in result.rows
+        ],
+        "k_v": result.k_v,
+        "k_a": result.k_a,
+        "f": result.f,
+    }
+    if result.step is not None:
+        s = result.step
+        out["step"] = {
+            "K": s.K,
+            "T": s.T,
+            "T_63": s.T_63,
+            "T_ci": [s.T_ci[0], s.T_ci[1]],
+            "J": s.J,
+            "omega_ss": s.omega_ss,
+            "K_ci": [s.K_ci[0], s.K_ci[1]],
+            "T_63_model": s.T_63_model,
+            "T_63_note": t63_note(s.T_63_note) if s.T_63_note is not None else None,
+            "method": s.fit.method,
+            "shift": s.fit.shift,
+            "u_c": s.fit.u_c,
+            "dead_time": s.dead_time,
+            "T_determined": s.T_determined,
+            "T_on_bound": s.fit.T_on_bound,
+            "shift_on_bound": s.fit.shift_on_bound,
+            "glitch_rows": s.glitch_rows,
+            "left_out_rows": [r + s.glitch_rows for r in s.fit.left_out],
+            "T_rise_rows": None
+            if s.fit.rise_T is None or s.fit.rise_ci is None
+            else {"T": s.fit.rise_T, "T_ci": [s.fit.rise_ci[0], s.fit.rise_ci[1]]},
+            "T_shift_free": None
+            if s.fit.free_T is None or s.fit.free_ci is None
+            else {
+                "T": s.fit.free_T,
+                "T_ci": [s.fit.free_ci[0], s.fit.free_ci[1]],
+                "shift": s.fit.free_shift,
+            },
+        }
+        out["model"] = {
+            "T": s.T,
+            "K": s.K,
+            "dead_time": s.dead_time,
+            "u_c": s.u_c,
+            "K_above_u_c": s.K_above_u_c,
+        }
+        out["omega_at_5V"] = result.omega_at_5V
+        out["omega_at_5V_with_friction"] = result.omega_at_5V_with_friction
+    return out
