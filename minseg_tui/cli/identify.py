@@ -9,7 +9,13 @@ import textwrap
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.identify_says import as_json, sentence, t63_note
+from minseg_tui.lab.content.identify_says import (
+    as_json,
+    fit_why,
+    sentence,
+    t63_note,
+    time_from,
+)
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import U_TASK15, Identification, identify, u_ss_words
 from minseg_tui.model.identify.risefit import RISE_SPAN
@@ -158,7 +164,7 @@ def render(result: Identification) -> str:
             )
         out += [
             "",
-            f"Run log: {len(s.rises)} rise(s); angle from {fit.angle_source}, time from {fit.time_source}",
+            f"Run log: {len(s.rises)} rise(s); angle from {fit.angle_source}, time from {time_from(fit)}",
             f"omega_ss = {format_number(s.omega_ss)} rad/s (fitted), u_ss = {format_reading(s.u_ss, '') if s.u_ss_how == 'row' else format_number(s.u_ss)} V ({how})",
             f"K = omega_ss / u_ss = {format_number(s.K)} rad/s per V "
             + (
@@ -172,7 +178,7 @@ def render(result: Identification) -> str:
             f"T, least squares     = {format_number(s.T * 1e3)} ms{on_bound}, {interval}",
             *_wrap(
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "
-                f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T"
+                f"the sampling is part of the model, {timing}; {fit_why(fit.why)}; the model uses this T"
                 + (
                     f"; the interval also holds the T of the rows up to {RISE_SPAN:g} T "
                     f"after each edge alone, {format_number(fit.rise_T * 1e3)} ms"

@@ -46,6 +46,7 @@ from minseg_tui.model.identify.observations import (
     USsFromLog,
     USsInterpolated,
 )
+from minseg_tui.model.identify.risefit import RisesWhy, TimeConstantFit, WholeLogWhy
 from minseg_tui.quantities import (
     F_UNIT,
     RPM,
@@ -580,3 +581,41 @@ def as_json(result: Identification) -> dict[str, object]:
         out["omega_at_5V"] = result.omega_at_5V
         out["omega_at_5V_with_friction"] = result.omega_at_5V_with_friction
     return out
+
+
+def fit_why(why: WholeLogWhy | RisesWhy) -> str:
+    """Why T came from the fit it came from, in words (the CLI's note under T, the report's
+    "How T was fitted")."""
+    if isinstance(why, RisesWhy):
+        if why.flat:
+            return "the applied voltage u never changes in the log, so T comes from the rises"
+        times = f"{why.ratio:.1f} times" if why.ratio is not None else "more than"
+        return (
+            f"the first-order model over the whole log leaves {times} the "
+            "residual of the steps fitted one by one (the wheel between the steps does not "
+            "follow it: coasting at zero command, or a speed that wanders), so T comes from "
+            "the rises alone"
+        )
+    friction = (
+        f"; dry friction found: breakaway at u_c = {format_number(why.u_c)} V in this fit "
+        "(the model check's fit of the speed finds its own u_c)"
+        if why.u_c is not None
+        else ""
+    )
+    alone = "the rise fitted alone does" if why.one else "the rises fitted one by one do"
+    theirs = "that fit's" if why.one else "theirs"
+    if why.down == 0:
+        edges = f"every edge is used (the log has {why.up} rising {'edge' if why.up == 1 else 'edges'} and no falling one)"
+    else:
+        edges = f"every edge, rising and falling, is used ({why.up} rising, {why.down} falling)"
+    return (
+        f"one first-order model fits the whole log as well as {alone} "
+        f"(on the {'rise' if why.one else 'rises'} its residual is "
+        f"{why.ratio:.2f} times {theirs}), so "
+        f"{edges}{friction}"
+    )
+
+
+def time_from(fit: TimeConstantFit) -> str:
+    """Where the fit's time came from, in words."""
+    return "the board's timestamps (t_us)" if fit.stamped else "the t column"
