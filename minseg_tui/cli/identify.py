@@ -12,6 +12,8 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content.identify_says import (
     as_json,
     fit_why,
+    friction_equation,
+    model_equation,
     sentence,
     t63_note,
     time_from,
@@ -98,7 +100,7 @@ def _task15(result: Identification) -> list[str]:
     s, lab = result.step, result.omega_at_5V
     assert s is not None and lab is not None
     line = f"At u_A = {U_TASK15:g} V (Task 15): omega = {format_number(lab)} rad/s"
-    equation = s.friction_equation(format_number, "w")
+    equation = friction_equation(s, "w")
     friction = s.task15_with_friction
     if friction is None or equation is None:
         return [line]
@@ -196,7 +198,7 @@ def render(result: Identification) -> str:
             *(_wrap(t63_note(s.T_63_note)) if s.T_63_note else []),
             f"J = T (R f + k_v k_a) / R = {format_number(s.J)} kg m^2 (Task 13)",
             "",
-            f"Model (Task 14): {s.model_equation(format_number, 'w')}",
+            f"Model (Task 14): {model_equation(s, 'w')}",
             *_task15(result),
         ]
     out += ["", "What the numbers show:"]

@@ -11,7 +11,12 @@ from __future__ import annotations
 
 from functools import singledispatch
 
-from minseg_tui.model.identify.identification import Identification, RestWhy, T63Note
+from minseg_tui.model.identify.identification import (
+    Identification,
+    ResponseResult,
+    RestWhy,
+    T63Note,
+)
 from minseg_tui.model.identify.observations import (
     CurrentHigh,
     CurrentInAmperes,
@@ -619,3 +624,24 @@ def fit_why(why: WholeLogWhy | RisesWhy) -> str:
 def time_from(fit: TimeConstantFit) -> str:
     """Where the fit's time came from, in words."""
     return "the board's timestamps (t_us)" if fit.stamped else "the t column"
+
+
+def model_equation(st: ResponseResult, w: str = "omega") -> str:
+    """Task 14's model as text, the speed named ``w``: "T w' = -w + K u_A", with "(t)" and
+    "u_A(t - D s)" when it has a dead time."""
+    num = format_number
+    if st.dead_time > 0:
+        return f"{num(st.T)} {w}'(t) = -{w}(t) + {num(st.K)} u_A(t - {num(st.dead_time)} s)"
+    return f"{num(st.T)} {w}' = -{w} + {num(st.K)} u_A"
+
+
+def friction_equation(st: ResponseResult, w: str = "omega") -> str | None:
+    """The fitted model with its dry friction as text ("T w' = -w + K' (u_A - u_c sgn w)",
+    with the dead time as in :func:`model_equation`), None without dry friction."""
+    num = format_number
+    gain = st.K_above_u_c
+    if gain is None:
+        return None
+    u = f"u_A(t - {num(st.dead_time)} s)" if st.dead_time > 0 else "u_A"
+    t = "(t)" if st.dead_time > 0 else ""
+    return f"{num(st.T)} {w}'{t} = -{w}{t} + {num(gain)} ({u} - {num(st.u_c)} V sgn {w}{t})"

@@ -11,7 +11,7 @@ table's u_ss is taken as exact.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from enum import Enum
 
@@ -108,15 +108,6 @@ class ResponseResult:
         """False when K's 95 % interval spans more than a factor of :data:`DETERMINED`."""
         return determined(self.K_ci)
 
-    def model_equation(self, num: Callable[[float], str], w: str = "omega") -> str:
-        """Task 14's model as text, the numbers written by ``num`` and the speed named ``w``:
-        "T w' = -w + K u_A", with "(t)" and "u_A(t - D s)" when it has a dead time."""
-        if self.dead_time > 0:
-            return (
-                f"{num(self.T)} {w}'(t) = -{w}(t) + {num(self.K)} u_A(t - {num(self.dead_time)} s)"
-            )
-        return f"{num(self.T)} {w}' = -{w} + {num(self.K)} u_A"
-
     @property
     def u_c(self) -> float:
         """Dry friction's breakaway voltage (V) the whole-log fit found, 0 when it found none."""
@@ -149,16 +140,6 @@ class ResponseResult:
         if other is None or not abs(other - lab) > FRICTION_APART * abs(lab):
             return None
         return other
-
-    def friction_equation(self, num: Callable[[float], str], w: str = "omega") -> str | None:
-        """The fitted model with its dry friction as text ("T w' = -w + K' (u_A - u_c sgn
-        w)", with the dead time as in :meth:`model_equation`), None without dry friction."""
-        gain = self.K_above_u_c
-        if gain is None:
-            return None
-        u = f"u_A(t - {num(self.dead_time)} s)" if self.dead_time > 0 else "u_A"
-        t = "(t)" if self.dead_time > 0 else ""
-        return f"{num(self.T)} {w}'{t} = -{w}{t} + {num(gain)} ({u} - {num(self.u_c)} V sgn {w}{t})"
 
     @property
     def T_determined(self) -> bool:
