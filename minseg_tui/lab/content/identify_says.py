@@ -645,3 +645,17 @@ def friction_equation(st: ResponseResult, w: str = "omega") -> str | None:
     u = f"u_A(t - {num(st.dead_time)} s)" if st.dead_time > 0 else "u_A"
     t = "(t)" if st.dead_time > 0 else ""
     return f"{num(st.T)} {w}'{t} = -{w}{t} + {num(gain)} ({u} - {num(st.u_c)} V sgn {w}{t})"
+
+
+def u_ss_not_entered(level: float, extrapolated: bool, u_ss: float | None) -> str:
+    """identify's sentence on a u_ss the table has no row for, when the row at the step's
+    ``level`` (V) is there but its u_ss is not entered: the step's K divides by a u_ss
+    (``u_ss``, V, None when not computed) ``extrapolated`` from the table's other rows, or
+    interpolated between them."""
+    which = "extrapolated from" if extrapolated else "interpolated between"
+    got = f" (u_ss = {format_number(u_ss, 3)} V)" if u_ss is not None else ""
+    return (
+        f"u_ss at {level:g} V is not entered (Task 4): the step's K divides by a u_ss "
+        f"{which} the table's other rows{got}, and a K typed on Task 11 is not judged until "
+        "it is entered."
+    )
