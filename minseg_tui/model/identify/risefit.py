@@ -28,7 +28,7 @@ from minseg_tui.model.identify.lsq import dot
 from minseg_tui.model.identify.rises import RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
 from minseg_tui.model.identify.windowfit import WindowsFit, fit_windows
-from minseg_tui.model.runlog import RunLog, command, find_edges
+from minseg_tui.model.runlog import MEAN_SPEED, RunLog, command, find_edges
 
 FloatArray = NDArray[np.float64]
 
@@ -222,7 +222,7 @@ def _stall_offsets(log: RunLog, fit: TimeConstantFit, stalls: tuple[int, ...]) -
     angle is measured (theta, count) or is the counts (an Euler speed over a fixed period:
     its angle cannot stay off), or no step stays (a one-row spike comes back)."""
     theta, source = log.angle()
-    if not source.startswith("the omega column read as the mean speed"):
+    if source != MEAN_SPEED:
         return None
     r = theta - fit.predicted
     step = 2.0 * math.pi / log.cpr
