@@ -7,6 +7,7 @@ import pytest
 
 from minseg_tui.lab.content.identify_says import sentence
 from minseg_tui.model.identify import Reading, identify
+from minseg_tui.model.identify.observations import Observation
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams
 from minseg_tui.model.runlog import RunLog
@@ -96,3 +97,19 @@ def test_a_sentence_reads_as_the_model_wrote_it(code):
     found = [o for o in CASES[code]().observations if o.code == code]
     assert len(found) == 1
     assert sentence(found[0]) == SAID[code]
+
+
+def _records(cls):
+    for sub in cls.__subclasses__():
+        yield sub
+        yield from _records(sub)
+
+
+def test_every_finding_of_identify_has_its_words():
+    """A record added to model/identify/observations.py without its sentence in
+    identify_says would reach the screen as a TypeError: each has its own."""
+    records = list(_records(Observation))
+    assert len(records) == 27
+    fallback = sentence.dispatch(Observation)
+    assert [r.__name__ for r in records if sentence.dispatch(r) is fallback] == []
+    assert all(r.code for r in records)
