@@ -109,7 +109,7 @@ def test_every_finding_of_identify_has_its_words():
     """A record added to model/identify/observations.py without its sentence in
     identify_says would reach the screen as a TypeError: each has its own."""
     records = list(_records(Observation))
-    assert len(records) == 27
+    assert len(records) >= 27
     fallback = sentence.dispatch(Observation)
     assert [r.__name__ for r in records if sentence.dispatch(r) is fallback] == []
     assert all(r.code for r in records)
