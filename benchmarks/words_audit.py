@@ -5,7 +5,7 @@ place, and says where it stands:
 
 - number formats: format specs in f-strings (``{x:.3g}``, ``{x:.1f}``, ``{x:g}``...) outside
   quantities.py (an SVG's coordinates left out), the one module that writes numbers for people; split into those in modules
-  of words people read (the UI, the report, the CLI, lab/views, identify's observations)
+  of words people read (the UI, the report, the CLI, lab/views, identify's sentences)
   and the rest (messages of refusals, files, the board's protocol, the model check);
 - formatting helpers: module-level ``_num``/``_fmt``/``_g``-like wrappers around quantities;
 - the places that spell how u_ss was found (a table with an ``"interpolated"`` entry, or the
@@ -17,13 +17,19 @@ place, and says where it stands:
   it): string literals and f-strings of model/ with a space and over 20 characters of
   text, docstrings left out, by folder; a refusal's 'expected ...' message counted apart.
 
-Run: ``.venv/bin/python benchmarks/words_audit.py`` (``--list`` prints every hit).
+Run: ``.venv/bin/python benchmarks/words_audit.py`` (``--list`` prints every hit;
+``--against REV`` also counts the words in model/ at a git revision of this checkout and
+prints before -> after by folder).
 """
 
 import argparse
 import ast
+import io
 import re
+import subprocess
 import sys
+import tarfile
+import tempfile
 from collections import Counter, defaultdict
 from pathlib import Path
 
@@ -35,7 +41,7 @@ from tests.prose import prose  # noqa: E402
 SPEC = re.compile(r"\{[^{}]*?:[+ ]?\d*(?:\.\d+)?[gfe%]\}")
 """A number's format spec inside an f-string: {x:.3g}, {x:+.1f}, {x:g}, {x:.0f}."""
 
-PEOPLE = ("ui/", "report/", "cli/", "lab/views/", "model/identify/observations.py")
+PEOPLE = ("ui/", "report/", "cli/", "lab/views/", "lab/content/identify_says.py")
 """Modules whose text is the words a student reads (screens, report, headless output)."""
 
 HELPER = re.compile(r"^(?:def (_num|_fmt|_q|_g|_v|_w|_s|_read)\(|(_g|_fmt|_num) = format)", re.M)
@@ -75,10 +81,36 @@ def _defined(tree: ast.Module) -> tuple[list[str], list[str]]:
     return classes, tables
 
 
+def _model_words(pkg: Path) -> dict[str, list[str]]:
+    """The prose literals of model/ (tests/prose.py's rule) under ``pkg``, by folder."""
+    said: dict[str, list[str]] = defaultdict(list)
+    for p in _sources(pkg / "model"):
+        rel = str(p.relative_to(pkg))
+        for line, words in sorted(prose(ast.parse(p.read_text(encoding="utf-8")))):
+            said[str(Path(rel).parent)].append(f"{rel}:{line}: {words[:90]}")
+    return said
+
+
+def _refusals(said: dict[str, list[str]]) -> int:
+    return sum(h.split(": ", 1)[1].startswith("expected") for v in said.values() for h in v)
+
+
+def _at(root: Path, rev: str) -> dict[str, list[str]]:
+    """:func:`_model_words` of minseg_tui/ at git revision ``rev`` of the checkout ``root``."""
+    tar = subprocess.run(
+        ["git", "-C", str(root), "archive", rev, "minseg_tui"], capture_output=True, check=True
+    ).stdout
+    with tempfile.TemporaryDirectory() as tmp:
+        with tarfile.open(fileobj=io.BytesIO(tar)) as t:
+            t.extractall(tmp, filter="data")
+        return _model_words(Path(tmp) / "minseg_tui")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--list", action="store_true", help="print every hit")
     ap.add_argument("--root", type=Path, default=ROOT, help="a checkout to count in")
+    ap.add_argument("--against", metavar="REV", help="count model/'s words at REV too")
     args = ap.parse_args()
     root = args.root.resolve()
     pkg = root / "minseg_tui"
@@ -89,7 +121,6 @@ def main() -> None:
     places: dict[str, list[str]] = defaultdict(list)
     classes: dict[str, list[str]] = defaultdict(list)
     tables: dict[str, list[str]] = defaultdict(list)
-    said: dict[str, list[str]] = defaultdict(list)
     for p in _sources(pkg):
         text = p.read_text(encoding="utf-8")
         rel = str(p.relative_to(pkg))
@@ -105,14 +136,12 @@ def main() -> None:
             if pattern.search(text):
                 places[what].append(rel)
         tree = ast.parse(text)
-        if rel.startswith("model/"):
-            for line, words in sorted(prose(tree)):
-                said[str(Path(rel).parent)].append(f"{rel}:{line}: {words[:90]}")
         c, t = _defined(tree)
         for name in c:
             classes[name].append(rel)
         for name in t:
             tables[name].append(rel)
+    said = _model_words(pkg)
     readme = (root / "README.md").read_text(encoding="utf-8")
     for what, pattern in PLACES.items():
         if pattern.search(readme):
@@ -138,12 +167,23 @@ def main() -> None:
             print(f"    {h}")
     for what in PLACES:
         print(f"{what}: written in {len(places[what])} places ({', '.join(places[what])})")
-    refusals = sum(h.split(": ", 1)[1].startswith("expected") for v in said.values() for h in v)
+    refusals = _refusals(said)
     print(
         f"words in model/ (literals with a space, over 20 characters, no docstrings): "
         f"{sum(len(v) for v in said.values())}, of which {refusals} refusals ('expected ...'); "
         + ", ".join(f"{k} {len(v)}" for k, v in sorted(said.items()))
     )
+    if args.against:
+        then = _at(root, args.against)
+        print(
+            f"words in model/ at {args.against} -> now: "
+            f"{sum(len(v) for v in then.values())} -> {sum(len(v) for v in said.values())} "
+            f"(refusals {_refusals(then)} -> {refusals}); "
+            + ", ".join(
+                f"{k} {len(then.get(k, []))} -> {len(said.get(k, []))}"
+                for k in sorted(set(then) | set(said))
+            )
+        )
     if args.list:
         for where in said.values():
             for h in where:

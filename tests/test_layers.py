@@ -42,3 +42,32 @@ def test_the_model_check_holds_no_words():
         for line, text in prose(ast.parse(p.read_text(encoding="utf-8")))
     ]
     assert found == [], "\n".join(found)
+
+
+IDENTIFY_KEEPS = {
+    # how u_ss was found (steady.U_SS_HOW): a refusal of identify quotes it (an edge that ends
+    # at 0 V on the motor says why), so it stays beside the refusal, one place for both
+    "the driver is off at 0 V",
+    "extrapolated from the table",
+    "no table row at {levels}, the nearest row's driver drop",
+    "the table has no u_ss yet",
+    "interpolated between the table's rows",
+    "it has no u_req column",
+    "the log's applied voltage",
+    "below the driver's drop in the table",  # that refusal's words for an extrapolated 0 V
+    "a t quantile needs at least one degree of freedom",  # a programming error, not input
+}
+"""The words model/identify keeps besides its refusals ('expected ...'), and why."""
+
+
+def test_identify_holds_no_words_but_its_refusals():
+    """Issue 19 item 4: identify gives typed records; what its numbers show, the 63 %
+    reading's note, why T came from its fit and Task 14's model in words are written in
+    lab/content/identify_says.py. What stays is a refusal, or one of IDENTIFY_KEEPS."""
+    found = [
+        f"{p.relative_to(ROOT)}:{line}: {text}"
+        for p in sorted((ROOT / "minseg_tui" / "model" / "identify").glob("*.py"))
+        for line, text in prose(ast.parse(p.read_text(encoding="utf-8")))
+        if not text.startswith("expected") and text not in IDENTIFY_KEEPS
+    ]
+    assert found == [], "\n".join(found)

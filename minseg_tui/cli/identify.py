@@ -9,6 +9,15 @@ import textwrap
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.identify_says import (
+    as_json,
+    fit_why,
+    friction_equation,
+    model_equation,
+    sentence,
+    t63_note,
+    time_from,
+)
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import U_TASK15, Identification, identify, u_ss_words
 from minseg_tui.model.identify.risefit import RISE_SPAN
@@ -74,7 +83,7 @@ def run(args: argparse.Namespace) -> int:
             f"expected a run log whose rises can be fitted; the fit failed ({exc})",
         ) from None
     if args.json:
-        print_json(result.to_json())
+        print_json(as_json(result))
     else:
         sys.stdout.write(render(result))
     return 0
@@ -91,7 +100,7 @@ def _task15(result: Identification) -> list[str]:
     s, lab = result.step, result.omega_at_5V
     assert s is not None and lab is not None
     line = f"At u_A = {U_TASK15:g} V (Task 15): omega = {format_number(lab)} rad/s"
-    equation = s.friction_equation(format_number, "w")
+    equation = friction_equation(s, "w")
     friction = s.task15_with_friction
     if friction is None or equation is None:
         return [line]
@@ -157,7 +166,7 @@ def render(result: Identification) -> str:
             )
         out += [
             "",
-            f"Run log: {len(s.rises)} rise(s); angle from {fit.angle_source}, time from {fit.time_source}",
+            f"Run log: {len(s.rises)} rise(s); angle from {fit.angle_source}, time from {time_from(fit)}",
             f"omega_ss = {format_number(s.omega_ss)} rad/s (fitted), u_ss = {format_reading(s.u_ss, '') if s.u_ss_how == 'row' else format_number(s.u_ss)} V ({how})",
             f"K = omega_ss / u_ss = {format_number(s.K)} rad/s per V "
             + (
@@ -171,7 +180,7 @@ def render(result: Identification) -> str:
             f"T, least squares     = {format_number(s.T * 1e3)} ms{on_bound}, {interval}",
             *_wrap(
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "
-                f"the sampling is part of the model, {timing}; {fit.why}; the model uses this T"
+                f"the sampling is part of the model, {timing}; {fit_why(fit.why)}; the model uses this T"
                 + (
                     f"; the interval also holds the T of the rows up to {RISE_SPAN:g} T "
                     f"after each edge alone, {format_number(fit.rise_T * 1e3)} ms"
@@ -186,15 +195,15 @@ def render(result: Identification) -> str:
                 )
                 + ")"
             ),
-            *(_wrap(s.T_63_note) if s.T_63_note else []),
+            *(_wrap(t63_note(s.T_63_note)) if s.T_63_note else []),
             f"J = T (R f + k_v k_a) / R = {format_number(s.J)} kg m^2 (Task 13)",
             "",
-            f"Model (Task 14): {s.model_equation(format_number, 'w')}",
+            f"Model (Task 14): {model_equation(s, 'w')}",
             *_task15(result),
         ]
     out += ["", "What the numbers show:"]
     if result.observations:
-        out += [f"- {f.message}" for f in result.observations]
+        out += [f"- {sentence(f)}" for f in result.observations]
     else:
         out.append(
             "- nothing unusual: the rows agree and the step fits the model."

@@ -53,6 +53,11 @@ def header_problem(key: str, value: str) -> str | None:
     return None
 
 
+MEAN_SPEED = "the omega column read as the mean speed over each sample interval"
+"""Where :meth:`RunLog.angle` took the angle from when it integrates the omega column over
+the real sample intervals (the one source whose angle a stall's gap can leave off for good)."""
+
+
 @dataclass(frozen=True, eq=False)
 class RunLog:
     """One recorded run.
@@ -177,7 +182,7 @@ class RunLog:
                 f"the omega column read as the Euler speed (theta_k - theta_k-1) / {ts * 1e3:.6g} ms"
             )
         dth = np.concatenate(([0.0], w * np.diff(t)))
-        return np.cumsum(dth), "the omega column read as the mean speed over each sample interval"
+        return np.cumsum(dth), MEAN_SPEED
 
 
 def _euler_period(w: FloatArray, dt: FloatArray, q: float) -> float | None:

@@ -15,6 +15,7 @@ from datetime import datetime, timedelta
 import numpy as np
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content import identify_says
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.keys import key_name
 from minseg_tui.lab.content.needs import needs
@@ -304,7 +305,7 @@ def _step_section(session: Session) -> Section:
             )
             + "; omega_ss in the steps, K and T need only the run and u_ss."
         )
-    sec.blocks.append(f"How T was fitted: {s.fit.why}.")
+    sec.blocks.append(f"How T was fitted: {identify_says.fit_why(s.fit.why)}.")
     zoom = _zoom_figure(session, res.run, s)
     if zoom is not None:
         sec.blocks.append(zoom)

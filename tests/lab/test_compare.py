@@ -7,6 +7,7 @@ import json
 import re
 from pathlib import Path
 
+from minseg_tui.lab.content.identify_says import t63_note
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.compare import read_policy, two_T, two_T_of
 from minseg_tui.lab.state.session import Session
@@ -240,7 +241,7 @@ def test_the_two_T_are_explained_in_one_sentence_on_every_screen(tmp_path):
         for sid in ("task11", "task12", "task13", "task14", "task15"):
             lines = _lines(s, sid)
             compared = " ".join(comp for _, _, comp in views.comparisons(s, sid))
-            assert st.T_63_note is not None and st.T_63_note not in lines, sid
+            assert st.T_63_note is not None and t63_note(st.T_63_note) not in lines, sid
             assert (lines + compared).count("Both are fair readings of T") == 1, sid
         # under the results, not in Task 12's comparison: that stays short beside the entry
         assert said in _lines(s, "task12") and said not in _compare(s, "task12")["your T"][1]

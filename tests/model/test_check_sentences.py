@@ -10,6 +10,7 @@ from functools import cache
 import numpy as np
 import pytest
 
+from minseg_tui.lab.content.identify_says import fit_why
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views.check_says import anomaly, caveat, evidence, lead_why
 from minseg_tui.lab.views.check_text import text
@@ -191,7 +192,7 @@ def test_identify_does_not_speak_of_falling_edges_a_log_has_not(name):
     log = read_run_log(SHARED_DATA / "real-motors" / name / "step.csv")
     r = identify(table(72.0), 5.3, log)
     assert r.step is not None
-    why = r.step.fit.why
+    why = fit_why(r.step.fit.why)
     assert "fits the whole log as well as the rise fitted alone does" in why
     assert "rising and falling" not in why and "one by one" not in why
     assert "the log has 1 rising edge and no falling one" in why

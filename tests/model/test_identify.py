@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.identify_says import as_json, sentence
 from minseg_tui.model.identify import U_SS_HOW, Reading, identify, steady_state, u_ss_at, u_ss_words
 from minseg_tui.model.identify.steady import table_of
 from minseg_tui.model.motor import MotorParams
@@ -40,7 +41,7 @@ def test_table_by_hand():
 def test_falling_f_is_called_dry_friction_with_the_line_through_the_rows():
     result = identify(TABLE, R)
     assert "dry_friction" in codes(result)
-    msg = next(f.message for f in result.observations if f.code == "dry_friction")
+    msg = next(sentence(f) for f in result.observations if f.code == "dry_friction")
     # k_a i = f w + tau_c through (3.6, k_a 0.030), (5.5, k_a 0.035), (7.2, k_a 0.040)
     w = np.array([3.6, 5.5, 7.2])
     torque = result.k_a * np.array([0.030, 0.035, 0.040])
@@ -69,7 +70,7 @@ def test_constant_f_is_not_dry_friction():
 def test_a_bad_row_is_named():
     rows = [*TABLE[:2], Reading(4.5, 4.0, 5.0, 40.0, line=4)]  # omega misread
     result = identify(rows, R)
-    msgs = [f.message for f in result.observations if f.code == "k_v_outlier"]
+    msgs = [sentence(f) for f in result.observations if f.code == "k_v_outlier"]
     assert len(msgs) == 1 and "row 3" in msgs[0] and "line 4" in msgs[0]
 
 
@@ -236,8 +237,8 @@ def test_k_divides_by_a_row_that_has_only_its_u_ss():
     without = identify(table[:2], MOTOR.R, log)  # the 4.5 V row not given: extrapolated, said
     assert without.step.u_ss_how == "extrapolated"
     assert without.step.u_ss == pytest.approx(4.5 - V_DROP)  # the 3.5 V row's drop
-    (said,) = [o for o in without.observations if o.code == "u_ss_extrapolated"]
-    assert "No table row has u_req = 4.5 V" in said.message and "extrapolated" in said.message
+    (found,) = [sentence(o) for o in without.observations if o.code == "u_ss_extrapolated"]
+    assert "No table row has u_req = 4.5 V" in found and "extrapolated" in found
 
 
 def test_log_with_only_a_falling_step_is_refused():
@@ -250,7 +251,7 @@ def test_log_with_only_a_falling_step_is_refused():
 
 
 def test_json_shape(linear_result):
-    j = linear_result.to_json()
+    j = as_json(linear_result)
     assert list(j) == [
         *("R", "rows", "k_v", "k_a", "f", "step", "model", "omega_at_5V"),
         "omega_at_5V_with_friction",
@@ -282,7 +283,7 @@ def test_json_shape(linear_result):
     assert list(j["model"]) == ["T", "K", "dead_time", "u_c", "K_above_u_c"]
     assert j["rows"][0]["i_ss"] == pytest.approx(linear_table(MOTOR)[0].i_ss)  # mA as entered
     assert len(j["step"]["T_ci"]) == 2
-    assert list(identify(TABLE, R).to_json()) == ["R", "rows", "k_v", "k_a", "f"]
+    assert list(as_json(identify(TABLE, R))) == ["R", "rows", "k_v", "k_a", "f"]
 
 
 @pytest.mark.parametrize(

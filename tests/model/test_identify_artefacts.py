@@ -11,6 +11,7 @@ import pytest
 
 from minseg_tui.cli import main
 from minseg_tui.cli.identify import render
+from minseg_tui.lab.content.identify_says import as_json, sentence, t63_note
 from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.model.identify import Reading, identify
 from minseg_tui.model.identify.identification import determined
@@ -65,18 +66,18 @@ def test_a_dead_time_is_fitted_named_and_in_the_model():
     s = r.step
     assert s.dead_time == pytest.approx(0.06, abs=0.0025)  # within the loop's lateness
     assert "dead_time" in codes(r)
-    assert r.to_json()["model"]["dead_time"] == s.dead_time
+    assert as_json(r)["model"]["dead_time"] == s.dead_time
     words = render(r)
     assert f"u_A(t - {s.dead_time:.4g} s)" in words
     assert "dead time of 6" in words
     # the 63 % note counts the delay apart; it no longer calls the sampling the whole difference
-    assert "the dead time moves the reading by +6" in s.T_63_note
-    assert "the sampling alone" not in s.T_63_note
-    differs = [o.message for o in r.observations if o.code == "T_63_differs"]
+    assert "the dead time moves the reading by +6" in t63_note(s.T_63_note)
+    assert "the sampling alone" not in t63_note(s.T_63_note)
+    differs = [sentence(o) for o in r.observations if o.code == "T_63_differs"]
     assert differs and "holds the dead time of 60" in differs[0]
     # a clean first-order rise after its delay: the half-sample lag is the rest, no shape
     assert "lags the true speed by half a sample" in differs[0]
-    assert "shape of the rise" not in differs[0] and "whole difference" in s.T_63_note
+    assert "shape of the rise" not in differs[0] and "whole difference" in t63_note(s.T_63_note)
     assert "step_vs_table" not in codes(r)  # the table agrees with the log
 
 
@@ -93,18 +94,18 @@ def test_a_clean_log_has_no_dead_time_glitch_or_stall():
 def test_glitch_rows_are_flagged_and_kept_out():
     g, r = run(seed=5, ts=0.02, glitch=2, periods=1, rest_rows=6)
     assert r.step.glitch_rows == 2
-    said = [o.message for o in r.observations if o.code == "glitch_rows"]
+    said = [sentence(o) for o in r.observations if o.code == "glitch_rows"]
     assert len(said) == 1 and "switch-on glitches" in said[0] and "left out" in said[0]
     assert f"{g.log.omega[0]:.3g}, {g.log.omega[1]:.3g} rad/s" in said[0]
-    assert r.to_json()["step"]["glitch_rows"] == 2
+    assert as_json(r)["step"]["glitch_rows"] == 2
 
 
 def test_a_logging_stall_is_named_and_left_out():
     g, r = run(seed=2, ts=0.02, stall=True, periods=1, rest_rows=6)
     assert g.stall_row in r.step.fit.left_out
-    said = [o.message for o in r.observations if o.code == "logging_stall"]
+    said = [sentence(o) for o in r.observations if o.code == "logging_stall"]
     assert said and "gap of" in said[0] and "a logging stall" in said[0]
-    assert r.to_json()["step"]["left_out_rows"] == list(r.step.fit.left_out)
+    assert as_json(r)["step"]["left_out_rows"] == list(r.step.fit.left_out)
 
 
 def test_switch_on_glitches_rule():
@@ -159,7 +160,7 @@ def test_a_response_before_the_logged_steps_is_held_and_said():
     g, r = run(seed=1, delay=-0.05)
     s = r.step
     assert s.fit.shift == pytest.approx(-0.025) and s.fit.shift_on_bound and s.dead_time == 0
-    said = [o.message for o in r.observations if o.code == "shift_on_bound"]
+    said = [sentence(o) for o in r.observations if o.code == "shift_on_bound"]
     assert said and "earlier than the logged steps" in said[0]
 
 
@@ -178,22 +179,26 @@ def test_an_s_shaped_rise_is_not_called_a_dead_time():
     r = identify([Reading(4.0, 4.0, 48.0, 50.0)], R, log)
     st = r.step
     assert st.dead_time == 0
-    said = [o.message for o in r.observations if o.code == "shift_on_bound"]
+    said = [sentence(o) for o in r.observations if o.code == "shift_on_bound"]
     assert said and "S-shaped start" in said[0] and "dead time" in said[0]
     # the 63 % reading's distance from the model read the same way is the rise's shape (the
     # noise, 0.05 rad/s on 48 rad/s, moves a reading by a fraction of a millisecond), not
     # 'the noise of reading single samples'
-    assert "is the shape of the rise, which one time constant does not follow" in st.T_63_note
-    assert "is the noise of reading" not in st.T_63_note
+    assert "is the shape of the rise, which one time constant does not follow" in t63_note(
+        st.T_63_note
+    )
+    assert "is the noise of reading" not in t63_note(st.T_63_note)
     # and the model read the same way moves by the time shift held at its bound too (+10 ms of
     # the +27.5 ms), not by 'the sampling alone'
-    assert "the sampling and the steps' time shift, held at its bound, move" in st.T_63_note
+    assert "the sampling and the steps' time shift, held at its bound, move" in t63_note(
+        st.T_63_note
+    )
 
 
 def test_u_ss_above_u_req_on_every_row_is_remarked():
     swapped = [Reading(2.05, 2.5, 20.0, 40.0), Reading(3.0, 3.5, 30.0, 45.0)]
     r = identify(swapped, R)
-    said = [o.message for o in r.observations if o.code == "u_ss_above_u_req"]
+    said = [sentence(o) for o in r.observations if o.code == "u_ss_above_u_req"]
     assert said and "swapped" in said[0]
     # each row named with its own figure (walk 7: "by 9 %" read as true of every row)
     assert "on both rows the results use (by 22 % at 2.05 V and 17 % at 3 V)" in said[0]
@@ -248,10 +253,12 @@ def test_a_ramp_that_one_time_constant_misses_is_named_as_the_gap_between_T_and_
     r = identify(table(72.0), R, read_run_log(path))
     st = r.step
     assert st is not None and st.fit.shift_on_bound
-    said = [o.message for o in r.observations if o.code == "T_63_differs"]
+    said = [sentence(o) for o in r.observations if o.code == "T_63_differs"]
     assert said and "is the shape of the rise" in said[0]
     assert "lags the true speed by half a sample" not in said[0]
-    assert "is the shape of the rise, which one time constant does not follow" in st.T_63_note
+    assert "is the shape of the rise, which one time constant does not follow" in t63_note(
+        st.T_63_note
+    )
 
 
 @pytest.mark.shared_data
@@ -265,21 +272,21 @@ def test_a_63_percent_reading_inside_the_speeds_noise_is_called_noise_not_a_shap
     r = identify(table(1.93), R, read_run_log(path))
     st = r.step
     assert st is not None and st.fit.shift_on_bound and st.T_63 is not None
-    said = [o.message for o in r.observations if o.code == "T_63_differs"]
+    said = [sentence(o) for o in r.observations if o.code == "T_63_differs"]
     assert said and "ms the noise of reading single samples" in said[0], said
-    assert "shape of the rise" not in said[0] and "shape of the rise" not in st.T_63_note
+    assert "shape of the rise" not in said[0] and "shape of the rise" not in t63_note(st.T_63_note)
     # n20-12v-pwm25: 24 ms apart, +15 ms of it the sampling and the time shift, +9 ms the noise
     # (a count is 1.8 rad/s of a 9.3 rad/s rise); it said only "lags the true speed by half a
     # sample (5 ms); a velocity filter lags it more", and the log has no filter
     path = SHARED_DATA / "real-motors" / "n20-12v-pwm25" / "step.csv"
-    said = [o.message for o in identify(table(7.9), R, read_run_log(path)).observations]
+    said = [sentence(o) for o in identify(table(7.9), R, read_run_log(path)).observations]
     said = [m for m in said if m.startswith("The 63 % reading")]
     assert said and "a velocity filter lags it more" not in said[0], said
     assert "is the sampling and the steps' time shift" in said[0]
     assert "ms the noise of reading single samples" in said[0]
     # a ramp well above the noise keeps its word (ubc-motor-7V: 136 ms of shape, 7 ms of sway)
     path = SHARED_DATA / "real-motors" / "ubc-motor-7V" / "step.csv"
-    said = [o.message for o in identify(table(72.0), R, read_run_log(path)).observations]
+    said = [sentence(o) for o in identify(table(72.0), R, read_run_log(path)).observations]
     assert any("is the shape of the rise" in m for m in said)
 
 
@@ -291,6 +298,6 @@ def test_counts_too_coarse_to_show_a_start_are_not_read_as_an_s_shaped_start():
     # those counts cannot show (analyze names no pole on this log)
     path = SHARED_DATA / "real-motors" / "n20-12v-pwm25" / "step.csv"
     r = identify(table(7.9), R, read_run_log(path))
-    said = [o.message for o in r.observations if o.code == "shift_on_bound"]
+    said = [sentence(o) for o in r.observations if o.code == "shift_on_bound"]
     assert said and "too coarse to show how the rise starts" in said[0], said
     assert "S-shaped start" not in said[0]

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
+from minseg_tui.lab.content.identify_says import fit_why, t63_note
 from minseg_tui.model.identify import RISES, WHOLE_LOG, identify
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.risefit import board_grid
@@ -103,7 +104,7 @@ def test_63_percent_reading_is_explained_by_the_sampling():
     assert s.T_63 - s.T == pytest.approx(0.0125, abs=0.006)
     # read on the fitted model sampled like the log, the reading is the same within noise
     assert s.T_63_model == pytest.approx(s.T_63, abs=0.004)
-    note = s.T_63_note
+    note = t63_note(s.T_63_note)
     # both T in ms with the same digits as everywhere else (quantities.format_constant)
     assert format_constant(s.T_63, "s") in note and format_constant(s.T, "s") in note
     assert f"{abs(s.T_63 - s.T) / s.T * 100:.1f} %" in note
@@ -115,7 +116,7 @@ def test_dry_friction_is_fitted_and_named():
     s = identify(TABLE, PUBLISHED.R, log).step
     assert s.fit.method == WHOLE_LOG
     assert s.fit.u_c == pytest.approx(params.u_coulomb, rel=0.1)
-    assert "dry friction found" in s.fit.why
+    assert "dry friction found" in fit_why(s.fit.why)
     assert s.T == pytest.approx(PUBLISHED.T, rel=0.01)
     # the lab's K is omega_ss / u_ss at the step: K (u_A - u_c) / u_A
     u_a = 4.0 - V_DROP
@@ -127,7 +128,7 @@ def test_a_log_whose_u_never_changes_uses_the_rises():
     flat = replace(log, u=np.full(len(log), 3.0))  # u_req steps, u does not: nothing to model
     s = identify(TABLE, PUBLISHED.R, flat).step
     assert s.fit.method == RISES
-    assert "never changes" in s.fit.why
+    assert "never changes" in fit_why(s.fit.why)
     assert s.T == pytest.approx(T, rel=0.02)
 
 

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli.identify import render
+from minseg_tui.lab.content.identify_says import as_json, sentence, t63_note
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.identify import WHOLE_LOG, identify
 from minseg_tui.model.identify.identification import reading_noise
@@ -35,12 +36,12 @@ def test_task15_with_dry_friction_gives_the_speed_the_motor_turns_at_5V():
     assert r.omega_at_5V_with_friction == pytest.approx(true_5V, rel=0.01)
     assert r.omega_at_5V == pytest.approx(5.0 * s.K)  # the lab's answer, unchanged
     assert abs(r.omega_at_5V / true_5V - 1) > 0.02  # ... which the friction moves
-    said = [o.message for o in r.observations if o.code == "friction_task15"]
+    said = [sentence(o) for o in r.observations if o.code == "friction_task15"]
     assert len(said) == 1 and f"{format_number(r.omega_at_5V, 4)} rad/s" in said[0]
     assert f"{format_number(r.omega_at_5V_with_friction, 4)} rad/s" in said[0]
     words = render(r)
     assert "by the lab's model" in words and "with the friction the fit found" in words
-    j = r.to_json()
+    j = as_json(r)
     assert j["model"]["u_c"] == s.u_c and j["model"]["K_above_u_c"] == s.K_above_u_c
     assert j["omega_at_5V_with_friction"] == r.omega_at_5V_with_friction
 
@@ -51,7 +52,7 @@ def test_task15_s_friction_sentence_says_the_lab_s_model_has_viscous_friction():
     # report says so; what the lab's model lacks is dry friction
     log, _ = friction_log()
     r = identify(identification_table(), PUBLISHED.R, log)
-    said = [o.message for o in r.observations if o.code == "friction_task15"]
+    said = [sentence(o) for o in r.observations if o.code == "friction_task15"]
     assert len(said) == 1
     assert "has no friction" not in said[0]
     assert "the lab's model (Task 14) has viscous friction only, no dry friction" in said[0]
@@ -87,7 +88,7 @@ def test_task15_on_rtl_brake_is_true_of_the_logs_own_5V_level():
         f"At u_A = 5 V (Task 15): omega = {format_number(r.omega_at_5V)} rad/s by the lab's "
         f"model, {format_number(r.omega_at_5V_with_friction)} rad/s with the friction"
     )
-    said = [o.message for o in r.observations if o.code == "friction_task15"]
+    said = [sentence(o) for o in r.observations if o.code == "friction_task15"]
     apart = format_percent(r.omega_at_5V / r.omega_at_5V_with_friction - 1)
     assert said and "15.0 V" in said[0] and f"{apart} more" in said[0], said
 
@@ -105,9 +106,11 @@ def test_a_long_dead_time_does_not_hide_a_miss_of_the_rise():
     s = r.step
     assert s is not None and s.dead_time > 0.3 and s.T_63 is not None
     assert s.T_63_model is not None and s.T_63 - s.T_63_model < -0.010
-    assert "whole difference" not in s.T_63_note
-    assert f"{(s.T_63 - s.T_63_model) * 1e3:+.1f} ms is the shape of the rise" in s.T_63_note
-    said = [o.message for o in r.observations if o.code == "T_63_differs"]
+    assert "whole difference" not in t63_note(s.T_63_note)
+    assert f"{(s.T_63 - s.T_63_model) * 1e3:+.1f} ms is the shape of the rise" in t63_note(
+        s.T_63_note
+    )
+    said = [sentence(o) for o in r.observations if o.code == "T_63_differs"]
     assert said and "lags the true speed by half a sample" not in said[0], said
     assert f"it is {format_constant(s.T_63 - s.dead_time, 's')}" in said[0]
     assert "is the shape of the rise" in said[0] and said[0].endswith("Read T with care.")
@@ -142,8 +145,8 @@ def test_a_reading_across_a_stall_is_not_called_the_shape_of_the_rise():
     s = r.step
     assert s is not None and s.dead_time > 0 and s.fit.left_out and s.T_63_model is not None
     assert s.T_63 is not None and s.T_63 - s.T_63_model < -0.02
-    assert "reading across a logging stall's gap" in s.T_63_note
-    said = [o.message for o in r.observations if o.code == "T_63_differs"]
+    assert "reading across a logging stall's gap" in t63_note(s.T_63_note)
+    said = [sentence(o) for o in r.observations if o.code == "T_63_differs"]
     assert said and "shape of the rise" not in said[0], said
 
 
@@ -162,10 +165,10 @@ def test_the_noise_of_a_63_percent_reading_is_measured_where_the_rise_crosses_it
     near = reading_noise(log, s.rises, s.T, s.fit)
     assert settled is not None and near is not None
     assert settled[0] == pytest.approx(4.36, abs=0.01) and near[0] < 0.5 * settled[0]
-    assert f"scatters {format_number(near[0], 3)} rad/s" in s.T_63_note
-    assert f"by about {near[1] * 1e3:.3g} ms" in s.T_63_note and 0.010 < near[1] < 0.030
+    assert f"scatters {format_number(near[0], 3)} rad/s" in t63_note(s.T_63_note)
+    assert f"by about {near[1] * 1e3:.3g} ms" in t63_note(s.T_63_note) and 0.010 < near[1] < 0.030
     # the 63 % reading is still within that noise (-9.0 ms), and said to be
-    assert "ms is the noise of reading single samples" in s.T_63_note
+    assert "ms is the noise of reading single samples" in t63_note(s.T_63_note)
 
 
 @pytest.mark.shared_data

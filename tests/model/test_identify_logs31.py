@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli.identify import render
+from minseg_tui.lab.content.identify_says import as_json, sentence
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.identify import Reading, identify
 from minseg_tui.model.runlog import RunLog
@@ -54,8 +55,8 @@ def test_the_interval_of_T_holds_the_rise_where_the_tail_pulls_T():
     for reading in (0.0457, 0.0646, s.T_63 - s.dead_time):
         assert s.T_ci[0] <= reading <= s.T_ci[1], (reading, s.T_ci)
     assert s.T_ci[0] == pytest.approx(s.fit.rise_ci[0]) and s.T_determined
-    assert r.to_json()["step"]["T_rise_rows"] == {"T": s.fit.rise_T, "T_ci": list(s.fit.rise_ci)}
-    said = [o.message for o in r.observations if o.code == "T_rows_apart"]
+    assert as_json(r)["step"]["T_rise_rows"] == {"T": s.fit.rise_T, "T_ci": list(s.fit.rise_ci)}
+    said = [sentence(o) for o in r.observations if o.code == "T_rows_apart"]
     assert len(said) == 1 and "pull T longer" in said[0] and "spans both fits" in said[0]
     assert "the interval also holds the T of the rows up to 4 T after each edge alone" in " ".join(
         render(r).split()
@@ -71,7 +72,7 @@ def test_a_clean_log_keeps_the_interval_of_every_row():
             r = identify(table(g.K), 5.0, g.log)
             assert r.step is not None and r.step.fit.rise_T is None, (seed, periods)
             assert "T_rows_apart" not in [o.code for o in r.observations]
-            assert r.to_json()["step"]["T_rise_rows"] is None
+            assert as_json(r)["step"]["T_rise_rows"] is None
 
 
 def test_a_speed_spike_after_a_gap_early_in_a_fast_rise_is_a_logging_stall():
@@ -85,7 +86,7 @@ def test_a_speed_spike_after_a_gap_early_in_a_fast_rise_is_a_logging_stall():
     r = identify(table(g.K), 5.0, g.log)
     s = r.step
     assert s is not None and g.stall_row in s.fit.left_out and not s.fit.angle_mended
-    said = [o.message for o in r.observations if o.code == "logging_stall"]
+    said = [sentence(o) for o in r.observations if o.code == "logging_stall"]
     assert (
         len(said) == 1 and "a logging stall" in said[0] and "It is left out of the fit." in said[0]
     )
@@ -111,7 +112,7 @@ def test_a_stall_inside_a_rise_of_timed_edge_speeds_is_named_and_mended():
     s = r.step
     assert s is not None and s.fit.angle_mended
     assert lg.artefact_rows[0] - s.glitch_rows in s.fit.left_out
-    said = [o.message for o in r.observations if o.code == "logging_stall"]
+    said = [sentence(o) for o in r.observations if o.code == "logging_stall"]
     assert len(said) == 1 and "stayed off after it" in said[0]
     assert abs(s.T / lg.T - 1) < 0.025
 
@@ -148,6 +149,6 @@ def test_a_fit_moved_early_is_not_said_to_rise_steeper_at_first():
     k = s.rises[0].row
     first = np.flatnonzero((t > t[k]) & (t <= t[k] + s.T))
     assert np.mean(w[first]) < np.mean(model[first]) - 0.02 * s.omega_ss
-    said = [o.message for o in r.observations if o.code == "shift_on_bound"]
+    said = [sentence(o) for o in r.observations if o.code == "shift_on_bound"]
     assert len(said) == 1 and "steeper at first" not in said[0]
     assert "starts before the wheel does and then rises more slowly than the wheel" in said[0]

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli.identify import render
+from minseg_tui.lab.content.identify_says import as_json, sentence
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.identify import identify
 from minseg_tui.model.runlog import RunLog
@@ -39,13 +40,13 @@ def test_a_wheel_that_stands_after_the_step_gets_its_dead_time_though_a_tail_hid
     # 63 % reading from 0.490 s (26.0 rad/s of 41.2 at 0.602 s less half a sample) is 110 ms
     assert s.fit.rise_T is not None and 0.100 < s.fit.rise_T < 0.115
     assert s.T_ci[0] <= 0.110 <= s.T_ci[1]
-    said = [o.message for o in r.observations if o.code == "dead_time"]
+    said = [sentence(o) for o in r.observations if o.code == "dead_time"]
     assert len(said) == 1 and "The rows of the rise alone show it" in said[0]
     assert "starting before the wheel moves" in said[0]
     assert "shift_on_bound" not in [o.code for o in r.observations]
     words = " ".join(render(r).split())
     assert "u_A(t - 0.0" in words and "earlier than the steps" not in words
-    assert math.isclose(r.to_json()["step"]["dead_time"], s.dead_time)
+    assert math.isclose(as_json(r)["step"]["dead_time"], s.dead_time)
 
 
 @pytest.mark.parametrize("seed", [1, 3])
@@ -64,7 +65,7 @@ def test_switch_on_glitches_after_a_zeroed_first_row_are_named_and_left_out(seed
     r = identify(table(g.K), 5.0, log)
     s = r.step
     assert s is not None and s.glitch_rows == 3
-    said = [o.message for o in r.observations if o.code == "glitch_rows"]
+    said = [sentence(o) for o in r.observations if o.code == "glitch_rows"]
     assert len(said) == 1
     assert said[0].startswith("Row 1 reads 0 rad/s, as the first row of a speed taken from counts")
     assert "(rows 2-3) read" in said[0] and "switch-on glitches of the logging" in said[0]
@@ -97,10 +98,10 @@ def test_T_s_interval_holds_the_start_the_counts_cannot_pin():
     T_plus_start = float(-cut / slope)  # the angle at the step is 0
     assert T_plus_start == pytest.approx(0.0617, abs=0.0005)
     assert s.T_ci[0] <= T_plus_start - s.fit.free_shift <= s.T_ci[1]
-    said = [o.message for o in r.observations if o.code == "shift_on_bound"]
+    said = [sentence(o) for o in r.observations if o.code == "shift_on_bound"]
     assert len(said) == 1 and "With the shift free up to where the wheel is first seen" in said[0]
     assert "so the 95 % interval of T holds both fits" in said[0]
-    j = r.to_json()["step"]["T_shift_free"]
+    j = as_json(r)["step"]["T_shift_free"]
     assert j == {"T": s.fit.free_T, "T_ci": list(s.fit.free_ci), "shift": s.fit.free_shift}
 
 
@@ -129,8 +130,8 @@ def test_an_s_shaped_start_does_not_widen_T_for_a_start_the_samples_show():
     r = identify(table(72.0), 5.0, log)
     s = r.step
     assert s is not None and s.fit.shift_on_bound and s.fit.moved_early is not None
-    assert s.fit.free_T is None and r.to_json()["step"]["T_shift_free"] is None
-    said = " ".join(o.message for o in r.observations)
+    assert s.fit.free_T is None and as_json(r)["step"]["T_shift_free"] is None
+    said = " ".join(sentence(o) for o in r.observations)
     assert "the wheel already moves before it would end" in said
     assert "the samples do not pin where" not in said
 

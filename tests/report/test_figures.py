@@ -15,6 +15,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
+from minseg_tui.lab.content.identify_says import t63_note
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.compare import two_T_of
 from minseg_tui.lab.state.session import Session
@@ -293,7 +294,7 @@ def test_the_step_section_gives_k_with_its_interval_and_the_63_percent_note(repo
     assert m and [float(v) for v in m.groups()] == pytest.approx([step.K, *step.K_ci], rel=1e-3)
     # why the 63 % reading and the least-squares T differ: said once, the same sentence as
     # the screen's (the model's own note, which the CLI gives, would say it again)
-    assert step.T_63_note and step.T_63_note not in section
+    assert step.T_63_note and t63_note(step.T_63_note) not in section
     assert section.count(two_T_of(step, "the group's")) == 1
 
 

@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content import identify_says
 from minseg_tui.lab.saving.kept import CheckFigures, ResponseFigures
 from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
@@ -141,7 +142,7 @@ class Results:
         numbers, their part of ``step``, ``model`` and ``omega_at_5V``)."""
         if self.identification is None:
             return None
-        out = self.identification.to_json()
+        out = identify_says.as_json(self.identification)
         k = self.kept_response
         if k is not None and "step" not in out:
             out["step"] = {

@@ -52,6 +52,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content import answers
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.expr import Formula
+from minseg_tui.lab.content.identify_says import sentence, u_ss_not_entered
 from minseg_tui.lab.content.steps import (
     FIELDS,
     LEVELS,
@@ -965,7 +966,7 @@ class Session:
             res = self.results()
             if res.identification:
                 out += [
-                    Notice(f.code, self._u_ss_said(f.code, f.message))
+                    Notice(f.code, self._u_ss_said(f.code, sentence(f)))
                     for f in res.identification.observations
                 ]
         return out
@@ -980,12 +981,8 @@ class Session:
         if self.value(f"u_ss@{level:g}") is not None:
             return message
         st = self.results().step
-        which = "extrapolated from" if code == "u_ss_extrapolated" else "interpolated between"
-        got = f" (u_ss = {format_number(st.u_ss, 3)} V)" if st is not None else ""
-        return (
-            f"u_ss at {level:g} V is not entered (Task 4): the step's K divides by a u_ss "
-            f"{which} the table's other rows{got}, and a K typed on Task 11 is not judged until "
-            "it is entered."
+        return u_ss_not_entered(
+            level, code == "u_ss_extrapolated", st.u_ss if st is not None else None
         )
 
     def falling_currents(self) -> list[Notice]:

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from datetime import datetime, timedelta
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content import identify_says
 from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.needs import needs
@@ -41,7 +42,6 @@ from minseg_tui.quantities import (
     UNITS,
     format_difference,
     format_interval,
-    format_number,
     format_quantity,
     format_reading,
     format_typed,
@@ -426,7 +426,7 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
                 f"{w5} (5 V × the least-squares K, the lab's model; "
                 f"{_value(other, unit)} with the dry friction the fit found)"
             )
-        return st.model_equation(format_number)
+        return identify_says.model_equation(st)
 
     def _kept(key: str, unit: str) -> str:
         """:func:`program` from the numbers the session file keeps of the fit."""

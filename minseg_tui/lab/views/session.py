@@ -23,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui import signals
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content import identify_says
 from minseg_tui.lab.content import needs as lab_needs
 from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.steps import FIELDS, STEPS, step
@@ -1131,7 +1132,7 @@ def results(session: Session, step_id: str) -> ResultsView:
             )
             + " (why: below)",
             shown(
-                "own.model", f"model: {st.model_equation(format_number)}", "the model", "Task 14"
+                "own.model", f"model: {identify_says.model_equation(st)}", "the model", "Task 14"
             ),
             shown(
                 "own.omega_5",

@@ -12,7 +12,8 @@ The package, one module per room:
   :mod:`.wholelog` (the model of Task 14 over the whole log) and :mod:`.windowfit` (each
   rise on its own), searched by :func:`minseg_tui.model.optimize.least_squares`, with
   the intervals of :mod:`.lsq` (they hold with correlated residuals; Student's t);
-- :mod:`.observations`: what the numbers show, in sentences a student understands;
+- :mod:`.observations`: what the numbers show, as typed records (their sentences are
+  :mod:`minseg_tui.lab.content.identify_says`'s);
 - :mod:`.identification`: Tasks 6-15 put together (K, T, J, the model of Task 14, omega at
   5 V) and the ``--json`` object.
 

@@ -11,8 +11,9 @@ table's u_ss is taken as exact.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
+from enum import Enum
 
 import numpy as np
 
@@ -52,7 +53,6 @@ from minseg_tui.model.runlog import (
     problem,
     switch_on_glitches,
 )
-from minseg_tui.quantities import format_constant, format_number
 
 U_TASK15: float = 5.0
 """The applied voltage of Task 15, V."""
@@ -83,8 +83,7 @@ class ResponseResult:
     'interpolated', 'extrapolated') or 'log' (no u_req column: the log's own u); steps: each
     rise; fit: details of the least-squares fit; K_ci: 95 % interval of K (rad/s per
     V); T_63_model: the 63 % reading taken on the fitted model sampled like the log (s);
-    T_63_note: a sentence saying how far the 63 % reading is from T and why (None without a
-    reading).
+    T_63_note: how far the 63 % reading is from T and why, a record (None without a reading).
     """
 
     K: float
@@ -100,7 +99,7 @@ class ResponseResult:
     model_uses: str = "least_squares"
     K_ci: tuple[float, float] = (math.nan, math.nan)
     T_63_model: float | None = None
-    T_63_note: str | None = None
+    T_63_note: T63Note | None = None
     dead_time: float = 0.0
     glitch_rows: int = 0
 
@@ -108,15 +107,6 @@ class ResponseResult:
     def K_determined(self) -> bool:
         """False when K's 95 % interval spans more than a factor of :data:`DETERMINED`."""
         return determined(self.K_ci)
-
-    def model_equation(self, num: Callable[[float], str], w: str = "omega") -> str:
-        """Task 14's model as text, the numbers written by ``num`` and the speed named ``w``:
-        "T w' = -w + K u_A", with "(t)" and "u_A(t - D s)" when it has a dead time."""
-        if self.dead_time > 0:
-            return (
-                f"{num(self.T)} {w}'(t) = -{w}(t) + {num(self.K)} u_A(t - {num(self.dead_time)} s)"
-            )
-        return f"{num(self.T)} {w}' = -{w} + {num(self.K)} u_A"
 
     @property
     def u_c(self) -> float:
@@ -150,16 +140,6 @@ class ResponseResult:
         if other is None or not abs(other - lab) > FRICTION_APART * abs(lab):
             return None
         return other
-
-    def friction_equation(self, num: Callable[[float], str], w: str = "omega") -> str | None:
-        """The fitted model with its dry friction as text ("T w' = -w + K' (u_A - u_c sgn
-        w)", with the dead time as in :meth:`model_equation`), None without dry friction."""
-        gain = self.K_above_u_c
-        if gain is None:
-            return None
-        u = f"u_A(t - {num(self.dead_time)} s)" if self.dead_time > 0 else "u_A"
-        t = "(t)" if self.dead_time > 0 else ""
-        return f"{num(self.T)} {w}'{t} = -{w}{t} + {num(gain)} ({u} - {num(self.u_c)} V sgn {w}{t})"
 
     @property
     def T_determined(self) -> bool:
@@ -199,68 +179,6 @@ class Identification:
         it found none): K is omega_ss / u_ss at the step's level, a line through zero, and
         with a breakaway voltage the speed at another voltage is not in proportion to it."""
         return self.step.omega_with_friction(U_TASK15) if self.step else None
-
-    def to_json(self) -> dict[str, object]:
-        """The --json object of the issue (SI units, i_ss in mA as entered)."""
-        out: dict[str, object] = {
-            "R": self.R,
-            "rows": [
-                {
-                    "u_req": r.reading.u_req,
-                    "u_ss": r.reading.u_ss,
-                    "omega_ss": r.reading.omega_ss,
-                    "i_ss": r.reading.i_ss,
-                    "k_v": r.k_v,
-                    "f": r.f,
-                }
-                for r in self.rows
-            ],
-            "k_v": self.k_v,
-            "k_a": self.k_a,
-            "f": self.f,
-        }
-        if self.step is not None:
-            s = self.step
-            out["step"] = {
-                "K": s.K,
-                "T": s.T,
-                "T_63": s.T_63,
-                "T_ci": [s.T_ci[0], s.T_ci[1]],
-                "J": s.J,
-                "omega_ss": s.omega_ss,
-                "K_ci": [s.K_ci[0], s.K_ci[1]],
-                "T_63_model": s.T_63_model,
-                "T_63_note": s.T_63_note,
-                "method": s.fit.method,
-                "shift": s.fit.shift,
-                "u_c": s.fit.u_c,
-                "dead_time": s.dead_time,
-                "T_determined": s.T_determined,
-                "T_on_bound": s.fit.T_on_bound,
-                "shift_on_bound": s.fit.shift_on_bound,
-                "glitch_rows": s.glitch_rows,
-                "left_out_rows": [r + s.glitch_rows for r in s.fit.left_out],
-                "T_rise_rows": None
-                if s.fit.rise_T is None or s.fit.rise_ci is None
-                else {"T": s.fit.rise_T, "T_ci": [s.fit.rise_ci[0], s.fit.rise_ci[1]]},
-                "T_shift_free": None
-                if s.fit.free_T is None or s.fit.free_ci is None
-                else {
-                    "T": s.fit.free_T,
-                    "T_ci": [s.fit.free_ci[0], s.fit.free_ci[1]],
-                    "shift": s.fit.free_shift,
-                },
-            }
-            out["model"] = {
-                "T": s.T,
-                "K": s.K,
-                "dead_time": s.dead_time,
-                "u_c": s.u_c,
-                "K_above_u_c": s.K_above_u_c,
-            }
-            out["omega_at_5V"] = self.omega_at_5V
-            out["omega_at_5V_with_friction"] = self.omega_at_5V_with_friction
-        return out
 
 
 _AT_ZERO = "below the driver's drop in the table"
@@ -463,6 +381,41 @@ def _K_interval(
     return (K - half, K + half)
 
 
+class RestWhy(Enum):
+    """What the part of the 63 % reading that sampling the fitted model does not give is:
+    WHOLE: nothing worth saying (the sampling is the whole difference); NOISE: the noise of
+    reading single samples, within the sway the speed's scatter gives (the shift on its
+    bound); SHAPE_MISFIT: the shape of the rise, with that noise (the shift on its bound);
+    SHAPE: the shape of the rise, beyond that noise; STALL: reading across a logging stall's
+    gap; SINGLE: the noise of reading single samples."""
+
+    WHOLE = "whole"
+    NOISE = "noise"
+    SHAPE_MISFIT = "shape_misfit"
+    SHAPE = "shape"
+    STALL = "stall"
+    SINGLE = "single"
+
+
+@dataclass(frozen=True)
+class T63Note:
+    """How far the manual's 63 % reading ``T_63`` (s) is from the least-squares ``T`` (s),
+    and why: ``model``, the reading taken the same way on the fitted model sampled every
+    ``ts`` (s) like the log (None when not taken: then only the difference is said), with the
+    ``dead_time`` (s) of the model; ``misfit``: the steps' time shift ended on its bound;
+    ``rest``: what the part the model does not give is; ``noise``: the speed's scatter
+    (rad/s) and the sway it gives a reading of single samples (s), or None."""
+
+    T_63: float
+    T: float
+    ts: float
+    model: float | None
+    dead_time: float
+    misfit: bool
+    rest: RestWhy
+    noise: tuple[float, float] | None
+
+
 def _T_63_note(
     T: float,
     T_63: float | None,
@@ -472,66 +425,31 @@ def _T_63_note(
     stalled: bool = False,
     misfit: bool = False,
     noise: tuple[float, float] | None = None,
-) -> str | None:
+) -> T63Note | None:
     """How far the manual's 63 % reading is from the least-squares T, and why (the dead time
     ``dead_time``, s, is part of it when the model has one; ``stalled``: rows of a logging
     stall were left out; ``misfit``: the steps' time shift ended on its bound, so the rise
     may have a shape one time constant does not follow, and the rest is that shape unless
     it is within ``noise``, :func:`reading_noise`'s scatter (rad/s) and the sway (s) it gives
-    a reading of single samples)."""
+    a reading of single samples). None without a reading."""
     if T_63 is None:
         return None
-    apart = T_63 - T
-    side = "longer" if apart > 0 else "shorter"
-    out = (
-        f"The 63 % reading ({format_constant(T_63, 's')}) is {format_constant(abs(apart), 's')} "
-        f"({abs(apart) / T * 100:.1f} %) {side} than the least-squares T ({format_constant(T, 's')})."
-    )
-    if T_63_model is None:
-        return out
-    sampled = T_63_model - T - dead_time
-    delay = (
-        f"the dead time moves the reading by {dead_time * 1e3:+.1f} ms and the sampling by "
-        if dead_time > 0
-        else "the sampling and the steps' time shift, held at its bound, move the reading by "
-        if misfit
-        else "the sampling alone moves the reading by "
-    )
-    out += (
-        f" Read the same way on the fitted model sampled every {ts * 1e3:.3g} ms like this log, it gives "
-        f"{format_constant(T_63_model, 's')}: {delay}{sampled * 1e3:+.1f} ms "
-        "(the logged speed is the mean over each sample interval, half a sample late, and the reading "
-        "joins the samples by straight lines)"
-    )
-    rest = T_63 - T_63_model
-    # the share that may go unexplained is of the difference the dead time leaves (a delay of
-    # 332 ms must not hide a 14 ms miss of the rise: micromouse-n20-duty255)
-    if abs(rest) > max(0.02 * T, 0.1 * abs(apart - dead_time)):
-        beyond_noise = noise is not None and abs(rest) > noise[1]
-        if misfit and noise is not None and abs(rest) <= noise[1]:
-            out += (
-                f", and {rest * 1e3:+.1f} ms is the noise of reading single samples: the speed "
-                f"scatters {format_number(noise[0], 3)} rad/s from sample to sample, which moves "
-                f"where it first crosses 63 % by about {noise[1] * 1e3:.3g} ms."
-            )
-        elif misfit:
-            out += (
-                f", and {rest * 1e3:+.1f} ms is the shape of the rise, which one time constant does "
-                "not follow (see the time shift below), with the noise of reading single samples."
-            )
-        elif beyond_noise and noise is not None and not stalled:
-            out += (
-                f", and {rest * 1e3:+.1f} ms is the shape of the rise, which one time constant does "
-                f"not follow: the speed scatters {format_number(noise[0], 3)} rad/s from sample to "
-                f"sample, which moves where it first crosses 63 % by only about "
-                f"{noise[1] * 1e3:.3g} ms."
-            )
-        else:
-            why = "reading across a logging stall's gap and" if stalled else "the noise of"
-            out += f", and {rest * 1e3:+.1f} ms is {why} reading single samples."
-    else:
-        out += ", which is the whole difference."
-    return out + " The least-squares fit models the sampling, so its T is the one the model uses."
+    rest = RestWhy.WHOLE
+    if T_63_model is not None:
+        left = T_63 - T_63_model
+        # the share that may go unexplained is of the difference the dead time leaves (a
+        # delay of 332 ms must not hide a 14 ms miss of the rise: micromouse-n20-duty255)
+        if abs(left) > max(0.02 * T, 0.1 * abs(T_63 - T - dead_time)):
+            beyond_noise = noise is not None and abs(left) > noise[1]
+            if misfit and noise is not None and abs(left) <= noise[1]:
+                rest = RestWhy.NOISE
+            elif misfit:
+                rest = RestWhy.SHAPE_MISFIT
+            elif beyond_noise and noise is not None and not stalled:
+                rest = RestWhy.SHAPE
+            else:
+                rest = RestWhy.STALL if stalled else RestWhy.SINGLE
+    return T63Note(T_63, T, ts, T_63_model, dead_time, misfit, rest, noise)
 
 
 def identify(

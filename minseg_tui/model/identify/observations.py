@@ -1,10 +1,17 @@
-"""What the numbers of Tasks 6-15 show: observations a student understands, each with a code."""
+"""What the numbers of Tasks 6-15 show: observations, each a typed record with a code.
+
+Each record holds what was found and the figures its sentence needs, nothing else; the
+sentences a student reads are made from them outside the model, in
+:mod:`minseg_tui.lab.content.identify_says` (issue 19 item 4: the model gives records).
+"""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from enum import Enum
+from typing import ClassVar
 
 import numpy as np
 
@@ -12,19 +19,7 @@ from minseg_tui.model.identify.risefit import RISE_SPAN, Rise, TimeConstantFit
 from minseg_tui.model.identify.rises import rise_windows
 from minseg_tui.model.identify.steady import Reading, Row, omega_ss_at
 from minseg_tui.model.runlog import RunLog, zeroed_first_row
-from minseg_tui.quantities import (
-    F_UNIT,
-    RPM,
-    format_constant,
-    format_fixed,
-    format_interval,
-    format_number,
-    format_percent,
-    format_quantity,
-    format_reading,
-    format_signed,
-    format_value,
-)
+from minseg_tui.quantities import RPM
 
 KV_OUTLIER: float = 0.15
 """A row's k_v this far (relative) from the median is called a bad reading."""
@@ -43,15 +38,109 @@ SHORT_T_SAMPLES: float = 3.0
 
 @dataclass(frozen=True)
 class Observation:
-    """Something the numbers show: a short code and a sentence a student understands."""
+    """Something the numbers show: a record whose class says what, with the figures its
+    sentence needs. ``code``: its short name (the contract of the JSON and the session's
+    notices: a class per case, and cases of one finding share a code)."""
 
-    code: str
-    message: str
+    code: ClassVar[str] = ""
 
 
-def _row_name(index: int, r: Reading) -> str:
-    where = f", line {r.line}" if r.line is not None else ""
-    return f"row {index + 1} (u_req {r.u_req:g} V{where})"
+@dataclass(frozen=True)
+class RowAt:
+    """A row of the table as a sentence names it: its number (1-based), its u_req (V) and its
+    line in the file (None when typed)."""
+
+    number: int
+    u_req: float
+    line: int | None
+
+
+def _row_at(index: int, r: Reading) -> RowAt:
+    return RowAt(index + 1, r.u_req, r.line)
+
+
+@dataclass(frozen=True)
+class CurrentInAmperes(Observation):
+    """A row's i_ss below 1: typed in A, not mA (``i_ss`` as typed)."""
+
+    code: ClassVar[str] = "i_ss_units"
+    row: RowAt
+    i_ss: float
+
+
+@dataclass(frozen=True)
+class CurrentHigh(Observation):
+    """A row's i_ss (mA) above 100 mA: the meter measured something else."""
+
+    code: ClassVar[str] = "i_ss_high"
+    row: RowAt
+    i_ss: float
+
+
+@dataclass(frozen=True)
+class SpeedInRpm(Observation):
+    """A row's omega_ss (as typed) per u_ss (V) above :data:`RPM_GAIN` but not in rpm: typed
+    in rpm."""
+
+    code: ClassVar[str] = "omega_ss_units"
+    row: RowAt
+    omega_ss: float
+    u_ss: float
+
+
+@dataclass(frozen=True)
+class KvNotPositive(Observation):
+    """A row whose R i_ss is not below u_ss: R (ohm), i_ss (mA), u_ss (V), its k_v (V s/rad)."""
+
+    code: ClassVar[str] = "k_v_nonpositive"
+    row: RowAt
+    R: float
+    i_ss: float
+    u_ss: float
+    k_v: float
+
+
+@dataclass(frozen=True)
+class KvOutlier(Observation):
+    """A row's k_v (V s/rad) ``dev`` (relative) from the median ``median`` of three or more."""
+
+    code: ClassVar[str] = "k_v_outlier"
+    row: RowAt
+    k_v: float
+    dev: float
+    median: float
+
+
+@dataclass(frozen=True)
+class KvDisagree(Observation):
+    """The two rows' k_v (V s/rad) ``a`` and ``b``, ``apart`` (relative to the median)."""
+
+    code: ClassVar[str] = "k_v_disagree"
+    a: float
+    b: float
+    apart: float
+
+
+@dataclass(frozen=True)
+class USsAboveUReq(Observation):
+    """u_ss above u_req on every row the results use: each row's ``(u_req, u_ss)`` (V)."""
+
+    code: ClassVar[str] = "u_ss_above_u_req"
+    rows: tuple[tuple[float, float], ...]
+
+
+@dataclass(frozen=True)
+class DryFriction(Observation):
+    """f (N m s/rad) falls with speed (rad/s): from ``f_slow`` at ``w_slow`` to ``f_fast`` at
+    ``w_fast``; ``line``: the viscous f (N m s/rad) and dry torque tau_c (N m) of a straight
+    line through the rows, when both come out positive (None else)."""
+
+    code: ClassVar[str] = "dry_friction"
+    f_slow: float
+    w_slow: float
+    f_fast: float
+    w_fast: float
+    line: tuple[float, float] | None
 
 
 LOG_AGREES: float = 0.3
@@ -69,77 +158,30 @@ def table_observations(
     for i, row in enumerate(rows):
         r = row.reading
         if r.i_ss < 1.0:
-            out.append(
-                Observation(
-                    "i_ss_units",
-                    f"{_row_name(i, r)}: i_ss = {r.i_ss:g} looks like amperes; the table wants mA ({r.i_ss * 1e3:g} mA?).",
-                )
-            )
+            out.append(CurrentInAmperes(_row_at(i, r), r.i_ss))
         elif r.i_ss > 100.0:
-            out.append(
-                Observation(
-                    "i_ss_high",
-                    f"{_row_name(i, r)}: i_ss = {r.i_ss:g} mA is above 100 mA; the manual says the meter is probably measuring the wrong thing or is in the wrong mode.",
-                )
-            )
+            out.append(CurrentHigh(_row_at(i, r), r.i_ss))
         log_agrees = K_log is not None and abs(r.omega_ss / r.u_ss / K_log - 1) <= LOG_AGREES
         if (
             r.omega_ss / r.u_ss > RPM_GAIN
             and r.omega_ss * RPM / r.u_ss <= RPM_GAIN
             and not log_agrees
         ):
-            out.append(
-                Observation(
-                    "omega_ss_units",
-                    f"{_row_name(i, r)}: omega_ss = {r.omega_ss:g} is {format_number(r.omega_ss / r.u_ss, 3)} per volt, more than this motor turns; it looks like rpm, the table wants rad/s ({format_reading(r.omega_ss * RPM, 'rad/s')}?).",
-                )
-            )
+            out.append(SpeedInRpm(_row_at(i, r), r.omega_ss, r.u_ss))
         if row.k_v <= 0:
-            out.append(
-                Observation(
-                    "k_v_nonpositive",
-                    f"{_row_name(i, r)}: R i_ss = {format_number(R * r.i_ss * 1e-3, 3)} V is not below u_ss = {r.u_ss:g} V, so k_v comes out {format_number(row.k_v, 3)}; check R and i_ss.",
-                )
-            )
+            out.append(KvNotPositive(_row_at(i, r), R, r.i_ss, r.u_ss, row.k_v))
     if len(rows) >= 3:
         for i, row in enumerate(rows):
             dev = (row.k_v - k_v) / k_v if k_v else math.inf
             if abs(dev) > KV_OUTLIER:
-                out.append(
-                    Observation(
-                        "k_v_outlier",
-                        (
-                            f"{_row_name(i, row.reading)}: k_v = {format_number(row.k_v)} V s/rad is {format_percent(abs(dev))} "
-                            f"{'above' if dev > 0 else 'below'} the median {format_number(k_v)}: probably a bad reading "
-                            "(u_ss, omega_ss or i_ss of that row); the median keeps it out of the result."
-                        ),
-                    )
-                )
+                out.append(KvOutlier(_row_at(i, row.reading), row.k_v, dev, k_v))
     elif len(rows) == 2:
         a, b = rows[0].k_v, rows[1].k_v
         if abs(a - b) / abs(k_v) > 2 * KV_OUTLIER:
-            out.append(
-                Observation(
-                    "k_v_disagree",
-                    (
-                        f"The two rows give k_v = {format_number(a)} and {format_number(b)} V s/rad, {format_percent(abs(a - b) / abs(k_v))} apart: "
-                        "one is probably a bad reading, and with two rows the median cannot tell which. Measure a third voltage."
-                    ),
-                )
-            )
+            out.append(KvDisagree(a, b, abs(a - b) / abs(k_v)))
     above = [row.reading.u_ss > (1.0 + U_SS_ABOVE) * row.reading.u_req for row in rows]
     if rows and all(above) and all(row.reading.u_req > 0 for row in rows):
-        out.append(
-            Observation(
-                "u_ss_above_u_req",
-                (
-                    f"u_ss is above u_req on {'the one row' if len(rows) == 1 else 'both rows' if len(rows) == 2 else f'all {len(rows)} rows'} "
-                    f"the results use ({_above_range(rows)}): a motor driver gives "
-                    "the motor at most the voltage it is asked for, less its drop, so the two columns "
-                    "look swapped. k_v, k_a and f divide by these readings: check the table."
-                ),
-            )
-        )
+        out.append(USsAboveUReq(tuple((row.reading.u_req, row.reading.u_ss) for row in rows)))
     out += _dry_friction(rows, k_a)
     return out
 
@@ -147,17 +189,6 @@ def table_observations(
 U_SS_ABOVE: float = 0.02
 """u_ss this far (relative) above u_req on every row says the columns are swapped (a driver
 gives at most what is requested)."""
-
-
-def _above_range(rows: Sequence[Row]) -> str:
-    """'by 52 % at 2.5 V and 9 % at 3.5 V': how far u_ss is above u_req on each row (walk 7:
-    "by 9 %" alone read as true of every row of the table)."""
-    each = [
-        f"{format_fixed(100.0 * (row.reading.u_ss / row.reading.u_req - 1.0), 0, '%')} at "
-        f"{row.reading.u_req:g} V"
-        for row in rows
-    ]
-    return "by " + (each[0] if len(each) == 1 else ", ".join(each[:-1]) + " and " + each[-1])
 
 
 def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
@@ -171,23 +202,138 @@ def _dry_friction(rows: Sequence[Row], k_a: float) -> list[Observation]:
         return []
     torque = k_a * np.array([row.reading.i_ss * 1e-3 for row in by_speed])
     slope, intercept = np.polyfit(w, torque, 1)
-    line = ""
-    if slope > 0 and intercept > 0:
-        line = (
-            f" A straight line k_a i_ss = f omega + tau_c through the rows gives a viscous f = {format_quantity(slope, F_UNIT)} "
-            f"and a dry friction torque tau_c = {format_value(intercept * 1e3, 'mN m')}."
-        )
-    return [
-        Observation(
-            "dry_friction",
-            (
-                f"f falls with speed, from {format_quantity(f[0], F_UNIT)} at {format_reading(w[0], 'rad/s')} to {format_quantity(f[-1], F_UNIT)} at {format_reading(w[-1], 'rad/s')}: "
-                "part of the friction is dry (Coulomb) friction, a torque that does not grow with speed. "
-                "The lab's model has viscous friction only, so its f depends on the speed it was measured at."
-                + line
-            ),
-        )
-    ]
+    line = (float(slope), float(intercept)) if slope > 0 and intercept > 0 else None
+    return [DryFriction(float(f[0]), float(w[0]), float(f[-1]), float(w[-1]), line)]
+
+
+@dataclass(frozen=True)
+class USsFromLog(Observation):
+    """The log has no u_req column: K divides by the applied voltage it recorded (``u_ss``, V)."""
+
+    code: ClassVar[str] = "u_ss_from_log"
+    u_ss: float
+
+
+@dataclass(frozen=True)
+class USsInterpolated(Observation):
+    """No table row at the steps' requested ``levels`` (V): u_ss (V) is interpolated between
+    the table's rows."""
+
+    code: ClassVar[str] = "u_ss_interpolated"
+    levels: tuple[float, ...]
+    u_ss: float
+
+
+@dataclass(frozen=True)
+class USsExtrapolated(USsInterpolated):
+    """As :class:`USsInterpolated`, extrapolated beyond the table's rows."""
+
+    code: ClassVar[str] = "u_ss_extrapolated"
+
+
+@dataclass(frozen=True)
+class SeveralLevels(Observation):
+    """The rising edges go to several requested ``levels`` (V)."""
+
+    code: ClassVar[str] = "several_levels"
+    levels: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class StepVsTable(Observation):
+    """The rise at ``t`` (s) settles at ``omega_ss`` (rad/s), the table gives ``omega_table``
+    (rad/s) at its ``u_req`` (V)."""
+
+    code: ClassVar[str] = "step_vs_table"
+    t: float
+    omega_ss: float
+    omega_table: float
+    u_req: float
+
+
+@dataclass(frozen=True)
+class TShort(Observation):
+    """T (s) shorter than ``samples`` sample periods ``ts`` (s)."""
+
+    code: ClassVar[str] = "T_short"
+    T: float
+    samples: float
+    ts: float
+
+
+class T63Why(Enum):
+    """Why the 63 % reading differs from the least-squares T, the case that applies:
+    DEAD_TIME_SHAPE: the dead time, and a shape of the rise beyond the noise; DEAD_TIME: the
+    dead time and the half-sample lag; SHAPE: mostly the shape of the rise; NOISE: the
+    sampling and the shift on its bound, and the noise of single samples; LAG: the
+    half-sample lag of a mean speed (and any filter)."""
+
+    DEAD_TIME_SHAPE = "dead_time_shape"
+    DEAD_TIME = "dead_time"
+    SHAPE = "shape"
+    NOISE = "noise"
+    LAG = "lag"
+
+
+@dataclass(frozen=True)
+class T63Differs(Observation):
+    """The 63 % reading ``T_63`` (s) and the least-squares ``T`` (s) more than 25 % apart, and
+    why (``why``). ``dead_time`` (s); ``shape``: the part of the reading the fitted model read
+    the same way does not give (s), or None; ``noise``: the speed's scatter (rad/s) and the
+    sway it gives a reading of single samples (s), or None (as
+    :func:`response_observations` takes them)."""
+
+    code: ClassVar[str] = "T_63_differs"
+    T_63: float
+    T: float
+    why: T63Why
+    dead_time: float
+    shape: float | None
+    noise: tuple[float, float] | None
+
+
+@dataclass(frozen=True)
+class NotSettled(Observation):
+    """``count`` steps last less than 5 T (T in s)."""
+
+    code: ClassVar[str] = "not_settled"
+    count: int
+    T: float
+
+
+@dataclass(frozen=True)
+class StepsSkipped(Observation):
+    """``count`` rises too short or too close to the start of the log to use."""
+
+    code: ClassVar[str] = "steps_skipped"
+    count: int
+
+
+def _t63_why(
+    T: float,
+    T_63: float,
+    dead_time: float,
+    shape: float | None,
+    noise: tuple[float, float] | None,
+) -> T63Why:
+    if (
+        dead_time > 0
+        and shape is not None
+        and noise is not None
+        and abs(shape) > max(0.02 * T, 0.1 * abs(T_63 - T - dead_time), noise[1])
+    ):
+        return T63Why.DEAD_TIME_SHAPE
+    if dead_time > 0:
+        return T63Why.DEAD_TIME
+    if (
+        shape is not None
+        and abs(shape) > 0.5 * abs(T_63 - T)
+        and (noise is None or abs(shape) > noise[1])
+    ):
+        return T63Why.SHAPE
+    if shape is not None and noise is not None and abs(shape) <= noise[1]:
+        return T63Why.NOISE
+    return T63Why.LAG
 
 
 def response_observations(
@@ -216,135 +362,54 @@ def response_observations(
     that sway is said to be the noise, not a shape one time constant does not follow.
     """
     observations: list[Observation] = []
-    levels = sorted({s.u_req for s in steps if s.u_req is not None})
+    levels = tuple(sorted({s.u_req for s in steps if s.u_req is not None}))
     if "log" in hows:
-        observations.append(
-            Observation(
-                "u_ss_from_log",
-                (
-                    f"The log has no u_req column, so K divides by the applied voltage the log recorded "
-                    f"({format_number(u_ss, 3)} V) instead of u_ss from the table."
-                ),
-            )
-        )
-    if "interpolated" in hows or "extrapolated" in hows:
-        which = "extrapolated beyond" if "extrapolated" in hows else "interpolated between"
-        observations.append(
-            Observation(
-                f"u_ss_{'extrapolated' if 'extrapolated' in hows else 'interpolated'}",
-                (
-                    f"No table row has u_req = {', '.join(f'{v:g}' for v in levels)} V, the step's requested level; "
-                    f"u_ss = {format_number(u_ss, 3)} V is {which} the table's rows."
-                ),
-            )
-        )
+        observations.append(USsFromLog(u_ss))
+    if "extrapolated" in hows:
+        observations.append(USsExtrapolated(levels, u_ss))
+    elif "interpolated" in hows:
+        observations.append(USsInterpolated(levels, u_ss))
     if len(levels) > 1:
-        observations.append(
-            Observation(
-                "several_levels",
-                (
-                    f"The rising edges go to several levels ({', '.join(f'{v:g}' for v in levels)} V); K is the median "
-                    "of omega_ss / u_ss over the steps and omega_ss the median of their speeds."
-                ),
-            )
-        )
+        observations.append(SeveralLevels(levels))
     for s in steps:
         if s.u_req is None:
             continue
         w_table = omega_ss_at(rows, s.u_req)
         if w_table is not None and abs(s.omega_ss - w_table) > RISE_VS_TABLE * w_table:
-            observations.append(
-                Observation(
-                    "step_vs_table",
-                    (
-                        f"The step at t = {format_number(s.t, 3)} s settles at {format_number(s.omega_ss, 3)} rad/s, but the table gives "
-                        f"{format_number(w_table, 3)} rad/s at u_req = {s.u_req:g} V ({format_percent(abs(s.omega_ss / w_table - 1))} apart): "
-                        "the two experiments do not agree (a different wheel load, battery level, or a misread value)."
-                    ),
-                )
-            )
+            observations.append(StepVsTable(s.t, s.omega_ss, w_table, s.u_req))
             break
     if T < SHORT_T_SAMPLES * ts:
-        observations.append(
-            Observation(
-                "T_short",
-                (
-                    f"T = {format_constant(T, 's')} is shorter than {SHORT_T_SAMPLES:g} sample periods (Ts = {format_reading(ts, 'ms', 3)}): "
-                    "the speed rises within a few samples. The 63 % reading, the manual's way, reads T off those samples, "
-                    "so the sampling and the velocity computation move it as much as the motor does; the least-squares T "
-                    "fits whole stretches of the run with the sampling modelled, so the two differ. Both are fair "
-                    "readings of T; the program's model and its least-squares J use the least-squares one."
-                ),
-            )
-        )
+        observations.append(TShort(T, SHORT_T_SAMPLES, ts))
     if T_63 is not None and abs(T_63 - T) > 0.25 * T:
-        observations.append(
-            Observation(
-                "T_63_differs",
-                (
-                    f"The 63 % reading ({format_constant(T_63, 's')}) and the least-squares T ({format_constant(T, 's')}) differ by "
-                    f"{format_percent(abs(T_63 / T - 1))}. "
-                    + (
-                        f"The reading counts from the logged step, so it holds the dead time of "
-                        f"{format_constant(dead_time, 's')} that T does not. Counted from the end of that dead time "
-                        f"it is {format_constant(T_63 - dead_time, 's')} where the fitted model read the "
-                        f"same way gives {format_constant(T_63 - shape - dead_time, 's')}: the "
-                        f"{format_signed(shape * 1e3, 3)} ms between them is the shape of the rise, which "
-                        "one time constant does not follow, not the sampling (the speed's scatter "
-                        f"moves the reading by only about {noise[1] * 1e3:.3g} ms). Read T with care."
-                        if dead_time > 0
-                        and shape is not None
-                        and noise is not None
-                        and abs(shape) > max(0.02 * T, 0.1 * abs(T_63 - T - dead_time), noise[1])
-                        else f"The reading counts from the logged step, so it holds the dead time of "
-                        f"{format_constant(dead_time, 's')} that T does not; besides, the measured speed is the "
-                        "mean over each sample interval and lags the true speed by half a sample."
-                        if dead_time > 0
-                        else f"Most of it ({format_signed(shape * 1e3, 3)} ms) is the shape of the rise, which one "
-                        "time constant does not follow (see the time shift below): no one time "
-                        "constant meets both the 63 % point and the whole rise here."
-                        if shape is not None
-                        and abs(shape) > 0.5 * abs(T_63 - T)
-                        and (noise is None or abs(shape) > noise[1])
-                        else f"Of it, {format_signed((T_63 - T - shape) * 1e3, 3)} ms is the sampling "
-                        "and the steps' time shift, held at its bound (the measured speed is the mean "
-                        "over each sample interval, half a sample late), and "
-                        f"{format_signed(shape * 1e3, 3)} ms the noise of reading single samples: the "
-                        f"speed scatters {format_number(noise[0], 3)} rad/s from sample to sample, which "
-                        f"moves where it first crosses 63 % by about {noise[1] * 1e3:.3g} ms; the "
-                        "least-squares T uses every sample, so it is the one to trust."
-                        if shape is not None and noise is not None and abs(shape) <= noise[1]
-                        else "The measured speed is the mean over each sample interval, so "
-                        "it lags the true speed by half a sample; a velocity filter lags it more."
-                    )
-                ),
-            )
-        )
+        why = _t63_why(T, T_63, dead_time, shape, noise)
+        observations.append(T63Differs(T_63, T, why, dead_time, shape, noise))
     short = [s for s in steps if s.duration < 5 * T]
     if short:
-        observations.append(
-            Observation(
-                "not_settled",
-                (
-                    f"{len(short)} step(s) last less than 5 T ({format_constant(5 * T, 's')}): the speed has not quite settled "
-                    "by their end, so omega_ss is the final speed of the fitted response rather than a reading "
-                    "of it (a mean over the end of a step would come out low); longer steps would check it."
-                ),
-            )
-        )
+        observations.append(NotSettled(len(short), T))
     if skipped:
-        observations.append(
-            Observation(
-                "steps_skipped",
-                (f"{skipped} rise(s) were too short or too close to the start of the log to use."),
-            )
-        )
+        observations.append(StepsSkipped(skipped))
     return observations
 
 
 FRICTION_APART: float = 0.005
 """The lab's K u_A and the model with dry friction further apart than this (relative) at
 5 V: Task 15's answer is given both ways, with why."""
+
+
+@dataclass(frozen=True)
+class FrictionTask15(Observation):
+    """The fit found dry friction: ``gain`` (rad/s per V) above a breakaway ``u_c`` (V); K
+    (rad/s per V) read at the step's ``u_ss`` (V); at ``u_A`` (V) the lab's model gives
+    ``lab`` (rad/s) and the model with dry friction ``with_friction`` (rad/s)."""
+
+    code: ClassVar[str] = "friction_task15"
+    gain: float
+    u_c: float
+    K: float
+    u_ss: float
+    u_A: float
+    lab: float
+    with_friction: float
 
 
 def friction_observations(
@@ -360,34 +425,27 @@ def friction_observations(
     with_friction = K_above_u_c * (u_A - u_c) if u_A > u_c else 0.0
     if not lab > 0 or abs(with_friction / lab - 1) <= FRICTION_APART:
         return []
-    more = "more" if lab > with_friction else "less"
-    return [
-        Observation(
-            "friction_task15",
-            (
-                f"The fit found dry friction: its steady speed grows by {format_number(K_above_u_c, 4)} "
-                f"rad/s per volt above a breakaway voltage u_c = {format_number(u_c, 3)} V, a line "
-                "that does not pass through zero. K = omega_ss / u_ss "
-                f"({format_number(K, 4)} rad/s per V) is read at the step's {format_number(u_ss, 3)} V and "
-                "makes the speed proportional to u_A, as the lab's model (Task 14) has viscous "
-                "friction only, no dry friction. "
-                f"So at u_A = {u_A:g} V (Task 15) that model gives {format_number(lab, 4)} rad/s, "
-                f"{format_percent(abs(lab / with_friction - 1)) if with_friction > 0 else 'far'} {more} "
-                f"than the {format_number(with_friction, 4)} rad/s of the model with dry friction."
-            ),
-        )
-    ]
+    return [FrictionTask15(K_above_u_c, u_c, K, u_ss, u_A, lab, with_friction)]
 
 
-def _lines(log: RunLog, rows: Sequence[int]) -> str:
-    """'line 12' / 'lines 5-6' / 'rows 1-2' for 0-based rows of ``log``."""
+@dataclass(frozen=True)
+class Lines:
+    """Rows of a log as a sentence names them: ``first`` to ``last`` (equal for one), the
+    file's line numbers when ``by_line``, else 1-based row numbers."""
+
+    first: int
+    last: int
+    by_line: bool
+
+
+def _lines(log: RunLog, rows: Sequence[int]) -> Lines:
+    """The file's lines of the 0-based rows of ``log`` (its rows, 1-based, when a line is
+    unknown)."""
     lines = [log.line_of(r) for r in rows]
     if all(x is not None for x in lines):
         nums = [int(x) for x in lines if x is not None]
-        word, first, last = "line", nums[0], nums[-1]
-    else:
-        word, first, last = "row", rows[0] + 1, rows[-1] + 1
-    return f"{word} {first}" if first == last else f"{word}s {first}-{last}"
+        return Lines(nums[0], nums[-1], True)
+    return Lines(rows[0] + 1, rows[-1] + 1, False)
 
 
 COARSE_COUNT = 0.1
@@ -425,6 +483,144 @@ def _behind_at_first(log: RunLog, fit: TimeConstantFit) -> bool:
     return bool(behind) and float(np.median(behind)) > BEHIND_SHARE
 
 
+@dataclass(frozen=True)
+class GlitchRows(Observation):
+    """The first ``count`` rows left out as switch-on glitches. ``zeroed``: the first of them
+    reads 0 rad/s as the first row of a speed from counts does (``first``: where); ``rows``:
+    the glitch rows besides it, whose speeds (rad/s) are ``speeds``; ``start``: where the fit
+    starts."""
+
+    code: ClassVar[str] = "glitch_rows"
+    count: int
+    zeroed: bool
+    first: Lines
+    rows: Lines
+    n_rows: int
+    speeds: tuple[float, ...]
+    start: Lines
+
+
+@dataclass(frozen=True)
+class LoggingStall(Observation):
+    """A row (``at``) after a ``gap`` (s) of ``gap / ts`` sample periods (``ts``, s), left out
+    of the fit; ``mended``: the angle rebuilt from the speed column carried it across."""
+
+    code: ClassVar[str] = "logging_stall"
+    at: Lines
+    gap: float
+    ts: float
+    mended: bool
+
+
+@dataclass(frozen=True)
+class DeadTime(Observation):
+    """A dead time (s) in the model, more than the one sample period ``bound`` (s); with
+    ``from_rise``, the rows of the rise alone show it (``onset``: where the speed first
+    shows, s after the steps, or None)."""
+
+    code: ClassVar[str] = "dead_time"
+    dead_time: float
+    bound: float
+    from_rise: bool
+    onset: float | None
+
+
+class LateStart(Enum):
+    """Why a shift on its upper bound is no dead time: MOVED_EARLY: a dead time fits better
+    but the wheel moves before it would end; NO_BETTER: a dead time does not fit clearly
+    better; COARSE: no dead time to fit, and one count per sample is too coarse to show the
+    start; SLOW_START: no dead time to fit, the rise starts more slowly than one time
+    constant gives."""
+
+    MOVED_EARLY = "moved_early"
+    NO_BETTER = "no_better"
+    COARSE = "coarse"
+    SLOW_START = "slow_start"
+
+
+@dataclass(frozen=True)
+class ShiftFree:
+    """The fit with the shift free up to the wheel's first move (``onset``, s after the steps):
+    its shift (s), T (s) and T's 95 % interval (s)."""
+
+    onset: float
+    shift: float
+    T: float
+    ci: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class ShiftLate(Observation):
+    """The steps' time shift ended on its upper bound (``shift``, s): the wheel answers later
+    than the sampling explains, and ``why`` it is no dead time. ``moved_early``: the share of
+    the rise done when a dead time would end; ``onset``: where the wheel first moves (s after
+    the steps); ``count``: one count per sample (rad/s) and ``rise`` the rise (rad/s), for
+    COARSE; ``free``: the fit with the shift free, when made."""
+
+    code: ClassVar[str] = "shift_on_bound"
+    shift: float
+    why: LateStart
+    moved_early: float | None
+    onset: float | None
+    count: float | None
+    rise: float
+    free: ShiftFree | None
+
+
+@dataclass(frozen=True)
+class ShiftEarly(Observation):
+    """The shift ended on its lower bound (``shift``, s) and the wheel moves before the logged
+    steps: the steps are logged late."""
+
+    code: ClassVar[str] = "shift_on_bound"
+    shift: float
+
+
+@dataclass(frozen=True)
+class ShiftMisfit(Observation):
+    """The shift ended on its lower bound (``shift``, s) although the wheel does not move
+    before the steps (``onset``: where it first moves, s after them, when well past the one
+    sample period; None else): a shape the model misses. ``behind``: the fitted response
+    starts before the wheel and rises more slowly (``rows_apart``: the later rows pull T);
+    else the rise is steeper at first and slower later."""
+
+    code: ClassVar[str] = "shift_on_bound"
+    shift: float
+    onset: float | None
+    behind: bool
+    rows_apart: bool
+
+
+@dataclass(frozen=True)
+class TRowsApart(Observation):
+    """The rows up to ``span`` T after each edge alone give ``rise_T`` (s, 95 % ``rise_ci``),
+    all the rows ``T`` (s)."""
+
+    code: ClassVar[str] = "T_rows_apart"
+    span: float
+    rise_T: float
+    rise_ci: tuple[float, float]
+    T: float
+
+
+@dataclass(frozen=True)
+class TOnBound(Observation):
+    """T (s) ended on the bound of the range ``lo`` to ``hi`` (s) the fit tries."""
+
+    code: ClassVar[str] = "T_on_bound"
+    T: float
+    lo: float
+    hi: float
+
+
+@dataclass(frozen=True)
+class TNotDetermined(Observation):
+    """T's 95 % interval spans more than a factor of ten; ``T`` (s) is only the best fit."""
+
+    code: ClassVar[str] = "T_not_determined"
+    T: float
+
+
 def fit_observations(
     log: RunLog, glitches: int, fit: TimeConstantFit, T_determined: bool
 ) -> list[Observation]:
@@ -444,209 +640,60 @@ def fit_observations(
     if glitches:
         zeroed = zeroed_first_row(log.omega, glitches)
         rows = list(range(1 if zeroed else 0, glitches))
-        speeds = ", ".join(format_reading(float(log.omega[r]), "", 3) for r in rows)
-        first = (
-            f"{_lines(log, [0]).capitalize()} reads 0 rad/s, as the first row of a speed taken "
-            "from counts does (no sample before it), and the "
-            + (f"{len(rows)} rows after it" if len(rows) > 1 else "row after it")
-            + f" ({_lines(log, rows)}) read{'' if len(rows) > 1 else 's'} {speeds} rad/s"
-            if zeroed
-            else f"The first {glitches} row(s) ({_lines(log, rows)}) read {speeds} rad/s"
-        )
         out.append(
-            Observation(
-                "glitch_rows",
-                (
-                    f"{first} while the "
-                    "command holds still, further from the speed of the rows after them than any later "
-                    "row ever is: switch-on glitches of the logging, not motion. They are left out"
-                    + (" with the zeroed row before them" if zeroed else "")
-                    + f": the fit starts at {_lines(log, [glitches])}."
-                ),
+            GlitchRows(
+                count=glitches,
+                zeroed=zeroed,
+                first=_lines(log, [0]),
+                rows=_lines(log, rows),
+                n_rows=len(rows),
+                speeds=tuple(float(log.omega[r]) for r in rows),
+                start=_lines(log, [glitches]),
             )
         )
     t = log.board_time()
     for r in fit.left_out:
         k = r + glitches
         gap = float(t[k] - t[k - 1])
-        out.append(
-            Observation(
-                "logging_stall",
-                (
-                    f"{_lines(log, [k]).capitalize()} comes after a gap of {format_fixed(gap * 1e3, 0, 'ms')} in the logging "
-                    f"({format_fixed(gap / ts, 1)} sample periods) and departs from the fit by far more than the "
-                    "other rows do: its encoder value or its speed does not belong to its timestamp (a "
-                    "logging stall), not the motor. It is left out of the fit"
-                    + (
-                        "; the angle rebuilt from the speed column carried that speed across the gap "
-                        "and stayed off after it, so the fit takes that step off the rows after it."
-                        if fit.angle_mended
-                        else "."
-                    )
-                ),
-            )
-        )
+        out.append(LoggingStall(_lines(log, [k]), gap, ts, fit.angle_mended))
     bound = fit.shift_bound
     if fit.dead_time > 0:
-        out.append(
-            Observation(
-                "dead_time",
-                (
-                    f"The wheel answers {format_fixed(fit.dead_time * 1e3, 0, 'ms')} after the logged steps, more than the "
-                    f"one sample period ({format_reading(bound, 'ms', 3)}) that the sampling's lateness can explain: a "
-                    "dead time. It is fitted as the model check fits it and is part of the model "
-                    f"(Task 14): T omega'(t) = -omega(t) + K u_A(t - {format_number(fit.dead_time, 3)} s). T is counted "
-                    "from the moment the wheel answers."
-                    + (
-                        " The rows of the rise alone show it"
-                        + (
-                            f" (the speed first shows {format_constant(fit.onset, 's')} after the steps)"
-                            if fit.onset is not None
-                            else ""
-                        )
-                        + ": over every row, the slow part long after the rise, which one time "
-                        "constant does not follow, would hold a response without it early, "
-                        "starting before the wheel moves. The model check (analyze) fits the "
-                        "speed of every row, that slow part included, and can give a shorter "
-                        "dead time."
-                        if fit.dead_time_from_rise
-                        else ""
-                    )
-                ),
-            )
-        )
+        out.append(DeadTime(fit.dead_time, bound, fit.dead_time_from_rise, fit.onset))
     elif fit.shift_on_bound and fit.shift > 0:
-        late = (
-            "A dead time fits the log better, but it is not one: the wheel already moves before "
-            f"it would end ({format_percent(fit.moved_early)} of the way to its new speed), so the rise "
-            "starts at once but slowly, a shape the first-order model misses (an S-shaped start: "
-            "a second pole or a filtered speed; a ramp: a current limit). Read T with care."
+        why = (
+            LateStart.MOVED_EARLY
             if fit.moved_early is not None
-            else (
-                "A dead time does not fit the log clearly better."
-                if fit.dead_time_sought
-                else (
-                    "The wheel first moves "
-                    + (f"{format_constant(fit.onset, 's')} " if fit.onset is not None else "")
-                    + "after the steps, no later than the rise itself and the sampling explain, "
-                    + (
-                        f"so there is no dead time to fit. One count per sample is {format_number(count, 3)} "
-                        f"rad/s, {format_percent(count / rise)} of the rise, too coarse to show how the "
-                        "rise starts: a slow start (a second pole or a filtered speed) and the counts' "
-                        "steps look alike here. Read T with care."
-                        if count is not None and count > COARSE_COUNT * rise
-                        else "so there is no dead time to fit: the rise starts more slowly than one "
-                        "time constant gives (an S-shaped start: a second pole or a filtered speed), "
-                        "a shape the first-order model misses. Read T with care."
-                    )
-                )
-            )
+            else LateStart.NO_BETTER
+            if fit.dead_time_sought
+            else LateStart.COARSE
+            if count is not None and count > COARSE_COUNT * rise
+            else LateStart.SLOW_START
         )
-        out.append(
-            Observation(
-                "shift_on_bound",
-                (
-                    f"The time shift of the steps against the samples ended on its bound of one sample "
-                    f"period ({format_signed(fit.shift * 1e3, 3)} ms): the wheel answers later than the sampling's "
-                    f"lateness explains. {late} T is the fit with the shift held there."
-                    + (
-                        f" With the shift free up to where the wheel is first seen to move "
-                        f"({format_constant(fit.onset, 's')} after the steps), the fit starts the response "
-                        f"{format_signed(fit.free_shift * 1e3, 3)} ms from the steps with T = "
-                        f"{format_constant(fit.free_T, 's')} (95 % "
-                        f"{format_interval(fit.free_ci[0] * 1e3, fit.free_ci[1] * 1e3, 'ms')}): "
-                        "a later start goes with a shorter T, and the samples do not pin where a "
-                        "first-order response would start (coarse counts, or a start that bends "
-                        "in smoothly), so the 95 % interval of T holds both fits."
-                        if fit.free_T is not None
-                        and fit.free_ci is not None
-                        and fit.free_shift is not None
-                        and fit.onset is not None
-                        else ""
-                    )
-                ),
-            )
+        free = (
+            ShiftFree(fit.onset, fit.free_shift, fit.free_T, fit.free_ci)
+            if fit.free_T is not None
+            and fit.free_ci is not None
+            and fit.free_shift is not None
+            and fit.onset is not None
+            else None
         )
+        out.append(ShiftLate(fit.shift, why, fit.moved_early, fit.onset, count, rise, free))
     elif fit.shift_on_bound and fit.moved_before_rise:
-        out.append(
-            Observation(
-                "shift_on_bound",
-                (
-                    f"The time shift of the steps against the samples ended on its bound of one sample "
-                    f"period ({format_signed(fit.shift * 1e3, 3)} ms): the wheel moves earlier than the logged steps "
-                    "by more than the sampling's lateness explains. The steps in the log are placed late "
-                    "(a command logged after it acted); T is the fit with the shift held at the bound."
-                ),
-            )
-        )
+        out.append(ShiftEarly(fit.shift))
     elif fit.shift_on_bound:
-        shape = (
-            ": the fitted response starts before the wheel does and then rises more slowly "
-            "than the wheel"
-            + (
-                " (the rows long after the rise pull the fit: see T's rows below)"
-                if fit.rise_T is not None
-                else ""
-            )
-            + ", a shape the first-order model misses"
-            if _behind_at_first(log.rows_from(glitches) if glitches else log, fit)
-            else ": the rise is steeper at first and slower later than one "
-            "time constant gives (a second, slower process), a shape the first-order model "
-            "misses"
-        )
         out.append(
-            Observation(
-                "shift_on_bound",
-                (
-                    f"The time shift of the steps against the samples ended on its bound of one sample "
-                    f"period ({format_signed(fit.shift * 1e3, 3)} ms), earlier than the steps, although the wheel "
-                    "does not move before them"
-                    + (
-                        f" (it first moves {format_constant(fit.onset, 's')} after them)"
-                        if fit.onset is not None and fit.onset > 1.5 * bound
-                        else ""
-                    )
-                    + f"{shape}. T is the fit with the shift held at the bound; read it with care."
-                ),
+            ShiftMisfit(
+                fit.shift,
+                fit.onset if fit.onset is not None and fit.onset > 1.5 * bound else None,
+                _behind_at_first(log.rows_from(glitches) if glitches else log, fit),
+                fit.rise_T is not None,
             )
         )
     if fit.rise_T is not None and fit.rise_ci is not None:
-        longer = fit.T > fit.rise_T
-        out.append(
-            Observation(
-                "T_rows_apart",
-                (
-                    f"T depends on which rows are fitted: the rows up to {RISE_SPAN:g} T after each "
-                    f"edge alone give {format_constant(fit.rise_T, 's')} (95 % "
-                    f"{format_interval(fit.rise_ci[0] * 1e3, fit.rise_ci[1] * 1e3, 'ms')}), all the rows the fit uses "
-                    f"{format_constant(fit.T, 's')}: the later rows, long after the rise, pull T "
-                    f"{'longer' if longer else 'shorter'}: the rise and the speed after it do not "
-                    "follow one time constant, a shape the first-order model misses. The 95 % "
-                    "interval of T spans both fits. Read T with care."
-                ),
-            )
-        )
+        out.append(TRowsApart(RISE_SPAN, fit.rise_T, fit.rise_ci, fit.T))
     if fit.T_on_bound:
         lo, hi = fit.T_range
-        out.append(
-            Observation(
-                "T_on_bound",
-                (
-                    f"T = {format_constant(fit.T, 's')} ended on the bound of the range the fit tries "
-                    f"({format_reading(lo, 'ms', 3)} to {format_reading(hi, 's', 3)}): this log cannot tell T beyond it, and the "
-                    "first-order model does not describe it well."
-                ),
-            )
-        )
+        out.append(TOnBound(fit.T, lo, hi))
     if not T_determined:
-        out.append(
-            Observation(
-                "T_not_determined",
-                (
-                    f"T's 95 % interval spans more than a factor of ten: T is not determined by this "
-                    f"log; {format_constant(fit.T, 's')} is only the best fit. Longer steps, more of them, or a "
-                    "faster sampling would tell it."
-                ),
-            )
-        )
+        out.append(TNotDetermined(fit.T))
     return out

@@ -28,8 +28,7 @@ from minseg_tui.model.identify.lsq import dot
 from minseg_tui.model.identify.rises import RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
 from minseg_tui.model.identify.windowfit import WindowsFit, fit_windows
-from minseg_tui.model.runlog import RunLog, command, find_edges
-from minseg_tui.quantities import format_number
+from minseg_tui.model.runlog import MEAN_SPEED, RunLog, command, find_edges
 
 FloatArray = NDArray[np.float64]
 
@@ -100,13 +99,38 @@ class Rise:
 
 
 @dataclass(frozen=True)
+class WholeLogWhy:
+    """Why T comes from one first-order model over the whole log: on the rises its residual
+    is ``ratio`` times that of the rises fitted one by one (``one``: the log has one rise), so
+    every edge is used, ``up`` rising and ``down`` falling; ``u_c``: dry friction's breakaway
+    voltage (V) this fit found, None without."""
+
+    ratio: float
+    one: bool
+    up: int
+    down: int
+    u_c: float | None
+
+
+@dataclass(frozen=True)
+class RisesWhy:
+    """Why T comes from the rises alone: ``flat``, the applied voltage u never changes in the
+    log (nothing else to model); else the whole-log model leaves ``ratio`` times the residual
+    of the rises fitted one by one (None: theirs is 0, it leaves more)."""
+
+    ratio: float | None
+    flat: bool
+
+
+@dataclass(frozen=True)
 class TimeConstantFit:
     """The least-squares T (s) with its 95 % interval (s) and standard error (s), the residual
     standard deviation of the angle (rad), the rows and rises used, where the angle and
     the time came from, and:
 
     method: ``whole_log`` or ``rising_steps`` (see the module docstring) and ``why``, a
-    sentence; shift: the fitted time shift of the steps (s; > 0: the motor answers later than
+    record of why (:class:`WholeLogWhy`, :class:`RisesWhy`); stamped: the time came from the
+    board's timestamps (t_us), not the t column; shift: the fitted time shift of the steps (s; > 0: the motor answers later than
     the log says, < 0: the samples are read late) with its 95 % interval; omega_ss and
     omega_ss_se: the fitted steady speed of each rise and its standard error (rad/s);
     gain: the whole-log fit's K per volt of the log's u (rad/s per V, None for the other);
@@ -135,9 +159,9 @@ class TimeConstantFit:
     n_rows: int
     n_rises: int
     angle_source: str
-    time_source: str
+    stamped: bool
     method: str
-    why: str
+    why: WholeLogWhy | RisesWhy
     shift: float
     shift_ci: tuple[float, float]
     omega_ss: tuple[float, ...]
@@ -198,7 +222,7 @@ def _stall_offsets(log: RunLog, fit: TimeConstantFit, stalls: tuple[int, ...]) -
     angle is measured (theta, count) or is the counts (an Euler speed over a fixed period:
     its angle cannot stay off), or no step stays (a one-row spike comes back)."""
     theta, source = log.angle()
-    if not source.startswith("the omega column read as the mean speed"):
+    if source != MEAN_SPEED:
         return None
     r = theta - fit.predicted
     step = 2.0 * math.pi / log.cpr
@@ -479,7 +503,6 @@ def _fit(
             d_on_bound and 0.0 < d <= bound and not T_on_bound and late_end_at > bound and not moved
         )
 
-    time_source = "the board's timestamps (t_us)" if stamped else "the t column"
     n_w = rises_fit.rows.size
     sigma_w = math.sqrt(rises_fit.rss / max(n_w - rises_fit.n_params, 1))
     common: dict[str, Any] = dict(
@@ -494,7 +517,7 @@ def _fit(
         on_rises = whole.residuals[rises_fit.rows]
         rms = math.sqrt(dot(on_rises, on_rises) / max(n_w, 1))
         if rms <= ADEQUATE * sigma_w and sigma_w > 0:  # (0: the steps fit exactly, no scale)
-            fit = _from_whole(log, whole, windows, theta, angle_source, time_source, rms, sigma_w)
+            fit = _from_whole(log, whole, windows, theta, angle_source, stamped, rms, sigma_w)
             rise: tuple[float, float, float] | None = None  # (T, se, half width) of the rises
             if not whole.T_on_bound:
                 mask = _rise_rows(t, clusters[1:], whole.T, whole.d, keep)
@@ -525,16 +548,10 @@ def _fit(
                 T_on_bound=whole.T_on_bound,
                 **common,
             )
-        times = f"{rms / sigma_w:.1f} times" if sigma_w > 0 else "more than"
-        why = (
-            f"the first-order model over the whole log leaves {times} the "
-            "residual of the steps fitted one by one (the wheel between the steps does not "
-            "follow it: coasting at zero command, or a speed that wanders), so T comes from "
-            "the rises alone"
-        )
+        why = RisesWhy(rms / sigma_w if sigma_w > 0 else None, flat=False)
     else:
-        why = "the applied voltage u never changes in the log, so T comes from the rises"
-    fit = _from_rises(log, rises_fit, windows, theta, angle_source, time_source, sigma_w, why)
+        why = RisesWhy(None, flat=True)
+    fit = _from_rises(log, rises_fit, windows, theta, angle_source, stamped, sigma_w, why)
     rise = None
     if not rises_fit.T_on_bound:
         starts = np.array([w.edge.start for w in windows], dtype=np.int64)
@@ -784,7 +801,7 @@ def _from_whole(
     windows: list[RiseWindow],
     theta: FloatArray,
     angle_source: str,
-    time_source: str,
+    stamped: bool,
     rms: float,
     sigma_w: float,
 ) -> TimeConstantFit:
@@ -792,15 +809,8 @@ def _from_whole(
     se = math.sqrt(max(float(cov.cov[1, 1]), 0.0))
     u = np.asarray(log.u, dtype=float)
     highs = [float(np.mean(u[w.edge.end : w.post_last])) for w in windows]
-    friction = (
-        f"; dry friction found: breakaway at u_c = {format_number(fit.u_c)} V in this fit "
-        "(the model check's fit of the speed finds its own u_c)"
-        if fit.friction
-        else ""
-    )
-    one = len(windows) == 1
-    alone = "the rise fitted alone does" if one else "the rises fitted one by one do"
-    theirs = "that fit's" if one else "theirs"
+    edges = np.flatnonzero(np.diff(u) != 0) + 1
+    up = int(sum(abs(u[k]) > abs(u[k - 1]) for k in edges))
     return TimeConstantFit(
         T=fit.T,
         ci=(max(fit.T - cov.half_width(1), 0.0), fit.T + cov.half_width(1)),
@@ -809,13 +819,14 @@ def _from_whole(
         n_rows=int(theta.size),
         n_rises=len(windows),
         angle_source=angle_source,
-        time_source=time_source,
+        stamped=stamped,
         method=WHOLE_LOG,
-        why=(
-            f"one first-order model fits the whole log as well as {alone} "
-            f"(on the {'rise' if one else 'rises'} its residual is "
-            f"{rms / sigma_w:.2f} times {theirs}), so "
-            f"{_edges_used(u)}{friction}"
+        why=WholeLogWhy(
+            ratio=rms / sigma_w,
+            one=len(windows) == 1,
+            up=up,
+            down=int(edges.size) - up,
+            u_c=fit.u_c if fit.friction else None,
         ),
         shift=fit.d,
         shift_ci=_interval(fit.d, cov.half_width(2)),
@@ -828,26 +839,15 @@ def _from_whole(
     )
 
 
-def _edges_used(u: FloatArray) -> str:
-    """How many edges of the log (rising: |u| grows; falling: any other change of u) the
-    whole-log fit uses, in words."""
-    edges = np.flatnonzero(np.diff(u) != 0) + 1
-    up = int(sum(abs(u[k]) > abs(u[k - 1]) for k in edges))
-    down = edges.size - up
-    if down == 0:
-        return f"every edge is used (the log has {up} rising {'edge' if up == 1 else 'edges'} and no falling one)"
-    return f"every edge, rising and falling, is used ({up} rising, {down} falling)"
-
-
 def _from_rises(
     log: RunLog,
     fit: WindowsFit,
     windows: list[RiseWindow],
     theta: FloatArray,
     angle_source: str,
-    time_source: str,
+    stamped: bool,
     sigma_w: float,
-    why: str,
+    why: WholeLogWhy | RisesWhy,
 ) -> TimeConstantFit:
     cov = fit.covariance
     se = math.sqrt(max(float(cov.cov[0, 0]), 0.0))
@@ -861,7 +861,7 @@ def _from_rises(
         n_rows=int(fit.rows.size),
         n_rises=len(windows),
         angle_source=angle_source,
-        time_source=time_source,
+        stamped=stamped,
         method=RISES,
         why=why,
         shift=fit.d,
