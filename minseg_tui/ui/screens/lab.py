@@ -1055,12 +1055,19 @@ class LabScreen(StatusScreen):
     def watch_requested(self, level: float | None) -> None:
         """F3 set the motor to ``level`` (V) while the group types in a row of another voltage
         (Tasks 4-5): typing goes on in the first empty row of the new voltage (else its
-        first), so the next reading lands in the row of the voltage on the motor."""
+        first), its text selected so that the next reading replaces it and lands in the row
+        of the voltage on the motor. When the keys are already in a row of that voltage, that
+        row is made ready the same way (walk 12's D1: '37,1' stood with the cursor at its
+        end, and 'F3 37 Enter' stored '37,137'). What stood typed in a row was stored before
+        (the panel key stores it, as leaving an entry does)."""
         if level is None or not self.is_attached:
             return
         panes = self.query(StepPane)
         pane = panes.first() if panes else None
-        if pane is None or pane.current is None or pane.current.field.level in (None, level):
+        if pane is None or pane.current is None or pane.current.field.level is None:
+            return
+        if pane.current.field.level == level:
+            pane.focus_row(pane.current)
             return
         rows = [r for r in pane.rows() if not r.field.options and r.field.level == level]
         if rows:

@@ -1,0 +1,66 @@
+"""Walk 12's defects (issue 20), each as the walk met it, at 80x24 with Pilot on a real
+session folder (/work/coord/WALK12.md)."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.ui.helpers import box_text, burst, goto, start, stored_text
+
+
+async def _task5_at_3_5_v_on_the_4_5_v_row(pilot) -> None:
+    """Task 5 with the motor at 3.5 V and i_ss at 4.5 V = '37,1' stored, the keys on that
+    row."""
+    await start(pilot)
+    await goto(pilot, "task5")
+    await burst(pilot, "f3", "f3")  # 2.5 V, 3.5 V: the keys on the 3.5 V row
+    await burst(pilot, "tab", *"37,1", "enter")
+    assert pilot.app.requested == 3.5
+    assert stored_text(pilot.app, "i_ss@4.5") == "37,1"
+
+
+@pytest.mark.parametrize(
+    "before", ["end", "escape", "ctrl+z"], ids=["after-end", "after-esc", "after-ctrl-z"]
+)
+async def test_f3_onto_the_row_with_the_keys_makes_it_ready_for_the_new_reading(quiet, before):
+    """D1: on Task 5, the keys on the 4.5 V row ('37,1' stored, the cursor at its end after
+    End, Esc, ...), the motor at 3.5 V; 'F3 37 Enter' in one burst stored '37,137' (read as
+    37.14 mA, no warning): F3 made the other rows ready for their reading (their text
+    selected), but left this one as it stood, and the reading was appended. Now F3 selects
+    the text of the row of its voltage that has the keys too: the reading replaces it."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _task5_at_3_5_v_on_the_4_5_v_row(pilot)
+        await burst(pilot, before)
+        await burst(pilot, "f3", *"37", "enter")
+        assert app.requested == 4.5
+        assert stored_text(app, "i_ss@4.5") == "37"
+
+
+async def test_f3_onto_a_refused_text_replaces_it_with_the_new_reading(quiet):
+    """D1, walk 11's D2: the 4.5 V row held a refused text; 'F3 0.0372 Enter' kept the
+    refused text and lost the reading ('0.03710.0372' refused with it)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _task5_at_3_5_v_on_the_4_5_v_row(pilot)
+        await burst(pilot, "ctrl+u", *"37 x", "enter")  # refused: 'x' is not a unit
+        assert box_text(app, "i_ss@4.5") == "37 x"
+        await burst(pilot, "f3", *"37.2", "enter")
+        assert stored_text(app, "i_ss@4.5") == "37.2"
+
+
+async def test_a_reading_typed_in_its_row_before_f3_is_stored_and_the_next_replaces_it(quiet):
+    """The other side of D1: a reading typed (not entered) in the row of F3's voltage is
+    stored by F3, as leaving an entry stores it; the keys after F3 are the reading at the new
+    voltage and replace it, the row being made ready as F3 makes the other rows (Ctrl+Z
+    brings the stored one back)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _task5_at_3_5_v_on_the_4_5_v_row(pilot)
+        await burst(pilot, "ctrl+u", *"36")
+        await burst(pilot, "f3")
+        assert stored_text(app, "i_ss@4.5") == "36"
+        await burst(pilot, *"37.2", "enter")
+        assert stored_text(app, "i_ss@4.5") == "37.2"
+        await burst(pilot, "ctrl+z")
+        assert box_text(app, "i_ss@4.5") == "36"
