@@ -5,7 +5,10 @@ from __future__ import annotations
 
 import pytest
 
-from tests.ui.helpers import box_text, burst, goto, start, stored_text
+from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
+from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
+from tests.ui.helpers import box_text, burst, goto, lab_screen, settle, start, stored_text
 
 
 async def _task5_at_3_5_v_on_the_4_5_v_row(pilot) -> None:
@@ -64,3 +67,38 @@ async def test_a_reading_typed_in_its_row_before_f3_is_stored_and_the_next_repla
         assert stored_text(app, "i_ss@4.5") == "37.2"
         await burst(pilot, "ctrl+z")
         assert box_text(app, "i_ss@4.5") == "36"
+
+
+def _footer_keys(app) -> list[str]:
+    """The keys the lab screen's footer shows ('f7', ...), in order."""
+    footer = lab_screen(app).query_one(KeyFooter)
+    return [k.key_display for k in footer.query(KeyLabel) if k.display]
+
+
+async def test_the_footer_follows_the_steps_after_a_change_as_a_dialog_comes_or_goes(quiet):
+    """D2: after the board check's result (F10) and the palette over it, the footer kept
+    'f10 Board check' on Tasks 2-10 (no F3, F4, F7, F5/F6) until the program was started
+    again; in another session it kept 'f3 Set V' on Tasks 4, 6-9 and Preparation 14. The
+    lab screen's keys changed as a dialog came or went (the lab's signal handled while the
+    dialog was the app's screen): the footer's rebuild, asked for after the next refresh,
+    went to the dialog's screen, where it was lost with the dialog (the footer then waited
+    for it for ever) or ran in the dialog's place (ReactiveError: the app stopped). The
+    footer now rebuilds itself, and again when its screen is the app's screen again."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task1")
+        await settle(pilot, lambda: "f10" in _footer_keys(app))
+        lab = lab_screen(app)
+        footer = lab.query_one(KeyFooter)
+        app.push_screen(BoardCheckScreen(True, "The wheel turns and the count follows."))
+        await settle(pilot, lambda: isinstance(app.screen, BoardCheckScreen))
+        footer.bindings_changed(lab)  # the lab's keys changed while the dialog is on top
+        await burst(pilot, "escape")
+        await settle(pilot, lambda: isinstance(app.screen, LabScreen))
+        assert "f10" in _footer_keys(app)
+        await goto(pilot, "table")
+        await settle(pilot, lambda: "f7" in _footer_keys(app))
+        assert "f10" not in _footer_keys(app)
+        await goto(pilot, "task10")
+        await settle(pilot, lambda: {"f5", "f6"} <= set(_footer_keys(app)))
