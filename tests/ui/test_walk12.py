@@ -5,9 +5,13 @@ from __future__ import annotations
 
 import pytest
 
+from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
+from tests.ui.conftest import DATE
+from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import box_text, burst, goto, lab_screen, settle, start, stored_text
 
 
@@ -102,3 +106,35 @@ async def test_the_footer_follows_the_steps_after_a_change_as_a_dialog_comes_or_
         assert "f10" not in _footer_keys(app)
         await goto(pilot, "task10")
         await settle(pilot, lambda: {"f5", "f6"} <= set(_footer_keys(app)))
+
+
+def _writing_app(root):
+    """The app on the device double, with a report writer that writes a real file."""
+
+    def writer(session):
+        path = session.folder / "report.md"
+        path.write_text("# report\n")
+        return [path]
+
+    cfg = UiConfig(device="auto", sessions=root, today=DATE, animations=False, refresh=0)
+    return LabApp(cfg, lambda spec: QuietDevice(seed=1), writer)
+
+
+async def test_f8_keeps_the_focused_question_in_view(tmp_path):
+    """D4: on Summary, Tab Tab Tab (Q4 'The static gain K describes', its answers on
+    screen), F8: the report was written and the step scrolled back up to Q2 and Q3, Q4's
+    label on the last line and its answers off screen."""
+    app = _writing_app(tmp_path / "sessions")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "summary")
+        await burst(pilot, "tab", "tab", "tab")
+        row = lab_screen(app).pane.current
+        assert row is not None and row.field.key == "summary.4"
+        answers = row.answers
+        assert answers is not None and app.screen.can_view_entire(answers)
+        await burst(pilot, "f8")
+        await settle(pilot, lambda: app.exported)
+        await settle(pilot)
+        assert lab_screen(app).pane.current is row
+        assert app.screen.can_view_entire(answers)

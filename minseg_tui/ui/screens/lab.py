@@ -310,14 +310,16 @@ class StepPane(FieldForm):
         """The step grew or shrank above its entries (the panel drew its view, or the
         report's files after F8; an entry's hint moved under its box or back). The entry
         the step landed in is placed again from the top of the step; an entry the group
-        moved to since stays in view. Either only while the group has not scrolled away."""
+        moved to since stays in view. Either only while the group has not scrolled away. A
+        list of answers as well as a text entry (walk 12's D4: after F8 on Summary, Q4's
+        answers went below the screen)."""
         landed = self._keep
         if isinstance(landed, FieldRow):
-            if landed.is_attached and landed is self.typing:
+            if landed.is_attached and landed is self.keyed:
                 landed.call_after_refresh(landed.bring_into_view, True)
                 return
             self._keep = "focused"
-        row = self.typing
+        row = self.keyed
         if self._keep != "scrolled" and row is not None:
             row.call_after_refresh(row.bring_into_view)
 
