@@ -59,7 +59,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "F3",
-        "the next voltage, 2.5/3.5/4.5 V (Task 4/5)",
+        "the next voltage, 2.5/3.5/4.5 V (Tasks 3-5)",
         "f3",
         "set_voltage",
         "Set V",
@@ -67,7 +67,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         "F4",
-        "omega_ss over the settled window (Task 4/5)",
+        "omega_ss over the settled window (Task 4)",
         "f4",
         "capture",
         "Capture",

@@ -7,8 +7,9 @@ import pytest
 
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
+from minseg_tui.ui.keys import help_lines
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
-from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.lab import STEP_IDS, LabScreen
 from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
@@ -138,3 +139,22 @@ async def test_f8_keeps_the_focused_question_in_view(tmp_path):
         await settle(pilot)
         assert lab_screen(app).pane.current is row
         assert app.screen.can_view_entire(answers)
+
+
+async def test_f1_names_the_tasks_where_f3_and_f4_act(quiet):
+    """D6: F1 said 'F4 Capture: omega_ss over the settled window (Task 4/5)'; on Task 5, F4
+    says 'capturing omega_ss is not part of this step'. And F3 ('(Task 4/5)') sets the
+    voltage on Task 3 too."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        where: dict[str, list[str]] = {"set_voltage": [], "capture": []}
+        for step_id in STEP_IDS:
+            await goto(pilot, step_id, focus=None)
+            for action, steps in where.items():
+                if lab_screen(app).offers(action):
+                    steps.append(step_id)
+    assert where == {"set_voltage": ["task3", "task4", "task5"], "capture": ["task4"]}
+    helps = dict(help_lines())
+    assert helps["F3"].endswith("(Tasks 3-5)")
+    assert helps["F4"].endswith("(Task 4)")
