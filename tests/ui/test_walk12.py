@@ -9,6 +9,7 @@ from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.keys import help_lines
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen
+from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import STEP_IDS, LabScreen
 from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
 from tests.ui.conftest import DATE
@@ -158,3 +159,26 @@ async def test_f1_names_the_tasks_where_f3_and_f4_act(quiet):
     helps = dict(help_lines())
     assert helps["F3"].endswith("(Tasks 3-5)")
     assert helps["F4"].endswith("(Task 4)")
+
+
+@pytest.mark.parametrize("dialog", ["board-check", "help"])
+async def test_ctrl_p_over_a_result_goes_to_a_step(quiet, dialog):
+    """D3: on Task 1, F10, then 'Ctrl+P task 2' over the board check's result: "No matches
+    found" (the steps are the lab screen's commands, and the palette was the dialog's), and
+    the 'Enter 5,3 ohm Enter' typed after it went into the palette's search. Ctrl+P over a
+    result the group reads (the board check's, F1's list) closes it first, as Escape does:
+    the palette is the lab's, and the keys after its Enter land in the step."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task1")
+        if dialog == "help":
+            app.push_screen(HelpScreen(help_lines()))
+        else:
+            app.push_screen(BoardCheckScreen(True, "The wheel turns and the count follows."))
+        await settle(pilot, lambda: not isinstance(app.screen, LabScreen))
+        await burst(pilot, "ctrl+p", *"task 2", "enter", *"5.3", "enter")
+        await settle(pilot, lambda: isinstance(app.screen, LabScreen))
+        with app.session as s:
+            assert s.current_step == "task2"
+        assert stored_text(app, "R") == "5.3"
