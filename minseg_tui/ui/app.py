@@ -78,6 +78,7 @@ from minseg_tui.ui.screens.boardcheck import (
     WheelQuestionScreen,
 )
 from minseg_tui.ui.screens.classview import ClassScreen
+from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
@@ -377,6 +378,11 @@ class LabApp(App[None]):
 
     async def _open_palette(self) -> None:
         self._store_typed()
+        if isinstance(self.screen, (BoardCheckScreen, HelpScreen)):
+            # a result the group reads closes first, as its Escape does: the palette is the
+            # lab screen's, with its steps (over the board check's result 'task 2' found no
+            # match, and the keys typed after it went into the search: walk 12's D3)
+            await close_dialog(self.screen, None)
         if self.use_command_palette and not isinstance(self.screen, CommandPalette):
             await self.push_screen(Palette(id="--command-palette"))
 

@@ -61,7 +61,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         KEY_NAMES["set_voltage"],
-        "the next voltage, 2.5/3.5/4.5 V (Task 4/5)",
+        "the next voltage, 2.5/3.5/4.5 V (Tasks 3-5)",
         "f3",
         "set_voltage",
         "Set V",
@@ -69,7 +69,7 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key(
         KEY_NAMES["capture"],
-        "omega_ss over the settled window (Task 4/5)",
+        "omega_ss over the settled window (Task 4)",
         "f4",
         "capture",
         "Capture",

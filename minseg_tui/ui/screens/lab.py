@@ -311,14 +311,16 @@ class StepPane(FieldForm):
         """The step grew or shrank above its entries (the panel drew its view, or the
         report's files after F8; an entry's hint moved under its box or back). The entry
         the step landed in is placed again from the top of the step; an entry the group
-        moved to since stays in view. Either only while the group has not scrolled away."""
+        moved to since stays in view. Either only while the group has not scrolled away. A
+        list of answers as well as a text entry (walk 12's D4: after F8 on Summary, Q4's
+        answers went below the screen)."""
         landed = self._keep
         if isinstance(landed, FieldRow):
-            if landed.is_attached and landed is self.typing:
+            if landed.is_attached and landed is self.keyed:
                 landed.call_after_refresh(landed.bring_into_view, True)
                 return
             self._keep = "focused"
-        row = self.typing
+        row = self.keyed
         if self._keep != "scrolled" and row is not None:
             row.call_after_refresh(row.bring_into_view)
 
@@ -1056,12 +1058,19 @@ class LabScreen(StatusScreen):
     def watch_requested(self, level: float | None) -> None:
         """F3 set the motor to ``level`` (V) while the group types in a row of another voltage
         (Tasks 4-5): typing goes on in the first empty row of the new voltage (else its
-        first), so the next reading lands in the row of the voltage on the motor."""
+        first), its text selected so that the next reading replaces it and lands in the row
+        of the voltage on the motor. When the keys are already in a row of that voltage, that
+        row is made ready the same way (walk 12's D1: '37,1' stood with the cursor at its
+        end, and 'F3 37 Enter' stored '37,137'). What stood typed in a row was stored before
+        (the panel key stores it, as leaving an entry does)."""
         if level is None or not self.is_attached:
             return
         panes = self.query(StepPane)
         pane = panes.first() if panes else None
-        if pane is None or pane.current is None or pane.current.field.level in (None, level):
+        if pane is None or pane.current is None or pane.current.field.level is None:
+            return
+        if pane.current.field.level == level:
+            pane.focus_row(pane.current)
             return
         rows = [r for r in pane.rows() if not r.field.options and r.field.level == level]
         if rows:

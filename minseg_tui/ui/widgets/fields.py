@@ -943,6 +943,15 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         return row if self.screen.focused is self else None
 
     @property
+    def keyed(self) -> FieldRow | None:
+        """The current row if the form has the focus, a text row or a list of answers (None:
+        keys go to the step)."""
+        row = self.current
+        if row is None or not row.is_attached or self.screen.focused is not self:
+            return None
+        return row
+
+    @property
     def answering(self) -> AnswerList | None:
         """The list of answers of the current row if the form has the focus and it is a
         choice row (None: the keys do not go to a list)."""

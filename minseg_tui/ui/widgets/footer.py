@@ -6,11 +6,11 @@ where Ctrl+R Reveal had been cut. :class:`KeyFooter` closes its spacing up when 
 not fit (the compact spacing), and when they still do not, leaves out whole keys from the
 end of the line (the F1 help lists every key).
 
-It is also built again only when the keys it shows change, once per refresh: Textual's own
-footer rebuilds itself (every key unmounted and mounted again, its style applied) after each
-change of the screen's bindings, each focus change and each reactive with bindings; a step
-change in the lab did that about five times over, the same keys each time (a quarter of the
-step change's CPU time).
+It is also built again only when the keys it shows change, once for the changes that come
+together: Textual's own footer rebuilds itself (every key unmounted and mounted again, its
+style applied) after each change of the screen's bindings, each focus change and each
+reactive with bindings; a step change in the lab did that about five times over, the same
+keys each time (a quarter of the step change's CPU time).
 
 It is our own widget, made of Textual's public pieces (the screen's ``active_bindings`` and
 ``bindings_updated_signal``, ``App.get_key_display``, ``App.simulate_key``, the theme's
@@ -138,8 +138,8 @@ class KeyFooter(ScrollableContainer, can_focus=False, can_focus_children=False):
     palette's key kept at the right: the roomy spacing where every key fits, else the
     compact spacing, else the compact spacing without the keys from the last one on that do
     not fit. Decided from the keys' text and spacing (:func:`key_width`) before the keys
-    are laid out. Built again once per refresh at most, and only when the keys it shows
-    changed (:meth:`shown`). One key per action (the first binding of it), as Textual's
+    are laid out. Built again once for the changes that come together, and only when the keys
+    it shows changed (:meth:`shown`). One key per action (the first binding of it), as Textual's
     footer shows them; binding groups are not drawn as groups (the lab has none)."""
 
     ALLOW_SELECT = False
@@ -181,9 +181,17 @@ class KeyFooter(ScrollableContainer, can_focus=False, can_focus_children=False):
 
     def on_mount(self) -> None:
         self.screen.bindings_updated_signal.subscribe(self, self.bindings_changed)
+        self.app.screen_change_signal.subscribe(self, self._screen_changed)
 
     def on_unmount(self) -> None:
         self.screen.bindings_updated_signal.unsubscribe(self)
+        self.app.screen_change_signal.unsubscribe(self)
+
+    def _screen_changed(self, screen: Screen[object]) -> None:
+        """The app shows another screen: the footer's own again, its keys as they are now
+        (they changed while a dialog was over it, and the rebuild asked for then waited)."""
+        if screen is self.screen:
+            self.bindings_changed(screen)
 
     def shown(self) -> Shown:
         """What the footer would show now: the screen's active keys meant to be shown, one
@@ -216,19 +224,23 @@ class KeyFooter(ScrollableContainer, can_focus=False, can_focus_children=False):
         return tuple(keys)
 
     def bindings_changed(self, screen: Screen[object]) -> None:
-        """The screen's bindings changed: build the footer again after the next refresh, if
-        its keys did."""
+        """The screen's bindings changed: build the footer again once the messages it has
+        now are handled, if its keys did. Its own call (``call_later``), not one after the
+        next refresh: that call is handed to the app's screen of the moment, and when a
+        dialog came or went just then (walk 12's D2) it was lost with the dialog (the
+        footer waited for it for ever: the keys of Task 1 shown on Tasks 2-10) or ran in the
+        dialog's place (where building the keys raised ReactiveError)."""
         self._ready = True
         if not screen.app.app_focus:
             return
         if self.is_attached and screen is self.screen and not self._pending:
             self._pending = True
-            self.call_after_refresh(self._rebuild)
+            self.call_later(self._rebuild)
 
     async def _rebuild(self) -> None:
         self._pending = False
-        if not self.is_attached:
-            return
+        if not self.is_attached or self.screen is not self.app.screen:
+            return  # under a dialog: built when its screen is shown again (_screen_changed)
         shown = self.shown()
         if shown != self._drawn:
             self._drawn = shown
