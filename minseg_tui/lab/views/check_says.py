@@ -10,6 +10,7 @@ here. Units: s, V, rad/s, ms as each sentence says.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -577,6 +578,19 @@ def _pole(f: fx.Pole, claim: str) -> str:
             "the wheel coasts: its output has fallen towards zero when the bridge closes, so "
             "the wheel is braked at first, which the armature's own lag (no current while "
             f"coasting) does not do{claim}"
+        )
+    if f.way == "ringing":
+        swing = (
+            f", a swing of period {_ms(f.period)} that overshoots a step by about "
+            f"{100.0 * f.overshoot:.2g} % of it"
+            if math.isfinite(f.period) and f.overshoot >= 0.001
+            else ""
+        )
+        return text + (
+            "; the armature's inductance delays the current, and with the back-EMF its pole and "
+            "the wheel's make a complex pair: the speed fits best as a pair that dies away with "
+            f"one time constant, T2 = T = {_ms(f.t2)}{swing}; two real poles fit this log "
+            f"worse{claim}"
         )
     return text + f"; an extra pole of {_ms(f.t2)} delays the torque{claim}"
 
