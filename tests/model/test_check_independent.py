@@ -870,3 +870,16 @@ def test_an_inductance_that_makes_the_poles_ring_is_named_with_their_decay_time(
         assert p[BY_CAUSE[c].param] == pytest.approx(v, rel=0.05)
     said = text(r)
     assert "make a complex pair" in said and "dies away with one time constant" in said
+
+
+def test_a_cause_near_the_smallest_one_named_is_said_to_be_one_the_log_cannot_rule_out():
+    # a true cap beside a driver's pole moves the speed by 0.99 % of its range, just under
+    # the 1 % a cause must reach (spurious ones reach 0.92 %): the pole is named, and the
+    # check says the log cannot tell whether the cap acts beside it, instead of a guess
+    log = make(4, ("second_pole", "current_limit"))
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == ["second_pole"]
+    assert ["second_pole", "current_limit"] in r.finding.ambiguous_with
+    said = text(r)
+    assert "this log cannot tell whether current limit acts beside second pole" in said
+    assert "by 0.99 % of the largest speed at most" in said

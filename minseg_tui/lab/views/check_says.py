@@ -347,6 +347,16 @@ def _untold(f: rs.Untold) -> str:
         "the squared speed error of the first; their averages differ, so their "
         "whitened residuals, where the first is ahead, cannot be compared)",
     }[f.compared]
+    extra = [c for c in f.other if c not in f.named]
+    if f.moves > 0.0 and len(extra) == 1:
+        return (
+            f"this log cannot tell whether {in_words(extra[0])} acts beside "
+            f"{in_words('+'.join(f.named))}: with it the model leaves {f.ratio:.2f} times the "
+            "whitened residual, but it moves the simulated speed, held over 9 samples, by "
+            f"{100 * f.moves:.2g} % of the largest speed at most, about what any model of a real "
+            "motor misses by (a load that ripples, drag that is not quite viscous, the "
+            f"encoder's timing); {what_would_tell(f.named, f.other)}"
+        )
     return (
         f"this log cannot tell {in_words('+'.join(f.named))} from "
         f"{in_words('+'.join(f.other))}: {how}; {what_would_tell(f.named, f.other)}"
