@@ -486,6 +486,47 @@ benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 fals
 --seeds 5 --touch-seeds 10: pairs 74 of 75, a hand found with the cause kept 68 of 70 (as
 s31-check measured on main). The tests that read ../shared/data (72, the ten real logs'
 verdicts among them) pass.
+
+s33-check (e85640f -> this branch; changed on tuning seeds only, the held-out seeds run once, at
+the end): (1) the ringing pair: where the generator's pole is on the inductance and the motor's
+two poles are complex, the check now has that model (simulate: Effects.pole_ring, a damped
+oscillation of the speed in closed form, the armature's current building while stuck, zero
+while coasting and held at the cap, the cap's drag as the wheel's share of the damping; exact
+against the generator's armature in tests), fitted as a fourth way of the pole on the drive
+when the best real pair has its two time constants within a factor 4, with T2 tied to T and
+(omega T)^2 as its second parameter; (2) a cause left out only as too small that still moves
+the speed by 0.75-1 % of its range is said to be one this log cannot rule out (decide.unsure:
+the model with it joins finding.ambiguous_with). Tuning seeds: the 45 pair logs of seeds 11-34
+whose pole is a complex pair on the inductance, right 7 -> 29, honestly ambiguous 9 -> 11,
+ambiguous but wrong 3 -> 0, confidently wrong 26 -> 5; pairs of seeds 0-9 (150 logs) unchanged
+by (1) (right 84.0 %, right or honestly ambiguous 93.3 %), and (2) turns two confidently wrong
+logs (pole + cap 4, a 0.99 % cap; average + pole 8) into honestly ambiguous ones (confidently
+wrong 6.7 -> 5.3 %, ambiguous in all 9.3 -> 10.7 %), no other log changed; singles (70) pole
+7 -> 10 of 10, the others unchanged; touched logs seeds 1000-1019 (52) 50 -> 50. Held-out
+(--seeds 5 --touch-seeds 5, before: s32-check's figures above): pairs right 77.3 -> 80.0 %,
+honestly ambiguous 16.0 -> 14.7 % (right or honestly ambiguous 93.3 -> 94.7 %), ambiguous in
+all 17.3 -> 16.0 %, confidently wrong 5.3 -> 4.0 % (4 -> 3 of 75: the target is met),
+untouched logs with a disturbance 0 -> 0; one effect or none named alone: pole 4 -> 5 of 5,
+the others unchanged (none 5, friction 5, dead time 4, average 5, coast 5, cap 5); a hand found
+with the cause kept 16 -> 17 of 20 (dead_time 901000 and velocity_filter 901001 named another
+or an extra cause, current_limit 901002 with a friction and its hand 0.66 s early, as before;
+second_pole 901001, the pole on the inductance named an average, is now right). CPU per log
+(check only) median 0.64 -> 0.79 s, max 4.84 -> 10.69 s (load average 8-10 on two cores with
+tests running beside, not side by side; every model with a pole whose two time constants are
+near fits one way more). Still wrong on the held-out pairs: a delay with a pole on the coupling
+named a delay alone (900003), a 2-tap average with a coast (3 taps, T 16 % short), a pole on
+the inductance with a cap (900001: T 16 % short, the ringing pair not chosen) and, ambiguous
+but wrong, a driver's pole with a cap named a delay or a pole. Hands still short of 90 %.
+Tuning logs left wrong of the ringing kind: a coast with a ringing pole named nothing (the coast
+alone is refused as no slower than braking, since the first-order T takes the pole's lag in,
+and the pair is never tried: seeds 29, 31), a cap the ringing pair's current never reaches
+(15), a cap with a ringing pole where the real pair still fits better (25).
+benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 false alarms of
+10, analyze 0.68-0.73 s CPU per log (Python start included). benchmarks/model_check_pairs.py
+--seeds 5 --touch-seeds 10: pairs 74 of 75 (second_pole + current_limit 3004 as before), a
+hand found with the cause kept 68 -> 69 of 70 (current_limit 4003 with a pole beside it left),
+CPU per log median 0.40 s. tests/model (the ten real logs' verdicts and every test that reads
+../shared/data among them), tests/lab, tests/report and tests/cli/test_analyze.py pass.
 """
 
 from __future__ import annotations

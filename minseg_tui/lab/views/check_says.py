@@ -10,6 +10,7 @@ here. Units: s, V, rad/s, ms as each sentence says.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -346,6 +347,16 @@ def _untold(f: rs.Untold) -> str:
         "the squared speed error of the first; their averages differ, so their "
         "whitened residuals, where the first is ahead, cannot be compared)",
     }[f.compared]
+    extra = [c for c in f.other if c not in f.named]
+    if f.moves > 0.0 and len(extra) == 1:
+        return (
+            f"this log cannot tell whether {in_words(extra[0])} acts beside "
+            f"{in_words('+'.join(f.named))}: with it the model leaves {f.ratio:.2f} times the "
+            "whitened residual, but it moves the simulated speed, held over 9 samples, by "
+            f"{100 * f.moves:.2g} % of the largest speed at most, about what any model of a real "
+            "motor misses by (a load that ripples, drag that is not quite viscous, the "
+            f"encoder's timing); {what_would_tell(f.named, f.other)}"
+        )
     return (
         f"this log cannot tell {in_words('+'.join(f.named))} from "
         f"{in_words('+'.join(f.other))}: {how}; {what_would_tell(f.named, f.other)}"
@@ -577,6 +588,19 @@ def _pole(f: fx.Pole, claim: str) -> str:
             "the wheel coasts: its output has fallen towards zero when the bridge closes, so "
             "the wheel is braked at first, which the armature's own lag (no current while "
             f"coasting) does not do{claim}"
+        )
+    if f.way == "ringing":
+        swing = (
+            f", a swing of period {_ms(f.period)} that overshoots a step by about "
+            f"{100.0 * f.overshoot:.2g} % of it"
+            if math.isfinite(f.period) and f.overshoot >= 0.001
+            else ""
+        )
+        return text + (
+            "; the armature's inductance delays the current, and with the back-EMF its pole and "
+            "the wheel's make a complex pair: the speed fits best as a pair that dies away with "
+            f"one time constant, T2 = T = {_ms(f.t2)}{swing}; two real poles fit this log "
+            f"worse{claim}"
         )
     return text + f"; an extra pole of {_ms(f.t2)} delays the torque{claim}"
 

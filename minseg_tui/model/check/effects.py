@@ -256,6 +256,14 @@ class Candidate:
     again: Again | None = None
     """A joint fit holding it and :attr:`Again.partner` is fitted again from other starts
     and the better kept."""
+    tie: Callable[[Effects, float], Effects] | None = None
+    """In some of its ways its field is T itself (the ringing pair's T2, both poles decaying
+    with T), and a second parameter of another way means nothing: (the effects, T in s) ->
+    the effects with its field set to T where its way ties it, and the other way's second
+    parameter at its null. Its interval is then T's."""
+    worth: Callable[[Way, Fit], bool] | None = None
+    """A way of it fitted only when the best fit of the ways before says so: (the way, that
+    fit) -> fit it (None: every way is fitted)."""
     hidden: Hidden | None = None
     """How a generated log (:mod:`minseg_tui.model.synth`) holds it; None: it cannot."""
 
@@ -545,7 +553,8 @@ def _pole_ways(causes: tuple[str, ...], smooth: bool) -> list[Way]:
     """The sides of an extra pole worth fitting: on the drive always; on the measurement where
     the side shows (a cause that is not linear acts with it), or as the logger's filter of a
     smooth speed column (with no average among the causes: then the average smooths it);
-    with a coast, as a driver's lag too (:func:`.fit.fit_causes`)."""
+    with a coast, as a driver's lag too (:func:`.fit.fit_causes`); last, as the armature's
+    pole in a ringing pair with the wheel's (:func:`_ring_worth` says when)."""
     filt = smooth and not any(BY_CAUSE[c].counted for c in causes)
     out: list[Way] = [{}]
     if NONLINEAR & set(causes):
@@ -554,7 +563,32 @@ def _pole_ways(causes: tuple[str, ...], smooth: bool) -> list[Way]:
         out.append({"pole_measured": True, "pole_filtered": True})
     if "coast_on_zero" in causes:
         out.append({"pole_driver": True})
+    out.append({"pole_ring": True})
     return out
+
+
+RING_MAX = 4.0
+"""Largest (omega T)^2 of a ringing pair fitted: a damping ratio down to 0.45 (an overshoot of
+about 20 %); a motor's armature rings less (an inductance of 0.6 times the mechanical time
+constant gives 1.4)."""
+
+RING_NEAR = 0.25
+"""A ringing pair is fitted when the best real pair so far has its two time constants within
+this factor of each other (a ringing pair is best fitted by two real poles close together:
+two poles together at T is where the two kinds meet)."""
+
+
+def _ring_worth(way: Way, f: Fit) -> bool:
+    if not way.get("pole_ring"):
+        return True
+    t2 = f.effects.T2
+    return t2 > 0.0 and RING_NEAR <= t2 / f.T <= 1.0 / RING_NEAR
+
+
+def _ring_tie(fx: Effects, T: float) -> Effects:
+    if fx.pole_ring:
+        return replace(fx, T2=T) if fx.T2 != T else fx
+    return replace(fx, ring=0.0) if fx.ring else fx
 
 
 def _pole_carry(
@@ -571,9 +605,9 @@ def _pole_carry(
     return {**values, "second_pole": ts / math.log1p(ts / t2)}
 
 
-PoleWay = Literal["filtered", "measured", "driver", "drive"]
+PoleWay = Literal["filtered", "measured", "driver", "drive", "ringing"]
 """Where an extra pole acts: a filter of a smooth speed column, on the measurement, in the
-driver, or on the drive (the torque)."""
+driver, on the drive (the torque), or the armature's, ringing with the wheel's."""
 
 
 @dataclass(frozen=True)
@@ -592,11 +626,23 @@ class Pole(Shown):
     model: float | None
     share: float = 0.0
     beside: tuple[str, ...] = ()
+    period: float = math.inf
+    """The ringing pair's period of swing, s (infinite: not a ringing pair, or no swing)."""
+    overshoot: float = 0.0
+    """The ringing pair's overshoot after a step, as a share of the step (0: none)."""
 
 
 def pole_words(log: ev.Log, ext: Fit) -> Shown:
     t2 = ext.params["T2"]
     w = max(2, int(math.ceil(max(t2, ext.T / 2) / log.ts)))
+    fx = ext.effects
+    if fx.pole_ring:
+        # the pair's swing: its period and the overshoot of one step's settling
+        om = math.sqrt(max(fx.ring, 0.0)) / ext.T
+        period = 2.0 * math.pi / om if om > 0.0 else math.inf
+        over = math.exp(-math.pi / (om * ext.T)) if om > 0.0 else 0.0
+    else:
+        period, over = math.inf, 0.0
     got, model = [], []
     for a, b in rises(log.u):
         if b - a <= w:
@@ -605,9 +651,10 @@ def pole_words(log: ev.Log, ext: Fit) -> Shown:
         model.append(abs(float(log.base_pred[a + w - 1] - log.base_pred[a - 1])))
     said_got = float(np.median(got)) if got else None
     said_model = float(np.median(model)) if got else None
-    fx = ext.effects
     way: PoleWay = (
-        "filtered"
+        "ringing"
+        if fx.pole_ring
+        else "filtered"
         if fx.pole_filtered
         else "measured"
         if fx.pole_measured
@@ -619,7 +666,12 @@ def pole_words(log: ev.Log, ext: Fit) -> Shown:
         c for c in ("coulomb_friction", "coast_on_zero", "current_limit") if c in ext.causes
     )
     share = 1.0 - math.exp(-log.ts / t2) if way == "filtered" else 0.0
-    return Pole(t2, way, log.smooth, w * log.ts, said_got, said_model, share, beside)
+    return Pole(t2, way, log.smooth, w * log.ts, said_got, said_model, share, beside, period, over)
+
+
+RING = "pole_ring2"
+"""The key among a fit's values of the ringing pair's second parameter, (omega T)^2
+(:attr:`Effects.ring`)."""
 
 
 SECOND_POLE = Candidate(
@@ -632,8 +684,11 @@ SECOND_POLE = Candidate(
     starts=lambda s: [s.T * f for f in (0.1, 0.25, 0.5, 0.9)],
     words=lambda log, f, floor: pole_words(log, f),
     needs=ev.NEEDS_RISE,
-    flags=("pole_measured", "pole_filtered", "pole_driver"),
+    flags=("pole_measured", "pole_filtered", "pole_driver", "pole_ring"),
+    second=(Second(RING, "ring", RING_MAX),),
     ways=_pole_ways,
+    tie=_ring_tie,
+    worth=_ring_worth,
     carry=_pole_carry,
     claim=Claim("dead_time", ("dead_time",)),
     smooth=_pole_smooth,

@@ -367,7 +367,12 @@ class Model:
             values[self.counted] = float(self.taps)
         fx = effects_of(values)
         flags.update({k: True for k, on in self.way.items() if on and OWNER[k] in self.causes})
-        return T, replace(fx, **flags) if flags else fx
+        fx = replace(fx, **flags) if flags else fx
+        for c in self.causes:
+            tie = BY_CAUSE[c].tie
+            if tie is not None:
+                fx = tie(fx, T)
+        return T, fx
 
     def x_of(self, T: float, values: dict[str, float]) -> FloatArray:
         """The vector of T (s) and {cause: Effects field value}."""
@@ -443,10 +448,14 @@ class Model:
         key = x.tobytes()
         r = self._last[1] if self._last[0] == key else self.residual(x)
         jac = np.empty((r.size, x.size))
+        here = self.effects(x)
         for i in range(x.size):
             h = self.step[i] if x[i] + self.step[i] <= self.hi[i] else -self.step[i]
             xp = x.copy()
             xp[i] += h
+            if self.effects(xp) == here:
+                jac[:, i] = 0.0  # a parameter this way ties or ignores (Candidate.tie)
+                continue
             jac[:, i] = (self.residual(xp) - r) / h
         out: FloatArray = np.nan_to_num(jac, nan=0.0, posinf=0.0, neginf=0.0)
         return out
@@ -564,6 +573,10 @@ def fit_causes(
     fitted, the first from ``starts``, and the better kept."""
     out: Fit | None = None
     for w in ways(tuple(causes), prob.smooth) if way is None else [way]:
+        if out is not None and not all(
+            worth(w, out) for c in causes if (worth := BY_CAUSE[c].worth) is not None
+        ):
+            continue
         if out is None:
             f = _fit_side(prob, causes, rng, starts, max_iter, scan, polish, w)
         else:
@@ -716,6 +729,7 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
     sd = np.sqrt(np.maximum(np.diag(cov), 0.0))[: len(cols)]
     sd = np.where(np.isfinite(sd), sd, np.inf)  # a parameter the log does not pin down
     out: dict[str, tuple[float, float]] = {"K": (k - Z95 * sd[0], k + Z95 * sd[0])}
+    tied = [a.cause for i, a in enumerate(m.axes) if not a.second and not np.any(cols[i + 1])]
     for i, a in enumerate(m.axes):
         lo_x, hi_x = x[i] - Z95 * sd[i + 1], x[i] + Z95 * sd[i + 1]
         if a.log_scale:
@@ -731,6 +745,8 @@ def intervals(prob: Problem, f: Fit, rng: dict[str, Range]) -> dict[str, tuple[f
         )
         if not a.log_scale:
             lo_v = max(lo_v, 0.0)
+        if a.cause in tied and BY_CAUSE[a.cause].tie is not None:
+            lo_v, hi_v = out["T"]  # its way sets it to T (the ringing pair's T2)
         out[name] = (reported(a.cause, lo_v, k), reported(a.cause, hi_v, k))
     if m.counted is not None:
         out[BY_CAUSE[m.counted].param] = _taps_interval(

@@ -14,7 +14,17 @@ from numpy.typing import ArrayLike, NDArray
 
 from minseg_tui.model.check import anomalies as an
 from minseg_tui.model.check import disturbances as dist
-from minseg_tui.model.check.decide import Selection, compare, ranked, rivals, select, swapped
+from minseg_tui.model.check.decide import (
+    Selection,
+    compare,
+    effect,
+    ranked,
+    rivals,
+    select,
+    speed_range,
+    swapped,
+    unsure,
+)
 from minseg_tui.model.check.deviations import REGIONS, deviations, regions
 from minseg_tui.model.check.effects import (
     BY_CAUSE,
@@ -476,6 +486,8 @@ def _report(
     if named:
         sel.tried += swapped(sel, head, rng, noise)
     alts = rivals(sel, head, rng, noise, samp.column_floor) if named else []
+    if named:
+        alts += unsure(sel, head)
     swaps = {
         c.cause: _swap_ratio(sel, ext, head, rng, c.cause, c.claim.rival)
         for c in CANDIDATES
@@ -898,8 +910,17 @@ def _finding(
             if ratio >= 1.0
             else "squared_less"
         )
+        extra = set(causes) - set(order)
+        moves = 0.0
+        if set(order) < set(causes) and len(extra) == 1:
+            # one cause more, left out as too small (decide.unsure)
+            moves = effect(full, f, extra.pop()) / max(speed_range(full, f), 1e-300)
         caveats.append(
-            Caveat("cannot_tell", causes[0], Untold(tuple(order), tuple(causes), ratio, compared))
+            Caveat(
+                "cannot_tell",
+                causes[0],
+                Untold(tuple(order), tuple(causes), ratio, compared, moves),
+            )
         )
     if ambiguous:
         # a claim that holds only against a rival the log cannot rule out goes

@@ -103,6 +103,17 @@ class Effects:
     until it rises past the speed). Without it the pole is the armature's L/R: no current
     flows while coasting, and it builds from zero when the bridge closes. The two differ
     only after a coast."""
+    pole_ring: bool = False
+    """The extra pole on the drive is the armature's L/R, coupled to the wheel through the
+    back-EMF, with the motor's two poles a complex pair (an inductance over about a quarter
+    of the mechanical time constant): the speed rings, both poles decay with T (s) and
+    ``T2`` is that same decay time. The pair's own numbers: the electrical time constant
+    T/2 and the mechanical one 2 T/(1 + ring) on a wheel without drag (:func:`ring_constants`).
+    Stuck, the current builds with the electrical one; coasting, no current flows; capped,
+    the current is held."""
+    ring: float = 0.0
+    """With ``pole_ring``: (omega T)^2, the pair's angular frequency omega (rad/s) times its
+    decay time T (s), squared (0: the two poles together at T, no swing)."""
     drag: float = 0.0
     """The share of the driven damping that is the wheel's own viscous drag (T/J_b with
     J/b the drag's time constant in s, 0 to below 1; the rest is the back-EMF). While the
@@ -115,10 +126,15 @@ class Effects:
 
 
 class Pieces:
-    """Growing table of closed-form pieces (see the module docstring)."""
+    """Growing table of closed-form pieces (see the module docstring). A piece of a ringing
+    pair of poles (:attr:`Effects.pole_ring`) has, in place of its second exponential, a
+    damped oscillation of the speed: exp(-tau/t2) (ra cos(om tau) + rb sin(om tau)) (V at
+    K = 1; om in rad/s), whose angle is its integral from the piece's start."""
 
     def __init__(self) -> None:
         self.rows: list[tuple[float, float, float, float, float, float, float, float]] = []
+        self.ring: list[tuple[int, float, float, float]] = []
+        """(row, ra, rb, om) of each piece with a damped oscillation (its decay time in t2)."""
         self.quadratic = False
         """Some piece has a quadratic term (q != 0)."""
         self.two_exp = False
@@ -141,6 +157,13 @@ class Pieces:
         if a2:
             self.two_exp = True
 
+    def add_ring(
+        self, t0: float, th0: float, c: float, ra: float, rb: float, decay: float, om: float
+    ) -> None:
+        """A piece whose speed is c + exp(-tau/decay) (ra cos(om tau) + rb sin(om tau))."""
+        self.ring.append((len(self.rows), ra, rb, om))
+        self.rows.append((t0, th0, c, 0.0, 0.0, 1.0, 0.0, decay))
+
     def angle(self, tau: FloatArray) -> FloatArray:
         """Angle (V s at K = 1) at the instants ``tau`` (s, ascending or not)."""
         t0, th0, c, q, a1, t1, a2, t2 = np.asarray(self.rows, dtype=float).T
@@ -155,7 +178,31 @@ class Pieces:
         out -= (a1 * t1)[i] * np.expm1(-dt / t1[i])
         if self.two_exp:
             out -= (a2 * t2)[i] * np.expm1(-dt / t2[i])
+        if self.ring:
+            idx, ra, rb, om = (np.asarray(x) for x in zip(*self.ring, strict=True))
+            at = np.full(t0.size, -1)
+            at[idx.astype(int)] = np.arange(idx.size)
+            j = at[i]
+            on = j >= 0
+            if np.any(on):
+                k = j[on]
+                out[on] += ring_integral(ra[k], rb[k], t2[i[on]], om[k], dt[on])
         return out
+
+
+def ring_integral(
+    ra: FloatArray | float,
+    rb: FloatArray | float,
+    decay: FloatArray | float,
+    om: FloatArray | float,
+    tau: FloatArray | float,
+) -> FloatArray:
+    """The integral from 0 to ``tau`` (s) of exp(-s/decay) (ra cos(om s) + rb sin(om s)):
+    Re(C (exp(z tau) - 1)/z) with C = ra - j rb and z = -1/decay + j om."""
+    z = -1.0 / np.asarray(decay, dtype=float) + 1j * np.asarray(om, dtype=float)
+    cc = np.asarray(ra, dtype=float) - 1j * np.asarray(rb, dtype=float)
+    out: FloatArray = np.real(cc * np.expm1(z * np.asarray(tau, dtype=float)) / z)
+    return out
 
 
 def _exp(x: float) -> float:
@@ -169,6 +216,13 @@ def _first_zero(f: Callable[[float], float], t_ext: float | None, length: float)
     if t_ext is not None and 0.0 < t_ext < length:
         cuts.append(t_ext)
     cuts.append(length)
+    return _zero_between(f, cuts)
+
+
+def _zero_between(f: Callable[[float], float], cuts: list[float]) -> float | None:
+    """First tau after ``cuts[0]`` (s, 0 or later) where f changes sign, for f monotonic between
+    neighbouring ``cuts`` (ascending; the last is the end of the span); None when it does
+    not."""
     f0 = f(0.0)
     for a, b in zip(cuts[:-1], cuts[1:], strict=False):
         fa, fb = f(a), f(b)
@@ -232,8 +286,12 @@ def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Piec
     for x in fx.extra:
         st = Stretches(st.start, x.drive(st.value, x.value))
     T2 = fx.T2 if fx.T2 > 0.0 and not fx.pole_measured else 0.0
-    if T2 and abs(T2 - T) < 1e-6 * T:
+    tq = 0.0
+    if T2 and fx.pole_ring:
+        T2, tq = ring_constants(T, fx.ring, fx.drag)
+    elif T2 and abs(T2 - T) < 1e-6 * T:
         T2 = T * (1.0 + 1e-6)
+    steady = z0 is None
     if z0 is None:
         u0 = float(st.value[0])
         coasting = fx.T_coast is not None and command[0] == 0.0
@@ -252,14 +310,19 @@ def pieces(st: Stretches, T: float, fx: Effects, z0: float | None = 0.0) -> Piec
                 th += u * (t1 - t0) + a * T * (1.0 - e)
                 w = u + a * e
         return out
-    s = _State(float(st.start[0]), z0, z0 if T2 else float(st.value[0]), 0.0)
+    v0 = z0 if T2 else float(st.value[0])
+    if tq and fx.T2 > 0.0:
+        # the ringing pair's drive is the current's voltage plus the back-EMF: steady, the
+        # level in force; with no current, the back-EMF
+        v0 = float(st.value[0]) if steady else (1.0 - fx.drag) * z0
+    s = _State(float(st.start[0]), z0, v0, 0.0)
     levels = zip(st.start.tolist(), ends, st.value.tolist(), command.tolist(), strict=True)
     for t0, t1, u, asked in levels:
         s.t = t0
         if not T2:
             s.v = u
         coast = fx.T_coast is not None and asked == 0.0
-        _stretch(out, s, t1 - t0 if math.isfinite(t1) else FAR, u, T, T2, fx, coast)
+        _stretch(out, s, t1 - t0 if math.isfinite(t1) else FAR, u, T, T2, fx, coast, tq)
     return out
 
 
@@ -272,9 +335,12 @@ def _stretch(
     T2: float,
     fx: Effects,
     coast: bool,
+    tq: float = 0.0,
 ) -> None:
     """Advance ``s`` by ``left`` s under the input u (V), adding the pieces to ``out``;
-    ``coast``: the bridge is open (zero command, a coasting driver)."""
+    ``coast``: the bridge is open (zero command, a coasting driver); ``tq`` (s): the
+    ringing pair's mechanical time constant (0: no ringing pair; then T2 is its electrical
+    one)."""
     uc, rate = fx.u_c, fx.rate
     for _ in range(12):  # a stretch changes mode a few times at most
         if left <= 0.0:
@@ -285,18 +351,26 @@ def _stretch(
             left = _coast(out, s, left, max(fx.T_coast, T), uc / T)
             if T2 and fx.pole_driver:
                 s.v = v0 * _exp(-(before - left) / T2)
+            elif tq:
+                s.v = (1.0 - fx.drag) * s.w  # no current: the drive is the back-EMF
             continue
         drive = s.v
         if s.w == 0.0 and (abs(drive) < uc or drive == 0.0 and (u == 0.0 or not T2)):
             left = _stuck(out, s, left, u, uc, T2)
             continue
         sign = math.copysign(1.0, s.w if s.w != 0.0 else drive if drive != 0.0 else u)
-        push = sign * (drive - (1.0 - fx.drag) * s.w)
-        over = T * rate * (1.0 + 1e-9)
+        push = sign * (drive - (1.0 - fx.drag) * s.w)  # the torque asked for
+        tm = tq or T
+        over = tm * rate * (1.0 + 1e-9)
         if math.isfinite(rate) and (s.capping or push > over or (fx.cap_both and -push > over)):
             s.capping = False
             d = 1.0 if push > 0.0 else -1.0
-            left = _capped(out, s, left, u, sign, T, T2, uc, rate, d, fx.drag)
+            left = _capped(out, s, left, u, sign, tm, 0.0 if tq else T2, uc, rate, d, fx.drag)
+            if tq and (left <= 0.0 or s.w == 0.0):
+                # the current still held at the cap
+                s.v = (1.0 - fx.drag) * s.w + d * sign * tm * rate
+        elif tq:
+            left = _ring(out, s, left, u, sign, T, tq, uc, rate, fx, T2)
         else:
             left = _linear(out, s, left, u, sign, T, T2, uc, rate, fx.cap_both, fx.drag)
     out.add(s.t, s.th, 0.0)  # pathological chattering: hold (never met in practice)
@@ -425,6 +499,113 @@ def _capped(
         s.v = s.v if T2 else u
         if math.isfinite(rate) and d * sign * (s.v - keep * s.w) > T * rate:
             s.w = (s.v - d * sign * T * rate) / keep
+    return left - h
+
+
+def _ring_zero(k: float, p: float, q: float, sig: float, om: float, length: float) -> float | None:
+    """First tau in (0, length] where k + exp(-sig tau) (p cos(om tau) + q sin(om tau))
+    changes sign (sig in 1/s, om in rad/s); None when it does not. Its extrema are where
+    the derivative, exp(-sig tau) (p' cos + q' sin), is zero: every pi/om from the first."""
+    dp, dq = -sig * p + om * q, -sig * q - om * p
+
+    def g(tau: float) -> float:
+        return k + _exp(-sig * tau) * (p * math.cos(om * tau) + q * math.sin(om * tau))
+
+    half = math.pi / om
+    first = (math.atan2(dq, dp) + 0.5 * math.pi) % math.pi / om
+    cuts = [0.0]
+    x = first
+    if abs(g(0.0)) <= 1e-9 * (abs(k) + abs(p) + abs(q)):
+        # it starts on zero (a breakaway, a cap just let go): up to its first extremum it
+        # moves one way, and a crossing there would be the start itself, rounding's sign
+        if first <= 1e-6 * half:
+            first += half  # the start is itself an extremum (a cap just let go)
+        if first >= length:
+            return None
+        cuts, x = [first], first + half
+    while x < length and len(cuts) < 400:
+        if x > 0.0:
+            cuts.append(x)
+        x += half
+    cuts.append(length)
+    return _zero_between(g, cuts)
+
+
+RING_FLOOR = 0.004
+"""Added to a ringing pair's (omega T)^2 (:attr:`Effects.ring`): its swing then lasts at most
+50 T, the span over which a stretch's events are looked for, so every extremum of the speed
+inside that span is found in closed form (and a pair with no swing at all is a damping
+ratio of 0.998 away)."""
+
+
+def ring_constants(T: float, ring: float, drag: float) -> tuple[float, float]:
+    """(electrical, mechanical) time constants (s) of the ringing pair whose poles both decay
+    with T (s) and swing at omega = sqrt(ring + RING_FLOOR)/T, on a wheel whose viscous drag
+    is the share ``drag`` of its damping: the pair's characteristic polynomial is
+    te tm s^2 + (tm + drag te) s + 1 = T^2/(1 + r) s^2 + 2 T/(1 + r) s + 1."""
+    r = max(ring, 0.0) + RING_FLOOR
+    a, b = T * T / (1.0 + r), 2.0 * T / (1.0 + r)
+    if drag <= 0.0:
+        return a / b, b
+    te = (b - math.sqrt(max(b * b - 4.0 * drag * a, 0.0))) / (2.0 * drag)
+    return te, a / te
+
+
+def _ring(
+    out: Pieces,
+    s: _State,
+    left: float,
+    u: float,
+    sign: float,
+    T: float,
+    tq: float,
+    uc: float,
+    rate: float,
+    fx: Effects,
+    te: float,
+) -> float:
+    """Driven, below the cap, the ringing pair (:attr:`Effects.pole_ring`): tq w' = q - drag w
+    - u_c sgn(w) and te q' = u - q - (1 - drag) w, with q = v - (1 - drag) w the current's
+    own voltage (K = 1). About the steady speed c = u - u_c sgn(w) the speed is c +
+    exp(-tau/T) (A cos + B sin)(om tau); it ends at a stop or where the cap starts to hold
+    (|q| reaches tq rate)."""
+    drag, both = fx.drag, fx.cap_both
+    f = sign * uc
+    c = u - f
+    sig = 1.0 / T
+    om = math.sqrt(max(fx.ring, 0.0) + RING_FLOOR) / T
+    a = s.w - c
+    q0 = s.v - (1.0 - drag) * s.w
+    b = ((q0 - drag * s.w - f) / tq + sig * a) / om
+    da, db = -sig * a + om * b, -sig * b - om * a  # the speed's derivative, the same form
+    # q = f + drag w + tq w': its constant and its swing
+    qk, qa, qb = f + drag * c, drag * a + tq * da, drag * b + tq * db
+    out.add_ring(s.t, s.th, c, a, b, T, om)
+    horizon = min(left, 50.0 * T)
+    events: list[float] = []
+    stop_at = cap_at = math.inf
+    if uc > 0.0 or math.isfinite(rate):
+        hit = _ring_zero(sign * c, sign * a, sign * b, sig, om, horizon)
+        if hit is not None:
+            stop_at = hit
+            events.append(hit)
+    if math.isfinite(rate):
+        for d in (1.0, -1.0) if both else (1.0,):
+            k = d * sign
+            hit = _ring_zero(k * qk - tq * rate, k * qa, k * qb, sig, om, horizon)
+            if hit is not None:
+                events.append(hit)
+                cap_at = min(cap_at, hit)
+    h = min([left, *events])
+    s.capping = h == cap_at and h < left
+    e, cs, sn = _exp(-h * sig), math.cos(om * h), math.sin(om * h)
+    s.th += c * h + float(ring_integral(a, b, T, om, h))
+    s.w = c + e * (a * cs + b * sn)
+    q = qk + e * (qa * cs + qb * sn)
+    if h == stop_at and h < left:
+        s.w = 0.0
+    s.v = q + (1.0 - drag) * s.w
+    s.t += h
     return left - h
 
 
