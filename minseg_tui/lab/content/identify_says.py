@@ -236,7 +236,14 @@ def _t63_why(o: T63Differs) -> str:
             f"{format_signed(o.shape * 1e3, 3)} ms the noise of reading single samples: the "
             f"speed scatters {format_number(o.noise[0], 3)} rad/s from sample to sample, which "
             f"moves where it first crosses 63 % by about {o.noise[1] * 1e3:.3g} ms; the "
-            "least-squares T uses every sample, so it is the one to trust."
+            + (
+                "least-squares T uses every sample, so it is the one to trust."
+                if o.T_ci is None
+                else "least-squares T uses every sample, but its own 95 % interval "
+                f"({format_interval(o.T_ci[0] * 1e3, o.T_ci[1] * 1e3, 'ms')}) holds the "
+                "reading too: this log does not tell them apart, and neither pins T (see "
+                "T's interval below)."
+            )
         )
     return (
         "The measured speed is the mean over each sample interval, so "

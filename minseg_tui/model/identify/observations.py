@@ -281,7 +281,9 @@ class T63Differs(Observation):
     why (``why``). ``dead_time`` (s); ``shape``: the part of the reading the fitted model read
     the same way does not give (s), or None; ``noise``: the speed's scatter (rad/s) and the
     sway it gives a reading of single samples (s), or None (as
-    :func:`response_observations` takes them)."""
+    :func:`response_observations` takes them); ``T_ci``: the least-squares T's 95 % interval
+    (s) when it holds the 63 % reading too (the log then does not tell the two apart), else
+    None."""
 
     code: ClassVar[str] = "T_63_differs"
     T_63: float
@@ -290,6 +292,7 @@ class T63Differs(Observation):
     dead_time: float
     shape: float | None
     noise: tuple[float, float] | None
+    T_ci: tuple[float, float] | None = None
 
 
 @dataclass(frozen=True)
@@ -348,6 +351,7 @@ def response_observations(
     dead_time: float = 0.0,
     shape: float | None = None,
     noise: tuple[float, float] | None = None,
+    T_ci: tuple[float, float] | None = None,
 ) -> list[Observation]:
     """What the run log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
@@ -359,7 +363,8 @@ def response_observations(
     shift on its bound, or a dead time in the model and no logging stall read across), the part of the reading the fitted model read the same way does not
     give (s), else None; noise: the speed's scatter (rad/s) and how far it moves a reading of
     single samples (s), from :func:`~.identification.reading_noise`, or None: a shape within
-    that sway is said to be the noise, not a shape one time constant does not follow.
+    that sway is said to be the noise, not a shape one time constant does not follow;
+    T_ci: the least-squares T's 95 % interval (s), or None.
     """
     observations: list[Observation] = []
     levels = tuple(sorted({s.u_req for s in steps if s.u_req is not None}))
@@ -382,7 +387,10 @@ def response_observations(
         observations.append(TShort(T, SHORT_T_SAMPLES, ts))
     if T_63 is not None and abs(T_63 - T) > 0.25 * T:
         why = _t63_why(T, T_63, dead_time, shape, noise)
-        observations.append(T63Differs(T_63, T, why, dead_time, shape, noise))
+        holds = T_ci is not None and T_ci[0] <= T_63 <= T_ci[1]
+        observations.append(
+            T63Differs(T_63, T, why, dead_time, shape, noise, T_ci if holds else None)
+        )
     short = [s for s in steps if s.duration < 5 * T]
     if short:
         observations.append(NotSettled(len(short), T))
