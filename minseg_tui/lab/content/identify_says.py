@@ -444,6 +444,21 @@ def _(o: ShiftMisfit) -> str:
 
 @sentence.register
 def _(o: TRowsApart) -> str:
+    if o.creep is not None and o.miss is not None:
+        return (
+            f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
+            f"edge alone give {format_constant(o.rise_T, 's')} (95 % "
+            f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}), all the rows the "
+            f"fit uses {format_constant(o.T, 's')}. After the rise the speed keeps creeping "
+            f"{'up' if o.creep[1] > o.creep[0] else 'down'}, from "
+            f"{format_number(o.creep[0], 3)} to {format_number(o.creep[1], 3)} rad/s by the end "
+            "of the step, and one time constant cannot follow both: the fit of every row takes "
+            "a longer T that partly follows the creep, and its model rises more slowly than "
+            f"the wheel, by up to {format_number(o.miss, 2)} rad/s on the rise. "
+            f"{format_constant(o.rise_T, 's')} is the T the rise itself follows; the model "
+            f"(Task 14) uses {format_constant(o.T, 's')}, the T of every row. "
+            "The 95 % interval of T spans both fits. Read T with care."
+        )
     return (
         f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
         f"edge alone give {format_constant(o.rise_T, 's')} (95 % "
