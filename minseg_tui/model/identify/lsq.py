@@ -128,7 +128,7 @@ def rounding_errors(predicted: FloatArray, quantum: float) -> FloatArray:
     """The errors (rad) the encoder's rounding would leave on the angle ``predicted`` (rad)
     read as whole counts of ``quantum`` rad, one row per phase of the counts' grid
     (:data:`ROUNDING_PHASES` phases, evenly spaced): ``quantum`` floor(predicted / quantum +
-    phase) less ``predicted``. NaN rows (not fitted) give 0."""
+    phase) less ``predicted``. NaN rows (not fitted, left out) give 0."""
     phases = (np.arange(ROUNDING_PHASES) + 0.5) / ROUNDING_PHASES
     x = np.where(np.isfinite(predicted), predicted, 0.0) / quantum
     out: FloatArray = quantum * (np.floor(x[None, :] + phases[:, None]) - x[None, :])
@@ -140,7 +140,7 @@ def cluster_covariance(
     r: FloatArray,
     starts: NDArray[np.int64],
     lag: int,
-    rounding: FloatArray | None = None,
+    counts: tuple[FloatArray, float] | None = None,
 ) -> Covariance:
     """The sandwich covariance (J^T J)^-1 (sum_c s_c s_c^T) (J^T J)^-1 of least-squares
     parameters, with s_c = J_c^T r_c summed over the rows of cluster c.
@@ -155,10 +155,10 @@ def cluster_covariance(
     rows' scores up to ``lag`` rows apart is estimated instead (Newey and West's weights),
     with n - p degrees of freedom. That estimate is low on a single step: the scores of its
     rows sum to zero at the optimum, so the lagged sums that should hold their correlation
-    cancel. Where the angle is read in whole counts, ``rounding`` (phases x n, from
-    :func:`rounding_errors`) adds the spread the rounding alone gives the parameters over the
-    phases of the counts' grid against the fitted angle (linearised: (J^T J)^-1 J^T e for
-    each phase's errors e): on a slow wheel's coarse counts the rounding error follows the
+    cancel. Where the angle is read in whole counts, ``counts`` (the fitted angle at the n
+    rows, rad, NaN at a row left out, and the count, rad) adds the spread the rounding alone
+    gives the parameters over the phases of the counts' grid against the fitted angle
+    (:func:`rounding_errors`; linearised: (J^T J)^-1 J^T e for each phase's errors e): on a slow wheel's coarse counts the rounding error follows the
     angle's slow sweep across the grid, and the residuals of one rise do not show how much of
     T it can move (tests/model/identgen.py at 5 ms, one rise of 2-5 counts a sample: T's
     spread 0.9 ms where the lagged estimate gave 0.45).
@@ -171,7 +171,8 @@ def cluster_covariance(
         g = J * r[:, None]
         meat = _lagged_meat(g, min(max(lag, 0), n - 1), lag)
         cov = inv @ meat @ inv * n / max(n - p, 1)
-        if rounding is not None:
+        if counts is not None:
+            rounding = rounding_errors(*counts)
             moved = rounding @ J  # phases x p: what each phase's rounding moves the scores by
             moved -= moved.mean(axis=0)
             cov = cov + inv @ (moved.T @ moved / rounding.shape[0]) @ inv

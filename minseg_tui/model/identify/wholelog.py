@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, dot, rounding_errors
+from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, dot
 from minseg_tui.model.optimize import Solution, least_squares
 
 FloatArray = NDArray[np.float64]
@@ -361,8 +361,8 @@ def fit_whole_log(
     lag = math.ceil(2.0 * T / max(float(np.median(np.diff(t))), 1e-9))  # two time constants
     sign = model.sign if model.sign else 1.0
     predicted = th - chosen.every_residual(best.x, float(best.coef[0])) * sign
-    rounding = None if quantum is None else rounding_errors(predicted, quantum) * w
-    cov = cluster_covariance(J, best.residuals, clusters, lag, rounding)
+    counts = None if quantum is None else (np.where(w > 0, predicted, np.nan), quantum)
+    cov = cluster_covariance(J, best.residuals, clusters, lag, counts)
     return WholeLogFit(
         T=T,
         d=d,

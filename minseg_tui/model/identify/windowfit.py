@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, dot, rounding_errors
+from minseg_tui.model.identify.lsq import Covariance, cluster_covariance, dot
 from minseg_tui.model.identify.rises import RiseWindow
 from minseg_tui.model.optimize import least_squares
 
@@ -180,8 +180,8 @@ def fit_windows(
     J = np.where(on_bound, 0.0, J)  # a parameter held on its bound is not fitted
     lag = math.ceil(2.0 * T / ts)  # two time constants
     predicted = theta[prob.rows] - sol.residuals
-    rounding = None if quantum is None else rounding_errors(predicted, quantum)
-    cov = cluster_covariance(J, sol.residuals, prob.starts, lag, rounding)
+    counts = None if quantum is None else (predicted, quantum)
+    cov = cluster_covariance(J, sol.residuals, prob.starts, lag, counts)
     coef = sol.coef.reshape(-1, _P)
     B = prob.basis(T, d)
     Ms, scale = prob.normal(B)
