@@ -8,7 +8,10 @@ So the covariance is the cluster-robust ("sandwich") estimate with the log cut i
 of rows that belong together (the stretch after each edge): errors inside a cluster may be
 correlated in any way, clusters are taken as independent. Its Student t quantile has as many
 degrees of freedom as there are clusters less one. A log with a single step has too few
-clusters for that; its rows' correlation over a couple of time constants is estimated then.
+clusters for that; its rows' correlation over a couple of time constants is estimated then,
+and where the angle is whole encoder counts the spread the counts' rounding gives the
+parameters is added to it (that estimate alone is low on one step: see
+:func:`cluster_covariance`).
 """
 
 from __future__ import annotations
