@@ -75,6 +75,38 @@ def test_switch_on_glitches_after_a_zeroed_first_row_are_named_and_left_out(seed
 
 
 @pytest.mark.shared_data
+def test_the_rise_s_T_and_every_row_s_T_are_told_apart_by_what_the_log_does():
+    # micromouse-n20-duty100 (plotted: data, the model of every row, T 152.6 ms, and of the
+    # rise's rows, 107.3 ms): the rise's rows follow 107-111 ms within 0.1 rad/s; after them
+    # the speed creeps on, 39.0 -> 41.4 rad/s over the next 3 s, and the fit of every row,
+    # which the model of Task 14 uses, stretches T to 152.6 ms and rises up to 3.8 rad/s
+    # (a 5-row mean) behind the wheel. identify said only "the later rows, long after the
+    # rise, pull T longer", without which T the rise follows or what the model uses
+    log = read_run_log(REAL / "micromouse-n20-duty100" / "step.csv")
+    r = identify(table(13.5), 5.0, log)
+    s = r.step
+    assert s is not None and s.fit.rise_T is not None
+    said = [sentence(o) for o in r.observations if o.code == "T_rows_apart"]
+    assert len(said) == 1
+    assert "After the rise the speed keeps creeping up, from 39.0 to 41.4 rad/s" in said[0]
+    assert "its model rises more slowly than the wheel, by up to 3.8 rad/s on the rise" in said[0]
+    assert "107.3 ms is the T the rise itself follows" in said[0]
+    assert "the model (Task 14) uses 152.6 ms, the T of every row" in said[0]
+    # the figures, from the log itself: the speed over the first and the last 0.3 s after the
+    # rise's 4 T (the wheel answers 28.6 ms after the step at 0.460 s)
+    t, w = np.asarray(log.t), np.asarray(log.omega)
+    after = t > 0.460 + s.dead_time + 4 * s.fit.rise_T
+    early = after & (t < t[after][0] + 0.29)
+    late = t > t[-1] - 0.29
+    assert float(np.mean(w[early])) == pytest.approx(39.0, abs=0.15)
+    assert float(np.mean(w[late])) == pytest.approx(41.4, abs=0.15)
+    # the model of every row behind the wheel on the rise
+    model = np.diff(s.fit.predicted) / np.diff(t)
+    rise = (t[1:] > 0.489) & (t[1:] < 0.489 + 4 * s.fit.rise_T)
+    assert float(np.mean((w[1:] - model)[rise])) > 1.0
+
+
+@pytest.mark.shared_data
 def test_T_s_interval_holds_the_start_the_counts_cannot_pin():
     # ev3-large-duty30: a 1-degree encoder at 4.6 rad/s; the speed is 0 on the rows to 25 ms
     # after the step and the first count comes by 30 ms, as a first-order rise starting 5-6
@@ -109,7 +141,11 @@ def test_T_s_interval_covers_more_often_where_the_start_lies_between_samples():
     # tests/model/identgen.py at 5 ms, one rise of a slow wheel (K = 2 rad/s per V: 2-5 counts
     # a sample), a dead time of 1.2-2 sample periods: past the shift's bound of one period, too
     # short for the wheel to be seen standing. The shift ends on its bound on most logs, and
-    # T's interval, computed with the shift held there, held the true T on 4 of 20 logs
+    # T's interval, computed with the shift held there, held the true T on 4 of 20 logs; with
+    # the fit with the shift free held too, 13 of 20. The rest was the encoder's rounding: on
+    # one rise the lagged residual estimate cancels (the scores sum to zero), while the
+    # rounding of 2-5 counts a sample moves T by twice that; its spread over the phases of the
+    # counts' grid is now in the interval (18 of 20)
     hits = 0
     for seed in range(20):
         d = float(np.random.default_rng(1000 + seed).uniform(1.2, 2.0)) * 0.005
@@ -117,7 +153,27 @@ def test_T_s_interval_covers_more_often_where_the_start_lies_between_samples():
         s = identify(table(g.K), 5.0, g.log).step
         assert s is not None
         hits += s.T_ci[0] <= g.T <= s.T_ci[1]
-    assert hits >= 12
+    assert hits >= 18
+
+
+@pytest.mark.shared_data
+def test_T_s_interval_on_one_rise_of_coarse_counts_holds_the_rounding():
+    # the same slow wheel with no dead time: the start is known, and T's spread over 40 logs
+    # of one rise (T = 50 ms, 2-5 counts a sample) is 0.85 ms, where the interval from the
+    # residuals of one rise said 0.44 ms (a standard error) and held T on 67 % of them. The
+    # rounding's share now widens it to what the spread is, not beyond: a log of four rises
+    # (eight clusters of rows, their own spread in the interval) keeps its interval
+    T, hits, se = 0.05, 0, []
+    for seed in range(40):
+        g = make(seed, ts=0.005, T_range=(T, T), periods=1, rest_rows=20, K=2.0)
+        fit = identify(table(g.K), 5.0, g.log).step
+        assert fit is not None
+        hits += fit.T_ci[0] <= T <= fit.T_ci[1]
+        se.append(fit.fit.se)
+    assert hits >= 36
+    assert 0.6e-3 < float(np.median(se)) < 1.0e-3
+    four = identify(table(2.0), 5.0, make(0, ts=0.005, T_range=(T, T), K=2.0).log).step
+    assert four is not None and four.fit.dof > 4 and four.fit.se < 0.5e-3
 
 
 @pytest.mark.shared_data

@@ -236,7 +236,14 @@ def _t63_why(o: T63Differs) -> str:
             f"{format_signed(o.shape * 1e3, 3)} ms the noise of reading single samples: the "
             f"speed scatters {format_number(o.noise[0], 3)} rad/s from sample to sample, which "
             f"moves where it first crosses 63 % by about {o.noise[1] * 1e3:.3g} ms; the "
-            "least-squares T uses every sample, so it is the one to trust."
+            + (
+                "least-squares T uses every sample, so it is the one to trust."
+                if o.T_ci is None
+                else "least-squares T uses every sample, but its own 95 % interval "
+                f"({format_interval(o.T_ci[0] * 1e3, o.T_ci[1] * 1e3, 'ms')}) holds the "
+                "reading too: this log does not tell them apart, and neither pins T (see "
+                "T's interval below)."
+            )
         )
     return (
         "The measured speed is the mean over each sample interval, so "
@@ -437,6 +444,21 @@ def _(o: ShiftMisfit) -> str:
 
 @sentence.register
 def _(o: TRowsApart) -> str:
+    if o.creep is not None and o.miss is not None:
+        return (
+            f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
+            f"edge alone give {format_constant(o.rise_T, 's')} (95 % "
+            f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}), all the rows the "
+            f"fit uses {format_constant(o.T, 's')}. After the rise the speed keeps creeping "
+            f"{'up' if o.creep[1] > o.creep[0] else 'down'}, from "
+            f"{format_number(o.creep[0], 3)} to {format_number(o.creep[1], 3)} rad/s by the end "
+            "of the step, and one time constant cannot follow both: the fit of every row takes "
+            "a longer T that partly follows the creep, and its model rises more slowly than "
+            f"the wheel, by up to {format_number(o.miss, 2)} rad/s on the rise. "
+            f"{format_constant(o.rise_T, 's')} is the T the rise itself follows; the model "
+            f"(Task 14) uses {format_constant(o.T, 's')}, the T of every row. "
+            "The 95 % interval of T spans both fits. Read T with care."
+        )
     return (
         f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
         f"edge alone give {format_constant(o.rise_T, 's')} (95 % "

@@ -299,7 +299,18 @@ def _response_result(
     )
     observations = (
         response_observations(
-            rows, steps, hows, u_ss, T, T_63, log.ts, len(skipped), fit.dead_time, shape, noise
+            rows,
+            steps,
+            hows,
+            u_ss,
+            T,
+            T_63,
+            log.ts,
+            len(skipped),
+            fit.dead_time,
+            shape,
+            noise,
+            fit.ci,
         )
         if rows
         else []

@@ -8,7 +8,10 @@ So the covariance is the cluster-robust ("sandwich") estimate with the log cut i
 of rows that belong together (the stretch after each edge): errors inside a cluster may be
 correlated in any way, clusters are taken as independent. Its Student t quantile has as many
 degrees of freedom as there are clusters less one. A log with a single step has too few
-clusters for that; its rows' correlation over a couple of time constants is estimated then.
+clusters for that; its rows' correlation over a couple of time constants is estimated then,
+and where the angle is whole encoder counts the spread the counts' rounding gives the
+parameters is added to it (that estimate alone is low on one step: see
+:func:`cluster_covariance`).
 """
 
 from __future__ import annotations
@@ -119,8 +122,28 @@ FEW_CLUSTERS: int = 4
 """Below this many clusters (a log with one step) the rows' own correlation is estimated."""
 
 
+ROUNDING_PHASES: int = 32
+"""How many phases of the encoder's grid against the fitted angle :func:`rounding_errors`
+lays out (evenly, so the same log gives the same interval)."""
+
+
+def rounding_errors(predicted: FloatArray, quantum: float) -> FloatArray:
+    """The errors (rad) the encoder's rounding would leave on the angle ``predicted`` (rad)
+    read as whole counts of ``quantum`` rad, one row per phase of the counts' grid
+    (:data:`ROUNDING_PHASES` phases, evenly spaced): ``quantum`` floor(predicted / quantum +
+    phase) less ``predicted``. NaN rows (not fitted, left out) give 0."""
+    phases = (np.arange(ROUNDING_PHASES) + 0.5) / ROUNDING_PHASES
+    x = np.where(np.isfinite(predicted), predicted, 0.0) / quantum
+    out: FloatArray = quantum * (np.floor(x[None, :] + phases[:, None]) - x[None, :])
+    return out
+
+
 def cluster_covariance(
-    J: FloatArray, r: FloatArray, starts: NDArray[np.int64], lag: int
+    J: FloatArray,
+    r: FloatArray,
+    starts: NDArray[np.int64],
+    lag: int,
+    counts: tuple[FloatArray, float] | None = None,
 ) -> Covariance:
     """The sandwich covariance (J^T J)^-1 (sum_c s_c s_c^T) (J^T J)^-1 of least-squares
     parameters, with s_c = J_c^T r_c summed over the rows of cluster c.
@@ -133,7 +156,15 @@ def cluster_covariance(
     with a handful of clusters; dof = clusters - 1. With fewer than :data:`FEW_CLUSTERS`
     clusters (one step: taking it out leaves nothing to fit) the covariance of neighbouring
     rows' scores up to ``lag`` rows apart is estimated instead (Newey and West's weights),
-    with n - p degrees of freedom.
+    with n - p degrees of freedom. That estimate is low on a single step: the scores of its
+    rows sum to zero at the optimum, so the lagged sums that should hold their correlation
+    cancel. Where the angle is read in whole counts, ``counts`` (the fitted angle at the n
+    rows, rad, NaN at a row left out, and the count, rad) adds the spread the rounding alone
+    gives the parameters over the phases of the counts' grid against the fitted angle
+    (:func:`rounding_errors`; linearised: (J^T J)^-1 J^T e for each phase's errors e): on a slow wheel's coarse counts the rounding error follows the
+    angle's slow sweep across the grid, and the residuals of one rise do not show how much of
+    T it can move (tests/model/identgen.py at 5 ms, one rise of 2-5 counts a sample: T's
+    spread 0.9 ms where the lagged estimate gave 0.45).
     """
     n, p = J.shape
     C = int(starts.size)
@@ -143,6 +174,11 @@ def cluster_covariance(
         g = J * r[:, None]
         meat = _lagged_meat(g, min(max(lag, 0), n - 1), lag)
         cov = inv @ meat @ inv * n / max(n - p, 1)
+        if counts is not None:
+            rounding = rounding_errors(*counts)
+            moved = rounding @ J  # phases x p: what each phase's rounding moves the scores by
+            moved -= moved.mean(axis=0)
+            cov = cov + inv @ (moved.T @ moved / rounding.shape[0]) @ inv
         return Covariance(cov=cov, dof=max(n - p, 1), clusters=C)
     scores = np.add.reduceat(J * r[:, None], starts, axis=0)  # C x p
     if C <= MANY_CLUSTERS:

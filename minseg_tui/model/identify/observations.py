@@ -281,7 +281,9 @@ class T63Differs(Observation):
     why (``why``). ``dead_time`` (s); ``shape``: the part of the reading the fitted model read
     the same way does not give (s), or None; ``noise``: the speed's scatter (rad/s) and the
     sway it gives a reading of single samples (s), or None (as
-    :func:`response_observations` takes them)."""
+    :func:`response_observations` takes them); ``T_ci``: the least-squares T's 95 % interval
+    (s) when it holds the 63 % reading too (the log then does not tell the two apart), else
+    None."""
 
     code: ClassVar[str] = "T_63_differs"
     T_63: float
@@ -290,6 +292,7 @@ class T63Differs(Observation):
     dead_time: float
     shape: float | None
     noise: tuple[float, float] | None
+    T_ci: tuple[float, float] | None = None
 
 
 @dataclass(frozen=True)
@@ -348,6 +351,7 @@ def response_observations(
     dead_time: float = 0.0,
     shape: float | None = None,
     noise: tuple[float, float] | None = None,
+    T_ci: tuple[float, float] | None = None,
 ) -> list[Observation]:
     """What the run log shows (Tasks 11-13): where u_ss came from, steps that disagree with
     the table, a T too short for the sampling, steps too short to settle or to use.
@@ -359,7 +363,8 @@ def response_observations(
     shift on its bound, or a dead time in the model and no logging stall read across), the part of the reading the fitted model read the same way does not
     give (s), else None; noise: the speed's scatter (rad/s) and how far it moves a reading of
     single samples (s), from :func:`~.identification.reading_noise`, or None: a shape within
-    that sway is said to be the noise, not a shape one time constant does not follow.
+    that sway is said to be the noise, not a shape one time constant does not follow;
+    T_ci: the least-squares T's 95 % interval (s), or None.
     """
     observations: list[Observation] = []
     levels = tuple(sorted({s.u_req for s in steps if s.u_req is not None}))
@@ -382,7 +387,10 @@ def response_observations(
         observations.append(TShort(T, SHORT_T_SAMPLES, ts))
     if T_63 is not None and abs(T_63 - T) > 0.25 * T:
         why = _t63_why(T, T_63, dead_time, shape, noise)
-        observations.append(T63Differs(T_63, T, why, dead_time, shape, noise))
+        holds = T_ci is not None and T_ci[0] <= T_63 <= T_ci[1]
+        observations.append(
+            T63Differs(T_63, T, why, dead_time, shape, noise, T_ci if holds else None)
+        )
     short = [s for s in steps if s.duration < 5 * T]
     if short:
         observations.append(NotSettled(len(short), T))
@@ -594,13 +602,60 @@ class ShiftMisfit(Observation):
 @dataclass(frozen=True)
 class TRowsApart(Observation):
     """The rows up to ``span`` T after each edge alone give ``rise_T`` (s, 95 % ``rise_ci``),
-    all the rows ``T`` (s)."""
+    all the rows ``T`` (s). ``creep``: when every row's T is the longer, the first rise's
+    speed after its rows (rad/s: the mean of the first and of the last tenth of the rows
+    from ``span`` rise_T after the wheel answers to the next edge) when it moves on by more
+    than :data:`CREEP_SHARE` of the rise, else None; ``miss``: how far the model of every
+    row falls behind the wheel on that rise's rows (rad/s, the largest 5-row mean), with it."""
 
     code: ClassVar[str] = "T_rows_apart"
     span: float
     rise_T: float
     rise_ci: tuple[float, float]
     T: float
+    creep: tuple[float, float] | None = None
+    miss: float | None = None
+
+
+CREEP_SHARE: float = 0.03
+"""After a rise the speed creeps on when it moves by more than this share of the rise between
+the first and the last tenth of the rows after the rise's own (:class:`TRowsApart`)."""
+
+
+def _creep(log: RunLog, fit: TimeConstantFit) -> tuple[tuple[float, float], float] | None:
+    """The first rise's creep after its own rows and the every-row model's miss on those rows
+    (see :class:`TRowsApart`), or None. ``log``: the rows the fit used."""
+    if fit.rise_T is None or not fit.T > fit.rise_T:
+        return None
+    t = log.board_time()
+    w = np.asarray(log.omega, dtype=float)
+    model = np.full(t.size, np.nan)
+    model[1:] = np.diff(fit.predicted) / np.diff(t)
+    windows, _ = rise_windows(log)
+    if not windows:
+        return None
+    win = windows[0]
+    k = win.edge.start
+    start = float(t[k]) + max(fit.dead_time, fit.shift, 0.0)
+    end = int(win.post_last)
+    rise_rows = np.arange(k + 1, end + 1)
+    rise_rows = rise_rows[t[rise_rows] <= start + RISE_SPAN * fit.rise_T]
+    later = np.arange(k + 1, end + 1)
+    later = later[t[later] > start + RISE_SPAN * fit.rise_T]
+    if rise_rows.size < 5 or later.size < 20:
+        return None
+    tenth = later.size // 10
+    first = float(np.mean(w[later[:tenth]]))  # means: a count's steps alternate
+    last = float(np.mean(w[later[-tenth:]]))
+    before = float(np.median(w[win.pre_from : k + 1]))
+    if not abs(last - first) > CREEP_SHARE * abs(first - before):
+        return None
+    gap = w[rise_rows] - model[rise_rows]
+    gap = gap[np.isfinite(gap)]
+    if gap.size < 5:
+        return None
+    means = np.convolve(gap, np.ones(5) / 5.0, mode="valid")
+    return (first, last), float(np.max(np.abs(means)))
 
 
 @dataclass(frozen=True)
@@ -690,7 +745,17 @@ def fit_observations(
             )
         )
     if fit.rise_T is not None and fit.rise_ci is not None:
-        out.append(TRowsApart(RISE_SPAN, fit.rise_T, fit.rise_ci, fit.T))
+        creep = _creep(log.rows_from(glitches) if glitches else log, fit)
+        out.append(
+            TRowsApart(
+                RISE_SPAN,
+                fit.rise_T,
+                fit.rise_ci,
+                fit.T,
+                None if creep is None else creep[0],
+                None if creep is None else creep[1],
+            )
+        )
     if fit.T_on_bound:
         lo, hi = fit.T_range
         out.append(TOnBound(fit.T, lo, hi))

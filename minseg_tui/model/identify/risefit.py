@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -305,6 +306,16 @@ def _robust_sd(x: FloatArray) -> float:
     return 1.4826 * float(np.median(np.abs(x - np.median(x))))
 
 
+def _count_quantum(theta: FloatArray, cpr: int) -> float | None:
+    """The encoder's count (rad, 2 pi / ``cpr``) when the angle ``theta`` (rad) is whole counts
+    of it (from the count column, or an Euler speed of counts over a fixed period), else None:
+    the rounding's share of T's interval is then known from the fitted angle
+    (:func:`.lsq.rounding_errors`)."""
+    q = 2.0 * math.pi / cpr
+    x = (theta - theta[0]) / q
+    return q if bool(np.all(np.abs(x - np.round(x)) <= 1e-6)) else None
+
+
 def _fit(
     log: RunLog,
     windows: list[RiseWindow],
@@ -330,6 +341,8 @@ def _fit(
     onset = _onset(log, windows)
     rise_63 = _onset(log, windows, 1.0 - math.exp(-1.0))
     delays: tuple[float, ...] = ()
+    quantum = _count_quantum(theta, log.cpr)
+    windows_fit = partial(fit_windows, quantum=quantum)
 
     def late_start(T: float) -> bool:
         """Whether the wheel starts later than a first-order rise of T (s) would show, by
@@ -370,10 +383,10 @@ def _fit(
         return True
 
     if prior is None:
-        rises_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep)
+        rises_fit = windows_fit(t, theta, windows, ts, reach, T_range, keep)
     else:
         T_near = tuple(f * prior.T for f in near)
-        rises_fit = fit_windows(t, theta, windows, ts, reach, T_range, keep, (prior.shift,), T_near)
+        rises_fit = windows_fit(t, theta, windows, ts, reach, T_range, keep, (prior.shift,), T_near)
     # the rise's own time from its onset to 63 %: where the search for T with a dead time also
     # starts (the T found without one may have run to its bound chasing a late response, and
     # the factors of it then miss the rise: micromouse-n20-duty255 cut at 1.5 s went to T =
@@ -384,7 +397,7 @@ def _fit(
     rises_reach = reach
     if prior is None and late_start(rises_fit.T):
         T_starts = (*(f * rises_fit.T for f in WIDE_T_FACTORS), *T_read)
-        late = fit_windows(
+        late = windows_fit(
             t, theta, windows, ts, (-bound, d_max), T_range, keep, (0.0, *delays), T_starts
         )
         if dead(late.d, rises_fit.rss, late.rss, late.rows.size, late.n_params):
@@ -402,6 +415,7 @@ def _fit(
     def whole_fit(
         shift: tuple[float, float], T0: float, rows: FloatArray | None = weights, **kw: Any
     ) -> WholeLogFit | None:
+        kw["quantum"] = quantum
         return fit_whole_log(
             t, u, theta, T0, clusters, timings, not stamped, shift, T_range, rows, **kw
         )
@@ -429,7 +443,7 @@ def _fit(
     def fixed_d(d: float, T0: float) -> float:
         """The residual sum of squares of the fit of the rises' own rows with the dead time
         held at d (s), T free from T0 (s)."""
-        f = fit_windows(
+        f = windows_fit(
             t, theta, windows, ts, (d, d + 1e-9), T_range, mask_r, (d,), (T0, 0.8 * T0, 1.25 * T0)
         )
         return f.rss
@@ -444,7 +458,7 @@ def _fit(
         # there keeps rows after it in every window)
         mask_r = _rise_rows(t, starts_r, rises_fit.T, max(rises_fit.d, onset or 0.0), keep)
         if mask_r is not None:
-            plain = fit_windows(
+            plain = windows_fit(
                 t,
                 theta,
                 windows,
@@ -456,7 +470,7 @@ def _fit(
                 tuple(f * rises_fit.T for f in (0.5, 0.7, *near)),
             )
             try:
-                late_r: WindowsFit | None = fit_windows(
+                late_r: WindowsFit | None = windows_fit(
                     t,
                     theta,
                     windows,
@@ -475,7 +489,7 @@ def _fit(
                 # the response cannot start before the rises show it: the earliest dead time
                 # their rows allow (on coarse counts a start between samples trades against T)
                 held = (_earliest_start(late_r, bound, fixed_d), d_max)
-                rises_fit = fit_windows(
+                rises_fit = windows_fit(
                     t,
                     theta,
                     windows,
@@ -557,7 +571,7 @@ def _fit(
         starts = np.array([w.edge.start for w in windows], dtype=np.int64)
         mask = _rise_rows(t, starts, rises_fit.T, rises_fit.d, keep)
         if mask is not None:
-            alone_w = fit_windows(
+            alone_w = windows_fit(
                 t,
                 theta,
                 windows,
@@ -573,7 +587,7 @@ def _fit(
                 rise = (alone_w.T, math.sqrt(max(float(c.cov[0, 0]), 0.0)), c.half_width(0))
     free: tuple[float, float, float, float] | None = None
     if late_end(rises_fit.d, rises_fit.d_on_bound, rises_fit.T_on_bound):
-        free_f = fit_windows(
+        free_f = windows_fit(
             t,
             theta,
             windows,

@@ -306,6 +306,7 @@ def fit_whole_log(
     weights: FloatArray | None = None,
     shift_starts: tuple[float, ...] = (),
     T_factors: tuple[float, ...] = T_FACTORS,
+    quantum: float | None = None,
 ) -> WholeLogFit | None:
     """Fit the first-order model to the whole log.
 
@@ -318,7 +319,9 @@ def fit_whole_log(
     the range (s) the time shift of the edges may take; T_range: the range of T (s);
     weights: 1 for each row the fit uses, 0 for one it leaves out (default: all);
     shift_starts: shifts (s) the search may start from (default 0), each with T at
-    ``T_factors`` times T0. None when the voltage never changes.
+    ``T_factors`` times T0; quantum: the encoder's count (rad) when the angle is read in whole
+    counts (None otherwise), for the rounding's share of the covariance
+    (:func:`.lsq.cluster_covariance`). None when the voltage never changes.
     """
     th = np.asarray(theta, dtype=float)
     n = th.size
@@ -356,8 +359,10 @@ def fit_whole_log(
     col = chosen.demean(model.column(T, d, u_c))
     J = np.column_stack((col, D))  # (K, T, d[, u_c]), the offsets projected off
     lag = math.ceil(2.0 * T / max(float(np.median(np.diff(t))), 1e-9))  # two time constants
-    cov = cluster_covariance(J, best.residuals, clusters, lag)
     sign = model.sign if model.sign else 1.0
+    predicted = th - chosen.every_residual(best.x, float(best.coef[0])) * sign
+    counts = None if quantum is None else (np.where(w > 0, predicted, np.nan), quantum)
+    cov = cluster_covariance(J, best.residuals, clusters, lag, counts)
     return WholeLogFit(
         T=T,
         d=d,
@@ -372,5 +377,5 @@ def fit_whole_log(
         n_used=int(np.count_nonzero(w)),
         covariance=cov,
         residuals=best.residuals * sign,
-        predicted=th - chosen.every_residual(best.x, float(best.coef[0])) * sign,
+        predicted=predicted,
     )

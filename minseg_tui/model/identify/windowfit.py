@@ -152,12 +152,15 @@ def fit_windows(
     keep: NDArray[np.bool_] | None = None,
     shift_starts: tuple[float, ...] = (0.0,),
     T_starts: tuple[float, ...] = (),
+    quantum: float | None = None,
 ) -> WindowsFit:
     """Fit T and the time shift to the rises' windows: board times ``t`` (s), angle
     ``theta`` (rad) at every row, the usable ``windows``; ``ts``: sample period (s); shift:
     the range (s) of the time shift; T_range: the range of T (s); keep: the rows the fit may
     use (default: all); shift_starts: the shifts (s) the search may start from, each with T
-    at ``T_starts`` (s; default: a grid from ts/20 to the longest step)."""
+    at ``T_starts`` (s; default: a grid from ts/20 to the longest step); quantum: the
+    encoder's count (rad) when the angle is read in whole counts (None otherwise), for the
+    rounding's share of the covariance (:func:`.lsq.cluster_covariance`)."""
     prob = _Problem(np.asarray(t, float), np.asarray(theta, float), windows, keep)
     lo = np.array([math.log(T_range[0]), shift[0]])
     hi = np.array([math.log(T_range[1]), shift[1]])
@@ -176,7 +179,9 @@ def fit_windows(
     on_bound = (sol.x <= lo + 1e-9) | (sol.x >= hi - 1e-9)
     J = np.where(on_bound, 0.0, J)  # a parameter held on its bound is not fitted
     lag = math.ceil(2.0 * T / ts)  # two time constants
-    cov = cluster_covariance(J, sol.residuals, prob.starts, lag)
+    predicted = theta[prob.rows] - sol.residuals
+    counts = None if quantum is None else (predicted, quantum)
+    cov = cluster_covariance(J, sol.residuals, prob.starts, lag, counts)
     coef = sol.coef.reshape(-1, _P)
     B = prob.basis(T, d)
     Ms, scale = prob.normal(B)
@@ -198,5 +203,5 @@ def fit_windows(
         omega_ss_se=se,
         rows=prob.rows,
         residuals=sol.residuals,
-        predicted=theta[prob.rows] - sol.residuals,
+        predicted=predicted,
     )
