@@ -127,8 +127,6 @@ class LivePanel(Vertical, PanelKeys):
         return True
 
     def key_actions(self) -> Mapping[str, Callable[[], object]]:
-        """The panel keys it has (:func:`~minseg_tui.ui.keys.panel_keys`), each with the
-        method that does it."""
         return {"set_voltage": self.action_set_voltage, "capture": self.action_capture}
 
     async def action_set_voltage(self) -> None:

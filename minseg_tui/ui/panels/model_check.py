@@ -132,8 +132,6 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         residual.show(traces, span)
 
     def key_actions(self) -> Mapping[str, Callable[[], object]]:
-        """The panel keys it has (:func:`~minseg_tui.ui.keys.panel_keys`), each with the
-        method that does it."""
         return {"zoom_next": self.action_zoom_next}
 
     def action_zoom_next(self) -> None:

@@ -334,8 +334,6 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         self._plot()
 
     def key_actions(self) -> Mapping[str, Callable[[], object]]:
-        """The panel keys it has (:func:`~minseg_tui.ui.keys.panel_keys`), each with the
-        method that does it."""
         return {
             "zoom_next": self.action_zoom_next,
             "pick_prev": self.action_pick_prev,

@@ -160,8 +160,6 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
             self.query_one("#run-status", Prose).update(said or "no runs recorded yet")
 
     def key_actions(self) -> Mapping[str, Callable[[], object]]:
-        """The panel keys it has (:func:`~minseg_tui.ui.keys.panel_keys`), each with the
-        method that does it."""
         return {"run_square_wave": self.action_run_square_wave, "run_fast": self.action_run_fast}
 
     def action_run_square_wave(self) -> None:

@@ -59,8 +59,6 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         self._warnings.display = bool(view.warnings)
 
     def key_actions(self) -> Mapping[str, Callable[[], object]]:
-        """The panel keys it has (:func:`~minseg_tui.ui.keys.panel_keys`), each with the
-        method that does it."""
         return {"formula": self.action_formula}
 
     def action_formula(self) -> None:
