@@ -6,8 +6,8 @@ once."""
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import ClassVar
 
 from textual.binding import Binding
 from textual.widget import Widget
@@ -221,11 +221,16 @@ def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
 
 
 class PanelKeys(Widget):
-    """A step panel with keys (:func:`panel_keys`): ``KEYS``, the actions of those it has,
-    each done by its ``action_`` method of that name; its ``check_action`` says on which
-    steps one does nothing. The app binds the keys (:class:`~minseg_tui.ui.app.LabApp`)."""
+    """A step panel with keys (:func:`panel_keys`): :meth:`key_actions`, the actions of those
+    it has, each with the method that does it; its ``check_action`` says on which steps one
+    does nothing. The app binds the keys (:class:`~minseg_tui.ui.app.LabApp`), and the lab
+    screen calls the method
+    (:meth:`~minseg_tui.ui.screens.lab.LabScreen.run_panel_key`)."""
 
-    KEYS: ClassVar[tuple[str, ...]] = ()
+    def key_actions(self) -> Mapping[str, Callable[[], object]]:
+        """The panel keys' actions it has (:func:`panel_keys`), each with its method (awaited
+        when it returns an awaitable)."""
+        return {}
 
 
 FOOTER_ON: dict[str, tuple[str, ...]] = {k.action: k.footer_on for k in KEYMAP if k.footer_on}

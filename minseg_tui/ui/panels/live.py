@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
+
 import numpy as np
 from numpy.typing import NDArray
 from textual.app import ComposeResult
@@ -30,8 +32,6 @@ class LivePanel(Vertical, PanelKeys):
     ``refresh`` s; never per sample), the manual's speed beside the timestamp one; the
     steady-state indicator (Task 4); F3 asks for the next voltage, F4 for a capture; the
     multimeter. Shows the app's ``requested`` voltage, ``meter`` reading and ``device``."""
-
-    KEYS = ("set_voltage", "capture")
 
     requested: reactive[float | None] = reactive(None)
     meter: reactive[MeterReading | None] = reactive(None)
@@ -126,6 +126,9 @@ class LivePanel(Vertical, PanelKeys):
         if action == "capture":
             return "capture_omega" in self.step.actions
         return True
+
+    def key_actions(self) -> Mapping[str, Callable[[], object]]:
+        return {"set_voltage": self.action_set_voltage, "capture": self.action_capture}
 
     async def action_set_voltage(self) -> None:
         """F3: ask the lab screen for the next of this step's voltages, and wait until the app

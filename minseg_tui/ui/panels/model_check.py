@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
+
 from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
@@ -32,8 +34,6 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
     what the check cannot say. A log recorded elsewhere can be loaded (Enter in the path
     asks for it): its box stands under the step's notes (:meth:`after_rows`), so that Tab
     reaches the notes first and notes are never typed into it."""
-
-    KEYS = ("zoom_next",)
 
     def __init__(self) -> None:
         super().__init__()
@@ -130,6 +130,9 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             traces.append(Trace(t, om - ex, "extended", "+", colour=2, short="ext."))
         traces.append(Trace(t, om - ba, "first order", "braille", colour=1, short="1st order"))
         residual.show(traces, span)
+
+    def key_actions(self) -> Mapping[str, Callable[[], object]]:
+        return {"zoom_next": self.action_zoom_next}
 
     def action_zoom_next(self) -> None:
         """F9: the close-up, or the whole log."""

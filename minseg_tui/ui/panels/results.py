@@ -4,6 +4,7 @@ group's own readings."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping
 from typing import ClassVar
 
 import numpy as np
@@ -108,8 +109,6 @@ class ResponsePlot(TracePlot):
 class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
     """Tasks 11-15: the run log plotted, zoom to a rise, K, T (63 % and least squares with
     its interval), J, the model, omega at 5 V, and the group's readings beside them."""
-
-    KEYS = ("zoom_next", "pick_prev", "pick_next", "reveal")
 
     def __init__(self, step: Step) -> None:
         super().__init__("results")
@@ -333,6 +332,14 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         """One rise, or the whole log."""
         self.zoom = None if self.zoom is not None else 0
         self._plot()
+
+    def key_actions(self) -> Mapping[str, Callable[[], object]]:
+        return {
+            "zoom_next": self.action_zoom_next,
+            "pick_prev": self.action_pick_prev,
+            "pick_next": self.action_pick_next,
+            "reveal": self.action_reveal,
+        }
 
     def action_zoom_next(self) -> None:
         """F9: the next rise, after the last the whole log, then the first rise again."""

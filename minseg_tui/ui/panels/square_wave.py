@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
+
 from textual.app import ComposeResult
 from textual.containers import Horizontal
 from textual.reactive import reactive
@@ -37,7 +39,6 @@ in use for Tasks 11-15) follows."""
 
 
 class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
-    KEYS = ("run_square_wave", "run_fast")
     """F5/F6 ask for the board's square wave; shows the app's ``run_progress`` while it
     waits for the wheel and while it records (F2 stops it at once), the run plotted as it
     arrives from the ``live`` buffer (redrawn every ``refresh`` s; at each progress when 0),
@@ -157,6 +158,9 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
                 for v in runs
             )
             self.query_one("#run-status", Prose).update(said or "no runs recorded yet")
+
+    def key_actions(self) -> Mapping[str, Callable[[], object]]:
+        return {"run_square_wave": self.action_run_square_wave, "run_fast": self.action_run_fast}
 
     def action_run_square_wave(self) -> None:
         """F5: the manual's plan at 25 ms."""

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
+
 from textual.app import ComposeResult
 from textual.widget import Widget
 from textual.widgets import DataTable
@@ -20,8 +22,6 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
     shows the formula behind the cell. The warnings come under the group's entries (a step
     lands on its first entry: at 80x24 the warnings above it pushed the table and the step's
     title off the screen)."""
-
-    KEYS = ("formula",)
 
     def __init__(self) -> None:
         super().__init__()
@@ -57,6 +57,9 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         self.query_one("#results", Prose).update("\n".join(lines))
         self._warnings.update("\n".join(f"! {w}" for w in view.warnings))
         self._warnings.display = bool(view.warnings)
+
+    def key_actions(self) -> Mapping[str, Callable[[], object]]:
+        return {"formula": self.action_formula}
 
     def action_formula(self) -> None:
         """Show the formula of the cell under the cursor."""

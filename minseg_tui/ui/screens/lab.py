@@ -12,6 +12,7 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Callable, Sequence
 from functools import partial
+from inspect import isawaitable
 from pathlib import Path
 from typing import Literal, TypeVar
 
@@ -92,11 +93,11 @@ STEP_IDS = tuple(s.id for s in STEPS)
 
 PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = panel_keys()
 """Keys that act on the shown step's panel: (keys, the panel's action, footer label, what it
-is; no label: not in the footer). Each panel names its own (:class:`~minseg_tui.ui.keys.PanelKeys`) and does
-them in its ``action_`` methods; the app binds them, for wherever the focus is (and in one
-place in the footer's order, whatever has the focus: bindings of the panel itself would
-come first while a widget of it has the focus), and runs the panel's action
-(:meth:`LabScreen.run_panel_key`). The footer shows a key on the steps whose panel offers it
+is; no label: not in the footer). Each panel names its own, each with the method that does
+it (:meth:`~minseg_tui.ui.keys.PanelKeys.key_actions`); the app binds them, for wherever
+the focus is (and in one place in the footer's order, whatever has the focus: bindings of
+the panel itself would come first while a widget of it has the focus), and the screen calls
+that method (:meth:`LabScreen.run_panel_key`). The footer shows a key on the steps whose panel offers it
 (:meth:`LabScreen.offers`); elsewhere the key says that it is not part of this step. None
 is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
 moves). The app binds them (its keys come first in the footer; Reveal, a lab assistant's
@@ -721,24 +722,26 @@ class LabScreen(StatusScreen):
         """Whether panel key ``action`` (:data:`PANEL_KEYS`) acts on the step shown: its panel
         has the key (its ``KEYS``) and it does something here (its ``check_action``)."""
         panel = self.panel
-        if not isinstance(panel, PanelKeys) or action not in panel.KEYS:
+        if not isinstance(panel, PanelKeys) or action not in panel.key_actions():
             return False
         return panel.check_action(action, ()) is not False
 
     async def run_panel_key(self, action: str) -> None:
-        """Panel key ``action``: the step's panel runs its action (nothing on a step whose
-        panel does not have it), and this returns once it is done (F4's capture: the keys
-        typed after it act on the result)."""
+        """Panel key ``action``: the step's panel does it, by a plain call of the method it
+        names for it (:meth:`~minseg_tui.ui.keys.PanelKeys.key_actions`; nothing on a step
+        whose panel does not have it), and this returns once it is done (F4's capture: the
+        keys typed after it act on the result)."""
         panel = self.panel
-        if panel is not None and self.offers(action):
-            # Run by name on the panel (Textual's public Widget.run_action, which asks its
-            # check_action first): stays because Textual looks for a key's bindings only
-            # from the focused widget up (textual/screen.py:408-424), and the panel is never
-            # focused (the step's form around it holds the focus, and the list of steps may),
-            # so its own BINDINGS would never run. The app binds its keys with priority and
+        if isinstance(panel, PanelKeys) and self.offers(action):
+            # Stays a call from here: Textual looks for a key's bindings only from the
+            # focused widget up (textual/screen.py:408-424), and the panel is never focused
+            # (the step's form around it holds the focus, and the list of steps may), so
+            # bindings of its own would never run. The app binds its keys with priority and
             # hands them here (F4 on Task 5 from the form: test_bursts's
             # test_the_reading_typed_right_after_f4_goes_into_the_next_entry).
-            await panel.run_action(action)
+            done = panel.key_actions()[action]()
+            if isawaitable(done):
+                await done
 
     def _panel_for(self, step: Step) -> Widget | None:
         """The panel of ``step``'s kind (None for steps that only take entries), bound to the

@@ -9,7 +9,8 @@ from contextlib import suppress
 from inspect import isawaitable
 from typing import ClassVar
 
-from textual import on
+from textual import events, on
+from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
 from textual.command import Command, CommandInput, CommandList, CommandPalette
 from textual.dom import DOMNode
@@ -36,31 +37,53 @@ def _bindings(node: DOMNode, key: str) -> list[Binding]:
     return []
 
 
-_IN_TURN: tuple[str, ...] = tuple(
-    sorted(
-        {
-            b.key
-            for cls in (*CommandInput.__mro__, CommandPalette)
-            for b in Binding.make_bindings(cls.__dict__.get("BINDINGS", []))
-            if not b.priority
-        }
-        - {"enter", "escape"}
-    )
-)
+_IN_TURN: frozenset[str] = frozenset(
+    b.key
+    for cls in (*CommandInput.__mro__, CommandPalette)
+    for b in Binding.make_bindings(cls.__dict__.get("BINDINGS", []))
+    if not b.priority
+) - {"enter", "escape"}
 """The keys the search box and Textual's palette bind (editing keys, the arrows, Down to
-the next command), bar Enter and Escape: bound with priority on :class:`Palette` so that
-the app hands each to the box's queue in the order typed. Bound as Textual binds them, the
-box passed them up to the app, which ran them behind the characters typed after them
-('Tsk 5 Home Right a' in one burst gave 'Tsk 5a') and behind Enter's command.
+the next command), bar Enter and Escape: :class:`SearchBox` runs their bindings in its own
+key handler, in the order typed. Bound as Textual binds them, the box passed them up to the
+app, which ran them behind the characters typed after them ('Tsk 5 Home Right a' in one
+burst gave 'Tsk 5a') and behind Enter's command: Textual runs a widget's bindings only once
+its key has bubbled up to the app's queue (textual/app.py:4341-4343), behind the keys read
+meanwhile. Without it test_palette_enter's edited-in-the-burst and backspace-in-the-burst
+cases and its test_enter_runs_the_command_the_group_moved_to (Down) fail."""
 
-Stays, read from the classes' ``BINDINGS`` and run with ``app.run_action``
-(:meth:`Palette._run_bound`): Textual runs a priority binding as the app reads the key and
-hands any other key to the focused widget without waiting (textual/app.py:4136-4138), whose
-bindings run only once the key has bubbled back up to the app's queue (textual/app.py:
-4341-4343), behind the keys read meanwhile; the box is Textual's own CommandInput, composed by
-CommandPalette, so its editing keys cannot be made its key handler's. Without these bindings
-test_palette_enter's edited-in-the-burst and backspace-in-the-burst cases and its
-test_enter_runs_the_command_the_group_moved_to (Down) fail."""
+
+class SearchBox(CommandInput):
+    """The palette's search box: Textual's own, which also runs the bindings of the keys it
+    and the palette bind (:data:`_IN_TURN`) in its key handler, as it takes its characters
+    in its own (textual/widgets/_input.py:743-754): each acts in the order typed, before the
+    keys typed after it, in the box's one queue. :class:`Palette` composes it in place of
+    Textual's."""
+
+    async def on_key(self, event: events.Key) -> None:
+        """``event.key``'s binding, as the app would run it: the first from the box up to
+        the palette, then the app, whose action acts (the box's Down does not: it goes on to
+        the palette's, the next command). A key none binds goes on as Textual sends it."""
+        if event.key not in _IN_TURN:
+            return
+        palette = self.screen
+        chain = [*_chain(self, palette), self.app]
+        for above in chain:
+            for binding in _bindings(above, event.key):
+                if await self.app.run_action(binding.action, above):
+                    event.stop()
+                    event.prevent_default()
+                    return
+
+
+def _chain(node: DOMNode, top: DOMNode) -> list[DOMNode]:
+    """``node`` and its ancestors up to ``top``."""
+    chain = []
+    for above in node.ancestors_with_self:
+        chain.append(above)
+        if above is top:
+            break
+    return chain
 
 
 class Palette(CommandPalette):
@@ -77,12 +100,12 @@ class Palette(CommandPalette):
     burst left R empty: walk 8). Enter also ran whatever the list showed when it came, the
     hits of an earlier part of the search ('Ctrl+P Task 5 Enter 5,3 Enter' in one burst went
     to Preparation 1, the first command listed for an empty search): it now waits for the
-    search of everything typed before it (:meth:`action_run`)."""
+    search of everything typed before it (:meth:`action_run`). Its search box is our
+    :class:`SearchBox`, which runs its editing keys in the order typed."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
         Binding("escape", "escape", "Exit the command palette", show=False, priority=True),
         Binding("enter", "run", "Run the command", show=False, priority=True),
-        *[Binding(key, f"in_turn({key!r})", show=False, priority=True) for key in _IN_TURN],
     ]
 
     ROUNDS: ClassVar[int] = 12
@@ -91,14 +114,14 @@ class Palette(CommandPalette):
 
     async def _searched(self) -> None:
         """Wait until the list shows the hits of everything typed before now: the box has
-        handled the keys typed before (characters it takes itself; the rest passed up to
-        :meth:`on_key`), its changes of text have reached the palette, which starts a search
+        handled the keys typed before (characters and its editing keys it takes itself,
+        :class:`SearchBox`), its changes of text have reached the palette, which starts a search
         for each (a worker of the palette's; each cancels the one before), and the search of
         the last is done. Round by round along the box and its ancestors up to the palette
         until a round finds no search running and the box and the list as they were."""
         box = self.query_one(CommandInput)
         listing = self.query_one(CommandList)
-        chain = self._chain(box)
+        chain = _chain(box, self)
         before: tuple[object, ...] | None = None
         for _ in range(self.ROUNDS):
             for node in chain:
@@ -112,31 +135,16 @@ class Palette(CommandPalette):
                 return
             before = now
 
-    async def action_in_turn(self, key: str) -> None:
-        """A key the search box or the palette binds (Backspace, the arrows, Down to the next
-        command): run once the focused widget (the box) has handled the characters typed
-        before it, and before the app reads the keys typed after it (:meth:`_run_bound`)."""
-        node = self.focused or self.query_one(CommandInput)
-        await handled(node)
-        await self._run_bound(node, key)
-
-    async def _run_bound(self, node: DOMNode, key: str) -> None:
-        """``key``'s binding, as the app would run it: the first from ``node`` up to the
-        palette, then the app, whose action acts (a box's Down does not: it goes on to the
-        palette's, the next command)."""
-        for above in [*self._chain(node), self.app]:
-            for binding in _bindings(above, key):
-                if await self.app.run_action(binding.action, above):
-                    return
-
-    def _chain(self, node: DOMNode) -> list[DOMNode]:
-        """``node`` and its ancestors up to this palette."""
-        chain = []
-        for above in node.ancestors_with_self:
-            chain.append(above)
-            if above is self:
-                break
-        return chain
+    def compose(self) -> ComposeResult:
+        """Textual's palette, with :class:`SearchBox` in place of its search box (as
+        placeholder and selection on focus)."""
+        for widget in super().compose():
+            if type(widget) is CommandInput:
+                yield SearchBox(
+                    placeholder=widget.placeholder, select_on_focus=widget.select_on_focus
+                )
+            else:
+                yield widget
 
     def _picked(self) -> Command | None:
         """The command Enter runs: the one highlighted in the list (the best match of the
