@@ -363,7 +363,7 @@ class LabApp(App[None]):
         self._stream(event.device)
         if event.device.board is None:  # a real board: worth checking before the lab
             self.notify(
-                f"{self.device.name} connected. F10 runs the board check: does the wheel "
+                f"{self.device.name} connected. {key_name('board_check')} runs the board check: does the wheel "
                 "turn when asked, and does the count follow it? (about a second)",
                 title="board check",
                 timeout=15,
@@ -613,7 +613,10 @@ class LabApp(App[None]):
             self.notify("the board check is running", severity="information")
             return None
         if self._run_busy:
-            self.notify("a run is in progress: F2 stops it, then F10 checks", severity="warning")
+            self.notify(
+                f"a run is in progress: {key_name('stop_motor')} stops it, then {key_name('board_check')} checks",
+                severity="warning",
+            )
             return None
         if isinstance(self.screen, BoardCheckScreen):
             self.screen.dismiss(None)
@@ -771,12 +774,12 @@ class LabApp(App[None]):
             text = (
                 f"The motor is driven at {event.u:g} V and the encoder counts nothing. If the "
                 "wheel does not turn: is the meter on mA, in series across the jumper pins? "
-                "F10 runs the board check."
+                f"{key_name('board_check')} runs the board check."
             )
         else:
             text = (
-                f"The motor is driven at {event.u:g} V and the encoder counts nothing: F10 "
-                "runs the board check, which says what is wrong."
+                f"The motor is driven at {event.u:g} V and the encoder counts nothing: "
+                f"{key_name('board_check')} runs the board check, which says what is wrong."
             )
         self.notify(text, title="no counts", severity="warning", timeout=15)
 
@@ -806,7 +809,9 @@ class LabApp(App[None]):
             )
             return
         if self._run_busy:
-            self.notify("a run is in progress; F2 stops it", severity="warning")
+            self.notify(
+                f"a run is in progress; {key_name('stop_motor')} stops it", severity="warning"
+            )
             return
         with self.session as s:
             readonly = s.readonly
@@ -878,7 +883,7 @@ class LabApp(App[None]):
                 said = EVENT_TEXT.get(outcome.event.kind, outcome.event.message)
                 why = f"{said}: the run did not start"
             else:
-                why = "run cancelled (F2): the motor is off"
+                why = f"run cancelled ({key_name('stop_motor')}): the motor is off"
             self.run_progress = RunProgress(0.0, why, recording=False)
             self.notify(why, title="Task 10", severity="warning")
             return

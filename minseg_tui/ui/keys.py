@@ -159,7 +159,10 @@ KEYMAP: tuple[Key, ...] = (
     ),
     Key("PgDn/PgUp", "the next lab step; PgUp the one before (Ctrl+N / Ctrl+B)", label="Next step"),
     Key("Ctrl+L", "the list of steps (Ctrl+T hides it)"),
-    Key("Ctrl+O", "the whole of the step's What to do, over its top (again: folds it)"),
+    Key(
+        KEY_NAMES["whole_todo"],
+        "the whole of the step's What to do, over its top (again: folds it)",
+    ),
     Key("Tab", "next field; Enter stores and goes on to the next field"),
     Key("Esc", "in a field: back to the answer stored, dropping what was typed over it"),
     Key(KEY_NAMES["undo"], "in a field: back to the answer stored before (again: further back)"),

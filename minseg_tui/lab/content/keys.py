@@ -28,6 +28,8 @@ KEY_NAMES: Final = MappingProxyType(
         "reveal": "Ctrl+R",
         "palette": "Ctrl+P",
         "quit": "Ctrl+Q",
+        "whole_todo": "Ctrl+O",
+        "new_anyway": "Ctrl+N",
         "undo": "Ctrl+Z",
         "redo": "Ctrl+Y",
     }

@@ -6,6 +6,7 @@ from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
+from minseg_tui.lab.content.keys import in_palette, key_name
 from minseg_tui.ui.device import DeviceInfo
 
 
@@ -24,8 +25,8 @@ class ConnectPanel(Static):
     def _text(self) -> str:
         d = self.device
         if d is None:
-            return "No device yet. Ctrl+P → Switch to virtual board to practise."
-        check = "\nF10: board check (does the wheel turn when asked, and the count follow?)."
+            return f"No device yet. {in_palette('Switch to virtual board')} to practise."
+        check = f"\n{key_name('board_check')}: board check (does the wheel turn when asked, and the count follow?)."
         if d.virtual:
             return (
                 f"Connected to the VIRTUAL MinSeg ({d.firmware})"

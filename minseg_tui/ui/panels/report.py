@@ -8,6 +8,7 @@ from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
+from minseg_tui.lab.content.keys import in_palette, key_name
 from minseg_tui.ui.panels.view_panel import ViewPanel
 
 
@@ -51,6 +52,8 @@ class ReportPanel(Static):
     def _text(self) -> str:
         folder, names = self.written
         where = f" in {folder}" if folder else ""
-        return "F8 (or Ctrl+P → Export report) writes report.md, report.html and the runs' CSV." + (
-            f"\nwritten{where}:\n" + "\n".join(f"  {p}" for p in names) if names else ""
+        said = (
+            f"{key_name('export')} (or {in_palette('Export report')}) writes report.md, "
+            "report.html and the runs' CSV."
         )
+        return said + (f"\nwritten{where}:\n" + "\n".join(f"  {p}" for p in names) if names else "")

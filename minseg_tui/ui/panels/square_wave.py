@@ -9,6 +9,7 @@ from textual.containers import Horizontal
 from textual.reactive import reactive
 from textual.widgets import ProgressBar, Static
 
+from minseg_tui.lab.content.keys import key_name
 from minseg_tui.lab.content.steps import Step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import RunProgress
@@ -60,8 +61,9 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
         plans = dict(self.step.plans)
         m = plans["manual"]
         yield Prose(
-            f"F5: {m.periods} steps 0 → {m.high:g} V, {m.half_period:g} s each, at "
-            f"{m.ts * 1000:g} ms. F6: the same at {plans['fast'].ts * 1000:g} ms. F2 stops.",
+            f"{key_name('run_square_wave')}: {m.periods} steps 0 → {m.high:g} V, "
+            f"{m.half_period:g} s each, at {m.ts * 1000:g} ms. {key_name('run_fast')}: the same "
+            f"at {plans['fast'].ts * 1000:g} ms. {key_name('stop_motor')} stops.",
             classes="hint",
         )
         yield ProgressBar(total=100, show_eta=False, id="run-progress")
@@ -144,7 +146,10 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
                 f"{format_value(v.T_ls, 's', 3) + ci:>27}"
             )
         if not runs:
-            rows.append("no run yet: F5 (25 ms), then F6 (5 ms)")
+            rows.append(
+                f"no run yet: {key_name('run_square_wave')} (25 ms), then "
+                f"{key_name('run_fast')} (5 ms)"
+            )
         elif any(not v.fitted for v in runs):
             rows = rows[:1] + ["working out the T readings…"]
         elif any(v.T_hidden for v in runs):

@@ -8,6 +8,7 @@ from textual.app import ComposeResult
 from textual.widget import Widget
 from textual.widgets import DataTable
 
+from minseg_tui.lab.content.keys import key_name
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import TableView
@@ -29,7 +30,9 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
 
     def compose(self) -> ComposeResult:
         yield DataTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
-        yield Prose("F7 on a cell: the formula behind it.", id="formula", classes="hint")
+        yield Prose(
+            f"{key_name('formula')} on a cell: the formula behind it.", id="formula", classes="hint"
+        )
         yield Prose("", id="results")
 
     def after_rows(self) -> Widget:

@@ -14,6 +14,7 @@ from textual.screen import ModalScreen
 from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
+from minseg_tui.lab.content.keys import key_name
 from minseg_tui.ui.screens.dialog import (
     answer_bindings,
     close_dialog,
@@ -81,7 +82,7 @@ class BoardCheckScreen(ModalScreen[None]):
         ok: bool,
         text: str,
         what: str = "Board check",
-        again: str = "F10 checks again",
+        again: str = f"{key_name('board_check')} checks again",
     ) -> None:
         super().__init__()
         self.ok = ok

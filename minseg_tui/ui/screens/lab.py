@@ -31,7 +31,7 @@ from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab.content.keys import USE_RUN
+from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.steps import STEPS, Step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import RunProgress
@@ -119,7 +119,7 @@ def nav_label(step: Step, status: str = "todo") -> str:
 HEADING_ROWS = 2
 """The rows of a step's :class:`Heading` (lab.tcss), its whole "What to do" folded."""
 
-WHOLE_TODO_KEY = "Ctrl+O"
+WHOLE_TODO_KEY = key_name("whole_todo")
 """The key that shows the whole of a step's "What to do" in its heading (and folds it)."""
 
 MORE = f"… {WHOLE_TODO_KEY} more"
@@ -974,7 +974,8 @@ class LabScreen(StatusScreen):
             # and Ctrl+Z in the field brings the old one back
             self.notify(
                 f"{row.field.label}: {text.strip()!r} stored in place of {before.strip()!r} "
-                "(not confirmed with Enter); Ctrl+Z in the field brings the old answer back",
+                f"(not confirmed with Enter); {key_name('undo')} in the field brings the old answer "
+                "back",
                 title="answer replaced",
             )
         self._changed()
@@ -1001,7 +1002,7 @@ class LabScreen(StatusScreen):
             self.notify(
                 f"{label}: no earlier answer to bring back"
                 if how == "undo"
-                else f"{label}: nothing to bring forward (Ctrl+Y undoes a Ctrl+Z)",
+                else f"{label}: nothing to bring forward ({key_name('redo')} undoes a {key_name('undo')})",
                 title="undo" if how == "undo" else "redo",
             )
             return
@@ -1020,9 +1021,9 @@ class LabScreen(StatusScreen):
             said += f" in place of {current.strip()!r}"
         if verdict:
             said += f"; {verdict}"
-        keys = ["Ctrl+Z goes further back"] if further else []
+        keys = [f"{key_name('undo')} goes further back"] if further else []
         if undone:
-            keys.append(f"Ctrl+Y brings {undone[-1].strip()!r} back")
+            keys.append(f"{key_name('redo')} brings {undone[-1].strip()!r} back")
         self.notify(said + (f" ({', '.join(keys)})" if keys else ""), title="answer brought back")
 
     def _withdraw(self, row: FieldRow) -> None:

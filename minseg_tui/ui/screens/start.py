@@ -14,6 +14,7 @@ from textual.message import Message
 from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
+from minseg_tui.lab.content.keys import key_name
 from minseg_tui.lab.content.steps import STEP_INDEX, step
 from minseg_tui.lab.saving.store import SessionInfo, names_key, same_names
 from minseg_tui.ui.screens.status import StatusScreen
@@ -139,7 +140,8 @@ class StartScreen(StatusScreen):
         self.query_one("#start-msg", Static).update(
             Content(
                 f"A session of {', '.join(info.members)} exists ({info.date}, at "
-                f"{step_name(info.last_step)}, session {info.id}): Enter resumes it; Ctrl+N "
+                f"{step_name(info.last_step)}, session {info.id}): Enter resumes it; "
+                f"{key_name('new_anyway')} "
                 "starts a second one anyway, in a folder of its own."
             )
         )

@@ -6,6 +6,7 @@ from textual.content import Content
 from textual.reactive import reactive
 from textual.widgets import Static
 
+from minseg_tui.lab.content.keys import in_palette
 from minseg_tui.ui.device import DeviceInfo, LinkState
 
 
@@ -52,5 +53,7 @@ class DeviceStatus(Static):
         width = self.size.width or 78
         line = status_text(self.device, self.link, self.motor, width)
         if self.saving:
-            return Content(f"{line}\n! {self.saving} (Ctrl+P → Save the session to another folder)")
+            return Content(
+                f"{line}\n! {self.saving} ({in_palette('Save the session to another folder')})"
+            )
         return Content(line)
