@@ -841,7 +841,7 @@ class LabScreen(StatusScreen):
                 text = views.typed(s, row.field.key)
                 row.held = views.held(s, row.field.key)
                 if row.sent is not None and text != row.sent:
-                    row.refresh_from_lab(text, views.entry(s, row.field.key))
+                    row.lab_changed(text, views.entry(s, row.field.key))
                 elif (result := views.entry(s, row.field.key)) is not None:
                     row.update_result(result)  # a warning another row raised or cleared
         panel = pane.panel
