@@ -239,3 +239,21 @@ async def test_a_blank_note_leaves_the_step_as_it_was(quiet):
         assert "prep2.notes" not in json.dumps(saved), saved
         await settle(pilot, lambda: _step(app) == "prep3")
         assert nav_mark(app, "prep2") == " ", nav_mark(app, "prep2")
+
+
+async def test_a_note_cleared_is_stored_cleared_and_ctrl_z_brings_it_back(quiet):
+    """The other side of the blank note: a note written and then cleared is a change the
+    group made; it is stored (the note no longer stands), and Ctrl+Z brings it back."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep2")
+        await burst(pilot, *"q on eq 2.6", "enter")
+        with app.session as s:
+            assert s.entry("prep2.notes").text == "q on eq 2.6"
+        await burst(pilot, "shift+tab", "ctrl+u", " ", "enter")
+        with app.session as s:
+            assert not s.entry("prep2.notes").text.strip()
+        await burst(pilot, "shift+tab", "ctrl+z")
+        with app.session as s:
+            assert s.entry("prep2.notes").text == "q on eq 2.6"
