@@ -20,7 +20,16 @@ from collections.abc import Callable
 import pytest
 
 from minseg_tui.ui.app import LabApp
-from tests.ui.helpers import box_text, burst, goto, lab_screen, start, stored_text
+from minseg_tui.ui.messages import RevealRequested
+from tests.ui.helpers import (
+    box_text,
+    burst,
+    goto,
+    lab_screen,
+    start,
+    start_with_a_run,
+    stored_text,
+)
 
 
 def _notice(app: LabApp) -> None:
@@ -102,3 +111,35 @@ async def test_a_lab_change_between_f3_and_the_reading_keeps_the_reading(quiet, 
         CHANGES[change](app)
         await burst(pilot, *"0.0372 A", "enter")
         assert stored_text(app, "i_ss@4.5") == "0.0372 A"
+
+
+@pytest.mark.parametrize("before", ["empty", "refused"])
+@pytest.mark.parametrize("change", ["reveal", "run-in-use"])
+async def test_a_change_of_the_results_between_typing_and_enter_keeps_the_typed_T(
+    quiet, before, change
+):
+    """Task 12, on a recorded run: T typed ('57', over nothing or over the refused
+    '0.057', ambiguous between s and ms) and not entered; then the step's computed values
+    are revealed (the message Ctrl+R posts) or the run in use is chosen again, which judge
+    the entries anew; Enter stores '57'."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        screen = lab_screen(app)
+        assert screen.pane.typing is not None and screen.pane.typing.field.key == "own.T"
+        if before == "refused":
+            await burst(pilot, *"0.057", "enter")
+            assert stored_text(app, "own.T") == "0.057"
+            assert box_text(app, "own.T") == "0.057"
+        await burst(pilot, "ctrl+u", *"57")
+        if change == "reveal":
+            screen.post_message(RevealRequested("task12"))
+        else:
+            screen.use_run(None)
+        await burst(pilot)
+        if change == "reveal":
+            with app.session as s:
+                assert s.revealed() == {"own.T"}
+        assert box_text(app, "own.T") == "57"
+        await burst(pilot, "enter")
+        assert stored_text(app, "own.T") == "57"
