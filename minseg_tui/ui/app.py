@@ -294,9 +294,12 @@ class LabApp(App[None]):
         one. ``markup=False`` at each of the 43 calls (or a helper of another name) would
         hold only as long as every new call remembered it."""
         stack = self.screen_stack  # empty while the app closes (a run's notice at exit)
-        if stack and isinstance(stack[-1], LabScreen):
-            stack[-1].place_notices()  # away from the entry typed in
+        lab = stack[-1] if stack and isinstance(stack[-1], LabScreen) else None
+        if lab is not None:
+            lab.place_notices()  # away from the entry typed in
         super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
+        if lab is not None:  # and from where it is once the keys before it have moved it
+            lab.call_after_refresh(lab.place_notices)
 
     # -- start-up ---------------------------------------------------------------------
     def on_mount(self) -> None:

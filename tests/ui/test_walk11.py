@@ -3,6 +3,7 @@ session folder (/work/coord/WALK11.md)."""
 
 from __future__ import annotations
 
+import json
 import threading
 
 import pytest
@@ -29,7 +30,6 @@ from tests.ui.helpers import (
     start,
     start_run_on,
     start_with_a_run,
-    stored_text,
     taken,
 )
 
@@ -226,12 +226,34 @@ async def test_the_help_wraps_a_long_line_under_its_description(quiet):
 async def test_a_blank_note_leaves_the_step_as_it_was(quiet):
     """D6: on Prep 2 a Space meant for 'done?' went into the notes (the step's first empty
     entry), was stored as ' ', and the list of steps showed Prep 2 as started ('…') while
-    the report said its notes were not answered. A blank text starts nothing."""
+    the report said its notes were not answered. A blank text starts nothing, and is not
+    stored (walk 12's re-check: session.json still held ``prep2.notes: " "``)."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await goto(pilot, "prep2")
         await burst(pilot, " ", "pagedown")
-        assert stored_text(app, "prep2.notes") == " "
+        with app.session as s:
+            assert s.entry("prep2.notes") is None
+            saved = json.loads((s.folder / "session.json").read_text(encoding="utf-8"))
+        assert "prep2.notes" not in json.dumps(saved), saved
         await settle(pilot, lambda: _step(app) == "prep3")
         assert nav_mark(app, "prep2") == " ", nav_mark(app, "prep2")
+
+
+async def test_a_note_cleared_is_stored_cleared_and_ctrl_z_brings_it_back(quiet):
+    """The other side of the blank note: a note written and then cleared is a change the
+    group made; it is stored (the note no longer stands), and Ctrl+Z brings it back."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep2")
+        await burst(pilot, *"q on eq 2.6", "enter")
+        with app.session as s:
+            assert s.entry("prep2.notes").text == "q on eq 2.6"
+        await burst(pilot, "shift+tab", "ctrl+u", " ", "enter")
+        with app.session as s:
+            assert not s.entry("prep2.notes").text.strip()
+        await burst(pilot, "shift+tab", "ctrl+z")
+        with app.session as s:
+            assert s.entry("prep2.notes").text == "q on eq 2.6"

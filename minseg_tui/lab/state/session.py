@@ -605,14 +605,15 @@ class Session:
         """Store ``text`` typed in field ``key`` (KeyError for an unknown key) and return the
         entry: accepted with its value, note and warnings, or refused with a one-line message.
         The text is kept either way, and saved before this returns (or, when the save
-        fails, kept in memory and said by :attr:`save_problem`)."""
+        fails, kept in memory and said by :attr:`save_problem`). A blank text where nothing
+        was entered (a Space meant for a 'done?' tick that went into a note) is no entry:
+        nothing is stored, and the step stays as it was."""
         self._change()
-        entry = revise(
-            self._entries.get(key),
-            read_entry(FIELDS[key], text),
-            source,
-            self._clock().isoformat(timespec="seconds"),
-        )
+        read = read_entry(FIELDS[key], text)
+        old = self._entries.get(key)
+        if old is None and read.ok and not text.strip():
+            return read
+        entry = revise(old, read, source, self._clock().isoformat(timespec="seconds"))
         if key in ANSWERED_FIRST and entry.ok and entry.refused is None and entry.text.strip():
             # the run it is given on: judged against another, it is said to be judged again
             run = self.response_run()

@@ -640,6 +640,9 @@ class LabScreen(StatusScreen):
         """The step last asked for (its widgets may not be in the form yet)."""
         self._views_asked = 0
         """How many panel views were asked for (:meth:`_load`): only the last is shown."""
+        self._judged: FieldRow | None = None
+        """The entry the lab judged last (its verdict under its box), while it is on the
+        step shown: notices are kept off it (:meth:`place_notices`)."""
         self._undone: dict[str, list[str]] = {}
         """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
         forward again (until another answer is stored in the field)."""
@@ -704,18 +707,24 @@ class LabScreen(StatusScreen):
         return step.id if step is not None else None
 
     def place_notices(self) -> None:
-        """Notices (Textual's toasts) show in the half of the screen away from the entry
-        the group types in (or the widget focused in the step): at the bottom, where
-        Textual puts them, or at the top while that entry is in the lower half. F8's list
-        of files sat over the summary's last field, being typed in (issue 20, walk 5)."""
+        """Notices (Textual's toasts, as wide as half the screen, on its right, where the
+        entries' boxes and verdicts are) show on the side of the screen with more room
+        away from the entry the group types in (or the widget focused in the step) and the
+        entry the lab judged last, its verdict under it: at the bottom, where Textual puts
+        them, or at the top. F8's list of files sat over the summary's last field, being
+        typed in (issue 20, walk 5); on Task 5 a notice sat over the reading just judged,
+        above the entry the keys had moved on to (walk 12's D5)."""
         focused = self.focused
         pane = self.pane if self.query(StepPane) else None
-        box = pane.keys_box if pane is not None else None
-        widget = box if box is not None else focused
+        keyed = pane.current if pane is not None and pane.keys_box is not None else None
+        widget = keyed if keyed is not None else focused  # the entry: its box and verdict
+        kept = [w.region for w in (widget, self._judged) if w is not None and w is not pane]
+        kept = [r for r in kept if r]  # on screen (a row scrolled away has none)
         low = False
-        if widget is not None and widget is not pane and widget.region:
-            middle = widget.region.y + widget.region.height / 2
-            low = middle >= self.size.height / 2
+        if kept:
+            above = min(r.y for r in kept)  # rows over them, the status line's included
+            below = self.size.height - max(r.bottom for r in kept)
+            low = above > below
         self.set_class(low, "-notices-top")
 
     def offers(self, action: str) -> bool:
@@ -844,7 +853,7 @@ class LabScreen(StatusScreen):
                 text = views.typed(s, row.field.key)
                 row.held = views.held(s, row.field.key)
                 if row.sent is not None and text != row.sent:
-                    row.refresh_from_lab(text, views.entry(s, row.field.key))
+                    row.lab_changed(text, views.entry(s, row.field.key))
                 elif (result := views.entry(s, row.field.key)) is not None:
                     row.update_result(result)  # a warning another row raised or cleared
         panel = pane.panel
@@ -969,6 +978,7 @@ class LabScreen(StatusScreen):
             result = views.entry(s, key) or EntryView(True)
             row.held = views.held(s, key)
         row.show_result(result)
+        self._judged_now(row)
         if not submitted and before.strip() and row.held != before:
             # an answer replaced by leaving the field, not by Enter (a stray key, say): said,
             # and Ctrl+Z in the field brings the old one back
@@ -1053,7 +1063,15 @@ class LabScreen(StatusScreen):
             s.choose(key, list(indices))
             result = views.entry(s, key) or EntryView(True)
         row.show_result(result)
+        self._judged_now(row)
         self._changed()
+
+    def _judged_now(self, row: FieldRow) -> None:
+        """The lab judged ``row``: the notices on screen move off it and off the entry the
+        keys go to, if they lie over either (:meth:`place_notices`)."""
+        self._judged = row
+        if self.query("Toast"):
+            self.call_after_refresh(self.place_notices)  # once the keys have moved on
 
     def focus_after(self, key: str) -> None:
         """Focus the entry after field ``key`` (stays put on the last one)."""

@@ -798,6 +798,24 @@ class FieldRow(Vertical):
         if result is not None:
             self.show_result(result)
 
+    def lab_changed(self, text: str, result: EntryView | None) -> None:
+        """The lab now holds ``text`` for this field, changed by something other than the
+        group's keys in this row (a capture). Shown, unless the group has typed in the box
+        since the row last sent its text: what they typed stays, never overwritten by a
+        change of the lab (Enter, or leaving the row, stores it over the lab's text). A box
+        that was empty or wholly selected (F3 made it ready for the next reading) has the
+        new text selected, so that the next reading replaces it, not mixes with it."""
+        if self.field.options or self._readonly:
+            return
+        box = self.input
+        if box.value != self._sent:  # typed and not sent: the group's text stays
+            self._sent = text
+            return
+        whole = sorted(box.selection) == [0, len(box.value)]  # all of it, or empty
+        self.refresh_from_lab(text, result)
+        if whole:
+            box.select_all()
+
     def update_result(self, result: EntryView) -> None:
         """The lab's verdict on this row after a change elsewhere (a reading in another row
         of Task 5 makes a current fall as the voltage rises): shown if it is not the one
