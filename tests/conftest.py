@@ -1,6 +1,7 @@
 """Tests that read ../shared/data carry the ``shared_data`` mark. Where that folder is absent
 they are not run and the session ends with one line saying so; with CI=true they fail."""
 
+import gc
 import hashlib
 import threading
 from collections.abc import Iterator
@@ -12,9 +13,25 @@ import minseg_tui.lab.state.results as lab_results
 from minseg_tui.model.check import CheckResult
 from tests.shared_data import absent_reason, required
 
+GC_THRESHOLDS = (50_000, 20, 20)
+"""The cyclic garbage collector's thresholds in a test process (Python's are 700, 10, 10). A
+UI test makes and drops many small objects (Textual's styles, messages, segments): at 700 the
+collector ran some 50 times a test and took 16 % of tests/ui/test_flow.py's CPU. Garbage
+is still collected, in fewer and larger rounds; a test that needs it gone calls
+``gc.collect()`` itself (tests/test_lock.py)."""
+
 
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "shared_data: reads ../shared/data (real motor logs)")
+    gc.set_threshold(*GC_THRESHOLDS)
+
+
+def pytest_collection_finish(session: pytest.Session) -> None:
+    """What exists once the tests are collected (the modules, their functions and
+    parameters: most of the objects of a test process) is left out of every later
+    collection, which then walks only what the tests themselves make."""
+    gc.collect()
+    gc.freeze()
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
