@@ -527,6 +527,41 @@ benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 fals
 hand found with the cause kept 68 -> 69 of 70 (current_limit 4003 with a pole beside it left),
 CPU per log median 0.40 s. tests/model (the ten real logs' verdicts and every test that reads
 ../shared/data among them), tests/lab, tests/report and tests/cli/test_analyze.py pass.
+
+s33-cpu (issue 17, the check's worst CPU per log after the ringing pair; 85e4796 -> this
+branch). Profile (cProfile sorted by cumulative, tuning pair logs only: the slowest of seeds
+0-9, coulomb_friction + current_limit 2, dead_time + current_limit 0 and 9, velocity_filter
++ second_pole 2, coulomb_friction + second_pole 4): nearly all of a check is fitting
+(decide.select -> _fit_pair -> fit_causes -> Levenberg-Marquardt), and nearly all of that is
+simulating one model per residual and per Jacobian column (1,500-7,500 simulations a log):
+simulate.pieces' loop over the stretches in Python (_stretch, _linear, _ring, and the
+regula falsi of _zero_between for each stop and each cap). The ringing pair's way is fitted
+rarely (4-14 fits a log after its RING_NEAR gate, 60-125 simulations each) but each of its
+simulations costs 1.2-1.7 ms against 0.27-0.41 ms for the other ways (a damped swing per
+stretch, its extrema found one half period after another over 50 T, a complex integral on
+scalars), so it takes 17-34 % of those logs' CPU; the rest is the plain and the cap-both
+ways over the many candidate pairs (each way is polished from its best-scored start only: the
+other starts cost one simulation each, not a fit). Repeated work is
+small: 6 % of the responses a log computes repeat a model already computed, 20 % of the
+tables repeat one apart from the dead time and the average (an average's neighbouring
+lengths, the delay's Jacobian column). Kept (the same numbers by construction): a span's
+ends are evaluated once in _zero_between (a span without a root: 2 evaluations, not 3; in
+one process, three pole logs alternated 4 times: 7.12 -> 6.97 s) and the Jacobian hands the
+model it made to the residual. Not kept: a per-problem cache of the last 32 tables cut the
+_stretch calls by 9-19 % but not the CPU (the same A/B: 11.24 s without, 11.48 s with).
+Verdicts (finding, ambiguity, parameters to 6 digits, anomalies) identical on every log
+compared: tuning pairs seeds 0-9 (150), held-out pairs (75), singles (35) and touched logs
+(20) of --seeds 5 --touch-seeds 5; benchmarks/model_check.py --seeds 10 --skip-hour
+(confusion matrix, parameter errors and T's spread identical) and model_check_pairs.py
+--seeds 5 (every line but the CPU line identical). CPU per log (check only), the 75 held-out
+pair logs run side by side (two workers taking turns log by log, load average 6-9 on two
+cores): median 0.700 -> 0.701 s, max 9.51 -> 8.94 s, total 83.3 -> 80.6 s (per log the
+median ratio 0.98): within the load's noise, so the 10 s worst case is NOT cut here. The
+worst held-out log is second_pole + current_limit 900001 (a pole on the inductance with a
+cap, named right). What would cut it changes numbers and needs a verdict diff of its own:
+simulating the ringing pair's stretches faster (its integral and extrema in plain floats, a
+closed-form bound on the swing before its extrema are walked), or fitting the ringing way
+from fewer starts where the real pair cannot be beaten by it.
 """
 
 from __future__ import annotations

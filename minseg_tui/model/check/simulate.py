@@ -223,10 +223,11 @@ def _zero_between(f: Callable[[float], float], cuts: list[float]) -> float | Non
     """First tau after ``cuts[0]`` (s, 0 or later) where f changes sign, for f monotonic between
     neighbouring ``cuts`` (ascending; the last is the end of the span); None when it does
     not."""
-    f0 = f(0.0)
+    # f is pure: each cut's value is computed once and handed on as the next span's start
+    fb = f(cuts[0])
     for a, b in zip(cuts[:-1], cuts[1:], strict=False):
-        fa, fb = f(a), f(b)
-        if a == 0.0 and f0 == 0.0:
+        fa, fb = fb, f(b)
+        if a == 0.0 and fa == 0.0:
             fa = f(min(1e-12, b))
         if fa == 0.0 or (fa > 0.0) == (fb > 0.0):
             continue
