@@ -205,6 +205,25 @@ def ring_integral(
     return out
 
 
+def ring_integral_at(ra: float, rb: float, decay: float, om: float, tau: float) -> float:
+    """:func:`ring_integral` for one piece at one instant, in plain floats: the same steps as
+    numpy takes for it (its complex expm1, exp(x) - 1 as expm1(x) cos(y) - 2 sin(y/2)^2 +
+    j exp(x) sin(y), and Smith's division), so the same number, without numpy's cost on
+    scalars (about 6 of the 7 us a call took)."""
+    zr, zi = -1.0 / decay, om
+    x, y = zr * tau, zi * tau
+    if not (math.isfinite(x) and math.isfinite(y)):
+        return float(ring_integral(ra, rb, decay, om, tau))
+    half = math.sin(0.5 * y)
+    er, ei = math.expm1(x) * math.cos(y) - 2.0 * half * half, math.exp(x) * math.sin(y)
+    nr, ni = ra * er - (-rb) * ei, ra * ei + (-rb) * er  # (ra - j rb) (exp(z tau) - 1)
+    if abs(zr) >= abs(zi):
+        rat = zi / zr
+        return (nr + ni * rat) * (1.0 / (zr + zi * rat))
+    rat = zr / zi
+    return (nr * rat + ni) * (1.0 / (zi + zr * rat))
+
+
 def _exp(x: float) -> float:
     return math.exp(x) if x > -700.0 else 0.0
 
@@ -600,7 +619,7 @@ def _ring(
     h = min([left, *events])
     s.capping = h == cap_at and h < left
     e, cs, sn = _exp(-h * sig), math.cos(om * h), math.sin(om * h)
-    s.th += c * h + float(ring_integral(a, b, T, om, h))
+    s.th += c * h + ring_integral_at(a, b, T, om, h)
     s.w = c + e * (a * cs + b * sn)
     q = qk + e * (qa * cs + qb * sn)
     if h == stop_at and h < left:
