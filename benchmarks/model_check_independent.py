@@ -527,6 +527,47 @@ benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 fals
 hand found with the cause kept 68 -> 69 of 70 (current_limit 4003 with a pole beside it left),
 CPU per log median 0.40 s. tests/model (the ten real logs' verdicts and every test that reads
 ../shared/data among them), tests/lab, tests/report and tests/cli/test_analyze.py pass.
+
+s33-cpu (issue 17, the check's worst CPU per log after the ringing pair; 85e4796 -> this
+branch). Profile (cProfile sorted by cumulative, tuning pair logs only: the slowest of seeds
+0-9, coulomb_friction + current_limit 2, dead_time + current_limit 0 and 9, velocity_filter
++ second_pole 2, coulomb_friction + second_pole 4): nearly all of a check is fitting
+(decide.select -> _fit_pair -> fit_causes -> Levenberg-Marquardt), and nearly all of that is
+simulating one model per residual and per Jacobian column (1,500-7,500 simulations a log):
+simulate.pieces' loop over the stretches in Python (_stretch, _linear, _ring, and the
+regula falsi of _zero_between for each stop and each cap). The ringing pair's way is fitted
+rarely (4-14 fits a log after its RING_NEAR gate, 60-125 simulations each) but each of its
+simulations costs 1.2-1.7 ms against 0.27-0.41 ms for the other ways (a damped swing per
+stretch, its extrema found one half period after another over 50 T, a complex integral on
+scalars), so it takes 17-34 % of those logs' CPU; the rest is the plain and the cap-both
+ways over the many candidate pairs (each way is polished from its best-scored start only: the
+other starts cost one simulation each, not a fit). Repeated work is
+small: 6 % of the responses a log computes repeat a model already computed, 20 % of the
+tables repeat one apart from the dead time and the average (an average's neighbouring
+lengths, the delay's Jacobian column). Kept (the same numbers by construction): a span's
+ends are evaluated once in _zero_between (a span without a root: 2 evaluations, not 3; in
+one process, three pole logs alternated 4 times: 7.12 -> 6.97 s), the Jacobian hands the
+model it made to the residual, and the ringing pair's integral at a stretch's end is taken in
+plain floats by numpy's own steps (simulate.ring_integral_at: equal bit for bit to
+ring_integral on 500,000 random draws, 0.8 against 6.7 us a call; the same A/B on three
+tuning logs, two caps and a friction with a pole: 27.31 -> 25.50 s). Not kept: a
+per-problem cache of the last 32 tables cut the _stretch calls by 9-19 % but not the CPU (the
+same A/B: 11.24 s without, 11.48 s with).
+Verdicts (finding, ambiguity, parameters to 6 digits, anomalies) identical on every log
+compared: tuning pairs seeds 0-9 (150), held-out pairs (75), singles (35) and touched logs
+(20) of --seeds 5 --touch-seeds 5; benchmarks/model_check.py --seeds 10 --skip-hour
+(confusion matrix, parameter errors and T's spread identical) and model_check_pairs.py
+--seeds 5 (every line but the CPU line identical); tests/model pass. CPU per log (check
+only), the 75 held-out pair logs run side by side (two workers taking turns log by log), twice:
+at a load average of 4-9 falling, median 0.706 -> 0.642 s, max 8.51 -> 7.09 s, total 84.3 ->
+75.9 s; at 1-3, median 0.663 -> 0.637 s, max 8.90 -> 6.99 s, total 79.3 -> 71.7 s (per log
+the median ratio 0.96 and 0.93). The first two cuts alone (1be3b4c, run side by side at a load
+of 6-9): median 0.700 -> 0.701 s, max 9.51 -> 8.94 s, total 83.3 -> 80.6 s. The worst log
+both times is second_pole + current_limit 900001 (a pole on the inductance with a cap, named
+right): 7 s is still too long for the TUI's worker. What would cut it changes numbers and
+needs a verdict diff of its own: the ringing pair's extrema found without walking every half
+period over 50 T (a closed-form bound on the swing first), or the ringing way fitted from
+fewer starts where the real pair cannot be beaten by it.
 """
 
 from __future__ import annotations

@@ -383,7 +383,10 @@ class Model:
 
     def residual(self, x: FloatArray) -> FloatArray:
         """Whitened residual on the rows that count, with the best K."""
-        T, fx = self.effects(x)
+        return self.residual_of(*self.effects(x))
+
+    def residual_of(self, T: float, fx: Effects) -> FloatArray:
+        """:meth:`residual` of the model (T in s, fx) already made from x."""
         g = self.response(T, fx)
         return self.fit_k(g, fx.taps, self.prob.restart_columns(T, fx))[0]
 
@@ -453,10 +456,11 @@ class Model:
             h = self.step[i] if x[i] + self.step[i] <= self.hi[i] else -self.step[i]
             xp = x.copy()
             xp[i] += h
-            if self.effects(xp) == here:
+            there = self.effects(xp)
+            if there == here:
                 jac[:, i] = 0.0  # a parameter this way ties or ignores (Candidate.tie)
                 continue
-            jac[:, i] = (self.residual(xp) - r) / h
+            jac[:, i] = (self.residual_of(*there) - r) / h
         out: FloatArray = np.nan_to_num(jac, nan=0.0, posinf=0.0, neginf=0.0)
         return out
 

@@ -205,6 +205,25 @@ def ring_integral(
     return out
 
 
+def ring_integral_at(ra: float, rb: float, decay: float, om: float, tau: float) -> float:
+    """:func:`ring_integral` for one piece at one instant, in plain floats: the same steps as
+    numpy takes for it (its complex expm1, exp(x) - 1 as expm1(x) cos(y) - 2 sin(y/2)^2 +
+    j exp(x) sin(y), and Smith's division), so the same number, without numpy's cost on
+    scalars (about 6 of the 7 us a call took)."""
+    zr, zi = -1.0 / decay, om
+    x, y = zr * tau, zi * tau
+    if not (math.isfinite(x) and math.isfinite(y)):
+        return float(ring_integral(ra, rb, decay, om, tau))
+    half = math.sin(0.5 * y)
+    er, ei = math.expm1(x) * math.cos(y) - 2.0 * half * half, math.exp(x) * math.sin(y)
+    nr, ni = ra * er - (-rb) * ei, ra * ei + (-rb) * er  # (ra - j rb) (exp(z tau) - 1)
+    if abs(zr) >= abs(zi):
+        rat = zi / zr
+        return (nr + ni * rat) * (1.0 / (zr + zi * rat))
+    rat = zr / zi
+    return (nr * rat + ni) * (1.0 / (zi + zr * rat))
+
+
 def _exp(x: float) -> float:
     return math.exp(x) if x > -700.0 else 0.0
 
@@ -223,10 +242,11 @@ def _zero_between(f: Callable[[float], float], cuts: list[float]) -> float | Non
     """First tau after ``cuts[0]`` (s, 0 or later) where f changes sign, for f monotonic between
     neighbouring ``cuts`` (ascending; the last is the end of the span); None when it does
     not."""
-    f0 = f(0.0)
+    # f is pure: each cut's value is computed once and handed on as the next span's start
+    fb = f(cuts[0])
     for a, b in zip(cuts[:-1], cuts[1:], strict=False):
-        fa, fb = f(a), f(b)
-        if a == 0.0 and f0 == 0.0:
+        fa, fb = fb, f(b)
+        if a == 0.0 and fa == 0.0:
             fa = f(min(1e-12, b))
         if fa == 0.0 or (fa > 0.0) == (fb > 0.0):
             continue
@@ -599,7 +619,7 @@ def _ring(
     h = min([left, *events])
     s.capping = h == cap_at and h < left
     e, cs, sn = _exp(-h * sig), math.cos(om * h), math.sin(om * h)
-    s.th += c * h + float(ring_integral(a, b, T, om, h))
+    s.th += c * h + ring_integral_at(a, b, T, om, h)
     s.w = c + e * (a * cs + b * sn)
     q = qk + e * (qa * cs + qb * sn)
     if h == stop_at and h < left:
