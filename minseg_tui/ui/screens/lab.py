@@ -288,9 +288,20 @@ class StepPane(FieldForm):
         if row is None or self._keep == "scrolled":
             return False
         self._keep = "focused"  # the group answered: the landing is over
+        seen = [self.scroll_y, 3]  # the scroll the layout was measured at; tries left
 
         def place(again: bool) -> None:
             if not (row.is_attached and widget.is_attached):
+                return
+            if self.scroll_y != seen[0] and seen[1] > 0:
+                # another placing (the entry's own, after the view drew) scrolled the step
+                # since the last layout: the regions below are from before that scroll, and
+                # measured now they put the entry a few rows above the view (the row at
+                # scroll 22 read as at 5: scrolled to 25, the entry's top off the screen).
+                # Once the screen has laid the new scroll out.
+                seen[:] = [self.scroll_y, seen[1] - 1]
+                self.screen.refresh(layout=True)
+                self.call_after_refresh(place, again)
                 return
             view = self.scrollable_content_region
             top = row.region.y - view.y + self.scroll_y
@@ -301,6 +312,7 @@ class StepPane(FieldForm):
             if y > 0:
                 y = min(y, max(top - HEADING_ROWS, 0))
             self.scroll_to(y=y, animate=False, immediate=True)
+            seen[0] = self.scroll_y
             if again:  # once more when the layout has settled
                 self.call_after_refresh(place, False)
 
