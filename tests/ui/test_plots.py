@@ -60,3 +60,36 @@ def test_thinning_keeps_the_ends_and_every_peak_in_order():
     assert (tx[0], tx[-1]) == (x[0], x[-1])
     assert 9.0 in ty and -3.0 in ty and tx[ty.index(9.0)] == x[1000]
     assert thin(x[:50], y[:50], 200) == (x[:50], y[:50])
+
+
+async def test_a_plot_painted_at_a_new_size_before_its_resize_event_has_that_sizes_ticks(
+    monkeypatch,
+):
+    """The model check's close-up snapshot once showed the y ticks 8, 4, 0 of a draw made
+    for another height where the plot was painted at 80x24 (9, 6, 3): a frame painted after
+    the layout changed the canvas's size and before its Resize event ran its draw. The
+    build the screen paints is made for the size it paints (here the Resize never runs)."""
+    from textual.app import App
+
+    from minseg_tui.ui.widgets.plots import Trace
+
+    monkeypatch.setattr(Canvas, "on_resize", lambda self: None)
+
+    class One(App[None]):
+        def compose(self):
+            yield TracePlot("t", "t [s]", "omega [rad/s]", id="p")
+
+    app = One()
+    async with app.run_test(size=(60, 40)) as pilot:
+        plot = app.query_one(TracePlot)
+        plot.styles.height = 12
+        plot.show([Trace([0.0, 1.0, 2.0], [0.0, 8.8, 4.0], "m", "dot")])
+        await pilot.pause()
+        small = [r.split("┤")[0].strip() for r in _rows(plot) if "┤" in r]
+        plot.styles.height = 30
+        await pilot.pause()
+        canvas = plot.query_one(Canvas)
+        rows = canvas.size.height - 3 - 1 - 1  # the title's row and the labels' row
+        _, _, at = row_ticks(0.0, 8.8, rows)
+        labels = [r.split("┤")[0].strip() for r in _rows(plot) if "┤" in r]
+        assert labels == list(reversed(tick_labels(at))), (small, labels, at)

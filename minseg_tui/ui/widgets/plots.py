@@ -307,6 +307,12 @@ class Canvas(PlotextPlot):
         """Hand plotext what :attr:`traces` draw, at the widget's size, and refresh; nothing
         when that is what it was last handed (a view delivered again after each entry typed,
         a redraw of a stream that brought nothing new): no repaint for the same picture."""
+        if self._hand():
+            self.refresh()
+
+    def _hand(self) -> bool:
+        """Hand plotext what :attr:`traces` draw at the widget's size now (False: it has
+        that already)."""
         key = (
             self._title,
             self._xlabel,
@@ -316,7 +322,7 @@ class Canvas(PlotextPlot):
             _signature(self.traces),
         )
         if key == self._drawn:
-            return
+            return False
         self._drawn = key
         plt = self.plt
         plt.clear_data()
@@ -356,7 +362,7 @@ class Canvas(PlotextPlot):
             plt.yticks(at, format_ticks(at))
             if xs:
                 self._right_axis(lines, (min(xs), max(xs), lo, hi), rows)
-        self.refresh()
+        return True
 
     def _right_axis(
         self,
@@ -402,7 +408,13 @@ class Canvas(PlotextPlot):
         self.draw()  # the y ticks sit on rows
 
     def _build(self) -> Text:
-        """plotext's build of what :meth:`draw` handed it, at the widget's size (kept)."""
+        """plotext's build of what :meth:`draw` handed it, at the widget's size (kept). Handed
+        again first when the size changed since: the layout gives the canvas its new size
+        before its Resize event runs :meth:`draw`, and a frame painted between the two drew
+        the old size's y ticks on the new rows (the model check's close-up read 8, 4, 0
+        where its rows give 9, 6, 3)."""
+        if self.size.area:
+            self._hand()
         key = (self._drawn, self.size, self.app.theme, self.theme)
         text = _built.get(key)
         if text is None:
