@@ -88,6 +88,7 @@ async def test_the_model_checks_legends_show_every_entry_once_in_view(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "model_check")
+        await settle(pilot)  # the screen laid out after the check's view came
         assert app.screen.query_one("#nav").display
         wanted = {"plot-check": 3, "plot-residual": 3}
         for plot_id, entries in wanted.items():
