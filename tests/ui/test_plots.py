@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from textual.geometry import Size
+
 from minseg_tui.quantities import format_ticks as tick_labels
 from minseg_tui.ui.widgets.plots import Canvas, TracePlot, row_ticks, thin, ticks
 from tests.ui.helpers import goto, standing, start
@@ -93,3 +95,33 @@ async def test_a_plot_painted_at_a_new_size_before_its_resize_event_has_that_siz
         _, _, at = row_ticks(0.0, 8.8, rows)
         labels = [r.split("┤")[0].strip() for r in _rows(plot) if "┤" in r]
         assert labels == list(reversed(tick_labels(at))), (small, labels, at)
+
+
+async def test_a_legend_is_measured_for_the_width_the_layout_asks_about():
+    """The model check's legend at 80x24 was once two rows high, its second empty: Textual
+    measured the legend made for the width it had before (its full labels, which wrap) and
+    kept that height for the width asked. Measured for a width, it is the legend made for
+    that width: one row where the short labels fit."""
+    from textual.app import App
+
+    from minseg_tui.ui.widgets.plots import Legend, Trace, legend
+
+    traces = [
+        Trace([0.0], [0.0], "extended", "+", short="ext."),
+        Trace([0.0], [0.0], "first order", "braille", short="1st order"),
+        Trace([0.0], [0.0], "measured", "dot", short="meas."),
+    ]
+    narrow = len(legend(traces, 1).plain) + 1  # the short labels fit, the full ones do not
+    assert len(legend(traces).plain) > narrow
+
+    class One(App[None]):
+        def compose(self):
+            yield Legend()
+
+    app = One()
+    async with app.run_test(size=(80, 10)) as pilot:
+        shown = app.query_one(Legend)
+        shown.show(traces)
+        await pilot.pause()
+        assert shown.content_size.width > len(legend(traces).plain)  # laid out wide
+        assert shown.get_content_height(Size(80, 10), Size(80, 10), narrow) == 1

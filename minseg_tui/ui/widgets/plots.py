@@ -19,6 +19,7 @@ from rich.text import Text
 from textual.app import ComposeResult
 from textual.containers import Vertical
 from textual.content import Content
+from textual.geometry import Size
 from textual.widgets import Static
 from textual_plotext import PlotextPlot
 
@@ -468,6 +469,13 @@ class Legend(Static):
     def render(self) -> Content:
         width = self.content_size.width
         return legend(self.traces, width or None)
+
+    def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
+        """The rows of the legend made for ``width``, the width the layout asks about. Textual
+        measures the render of the width the legend had before and keeps that height by the
+        width asked: a legend first measured before it was laid out (its full labels, two
+        rows at 80x24) stayed two rows high once it read one, its second row empty."""
+        return legend(self.traces, width or None).get_height(self.styles, width) if width else 0
 
     def on_resize(self) -> None:
         self.refresh(layout=True)
