@@ -11,7 +11,7 @@ import re
 from collections import OrderedDict
 from collections.abc import Hashable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -19,6 +19,7 @@ from rich.text import Text
 from textual.app import ComposeResult
 from textual.containers import Vertical
 from textual.content import Content
+from textual.css.styles import RulesMap
 from textual.geometry import Size
 from textual.widgets import Static
 from textual_plotext import PlotextPlot
@@ -475,7 +476,8 @@ class Legend(Static):
         measures the render of the width the legend had before and keeps that height by the
         width asked: a legend first measured before it was laid out (its full labels, two
         rows at 80x24) stayed two rows high once it read one, its second row empty."""
-        return legend(self.traces, width or None).get_height(self.styles, width) if width else 0
+        rules = cast(RulesMap, self.styles)  # Textual's own call passes the styles as its rules
+        return legend(self.traces, width or None).get_height(rules, width) if width else 0
 
     def on_resize(self) -> None:
         self.refresh(layout=True)
