@@ -415,8 +415,8 @@ def count_revolution(
 ) -> RevolutionResult:
     """Count while a hand turns the wheel, until ``done()`` says it is done (or ``timeout``
     s pass): the counts and what they mean. The motor is off meanwhile. ``samples``: a tap
-    of the samples opened when the check was asked for (else the link's own, read from its
-    newest sample on). The count reads on until the board's clock is :data:`LAST_US` past
+    of the samples, from the newest one read when the check was asked for on (else the
+    link's own, read from its newest sample on). The count reads on until the board's clock is :data:`LAST_US` past
     the moment the hand was done, that moment (host time by ``clock``, the one the samples'
     arrival is stamped with) mapped to board time (:func:`board_time_at`), so that a host
     reading the samples late does not cut the end of the turn. ``turned_at()``: the board
@@ -424,10 +424,10 @@ def count_revolution(
     MinSeg's): the last samples read reach past it too."""
     take = samples or board.samples
     board.stop()
-    # where the count begins: a tap (``samples``) opened when the check was asked for holds
-    # nothing older, so its first sample; the link's own backlog may hold rows from before
-    # (the motor driven), so its newest. A hand that turns as soon as it is asked, before
-    # the first read, is counted either way.
+    # where the count begins: a tap (``samples``) holds the newest sample read when the
+    # check was asked for, then those read after, so its first sample; the link's own
+    # backlog may hold rows from before (the motor driven), so its newest. A hand that
+    # turns as soon as it is asked, before the board's next sample, is counted either way.
     first = take()
     got: list[SampleBatch] = [first] if samples is not None else []
     start = int(first.count[-1]) if samples is None and len(first) else None

@@ -37,6 +37,10 @@ class SampleBatch:
         """Board time of each sample, s."""
         return self.t_us / 1e6
 
+    def newest(self) -> SampleBatch:
+        """The newest sample alone, as a batch of one (empty from an empty batch)."""
+        return SampleBatch(*(getattr(self, f)[-1:] for f in _FIELDS))
+
     @staticmethod
     def from_rows(rows: list[tuple[int, int, int, int, int, float]]) -> SampleBatch:
         """From (seq, t_us, count, u_mV, epoch, t_host) tuples."""

@@ -258,6 +258,8 @@ class LabApp(App[None]):
         self._tap: queue.Queue[SampleBatch] | None = None
         """While the board check runs: the stream's samples, for the check (the stream
         worker is the one reader of the device)."""
+        self._newest: SampleBatch | None = None
+        """The newest sample the stream has read (set and read under :attr:`_lock`)."""
         self._watch = NoCountWatch()
         self._step_id = ""
         self._watching_speed = False
@@ -360,7 +362,9 @@ class LabApp(App[None]):
             self.link = LinkState(event="no device: " + event.error)
             self.notify(event.error, title="device", severity="error", timeout=10)
             return
-        self._device = event.device
+        with self._lock:
+            self._device = event.device
+            self._newest = None
         self.device = DeviceInfo.of(event.device, event.fallback)
         self.link = LinkState()
         self._stream(event.device)
@@ -486,11 +490,13 @@ class LabApp(App[None]):
                 if self._device is not device:
                     return
                 self.live.extend(batch)
+                tap = self._tap  # a check's tap, opened under this lock (_open_tap)
+                if len(batch):
+                    self._newest = batch.newest()
+                    if tap is not None:
+                        tap.put(batch)
             if len(batch):
-                tap = self._tap
-                if tap is not None:
-                    tap.put(batch)
-                elif (u := self._watch.feed(batch)) is not None:
+                if tap is None and (u := self._watch.feed(batch)) is not None:
                     self.post_message(NoCounts(u))
                 self.post_message(SamplesArrived(replace(device.stats), self.live.total))
             if device.u_req != u_req:
@@ -699,7 +705,14 @@ class LabApp(App[None]):
         device = self._check_device()
         if device is None:
             return
-        self._tap = queue.Queue()
+        # from the newest sample read when asked: the board samples every 25 ms and the
+        # stream reads every 50 ms, so a hand that turns at once (the simulated one) can
+        # turn before the board's next sample, and a tap holding only the samples read
+        # after the ask would hold none from before the turn (it counted 0)
+        with self._lock:
+            self._tap = queue.Queue()
+            if self._newest is not None:
+                self._tap.put(self._newest)
         self.requested = None
         done, cancelled = threading.Event(), threading.Event()
         board = device.board  # the virtual MinSeg behind the link, or None at a real board
@@ -1264,6 +1277,7 @@ class LabApp(App[None]):
         with self._lock:  # the old stream, were it between a read and the buffer, stops there
             old, self._device = self._device, None
             self.live.clear()
+            self._newest = None
         if old is not None:
             try:
                 old.close()

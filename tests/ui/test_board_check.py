@@ -184,6 +184,45 @@ async def test_one_revolution_by_hand_from_the_palette(tmp_path):
             assert s.board_checks()["revolution"]["ok"]
 
 
+async def test_a_hand_that_turns_before_the_stream_reads_again_is_counted(tmp_path):
+    """make test, once in eight runs under one busy core: the hand check said "0 counts".
+    The check reads the samples the stream hands it from the moment it is asked; the
+    stream reads the board every 50 ms and the board samples every 25 ms, so when the
+    simulated hand turned the wheel before the board took its next sample after the ask,
+    every sample the check got was after the turn, and the turn was not counted. The check
+    now starts from the newest sample the stream had read when it was asked. Here the ask
+    and the turn come right after a read (same tick): before the fix no sample lay between
+    them most of the time."""
+    app = real_app(tmp_path / "sessions", board_url(seed=2))
+    heard = Heard()
+    async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
+        await _in_lab(pilot, "task1")
+        total = app.live.total
+        await settle(pilot, lambda: app.live.total > total)
+        total = app.live.total
+        await settle(pilot, lambda: app.live.total > total)  # right after a read
+        pushed: list[object] = []
+        push = app.push_screen
+
+        def push_and_keep(screen, *args, **kwargs):
+            pushed.append(screen)
+            return push(screen, *args, **kwargs)
+
+        app.push_screen = push_and_keep  # type: ignore[method-assign]
+        app.action_count_revolution()
+        asked = pushed[0]
+        assert isinstance(asked, RevolutionScreen)
+        # what Enter does on it (action_turned), at once, before it is even drawn: the
+        # simulated hand turns the wheel, and the check is told the turn is done
+        assert asked.turn is not None
+        asked.turn()
+        asked.done.set()
+        await heard.until(pilot, lambda: _shown(app))
+        assert app.screen.ok, _check_text(app)
+        counts = int(_check_text(app).split()[0])
+        assert abs(counts - 720) <= 36, _check_text(app)
+
+
 def test_task1_says_how_the_board_is_found_and_offers_no_pick():
     """Task 1 said "pick it, or pick the virtual MinSeg", a choice the program never offers:
     it takes the board it finds, else the virtual MinSeg."""
