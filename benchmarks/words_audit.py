@@ -11,7 +11,7 @@ place, and says where it stands:
 - the places that spell how u_ss was found (a table with an ``"interpolated"`` entry, or the
   bare code shown), the
   model check's figure names (a table naming the angle error), the key help (a table or
-  README line saying what F5 does);
+  README line saying what F5 does), a palette command's title ('Export report' quoted);
 - names defined in more than one module: classes, and UPPER_CASE tables at module level;
 - words in the model (issue 19 item 4: the model gives records, the words are made outside
   it): string literals and f-strings of model/ with a space and over 20 characters of
@@ -41,7 +41,15 @@ from tests.prose import prose  # noqa: E402
 SPEC = re.compile(r"\{[^{}]*?:[+ ]?\d*(?:\.\d+)?[gfe%]\}")
 """A number's format spec inside an f-string: {x:.3g}, {x:+.1f}, {x:g}, {x:.0f}."""
 
-PEOPLE = ("ui/", "report/", "cli/", "lab/views/", "lab/content/identify_says.py")
+PEOPLE = (
+    "ui/",
+    "report/",
+    "cli/",
+    "lab/views/",
+    "lab/content/identify_says.py",
+    "lab/content/u_ss_says.py",
+    "lab/content/log_says.py",
+)
 """Modules whose text is the words a student reads (screens, report, headless output)."""
 
 HELPER = re.compile(r"^(?:def (_num|_fmt|_q|_g|_v|_w|_s|_read)\(|(_g|_fmt|_num) = format)", re.M)
@@ -50,6 +58,7 @@ PLACES: dict[str, re.Pattern[str]] = {
     "how u_ss was found": re.compile(r'"interpolated":|\{st\.u_ss_how\}'),
     "the check's figure names": re.compile(r'"(?:rms error of the angle|angle error)", "rad"'),
     "the key help (what F5 does)": re.compile(r'^\| F5|\("F5", "|\("f5", "|Key\(\s*"F5"', re.M),
+    "a palette command's title (Export report)": re.compile(r"[\"'(]Export report[\"')]"),
 }
 
 

@@ -18,8 +18,9 @@ from minseg_tui.lab.content.identify_says import (
     t63_note,
     time_from,
 )
+from minseg_tui.lab.content.u_ss_says import u_ss_words, zero_volt_refusal
 from minseg_tui.lab.saving.files import read_run_log, read_table
-from minseg_tui.model.identify import U_TASK15, Identification, identify, u_ss_words
+from minseg_tui.model.identify import U_TASK15, Identification, ZeroVoltRefusal, identify
 from minseg_tui.model.identify.risefit import RISE_SPAN
 from minseg_tui.quantities import (
     F_UNIT,
@@ -76,6 +77,8 @@ def run(args: argparse.Namespace) -> int:
     log = read_run_log(args.step) if args.step is not None else None
     try:
         result = identify(readings, args.R, log, source=args.table)
+    except ZeroVoltRefusal as refused:
+        raise zero_volt_refusal(refused) from None
     except (ArithmeticError, ValueError) as exc:  # numpy's LinAlgError is a ValueError
         raise InputError(
             args.step or args.table,

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -34,9 +34,20 @@ MAX_CPR: int = 1_000_000
 has hundreds to a few ten thousands)."""
 
 
-def header_problem(key: str, value: str) -> str | None:
-    """Why a header line ``# key: value`` cannot be taken, as an 'expected ...' sentence,
-    or None (keys the format does not define are free text)."""
+@dataclass(frozen=True)
+class BadHeader:
+    """A header line ``# key: value`` whose value the format does not take: ``key`` 'cpr'
+    (not a whole number above 0 and at most :data:`MAX_CPR`) or 'omega_over' (neither
+    'interval' nor 'nominal'), and the ``value`` given, stripped. A record, not words:
+    lab/content/log_says.py says it."""
+
+    key: Literal["cpr", "omega_over"]
+    value: str
+
+
+def header_problem(key: str, value: str) -> BadHeader | None:
+    """Why a header line ``# key: value`` cannot be taken, or None (keys the format does not
+    define are free text)."""
     v = value.strip()
     if key == "cpr":
         try:
@@ -44,12 +55,9 @@ def header_problem(key: str, value: str) -> str | None:
         except ValueError:
             n = 0
         if not 0 < n <= MAX_CPR or str(n) != v.lstrip("+"):
-            return (
-                f"expected # cpr: a whole number of counts per revolution above 0 and at most "
-                f"{MAX_CPR} (the MinSeg's encoder has 720), got '{v}'"
-            )
+            return BadHeader("cpr", v)
     if key == "omega_over" and v not in ("interval", "nominal"):
-        return f"expected # omega_over: interval or nominal, got '{v}'"
+        return BadHeader("omega_over", v)
     return None
 
 

@@ -45,7 +45,7 @@ from minseg_tui.device.boardcheck import CHECK_U, NoCountWatch, check_board, cou
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import timeout_message
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab.content.keys import COUNT_BY_HAND, in_palette, key_name
+from minseg_tui.lab.content.keys import PALETTE, in_palette, key_name
 from minseg_tui.lab.saving.store import SessionInfo, SessionsUnreadable, list_sessions
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
@@ -773,7 +773,7 @@ class LabApp(App[None]):
                 r.ok,
                 r.text,
                 "Counts per revolution",
-                f"{in_palette(COUNT_BY_HAND)} counts again",
+                f"{in_palette('count_revolution')} counts again",
             )
         )
 
@@ -1292,74 +1292,69 @@ class LabApp(App[None]):
         only on the steps whose panel has it, as the footer shows its key. Textual's own
         "Keys" (its key panel) is left out: ours, the last, opens F1's list."""
         for command in super().get_system_commands(screen):
-            if command.title != "Keys":
+            if command.title != PALETTE["help"]:
                 yield command
         yield SystemCommand(
-            "Stop motor", f"Motor off now ({key_name('stop_motor')})", self.stop_motor
+            PALETTE["stop_motor"], f"Motor off now ({key_name('stop_motor')})", self.stop_motor
         )
         lab = screen if isinstance(screen, LabScreen) else None
-        for action, title, help_text in (
-            (
-                "set_voltage",
-                "Set step voltage",
-                "Request the next of 2.5/3.5/4.5 V on the board",
-            ),
-            ("capture", "Capture omega_ss", "Mean over the settled window"),
-            ("run_square_wave", "Run the square wave", "Task 10 on the board, 25 ms"),
-            ("run_fast", "Run the square wave fast", "Task 10 at 5 ms, board-timed"),
+        for action, help_text in (
+            ("set_voltage", "Request the next of 2.5/3.5/4.5 V on the board"),
+            ("capture", "Mean over the settled window"),
+            ("run_square_wave", "Task 10 on the board, 25 ms"),
+            ("run_fast", "Task 10 at 5 ms, board-timed"),
             (
                 "reveal",
-                "Reveal computed values",
                 "Lab assistant: show this step's values before the group answers; the report "
                 "says so",
             ),
         ):
             if lab is not None and lab.offers(action):
                 yield SystemCommand(
-                    title,
+                    PALETTE[action],
                     f"{help_text} ({key_name(action)})",
                     partial(lab.run_panel_key, action),
                 )
         yield SystemCommand(
-            "Board check",
+            PALETTE["board_check"],
             "Does the wheel turn when asked, and does the count follow it? "
             f"({key_name('board_check')})",
             self.action_board_check,
         )
         yield SystemCommand(
-            COUNT_BY_HAND,
+            PALETTE["count_revolution"],
             "Turn the wheel once by hand: 720 counts expected",
             self.action_count_revolution,
         )
         yield SystemCommand(
-            "Export report",
+            PALETTE["export"],
             f"Markdown, HTML and CSV into the session folder ({key_name('export')})",
             self.export,
         )
         yield SystemCommand(
-            "Save the session to another folder",
+            PALETTE["save_elsewhere"],
             "When it cannot be saved where it is (a full disk, a read-only folder, a stick "
             "pulled out): save it elsewhere and go on there",
             self.action_save_elsewhere,
         )
         if self.session is not None:
             yield SystemCommand(
-                "Correct the group's names",
+                PALETTE["correct_names"],
                 "Mend a misspelt name; the report and the resume list show the new names",
                 self.action_correct_names,
             )
         yield SystemCommand(
-            "Import a run log",
+            PALETTE["import_log"],
             "Load a log recorded elsewhere into the model check",
             self.import_log,
         )
         if self._device is None or self._device.board is None:  # not on the virtual one
             yield SystemCommand(
-                "Switch to virtual board",
+                PALETTE["switch_to_virtual"],
                 "Use the virtual MinSeg instead of the board",
                 self.switch_to_virtual,
             )
-        yield SystemCommand("Keys", f"The help screen ({key_name('help')})", self._help)
+        yield SystemCommand(PALETTE["help"], f"The help screen ({key_name('help')})", self._help)
 
     def on_unmount(self) -> None:
         self._stop.set()

@@ -8,9 +8,11 @@ from __future__ import annotations
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.saving.files import write_run_log
+from minseg_tui.lab.content.u_ss_says import zero_volt_refusal
+from minseg_tui.lab.saving.files import read_run_log, read_table, write_run_log
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
+from minseg_tui.model.identify import ZeroVoltRefusal, identify, response_alone
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
 from minseg_tui.model.runlog import RunLog
@@ -82,6 +84,40 @@ def test_the_session_and_report_say_what_is_missing_and_reopen(tmp_path, capsys,
     capsys.readouterr()
     (md,) = folder.glob("*.md")
     assert words in md.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize(
+    ("high", "how", "u_req", "how_u"),
+    [(4.5, "drop", 0.3, "extrapolated"), (-4.5, "", 0.0, "off"), (-4.5, "noureq", None, "log")],
+)
+def test_a_rise_at_0_V_is_refused_with_a_record_and_worded_above_the_model(
+    tmp_path, high, how, u_req, how_u
+):
+    """The model refuses a rise that ends at 0 V on the motor with a record (when, the level
+    requested, how its u_ss was found), not words; lab/content/u_ss_says.py words it, the
+    sentence the CLI and the session show."""
+    (tmp_path / "table.csv").write_text(TABLE_CSV)
+    _log(tmp_path / "log.csv", high, "drop" if how == "drop" else "")
+    log = read_run_log(str(tmp_path / "log.csv"))
+    if how == "noureq":  # a log without u_req: its own u (0 V at the top of each rise)
+        log = RunLog(t=log.t, u=log.u, omega=log.omega, source=log.source, lines=log.lines)
+    readings = read_table(str(tmp_path / "table.csv"))
+    with pytest.raises(ZeroVoltRefusal) as refused:
+        identify(readings, 5.0, log, source="table.csv")
+    rise = refused.value.rise
+    assert rise.how == how_u
+    assert rise.u_req == (None if u_req is None else pytest.approx(u_req))
+    assert refused.value.source == log.source and refused.value.line is not None
+    with pytest.raises(ZeroVoltRefusal):  # Tasks 11-12 alone refuse it the same way
+        response_alone(log, [(2.5, 2.1), (3.5, 3.05), (4.5, 4.0)])
+    said = str(zero_volt_refusal(refused.value))
+    assert said.startswith(f"{log.source}:{refused.value.line}: expected each rising edge")
+    why = {
+        "extrapolated": "below the driver's drop in the table",
+        "off": "the driver is off at 0 V",
+        "log": "the log's applied voltage",
+    }[how_u]
+    assert f"0 V on the motor ({why}), so K = omega_ss / u_ss cannot be computed" in said
 
 
 def test_a_recorded_run_whose_count_never_changes_is_shown_without_a_fit(tmp_path):

@@ -7,7 +7,8 @@ import pytest
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.identify_says import as_json, sentence
-from minseg_tui.model.identify import U_SS_HOW, Reading, identify, steady_state, u_ss_at, u_ss_words
+from minseg_tui.lab.content.u_ss_says import U_SS_SAYS, u_ss_words
+from minseg_tui.model.identify import U_SS_HOW, Reading, identify, steady_state, u_ss_at
 from minseg_tui.model.identify.steady import table_of
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
@@ -321,10 +322,12 @@ def test_a_table_whose_median_k_v_is_not_positive_is_refused():
 
 def test_every_way_u_ss_is_found_is_said_in_words():
     """Each provenance u_ss_at gives (and 'log', a log without u_req) has its words, and the
-    detail names the levels where it needs them."""
+    detail names the levels where it needs them: the model gives the code, its words are in
+    lab/content/u_ss_says.py, in the model's order (least direct first)."""
     table = [(2.5, 2.1), (4.5, 4.0)]
     found = {u_ss_at(table, lv)[1] for lv in (0.0, 2.5, 3.5, 6.0)} | {u_ss_at([], 3.5)[1]}
     assert found | {"log"} == set(U_SS_HOW)
+    assert tuple(U_SS_SAYS) == U_SS_HOW
     assert all(u_ss_words(how) != how for how in U_SS_HOW)
     assert u_ss_words("extrapolated") == "extrapolated from the table"
     assert u_ss_words("extrapolated", [4.5, 4.5]) == (

@@ -13,7 +13,7 @@ from pathlib import Path
 from textual.binding import Binding
 
 import minseg_tui
-from minseg_tui.lab.content.keys import KEY_NAMES
+from minseg_tui.lab.content.keys import KEY_NAMES, PALETTE
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.keys import KEYMAP
 from minseg_tui.ui.widgets.fields import RESTORING_KEYS
@@ -105,3 +105,90 @@ def test_no_sentence_writes_a_key_by_hand():
                 for m in KEY_WORD.finditer(node.value):
                     written.append(f"{path.relative_to(PACKAGE)}:{node.lineno}: {m.group(0)}")
     assert not written, "\n".join(written)
+
+
+def _call(node: ast.AST, name: str) -> ast.Call | None:
+    """``node`` when it is a call of the function ``name`` (by its bare name), else None."""
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == name:
+        return node
+    return None
+
+
+def _palette_key(node: ast.expr) -> bool:
+    """Whether ``node`` is ``key_name('palette')`` or ``KEY_NAMES['palette']``."""
+    call = _call(node, "key_name")
+    if call is not None:
+        return isinstance(call.args[0], ast.Constant) and call.args[0].value == "palette"
+    return (
+        isinstance(node, ast.Subscript)
+        and isinstance(node.value, ast.Name)
+        and node.value.id == "KEY_NAMES"
+        and isinstance(node.slice, ast.Constant)
+        and node.slice.value == "palette"
+    )
+
+
+BY_HAND = re.compile(r"^\s*(?:→\s*|['‘\"]\s*)\w")
+"""Text after the palette's key that names a command written by hand: "Ctrl+P 'Frobnicate'",
+"Ctrl+P → Frobnicate" (a command's name comes from PALETTE: in_palette, USE_RUN)."""
+
+
+def test_a_sentence_names_only_the_palette_commands_of_the_table():
+    """Issue 19 item 3: a palette command's title is written once, in PALETTE (lab/content/
+    keys.py), which the palette (ui/app.py) titles its commands from. A sentence names a
+    command through in_palette('export') or USE_RUN; it fails here when it writes a title by
+    hand, names a command after the palette's key by hand, or asks in_palette for a command
+    the table does not hold."""
+    titles = {t for t in PALETTE.values() if " " in t}  # 'Keys' alone is any heading's word
+    written: list[str] = []
+    for folder in ("lab", "report", "ui", "cli"):
+        for path in sorted((PACKAGE / folder).rglob("*.py")):
+            if path in EXEMPT:
+                continue
+            where = path.relative_to(PACKAGE)
+            tree = ast.parse(path.read_text(encoding="utf-8"))
+            for node in _strings_outside_docstrings(tree):
+                written += [f"{where}:{node.lineno}: {t}" for t in titles if t in node.value]
+            for node in ast.walk(tree):
+                call = _call(node, "in_palette")
+                if call is not None:
+                    command = call.args[0]
+                    if not (isinstance(command, ast.Constant) and command.value in PALETTE):
+                        written.append(f"{where}:{call.lineno}: in_palette({ast.unparse(command)})")
+                if isinstance(node, ast.JoinedStr):
+                    parts = node.values
+                    for part, after in zip(parts, parts[1:], strict=False):
+                        if (
+                            isinstance(part, ast.FormattedValue)
+                            and _palette_key(part.value)
+                            and isinstance(after, ast.Constant)
+                            and BY_HAND.match(str(after.value))
+                        ):
+                            written.append(f"{where}:{node.lineno}: {after.value!r}")
+    assert not written, "\n".join(written)
+
+
+def test_the_palette_titles_its_commands_from_the_table():
+    """Every command the app puts in the palette is titled by PALETTE, and each of the
+    table's commands is one the palette offers (the run one by the lab screen's entries)."""
+    tree = ast.parse((PACKAGE / "ui" / "app.py").read_text(encoding="utf-8"))
+    keys: list[str] = []
+    for node in ast.walk(tree):
+        call = _call(node, "SystemCommand")
+        if call is not None:
+            title = call.args[0]
+            if (
+                isinstance(title, ast.Subscript)
+                and isinstance(title.value, ast.Name)
+                and title.value.id == "PALETTE"
+            ):
+                keys.append(ast.unparse(title.slice))
+            else:
+                keys.append(f"by hand: {ast.unparse(title)}")
+    # the step panels' commands are titled in one loop, PALETTE[action] over their actions
+    looped = [k for k in keys if k == "action"]
+    assert len(looped) == 1, keys
+    panel = {"set_voltage", "capture", "run_square_wave", "run_fast", "reveal"}
+    named = {k.strip("'\"") for k in keys if k != "action"}
+    assert named | panel | {"use_run"} == set(PALETTE), keys
+    assert "USE_RUN" in (PACKAGE / "ui" / "screens" / "lab.py").read_text(encoding="utf-8")

@@ -4,8 +4,8 @@ The lab's words (a step's What to do, a notice, a line of the report) name keys:
 stops", "press F10", "Ctrl+P 'Use run steps-1'". They sit below the UI, which binds the
 keys, so the names are written here once: the UI's table of keys
 (:data:`minseg_tui.ui.keys.KEYMAP`) takes each key's name from :data:`KEY_NAMES`, and its
-palette titles its commands with :data:`USE_RUN` and :data:`COUNT_BY_HAND`. A test checks
-that each name is the one its binding answers to.
+palette titles its commands from :data:`PALETTE`. Tests check that each name is the one its
+binding answers to, and that the palette offers each command a sentence names.
 """
 
 from __future__ import annotations
@@ -37,12 +37,33 @@ KEY_NAMES: Final = MappingProxyType(
 """Each key by the action it does, as a person writes it ('F10', 'Ctrl+R'): the app's
 action names where the app binds it, else what it does ('palette', 'undo')."""
 
-USE_RUN: Final = "Use run"
+PALETTE: Final = MappingProxyType(
+    {
+        "stop_motor": "Stop motor",
+        "set_voltage": "Set step voltage",
+        "capture": "Capture omega_ss",
+        "run_square_wave": "Run the square wave",
+        "run_fast": "Run the square wave fast",
+        "reveal": "Reveal computed values",
+        "board_check": "Board check",
+        "count_revolution": "Count one revolution by hand",
+        "export": "Export report",
+        "save_elsewhere": "Save the session to another folder",
+        "correct_names": "Correct the group's names",
+        "import_log": "Import a run log",
+        "switch_to_virtual": "Switch to virtual board",
+        "use_run": "Use run",
+        "help": "Keys",
+    }
+)
+"""Each of our palette commands by what it does (the app's action where it has one), with
+its title as the palette lists it and a sentence names it ('use_run' is the start of 'Use
+run steps-1 for Tasks 11-15'; 'help' replaces Textual's own 'Keys'). The palette (ui/app.py)
+titles its commands from here, and a test fails on a sentence that names one by hand."""
+
+USE_RUN: Final = PALETTE["use_run"]
 """The start of the palette's command that picks the run Tasks 11-15 use ('Use run steps-1
 for Tasks 11-15')."""
-
-COUNT_BY_HAND: Final = "Count one revolution by hand"
-"""The palette's command for Task 3's count of one turn of the wheel by hand."""
 
 
 def key_name(action: str) -> str:
@@ -52,9 +73,9 @@ def key_name(action: str) -> str:
 
 
 def in_palette(command: str) -> str:
-    """Where the palette's ``command`` is, as a step's words send a group there:
-    'Ctrl+P → Count one revolution by hand'."""
-    return f"{KEY_NAMES['palette']} → {command}"
+    """Where the palette's ``command`` (a key of :data:`PALETTE`) is, as a step's words send a
+    group there: 'Ctrl+P → Count one revolution by hand' for 'count_revolution'."""
+    return f"{KEY_NAMES['palette']} → {PALETTE[command]}"
 
 
-__all__ = ["COUNT_BY_HAND", "KEY_NAMES", "USE_RUN", "in_palette", "key_name"]
+__all__ = ["KEY_NAMES", "PALETTE", "USE_RUN", "in_palette", "key_name"]

@@ -26,7 +26,7 @@ from typing import Literal
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.expr import parse_formula
-from minseg_tui.lab.content.keys import COUNT_BY_HAND, in_palette, key_name
+from minseg_tui.lab.content.keys import in_palette, key_name
 from minseg_tui.quantities import Plausible
 
 FieldKind = Literal["quantity", "formula", "choice", "text"]
@@ -583,7 +583,7 @@ _LAB: tuple[Step, ...] = (
         "The program already runs the board's code: there is nothing to build or download. "
         f"Then press {key_name('board_check')}: "
         "the board check turns the wheel for half a second and says whether the count follows, "
-        f"and what to look at if it does not. {in_palette(COUNT_BY_HAND)} checks the "
+        f"and what to look at if it does not. {in_palette('count_revolution')} checks the "
         "encoder's 720 counts.",
         actions=("connect",),
         done_when=("board_check",),

@@ -27,6 +27,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.log_says import header_words
 from minseg_tui.lab.saving.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import RunLog, clock_problem, command, find_edges, header_problem
@@ -234,7 +235,7 @@ def read_run_log(path: str | Path, require_step: bool = True) -> RunLog:
     for key, value in f.metadata.items():
         refused = header_problem(key, value)
         if refused:
-            raise InputError(f.source, f.metadata_lines[key], refused)
+            raise InputError(f.source, f.metadata_lines[key], header_words(refused))
     _check_limits(f, units)
     lines = f.lines
     t = f.numbers("t")
@@ -270,9 +271,9 @@ def read_run_log(path: str | Path, require_step: bool = True) -> RunLog:
             )
     _check_sample_period(f, t)
     if "t_us" in extra:
-        refused = clock_problem(t, extra["t_us"])
-        if refused:
-            raise InputError(f.source, int(lines[0]), refused)
+        clock = clock_problem(t, extra["t_us"])
+        if clock:
+            raise InputError(f.source, int(lines[0]), clock)
     log = RunLog(
         t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines
     )

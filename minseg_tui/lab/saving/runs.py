@@ -38,10 +38,11 @@ from typing import Any
 import numpy as np
 
 from minseg_tui.device.samples import SampleBatch
+from minseg_tui.lab.content.u_ss_says import u_ss_words
 from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.lab.saving.schema import PARTIAL_HEADER
 from minseg_tui.lab.saving.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
-from minseg_tui.model.identify import u_ss_at, u_ss_words
+from minseg_tui.model.identify import u_ss_at
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.signals import angle, lab_velocity, timestamp_velocity
 from minseg_tui.units import COUNTS_PER_REV
@@ -184,10 +185,10 @@ def applied_voltage(
         v, how = u_ss_at(table, float(level))
         out[u == level] = v
         said.append(f"{level:g} V -> {v:.4g} V ({u_ss_words(how, [float(level)])})")
-    how = "u = u_A mapped from u_req through the table's u_ss" + (
+    mapped = "u = u_A mapped from u_req through the table's u_ss" + (
         ": " + "; ".join(said) if said else ""
     )
-    return out, how + "; 0 V stays 0 V"
+    return out, mapped + "; 0 V stays 0 V"
 
 
 # -- partial files -----------------------------------------------------------------------------

@@ -17,6 +17,7 @@ from pathlib import Path
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import identify_says
+from minseg_tui.lab.content.u_ss_says import zero_volt_refusal
 from minseg_tui.lab.saving.kept import CheckFigures, ResponseFigures
 from minseg_tui.lab.saving.runs import RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
@@ -25,6 +26,7 @@ from minseg_tui.model.identify import (
     Identification,
     Reading,
     ResponseResult,
+    ZeroVoltRefusal,
     identify,
     response_alone,
 )
@@ -242,6 +244,16 @@ def check_figures(mc: ModelCheck) -> CheckFigures:
     )
 
 
+def _why_no_step(exc: Exception) -> str:
+    """Why a run gives no step result, in one line: identify's refusal as it says it (a
+    rise at 0 V on the motor worded by lab/content/u_ss_says.py), or the fit's failure."""
+    if isinstance(exc, ZeroVoltRefusal):
+        return str(zero_volt_refusal(exc))
+    if isinstance(exc, InputError):
+        return str(exc)
+    return f"its steps cannot be fitted ({exc})"
+
+
 def compute(
     R: float | None,
     complete_rows: Sequence[Reading],
@@ -291,8 +303,8 @@ def compute(
             return Results(None, name, tuple(problems), table_problems=table_problems)
         try:
             alone = response_alone(log, pairs)
-        except (InputError, ArithmeticError, ValueError) as exc:
-            why = str(exc) if isinstance(exc, InputError) else f"its steps cannot be fitted ({exc})"
+        except (InputError, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
+            why = _why_no_step(exc)
             problems.append(f"run {run.name if run else ''} gives no step result: {why}")
             return Results(None, name, tuple(problems), table_problems=table_problems)
         return Results(None, name, tuple(problems), response=alone, table_problems=table_problems)
@@ -301,10 +313,10 @@ def compute(
         return run_alone()
     try:
         ident = identify(readings, R, log, source="table", u_ss_table=u_ss_table)
-    except (InputError, ArithmeticError, ValueError) as exc:
+    except (InputError, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
         # ArithmeticError, ValueError (numpy's LinAlgError): a log the fit cannot take; the
         # table's results stand, and the step says why it has none (never a traceback)
-        why = str(exc) if isinstance(exc, InputError) else f"its steps cannot be fitted ({exc})"
+        why = _why_no_step(exc)
         if not read:
             return Results(None, None, (*problems, why), table_problems=(*table_problems, why))
         try:

@@ -44,7 +44,7 @@ from minseg_tui.lab.state.session import NO_RUN_YET, Session
 from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.lab.views.own_first import OwnRow
-from minseg_tui.model.identify import response_alone
+from minseg_tui.model.identify import ZeroVoltRefusal, response_alone
 from minseg_tui.quantities import (
     F_UNIT,
     MISSING,
@@ -500,7 +500,7 @@ def _response_alone(session: Session) -> dict[str, float | None]:
         return {}
     try:
         st = response_alone(read_run(session.folder, run, pairs, require_step=True), pairs)
-    except InputError:
+    except (InputError, ZeroVoltRefusal):
         return {}
     return {"K": st.K, "T_63": st.T_63, "T": st.T}
 

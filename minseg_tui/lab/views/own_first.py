@@ -22,6 +22,7 @@ from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.content.steps import STEPS, RunPlan
+from minseg_tui.lab.content.u_ss_says import u_ss_words
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.results import Comparison, Results
@@ -36,7 +37,7 @@ from minseg_tui.lab.views.session import (
     judged_again,
     waits_for,
 )
-from minseg_tui.model.identify import U_TASK15, u_ss_words
+from minseg_tui.model.identify import U_TASK15
 from minseg_tui.quantities import (
     NOT_DETERMINED,
     UNITS,

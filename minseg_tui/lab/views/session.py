@@ -27,6 +27,7 @@ from minseg_tui.lab.content import identify_says
 from minseg_tui.lab.content import needs as lab_needs
 from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.steps import FIELDS, STEPS, step
+from minseg_tui.lab.content.u_ss_says import u_ss_words
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
 from minseg_tui.lab.saving.runs import RESPONSE_KINDS
 from minseg_tui.lab.state import capture as lab_capture
@@ -1105,7 +1106,7 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "omega_ss in the steps",
                 "Task 11",
             )
-            + f"   u_ss = {lab_compare.format_u_ss(st)} ({model_identify.u_ss_words(st.u_ss_how)})",
+            + f"   u_ss = {lab_compare.format_u_ss(st)} ({u_ss_words(st.u_ss_how)})",
             shown(
                 "own.K",
                 f"K = {format_quantity(st.K, 'rad/s/V')}"

@@ -24,6 +24,8 @@ from minseg_tui.model.identify.identification import (
     U_TASK15,
     Identification,
     ResponseResult,
+    ZeroVoltRefusal,
+    ZeroVoltRise,
     identify,
     response_alone,
 )
@@ -46,10 +48,10 @@ from minseg_tui.model.identify.steady import (
     U_SS_HOW,
     Reading,
     Row,
+    UssHow,
     omega_ss_at,
     steady_state,
     u_ss_at,
-    u_ss_words,
 )
 
 __all__ = [
@@ -77,6 +79,8 @@ __all__ = [
     "rise_windows",
     "table_observations",
     "u_ss_at",
-    "u_ss_words",
     "U_SS_HOW",
+    "UssHow",
+    "ZeroVoltRefusal",
+    "ZeroVoltRise",
 ]

@@ -39,10 +39,10 @@ from minseg_tui.model.identify.steady import (
     U_SS_HOW,
     Reading,
     Row,
+    UssHow,
     steady_state,
     table_of,
     u_ss_at,
-    u_ss_words,
 )
 from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
 from minseg_tui.model.runlog import (
@@ -93,7 +93,7 @@ class ResponseResult:
     J: float
     omega_ss: float
     u_ss: float
-    u_ss_how: str
+    u_ss_how: UssHow
     rises: tuple[Rise, ...]
     fit: TimeConstantFit
     model_uses: str = "least_squares"
@@ -181,8 +181,28 @@ class Identification:
         return self.step.omega_with_friction(U_TASK15) if self.step else None
 
 
-_AT_ZERO = "below the driver's drop in the table"
-"""Why an extrapolated u_ss is 0 V: the step's level is below the nearest row's drop."""
+@dataclass(frozen=True)
+class ZeroVoltRise:
+    """A rising edge of the log that ends at 0 V on the motor, so K = omega_ss / u_ss has no
+    value there: its time ``t`` (s), the voltage it requested ``u_req`` (V; None when the log
+    has no u_req column) and how that 0 V was found (``how``; 'extrapolated' when the level
+    is below the nearest table row's driver drop, 'off' when the edge rises to 0 V)."""
+
+    t: float
+    u_req: float | None
+    how: UssHow
+
+
+class ZeroVoltRefusal(Exception):
+    """:func:`identify`'s refusal of a log with a :class:`ZeroVoltRise`, at ``source``
+    (a file name) and ``line`` (the edge's line in it, or None). A record, not words: the
+    layer that shows it says it as an InputError (lab/content/u_ss_says.py)."""
+
+    def __init__(self, source: str, line: int | None, rise: ZeroVoltRise) -> None:
+        super().__init__(source, line, rise)
+        self.source = source
+        self.line = line
+        self.rise = rise
 
 
 def _response_result(
@@ -228,7 +248,8 @@ def _response_result(
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise InputError(log.source, None, "expected a usable rising edge")
     steps = rises(log, fit)
-    u_used, hows = [], []
+    u_used: list[float] = []
+    hows: list[UssHow] = []
     for s in steps:
         if s.u_req is None:
             u_used.append(s.u_high)
@@ -239,16 +260,7 @@ def _response_result(
             hows.append(how)
     for s, u, how_u in zip(steps, u_used, hows, strict=True):
         if u == 0:  # K = omega_ss / u_ss has no value
-            why = _AT_ZERO if how_u == "extrapolated" else u_ss_words(how_u)
-            at = "" if s.u_req is None else f"u_req = {s.u_req:g} V, "
-            raise InputError(
-                log.source,
-                s.line,
-                f"expected each rising edge to put a voltage on the motor; the edge at "
-                f"t = {s.t:.4g} s ends at {at}0 V on the motor ({why}), so K = "
-                "omega_ss / u_ss cannot be computed: record steps that end above the driver's "
-                "drop (steps that only go negative end at 0 V)",
-            )
+            raise ZeroVoltRefusal(log.source, s.line, ZeroVoltRise(s.t, s.u_req, how_u))
     K_each = [s.omega_ss / u for s, u in zip(steps, u_used, strict=True)]
     K = float(np.median(K_each))
     omega_ss = float(np.median([s.omega_ss for s in steps]))
@@ -323,7 +335,8 @@ def _response_result(
 def response_alone(log: RunLog, u_ss_table: Sequence[tuple[float, float]]) -> ResponseResult:
     """Tasks 11-12 from the run log and the table's ``(u_req, u_ss)`` pairs (V) alone: K,
     T and the 63 % reading, which need neither R nor i_ss. J (Task 13) needs R, k_v and f:
-    it is NaN here. Raises InputError as :func:`identify` does for the log."""
+    it is NaN here. Raises InputError and ZeroVoltRefusal as :func:`identify` does for the
+    log."""
     step, _ = _response_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
     return step
 
@@ -474,7 +487,8 @@ def identify(
 
     ``u_ss_table``: the ``(u_req, u_ss)`` pairs (V) of every table row that has a u_ss,
     complete or not, which K divides by (:func:`~.steady.u_ss_at`); default: the readings'.
-    Raises InputError for a bad R, a bad row, or a log without a usable rise.
+    Raises InputError for a bad R, a bad row, or a log without a usable rise, and
+    :class:`ZeroVoltRefusal` for a rise that ends at 0 V on the motor.
     """
     rows, k_v, k_a, f = steady_state(readings, R, source)
     step: ResponseResult | None = None

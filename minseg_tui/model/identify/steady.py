@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Literal, get_args
 
 import numpy as np
 
@@ -107,7 +108,7 @@ def steady_state(
     return rows, k_v, k_a, f
 
 
-def u_ss_at(table: Sequence[tuple[float, float]], u_req: float) -> tuple[float, str]:
+def u_ss_at(table: Sequence[tuple[float, float]], u_req: float) -> tuple[float, UssHow]:
     """The motor driver's mapping from a requested voltage to the one on the motor: u_ss (V)
     for ``u_req`` (V) from the table's ``(u_req, u_ss)`` pairs (V), and how it was found.
 
@@ -141,31 +142,13 @@ def u_ss_at(table: Sequence[tuple[float, float]], u_req: float) -> tuple[float, 
     return sign * max(level - (x0 - y0), 0.0), "extrapolated"
 
 
-U_SS_HOW: dict[str, tuple[str, str]] = {
-    "off": ("the driver is off at 0 V", ""),
-    "extrapolated": (
-        "extrapolated from the table",
-        "no table row at {levels}, the nearest row's driver drop",
-    ),
-    "requested": ("as requested", "the table has no u_ss yet"),
-    "interpolated": ("interpolated between the table's rows", "no row at {levels}"),
-    "row": ("the table's row", ""),
-    "log": ("the log's applied voltage", "it has no u_req column"),
-}
-"""How :func:`u_ss_at` (or a log without u_req) found u_ss, least direct first: the words
-every screen, file and report uses, and the detail a report adds ({levels}: the levels)."""
+UssHow = Literal["off", "extrapolated", "requested", "interpolated", "row", "log"]
+"""How u_ss was found, a code: one of :func:`u_ss_at`'s, or 'log' (a log without u_req,
+whose own u is the voltage on the motor). lab/content/u_ss_says.py says each in words."""
 
-
-def u_ss_words(how: str, levels: Sequence[float] | None = None) -> str:
-    """How u_ss was found (a key of :data:`U_SS_HOW`) in words: "extrapolated from the
-    table"; given the ``levels`` (V) the steps requested (empty when the log has no u_req),
-    its detail too: "extrapolated from the table: no table row at 4.5 V, the nearest row's
-    driver drop"."""
-    short, detail = U_SS_HOW.get(how, (how, ""))
-    if levels is None or not detail:
-        return short
-    at = " and ".join(f"{v:g} V" for v in sorted(set(levels))) or "that level"
-    return f"{short}: {detail.format(levels=at)}"
+U_SS_HOW: tuple[UssHow, ...] = get_args(UssHow)
+"""Every way u_ss is found, least direct first (a median of two found differently is said
+the less direct way)."""
 
 
 def table_of(rows: Sequence[Row]) -> list[tuple[float, float]]:

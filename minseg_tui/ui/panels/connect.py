@@ -25,7 +25,7 @@ class ConnectPanel(Static):
     def _text(self) -> str:
         d = self.device
         if d is None:
-            return f"No device yet. {in_palette('Switch to virtual board')} to practise."
+            return f"No device yet. {in_palette('switch_to_virtual')} to practise."
         check = f"\n{key_name('board_check')}: board check (does the wheel turn when asked, and the count follow?)."
         if d.virtual:
             return (

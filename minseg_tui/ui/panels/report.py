@@ -53,7 +53,7 @@ class ReportPanel(Static):
         folder, names = self.written
         where = f" in {folder}" if folder else ""
         said = (
-            f"{key_name('export')} (or {in_palette('Export report')}) writes report.md, "
+            f"{key_name('export')} (or {in_palette('export')}) writes report.md, "
             "report.html and the runs' CSV."
         )
         return said + (f"\nwritten{where}:\n" + "\n".join(f"  {p}" for p in names) if names else "")

@@ -14,7 +14,7 @@ from textual.screen import ModalScreen
 from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
-from minseg_tui.lab.content.keys import key_name
+from minseg_tui.lab.content.keys import PALETTE, key_name
 from minseg_tui.ui.screens.dialog import (
     answer_bindings,
     close_dialog,
@@ -45,7 +45,7 @@ class WheelQuestionScreen(ModalScreen[str]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="ask", classes="dialog"):
-            yield Prose("Board check: no counts", classes="title")
+            yield Prose(f"{PALETTE['board_check']}: no counts", classes="title")
             yield Prose(
                 "The board drove the motor for half a second and the encoder counted "
                 "nothing. Did the wheel turn?",
@@ -81,7 +81,7 @@ class BoardCheckScreen(ModalScreen[None]):
         self,
         ok: bool,
         text: str,
-        what: str = "Board check",
+        what: str = PALETTE["board_check"],
         again: str = f"{key_name('board_check')} checks again",
     ) -> None:
         super().__init__()

@@ -11,6 +11,7 @@ from textual.containers import Vertical
 from textual.screen import ModalScreen
 from textual.widgets import Input
 
+from minseg_tui.lab.content.keys import PALETTE
 from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.textbox import TextBox
@@ -31,7 +32,7 @@ class NamesScreen(ModalScreen[None]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="ask", classes="dialog"):
-            yield Prose("Correct the group's names", classes="title")
+            yield Prose(PALETTE["correct_names"], classes="title")
             yield Prose(
                 "Mend the names, commas between them, and press Enter (Esc: no change). The "
                 "report, the resume list and the class view then show them; the session keeps "

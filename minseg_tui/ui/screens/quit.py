@@ -13,6 +13,7 @@ from textual.screen import ModalScreen
 from textual.widgets import Input, OptionList
 from textual.widgets.option_list import Option
 
+from minseg_tui.lab.content.keys import PALETTE
 from minseg_tui.lab.state.task10 import ActiveRun
 from minseg_tui.ui.screens.dialog import (
     answer_bindings,
@@ -25,7 +26,7 @@ from minseg_tui.ui.widgets.textbox import TextBox
 
 QUIT_CHOICES: tuple[tuple[str, str], ...] = (
     ("keep", "Keep working (it keeps trying to save)"),
-    ("move", "Save the session to another folder…"),
+    ("move", f"{PALETTE['save_elsewhere']}…"),
     ("quit", "Quit anyway: what is not saved is lost"),
 )
 """What the group can do when quitting with something not on disk: (answer, words)."""
@@ -117,7 +118,7 @@ class SaveElsewhereScreen(ModalScreen[None]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="ask", classes="dialog"):
-            yield Prose("Save the session to another folder", classes="title")
+            yield Prose(PALETTE["save_elsewhere"], classes="title")
             yield Prose(
                 "Type a folder that can be written (a home folder, another stick) and press "
                 "Enter; the session is saved in a new folder inside it and goes on there.",

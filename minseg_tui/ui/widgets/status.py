@@ -53,7 +53,5 @@ class DeviceStatus(Static):
         width = self.size.width or 78
         line = status_text(self.device, self.link, self.motor, width)
         if self.saving:
-            return Content(
-                f"{line}\n! {self.saving} ({in_palette('Save the session to another folder')})"
-            )
+            return Content(f"{line}\n! {self.saving} ({in_palette('save_elsewhere')})")
         return Content(line)
