@@ -35,7 +35,7 @@ from textual.actions import SkipAction
 from textual.app import App, SystemCommand
 from textual.binding import Binding
 from textual.command import CommandPalette
-from textual.notifications import SeverityLevel
+from textual.notifications import Notification, Notify, SeverityLevel
 from textual.reactive import reactive
 from textual.screen import Screen
 from textual.signal import Signal
@@ -65,6 +65,7 @@ from minseg_tui.ui.messages import (
     MeterRead,
     MotorKnown,
     NoCounts,
+    NoticesCrowd,
     RevolutionCounted,
     RunRequested,
     SamplesArrived,
@@ -170,6 +171,13 @@ ENDED_WORDS: dict[str, str] = {
 last line, where a link event's words (:data:`EVENT_TEXT`) do not say it."""
 
 
+def _kind(notice: Notification) -> str:
+    """What a notice is about, as one that replaces it is (:meth:`LabApp.notify`): its title
+    (the report, the board check, an answer replaced); an untitled notice, its words (the
+    same notice again)."""
+    return notice.title or notice.message
+
+
 def motor_words(u_req: float | None, plan_high: float | None = None) -> str:
     """The motor in words for the status line: off, 2.5 V, steps 0/4.5 V."""
     if u_req is None:
@@ -261,6 +269,9 @@ class LabApp(App[None]):
         self._newest: SampleBatch | None = None
         """The newest sample the stream has read (set and read under :attr:`_lock`)."""
         self._watch = NoCountWatch()
+        self._notices: list[Notification] = []
+        """The notices shown (Textual drops one from the screen once its time is up), oldest
+        first: one of a kind, the newest (:func:`_kind`)."""
         self._step_id = ""
         self._watching_speed = False
         """The shown step is done once the live speed is watched with the wheel turning."""
@@ -299,9 +310,48 @@ class LabApp(App[None]):
         lab = stack[-1] if stack and isinstance(stack[-1], LabScreen) else None
         if lab is not None:
             lab.place_notices()  # away from the entry typed in
-        super().notify(message, title=title, severity=severity, timeout=timeout, markup=False)
+        notice = Notification(
+            message,
+            title,
+            severity,
+            self.NOTIFICATION_TIMEOUT if timeout is None else timeout,
+            markup=False,
+        )
+        shown = [n for n in self._notices if not n.has_expired]
+        same = [n for n in shown if _kind(n) == _kind(notice)]
+        self._notices = [n for n in shown if n not in same] + [notice]
+        if same:  # the newest word on it replaces the older (a second F8's, say)
+            self._show_notices()
+        else:
+            self.post_message(Notify(notice))  # as Textual's notify posts it
         if lab is not None:  # and from where it is once the keys before it have moved it
             lab.call_after_refresh(lab.place_notices)
+
+    def _show_notices(self) -> None:
+        """Show :attr:`_notices` in place of the notices on screen, each for the time it had
+        left. Textual withdraws one notice only when its time is up or it is clicked; this
+        clears them all and shows again the ones kept (its public calls)."""
+        for screen in self.screen_stack:  # each screen shows the app's notices in its rack
+            for rack in screen.query_children("ToastRack"):
+                # the toasts with their holders: Textual's rack takes a toast out of a clear,
+                # not its holder, and each holder left took a row over the next notices
+                rack.remove_children()
+        self.clear_notifications()
+        kept = [n for n in self._notices if not n.has_expired]
+        self._notices = [
+            Notification(n.message, n.title, n.severity, n.time_left, markup=False) for n in kept
+        ]
+        for notice in self._notices:
+            self.post_message(Notify(notice))
+
+    @on(NoticesCrowd)
+    def _notices_crowd(self, _: NoticesCrowd) -> None:
+        """The lab screen's notices cover the entry typed in or the one judged last: the
+        oldest goes, the newest always stays."""
+        shown = [n for n in self._notices if not n.has_expired]
+        if len(shown) > 1:
+            self._notices = shown[1:]
+            self._show_notices()
 
     # -- start-up ---------------------------------------------------------------------
     def on_mount(self) -> None:
@@ -461,10 +511,11 @@ class LabApp(App[None]):
                 severity="warning",
                 timeout=20,
             )
+        notes = list(session.recovery_notes)  # one notice: a second would replace the first
         if session.recovered:
-            self.notify("kept after a crash: " + ", ".join(session.recovered), title="session")
-        for note in session.recovery_notes:
-            self.notify(note, title="session", timeout=10)
+            notes.insert(0, "kept after a crash: " + ", ".join(session.recovered))
+        if notes:
+            self.notify("\n".join(notes), title="session", timeout=10)
         self._saved_or_not()
 
     # -- the stream ---------------------------------------------------------------------
@@ -1247,21 +1298,24 @@ class LabApp(App[None]):
         self, paths: tuple[str, ...], written: tuple[str, tuple[str, ...]], unanswered: str = ""
     ) -> None:
         """The report was written to ``paths`` (``written``: where, in words): say where, and
-        what is still ``unanswered`` (one line, a warning of its own: the report is written
-        all the same)."""
+        what is still ``unanswered`` (a line of its own, the notice a warning: the report is
+        written all the same). One notice: two stacked covered eleven rows at 80x24 (walk 12's
+        D5), and the next F8's replaces it."""
         self.exported = paths
         self.written = written
         folder, names = written
-        self.notify(
+        said = (
             "written: "
             + ", ".join(names[:2])
             + (f" and {len(names) - 2} run CSV" if len(names) > 2 else "")
-            + (f", in {folder}" if folder else ""),
+            + (f", in {folder}" if folder else "")
+        )
+        self.notify(
+            said + (f"\n{unanswered}" if unanswered else ""),
             title="report",
+            severity="warning" if unanswered else "information",
             timeout=NOTICE_S,
         )
-        if unanswered:
-            self.notify(unanswered, title="report", severity="warning", timeout=NOTICE_S)
         self.lab_changed.publish(None)
 
     def import_log(self) -> None:

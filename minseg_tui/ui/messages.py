@@ -5,8 +5,8 @@ From the app's workers to the app: :class:`DeviceOpened`, :class:`SamplesArrived
 :class:`BoardChecked`, :class:`RevolutionCounted`, :class:`NoCounts`. From the panels and the
 screen up: the requests (:class:`RunRequested` for the app, which drives the device;
 :class:`VoltageRequested`, :class:`CaptureRequested`, :class:`LogImportRequested` for the lab
-screen, which holds the session's entries, and has the app put a voltage on the motor) and
-:class:`StepShown`.
+screen, which holds the session's entries, and has the app put a voltage on the motor),
+:class:`StepShown` and :class:`NoticesCrowd`.
 """
 
 from __future__ import annotations
@@ -142,6 +142,12 @@ class StepShown(Message):
     """The lab screen now shows ``step``."""
 
     step: Step
+
+
+@dataclass
+class NoticesCrowd(Message):
+    """The lab screen's notices cover the entry typed in or the one judged last, on the side
+    with more room: the oldest of them goes (the app holds the notices)."""
 
 
 @dataclass

@@ -24,6 +24,7 @@ from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
 from textual.reactive import reactive
+from textual.screen import Screen
 from textual.signal import Signal
 from textual.widget import Widget
 from textual.widgets import OptionList, Static
@@ -43,6 +44,7 @@ from minseg_tui.ui.live import LiveBuffer, at_level
 from minseg_tui.ui.messages import (
     CaptureRequested,
     LogImportRequested,
+    NoticesCrowd,
     RevealRequested,
     StepShown,
     VoltageRequested,
@@ -655,6 +657,9 @@ class LabScreen(StatusScreen):
         self._judged: FieldRow | None = None
         """The entry the lab judged last (its verdict under its box), while it is on the
         step shown: notices are kept off it (:meth:`place_notices`)."""
+        self._crowded: int | None = None
+        """How many notices were on screen when the oldest was asked to go (None: none asked
+        for): asked once per count, not again at each layout before it has gone."""
         self._undone: dict[str, list[str]] = {}
         """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
         forward again (until another answer is stored in the field)."""
@@ -676,6 +681,7 @@ class LabScreen(StatusScreen):
 
     async def on_mount(self) -> None:
         self._lab_changed.subscribe(self, self._on_lab_changed)
+        self.screen_layout_refresh_signal.subscribe(self, self._laid_out)
         with self.session as s:
             current = s.current_step
         start = current if current in STEP_IDS else STEP_IDS[0]
@@ -725,7 +731,11 @@ class LabScreen(StatusScreen):
         entry the lab judged last, its verdict under it: at the bottom, where Textual puts
         them, or at the top. F8's list of files sat over the summary's last field, being
         typed in (issue 20, walk 5); on Task 5 a notice sat over the reading just judged,
-        above the entry the keys had moved on to (walk 12's D5)."""
+        above the entry the keys had moved on to (walk 12's D5). When the notices on that
+        side still cover either entry, the app is asked to take the oldest away
+        (:class:`NoticesCrowd`; the newest always stays): two F8 in a row stacked notices over
+        eleven rows (walk 12). Called again whenever the screen is laid out while notices
+        show, where their heights are known."""
         focused = self.focused
         pane = self.pane if self.query(StepPane) else None
         keyed = pane.current if pane is not None and pane.keys_box is not None else None
@@ -737,7 +747,29 @@ class LabScreen(StatusScreen):
             above = min(r.y for r in kept)  # rows over them, the status line's included
             below = self.size.height - max(r.bottom for r in kept)
             low = above > below
-        self.set_class(low, "-notices-top")
+        if low != self.has_class("-notices-top"):
+            self.set_class(low, "-notices-top")
+            return  # the notices move: looked at again once laid out there
+        toasts = [t.region for t in self._toasts()]
+        if len(toasts) == self._crowded:
+            return  # the oldest is on its way out
+        self._crowded = None
+        if len(toasts) > 1 and any(t.overlaps(r) for t in toasts for r in kept):
+            # too many at once for the room on that side: the oldest goes (the app holds them)
+            self._crowded = len(toasts)
+            self.post_message(NoticesCrowd())
+
+    def _laid_out(self, _: Screen[object]) -> None:
+        """The screen was laid out: notices that came or went, or rows that moved, are placed
+        anew (:meth:`place_notices`) once their regions are known."""
+        if self.is_current and self._toasts():
+            self.place_notices()
+
+    def _toasts(self) -> list[Widget]:
+        """The notices on the screen, oldest first (Textual's toasts, in its rack of them, a
+        child of the screen: not a walk of the whole screen at each layout)."""
+        racks = self.query_children("ToastRack")
+        return list(racks.first().query("Toast")) if racks and racks.first().display else []
 
     def offers(self, action: str) -> bool:
         """Whether panel key ``action`` (:data:`PANEL_KEYS`) acts on the step shown: its panel

@@ -1205,9 +1205,11 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
 
     def on_key(self, event: events.Key) -> None:
         """A character typed into the form (see the keys' note above), or a key a focused
-        widget of the step passes up (:meth:`_passed_on`)."""
-        if self.app.screen is not self.screen:
-            return
+        widget of the step passes up (:meth:`_passed_on`). Also with another screen over the
+        lab: the app read the key while the lab had the keys (one read later goes to that
+        screen), so it was typed for the row; dropped, the Enter after it stored the row
+        empty once the screen had gone (walk 11's D2: a board check's result, say, coming
+        while the reading waited in the form's queue)."""
         focused = self.screen.focused
         if focused is not self:
             self._passed_on(event, focused)
