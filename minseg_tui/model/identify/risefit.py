@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from minseg_tui.model.identify.counts import count_quantum
 from minseg_tui.model.identify.lsq import dot
 from minseg_tui.model.identify.rises import RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
@@ -306,16 +307,6 @@ def _robust_sd(x: FloatArray) -> float:
     return 1.4826 * float(np.median(np.abs(x - np.median(x))))
 
 
-def _count_quantum(theta: FloatArray, cpr: int) -> float | None:
-    """The encoder's count (rad, 2 pi / ``cpr``) when the angle ``theta`` (rad) is whole counts
-    of it (from the count column, or an Euler speed of counts over a fixed period), else None:
-    the rounding's share of T's interval is then known from the fitted angle
-    (:func:`.lsq.rounding_errors`)."""
-    q = 2.0 * math.pi / cpr
-    x = (theta - theta[0]) / q
-    return q if bool(np.all(np.abs(x - np.round(x)) <= 1e-6)) else None
-
-
 def _fit(
     log: RunLog,
     windows: list[RiseWindow],
@@ -341,7 +332,7 @@ def _fit(
     onset = _onset(log, windows)
     rise_63 = _onset(log, windows, 1.0 - math.exp(-1.0))
     delays: tuple[float, ...] = ()
-    quantum = _count_quantum(theta, log.cpr)
+    quantum = count_quantum(theta, log.cpr)
     windows_fit = partial(fit_windows, quantum=quantum)
 
     def late_start(T: float) -> bool:
