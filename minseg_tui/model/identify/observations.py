@@ -548,13 +548,16 @@ class LateStart(Enum):
 
 @dataclass(frozen=True)
 class ShiftFree:
-    """The fit with the shift free up to the wheel's first move (``onset``, s after the steps):
-    its shift (s), T (s) and T's 95 % interval (s)."""
+    """The fit with the shift free up to the wheel's first move (``onset``, s after the steps,
+    read off a 3-row running median of the speed): its shift (s), T (s) and T's 95 % interval
+    (s). ``first_move``: where a row's own speed first leaves its level (s after the steps),
+    when that is earlier than ``onset`` (a first count the running median drops), else None."""
 
     onset: float
     shift: float
     T: float
     ci: tuple[float, float]
+    first_move: float | None = None
 
 
 @dataclass(frozen=True)
@@ -562,8 +565,11 @@ class ShiftLate(Observation):
     """The steps' time shift ended on its upper bound (``shift``, s): the wheel answers later
     than the sampling explains, and ``why`` it is no dead time. ``moved_early``: the share of
     the rise done when a dead time would end; ``onset``: where the wheel first moves (s after
-    the steps); ``count``: one count per sample (rad/s) and ``rise`` the rise (rad/s), for
-    COARSE; ``free``: the fit with the shift free, when made."""
+    the steps, read off a 3-row running median of the speed); ``count``: one count per sample
+    (rad/s) and ``rise`` the rise (rad/s), for COARSE; ``free``: the fit with the shift free,
+    when made; ``first_move``: where a row's own speed first leaves its level (s after the
+    steps), when that is earlier than ``onset`` (a first count the running median drops),
+    else None."""
 
     code: ClassVar[str] = "shift_on_bound"
     shift: float
@@ -573,6 +579,7 @@ class ShiftLate(Observation):
     count: float | None
     rise: float
     free: ShiftFree | None
+    first_move: float | None = None
 
 
 @dataclass(frozen=True)
@@ -724,15 +731,20 @@ def fit_observations(
             if count is not None and count > COARSE_COUNT * rise
             else LateStart.SLOW_START
         )
+        first = (
+            fit.first_move
+            if fit.first_move is not None and fit.onset is not None and fit.first_move < fit.onset
+            else None
+        )
         free = (
-            ShiftFree(fit.onset, fit.free_shift, fit.free_T, fit.free_ci)
+            ShiftFree(fit.onset, fit.free_shift, fit.free_T, fit.free_ci, first)
             if fit.free_T is not None
             and fit.free_ci is not None
             and fit.free_shift is not None
             and fit.onset is not None
             else None
         )
-        out.append(ShiftLate(fit.shift, why, fit.moved_early, fit.onset, count, rise, free))
+        out.append(ShiftLate(fit.shift, why, fit.moved_early, fit.onset, count, rise, free, first))
     elif fit.shift_on_bound and fit.moved_before_rise:
         out.append(ShiftEarly(fit.shift))
     elif fit.shift_on_bound:

@@ -144,7 +144,9 @@ class TimeConstantFit:
     whether T ended on it; left_out: rows (0-based) left out of the fit (logging stalls);
     moved_early: when a dead time fitted better but the wheel already moved before it would
     end, the share of the rise done by then (None otherwise); onset: the time (s) from the
-    rises to where the wheel first answers (the median; None if unseen);
+    rises to where the wheel first answers (the median; None if unseen), read off a 3-row
+    running median of the speed; first_move: the same read off each row's own speed (a first
+    count that the running median drops comes earlier);
     moved_before_rise: the wheel was already moving at the rows of the rises;
     dead_time_sought: whether the wheel started late enough for a dead time to be fitted;
     rise_T, rise_ci: T (s) and its 95 % interval (s) fitted to the rows up to
@@ -180,6 +182,7 @@ class TimeConstantFit:
     left_out: tuple[int, ...] = ()
     moved_early: float | None = None
     onset: float | None = None
+    first_move: float | None = None
     moved_before_rise: bool = False
     dead_time_sought: bool = False
     rise_T: float | None = None
@@ -330,6 +333,7 @@ def _fit(
     T_range = (T_MIN_SAMPLES * ts, T_MAX_RISES * max(longest, ts))
     d_max = DEAD_TIME_SHARE * shortest
     onset = _onset(log, windows)
+    first_move = _onset(log, windows, smoothed=False)
     rise_63 = _onset(log, windows, 1.0 - math.exp(-1.0))
     delays: tuple[float, ...] = ()
     quantum = count_quantum(theta, log.cpr)
@@ -515,6 +519,7 @@ def _fit(
         T_range=T_range,
         moved_early=max(moved) if moved else None,
         onset=onset,
+        first_move=first_move,
         dead_time_sought=bool(sought) or (prior is not None and prior.dead_time_sought),
         moved_before_rise=_moved_before(log, windows, 0.0, at_edge=True) > STILL_SHARE,
     )
@@ -716,13 +721,15 @@ def _levels(w: FloatArray, win: RiseWindow) -> tuple[float, float]:
     return float(np.median(w[win.pre_from : k + 1])), float(np.median(w[tail : win.post_last + 1]))
 
 
-def _onset(log: RunLog, windows: list[RiseWindow], share_of: float = STILL_SHARE) -> float | None:
+def _onset(
+    log: RunLog, windows: list[RiseWindow], share_of: float = STILL_SHARE, smoothed: bool = True
+) -> float | None:
     """Where the wheel first answers the rises: the median over the steps of the time
-    (s) from the step to the first row whose speed (a 3-row running median) has come
-    ``share_of`` of the way to its new level (default :data:`STILL_SHARE`); None when no
-    step shows it."""
+    (s) from the step to the first row whose speed (a 3-row running median; each row's own
+    speed when not ``smoothed``) has come ``share_of`` of the way to its new level (default
+    :data:`STILL_SHARE`); None when no step shows it."""
     w = np.asarray(log.omega, dtype=float)
-    smooth = _smooth(w)
+    smooth = _smooth(w) if smoothed else w
     t = log.board_time()
     found = []
     for win in windows:
