@@ -75,6 +75,12 @@ def test_the_grid_is_read_off_values_written_to_six_digits():
     # the same values a third of a count off on one row sit on no grid
     theta[200] += q / 3.0
     assert count_quantum(theta, 358) is None
+    # a long log: past 100 rad the 6 digits leave 4 decimals, a gap between two such values is
+    # uncertain by 6 % of a count, and the step is counted from the surer small values
+    counts = np.cumsum(rng.integers(0, 12, 20000))
+    long = np.array([float(f"{v:.6g}") for v in counts * q])
+    assert long[-1] > 1000.0
+    assert count_quantum(long, 358) == pytest.approx(q, rel=1e-6)
 
 
 def test_no_grid_where_the_values_sit_on_none_or_too_few_to_tell():

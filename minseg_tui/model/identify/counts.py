@@ -31,6 +31,10 @@ TELLS: float = 0.1
 """A value tells whether it sits on a grid of step q only when its allowance is at most this
 share of q (a value written to too few digits fits any fine grid)."""
 
+SURE_GAP: float = 0.01
+"""The gap between two values the step is counted from is taken, where the log has one, among
+those whose values' allowances make it uncertain by at most this share."""
+
 SUBSTEPS: int = 6
 """The smallest step between the values is tried as 1 to this many counts."""
 
@@ -126,7 +130,10 @@ def _grid_of(dx: FloatArray, allow: FloatArray) -> float | None:
     apart = gaps > 4.0 * np.maximum(a[1:], a[:-1])
     if not np.any(apart):
         return None
-    k = int(np.argmin(np.where(apart, gaps, np.inf)))
+    # a gap known to 1 % or better, where there is one (a large value written to 6 digits
+    # leaves a gap between two of them 3 % uncertain, too loose to count values from)
+    sure = apart & (2.0 * (a[1:] + a[:-1]) <= SURE_GAP * gaps)
+    k = int(np.argmin(np.where(sure if np.any(sure) else apart, gaps, np.inf)))
     smallest, unsure = float(gaps[k]), 2.0 * float(a[k] + a[k + 1])
     far = float(np.max(np.abs(dx)))
     for m in range(1, SUBSTEPS + 1):
@@ -140,10 +147,10 @@ def _grid_of(dx: FloatArray, allow: FloatArray) -> float | None:
             if den <= 0:
                 break
             q = float(np.sum(w * n * dx[use])) / den
-            sure = 2.0 * float(np.max(allow[use])) / max(float(np.max(np.abs(dx[use]))), q)
-            if reach >= far or sure >= rel:  # all counted, or reaching no further
+            now = 2.0 * float(np.max(allow[use])) / max(float(np.max(np.abs(dx[use]))), q)
+            if reach >= far or now >= rel:  # all counted, or reaching no further
                 break
-            rel = sure
+            rel = now
         if q > 0 and _on_grid(dx, allow, q):
             return q
     return None
