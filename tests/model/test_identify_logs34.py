@@ -64,3 +64,39 @@ def test_where_the_first_move_and_the_smoothed_onset_agree_the_words_stay():
         "period (+5.00 ms): the wheel answers later than the sampling's lateness explains."
     )
     assert "up to where the wheel is first seen to move (30.00 ms after the steps)" in said[0]
+
+
+@pytest.mark.shared_data
+def test_the_rows_after_the_falling_edge_are_said_to_make_t_s_rows_apart():
+    # n20-12v-pwm25 (plotted): after the power is cut at 16.454 s the speed runs down 5, 4, 3,
+    # 2, 1 counts a sample in near-equal stairs and stands from 16.726 s, 0.27 s: slower than
+    # the rise's time constant gives (coasting, or dry friction). The rows up to 4 T after each
+    # edge give 156.2 ms, every row 89.29 ms, and the rows after the rising edge alone 91.75
+    # ms: the falling edge's rows make the difference. identify said "the later rows, long
+    # after the rise, pull T shorter: the rise and the speed after it do not follow one time
+    # constant", which puts it on the rise and the speed after it
+    log = read_run_log(REAL / "n20-12v-pwm25" / "step.csv")
+    r = identify(table(7.9), 5.0, log)
+    s = r.step
+    assert s is not None and s.fit.rise_T is not None and s.fit.rise_up_T is not None
+    assert s.fit.rise_T == pytest.approx(0.1562, abs=5e-5)
+    assert s.fit.rise_up_T == pytest.approx(0.09175, abs=5e-5)
+    # the run-down, against an exponential of the rise's own T from the steady speed
+    t, w, u = np.asarray(log.t), np.asarray(log.omega), np.asarray(log.u)
+    off = int(np.flatnonzero(np.diff(u) < 0)[0]) + 1
+    since = t - t[off]
+    stop = off + int(np.flatnonzero(w[off:] == 0)[0])
+    assert since[stop] == pytest.approx(0.272, abs=0.001)
+    mid = (since > 0.08) & (since < 0.14)
+    exp_model = 9.29 * np.exp(-since[mid] / s.fit.rise_up_T)
+    assert float(np.mean(w[mid])) > 1.4 * float(np.mean(exp_model))
+    said = [sentence(o) for o in r.observations if o.code == "T_rows_apart"]
+    assert len(said) == 1
+    assert "the later rows, long after the rise, pull T shorter" not in said[0]
+    assert (
+        "the rows up to 4 T after each edge, rising and falling, alone give 156.2 ms (95 % "
+        "137.3 – 175.2 ms), all the rows the fit uses 89.29 ms and the rows after the rising "
+        "edges alone 91.75 ms: the rows after the falling edges make the difference. There the "
+        "wheel slows down more slowly than one time constant of its rise gives" in said[0]
+    )
+    assert said[0] in " ".join(render(r).split())

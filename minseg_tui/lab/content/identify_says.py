@@ -491,6 +491,17 @@ def _(o: TRowsApart) -> str:
             f"(Task 14) uses {format_constant(o.T, 's')}, the T of every row. "
             "The 95 % interval of T spans both fits. Read T with care."
         )
+    if o.up_T is not None and o.rise_T > o.up_T and abs(o.up_T - o.T) < abs(o.rise_T - o.up_T):
+        return (
+            f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
+            f"edge, rising and falling, alone give {format_constant(o.rise_T, 's')} (95 % "
+            f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}), all the rows the "
+            f"fit uses {format_constant(o.T, 's')} and the rows after the rising edges alone "
+            f"{format_constant(o.up_T, 's')}: the rows after the falling edges make the "
+            "difference. There the wheel slows down more slowly than one time constant of its "
+            "rise gives (it coasts at zero command, or dry friction slows it), a shape the "
+            "first-order model misses. The 95 % interval of T spans both fits. Read T with care."
+        )
     return (
         f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
         f"edge alone give {format_constant(o.rise_T, 's')} (95 % "

@@ -613,7 +613,9 @@ class TRowsApart(Observation):
     speed after its rows (rad/s: the mean of the first and of the last tenth of the rows
     from ``span`` rise_T after the wheel answers to the next edge) when it moves on by more
     than :data:`CREEP_SHARE` of the rise, else None; ``miss``: how far the model of every
-    row falls behind the wheel on that rise's rows (rad/s, the largest 5-row mean), with it."""
+    row falls behind the wheel on that rise's rows (rad/s, the largest 5-row mean), with it.
+    ``up_T``: T (s) of the rows up to ``span`` T after the rising edges alone, when the fit
+    of every row also uses falling edges (None otherwise)."""
 
     code: ClassVar[str] = "T_rows_apart"
     span: float
@@ -622,6 +624,7 @@ class TRowsApart(Observation):
     T: float
     creep: tuple[float, float] | None = None
     miss: float | None = None
+    up_T: float | None = None
 
 
 CREEP_SHARE: float = 0.03
@@ -766,6 +769,7 @@ def fit_observations(
                 fit.T,
                 None if creep is None else creep[0],
                 None if creep is None else creep[1],
+                fit.rise_up_T,
             )
         )
     if fit.T_on_bound:

@@ -152,6 +152,8 @@ class TimeConstantFit:
     rise_T, rise_ci: T (s) and its 95 % interval (s) fitted to the rows up to
     :data:`RISE_SPAN` time constants after each edge alone, when that differs from ``T`` by
     more than :data:`ROWS_APART` standard errors (None otherwise): ``ci`` then spans both;
+    rise_up_T: with rise_T, T (s) of the rows up to :data:`RISE_SPAN` time constants after
+    the rising edges alone, where the fit of every row also uses falling ones (None otherwise);
     angle_mended: the angle, rebuilt from the speed column, was carried wrong across a stall's
     gap and the fit took the step off every later row (:func:`_stall_offsets`).
     """
@@ -187,6 +189,7 @@ class TimeConstantFit:
     dead_time_sought: bool = False
     rise_T: float | None = None
     rise_ci: tuple[float, float] | None = None
+    rise_up_T: float | None = None
     angle_mended: bool = False
     dead_time_from_rise: bool = False
     free_T: float | None = None
@@ -542,6 +545,21 @@ def _fit(
                     if alone is not None and not alone.T_on_bound:
                         c = alone.covariance
                         rise = (alone.T, math.sqrt(max(float(c.cov[1, 1]), 0.0)), c.half_width(1))
+            apart = _rows_apart(fit, rise)
+            up_T = None  # the rows after the rising edges alone, when falling ones are fitted
+            ups = np.array([e.start for e in find_edges(cmd) if e.rising], dtype=np.int64)
+            if apart.rise_T is not None and 0 < ups.size < clusters.size - 1:
+                mask = _rise_rows(t, ups, whole.T, whole.d, keep)
+                if mask is not None:
+                    up = whole_fit(
+                        whole_reach,
+                        whole.T,
+                        mask.astype(float),
+                        shift_starts=(whole.d,),
+                        T_factors=(0.5, 0.7, *near),
+                    )
+                    if up is not None and not up.T_on_bound:
+                        up_T = up.T
             free_w: tuple[float, float, float, float] | None = None
             if late_end(whole.d, whole.d_on_bound, whole.T_on_bound):
                 held_w = whole_fit(
@@ -551,7 +569,8 @@ def _fit(
                     c = held_w.covariance
                     free_w = (held_w.T, held_w.d, c.half_width(1), 0.0)
             return replace(
-                _shift_free(_rows_apart(fit, rise), free_w),
+                _shift_free(apart, free_w),
+                rise_up_T=up_T,
                 dead_time=whole.d if whole.d > bound else 0.0,
                 shift_on_bound=whole.d_on_bound and not late_rise,
                 dead_time_from_rise=late_rise,
