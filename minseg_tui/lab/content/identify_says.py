@@ -352,6 +352,12 @@ def _(o: DeadTime) -> str:
     )
 
 
+def _moved_within(o: ShiftLate) -> bool:
+    """Whether the wheel is seen to move within the shift's bound (one sample period), by a
+    row's own speed the 3-row running median of the onset drops."""
+    return o.first_move is not None and o.first_move <= o.shift * (1.0 + 1e-9)
+
+
 def _late(o: ShiftLate) -> str:
     if o.why is LateStart.MOVED_EARLY and o.moved_early is not None:
         return (
@@ -362,9 +368,23 @@ def _late(o: ShiftLate) -> str:
         )
     if o.why is LateStart.NO_BETTER:
         return "A dead time does not fit the log clearly better."
+    if _moved_within(o):  # said before: the wheel moves within the sampling's lateness
+        if o.why is LateStart.COARSE and o.count is not None:
+            return (
+                f"One count per sample is {format_number(o.count, 3)} rad/s, "
+                f"{format_percent(o.count / o.rise)} of the rise, too coarse to show how the rise "
+                "starts: a slow start (a second pole or a filtered speed) and the counts' steps "
+                "look alike here. Read T with care."
+            )
+        return (
+            "The rise starts more slowly than one time constant gives (an S-shaped start: a "
+            "second pole or a filtered speed), a shape the first-order model misses. Read T "
+            "with care."
+        )
+    first = o.first_move if o.first_move is not None else o.onset
     moves = (
         "The wheel first moves "
-        + (f"{format_constant(o.onset, 's')} " if o.onset is not None else "")
+        + (f"{format_constant(first, 's')} " if first is not None else "")
         + "after the steps, no later than the rise itself and the sampling explain, "
     )
     if o.why is LateStart.COARSE and o.count is not None:
@@ -384,12 +404,24 @@ def _late(o: ShiftLate) -> str:
 @sentence.register
 def _(o: ShiftLate) -> str:
     free = o.free
+    answers = (
+        "the first-order response fits best starting later than that, although the wheel is "
+        f"first seen to move {format_constant(o.first_move, 's')} after the steps, within the "
+        "sampling's lateness: there is no dead time to fit."
+        if o.first_move is not None and _moved_within(o)
+        else "the wheel answers later than the sampling's lateness explains."
+    )
+    where = (
+        "where the speed, a running median over 3 rows, first leaves its level"
+        if free is not None and free.first_move is not None
+        else "where the wheel is first seen to move"
+    )
     return (
         f"The time shift of the steps against the samples ended on its bound of one sample "
-        f"period ({format_signed(o.shift * 1e3, 3)} ms): the wheel answers later than the sampling's "
-        f"lateness explains. {_late(o)} T is the fit with the shift held there."
+        f"period ({format_signed(o.shift * 1e3, 3)} ms): {answers} {_late(o)} T is the fit with "
+        "the shift held there."
         + (
-            f" With the shift free up to where the wheel is first seen to move "
+            f" With the shift free up to {where} "
             f"({format_constant(free.onset, 's')} after the steps), the fit starts the response "
             f"{format_signed(free.shift * 1e3, 3)} ms from the steps with T = "
             f"{format_constant(free.T, 's')} (95 % "
@@ -458,6 +490,17 @@ def _(o: TRowsApart) -> str:
             f"{format_constant(o.rise_T, 's')} is the T the rise itself follows; the model "
             f"(Task 14) uses {format_constant(o.T, 's')}, the T of every row. "
             "The 95 % interval of T spans both fits. Read T with care."
+        )
+    if o.up_T is not None and o.rise_T > o.up_T and abs(o.up_T - o.T) < abs(o.rise_T - o.up_T):
+        return (
+            f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
+            f"edge, rising and falling, alone give {format_constant(o.rise_T, 's')} (95 % "
+            f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}), all the rows the "
+            f"fit uses {format_constant(o.T, 's')} and the rows after the rising edges alone "
+            f"{format_constant(o.up_T, 's')}: the rows after the falling edges make the "
+            "difference. There the wheel slows down more slowly than one time constant of its "
+            "rise gives (it coasts at zero command, or dry friction slows it), a shape the "
+            "first-order model misses. The 95 % interval of T spans both fits. Read T with care."
         )
     return (
         f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "

@@ -548,13 +548,16 @@ class LateStart(Enum):
 
 @dataclass(frozen=True)
 class ShiftFree:
-    """The fit with the shift free up to the wheel's first move (``onset``, s after the steps):
-    its shift (s), T (s) and T's 95 % interval (s)."""
+    """The fit with the shift free up to the wheel's first move (``onset``, s after the steps,
+    read off a 3-row running median of the speed): its shift (s), T (s) and T's 95 % interval
+    (s). ``first_move``: where a row's own speed first leaves its level (s after the steps),
+    when that is earlier than ``onset`` (a first count the running median drops), else None."""
 
     onset: float
     shift: float
     T: float
     ci: tuple[float, float]
+    first_move: float | None = None
 
 
 @dataclass(frozen=True)
@@ -562,8 +565,11 @@ class ShiftLate(Observation):
     """The steps' time shift ended on its upper bound (``shift``, s): the wheel answers later
     than the sampling explains, and ``why`` it is no dead time. ``moved_early``: the share of
     the rise done when a dead time would end; ``onset``: where the wheel first moves (s after
-    the steps); ``count``: one count per sample (rad/s) and ``rise`` the rise (rad/s), for
-    COARSE; ``free``: the fit with the shift free, when made."""
+    the steps, read off a 3-row running median of the speed); ``count``: one count per sample
+    (rad/s) and ``rise`` the rise (rad/s), for COARSE; ``free``: the fit with the shift free,
+    when made; ``first_move``: where a row's own speed first leaves its level (s after the
+    steps), when that is earlier than ``onset`` (a first count the running median drops),
+    else None."""
 
     code: ClassVar[str] = "shift_on_bound"
     shift: float
@@ -573,6 +579,7 @@ class ShiftLate(Observation):
     count: float | None
     rise: float
     free: ShiftFree | None
+    first_move: float | None = None
 
 
 @dataclass(frozen=True)
@@ -606,7 +613,9 @@ class TRowsApart(Observation):
     speed after its rows (rad/s: the mean of the first and of the last tenth of the rows
     from ``span`` rise_T after the wheel answers to the next edge) when it moves on by more
     than :data:`CREEP_SHARE` of the rise, else None; ``miss``: how far the model of every
-    row falls behind the wheel on that rise's rows (rad/s, the largest 5-row mean), with it."""
+    row falls behind the wheel on that rise's rows (rad/s, the largest 5-row mean), with it.
+    ``up_T``: T (s) of the rows up to ``span`` T after the rising edges alone, when the fit
+    of every row also uses falling edges (None otherwise)."""
 
     code: ClassVar[str] = "T_rows_apart"
     span: float
@@ -615,6 +624,7 @@ class TRowsApart(Observation):
     T: float
     creep: tuple[float, float] | None = None
     miss: float | None = None
+    up_T: float | None = None
 
 
 CREEP_SHARE: float = 0.03
@@ -724,15 +734,20 @@ def fit_observations(
             if count is not None and count > COARSE_COUNT * rise
             else LateStart.SLOW_START
         )
+        first = (
+            fit.first_move
+            if fit.first_move is not None and fit.onset is not None and fit.first_move < fit.onset
+            else None
+        )
         free = (
-            ShiftFree(fit.onset, fit.free_shift, fit.free_T, fit.free_ci)
+            ShiftFree(fit.onset, fit.free_shift, fit.free_T, fit.free_ci, first)
             if fit.free_T is not None
             and fit.free_ci is not None
             and fit.free_shift is not None
             and fit.onset is not None
             else None
         )
-        out.append(ShiftLate(fit.shift, why, fit.moved_early, fit.onset, count, rise, free))
+        out.append(ShiftLate(fit.shift, why, fit.moved_early, fit.onset, count, rise, free, first))
     elif fit.shift_on_bound and fit.moved_before_rise:
         out.append(ShiftEarly(fit.shift))
     elif fit.shift_on_bound:
@@ -754,6 +769,7 @@ def fit_observations(
                 fit.T,
                 None if creep is None else creep[0],
                 None if creep is None else creep[1],
+                fit.rise_up_T,
             )
         )
     if fit.T_on_bound:

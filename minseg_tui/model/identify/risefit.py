@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from minseg_tui.model.identify.counts import count_quantum
 from minseg_tui.model.identify.lsq import dot
 from minseg_tui.model.identify.rises import RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
@@ -143,12 +144,16 @@ class TimeConstantFit:
     whether T ended on it; left_out: rows (0-based) left out of the fit (logging stalls);
     moved_early: when a dead time fitted better but the wheel already moved before it would
     end, the share of the rise done by then (None otherwise); onset: the time (s) from the
-    rises to where the wheel first answers (the median; None if unseen);
+    rises to where the wheel first answers (the median; None if unseen), read off a 3-row
+    running median of the speed; first_move: the same read off each row's own speed (a first
+    count that the running median drops comes earlier);
     moved_before_rise: the wheel was already moving at the rows of the rises;
     dead_time_sought: whether the wheel started late enough for a dead time to be fitted;
     rise_T, rise_ci: T (s) and its 95 % interval (s) fitted to the rows up to
     :data:`RISE_SPAN` time constants after each edge alone, when that differs from ``T`` by
     more than :data:`ROWS_APART` standard errors (None otherwise): ``ci`` then spans both;
+    rise_up_T: with rise_T, T (s) of the rows up to :data:`RISE_SPAN` time constants after
+    the rising edges alone, where the fit of every row also uses falling ones (None otherwise);
     angle_mended: the angle, rebuilt from the speed column, was carried wrong across a stall's
     gap and the fit took the step off every later row (:func:`_stall_offsets`).
     """
@@ -179,10 +184,12 @@ class TimeConstantFit:
     left_out: tuple[int, ...] = ()
     moved_early: float | None = None
     onset: float | None = None
+    first_move: float | None = None
     moved_before_rise: bool = False
     dead_time_sought: bool = False
     rise_T: float | None = None
     rise_ci: tuple[float, float] | None = None
+    rise_up_T: float | None = None
     angle_mended: bool = False
     dead_time_from_rise: bool = False
     free_T: float | None = None
@@ -306,16 +313,6 @@ def _robust_sd(x: FloatArray) -> float:
     return 1.4826 * float(np.median(np.abs(x - np.median(x))))
 
 
-def _count_quantum(theta: FloatArray, cpr: int) -> float | None:
-    """The encoder's count (rad, 2 pi / ``cpr``) when the angle ``theta`` (rad) is whole counts
-    of it (from the count column, or an Euler speed of counts over a fixed period), else None:
-    the rounding's share of T's interval is then known from the fitted angle
-    (:func:`.lsq.rounding_errors`)."""
-    q = 2.0 * math.pi / cpr
-    x = (theta - theta[0]) / q
-    return q if bool(np.all(np.abs(x - np.round(x)) <= 1e-6)) else None
-
-
 def _fit(
     log: RunLog,
     windows: list[RiseWindow],
@@ -339,9 +336,10 @@ def _fit(
     T_range = (T_MIN_SAMPLES * ts, T_MAX_RISES * max(longest, ts))
     d_max = DEAD_TIME_SHARE * shortest
     onset = _onset(log, windows)
+    first_move = _onset(log, windows, smoothed=False)
     rise_63 = _onset(log, windows, 1.0 - math.exp(-1.0))
     delays: tuple[float, ...] = ()
-    quantum = _count_quantum(theta, log.cpr)
+    quantum = count_quantum(theta, log.cpr)
     windows_fit = partial(fit_windows, quantum=quantum)
 
     def late_start(T: float) -> bool:
@@ -524,6 +522,7 @@ def _fit(
         T_range=T_range,
         moved_early=max(moved) if moved else None,
         onset=onset,
+        first_move=first_move,
         dead_time_sought=bool(sought) or (prior is not None and prior.dead_time_sought),
         moved_before_rise=_moved_before(log, windows, 0.0, at_edge=True) > STILL_SHARE,
     )
@@ -546,6 +545,21 @@ def _fit(
                     if alone is not None and not alone.T_on_bound:
                         c = alone.covariance
                         rise = (alone.T, math.sqrt(max(float(c.cov[1, 1]), 0.0)), c.half_width(1))
+            apart = _rows_apart(fit, rise)
+            up_T = None  # the rows after the rising edges alone, when falling ones are fitted
+            ups = np.array([e.start for e in find_edges(cmd) if e.rising], dtype=np.int64)
+            if apart.rise_T is not None and 0 < ups.size < clusters.size - 1:
+                mask = _rise_rows(t, ups, whole.T, whole.d, keep)
+                if mask is not None:
+                    up = whole_fit(
+                        whole_reach,
+                        whole.T,
+                        mask.astype(float),
+                        shift_starts=(whole.d,),
+                        T_factors=(0.5, 0.7, *near),
+                    )
+                    if up is not None and not up.T_on_bound:
+                        up_T = up.T
             free_w: tuple[float, float, float, float] | None = None
             if late_end(whole.d, whole.d_on_bound, whole.T_on_bound):
                 held_w = whole_fit(
@@ -555,7 +569,8 @@ def _fit(
                     c = held_w.covariance
                     free_w = (held_w.T, held_w.d, c.half_width(1), 0.0)
             return replace(
-                _shift_free(_rows_apart(fit, rise), free_w),
+                _shift_free(apart, free_w),
+                rise_up_T=up_T,
                 dead_time=whole.d if whole.d > bound else 0.0,
                 shift_on_bound=whole.d_on_bound and not late_rise,
                 dead_time_from_rise=late_rise,
@@ -725,13 +740,15 @@ def _levels(w: FloatArray, win: RiseWindow) -> tuple[float, float]:
     return float(np.median(w[win.pre_from : k + 1])), float(np.median(w[tail : win.post_last + 1]))
 
 
-def _onset(log: RunLog, windows: list[RiseWindow], share_of: float = STILL_SHARE) -> float | None:
+def _onset(
+    log: RunLog, windows: list[RiseWindow], share_of: float = STILL_SHARE, smoothed: bool = True
+) -> float | None:
     """Where the wheel first answers the rises: the median over the steps of the time
-    (s) from the step to the first row whose speed (a 3-row running median) has come
-    ``share_of`` of the way to its new level (default :data:`STILL_SHARE`); None when no
-    step shows it."""
+    (s) from the step to the first row whose speed (a 3-row running median; each row's own
+    speed when not ``smoothed``) has come ``share_of`` of the way to its new level (default
+    :data:`STILL_SHARE`); None when no step shows it."""
     w = np.asarray(log.omega, dtype=float)
-    smooth = _smooth(w)
+    smooth = _smooth(w) if smoothed else w
     t = log.board_time()
     found = []
     for win in windows:
