@@ -1,0 +1,57 @@
+"""Walk 13's defects (issue 20), each as the walk met it, at 80x24 with Pilot on a real
+session folder (/work/coord/WALK13.md)."""
+
+from __future__ import annotations
+
+from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from tests.ui.helpers import answering, burst, goto, settle, start, stored_text, typing_box
+
+
+def _row(app, key: str) -> FieldRow:
+    return app.screen.query_one(f"#{field_id(key)}", FieldRow)
+
+
+async def _on_summary_question(pilot, key: str) -> None:
+    """The Summary step shown, the keys on question ``key``'s list of answers."""
+    await start(pilot)
+    await goto(pilot, "summary")
+    app = pilot.app
+    await settle(pilot, lambda: answering(app) is _row(app, "summary.1").answers)
+    while answering(app) is not _row(app, key).answers:
+        await burst(pilot, "tab")
+
+
+async def test_enter_after_ticking_with_space_keeps_the_ticks_and_goes_on(quiet):
+    """D1: Q5 (tick all that apply) 'Down Space Down Space Enter': Space ticked 'the input
+    amplitude' and 'the static gain', then Enter unticked 'the static gain' (it acted as
+    Space on the answer under the cursor) and the keys stayed on Q5; the group's right
+    answer was stored 'partly'. Enter on an answer already ticked now leaves the ticks as
+    they are and goes on to the next question, as Enter goes on from a text entry."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _on_summary_question(pilot, "summary.5")
+        await burst(pilot, "down", "space", "down", "space", "enter")
+        assert stored_text(app, "summary.5") == "b, c"
+        assert _row(app, "summary.5").answers.chosen == (1, 2)
+        assert answering(app) is _row(app, "summary.6").answers
+
+
+async def test_enter_on_the_answer_picked_goes_on_to_the_next_question(quiet):
+    """D1: Q1 'Space' (a model), 'Down Space' (a system), then 'Enter Space Enter Space Enter
+    Space Enter' in one burst, meant for Q2-Q4: the keys never left Q1 (Enter on the answer
+    picked did nothing, Space picked it again). Enter on the answer picked now goes on to
+    the next question; Enter on another answer still picks it and stays (walk 6's bursts)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _on_summary_question(pilot, "summary.1")
+        await burst(pilot, "space")
+        await burst(pilot, "down", "space")
+        assert stored_text(app, "summary.1") == "b"
+        await burst(pilot, "enter", "space", "enter", "space", "enter", "space", "enter")
+        for key in ("summary.1", "summary.2", "summary.3", "summary.4"):
+            assert stored_text(app, key) == ("b" if key == "summary.1" else "a"), key
+        assert answering(app) is _row(app, "summary.5").answers
+        # the last question: Enter on its answer picked goes on to the text entry after it
+        await burst(pilot, "tab", "space", "enter")
+        assert stored_text(app, "summary.6") == "a"
+        assert typing_box(app) is _row(app, "summary.unclear").input
