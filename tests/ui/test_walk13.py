@@ -3,8 +3,23 @@ session folder (/work/coord/WALK13.md)."""
 
 from __future__ import annotations
 
+import json
+
+from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
-from tests.ui.helpers import answering, burst, goto, settle, start, stored_text, typing_box
+from tests.ui.helpers import (
+    TABLE,
+    answering,
+    burst,
+    enter_all,
+    goto,
+    record_response_run,
+    settle,
+    start,
+    stored_text,
+    type_in,
+    typing_box,
+)
 
 
 def _row(app, key: str) -> FieldRow:
@@ -55,3 +70,32 @@ async def test_enter_on_the_answer_picked_goes_on_to_the_next_question(quiet):
         await burst(pilot, "tab", "space", "enter")
         assert stored_text(app, "summary.6") == "a"
         assert typing_box(app) is _row(app, "summary.unclear").input
+
+
+def _shown_record(app) -> dict:
+    with app.session as s:
+        folder = s.folder
+    return json.loads((folder / "session.json").read_text(encoding="utf-8")).get("shown", {})
+
+
+async def test_j_typed_before_r_is_not_recorded_as_shown_until_a_j_is_computed(quiet):
+    """D2: J typed on Task 13 before R (Task 2) and i_ss (Task 5): the screen said "not
+    judged: J needs R ...", no computed J anywhere, yet the session recorded J as shown
+    after the answer at that moment, and the report said so ("shown on Tasks 11-15" at a
+    time no J existed). J is recorded as shown only once a computed J is on the screen."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, {k: v for k, v in TABLE.items() if k != "R" and not k.startswith("i_ss")})
+        with app.session as s:
+            record_response_run(s)
+        await goto(pilot, "task13")
+        await type_in(pilot, "own.J", "0.0018")
+        await settle(pilot, lambda: "J needs R" in _row(app, "own.J").message)
+        assert "own.J" not in _shown_record(app)
+        # R and i_ss typed: J is computed, on the screen when Tasks 11-15 are drawn again
+        enter_all(app, {k: v for k, v in TABLE.items() if k == "R" or k.startswith("i_ss")})
+        await goto(pilot, "task12")
+        await settle(pilot, lambda: "own.J" in _shown_record(app))
+        got = _shown_record(app)["own.J"]
+        assert (got["by"], got["answer"]) == (lab_shown.AFTER_ANSWER, "0.0018")

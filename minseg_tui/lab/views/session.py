@@ -1149,7 +1149,14 @@ def results(session: Session, step_id: str) -> ResultsView:
         ]
         ts = log.ts if log is not None else 0.0
         rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
-        shows = frozenset(k for k in lab_compare.ANSWERED_FIRST if k not in conceal)
+        # J's value is on the screen only once R and a full row let it be computed: before,
+        # its line and Task 13's comparison say what it waits for (walk 13: J typed before R
+        # was recorded as shown, and the report said so)
+        shows = frozenset(
+            k
+            for k in lab_compare.ANSWERED_FIRST
+            if k not in conceal and (k != "own.J" or ident is not None)
+        )
     # without a step result, the table's problems are not why (K and T need only the run and a
     # u_ss: ``waiting`` says what is missing); with one, J's line points to them
     problems = list(res.problems if st_run is not None else res.run_problems)
