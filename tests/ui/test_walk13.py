@@ -5,8 +5,12 @@ from __future__ import annotations
 
 import json
 
+from textual.widgets import DataTable
+
 from minseg_tui.lab.state import shown as lab_shown
+from minseg_tui.ui.screens.lab import StepPane
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.prose import Prose
 from tests.ui.helpers import (
     TABLE,
     answering,
@@ -99,3 +103,41 @@ async def test_j_typed_before_r_is_not_recorded_as_shown_until_a_j_is_computed(q
         await settle(pilot, lambda: "own.J" in _shown_record(app))
         got = _shown_record(app)["own.J"]
         assert (got["by"], got["answer"]) == (lab_shown.AFTER_ANSWER, "0.0018")
+
+
+def _visible(pane: StepPane, widget) -> bool:
+    """``widget`` lies whole in the part of the pane on screen (screen coordinates)."""
+    return widget.region.height > 0 and pane.scrollable_content_region.contains_region(
+        widget.region
+    )
+
+
+async def test_f7_from_an_entry_shows_a_formula_on_the_screen(quiet):
+    """D3: Tasks 6-9 open with the keys in 'your k_v', the table scrolled above it at 80x24;
+    F7 (the footer's 'f7 Formula') wrote the formula of the table's cell under its cursor
+    below the table, off the screen: nothing on the screen changed. Now F7 from the step's
+    entries takes the keys to the table (what stood in the entry stored, as leaving it
+    stores it), with the formula line under it in view; ←/→ and Enter (or F7) then give
+    the other cells'."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        await goto(pilot, "table")
+        pane = app.screen.query(StepPane).last()
+        assert typing_box(app) is _row(app, "own.k_v").input
+        formula = app.screen.query_one("#formula", Prose)
+        before = str(formula.render())
+        await burst(pilot, *"0,5", "f7")
+        await settle(pilot)
+        table = app.screen.query_one("#table", DataTable)
+        assert app.focused is table
+        assert str(formula.render()) != before
+        assert _visible(pane, formula), (pane.scroll_y, formula.region, pane.region)
+        assert stored_text(app, "own.k_v") == "0,5"
+        # (two bursts: 'Right ... F7' in one gives the old cell's formula, the arrows being
+        # the form's priority keys handed on to the table after F7 ran: left to s34-focus)
+        await burst(pilot, "right", "right", "right", "right")
+        assert table.cursor_coordinate == (0, 4), table.cursor_coordinate
+        await burst(pilot, "f7")
+        assert "k_v" in str(formula.render())

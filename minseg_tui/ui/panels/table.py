@@ -65,15 +65,19 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         return {"formula": self.action_formula}
 
     def action_formula(self) -> None:
-        """Show the formula of the cell under the cursor."""
+        """Show the formula of the cell under the cursor. From elsewhere on the step (its
+        entries, below the table: at 80x24 the table and the formula's line were off the
+        screen, walk 13) the keys go to the table first, its formula's line in view."""
         if self.view is None or not self.view.rows:
             return
         table = self.query_one(DataTable)
         r, c = table.cursor_coordinate
         cell = self.view.rows[r][c]
-        self.query_one("#formula", Prose).update(
-            cell.formula or f"{cell.text}: measured, no formula"
-        )
+        line = self.query_one("#formula", Prose)
+        line.update(cell.formula or f"{cell.text}: measured, no formula")
+        if not table.has_focus:
+            table.focus()
+            line.call_after_refresh(line.scroll_visible, animate=False)
 
     def on_data_table_cell_selected(self, _event: DataTable.CellSelected) -> None:
         self.action_formula()
