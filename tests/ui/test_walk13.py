@@ -9,8 +9,9 @@ from textual.widgets import DataTable
 
 from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.ui.screens.lab import StepPane
-from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.fields import FOCUS_MARK, FieldRow, field_id
 from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.ui.widgets.textbox import TextBox
 from tests.ui.helpers import (
     TABLE,
     answering,
@@ -20,6 +21,7 @@ from tests.ui.helpers import (
     record_response_run,
     settle,
     start,
+    start_with_a_run,
     stored_text,
     type_in,
     typing_box,
@@ -141,3 +143,24 @@ async def test_f7_from_an_entry_shows_a_formula_on_the_screen(quiet):
         assert table.cursor_coordinate == (0, 4), table.cursor_coordinate
         await burst(pilot, "f7")
         assert "k_v" in str(formula.render())
+
+
+async def test_the_run_log_box_is_marked_when_it_has_the_keys(quiet):
+    """D4: on the model check, Shift+Tab put the keys in the box for a run log's path, with
+    no "▶" before its label (every entry with the keys has one); the group typed its note
+    there, and Enter tried to load a file named "friction". The box's label now carries the
+    mark while the box has the keys, and loses it when they leave."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "model_check")
+        box = app.screen.query_one("#import-path", TextBox)
+        for _ in range(12):
+            if app.focused is box:
+                break
+            await burst(pilot, "shift+tab")
+        assert app.focused is box
+        label = app.screen.query_one("#import-label", Prose)
+        assert str(label.render()).startswith(FOCUS_MARK)
+        await burst(pilot, "tab")
+        assert app.focused is not box
+        assert not str(label.render()).startswith(FOCUS_MARK)
