@@ -164,3 +164,32 @@ async def test_the_run_log_box_is_marked_when_it_has_the_keys(quiet):
         await burst(pilot, "tab")
         assert app.focused is not box
         assert not str(label.render()).startswith(FOCUS_MARK)
+
+
+async def test_a_fraction_typed_as_a_percentage_is_named(quiet):
+    """D7: Prep 4 asks y(T) as a fraction of K c; '63' (the per cent, without '%') got "not
+    right yet; check your working", while '63 %' is right. It now says what it read."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep4")
+        row = await type_in(pilot, "prep4.fraction", "63")
+        await settle(pilot, lambda: "check your working" not in row.message)
+        assert "0.63" in row.message and "per cent" in row.message, row.message
+
+
+async def test_a_value_ten_times_too_large_is_named_a_slipped_decimal_point(quiet):
+    """D7: Task 15, '96,5' against 9.650 rad/s (5 V × the group's K = 1.93): "wrong: +900 %
+    ... more than the 10 % off that reading or rounding explains", no word of the likely
+    slip. A value a power of ten from the one computed the group's way now says so."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        await type_in(pilot, "own.K", "1,93")
+        await goto(pilot, "task15")
+        row = await type_in(pilot, "own.omega_5", "96,5")
+        await settle(pilot, lambda: "+900 %" in row.message)
+        assert "10 times" in row.message and "decimal point" in row.message, row.message
+        row = await type_in(pilot, "own.omega_5", "0,965")
+        await settle(pilot, lambda: "-90 %" in row.message)
+        assert "1/10 of" in row.message and "decimal point" in row.message, row.message
