@@ -8,6 +8,7 @@ import json
 from textual.widgets import DataTable
 
 from minseg_tui.lab.state import shown as lab_shown
+from minseg_tui.quantities import format_constant
 from minseg_tui.ui.screens.lab import StepPane
 from minseg_tui.ui.widgets.fields import FOCUS_MARK, FieldRow, field_id
 from minseg_tui.ui.widgets.prose import Prose
@@ -193,3 +194,20 @@ async def test_a_value_ten_times_too_large_is_named_a_slipped_decimal_point(quie
         row = await type_in(pilot, "own.omega_5", "0,965")
         await settle(pilot, lambda: "-90 %" in row.message)
         assert "1/10 of" in row.message and "decimal point" in row.message, row.message
+
+
+async def test_the_model_checks_own_t_is_set_beside_task_12s_on_screen(quiet):
+    """D5: the model check's first sentences name "the first-order model the check fitted
+    to this run (T = 40.53 ms, ...)", a T that appears nowhere in Tasks 11-15 (Task 12 says
+    least squares 43.12 ms); why the two differ was only in Details, folded. The sentences
+    on screen now give Task 12's least-squares T beside it and point to Details."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "model_check")
+        story = app.screen.query_one("#check-story", Prose)
+        await settle(pilot, lambda: "the check fitted to this run" in str(story.render()))
+        with app.session as s:
+            st = s.results().identification.step
+        said = " ".join(str(story.render()).split())
+        assert f"least-squares T of this run is {format_constant(st.T, 's')}" in said, said
+        assert "Details" in said

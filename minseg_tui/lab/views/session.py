@@ -1228,6 +1228,9 @@ class CheckView:
     close_title: str = ""
     first_order: str = ""
     two_fits: str = ""
+    other_T: str = ""
+    """With ``two_fits``: the sentence on screen after ``story`` giving Tasks 11-12's
+    least-squares T beside the check's own (:func:`~minseg_tui.lab.views.check_words.other_T`)."""
     shows: frozenset[str] = frozenset()
     """Fields of Tasks 11-15 whose computed value the check puts on the screen: T and K of the
     first-order model it fitted, and so the model (none without a result)."""
@@ -1327,6 +1330,7 @@ def check(session: Session) -> CheckView:
         first_order="first-order model the check fitted to this run and simulated: "
         + model_words.params(r.baseline.params),
         two_fits=two_fits,
+        other_T=check_words.other_T(st.T) if two_fits and st is not None else "",
         shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),
     )
 

@@ -79,7 +79,7 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             else f"run {v.run}, the whole log · "
             f"{key_hint('zoom_next', 'the close-up the words speak of')}"
         )
-        story.update("\n".join([where, " ".join(v.story)]))
+        story.update("\n".join([where, " ".join([*v.story, v.other_T]).rstrip()]))
         text = [f"cause: {v.cause_words or v.cause}"]
         if v.first_order:
             text.append(v.first_order)
