@@ -211,3 +211,19 @@ async def test_the_model_checks_own_t_is_set_beside_task_12s_on_screen(quiet):
         said = " ".join(str(story.render()).split())
         assert f"least-squares T of this run is {format_constant(st.T, 's')}" in said, said
         assert "Details" in said
+
+
+async def test_j_computed_the_groups_way_names_the_constants_it_uses(quiet):
+    """D8: J "computed your way 0.001816 kg m^2 (from your T = 57 ms)" used the table's k_v,
+    k_a and f, not the k_v and k_a the group typed on Tasks 6-9 (0.495, 0.32 gave 0.001809),
+    and did not say so. It now names them."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task13")
+        enter_all(app, {"own.k_v": "0,495", "own.k_a": "0.32", "own.T": "57 ms"})
+        row = await type_in(pilot, "own.J", "0.00181")
+        compare = app.screen.query_one("#compare")
+        await settle(pilot, lambda: "your J: yours" in str(compare.render()))
+        said = " ".join(str(compare.render()).split())
+        assert "from your T = 57 ms and the table's R, k_v, k_a and f" in said, said
+        assert row.message

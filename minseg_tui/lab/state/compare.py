@@ -313,6 +313,8 @@ def compare_fields(
                     computed = inertia_from_time_constant(
                         T_used, ident.R, ident.f, ident.k_v, ident.k_a
                     )
+                    # which k_v, k_a and f: the table's, not a k_v typed on Tasks 6-9 (walk 13)
+                    how += " and the table's R, k_v, k_a and f"
                     why = (
                         f"The least-squares J uses T = {_ms(st.T)} fitted over {span}; "
                         "J grows in proportion to T, so the two differ as the two T do."
