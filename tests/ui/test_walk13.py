@@ -9,6 +9,7 @@ from textual.widgets import DataTable
 
 from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.quantities import format_constant
+from minseg_tui.ui.panels.table import TablePanel
 from minseg_tui.ui.screens.lab import StepPane
 from minseg_tui.ui.widgets.fields import FOCUS_MARK, FieldRow, field_id
 from minseg_tui.ui.widgets.prose import Prose
@@ -227,3 +228,26 @@ async def test_j_computed_the_groups_way_names_the_constants_it_uses(quiet):
         said = " ".join(str(compare.render()).split())
         assert "from your T = 57 ms and the table's R, k_v, k_a and f" in said, said
         assert row.message
+
+
+async def test_f7_before_the_tables_view_is_built_acts_once_it_is(quiet):
+    """D3, second form: 'C-p task 6 Enter 0,49 F7' in one burst: F7 came before the step's
+    table view was built and did nothing (a second F7 worked). The request now waits for
+    the view: here the view is taken away before F7 and handed back after it, as the
+    step's worker hands it over."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        await goto(pilot, "table")
+        panel = app.screen.query_one(TablePanel)
+        built = panel.view
+        assert built is not None
+        panel.view = None  # not built yet
+        await burst(pilot, "f7")
+        assert app.focused is not app.screen.query_one("#table", DataTable)
+        panel.receive(built)
+        await settle(pilot)
+        formula = app.screen.query_one("#formula", Prose)
+        assert app.focused is app.screen.query_one("#table", DataTable)
+        assert "F7 on a cell" not in str(formula.render())
