@@ -100,7 +100,32 @@ def check_answer(chk: Check, answer: object, entries: Mapping[str, object]) -> F
     for wrong, message in chk.mistakes:
         if _same(answer, wrong, fld.names, env, chk.rel_tol, chk.abs_tol):
             return Feedback(chk.key, "wrong", message)
+    share = _constant(answer) if not fld.unit and not fld.names else None
+    if (
+        share is not None
+        and 1 <= share <= 100
+        and _same(share / 100, chk.expected, (), env, chk.rel_tol, chk.abs_tol)
+    ):
+        # a fraction typed as the per cent (walk 13: '63' for y(T) / (K c) was only "not
+        # right yet"), said with the group's own number
+        return Feedback(
+            chk.key,
+            "wrong",
+            f"that reads as {share:.4g}: did you mean {share / 100:.4g}, the per cent as a "
+            "fraction?",
+            f"typed as per cent ({share:.4g})",
+        )
     return Feedback(chk.key, "wrong", "not right yet; check your working", "not right")
+
+
+def _constant(answer: object) -> float | None:
+    """The number ``answer`` is when it is one (a float, or a formula of no names); else None."""
+    if isinstance(answer, float):
+        return answer
+    if isinstance(answer, Formula) and not answer.names:
+        v = answer.value({})
+        return v if math.isfinite(v) else None
+    return None
 
 
 def read_formula(fld: Field, text: str) -> Formula:

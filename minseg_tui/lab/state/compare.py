@@ -313,6 +313,8 @@ def compare_fields(
                     computed = inertia_from_time_constant(
                         T_used, ident.R, ident.f, ident.k_v, ident.k_a
                     )
+                    # which k_v, k_a and f: the table's, not a k_v typed on Tasks 6-9 (walk 13)
+                    how += " and the table's R, k_v, k_a and f"
                     why = (
                         f"The least-squares J uses T = {_ms(st.T)} fitted over {span}; "
                         "J grows in proportion to T, so the two differ as the two T do."
@@ -403,8 +405,12 @@ def compare_fields(
             right = abs(rel) <= tol
             if not right:
                 verdict = f"wrong: more than the {format_percent(tol)} off that reading or rounding explains"
+                said = ""
                 if fld.key == "own.J" and ident and T_used is not None and isinstance(own, float):
-                    verdict += _j_slip(own, T_used, ident.R, ident.f, ident.k_v, ident.k_a)
+                    said = _j_slip(own, T_used, ident.R, ident.f, ident.k_v, ident.k_a)
+                if not said and isinstance(own, float) and isinstance(computed, float):
+                    said = _decimal_slip(own, computed, tol)
+                verdict += said
         if isinstance(lsq, float) and not math.isfinite(lsq):
             lsq = None
         out.append(
@@ -513,6 +519,17 @@ def _j_slip(own: float, T: float, R: float, f: float, k_v: float, k_a: float) ->
         J = inertia_from_time_constant(T_slip, R, f_slip, k_v, k_a)
         if J and abs(own / J - 1.0) <= TOLERANCE["own.J"]:
             return said
+    return ""
+
+
+def _decimal_slip(own: float, computed: float, tol: float) -> str:
+    """A wrong value ``own`` that is 10, 100 or 1000 times ``computed`` (or a tenth, a
+    hundredth, a thousandth of it) within ``tol``, as a clause naming the likely slip (walk
+    13: '96,5' for 9.650 rad/s was only "+900 %"); '' otherwise."""
+    for k in (1, 2, 3, -1, -2, -3):
+        if abs(own / (computed * 10.0**k) - 1.0) <= tol:
+            times = f"{10**k:g} times" if k > 0 else f"1/{10 ** (-k):g} of"
+            return f"; yours is {times} that: a decimal point in the wrong place?"
     return ""
 
 

@@ -172,6 +172,16 @@ def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
     )
 
 
+def other_T(T_ls: float) -> str:
+    """The sentence set after the first ones on screen when the check's first-order T is not
+    the least-squares one Tasks 11-12 showed for the same run (``T_ls``, s): a student met a
+    third T here, its reason folded away in Details (walk 13)."""
+    return (
+        f"(Tasks 11-12's least-squares T of this run is {format_constant(T_ls, 's')}: "
+        "Details says why the two differ.)"
+    )
+
+
 def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
     """Sentence 1: what the first-order model gets wrong in the close-up; the model is
     named (:func:`simulated`) so that no group takes it for its own."""

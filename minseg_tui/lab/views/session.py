@@ -1150,7 +1150,14 @@ def results(session: Session, step_id: str) -> ResultsView:
         ]
         ts = log.ts if log is not None else 0.0
         rises = tuple(rise_zoom(s, st.T, ts) for s in st.rises)
-        shows = frozenset(k for k in lab_compare.ANSWERED_FIRST if k not in conceal)
+        # J's value is on the screen only once R and a full row let it be computed: before,
+        # its line and Task 13's comparison say what it waits for (walk 13: J typed before R
+        # was recorded as shown, and the report said so)
+        shows = frozenset(
+            k
+            for k in lab_compare.ANSWERED_FIRST
+            if k not in conceal and (k != "own.J" or ident is not None)
+        )
     # without a step result, the table's problems are not why (K and T need only the run and a
     # u_ss: ``waiting`` says what is missing); with one, J's line points to them
     problems = list(res.problems if st_run is not None else res.run_problems)
@@ -1222,6 +1229,9 @@ class CheckView:
     close_title: str = ""
     first_order: str = ""
     two_fits: str = ""
+    other_T: str = ""
+    """With ``two_fits``: the sentence on screen after ``story`` giving Tasks 11-12's
+    least-squares T beside the check's own (:func:`~minseg_tui.lab.views.check_words.other_T`)."""
     shows: frozenset[str] = frozenset()
     """Fields of Tasks 11-15 whose computed value the check puts on the screen: T and K of the
     first-order model it fitted, and so the model (none without a result)."""
@@ -1321,6 +1331,7 @@ def check(session: Session) -> CheckView:
         first_order="first-order model the check fitted to this run and simulated: "
         + model_words.params(r.baseline.params),
         two_fits=two_fits,
+        other_T=check_words.other_T(st.T) if two_fits and st is not None else "",
         shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),
     )
 

@@ -16,6 +16,7 @@ from minseg_tui.lab.views.session import CheckView
 from minseg_tui.ui.keys import PanelKeys, key_hint
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
+from minseg_tui.ui.widgets.fields import FOCUS_MARK
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.textbox import TextBox
@@ -78,7 +79,7 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             else f"run {v.run}, the whole log · "
             f"{key_hint('zoom_next', 'the close-up the words speak of')}"
         )
-        story.update("\n".join([where, " ".join(v.story)]))
+        story.update("\n".join([where, " ".join([*v.story, v.other_T]).rstrip()]))
         text = [f"cause: {v.cause_words or v.cause}"]
         if v.first_order:
             text.append(v.first_order)
@@ -146,15 +147,25 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
 
 class ImportBox(Vertical):
     """A run log recorded elsewhere: its path, Enter asks for it (the lab screen loads it
-    and answers in one line under the box)."""
+    and answers in one line under the box). While the box has the keys its label has the
+    mark an entry's label has then (:data:`~minseg_tui.ui.widgets.fields.FOCUS_MARK`; walk
+    13: unmarked, it took a note meant for the box above it)."""
+
+    LABEL = "A run log recorded elsewhere (CSV): its path, then Enter"
 
     def __init__(self) -> None:
         super().__init__(classes="import")
 
     def compose(self) -> ComposeResult:
-        yield Prose("A run log recorded elsewhere (CSV): its path, then Enter", classes="hint")
+        yield Prose(self.LABEL, id="import-label", classes="hint")
         yield TextBox(placeholder="load a run log (CSV path), Enter", id="import-path")
         yield Prose("", id="import-msg", classes="hint")
+
+    def on_descendant_focus(self) -> None:
+        self.query_one("#import-label", Prose).update(FOCUS_MARK + self.LABEL)
+
+    def on_descendant_blur(self) -> None:
+        self.query_one("#import-label", Prose).update(self.LABEL)
 
     @on(Input.Submitted, "#import-path")
     def _import(self, event: Input.Submitted) -> None:

@@ -27,6 +27,7 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
     def __init__(self) -> None:
         super().__init__()
         self._warnings = Prose("", id="warnings", classes="para")
+        self._formula_asked = False
 
     def compose(self) -> ComposeResult:
         yield DataTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
@@ -60,20 +61,32 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         self.query_one("#results", Prose).update("\n".join(lines))
         self._warnings.update("\n".join(f"! {w}" for w in view.warnings))
         self._warnings.display = bool(view.warnings)
+        if self._formula_asked:
+            self._formula_asked = False
+            self.action_formula()
 
     def key_actions(self) -> Mapping[str, Callable[[], object]]:
         return {"formula": self.action_formula}
 
     def action_formula(self) -> None:
-        """Show the formula of the cell under the cursor."""
-        if self.view is None or not self.view.rows:
+        """Show the formula of the cell under the cursor. From elsewhere on the step (its
+        entries, below the table: at 80x24 the table and the formula's line were off the
+        screen, walk 13) the keys go to the table first, its formula's line in view. Asked
+        before the step's view is built (F7 in the burst that opened the step), it is done
+        once the view is drawn."""
+        if self.view is None:
+            self._formula_asked = True
+            return
+        if not self.view.rows:
             return
         table = self.query_one(DataTable)
         r, c = table.cursor_coordinate
         cell = self.view.rows[r][c]
-        self.query_one("#formula", Prose).update(
-            cell.formula or f"{cell.text}: measured, no formula"
-        )
+        line = self.query_one("#formula", Prose)
+        line.update(cell.formula or f"{cell.text}: measured, no formula")
+        if not table.has_focus:
+            table.focus()
+            line.call_after_refresh(line.scroll_visible, animate=False)
 
     def on_data_table_cell_selected(self, _event: DataTable.CellSelected) -> None:
         self.action_formula()

@@ -51,10 +51,13 @@ class AnswerList(Widget, can_focus=False):
     A pick goes to the lab at once, by a plain call (:meth:`FieldRow.pick`).
 
     Keys: Up/Left and Down/Right move the cursor (round from the last answer to the first),
-    Home/End to the first/last; Space or Enter picks the answer under it, clearing the
-    others at once in a list of one (walk 6: Textual's RadioSet cleared the answer picked
-    before only when it read its button's message, after the keys of the burst still
-    queued, and showed two dots), and ticks or unticks it in a list of several.
+    Home/End to the first/last; Space picks the answer under it, clearing the others at
+    once in a list of one (walk 6: Textual's RadioSet cleared the answer picked before only
+    when it read its button's message, after the keys of the burst still queued, and showed
+    two dots), and ticks or unticks it in a list of several. Enter picks or ticks the answer
+    under it too, but never unticks it: on an answer already picked or ticked the form takes
+    Enter to go on to the next question (:attr:`on_chosen`; walk 13: 'Space Enter' unticked
+    the answer just ticked).
 
     It looks as Textual's RadioSet of RadioButtons does (the snapshots are unchanged), the
     answers wrapping instead of cut with an ellipsis."""
@@ -125,6 +128,11 @@ class AnswerList(Widget, can_focus=False):
         return self._cursor
 
     @property
+    def on_chosen(self) -> bool:
+        """The cursor is on an answer picked or ticked (Enter then goes on)."""
+        return self._cursor in self._chosen
+
+    @property
     def mark(self) -> str:
         """The mark of a chosen answer: ● (one answer) or X (several)."""
         return "X" if self.multiple else "●"
@@ -173,8 +181,10 @@ class AnswerList(Widget, can_focus=False):
             self.move(0)
         elif key == "end":
             self.move(-1)
-        elif key in ("space", "enter"):
+        elif key == "space" or (key == "enter" and not self.on_chosen):
             self._pick(self._cursor)
+        elif key == "enter":
+            return False  # never unticks: the form goes on (FieldForm._enter)
         else:
             return False
         return True
@@ -1159,6 +1169,10 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     def _enter(self) -> bool:
         row = self.typing
         if row is None:
+            answers = self.answering
+            if answers is not None and answers.on_chosen and self.current is not None:
+                self.focus_after(self.current.field.key)  # answered: on to the next
+                return True
             return self._row_key("enter")
         text = row.submitted()
         if text is not None:
