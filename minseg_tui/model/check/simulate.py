@@ -780,14 +780,18 @@ def response(
     fx: Effects,
     z0: float | None = 0.0,
     over_interval: bool = False,
+    table: Pieces | None = None,
 ) -> FloatArray:
     """The measured speed the model (T, fx) predicts on every row (K = 1), as the log
     measured it: the angle difference over ``fx.taps`` samples divided by the nominal
     period (or by the real interval, ``over_interval``); the angle ``fx.taps`` periods
-    before the first row is taken too, so a log that starts moving reads right at once."""
+    before the first row is taken too, so a log that starts moving reads right at once.
+    ``table``: the model's angle table when already made (``pieces(st, T, fx, z0)``)."""
     n = fx.taps
     tb = t[0] - ts * np.arange(n, 0, -1)
-    theta = angle_at(pieces(st, T, fx, z0), np.concatenate((tb, t)), fx)
+    if table is None:
+        table = pieces(st, T, fx, z0)
+    theta = angle_at(table, np.concatenate((tb, t)), fx)
     out = measured(theta[n:], t, theta[:n], ts, n, over_interval)
     if fx.pole_filtered and fx.pole_measured and fx.T2 > 0.0:
         out = iir(out, math.exp(-ts / fx.T2))
