@@ -50,7 +50,6 @@ from minseg_tui.model.check.effects import (
 )
 from minseg_tui.model.check.simulate import (
     Effects,
-    Pieces,
     Stretches,
     angle_at,
     measured,
@@ -149,7 +148,6 @@ class Problem:
     _scale: dict[int, FloatArray | None] = field(default_factory=dict, repr=False)
     _restart: dict[tuple[object, ...], FloatArray] = field(default_factory=dict, repr=False)
     _yw_kept: dict[int, FloatArray] = field(default_factory=dict, repr=False)
-    _tables: dict[tuple[float, Effects], Pieces] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         if self.weights.size != self.y.size:
@@ -226,23 +224,6 @@ class Problem:
             out.append((int(after[0]) if after.size else self.y.size, col))
         return out
 
-    def table(self, T: float, fx: Effects) -> Pieces:
-        """The angle table of the model (T in s, fx) on this log (:func:`.simulate.pieces`),
-        kept for the last ``TABLES`` models: the dead time and the average are applied when
-        the table is read, so a Jacobian's column of the delay and an average's neighbouring
-        lengths read a table already made (the same table, not a new one like it)."""
-        core = replace(fx, delay=0.0, taps=1) if fx.delay != 0.0 or fx.taps != 1 else fx
-        key = (T, core)
-        if not _no_negative_zero(T, core):
-            return pieces(self.st, T, fx, self.z0)  # -0.0 == 0.0: a key could mislead
-        table = self._tables.get(key)
-        if table is None:
-            table = pieces(self.st, T, fx, self.z0)
-            if len(self._tables) >= TABLES:
-                del self._tables[next(iter(self._tables))]
-            self._tables[key] = table
-        return table
-
     def head(self, rows: int) -> Problem:
         """The first ``rows`` rows as a problem of their own (same weights)."""
         if rows >= self.y.size:
@@ -262,19 +243,6 @@ class Problem:
     @property
     def rows(self) -> int:
         return int(np.count_nonzero(self.keep))
-
-
-TABLES = 8
-"""Angle tables a problem keeps (:meth:`Problem.table`; a table repeated within a fit is
-mostly one of the last three made)."""
-
-
-def _no_negative_zero(T: float, fx: Effects) -> bool:
-    """No number of the model is -0.0 (which equals 0.0 and hashes alike, so a table keyed
-    by it could stand for a model whose arithmetic differs in a zero's sign)."""
-    values = [T, *(v for v in vars(fx).values() if isinstance(v, float))]
-    values += [x.value for x in fx.extra]
-    return not any(v == 0.0 and math.copysign(1.0, v) < 0.0 for v in values)
 
 
 @dataclass(frozen=True)
@@ -425,7 +393,7 @@ class Model:
     def response(self, T: float, fx: Effects) -> FloatArray:
         self.evaluations += 1
         p = self.prob
-        return response(p.st, p.t, p.ts, T, fx, p.z0, p.over_interval, p.table(T, fx))
+        return response(p.st, p.t, p.ts, T, fx, p.z0, p.over_interval)
 
     def fit_k(
         self, g: FloatArray, taps: int, cols: Sequence[tuple[int, FloatArray]] = ()
@@ -562,7 +530,7 @@ class Model:
         top = max(tries)
         p = self.prob
         tb = p.t[0] - p.ts * np.arange(top, 0, -1)
-        theta = angle_at(p.table(T, fx), np.concatenate((tb, p.t)), fx)
+        theta = angle_at(pieces(p.st, T, fx, p.z0), np.concatenate((tb, p.t)), fx)
         self.evaluations += 1
         best, best_sse = 1, math.inf
         for n in tries:

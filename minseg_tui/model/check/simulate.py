@@ -228,18 +228,6 @@ def _exp(x: float) -> float:
     return math.exp(x) if x > -700.0 else 0.0
 
 
-_SURE = 1e-9
-"""Margin of :func:`_kept_sign` over rounding (a sum of a few terms is off by a few 1e-16 of
-their sizes)."""
-
-
-def _kept_sign(k: float, swing: float, scale: float) -> bool:
-    """True when k + x keeps k's sign, as a float too, for every |x| <= ``swing``: the terms
-    of the sum summed to at most ``scale`` in size. A root search of a constant ``k`` plus
-    terms that never exceed ``swing`` then finds no change of sign, evaluated or not."""
-    return abs(k) - swing > _SURE * (scale + swing)
-
-
 def _first_zero(f: Callable[[float], float], t_ext: float | None, length: float) -> float | None:
     """First tau in (0, length] where f changes sign, for f with at most one extremum in
     between (at ``t_ext`` when given); None when it does not."""
@@ -474,8 +462,7 @@ def _capped(
         out.add(s.t, s.th, w_inf, 0.0, a, tc)
 
         def w_at(tau: float) -> float:
-            x = -tau / tc
-            return w_inf + a * (math.exp(x) if x > -700.0 else 0.0)
+            return w_inf + a * _exp(-tau / tc)
 
     else:
         out.add(s.t, s.th, w0, 0.5 * acc)
@@ -502,9 +489,7 @@ def _capped(
     else:
 
         def g(tau: float) -> float:
-            x = -tau / T2
-            e2 = math.exp(x) if x > -700.0 else 0.0
-            return d * sign * (u + (v0 - u) * e2 - keep * w_at(tau)) - T * rate
+            return d * sign * (u + (v0 - u) * _exp(-tau / T2) - keep * w_at(tau)) - T * rate
 
         if drag > 0.0:
             ext = _two_exp_extremum(v0 - u, T2, -keep * a, tc)
@@ -541,19 +526,10 @@ def _ring_zero(k: float, p: float, q: float, sig: float, om: float, length: floa
     """First tau in (0, length] where k + exp(-sig tau) (p cos(om tau) + q sin(om tau))
     changes sign (sig in 1/s, om in rad/s); None when it does not. Its extrema are where
     the derivative, exp(-sig tau) (p' cos + q' sin), is zero: every pi/om from the first."""
-    # the swing is at most amp exp(-sig tau): where that stays under |k|, g keeps k's sign,
-    # so the cuts after the first such one cannot hold the first change of sign (the same
-    # answer as with every cut, without evaluating them)
-    amp = math.hypot(p, q)
-    if _kept_sign(k, amp, abs(k)):
-        return None
     dp, dq = -sig * p + om * q, -sig * q - om * p
 
     def g(tau: float) -> float:
-        x = -sig * tau
-        return k + (math.exp(x) if x > -700.0 else 0.0) * (
-            p * math.cos(om * tau) + q * math.sin(om * tau)
-        )
+        return k + _exp(-sig * tau) * (p * math.cos(om * tau) + q * math.sin(om * tau))
 
     half = math.pi / om
     first = (math.atan2(dq, dp) + 0.5 * math.pi) % math.pi / om
@@ -570,8 +546,6 @@ def _ring_zero(k: float, p: float, q: float, sig: float, om: float, length: floa
     while x < length and len(cuts) < 400:
         if x > 0.0:
             cuts.append(x)
-            if _kept_sign(k, amp * _exp(-sig * x) * (1.0 + 1e-6), abs(k)):
-                return _zero_between(g, cuts)
         x += half
     cuts.append(length)
     return _zero_between(g, cuts)
@@ -688,18 +662,11 @@ def _linear(
         else:
 
             def w(tau: float) -> float:
-                x1, x2 = -tau / T, -tau / T2
-                return sign * (
-                    c
-                    + A * (math.exp(x1) if x1 > -700.0 else 0.0)
-                    + B * (math.exp(x2) if x2 > -700.0 else 0.0)
-                )
+                return sign * (c + A * _exp(-tau / T) + B * _exp(-tau / T2))
 
-            swing = abs(A) + abs(B)
-            if not _kept_sign(c, swing, abs(c)):
-                hit = _first_zero(w, _two_exp_extremum(A, T, B, T2), min(left, 50.0 * (T + T2)))
-                if hit is not None:
-                    stop_at = hit
+            hit = _first_zero(w, _two_exp_extremum(A, T, B, T2), min(left, 50.0 * (T + T2)))
+            if hit is not None:
+                stop_at = hit
         events.append(stop_at)
     cap_at = math.inf
     keep = 1.0 - drag
@@ -708,16 +675,12 @@ def _linear(
         kv = v0 - u - keep * B
         base = u - keep * c
 
-        swing = abs(kv) + abs(keep * A)
         for d in (1.0, -1.0) if both else (1.0,):
-            if _kept_sign(d * sign * base - T * rate, swing, abs(base) + T * rate):
-                continue
 
             def g(tau: float, d: float = d) -> float:
-                x1, x2 = -tau / T, -tau / T2
-                e1 = math.exp(x1) if x1 > -700.0 else 0.0
-                e2 = math.exp(x2) if x2 > -700.0 else 0.0
-                return d * sign * (base + kv * e2 - keep * A * e1) - T * rate
+                return (
+                    d * sign * (base + kv * _exp(-tau / T2) - keep * A * _exp(-tau / T)) - T * rate
+                )
 
             hit = _first_zero(
                 g, _two_exp_extremum(kv, T2, -keep * A, T), min(left, 50.0 * (T + T2))
@@ -780,18 +743,14 @@ def response(
     fx: Effects,
     z0: float | None = 0.0,
     over_interval: bool = False,
-    table: Pieces | None = None,
 ) -> FloatArray:
     """The measured speed the model (T, fx) predicts on every row (K = 1), as the log
     measured it: the angle difference over ``fx.taps`` samples divided by the nominal
     period (or by the real interval, ``over_interval``); the angle ``fx.taps`` periods
-    before the first row is taken too, so a log that starts moving reads right at once.
-    ``table``: the model's angle table when already made (``pieces(st, T, fx, z0)``)."""
+    before the first row is taken too, so a log that starts moving reads right at once."""
     n = fx.taps
     tb = t[0] - ts * np.arange(n, 0, -1)
-    if table is None:
-        table = pieces(st, T, fx, z0)
-    theta = angle_at(table, np.concatenate((tb, t)), fx)
+    theta = angle_at(pieces(st, T, fx, z0), np.concatenate((tb, t)), fx)
     out = measured(theta[n:], t, theta[:n], ts, n, over_interval)
     if fx.pole_filtered and fx.pole_measured and fx.T2 > 0.0:
         out = iir(out, math.exp(-ts / fx.T2))
