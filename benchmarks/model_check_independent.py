@@ -571,8 +571,10 @@ fewer starts where the real pair cannot be beaten by it.
 
 s34-cpu (issue 17 item 8, the worst log's CPU; 80a1f26): nothing kept, the check is main's.
 Where the worst held-out log (second_pole + current_limit 900001, 10.1 s CPU at a load
-average of about 20; 7 s on a quieter machine) spends it: 10,403 simulations, 6.49 s in
-simulate.pieces; the ringing pair's ways 2,788 of them (2.90 s), a pole on the drive with a
+average of about 20; 7 s on a quieter machine) spends it: 10,403 simulations (190
+Levenberg-Marquardt runs of 1,284 iterations: 6,315 for Jacobians, 1,777 for trial steps
+that raised the sum and were refused, 584 of those in the 73 runs that ended on 8 refusals),
+6.49 s in simulate.pieces; the ringing pair's ways 2,788 of them (2.90 s), a pole on the drive with a
 cap 2,880 (2.48 s), a driver's lag 455 (0.39 s), every other model 4,280 (0.72 s). Beside
 the cap (its pairs, and triples of 8 ways each) the ringing ways were fitted 24 times and
 never won; with no ringing way beside a cap (an experiment on main, _ring_worth False for
