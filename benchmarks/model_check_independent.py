@@ -577,10 +577,15 @@ that raised the sum and were refused, 584 of those in the 73 runs that ended on 
 6.49 s in simulate.pieces; the ringing pair's ways 2,788 of them (2.90 s), a pole on the drive with a
 cap 2,880 (2.48 s), a driver's lag 455 (0.39 s), every other model 4,280 (0.72 s). Beside
 the cap (its pairs, and triples of 8 ways each) the ringing ways were fitted 24 times and
-never won; with no ringing way beside a cap (an experiment on main, _ring_worth False for
-any fit holding current_limit; it changes what is fitted) this log took 5.46 s against 9.50
-s run beside it, with the same causes, no ambiguity and T, K, a_max and T2 to 4 digits (other
-logs not run: that gate is the check's decision, calibrated by s33-check on tuning seeds). A pole + cap simulation (38 stretches) costs 0.8-1.2 ms, of which 71-77 % is the
+never won. An experiment on main, not kept (it changes what is fitted: the check's decision,
+calibrated by s33-check on tuning seeds 11-34): no ringing way beside a cap (_ring_worth False
+for any fit holding current_limit), check_verdicts.py run side by side with main at a load
+average of 10-13. Held-out pairs: 0 of 75 verdicts differ, CPU per log median 0.874 -> 0.855
+s, worst 11.31 -> 6.39 s (this log), total 104.0 -> 93.7 s. Tuning pairs (seeds 0-9): 1 of
+150 differs, second_pole + current_limit 0 (a driver's pole of 57 ms, T 99 ms, a_max 54),
+named the same causes with T 84 ms = T2 before and T 107 ms, T2 38 ms after (wrong both
+ways by the 15 % and 25 % margins); worst 5.72 -> 4.57 s, total 147.2 -> 137.0 s, median
+0.647 s both. So that gate would take the worst log to about 6 s, not 1.5. A pole + cap simulation (38 stretches) costs 0.8-1.2 ms, of which 71-77 % is the
 root searches (0.82 -> 0.19 ms and 0.83 -> 0.24 ms with them stubbed out): 44 events a
 simulation with a drive pole and a cap, 28 with the ringing pair, each 10-13 evaluations of
 the Illinois search, the approach from a span of up to 50 T taking most of them (a tolerance
