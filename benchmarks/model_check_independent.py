@@ -568,6 +568,52 @@ right): 7 s is still too long for the TUI's worker. What would cut it changes nu
 needs a verdict diff of its own: the ringing pair's extrema found without walking every half
 period over 50 T (a closed-form bound on the swing first), or the ringing way fitted from
 fewer starts where the real pair cannot be beaten by it.
+
+s34-cpu (issue 17 item 8, the worst log's CPU; 80a1f26): nothing kept, the check is main's.
+Where the worst held-out log (second_pole + current_limit 900001, 10.1 s CPU at a load average
+of about 20; 7 s on a quieter machine) spends it: 10,403 simulations (190 Levenberg-Marquardt
+runs of 1,284 iterations: 6,315 for Jacobians, 1,777 for trial steps that raised the sum and
+were refused, 584 of those in the 73 runs that ended on 8 refusals), 6.49 s in simulate.pieces;
+the ringing pair's ways 2,788 of them (2.90 s), a pole on the drive with a cap 2,880 (2.48 s),
+a driver's lag 455 (0.39 s), every other model 4,280 (0.72 s). Beside the cap (its pairs, and
+triples of 8 ways each) the ringing ways were fitted 24 times and never won. An experiment on
+main, not kept (it changes what is fitted: the check's decision, calibrated by s33-check on
+tuning seeds 11-34): no ringing way beside a cap (_ring_worth False for any fit holding
+current_limit), check_verdicts.py run side by side with main at a load average of 10-13.
+Held-out pairs: 0 of 75 verdicts differ, CPU per log median 0.874 -> 0.855 s, worst 11.31 ->
+6.39 s (this log), total 104.0 -> 93.7 s. Tuning pairs (seeds 0-9): 1 of 150 differs,
+second_pole + current_limit 0 (a driver's pole of 57 ms, T 99 ms, a_max 54), named the same
+causes with T 84 ms = T2 before and T 107 ms, T2 38 ms after (wrong both ways by the 15 % and
+25 % margins); worst 5.72 -> 4.57 s, total 147.2 -> 137.0 s, median 0.647 s both. So that gate
+would take the worst log to about 6 s, not 1.5. A pole + cap simulation (38 stretches) costs
+0.8-1.2 ms, of which 71-77 % is the root searches (0.82 -> 0.19 ms and 0.83 -> 0.24 ms with
+them stubbed out): 44 events a simulation with a drive pole and a cap, 28 with the ringing
+pair, each 10-13 evaluations of the Illinois search, the approach from a span of up to 50 T
+taking most of them (a tolerance of 1e-7 s instead of 1e-10 saves about one evaluation a root).
+Tried, measured, not kept: (1) the same floats by construction, a root search skipped where a
+constant plus terms that cannot reach its size keeps its sign (the ringing swing past its
+envelope; a stop or cap of two exponentials) and an angle table kept per problem for the dead
+time's Jacobian column and an average's neighbours (9 % of the worst log's simulations repeat
+one): the check's whole repr identical on 28 held-out pair logs run side by side with main, CPU
+total 30.61 -> 30.79 s (median ratio 1.008; the table's key, a 15-field Effects hashed and
+compared, cost as much as its hits saved, the envelope cut 15 % of the ringing searches'
+evaluations and cost as much in its own checks); (2) Newton's steps with the exact slope kept
+inside the bracket: about 7 evaluations a root against 8-9 Illinois steps, but each also
+computes the slope: a pole + cap simulation 1.00 -> 1.10 ms (it moves floats, so it was not
+taken further); (3) a later way of fit_causes skipped when its best start leaves many times the
+best fit so far: on 6 slow logs (this one; tuning pair seeds friction + cap 2, delay + cap 0
+and 9, average + pole 2, friction + pole 4) losing later ways took 9,421 simulations and
+winning ones 7,928, and a winner started from 26.6 times the best so far (ending at 0.52 times
+it); only starts above 100 times (2,042 simulations) would be safe on that evidence: not done,
+it changes what is fitted and needs the full verdict diff. What would reach 1.5 s: the same
+Illinois steps in compiled code (the loop over stretches and its root searches are scalar; a
+dependency for the lead to decide), or a search that fits far fewer ways of a pole beside a cap
+(the ringing ways alone take it to about 6 s, above; a triple's pole fitted only in the way its
+pair chose is another, not measured), which changes decisions and needs calibration on the
+tuning seeds and a verdict diff of every set: benchmarks/check_verdicts.py writes every log's
+verdict (and a hash of its whole result, and its CPU) for the sets of these benchmarks and
+diffs two runs log by log (on main at a load average of 10-20: the 75 held-out pairs 119 s CPU,
+the 20 touched logs 19 s, the 35 singles 11 s, the tuning pairs about 0.9 s a log).
 """
 
 from __future__ import annotations
