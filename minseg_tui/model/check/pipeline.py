@@ -339,8 +339,8 @@ def _departing(
     judges every departure (``noise``: the speed's noise around it, rad/s; ``ts``: the
     nominal sample period, s): a departure the model follows there was the miss of another
     model, not something that moved the wheel. One it departs from for longer than found
-    (its end, or the wheel's way back, past theirs) comes back widened to that, its restart
-    to be placed again."""
+    (its end, or the wheel's way back, past theirs), so far that the way back runs on past
+    the next step, comes back widened to that, to be restarted where the hand let go."""
     taps = ext.effects.taps
     rise = dist.settle_rows(ext.T, ext.effects.delay, taps, ts)
     res = full.y - ext.predict(full)
@@ -353,9 +353,14 @@ def _departing(
         end = max(d.end, *(e.end for e in over))
         until = max(d.until, *(e.until for e in over))
         if end > d.end or until > max(d.end, d.until):
-            # seen departing for longer: fenced (or restarted) from where it lets go now
+            # seen departing for longer: where the way back then runs on past a step, the
+            # model restarts from where the hand let go (the step's response stays in);
+            # a fence that only grows is kept as found (a longer fence alone lets a
+            # spurious cap in: tuning seeds 1014, 1057)
             let_go = max(d.let_go, *(e.let_go for e in over))
-            d = replace(d, end=end, until=until, let_go=let_go, free=-1)
+            wide = replace(d, end=end, until=until, let_go=let_go, free=-1)
+            if dist.restarted([wide], full.u)[0][0].free >= 0:
+                d = wide
         out.append(d)
     return out
 
