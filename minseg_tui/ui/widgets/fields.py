@@ -1238,9 +1238,9 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         takes itself, as it answers Textual's ``check_consume_key`` (z or [ on the run log),
         goes on to its binding; any other character goes into the first empty entry, Space
         only mid-word), or handed to the form before a key ahead of it moved the focus
-        away (a palette opened): a character goes into the entry as well, any other key goes
-        on up to the app, which runs the binding of the widget focused now, as Textual runs
-        a key's binding. No key is posted again."""
+        away (Tab onto a plot of the step): a character goes into the entry as well, any
+        other key goes on up to the app, which runs the binding of the widget focused now, as
+        Textual runs a key's binding. No key is posted again."""
         inside = focused is not None and self in focused.ancestors
         key = event.key
         if inside and focused is not None and focused.check_consume_key(key, event.character):
