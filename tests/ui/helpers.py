@@ -14,6 +14,7 @@ from collections.abc import Callable
 from contextlib import suppress
 
 from textual import events
+from textual.color import Color
 from textual.message import Message
 from textual.pilot import Pilot
 from textual.widgets import OptionList
@@ -204,6 +205,29 @@ def keys_box(app: LabApp) -> EntryBox | AnswerList | None:
     if not isinstance(focused, FieldForm):
         return None
     return focused.keys_box
+
+
+def on_the_list(app: LabApp) -> bool:
+    """The group is on the list of steps (Ctrl+L), as they see it and as the keys act: the
+    list shows, its highlighted step drawn in the cursor's colours, as a list holding the
+    keys draws it (a list without them draws it in the blurred cursor's); the step's form
+    has the keys and browses the list with them (↑/↓ show the step before or after, a
+    character goes into the first empty entry); and no entry of the step is current, so no
+    box takes the keys."""
+    screen = app.screen
+    if not isinstance(screen, LabScreen) or not screen.query("#nav"):
+        return False
+    nav = screen.query_one("#nav", OptionList)
+    pane = screen.pane
+    cursor = nav.get_visual_style("option-list--option", "option-list--option-highlighted")
+    keys_colour = Color.parse(app.theme_variables["block-cursor-background"])
+    return (
+        nav.display
+        and cursor.background == keys_colour
+        and app.focused is pane
+        and pane.browsing
+        and pane.current is None
+    )
 
 
 def shown(app: LabApp, step_id: str | None = None) -> bool:

@@ -16,7 +16,16 @@ from textual.command import CommandPalette
 from minseg_tui.lab.saving.store import list_sessions
 from minseg_tui.lab.state.session import Session
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import box_text, burst, goto, settle, shown, start, stored_text
+from tests.ui.helpers import (
+    box_text,
+    burst,
+    goto,
+    on_the_list,
+    settle,
+    shown,
+    start,
+    stored_text,
+)
 
 PLACES = ["entry", "list of steps"]
 """Where the focus is when the value is typed: in the step's entry, or on the list of steps
@@ -31,7 +40,7 @@ async def _on(pilot, step_id: str, place: str) -> None:
     await goto(pilot, step_id)
     if place == "list of steps":
         await pilot.press("ctrl+l")
-        await settle(pilot, lambda: pilot.app.focused is pilot.app.screen.query_one("#nav"))
+        await settle(pilot, lambda: on_the_list(pilot.app))
 
 
 @pytest.mark.parametrize("place", PLACES)

@@ -18,7 +18,16 @@ from minseg_tui.ui.screens.help import KeyList
 from minseg_tui.ui.widgets.plots import TracePlot
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import burst, goto, settle, shown, start, start_with_a_run, typing_box
+from tests.ui.helpers import (
+    burst,
+    goto,
+    on_the_list,
+    settle,
+    shown,
+    start,
+    start_with_a_run,
+    typing_box,
+)
 
 
 async def test_home_and_end_move_the_rise_cursor_to_the_ends_not_the_page(quiet):
@@ -141,7 +150,7 @@ async def test_the_arrows_on_the_list_of_steps_stop_at_its_ends_and_pgup_goes_ba
         await start_with_a_run(pilot, "model_check")
         await pilot.press("ctrl+l")
         await settle(pilot)
-        assert app.focused is app.screen.query_one("#nav")
+        assert on_the_list(app)
         for key, there in (("down", "summary"), ("down", "summary"), ("pageup", "model_check")):
             await pilot.press(key)
             await settle(pilot)

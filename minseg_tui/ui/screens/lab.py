@@ -206,6 +206,9 @@ class StepPane(FieldForm):
     :meth:`show` puts the next step's widgets in it, so that the keys typed after PgDn, still
     on their way to it, land in the new step. :meth:`focus_on` lands in the step."""
 
+    browsing: reactive[bool] = reactive(False, init=False)
+    """The group browses the list of steps: the form's keys drive it (:meth:`browse`)."""
+
     def __init__(
         self,
         store: Store,
@@ -340,6 +343,7 @@ class StepPane(FieldForm):
             row.call_after_refresh(row.bring_into_view)
 
     def on_descendant_focus(self, event: events.DescendantFocus) -> None:
+        self.browsing = False
         if self._keep == "scrolled":
             self._keep = "focused"
         self.call_after_refresh(self._clear_heading, event.widget)
@@ -415,6 +419,8 @@ class StepPane(FieldForm):
 
     def watch_current(self, old: FieldRow | None, new: FieldRow | None) -> None:
         super().watch_current(old, new)
+        if new is not None:
+            self.browsing = False
         if new is not None and self._keep == "scrolled":
             self._keep = "focused"
         box = new.box if new is not None and new.is_attached else None
@@ -448,6 +454,55 @@ class StepPane(FieldForm):
     def action_scroll_up(self) -> None:
         self._scroll_lines(-1)
 
+    def _nav(self) -> StepList | None:
+        navs = self.screen.query("#nav")
+        nav = navs.first() if navs else None
+        return nav if isinstance(nav, StepList) else None
+
+    def browse(self) -> None:
+        """The group browses the list of steps (Ctrl+L, Shift+Tab out of the step): the form
+        keeps the focus with no current row (what stands in the row left is stored), and
+        ↑/↓, Home/End and Enter drive the list (:meth:`off_rows_key`); a character goes
+        into the step's first empty entry, as anywhere outside the rows."""
+        self.store_pending()
+        self.current = None
+        self.browsing = True
+        if self.screen.focused is not self:
+            self.screen.set_focus(self, scroll_visible=False)
+
+    def watch_browsing(self, browsing: bool) -> None:
+        nav = self._nav()
+        if nav is not None:
+            nav.set_class(browsing, "-browsing")
+
+    def off_rows_key(self, key: str) -> bool:
+        """While browsing: ↑/↓ the step before or after (shown, the form staying on the
+        list), Home/End the first or last, Enter into the step's entry."""
+        nav = self._nav()
+        if not self.browsing or nav is None:
+            return False
+        if key == "down":
+            nav.action_cursor_down()
+        elif key == "up":
+            nav.action_cursor_up()
+        elif key == "home":
+            nav.action_first()
+        elif key == "end":
+            nav.action_last()
+        elif key == "enter":
+            self.focus_on("entry")
+        else:
+            return False
+        return True
+
+    def leave(self, delta: int) -> bool:
+        """Tab or Shift+Tab out of the step: to the list of steps, while it shows."""
+        nav = self._nav()
+        if nav is None or not nav.display:
+            return False
+        self.browse()
+        return True
+
     def landing_row(self) -> FieldRow | None:
         """The entry the step lands in: the first one with nothing in it, else the first;
         on a step with a panel, its notes and its done? do not count (the step lands at the
@@ -470,22 +525,31 @@ class StepPane(FieldForm):
                 self._keep = row
             else:
                 self.current = None
+                self.browsing = False
                 self.screen.set_focus(self)
             return
         for w in self.query(what):
             self.screen.set_focus(w)
 
 
-class StepList(OptionList):
-    """The list of steps: a character typed on it goes into the step's first empty entry
-    (:meth:`FieldForm.take`), not nowhere.
+class StepList(OptionList, can_focus=False):
+    """The list of steps. It never takes the focus: the step's form holds it, and while the
+    group browses the steps (Ctrl+L, Shift+Tab out of the step) the form's keys drive the
+    list (:meth:`StepPane.browse`), shown as focused meanwhile (``-browsing``). So every key
+    typed on the lab screen is in the form's one queue: a character typed while browsing
+    goes into the step's first empty entry, and the keys after it follow it there, with no
+    key ever waiting in the list's queue for the form."""
 
-    A key handler, because nothing else of Textual's does it: a binding names a key, not
-    "any printable character"; an OptionList lets a character bubble up to the screen and
-    the app, where no one takes it; and the list keeps its focus (Ctrl+L, the arrows browse
-    the steps), so ``can_focus=False`` or a focus move would lose that. The handler runs in
-    the list's own queue, in the order typed, and hands the character to the form by a plain
-    call, no second queue: the characters after it follow it into the same entry."""
+    DEFAULT_CSS = """
+    StepList.-browsing {
+        background-tint: $foreground 5%;
+        & > .option-list--option-highlighted {
+            color: $block-cursor-foreground;
+            background: $block-cursor-background;
+            text-style: $block-cursor-text-style;
+        }
+    }
+    """
 
     def action_cursor_down(self) -> None:
         """↓: the next step, none after the last. Textual's list goes round to its first
@@ -499,30 +563,12 @@ class StepList(OptionList):
         if self.highlighted is None or self.highlighted > 0:
             super().action_cursor_up()
 
-    def on_key(self, event: events.Key) -> None:
-        # Stays: Textual hands each key to the widget focused when the app reads it, without
-        # waiting for the keys before it (textual/app.py:4136-4138), so the keys typed after
-        # a character that moves the focus into the step are already in this list's queue;
-        # and the form is not above the list, so nothing of them bubbles to it. Without the
-        # hand-over test_walk8_enter (4 of 4) and test_keys_not_posted_again's
-        # test_enter_after_characters_typed_on_the_list_is_not_posted_again fail.
+    def focus(self, scroll_visible: bool = True) -> StepList:
+        """Focusing the list: the group browses the steps (:meth:`StepPane.browse`)."""
         screen = self.screen
-        if isinstance(screen, LabScreen) and event.is_printable and event.character:
-            if screen.pane.typing_row() is not None and not screen.readonly:
-                event.stop()
-                event.prevent_default()
-                screen.pane.take(event.character)
-                return
-        focused = screen.focused
-        if isinstance(screen, LabScreen) and focused is not None and focused is not self:
-            # a key the app sent here before a character ahead of it moved the focus into
-            # the step: the step's form takes it now, by a plain call in this queue, as it
-            # takes the characters ('53' Enter in one burst after Shift+Tab put 53 into R,
-            # and the list took the Enter as its own; R kept '5,3': walk 8, D6). Focused
-            # elsewhere, the key goes on up to the app, which runs that widget's binding.
-            pane = screen.pane
-            if focused is pane or pane in focused.ancestors:
-                pane.type_key(event)
+        if isinstance(screen, LabScreen):
+            screen.pane.browse()
+        return self
 
 
 class StepCommands(Provider):
@@ -788,8 +834,8 @@ class LabScreen(StatusScreen):
         if isinstance(panel, PanelKeys) and self.offers(action):
             # Stays a call from here: Textual looks for a key's bindings only from the
             # focused widget up (textual/screen.py:408-424), and the panel is never focused
-            # (the step's form around it holds the focus, and the list of steps may), so
-            # bindings of its own would never run. The app binds its keys with priority and
+            # (the step's form around it holds the focus), so bindings of its own would
+            # never run. The app binds its keys with priority and
             # hands them here (F4 on Task 5 from the form: test_bursts's
             # test_the_reading_typed_right_after_f4_goes_into_the_next_entry).
             done = panel.key_actions()[action]()
@@ -910,12 +956,12 @@ class LabScreen(StatusScreen):
     # -- moving ------------------------------------------------------------------------
     @on(OptionList.OptionHighlighted, "#nav")
     async def _highlighted(self, event: OptionList.OptionHighlighted) -> None:
-        """The group browses the list of steps: each step shows, the focus stays on the list
-        (moved by the mouse from elsewhere: the step's entry)."""
+        """The group browses the list of steps: each step shows, the form stays on the list
+        (:attr:`StepPane.browsing`; moved by the mouse: the step's entry)."""
         if event.option_index != event.option_list.highlighted:
             return  # stale: the list's first highlight on mount, after a resume moved it on
         if event.option.id:
-            focus = None if self.focused is event.option_list else "entry"
+            focus = None if self.pane.browsing else "entry"
             await self.show_step(event.option.id, focus)
 
     def _highlight(self, index: int) -> None:
@@ -975,7 +1021,7 @@ class LabScreen(StatusScreen):
     def action_focus_nav(self) -> None:
         nav = self.query_one("#nav")
         nav.display = True
-        nav.focus()
+        self.pane.browse()
 
     def action_whole_todo(self) -> None:
         """Ctrl+O: the whole of the step's "What to do" (again: folded)."""
@@ -985,6 +1031,8 @@ class LabScreen(StatusScreen):
         """Hide or show the list of steps (more room for the step at 80 columns)."""
         nav = self.query_one("#nav")
         nav.display = not nav.display
+        if not nav.display:
+            self.pane.browsing = False
 
     def refresh_marks(self) -> None:
         """Update the status marks in the navigator after an entry or a run."""

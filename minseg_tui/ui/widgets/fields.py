@@ -890,8 +890,8 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
 
     ``current`` is the row the keys go to (None: the step itself, at its top; the arrows
     scroll it). Keys a focused widget of the step (a plot, a table) passes up, and
-    characters typed on the list of steps or on a list of answers (:meth:`take`), go into
-    the first empty entry."""
+    characters typed while the group browses the list of steps or on a list of answers
+    (:meth:`take`), go into the first empty entry."""
 
     BINDINGS = [
         Binding("up", "scroll_up", show=False),
@@ -1053,9 +1053,9 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         return next((r for r in rows if r.is_empty), rows[0] if rows else None)
 
     def take(self, character: str) -> None:
-        """A character typed outside the rows (on the list of steps, a list of answers, the
-        step's text): it goes into :meth:`typing_row`, replacing what that holds, and the
-        keys after it go on there."""
+        """A character typed outside the rows (browsing the list of steps, on a list of
+        answers, the step's text): it goes into :meth:`typing_row`, replacing what that
+        holds, and the keys after it go on there."""
         if self.readonly:
             return
         row = self.current if self._taking else None
@@ -1093,6 +1093,8 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
                 self.store_pending()
                 self.screen.set_focus(target)
             return
+        if self.leave(delta):
+            return
         chain = self.screen.focus_chain
         outside = [w for w in chain if w is not self and self not in w.ancestors]
         if not outside:
@@ -1108,8 +1110,8 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             self.screen.set_focus((before or outside)[-1])
 
     def enter(self, delta: int) -> None:
-        """The focus comes in from outside (Tab from the list of steps): the first target
-        of the step (the last with Shift+Tab)."""
+        """The focus comes in from outside: the first target of the step (the last with
+        Shift+Tab)."""
         self.current = None
         self.move_focus(delta, None)
 
@@ -1164,7 +1166,21 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         if row is not None:
             return not row.input.disabled and row.input.edit(key)
         answers = self.answering
-        return answers is not None and answers.press(key)
+        if answers is not None:
+            return answers.press(key)
+        return self.current is None and self.off_rows_key(key)
+
+    def off_rows_key(self, key: str) -> bool:
+        """A row key (an arrow, Home/End, Space, Enter) with no current row, the form
+        focused: nothing here (False: Textual hands it on). The lab's step form drives its
+        list of steps with them while the group browses it."""
+        return False
+
+    def leave(self, delta: int) -> bool:
+        """Tab past the step's last target (``delta`` 1) or Shift+Tab before its first (-1):
+        nothing here (False: the focus goes to the widget outside the form that the screen's
+        order puts next). The lab's step form goes to its list of steps."""
+        return False
 
     def _enter(self) -> bool:
         row = self.typing
@@ -1203,20 +1219,6 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             return True
         return False
 
-    def _act_now(self, key: str) -> bool:
-        """Key ``key``'s binding's work done now (:meth:`type_key`); False: none of the
-        form's, or it does nothing here."""
-        if key in ("tab", "shift+tab"):
-            return self._tab(1 if key == "tab" else -1)
-        if not self._on_form():
-            return False
-        if key == "enter":
-            return self._enter()
-        how = RESTORING_KEYS.get(key)
-        if how is not None:
-            return self._bring_back(how)
-        return key in ROW_KEYS and self._row_key(key)
-
     def on_key(self, event: events.Key) -> None:
         """A character typed into the form (see the keys' note above), or a key a focused
         widget of the step passes up (:meth:`_passed_on`). Also with another screen over the
@@ -1229,26 +1231,6 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             self._passed_on(event, focused)
             return
         self._taking = False
-        self._character(event)
-
-    def type_key(self, event: events.Key) -> None:
-        """A key handed over by the list of steps, which read it after a key ahead of it
-        moved the focus into the step (it calls this, a plain call in its own queue, where
-        the keys typed after it wait): the form's binding of it does its work now (the app
-        looked for bindings from the list, not the form), a character goes into the row.
-        A key that is neither goes on up to the app, which runs its binding (Textual's own
-        way, from the widget focused then); the keys bound to act in the order typed (PgDn,
-        the F-keys, Ctrl+P) never come here: the app runs them as it reads them, once the
-        keys ahead of them are handled (:func:`after_typed_keys`)."""
-        if self.app.screen is not self.screen:
-            return  # handed over before a key ahead of it opened another screen
-        if self._act_now(event.key):
-            self._own(event)
-            return
-        focused = self.screen.focused
-        if focused is not self:
-            self._passed_on(event, focused)
-            return
         self._character(event)
 
     def _character(self, event: events.Key) -> None:
@@ -1272,9 +1254,9 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         takes itself, as it answers Textual's ``check_consume_key`` (z or [ on the run log),
         goes on to its binding; any other character goes into the first empty entry, Space
         only mid-word), or handed to the form before a key ahead of it moved the focus
-        away: a character goes into the entry as well, any other key goes on up to the app,
-        which runs the binding of the widget focused now (↓ or Enter on the list of steps),
-        as Textual runs a key's binding. No key is posted again."""
+        away (Tab onto a plot of the step): a character goes into the entry as well, any
+        other key goes on up to the app, which runs the binding of the widget focused now, as
+        Textual runs a key's binding. No key is posted again."""
         inside = focused is not None and self in focused.ancestors
         key = event.key
         if inside and focused is not None and focused.check_consume_key(key, event.character):
