@@ -32,7 +32,16 @@ from minseg_tui.ui.keys import help_lines
 from minseg_tui.ui.screens.boardcheck import BoardCheckScreen, WheelQuestionScreen
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import LabScreen
-from tests.ui.helpers import box_text, burst, goto, lab_screen, settle, start, stored_text
+from tests.ui.helpers import (
+    box_text,
+    burst,
+    goto,
+    lab_screen,
+    on_the_list,
+    settle,
+    start,
+    stored_text,
+)
 from tests.ui.textual_internals import key_name
 
 SCREENS = {
@@ -115,19 +124,17 @@ async def test_a_reading_on_its_way_as_a_dialog_goes_lands_in_the_entry(quiet):
         assert stored_text(app, "i_ss@4.5") == "0.0372 A"
 
 
-async def test_characters_the_list_of_steps_hands_over_under_a_dialog_land_in_the_entry(quiet):
-    """Task 2 with the keys on the list of steps (Ctrl+L): '5,3' read there, the first
-    character handed to the step's entry by the list (it moves the focus into the step), a
-    dialog comes before the list has handed over the rest; it closes; Enter stores '5,3'."""
+async def test_characters_typed_on_the_list_of_steps_under_a_dialog_land_in_the_entry(quiet):
+    """Task 2 with the group on the list of steps (Ctrl+L): '5,3' read there (the step's
+    form has the keys while the group browses the list: they wait in its queue), a dialog
+    comes before the form has handled them; it closes; Enter stores '5,3'."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await goto(pilot, "task2")
         await burst(pilot, "ctrl+l")
-        screen_ = lab_screen(app)
-        nav = screen_.query_one("#nav")
-        assert app.focused is nav
-        _queued(app, nav, "5,3")
+        assert on_the_list(app)
+        _queued(app, lab_screen(app).pane, "5,3")
         screen = SCREENS["help"]()
         app.push_screen(screen)
         await settle(pilot, lambda: app.screen is screen)
@@ -139,20 +146,19 @@ async def test_characters_the_list_of_steps_hands_over_under_a_dialog_land_in_th
 
 async def test_enter_after_characters_still_on_the_list_when_the_focus_moved_stores_them(quiet):
     """The third lead, the text read before the keys reached the box: '5,3' read on the list
-    of steps (its queue), the focus moved into the step before the list handled them (as
-    F3 or a landing moves it), then Enter, whose action waits only for the widget focused
-    when it runs (the form). The list hands its characters over first: '5,3' is stored."""
+    of steps (in the form's queue: it has the keys while the group browses), the step's
+    entry made current before the form handled them (as F3 or a landing makes it), then
+    Enter: the characters are handled first, in the order read: '5,3' is stored."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
         await goto(pilot, "task2")
         await burst(pilot, "ctrl+l")
         lab = lab_screen(app)
-        nav = lab.query_one("#nav")
-        assert app.focused is nav
+        assert on_the_list(app)
         row = lab.pane.typing_row()
         assert row is not None and row.field.key == "R"
-        _queued(app, nav, "5,3")
+        _queued(app, lab.pane, "5,3")
         lab.pane.focus_row(row)  # no await between: the characters are still in the list's queue
         await burst(pilot, "enter")
         assert stored_text(app, "R") == "5,3"
