@@ -185,7 +185,9 @@ def render(result: Identification) -> str:
                 "(the first-order response fitted to the encoder angle at the log's sample times, so "
                 f"the sampling is part of the model, {timing}; {fit_why(fit.why)}; the model uses this T"
                 + (
-                    f"; the interval also holds the T of the rows up to {RISE_SPAN:g} T "
+                    "; the interval holds both"
+                    if fit.every_row_T is not None
+                    else f"; the interval also holds the T of the rows up to {RISE_SPAN:g} T "
                     f"after each edge alone, {format_number(fit.rise_T * 1e3)} ms"
                     if fit.rise_T is not None
                     else ""

@@ -105,7 +105,11 @@ def test_a_long_dead_time_does_not_hide_a_miss_of_the_rise():
     r = identify(table(8.8), 5.0, read_run_log(path))
     s = r.step
     assert s is not None and s.dead_time > 0.3 and s.T_63 is not None
-    assert s.T_63_model is not None and s.T_63 - s.T_63_model < -0.010
+    # since s34-rise the model follows the rise (T 39.0 ms, the speed creeps on after it):
+    # the reading is 3.6 ms shorter than the model read the same way, beyond the 2.8 ms the
+    # speed's scatter sways it
+    assert s.T_63_model is not None and s.T_63_note is not None and s.T_63_note.noise is not None
+    assert s.T_63 - s.T_63_model < -s.T_63_note.noise[1]
     assert "whole difference" not in t63_note(s.T_63_note)
     assert f"{(s.T_63 - s.T_63_model) * 1e3:+.1f} ms is the shape of the rise" in t63_note(
         s.T_63_note
@@ -191,4 +195,7 @@ def test_a_long_dead_time_on_a_short_log_finds_the_rise(end):
     )
     s = identify(table(8.8), 5.0, cut).step
     assert s is not None and not s.fit.T_on_bound and s.T_determined
-    assert 0.035 < s.T < 0.050 and 0.34 < s.dead_time < 0.36
+    # since s34-rise T follows the rise's rows where the speed creeps on after it: 34.7 and
+    # 34.9 ms, where a careful 63 % reading from the wheel's start gives 36.6 ms
+    # (test_identify_logs31.py)
+    assert 0.033 < s.T < 0.050 and 0.34 < s.dead_time < 0.36

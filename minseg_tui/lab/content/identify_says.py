@@ -51,7 +51,7 @@ from minseg_tui.model.identify.observations import (
     USsFromLog,
     USsInterpolated,
 )
-from minseg_tui.model.identify.risefit import RisesWhy, TimeConstantFit, WholeLogWhy
+from minseg_tui.model.identify.risefit import RISE_SPAN, RisesWhy, TimeConstantFit, WholeLogWhy
 from minseg_tui.quantities import (
     F_UNIT,
     RPM,
@@ -476,6 +476,28 @@ def _(o: ShiftMisfit) -> str:
 
 @sentence.register
 def _(o: TRowsApart) -> str:
+    if o.follows_rise and o.creep is not None and o.miss is not None:
+        return (
+            f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
+            f"edge alone give {format_constant(o.rise_T, 's')} (95 % "
+            f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}), all the rows the "
+            f"fit uses {format_constant(o.T, 's')}. After the rise the speed keeps creeping "
+            f"{'up' if o.creep[1] > o.creep[0] else 'down'}, from "
+            f"{format_number(o.creep[0], 3)} to {format_number(o.creep[1], 3)} rad/s by the end "
+            "of the step: a second, slower process, outside a first-order model. One time "
+            "constant cannot follow both: the fit of every row takes a longer T that partly "
+            "follows the creep, and its model rises more slowly than the wheel, by up to "
+            f"{format_number(o.miss, 2)} rad/s on the rise. So T, K, J and the model (Task 14) "
+            f"follow the rise: T = {format_constant(o.rise_T, 's')}"
+            + (
+                f", and K from the rise's steady speed ({format_number(o.rise_speed, 3)} rad/s)"
+                if o.rise_speed is not None
+                else ""
+            )
+            + "; the model leaves the creep out. "
+            f"{format_constant(o.T, 's')}, the T of every row, is the other reading. "
+            "The 95 % interval of T spans both fits. Read T with care."
+        )
     if o.creep is not None and o.miss is not None:
         return (
             f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
@@ -633,6 +655,9 @@ def as_json(result: Identification) -> dict[str, object]:
             "T_rise_rows": None
             if s.fit.rise_T is None or s.fit.rise_ci is None
             else {"T": s.fit.rise_T, "T_ci": [s.fit.rise_ci[0], s.fit.rise_ci[1]]},
+            **(
+                {"T_every_row": s.fit.every_row_T} if s.fit.every_row_T is not None else {}
+            ),  # the model follows the rise: every row's T is the other reading
             "T_shift_free": None
             if s.fit.free_T is None or s.fit.free_ci is None
             else {
@@ -658,13 +683,16 @@ def fit_why(why: WholeLogWhy | RisesWhy) -> str:
     "How T was fitted")."""
     if isinstance(why, RisesWhy):
         if why.flat:
-            return "the applied voltage u never changes in the log, so T comes from the rises"
+            return (
+                "the applied voltage u never changes in the log, so T comes from the rises"
+                + _follows_rise(why.every_row_T)
+            )
         times = f"{why.ratio:.1f} times" if why.ratio is not None else "more than"
         return (
             f"the first-order model over the whole log leaves {times} the "
             "residual of the steps fitted one by one (the wheel between the steps does not "
             "follow it: coasting at zero command, or a speed that wanders), so T comes from "
-            "the rises alone"
+            "the rises alone" + _follows_rise(why.every_row_T)
         )
     friction = (
         f"; dry friction found: breakaway at u_c = {format_number(why.u_c)} V in this fit "
@@ -682,7 +710,18 @@ def fit_why(why: WholeLogWhy | RisesWhy) -> str:
         f"one first-order model fits the whole log as well as {alone} "
         f"(on the {'rise' if why.one else 'rises'} its residual is "
         f"{why.ratio:.2f} times {theirs}), so "
-        f"{edges}{friction}"
+        f"{edges}{friction}{_follows_rise(why.every_row_T)}"
+    )
+
+
+def _follows_rise(every_row_T: float | None) -> str:
+    """The clause that says T follows the rise's rows, not every row (T of every row, s)."""
+    if every_row_T is None:
+        return ""
+    return (
+        "; but the speed creeps on after the rise, which one time constant does not follow "
+        f"together with it, so T is the fit of the rows up to {RISE_SPAN:g} T after each edge "
+        f"alone, the rise's (every row gives {format_constant(every_row_T, 's')})"
     )
 
 

@@ -22,6 +22,7 @@ from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.observations import (
     FRICTION_APART,
     Observation,
+    creep_after_rise,
     fit_observations,
     friction_observations,
     response_observations,
@@ -31,6 +32,7 @@ from minseg_tui.model.identify.risefit import (
     Rise,
     TimeConstantFit,
     fit_time_constant,
+    following_rise,
     model_reading_63,
     rises,
 )
@@ -75,7 +77,9 @@ class ResponseResult:
 
     K: static gain (rad/s per V, median over rises of the fitted omega_ss / u_ss);
     T: the least-squares time constant (s), the one the model uses, with the dead time
-    ``dead_time`` (s, 0 when the response follows the steps within a sample period);
+    ``dead_time`` (s, 0 when the response follows the steps within a sample period); where
+    the speed creeps on after the rise, T, the steady speeds (so K and omega_ss) and the
+    dead time are the fit of the rise's rows alone, and ``fit.every_row_T`` every row's T;
     glitch_rows: switch-on glitch rows at the start of the log, left out of everything; T_63: the median 63 %
     reading (s, None if no step crossed); T_ci: 95 % interval of T (s); J: inertia (kg m^2);
     omega_ss: median fitted steady speed of the steps (rad/s); u_ss: the applied voltage K
@@ -247,6 +251,12 @@ def _response_result(
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise InputError(log.source, None, "expected a usable rising edge")
+    # the rise and every row disagree because the speed creeps on after the rise: T, K, J and
+    # the model follow the rise, and every row's T is the other reading (issue 17)
+    every: TimeConstantFit | None = None
+    rise_only = following_rise(fit) if creep_after_rise(log, fit) is not None else None
+    if rise_only is not None:
+        every, fit = fit, rise_only
     steps = rises(log, fit)
     u_used: list[float] = []
     hows: list[UssHow] = []
@@ -327,7 +337,7 @@ def _response_result(
         if rows
         else []
     )
-    observations += fit_observations(whole_log, glitches, fit, result.T_determined)
+    observations += fit_observations(whole_log, glitches, fit, result.T_determined, every)
     observations += friction_observations(K, u_ss, result.u_c, result.K_above_u_c, U_TASK15)
     return result, observations
 

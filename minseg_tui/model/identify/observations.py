@@ -615,7 +615,9 @@ class TRowsApart(Observation):
     than :data:`CREEP_SHARE` of the rise, else None; ``miss``: how far the model of every
     row falls behind the wheel on that rise's rows (rad/s, the largest 5-row mean), with it.
     ``up_T``: T (s) of the rows up to ``span`` T after the rising edges alone, when the fit
-    of every row also uses falling edges (None otherwise)."""
+    of every row also uses falling edges (None otherwise). ``follows_rise``: with ``creep``,
+    T, K, J and the model follow the rise (``rise_T`` and the rise's steady speed
+    ``rise_speed``, rad/s), and ``T`` is the other reading."""
 
     code: ClassVar[str] = "T_rows_apart"
     span: float
@@ -625,6 +627,8 @@ class TRowsApart(Observation):
     creep: tuple[float, float] | None = None
     miss: float | None = None
     up_T: float | None = None
+    follows_rise: bool = False
+    rise_speed: float | None = None
 
 
 CREEP_SHARE: float = 0.03
@@ -632,7 +636,7 @@ CREEP_SHARE: float = 0.03
 the first and the last tenth of the rows after the rise's own (:class:`TRowsApart`)."""
 
 
-def _creep(log: RunLog, fit: TimeConstantFit) -> tuple[tuple[float, float], float] | None:
+def creep_after_rise(log: RunLog, fit: TimeConstantFit) -> tuple[tuple[float, float], float] | None:
     """The first rise's creep after its own rows and the every-row model's miss on those rows
     (see :class:`TRowsApart`), or None. ``log``: the rows the fit used."""
     if fit.rise_T is None or not fit.T > fit.rise_T:
@@ -687,7 +691,11 @@ class TNotDetermined(Observation):
 
 
 def fit_observations(
-    log: RunLog, glitches: int, fit: TimeConstantFit, T_determined: bool
+    log: RunLog,
+    glitches: int,
+    fit: TimeConstantFit,
+    T_determined: bool,
+    every: TimeConstantFit | None = None,
 ) -> list[Observation]:
     """What the fit of T had to do with this log: switch-on glitch rows and logging stalls left
     out, a dead time in the model, a time shift or a T on its bound, a T the log does not
@@ -695,7 +703,8 @@ def fit_observations(
 
     log: the whole log as read; glitches: its first rows left out as switch-on glitches; fit:
     the fit of T (its rows count from the first row after the glitches); T_determined: whether
-    T's interval spans at most a factor of ten.
+    T's interval spans at most a factor of ten; every: the fit of every row, when ``fit``
+    follows the rise instead (:func:`~minseg_tui.model.identify.risefit.following_rise`).
     """
     out: list[Observation] = []
     ts = log.ts
@@ -760,16 +769,20 @@ def fit_observations(
             )
         )
     if fit.rise_T is not None and fit.rise_ci is not None:
-        creep = _creep(log.rows_from(glitches) if glitches else log, fit)
+        creep = creep_after_rise(
+            log.rows_from(glitches) if glitches else log, fit if every is None else every
+        )
         out.append(
             TRowsApart(
                 RISE_SPAN,
                 fit.rise_T,
                 fit.rise_ci,
-                fit.T,
+                fit.T if every is None else every.T,
                 None if creep is None else creep[0],
                 None if creep is None else creep[1],
                 fit.rise_up_T,
+                every is not None and creep is not None,
+                float(np.median(fit.omega_ss)) if every is not None and fit.omega_ss else None,
             )
         )
     if fit.T_on_bound:

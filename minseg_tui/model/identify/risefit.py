@@ -105,23 +105,28 @@ class WholeLogWhy:
     """Why T comes from one first-order model over the whole log: on the rises its residual
     is ``ratio`` times that of the rises fitted one by one (``one``: the log has one rise), so
     every edge is used, ``up`` rising and ``down`` falling; ``u_c``: dry friction's breakaway
-    voltage (V) this fit found, None without."""
+    voltage (V) this fit found, None without; ``every_row_T``: set when T follows the rise's
+    rows instead (the speed creeps on after the rise), the T (s) of every row."""
 
     ratio: float
     one: bool
     up: int
     down: int
     u_c: float | None
+    every_row_T: float | None = None
 
 
 @dataclass(frozen=True)
 class RisesWhy:
     """Why T comes from the rises alone: ``flat``, the applied voltage u never changes in the
     log (nothing else to model); else the whole-log model leaves ``ratio`` times the residual
-    of the rises fitted one by one (None: theirs is 0, it leaves more)."""
+    of the rises fitted one by one (None: theirs is 0, it leaves more); ``every_row_T``: set
+    when T follows the rows of the rises up to :data:`RISE_SPAN` T after each edge instead (the
+    speed creeps on after the rise), the T (s) of the rises' every row."""
 
     ratio: float | None
     flat: bool
+    every_row_T: float | None = None
 
 
 @dataclass(frozen=True)
@@ -155,7 +160,11 @@ class TimeConstantFit:
     rise_up_T: with rise_T, T (s) of the rows up to :data:`RISE_SPAN` time constants after
     the rising edges alone, where the fit of every row also uses falling ones (None otherwise);
     angle_mended: the angle, rebuilt from the speed column, was carried wrong across a stall's
-    gap and the fit took the step off every later row (:func:`_stall_offsets`).
+    gap and the fit took the step off every later row (:func:`_stall_offsets`);
+    rise_fit: with rise_T, the whole fit of those rows alone (its T, steady speeds, shift and
+    fitted angle), for a model that follows the rise (None otherwise); every_row_T: set on a
+    fit made from ``rise_fit`` (:func:`following_rise`), the T (s) of every row, the other
+    reading (None otherwise).
     """
 
     T: float
@@ -195,6 +204,41 @@ class TimeConstantFit:
     free_T: float | None = None
     free_ci: tuple[float, float] | None = None
     free_shift: float | None = None
+    rise_fit: TimeConstantFit | None = None
+    every_row_T: float | None = None
+
+
+def following_rise(fit: TimeConstantFit) -> TimeConstantFit | None:
+    """``fit`` with T, its standard error, the steady speeds, the time shift (a dead time
+    beyond one sample period, whether it ended on its bound), the gain and the fitted angle of
+    the fit of the rise's rows alone (``fit.rise_fit``), and without the fit with the shift
+    free (made for every row); its interval still spans both fits, and ``every_row_T`` keeps
+    the T (s) of every row. None when there is no fit of the rise alone."""
+    r = fit.rise_fit
+    if r is None:
+        return None
+    return replace(
+        fit,
+        T=r.T,
+        se=r.se,
+        sigma=r.sigma,
+        shift=r.shift,
+        shift_ci=r.shift_ci,
+        omega_ss=r.omega_ss,
+        omega_ss_se=r.omega_ss_se,
+        gain=r.gain,
+        u_c=r.u_c,
+        dof=r.dof,
+        predicted=r.predicted,
+        dead_time=r.dead_time,
+        shift_on_bound=r.shift_on_bound,
+        free_T=None,
+        free_ci=None,
+        free_shift=None,
+        rise_fit=None,
+        every_row_T=fit.T,
+        why=replace(fit.why, every_row_T=fit.T),
+    )
 
 
 def fit_time_constant(log: RunLog) -> TimeConstantFit | None:
@@ -532,6 +576,7 @@ def _fit(
         if rms <= ADEQUATE * sigma_w and sigma_w > 0:  # (0: the steps fit exactly, no scale)
             fit = _from_whole(log, whole, windows, theta, angle_source, stamped, rms, sigma_w)
             rise: tuple[float, float, float] | None = None  # (T, se, half width) of the rises
+            alone_fit: TimeConstantFit | None = None
             if not whole.T_on_bound:
                 mask = _rise_rows(t, clusters[1:], whole.T, whole.d, keep)
                 if mask is not None:
@@ -545,7 +590,16 @@ def _fit(
                     if alone is not None and not alone.T_on_bound:
                         c = alone.covariance
                         rise = (alone.T, math.sqrt(max(float(c.cov[1, 1]), 0.0)), c.half_width(1))
+                        alone_fit = replace(
+                            _from_whole(
+                                log, alone, windows, theta, angle_source, stamped, rms, sigma_w
+                            ),
+                            dead_time=alone.d if alone.d > bound else 0.0,
+                            shift_on_bound=alone.d_on_bound and not late_rise,
+                        )
             apart = _rows_apart(fit, rise)
+            if apart.rise_T is not None:
+                apart = replace(apart, rise_fit=alone_fit)
             up_T = None  # the rows after the rising edges alone, when falling ones are fitted
             ups = np.array([e.start for e in find_edges(cmd) if e.rising], dtype=np.int64)
             if apart.rise_T is not None and 0 < ups.size < clusters.size - 1:
@@ -582,6 +636,7 @@ def _fit(
         why = RisesWhy(None, flat=True)
     fit = _from_rises(log, rises_fit, windows, theta, angle_source, stamped, sigma_w, why)
     rise = None
+    alone_rises: TimeConstantFit | None = None
     if not rises_fit.T_on_bound:
         starts = np.array([w.edge.start for w in windows], dtype=np.int64)
         mask = _rise_rows(t, starts, rises_fit.T, rises_fit.d, keep)
@@ -600,6 +655,11 @@ def _fit(
             if not alone_w.T_on_bound:
                 c = alone_w.covariance
                 rise = (alone_w.T, math.sqrt(max(float(c.cov[0, 0]), 0.0)), c.half_width(0))
+                alone_rises = replace(
+                    _from_rises(log, alone_w, windows, theta, angle_source, stamped, sigma_w, why),
+                    dead_time=alone_w.d if alone_w.d > bound else 0.0,
+                    shift_on_bound=alone_w.d_on_bound and not late_rise,
+                )
     free: tuple[float, float, float, float] | None = None
     if late_end(rises_fit.d, rises_fit.d_on_bound, rises_fit.T_on_bound):
         free_f = windows_fit(
@@ -615,8 +675,11 @@ def _fit(
         )
         if not free_f.T_on_bound:
             free = (free_f.T, free_f.d, free_f.covariance.half_width(0), 0.0)
+    apart_r = _rows_apart(fit, rise)
+    if apart_r.rise_T is not None:
+        apart_r = replace(apart_r, rise_fit=alone_rises)
     return replace(
-        _shift_free(_rows_apart(fit, rise), free),
+        _shift_free(apart_r, free),
         dead_time=rises_fit.d if rises_fit.d > bound else 0.0,
         shift_on_bound=rises_fit.d_on_bound and not late_rise,
         dead_time_from_rise=late_rise,
