@@ -602,12 +602,44 @@ def format_typed(value: float, digits: int = DIGITS) -> str:
     return f"{float(format_number(value, digits)):g}"
 
 
-def format_reading(value: float, unit: str, digits: int = DIGITS) -> str:
+def format_reading(value: float, unit: str, digits: int = DIGITS, typed: str = "") -> str:
     """A reading (typed, captured or from the meter; ``value`` SI) in the form unit ``unit``
     with at most ``digits`` significant digits and no zeros it was not given: R typed as
-    5.26 stays "5.26 Ω", never "5.260 Ω" (a computed value uses :func:`format_quantity`)."""
+    5.26 stays "5.26 Ω", never "5.260 Ω" (a computed value uses :func:`format_quantity`).
+
+    ``typed``: the text the reading was typed as. When it is one number (with or without a
+    unit) that is the reading shifted by a power of ten, the reading is written with the
+    significant digits typed, its trailing zeros kept (at most ``digits``): '4,0' is
+    "4.0 V", '47,0 mA' "47.0 mA", '0.0470 A' in mA "47.0 mA" (walk 13, D6); the zeros
+    closing a number without a decimal point do not count ('1200 mV' is "1.2 V"). Any other
+    text (arithmetic, '80 rpm' read in rad/s) leaves the reading as without it."""
     u = UNITS[unit]
-    return f"{format_typed(_in_unit(value, u), digits)} {u.symbol}".rstrip()
+    shown = _in_unit(value, u)
+    sig = _typed_digits(typed, shown)
+    number = format_typed(shown, digits) if sig is None else format_number(shown, min(sig, digits))
+    return f"{number} {u.symbol}".rstrip()
+
+
+def _typed_digits(typed: str, shown: float) -> int | None:
+    """The significant digits of ``typed`` when it is one number, perhaps with a unit, that
+    is ``shown`` times a power of ten (the same reading in another unit of that ratio);
+    None otherwise (:func:`format_reading`)."""
+    m = _NUMBER.match(typed.strip())
+    if m is None or lookup_unit(m.group("rest")) is None or not math.isfinite(shown):
+        return None
+    mant, exp = m.group("mant").replace(",", "."), m.group("exp") or "0"
+    if len(exp.lstrip("+-")) > 3 or abs(int(exp)) > 300:  # 1e999: no reading of this lab
+        return None
+    number = float(mant) * 10.0 ** int(exp)
+    if number == 0 or shown == 0 or not math.isfinite(number):
+        return None
+    shift = math.log10(abs(shown / number))
+    if abs(shift - round(shift)) > 1e-9:
+        return None
+    digits = mant.replace(".", "").lstrip("0")
+    if "." not in mant:
+        digits = digits.rstrip("0")
+    return max(len(digits), 1)
 
 
 @dataclass(frozen=True)

@@ -203,7 +203,11 @@ def _table_section(session: Session) -> Section:
     res = session.results()
     rows = []
     for r in session.table():
-        omega = _reading(r.omega_ss, "rad/s", NOT_ENTERED)
+        omega = (  # typed: its digits; captured: the mean, as the capture gave it
+            session.reading(f"omega_ss@{r.level:g}") or NOT_ENTERED
+            if r.spread is None
+            else _reading(r.omega_ss, "rad/s", NOT_ENTERED)
+        )
         if r.spread is not None and r.omega_ss is not None:
             omega += f" {format_spread(r.spread)}"
         window = (
@@ -216,16 +220,16 @@ def _table_section(session: Session) -> Section:
         rows.append(
             (
                 f"{r.level:g} V",
-                _reading(r.u_ss, "V", NOT_ENTERED),
+                session.reading(f"u_ss@{r.level:g}") or NOT_ENTERED,
                 omega,
                 window,
-                _reading(r.i_ss, "mA", NOT_ENTERED),
+                session.reading(f"i_ss@{r.level:g}") or NOT_ENTERED,
                 _row_value(session, "k_v", r, r.k_v, "V s/rad"),
                 _row_value(session, "f", r, r.f, _F_UNIT),
             )
         )
     sec = Section("Steady state (Tasks 2 and 4-9)")
-    sec.blocks.append(f"R = {_reading(session.value('R'), 'Ω', NOT_ENTERED)} (Task 2).")
+    sec.blocks.append(f"R = {session.reading('R') or NOT_ENTERED} (Task 2).")
     sec.blocks.append(
         "The group's readings (Tasks 4-5) and, in the last two columns, k_v and f that the "
         "program computed from them for each row (Tasks 6 and 9):"

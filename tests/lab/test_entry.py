@@ -229,3 +229,29 @@ def test_formula_math_errors_give_nan():
     assert math.isnan(parse_formula("sqrt(a)", ("a",)).value({"a": -1.0}))
     assert math.isnan(parse_formula("a^b", ("a", "b")).value({"a": -8.0, "b": 0.5}))
     assert math.isnan(parse_formula("a^b", ("a", "b")).value({"a": 10.0, "b": 400.0}))
+
+
+def test_a_reading_keeps_the_digits_it_was_typed_with():
+    """Walk 13 D6: '4,0' is "4.0 V", never "4 V"; the digits typed survive a unit change by
+    a power of ten; arithmetic, a unit change by another factor and an integer's closing
+    zeros leave the reading as without the text."""
+    for text, form, unit, shown in (
+        ("4,0", "V", "V", "4.0 V"),
+        ("4", "V", "V", "4 V"),
+        ("47,0 mA", "mA", "mA", "47.0 mA"),
+        ("0.0470 A", "mA", "mA", "47.0 mA"),
+        ("0,057", "s", "ms", "57 ms"),
+        ("5.2600", "Ω", "Ω", "5.260 Ω"),
+        ("5.263412", "Ω", "Ω", "5.263 Ω"),
+        ("1200 mV", "V", "V", "1.2 V"),
+        ("4.70e-2 A", "mA", "mA", "47.0 mA"),
+        ("0", "V", "V", "0 V"),
+    ):
+        value = parse_quantity(text, form).value
+        assert format_reading(value, unit, typed=text) == shown, text
+    rpm = parse_quantity("80 rpm", "rad/s").value
+    assert format_reading(rpm, "rad/s", typed="80 rpm") == "8.378 rad/s"
+    assert format_reading(4.0, "V", typed="2*2,0") == "4 V"
+    assert format_reading(4.0, "V", typed="4,5") == "4 V"  # not this reading's text
+    assert format_reading(4.0, "V", typed="4e999") == "4 V"
+    assert format_reading(4.0, "V", typed="4e99999") == "4 V"

@@ -269,3 +269,30 @@ def test_the_report_compares_the_groups_way_and_says_what_was_revealed(tmp_path)
     (row5,) = [line for line in md.splitlines() if line.startswith("| omega at u_A = 5 V")]
     assert "revealed before answering" in row5
     assert "J grows in proportion to T" in md
+
+
+def test_the_reports_table_keeps_a_readings_trailing_zero(tmp_path):
+    """Walk 13 D6: u_ss typed '4,0' was "4 V" in the report's table, so an instructor could
+    not see the group read 4.0 to 0.1 V. The table gives each reading with the digits it
+    was typed with ('47,0 mA' "47.0 mA", '0.0470 A' "47.0 mA", R '5,30' "5.30 Ω");
+    the computed k_v and f keep their own four digits."""
+    s = Session.create(tmp_path, ["Ada Lovelace", "Bo Ek"], date="2026-11-22", clock=Clock())
+    s.enter("R", "5,30")
+    for lv, u, w, i in (
+        (2.5, "2,05", "3.80", "0.0300 A"),
+        (3.5, "3.05", "5.81", "33.5"),
+        (4.5, "4,0", "7.78", "47,0 mA"),
+    ):
+        s.enter(f"u_ss@{lv:g}", u)
+        s.enter(f"omega_ss@{lv:g}", w)
+        s.enter(f"i_ss@{lv:g}", i)
+    md = write_report(s).markdown.read_text(encoding="utf-8")
+    row = s.table()[2]
+    s.close()
+    lines = {line.split("|")[1].strip(): line for line in md.splitlines() if line.startswith("| ")}
+    cells = [c.strip() for c in lines["4.5 V"].split("|")[1:-1]]
+    assert cells[1] == "4.0 V" and cells[2] == "7.78 rad/s" and cells[4] == "47.0 mA", cells
+    assert cells[5] == format_value(row.k_v, "V s/rad"), cells
+    cells = [c.strip() for c in lines["2.5 V"].split("|")[1:-1]]
+    assert cells[1:3] == ["2.05 V", "3.80 rad/s"] and cells[4] == "30.0 mA", cells
+    assert "R = 5.30 Ω (Task 2)." in md.replace("\u00a0", " ")

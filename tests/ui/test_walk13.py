@@ -251,3 +251,38 @@ async def test_f7_before_the_tables_view_is_built_acts_once_it_is(quiet):
         formula = app.screen.query_one("#formula", Prose)
         assert app.focused is app.screen.query_one("#table", DataTable)
         assert "F7 on a cell" not in str(formula.render())
+
+
+async def test_a_reading_typed_with_a_trailing_zero_keeps_it_on_every_screen(quiet):
+    """D6: Task 4, u_ss at 4.5 V typed '4,0': the echo said "read as 4 V", and the table of
+    Tasks 6-9 and Task 11's "u_ss = 4 V" dropped the zero too: the group read 4.0 to 0.1 V
+    and nobody could see it. A reading now keeps the digits it was typed with, through a
+    unit change too ('0.0470 A' is 47.0 mA); computed values keep their own four digits."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task4")
+        row = await type_in(pilot, "u_ss@4.5", "4,0")
+        await settle(pilot, lambda: "read as" in row.message)
+        assert "read as 4.0 V" in row.message.replace("\u00a0", " "), row.message
+        enter_all(
+            app,
+            {
+                **{k: v for k, v in TABLE.items() if k != "u_ss@4.5"},
+                "i_ss@3.5": "0.0470 A",
+                "i_ss@4.5": "47,0 mA",
+            },
+        )
+        await goto(pilot, "table")
+        table = app.screen.query_one("#table", DataTable)
+        await settle(pilot, lambda: table.row_count == 3)
+        rows = [[str(c) for c in table.get_row_at(k)] for k in range(3)]
+        assert rows[2][:2] == ["4.5", "4.0"] and rows[2][3] == "47.0", rows
+        assert rows[1][3] == "47.0" and rows[0][1:4] == ["2.05", "3.1", "28"], rows
+        with app.session as s:
+            record_response_run(s)
+        await goto(pilot, "task11")
+        lines = app.screen.query_one("#results-lines", Prose)
+        await settle(pilot, lambda: "u_ss = " in lines.text)
+        said = " ".join(lines.text.replace("\u00a0", " ").split())
+        assert "u_ss = 4.0 V" in said, said

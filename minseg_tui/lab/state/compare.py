@@ -150,12 +150,13 @@ def _ms(T: float) -> str:
     return format_constant(T, "s")
 
 
-def format_u_ss(st: ResponseResult | ResponseFigures) -> str:
-    """The u_ss a step's K divides by: the table's row as typed there ("4,05" is "4.05 V",
-    never "4.050 V"), or, interpolated between rows, a computed number with its digits (the
-    numbers a session file keeps do not say which: as a reading)."""
+def format_u_ss(st: ResponseResult | ResponseFigures, typed: str = "") -> str:
+    """The u_ss a step's K divides by: the table's row as typed there, ``typed`` the text
+    of the row of :data:`STEP_LEVEL` ("4,05" is "4.05 V", never "4.050 V"; "4,0" is
+    "4.0 V", never "4 V"), or, interpolated between rows, a computed number with its digits
+    (the numbers a session file keeps do not say which: as a reading)."""
     if not isinstance(st, ResponseResult) or st.u_ss_how == "row":
-        return format_reading(st.u_ss, "V")
+        return format_reading(st.u_ss, "V", typed=typed)
     return format_quantity(st.u_ss, "V")
 
 

@@ -202,7 +202,7 @@ def _echo(fld: Field, text: str, p: Parsed) -> str:
     lab_way = re.fullmatch(plain, t) is not None
     if re.fullmatch(rf"{plain}\s*{re.escape(shown)}", t) or (lab_way and fld.unit == shown):
         return ""
-    said = f"read as {quantities.format_reading(p.value, shown)}"
+    said = f"read as {quantities.format_reading(p.value, shown, typed=t)}"
     named = p.unit != fld.unit or not bare  # a unit was typed
     if named and p.unit != shown and not re.fullmatch(rf"{number}\s*{re.escape(fld.unit)}", t):
         said += f" (typed {t})"

@@ -599,7 +599,7 @@ class Session:
         e = self._entries.get(key)
         if e is None or not e.ok or not isinstance(e.value, float) or key not in FIELDS:
             return None
-        return format_reading(e.value, shown_unit(FIELDS[key].unit))
+        return format_reading(e.value, shown_unit(FIELDS[key].unit), typed=e.text)
 
     def enter(self, key: str, text: str, source: str = "typed") -> Entry:
         """Store ``text`` typed in field ``key`` (KeyError for an unknown key) and return the
@@ -992,9 +992,9 @@ class Session:
         rows = []
         for level in LEVELS:
             key = f"i_ss@{level:g}"
-            i_ss = self.value(key)
-            if i_ss is not None:  # both in the field's unit (mA), with the digits typed
-                rows.append((level, i_ss, format_reading(i_ss, FIELDS[key].unit)))
+            i_ss, said = self.value(key), self.reading(key)
+            if i_ss is not None and said is not None:  # in mA, with the digits typed
+                rows.append((level, i_ss, said))
         return falling_currents(rows)
 
     def comparisons(

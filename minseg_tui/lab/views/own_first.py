@@ -35,6 +35,7 @@ from minseg_tui.lab.views.session import (
     USES_RUN,
     answer,
     judged_again,
+    step_u_ss,
     waits_for,
 )
 from minseg_tui.model.identify import U_TASK15
@@ -404,7 +405,8 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
         if key == "own.K":
             return (
                 f"{q(st.K, unit)} ({_interval(st.K_ci, st.K_determined, unit)}; "
-                f"u_ss = {lab_compare.format_u_ss(st)}, {u_ss_words(st.u_ss_how)})"
+                f"u_ss = {lab_compare.format_u_ss(st, step_u_ss(session))}, "
+                f"{u_ss_words(st.u_ss_how)})"
             )
         if key == "own.T":
             return f"{q(st.T, unit)} ({_interval(st.T_ci, st.T_determined, unit)})"

@@ -52,6 +52,7 @@ from minseg_tui.quantities import (
     format_difference,
     format_number,
     format_quantity,
+    format_reading,
     format_spread,
     format_typed,
     format_value,
@@ -322,6 +323,13 @@ def held(session: Session, key: str) -> str:
     it), or '' when nothing was entered: what Escape brings back in the field."""
     e = session.entry(key)
     return e.text if e else ""
+
+
+def step_u_ss(session: Session) -> str:
+    """The text the group typed as u_ss in the row of Task 10's steps (''
+    for none): the digits :func:`~minseg_tui.lab.state.compare.format_u_ss` writes K's u_ss
+    with."""
+    return held(session, f"u_ss@{lab_compare.STEP_LEVEL:g}")
 
 
 def answer(session: Session, key: str) -> str:
@@ -651,17 +659,23 @@ def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[
     return miss
 
 
-def _typed(value: float | None, scale: float) -> str:
+def _typed(value: float | None, scale: float, text: str) -> str:
     """A reading of the table (SI ``value`` times ``scale``: the column's unit) with the
-    digits it was typed with, as the report gives it (i_ss typed 14 is "14", never "14.0";
-    u_ss typed 2.053 keeps its 3); "—" when there is none. A captured omega_ss is a mean,
-    written with 3 digits beside its spread."""
-    return format_number(None) if value is None else format_typed(value * scale)
+    digits it was typed with (``text``), as the report gives it (i_ss typed 14 is "14",
+    never "14.0"; u_ss typed 4,0 is "4.0", never "4"); "—" when there is none. A captured
+    omega_ss is a mean, written with 3 digits beside its spread."""
+    return format_number(None) if value is None else format_reading(value * scale, "", typed=text)
 
 
 def _table_row(
-    r: TableRow, R: float | None, k_a: float | None, has: Callable[[str], bool]
+    r: TableRow,
+    R: float | None,
+    k_a: float | None,
+    has: Callable[[str], bool],
+    typed: Callable[[str], str],
 ) -> tuple[Cell, ...]:
+    """The cells of row ``r``; typed(name): the text its reading ``name`` (u_ss, ...) was
+    typed as."""
     spread = "" if r.spread is None else f" {format_spread(r.spread)}"
     omega_how = (
         "omega_ss: captured, the mean over the settled window ± its spread (rad/s)"
@@ -673,15 +687,17 @@ def _table_row(
     return (
         Cell(f"{r.level:g}", f"u = {r.level:g} V: the voltage requested on the board"),
         Cell(
-            _typed(r.u_ss, 1.0),
+            _typed(r.u_ss, 1.0, typed("u_ss")),
             "u_ss: read on the multimeter (V)" if r.u_ss is not None else "",
         ),
         Cell(
-            _typed(r.omega_ss, 1.0) if r.spread is None else format_number(r.omega_ss, 3) + spread,
+            _typed(r.omega_ss, 1.0, typed("omega_ss"))
+            if r.spread is None
+            else format_number(r.omega_ss, 3) + spread,
             omega_how,
         ),
         Cell(
-            _typed(r.i_ss, 1e3),
+            _typed(r.i_ss, 1e3, typed("i_ss")),
             "i_ss: read on the multimeter (mA)" if r.i_ss is not None else "",
         ),
         _derived_cell("k_v", r.k_v, format_number(r.k_v), r, R, k_a, has),
@@ -697,7 +713,11 @@ def table(session: Session) -> TableView:
     ident = res.identification
     k_a = None if ident is None else ident.k_a
     table_rows = session.table()
-    rows = tuple(_table_row(r, R, k_a, _has(session, r)) for r in table_rows)
+
+    def typed_in(level: float) -> Callable[[str], str]:
+        return lambda name: held(session, f"{name}@{level:g}")
+
+    rows = tuple(_table_row(r, R, k_a, _has(session, r), typed_in(r.level)) for r in table_rows)
     results: tuple[tuple[str, Cell], ...] = ()
     waiting = ""
     if ident is not None:
@@ -1106,7 +1126,8 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "omega_ss in the steps",
                 "Task 11",
             )
-            + f"   u_ss = {lab_compare.format_u_ss(st)} ({u_ss_words(st.u_ss_how)})",
+            + f"   u_ss = {lab_compare.format_u_ss(st, step_u_ss(session))} "
+            f"({u_ss_words(st.u_ss_how)})",
             shown(
                 "own.K",
                 f"K = {format_quantity(st.K, 'rad/s/V')}"
