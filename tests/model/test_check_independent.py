@@ -851,6 +851,8 @@ def test_the_ringing_pair_moves_the_wheel_as_the_generators_armature_does(
         (506, ("second_pole",)),
         (15, ("coulomb_friction", "second_pole")),
         (11, ("dead_time", "second_pole")),
+        (41, ("current_limit", "second_pole")),
+        (45, ("current_limit", "second_pole")),
     ],
 )
 def test_an_inductance_that_makes_the_poles_ring_is_named_with_their_decay_time(seed, causes):
@@ -858,7 +860,9 @@ def test_an_inductance_that_makes_the_poles_ring_is_named_with_their_decay_time(
     # two poles are a complex pair, both decaying with the generator's T; with real poles
     # only the check named an average (505, 506: T 48 % and 23 % short), a delay (205, with
     # a rival), a delay beside the pole (11: T 29 % short) or friction with an average and a
-    # pole (15: T 86 % short)
+    # pole (15: T 86 % short). Beside a cap the pair still rings once the cap lets go and on
+    # the steps under it: with no ringing way beside a cap (s34-gate, not kept) 41 and 45
+    # were named an average with the cap
     log = make(seed, causes)
     assert "inductance" in log.how and log.causes["second_pole"] == log.T
     r = check(log.t, log.u, log.omega)

@@ -581,6 +581,15 @@ two poles together at T is where the two kinds meet)."""
 def _ring_worth(way: Way, f: Fit) -> bool:
     if not way.get("pole_ring"):
         return True
+    # Fitted beside a cap too, though while the cap holds the armature's current is held
+    # (L di/dt = 0) and a capped stretch cannot show the inductance ringing with the wheel:
+    # the cap holds only on the larger steps, and only until the back-EMF has risen so far
+    # that the drive's voltage keeps the current under it; from there the pair runs free,
+    # from the cap's current with the wheel still accelerating, and rings on the rest of the
+    # rise as after a step; steps that never reach the cap ring in full. Measured (s34-gate):
+    # tuning logs of second_pole + current_limit, seeds 0-59, hold 11 with the generator's
+    # inductance ringing beside a cap; with no ringing way beside a cap 6 of them went from
+    # right to wrong (31, 34, 39, 43: T 23-52 % short; 41, 45: an average named with the cap)
     t2 = f.effects.T2
     return t2 > 0.0 and RING_NEAR <= t2 / f.T <= 1.0 / RING_NEAR
 
