@@ -81,7 +81,7 @@ from minseg_tui.ui.screens.boardcheck import (
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.screens.help import HelpScreen
-from minseg_tui.ui.screens.lab import PANEL_ACTIONS, PANEL_KEYS, LabScreen
+from minseg_tui.ui.screens.lab import PANEL_KEYS, LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import (
@@ -93,9 +93,6 @@ from minseg_tui.ui.screens.quit import (
 from minseg_tui.ui.screens.start import StartScreen, split_names
 from minseg_tui.ui.shared import Shared
 from minseg_tui.ui.widgets.fields import after_typed_keys
-
-WORD_KEYS = ("ctrl+left", "ctrl+right")
-"""Panel keys that are a text entry's word moves as well: in an entry they move by word."""
 
 ReportWriter = Callable[[Session], Sequence[Path]]
 """Writes a session's report into its folder; the files written (the CLI hands in
@@ -195,16 +192,8 @@ class LabApp(App[None]):
     CSS_PATH = "lab.tcss"
     BINDINGS = [
         *app_bindings(),
-        # with priority, as the app reads them, once the keys ahead of them are handled
-        # (after_typed_keys: F4 has captured and moved on before the reading typed after it
-        # arrives); in an entry, the arrows with Alt or Ctrl stay its word moves
-        *[
-            Binding(key, f"{action}(True)", show=False, priority=True)
-            if key in WORD_KEYS
-            else Binding(key, action, label, show=bool(label), priority=True)
-            for keys, action, label, _ in PANEL_KEYS
-            for key in keys.split(",")
-        ],
+        # a panel key the step's form does not run (its panel does not have it here): said
+        # (the form binds the panel keys, StepPane)
         *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
     ]
 
@@ -1190,10 +1179,12 @@ class LabApp(App[None]):
             screen.store_typed()
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
-        """A panel key is live (and in the footer) only on the steps whose panel has it; a key
-        shown in the footer on some steps only (its binding's action with ``IN_FOOTER``
-        after its name), only on those: elsewhere its own binding runs it, not shown."""
-        if action in PANEL_ACTIONS:
+        """A key shown in the footer on some steps only (its binding's action with
+        ``IN_FOOTER`` after its name), only on those: elsewhere its own binding runs it, not
+        shown. A panel key's action ('reveal'), asked of the app, is live on the steps whose
+        panel has it, as the step's form answers for its binding
+        (:meth:`~minseg_tui.ui.screens.lab.StepPane.check_action`)."""
+        if any(action == panel_action for _, panel_action, _, _ in PANEL_KEYS):
             screen = self._lab_screen()
             return screen is not None and screen.offers(action)
         own = action.removesuffix(IN_FOOTER)
@@ -1202,52 +1193,6 @@ class LabApp(App[None]):
             shown = screen.step_id_shown if screen is not None else None
             return shown is not None and shown in FOOTER_ON[own]
         return True
-
-    # a panel key's binding, whatever has the focus: the step panel's own action runs, after
-    # the keys typed before it (what stands in the entries stored first)
-    async def _panel_key(self, action: str, word_key: bool = False) -> None:
-        """``word_key``: the key is a text entry's word move too (Ctrl+arrows), and does
-        that in an entry."""
-
-        async def run() -> bool:
-            screen = self._lab_screen()
-            if screen is None:
-                return True
-            if word_key and screen.pane.typing is not None:
-                return False  # in a text entry: its word move (the form's key)
-            screen.store_typed()
-            await screen.run_panel_key(action)
-            return True
-
-        if await after_typed_keys(self, run) is False:
-            raise SkipAction()  # Textual hands the key on to the widget focused now
-
-    async def action_set_voltage(self) -> None:
-        await self._panel_key("set_voltage")
-
-    async def action_capture(self) -> None:
-        await self._panel_key("capture")
-
-    async def action_run_square_wave(self) -> None:
-        await self._panel_key("run_square_wave")
-
-    async def action_run_fast(self) -> None:
-        await self._panel_key("run_fast")
-
-    async def action_formula(self) -> None:
-        await self._panel_key("formula")
-
-    async def action_zoom_next(self) -> None:
-        await self._panel_key("zoom_next")
-
-    async def action_pick_prev(self, word_key: bool = False) -> None:
-        await self._panel_key("pick_prev", word_key)
-
-    async def action_pick_next(self, word_key: bool = False) -> None:
-        await self._panel_key("pick_next", word_key)
-
-    async def action_reveal(self) -> None:
-        await self._panel_key("reveal")
 
     def action_not_here(self, what: str) -> None:
         """A panel key on a step whose panel does not have it (nothing off the lab screen)."""

@@ -21,7 +21,8 @@ class Key:
 
     ``name``/``help``: the key as F1 writes it and what it does there (no name: no line of
     its own). ``keys``: Textual's key names of its binding ('': bound elsewhere, by the
-    screen or the widget that owns it, or Textual's own); ``action``: the app's action;
+    screen or the widget that owns it, or Textual's own); ``action``: the app's action (a
+    panel key's: the panel's, which the step's form runs);
     ``label``: in the footer ('': not there); ``shown``: whether the footer shows it;
     ``priority``: the app's before any widget's. ``panel``: a key that acts on the shown
     step's panel, and what it is, for the line saying it is not part of this step;
@@ -217,7 +218,7 @@ def key_hint(action: str, what: str = "") -> str:
 
 
 def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
-    """The keys that act on the shown step's panel: (keys, the app's action, footer label,
+    """The keys that act on the shown step's panel: (keys, the panel's action, footer label,
     what it is), a lab assistant's keys last."""
     panel = sorted((k for k in KEYMAP if k.panel), key=lambda k: k.assistant)
     return tuple((k.keys, k.action, k.label, k.panel) for k in panel)
@@ -226,8 +227,8 @@ def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
 class PanelKeys(Widget):
     """A step panel with keys (:func:`panel_keys`): :meth:`key_actions`, the actions of those
     it has, each with the method that does it; its ``check_action`` says on which steps one
-    does nothing. The app binds the keys (:class:`~minseg_tui.ui.app.LabApp`), and the lab
-    screen calls the method
+    does nothing. The step's form binds the keys
+    (:class:`~minseg_tui.ui.screens.lab.StepPane`), and the lab screen calls the method
     (:meth:`~minseg_tui.ui.screens.lab.LabScreen.run_panel_key`)."""
 
     def key_actions(self) -> Mapping[str, Callable[[], object]]:

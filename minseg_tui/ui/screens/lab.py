@@ -96,17 +96,18 @@ STEP_IDS = tuple(s.id for s in STEPS)
 PANEL_KEYS: tuple[tuple[str, str, str, str], ...] = panel_keys()
 """Keys that act on the shown step's panel: (keys, the panel's action, footer label, what it
 is; no label: not in the footer). Each panel names its own, each with the method that does
-it (:meth:`~minseg_tui.ui.keys.PanelKeys.key_actions`); the app binds them, for wherever
-the focus is (and in one place in the footer's order, whatever has the focus: bindings of
-the panel itself would come first while a widget of it has the focus), and the screen calls
-that method (:meth:`LabScreen.run_panel_key`). The footer shows a key on the steps whose panel offers it
-(:meth:`LabScreen.offers`); elsewhere the key says that it is not part of this step. None
-is printable, so no key is taken from typing in an entry (Ctrl+arrows stay the entry's word
-moves). The app binds them (its keys come first in the footer; Reveal, a lab assistant's
-key, is the last, the first the footer leaves out where a line cannot hold them all)."""
+it (:meth:`~minseg_tui.ui.keys.PanelKeys.key_actions`); the step's form binds them (it, or
+a widget in it, holds the focus on the lab screen, so Textual finds them from the focus
+up), and the screen calls that method (:meth:`LabScreen.run_panel_key`). The footer shows
+a key on the steps whose panel offers it (:meth:`LabScreen.offers`), after the app's and
+the screen's keys (:class:`~minseg_tui.ui.widgets.footer.KeyFooter`); elsewhere the app's
+binding of the key says that it is not part of this step. None is printable, so no key is
+taken from typing in an entry (Ctrl+arrows stay the entry's word moves). Reveal, a lab
+assistant's key, is the last, the first the footer leaves out where a line cannot hold
+them all."""
 
-
-PANEL_ACTIONS = frozenset(action for _, action, _, _ in PANEL_KEYS)
+WORD_KEYS = ("ctrl+left", "ctrl+right")
+"""Panel keys that are a text entry's word moves as well: in an entry they move by word."""
 
 
 def nav_label(step: Step, status: str = "todo") -> str:
@@ -205,6 +206,22 @@ class StepPane(FieldForm):
     top while it is scrolled down. It outlives the step:
     :meth:`show` puts the next step's widgets in it, so that the keys typed after PgDn, still
     on their way to it, land in the new step. :meth:`focus_on` lands in the step."""
+
+    BINDINGS = [
+        # with priority, as the app reads them, once the keys ahead of them are handled
+        # (after_typed_keys: F4 has captured and moved on before the reading typed after it
+        # arrives)
+        *[
+            Binding(key, f"panel_key('{action}', True)", show=False, priority=True)
+            if key in WORD_KEYS
+            else Binding(key, f"panel_key('{action}')", label, show=bool(label), priority=True)
+            for keys, action, label, _ in PANEL_KEYS
+            for key in keys.split(",")
+        ],
+        # a class's bindings of a key replace its base's: the form's word moves, after the
+        # panel's (which skip in a text entry)
+        *(Binding(key, f"row_key('{key}')", show=False, priority=True) for key in WORD_KEYS),
+    ]
 
     browsing: reactive[bool] = reactive(False, init=False)
     """The group browses the list of steps: the form's keys drive it (:meth:`browse`)."""
@@ -341,6 +358,35 @@ class StepPane(FieldForm):
         row = self.keyed
         if self._keep != "scrolled" and row is not None:
             row.call_after_refresh(row.bring_into_view)
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """A panel key is live (and in the footer) only on the steps whose panel has it."""
+        if action == "panel_key":
+            screen = self.screen
+            return isinstance(screen, LabScreen) and screen.offers(str(parameters[0]))
+        return True
+
+    async def action_panel_key(self, action: str, word_key: bool = False) -> None:
+        """A panel key (:data:`PANEL_KEYS`): the step's panel does it, after the keys typed
+        before it (what stands in the entries stored first). ``word_key``: the key is a
+        text entry's word move too (Ctrl+arrows), and does that in an entry (skipped here:
+        the form's next binding of it runs)."""
+        shown = self.screen
+        if not isinstance(shown, LabScreen):
+            return
+        screen: LabScreen = shown  # (narrowed for the closure below)
+
+        async def run() -> bool:
+            if self.app.screen is not screen:
+                return True
+            if word_key and self.typing is not None:
+                return False
+            screen.store_typed()
+            await screen.run_panel_key(action)
+            return True
+
+        if await after_typed_keys(self.app, run) is False:
+            raise SkipAction()
 
     def on_descendant_focus(self, event: events.DescendantFocus) -> None:
         self.browsing = False
@@ -832,12 +878,9 @@ class LabScreen(StatusScreen):
         keys typed after it act on the result)."""
         panel = self.panel
         if isinstance(panel, PanelKeys) and self.offers(action):
-            # Stays a call from here: Textual looks for a key's bindings only from the
-            # focused widget up (textual/screen.py:408-424), and the panel is never focused
-            # (the step's form around it holds the focus), so bindings of its own would
-            # never run. The app binds its keys with priority and
-            # hands them here (F4 on Task 5 from the form: test_bursts's
-            # test_the_reading_typed_right_after_f4_goes_into_the_next_entry).
+            # A call from the form's binding (StepPane.action_panel_key): Textual looks for a
+            # key's bindings from the focused widget up (textual/screen.py:408-424), and the
+            # panel is never focused; the form around it is.
             done = panel.key_actions()[action]()
             if isawaitable(done):
                 await done

@@ -27,7 +27,7 @@ from typing import NamedTuple
 
 from rich.cells import cell_len
 from rich.text import Text
-from textual.app import ComposeResult
+from textual.app import App, ComposeResult
 from textual.containers import ScrollableContainer
 from textual.reactive import reactive
 from textual.screen import Screen
@@ -198,7 +198,10 @@ class KeyFooter(ScrollableContainer, can_focus=False, can_focus_children=False):
         per action, then the command palette's key."""
         active = self.screen.active_bindings
         line: dict[str, ShownKey] = {}
-        for _, binding, enabled, tooltip in active.values():
+        # the keys of the screen and the app (the same on every step) first, in their order,
+        # then those of the widgets under them (a step's panel keys): each key keeps its place
+        ordered = sorted(active.values(), key=lambda a: not isinstance(a.node, (Screen, App)))
+        for _, binding, enabled, tooltip in ordered:
             if binding.show and binding.action not in line:
                 line[binding.action] = ShownKey(
                     binding.key,
