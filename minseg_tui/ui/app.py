@@ -1181,12 +1181,8 @@ class LabApp(App[None]):
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """A key shown in the footer on some steps only (its binding's action with
         ``IN_FOOTER`` after its name), only on those: elsewhere its own binding runs it, not
-        shown. A panel key's action ('reveal'), asked of the app, is live on the steps whose
-        panel has it, as the step's form answers for its binding
-        (:meth:`~minseg_tui.ui.screens.lab.StepPane.check_action`)."""
-        if any(action == panel_action for _, panel_action, _, _ in PANEL_KEYS):
-            screen = self._lab_screen()
-            return screen is not None and screen.offers(action)
+        shown. (The panel keys are the step's form's, which answers for them:
+        :meth:`~minseg_tui.ui.screens.lab.StepPane.check_action`.)"""
         own = action.removesuffix(IN_FOOTER)
         if own != action and own in FOOTER_ON:
             screen = self._lab_screen()

@@ -35,7 +35,7 @@ async def test_ctrl_r_reveals_the_step_and_the_session_keeps_it(quiet):
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task12")
-        assert app.check_action("reveal", ())
+        assert app.screen.pane.check_action("panel_key", ("reveal",))
         assert app.screen.active_bindings["ctrl+r"].binding.description == "Reveal"
         assert any(k == "Ctrl+R" for k, _ in KEYS)  # in F1's list
         assert "T (63 %)" not in _text(app, "#results-lines")
@@ -49,7 +49,7 @@ async def test_ctrl_r_reveals_the_step_and_the_session_keeps_it(quiet):
         data = json.loads((folder / "session.json").read_text(encoding="utf-8"))
         assert data["revealed"] == ["own.T"]
         await goto(pilot, "task10", focus=None)
-        assert not app.check_action("reveal", ())  # only on Tasks 11-15
+        assert not app.screen.pane.check_action("panel_key", ("reveal",))  # Tasks 11-15 only
 
 
 async def test_J_from_the_groups_63_percent_T_is_not_shown_as_39_percent_off(quiet):
