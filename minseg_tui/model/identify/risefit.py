@@ -577,43 +577,41 @@ def _fit(
             fit = _from_whole(log, whole, windows, theta, angle_source, stamped, rms, sigma_w)
             rise: tuple[float, float, float] | None = None  # (T, se, half width) of the rises
             alone_fit: TimeConstantFit | None = None
+
+            def fit_rows(starts: NDArray[np.int64]) -> WholeLogFit | None:
+                """The fit of the rows up to a few T after the edges at ``starts`` alone."""
+                mask = _rise_rows(t, starts, whole.T, whole.d, keep)
+                if mask is None:
+                    return None
+                return whole_fit(
+                    whole_reach,
+                    whole.T,
+                    mask.astype(float),
+                    shift_starts=(whole.d,),
+                    T_factors=(0.5, 0.7, *near),
+                )
+
             if not whole.T_on_bound:
-                mask = _rise_rows(t, clusters[1:], whole.T, whole.d, keep)
-                if mask is not None:
-                    alone = whole_fit(
-                        whole_reach,
-                        whole.T,
-                        mask.astype(float),
-                        shift_starts=(whole.d,),
-                        T_factors=(0.5, 0.7, *near),
+                alone = fit_rows(clusters[1:])
+                if alone is not None and not alone.T_on_bound:
+                    c = alone.covariance
+                    rise = (alone.T, math.sqrt(max(float(c.cov[1, 1]), 0.0)), c.half_width(1))
+                    alone_fit = replace(
+                        _from_whole(
+                            log, alone, windows, theta, angle_source, stamped, rms, sigma_w
+                        ),
+                        dead_time=alone.d if alone.d > bound else 0.0,
+                        shift_on_bound=alone.d_on_bound and not late_rise,
                     )
-                    if alone is not None and not alone.T_on_bound:
-                        c = alone.covariance
-                        rise = (alone.T, math.sqrt(max(float(c.cov[1, 1]), 0.0)), c.half_width(1))
-                        alone_fit = replace(
-                            _from_whole(
-                                log, alone, windows, theta, angle_source, stamped, rms, sigma_w
-                            ),
-                            dead_time=alone.d if alone.d > bound else 0.0,
-                            shift_on_bound=alone.d_on_bound and not late_rise,
-                        )
             apart = _rows_apart(fit, rise)
             if apart.rise_T is not None:
                 apart = replace(apart, rise_fit=alone_fit)
             up_T = None  # the rows after the rising edges alone, when falling ones are fitted
             ups = np.array([e.start for e in find_edges(cmd) if e.rising], dtype=np.int64)
             if apart.rise_T is not None and 0 < ups.size < clusters.size - 1:
-                mask = _rise_rows(t, ups, whole.T, whole.d, keep)
-                if mask is not None:
-                    up = whole_fit(
-                        whole_reach,
-                        whole.T,
-                        mask.astype(float),
-                        shift_starts=(whole.d,),
-                        T_factors=(0.5, 0.7, *near),
-                    )
-                    if up is not None and not up.T_on_bound:
-                        up_T = up.T
+                up = fit_rows(ups)
+                if up is not None and not up.T_on_bound:
+                    up_T = up.T
             free_w: tuple[float, float, float, float] | None = None
             if late_end(whole.d, whole.d_on_bound, whole.T_on_bound):
                 held_w = whole_fit(
