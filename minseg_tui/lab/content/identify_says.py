@@ -474,17 +474,26 @@ def _(o: ShiftMisfit) -> str:
     )
 
 
+def _creeping(o: TRowsApart, creep: tuple[float, float]) -> str:
+    """The two T (the rise's rows, every row) and the speed's creep after the rise (rad/s),
+    up to "by the end of the step"."""
+    return (
+        f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
+        f"edge alone give {format_constant(o.rise_T, 's')} (95 % "
+        f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}), all the rows the "
+        f"fit uses {format_constant(o.T, 's')}. After the rise the speed keeps creeping "
+        f"{'up' if creep[1] > creep[0] else 'down'}, from "
+        f"{format_number(creep[0], 3)} to {format_number(creep[1], 3)} rad/s by the end "
+        "of the step"
+    )
+
+
 @sentence.register
 def _(o: TRowsApart) -> str:
     if o.follows_rise and o.creep is not None and o.miss is not None:
         return (
-            f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
-            f"edge alone give {format_constant(o.rise_T, 's')} (95 % "
-            f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}), all the rows the "
-            f"fit uses {format_constant(o.T, 's')}. After the rise the speed keeps creeping "
-            f"{'up' if o.creep[1] > o.creep[0] else 'down'}, from "
-            f"{format_number(o.creep[0], 3)} to {format_number(o.creep[1], 3)} rad/s by the end "
-            "of the step: a second, slower process, outside a first-order model. One time "
+            _creeping(o, o.creep)
+            + ": a second, slower process, outside a first-order model. One time "
             "constant cannot follow both: the fit of every row takes a longer T that partly "
             "follows the creep, and its model rises more slowly than the wheel, by up to "
             f"{format_number(o.miss, 2)} rad/s on the rise. So T, K, J and the model (Task 14) "
@@ -500,13 +509,8 @@ def _(o: TRowsApart) -> str:
         )
     if o.creep is not None and o.miss is not None:
         return (
-            f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
-            f"edge alone give {format_constant(o.rise_T, 's')} (95 % "
-            f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}), all the rows the "
-            f"fit uses {format_constant(o.T, 's')}. After the rise the speed keeps creeping "
-            f"{'up' if o.creep[1] > o.creep[0] else 'down'}, from "
-            f"{format_number(o.creep[0], 3)} to {format_number(o.creep[1], 3)} rad/s by the end "
-            "of the step, and one time constant cannot follow both: the fit of every row takes "
+            _creeping(o, o.creep)
+            + ", and one time constant cannot follow both: the fit of every row takes "
             "a longer T that partly follows the creep, and its model rises more slowly than "
             f"the wheel, by up to {format_number(o.miss, 2)} rad/s on the rise. "
             f"{format_constant(o.rise_T, 's')} is the T the rise itself follows; the model "
