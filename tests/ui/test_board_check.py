@@ -198,9 +198,9 @@ async def test_a_hand_that_turns_before_the_stream_reads_again_is_counted(tmp_pa
     async with app.run_test(size=(80, 24), message_hook=heard.hook) as pilot:
         await _in_lab(pilot, "task1")
         total = app.live.total
-        await settle(pilot, lambda: app.live.total > total)
+        await heard.until(pilot, lambda: app.live.total > total)
         total = app.live.total
-        await settle(pilot, lambda: app.live.total > total)  # right after a read
+        await heard.until(pilot, lambda: app.live.total > total)  # right after a read
         pushed: list[object] = []
         push = app.push_screen
 
