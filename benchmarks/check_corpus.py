@@ -33,9 +33,11 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from minseg_tui.cli.analyze import _sample_period, in_words_text  # noqa: E402
+from minseg_tui.lab.content.log_says import refusal_words  # noqa: E402
 from minseg_tui.lab.saving.files import read_run_log  # noqa: E402
 from minseg_tui.lab.views.check_says import as_json  # noqa: E402
 from minseg_tui.model.check import CheckResult, check  # noqa: E402
+from minseg_tui.model.runlog import LogRefused  # noqa: E402
 from minseg_tui.model.synth import CAUSES as SYNTH_CAUSES  # noqa: E402
 from minseg_tui.model.synth import PARAM_RANGES, make_log  # noqa: E402
 from tests.model.physics_gen import CAUSES as PHYS_CAUSES  # noqa: E402
@@ -110,9 +112,9 @@ def collect(n: int) -> tuple[dict[str, object], float]:
         t0 = time.process_time()
         try:
             r = run()
-        except ValueError as e:  # the check refuses a log (a wheel that never turns)
+        except LogRefused as e:  # the check refuses a log (a wheel that never turns)
             cpu += time.process_time() - t0
-            out[name] = {"refused": str(e)}
+            out[name] = {"refused": refusal_words(e.why)}
             continue
         cpu += time.process_time() - t0
         out[name] = {"json": as_json(r), "text": in_words_text(r), "pred": _digest(r)}

@@ -46,7 +46,9 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from minseg_tui.lab.content.log_says import refusal_words  # noqa: E402
 from minseg_tui.model.check import check  # noqa: E402
+from minseg_tui.model.runlog import LogRefused  # noqa: E402
 from minseg_tui.model.synth import CAUSES as SYNTH_CAUSES  # noqa: E402
 from minseg_tui.model.synth import PARAM_RANGES, make_log  # noqa: E402
 from tests.model import physics_gen as gen  # noqa: E402
@@ -111,8 +113,8 @@ def line(key: str, log: Log) -> str:
     t0 = time.process_time()
     try:
         r = check(log.t, log.u, log.omega)
-    except ValueError as e:  # refused (a wheel that never turns): that is its verdict
-        return f"{key} | refused: {e} | - | {time.process_time() - t0:.3f}"
+    except LogRefused as e:  # refused (a wheel that never turns): that is its verdict
+        return f"{key} | refused: {refusal_words(e.why)} | - | {time.process_time() - t0:.3f}"
     cpu = time.process_time() - t0
     digest = hashlib.sha1(repr(r).encode()).hexdigest()[:16]
     return f"{key} | {verdict(r)} | {digest} | {cpu:.3f}"

@@ -694,8 +694,10 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from minseg_tui.lab.content.log_says import refusal_words  # noqa: E402
 from minseg_tui.model.check import check  # noqa: E402
 from minseg_tui.model.check.effects import BY_CAUSE  # noqa: E402
+from minseg_tui.model.runlog import LogRefused  # noqa: E402
 from tests.model.physics_gen import CAUSES, HELD_OUT_SEEDS, TUNING_SEEDS, make  # noqa: E402
 
 
@@ -748,9 +750,9 @@ def pairs(seeds: list[int], verbose: bool) -> None:
             t0 = time.process_time()
             try:
                 r = check(log.t, log.u, log.omega)
-            except ValueError as e:  # refused: a wheel that never turns (friction above a cap)
+            except LogRefused as e:  # refused: a wheel that never turns (friction above a cap)
                 row["wrong"] += 1
-                wrong_lines.append(f"  refused {a}+{b} seed {s}: {e}; {log.how}")
+                wrong_lines.append(f"  refused {a}+{b} seed {s}: {refusal_words(e.why)}; {log.how}")
                 continue
             cpu.append(time.process_time() - t0)
             named = _named(r)

@@ -15,6 +15,7 @@ import math
 
 from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.log_says import refusal_words
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views.check_says import as_json, in_words
 from minseg_tui.lab.views.check_text import text
@@ -87,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
     ts = _sample_period(dict(log.metadata))
     refused = problem(log.t, log.u, log.omega, ts)
     if refused:
-        raise InputError(log.source, None, refused)
+        raise InputError(log.source, None, refusal_words(refused))
     result = check(log.t, log.u, log.omega, ts=ts, cpr=log.declared_cpr, omega_over=log.omega_over)
     if args.predictions is not None:
         try:

@@ -18,10 +18,12 @@ from minseg_tui.lab.content.identify_says import (
     t63_note,
     time_from,
 )
+from minseg_tui.lab.content.log_says import angle_words, log_refusal
 from minseg_tui.lab.content.u_ss_says import u_ss_words, zero_volt_refusal
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.model.identify import U_TASK15, Identification, ZeroVoltRefusal, identify
 from minseg_tui.model.identify.risefit import RISE_SPAN
+from minseg_tui.model.runlog import LogRefused
 from minseg_tui.quantities import (
     F_UNIT,
     NO_WIDTH,
@@ -79,6 +81,8 @@ def run(args: argparse.Namespace) -> int:
         result = identify(readings, args.R, log, source=args.table)
     except ZeroVoltRefusal as refused:
         raise zero_volt_refusal(refused) from None
+    except LogRefused as refused:
+        raise log_refusal(refused) from None
     except (ArithmeticError, ValueError) as exc:  # numpy's LinAlgError is a ValueError
         raise InputError(
             args.step or args.table,
@@ -169,7 +173,7 @@ def render(result: Identification) -> str:
             )
         out += [
             "",
-            f"Run log: {len(s.rises)} rise(s); angle from {fit.angle_source}, time from {time_from(fit)}",
+            f"Run log: {len(s.rises)} rise(s); angle from {angle_words(fit.angle_source)}, time from {time_from(fit)}",
             f"omega_ss = {format_number(s.omega_ss)} rad/s (fitted), u_ss = {format_reading(s.u_ss, '') if s.u_ss_how == 'row' else format_number(s.u_ss)} V ({how})",
             f"K = omega_ss / u_ss = {format_number(s.K)} rad/s per V "
             + (

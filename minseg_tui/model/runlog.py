@@ -19,7 +19,8 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from types import MappingProxyType
+from typing import Any, Literal, TypeAlias
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -61,7 +62,19 @@ def header_problem(key: str, value: str) -> BadHeader | None:
     return None
 
 
-MEAN_SPEED = "the omega column read as the mean speed over each sample interval"
+@dataclass(frozen=True)
+class AngleFrom:
+    """Where :meth:`RunLog.angle` took the wheel's angle from: the ``column`` 'theta' (rad)
+    or 'count' (counts), or 'omega' (rad/s) summed over the sample intervals; ``euler_ts``
+    (s): with 'omega', the fixed period it was computed over as an Euler speed of whole
+    counts, each row's angle step omega_k euler_ts; None: each row's speed was read as the
+    mean over its real interval. A record, not words: lab/content/log_says.py says it."""
+
+    column: Literal["theta", "count", "omega"]
+    euler_ts: float | None = None
+
+
+MEAN_SPEED = AngleFrom("omega")
 """Where :meth:`RunLog.angle` took the angle from when it integrates the omega column over
 the real sample intervals (the one source whose angle a stall's gap can leave off for good)."""
 
@@ -167,8 +180,8 @@ class RunLog:
         d = np.mod(np.diff(us), 2.0**32)
         return float(self.t[0]) + np.concatenate(([0.0], np.cumsum(d))) * 1e-6
 
-    def angle(self) -> tuple[FloatArray, str]:
-        """The wheel angle in rad at each row, and a sentence saying where it came from.
+    def angle(self) -> tuple[FloatArray, AngleFrom]:
+        """The wheel angle in rad at each row, and where it came from.
 
         From ``theta`` if present, else from ``count`` (``cpr`` counts per revolution), else
         rebuilt from ``omega`` read as the mean speed over each sample interval (the Euler
@@ -177,18 +190,16 @@ class RunLog:
         number of counts), else the interval t_k - t_k-1.
         """
         if "theta" in self.extra and self.extra["theta"].dtype.kind in "fi":
-            return np.asarray(self.extra["theta"], dtype=float), "the theta column"
+            return np.asarray(self.extra["theta"], dtype=float), AngleFrom("theta")
         if "count" in self.extra and self.extra["count"].dtype.kind in "fi":
             th = np.asarray(self.extra["count"], dtype=float) * (2.0 * np.pi / self.cpr)
-            return th, "the encoder count"
+            return th, AngleFrom("count")
         t = self.board_time()
         w = np.asarray(self.omega[1:], float)
         ts = _euler_period(w, np.diff(t), 2.0 * np.pi / self.cpr)
         if ts is not None:
             dth = np.concatenate(([0.0], w * ts))
-            return np.cumsum(dth), (
-                f"the omega column read as the Euler speed (theta_k - theta_k-1) / {ts * 1e3:.6g} ms"
-            )
+            return np.cumsum(dth), AngleFrom("omega", ts)
         dth = np.concatenate(([0.0], w * np.diff(t)))
         return np.cumsum(dth), MEAN_SPEED
 
@@ -291,39 +302,109 @@ MAX_MAGNITUDE: float = 1e6
 """Largest |u| (V) and |omega| (rad/s) an analysis accepts (the lab's are below 10)."""
 
 
-def problem(t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None) -> str | None:
+Column: TypeAlias = Literal["t", "u", "omega"]
+"""A run log's three columns every analysis reads: t (s), u (V), omega (rad/s)."""
+
+COLUMN_UNITS: Mapping[Column, str] = MappingProxyType({"t": "s", "u": "V", "omega": "rad/s"})
+"""The unit of each of the three columns every run log has, in the file's column order."""
+
+
+@dataclass(frozen=True)
+class UnequalColumns:
+    """t, u and omega of different lengths: the rows of each."""
+
+    t: int
+    u: int
+    omega: int
+
+
+@dataclass(frozen=True)
+class TooFewRows:
+    """Fewer than :data:`MIN_ROWS` rows: the ``rows`` the log has."""
+
+    rows: int
+
+
+@dataclass(frozen=True)
+class NotFinite:
+    """A value of ``column`` that is not a finite number (NaN or infinite)."""
+
+    column: Column
+
+
+@dataclass(frozen=True)
+class TooLarge:
+    """A value of ``column`` (u in V, omega in rad/s) whose size is above
+    :data:`MAX_MAGNITUDE`: ``largest``, the largest |value|."""
+
+    column: Literal["u", "omega"]
+    largest: float
+
+
+@dataclass(frozen=True)
+class TimeNotIncreasing:
+    """A time t (s) that does not increase from one row to the next."""
+
+
+@dataclass(frozen=True)
+class PeriodOutOfRange:
+    """A sample ``period`` (s), given or the median interval of t, outside
+    :data:`TS_RANGE`."""
+
+    period: float
+
+
+@dataclass(frozen=True)
+class SpeedStill:
+    """A speed that never changes: ``omega`` (rad/s) on every row."""
+
+    omega: float
+
+
+LogProblem: TypeAlias = (
+    UnequalColumns
+    | TooFewRows
+    | NotFinite
+    | TooLarge
+    | TimeNotIncreasing
+    | PeriodOutOfRange
+    | SpeedStill
+)
+"""Why a run log cannot be analysed (:func:`problem`): a record with the figures its words
+need, not words (lab/content/log_says.py says it)."""
+
+
+def problem(
+    t: ArrayLike, u: ArrayLike, omega: ArrayLike, ts: float | None = None
+) -> LogProblem | None:
     """Why a run log cannot be analysed (Tasks 11-15, the model check), or None.
 
-    The answer is an 'expected ...' sentence for an InputError. t: sample times, s; u:
-    applied voltage, V; omega: measured speed, rad/s; ts: the nominal sample period, s
-    (default: the median interval of t). Refused: unequal lengths, fewer than MIN_ROWS
-    rows, values that are not finite or not of a plausible size, time that does not
-    increase, a sample period outside TS_RANGE, and a speed that never changes.
+    t: sample times, s; u: applied voltage, V; omega: measured speed, rad/s; ts: the nominal
+    sample period, s (default: the median interval of t). Refused: unequal lengths, fewer
+    than MIN_ROWS rows, values that are not finite or not of a plausible size, time that
+    does not increase, a sample period outside TS_RANGE, and a speed that never changes.
     """
     t, u, y = (np.asarray(a, dtype=float) for a in (t, u, omega))
     if not (t.size == u.size == y.size):
-        return (
-            f"expected t, u and omega of the same length, got {t.size}, {u.size} and {y.size} rows"
-        )
+        return UnequalColumns(t.size, u.size, y.size)
     if t.size < MIN_ROWS:
-        return f"expected at least {MIN_ROWS} rows to analyse, got {t.size}"
-    for name, v in (("t (s)", t), ("u (V)", u), ("omega (rad/s)", y)):
+        return TooFewRows(t.size)
+    columns: tuple[tuple[Column, FloatArray], ...] = (("t", t), ("u", u), ("omega", y))
+    for name, v in columns:
         if not np.all(np.isfinite(v)):
-            return f"expected finite numbers in {name}"
-    for name, v in (("u (V)", u), ("omega (rad/s)", y)):
+            return NotFinite(name)
+    sized: tuple[tuple[Literal["u", "omega"], FloatArray], ...] = (("u", u), ("omega", y))
+    for size_name, v in sized:
         if float(np.max(np.abs(v))) > MAX_MAGNITUDE:
-            return f"expected |{name}| below {MAX_MAGNITUDE:g}, got {float(np.max(np.abs(v))):g}"
+            return TooLarge(size_name, float(np.max(np.abs(v))))
     if not np.all(np.diff(t) > 0):
-        return "expected t (s) to increase from row to row"
+        return TimeNotIncreasing()
     period = float(np.median(np.diff(t))) if ts is None else float(ts)
     lo, hi = TS_RANGE
     if not (lo <= period <= hi):
-        return (
-            f"expected a sample period between {lo * 1e3:g} ms and {hi:g} s, got {period:.3g} s "
-            "(is t in seconds?)"
-        )
+        return PeriodOutOfRange(period)
     if float(np.ptp(y)) == 0.0:
-        return f"expected the speed to change after the voltage changes; omega stays at {float(y[0]):g} rad/s"
+        return SpeedStill(float(y[0]))
     return None
 
 
@@ -381,11 +462,21 @@ CLOCK_AGREE: float = 0.02
 board's resonator is good to 0.5 %, a host's time of reception jitters by milliseconds."""
 
 
-def clock_problem(t: ArrayLike, t_us: ArrayLike) -> str | None:
+@dataclass(frozen=True)
+class ClockApart:
+    """A ``t_us`` column that does not keep time with ``t`` (:func:`clock_problem`): how
+    far each advances over the log, ``span_us`` and ``span_t``, in s."""
+
+    span_us: float
+    span_t: float
+
+
+def clock_problem(t: ArrayLike, t_us: ArrayLike) -> ClockApart | None:
     """Why a ``t_us`` column (the board's micros(), us) cannot be the clock of the ``t`` column
-    (s), as an 'expected ...' sentence, or None: over the log the two must advance by the same
-    time within :data:`CLOCK_AGREE` (or two median sample intervals of t, on a short log). (identify fits on t_us, the model check on t: a t_us
-    that runs 10 times faster gave a T 10 times shorter from one command than the other.)"""
+    (s), or None: over the log the two must advance by the same time within
+    :data:`CLOCK_AGREE` (or two median sample intervals of t, on a short log). (identify fits
+    on t_us, the model check on t: a t_us that runs 10 times faster gave a T 10 times shorter
+    from one command than the other.)"""
     tt = np.asarray(t, dtype=float)
     us = np.asarray(t_us, dtype=float)
     if tt.size < 2 or us.size != tt.size:
@@ -395,9 +486,28 @@ def clock_problem(t: ArrayLike, t_us: ArrayLike) -> str | None:
     slack = max(CLOCK_AGREE * span_t, 2.0 * float(np.median(np.diff(tt))))
     if not span_t > 0 or abs(span_us - span_t) <= slack:
         return None
-    return (
-        f"expected t_us (us) to keep time with t (s) within {CLOCK_AGREE * 100:g} % (or two "
-        "sample periods on a short log): over the log "
-        f"t_us advances {span_us:.6g} s and t {span_t:.6g} s ({span_us / span_t:.3g} times as "
-        "far); is one of them in other units? Fix it or leave t_us out"
-    )
+    return ClockApart(span_us, span_t)
+
+
+@dataclass(frozen=True)
+class StillAngle:
+    """A wheel whose angle, taken from ``source``, never changes in the log: nothing to fit
+    T, K and J to."""
+
+    source: AngleFrom
+
+
+Refusal: TypeAlias = LogProblem | ClockApart | StillAngle
+"""Why an analysis refuses a run log, as a record (:class:`LogRefused`)."""
+
+
+class LogRefused(Exception):
+    """An analysis's refusal of a run log at ``source`` (a file name, '' for arrays) and
+    ``line`` (1-based, or None), and ``why`` (a :data:`Refusal` record). A record, not
+    words: the layer that shows it says it as an InputError (lab/content/log_says.py)."""
+
+    def __init__(self, source: str, line: int | None, why: Refusal) -> None:
+        super().__init__(source, line, why)
+        self.source = source
+        self.line = line
+        self.why = why

@@ -17,7 +17,7 @@ import numpy as np
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import identify_says
 from minseg_tui.lab.content import steps as lab_steps
-from minseg_tui.lab.content.keys import key_name
+from minseg_tui.lab.content.keys import in_palette, key_name
 from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
@@ -158,7 +158,8 @@ def _board_section(session: Session) -> Section:
     if not got:
         sec.blocks.append(
             f"No board check was made ({key_name('board_check')} checks that the count follows "
-            f"the motor; {key_name('palette')} counts one revolution by hand)."
+            f"the motor; {in_palette('count_revolution')} checks the encoder's counts per "
+            "revolution)."
         )
         return sec
     rows = tuple(

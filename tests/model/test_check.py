@@ -12,6 +12,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from minseg_tui.lab.content.log_says import refusal_words
 from minseg_tui.lab.views.check_says import as_json, evidence, lead_why
 from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import BY_CAUSE, CANDIDATES, effects_of
@@ -19,6 +20,7 @@ from minseg_tui.model.check.fit import whiten
 from minseg_tui.model.check.simulate import Effects, Stretches, pieces
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import Plant, PlantParams
+from minseg_tui.model.runlog import LogRefused, PeriodOutOfRange, SpeedStill, TooLarge
 from minseg_tui.model.synth import make_log
 
 # cause -> (absolute tolerance, relative tolerance) of its parameter: |est - true| <= abs +
@@ -237,20 +239,24 @@ def test_where_it_deviates_with_an_exact_steady_state():
 
 
 @pytest.mark.parametrize(
-    ("change", "says"),
+    ("change", "says", "record"),
     [
-        ({"omega": 0.0}, "omega stays at 0"),
-        ({"t_scale": 1000.0}, "sample period"),
-        ({"u_scale": 1e300}, "|u (V)| below"),
+        ({"omega": 0.0}, "omega stays at 0", SpeedStill),
+        ({"t_scale": 1000.0}, "sample period", PeriodOutOfRange),
+        ({"u_scale": 1e300}, "|u (V)| below", TooLarge),
     ],
 )
-def test_logs_it_cannot_work_on_are_refused_in_words(change, says):
+def test_logs_it_cannot_work_on_are_refused_in_words(change, says, record):
+    """The model refuses with a record (model/runlog), worded by lab/content/log_says."""
     log = make_log("none", seed=1, duration=3.0)
     t = log.t * change.get("t_scale", 1.0)
     u = log.u * change.get("u_scale", 1.0)
     omega = np.full_like(log.omega, change["omega"]) if "omega" in change else log.omega
-    with pytest.raises(ValueError, match=re.escape(says)):
+    with pytest.raises(LogRefused) as refused:
         check(t, u, omega)
+    why = refused.value.why
+    assert isinstance(why, record)
+    assert re.search(re.escape(says), refusal_words(why))
 
 
 def test_a_none_finding_says_which_test_the_best_candidate_failed():

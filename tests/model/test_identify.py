@@ -7,6 +7,7 @@ import pytest
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.identify_says import as_json, sentence
+from minseg_tui.lab.content.log_says import angle_words
 from minseg_tui.lab.content.u_ss_says import U_SS_SAYS, u_ss_words
 from minseg_tui.model.identify import U_SS_HOW, Reading, identify, steady_state, u_ss_at
 from minseg_tui.model.identify.steady import table_of
@@ -193,7 +194,7 @@ def test_dry_friction_plant_and_log_without_count():
     params = PlantParams(motor=MOTOR, tau_c=7e-3, v_drop=V_DROP)
     log = plant_log(params, with_count=False, seed=5)
     r = identify(linear_table(MOTOR), MOTOR.R, log)
-    assert r.step.fit.angle_source.startswith("the omega column")
+    assert angle_words(r.step.fit.angle_source).startswith("the omega column")
     assert r.step.T == pytest.approx(T_TRUE, rel=0.03)
     # omega_ss = K (u_A - tau_c R / k_a), lower than the linear table's row
     w_hand = K_TRUE * (4.5 - V_DROP - 7e-3 * 5.0 / 0.325)

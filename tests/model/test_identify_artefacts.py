@@ -12,6 +12,7 @@ import pytest
 from minseg_tui.cli import main
 from minseg_tui.cli.identify import render
 from minseg_tui.lab.content.identify_says import as_json, sentence, t63_note
+from minseg_tui.lab.content.log_says import refusal_words
 from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.model.identify import Reading, identify
 from minseg_tui.model.identify.identification import determined
@@ -210,8 +211,10 @@ def test_a_t_us_that_does_not_keep_time_with_t_is_refused(tmp_path, capsys):
     assert clock_problem(g.log.t, g.log.extra["t_us"]) is None
     fast = {**g.log.extra, "t_us": np.round(g.log.t * 1e5).astype(np.int64)}  # 10x too slow
     bad = RunLog(t=g.log.t, u=g.log.u, omega=g.log.omega, extra=fast)
-    said = clock_problem(bad.t, bad.extra["t_us"])
-    assert said and f"within {CLOCK_AGREE * 100:g} %" in said and "0.1 times as far" in said
+    apart = clock_problem(bad.t, bad.extra["t_us"])
+    assert apart is not None and apart.span_us / apart.span_t == pytest.approx(0.1, rel=1e-3)
+    said = refusal_words(apart)
+    assert f"within {CLOCK_AGREE * 100:g} %" in said and "0.1 times as far" in said
     path = tmp_path / "log.csv"
     write_run_log(path, bad)
     (tmp_path / "table.csv").write_text(

@@ -9,11 +9,12 @@ import pytest
 from scipy import stats
 
 from minseg_tui.lab.content.identify_says import fit_why, t63_note
+from minseg_tui.lab.content.log_says import angle_words
 from minseg_tui.model.identify import RISES, WHOLE_LOG, identify
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.risefit import board_grid
 from minseg_tui.model.motor import PUBLISHED
-from minseg_tui.model.runlog import find_edges
+from minseg_tui.model.runlog import MEAN_SPEED, find_edges
 from minseg_tui.model.synth import IDENT_V_DROP, identification_log, identification_table
 from minseg_tui.quantities import format_constant
 from tests.model.plantlogs import friction_log
@@ -182,13 +183,16 @@ def test_an_euler_speed_at_a_fixed_period_is_integrated_with_that_period():
     theta, source = log.angle()
     count = np.round(np.cumsum(np.asarray(log.omega) * 0.025) / Q)
     np.testing.assert_allclose(theta, count * Q, atol=1e-9)
-    assert "Euler speed" in source and "25 ms" in source
+    assert source.column == "omega" and source.euler_ts == pytest.approx(0.025)
+    said = angle_words(source)
+    assert "Euler speed" in said and "25 ms" in said
     # a speed over the real intervals is integrated over them, as before
     t = log.board_time()
     real = replace(log, omega=np.concatenate(([0.0], np.diff(theta) / np.diff(t))))
     theta2, source2 = real.angle()
     np.testing.assert_allclose(theta2, theta, atol=1e-9)
-    assert source2.endswith("mean speed over each sample interval")
+    assert source2 == MEAN_SPEED
+    assert angle_words(source2).endswith("mean speed over each sample interval")
 
 
 @pytest.mark.parametrize("ts", [0.025, 0.005, 0.002])

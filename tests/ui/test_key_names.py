@@ -132,13 +132,55 @@ BY_HAND = re.compile(r"^\s*(?:→\s*|['‘\"]\s*)\w")
 """Text after the palette's key that names a command written by hand: "Ctrl+P 'Frobnicate'",
 "Ctrl+P → Frobnicate" (a command's name comes from PALETTE: in_palette, USE_RUN)."""
 
+NAME_FOLLOWS = re.compile(r"^\s*(?:→\s*|['‘\"])?$")
+"""Text after the palette's key before the command's name, from the table: "Ctrl+P '" then
+USE_RUN."""
+
+KEY_ALONE = re.compile(r"^\s*(?:[).,;:!?]|$)|^\s+\w+ the (?:command )?palette\b")
+"""Text after the palette's key that names no command: the key alone ("press Ctrl+P."), or
+the palette itself ("Ctrl+P opens the palette")."""
+
+
+def _named_from_table(node: ast.expr | None) -> bool:
+    """Whether ``node`` (a formatted value's expression) is a command's title from the table:
+    USE_RUN or PALETTE[...]."""
+    if isinstance(node, ast.Name):
+        return node.id == "USE_RUN"
+    return (
+        isinstance(node, ast.Subscript)
+        and isinstance(node.value, ast.Name)
+        and node.value.id == "PALETTE"
+    )
+
+
+def _after_palette_key(parts: list[ast.expr], k: int) -> str | None:
+    """What is wrong with the words after the palette's key at ``parts[k]`` of an f-string,
+    or None: a command written by hand ("Ctrl+P 'Frobnicate'"), or one told in other words
+    ("Ctrl+P counts one revolution by hand") where in_palette or USE_RUN names it."""
+    after = parts[k + 1] if k + 1 < len(parts) else None
+    if after is None:
+        return None
+    if not isinstance(after, ast.Constant):
+        return f"{ast.unparse(after)} after the palette's key"
+    text = str(after.value)
+    if BY_HAND.match(text):
+        return repr(text)
+    if NAME_FOLLOWS.match(text):
+        name = parts[k + 2] if k + 2 < len(parts) else None
+        if isinstance(name, ast.FormattedValue) and _named_from_table(name.value):
+            return None
+        return f"{text!r} then no command of the table"
+    if KEY_ALONE.match(text):
+        return None
+    return f"a command in other words: {text!r}"
+
 
 def test_a_sentence_names_only_the_palette_commands_of_the_table():
     """Issue 19 item 3: a palette command's title is written once, in PALETTE (lab/content/
     keys.py), which the palette (ui/app.py) titles its commands from. A sentence names a
     command through in_palette('export') or USE_RUN; it fails here when it writes a title by
-    hand, names a command after the palette's key by hand, or asks in_palette for a command
-    the table does not hold."""
+    hand, names a command after the palette's key by hand or in other words ("Ctrl+P counts
+    one revolution by hand"), or asks in_palette for a command the table does not hold."""
     titles = {t for t in PALETTE.values() if " " in t}  # 'Keys' alone is any heading's word
     written: list[str] = []
     for folder in ("lab", "report", "ui", "cli"):
@@ -157,20 +199,46 @@ def test_a_sentence_names_only_the_palette_commands_of_the_table():
                         written.append(f"{where}:{call.lineno}: in_palette({ast.unparse(command)})")
                 if isinstance(node, ast.JoinedStr):
                     parts = node.values
-                    for part, after in zip(parts, parts[1:], strict=False):
-                        if (
-                            isinstance(part, ast.FormattedValue)
-                            and _palette_key(part.value)
-                            and isinstance(after, ast.Constant)
-                            and BY_HAND.match(str(after.value))
-                        ):
-                            written.append(f"{where}:{node.lineno}: {after.value!r}")
+                    for k, part in enumerate(parts):
+                        if isinstance(part, ast.FormattedValue) and _palette_key(part.value):
+                            wrong = _after_palette_key(parts, k)
+                            if wrong is not None:
+                                written.append(f"{where}:{node.lineno}: {wrong}")
     assert not written, "\n".join(written)
 
 
+def _lab_entries() -> list[str]:
+    """The table's keys that title the lab screen's own palette entries (StepCommands.entries
+    in ui/screens/lab.py: a step to go to, a run to use), or 'by hand: ...' for a title
+    written there."""
+    tree = ast.parse((PACKAGE / "ui" / "screens" / "lab.py").read_text(encoding="utf-8"))
+    (entries,) = [
+        f
+        for c in ast.walk(tree)
+        if isinstance(c, ast.ClassDef) and c.name == "StepCommands"
+        for f in c.body
+        if isinstance(f, ast.FunctionDef) and f.name == "entries"
+    ]
+    keys: list[str] = []
+    body = [node for statement in entries.body for node in ast.walk(statement)]
+    for node in body:
+        if isinstance(node, ast.Tuple) and len(node.elts) == 3:  # (title, action, help)
+            title = node.elts[0]
+            first = title.values[0] if isinstance(title, ast.JoinedStr) else title
+            named = first.value if isinstance(first, ast.FormattedValue) else first
+            if isinstance(named, ast.Subscript) and _named_from_table(named):
+                keys.append(ast.unparse(named.slice).strip("'\""))
+            elif isinstance(named, ast.Name) and _named_from_table(named):
+                keys.append("use_run")
+            else:
+                keys.append(f"by hand: {ast.unparse(title)}")
+    return keys
+
+
 def test_the_palette_titles_its_commands_from_the_table():
-    """Every command the app puts in the palette is titled by PALETTE, and each of the
-    table's commands is one the palette offers (the run one by the lab screen's entries)."""
+    """Every command the app puts in the palette is titled by PALETTE, and so is each of the
+    lab screen's own entries (a step to go to, a run to use); each of the table's commands
+    is one the palette offers."""
     tree = ast.parse((PACKAGE / "ui" / "app.py").read_text(encoding="utf-8"))
     keys: list[str] = []
     for node in ast.walk(tree):
@@ -190,5 +258,6 @@ def test_the_palette_titles_its_commands_from_the_table():
     assert len(looped) == 1, keys
     panel = {"set_voltage", "capture", "run_square_wave", "run_fast", "reveal"}
     named = {k.strip("'\"") for k in keys if k != "action"}
-    assert named | panel | {"use_run"} == set(PALETTE), keys
-    assert "USE_RUN" in (PACKAGE / "ui" / "screens" / "lab.py").read_text(encoding="utf-8")
+    lab = _lab_entries()
+    assert not [k for k in lab if k.startswith("by hand")], lab
+    assert named | panel | set(lab) == set(PALETTE), (keys, lab)

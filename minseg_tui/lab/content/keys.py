@@ -53,13 +53,17 @@ PALETTE: Final = MappingProxyType(
         "import_log": "Import a run log",
         "switch_to_virtual": "Switch to virtual board",
         "use_run": "Use run",
+        "use_newest_run": "Use the newest complete 25 ms run for Tasks 11-15",
+        "go_to": "Go to:",
         "help": "Keys",
     }
 )
 """Each of our palette commands by what it does (the app's action where it has one), with
 its title as the palette lists it and a sentence names it ('use_run' is the start of 'Use
-run steps-1 for Tasks 11-15'; 'help' replaces Textual's own 'Keys'). The palette (ui/app.py)
-titles its commands from here, and a test fails on a sentence that names one by hand."""
+run steps-1 for Tasks 11-15', 'go_to' of 'Go to: Task 10: the step experiment'; 'help'
+replaces Textual's own 'Keys'). The palette (ui/app.py, and the lab screen's entries in
+ui/screens/lab.py) titles its commands from here, and a test fails on a sentence that names
+one by hand."""
 
 USE_RUN: Final = PALETTE["use_run"]
 """The start of the palette's command that picks the run Tasks 11-15 use ('Use run steps-1

@@ -27,10 +27,17 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
-from minseg_tui.lab.content.log_says import header_words
+from minseg_tui.lab.content.log_says import header_words, refusal_words
 from minseg_tui.lab.saving.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
-from minseg_tui.model.runlog import RunLog, clock_problem, command, find_edges, header_problem
+from minseg_tui.model.runlog import (
+    COLUMN_UNITS,
+    RunLog,
+    clock_problem,
+    command,
+    find_edges,
+    header_problem,
+)
 from minseg_tui.quantities import NUMBER
 
 TABLE_COLUMNS: dict[str, str] = {
@@ -41,8 +48,9 @@ TABLE_COLUMNS: dict[str, str] = {
 }
 """Columns of TABLE.csv and their units."""
 
-LOG_REQUIRED: dict[str, str] = {"t": "s", "u": "V", "omega": "rad/s"}
-"""Required columns of a run log and their units."""
+LOG_REQUIRED: dict[str, str] = {name: unit for name, unit in COLUMN_UNITS.items()}
+"""Required columns of a run log and their units (the model's :data:`~minseg_tui.model.
+runlog.COLUMN_UNITS`)."""
 
 LOG_NUMERIC: dict[str, str] = {
     "u_req": "V",
@@ -273,7 +281,7 @@ def read_run_log(path: str | Path, require_step: bool = True) -> RunLog:
     if "t_us" in extra:
         clock = clock_problem(t, extra["t_us"])
         if clock:
-            raise InputError(f.source, int(lines[0]), clock)
+            raise InputError(f.source, int(lines[0]), refusal_words(clock))
     log = RunLog(
         t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines
     )

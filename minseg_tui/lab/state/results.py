@@ -17,6 +17,7 @@ from pathlib import Path
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import identify_says
+from minseg_tui.lab.content.log_says import log_refusal, refusal_words
 from minseg_tui.lab.content.u_ss_says import zero_volt_refusal
 from minseg_tui.lab.saving.kept import CheckFigures, ResponseFigures
 from minseg_tui.lab.saving.runs import RunInfo, read_run
@@ -31,7 +32,7 @@ from minseg_tui.model.identify import (
     response_alone,
 )
 from minseg_tui.model.motor import inertia_from_time_constant
-from minseg_tui.model.runlog import RunLog
+from minseg_tui.model.runlog import LogRefused, RunLog
 from minseg_tui.quantities import format_number
 
 
@@ -246,9 +247,12 @@ def check_figures(mc: ModelCheck) -> CheckFigures:
 
 def _why_no_step(exc: Exception) -> str:
     """Why a run gives no step result, in one line: identify's refusal as it says it (a
-    rise at 0 V on the motor worded by lab/content/u_ss_says.py), or the fit's failure."""
+    rise at 0 V on the motor worded by lab/content/u_ss_says.py, a log it cannot take by
+    lab/content/log_says.py), or the fit's failure."""
     if isinstance(exc, ZeroVoltRefusal):
         return str(zero_volt_refusal(exc))
+    if isinstance(exc, LogRefused):
+        return str(log_refusal(exc))
     if isinstance(exc, InputError):
         return str(exc)
     return f"its steps cannot be fitted ({exc})"
@@ -303,7 +307,7 @@ def compute(
             return Results(None, name, tuple(problems), table_problems=table_problems)
         try:
             alone = response_alone(log, pairs)
-        except (InputError, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
+        except (InputError, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
             why = _why_no_step(exc)
             problems.append(f"run {run.name if run else ''} gives no step result: {why}")
             return Results(None, name, tuple(problems), table_problems=table_problems)
@@ -313,7 +317,7 @@ def compute(
         return run_alone()
     try:
         ident = identify(readings, R, log, source="table", u_ss_table=u_ss_table)
-    except (InputError, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
+    except (InputError, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
         # ArithmeticError, ValueError (numpy's LinAlgError): a log the fit cannot take; the
         # table's results stand, and the step says why it has none (never a traceback)
         why = _why_no_step(exc)
@@ -355,6 +359,8 @@ def check_run(
         return ModelCheck(run.name, result)
     except InputError as exc:
         return ModelCheck(run.name, None, str(exc))
+    except LogRefused as exc:
+        return ModelCheck(run.name, None, f"run {run.name}: {refusal_words(exc.why)}")
     except ValueError as exc:
         return ModelCheck(run.name, None, f"run {run.name}: {exc}")
 

@@ -77,7 +77,7 @@ from minseg_tui.model.check.result import (
 )
 from minseg_tui.model.check.sampling import CountFrom, Sampling, sampling, scatter
 from minseg_tui.model.optimize import golden
-from minseg_tui.model.runlog import problem
+from minseg_tui.model.runlog import LogRefused, problem
 
 FloatArray = NDArray[np.float64]
 
@@ -112,7 +112,7 @@ def check(
     y = np.asarray(omega, dtype=float)
     refused = problem(t, u, y, ts)
     if refused:
-        raise ValueError(refused)
+        raise LogRefused("", None, refused)
     ts = float(np.median(np.diff(t))) if ts is None else float(ts)
     samp = sampling(t, u, y, ts, cpr, omega_over)
     notes: list[an.Anomaly] = []

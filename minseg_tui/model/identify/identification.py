@@ -48,7 +48,9 @@ from minseg_tui.model.identify.steady import (
 )
 from minseg_tui.model.motor import FirstOrder, inertia_from_time_constant
 from minseg_tui.model.runlog import (
+    LogRefused,
     RunLog,
+    StillAngle,
     clock_problem,
     command,
     find_edges,
@@ -235,19 +237,14 @@ def _response_result(
         )
     refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
     if refused:
-        raise InputError(log.source, None, refused)
+        raise LogRefused(log.source, None, refused)
     if "t_us" in log.extra:  # the fit's clock against the log's
-        refused = clock_problem(log.t, log.extra["t_us"])
-        if refused:
-            raise InputError(log.source, log.line_of(0), refused)
+        apart = clock_problem(log.t, log.extra["t_us"])
+        if apart:
+            raise LogRefused(log.source, log.line_of(0), apart)
     theta, angle_source = log.angle()
     if not np.ptp(theta) > 0:  # nothing to fit: the least squares would divide by zero
-        raise InputError(
-            log.source,
-            None,
-            f"expected the wheel to turn; its angle ({angle_source}) never changes in the log, "
-            "so T, K and J cannot be found from it",
-        )
+        raise LogRefused(log.source, None, StillAngle(angle_source))
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise InputError(log.source, None, "expected a usable rising edge")
@@ -345,8 +342,8 @@ def _response_result(
 def response_alone(log: RunLog, u_ss_table: Sequence[tuple[float, float]]) -> ResponseResult:
     """Tasks 11-12 from the run log and the table's ``(u_req, u_ss)`` pairs (V) alone: K,
     T and the 63 % reading, which need neither R nor i_ss. J (Task 13) needs R, k_v and f:
-    it is NaN here. Raises InputError and ZeroVoltRefusal as :func:`identify` does for the
-    log."""
+    it is NaN here. Raises InputError, LogRefused and ZeroVoltRefusal as :func:`identify`
+    does for the log."""
     step, _ = _response_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
     return step
 
@@ -497,8 +494,9 @@ def identify(
 
     ``u_ss_table``: the ``(u_req, u_ss)`` pairs (V) of every table row that has a u_ss,
     complete or not, which K divides by (:func:`~.steady.u_ss_at`); default: the readings'.
-    Raises InputError for a bad R, a bad row, or a log without a usable rise, and
-    :class:`ZeroVoltRefusal` for a rise that ends at 0 V on the motor.
+    Raises InputError for a bad R, a bad row, or a log without a usable rise,
+    :class:`~minseg_tui.model.runlog.LogRefused` for a log no analysis takes or a wheel that
+    never turns, and :class:`ZeroVoltRefusal` for a rise that ends at 0 V on the motor.
     """
     rows, k_v, k_a, f = steady_state(readings, R, source)
     step: ResponseResult | None = None

@@ -30,7 +30,7 @@ from minseg_tui.model.identify.lsq import dot
 from minseg_tui.model.identify.rises import RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
 from minseg_tui.model.identify.windowfit import WindowsFit, fit_windows
-from minseg_tui.model.runlog import MEAN_SPEED, RunLog, command, find_edges
+from minseg_tui.model.runlog import MEAN_SPEED, AngleFrom, RunLog, command, find_edges
 
 FloatArray = NDArray[np.float64]
 
@@ -173,7 +173,7 @@ class TimeConstantFit:
     sigma: float
     n_rows: int
     n_rises: int
-    angle_source: str
+    angle_source: AngleFrom
     stamped: bool
     method: str
     why: WholeLogWhy | RisesWhy
@@ -892,7 +892,7 @@ def _from_whole(
     fit: WholeLogFit,
     windows: list[RiseWindow],
     theta: FloatArray,
-    angle_source: str,
+    angle_source: AngleFrom,
     stamped: bool,
     rms: float,
     sigma_w: float,
@@ -936,7 +936,7 @@ def _from_rises(
     fit: WindowsFit,
     windows: list[RiseWindow],
     theta: FloatArray,
-    angle_source: str,
+    angle_source: AngleFrom,
     stamped: bool,
     sigma_w: float,
     why: WholeLogWhy | RisesWhy,

@@ -32,7 +32,7 @@ from textual.widgets.option_list import Option
 from textual.worker import get_current_worker
 
 from minseg_tui.errors import MinsegError
-from minseg_tui.lab.content.keys import USE_RUN, key_name
+from minseg_tui.lab.content.keys import PALETTE, USE_RUN, key_name
 from minseg_tui.lab.content.steps import STEPS, Step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import RunProgress
@@ -633,7 +633,10 @@ class StepCommands(Provider):
             ]
         go, use = screen.go_to, screen.use_run
         return (
-            [(f"Go to: {s.title}", partial(go, s.id), "move to this step") for s in STEPS]
+            [
+                (f"{PALETTE['go_to']} {s.title}", partial(go, s.id), "move to this step")
+                for s in STEPS
+            ]
             + [
                 (
                     f"{USE_RUN} {name}{why} for Tasks 11-15",
@@ -644,7 +647,7 @@ class StepCommands(Provider):
             ]
             + [
                 (
-                    "Use the newest complete 25 ms run for Tasks 11-15",
+                    PALETTE["use_newest_run"],
                     partial(use, None),
                     "the default: no interrupted run",
                 )
