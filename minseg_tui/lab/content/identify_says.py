@@ -20,6 +20,7 @@ from minseg_tui.model.identify.identification import (
     T63Note,
 )
 from minseg_tui.model.identify.observations import (
+    CountsHidden,
     CurrentHigh,
     CurrentInAmperes,
     DeadTime,
@@ -539,6 +540,19 @@ def _(o: TRowsApart) -> str:
         f"{'longer' if o.T > o.rise_T else 'shorter'}: the rise and the speed after it do not "
         "follow one time constant, a shape the first-order model misses. The 95 % "
         "interval of T spans both fits. Read T with care."
+    )
+
+
+@sentence.register
+def _(o: CountsHidden) -> str:
+    return (
+        "T's 95 % interval rests on the scatter the fit leaves on this log's one rise. The "
+        "angle's values sit on no grid of encoder counts and the log names none (a '# cpr:' "
+        "line): if the angle was read in whole counts whose grid the log does not show "
+        "(interpolated onto other instants, or rebuilt from a rounded speed), their rounding "
+        "is hidden from the fit and not in the interval, and T may lie outside it. A "
+        "'# cpr:' line giving the encoder's counts per revolution lets the interval hold "
+        "that rounding."
     )
 
 
