@@ -1,7 +1,9 @@
 """`minseg-tui analyze LOG.csv [--json] [--predictions OUT.csv]`: the model check of a run log.
 
 Fits the first-order model, simulates it on the measured input, says where it deviates,
-names the causes and their evidence, fits the extended model and measures the gain. The
+names the causes and their evidence, fits the extended model and measures the gain. Under
+the first-order model's fit a line says which T it is and sets identify's T of the same log
+beside it (why they differ where the speed creeps on after the rise). The
 log's header lines ``# ts:``, ``# cpr:`` and ``# omega_over:`` tell it the nominal period,
 the encoder's resolution and how the speed was computed (else they are read off the data).
 Bad input exits 2 with one line (from read_run_log).

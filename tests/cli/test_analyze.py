@@ -337,6 +337,17 @@ def _beside_T(out: str) -> str:
     return lines[k + 1]
 
 
+def _analyzed(tmp_path, capsys, log: RunLog):
+    """The log written to a file, the check's first-order T (s, from --json) and the line
+    under its fit in the text."""
+    path = tmp_path / "log.csv"
+    write_run_log(path, log, {"ts": "0.005"})
+    assert main(["analyze", str(path), "--json"]) == 0
+    T_check = json.loads(capsys.readouterr().out)["baseline"]["params"]["T"]
+    assert main(["analyze", str(path)]) == 0
+    return path, T_check, _beside_T(capsys.readouterr().out)
+
+
 @pytest.mark.parametrize("seed", range(3))
 def test_which_T_and_why_identify_differs_where_the_speed_creeps(tmp_path, capsys, seed):
     """A lab assistant met analyze's first-order T (161.5 ms on micromouse-n20-duty100, a fit
@@ -345,12 +356,7 @@ def test_which_T_and_why_identify_differs_where_the_speed_creeps(tmp_path, capsy
     the two differ, with figures true of the log. (Plotted: the creep lengthens the check's T
     from 98-100 ms to 109-111 ms, identify's every row's to 132 ms; the rise's is 103-104 ms.)"""
     log = creep_log(seed)
-    path = tmp_path / "creep.csv"
-    write_run_log(path, log, {"ts": "0.005"})
-    assert main(["analyze", str(path), "--json"]) == 0
-    T_check = json.loads(capsys.readouterr().out)["baseline"]["params"]["T"]
-    assert main(["analyze", str(path)]) == 0
-    line = _beside_T(capsys.readouterr().out)
+    path, T_check, line = _analyzed(tmp_path, capsys, log)
     assert line.startswith("  This T is the model check's own: the first-order model simulated ")
     st, _ = response_observed(read_run_log(path), [])
     assert st.fit.rise_T == st.T and st.fit.every_row_T is not None
@@ -373,13 +379,7 @@ def test_which_T_and_why_identify_differs_where_the_speed_creeps(tmp_path, capsy
 
 
 def test_which_T_without_a_creep(tmp_path, capsys):
-    log = creep_log(0, share=0.0)
-    path = tmp_path / "rise.csv"
-    write_run_log(path, log, {"ts": "0.005"})
-    assert main(["analyze", str(path), "--json"]) == 0
-    T_check = json.loads(capsys.readouterr().out)["baseline"]["params"]["T"]
-    assert main(["analyze", str(path)]) == 0
-    line = _beside_T(capsys.readouterr().out)
+    path, T_check, line = _analyzed(tmp_path, capsys, creep_log(0, share=0.0))
     st, _ = response_observed(read_run_log(path), [])
     assert line == (
         "  This T is the model check's own: the first-order model simulated on the measured "

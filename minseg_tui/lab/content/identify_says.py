@@ -806,7 +806,7 @@ def check_T_beside(
         "This T is the model check's own: the first-order model simulated on the measured "
         "input and fitted to the speed of those rows."
     )
-    if st is None or not math.isfinite(st.T):
+    if st is None or not math.isfinite(st.T) or not (math.isfinite(T_check) and T_check > 0):
         return own
     dead = (
         f", with a dead time of {format_constant(st.dead_time, 's')}," if st.dead_time > 0 else ""
