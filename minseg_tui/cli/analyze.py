@@ -1,7 +1,9 @@
 """`minseg-tui analyze LOG.csv [--json] [--predictions OUT.csv]`: the model check of a run log.
 
 Fits the first-order model, simulates it on the measured input, says where it deviates,
-names the causes and their evidence, fits the extended model and measures the gain. The
+names the causes and their evidence, fits the extended model and measures the gain. Under
+the first-order model's fit a line says which T it is and sets identify's T of the same log
+beside it (why they differ where the speed creeps on after the rise). The
 log's header lines ``# ts:``, ``# cpr:`` and ``# omega_over:`` tell it the nominal period,
 the encoder's resolution and how the speed was computed (else they are read off the data).
 Bad input exits 2 with one line (from read_run_log).
@@ -15,12 +17,14 @@ import math
 
 from minseg_tui.cli.output import open_output, output_file, print_json
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.identify_says import check_T_beside
 from minseg_tui.lab.content.log_says import refusal_words
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views.check_says import as_json, in_words
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.runlog import problem
+from minseg_tui.model.identify import ZeroVoltRefusal, response_observed
+from minseg_tui.model.runlog import RunLog, problem
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -100,5 +104,31 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(as_json(result), indent=2)
     else:
-        print(in_words_text(result))
+        print(with_identify(in_words_text(result), result, log))
     return 0
+
+
+def with_identify(text: str, r: CheckResult, log: RunLog) -> str:
+    """The check's text with a line under the first-order model's fit saying which T it is
+    and what identify's T of the same log is (:func:`check_T_beside`), so that the two T
+    do not stand apart without a word (where the speed creeps on after the rise, why they
+    differ)."""
+    T = r.baseline.params.get("T")
+    if T is None:
+        return text
+    try:
+        st, observations = response_observed(log, [])
+    except (InputError, ZeroVoltRefusal, ArithmeticError, ValueError):
+        st, observations = None, []  # identify refuses this log and says why itself
+    lines = text.split("\n")
+    at = next(
+        (k for k, line in enumerate(lines) if line.startswith("  simulated on the measured")),
+        None,
+    )
+    if at is None:
+        return text
+    e = r.extended
+    T_ext = e.params.get("T") if e.model != r.baseline.model else None
+    extended = (in_words(e.model), T_ext) if T_ext is not None else None
+    lines.insert(at + 1, f"  {check_T_beside(T, st, observations, extended)}")
+    return "\n".join(lines)

@@ -28,6 +28,16 @@ from minseg_tui.device.link import Link
 from minseg_tui.device.port import not_a_device
 from minseg_tui.device.virtual import wiring_faults
 from minseg_tui.errors import DeviceError, InputError
+from minseg_tui.quantities import EntryRefused, parse_quantity
+
+
+def _seconds(text: str) -> float:
+    """--turn-seconds read as the TUI reads a number typed in an entry (the decimal comma
+    too), refused with its words; its range is checked in :func:`run`."""
+    try:
+        return parse_quantity(text, "", allow_negative=True, allow_zero=True).value
+    except EntryRefused as exc:
+        raise argparse.ArgumentTypeError(exc.expected) from None
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -55,7 +65,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--turn-seconds",
-        type=float,
+        type=_seconds,
         default=10.0,
         metavar="S",
         help="with --turn and no terminal: how long to count, s (default 10)",

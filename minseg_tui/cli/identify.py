@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 import textwrap
+from typing import NamedTuple
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
@@ -19,8 +19,10 @@ from minseg_tui.lab.content.identify_says import (
     time_from,
 )
 from minseg_tui.lab.content.log_says import angle_words, log_refusal
+from minseg_tui.lab.content.steps import FIELDS
 from minseg_tui.lab.content.u_ss_says import u_ss_words, zero_volt_refusal
 from minseg_tui.lab.saving.files import read_run_log, read_table
+from minseg_tui.lab.state.entries import read_quantity
 from minseg_tui.model.identify import U_TASK15, Identification, ZeroVoltRefusal, identify
 from minseg_tui.model.identify.risefit import RISE_SPAN
 from minseg_tui.model.runlog import LogRefused
@@ -28,7 +30,7 @@ from minseg_tui.quantities import (
     F_UNIT,
     NO_WIDTH,
     NOT_DETERMINED,
-    NUMBER,
+    EntryRefused,
     format_interval,
     format_number,
     format_reading,
@@ -37,13 +39,20 @@ from minseg_tui.quantities import (
 )
 
 
-def _ohms(text: str) -> float:
-    if not NUMBER.match(text.strip()):
-        raise argparse.ArgumentTypeError(f"expected a resistance in ohm, got '{text}'")
-    value = float(text)
-    if not (math.isfinite(value) and value > 0):
-        raise argparse.ArgumentTypeError(f"expected a positive resistance in ohm, got '{text}'")
-    return value
+class Typed(NamedTuple):
+    """A reading given on the command line: its value (SI) and the text it was typed as."""
+
+    value: float
+    text: str
+
+
+def _ohms(text: str) -> Typed:
+    """--R read as Task 2's entry reads R in the TUI (the decimal comma, a unit, '5300 mΩ'),
+    refused with that entry's words."""
+    try:
+        return Typed(read_quantity(FIELDS["R"], text).value, text)
+    except EntryRefused as exc:
+        raise argparse.ArgumentTypeError(exc.expected) from None
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -78,7 +87,7 @@ def run(args: argparse.Namespace) -> int:
     readings = read_table(args.table)
     log = read_run_log(args.step) if args.step is not None else None
     try:
-        result = identify(readings, args.R, log, source=args.table)
+        result = identify(readings, args.R.value, log, source=args.table)
     except ZeroVoltRefusal as refused:
         raise zero_volt_refusal(refused) from None
     except LogRefused as refused:
@@ -92,7 +101,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(as_json(result))
     else:
-        sys.stdout.write(render(result))
+        sys.stdout.write(render(result, args.R.text))
     return 0
 
 
@@ -120,9 +129,10 @@ def _task15(result: Identification) -> list[str]:
     ]
 
 
-def render(result: Identification) -> str:
-    """The human report: the table of Tasks 4-9, then Tasks 11-15, then what the numbers show."""
-    out = [f"R = {format_reading(result.R, '')} ohm (Task 2)", ""]
+def render(result: Identification, R_typed: str = "") -> str:
+    """The human report: the table of Tasks 4-9, then Tasks 11-15, then what the numbers show.
+    ``R_typed``: the text R was given as, whose digits R is written with ('5,30' is 5.30)."""
+    out = [f"R = {format_reading(result.R, '', typed=R_typed)} ohm (Task 2)", ""]
     head = ("u_req V", "u_ss V", "omega_ss rad/s", "i_ss mA", "k_v V s/rad", f"f {F_UNIT}")
     body = [
         (

@@ -15,8 +15,15 @@ import sys
 from types import FrameType
 
 from minseg_tui.device.ptyserver import PtyServer
-from minseg_tui.device.virtual import OPTIONS, WIRING_FAULTS, VirtualBoard, settings_from
+from minseg_tui.device.virtual import (
+    OPTIONS,
+    WIRING_FAULTS,
+    VirtualBoard,
+    VirtualSettings,
+    settings_from,
+)
 from minseg_tui.errors import InputError
+from minseg_tui.quantities import NUMBER, EntryRefused, parse_quantity
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -67,6 +74,33 @@ def check_link_path(path: str) -> None:
             )
 
 
+def _read(name: str, raw: str) -> str | float:
+    """An option's text, or, for a number the TUI reads in an entry but settings_from does
+    not take (the decimal comma: '5,3' is 5.3), its value; settings_from checks the range
+    and refuses the rest with its words."""
+    if OPTIONS[name].kind is not float or NUMBER.match(raw.strip()):
+        return raw
+    try:
+        return parse_quantity(raw, "", allow_negative=True, allow_zero=True).value
+    except EntryRefused:
+        return raw
+
+
+def settings_of(args: argparse.Namespace) -> VirtualSettings:
+    """The virtual board's settings from the command line; InputError for a bad option."""
+    values: dict[str, str | float | bool] = {
+        name: _read(name, v) if isinstance(v, str) else v
+        for name in OPTIONS
+        if (v := getattr(args, name)) is not None
+    }
+    if args.fault:
+        values["fault"] = ",".join(args.fault)
+    try:
+        return settings_from(values)
+    except ValueError as exc:
+        raise InputError("", None, str(exc)) from None
+
+
 class _Terminated(Exception):
     """SIGTERM arrived (`kill PID`, a service manager stopping the sim)."""
 
@@ -79,13 +113,7 @@ def run(args: argparse.Namespace) -> int:
     """Serve until Ctrl-C or SIGTERM; exit 0. (Started in the background by a shell
     without job control, the sim inherits Ctrl-C ignored, as every such job does: stop it
     with `kill`.)"""
-    values = {name: getattr(args, name) for name in OPTIONS if getattr(args, name) is not None}
-    if args.fault:
-        values["fault"] = ",".join(args.fault)
-    try:
-        settings = settings_from(values)
-    except ValueError as exc:
-        raise InputError("", None, str(exc)) from None
+    settings = settings_of(args)
     if args.link is not None:
         if not args.link:
             raise InputError("--link", None, "expected a path for the device link, got ''")

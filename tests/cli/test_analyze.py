@@ -4,14 +4,18 @@ NXT motor recordings (../shared/data/nxt-motor-real, see its PROVENANCE.txt)."""
 import csv
 import json
 import math
+import re
 
 import numpy as np
 import pytest
 
 from minseg_tui.cli import main
-from minseg_tui.lab.saving.files import write_run_log
+from minseg_tui.lab.saving.files import read_run_log, write_run_log
+from minseg_tui.model.identify import response_observed
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.model.synth import make_log
+from minseg_tui.quantities import format_constant, format_diff
+from tests.model.test_identify_rise import creep_log
 from tests.shared_data import SHARED_DATA
 
 NXT = SHARED_DATA / "nxt-motor-real"
@@ -324,3 +328,79 @@ def test_a_late_step_is_never_said_to_act_further_than_a_sample(tmp_path, capsys
     ts_ms = 1e3 * float(np.median(np.diff(log.t)))
     late = [a for a in result["anomalies"] if a["kind"] == "late_step"]
     assert all(abs(a["size"]) <= ts_ms for a in late), late
+
+
+def _beside_T(out: str) -> str:
+    """The line under the first-order model's fit that says which T it is."""
+    lines = out.splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("  simulated on the measured"))
+    return lines[k + 1]
+
+
+def _analyzed(tmp_path, capsys, log: RunLog):
+    """The log written to a file, the check's first-order T (s, from --json) and the line
+    under its fit in the text."""
+    path = tmp_path / "log.csv"
+    write_run_log(path, log, {"ts": "0.005"})
+    assert main(["analyze", str(path), "--json"]) == 0
+    T_check = json.loads(capsys.readouterr().out)["baseline"]["params"]["T"]
+    assert main(["analyze", str(path)]) == 0
+    return path, T_check, _beside_T(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_which_T_and_why_identify_differs_where_the_speed_creeps(tmp_path, capsys, seed):
+    """A lab assistant met analyze's first-order T (161.5 ms on micromouse-n20-duty100, a fit
+    of every row's speed) and identify's 107.3 ms (the rise's) with no word. The line under the
+    fit says which T it is and, where the speed creeps on after the rise, identify's T and why
+    the two differ, with figures true of the log. (Plotted: the creep lengthens the check's T
+    from 98-100 ms to 109-111 ms, identify's every row's to 132 ms; the rise's is 103-104 ms.)"""
+    log = creep_log(seed)
+    path, T_check, line = _analyzed(tmp_path, capsys, log)
+    assert line.startswith("  This T is the model check's own: the first-order model simulated ")
+    st, _ = response_observed(read_run_log(path), [])
+    assert st.fit.rise_T == st.T and st.fit.every_row_T is not None
+    assert f"gives T = {format_constant(st.T, 's')}, the rise's" in line
+    assert f"all the rows the fit uses {format_constant(st.fit.every_row_T, 's')}" in line
+    # the creep's figures, read off the log: the mean speed over the first and the last tenth
+    # of the rows after 4 T of the rise
+    m = re.search(r"keeps creeping up, from ([0-9.]+) to ([0-9.]+) rad/s by the end", line)
+    assert m is not None, line
+    t, w = log.t, log.omega
+    onset = t[np.argmax(log.u > 0)]
+    later = np.flatnonzero(t > onset + 4 * st.T)
+    tenth = later.size // 10
+    assert float(m[1]) == pytest.approx(np.mean(w[later[:tenth]]), abs=0.06)
+    assert float(m[2]) == pytest.approx(np.mean(w[later[-tenth:]]), abs=0.06)
+    assert T_check > st.T  # "so it comes out longer than the rise's as well"
+    assert line.endswith(
+        "This T fits every row too, so it comes out longer than the rise's as well."
+    )
+
+
+def test_which_T_without_a_creep(tmp_path, capsys):
+    path, T_check, line = _analyzed(tmp_path, capsys, creep_log(0, share=0.0))
+    st, _ = response_observed(read_run_log(path), [])
+    assert line == (
+        "  This T is the model check's own: the first-order model simulated on the measured "
+        "input and fitted to the speed of those rows. identify fits the angle of all the rows "
+        f"it uses at the log's sample times and gives T = {format_constant(st.T, 's')} "
+        f"({format_diff(st.T / T_check - 1)} against this T)."
+    )
+    assert "creep" not in line
+
+
+@pytest.mark.shared_data
+def test_micromouse_says_which_T_and_why_identify_differs(capsys):
+    """The log the lead tried by hand: the baseline T 161.5 ms, identify's 107.3 ms."""
+    path = SHARED_DATA / "real-motors" / "micromouse-n20-duty100" / "step.csv"
+    assert main(["analyze", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "Baseline (first order): T = 161.5 ms" in out
+    line = _beside_T(out)
+    assert "with a dead time of 30.21 ms, and gives T = 107.3 ms, the rise's" in line
+    assert "from 39.0 to 41.4 rad/s by the end of the step" in line
+    assert line.endswith(
+        "This T fits every row too, and without identify's dead time, so it comes out longer "
+        "than the rise's as well."
+    )

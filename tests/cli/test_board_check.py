@@ -426,3 +426,23 @@ def test_the_question_at_a_terminal_reads_yes_or_no(monkeypatch, capsys, typed, 
     monkeypatch.setattr(sys, "stdin", io.StringIO(typed))
     assert board_check._ask_turned() is answer
     assert "Did the wheel turn? [y/n]" in capsys.readouterr().err
+
+
+def test_turn_seconds_is_read_as_the_tui_reads_a_number(capsys):
+    """--turn-seconds takes the decimal comma, as every entry of the TUI does (one reader,
+    quantities.parse_quantity); it was argparse's 'invalid float value: '0,3''."""
+    assert main(["board-check", "--sim", "--turn", "--turn-seconds", "0,3", "--json"]) == 1
+    captured = capsys.readouterr()
+    assert json.loads(captured.out)["counts"] == 0
+    assert "within 0.3 s" in captured.err
+
+
+@pytest.mark.parametrize("typed", ["abc", "3_0", "nan", "0.3 V"])
+def test_turn_seconds_refused_with_the_readers_words(capsys, typed):
+    with pytest.raises(SystemExit) as info:
+        main(["board-check", "--sim", "--turn", f"--turn-seconds={typed}"])
+    assert info.value.code == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err, err
+    assert err.startswith("minseg-tui board-check: argument --turn-seconds: "), err
+    assert "expected a number (e.g. 0.5)" in err, err

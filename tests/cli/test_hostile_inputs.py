@@ -16,9 +16,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from minseg_tui.cli import main
+from minseg_tui.cli import build_parser, main
 from minseg_tui.cli.output import json_text
+from minseg_tui.cli.sim import settings_of
 from minseg_tui.device.virtual import settings_from
+from minseg_tui.errors import InputError
 from minseg_tui.lab.saving import csvread, files
 from minseg_tui.lab.saving.files import write_run_log
 from minseg_tui.model.runlog import RunLog
@@ -385,21 +387,26 @@ def test_sim_options_out_of_range_are_one_line(capsys, flag, value, what):
 def test_sim_options_take_plain_decimal_numbers_only(value):
     """float() and int() read '3_0' as 30 and Arabic-Indic or full-width digits as digits:
     no one typing an option means that (issue 10 item 8). (settings_from is what `sim`
-    calls; through main() an accepted value would start serving for ever.)"""
+    calls; through main() an accepted value would start serving for ever. The `sim` command
+    first reads what the TUI's entries read, the decimal comma and full-width digits, as
+    they do: the test below.)"""
     for name in ("R", "seed"):
         with pytest.raises(ValueError, match=f"option {name}: expected"):
             settings_from({name: value})
 
 
-@pytest.mark.parametrize("value", ["6_1", "６.1", "nan", "inf"])
+@pytest.mark.parametrize("value", ["6_1", "nan", "inf", "6.1.1"])
 def test_identify_takes_r_in_plain_decimal_only(tmp_path, capsys, value):
+    """--R is read by Task 2's entry's reader (tests/cli/test_identify.py): what it refuses
+    is refused here (a full-width '６.1' is 6.1 there, as a student's input method types it,
+    and so here)."""
     (tmp_path / "table.csv").write_text(TABLE)
     with pytest.raises(SystemExit) as info:  # argparse's refusal, one line (cli._Parser)
         main(["identify", str(tmp_path / "table.csv"), "--R", value])
     assert info.value.code == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "Traceback" not in err, err
-    assert "resistance in ohm" in err, err
+    assert "expected a resistance in Ω" in err, err
 
 
 @pytest.mark.parametrize("ts", ["0.025 ms", "25 ms", "0.025 fortnights"])
@@ -423,3 +430,14 @@ def test_a_cpr_no_encoder_has_is_refused(tmp_path, capsys, cpr):
     times what the encoder explains."""
     path = _log_file(tmp_path / "log.csv", meta={"cpr": cpr})
     _one_line_refusal(capsys, ["analyze", str(path)], where=f"{path}:2:", what="# cpr:")
+
+
+def test_sim_options_take_the_decimal_comma_as_the_tui_does():
+    """`sim --R 5,3` was refused ("option R: expected a number, got '5,3'") while the TUI
+    reads '5,3' in every entry: the comma is read by the same reader (quantities)."""
+    args = build_parser("sim").parse_args(["sim", "--R", "5,3", "--deadtime", "0,06"])
+    settings = settings_of(args)
+    assert settings.params.motor.R == 5.3 and settings.params.dead_time == 0.06
+    too_small = build_parser("sim").parse_args(["sim", "--R", "0,05"])
+    with pytest.raises(InputError, match=r"option R: expected a number from 0\.1 to 100"):
+        settings_of(too_small)

@@ -10,7 +10,9 @@ import numpy as np
 import pytest
 
 from minseg_tui.cli import main
+from minseg_tui.lab.content.steps import FIELDS
 from minseg_tui.lab.saving.files import write_run_log
+from minseg_tui.lab.state.entries import read_entry
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
 from minseg_tui.model.runlog import RunLog
@@ -204,7 +206,7 @@ def test_bad_R_exits_2(files, capsys, R):
         main(["identify", str(files / "table.csv"), f"--R={R}"])
     assert exc.value.code == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "resistance in ohm" in err
+    assert err.count("\n") == 1 and "expected a resistance in Ω" in err
 
 
 def test_console_script(files):
@@ -239,3 +241,32 @@ def test_console_script(files):
         "missing.csv: cannot read the file (No such file or directory)"
     )
     assert "Traceback" not in bad.stderr
+
+
+@pytest.mark.parametrize("typed", ["5,3", "5,3 ohm", "5.3 Ω", "5300 mΩ", "5,30", " 5.3ohms "])
+def test_R_is_read_as_the_tui_reads_task_2s_entry(files, capsys, typed):
+    """A lab assistant types R the way a student does: the decimal comma and a unit, which
+    Task 2's entry reads ('5,3 ohm' is 5.3 Ω), were refused here ("expected a resistance in
+    ohm, got '5,3'", exit 2). The CLI reads --R with the TUI's own reader."""
+    tui = read_entry(FIELDS["R"], typed)
+    assert tui.ok and tui.value == pytest.approx(5.3, rel=1e-15)
+    assert main(["identify", str(files / "table.csv"), "--R", typed, "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["R"] == tui.value
+    assert main(["identify", str(files / "table.csv"), "--R", typed]) == 0
+    # the digits typed, as the TUI keeps them (walk 13, D6): '5,30' is 5.30, not 5.3
+    shown = "5.30" if typed == "5,30" else "5.3"
+    assert capsys.readouterr().out.startswith(f"R = {shown} ohm (Task 2)\n")
+
+
+@pytest.mark.parametrize("typed", ["5,3 V", "abc", "0", "-5", "6_1", "1e308", "3k"])
+def test_R_refused_with_the_tui_entrys_words(files, capsys, typed):
+    """A text Task 2's entry refuses is refused here with the same words, in one line."""
+    tui = read_entry(FIELDS["R"], typed)
+    assert not tui.ok
+    with pytest.raises(SystemExit) as info:
+        main(["identify", str(files / "table.csv"), f"--R={typed}"])
+    assert info.value.code == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err, err
+    assert err.startswith("minseg-tui identify: argument --R: "), err
+    assert tui.message.removeprefix("R: ") + " (see " in err, err

@@ -9,6 +9,8 @@ It sits in lab/content/, the lowest of lab/'s folders, because the session's not
 
 from __future__ import annotations
 
+import math
+from collections.abc import Sequence
 from functools import singledispatch
 
 from minseg_tui.model.identify.identification import (
@@ -18,6 +20,7 @@ from minseg_tui.model.identify.identification import (
     T63Note,
 )
 from minseg_tui.model.identify.observations import (
+    CountsHidden,
     CurrentHigh,
     CurrentInAmperes,
     DeadTime,
@@ -56,6 +59,7 @@ from minseg_tui.quantities import (
     F_UNIT,
     RPM,
     format_constant,
+    format_diff,
     format_fixed,
     format_interval,
     format_number,
@@ -540,6 +544,19 @@ def _(o: TRowsApart) -> str:
 
 
 @sentence.register
+def _(o: CountsHidden) -> str:
+    return (
+        "T's 95 % interval rests on the scatter the fit leaves on this log's one rise. The "
+        "angle's values sit on no grid of encoder counts and the log names none (a '# cpr:' "
+        "line): if the angle was read in whole counts whose grid the log does not show "
+        "(interpolated onto other instants, or rebuilt from a rounded speed), their rounding "
+        "is hidden from the fit and not in the interval, and T may lie outside it. A "
+        "'# cpr:' line giving the encoder's counts per revolution lets the interval hold "
+        "that rounding."
+    )
+
+
+@sentence.register
 def _(o: TOnBound) -> str:
     return (
         f"T = {format_constant(o.T, 's')} ended on the bound of the range the fit tries "
@@ -766,4 +783,64 @@ def u_ss_not_entered(level: float, extrapolated: bool, u_ss: float | None) -> st
         f"u_ss at {level:g} V is not entered (Task 4): the step's K divides by a u_ss "
         f"{which} the table's other rows{got}, and a K typed on Task 11 is not judged until "
         "it is entered."
+    )
+
+
+def check_T_beside(
+    T_check: float,
+    st: ResponseResult | None,
+    observations: Sequence[Observation],
+    extended: tuple[str, float] | None = None,
+) -> str:
+    """Which T the model check's first-order model (``minseg-tui analyze``'s baseline) has,
+    and identify's T of the same log beside it, so that a lab assistant is not left with two
+    T and no word. ``T_check`` (s): the first-order model simulated on the measured input and
+    fitted to the speed; ``st``: identify's result for the log, fitted to the angle (None
+    when identify cannot fit it), ``observations`` its observations of that fit;
+    ``extended``: the check's extended model in words and its T (s), when it has one.
+
+    Where the speed creeps on after the rise and identify's T follows the rise
+    (:class:`TRowsApart`), why the check's T, a fit of every row, is longer, with the log's
+    figures; elsewhere the extended model's T when it is nearer identify's."""
+    own = (
+        "This T is the model check's own: the first-order model simulated on the measured "
+        "input and fitted to the speed of those rows."
+    )
+    if st is None or not math.isfinite(st.T) or not (math.isfinite(T_check) and T_check > 0):
+        return own
+    dead = (
+        f", with a dead time of {format_constant(st.dead_time, 's')}," if st.dead_time > 0 else ""
+    )
+    apart = next(
+        (o for o in observations if isinstance(o, TRowsApart) and o.follows_rise and o.creep),
+        None,
+    )
+    if apart is not None and apart.creep is not None and T_check > apart.rise_T:
+        return (
+            f"{own} identify fits the angle at the log's sample times{dead} and gives "
+            f"T = {format_constant(st.T, 's')}, the rise's. For identify, "
+            + _creeping(apart, apart.creep)
+            + ": a second, slower process, outside a first-order model, which identify's T, "
+            "K, J and model (Task 14) leave out; a fit of every row takes a longer T that "
+            "partly follows the creep. This T fits every row too"
+            + (", and without identify's dead time" if st.dead_time > 0 else "")
+            + ", so it comes out longer than the rise's as well."
+        )
+    rows = (
+        f"the rows up to {RISE_SPAN:g} T after each edge"
+        if st.fit.every_row_T is not None
+        else "the rises"
+        if st.fit.method == "rising_steps"
+        else "all the rows it uses"
+    )
+    nearer = (
+        f" The extended model below ({extended[0]}) gives T = "
+        f"{format_constant(extended[1], 's')}, nearer identify's."
+        if extended is not None and abs(extended[1] - st.T) < abs(T_check - st.T)
+        else ""
+    )
+    return (
+        f"{own} identify fits the angle of {rows} at the log's sample times{dead} and gives "
+        f"T = {format_constant(st.T, 's')} ({format_diff(st.T / T_check - 1.0)} against "
+        f"this T).{nearer}"
     )

@@ -28,6 +28,7 @@ from minseg_tui.model.identify.identification import (
     ZeroVoltRise,
     identify,
     response_alone,
+    response_observed,
 )
 from minseg_tui.model.identify.observations import (
     Observation,
@@ -75,6 +76,7 @@ __all__ = [
     "rises",
     "steady_state",
     "response_alone",
+    "response_observed",
     "response_observations",
     "rise_windows",
     "table_observations",

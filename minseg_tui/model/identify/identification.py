@@ -344,8 +344,16 @@ def response_alone(log: RunLog, u_ss_table: Sequence[tuple[float, float]]) -> Re
     T and the 63 % reading, which need neither R nor i_ss. J (Task 13) needs R, k_v and f:
     it is NaN here. Raises InputError, LogRefused and ZeroVoltRefusal as :func:`identify`
     does for the log."""
-    step, _ = _response_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
-    return step
+    return response_observed(log, u_ss_table)[0]
+
+
+def response_observed(
+    log: RunLog, u_ss_table: Sequence[tuple[float, float]]
+) -> tuple[ResponseResult, list[Observation]]:
+    """:func:`response_alone` and what :func:`identify` observes of the log's fit (its
+    dead time, glitch rows, the rise's T beside every row's, ...): the model check's text
+    sets identify's T beside its own with them. Raises as :func:`response_alone` does."""
+    return _response_result(log, (), u_ss_table, math.nan, math.nan, math.nan, math.nan)
 
 
 NEAR_63: tuple[float, float] = (0.3, 2.0)

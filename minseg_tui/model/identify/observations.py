@@ -673,6 +673,16 @@ def creep_after_rise(log: RunLog, fit: TimeConstantFit) -> tuple[tuple[float, fl
 
 
 @dataclass(frozen=True)
+class CountsHidden(Observation):
+    """T's 95 % interval rests on the scatter the fit leaves on the log's one rise, and the
+    angle sits on no grid of encoder counts, nor does the log name one (``# cpr:``): the
+    rounding of counts it may have been read from, hidden by an interpolation onto other
+    instants, is not in the interval (:attr:`TimeConstantFit.counts_hidden`)."""
+
+    code: ClassVar[str] = "counts_hidden"
+
+
+@dataclass(frozen=True)
 class TOnBound(Observation):
     """T (s) ended on the bound of the range ``lo`` to ``hi`` (s) the fit tries."""
 
@@ -785,6 +795,8 @@ def fit_observations(
                 float(np.median(fit.omega_ss)) if every is not None and fit.omega_ss else None,
             )
         )
+    if fit.counts_hidden and T_determined:
+        out.append(CountsHidden())
     if fit.T_on_bound:
         lo, hi = fit.T_range
         out.append(TOnBound(fit.T, lo, hi))

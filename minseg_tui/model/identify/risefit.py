@@ -26,7 +26,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.model.identify.counts import count_quantum
-from minseg_tui.model.identify.lsq import dot
+from minseg_tui.model.identify.lsq import FEW_CLUSTERS, dot
 from minseg_tui.model.identify.rises import RiseWindow, reading_63, rise_windows
 from minseg_tui.model.identify.wholelog import WholeLogFit, fit_whole_log
 from minseg_tui.model.identify.windowfit import WindowsFit, fit_windows
@@ -164,7 +164,10 @@ class TimeConstantFit:
     rise_fit: with rise_T, the whole fit of those rows alone (its T, steady speeds, shift and
     fitted angle), for a model that follows the rise (None otherwise); every_row_T: set on a
     fit made from ``rise_fit`` (:func:`following_rise`), the T (s) of every row, the other
-    reading (None otherwise).
+    reading (None otherwise); counts_hidden: T's interval rests on the residuals of one
+    rise (:func:`~minseg_tui.model.identify.lsq.cluster_covariance`) and the angle sits on
+    no grid of counts that the log names or shows, so the rounding of counts it may have been
+    read from (then interpolated onto other instants) is not in it.
     """
 
     T: float
@@ -206,6 +209,7 @@ class TimeConstantFit:
     free_shift: float | None = None
     rise_fit: TimeConstantFit | None = None
     every_row_T: float | None = None
+    counts_hidden: bool = False
 
 
 def following_rise(fit: TimeConstantFit) -> TimeConstantFit | None:
@@ -384,6 +388,11 @@ def _fit(
     rise_63 = _onset(log, windows, 1.0 - math.exp(-1.0))
     delays: tuple[float, ...] = ()
     quantum = count_quantum(theta, log.cpr)
+    # an angle read in counts and then interpolated onto other instants sits on no grid, yet
+    # holds their rounding: a `# cpr:` header names the counts, and the interval holds it
+    hidden = quantum is None and log.declared_cpr is None
+    if quantum is None and log.declared_cpr is not None:
+        quantum = 2.0 * math.pi / log.declared_cpr
     windows_fit = partial(fit_windows, quantum=quantum)
 
     def late_start(T: float) -> bool:
@@ -569,6 +578,7 @@ def _fit(
         first_move=first_move,
         dead_time_sought=bool(sought) or (prior is not None and prior.dead_time_sought),
         moved_before_rise=_moved_before(log, windows, 0.0, at_edge=True) > STILL_SHARE,
+        counts_hidden=hidden and clusters.size < FEW_CLUSTERS,
     )
     if whole is not None:
         on_rises = whole.residuals[rises_fit.rows]
