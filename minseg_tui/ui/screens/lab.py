@@ -253,6 +253,28 @@ class StepPane(FieldForm):
         (``Widget.anchor`` keeps a scrollable's end in view, for logs), and it has no event
         that tells the group's scrolling from the program's (the form learns it from the
         mouse wheel and its own arrow-key actions)."""
+        self._landed_at: tuple[object, ...] | None = None
+        """The layout the landed entry was last placed on (:meth:`laid_out`)."""
+
+    def on_mount(self) -> None:
+        self.screen.screen_layout_refresh_signal.subscribe(self, self.laid_out, immediate=True)
+
+    def laid_out(self, _: Screen[object]) -> None:
+        """The screen was laid out (called at once, the regions fresh): the entry the step
+        landed in, while it has the keys and the group has not scrolled, is placed again
+        from the top when this layout moved it, changed its height or changed the room
+        around it. The placings deferred to after a refresh ran on whichever layout was the
+        last when the screen came to them, and a layout often follows another (the step's
+        scrollbar comes with the one after the layout that made the step taller than its
+        view; the panel's view, a hint moving under its box): where the entry landed
+        depended on the timing (Task 5 by 0 or 3 rows, Tasks 4 and 11-15 by up to 3)."""
+        landed = self._keep
+        if not isinstance(landed, FieldRow) or landed is not self.keyed or self.is_placing:
+            return
+        where = landed.layout_key()
+        if where != self._landed_at:
+            self._landed_at = where
+            landed.place_now(landing=True)
 
     async def show(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
         """Put ``step``'s widgets in the form in place of the last step's; return once they
@@ -568,7 +590,7 @@ class StepPane(FieldForm):
             row = self.landing_row()
             if row is not None:
                 self.focus_row(row, landing=True)
-                self._keep = row
+                self._keep, self._landed_at = row, None
             else:
                 self.current = None
                 self.browsing = False
