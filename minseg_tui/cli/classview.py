@@ -77,7 +77,7 @@ def text(view: ClassView) -> str:
             g.id,
             members(g),
             g.step or MISSING,
-            *(q.text(g.value(q.key)) for q in QUANTITIES),
+            *(g.text(q.key) for q in QUANTITIES),
             g.cause or MISSING,
             own_cell(g),
         ]

@@ -53,7 +53,7 @@ def table(view: ClassView) -> Table:
                 members(g),
                 g.date or MISSING,
                 g.step or MISSING,
-                *(q.text(g.value(q.key)) for q in QUANTITIES),
+                *(g.text(q.key) for q in QUANTITIES),
                 g.cause or MISSING,
                 own_cell(g),
                 str(len(g.flags)) if g.flags else "",

@@ -4,7 +4,7 @@ Each reach is here because Textual 8.2 offers no public way to do it; when an up
 Textual breaks one, this file is the one to read. Checked against Textual's source in the
 venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
-Ten names of Textual's internals, in four reaches:
+Twelve names of Textual's internals, in five reaches:
 
 1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``, done again here, and put in its
    place. The exact wait Pilot itself uses after a key (every node handles what was queued
@@ -28,6 +28,12 @@ Ten names of Textual's internals, in four reaches:
    the node then has nothing queued and no handler under way (its loop takes the next
    message only once the one before, its Idle event and its ``call_next`` callbacks are
    done). :func:`idle` reads it; no public API says whether a node is handling a message.
+5. :func:`callbacks_before_layouts`: ``Screen._on_idle`` replaced, calling
+   ``Screen._invoke_and_clear_callbacks`` at once. What waits for the screen's refresh
+   (``call_after_refresh``) runs when the screen is next idle, on the layout it has; a
+   widget asks for the next layout only when it is itself next idle, so on a busy machine
+   the screen may run them between two layouts. No public API orders the two; this makes
+   the screen run them before every layout still to come, the worst order.
 
 Done with public API here: the running app is ``MessagePump.app`` of a node attached to no
 app (not ``textual._context.active_app``); the still cursor is each Input's
@@ -236,3 +242,16 @@ def key_name(key: str) -> str:
     if read not in (key, None):
         raise ValueError(f"Textual reads key {name!r} as {read!r}, not {key!r}")
     return name
+
+
+async def _callbacks_first(self: Screen[object], event: Any) -> None:
+    """An idle screen's handler that runs what waits for its refresh at once, before the
+    layout it was asked for (Textual's own first lets its update timer lay the screen out)."""
+    event.prevent_default()
+    await self._invoke_and_clear_callbacks()
+
+
+def callbacks_before_layouts(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every screen runs what waits for its refresh before the layouts still to come (reach 5):
+    what a widget placed after a refresh reads the layout before the last."""
+    monkeypatch.setattr(Screen, "_on_idle", _callbacks_first)

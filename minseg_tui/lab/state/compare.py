@@ -13,6 +13,7 @@ functions apart from reading the policy file; no Textual. Units: SI (V, rad/s, s
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from collections.abc import Callable, Collection, Iterable, Sequence
 from dataclasses import dataclass, replace
@@ -552,15 +553,34 @@ def judge_model(text: str, T: float, K: float) -> tuple[bool, str]:
     for name, mine, want, unit in (("T", got.T, T, "s"), ("K", got.K, K, "rad/s/V")):
         if want and abs(mine / want - 1.0) > MODEL_TOLERANCE:
             wrong.append(
-                f"{name} = {format_reading(mine, shown_unit(unit))} where "
+                f"{name} = {format_reading(mine, shown_unit(unit), typed=typed_as(text, mine))} where "
                 f"{format_constant(want, unit)} "
                 f"was expected ({format_diff(mine / want - 1.0)})"
             )
     if wrong:
         return False, "wrong: " + "; ".join(wrong)
+    T_typed, K_typed = typed_as(text, got.T), typed_as(text, got.K)
     return True, (
-        f"right: T = {format_reading(got.T, 'ms')} and K = {format_reading(got.K, 'rad/s/V')}"
+        f"right: T = {format_reading(got.T, 'ms', typed=T_typed)} and "
+        f"K = {format_reading(got.K, 'rad/s/V', typed=K_typed)}"
     )
+
+
+_NUMBER = re.compile(r"(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][+-]?\d+)?")
+"""A number as the group types it in a model (decimal point or comma)."""
+
+
+def typed_as(text: str, value: float) -> str:
+    """The number written in ``text`` that is ``value`` (a model's T in s, its K): the text
+    to give :func:`format_reading`, which then shows the value with the digits typed, in the
+    unit it is shown in ("0.0570" is "57.0 ms", "1,930" is "1.930 rad/s/V"; the model line
+    dropped their trailing zeros). "" when none is (a T worked out, as in
+    "omega' = -omega/0.057 + ...")."""
+    for m in _NUMBER.finditer(text):
+        n = float(m.group().replace(",", "."))
+        if n and abs(value / n - 1.0) <= 1e-12:
+            return m.group()
+    return ""
 
 
 def reveal_keys(fields: Sequence[Field], answered: Collection[str]) -> list[str]:

@@ -115,6 +115,7 @@ def _to_json(g: Group) -> dict[str, object]:
         "flags": list(g.flags),
         "slipped": list(g.slipped),
         "notes": list(g.notes),
+        "typed": dict(g.typed),
     }
 
 
@@ -128,6 +129,12 @@ def _list(x: object) -> list[object]:
     if not isinstance(x, list):
         raise TypeError("expected a list")
     return x
+
+
+def _typed(x: object) -> dict[str, str]:
+    if not isinstance(x, dict):
+        raise TypeError("expected a mapping")
+    return {str(k): str(v) for k, v in x.items()}
 
 
 def _own_row(x: object) -> OwnRow:
@@ -158,6 +165,7 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
         flags=_texts(d["flags"]),
         slipped=_texts(d["slipped"]),
         notes=_texts(d.get("notes", [])),
+        typed=_typed(d.get("typed", {})),
     )
 
 

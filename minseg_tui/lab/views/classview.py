@@ -91,18 +91,20 @@ class Quantity:
         """``v`` (SI) in :attr:`display`."""
         return in_unit(v, self.display)
 
-    def text(self, v: float | None) -> str:
+    def text(self, v: float | None, typed: str = "") -> str:
         """``v`` (SI) as people read it, in :attr:`display` without the unit: a reading with
-        the digits typed ("5.3", never "5.300"), a computed value with :data:`DIGITS`
-        significant digits (T 42.89 ms as "42.89"); :data:`MISSING` for None."""
+        the digits typed (``typed``, the text it was typed as: "5,30" is "5.30", "5.3" never
+        "5.300"; :func:`~minseg_tui.quantities.format_reading`, as the lab and the report
+        give readings), a computed value with :data:`DIGITS` significant digits (T 42.89 ms
+        as "42.89"); :data:`MISSING` for None."""
         if v is None or not math.isfinite(v):
             return MISSING
         n = self.number(v)
-        return format_typed(n) if self.reading else format_number(n)
+        return format_reading(n, "", typed=typed) if self.reading else format_number(n)
 
-    def with_unit(self, v: float | None) -> str:
+    def with_unit(self, v: float | None, typed: str = "") -> str:
         """:meth:`text` with the unit ("5.3 Ω", "42.89 ms"); :data:`MISSING` for None."""
-        t = self.text(v)
+        t = self.text(v, typed)
         return t if t == MISSING else f"{t} {self.display}"
 
 
@@ -249,11 +251,22 @@ class Group:
     flags: tuple[str, ...] = ()
     slipped: tuple[str, ...] = ()
     notes: tuple[str, ...] = ()
+    typed: dict[str, str] = field(default_factory=dict)
+    """The texts the group's readings (R) were typed as, by key: shown with those digits."""
 
     def value(self, key: str) -> float | None:
         """The value of ``key`` (SI), None when not computed or not finite."""
         v = self.values.get(key)
         return v if v is not None and math.isfinite(v) else None
+
+    def text(self, key: str) -> str:
+        """The value of ``key`` as people read it, without the unit (:meth:`Quantity.text`):
+        a reading with the digits the group typed."""
+        return _quantity(key).text(self.value(key), self.typed.get(key, ""))
+
+    def with_unit(self, key: str) -> str:
+        """:meth:`text` with the unit ("5.30 Ω")."""
+        return _quantity(key).with_unit(self.value(key), self.typed.get(key, ""))
 
     def to_json(self) -> dict[str, object]:
         """The group as ``minseg-tui class --json`` writes it (SI units)."""
@@ -608,6 +621,7 @@ def _row(folder: Path, session: Session) -> Group:
         flags=tuple(s.text for s in found),
         slipped=tuple(q.key for q in QUANTITIES if any(q.key in s.affects for s in found)),
         notes=tuple(n for n in (run_note(session.response_run()),) if n),
+        typed={q.key: e.typed for q in QUANTITIES if q.reading and (e := session.entry(q.key))},
     )
 
 
@@ -628,9 +642,9 @@ def spread(key: str, values: Sequence[float]) -> Spread | None:
     return Spread(key, m, max(MAD_TO_SIGMA * mad, REL_FLOOR * abs(m)), len(xs))
 
 
-def outlier(s: Spread, value: float) -> str | None:
-    """The sentence for ``value`` of quantity ``s.key`` when it lies outside the class's
-    band, else None."""
+def outlier(s: Spread, value: float, typed: str = "") -> str | None:
+    """The sentence for ``value`` of quantity ``s.key`` (a reading: typed as ``typed``) when
+    it lies outside the class's band, else None."""
     lo, hi = s.band
     if lo <= value <= hi or s.sigma <= 0:
         return None
@@ -639,7 +653,7 @@ def outlier(s: Spread, value: float) -> str | None:
     times = abs(value - s.median) / s.sigma
     side = "above" if value > s.median else "below"
     return (
-        f"{s.key} = {q.with_unit(value)} is far {side} the class: {format_fixed(times, 0)} robust "
+        f"{s.key} = {q.with_unit(value, typed)} is far {side} the class: {format_fixed(times, 0)} robust "
         f"standard deviations from its median of {format_number(q.number(s.median))} {unit}."
     )
 
@@ -668,7 +682,7 @@ def judge(groups: Sequence[Group]) -> ClassView:
             )
         for key, s in spreads.items():
             v = g.value(key)
-            why = None if v is None else outlier(s, v)
+            why = None if v is None else outlier(s, v, g.typed.get(key, ""))
             if why:
                 extra.append(why)
         out.append(replace(g, flags=(*g.flags, *extra)) if extra else g)

@@ -217,12 +217,22 @@ class Readout(Vertical):
             ),
             focused,
         )
-        # below the step's heading, which covers its top while it is scrolled down
-        top = step.scrollable_content_region.y + step.heading_rows
+        # Worked out in the step's content, from the layout, not from where the screen last
+        # drew the rows: a lift deferred to after a refresh may come before the scroll of the
+        # one before it is drawn, and a lift by the rows that showed under these lines then
+        # lifted the entry twice (on Task 5, '30,1 Enter' left the step scrolled by 2, 4 or
+        # 8 rows by the timing alone). Read so, a second lift finds nothing to do.
+        view = step.scrollable_content_region
+        drawn = row.region
+        if not (drawn and self.region) or row.parent is not step:
+            return
+        room = self.region.y - view.y  # the step's rows above these lines
         for shown in (row, focused):
-            under = shown.region.bottom - self.region.y
-            if under <= 0:
+            top = row.virtual_region.y + shown.region.y - drawn.y
+            y = top + shown.region.height - room  # the least scroll that shows it whole
+            if y <= step.scroll_y:
                 return
-            if shown.region.y - under >= top:
-                step.scroll_to(y=step.scroll_y + under, animate=False, immediate=True)
+            # below the step's heading, which covers its top while it is scrolled down
+            if top - y >= step.heading_rows:
+                step.scroll_to(y=y, animate=False, immediate=True)
                 return

@@ -24,6 +24,11 @@ from minseg_tui.ui.widgets.textbox import TextBox
 DETAILS = "Details: figures, evidence, noise · Enter opens"
 """The fold's title (the details follow the sentences a student reads first)."""
 
+FOLD_SHUT, FOLD_OPEN = "+", "−"
+"""Before a fold's title: shut (Enter opens it) and open. Not Textual's own "▶"/"▼": "▶" is
+the mark of the entry the keys go to (:data:`~minseg_tui.ui.widgets.fields.FOCUS_MARK`),
+and at 80x24 without colour two "▶" showed at once, the fold's and the path box's."""
+
 
 class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
     """What the first-order model gets wrong in the run: first the close-up where the cause
@@ -49,7 +54,13 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             yield TracePlot("measured vs models", "t [s]", "omega [rad/s]", id="plot-check")
             yield TracePlot("residual", "t [s]", "rad/s", id="plot-residual")
         yield Prose("computing…", id="check-story")
-        with Collapsible(title=DETAILS, id="check-details", collapsed=True):
+        with Collapsible(
+            title=DETAILS,
+            id="check-details",
+            collapsed=True,
+            collapsed_symbol=FOLD_SHUT,
+            expanded_symbol=FOLD_OPEN,
+        ):
             yield Prose("", id="check-lines")
 
     def after_rows(self) -> Widget:

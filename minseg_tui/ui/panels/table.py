@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 
 from textual.app import ComposeResult
+from textual.binding import Binding
 from textual.widget import Widget
 from textual.widgets import DataTable
 
@@ -16,6 +17,21 @@ from minseg_tui.quantities import MISSING
 from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.panels.view_panel import ViewPanel
 from minseg_tui.ui.widgets.prose import Prose
+
+
+class CellTable(DataTable[str]):
+    """The table of Tasks 6-9, whose cursor keys act in the order typed with the keys
+    around them. The arrows are the step form's priority keys too (they edit an entry);
+    with the table focused the form's skip them, and Textual tried the table's own binding
+    only once the key had bubbled back up to the app, behind the keys the app had read
+    meanwhile: "Right Right F7" in one burst showed the formula of the cell the cursor left
+    (walk 13). Bound with priority here, the table's binding runs next in the app's own
+    pass over the priority bindings, before the app reads the next key."""
+
+    BINDINGS = [
+        Binding(key, f"cursor_{key}", show=False, priority=True)
+        for key in ("up", "down", "left", "right")
+    ]
 
 
 class TablePanel(ViewPanel[TableView], PanelKeys):
@@ -30,7 +46,7 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         self._formula_asked = False
 
     def compose(self) -> ComposeResult:
-        yield DataTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
+        yield CellTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
         yield Prose(
             f"{key_name('formula')} on a cell: the formula behind it.", id="formula", classes="hint"
         )

@@ -79,7 +79,7 @@ def row(k: int, g: Group) -> tuple[str, ...]:
         _members(g),
         _step(g),
         str(len(g.flags)) if g.flags else ("?" if not g.readable else ""),
-        *(_quantity(key).text(g.value(key)) for key in ("R", "k_v", "K", "T", "J")),
+        *(g.text(key) for key in ("R", "k_v", "K", "T", "J")),
     )
 
 
@@ -90,9 +90,7 @@ def detail(k: int, g: Group) -> Text:
     out.append(f"#{k} {_members(g)}", style="bold")
     where = f"reached {g.step or '?'}" + (f", now at {g.at}" if g.at and g.at != g.step else "")
     out.append(f"  {g.date or 'no date'} · {where} · {g.id}\n")
-    nums = [
-        f"{q.key} {'–' if (v := g.value(q.key)) is None else q.with_unit(v)}" for q in QUANTITIES
-    ]
+    nums = [f"{q.key} {'–' if g.value(q.key) is None else g.with_unit(q.key)}" for q in QUANTITIES]
     out.append(" · ".join(nums) + "\n")
     out.append(f"model check: {g.cause or 'not run'}\n")
     for o in g.own:

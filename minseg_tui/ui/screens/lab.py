@@ -23,6 +23,7 @@ from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
+from textual.geometry import Region
 from textual.reactive import reactive
 from textual.screen import Screen
 from textual.signal import Signal
@@ -253,6 +254,28 @@ class StepPane(FieldForm):
         (``Widget.anchor`` keeps a scrollable's end in view, for logs), and it has no event
         that tells the group's scrolling from the program's (the form learns it from the
         mouse wheel and its own arrow-key actions)."""
+        self._landed_at: tuple[object, ...] | None = None
+        """The layout the landed entry was last placed on (:meth:`laid_out`)."""
+
+    def on_mount(self) -> None:
+        self.screen.screen_layout_refresh_signal.subscribe(self, self.laid_out, immediate=True)
+
+    def laid_out(self, _: Screen[object]) -> None:
+        """The screen was laid out (called at once, the regions fresh): the entry the step
+        landed in, while it has the keys and the group has not scrolled, is placed again
+        from the top when this layout moved it, changed its height or changed the room
+        around it. The placings deferred to after a refresh ran on whichever layout was the
+        last when the screen came to them, and a layout often follows another (the step's
+        scrollbar comes with the one after the layout that made the step taller than its
+        view; the panel's view, a hint moving under its box): where the entry landed
+        depended on the timing (Task 5 by 0 or 3 rows, Tasks 4 and 11-15 by up to 3)."""
+        landed = self._keep
+        if not isinstance(landed, FieldRow) or landed is not self.keyed or self.is_placing:
+            return
+        where = landed.layout_key()
+        if where != self._landed_at:
+            self._landed_at = where
+            landed.place_now(landing=True)
 
     async def show(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
         """Put ``step``'s widgets in the form in place of the last step's; return once they
@@ -358,6 +381,32 @@ class StepPane(FieldForm):
         row = self.keyed
         if self._keep != "scrolled" and row is not None:
             row.call_after_refresh(row.bring_into_view)
+
+    def make_room(self, notice: Region, kept: Sequence[Region], top: bool) -> bool:
+        """Scroll the step so that the rows ``kept`` (screen regions: the entry with the keys,
+        the row judged last) come out from under ``notice``, a notice at the screen's ``top``
+        (else at its bottom): by as many rows as it covers of them, when the step scrolls
+        that far and the rows stay between its heading and the lines docked at its bottom.
+        False when it cannot (nothing scrolled): the notice is taller than the room."""
+        if not kept:
+            return False
+        view = self.scrollable_content_region
+        readouts = self.query_children(".readout")
+        docked = readouts.first().outer_size.height if readouts and readouts.first().display else 0
+        first, last = min(r.y for r in kept), max(r.bottom for r in kept)
+        if top:
+            by = notice.bottom - first  # the rows go down by this many
+            y = self.scroll_y - by
+            fits = y >= 0 and last + by <= view.bottom - docked
+        else:
+            by = last - notice.y  # the rows go up by this many
+            y = self.scroll_y + by
+            heading = self._heading.rows(view.width) if self._heading is not None else 0
+            fits = y <= self.max_scroll_y and first - by >= view.y + heading
+        if by <= 0 or not fits:
+            return False
+        self.scroll_to(y=y, animate=False, immediate=True)
+        return True
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """A panel key is live (and in the footer) only on the steps whose panel has it."""
@@ -568,7 +617,7 @@ class StepPane(FieldForm):
             row = self.landing_row()
             if row is not None:
                 self.focus_row(row, landing=True)
-                self._keep = row
+                self._keep, self._landed_at = row, None
             else:
                 self.current = None
                 self.browsing = False
@@ -853,12 +902,21 @@ class LabScreen(StatusScreen):
             # too many at once for the room on that side: the oldest goes (the app holds them)
             self._crowded = len(toasts)
             self.post_message(NoticesCrowd())
+        elif pane is not None and toasts and any(toasts[0].overlaps(r) for r in kept):
+            # one notice taller than the room on its side: the step makes room under it, or
+            # the notice is made wider (so fewer rows) and looked at again once laid out
+            if not pane.make_room(toasts[0], kept, low) and not self.has_class("-notices-wide"):
+                self.add_class("-notices-wide")
+        elif not toasts and self.has_class("-notices-wide"):
+            self.remove_class("-notices-wide")
 
     def _laid_out(self, _: Screen[object]) -> None:
         """The screen was laid out: notices that came or went, or rows that moved, are placed
         anew (:meth:`place_notices`) once their regions are known."""
         if self.is_current and self._toasts():
             self.place_notices()
+        elif self.has_class("-notices-wide"):  # the notices have gone: the next starts narrow
+            self.remove_class("-notices-wide")
 
     def _toasts(self) -> list[Widget]:
         """The notices on the screen, oldest first (Textual's toasts, in its rack of them, a

@@ -705,47 +705,75 @@ class FieldRow(Vertical):
         """The row in view now, and once more when the layout has settled (wrapped answers
         change height on their first layout): its box centred if it is cut off, then the
         whole row. ``landing`` (the step just shown, or its view just drawn): from the top of
-        the step each time, so the row ends up where the layout alone puts it, not where the
-        step happened to be scrolled when the view came. At once, never animated. Nothing
+        the step each time, the least scroll that shows the whole row, so the row ends up
+        where the layout alone puts it, not where the step happened to be scrolled when the
+        view came (and the step's form places it again after each layout that moves it,
+        :meth:`~minseg_tui.ui.screens.lab.StepPane.laid_out`). At once, never animated. Nothing
         once the row has left (a call deferred to after a refresh: the group moved on)."""
         if not self.is_attached:
             return
-        screen = self.screen
-        boxes = self.query(".field-input, .field-choice")
-        box = boxes.first() if boxes else None
-
-        def place(settled: bool) -> None:
-            if not self.is_attached:
-                return
-            form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
-            with nullcontext() if form is None else form.placing():
-                if landing:
-                    step = next(
-                        (a for a in self.ancestors if isinstance(a, ScrollableContainer)), None
-                    )
-                    if step is not None:
-                        step.scroll_to(y=0, animate=False, immediate=True)
-                # a list of answers is centred only once laid out (its answers wrap then)
-                centre = settled or not self.field.options
-                if (
-                    box is not None
-                    and centre
-                    and self.is_current
-                    and not screen.can_view_entire(box)
-                ):
-                    screen.scroll_to_center(box, animate=False, origin_visible=True, immediate=True)
-                screen.scroll_to_widget(self, animate=False, immediate=True)
-
         scrollers = [a for a in self.ancestors_with_self if isinstance(a, Widget)]
         before = [w.scroll_offset for w in scrollers]
-        place(False)
+        self.place_now(landing, settled=False)
         if [w.scroll_offset for w in scrollers] != before:
             # the second placing must see this scroll: a container tells the screen of its
             # scroll only when it is next idle, and the screen's refresh may come first and
             # lay nothing out (the second placing then measured the layout from before the
             # scroll: the box read as cut off and was centred again, lower)
-            screen.refresh(layout=True)
-        self.call_after_refresh(place, True)
+            self.screen.refresh(layout=True)
+        self.call_after_refresh(self.place_now, landing, True)
+
+    def place_now(self, landing: bool = False, settled: bool = True) -> None:
+        """One placing of :meth:`bring_into_view`, at once (``settled``: the layout has
+        settled since the row was shown, a list of answers may be centred)."""
+        if not self.is_attached:
+            return
+        screen = self.screen
+        boxes = self.query(".field-input, .field-choice")
+        box = boxes.first() if boxes else None
+        form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
+        with nullcontext() if form is None else form.placing():
+            if landing:
+                step = next((a for a in self.ancestors if isinstance(a, ScrollableContainer)), None)
+                if step is not None:
+                    step.scroll_to(y=0, animate=False, immediate=True)
+            # a list of answers is centred only once laid out (its answers wrap then); a
+            # landing is not: the least scroll from the top that shows the whole row
+            centre = (settled or not self.field.options) and not landing
+            if box is not None and centre and self.is_current and self._cut_off(box):
+                screen.scroll_to_center(box, animate=False, origin_visible=True, immediate=True)
+            screen.scroll_to_widget(self, animate=False, immediate=True)
+
+    def layout_key(self) -> tuple[object, ...]:
+        """What a landing's placing depends on in the layout: where the row lies in the
+        step and how tall it is, where its box lies in it, the view's size and the rows the
+        docked lines take (:meth:`~minseg_tui.ui.screens.lab.StepPane.laid_out`)."""
+        boxes = self.query(".field-input, .field-choice")
+        box = boxes.first().region if boxes else None
+        row = self.region
+        inside = None if box is None else (box.y - row.y, box.height)
+        parent = self.parent
+        view = parent.scrollable_content_region.size if isinstance(parent, Widget) else None
+        return (self.virtual_region, inside, view, self.dock_gutter)
+
+    def _cut_off(self, box: Widget) -> bool:
+        """Whether a row of ``box`` (this row's box or list of answers) lies outside the view
+        of the step, at the scroll the step has now: its rows only (Textual's
+        ``can_view_entire`` read the columns too), worked out from the layout, not from where
+        the screen last drew the step (a scroll just made is drawn only at the next
+        refresh). Read from where the screen drew it, a box came out cut off or not by the
+        timing alone, and the step was centred on it or not: Task 5 landed scrolled by 3
+        rows or by none (drawn before the step's scrollbar came, its box reached under the
+        scrollbar's columns); a landing's placing from the top read the box where the last
+        placing had scrolled it."""
+        step = self.parent
+        row, drawn = self.region, box.region
+        if not (isinstance(step, ScrollableContainer) and row and drawn):
+            return True
+        top = self.virtual_region.y + drawn.y - row.y  # in the step's content
+        return top < step.scroll_y or top + drawn.height > step.scroll_y + (
+            step.scrollable_content_region.height
+        )
 
     def pending(self) -> str | None:
         """The text standing in the box that the lab does not hold yet (None when there is
