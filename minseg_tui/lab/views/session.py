@@ -404,6 +404,15 @@ def capture_live(session: Session, level: float, t: ArrayLike, count: ArrayLike)
     return _verdict(e, "")
 
 
+def read_only(session: Session) -> str:
+    """The opening of each sentence that refuses a change of a session opened read-only, with
+    why it is: "this session is open read-only (its file is damaged)" for a damaged one (the
+    start screen opens it so), "(opened to look, not to change)" for one opened from the
+    class view, whose file is sound (walk 14, D2: F5 there called it damaged)."""
+    why = "its file is damaged" if session.damaged else "opened to look, not to change"
+    return f"this session is open read-only ({why})"
+
+
 REVEAL_KEY = key_name("reveal")
 """The key a lab assistant presses to show a step's computed values before the group answers."""
 

@@ -1,0 +1,125 @@
+"""Walk 14's defects (issue 20), each as the walk met it, at 80x24 with Pilot on real session
+folders (/work/coord/WALK14.md)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from minseg_tui.errors import InputError
+from minseg_tui.lab.state.session import Session
+from minseg_tui.ui.screens.classview import ClassScreen
+from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.start import StartScreen
+from tests.classview.build import group
+from tests.ui.conftest import quiet_app
+from tests.ui.fakes import QuietDevice, frozen_stream
+from tests.ui.helpers import burst, goto, heard_notifications, settle, shown
+
+
+def _files(root: Path) -> dict[str, bytes]:
+    """Every file under ``root`` with its bytes (a read-only session changes none)."""
+    return {str(p): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+async def _open_from_the_class_view(pilot) -> None:
+    """F12 on the start screen, Enter on the first group: its session opens read-only."""
+    app = pilot.app
+    await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+    await pilot.press("f12")
+    await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
+    await pilot.press("enter")
+    await settle(pilot, lambda: isinstance(app.screen, LabScreen) and shown(app))
+    assert app.screen.readonly
+
+
+async def test_ctrl_r_in_a_session_opened_from_the_class_view_shows_and_goes_on(tmp_path):
+    """D1: the class view, Enter on a group (opened read-only), Task 14 (the group's model not
+    typed yet), Ctrl+R: the program died with a traceback ("InputError: ... this session was
+    opened read-only"), the reveal's save refused by the read-only session. Now the lab
+    assistant sees the computed values, the notice says they are shown here and not
+    recorded, the program goes on, and nothing under the sessions folder changes."""
+    root = tmp_path / "sessions"
+    group(root, ["Ada", "Bo"], seed=1, at="task12")
+    before = _files(root)
+    app = quiet_app(root)
+    said = heard_notifications(app)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _open_from_the_class_view(pilot)
+        await goto(pilot, "task14")
+        await burst(pilot, "ctrl+r")
+        await settle(pilot, lambda: any("not recorded" in m for m in said))
+        assert app.is_running and isinstance(app.screen, LabScreen)
+        with app.session as s:
+            assert "own.model" in s.revealed()
+        told = next(m for m in said if "not recorded" in m)
+        assert "read-only" in told and "damaged" not in told
+    assert _files(root) == before
+
+
+async def test_f4_in_a_session_opened_from_the_class_view_says_so_and_goes_on(tmp_path):
+    """D1: the class view, Enter, Task 4, F3, the speed settled, F4: the capture's save
+    raised in the read-only session and the program died. Now F4 says the session is open
+    read-only (opened to look, not damaged) and captures nothing; the program goes on."""
+    root = tmp_path / "sessions"
+    group(root, ["Ada", "Bo"], seed=1, at="task12")
+    before = _files(root)
+    app = quiet_app(root, QuietDevice(seed=2))
+    said = heard_notifications(app)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _open_from_the_class_view(pilot)
+        await goto(pilot, "task4")
+        with app.session as s:
+            held = s.entry("omega_ss@2.5")
+        await burst(pilot, "f3")
+        assert app.requested == 2.5
+        app.live.extend(frozen_stream(u=2.5))
+        await burst(pilot, "f4")
+        await settle(pilot, lambda: any("read-only" in m for m in said[1:]))
+        assert app.is_running and isinstance(app.screen, LabScreen)
+        told = [m for m in said[1:] if "read-only" in m]
+        assert told and all("damaged" not in m for m in told)
+        with app.session as s:
+            assert s.entry("omega_ss@2.5") == held and s.capture_of(2.5) is None
+    assert _files(root) == before
+
+
+async def test_f5_in_a_session_opened_from_the_class_view_does_not_call_it_damaged(tmp_path):
+    """D2: F5 on Task 10 of a sound session opened from the class view said "this session is
+    open read-only (its file is damaged)". It says why it is read-only: opened to look."""
+    root = tmp_path / "sessions"
+    group(root, ["Ada", "Bo"], seed=1, at="task12")
+    app = quiet_app(root)
+    said = heard_notifications(app)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await _open_from_the_class_view(pilot)
+        await goto(pilot, "task10", focus=None)
+        await burst(pilot, "f5")
+        await settle(pilot, lambda: any("nothing can be recorded" in m for m in said))
+        told = next(m for m in said if "nothing can be recorded" in m)
+        assert "damaged" not in told and "to look" in told
+        assert app.recording is None
+
+
+def test_a_read_only_session_refuses_a_change_before_making_it(tmp_path):
+    """D1's root: a read-only session changed itself in memory (and import_run copied the log
+    into its runs/ folder) before its save refused. Each change is now refused first."""
+    root = tmp_path / "sessions"
+    folder = group(root, ["Ada", "Bo"], seed=1, at="task12")
+    log = next((folder / "runs").glob("*.csv"))
+    elsewhere = tmp_path / "log.csv"
+    elsewhere.write_bytes(log.read_bytes())
+    before = _files(root)
+    with Session.open(folder, readonly=True) as s:
+        R, runs = s.entry("R"), list(s.runs)
+        for change in (
+            lambda: s.enter("R", "9.9"),
+            lambda: s.import_run(elsewhere),
+            lambda: s.capture_omega(2.5, [0.0, 0.025, 0.05, 0.075], [3.8, 3.8, 3.8, 3.8]),
+            lambda: s.select_run(runs[0].name),
+        ):
+            with pytest.raises(InputError, match="read-only"):
+                change()
+        assert s.entry("R") == R and s.runs == runs and s.capture_of(2.5) is None
+    assert _files(root) == before
