@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from textual.widgets import Static
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.state.session import Session
@@ -123,3 +124,21 @@ def test_a_read_only_session_refuses_a_change_before_making_it(tmp_path):
                 change()
         assert s.entry("R") == R and s.runs == runs and s.capture_of(2.5) is None
     assert _files(root) == before
+
+
+async def test_the_class_view_does_not_say_nothing_is_missing_of_an_unfinished_group(tmp_path):
+    """D3: a group with one row of three (4.5 V), no board checks, none of its own values of
+    Tasks 11-15 and no Summary: the class view's detail said "Nothing is missing." It says
+    that what the numbers above need is there, and names what the group has not answered
+    yet, as F8's notice does."""
+    root = tmp_path / "sessions"
+    group(root, ["Ada", "Bo"], seed=1, at="task12", rows={2.5: ("", "", ""), 3.5: ("", "", "")})
+    app = quiet_app(root)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+        await pilot.press("f12")
+        await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
+        detail = str(app.screen.query_one("#class-group", Static).render())
+        assert "Nothing is missing" not in detail
+        assert "Nothing the numbers above need is missing." in detail
+        assert "Not answered yet: Task 1, 3, 4, 5, " in detail, detail

@@ -115,6 +115,7 @@ def _to_json(g: Group) -> dict[str, object]:
         "flags": list(g.flags),
         "slipped": list(g.slipped),
         "notes": list(g.notes),
+        "unanswered": g.unanswered,
     }
 
 
@@ -158,6 +159,7 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
         flags=_texts(d["flags"]),
         slipped=_texts(d["slipped"]),
         notes=_texts(d.get("notes", [])),
+        unanswered=str(d.get("unanswered", "")),
     )
 
 
