@@ -16,7 +16,7 @@ from minseg_tui.ui.screens.start import StartScreen
 from tests.classview.build import group
 from tests.ui.conftest import quiet_app
 from tests.ui.fakes import QuietDevice, frozen_stream
-from tests.ui.helpers import burst, goto, heard_notifications, settle, shown
+from tests.ui.helpers import burst, goto, heard_notifications, settle, shown, start, type_in
 
 
 def _files(root: Path) -> dict[str, bytes]:
@@ -142,3 +142,19 @@ async def test_the_class_view_does_not_say_nothing_is_missing_of_an_unfinished_g
         assert "Nothing is missing" not in detail
         assert "Nothing the numbers above need is missing." in detail
         assert "Not answered yet: Task 1, 3, 4, 5, " in detail, detail
+
+
+async def test_a_formula_with_several_unknown_names_is_refused_once_naming_them_all(quiet):
+    """D6: Preparation 12, 'ka*iss/wss Enter': refused for 'wss' alone (no hint), then, 'wss'
+    mended, for 'ka', then for 'iss': three refusals for one formula, the last name first.
+    One refusal now names each unknown name in the order typed, each with its hint ('w' is
+    how the lab writes omega by hand)."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep12")
+        row = await type_in(pilot, "prep12.f", "ka*iss/wss")
+        assert (
+            "unknown names 'ka' (did you mean k_a?), 'iss' (did you mean i_ss?), "
+            "'wss' (did you mean omega_ss?)"
+        ) in row.message, row.message
