@@ -16,7 +16,16 @@ from minseg_tui.ui.screens.start import StartScreen
 from tests.classview.build import group
 from tests.ui.conftest import quiet_app
 from tests.ui.fakes import QuietDevice, frozen_stream
-from tests.ui.helpers import burst, goto, heard_notifications, settle, shown, start, type_in
+from tests.ui.helpers import (
+    burst,
+    goto,
+    heard_notifications,
+    settle,
+    shown,
+    start,
+    start_with_a_run,
+    type_in,
+)
 
 
 def _files(root: Path) -> dict[str, bytes]:
@@ -158,3 +167,31 @@ async def test_a_formula_with_several_unknown_names_is_refused_once_naming_them_
             "unknown names 'ka' (did you mean k_a?), 'iss' (did you mean i_ss?), "
             "'wss' (did you mean omega_ss?)"
         ) in row.message, row.message
+
+
+async def test_r_ten_times_the_meter_asks_about_the_decimal_comma_first(quiet):
+    """D7: Task 2 '53 Enter' with the multimeter showing 5.3 Ω: "above 20 Ω: a loose motor
+    cable or the current jumper missing", not a word of the likeliest slip, a decimal comma
+    lost; the class view names it (an R a power of ten off). The warning asks it first."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task2")
+        row = await type_in(pilot, "R", "53")
+        assert "above 20 Ω: a decimal comma lost (53 for 5,3)?" in row.message, row.message
+
+
+async def test_a_wrong_value_says_by_how_much_reading_explains_in_plain_words(quiet):
+    """D11: Task 15 '95' against 9.500 rad/s: "wrong: +900 % ..., more than the 10 % off
+    that reading or rounding explains". It reads "off by more than the 10 % that reading or
+    rounding explains"."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        await type_in(pilot, "own.omega_step", "7,7")
+        await type_in(pilot, "own.K", "1,9")
+        await goto(pilot, "task15")
+        row = await type_in(pilot, "own.omega_5", "95")
+        assert "off by more than the 10 % that reading or rounding explains" in row.message, (
+            row.message
+        )
