@@ -195,3 +195,20 @@ async def test_a_wrong_value_says_by_how_much_reading_explains_in_plain_words(qu
         assert "off by more than the 10 % that reading or rounding explains" in row.message, (
             row.message
         )
+
+
+async def test_f9_and_alt_right_without_a_run_say_there_is_no_rise(quiet):
+    """D9: Task 11 before any run, F9 (the footer's "f9 Zoom"): nothing changed and nothing
+    was said, while Ctrl+R on the same screen explains itself. F9 and Alt+→ now say that
+    there is no rise to zoom to and why."""
+    app = quiet()
+    said = heard_notifications(app)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task11")
+        await burst(pilot, "f9")
+        await settle(pilot, lambda: any("no rise to zoom to" in m for m in said))
+        assert "no rise to zoom to: no step run recorded yet (Task 10)" in said
+        said.clear()
+        await burst(pilot, "alt+right")
+        await settle(pilot, lambda: any("no rise to zoom to" in m for m in said))
