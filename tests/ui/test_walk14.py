@@ -18,6 +18,7 @@ from tests.ui.conftest import quiet_app
 from tests.ui.fakes import QuietDevice, frozen_stream
 from tests.ui.helpers import (
     burst,
+    enter_all,
     goto,
     heard_notifications,
     settle,
@@ -212,3 +213,28 @@ async def test_f9_and_alt_right_without_a_run_say_there_is_no_rise(quiet):
         said.clear()
         await burst(pilot, "alt+right")
         await settle(pilot, lambda: any("no rise to zoom to" in m for m in said))
+
+
+async def test_f3_after_a_resume_on_task_4_goes_to_the_first_voltage_not_done(quiet):
+    """D8: Task 4 with the 2.5 and 3.5 V rows done, the program quit and the session resumed
+    (the motor off), F3: 2.5 V again (and F4 there captured the 2.5 V row again); the
+    group needed F3 three times for 4.5 V. With the motor off, F3 now sets the first voltage
+    whose entries are all empty; from a voltage it goes on to the next, as before."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(
+            app,
+            {
+                "omega_ss@2.5": "3.825",
+                "u_ss@2.5": "2,05",
+                "omega_ss@3.5": "5.808",
+                "u_ss@3.5": "3,05",
+            },
+        )
+        await goto(pilot, "task4")
+        assert app.requested is None
+        await burst(pilot, "f3")
+        assert app.requested == 4.5
+        await burst(pilot, "f3")
+        assert app.requested == 2.5
