@@ -870,11 +870,10 @@ class LabApp(App[None]):
             )
             return
         with self.session as s:
-            readonly = s.readonly
-        if readonly:
+            read_only = lab_views.read_only(s) if s.readonly else ""
+        if read_only:
             self.notify(
-                "this session is open read-only (its file is damaged): nothing can be "
-                "recorded in it; start a new session to record",
+                f"{read_only}: nothing can be recorded in it; start a new session to record",
                 severity="error",
             )
             return

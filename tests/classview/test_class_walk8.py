@@ -63,7 +63,8 @@ async def test_the_screen_says_it_and_fits_80_columns(tmp_path):
         assert cells[7] == T_ms and cells[8] == J
         detail = str(screen.query_one("#class-group", Static).render())
         assert f"- note: {CUT}" in detail, detail
-        assert "Nothing is missing." not in detail and "Nothing else is missing." in detail
+        assert "Nothing the numbers above need is missing." not in detail
+        assert "Nothing else the numbers above need is missing." in detail
         assert "R 5.3 Ω" in detail and f"T {T_ms} ms" in detail
         await settle(pilot)
         # every column whole on screen: nothing to scroll sideways to

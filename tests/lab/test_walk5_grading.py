@@ -20,7 +20,7 @@ def test_a_J_with_f_in_mN_m_s_per_rad_is_marked_wrong_and_told_the_unit(tmp_path
         s.enter("own.J", "0.057*(5.3*1.85+0.495*0.322)/5.3")  # f as the table shows it
         comp = _compare(s, "task13")["your J"][1]
         assert (
-            "wrong: more than the 10 % off" in comp
+            "wrong: off by more than the 10 %" in comp
             and "f goes into this formula in N m s/rad" in comp
         )
         assert s.step_status("task13") == "wrong"

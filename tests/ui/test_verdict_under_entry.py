@@ -39,7 +39,7 @@ async def test_the_verdict_stands_under_the_entry_typed_in_at_80x24(quiet):
         await type_in(pilot, "own.omega_step", format_number(omega, 3))
         said, msg = _message(app, "own.omega_step")
         assert said.startswith("✗ wrong: +") and "the program's steady speed" in said, said
-        assert "more than the 15 % off" in said and _in_view(app, msg)
+        assert "off by more than the 15 %" in said and _in_view(app, msg)
         await type_in(pilot, "own.K", format_number(omega / u_ss, 4))
         await settle(pilot)
         said, msg = _message(app, "own.K")

@@ -23,7 +23,7 @@ async def test_a_J_with_f_in_mN_m_s_per_rad_gets_a_cross_and_the_unit_named(quie
         compare = " ".join(str(app.screen.query_one("#compare").render()).split())
         assert (
             "+" in compare
-            and "wrong: more than the 10 % off" in compare
+            and "wrong: off by more than the 10 %" in compare
             and "f goes into this formula in N m s/rad" in compare
         )
         assert nav_mark(app, "task13") == "✗"

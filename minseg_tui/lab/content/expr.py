@@ -132,6 +132,9 @@ def _name_hint(name: str, names: tuple[str, ...]) -> str:
     if parts is not None and len(parts) > 1:
         return f" (write products with *: {'*'.join(parts)})"
     close = difflib.get_close_matches(name, names, n=1, cutoff=0.6)
+    if not close:  # 'w' for omega, as the lab writes it by hand ('wss': omega_ss)
+        short = {n.replace("omega", "w").replace("_", ""): n for n in names}
+        close = [short[k]] if (k := name.replace("_", "")) in short else []
     return f" (did you mean {close[0]}?)" if close else ""
 
 
@@ -198,6 +201,22 @@ def formula_fault(text: str) -> str | None:
     return None
 
 
+def _unknown_names(tree: ast.AST, names: tuple[str, ...]) -> list[str]:
+    """The names in ``tree`` that are neither ``names`` nor a constant or function the
+    formulas know, each once, in the order they stand in the text (a name called as a
+    function is not one: the call is refused as a call)."""
+    called = {id(n.func) for n in ast.walk(tree) if isinstance(n, ast.Call)}
+    found = sorted(
+        (n for n in ast.walk(tree) if isinstance(n, ast.Name) and id(n) not in called),
+        key=lambda n: (n.lineno, n.col_offset),
+    )
+    return list(
+        dict.fromkeys(
+            n.id for n in found if n.id not in names and n.id not in _CONSTS and n.id not in _FUNCS
+        )
+    )
+
+
 def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Formula:
     """Read ``text`` as a formula in ``names``; raise :class:`FormulaRefused` with one line."""
     allowed = (
@@ -214,14 +233,14 @@ def parse_formula(text: str, names: tuple[str, ...] = (), label: str = "") -> Fo
         raise FormulaRefused(
             label, None, fault or f"{text.strip()!r} cannot be read; expected {allowed}"
         ) from None
+    unknown = _unknown_names(tree, names)
+    if unknown:  # every one at once, as typed (walk 14, D6: one refusal for each, the last first)
+        said = ", ".join(f"{n!r}{_name_hint(n, names)}" for n in unknown)
+        many = "names" if len(unknown) > 1 else "name"
+        raise FormulaRefused(label, None, f"unknown {many} {said}; expected {allowed}")
     used: set[str] = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
-            if node.id not in names and node.id not in _CONSTS and node.id not in _FUNCS:
-                hint = _name_hint(node.id, names)
-                raise FormulaRefused(
-                    label, None, f"unknown name {node.id!r}{hint}; expected {allowed}"
-                )
             if node.id in names:
                 used.add(node.id)
         elif isinstance(node, ast.Call):

@@ -74,7 +74,7 @@ def read_model(text: str) -> ModelAnswer:
         try:
             parts.append(parse_formula(s, ("D", "W", "U")))
         except InputError as exc:
-            if re.search(r"unknown name '(T|K)'", str(exc)):
+            if re.search(r"unknown names? [^;]*'(T|K)'", str(exc)):
                 raise _unreadable("put the numbers in for T and K") from None
             raise _unreadable(f"{side.strip()!r} cannot be read") from None
     left, right = parts

@@ -488,7 +488,8 @@ _R_PLAUSIBLE = Plausible(
     1.0,
     20.0,
     low="below 1 Ω: a short, or the probes touch each other; this motor usually reads 3-6 Ω",
-    high="above 20 Ω: a loose motor cable or the current jumper missing; this motor usually reads 3-6 Ω",
+    high="above 20 Ω: a decimal comma lost (53 for 5,3)? Else a loose motor cable or the "
+    "current jumper missing; this motor usually reads 3-6 Ω",
 )
 
 

@@ -406,7 +406,10 @@ def compare_fields(
         if rel is not None and tol is not None and right is None:
             right = abs(rel) <= tol
             if not right:
-                verdict = f"wrong: more than the {format_percent(tol)} off that reading or rounding explains"
+                verdict = (  # walk 14, D11: "the 10 % off that reading ... explains"
+                    f"wrong: off by more than the {format_percent(tol)} that reading or "
+                    "rounding explains"
+                )
                 said = ""
                 if fld.key == "own.J" and ident and T_used is not None and isinstance(own, float):
                     said = _j_slip(own, T_used, ident.R, ident.f, ident.k_v, ident.k_a)

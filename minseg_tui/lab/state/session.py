@@ -154,6 +154,10 @@ class _Cache:
         may be computed by two workers at once: neither part is lost)."""
 
 
+READ_ONLY = "this session was opened read-only"
+"""Why a change of a session opened read-only is refused (the class view opens every
+session so; the start screen a damaged one)."""
+
 NO_RUN_YET = "no run recorded yet (Task 10)"
 """What stands in for the model check and the class's figures before any run is recorded
 (the square wave of Task 10 records one)."""
@@ -369,6 +373,14 @@ class Session:
         if self.frozen:
             raise SessionFrozen(f"a snapshot of session {self.id} is not changed")
 
+    def _writable(self) -> None:
+        """Refuse a change of a snapshot or of a session opened read-only, before anything
+        is changed (walk 14, D1: a read-only session took the change in memory, an imported
+        log into its runs/ folder, and only its save refused, with an error nothing caught)."""
+        self._change()
+        if self.readonly:
+            raise InputError(str(self.folder), None, READ_ONLY)
+
     @property
     def save_problem(self) -> SaveProblem | None:
         """Why the session is not all on disk (``.line``: one line for the status bar), or
@@ -388,7 +400,7 @@ class Session:
         (what they were shown, the lab's policy): the time of the last change stays."""
         self._change()
         if self.readonly:
-            raise InputError(str(self.folder), None, "this session was opened read-only")
+            raise InputError(str(self.folder), None, READ_ONLY)
         ok = True
         try:
             self._keep_unkept()
@@ -482,7 +494,7 @@ class Session:
         changed) when ``root`` cannot take it."""
         self._change()
         if self.readonly:
-            raise InputError(str(self.folder), None, "this session was opened read-only")
+            raise InputError(str(self.folder), None, READ_ONLY)
         # the id as a folder name of its own: a file saying '../x' must not leave ``root``
         folder, lock = new_session_folder(Path(root), _slug(self.id) or "session")
         left: list[str] = []
@@ -534,7 +546,7 @@ class Session:
     def set_members(self, members: Sequence[str]) -> None:
         """Change the group's members (saved); the names they replace are kept, in
         :attr:`former_members` (a misspelt name mended: the instructor can see it was)."""
-        self._change()
+        self._writable()
         old = [str(m) for m in self._data["members"]]
         new = [str(m) for m in members]
         if new != old:
@@ -560,7 +572,7 @@ class Session:
 
     def go_to(self, step_id: str) -> Step:
         """Move to ``step_id`` (KeyError if unknown); saved, so resume comes back here."""
-        self._change()
+        self._writable()
         new = lab_steps.step(step_id)
         self._data["current_step"] = new.id
         self.save()
@@ -608,7 +620,7 @@ class Session:
         fails, kept in memory and said by :attr:`save_problem`). A blank text where nothing
         was entered (a Space meant for a 'done?' tick that went into a note) is no entry:
         nothing is stored, and the step stays as it was."""
-        self._change()
+        self._writable()
         read = read_entry(FIELDS[key], text)
         old = self._entries.get(key)
         if old is None and read.ok and not text.strip():
@@ -636,7 +648,7 @@ class Session:
         it back), so the field holds what is in effect again: the accepted answer the refusal
         stood over, or nothing when no answer was ever accepted. Saved. Whether anything was
         dropped."""
-        self._change()
+        self._writable()
         e = self._entries.get(key)
         if e is None or (e.ok and e.refused is None):
             return False
@@ -655,7 +667,7 @@ class Session:
             return self.enter(key, ", ".join(chr(ord("a") + k) for k in options))
         if key not in FIELDS:
             raise KeyError(key)
-        self._change()
+        self._writable()
         if self._entries.pop(key, None) is not None:
             self._changed()
         return None
@@ -759,7 +771,7 @@ class Session:
     def record_check(self, key: str, ok: bool, text: str, counts: int | None = None) -> None:
         """Keep the result of board check ``key`` (KeyError for an unknown key), replacing an
         earlier one of the same check; saved. ``counts``: the encoder counts it saw."""
-        self._change()
+        self._writable()
         if key not in lab_steps.BOARD_CHECKS:
             raise KeyError(key)
         result: dict[str, Any] = {
@@ -778,6 +790,8 @@ class Session:
         ``speed_watched`` (once). Whether it is recorded now."""
         if self.board_checks().get("speed_watched", {}).get("ok"):
             return True
+        if self.readonly:  # nothing is recorded in it
+            return False
         tt, cc = np.asarray(t, dtype=float), np.asarray(count, dtype=np.int64)
         if tt.size < 2:
             return False
@@ -807,7 +821,7 @@ class Session:
         """Task 4: capture omega_ss at requested ``level`` (V) as the mean of the last
         ``window`` s of ``omega`` (rad/s) at times ``t`` (s); stores the capture (spread,
         window) and enters omega_ss@level. ValueError with fewer than 3 samples."""
-        self._change()
+        self._writable()
         key = f"omega_ss@{level:g}"
         if key not in FIELDS:
             raise KeyError(key)
@@ -1028,7 +1042,8 @@ class Session:
         the fields so marked (saved; the report says "revealed before answering"). Only
         those with a computed value now: one not computed yet cannot be shown, so it is
         neither marked nor recorded as shown (walk 10, D5: a reveal with no u_ss showed
-        dashes, and the report said both values were revealed then)."""
+        dashes, and the report said both values were revealed then). In a session opened
+        read-only they are shown and nothing is recorded or saved (walk 14, D1)."""
         self._change()
         can = {
             c.key
@@ -1038,8 +1053,9 @@ class Session:
         keys = [k for k in reveal_keys(lab_steps.step(step_id).fields, self.answered()) if k in can]
         if keys:
             self._data["revealed"] = sorted(self.revealed() | set(keys))
-            self._note(keys, lab_shown.REVEAL)
-            self._changed()
+            if not self.readonly:  # read-only: shown to whoever looks, recorded nowhere
+                self._note(keys, lab_shown.REVEAL)
+                self._changed()
         return keys
 
     # -- what the group was shown, and the lab's policy ----------------------------------------
@@ -1196,7 +1212,7 @@ class Session:
     def select_run(self, name: str | None) -> None:
         """Use run ``name`` for Tasks 11-15 until the group picks another (None: the default
         of :meth:`response_run`); saved in the session."""
-        self._change()
+        self._writable()
         if name is not None:
             self.run_path(name)
         self._data["selected_run"] = name
@@ -1219,7 +1235,7 @@ class Session:
         SessionNotWritable (one line) when its file cannot be made."""
         self._change()
         if self.readonly:
-            raise InputError(str(self.folder), None, "this session was opened read-only")
+            raise InputError(str(self.folder), None, READ_ONLY)
         ts_ = ts if ts is not None else (plan.ts if plan else 0.025)
         try:
             name = self._new_name(kind)
@@ -1352,7 +1368,7 @@ class Session:
         """Copy a run log recorded elsewhere into runs/ (checked by read_run_log; InputError
         with file and line if it is not one, SessionNotWritable if it cannot be written) for
         the model check and Tasks 11-15."""
-        self._change()
+        self._writable()
         try:
             info = import_log(
                 self.folder,

@@ -116,6 +116,7 @@ def _to_json(g: Group) -> dict[str, object]:
         "slipped": list(g.slipped),
         "notes": list(g.notes),
         "typed": dict(g.typed),
+        "unanswered": g.unanswered,
     }
 
 
@@ -166,6 +167,7 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
         slipped=_texts(d["slipped"]),
         notes=_texts(d.get("notes", [])),
         typed=_typed(d.get("typed", {})),
+        unanswered=str(d.get("unanswered", "")),
     )
 
 

@@ -42,6 +42,7 @@ from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import NO_RUN_YET, Session
 from minseg_tui.lab.views import own_first
+from minseg_tui.lab.views import session as session_views
 from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.lab.views.own_first import OwnRow
 from minseg_tui.model.identify import ZeroVoltRefusal, response_alone
@@ -232,7 +233,9 @@ class Group:
     out, one sentence each; ``slipped`` the keys of the values that rest on one of the
     manual's slips (:class:`Slip`): left out of the class's median and MAD; ``notes``
     what a grader should know that is neither marked nor missing, one line each (the run
-    Tasks 11-15 use was interrupted: :func:`run_note`)."""
+    Tasks 11-15 use was interrupted: :func:`run_note`); ``unanswered`` what the lab asks
+    that the group has not answered yet, as F8's notice names it ('Task 4, 5, 14; Summary
+    Q1 and 20 more'; '' when nothing is: walk 14, D3)."""
 
     id: str
     folder: Path
@@ -253,6 +256,7 @@ class Group:
     notes: tuple[str, ...] = ()
     typed: dict[str, str] = field(default_factory=dict)
     """The texts the group's readings (R) were typed as, by key: shown with those digits."""
+    unanswered: str = ""
 
     def value(self, key: str) -> float | None:
         """The value of ``key`` (SI), None when not computed or not finite."""
@@ -294,6 +298,7 @@ class Group:
         out["damaged"] = self.damaged
         out["flags"] = list(self.flags)
         out["notes"] = list(self.notes)
+        out["unanswered"] = self.unanswered
         out["left_out_of_class"] = [q.key for q in QUANTITIES if q.key in self.slipped]
         return out
 
@@ -573,7 +578,9 @@ def _row(folder: Path, session: Session) -> Group:
     values: dict[str, float | None] = {"R": session.value("R")}
     own: tuple[Own, ...] = ()
     own_rows: tuple[OwnRow, ...] = ()
+    unanswered = ""
     try:
+        unanswered = session_views.unanswered_brief(session)
         kept = session.kept()
         res = session.results(kept.step if kept is not None else None)
         values, lacks = _values(session, res, kept)
@@ -622,6 +629,7 @@ def _row(folder: Path, session: Session) -> Group:
         slipped=tuple(q.key for q in QUANTITIES if any(q.key in s.affects for s in found)),
         notes=tuple(n for n in (run_note(session.response_run()),) if n),
         typed={q.key: e.typed for q in QUANTITIES if q.reading and (e := session.entry(q.key))},
+        unanswered=unanswered,
     )
 
 

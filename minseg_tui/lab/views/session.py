@@ -404,6 +404,15 @@ def capture_live(session: Session, level: float, t: ArrayLike, count: ArrayLike)
     return _verdict(e, "")
 
 
+def read_only(session: Session) -> str:
+    """The opening of each sentence that refuses a change of a session opened read-only, with
+    why it is: "this session is open read-only (its file is damaged)" for a damaged one (the
+    start screen opens it so), "(opened to look, not to change)" for one opened from the
+    class view, whose file is sound (walk 14, D2: F5 there called it damaged)."""
+    why = "its file is damaged" if session.damaged else "opened to look, not to change"
+    return f"this session is open read-only ({why})"
+
+
 REVEAL_KEY = key_name("reveal")
 """The key a lab assistant presses to show a step's computed values before the group answers."""
 
@@ -1440,9 +1449,16 @@ def unanswered(session: Session) -> tuple[tuple[str, str, str], ...]:
 
 
 def unanswered_line(session: Session, most: int = 8) -> str:
-    """One line for the F8 notice: what is still unanswered, the lab's tasks first, then the
-    summary and the preparation, numbers joined ('Task 12, 15; Summary Q4, Q5; Prep 7'), at
-    most ``most`` numbers and how many more; '' when everything is answered."""
+    """One line for the F8 notice: what is still unanswered (:func:`unanswered_brief`);
+    '' when everything is answered."""
+    brief = unanswered_brief(session, most)
+    return f"unanswered, marked in the report: {brief}" if brief else ""
+
+
+def unanswered_brief(session: Session, most: int = 8) -> str:
+    """What is still unanswered, the lab's tasks first, then the summary and the
+    preparation, numbers joined ('Task 12, 15; Summary Q4, Q5; Prep 7'), at most ``most``
+    numbers and how many more; '' when everything is answered."""
     names = list(dict.fromkeys(short for short, _, _ in unanswered(session)))
     if not names:
         return ""
@@ -1458,4 +1474,4 @@ def unanswered_line(session: Session, most: int = 8) -> str:
             said.append(head + ", ".join(numbers[:left]))
             left -= len(numbers[:left])
     more = f" and {len(names) - most} more" if len(names) > most else ""
-    return "unanswered, marked in the report: " + "; ".join(said) + more
+    return "; ".join(said) + more

@@ -22,7 +22,7 @@ from minseg_tui.ui.live import LiveBuffer, at_level
 from minseg_tui.ui.messages import CaptureRequested, VoltageRequested
 from minseg_tui.ui.panels.meter import MODES as METER_MODES
 from minseg_tui.ui.panels.meter import MeterPanel
-from minseg_tui.ui.widgets.fields import FieldForm
+from minseg_tui.ui.widgets.fields import FieldForm, FieldRow
 from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
@@ -136,10 +136,24 @@ class LivePanel(Vertical, PanelKeys):
         if not self.levels:
             self.notify("no voltage to set on this step (Tasks 4-5)")
             return
-        k = -1 if self.requested not in self.levels else self.levels.index(self.requested)
-        request = VoltageRequested(self.levels[(k + 1) % len(self.levels)])
+        if self.requested in self.levels:
+            level = self.levels[(self.levels.index(self.requested) + 1) % len(self.levels)]
+        else:  # motor off: the first voltage whose entries are all empty (walk 14, D8)
+            level = self._first_open_level()
+        request = VoltageRequested(level)
         if self.screen.post_message(request):
             await request.done.wait()
+
+    def _first_open_level(self) -> float:
+        """The first of this step's voltages whose entries on the screen are all empty, else
+        the first voltage (walk 14, D8: resumed on Task 4 with 2.5 and 3.5 V done, F3 set
+        2.5 V, and F4 there captured the 2.5 V row again)."""
+        rows = [r for r in self.screen.query(FieldRow) if r.field.level is not None]
+        for level in self.levels:
+            mine = [r for r in rows if r.field.level == level]
+            if mine and all(r.is_empty for r in mine):
+                return level
+        return self.levels[0]
 
     async def action_capture(self) -> None:
         """F4: ask the lab screen to take omega_ss from the settled window (refused while not

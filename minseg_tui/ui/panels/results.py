@@ -312,9 +312,24 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         """Ctrl+R (a lab assistant): show this step's computed values before the group answers."""
         self.post_message(RevealRequested(self.step.id))
 
+    def _no_rise(self) -> bool:
+        """True, and said, when the plot has no rise to zoom to (walk 14, D9: F9 and Alt+→ on
+        Task 11 before any run did nothing and said nothing, though the footer offers them)."""
+        v = self.view
+        if v is not None and v.rises:
+            return False
+        if v is None:
+            said = "the plot is still being worked out"
+        elif not v.run:
+            said = "no step run recorded yet (Task 10)"
+        else:
+            said = f"run {v.run} has no step up with results"
+        self.notify(f"no rise to zoom to: {said}")
+        return True
+
     def pick(self, delta: int) -> None:
         """Zoom to the previous/next rise."""
-        if self.view is None or not self.view.rises:
+        if self._no_rise() or self.view is None:
             return
         n = len(self.view.rises)
         self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
@@ -343,7 +358,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
 
     def action_zoom_next(self) -> None:
         """F9: the next rise, after the last the whole log, then the first rise again."""
-        if self.view is None or not self.view.rises:
+        if self._no_rise() or self.view is None:
             return
         if self.zoom is None:
             self.zoom = 0

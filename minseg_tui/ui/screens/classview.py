@@ -106,8 +106,12 @@ def detail(k: int, g: Group) -> Text:
         out.append(f"- note: {x}\n")
     if not g.flags:
         out.append(f"Nothing marked '!' ({classview.MARKED}).\n")
-    if not g.lacks:
-        out.append("Nothing else is missing.\n" if g.notes else "Nothing is missing.\n")
+    if not g.lacks:  # what the numbers above need (walk 14, D3: "Nothing is missing." stood
+        # under a group with one row of three and no Summary)
+        other = "else " if g.notes else ""
+        out.append(f"Nothing {other}the numbers above need is missing.\n")
+    if g.unanswered:
+        out.append(f"Not answered yet: {g.unanswered}.\n")
     out.append(classview.NOT_MARKED + "\n")
     return out
 

@@ -1163,7 +1163,8 @@ class LabScreen(StatusScreen):
         if not undoing:
             self._undone.pop(row.field.key, None)
         if self.readonly:
-            result = EntryView(False, "this session is open read-only (damaged): not stored")
+            with self.session as s:
+                result = EntryView(False, f"{views.read_only(s)}: not stored")
             row.show_result(result)
             return result
         key = row.field.key
@@ -1252,7 +1253,8 @@ class LabScreen(StatusScreen):
         """The group ticked options ``indices`` (0-based) of ``row``'s list: stored, and the
         verdict shown."""
         if self.readonly:
-            row.show_result(EntryView(False, "this session is open read-only: not stored"))
+            with self.session as s:
+                row.show_result(EntryView(False, f"{views.read_only(s)}: not stored"))
             return
         key = row.field.key
         with self.session as s:
@@ -1304,6 +1306,11 @@ class LabScreen(StatusScreen):
             event.done.set()
 
     def _capture_now(self, level: float) -> None:
+        if self.readonly:  # walk 14, D1: the capture's save raised, and the program died
+            with self.session as s:
+                said = f"{views.read_only(s)}: omega_ss is not captured into it"
+            self.notify(said, severity="warning")
+            return
         t, count = at_level(*self._live.snapshot(), level)
         with self.session as s:
             result = views.capture_live(s, level, t, count)
@@ -1330,10 +1337,16 @@ class LabScreen(StatusScreen):
         with self.session as s:
             keys = s.reveal(event.step_id)
             waiting = "" if keys else views.reveal_waits(s, event.step_id)
+            read_only = views.read_only(s) if s.readonly else ""
         if not keys:
             self.notify(waiting or "nothing hidden on this step", severity="information")
             return
-        self.notify("computed values shown; the report says they were revealed before answering")
+        if read_only:  # walk 14, D1: the reveal's save raised, and the program died
+            self.notify(f"computed values shown here, not recorded: {read_only}")
+        else:
+            self.notify(
+                "computed values shown; the report says they were revealed before answering"
+            )
         self._changed()
 
     @on(LogImportRequested)
