@@ -679,6 +679,27 @@ max 0.78 -> 0.81 s, total 23.0 -> 21.8 s; synth pairs and hands (model_check_pai
 median 0.355 -> 0.373 s, max 2.17 -> 2.22 s, total 77.6 -> 72.1 s. So the sets are blind to a
 ringing inductance beside a cap, and a verdict diff clean on them does not clear a change to
 how a pole beside a cap is fitted: run the 11 logs above too.
+
+s35-cpu (issue 17 item 8, the worst log's CPU; 13f0c91 -> this branch): the stop and cap
+searches of simulate.pieces (_zero_between) evaluate their function inline from its
+coefficients (simulate.Form), at the cuts and in the regula falsi, instead of calling a
+closure that called _exp twice per evaluation (the profile had 3.0 million such calls of
+the cuts alone on the worst log). The same arithmetic in the same order, so the same floats
+(to the sign of a zero): the tables of 1,067 recorded pieces() calls of the worst log are
+identical, and check_verdicts.py run side by side with main (load average 14-24 falling to
+7): 0 of 130 results differ in any float (held-out pairs, singles and touches). pieces()
+on those 1,067 calls, interleaved in one process: 1.91 -> 1.52 s. CPU per log (check only),
+held-out pairs: median 1.075 -> 1.072 s, max 12.14 -> 9.01 s (900001), total 124.5 -> 116.1
+s; singles median 0.287 -> 0.282 s, total 11.1 -> 10.9 s; touches median 0.796 -> 0.821 s,
+max 4.23 -> 3.43 s, total 20.1 -> 18.6 s. Far from 1.5 s on the worst log. Measured, not
+added (a new dependency is the lead's decision): numba 0.68.1 (with llvmlite 0.50.0; it
+installs beside numpy 2.4.6 unchanged) compiling the same searches alone took the worst log
+10.5 -> 7.0 s at a load of about 20, and the whole walk of pieces (_stretch and its modes,
+ported line by line: the check's whole repr identical) 11.24 -> 3.6 s side by side at a
+load of 22; what is left then is numpy's per-simulation work (Pieces.angle, whiten, fit_k,
+the restart columns) and the fitting, so compiled code alone does not reach 1.5 s either;
+the first check of a fresh machine also compiles for about 7 s (numba's cache written
+beside the module then).
 """
 
 from __future__ import annotations

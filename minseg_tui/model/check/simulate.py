@@ -228,35 +228,97 @@ def _exp(x: float) -> float:
     return math.exp(x) if x > -700.0 else 0.0
 
 
-def _first_zero(f: Callable[[float], float], t_ext: float | None, length: float) -> float | None:
-    """First tau in (0, length] where f changes sign, for f with at most one extremum in
-    between (at ``t_ext`` when given); None when it does not."""
+Form = tuple[float, ...]
+"""The coefficients of a function whose sign change a stretch's event is: 10 numbers
+(s, k, a1, t1, m, k2, a2, t2, r, off) for
+
+    s (k + a1 exp(-tau/t1) - m (k2 + a2 exp(-tau/t2) + r tau)) - off
+
+(:func:`_exp` for exp; t1, t2 in s, the rest in the units of the quantity) or 5 numbers
+(k, -sig, p, q, om) for a damped swing about a constant,
+
+    k + exp(-sig tau) (p cos(om tau) + q sin(om tau))
+
+(sig in 1/s, om in rad/s). The searches evaluate these inline: a Python call per evaluation
+(a closure, and _exp twice in it) cost as much as the arithmetic."""
+
+
+def _value(c: Form, tau: float) -> float:
+    """The function of the coefficients ``c`` (:data:`Form`) at ``tau`` (s)."""
+    if len(c) == 5:
+        k, ns, p, q, om = c
+        x = ns * tau
+        return k + (math.exp(x) if x > -700.0 else 0.0) * (
+            p * math.cos(om * tau) + q * math.sin(om * tau)
+        )
+    s, k, a1, t1, m, k2, a2, t2, r, off = c
+    x1, x2 = -tau / t1, -tau / t2
+    e1 = math.exp(x1) if x1 > -700.0 else 0.0
+    e2 = math.exp(x2) if x2 > -700.0 else 0.0
+    return s * (k + a1 * e1 - m * (k2 + a2 * e2 + r * tau)) - off
+
+
+def _first_zero(c: Form, t_ext: float | None, length: float) -> float | None:
+    """First tau in (0, length] where the function of ``c`` (:data:`Form`) changes sign, for
+    one with at most one extremum in between (at ``t_ext`` when given); None when it does
+    not."""
     cuts = [0.0]
     if t_ext is not None and 0.0 < t_ext < length:
         cuts.append(t_ext)
     cuts.append(length)
-    return _zero_between(f, cuts)
+    return _zero_between(c, cuts)
 
 
-def _zero_between(f: Callable[[float], float], cuts: list[float]) -> float | None:
-    """First tau after ``cuts[0]`` (s, 0 or later) where f changes sign, for f monotonic between
-    neighbouring ``cuts`` (ascending; the last is the end of the span); None when it does
-    not."""
-    # f is pure: each cut's value is computed once and handed on as the next span's start
-    fb = f(cuts[0])
-    for a, b in zip(cuts[:-1], cuts[1:], strict=False):
-        fa, fb = fb, f(b)
-        if a == 0.0 and fa == 0.0:
-            fa = f(min(1e-12, b))
-        if fa == 0.0 or (fa > 0.0) == (fb > 0.0):
+def _zero_between(c: Form, cuts: list[float], f0: float | None = None) -> float | None:
+    """First tau after ``cuts[0]`` (s, 0 or later) where the function of ``c`` (:data:`Form`)
+    changes sign, for one monotonic between neighbouring ``cuts`` (ascending; the last is the
+    end of the span); None when it does not. ``f0``: its value at ``cuts[0]``, if known.
+    Where it changes sign, regula falsi (Illinois) to 1e-10 s gives the end on the far side.
+
+    The function is written out where it is evaluated, at the cuts and in the search, once
+    per form: a call per evaluation cost about as much as the arithmetic."""
+    exp, cos, sin = math.exp, math.cos, math.sin
+    ring = len(c) == 5
+    if ring:
+        k, ns, p, q, om = c
+        sg = k1 = a1 = t1 = mm = k2 = a2 = t2 = r = off = 0.0
+    else:
+        sg, k1, a1, t1, mm, k2, a2, t2, r, off = c
+        k = ns = p = q = om = 0.0
+    # each cut's value is computed once and handed on as the next span's start
+    fb = 0.0 if f0 is None else f0
+    a = cuts[0]
+    for i in range(0 if f0 is None else 1, len(cuts)):
+        b = cuts[i]
+        fa = fb
+        if ring:
+            x = ns * b
+            fb = k + (exp(x) if x > -700.0 else 0.0) * (p * cos(om * b) + q * sin(om * b))
+        else:
+            x1, x2 = -b / t1, -b / t2
+            e1 = exp(x1) if x1 > -700.0 else 0.0
+            e2 = exp(x2) if x2 > -700.0 else 0.0
+            fb = sg * (k1 + a1 * e1 - mm * (k2 + a2 * e2 + r * b)) - off
+        if i == 0:
             continue
-        # regula falsi (Illinois): the function is monotonic on [a, b]
+        if a == 0.0 and fa == 0.0:
+            fa = _value(c, min(1e-12, b))
+        if fa == 0.0 or (fa > 0.0) == (fb > 0.0):
+            a = b
+            continue
         side = 0
         for _ in range(60):
             m = (a * fb - b * fa) / (fb - fa)
             if not a < m < b:
                 m = 0.5 * (a + b)
-            fm = f(m)
+            if ring:
+                x = ns * m
+                fm = k + (exp(x) if x > -700.0 else 0.0) * (p * cos(om * m) + q * sin(om * m))
+            else:
+                x1, x2 = -m / t1, -m / t2
+                e1 = exp(x1) if x1 > -700.0 else 0.0
+                e2 = exp(x2) if x2 > -700.0 else 0.0
+                fm = sg * (k1 + a1 * e1 - mm * (k2 + a2 * e2 + r * m)) - off
             if (fm > 0.0) == (fa > 0.0):
                 a, fa = m, fm
                 if side == -1:
@@ -460,16 +522,10 @@ def _capped(
         w_inf = acc * tc
         a = w0 - w_inf
         out.add(s.t, s.th, w_inf, 0.0, a, tc)
-
-        def w_at(tau: float) -> float:
-            return w_inf + a * _exp(-tau / tc)
-
+        ramp = (w_inf, a, tc, 0.0)  # the speed: w_inf + a exp(-tau/tc)
     else:
         out.add(s.t, s.th, w0, 0.5 * acc)
-
-        def w_at(tau: float) -> float:
-            return w0 + acc * tau
-
+        ramp = (w0, 0.0, 1.0, acc)  # the speed: w0 + acc tau
     events = []
     stop = math.inf
     if sign * acc < 0.0:
@@ -487,10 +543,8 @@ def _capped(
             if 0.0 < ratio <= 1.0:
                 events.append(-tc * math.log(ratio))
     else:
-
-        def g(tau: float) -> float:
-            return d * sign * (u + (v0 - u) * _exp(-tau / T2) - keep * w_at(tau)) - T * rate
-
+        # d sign (u + (v0 - u) exp(-tau/T2) - keep w) - T rate
+        g = (d * sign, u, v0 - u, T2, keep, *ramp, T * rate)
         if drag > 0.0:
             ext = _two_exp_extremum(v0 - u, T2, -keep * a, tc)
         else:
@@ -527,28 +581,27 @@ def _ring_zero(k: float, p: float, q: float, sig: float, om: float, length: floa
     changes sign (sig in 1/s, om in rad/s); None when it does not. Its extrema are where
     the derivative, exp(-sig tau) (p' cos + q' sin), is zero: every pi/om from the first."""
     dp, dq = -sig * p + om * q, -sig * q - om * p
-
-    def g(tau: float) -> float:
-        return k + _exp(-sig * tau) * (p * math.cos(om * tau) + q * math.sin(om * tau))
-
+    g = (k, -sig, p, q, om)
     half = math.pi / om
     first = (math.atan2(dq, dp) + 0.5 * math.pi) % math.pi / om
     cuts = [0.0]
     x = first
-    if abs(g(0.0)) <= 1e-9 * (abs(k) + abs(p) + abs(q)):
+    g0 = _value(g, 0.0)
+    known: float | None = g0  # the value at the first cut
+    if abs(g0) <= 1e-9 * (abs(k) + abs(p) + abs(q)):
         # it starts on zero (a breakaway, a cap just let go): up to its first extremum it
         # moves one way, and a crossing there would be the start itself, rounding's sign
         if first <= 1e-6 * half:
             first += half  # the start is itself an extremum (a cap just let go)
         if first >= length:
             return None
-        cuts, x = [first], first + half
+        cuts, x, known = [first], first + half, None
     while x < length and len(cuts) < 400:
         if x > 0.0:
             cuts.append(x)
         x += half
     cuts.append(length)
-    return _zero_between(g, cuts)
+    return _zero_between(g, cuts, known)
 
 
 RING_FLOOR = 0.004
@@ -660,10 +713,8 @@ def _linear(
             if sign * c < 0.0 and w0 != 0.0:
                 stop_at = T * math.log((w0 - c) / -c)
         else:
-
-            def w(tau: float) -> float:
-                return sign * (c + A * _exp(-tau / T) + B * _exp(-tau / T2))
-
+            # sign (c + A exp(-tau/T) + B exp(-tau/T2))
+            w = (sign, c, A, T, 1.0, 0.0, -B, T2, 0.0, 0.0)
             hit = _first_zero(w, _two_exp_extremum(A, T, B, T2), min(left, 50.0 * (T + T2)))
             if hit is not None:
                 stop_at = hit
@@ -676,12 +727,8 @@ def _linear(
         base = u - keep * c
 
         for d in (1.0, -1.0) if both else (1.0,):
-
-            def g(tau: float, d: float = d) -> float:
-                return (
-                    d * sign * (base + kv * _exp(-tau / T2) - keep * A * _exp(-tau / T)) - T * rate
-                )
-
+            # d sign (base + kv exp(-tau/T2) - keep A exp(-tau/T)) - T rate
+            g = (d * sign, base, kv, T2, 1.0, 0.0, keep * A, T, 0.0, T * rate)
             hit = _first_zero(
                 g, _two_exp_extremum(kv, T2, -keep * A, T), min(left, 50.0 * (T + T2))
             )
