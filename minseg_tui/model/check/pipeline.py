@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from functools import partial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -220,7 +221,7 @@ def check(
     found2 += stalls
     # a disturbance is local: the model chosen fits the rest of the log well below it
     found2, _ = dist.split_local(found2, full.y - ext.predict(full), full.weights > 0)
-    if _rows(dist.restarted(found2, u)[0]) != _rows(found):
+    if _rows(dist.restarted(found2, u, linear=_linear(ext))[0]) != _rows(found):
         # the model chosen sees a disturbance the baseline hid: fence it, choose again
         found = found2
         others = _wild_weights(y.size, wild, taps) * pre
@@ -230,9 +231,16 @@ def check(
         # disturbance's rows
         apart = refit(head, ext, rng)
         found = dist.recovered(
-            found, u, full.y - apart.predict(full), full.weights > 0, rise, noise, rise
+            found,
+            u,
+            full.y - apart.predict(full),
+            full.weights > 0,
+            rise,
+            noise,
+            rise,
+            None if _linear(apart) else partial(_way_back, full, apart),
         )
-        found, restarts = dist.restarted(found, u)
+        found, restarts = dist.restarted(found, u, linear=_linear(apart))
         full = full.with_weights(dist.fence(y.size, found) * others, restarts)
         head = full.head(MAX_FIT_ROWS)
         base = fit_baseline(head, rng0)
@@ -251,7 +259,7 @@ def check(
         # in, made a cap of the whitened sums)
         still = _departing(found, full.with_weights(others, ()), ext, noise, ts)
         if len(still) < len(found) or still != found:
-            found, restarts = dist.restarted(still, u)
+            found, restarts = dist.restarted(still, u, linear=_linear(ext))
             full = full.with_weights(dist.fence(y.size, found) * others, restarts)
             head = full.head(MAX_FIT_ROWS)
             base = fit_baseline(head, rng0)
@@ -359,10 +367,44 @@ def _departing(
             # spurious cap in: tuning seeds 1014, 1057)
             let_go = max(d.let_go, *(e.let_go for e in over))
             wide = replace(d, end=end, until=until, let_go=let_go, free=-1)
-            if dist.restarted([wide], full.u)[0][0].free >= 0:
+            if dist.restarted([wide], full.u, linear=_linear(ext))[0][0].free >= 0:
                 d = wide
         out.append(d)
     return out
+
+
+def _linear(f: Fit) -> bool:
+    """A departure from the model ``f`` dies away with its time constant (no current cap
+    holds it: :func:`.disturbances.restarted`)."""
+    return not math.isfinite(f.effects.rate)
+
+
+def _way_back(full: Problem, f: Fit, d: dist.Disturbance, band: float) -> int:
+    """Rows from where the hand of ``d`` let go until the departure it left dies away within
+    ``band`` (rad/s), followed through the model ``f`` itself (its cap and friction
+    included): the model run from the speed the hand left the wheel at against the model
+    run from its own speed there."""
+    r = d.end if d.let_go < 0 else d.let_go
+    if r >= full.y.size - 1 or f.K == 0.0:
+        return 0
+    own = replace(f, restart=())
+    z = float(own.predict(full)[r]) / f.K
+
+    def run(z0: float) -> FloatArray:
+        tail = Problem(
+            full.t[r:],
+            full.u[r:],
+            full.y[r:],
+            full.ts,
+            z0,
+            over_interval=full.over_interval,
+            smooth=full.smooth,
+        )
+        return own.predict(tail)
+
+    gap = np.abs(run(z + d.size / f.K) - run(z))
+    above = np.flatnonzero(gap > band)
+    return int(above[-1]) + 1 if above.size else 0
 
 
 def _gaps_left_out(
