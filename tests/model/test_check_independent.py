@@ -934,3 +934,31 @@ def test_a_hand_let_go_under_a_current_cap_is_left_out_until_the_wheel_is_back()
     # the rows left out are those the sentence names: no figure of the fit holds them
     left = (log.t >= hand.t) & (log.t <= last)
     assert r.extended.rows <= r.t.size - np.count_nonzero(left)
+
+
+def test_a_strong_hand_is_reported_no_further_back_than_its_departure_can_have_grown():
+    # a hand's torque slows the wheel towards its deepest deficit through T: a departure of
+    # 12.4 rad/s that reads 1.9 rad/s over its first three rows (against the rows before the
+    # slow miss, which it counts in) began at most T ln(12.4/10.5) = 0.06 s before (0.35 s
+    # T, 10 ms rows). The model missed the 0.7 s before it by a slow 0.4 rad/s, which the
+    # fitted corner of the onset takes for the departure's start; the report was bounded
+    # only by T (0.35 s) and so came up to 0.4 s before the hand (held-out current_limit
+    # 901002, a hand during a capped ramp: reported 0.43 s early)
+    from minseg_tui.model.check.disturbances import Disturbance
+    from minseg_tui.model.check.fit import Fit
+    from minseg_tui.model.check.pipeline import _grown
+    from minseg_tui.model.check.simulate import Effects
+
+    ts, T = 0.01, 0.35
+    k = np.arange(600)
+    res = np.where((k >= 130) & (k < 200), -0.4 * (k - 130) / 70, 0.0)
+    held = (k >= 200) & (k < 225)
+    res[held] = -0.4 - 12.0 * (1.0 - np.exp(-(k[held] - 200 + 1) * ts / T))
+    d = Disturbance(200, 230, float(res[held].min()), 40.0, since=130, let_go=226)
+    f = Fit((), T, 20.0, Effects(), 0.0, 600)
+    grown = _grown(d, res, f, ts)
+    assert 0.0 < grown < 0.1
+    # under a cap the current is held and the wheel slows at a steady rate: the hold from
+    # the crossing to the deepest row sets it, in proportion to the share crossed
+    capped = Fit(("current_limit",), T, 20.0, Effects(rate=50.0), 0.0, 600)
+    assert grown <= _grown(d, res, capped, ts) < T

@@ -587,13 +587,13 @@ def _report(
     ]
     # a hand is reported from where the speed leaves the model, but no further back from
     # where its departure crossed the threshold than the wheel's own time constant (a
-    # braked wheel slows with it), an average and a running mean reach
-    reach = ext.effects.taps + dist.smooth_rows(samp.ts) + math.ceil(ext.T / samp.ts)
+    # braked wheel slows with it, or less: _grown), an average and a running mean reach
+    reach = ext.effects.taps + dist.smooth_rows(samp.ts)
     anomalies += [
         an.disturbance(
             t,
             u,
-            max(d.fence_start, d.start - reach),
+            max(d.fence_start, d.start - reach - math.ceil(_grown(d, res, ext, samp.ts) / samp.ts)),
             d.end,
             d.size,
             d.level,
@@ -669,6 +669,31 @@ def _report(
         lead(gain, named, _turning(full.y, b_pred, e_pred, keep)),
         cu,
     )
+
+
+def _grown(d: dist.Disturbance, res: FloatArray, f: Fit, ts: float) -> float:
+    """How long (s) the departure of ``d`` can have taken to grow to what it reads at
+    ``d.start``, where it crossed the noise, at most the model's time constant T. A hand's
+    torque slows the wheel towards a deficit no smaller than the deepest, ``d.size``, through
+    T (and a pole on the measurement): ln(size/(size - x)) T to reach x; while a current cap
+    holds the current, at a steady rate: x/(size - x) times the rows from ``d.start`` to
+    where the hand let go. ``res``: measured - model on every row, rad/s; x is read over the
+    running mean's rows from ``d.start``, against the rows before the departure; ``ts``: the
+    sample period, s."""
+    n = dist.SMOOTH
+    a = d.fence_start
+    size = abs(d.size)
+    if a < n or d.start + n > res.size:
+        return f.T
+    level = float(np.median(res[max(a - 4 * n, 0) : a]))
+    x = max(math.copysign(1.0, d.size) * (float(np.mean(res[d.start : d.start + n])) - level), 0.0)
+    if x >= size:
+        return f.T
+    lag = f.T + (f.effects.T2 if f.effects.pole_measured else 0.0)
+    grow = lag * math.log(size / (size - x))
+    if not _linear(f):
+        grow = max(grow, max(d.let_go - d.start, 0) * ts * x / (size - x))
+    return min(f.T, grow)
 
 
 def _spike_decay(ext: Fit, ts: float) -> int:
