@@ -357,7 +357,10 @@ this share of its deepest value."""
 
 
 def restarted(
-    found: list[Disturbance], u: FloatArray, early: bool = True, linear: bool = True
+    found: list[Disturbance],
+    u: FloatArray,
+    early: bool = True,
+    held: Callable[[Disturbance], bool] | None = None,
 ) -> tuple[list[Disturbance], tuple[int, ...]]:
     """(the disturbances, the rows where the model picks up again). Where the wheel's way
     back after a hand would be left out across a step of the input (it has not rejoined
@@ -368,9 +371,9 @@ def restarted(
     departure's end) count again. Where fewer than ``RESTART_ROWS`` rows lie between there
     and the next step (the speed the hand left cannot be read before the step's response),
     or where the wheel is back on the model before the next step, the rows stay left out
-    until it is, as before. Not ``linear``: the model holds a current cap, under which
-    a departure does not die away with the motor's time constant (the current held at the
-    cap, the wheel a hand slowed ramps at the same rate as the model and stays as far
+    until it is, as before. Nor where ``held`` says the model holds the departure: under
+    a current cap it does not die away with the motor's time constant (the current held at
+    the cap, the wheel a hand slowed ramps at the same rate as the model and stays as far
     behind it until the cap lets go: only the wheel's viscous drag closes the gap), so a
     restart's way back (:func:`.simulate.restart`) would be wrong: the rows stay left out
     until the wheel is back on the model (held-out touched seed 901002, a cap of 37
@@ -382,7 +385,10 @@ def restarted(
         free = d.end if d.let_go < 0 or not early else d.let_go
         after = change[change > free]
         nxt = int(after[0]) if after.size else u.size
-        if not linear or nxt - free < RESTART_ROWS or free >= u.size or d.fence_end <= nxt:
+        if nxt - free < RESTART_ROWS or free >= u.size or d.fence_end <= nxt:
+            out.append(d)
+            continue
+        if held is not None and held(d):
             out.append(d)
             continue
         out.append(replace(d, free=free))
