@@ -19,6 +19,7 @@ carries on for seconds, into the comparison of the causes.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -247,13 +248,17 @@ def recovered(
     settle: int,
     noise: float,
     recover: int,
+    way_back: Callable[[Disturbance, float], int] | None = None,
 ) -> list[Disturbance]:
     """``found`` with the onset and the end of the recovery of each found again against
     ``residual`` (measured - model, rad/s) of a model fitted without their rows (``keep``
     False there, and on other rows left out): one fitted with them bends towards the hand
     and misjudges where the wheel rejoins it. ``settle``: rows after a step before the
     stretch counts as settled; ``recover``: rows at most the recovery (and the onset)
-    takes."""
+    takes; ``way_back``: where the model's own way back can take longer (a current cap
+    holds a departure, see :func:`restarted`), the rows from where the hand let go that
+    the departure it left lasts above a band (rad/s) through the model, which the
+    recovery may take instead."""
     if not found:
         return found
     spans = _spans(u, settle)
@@ -269,9 +274,17 @@ def recovered(
         before = change[change <= d.start]
         return max(min(recover, d.start - (int(before[-1]) if before.size else 0) - 1), 0)
 
+    def longest(d: Disturbance) -> int:
+        if way_back is None:
+            return recover
+        free = d.end if d.let_go < 0 else d.let_go
+        return max(recover, free + way_back(d, band) - d.end)
+
     return [
         replace(
-            d, until=rejoin(dev, d.end, band, recover), since=onset(dev, d.start, band, lead(d))
+            d,
+            until=rejoin(dev, d.end, band, longest(d)),
+            since=onset(dev, d.start, band, lead(d)),
         )
         for d in found
     ]
@@ -344,7 +357,10 @@ this share of its deepest value."""
 
 
 def restarted(
-    found: list[Disturbance], u: FloatArray, early: bool = True
+    found: list[Disturbance],
+    u: FloatArray,
+    early: bool = True,
+    held: Callable[[Disturbance], bool] | None = None,
 ) -> tuple[list[Disturbance], tuple[int, ...]]:
     """(the disturbances, the rows where the model picks up again). Where the wheel's way
     back after a hand would be left out across a step of the input (it has not rejoined
@@ -355,7 +371,13 @@ def restarted(
     departure's end) count again. Where fewer than ``RESTART_ROWS`` rows lie between there
     and the next step (the speed the hand left cannot be read before the step's response),
     or where the wheel is back on the model before the next step, the rows stay left out
-    until it is, as before."""
+    until it is, as before. Nor where ``held`` says the model holds the departure: under
+    a current cap it does not die away with the motor's time constant (the current held at
+    the cap, the wheel a hand slowed ramps at the same rate as the model and stays as far
+    behind it until the cap lets go: only the wheel's viscous drag closes the gap), so a
+    restart's way back (:func:`.simulate.restart`) would be wrong: the rows stay left out
+    until the wheel is back on the model (held-out touched seed 901002, a cap of 37
+    rad/s^2: the hand's 12 rad/s lasted 5.5 s, through the next step)."""
     out: list[Disturbance] = []
     rows: set[int] = set()
     change = np.flatnonzero(np.diff(u) != 0) + 1
@@ -364,6 +386,9 @@ def restarted(
         after = change[change > free]
         nxt = int(after[0]) if after.size else u.size
         if nxt - free < RESTART_ROWS or free >= u.size or d.fence_end <= nxt:
+            out.append(d)
+            continue
+        if held is not None and held(d):
             out.append(d)
             continue
         out.append(replace(d, free=free))
