@@ -4,7 +4,7 @@ Each reach is here because Textual 8.2 offers no public way to do it; when an up
 Textual breaks one, this file is the one to read. Checked against Textual's source in the
 venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
-Twelve names of Textual's internals, in five reaches:
+Fourteen names of Textual's internals, in six reaches:
 
 1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``, done again here, and put in its
    place. The exact wait Pilot itself uses after a key (every node handles what was queued
@@ -34,6 +34,10 @@ Twelve names of Textual's internals, in five reaches:
    widget asks for the next layout only when it is itself next idle, so on a busy machine
    the screen may run them between two layouts. No public API orders the two; this makes
    the screen run them before every layout still to come, the worst order.
+6. :func:`parse_stylesheets_once`: ``Stylesheet._parse_rules`` wrapped with a cache for the
+   process, keyed by its arguments and the Stylesheet's ``_variables``. Textual caches the
+   parse per Stylesheet only, and a test process starts hundreds of apps, each parsing the
+   same CSS again; no public API shares parsed CSS between apps.
 
 Done with public API here: the running app is ``MessagePump.app`` of a node attached to no
 app (not ``textual._context.active_app``); the still cursor is each Input's
@@ -61,6 +65,8 @@ import textual._queue
 import textual.app
 import textual.pilot
 from textual.app import App
+from textual.css.model import RuleSet
+from textual.css.stylesheet import Stylesheet
 from textual.keys import KEY_NAME_REPLACEMENTS, key_to_character
 from textual.message_pump import MessagePump
 from textual.pilot import Pilot, WaitForScreenTimeout
@@ -211,6 +217,36 @@ def unpainted_refresh(self: Screen[object]) -> None:
 def leave_headless_frames_unpainted(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every screen refreshes with :func:`unpainted_refresh`."""
     monkeypatch.setattr(Screen, "_compositor_refresh", unpainted_refresh)
+
+
+_parse_rules = Stylesheet._parse_rules
+_parsed: dict[tuple[object, ...], list[RuleSet]] = {}
+
+
+def _parse_rules_once(
+    self: Stylesheet,
+    css: str,
+    read_from: tuple[str, str],
+    is_default_rules: bool = False,
+    tie_breaker: int = 0,
+    scope: str = "",
+) -> list[RuleSet]:
+    """``Stylesheet._parse_rules``, its result kept for the process: the same CSS source,
+    read from the same place, with the same variables (the theme's colours), gives the same
+    rules. Textual keeps them per Stylesheet (``_parse_cache``), and shares one source's
+    rules between the parses of one app (a Stylesheet's ``reparse`` starts a new one): the
+    rules are not changed once made."""
+    key = (css, read_from, is_default_rules, tie_breaker, scope, *self._variables.items())
+    rules = _parsed.get(key)
+    if rules is None:
+        rules = _parse_rules(self, css, read_from, is_default_rules, tie_breaker, scope)
+        _parsed[key] = rules
+    return rules
+
+
+def parse_stylesheets_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every Stylesheet parses a CSS source once per process (:func:`_parse_rules_once`)."""
+    monkeypatch.setattr(Stylesheet, "_parse_rules", _parse_rules_once)
 
 
 def keep_cursors_still(monkeypatch: pytest.MonkeyPatch) -> None:
