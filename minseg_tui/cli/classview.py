@@ -21,7 +21,7 @@ from pathlib import Path
 
 from minseg_tui.cli.output import print_json
 from minseg_tui.errors import InputError
-from minseg_tui.lab.saving.store import atomic_write_text, os_reason
+from minseg_tui.lab.saving.store import os_reason
 from minseg_tui.lab.views import classread
 from minseg_tui.lab.views.classview import (
     MARKED,
@@ -108,25 +108,16 @@ def text(view: ClassView) -> str:
 def write(view: ClassView, out: Path) -> tuple[Path, ...]:
     """Write class.md, class.html and class.csv into ``out`` (made if needed); InputError,
     one line, when it cannot be written."""
-    from minseg_tui.report import class_content, html, markdown  # only for --out: slow to load
+    from minseg_tui.report.write import write_class  # only for --out: slow to load
 
-    rep = class_content.build(view)
-    files = (
-        (out / "class.md", markdown.render(rep)),
-        (out / "class.html", html.render(rep)),
-        (out / "class.csv", class_content.csv_text(view)),
-    )
     try:
-        out.mkdir(parents=True, exist_ok=True)
-        for path, body in files:
-            atomic_write_text(path, body)
+        return write_class(view, out)
     except OSError as exc:
         raise InputError(
             str(out),
             None,
             f"cannot write the class report here ({os_reason(exc)}): give another --out DIR",
         ) from None
-    return tuple(p for p, _ in files)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -27,7 +27,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Start the app; returns 0 when the user quits, 128 + n when signal n (SIGTERM,
     SIGHUP) ended it, what was typed stored first."""
-    from minseg_tui.report.write import write_report
+    from minseg_tui.report.write import write_class, write_report
     from minseg_tui.ui.app import make_app
     from minseg_tui.ui.config import UiConfig
 
@@ -36,6 +36,10 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(str(sessions), None, "--sessions must be a folder")
     list_sessions(sessions)  # a folder that cannot be listed: one line, exit 2
     device = "sim" if args.sim else (args.port or "auto")
-    app = make_app(UiConfig(device=device, sessions=sessions), lambda s: write_report(s).paths)
+    app = make_app(
+        UiConfig(device=device, sessions=sessions),
+        lambda s: write_report(s).paths,
+        write_class,
+    )
     app.run()
     return app.return_code or 0  # 128 + n after signal n (SIGTERM: 143), as shells expect

@@ -1,6 +1,6 @@
 """Write a session's report into its folder: report.md with its figures as SVG files beside
 it (report-figure-1.svg, ...), and report.html, whole in one file (runs/*.csv are already
-there)."""
+there); and the class's report (class.md, class.html, class.csv) into a folder."""
 
 from __future__ import annotations
 
@@ -9,7 +9,8 @@ from pathlib import Path
 
 from minseg_tui.lab.saving.store import atomic_write_text
 from minseg_tui.lab.state.session import Session
-from minseg_tui.report import content, html, markdown
+from minseg_tui.lab.views.classview import ClassView
+from minseg_tui.report import class_content, content, html, markdown
 
 
 @dataclass(frozen=True)
@@ -51,3 +52,20 @@ def write_report(session: Session) -> Written:
     atomic_write_text(html_path, html.render(rep))
     runs = tuple(session.folder / r.file for r in session.runs)
     return Written(md_path, html_path, runs, tuple(figures))
+
+
+CLASS_FILES = ("class.md", "class.html", "class.csv")
+"""The class's report, as :func:`write_class` names its files."""
+
+
+def write_class(view: ClassView, out: Path) -> tuple[Path, ...]:
+    """Write class.md, class.html (self-contained, fit to print) and class.csv of ``view``
+    atomically into ``out`` (made if needed); returns their paths. OSError when ``out``
+    cannot be made or written."""
+    rep = class_content.build(view)
+    bodies = (markdown.render(rep), html.render(rep), class_content.csv_text(view))
+    out.mkdir(parents=True, exist_ok=True)
+    paths = tuple(out / name for name in CLASS_FILES)
+    for path, body in zip(paths, bodies, strict=True):
+        atomic_write_text(path, body)
+    return paths

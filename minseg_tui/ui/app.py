@@ -78,7 +78,7 @@ from minseg_tui.ui.screens.boardcheck import (
     RevolutionScreen,
     WheelQuestionScreen,
 )
-from minseg_tui.ui.screens.classview import ClassScreen
+from minseg_tui.ui.screens.classview import ClassScreen, ClassWriter
 from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import PANEL_KEYS, LabScreen
@@ -221,11 +221,13 @@ class LabApp(App[None]):
         config: UiConfig,
         open_device: Callable[[str], Device],
         writer: ReportWriter | None = None,
+        class_writer: ClassWriter | None = None,
     ) -> None:
         super().__init__()
         self.config = config
         self._open_device = open_device
         self._writer = writer
+        self._class_writer = class_writer
         self._device: Device | None = None
         self.session: Shared[Session] | None = None
         """The open session (None on the start screen)."""
@@ -451,7 +453,7 @@ class LabApp(App[None]):
     def action_class_view(self) -> None:
         """F12 on the start screen: every group of the sessions folder, one row each."""
         if isinstance(self.screen, StartScreen):
-            self.push_screen(ClassScreen(Path(self.config.sessions)))
+            self.push_screen(ClassScreen(Path(self.config.sessions), self._class_writer))
 
     @on(StartScreen.NewSession)
     async def _new(self, event: StartScreen.NewSession) -> None:
@@ -1180,8 +1182,11 @@ class LabApp(App[None]):
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """A key shown in the footer on some steps only (its binding's action with
         ``IN_FOOTER`` after its name), only on those: elsewhere its own binding runs it, not
-        shown. (The panel keys are the step's form's, which answers for them:
+        shown. F8 on the class view is that screen's (the class's report), not the session's.
+        (The panel keys are the step's form's, which answers for them:
         :meth:`~minseg_tui.ui.screens.lab.StepPane.check_action`.)"""
+        if action == "export" and isinstance(self.screen, ClassScreen):
+            return False  # the class view's F8 writes the class's report (its own binding)
         own = action.removesuffix(IN_FOOTER)
         if own != action and own in FOOTER_ON:
             screen = self._lab_screen()
@@ -1371,7 +1376,11 @@ class LabApp(App[None]):
                 s.close()
 
 
-def make_app(config: UiConfig, writer: ReportWriter | None = None) -> LabApp:
-    """The app for ``config``, on the real device factory; ``writer`` writes the report (the
-    CLI hands in :func:`minseg_tui.report.write.write_report`, returning its paths)."""
-    return LabApp(config, lambda spec: open_device(spec, config.seed), writer)
+def make_app(
+    config: UiConfig, writer: ReportWriter | None = None, class_writer: ClassWriter | None = None
+) -> LabApp:
+    """The app for ``config``, on the real device factory; ``writer`` writes the report and
+    ``class_writer`` the class's (the CLI hands in
+    :func:`minseg_tui.report.write.write_report`, returning its paths, and
+    :func:`~minseg_tui.report.write.write_class`)."""
+    return LabApp(config, lambda spec: open_device(spec, config.seed), writer, class_writer)

@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 from textual.pilot import Pilot
 
-from minseg_tui.report.write import write_report
+from minseg_tui.report.write import write_class, write_report
 from minseg_tui.ui.app import LabApp, make_app
 from minseg_tui.ui.config import UiConfig
 from tests.ui.fakes import QuietDevice
@@ -46,10 +46,11 @@ def quiet_app(root: Path, device: QuietDevice | None = None) -> LabApp:
 
 
 def real_app(root: Path, url: str) -> LabApp:
-    """The app as the CLI makes it, on the board at ``url``, with the report writer."""
+    """The app as the CLI makes it, on the board at ``url``, with the report writers."""
     return make_app(
         UiConfig(device=url, sessions=root, today=DATE, animations=False, refresh=0.25),
         lambda session: write_report(session).paths,
+        write_class,
     )
 
 

@@ -7,11 +7,14 @@ decides which values are far from the class, one of the things marked "!"
 (:data:`~minseg_tui.lab.views.classview.MARKED`). Under the table, the highlighted group in
 full: every number with its unit, the model check's cause, the group's own values against
 the computed ones, what is marked and what is missing. Enter opens the group's session read-only (as the start
-screen opens a damaged one); Escape goes back. Everything works from the keyboard at 80x24.
+screen opens a damaged one); F8 writes the class's report (class.md, class.html, class.csv,
+as ``minseg-tui class --out`` does) into the sessions folder; Escape goes back. Everything
+works from the keyboard at 80x24.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -26,11 +29,17 @@ from textual.screen import Screen
 from textual.widgets import DataTable, Static
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.keys import KEY_NAMES
+from minseg_tui.lab.saving.store import os_reason
 from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
 from minseg_tui.quantities import MISSING, format_difference
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
+
+ClassWriter = Callable[[ClassView, Path], Sequence[Path]]
+"""Writes the class's report into a folder; the files written (the CLI hands in
+:func:`minseg_tui.report.write.write_class`: the report layer sits beside the UI)."""
 
 COLUMNS: tuple[tuple[str, str], ...] = (
     ("#", "n"),
@@ -122,6 +131,7 @@ class ClassScreen(Screen[None]):
     BINDINGS = [
         Binding("escape", "back", "Back"),
         Binding("enter", "open_group", "Open read-only", priority=True),
+        Binding("f8", "export_class", "Export class"),
     ]
     AUTO_FOCUS = "#class-table"
 
@@ -133,17 +143,28 @@ class ClassScreen(Screen[None]):
         group: Group
 
     @dataclass
+    class ClassWritten(Message):
+        """The class's report is written to ``paths`` (or ``error``: why not)."""
+
+        paths: tuple[Path, ...]
+        error: str = ""
+
+    @dataclass
     class ClassRead(Message):
         """Every group is read and judged against the class (or ``error``: why not)."""
 
         view: ClassView | None
         error: str = ""
 
-    def __init__(self, root: Path) -> None:
+    def __init__(self, root: Path, writer: ClassWriter | None = None) -> None:
         super().__init__()
         self.root = Path(root)
+        self.writer = writer
+        """Writes the class's report (F8); None: this program was started without it."""
         self.groups: list[Group] = []
         self.done = False
+        self.view: ClassView | None = None
+        """The class judged, once every group is read (what F8 writes)."""
 
     def compose(self) -> ComposeResult:
         yield Static(Text(f"{TITLE} of {self.root} — reading the sessions…"), id="class-title")
@@ -207,6 +228,7 @@ class ClassScreen(Screen[None]):
             title.update(Text(f"{TITLE}: {event.error}"))
             return
         self.done = True
+        self.view = event.view
         self.groups = list(event.view.groups)
         self._fill()
         table = self.query_one(DataTable)
@@ -235,6 +257,41 @@ class ClassScreen(Screen[None]):
         folder = self.groups[index].folder
         await self.app.pop_screen()
         self.app.post_message(StartScreen.Resume(str(folder), readonly=True))
+
+    def action_export_class(self) -> None:
+        """F8: the class's report into the sessions folder, once every group is read."""
+        if self.writer is None:
+            self.notify("this program was started without the report writer", severity="error")
+            return
+        if self.view is None:
+            self.notify(
+                f"the class is still being read: {KEY_NAMES['export']} writes its report once "
+                "every group is in",
+                severity="warning",
+            )
+            return
+        self._write(self.writer, self.view)
+
+    @work(thread=True, exclusive=True, group="class-report", name="class report")
+    def _write(self, writer: ClassWriter, view: ClassView) -> None:
+        """Worker: write the class's report (the report's modules are slow to load)."""
+        try:
+            paths = tuple(writer(view, self.root))
+        except OSError as exc:
+            self.post_message(self.ClassWritten((), os_reason(exc)))
+            return
+        self.post_message(self.ClassWritten(paths))
+
+    @on(ClassWritten)
+    def _written(self, event: ClassWritten) -> None:
+        if event.error:
+            self.notify(
+                f"cannot write the class report in {self.root} ({event.error})",
+                severity="error",
+            )
+            return
+        names = ", ".join(p.name for p in event.paths)
+        self.notify(f"written: {names}, in {self.root}", title="class report")
 
     async def action_back(self) -> None:
         """Back to the start screen."""
