@@ -28,6 +28,7 @@ from minseg_tui.lab.views.classview import (
     NOT_MARKED,
     QUANTITIES,
     ClassView,
+    any_wrong,
     members,
     own_cell,
 )
@@ -99,7 +100,7 @@ def text(view: ClassView) -> str:
         lines += [f"  - lacks: {x}" for x in g.lacks]
         lines += [f"  - note: {x}" for x in g.notes]
     if not any(g.flags for g in view.groups):
-        noted = any(g.notes for g in view.groups)
+        noted = any(g.notes for g in view.groups) or any_wrong(view)
         lines += ["", "Nothing marked '!'." if noted else "Nothing stands out."]
     lines += ["", f"'!': {MARKED}. {NOT_MARKED}"]
     return "\n".join(lines)

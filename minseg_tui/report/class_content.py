@@ -20,6 +20,7 @@ from minseg_tui.lab.views.classview import (
     QUANTITIES,
     THRESHOLD,
     ClassView,
+    any_wrong,
     members,
     own_cell,
 )
@@ -142,7 +143,8 @@ def build(view: ClassView) -> Report:
         Section(
             "What stands out",
             [
-                stand_out(view) or "Nothing stands out.",
+                stand_out(view)
+                or ("Nothing marked '!'." if any_wrong(view) else "Nothing stands out."),
                 f"A group is listed here for {MARKED} (the '!' of the class view). " + NOT_MARKED,
                 f"A value stands out when it lies more than {THRESHOLD:g} robust standard "
                 "deviations (1.4826 times the median absolute deviation) from the class "

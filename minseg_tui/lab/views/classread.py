@@ -107,7 +107,7 @@ def _to_json(g: Group) -> dict[str, object]:
         },
         "cause": g.cause,
         "cause_code": g.cause_code,
-        "own": [[o.key, o.label, o.unit, o.own, o.computed, o.rel_diff] for o in g.own],
+        "own": [[o.key, o.label, o.unit, o.own, o.computed, o.rel_diff, o.right] for o in g.own],
         "own_rows": [[r.key, list(r.cells), r.why] for r in g.own_rows],
         "lacks": list(g.lacks),
         "damaged": g.damaged,

@@ -207,7 +207,8 @@ class Slip:
 @dataclass(frozen=True)
 class Own:
     """One of the group's own values beside the computed one (SI; text for the model):
-    ``rel_diff`` = own / computed - 1 when both are numbers."""
+    ``rel_diff`` = own / computed - 1 when both are numbers; ``right`` the lab's verdict on
+    it (True right, False wrong, None not judged), as the group's screen and report mark it."""
 
     key: str
     label: str
@@ -215,6 +216,14 @@ class Own:
     own: float | str | None
     computed: float | str | None
     rel_diff: float | None
+    right: bool | None = None
+
+    @property
+    def mark(self) -> str:
+        """The lab's mark of the verdict ('✗' wrong, '✓' right), '' when not judged."""
+        if self.right is None:
+            return ""
+        return session_views.MARK["done" if self.right else "wrong"]
 
 
 @dataclass(frozen=True)
@@ -373,13 +382,22 @@ def members(g: Group) -> str:
 
 
 def own_cell(g: Group) -> str:
-    """The group's own values against the computed ones, in one cell: "T +12 %"."""
+    """The group's own values against the computed ones, in one cell: "T +12 %", and a
+    value the lab judged wrong with its mark: "J +39 % ✗" (walk 14, D4: the group's screen
+    and report said wrong, the class view gave the number alone)."""
     parts = [
         f"{o.key.removeprefix('own.')} {format_difference(o.own, o.computed)}"
+        + (f" {o.mark}" if o.right is False else "")
         for o in g.own
         if o.rel_diff is not None
     ]
     return ", ".join(parts) or MISSING
+
+
+def any_wrong(view: ClassView) -> bool:
+    """Whether some group's own value is judged wrong (marked in the own vs computed column):
+    then "Nothing stands out." is not said, though nothing is marked '!'."""
+    return any(o.right is False for g in view.groups for o in g.own)
 
 
 def _quantity(key: str) -> Quantity:
@@ -596,7 +614,7 @@ def _row(folder: Path, session: Session) -> Group:
         elif problem:
             lacks = (*lacks, f"model check: {problem}")
         own = tuple(
-            Own(c.key, for_grader(c.label), c.unit, c.own, c.computed, c.rel_diff)
+            Own(c.key, for_grader(c.label), c.unit, c.own, c.computed, c.rel_diff, c.right)
             for c in session.comparisons(results=res)
             if c.own is not None
         )

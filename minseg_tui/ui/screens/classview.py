@@ -105,7 +105,9 @@ def detail(k: int, g: Group) -> Text:
     for o in g.own:
         if o.rel_diff is not None:
             out.append(
-                f"{o.label}: {format_difference(o.own, o.computed)} from the value computed the group's way\n"
+                f"{o.label}: {format_difference(o.own, o.computed)} from the value computed the group's way"
+                + (f", {o.mark} {'right' if o.right else 'wrong'}" if o.mark else "")
+                + "\n"
             )
     for f in g.flags:
         out.append(f"! {f}\n", style="bold")
