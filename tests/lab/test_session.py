@@ -638,3 +638,22 @@ def test_a_refused_choice_is_said_in_the_answers_words(tmp_path):
         assert "'z' names none of the answers: 'how fast the system reacts" in said
         for letters in ("a/b", "'b'", "expected one"):
             assert letters not in said
+
+
+def test_task10_is_started_not_done_while_its_only_run_was_interrupted(tmp_path):
+    """Walk 14: Task 10 read ✓ in the list of steps with its only run cut short, a run that
+    Tasks 11-15 never use unless the group chooses it."""
+    with Session.create(tmp_path, ["A"]) as s:
+        _fill_table(s)
+        assert s.step_status("task10") == "todo"
+        plan = dict(step("task10").plans)["manual"]
+        data = record(PlantParams(), np.r_[np.zeros(20), np.full(60, plan.high)], ts=plan.ts)
+        rec = s.start_run("steps", plan)
+        for j in range(80):  # F2 after one rising step: 80 of the plan's 480 samples
+            rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), 4500 * (j >= 20))
+        short = s.finish_run(rec, stopped_early=True, ended_by="stopped")
+        assert short is not None and short.interrupted
+        assert s.step_status("task10") == "started"
+        info, _, _ = _record_steps(s)
+        assert info is not None and not info.interrupted
+        assert s.step_status("task10") == "done"

@@ -691,7 +691,8 @@ class Session:
         return out
 
     def step_status(self, step_id: str) -> str:
-        """``done`` (every required field accepted; for Task 10 a run recorded; for a step
+        """``done`` (every required field accepted; for Task 10 a complete run recorded, an
+        interrupted one alone ``started``; for a step
         done by board checks, its ``done_when`` checks passed), ``wrong``
         (answered, but a checked answer is wrong), ``refused`` (a field shows a text that was
         refused, even over an accepted answer still in effect), ``warned`` (answered, but an
@@ -705,8 +706,9 @@ class Session:
         yet: nothing computed to compare it with), ``started`` (something entered), ``todo``,
         or ``info`` (nothing to enter)."""
         st = lab_steps.step(step_id)
-        if "run_square_wave" in st.actions:
-            return "done" if any(r.kind in ("steps", "fast") for r in self._runs) else "todo"
+        if "run_square_wave" in st.actions:  # an interrupted run alone: started (walk 14)
+            runs = [r for r in self._runs if r.kind in ("steps", "fast")]
+            return "done" if any(r.complete for r in runs) else "started" if runs else "todo"
         shown = [self._entries.get(f.key) for f in st.fields]
         if any(e is not None and (e.refused is not None or not e.ok) for e in shown):
             return "refused"
