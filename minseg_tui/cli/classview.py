@@ -91,7 +91,7 @@ def text(view: ClassView) -> str:
     ]
     lines.append("units: " + ", ".join(f"{q.key} {q.display}" for q in QUANTITIES))
     for k, g in enumerate(view.groups, 1):
-        if not (g.flags or g.lacks or g.notes):
+        if not (g.flags or g.lacks or g.notes or g.unanswered):
             continue
         lines.append("")
         who = f"{members(g)}, {g.date or 'no date'}" if g.readable else "cannot be read"
@@ -99,6 +99,7 @@ def text(view: ClassView) -> str:
         lines += [f"  ! {f}" for f in g.flags]
         lines += [f"  - lacks: {x}" for x in g.lacks]
         lines += [f"  - note: {x}" for x in g.notes]
+        lines += [f"  - not answered yet: {g.unanswered}"] if g.unanswered else []
     if not any(g.flags for g in view.groups):
         noted = any(g.notes for g in view.groups) or any_wrong(view)
         lines += ["", "Nothing marked '!'." if noted else "Nothing stands out."]

@@ -155,8 +155,15 @@ def build(view: ClassView) -> Report:
             ],
         )
     )
-    lacks = [f"#{k} {g.id}: {'; '.join(g.lacks)}" for k, g in enumerate(view.groups, 1) if g.lacks]
-    sections.append(Section("What is missing", [lacks or "Every session is complete."]))
+    lacks = [
+        f"#{k} {g.id}: "
+        + "; ".join((*g.lacks, *([f"not answered yet: {g.unanswered}"] if g.unanswered else [])))
+        for k, g in enumerate(view.groups, 1)
+        if g.lacks or g.unanswered
+    ]  # walk 14: "Every session is complete." stood over groups that had reached Task 12
+    sections.append(
+        Section("What is missing", [lacks or "Every session is complete and every task answered."])
+    )
     own_section = own_values(view)
     if own_section is not None:
         sections.append(own_section)

@@ -52,3 +52,18 @@ def test_the_verdict_survives_the_class_cache(tmp_path, monkeypatch):
     again = classread.build(root, workers=1)  # read from the cache this time
     assert [o.right for o in again.groups[0].own] == [o.right for o in first.groups[0].own]
     assert own_cell(again.groups[0]) == "T +111 % ✗"
+
+
+def test_the_class_report_and_text_say_what_is_not_answered_yet(tmp_path):
+    """Walk 14 (lead's try of F8 on the class view): the class report said "Every session is
+    complete." of two groups that had reached Task 12, and `minseg-tui class` said nothing
+    of what they had not answered; the class screen already said it."""
+    root = tmp_path / "sessions"
+    group(root, ["Ada", "Bo"], seed=4)
+    view = classread.build(root, workers=1)
+    (g,) = view.groups
+    assert g.unanswered.startswith("Task "), g.unanswered
+    page = markdown.render(class_content.build(view))
+    assert "Every session is complete" not in page
+    assert f"#1 {g.id}: not answered yet: {g.unanswered}" in page, page
+    assert f"  - not answered yet: {g.unanswered}" in text(view)
