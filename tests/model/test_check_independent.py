@@ -4,6 +4,8 @@ artefacts of a logger and about a hand on the wheel. Tuning seeds only (the held
 are for benchmarks/model_check_independent.py's figures).
 """
 
+from functools import cache
+
 import numpy as np
 import pytest
 
@@ -16,10 +18,25 @@ from minseg_tui.lab.views.check_says import (
     runner_up_why,
 )
 from minseg_tui.lab.views.check_text import text
-from minseg_tui.model.check import check
+from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.decide import Reason
 from minseg_tui.model.check.effects import BY_CAUSE
-from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, make
+from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, PhysLog, make
+
+
+@cache
+def checked(seed: int, causes: tuple[str, ...], **how: bool) -> tuple[PhysLog, CheckResult]:
+    """The generator's log and its check, made once per test process for the logs two tests
+    read (each pair in an xdist group, so on one worker): the generator is seeded and the
+    check deterministic, so the second test would compute the same log and result."""
+    log = make(seed, causes, **how)
+    return log, check(log.t, log.u, log.omega)
+
+
+SEED_21 = pytest.mark.xdist_group("independent-seed-21")
+"""Tuning seed 21 with dry friction and a logger's artefacts, read by two tests."""
+SEED_1012 = pytest.mark.xdist_group("independent-seed-1012")
+"""Touched seed 1012 of an average, read by two tests."""
 
 
 def named(r):
@@ -37,10 +54,12 @@ def test_the_generator_keeps_its_held_out_seeds_apart():
     assert a.causes["coulomb_friction"] > 0 and a.T > 0
 
 
-@pytest.mark.parametrize(("seed", "causes"), [(21, ("coulomb_friction",)), (25, ())])
+@pytest.mark.parametrize(
+    ("seed", "causes"),
+    [pytest.param(21, ("coulomb_friction",), marks=SEED_21), (25, ())],
+)
 def test_a_spike_after_a_stall_of_the_logger_is_an_artefact_not_a_hand(seed, causes):
-    log = make(seed, causes, artefacts=True)
-    r = check(log.t, log.u, log.omega)
+    log, r = checked(seed, causes, artefacts=True)
     assert "disturbance" not in kinds(r)
     art = [a for a in r.anomalies if a.kind == "logging_artefact"]
     assert len(art) == 1
@@ -51,9 +70,9 @@ def test_a_spike_after_a_stall_of_the_logger_is_an_artefact_not_a_hand(seed, cau
     assert named(r) == sorted(causes)
 
 
+@SEED_21
 def test_switch_on_glitch_rows_are_named_and_left_out_of_every_figure():
-    log = make(21, ("coulomb_friction",), artefacts=True)
-    r = check(log.t, log.u, log.omega)
+    log, r = checked(21, ("coulomb_friction",), artefacts=True)
     glitch = [a for a in r.anomalies if a.kind == "start_glitch"]
     assert len(glitch) == 1 and "starts_moving" not in kinds(r)
     assert glitch[0].row_end is not None and glitch[0].row_end >= max(
@@ -346,13 +365,13 @@ def test_a_hand_on_an_averaged_speed_is_reported_where_it_began_and_the_average_
     assert "a hand on it" in anomaly(hands[0])
 
 
+@SEED_1012
 def test_a_stall_spike_spread_by_an_average_is_a_logging_artefact_not_a_hand():
     # a 9-tap average over the real intervals of an irregular loop: a 75 ms stall at 10.13 s
     # whose row read the counts late lifts the next 9 rows by 5.3 rad/s and drops straight
     # back; that is the stall's read carried by the average, not a hand
-    log = make(1012, ("velocity_filter",), touch=True)
+    log, r = checked(1012, ("velocity_filter",), touch=True)
     assert "stall" in log.how and log.touch is not None
-    r = check(log.t, log.u, log.omega)
     stall_t = float(log.t[log.artefact_rows[0]])
     hands = [a for a in r.anomalies if a.kind == "disturbance"]
     assert all(abs(a.t - stall_t) > 0.5 for a in hands)
@@ -402,6 +421,7 @@ def test_a_departure_hidden_after_every_rising_edge_of_a_generator_log_is_one_mo
     assert "not a hand on the wheel" in anomaly(miss[0])
 
 
+@SEED_1012
 def test_the_model_picks_up_where_the_hand_let_go_and_follows_the_wheel_across_the_step():
     # the hand lets go of the wheel at 6.25 s, 0.43 s (under 2 T) before the input steps down
     # at 6.68 s: the wheel is still coming back when the step comes, and goes on coming back
@@ -409,9 +429,8 @@ def test_the_model_picks_up_where_the_hand_let_go_and_follows_the_wheel_across_t
     # which took that step's response out of the fit; now the rows from where the hand let go
     # stay in, the model restarted from the speed the wheel was left at (within 0.03 rad/s
     # of the speed there; they were 2.3 rad/s off when kept from the step on, before that)
-    log = make(1012, ("velocity_filter",), touch=True)
+    log, r = checked(1012, ("velocity_filter",), touch=True)
     assert log.touch is not None
-    r = check(log.t, log.u, log.omega)
     hand = next(a for a in r.anomalies if a.kind == "disturbance")
     edges = log.t[np.flatnonzero(np.diff(log.u) != 0) + 1]
     step = float(edges[edges > log.touch[1]][0])
