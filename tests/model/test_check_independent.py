@@ -4,6 +4,8 @@ artefacts of a logger and about a hand on the wheel. Tuning seeds only (the held
 are for benchmarks/model_check_independent.py's figures).
 """
 
+from functools import cache
+
 import numpy as np
 import pytest
 
@@ -16,10 +18,25 @@ from minseg_tui.lab.views.check_says import (
     runner_up_why,
 )
 from minseg_tui.lab.views.check_text import text
-from minseg_tui.model.check import check
+from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.decide import Reason
 from minseg_tui.model.check.effects import BY_CAUSE
-from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, make
+from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, PhysLog, make
+
+
+@cache
+def checked(seed: int, causes: tuple[str, ...], **how: bool) -> tuple[PhysLog, CheckResult]:
+    """The generator's log and its check, made once per test process for the logs two tests
+    read (each pair in an xdist group, so on one worker): the generator is seeded and the
+    check deterministic, so the second test would compute the same log and result."""
+    log = make(seed, causes, **how)
+    return log, check(log.t, log.u, log.omega)
+
+
+SEED_21 = pytest.mark.xdist_group("independent-seed-21")
+"""Tuning seed 21 with dry friction and a logger's artefacts, read by two tests."""
+SEED_1012 = pytest.mark.xdist_group("independent-seed-1012")
+"""Touched seed 1012 of an average, read by two tests."""
 
 
 def named(r):
@@ -37,10 +54,12 @@ def test_the_generator_keeps_its_held_out_seeds_apart():
     assert a.causes["coulomb_friction"] > 0 and a.T > 0
 
 
-@pytest.mark.parametrize(("seed", "causes"), [(21, ("coulomb_friction",)), (25, ())])
+@pytest.mark.parametrize(
+    ("seed", "causes"),
+    [pytest.param(21, ("coulomb_friction",), marks=SEED_21), (25, ())],
+)
 def test_a_spike_after_a_stall_of_the_logger_is_an_artefact_not_a_hand(seed, causes):
-    log = make(seed, causes, artefacts=True)
-    r = check(log.t, log.u, log.omega)
+    log, r = checked(seed, causes, artefacts=True)
     assert "disturbance" not in kinds(r)
     art = [a for a in r.anomalies if a.kind == "logging_artefact"]
     assert len(art) == 1
@@ -51,9 +70,9 @@ def test_a_spike_after_a_stall_of_the_logger_is_an_artefact_not_a_hand(seed, cau
     assert named(r) == sorted(causes)
 
 
+@SEED_21
 def test_switch_on_glitch_rows_are_named_and_left_out_of_every_figure():
-    log = make(21, ("coulomb_friction",), artefacts=True)
-    r = check(log.t, log.u, log.omega)
+    log, r = checked(21, ("coulomb_friction",), artefacts=True)
     glitch = [a for a in r.anomalies if a.kind == "start_glitch"]
     assert len(glitch) == 1 and "starts_moving" not in kinds(r)
     assert glitch[0].row_end is not None and glitch[0].row_end >= max(
@@ -346,13 +365,13 @@ def test_a_hand_on_an_averaged_speed_is_reported_where_it_began_and_the_average_
     assert "a hand on it" in anomaly(hands[0])
 
 
+@SEED_1012
 def test_a_stall_spike_spread_by_an_average_is_a_logging_artefact_not_a_hand():
     # a 9-tap average over the real intervals of an irregular loop: a 75 ms stall at 10.13 s
     # whose row read the counts late lifts the next 9 rows by 5.3 rad/s and drops straight
     # back; that is the stall's read carried by the average, not a hand
-    log = make(1012, ("velocity_filter",), touch=True)
+    log, r = checked(1012, ("velocity_filter",), touch=True)
     assert "stall" in log.how and log.touch is not None
-    r = check(log.t, log.u, log.omega)
     stall_t = float(log.t[log.artefact_rows[0]])
     hands = [a for a in r.anomalies if a.kind == "disturbance"]
     assert all(abs(a.t - stall_t) > 0.5 for a in hands)
@@ -402,6 +421,7 @@ def test_a_departure_hidden_after_every_rising_edge_of_a_generator_log_is_one_mo
     assert "not a hand on the wheel" in anomaly(miss[0])
 
 
+@SEED_1012
 def test_the_model_picks_up_where_the_hand_let_go_and_follows_the_wheel_across_the_step():
     # the hand lets go of the wheel at 6.25 s, 0.43 s (under 2 T) before the input steps down
     # at 6.68 s: the wheel is still coming back when the step comes, and goes on coming back
@@ -409,9 +429,8 @@ def test_the_model_picks_up_where_the_hand_let_go_and_follows_the_wheel_across_t
     # which took that step's response out of the fit; now the rows from where the hand let go
     # stay in, the model restarted from the speed the wheel was left at (within 0.03 rad/s
     # of the speed there; they were 2.3 rad/s off when kept from the step on, before that)
-    log = make(1012, ("velocity_filter",), touch=True)
+    log, r = checked(1012, ("velocity_filter",), touch=True)
     assert log.touch is not None
-    r = check(log.t, log.u, log.omega)
     hand = next(a for a in r.anomalies if a.kind == "disturbance")
     edges = log.t[np.flatnonzero(np.diff(log.u) != 0) + 1]
     step = float(edges[edges > log.touch[1]][0])
@@ -718,8 +737,7 @@ def test_a_hand_at_fast_sampling_is_looked_for_over_half_its_shortest_hold(cause
     hands = [a for a in r.anomalies if a.kind == "disturbance"]
     assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.15, text(r)
     assert named(r) == [cause]
-    control = make(1044, (cause,), touch=True, hand_torque=0.0)
-    assert named(check(control.t, control.u, control.omega)) == [cause]
+    # the same log with the hand's torque at 0: test_a_touched_log_s_control_names_its_cause
 
 
 def test_an_average_is_weighed_without_the_rows_it_carries_a_stalls_read_into():
@@ -753,9 +771,7 @@ def test_a_cause_the_others_take_over_when_it_is_left_out_is_not_named():
     hands = [a for a in r.anomalies if a.kind == "disturbance"]
     assert len(hands) == 1 and abs(hands[0].t - log.touch[0]) <= 0.15, text(r)
     assert named(r) == ["coast_on_zero"], text(r)
-    control = make(seed, ("coast_on_zero",), touch=True, hand_torque=0.0)
-    rc = check(control.t, control.u, control.omega)
-    assert named(rc) == ["coast_on_zero"]
+    # the same log with the hand's torque at 0: test_a_touched_log_s_control_names_its_cause
     why = reason(Reason("taken_over", shown=0.35, rows=9, top=105.0, causes=("coast_on_zero",)))
     assert why.startswith("coast_on_zero, fitted again without it, takes over nearly all")
     assert "0.35 rad/s at most, 0.33 % of the 105 rad/s" in why
@@ -776,7 +792,8 @@ def test_an_average_refused_for_a_stalls_rows_is_chosen_again_without_them():
     # was in, the rows after the gap it carries the stall's late read into weighed against
     # it: the cap's pair fitted 13 taps and lost to a 95 ms delay beside the cap (named: cap
     # and delay, no ambiguity), and the delay's pair was named a delay and a pole. Chosen
-    # again with those rows out the average is named, its own rows then left out as ever
+    # again with those rows out the average is named, its own rows then left out as ever.
+    # The delay's pair is the next test (two logs, two checks: one on each xdist worker)
     log = make(8, ("velocity_filter", "current_limit"))
     assert "stall" in log.how
     r = check(log.t, log.u, log.omega)
@@ -785,6 +802,11 @@ def test_an_average_refused_for_a_stalls_rows_is_chosen_again_without_them():
     assert p["taps"] == 9
     assert p["a_max"] == pytest.approx(log.causes["current_limit"], rel=0.05)
     assert "gap_rows_left_out" in kinds(r) and "disturbance" not in kinds(r)
+
+
+def test_an_average_refused_beside_a_delay_for_a_stalls_rows_is_chosen_again_without_them():
+    # tuning pair seed 8 of the same average with a delay (the test above): named a delay and
+    # a pole before the average was chosen again with the rows after the gap out
     log = make(8, ("dead_time", "velocity_filter"))
     r = check(log.t, log.u, log.omega)
     truth = ["dead_time", "velocity_filter"]
@@ -908,8 +930,28 @@ def test_a_hands_fence_reaches_as_far_as_the_model_chosen_sees_the_wheel_depart(
     p = r.extended.params
     assert abs(p["taps"] - log.causes["velocity_filter"]) <= 1
     assert p["T"] == pytest.approx(log.T, rel=0.05)
-    control = make(seed, ("velocity_filter",), touch=True, hand_torque=0.0)
-    assert named(check(control.t, control.u, control.omega)) == ["velocity_filter"]
+    # the same log with the hand's torque at 0: test_a_touched_log_s_control_names_its_cause
+
+
+@pytest.mark.parametrize(
+    ("seed", "cause"),
+    [
+        (1044, "dead_time"),
+        (1044, "coast_on_zero"),
+        (1044, "current_limit"),
+        (1033, "coast_on_zero"),
+        (1253, "velocity_filter"),
+        (1320, "velocity_filter"),
+    ],
+)
+def test_a_touched_log_s_control_names_its_cause(seed, cause):
+    # the controls of test_a_hand_at_fast_sampling_is_looked_for_over_half_its_shortest_hold
+    # (1044), test_a_cause_the_others_take_over_when_it_is_left_out_is_not_named (1033) and
+    # test_a_hands_fence_reaches_as_far_as_the_model_chosen_sees_the_wheel_depart (1253,
+    # 1320): the same log with the hand's torque at 0 names the cause alone. A test of its
+    # own, so that under xdist a touched log and its control are checked side by side
+    control = make(seed, (cause,), touch=True, hand_torque=0.0)
+    assert named(check(control.t, control.u, control.omega)) == [cause]
 
 
 def test_a_hand_let_go_under_a_current_cap_is_left_out_until_the_wheel_is_back():

@@ -3,6 +3,7 @@ verdicts are in the s29-logs note). Each test pins one sentence that plots of th
 first-order and extended predictions and the residuals showed false or misleading."""
 
 import re
+from functools import cache
 
 import numpy as np
 import pytest
@@ -10,12 +11,25 @@ import pytest
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views.check_says import runner_up_why
 from minseg_tui.lab.views.check_text import text
-from minseg_tui.model.check import check
+from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.guess import first_motion
-from tests.model.physics_gen import make
+from tests.model.physics_gen import PhysLog, make
 from tests.shared_data import SHARED_DATA
 
+SEED_17 = pytest.mark.xdist_group("logs29-seed-17")
+"""The two tests of tuning seed 17's log, on one xdist worker so that it is checked once."""
 
+
+@cache
+def seed_17() -> tuple[PhysLog, CheckResult]:
+    """The independent generator's tuning seed 17 and its check, made once per test process
+    (the generator is seeded and the check deterministic: the second test would compute the
+    same log and the same result, 2.2 s CPU)."""
+    g = make(17, ("velocity_filter",), artefacts=True)
+    return g, check(g.t, g.u, g.omega, ts=g.ts, cpr=g.cpr)
+
+
+@SEED_17
 def test_a_delay_is_not_called_pure_when_the_speed_moves_before_it_ends():
     # the independent generator's tuning seed 17: a 22-tap moving average of the speed (25 ms
     # rows), a stall and a switch-on glitch. Most steps come while the speed still moves from
@@ -23,8 +37,7 @@ def test_a_delay_is_not_called_pure_when_the_speed_moves_before_it_ends():
     # "a first-order response that starts 86 ms after the command fits (a pure delay; ...)".
     # A speed still falling at a step says nothing of when the step acts, and a speed that
     # moves before the fitted delay ends has a slow start, not a late one.
-    g = make(17, ("velocity_filter",), artefacts=True)
-    r = check(g.t, g.u, g.omega, ts=g.ts, cpr=g.cpr)
+    g, r = seed_17()
     words = text(r)
     assert "first moves 0 ms later" not in words
     for lag, d in re.findall(
@@ -69,6 +82,7 @@ def test_a_one_count_creep_after_a_rise_is_not_a_hand():
     assert r.extended.rows == 770 and "a hand on it" not in text(r)
 
 
+@SEED_17
 def test_a_stalls_spike_spread_by_an_average_chosen_late_is_a_logging_artefact():
     # tuning seed 17 again (a 22-tap average, a stall of 75 ms at 7.35 s): the first pass
     # names a delay and a pole (no average, so no rows are left out after the gap), and the
@@ -76,8 +90,7 @@ def test_a_stalls_spike_spread_by_an_average_chosen_late_is_a_logging_artefact()
     # a one-row spike of 7.8 rad/s, then stood in the average for 22 rows (7.38-7.90 s) with
     # no word and in the fit (T 0.0906 s, true 0.0824), and "the speed departs ... after 5
     # rising edges" was the first pass's model's miss (4-6 rad/s), not the average's (0.1)
-    g = make(17, ("velocity_filter",), artefacts=True)
-    r = check(g.t, g.u, g.omega, ts=g.ts, cpr=g.cpr)
+    g, r = seed_17()
     gap = next(k for k in range(1, g.t.size) if g.t[k] - g.t[k - 1] > 1.5 * g.ts)
     left = [a for a in r.anomalies if a.kind in ("gap_rows_left_out", "logging_artefact")]
     assert left and left[0].row == gap and (left[0].row_end or 0) >= gap + 22, text(r)

@@ -45,6 +45,29 @@ def analyze(name: str) -> tuple[CheckResult, str]:
     return r, text(r)
 
 
+# Under pytest-xdist (make test: --dist loadgroup) a log's check is cached per worker
+# (analyze), so every test reading a log goes to the one worker that checks it: the logs some
+# test reads together share a group, each other log has its own, and the groups still spread
+# over the workers. Spread test by test, the 16 logs were checked 28 times on two workers.
+TOGETHER = (
+    ("micromouse-n20-duty255", "micromouse-n20-duty100", "n20_255_uponly.csv"),
+    ("ubc-motor-7V", "ubc7_2ms.csv", "ubc7_20ms.csv"),
+    ("ev3_100_irregular_actualdt.csv", "ev3_100_irregular_nominaldt.csv"),
+)
+
+
+def on(*names: str) -> pytest.MarkDecorator:
+    """The xdist group of the tests that read the logs ``names`` (one group, see TOGETHER)."""
+    groups = {next((s[0] for s in TOGETHER if n in s), n) for n in names}
+    assert len(groups) == 1, f"{names} are read together: put them in one TOGETHER entry"
+    return pytest.mark.xdist_group(f"real-{groups.pop()}")
+
+
+def logs(*names: str) -> list[object]:
+    """``names`` as parameters, each in its log's xdist group (:func:`on`)."""
+    return [pytest.param(n, marks=on(n)) for n in names]
+
+
 def causes(r: CheckResult) -> set[str]:
     return {r.finding.cause, *(o.cause for o in r.finding.others)} - {"none"}
 
@@ -58,7 +81,7 @@ def test_the_ten_logs_and_six_probes_are_there():
     assert len(LOGS) == 10 and len(PROBES) == 6
 
 
-@pytest.mark.parametrize("name", LOGS + PROBES)
+@pytest.mark.parametrize("name", logs(*LOGS, *PROBES))
 def test_every_log_gets_a_result_whose_model_holds_all_it_names(name):
     r, words = analyze(name)
     # the extended model holds every cause named, largest first, each with its parameter
@@ -84,7 +107,7 @@ def test_every_log_gets_a_result_whose_model_holds_all_it_names(name):
 # the first 20 ms are lost in the noise.
 
 
-@pytest.mark.parametrize("name", ["ev3-large-duty100", "ev3-large-duty30"])
+@pytest.mark.parametrize("name", logs("ev3-large-duty100", "ev3-large-duty30"))
 def test_ev3_is_first_order_under_its_noise(name):
     r, words = analyze(name)
     assert r.finding.cause == "none" and r.finding.explained
@@ -99,6 +122,7 @@ def test_ev3_is_first_order_under_its_noise(name):
 # -- micromouse-n20: firmware polls the mode once a second, so motion starts late ---------
 
 
+@on("micromouse-n20-duty255")
 def test_micromouse_duty255_starts_355_ms_after_the_command():
     # first count at 1.135 s, command at 0.780 s: a dead time of ~0.35 s, far beyond the old
     # 0.15 s bound (which turned it into a 40-tap "filter"); then a fast first-order rise
@@ -111,6 +135,7 @@ def test_micromouse_duty255_starts_355_ms_after_the_command():
     assert r.finding.explained
 
 
+@on("micromouse-n20-duty100")
 def test_micromouse_duty100_starts_late_too():
     # motion starts 30-40 ms after the logged mode change (first count at 0.500 s, command at
     # 0.460 s); at one count = 3.5 rad/s nothing finer can be judged
@@ -124,6 +149,7 @@ def test_micromouse_duty100_starts_late_too():
     assert "first moves 40 ms later" in words
 
 
+@on("mm255_aligned.csv")
 def test_micromouse_aligned_probe_has_no_delay():
     # the duty-255 log with the step moved to the motion onset: a clean fast rise
     r, _ = analyze("mm255_aligned.csv")
@@ -135,6 +161,7 @@ def test_micromouse_aligned_probe_has_no_delay():
 # -- n20-12v: on/off instants inferred from the speed, so no dead time can be judged --------
 
 
+@on("n20-12v-pwm255")
 def test_n20_pwm255_coasts_against_dry_friction():
     # after the supply is cut (5.371 s) the wheel slows nearly linearly, its deceleration
     # falling from ~83 to ~42 rad/s^2, and stands still at 6.234 s: a free (coasting) wheel
@@ -149,6 +176,7 @@ def test_n20_pwm255_coasts_against_dry_friction():
     assert r.sampling is not None and not r.sampling.over_interval
 
 
+@on("n20-12v-pwm25")
 def test_n20_pwm25_is_at_the_encoder_floor():
     # 5-6 counts per sample: the error of the first-order model is near the floor
     # (one count = 1.8 rad/s, floor 0.73 rad/s); the run-down ends abruptly at 16.726 s, but
@@ -159,6 +187,7 @@ def test_n20_pwm25_is_at_the_encoder_floor():
     assert r.baseline.rmse < 1.2 * r.gain.noise_floor
 
 
+@on("n20-12v-pwm25")
 def test_n20_pwm25_speed_before_the_cut_is_the_speed_the_wheel_ran_at():
     # the wheel ran at 8.8-9.2 rad/s (5 counts per sample, some 4s and 6s); the three rows
     # before the inferred cut read 8.98, 7.18, 7.18, whose median (7.18) was given as "the
@@ -170,6 +199,7 @@ def test_n20_pwm25_speed_before_the_cut_is_the_speed_the_wheel_ran_at():
     assert "from 7.18 rad/s" not in words
 
 
+@on("n20-12v-pwm25")
 def test_n20_pwm25_fall_rate_is_the_slope_of_the_readings_not_one_count():
     # after the cut the wheel reads 8.98, then 7.18 for 60 ms, then 5.39 (one count = 1.8
     # rad/s): the two-point rate from the 100 ms mean (8.8) to that first 5.39 read 42.6 rad/s^2;
@@ -181,6 +211,7 @@ def test_n20_pwm25_fall_rate_is_the_slope_of_the_readings_not_one_count():
     assert 18 <= float(rate.group(1)) <= 32
 
 
+@on("micromouse-n20-duty255", "micromouse-n20-duty100")
 def test_an_extended_model_within_the_noise_is_not_said_to_be_all_noise():
     # duty 255: after the 345 ms delay is in the model its rms error (1.52 rad/s) is below the
     # speed's scatter (1.76 rad/s); "-> 0 rad/s" alone read like a perfect model. But its
@@ -195,6 +226,7 @@ def test_an_extended_model_within_the_noise_is_not_said_to_be_all_noise():
         assert f"-> 0 rad/s, the extended model's rms error ({rms} rad/s) is no larger" in words
 
 
+@on("micromouse-n20-duty100")
 def test_the_gain_details_give_the_error_above_the_noise_the_tui_shows():
     # duty 100: the TUI's panel lists "speed error above the noise first order 0.477 rad/s ->
     # extended 0" (scatter 1.52 rad/s; sqrt(1.592^2 - 1.52^2) = 0.47); the CLI's details line
@@ -204,6 +236,7 @@ def test_the_gain_details_give_the_error_above_the_noise_the_tui_shows():
     assert "speed error above the measured noise 0.477 -> 0 rad/s" in details, details
 
 
+@on("mm255_aligned.csv")
 def test_aligned_probe_is_not_said_to_be_explained_down_to_its_noise():
     # the first-order model's rms error (1.50 rad/s) is under the scatter (1.75), but after
     # the rise it misses in one direction for 200 ms: 20 ms means of its error +2.0, +3.4,
@@ -214,6 +247,7 @@ def test_aligned_probe_is_not_said_to_be_explained_down_to_its_noise():
     assert "rms error is at the level of the speed's noise: 1.5 rad/s against" in words
 
 
+@on("n20_255_uponly.csv")
 def test_n20_probe_cut_before_the_run_down_says_nothing_of_stops():
     # the same rise without its run-down: nothing to see friction or coasting by
     r, words = analyze("n20_255_uponly.csv")
@@ -225,7 +259,7 @@ def test_n20_probe_cut_before_the_run_down_says_nothing_of_stops():
 # -- rtl-dc-5to15V: a smooth (tachometer or filtered) speed, 5 V -> 15 V, no step-down -----
 
 
-@pytest.mark.parametrize("name", ["rtl-dc-5to15V-noload", "rtl-dc-5to15V-brake"])
+@pytest.mark.parametrize("name", logs("rtl-dc-5to15V-noload", "rtl-dc-5to15V-brake"))
 def test_rtl_offset_and_a_lag_it_cannot_attribute(name):
     # the steady speeds at 5 V and 15 V are not proportional to the voltage: the line through
     # them meets zero speed at ~0.71 / 0.73 V; the rise starts smoothly (S-shaped). No
@@ -247,7 +281,10 @@ def test_rtl_offset_and_a_lag_it_cannot_attribute(name):
 
 @pytest.mark.parametrize(
     ("name", "lo", "hi"),
-    [("ubc-motor-7V", 500, 750), ("ubc-motor-9V", 500, 800)],
+    [
+        pytest.param("ubc-motor-7V", 500, 750, marks=on("ubc-motor-7V")),
+        pytest.param("ubc-motor-9V", 500, 800, marks=on("ubc-motor-9V")),
+    ],
 )
 def test_ubc_ramps_at_a_capped_acceleration(name, lo, hi):
     # the speed ramps almost straight (slope 520 -> 350 rad/s^2 at 7 V) to ~460 rad/s, then
@@ -264,7 +301,7 @@ def test_ubc_ramps_at_a_capped_acceleration(name, lo, hi):
     assert r.extended.rmse < 0.6 * {"ubc-motor-7V": 4.52, "ubc-motor-9V": 7.69}[name]
 
 
-@pytest.mark.parametrize("name", ["ubc-motor-7V", "ubc-motor-9V"])
+@pytest.mark.parametrize("name", logs("ubc-motor-7V", "ubc-motor-9V"))
 def test_a_cap_is_not_said_to_brake_on_a_log_without_a_step_down(name):
     # one step up from rest and no step down: nothing in the log shows how the drive brakes,
     # so the evidence must not speak of the speed falling along a ramp after a step down
@@ -274,6 +311,7 @@ def test_a_cap_is_not_said_to_brake_on_a_log_without_a_step_down(name):
     assert "both ways" not in words
 
 
+@on("ubc7_2ms.csv", "ubc-motor-7V", "ubc7_20ms.csv")
 def test_ubc_limit_does_not_follow_the_resampling_period():
     # the same 7 V log resampled at 2, 5 and 20 ms: the old "filter" length followed the
     # period (40, 40, 21 taps); the acceleration cap is a property of the motor
@@ -286,6 +324,7 @@ def test_ubc_limit_does_not_follow_the_resampling_period():
 # -- the EV3 probes: raw irregular sample times -------------------------------------------
 
 
+@on("ev3_100_irregular_actualdt.csv", "ev3_100_irregular_nominaldt.csv")
 def test_irregular_times_are_jitter_and_the_speed_definition_is_detected():
     # 3.4-9 ms from a Python loop: an irregular clock, not lost samples; one probe's speed is
     # over the real interval, the other's over the nominal period (on a lattice of
@@ -304,7 +343,7 @@ def test_irregular_times_are_jitter_and_the_speed_definition_is_detected():
 # -- sentences checked against the data (independent fits and plots in the real-truth notes) --
 
 
-@pytest.mark.parametrize("name", ["micromouse-n20-duty100", "ubc-motor-7V", "ubc-motor-9V"])
+@pytest.mark.parametrize("name", logs("micromouse-n20-duty100", "ubc-motor-7V", "ubc-motor-9V"))
 def test_a_runner_up_that_misses_the_speed_more_is_not_said_to_fit_better(name):
     # The runner-up here is a 40-tap average (its bound). Fitted by hand (least squares on the
     # speed, first order followed by a 40-sample moving average) it misses the measured speed
@@ -327,7 +366,7 @@ def test_a_runner_up_that_misses_the_speed_more_is_not_said_to_fit_better(name):
     assert "misses the measured speed by more" in why
 
 
-@pytest.mark.parametrize("name", ["rtl-dc-5to15V-noload", "rtl-dc-5to15V-brake"])
+@pytest.mark.parametrize("name", logs("rtl-dc-5to15V-noload", "rtl-dc-5to15V-brake"))
 def test_a_negligible_noise_does_not_lead_the_gain(name):
     # The tachometer speed scatters 0.01-0.05 rad/s from sample to sample (last 4 s: robust
     # and plain sd of the differences / sqrt 2), against model errors of 0.9-9 rad/s:
@@ -342,7 +381,7 @@ def test_a_negligible_noise_does_not_lead_the_gain(name):
     assert "Gain: rms error" in words
 
 
-@pytest.mark.parametrize("name", ["ev3-large-duty100", "ev3-large-duty30"])
+@pytest.mark.parametrize("name", logs("ev3-large-duty100", "ev3-large-duty30"))
 def test_the_angle_lead_of_a_log_without_a_cause_speaks_of_one_model(name):
     # No cause is named (a plain first-order rise under its noise), so there is one model:
     # "the angle error tells them apart" spoke of two.
@@ -354,6 +393,7 @@ def test_the_angle_lead_of_a_log_without_a_cause_speaks_of_one_model(name):
     assert "the angle error judges the model" in lead_why(r.lead)
 
 
+@on("n20_255_uponly.csv", "micromouse-n20-duty100")
 def test_a_region_barely_worse_than_steady_state_is_not_called_the_worst():
     # n20 cut before its run-down: the first-order residual is 2.32 rad/s rms on the 15 rows
     # after the rise and 2.21 rad/s on the rest (computed from the predictions): the same
@@ -368,7 +408,7 @@ def test_a_region_barely_worse_than_steady_state_is_not_called_the_worst():
     assert where(r2.deviations).startswith("the model is worst after rising edges")
 
 
-@pytest.mark.parametrize("name", ["n20-12v-pwm255", "n20-12v-pwm25"])
+@pytest.mark.parametrize("name", logs("n20-12v-pwm255", "n20-12v-pwm25"))
 def test_the_step_down_close_up_shows_the_wheel_stop(name):
     # "a step-down, where the wheel slows and stops": the raw speed is zero for good from
     # 6.234 s (pwm255, cut at 5.371 s) and 16.726 s (pwm25, cut at 16.454 s). The pwm255
@@ -381,6 +421,7 @@ def test_the_step_down_close_up_shows_the_wheel_stop(name):
     assert cu.t1 - stop < 0.5  # and still a close-up, not the rest of the log
 
 
+@on("ev3_100_irregular_actualdt.csv", "ev3_100_irregular_nominaldt.csv")
 def test_speeds_over_their_own_interval_are_not_said_to_lie_on_a_lattice():
     # ev3 irregular, speed over the real interval: 9.7 % of the nonzero speeds lie within 2 %
     # of a multiple of 1 degree / 4.39 ms = 3.98 rad/s (3.883, 4.845, 2.638, ...); it is the
@@ -393,6 +434,7 @@ def test_speeds_over_their_own_interval_are_not_said_to_lie_on_a_lattice():
     assert "the speeds lie on a lattice of 3.98 rad/s" in words2
 
 
+@on("ev3_100_irregular_actualdt.csv", "ev3_100_irregular_nominaldt.csv")
 def test_the_angle_error_integrates_the_speed_over_the_period_it_was_taken_over():
     # Both EV3 probes hold the same angles; one divides each angle step by its real interval,
     # the other by the nominal 4.39 ms. The angle error must be the same motor's: integrating
