@@ -49,6 +49,16 @@ def _fill_table(s: Session) -> None:
         s.enter(f"i_ss@{lv:g}", i)
 
 
+def _record_stopped_run(s: Session):
+    """A Task 10 run stopped with F2 after one rising step: 80 of the plan's 480 samples."""
+    plan = dict(step("task10").plans)["manual"]
+    data = record(PlantParams(), np.r_[np.zeros(20), np.full(60, plan.high)], ts=plan.ts)
+    rec = s.start_run("steps", plan)
+    for j in range(80):
+        rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), 4500 * (j >= 20))
+    return s.finish_run(rec, stopped_early=True, ended_by="stopped")
+
+
 def _record_steps(s: Session, seed: int = 3, n_lead: int = 20):
     plan = dict(step("task10").plans)["manual"]
     n = int(round(plan.duration / plan.ts))
@@ -566,12 +576,7 @@ def test_a_run_stopped_before_its_plan_ended_says_so_in_tasks_11_to_15(tmp_path)
         info, _, _ = _record_steps(s)
         assert info is not None and not info.interrupted
         assert not any("ended before its plan" in p for p in views.results(s, "task11").problems)
-        plan = dict(step("task10").plans)["manual"]
-        data = record(PlantParams(), np.r_[np.zeros(20), np.full(60, plan.high)], ts=plan.ts)
-        rec = s.start_run("steps", plan)
-        for j in range(80):  # F2 after one rising step: 80 of the plan's 480 samples
-            rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), 4500 * (j >= 20))
-        short = s.finish_run(rec, stopped_early=True, ended_by="stopped")
+        short = _record_stopped_run(s)
         assert short is not None and short.interrupted
     with Session.open(s.folder) as again:  # kept in the session file
         assert again.runs[-1].interrupted and again.runs[-1].interruption == "stopped"
@@ -646,12 +651,7 @@ def test_task10_is_started_not_done_while_its_only_run_was_interrupted(tmp_path)
     with Session.create(tmp_path, ["A"]) as s:
         _fill_table(s)
         assert s.step_status("task10") == "todo"
-        plan = dict(step("task10").plans)["manual"]
-        data = record(PlantParams(), np.r_[np.zeros(20), np.full(60, plan.high)], ts=plan.ts)
-        rec = s.start_run("steps", plan)
-        for j in range(80):  # F2 after one rising step: 80 of the plan's 480 samples
-            rec.append(int(data.seq[j]), int(data.t_us[j]), int(data.count[j]), 4500 * (j >= 20))
-        short = s.finish_run(rec, stopped_early=True, ended_by="stopped")
+        short = _record_stopped_run(s)
         assert short is not None and short.interrupted
         assert s.step_status("task10") == "started"
         info, _, _ = _record_steps(s)
