@@ -45,7 +45,7 @@ from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as session_views
 from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.lab.views.own_first import OwnRow
-from minseg_tui.model.identify import ZeroVoltRefusal, response_alone
+from minseg_tui.model.identify import IdentifyRefused, ZeroVoltRefusal, response_alone
 from minseg_tui.model.runlog import LogRefused
 from minseg_tui.quantities import (
     F_UNIT,
@@ -537,7 +537,7 @@ def _response_alone(session: Session) -> dict[str, float | None]:
         return {}
     try:
         st = response_alone(read_run(session.folder, run, pairs, require_step=True), pairs)
-    except (InputError, LogRefused, ZeroVoltRefusal):
+    except (InputError, IdentifyRefused, LogRefused, ZeroVoltRefusal):
         return {}
     return {"K": st.K, "T_63": st.T_63, "T": st.T}
 
