@@ -10,14 +10,20 @@ The corpus:
   counts over the nominal period, a speed over the real intervals, with and without t_us;
 - hostile variants that meet each of a run log's refusals: too few rows, a speed that never
   changes, a t_us that does not keep time with t, a sample period out of range, a voltage
-  out of size, a wheel whose angle never changes (count and theta).
+  out of size, a wheel whose angle never changes (count and theta), a command that only
+  falls (no rising edge);
+- hostile tables that meet each of identify's refusals of the steady-state readings: a
+  speed, u_ss or current at 0, --R at 0, readings too small to give a finite k_v, a median
+  k_v below 0.
 
 For each log: ``identify TABLE --R 5 --step LOG`` as text and ``--json``, ``analyze LOG``
 (``--json`` too with ``--json``): exit code, stdout and stderr, one record each. Then the
 refusals of :func:`minseg_tui.model.runlog.problem` and :func:`~minseg_tui.model.runlog.
 clock_problem` on arrays the CSV reader would refuse first (unequal lengths, non-finite
 values, a time that goes back), and :meth:`~minseg_tui.model.runlog.RunLog.angle`'s source,
-in the words the program prints.
+in the words the program prints; and identify's refusals asked of the model directly (a row
+not a number, a bad R, no rows, no rising edge), with the session's line for a row it leaves
+out (:func:`minseg_tui.lab.state.results.compute`).
 
 Run: ``.venv/bin/python benchmarks/printed_words.py OUT.txt`` (``--fast`` leaves analyze
 out on the logs it does not refuse: the model check takes seconds a log), then ``diff``
@@ -29,6 +35,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import io
+import math
 import sys
 import tempfile
 from collections.abc import Callable, Iterator
@@ -63,6 +70,25 @@ def _said(what: object) -> str:
     name = "angle_words" if type(what).__name__ == "AngleFrom" else "refusal_words"
     words: Callable[[object], str] = getattr(log_says, name)
     return repr(words(what))
+
+
+def _refused(call: Callable[[], object]) -> str:
+    """What the program says of a call to identify the model refuses: an InputError as it
+    is (words before the change), or a refusal record worded by lab/content/identify_says."""
+    from minseg_tui.errors import InputError
+
+    try:
+        call()
+    except InputError as e:
+        return repr(str(e))
+    except Exception as e:
+        if type(e).__name__ != "IdentifyRefused":
+            raise
+        from minseg_tui.lab.content import identify_says
+
+        worded: Callable[[object], object] = identify_says.identify_refusal
+        return repr(str(worded(e)))
+    return "not refused"
 
 
 def _run(argv: list[str]) -> str:
@@ -123,12 +149,75 @@ def _hostile(d: Path) -> Iterator[tuple[str, Path]]:
         "count-still": (rec.t, rec.u_A, omega, {**base, "count": rec.count * 0}),
         "theta-still": (rec.t, rec.u_A, omega, {"u_req": rec.u_req, "theta": rec.t * 0 + 1.0}),
         "board-period": (rec.t, rec.u_A, omega, {**base, "t_us": np.round(rec.t * 1e2)}),
+        "falls-only": (
+            rec.t[:60],
+            np.where(rec.t[:60] < rec.t[30], 4.0, 0.0),
+            omega[:60],
+            {"u_req": np.where(rec.t[:60] < rec.t[30], 4.5, 0.0), "count": rec.count[:60]},
+        ),
     }
     for name, (t, u, w, extra) in variants.items():
         p = d / f"hostile-{name}.csv"
         ex = {k: (v.astype(np.int64) if k in ("t_us", "count") else v) for k, v in extra.items()}
         write_run_log(p, RunLog(t=t, u=u, omega=w, extra=ex), {})
         yield p.stem, p
+
+
+TABLES: dict[str, tuple[str, str]] = {
+    "omega_ss-zero": ("u_req,u_ss,omega_ss,i_ss\n2,1.55,20,40\n3,2.55,0,45\n", "5"),
+    "u_ss-zero": ("u_req,u_ss,omega_ss,i_ss\n2,0,20,40\n", "5"),
+    "i_ss-zero": ("u_req,u_ss,omega_ss,i_ss\n2,1.55,20,40\n3,2.55,30,0\n", "5"),
+    "R-zero": (TABLE, "0"),
+    "tiny-speed": ("u_req,u_ss,omega_ss,i_ss\n2,1.55,1e-320,40\n", "5"),
+    "k_v-median-negative": ("u_req,u_ss,omega_ss,i_ss\n2.5,2,3,125\n1.5,1,1,375\n", "4"),
+}
+"""Tables identify refuses, each with the --R it is given."""
+
+
+def _tables(d: Path) -> Iterator[tuple[str, str]]:
+    for name, (text, R) in TABLES.items():
+        p = d / f"table-{name}.csv"
+        p.write_text(text)
+        for label, extra in (("identify", []), ("identify --json", ["--json"])):
+            said = _run(["identify", str(p), "--R", R, *extra]).replace(str(d), "TMP")
+            yield f"table {name} | {label}", said
+
+
+def _identify_direct() -> Iterator[tuple[str, str]]:
+    """identify's refusals asked of the model directly, and the session's line for a row
+    it leaves out."""
+    from minseg_tui.lab.state.results import compute
+    from minseg_tui.model.identify import Reading, identify
+
+    good = [Reading(2, 1.55, 20, 40, line=2), Reading(3, 2.55, 30, 45, line=3)]
+    rows = {
+        "u_req-nan": Reading(math.nan, 3.55, 40, 50, line=4),
+        "u_ss-inf": Reading(4, math.inf, 40, 50, line=4),
+        "omega_ss-nan": Reading(4, 3.55, math.nan, 50, line=4),
+        "i_ss-inf": Reading(4, 3.55, 40, -math.inf, line=4),
+        "omega_ss-negative": Reading(4, 3.55, -40, 50, line=4),
+        "u_ss-negative": Reading(4, -3.55, 40, 50, line=4),
+        "i_ss-zero": Reading(4, 3.55, 40, 0.0, line=None),
+        "tiny-speed": Reading(4, 3.55, 1e-320, 50, line=4),
+    }
+    for name, row in rows.items():
+        yield f"identify row {name}", _refused(lambda row=row: identify([*good, row], 5.0))
+        said = compute(None, [*good, row], None, Path("."))
+        yield f"compute row {name}", repr(said.problems)
+    for R in (0.0, -5.0, math.nan, math.inf):
+        yield f"identify R {R}", _refused(lambda R=R: identify(good, R, source="t.csv"))
+    yield "identify no rows", _refused(lambda: identify([], 5.0, source="t.csv"))
+    negative = [Reading(2.5, 2.0, 3.0, 125.0, line=2), Reading(1.5, 1.0, 1.0, 375.0, line=3)]
+    yield "identify k_v median", _refused(lambda: identify(negative, 4.0, source="t.csv"))
+    said = compute(4.0, negative, None, Path("."))
+    yield "compute k_v median", repr(said.problems)
+    t = np.arange(60) * 0.025
+    for name, u in (("falls", np.where(t < 0.5, 4.0, 0.0)), ("flat", t * 0 + 3.0)):
+        log = RunLog(t=t, u=u, omega=np.zeros(60), source="down.csv", lines=np.arange(60) + 2)
+        yield f"identify log {name}", _refused(lambda log=log: identify(good, 5.0, log))
+    late = np.where(t > t[-3], 4.0, 0.0)  # a rise too near the end to be used
+    log = RunLog(t=t, u=late, omega=np.zeros(60), source="late.csv", lines=np.arange(60) + 2)
+    yield "identify log late rise", _refused(lambda: identify(good, 5.0, log))
 
 
 def _direct() -> Iterator[tuple[str, str]]:
@@ -184,6 +273,7 @@ def main_(argv: list[str] | None = None) -> int:
         (d / "table.csv").write_text(TABLE)
         logs = [(str(p.relative_to(SHARED)), p) for p in sorted(SHARED.rglob("*.csv"))]
         logs += [*_plant(d), *_synth(d), *_hostile(d)]
+        lines += [f"=== {k}\n{v}" for k, v in _tables(d)]
         for name, path in logs:
             print(name, file=sys.stderr, flush=True)
             base = ["identify", str(d / "table.csv"), "--R", "5", "--step", str(path)]
@@ -197,6 +287,7 @@ def main_(argv: list[str] | None = None) -> int:
                 said = _run(argv_).replace(str(d), "TMP").replace(str(SHARED), "SHARED")
                 lines.append(f"=== {name} | {label}\n{said}")
     lines += [f"=== {k}\n{v}" for k, v in _direct()]
+    lines += [f"=== {k}\n{v}" for k, v in _identify_direct()]
     Path(args.out).write_text("\n".join(lines) + "\n", encoding="utf-8")
     print(f"{len(lines)} records -> {args.out}", file=sys.stderr)
     return 0

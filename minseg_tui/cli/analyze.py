@@ -23,8 +23,8 @@ from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views.check_says import as_json, in_words
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
-from minseg_tui.model.identify import ZeroVoltRefusal, response_observed
-from minseg_tui.model.runlog import RunLog, problem
+from minseg_tui.model.identify import IdentifyRefused, ZeroVoltRefusal, response_observed
+from minseg_tui.model.runlog import LogRefused, RunLog, problem
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -118,7 +118,7 @@ def with_identify(text: str, r: CheckResult, log: RunLog) -> str:
         return text
     try:
         st, observations = response_observed(log, [])
-    except (InputError, ZeroVoltRefusal, ArithmeticError, ValueError):
+    except (IdentifyRefused, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError):
         st, observations = None, []  # identify refuses this log and says why itself
     lines = text.split("\n")
     at = next(

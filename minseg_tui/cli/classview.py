@@ -26,10 +26,11 @@ from minseg_tui.lab.views import classread
 from minseg_tui.lab.views.classview import (
     MARKED,
     NOT_MARKED,
+    OWN_VS_COMPUTED,
     QUANTITIES,
     ClassView,
-    any_wrong,
     members,
+    nothing_marked,
     own_cell,
 )
 from minseg_tui.quantities import MISSING
@@ -70,7 +71,7 @@ def text(view: ClassView) -> str:
         "step",
         *(q.key for q in QUANTITIES),
         "model check",
-        "own vs computed",
+        OWN_VS_COMPUTED,
     ]
     rows = [
         [
@@ -101,8 +102,7 @@ def text(view: ClassView) -> str:
         lines += [f"  - note: {x}" for x in g.notes]
         lines += [f"  - not answered yet: {g.unanswered}"] if g.unanswered else []
     if not any(g.flags for g in view.groups):
-        noted = any(g.notes for g in view.groups) or any_wrong(view)
-        lines += ["", "Nothing marked '!'." if noted else "Nothing stands out."]
+        lines += ["", nothing_marked(view)]
     lines += ["", f"'!': {MARKED}. {NOT_MARKED}"]
     return "\n".join(lines)
 

@@ -13,6 +13,7 @@ from minseg_tui.lab.content.identify_says import (
     as_json,
     fit_why,
     friction_equation,
+    identify_refusal,
     model_equation,
     sentence,
     t63_note,
@@ -23,7 +24,13 @@ from minseg_tui.lab.content.steps import FIELDS
 from minseg_tui.lab.content.u_ss_says import u_ss_words, zero_volt_refusal
 from minseg_tui.lab.saving.files import read_run_log, read_table
 from minseg_tui.lab.state.entries import read_quantity
-from minseg_tui.model.identify import U_TASK15, Identification, ZeroVoltRefusal, identify
+from minseg_tui.model.identify import (
+    U_TASK15,
+    Identification,
+    IdentifyRefused,
+    ZeroVoltRefusal,
+    identify,
+)
 from minseg_tui.model.identify.risefit import RISE_SPAN
 from minseg_tui.model.runlog import LogRefused
 from minseg_tui.quantities import (
@@ -88,6 +95,8 @@ def run(args: argparse.Namespace) -> int:
     log = read_run_log(args.step) if args.step is not None else None
     try:
         result = identify(readings, args.R.value, log, source=args.table)
+    except IdentifyRefused as refused:
+        raise identify_refusal(refused) from None
     except ZeroVoltRefusal as refused:
         raise zero_volt_refusal(refused) from None
     except LogRefused as refused:

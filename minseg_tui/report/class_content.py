@@ -17,11 +17,12 @@ from minseg_tui.lab.views.classview import (
     JUDGED,
     MARKED,
     NOT_MARKED,
+    OWN_VS_COMPUTED,
     QUANTITIES,
     THRESHOLD,
     ClassView,
-    any_wrong,
     members,
+    nothing_marked,
     own_cell,
 )
 from minseg_tui.quantities import MISSING, format_quantity
@@ -42,7 +43,7 @@ def table(view: ClassView) -> Table:
         "step",
         *(q.shown_label for q in QUANTITIES),
         "model check",
-        "own vs computed",
+        OWN_VS_COMPUTED,
         "flags",
     )
     rows = []
@@ -136,15 +137,15 @@ def build(view: ClassView) -> Report:
     sections = [Section("Groups", [table(view)])]
     sections[0].blocks.append(
         "Numbers in the units of the header (SI, but f in mN m s/rad and T in ms as in the lab; R as typed); T_63 is the 63 % reading, T the "
-        "least-squares fit on the encoder angle. 'own vs computed' is how far the group's own "
-        "values are from the computed ones. '–': not computed yet (see What is missing)."
+        "least-squares fit on the encoder angle. "
+        f"'{OWN_VS_COMPUTED}' is how far the group's own values are from the computed ones. "
+        "'–': not computed yet (see What is missing)."
     )
     sections.append(
         Section(
             "What stands out",
             [
-                stand_out(view)
-                or ("Nothing marked '!'." if any_wrong(view) else "Nothing stands out."),
+                stand_out(view) or nothing_marked(view),
                 f"A group is listed here for {MARKED} (the '!' of the class view). " + NOT_MARKED,
                 f"A value stands out when it lies more than {THRESHOLD:g} robust standard "
                 "deviations (1.4826 times the median absolute deviation) from the class "
@@ -222,7 +223,7 @@ def csv_text(view: ClassView) -> str:
             "step",
             *(q.label for q in QUANTITIES),
             "model check cause",
-            "own vs computed",
+            OWN_VS_COMPUTED,
             "flags",
             "lacks",
         )

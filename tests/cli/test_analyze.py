@@ -404,3 +404,22 @@ def test_micromouse_says_which_T_and_why_identify_differs(capsys):
         "This T fits every row too, and without identify's dead time, so it comes out longer "
         "than the rise's as well."
     )
+
+
+def test_a_count_that_never_changes_leaves_identify_out_of_the_T_line(tmp_path, capsys):
+    """A log whose speed turns but whose count column never changes (an encoder not read):
+    the check reads the speed and says its T; identify takes the angle from the count and
+    refuses the still wheel (LogRefused), so the line under the fit says the check's own T
+    alone, and analyze ends in its report, not a traceback (seen by benchmarks/
+    printed_words.py on its hostile 'count-still' log)."""
+    g = make_log("none", seed=1, duration=3.0)
+    log = RunLog(t=g.t, u=g.u, omega=g.omega, extra={"count": np.zeros(g.t.size, dtype=np.int64)})
+    path = tmp_path / "log.csv"
+    write_run_log(path, log, {})
+    assert main(["analyze", str(path)]) == 0
+    captured = capsys.readouterr()
+    assert captured.err == ""
+    assert _beside_T(captured.out) == (
+        "  This T is the model check's own: the first-order model simulated on the measured "
+        "input and fitted to the speed of those rows."
+    )

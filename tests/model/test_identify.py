@@ -1,15 +1,22 @@
 """Tasks 6-15: hand-computed table values, and T and K recovered from simulated run logs."""
 
 import math
+import re
 
 import numpy as np
 import pytest
 
-from minseg_tui.errors import InputError
-from minseg_tui.lab.content.identify_says import as_json, sentence
+from minseg_tui.lab.content.identify_says import as_json, identify_refusal, sentence
 from minseg_tui.lab.content.log_says import angle_words
 from minseg_tui.lab.content.u_ss_says import U_SS_SAYS, u_ss_words
 from minseg_tui.model.identify import U_SS_HOW, Reading, identify, steady_state, u_ss_at
+from minseg_tui.model.identify.refusals import (
+    IdentifyRefused,
+    MedianKvNotPositive,
+    NoRisingEdge,
+    RNotPositive,
+    RowNotPositive,
+)
 from minseg_tui.model.identify.steady import table_of
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
@@ -83,14 +90,17 @@ def test_current_in_amperes_is_pointed_out():
 
 @pytest.mark.parametrize("R_bad", [0.0, -5.0, math.nan])
 def test_bad_R(R_bad):
-    with pytest.raises(InputError, match="positive resistance"):
+    with pytest.raises(IdentifyRefused) as refused:
         identify(TABLE, R_bad)
+    assert isinstance(refused.value.why, RNotPositive)
+    assert re.search("positive resistance", str(identify_refusal(refused.value)))
 
 
 def test_zero_speed_row_is_refused_with_its_line():
-    with pytest.raises(InputError) as exc:
+    with pytest.raises(IdentifyRefused) as exc:
         identify([TABLE[0], Reading(3.5, 3.0, 0.0, 30.0, line=3)], R, source="t.csv")
-    assert str(exc.value).startswith("t.csv:3: expected omega_ss > 0")
+    assert exc.value.why == RowNotPositive("omega_ss", 0.0)
+    assert str(identify_refusal(exc.value)).startswith("t.csv:3: expected omega_ss > 0")
 
 
 def test_u_ss_lookup_by_hand():
@@ -247,9 +257,10 @@ def test_log_with_only_a_falling_step_is_refused():
     t = np.arange(60) * 0.025
     u = np.where(t < 0.5, 4.0, 0.0)
     log = RunLog(t=t, u=u, omega=np.zeros(60), source="down.csv", lines=np.arange(60) + 2)
-    with pytest.raises(InputError) as exc:
+    with pytest.raises(IdentifyRefused) as exc:
         identify(TABLE, R, log)
-    assert str(exc.value).startswith("down.csv:2: expected a rising edge")
+    assert isinstance(exc.value.why, NoRisingEdge)
+    assert str(identify_refusal(exc.value)).startswith("down.csv:2: expected a rising edge")
 
 
 def test_json_shape(linear_result):
@@ -317,8 +328,10 @@ def test_T_recovered_when_the_wheel_coasts_or_keeps_moving(zero_mode, low, with_
 def test_a_table_whose_median_k_v_is_not_positive_is_refused():
     # R = 4 ohm: (2 - 4 * 0.125) / 3 = +0.5 and (1 - 4 * 0.375) / 1 = -0.5, median 0
     rows = [Reading(2.5, 2.0, 3.0, 125.0, line=2), Reading(1.5, 1.0, 1.0, 375.0, line=3)]
-    with pytest.raises(InputError, match="positive k_v"):
+    with pytest.raises(IdentifyRefused) as refused:
         identify(rows, 4.0, source="t.csv")
+    assert isinstance(refused.value.why, MedianKvNotPositive)
+    assert re.search("positive k_v", str(identify_refusal(refused.value)))
 
 
 def test_every_way_u_ss_is_found_is_said_in_words():

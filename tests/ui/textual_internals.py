@@ -4,40 +4,55 @@ Each reach is here because Textual 8.2 offers no public way to do it; when an up
 Textual breaks one, this file is the one to read. Checked against Textual's source in the
 venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
-Fourteen names of Textual's internals, in six reaches:
+Thirteen names of Textual's internals, in six reaches (each reach's last line says why no
+public way does it; the public names looked at are there too):
 
 1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``, done again here, and put in its
    place. The exact wait Pilot itself uses after a key (every node handles what was queued
    on it, a handler under way included); it also returns at once when the app has failed
-   (``App._exception_event``), which no public API shows. Pilot's public ``pause()`` adds a
-   forced layout and, with no delay, the CPU-idle guess below. Pilot's own queues a new
-   closure on every node each time, and Textual works out each closure's signature
-   (``inspect.signature``) before it calls it; the callback here states its own. Pilot's
-   own also queues it on the nodes that are idle (reach 4), where it waits for nothing:
-   each such callback cost a message, an Idle event and the MRO walk for its handlers, and
-   the tests' waits were about half the messages the app processed.
+   (``App._exception_event``). Pilot's own queues a new closure on every node each time,
+   and Textual works out each closure's signature (``inspect.signature``) before it calls
+   it; the callback here states its own. Pilot's own also queues it on the nodes that are
+   idle (reach 4), where it waits for nothing: each such callback cost a message, an Idle
+   event and the MRO walk for its handlers, and the tests' waits were about half the
+   messages the app processed.
+   Why no public way: Pilot's public ``pause()`` adds a forced layout and, with no delay,
+   the CPU-idle guess of reach 2, and ``wait_for_animation``/``wait_for_scheduled_animations``
+   wait for animations only; a failed app shows in the public ``App.return_code`` (1), a
+   value to poll, not an event to wait for.
 2. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
-   ``textual.app`` and ``textual.pilot``: ``Pilot.press`` and ``Pilot.pause()`` call it
-   after every key, and App.run_test has no option to wait otherwise; and
-   ``Pilot._wait_for_screen`` with :func:`wait_for_screen`.
+   ``textual.app`` and ``textual.pilot``, and ``Pilot._wait_for_screen`` with
+   :func:`wait_for_screen`.
+   Why no public way: ``Pilot.press`` and ``Pilot.pause()`` call them after every key, and
+   neither they nor ``App.run_test`` take an option to wait otherwise.
 3. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
    the replacement the screen's ``_compositor._dirty_regions``, ``_dirty_widgets`` and
-   ``App._update_mouse_over``. No public switch turns painting off in a headless app.
-4. :func:`mark_idle_nodes`: ``Queue.get`` of ``textual._queue`` wrapped so that a node's
-   queue (``MessagePump._message_queue``) says while the node's message loop waits in it:
-   the node then has nothing queued and no handler under way (its loop takes the next
+   ``App._update_mouse_over``.
+   Why no public way: no option or ``TEXTUAL_*`` setting turns painting off in a headless
+   app (``TEXTUAL_FPS`` only spaces the frames, ``App.batch_update`` holds them for a block).
+4. :func:`mark_idle_nodes`: ``MessagePump._get_message`` wrapped so that a node says while
+   its message loop waits for the next message: with nothing queued (the public
+   ``message_queue_size``) the node then has no handler under way (its loop takes the next
    message only once the one before, its Idle event and its ``call_next`` callbacks are
-   done). :func:`idle` reads it; no public API says whether a node is handling a message.
+   done). :func:`idle` reads it. (Until stop 36: ``Queue.get`` of ``textual._queue`` and
+   the node's ``MessagePump._message_queue``, two names for what this one does.)
+   Why no public way: ``message_queue_size`` says what is queued, not whether a handler is
+   under way, and ``MessagePump.is_running`` is true for the node's whole life.
 5. :func:`callbacks_before_layouts`: ``Screen._on_idle`` replaced, calling
    ``Screen._invoke_and_clear_callbacks`` at once. What waits for the screen's refresh
    (``call_after_refresh``) runs when the screen is next idle, on the layout it has; a
    widget asks for the next layout only when it is itself next idle, so on a busy machine
-   the screen may run them between two layouts. No public API orders the two; this makes
-   the screen run them before every layout still to come, the worst order.
+   the screen may run them between two layouts. This makes the screen run them before
+   every layout still to come, the worst order.
+   Why no public way: ``call_after_refresh`` and ``refresh(layout=True)`` say what to do,
+   not in which order the screen does the two.
 6. :func:`parse_stylesheets_once`: ``Stylesheet._parse_rules`` wrapped with a cache for the
    process, keyed by its arguments and the Stylesheet's ``_variables``. Textual caches the
    parse per Stylesheet only, and a test process starts hundreds of apps, each parsing the
-   same CSS again; no public API shares parsed CSS between apps.
+   same CSS again.
+   Why no public way: nothing shares parsed CSS between apps; the variables a Stylesheet
+   parses with have a setter (``set_variables``) and no getter, and the public
+   ``App.get_css_variables()`` is the app's theme now, not what a given Stylesheet holds.
 
 Done with public API here: the running app is ``MessagePump.app`` of a node attached to no
 app (not ``textual._context.active_app``); the still cursor is each Input's
@@ -61,7 +76,6 @@ from collections.abc import Awaitable, Callable
 from typing import Any
 
 import pytest
-import textual._queue
 import textual.app
 import textual.pilot
 from textual.app import App
@@ -104,37 +118,38 @@ class _Countdown:
 
 
 _WAITING = "_minseg_tests_waiting"
-"""The attribute :func:`mark_idle_nodes` sets on a node's queue while its loop waits in it."""
+"""The attribute :func:`mark_idle_nodes` sets on a node while its loop waits for a message."""
 
-_queue_get = textual._queue.Queue.get
+_get_message = MessagePump._get_message
 
 
-async def _marked_get(self: Any) -> Any:
-    """``Queue.get``, with the queue marked as waited in until it returns."""
+async def _marked_get_message(self: MessagePump) -> Any:
+    """``MessagePump._get_message``, with the node marked as waiting until it returns. Its
+    loop waits there, in its queue, for the next message; it returns at once, with nothing
+    awaited, a message it had already taken off the queue to look at."""
     setattr(self, _WAITING, True)
     try:
-        return await _queue_get(self)
+        return await _get_message(self)
     finally:
         setattr(self, _WAITING, False)
 
 
 def mark_idle_nodes(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every node's queue says while the node's message loop waits in it (:func:`idle`)."""
-    monkeypatch.setattr(textual._queue.Queue, "get", _marked_get)
+    """Every node says while its message loop waits for the next message (:func:`idle`)."""
+    monkeypatch.setattr(MessagePump, "_get_message", _marked_get_message)
 
 
 def idle(node: MessagePump) -> bool:
-    """The node has nothing queued and no handler under way: its message loop waits for the
-    next message (False until it first does so, after its Compose and Mount, and when
-    :func:`mark_idle_nodes` is not in force)."""
-    queue = node._message_queue
-    return not queue.qsize() and getattr(queue, _WAITING, False)
+    """The node has nothing queued (Textual's public ``message_queue_size``) and no handler
+    under way: its message loop waits for the next message (False until it first does so,
+    after its Compose and Mount, and when :func:`mark_idle_nodes` is not in force)."""
+    return not node.message_queue_size and getattr(node, _WAITING, False)
 
 
 def marking_idle_nodes() -> bool:
     """:func:`mark_idle_nodes` is in force (a test's fixtures; not in a process a test
     starts, which waits as Pilot does)."""
-    return textual._queue.Queue.get is _marked_get
+    return MessagePump._get_message is _marked_get_message
 
 
 def all_idle(app: App[object]) -> bool:

@@ -1,7 +1,8 @@
 """identify's words: the sentences of what the numbers of Tasks 6-15 show, made from the
-model's records (:mod:`minseg_tui.model.identify.observations`), for the screens, the report,
-the session's notices and ``minseg-tui identify`` alike (issue 19 item 4: the model gives
-records, the words are written once, here).
+model's records (:mod:`minseg_tui.model.identify.observations`), and its refusals of a table,
+R or a log (:mod:`minseg_tui.model.identify.refusals`), for the screens, the report, the
+session's notices, the table's reader and ``minseg-tui identify`` alike (issue 19 item 4: the
+model gives records, the words are written once, here).
 
 It sits in lab/content/, the lowest of lab/'s folders, because the session's notices
 (lab/state) quote it as the views, the report and the CLI do.
@@ -10,9 +11,12 @@ It sits in lab/content/, the lowest of lab/'s folders, because the session's not
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from functools import singledispatch
+from types import MappingProxyType
+from typing import Final
 
+from minseg_tui.errors import InputError
 from minseg_tui.model.identify.identification import (
     Identification,
     ResponseResult,
@@ -53,6 +57,19 @@ from minseg_tui.model.identify.observations import (
     USsExtrapolated,
     USsFromLog,
     USsInterpolated,
+)
+from minseg_tui.model.identify.refusals import (
+    IdentifyRefusal,
+    IdentifyRefused,
+    Measured,
+    MedianKvNotPositive,
+    NoRisingEdge,
+    NoRows,
+    RiseNotFitted,
+    RNotPositive,
+    RowImplausible,
+    RowNotANumber,
+    RowNotPositive,
 )
 from minseg_tui.model.identify.risefit import RISE_SPAN, RisesWhy, TimeConstantFit, WholeLogWhy
 from minseg_tui.quantities import (
@@ -844,3 +861,51 @@ def check_T_beside(
         f"T = {format_constant(st.T, 's')} ({format_diff(st.T / T_check - 1.0)} against "
         f"this T).{nearer}"
     )
+
+
+_ABOVE_0: Final[Mapping[Measured, str]] = MappingProxyType(
+    {
+        "omega_ss": "rad/s (a zero speed gives no k_v or f)",
+        "u_ss": "V (the voltage measured on the motor)",
+        "i_ss": "mA (the current measured in Task 5)",
+    }
+)
+"""Each reading a row needs above 0: its unit, and why."""
+
+
+def identify_refusal_words(why: IdentifyRefusal) -> str:
+    """Why identify refuses a table, R or a run log (:mod:`minseg_tui.model.identify.
+    refusals`), as the 'expected ...' part of an InputError: "expected omega_ss > 0 rad/s
+    (a zero speed gives no k_v or f), got 0"."""
+    match why:
+        case RowNotANumber(column, value):
+            return f"expected a number for {column}, got {value}"
+        case RowNotPositive(column, value):
+            return f"expected {column} > 0 {_ABOVE_0[column]}, got {value:g}"
+        case RNotPositive(R):
+            return f"expected a positive resistance in ohm, got {R:g}"
+        case NoRows():
+            return "expected at least one row u_req,u_ss,omega_ss,i_ss"
+        case RowImplausible(R_i_ss, omega_ss, k_v, f):
+            return (
+                f"expected readings of a plausible size (R i_ss = {R_i_ss:g} V, "
+                f"omega_ss = {omega_ss:g} rad/s), they give k_v = {k_v:g} and f = {f:g}"
+            )
+        case MedianKvNotPositive(k_v):
+            return (
+                f"expected the rows to give a positive k_v (V s/rad), their median is "
+                f"{k_v:.3g}: u_ss - R i_ss is not above 0 on enough rows; check R and i_ss (mA)"
+            )
+        case NoRisingEdge(column, after, rising):
+            return (
+                f"expected a rising edge in {column} (V) with at least one sample before it "
+                f"and {after} after it; found {rising} rising edge(s), none usable"
+            )
+        case RiseNotFitted():
+            return "expected a usable rising edge"
+
+
+def identify_refusal(refused: IdentifyRefused) -> InputError:
+    """identify's refusal as the one-line InputError the CLI, the session and the report
+    show: where, and why."""
+    return InputError(refused.source, refused.line, identify_refusal_words(refused.why))

@@ -27,6 +27,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.content.identify_says import identify_refusal_words
 from minseg_tui.lab.content.log_says import header_words, refusal_words
 from minseg_tui.lab.saving.csvread import CsvColumns, read_csv
 from minseg_tui.model.identify import Reading
@@ -194,7 +195,7 @@ def read_table(path: str | Path) -> list[Reading]:
         )
         problem = r.problem()
         if problem:
-            raise InputError(f.source, number, problem)
+            raise InputError(f.source, number, identify_refusal_words(problem))
         if not r.u_req > 0:  # the other values are > 0: a wheel turning forwards
             raise InputError(
                 f.source,

@@ -25,6 +25,7 @@ from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import (
     U_TASK15,
     Identification,
+    IdentifyRefused,
     Reading,
     ResponseResult,
     ZeroVoltRefusal,
@@ -248,13 +249,14 @@ def check_figures(mc: ModelCheck) -> CheckFigures:
 def _why_no_step(exc: Exception) -> str:
     """Why a run gives no step result, in one line: identify's refusal as it says it (a
     rise at 0 V on the motor worded by lab/content/u_ss_says.py, a log it cannot take by
-    lab/content/log_says.py), or the fit's failure."""
+    lab/content/log_says.py, a table, R or log without a usable rise by lab/content/
+    identify_says.py), or the fit's failure."""
+    if isinstance(exc, IdentifyRefused):
+        return str(identify_says.identify_refusal(exc))
     if isinstance(exc, ZeroVoltRefusal):
         return str(zero_volt_refusal(exc))
     if isinstance(exc, LogRefused):
         return str(log_refusal(exc))
-    if isinstance(exc, InputError):
-        return str(exc)
     return f"its steps cannot be fitted ({exc})"
 
 
@@ -279,9 +281,11 @@ def compute(
         problems.append("R is not entered yet (Task 2)")
     readings = []
     for r in complete_rows:
-        why = r.problem()
-        if why:
-            problems.append(f"row {r.u_req:g} V left out: {why}")
+        wrong = r.problem()
+        if wrong:
+            problems.append(
+                f"row {r.u_req:g} V left out: {identify_says.identify_refusal_words(wrong)}"
+            )
         else:
             readings.append(r)
     if not readings:
@@ -307,7 +311,7 @@ def compute(
             return Results(None, name, tuple(problems), table_problems=table_problems)
         try:
             alone = response_alone(log, pairs)
-        except (InputError, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
+        except (IdentifyRefused, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
             why = _why_no_step(exc)
             problems.append(f"run {run.name if run else ''} gives no step result: {why}")
             return Results(None, name, tuple(problems), table_problems=table_problems)
@@ -317,7 +321,7 @@ def compute(
         return run_alone()
     try:
         ident = identify(readings, R, log, source="table", u_ss_table=u_ss_table)
-    except (InputError, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
+    except (IdentifyRefused, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError) as exc:
         # ArithmeticError, ValueError (numpy's LinAlgError): a log the fit cannot take; the
         # table's results stand, and the step says why it has none (never a traceback)
         why = _why_no_step(exc)
@@ -325,9 +329,10 @@ def compute(
             return Results(None, None, (*problems, why), table_problems=(*table_problems, why))
         try:
             ident = identify(readings, R, None, source="table")
-        except InputError as exc2:  # the table's fault, not the run's
-            problems.append(str(exc2))
-            table_problems = (*table_problems, str(exc2))
+        except IdentifyRefused as exc2:  # the table's fault, not the run's
+            said = str(identify_says.identify_refusal(exc2))
+            problems.append(said)
+            table_problems = (*table_problems, said)
             return run_alone()
         problems.append(f"run {run.name if run else ''} gives no step result: {why}")
         return Results(ident, None, tuple(problems), table_problems=table_problems)

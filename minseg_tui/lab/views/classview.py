@@ -45,7 +45,7 @@ from minseg_tui.lab.views import own_first
 from minseg_tui.lab.views import session as session_views
 from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.lab.views.own_first import OwnRow
-from minseg_tui.model.identify import ZeroVoltRefusal, response_alone
+from minseg_tui.model.identify import IdentifyRefused, ZeroVoltRefusal, response_alone
 from minseg_tui.model.runlog import LogRefused
 from minseg_tui.quantities import (
     F_UNIT,
@@ -381,6 +381,10 @@ def members(g: Group) -> str:
     return ", ".join(g.members) or ("(cannot be read)" if not g.readable else "(no names)")
 
 
+OWN_VS_COMPUTED: str = "own vs computed"
+"""The name of the column of :func:`own_cell`, in the class's text, its report and its CSV."""
+
+
 def own_cell(g: Group) -> str:
     """The group's own values against the computed ones, in one cell: "T +12 %", and a
     value the lab judged wrong with its mark: "J +39 % ✗" (walk 14, D4: the group's screen
@@ -398,6 +402,14 @@ def any_wrong(view: ClassView) -> bool:
     """Whether some group's own value is judged wrong (marked in the own vs computed column):
     then "Nothing stands out." is not said, though nothing is marked '!'."""
     return any(o.right is False for g in view.groups for o in g.own)
+
+
+def nothing_marked(view: ClassView) -> str:
+    """What the class's text and its report say under the groups when none is marked '!':
+    "Nothing marked '!'." while a group has a note or an own value judged wrong (each is
+    shown), else "Nothing stands out."."""
+    shown = any(g.notes for g in view.groups) or any_wrong(view)
+    return "Nothing marked '!'." if shown else "Nothing stands out."
 
 
 def _quantity(key: str) -> Quantity:
@@ -537,7 +549,7 @@ def _response_alone(session: Session) -> dict[str, float | None]:
         return {}
     try:
         st = response_alone(read_run(session.folder, run, pairs, require_step=True), pairs)
-    except (InputError, LogRefused, ZeroVoltRefusal):
+    except (InputError, IdentifyRefused, LogRefused, ZeroVoltRefusal):
         return {}
     return {"K": st.K, "T_63": st.T_63, "T": st.T}
 
@@ -752,6 +764,7 @@ __all__ = [
     "JUDGED",
     "MARKED",
     "NOT_MARKED",
+    "OWN_VS_COMPUTED",
     "QUANTITIES",
     "THRESHOLD",
     "ClassView",
@@ -764,6 +777,7 @@ __all__ = [
     "judge",
     "marked_summary",
     "members",
+    "nothing_marked",
     "outlier",
     "own_cell",
     "read_group",

@@ -14,6 +14,7 @@ The package, one module per room:
   the intervals of :mod:`.lsq` (they hold with correlated residuals; Student's t);
 - :mod:`.observations`: what the numbers show, as typed records (their sentences are
   :mod:`minseg_tui.lab.content.identify_says`'s);
+- :mod:`.refusals`: why identify refuses a table, R or a log, as records (worded there too);
 - :mod:`.identification`: Tasks 6-15 put together (K, T, J, the model of Task 14, omega at
   5 V) and the ``--json`` object.
 
@@ -35,6 +36,7 @@ from minseg_tui.model.identify.observations import (
     response_observations,
     table_observations,
 )
+from minseg_tui.model.identify.refusals import IdentifyRefusal, IdentifyRefused
 from minseg_tui.model.identify.risefit import (
     RISES,
     WHOLE_LOG,
@@ -65,6 +67,8 @@ __all__ = [
     "U_TASK15",
     "Observation",
     "Identification",
+    "IdentifyRefusal",
+    "IdentifyRefused",
     "Reading",
     "Rise",
     "Row",

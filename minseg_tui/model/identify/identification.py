@@ -17,7 +17,6 @@ from enum import Enum
 
 import numpy as np
 
-from minseg_tui.errors import InputError
 from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.observations import (
     FRICTION_APART,
@@ -28,6 +27,7 @@ from minseg_tui.model.identify.observations import (
     response_observations,
     table_observations,
 )
+from minseg_tui.model.identify.refusals import IdentifyRefused, NoRisingEdge, RiseNotFitted
 from minseg_tui.model.identify.risefit import (
     Rise,
     TimeConstantFit,
@@ -36,7 +36,7 @@ from minseg_tui.model.identify.risefit import (
     model_reading_63,
     rises,
 )
-from minseg_tui.model.identify.rises import rise_windows
+from minseg_tui.model.identify.rises import MIN_AFTER, rise_windows
 from minseg_tui.model.identify.steady import (
     U_SS_HOW,
     Reading,
@@ -227,14 +227,8 @@ def _response_result(
     windows, skipped = rise_windows(log)
     if not windows:
         cmd, name = command(log)
-        raise InputError(
-            log.source,
-            log.line_of(0),
-            (
-                f"expected a rising edge in {name} (V) with at least one sample before it and 5 after it; "
-                f"found {sum(e.rising for e in find_edges(cmd))} rising edge(s), none usable"
-            ),
-        )
+        rising = sum(e.rising for e in find_edges(cmd))
+        raise IdentifyRefused(log.source, log.line_of(0), NoRisingEdge(name, MIN_AFTER, rising))
     refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
     if refused:
         raise LogRefused(log.source, None, refused)
@@ -247,7 +241,7 @@ def _response_result(
         raise LogRefused(log.source, None, StillAngle(angle_source))
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
-        raise InputError(log.source, None, "expected a usable rising edge")
+        raise IdentifyRefused(log.source, None, RiseNotFitted())
     # the rise and every row disagree because the speed creeps on after the rise: T, K, J and
     # the model follow the rise, and every row's T is the other reading (issue 17)
     every: TimeConstantFit | None = None
@@ -342,8 +336,8 @@ def _response_result(
 def response_alone(log: RunLog, u_ss_table: Sequence[tuple[float, float]]) -> ResponseResult:
     """Tasks 11-12 from the run log and the table's ``(u_req, u_ss)`` pairs (V) alone: K,
     T and the 63 % reading, which need neither R nor i_ss. J (Task 13) needs R, k_v and f:
-    it is NaN here. Raises InputError, LogRefused and ZeroVoltRefusal as :func:`identify`
-    does for the log."""
+    it is NaN here. Raises IdentifyRefused, LogRefused and ZeroVoltRefusal as
+    :func:`identify` does for the log."""
     return response_observed(log, u_ss_table)[0]
 
 
@@ -502,9 +496,10 @@ def identify(
 
     ``u_ss_table``: the ``(u_req, u_ss)`` pairs (V) of every table row that has a u_ss,
     complete or not, which K divides by (:func:`~.steady.u_ss_at`); default: the readings'.
-    Raises InputError for a bad R, a bad row, or a log without a usable rise,
-    :class:`~minseg_tui.model.runlog.LogRefused` for a log no analysis takes or a wheel that
-    never turns, and :class:`ZeroVoltRefusal` for a rise that ends at 0 V on the motor.
+    Raises :class:`~.refusals.IdentifyRefused` for a bad R, a bad row, or a log without a
+    usable rise, :class:`~minseg_tui.model.runlog.LogRefused` for a log no analysis takes or
+    a wheel that never turns, and :class:`ZeroVoltRefusal` for a rise that ends at 0 V on the
+    motor.
     """
     rows, k_v, k_a, f = steady_state(readings, R, source)
     step: ResponseResult | None = None

@@ -17,7 +17,18 @@ from typing import Literal, get_args
 
 import numpy as np
 
-from minseg_tui.errors import InputError
+from minseg_tui.model.identify.refusals import (
+    IdentifyRefused,
+    Measured,
+    MedianKvNotPositive,
+    NoRows,
+    RNotPositive,
+    RowImplausible,
+    RowNotANumber,
+    RowNotPositive,
+    RowProblem,
+    TableColumn,
+)
 from minseg_tui.units import KA_OVER_KV
 
 
@@ -34,9 +45,10 @@ class Reading:
     i_ss: float
     line: int | None = None
 
-    def problem(self) -> str | None:
-        """What is wrong with this row for Tasks 6-9, as an 'expected ...' sentence, or None."""
-        values = {
+    def problem(self) -> RowProblem | None:
+        """What is wrong with this row for Tasks 6-9, as a record (worded by lab/content/
+        identify_says.py), or None."""
+        values: dict[TableColumn, float] = {
             "u_req": self.u_req,
             "u_ss": self.u_ss,
             "omega_ss": self.omega_ss,
@@ -44,13 +56,11 @@ class Reading:
         }
         for name, v in values.items():
             if not math.isfinite(v):
-                return f"expected a number for {name}, got {v}"
-        if self.omega_ss <= 0:
-            return f"expected omega_ss > 0 rad/s (a zero speed gives no k_v or f), got {self.omega_ss:g}"
-        if self.u_ss <= 0:
-            return f"expected u_ss > 0 V (the voltage measured on the motor), got {self.u_ss:g}"
-        if self.i_ss <= 0:
-            return f"expected i_ss > 0 mA (the current measured in Task 5), got {self.i_ss:g}"
+                return RowNotANumber(name, v)
+        measured: tuple[Measured, ...] = ("omega_ss", "u_ss", "i_ss")
+        for name in measured:
+            if values[name] <= 0:
+                return RowNotPositive(name, values[name])
         return None
 
 
@@ -65,20 +75,24 @@ class Row:
 
 def _check_R(R: float) -> None:
     if not (math.isfinite(R) and R > 0):
-        raise InputError("--R", None, f"expected a positive resistance in ohm, got {R:g}")
+        raise IdentifyRefused("--R", None, RNotPositive(R))
 
 
 def steady_state(
     readings: Sequence[Reading], R: float, source: str = "table"
 ) -> tuple[tuple[Row, ...], float, float, float]:
-    """Tasks 6-9: the rows with k_v and f, and the final (median) k_v, k_a = 0.65 k_v and f."""
+    """Tasks 6-9: the rows with k_v and f, and the final (median) k_v, k_a = 0.65 k_v and f.
+
+    Raises :class:`~minseg_tui.model.identify.refusals.IdentifyRefused` for an R that is not
+    positive, no rows, a row with a :meth:`Reading.problem`, readings that give no finite
+    k_v or f, and a median k_v not above 0."""
     _check_R(R)
     if not readings:
-        raise InputError(source, None, "expected at least one row u_req,u_ss,omega_ss,i_ss")
+        raise IdentifyRefused(source, None, NoRows())
     for r in readings:
         problem = r.problem()
         if problem:
-            raise InputError(source, r.line, problem)
+            raise IdentifyRefused(source, r.line, problem)
     k_v_rows = [(r.u_ss - R * r.i_ss * 1e-3) / r.omega_ss for r in readings]
     k_v = float(np.median(k_v_rows))
     k_a = KA_OVER_KV * k_v
@@ -89,21 +103,10 @@ def steady_state(
     for row in rows:
         if not (math.isfinite(row.k_v) and math.isfinite(row.f)):
             r = row.reading
-            raise InputError(
-                source,
-                r.line,
-                (
-                    f"expected readings of a plausible size (R i_ss = {R * r.i_ss * 1e-3:g} V, "
-                    f"omega_ss = {r.omega_ss:g} rad/s), they give k_v = {row.k_v:g} and f = {row.f:g}"
-                ),
-            )
+            implausible = RowImplausible(R * r.i_ss * 1e-3, r.omega_ss, row.k_v, row.f)
+            raise IdentifyRefused(source, r.line, implausible)
     if not k_v > 0:  # no motor has it: every figure from here on would be false
-        raise InputError(
-            source,
-            None,
-            f"expected the rows to give a positive k_v (V s/rad), their median is {k_v:.3g}: "
-            "u_ss - R i_ss is not above 0 on enough rows; check R and i_ss (mA)",
-        )
+        raise IdentifyRefused(source, None, MedianKvNotPositive(k_v))
     f = float(np.median([row.f for row in rows]))
     return rows, k_v, k_a, f
 

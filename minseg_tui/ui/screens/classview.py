@@ -164,9 +164,13 @@ class ClassScreen(Screen[None]):
         self.writer = writer
         """Writes the class's report (F8); None: this program was started without it."""
         self.groups: list[Group] = []
-        self.done = False
         self.view: ClassView | None = None
         """The class judged, once every group is read (what F8 writes)."""
+
+    @property
+    def done(self) -> bool:
+        """Every group is read and the class judged: :attr:`view` is set."""
+        return self.view is not None
 
     def compose(self) -> ComposeResult:
         yield Static(Text(f"{TITLE} of {self.root} — reading the sessions…"), id="class-title")
@@ -229,7 +233,6 @@ class ClassScreen(Screen[None]):
         if event.view is None:
             title.update(Text(f"{TITLE}: {event.error}"))
             return
-        self.done = True
         self.view = event.view
         self.groups = list(event.view.groups)
         self._fill()
