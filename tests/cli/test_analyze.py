@@ -404,3 +404,61 @@ def test_micromouse_says_which_T_and_why_identify_differs(capsys):
         "This T fits every row too, and without identify's dead time, so it comes out longer "
         "than the rise's as well."
     )
+
+
+def _both(tmp_path, capsys, log: RunLog):
+    """analyze's --json object and the line under the first-order fit in its text."""
+    path = tmp_path / "log.csv"
+    write_run_log(path, log, {"ts": "0.005"})
+    assert main(["analyze", str(path), "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert main(["analyze", str(path)]) == 0
+    return path, d, _beside_T(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_json_sets_identify_s_T_beside_the_check_s_as_the_text_does(tmp_path, capsys, seed):
+    """The text's line that sets identify's T beside the check's own was missing from --json
+    (s35-ident left it out): a script reading --json got the check's T alone. It is
+    ``T_beside``, typed (s, rad/s), with the same sentence the text prints."""
+    path, d, line = _both(tmp_path, capsys, creep_log(seed))
+    st, observations = response_observed(read_run_log(path), [])
+    b = d["T_beside"]
+    assert b["check_T"] == d["baseline"]["params"]["T"]
+    assert b["words"] == line.strip()
+    i = b["identify"]
+    assert i["T"] == st.T and i["T_ci"] == [st.T_ci[0], st.T_ci[1]]
+    assert i["T_determined"] is st.T_determined
+    assert i["dead_time"] == st.dead_time
+    assert i["rows"] == "up_to_4T_after_each_edge"
+    assert i["every_row_T"] == st.fit.every_row_T and i["rise_T"] == st.fit.rise_T
+    apart = next(o for o in observations if o.code == "T_rows_apart")
+    assert i["follows_rise"] is True and i["creep"] == list(apart.creep)
+    assert i["T_over_check_T"] == pytest.approx(st.T / b["check_T"], rel=1e-12)
+    # the creep's figures the sentence quotes are those of the JSON
+    assert f"from {i['creep'][0]:.1f} to {i['creep'][1]:.1f} rad/s" in line
+
+
+def test_json_without_a_creep_sets_the_same_two_T(tmp_path, capsys):
+    path, d, line = _both(tmp_path, capsys, creep_log(0, share=0.0))
+    st, _ = response_observed(read_run_log(path), [])
+    b = d["T_beside"]
+    assert b["words"] == line.strip()
+    i = b["identify"]
+    assert i["T"] == st.T and i["creep"] is None and i["follows_rise"] is False
+    assert i["rows"] == "all_rows_it_uses"
+    assert f"({format_diff(i['T_over_check_T'] - 1)} against this T)" in line
+
+
+@pytest.mark.shared_data
+def test_json_on_micromouse_gives_both_T(capsys):
+    path = SHARED_DATA / "real-motors" / "micromouse-n20-duty100" / "step.csv"
+    assert main(["analyze", str(path), "--json"]) == 0
+    b = json.loads(capsys.readouterr().out)["T_beside"]
+    assert format_constant(b["check_T"], "s") == "161.5 ms"
+    i = b["identify"]
+    assert format_constant(i["T"], "s") == "107.3 ms"
+    assert format_constant(i["dead_time"], "s") == "30.21 ms"
+    assert format_constant(i["every_row_T"], "s") == "152.6 ms"
+    assert [round(v, 1) for v in i["creep"]] == [39.0, 41.4]
+    assert "with a dead time of 30.21 ms, and gives T = 107.3 ms, the rise's" in b["words"]
