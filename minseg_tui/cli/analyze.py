@@ -27,7 +27,7 @@ from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import ResponseResult, ZeroVoltRefusal, response_observed
 from minseg_tui.model.identify.observations import Observation, TRowsApart
-from minseg_tui.model.runlog import RunLog, problem
+from minseg_tui.model.runlog import LogRefused, RunLog, problem
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -139,7 +139,7 @@ def identify_beside(r: CheckResult, log: RunLog) -> Beside | None:
         return None
     try:
         st, observations = response_observed(log, [])
-    except (InputError, ZeroVoltRefusal, ArithmeticError, ValueError):
+    except (InputError, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError):
         st, observations = None, []  # identify refuses this log and says why itself
     e = r.extended
     T_ext = e.params.get("T") if e.model != r.baseline.model else None

@@ -12,9 +12,12 @@ import pytest
 from minseg_tui.cli import main
 from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.model.identify import response_observed
-from minseg_tui.model.runlog import RunLog
+from minseg_tui.model.motor import PUBLISHED
+from minseg_tui.model.plant import PlantParams, record, square_wave
+from minseg_tui.model.runlog import LogRefused, RunLog
 from minseg_tui.model.synth import make_log
 from minseg_tui.quantities import format_constant, format_diff
+from minseg_tui.signals import timestamp_velocity
 from tests.model.test_identify_rise import creep_log
 from tests.shared_data import SHARED_DATA
 
@@ -406,10 +409,10 @@ def test_micromouse_says_which_T_and_why_identify_differs(capsys):
     )
 
 
-def _both(tmp_path, capsys, log: RunLog):
+def _both(tmp_path, capsys, log: RunLog, ts: str = "0.005"):
     """analyze's --json object and the line under the first-order fit in its text."""
     path = tmp_path / "log.csv"
-    write_run_log(path, log, {"ts": "0.005"})
+    write_run_log(path, log, {"ts": ts})
     assert main(["analyze", str(path), "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
     assert main(["analyze", str(path)]) == 0
@@ -462,3 +465,35 @@ def test_json_on_micromouse_gives_both_T(capsys):
     assert format_constant(i["every_row_T"], "s") == "152.6 ms"
     assert [round(v, 1) for v in i["creep"]] == [39.0, 41.4]
     assert "with a dead time of 30.21 ms, and gives T = 107.3 ms, the rise's" in b["words"]
+
+
+def test_a_log_identify_refuses_keeps_the_check_s_own_T(tmp_path, capsys):
+    """A count column that never changes beside a speed that does: the model check fits the
+    speed, identify refuses the log (its angle never changes, a LogRefused record since
+    s35-words). analyze stopped with a traceback, in the text and in --json, where identify's
+    T was to be set beside the check's; now the line says the check's T alone, and
+    ``T_beside.identify`` is null."""
+    rec = record(
+        PlantParams(motor=PUBLISHED, tau_c=0.0, v_drop=0.45),
+        square_wave(0.0, 4.0, 40, 3, lead=20),
+        seed=7,
+        jitter_us=2000,
+    )
+    log = RunLog(
+        t=rec.t,
+        u=rec.u_A,
+        omega=timestamp_velocity(rec.t, rec.count),
+        extra={"u_req": rec.u_req, "count": rec.count * 0},
+    )
+    with pytest.raises(LogRefused):
+        response_observed(log, [])
+    path, d, line = _both(tmp_path, capsys, log, ts="0.025")
+    assert line == (
+        "  This T is the model check's own: the first-order model simulated on the measured "
+        "input and fitted to the speed of those rows."
+    )
+    assert d["T_beside"] == {
+        "check_T": d["baseline"]["params"]["T"],
+        "words": line.strip(),
+        "identify": None,
+    }
