@@ -18,6 +18,13 @@ step (minseg_tui.model.identify.lsq.cluster_covariance): the rounding the interp
 is not in it. Printed for each case, without and with a ``# cpr: 360`` line (which puts the
 counts' rounding in the interval since stop 35): how often the interval holds T, T's median
 and rms error, and the median half width of the interval (% of T).
+
+With ``--grid`` (stop 36): whether the count could be read off the log itself instead, on the
+same logs without the line and on the two real ones: how often the count finder of
+minseg_tui.model.identify.counts finds a grid, and two readings of the angle's steps that
+look for the count, each against the true 1 degree: the smallest step between rows (where
+the wheel moves, beyond the written digits) and the largest step in 0.05-5 degrees whose
+whole multiples every such step lies within 10 % of (a tolerant gcd).
 """
 
 from __future__ import annotations
@@ -29,7 +36,9 @@ from pathlib import Path
 
 import numpy as np
 
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.model.identify import Reading, identify
+from minseg_tui.model.identify.counts import count_quantum, written_error
 from minseg_tui.model.runlog import RunLog
 
 DEGREE = math.radians(1.0)
@@ -68,11 +77,73 @@ def make(real: Path, case: str, seed: int, late: tuple[float, float], cpr: int |
     )
 
 
+def _tolerant_gcd(steps: np.ndarray, lo: float, hi: float, tol: float = 0.1) -> float | None:
+    """The largest q (rad) in [lo, hi] whose whole multiples every step (rad) lies within
+    ``tol`` q of, or None."""
+    for q in np.geomspace(hi, lo, 4000):
+        if bool(np.all(np.abs(steps / q - np.round(steps / q)) <= tol)):
+            return float(q)
+    return None
+
+
+def read_grid(theta: np.ndarray) -> tuple[float | None, float, float | None]:
+    """The count (rad) three ways from the angle values alone: the count finder's (None: no
+    grid), the smallest step between rows where the wheel moves (beyond what the written
+    digits allow) and the tolerant gcd of those steps (:func:`_tolerant_gcd`)."""
+    steps = np.diff(theta)
+    err = written_error(theta)
+    moving = np.abs(steps) > 4.0 * (err[1:] + err[:-1])
+    moved = np.abs(steps[moving])
+    smallest = float(np.min(moved)) if moved.size else math.nan
+    return (
+        count_quantum(theta, 720),
+        smallest,
+        _tolerant_gcd(moved, DEGREE / 20, DEGREE * 5),
+    )
+
+
+def grids(real: Path, seeds: int) -> None:
+    """--grid: can the count be read off an interpolated log itself?"""
+    print(f"the count read off the angle alone, {seeds} seeds per row; against the true 1 degree")
+    print(
+        f"{'log':18} {'start ms':>8} {'finder':>7} {'smallest step, deg: med (range)':>32} "
+        f"{'within 5 %':>10} {'gcd within 5 %':>14} {'gcd found':>9}"
+    )
+    for case in CASES:
+        for late in ((0.0, 0.001), (0.005, 0.007)):
+            found, small, gcd = [], [], []
+            for seed in range(5000, 5000 + seeds):
+                log = make(real, case, seed, late, None)
+                f, s, g = read_grid(np.asarray(log.extra["theta"], dtype=float))
+                found.append(f is not None)
+                small.append(s / DEGREE)
+                gcd.append(None if g is None else g / DEGREE)
+            sm = np.array(small)
+            print(
+                f"{case[10:]:18} {late[0] * 1e3:3g}-{late[1] * 1e3:<4g} {sum(found):3d}/{seeds:<3d} "
+                f"{np.median(sm):14.3f} ({sm.min():.3f}-{sm.max():.3f}) "
+                f"{int(np.sum(np.abs(sm - 1) < 0.05)):6d}/{seeds:<3d} "
+                f"{sum(g is not None and abs(g - 1) < 0.05 for g in gcd):10d}/{seeds:<3d} "
+                f"{sum(g is not None for g in gcd):5d}/{seeds:<3d}"
+            )
+    for case in CASES:
+        theta, _ = read_run_log(real / case / "step.csv").angle()
+        f, s, g = read_grid(np.asarray(theta, dtype=float))
+        print(
+            f"{case} (real): finder {'none' if f is None else f'{f / DEGREE:.4f} deg'}, "
+            f"smallest step {s / DEGREE:.4f} deg, gcd {'none' if g is None else f'{g / DEGREE:.4f} deg'}"
+        )
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=40)
     ap.add_argument("--real", type=Path, default=Path("../shared/data/real-motors"))
+    ap.add_argument("--grid", action="store_true", help="only: can the count be read off the log?")
     a = ap.parse_args()
+    if a.grid:
+        grids(a.real, a.seeds)
+        return
     print(f"{a.seeds} held-out seeds per row (5000-{4999 + a.seeds}); errors and widths in % of T")
     print(
         f"{'log':18} {'start ms':>8} {'# cpr':>6} {'held':>7} {'T med':>6} {'T rms':>6} "

@@ -1,4 +1,7 @@
-"""`minseg-tui identify TABLE.csv --R OHMS [--step LOG.csv] [--json]`: Tasks 6-15 headless."""
+"""`minseg-tui identify TABLE.csv --R OHMS [--step LOG.csv] [--json]`: Tasks 6-15 headless.
+
+--R is read as Task 2's entry reads R; a value outside its usual range is accepted, as there,
+with that entry's question as one note on stderr (above 20 Ω: a decimal comma lost?)."""
 
 from __future__ import annotations
 
@@ -23,7 +26,7 @@ from minseg_tui.lab.content.log_says import angle_words, log_refusal
 from minseg_tui.lab.content.steps import FIELDS
 from minseg_tui.lab.content.u_ss_says import u_ss_words, zero_volt_refusal
 from minseg_tui.lab.saving.files import read_run_log, read_table
-from minseg_tui.lab.state.entries import read_quantity
+from minseg_tui.lab.state.entries import read_entry, read_quantity
 from minseg_tui.model.identify import (
     U_TASK15,
     Identification,
@@ -47,19 +50,23 @@ from minseg_tui.quantities import (
 
 
 class Typed(NamedTuple):
-    """A reading given on the command line: its value (SI) and the text it was typed as."""
+    """A reading given on the command line: its value (SI), the text it was typed as and the
+    warnings its entry in the TUI would show (outside the usual range)."""
 
     value: float
     text: str
+    warnings: tuple[str, ...] = ()
 
 
 def _ohms(text: str) -> Typed:
     """--R read as Task 2's entry reads R in the TUI (the decimal comma, a unit, '5300 mΩ'),
-    refused with that entry's words."""
+    refused with that entry's words; its warnings are the entry's (above 20 Ω: a decimal
+    comma lost?)."""
     try:
-        return Typed(read_quantity(FIELDS["R"], text).value, text)
+        value = read_quantity(FIELDS["R"], text).value
     except EntryRefused as exc:
         raise argparse.ArgumentTypeError(exc.expected) from None
+    return Typed(value, text, read_entry(FIELDS["R"], text).warnings)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -107,6 +114,12 @@ def run(args: argparse.Namespace) -> int:
             None,
             f"expected a run log whose rises can be fitted; the fit failed ({exc})",
         ) from None
+    for warning in args.R.warnings:  # accepted, as the TUI accepts it, with its question
+        print(
+            f"minseg-tui identify: note: --R {args.R.text}: {warning}; computed with "
+            f"R = {format_reading(args.R.value, '', typed=args.R.text)} ohm",
+            file=sys.stderr,
+        )
     if args.json:
         print_json(as_json(result))
     else:

@@ -12,9 +12,12 @@ import pytest
 from minseg_tui.cli import main
 from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.model.identify import response_observed
-from minseg_tui.model.runlog import RunLog
+from minseg_tui.model.motor import PUBLISHED
+from minseg_tui.model.plant import PlantParams, record, square_wave
+from minseg_tui.model.runlog import LogRefused, RunLog
 from minseg_tui.model.synth import make_log
 from minseg_tui.quantities import format_constant, format_diff
+from minseg_tui.signals import timestamp_velocity
 from tests.model.test_identify_rise import creep_log
 from tests.shared_data import SHARED_DATA
 
@@ -423,3 +426,93 @@ def test_a_count_that_never_changes_leaves_identify_out_of_the_T_line(tmp_path, 
         "  This T is the model check's own: the first-order model simulated on the measured "
         "input and fitted to the speed of those rows."
     )
+
+
+def _both(tmp_path, capsys, log: RunLog, ts: str = "0.005"):
+    """analyze's --json object and the line under the first-order fit in its text."""
+    path = tmp_path / "log.csv"
+    write_run_log(path, log, {"ts": ts})
+    assert main(["analyze", str(path), "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert main(["analyze", str(path)]) == 0
+    return path, d, _beside_T(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_json_sets_identify_s_T_beside_the_check_s_as_the_text_does(tmp_path, capsys, seed):
+    """The text's line that sets identify's T beside the check's own was missing from --json
+    (s35-ident left it out): a script reading --json got the check's T alone. It is
+    ``T_beside``, typed (s, rad/s), with the same sentence the text prints."""
+    path, d, line = _both(tmp_path, capsys, creep_log(seed))
+    st, observations = response_observed(read_run_log(path), [])
+    b = d["T_beside"]
+    assert b["check_T"] == d["baseline"]["params"]["T"]
+    assert b["words"] == line.strip()
+    i = b["identify"]
+    assert i["T"] == st.T and i["T_ci"] == [st.T_ci[0], st.T_ci[1]]
+    assert i["T_determined"] is st.T_determined
+    assert i["dead_time"] == st.dead_time
+    assert i["rows"] == "up_to_4T_after_each_edge"
+    assert i["every_row_T"] == st.fit.every_row_T and i["rise_T"] == st.fit.rise_T
+    apart = next(o for o in observations if o.code == "T_rows_apart")
+    assert i["follows_rise"] is True and i["creep"] == list(apart.creep)
+    assert i["T_over_check_T"] == pytest.approx(st.T / b["check_T"], rel=1e-12)
+    # the creep's figures the sentence quotes are those of the JSON
+    assert f"from {i['creep'][0]:.1f} to {i['creep'][1]:.1f} rad/s" in line
+
+
+def test_json_without_a_creep_sets_the_same_two_T(tmp_path, capsys):
+    path, d, line = _both(tmp_path, capsys, creep_log(0, share=0.0))
+    st, _ = response_observed(read_run_log(path), [])
+    b = d["T_beside"]
+    assert b["words"] == line.strip()
+    i = b["identify"]
+    assert i["T"] == st.T and i["creep"] is None and i["follows_rise"] is False
+    assert i["rows"] == "all_rows_it_uses"
+    assert f"({format_diff(i['T_over_check_T'] - 1)} against this T)" in line
+
+
+@pytest.mark.shared_data
+def test_json_on_micromouse_gives_both_T(capsys):
+    path = SHARED_DATA / "real-motors" / "micromouse-n20-duty100" / "step.csv"
+    assert main(["analyze", str(path), "--json"]) == 0
+    b = json.loads(capsys.readouterr().out)["T_beside"]
+    assert format_constant(b["check_T"], "s") == "161.5 ms"
+    i = b["identify"]
+    assert format_constant(i["T"], "s") == "107.3 ms"
+    assert format_constant(i["dead_time"], "s") == "30.21 ms"
+    assert format_constant(i["every_row_T"], "s") == "152.6 ms"
+    assert [round(v, 1) for v in i["creep"]] == [39.0, 41.4]
+    assert "with a dead time of 30.21 ms, and gives T = 107.3 ms, the rise's" in b["words"]
+
+
+def test_a_log_identify_refuses_keeps_the_check_s_own_T(tmp_path, capsys):
+    """A count column that never changes beside a speed that does: the model check fits the
+    speed, identify refuses the log (its angle never changes, a LogRefused record since
+    s35-words). analyze stopped with a traceback, in the text and in --json, where identify's
+    T was to be set beside the check's; now the line says the check's T alone, and
+    ``T_beside.identify`` is null."""
+    rec = record(
+        PlantParams(motor=PUBLISHED, tau_c=0.0, v_drop=0.45),
+        square_wave(0.0, 4.0, 40, 3, lead=20),
+        seed=7,
+        jitter_us=2000,
+    )
+    log = RunLog(
+        t=rec.t,
+        u=rec.u_A,
+        omega=timestamp_velocity(rec.t, rec.count),
+        extra={"u_req": rec.u_req, "count": rec.count * 0},
+    )
+    with pytest.raises(LogRefused):
+        response_observed(log, [])
+    path, d, line = _both(tmp_path, capsys, log, ts="0.025")
+    assert line == (
+        "  This T is the model check's own: the first-order model simulated on the measured "
+        "input and fitted to the speed of those rows."
+    )
+    assert d["T_beside"] == {
+        "check_T": d["baseline"]["params"]["T"],
+        "words": line.strip(),
+        "identify": None,
+    }

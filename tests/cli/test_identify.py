@@ -16,7 +16,7 @@ from minseg_tui.lab.state.entries import read_entry
 from minseg_tui.model.motor import MotorParams
 from minseg_tui.model.plant import PlantParams, record, square_wave
 from minseg_tui.model.runlog import RunLog
-from minseg_tui.quantities import format_number
+from minseg_tui.quantities import format_number, format_reading
 from minseg_tui.signals import timestamp_velocity
 
 MOTOR = MotorParams(R=5.0, k_v=0.5, k_a=0.325, f=6e-4, J=1.3e-3)
@@ -270,3 +270,37 @@ def test_R_refused_with_the_tui_entrys_words(files, capsys, typed):
     assert err.count("\n") == 1 and "Traceback" not in err, err
     assert err.startswith("minseg-tui identify: argument --R: "), err
     assert tui.message.removeprefix("R: ") + " (see " in err, err
+
+
+@pytest.mark.parametrize("typed", ["53", "0,5", "25 ohm"])
+def test_R_outside_the_usual_range_gets_the_tui_s_question_on_stderr(files, capsys, typed):
+    """'--R 53' (5,3 typed without its comma) was taken with no word, while Task 2's entry
+    asks whether a decimal comma was lost. The CLI asks the same, in the entry's words, in
+    one line on stderr; the value stays accepted (exit 0), as in the TUI, and the output is
+    computed with it."""
+    tui = read_entry(FIELDS["R"], typed)
+    assert tui.ok and len(tui.warnings) == 1
+    for json_too in ([], ["--json"]):
+        assert main(["identify", str(files / "table.csv"), "--R", typed, *json_too]) == 0
+        got = capsys.readouterr()
+        assert got.err.count("\n") == 1, got.err
+        assert got.err == (
+            f"minseg-tui identify: note: --R {typed}: {tui.warnings[0]}; "
+            f"computed with R = {format_reading(tui.value, '', typed=typed)} ohm\n"
+        )
+    assert json.loads(got.out)["R"] == tui.value
+
+
+def test_R_in_the_usual_range_gets_no_note(files, capsys):
+    assert read_entry(FIELDS["R"], "5,3").warnings == ()
+    assert main(["identify", str(files / "table.csv"), "--R", "5,3"]) == 0
+    assert capsys.readouterr().err == ""
+
+
+def test_R_the_table_refuses_gets_the_refusal_alone(files, capsys):
+    """At 120 Ω the table's rows give no positive k_v: one line, the refusal (which says to
+    check R), exit 2; the note is not added to it."""
+    assert read_entry(FIELDS["R"], "120").warnings
+    assert main(["identify", str(files / "table.csv"), "--R", "120"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "check R" in err and "note" not in err, err

@@ -362,11 +362,17 @@ def _(o: DeadTime) -> str:
                 if o.onset is not None
                 else ""
             )
-            + ": over every row, the slow part long after the rise, which one time "
-            "constant does not follow, would hold a response without it early, "
-            "starting before the wheel moves. The model check (analyze) fits the "
-            "speed of every row, that slow part included, and can give a shorter "
-            "dead time."
+            + (
+                ": over every row, the slow part long after the rise, which one time "
+                "constant does not follow, would hold a response without it early, "
+                "starting before the wheel moves. The model check (analyze) fits the "
+                "speed of every row, that slow part included, and can give a shorter "
+                "dead time."
+                if o.creep
+                else ": over every row it does not fit clearly better than none, and the "
+                "fit starts it no earlier than the rise's rows allow. The model check "
+                "(analyze) fits the speed of every row and can give a shorter dead time."
+            )
             if o.from_rise
             else ""
         )

@@ -524,13 +524,17 @@ class LoggingStall(Observation):
 class DeadTime(Observation):
     """A dead time (s) in the model, more than the one sample period ``bound`` (s); with
     ``from_rise``, the rows of the rise alone show it (``onset``: where the speed first
-    shows, s after the steps, or None)."""
+    shows, s after the steps, or None); ``creep``: the speed creeps on after the rise
+    (:class:`TRowsApart`'s ``creep``), which holds the fit of every row early; without it,
+    the fit of every row takes no dead time only because it does not fit them clearly better
+    (a start between coarse counts: tests/model/identgen.py seed 2)."""
 
     code: ClassVar[str] = "dead_time"
     dead_time: float
     bound: float
     from_rise: bool
     onset: float | None
+    creep: bool
 
 
 class LateStart(Enum):
@@ -741,8 +745,17 @@ def fit_observations(
         gap = float(t[k] - t[k - 1])
         out.append(LoggingStall(_lines(log, [k]), gap, ts, fit.angle_mended))
     bound = fit.shift_bound
+    creep = None
+    if fit.rise_T is not None and fit.rise_ci is not None:
+        creep = creep_after_rise(
+            log.rows_from(glitches) if glitches else log, fit if every is None else every
+        )
     if fit.dead_time > 0:
-        out.append(DeadTime(fit.dead_time, bound, fit.dead_time_from_rise, fit.onset))
+        out.append(
+            DeadTime(
+                fit.dead_time, bound, fit.dead_time_from_rise, fit.onset, creep=creep is not None
+            )
+        )
     elif fit.shift_on_bound and fit.shift > 0:
         why = (
             LateStart.MOVED_EARLY
@@ -779,9 +792,6 @@ def fit_observations(
             )
         )
     if fit.rise_T is not None and fit.rise_ci is not None:
-        creep = creep_after_rise(
-            log.rows_from(glitches) if glitches else log, fit if every is None else every
-        )
         out.append(
             TRowsApart(
                 RISE_SPAN,

@@ -50,7 +50,9 @@ class WholeLogFit:
     u_c: dry friction's breakaway voltage (V, 0 when not in the model); friction: whether u_c
     was fitted; T_on_bound, d_on_bound: whether T or d ended on its bound; n_used: rows fitted; offsets: whether the angle got a free offset per stretch between edges;
     covariance: cluster-robust covariance of (K, T, d[, u_c]); residuals: angle residuals (rad)
-    at every row; predicted: the model's angle (rad) at every row.
+    at every row; predicted: the model's angle (rad) at every row; start_free: where d was
+    held on its lower bound as a choice (``start_held``), the covariance with d fitted there
+    too (what the start's trade against T adds), else None.
     """
 
     T: float
@@ -67,6 +69,7 @@ class WholeLogFit:
     covariance: Covariance
     residuals: FloatArray
     predicted: FloatArray
+    start_free: Covariance | None = None
 
     def level(self, u: float) -> float:
         """The steady speed (rad/s) the model gives at a constant applied voltage u (V)."""
@@ -307,6 +310,7 @@ def fit_whole_log(
     shift_starts: tuple[float, ...] = (),
     T_factors: tuple[float, ...] = T_FACTORS,
     quantum: float | None = None,
+    start_held: bool = False,
 ) -> WholeLogFit | None:
     """Fit the first-order model to the whole log.
 
@@ -355,6 +359,7 @@ def fit_whole_log(
     D = chosen.derivatives(best.x, best.coef)
     D[:, 0] /= T  # d/d ln T -> d/d T
     on_bound = (best.x[:2] <= lo + 1e-9) | (best.x[:2] >= hi - 1e-9)
+    D_free = D.copy()
     D[:, :2] = np.where(on_bound, 0.0, D[:, :2])  # a parameter held on its bound is not fitted
     col = chosen.demean(model.column(T, d, u_c))
     J = np.column_stack((col, D))  # (K, T, d[, u_c]), the offsets projected off
@@ -363,6 +368,10 @@ def fit_whole_log(
     predicted = th - chosen.every_residual(best.x, float(best.coef[0])) * sign
     counts = None if quantum is None else (np.where(w > 0, predicted, np.nan), quantum)
     cov = cluster_covariance(J, best.residuals, clusters, lag, counts)
+    start_free = None
+    if start_held and on_bound[1] and best.x[1] <= lo[1] + 1e-9 and not on_bound[0]:
+        J_free = np.column_stack((col, D_free))
+        start_free = cluster_covariance(J_free, best.residuals, clusters, lag, counts)
     return WholeLogFit(
         T=T,
         d=d,
@@ -378,4 +387,5 @@ def fit_whole_log(
         covariance=cov,
         residuals=best.residuals * sign,
         predicted=predicted,
+        start_free=start_free,
     )

@@ -36,7 +36,8 @@ _P = 4  # columns: a, w0, w1, c
 class WindowsFit:
     """T (s) and the time shift d (s) (each maybe on its bound) with their cluster-robust
     covariance (one cluster per step), each step's final speed w1 (rad/s) with its standard error, the residuals (rad) and
-    the model's angle (rad) at the rows used (``rows``, in window order)."""
+    the model's angle (rad) at the rows used (``rows``, in window order); ``start_free``: where
+    d was held on its lower bound as a choice, the covariance with d fitted there too."""
 
     T: float
     d: float
@@ -50,6 +51,7 @@ class WindowsFit:
     rows: NDArray[np.int64]
     residuals: FloatArray
     predicted: FloatArray
+    start_free: Covariance | None = None
 
 
 class _Problem:
@@ -153,6 +155,7 @@ def fit_windows(
     shift_starts: tuple[float, ...] = (0.0,),
     T_starts: tuple[float, ...] = (),
     quantum: float | None = None,
+    start_held: bool = False,
 ) -> WindowsFit:
     """Fit T and the time shift to the rises' windows: board times ``t`` (s), angle
     ``theta`` (rad) at every row, the usable ``windows``; ``ts``: sample period (s); shift:
@@ -160,7 +163,9 @@ def fit_windows(
     use (default: all); shift_starts: the shifts (s) the search may start from, each with T
     at ``T_starts`` (s; default: a grid from ts/20 to the longest step); quantum: the
     encoder's count (rad) when the angle is read in whole counts (None otherwise), for the
-    rounding's share of the covariance (:func:`.lsq.cluster_covariance`)."""
+    rounding's share of the covariance (:func:`.lsq.cluster_covariance`); start_held: the
+    shift's lower bound is a start the fit is held to, not a limit of the log (see
+    :func:`.wholelog.fit_whole_log`)."""
     prob = _Problem(np.asarray(t, float), np.asarray(theta, float), windows, keep)
     lo = np.array([math.log(T_range[0]), shift[0]])
     hi = np.array([math.log(T_range[1]), shift[1]])
@@ -177,11 +182,15 @@ def fit_windows(
     J = -prob.jacobian(sol.x, sol.coef)  # the derivatives with each step's own terms projected off
     J[:, 0] /= T
     on_bound = (sol.x <= lo + 1e-9) | (sol.x >= hi - 1e-9)
+    J_free = J
     J = np.where(on_bound, 0.0, J)  # a parameter held on its bound is not fitted
     lag = math.ceil(2.0 * T / ts)  # two time constants
     predicted = theta[prob.rows] - sol.residuals
     counts = None if quantum is None else (predicted, quantum)
     cov = cluster_covariance(J, sol.residuals, prob.starts, lag, counts)
+    start_free = None
+    if start_held and on_bound[1] and sol.x[1] <= lo[1] + 1e-9 and not on_bound[0]:
+        start_free = cluster_covariance(J_free, sol.residuals, prob.starts, lag, counts)
     coef = sol.coef.reshape(-1, _P)
     B = prob.basis(T, d)
     Ms, scale = prob.normal(B)
@@ -204,4 +213,5 @@ def fit_windows(
         rows=prob.rows,
         residuals=sol.residuals,
         predicted=predicted,
+        start_free=start_free,
     )
