@@ -7,13 +7,27 @@ from pathlib import Path
 
 from textual.widgets import DataTable, OptionList
 
+from minseg_tui.device.link import LinkEvent
 from minseg_tui.lab.state.session import Session
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
 from minseg_tui.ui.screens.start import StartScreen
+from minseg_tui.ui.widgets.prose import Prose
 from tests.classview.build import group
 from tests.ui.conftest import quiet_app
-from tests.ui.helpers import burst, settle, shown
+from tests.ui.fakes import QuietDevice, square_wave_stream
+from tests.ui.helpers import (
+    TABLE,
+    burst,
+    enter_all,
+    goto,
+    settle,
+    shown,
+    start,
+    start_run_on,
+    taken,
+)
 
 
 def _two_sessions(root: Path) -> None:
@@ -71,3 +85,45 @@ async def test_down_enter_in_one_burst_opens_the_group_the_cursor_went_to(tmp_pa
         assert app.session is not None
         with app.session as s:
             assert s.folder == second and s.readonly
+
+
+async def test_the_quit_question_of_a_run_that_ends_while_it_is_up_says_it_ended(quiet):
+    """D2: Task 10, F5, Ctrl+Q during the recording ("Run steps-1 is being recorded (…
+    samples so far). Quitting stops it before its plan ends."), and the run's plan ended
+    while the question was up: the run was kept complete, and the dialog still said it was
+    being recorded and offered to stop it. Now the question says the run has ended, what was
+    kept, and offers to keep working or quit; Quit quits, the run not marked as cut."""
+    dev = QuietDevice(seed=1)
+    app = quiet(dev)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        await goto(pilot, "task10")
+        seq = await start_run_on(pilot, dev)
+        dev.feed(square_wave_stream(seq, (seq + 1) * 25_000, 2.0))
+        await taken(pilot, seq + 80)
+        await pilot.press("ctrl+q")
+        await settle(pilot, lambda: isinstance(app.screen, QuitScreen))
+        asking = app.screen
+        assert isinstance(asking, QuitScreen) and asking.choices is RECORDING_CHOICES
+        recording = app.recording.name
+        dev.feed(square_wave_stream(seq + 80, (seq + 81) * 25_000, 10.0))
+        dev.feed_event(LinkEvent("square_wave_done", "square wave done", 0.0))
+        await taken(pilot, seq + 480)
+        await settle(pilot, lambda: app.recording is None)
+        assert app.screen is asking
+        words = str(asking.query_one("#problem", Prose).render()) + " ".join(
+            text for _, text in asking.choices
+        )
+        assert "being recorded" not in words and "Stop the run" not in words
+        assert "The run ended while this was asked" in words and recording in words
+        assert [key for key, _ in asking.choices] == ["keep", "quit_now"]
+        with app.session as s:
+            (run,) = [r for r in s.runs if r.name == recording]
+            assert not run.interrupted
+        folder = s.folder
+        await pilot.press("down", "enter")
+        await settle(pilot, lambda: not app.is_running)
+    kept = Session.open(folder, readonly=True)
+    (run,) = [r for r in kept.runs if r.name == recording]
+    assert not run.interrupted and run.samples >= 480
