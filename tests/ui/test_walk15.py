@@ -5,10 +5,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from textual.widgets import DataTable, OptionList
+from textual.widgets import DataTable, OptionList, ProgressBar
 
 from minseg_tui.device.link import LinkEvent
 from minseg_tui.lab.state.session import Session
+from minseg_tui.ui.panels.square_wave import SquareWavePanel
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
@@ -22,6 +23,7 @@ from tests.ui.helpers import (
     burst,
     enter_all,
     goto,
+    record_response_run,
     settle,
     shown,
     start,
@@ -127,3 +129,23 @@ async def test_the_quit_question_of_a_run_that_ends_while_it_is_up_says_it_ended
     kept = Session.open(folder, readonly=True)
     (run,) = [r for r in kept.runs if r.name == recording]
     assert not run.interrupted and run.samples >= 480
+
+
+async def test_task10_shows_no_progress_bar_at_0_percent_beside_a_run_recorded_before(quiet):
+    """D7: a session resumed with its step run recorded (steps-1, complete, in use): Task 10
+    showed its progress bar at '0%' under the runs' line, as if nothing had been recorded.
+    Now no bar shows until a run waits or records here; F5 brings it."""
+    dev = QuietDevice(seed=1)
+    app = quiet(dev)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_response_run(s)
+        await goto(pilot, "task10")
+        panel = app.screen.query_one(SquareWavePanel)
+        bar = panel.query_one(ProgressBar)
+        assert not bar.display and bar.region.height == 0
+        await start_run_on(pilot, dev)
+        await settle(pilot, lambda: bar.display)
+        await settle(pilot, lambda: bar.region.height > 0)
