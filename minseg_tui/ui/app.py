@@ -86,9 +86,11 @@ from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import (
     RECORDING_CHOICES,
+    RUN_ENDED_CHOICES,
     QuitScreen,
     SaveElsewhereScreen,
     recording_question,
+    run_ended_question,
 )
 from minseg_tui.ui.screens.start import StartScreen, split_names
 from minseg_tui.ui.shared import Shared
@@ -958,6 +960,12 @@ class LabApp(App[None]):
                 f", {info.dropped} lost on the link" if info.dropped else ""
             )
         self.notify(f"{said}: {kept}", title="Task 10")
+        asking = self.screen_stack[-1] if self.screen_stack else None  # none once quitting
+        if isinstance(asking, QuitScreen) and asking.choices is RECORDING_CHOICES:
+            # Ctrl+Q's question was about this run: it is no longer being recorded
+            asking.ask(
+                "The run has ended", run_ended_question(f"{said}; {kept}"), RUN_ENDED_CHOICES
+            )
         changed = ""
         if self.session is not None:
             with self.session as s:
@@ -1090,6 +1098,8 @@ class LabApp(App[None]):
     def _quit_answer(self, answer: str | None) -> None:
         if answer == "quit":
             self.exit()
+        elif answer == "quit_now":  # the run asked about has ended: quit as Ctrl+Q does
+            self._quit()
         elif answer == "move":
             self.action_save_elsewhere()
 

@@ -66,7 +66,11 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
             f"at {plans['fast'].ts * 1000:g} ms. {key_name('stop_motor')} stops.",
             classes="hint",
         )
-        yield ProgressBar(total=100, show_eta=False, id="run-progress")
+        # no bar until a run waits or records here: a bar at 0 % beside the run in use read
+        # as 'nothing recorded' on a resumed session (walk 15, D7)
+        bar = ProgressBar(total=100, show_eta=False, id="run-progress")
+        bar.display = False
+        yield bar
         yield Prose("", id="run-status")
         with Horizontal(classes="plots"):
             yield TracePlot("25 ms run", "t [s]", "omega [rad/s]", id="plot-slow")
@@ -98,7 +102,9 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
         self.call_later(self._progress, new)
 
     def _progress(self, p: RunProgress) -> None:
-        self.query_one(ProgressBar).update(progress=100 * p.fraction)
+        bar = self.query_one(ProgressBar)
+        bar.display = True
+        bar.update(progress=100 * p.fraction)
         self.query_one("#run-status", Prose).update(p.text)
         if self._refresh <= 0:
             self.draw_live()

@@ -20,7 +20,7 @@ from pathlib import Path
 
 from rich.cells import cell_len
 from rich.text import Text
-from textual import on, work
+from textual import events, on, work
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import VerticalScroll
@@ -35,7 +35,9 @@ from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
 from minseg_tui.quantities import MISSING, format_difference
 from minseg_tui.ui.screens.start import StartScreen
+from minseg_tui.ui.widgets.fields import after_typed_keys
 from minseg_tui.ui.widgets.footer import KeyFooter
+from minseg_tui.ui.widgets.inturn import run_in_turn
 
 ClassWriter = Callable[[ClassView, Path], Sequence[Path]]
 """Writes the class's report into a folder; the files written (the CLI hands in
@@ -127,6 +129,15 @@ def detail(k: int, g: Group) -> Text:
     return out
 
 
+class ClassTable(DataTable[Text]):
+    """The class's table, one row a group: its arrows (Home, End, PgUp, PgDn) move the
+    cursor as each key is read, so an Enter typed right after them opens the group they moved
+    to (:mod:`minseg_tui.ui.widgets.inturn`; walk 15's D1)."""
+
+    async def on_key(self, event: events.Key) -> None:
+        await run_in_turn(self, event)
+
+
 class ClassScreen(Screen[None]):
     """The class view of ``root`` (a sessions folder)."""
 
@@ -174,7 +185,7 @@ class ClassScreen(Screen[None]):
 
     def compose(self) -> ComposeResult:
         yield Static(Text(f"{TITLE} of {self.root} — reading the sessions…"), id="class-title")
-        table: DataTable[Text] = DataTable(id="class-table", cursor_type="row", zebra_stripes=True)
+        table = ClassTable(id="class-table", cursor_type="row", zebra_stripes=True)
         yield table
         with VerticalScroll(id="class-detail"):
             yield Static("", id="class-group")
@@ -254,7 +265,13 @@ class ClassScreen(Screen[None]):
 
     async def action_open_group(self) -> None:
         """Open the highlighted group's session read-only in the lab (back on the start
-        screen first, which is where the app opens a session from)."""
+        screen first, which is where the app opens a session from), once the table has taken
+        the keys typed before Enter ('Down Enter' in one burst opens the row Down went to)."""
+        await after_typed_keys(self.app, self._open_group)
+
+    async def _open_group(self) -> None:
+        if self.app.screen is not self:
+            return  # a second Enter while the first opens the group
         index = self.query_one(DataTable).cursor_row
         if not 0 <= index < len(self.groups) or not self.groups[index].readable:
             self.notify("this session cannot be read; see what it lacks below", timeout=5)

@@ -37,6 +37,20 @@ RECORDING_CHOICES: tuple[tuple[str, str], ...] = (
 )
 """What the group can do when quitting while Task 10 records a run: (answer, words)."""
 
+RUN_ENDED_CHOICES: tuple[tuple[str, str], ...] = (
+    ("keep", "Keep working"),
+    ("quit_now", "Quit"),
+)
+"""What the group can do once the run it was asked about has ended while the question was
+up (walk 15, D2: the question went on saying the run was being recorded): (answer, words)."""
+
+
+def run_ended_question(ended: str) -> str:
+    """The question of Ctrl+Q once the run has ended while it was asked; ``ended``: how it
+    ended and what was kept, as Task 10's notice says it ("square wave done; run steps-1: 489
+    samples kept")."""
+    return f"The run ended while this was asked: {ended}. Quitting now cuts nothing."
+
 
 def recording_question(run: ActiveRun) -> str:
     """The question of Ctrl+Q while ``run`` is being recorded, with the samples it holds
@@ -76,7 +90,7 @@ class QuitScreen(ModalScreen[str]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="ask", classes="dialog"):
-            yield Prose(self._title, classes="title")
+            yield Prose(self._title, id="title", classes="title")
             yield Prose(self.problem, id="problem", classes="para")
             yield OptionList(*[Option(text, id=key) for key, text in self._choices], id="answers")
 
@@ -87,6 +101,19 @@ class QuitScreen(ModalScreen[str]):
 
     def watch_problem(self, problem: str) -> None:
         self.query_one("#problem", Prose).update(problem)
+
+    def ask(self, title: str, problem: str, choices: tuple[tuple[str, str], ...]) -> None:
+        """Ask another question in place of the one up (its title, words and choices), the
+        first choice highlighted: the app's way to keep the question true when what it was
+        about has changed (the run ended while Ctrl+Q's question was up)."""
+        self._title = title
+        self._choices = choices
+        self.query_one("#title", Prose).update(title)
+        self.problem = problem
+        answers = self.query_one("#answers", OptionList)
+        answers.clear_options()
+        answers.add_options([Option(text, id=key) for key, text in choices])
+        answers.highlighted = 0
 
     @on(OptionList.OptionSelected, "#answers")
     def _answer(self, event: OptionList.OptionSelected) -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from textual import on
+from textual import events, on
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
@@ -19,6 +19,7 @@ from minseg_tui.lab.content.steps import STEP_INDEX, step
 from minseg_tui.lab.saving.store import SessionInfo, names_key, same_names
 from minseg_tui.ui.screens.status import StatusScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
+from minseg_tui.ui.widgets.inturn import run_in_turn
 from minseg_tui.ui.widgets.textbox import TextBox
 
 
@@ -40,6 +41,15 @@ def why_closed(s: SessionInfo) -> str:
     if s.locked_by:
         return f"in use by another minseg-tui (pid {s.locked_by})"
     return ""
+
+
+class SessionList(OptionList):
+    """The saved sessions: its arrows (Home, End, PgUp, PgDn) move the cursor as each key is
+    read, so an Enter typed right after them opens the session they moved to
+    (:mod:`minseg_tui.ui.widgets.inturn`; walk 15's D1)."""
+
+    async def on_key(self, event: events.Key) -> None:
+        await run_in_turn(self, event)
 
 
 class StartScreen(StatusScreen):
@@ -100,7 +110,7 @@ class StartScreen(StatusScreen):
                 options = [Option(Content(f"✗ {self._unreadable}"), id="", disabled=True)]
             elif not options:
                 options = [Option("no saved sessions yet", id="", disabled=True)]
-            yield OptionList(*options, id="sessions")
+            yield SessionList(*options, id="sessions")
         yield KeyFooter()
 
     @staticmethod
