@@ -166,6 +166,9 @@ def test_the_details_say_what_each_figure_measures_without_the_specialists_terms
     text = " ".join(told.lines())
     for word in SPECIALIST:
         assert word not in text, (word, text)
+    # the lines by their legends' names, never by colour: the screen draws the first-order
+    # model orange and the extended red, the report red and green
+    assert not re.search(r"\b(red|green|orange)\b", text), text
     lead = r.lead
     assert lead is not None
     key = lead.figure.replace("baseline_", "").replace("extended_", "")

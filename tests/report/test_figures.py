@@ -278,7 +278,7 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     assert "The figure that means most" in html_section.split("<details>", 1)[1]
     rows = [ln for ln in section.splitlines() if ln.startswith("| rms error")]
     assert rows[0].startswith("| rms error of the angle (leads) |")  # the table leads with it
-    (ext,) = [ln for ln in section.splitlines() if ln.startswith("The extended model (green)")]
+    (ext,) = [ln for ln in section.splitlines() if ln.startswith("The extended model, ")]
     for p, (lo, hi) in result.extended.intervals.items():
         said = shown_unit(PARAM_UNITS[p])  # T and the delays in ms, as the story gives them
         scale = UNITS[said].scale if said != PARAM_UNITS[p] else 1.0

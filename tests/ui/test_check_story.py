@@ -68,7 +68,8 @@ async def test_the_details_name_the_model_simulated_and_whose_T_tasks_11_12_show
         ), story
         lines = app.screen.query_one("#check-lines", Prose).text
         assert re.search(
-            r"The simple model \(red\) is the first-order model the check fitted to this run "
+            r"The simple model, the first-order line on the plots, is the first-order model the "
+            r"check fitted to this run "
             r"itself and ran on the recorded voltage: T = [0-9.]+ ms, K = ",
             lines,
         ), lines

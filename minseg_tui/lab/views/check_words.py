@@ -568,7 +568,7 @@ def _extended_plain(r: CheckResult, intervals: bool) -> str:
         f"{k} is {PARAM_MEANS[k]}" for k in e.params if k not in ("T", "K") and k in PARAM_MEANS
     ]
     return (
-        f"The extended model (green), {in_words(e.model)}: "
+        f"The extended model, {in_words(e.model)}: "
         f"{params(e.params, e.intervals if intervals else None)}"
         + (f"; {', '.join(adds)}" if adds else "")
         + "."
@@ -670,7 +670,8 @@ def details(r: CheckResult, two_fits_said: str = "", intervals: bool = False) ->
     The CLI's specialist text is :func:`minseg_tui.lab.views.check_text.text`."""
     b = r.baseline
     said = [
-        "The simple model (red) is the first-order model the check fitted to this run itself "
+        "The simple model, the first-order line on the plots, is the first-order model the "
+        "check fitted to this run itself "
         f"and ran on the recorded voltage: {params(b.params, b.intervals if intervals else None)}; "
         "neither the group's model of Task 14 nor the least-squares reading of Tasks 11-12."
     ]
