@@ -489,7 +489,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
     res = [Line("measured - first order", t, r.omega - r.baseline_pred, color="#d62728")]
     if model:
         res.append(Line("measured - extended", t, r.omega - r.extended_pred, color="#2ca02c"))
-    bottom = plot(res, xlabel="t (s)", ylabel="residual (rad/s)", height=170, width=640)
+    bottom = plot(res, xlabel="t (s)", ylabel="measured - model (rad/s)", height=170, width=640)
     whole = Figure(
         stack((top, bottom)),
         640,
@@ -543,7 +543,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         bands=(floor,),
         marks=() if edge is None else (Mark("", x=edge),),
         xlabel="t (s)",
-        ylabel="residual (rad/s)",
+        ylabel="measured - model (rad/s)",
         width=440,
         height=190,
         show_xlabel=not on_angle,
@@ -569,7 +569,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
                     ),
                 ),
                 marks=() if edge is None else (Mark("", x=edge),),
-                title="angle error: the residual summed over the window",
+                title="angle error: measured - model, summed over the window",
                 xlabel="t (s)",
                 ylabel="angle error (rad)",
                 width=440,
@@ -582,9 +582,9 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         f"Run {name}, {check_words.close_up_title(r)}"
         + (f" ({in_words(cu.cause)})" if cu.cause != "none" else "")
         + f". The shaded band is ± the noise there ({format_number(cu.noise, 3)} rad/s): a model whose "
-        "residual stays inside it explains the log down to its noise."
+        "miss (measured - model) stays inside it explains the log down to its noise."
         + (
-            " Below, the residual summed over the window: the angle error, which the speed's "
+            " Below, that miss summed over the window: the angle error, which the speed's "
             "noise does not hide."
             if on_angle
             else ""

@@ -273,6 +273,8 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
         "the one the encoder counted (the rms error of the angle)" in details
     )
     assert "whitened" not in details and "criterion" not in details
+    # nor in the captions and axes: a residual is "measured - model", as on the screen
+    assert "residual" not in section, section
     html_section = html.split("<h2>Model check</h2>", 1)[1].split("<h2>", 1)[0]
     assert html_section.index("Likely cause") < html_section.index("<details><summary>Details")
     assert "The figure that means most" in html_section.split("<details>", 1)[1]
