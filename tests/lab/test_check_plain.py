@@ -206,3 +206,15 @@ def test_a_runner_up_the_log_cannot_show_is_said_so():
         "sample period"
     ), said
     assert "whitened" not in said and "_" not in said
+
+
+@pytest.mark.shared_data
+def test_a_run_the_first_order_model_explains_gives_its_noise_as_an_rms():
+    """Real log ev3-large-duty30: "follows the measured speed to within its noise (± 1.4
+    rad/s)", beside a plot whose misses reach 4 rad/s; 1.4 rad/s is the noise's rms, which
+    a third of the samples exceed."""
+    u, r = _real("ev3-large-duty30")
+    assert r.finding.cause == "none"
+    (said,) = check_words.lead(r, u)
+    assert "±" not in said
+    assert re.search(rf"to within its noise \({NUM} rad/s rms\)", said), said

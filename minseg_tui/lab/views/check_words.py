@@ -271,10 +271,11 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
     named = r.finding.cause != "none"
     if not named:
         if r.finding.explained:
-            noise = format_value(cu.noise, "rad/s", 2) if cu is not None else "its noise"
+            # the noise is an rms: about a third of the samples lie beyond it, so never "±"
+            noise = f" ({format_value(cu.noise, 'rad/s', 2)} rms)" if cu is not None else ""
             return (
                 f"{model[0].upper()}{model[1:]} follows the measured speed to within its "
-                f"noise (± {noise}): nothing needs adding for this run."
+                f"noise{noise}: nothing needs adding for this run."
             )
         return (
             f"{model[0].upper()}{model[1:]} misses the measured speed by more than its noise, "
