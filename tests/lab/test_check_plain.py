@@ -14,7 +14,7 @@ import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views import check_words
-from minseg_tui.lab.views.check_says import CAUSE_WORDS, lost_plain
+from minseg_tui.lab.views.check_says import in_words, lost_plain
 from minseg_tui.lab.views.check_text import FIGURES, figure
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.decide import Reason
@@ -25,7 +25,15 @@ from tests.model import physics_gen
 from tests.shared_data import SHARED_DATA
 
 NUM = r"[0-9]+(?:\.[0-9]+)?"
-SPECIALIST = ("whitened", "criterion", "residual", "_friction", "dead_time", "_filter", "_pole")
+SPECIALIST = (
+    "whitened",
+    "criterion",
+    "residual",
+    "pole",
+    "_friction",
+    "dead_time",
+    "_filter",
+)
 """Words a student should not meet in the details: the check's own measures and the JSON's
 contract names (a parameter's symbol, u_c or T_coast, is the lab's notation and stays)."""
 
@@ -179,7 +187,7 @@ def test_the_details_say_what_each_figure_measures_without_the_specialists_terms
         if b is not None and b > 0:
             assert check_words.MEANS[k].what in text, (k, text)
     if r.finding.cause != "none":
-        label = CAUSE_WORDS[r.finding.cause].label
+        label = in_words(r.finding.cause, plain=True)
         assert f"Why {label}, over the whole run:" in text
         assert re.search(rf"Adding it removes {NUM} % of the simple model's error", text)
         for p in r.extended.params:

@@ -85,13 +85,23 @@ CAUSE_WORDS: dict[str, CauseWords] = {
 name (the model holds its numbers, this its words)."""
 
 
-def in_words(model: str) -> str:
+def in_words(model: str, plain: bool = False) -> str:
     """A model or cause name in words: "first_order+coulomb_friction" -> "first order + dry
-    friction"; ``none`` stays "none"."""
+    friction"; ``none`` stays "none". ``plain``: told to a student, a second pole as
+    :data:`PLAIN_LABELS` says (a second-year student has met time constants, not poles)."""
     return " + ".join(
-        "first order" if p == "first_order" else (CAUSE_WORDS[p].label if p in CAUSE_WORDS else p)
+        "first order"
+        if p == "first_order"
+        else PLAIN_LABELS[p]
+        if plain and p in PLAIN_LABELS
+        else (CAUSE_WORDS[p].label if p in CAUSE_WORDS else p)
         for p in model.split("+")
     )
+
+
+PLAIN_LABELS: dict[str, str] = {"second_pole": "second time constant"}
+"""The labels of :data:`CAUSE_WORDS` a student is told otherwise (the lab's details and the
+report; the CLI keeps the labels)."""
 
 
 def _miss(a: an.Anomaly, f: an.ModelMiss) -> str:
@@ -286,6 +296,15 @@ REASON: dict[ReasonKind, str] = {
 (:func:`reason` for the others)."""
 
 
+def _within(r: Reason, what: str) -> str:
+    """A cause that acts within the first sample after a step (``what`` it is, in words)."""
+    return (
+        f"{what} of {1e3 * r.value:.3g} ms, under a quarter of the "
+        f"{1e3 * r.ts:.3g} ms sample period, acts within the first sample after a step: "
+        "the samples show only a shift in time that the sampling's own lateness gives too"
+    )
+
+
 def reason(r: Reason) -> str:
     """Why a clear cause was left out, in words (every figure from the selection)."""
     if r.kind == "bound":
@@ -293,11 +312,7 @@ def reason(r: Reason) -> str:
     if r.kind == "refused" and r.refusal is not None:
         return refusal(r.refusal)
     if r.kind == "within_sample":
-        return (
-            f"{CAUSE_WORDS[r.cause].within_sample} of {1e3 * r.value:.3g} ms, under a quarter of the "
-            f"{1e3 * r.ts:.3g} ms sample period, acts within the first sample after a step: "
-            "the samples show only a shift in time that the sampling's own lateness gives too"
-        )
+        return _within(r, CAUSE_WORDS[r.cause].within_sample)
     if r.kind == "below_noise":
         return (
             f"nowhere does it move the simulated speed, held over {r.rows} samples, by more "
@@ -516,7 +531,7 @@ def _friction_levels(f: fx.FrictionLevels) -> str:
     return text
 
 
-def _delay(f: fx.Delay, claim: str) -> str:
+def _delay(f: fx.Delay, claim: str, plain: bool = False) -> str:
     seen = (
         f"after the step{'s' if f.steps > 1 else ''} the measured speed first moves "
         f"{_ms(f.lag)} later"
@@ -527,21 +542,23 @@ def _delay(f: fx.Delay, claim: str) -> str:
         return (
             f"{seen}: a first-order response that starts {_ms(f.d)} after the command fits, "
             "but the speed moves before that delay ends, so the start is slow rather than "
-            "late (an extra pole or an average of the speed starts so; the delay stands in "
+            f"late ({'a second time constant' if plain else 'an extra pole'} or an average of "
+            "the speed starts so; the delay stands in "
             "for it)"
         )
     return f"{seen}: a first-order response that starts {_ms(f.d)} after the command fits " + claim
 
 
-def _averaged(f: fx.Averaged) -> str:
+def _averaged(f: fx.Averaged, plain: bool = False) -> str:
     n = f.n
     which = "every edge becomes" if f.edges > 1 else "the step becomes"
     ramp = f"{which} a ramp about {n} samples ({_ms(n * f.ts)}) long"
     if f.smooth:
         return (
             f"{'the rises are' if f.edges > 1 else 'the rise is'} smoothed as an average of the "
-            f"speed over {n} samples ({_ms(n * f.ts)}) would smooth it; an extra pole in the "
-            "motor would look alike in this smooth signal"
+            f"speed over {n} samples ({_ms(n * f.ts)}) would smooth it; "
+            f"{'a second time constant' if plain else 'an extra pole'} in the motor would look "
+            "alike in this smooth signal"
         )
     if f.floor is not None:
         return (
@@ -695,7 +712,9 @@ def shown(b: rs.Because, plain: bool = False) -> str:
     if plain and isinstance(f, fx.Pole):
         return _pole_plain(f, _claim(b, plain=True))
     if plain and isinstance(f, fx.Delay):
-        return _delay(f, _claim(b, plain=True))
+        return _delay(f, _claim(b, plain=True), plain=True)
+    if plain and isinstance(f, fx.Averaged):
+        return _averaged(f, plain=True)
     if isinstance(f, fx.FrictionStop):
         return _friction_stop(f)
     if isinstance(f, fx.FrictionLevels):
@@ -973,14 +992,18 @@ def reason_plain(r: Reason) -> str:
     contract names (the figures of :func:`reason`)."""
     if r.kind in PLAIN_REASON:
         return PLAIN_REASON[r.kind]
+    if r.kind == "within_sample" and r.cause in PLAIN_LABELS:
+        return _within(r, f"a {PLAIN_LABELS[r.cause]}")
     if r.kind == "swapped":
-        return f"{in_words(r.causes[0])} explains the log better together with the others"
+        return (
+            f"{in_words(r.causes[0], plain=True)} explains the log better together with the others"
+        )
     if r.kind == "together":
-        return f"{' and '.join(in_words(c) for c in r.causes)} together explain the log better"
+        return f"{' and '.join(in_words(c, plain=True) for c in r.causes)} together explain the log better"
     if r.kind == "rival_better":
-        return f"{in_words(r.causes[0])} matches the speed itself far better"
+        return f"{in_words(r.causes[0], plain=True)} matches the speed itself far better"
     if r.kind in ("third_small", "taken_over"):
-        return reason(replace(r, causes=tuple(in_words(c) for c in r.causes)))
+        return reason(replace(r, causes=tuple(in_words(c, plain=True) for c in r.causes)))
     return reason(r)
 
 
@@ -989,7 +1012,7 @@ def lost_plain(r: rs.RunnerUp | None) -> str:
     weighs (its whitened residual) is called the model's error, its criterion gain a score."""
     if r is None:
         return ""
-    said = in_words(r.name)
+    said = in_words(r.name, plain=True)
     why = reason_plain(r.reason) if r.reason is not None else ""
     share = f"{100 * max(r.share, 0.0):.1f} %"
     if r.kind == "held_back":
@@ -1056,7 +1079,7 @@ def caveat_plain(c: rs.Caveat) -> str:
     """Caveat ``c`` told to a student: what this run cannot show, in everyday words (the
     figures of :func:`caveat`; causes in words, never by their contract names)."""
     f = c.facts
-    name = in_words(c.cause) if c.cause else ""
+    name = in_words(c.cause, plain=True) if c.cause else ""
     if isinstance(f, rs.OnBound):
         return (
             f"{name[:1].upper()}{name[1:]} fitted clearly ({params(f.params)}), but "
@@ -1079,11 +1102,14 @@ def caveat_plain(c: rs.Caveat) -> str:
     if isinstance(f, rs.Unjudged):
         return f"Whether there is {name} cannot be judged: {lacks(f.why)}."
     if isinstance(f, rs.Untold):
-        named, other = in_words("+".join(f.named)), in_words("+".join(f.other))
+        named, other = (
+            in_words("+".join(f.named), plain=True),
+            in_words("+".join(f.other), plain=True),
+        )
         extra = [x for x in f.other if x not in f.named]
         if f.moves > 0.0 and len(extra) == 1:
             return (
-                f"This run cannot tell whether {in_words(extra[0])} acts beside {named}: with "
+                f"This run cannot tell whether {in_words(extra[0], plain=True)} acts beside {named}: with "
                 f"it the model's error is {f.ratio:.2f} times as large, and it changes the "
                 f"simulated speed by {100 * f.moves:.2g} % of the largest speed at most, about "
                 "what any model of a real motor misses by; "

@@ -512,7 +512,7 @@ def _evidence_plain(r: CheckResult) -> list[str]:
     if isinstance(e, Plain):
         out.append(f"Why no cause is named: {evidence_plain_none(e)}.")
     else:
-        label = CAUSE_WORDS[f.cause].label if f.cause in CAUSE_WORDS else f.cause
+        label = in_words(f.cause, plain=True)
         out.append(
             f"Why {label}, over the whole run: {shown(e, plain=True)}. Adding it removes "
             f"{100 * e.reduction:.1f} % of the simple model's error (the error as the check "
@@ -569,7 +569,7 @@ def _extended_plain(r: CheckResult, intervals: bool) -> str:
         f"{k} is {PARAM_MEANS[k]}" for k in e.params if k not in ("T", "K") and k in PARAM_MEANS
     ]
     return (
-        f"The extended model, {in_words(e.model)}: "
+        f"The extended model, {in_words(e.model, plain=True)}: "
         f"{params(e.params, e.intervals if intervals else None)}"
         + (f"; {', '.join(adds)}" if adds else "")
         + "."

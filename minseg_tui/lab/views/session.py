@@ -1297,7 +1297,7 @@ def check(session: Session) -> CheckView:
         close_extended=extended[window],
         close_what=check_says.close_up_what(cu) if cu is not None else "",
         noise=cu.noise if cu is not None else r.gain.noise_floor,
-        cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),
+        cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)]), plain=True),
         story=check_words.lead(r, u),
         close_title=check_words.close_up_title(r),
         details=check_words.details(r, two_fits).lines(),
