@@ -22,7 +22,6 @@ from minseg_tui.lab.content.needs import needs
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
 from minseg_tui.lab.state.session import Session, TableRow
-from minseg_tui.lab.views import check_params as model_words
 from minseg_tui.lab.views import check_says, check_text, check_words, own_first
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.check_says import in_words
@@ -469,19 +468,6 @@ def _gain_rows(r: CheckResult) -> tuple[tuple[str, ...], ...]:
     return tuple(rows)
 
 
-def _lead(r: CheckResult) -> str | None:
-    if r.lead is None:
-        return None
-    c = check_text.compared(r.gain, r.lead.figure, r.finding.cause != "none")
-    if c is None:
-        return None
-    name, unit = c.words.name, c.words.unit
-    value = f"{c.first} {unit} for the first-order model"
-    if c.extended is not None:
-        value += f", {c.extended} {unit} extended"
-    return f"The figure that means most for this log: the {name}, {value}. It leads because {check_says.lead_why(r.lead)}."
-
-
 def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figures:
     """The whole run against both models with the residuals, and beside it the close-up
     where the cause acts with the noise floor marked."""
@@ -503,7 +489,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
     res = [Line("measured - first order", t, r.omega - r.baseline_pred, color="#d62728")]
     if model:
         res.append(Line("measured - extended", t, r.omega - r.extended_pred, color="#2ca02c"))
-    bottom = plot(res, xlabel="t (s)", ylabel="residual (rad/s)", height=170, width=640)
+    bottom = plot(res, xlabel="t (s)", ylabel="measured - model (rad/s)", height=170, width=640)
     whole = Figure(
         stack((top, bottom)),
         640,
@@ -557,7 +543,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         bands=(floor,),
         marks=() if edge is None else (Mark("", x=edge),),
         xlabel="t (s)",
-        ylabel="residual (rad/s)",
+        ylabel="measured - model (rad/s)",
         width=440,
         height=190,
         show_xlabel=not on_angle,
@@ -583,7 +569,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
                     ),
                 ),
                 marks=() if edge is None else (Mark("", x=edge),),
-                title="angle error: the residual summed over the window",
+                title="angle error: measured - model, summed over the window",
                 xlabel="t (s)",
                 ylabel="angle error (rad)",
                 width=440,
@@ -596,9 +582,9 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         f"Run {name}, {check_words.close_up_title(r)}"
         + (f" ({in_words(cu.cause)})" if cu.cause != "none" else "")
         + f". The shaded band is ± the noise there ({format_number(cu.noise, 3)} rad/s): a model whose "
-        "residual stays inside it explains the log down to its noise."
+        "miss (measured - model) stays inside it explains the log down to its noise."
         + (
-            " Below, the residual summed over the window: the angle error, which the speed's "
+            " Below, that miss summed over the window: the angle error, which the speed's "
             "noise does not hide."
             if on_angle
             else ""
@@ -654,66 +640,22 @@ def _model_check_section(session: Session) -> Section | None:
     sec.blocks.append(f"Run {mc.run}, {check_words.close_up_title(r)}.")
     sec.blocks.append(check_words.join(check_words.lead(r, u)))
     sec.blocks.append(_model_check_figures(mc.run, r, log))
+    # the details as the screen's fold gives them, each figure with what it measures and
+    # why it matters; here the intervals too, and the figures in a table
+    told = check_words.details(r, "".join(_two_fits(session, mc.run, r.baseline.params)), True)
     details = Fold("Details")
-    lead = _lead(r)
-    if lead:
-        details.blocks.append(lead)
-    b, e, f = r.baseline, r.extended, r.finding
-    named = f.cause != "none"
-    items = []
-    if r.sampling is not None:
-        items.append(f"The log: {check_says.sampling(r.sampling)}")
-    items += [
-        f"First-order model fitted to {mc.run}: {model_words.params(b.params, b.intervals)}; simulated on "
-        f"the recorded voltage it misses by {format_number(b.rmse, 3)} rad/s rms (fit "
-        f"{format_number(b.fit_percent, 3)} %).",
-        *_two_fits(session, mc.run, b.params),
-        f"Where it deviates: {check_says.where(r.deviations)}.",
-        f"Most likely cause: {in_words(f.cause)}. The check's evidence, over the whole log: "
-        f"{check_says.evidence(f)}",
-    ]
-    items += [
-        f"Also: {in_words(o.cause)} ({model_words.params(o.params)}): {check_says.other(o)}"
-        for o in f.others
-    ]
-    if named:
-        items.append(
-            f"Extended model ({in_words(e.model)}): {model_words.params(e.params, e.intervals)}; "
-            f"{format_number(e.rmse, 3)} rad/s rms (fit {format_number(e.fit_percent, 3)} %), "
-            f"{format_number(r.gain.rmse_reduction_percent, 3)} % lower rms."
-        )
-    details.blocks.append(items)
+    details.blocks.extend(told.said)
+    e, named = r.extended, r.finding.cause != "none"
     head = (
         "figure",
         "first-order model",
         f"extended model ({in_words(e.model)})" if named else "extended",
     )
     details.blocks.append(Table(head, _gain_rows(r)))
-    floor, noise, angle = r.gain.noise_floor, r.gain.noise, r.gain.angle_floor
-    if floor is not None or noise is not None:
-        details.blocks.append(
-            "The speed's noise: "
-            + "; ".join(
-                x
-                for x in (
-                    f"the encoder's floor {format_number(floor, 3)} rad/s"
-                    if floor is not None
-                    else "",
-                    f"the scatter measured in the log {format_number(noise, 3)} rad/s",
-                    f"the angle itself is known to {format_number(angle, 3)} rad"
-                    if angle is not None
-                    else "",
-                )
-                if x
-            )
-            + ". An error near it says nothing about a model; the part above it does."
-        )
-    if f.caveats:
-        details.blocks.append(check_text.CAVEATS)
-        details.blocks.append([check_says.caveat(c) for c in f.caveats])
-    if r.anomalies:
-        details.blocks.append(check_text.ANOMALIES)
-        details.blocks.append([check_says.anomaly(a) for a in r.anomalies])
+    if told.cannot:
+        details.blocks += [check_words.CANNOT_SHOW, list(told.cannot)]
+    if told.in_log:
+        details.blocks += [check_words.IN_THE_LOG, list(told.in_log)]
     sec.blocks.append(details)
     return sec
 

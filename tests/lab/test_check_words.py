@@ -40,7 +40,7 @@ def test_the_sentences_speak_of_the_close_up_in_everyday_words(cause):
     k = int(np.searchsorted(log.t, float(m.group(3)) - 1e-9))
     assert log.u[k] != log.u[k - 1]
     if r.finding.cause != "none":
-        assert f"Likely cause: {check_words.EVERYDAY[r.finding.cause]}" in text
+        assert f"Likely cause: {check_words.everyday(r)}." in text
         b, e = check_text.figure(r.gain, r.lead.figure)
         assert b is not None and e is not None
         shown = re.search(rf"falls from ({NUM}) (rad/s|rad) to ({NUM}) (rad/s|rad)", text)

@@ -19,7 +19,7 @@ from minseg_tui.lab.content.identify_says import t63_note
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.state.compare import two_T_of
 from minseg_tui.lab.state.session import Session
-from minseg_tui.lab.views.check_says import caveat, close_up_what, in_words, lead_why
+from minseg_tui.lab.views.check_says import caveat_plain, close_up_what, in_words
 from minseg_tui.model.check.effects import PARAM_UNITS
 from minseg_tui.quantities import UNITS, format_number, shown_unit
 from minseg_tui.report import svg
@@ -265,16 +265,22 @@ def test_the_model_check_section_leads_with_what_a_student_reads(report):
     assert m and result.close_up.t0 < float(m.group(2)) < result.close_up.t1
     details = section.split("### Details", 1)[1]
     assert section.index("![") < section.index("### Details")  # the figures before the fold
-    assert details.strip().startswith(
-        "The figure that means most for this log: the rms error of the angle"
+    # the details as the screen's: the log, the simple model, then the figure that leads,
+    # said by what it measures (walk 14 found "whitened residual" and the like hard)
+    assert details.strip().startswith("The log: a sample every ")
+    assert (
+        "The figure that means most for this run: how far the model's wheel angle drifts from "
+        "the one the encoder counted (the rms error of the angle)" in details
     )
-    assert lead_why(result.lead) in details and "whitened" in details
+    assert "whitened" not in details and "criterion" not in details
+    # nor in the captions and axes: a residual is "measured - model", as on the screen
+    assert "residual" not in section, section
     html_section = html.split("<h2>Model check</h2>", 1)[1].split("<h2>", 1)[0]
     assert html_section.index("Likely cause") < html_section.index("<details><summary>Details")
     assert "The figure that means most" in html_section.split("<details>", 1)[1]
     rows = [ln for ln in section.splitlines() if ln.startswith("| rms error")]
     assert rows[0].startswith("| rms error of the angle (leads) |")  # the table leads with it
-    (ext,) = [ln for ln in section.splitlines() if ln.startswith("- Extended model")]
+    (ext,) = [ln for ln in section.splitlines() if ln.startswith("The extended model, ")]
     for p, (lo, hi) in result.extended.intervals.items():
         said = shown_unit(PARAM_UNITS[p])  # T and the delays in ms, as the story gives them
         scale = UNITS[said].scale if said != PARAM_UNITS[p] else 1.0
@@ -308,9 +314,9 @@ def test_a_real_motor_outside_the_list_shows_its_caveats_and_current_limit(tmp_p
     assert r.finding.cause == "current_limit" and r.finding.caveats
     section = md.split("## Model check", 1)[1].split("\n## ", 1)[0]
     assert re.search(r"a_max = [0-9.]+ rad/s\^2 \(95 %: ", section)
-    assert "What the check cannot say here:" in section
+    assert "What this run cannot show:" in section
     for c in r.finding.caveats:
-        assert caveat(c) in section
+        assert caveat_plain(c) in section
 
 
 # -- the plot itself ----------------------------------------------------------------------------

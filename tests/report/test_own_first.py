@@ -204,7 +204,7 @@ def test_the_model_check_opens_as_the_screen_does_on_the_edge_its_close_up_shows
     t0, t1 = (float(x) for x in head.groups())
     assert (t0, t1) == pytest.approx((r.close_up.t0, r.close_up.t1), abs=0.006)
     story, details = paragraphs[2], check.split("### Details", 1)[1]
-    evidence = details.split("The check's evidence, over the whole log:", 1)[1].split("\n")[0]
+    evidence = details.split("Why dry friction, over the whole run:", 1)[1].split("\n")[0]
     for text in (story, evidence):
         edges = [float(x) for x in re.findall(r"t = ([0-9.]+) s", text)]
         assert edges and all(t0 <= t <= t1 for t in edges), (t0, t1, text)

@@ -97,8 +97,8 @@ def test_report_files_hold_the_sessions_values(tmp_path):
             "the program's value (least squares)",
             "90 ms",
             "omega at u_A = 5 V",
-            "Most likely cause: ",
-            "First-order model fitted to steps-1",
+            "Why dry friction, over the whole run: ",
+            "is the first-order model the check fitted to this run itself and ran on",
             # why the check's T is not Task 12's, saying whose that T is (walk of 11-27:
             # "Tasks 11-12 give T = 0.04284 s" where the group's Tasks 11-12 gave 57 ms)
             "The program's least-squares reading of the run used in Tasks 11-12 (not the "

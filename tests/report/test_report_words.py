@@ -32,9 +32,9 @@ def test_warnings_and_the_model_check_speak_in_words(tmp_path: Path) -> None:
     assert "- row 1 (u_req 2.5 V): omega_ss = 36.5 is" in warnings
     assert not IDS.findall(md), IDS.findall(md)
     check = md.split("## Model check")[1]
-    assert "Most likely cause: dry friction." in check
+    assert "Why dry friction, over the whole run: " in check
     contract = [c.cause for c in CANDIDATES] + [c.param for c in CANDIDATES]
     assert not [n for n in contract if re.search(rf"\({n}[;)]", check)]
-    assert "the next best explanation (" in check  # named, in words
-    runner = check.split("the next best explanation (")[1].split(")")[0]
+    assert "The next best explanation, " in check  # named, in words
+    runner = check.split("The next best explanation, ")[1].split(",")[0]
     assert "_" not in runner, runner

@@ -359,7 +359,8 @@ async def test_model_check_at_80x24_scrolls_with_the_arrows_and_shows_all_its_te
         lines = app.screen.query_one("#check-lines", Prose)
         assert not lines.region.height  # folded
         text = lines.text
-        assert text.index("angle error") < text.index("evidence")  # the lead figure first
+        # the lead figure first
+        assert text.index("wheel angle drifts") < text.index("Why dry friction")
         assert "cause: dry friction" in text
         panel = app.screen.query_one(ModelCheckPanel)
         assert panel.close_up and "close-up" in story.text

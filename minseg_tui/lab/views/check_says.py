@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -85,13 +85,23 @@ CAUSE_WORDS: dict[str, CauseWords] = {
 name (the model holds its numbers, this its words)."""
 
 
-def in_words(model: str) -> str:
+def in_words(model: str, plain: bool = False) -> str:
     """A model or cause name in words: "first_order+coulomb_friction" -> "first order + dry
-    friction"; ``none`` stays "none"."""
+    friction"; ``none`` stays "none". ``plain``: told to a student, a second pole as
+    :data:`PLAIN_LABELS` says (a second-year student has met time constants, not poles)."""
     return " + ".join(
-        "first order" if p == "first_order" else (CAUSE_WORDS[p].label if p in CAUSE_WORDS else p)
+        "first order"
+        if p == "first_order"
+        else PLAIN_LABELS[p]
+        if plain and p in PLAIN_LABELS
+        else (CAUSE_WORDS[p].label if p in CAUSE_WORDS else p)
         for p in model.split("+")
     )
+
+
+PLAIN_LABELS: dict[str, str] = {"second_pole": "second time constant"}
+"""The labels of :data:`CAUSE_WORDS` a student is told otherwise (the lab's details and the
+report; the CLI keeps the labels)."""
 
 
 def _miss(a: an.Anomaly, f: an.ModelMiss) -> str:
@@ -286,6 +296,15 @@ REASON: dict[ReasonKind, str] = {
 (:func:`reason` for the others)."""
 
 
+def _within(r: Reason, what: str) -> str:
+    """A cause that acts within the first sample after a step (``what`` it is, in words)."""
+    return (
+        f"{what} of {1e3 * r.value:.3g} ms, under a quarter of the "
+        f"{1e3 * r.ts:.3g} ms sample period, acts within the first sample after a step: "
+        "the samples show only a shift in time that the sampling's own lateness gives too"
+    )
+
+
 def reason(r: Reason) -> str:
     """Why a clear cause was left out, in words (every figure from the selection)."""
     if r.kind == "bound":
@@ -293,11 +312,7 @@ def reason(r: Reason) -> str:
     if r.kind == "refused" and r.refusal is not None:
         return refusal(r.refusal)
     if r.kind == "within_sample":
-        return (
-            f"{CAUSE_WORDS[r.cause].within_sample} of {1e3 * r.value:.3g} ms, under a quarter of the "
-            f"{1e3 * r.ts:.3g} ms sample period, acts within the first sample after a step: "
-            "the samples show only a shift in time that the sampling's own lateness gives too"
-        )
+        return _within(r, CAUSE_WORDS[r.cause].within_sample)
     if r.kind == "below_noise":
         return (
             f"nowhere does it move the simulated speed, held over {r.rows} samples, by more "
@@ -453,10 +468,37 @@ CLAIMS: dict[str, ClaimWords] = {
 """Each claim in words, by the cause that makes it."""
 
 
-def _claim(b: rs.Because) -> str:
+PLAIN_CLAIMS: dict[str, ClaimWords] = {
+    "dead_time": ClaimWords(
+        "(a pure delay; a second time constant would start at once, only more slowly)",
+        lambda r: (
+            f"(a pure delay: a second time constant in its place leaves {r:.1f} times the error)"
+        ),
+        lambda r: (
+            f"(a delay, though a second time constant in its place leaves only {r:.2f} times "
+            "the error: this run hardly tells a delay from a lag)"
+        ),
+        "(a delay, or in this run a second time constant or an averaged speed about as well)",
+    ),
+    "second_pole": ClaimWords(
+        " (a pure delay would show a corner)",
+        lambda r: f" (a pure delay in its place leaves {r:.1f} times the error)",
+        lambda r: (
+            f" (though a pure delay in its place leaves only {r:.2f} times the error: this "
+            "run hardly tells a lag from a delay)"
+        ),
+        "",
+    ),
+}
+"""The claims told to a student (the lab's details and the report): the same figures, the
+error the check weighs called the error, a pole a second time constant."""
+
+
+def _claim(b: rs.Because, plain: bool = False) -> str:
     """The claim of ``b``'s cause against its rival, with the figure behind it when the
-    rival was fitted in its place, or taken back when the log cannot rule the rival out."""
-    w = CLAIMS[b.cause]
+    rival was fitted in its place, or taken back when the log cannot rule the rival out
+    (``plain``: in a student's words, :data:`PLAIN_CLAIMS`)."""
+    w = (PLAIN_CLAIMS if plain else CLAIMS)[b.cause]
     if b.void:
         return w.void
     r = b.rival_ratio
@@ -489,7 +531,7 @@ def _friction_levels(f: fx.FrictionLevels) -> str:
     return text
 
 
-def _delay(f: fx.Delay, claim: str) -> str:
+def _delay(f: fx.Delay, claim: str, plain: bool = False) -> str:
     seen = (
         f"after the step{'s' if f.steps > 1 else ''} the measured speed first moves "
         f"{_ms(f.lag)} later"
@@ -500,21 +542,23 @@ def _delay(f: fx.Delay, claim: str) -> str:
         return (
             f"{seen}: a first-order response that starts {_ms(f.d)} after the command fits, "
             "but the speed moves before that delay ends, so the start is slow rather than "
-            "late (an extra pole or an average of the speed starts so; the delay stands in "
+            f"late ({'a second time constant' if plain else 'an extra pole'} or an average of "
+            "the speed starts so; the delay stands in "
             "for it)"
         )
     return f"{seen}: a first-order response that starts {_ms(f.d)} after the command fits " + claim
 
 
-def _averaged(f: fx.Averaged) -> str:
+def _averaged(f: fx.Averaged, plain: bool = False) -> str:
     n = f.n
     which = "every edge becomes" if f.edges > 1 else "the step becomes"
     ramp = f"{which} a ramp about {n} samples ({_ms(n * f.ts)}) long"
     if f.smooth:
         return (
             f"{'the rises are' if f.edges > 1 else 'the rise is'} smoothed as an average of the "
-            f"speed over {n} samples ({_ms(n * f.ts)}) would smooth it; an extra pole in the "
-            "motor would look alike in this smooth signal"
+            f"speed over {n} samples ({_ms(n * f.ts)}) would smooth it; "
+            f"{'a second time constant' if plain else 'an extra pole'} in the motor would look "
+            "alike in this smooth signal"
         )
     if f.floor is not None:
         return (
@@ -625,10 +669,52 @@ def _cap(f: fx.Cap) -> str:
     )
 
 
-def shown(b: rs.Because) -> str:
+def _pole_plain(f: fx.Pole, claim: str) -> str:
+    """A second pole's evidence told to a student: a second time constant, and where it
+    acts, in everyday words (the figures of :func:`_pole`)."""
+    text = "each rise starts with zero slope (an S-shaped start)"
+    if f.got is not None:
+        text += (
+            f": {_ms(f.after)} after the step the speed has risen {f.got:.3g} rad/s "
+            f"where the first-order model rises {f.model:.3g} rad/s"
+        )
+    if f.way == "filtered":
+        where = (
+            "the logged speed is filtered: each reading takes "
+            f"{f.share:.2f} of the new speed and keeps the rest of the one before, a lag of "
+            f"{_ms(f.t2)}"
+        )
+    elif f.way == "measured":
+        where = (
+            f"a lag of {_ms(f.t2)} between the wheel and its speed reading (a flexible "
+            "coupling to the encoder, or a filtered speed)"
+        )
+    elif f.way == "driver":
+        where = f"a lag of {_ms(f.t2)} in the driver: its output follows the command late"
+    elif f.way == "ringing":
+        where = (
+            "the current builds up in the winding as the speed does, a second time constant "
+            f"T2 = {_ms(f.t2)}"
+        )
+    else:
+        where = (
+            f"a second time constant of {_ms(f.t2)}: the current, and so the torque, builds "
+            "up that much later than the voltage"
+        )
+    return f"{text}; {where}{claim}"
+
+
+def shown(b: rs.Because, plain: bool = False) -> str:
     """What a cause's evidence reads off the log, in words, with its claim against a rival
-    (every number read off the log)."""
+    (every number read off the log). ``plain``: told to a student (the lab's details and
+    the report), a pole as a second time constant and the claims in :data:`PLAIN_CLAIMS`."""
     f = b.shown
+    if plain and isinstance(f, fx.Pole):
+        return _pole_plain(f, _claim(b, plain=True))
+    if plain and isinstance(f, fx.Delay):
+        return _delay(f, _claim(b, plain=True), plain=True)
+    if plain and isinstance(f, fx.Averaged):
+        return _averaged(f, plain=True)
     if isinstance(f, fx.FrictionStop):
         return _friction_stop(f)
     if isinstance(f, fx.FrictionLevels):
@@ -891,6 +977,150 @@ def lost(r: rs.RunnerUp | None) -> str:
         f"the next best explanation ({said}) leaves {r.ratio:.1f} times as much whitened "
         "residual" + (f" ({why})" if why else "")
     )
+
+
+# -- told to a student: the lab's details and the report (the CLI keeps the words above) ------
+PLAIN_REASON: dict[ReasonKind, str] = {
+    "whitened_only": "it improves the check's weighed error but not the error of the speed itself",
+}
+"""Why a clear cause was left out, told to a student where :data:`REASON`'s words are a
+specialist's."""
+
+
+def reason_plain(r: Reason) -> str:
+    """Why a clear cause was left out, told to a student: causes in words, never by their
+    contract names (the figures of :func:`reason`)."""
+    if r.kind in PLAIN_REASON:
+        return PLAIN_REASON[r.kind]
+    if r.kind == "within_sample" and r.cause in PLAIN_LABELS:
+        return _within(r, f"a {PLAIN_LABELS[r.cause]}")
+    if r.kind == "swapped":
+        return (
+            f"{in_words(r.causes[0], plain=True)} explains the log better together with the others"
+        )
+    if r.kind == "together":
+        return f"{' and '.join(in_words(c, plain=True) for c in r.causes)} together explain the log better"
+    if r.kind == "rival_better":
+        return f"{in_words(r.causes[0], plain=True)} matches the speed itself far better"
+    if r.kind in ("third_small", "taken_over"):
+        return reason(replace(r, causes=tuple(in_words(c, plain=True) for c in r.causes)))
+    return reason(r)
+
+
+def lost_plain(r: rs.RunnerUp | None) -> str:
+    """Why the runner-up lost, told to a student ('' without one): the error the check
+    weighs (its whitened residual) is called the model's error, its criterion gain a score."""
+    if r is None:
+        return ""
+    said = in_words(r.name, plain=True)
+    why = reason_plain(r.reason) if r.reason is not None else ""
+    share = f"{100 * max(r.share, 0.0):.1f} %"
+    if r.kind == "held_back":
+        return f"The best addition the check tried, {said}, is held back: {why}."
+    if r.kind == "too_small":
+        return (
+            f"The best addition the check tried, {said}, removes only {share} of the simple "
+            f"model's error; a cause must remove at least {100 * r.needs:.0f} %."
+        )
+    if r.kind == "short_of_gain":
+        return (
+            f"The best addition the check tried, {said}, removes {share} of the simple "
+            f"model's error, but on a run this long that is too little to be sure of it "
+            f"(a score of {r.gain:.0f} where {r.threshold:.0f} is needed)."
+        )
+    if r.kind == "misses_more":
+        b_rms, e_rms = r.rms
+        n = next((d for d in range(3, 7) if f"{b_rms:.{d}g}" != f"{e_rms:.{d}g}"), 6)
+        return (
+            f"The next best explanation, {said}, scores slightly better on the error the "
+            f"check weighs, but its speed misses the measured one by more ({b_rms:.{n}g} "
+            f"rad/s rms against {e_rms:.{n}g} rad/s)" + (f"; and {why}" if why else "") + "."
+        )
+    if r.kind == "not_named":
+        return f"The next best explanation, {said}, fits better but is not named: {why}."
+    text = f"The next best explanation, {said}, leaves {r.ratio:.1f} times as much error"
+    if r.reason is not None and r.reason.kind == "refused":
+        return f"{text}, and this run could not show it anyway: {why}."
+    return text + (f" ({why})." if why else ".")
+
+
+PLAIN_SMOOTH: dict[rs.Alike, str] = {
+    "filters": "This speed is smooth, not counted in encoder steps: an averaged speed and a "
+    "second time constant in the motor smooth it alike, so this run cannot tell them apart; "
+    "the check prefers the one named.",
+    "pole_measured": "This speed is smooth, not counted in encoder steps: an averaged speed and "
+    "a lag in the speed reading both smooth it, and the lag named acts there; the check "
+    "prefers it.",
+}
+""":data:`SMOOTH` told to a student."""
+
+PLAIN_TELL: dict[frozenset[str], str] = {
+    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
+    "samples after each step, would (a delay leaves those samples flat and then turns a "
+    "corner, a second time constant bends smoothly from the start)",
+    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
+    "(a delay shifts the rise, an average turns it into a ramp)",
+    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
+    "acts on the speed reading only, a second time constant on the motor)",
+}
+""":data:`TELL_APART` told to a student, where its words speak of poles (the other pairs keep
+theirs)."""
+
+
+def _tell_plain(a: tuple[str, ...], b: tuple[str, ...]) -> str:
+    only_a, only_b = set(a) - set(b), set(b) - set(a)
+    for pair, words in PLAIN_TELL.items():
+        if pair & only_a and pair & only_b:
+            return words
+    return what_would_tell(a, b)
+
+
+def caveat_plain(c: rs.Caveat) -> str:
+    """Caveat ``c`` told to a student: what this run cannot show, in everyday words (the
+    figures of :func:`caveat`; causes in words, never by their contract names)."""
+    f = c.facts
+    name = in_words(c.cause, plain=True) if c.cause else ""
+    if isinstance(f, rs.OnBound):
+        return (
+            f"{name[:1].upper()}{name[1:]} fitted clearly ({params(f.params)}), but "
+            f"{reason_plain(f.why)}: the run does something that cause cannot quite express, "
+            "so it is not named."
+        )
+    if isinstance(f, rs.Misses):
+        against = (
+            f"{f.size / f.level:.0f} times what the noise leaves there ({f.level:.3g} rad/s)"
+            if f.level > 0
+            else "where the speed has no noise at all"
+        )
+        return (
+            f"Even the best model still misses {f.region.replace('_', ' ')}, by "
+            f"{f.size:.3g} rad/s (averaged over 9 samples), {against}: something the check "
+            "does not know acts in this run, so the causes named explain only part of it."
+        )
+    if isinstance(f, rs.Smooth):
+        return PLAIN_SMOOTH[f.alike]
+    if isinstance(f, rs.Unjudged):
+        return f"Whether there is {name} cannot be judged: {lacks(f.why)}."
+    if isinstance(f, rs.Untold):
+        named, other = (
+            in_words("+".join(f.named), plain=True),
+            in_words("+".join(f.other), plain=True),
+        )
+        extra = [x for x in f.other if x not in f.named]
+        if f.moves > 0.0 and len(extra) == 1:
+            return (
+                f"This run cannot tell whether {in_words(extra[0], plain=True)} acts beside {named}: with "
+                f"it the model's error is {f.ratio:.2f} times as large, and it changes the "
+                f"simulated speed by {100 * f.moves:.2g} % of the largest speed at most, about "
+                "what any model of a real motor misses by; "
+                f"{_tell_plain(f.named, f.other)}."
+            )
+        return (
+            f"This run cannot tell {named} from {other}: the second leaves {f.ratio:.2f} times "
+            f"the error of the first, about the same; {_tell_plain(f.named, f.other)}."
+        )
+    text = caveat(c)
+    return f"{text[:1].upper()}{text[1:]}."
 
 
 class _Says:

@@ -24,13 +24,26 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from minseg_tui.lab.views.check_says import CAUSE_WORDS, close_up_what
-from minseg_tui.lab.views.check_text import GAIN_DIGITS, figure, figure_words, stem
+from minseg_tui.lab.views.check_params import params
+from minseg_tui.lab.views.check_says import (
+    CAUSE_WORDS,
+    anomaly,
+    caveat_plain,
+    close_up_what,
+    every,
+    in_words,
+    lost_plain,
+    shown,
+)
+from minseg_tui.lab.views.check_text import FIGURES, GAIN_DIGITS, figure, figure_words, stem
 from minseg_tui.model.check import CheckResult
-from minseg_tui.model.check.effects import CANDIDATES
+from minseg_tui.model.check.effects import CANDIDATES, FrictionLevels, Pole
+from minseg_tui.model.check.result import Because, Plain
+from minseg_tui.model.check.sampling import Sampling
 from minseg_tui.quantities import (
     format_constant,
     format_fixed,
+    format_number,
     format_percent,
     format_typed,
     format_value,
@@ -102,6 +115,8 @@ def moment(r: CheckResult, u: ArrayLike | None) -> Moment | None:
     edge = next((k for k in range(max(a, 1), b) if uu[k] != uu[k - 1]), None)
     if edge is None:
         return None
+    # the sentence speaks of this step only: up to the next one, when the close-up holds it
+    b = next((k for k in range(edge + 1, b) if uu[k] != uu[k - 1]), b)
     w = np.asarray(r.omega, dtype=float)
     base = np.asarray(r.baseline_pred, dtype=float)
     ext = np.asarray(r.extended_pred, dtype=float)
@@ -122,14 +137,15 @@ def moment(r: CheckResult, u: ArrayLike | None) -> Moment | None:
             still,
         )
 
-    if drop:
+    slower = SLOWER.get(r.finding.cause, 1)
+    if drop and slower > 0:  # a stop the cause makes early (a coast makes it late)
         moving = np.flatnonzero(np.abs(w[edge:b]) > zero)
         k = edge + (int(moving[-1]) + 1 if moving.size else 0)
         if k <= b - MIN_STILL_ROWS and abs(w[edge - 1]) > zero:
             return at(k, still=True)
     # the largest miss the way the cause makes it (|speed| below the model's for most),
     # else the largest either way
-    sign = SLOWER.get(r.finding.cause, 1) * np.sign(base[edge:b] + w[edge:b])
+    sign = slower * np.sign(base[edge:b] + w[edge:b])
     miss = np.convolve(sign * (base[edge:b] - w[edge:b]), np.ones(3) / 3.0, mode="same")
     if not miss.size:
         return None
@@ -166,8 +182,8 @@ def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
         "The program's least-squares reading of the run used in Tasks 11-12 (not the group's "
         f"own values) gives T = {format_constant(T_ls, 's')} and "
         f"K = {format_value(K_ls, 'rad/s/V')}: "
-        f"it fits the encoder angle{where} with a time shift for the sampling, while the model "
-        "check fits the speed it simulates over the whole run, steps down included; here the "
+        f"it fits the wheel's angle{where}, allowing for the moment each sample was taken, while "
+        "the model check fits the speed over the whole run, steps down included; here the "
         f"two T differ by {format_value(100.0 * abs(T / T_ls - 1.0), '', 2)} %."
     )
 
@@ -180,6 +196,65 @@ def other_T(T_ls: float) -> str:
         f"(Tasks 11-12's least-squares T of this run is {format_constant(T_ls, 's')}: "
         "Details says why the two differ.)"
     )
+
+
+FRICTION_LEVELS = (
+    "dry friction in the gearbox and the brushes: a constant braking torque, which takes "
+    "about {u_c} off the drive at every voltage, so the settled speeds are not in proportion "
+    "to the voltage as the model says (the model only knows a friction that shrinks with the "
+    "speed)"
+)
+"""Dry friction told to a student when the log shows it in its settled speeds, not in a
+stop (a log with no step down to 0: 'the wheel stops sooner' would not be of it)."""
+
+DELAY = "a delay: the motor answers about {delay} after the command, as if the voltage arrived late"
+"""A dead time told to a student, with its size (345 ms read 'a little after' on a log)."""
+
+POLE_WAYS: dict[str, tuple[str, str]] = {
+    "filtered": (
+        "a lag in the speed reading: the logged speed is filtered, so it follows the wheel "
+        "late and rises gently",
+        "a lag in the speed reading",
+    ),
+    "measured": (
+        "a lag between the wheel and its speed reading (a flexible coupling to the encoder, "
+        "or a filtered speed), so the reading rises gently",
+        "a lag in the speed reading",
+    ),
+    "driver": (
+        "a lag in the driver: its output follows the command late, so the speed starts "
+        "rising gently instead of at once",
+        "a lag in the driver",
+    ),
+}
+"""A second pole told to a student by where the check finds it acts (the evidence's
+``way``), everyday and short; a pole of the drive itself keeps :data:`CAUSE_WORDS`'s
+current build-up."""
+
+
+def everyday(r: CheckResult) -> str:
+    """The cause of ``r`` in everyday words, true of this log: dry friction by what the log
+    shows of it (a stop, or settled speeds), a delay with its size, a second pole by where it
+    acts."""
+    f = r.finding
+    e = f.evidence
+    shown = e.shown if isinstance(e, Because) else None
+    if f.cause == "coulomb_friction" and isinstance(shown, FrictionLevels):
+        return FRICTION_LEVELS.format(u_c=format_value(shown.uc, "V", 2))
+    if f.cause == "dead_time" and "delay" in r.extended.params:
+        return DELAY.format(delay=_later(r.extended.params["delay"]))
+    if f.cause == "second_pole" and isinstance(shown, Pole) and shown.way in POLE_WAYS:
+        return POLE_WAYS[shown.way][0]
+    return EVERYDAY.get(f.cause, f.cause)
+
+
+def short(cause: str, because: object) -> str:
+    """A cause in two or three words (for 'with ... added' and 'The check finds ... too'),
+    a second pole by where its evidence (``because``) says it acts."""
+    shown = because.shown if isinstance(because, Because) else None
+    if cause == "second_pole" and isinstance(shown, Pole) and shown.way in POLE_WAYS:
+        return POLE_WAYS[shown.way][1]
+    return SHORT.get(cause, cause)
 
 
 def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
@@ -196,10 +271,11 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
     named = r.finding.cause != "none"
     if not named:
         if r.finding.explained:
-            noise = format_value(cu.noise, "rad/s", 2) if cu is not None else "its noise"
+            # the noise is an rms: about a third of the samples lie beyond it, so never "±"
+            noise = f" ({format_value(cu.noise, 'rad/s', 2)} rms)" if cu is not None else ""
             return (
                 f"{model[0].upper()}{model[1:]} follows the measured speed to within its "
-                f"noise (± {noise}): nothing needs adding for this run."
+                f"noise{noise}: nothing needs adding for this run."
             )
         return (
             f"{model[0].upper()}{model[1:]} misses the measured speed by more than its noise, "
@@ -221,10 +297,16 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
             f"After {step}, the wheel stands still {after} later; {model} says it still "
             f"turns at {_w(m.first_order)} then."
         )
+    # an averaged speed lags the wheel: say what the log reads, not what the wheel does
+    logged = r.finding.cause == "velocity_filter"
     wheel = (
-        "the wheel has not moved yet"
+        ("the logged speed has not moved yet" if logged else "the wheel has not moved yet")
         if m.kind == "rise" and _w(m.measured) == _w(0.0)
-        else f"the wheel turns at {_w(m.measured)}"
+        else (
+            f"the logged speed reads {_w(m.measured)}"
+            if logged
+            else f"the wheel turns at {_w(m.measured)}"
+        )
     )
     return f"After {step}, {after} later {wheel} where {model} says {_w(m.first_order)}."
 
@@ -234,8 +316,8 @@ def _cause(r: CheckResult) -> str:
     f = r.finding
     if f.cause == "none":
         return ""
-    text = f"Likely cause: {EVERYDAY.get(f.cause, f.cause)}."
-    also = [SHORT.get(o.cause, o.cause) for o in f.others]
+    text = f"Likely cause: {everyday(r)}."
+    also = [short(o.cause, o.evidence) for o in f.others]
     if also:
         text += f" The check finds {' and '.join(also)} too."
     alike = [
@@ -257,7 +339,9 @@ def _gain(r: CheckResult) -> str:
     b, e = figure(r.gain, key)
     if b is None or e is None:
         return ""
-    added = " and ".join(SHORT.get(c, c) for c in [f.cause, *(o.cause for o in f.others)])
+    added = " and ".join(
+        short(c, b) for c, b in [(f.cause, f.evidence), *((o.cause, o.evidence) for o in f.others)]
+    )
     words, unit = figure_words(key).said, figure_words(key).unit
     if e >= b:
         return (
@@ -300,3 +384,308 @@ def close_up_title(r: CheckResult) -> str:
 def join(sentences: Sequence[str]) -> str:
     """The sentences as one paragraph."""
     return " ".join(sentences)
+
+
+# -- the details, told to a student (the screen's fold and the report's) -------------------------
+@dataclass(frozen=True)
+class FigureMeans:
+    """A gain figure told to a student: ``what`` it measures, and ``why`` it matters."""
+
+    what: str
+    why: str
+
+
+MEANS: dict[str, FigureMeans] = {
+    "angle_rms": FigureMeans(
+        "how far the model's wheel angle drifts from the one the encoder counted",
+        "the encoder counts the angle itself, so small speed errors that add up over the run "
+        "show there even where the speed's noise hides them",
+    ),
+    "heldout_rmse": FigureMeans(
+        "the speed error on steps each model was not fitted to",
+        "the check fitted each model with those steps left out: a model that only bends to "
+        "the rows it was fitted to gains nothing there, so it is the fairest test of whether "
+        "the added cause is real",
+    ),
+    "above_noise": FigureMeans(
+        "the speed error beyond the speed's own noise",
+        "no model can follow the noise, the sample-to-sample scatter of the measured speed; "
+        "only the error above it says something about the model",
+    ),
+    "above_floor": FigureMeans(
+        "the speed error beyond the encoder's counting steps",
+        "a speed made from whole counts jumps by a count's worth from sample to sample "
+        "whatever the motor does; only the error above that says something about the model",
+    ),
+    "rmse": FigureMeans(
+        "the average speed error",
+        "it is the plainest measure of how far the model is off: the root of the mean "
+        "squared difference between the model's speed and the measured one",
+    ),
+}
+"""Each gain figure (by :func:`~minseg_tui.lab.views.check_text.stem`) told to a student:
+what it measures and why it matters."""
+
+PARAM_MEANS: dict[str, str] = {
+    "T": "the time constant",
+    "K": "the static gain",
+    "u_c": "the voltage dry friction takes off the drive",
+    "delay": "how late the motor answers the command",
+    "T2": "the second time constant",
+    "taps": "how many samples each logged speed averages",
+    "T_coast": "how slowly the wheel runs down while coasting",
+    "a_max": "the largest acceleration the current limit allows",
+}
+"""What each parameter of a model is, told to a student (one a cause adds is explained)."""
+
+
+def _cap(text: str) -> str:
+    return text[:1].upper() + text[1:]
+
+
+def _n(x: float) -> str:
+    return format_number(x, GAIN_DIGITS)
+
+
+def _lead_plain(r: CheckResult) -> str:
+    """The figure that leads told to a student: what it measures, its two values, why it
+    matters and why it leads for this run."""
+    g = r.lead
+    if g is None:
+        return ""
+    key = stem(g.figure)
+    b, e = figure(r.gain, key)
+    if b is None:
+        return ""
+    unit = figure_words(key).unit
+    named = r.finding.cause != "none" and e is not None
+    means = MEANS.get(key, FigureMeans(figure_words(key).name, ""))
+    what = f"{means.what} (the {figure_words(key).name})" if key in MEANS else means.what
+    values = (
+        f"{_n(b)} {unit} with the simple model, {_n(e)} {unit} with the extended one"
+        if named and e is not None
+        else f"{_n(b)} {unit} for the simple model"
+    )
+    them = "the models" if named else "the model"
+    if g.kind == "turning":
+        here = (
+            f"It leads here because the wheel stands still in {g.still} of {g.rows} rows, "
+            f"which makes the average speed error ({g.error:.3g} rad/s) look small; where it "
+            f"turns the error is {g.turning:.3g} rad/s against a noise of {g.noise:.3g} rad/s."
+        )
+    elif g.kind == "noisy":
+        here = (
+            f"It leads here because the speed error ({g.error:.3g} rad/s rms) is mostly the "
+            f"speed's own noise ({g.noise:.3g} rad/s), which hides what {them} get wrong."
+        )
+    elif g.kind == "heldout":
+        here = "It leads here because this run has steps to leave out."
+        if g.worse is not None:
+            hb, he = g.worse
+            here += (
+                f" The extended model predicts them worse ({hb:.3g} rad/s against {he:.3g}): "
+                "what the named cause gains on the rows it was fitted to does not carry over."
+            )
+    elif g.kind == "above":
+        here = (
+            f"It leads here because the speed's noise ({g.noise:.3g} rad/s rms) is a good part "
+            "of the error."
+        )
+    elif g.kind == "small_noise":
+        here = (
+            f"It leads here because the speed's noise ({g.noise:.3g} rad/s rms) is small "
+            f"against the errors, so the plain average tells {them} apart."
+        )
+    else:
+        here = "It leads here because the noise of this speed is not known."
+    why = f" It matters because {means.why}." if means.why else ""
+    return f"The figure that means most for this run: {what}: {values}.{why} {here}"
+
+
+def _evidence_plain(r: CheckResult) -> list[str]:
+    """Why the check names its cause (and each further one), told to a student: what it
+    reads off the log and how much of the simple model's error adding it removes; then why
+    the next best explanation lost."""
+    f = r.finding
+    e = f.evidence
+    out: list[str] = []
+    if isinstance(e, Plain):
+        out.append(f"Why no cause is named: {evidence_plain_none(e)}.")
+    else:
+        label = in_words(f.cause, plain=True)
+        out.append(
+            f"Why {label}, over the whole run: {shown(e, plain=True)}. Adding it removes "
+            f"{100 * e.reduction:.1f} % of the simple model's error (the error as the check "
+            "weighs it, each stretch against the noise there)."
+        )
+        for o in f.others:
+            out.append(
+                f"The check adds {short(o.cause, o.evidence)} too: "
+                f"{shown(o.evidence, plain=True)}; without it the "
+                f"model's error is {1 / max(1 - o.evidence.reduction, 1e-12):.1f} times as large."
+            )
+    runner = lost_plain(f.runner_up_why)
+    if runner:
+        out.append(runner)
+    return out
+
+
+def evidence_plain_none(p: Plain) -> str:
+    """The evidence when no cause is named, told to a student (the figures of the CLI's)."""
+    if p.how == "unexplained":
+        return "no cause the check knows explains what the simple model misses"
+    if p.how == "fits":
+        text = "the simple model fits the run"
+    elif p.how == "turning":
+        text = (
+            f"where the wheel turns ({p.turning} of {p.rows} rows; it stands still in the "
+            f"others) the simple model misses by {p.left_turning:.2g} rad/s rms more than the "
+            f"noise ({p.level:.3g} rad/s)"
+        )
+    elif p.how == "at_noise":
+        text = (
+            f"the simple model's average speed error is about the speed's noise: "
+            f"{p.rms:.3g} rad/s rms against a noise of {p.level:.3g} rad/s"
+        )
+    else:
+        text = (
+            f"the simple model misses by {p.left:.2g} rad/s rms more than the noise "
+            f"({p.level:.3g} rad/s), but no cause the check knows is clear enough to name"
+        )
+    if p.low_fit is not None:
+        text += (
+            f" (its fit is only {p.low_fit:.0f} % because that noise is large against the "
+            "speed's changes, not because the model is wrong)"
+        )
+    return text
+
+
+def _extended_plain(r: CheckResult, intervals: bool) -> str:
+    """The extended model told to a student: its parameters, what each one it adds is."""
+    e = r.extended
+    if r.finding.cause == "none":
+        return "Extended model: none needed; the simple model is enough for this run."
+    adds = [
+        f"{k} is {PARAM_MEANS[k]}" for k in e.params if k not in ("T", "K") and k in PARAM_MEANS
+    ]
+    return (
+        f"The extended model, {in_words(e.model, plain=True)}: "
+        f"{params(e.params, e.intervals if intervals else None)}"
+        + (f"; {', '.join(adds)}" if adds else "")
+        + "."
+    )
+
+
+def _others_plain(r: CheckResult) -> str:
+    """The figures that do not lead, simple -> extended, each named by what it measures."""
+    named = r.finding.cause != "none"
+    lead = stem(r.lead.figure) if r.lead is not None else ""
+    said = []
+    for key in FIGURES:
+        if key == lead:
+            continue
+        b, e = figure(r.gain, key)
+        if b is None or (b == 0 and not e):
+            continue
+        unit = figure_words(key).unit
+        what = MEANS[key].what if key in MEANS else figure_words(key).name
+        said.append(
+            f"{what}: {_n(b)} → {_n(e)} {unit}"
+            if named and e is not None
+            else f"{what}: {_n(b)} {unit}"
+        )
+    if not said:
+        return ""
+    head = "The other figures, simple → extended model" if named else "The other figures"
+    return f"{head}: " + "; ".join(said) + "."
+
+
+def _log_plain(s: Sampling) -> str:
+    """How the log was sampled and how finely its speed is counted, told to a student."""
+    times = every(s) + (f"; {s.lost} sample(s) lost" if s.lost else "")
+    if s.resolution is not None:
+        res = f"one encoder count in a sample is {s.resolution:.3g} rad/s of speed"
+    elif s.smooth:
+        res = (
+            "the speed is smooth, not counted in encoder steps (a tachometer or a filtered signal)"
+        )
+    else:
+        res = "how finely the encoder counts is not known"
+    return f"The log: {times}; {res}."
+
+
+def _noise_plain(r: CheckResult) -> str:
+    """How closely any model can follow this speed, told to a student (the noise figures)."""
+    g = r.gain
+    parts = []
+    if g.noise_floor is not None:
+        parts.append(
+            "the speed is worked out from whole encoder counts, so one count more or less in "
+            f"a sample moves it by a step; that alone scatters it by {_n(g.noise_floor)} "
+            "rad/s rms"
+        )
+    parts.append(f"the measured speed scatters by {_n(g.noise)} rad/s from sample to sample")
+    if g.angle_floor is not None:
+        parts.append(f"the angle itself is known to {_n(g.angle_floor)} rad")
+    return (
+        "How closely any model can follow this speed: "
+        + "; ".join(parts)
+        + ". An error of that size says nothing about a model; only the part above it does."
+    )
+
+
+CANNOT_SHOW = "What this run cannot show:"
+"""The heading of the caveats told to a student (the screen's details and the report's)."""
+
+IN_THE_LOG = "What stands out in the log (left apart from the causes):"
+"""The heading of the anomalies told to a student."""
+
+
+@dataclass(frozen=True)
+class Details:
+    """The details a student opens after the lead: ``said``, one paragraph each (the simple
+    model, why its T is not Tasks 11-12's, the figure that leads, the evidence, the extended
+    model, the other figures, the noise); ``cannot``, what this run cannot show
+    (:data:`CANNOT_SHOW`); ``in_log``, what stands out in the log (:data:`IN_THE_LOG`)."""
+
+    said: tuple[str, ...]
+    cannot: tuple[str, ...] = ()
+    in_log: tuple[str, ...] = ()
+
+    def lines(self) -> tuple[str, ...]:
+        """Everything as lines for the screen: the paragraphs, then each list under its
+        heading, one '- ' line an item."""
+        out = list(self.said)
+        for head, items in ((CANNOT_SHOW, self.cannot), (IN_THE_LOG, self.in_log)):
+            if items:
+                out += [head, *(f"- {x}" for x in items)]
+        return tuple(out)
+
+
+def details(r: CheckResult, two_fits_said: str = "", intervals: bool = False) -> Details:
+    """The details a student opens after the lead (the screen's fold, the report's): each
+    figure said with what it measures and why it matters; the simple model the check fitted
+    (``two_fits_said``: why its T is not Tasks 11-12's, '' when not of one run), the figure
+    that leads, the evidence, the extended model (its 95 % intervals when ``intervals``),
+    the other figures, the noise, what the run cannot show and what stands out in the log.
+    The CLI's specialist text is :func:`minseg_tui.lab.views.check_text.text`."""
+    b = r.baseline
+    said = [
+        "The simple model, the first-order line on the plots, is the first-order model the "
+        "check fitted to this run itself "
+        f"and ran on the recorded voltage: {params(b.params, b.intervals if intervals else None)}; "
+        "neither the group's model of Task 14 nor the least-squares reading of Tasks 11-12."
+    ]
+    if r.sampling is not None:
+        said.insert(0, _log_plain(r.sampling))
+    if two_fits_said:
+        said.append(two_fits_said)
+    said += [x for x in (_lead_plain(r),) if x]
+    said += _evidence_plain(r)
+    said.append(_extended_plain(r, intervals))
+    said += [x for x in (_others_plain(r), _noise_plain(r)) if x]
+    return Details(
+        tuple(said),
+        tuple(caveat_plain(c) for c in r.finding.caveats),
+        tuple(f"{_cap(anomaly(a))}." for a in r.anomalies),
+    )

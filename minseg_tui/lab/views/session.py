@@ -36,11 +36,9 @@ from minseg_tui.lab.state import shown as lab_shown
 from minseg_tui.lab.state.entries import choice_words, read_entry
 from minseg_tui.lab.state.results import Comparison, Notice
 from minseg_tui.lab.state.session import Entry, Session, TableRow
-from minseg_tui.lab.views import check_params as model_words
-from minseg_tui.lab.views import check_says, check_text, check_words
+from minseg_tui.lab.views import check_says, check_words
 from minseg_tui.lab.views.check_says import in_words
 from minseg_tui.model import identify as model_identify
-from minseg_tui.model.check.figures import Gain
 from minseg_tui.model.identify.identification import determined
 from minseg_tui.model.identify.rises import E63
 from minseg_tui.model.runlog import RunLog
@@ -1222,17 +1220,14 @@ class CheckView:
     """The model check of one run: measured, baseline and extended speeds (rad/s) at t (s),
     residual = measured - baseline; the close-up where the cause acts (``close_*``: the same
     speeds over its stretch, ``close_what`` in words, ``noise`` the speed's noise level
-    there, rad/s); ``lead``: the gain figure that means most for this log, in one line, and
-    ``lead_why``; ``cause`` (the contract name) and ``cause_words`` (every cause named, in
-    words), ``evidence`` in words, the extended model with its
-    parameters, the other figures (``gain``), ``notes`` (what the check cannot say, the
-    anomalies; one line each); ``problem``: why there is no result. ``story``: the two or
-    three sentences a student reads first (:func:`minseg_tui.lab.views.check_words.lead`), about
-    the close-up, whose title with its time span is ``close_title``; the rest are the
-    details, among them ``first_order`` (the first-order model the check fitted and
-    simulated, with its parameters) and ``two_fits`` (why its T is not the program's
-    least-squares one of Tasks 11-12, whose reading that is; '' when they are not of one
-    run)."""
+    there, rad/s); ``cause`` (the contract name) and ``cause_words`` (every cause named, in
+    words); ``problem``: why there is no result. ``story``: the two or three sentences a
+    student reads first (:func:`minseg_tui.lab.views.check_words.lead`), about the close-up,
+    whose title with its time span is ``close_title``; ``details``: what follows in the fold,
+    each figure with what it measures and why it matters
+    (:func:`~minseg_tui.lab.views.check_words.details`), among them ``two_fits`` (why the
+    check's T is not the program's least-squares one of Tasks 11-12, whose reading that is;
+    '' when they are not of one run)."""
 
     run: str | None
     t: FloatArray = field(default_factory=_empty)
@@ -1241,23 +1236,17 @@ class CheckView:
     extended: FloatArray = field(default_factory=_empty)
     residual: FloatArray = field(default_factory=_empty)
     cause: str = ""
-    evidence: str = ""
-    extended_model: str = ""
-    gain: str = ""
     problem: str = ""
-    lead: str = ""
-    lead_why: str = ""
     close_t: FloatArray = field(default_factory=_empty)
     close_omega: FloatArray = field(default_factory=_empty)
     close_baseline: FloatArray = field(default_factory=_empty)
     close_extended: FloatArray = field(default_factory=_empty)
     close_what: str = ""
     noise: float | None = None
-    notes: tuple[str, ...] = ()
     cause_words: str = ""
     story: tuple[str, ...] = ()
     close_title: str = ""
-    first_order: str = ""
+    details: tuple[str, ...] = ()
     two_fits: str = ""
     other_T: str = ""
     """With ``two_fits``: the sentence on screen after ``story`` giving Tasks 11-12's
@@ -1267,60 +1256,19 @@ class CheckView:
     first-order model it fitted, and so the model (none without a result)."""
 
 
-_stem = check_text.stem
-
-
-def _figure(gain: Gain, key: str, named: bool) -> str | None:
-    """'first order 0.117 → extended 0.112 rad/s' for figure ``key`` (either prefix), or
-    None when the log does not give it; only the baseline's when no cause was named."""
-    c = check_text.compared(gain, key, named)
-    if c is None or (c.b == 0 and not c.e):
-        return None  # not to be had, or nothing to show (no error above the noise at all)
-    if c.extended is None:
-        return f"first order {c.with_unit(c.first)}"
-    if c.to_noise:
-        shown = c.with_unit(c.first)
-        return f"first order {shown} → extended 0 (rms error no larger than the noise)"
-    return f"first order {c.first} → extended {c.with_unit(c.extended)}"
-
-
 def check(session: Session) -> CheckView:
     """The model check of the run Tasks 11-15 use (a worker's job: up to 0.5 s)."""
     mc = session.model_check()
     r = mc.result
     if r is None:
         return CheckView(mc.run, problem=mc.problem or "no result")
-    f, e, g = r.finding, r.extended, r.gain
-    named = f.cause != "none"
-    ext = (
-        f"{in_words(e.model)}: {model_words.params(e.params)}"
-        if named
-        else "none needed (the baseline is enough)"
-    )
-    lead, lead_why = "", ""
-    led = _stem(r.lead.figure) if r.lead is not None else ""
-    if r.lead is not None:
-        shown = _figure(g, r.lead.figure, named)
-        if shown is not None:
-            lead = f"{check_text.figure_words(led).name}: {shown}"
-            lead_why = check_says.lead_why(r.lead)
-    others = [
-        f"{check_text.FIGURES[stem].name} {shown}"
-        for stem in check_text.FIGURES
-        if stem != led and (shown := _figure(g, stem, named)) is not None
-    ]
-    floor = g.get("noise_floor")
-    if floor is not None:
-        others.insert(0, f"encoder noise floor {format_value(floor, 'rad/s', 3)}")
+    f = r.finding
     omega = np.asarray(r.omega, dtype=float)
     baseline = np.asarray(r.baseline_pred, dtype=float)
     extended = np.asarray(r.extended_pred, dtype=float)
     t = np.asarray(r.t, dtype=float)
     cu = r.close_up
     window = slice(cu.start, cu.end) if cu is not None else slice(0, 0)
-    notes = tuple(f"cannot say: {check_says.caveat(c)}" for c in f.caveats) + tuple(
-        f"anomaly: {check_says.anomaly(a)}" for a in r.anomalies
-    )
     u: FloatArray | None = None  # unread: the story says less about the close-up's step
     if mc.run is not None:
         try:
@@ -1343,23 +1291,16 @@ def check(session: Session) -> CheckView:
         extended,
         omega - baseline,
         f.cause,
-        check_says.evidence(f),
-        ext,
-        "; ".join(others),
-        lead=lead,
-        lead_why=lead_why,
         close_t=t[window],
         close_omega=omega[window],
         close_baseline=baseline[window],
         close_extended=extended[window],
         close_what=check_says.close_up_what(cu) if cu is not None else "",
-        noise=cu.noise if cu is not None else floor,
-        notes=notes,
-        cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)])),
+        noise=cu.noise if cu is not None else r.gain.noise_floor,
+        cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)]), plain=True),
         story=check_words.lead(r, u),
         close_title=check_words.close_up_title(r),
-        first_order="first-order model the check fitted to this run and simulated: "
-        + model_words.params(r.baseline.params),
+        details=check_words.details(r, two_fits).lines(),
         two_fits=two_fits,
         other_T=check_words.other_T(st.T) if two_fits and st is not None else "",
         shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),

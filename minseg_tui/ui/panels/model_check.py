@@ -21,7 +21,7 @@ from minseg_tui.ui.widgets.plots import Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.textbox import TextBox
 
-DETAILS = "Details: figures, evidence, noise · Enter opens"
+DETAILS = "Details: what each figure means · Enter opens"
 """The fold's title (the details follow the sentences a student reads first)."""
 
 FOLD_SHUT, FOLD_OPEN = "+", "−"
@@ -35,9 +35,10 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
     acts (measured, both models, and their residuals against the noise floor), F9 switches
     to the whole log and back; under it two or three sentences a student reads first (what
     the simple model gets wrong at the close-up's step, the likely cause in everyday words,
-    how much better the extended model does), then a fold with the details: the figure
-    that leads and why, the check's evidence, the extended model, the other figures and
-    what the check cannot say. A log recorded elsewhere can be loaded (Enter in the path
+    how much better the extended model does), then a fold with the details, each figure
+    with what it measures and why it matters: the simple model, the figure that leads,
+    why the cause, the extended model, the other figures, the noise and what the run cannot
+    show. A log recorded elsewhere can be loaded (Enter in the path
     asks for it): its box stands under the step's notes (:meth:`after_rows`), so that Tab
     reaches the notes first and notes are never typed into it."""
 
@@ -91,19 +92,7 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             f"{key_hint('zoom_next', 'the close-up the words speak of')}"
         )
         story.update("\n".join([where, " ".join([*v.story, v.other_T]).rstrip()]))
-        text = [f"cause: {v.cause_words or v.cause}"]
-        if v.first_order:
-            text.append(v.first_order)
-        if v.two_fits:
-            text.append(v.two_fits)
-        if v.lead:
-            text += [f"{v.lead}", f"(this figure leads: {v.lead_why})"]
-        text += [
-            f"the check's evidence, over the whole log: {v.evidence}",
-            f"extended model: {v.extended_model}",
-            f"also: {v.gain}",
-        ]
-        text += [f"! {n}" for n in v.notes]
+        text = [f"cause: {v.cause_words or v.cause}", *v.details]
         lines.update("\n".join(text))
 
     def _plot(self) -> None:
