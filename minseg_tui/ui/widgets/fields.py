@@ -963,6 +963,12 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         has one): a widget scrolled into view goes below them."""
         return 0
 
+    @property
+    def follows_keys(self) -> bool:
+        """Whether what keeps the row with the keys in view may scroll the form (always here;
+        the lab's step form stops once the group scrolled it since the keys last moved)."""
+        return True
+
     @contextmanager
     def placing(self) -> Iterator[None]:
         """Scrolls made in one go to place an entry (landing: the step's top, then the
