@@ -10,6 +10,7 @@ state through bound reactive attributes, and views of the session built in a wor
 from __future__ import annotations
 
 import asyncio
+import re
 from collections.abc import Callable, Sequence
 from functools import partial
 from inspect import isawaitable
@@ -524,6 +525,14 @@ class StepPane(FieldForm):
         bottom = top + region.height
         return top >= 0 and bottom <= view.height and bottom > heading.rows(view.width)
 
+    def covered_rows(self, y: int) -> int:
+        """Rows the heading covers at the step's top while it is scrolled to ``y`` (it shows
+        once the step's title is scrolled away)."""
+        heading = self._heading
+        if heading is None or not (y > 0 or heading.whole):
+            return 0
+        return heading.rows(self.scrollable_content_region.width)
+
     @property
     def heading_rows(self) -> int:
         """Rows the heading covers at the top of the step (0 while it is hidden)."""
@@ -757,9 +766,22 @@ class StepCommands(Provider):
     async def search(self, query: str) -> Hits:
         matcher = self.matcher(query)
         for text, action, help_text in self.entries():
-            score = matcher.match(text)
+            score = max(matcher.match(name) for name in searched_as(text))
             if score > 0:
                 yield Hit(score, matcher.highlight(text), action, text=text, help=help_text)
+
+
+def searched_as(text: str) -> list[str]:
+    """What a palette entry is found by: its text, and for a step of several tasks ('Go to:
+    Tasks 6-9: k_v, k_a and f') the text with each task's own number ('… Task 8: …'): the
+    manual names Task 7, 8 and 9, and 'task 8' matched nothing."""
+    many = re.search(r"\bTasks (\d+)-(\d+)", text)
+    if many is None:
+        return [text]
+    first, last = int(many[1]), int(many[2])
+    return [text] + [
+        text[: many.start()] + f"Task {n}" + text[many.end() :] for n in range(first, last + 1)
+    ]
 
 
 NO_MATCH = "no command matches"
@@ -783,7 +805,7 @@ class NoMatch(Provider):
         if not query.strip():
             return
         matcher = self.matcher(query)
-        if any(matcher.match(title) > 0 for title in self.titles()):
+        if any(matcher.match(name) > 0 for title in self.titles() for name in searched_as(title)):
             return
         text = f"{NO_MATCH} '{query.strip()}'"
         yield Hit(
