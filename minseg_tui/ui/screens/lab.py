@@ -1412,10 +1412,9 @@ class LabScreen(StatusScreen):
             return
         if read_only:  # walk 14, D1: the reveal's save raised, and the program died
             self.notify(f"computed values shown here, not recorded: {read_only}")
-        else:
-            self.notify(
-                "computed values shown; the report says they were revealed before answering"
-            )
+        # else no notice: the step's comparisons say it beside each value shown ("revealed
+        # before answering (Ctrl+R): the report says so"); a notice over the step's top
+        # covered Task 12's title and three rows of the plot being read for 5 s at 80x24
         self._changed()
 
     @on(LogImportRequested)
