@@ -76,32 +76,47 @@ async def test_tasks_11_to_15_land_alike_in_either_order(quiet, monkeypatch):
     assert landed[True] == landed[False]
 
 
-async def test_a_reading_judged_on_task5_leaves_the_step_where_either_order_does(
-    quiet, monkeypatch
+@pytest.mark.parametrize("worst", [False, True], ids=["textual-order", "callbacks-first"])
+@pytest.mark.parametrize("way", ["one-burst", "burst-then-enter", "key-by-key", "paused-keys"])
+async def test_a_reading_judged_on_task5_leaves_the_step_the_same_way_every_time(
+    quiet, monkeypatch, way, worst
 ):
-    """'30,1', then Enter, on Task 5's 2.5 V row: the keys go on to the 3.5 V row, lifted
-    out from under the lines docked at the step's bottom (the multimeter). The lift,
-    deferred to after a refresh and once more after the next, lifted by the rows that
-    showed under the lines: when the second came before the first's scroll was drawn, it
-    lifted the row twice (the step scrolled by 4 rows, not 2). The step ends where
-    Textual's order leaves it. (Typed in one burst with the Enter, the lift may still read
-    the layout from before the 2.5 V row's hint went, and leave the step 2 rows lower: a
-    lift never lowers the step. Not pinned here: left open, see the stop's note.)"""
-    scrolls = []
-    for worst in (False, True):
-        app = quiet()
-        async with app.run_test(size=(80, 24)) as pilot:
-            await start(pilot, names=f"Group {len(scrolls) + 1}")
-            await goto(pilot, "task5")
-            if worst:
-                callbacks_before_layouts(monkeypatch)
-            await pilot.press(*"30,1")
-            await pilot.pause()
-            await pilot.press("enter")
-            await settle(pilot)
-            monkeypatch.undo()
-            await settle(pilot)
-            pane = lab_screen(app).pane
-            assert pane.current is app.screen.query_one(f"#{field_id('i_ss@3.5')}", FieldRow)
-            scrolls.append(pane.scroll_y)
-    assert scrolls[1] == scrolls[0]
+    """'30,1', then Enter, on Task 5's 2.5 V row at 80x24: the keys go on to the 3.5 V row,
+    lifted out from under the lines docked at the step's bottom (the multimeter) by the
+    least scroll that shows it whole: 2 rows, the judged 2.5 V row on rows 9-12, the 3.5 V
+    row on rows 13-18 above the multimeter's lines (row 19 on). Every way the keys can come:
+    in one burst with the Enter (walk 14, tmux's send-keys), the Enter in a burst of its
+    own, key by key (Pilot waits after each), each key followed by a pause; in Textual's
+    order and with what waits for the refresh run before every layout still to come. (In
+    one burst, the placing of the 3.5 V row read the layout from before the 2.5 V row's
+    hint went, and left the step scrolled by 4 rows: the 3.5 V row on rows 11-16, the 2.5 V
+    reading on rows 7-10.)"""
+    keys = [*"30,1", "enter"]
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task5")
+        if worst:
+            callbacks_before_layouts(monkeypatch)
+        if way == "one-burst":
+            await burst(pilot, *keys)
+        elif way == "burst-then-enter":
+            await burst(pilot, *keys[:-1])
+            await burst(pilot, "enter")
+        elif way == "key-by-key":
+            await pilot.press(*keys)
+        else:
+            for key in keys:
+                await pilot.press(key)
+                await pilot.pause()
+        await settle(pilot)
+        monkeypatch.undo()  # Textual's order again: the screen settles as it would
+        await settle(pilot)
+        pane = lab_screen(app).pane
+        judged = app.screen.query_one(f"#{field_id('i_ss@2.5')}", FieldRow)
+        keyed = app.screen.query_one(f"#{field_id('i_ss@3.5')}", FieldRow)
+        readout = app.screen.query_one(".readout")
+        assert judged.message == "read as 30.1 mA"
+        assert pane.current is keyed
+        assert (pane.scroll_y, judged.region.y, judged.region.bottom) == (2, 9, 13)
+        assert (keyed.region.y, keyed.region.bottom, readout.region.y) == (13, 19, 19)

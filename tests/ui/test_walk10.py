@@ -131,7 +131,8 @@ async def test_ctrl_r_with_nothing_computed_records_nothing_and_says_so(quiet):
     """D5 (walk 10, walk 3): Ctrl+R on Task 11 with a run but no u_ss showed dashes, said
     'computed values shown', and the session recorded both values as shown then; the report
     later said they were revealed at that time. Now nothing is recorded, the notice says
-    what is missing; once u_ss is in, Ctrl+R shows and records them."""
+    what is missing; once u_ss is in, Ctrl+R shows and records them (and the comparisons
+    say so, with no notice)."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await _task11_with_a_run_alone(pilot)
@@ -150,7 +151,9 @@ async def test_ctrl_r_with_nothing_computed_records_nothing_and_says_so(quiet):
         await goto(pilot, "task11")
         await pilot.press("ctrl+r")
         await settle(pilot)
-        assert said[-1].startswith("computed values shown"), said
+        # said in the step's comparisons, not in a notice over the step (issue 20)
+        assert "revealed before answering (Ctrl+R): the report says so" in _text(app, "#compare")
+        assert len(said) == 1, said
         assert "K = " in _text(app, "#results-lines")
         with app.session as s:
             assert s.revealed() == {"own.omega_step", "own.K"}

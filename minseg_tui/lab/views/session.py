@@ -495,8 +495,9 @@ def comparisons(session: Session, step_id: str) -> tuple[tuple[str, str, str], .
             comp += f"\n  {c.verdict}"
         if c.caveat:
             comp += f"\n  {c.caveat}"
-        if c.revealed_early:
-            comp += f" · {lab_compare.REVEALED_EARLY}"
+        if c.revealed_early:  # what Ctrl+R's notice said (it covered the plot read)
+            recorded = "" if session.readonly else ": the report says so"
+            comp += f" · {lab_compare.REVEALED_EARLY} ({REVEAL_KEY}){recorded}"
         if c.least_squares is not None:
             lsq = (
                 c.least_squares

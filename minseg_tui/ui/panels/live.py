@@ -173,15 +173,31 @@ class Readout(Vertical):
     """The lines docked at the bottom of a step (:meth:`LivePanel.readout`). An entry of the
     step that takes the focus under them (Tab: Textual scrolls a widget into view only when
     it is outside the step, and these lines lie inside it) is scrolled up above them: its
-    whole row when it fits, else its box."""
+    whole row when it fits, else its box.
+
+    The lift is made on the screen's layouts (:meth:`_laid_out`, called as each is made, the
+    regions fresh), never from a callback deferred to after a refresh: such a callback may
+    run before a layout still to come, and on Task 5 '30,1 Enter' typed in one burst lifted
+    the 3.5 V entry from where it lay before the 2.5 V row's hint went (by 4 rows where 2
+    show it whole). A layout that moves the entry places it again: from the scroll the step
+    had before the lift while the step is still where the last lift left it (a lift read
+    from a layout that a later one replaced is undone down to that), else from where the
+    step is (another placing or the group moved it: never lowered)."""
 
     def __init__(self, *parts: Widget) -> None:
         super().__init__(*parts, classes="readout")
+        self._lifting: Widget | None = None
+        """The box (or focused widget) the lift is for (None: no lift asked yet)."""
+        self._lift_from = 0
+        """The step's scroll before the lift for :attr:`_lifting` began."""
+        self._lifted: int | None = None
+        """The scroll the last lift left the step at (None: none made for it yet)."""
 
     def on_mount(self) -> None:
         self.watch(self.screen, "focused", self._moved, init=False)
         if isinstance(self.parent, FieldForm):
             self.watch(self.parent, "current", self._moved, init=False)
+        self.screen.screen_layout_refresh_signal.subscribe(self, self._laid_out, immediate=True)
 
     def on_resize(self) -> None:
         """The lines changed height (a line wrapped, or the "waiting for samples" line went):
@@ -189,15 +205,31 @@ class Readout(Vertical):
         self._moved()
 
     def _moved(self) -> None:
-        if self._target() is None:
+        """The focus moved, or these lines changed height: the lift comes with the next
+        layout, which is asked for (a move of the focus alone lays nothing out)."""
+        target = self._target()
+        if target is None:
             return
+        if target is not self._lifting:
+            self._lifting, self._lifted = target, None
+        self.screen.refresh(layout=True)
 
-        def lift(again: bool) -> None:
-            self._lift()
-            if again:  # once more when the layout has settled (a hint moved under its box)
-                self.call_after_refresh(lift, False)
-
-        self.call_after_refresh(lift, True)
+    def _laid_out(self, _: object) -> None:
+        step = self.parent
+        target = self._target()
+        if target is None or target is not self._lifting or not isinstance(step, FieldForm):
+            return
+        if not step.follows_keys:  # the group scrolled away: the step stays where they put it
+            self._lifting = None
+            return
+        now = round(step.scroll_y)
+        if self._lifted != now:  # no lift of ours made yet, or the step was moved since
+            self._lift_from = now
+        y = self._lift_to(step, target, self._lift_from)
+        if y is not None and y != now:
+            with step.placing():  # a placing of the step's entry (the step's own follow it)
+                step.scroll_to(y=y, animate=False, immediate=True)
+        self._lifted = round(step.scroll_y)
 
     def _target(self) -> Widget | None:
         """Where the focus is in the step: the box of its form's current row, or a focused
@@ -213,16 +245,11 @@ class Readout(Vertical):
             return None
         return focused
 
-    def _lift(self) -> None:
-        step = self.parent
-        focused = self._target()
-        if not (
-            isinstance(step, FieldForm)
-            and focused is not None
-            and focused.is_attached
-            and self.is_attached
-        ):
-            return
+    def _lift_to(self, step: FieldForm, focused: Widget, base: int) -> int | None:
+        """The scroll that shows ``focused``'s whole row above these lines, else its box, and
+        below the step's heading, at least ``base`` (None: the layout does not show them)."""
+        if not (focused.is_attached and self.is_attached):
+            return None
         row = next(
             (
                 a
@@ -231,22 +258,19 @@ class Readout(Vertical):
             ),
             focused,
         )
-        # Worked out in the step's content, from the layout, not from where the screen last
-        # drew the rows: a lift deferred to after a refresh may come before the scroll of the
-        # one before it is drawn, and a lift by the rows that showed under these lines then
-        # lifted the entry twice (on Task 5, '30,1 Enter' left the step scrolled by 2, 4 or
-        # 8 rows by the timing alone). Read so, a second lift finds nothing to do.
+        # Worked out in the step's content (the row's place in it does not change as the
+        # step scrolls), from the layout just made.
         view = step.scrollable_content_region
         drawn = row.region
         if not (drawn and self.region) or row.parent is not step:
-            return
+            return None
         room = self.region.y - view.y  # the step's rows above these lines
         for shown in (row, focused):
             top = row.virtual_region.y + shown.region.y - drawn.y
             y = top + shown.region.height - room  # the least scroll that shows it whole
-            if y <= step.scroll_y:
-                return
+            if y <= base:
+                return base
             # below the step's heading, which covers its top while it is scrolled down
             if top - y >= step.heading_rows:
-                step.scroll_to(y=y, animate=False, immediate=True)
-                return
+                return y
+        return base

@@ -16,6 +16,7 @@ from minseg_tui.lab.views.session import TableView
 from minseg_tui.quantities import MISSING
 from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.panels.view_panel import ViewPanel
+from minseg_tui.ui.widgets.fields import FieldForm
 from minseg_tui.ui.widgets.prose import Prose
 
 
@@ -44,6 +45,10 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         super().__init__()
         self._warnings = Prose("", id="warnings", classes="para")
         self._formula_asked = False
+        self._showing: tuple[object, ...] | None = None
+        """While F7 from elsewhere on the step has given the table the keys: the layout the
+        table and the formula's line were last brought into view on (() before the first),
+        else None (:meth:`_laid_out`)."""
 
     def compose(self) -> ComposeResult:
         yield CellTable(id="table", cursor_type="cell", zebra_stripes=False, header_height=2)
@@ -51,6 +56,30 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
             f"{key_name('formula')} on a cell: the formula behind it.", id="formula", classes="hint"
         )
         yield Prose("", id="results")
+
+    def on_mount(self) -> None:
+        self.screen.screen_layout_refresh_signal.subscribe(self, self._laid_out, immediate=True)
+
+    def _laid_out(self, _: object) -> None:
+        """The screen was laid out (the regions fresh): after F7 from the step's entries, the
+        table, its cursor's cell and the formula's line under it are brought into view below
+        the step's heading, on each layout that moves them while the table has the keys. A
+        scroll made after a refresh read the layout from before the formula's new text, and
+        another scroll of the step came after it: at 80x24, with the group's k_v, k_a and f
+        judged under the table, the formula's line ended under the heading and the table
+        with its cursor above the screen (walk 14's D3)."""
+        if self._showing is None:
+            return
+        table = self.query_one(DataTable)
+        form = self.parent
+        if not (self.screen.focused is table and isinstance(form, FieldForm)):
+            self._showing = None
+            return
+        line = self.query_one("#formula", Prose)
+        where = (table.region, line.region, form.scrollable_content_region)
+        if where != self._showing:
+            self._showing = where
+            form.show_whole(table, line)
 
     def after_rows(self) -> Widget:
         """The warnings, shown under the group's entries."""
@@ -100,9 +129,12 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         cell = self.view.rows[r][c]
         line = self.query_one("#formula", Prose)
         line.update(cell.formula or f"{cell.text}: measured, no formula")
-        if not table.has_focus:
-            table.focus()
-            line.call_after_refresh(line.scroll_visible, animate=False)
+        if self.screen.focused is not table:
+            # at once (Widget.focus waits for the app's next turn, and a layout between took
+            # the table for not focused)
+            self.screen.set_focus(table, scroll_visible=False)
+            self._showing = ()
+            self.screen.refresh(layout=True)  # brought into view on the next layout
 
     def on_data_table_cell_selected(self, _event: DataTable.CellSelected) -> None:
         self.action_formula()

@@ -10,6 +10,7 @@ state through bound reactive attributes, and views of the session built in a wor
 from __future__ import annotations
 
 import asyncio
+import re
 from collections.abc import Callable, Sequence
 from functools import partial
 from inspect import isawaitable
@@ -256,6 +257,14 @@ class StepPane(FieldForm):
         mouse wheel and its own arrow-key actions)."""
         self._landed_at: tuple[object, ...] | None = None
         """The layout the landed entry was last placed on (:meth:`laid_out`)."""
+        self._moved: tuple[FieldRow, int] | None = None
+        """The entry the keys last moved to within the step (not a landing: Enter, Tab, a
+        character typed off the rows) and the step's scroll when they did."""
+        self._moved_at: tuple[object, ...] | None = None
+        """The layout that entry was last placed on (:meth:`laid_out`)."""
+        self._left_at: int | None = None
+        """The scroll the form's last placing left the step at (None: none since the keys
+        moved)."""
 
     def on_mount(self) -> None:
         self.screen.screen_layout_refresh_signal.subscribe(self, self.laid_out, immediate=True)
@@ -268,14 +277,48 @@ class StepPane(FieldForm):
         last when the screen came to them, and a layout often follows another (the step's
         scrollbar comes with the one after the layout that made the step taller than its
         view; the panel's view, a hint moving under its box): where the entry landed
-        depended on the timing (Task 5 by 0 or 3 rows, Tasks 4 and 11-15 by up to 3)."""
+        depended on the timing (Task 5 by 0 or 3 rows, Tasks 4 and 11-15 by up to 3). An
+        entry the keys moved to since is placed again the same way, from the scroll the step
+        had when they moved (:meth:`_place_moved_again`)."""
         landed = self._keep
-        if not isinstance(landed, FieldRow) or landed is not self.keyed or self.is_placing:
+        if self.is_placing:
             return
-        where = landed.layout_key()
-        if where != self._landed_at:
-            self._landed_at = where
-            landed.place_now(landing=True)
+        if isinstance(landed, FieldRow) and landed is self.keyed:
+            where = landed.layout_key()
+            if where != self._landed_at:
+                self._landed_at = where
+                landed.place_now(landing=True)
+            return
+        self._place_moved_again()
+
+    def _place_moved_again(self) -> None:
+        """The entry the keys moved to (Enter, Tab), placed again from the scroll the step had
+        when they moved, after a layout that moved it, while the step is where the last
+        placing left it (nothing else scrolled it since: the group, a notice making room).
+        A placing deferred to after a refresh may run before a layout still to come: '30,1
+        Enter' typed on Task 5 in one burst placed the 3.5 V entry where it lay before the
+        2.5 V row's hint went, and scrolled the step by 4 rows where 2 show it whole."""
+        moved = self._moved
+        row = self.keyed
+        if moved is None or row is not moved[0] or self._keep == "scrolled":
+            return
+        where = row.layout_key()
+        if where == self._moved_at:
+            return
+        self._moved_at = where
+        if self._left_at != round(self.scroll_y):
+            return
+        with self.placing():
+            self.scroll_to(y=moved[1], animate=False, immediate=True)
+            row.place_now()
+
+    def focus_row(self, row: FieldRow, landing: bool = False) -> None:
+        if landing:
+            self._moved = None
+        elif self._moved is None or self._moved[0] is not row:
+            self._moved, self._moved_at = (row, round(self.scroll_y)), None
+            self._left_at = None
+        super().focus_row(row, landing)
 
     async def show(self, step: Step, panel: Widget | None, rows: Sequence[FieldRow]) -> None:
         """Put ``step``'s widgets in the form in place of the last step's; return once they
@@ -284,7 +327,7 @@ class StepPane(FieldForm):
         # current (its label, its box), about a sixth of a step change's CPU, just before
         # the row is removed
         self.set_reactive(FieldForm.current, None)
-        self._keep = "focused"
+        self._keep, self._moved = "focused", None
         widgets: list[Widget] = []
         text = self._text
         if text is None:
@@ -453,6 +496,7 @@ class StepPane(FieldForm):
             self._heading.display = self._heading_wanted()
 
     def placed(self) -> None:
+        self._left_at = round(self.scroll_y)
         if self._heading is not None:
             self._heading.display = self._heading_wanted()
 
@@ -480,6 +524,14 @@ class StepPane(FieldForm):
         top = region.y - round(self.scroll_y)
         bottom = top + region.height
         return top >= 0 and bottom <= view.height and bottom > heading.rows(view.width)
+
+    def covered_rows(self, y: int) -> int:
+        """Rows the heading covers at the step's top while it is scrolled to ``y`` (it shows
+        once the step's title is scrolled away)."""
+        heading = self._heading
+        if heading is None or not (y > 0 or heading.whole):
+            return 0
+        return heading.rows(self.scrollable_content_region.width)
 
     @property
     def heading_rows(self) -> int:
@@ -527,6 +579,10 @@ class StepPane(FieldForm):
 
     def on_mouse_scroll_up(self, _: events.MouseScrollUp) -> None:
         self._group_scrolled()
+
+    @property
+    def follows_keys(self) -> bool:
+        return self._keep != "scrolled"
 
     def _group_scrolled(self) -> None:
         """The group scrolls: the step stays where they put it."""
@@ -710,9 +766,22 @@ class StepCommands(Provider):
     async def search(self, query: str) -> Hits:
         matcher = self.matcher(query)
         for text, action, help_text in self.entries():
-            score = matcher.match(text)
+            score = max(matcher.match(name) for name in searched_as(text))
             if score > 0:
                 yield Hit(score, matcher.highlight(text), action, text=text, help=help_text)
+
+
+def searched_as(text: str) -> list[str]:
+    """What a palette entry is found by: its text, and for a step of several tasks ('Go to:
+    Tasks 6-9: k_v, k_a and f') the text with each task's own number ('… Task 8: …'): the
+    manual names Task 7, 8 and 9, and 'task 8' matched nothing."""
+    many = re.search(r"\bTasks (\d+)-(\d+)", text)
+    if many is None:
+        return [text]
+    first, last = int(many[1]), int(many[2])
+    return [text] + [
+        text[: many.start()] + f"Task {n}" + text[many.end() :] for n in range(first, last + 1)
+    ]
 
 
 NO_MATCH = "no command matches"
@@ -736,7 +805,7 @@ class NoMatch(Provider):
         if not query.strip():
             return
         matcher = self.matcher(query)
-        if any(matcher.match(title) > 0 for title in self.titles()):
+        if any(matcher.match(name) > 0 for title in self.titles() for name in searched_as(title)):
             return
         text = f"{NO_MATCH} '{query.strip()}'"
         yield Hit(
@@ -1343,10 +1412,9 @@ class LabScreen(StatusScreen):
             return
         if read_only:  # walk 14, D1: the reveal's save raised, and the program died
             self.notify(f"computed values shown here, not recorded: {read_only}")
-        else:
-            self.notify(
-                "computed values shown; the report says they were revealed before answering"
-            )
+        # else no notice: the step's comparisons say it beside each value shown ("revealed
+        # before answering (Ctrl+R): the report says so"); a notice over the step's top
+        # covered Task 12's title and three rows of the plot being read for 5 s at 80x24
         self._changed()
 
     @on(LogImportRequested)

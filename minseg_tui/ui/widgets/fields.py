@@ -963,6 +963,35 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         has one): a widget scrolled into view goes below them."""
         return 0
 
+    def covered_rows(self, y: int) -> int:
+        """Rows a heading covers at the form's top while it is scrolled to ``y`` (none here;
+        the lab's step form has one once it scrolls)."""
+        return 0
+
+    def show_whole(self, first: Widget, last: Widget) -> None:
+        """Scroll the least that shows the form's widgets ``first`` down to ``last`` whole,
+        below the rows a heading covers, read from the layout the screen has now; nothing
+        when they show already. Where they do not fit, their top shows."""
+        view = self.scrollable_content_region
+        now = round(self.scroll_y)
+        if not (first.region and last.region):
+            return
+        top = first.region.y - view.y + now
+        bottom = last.region.bottom - view.y + now
+        if top >= now + self.covered_rows(now) and bottom <= now + view.height:
+            return
+        under = max(top - self.covered_rows(1), 0)  # their top just under the heading
+        if top >= now + self.covered_rows(now):  # they reach below the view: up from there
+            y = bottom - view.height
+            under = y if top >= y + self.covered_rows(y) else under
+        self.scroll_to(y=under, animate=False, immediate=True)
+
+    @property
+    def follows_keys(self) -> bool:
+        """Whether what keeps the row with the keys in view may scroll the form (always here;
+        the lab's step form stops once the group scrolled it since the keys last moved)."""
+        return True
+
     @contextmanager
     def placing(self) -> Iterator[None]:
         """Scrolls made in one go to place an entry (landing: the step's top, then the
