@@ -1004,3 +1004,32 @@ def test_a_strong_hand_is_reported_no_further_back_than_its_departure_can_have_g
     # the crossing to the deepest row sets it, in proportion to the share crossed
     capped = Fit(("current_limit",), T, 20.0, Effects(rate=50.0), 0.0, 600)
     assert grown <= _grown(d, res, capped, ts) < T
+
+
+@pytest.mark.parametrize("from_edge", [False, True])
+def test_a_miss_that_runs_on_through_an_edge_is_no_late_step(from_edge):
+    # along a ramp at a current cap's rate, a shift of the edges moves the prediction by the
+    # same amount on every row, as a speed off by a constant does: a miss the model already
+    # had before the edge, running on after it, was timed as the step acting late (held-out
+    # current_limit 901002: "acts 8.7 ms late" at 10.99 s, the speed 0.29 rad/s below the
+    # model over the 1.1 s before the edge too; the generator issues every command at its
+    # row's time). The same miss starting at the edge is what a late step leaves: reported
+    from minseg_tui.model.check import anomalies as an
+
+    ts, rate, shift, n = 0.01, 40.0, 0.005, 650
+    t = ts * np.arange(n)
+    u = np.zeros(n)
+    for e, sign in zip((50, 170, 290, 410, 530), (1, -1, 1, -1, 1), strict=True):
+        u[e:] = 5.0 * sign
+    slope = np.sign(u) * rate  # the capped ramp the model follows, rad/s^2
+    pred = np.cumsum(slope * ts)
+    d_shift = -slope * shift  # every edge shift s later: the ramp shifted
+    res = np.random.default_rng(7).normal(0.0, 0.05, n)
+    late = 0.007  # s: the wheel on the ramp after row 410 is 7 ms behind, rate * late rad/s
+    res[410 if from_edge else 330 : 470] += rate * late
+    found = an.late_steps(t, u, res, d_shift, shift, ts, 0.1, pred, 0.0, np.ones(n, bool))
+    if from_edge:
+        assert [a.row for a in found] == [410]
+        assert found[0].size == pytest.approx(1e3 * late, abs=1.0)
+    else:
+        assert found == []
