@@ -1092,19 +1092,3 @@ def test_an_average_loses_to_a_delay_that_matches_the_corners_far_better():
         f"dead_time matches the speed itself far better on the {why.rows} samples where the "
         "two models differ"
     )
-
-
-def test_a_cause_beside_an_average_must_cut_the_speed_error_itself():
-    # an average's whitening sums the residual at its stride; a cause fitted beside it to what
-    # is left there, while the speed itself is matched worse, is no cause. Tuning seed 1066, an
-    # 11-tap average at 25 ms with a hand and a 125 ms stall: a 7 ms pole beside the average
-    # cut the whitened residual by 13 % (35.2 -> 30.5) and doubled the plain speed error away
-    # from the stall's rows (1.63 -> 3.78 (rad/s)^2); without the hand it was not named.
-    # Held-out hand 901001 (a cap of 188 rad/s^2 beside an 11-tap average) was the same
-    log = make(1066, ("velocity_filter",), touch=True)
-    assert log.touch is not None
-    r = check(log.t, log.u, log.omega)
-    assert named(r) == ["velocity_filter"]
-    assert r.extended.params["taps"] == 11
-    hand = next(a for a in r.anomalies if a.kind == "disturbance")
-    assert abs(hand.t - log.touch[0]) <= 0.15

@@ -479,8 +479,6 @@ def select(
             if not v.clear:
                 continue
             why = why_not(f, c)
-            if why is None and _strided_only(prob, f, current):
-                why = Reason("whitened_only")
             if why is None:
                 ok[c] = f
             elif c not in sel.left_out:
@@ -739,24 +737,6 @@ def _fit_pair(
             g = fit_causes(prob, causes, rng, raised, scan=scan, polish=(*polish, again.partner))
             f = g if g.sse_white < f.sse_white else f
     return f
-
-
-def _strided_only(prob: Problem, f: Fit, current: Fit) -> bool:
-    """True when ``f`` adds a cause beside an average (``current`` named with more than one
-    tap, ``f`` keeping its length) and cuts the whitened residual while the plain speed error
-    grows (sums of squares, the rows an average carries a stall's read into left out). The
-    whitening sums the residual at the average's stride, and a cause fitted to what is left
-    there, not to the speed, is no cause: the independent generator's held-out hand 901001,
-    an 11-tap average at 25 ms, took a current cap of 188 rad/s^2 beside it that halved the
-    whitened residual (62.3 -> 31.9) and raised the plain error from 6.32 to 7.61 (rad/s)^2,
-    and tuning seed 1066's hand (an 11-tap average at 25 ms, a 125 ms stall) a 7 ms pole
-    that cut it by 13 % and raised the plain error away from the stall's rows from 1.63 to
-    3.78; without the hand neither was named."""
-    taps = current.effects.taps
-    if not current.causes or taps <= 1 or f.effects.taps != taps:
-        return False
-    out = carried(prob, taps)
-    return _raw_sse(prob, f, out) > _raw_sse(prob, current, out)
 
 
 def _where_differ(
