@@ -349,6 +349,11 @@ def reason(r: Reason) -> str:
             "so small is not a cause of its own"
         )
     if r.kind == "rival_better":
+        if r.rows:
+            return (
+                f"{r.causes[0]} matches the speed itself far better on the {r.rows} samples "
+                "where the two models differ"
+            )
         return f"{r.causes[0]} matches the speed itself far better"
     return REASON[r.kind]
 

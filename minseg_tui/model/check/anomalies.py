@@ -337,6 +337,7 @@ def late_steps(
     T: float = 0.0,
     pred: FloatArray | None = None,
     angle_noise: float = 0.0,
+    keep: NDArray[np.bool_] | None = None,
 ) -> list[Anomaly]:
     """Edges whose response is shifted in time against the others (a step between samples).
 
@@ -350,37 +351,54 @@ def late_steps(
     change of the edge (from ``pred``, rad/s). At 25 ms a quarter period is far above
     that; at 5 ms (a 4.5 V step: about 1 ms per count against 1.25 ms) it is not, so an
     edge must be out of line by ``LATE_SIGMAS`` such timing errors as well.
+
+    A shift must also explain the rows after the edge better than the model's miss the rows
+    before it already had: along a ramp at a current cap's rate, a shift moves the prediction
+    by the same amount on every row, as a speed off by a constant does, and a miss that runs
+    on through the edge is the model's, not the step's. So the edge's shift is estimated a
+    second time with the residual's mean over the rows before it (from the previous edge, at
+    most as many as the projection spans; ``keep``: the rows the fit used, bool) taken off
+    the rows after it, and both estimates must be out of line.
     """
     edges = np.flatnonzero(np.diff(u) != 0) + 1
     if edges.size < 3:
         return []
     span = max(6, int(np.ceil(3.0 * T / ts))) if ts > 0 else 6
-    est, strength, resolution = [], [], []
-    for e in edges.tolist():
+    used = np.ones(u.size, dtype=bool) if keep is None else np.asarray(keep, dtype=bool)
+    est, carried, strength, resolution = [], [], [], []
+    for k, e in enumerate(edges.tolist()):
         rows = np.arange(e, min(e + span, u.size))
         jump = abs(float(pred[rows[-1]] - pred[e - 1])) if pred is not None else 0.0
         resolution.append(angle_noise / jump if jump > 0 else 0.0)
         den = float(np.dot(d_shift[rows], d_shift[rows]))
         if den <= 0:
             est.append(0.0)
+            carried.append(0.0)
             strength.append(0.0)
             continue
+        before = np.arange(max(int(edges[k - 1]) if k else 0, e - span), e)
+        before = before[used[before]]
+        level = float(np.mean(residual[before])) if before.size else 0.0
         est.append(shift * float(np.dot(d_shift[rows], residual[rows])) / den)
+        carried.append(shift * float(np.dot(d_shift[rows], residual[rows] - level)) / den)
         strength.append(np.sqrt(den))
     x = np.asarray(est)
     med = float(np.median(x))
     noise = robust_sigma(np.diff(residual)) / np.sqrt(2.0)
     out = []
-    for e, dx, st, res_t in zip(edges.tolist(), x.tolist(), strength, resolution, strict=True):
+    for e, dx, dc, st, res_t in zip(
+        edges.tolist(), x.tolist(), carried, strength, resolution, strict=True
+    ):
         off = dx - med
         # the shift must be a good part of a sample, well above what the noise allows and
         # well above the timing the angle quantum allows for this edge; and at most a
         # sample: a step between samples acts within one period of its sample time, and a
         # larger figure is the linear estimate outside its range (an edge that is no step,
-        # such as noise on u), which says nothing of when the step acted
-        if (
-            max(0.25 * ts, LATE_SIGMAS * res_t) < abs(off) <= ts
-            and abs(off) / shift * st > 6 * noise
+        # such as noise on u), which says nothing of when the step acted; and so must the
+        # shift left once the miss the rows before the edge had is taken off
+        if all(
+            max(0.25 * ts, LATE_SIGMAS * res_t) < abs(o) <= ts and abs(o) / shift * st > 6 * noise
+            for o in (off, dc - med)
         ):
             out.append(
                 Anomaly(

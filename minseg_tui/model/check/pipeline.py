@@ -644,6 +644,7 @@ def _report(
             ext.T,
             e_pred,
             angle_noise,
+            keep,
         )
         edges = int(np.count_nonzero(np.diff(u) != 0))
         if len(late) >= dist.REPEAT_MIN and len(late) >= dist.REPEAT_SHARE * edges:
