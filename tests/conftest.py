@@ -3,8 +3,11 @@ they are not run and the session ends with one line saying so; with CI=true they
 
 import gc
 import hashlib
+import os
+import pickle
 import threading
 from collections.abc import Iterator
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -69,6 +72,10 @@ def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
 _checked: dict[bytes, CheckResult] = {}
 _checked_lock = threading.Lock()
 _check = lab_results.check
+_checked_dir: list[Path] = []
+"""The folder (one per test process, under pytest's temporary files) where a check computed
+in a process the test process forked (the class view's pool: classread.build) is kept for
+the test process and its later forks; set by :func:`model_check_once_per_log`."""
 
 
 def _key(t: object, u: object, omega: object, *rest: object) -> bytes:
@@ -80,6 +87,28 @@ def _key(t: object, u: object, omega: object, *rest: object) -> bytes:
         h.update(a.tobytes())
     h.update(repr(rest).encode())
     return h.digest()
+
+
+def _kept(key: bytes) -> CheckResult | None:
+    """The check kept in :data:`_checked_dir` under ``key`` by a forked process, or None."""
+    if not _checked_dir:
+        return None
+    try:
+        got = pickle.loads((_checked_dir[0] / key.hex()).read_bytes())
+    except FileNotFoundError:
+        return None
+    assert isinstance(got, CheckResult)
+    return got
+
+
+def _keep(key: bytes, result: CheckResult) -> None:
+    """Keep ``result`` under ``key`` for the test process (written whole, then renamed)."""
+    if not _checked_dir:
+        return
+    path = _checked_dir[0] / key.hex()
+    tmp = path.with_name(f".{path.name}.{os.getpid()}")
+    tmp.write_bytes(pickle.dumps(result, protocol=pickle.HIGHEST_PROTOCOL))
+    os.replace(tmp, path)
 
 
 def checked_once(
@@ -95,25 +124,36 @@ def checked_once(
     UI's recorded run) and read its check through a session, a report, the class view or a
     screen. The check is deterministic (no clock, no unseeded randomness) and its result a
     frozen record, so the second reading is the first one's result; the check itself is
-    tested on its own logs in tests/model, which call it directly."""
+    tested on its own logs in tests/model, which call it directly.
+
+    The class view computes its rows in processes it forks (classread.build), which begin
+    with the test process's checks but whose own end with them: those are kept in a file
+    (:data:`_checked_dir`), which the test process and its later forks read, so each of
+    test_class_cli's cold readings of the same seeded class does not check its eight
+    groups again."""
     key = _key(t, u, omega, ts, cpr, omega_over)
     with _checked_lock:
         hit = _checked.get(key)
+    if hit is None:
+        hit = _kept(key)
     if hit is not None:
         return hit
     result = _check(t, u, omega, ts=ts, cpr=cpr, omega_over=omega_over)
     with _checked_lock:
         _checked.setdefault(key, result)
+    _keep(key, result)
     return result
 
 
 @pytest.fixture(autouse=True, scope="session")
-def model_check_once_per_log() -> Iterator[None]:
-    """The lab's model check of a run log runs once per log in a test process
-    (:func:`checked_once`)."""
+def model_check_once_per_log(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
+    """The lab's model check of a run log runs once per log in a test process and the
+    processes it forks (:func:`checked_once`)."""
+    _checked_dir.append(tmp_path_factory.mktemp("checked-once"))
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(lab_results, "check", checked_once)
         yield
+    _checked_dir.clear()
 
 
 @pytest.fixture(autouse=True, scope="session")
