@@ -14,6 +14,7 @@ import pytest
 
 import minseg_tui.lab.state.results as lab_results
 from minseg_tui.model.check import CheckResult
+from minseg_tui.model.identify import Identification
 from tests.shared_data import absent_reason, required
 from tests.ui.textual_internals import parse_stylesheets_once
 
@@ -89,19 +90,17 @@ def _key(t: object, u: object, omega: object, *rest: object) -> bytes:
     return h.digest()
 
 
-def _kept(key: bytes) -> CheckResult | None:
-    """The check kept in :data:`_checked_dir` under ``key`` by a forked process, or None."""
+def _kept(key: bytes) -> object:
+    """The result kept in :data:`_checked_dir` under ``key`` by a forked process, or None."""
     if not _checked_dir:
         return None
     try:
-        got = pickle.loads((_checked_dir[0] / key.hex()).read_bytes())
+        return pickle.loads((_checked_dir[0] / key.hex()).read_bytes())
     except FileNotFoundError:
         return None
-    assert isinstance(got, CheckResult)
-    return got
 
 
-def _keep(key: bytes, result: CheckResult) -> None:
+def _keep(key: bytes, result: object) -> None:
     """Keep ``result`` under ``key`` for the test process (written whole, then renamed)."""
     if not _checked_dir:
         return
@@ -135,7 +134,8 @@ def checked_once(
     with _checked_lock:
         hit = _checked.get(key)
     if hit is None:
-        hit = _kept(key)
+        got = _kept(key)
+        hit = got if isinstance(got, CheckResult) else None
     if hit is not None:
         return hit
     result = _check(t, u, omega, ts=ts, cpr=cpr, omega_over=omega_over)
@@ -145,13 +145,43 @@ def checked_once(
     return result
 
 
+_identified: dict[bytes, Identification] = {}
+_identify = lab_results.identify
+
+
+def identified_once(*args: object, **kwargs: object) -> Identification:
+    """identify() as the lab runs it (lab.state.results: the table's readings, R, the run's
+    log), computed once per test process and the processes it forks for each input, as
+    :func:`checked_once` does for the check: identify is deterministic and its inputs
+    (readings, numbers, a RunLog of arrays) and result are plain records, so equal pickles
+    of the inputs are equal inputs. identify itself is tested in tests/model, which call it
+    directly."""
+    key = hashlib.sha256(
+        pickle.dumps((args, sorted(kwargs.items())), protocol=pickle.HIGHEST_PROTOCOL)
+    ).digest()
+    with _checked_lock:
+        hit = _identified.get(key)
+    if hit is None:
+        got = _kept(b"identify" + key)
+        hit = got if isinstance(got, Identification) else None
+    if hit is not None:
+        return hit
+    result = _identify(*args, **kwargs)
+    with _checked_lock:
+        _identified.setdefault(key, result)
+    _keep(b"identify" + key, result)
+    return result
+
+
 @pytest.fixture(autouse=True, scope="session")
 def model_check_once_per_log(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
-    """The lab's model check of a run log runs once per log in a test process and the
-    processes it forks (:func:`checked_once`)."""
+    """The lab's model check of a run log, and its identify of a table and a log, run once
+    per input in a test process and the processes it forks (:func:`checked_once`,
+    :func:`identified_once`)."""
     _checked_dir.append(tmp_path_factory.mktemp("checked-once"))
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(lab_results, "check", checked_once)
+        mp.setattr(lab_results, "identify", identified_once)
         yield
     _checked_dir.clear()
 
