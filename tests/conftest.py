@@ -3,14 +3,18 @@ they are not run and the session ends with one line saying so; with CI=true they
 
 import gc
 import hashlib
+import os
+import pickle
 import threading
 from collections.abc import Iterator
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import minseg_tui.lab.state.results as lab_results
 from minseg_tui.model.check import CheckResult
+from minseg_tui.model.identify import Identification
 from tests.shared_data import absent_reason, required
 from tests.ui.textual_internals import parse_stylesheets_once
 
@@ -69,6 +73,10 @@ def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
 _checked: dict[bytes, CheckResult] = {}
 _checked_lock = threading.Lock()
 _check = lab_results.check
+_checked_dir: list[Path] = []
+"""The folder (one per test process, under pytest's temporary files) where a check computed
+in a process the test process forked (the class view's pool: classread.build) is kept for
+the test process and its later forks; set by :func:`model_check_once_per_log`."""
 
 
 def _key(t: object, u: object, omega: object, *rest: object) -> bytes:
@@ -80,6 +88,26 @@ def _key(t: object, u: object, omega: object, *rest: object) -> bytes:
         h.update(a.tobytes())
     h.update(repr(rest).encode())
     return h.digest()
+
+
+def _kept(key: bytes) -> object:
+    """The result kept in :data:`_checked_dir` under ``key`` by a forked process, or None."""
+    if not _checked_dir:
+        return None
+    try:
+        return pickle.loads((_checked_dir[0] / key.hex()).read_bytes())
+    except FileNotFoundError:
+        return None
+
+
+def _keep(key: bytes, result: object) -> None:
+    """Keep ``result`` under ``key`` for the test process (written whole, then renamed)."""
+    if not _checked_dir:
+        return
+    path = _checked_dir[0] / key.hex()
+    tmp = path.with_name(f".{path.name}.{os.getpid()}")
+    tmp.write_bytes(pickle.dumps(result, protocol=pickle.HIGHEST_PROTOCOL))
+    os.replace(tmp, path)
 
 
 def checked_once(
@@ -95,25 +123,67 @@ def checked_once(
     UI's recorded run) and read its check through a session, a report, the class view or a
     screen. The check is deterministic (no clock, no unseeded randomness) and its result a
     frozen record, so the second reading is the first one's result; the check itself is
-    tested on its own logs in tests/model, which call it directly."""
+    tested on its own logs in tests/model, which call it directly.
+
+    The class view computes its rows in processes it forks (classread.build), which begin
+    with the test process's checks but whose own end with them: those are kept in a file
+    (:data:`_checked_dir`), which the test process and its later forks read, so each of
+    test_class_cli's cold readings of the same seeded class does not check its eight
+    groups again."""
     key = _key(t, u, omega, ts, cpr, omega_over)
     with _checked_lock:
         hit = _checked.get(key)
+    if hit is None:
+        got = _kept(key)
+        hit = got if isinstance(got, CheckResult) else None
     if hit is not None:
         return hit
     result = _check(t, u, omega, ts=ts, cpr=cpr, omega_over=omega_over)
     with _checked_lock:
         _checked.setdefault(key, result)
+    _keep(key, result)
+    return result
+
+
+_identified: dict[bytes, Identification] = {}
+_identify = lab_results.identify
+
+
+def identified_once(*args: object, **kwargs: object) -> Identification:
+    """identify() as the lab runs it (lab.state.results: the table's readings, R, the run's
+    log), computed once per test process and the processes it forks for each input, as
+    :func:`checked_once` does for the check: identify is deterministic and its inputs
+    (readings, numbers, a RunLog of arrays) and result are plain records, so equal pickles
+    of the inputs are equal inputs. identify itself is tested in tests/model, which call it
+    directly."""
+    key = hashlib.sha256(
+        pickle.dumps((args, sorted(kwargs.items())), protocol=pickle.HIGHEST_PROTOCOL)
+    ).digest()
+    with _checked_lock:
+        hit = _identified.get(key)
+    if hit is None:
+        got = _kept(b"identify" + key)
+        hit = got if isinstance(got, Identification) else None
+    if hit is not None:
+        return hit
+    result = _identify(*args, **kwargs)
+    with _checked_lock:
+        _identified.setdefault(key, result)
+    _keep(b"identify" + key, result)
     return result
 
 
 @pytest.fixture(autouse=True, scope="session")
-def model_check_once_per_log() -> Iterator[None]:
-    """The lab's model check of a run log runs once per log in a test process
-    (:func:`checked_once`)."""
+def model_check_once_per_log(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
+    """The lab's model check of a run log, and its identify of a table and a log, run once
+    per input in a test process and the processes it forks (:func:`checked_once`,
+    :func:`identified_once`)."""
+    _checked_dir.append(tmp_path_factory.mktemp("checked-once"))
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(lab_results, "check", checked_once)
+        mp.setattr(lab_results, "identify", identified_once)
         yield
+    _checked_dir.clear()
 
 
 @pytest.fixture(autouse=True, scope="session")
