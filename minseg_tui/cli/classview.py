@@ -112,6 +112,10 @@ def write(view: ClassView, out: Path) -> tuple[Path, ...]:
     one line, when it cannot be written."""
     from minseg_tui.report.write import write_class  # only for --out: slow to load
 
+    if out.exists() and not out.is_dir():
+        raise InputError(
+            str(out), None, "is a file, not a folder: give a folder for --out DIR (made if needed)"
+        )
     try:
         return write_class(view, out)
     except OSError as exc:

@@ -52,3 +52,21 @@ def test_a_session_that_lost_its_file_is_listed_not_left_out(tmp_path, capsys):
     assert code == 2 and set(groups) == {kept.name, lost.name}
     assert groups[lost.name]["damaged"] and groups[kept.name]["damaged"] is None
     assert err == f"minseg-tui class: {lost}: no session here (no session.json)\n"
+
+
+@pytest.mark.parametrize("name", ["notes.txt", "/dev/null"])
+def test_an_out_that_is_a_file_is_named_as_such(tmp_path, capsys, name):
+    root = tmp_path / "s"
+    group(root, ["Ada"], seed=1, run=False)
+    out = tmp_path / name if not name.startswith("/") else name
+    if name == "notes.txt":
+        (tmp_path / name).write_text("keep me\n", encoding="utf-8")
+    code = main(["class", "--sessions", str(root), "--out", str(out)])
+    _, err = capsys.readouterr()
+    assert code == 2
+    assert (
+        err
+        == f"minseg-tui class: {out}: is a file, not a folder: give a folder for --out DIR (made if needed)\n"
+    )
+    if name == "notes.txt":
+        assert (tmp_path / name).read_text(encoding="utf-8") == "keep me\n"
