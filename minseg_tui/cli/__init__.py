@@ -20,6 +20,7 @@ import warnings
 from collections.abc import Sequence
 from typing import NoReturn, TextIO
 
+from minseg_tui.cli.output import one_line
 from minseg_tui.errors import InputError, MinsegError
 
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
@@ -191,7 +192,8 @@ def _parse(parser: argparse.ArgumentParser, args_list: list[str]) -> argparse.Na
 
 def _fail(command: str, message: str, code: int) -> int:
     if sys.stderr is not None:  # closed too: the exit code is all that can be said
-        print(f"minseg-tui{' ' if command else ''}{command}: {message}", file=sys.stderr)
+        said = one_line(message)  # a name with a newline or an escape: still one line
+        print(f"minseg-tui{' ' if command else ''}{command}: {said}", file=sys.stderr)
     return code
 
 

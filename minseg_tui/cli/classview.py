@@ -19,7 +19,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from minseg_tui.cli.output import print_json
+from minseg_tui.cli.output import one_line, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.store import os_reason
 from minseg_tui.lab.views import classread
@@ -76,8 +76,8 @@ def text(view: ClassView) -> str:
     rows = [
         [
             str(k),
-            g.id,
-            members(g),
+            one_line(g.id),
+            one_line(members(g)),
             g.step or MISSING,
             *(g.text(q.key) for q in QUANTITIES),
             g.cause or MISSING,
@@ -96,10 +96,10 @@ def text(view: ClassView) -> str:
             continue
         lines.append("")
         who = f"{members(g)}, {g.date or 'no date'}" if g.readable else "cannot be read"
-        lines.append(f"#{k} {g.id} ({who})")
-        lines += [f"  ! {f}" for f in g.flags]
-        lines += [f"  - lacks: {x}" for x in g.lacks]
-        lines += [f"  - note: {x}" for x in g.notes]
+        lines.append(one_line(f"#{k} {g.id} ({who})"))
+        lines += [one_line(f"  ! {f}") for f in g.flags]
+        lines += [one_line(f"  - lacks: {x}") for x in g.lacks]
+        lines += [one_line(f"  - note: {x}") for x in g.notes]
         lines += [f"  - not answered yet: {g.unanswered}"] if g.unanswered else []
     if not any(g.flags for g in view.groups):
         lines += ["", nothing_marked(view)]
@@ -112,6 +112,10 @@ def write(view: ClassView, out: Path) -> tuple[Path, ...]:
     one line, when it cannot be written."""
     from minseg_tui.report.write import write_class  # only for --out: slow to load
 
+    if out.exists() and not out.is_dir():
+        raise InputError(
+            str(out), None, "is a file, not a folder: give a folder for --out DIR (made if needed)"
+        )
     try:
         return write_class(view, out)
     except OSError as exc:
@@ -138,5 +142,5 @@ def run(args: argparse.Namespace) -> int:
             print(p)
     bad = view.unreadable
     for g in bad:
-        print(f"minseg-tui class: {g.damaged}", file=sys.stderr)
+        print(f"minseg-tui class: {one_line(g.damaged or '')}", file=sys.stderr)
     return 2 if bad else 0

@@ -19,6 +19,15 @@ from typing import TextIO
 
 from minseg_tui.errors import InputError
 
+_CONTROLS = {c: repr(chr(c))[1:-1] for c in (*range(0x20), *range(0x7F, 0xA0))}
+
+
+def one_line(text: str) -> str:
+    """``text`` with its control characters written as escapes (``\\n``, ``\\x1b``): a
+    file or folder name holding a newline or a terminal escape stays on its one line and
+    cannot drive the terminal. Other characters (``ü``, spaces) are kept."""
+    return text.translate(_CONTROLS)
+
 
 def finite_or_none(obj: object) -> object:
     """``obj`` with every float that is NaN or infinite replaced by None (recursively through

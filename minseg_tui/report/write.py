@@ -36,7 +36,7 @@ FIGURE_PREFIX = "report-figure"
 def write_report(session: Session) -> Written:
     """Build the report of ``session`` and write its figures, report.md and report.html
     atomically into its folder (figures of an earlier report that this one has not are
-    removed); returns the paths (the run CSVs listed are the session's own files). OSError
+    removed); returns the paths (the run CSVs listed are the session's own files that are there). OSError
     when the folder cannot be written."""
     rep = content.build(session)
     md_path = session.folder / "report.md"
@@ -50,7 +50,9 @@ def write_report(session: Session) -> Written:
             old.unlink(missing_ok=True)
     atomic_write_text(md_path, markdown.render(rep, FIGURE_PREFIX))
     atomic_write_text(html_path, html.render(rep))
-    runs = tuple(session.folder / r.file for r in session.runs)
+    # only the run CSVs that are there: one deleted while the session was open is not named
+    # as written (the report itself says it cannot be read)
+    runs = tuple(p for p in (session.folder / r.file for r in session.runs) if p.is_file())
     return Written(md_path, html_path, runs, tuple(figures))
 
 

@@ -24,6 +24,7 @@ from minseg_tui.lab.content import needs as lab_needs
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.steps import FIELDS, Field, RunPlan
 from minseg_tui.lab.saving.kept import ResponseFigures
+from minseg_tui.lab.saving.store import read_regular
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.model.identify import U_TASK15, ResponseResult
 from minseg_tui.model.motor import inertia_from_time_constant
@@ -118,23 +119,47 @@ class Policy:
     file: bool = False
 
 
+POLICY_KEYS = ("answers_first",)
+"""The settings ``lab.toml`` may hold; any other name (a typo, a section) is reported, not
+silently passed over."""
+
+MAX_POLICY_BYTES = 64 << 10
+"""The largest policy file read (a few lines are expected)."""
+
+
 def read_policy(sessions: Path) -> Policy:
     """The policy in ``sessions``/lab.toml (``answers_first = true|false``); answers first
-    when there is no file, or when it cannot be read (then ``problem`` says why)."""
+    when there is no file, or when it cannot be read, or holds a name other than
+    :data:`POLICY_KEYS` (then ``problem`` says why). A byte-order mark (Notepad's UTF-8) is
+    allowed; a FIFO or a device in its place is refused, never waited on."""
     path = Path(sessions) / POLICY_FILE
+
+    def problem(why: str) -> Policy:
+        return Policy(True, f"{path}: {why}; answers first", file=True)
+
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        raw = read_regular(path, MAX_POLICY_BYTES)
     except FileNotFoundError:
+        if path.is_symlink():
+            return problem("cannot be read (a link to a file that does not exist)")
         return Policy()
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        return Policy(True, f"{path}: cannot be read ({exc}); answers first", file=True)
+    except OSError as exc:
+        return problem(f"cannot be read ({exc.strerror or type(exc).__name__})")
+    if len(raw) > MAX_POLICY_BYTES:
+        return problem(f"is larger than a policy file ({MAX_POLICY_BYTES >> 10} KiB)")
+    try:
+        data = tomllib.loads(raw.decode("utf-8-sig"))
+    except UnicodeDecodeError:
+        return problem("cannot be read (not UTF-8 text)")
+    except tomllib.TOMLDecodeError as exc:
+        return problem(f"cannot be read ({exc})")
+    unknown = [k for k in data if k not in POLICY_KEYS]
+    if unknown:
+        names = ", ".join(repr(k) for k in unknown)
+        return problem(f"unknown setting {names}, expected only answers_first = true or false")
     value = data.get("answers_first", True)
     if not isinstance(value, bool):
-        return Policy(
-            True,
-            f"{path}: answers_first must be true or false, got {value!r}; answers first",
-            file=True,
-        )
+        return problem(f"answers_first must be true or false, got {value!r}")
     return Policy(value, file=True)
 
 

@@ -149,7 +149,7 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
     if not isinstance(own, list) or not isinstance(values, dict):
         raise TypeError("not a cached row")
     return Group(
-        id=str(d["id"]),
+        id=session_folder.name,  # the folder as it is named now (a rename keeps the key)
         folder=session_folder,
         members=_texts(d["members"]),
         date=str(d["date"]),
@@ -172,7 +172,8 @@ def _from_json(d: dict[str, object], session_folder: Path) -> Group:
 
 
 def load(k: str, session_folder: Path) -> Group | None:
-    """The row kept under ``k`` (its folder set to ``session_folder``), or None."""
+    """The row kept under ``k`` (its folder, and the id it names, set to ``session_folder``:
+    the key hashes what is in the folder, not its name), or None."""
     try:
         d = json.loads((folder() / f"{k}.json").read_text(encoding="utf-8"))
         return _from_json(d, session_folder)

@@ -37,7 +37,7 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.steps import LEVELS
 from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import RunInfo, read_run
-from minseg_tui.lab.saving.store import SESSION_FILE, SessionsUnreadable, names_key
+from minseg_tui.lab.saving.store import RUNS_DIR, SESSION_FILE, SessionsUnreadable, names_key
 from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import NO_RUN_YET, Session
@@ -729,7 +729,9 @@ def judge(groups: Sequence[Group]) -> ClassView:
 
 
 def session_folders(root: Path) -> list[Path]:
-    """The folders under ``root`` that hold a session file, sorted by name.
+    """The folders under ``root`` that hold a session file, or a session's ``runs/`` folder
+    without it (a session that lost its file: listed as one that cannot be read, never
+    left out in silence), sorted by name.
 
     InputError (one line) when ``root`` does not exist, is not a folder, cannot be listed
     or holds no session."""
@@ -747,8 +749,10 @@ def session_folders(root: Path) -> list[Path]:
     for name in names:
         folder = root / name
         try:
-            if folder.is_dir() and os.path.lexists(folder / SESSION_FILE):
-                found.append(folder)
+            if folder.is_dir() and (
+                os.path.lexists(folder / SESSION_FILE) or (folder / RUNS_DIR).is_dir()
+            ):
+                found.append(folder)  # runs/ without its session.json: listed, as lost
         except OSError:
             continue
     if not found:
