@@ -7,7 +7,8 @@ decides which values are far from the class, one of the things marked "!"
 (:data:`~minseg_tui.lab.views.classview.MARKED`). Under the table, the highlighted group in
 full: every number with its unit, the model check's cause, the group's own values against
 the computed ones, what is marked and what is missing. Enter opens the group's session read-only (as the start
-screen opens a damaged one); F8 writes the class's report (class.md, class.html, class.csv,
+screen opens a damaged one) over the class view, and Escape there comes back to it, the cursor
+on that group; F8 writes the class's report (class.md, class.html, class.csv,
 as ``minseg-tui class --out`` does) into the sessions folder; Escape goes back. Everything
 works from the keyboard at 80x24.
 """
@@ -34,7 +35,6 @@ from minseg_tui.lab.saving.store import os_reason
 from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
 from minseg_tui.quantities import MISSING, format_difference
-from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import after_typed_keys
 from minseg_tui.ui.widgets.footer import KeyFooter
 from minseg_tui.ui.widgets.inturn import run_in_turn
@@ -163,6 +163,13 @@ class ClassScreen(Screen[None]):
         error: str = ""
 
     @dataclass
+    class OpenGroup(Message):
+        """Open the group's session in ``folder`` read-only, over the class view (Escape
+        there closes it and shows the class view again, the cursor on the group)."""
+
+        folder: Path
+
+    @dataclass
     class ClassRead(Message):
         """Every group is read and judged against the class (or ``error``: why not)."""
 
@@ -264,9 +271,9 @@ class ClassScreen(Screen[None]):
         await self.action_open_group()
 
     async def action_open_group(self) -> None:
-        """Open the highlighted group's session read-only in the lab (back on the start
-        screen first, which is where the app opens a session from), once the table has taken
-        the keys typed before Enter ('Down Enter' in one burst opens the row Down went to)."""
+        """Open the highlighted group's session read-only in the lab, over the class view (the
+        app opens it: :class:`OpenGroup`), once the table has taken the keys typed before
+        Enter ('Down Enter' in one burst opens the row Down went to)."""
         await after_typed_keys(self.app, self._open_group)
 
     async def _open_group(self) -> None:
@@ -276,9 +283,7 @@ class ClassScreen(Screen[None]):
         if not 0 <= index < len(self.groups) or not self.groups[index].readable:
             self.notify("this session cannot be read; see what it lacks below", timeout=5)
             return
-        folder = self.groups[index].folder
-        await self.app.pop_screen()
-        self.app.post_message(StartScreen.Resume(str(folder), readonly=True))
+        self.post_message(self.OpenGroup(self.groups[index].folder))
 
     def action_export_class(self) -> None:
         """F8: the class's report into the sessions folder, once every group is read."""
