@@ -455,7 +455,9 @@ class LabApp(App[None]):
     def action_class_view(self) -> None:
         """F12 on the start screen: every group of the sessions folder, one row each."""
         if isinstance(self.screen, StartScreen):
-            self.push_screen(ClassScreen(Path(self.config.sessions), self._class_writer))
+            self.push_screen(
+                ClassScreen(Path(self.config.sessions), self._class_writer, self.open_group)
+            )
 
     @on(StartScreen.NewSession)
     async def _new(self, event: StartScreen.NewSession) -> None:
@@ -468,10 +470,9 @@ class LabApp(App[None]):
         path = Path(event.path)
         await self._enter_lab(lambda: Session.open(path, readonly=event.readonly))
 
-    @on(ClassScreen.OpenGroup)
-    async def _open_group(self, event: ClassScreen.OpenGroup) -> None:
-        """Enter on the class view: the group's session read-only, over the class view."""
-        folder = event.folder
+    async def open_group(self, folder: Path) -> None:
+        """Enter on the class view: the group's session in ``folder`` read-only, over the
+        class view; returns once the lab shows its step."""
         await self._enter_lab(lambda: Session.open(folder, readonly=True), over_class=True)
 
     async def _enter_lab(self, get: Callable[[], Session], over_class: bool = False) -> None:

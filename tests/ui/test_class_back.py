@@ -147,3 +147,26 @@ async def test_f3_in_a_session_opened_from_the_class_view_refuses_as_f4_does(tmp
         assert not any("set a voltage first" in m for m in said)
         assert app.requested is None and app.motor == "off"
     assert _files(root) == before
+
+
+async def test_one_burst_opens_a_group_goes_back_and_opens_the_next(tmp_path):
+    """D6 as an instructor grading in a hurry types it: 'Down Enter Escape Down Enter' in one
+    burst opens the second group, comes back to its row, and opens the third: the keys typed
+    after Enter wait until the lab shows the group, and those after Escape go to the class
+    view."""
+    root = tmp_path / "sessions"
+    _three_groups(root)
+    before = _files(root)
+    app = quiet_app(root)
+    async with app.run_test(size=(80, 24)) as pilot:
+        screen = await _class_view(pilot)
+        table = screen.query_one(DataTable)
+        await settle(pilot, lambda: app.focused is table and table.cursor_row == 0)
+        await burst(pilot, "down", "enter", "escape", "down", "enter")
+        await settle(pilot, lambda: isinstance(app.screen, LabScreen) and shown(app))
+        assert app.session is not None
+        with app.session as s:
+            assert s.folder == screen.groups[2].folder and s.readonly
+        assert app.screen_stack[-2] is screen
+    assert _files(root) == before
+    assert not list(root.rglob("lock"))

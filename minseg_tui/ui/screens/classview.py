@@ -15,7 +15,7 @@ works from the keyboard at 80x24.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Awaitable, Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -38,6 +38,10 @@ from minseg_tui.quantities import MISSING, format_difference
 from minseg_tui.ui.widgets.fields import after_typed_keys
 from minseg_tui.ui.widgets.footer import KeyFooter
 from minseg_tui.ui.widgets.inturn import run_in_turn
+
+GroupOpener = Callable[[Path], Awaitable[None]]
+"""Opens the session in a folder read-only, over the class view, and returns once the lab
+shows it (the app's)."""
 
 ClassWriter = Callable[[ClassView, Path], Sequence[Path]]
 """Writes the class's report into a folder; the files written (the CLI hands in
@@ -163,24 +167,24 @@ class ClassScreen(Screen[None]):
         error: str = ""
 
     @dataclass
-    class OpenGroup(Message):
-        """Open the group's session in ``folder`` read-only, over the class view (Escape
-        there closes it and shows the class view again, the cursor on the group)."""
-
-        folder: Path
-
-    @dataclass
     class ClassRead(Message):
         """Every group is read and judged against the class (or ``error``: why not)."""
 
         view: ClassView | None
         error: str = ""
 
-    def __init__(self, root: Path, writer: ClassWriter | None = None) -> None:
+    def __init__(
+        self,
+        root: Path,
+        writer: ClassWriter | None = None,
+        open_group: GroupOpener | None = None,
+    ) -> None:
         super().__init__()
         self.root = Path(root)
         self.writer = writer
         """Writes the class's report (F8); None: this program was started without it."""
+        self.open_group = open_group
+        """Opens a group's session read-only over this screen (Enter); None: nowhere to."""
         self.groups: list[Group] = []
         self.view: ClassView | None = None
         """The class judged, once every group is read (what F8 writes)."""
@@ -272,8 +276,9 @@ class ClassScreen(Screen[None]):
 
     async def action_open_group(self) -> None:
         """Open the highlighted group's session read-only in the lab, over the class view (the
-        app opens it: :class:`OpenGroup`), once the table has taken the keys typed before
-        Enter ('Down Enter' in one burst opens the row Down went to)."""
+        app's :attr:`open_group`), once the table has taken the keys typed before Enter
+        ('Down Enter' in one burst opens the row Down went to); the keys typed after Enter
+        wait until the lab shows its step, and land there."""
         await after_typed_keys(self.app, self._open_group)
 
     async def _open_group(self) -> None:
@@ -283,7 +288,10 @@ class ClassScreen(Screen[None]):
         if not 0 <= index < len(self.groups) or not self.groups[index].readable:
             self.notify("this session cannot be read; see what it lacks below", timeout=5)
             return
-        self.post_message(self.OpenGroup(self.groups[index].folder))
+        if self.open_group is None:
+            self.notify("this program was started without the lab to open a session in")
+            return
+        await self.open_group(self.groups[index].folder)
 
     def action_export_class(self) -> None:
         """F8: the class's report into the sessions folder, once every group is read."""
