@@ -1256,7 +1256,12 @@ class LabApp(App[None]):
             self.notify("start or resume a session first", severity="warning")
             return
         with self.session as s:
+            read_only = lab_views.read_only(s) if s.readonly else ""
             snapshot = s.snapshot()
+        if read_only:  # walk 15: F8 wrote report.md and report.html into a group's folder
+            # opened from the class view ("to look, not to change")
+            self.notify(f"{read_only}: no report is written into it", severity="warning")
+            return
         self._exports_asked += 1
         self._export(snapshot, self._exports_asked)
 

@@ -12,6 +12,7 @@ from pathlib import Path
 from textual.widgets import DataTable
 
 from minseg_tui.lab.content.keys import PALETTE
+from minseg_tui.report.write import write_report
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.start import StartScreen
@@ -170,3 +171,24 @@ async def test_one_burst_opens_a_group_goes_back_and_opens_the_next(tmp_path):
         assert app.screen_stack[-2] is screen
     assert _files(root) == before
     assert not list(root.rglob("lock"))
+
+
+async def test_f8_in_a_session_opened_from_the_class_view_writes_nothing_into_it(tmp_path):
+    """Found beside D6: F8 in a group's session opened from the class view wrote report.md
+    and report.html into the group's folder, though the session is open "to look, not to
+    change". F8 there refuses with the read-only line, and the folder stays as it was."""
+    root = tmp_path / "sessions"
+    group(root, ["Ada", "Bo"], seed=1, run=False)
+    before = _files(root)
+    app = quiet_app(root)
+    app._writer = lambda session: write_report(session).paths  # the CLI's writer
+    said = heard_notifications(app)
+    async with app.run_test(size=(80, 24)) as pilot:
+        screen = await _class_view(pilot)
+        await _open_row(pilot, screen, 0)
+        await burst(pilot, "f8")
+        await settle(pilot, lambda: any("no report is written" in m for m in said))
+        told = next(m for m in said if "no report is written" in m)
+        assert "read-only" in told and "to look" in told
+        assert not any(m.startswith("written") for m in said)
+    assert _files(root) == before
