@@ -455,7 +455,9 @@ class LabApp(App[None]):
     def action_class_view(self) -> None:
         """F12 on the start screen: every group of the sessions folder, one row each."""
         if isinstance(self.screen, StartScreen):
-            self.push_screen(ClassScreen(Path(self.config.sessions), self._class_writer))
+            self.push_screen(
+                ClassScreen(Path(self.config.sessions), self._class_writer, self.open_group)
+            )
 
     @on(StartScreen.NewSession)
     async def _new(self, event: StartScreen.NewSession) -> None:
@@ -468,8 +470,15 @@ class LabApp(App[None]):
         path = Path(event.path)
         await self._enter_lab(lambda: Session.open(path, readonly=event.readonly))
 
-    async def _enter_lab(self, get: Callable[[], Session]) -> None:
-        if not isinstance(self.screen, StartScreen):
+    async def open_group(self, folder: Path) -> None:
+        """Enter on the class view: the group's session in ``folder`` read-only, over the
+        class view; returns once the lab shows its step."""
+        await self._enter_lab(lambda: Session.open(folder, readonly=True), over_class=True)
+
+    async def _enter_lab(self, get: Callable[[], Session], over_class: bool = False) -> None:
+        """Open the session ``get`` returns in the lab screen: in place of the start screen,
+        or pushed over the class view (``over_class``), which Escape there shows again."""
+        if not isinstance(self.screen, ClassScreen if over_class else StartScreen):
             return  # a second Enter (or click) while the lab opens
         try:
             session = get()
@@ -479,27 +488,35 @@ class LabApp(App[None]):
         self.session = Shared(session)
         self.lab_changed.subscribe(self, lambda _: self._saved_or_not())
         screen = LabScreen(
-            self.session, self.live, self.lab_changed, self.set_voltage, self.config.refresh
+            self.session,
+            self.live,
+            self.lab_changed,
+            self.set_voltage,
+            self.config.refresh,
+            back=self.back_to_class if over_class else None,
         )
-        switched = self.switch_screen(
-            screen.data_bind(
-                LabApp.device,
-                LabApp.link,
-                LabApp.motor,
-                LabApp.requested,
-                LabApp.meter,
-                LabApp.run_progress,
-                LabApp.written,
-                LabApp.saving,
-            )
+        bound = screen.data_bind(
+            LabApp.device,
+            LabApp.link,
+            LabApp.motor,
+            LabApp.requested,
+            LabApp.meter,
+            LabApp.run_progress,
+            LabApp.written,
+            LabApp.saving,
         )
-        await switched
+        await (self.push_screen(bound) if over_class else self.switch_screen(bound))
         await screen.shown.wait()
         if session.readonly:
             self.notify(
                 "opened read-only: "
                 + (session.damaged or "to look, not to change")
-                + "; nothing typed here is saved (start a new session to go on)",
+                + "; nothing typed here is saved "
+                + (
+                    "(Escape: back to the class view)"
+                    if over_class
+                    else "(start a new session to go on)"
+                ),
                 title="damaged session" if session.damaged else "read-only session",
                 severity="warning",
                 timeout=20,
@@ -510,6 +527,24 @@ class LabApp(App[None]):
         if notes:
             self.notify("\n".join(notes), title="session", timeout=10)
         self._saved_or_not()
+
+    async def back_to_class(self) -> None:
+        """Escape (or the palette) in a session opened read-only from the class view: the
+        session closed (nothing of it is written: it is read-only) and the lab screen popped,
+        which shows the class view under it as it was left, the cursor on that group."""
+        screen = self._lab_screen()
+        if screen is None or screen.back is None or self.session is None:
+            return
+        session, self.session = self.session, None
+        self.lab_changed.unsubscribe(self)
+        with session as s:
+            s.close()
+        self._meter_wanted = self._watching_speed = False
+        self._step_id = ""
+        self.written = ("", ())
+        self.exported = ()
+        self._saved_or_not()
+        await self.pop_screen()
 
     # -- the stream ---------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="stream", name="device stream")
@@ -1221,7 +1256,12 @@ class LabApp(App[None]):
             self.notify("start or resume a session first", severity="warning")
             return
         with self.session as s:
+            read_only = lab_views.read_only(s) if s.readonly else ""
             snapshot = s.snapshot()
+        if read_only:  # walk 15: F8 wrote report.md and report.html into a group's folder
+            # opened from the class view ("to look, not to change")
+            self.notify(f"{read_only}: no report is written into it", severity="warning")
+            return
         self._exports_asked += 1
         self._export(snapshot, self._exports_asked)
 
@@ -1362,6 +1402,12 @@ class LabApp(App[None]):
                 PALETTE["switch_to_virtual"],
                 "Use the virtual MinSeg instead of the board",
                 self.switch_to_virtual,
+            )
+        if lab is not None and lab.back is not None:
+            yield SystemCommand(
+                PALETTE["back_to_class"],
+                "Close this read-only session; the class view again, at its group (Escape)",
+                self.back_to_class,
             )
         yield SystemCommand(PALETTE["help"], f"The help screen ({key_name('help')})", self._help)
 

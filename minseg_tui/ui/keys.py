@@ -165,7 +165,11 @@ KEYMAP: tuple[Key, ...] = (
         "the whole of the step's What to do, over its top (again: folds it)",
     ),
     Key("Tab", "next field; Enter stores and goes on to the next field"),
-    Key("Esc", "in a field: back to the answer stored, dropping what was typed over it"),
+    Key(
+        "Esc",
+        "in a field: back to the answer stored, dropping what was typed over it; in a group "
+        "opened from the class view: back to the class view",
+    ),
     Key(KEY_NAMES["undo"], "in a field: back to the answer stored before (again: further back)"),
     Key(
         KEY_NAMES["redo"],

@@ -72,7 +72,8 @@ async def test_ctrl_r_in_a_session_opened_from_the_class_view_shows_and_goes_on(
 async def test_f4_in_a_session_opened_from_the_class_view_says_so_and_goes_on(tmp_path):
     """D1: the class view, Enter, Task 4, F3, the speed settled, F4: the capture's save
     raised in the read-only session and the program died. Now F4 says the session is open
-    read-only (opened to look, not damaged) and captures nothing; the program goes on."""
+    read-only (opened to look, not damaged) and captures nothing; the program goes on.
+    (Walk 15, D9: F3 there now refuses as well, the motor off.)"""
     root = tmp_path / "sessions"
     group(root, ["Ada", "Bo"], seed=1, at="task12")
     before = _files(root)
@@ -84,7 +85,7 @@ async def test_f4_in_a_session_opened_from_the_class_view_says_so_and_goes_on(tm
         with app.session as s:
             held = s.entry("omega_ss@2.5")
         await burst(pilot, "f3")
-        assert app.requested == 2.5
+        assert app.requested is None  # walk 15, D9: F3 refuses there too (test_class_back)
         app.live.extend(frozen_stream(u=2.5))
         await burst(pilot, "f4")
         await settle(pilot, lambda: any("read-only" in m for m in said[1:]))

@@ -52,6 +52,7 @@ PALETTE: Final = MappingProxyType(
         "correct_names": "Correct the group's names",
         "import_log": "Import a run log",
         "switch_to_virtual": "Switch to virtual board",
+        "back_to_class": "Back to the class view",
         "use_run": "Use run",
         "use_newest_run": "Use the newest complete 25 ms run for Tasks 11-15",
         "go_to": "Go to:",

@@ -7,14 +7,15 @@ decides which values are far from the class, one of the things marked "!"
 (:data:`~minseg_tui.lab.views.classview.MARKED`). Under the table, the highlighted group in
 full: every number with its unit, the model check's cause, the group's own values against
 the computed ones, what is marked and what is missing. Enter opens the group's session read-only (as the start
-screen opens a damaged one); F8 writes the class's report (class.md, class.html, class.csv,
+screen opens a damaged one) over the class view, and Escape there comes back to it, the cursor
+on that group; F8 writes the class's report (class.md, class.html, class.csv,
 as ``minseg-tui class --out`` does) into the sessions folder; Escape goes back. Everything
 works from the keyboard at 80x24.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Awaitable, Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -34,10 +35,13 @@ from minseg_tui.lab.saving.store import os_reason
 from minseg_tui.lab.views import classread, classview
 from minseg_tui.lab.views.classview import QUANTITIES, ClassView, Group
 from minseg_tui.quantities import MISSING, format_difference
-from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import after_typed_keys
 from minseg_tui.ui.widgets.footer import KeyFooter
 from minseg_tui.ui.widgets.inturn import run_in_turn
+
+GroupOpener = Callable[[Path], Awaitable[None]]
+"""Opens the session in a folder read-only, over the class view, and returns once the lab
+shows it (the app's)."""
 
 ClassWriter = Callable[[ClassView, Path], Sequence[Path]]
 """Writes the class's report into a folder; the files written (the CLI hands in
@@ -169,11 +173,18 @@ class ClassScreen(Screen[None]):
         view: ClassView | None
         error: str = ""
 
-    def __init__(self, root: Path, writer: ClassWriter | None = None) -> None:
+    def __init__(
+        self,
+        root: Path,
+        writer: ClassWriter | None = None,
+        open_group: GroupOpener | None = None,
+    ) -> None:
         super().__init__()
         self.root = Path(root)
         self.writer = writer
         """Writes the class's report (F8); None: this program was started without it."""
+        self.open_group = open_group
+        """Opens a group's session read-only over this screen (Enter); None: nowhere to."""
         self.groups: list[Group] = []
         self.view: ClassView | None = None
         """The class judged, once every group is read (what F8 writes)."""
@@ -264,9 +275,10 @@ class ClassScreen(Screen[None]):
         await self.action_open_group()
 
     async def action_open_group(self) -> None:
-        """Open the highlighted group's session read-only in the lab (back on the start
-        screen first, which is where the app opens a session from), once the table has taken
-        the keys typed before Enter ('Down Enter' in one burst opens the row Down went to)."""
+        """Open the highlighted group's session read-only in the lab, over the class view (the
+        app's :attr:`open_group`), once the table has taken the keys typed before Enter
+        ('Down Enter' in one burst opens the row Down went to); the keys typed after Enter
+        wait until the lab shows its step, and land there."""
         await after_typed_keys(self.app, self._open_group)
 
     async def _open_group(self) -> None:
@@ -276,9 +288,10 @@ class ClassScreen(Screen[None]):
         if not 0 <= index < len(self.groups) or not self.groups[index].readable:
             self.notify("this session cannot be read; see what it lacks below", timeout=5)
             return
-        folder = self.groups[index].folder
-        await self.app.pop_screen()
-        self.app.post_message(StartScreen.Resume(str(folder), readonly=True))
+        if self.open_group is None:
+            self.notify("this program was started without the lab to open a session in")
+            return
+        await self.open_group(self.groups[index].folder)
 
     def action_export_class(self) -> None:
         """F8: the class's report into the sessions folder, once every group is read."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import asyncio
 import re
-from collections.abc import Callable, Sequence
+from collections.abc import Awaitable, Callable, Sequence
 from functools import partial
 from inspect import isawaitable
 from pathlib import Path
@@ -817,14 +817,25 @@ class NoMatch(Provider):
         )
 
 
+READ_ONLY_REFUSED: dict[str, str] = {
+    "set_voltage": "the motor is not driven from it; start a new session to drive it",
+    "capture": "omega_ss is not captured into it",
+}
+"""The panel keys a read-only session refuses, with what the refusal says after why it is
+read-only: F4 captures nothing into it, so F3 drives nothing either (walk 15, D9: F3 put
+3.5 V on the motor in a session opened from the class view; and F4 with the motor off said
+'set a voltage first (F3)', which F3 there would refuse)."""
+
+
 class LabScreen(StatusScreen):
     """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves.
 
     ``session`` is the open session, ``live`` the buffer the device worker fills,
     ``lab_changed`` the app's signal that the session changed (published here too),
     ``set_voltage`` the app's way to put a voltage (V) on the motor (F3's request, handled
-    here), and ``refresh`` the live plots' redraw period (s). The app binds the reactive
-    attributes."""
+    here), ``refresh`` the live plots' redraw period (s), and ``back`` the app's way back to
+    the class view under this screen, for a session opened from it (None: opened from the
+    start screen; Escape then is the entries'). The app binds the reactive attributes."""
 
     BINDINGS = [
         # the screen's before any widget's (priority: a list or a table has its own PgDn),
@@ -836,6 +847,9 @@ class LabScreen(StatusScreen):
         Binding("ctrl+l", "focus_nav", "Steps", show=False),
         Binding("ctrl+t", "toggle_nav", "Hide steps", show=False),
         Binding("ctrl+o", "whole_todo", "What to do", show=False),
+        # a session opened from the class view: Escape closes it (over the entries' Escape:
+        # nothing typed in it is stored), there only (check_action)
+        Binding("escape", "back_to_class", "Class view", priority=True),
     ]
     COMMANDS = StatusScreen.COMMANDS | {StepCommands, NoMatch}
     AUTO_FOCUS = ".pane"
@@ -853,10 +867,13 @@ class LabScreen(StatusScreen):
         lab_changed: Signal[None],
         set_voltage: Callable[[float], None],
         refresh: float = 0.25,
+        back: Callable[[], Awaitable[None]] | None = None,
     ) -> None:
         super().__init__()
         self.session = session
         self._set_voltage = set_voltage
+        self.back = back
+        """Closes this session and shows the class view again (None: no class view under it)."""
         with session as s:
             self.readonly = s.readonly
             """A damaged session opened to be read only: nothing typed is stored."""
@@ -1007,6 +1024,11 @@ class LabScreen(StatusScreen):
         whose panel does not have it), and this returns once it is done (F4's capture: the
         keys typed after it act on the result)."""
         panel = self.panel
+        if self.readonly and action in READ_ONLY_REFUSED:
+            with self.session as s:
+                said = f"{views.read_only(s)}: {READ_ONLY_REFUSED[action]}"
+            self.notify(said, severity="warning")
+            return
         if isinstance(panel, PanelKeys) and self.offers(action):
             # A call from the form's binding (StepPane.action_panel_key): Textual looks for a
             # key's bindings from the focused widget up (textual/screen.py:408-424), and the
@@ -1180,6 +1202,22 @@ class LabScreen(StatusScreen):
 
         if self.call_later(show):
             await shown.wait()
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """Escape goes back to the class view (and the footer says so) only in a session
+        opened from it."""
+        if action == "back_to_class":
+            return self.back is not None
+        return super().check_action(action, parameters)
+
+    async def action_back_to_class(self) -> None:
+        """Escape: this read-only session closed and the class view shown again, after the
+        keys typed before it (those typed after it go to the class view)."""
+        await after_typed_keys(self.app, self._back_to_class)
+
+    async def _back_to_class(self) -> None:
+        if self.back is not None and self.app.screen is self:
+            await self.back()
 
     async def action_next_step(self) -> None:
         await after_typed_keys(self.app, partial(self._move, 1))
