@@ -776,6 +776,41 @@ hand, but lost tuning velocity_filter + current_limit 7's true cap (fitted first
 with that rule in (the only other verdicts it moved: 901001 and tuning pair 7); held-out
 touches and singles, held-out pairs (as far as run by the deadline) and the real logs were run
 again on the final tree.
+
+s36-cpu (d7a1635 -> this branch; issue 17 item 8, the worst log's CPU). Profiled again
+(cProfile, and every fit_causes call by its caller in decide.select), the three worst held-out
+pair logs, before: second_pole + current_limit 900001 8.63 s CPU (two select passes, 10,403
+simulations, 190 Levenberg-Marquardt runs), velocity_filter + second_pole 900004 6.98 s (12,567,
+406) and dead_time + current_limit 900003 4.17 s (6,792, 225), at a load of about 27 on two
+cores. The forward step's third causes cost 6.76, 4.26 and 2.88 s of those (78, 61 and 69 %;
+6,600, 7,121 and 3,956 simulations), and none of the 23 thirds fitted was clear: none could have
+been named (a third must halve what the pair leaves, decide.MIN_REDUCTION_THIRD). Of the pairs
+beside the first cause, 8 of 14, 5 of 10 and 4 of 5 fits were not clear either, but a pair that
+is not named is still a rival or the runner-up the report names, so those are kept. Now a third
+is first fitted roughly (every way from every start, as in full, but 2 steps each:
+decide.THIRD_GATE, ROUGH_ITER) and in full only when that rough fit leaves under 0.8 of the
+pair's residual; when any third fitted in full is clear, every third is fitted in full, so a
+third named is judged against the same fits as before. After (same load, not side by side): 4.11
+s (6,247 simulations; thirds 2,444), 5.43 s (9,938; thirds 4,492; one rough fit passed the gate
+and was fitted in full, not clear) and 2.32 s (4,604; 1,768). A first version whose rough fit
+started each later way only from where the first ended (cheaper) changed tuning current_limit +
+velocity_filter 12, which test_check_independent pins (the average beside a cap and a delay: 23
+times the pair's residual roughly, 0.13 in full): not kept. benchmarks/check_verdicts.py, this
+branch against d7a1635 log by log (run in parallel slices at a load of 10-30; the before lines
+from d7a1635's own runs): held-out-pairs 75 of 75 logs, 0 verdicts differ, 0 results differ in
+any float; tuning-pairs 150 of 150, 0 and 0; held-out-touches 20 (verdicts 0, floats 0);
+held-out-singles 35 (verdicts 0, floats 0); singles 80 (verdicts 0, floats 0); synth-pairs 145
+(verdicts 0, floats 0): every log of the six sets. (The cheaper first version, 0 with any float
+different of 149 tuning pairs, 56 held-out pairs, 35 held-out singles, 20 touches, 80 singles
+and 101 synth pairs, yet wrong on seed 12, which no set holds.) CPU per log (check only),
+held-out pairs side by side (the two trees at once, two slices each): 75 logs, median 0.815 ->
+0.730 s, max 8.87 -> 5.71 s, total 97.1 -> 76.2 s, logs over 1.5 s 19 -> 17. The three worst
+again, the two trees at once at a load of about 3-4: 900001 6.76 -> 3.73 s, 900004 5.38 -> 4.54
+s, 900003 2.78 -> 1.75 s (the same result hashes). The goal (every log under 1.5 s) is not met:
+what is left on the worst logs is the pairs' fits (1.35-1.63 s of them), the rough thirds, and a
+second pass of decide.select (900001 and 900004 choose twice). Not tried for lack of time: the
+same gate on the pairs with the rivals and the runner-up fitted in full on demand; warm starts
+of the second select pass from the first.
 """
 
 from __future__ import annotations
