@@ -732,6 +732,14 @@ class FieldRow(Vertical):
         boxes = self.query(".field-input, .field-choice")
         box = boxes.first() if boxes else None
         form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
+        focused = screen.focused
+        if form is not None and focused is not None and focused is not form:
+            if form in focused.ancestors:
+                # a placing deferred to after a refresh, come after another widget of the
+                # step took the keys (F7's table): it stays where that widget scrolled the
+                # step ('Ctrl+P task 6 Enter F7' in one burst: the landing's second placing
+                # put the table and its formula above the screen)
+                return
         with nullcontext() if form is None else form.placing():
             if landing:
                 step = next((a for a in self.ancestors if isinstance(a, ScrollableContainer)), None)
