@@ -17,6 +17,8 @@ from textual.dom import DOMNode
 from textual.widgets import Input, OptionList
 from textual.worker import WorkerCancelled
 
+from minseg_tui.ui.widgets.inturn import own_bindings
+
 
 async def handled(node: DOMNode) -> None:
     """Return once ``node`` has handled every message queued on it now (its own queue: a
@@ -24,17 +26,6 @@ async def handled(node: DOMNode) -> None:
     done = asyncio.Event()
     if node.call_later(done.set):
         await done.wait()
-
-
-def _bindings(node: DOMNode, key: str) -> list[Binding]:
-    """The bindings of ``key`` in ``node``'s class that are not priority bindings, as Textual
-    merges its classes' ``BINDINGS``: a class's own in place of its bases'."""
-    for cls in type(node).__mro__:
-        bindings = Binding.make_bindings(cls.__dict__.get("BINDINGS", []))
-        got = [b for b in bindings if b.key == key and not b.priority]
-        if got:
-            return got
-    return []
 
 
 _IN_TURN: frozenset[str] = frozenset(
@@ -69,7 +60,7 @@ class SearchBox(CommandInput):
         palette = self.screen
         chain = [*_chain(self, palette), self.app]
         for above in chain:
-            for binding in _bindings(above, event.key):
+            for binding in own_bindings(above, event.key):
                 if await self.app.run_action(binding.action, above):
                     event.stop()
                     event.prevent_default()

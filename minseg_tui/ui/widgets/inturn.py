@@ -14,13 +14,14 @@ from __future__ import annotations
 
 from textual import events
 from textual.binding import Binding
+from textual.dom import DOMNode
 from textual.widget import Widget
 
 NOT_HERE: frozenset[str] = frozenset({"enter"})
 """Keys left to Textual's way: Enter is the screen's (or the app's) priority binding."""
 
 
-def own_bindings(widget: Widget, key: str) -> list[Binding]:
+def own_bindings(widget: DOMNode, key: str) -> list[Binding]:
     """The bindings of ``key`` in ``widget``'s class that are not priority bindings, as
     Textual merges its classes' ``BINDINGS``: a class's own in place of its bases'."""
     for cls in type(widget).__mro__:
