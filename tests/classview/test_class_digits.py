@@ -10,9 +10,9 @@ from textual.widgets import DataTable, Static
 
 from minseg_tui.cli import main
 from tests.ui.conftest import quiet_app
+from tests.ui.helpers import class_view
 
 from .build import group
-from .test_class_screen import _open_class
 
 
 def _two_groups(root) -> None:
@@ -25,7 +25,7 @@ async def test_the_screen_shows_r_with_the_digits_typed(tmp_path):
     _two_groups(root)
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        screen = await _open_class(pilot)
+        screen = await class_view(pilot)
         table = screen.query_one(DataTable)
         cells = {str(table.get_row_at(k)[1]): str(table.get_row_at(k)[4]) for k in range(2)}
         assert cells == {"Ida K, Omar S": "5.30", "Li W, Noor B": "5.3"}

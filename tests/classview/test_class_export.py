@@ -19,7 +19,7 @@ from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.footer import KeyFooter
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import settle
+from tests.ui.helpers import class_view, settle
 
 from .build import group
 
@@ -41,11 +41,7 @@ async def test_f8_on_the_class_view_writes_what_class_out_writes(tmp_path):
     app = _app(root)
     notices: list[str] = []
     async with app.run_test(size=(80, 24)) as pilot:
-        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
-        await pilot.press("f12")
-        await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
-        screen = app.screen
-        assert isinstance(screen, ClassScreen)
+        screen = await class_view(pilot)
         assert screen.query_one(DataTable).row_count == 2
         shown = " ".join(str(w.render()) for w in screen.query_one(KeyFooter).children)
         assert "Export class" in shown, shown

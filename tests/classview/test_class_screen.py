@@ -15,7 +15,7 @@ from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.start import StartScreen
 from tests.ui.conftest import quiet_app
-from tests.ui.helpers import goto, settle, start_with_a_run
+from tests.ui.helpers import class_view, goto, settle, start_with_a_run
 
 from .build import group
 
@@ -35,23 +35,13 @@ def _state(root: Path) -> dict[str, tuple[int, bytes]]:
     return {str(p): (p.stat().st_mtime_ns, p.read_bytes()) for p in root.rglob("*") if p.is_file()}
 
 
-async def _open_class(pilot) -> ClassScreen:
-    app = pilot.app
-    await settle(pilot, lambda: isinstance(app.screen, StartScreen))
-    await pilot.press("f12")
-    await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
-    screen = app.screen
-    assert isinstance(screen, ClassScreen)
-    return screen
-
-
 async def test_rows_detail_and_opening_a_group_read_only(tmp_path):
     root = tmp_path / "sessions"
     folders = _class(root)
     before = _state(root)
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        screen = await _open_class(pilot)
+        screen = await class_view(pilot)
         table = screen.query_one(DataTable)
         assert table.row_count == 4
         cells = [str(c) for c in table.get_row_at(0)]
@@ -95,7 +85,7 @@ def test_class_screen_snapshot(snap_compare, tmp_path, monkeypatch: pytest.Monke
     _class(Path("sessions"))
 
     async def run_before(pilot) -> None:
-        await _open_class(pilot)
+        await class_view(pilot)
         await pilot.press("down")
         await settle(pilot)
 

@@ -14,10 +14,9 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.quantities import format_number
 from tests.seeded import record_square_wave
 from tests.ui.conftest import quiet_app
-from tests.ui.helpers import settle
+from tests.ui.helpers import class_view, settle
 
 from .build import group
-from .test_class_screen import _open_class
 
 CUT = "run steps-2 interrupted (quit), 9.5 of 12 s: K, T and J rest on it"
 
@@ -56,7 +55,7 @@ async def test_the_screen_says_it_and_fits_80_columns(tmp_path):
         T_ms, J = format_number(st.T * 1e3), format_number(st.J)
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        screen = await _open_class(pilot)
+        screen = await class_view(pilot)
         table = screen.query_one(DataTable)
         cells = [str(c) for c in table.get_row_at(0)]
         assert cells[2] == "Summary, run cut" and cells[4] == "5.3"

@@ -12,10 +12,8 @@ from textual.widgets import Static
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import classview
 from minseg_tui.report import content, markdown
-from minseg_tui.ui.screens.classview import ClassScreen
-from minseg_tui.ui.screens.start import StartScreen
 from tests.ui.conftest import quiet_app
-from tests.ui.helpers import settle
+from tests.ui.helpers import class_view
 
 from .build import group
 
@@ -41,9 +39,7 @@ async def test_one_group_is_counted_and_the_mark_says_what_it_counts(tmp_path):
     assert warnings.count("\n- ") >= 2
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
-        await pilot.press("f12")
-        await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
+        await class_view(pilot)
         screen = app.screen
         title = str(screen.query_one("#class-title", Static).render())
         detail = str(screen.query_one("#class-group", Static).render())

@@ -26,7 +26,9 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.messages import LinkEventArrived
+from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
+from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import AnswerList, EntryBox, FieldForm, FieldRow, field_id
 from tests.ui.fakes import QuietDevice, square_wave_stream
 from tests.ui.textual_internals import all_idle, key_name, marking_idle_nodes, wait_for_screen
@@ -446,3 +448,14 @@ def nav_mark(app: LabApp, step_id: str) -> str:
     """The mark before step ``step_id`` in the list of steps (✓, ✗, ?, … or a blank)."""
     nav = app.screen.query_one("#nav", OptionList)
     return str(nav.get_option(step_id).prompt)[0]
+
+
+async def class_view(pilot: Pilot[object]) -> ClassScreen:
+    """F12 on the start screen: the class view, once every group in it is read."""
+    app = pilot.app
+    await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+    await pilot.press("f12")
+    await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
+    screen = app.screen
+    assert isinstance(screen, ClassScreen)
+    return screen

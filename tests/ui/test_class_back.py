@@ -19,7 +19,16 @@ from minseg_tui.ui.screens.start import StartScreen
 from tests.classview.build import group
 from tests.ui.conftest import quiet_app
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import burst, goto, heard_notifications, settle, shown, start, typing_box
+from tests.ui.helpers import (
+    burst,
+    class_view,
+    goto,
+    heard_notifications,
+    settle,
+    shown,
+    start,
+    typing_box,
+)
 
 
 def _files(root: Path) -> dict[str, bytes]:
@@ -33,17 +42,6 @@ def _three_groups(root: Path) -> list[Path]:
         group(root, ["Mia K", "Omar S"], seed=2, run=False),
         group(root, ["Ada L", "Alan T"], seed=3, run=False),
     ]
-
-
-async def _class_view(pilot) -> ClassScreen:
-    """F12 on the start screen; returns the class view once every group is read."""
-    app = pilot.app
-    await settle(pilot, lambda: isinstance(app.screen, StartScreen))
-    await pilot.press("f12")
-    await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
-    screen = app.screen
-    assert isinstance(screen, ClassScreen)
-    return screen
 
 
 async def _open_row(pilot, screen: ClassScreen, row: int) -> Path:
@@ -70,7 +68,7 @@ async def test_escape_in_a_session_opened_from_the_class_view_goes_back_to_its_r
     before = _files(root)
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        screen = await _class_view(pilot)
+        screen = await class_view(pilot)
         second = screen.groups[1].folder
         assert await _open_row(pilot, screen, 1) == second
         await goto(pilot, "task2")
@@ -96,7 +94,7 @@ async def test_the_palette_goes_back_to_the_class_view_from_a_group_opened_there
     before = _files(root)
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        screen = await _class_view(pilot)
+        screen = await class_view(pilot)
         assert await _open_row(pilot, screen, 2) == screen.groups[2].folder
         await burst(pilot, "ctrl+p", *PALETTE["back_to_class"].lower(), "enter")
         await settle(pilot, lambda: app.screen is screen)
@@ -135,7 +133,7 @@ async def test_f3_in_a_session_opened_from_the_class_view_refuses_as_f4_does(tmp
     app = quiet_app(root, QuietDevice(seed=2))
     said = heard_notifications(app)
     async with app.run_test(size=(80, 24)) as pilot:
-        screen = await _class_view(pilot)
+        screen = await class_view(pilot)
         await _open_row(pilot, screen, 0)
         await goto(pilot, "task4")
         await burst(pilot, "f3")
@@ -160,7 +158,7 @@ async def test_one_burst_opens_a_group_goes_back_and_opens_the_next(tmp_path):
     before = _files(root)
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        screen = await _class_view(pilot)
+        screen = await class_view(pilot)
         table = screen.query_one(DataTable)
         await settle(pilot, lambda: app.focused is table and table.cursor_row == 0)
         await burst(pilot, "down", "enter", "escape", "down", "enter")
@@ -184,7 +182,7 @@ async def test_f8_in_a_session_opened_from_the_class_view_writes_nothing_into_it
     app._writer = lambda session: write_report(session).paths  # the CLI's writer
     said = heard_notifications(app)
     async with app.run_test(size=(80, 24)) as pilot:
-        screen = await _class_view(pilot)
+        screen = await class_view(pilot)
         await _open_row(pilot, screen, 0)
         await burst(pilot, "f8")
         await settle(pilot, lambda: any("no report is written" in m for m in said))

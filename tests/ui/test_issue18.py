@@ -15,15 +15,13 @@ from minseg_tui.lab.saving.store import SessionNotWritable
 from minseg_tui.lab.state.session import Session
 from minseg_tui.ui.panels.connect import ConnectPanel
 from minseg_tui.ui.panels.report import ReportPanel, written_in
-from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
-from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.status import DeviceStatus
 from tests.lab.test_identify_guards import CASES, ENTRIES, _log
 from tests.ui.conftest import quiet_app
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import goto, resume, settle, start, type_in
+from tests.ui.helpers import class_view, goto, resume, settle, start, type_in
 
 
 def _results(app) -> str:
@@ -186,8 +184,6 @@ async def test_the_class_view_of_a_folder_with_brackets_names_it_as_it_is(tmp_pa
     Session.create(root, ["Ada"], date="2024-04-16").close()
     async with quiet_app(root).run_test(size=(120, 40)) as pilot:
         app = pilot.app
-        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
-        await pilot.press("f12")
-        await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
+        await class_view(pilot)
         title = str(app.screen.query_one("#class-title").render())
         assert "class [/] 2026" in title

@@ -10,14 +10,13 @@ from textual.widgets import Static
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.state.session import Session
-from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
-from minseg_tui.ui.screens.start import StartScreen
 from tests.classview.build import group
 from tests.ui.conftest import quiet_app
 from tests.ui.fakes import QuietDevice, frozen_stream
 from tests.ui.helpers import (
     burst,
+    class_view,
     enter_all,
     goto,
     heard_notifications,
@@ -37,9 +36,7 @@ def _files(root: Path) -> dict[str, bytes]:
 async def _open_from_the_class_view(pilot) -> None:
     """F12 on the start screen, Enter on the first group: its session opens read-only."""
     app = pilot.app
-    await settle(pilot, lambda: isinstance(app.screen, StartScreen))
-    await pilot.press("f12")
-    await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
+    await class_view(pilot)
     await pilot.press("enter")
     await settle(pilot, lambda: isinstance(app.screen, LabScreen) and shown(app))
     assert app.screen.readonly
@@ -146,9 +143,7 @@ async def test_the_class_view_does_not_say_nothing_is_missing_of_an_unfinished_g
     group(root, ["Ada", "Bo"], seed=1, at="task12", rows={2.5: ("", "", ""), 3.5: ("", "", "")})
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
-        await pilot.press("f12")
-        await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
+        await class_view(pilot)
         detail = str(app.screen.query_one("#class-group", Static).render())
         assert "Nothing is missing" not in detail
         assert "Nothing the numbers above need is missing." in detail

@@ -10,7 +10,6 @@ from textual.widgets import DataTable, OptionList, ProgressBar
 from minseg_tui.device.link import LinkEvent
 from minseg_tui.lab.state.session import Session
 from minseg_tui.ui.panels.square_wave import SquareWavePanel
-from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
 from minseg_tui.ui.screens.start import StartScreen
@@ -21,6 +20,7 @@ from tests.ui.fakes import QuietDevice, square_wave_stream
 from tests.ui.helpers import (
     TABLE,
     burst,
+    class_view,
     enter_all,
     goto,
     record_response_run,
@@ -73,11 +73,7 @@ async def test_down_enter_in_one_burst_opens_the_group_the_cursor_went_to(tmp_pa
     ]
     app = quiet_app(root)
     async with app.run_test(size=(80, 24)) as pilot:
-        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
-        await pilot.press("f12")
-        await settle(pilot, lambda: isinstance(app.screen, ClassScreen) and app.screen.done)
-        screen = app.screen
-        assert isinstance(screen, ClassScreen)
+        screen = await class_view(pilot)
         table = screen.query_one(DataTable)
         await settle(pilot, lambda: app.focused is table and table.cursor_row == 0)
         second = screen.groups[1].folder
