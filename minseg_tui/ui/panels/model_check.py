@@ -25,6 +25,10 @@ from minseg_tui.ui.widgets.textbox import TextBox
 DETAILS = "Details: what each figure means · Enter opens"
 """The fold's title (the details follow the sentences a student reads first)."""
 
+WHOLE_LOG = "measured vs models"
+"""The check's plot's title when it shows the whole log (not the close-up where the cause
+acts)."""
+
 FOLD_SHUT, FOLD_OPEN = "+", "−"
 """Before a fold's title: shut (Enter opens it) and open. Not Textual's own "▶"/"▼": "▶" is
 the mark of the entry the keys go to (:data:`~minseg_tui.ui.widgets.fields.FOCUS_MARK`),
@@ -53,7 +57,7 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         plots = Horizontal(classes="plots check-plots")
         plots.display = False  # no empty frames while the check works: shown with its view
         with plots:
-            yield TracePlot("measured vs models", TIME_AXIS, SPEED_AXIS, id="plot-check")
+            yield TracePlot(WHOLE_LOG, TIME_AXIS, SPEED_AXIS, id="plot-check")
             yield TracePlot("residual", TIME_AXIS, "rad/s", id="plot-residual")
         yield Prose("computing…", id="check-story")
         with Collapsible(
@@ -108,7 +112,7 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             residual.set_axes("measured - model", TIME_AXIS)
         else:
             t, om, ba, ex = v.t, v.omega, v.baseline, v.extended
-            check.set_axes("measured vs models", TIME_AXIS)
+            check.set_axes(WHOLE_LOG, TIME_AXIS)
             residual.set_axes("measured - model, whole log", TIME_AXIS)
         span = (float(t[0]), float(t[-1])) if t.size > 1 else None
         # drawn in this order: the measured speed (and the first order's miss) on top
