@@ -334,6 +334,6 @@ async def _callbacks_first(self: Screen[object], event: Any) -> None:
 
 
 def callbacks_before_layouts(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every screen runs what waits for its refresh before the layouts still to come (reach 5):
+    """Every screen runs what waits for its refresh before the layouts still to come (reach 4):
     what a widget placed after a refresh reads the layout before the last."""
     monkeypatch.setattr(Screen, "_on_idle", _callbacks_first)
