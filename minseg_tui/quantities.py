@@ -237,6 +237,32 @@ def format_value(value: float | None, unit: str = "", digits: int = DIGITS) -> s
     return f"{format_number(value, digits)} {unit}".rstrip()
 
 
+def axis_label(name: str, unit: str) -> str:
+    """A plot axis's label on screen: the quantity, then its unit in brackets ('t [s]');
+    :func:`axis_unit` reads the unit back."""
+    return f"{name} [{unit}]"
+
+
+def axis_unit(label: str) -> str | None:
+    """The unit of an :func:`axis_label` ('omega [rad/s]' -> 'rad/s'); None for a label
+    without one."""
+    unit = re.search(r"\[(.+)\]", label)
+    return unit.group(1) if unit else None
+
+
+def printed_label(name: str, unit: str) -> str:
+    """A quantity with its unit as the report's figures and the CLI's lines name it, in
+    parentheses ('t (s)', 'omega (rad/s)')."""
+    return f"{name} ({unit})"
+
+
+TIME_AXIS = axis_label("t", "s")
+"""The time axis of every plot on screen: seconds into the run."""
+
+SPEED_AXIS = axis_label("omega", "rad/s")
+"""The speed axis of the plots on screen that show the wheel's speed."""
+
+
 def join_units(text: str) -> str:
     """``text`` with a no-break space between every number and the unit after it and inside
     units of several words ("2.216 mN m s/rad" stays one piece when a line is wrapped)."""

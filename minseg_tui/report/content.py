@@ -35,8 +35,18 @@ from minseg_tui.quantities import (
     format_quantity,
     format_reading,
     format_spread,
+    printed_label,
 )
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
+
+TIME = printed_label("t", "s")
+"""The time axis of the report's figures: seconds into the run."""
+
+SPEED = printed_label("omega", "rad/s")
+"""The speed axis of the report's figures of a run."""
+
+RESIDUAL = printed_label("measured - model", "rad/s")
+"""The axis of a figure of the model check's residual: the speed measured less the model's."""
 
 
 @dataclass(frozen=True)
@@ -359,8 +369,8 @@ def _zoom_figure(session: Session, run: str | None, s: ResponseResult) -> Figure
         [Line("omega, measured samples", t[sel], w[sel], dots=True)],
         marks=marks,
         title=f"run {run}: the rise at t = {format_number(st.t)} s, read by the program as in Tasks 11-12",
-        xlabel="t (s)",
-        ylabel="omega (rad/s)",
+        xlabel=TIME,
+        ylabel=SPEED,
         width=640,
         height=300,
     )
@@ -440,11 +450,11 @@ def _run_figure(log: RunLog, name: str) -> Figure:
         lines.append(
             Line("omega, the manual's Euler + 20-tap average", t, log.extra["omega_lab"], dash=True)
         )
-    top = plot(lines, ylabel="omega (rad/s)", title=f"run {name}", show_xlabel=False, height=220)
+    top = plot(lines, ylabel=SPEED, title=f"run {name}", show_xlabel=False, height=220)
     ul = [Line("u_A, applied", t, log.u, steps=True)]
     if "u_req" in log.extra:
         ul.append(Line("u_req, requested", t, log.extra["u_req"], dash=True, steps=True))
-    bottom = plot(ul, xlabel="t (s)", ylabel="u (V)", height=160)
+    bottom = plot(ul, xlabel=TIME, ylabel=printed_label("u", "V"), height=160)
     return Figure(stack((top, bottom)), 720, f"Run {name}: speed and voltage against time.")
 
 
@@ -482,14 +492,14 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
     top = plot(
         lines,
         title=f"run {name}: measured against the models",
-        ylabel="omega (rad/s)",
+        ylabel=SPEED,
         show_xlabel=False,
         width=640,
     )
     res = [Line("measured - first order", t, r.omega - r.baseline_pred, color="#d62728")]
     if model:
         res.append(Line("measured - extended", t, r.omega - r.extended_pred, color="#2ca02c"))
-    bottom = plot(res, xlabel="t (s)", ylabel="measured - model (rad/s)", height=170, width=640)
+    bottom = plot(res, xlabel=TIME, ylabel=RESIDUAL, height=170, width=640)
     whole = Figure(
         stack((top, bottom)),
         640,
@@ -528,7 +538,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         if edge is None
         else (Mark(f"the input changes, t = {format_number(edge)} s", x=edge),),
         title=f"close-up: {check_says.close_up_what(cu)}",
-        ylabel="omega (rad/s)",
+        ylabel=SPEED,
         show_xlabel=False,
         width=440,
         height=260,
@@ -542,8 +552,8 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
         res_cu,
         bands=(floor,),
         marks=() if edge is None else (Mark("", x=edge),),
-        xlabel="t (s)",
-        ylabel="measured - model (rad/s)",
+        xlabel=TIME,
+        ylabel=RESIDUAL,
         width=440,
         height=190,
         show_xlabel=not on_angle,
@@ -570,8 +580,8 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
                 ),
                 marks=() if edge is None else (Mark("", x=edge),),
                 title="angle error: measured - model, summed over the window",
-                xlabel="t (s)",
-                ylabel="angle error (rad)",
+                xlabel=TIME,
+                ylabel=printed_label("angle error", "rad"),
                 width=440,
                 height=190,
             )

@@ -74,11 +74,12 @@ from minseg_tui.ui.messages import (
 )
 from minseg_tui.ui.panels.report import written_in
 from minseg_tui.ui.screens.boardcheck import (
+    REVOLUTION,
     BoardCheckScreen,
     RevolutionScreen,
     WheelQuestionScreen,
 )
-from minseg_tui.ui.screens.classview import ClassScreen, ClassWriter
+from minseg_tui.ui.screens.classview import NO_WRITER, ClassScreen, ClassWriter
 from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.screens.help import HelpScreen
 from minseg_tui.ui.screens.lab import PANEL_KEYS, LabScreen
@@ -851,7 +852,7 @@ class LabApp(App[None]):
             BoardCheckScreen(
                 r.ok,
                 r.text,
-                "Counts per revolution",
+                REVOLUTION,
                 f"{in_palette('count_revolution')} counts again",
             )
         )
@@ -1279,7 +1280,7 @@ class LabApp(App[None]):
                 return  # a newer export was asked for since: it writes the report
             try:
                 if self._writer is None:
-                    raise MinsegError("this program was started without the report writer")
+                    raise MinsegError(NO_WRITER)
                 paths = tuple(str(p) for p in self._writer(session))
             except (MinsegError, OSError) as exc:
                 self.call_from_thread(self.notify, str(exc), title="report", severity="error")

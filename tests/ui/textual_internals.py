@@ -4,60 +4,53 @@ Each reach is here because Textual 8.2 offers no public way to do it; when an up
 Textual breaks one, this file is the one to read. Checked against Textual's source in the
 venv and its documentation (Pilot, App.run_test, Input, Screen, textual.keys):
 
-Thirteen names of Textual's internals, in six reaches (each reach's last line says why no
-public way does it; the public names looked at are there too):
+Eleven names of Textual's internals, in five reaches (each reach's last line says in one line
+why no public way does it; the public names looked at are in the lines above it):
 
-1. :func:`wait_for_screen`: ``Pilot._wait_for_screen``, done again here, and put in its
-   place. The exact wait Pilot itself uses after a key (every node handles what was queued
-   on it, a handler under way included); it also returns at once when the app has failed
-   (``App._exception_event``). Pilot's own queues a new closure on every node each time,
-   and Textual works out each closure's signature (``inspect.signature``) before it calls
-   it; the callback here states its own. Pilot's own also queues it on the nodes that are
-   idle (reach 4), where it waits for nothing: each such callback cost a message, an Idle
-   event and the MRO walk for its handlers, and the tests' waits were about half the
-   messages the app processed.
-   Why no public way: Pilot's public ``pause()`` adds a forced layout and, with no delay,
-   the CPU-idle guess of reach 2, and ``wait_for_animation``/``wait_for_scheduled_animations``
-   wait for animations only; a failed app shows in the public ``App.return_code`` (1), a
-   value to poll, not an event to wait for.
-2. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
+1. :func:`make_waits_exact`: replaces ``wait_for_idle`` (``textual._wait``) as imported by
    ``textual.app`` and ``textual.pilot``, and ``Pilot._wait_for_screen`` with
-   :func:`wait_for_screen`.
-   Why no public way: ``Pilot.press`` and ``Pilot.pause()`` call them after every key, and
-   neither they nor ``App.run_test`` take an option to wait otherwise.
-3. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
+   :func:`wait_for_screen`, the exact wait Pilot itself uses after a key, done again here with
+   public names only. Pilot's public ``pause()`` adds a forced layout and, with no delay, the
+   CPU-idle guess, and ``wait_for_animation``/``wait_for_scheduled_animations`` wait for
+   animations only.
+   Why: Pilot.press and pause() call them after every key; neither they nor run_test take another.
+2. :func:`leave_headless_frames_unpainted`: ``Screen._compositor_refresh`` replaced, and in
    the replacement the screen's ``_compositor._dirty_regions``, ``_dirty_widgets`` and
-   ``App._update_mouse_over``.
-   Why no public way: no option or ``TEXTUAL_*`` setting turns painting off in a headless
-   app (``TEXTUAL_FPS`` only spaces the frames, ``App.batch_update`` holds them for a block).
-4. :func:`mark_idle_nodes`: ``MessagePump._get_message`` wrapped so that a node says while
+   ``App._update_mouse_over``. ``TEXTUAL_FPS`` only spaces the frames, and
+   ``App.batch_update`` holds them for a block.
+   Why: no option or ``TEXTUAL_*`` setting turns painting off in a headless app.
+3. :func:`mark_idle_nodes`: ``MessagePump._get_message`` wrapped so that a node says while
    its message loop waits for the next message: with nothing queued (the public
    ``message_queue_size``) the node then has no handler under way (its loop takes the next
    message only once the one before, its Idle event and its ``call_next`` callbacks are
-   done). :func:`idle` reads it. (Until stop 36: ``Queue.get`` of ``textual._queue`` and
-   the node's ``MessagePump._message_queue``, two names for what this one does.)
-   Why no public way: ``message_queue_size`` says what is queued, not whether a handler is
-   under way, and ``MessagePump.is_running`` is true for the node's whole life.
-5. :func:`callbacks_before_layouts`: ``Screen._on_idle`` replaced, calling
+   done). :func:`idle` reads it. ``MessagePump.is_running`` is true for the node's whole
+   life; the public ``message_signal`` is published before the node's Idle and callbacks.
+   Why: ``message_queue_size`` says what is queued, not whether a handler is under way.
+4. :func:`callbacks_before_layouts`: ``Screen._on_idle`` replaced, calling
    ``Screen._invoke_and_clear_callbacks`` at once. What waits for the screen's refresh
    (``call_after_refresh``) runs when the screen is next idle, on the layout it has; a
    widget asks for the next layout only when it is itself next idle, so on a busy machine
    the screen may run them between two layouts. This makes the screen run them before
    every layout still to come, the worst order.
-   Why no public way: ``call_after_refresh`` and ``refresh(layout=True)`` say what to do,
-   not in which order the screen does the two.
-6. :func:`parse_stylesheets_once`: ``Stylesheet._parse_rules`` wrapped with a cache for the
-   process, keyed by its arguments and the Stylesheet's ``_variables``. Textual caches the
-   parse per Stylesheet only, and a test process starts hundreds of apps, each parsing the
-   same CSS again.
-   Why no public way: nothing shares parsed CSS between apps; the variables a Stylesheet
-   parses with have a setter (``set_variables``) and no getter, and the public
-   ``App.get_css_variables()`` is the app's theme now, not what a given Stylesheet holds.
+   Why: ``call_after_refresh`` and ``refresh(layout=True)`` say what to do, not in which order.
+5. :func:`parse_stylesheets_once`: ``Stylesheet._parse_rules`` wrapped with a cache for the
+   process, keyed by its arguments and the variables the Stylesheet parses with, which it
+   notes as they are handed to it (its public constructor and ``set_variables``; until stop
+   37 read off its private ``_variables``). Textual caches the parse per Stylesheet only,
+   and a test process starts hundreds of apps, each parsing the same CSS again.
+   Why: nothing public shares parsed CSS between apps, or parses a source with a cache.
 
-Done with public API here: the running app is ``MessagePump.app`` of a node attached to no
-app (not ``textual._context.active_app``); the still cursor is each Input's
-``cursor_blink`` set off as it is made (not ``Input._toggle_cursor``); a character's key
-name is made from its Unicode name and Textual's ``KEY_NAME_REPLACEMENTS`` (not
+posting, harlequin and toolong (their newest snapshots, read at stop 37) do none of these:
+they wait with ``pause()``, ``workers.wait_for_complete()`` and polls, paint every frame and
+parse CSS per app; harlequin stills its Input cursors through ``Input._toggle_cursor`` (done
+here with the public ``cursor_blink``) and imports ``textual.widgets._tree``.
+
+Done with public API here: :func:`wait_for_screen` sees that the app has failed in its
+documented ``App.return_code`` (1), looked at every :data:`FAILED_LOOK` s (until stop 37:
+``App._exception_event``, which Pilot's own waits on); the running app is ``MessagePump.app``
+of a node attached to no app (not ``textual._context.active_app``); the still cursor is each
+Input's ``cursor_blink`` set off as it is made (not ``Input._toggle_cursor``); a character's
+key name is made from its Unicode name and Textual's ``KEY_NAME_REPLACEMENTS`` (not
 ``textual.keys._character_to_key``), checked against ``key_to_character``.
 
 Done with public API elsewhere: keys handed over in a burst go in with ``App.post_message``
@@ -71,7 +64,6 @@ from __future__ import annotations
 import asyncio
 import inspect
 import unicodedata
-from asyncio import FIRST_COMPLETED
 from collections.abc import Awaitable, Callable
 from typing import Any
 
@@ -167,13 +159,28 @@ def all_idle(app: App[object]) -> bool:
     return idle(app) and all(idle(n) for n in screen.walk_children(with_self=True))
 
 
+FAILED = 1
+"""``App.return_code`` of an app that has failed (Textual's documented value for an app that
+exited with a fatal error: an exception in a handler; None while it runs)."""
+
+FAILED_LOOK = 0.05
+"""How often (s) :func:`wait_for_screen` looks whether the app has failed while it waits: a
+failed app's nodes handle nothing more, and the wait ends within this of the failure."""
+
+
 async def wait_for_screen(pilot: Pilot[object], timeout: float = 30.0) -> bool:
     """Wait until the app and every node of its screen have handled what was queued on them
     when this began (a handler under way included): a callback queued on each of them that
     is not idle (:func:`idle`: it has nothing to handle), then wait until all have run, or
-    the app has failed. As ``Pilot._wait_for_screen`` of Textual 8.2 does, line for line,
-    with a bound method for the callback and the idle nodes left out. True: all of them
-    ran; raises Textual's ``WaitForScreenTimeout`` after ``timeout`` s (a hang guard)."""
+    the app has failed. As ``Pilot._wait_for_screen`` of Textual 8.2 does, with a callback
+    that states its own signature, the idle nodes left out, and the failure seen in the
+    public ``App.return_code`` (:data:`FAILED`), not in ``App._exception_event``. Pilot's
+    own queues a new closure on every node each time, and Textual works out each closure's
+    signature (``inspect.signature``) before it calls it; it also queues one on the idle
+    nodes, where it waits for nothing: each cost a message, an Idle event and the MRO walk
+    for its handlers, and the tests' waits were about half the messages the app processed.
+    True: all of them ran; False: the app failed first; raises Textual's
+    ``WaitForScreenTimeout`` after ``timeout`` s (a hang guard)."""
     app = pilot.app
     try:
         screen = app.screen
@@ -184,17 +191,18 @@ async def wait_for_screen(pilot: Pilot[object], timeout: float = 30.0) -> bool:
         if not idle(node) and node.call_later(countdown):
             countdown.count += 1
     if countdown.count:
-        waits = [
-            asyncio.create_task(countdown.zero.wait()),
-            asyncio.create_task(app._exception_event.wait()),
-        ]
-        _, pending = await asyncio.wait(waits, timeout=timeout, return_when=FIRST_COMPLETED)
-        for task in pending:
-            task.cancel()
-        if len(pending) == len(waits):
-            raise WaitForScreenTimeout(
-                "Timed out while waiting for widgets to process pending messages."
-            )
+        loop = asyncio.get_running_loop()
+        end = loop.time() + timeout
+        zero = asyncio.create_task(countdown.zero.wait())
+        try:
+            while not zero.done() and app.return_code != FAILED:
+                if loop.time() >= end:
+                    raise WaitForScreenTimeout(
+                        "Timed out while waiting for widgets to process pending messages."
+                    )
+                await asyncio.wait((zero,), timeout=FAILED_LOOK)
+        finally:
+            zero.cancel()
         if countdown.count > 0:
             return False
     return True
@@ -237,6 +245,25 @@ def leave_headless_frames_unpainted(monkeypatch: pytest.MonkeyPatch) -> None:
 _parse_rules = Stylesheet._parse_rules
 _parsed: dict[tuple[object, ...], list[RuleSet]] = {}
 
+_VARIABLES = "_minseg_tests_variables"
+"""The attribute that holds the variables (the theme's colours) a Stylesheet was made or last
+set with, as ``(name, value)`` pairs: what it parses CSS with (:func:`parse_stylesheets_once`)."""
+
+_made = Stylesheet.__init__
+_set_variables = Stylesheet.set_variables
+
+
+def _made_noting(self: Stylesheet, *, variables: dict[str, str] | None = None) -> None:
+    """``Stylesheet(variables=...)``, which notes the variables it is made with."""
+    _made(self, variables=variables)
+    setattr(self, _VARIABLES, tuple((variables or {}).items()))
+
+
+def _set_noting(self: Stylesheet, variables: dict[str, str]) -> None:
+    """Textual's public ``Stylesheet.set_variables``, which notes the variables set."""
+    _set_variables(self, variables)
+    setattr(self, _VARIABLES, tuple(variables.items()))
+
 
 def _parse_rules_once(
     self: Stylesheet,
@@ -251,7 +278,7 @@ def _parse_rules_once(
     rules. Textual keeps them per Stylesheet (``_parse_cache``), and shares one source's
     rules between the parses of one app (a Stylesheet's ``reparse`` starts a new one): the
     rules are not changed once made."""
-    key = (css, read_from, is_default_rules, tie_breaker, scope, *self._variables.items())
+    key = (css, read_from, is_default_rules, tie_breaker, scope, getattr(self, _VARIABLES))
     rules = _parsed.get(key)
     if rules is None:
         rules = _parse_rules(self, css, read_from, is_default_rules, tie_breaker, scope)
@@ -260,7 +287,11 @@ def _parse_rules_once(
 
 
 def parse_stylesheets_once(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every Stylesheet parses a CSS source once per process (:func:`_parse_rules_once`)."""
+    """Every Stylesheet parses a CSS source once per process (:func:`_parse_rules_once`), and
+    notes the variables it parses with as they are handed to it (its public constructor and
+    ``set_variables``)."""
+    monkeypatch.setattr(Stylesheet, "__init__", _made_noting)
+    monkeypatch.setattr(Stylesheet, "set_variables", _set_noting)
     monkeypatch.setattr(Stylesheet, "_parse_rules", _parse_rules_once)
 
 
@@ -303,6 +334,6 @@ async def _callbacks_first(self: Screen[object], event: Any) -> None:
 
 
 def callbacks_before_layouts(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Every screen runs what waits for its refresh before the layouts still to come (reach 5):
+    """Every screen runs what waits for its refresh before the layouts still to come (reach 4):
     what a widget placed after a refresh reads the layout before the last."""
     monkeypatch.setattr(Screen, "_on_idle", _callbacks_first)

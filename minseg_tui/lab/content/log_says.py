@@ -31,11 +31,12 @@ from minseg_tui.model.runlog import (
     TooLarge,
     UnequalColumns,
 )
+from minseg_tui.quantities import printed_label
 
 
 def _named(column: Column) -> str:
     """A run log's column with its unit, as a refusal names it: 'omega (rad/s)'."""
-    return f"{column} ({COLUMN_UNITS[column]})"
+    return printed_label(column, COLUMN_UNITS[column])
 
 
 def header_words(bad: BadHeader) -> str:

@@ -5,7 +5,11 @@ text and its ``--json``), the lab's screen and the report alike.
 The model (:mod:`minseg_tui.model.check`) gives records holding the numbers a sentence
 needs (which rows, when, how large); each function here turns one kind of record into the
 sentence people read. :func:`as_json` is ``analyze --json``'s object, its sentences from
-here. Units: s, V, rad/s, ms as each sentence says.
+here. A table that words one record for both audiences (the lab assistant: ``analyze``; the
+student: the lab's screen and the report) holds the two wordings side by side, one row a
+record (:class:`Said`); where the two differ in more than their words (another order, other
+clauses), a function each says it (``reason``/``reason_plain``, ``caveat``/``caveat_plain``,
+``lost``/``lost_plain``). Units: s, V, rad/s, ms as each sentence says.
 """
 
 from __future__ import annotations
@@ -13,6 +17,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
+from typing import Generic, TypeVar
 
 import numpy as np
 
@@ -27,6 +32,23 @@ from minseg_tui.model.check.evidence import Lack, Lacks
 from minseg_tui.model.check.figures import CloseUp, Lead, Window
 from minseg_tui.model.check.sampling import CountFrom, Sampling
 from minseg_tui.quantities import format_number
+
+W = TypeVar("W")
+
+
+@dataclass(frozen=True)
+class Said(Generic[W]):
+    """One record's words for each of the check's two audiences, side by side: ``assistant``,
+    what ``minseg-tui analyze`` says to the lab assistant, in the check's own terms (the
+    whitened residual, a pole); ``student``, what the lab's screen and the report say to a
+    student (the error, a second time constant); None: the assistant's words serve both."""
+
+    assistant: W
+    student: W | None = None
+
+    def to(self, plain: bool) -> W:
+        """The words for a student (``plain``) or for the lab assistant."""
+        return self.student if plain and self.student is not None else self.assistant
 
 
 @dataclass(frozen=True)
@@ -206,44 +228,71 @@ def anomaly(a: an.Anomaly) -> str:
     )
 
 
-SMOOTH: dict[rs.Alike, str] = {
-    "filters": "this speed is smooth, not a difference of encoder counts: an averaging filter "
-    "on the speed and an extra pole in the motor look alike here, so the log cannot tell "
-    "them apart; the fit prefers the one named",
-    "pole_measured": "this speed is smooth, not a difference of encoder counts: an average of "
-    "the speed and a first-order filter of it (a pole on the measurement) are both filters of "
-    "the reading, and the pole named acts there; the fit prefers it",
+SMOOTH: dict[rs.Alike, Said[str]] = {
+    "filters": Said(
+        "this speed is smooth, not a difference of encoder counts: an averaging filter on the "
+        "speed and an extra pole in the motor look alike here, so the log cannot tell them apart; "
+        "the fit prefers the one named",
+        student="This speed is smooth, not counted in encoder steps: an averaged speed and a "
+        "second time constant in the motor smooth it alike, so this run cannot tell them apart; "
+        "the check prefers the one named.",
+    ),
+    "pole_measured": Said(
+        "this speed is smooth, not a difference of encoder counts: an average of the speed and a "
+        "first-order filter of it (a pole on the measurement) are both filters of the reading, and "
+        "the pole named acts there; the fit prefers it",
+        student="This speed is smooth, not counted in encoder steps: an averaged speed and a lag "
+        "in the speed reading both smooth it, and the lag named acts there; the check prefers it.",
+    ),
 }
-"""Why a smooth speed column cannot tell the causes that act on the reading apart."""
+"""Why a smooth speed column cannot tell the causes that act on the reading apart (the
+student's words a whole sentence)."""
 
-TELL_APART: dict[frozenset[str], str] = {
-    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
-    "samples after each step (more counts per sample, a faster sampling where the counts "
-    "allow it), would (a delay leaves those samples flat and then turns a corner, a pole "
-    "bends smoothly from the start)",
-    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
-    "(a delay shifts the rise, an average turns it into a ramp)",
-    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
-    "of the speed acts on the measurement only, a pole on the motor)",
-    frozenset({"coulomb_friction", "coast_on_zero"}): "a step down to a small voltage other "
-    "than 0 would (dry friction slows the wheel there too, a coast only at 0)",
-    frozenset({"coulomb_friction", "current_limit"}): "steps of several sizes would (a cap "
-    "limits the big steps only, friction takes the same volts off every level)",
-    frozenset({"coast_on_zero", "second_pole"}): "steps down to a small voltage other than 0 "
-    "would (a coast acts only at 0)",
+TELL_APART: dict[frozenset[str], Said[str]] = {
+    frozenset({"dead_time", "second_pole"}): Said(
+        "more steps, or finer speed readings in the first samples after each step (more counts per "
+        "sample, a faster sampling where the counts allow it), would (a delay leaves those samples "
+        "flat and then turns a corner, a pole bends smoothly from the start)",
+        student="more steps, or finer speed readings in the first samples after each step, would "
+        "(a delay leaves those samples flat and then turns a corner, a second time constant bends "
+        "smoothly from the start)",
+    ),
+    frozenset({"dead_time", "velocity_filter"}): Said(
+        "the raw encoder counts or more steps would (a delay shifts the rise, an average turns it "
+        "into a ramp)"
+    ),
+    frozenset({"velocity_filter", "second_pole"}): Said(
+        "the raw encoder counts would (an average of the speed acts on the measurement only, a "
+        "pole on the motor)",
+        student="the raw encoder counts would (an average acts on the speed reading only, a second "
+        "time constant on the motor)",
+    ),
+    frozenset({"coulomb_friction", "coast_on_zero"}): Said(
+        "a step down to a small voltage other than 0 would (dry friction slows the wheel there "
+        "too, a coast only at 0)"
+    ),
+    frozenset({"coulomb_friction", "current_limit"}): Said(
+        "steps of several sizes would (a cap limits the big steps only, friction takes the same "
+        "volts off every level)"
+    ),
+    frozenset({"coast_on_zero", "second_pole"}): Said(
+        "steps down to a small voltage other than 0 would (a coast acts only at 0)"
+    ),
 }
 """What kind of log would tell two causes apart, in words, for the pairs a log often
 cannot tell (the first pair that sets a cause only one model holds against a cause only
-the other holds speaks; a pair not here gets the check's general words)."""
+the other holds speaks; a pair not here gets the check's general words). A student is told
+of a second time constant where the assistant is told of a pole."""
 
 
-def what_would_tell(a: tuple[str, ...], b: tuple[str, ...]) -> str:
-    """What kind of log would tell causes ``a`` from ``b`` apart, in words."""
+def what_would_tell(a: tuple[str, ...], b: tuple[str, ...], plain: bool = False) -> str:
+    """What kind of log would tell causes ``a`` from ``b`` apart, in words (``plain``: told
+    to a student)."""
     only_a, only_b = set(a) - set(b), set(b) - set(a)
     for pair, words in TELL_APART.items():
         # a pair that sets a cause of one against a cause of the other
         if pair & only_a and pair & only_b:
-            return words
+            return words.to(plain)
     return (
         "steps of other sizes, a step down to a small voltage and a faster sampling would "
         "show more of each"
@@ -286,11 +335,14 @@ def refusal(r: fx.Refusal) -> str:
     return REFUSAL[r.kind]
 
 
-REASON: dict[ReasonKind, str] = {
-    "T_bound": "the time constant T it needs sits on the bound of its range",
-    "worse_raw": "it matches the measured speed itself worse than the first-order model",
-    "others_explain": "the other causes explain the log as well without it",
-    "whitened_only": "it cuts the whitened residual but not the error of the speed itself",
+REASON: dict[ReasonKind, Said[str]] = {
+    "T_bound": Said("the time constant T it needs sits on the bound of its range"),
+    "worse_raw": Said("it matches the measured speed itself worse than the first-order model"),
+    "others_explain": Said("the other causes explain the log as well without it"),
+    "whitened_only": Said(
+        "it cuts the whitened residual but not the error of the speed itself",
+        student="it improves the check's weighed error but not the error of the speed itself",
+    ),
 }
 """Why a clear cause was left out, in words, where the sentence has no figure
 (:func:`reason` for the others)."""
@@ -355,7 +407,7 @@ def reason(r: Reason) -> str:
                 "where the two models differ"
             )
         return f"{r.causes[0]} matches the speed itself far better"
-    return REASON[r.kind]
+    return REASON[r.kind].assistant
 
 
 def _untold(f: rs.Untold) -> str:
@@ -404,7 +456,7 @@ def caveat(c: rs.Caveat) -> str:
             "list of causes acts in this log, so the named cause(s) explain only part of it"
         )
     if isinstance(f, rs.Smooth):
-        return SMOOTH[f.alike]
+        return SMOOTH[f.alike].assistant
     if isinstance(f, rs.Scatter):
         scatter = (
             f"the speed scatters {f.noise:.3g} rad/s from sample to sample, "
@@ -448,62 +500,64 @@ class ClaimWords:
     void: str
 
 
-CLAIMS: dict[str, ClaimWords] = {
-    "dead_time": ClaimWords(
-        "(a pure delay; an extra pole would start at once, only more slowly)",
-        lambda r: (
-            f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened residual)"
+CLAIMS: dict[str, Said[ClaimWords]] = {
+    "dead_time": Said(
+        ClaimWords(
+            "(a pure delay; an extra pole would start at once, only more slowly)",
+            lambda r: (
+                f"(a pure delay: an extra pole in its place leaves {r:.1f} times the whitened "
+                "residual)"
+            ),
+            lambda r: (
+                f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
+                "the whitened residual: this log hardly tells a delay from a pole)"
+            ),
+            "(a delay, or in this log an extra pole or an average about as well)",
         ),
-        lambda r: (
-            f"(a delay, though an extra pole in its place leaves only {r:.2f} times "
-            "the whitened residual: this log hardly tells a delay from a pole)"
+        student=ClaimWords(
+            "(a pure delay; a second time constant would start at once, only more slowly)",
+            lambda r: (
+                f"(a pure delay: a second time constant in its place leaves {r:.1f} times the "
+                "error)"
+            ),
+            lambda r: (
+                f"(a delay, though a second time constant in its place leaves only {r:.2f} "
+                "times the error: this run hardly tells a delay from a lag)"
+            ),
+            "(a delay, or in this run a second time constant or an averaged speed about as well)",
         ),
-        "(a delay, or in this log an extra pole or an average about as well)",
     ),
-    "second_pole": ClaimWords(
-        " (a pure delay would show a corner)",
-        lambda r: f" (a pure delay in its place leaves {r:.1f} times the whitened residual)",
-        lambda r: (
-            f" (though a pure delay in its place leaves only {r:.2f} times the "
-            "whitened residual: this log hardly tells a pole from a delay)"
+    "second_pole": Said(
+        ClaimWords(
+            " (a pure delay would show a corner)",
+            lambda r: f" (a pure delay in its place leaves {r:.1f} times the whitened residual)",
+            lambda r: (
+                f" (though a pure delay in its place leaves only {r:.2f} times the "
+                "whitened residual: this log hardly tells a pole from a delay)"
+            ),
+            "",
         ),
-        "",
+        student=ClaimWords(
+            " (a pure delay would show a corner)",
+            lambda r: f" (a pure delay in its place leaves {r:.1f} times the error)",
+            lambda r: (
+                f" (though a pure delay in its place leaves only {r:.2f} times the error: "
+                "this run hardly tells a lag from a delay)"
+            ),
+            "",
+        ),
     ),
 }
-"""Each claim in words, by the cause that makes it."""
-
-
-PLAIN_CLAIMS: dict[str, ClaimWords] = {
-    "dead_time": ClaimWords(
-        "(a pure delay; a second time constant would start at once, only more slowly)",
-        lambda r: (
-            f"(a pure delay: a second time constant in its place leaves {r:.1f} times the error)"
-        ),
-        lambda r: (
-            f"(a delay, though a second time constant in its place leaves only {r:.2f} times "
-            "the error: this run hardly tells a delay from a lag)"
-        ),
-        "(a delay, or in this run a second time constant or an averaged speed about as well)",
-    ),
-    "second_pole": ClaimWords(
-        " (a pure delay would show a corner)",
-        lambda r: f" (a pure delay in its place leaves {r:.1f} times the error)",
-        lambda r: (
-            f" (though a pure delay in its place leaves only {r:.2f} times the error: this "
-            "run hardly tells a lag from a delay)"
-        ),
-        "",
-    ),
-}
-"""The claims told to a student (the lab's details and the report): the same figures, the
-error the check weighs called the error, a pole a second time constant."""
+"""Each claim in words, by the cause that makes it; told to a student (the lab's details and
+the report) with the same figures, the error the check weighs called the error, a pole a
+second time constant."""
 
 
 def _claim(b: rs.Because, plain: bool = False) -> str:
     """The claim of ``b``'s cause against its rival, with the figure behind it when the
     rival was fitted in its place, or taken back when the log cannot rule the rival out
-    (``plain``: in a student's words, :data:`PLAIN_CLAIMS`)."""
-    w = (PLAIN_CLAIMS if plain else CLAIMS)[b.cause]
+    (``plain``: in a student's words)."""
+    w = CLAIMS[b.cause].to(plain)
     if b.void:
         return w.void
     r = b.rival_ratio
@@ -712,7 +766,8 @@ def _pole_plain(f: fx.Pole, claim: str) -> str:
 def shown(b: rs.Because, plain: bool = False) -> str:
     """What a cause's evidence reads off the log, in words, with its claim against a rival
     (every number read off the log). ``plain``: told to a student (the lab's details and
-    the report), a pole as a second time constant and the claims in :data:`PLAIN_CLAIMS`."""
+    the report), a pole as a second time constant and the claims in :data:`CLAIMS`' words for a
+    student."""
     f = b.shown
     if plain and isinstance(f, fx.Pole):
         return _pole_plain(f, _claim(b, plain=True))
@@ -737,34 +792,51 @@ def shown(b: rs.Because, plain: bool = False) -> str:
     raise TypeError(f"no words for {type(f).__name__}")
 
 
-def _plain(p: rs.Plain) -> str:
-    """The evidence when no cause is named."""
-    if p.how == "unexplained":
-        return "no cause from the list explains what the first-order model misses"
-    if p.how == "fits":
-        text = "the first-order model fits the log"
-    elif p.how == "turning":
-        text = (
-            f"where the wheel turns ({p.turning} of {p.rows} rows; "
-            f"it stands still in the others) the first-order model misses by "
-            f"{p.left_turning:.2g} rad/s rms above the noise ({p.level:.3g} rad/s)"
-        )
-    elif p.how == "at_noise":
-        text = (
-            f"the first-order model's rms error is at the level of the speed's noise: "
-            f"{p.rms:.3g} rad/s against a noise of {p.level:.3g} rad/s"
-        )
-    else:
-        text = (
-            f"the first-order model misses by {p.left:.2g} rad/s rms above the noise "
-            f"({p.level:.3g} rad/s), but no cause from the list is clear enough to name"
-        )
-    if p.low_fit is not None:
-        text += (
-            f" (its fit is only {p.low_fit:.0f} % because that noise is large against the "
-            "speed's changes, not because the model is wrong)"
-        )
-    return text
+NONE_NAMED: dict[rs.FitSaid, Said[str]] = {
+    "unexplained": Said(
+        "no cause from the list explains what the first-order model misses",
+        student="no cause the check knows explains what the simple model misses",
+    ),
+    "fits": Said("the first-order model fits the log", student="the simple model fits the run"),
+    "turning": Said(
+        "where the wheel turns ({p.turning} of {p.rows} rows; it stands still in the others) the "
+        "first-order model misses by {p.left_turning:.2g} rad/s rms above the noise ({p.level:.3g} "
+        "rad/s)",
+        student="where the wheel turns ({p.turning} of {p.rows} rows; it stands still in the "
+        "others) the simple model misses by {p.left_turning:.2g} rad/s rms more than the noise "
+        "({p.level:.3g} rad/s)",
+    ),
+    "at_noise": Said(
+        "the first-order model's rms error is at the level of the speed's noise: {p.rms:.3g} rad/s "
+        "against a noise of {p.level:.3g} rad/s",
+        student="the simple model's average speed error is about the speed's noise: {p.rms:.3g} "
+        "rad/s rms against a noise of {p.level:.3g} rad/s",
+    ),
+    "above": Said(
+        "the first-order model misses by {p.left:.2g} rad/s rms above the noise ({p.level:.3g} "
+        "rad/s), but no cause from the list is clear enough to name",
+        student="the simple model misses by {p.left:.2g} rad/s rms more than the noise "
+        "({p.level:.3g} rad/s), but no cause the check knows is clear enough to name",
+    ),
+}
+"""The evidence when no cause is named, by how the first-order model does
+(:attr:`~minseg_tui.model.check.result.Plain.how`), a template of the record's fields (``p``)."""
+
+LOW_FIT = (
+    " (its fit is only {p.low_fit:.0f} % because that noise is large against the speed's "
+    "changes, not because the model is wrong)"
+)
+"""After :data:`NONE_NAMED`'s words (but "unexplained"'s), for both audiences, when the fit
+is low (:attr:`.result.Plain.low_fit`)."""
+
+
+def none_named(p: rs.Plain, plain: bool = False) -> str:
+    """The evidence when no cause is named (``plain``: told to a student, the figures of the
+    assistant's)."""
+    said = NONE_NAMED[p.how].to(plain).format(p=p)
+    if p.how == "unexplained" or p.low_fit is None:
+        return said
+    return said + LOW_FIT.format(p=p)
 
 
 def evidence(f: rs.Finding) -> str:
@@ -773,7 +845,7 @@ def evidence(f: rs.Finding) -> str:
     first-order model does and why no cause was."""
     e = f.evidence
     if isinstance(e, rs.Plain):
-        text = _plain(e)
+        text = none_named(e)
         return f"{text}; {runner_up_why(f)}" if f.runner_up_why is not None else text
     text = (
         f"{shown(e)}. It removes {100 * e.reduction:.1f} % of the "
@@ -985,18 +1057,11 @@ def lost(r: rs.RunnerUp | None) -> str:
 
 
 # -- told to a student: the lab's details and the report (the CLI keeps the words above) ------
-PLAIN_REASON: dict[ReasonKind, str] = {
-    "whitened_only": "it improves the check's weighed error but not the error of the speed itself",
-}
-"""Why a clear cause was left out, told to a student where :data:`REASON`'s words are a
-specialist's."""
-
-
 def reason_plain(r: Reason) -> str:
     """Why a clear cause was left out, told to a student: causes in words, never by their
     contract names (the figures of :func:`reason`)."""
-    if r.kind in PLAIN_REASON:
-        return PLAIN_REASON[r.kind]
+    if r.kind in REASON:
+        return REASON[r.kind].to(plain=True)
     if r.kind == "within_sample" and r.cause in PLAIN_LABELS:
         return _within(r, f"a {PLAIN_LABELS[r.cause]}")
     if r.kind == "swapped":
@@ -1049,37 +1114,6 @@ def lost_plain(r: rs.RunnerUp | None) -> str:
     return text + (f" ({why})." if why else ".")
 
 
-PLAIN_SMOOTH: dict[rs.Alike, str] = {
-    "filters": "This speed is smooth, not counted in encoder steps: an averaged speed and a "
-    "second time constant in the motor smooth it alike, so this run cannot tell them apart; "
-    "the check prefers the one named.",
-    "pole_measured": "This speed is smooth, not counted in encoder steps: an averaged speed and "
-    "a lag in the speed reading both smooth it, and the lag named acts there; the check "
-    "prefers it.",
-}
-""":data:`SMOOTH` told to a student."""
-
-PLAIN_TELL: dict[frozenset[str], str] = {
-    frozenset({"dead_time", "second_pole"}): "more steps, or finer speed readings in the first "
-    "samples after each step, would (a delay leaves those samples flat and then turns a "
-    "corner, a second time constant bends smoothly from the start)",
-    frozenset({"dead_time", "velocity_filter"}): "the raw encoder counts or more steps would "
-    "(a delay shifts the rise, an average turns it into a ramp)",
-    frozenset({"velocity_filter", "second_pole"}): "the raw encoder counts would (an average "
-    "acts on the speed reading only, a second time constant on the motor)",
-}
-""":data:`TELL_APART` told to a student, where its words speak of poles (the other pairs keep
-theirs)."""
-
-
-def _tell_plain(a: tuple[str, ...], b: tuple[str, ...]) -> str:
-    only_a, only_b = set(a) - set(b), set(b) - set(a)
-    for pair, words in PLAIN_TELL.items():
-        if pair & only_a and pair & only_b:
-            return words
-    return what_would_tell(a, b)
-
-
 def caveat_plain(c: rs.Caveat) -> str:
     """Caveat ``c`` told to a student: what this run cannot show, in everyday words (the
     figures of :func:`caveat`; causes in words, never by their contract names)."""
@@ -1103,7 +1137,7 @@ def caveat_plain(c: rs.Caveat) -> str:
             "does not know acts in this run, so the causes named explain only part of it."
         )
     if isinstance(f, rs.Smooth):
-        return PLAIN_SMOOTH[f.alike]
+        return SMOOTH[f.alike].to(plain=True)
     if isinstance(f, rs.Unjudged):
         return f"Whether there is {name} cannot be judged: {lacks(f.why)}."
     if isinstance(f, rs.Untold):
@@ -1118,11 +1152,12 @@ def caveat_plain(c: rs.Caveat) -> str:
                 f"it the model's error is {f.ratio:.2f} times as large, and it changes the "
                 f"simulated speed by {100 * f.moves:.2g} % of the largest speed at most, about "
                 "what any model of a real motor misses by; "
-                f"{_tell_plain(f.named, f.other)}."
+                f"{what_would_tell(f.named, f.other, plain=True)}."
             )
         return (
             f"This run cannot tell {named} from {other}: the second leaves {f.ratio:.2f} times "
-            f"the error of the first, about the same; {_tell_plain(f.named, f.other)}."
+            f"the error of the first, about the same; "
+            f"{what_would_tell(f.named, f.other, plain=True)}."
         )
     text = caveat(c)
     return f"{text[:1].upper()}{text[1:]}."

@@ -33,6 +33,7 @@ from minseg_tui.lab.views.check_says import (
     every,
     in_words,
     lost_plain,
+    none_named,
     shown,
 )
 from minseg_tui.lab.views.check_text import FIGURES, GAIN_DIGITS, figure, figure_words, stem
@@ -510,7 +511,7 @@ def _evidence_plain(r: CheckResult) -> list[str]:
     e = f.evidence
     out: list[str] = []
     if isinstance(e, Plain):
-        out.append(f"Why no cause is named: {evidence_plain_none(e)}.")
+        out.append(f"Why no cause is named: {none_named(e, plain=True)}.")
     else:
         label = in_words(f.cause, plain=True)
         out.append(
@@ -528,36 +529,6 @@ def _evidence_plain(r: CheckResult) -> list[str]:
     if runner:
         out.append(runner)
     return out
-
-
-def evidence_plain_none(p: Plain) -> str:
-    """The evidence when no cause is named, told to a student (the figures of the CLI's)."""
-    if p.how == "unexplained":
-        return "no cause the check knows explains what the simple model misses"
-    if p.how == "fits":
-        text = "the simple model fits the run"
-    elif p.how == "turning":
-        text = (
-            f"where the wheel turns ({p.turning} of {p.rows} rows; it stands still in the "
-            f"others) the simple model misses by {p.left_turning:.2g} rad/s rms more than the "
-            f"noise ({p.level:.3g} rad/s)"
-        )
-    elif p.how == "at_noise":
-        text = (
-            f"the simple model's average speed error is about the speed's noise: "
-            f"{p.rms:.3g} rad/s rms against a noise of {p.level:.3g} rad/s"
-        )
-    else:
-        text = (
-            f"the simple model misses by {p.left:.2g} rad/s rms more than the noise "
-            f"({p.level:.3g} rad/s), but no cause the check knows is clear enough to name"
-        )
-    if p.low_fit is not None:
-        text += (
-            f" (its fit is only {p.low_fit:.0f} % because that noise is large against the "
-            "speed's changes, not because the model is wrong)"
-        )
-    return text
 
 
 def _extended_plain(r: CheckResult, intervals: bool) -> str:

@@ -46,6 +46,7 @@ from minseg_tui.quantities import (
     DIGITS,
     MISSING,
     NOT_DETERMINED,
+    axis_label,
     format_constant_interval,
     format_difference,
     format_number,
@@ -1031,10 +1032,10 @@ def cursor_reading(t: ArrayLike, omega: ArrayLike, at: float) -> CursorReading |
     return CursorReading(at, omega_at, float(ts[before]), float(ts[after]))
 
 
-U_APPLIED = "u_A [V]"
+U_APPLIED = axis_label("u_A", "V")
 """A run's voltage once it is the applied u_A (:attr:`ResultsView.u_label`)."""
 
-U_REQUESTED = "u requested [V]"
+U_REQUESTED = axis_label("u requested", "V")
 """A recorded run's voltage before any u_ss maps it to u_A: the voltage asked of the board."""
 
 

@@ -15,7 +15,14 @@ from minseg_tui.lab.content.keys import key_name
 from minseg_tui.lab.content.steps import LEVELS, Step
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.plant import MeterReading
-from minseg_tui.quantities import MISSING, format_fixed, format_spread
+from minseg_tui.quantities import (
+    MISSING,
+    SPEED_AXIS,
+    TIME_AXIS,
+    axis_label,
+    format_fixed,
+    format_spread,
+)
 from minseg_tui.ui.device import DeviceInfo
 from minseg_tui.ui.keys import PanelKeys, key_hint
 from minseg_tui.ui.live import LiveBuffer, at_level
@@ -54,8 +61,8 @@ class LivePanel(Vertical, PanelKeys):
     def compose(self) -> ComposeResult:
         if self.plots:
             with Horizontal(classes="plots"):
-                yield TracePlot("angle", "t [s]", "theta [rad]", id="plot-angle")
-                yield TracePlot("speed", "t [s]", "omega [rad/s]", id="plot-speed")
+                yield TracePlot("angle", TIME_AXIS, axis_label("theta", "rad"), id="plot-angle")
+                yield TracePlot("speed", TIME_AXIS, SPEED_AXIS, id="plot-speed")
 
     def readout(self) -> Widget | None:
         """The lines to keep in sight while typing (the steady-state indicator, the requested

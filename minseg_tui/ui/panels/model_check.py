@@ -13,6 +13,7 @@ from textual.widgets import Collapsible, Input
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import CheckView
+from minseg_tui.quantities import SPEED_AXIS, TIME_AXIS
 from minseg_tui.ui.keys import PanelKeys, key_hint
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
@@ -23,6 +24,10 @@ from minseg_tui.ui.widgets.textbox import TextBox
 
 DETAILS = "Details: what each figure means · Enter opens"
 """The fold's title (the details follow the sentences a student reads first)."""
+
+WHOLE_LOG = "measured vs models"
+"""The check's plot's title when it shows the whole log (not the close-up where the cause
+acts)."""
 
 FOLD_SHUT, FOLD_OPEN = "+", "−"
 """Before a fold's title: shut (Enter opens it) and open. Not Textual's own "▶"/"▼": "▶" is
@@ -52,8 +57,8 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         plots = Horizontal(classes="plots check-plots")
         plots.display = False  # no empty frames while the check works: shown with its view
         with plots:
-            yield TracePlot("measured vs models", "t [s]", "omega [rad/s]", id="plot-check")
-            yield TracePlot("residual", "t [s]", "rad/s", id="plot-residual")
+            yield TracePlot(WHOLE_LOG, TIME_AXIS, SPEED_AXIS, id="plot-check")
+            yield TracePlot("residual", TIME_AXIS, "rad/s", id="plot-residual")
         yield Prose("computing…", id="check-story")
         with Collapsible(
             title=DETAILS,
@@ -103,12 +108,12 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         residual = self.query_one("#plot-residual", TracePlot)
         if self.close_up and v.close_t.size:
             t, om, ba, ex = v.close_t, v.close_omega, v.close_baseline, v.close_extended
-            check.set_axes("where the cause acts", "t [s]")
-            residual.set_axes("measured - model", "t [s]")
+            check.set_axes("where the cause acts", TIME_AXIS)
+            residual.set_axes("measured - model", TIME_AXIS)
         else:
             t, om, ba, ex = v.t, v.omega, v.baseline, v.extended
-            check.set_axes("measured vs models", "t [s]")
-            residual.set_axes("measured - model, whole log", "t [s]")
+            check.set_axes(WHOLE_LOG, TIME_AXIS)
+            residual.set_axes("measured - model, whole log", TIME_AXIS)
         span = (float(t[0]), float(t[-1])) if t.size > 1 else None
         # drawn in this order: the measured speed (and the first order's miss) on top
         check.show(

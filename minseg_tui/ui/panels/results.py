@@ -20,7 +20,7 @@ from minseg_tui.lab.content.steps import Step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import ResultsView
-from minseg_tui.quantities import format_constant, format_value
+from minseg_tui.quantities import SPEED_AXIS, TIME_AXIS, axis_label, format_constant, format_value
 from minseg_tui.ui.keys import PanelKeys, key_hint
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
@@ -128,7 +128,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         """The view just drawn shows results or comparisons it did not show before."""
 
     def compose(self) -> ComposeResult:
-        yield ResponsePlot("run log", "t [s]", "omega [rad/s]", id="plot-log")
+        yield ResponsePlot("run log", TIME_AXIS, SPEED_AXIS, id="plot-log")
         yield Prose("", id="cursor")
         yield Prose("", id="zoom-note", classes="hint")
 
@@ -178,7 +178,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
             note.update("no run recorded yet (Task 10)")
             return
         if self.zoom is None or not v.rises:
-            plot.set_axes("run log", "t [s]")
+            plot.set_axes("run log", TIME_AXIS)
             plot.show(
                 [
                     Trace(v.t, v.omega, "omega"),
@@ -214,7 +214,9 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         if w.T_63 is not None and read_T:
             traces.append(Trace([w.T_63, w.T_63], [w.omega0, w.level], "crossing", "|"))
         self._cursor(plot, traces, x, v.omega[keep], (lo, hi))
-        plot.set_axes(f"rise {self.zoom + 1}, after a voltage step up", "t after the edge [s]")
+        plot.set_axes(
+            f"rise {self.zoom + 1}, after a voltage step up", axis_label("t after the edge", "s")
+        )
         plot.show(traces, (lo, hi))
         crossing = (
             "the speed crosses it: read T there"

@@ -15,7 +15,7 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import RunView
-from minseg_tui.quantities import format_number, format_value
+from minseg_tui.quantities import SPEED_AXIS, TIME_AXIS, format_number, format_value
 from minseg_tui.ui.keys import PanelKeys
 from minseg_tui.ui.live import LiveBuffer
 from minseg_tui.ui.messages import RunRequested
@@ -31,8 +31,8 @@ FAST_WHY = (
 )
 
 
-PLOT_OF = {"steps": "#plot-slow", "fast": "#plot-fast"}
-"""The plot each kind of run is drawn in."""
+PLOT_OF = {"steps": "plot-slow", "fast": "plot-fast"}
+"""The plot (its id) each kind of run is drawn in."""
 
 PLOT_TITLE = {"steps": "25 ms run", "fast": "5 ms run"}
 """Each plot's title before it shows a run; then the run's name (and whether it is the one
@@ -73,8 +73,8 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
         yield bar
         yield Prose("", id="run-status")
         with Horizontal(classes="plots"):
-            yield TracePlot("25 ms run", "t [s]", "omega [rad/s]", id="plot-slow")
-            yield TracePlot("5 ms run", "t [s]", "omega [rad/s]", id="plot-fast")
+            for kind, plot in PLOT_OF.items():
+                yield TracePlot(PLOT_TITLE[kind], TIME_AXIS, SPEED_AXIS, id=plot)
         yield Prose(FAST_WHY, classes="para")
         yield Static("", id="t-readings", markup=False)
 
@@ -121,8 +121,8 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
         traces = [Trace(v.x, v.omega, "board time")]
         if p.kind == "steps":
             traces.append(Trace(v.x, v.omega_lab, "manual", "dot"))
-        plot = self.query_one(PLOT_OF[p.kind], TracePlot)
-        plot.set_axes(f"{PLOT_TITLE[p.kind]}: recording", "t [s]")
+        plot = self.query_one(f"#{PLOT_OF[p.kind]}", TracePlot)
+        plot.set_axes(f"{PLOT_TITLE[p.kind]}: recording", TIME_AXIS)
         plot.show(traces, (0.0, max(p.duration, 1e-3)))
 
     def show_view(self) -> None:
@@ -133,10 +133,10 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
         for v in runs:
             if v.kind == live or not v.plotted:
                 continue  # being recorded again: the plot shows the new run as it arrives
-            plot = self.query_one(PLOT_OF.get(v.kind, "#plot-fast"), TracePlot)
+            plot = self.query_one(f"#{PLOT_OF.get(v.kind, 'plot-fast')}", TracePlot)
             if v.kind in PLOT_TITLE:  # which run it shows, and whether it is the one in use
                 name = f"{v.name}, in use" if v.in_use else v.name
-                plot.set_axes(f"{PLOT_TITLE[v.kind]}: {name}", "t [s]")
+                plot.set_axes(f"{PLOT_TITLE[v.kind]}: {name}", TIME_AXIS)
             traces = [Trace(v.t, v.omega, "board time")]
             if v.kind == "steps":
                 traces.append(Trace(v.t, v.omega_lab, "manual", "dot"))

@@ -102,6 +102,10 @@ class BoardCheckScreen(ModalScreen[None]):
         await close_dialog(self, None)
 
 
+REVOLUTION = "Counts per revolution"
+"""The hand check's title: on its question and on its answer."""
+
+
 class RevolutionScreen(ModalScreen[None]):
     """The hand check: turn the wheel once by hand, then Enter (sets ``done``); Escape sets
     ``cancelled`` and ``done`` and closes. On the virtual MinSeg, whose wheel nobody can
@@ -126,7 +130,7 @@ class RevolutionScreen(ModalScreen[None]):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="revolution", classes="dialog"):
-            yield Prose("Counts per revolution", classes="title")
+            yield Prose(REVOLUTION, classes="title")
             yield Prose(
                 "Mark the wheel (a piece of tape), turn it exactly once by hand, either way, "
                 "then press Enter. The motor is off. 720 counts are expected."

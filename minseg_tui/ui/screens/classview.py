@@ -47,6 +47,10 @@ ClassWriter = Callable[[ClassView, Path], Sequence[Path]]
 """Writes the class's report into a folder; the files written (the CLI hands in
 :func:`minseg_tui.report.write.write_class`: the report layer sits beside the UI)."""
 
+NO_WRITER = "this program was started without the report writer"
+"""Said when a report is asked for of an app made without its writer (the lab's, the
+class's)."""
+
 COLUMNS: tuple[tuple[str, str], ...] = (
     ("#", "n"),
     ("group", "members"),
@@ -296,7 +300,7 @@ class ClassScreen(Screen[None]):
     def action_export_class(self) -> None:
         """F8: the class's report into the sessions folder, once every group is read."""
         if self.writer is None:
-            self.notify("this program was started without the report writer", severity="error")
+            self.notify(NO_WRITER, severity="error")
             return
         if self.view is None:
             self.notify(

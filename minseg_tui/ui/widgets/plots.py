@@ -7,7 +7,6 @@ plot's top-left corner, where a step response or a live stream has its points.
 from __future__ import annotations
 
 import math
-import re
 from collections import OrderedDict
 from collections.abc import Hashable, Sequence
 from dataclasses import dataclass
@@ -24,7 +23,7 @@ from textual.geometry import Size
 from textual.widgets import Static
 from textual_plotext import PlotextPlot
 
-from minseg_tui.quantities import format_ticks
+from minseg_tui.quantities import axis_unit, format_ticks
 
 Values = Sequence[float] | NDArray[np.float64]
 """The x or y values of a trace."""
@@ -298,11 +297,13 @@ class Canvas(PlotextPlot):
         """The y label, or its unit alone ("omega [rad/s]" -> "rad/s") where plotext's line
         of labels cannot hold it left of the x label, which it centres: on the model check's
         narrow close-up, "omega [rad/s]" took the place of "t [s]", and the ticks, seconds
-        into the run, read as speeds (walk 9, D3)."""
+        into the run, read as speeds (walk 9, D3). The unit is read back with
+        :func:`~minseg_tui.quantities.axis_unit`, from the label :func:`~minseg_tui.quantities.
+        axis_label` made."""
         label, width = self._ylabel, self.size.width
-        unit = re.search(r"\[(.+)\]", label)
+        unit = axis_unit(label)
         if width and unit and len(label) + 1 > (width - len(self._xlabel)) // 2:
-            return unit.group(1)
+            return unit
         return label
 
     def draw(self) -> None:
