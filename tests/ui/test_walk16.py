@@ -3,9 +3,17 @@ folders (/work/coord/WALK16.md)."""
 
 from __future__ import annotations
 
+import json
+import shutil
+
+from textual.widgets import OptionList
+
+from minseg_tui.lab.state.session import Session
+from minseg_tui.report.write import write_report
+from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.ui.conftest import quiet_app
-from tests.ui.helpers import burst, goto, settle, start, stored_text, type_in
+from tests.ui.helpers import burst, goto, settle, shown, start, stored_text, type_in
 
 
 async def test_a_letter_on_the_tick_goes_after_the_notes_not_over_them(tmp_path):
@@ -45,3 +53,81 @@ async def test_a_short_text_typed_over_a_long_one_shows(tmp_path):
         await burst(pilot, "X")
         assert row.input.value == "X"
         assert row.input.render_line(0).text.strip() == "X"
+
+
+async def test_a_copied_session_folder_is_told_apart_on_the_resume_list(tmp_path):
+    """D1: a group copied its session's folder to sessions/tina-backup; the resume list then
+    showed two rows "2026-11-28  Tina K, Omar B  at Summary …" alike, and Enter on the
+    first opened the copy (the newer), where the next day's work went; once one of them is
+    used the two differ by their step only, which does not say which is which either. Rows
+    of one group and date now say their folder."""
+    root = tmp_path / "sessions"
+    Session.create(root, ["Tina K", "Omar B"], date="2026-11-28").close()
+    Session.create(root, ["Lea P", "Tom R"], date="2026-11-28").close()
+    (original,) = (p for p in root.iterdir() if p.name.startswith("2026-11-28-tina"))
+    shutil.copytree(original, root / "tina-backup")
+    copied = root / "tina-backup" / "session.json"
+    data = json.loads(copied.read_text(encoding="utf-8"))
+    copied.write_text(json.dumps({**data, "current_step": "task10"}), encoding="utf-8")
+    app = quiet_app(root)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+        listed = app.screen.query_one("#sessions", OptionList)
+        labels = {
+            str(listed.get_option_at_index(i).id): str(listed.get_option_at_index(i).prompt)
+            for i in range(listed.option_count)
+        }
+        tina = {k: v for k, v in labels.items() if "Tina K" in v}
+        assert len(tina) == 2
+        assert len(set(tina.values())) == 2, tina
+        assert "tina-backup" in tina[str(root / "tina-backup")]
+        assert original.name in tina[str(original)]
+        lea = next(v for v in labels.values() if "Lea P" in v)
+        assert "2026-11-28-lea" not in lea  # a row unlike the others stays as it was
+
+
+async def test_the_report_of_a_copied_session_names_its_own_folder(tmp_path):
+    """D1's second half: F8 in the copy (sessions/tina-backup) wrote a report whose head
+    said "session 2026-11-28-tina-k-omar-b", the id its copied file still holds: two
+    reports named one session. The report names the folder it is written from, as the class
+    view names a copy (tests/classview/test_class_cli.py)."""
+    root = tmp_path / "sessions"
+    Session.create(root, ["Tina K", "Omar B"], date="2026-11-28").close()
+    (original,) = root.iterdir()
+    copy = root / "tina-backup"
+    shutil.copytree(original, copy)
+    app = quiet_app(root)
+    app._writer = lambda session: write_report(session).paths  # the CLI's writer
+    async with app.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+        listed = app.screen.query_one("#sessions", OptionList)
+        listed.focus()
+        keys = [str(listed.get_option_at_index(i).id) for i in range(listed.option_count)]
+        listed.highlighted = keys.index(str(copy))
+        await settle(pilot, lambda: app.focused is listed)
+        await burst(pilot, "enter")
+        await settle(pilot, lambda: shown(app))
+        await burst(pilot, "f8")
+        await settle(pilot, lambda: (copy / "report.md").exists())
+    byline = (copy / "report.md").read_text(encoding="utf-8").splitlines()[2]
+    assert "session tina-backup ·" in byline, byline
+    assert original.name not in byline
+
+
+async def test_enter_on_a_session_in_use_says_why_nothing_opens(tmp_path):
+    """D5: a second window's start screen listed only the first window's session, "…: in
+    use by another minseg-tui (pid 7723)"; Tab Tab Enter did nothing and said nothing. Now
+    the line under the names says where the session is open and what to do."""
+    root = tmp_path / "sessions"
+    held = Session.create(root, ["Tina K", "Omar B"], date="2026-11-28")  # the other window
+    try:
+        app = quiet_app(root)
+        async with app.run_test(size=(80, 24)) as pilot:
+            await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+            await burst(pilot, "tab", "tab", "enter")
+            said = str(app.screen.query_one("#start-msg").render())
+            assert isinstance(app.screen, StartScreen)
+            assert f"{held.folder.name} is open in another minseg-tui" in said
+            assert "quit it there first" in said
+    finally:
+        held.close()
