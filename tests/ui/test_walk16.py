@@ -8,12 +8,25 @@ import shutil
 
 from textual.widgets import OptionList
 
+from minseg_tui.lab.content.keys import PALETTE
 from minseg_tui.lab.state.session import Session
 from minseg_tui.report.write import write_report
+from minseg_tui.ui.messages import LogImportRequested
+from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from tests.classview.build import group
 from tests.ui.conftest import quiet_app
-from tests.ui.helpers import burst, goto, settle, shown, start, stored_text, type_in
+from tests.ui.helpers import (
+    burst,
+    goto,
+    settle,
+    shown,
+    start,
+    start_with_a_run,
+    stored_text,
+    type_in,
+)
 
 
 async def test_a_letter_on_the_tick_goes_after_the_notes_not_over_them(tmp_path):
@@ -131,3 +144,59 @@ async def test_enter_on_a_session_in_use_says_why_nothing_opens(tmp_path):
             assert "quit it there first" in said
     finally:
         held.close()
+
+
+async def test_f12_enter_in_one_burst_opens_the_group(tmp_path):
+    """D4: 'F12 Enter' in one burst on the start screen left the class view up, the Enter
+    lost (2 of 2 at load 18): the start screen's Enter, a priority binding, ran before F12's
+    binding, on the start screen ("Type the group members' names first."). F12 now acts as
+    it is read, so the Enter after it is the class view's: it opens the group read-only."""
+    root = tmp_path / "sessions"
+    folder = group(root, ["Ada", "Bo"], seed=1, run=False)
+    app = quiet_app(root)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+        await burst(pilot, "f12", "enter")
+        await settle(pilot, lambda: isinstance(app.screen, LabScreen) and shown(app))
+        assert app.session is not None
+        with app.session as s:
+            assert s.folder == folder and s.readonly
+
+
+async def test_an_import_says_which_answers_it_judges_again(tmp_path):
+    """D3: a group done with Tasks 11-15 imported a real motor's log at the model check: the
+    line said only "Tasks 11-15 and the model check use it", and Tasks 11-12 turned ✗ in the
+    list, judged against a motor the group never touched. The line now says how many of
+    their answers are judged against the import, on which run they gave them, and how to
+    go back."""
+    app = quiet_app(tmp_path / "sessions")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task12")
+        with app.session as s:
+            given_on = s.response_run().name
+            s.enter("own.T", "50 ms")
+            s.enter("own.omega_step", "7,8")
+            log = s.run_path(given_on)
+        elsewhere = tmp_path / "log.csv"
+        elsewhere.write_bytes(log.read_bytes())
+        replies: list[str] = []
+        app.screen.post_message(LogImportRequested(str(elsewhere), replies.append))
+        await settle(pilot, lambda: bool(replies))
+        (said,) = replies
+        assert said.startswith(f"imported {elsewhere} as imported-1 (")
+        assert (
+            f"; 2 answers of Tasks 11-15, given on run {given_on}, judged against it now: "
+            f"Ctrl+P 'Use run {given_on}' puts them back" in said
+        ), said
+
+
+async def test_the_palettes_import_says_tasks_11_to_15_use_the_log(tmp_path):
+    """D3's words: the palette's "Import a run log" said "Load a log recorded elsewhere into
+    the model check", while Tasks 11-15 take it too."""
+    app = quiet_app(tmp_path / "sessions")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        (entry,) = (
+            c for c in app.get_system_commands(app.screen) if c.title == PALETTE["import_log"]
+        )
+        assert "Tasks 11-15 and the model check" in entry.help

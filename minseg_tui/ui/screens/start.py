@@ -64,7 +64,9 @@ class StartScreen(StatusScreen):
         # the list it moved to
         Binding("tab", "app.focus_next", show=False, priority=True),
         Binding("shift+tab", "app.focus_previous", show=False, priority=True),
-        Binding("f12", "app.class_view", "Class view (instructors)"),
+        # as it is read, as Enter is: 'F12 Enter' in one burst ran Enter on the start screen
+        # before F12's binding, and the class view stayed up, the Enter lost (walk 16's D4)
+        Binding("f12", "app.class_view", "Class view (instructors)", priority=True),
         Binding("ctrl+n", "new_anyway", "New anyway", show=False),
     ]
 
