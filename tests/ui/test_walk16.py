@@ -12,6 +12,7 @@ from minseg_tui.lab.content.keys import PALETTE
 from minseg_tui.lab.state.session import Session
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.messages import LogImportRequested
+from minseg_tui.ui.panels.results import ResultsPanel
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
@@ -20,6 +21,7 @@ from tests.ui.conftest import quiet_app
 from tests.ui.helpers import (
     burst,
     goto,
+    heard_notifications,
     settle,
     shown,
     start,
@@ -200,3 +202,25 @@ async def test_the_palettes_import_says_tasks_11_to_15_use_the_log(tmp_path):
             c for c in app.get_system_commands(app.screen) if c.title == PALETTE["import_log"]
         )
         assert "Tasks 11-15 and the model check" in entry.help
+
+
+async def test_f9_before_the_plot_is_worked_out_waits_for_it(tmp_path):
+    """D4: 'Ctrl+P task 11 Enter F9' in one burst (load 20): 1 run in 3 the F9 came before
+    Task 11's plot was worked out and was refused, "no rise to zoom to: the plot is still
+    being worked out". The key now waits for the plot and is done once it is drawn: rise 2."""
+    app = quiet_app(tmp_path / "sessions")
+    said = heard_notifications(app)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        panel = app.screen.query_one(ResultsPanel)
+        await settle(pilot, lambda: panel.view is not None and panel.zoom == 0)
+        view = panel.view
+        panel.view = None  # as it is while the step's view is being worked out
+        panel.action_zoom_next()
+        panel.pick(1)
+        await settle(pilot)
+        assert not any("no rise to zoom to" in m for m in said), said
+        assert panel.zoom == 0  # nothing done yet
+        panel.view = view
+        panel.show_view()  # the plot worked out: F9 (rise 2), then Alt+→ (rise 3)
+        assert panel.zoom == 2
