@@ -440,7 +440,7 @@ def _info(folder: Path) -> SessionInfo | None:
             folder.name, folder, (), "", "", _mtime(path), damaged=why, locked_by=locked_by
         )
     return SessionInfo(
-        id=data["id"],
+        id=folder.name,  # a copied folder's file still says the first folder's id
         path=folder,
         members=tuple(str(m) for m in data["members"]),
         date=data["date"],

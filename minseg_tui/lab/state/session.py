@@ -520,8 +520,11 @@ class Session:
 
     @property
     def id(self) -> str:
-        """The session's id (its folder name)."""
-        return str(self._data["id"])
+        """The session's id: its folder's name. A folder copied (or renamed) holds a file
+        that still says the first folder's id; the copy is named by its own folder, as the
+        class view names it, so its report does not name the session it was copied from
+        (walk 16's D1)."""
+        return self.folder.name
 
     @property
     def members(self) -> tuple[str, ...]:

@@ -126,6 +126,10 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         """The results and comparisons last drawn (None: nothing drawn yet)."""
         self._reveal = False
         """The view just drawn shows results or comparisons it did not show before."""
+        self._held: list[Callable[[], None]] = []
+        """F9 and Alt+←/→ pressed before the plot was worked out: done once it is (walk 16's
+        D4: 'Ctrl+P task 11 Enter F9' in one burst was refused, "the plot is still being
+        worked out", 1 run in 3 at load 20)."""
 
     def compose(self) -> ComposeResult:
         yield ResponsePlot("run log", TIME_AXIS, SPEED_AXIS, id="plot-log")
@@ -159,6 +163,9 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         compared = "\n".join(f"{label}: yours {own} · {comp}" for label, own, comp in view.compare)
         self._compare.update(compared)
         self._compare.display = bool(compared)
+        held, self._held = self._held, []
+        for key in held:  # the keys that waited for the plot, in the order pressed
+            key()
 
     def revealed(self) -> Widget | None:
         """The comparisons under the entries, when an answer (or a new run) changed what
@@ -314,15 +321,18 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         """Ctrl+R (a lab assistant): show this step's computed values before the group answers."""
         self.post_message(RevealRequested(self.step.id))
 
-    def _no_rise(self) -> bool:
+    def _no_rise(self, key: Callable[[], None]) -> bool:
         """True, and said, when the plot has no rise to zoom to (walk 14, D9: F9 and Alt+→ on
-        Task 11 before any run did nothing and said nothing, though the footer offers them)."""
+        Task 11 before any run did nothing and said nothing, though the footer offers them);
+        True, and ``key`` kept to be done once it is, while the plot is still being worked
+        out."""
         v = self.view
         if v is not None and v.rises:
             return False
         if v is None:
-            said = "the plot is still being worked out"
-        elif not v.run:
+            self._held.append(key)
+            return True
+        if not v.run:
             said = "no step run recorded yet (Task 10)"
         else:
             said = f"run {v.run} has no step up with results"
@@ -331,7 +341,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
 
     def pick(self, delta: int) -> None:
         """Zoom to the previous/next rise."""
-        if self._no_rise() or self.view is None:
+        if self._no_rise(lambda: self.pick(delta)) or self.view is None:
             return
         n = len(self.view.rises)
         self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
@@ -360,7 +370,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
 
     def action_zoom_next(self) -> None:
         """F9: the next rise, after the last the whole log, then the first rise again."""
-        if self._no_rise() or self.view is None:
+        if self._no_rise(self.action_zoom_next) or self.view is None:
             return
         if self.zoom is None:
             self.zoom = 0

@@ -15,6 +15,7 @@ works from the keyboard at 80x24.
 
 from __future__ import annotations
 
+import asyncio
 from collections.abc import Awaitable, Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -192,6 +193,10 @@ class ClassScreen(Screen[None]):
         self.groups: list[Group] = []
         self.view: ClassView | None = None
         """The class judged, once every group is read (what F8 writes)."""
+        self._arrived = asyncio.Event()
+        """Set when a group's row comes in or the reading ends (Enter waits for its row)."""
+        self._ended = False
+        """The reading has ended (every group in, or an error said in the title)."""
 
     @property
     def done(self) -> bool:
@@ -252,9 +257,12 @@ class ClassScreen(Screen[None]):
         self._fill()
         if event.number == 1:
             self._show(0)
+        self._arrived.set()
 
     @on(ClassRead)
     def _class_read(self, event: ClassRead) -> None:
+        self._ended = True
+        self._arrived.set()
         title = self.query_one("#class-title", Static)
         if event.view is None:
             title.update(Text(f"{TITLE}: {event.error}"))
@@ -288,7 +296,13 @@ class ClassScreen(Screen[None]):
     async def _open_group(self) -> None:
         if self.app.screen is not self:
             return  # a second Enter while the first opens the group
-        index = self.query_one(DataTable).cursor_row
+        table = self.query_one(DataTable)
+        # an Enter typed with F12 ('F12 Enter' in one burst) comes before the first row is
+        # read: it waits for the row the cursor is on (walk 16's D4), the keys after it too
+        while table.cursor_row >= len(self.groups) and not self._ended:
+            self._arrived.clear()
+            await self._arrived.wait()
+        index = table.cursor_row
         if not 0 <= index < len(self.groups) or not self.groups[index].readable:
             self.notify("this session cannot be read; see what it lacks below", timeout=5)
             return

@@ -1457,19 +1457,32 @@ class LabScreen(StatusScreen):
 
     @on(LogImportRequested)
     def _import(self, event: LogImportRequested) -> None:
-        """A run log recorded elsewhere: it becomes the run Tasks 11-15 and the check use."""
+        """A run log recorded elsewhere: it becomes the run Tasks 11-15 and the check use.
+        The group's answers to Tasks 11-15 given on the run in use before are judged against
+        it from now on: the line says so, and how to go back (walk 16's D3: an EV3 motor's
+        log imported at the model check turned Tasks 11-12 ✗ and 13-14 !, unsaid there)."""
         event.stop()
         try:
             with self.session as s:
+                given = {k: e.run for k in s.answered() if (e := s.entry(k)) is not None and e.run}
                 info = s.import_run(Path(event.path).expanduser())
                 s.select_run(info.name)
+                again = [k for k in given if views.judged_again(s, k)]
         except MinsegError as exc:
             event.reply(f"✗ {exc}")
             return
-        event.reply(
+        said = (
             f"imported {event.path} as {info.name} ({info.samples} rows); "
             "Tasks 11-15 and the model check use it"
         )
+        runs = sorted({given[k] for k in again})
+        if again:
+            answers = "answer" if len(again) == 1 else "answers"
+            on = f"run {runs[0]}" if len(runs) == 1 else "runs " + ", ".join(runs)
+            said += f"; {len(again)} {answers} of Tasks 11-15, given on {on}, judged against it now"
+            if len(runs) == 1:
+                said += f": {key_name('palette')} '{USE_RUN} {runs[0]}' puts them back"
+        event.reply(said)
         self._changed()
 
     def use_run(self, name: str | None) -> None:

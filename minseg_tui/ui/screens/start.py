@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -63,7 +64,9 @@ class StartScreen(StatusScreen):
         # the list it moved to
         Binding("tab", "app.focus_next", show=False, priority=True),
         Binding("shift+tab", "app.focus_previous", show=False, priority=True),
-        Binding("f12", "app.class_view", "Class view (instructors)"),
+        # as it is read, as Enter is: 'F12 Enter' in one burst ran Enter on the start screen
+        # before F12's binding, and the class view stayed up, the Enter lost (walk 16's D4)
+        Binding("f12", "app.class_view", "Class view (instructors)", priority=True),
         Binding("ctrl+n", "new_anyway", "New anyway", show=False),
     ]
 
@@ -102,8 +105,18 @@ class StartScreen(StatusScreen):
             )
             yield Static("Resume a session", classes="title")
             # a label holds what was typed (names) and file names: shown as is, never as markup
+            # sessions of one group on one date (a folder copied to another name, a second
+            # session started anyway) read alike but for their step: each says its folder,
+            # as the class view does (walk 16's D1: the group went on in the copy)
+            alike = Counter(self._group(s) for s in self._sessions.values() if not why_closed(s))
             options = [
-                Option(Content(self._label(s)), id=key, disabled=s.locked_by is not None)
+                Option(
+                    Content(
+                        self._label(s) + (f"  ({s.path.name})" if alike[self._group(s)] > 1 else "")
+                    ),
+                    id=key,
+                    disabled=s.locked_by is not None,
+                )
                 for key, s in self._sessions.items()
             ]
             if self._unreadable:
@@ -114,7 +127,13 @@ class StartScreen(StatusScreen):
         yield KeyFooter()
 
     @staticmethod
+    def _group(s: SessionInfo) -> tuple[str, tuple[str, ...]]:
+        """Who and when: a session's date and its group's names (:func:`names_key`)."""
+        return s.date, names_key(s.members)
+
+    @staticmethod
     def _label(s: SessionInfo) -> str:
+        """A saved session's row: its date, names and step (why it cannot be opened, if so)."""
         why = why_closed(s)
         if why:
             return f"{s.path}: {why}" + (" (Enter opens it read-only)" if s.damaged else "")
@@ -140,8 +159,20 @@ class StartScreen(StatusScreen):
                 self._offer(names, same[0])
                 return None
             return self.NewSession(members, date)
-        if isinstance(focused, OptionList) and focused.highlighted is not None:
-            return self._resume(focused.get_option_at_index(focused.highlighted).id)
+        if isinstance(focused, OptionList):
+            if focused.highlighted is not None:
+                return self._resume(focused.get_option_at_index(focused.highlighted).id)
+            # no row to open: every one listed is in use (a row in use takes no cursor); Enter
+            # did nothing and said nothing (walk 16's D5: a second group in another window)
+            busy = next((s for s in self._sessions.values() if s.locked_by is not None), None)
+            if busy is not None:
+                self.query_one("#start-msg", Static).update(
+                    Content(
+                        f"{busy.path.name} is open in another minseg-tui (pid "
+                        f"{busy.locked_by}): quit it there first, then resume it here; or "
+                        "type the names for a new session."
+                    )
+                )
         return None
 
     def _offer(self, names: Sequence[str], info: SessionInfo) -> None:

@@ -383,7 +383,9 @@ class EntryBox(Widget, can_focus=False):
         if width == 0:  # not laid out yet (a step opening): scrolled when its size comes
             self._scroll_x = 0
             return
-        if self._cursor < self._scroll_x:
+        if len(self._value) < width:  # the text fits, the cursor's cell after it too
+            self._scroll_x = 0
+        elif self._cursor < self._scroll_x:
             self._scroll_x = self._cursor
         elif self._cursor >= self._scroll_x + width:
             self._scroll_x = self._cursor - width + 1
@@ -1120,7 +1122,10 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
     def take(self, character: str) -> None:
         """A character typed outside the rows (browsing the list of steps, on a list of
         answers, the step's text): it goes into :meth:`typing_row`, replacing what that
-        holds, and the keys after it go on there."""
+        holds (a reading typed off a plot), and the keys after it go on there. Into free
+        text (notes, what is still unclear) it goes on after what is there: a letter typed
+        on "done?" replaced a group's notes, and PgDn stored the letter alone (walk 16's
+        D2)."""
         if self.readonly:
             return
         row = self.current if self._taking else None
@@ -1130,6 +1135,8 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
                 return
             self.focus_row(row)
             self._taking = True
+            if row.field.kind == "text" and not row.field.compare:
+                row.input.cursor_position = len(row.input.value)
         row.input.type_text(character)
         self.screen.scroll_to_widget(row, animate=False)
 
