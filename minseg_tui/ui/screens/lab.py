@@ -111,6 +111,22 @@ them all."""
 WORD_KEYS = ("ctrl+left", "ctrl+right")
 """Panel keys that are a text entry's word moves as well: in an entry they move by word."""
 
+RUN_REFUSED = "nothing can be recorded in it; start a new session to record"
+"""What F5 and F6 (and the app's start of a run) say in a read-only session, after why."""
+
+READ_ONLY_REFUSED: dict[str, str] = {
+    "set_voltage": "the motor is not driven from it; start a new session to drive it",
+    "capture": "omega_ss is not captured into it",
+    "run_square_wave": RUN_REFUSED,
+    "run_fast": RUN_REFUSED,
+}
+"""The panel keys a read-only session refuses, with what the refusal says after why it is
+read-only: F4 captures nothing into it, so F3 drives nothing either (walk 15, D9: F3 put
+3.5 V on the motor in a session opened from the class view; and F4 with the motor off said
+'set a voltage first (F3)', which F3 there would refuse). Neither the footer, the palette
+nor a step's own lines offer them there (:meth:`LabScreen.offers`); pressed, they say
+why."""
+
 
 def nav_label(step: Step, status: str = "todo") -> str:
     """Short name in the navigator: a status mark and the step's ``nav`` name, else its title
@@ -218,6 +234,14 @@ class StepPane(FieldForm):
             if key in WORD_KEYS
             else Binding(key, f"panel_key('{action}')", label, show=bool(label), priority=True)
             for keys, action, label, _ in PANEL_KEYS
+            for key in keys.split(",")
+        ],
+        # a panel key a read-only session refuses: not in its footer (the binding above is
+        # not live there), still saying why when pressed
+        *[
+            Binding(key, f"refused_key('{action}')", show=False, priority=True)
+            for keys, action, _, _ in PANEL_KEYS
+            if action in READ_ONLY_REFUSED
             for key in keys.split(",")
         ],
         # a class's bindings of a key replace its base's: the form's word moves, after the
@@ -354,7 +378,7 @@ class StepPane(FieldForm):
                     widgets.append(readout)
         widgets += rows
         after = panel.after_rows() if isinstance(panel, ViewPanel) else None
-        if after is not None:
+        if after is not None and not self.readonly:  # (a log is not loaded into it)
             widgets.append(after)
         self.scroll_to(y=0, animate=False, immediate=True)
         await self.mount_all(widgets)
@@ -452,11 +476,28 @@ class StepPane(FieldForm):
         return True
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
-        """A panel key is live (and in the footer) only on the steps whose panel has it."""
+        """A panel key is live (and in the footer) only on the steps whose panel has it, and
+        not in a read-only session that refuses it (:data:`READ_ONLY_REFUSED`): there its
+        hidden binding says why. Escape is the entries' only where it does not go back to
+        the class view (the screen's priority binding runs first there, and the footer
+        shows the first live binding of a key from the focus up: the entries' hid the way
+        back)."""
+        screen = self.screen
+        if not isinstance(screen, LabScreen):
+            return action not in ("panel_key", "refused_key")
         if action == "panel_key":
-            screen = self.screen
-            return isinstance(screen, LabScreen) and screen.offers(str(parameters[0]))
+            return screen.offers(str(parameters[0]))
+        if action == "refused_key":
+            return screen.refuses(str(parameters[0]))
+        if action == "bring_back" and parameters == ("held",):
+            return screen.back is None
         return True
+
+    async def action_refused_key(self, action: str) -> None:
+        """A panel key a read-only session refuses: the line that says why."""
+        screen = self.screen
+        if isinstance(screen, LabScreen):
+            await screen.run_panel_key(action)
 
     async def action_panel_key(self, action: str, word_key: bool = False) -> None:
         """A panel key (:data:`PANEL_KEYS`): the step's panel does it, after the keys typed
@@ -737,11 +778,13 @@ class StepCommands(Provider):
                 for r in s.runs
             ]
         go, use = screen.go_to, screen.use_run
+        steps = [
+            (f"{PALETTE['go_to']} {s.title}", partial(go, s.id), "move to this step") for s in STEPS
+        ]
+        if screen.readonly:  # the run in use is not changed in it (Session.select_run)
+            return steps
         return (
-            [
-                (f"{PALETTE['go_to']} {s.title}", partial(go, s.id), "move to this step")
-                for s in STEPS
-            ]
+            steps
             + [
                 (
                     f"{USE_RUN} {name}{why} for Tasks 11-15",
@@ -815,16 +858,6 @@ class NoMatch(Provider):
             text=text,
             help="try a step ('Task 5'), 'run', 'board', 'motor' or 'report'; Esc closes",
         )
-
-
-READ_ONLY_REFUSED: dict[str, str] = {
-    "set_voltage": "the motor is not driven from it; start a new session to drive it",
-    "capture": "omega_ss is not captured into it",
-}
-"""The panel keys a read-only session refuses, with what the refusal says after why it is
-read-only: F4 captures nothing into it, so F3 drives nothing either (walk 15, D9: F3 put
-3.5 V on the motor in a session opened from the class view; and F4 with the motor off said
-'set a voltage first (F3)', which F3 there would refuse)."""
 
 
 class LabScreen(StatusScreen):
@@ -1012,7 +1045,16 @@ class LabScreen(StatusScreen):
 
     def offers(self, action: str) -> bool:
         """Whether panel key ``action`` (:data:`PANEL_KEYS`) acts on the step shown: its panel
-        has the key (its ``KEYS``) and it does something here (its ``check_action``)."""
+        has the key (its ``KEYS``), it does something here (its ``check_action``), and the
+        session takes what it does (a read-only one refuses :data:`READ_ONLY_REFUSED`)."""
+        return self._has_key(action) and not (self.readonly and action in READ_ONLY_REFUSED)
+
+    def refuses(self, action: str) -> bool:
+        """Whether panel key ``action`` would act on the step shown but this read-only session
+        refuses it (pressed, it says why; offered nowhere)."""
+        return self.readonly and action in READ_ONLY_REFUSED and self._has_key(action)
+
+    def _has_key(self, action: str) -> bool:
         panel = self.panel
         if not isinstance(panel, PanelKeys) or action not in panel.key_actions():
             return False
@@ -1042,7 +1084,7 @@ class LabScreen(StatusScreen):
         state it shows."""
         acts = set(step.actions)
         if acts & {"live_velocity", "capture_omega", "meter"}:
-            return LivePanel(step, self._live, self._refresh).data_bind(
+            return LivePanel(step, self._live, self._refresh, self.readonly).data_bind(
                 LabScreen.requested, LabScreen.meter, LabScreen.device
             )
         if "connect" in acts:
@@ -1050,7 +1092,7 @@ class LabScreen(StatusScreen):
         if step.id == "table":
             return TablePanel()
         if "run_square_wave" in acts:
-            return SquareWavePanel(step, self._live, self._refresh).data_bind(
+            return SquareWavePanel(step, self._live, self._refresh, self.readonly).data_bind(
                 LabScreen.run_progress
             )
         if "results" in acts:
@@ -1058,7 +1100,7 @@ class LabScreen(StatusScreen):
         if "model_check" in acts:
             return ModelCheckPanel()
         if step.id == "summary":
-            return ReportPanel().data_bind(LabScreen.written)
+            return ReportPanel(self.readonly).data_bind(LabScreen.written)
         return None
 
     def _rows(self, step: Step) -> list[FieldRow]:
