@@ -289,6 +289,8 @@ class StepPane(FieldForm):
         self._left_at: int | None = None
         """The scroll the form's last placing left the step at (None: none since the keys
         moved)."""
+        self._revealing = False
+        """Ctrl+R asked for the step's computed values: the next view drawn shows them."""
 
     def on_mount(self) -> None:
         self.screen.screen_layout_refresh_signal.subscribe(self, self.laid_out, immediate=True)
@@ -385,11 +387,28 @@ class StepPane(FieldForm):
         self.step, self.panel = step, panel
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
 
+    def revealing(self) -> None:
+        """Ctrl+R: the view drawn next shows the step's computed values (:meth:`_drawn`)."""
+        self._revealing = True
+
     @on(ViewPanel.Drawn)
     def _drawn(self, event: ViewPanel.Drawn) -> None:
         """The panel drew its view; what it newly shows (an answer's comparison) is brought
-        into view with the entry the group is in, else the entry alone."""
-        if event.reveal is None or not self._reveal_with_entry(event.reveal):
+        into view with the entry the group is in, else the entry alone.
+
+        Not when Ctrl+R showed the computed values while the plot is zoomed to a rise (Tasks
+        11-12, or F9): the group reads its answer off that plot, and at 80x24 bringing the
+        comparisons under the entry into view scrolled the plot off the screen (Task 12: by
+        14 rows, the plot's frame gone). The step stays where it is, the entry kept in
+        view; the values revealed show on the plot's own lines (Task 12: "the speed crosses
+        it 56.88 ms after the edge" and the crossing's mark; Task 11: the rise's ends and its
+        63 %), and the comparisons are brought into view once the group answers."""
+        revealing, self._revealing = self._revealing, False
+        panel = self.panel
+        reading = isinstance(panel, ResultsPanel) and panel.zoom is not None
+        if event.reveal is None or (revealing and reading):
+            self._keep_entry_in_view()
+        elif not self._reveal_with_entry(event.reveal):
             self._keep_entry_in_view()
 
     def _reveal_with_entry(self, widget: Widget) -> bool:
@@ -1492,6 +1511,8 @@ class LabScreen(StatusScreen):
             return
         if read_only:  # walk 14, D1: the reveal's save raised, and the program died
             self.notify(f"computed values shown here, not recorded: {read_only}")
+        if event.step_id == self.step_id_shown:
+            self.pane.revealing()
         # else no notice: the step's comparisons say it beside each value shown ("revealed
         # before answering (Ctrl+R): the report says so"); a notice over the step's top
         # covered Task 12's title and three rows of the plot being read for 5 s at 80x24
