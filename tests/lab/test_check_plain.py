@@ -33,9 +33,14 @@ SPECIALIST = (
     "_friction",
     "dead_time",
     "_filter",
+    "velocity filter",
+    "zero command",
+    "the bridge",
 )
-"""Words a student should not meet in the details: the check's own measures and the JSON's
-contract names (a parameter's symbol, u_c or T_coast, is the lab's notation and stays)."""
+"""Words a student should not meet in the details: the check's own measures, the JSON's
+contract names (a parameter's symbol, u_c or T_coast, is the lab's notation and stays) and
+the specialist's names of two causes ("averaged speed (velocity filter)", "coasting at zero
+command", the bridge that lets the wheel coast: stop 37)."""
 
 REAL = SHARED_DATA / "real-motors"
 
