@@ -3,9 +3,10 @@ session opened read-only from the class view, at 80x24 with Pilot on real sessio
 
 Item 1: Task 4's readout still offered "f3 Set V · f4 Capture", which refuse there; so did
 the footer (F3, F4, F5, F6, F8), Task 10's line ("F5: 4 steps …"), the summary's ("F8 (or
-Ctrl+P → Export report) writes report.md …"), the model check's box to load a log, and
-the palette (export, save elsewhere, correct the names, load a log, use a run). None is
-offered now on any step; the keys pressed still say why they refuse.
+Ctrl+P → Export report) writes report.md …"), the model check's box to load a log, the
+palette (export, save elsewhere, correct the names, load a log, use a run), and each empty
+entry's hint ("in rad/s, e.g. 4.6"), where nothing can be typed. None is offered now on any
+step (an empty entry says "not entered"); the keys pressed still say why they refuse.
 
 Item 5: the footer never showed "esc Class view": the entries' own Escape (not shown) was
 the first binding of the key from the focus up, which is the one a footer shows, though
@@ -19,6 +20,7 @@ from minseg_tui.lab.content.keys import PALETTE, USE_RUN
 from minseg_tui.lab.content.steps import STEPS
 from minseg_tui.ui.panels.report import ReportPanel
 from minseg_tui.ui.screens.lab import LabScreen, StepCommands, StepPane
+from minseg_tui.ui.widgets.fields import NOT_ENTERED, FieldRow
 from minseg_tui.ui.widgets.footer import KeyFooter, KeyLabel
 from minseg_tui.ui.widgets.prose import Prose
 from tests.classview.build import group
@@ -87,6 +89,11 @@ async def test_no_step_of_a_read_only_session_offers_what_it_refuses(tmp_path):
             offered = [w for w in REFUSED_WORDS if w in text]
             assert not offered, (st.id, offered, text)
             assert not lab.query("#import-path"), st.id  # no box to load a log into it
+            for row in lab.query(FieldRow):  # an empty box asks for nothing there
+                if not row.field.options and not row.input.value:
+                    assert row.input.placeholder in (NOT_ENTERED, ""), (st.id, row.field.key)
+                    hint = row.query_one(".field-hint", Prose)
+                    assert hint.text == NOT_ENTERED, (st.id, row.field.key, hint.text)
             titles = {c.title for c in app.get_system_commands(lab)}
             for action in (
                 "set_voltage",
