@@ -55,7 +55,7 @@ from minseg_tui.model.plant import MeterReading
 from minseg_tui.quantities import format_fixed
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.device import Device, DeviceInfo, LinkState, open_device
-from minseg_tui.ui.keys import FOOTER_ON, IN_FOOTER, app_bindings, help_lines
+from minseg_tui.ui.keys import FOOTER_ON, IN_FOOTER, app_bindings, bound_keys, help_lines
 from minseg_tui.ui.live import LEVEL_TOL, LiveBuffer
 from minseg_tui.ui.messages import (
     BoardChecked,
@@ -82,7 +82,7 @@ from minseg_tui.ui.screens.boardcheck import (
 from minseg_tui.ui.screens.classview import NO_WRITER, ClassScreen, ClassWriter
 from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.screens.help import HelpScreen
-from minseg_tui.ui.screens.lab import PANEL_KEYS, LabScreen
+from minseg_tui.ui.screens.lab import PANEL_KEYS, RUN_REFUSED, LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.screens.palette import Palette
 from minseg_tui.ui.screens.quit import (
@@ -198,6 +198,9 @@ class LabApp(App[None]):
         # a panel key the step's form does not run (its panel does not have it here): said
         # (the form binds the panel keys, StepPane)
         *[Binding(keys, f"not_here('{what}')", show=False) for keys, _, _, what in PANEL_KEYS],
+        # F8 in a read-only session: not in its footer (the binding above is not live there),
+        # still saying why when pressed
+        Binding(bound_keys("export"), "export(True)", show=False, priority=True),
     ]
 
     device: reactive[DeviceInfo | None] = reactive(None)
@@ -913,7 +916,7 @@ class LabApp(App[None]):
             read_only = lab_views.read_only(s) if s.readonly else ""
         if read_only:
             self.notify(
-                f"{read_only}: nothing can be recorded in it; start a new session to record",
+                f"{read_only}: {RUN_REFUSED}",
                 severity="error",
             )
             return
@@ -1231,8 +1234,11 @@ class LabApp(App[None]):
         shown. F8 on the class view is that screen's (the class's report), not the session's.
         (The panel keys are the step's form's, which answers for them:
         :meth:`~minseg_tui.ui.screens.lab.StepPane.check_action`.)"""
-        if action == "export" and isinstance(self.screen, ClassScreen):
-            return False  # the class view's F8 writes the class's report (its own binding)
+        if action == "export":
+            if isinstance(self.screen, ClassScreen):
+                return False  # the class view's F8 writes the class's report (its own binding)
+            # a read-only session refuses it: the hidden binding, not the footer's, says why
+            return bool(parameters) == self._read_only()
         own = action.removesuffix(IN_FOOTER)
         if own != action and own in FOOTER_ON:
             screen = self._lab_screen()
@@ -1245,8 +1251,16 @@ class LabApp(App[None]):
         if self._lab_screen() is not None:
             self.notify(f"{what} is not part of this step", severity="information")
 
-    async def action_export(self) -> None:
-        """F8: the report, after the keys typed before it (what they typed stored first)."""
+    def _read_only(self) -> bool:
+        """The session open is read-only (nothing written into it, no report either)."""
+        if self.session is None:
+            return False
+        with self.session as s:
+            return s.readonly
+
+    async def action_export(self, refused: bool = False) -> None:
+        """F8: the report, after the keys typed before it (what they typed stored first).
+        ``refused``: its binding in a read-only session, which says why it writes none."""
         self._not_past_a_modal()
         await after_typed_keys(self, self.export)
 
@@ -1376,28 +1390,31 @@ class LabApp(App[None]):
             "Turn the wheel once by hand: 720 counts expected",
             self.action_count_revolution,
         )
-        yield SystemCommand(
-            PALETTE["export"],
-            f"Markdown, HTML and CSV into the session folder ({key_name('export')})",
-            self.export,
-        )
-        yield SystemCommand(
-            PALETTE["save_elsewhere"],
-            "When it cannot be saved where it is (a full disk, a read-only folder, a stick "
-            "pulled out): save it elsewhere and go on there",
-            self.action_save_elsewhere,
-        )
-        if self.session is not None:
+        # a read-only session refuses every change: what would change it is not offered
+        if not self._read_only():
+            yield SystemCommand(
+                PALETTE["export"],
+                f"Markdown, HTML and CSV into the session folder ({key_name('export')})",
+                self.export,
+            )
+            yield SystemCommand(
+                PALETTE["save_elsewhere"],
+                "When it cannot be saved where it is (a full disk, a read-only folder, a "
+                "stick pulled out): save it elsewhere and go on there",
+                self.action_save_elsewhere,
+            )
+        if self.session is not None and not self._read_only():
             yield SystemCommand(
                 PALETTE["correct_names"],
                 "Mend a misspelt name; the report and the resume list show the new names",
                 self.action_correct_names,
             )
-        yield SystemCommand(
-            PALETTE["import_log"],
-            "Load a log recorded elsewhere: Tasks 11-15 and the model check then use it",
-            self.import_log,
-        )
+        if not self._read_only():
+            yield SystemCommand(
+                PALETTE["import_log"],
+                "Load a log recorded elsewhere: Tasks 11-15 and the model check then use it",
+                self.import_log,
+            )
         if self._device is None or self._device.board is None:  # not on the virtual one
             yield SystemCommand(
                 PALETTE["switch_to_virtual"],

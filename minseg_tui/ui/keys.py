@@ -221,6 +221,12 @@ def key_hint(action: str, what: str = "") -> str:
     return f"{hint} ({what})" if what else hint
 
 
+def bound_keys(action: str) -> str:
+    """The Textual key names of the binding of the app's ``action`` ('f8'), for a second
+    binding of the same key."""
+    return next(k.keys for k in KEYMAP if k.action == action)
+
+
 def panel_keys() -> tuple[tuple[str, str, str, str], ...]:
     """The keys that act on the shown step's panel: (keys, the panel's action, footer label,
     what it is), a lab assistant's keys last."""

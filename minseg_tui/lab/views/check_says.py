@@ -121,9 +121,14 @@ def in_words(model: str, plain: bool = False) -> str:
     )
 
 
-PLAIN_LABELS: dict[str, str] = {"second_pole": "second time constant"}
+PLAIN_LABELS: dict[str, str] = {
+    "second_pole": "second time constant",
+    "velocity_filter": "averaged speed reading",
+    "coast_on_zero": "coasting at 0 V",
+}
 """The labels of :data:`CAUSE_WORDS` a student is told otherwise (the lab's details and the
-report; the CLI keeps the labels)."""
+report; the CLI keeps the labels): a second-year student has met time constants, not poles,
+and a voltage of 0 V, not a "velocity filter" or a "zero command"."""
 
 
 def _miss(a: an.Anomaly, f: an.ModelMiss) -> str:
@@ -633,9 +638,12 @@ def _averaged(f: fx.Averaged, plain: bool = False) -> str:
     return f"{ramp}: the speed looks averaged over {n} samples"
 
 
-def _coast(f: fx.Coast) -> str:
+def _coast(f: fx.Coast, plain: bool = False) -> str:
+    """``plain``: told to a student, the voltage at 0 V and the driver (not a zero command and
+    the bridge)."""
+    zero = "at 0 V" if plain else "at zero command"
     if f.t is None:
-        return f"the wheel runs down slowly at zero command (time constant {_span(f.tc)})"
+        return f"the wheel runs down slowly {zero} (time constant {_span(f.tc)})"
     after = _ms(f.after)
     line = (
         f"from the row before the drop to the first reading under half, {after} after the drop"
@@ -643,11 +651,16 @@ def _coast(f: fx.Coast) -> str:
         else f"from the row before the drop over the {after} after it, the speed staying above "
         f"half of its {f.w0:.3g} rad/s throughout"
     )
+    drops, lets = (
+        ("the voltage drops to 0 V", "the driver lets the wheel coast (run down freely)")
+        if plain
+        else ("the command drops to 0", "the bridge lets the wheel coast")
+    )
     return (
-        f"right after the command drops to 0 at t = {f.t:.3f} s the speed falls at "
+        f"right after {drops} at t = {f.t:.3f} s the speed falls at "
         f"{f.decel:.3g} rad/s^2 (a line through the speed {line}), where a braked motor (T = "
-        f"{_ms(f.T)}) would fall at {f.w0 / f.T:.3g} rad/s^2 at first: the bridge lets the "
-        f"wheel coast, with a time constant of {_span(f.tc)} at zero command"
+        f"{_ms(f.T)}) would fall at {f.w0 / f.T:.3g} rad/s^2 at first: {lets}, with a time "
+        f"constant of {_span(f.tc)} {zero}"
     )
 
 
@@ -775,6 +788,8 @@ def shown(b: rs.Because, plain: bool = False) -> str:
         return _delay(f, _claim(b, plain=True), plain=True)
     if plain and isinstance(f, fx.Averaged):
         return _averaged(f, plain=True)
+    if plain and isinstance(f, fx.Coast):
+        return _coast(f, plain=True)
     if isinstance(f, fx.FrictionStop):
         return _friction_stop(f)
     if isinstance(f, fx.FrictionLevels):

@@ -624,12 +624,18 @@ class Details:
     in_log: tuple[str, ...] = ()
 
     def lines(self) -> tuple[str, ...]:
-        """Everything as lines for the screen: the paragraphs, then each list under its
-        heading, one '- ' line an item."""
+        """Everything as lines: the paragraphs, then each list under its heading, one '- '
+        line an item."""
+        return tuple(line for block in self.blocks() for line in block.split("\n"))
+
+    def blocks(self) -> tuple[str, ...]:
+        """Everything as the parts the screen sets apart (a blank line between two): each
+        paragraph, then each list with its heading, one '- ' line an item (at 80x24 the
+        paragraphs ran together, one under the other)."""
         out = list(self.said)
         for head, items in ((CANNOT_SHOW, self.cannot), (IN_THE_LOG, self.in_log)):
             if items:
-                out += [head, *(f"- {x}" for x in items)]
+                out.append("\n".join([head, *(f"- {x}" for x in items)]))
         return tuple(out)
 
 

@@ -1226,7 +1226,8 @@ class CheckView:
     words); ``problem``: why there is no result. ``story``: the two or three sentences a
     student reads first (:func:`minseg_tui.lab.views.check_words.lead`), about the close-up,
     whose title with its time span is ``close_title``; ``details``: what follows in the fold,
-    each figure with what it measures and why it matters
+    one part a string (a paragraph, or a list with its heading), each figure with what it
+    measures and why it matters
     (:func:`~minseg_tui.lab.views.check_words.details`), among them ``two_fits`` (why the
     check's T is not the program's least-squares one of Tasks 11-12, whose reading that is;
     '' when they are not of one run)."""
@@ -1302,7 +1303,7 @@ def check(session: Session) -> CheckView:
         cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)]), plain=True),
         story=check_words.lead(r, u),
         close_title=check_words.close_up_title(r),
-        details=check_words.details(r, two_fits).lines(),
+        details=check_words.details(r, two_fits).blocks(),
         two_fits=two_fits,
         other_T=check_words.other_T(st.T) if two_fits and st is not None else "",
         shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),

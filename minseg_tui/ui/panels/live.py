@@ -44,9 +44,13 @@ class LivePanel(Vertical, PanelKeys):
     meter: reactive[MeterReading | None] = reactive(None)
     device: reactive[DeviceInfo | None] = reactive(None)
 
-    def __init__(self, step: Step, live: LiveBuffer, refresh: float) -> None:
+    def __init__(
+        self, step: Step, live: LiveBuffer, refresh: float, readonly: bool = False
+    ) -> None:
         super().__init__(classes="panel live")
         self.step = step
+        self.readonly = readonly
+        """A read-only session: F3 and F4 refuse there, so its lines do not offer them."""
         self._live = live
         self._refresh = refresh
         acts = set(step.actions)
@@ -105,7 +109,9 @@ class LivePanel(Vertical, PanelKeys):
         if self._steady is None:
             return
         level = "0 V (motor off)" if self.requested is None else f"{self.requested:g} V"
-        keys = f"{key_hint('set_voltage')} · {key_hint('stop_motor')}"
+        keys = key_hint("stop_motor")
+        if not self.readonly:
+            keys = f"{key_hint('set_voltage')} · {keys}"
         if "capture_omega" in self.step.actions:
             s = views.steady(*at_level(t, count, u, self.requested))
             state = "SETTLED" if s.settled else "not settled"
@@ -117,7 +123,8 @@ class LivePanel(Vertical, PanelKeys):
             note = "" if s.ready else "(window filling)"
             text = (
                 f"steady: {state} · {mean} over {views.CAPTURE_WINDOW:g} s {note}".rstrip()
-                + f"\nrequested {level} · {keys} · {key_hint('capture')}"
+                + f"\nrequested {level} · {keys}"
+                + ("" if self.readonly else f" · {key_hint('capture')}")
             )
         else:
             text = f"requested {level} · {keys}"

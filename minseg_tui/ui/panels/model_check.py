@@ -97,8 +97,9 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             f"{key_hint('zoom_next', 'the close-up the words speak of')}"
         )
         story.update("\n".join([where, " ".join([*v.story, v.other_T]).rstrip()]))
+        # a blank line between the parts: at 80x24 the paragraphs ran together
         text = [f"cause: {v.cause_words or v.cause}", *v.details]
-        lines.update("\n".join(text))
+        lines.update("\n\n".join(text))
 
     def _plot(self) -> None:
         v = self.view

@@ -37,8 +37,10 @@ class ReportPanel(Static):
 
     written: reactive[tuple[str, tuple[str, ...]]] = reactive(("", ()), layout=True)
 
-    def __init__(self) -> None:
+    def __init__(self, readonly: bool = False) -> None:
         super().__init__("", classes="panel")
+        self.readonly = readonly
+        """A read-only session: F8 refuses there, so the panel does not offer it."""
 
     def watch_written(self) -> None:
         """The files listed above the summary's entries: the step keeps the entry the group
@@ -53,7 +55,9 @@ class ReportPanel(Static):
         folder, names = self.written
         where = f" in {folder}" if folder else ""
         said = (
-            f"{key_name('export')} (or {in_palette('export')}) writes report.md, "
+            "No report is written from a read-only session."
+            if self.readonly
+            else f"{key_name('export')} (or {in_palette('export')}) writes report.md, "
             "report.html and the runs' CSV."
         )
         return said + (f"\nwritten{where}:\n" + "\n".join(f"  {p}" for p in names) if names else "")

@@ -47,9 +47,13 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
 
     run_progress: reactive[RunProgress | None] = reactive(None)
 
-    def __init__(self, step: Step, live: LiveBuffer, refresh: float = 0.25) -> None:
+    def __init__(
+        self, step: Step, live: LiveBuffer, refresh: float = 0.25, readonly: bool = False
+    ) -> None:
         super().__init__()
         self.step = step
+        self.readonly = readonly
+        """A read-only session: F5 and F6 refuse there, so its lines do not offer them."""
         self._live = live
         self._refresh = refresh
 
@@ -60,10 +64,14 @@ class SquareWavePanel(ViewPanel[tuple[RunView, ...]], PanelKeys):
     def compose(self) -> ComposeResult:
         plans = dict(self.step.plans)
         m = plans["manual"]
+        steps = f"{m.periods} steps 0 → {m.high:g} V, {m.half_period:g} s each"
+        fast = f"{plans['fast'].ts * 1000:g} ms"
         yield Prose(
-            f"{key_name('run_square_wave')}: {m.periods} steps 0 → {m.high:g} V, "
-            f"{m.half_period:g} s each, at {m.ts * 1000:g} ms. {key_name('run_fast')}: the same "
-            f"at {plans['fast'].ts * 1000:g} ms. {key_name('stop_motor')} stops.",
+            f"The runs: {steps}, at {m.ts * 1000:g} ms, or the same at {fast}; none is "
+            "recorded in a read-only session."
+            if self.readonly
+            else f"{key_name('run_square_wave')}: {steps}, at {m.ts * 1000:g} ms. "
+            f"{key_name('run_fast')}: the same at {fast}. {key_name('stop_motor')} stops.",
             classes="hint",
         )
         # no bar until a run waits or records here: a bar at 0 % beside the run in use read

@@ -111,6 +111,22 @@ them all."""
 WORD_KEYS = ("ctrl+left", "ctrl+right")
 """Panel keys that are a text entry's word moves as well: in an entry they move by word."""
 
+RUN_REFUSED = "nothing can be recorded in it; start a new session to record"
+"""What F5 and F6 (and the app's start of a run) say in a read-only session, after why."""
+
+READ_ONLY_REFUSED: dict[str, str] = {
+    "set_voltage": "the motor is not driven from it; start a new session to drive it",
+    "capture": "omega_ss is not captured into it",
+    "run_square_wave": RUN_REFUSED,
+    "run_fast": RUN_REFUSED,
+}
+"""The panel keys a read-only session refuses, with what the refusal says after why it is
+read-only: F4 captures nothing into it, so F3 drives nothing either (walk 15, D9: F3 put
+3.5 V on the motor in a session opened from the class view; and F4 with the motor off said
+'set a voltage first (F3)', which F3 there would refuse). Neither the footer, the palette
+nor a step's own lines offer them there (:meth:`LabScreen.offers`); pressed, they say
+why."""
+
 
 def nav_label(step: Step, status: str = "todo") -> str:
     """Short name in the navigator: a status mark and the step's ``nav`` name, else its title
@@ -220,6 +236,14 @@ class StepPane(FieldForm):
             for keys, action, label, _ in PANEL_KEYS
             for key in keys.split(",")
         ],
+        # a panel key a read-only session refuses: not in its footer (the binding above is
+        # not live there), still saying why when pressed
+        *[
+            Binding(key, f"refused_key('{action}')", show=False, priority=True)
+            for keys, action, _, _ in PANEL_KEYS
+            if action in READ_ONLY_REFUSED
+            for key in keys.split(",")
+        ],
         # a class's bindings of a key replace its base's: the form's word moves, after the
         # panel's (which skip in a text entry)
         *(Binding(key, f"row_key('{key}')", show=False, priority=True) for key in WORD_KEYS),
@@ -265,6 +289,8 @@ class StepPane(FieldForm):
         self._left_at: int | None = None
         """The scroll the form's last placing left the step at (None: none since the keys
         moved)."""
+        self._revealing = False
+        """Ctrl+R asked for the step's computed values: the next view drawn shows them."""
 
     def on_mount(self) -> None:
         self.screen.screen_layout_refresh_signal.subscribe(self, self.laid_out, immediate=True)
@@ -354,18 +380,35 @@ class StepPane(FieldForm):
                     widgets.append(readout)
         widgets += rows
         after = panel.after_rows() if isinstance(panel, ViewPanel) else None
-        if after is not None:
+        if after is not None and not self.readonly:  # (a log is not loaded into it)
             widgets.append(after)
         self.scroll_to(y=0, animate=False, immediate=True)
         await self.mount_all(widgets)
         self.step, self.panel = step, panel
         self.screen.refresh_bindings()  # the footer shows this step's panel keys
 
+    def revealing(self) -> None:
+        """Ctrl+R: the view drawn next shows the step's computed values (:meth:`_drawn`)."""
+        self._revealing = True
+
     @on(ViewPanel.Drawn)
     def _drawn(self, event: ViewPanel.Drawn) -> None:
         """The panel drew its view; what it newly shows (an answer's comparison) is brought
-        into view with the entry the group is in, else the entry alone."""
-        if event.reveal is None or not self._reveal_with_entry(event.reveal):
+        into view with the entry the group is in, else the entry alone.
+
+        Not when Ctrl+R showed the computed values while the plot is zoomed to a rise (Tasks
+        11-12, or F9): the group reads its answer off that plot, and at 80x24 bringing the
+        comparisons under the entry into view scrolled the plot off the screen (Task 12: by
+        14 rows, the plot's frame gone). The step stays where it is, the entry kept in
+        view; the values revealed show on the plot's own lines (Task 12: "the speed crosses
+        it 56.88 ms after the edge" and the crossing's mark; Task 11: the rise's ends and its
+        63 %), and the comparisons are brought into view once the group answers."""
+        revealing, self._revealing = self._revealing, False
+        panel = self.panel
+        reading = isinstance(panel, ResultsPanel) and panel.zoom is not None
+        if event.reveal is None or (revealing and reading):
+            self._keep_entry_in_view()
+        elif not self._reveal_with_entry(event.reveal):
             self._keep_entry_in_view()
 
     def _reveal_with_entry(self, widget: Widget) -> bool:
@@ -452,11 +495,28 @@ class StepPane(FieldForm):
         return True
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
-        """A panel key is live (and in the footer) only on the steps whose panel has it."""
+        """A panel key is live (and in the footer) only on the steps whose panel has it, and
+        not in a read-only session that refuses it (:data:`READ_ONLY_REFUSED`): there its
+        hidden binding says why. Escape is the entries' only where it does not go back to
+        the class view (the screen's priority binding runs first there, and the footer
+        shows the first live binding of a key from the focus up: the entries' hid the way
+        back)."""
+        screen = self.screen
+        if not isinstance(screen, LabScreen):
+            return action not in ("panel_key", "refused_key")
         if action == "panel_key":
-            screen = self.screen
-            return isinstance(screen, LabScreen) and screen.offers(str(parameters[0]))
+            return screen.offers(str(parameters[0]))
+        if action == "refused_key":
+            return screen.refuses(str(parameters[0]))
+        if action == "bring_back" and parameters == ("held",):
+            return screen.back is None
         return True
+
+    async def action_refused_key(self, action: str) -> None:
+        """A panel key a read-only session refuses: the line that says why."""
+        screen = self.screen
+        if isinstance(screen, LabScreen):
+            await screen.run_panel_key(action)
 
     async def action_panel_key(self, action: str, word_key: bool = False) -> None:
         """A panel key (:data:`PANEL_KEYS`): the step's panel does it, after the keys typed
@@ -737,11 +797,13 @@ class StepCommands(Provider):
                 for r in s.runs
             ]
         go, use = screen.go_to, screen.use_run
+        steps = [
+            (f"{PALETTE['go_to']} {s.title}", partial(go, s.id), "move to this step") for s in STEPS
+        ]
+        if screen.readonly:  # the run in use is not changed in it (Session.select_run)
+            return steps
         return (
-            [
-                (f"{PALETTE['go_to']} {s.title}", partial(go, s.id), "move to this step")
-                for s in STEPS
-            ]
+            steps
             + [
                 (
                     f"{USE_RUN} {name}{why} for Tasks 11-15",
@@ -815,16 +877,6 @@ class NoMatch(Provider):
             text=text,
             help="try a step ('Task 5'), 'run', 'board', 'motor' or 'report'; Esc closes",
         )
-
-
-READ_ONLY_REFUSED: dict[str, str] = {
-    "set_voltage": "the motor is not driven from it; start a new session to drive it",
-    "capture": "omega_ss is not captured into it",
-}
-"""The panel keys a read-only session refuses, with what the refusal says after why it is
-read-only: F4 captures nothing into it, so F3 drives nothing either (walk 15, D9: F3 put
-3.5 V on the motor in a session opened from the class view; and F4 with the motor off said
-'set a voltage first (F3)', which F3 there would refuse)."""
 
 
 class LabScreen(StatusScreen):
@@ -1012,7 +1064,16 @@ class LabScreen(StatusScreen):
 
     def offers(self, action: str) -> bool:
         """Whether panel key ``action`` (:data:`PANEL_KEYS`) acts on the step shown: its panel
-        has the key (its ``KEYS``) and it does something here (its ``check_action``)."""
+        has the key (its ``KEYS``), it does something here (its ``check_action``), and the
+        session takes what it does (a read-only one refuses :data:`READ_ONLY_REFUSED`)."""
+        return self._has_key(action) and not (self.readonly and action in READ_ONLY_REFUSED)
+
+    def refuses(self, action: str) -> bool:
+        """Whether panel key ``action`` would act on the step shown but this read-only session
+        refuses it (pressed, it says why; offered nowhere)."""
+        return self.readonly and action in READ_ONLY_REFUSED and self._has_key(action)
+
+    def _has_key(self, action: str) -> bool:
         panel = self.panel
         if not isinstance(panel, PanelKeys) or action not in panel.key_actions():
             return False
@@ -1042,7 +1103,7 @@ class LabScreen(StatusScreen):
         state it shows."""
         acts = set(step.actions)
         if acts & {"live_velocity", "capture_omega", "meter"}:
-            return LivePanel(step, self._live, self._refresh).data_bind(
+            return LivePanel(step, self._live, self._refresh, self.readonly).data_bind(
                 LabScreen.requested, LabScreen.meter, LabScreen.device
             )
         if "connect" in acts:
@@ -1050,7 +1111,7 @@ class LabScreen(StatusScreen):
         if step.id == "table":
             return TablePanel()
         if "run_square_wave" in acts:
-            return SquareWavePanel(step, self._live, self._refresh).data_bind(
+            return SquareWavePanel(step, self._live, self._refresh, self.readonly).data_bind(
                 LabScreen.run_progress
             )
         if "results" in acts:
@@ -1058,7 +1119,7 @@ class LabScreen(StatusScreen):
         if "model_check" in acts:
             return ModelCheckPanel()
         if step.id == "summary":
-            return ReportPanel().data_bind(LabScreen.written)
+            return ReportPanel(self.readonly).data_bind(LabScreen.written)
         return None
 
     def _rows(self, step: Step) -> list[FieldRow]:
@@ -1450,6 +1511,8 @@ class LabScreen(StatusScreen):
             return
         if read_only:  # walk 14, D1: the reveal's save raised, and the program died
             self.notify(f"computed values shown here, not recorded: {read_only}")
+        if event.step_id == self.step_id_shown:
+            self.pane.revealing()
         # else no notice: the step's comparisons say it beside each value shown ("revealed
         # before answering (Ctrl+R): the report says so"); a notice over the step's top
         # covered Task 12's title and three rows of the plot being read for 5 s at 80x24

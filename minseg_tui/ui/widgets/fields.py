@@ -255,6 +255,9 @@ before it (Ctrl+Z), the answer Ctrl+Z took back (Ctrl+Y)."""
 
 RESTORING_KEYS: dict[str, Restoring] = {"escape": "held", "ctrl+z": "undo", "ctrl+y": "redo"}
 
+NOT_ENTERED = "not entered"
+"""An empty entry's box in a read-only session (its hint would ask for what it refuses)."""
+
 FOCUS_MARK = "▶ "
 """Before the label of the row the keys go to: the focus seen without colour."""
 
@@ -592,6 +595,12 @@ class FieldRow(Vertical):
         self._readonly = readonly
 
     @property
+    def hint(self) -> str:
+        """What the empty box says: the field's hint (what to type, '0.0335 A' or '33.5 mA'),
+        or in a read-only session, where nothing can be typed, that nothing was entered."""
+        return NOT_ENTERED if self._readonly else self.field.hint
+
+    @property
     def label_text(self) -> str:
         """The row's label as written beside its box or above its answers (its unit, or that
         several answers may be ticked), without the focus mark."""
@@ -637,8 +646,8 @@ class FieldRow(Vertical):
             with Horizontal(classes="field-line"):
                 # as text, not markup: '[V]' would be read as a style and vanish
                 yield Label(self.label_text, classes="field-label", markup=False)
-                yield EntryBox(self._text, self.field.hint, self._readonly)
-            yield Prose(self.field.hint, classes="field-hint")
+                yield EntryBox(self._text, self.hint, self._readonly)
+            yield Prose(self.hint, classes="field-hint")
         yield Prose("", classes="field-msg")
 
     def on_mount(self) -> None:
@@ -655,11 +664,11 @@ class FieldRow(Vertical):
         V=, between M1A and M1B' was cut to 'multimeter on V=, between M1A an'), in full on
         the line under the box while the box is empty."""
         hints = self.query(".field-hint")
-        if not hints or not self.field.hint:
+        if not hints or not self.hint:
             return
         box = self.input
-        fits = box.content_size.width == 0 or len(self.field.hint) < box.content_size.width
-        box.placeholder = self.field.hint if fits else ""
+        fits = box.content_size.width == 0 or len(self.hint) < box.content_size.width
+        box.placeholder = self.hint if fits else ""
         hint, under = hints.first(), not fits and not box.value
         if hint.display != under:
             hint.display = under
