@@ -36,6 +36,9 @@ SPIKE_ISOLATION = 3.0
 LATE_SIGMAS = 5.0
 """A late step is out of line by this many times the timing error the angle quantum allows."""
 
+LATE_SPREAD = 5.0
+"""...and by this many times the spread of the other edges' own shifts (robust sigma)."""
+
 
 def moving_rows(y: FloatArray) -> FloatArray:
     """Rows where the measured speed is not exactly 0 (bool array).
@@ -359,6 +362,13 @@ def late_steps(
     second time with the residual's mean over the rows before it (from the previous edge, at
     most as many as the projection spans; ``keep``: the rows the fit used, bool) taken off
     the rows after it, and both estimates must be out of line.
+
+    And out of line against the other edges' shifts, not only against the noise: where the
+    model misses the corners (a pole or a coast it lacks, an estimator's first reading after
+    rest), every edge's estimate is off by the miss's projection, which varies from edge to
+    edge, and the edges scatter far more widely than the noise allows. That scatter (the
+    robust sigma of the other edges' estimates) is this model's timing error on this log, and
+    a step that acted late must stand ``LATE_SPREAD`` of them out of it.
     """
     edges = np.flatnonzero(np.diff(u) != 0) + 1
     if edges.size < 3:
@@ -385,9 +395,18 @@ def late_steps(
     x = np.asarray(est)
     med = float(np.median(x))
     noise = robust_sigma(np.diff(residual)) / np.sqrt(2.0)
+    timed = np.asarray(strength) > 0
+
+    def spread(k: int) -> float:
+        """The robust sigma (s) of the timed edges' shifts but edge k's."""
+        others = x[timed & (np.arange(x.size) != k)]
+        if others.size < 2:
+            return 0.0
+        return 1.4826 * float(np.median(np.abs(others - np.median(others))))
+
     out = []
-    for e, dx, dc, st, res_t in zip(
-        edges.tolist(), x.tolist(), carried, strength, resolution, strict=True
+    for k, (e, dx, dc, st, res_t) in enumerate(
+        zip(edges.tolist(), x.tolist(), carried, strength, resolution, strict=True)
     ):
         off = dx - med
         # the shift must be a good part of a sample, well above what the noise allows and
@@ -395,8 +414,9 @@ def late_steps(
         # sample: a step between samples acts within one period of its sample time, and a
         # larger figure is the linear estimate outside its range (an edge that is no step,
         # such as noise on u), which says nothing of when the step acted; and so must the
-        # shift left once the miss the rows before the edge had is taken off
-        if all(
+        # shift left once the miss the rows before the edge had is taken off; and the shift
+        # must stand out of the other edges' scatter
+        if abs(off) > LATE_SPREAD * spread(k) and all(
             max(0.25 * ts, LATE_SIGMAS * res_t) < abs(o) <= ts and abs(o) / shift * st > 6 * noise
             for o in (off, dc - med)
         ):
