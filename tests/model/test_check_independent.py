@@ -1120,6 +1120,25 @@ def test_a_miss_a_shift_only_trims_is_no_late_step(miss):
     assert [a.row for a in found] == ([] if miss else [int(edges[6])])
 
 
+def test_a_hands_fence_is_run_on_to_the_next_step_not_across_it():
+    # through an average the wheel's way back after a hand runs on in the reading past where
+    # the fence ends (held-out touched 901001, an 11-tap average: 0.44 rad/s behind there,
+    # and a cap entered beside the average on that tail alone); the check chooses the causes
+    # again with the fence run on to the next step, and takes that choice only when it names
+    # fewer causes. The fence stops at the step: that step's response stays in the fit
+    from minseg_tui.model.check.disturbances import Disturbance
+    from minseg_tui.model.check.pipeline import _to_next_step
+
+    u = np.zeros(400)
+    u[100:200], u[200:300] = 3.0, 1.5
+    inside = Disturbance(120, 140, -4.0, 30.0, until=160)  # ends between the steps at 100, 200
+    at_step = Disturbance(230, 250, -4.0, 15.0, until=300)  # ends on the step at 300
+    last = Disturbance(320, 330, -4.0, 0.0, until=350)  # after the last step: to the end
+    wide = _to_next_step([inside, at_step, last], u)
+    assert [(d.fence_start, d.fence_end) for d in wide] == [(120, 200), (230, 300), (320, 400)]
+    assert wide[1] == at_step
+
+
 def test_an_average_loses_to_a_delay_that_matches_the_corners_far_better():
     # a 5-tap average at 10 ms lags the speed by 25 ms on the whole, as a 25 ms delay does:
     # the two differ only in the few rows after each edge, where the average rounds the
