@@ -49,6 +49,11 @@ TUNING_SEEDS = range(0, 10_000)
 HELD_OUT_SEEDS = range(900_000, 910_000)
 """Seeds run only for the benchmark's figures, never while tuning."""
 
+FRESH_SEEDS = range(903_000, 905_000)
+"""A part of HELD_OUT_SEEDS no stop had run before stop 37 (900000-900074 and 901000-901019
+had been looked at by number over stops): benchmarks/model_check_independent.py --fresh runs
+it at the start and at the end of a stop's work and prints counts only, never a single log."""
+
 CAUSES = (
     "coulomb_friction",
     "dead_time",

@@ -36,6 +36,13 @@ SPIKE_ISOLATION = 3.0
 LATE_SIGMAS = 5.0
 """A late step is out of line by this many times the timing error the angle quantum allows."""
 
+LATE_SPREAD = 5.0
+"""...and by this many times the spread of the other edges' own shifts (robust sigma)."""
+
+LATE_FIT = 3.0
+"""Shifted, the rows after a late step miss by at most this many times what the rows after
+the other edges miss as they are (the median of their rms)."""
+
 
 def moving_rows(y: FloatArray) -> FloatArray:
     """Rows where the measured speed is not exactly 0 (bool array).
@@ -359,6 +366,16 @@ def late_steps(
     second time with the residual's mean over the rows before it (from the previous edge, at
     most as many as the projection spans; ``keep``: the rows the fit used, bool) taken off
     the rows after it, and both estimates must be out of line.
+
+    And out of line against the other edges' shifts, not only against the noise: where the
+    model misses the corners (a pole or a coast it lacks, an estimator's first reading after
+    rest), every edge's estimate is off by the miss's projection, which varies from edge to
+    edge, and the edges scatter far more widely than the noise allows. That scatter (the
+    robust sigma of the other edges' estimates) is this model's timing error on this log, and
+    a step that acted late must stand ``LATE_SPREAD`` of them out of it. Once shifted, its
+    rows must also fit about as well as the rows after the other edges do as they are (at
+    most ``LATE_FIT`` times their median rms): a step that acted late leaves the model right
+    but for the timing, while a miss the shift only trims is the model's.
     """
     edges = np.flatnonzero(np.diff(u) != 0) + 1
     if edges.size < 3:
@@ -366,6 +383,7 @@ def late_steps(
     span = max(6, int(np.ceil(3.0 * T / ts))) if ts > 0 else 6
     used = np.ones(u.size, dtype=bool) if keep is None else np.asarray(keep, dtype=bool)
     est, carried, strength, resolution = [], [], [], []
+    missed, left = [], []  # rms (rad/s) of the residual after each edge, as is and shifted
     for k, e in enumerate(edges.tolist()):
         rows = np.arange(e, min(e + span, u.size))
         jump = abs(float(pred[rows[-1]] - pred[e - 1])) if pred is not None else 0.0
@@ -375,6 +393,8 @@ def late_steps(
             est.append(0.0)
             carried.append(0.0)
             strength.append(0.0)
+            missed.append(0.0)
+            left.append(0.0)
             continue
         before = np.arange(max(int(edges[k - 1]) if k else 0, e - span), e)
         before = before[used[before]]
@@ -382,12 +402,29 @@ def late_steps(
         est.append(shift * float(np.dot(d_shift[rows], residual[rows])) / den)
         carried.append(shift * float(np.dot(d_shift[rows], residual[rows] - level)) / den)
         strength.append(np.sqrt(den))
+        missed.append(float(np.sqrt(np.mean(residual[rows] ** 2))))
+        shifted = residual[rows] - est[-1] / shift * d_shift[rows]
+        left.append(float(np.sqrt(np.mean(shifted**2))))
     x = np.asarray(est)
     med = float(np.median(x))
     noise = robust_sigma(np.diff(residual)) / np.sqrt(2.0)
+    timed = np.asarray(strength) > 0
+
+    def spread(k: int) -> float:
+        """The robust sigma (s) of the timed edges' shifts but edge k's."""
+        others = x[timed & (np.arange(x.size) != k)]
+        if others.size < 2:
+            return 0.0
+        return 1.4826 * float(np.median(np.abs(others - np.median(others))))
+
+    def elsewhere(k: int) -> float:
+        """The median rms (rad/s) of the residual after the timed edges but edge k."""
+        others = np.asarray(missed)[timed & (np.arange(x.size) != k)]
+        return float(np.median(others)) if others.size else np.inf
+
     out = []
-    for e, dx, dc, st, res_t in zip(
-        edges.tolist(), x.tolist(), carried, strength, resolution, strict=True
+    for k, (e, dx, dc, st, res_t) in enumerate(
+        zip(edges.tolist(), x.tolist(), carried, strength, resolution, strict=True)
     ):
         off = dx - med
         # the shift must be a good part of a sample, well above what the noise allows and
@@ -395,10 +432,16 @@ def late_steps(
         # sample: a step between samples acts within one period of its sample time, and a
         # larger figure is the linear estimate outside its range (an edge that is no step,
         # such as noise on u), which says nothing of when the step acted; and so must the
-        # shift left once the miss the rows before the edge had is taken off
-        if all(
-            max(0.25 * ts, LATE_SIGMAS * res_t) < abs(o) <= ts and abs(o) / shift * st > 6 * noise
-            for o in (off, dc - med)
+        # shift left once the miss the rows before the edge had is taken off; and the shift
+        # must stand out of the other edges' scatter
+        if (
+            abs(off) > LATE_SPREAD * spread(k)
+            and left[k] <= LATE_FIT * elsewhere(k)
+            and all(
+                max(0.25 * ts, LATE_SIGMAS * res_t) < abs(o) <= ts
+                and abs(o) / shift * st > 6 * noise
+                for o in (off, dc - med)
+            )
         ):
             out.append(
                 Anomaly(
