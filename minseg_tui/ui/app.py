@@ -1020,7 +1020,10 @@ class LabApp(App[None]):
             return
         with self.session as s:
             problem = s.save_problem
+            restored = s.take_restored()
         self.saving = problem.line if problem is not None else ""
+        if restored:  # a run file deleted by hand while the session is open (s37 attack)
+            self.notify("\n".join(restored), title="session", severity="warning", timeout=20)
 
     def retry_save(self) -> None:
         """Every few seconds while a save fails: try again (a stick put back, space freed)."""
@@ -1257,7 +1260,9 @@ class LabApp(App[None]):
             return
         with self.session as s:
             read_only = lab_views.read_only(s) if s.readonly else ""
+            s.restore_runs()  # a run file deleted by hand since the last save: written back
             snapshot = s.snapshot()
+        self._saved_or_not()
         if read_only:  # walk 15: F8 wrote report.md and report.html into a group's folder
             # opened from the class view ("to look, not to change")
             self.notify(f"{read_only}: no report is written into it", severity="warning")
