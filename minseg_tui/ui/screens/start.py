@@ -117,7 +117,9 @@ class StartScreen(StatusScreen):
     def _label(s: SessionInfo) -> str:
         why = why_closed(s)
         if why:
-            return f"{s.path}: {why}" + (" (Enter opens it read-only)" if s.damaged else "")
+            return f"{s.path}: {why}" + (
+                " (Enter opens it read-only)" if s.damaged and s.runs_left is None else ""
+            )
         return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {step_name(s.last_step)}"
 
     def request(self) -> StartScreen.NewSession | StartScreen.Resume | None:
@@ -168,6 +170,9 @@ class StartScreen(StatusScreen):
 
     def _resume(self, key: str | None) -> StartScreen.Resume | None:
         info = self._sessions.get(key or "")
+        if info is not None and info.runs_left is not None:  # no session.json: nothing to open
+            self.query_one("#start-msg", Static).update(Content(f"{info.path}: {info.damaged}"))
+            return None
         return None if info is None else self.Resume(str(info.path), bool(info.damaged))
 
     @on(OptionList.OptionSelected, "#sessions")
