@@ -122,3 +122,25 @@ def test_dash_is_no_folder_or_output_name(tmp_path, capsys, monkeypatch, argv, f
     assert err.startswith(f"minseg-tui {argv[0]}: {flag}: expected "), err
     assert err.count("\n") == 1 and ", got - (" in err
     assert not (tmp_path / "-").exists() and not (tmp_path / "s" / "-").exists()
+
+
+@pytest.mark.parametrize(
+    ("value", "said"),
+    [
+        ("", "minseg-tui tui: --sessions: expected a folder, got ''\n"),
+        (
+            "-",
+            "minseg-tui tui: --sessions: expected the folder of the sessions, got - (only a CSV "
+            "to read, as identify's TABLE.csv, takes - for stdin)\n",
+        ),
+    ],
+)
+def test_the_lab_assistant_refuses_an_empty_or_dash_sessions_folder(
+    tmp_path, capsys, monkeypatch, value, said
+):
+    """'--sessions ""' listed the folder it was started in as the sessions folder (Path('')
+    is '.'); '--sessions -' made a folder called '-'."""
+    monkeypatch.chdir(tmp_path)
+    assert main(["--sim", "--sessions", value]) == 2
+    assert capsys.readouterr().err == said
+    assert list(tmp_path.iterdir()) == []
