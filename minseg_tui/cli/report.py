@@ -45,6 +45,13 @@ def run(args: argparse.Namespace) -> int:
         )
     try:
         written = write_report(session)
+    except IsADirectoryError as exc:  # a folder of the report's name: moving it away does
+        raise InputError(
+            str(folder),
+            None,
+            f"cannot write the report into the session folder ({os_reason(exc)}): a folder "
+            "stands where the report's file goes; move or rename it and run the report again",
+        ) from None
     except OSError as exc:
         raise InputError(
             str(folder),

@@ -46,7 +46,12 @@ from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import timeout_message
 from minseg_tui.errors import MinsegError
 from minseg_tui.lab.content.keys import PALETTE, in_palette, key_name
-from minseg_tui.lab.saving.store import SessionInfo, SessionsUnreadable, list_sessions
+from minseg_tui.lab.saving.store import (
+    SessionInfo,
+    SessionsUnreadable,
+    list_sessions,
+    os_reason,
+)
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
 from minseg_tui.lab.views import own_first
@@ -1287,7 +1292,12 @@ class LabApp(App[None]):
                     raise MinsegError("this program was started without the report writer")
                 paths = tuple(str(p) for p in self._writer(session))
             except (MinsegError, OSError) as exc:
-                self.call_from_thread(self.notify, str(exc), title="report", severity="error")
+                said = (  # the system's words and the file, not Python's '[Errno 21] ...'
+                    str(exc)
+                    if isinstance(exc, MinsegError)
+                    else f"cannot write the report ({os_reason(exc)})"
+                )
+                self.call_from_thread(self.notify, said, title="report", severity="error")
                 return
             written = written_in(paths, Path(self.config.sessions))  # resolves: not on the UI
             self.call_from_thread(
