@@ -71,3 +71,17 @@ def test_a_run_that_cannot_be_written_back_stays_held_until_it_can(tmp_path):
     assert s.save_problem is None and not s.unsaved
     assert len(s.take_restored()) == 1
     s.close()
+
+
+def test_a_session_folder_deleted_whole_is_saved_elsewhere_with_its_runs(tmp_path):
+    """Its folder is not made again (its lock went with it): the save says why, and saving
+    elsewhere brings the run from memory (it was left behind: 'No such file')."""
+    s, name, kept = _session_with_a_run(tmp_path)
+    shutil.rmtree(s.folder)
+    assert not s.save()
+    assert s.save_problem is not None and not s.folder.exists()
+    moved = s.move_to(tmp_path / "elsewhere")
+    assert moved.left_behind == ()
+    assert s.run_path(name).read_bytes() == kept
+    assert s.save_problem is None and not s.unsaved
+    s.close()

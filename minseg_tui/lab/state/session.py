@@ -1402,7 +1402,9 @@ class Session:
                     self._restored.append(self._gone(r))
                 continue
             try:
-                path.parent.mkdir(parents=True, exist_ok=True)
+                # runs/ made again, never the session's folder: one deleted whole is a save
+                # problem (its lock went with it), and move_to saves it elsewhere, runs too
+                path.parent.mkdir(exist_ok=True)
                 atomic_write_bytes(path, held)
             except OSError as exc:
                 self._failed(exc)
