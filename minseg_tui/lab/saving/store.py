@@ -129,6 +129,8 @@ def atomic_write_bytes(path: Path, data: bytes) -> None:
         try:
             os.replace(tmp, path)
         except OSError as exc:  # a folder where the file goes: named by it, not the temp file
+            if exc.errno is None:  # no system error to name a file for: as it came
+                raise
             raise type(exc)(exc.errno, exc.strerror, str(path)) from None
     except BaseException:
         with contextlib.suppress(OSError):
