@@ -5,6 +5,8 @@ that it was changed. An untouched run is said as before."""
 
 from __future__ import annotations
 
+import os
+
 from minseg_tui.cli import main
 from tests.classview.build import group
 
@@ -31,3 +33,21 @@ def test_an_untouched_run_is_said_as_recorded(tmp_path, capsys):
     report = (folder / "report.md").read_text(encoding="utf-8")
     assert "| steps-1 | steps | 500 | 25 ms | 0 | not interrupted | runs/steps-1.csv |" in report
     assert "were recorded" not in report
+
+
+def test_a_fifo_or_a_device_in_place_of_a_run_file_is_not_read(tmp_path, capsys):
+    """A FIFO put where runs/steps-1.csv was waited 10 s at every read of the run (three in
+    one report, two per group in the class view); a link to /dev/zero read 4 KiB first."""
+    fifo = group(tmp_path / "s", ["Ada", "Bo"], seed=3)
+    zero = group(tmp_path / "s", ["Cy", "Di"], seed=4)
+    (fifo / "runs" / "steps-1.csv").unlink()
+    os.mkfifo(fifo / "runs" / "steps-1.csv")
+    (zero / "runs" / "steps-1.csv").unlink()
+    (zero / "runs" / "steps-1.csv").symlink_to("/dev/zero")
+    for folder, what in ((fifo, "a FIFO (a named pipe)"), (zero, "a device or a socket")):
+        assert main(["report", str(folder)]) == 0
+        report = (folder / "report.md").read_text(encoding="utf-8")
+        assert (
+            f"Run steps-1 cannot be read: {folder / 'runs' / 'steps-1.csv'}: expected the "
+            f"run's log file; this is {what}, not read"
+        ) in report
