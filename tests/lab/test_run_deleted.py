@@ -85,3 +85,23 @@ def test_a_session_folder_deleted_whole_is_saved_elsewhere_with_its_runs(tmp_pat
     assert s.run_path(name).read_bytes() == kept
     assert s.save_problem is None and not s.unsaved
     s.close()
+
+
+def test_the_copies_held_are_bounded(tmp_path, monkeypatch):
+    """A run that would take the copies past their bound is not held: deleted, it is said
+    lost (with its samples), never written back from a copy that is not there."""
+    import minseg_tui.lab.state.session as session_module
+
+    s, first, _ = _session_with_a_run(tmp_path)
+    size = s.run_path(first).stat().st_size
+    monkeypatch.setattr(session_module, "MAX_RUN_COPIES", size + size // 2)
+    second = record_square_wave(s, seed=4)
+    assert second is not None
+    s.run_path(second.name).unlink()
+    s.run_path(first).unlink()
+    assert s.save()
+    assert s.run_path(first).is_file() and not s.run_path(second.name).exists()
+    said = s.take_restored()
+    assert said[0] == f"runs/{first}.csv was deleted: written back from memory (500 samples)"
+    assert said[1].startswith(f"runs/{second.name}.csv is gone (deleted?) and no copy")
+    s.close()

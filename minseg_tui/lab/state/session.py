@@ -163,6 +163,9 @@ MAX_RUN_COPY = 64 * 2**20
 """Largest run file (bytes) a session holds a copy of in memory (a 12 s run at 5 ms is
 about 0.3 MB; a log larger than this is not held: its file is all there is)."""
 
+MAX_RUN_COPIES = 256 * 2**20
+"""Most bytes of run files a session holds in all (the runs past it are not held)."""
+
 NO_RUN_YET = "no run recorded yet (Task 10)"
 """What stands in for the model check and the class's figures before any run is recorded
 (the square wave of Task 10 records one)."""
@@ -1355,13 +1358,14 @@ class Session:
                 rec.path.unlink(missing_ok=True)
 
     def _hold(self, run: RunInfo) -> bool:
-        """Hold a copy of ``run``'s file in memory (True), unless it cannot be read or is
-        larger than :data:`MAX_RUN_COPY`."""
+        """Hold a copy of ``run``'s file in memory (True), unless it cannot be read, is
+        larger than :data:`MAX_RUN_COPY` or would take the copies past :data:`MAX_RUN_COPIES`."""
         try:
             data = read_regular(self.folder / run.file, MAX_RUN_COPY)
         except OSError:
             return False
-        if len(data) > MAX_RUN_COPY:
+        held = sum(len(b) for k, b in self._copies.items() if k != run.name)
+        if len(data) > MAX_RUN_COPY or held + len(data) > MAX_RUN_COPIES:
             return False
         self._copies[run.name] = data
         return True
