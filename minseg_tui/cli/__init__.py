@@ -54,8 +54,13 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
 class _Parser(argparse.ArgumentParser):
     """argparse that exits with 2 and one line, as every bad input does here."""
 
+    chosen: argparse.ArgumentParser | None = None
+    """The subcommand's own parser (set on the top parser by :func:`build_parser`): an
+    unknown argument is said in its name."""
+
     def error(self, message: str) -> NoReturn:
-        self.exit(2, f"{self.prog}: {message} (see {self.prog} --help)\n")
+        # an argument with a newline or a terminal escape: still one line, nothing driven
+        self.exit(2, f"{self.prog}: {one_line(message)} (see {self.prog} --help)\n")
 
 
 def _available() -> dict[str, tuple[str, str]]:
@@ -78,6 +83,7 @@ def build_parser(selected: str | None = None) -> argparse.ArgumentParser:
         p = sub.add_parser(name, help=help_text, description=help_text)
         if name == selected:
             importlib.import_module(module).add_arguments(p)
+            parser.chosen = p
     return parser
 
 
@@ -178,7 +184,12 @@ def _parse(parser: argparse.ArgumentParser, args_list: list[str]) -> argparse.Na
     out = _Stdout(sys.stdout)
     sys.stdout = out
     try:
-        return parser.parse_args(args_list)
+        args, extra = parser.parse_known_args(args_list)
+        if extra:  # said by the subcommand's parser: 'minseg-tui class: ... (see minseg-tui
+            # class --help)', not the top one's, which named no command (s37 attack)
+            chosen = getattr(parser, "chosen", None) if args.command else None
+            (chosen or parser).error(f"unrecognized arguments: {' '.join(extra)}")
+        return args
     except SystemExit:
         if out.failed is not None and not isinstance(out.failed, BrokenPipeError):
             _drop_stdout(out.stream)

@@ -17,7 +17,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from minseg_tui.cli.output import open_output, output_file, print_json
+from minseg_tui.cli.output import input_file, not_stdio, open_output, output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.identify_says import check_T_beside
 from minseg_tui.lab.content.log_says import refusal_words
@@ -38,7 +38,7 @@ from minseg_tui.model.runlog import LogRefused, RunLog, problem
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The subcommand's arguments."""
     parser.add_argument(
-        "log", metavar="LOG.csv", help="run log: columns t (s), u (V), omega (rad/s)"
+        "log", metavar="LOG.csv", help="run log: columns t (s), u (V), omega (rad/s); - reads stdin"
     )
     parser.add_argument(
         "--json", action="store_true", help="print one JSON object instead of the report"
@@ -94,9 +94,16 @@ def in_words_text(r: CheckResult) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Analyse the log; 0 on success (InputError propagates: exit 2 with one line)."""
+    source = input_file(args.log, "LOG.csv")
     if args.predictions is not None:
+        not_stdio(
+            args.predictions,
+            "--predictions",
+            "a file name for the predictions",
+            "stdout holds the report",
+        )
         output_file(args.predictions, {args.log: "the log being analysed"}, "predictions")
-    log = read_run_log(args.log)
+    log = read_run_log(source)
     ts = _sample_period(dict(log.metadata))
     refused = problem(log.t, log.u, log.omega, ts)
     if refused:

@@ -19,7 +19,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from minseg_tui.cli.output import one_line, print_json
+from minseg_tui.cli.output import not_stdio, one_line, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.store import os_reason
 from minseg_tui.lab.views import classread
@@ -132,6 +132,9 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(
             "--workers", None, f"expected a whole number of at least 1, got {args.workers}"
         )
+    not_stdio(args.sessions, "--sessions", "the folder holding the sessions")
+    if args.out is not None:
+        not_stdio(args.out, "--out", "a folder for the class report (made if needed)")
     view = classread.build(args.sessions, workers=args.workers)
     written = write(view, args.out) if args.out is not None else ()
     if args.json:

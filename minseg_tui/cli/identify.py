@@ -10,7 +10,7 @@ import sys
 import textwrap
 from typing import NamedTuple
 
-from minseg_tui.cli.output import print_json
+from minseg_tui.cli.output import input_file, one_stdin, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.identify_says import (
     as_json,
@@ -74,7 +74,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "table",
         metavar="TABLE.csv",
-        help="steady-state readings: u_req,u_ss,omega_ss,i_ss (V, V, rad/s, mA)",
+        help="steady-state readings: u_req,u_ss,omega_ss,i_ss (V, V, rad/s, mA); - reads stdin",
     )
     parser.add_argument(
         "--R",
@@ -87,7 +87,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--step",
         metavar="LOG.csv",
-        help="run log (t,u,omega,...) for K, T, J and the model (Tasks 11-15)",
+        help="run log (t,u,omega,...) for K, T, J and the model (Tasks 11-15); - reads stdin",
     )
     parser.add_argument(
         "--json", action="store_true", help="print one JSON object instead of the report"
@@ -98,10 +98,13 @@ def run(args: argparse.Namespace) -> int:
     """Read the files, compute, print. InputError reaches the dispatcher (exit 2)."""
     if args.step == "":
         raise InputError("--step", None, "expected a run log file name, got ''")
-    readings = read_table(args.table)
-    log = read_run_log(args.step) if args.step is not None else None
+    table = input_file(args.table, "TABLE.csv")
+    step = input_file(args.step, "--step") if args.step is not None else None
+    one_stdin(("TABLE.csv", table), ("--step", step))
+    readings = read_table(table)
+    log = read_run_log(step) if step is not None else None
     try:
-        result = identify(readings, args.R.value, log, source=args.table)
+        result = identify(readings, args.R.value, log, source=str(table))
     except IdentifyRefused as refused:
         raise identify_refusal(refused) from None
     except ZeroVoltRefusal as refused:

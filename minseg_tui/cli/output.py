@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TextIO
 
 from minseg_tui.errors import InputError
+from minseg_tui.lab.saving.csvread import STDIN, Stdin
 
 _CONTROLS = {c: repr(chr(c))[1:-1] for c in (*range(0x20), *range(0x7F, 0xA0))}
 
@@ -51,6 +52,38 @@ def json_text(obj: object, indent: int | None = None) -> str:
 def print_json(obj: object, indent: int | None = None) -> None:
     """Print ``obj`` as strict JSON, one document and a newline."""
     print(json_text(obj, indent))
+
+
+def input_file(name: str, flag: str = "") -> str | Stdin:
+    """A file argument of a command that reads CSV: ``-`` is the standard input (read once:
+    :func:`one_stdin`), any other name the file of that name."""
+    if name == "":
+        raise InputError(flag, None, "expected a file name (or - for stdin), got ''")
+    return STDIN if name == "-" else name
+
+
+def one_stdin(*inputs: tuple[str, str | Stdin | None]) -> None:
+    """Refuse ``-`` given for more than one input ((flag, input) pairs): stdin is read once."""
+    given = [flag for flag, value in inputs if isinstance(value, Stdin)]
+    if len(given) > 1:
+        raise InputError(
+            " and ".join(given) + " -",
+            None,
+            "stdin can be read only once: give all but one of these as a file",
+        )
+
+
+def not_stdio(name: str | Path, flag: str, what: str, why: str = "") -> None:
+    """Refuse ``-`` for an argument that names a folder or a file to write (``what``): it
+    would be taken as a file or folder called '-'; ``why``: what stdio holds instead."""
+    if str(name) == "-":
+        raise InputError(
+            flag,
+            None,
+            f"expected {what}, got - ("
+            + (why or "only a CSV to read, as identify's TABLE.csv, takes - for stdin")
+            + ")",
+        )
 
 
 def _not_regular(path: Path) -> str | None:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from minseg_tui.cli.output import not_stdio
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.store import SessionDamaged, os_reason, resolve
 from minseg_tui.lab.state.session import Session
@@ -34,6 +35,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Write the report; 0 on success (InputError -> exit 2 via the CLI, one line)."""
+    not_stdio(args.session, "SESSION", "a session folder or a session id")
+    not_stdio(args.sessions, "--sessions", "the folder holding the sessions")
     folder = resolve(args.session, args.sessions)
     session = Session.open(folder, readonly=True)
     if session.damaged:
@@ -42,6 +45,13 @@ def run(args: argparse.Namespace) -> int:
         )
     try:
         written = write_report(session)
+    except IsADirectoryError as exc:  # a folder of the report's name: moving it away does
+        raise InputError(
+            str(folder),
+            None,
+            f"cannot write the report into the session folder ({os_reason(exc)}): a folder "
+            "stands where the report's file goes; move or rename it and run the report again",
+        ) from None
     except OSError as exc:
         raise InputError(
             str(folder),

@@ -6,6 +6,7 @@ import argparse
 import os
 from pathlib import Path
 
+from minseg_tui.cli.output import not_stdio
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.store import list_sessions
 
@@ -31,6 +32,9 @@ def run(args: argparse.Namespace) -> int:
     from minseg_tui.ui.app import make_app
     from minseg_tui.ui.config import UiConfig
 
+    if args.sessions == "":  # Path('') is '.': the folder it was started in, as sessions
+        raise InputError("--sessions", None, "expected a folder, got ''")
+    not_stdio(args.sessions, "--sessions", "the folder of the sessions")
     sessions = Path(args.sessions)
     if os.path.lexists(sessions) and not sessions.is_dir():
         raise InputError(str(sessions), None, "--sessions must be a folder")

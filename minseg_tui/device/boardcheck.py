@@ -433,9 +433,12 @@ def count_revolution(
     start = int(first.count[-1]) if samples is None and len(first) else None
     arrived = [first]  # every batch, for the board's time when the hand was done
     end = clock() + timeout
+    heard = clock()  # when a sample last arrived (the board streams while the motor is off)
     while not done() and clock() < end:
         got.append(take())
         arrived.append(got[-1])
+        if len(got[-1]):
+            heard = clock()
         time.sleep(poll)
     pressed = clock()
     # the last samples of the turn: until the board's own clock is LAST_US past the moment
@@ -458,6 +461,8 @@ def count_revolution(
         # samples that arrived meanwhile (a busy machine read the turn's end late, not never)
         b = take()
         got.append(b)
+        if len(b):
+            heard = clock()
         if late:
             break
         if len(b):
@@ -474,6 +479,14 @@ def count_revolution(
     batch = SampleBatch.concat(got)
     if len(batch) == 0:
         raise DeviceError(f"{board.port}: no samples came from the board while the wheel turned")
+    silent = clock() - heard
+    if silent >= LAST_WAIT_S:  # s37 attack: a board killed (a cable pulled) mid-count was
+        # said to have counted what it sent before ("0 counts: the encoder counted nothing")
+        raise DeviceError(
+            f"{board.port}: the board stopped sending {silent:.0f} s before the count ended "
+            "(cable pulled, or the board reset?): what the wheel turned after that is not "
+            "known; connect it and count again"
+        )
     return revolution_text(int(batch.count[-1]) - (int(batch.count[0]) if start is None else start))
 
 

@@ -19,6 +19,7 @@ from minseg_tui.lab.content import identify_says
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.keys import in_palette, key_name
 from minseg_tui.lab.content.needs import needs
+from minseg_tui.lab.saving.runs import RunInfo
 from minseg_tui.lab.state.entries import Entry
 from minseg_tui.lab.state.results import Notice
 from minseg_tui.lab.state.session import Session, TableRow
@@ -675,11 +676,24 @@ def _runs_section(session: Session) -> Section:
     if not session.runs:
         sec.blocks.append("No run recorded.")
         return sec
+    logs: dict[str, RunLog | InputError | KeyError] = {}
+    for r in session.runs:
+        try:
+            logs[r.name] = session.load_run(r.name)
+        except (InputError, KeyError) as exc:
+            logs[r.name] = exc
+
+    def samples(r: RunInfo) -> str:
+        log = logs[r.name]
+        if isinstance(log, RunLog) and len(log) != r.samples:
+            return f"{len(log)} ({r.samples} recorded)"
+        return f"{r.samples}"
+
     rows = tuple(
         (
             r.name,
             r.kind,
-            f"{r.samples}",
+            samples(r),
             f"{r.ts * 1e3:g} ms",
             f"{r.dropped}",
             r.interruption or "not interrupted",
@@ -691,11 +705,16 @@ def _runs_section(session: Session) -> Section:
         Table(("run", "kind", "samples", "Ts", "dropped", "interrupted by", "CSV file"), rows)
     )
     for r in session.runs:
-        try:
-            log = session.load_run(r.name)
-        except (InputError, KeyError) as exc:
-            sec.blocks.append(f"Run {r.name} cannot be read: {exc}")
+        log = logs[r.name]
+        if not isinstance(log, RunLog):
+            sec.blocks.append(f"Run {r.name} cannot be read: {log}")
             continue
+        if len(log) != r.samples:  # s37 attack: a row deleted by hand, reported as recorded
+            sec.blocks.append(
+                f"Run {r.name}: its file {r.file} holds {len(log)} samples where {r.samples} "
+                "were recorded: it was changed after the recording (edited by hand?); this "
+                "report is computed from the file as it is now."
+            )
         sec.blocks.append(_run_figure(log, r.name))
     return sec
 

@@ -46,7 +46,12 @@ from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import timeout_message
 from minseg_tui.errors import MinsegError
 from minseg_tui.lab.content.keys import PALETTE, in_palette, key_name
-from minseg_tui.lab.saving.store import SessionInfo, SessionsUnreadable, list_sessions
+from minseg_tui.lab.saving.store import (
+    SessionInfo,
+    SessionsUnreadable,
+    list_sessions,
+    os_reason,
+)
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import ActiveRun, Outcome, RunProgress, Task10
 from minseg_tui.lab.views import own_first
@@ -1024,7 +1029,10 @@ class LabApp(App[None]):
             return
         with self.session as s:
             problem = s.save_problem
+            restored = s.take_restored()
         self.saving = problem.line if problem is not None else ""
+        if restored:  # a run file deleted by hand while the session is open (s37 attack)
+            self.notify("\n".join(restored), title="session", severity="warning", timeout=20)
 
     def retry_save(self) -> None:
         """Every few seconds while a save fails: try again (a stick put back, space freed)."""
@@ -1272,7 +1280,9 @@ class LabApp(App[None]):
             return
         with self.session as s:
             read_only = lab_views.read_only(s) if s.readonly else ""
+            s.restore_runs()  # a run file deleted by hand since the last save: written back
             snapshot = s.snapshot()
+        self._saved_or_not()
         if read_only:  # walk 15: F8 wrote report.md and report.html into a group's folder
             # opened from the class view ("to look, not to change")
             self.notify(f"{read_only}: no report is written into it", severity="warning")
@@ -1297,7 +1307,12 @@ class LabApp(App[None]):
                     raise MinsegError(NO_WRITER)
                 paths = tuple(str(p) for p in self._writer(session))
             except (MinsegError, OSError) as exc:
-                self.call_from_thread(self.notify, str(exc), title="report", severity="error")
+                said = (  # the system's words and the file, not Python's '[Errno 21] ...'
+                    str(exc)
+                    if isinstance(exc, MinsegError)
+                    else f"cannot write the report ({os_reason(exc)})"
+                )
+                self.call_from_thread(self.notify, said, title="report", severity="error")
                 return
             written = written_in(paths, Path(self.config.sessions))  # resolves: not on the UI
             self.call_from_thread(

@@ -47,6 +47,18 @@ _INTEGER_BYTES = b"0123456789+-\n"
 _NOT_SEPARATORS = bytes(b for b in range(256) if b not in b",\n")
 _META = re.compile(r"^#\s*([A-Za-z_][\w.-]*)\s*[:=]\s*(.*?)\s*$")
 _CHUNK = 1 << 20
+
+
+class Stdin:
+    """The standard input as a file to read (``-`` on the command line: see
+    :func:`minseg_tui.cli.output.input_file`); named ``stdin`` in messages."""
+
+    def __str__(self) -> str:
+        return "stdin"
+
+
+STDIN = Stdin()
+"""The one :class:`Stdin`: :func:`read_csv` reads file descriptor 0 for it."""
 _BLOCK = 8192  # rows turned into columns at a time
 
 
@@ -54,10 +66,18 @@ def _size(n: int) -> str:
     return f"{n / 2**20:.0f} MB" if n >= 2**20 else f"{n} bytes"
 
 
-def _chunks(path: Path, source: str) -> Generator[bytes, None, None]:
+def _chunks(path: Path | Stdin, source: str) -> Generator[bytes, None, None]:
     """The file's bytes, a chunk at a time, within MAX_FILE_BYTES; never waits for ever."""
     try:
-        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+        if isinstance(path, Stdin):
+            if os.isatty(0):
+                raise InputError(
+                    source, None, "is a terminal: pipe the file in (< FILE.csv) or give its name"
+                )
+            fd = os.dup(0)
+            os.set_blocking(fd, False)
+        else:
+            fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     except IsADirectoryError:
         raise InputError(source, None, "expected a file, got a directory") from None
     except OSError as exc:
@@ -444,7 +464,7 @@ class _Reader:
 
 
 def read_csv(
-    path: str | Path,
+    path: str | Path | Stdin,
     *,
     expected_header: str,
     required: Mapping[str, str],
@@ -463,7 +483,8 @@ def read_csv(
     """
     source = str(path)
     reader = _Reader(source, expected_header, required, numeric, max_rows, rows_are)
-    with contextlib.closing(_chunks(Path(path), source)) as chunks:
+    where = path if isinstance(path, Stdin) else Path(path)
+    with contextlib.closing(_chunks(where, source)) as chunks:
         for first, text in _batches(chunks, source):
             while not reader.header and text:  # comments and the header, line by line
                 line, _, text = text.partition("\n")

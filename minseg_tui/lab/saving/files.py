@@ -29,7 +29,7 @@ from numpy.typing import NDArray
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.identify_says import identify_refusal_words
 from minseg_tui.lab.content.log_says import header_words, refusal_words
-from minseg_tui.lab.saving.csvread import CsvColumns, read_csv
+from minseg_tui.lab.saving.csvread import CsvColumns, Stdin, read_csv
 from minseg_tui.model.identify import Reading
 from minseg_tui.model.runlog import (
     COLUMN_UNITS,
@@ -167,7 +167,7 @@ def _check_sample_period(f: CsvColumns, t: NDArray[np.float64]) -> None:
 # -- TABLE.csv ---------------------------------------------------------------------------------
 
 
-def read_table(path: str | Path) -> list[Reading]:
+def read_table(path: str | Path | Stdin) -> list[Reading]:
     """The steady-state readings of Tasks 4-5, one Reading per row (i_ss in mA as entered).
 
     Refuses (InputError): an empty file, a missing column, a field that is not a number, a
@@ -217,7 +217,7 @@ def write_table(path: str | Path, readings: list[Reading]) -> None:
 # -- run logs ---------------------------------------------------------------------------------
 
 
-def read_run_log(path: str | Path, require_step: bool = True) -> RunLog:
+def read_run_log(path: str | Path | Stdin, require_step: bool = True) -> RunLog:
     """A run log (see the module docstring) as a RunLog, ``source`` the path as given.
 
     Refuses (InputError naming file and line): a header field the log format defines with a

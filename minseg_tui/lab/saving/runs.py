@@ -28,6 +28,7 @@ import contextlib
 import errno
 import json
 import os
+import stat
 import time
 from array import array
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -38,6 +39,7 @@ from typing import Any
 import numpy as np
 
 from minseg_tui.device.samples import SampleBatch
+from minseg_tui.errors import InputError
 from minseg_tui.lab.content.u_ss_says import u_ss_words
 from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.lab.saving.schema import PARTIAL_HEADER
@@ -517,8 +519,17 @@ def read_run(
     """Run ``run`` of the session in ``folder`` read back, its u column the applied voltage
     from ``table`` for a recorded run (:func:`applied_log`), as it stands for an imported
     one. InputError (file and line) when its file is damaged (or, with ``require_step``,
-    holds no step)."""
-    log = read_run_log(folder / run.file, require_step=require_step)
+    holds no step); at once, without a read, when it is not a regular file (a FIFO put in
+    its place waited 10 s at every read: s37 attack)."""
+    path = folder / run.file
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        mode = None  # read_run_log says what is wrong (no such file, ...)
+    if mode is not None and not stat.S_ISREG(mode) and not stat.S_ISDIR(mode):
+        what = "a FIFO (a named pipe)" if stat.S_ISFIFO(mode) else "a device or a socket"
+        raise InputError(str(path), None, f"expected the run's log file; this is {what}, not read")
+    log = read_run_log(path, require_step=require_step)
     return log if run.kind == "imported" else applied_log(log, table)
 
 

@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import Any
 
 from minseg_tui.errors import InputError, MinsegError
+from minseg_tui.lab.content.keys import in_palette
 from minseg_tui.lab.saving.schema import KIND, SCHEMA, SESSION, problem, salvage
 from minseg_tui.lock import FileLock, LockHeld, holder, pid_alive
 
@@ -125,7 +126,12 @@ def atomic_write_bytes(path: Path, data: bytes) -> None:
             os.fsync(fd)
         finally:
             os.close(fd)
-        os.replace(tmp, path)
+        try:
+            os.replace(tmp, path)
+        except OSError as exc:  # a folder where the file goes: named by it, not the temp file
+            if exc.errno is None:  # no system error to name a file for: as it came
+                raise
+            raise type(exc)(exc.errno, exc.strerror, str(path)) from None
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(tmp)
@@ -371,6 +377,9 @@ class SessionInfo:
     modified: str
     damaged: str | None = None
     locked_by: int | None = None
+    runs_left: tuple[str, ...] | None = None
+    """For a folder whose session.json is gone but whose runs/ is left: the run logs in it
+    (``runs/<name>.csv``), what can be recovered (None for every other line)."""
 
 
 def names_key(members: Sequence[str]) -> tuple[str, ...]:
@@ -420,11 +429,13 @@ def _is_dir(path: Path) -> bool:
 
 
 def _info(folder: Path) -> SessionInfo | None:
-    """The picker's line for ``folder``; None when it holds no session.json."""
+    """The picker's line for ``folder``; None when it holds no session.json, unless its
+    runs/ folder is left (a session whose file was deleted: listed with what it lacks and
+    what can be recovered, as the class view lists it)."""
     path = folder / SESSION_FILE
     try:
         if not os.path.lexists(path):
-            return None
+            return _lost(folder) if (folder / RUNS_DIR).is_dir() else None
     except OSError:
         return None
     locked_by = lock_owner(folder)
@@ -447,6 +458,34 @@ def _info(folder: Path) -> SessionInfo | None:
         last_step=data["current_step"],
         modified=data["modified"],
         locked_by=locked_by,
+    )
+
+
+def _lost(folder: Path) -> SessionInfo:
+    """The picker's line for a session folder whose session.json is gone and whose runs/
+    folder is left: the run logs in it can be imported into a new session."""
+    try:
+        logs = sorted(
+            f"{RUNS_DIR}/{p.name}" for p in (folder / RUNS_DIR).iterdir() if p.suffix == ".csv"
+        )
+    except OSError:
+        logs = []
+    left = (
+        f"{len(logs)} run log{'s' if len(logs) != 1 else ''} left in it ({', '.join(logs)}): "
+        f"start a new session and load each with {in_palette('import_log')}"
+        if logs
+        else "nothing in its runs/ folder can be recovered"
+    )
+    return SessionInfo(
+        folder.name,
+        folder,
+        (),
+        "",
+        "",
+        _mtime(folder / RUNS_DIR),
+        damaged=f"no session.json (deleted?): names and entries are lost; {left}",
+        locked_by=lock_owner(folder),
+        runs_left=tuple(logs),
     )
 
 

@@ -92,6 +92,7 @@ from minseg_tui.lab.saving.store import (
     exists,
     new_session_folder,
     os_reason,
+    read_regular,
     read_session_file,
     salvage_session_file,
     take_lock,
@@ -158,6 +159,13 @@ READ_ONLY = "this session was opened read-only"
 """Why a change of a session opened read-only is refused (the class view opens every
 session so; the start screen a damaged one)."""
 
+MAX_RUN_COPY = 64 * 2**20
+"""Largest run file (bytes) a session holds a copy of in memory (a 12 s run at 5 ms is
+about 0.3 MB; a log larger than this is not held: its file is all there is)."""
+
+MAX_RUN_COPIES = 256 * 2**20
+"""Most bytes of run files a session holds in all (the runs past it are not held)."""
+
 NO_RUN_YET = "no run recorded yet (Task 10)"
 """What stands in for the model check and the class's figures before any run is recorded
 (the square wave of Task 10 records one)."""
@@ -219,6 +227,12 @@ class Session:
         self._unsaved = False
         # finished recordings whose log is not written yet, and whether each stopped early
         self._unkept: list[tuple[Recorder, bool, str]] = []
+        self._copies: dict[str, bytes] = {}
+        # the bytes of each run file as written (or found at open), by run name, held while
+        # the session is open: a file deleted by hand is written back from them (s37 attack)
+        self._lost: set[str] = set()  # runs said to be gone with no copy held (said once)
+        self._unrestored = False  # a run file deleted by hand could not be written back yet
+        self._restored: list[str] = []  # lines of restore_runs not yet taken
         self.recovered: list[str] = []
         """Names of runs rebuilt at open from a recording a crash interrupted."""
         self.recovery_notes: list[str] = []
@@ -315,6 +329,7 @@ class Session:
             with contextlib.suppress(OSError):
                 (folder / RUNS_DIR).mkdir(exist_ok=True)
             s._recover_runs()
+            s._hold_copies()
             s._start_records()
         except BaseException:
             lock.release()
@@ -390,7 +405,7 @@ class Session:
     @property
     def unsaved(self) -> bool:
         """True while a change or a finished run is only in memory."""
-        return self._unsaved or bool(self._unkept)
+        return self._unsaved or bool(self._unkept) or self._unrestored
 
     def save(self, memo: bool = False) -> bool:
         """Write everything not yet on disk: runs kept since the last save that worked,
@@ -406,6 +421,8 @@ class Session:
             self._keep_unkept()
         except OSError as exc:  # the file still lists what is on disk; the rest waits
             self._failed(exc)
+            ok = False
+        if not self.restore_runs():  # held in memory still; the next save tries again
             ok = False
         self._data["entries"] = {k: e.to_json() for k, e in self._entries.items()}
         self._data["captures"] = {k: c.to_json() for k, c in self._captures.items()}
@@ -500,7 +517,11 @@ class Session:
         left: list[str] = []
         for r in self._runs:
             try:
-                atomic_write_bytes(folder / r.file, (self.folder / r.file).read_bytes())
+                held = self._copies.get(r.name)
+                atomic_write_bytes(
+                    folder / r.file,
+                    held if held is not None else (self.folder / r.file).read_bytes(),
+                )
             except OSError as exc:
                 left.append(f"{r.file}: {os_reason(exc)}")
         old_folder, old_lock, old_id = self.folder, self._lock, self._data["id"]
@@ -1318,6 +1339,7 @@ class Session:
         info = keep_run(self.folder, name, raw, interrupted, ended_by)
         if info is None:
             return None
+        self._hold(info)
         self._runs.append(info)
         self._run_version += 1
         self._changed()
@@ -1331,11 +1353,81 @@ class Session:
             if not any(r.name == rec.name for r in self._runs):
                 info = keep_run(self.folder, rec.name, raw, stopped_early, ended_by)
                 if info is not None:
+                    self._hold(info)
                     self._runs.append(info)
                     self._run_version += 1
             self._unkept.pop(0)
             with contextlib.suppress(OSError):
                 rec.path.unlink(missing_ok=True)
+
+    def _hold(self, run: RunInfo) -> bool:
+        """Hold a copy of ``run``'s file in memory (True), unless it cannot be read, is
+        larger than :data:`MAX_RUN_COPY` or would take the copies past :data:`MAX_RUN_COPIES`."""
+        try:
+            data = read_regular(self.folder / run.file, MAX_RUN_COPY)
+        except OSError:
+            return False
+        held = sum(len(b) for k, b in self._copies.items() if k != run.name)
+        if len(data) > MAX_RUN_COPY or held + len(data) > MAX_RUN_COPIES:
+            return False
+        self._copies[run.name] = data
+        return True
+
+    def _hold_copies(self) -> None:
+        """At open: hold a copy of every run file; say which runs listed have no file."""
+        for r in self._runs:
+            if not self._hold(r) and not exists(self.folder / r.file):
+                self._lost.add(r.name)
+                self.recovery_notes.append(self._gone(r))
+
+    def _gone(self, run: RunInfo) -> str:
+        """The line for a run whose file is gone and of which no copy is held."""
+        return (
+            f"{run.file} is gone (deleted?) and no copy of it was held: the {run.samples} "
+            f"samples of run {run.name} are lost"
+            + (" (Tasks 11-15 and the model check use it)" if run == self.response_run() else "")
+        )
+
+    def restore_runs(self) -> bool:
+        """Write back from memory every run file deleted (by hand, or with its runs/ folder)
+        since it was written or since the session was opened; one line for each run written
+        back and for each found gone with no copy held (said once), for :meth:`take_restored`.
+        True when every run held is on disk; a file that cannot be written back keeps its copy
+        held and becomes :attr:`save_problem` (the next save tries again). Never raises; does
+        nothing for a read-only session or a snapshot."""
+        if self.readonly or self.frozen:
+            return True
+        ok = True
+        for r in self._runs:
+            path = self.folder / r.file
+            if exists(path):
+                continue
+            held = self._copies.get(r.name)
+            if held is None:
+                if r.name not in self._lost:
+                    self._lost.add(r.name)
+                    self._restored.append(self._gone(r))
+                continue
+            try:
+                # runs/ made again, never the session's folder: one deleted whole is a save
+                # problem (its lock went with it), and move_to saves it elsewhere, runs too
+                path.parent.mkdir(exist_ok=True)
+                atomic_write_bytes(path, held)
+            except OSError as exc:
+                self._failed(exc)
+                ok = False
+                continue
+            self._restored.append(
+                f"{r.file} was deleted: written back from memory ({r.samples} samples)"
+            )
+        self._unrestored = not ok
+        return ok
+
+    def take_restored(self) -> list[str]:
+        """The lines of :meth:`restore_runs` (run by every save) since the last call: a run
+        file written back from memory, or found gone with no copy held."""
+        said, self._restored = self._restored, []
+        return said
 
     def _recover_runs(self) -> None:
         try:
@@ -1386,6 +1478,7 @@ class Session:
             raise SessionNotWritable(
                 str(self.folder / RUNS_DIR), None, f"cannot copy the log here ({os_reason(exc)})"
             ) from None
+        self._hold(info)
         self._runs.append(info)
         self._run_version += 1
         self._changed()

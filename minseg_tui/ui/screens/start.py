@@ -136,7 +136,9 @@ class StartScreen(StatusScreen):
         """A saved session's row: its date, names and step (why it cannot be opened, if so)."""
         why = why_closed(s)
         if why:
-            return f"{s.path}: {why}" + (" (Enter opens it read-only)" if s.damaged else "")
+            return f"{s.path}: {why}" + (
+                " (Enter opens it read-only)" if s.damaged and s.runs_left is None else ""
+            )
         return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {step_name(s.last_step)}"
 
     def request(self) -> StartScreen.NewSession | StartScreen.Resume | None:
@@ -199,6 +201,9 @@ class StartScreen(StatusScreen):
 
     def _resume(self, key: str | None) -> StartScreen.Resume | None:
         info = self._sessions.get(key or "")
+        if info is not None and info.runs_left is not None:  # no session.json: nothing to open
+            self.query_one("#start-msg", Static).update(Content(f"{info.path}: {info.damaged}"))
+            return None
         return None if info is None else self.Resume(str(info.path), bool(info.damaged))
 
     @on(OptionList.OptionSelected, "#sessions")
