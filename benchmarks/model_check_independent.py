@@ -846,6 +846,32 @@ beside the average, 1066, 1129, 1135, 1153, keep it: 1129 names its cap with the
 torque at 0 too). The ten real logs and six probes: analyze's text byte-identical. Left:
 the three late steps above; a miss that starts at an edge and fits a shift as well as a late
 step does is not told apart from one by the residual alone.
+
+s37-cpu (6cf99f9; issue 17 item 8, the worst log's CPU; nothing kept in product code).
+Profiled by phase (process time of each outermost fit, every held-out pair, the memo below in,
+load about 20 on two cores): pair fits in the forward step 36 % of the 81.6 s, rough third fits
+29 % (260 of them, 92 ms each: every way scored from every start, the average's length
+scanned), singles 12 %, full thirds 8 %, the rest (refits, backward, swaps, baselines) 15 %;
+second select passes 16.0 of 77.5 s (without the memo). On second_pole + current_limit 900001
+the second pass (pipeline, the rows after a stall left out for an average) chooses the same cap
+and pole and is then thrown away (it is kept only when it names an average): 1.9 of its 3.9 s.
+Making the speed's angle table (simulate.pieces, a Python loop over the stretches) is about 2.1
+of 900001's ~3.6 s but only 0.8 of 900004's ~4.4 s: the rest is numpy's read-out, whitening and
+K per evaluation, so a faster table alone cannot reach 1.5 s. Tried, exact, not kept: a memo of
+the tables on the input's stretches (the dead time, the average and a pole on the measurement
+read the same table; a rough fit's full fit repeats its starts) and, in a ringing pair's event
+search, stopping once the swing's envelope is below the constant (no later sign change is
+possible). Tables made 6,144 -> 5,172 (900001), 9,589 -> 8,165 (900004); evaluations of the
+swing 1.01 M -> 0.87 M (900001); 0 verdicts and 0 results differ in any float on every log of
+the six sets (505: held-out pairs 75, tuning pairs 150, held-out singles 35, touches 20, singles
+80, synth pairs 145); tests/model and test_check_words pass (417). But CPU did not move, the two
+trees side by side on the 75 held-out pairs: median 0.678 -> 0.737 s, max 5.16 -> 5.37 s, total
+74.8 -> 77.7 s, over 1.5 s 16 -> 15 (load about 20, noise of +-20 % per log); the three worst,
+the smallest of three runs each, trees alternating: 900001 3.76 -> 3.85 s, 900004 4.64 -> 4.30
+s, 900003 1.94 -> 1.85 s. And the memo doubled the peak memory of a check (900004: 49 -> 105
+MB): not kept. What is left: fewer evaluations, not cheaper ones (the gate on the pairs with
+rivals and runner-up fitted in full on demand; the thrown-away second pass decided without a
+full select; warm starts), each of which moves floats and needs every set's verdicts run again.
 """
 
 from __future__ import annotations
