@@ -127,6 +127,13 @@ class LoggingArtefact:
     gap_ms: float
     first: int
     last: int
+    jump: float | None = None
+    """How far the speed column itself at row ``at`` departs from the median of the three
+    rows each side (rad/s; None: not read). Near 0 while the model's miss is large: the
+    rows across the gap were lost whole, each still over its own period, and only the
+    model, which reads the gap as one long sample, expects a jump."""
+    level: float = 0.0
+    """That median, rad/s."""
 
 
 @dataclass(frozen=True)
@@ -512,6 +519,7 @@ def logging_artefact(
     size: float,
     at: int | None = None,
     left: tuple[int, int] | None = None,
+    y: FloatArray | None = None,
 ) -> Anomaly:
     """A spike right after a gap in the sample times (``at``: the row after
     the gap, default ``row``), with rows row..end (exclusive) left out of the fit (or the
@@ -520,13 +528,20 @@ def logging_artefact(
     at = row if at is None else at
     gap = float(t[at] - t[at - 1]) if at > 0 else 0.0
     a, b = (row, end) if left is None else left
+    jump: float | None = None
+    level = 0.0
+    if y is not None and y.size >= 3:
+        near = np.concatenate((y[max(at - 3, 0) : at], y[at + 1 : at + 4]))
+        if near.size:
+            level = float(np.median(near))
+            jump = float(y[at]) - level
     return Anomaly(
         "logging_artefact",
         int(row),
         float(t[row]),
         float(size),
         "rad/s",
-        LoggingArtefact(int(at), float(t[at]), 1e3 * gap, int(a), int(b - 1)),
+        LoggingArtefact(int(at), float(t[at]), 1e3 * gap, int(a), int(b - 1), jump, level),
         t_end=float(t[min(end, t.size - 1)]),
         row_end=int(end),
     )
