@@ -127,13 +127,14 @@ class LoggingArtefact:
     gap_ms: float
     first: int
     last: int
-    jump: float | None = None
-    """How far the speed column itself at row ``at`` departs from the median of the three
-    rows each side (rad/s; None: not read). Near 0 while the model's miss is large: the
-    rows across the gap were lost whole, each still over its own period, and only the
-    model, which reads the gap as one long sample, expects a jump."""
+    runs_on: bool = False
+    """The speed column itself runs on across the gap: no row left out departs from the
+    median of the three rows each side of them by more than those rows spread, or a tenth
+    of the miss. The rows across the gap were lost whole, each still over its own period,
+    and only the simulation, which reads the gap as one long sample, expects a jump (a
+    stall that reads the counts late makes the column itself jump)."""
     level: float = 0.0
-    """That median, rad/s."""
+    """That median, rad/s (0 when not read)."""
 
 
 @dataclass(frozen=True)
@@ -528,20 +529,21 @@ def logging_artefact(
     at = row if at is None else at
     gap = float(t[at] - t[at - 1]) if at > 0 else 0.0
     a, b = (row, end) if left is None else left
-    jump: float | None = None
-    level = 0.0
-    if y is not None and y.size >= 3:
-        near = np.concatenate((y[max(at - 3, 0) : at], y[at + 1 : at + 4]))
-        if near.size:
+    runs_on, level = False, 0.0
+    if y is not None and b > a:
+        near = np.concatenate((y[max(a - 3, 0) : a], y[b : b + 3]))
+        if near.size >= 2:
             level = float(np.median(near))
-            jump = float(y[at]) - level
+            dev = float(np.max(np.abs(y[a:b] - level)))
+            spread = float(np.max(near) - np.min(near))
+            runs_on = dev <= max(spread, 0.1 * abs(size))
     return Anomaly(
         "logging_artefact",
         int(row),
         float(t[row]),
         float(size),
         "rad/s",
-        LoggingArtefact(int(at), float(t[at]), 1e3 * gap, int(a), int(b - 1), jump, level),
+        LoggingArtefact(int(at), float(t[at]), 1e3 * gap, int(a), int(b - 1), runs_on, level),
         t_end=float(t[min(end, t.size - 1)]),
         row_end=int(end),
     )
