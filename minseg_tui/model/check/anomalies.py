@@ -129,8 +129,8 @@ class LoggingArtefact:
     last: int
     runs_on: bool = False
     """The speed column itself runs on across the gap: no row left out departs from the
-    median of the three rows each side of them by more than those rows spread, or a tenth
-    of the miss. The rows across the gap were lost whole, each still over its own period,
+    median of the three rows each side of them by more than those rows spread (under half
+    the miss: a settled stretch), or a tenth of the miss. The rows across the gap were lost whole, each still over its own period,
     and only the simulation, which reads the gap as one long sample, expects a jump (a
     stall that reads the counts late makes the column itself jump)."""
     level: float = 0.0
@@ -536,7 +536,9 @@ def logging_artefact(
             level = float(np.median(near))
             dev = float(np.max(np.abs(y[a:b] - level)))
             spread = float(np.max(near) - np.min(near))
-            runs_on = dev <= max(spread, 0.1 * abs(size))
+            # in a settled stretch only: while the speed changes (a gap on a rise) the rows
+            # around spread wide and show no level to run on at
+            runs_on = spread <= 0.5 * abs(size) and dev <= max(spread, 0.1 * abs(size))
     return Anomaly(
         "logging_artefact",
         int(row),
