@@ -67,6 +67,10 @@ def test_a_spike_after_a_stall_of_the_logger_is_an_artefact_not_a_hand(seed, cau
     stall = log.artefact_rows[0]
     assert art[0].row is not None and stall - 1 <= art[0].row <= stall + 1
     assert "right after a gap of" in anomaly(art[0]) and "not the wheel" in anomaly(art[0])
+    # the stall reads the counts late, so the speed column itself jumps: not rows lost whole
+    # (a copy of the EV3 or n20 logs with rows dropped, whose column runs on across the gap)
+    assert "jumps by" in anomaly(art[0]) and "reads on" not in anomaly(art[0])
+    assert not art[0].facts.runs_on
     assert named(r) == sorted(causes)
 
 
@@ -1196,3 +1200,18 @@ def test_an_average_loses_to_a_delay_that_matches_the_corners_far_better():
         f"dead_time matches the speed itself far better on the {why.rows} samples where the "
         "two models differ"
     )
+
+
+def test_a_stall_on_a_rise_is_not_said_to_leave_the_speed_running_on():
+    # tuning pair seed 8 (dry friction, a 9-tap average): the logger stalls 125 ms at
+    # 10.53 s while the speed rises (-0.9, then -1.0 and -6.5 rad/s after the gap, -20 ten
+    # rows on). The rows around the gap spread 25 rad/s: there is no level the column could
+    # run on at, so "the speed reads on as around it (-8.74 rad/s)" (the first cut of the
+    # rows-lost-whole words, 17fdf83) was false; a stall keeps its own sentence
+    log = make(8, ("coulomb_friction", "velocity_filter"))
+    r = check(log.t, log.u, log.omega)
+    art = [a for a in r.anomalies if a.kind == "logging_artefact"]
+    assert art
+    for a in art:
+        assert not a.facts.runs_on
+        assert "reads on" not in anomaly(a)

@@ -12,15 +12,20 @@ tests/cli/test_analyze.py.
 import re
 from functools import cache
 
+import numpy as np
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
+from minseg_tui.lab.views.check_says import (
+    anomaly as anomaly_words,
+)
 from minseg_tui.lab.views.check_says import (
     close_up_what,
     evidence,
     lead_why,
     resolution_how,
     runner_up_why,
+    shown,
     where,
 )
 from minseg_tui.lab.views.check_text import text
@@ -311,6 +316,42 @@ def test_a_cap_is_not_said_to_brake_on_a_log_without_a_step_down(name):
     assert "both ways" not in words
 
 
+@pytest.mark.parametrize(
+    ("name", "slow"),
+    [
+        pytest.param("ubc-motor-7V", True, marks=on("ubc-motor-7V")),
+        pytest.param("ubc-motor-9V", False, marks=on("ubc-motor-9V")),
+    ],
+)
+def test_a_pole_beside_a_cap_is_judged_against_the_ramp_not_the_first_order_model(name, slow):
+    # Beside a cap the first-order model starts steeper than the speed because of the cap
+    # itself: "285 ms after the step the speed has risen 153 rad/s where the first-order
+    # model rises 212" (9 V) was the cap's evidence told as the pole's "zero slope". Read off
+    # the data: at 9 V the speed climbs 235 rad/s^2 over the first 20 ms and 474-583 from
+    # then on, and after 285 ms it has risen 153 rad/s, what its own ramp at the measured
+    # 516 rad/s^2 gives (146): no slow start at the pole's span; the fitted pair rounds the
+    # knee into the plateau (the plot: the cap and pole model follows the knee at 1.7-2.0 s
+    # within 2 rad/s). At 7 V the pole's span is 55 ms, where the speed has risen 17.1 rad/s
+    # and its own ramp at 452 rad/s^2 24 rad/s: a slower start, which the sentence may say.
+    r, _ = analyze(name)
+    pole = next(o for o in r.finding.others if o.cause == "second_pole")
+    said = shown(pole.evidence)
+    ramp = re.search(
+        r"has risen ([0-9.]+) rad/s,? (?:where|as) a straight ramp at its own "
+        r"mean slope \(([0-9.]+) rad/s\^2, measured\) rises ([0-9.]+) rad/s",
+        said,
+    )
+    assert ramp, said
+    got, rate, rise = (float(x) for x in ramp.groups())
+    assert 400 < rate < 600
+    assert "first-order model rises" not in said
+    if slow:
+        assert got < 0.8 * rise and "starts with zero slope" in said
+    else:
+        assert got > 0.95 * rise and "starts at once, not with zero slope" in said
+        assert "starts with zero slope (an S-shaped start)" not in said
+
+
 @on("ubc7_2ms.csv", "ubc-motor-7V", "ubc7_20ms.csv")
 def test_ubc_limit_does_not_follow_the_resampling_period():
     # the same 7 V log resampled at 2, 5 and 20 ms: the old "filter" length followed the
@@ -445,3 +486,76 @@ def test_the_angle_error_integrates_the_speed_over_the_period_it_was_taken_over(
     a, n = actual.gain.baseline_angle_rms, nominal.gain.baseline_angle_rms
     assert n == pytest.approx(a, rel=0.3)
     assert n < 0.05  # rad: the log's angle is known to a degree (0.0175 rad)
+
+
+def check_ev3_gap(tmp_path) -> CheckResult:
+    """The check of ev3-large-duty100 with data rows 74-76 (t = 0.270-0.280 s) dropped:
+    benchmarks/real_variants.py's 'gap' of it, seed 37."""
+    lines = (REAL / "ev3-large-duty100" / "step.csv").read_text().splitlines()
+    head = [x for x in lines if x.startswith("#")]
+    body = [x for x in lines if not x.startswith("#")]
+    rows = body[1:]
+    path = tmp_path / "ev3-gap.csv"
+    path.write_text("\n".join([*head, body[0], *rows[:74], *rows[77:]]) + "\n")
+    log = read_run_log(path)
+    return check(log.t, log.u, log.omega, ts=float(log.metadata["ts"]), cpr=log.declared_cpr)
+
+
+@on("ev3-large-duty100")
+def test_one_uneven_interval_is_not_said_to_show_over_which_time_the_speed_was_taken(tmp_path):
+    # the EV3 100 % log with three rows dropped has one uneven interval (20 ms) in 217 rows:
+    # the row after it still holds the 5 ms speed of the original, so the log does not show
+    # whether speeds are taken over their own interval or the nominal one; "(detected from
+    # the data)" said the check had read it off the log
+    r = check_ev3_gap(tmp_path)
+    line = text(r).splitlines()[0]
+    assert r.sampling.uneven == 1
+    assert "detected from the data" not in line, line
+    assert "(assumed: 1 uneven interval in the log, too few to tell)" in line, line
+
+
+@on("ev3-large-duty100")
+def test_a_runner_up_as_good_as_the_cause_is_not_told_as_a_worse_fit(tmp_path):
+    # The EV3 100 % log with three rows dropped after its rise (benchmarks/real_variants.py's
+    # 'gap', seed 37: data rows 74-76, t = 0.270-0.280 s): a log the check was never read
+    # against. Its first-order model's error is at the speed's noise (3.0 against 3.8 rad/s,
+    # the plot of the original shows no shape left), yet three extensions come within 1.5
+    # points of the 25 % a cause needs: a cap 25.3 % (named), a pole 24.9 %, a delay 23.9 %.
+    # The pole leaves 1.006 times the cap's whitened residual; "leaves 1.0 times as much
+    # whitened residual" gave as a reason what is a tie. The sentence must say that the two
+    # fit about as well and why the pole is not named.
+    r = check_ev3_gap(tmp_path)
+    why = runner_up_why(r.finding)
+    ru = r.finding.runner_up_why
+    assert ru is not None and ru.kind == "leaves_more" and ru.ratio < 1.05, ru
+    assert "fits about as well" in why and "hardly tells the two apart" in why, why
+    share = re.search(r"removes ([0-9.]+) % of the whitened residual, where a cause needs", why)
+    assert share and 24.0 < float(share.group(1)) < 25.0, why
+    assert "times as much" not in why
+
+
+@on("n20-12v-pwm25")
+def test_rows_lost_whole_across_a_gap_are_not_said_to_make_the_speed_jump(tmp_path):
+    # n20-12v-pwm25 with three rows dropped (benchmarks/real_variants.py's 'gap', seed 37:
+    # t = 5.762-5.782 s, a driven stretch), as a logger that loses whole lines does: the
+    # speed column reads 8.98 rad/s before the 40 ms gap and after it. The simulation takes
+    # the speed over the nominal period, so it expects four periods of counts in the row
+    # after the gap and misses it by -27.8 rad/s; the anomaly said "the speed jumps by
+    # -27.8 rad/s and straight back, as when the logger stalls", which the log does not show.
+    src = REAL / "n20-12v-pwm25" / "step.csv"
+    lines = src.read_text().splitlines()
+    drop = {"5.762000", "5.772000", "5.782000"}
+    kept = [x for x in lines if x.split(",")[0] not in drop]
+    assert len(kept) == len(lines) - 3
+    path = tmp_path / "n20-gap.csv"
+    path.write_text("\n".join(kept) + "\n")
+    log = read_run_log(path)
+    r = check(log.t, log.u, log.omega, ts=float(log.metadata["ts"]), cpr=log.declared_cpr)
+    art = [a for a in r.anomalies if a.kind == "logging_artefact"]
+    assert len(art) == 1
+    said = anomaly_words(art[0])
+    i = int(np.searchsorted(log.t, 5.79))
+    assert abs(log.omega[i] - log.omega[i - 1]) < 2.0  # the column runs on: one count at most
+    assert "jumps" not in said and "stalls" not in said, said
+    assert "reads on as around it (8.98 rad/s)" in said and "lost whole" in said, said
+    assert "not the wheel" in said and "left out of the fit" in said

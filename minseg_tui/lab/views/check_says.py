@@ -214,6 +214,17 @@ def anomaly(a: an.Anomaly) -> str:
         return _miss(a, f)
     if isinstance(f, an.LoggingArtefact):
         out = f"row {f.first}" if f.last <= f.first else f"rows {f.first}-{f.last}"
+        if f.runs_on:
+            # the speed column runs on across the gap (a copy of an n20 log with three rows
+            # dropped: 8.98 rad/s on both sides) where the model, reading the gap as one long
+            # sample, is off by -27.8 rad/s: told as "the speed jumps", which it does not
+            return (
+                f"row {f.at} (t = {f.t_at:.3f} s), right after a gap of {f.gap_ms:.0f} ms in the "
+                f"sample times: the speed reads on as around it ({f.level:.3g} rad/s), where the "
+                f"simulation, taking the gap as one long sample, is off by {a.size:+.3g} rad/s: "
+                "rows were lost whole, each read over its own period (a logging artefact, not "
+                f"the wheel); {out} left out of the fit"
+            )
         return (
             f"row {f.at} (t = {f.t_at:.3f} s), right after a gap of {f.gap_ms:.0f} ms in the "
             f"sample times: the speed jumps by {a.size:+.3g} rad/s and straight back, as when the "
@@ -673,15 +684,41 @@ POLE_BESIDE: dict[str, str] = {
 worse there)."""
 
 
-def _pole(f: fx.Pole, claim: str) -> str:
-    text = "each rise starts with zero slope (an S-shaped start)"
-    if f.smooth:
-        text += " (in this smooth signal an average of the speed would look alike)"
+SLOW_START = 0.9
+"""Beside a cap, a rise that reaches less than this share of its own straight ramp (at its
+mean slope) in the pole's span is said to start slowly; otherwise it starts at once."""
+
+
+def _pole_start(f: fx.Pole, note: str = "") -> str:
+    """How each rise starts, with the figures that show it: against the first-order model,
+    or beside a cap against the speed's own ramp (the cap explains the first-order model's
+    steeper start; a pole shows only as a start slower than the ramp). ``note`` follows the
+    first clause."""
+    if f.ramp is not None and f.got is not None and f.model is not None:
+        ramp = f"a straight ramp at its own mean slope ({f.ramp:.3g} rad/s^2, measured)"
+        if f.got < SLOW_START * f.model:
+            return (
+                f"each rise starts with zero slope (an S-shaped start){note}: {_ms(f.after)} "
+                f"after the step the speed has risen {f.got:.3g} rad/s where {ramp} rises "
+                f"{f.model:.3g} rad/s"
+            )
+        return (
+            f"each rise starts at once, not with zero slope{note}: {_ms(f.after)} after the step the "
+            f"speed has risen {f.got:.3g} rad/s, as {ramp} rises {f.model:.3g} rad/s; the "
+            "pole shapes the bend into the plateau, not the start"
+        )
+    text = "each rise starts with zero slope (an S-shaped start)" + note
     if f.got is not None:
         text += (
             f": {_ms(f.after)} after the step the speed has risen {f.got:.3g} rad/s "
             f"where the first-order model rises {f.model:.3g} rad/s"
         )
+    return text
+
+
+def _pole(f: fx.Pole, claim: str) -> str:
+    smooth = " (in this smooth signal an average of the speed would look alike)"
+    text = _pole_start(f, smooth if f.smooth else "")
     if f.way == "filtered":
         return text + (
             "; the speed column is smooth, not a difference of encoder counts, so an extra pole "
@@ -744,12 +781,7 @@ def _cap(f: fx.Cap) -> str:
 def _pole_plain(f: fx.Pole, claim: str) -> str:
     """A second pole's evidence told to a student: a second time constant, and where it
     acts, in everyday words (the figures of :func:`_pole`)."""
-    text = "each rise starts with zero slope (an S-shaped start)"
-    if f.got is not None:
-        text += (
-            f": {_ms(f.after)} after the step the speed has risen {f.got:.3g} rad/s "
-            f"where the first-order model rises {f.model:.3g} rad/s"
-        )
+    text = _pole_start(f)
     if f.way == "filtered":
         where = (
             "the logged speed is filtered: each reading takes "
@@ -972,12 +1004,24 @@ def resolution_how(s: Sampling) -> str:
     return f"the speeds lie on a lattice of {s.resolution:.3g} rad/s"
 
 
+FEW_UNEVEN = 3
+"""Fewer rows after an uneven interval than this cannot show over which time a row's speed
+was taken (:func:`sampling` says the choice is assumed)."""
+
+
 def sampling(s: Sampling) -> str:
     """One sentence on the sample times and the speed column."""
     times = every(s)
     if s.how != "even":
         over = "its own interval" if s.over_interval else "the nominal period"
         src = "as the header says" if s.how == "header" else "detected from the data"
+        if s.how == "detected" and s.uneven < FEW_UNEVEN:
+            # one uneven interval (an EV3 log with three rows dropped) cannot show over which
+            # time its speed was taken: the choice is a guess, not a detection
+            src = (
+                f"assumed: {s.uneven} uneven interval{'s' if s.uneven != 1 else ''} in the "
+                "log, too few to tell"
+            )
         if not s.regular:
             times += (
                 ": a loop without a fixed clock; the long intervals are jitter, not lost samples"
@@ -1065,6 +1109,18 @@ def lost(r: rs.RunnerUp | None) -> str:
             f"the next best explanation ({said}) leaves less whitened residual but is not "
             f"named: {why}"
         )
+    if r.needs > 0:
+        short = (
+            f"it removes {share} of the whitened residual, where a cause needs at least "
+            f"{100 * r.needs:.0f} %"
+            if r.share < r.needs
+            else f"its criterion gain {r.gain:.0f} is below the {r.threshold:.0f} a cause needs"
+        )
+        return (
+            f"the next best explanation ({said}) fits about as well: it leaves {r.ratio:.3g} "
+            "times the whitened residual, and is not named only because on its own against the "
+            f"first-order model {short}; this log hardly tells the two apart"
+        )
     return (
         f"the next best explanation ({said}) leaves {r.ratio:.1f} times as much whitened "
         "residual" + (f" ({why})" if why else "")
@@ -1123,6 +1179,18 @@ def lost_plain(r: rs.RunnerUp | None) -> str:
         )
     if r.kind == "not_named":
         return f"The next best explanation, {said}, fits better but is not named: {why}."
+    if r.needs > 0:
+        short = (
+            f"alone it removes {share} of the simple model's error, short of the "
+            f"{100 * r.needs:.0f} % a cause needs"
+            if r.share < r.needs
+            else "alone it is too small a gain to be sure of on a run this long"
+        )
+        return (
+            f"The next best explanation, {said}, fits about as well ({r.ratio:.3g} times the "
+            f"error) and is not named only because {short}: this run hardly tells the two "
+            "apart."
+        )
     text = f"The next best explanation, {said}, leaves {r.ratio:.1f} times as much error"
     if r.reason is not None and r.reason.kind == "refused":
         return f"{text}, and this run could not show it anyway: {why}."

@@ -134,6 +134,14 @@ class LoggingArtefact:
     gap_ms: float
     first: int
     last: int
+    runs_on: bool = False
+    """The speed column itself runs on across the gap: no row left out departs from the
+    median of the three rows each side of them by more than those rows spread (under half
+    the miss: a settled stretch), or a tenth of the miss. The rows across the gap were lost whole, each still over its own period,
+    and only the simulation, which reads the gap as one long sample, expects a jump (a
+    stall that reads the counts late makes the column itself jump)."""
+    level: float = 0.0
+    """That median, rad/s (0 when not read)."""
 
 
 @dataclass(frozen=True)
@@ -555,6 +563,7 @@ def logging_artefact(
     size: float,
     at: int | None = None,
     left: tuple[int, int] | None = None,
+    y: FloatArray | None = None,
 ) -> Anomaly:
     """A spike right after a gap in the sample times (``at``: the row after
     the gap, default ``row``), with rows row..end (exclusive) left out of the fit (or the
@@ -563,13 +572,23 @@ def logging_artefact(
     at = row if at is None else at
     gap = float(t[at] - t[at - 1]) if at > 0 else 0.0
     a, b = (row, end) if left is None else left
+    runs_on, level = False, 0.0
+    if y is not None and b > a:
+        near = np.concatenate((y[max(a - 3, 0) : a], y[b : b + 3]))
+        if near.size >= 2:
+            level = float(np.median(near))
+            dev = float(np.max(np.abs(y[a:b] - level)))
+            spread = float(np.max(near) - np.min(near))
+            # in a settled stretch only: while the speed changes (a gap on a rise) the rows
+            # around spread wide and show no level to run on at
+            runs_on = spread <= 0.5 * abs(size) and dev <= max(spread, 0.1 * abs(size))
     return Anomaly(
         "logging_artefact",
         int(row),
         float(t[row]),
         float(size),
         "rad/s",
-        LoggingArtefact(int(at), float(t[at]), 1e3 * gap, int(a), int(b - 1)),
+        LoggingArtefact(int(at), float(t[at]), 1e3 * gap, int(a), int(b - 1), runs_on, level),
         t_end=float(t[min(end, t.size - 1)]),
         row_end=int(end),
     )

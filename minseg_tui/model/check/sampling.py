@@ -72,6 +72,9 @@ class Sampling:
     count_from: CountFrom
     cpr: int | None
     smooth: bool
+    uneven: int = 0
+    """How many rows follow an interval away from the nominal one (beyond ``EVEN``): what a
+    detection of the speed's period has to go on."""
 
     @property
     def floor(self) -> float | None:
@@ -211,6 +214,7 @@ def sampling(
         count_from=count_from,
         cpr=cpr if count_from is CountFrom.CPR else None,
         smooth=smooth,
+        uneven=int(np.count_nonzero(uneven)),
     )
 
 
