@@ -65,6 +65,13 @@ class CauseWords:
     within_sample: str = ""
 
 
+WINDING_LAG_MAX = 0.020
+"""The longest second pole (s) the words put down to the armature's inductance. A small DC
+motor's L/R is well under it: the UBC motor of ../shared/data/real-motors (its PROVENANCE:
+L = 1.2 mH, R = 2.77 ohm) has 0.43 ms. A longer pole is called a second lag, its source
+unnamed."""
+
+
 CAUSE_WORDS: dict[str, CauseWords] = {
     "coulomb_friction": CauseWords(
         "dry friction",
@@ -744,16 +751,22 @@ def _pole(f: fx.Pole, claim: str) -> str:
         )
     if f.way == "ringing":
         swing = (
-            f", a swing of period {_ms(f.period)} that overshoots a step by about "
-            f"{100.0 * f.overshoot:.2g} % of it"
+            f"; fitted so, it swings with a period of {_ms(f.period)} and would overshoot a "
+            f"step by about {100.0 * f.overshoot:.2g} % of it"
             if math.isfinite(f.period) and f.overshoot >= 0.001
             else ""
         )
+        source = (
+            "the armature's inductance delays the current, and with the back-EMF its pole and "
+            "the wheel's make a complex pair"
+            if f.t2 <= WINDING_LAG_MAX
+            else "a second lag and the wheel's make a complex pair (not the armature's "
+            f"inductance: the current in a small motor's winding builds up within a few ms, "
+            f"not {_ms(f.t2)})"
+        )
         return text + (
-            "; the armature's inductance delays the current, and with the back-EMF its pole and "
-            "the wheel's make a complex pair: the speed fits best as a pair that dies away with "
-            f"one time constant, T2 = T = {_ms(f.t2)}{swing}; two real poles fit this log "
-            f"worse{claim}"
+            f"; {source}: the speed fits best as a pair that dies away with one time "
+            f"constant, T2 = T = {_ms(f.t2)}{swing}; two real poles fit this log worse{claim}"
         )
     return text + f"; an extra pole of {_ms(f.t2)} delays the torque{claim}"
 

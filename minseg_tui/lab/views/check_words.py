@@ -27,6 +27,7 @@ from numpy.typing import ArrayLike, NDArray
 from minseg_tui.lab.views.check_params import params
 from minseg_tui.lab.views.check_says import (
     CAUSE_WORDS,
+    WINDING_LAG_MAX,
     anomaly,
     caveat_plain,
     close_up_what,
@@ -232,6 +233,16 @@ POLE_WAYS: dict[str, tuple[str, str]] = {
 ``way``), everyday and short; a pole of the drive itself keeps :data:`CAUSE_WORDS`'s
 current build-up."""
 
+SLOW_LAG = (
+    "a second, slow lag in the drive: the torque follows the command late, so the speed "
+    "follows it more slowly than the model's one lag allows (too slow for the current in a "
+    "small motor's winding, which builds up within a few ms)",
+    "a slow second lag",
+)
+"""A pole of the drive longer than :data:`~minseg_tui.lab.views.check_says.WINDING_LAG_MAX`,
+everyday and short: not the winding's current build-up, which no small motor makes that
+slow."""
+
 
 def everyday(r: CheckResult) -> str:
     """The cause of ``r`` in everyday words, true of this log: dry friction by what the log
@@ -246,6 +257,8 @@ def everyday(r: CheckResult) -> str:
         return DELAY.format(delay=_later(r.extended.params["delay"]))
     if f.cause == "second_pole" and isinstance(shown, Pole) and shown.way in POLE_WAYS:
         return POLE_WAYS[shown.way][0]
+    if f.cause == "second_pole" and isinstance(shown, Pole) and shown.t2 > WINDING_LAG_MAX:
+        return SLOW_LAG[0]
     return EVERYDAY.get(f.cause, f.cause)
 
 
@@ -255,6 +268,8 @@ def short(cause: str, because: object) -> str:
     shown = because.shown if isinstance(because, Because) else None
     if cause == "second_pole" and isinstance(shown, Pole) and shown.way in POLE_WAYS:
         return POLE_WAYS[shown.way][1]
+    if cause == "second_pole" and isinstance(shown, Pole) and shown.t2 > WINDING_LAG_MAX:
+        return SLOW_LAG[1]
     return SHORT.get(cause, cause)
 
 
