@@ -15,6 +15,7 @@ from minseg_tui.lab.views.classview import read_group
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.results import ResultsPanel
+from minseg_tui.ui.screens.classview import detail
 from minseg_tui.ui.screens.lab import LabScreen, StepCommands
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
@@ -239,6 +240,7 @@ async def test_an_import_at_the_model_check_leaves_tasks_11_to_15_their_run(tmp_
         assert g.check_on == (
             f"run imported-1, a log imported at the model check; Tasks 11-15 use run {given_on}"
         )
+        assert f"(on {g.check_on})" in detail(1, g).plain.split("model check: ", 1)[1]
         # the group can still judge Tasks 11-15 on the import, and go back
         lab_screen(app).use_run("imported-1")
         with app.session as s:

@@ -572,7 +572,7 @@ def check_on(session: Session) -> str:
 
 
 def run_note(run: RunInfo | None) -> str | None:
-    """The line saying that ``run``, the one Tasks 11-15 and the model check use, ended
+    """The line saying that ``run``, the one Tasks 11-15 use, ended
     before its plan did: "run steps-1 interrupted (quit), 7.8 of 12 s: K, T and J rest on
     it" (seconds recorded of those planned); None for a complete run or none."""
     if run is None or not run.interrupted:

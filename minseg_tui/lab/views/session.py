@@ -783,7 +783,8 @@ class RunView:
     """The T readings are left out (None): Task 12's answer, hidden until the group has
     entered its own T (:func:`hidden`)."""
     in_use: bool = False
-    """Tasks 11-15 and the model check use this run (:meth:`Session.response_run`)."""
+    """Tasks 11-15 use this run (:meth:`Session.response_run`; the model check too, unless it
+    has a log imported there: :meth:`Session.check_run`)."""
     plotted: bool = True
     """The run its kind's plot (steps, fast) shows: the one in use if it is of that kind,
     else the newest of it."""
@@ -1348,8 +1349,8 @@ def note_drawn(session: Session, view: object) -> list[str]:
 
 # -- the run in use -----------------------------------------------------------------------------
 USES_RUN = "Tasks 11-15 and the model check use run"
-"""The start of every line that says which run they use (:func:`run_in_use`, and
-:func:`~minseg_tui.lab.views.own_first.run_used` with why)."""
+"""The start of every line that says which run they use when it is one run (:func:`run_in_use`,
+and :func:`~minseg_tui.lab.views.own_first.run_used` with why)."""
 
 
 def run_in_use(session: Session) -> str:
