@@ -56,7 +56,7 @@ def table(view: ClassView) -> Table:
                 g.date or MISSING,
                 g.step or MISSING,
                 *(g.text(q.key) for q in QUANTITIES),
-                g.cause or MISSING,
+                (g.cause or MISSING) + (f" (on {g.check_on})" if g.check_on else ""),
                 own_cell(g),
                 str(len(g.flags)) if g.flags else "",
             )

@@ -640,7 +640,9 @@ def _model_check_section(session: Session) -> Section | None:
     sec.blocks.append(_check_notes(session))  # the group's own first
     r = mc.result
     if r is None:
-        sec.blocks.append(f"The model check could not run on {mc.run}: {mc.problem}")
+        elsewhere = views.check_elsewhere(session, mc.run)
+        of = f" ({elsewhere})" if elsewhere else ""
+        sec.blocks.append(f"The model check could not run on {mc.run}{of}: {mc.problem}")
         return sec
     try:
         log: RunLog | None = session.load_run(mc.run)
@@ -648,7 +650,9 @@ def _model_check_section(session: Session) -> Section | None:
         log = None
     u = np.asarray(log.u, float) if log is not None and len(log) == np.asarray(r.t).size else None
     # as on the screen: the run and what the close-up shows, then the sentences about it
-    sec.blocks.append(f"Run {mc.run}, {check_words.close_up_title(r)}.")
+    elsewhere = views.check_elsewhere(session, mc.run)  # an import at the model check
+    of = f" (a log imported at the model check; {elsewhere})" if elsewhere else ""
+    sec.blocks.append(f"Run {mc.run}{of}, {check_words.close_up_title(r)}.")
     sec.blocks.append(check_words.join(check_words.lead(r, u)))
     sec.blocks.append(_model_check_figures(mc.run, r, log))
     # the details as the screen's fold gives them, each figure with what it measures and

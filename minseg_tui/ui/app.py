@@ -1427,7 +1427,7 @@ class LabApp(App[None]):
         if not self._read_only():
             yield SystemCommand(
                 PALETTE["import_log"],
-                "Load a log recorded elsewhere: Tasks 11-15 and the model check then use it",
+                "Load a log recorded elsewhere into the model check (Tasks 11-15 keep their run)",
                 self.import_log,
             )
         if self._device is None or self._device.board is None:  # not on the virtual one

@@ -295,6 +295,51 @@ def test_import_run(tmp_path):
         )
 
 
+def test_an_import_feeds_the_model_check_and_tasks_11_to_15_only_by_choice(tmp_path):
+    """Walk 16, D3: an import is the model check's run (saved); Tasks 11-15 keep theirs, or
+    have none, until the group picks the import with 'Use run'; picking a run for Tasks
+    11-15 gives the model check that run again."""
+    src = tmp_path / "elsewhere.csv"
+    src.write_text("t,u,omega\n0,0,0\n0.025,4,1\n0.05,4,2\n0.075,4,2.5\n", encoding="utf-8")
+    with Session.create(tmp_path / "s", ["A"]) as s:
+        info = s.import_run(src)
+        assert s.response_run() is None and s.check_run() == info  # the only run: not theirs
+        assert s.model_check().run == info.name
+        steps = _record_steps(s)[0].name
+        assert s.response_run().name == steps and s.check_run() == info  # still the import
+        folder = s.folder
+    with Session.open(folder) as s:  # saved
+        assert s.response_run().name == steps and s.check_run().name == info.name
+        assert (
+            views.run_in_use(s)
+            == f"Tasks 11-15 use run {steps}; the model check uses run {info.name}"
+        )
+        s.select_run(info.name)  # "Use run imported-1": Tasks 11-15 on the import too
+        assert s.response_run().name == info.name == s.check_run().name
+        s.select_run(steps)
+        assert s.response_run().name == steps == s.check_run().name
+        assert views.run_in_use(s) == f"Tasks 11-15 and the model check use run {steps}"
+
+
+def test_an_older_session_that_chose_an_import_keeps_it_for_both(tmp_path):
+    """A session of an older program whose group's answers were judged on an import it
+    chose (no ``check_run`` in its file) opens unchanged: Tasks 11-15 and the model check
+    both use the import."""
+    src = tmp_path / "elsewhere.csv"
+    src.write_text("t,u,omega\n0,0,0\n0.025,4,1\n0.05,4,2\n0.075,4,2.5\n", encoding="utf-8")
+    with Session.create(tmp_path / "s", ["A"]) as s:
+        _record_steps(s)
+        name = s.import_run(src).name
+        folder = s.folder
+    path = folder / "session.json"
+    data = json.loads(path.read_text(encoding="utf-8"))
+    data.pop("check_run")
+    data["selected_run"] = name  # as the older program's import did
+    path.write_text(json.dumps(data), encoding="utf-8")
+    with Session.open(folder) as s:
+        assert s.response_run().name == name == s.check_run().name
+
+
 # -- resume ------------------------------------------------------------------------------------
 
 

@@ -94,3 +94,43 @@ def test_a_silence_on_the_link_does_not_end_the_wait_for_the_wheel(tmp_path):
             assert task.outcome is None and task.phase != "ended"
             _feed_until(task, link, lambda: task.run is not None and task.run.samples >= 20)
             assert task.outcome is None and task.phase in ("recording", "square_wave")
+
+
+def test_the_progress_counts_the_plan_from_the_boards_first_step(tmp_path):
+    """Walk 16, D6: a pre-roll that came in one long batch (a busy PC: 1.2 s of standing
+    wheel) was counted against the plan: "recording steps-2: 516 samples, 12.9 of 12.0 s"."""
+    from minseg_tui.device.samples import SampleBatch
+
+    with _board(5) as (_name, link):
+        with Session.create(tmp_path, ["A"]) as s:
+            task = Task10.of(nullcontext(s), link, "fast")
+            task.begin()
+            _feed_until(task, link, lambda: task.phase == "recording")
+            run = task.run
+            assert run is not None and run.samples == 0
+            held: list[SampleBatch] = []  # the stream worker late: 1 s of samples in one batch
+            end = time.monotonic() + GUARD
+            while not held or held[-1].t_us[-1] - held[0].t_us[0] < 1_000_000:
+                assert time.monotonic() < end, "the board sent nothing more"
+                b = link.samples()
+                if len(b):
+                    held.append(b)
+                time.sleep(0.002)
+            task.feed(SampleBatch.concat(held), link.events())
+            assert task.phase == "square_wave" and run.samples > 150
+            said = task.progress().text
+            assert "of 1.0 s" not in said and "sequence starts next" in said, said
+            assert task.progress().fraction == 0.0
+            seen: list[float] = []
+            while task.outcome is None:
+                assert time.monotonic() < end, "the board sent nothing more"
+                task.feed(link.samples(), link.events())
+                seen.append(run.elapsed)
+                time.sleep(0.002)
+            assert task.outcome.why == "done"
+            duration = task.plan.duration
+            assert seen and max(seen) <= duration, (max(seen), duration)
+            assert max(seen) >= duration - 0.2  # it counted the plan through
+            log = s.load_run(task.outcome.run)
+            first_step = float(np.asarray(log.t)[np.flatnonzero(np.asarray(log.u) != 0)[0]])
+            assert first_step - float(np.asarray(log.t)[0]) >= 1.0  # the long pre-roll is kept

@@ -256,7 +256,7 @@ async def test_task10_waits_for_the_wheel_then_plots_the_run_as_it_arrives(quiet
         dev.feed(square_wave_stream(seq, (seq + 1) * 25_000, 2.0))
         await taken(pilot, seq + 80)
         x = np.asarray(plot.traces[0].x)
-        assert x.size == rec.samples and x[-1] == pytest.approx(rec.elapsed, abs=1e-9)
+        assert x.size == rec.samples and x[-1] == pytest.approx(rec.recorded, abs=1e-9)
         omega = np.asarray(plot.traces[0].y)
         assert omega[:PRE_ROLL].max() == 0.0 and omega.max() > 6.0  # stood, then rose
         assert panel.run_progress.recording and 0 < panel.run_progress.fraction < 1

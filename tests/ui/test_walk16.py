@@ -6,22 +6,29 @@ from __future__ import annotations
 import json
 import shutil
 
+import pytest
 from textual.widgets import OptionList
 
 from minseg_tui.lab.content.keys import PALETTE
 from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.views.classview import read_group
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.results import ResultsPanel
-from minseg_tui.ui.screens.lab import LabScreen
+from minseg_tui.ui.screens.classview import detail
+from minseg_tui.ui.screens.lab import LabScreen, StepCommands
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.prose import Prose
+from minseg_tui.ui.widgets.textbox import TextBox
 from tests.classview.build import group
+from tests.shared_data import SHARED_DATA
 from tests.ui.conftest import quiet_app
 from tests.ui.helpers import (
     burst,
     goto,
     heard_notifications,
+    lab_screen,
     settle,
     shown,
     start,
@@ -165,43 +172,110 @@ async def test_f12_enter_in_one_burst_opens_the_group(tmp_path):
             assert s.folder == folder and s.readonly
 
 
-async def test_an_import_says_which_answers_it_judges_again(tmp_path):
-    """D3: a group done with Tasks 11-15 imported a real motor's log at the model check: the
-    line said only "Tasks 11-15 and the model check use it", and Tasks 11-12 turned ✗ in the
-    list, judged against a motor the group never touched. The line now says how many of
-    their answers are judged against the import, on which run they gave them, and how to
-    go back."""
+TASKS_11_TO_14 = ("own.omega_step", "own.K", "own.T", "own.J", "own.model")
+EV3 = SHARED_DATA / "real-motors" / "ev3-large-duty100" / "step.csv"
+
+
+def _verdicts(app) -> dict[str, bool | None]:
+    with app.session as s:
+        return {c.key: c.right for c in s.comparisons() if c.key in TASKS_11_TO_14}
+
+
+@pytest.mark.shared_data
+async def test_an_import_at_the_model_check_leaves_tasks_11_to_15_their_run(tmp_path):
+    """D3: a group done with Tasks 11-15 imported an EV3 motor's log at the model check, and
+    it took Tasks 11-15 with it: Tasks 11-12 turned ✗, 13-14 !, judged against a motor the
+    group never touched. An import now feeds the model check only; the line says Tasks 11-15
+    keep their run, and how to judge them on the import; the report and the class view say
+    which run the model check used."""
     app = quiet_app(tmp_path / "sessions")
     async with app.run_test(size=(80, 24)) as pilot:
-        await start_with_a_run(pilot, "task12")
+        await start_with_a_run(pilot, "task11")
         with app.session as s:
             given_on = s.response_run().name
-            s.enter("own.T", "50 ms")
-            s.enter("own.omega_step", "7,8")
-            log = s.run_path(given_on)
+            folder = s.folder
+            for key in TASKS_11_TO_14:  # each the program's own value: ✓ (J from our T)
+                (c,) = (c for c in s.comparisons() if c.key == key)
+                if isinstance(c.computed, str):
+                    s.enter(key, c.computed)
+                elif key == "own.T":
+                    s.enter(key, f"{c.computed * 1e3:.4g} ms")
+                else:
+                    s.enter(key, f"{c.computed:.5g}")
+        before = _verdicts(app)
+        assert before == dict.fromkeys(TASKS_11_TO_14, True), before
+        app.import_log()  # the palette's "Import a run log": the model check, its box
+        await settle(pilot, lambda: shown(app, "model_check"))
+        box = app.screen.query_one("#import-path", TextBox)
+        await settle(pilot, lambda: app.focused is box)
+        box.value = str(EV3)
+        await pilot.press("enter")
+        msg = app.screen.query_one("#import-msg", Prose)
+        await settle(pilot, lambda: bool(msg.text))
+        assert _verdicts(app) == before  # Tasks 11-14 unchanged
+        said = " ".join(msg.text.split())
+        assert said.startswith(f"imported {EV3} as imported-1 ("), said
+        assert (
+            f"the model check uses it; Tasks 11-15 keep run {given_on} "
+            "(Ctrl+P 'Use run imported-1' judges them on it)" in said
+        ), said
+        with app.session as s:
+            assert s.response_run().name == given_on and s.check_run().name == "imported-1"
+        story = app.screen.query_one("#check-story", Prose)
+        await settle(pilot, lambda: story.text.startswith("run imported-1"))
+        assert story.text.startswith(f"run imported-1 (Tasks 11-15 use run {given_on}),")
+        with app.session as s:
+            write_report(s)
+        report = (folder / "report.md").read_text(encoding="utf-8")
+        flat = " ".join(report.split())
+        assert (
+            f"Tasks 11-15 use run {given_on}, the newest complete 25 ms run (the group chose "
+            "none); the model check uses run imported-1, a log imported at the model check."
+        ) in flat
+        assert (
+            f"Run imported-1 (a log imported at the model check; Tasks 11-15 use run {given_on})"
+            in flat
+        )
+        g = read_group(folder)
+        assert g.check_on == (
+            f"run imported-1, a log imported at the model check; Tasks 11-15 use run {given_on}"
+        )
+        assert f"(on {g.check_on})" in detail(1, g).plain.split("model check: ", 1)[1]
+        # the group can still judge Tasks 11-15 on the import, and go back
+        lab_screen(app).use_run("imported-1")
+        with app.session as s:
+            assert s.response_run().name == "imported-1" == s.check_run().name
+        assert _verdicts(app) != before
+        lab_screen(app).use_run(given_on)
+        with app.session as s:
+            assert s.response_run().name == given_on == s.check_run().name
+        assert _verdicts(app) == before
+
+
+async def test_the_palettes_import_says_tasks_11_to_15_keep_their_run(tmp_path):
+    """D3's words: the palette's "Import a run log" said "Tasks 11-15 and the model check
+    then use it"; now the import is the model check's only, and "Use run imported-1" says
+    it judges Tasks 11-15 on the log."""
+    app = quiet_app(tmp_path / "sessions")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        (entry,) = (
+            c for c in app.get_system_commands(app.screen) if c.title == PALETTE["import_log"]
+        )
+        assert entry.help == (
+            "Load a log recorded elsewhere into the model check (Tasks 11-15 keep their run)"
+        )
+        with app.session as s:
+            log = s.run_path(s.response_run().name)
         elsewhere = tmp_path / "log.csv"
         elsewhere.write_bytes(log.read_bytes())
         replies: list[str] = []
         app.screen.post_message(LogImportRequested(str(elsewhere), replies.append))
         await settle(pilot, lambda: bool(replies))
-        (said,) = replies
-        assert said.startswith(f"imported {elsewhere} as imported-1 (")
-        assert (
-            f"; 2 answers of Tasks 11-15, given on run {given_on}, judged against it now: "
-            f"Ctrl+P 'Use run {given_on}' puts them back" in said
-        ), said
-
-
-async def test_the_palettes_import_says_tasks_11_to_15_use_the_log(tmp_path):
-    """D3's words: the palette's "Import a run log" said "Load a log recorded elsewhere into
-    the model check", while Tasks 11-15 take it too."""
-    app = quiet_app(tmp_path / "sessions")
-    async with app.run_test(size=(80, 24)) as pilot:
-        await start(pilot)
-        (entry,) = (
-            c for c in app.get_system_commands(app.screen) if c.title == PALETTE["import_log"]
+        helps = {t: h for t, _, h in StepCommands(app.screen).entries()}
+        assert helps["Use run imported-1 for Tasks 11-15"] == (
+            "an imported log: Tasks 11-15 are then judged on it, as the model check is"
         )
-        assert "Tasks 11-15 and the model check" in entry.help
 
 
 async def test_f9_before_the_plot_is_worked_out_waits_for_it(tmp_path):

@@ -400,6 +400,7 @@ SESSION = Record(
     },
     optional={
         "selected_run": OneOf((None, Text())),
+        "check_run": OneOf((None, Text())),
         "revealed": ListOf(Text()),
         "kept": Memo(),
         "board_checks": MapOf(BOARD_CHECK),

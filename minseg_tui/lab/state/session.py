@@ -488,9 +488,12 @@ class Session:
     def kept(self) -> Kept | None:
         """What the session file keeps of the run in use (its model check in brief and Tasks
         11-13's numbers), when it was computed from this very run and table; else None."""
-        return kept_results.read(
+        got = kept_results.read(
             self._data.get("kept"), self.folder, self.response_run(), self.table_pairs()
         )
+        if got is not None and got.check is not None and self.check_run() != self.response_run():
+            return replace(got, check=None)  # the model check is of another run (an import)
+        return got
 
     def _failed(self, exc: OSError) -> None:
         old = self._problem
@@ -965,10 +968,10 @@ class Session:
 
     def model_check(self, name: str | None = None) -> ModelCheck:
         """The model check (:func:`minseg_tui.model.check.check`) of run ``name`` (default: the
-        run Tasks 11-15 use): measured against the first-order model, the named cause, the
-        extended model and the gain. Cached until something changes."""
+        run the model check uses, :meth:`check_run`): measured against the first-order model,
+        the named cause, the extended model and the gain. Cached until something changes."""
         run = (
-            self.response_run()
+            self.check_run()
             if name is None
             else next((r for r in self._runs if r.name == name), None)
         )
@@ -1218,12 +1221,21 @@ class Session:
     def response_run(self) -> RunInfo | None:
         """The run Tasks 11-15 use: the one the group chose (it stays until they choose
         another), else the newest complete 25 ms step run (the manual's), else the newest
-        complete step run of another period; never an interrupted run they did not choose."""
+        complete step run of another period; never an interrupted run they did not choose,
+        nor an imported log they did not choose (an import feeds the model check:
+        :meth:`check_run`; walk 16, D3).
+
+        Read by Tasks 11-15 (:meth:`results`, :meth:`comparisons`, the run an answer is given
+        on), the runs list's mark, the report's Tasks 11-15 and the class view's K and T."""
         sel = self._data.get("selected_run")
         for r in self._runs:
             if r.name == sel:
                 return r
-        complete = [r for r in reversed(self._runs) if r.kind in RESPONSE_KINDS and r.complete]
+        complete = [
+            r
+            for r in reversed(self._runs)
+            if r.kind in RESPONSE_KINDS and r.kind != "imported" and r.complete
+        ]
         manual = [r for r in complete if abs(r.ts - RunPlan().ts) < 1e-6]
         for r in (*manual, *complete):
             return r
@@ -1236,14 +1248,30 @@ class Session:
         return sel if isinstance(sel, str) else None
 
     def select_run(self, name: str | None) -> None:
-        """Use run ``name`` for Tasks 11-15 until the group picks another (None: the default
-        of :meth:`response_run`); saved in the session."""
+        """Use run ``name`` for Tasks 11-15 and the model check until the group picks another
+        (None: the default of :meth:`response_run`); saved in the session. The model check's
+        own run (an import's, :meth:`check_run`) gives way to it."""
         self._writable()
         if name is not None:
             self.run_path(name)
         self._data["selected_run"] = name
+        self._data.pop("check_run", None)
         self._run_version += 1
         self._changed()
+
+    def check_run(self) -> RunInfo | None:
+        """The run the model check uses: the log imported last, until the group picks a run
+        with :meth:`select_run`; else the run Tasks 11-15 use (:meth:`response_run`). Saved
+        in the session (``check_run``; a session of an older program has none, and its
+        model check goes on with Tasks 11-15's run, an import it chose included).
+
+        Read by the model check (:meth:`model_check`: its screen, the report's section, the
+        class view's cause) and the lines that say which run it uses."""
+        sel = self._data.get("check_run")
+        for r in self._runs:
+            if r.name == sel:
+                return r
+        return self.response_run()
 
     def _new_name(self, kind: str) -> str:
         return new_name(self.folder, kind, (r.name for r in self._runs))
@@ -1464,7 +1492,8 @@ class Session:
     def import_run(self, path: Path) -> RunInfo:
         """Copy a run log recorded elsewhere into runs/ (checked by read_run_log; InputError
         with file and line if it is not one, SessionNotWritable if it cannot be written) for
-        the model check and Tasks 11-15."""
+        the model check (:meth:`check_run`); Tasks 11-15 keep their run unless the group
+        chooses it (:meth:`select_run`: walk 16, D3)."""
         self._writable()
         try:
             info = import_log(
@@ -1480,6 +1509,7 @@ class Session:
             ) from None
         self._hold(info)
         self._runs.append(info)
+        self._data["check_run"] = info.name
         self._run_version += 1
         self._changed()
         return info

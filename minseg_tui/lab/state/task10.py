@@ -28,6 +28,8 @@ from contextlib import AbstractContextManager
 from dataclasses import dataclass
 from typing import Literal, Protocol
 
+import numpy as np
+
 from minseg_tui.device.link import LinkEvent
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.device.standstill import PRE_ROLL, StandStill
@@ -115,6 +117,9 @@ class ActiveRun:
         self.samples = 0
         self._first_us: int | None = None
         self._last_us: int | None = None
+        self._u_last: float | None = None  # the requested voltage of the last sample, V
+        self._asked: float | None = None  # the one in force when the sequence was asked for
+        self._step_us: int | None = None  # board time of the sequence's first step, us
         self._ended = False
 
     @property
@@ -133,6 +138,18 @@ class ActiveRun:
                 self._first_us = int(batch.t_us[0])
             self._last_us = int(batch.t_us[-1])
             self.samples += len(batch)
+            self._u_last = float(batch.u_req[-1])
+            if self._asked is not None and self._step_us is None:
+                moved = np.flatnonzero(np.asarray(batch.u_req, dtype=float) != self._asked)
+                if moved.size:
+                    self._step_us = int(batch.t_us[moved[0]])
+
+    def sequence_asked(self) -> None:
+        """The board was asked for its sequence: the plan's time counts from its first step
+        (the first sample whose requested voltage differs from the one in force now)."""
+        with self._lock:
+            if self._asked is None:
+                self._asked = self._u_last if self._u_last is not None else 0.0
 
     def tick(self) -> None:
         """Flush to disk what is due (call a few times a second, off the UI's thread)."""
@@ -147,20 +164,35 @@ class ActiveRun:
             self.recorder.close()
 
     @property
-    def elapsed(self) -> float:
-        """Board time recorded so far, s."""
+    def recorded(self) -> float:
+        """Board time recorded so far, s: from the first sample (the standing wheel) on."""
         if self._first_us is None or self._last_us is None:
             return 0.0
         return (self._last_us - self._first_us) / 1e6
+
+    @property
+    def elapsed(self) -> float:
+        """The plan's time gone by, s: board time from the sequence's first step to the
+        newest sample, at most the plan's duration (0 before the step; the standing wheel
+        recorded first is not the plan's, and under load the pre-roll reached 1.2 s: walk 16,
+        D6, "12.9 of 12.0 s"; the samples after the sequence's end, in the batch that says
+        it ended, are not the plan's either)."""
+        if self._step_us is None or self._last_us is None:
+            return 0.0
+        return min((self._last_us - self._step_us) / 1e6, self.plan.duration)
 
     def progress(self) -> RunProgress:
         """How far the run is, for the panel."""
         duration = self.plan.duration
         fraction = min(1.0, self.elapsed / duration) if duration > 0 else 0.0
+        where = (
+            f"{format_fixed(self.elapsed, 1)} of {format_fixed(duration, 1, 's')}"
+            if self._step_us is not None
+            else "the wheel standing; the board's sequence starts next"
+        )
         return RunProgress(
             fraction,
-            f"recording {self.name}: {self.samples} samples, "
-            f"{format_fixed(self.elapsed, 1)} of {format_fixed(duration, 1, 's')} · "
+            f"recording {self.name}: {self.samples} samples, {where} · "
             f"{key_name('stop_motor')} stops",
             kind=self.kind,
             t0=None if self._first_us is None else self._first_us / 1e6,
@@ -341,6 +373,8 @@ class Task10:
         except MinsegError as exc:
             self._finish("not started", problem=str(exc))
             return
+        if self.run is not None:
+            self.run.sequence_asked()
         self.phase = "square_wave"
 
     def stop(self, ended_by: str = "stopped", motor_off: bool = True) -> Outcome | None:

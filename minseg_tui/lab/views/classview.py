@@ -263,6 +263,10 @@ class Group:
     flags: tuple[str, ...] = ()
     slipped: tuple[str, ...] = ()
     notes: tuple[str, ...] = ()
+    check_on: str = ""
+    """When the model check used another run than Tasks 11-15 (a log imported at the model
+    check): "run imported-1, a log imported at the model check; Tasks 11-15 use run
+    steps-1"; '' when it used theirs."""
     typed: dict[str, str] = field(default_factory=dict)
     """The texts the group's readings (R) were typed as, by key: shown with those digits."""
     unanswered: str = ""
@@ -293,6 +297,7 @@ class Group:
         }
         out.update({q.key: self.value(q.key) for q in QUANTITIES})
         out["cause"] = self.cause
+        out["check_on"] = self.check_on
         out["own"] = [
             {
                 "key": o.key,
@@ -554,8 +559,20 @@ def _response_alone(session: Session) -> dict[str, float | None]:
     return {"K": st.K, "T_63": st.T_63, "T": st.T}
 
 
+def check_on(session: Session) -> str:
+    """The run the model check used, when it is not the one Tasks 11-15 use (walk 16, D3:
+    an import feeds the model check only): "run imported-1, a log imported at the model
+    check; Tasks 11-15 use run steps-1"; '' otherwise."""
+    checked = session.check_run()
+    elsewhere = session_views.check_elsewhere(session, checked.name if checked else None)
+    if checked is None or checked == session.response_run():
+        return ""
+    tasks = elsewhere or "Tasks 11-15 have no run"
+    return f"run {checked.name}, a log imported at the model check; {tasks}"
+
+
 def run_note(run: RunInfo | None) -> str | None:
-    """The line saying that ``run``, the one Tasks 11-15 and the model check use, ended
+    """The line saying that ``run``, the one Tasks 11-15 use, ended
     before its plan did: "run steps-1 interrupted (quit), 7.8 of 12 s: K, T and J rest on
     it" (seconds recorded of those planned); None for a complete run or none."""
     if run is None or not run.interrupted:
@@ -658,6 +675,7 @@ def _row(folder: Path, session: Session) -> Group:
         flags=tuple(s.text for s in found),
         slipped=tuple(q.key for q in QUANTITIES if any(q.key in s.affects for s in found)),
         notes=tuple(n for n in (run_note(session.response_run()),) if n),
+        check_on=check_on(session),
         typed={q.key: e.typed for q in QUANTITIES if q.reading and (e := session.entry(q.key))},
         unanswered=unanswered,
     )

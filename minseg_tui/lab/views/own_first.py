@@ -478,8 +478,16 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
 
 def run_used(session: Session) -> str:
     """One sentence: the run Tasks 11-15 and the model check use, why that one (the group's
-    choice, or the newest complete run), and what interrupted it when it ended early."""
-    run = session.response_run()
+    choice, or the newest complete run), and what interrupted it when it ended early; and
+    the model check's, when it used a log imported there (:meth:`Session.check_run`)."""
+    run, checked = session.response_run(), session.check_run()
+    own = (
+        f"; the model check uses run {checked.name}, a log imported at the model check"
+        if checked is not None and checked != run
+        else ""
+    )
+    if run is None and own:
+        return f"Tasks 11-15 have no run to use: no run recorded yet (Task 10){own}."
     if run is None:
         return "Tasks 11-15 and the model check have no run to use: no run recorded yet (Task 10)."
     ts, manual = format_quantity(run.ts, "ms", 2), format_quantity(RunPlan().ts, "ms", 2)
@@ -492,13 +500,13 @@ def run_used(session: Session) -> str:
             f"the newest complete run, at {ts} (the group chose none, and there is no "
             f"complete {manual} run)"
         )
-    text = f"{USES_RUN} {run.name}, {why}"
+    text = f"{'Tasks 11-15 use run' if own else USES_RUN} {run.name}, {why}"
     if run.interrupted:
         text += (
             f"; it ended before its plan did ({run.samples} samples), interrupted by: "
             f"{run.interruption}"
         )
-    return text + "."
+    return text + own + "."
 
 
 def run_changed(session: Session, before: str | None) -> str:

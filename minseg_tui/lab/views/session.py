@@ -29,7 +29,7 @@ from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.steps import FIELDS, STEPS, step
 from minseg_tui.lab.content.u_ss_says import u_ss_words
 from minseg_tui.lab.saving.files import TABLE_COLUMNS
-from minseg_tui.lab.saving.runs import RESPONSE_KINDS
+from minseg_tui.lab.saving.runs import RESPONSE_KINDS, RunInfo
 from minseg_tui.lab.state import capture as lab_capture
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state import shown as lab_shown
@@ -662,8 +662,9 @@ def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[
     if name not in lab_needs.NEEDS:
         return ()
     miss = lab_needs.missing(name, _has(session, row))
-    if "run" in miss and any(r.kind in RESPONSE_KINDS for r in session.runs):
-        # step runs there, each interrupted (a complete one would be in use): what to do
+    if "run" in miss and any(r.kind in ("steps", "fast") for r in session.runs):
+        # step runs there, each interrupted (a complete one would be in use; an imported
+        # log is the model check's unless chosen): what to do
         miss = tuple("run.complete" if k == "run" else k for k in miss)
     return miss
 
@@ -782,7 +783,8 @@ class RunView:
     """The T readings are left out (None): Task 12's answer, hidden until the group has
     entered its own T (:func:`hidden`)."""
     in_use: bool = False
-    """Tasks 11-15 and the model check use this run (:meth:`Session.response_run`)."""
+    """Tasks 11-15 use this run (:meth:`Session.response_run`; the model check too, unless it
+    has a log imported there: :meth:`Session.check_run`)."""
     plotted: bool = True
     """The run its kind's plot (steps, fast) shows: the one in use if it is of that kind,
     else the newest of it."""
@@ -1257,14 +1259,19 @@ class CheckView:
     shows: frozenset[str] = frozenset()
     """Fields of Tasks 11-15 whose computed value the check puts on the screen: T and K of the
     first-order model it fitted, and so the model (none without a result)."""
+    elsewhere: str = ""
+    """When Tasks 11-15 use another run than the check's (an import): which
+    (:func:`check_elsewhere`); ''."""
 
 
 def check(session: Session) -> CheckView:
-    """The model check of the run Tasks 11-15 use (a worker's job: up to 0.5 s)."""
+    """The model check of its run (:meth:`Session.check_run`: Tasks 11-15's, or a log
+    imported at the check) (a worker's job: up to 0.5 s)."""
     mc = session.model_check()
     r = mc.result
+    elsewhere = check_elsewhere(session, mc.run)
     if r is None:
-        return CheckView(mc.run, problem=mc.problem or "no result")
+        return CheckView(mc.run, problem=mc.problem or "no result", elsewhere=elsewhere)
     f = r.finding
     omega = np.asarray(r.omega, dtype=float)
     baseline = np.asarray(r.baseline_pred, dtype=float)
@@ -1306,7 +1313,9 @@ def check(session: Session) -> CheckView:
         details=check_words.details(r, two_fits).blocks(),
         two_fits=two_fits,
         other_T=check_words.other_T(st.T) if two_fits and st is not None else "",
-        shows=frozenset(lab_shown.MODEL_CHECK_SHOWS),
+        # T and K of another run than Tasks 11-15's are none of their computed values
+        shows=frozenset(lab_shown.MODEL_CHECK_SHOWS) if not elsewhere else frozenset(),
+        elsewhere=elsewhere,
     )
 
 
@@ -1341,14 +1350,42 @@ def note_drawn(session: Session, view: object) -> list[str]:
 
 # -- the run in use -----------------------------------------------------------------------------
 USES_RUN = "Tasks 11-15 and the model check use run"
-"""The start of every line that says which run they use (:func:`run_in_use`, and
-:func:`~minseg_tui.lab.views.own_first.run_used` with why)."""
+"""The start of every line that says which run they use when it is one run (:func:`run_in_use`,
+and :func:`~minseg_tui.lab.views.own_first.run_used` with why)."""
 
 
 def run_in_use(session: Session) -> str:
-    """One line saying which run Tasks 11-15 and the model check use."""
-    run = session.response_run()
+    """One line saying which run Tasks 11-15 and the model check use (each its own when
+    the model check has an imported log, :meth:`Session.check_run`)."""
+    run, checked = session.response_run(), session.check_run()
+    if checked is not None and checked != run:
+        return (
+            f"Tasks 11-15 use run {run.name if run else '— (none yet)'}; "
+            f"the model check uses run {checked.name}"
+        )
     return f"{USES_RUN} {run.name if run else '— (none yet)'}"
+
+
+def imported(session: Session, path: str, info: RunInfo) -> str:
+    """The line after a log recorded elsewhere was imported as ``info`` (from ``path``, as
+    typed): the model check uses it, Tasks 11-15 keep their run, and how to judge them on
+    the import (walk 16, D3: the import took Tasks 11-15 with it)."""
+    said = f"imported {path} as {info.name} ({info.samples} rows); the model check uses it"
+    run = session.response_run()
+    judge = f"{key_name('palette')} '{USE_RUN} {info.name}' judges them on it"
+    if run is None:
+        return f"{said}; Tasks 11-15 have no run of their own yet: {judge}"
+    return f"{said}; Tasks 11-15 keep run {run.name} ({judge})"
+
+
+def check_elsewhere(session: Session, run: str | None) -> str:
+    """Said beside the model check of run ``run`` when Tasks 11-15 use another run (an
+    import at the model check): "Tasks 11-15 use run steps-1"; '' when they use the same
+    one, or none."""
+    tasks = session.response_run()
+    if run is None or tasks is None or tasks.name == run:
+        return ""
+    return f"Tasks 11-15 use run {tasks.name}"
 
 
 # -- what is not answered yet -----------------------------------------------------------------

@@ -83,17 +83,18 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         story = self.query_one("#check-story", Prose)
         lines = self.query_one("#check-lines", Prose)
         plots = self.query_one(".check-plots")
+        run = f"run {v.run or '—'}" + (f" ({v.elsewhere})" if v.elsewhere else "")
         if v.problem:
             plots.display = False
-            story.update(f"run {v.run or '—'}: {v.problem}")
+            story.update(f"{run}: {v.problem}")
             lines.update("")
             return
         self._plot()
         plots.display = True
         where = (
-            f"run {v.run}, {v.close_title} · {key_hint('zoom_next', 'the whole log')}"
+            f"{run}, {v.close_title} · {key_hint('zoom_next', 'the whole log')}"
             if self.close_up and v.close_t.size
-            else f"run {v.run}, the whole log · "
+            else f"{run}, the whole log · "
             f"{key_hint('zoom_next', 'the close-up the words speak of')}"
         )
         story.update("\n".join([where, " ".join([*v.story, v.other_T]).rstrip()]))

@@ -112,7 +112,8 @@ def detail(k: int, g: Group) -> Text:
     out.append(f"  {g.date or 'no date'} · {where} · {g.id}\n")
     nums = [f"{q.key} {'–' if g.value(q.key) is None else g.with_unit(q.key)}" for q in QUANTITIES]
     out.append(" · ".join(nums) + "\n")
-    out.append(f"model check: {g.cause or 'not run'}\n")
+    on = f" (on {g.check_on})" if g.check_on else ""
+    out.append(f"model check: {g.cause or 'not run'}{on}\n")
     for o in g.own:
         if o.rel_diff is not None:
             out.append(

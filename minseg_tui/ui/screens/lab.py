@@ -793,7 +793,7 @@ class StepCommands(Provider):
             return []
         with screen.session as s:
             runs = [
-                (r.name, f" ({r.interruption or 'interrupted'})" if r.interrupted else "")
+                (r.name, f" ({r.interruption or 'interrupted'})" if r.interrupted else "", r.kind)
                 for r in s.runs
             ]
         go, use = screen.go_to, screen.use_run
@@ -808,15 +808,17 @@ class StepCommands(Provider):
                 (
                     f"{USE_RUN} {name}{why} for Tasks 11-15",
                     partial(use, name),
-                    "the run the results and the model check use",
+                    "an imported log: Tasks 11-15 are then judged on it, as the model check is"
+                    if kind == "imported"
+                    else "the run the results and the model check use",
                 )
-                for name, why in runs
+                for name, why, kind in runs
             ]
             + [
                 (
                     PALETTE["use_newest_run"],
                     partial(use, None),
-                    "the default: no interrupted run",
+                    "the default: no interrupted run, no imported log",
                 )
             ]
         )
@@ -1520,36 +1522,23 @@ class LabScreen(StatusScreen):
 
     @on(LogImportRequested)
     def _import(self, event: LogImportRequested) -> None:
-        """A run log recorded elsewhere: it becomes the run Tasks 11-15 and the check use.
-        The group's answers to Tasks 11-15 given on the run in use before are judged against
-        it from now on: the line says so, and how to go back (walk 16's D3: an EV3 motor's
-        log imported at the model check turned Tasks 11-12 ✗ and 13-14 !, unsaid there)."""
+        """A run log recorded elsewhere: the model check uses it; Tasks 11-15 keep their run
+        unless the group chooses the import (walk 16's D3: an EV3 motor's log imported at
+        the model check took Tasks 11-15 with it, and Tasks 11-12 turned ✗, 13-14 !)."""
         event.stop()
         try:
             with self.session as s:
-                given = {k: e.run for k in s.answered() if (e := s.entry(k)) is not None and e.run}
                 info = s.import_run(Path(event.path).expanduser())
-                s.select_run(info.name)
-                again = [k for k in given if views.judged_again(s, k)]
+                said = views.imported(s, event.path, info)
         except MinsegError as exc:
             event.reply(f"✗ {exc}")
             return
-        said = (
-            f"imported {event.path} as {info.name} ({info.samples} rows); "
-            "Tasks 11-15 and the model check use it"
-        )
-        runs = sorted({given[k] for k in again})
-        if again:
-            answers = "answer" if len(again) == 1 else "answers"
-            on = f"run {runs[0]}" if len(runs) == 1 else "runs " + ", ".join(runs)
-            said += f"; {len(again)} {answers} of Tasks 11-15, given on {on}, judged against it now"
-            if len(runs) == 1:
-                said += f": {key_name('palette')} '{USE_RUN} {runs[0]}' puts them back"
         event.reply(said)
         self._changed()
 
     def use_run(self, name: str | None) -> None:
-        """Tasks 11-15 and the model check use run ``name`` (None: the latest)."""
+        """Tasks 11-15 and the model check use run ``name`` (None: the newest complete step
+        run); an imported log the model check used gives way to it."""
         try:
             with self.session as s:
                 s.select_run(name)
