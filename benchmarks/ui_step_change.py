@@ -16,6 +16,10 @@ first pair (main thread only: the event loop, where Textual lays out and draws).
 second) over the change's wall time: on a loaded machine a change takes seconds of wall
 time, and the virtual board's stream alone then adds a good part of the CPU time.
 
+``--starts N`` first times N start-ups of the app, each on a new sessions folder: from the
+app's start until its start screen takes names, and from the names and Enter until the
+lab's first step is shown and focused (CPU of the process and wall time, median and best).
+
 ``--no-paint`` leaves out the painting of the frames, as the UI tests do
 (tests.ui.textual_internals.unpainted_refresh): the difference from a run without it is
 what painting costs (a terminal needs it; the headless driver throws the frames away).
@@ -35,6 +39,7 @@ from pathlib import Path
 import numpy as np
 from textual.pilot import Pilot
 from textual.screen import Screen
+from textual.widgets import Input
 
 from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
@@ -94,6 +99,36 @@ def shown(app: LabApp, step_id: str) -> bool:
         return False
     panes = screen.query(StepPane)
     return bool(panes) and panes.last().is_mounted and panes.last().step.id == step_id
+
+
+async def start_up(size: tuple[int, int], root: Path) -> tuple[float, float, float, float]:
+    """One start-up of the app on a new sessions folder ``root``: CPU and wall time (s) until
+    its start screen takes names, then from the names and Enter until the lab shows its
+    first step."""
+    app = make_app(UiConfig(device="sim", sessions=root, today="2026-11-27"))
+    c0, w0 = time.process_time(), time.perf_counter()
+    async with app.run_test(size=size) as pilot:
+        await settle(pilot, lambda: bool(app.screen.query("#members")))
+        c1, w1 = time.process_time(), time.perf_counter()
+        app.screen.query_one("#members", Input).insert_text_at_cursor("Ada, Bo")
+        await pilot.press("enter")
+        await settle(pilot, lambda: isinstance(app.screen, LabScreen) and app.screen.shown.is_set())
+        c2, w2 = time.process_time(), time.perf_counter()
+    return c1 - c0, w1 - w0, c2 - c1, w2 - w1
+
+
+async def start_ups(args: argparse.Namespace, root: Path) -> None:
+    cols, rows = (int(v) for v in args.size.split("x"))
+    got = [await start_up((cols, rows), root / f"s{k}") for k in range(args.starts + 1)][1:]
+    print(f"{args.starts} start-ups at {cols}x{rows} (the first, untimed, loads the modules)")
+    print(f"{'':<22} {'CPU ms':>7} {'best':>6} {'wall ms':>8} {'best':>6}")
+    for i, what in ((0, "app to start screen"), (2, "Enter to first step")):
+        cpu = [g[i] for g in got]
+        wall = [g[i + 1] for g in got]
+        print(
+            f"{what:<22} {1e3 * statistics.median(cpu):7.0f} {1e3 * min(cpu):6.0f} "
+            f"{1e3 * statistics.median(wall):8.0f} {1e3 * min(wall):6.0f}"
+        )
 
 
 async def run(args: argparse.Namespace, root: Path) -> None:
@@ -161,12 +196,16 @@ def main() -> None:
     ap.add_argument("--idle", type=float, default=5.0, help="s of idle measured first")
     ap.add_argument("--only", nargs="*", help="only the pairs whose first step is one of these")
     ap.add_argument("--profile", help="write a cProfile of the first pair's changes here")
+    ap.add_argument("--starts", type=int, default=0, help="time this many start-ups first")
     ap.add_argument("--no-paint", action="store_true", help="no frame painted (as in the tests)")
     args = ap.parse_args()
     if args.no_paint:
         Screen._compositor_refresh = unpainted_refresh  # type: ignore[method-assign]
     with tempfile.TemporaryDirectory() as tmp:
-        asyncio.run(run(args, Path(tmp) / "sessions"))
+        if args.starts:
+            asyncio.run(start_ups(args, Path(tmp) / "starts"))
+        if args.changes:
+            asyncio.run(run(args, Path(tmp) / "sessions"))
 
 
 if __name__ == "__main__":

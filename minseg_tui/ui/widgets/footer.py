@@ -96,6 +96,7 @@ class KeyLabel(Widget):
             "-palette" if shown.palette else ""
         )
         super().__init__(classes=classes.strip())
+        self.shown = shown
         self.key = shown.key
         self.key_display = shown.display
         self.description = shown.description
@@ -103,6 +104,22 @@ class KeyLabel(Widget):
         self.set_reactive(Widget.shrink, False)  # a key keeps its width; whole keys go
         if shown.tooltip:
             self.tooltip = shown.tooltip
+
+    def show(self, shown: ShownKey) -> None:
+        """Show ``shown`` (a key of the same kind: the palette's or not) in place of the key
+        shown now, as a new label made for it would (restyled only when it is enabled or
+        disabled, laid out again only when its text changed)."""
+        if shown == self.shown:
+            return
+        text = (shown.display, shown.description) != (self.key_display, self.description)
+        self.shown = shown
+        self.key = shown.key
+        self.key_display = shown.display
+        self.description = shown.description
+        self.enabled = shown.enabled
+        self.set_class(not shown.enabled, "-disabled")
+        self.tooltip = shown.tooltip or None
+        self.refresh(layout=text)
 
     def render(self) -> Text:
         key_style = self.get_component_rich_style("key-label--key")
@@ -245,9 +262,39 @@ class KeyFooter(ScrollableContainer, can_focus=False, can_focus_children=False):
         if not self.is_attached or self.screen is not self.app.screen:
             return  # under a dialog: built when its screen is shown again (_screen_changed)
         shown = self.shown()
-        if shown != self._drawn:
-            self._drawn = shown
+        if shown == self._drawn:
+            return
+        drawn, self._drawn = self._drawn, shown
+        if not drawn or not await self._relabel(shown):
             await self.recompose()
+
+    async def _relabel(self, shown: Shown) -> bool:
+        """Show ``shown`` with the key labels there are: each label given the key at its
+        place (:meth:`KeyLabel.show`), labels added for more keys, those left over removed.
+        A step change made the footer show new keys two or three times, and a new label for
+        every key each time cost about a fifth of the step change's CPU time. False
+        (nothing changed): the palette's key came or went (the footer is built anew)."""
+        labels = list(self.query_children(KeyLabel))
+        line = [k for k in labels if not k.has_class("-palette")]
+        palette = [k for k in labels if k.has_class("-palette")]
+        keys = [k for k in shown if not k.palette]
+        palette_keys = [k for k in shown if k.palette]
+        if len(palette_keys) != len(palette):
+            return False
+        for label, key in zip(line, keys, strict=False):
+            label.show(key)
+        for label, key in zip(palette, palette_keys, strict=True):
+            label.show(key)
+        added = [KeyLabel(k) for k in keys[len(line) :]]
+        for k in added:
+            k.data_bind(compact=KeyFooter.compact)
+        kept = [*line[: len(keys)], *added]
+        self._fit([*kept, *palette], self.size.width)
+        if line[len(keys) :]:
+            await self.remove_children(line[len(keys) :])
+        if added:
+            await self.mount_all(added, before=palette[0] if palette else None)
+        return True
 
     def compose(self) -> ComposeResult:
         if not self._ready:

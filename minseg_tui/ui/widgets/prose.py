@@ -8,6 +8,7 @@ never inside a unit of several words.
 from __future__ import annotations
 
 import textwrap
+from functools import lru_cache
 
 from textual.content import Content
 from textual.css.styles import RulesMap
@@ -25,8 +26,15 @@ CONTINUED = ("! ", "✗ ")
 def wrap(text: str, width: int) -> list[str]:
     """``text`` broken into lines of at most ``width`` characters, at plain spaces only
     (never inside a number with its unit); each line of the text starts a new line."""
+    return list(_wrapped(text, max(width, 1)))
+
+
+@lru_cache(maxsize=1024)
+def _wrapped(text: str, width: int) -> tuple[str, ...]:
+    """:func:`wrap`, kept for the texts last wrapped: a Prose's text is wrapped again at
+    each layout (its height) and each render, the same text at the same width (0.3 ms for
+    a step's "What to do", some 50 times a step change)."""
     out: list[str] = []
-    width = max(width, 1)
     for para in join_units(text).split("\n"):
         lead = para[: len(para) - len(para.lstrip(" "))]
         indent = lead + ("  " if para.lstrip(" ").startswith(CONTINUED) else "")
@@ -38,7 +46,7 @@ def wrap(text: str, width: int) -> list[str]:
             replace_whitespace=False,
         )
         out += [line.replace(NO_BREAK, " ") for line in lines] or [""]
-    return out
+    return tuple(out)
 
 
 class Wrapped(Visual):
@@ -62,7 +70,7 @@ class Wrapped(Visual):
         return max((len(line) for line in self.text.split("\n")), default=0)
 
     def get_height(self, rules: RulesMap, width: int) -> int:
-        return len(wrap(self.text, width))
+        return len(_wrapped(self.text, max(width, 1)))
 
 
 class Prose(Static):
