@@ -103,16 +103,30 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         # Task 10: the square wave on the board, recorded as it arrives
         await goto(pilot, "task10")
         await pilot.press("f5")
-        # the motor stops; the run starts once the wheel stands (the board's clock decides)
-        await heard.until(pilot, lambda: app.recording is not None)
-        await heard.until(pilot, lambda: app.recording is None)
+        await settle(pilot)
+        # the motor stops; the run starts once the wheel stands (the board's clock decides);
+        # waited for on the procedure, not on the app's view of the run, which a busy machine
+        # can hear of only once the run has ended (see the unplug test below)
+        await heard.until(pilot, lambda: app.task10 is not None)  # F5 handled
+        task = app.task10
+        assert task is not None
+        await heard.until(pilot, lambda: task.outcome is not None and app.task10 is None)
         with app.session as s:
             run = s.runs[-1]
         assert run.kind == "steps" and 440 <= run.samples <= 520
         await pilot.press("f6")
-        await heard.until(pilot, lambda: app.recording is not None)
+        await settle(pilot)
+        await heard.until(pilot, lambda: app.task10 is not None)  # F6 handled
+        fast_task = app.task10
+        assert fast_task is not None
         # two of its four periods (5 s at 5 ms): two rising steps for Tasks 11-15
-        await heard.until(pilot, lambda: app.recording is None or app.recording.samples >= 1000)
+        await heard.until(
+            pilot,
+            lambda: (
+                fast_task.outcome is not None
+                or (fast_task.run is not None and fast_task.run.samples >= 1000)
+            ),
+        )
         await pilot.press("f2")  # stop safely: motor off, what was recorded is kept
         assert app.recording is None and app.motor == "off"
         with app.session as s:
@@ -160,15 +174,23 @@ async def test_unplug_during_a_run_keeps_the_samples(tmp_path):
         await goto(pilot, "task10")
         await pilot.press("f5")
         await settle(pilot)
-        # the run starts once the wheel stands; 80 samples of it recorded
-        await heard.until(pilot, lambda: app.recording is not None and app.recording.samples >= 80)
+        # the run starts once the wheel stands; 80 samples of it recorded. Read from the
+        # procedure, which the stream's thread feeds as the board sends: on a busy machine
+        # the app's own thread can lag a whole run behind (it painted every frame at load
+        # 14 on 2 cores: the 12 s run had ended before it heard that it began, and a wait
+        # on the app's view of the run waited out its guard: stop 37)
+        await heard.until(pilot, lambda: app.task10 is not None)  # F5 handled
+        task = app.task10
+        assert task is not None
+        await heard.until(pilot, lambda: task.run is not None and task.run.samples >= 80)
         named_board(name).unplug()
-        heard.kinds.clear()
-        await heard.until(pilot, lambda: app.recording is None)
+        await heard.until(pilot, lambda: "disconnected" in heard.kinds and app.task10 is None)
         assert "board disconnected — everything recorded is kept" in _status(app)
         with app.session as s:
             run = s.runs[-1]
+        assert run.ended_by == "cable", run  # cut by the cable, not ended complete before it
         assert run.samples >= 60 and app.motor == "off"
+        heard.kinds.clear()
         named_board(name).replug()
         await heard.until(pilot, lambda: "connected" in heard.kinds)
         assert app.motor == "off"  # nothing restored after the reconnect
@@ -198,7 +220,9 @@ async def main():
         await pilot.press("f5")
         await settle(pilot)
         # 80 samples (2 s) in memory: all but the last half second of them are on disk
-        await heard.until(pilot, lambda: app.recording is not None and app.recording.samples >= 80)
+        await heard.until(pilot, lambda: app.task10 is not None)  # F5 handled
+        task = app.task10  # the procedure, which the stream's thread feeds (see the unplug test)
+        await heard.until(pilot, lambda: task.run is not None and task.run.samples >= 80)
         print("READY", flush=True)
         await asyncio.sleep(600)
 
