@@ -10,12 +10,15 @@ import os
 import signal
 import subprocess
 import sys
+import threading
+import time
 from pathlib import Path
 
 import pytest
 
 from minseg_tui.device.virtual import named_board
 from minseg_tui.lab.saving.store import list_sessions
+from minseg_tui.lab.state.task10 import Task10
 from minseg_tui.lab.views import session as views
 from minseg_tui.model.motor import PUBLISHED
 from minseg_tui.model.plant import MeterReading
@@ -103,30 +106,16 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         # Task 10: the square wave on the board, recorded as it arrives
         await goto(pilot, "task10")
         await pilot.press("f5")
-        await settle(pilot)
-        # the motor stops; the run starts once the wheel stands (the board's clock decides);
-        # waited for on the procedure, not on the app's view of the run, which a busy machine
-        # can hear of only once the run has ended (see the unplug test below)
-        await heard.until(pilot, lambda: app.task10 is not None)  # F5 handled
-        task = app.task10
-        assert task is not None
-        await heard.until(pilot, lambda: task.outcome is not None and app.task10 is None)
+        # the motor stops; the run starts once the wheel stands (the board's clock decides)
+        await heard.until(pilot, lambda: app.recording is not None)
+        await heard.until(pilot, lambda: app.recording is None)
         with app.session as s:
             run = s.runs[-1]
         assert run.kind == "steps" and 440 <= run.samples <= 520
         await pilot.press("f6")
-        await settle(pilot)
-        await heard.until(pilot, lambda: app.task10 is not None)  # F6 handled
-        fast_task = app.task10
-        assert fast_task is not None
+        await heard.until(pilot, lambda: app.recording is not None)
         # two of its four periods (5 s at 5 ms): two rising steps for Tasks 11-15
-        await heard.until(
-            pilot,
-            lambda: (
-                fast_task.outcome is not None
-                or (fast_task.run is not None and fast_task.run.samples >= 1000)
-            ),
-        )
+        await heard.until(pilot, lambda: app.recording is None or app.recording.samples >= 1000)
         await pilot.press("f2")  # stop safely: motor off, what was recorded is kept
         assert app.recording is None and app.motor == "off"
         with app.session as s:
@@ -163,6 +152,29 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
     assert (Path(folder) / run.file).exists()
 
 
+def _pull_at(app, name: str, samples: int, seen: list[Task10], done: threading.Event) -> None:
+    """Pull the named board's cable once the Task 10 procedure's run holds ``samples``
+    samples (not at all when the procedure ended first: the test then fails on its
+    outcome); the procedure is put in ``seen`` as soon as F5 made it. Polls the app's
+    procedure, which the stream's thread feeds as the board sends, every 2 ms of host time,
+    until ``done``; the board's clock pauses while the process is stalled, so a busy
+    machine makes this slower, never late."""
+    while not done.is_set() and app.task10 is None:
+        time.sleep(0.002)
+    task = app.task10
+    if task is None:
+        return
+    seen.append(task)
+    while (
+        not done.is_set()
+        and task.outcome is None
+        and (task.run is None or task.run.samples < samples)
+    ):
+        time.sleep(0.002)
+    if task.outcome is None and not done.is_set():
+        named_board(name).unplug()
+
+
 async def test_unplug_during_a_run_keeps_the_samples(tmp_path):
     url = board_url(seed=2)
     name = url.split("//")[1].split("?")[0]
@@ -172,18 +184,22 @@ async def test_unplug_during_a_run_keeps_the_samples(tmp_path):
         await settle(pilot, lambda: app.device is not None)
         await start(pilot)
         await goto(pilot, "task10")
-        await pilot.press("f5")
-        await settle(pilot)
-        # the run starts once the wheel stands; 80 samples of it recorded. Read from the
-        # procedure, which the stream's thread feeds as the board sends: on a busy machine
-        # the app's own thread can lag a whole run behind (it painted every frame at load
-        # 14 on 2 cores: the 12 s run had ended before it heard that it began, and a wait
-        # on the app's view of the run waited out its guard: stop 37)
-        await heard.until(pilot, lambda: app.task10 is not None)  # F5 handled
-        task = app.task10
-        assert task is not None
-        await heard.until(pilot, lambda: task.run is not None and task.run.samples >= 80)
-        named_board(name).unplug()
+        # The run starts once the wheel stands; the cable is pulled once 80 samples of it are
+        # recorded, by a thread that watches the procedure itself. The app's own thread, which
+        # checks only between its messages, missed the whole 12 s run on a busy machine (it
+        # painted every frame at load 14 on 2 cores, and had not yet heard that the run began
+        # when it ended: stop 37).
+        seen: list[Task10] = []
+        done = threading.Event()
+        puller = threading.Thread(target=_pull_at, args=(app, name, 80, seen, done), daemon=True)
+        puller.start()
+        try:
+            await pilot.press("f5")
+            await heard.until(pilot, lambda: bool(seen) and seen[0].outcome is not None)
+        finally:
+            done.set()
+            puller.join()
+        assert seen[0].outcome is not None and seen[0].outcome.why == "cable", seen[0].outcome
         await heard.until(pilot, lambda: "disconnected" in heard.kinds and app.task10 is None)
         assert "board disconnected — everything recorded is kept" in _status(app)
         with app.session as s:
@@ -197,7 +213,7 @@ async def test_unplug_during_a_run_keeps_the_samples(tmp_path):
 
 
 SCRIPT = """
-import asyncio, sys
+import asyncio, sys, threading, time
 from pathlib import Path
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import make_app
@@ -217,13 +233,18 @@ async def main():
         await goto(pilot, "task5")
         await paste_in(pilot, "i_ss@2.5", "47 mA")
         await goto(pilot, "task10")
+        # 80 samples (2 s) in memory: all but the last half second of them are on disk. Said
+        # by a thread that watches the procedure, which the stream's thread feeds: the app's
+        # own thread can hear of a run only once it has ended on a busy machine (stop 37)
+        def ready():
+            while app.task10 is None:
+                time.sleep(0.002)
+            task = app.task10
+            while task.outcome is None and (task.run is None or task.run.samples < 80):
+                time.sleep(0.002)
+            print("READY" if task.outcome is None else f"ENDED {task.outcome}", flush=True)
+        threading.Thread(target=ready, daemon=True).start()
         await pilot.press("f5")
-        await settle(pilot)
-        # 80 samples (2 s) in memory: all but the last half second of them are on disk
-        await heard.until(pilot, lambda: app.task10 is not None)  # F5 handled
-        task = app.task10  # the procedure, which the stream's thread feeds (see the unplug test)
-        await heard.until(pilot, lambda: task.run is not None and task.run.samples >= 80)
-        print("READY", flush=True)
         await asyncio.sleep(600)
 
 asyncio.run(main())
