@@ -137,7 +137,8 @@ async def test_typing_on_the_summarys_answers_goes_into_its_text_entry(quiet):
     """On the summary the first empty entry is a question to tick; keys typed on the list of
     steps or on an answer list (where letters do nothing) went nowhere, and the group's
     'most unclear' text was lost. They go into the step's first empty text entry; Space
-    still picks an answer."""
+    still picks an answer. Typed on an answer list once that text is there, they go after
+    it (walk 16, D2: typed over it, the group's text was lost)."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
@@ -159,7 +160,7 @@ async def test_typing_on_the_summarys_answers_goes_into_its_text_entry(quiet):
         await settle(pilot)
         await pilot.press("enter")
         await settle(pilot)
-        assert _stored(app, "summary.unclear").text == "and K"
+        assert _stored(app, "summary.unclear").text == "why Tand K"
 
 
 WALK_TABLE = {

@@ -36,6 +36,7 @@ from textual.worker import get_current_worker
 from minseg_tui.errors import MinsegError
 from minseg_tui.lab.content.keys import PALETTE, USE_RUN, key_name
 from minseg_tui.lab.content.steps import STEPS, Step
+from minseg_tui.lab.saving.runs import RunInfo
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
@@ -792,10 +793,7 @@ class StepCommands(Provider):
         if not isinstance(screen, LabScreen):
             return []
         with screen.session as s:
-            runs = [
-                (r.name, f" ({r.interruption or 'interrupted'})" if r.interrupted else "", r.kind)
-                for r in s.runs
-            ]
+            runs = list(s.runs)  # frozen records: read outside the session's lock
         go, use = screen.go_to, screen.use_run
         steps = [
             (f"{PALETTE['go_to']} {s.title}", partial(go, s.id), "move to this step") for s in STEPS
@@ -806,13 +804,13 @@ class StepCommands(Provider):
             steps
             + [
                 (
-                    f"{USE_RUN} {name}{why} for Tasks 11-15",
-                    partial(use, name),
+                    f"{USE_RUN} {r.name}{_interrupted(r)} for Tasks 11-15",
+                    partial(use, r.name),
                     "an imported log: Tasks 11-15 are then judged on it, as the model check is"
-                    if kind == "imported"
+                    if r.kind == "imported"
                     else "the run the results and the model check use",
                 )
-                for name, why, kind in runs
+                for r in runs
             ]
             + [
                 (
@@ -833,6 +831,11 @@ class StepCommands(Provider):
             score = max(matcher.match(name) for name in searched_as(text))
             if score > 0:
                 yield Hit(score, matcher.highlight(text), action, text=text, help=help_text)
+
+
+def _interrupted(r: RunInfo) -> str:
+    """What cut a run short, in brackets after its name ('' for a complete run)."""
+    return f" ({r.interruption or 'interrupted'})" if r.interrupted else ""
 
 
 def searched_as(text: str) -> list[str]:
