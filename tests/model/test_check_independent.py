@@ -4,7 +4,9 @@ artefacts of a logger and about a hand on the wheel. Tuning seeds only (the held
 are for benchmarks/model_check_independent.py's figures).
 """
 
+from dataclasses import dataclass
 from functools import cache
+from typing import ClassVar
 
 import numpy as np
 import pytest
@@ -1039,22 +1041,30 @@ def test_a_miss_that_runs_on_through_an_edge_is_no_late_step(from_edge):
         assert found == []
 
 
-@pytest.mark.parametrize("scatter", [0.0003, 0.0015])
-def test_an_edge_out_of_line_with_the_scatter_of_every_edge_is_no_late_step(scatter):
-    # where the model misses the corners (held-out cap + friction 900003: a timed-edges
-    # speed whose first readings after rest miss by 0.7-2.2 rad/s, at every rise), every
-    # edge's shift estimate carries a share of that miss, and the edges scatter by 1.7-1.8
-    # ms at 10 ms samples, far beyond the noise: six edges 2.9-4.4 ms out of line, 1.7-2.4
-    # such scatters, were reported as steps acting late or early, though the generator
-    # issues every command at its row's time. A step that acts late stands out of the
-    # other edges' scatter (model.synth's late steps: 5.6-29 robust sigmas of it); here
-    # the same edge 4 ms out of line among edges that scatter by 0.3 ms (reported) and by
-    # 1.5 ms (the model's miss, not reported)
-    from minseg_tui.model.check import anomalies as an
+@dataclass(frozen=True)
+class EdgeTrain:
+    """Twelve edges of a first-order speed at 10 ms samples (T 50 ms, K 10 rad/s/V), each
+    acting a little late (a scatter), edge 6 4 ms late: the prediction, its change for a
+    shift of every edge by :attr:`shift`, the residual with noise 0.02 rad/s, and the
+    generator for further draws."""
 
-    ts, T, K, shift, n = 0.01, 0.05, 10.0, 0.005, 12 * 40 + 20
+    ts: ClassVar[float] = 0.01
+    T: ClassVar[float] = 0.05
+    shift: ClassVar[float] = 0.005
+    t: np.ndarray
+    u: np.ndarray
+    edges: np.ndarray
+    pred: np.ndarray
+    d_shift: np.ndarray
+    res: np.ndarray
+    rng: np.random.Generator
+
+
+def _edge_train(seed: int, scatter: float) -> EdgeTrain:
+    K, n = 10.0, 12 * 40 + 20
+    ts, T, shift = EdgeTrain.ts, EdgeTrain.T, EdgeTrain.shift
     t = ts * np.arange(n)
-    rng = np.random.default_rng(11)
+    rng = np.random.default_rng(seed)
     u = np.zeros(n)
     edges = 20 + 40 * np.arange(12)
     for k, e in enumerate(edges):
@@ -1074,6 +1084,25 @@ def test_an_edge_out_of_line_with_the_scatter_of_every_edge_is_no_late_step(scat
     lag = rng.normal(0.0, scatter, edges.size)
     lag[6] = 0.004  # s: the edge out of line
     res = response(lag) - pred + rng.normal(0.0, 0.02, n)
+    return EdgeTrain(t, u, edges, pred, d_shift, res, rng)
+
+
+@pytest.mark.parametrize("scatter", [0.0003, 0.0015])
+def test_an_edge_out_of_line_with_the_scatter_of_every_edge_is_no_late_step(scatter):
+    # where the model misses the corners (held-out cap + friction 900003: a timed-edges
+    # speed whose first readings after rest miss by 0.7-2.2 rad/s, at every rise), every
+    # edge's shift estimate carries a share of that miss, and the edges scatter by 1.7-1.8
+    # ms at 10 ms samples, far beyond the noise: six edges 2.9-4.4 ms out of line, 1.7-2.4
+    # such scatters, were reported as steps acting late or early, though the generator
+    # issues every command at its row's time. A step that acts late stands out of the
+    # other edges' scatter (model.synth's late steps: 5.6-29 robust sigmas of it); here
+    # the same edge 4 ms out of line among edges that scatter by 0.3 ms (reported) and by
+    # 1.5 ms (the model's miss, not reported)
+    from minseg_tui.model.check import anomalies as an
+
+    e = _edge_train(11, scatter)
+    t, u, edges, pred, d_shift, res = e.t, e.u, e.edges, e.pred, e.d_shift, e.res
+    ts, T, shift, n = EdgeTrain.ts, EdgeTrain.T, EdgeTrain.shift, t.size
     found = an.late_steps(t, u, res, d_shift, shift, ts, T, pred, 0.0, np.ones(n, bool))
     if scatter < 0.001:
         assert [a.row for a in found] == [int(edges[6])]
@@ -1093,28 +1122,9 @@ def test_a_miss_a_shift_only_trims_is_no_late_step(miss):
     # miss of 0.5 rad/s rms that no shift explains (orthogonal to it) on its rows
     from minseg_tui.model.check import anomalies as an
 
-    ts, T, K, shift, n = 0.01, 0.05, 10.0, 0.005, 12 * 40 + 20
-    t = ts * np.arange(n)
-    rng = np.random.default_rng(12)
-    u = np.zeros(n)
-    edges = 20 + 40 * np.arange(12)
-    for k, e in enumerate(edges):
-        u[e:] = 2.0 + 1.5 * (k % 3) if k % 2 == 0 else 0.0
-
-    def response(lag: np.ndarray) -> np.ndarray:
-        """The first-order speed (rad/s) with edge k acting lag[k] s late."""
-        y = np.zeros(n)
-        for k, e in enumerate(edges):
-            step = K * (u[e] - u[e - 1])
-            since = np.maximum(t - t[e] - lag[k], 0.0)
-            y += np.where(t >= t[e] + lag[k], step * (1.0 - np.exp(-since / T)), 0.0)
-        return y
-
-    pred = response(np.zeros(edges.size))
-    d_shift = response(np.full(edges.size, shift)) - pred
-    lag = rng.normal(0.0, 0.0003, edges.size)
-    lag[6] = 0.004  # s: the edge out of line
-    res = response(lag) - pred + rng.normal(0.0, 0.02, n)
+    e = _edge_train(12, 0.0003)
+    t, u, edges, pred, d_shift, res, rng = e.t, e.u, e.edges, e.pred, e.d_shift, e.res, e.rng
+    ts, T, shift, n = EdgeTrain.ts, EdgeTrain.T, EdgeTrain.shift, t.size
     rows = np.arange(edges[6], edges[6] + 15)
     other = rng.normal(0.0, 1.0, rows.size)
     d = d_shift[rows]
