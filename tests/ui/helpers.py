@@ -28,6 +28,7 @@ from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.messages import LinkEventArrived
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
+from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import AnswerList, EntryBox, FieldForm, FieldRow, field_id
 from tests.ui.fakes import QuietDevice, square_wave_stream
@@ -384,6 +385,21 @@ async def record_a_square_wave(pilot: Pilot[None], device: QuietDevice) -> str:
     await settle(pilot)
     with app.session as s:
         return s.response_run().name
+
+
+async def quit_asked_mid_run(pilot: Pilot[None], device: QuietDevice) -> int:
+    """On Task 10: F5's run started on the double, 2 s of its square wave taken (80 samples),
+    then Ctrl+Q while it records: the quit question is up, its choices the recording's. The
+    run's first sequence number (feed the rest of the run from ``seq + 80``)."""
+    app = pilot.app
+    seq = await start_run_on(pilot, device)
+    device.feed(square_wave_stream(seq, (seq + 1) * 25_000, 2.0))
+    await taken(pilot, seq + 80)
+    await pilot.press("ctrl+q")
+    await settle(pilot, lambda: isinstance(app.screen, QuitScreen))
+    asking = app.screen
+    assert isinstance(asking, QuitScreen) and asking.choices is RECORDING_CHOICES
+    return seq
 
 
 async def taken(pilot: Pilot[None], total: int) -> None:

@@ -8,16 +8,16 @@ from __future__ import annotations
 
 from minseg_tui.device.link import LinkEvent
 from minseg_tui.ui.screens.lab import LabScreen
-from minseg_tui.ui.screens.quit import RECORDING_CHOICES, RUN_ENDED_CHOICES, QuitScreen
+from minseg_tui.ui.screens.quit import RUN_ENDED_CHOICES
 from tests.ui.fakes import QuietDevice, square_wave_stream
 from tests.ui.helpers import (
     TABLE,
     enter_all,
     goto,
+    quit_asked_mid_run,
     record_response_run,
     settle,
     start,
-    start_run_on,
     taken,
 )
 
@@ -40,13 +40,8 @@ async def test_the_runs_notices_do_not_cover_the_question_asked_when_it_ends(qui
             record_response_run(s)
             s.enter("own.T", "57 ms")
         await goto(pilot, "task10")
-        seq = await start_run_on(pilot, dev)
-        dev.feed(square_wave_stream(seq, (seq + 1) * 25_000, 2.0))
-        await taken(pilot, seq + 80)
-        await pilot.press("ctrl+q")
-        await settle(pilot, lambda: isinstance(app.screen, QuitScreen))
+        seq = await quit_asked_mid_run(pilot, dev)
         asking = app.screen
-        assert isinstance(asking, QuitScreen) and asking.choices is RECORDING_CHOICES
         dev.feed(square_wave_stream(seq + 80, (seq + 81) * 25_000, 10.0))
         dev.feed_event(LinkEvent("square_wave_done", "square wave done", 0.0))
         await taken(pilot, seq + 480)

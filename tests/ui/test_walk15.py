@@ -11,7 +11,6 @@ from minseg_tui.device.link import LinkEvent
 from minseg_tui.lab.state.session import Session
 from minseg_tui.ui.panels.square_wave import SquareWavePanel
 from minseg_tui.ui.screens.lab import LabScreen
-from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.prose import Prose
 from tests.classview.build import group
@@ -23,6 +22,7 @@ from tests.ui.helpers import (
     class_view,
     enter_all,
     goto,
+    quit_asked_mid_run,
     record_response_run,
     settle,
     shown,
@@ -97,13 +97,8 @@ async def test_the_quit_question_of_a_run_that_ends_while_it_is_up_says_it_ended
         await start(pilot)
         enter_all(app, TABLE)
         await goto(pilot, "task10")
-        seq = await start_run_on(pilot, dev)
-        dev.feed(square_wave_stream(seq, (seq + 1) * 25_000, 2.0))
-        await taken(pilot, seq + 80)
-        await pilot.press("ctrl+q")
-        await settle(pilot, lambda: isinstance(app.screen, QuitScreen))
+        seq = await quit_asked_mid_run(pilot, dev)
         asking = app.screen
-        assert isinstance(asking, QuitScreen) and asking.choices is RECORDING_CHOICES
         recording = app.recording.name
         dev.feed(square_wave_stream(seq + 80, (seq + 81) * 25_000, 10.0))
         dev.feed_event(LinkEvent("square_wave_done", "square wave done", 0.0))
