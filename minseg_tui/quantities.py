@@ -251,8 +251,8 @@ def axis_unit(label: str) -> str | None:
 
 
 def printed_label(name: str, unit: str) -> str:
-    """A quantity with its unit as the report's figures and the CLI's lines name it, in
-    parentheses ('t (s)', 'omega (rad/s)')."""
+    """A quantity with its unit as a sentence names it, in parentheses ('expected t (s) to
+    increase'); a plot's axis, on screen or in the report, is an :func:`axis_label`."""
     return f"{name} ({unit})"
 
 

@@ -32,21 +32,21 @@ from minseg_tui.model.identify import ResponseResult, Rise
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import (
     MISSING,
+    axis_label,
     format_number,
     format_quantity,
     format_reading,
     format_spread,
-    printed_label,
 )
 from minseg_tui.report.svg import Band, Line, Mark, plot, stack
 
-TIME = printed_label("t", "s")
+TIME = axis_label("t", "s")
 """The time axis of the report's figures: seconds into the run."""
 
-SPEED = printed_label("omega", "rad/s")
+SPEED = axis_label("omega", "rad/s")
 """The speed axis of the report's figures of a run."""
 
-RESIDUAL = printed_label("measured - model", "rad/s")
+RESIDUAL = axis_label("measured - model", "rad/s")
 """The axis of a figure of the model check's residual: the speed measured less the model's."""
 
 
@@ -455,7 +455,7 @@ def _run_figure(log: RunLog, name: str) -> Figure:
     ul = [Line("u_A, applied", t, log.u, steps=True)]
     if "u_req" in log.extra:
         ul.append(Line("u_req, requested", t, log.extra["u_req"], dash=True, steps=True))
-    bottom = plot(ul, xlabel=TIME, ylabel=printed_label("u", "V"), height=160)
+    bottom = plot(ul, xlabel=TIME, ylabel=axis_label("u", "V"), height=160)
     return Figure(stack((top, bottom)), 720, f"Run {name}: speed and voltage against time.")
 
 
@@ -582,7 +582,7 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
                 marks=() if edge is None else (Mark("", x=edge),),
                 title="angle error: measured - model, summed over the window",
                 xlabel=TIME,
-                ylabel=printed_label("angle error", "rad"),
+                ylabel=axis_label("angle error", "rad"),
                 width=440,
                 height=190,
             )

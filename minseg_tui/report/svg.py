@@ -187,7 +187,7 @@ def plot(
 ) -> str:
     """One panel as an ``<svg>`` element (text): ``height`` is the plot's own height (the
     legend's rows are added above it). Axis labels should carry their units
-    (:func:`~minseg_tui.quantities.printed_label`: "t (s)")."""
+    (:func:`~minseg_tui.quantities.axis_label`: "t [s]", as on screen)."""
     ml, mr = 62, 14
     pw = width - ml - mr
     xs = [np.asarray(ln.x, dtype=float) for ln in lines]

@@ -31,7 +31,7 @@ REAL = SHARED_DATA / "real-motors"
 
 NUM = r"[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?"
 
-UNIT_LABEL = re.compile(r"\((rad/s|rad|V|s)\)$")
+UNIT_LABEL = re.compile(r"\[(rad/s|rad|V|s)\]$")
 
 
 # -- reading figures back --------------------------------------------------------------------
@@ -132,7 +132,7 @@ def _check_labels_and_legends(fig: ET.Element) -> None:
             # the legend sits above the plot area: nothing of it reaches into the data
             assert _legend_bottom(p) < _area(p)[1]
     (xlabel,) = _texts(panels[-1], "xlabel")  # the bottom panel names the shared x axis
-    assert xlabel.text == "t (s)"
+    assert xlabel.text == "t [s]"  # as the screen's plots name it (quantities.TIME_AXIS)
 
 
 # -- the figures of a session's report ------------------------------------------------------
@@ -242,7 +242,7 @@ def test_the_close_up_shows_both_models_and_the_noise_floor_band(report):
     assert any(k.startswith("± noise (") for k in _legend_colors(residual))
     # the lead figure of this log is the angle error: the close-up shows it too
     assert result.lead.figure.endswith("angle_rms")
-    assert "angle error (rad)" == _texts(angle, "ylabel")[0].text
+    assert "angle error [rad]" == _texts(angle, "ylabel")[0].text
 
 
 @GROUP
