@@ -168,6 +168,13 @@ class AnswerList(Widget, can_focus=False):
         self.refresh()
         return True
 
+    def show_chosen(self, indices: Iterable[int]) -> None:
+        """Show ``indices`` (0-based) as the answers picked or ticked, the cursor left where
+        it is: what the lab holds, put back after a pick it refused."""
+        chosen = tuple(sorted(set(indices)))
+        self._chosen = chosen if self.multiple else chosen[:1]
+        self.refresh()
+
     KEYS: tuple[str, ...] = ("down", "right", "up", "left", "home", "end", "space", "enter")
     """The keys :meth:`press` takes."""
 
@@ -834,6 +841,15 @@ class FieldRow(Vertical):
             form = next((a for a in self.ancestors if isinstance(a, FieldForm)), None)
             if form is not None:
                 form.chose(self, indices)
+
+    def show_chosen(self, indices: tuple[int, ...]) -> None:
+        """Show ``indices`` (0-based) as the answers the lab holds for this row, without
+        handing them to the lab: a pick the lab refused (a session opened read-only) is put
+        back on screen."""
+        self._chosen = indices
+        answers = self.answers
+        if answers is not None:
+            answers.show_chosen(indices)
 
     @property
     def message(self) -> str:
