@@ -8,16 +8,20 @@ typed the plot is above the view, and Alt+→ or F9 changed it there with nothin
 
 from __future__ import annotations
 
+import csv
 from pathlib import Path
 
+import pytest
 from textual.widgets import DataTable
 
 from minseg_tui.lab.state.session import Session
 from minseg_tui.report.write import write_class
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
+from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow
+from tests.classview.build import group
 from tests.seeded import Clock
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
@@ -71,3 +75,75 @@ async def test_a_pick_refused_in_a_read_only_session_leaves_the_groups_answer_sh
         await settle(pilot)
         assert row.answers.chosen == (1,)
     assert (folder / "session.json").read_bytes() == before
+
+
+def _class_csv(root: Path) -> dict[str, dict[str, str]]:
+    """class.csv under ``root``: each group's row by its folder's name."""
+    with (root / "class.csv").open(newline="", encoding="utf-8") as f:
+        return {r["id"]: r for r in csv.DictReader(f)}
+
+
+def _cell(screen: ClassScreen, row: int, column: str) -> str:
+    table = screen.query_one(DataTable)
+    return str(
+        table.get_cell_at((row, [c.key.value for c in table.columns.values()].index(column)))
+    )
+
+
+def _retype_R(folder: Path, text: str) -> None:
+    """The group, in its own program, corrects R (the class view is open elsewhere)."""
+    s = Session.open(folder)
+    s.enter("R", text)
+    s.close()
+
+
+async def test_f8_in_the_class_view_writes_what_the_sessions_hold_when_it_is_pressed(tmp_path):
+    """D1: the class view opened, then a group (in another window) corrected R from 3.5 to
+    5.3 Ω; F8 wrote class.csv with R 3.5 and the k_v computed from it (the rows read when the
+    view opened), while `minseg-tui class` said 5.3. F8 now reads the sessions again: the
+    files and the table hold 5.3 and the k_v from it."""
+    root = tmp_path / "sessions"
+    mira = group(root, ["Mira K", "Jonas P"], seed=1, R="3,5 ohms", run=False)
+    group(root, ["Ada L", "Alan T"], seed=2, run=False)
+    app = _class_app(root)
+    async with app.run_test(size=(80, 24)) as pilot:
+        screen = await class_view(pilot)
+        row = next(k for k, g in enumerate(screen.groups) if g.folder == mira)
+        assert _cell(screen, row, "R") == "3.5"
+        k_v_before = _cell(screen, row, "k_v")
+        _retype_R(mira, "5,3 ohms")
+        await burst(pilot, "f8")
+        await settle(pilot, lambda: (root / "class.csv").exists())
+        written = _class_csv(root)[mira.name]
+        assert written["R (Ω)"] == "5.3"
+        await settle(pilot, lambda: _cell(screen, row, "R") == "5.3")
+        assert _cell(screen, row, "k_v") != k_v_before
+        assert float(written["k_v (V s/rad)"]) == pytest.approx(
+            float(_cell(screen, row, "k_v")), rel=1e-3
+        )
+
+
+async def test_the_class_view_reads_the_sessions_again_when_a_group_opened_from_it_closes(
+    tmp_path,
+):
+    """D1: Escape from a group opened read-only showed the class view as it was read at F12,
+    though another group had corrected its R meanwhile; the rows are read again, the cursor
+    on the group opened."""
+    root = tmp_path / "sessions"
+    mira = group(root, ["Mira K", "Jonas P"], seed=1, R="3,5 ohms", run=False)
+    group(root, ["Ada L", "Alan T"], seed=2, run=False)
+    app = _class_app(root)
+    async with app.run_test(size=(80, 24)) as pilot:
+        screen = await class_view(pilot)
+        row = next(k for k, g in enumerate(screen.groups) if g.folder == mira)
+        other = 1 - row
+        table = screen.query_one(DataTable)
+        await settle(pilot, lambda: app.focused is table)
+        await burst(pilot, *(["down"] if other > table.cursor_row else ["up"]), "enter")
+        await settle(pilot, lambda: isinstance(app.screen, LabScreen) and shown(app))
+        _retype_R(mira, "5,3 ohms")
+        await burst(pilot, "escape")
+        await settle(pilot, lambda: app.screen is screen)
+        await settle(pilot, lambda: _cell(screen, row, "R") == "5.3")
+        assert table.cursor_row == other
+    assert not list(root.rglob("lock"))
