@@ -18,14 +18,24 @@ from minseg_tui.lab.state.session import Session
 from minseg_tui.report.write import write_class
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
+from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
 from minseg_tui.ui.screens.classview import ClassScreen
-from minseg_tui.ui.screens.lab import LabScreen
-from minseg_tui.ui.widgets.fields import FieldRow
+from minseg_tui.ui.screens.lab import LabScreen, StepPane
+from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.classview.build import group
 from tests.seeded import Clock
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import answering, burst, class_view, goto, settle, shown
+from tests.ui.helpers import (
+    answering,
+    burst,
+    class_view,
+    goto,
+    settle,
+    shown,
+    start_with_a_run,
+    typing_box,
+)
 
 
 def _class_app(root: Path) -> LabApp:
@@ -147,3 +157,57 @@ async def test_the_class_view_reads_the_sessions_again_when_a_group_opened_from_
         await settle(pilot, lambda: _cell(screen, row, "R") == "5.3")
         assert table.cursor_row == other
     assert not list(root.rglob("lock"))
+
+
+def _in_view(pane: StepPane, widget) -> bool:
+    """``widget`` lies whole in the part of the pane on screen (screen coordinates)."""
+    return widget.region.height > 0 and pane.scrollable_content_region.contains_region(
+        widget.region
+    )
+
+
+@pytest.mark.parametrize("key", ["alt+right", "f9"])
+async def test_a_rise_key_brings_the_plot_it_changes_into_view(quiet, key):
+    """D4: Task 11 at 80x24, both answers typed, the keys on 'your K': the plot lies above
+    the view. Alt+→ zoomed to rise 2 there and F9 too, and the screen did not change. The
+    plot now comes into view, showing the rise the key chose; the keys stay on 'your K'."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        pane = app.screen.query(StepPane).last()
+        await burst(pilot, *"7,8", "enter", *"1,93", "enter")
+        k_row = app.screen.query_one(f"#{field_id('own.K')}", FieldRow)
+        await settle(pilot, lambda: typing_box(app) is k_row.input)
+        await settle(pilot)
+        plot = app.screen.query_one(ResponsePlot)
+        panel = app.screen.query_one(ResultsPanel)
+        assert not _in_view(pane, plot), "the walk's state: the plot above the view"
+        before = panel.zoom
+        await burst(pilot, key)
+        await settle(pilot, lambda: panel.zoom != before)
+        await settle(pilot)
+        assert _in_view(pane, plot), (pane.scroll_y, plot.region)
+        assert typing_box(app) is k_row.input
+
+
+async def test_a_character_typed_after_the_plot_came_into_view_brings_the_entry_back(quiet):
+    """D4, the other half: the plot brought into view by Alt+→ pushes 'your K' (entered,
+    its comparison under it) below the screen; a character typed then goes into 'your K'
+    (the keys stayed there) and the entry comes back into view: the group sees what it
+    types."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "task11")
+        pane = app.screen.query(StepPane).last()
+        await burst(pilot, *"7,8", "enter", *"1,9", "enter")
+        k_row = app.screen.query_one(f"#{field_id('own.K')}", FieldRow)
+        await settle(pilot, lambda: typing_box(app) is k_row.input)
+        panel = app.screen.query_one(ResultsPanel)
+        await burst(pilot, "alt+right")
+        await settle(pilot, lambda: panel.zoom == 1)
+        await settle(pilot)
+        assert not _in_view(pane, k_row.input), "the walk's state: the entry below the view"
+        await burst(pilot, "3")  # goes on after the K entered: "1,93"
+        await settle(pilot)
+        assert k_row.input.value == "1,93"
+        assert _in_view(pane, k_row.input), (pane.scroll_y, k_row.input.region)

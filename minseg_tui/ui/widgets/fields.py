@@ -1340,6 +1340,10 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             if not row.input.disabled:
                 self._own(event)
                 row.input.type_text(event.character)
+                if row._cut_off(row.input):
+                    # typed into an entry out of view (F9 or Alt+→ scrolled the step to
+                    # its plot, walk 17's D4): the entry comes back into view
+                    self.screen.scroll_to_widget(row, animate=False)
             return
         if self.typing_row() is not None:
             self._own(event)
