@@ -50,6 +50,7 @@ from minseg_tui.lab.saving.store import (
     SessionInfo,
     SessionsUnreadable,
     list_sessions,
+    lock_owner,
     os_reason,
 )
 from minseg_tui.lab.state.session import Session
@@ -520,11 +521,12 @@ class LabApp(App[None]):
             self.notify(
                 "opened read-only: "
                 + (session.damaged or "to look, not to change")
-                + "; nothing typed here is saved "
+                + "; nothing typed here is saved"
+                + (_as_read(session) if over_class else "")
                 + (
-                    "(Escape: back to the class view)"
+                    " (Escape: back to the class view)"
                     if over_class
-                    else "(start a new session to go on)"
+                    else " (start a new session to go on)"
                 ),
                 title="damaged session" if session.damaged else "read-only session",
                 severity="warning",
@@ -1463,6 +1465,26 @@ class LabApp(App[None]):
         if self.session is not None:  # saved already; this releases the session's lock
             with self.session as s:
                 s.close()
+
+
+def _as_read(session: Session) -> str:
+    """What a session opened read-only from the class view shows: the session as saved at
+    its last change, and, while the group has it open in another program, that what it
+    does from now on is not shown here (walk 17's D3: the lab assistant looked at an empty
+    Summary the group had answered since)."""
+    try:
+        at = _dt.datetime.fromisoformat(session.modified).astimezone(_dt.UTC)
+        when = f" at {at:%Y-%m-%d %H:%M:%S} UTC"
+    except ValueError:
+        when = ""
+    said = f"; as saved{when}"
+    pid = lock_owner(session.folder)
+    if pid is not None:
+        said += (
+            f"; the group has it open in another minseg-tui (pid {pid}): what it does from now "
+            "on shows when you open it again"
+        )
+    return said
 
 
 def make_app(

@@ -9,6 +9,7 @@ typed the plot is above the view, and Alt+→ or F9 changed it there with nothin
 from __future__ import annotations
 
 import csv
+import os
 from pathlib import Path
 
 import pytest
@@ -31,6 +32,7 @@ from tests.ui.helpers import (
     burst,
     class_view,
     goto,
+    heard_notifications,
     settle,
     shown,
     start_with_a_run,
@@ -211,3 +213,41 @@ async def test_a_character_typed_after_the_plot_came_into_view_brings_the_entry_
         await settle(pilot)
         assert k_row.input.value == "1,93"
         assert _in_view(pane, k_row.input), (pane.scroll_y, k_row.input.region)
+
+
+async def test_a_group_opened_read_only_says_when_it_was_saved_and_that_the_group_has_it_open(
+    tmp_path,
+):
+    """D3: a group opened from the class view while it still worked in another window was
+    shown as saved then, with nothing saying so: the lab assistant read its Summary as empty
+    though the group answered it a minute later. The notice now says when the session was
+    saved and that the group has it open (the other program's pid), so what it does next
+    shows when it is opened again; a session nobody holds says only when it was saved."""
+    root = tmp_path / "sessions"
+    held = group(root, ["Mira K", "Jonas P"], seed=1, run=False)
+    group(root, ["Ada L", "Alan T"], seed=2, run=False)
+    working = Session.open(held)  # the group's own program, in another window
+    try:
+        app = _class_app(root)
+        async with app.run_test(size=(80, 24)) as pilot:
+            screen = await class_view(pilot)
+            table = screen.query_one(DataTable)
+            await settle(pilot, lambda: app.focused is table)
+            heard = heard_notifications(app)
+            for folder in (held, next(g.folder for g in screen.groups if g.folder != held)):
+                row = next(k for k, g in enumerate(screen.groups) if g.folder == folder)
+                moves = row - table.cursor_row
+                await burst(pilot, *(["down"] * moves if moves > 0 else ["up"] * -moves))
+                await burst(pilot, "enter")
+                await settle(pilot, lambda: isinstance(app.screen, LabScreen) and shown(app))
+                said = next(n for n in heard if "opened read-only" in n)
+                with app.session as s:
+                    saved = s.modified[11:19]
+                assert f"as saved at {s.modified[:10]} {saved} UTC" in said
+                open_elsewhere = f"has it open in another minseg-tui (pid {os.getpid()})"
+                assert (open_elsewhere in said) == (folder == held), said
+                await burst(pilot, "escape")
+                await settle(pilot, lambda: app.screen is screen)
+                heard.clear()
+    finally:
+        working.close()
