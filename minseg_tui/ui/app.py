@@ -87,7 +87,7 @@ from minseg_tui.ui.screens.boardcheck import (
 )
 from minseg_tui.ui.screens.classview import NO_WRITER, ClassScreen, ClassWriter
 from minseg_tui.ui.screens.dialog import close_dialog
-from minseg_tui.ui.screens.help import HelpScreen
+from minseg_tui.ui.screens.help import CLASS_NOW, START_NOW, HelpScreen, lab_now
 from minseg_tui.ui.screens.lab import PANEL_KEYS, RUN_REFUSED, LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.screens.palette import Palette
@@ -1167,8 +1167,14 @@ class LabApp(App[None]):
 
     def _help(self) -> None:
         self._store_typed()
-        if not isinstance(self.screen, HelpScreen):
-            self.push_screen(HelpScreen(KEYS))
+        screen = self.screen
+        if isinstance(screen, HelpScreen):
+            return
+        if isinstance(screen, LabScreen):
+            self.push_screen(HelpScreen(KEYS, lab_now(screen.step.title)))
+        else:
+            now = CLASS_NOW if isinstance(screen, ClassScreen) else START_NOW
+            self.push_screen(HelpScreen(KEYS, now, lab=False))
 
     async def action_stop_motor(self) -> None:
         """F2: motor off, after the keys typed before it (:meth:`stop_motor`)."""

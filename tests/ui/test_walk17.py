@@ -21,7 +21,9 @@ from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.panels.results import ResponsePlot, ResultsPanel
 from minseg_tui.ui.screens.classview import ClassScreen
+from minseg_tui.ui.screens.help import HelpScreen, KeyList
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
+from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from tests.classview.build import group
 from tests.seeded import Clock
@@ -35,6 +37,7 @@ from tests.ui.helpers import (
     heard_notifications,
     settle,
     shown,
+    start,
     start_with_a_run,
     typing_box,
 )
@@ -251,3 +254,37 @@ async def test_a_group_opened_read_only_says_when_it_was_saved_and_that_the_grou
                 heard.clear()
     finally:
         working.close()
+
+
+def _help_text(app: LabApp) -> str:
+    """What F1's screen says, its paragraphs and its list of keys, as plain text."""
+    screen = app.screen
+    assert isinstance(screen, HelpScreen)
+    paras = [str(w.render()) for w in screen.query(".para")]
+    return "\n".join([*paras, screen.query_one(KeyList).text])
+
+
+async def test_f1_says_what_to_do_on_the_screen_it_is_pressed_on(quiet):
+    """D7: F1 was the same on every screen. On the start screen it began "The left column
+    lists the lab's steps" (there is none there) and said Ctrl+Q quits with "the session
+    already saved" (there is no session yet); on a step it said nothing of that step. It now
+    begins with what to do where it is pressed."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+        await burst(pilot, "f1")
+        await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
+        said = _help_text(app)
+        assert said.startswith("Now: type the group's names and press Enter"), said
+        assert "left column" not in said
+        assert "already saved" not in said
+        await burst(pilot, "escape")
+        await settle(pilot, lambda: isinstance(app.screen, StartScreen))
+        await start(pilot)
+        await goto(pilot, "task12")
+        await burst(pilot, "f1")
+        await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
+        said = _help_text(app)
+        assert said.startswith("Now: Task 12: the time constant T. What to do stands"), said
+        assert "The left column lists the lab's steps" in said
+        assert "quit (the session is already saved)" in said
