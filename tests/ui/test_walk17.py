@@ -25,14 +25,17 @@ from minseg_tui.ui.screens.help import HelpScreen, KeyList
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.screens.start import StartScreen
 from minseg_tui.ui.widgets.fields import FieldRow, field_id
+from minseg_tui.ui.widgets.prose import Prose
 from tests.classview.build import group
 from tests.seeded import Clock
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
+    TABLE,
     answering,
     burst,
     class_view,
+    enter_all,
     goto,
     heard_notifications,
     settle,
@@ -288,3 +291,24 @@ async def test_f1_says_what_to_do_on_the_screen_it_is_pressed_on(quiet):
         assert said.startswith("Now: Task 12: the time constant T. What to do stands"), said
         assert "The left column lists the lab's steps" in said
         assert "quit (the session is already saved)" in said
+
+
+async def test_the_formula_line_follows_the_tables_cursor(quiet):
+    """D8: Tasks 6-9, F7 ("u = 2.5 V: the voltage requested on the board"), then → five
+    times to the f cell: the line still explained u = 2.5 V until F7 was pressed again. It
+    now gives the formula of the cell the cursor is on; F7 there says the same."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        await goto(pilot, "table")
+        line = app.screen.query_one("#formula", Prose)
+        await burst(pilot, "f7")
+        await settle(pilot, lambda: str(line.text).startswith("u = 2.5 V"))
+        await burst(pilot, *["right"] * 5)
+        await settle(pilot)
+        moved = str(line.text)
+        assert moved.startswith("f = k_a i_ss / omega_ss"), moved
+        await burst(pilot, "f7")
+        await settle(pilot)
+        assert str(line.text) == moved
