@@ -28,7 +28,7 @@ from minseg_tui.ui.widgets.fields import FieldRow, field_id
 from minseg_tui.ui.widgets.prose import Prose
 from tests.classview.build import group
 from tests.seeded import Clock
-from tests.ui.conftest import DATE
+from tests.ui.conftest import DATE, quiet_app
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
     TABLE,
@@ -38,6 +38,8 @@ from tests.ui.helpers import (
     enter_all,
     goto,
     heard_notifications,
+    record_response_run,
+    resume,
     settle,
     shown,
     start,
@@ -312,3 +314,30 @@ async def test_the_formula_line_follows_the_tables_cursor(quiet):
         await burst(pilot, "f7")
         await settle(pilot)
         assert str(line.text) == moved
+
+
+async def test_a_j_turned_wrong_by_a_corrected_r_says_so_under_it(tmp_path):
+    """D5: a group gave J from its own T with R misread as 3.5 Ω (✓), then corrected R to
+    5.3 Ω three steps later: Task 13 turned ✗ "+55 % from … computed your way", nothing
+    saying that R changed after J was given. The verdict under J now says it."""
+    root = tmp_path / "sessions"
+    s = Session.create(root, ["Mira K", "Jonas P"], date=DATE, clock=Clock())
+    for key, text in TABLE.items():
+        s.enter(key, text)
+    s.enter("R", "3,5 ohms")
+    record_response_run(s)
+    s.enter("own.T", "50 ms")
+    computed = next(c for c in s.comparisons("task13") if c.key == "own.J").computed
+    assert isinstance(computed, float)
+    s.enter("own.J", f"{computed:.4g}")
+    assert next(c for c in s.comparisons("task13") if c.key == "own.J").right
+    s.enter("R", "5,3 ohm")
+    s.go_to("task13")
+    s.close()
+    app = quiet_app(root)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await resume(pilot)
+        await settle(pilot, lambda: shown(app, "task13"))
+        row = _row(app, "own.J")
+        await settle(pilot, lambda: "wrong" in row.message)
+        assert "R was changed from '3,5 ohms' to '5,3 ohm' after you gave it" in row.message
