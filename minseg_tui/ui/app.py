@@ -50,6 +50,7 @@ from minseg_tui.lab.saving.store import (
     SessionInfo,
     SessionsUnreadable,
     list_sessions,
+    lock_owner,
     os_reason,
 )
 from minseg_tui.lab.state.session import Session
@@ -86,7 +87,7 @@ from minseg_tui.ui.screens.boardcheck import (
 )
 from minseg_tui.ui.screens.classview import NO_WRITER, ClassScreen, ClassWriter
 from minseg_tui.ui.screens.dialog import close_dialog
-from minseg_tui.ui.screens.help import HelpScreen
+from minseg_tui.ui.screens.help import CLASS_NOW, START_NOW, HelpScreen, lab_now
 from minseg_tui.ui.screens.lab import PANEL_KEYS, RUN_REFUSED, LabScreen
 from minseg_tui.ui.screens.names import NamesScreen
 from minseg_tui.ui.screens.palette import Palette
@@ -520,11 +521,12 @@ class LabApp(App[None]):
             self.notify(
                 "opened read-only: "
                 + (session.damaged or "to look, not to change")
-                + "; nothing typed here is saved "
+                + "; nothing typed here is saved"
+                + (_as_read(session) if over_class else "")
                 + (
-                    "(Escape: back to the class view)"
+                    " (Escape: back to the class view)"
                     if over_class
-                    else "(start a new session to go on)"
+                    else " (start a new session to go on)"
                 ),
                 title="damaged session" if session.damaged else "read-only session",
                 severity="warning",
@@ -1165,8 +1167,14 @@ class LabApp(App[None]):
 
     def _help(self) -> None:
         self._store_typed()
-        if not isinstance(self.screen, HelpScreen):
-            self.push_screen(HelpScreen(KEYS))
+        screen = self.screen
+        if isinstance(screen, HelpScreen):
+            return
+        if isinstance(screen, LabScreen):
+            self.push_screen(HelpScreen(KEYS, lab_now(screen.step.title)))
+        else:
+            now = CLASS_NOW if isinstance(screen, ClassScreen) else START_NOW
+            self.push_screen(HelpScreen(KEYS, now, lab=False))
 
     async def action_stop_motor(self) -> None:
         """F2: motor off, after the keys typed before it (:meth:`stop_motor`)."""
@@ -1463,6 +1471,26 @@ class LabApp(App[None]):
         if self.session is not None:  # saved already; this releases the session's lock
             with self.session as s:
                 s.close()
+
+
+def _as_read(session: Session) -> str:
+    """What a session opened read-only from the class view shows: the session as saved at
+    its last change, and, while the group has it open in another program, that what it
+    does from now on is not shown here (walk 17's D3: the lab assistant looked at an empty
+    Summary the group had answered since)."""
+    try:
+        at = _dt.datetime.fromisoformat(session.modified).astimezone(_dt.UTC)
+        when = f" at {at:%Y-%m-%d %H:%M:%S} UTC"
+    except ValueError:
+        when = ""
+    said = f"; as saved{when}"
+    pid = lock_owner(session.folder)
+    if pid is not None:
+        said += (
+            f"; the group has it open in another minseg-tui (pid {pid}): what it does from now "
+            "on shows when you open it again"
+        )
+    return said
 
 
 def make_app(

@@ -50,6 +50,9 @@ class Key:
     written: str = ""
 
 
+QUIT_SAVED = "quit (the session is already saved)"
+"""Ctrl+Q's line in F1 in the lab; outside it, with no session open, F1 says "quit"."""
+
 KEYMAP: tuple[Key, ...] = (
     Key(KEY_NAMES["help"], "this list of keys", "f1", "help", "Help", priority=True),
     Key(
@@ -182,7 +185,7 @@ KEYMAP: tuple[Key, ...] = (
         "the command palette: go to a step, pick the run, stop...",
         label="palette",
     ),
-    Key(KEY_NAMES["quit"], "quit (the session is already saved)"),
+    Key(KEY_NAMES["quit"], QUIT_SAVED),
 )
 """Every key F1 lists, in its order, with the bindings the app makes for them."""
 

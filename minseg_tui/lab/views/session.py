@@ -241,6 +241,21 @@ _AGAINST: dict[str, str] = {
 compared with the value computed the group's way)."""
 
 
+def _R_changed_after(session: Session, key: str) -> str:
+    """Why a J the group gave turned wrong without being touched: R, which J is computed
+    from the group's way, was changed after it ("R was changed from '3,5 ohms' to '5,3 ohm'
+    after you gave it"); "" otherwise (walk 17's D5: J went from ✓ to ✗ when the group
+    corrected a misread R three steps later, and nothing said why)."""
+    if key != "own.J":
+        return ""
+    own, r = session.entry(key), session.entry("R")
+    if own is None or r is None or not r.history or not own.at or r.at <= own.at:
+        return ""
+    return (
+        f"R was changed from {r.history[-1][0].strip()!r} to {r.text.strip()!r} after you gave it"
+    )
+
+
 def under_entry(session: Session, c: Comparison) -> str:
     """The verdict on the group's value ``c`` right under its entry, after its mark: right or
     wrong, the difference from the value computed the group's way, and the least-squares
@@ -264,6 +279,10 @@ def under_entry(session: Session, c: Comparison) -> str:
         why = c.verdict.removeprefix("wrong:").strip()
         if why:
             said += f", {why}"
+        if not c.right:
+            changed = _R_changed_after(session, c.key)
+            if changed:
+                said += f"; {changed}"
     else:
         said = c.verdict or word
     if c.caveat:

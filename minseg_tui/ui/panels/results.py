@@ -346,6 +346,16 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         n = len(self.view.rises)
         self.zoom = (0 if self.zoom is None else self.zoom + delta) % n
         self._plot()
+        self._plot_in_view()
+
+    def _plot_in_view(self) -> None:
+        """The plot a key just changed, scrolled into view if it is not (walk 17's D4: at
+        80x24, once the answers are typed the plot lies above the view, and Alt+→ or F9
+        changed it there: nothing seemed to happen). The least scroll: a plot in view stays
+        where it is; the keys still go to the entry they went to."""
+        plots = self.query(ResponsePlot)
+        if plots and self.is_attached:
+            self.screen.scroll_to_widget(plots.first(), animate=False, immediate=True)
 
     def action_pick_prev(self) -> None:
         """alt+left: the previous rise."""
@@ -379,3 +389,4 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         else:
             self.zoom += 1
         self._plot()
+        self._plot_in_view()

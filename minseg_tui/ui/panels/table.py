@@ -125,10 +125,7 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
         if not self.view.rows:
             return
         table = self.query_one(DataTable)
-        r, c = table.cursor_coordinate
-        cell = self.view.rows[r][c]
-        line = self.query_one("#formula", Prose)
-        line.update(cell.formula or f"{cell.text}: measured, no formula")
+        self._say(*table.cursor_coordinate)
         if self.screen.focused is not table:
             # at once (Widget.focus waits for the app's next turn, and a layout between took
             # the table for not focused)
@@ -136,5 +133,22 @@ class TablePanel(ViewPanel[TableView], PanelKeys):
             self._showing = ()
             self.screen.refresh(layout=True)  # brought into view on the next layout
 
+    def _say(self, r: int, c: int) -> None:
+        """The formula's line: that of the cell at row ``r``, column ``c``."""
+        if self.view is None or not 0 <= r < len(self.view.rows):
+            return
+        row = self.view.rows[r]
+        if 0 <= c < len(row):
+            cell = row[c]
+            line = self.query_one("#formula", Prose)
+            line.update(cell.formula or f"{cell.text}: measured, no formula")
+
     def on_data_table_cell_selected(self, _event: DataTable.CellSelected) -> None:
         self.action_formula()
+
+    def on_data_table_cell_highlighted(self, event: DataTable.CellHighlighted) -> None:
+        """The cursor moved on the table while it has the keys (after F7): the formula's
+        line follows it (walk 17's D8: it stayed on the cell F7 was pressed on, 'u = 2.5 V'
+        under the highlighted f)."""
+        if self.screen.focused is self.query_one(DataTable):
+            self._say(event.coordinate.row, event.coordinate.column)

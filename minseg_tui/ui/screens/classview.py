@@ -139,6 +139,12 @@ def detail(k: int, g: Group) -> Text:
     return out
 
 
+def read_class(root: Path) -> ClassView:
+    """Every session under ``root`` read now (read-only) and the class judged; InputError:
+    ``root`` is not a sessions folder."""
+    return classview.judge([classread.read(folder) for folder in classview.session_folders(root)])
+
+
 class ClassTable(DataTable[Text]):
     """The class's table, one row a group: its arrows (Home, End, PgUp, PgDn) move the
     cursor as each key is read, so an Enter typed right after them opens the group they moved
@@ -198,6 +204,9 @@ class ClassScreen(Screen[None]):
         """Set when a group's row comes in or the reading ends (Enter waits for its row)."""
         self._ended = False
         """The reading has ended (every group in, or an error said in the title)."""
+        self._left = False
+        """Another screen (a group opened read-only) was shown over this one since it was
+        read: shown again, it reads the sessions again."""
 
     @property
     def done(self) -> bool:
@@ -251,6 +260,28 @@ class ClassScreen(Screen[None]):
             self.post_message(self.GroupRead(k, g))
         view = classview.judge(groups)
         self.post_message(self.ClassRead(view))
+
+    def on_screen_suspend(self) -> None:
+        self._left = True
+
+    def on_screen_resume(self) -> None:
+        if self._left and self.done:
+            # back from a group opened read-only: the groups may have worked on meanwhile in
+            # another program (walk 17's D1), so the rows are read again
+            self._left = False
+            self._read_again()
+
+    @work(thread=True, exclusive=True, group="class", name="read the class again")
+    def _read_again(self) -> None:
+        """Worker: read every session again and judge the class (the rows replaced at once
+        when it is done; the table as it was until then)."""
+        try:
+            view = read_class(self.root)
+        except InputError as exc:
+            self.post_message(self.ClassRead(None, str(exc)))
+            return
+        if self.is_attached:
+            self.post_message(self.ClassRead(view))
 
     @on(GroupRead)
     def _group_read(self, event: GroupRead) -> None:
@@ -313,7 +344,10 @@ class ClassScreen(Screen[None]):
         await self.open_group(self.groups[index].folder)
 
     def action_export_class(self) -> None:
-        """F8: the class's report into the sessions folder, once every group is read."""
+        """F8: the class's report into the sessions folder, once every group is read: the
+        sessions are read again for it, so that it holds what they hold now (walk 17's D1:
+        a group still at work in another window had moved on since the view was opened), and
+        the table shows the same rows."""
         if self.writer is None:
             self.notify(NO_WRITER, severity="error")
             return
@@ -324,11 +358,18 @@ class ClassScreen(Screen[None]):
                 severity="warning",
             )
             return
-        self._write(self.writer, self.view)
+        self._write(self.writer)
 
     @work(thread=True, exclusive=True, group="class-report", name="class report")
-    def _write(self, writer: ClassWriter, view: ClassView) -> None:
-        """Worker: write the class's report (the report's modules are slow to load)."""
+    def _write(self, writer: ClassWriter) -> None:
+        """Worker: read the sessions again, show the rows read and write the class's report
+        from them (the report's modules are slow to load)."""
+        try:
+            view = read_class(self.root)
+        except InputError as exc:
+            self.post_message(self.ClassWritten((), str(exc)))
+            return
+        self.post_message(self.ClassRead(view))
         try:
             paths = tuple(writer(view, self.root))
         except OSError as exc:

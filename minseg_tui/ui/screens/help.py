@@ -9,6 +9,8 @@ from textual.containers import VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Static
 
+from minseg_tui.lab.content.keys import KEY_NAMES
+from minseg_tui.ui.keys import QUIT_SAVED
 from minseg_tui.ui.screens.dialog import close_dialog
 from minseg_tui.ui.screens.lab import marks_legend
 
@@ -16,6 +18,33 @@ INTRO = (
     f"The left column lists the lab's steps in order ({marks_legend()}); "
     "the right shows the goal, what to do and what to type. Everything typed is saved at once."
 )
+"""What the lab screen shows (F1 there): said only there, where that column is."""
+
+START_NOW = (
+    "Now: type the group's names and press Enter to start the lab; or Tab to the saved "
+    "sessions and Enter on one to resume it. F12 opens the class view (instructors)."
+)
+"""F1 on the start screen: what to do there (walk 17's D7: it said "The left column lists
+the lab's steps", and there is none there)."""
+
+CLASS_NOW = (
+    "Now: the class view, one row a group: the arrows pick a group, Enter opens its session "
+    f"read-only, {KEY_NAMES['export']} writes the class's report, Escape goes back."
+)
+"""F1 on the class view: what to do there."""
+
+
+def lab_now(title: str) -> str:
+    """F1 on a step of the lab: the step, and where its "What to do" is."""
+    return (
+        f"Now: {title}. What to do stands at the top of the step ({KEY_NAMES['whole_todo']}: "
+        "all of it); type into the entries under it, Enter stores each. The footer shows "
+        "the keys of this step; PgDn goes on to the next one."
+    )
+
+
+QUIT = "quit"
+"""Ctrl+Q's line in F1 outside the lab (no session open there to be saved)."""
 
 
 KEY_WIDTH = 10
@@ -48,14 +77,21 @@ class HelpScreen(ModalScreen[None]):
 
     BINDINGS = [Binding("escape,f1,q", "close", "Close", priority=True)]
 
-    def __init__(self, keys: list[tuple[str, str]]) -> None:
+    def __init__(self, keys: list[tuple[str, str]], now: str = "", lab: bool = True) -> None:
+        """``now``: what to do on the screen F1 was pressed on (first); ``lab``: that screen
+        is a step of the lab (the steps' column and the saved session exist there)."""
         super().__init__()
-        self._keys = keys
+        self._now = now
+        self._lab = lab
+        self._keys = keys if lab else [(k, QUIT if d == QUIT_SAVED else d) for k, d in keys]
 
     def compose(self) -> ComposeResult:
         with VerticalScroll(id="help"):
             yield Static("Keys — Esc closes", classes="title")
-            yield Static(INTRO, classes="para")
+            if self._now:
+                yield Static(self._now, classes="para", id="help-now")
+            if self._lab:
+                yield Static(INTRO, classes="para")
             yield KeyList(self._keys, id="help-keys")
 
     async def action_close(self) -> None:

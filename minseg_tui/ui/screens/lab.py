@@ -1427,7 +1427,11 @@ class LabScreen(StatusScreen):
         verdict shown."""
         if self.readonly:
             with self.session as s:
+                stored = views.chosen(s, row.field.key)
                 row.show_result(EntryView(False, f"{views.read_only(s)}: not stored"))
+            # the list shows what the group answered, not the pick just refused (walk 17's
+            # D2: the lab assistant saw 'a signal' picked where the group had 'a system')
+            row.show_chosen(stored)
             return
         key = row.field.key
         with self.session as s:

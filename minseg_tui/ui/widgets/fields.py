@@ -168,6 +168,13 @@ class AnswerList(Widget, can_focus=False):
         self.refresh()
         return True
 
+    def show_chosen(self, indices: Iterable[int]) -> None:
+        """Show ``indices`` (0-based) as the answers picked or ticked, the cursor left where
+        it is: what the lab holds, put back after a pick it refused."""
+        chosen = tuple(sorted(set(indices)))
+        self._chosen = chosen if self.multiple else chosen[:1]
+        self.refresh()
+
     KEYS: tuple[str, ...] = ("down", "right", "up", "left", "home", "end", "space", "enter")
     """The keys :meth:`press` takes."""
 
@@ -835,6 +842,15 @@ class FieldRow(Vertical):
             if form is not None:
                 form.chose(self, indices)
 
+    def show_chosen(self, indices: tuple[int, ...]) -> None:
+        """Show ``indices`` (0-based) as the answers the lab holds for this row, without
+        handing them to the lab: a pick the lab refused (a session opened read-only) is put
+        back on screen."""
+        self._chosen = indices
+        answers = self.answers
+        if answers is not None:
+            answers.show_chosen(indices)
+
     @property
     def message(self) -> str:
         """The message shown under the box (plain text)."""
@@ -1324,6 +1340,10 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
             if not row.input.disabled:
                 self._own(event)
                 row.input.type_text(event.character)
+                if row._cut_off(row.input):
+                    # typed into an entry out of view (F9 or Alt+→ scrolled the step to
+                    # its plot, walk 17's D4): the entry comes back into view
+                    self.screen.scroll_to_widget(row, animate=False)
             return
         if self.typing_row() is not None:
             self._own(event)
