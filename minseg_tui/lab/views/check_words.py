@@ -175,17 +175,29 @@ def simulated(r: CheckResult) -> str:
     )
 
 
-def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
+def steps_down(u: ArrayLike | None) -> bool:
+    """The run's input ``u`` (V, one value per row) has a step down (its size falls at an
+    edge); False when it cannot be read."""
+    if u is None:
+        return False
+    a = np.abs(np.asarray(u, dtype=float))
+    return bool(a.size > 1 and np.any(a[1:] < a[:-1]))
+
+
+def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True, down: bool = False) -> str:
     """Why the check's first-order ``T`` (s) is not the program's least-squares reading of
     the same run, ``T_ls`` (s) and ``K_ls`` (rad/s/V), the one Tasks 11-12 show beside the
-    group's own values: whose reading it is, said so that no one takes it for the group's."""
+    group's own values: whose reading it is, said so that no one takes it for the group's.
+    ``down``: the run has a step down (:func:`steps_down`), said as fitted too (walk 16's
+    D8: "steps down included" on an EV3 log with one step up and none down)."""
     where = " over its rises" if rising else ""
+    included = ", steps down included" if down else ""
     return (
         "The program's least-squares reading of the run used in Tasks 11-12 (not the group's "
         f"own values) gives T = {format_constant(T_ls, 's')} and "
         f"K = {format_value(K_ls, 'rad/s/V')}: "
         f"it fits the wheel's angle{where}, allowing for the moment each sample was taken, while "
-        "the model check fits the speed over the whole run, steps down included; here the "
+        f"the model check fits the speed over the whole run{included}; here the "
         f"two T differ by {format_value(100.0 * abs(T / T_ls - 1.0), '', 2)} %."
     )
 
@@ -392,8 +404,12 @@ def close_up_title(r: CheckResult) -> str:
     cu = r.close_up
     if cu is None:
         return "the whole log"
+    # a log whose time starts before 0 (the EV3's at -0.1 s): "-0.100-0.480 s" read as a
+    # span from 0.100 s
+    to = " to " if cu.t0 < 0 else "-"
     return (
-        f"close-up {format_value(cu.t0, '', 3)}-{format_value(cu.t1, 's', 3)}: {close_up_what(cu)}"
+        f"close-up {format_value(cu.t0, '', 3)}{to}{format_value(cu.t1, 's', 3)}: "
+        f"{close_up_what(cu)}"
     )
 
 
@@ -483,6 +499,7 @@ def _lead_plain(r: CheckResult) -> str:
         else f"{_n(b)} {unit} for the simple model"
     )
     them = "the models" if named else "the model"
+    get = "get" if named else "gets"  # walk 16's D8: "what the model get wrong"
     if g.kind == "turning":
         here = (
             f"It leads here because the wheel stands still in {g.still} of {g.rows} rows, "
@@ -492,7 +509,7 @@ def _lead_plain(r: CheckResult) -> str:
     elif g.kind == "noisy":
         here = (
             f"It leads here because the speed error ({g.error:.3g} rad/s rms) is mostly the "
-            f"speed's own noise ({g.noise:.3g} rad/s), which hides what {them} get wrong."
+            f"speed's own noise ({g.noise:.3g} rad/s), which hides what {them} {get} wrong."
         )
     elif g.kind == "heldout":
         here = "It leads here because this run has steps to leave out."
@@ -510,7 +527,8 @@ def _lead_plain(r: CheckResult) -> str:
     elif g.kind == "small_noise":
         here = (
             f"It leads here because the speed's noise ({g.noise:.3g} rad/s rms) is small "
-            f"against the errors, so the plain average tells {them} apart."
+            "against the errors, so the plain average "
+            + ("tells the models apart." if named else "shows how far the model is off.")
         )
     else:
         here = "It leads here because the noise of this speed is not known."

@@ -1289,7 +1289,13 @@ def check(session: Session) -> CheckView:
     st = res.identification.step if res.identification is not None else None
     T = r.baseline.params.get("T")
     two_fits = (
-        check_words.two_fits(T, st.T, st.K, rising=st.fit.method == "rising_steps")
+        check_words.two_fits(
+            T,
+            st.T,
+            st.K,
+            rising=st.fit.method == "rising_steps",
+            down=check_words.steps_down(u),
+        )
         if st is not None and st.T and T is not None and res.run == mc.run
         else ""
     )
