@@ -9,7 +9,9 @@ the speed "over the whole run, steps down included" on a log with no step down, 
 report said the same. The close-up's span "-0.100-0.480 s" read as one from 0.100 s. On the
 rtl brake log a second lag of 165 ms was put down to "the current builds up in the
 winding" (a small motor's builds up within a few ms; the story already said "a slow second
-lag")."""
+lag"). Walking the ten logs again at 80x24: on the two rtl logs (a tachometer's smooth speed,
+the angle its sum) the angle's figure said "drifts from the one the encoder counted"; on the
+micromouse log at 100/255 an 18 ms delay "cannot be told from a slow current build-up"."""
 
 from __future__ import annotations
 
@@ -117,3 +119,13 @@ async def test_a_slow_second_lag_is_not_put_down_to_the_winding(quiet):
             "too late for the current in the winding, which in a small motor builds up within "
             "a few ms" in details
         ), details
+        # a tachometer's smooth speed: its angle is not "the one the encoder counted"
+        assert "counted in encoder steps (a tachometer" in details
+        assert "encoder counted" not in details, details
+        assert "drifts from the logged angle: 11.0 → 0.235 rad" in details, details
+        # a delay the run cannot tell from a second lag: not "a slow current build-up"
+        story = await _import(pilot, REAL / "micromouse-n20-duty100" / "step.csv", "imported-2")
+        said = _flat(story.text)
+        assert "the motor answers about 18 ms after the command" in said, said
+        assert "This run cannot tell it from a second lag." in said, said
+        assert "current build-up" not in said, said

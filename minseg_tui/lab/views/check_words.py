@@ -256,6 +256,13 @@ everyday and short: not the winding's current build-up, which no small motor mak
 slow."""
 
 
+UNFITTED: dict[str, str] = {"second_pole": "a second lag"}
+"""A cause the run cannot tell the named one from, in words that claim nothing its fit did not
+show: a second pole's time is not known there, and "a slow current build-up" (the winding's)
+was said on a micromouse log where it would stand in for an 18 ms delay, far longer than a
+small motor's winding takes (:data:`~minseg_tui.lab.views.check_says.WINDING_LAG_MAX`)."""
+
+
 def everyday(r: CheckResult) -> str:
     """The cause of ``r`` in everyday words, true of this log: dry friction by what the log
     shows of it (a stop, or settled speeds), a delay with its size, a second pole by where it
@@ -349,7 +356,7 @@ def _cause(r: CheckResult) -> str:
     if also:
         text += f" The check finds {' and '.join(also)} too."
     alike = [
-        " with ".join(SHORT.get(c, c) for c in group)
+        " with ".join(UNFITTED.get(c, SHORT.get(c, c)) for c in group)
         for group in f.ambiguous_with
         if group and group[0] != "none"
     ]
@@ -458,6 +465,25 @@ MEANS: dict[str, FigureMeans] = {
 """Each gain figure (by :func:`~minseg_tui.lab.views.check_text.stem`) told to a student:
 what it measures and why it matters."""
 
+LOGGED_ANGLE = FigureMeans(
+    "how far the model's wheel angle drifts from the logged angle",
+    "the angle adds up the speed over the run, so small speed errors that add up show there "
+    "even where the speed's noise hides them",
+)
+"""The angle's figure told to a student when the log's speed is smooth, not counted in
+encoder steps (a tachometer's: the rtl logs' angle is their speed added up, and "the one the
+encoder counted" was not true of them)."""
+
+
+def means(r: CheckResult, key: str) -> FigureMeans | None:
+    """What gain figure ``key`` (a :func:`~minseg_tui.lab.views.check_text.stem`) measures and
+    why it matters, for the log of ``r`` (None: a figure :data:`MEANS` does not tell)."""
+    smooth = r.sampling is not None and r.sampling.smooth and r.sampling.resolution is None
+    if key == "angle_rms" and smooth:
+        return LOGGED_ANGLE
+    return MEANS.get(key)
+
+
 PARAM_MEANS: dict[str, str] = {
     "T": "the time constant",
     "K": "the static gain",
@@ -491,8 +517,9 @@ def _lead_plain(r: CheckResult) -> str:
         return ""
     unit = figure_words(key).unit
     named = r.finding.cause != "none" and e is not None
-    means = MEANS.get(key, FigureMeans(figure_words(key).name, ""))
-    what = f"{means.what} (the {figure_words(key).name})" if key in MEANS else means.what
+    told = means(r, key)
+    said = told or FigureMeans(figure_words(key).name, "")
+    what = f"{said.what} (the {figure_words(key).name})" if told else said.what
     values = (
         f"{_n(b)} {unit} with the simple model, {_n(e)} {unit} with the extended one"
         if named and e is not None
@@ -532,7 +559,7 @@ def _lead_plain(r: CheckResult) -> str:
         )
     else:
         here = "It leads here because the noise of this speed is not known."
-    why = f" It matters because {means.why}." if means.why else ""
+    why = f" It matters because {said.why}." if said.why else ""
     return f"The figure that means most for this run: {what}: {values}.{why} {here}"
 
 
@@ -592,7 +619,8 @@ def _others_plain(r: CheckResult) -> str:
         if b is None or (b == 0 and not e):
             continue
         unit = figure_words(key).unit
-        what = MEANS[key].what if key in MEANS else figure_words(key).name
+        told = means(r, key)
+        what = told.what if told else figure_words(key).name
         said.append(
             f"{what}: {_n(b)} → {_n(e)} {unit}"
             if named and e is not None
