@@ -407,6 +407,8 @@ class StepPane(FieldForm):
         revealing, self._revealing = self._revealing, False
         panel = self.panel
         reading = isinstance(panel, ResultsPanel) and panel.zoom is not None
+        if self._keep_after_rows_in_view():
+            return
         if event.reveal is None or (revealing and reading):
             self._keep_entry_in_view()
         elif not self._reveal_with_entry(event.reveal):
@@ -449,6 +451,21 @@ class StepPane(FieldForm):
                 self.call_after_refresh(place, False)
 
         self.call_after_refresh(place, True)
+        return True
+
+    def _keep_after_rows_in_view(self) -> bool:
+        """The widget the panel sets under the entries (the model check's box to load a log,
+        :meth:`~minseg_tui.ui.panels.view_panel.ViewPanel.after_rows`), while it has the keys
+        and the group has not scrolled away: brought into view whole, the line that answers
+        under it too, once the screen is laid out (False: it has not the keys). Ctrl+P
+        "Import a run log" lands in it at once, before the check's view is drawn above it:
+        at 80x24 the box then sat 30 rows below the screen with the keys in it."""
+        panel = self.panel
+        after = panel.after_rows() if isinstance(panel, ViewPanel) else None
+        if after is None or not after.is_attached or not after.has_focus_within:
+            return False
+        if self._keep != "scrolled":
+            after.call_after_refresh(self.scroll_to_widget, after, animate=False, immediate=True)
         return True
 
     @on(FieldRow.Reflowed)
@@ -742,6 +759,7 @@ class StepPane(FieldForm):
             return
         for w in self.query(what):
             self.screen.set_focus(w)
+        self._keep_after_rows_in_view()  # (a widget just mounted is not laid out yet)
 
 
 class StepList(OptionList, can_focus=False):
