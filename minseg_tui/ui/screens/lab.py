@@ -612,6 +612,19 @@ class StepPane(FieldForm):
         return heading.rows(self.scrollable_content_region.width)
 
     @property
+    def title_bottom(self) -> int:
+        """The screen row under the step's title as shown (the heading's while the step is
+        scrolled down, else the step's own; 0 when neither is on screen): no notice is
+        drawn above it (walk 16's D7)."""
+        heading, text = self._heading, self._text
+        shown = heading.title if heading is not None and heading.display else None
+        if shown is None and text is not None:
+            shown = text[1]
+        if shown is None or not shown.region:
+            return 0
+        return max(shown.region.bottom, 0)
+
+    @property
     def heading_rows(self) -> int:
         """Rows the heading covers at the top of the step (0 while it is hidden)."""
         heading = self._heading
@@ -1052,6 +1065,18 @@ class LabScreen(StatusScreen):
             above = min(r.y for r in kept)  # rows over them, the status line's included
             below = self.size.height - max(r.bottom for r in kept)
             low = above > below
+        # on top, the notices start under the step's title, which they hid at 80x24 (walk
+        # 16's D7: "Task 4: u_ss and omega_▌ set a voltage first (F3)"): its first row is
+        # the status line's, kept by the notice's own margin
+        rack = (
+            self.query_children("ToastRack").first() if self.query_children("ToastRack") else None
+        )
+        if rack is not None and low and pane is not None:
+            margin = max(pane.title_bottom - 1, 0)
+            if rack.styles.margin.top != margin:
+                rack.styles.margin = (margin, 0, 0, 0)
+        elif rack is not None and rack.styles.inline.has_rule("margin"):
+            rack.styles.clear_rule("margin")  # at the bottom: Textual's, which keeps the footer
         if low != self.has_class("-notices-top"):
             self.set_class(low, "-notices-top")
             return  # the notices move: looked at again once laid out there
