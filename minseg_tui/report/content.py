@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from datetime import datetime, timedelta
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import identify_says
@@ -604,9 +605,12 @@ def _model_check_figures(name: str, r: CheckResult, log: RunLog | None) -> Figur
     return Figures((whole, close))
 
 
-def _two_fits(session: Session, run: str | None, params: dict[str, float]) -> list[str]:
+def _two_fits(
+    session: Session, run: str | None, params: dict[str, float], u: ArrayLike | None
+) -> list[str]:
     """Why the model check's first-order T and K are not the program's least-squares reading
-    used in Tasks 11-12 when both come from the same run (one sentence, or none)."""
+    used in Tasks 11-12 when both come from the same run (one sentence, or none); ``u``: the
+    run's input (V), None when it cannot be read."""
     res = session.results()
     ident = res.identification
     if run is None or res.run != run or ident is None or ident.step is None:
@@ -615,7 +619,15 @@ def _two_fits(session: Session, run: str | None, params: dict[str, float]) -> li
     T, K = params.get("T"), params.get("K")
     if T is None or K is None or not st.T:
         return []
-    return [check_words.two_fits(T, st.T, st.K, rising=st.fit.method == "rising_steps")]
+    return [
+        check_words.two_fits(
+            T,
+            st.T,
+            st.K,
+            rising=st.fit.method == "rising_steps",
+            down=check_words.steps_down(u),
+        )
+    ]
 
 
 CHECK_NOTES = "model_check.notes"
@@ -657,7 +669,7 @@ def _model_check_section(session: Session) -> Section | None:
     sec.blocks.append(_model_check_figures(mc.run, r, log))
     # the details as the screen's fold gives them, each figure with what it measures and
     # why it matters; here the intervals too, and the figures in a table
-    told = check_words.details(r, "".join(_two_fits(session, mc.run, r.baseline.params)), True)
+    told = check_words.details(r, "".join(_two_fits(session, mc.run, r.baseline.params, u)), True)
     details = Fold("Details")
     details.blocks.extend(told.said)
     e, named = r.extended, r.finding.cause != "none"

@@ -103,19 +103,20 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
         assert all(r.f is not None and r.f > 0 for r in rows)
         shown = str(app.screen.query_one("#results").render())
         assert "k_v = " in shown and "k_a = " in shown
-        # Task 10: the square wave on the board, recorded as it arrives
+        # Task 10: the square wave on the board, recorded as it arrives. The procedure is
+        # watched by a thread, as the stream's thread feeds it (the unplug test's pattern):
+        # the app's own thread, which checks only between its messages, can hear that a run
+        # began only after it has ended on a busy machine (stop 37), and a wait for
+        # app.recording would then never end
         await goto(pilot, "task10")
-        await pilot.press("f5")
         # the motor stops; the run starts once the wheel stands (the board's clock decides)
-        await heard.until(pilot, lambda: app.recording is not None)
-        await heard.until(pilot, lambda: app.recording is None)
+        await _run_to(pilot, heard, "f5")
+        await heard.until(pilot, lambda: app.task10 is None)  # the app has taken the run in
         with app.session as s:
             run = s.runs[-1]
         assert run.kind == "steps" and 440 <= run.samples <= 520
-        await pilot.press("f6")
-        await heard.until(pilot, lambda: app.recording is not None)
         # two of its four periods (5 s at 5 ms): two rising steps for Tasks 11-15
-        await heard.until(pilot, lambda: app.recording is None or app.recording.samples >= 1000)
+        await _run_to(pilot, heard, "f6", samples=1000)
         await pilot.press("f2")  # stop safely: motor off, what was recorded is kept
         assert app.recording is None and app.motor == "off"
         with app.session as s:
@@ -152,26 +153,57 @@ async def test_whole_lab_on_the_virtual_minseg(tmp_path):
     assert (Path(folder) / run.file).exists()
 
 
-def _pull_at(app, name: str, samples: int, seen: list[Task10], done: threading.Event) -> None:
-    """Pull the named board's cable once the Task 10 procedure's run holds ``samples``
-    samples (not at all when the procedure ended first: the test then fails on its
-    outcome); the procedure is put in ``seen`` as soon as F5 made it. Polls the app's
-    procedure, which the stream's thread feeds as the board sends, every 2 ms of host time,
-    until ``done``; the board's clock pauses while the process is stalled, so a busy
-    machine makes this slower, never late."""
+def _watch(app, samples: int | None, seen: list[Task10], done: threading.Event) -> None:
+    """Put the Task 10 procedure in ``seen`` as soon as a key made it, then return once it
+    has ended, or its run holds ``samples`` samples (None: once it has ended), or ``done``
+    is set. Polls the app's procedure, which the stream's thread feeds as the board sends,
+    every 2 ms of host time."""
     while not done.is_set() and app.task10 is None:
         time.sleep(0.002)
     task = app.task10
     if task is None:
         return
     seen.append(task)
-    while (
-        not done.is_set()
-        and task.outcome is None
-        and (task.run is None or task.run.samples < samples)
-    ):
+    while not done.is_set() and task.outcome is None:
+        run = task.run
+        if samples is not None and run is not None and run.samples >= samples:
+            break
         time.sleep(0.002)
-    if task.outcome is None and not done.is_set():
+
+
+async def _run_to(pilot, heard: Heard, key: str, samples: int | None = None) -> Task10:
+    """Press ``key`` (F5, F6) and wait until the procedure it starts has ended, or its run
+    holds ``samples`` samples, as a thread watching the procedure sees it (:func:`_watch`):
+    the procedure."""
+    seen: list[Task10] = []
+    done, reached = threading.Event(), threading.Event()
+
+    def watch() -> None:
+        try:
+            _watch(pilot.app, samples, seen, done)
+        finally:
+            reached.set()
+
+    watcher = threading.Thread(target=watch, daemon=True)
+    watcher.start()
+    try:
+        await pilot.press(key)
+        await heard.until(pilot, reached.is_set)
+    finally:
+        done.set()
+        watcher.join()
+    assert seen, f"{key} made no Task 10 procedure"
+    return seen[0]
+
+
+def _pull_at(app, name: str, samples: int, seen: list[Task10], done: threading.Event) -> None:
+    """Pull the named board's cable once the Task 10 procedure's run holds ``samples``
+    samples (not at all when the procedure ended first: the test then fails on its
+    outcome); the procedure is put in ``seen`` as soon as F5 made it (:func:`_watch`). The
+    board's clock pauses while the process is stalled, so a busy machine makes this slower,
+    never late."""
+    _watch(app, samples, seen, done)
+    if seen and seen[0].outcome is None and not done.is_set():
         named_board(name).unplug()
 
 

@@ -808,6 +808,12 @@ def _pole_plain(f: fx.Pole, claim: str) -> str:
         )
     elif f.way == "driver":
         where = f"a lag of {_ms(f.t2)} in the driver: its output follows the command late"
+    elif f.t2 > WINDING_LAG_MAX:  # walk 16's D8 pass: 165 ms (rtl brake), 285 ms (UBC 9 V)
+        where = (
+            f"a second, slow lag, T2 = {_ms(f.t2)}: the torque follows the voltage that much "
+            "later, too late for the current in the winding, which in a small motor builds up "
+            "within a few ms"
+        )
     elif f.way == "ringing":
         where = (
             "the current builds up in the winding as the speed does, a second time constant "

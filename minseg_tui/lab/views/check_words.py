@@ -175,17 +175,29 @@ def simulated(r: CheckResult) -> str:
     )
 
 
-def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True) -> str:
+def steps_down(u: ArrayLike | None) -> bool:
+    """The run's input ``u`` (V, one value per row) has a step down (its size falls at an
+    edge); False when it cannot be read."""
+    if u is None:
+        return False
+    a = np.abs(np.asarray(u, dtype=float))
+    return bool(a.size > 1 and np.any(a[1:] < a[:-1]))
+
+
+def two_fits(T: float, T_ls: float, K_ls: float, rising: bool = True, down: bool = False) -> str:
     """Why the check's first-order ``T`` (s) is not the program's least-squares reading of
     the same run, ``T_ls`` (s) and ``K_ls`` (rad/s/V), the one Tasks 11-12 show beside the
-    group's own values: whose reading it is, said so that no one takes it for the group's."""
+    group's own values: whose reading it is, said so that no one takes it for the group's.
+    ``down``: the run has a step down (:func:`steps_down`), said as fitted too (walk 16's
+    D8: "steps down included" on an EV3 log with one step up and none down)."""
     where = " over its rises" if rising else ""
+    included = ", steps down included" if down else ""
     return (
         "The program's least-squares reading of the run used in Tasks 11-12 (not the group's "
         f"own values) gives T = {format_constant(T_ls, 's')} and "
         f"K = {format_value(K_ls, 'rad/s/V')}: "
         f"it fits the wheel's angle{where}, allowing for the moment each sample was taken, while "
-        "the model check fits the speed over the whole run, steps down included; here the "
+        f"the model check fits the speed over the whole run{included}; here the "
         f"two T differ by {format_value(100.0 * abs(T / T_ls - 1.0), '', 2)} %."
     )
 
@@ -242,6 +254,13 @@ SLOW_LAG = (
 """A pole of the drive longer than :data:`~minseg_tui.lab.views.check_says.WINDING_LAG_MAX`,
 everyday and short: not the winding's current build-up, which no small motor makes that
 slow."""
+
+
+UNFITTED: dict[str, str] = {"second_pole": "a second lag"}
+"""A cause the run cannot tell the named one from, in words that claim nothing its fit did not
+show: a second pole's time is not known there, and "a slow current build-up" (the winding's)
+was said on a micromouse log where it would stand in for an 18 ms delay, far longer than a
+small motor's winding takes (:data:`~minseg_tui.lab.views.check_says.WINDING_LAG_MAX`)."""
 
 
 def everyday(r: CheckResult) -> str:
@@ -337,7 +356,7 @@ def _cause(r: CheckResult) -> str:
     if also:
         text += f" The check finds {' and '.join(also)} too."
     alike = [
-        " with ".join(SHORT.get(c, c) for c in group)
+        " with ".join(UNFITTED.get(c, SHORT.get(c, c)) for c in group)
         for group in f.ambiguous_with
         if group and group[0] != "none"
     ]
@@ -392,8 +411,12 @@ def close_up_title(r: CheckResult) -> str:
     cu = r.close_up
     if cu is None:
         return "the whole log"
+    # a log whose time starts before 0 (the EV3's at -0.1 s): "-0.100-0.480 s" read as a
+    # span from 0.100 s
+    to = " to " if cu.t0 < 0 else "-"
     return (
-        f"close-up {format_value(cu.t0, '', 3)}-{format_value(cu.t1, 's', 3)}: {close_up_what(cu)}"
+        f"close-up {format_value(cu.t0, '', 3)}{to}{format_value(cu.t1, 's', 3)}: "
+        f"{close_up_what(cu)}"
     )
 
 
@@ -442,6 +465,25 @@ MEANS: dict[str, FigureMeans] = {
 """Each gain figure (by :func:`~minseg_tui.lab.views.check_text.stem`) told to a student:
 what it measures and why it matters."""
 
+LOGGED_ANGLE = FigureMeans(
+    "how far the model's wheel angle drifts from the logged angle",
+    "the angle adds up the speed over the run, so small speed errors that add up show there "
+    "even where the speed's noise hides them",
+)
+"""The angle's figure told to a student when the log's speed is smooth, not counted in
+encoder steps (a tachometer's: the rtl logs' angle is their speed added up, and "the one the
+encoder counted" was not true of them)."""
+
+
+def means(r: CheckResult, key: str) -> FigureMeans | None:
+    """What gain figure ``key`` (a :func:`~minseg_tui.lab.views.check_text.stem`) measures and
+    why it matters, for the log of ``r`` (None: a figure :data:`MEANS` does not tell)."""
+    smooth = r.sampling is not None and r.sampling.smooth and r.sampling.resolution is None
+    if key == "angle_rms" and smooth:
+        return LOGGED_ANGLE
+    return MEANS.get(key)
+
+
 PARAM_MEANS: dict[str, str] = {
     "T": "the time constant",
     "K": "the static gain",
@@ -475,14 +517,16 @@ def _lead_plain(r: CheckResult) -> str:
         return ""
     unit = figure_words(key).unit
     named = r.finding.cause != "none" and e is not None
-    means = MEANS.get(key, FigureMeans(figure_words(key).name, ""))
-    what = f"{means.what} (the {figure_words(key).name})" if key in MEANS else means.what
+    told = means(r, key)
+    said = told or FigureMeans(figure_words(key).name, "")
+    what = f"{said.what} (the {figure_words(key).name})" if told else said.what
     values = (
         f"{_n(b)} {unit} with the simple model, {_n(e)} {unit} with the extended one"
         if named and e is not None
         else f"{_n(b)} {unit} for the simple model"
     )
     them = "the models" if named else "the model"
+    get = "get" if named else "gets"  # walk 16's D8: "what the model get wrong"
     if g.kind == "turning":
         here = (
             f"It leads here because the wheel stands still in {g.still} of {g.rows} rows, "
@@ -492,7 +536,7 @@ def _lead_plain(r: CheckResult) -> str:
     elif g.kind == "noisy":
         here = (
             f"It leads here because the speed error ({g.error:.3g} rad/s rms) is mostly the "
-            f"speed's own noise ({g.noise:.3g} rad/s), which hides what {them} get wrong."
+            f"speed's own noise ({g.noise:.3g} rad/s), which hides what {them} {get} wrong."
         )
     elif g.kind == "heldout":
         here = "It leads here because this run has steps to leave out."
@@ -510,11 +554,12 @@ def _lead_plain(r: CheckResult) -> str:
     elif g.kind == "small_noise":
         here = (
             f"It leads here because the speed's noise ({g.noise:.3g} rad/s rms) is small "
-            f"against the errors, so the plain average tells {them} apart."
+            "against the errors, so the plain average "
+            + ("tells the models apart." if named else "shows how far the model is off.")
         )
     else:
         here = "It leads here because the noise of this speed is not known."
-    why = f" It matters because {means.why}." if means.why else ""
+    why = f" It matters because {said.why}." if said.why else ""
     return f"The figure that means most for this run: {what}: {values}.{why} {here}"
 
 
@@ -574,7 +619,8 @@ def _others_plain(r: CheckResult) -> str:
         if b is None or (b == 0 and not e):
             continue
         unit = figure_words(key).unit
-        what = MEANS[key].what if key in MEANS else figure_words(key).name
+        told = means(r, key)
+        what = told.what if told else figure_words(key).name
         said.append(
             f"{what}: {_n(b)} → {_n(e)} {unit}"
             if named and e is not None

@@ -432,6 +432,11 @@ def read_only(session: Session) -> str:
 
 
 REVEAL_KEY = key_name("reveal")
+
+REVEALED_ON_PLOT = f"{lab_compare.REVEALED_EARLY}, {REVEAL_KEY}"
+"""Said on the plot of Tasks 11-12 beside a reading a lab assistant revealed before the group
+answered (:attr:`ResultsView.revealed`): the reveal leaves that plot in view, and the
+comparisons that say it lie below the screen at 80x24 until the group answers."""
 """The key a lab assistant presses to show a step's computed values before the group answers."""
 
 
@@ -1095,6 +1100,11 @@ class ResultsView:
     """What ``u`` is, as the plot's legend and right axis name it: u_A once the table's u_ss
     maps the requested voltage to the applied one (an imported log's u is its own), else
     the voltage requested of the board (:data:`U_REQUESTED`)."""
+    revealed: frozenset[str] = frozenset()
+    """Fields of Tasks 11-15 a lab assistant revealed before the group answered them (Ctrl+R,
+    recorded): the plot's caption says so beside the reading it shows (on Tasks 11-12 the
+    reveal leaves the plot in view, and the comparisons that say it are below the screen
+    until the group answers)."""
 
 
 TWO_T: tuple[str, ...] = ("T_short", "T_63_differs")
@@ -1234,6 +1244,7 @@ def results(session: Session, step_id: str) -> ResultsView:
         shows,
         "" if st_run is not None else lab_needs.needs(waits_for(session, "K")),
         _u_label(log),
+        frozenset(session.revealed()),
     )
 
 
@@ -1308,7 +1319,13 @@ def check(session: Session) -> CheckView:
     st = res.identification.step if res.identification is not None else None
     T = r.baseline.params.get("T")
     two_fits = (
-        check_words.two_fits(T, st.T, st.K, rising=st.fit.method == "rising_steps")
+        check_words.two_fits(
+            T,
+            st.T,
+            st.K,
+            rising=st.fit.method == "rising_steps",
+            down=check_words.steps_down(u),
+        )
         if st is not None and st.T and T is not None and res.run == mc.run
         else ""
     )

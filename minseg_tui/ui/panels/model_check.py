@@ -23,11 +23,19 @@ from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.textbox import TextBox
 
 DETAILS = "Details: what each figure means · Enter opens"
-"""The fold's title (the details follow the sentences a student reads first)."""
+"""The fold's title while shut (the details follow the sentences a student reads first)."""
+
+DETAILS_OPEN = "Details: what each figure means · Enter closes"
+"""The fold's title while open (walk 16's D8: "Enter opens" on an open fold)."""
 
 WHOLE_LOG = "measured vs models"
 """The check's plot's title when it shows the whole log (not the close-up where the cause
 acts)."""
+
+WHOLE_LOG_ONE, CLOSE_UP, CLOSE_UP_ONE = "measured vs model", "where the cause acts", "close-up"
+"""The plot's titles when the check names no cause (only the first-order model is drawn:
+walk 16's D8, a "+ ext." legend and "where the cause acts" with nothing extended), and the
+close-up's when it names one."""
 
 FOLD_SHUT, FOLD_OPEN = "+", "−"
 """Before a fold's title: shut (Enter opens it) and open. Not Textual's own "▶"/"▼": "▶" is
@@ -69,6 +77,13 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
         ):
             yield Prose("", id="check-lines")
 
+    @on(Collapsible.Expanded, "#check-details")
+    @on(Collapsible.Collapsed, "#check-details")
+    def _fold_title(self, event: Collapsible.Expanded | Collapsible.Collapsed) -> None:
+        """The fold's title says what Enter does now: opens it, or closes it."""
+        fold = event.collapsible
+        fold.title = DETAILS if fold.collapsed else DETAILS_OPEN
+
     def after_rows(self) -> Widget:
         """The box to load a log recorded elsewhere, under the step's notes."""
         return self._import
@@ -108,19 +123,20 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
             return
         check = self.query_one("#plot-check", TracePlot)
         residual = self.query_one("#plot-residual", TracePlot)
+        named = v.cause != "none"  # no cause: no extended model to draw
         if self.close_up and v.close_t.size:
             t, om, ba, ex = v.close_t, v.close_omega, v.close_baseline, v.close_extended
-            check.set_axes("where the cause acts", TIME_AXIS)
+            check.set_axes(CLOSE_UP if named else CLOSE_UP_ONE, TIME_AXIS)
             residual.set_axes("measured - model", TIME_AXIS)
         else:
             t, om, ba, ex = v.t, v.omega, v.baseline, v.extended
-            check.set_axes(WHOLE_LOG, TIME_AXIS)
+            check.set_axes(WHOLE_LOG if named else WHOLE_LOG_ONE, TIME_AXIS)
             residual.set_axes("measured - model, whole log", TIME_AXIS)
         span = (float(t[0]), float(t[-1])) if t.size > 1 else None
         # drawn in this order: the measured speed (and the first order's miss) on top
         check.show(
             [
-                Trace(t, ex, "extended", "+", colour=2, short="ext."),
+                *([Trace(t, ex, "extended", "+", colour=2, short="ext.")] if named else []),
                 Trace(t, ba, "first order", "braille", colour=1, short="1st order"),
                 Trace(t, om, "measured", "dot", colour=0, short="meas."),
             ],
@@ -134,7 +150,7 @@ class ModelCheckPanel(ViewPanel[CheckView], PanelKeys):
                 Trace([lo, hi], [v.noise, v.noise], "noise ±", "-", colour=3),
                 Trace([lo, hi], [-v.noise, -v.noise], "", "-", colour=3),
             ]
-        if v.cause != "none":
+        if named:
             traces.append(Trace(t, om - ex, "extended", "+", colour=2, short="ext."))
         traces.append(Trace(t, om - ba, "first order", "braille", colour=1, short="1st order"))
         residual.show(traces, span)

@@ -229,6 +229,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
             "the speed crosses it: read T there"
             if not read_T
             else f"the speed crosses it {format_constant(w.T_63, 's')} after the edge"
+            + (f" ({views.REVEALED_ON_PLOT})" if "own.T" in v.revealed else "")
             if w.T_63 is not None
             else "the speed never crosses it"
         )
@@ -236,10 +237,15 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
             "the line is 63 % of the change"  # the steady speed is Task 11's answer
             if "own.omega_step" in v.hidden
             else f"from {format_value(w.omega0, 'rad/s', 3)} to "
-            f"{format_value(w.omega_ss, 'rad/s', 3)}; "
-            f"63 % of the change is {format_value(w.level, 'rad/s', 3)}"
+            f"{format_value(w.omega_ss, 'rad/s', 3)}"
+            + (f" ({views.REVEALED_ON_PLOT})" if "own.omega_step" in v.revealed else "")
+            + f"; 63 % of the change is {format_value(w.level, 'rad/s', 3)}"
         )
-        if self.step.id == "task11":
+        if self.step.id == "task11" and "own.omega_step" in v.revealed:
+            # the reading revealed stands where the group is told to read it: at 80x24 the
+            # caption then keeps to the lines it had with the reading, and the plot in view
+            said = f" to the end of its high level: {change}"
+        elif self.step.id == "task11":
             read = "" if "own.omega_step" in v.hidden else f"{change}; "
             said = f" to the end of its high level: {read}read omega_ss where it has settled"
         else:

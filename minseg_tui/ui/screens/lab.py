@@ -407,6 +407,8 @@ class StepPane(FieldForm):
         revealing, self._revealing = self._revealing, False
         panel = self.panel
         reading = isinstance(panel, ResultsPanel) and panel.zoom is not None
+        if self._keep_after_rows_in_view():
+            return
         if event.reveal is None or (revealing and reading):
             self._keep_entry_in_view()
         elif not self._reveal_with_entry(event.reveal):
@@ -449,6 +451,21 @@ class StepPane(FieldForm):
                 self.call_after_refresh(place, False)
 
         self.call_after_refresh(place, True)
+        return True
+
+    def _keep_after_rows_in_view(self) -> bool:
+        """The widget the panel sets under the entries (the model check's box to load a log,
+        :meth:`~minseg_tui.ui.panels.view_panel.ViewPanel.after_rows`), while it has the keys
+        and the group has not scrolled away: brought into view whole, the line that answers
+        under it too, once the screen is laid out (False: it has not the keys). Ctrl+P
+        "Import a run log" lands in it at once, before the check's view is drawn above it:
+        at 80x24 the box then sat 30 rows below the screen with the keys in it."""
+        panel = self.panel
+        after = panel.after_rows() if isinstance(panel, ViewPanel) else None
+        if after is None or not after.is_attached or not after.has_focus_within:
+            return False
+        if self._keep != "scrolled":
+            after.call_after_refresh(self.scroll_to_widget, after, animate=False, immediate=True)
         return True
 
     @on(FieldRow.Reflowed)
@@ -593,6 +610,19 @@ class StepPane(FieldForm):
         if heading is None or not (y > 0 or heading.whole):
             return 0
         return heading.rows(self.scrollable_content_region.width)
+
+    @property
+    def title_bottom(self) -> int:
+        """The screen row under the step's title as shown (the heading's while the step is
+        scrolled down, else the step's own; 0 when neither is on screen): no notice is
+        drawn above it (walk 16's D7)."""
+        heading, text = self._heading, self._text
+        shown = heading.title if heading is not None and heading.display else None
+        if shown is None and text is not None:
+            shown = text[1]
+        if shown is None or not shown.region:
+            return 0
+        return max(shown.region.bottom, 0)
 
     @property
     def heading_rows(self) -> int:
@@ -742,6 +772,7 @@ class StepPane(FieldForm):
             return
         for w in self.query(what):
             self.screen.set_focus(w)
+        self._keep_after_rows_in_view()  # (a widget just mounted is not laid out yet)
 
 
 class StepList(OptionList, can_focus=False):
@@ -1034,6 +1065,18 @@ class LabScreen(StatusScreen):
             above = min(r.y for r in kept)  # rows over them, the status line's included
             below = self.size.height - max(r.bottom for r in kept)
             low = above > below
+        # on top, the notices start under the step's title, which they hid at 80x24 (walk
+        # 16's D7: "Task 4: u_ss and omega_▌ set a voltage first (F3)"): its first row is
+        # the status line's, kept by the notice's own margin
+        rack = (
+            self.query_children("ToastRack").first() if self.query_children("ToastRack") else None
+        )
+        if rack is not None and low and pane is not None:
+            margin = max(pane.title_bottom - 1, 0)
+            if rack.styles.margin.top != margin:
+                rack.styles.margin = (margin, 0, 0, 0)
+        elif rack is not None and rack.styles.inline.has_rule("margin"):
+            rack.styles.clear_rule("margin")  # at the bottom: Textual's, which keeps the footer
         if low != self.has_class("-notices-top"):
             self.set_class(low, "-notices-top")
             return  # the notices move: looked at again once laid out there

@@ -511,6 +511,11 @@ class TracePlot(Vertical):
         return self._canvas.traces
 
     @property
+    def plot_title(self) -> str:
+        """The title drawn above the plot."""
+        return self._canvas.plot_title
+
+    @property
     def columns(self) -> tuple[int, int] | None:
         """The first and the last column of the data area, in the plot (None: not drawn)."""
         return self._canvas.columns
