@@ -37,7 +37,12 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.steps import LEVELS
 from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import RunInfo, read_run
-from minseg_tui.lab.saving.store import RUNS_DIR, SESSION_FILE, SessionsUnreadable, names_key
+from minseg_tui.lab.saving.store import (
+    SESSION_FILE,
+    SessionsUnreadable,
+    folder_holds,
+    names_key,
+)
 from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import NO_RUN_YET, Session
@@ -767,10 +772,10 @@ def session_folders(root: Path) -> list[Path]:
     for name in names:
         folder = root / name
         try:
-            if folder.is_dir() and (
-                os.path.lexists(folder / SESSION_FILE) or (folder / RUNS_DIR).is_dir()
-            ):
-                found.append(folder)  # runs/ without its session.json: listed, as lost
+            # runs/ without its session.json: listed, as lost; a folder this user may not
+            # look into: listed, as one that cannot be read (s38 attack: it was left out)
+            if folder.is_dir() and folder_holds(folder):
+                found.append(folder)
         except OSError:
             continue
     if not found:
