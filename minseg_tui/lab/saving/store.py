@@ -257,6 +257,24 @@ def _identity_problem(data: object) -> str | None:
     return None
 
 
+def _refused(path: Path, data: object, why: str) -> str:
+    """The line for a session file this program cannot use: a newer program's is not
+    damaged, so no repair is offered (s38 attack: "repair session.json by hand")."""
+    schema = data.get("schema") if isinstance(data, dict) else None
+    if (
+        isinstance(data, dict)
+        and data.get("kind") == KIND
+        and isinstance(schema, int)
+        and not isinstance(schema, bool)
+        and schema > SCHEMA
+    ):
+        return (
+            f"was written by a newer minseg-tui (schema {schema}; this one reads schema "
+            f"{SCHEMA}); the file is left untouched: open it with the newer program"
+        )
+    return damaged_message(path, why)
+
+
 def schema_problem(data: object) -> str | None:
     """Why ``data`` is not a session of this schema (:data:`minseg_tui.lab.saving.schema.SESSION`,
     checked whole), or None when it is."""
@@ -278,7 +296,7 @@ def read_session_file(path: Path) -> dict[str, Any]:
     data = _load(path)
     why = schema_problem(data)
     if why:
-        raise SessionDamaged(str(path), None, damaged_message(path, why))
+        raise SessionDamaged(str(path), None, _refused(path, data, why))
     assert isinstance(data, dict)
     return data
 
@@ -291,7 +309,7 @@ def salvage_session_file(path: Path) -> tuple[dict[str, Any], str | None]:
     data = _load(path)
     why = _identity_problem(data)
     if why:
-        raise SessionDamaged(str(path), None, damaged_message(path, why))
+        raise SessionDamaged(str(path), None, _refused(path, data, why))
     assert isinstance(data, dict)
     broken = problem(data, SESSION)
     if broken is None:
