@@ -590,6 +590,15 @@ def run_note(run: RunInfo | None) -> str | None:
     )
 
 
+def _runs_used(session: Session) -> list[RunInfo]:
+    """The runs a row rests on: Tasks 11-15's and the model check's (once when the same)."""
+    used: list[RunInfo] = []
+    for r in (session.response_run(), session.check_run()):
+        if r is not None and all(u.name != r.name for u in used):
+            used.append(r)
+    return used
+
+
 def read_group(folder: Path) -> Group:
     """The row of the session in ``folder``, opened read-only (no lock, nothing written).
     A session that cannot be read at all gives a row that says why (``readable`` False)."""
@@ -663,6 +672,7 @@ def _row(folder: Path, session: Session) -> Group:
     if session.damaged:
         lacks = (f"damaged: {session.damaged}", *lacks)
     found = slip_list(session)
+    changed = [c for r in _runs_used(session) if (c := session.run_changed(r.name))]
     return Group(
         id=folder.name,
         folder=folder,
@@ -677,9 +687,12 @@ def _row(folder: Path, session: Session) -> Group:
         own_rows=own_rows,
         lacks=lacks,
         damaged=session.damaged,
-        flags=tuple(s.text for s in found),
+        flags=(*(s.text for s in found), *(c.text for c in changed if c.edited)),
         slipped=tuple(q.key for q in QUANTITIES if any(q.key in s.affects for s in found)),
-        notes=tuple(n for n in (run_note(session.response_run()),) if n),
+        notes=(
+            *(n for n in (run_note(session.response_run()),) if n),
+            *(c.text for c in changed if not c.edited),
+        ),
         check_on=check_on(session),
         typed={q.key: e.typed for q in QUANTITIES if q.reading and (e := session.entry(q.key))},
         unanswered=unanswered,
