@@ -14,6 +14,7 @@ import signal
 import sys
 from types import FrameType
 
+from minseg_tui.cli.output import not_stdio
 from minseg_tui.device.ptyserver import PtyServer
 from minseg_tui.device.virtual import (
     OPTIONS,
@@ -117,6 +118,9 @@ def run(args: argparse.Namespace) -> int:
     if args.link is not None:
         if not args.link:
             raise InputError("--link", None, "expected a path for the device link, got ''")
+        not_stdio(
+            args.link, "--link", "a path for the device link", "stdout holds the device's path"
+        )
         check_link_path(args.link)
     try:
         server = PtyServer(VirtualBoard(settings), link_path=args.link)

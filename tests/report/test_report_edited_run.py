@@ -21,9 +21,9 @@ def test_a_row_removed_by_hand_is_said(tmp_path, capsys):
     report = (folder / "report.md").read_text(encoding="utf-8")
     assert "| steps-1 | steps | 499 (500 recorded) | 25 ms |" in report
     assert (
-        "Run steps-1: its file runs/steps-1.csv holds 499 samples where 500 were recorded: it "
-        "was changed after the recording (edited by hand?); this report is computed from the "
-        "file as it is now."
+        "Run steps-1: its file runs/steps-1.csv was changed after the recording (edited by "
+        "hand?): it holds 499 samples where 500 were recorded; what is computed from it uses "
+        "the file as it is now."
     ) in report
 
 

@@ -911,7 +911,14 @@ def identify_refusal_words(why: IdentifyRefusal) -> str:
             return "expected a usable rising edge"
 
 
-def identify_refusal(refused: IdentifyRefused) -> InputError:
+R_IN_SESSION = "R (Task 2)"
+"""Where a session's R comes from, named in its refusal (identify names its flag, --R)."""
+
+
+def identify_refusal(refused: IdentifyRefused, r_from: str = "--R") -> InputError:
     """identify's refusal as the one-line InputError the CLI, the session and the report
-    show: where, and why."""
-    return InputError(refused.source, refused.line, identify_refusal_words(refused.why))
+    show: where, and why. ``r_from``: what a refusal of R names (the session's Task 2,
+    :data:`R_IN_SESSION`: a report or class view said "--R", a flag nobody gave; s38
+    attack, a session.json edited by hand to hold a negative R)."""
+    source = r_from if refused.source == "--R" else refused.source
+    return InputError(source, refused.line, identify_refusal_words(refused.why))

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import hashlib
 import json
 import os
 import stat
@@ -103,7 +104,9 @@ class RunInfo:
     link (gaps in seq); started: ISO time; interrupted: the run ended before its plan did (stopped, board lost,
     program closed) or was recovered after a crash; ended_by: what interrupted it, a key of
     :data:`ENDED_BY` ("" when not known: a run kept before it was recorded);
-    plan: the step plan as a dict (empty for a free run).
+    plan: the step plan as a dict (empty for a free run); sha256: the SHA-256 of the run's
+    file as it was written, hex ("" for a run recorded by an older program, which kept
+    none): :func:`changed_file` compares the file with it.
     """
 
     name: str
@@ -116,6 +119,7 @@ class RunInfo:
     interrupted: bool = False
     plan: Mapping[str, float] = field(default_factory=dict)
     ended_by: str = ""
+    sha256: str = ""
 
     @property
     def complete(self) -> bool:
@@ -142,6 +146,7 @@ class RunInfo:
             "interrupted": self.interrupted,
             "plan": dict(self.plan),
             **({"ended_by": self.ended_by} if self.ended_by else {}),
+            **({"sha256": self.sha256} if self.sha256 else {}),
         }
 
     @classmethod
@@ -158,6 +163,7 @@ class RunInfo:
             interrupted=bool(d.get("interrupted", False)),
             plan={str(k): float(v) for k, v in dict(d.get("plan") or {}).items()},
             ended_by=str(d.get("ended_by", "")),
+            sha256=str(d.get("sha256", "")),
         )
 
 
@@ -488,16 +494,19 @@ def build_log(raw: RawRun, ts: float) -> tuple[RunLog, int]:
     return log, dropped
 
 
-def write_log_atomic(path: Path, log: RunLog) -> None:
-    """Write ``log`` with :func:`minseg_tui.lab.saving.files.write_run_log`, atomically."""
+def write_log_atomic(path: Path, log: RunLog) -> str:
+    """Write ``log`` with :func:`minseg_tui.lab.saving.files.write_run_log`, atomically; the
+    SHA-256 (hex) of the bytes written."""
     path = Path(path)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.build")
     try:
         write_run_log(tmp, log)
-        atomic_write_bytes(path, tmp.read_bytes())
+        data = tmp.read_bytes()
+        atomic_write_bytes(path, data)
     finally:
         with contextlib.suppress(FileNotFoundError):
             tmp.unlink()
+    return hashlib.sha256(data).hexdigest()
 
 
 def applied_log(log: RunLog, table: Sequence[tuple[float, float]]) -> RunLog:
@@ -567,7 +576,7 @@ def keep_run(
     ts = ts_of(raw)
     log, dropped = build_log(raw, ts)
     file = f"{RUNS_DIR}/{name}.csv"
-    write_log_atomic(folder / file, log)
+    digest = write_log_atomic(folder / file, log)
     plan = raw.header.get("plan")
     return RunInfo(
         name=name,
@@ -580,6 +589,7 @@ def keep_run(
         interrupted=interrupted,
         plan={str(k): float(v) for k, v in plan.items()} if isinstance(plan, dict) else {},
         ended_by=ended_by if interrupted else "",
+        sha256=digest,
     )
 
 
@@ -588,7 +598,7 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
     if it is not one) into ``folder/runs/<name>.csv``; its record."""
     log = read_run_log(Path(path))
     file = f"{RUNS_DIR}/{name}.csv"
-    write_log_atomic(
+    digest = write_log_atomic(
         folder / file,
         RunLog(
             t=log.t,
@@ -606,4 +616,95 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
         samples=len(log),
         dropped=0,
         started=started,
+        sha256=digest,
     )
+
+
+# -- a run's file changed after it was written ------------------------------------------------
+
+
+def _file_digest(path: Path) -> tuple[tuple[int, ...], str] | None:
+    """The identity of the regular file ``path`` (device, inode, size, change times) and the
+    SHA-256 of its bytes; None when it cannot be read or is not a regular file."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
+    except OSError:
+        return None
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            return None
+        ident = (st.st_dev, st.st_ino, st.st_size, st.st_mtime_ns, st.st_ctime_ns)
+        h = hashlib.sha256()
+        while chunk := os.read(fd, 1 << 20):
+            h.update(chunk)
+        return ident, h.hexdigest()
+    except OSError:
+        return None
+    finally:
+        os.close(fd)
+
+
+@dataclass(frozen=True)
+class ChangedFile:
+    """What :func:`changed_file` says of a run's file: ``text``, one line, and ``edited``:
+    the file is known to differ from what was written (False: it cannot be checked)."""
+
+    text: str
+    edited: bool
+
+
+_said: dict[tuple[object, ...], ChangedFile | None] = {}
+""":func:`changed_file`'s line by the file's identity and the run's record: the lab's views
+ask again at every redraw, and a file unchanged on disk is not read again."""
+
+
+def changed_file(folder: Path, run: RunInfo) -> ChangedFile | None:
+    """The one rule for a run's file changed after it was written (s38 attack: the report
+    said a row deleted by hand, the class view and the lab's Tasks 11-15 did not, and an
+    edit that kept the number of rows was seen by none).
+
+    A run records the SHA-256 of its file as written (:attr:`RunInfo.sha256`); a file whose
+    bytes hash otherwise gives "run steps-1: its file runs/steps-1.csv was changed after the
+    recording (edited by hand?): ...", with the samples it holds where they differ from those
+    recorded. A run recorded by an older program has no SHA-256: a file whose samples differ
+    in number says the same, else "... cannot be checked for edits ...". None when the file
+    is as written, or cannot be read at all (the lines that read it say why). Reads the file
+    once per change on disk."""
+    path = Path(folder) / run.file
+    got = _file_digest(path)
+    if got is None:
+        return None
+    ident, digest = got
+    key = (str(path), ident, run.sha256, run.samples, run.name, run.file)
+    if key in _said:
+        return _said[key]
+    said: ChangedFile | None = None
+    if not run.sha256 or digest != run.sha256:
+        try:
+            held = len(read_run_log(path, require_step=False))
+        except InputError:
+            held = None
+        if held is not None and held != run.samples:
+            how = f"it holds {held} samples where {run.samples} were recorded"
+        elif run.sha256:
+            how = f"it holds the {run.samples} samples recorded, but not the bytes written"
+        else:
+            how = ""
+        said = (
+            ChangedFile(
+                f"run {run.name}: its file {run.file} was changed after the recording (edited "
+                f"by hand?): {how}; what is computed from it uses the file as it is now",
+                edited=True,
+            )
+            if how
+            else ChangedFile(
+                f"run {run.name}: its file {run.file} cannot be checked for edits by hand "
+                "(an older minseg-tui wrote it and kept no checksum of it)",
+                edited=False,
+            )
+        )
+    _said[key] = said
+    while len(_said) > 256:
+        del _said[next(iter(_said))]
+    return said

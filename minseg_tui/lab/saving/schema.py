@@ -361,6 +361,7 @@ RUN = Record(
         "interrupted": Flag(),
         "plan": PLAN,
         "ended_by": Text(),
+        "sha256": Text("[0-9a-f]{64}"),
     },
     rules=(_run_file,),
 )

@@ -176,6 +176,16 @@ def damaged_message(path: Path, why: str) -> str:
     )
 
 
+def not_permitted(folder: Path, exc: OSError) -> str:
+    """The line for a session folder (or its file) this user may not read: nothing is
+    damaged, so no repair is offered (s38 attack: "repair session.json by hand")."""
+    return (
+        f"cannot be read ({exc.strerror or 'Permission denied'}): this user may not read "
+        f"the folder {folder.name}; nothing in it was changed. Make it readable (chmod -R u+rwX "
+        f"{folder.name}, or as the user who made it) and open it again"
+    )
+
+
 def read_regular(path: Path, limit: int) -> bytes:
     """At most ``limit`` + 1 bytes of the regular file ``path`` (more than ``limit``: the file
     is larger). OSError when it cannot be read, and when it is not a regular file: a FIFO
@@ -205,6 +215,8 @@ def _load(path: Path) -> object:
         raw = read_regular(path, MAX_SESSION_BYTES)
     except FileNotFoundError:
         raise SessionMissing(str(path.parent), None, f"no session here (no {path.name})") from None
+    except PermissionError as exc:
+        raise SessionDamaged(str(path), None, not_permitted(path.parent, exc)) from None
     except OSError as exc:
         why = exc.strerror or type(exc).__name__
         raise SessionDamaged(
@@ -245,6 +257,24 @@ def _identity_problem(data: object) -> str | None:
     return None
 
 
+def _refused(path: Path, data: object, why: str) -> str:
+    """The line for a session file this program cannot use: a newer program's is not
+    damaged, so no repair is offered (s38 attack: "repair session.json by hand")."""
+    schema = data.get("schema") if isinstance(data, dict) else None
+    if (
+        isinstance(data, dict)
+        and data.get("kind") == KIND
+        and isinstance(schema, int)
+        and not isinstance(schema, bool)
+        and schema > SCHEMA
+    ):
+        return (
+            f"was written by a newer minseg-tui (schema {schema}; this one reads schema "
+            f"{SCHEMA}); the file is left untouched: open it with the newer program"
+        )
+    return damaged_message(path, why)
+
+
 def schema_problem(data: object) -> str | None:
     """Why ``data`` is not a session of this schema (:data:`minseg_tui.lab.saving.schema.SESSION`,
     checked whole), or None when it is."""
@@ -266,7 +296,7 @@ def read_session_file(path: Path) -> dict[str, Any]:
     data = _load(path)
     why = schema_problem(data)
     if why:
-        raise SessionDamaged(str(path), None, damaged_message(path, why))
+        raise SessionDamaged(str(path), None, _refused(path, data, why))
     assert isinstance(data, dict)
     return data
 
@@ -279,7 +309,7 @@ def salvage_session_file(path: Path) -> tuple[dict[str, Any], str | None]:
     data = _load(path)
     why = _identity_problem(data)
     if why:
-        raise SessionDamaged(str(path), None, damaged_message(path, why))
+        raise SessionDamaged(str(path), None, _refused(path, data, why))
     assert isinstance(data, dict)
     broken = problem(data, SESSION)
     if broken is None:
@@ -433,10 +463,14 @@ def _info(folder: Path) -> SessionInfo | None:
     runs/ folder is left (a session whose file was deleted: listed with what it lacks and
     what can be recovered, as the class view lists it)."""
     path = folder / SESSION_FILE
-    try:
-        if not os.path.lexists(path):
-            return _lost(folder) if (folder / RUNS_DIR).is_dir() else None
-    except OSError:
+    what = folder_holds(folder)
+    if what == "lost":
+        return _lost(folder)
+    if what == "closed":
+        return SessionInfo(
+            folder.name, folder, (), "", "", _mtime(folder), damaged=str(_closed(folder))
+        )
+    if what != "session":
         return None
     locked_by = lock_owner(folder)
     try:
@@ -458,6 +492,40 @@ def _info(folder: Path) -> SessionInfo | None:
         last_step=data["current_step"],
         modified=data["modified"],
         locked_by=locked_by,
+    )
+
+
+NEVER_A_SESSION = frozenset({"lost+found"})
+"""Folders that no program of ours made and that a plain user cannot look into (the root of
+an ext4 USB stick holds ``lost+found``): never listed as a session that cannot be read."""
+
+
+def folder_holds(folder: Path) -> str:
+    """What the folder ``folder`` of a sessions folder holds: ``session`` (a session.json),
+    ``lost`` (a session's runs/ folder without its session.json), ``closed`` (this user may
+    not look into it: listed as a session that cannot be read, never left out in silence:
+    s38 attack, ``chmod 000`` hid a group from the start screen and the class view) or ``''``
+    (no session)."""
+    try:
+        os.lstat(folder / SESSION_FILE)
+        return "session"
+    except FileNotFoundError:
+        pass
+    except PermissionError:
+        return "" if folder.name in NEVER_A_SESSION else "closed"
+    except OSError:
+        return ""
+    try:
+        return "lost" if (folder / RUNS_DIR).is_dir() else ""
+    except OSError:
+        return ""
+
+
+def _closed(folder: Path) -> SessionDamaged:
+    return SessionDamaged(
+        str(folder),
+        None,
+        not_permitted(folder, PermissionError(errno.EACCES, os.strerror(errno.EACCES))),
     )
 
 

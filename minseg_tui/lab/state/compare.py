@@ -12,6 +12,7 @@ functions apart from reading the policy file; no Textual. Units: SI (V, rad/s, s
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import tomllib
@@ -127,6 +128,15 @@ MAX_POLICY_BYTES = 64 << 10
 """The largest policy file read (a few lines are expected)."""
 
 
+def _as_toml(value: object) -> str:
+    """``value`` as lab.toml spells it ("false" in quotes, [false], 0), not as Python does
+    ('false', [False]; s38 attack); a date or a table as Python gives it."""
+    try:
+        return json.dumps(value, ensure_ascii=False)
+    except (TypeError, ValueError):
+        return str(value)
+
+
 def read_policy(sessions: Path) -> Policy:
     """The policy in ``sessions``/lab.toml (``answers_first = true|false``); answers first
     when there is no file, or when it cannot be read, or holds a name other than
@@ -159,7 +169,7 @@ def read_policy(sessions: Path) -> Policy:
         return problem(f"unknown setting {names}, expected only answers_first = true or false")
     value = data.get("answers_first", True)
     if not isinstance(value, bool):
-        return problem(f"answers_first must be true or false, got {value!r}")
+        return problem(f"answers_first must be true or false, got {_as_toml(value)}")
     return Policy(value, file=True)
 
 

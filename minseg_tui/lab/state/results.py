@@ -252,7 +252,7 @@ def _why_no_step(exc: Exception) -> str:
     lab/content/log_says.py, a table, R or log without a usable rise by lab/content/
     identify_says.py), or the fit's failure."""
     if isinstance(exc, IdentifyRefused):
-        return str(identify_says.identify_refusal(exc))
+        return str(identify_says.identify_refusal(exc, identify_says.R_IN_SESSION))
     if isinstance(exc, ZeroVoltRefusal):
         return str(zero_volt_refusal(exc))
     if isinstance(exc, LogRefused):
@@ -330,7 +330,7 @@ def compute(
         try:
             ident = identify(readings, R, None, source="table")
         except IdentifyRefused as exc2:  # the table's fault, not the run's
-            said = str(identify_says.identify_refusal(exc2))
+            said = str(identify_says.identify_refusal(exc2, identify_says.R_IN_SESSION))
             problems.append(said)
             table_problems = (*table_problems, said)
             return run_alone()

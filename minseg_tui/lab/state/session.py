@@ -69,9 +69,11 @@ from minseg_tui.lab.saving.runs import (
     FLUSH_INTERVAL,
     PARTIAL_SUFFIX,
     RESPONSE_KINDS,
+    ChangedFile,
     RawRun,
     Recorder,
     RunInfo,
+    changed_file,
     import_log,
     keep_run,
     new_name,
@@ -1216,6 +1218,16 @@ class Session:
         for r in self._runs:
             if r.name == name:
                 return read_run(self.folder, r, self.table_pairs())
+        raise KeyError(name)
+
+    def run_changed(self, name: str) -> ChangedFile | None:
+        """The line saying that run ``name``'s file is not as it was written (edited by hand?)
+        or cannot be checked (an older program kept no checksum), else None
+        (:func:`minseg_tui.lab.saving.runs.changed_file`: the one rule the lab's Tasks 11-15,
+        the report and the class view say). KeyError for an unknown run."""
+        for r in self._runs:
+            if r.name == name:
+                return changed_file(self.folder, r)
         raise KeyError(name)
 
     def response_run(self) -> RunInfo | None:

@@ -37,7 +37,12 @@ from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.steps import LEVELS
 from minseg_tui.lab.saving.kept import Kept
 from minseg_tui.lab.saving.runs import RunInfo, read_run
-from minseg_tui.lab.saving.store import RUNS_DIR, SESSION_FILE, SessionsUnreadable, names_key
+from minseg_tui.lab.saving.store import (
+    SESSION_FILE,
+    SessionsUnreadable,
+    folder_holds,
+    names_key,
+)
 from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import NO_RUN_YET, Session
@@ -585,6 +590,15 @@ def run_note(run: RunInfo | None) -> str | None:
     )
 
 
+def _runs_used(session: Session) -> list[RunInfo]:
+    """The runs a row rests on: Tasks 11-15's and the model check's (once when the same)."""
+    used: list[RunInfo] = []
+    for r in (session.response_run(), session.check_run()):
+        if r is not None and all(u.name != r.name for u in used):
+            used.append(r)
+    return used
+
+
 def read_group(folder: Path) -> Group:
     """The row of the session in ``folder``, opened read-only (no lock, nothing written).
     A session that cannot be read at all gives a row that says why (``readable`` False)."""
@@ -658,6 +672,7 @@ def _row(folder: Path, session: Session) -> Group:
     if session.damaged:
         lacks = (f"damaged: {session.damaged}", *lacks)
     found = slip_list(session)
+    changed = [c for r in _runs_used(session) if (c := session.run_changed(r.name))]
     return Group(
         id=folder.name,
         folder=folder,
@@ -672,9 +687,12 @@ def _row(folder: Path, session: Session) -> Group:
         own_rows=own_rows,
         lacks=lacks,
         damaged=session.damaged,
-        flags=tuple(s.text for s in found),
+        flags=(*(s.text for s in found), *(c.text for c in changed if c.edited)),
         slipped=tuple(q.key for q in QUANTITIES if any(q.key in s.affects for s in found)),
-        notes=tuple(n for n in (run_note(session.response_run()),) if n),
+        notes=(
+            *(n for n in (run_note(session.response_run()),) if n),
+            *(c.text for c in changed if not c.edited),
+        ),
         check_on=check_on(session),
         typed={q.key: e.typed for q in QUANTITIES if q.reading and (e := session.entry(q.key))},
         unanswered=unanswered,
@@ -767,10 +785,10 @@ def session_folders(root: Path) -> list[Path]:
     for name in names:
         folder = root / name
         try:
-            if folder.is_dir() and (
-                os.path.lexists(folder / SESSION_FILE) or (folder / RUNS_DIR).is_dir()
-            ):
-                found.append(folder)  # runs/ without its session.json: listed, as lost
+            # runs/ without its session.json: listed, as lost; a folder this user may not
+            # look into: listed, as one that cannot be read (s38 attack: it was left out)
+            if folder.is_dir() and folder_holds(folder):
+                found.append(folder)
         except OSError:
             continue
     if not found:

@@ -1226,6 +1226,9 @@ def results(session: Session, step_id: str) -> ResultsView:
     if rule.problem:
         problems.append(rule.problem)
     used = next((r for r in session.runs if r.name == res.run), None)
+    changed = session.run_changed(used.name) if used is not None else None
+    if changed is not None:  # the one rule, as the report and the class view say it
+        problems.append(changed.text)
     if used is not None and used.interrupted:
         problems.append(
             f"run {used.name} ended before its plan did ({used.interruption}; {used.samples} samples, "
