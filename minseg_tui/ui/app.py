@@ -914,6 +914,7 @@ class LabApp(App[None]):
                 "no device: the run needs the board or the virtual MinSeg", severity="error"
             )
             return
+        self._ended_unheard()  # else never told: its message would find this run in place
         if self._run_busy:
             self.notify(
                 f"a run is in progress; {key_name('stop_motor')} stops it", severity="warning"
@@ -969,6 +970,15 @@ class LabApp(App[None]):
         outcome = task.stop("done" if why == "done" else ended_by or "stopped", motor_off=False)
         if outcome is not None:
             self._task10_ended(outcome)
+
+    def _ended_unheard(self) -> None:
+        """Task 10's procedure ended on the stream's thread before this thread heard it (on a
+        busy machine it lags the board by a whole run): said now, before a key acts on a
+        run still held as recording (F5/F6, Ctrl+Q); its message, when it comes, finds it
+        told."""
+        task = self.task10
+        if task is not None and not task.active and task.outcome is not None:
+            self._task10_ended(task.outcome)
 
     def _task10_ended(self, outcome: Outcome) -> None:
         """Say how Task 10 ended, once."""
@@ -1120,6 +1130,7 @@ class LabApp(App[None]):
         screen = self._lab_screen()
         if screen is not None:
             screen.store_typed()
+        self._ended_unheard()  # not asked about a run that has ended
         rec = self.recording
         if rec is not None and not isinstance(self.screen, QuitScreen):
             self.push_screen(
