@@ -25,6 +25,7 @@ KEY_NAMES: Final = MappingProxyType(
         "export": "F8",
         "zoom_next": "F9",
         "board_check": "F10",
+        "class_view": "F12",
         "reveal": "Ctrl+R",
         "palette": "Ctrl+P",
         "quit": "Ctrl+Q",

@@ -22,7 +22,8 @@ INTRO = (
 
 START_NOW = (
     "Now: type the group's names and press Enter to start the lab; or Tab to the saved "
-    "sessions and Enter on one to resume it. F12 opens the class view (instructors)."
+    f"sessions and Enter on one to resume it. {KEY_NAMES['class_view']} opens the class view "
+    "(instructors)."
 )
 """F1 on the start screen: what to do there (walk 17's D7: it said "The left column lists
 the lab's steps", and there is none there)."""
