@@ -601,6 +601,17 @@ def keep_run(
     )
 
 
+def pasted_path(text: str) -> Path:
+    """The file named by ``text`` as typed or pasted: a name in matching quotes (a terminal
+    pastes a file dropped on it as '/home/ada/step log.csv') is taken without them, and
+    ~ expanded, unless the quoted name itself exists."""
+    path = Path(text)
+    quoted = len(text) > 1 and text[0] == text[-1] and text[0] in "'\""
+    if quoted and not os.path.lexists(path):
+        return Path(text[1:-1]).expanduser()
+    return path
+
+
 def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
     """Copy the run log at ``path`` (checked by read_run_log; InputError with file and line
     if it is not one; at once for a FIFO or a device) into ``folder/runs/<name>.csv``; its
