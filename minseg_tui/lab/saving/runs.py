@@ -522,6 +522,20 @@ def applied_log(log: RunLog, table: Sequence[tuple[float, float]]) -> RunLog:
     return RunLog(t=log.t, u=u, omega=log.omega, extra=log.extra, metadata=meta)
 
 
+def refuse_special(path: Path, expected: str) -> None:
+    """InputError at once, without a read, when ``path`` is a FIFO, a device or a socket (a
+    FIFO waited 10 s at every read: s37 attack; the palette's import of one froze the lab
+    for those 10 s: s38); ``expected``: what it should have been, for the message. A path
+    that cannot be looked at passes: the read says why."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return  # read_run_log says what is wrong (no such file, ...)
+    if not stat.S_ISREG(mode) and not stat.S_ISDIR(mode):
+        what = "a FIFO (a named pipe)" if stat.S_ISFIFO(mode) else "a device or a socket"
+        raise InputError(str(path), None, f"expected {expected}; this is {what}, not read")
+
+
 def read_run(
     folder: Path, run: RunInfo, table: Sequence[tuple[float, float]], require_step: bool = False
 ) -> RunLog:
@@ -531,13 +545,7 @@ def read_run(
     holds no step); at once, without a read, when it is not a regular file (a FIFO put in
     its place waited 10 s at every read: s37 attack)."""
     path = folder / run.file
-    try:
-        mode = os.stat(path).st_mode
-    except OSError:
-        mode = None  # read_run_log says what is wrong (no such file, ...)
-    if mode is not None and not stat.S_ISREG(mode) and not stat.S_ISDIR(mode):
-        what = "a FIFO (a named pipe)" if stat.S_ISFIFO(mode) else "a device or a socket"
-        raise InputError(str(path), None, f"expected the run's log file; this is {what}, not read")
+    refuse_special(path, "the run's log file")
     log = read_run_log(path, require_step=require_step)
     return log if run.kind == "imported" else applied_log(log, table)
 
@@ -593,9 +601,22 @@ def keep_run(
     )
 
 
+def pasted_path(text: str) -> Path:
+    """The file named by ``text`` as typed or pasted: a name in matching quotes (a terminal
+    pastes a file dropped on it as '/home/ada/step log.csv') is taken without them, and
+    ~ expanded, unless the quoted name itself exists."""
+    path = Path(text)
+    quoted = len(text) > 1 and text[0] == text[-1] and text[0] in "'\""
+    if quoted and not os.path.lexists(path):
+        return Path(text[1:-1]).expanduser()
+    return path
+
+
 def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
     """Copy the run log at ``path`` (checked by read_run_log; InputError with file and line
-    if it is not one) into ``folder/runs/<name>.csv``; its record."""
+    if it is not one; at once for a FIFO or a device) into ``folder/runs/<name>.csv``; its
+    record."""
+    refuse_special(Path(path), "a run log file")
     log = read_run_log(Path(path))
     file = f"{RUNS_DIR}/{name}.csv"
     digest = write_log_atomic(

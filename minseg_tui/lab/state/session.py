@@ -77,6 +77,7 @@ from minseg_tui.lab.saving.runs import (
     import_log,
     keep_run,
     new_name,
+    pasted_path,
     read_partial,
     read_run,
     run_header,
@@ -1505,12 +1506,14 @@ class Session:
         """Copy a run log recorded elsewhere into runs/ (checked by read_run_log; InputError
         with file and line if it is not one, SessionNotWritable if it cannot be written) for
         the model check (:meth:`check_run`); Tasks 11-15 keep their run unless the group
-        chooses it (:meth:`select_run`: walk 16, D3)."""
+        chooses it (:meth:`select_run`: walk 16, D3). A path in quotes, as a terminal pastes
+        a file dropped on it ('/home/ada/step log.csv'), is read without them when the quoted
+        name is no file (s38 attack)."""
         self._writable()
         try:
             info = import_log(
                 self.folder,
-                Path(path),
+                pasted_path(str(path)),
                 self._new_name("imported"),
                 self._clock().isoformat(timespec="seconds"),
             )
