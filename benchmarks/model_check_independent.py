@@ -1,7 +1,7 @@
 """Model-check benchmark on logs from the independent generator (tests/model/physics_gen.py).
 
     .venv/bin/python benchmarks/model_check_independent.py [--seeds 8] [--touch-seeds 8]
-        [--tuning | --fresh] [--only pairs|touches|singles] [--verbose]
+        [--tuning | --tuning2 | --fresh] [--only pairs|touches|singles] [--verbose]
 
 The generator was written from the physics alone (an electrical and a mechanical state, dry
 friction as a torque, a pole on the drive or on the measurement, dead time, four speed
@@ -11,7 +11,9 @@ on), which were used for these figures only and never while changing the check; 
 runs seeds from 0 (physics_gen.TUNING_SEEDS), the ones to look at while tuning. --fresh runs
 physics_gen.FRESH_SEEDS (903000 on: pairs 903000+, singles 903500+, hands 904000+), the same
 generator and mix, which no stop had run before stop 37; it prints counts only (no --verbose),
-and is run once at the start and once at the end of a stop's work. Every section also counts
+and is run once at the start and once at the end of a stop's work. --tuning2 runs
+physics_gen.TUNING2_SEEDS (920000 on: pairs 920000+, singles 920500+, hands 921000+), a second
+range to look at log by log while tuning, outside the held-out ones. Every section also counts
 the late steps reported: no generator here issues a command late, so each one is false.
 
 Two effects at once (every pair of the six causes): a log is
@@ -895,6 +897,7 @@ from tests.model.physics_gen import (  # noqa: E402
     CAUSES,
     FRESH_SEEDS,
     HELD_OUT_SEEDS,
+    TUNING2_SEEDS,
     TUNING_SEEDS,
     make,
 )
@@ -1070,6 +1073,11 @@ def main() -> None:
     ap.add_argument("--touch-seeds", type=int, default=8)
     ap.add_argument("--tuning", action="store_true", help="tuning seeds, not the held-out ones")
     ap.add_argument(
+        "--tuning2",
+        action="store_true",
+        help="the second tuning range (physics_gen.TUNING2_SEEDS, 920000 on), to look at log by log",
+    )
+    ap.add_argument(
         "--fresh",
         action="store_true",
         help="the fresh held-out seeds (physics_gen.FRESH_SEEDS): counts only, no --verbose",
@@ -1077,12 +1085,28 @@ def main() -> None:
     ap.add_argument("--only", choices=["pairs", "touches", "singles"])
     ap.add_argument("--verbose", action="store_true")
     a = ap.parse_args()
-    if a.fresh and (a.tuning or a.verbose):
-        ap.error("--fresh prints counts only: not with --tuning or --verbose")
+    if a.fresh and (a.tuning or a.tuning2 or a.verbose):
+        ap.error("--fresh prints counts only: not with --tuning, --tuning2 or --verbose")
+    if a.tuning and a.tuning2:
+        ap.error("one range at a time: --tuning or --tuning2")
     base = (
-        TUNING_SEEDS.start if a.tuning else FRESH_SEEDS.start if a.fresh else HELD_OUT_SEEDS.start
+        TUNING_SEEDS.start
+        if a.tuning
+        else TUNING2_SEEDS.start
+        if a.tuning2
+        else FRESH_SEEDS.start
+        if a.fresh
+        else HELD_OUT_SEEDS.start
     )
-    which = "tuning" if a.tuning else "FRESH HELD-OUT" if a.fresh else "HELD-OUT"
+    which = (
+        "tuning"
+        if a.tuning
+        else "tuning2"
+        if a.tuning2
+        else "FRESH HELD-OUT"
+        if a.fresh
+        else "HELD-OUT"
+    )
     print("seeds:", which, f"from {base}")
     if a.only in (None, "pairs"):
         pairs([base + s for s in range(a.seeds)], a.verbose)

@@ -23,7 +23,14 @@ from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.decide import Reason
 from minseg_tui.model.check.effects import BY_CAUSE
-from tests.model.physics_gen import HELD_OUT_SEEDS, TUNING_SEEDS, PhysLog, make
+from tests.model.physics_gen import (
+    FRESH_SEEDS,
+    HELD_OUT_SEEDS,
+    TUNING2_SEEDS,
+    TUNING_SEEDS,
+    PhysLog,
+    make,
+)
 
 
 @cache
@@ -51,6 +58,7 @@ def kinds(r):
 
 def test_the_generator_keeps_its_held_out_seeds_apart():
     assert not set(TUNING_SEEDS) & set(HELD_OUT_SEEDS)
+    assert not set(TUNING2_SEEDS) & (set(HELD_OUT_SEEDS) | set(FRESH_SEEDS) | set(TUNING_SEEDS))
     a, b = make(7, ("coulomb_friction",)), make(7, ("coulomb_friction",))
     assert np.array_equal(a.omega, b.omega)  # seeded
     assert a.causes["coulomb_friction"] > 0 and a.T > 0
