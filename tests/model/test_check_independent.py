@@ -1263,3 +1263,17 @@ def test_an_average_named_with_its_partner_is_not_chosen_again_from_the_average_
     assert p["taps"] == log.causes["velocity_filter"]
     assert p["delay"] == pytest.approx(log.causes["dead_time"], rel=0.05)
     assert p["T"] == pytest.approx(log.T, rel=0.05)
+
+
+def test_a_pole_beside_a_short_average_is_judged_on_the_speed_where_the_lengths_differ():
+    # tuning2 pair seed 920005: a 2-tap average with a driver's pole of 121 ms at 10 ms
+    # samples. The pole and the 2-tap average leave 11 % of the plain speed error of a
+    # 21-tap average alone, but the whitened sums of the two stride differently, and in
+    # theirs the pair was no clear gain: the average alone was named, T 12 % long
+    log = make(920005, ("velocity_filter", "second_pole"))
+    r = check(log.t, log.u, log.omega)
+    assert named(r) == ["second_pole", "velocity_filter"]
+    p = r.extended.params
+    assert p["taps"] == log.causes["velocity_filter"]
+    assert p["T2"] == pytest.approx(log.causes["second_pole"], rel=0.05)
+    assert p["T"] == pytest.approx(log.T, rel=0.05)
