@@ -874,6 +874,35 @@ s, 900003 1.94 -> 1.85 s. And the memo doubled the peak memory of a check (90000
 MB): not kept. What is left: fewer evaluations, not cheaper ones (the gate on the pairs with
 rivals and runner-up fitted in full on demand; the thrown-away second pass decided without a
 full select; warm starts), each of which moves floats and needs every set's verdicts run again.
+s38-wrong (cfc9320 -> f5479d4; changed on a new tuning range only, --tuning2: pairs
+920000-920009, looked at log by log; the fresh range run once, at the end, counts only). What
+was wrong on tuning2 (10 confidently wrong, 5 ambiguous but wrong of 150): a coast with dry
+friction named nothing (no single cause clear, so no pair fitted); a delay with a 15-tap average
+read exactly and then chosen again, by the pass that relaxes an average's noise test, as an
+average and a pole; 2-tap averages (a delay, a coast or a pole beside them) whose length the
+whitened sums picked long (8-21 taps), so the average was refused or the partner dropped; and
+parameters off within the right pair (a coast's T_coast 62 % long beside a large friction, a
+friction 10 times small beside a cap: a local valley, the pair from near the truth leaves 0.89
+of it; a cap 50 % high beside a driver's pole, taps 27 for 25 beside a cap, an average and a
+pole on the inductance trading length for T2), and a cap the ringing pair never reaches.
+Changed: the coast fitted beside each partner where nothing is clear and the first-order model
+leaves more than noise (decide._coast_partnered); the relaxed pass only where the first named no
+average (pipeline); a cause clear on the plain speed error too where the two models' averaging
+lengths differ (decide._clear); an average refused for its scatter beside chosen causes fitted
+again from 2 and 3 taps (decide._short). tuning2 pairs: right 74.7 -> 80.0 %, right or honestly
+ambiguous 90.0 -> 94.0 %, ambiguous in all 18.7 -> 16.0 %, confidently wrong 6.7 -> 4.0 % (10 ->
+6), untouched logs with a disturbance 2 -> 2; 8 verdicts changed and one right log's parameters
+moved, none lost. Fresh (--fresh --seeds 5 --touch-seeds 5, stop 37's end -> this): pairs right
+78.7 -> 80.0 %, honestly ambiguous 12.0 -> 10.7 % (right or honestly ambiguous 90.7 -> 90.7 %),
+ambiguous in all 12.0 -> 10.7 %, confidently wrong 9.3 -> 9.3 % (7 -> 7 of 75), 0 disturbances,
+0 false late steps; singles 33 of 35 named alone (params 32), as before; hands 19 of 19. The
+fresh range's confidently wrong logs are not of the kinds fixed here (which kinds is not known:
+they are not looked at); the 5 % target is met on tuning2 and the old held-out pairs, not on the
+fresh range. Old held-out (--seeds 5): pairs right 80.0 %, honestly ambiguous 14.7 %, ambiguous
+in all 16.0 %, confidently wrong 4.0 % (3 of 75), 0 disturbances, as before; touched 20 of 20.
+benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 false alarms of 10.
+The ten real logs and six probes: analyze's text byte-identical. Left on tuning2: the parameter
+misses above and the cap beside a ringing pair.
 """
 
 from __future__ import annotations
