@@ -1,7 +1,7 @@
 """Model-check benchmark on logs from the independent generator (tests/model/physics_gen.py).
 
     .venv/bin/python benchmarks/model_check_independent.py [--seeds 8] [--touch-seeds 8]
-        [--tuning | --fresh] [--only pairs|touches|singles] [--verbose]
+        [--tuning | --tuning2 | --fresh] [--only pairs|touches|singles] [--verbose]
 
 The generator was written from the physics alone (an electrical and a mechanical state, dry
 friction as a torque, a pole on the drive or on the measurement, dead time, four speed
@@ -11,7 +11,9 @@ on), which were used for these figures only and never while changing the check; 
 runs seeds from 0 (physics_gen.TUNING_SEEDS), the ones to look at while tuning. --fresh runs
 physics_gen.FRESH_SEEDS (903000 on: pairs 903000+, singles 903500+, hands 904000+), the same
 generator and mix, which no stop had run before stop 37; it prints counts only (no --verbose),
-and is run once at the start and once at the end of a stop's work. Every section also counts
+and is run once at the start and once at the end of a stop's work. --tuning2 runs
+physics_gen.TUNING2_SEEDS (920000 on: pairs 920000+, singles 920500+, hands 921000+), a second
+range to look at log by log while tuning, outside the held-out ones. Every section also counts
 the late steps reported: no generator here issues a command late, so each one is false.
 
 Two effects at once (every pair of the six causes): a log is
@@ -913,6 +915,36 @@ velocity_filter + second_pole 900004 2.99 of 6.1 s; on 900001 the wide-fence pas
 when it names fewer causes, 1.56 of 4.0 s thrown away: a gate like this one, on whether a
 cause of the chosen model stops being clear with the wider fence, is the next candidate),
 the pairs' fits and the rough thirds of the first pass.
+
+s38-wrong (cfc9320 -> f5479d4; changed on a new tuning range only, --tuning2: pairs
+920000-920009, looked at log by log; the fresh range run once, at the end, counts only). What
+was wrong on tuning2 (10 confidently wrong, 5 ambiguous but wrong of 150): a coast with dry
+friction named nothing (no single cause clear, so no pair fitted); a delay with a 15-tap average
+read exactly and then chosen again, by the pass that relaxes an average's noise test, as an
+average and a pole; 2-tap averages (a delay, a coast or a pole beside them) whose length the
+whitened sums picked long (8-21 taps), so the average was refused or the partner dropped; and
+parameters off within the right pair (a coast's T_coast 62 % long beside a large friction, a
+friction 10 times small beside a cap: a local valley, the pair from near the truth leaves 0.89
+of it; a cap 50 % high beside a driver's pole, taps 27 for 25 beside a cap, an average and a
+pole on the inductance trading length for T2), and a cap the ringing pair never reaches.
+Changed: the coast fitted beside each partner where nothing is clear and the first-order model
+leaves more than noise (decide._coast_partnered); the relaxed pass only where the first named no
+average (pipeline); a cause clear on the plain speed error too where the two models' averaging
+lengths differ (decide._clear); an average refused for its scatter beside chosen causes fitted
+again from 2 and 3 taps (decide._short). tuning2 pairs: right 74.7 -> 80.0 %, right or honestly
+ambiguous 90.0 -> 94.0 %, ambiguous in all 18.7 -> 16.0 %, confidently wrong 6.7 -> 4.0 % (10 ->
+6), untouched logs with a disturbance 2 -> 2; 8 verdicts changed and one right log's parameters
+moved, none lost. Fresh (--fresh --seeds 5 --touch-seeds 5, stop 37's end -> this): pairs right
+78.7 -> 80.0 %, honestly ambiguous 12.0 -> 10.7 % (right or honestly ambiguous 90.7 -> 90.7 %),
+ambiguous in all 12.0 -> 10.7 %, confidently wrong 9.3 -> 9.3 % (7 -> 7 of 75), 0 disturbances,
+0 false late steps; singles 33 of 35 named alone (params 32), as before; hands 19 of 19. The
+fresh range's confidently wrong logs are not of the kinds fixed here (which kinds is not known:
+they are not looked at); the 5 % target is met on tuning2 and the old held-out pairs, not on the
+fresh range. Old held-out (--seeds 5): pairs right 80.0 %, honestly ambiguous 14.7 %, ambiguous
+in all 16.0 %, confidently wrong 4.0 % (3 of 75), 0 disturbances, as before; touched 20 of 20.
+benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 false alarms of 10.
+The ten real logs and six probes: analyze's text byte-identical. Left on tuning2: the parameter
+misses above and the cap beside a ringing pair.
 """
 
 from __future__ import annotations
@@ -936,6 +968,7 @@ from tests.model.physics_gen import (  # noqa: E402
     CAUSES,
     FRESH_SEEDS,
     HELD_OUT_SEEDS,
+    TUNING2_SEEDS,
     TUNING_SEEDS,
     make,
 )
@@ -1111,6 +1144,11 @@ def main() -> None:
     ap.add_argument("--touch-seeds", type=int, default=8)
     ap.add_argument("--tuning", action="store_true", help="tuning seeds, not the held-out ones")
     ap.add_argument(
+        "--tuning2",
+        action="store_true",
+        help="the second tuning range (physics_gen.TUNING2_SEEDS, 920000 on), to look at log by log",
+    )
+    ap.add_argument(
         "--fresh",
         action="store_true",
         help="the fresh held-out seeds (physics_gen.FRESH_SEEDS): counts only, no --verbose",
@@ -1118,12 +1156,28 @@ def main() -> None:
     ap.add_argument("--only", choices=["pairs", "touches", "singles"])
     ap.add_argument("--verbose", action="store_true")
     a = ap.parse_args()
-    if a.fresh and (a.tuning or a.verbose):
-        ap.error("--fresh prints counts only: not with --tuning or --verbose")
+    if a.fresh and (a.tuning or a.tuning2 or a.verbose):
+        ap.error("--fresh prints counts only: not with --tuning, --tuning2 or --verbose")
+    if a.tuning and a.tuning2:
+        ap.error("one range at a time: --tuning or --tuning2")
     base = (
-        TUNING_SEEDS.start if a.tuning else FRESH_SEEDS.start if a.fresh else HELD_OUT_SEEDS.start
+        TUNING_SEEDS.start
+        if a.tuning
+        else TUNING2_SEEDS.start
+        if a.tuning2
+        else FRESH_SEEDS.start
+        if a.fresh
+        else HELD_OUT_SEEDS.start
     )
-    which = "tuning" if a.tuning else "FRESH HELD-OUT" if a.fresh else "HELD-OUT"
+    which = (
+        "tuning"
+        if a.tuning
+        else "tuning2"
+        if a.tuning2
+        else "FRESH HELD-OUT"
+        if a.fresh
+        else "HELD-OUT"
+    )
     print("seeds:", which, f"from {base}")
     if a.only in (None, "pairs"):
         pairs([base + s for s in range(a.seeds)], a.verbose)
