@@ -1039,7 +1039,17 @@ def sampling(s: Sampling) -> str:
             times += (
                 ": a loop without a fixed clock; the long intervals are jitter, not lost samples"
             )
-        times += f"; each row's speed is taken over {over} ({src}) and simulated so"
+        if s.coarse is not None:
+            # a coarse clock (millis()): the longer stamps are the clock's, not the count's
+            times += (
+                f"; each row's speed is taken over the nominal period ({src}) on a clock "
+                "that stamps whole ticks: a row stamped after a longer interval reads "
+                f"{100 * s.coarse:+.0f} % of the extra time above its neighbours, where a count "
+                "over that interval would read +100 %, so each row is simulated as the mean "
+                "speed over its interval"
+            )
+        else:
+            times += f"; each row's speed is taken over {over} ({src}) and simulated so"
     if s.lost:
         times += f"; {s.lost} sample(s) lost"
     if s.resolution is not None:

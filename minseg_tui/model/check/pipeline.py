@@ -125,7 +125,9 @@ def check(
         y = y.copy()
         y[:glitch] = y[glitch]
         pre[:glitch] = 0.0
-    full = Problem(t, u, y, ts, weights=pre, over_interval=samp.over_interval, smooth=samp.smooth)
+    full = Problem(
+        t, u, y, ts, weights=pre, over_interval=samp.simulated_over_interval, smooth=samp.smooth
+    )
     rng0 = ranges(t, u, ts, 0.05)
     if not glitch and _in_motion(y):
         if u[0] != 0:
