@@ -684,6 +684,7 @@ def _report(
             e_pred,
             angle_noise,
             keep,
+            ext.effects.delay,
         )
         edges = int(np.count_nonzero(np.diff(u) != 0))
         if len(late) >= dist.REPEAT_MIN and len(late) >= dist.REPEAT_SHARE * edges:
