@@ -541,7 +541,8 @@ def test_rows_lost_whole_across_a_gap_are_not_said_to_make_the_speed_jump(tmp_pa
     # speed column reads 8.98 rad/s before the 40 ms gap and after it. The simulation takes
     # the speed over the nominal period, so it expects four periods of counts in the row
     # after the gap and misses it by -27.8 rad/s; the anomaly said "the speed jumps by
-    # -27.8 rad/s and straight back, as when the logger stalls", which the log does not show.
+    # -27.8 rad/s and straight back, as when the logger stalls", which the log does not show
+    # (s37-real: then said "reads on as around it (8.98 rad/s) ... lost whole").
     src = REAL / "n20-12v-pwm25" / "step.csv"
     lines = src.read_text().splitlines()
     drop = {"5.762000", "5.772000", "5.782000"}
@@ -551,11 +552,36 @@ def test_rows_lost_whole_across_a_gap_are_not_said_to_make_the_speed_jump(tmp_pa
     path.write_text("\n".join(kept) + "\n")
     log = read_run_log(path)
     r = check(log.t, log.u, log.omega, ts=float(log.metadata["ts"]), cpr=log.declared_cpr)
-    art = [a for a in r.anomalies if a.kind == "logging_artefact"]
-    assert len(art) == 1
-    said = anomaly_words(art[0])
     i = int(np.searchsorted(log.t, 5.79))
     assert abs(log.omega[i] - log.omega[i - 1]) < 2.0  # the column runs on: one count at most
-    assert "jumps" not in said and "stalls" not in said, said
-    assert "reads on as around it (8.98 rad/s)" in said and "lost whole" in said, said
-    assert "not the wheel" in said and "left out of the fit" in said
+    # the log's clock stamps whole ms (10 or 11 ms), and its rows stamped 11 ms after the last
+    # read no faster: the check simulates each row as the mean speed over its interval (a
+    # coarse clock, REAL37's 11 ms rows), so it now expects no jump after the gap either, and
+    # has no departure to explain there: the gap is said as samples lost, nothing else
+    assert r.sampling.coarse is not None
+    assert abs(log.omega[i] - r.extended_pred[i]) < 2.0
+    assert not [a for a in r.anomalies if a.kind == "logging_artefact"]
+    for a in r.anomalies:
+        said = anomaly_words(a)
+        assert "jumps" not in said and "stalls" not in said, said
+    gap = [a for a in r.anomalies if a.kind == "gap"]
+    assert len(gap) == 1 and "about 3 sample(s) were lost" in anomaly_words(gap[0])
+
+
+def test_a_cause_just_over_the_bar_is_said_to_be_uncertain(tmp_path):
+    # ev3-large-duty100 names no cause (the best, a current cap, removes 17.5 % of the whitened
+    # residual, a cause needs 25 %); with three of its 217 rows dropped (data rows 74-76,
+    # REAL37's 'gap' variant) it names a cap at 25.3 %, and with rows 73-75 dropped none again:
+    # the share moves by points with a few rows, so a cause named 0.3 points over the bar is a
+    # toss-up, and the text says so (it said the cause as sure as any)
+    lines = (REAL / "ev3-large-duty100" / "step.csv").read_text().splitlines()
+    head = next(i for i, x in enumerate(lines) if not x.startswith("#"))
+    path = tmp_path / "ev3-gap.csv"
+    path.write_text("\n".join(lines[: head + 75] + lines[head + 78 :]) + "\n")
+    log = read_run_log(path)
+    r = check(log.t, log.u, log.omega, ts=float(log.metadata["ts"]), cpr=log.declared_cpr)
+    assert r.finding.cause == "current_limit"
+    assert 0.25 <= r.finding.evidence.reduction < 0.26
+    said = evidence(r.finding)
+    assert "only 0.3 points over the 25 % a cause needs" in said, said
+    assert "a few rows more or fewer can put it under, so the cause is uncertain" in said

@@ -125,7 +125,9 @@ def check(
         y = y.copy()
         y[:glitch] = y[glitch]
         pre[:glitch] = 0.0
-    full = Problem(t, u, y, ts, weights=pre, over_interval=samp.over_interval, smooth=samp.smooth)
+    full = Problem(
+        t, u, y, ts, weights=pre, over_interval=samp.simulated_over_interval, smooth=samp.smooth
+    )
     rng0 = ranges(t, u, ts, 0.05)
     if not glitch and _in_motion(y):
         if u[0] != 0:
@@ -728,6 +730,7 @@ def _report(
             e_pred,
             angle_noise,
             keep,
+            ext.effects.delay,
         )
         edges = int(np.count_nonzero(np.diff(u) != 0))
         if len(late) >= dist.REPEAT_MIN and len(late) >= dist.REPEAT_SHARE * edges:

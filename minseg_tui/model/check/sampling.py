@@ -5,6 +5,11 @@
   The log's header may say (``# omega_over: interval`` / ``nominal``); otherwise it is
   detected: counts make the speed (times the divisor) lie on a lattice of one count, and a
   speed divided by the nominal period rises and falls with the interval.
+- A coarse clock: stamps in whole ticks (an Arduino's millis(): intervals of 10 or 11 ms)
+  and a speed over the nominal period whose rows stamped after a longer interval read no
+  faster than their neighbours, so the count was not taken over the stamped interval; such
+  rows are simulated as the mean speed over their interval, not as the angle over it divided
+  by the nominal period (10 % fast).
 - Jitter or lost samples: a regular clock with a few intervals near 2 Ts, 3 Ts, ... lost
   samples; intervals spread widely around Ts are an irregular loop (jitter), nothing lost.
 - The speed's resolution, one count per nominal period (2 pi/cpr/ts, rad/s), from ``# cpr:``
@@ -31,6 +36,15 @@ EVEN = 0.02
 
 REGULAR = 0.05
 """A clock whose intervals spread less than this share (robust sd) is regular."""
+
+COARSE_ROWS = 10
+"""Settled rows after an uneven interval needed to tell whether a longer interval lengthens
+the count (:func:`_lengthens`); with fewer the timestamps are taken at their word."""
+
+COARSE_SHARE = 0.5
+"""A speed over the nominal period whose uneven rows read less than this share of their
+interval's excess (0: as their neighbours, 1: 10 % faster after an 11 ms interval of 10 ms)
+was counted over about the nominal period: the clock is coarse."""
 
 
 class CountFrom(Enum):
@@ -75,6 +89,18 @@ class Sampling:
     uneven: int = 0
     """How many rows follow an interval away from the nominal one (beyond ``EVEN``): what a
     detection of the speed's period has to go on."""
+    coarse: float | None = None
+    """A coarse clock (None: not one): the speed is over the nominal period, and its rows
+    stamped after an uneven interval read only this share of the interval's excess against
+    their neighbours (see :func:`_lengthens`), so the count was not taken over the stamped
+    interval. The model check then simulates each row as the mean speed over its interval."""
+
+    @property
+    def simulated_over_interval(self) -> bool:
+        """The simulation reads a row as the angle over its interval divided by that
+        interval (a speed over the real interval, or over the nominal period on a coarse
+        clock), not by the nominal period."""
+        return self.over_interval or self.coarse is not None
 
     @property
     def floor(self) -> float | None:
@@ -200,6 +226,11 @@ def sampling(
     else:
         resolution, count_from = None, CountFrom.UNKNOWN
     smooth = resolution is None and _smooth(y, u)
+    coarse = None
+    if not over and not even and regular and _ticks(dt[rel < 1.5]):
+        share, rows = _lengthens(y, rel, u)
+        if rows >= COARSE_ROWS and share < COARSE_SHARE:
+            coarse = share
     return Sampling(
         ts=ts,
         over_interval=over,
@@ -215,7 +246,43 @@ def sampling(
         cpr=cpr if count_from is CountFrom.CPR else None,
         smooth=smooth,
         uneven=int(np.count_nonzero(uneven)),
+        coarse=coarse,
     )
+
+
+COARSE_TICKS = 3
+"""A coarse clock's intervals (gaps aside) take at most this many values, to a microsecond:
+a clock that counts whole ticks (10 or 11 ms), not a loop whose lateness spreads freely."""
+
+
+def _ticks(dt: FloatArray) -> bool:
+    """The intervals ``dt`` (s) take a few values only (:data:`COARSE_TICKS`)."""
+    return 1 < np.unique(np.round(dt, 6)).size <= COARSE_TICKS
+
+
+def _lengthens(y: FloatArray, rel: FloatArray, u: FloatArray) -> tuple[float, int]:
+    """How much a longer interval lengthens a row's speed, and on how many rows that was
+    read: over the rows after an uneven interval (beyond ``EVEN``) where the input has not
+    changed for 3 rows either side and the wheel turns (the mean of those six neighbours over
+    a fifth of the top speed), the least-squares b in y_k = level_k (1 + b x_k), x_k the
+    interval's excess over the nominal period (share) and level_k the neighbours' mean. A
+    speed of counts over the stamped interval divided by the nominal period gives b = 1; a
+    count over about the nominal period, whatever the stamp, b = 0. (Means, not medians: the
+    median of a few quantised counts is biased by a count.)"""
+    n = y.size
+    if n < 8:
+        return 0.0, 0
+    x = np.concatenate(([0.0], rel - 1.0))
+    k = np.arange(3, n - 3)
+    level = np.mean(np.stack([y[k + j] for j in (-3, -2, -1, 1, 2, 3)]), axis=0)
+    same = np.array([bool(np.all(u[i - 3 : i + 4] == u[i])) for i in k.tolist()], dtype=bool)
+    top = float(np.max(np.abs(y))) or 1.0
+    ok = same & (np.abs(level) > 0.2 * top) & (np.abs(x[k]) > EVEN)
+    xx, yy, ll = x[k][ok], y[k][ok], level[ok]
+    den = float(np.dot(xx * xx, ll * ll))
+    if den <= 0.0:
+        return 0.0, 0
+    return float(np.dot(xx * ll, yy - ll)) / den, int(np.count_nonzero(ok))
 
 
 def _divides_by_interval(y: FloatArray, rel: FloatArray, u: FloatArray) -> bool:
