@@ -7,7 +7,6 @@ those: :func:`minseg_tui.lab.views.check_text.text`)."""
 from __future__ import annotations
 
 import re
-from functools import cache
 
 import numpy as np
 import pytest
@@ -16,13 +15,12 @@ from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views import check_words
 from minseg_tui.lab.views.check_says import in_words, lost_plain
 from minseg_tui.lab.views.check_text import FIGURES, figure, text
-from minseg_tui.model.check import CheckResult, check
+from minseg_tui.model.check import CheckResult
 from minseg_tui.model.check.decide import Reason
 from minseg_tui.model.check.effects import NAMES, Refusal
 from minseg_tui.model.check.result import RunnerUp
-from minseg_tui.model.synth import make_log
-from tests.model import physics_gen
-from tests.shared_data import SHARED_DATA
+from tests.lab.checked_logs import GROUP, generated, synth
+from tests.model.realcheck import REAL, analyze, on
 
 NUM = r"[0-9]+(?:\.[0-9]+)?"
 SPECIALIST = (
@@ -42,21 +40,12 @@ contract names (a parameter's symbol, u_c or T_coast, is the lab's notation and 
 the specialist's names of two causes ("averaged speed (velocity filter)", "coasting at zero
 command", the bridge that lets the wheel coast: stop 37)."""
 
-REAL = SHARED_DATA / "real-motors"
 
-
-@cache
-def _generated(seed: int, causes: tuple[str, ...]) -> tuple[physics_gen.PhysLog, CheckResult]:
-    log = physics_gen.make(seed, causes)
-    return log, check(log.t, log.u, log.omega)
-
-
-@cache
 def _real(name: str) -> tuple[np.ndarray, CheckResult]:
-    log = read_run_log(REAL / name / "step.csv")
-    ts = float(log.metadata["ts"]) if "ts" in log.metadata else None
-    r = check(log.t, log.u, log.omega, ts=ts, cpr=log.declared_cpr, omega_over=log.omega_over)
-    return np.asarray(log.u, float), r
+    """A real log's input (V) and its check as ``minseg-tui analyze`` runs it, shared with
+    tests/model/test_check_real.py (each test here is in that log's xdist group)."""
+    u = np.asarray(read_run_log(REAL / name / "step.csv").u, float)
+    return u, analyze(name)[0]
 
 
 def _said_step(text: str) -> tuple[float, float]:
@@ -67,13 +56,14 @@ def _said_step(text: str) -> tuple[float, float]:
     return float(m.group(1)), later
 
 
+@GROUP
 def test_the_first_sentence_speaks_of_its_step_not_of_the_next_one():
     """Generator seed 11 (dry friction and a pole): the close-up holds the drop at 7.09 s and
     the rise at 7.39 s after it; the sentence read "After the voltage drops ... at t = 7.090
     s, 360 ms later the wheel turns at 3.5 rad/s where the first-order model ... says 12
     rad/s", a moment after the rise, when the wheel stood still from 180 ms to 300 ms after
     the drop. It now speaks of that stop, before the next step."""
-    log, r = _generated(11, ("coulomb_friction", "second_pole"))
+    log, r = generated(11, ("coulomb_friction", "second_pole"))
     first = check_words.lead(r, log.u)[0]
     edge, later = _said_step(first)
     k = int(np.searchsorted(log.t, edge - 1e-9))
@@ -82,6 +72,7 @@ def test_the_first_sentence_speaks_of_its_step_not_of_the_next_one():
     assert "the wheel stands still" in first
 
 
+@GROUP
 @pytest.mark.parametrize(
     ("seed", "causes"),
     [
@@ -96,7 +87,7 @@ def test_the_first_sentence_speaks_of_its_step_not_of_the_next_one():
 def test_the_moment_described_is_the_one_on_the_plot(seed, causes):
     """On each log checked by eye: the speeds the first sentence gives are the measured and
     the first-order model's at the moment it names, before the next step."""
-    log, r = _generated(seed, causes)
+    log, r = generated(seed, causes)
     first = check_words.lead(r, log.u)[0]
     edge, later = _said_step(first)
     t = np.asarray(r.t)
@@ -108,11 +99,12 @@ def test_the_moment_described_is_the_one_on_the_plot(seed, causes):
     assert float(says.group(1)) == pytest.approx(abs(r.baseline_pred[k]), rel=0.06, abs=0.06)
 
 
+@GROUP
 def test_friction_seen_in_the_settled_speeds_is_not_said_to_stop_the_wheel():
     """Generator seed 13 (dry friction and a delay, the drop to 1.7 V, never to 0): the cause
     read "so the wheel stops sooner than the model says" of a wheel that never stops in the
     log; the check's evidence is the settled speeds. The words now say what the log shows."""
-    log, r = _generated(13, ("dead_time", "coulomb_friction"))
+    log, r = generated(13, ("dead_time", "coulomb_friction"))
     assert r.finding.cause == "coulomb_friction"
     said = " ".join(check_words.lead(r, log.u))
     assert "stops sooner" not in said
@@ -121,10 +113,11 @@ def test_friction_seen_in_the_settled_speeds_is_not_said_to_stop_the_wheel():
     assert float(m.group(1)) == pytest.approx(r.extended.params["u_c"], abs=0.006)
 
 
+@GROUP
 def test_a_delay_is_said_with_its_size():
     """Real log micromouse-n20-duty255 read "the motor answers a little after the command" of
     a delay of 345 ms, seven times its T; the words give the delay the check fitted."""
-    log, r = _generated(16, ("dead_time", "second_pole"))
+    log, r = generated(16, ("dead_time", "second_pole"))
     assert r.finding.cause == "dead_time"
     said = " ".join(check_words.lead(r, log.u))
     m = re.search(rf"the motor answers about ({NUM}) ms after the command", said)
@@ -132,6 +125,7 @@ def test_a_delay_is_said_with_its_size():
     assert float(m.group(1)) == pytest.approx(r.extended.params["delay"] * 1e3, abs=0.5)
 
 
+@GROUP
 def test_a_pole_is_said_where_it_acts():
     """The second pole was 'a slow current build-up' wherever it acted. On a log whose pole
     is on the measurement (generator seed 16: the speed read through a filter), the check
@@ -141,13 +135,12 @@ def test_a_pole_is_said_where_it_acts():
 
     (Stop 37: as first written this test held only the second log, whose words the change
     left as they were, so it passed on the code before it; the first log fails there.)"""
-    log = physics_gen.make(16, ("second_pole",), measured_pole=True)
-    r = check(log.t, log.u, log.omega)
+    log, r = generated(16, ("second_pole",), measured_pole=True)
     assert r.finding.cause == "second_pole"
     said = " ".join(check_words.lead(r, log.u))
     assert "Likely cause: a lag in the speed reading: the logged speed is filtered" in said
     assert "current" not in said, said
-    log, r = _generated(11, ("coulomb_friction", "second_pole"))
+    log, r = generated(11, ("coulomb_friction", "second_pole"))
     said = " ".join(check_words.lead(r, log.u))
     # the generator's winding lag here is 70 ms: more than a small motor's L/R can be, so
     # the words call it a slow second lag, not the winding's current (stop 37)
@@ -156,6 +149,7 @@ def test_a_pole_is_said_where_it_acts():
 
 
 @pytest.mark.shared_data
+@on("ubc-motor-9V")
 def test_a_pole_of_hundreds_of_ms_is_not_put_down_to_the_winding():
     """Real log ubc-motor-9V (stop 37, s37-real): the pair beside the cap, T2 = 285 ms, was
     said to be "the armature's inductance", and the pair's 1.6 % overshoot was stated as if
@@ -170,6 +164,7 @@ def test_a_pole_of_hundreds_of_ms_is_not_put_down_to_the_winding():
 
 
 @pytest.mark.shared_data
+@on("n20-12v-pwm25")
 def test_a_coast_is_not_told_by_a_stop_that_friction_makes():
     """Real log n20-12v-pwm25: the cause named is the coast (the wheel runs down slower than
     a braked motor), dry friction beside it; the first sentence read "the wheel stands still
@@ -185,6 +180,7 @@ def test_a_coast_is_not_told_by_a_stop_that_friction_makes():
 
 
 @pytest.mark.shared_data
+@on("rtl-dc-5to15V-brake")
 def test_dry_friction_on_a_log_without_a_step_down_is_not_said_to_stop_the_wheel():
     """Real log rtl-dc-5to15V-brake: 5 V to 15 V and no step down, dry friction read off the
     settled speeds; "the wheel stops sooner than the model says" was not of this log."""
@@ -194,16 +190,12 @@ def test_dry_friction_on_a_log_without_a_step_down_is_not_said_to_stop_the_wheel
     assert "stops sooner" not in said and "off the drive at every voltage" in said
 
 
-def _checked(cause: str) -> CheckResult:
-    log = make_log(cause, seed=3)  # type: ignore[arg-type]
-    return check(log.t, log.u, log.omega, ts=0.025)
-
-
+@GROUP
 @pytest.mark.parametrize("cause", NAMES)
 def test_the_details_say_what_each_figure_measures_without_the_specialists_terms(cause):
     """Walk 14 found the details hard ("whitened residual", "criterion gain 816", causes by
     their JSON names): each figure is now said with what it measures and why it matters."""
-    r = _checked(cause)
+    _, r = synth(cause)
     told = check_words.details(r, "", intervals=True)
     text = " ".join(told.lines())
     for word in SPECIALIST:
@@ -251,6 +243,7 @@ def test_a_runner_up_the_log_cannot_show_is_said_so():
 
 
 @pytest.mark.shared_data
+@on("ev3-large-duty30")
 def test_a_run_the_first_order_model_explains_gives_its_noise_as_an_rms():
     """Real log ev3-large-duty30: "follows the measured speed to within its noise (± 1.4
     rad/s)", beside a plot whose misses reach 4 rad/s; 1.4 rad/s is the noise's rms, which

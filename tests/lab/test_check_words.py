@@ -11,22 +11,21 @@ import pytest
 
 from minseg_tui.lab.views import check_text, check_words
 from minseg_tui.lab.views.check_says import evidence
-from minseg_tui.model.check import check
 from minseg_tui.model.check.effects import NAMES
-from minseg_tui.model.synth import make_log
+from tests.lab.checked_logs import GROUP, synth
 
 NUM = r"[0-9]+(?:\.[0-9]+)?"
 JARGON = ("whitened", "criterion", "residual", "interval", "noise floor", "_")
 
 
-def _checked(cause: str, seed: int = 3, **kw: object):
-    log = make_log(cause, seed=seed, **kw)  # type: ignore[arg-type]
-    return log, check(log.t, log.u, log.omega, ts=0.025)
+pytestmark = GROUP
+"""Every log here is synth's, checked once per process (tests/lab/checked_logs.py), and
+test_check_plain.py reads the seed-3 logs too: one worker checks each."""
 
 
 @pytest.mark.parametrize("cause", NAMES)
 def test_the_sentences_speak_of_the_close_up_in_everyday_words(cause):
-    log, r = _checked(cause)
+    log, r = synth(cause)
     lead = check_words.lead(r, log.u)
     text = " ".join(lead)
     assert 1 <= len(lead) <= 3
@@ -50,20 +49,20 @@ def test_the_sentences_speak_of_the_close_up_in_everyday_words(cause):
 
 
 def test_a_log_the_first_order_model_explains_says_so():
-    log, r = _checked("none")
+    log, r = synth("none")
     assert r.finding.cause == "none"
     (said,) = check_words.lead(r, log.u)
     assert "follows the measured speed to within its noise" in said
 
 
 def test_a_hand_on_the_wheel_is_said_as_such():
-    log, r = _checked("none", touch=True)
+    log, r = synth("none", touch=True)
     assert r.close_up is not None and r.close_up.cause == "disturbance"
     assert "something braked the wheel" in check_words.lead(r, log.u)[0]
 
 
 def test_without_the_input_the_first_sentence_stays_general():
-    log, r = _checked("coulomb_friction")
+    log, r = synth("coulomb_friction")
     first = check_words.lead(r, None)[0]
     assert "misses the measured speed" in first and "t =" not in first
 
@@ -81,7 +80,7 @@ def test_the_held_out_figure_is_found_under_its_own_keys():
 def test_the_lead_the_evidence_and_the_close_up_speak_of_one_drop(cause, seed):
     """The walk's Details named the drop at 4.625 s while the lead and the close-up showed
     the one at 1.62 s: the evidence took the fastest stop, the close-up the first drop."""
-    log, r = _checked(cause, seed=seed)
+    log, r = synth(cause, seed=seed)
     assert r.finding.cause == cause
     said = re.search(rf"drops (?:to 0 )?at t = ({NUM}) s", evidence(r.finding))
     assert said is not None, evidence(r.finding)
@@ -98,7 +97,7 @@ def test_the_first_sentence_names_the_model_it_simulated(cause):
     """The walk of 11-27: "the simple (first-order) model says it still turns at 0.27 rad/s"
     was read by a group as their own Task 14 model; it is the check's fit of the run, and the
     sentence says so with its T and K (the fitted ones, not the least-squares or the group's)."""
-    log, r = _checked(cause)
+    log, r = synth(cause)
     first = check_words.lead(r, log.u)[0]
     T, K = r.baseline.params["T"], r.baseline.params["K"]
     m = re.search(

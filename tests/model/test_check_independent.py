@@ -46,6 +46,8 @@ SEED_21 = pytest.mark.xdist_group("independent-seed-21")
 """Tuning seed 21 with dry friction and a logger's artefacts, read by two tests."""
 SEED_1012 = pytest.mark.xdist_group("independent-seed-1012")
 """Touched seed 1012 of an average, read by two tests."""
+PAIR_8 = pytest.mark.xdist_group("independent-pair-8")
+"""Tuning pair seed 8 (dry friction, a 9-tap average, a stall), read by two tests."""
 
 
 def named(r):
@@ -754,6 +756,7 @@ def test_a_hand_at_fast_sampling_is_looked_for_over_half_its_shortest_hold(cause
     # the same log with the hand's torque at 0: test_a_touched_log_s_control_names_its_cause
 
 
+@PAIR_8
 def test_an_average_is_weighed_without_the_rows_it_carries_a_stalls_read_into():
     # tuning pair seed 8: a 9-tap average of counts over the real interval, dry friction
     # and a 100 ms stall of the logger at 10.65 s. The average spreads the stall's late read
@@ -761,9 +764,8 @@ def test_an_average_is_weighed_without_the_rows_it_carries_a_stalls_read_into():
     # average left of the speed itself lay there, and a 93 ms delay, 1.25 times better on
     # the speed with those rows in, was named in the average's place. Those rows are the
     # logger's, so they count for neither side
-    log = make(8, ("coulomb_friction", "velocity_filter"))
+    log, r = checked(8, ("coulomb_friction", "velocity_filter"))
     assert "stall" in log.how and "moving_average (9 taps)" in log.how
-    r = check(log.t, log.u, log.omega)
     assert named(r) == ["coulomb_friction", "velocity_filter"], text(r)
     p = r.extended.params
     assert abs(p["taps"] - 9) <= 1
@@ -1289,14 +1291,14 @@ def test_an_average_loses_to_a_delay_that_matches_the_corners_far_better():
     )
 
 
+@PAIR_8
 def test_a_stall_on_a_rise_is_not_said_to_leave_the_speed_running_on():
     # tuning pair seed 8 (dry friction, a 9-tap average): the logger stalls 125 ms at
     # 10.53 s while the speed rises (-0.9, then -1.0 and -6.5 rad/s after the gap, -20 ten
     # rows on). The rows around the gap spread 25 rad/s: there is no level the column could
     # run on at, so "the speed reads on as around it (-8.74 rad/s)" (the first cut of the
     # rows-lost-whole words, 17fdf83) was false; a stall keeps its own sentence
-    log = make(8, ("coulomb_friction", "velocity_filter"))
-    r = check(log.t, log.u, log.omega)
+    log, r = checked(8, ("coulomb_friction", "velocity_filter"))
     art = [a for a in r.anomalies if a.kind == "logging_artefact"]
     assert art
     for a in art:
