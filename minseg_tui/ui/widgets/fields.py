@@ -1093,6 +1093,14 @@ class FieldForm(VerticalScroll, can_focus=True, inherit_bindings=False):
         """``row``'s list was ticked: the lab stores it now (``choose``)."""
         self._choose(row, indices)
 
+    def watch_has_focus(self, _has_focus: bool) -> None:
+        """Restyle the form alone when it takes or loses the focus. Textual restyles the
+        focused widget and everything in it (``Widget.watch_has_focus``), here the whole step,
+        though no rule of the app's CSS styles a widget by the focus of a widget it is in
+        (tests/ui/test_restyles.py checks that): each Tab out of the step, Ctrl+L, a dialog
+        or the palette restyled every widget of the step twice."""
+        self.app.stylesheet.update_nodes([self], animate=True)
+
     def watch_current(self, old: FieldRow | None, new: FieldRow | None) -> None:
         for row, shown in ((old, False), (new, self.screen.focused is self)):
             if row is not None and row.is_attached:
