@@ -17,7 +17,9 @@ The corpus:
   k_v below 0.
 
 For each log: ``identify TABLE --R 5 --step LOG`` as text and ``--json``, ``analyze LOG``
-(``--json`` too with ``--json``): exit code, stdout and stderr, one record each. Then the
+(``--json`` too with ``--json``): exit code, stdout and stderr, one record each; and, when
+analyze does not refuse the log, what the lab's screen and the report tell a student of the
+same check (the close-up's title, the lead, the details: issue 20's student words). Then the
 refusals of :func:`minseg_tui.model.runlog.problem` and :func:`~minseg_tui.model.runlog.
 clock_problem` on arrays the CSV reader would refuse first (unequal lengths, non-finite
 values, a time that goes back), and :meth:`~minseg_tui.model.runlog.RunLog.angle`'s source,
@@ -47,8 +49,11 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from minseg_tui.cli import main  # noqa: E402
-from minseg_tui.lab.saving.files import write_run_log  # noqa: E402
+from minseg_tui.cli.analyze import _sample_period  # noqa: E402
+from minseg_tui.lab.saving.files import read_run_log, write_run_log  # noqa: E402
+from minseg_tui.lab.views import check_words  # noqa: E402
 from minseg_tui.model import runlog  # noqa: E402
+from minseg_tui.model.check import check  # noqa: E402
 from minseg_tui.model.motor import MotorParams  # noqa: E402
 from minseg_tui.model.plant import PlantParams, record, square_wave  # noqa: E402
 from minseg_tui.model.runlog import RunLog  # noqa: E402
@@ -262,6 +267,25 @@ def _direct() -> Iterator[tuple[str, str]]:
     yield "angle mean speed", _said(log.angle()[1])
 
 
+def _student(path: Path) -> str:
+    """What the lab's screen and the report tell a student of the check of the log at
+    ``path``: the lead (about the close-up, with the run's input) and the details, as
+    :mod:`minseg_tui.lab.views.check_words` writes them (the same check ``analyze`` runs)."""
+    log = read_run_log(path)
+    ts = _sample_period(dict(log.metadata))
+    r = check(log.t, log.u, log.omega, ts=ts, cpr=log.declared_cpr, omega_over=log.omega_over)
+    told = check_words.details(r)
+    return "\n".join(
+        (
+            "--- lead",
+            check_words.close_up_title(r),
+            *check_words.lead(r, log.u),
+            "--- details",
+            *told.lines(),
+        )
+    )
+
+
 def main_(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("out", help="file to write the records to")
@@ -286,6 +310,8 @@ def main_(argv: list[str] | None = None) -> int:
             for label, argv_ in (("analyze", ["analyze", str(path)]),):
                 said = _run(argv_).replace(str(d), "TMP").replace(str(SHARED), "SHARED")
                 lines.append(f"=== {name} | {label}\n{said}")
+            if said.startswith("exit 0"):
+                lines.append(f"=== {name} | student\n{_student(path)}")
     lines += [f"=== {k}\n{v}" for k, v in _direct()]
     lines += [f"=== {k}\n{v}" for k, v in _identify_direct()]
     Path(args.out).write_text("\n".join(lines) + "\n", encoding="utf-8")

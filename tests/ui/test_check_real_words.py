@@ -129,3 +129,23 @@ async def test_a_slow_second_lag_is_not_put_down_to_the_winding(quiet):
         assert "the motor answers about 18 ms after the command" in said, said
         assert "This run cannot tell it from a second lag." in said, said
         assert "current build-up" not in said, said
+
+
+@pytest.mark.shared_data
+async def test_a_cause_the_check_calls_uncertain_is_not_told_as_likely(quiet, tmp_path):
+    """s38-late's EV3 toss-up: with data rows 74-76 dropped the check names a current cap
+    0.3 points over the 25 % bar, and the CLI's text calls the cause uncertain; the screen's
+    lead said "Likely cause: the driver limits the current" as if it were sure."""
+    lines = (REAL / "ev3-large-duty100" / "step.csv").read_text().splitlines()
+    head = next(i for i, x in enumerate(lines) if not x.startswith("#"))
+    gap = tmp_path / "ev3-gap.csv"
+    gap.write_text("\n".join(lines[: head + 75] + lines[head + 78 :]) + "\n")
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        enter_all(app, TABLE)
+        story = _flat((await _import(pilot, gap)).text)
+        assert "Likely cause" not in story, story
+        assert "Possible cause, uncertain (it only just clears the check's bar" in story, story
+        _, details = await _open_details(pilot)
+        assert "so the cause is uncertain" in details, details

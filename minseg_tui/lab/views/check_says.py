@@ -75,9 +75,9 @@ unnamed."""
 CAUSE_WORDS: dict[str, CauseWords] = {
     "coulomb_friction": CauseWords(
         "dry friction",
-        "dry friction in the gearbox and the brushes: a constant braking torque, so the "
-        "wheel stops sooner than the model says (the model only knows a friction that "
-        "shrinks with the speed)",
+        "dry friction: a constant braking torque (for example from a gearbox or the motor's "
+        "brushes), so the wheel stops sooner than the model says (the model only knows a "
+        "friction that shrinks with the speed)",
         "dry friction",
     ),
     "dead_time": CauseWords(
@@ -458,6 +458,25 @@ def _untold(f: rs.Untold) -> str:
     )
 
 
+REGION_WORDS: dict[str, tuple[str, str, str]] = {
+    "after_rising_edges": ("after the rise", "after the {n} rises", "after rising edges"),
+    "after_falling_edges": ("after the fall", "after the {n} falls", "after falling edges"),
+}
+"""A region of :data:`~minseg_tui.model.check.deviations.REGIONS` in words by how many edges
+of its kind the log has: one ('after the rise': 'rising edges' was said of logs with a
+single rise), several, or not known (0)."""
+
+
+def region_words(region: str, edges: int) -> str:
+    """Where region ``region`` is, in words: 'after the rise' with one edge of its kind,
+    'after the 3 rises' with several, 'after rising edges' when not counted (``edges`` 0);
+    'in steady state'."""
+    if region not in REGION_WORDS:
+        return "in " + region.replace("_", " ")
+    one, some, any_ = REGION_WORDS[region]
+    return one if edges == 1 else some.format(n=edges) if edges > 1 else any_
+
+
 def caveat(c: rs.Caveat) -> str:
     """The sentence of caveat ``c``: what the check cannot say about this log, and why."""
     f = c.facts
@@ -474,7 +493,7 @@ def caveat(c: rs.Caveat) -> str:
             else "where the speed's noise measures 0 rad/s"
         )
         return (
-            f"the best model found still misses {f.region.replace('_', ' ')}: its error held "
+            f"the best model found still misses {region_words(f.region, f.edges)}: its error held "
             f"over 9 samples is {f.size:.3g} rad/s rms there, {against}; something outside the "
             "list of causes acts in this log, so the named cause(s) explain only part of it"
         )
@@ -888,21 +907,24 @@ NONE_NAMED: dict[rs.FitSaid, Said[str]] = {
 """The evidence when no cause is named, by how the first-order model does
 (:attr:`~minseg_tui.model.check.result.Plain.how`), a template of the record's fields (``p``)."""
 
-LOW_FIT = (
+LOW_FIT = Said(
     " (its fit is only {p.low_fit:.0f} % because that noise is large against the speed's "
-    "changes, not because the model is wrong)"
+    "changes, not because the model is wrong)",
+    student=" (the noise is large beside how much the speed changes, so the model only seems "
+    "to follow the speed loosely: that is the noise, not a wrong model)",
 )
-"""After :data:`NONE_NAMED`'s words (but "unexplained"'s), for both audiences, when the fit
-is low (:attr:`.result.Plain.low_fit`)."""
+"""After :data:`NONE_NAMED`'s words (but "unexplained"'s) when the fit is low
+(:attr:`.result.Plain.low_fit`): the lab assistant is told the fit (a percentage a student
+has not met: 100 (1 - |error| / |speed - its mean|)), a student what it means."""
 
 
 def none_named(p: rs.Plain, plain: bool = False) -> str:
     """The evidence when no cause is named (``plain``: told to a student, the figures of the
-    assistant's)."""
+    assistant's but the fit's)."""
     said = NONE_NAMED[p.how].to(plain).format(p=p)
     if p.how == "unexplained" or p.low_fit is None:
         return said
-    return said + LOW_FIT.format(p=p)
+    return said + LOW_FIT.to(plain).format(p=p)
 
 
 def evidence(f: rs.Finding) -> str:
@@ -917,13 +939,21 @@ def evidence(f: rs.Finding) -> str:
         f"{shown(e)}. It removes {100 * e.reduction:.1f} % of the "
         f"whitened residual the model leaves without it (criterion gain {e.gain:.0f})"
     )
-    if e.reduction < MIN_REDUCTION + NEAR_THE_BAR:
+    if uncertain(f):
         over = 100 * (e.reduction - MIN_REDUCTION)
         text += (
             f", only {over:.1f} points over the {100 * MIN_REDUCTION:.0f} % a cause needs: a "
             "few rows more or fewer can put it under, so the cause is uncertain"
         )
     return f"{text}; {runner_up_why(f)}" if f.runner_up else text
+
+
+def uncertain(f: rs.Finding) -> bool:
+    """The cause of ``f`` is named only just over the bar (by less than
+    :data:`NEAR_THE_BAR`): a few rows more or fewer can put it under, and every audience is
+    told it is uncertain."""
+    e = f.evidence
+    return isinstance(e, rs.Because) and e.reduction < MIN_REDUCTION + NEAR_THE_BAR
 
 
 NEAR_THE_BAR = 0.01
@@ -1097,7 +1127,7 @@ def where(devs: list[Deviation]) -> str:
         return "no rows to compare"
     worst = max(devs, key=lambda d: d.rms)
     steady = next((d for d in devs if d.region == "steady_state"), None)
-    words = worst.region.replace("_", " ")
+    words = region_words(worst.region, worst.edges)
     if steady is None or worst is steady:
         return (
             f"the model is about equally good everywhere (worst {words}: rms {worst.rms:.3f} rad/s)"
@@ -1260,7 +1290,7 @@ def caveat_plain(c: rs.Caveat) -> str:
             else "where the speed has no noise at all"
         )
         return (
-            f"Even the best model still misses {f.region.replace('_', ' ')}, by "
+            f"Even the best model still misses {region_words(f.region, f.edges)}, by "
             f"{f.size:.3g} rad/s (averaged over 9 samples), {against}: something the check "
             "does not know acts in this run, so the causes named explain only part of it."
         )

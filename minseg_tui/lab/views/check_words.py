@@ -36,9 +36,11 @@ from minseg_tui.lab.views.check_says import (
     lost_plain,
     none_named,
     shown,
+    uncertain,
 )
 from minseg_tui.lab.views.check_text import FIGURES, GAIN_DIGITS, figure, figure_words, stem
 from minseg_tui.model.check import CheckResult
+from minseg_tui.model.check.decide import MIN_REDUCTION
 from minseg_tui.model.check.effects import CANDIDATES, FrictionLevels, Pole
 from minseg_tui.model.check.result import Because, Plain
 from minseg_tui.model.check.sampling import Sampling
@@ -213,10 +215,10 @@ def other_T(T_ls: float) -> str:
 
 
 FRICTION_LEVELS = (
-    "dry friction in the gearbox and the brushes: a constant braking torque, which takes "
-    "about {u_c} off the drive at every voltage, so the settled speeds are not in proportion "
-    "to the voltage as the model says (the model only knows a friction that shrinks with the "
-    "speed)"
+    "dry friction: a constant braking torque (for example from a gearbox or the motor's "
+    "brushes), which takes about {u_c} off the drive at every voltage, so the settled speeds "
+    "are not in proportion to the voltage as the model says (the model only knows a friction "
+    "that shrinks with the speed)"
 )
 """Dry friction told to a student when the log shows it in its settled speeds, not in a
 stop (a log with no step down to 0: 'the wheel stops sooner' would not be of it)."""
@@ -351,7 +353,12 @@ def _cause(r: CheckResult) -> str:
     f = r.finding
     if f.cause == "none":
         return ""
-    text = f"Likely cause: {everyday(r)}."
+    text = (
+        f"Possible cause, uncertain (it only just clears the check's bar, and a few rows more "
+        f"or fewer could change that): {everyday(r)}."
+        if uncertain(f)
+        else f"Likely cause: {everyday(r)}."
+    )
     also = [short(o.cause, o.evidence) for o in f.others]
     if also:
         text += f" The check finds {' and '.join(also)} too."
@@ -574,10 +581,17 @@ def _evidence_plain(r: CheckResult) -> list[str]:
         out.append(f"Why no cause is named: {none_named(e, plain=True)}.")
     else:
         label = in_words(f.cause, plain=True)
+        bar = (
+            f"; that is only {100 * (e.reduction - MIN_REDUCTION):.1f} points over the "
+            f"{100 * MIN_REDUCTION:.0f} % a cause must remove, and a few rows more or fewer "
+            "could put it under, so the cause is uncertain"
+            if uncertain(f)
+            else ""
+        )
         out.append(
             f"Why {label}, over the whole run: {shown(e, plain=True)}. Adding it removes "
             f"{100 * e.reduction:.1f} % of the simple model's error (the error as the check "
-            "weighs it, each stretch against the noise there)."
+            f"weighs it, each stretch against the noise there){bar}."
         )
         for o in f.others:
             out.append(

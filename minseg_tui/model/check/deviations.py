@@ -14,12 +14,14 @@ REGIONS: tuple[str, ...] = ("after_rising_edges", "after_falling_edges", "steady
 
 @dataclass(frozen=True)
 class Deviation:
-    """The residual (measured - simulated, rad/s) in one region: rows, rms and mean."""
+    """The residual (measured - simulated, rad/s) in one region: rows, rms and mean; and
+    ``edges``, how many steps of the region's kind the log has (:func:`edge_count`)."""
 
     region: str
     rows: int
     rms: float
     mean: float
+    edges: int = 0
 
     def to_dict(self) -> dict[str, object]:
         return {"region": self.region, "rows": self.rows, "rms": self.rms, "mean": self.mean}
@@ -36,6 +38,16 @@ def regions(u: FloatArray, T: float, ts: float) -> NDArray[np.int64]:
     return out
 
 
+def edge_count(u: FloatArray, region: str) -> int:
+    """How many steps of ``region``'s kind the input ``u`` (V) has: rises of |u| for
+    'after_rising_edges', falls for 'after_falling_edges'; 0 for the steady state."""
+    if region not in REGIONS[:2]:
+        return 0
+    e = np.flatnonzero(np.diff(u) != 0) + 1
+    rise = np.abs(u[e]) > np.abs(u[e - 1])
+    return int(np.count_nonzero(rise if region == REGIONS[0] else ~rise))
+
+
 def deviations(
     u: FloatArray, residual: FloatArray, T: float, ts: float, keep: NDArray[np.bool_] | None = None
 ) -> list[Deviation]:
@@ -49,6 +61,12 @@ def deviations(
         r = residual[reg == i]
         if r.size:
             out.append(
-                Deviation(name, int(r.size), float(np.sqrt(np.mean(r * r))), float(np.mean(r)))
+                Deviation(
+                    name,
+                    int(r.size),
+                    float(np.sqrt(np.mean(r * r))),
+                    float(np.mean(r)),
+                    edge_count(u, name),
+                )
             )
     return out

@@ -26,7 +26,7 @@ from minseg_tui.model.check.decide import (
     swapped,
     unsure,
 )
-from minseg_tui.model.check.deviations import REGIONS, deviations, regions
+from minseg_tui.model.check.deviations import REGIONS, deviations, edge_count, regions
 from minseg_tui.model.check.effects import (
     BY_CAUSE,
     CANDIDATES,
@@ -873,10 +873,11 @@ def _miss(
     noise: float,
     keep: FloatArray,
     taps: int,
-) -> tuple[float, str, float] | None:
-    """(error, region name, noise level) when the model misses clearly: the rms of its error
-    held over several samples, in the region where that is worst (after rising edges,
-    after falling edges, steady state), against what the noise leaves there; else None."""
+) -> tuple[float, str, float, int] | None:
+    """(error, region name, noise level, edges) when the model misses clearly: the rms of its
+    error held over several samples, in the region where that is worst (after rising edges,
+    after falling edges, steady state), against what the noise leaves there, and how many
+    steps of that region's kind the log has (0 for the steady state); else None."""
     reg = regions(u, T, samp.ts)
     worst, where = 0.0, ""
     for i, name in enumerate(REGIONS):
@@ -889,7 +890,7 @@ def _miss(
     level = max(fl, noise / 3.0)
     top = float(np.max(np.abs(y))) if y.size else 0.0
     if worst > MISS_NOISE * level and worst > MISS_SHARE * top:
-        return worst, where, level
+        return worst, where, level, edge_count(u, where)
     return None
 
 
@@ -1003,7 +1004,7 @@ def _finding(
     samp: Sampling,
     noise: float,
     level: float,
-    miss: tuple[float, str, float] | None,
+    miss: tuple[float, str, float, int] | None,
     unjudged: dict[str, Lacks],
     full: Problem,
     alts: list[tuple[Fit, float]] | None = None,

@@ -190,11 +190,13 @@ class OnBound:
 class Misses:
     """The best model still misses clearly: its error held over 9 samples (rad/s rms) in
     the region where that is worst (a :data:`.deviations.REGIONS` name), against what the
-    noise leaves there (rad/s; 0: the noise measures 0)."""
+    noise leaves there (rad/s; 0: the noise measures 0); ``edges``: how many steps of the
+    region's kind the log has (0 for the steady state)."""
 
     size: float
     region: str
     level: float
+    edges: int = 0
 
 
 Alike = Literal["filters", "pole_measured"]
