@@ -10,6 +10,7 @@ state through bound reactive attributes, and views of the session built in a wor
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import re
 from collections.abc import Awaitable, Callable, Sequence
 from functools import partial
@@ -1614,7 +1615,22 @@ class LabScreen(StatusScreen):
             got = copy_import(order)
         except MinsegError as exc:
             got = exc
-        self.app.call_from_thread(self._imported, order, got, path, reply, shown)
+        arrived = False
+
+        def deliver() -> None:
+            nonlocal arrived
+            arrived = True
+            self._imported(order, got, path, reply, shown)
+
+        try:
+            if not get_current_worker().is_cancelled:
+                self.app.call_from_thread(deliver)
+        except RuntimeError:  # the app gone meanwhile
+            if arrived:
+                raise
+        if not arrived and isinstance(got, RunInfo):  # the screen or app gone: no run of
+            with contextlib.suppress(OSError):  # a session, so no file in its runs/
+                (order.folder / got.file).unlink()
 
     def _imported(
         self,
