@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import asyncio
 import hashlib
+import os
 import threading
 from pathlib import Path
 
@@ -87,3 +88,35 @@ async def test_a_log_is_read_in_a_worker_and_keys_land_meanwhile(quiet, tmp_path
     for name in original.columns:  # the same rows, value for value
         assert np.array_equal(np.asarray(taken.column(name)), np.asarray(original.column(name)))
     assert [p.name for p in (folder / "runs").iterdir() if p.name.startswith(".")] == []
+
+
+async def test_a_copy_made_after_the_app_stopped_is_not_left_in_runs(quiet, tmp_path, monkeypatch):
+    """The app quits while the log is read: the copy then made is a run of no session
+    (none took it), and is removed rather than left in runs/ unlisted."""
+    reading = threading.Event()
+    let_go = threading.Event()
+    log = tmp_path / "elsewhere.csv"
+
+    def held_read(*args, **kwargs):
+        if Path(args[0]) != log:
+            return read_run_log(*args, **kwargs)
+        reading.set()
+        let_go.wait(HOLD_GUARD_S)
+        return read_run_log(*args, **kwargs)
+
+    monkeypatch.setattr(runs, "read_run_log", held_read)
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start_with_a_run(pilot, "model_check")
+        with app.session as s:
+            log.write_bytes(s.run_path(s.response_run().name).read_bytes())
+            folder = s.folder
+        box = app.screen.query_one("#import-path", TextBox)
+        box.focus()
+        await settle(pilot, lambda: app.focused is box)
+        box.value = str(log)
+        await pilot.press("enter")
+        assert await asyncio.to_thread(reading.wait, HOLD_GUARD_S)
+    let_go.set()  # the app has stopped: the worker reads and copies now
+    await asyncio.get_running_loop().shutdown_default_executor()  # its thread is done
+    assert sorted(os.listdir(folder / "runs")) == ["steps-1.csv"]
