@@ -20,7 +20,7 @@ import os
 import re
 import select
 import stat
-from collections.abc import Generator, Iterator, Mapping, Sequence
+from collections.abc import Callable, Generator, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -463,6 +463,12 @@ class _Reader:
         )
 
 
+def _teed(chunks: Iterator[bytes], tee: Callable[[bytes], None]) -> Iterator[bytes]:
+    for chunk in chunks:
+        tee(chunk)
+        yield chunk
+
+
 def read_csv(
     path: str | Path | Stdin,
     *,
@@ -471,13 +477,15 @@ def read_csv(
     numeric: Mapping[str, str],
     max_rows: int,
     rows_are: str,
+    tee: Callable[[bytes], None] | None = None,
 ) -> CsvColumns:
     """Read ``path`` (see the module docstring).
 
     expected_header: the header as a message shows it; required: column -> unit, each must
     be there; numeric: column -> unit of the columns that must hold numbers (the required
     ones and any known optional ones); max_rows: the most data rows read, and rows_are:
-    what that limit stands for, for the message.
+    what that limit stands for, for the message; tee: given each chunk of the file's bytes
+    as it is read, before it is checked (all of them, in order, when this returns).
     Generous where it is unambiguous: a BOM, \\r\\n, blank lines, whitespace around fields,
     column names in any case, ``#`` comments anywhere.
     """
@@ -485,7 +493,8 @@ def read_csv(
     reader = _Reader(source, expected_header, required, numeric, max_rows, rows_are)
     where = path if isinstance(path, Stdin) else Path(path)
     with contextlib.closing(_chunks(where, source)) as chunks:
-        for first, text in _batches(chunks, source):
+        read: Iterator[bytes] = chunks if tee is None else _teed(chunks, tee)
+        for first, text in _batches(read, source):
             while not reader.header and text:  # comments and the header, line by line
                 line, _, text = text.partition("\n")
                 reader.line(first, line)

@@ -19,7 +19,7 @@ a MinSeg produces are refused (LIMITS), and so are more rows than a lab produces
 from __future__ import annotations
 
 import csv
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -217,7 +217,11 @@ def write_table(path: str | Path, readings: list[Reading]) -> None:
 # -- run logs ---------------------------------------------------------------------------------
 
 
-def read_run_log(path: str | Path | Stdin, require_step: bool = True) -> RunLog:
+def read_run_log(
+    path: str | Path | Stdin,
+    require_step: bool = True,
+    tee: Callable[[bytes], None] | None = None,
+) -> RunLog:
     """A run log (see the module docstring) as a RunLog, ``source`` the path as given.
 
     Refuses (InputError naming file and line): a header field the log format defines with a
@@ -230,7 +234,9 @@ def read_run_log(path: str | Path | Stdin, require_step: bool = True) -> RunLog:
     keep time with t (within runlog.CLOCK_AGREE, 2 %), and, unless ``require_step``
     is False, a log in which the command (u_req, else u) never steps or u is 0 on every
     row while u_req steps (no voltage on the motor: no K). Unknown columns are kept: as
-    numbers when every field is one, else as text.
+    numbers when every field is one, else as text. ``tee`` is given the file's bytes as
+    they are read (see :func:`~minseg_tui.lab.saving.csvread.read_csv`): when this returns,
+    they are the very bytes checked.
     """
     units = {**LOG_REQUIRED, **LOG_NUMERIC}
     f = read_csv(
@@ -240,6 +246,7 @@ def read_run_log(path: str | Path | Stdin, require_step: bool = True) -> RunLog:
         numeric=units,
         max_rows=MAX_LOG_ROWS,
         rows_are="what the link keeps of one recording, 67 min at 2 ms",
+        tee=tee,
     )
     for key, value in f.metadata.items():
         refused = header_problem(key, value)

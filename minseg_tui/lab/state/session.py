@@ -1508,31 +1508,71 @@ class Session:
         the model check (:meth:`check_run`); Tasks 11-15 keep their run unless the group
         chooses it (:meth:`select_run`: walk 16, D3). A path in quotes, as a terminal pastes
         a file dropped on it ('/home/ada/step log.csv'), is read without them when the quoted
-        name is no file (s38 attack)."""
+        name is no file (s38 attack). The same as :meth:`import_order`, :func:`copy_import`
+        and :meth:`add_import` in turn (the TUI runs the middle one in a worker)."""
+        order = self.import_order(path)
+        return self.add_import(order, copy_import(order))
+
+    def import_order(self, path: Path) -> ImportOrder:
+        """What :func:`copy_import` needs to bring in the log at ``path``: refused at once
+        (InputError) by a snapshot or a session opened read-only."""
         self._writable()
-        try:
-            info = import_log(
-                self.folder,
-                pasted_path(str(path)),
-                self._new_name("imported"),
-                self._clock().isoformat(timespec="seconds"),
-            )
-        except OSError as exc:
-            self._failed(exc)
+        return ImportOrder(
+            folder=self.folder,
+            path=pasted_path(str(path)),
+            name=self._new_name("imported"),
+            started=self._clock().isoformat(timespec="seconds"),
+        )
+
+    def add_import(self, order: ImportOrder, got: RunInfo | OSError) -> RunInfo:
+        """Take the run :func:`copy_import` copied for ``order`` (``got``) as the model
+        check's run; when the copy could not be written (an OSError), SessionNotWritable."""
+        self._writable()
+        if isinstance(got, OSError):
+            self._failed(got)
             raise SessionNotWritable(
-                str(self.folder / RUNS_DIR), None, f"cannot copy the log here ({os_reason(exc)})"
-            ) from None
-        self._hold(info)
-        self._runs.append(info)
-        self._data["check_run"] = info.name
+                str(order.folder / RUNS_DIR),
+                None,
+                f"cannot copy the log here ({os_reason(got)})",
+            )
+        if order.folder != self.folder or any(r.name == got.name for r in self._runs):
+            raise SessionNotWritable(  # moved, or the name taken, while the copy was made
+                str(self.folder / RUNS_DIR), None, "the session changed while the log was read"
+            )
+        self._hold(got)
+        self._runs.append(got)
+        self._data["check_run"] = got.name
         self._run_version += 1
         self._changed()
-        return info
+        return got
+
+
+@dataclass(frozen=True)
+class ImportOrder:
+    """A run log to copy into a session: from ``path`` into ``folder``/runs as run ``name``,
+    begun at ``started`` (ISO 8601)."""
+
+    folder: Path
+    path: Path
+    name: str
+    started: str
+
+
+def copy_import(order: ImportOrder) -> RunInfo | OSError:
+    """Read, check and copy the log of ``order`` (:func:`~minseg_tui.lab.saving.runs.
+    import_log`); it touches no session, so it may run in a worker. InputError when the log
+    is refused; the OSError when the copy cannot be written, for :meth:`Session.add_import`
+    to say."""
+    try:
+        return import_log(order.folder, order.path, order.name, order.started)
+    except OSError as exc:
+        return exc
 
 
 __all__ = [
     "Comparison",
     "Entry",
+    "ImportOrder",
     "ModelCheck",
     "Moved",
     "Notice",
@@ -1540,4 +1580,5 @@ __all__ = [
     "SaveProblem",
     "Session",
     "TableRow",
+    "copy_import",
 ]

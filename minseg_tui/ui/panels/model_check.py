@@ -200,5 +200,7 @@ class ImportBox(Vertical):
         self.post_message(LogImportRequested(path, self.imported))
 
     def imported(self, text: str) -> None:
-        """Say what became of the log asked for (one line)."""
-        self.query_one("#import-msg", Prose).update(text)
+        """Say what became of the log asked for (one line); nothing once the box is gone
+        (the lab screen's notice says it then)."""
+        if self.is_attached:
+            self.query_one("#import-msg", Prose).update(text)

@@ -10,6 +10,7 @@ state through bound reactive attributes, and views of the session built in a wor
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import re
 from collections.abc import Awaitable, Callable, Sequence
 from functools import partial
@@ -37,7 +38,7 @@ from minseg_tui.errors import MinsegError
 from minseg_tui.lab.content.keys import PALETTE, USE_RUN, key_name
 from minseg_tui.lab.content.steps import STEPS, Step
 from minseg_tui.lab.saving.runs import RunInfo
-from minseg_tui.lab.state.session import Session
+from minseg_tui.lab.state.session import ImportOrder, Session, copy_import
 from minseg_tui.lab.state.task10 import RunProgress
 from minseg_tui.lab.views import session as views
 from minseg_tui.lab.views.session import EntryView
@@ -982,6 +983,7 @@ class LabScreen(StatusScreen):
         self._shown: str | None = None
         """The step last asked for (its widgets may not be in the form yet)."""
         self._views_asked = 0
+        self._importing: str | None = None  # the log a worker reads and copies (as typed)
         """How many panel views were asked for (:meth:`_load`): only the last is shown."""
         self._judged: FieldRow | None = None
         """The entry the lab judged last (its verdict under its box), while it is on the
@@ -1585,17 +1587,76 @@ class LabScreen(StatusScreen):
     def _import(self, event: LogImportRequested) -> None:
         """A run log recorded elsewhere: the model check uses it; Tasks 11-15 keep their run
         unless the group chooses the import (walk 16's D3: an EV3 motor's log imported at
-        the model check took Tasks 11-15 with it, and Tasks 11-12 turned ✗, 13-14 !)."""
+        the model check took Tasks 11-15 with it, and Tasks 11-12 turned ✗, 13-14 !). It is
+        read, checked and copied in a worker (s38 attack: a 227 MB log froze the screen for
+        97 s); meanwhile the reply says it is being read, and a second log waits its turn."""
         event.stop()
+        if self._importing is not None:
+            event.reply(f"still reading {self._importing}: load {event.path} once it is in")
+            return
         try:
             with self.session as s:
-                info = s.import_run(Path(event.path).expanduser())
-                said = views.imported(s, event.path, info)
+                order = s.import_order(Path(event.path).expanduser())
         except MinsegError as exc:
             event.reply(f"✗ {exc}")
             return
-        event.reply(said)
-        self._changed()
+        self._importing = event.path
+        event.reply(f"reading {event.path} ...")
+        self._copy(order, event.path, event.reply, self._shown)
+
+    @work(thread=True, group="import", name="import a run log")
+    def _copy(
+        self, order: ImportOrder, path: str, reply: Callable[[str], None], shown: str | None
+    ) -> None:
+        """Worker: read, check and copy the log of ``order`` (no session touched), then hand
+        what became of it to :meth:`_imported`."""
+        got: RunInfo | OSError | MinsegError
+        try:
+            got = copy_import(order)
+        except MinsegError as exc:
+            got = exc
+        arrived = False
+
+        def deliver() -> None:
+            nonlocal arrived
+            arrived = True
+            self._imported(order, got, path, reply, shown)
+
+        try:
+            if not get_current_worker().is_cancelled:
+                self.app.call_from_thread(deliver)
+        except RuntimeError:  # the app gone meanwhile
+            if arrived:
+                raise
+        if not arrived and isinstance(got, RunInfo):  # the screen or app gone: no run of
+            with contextlib.suppress(OSError):  # a session, so no file in its runs/
+                (order.folder / got.file).unlink()
+
+    def _imported(
+        self,
+        order: ImportOrder,
+        got: RunInfo | OSError | MinsegError,
+        path: str,
+        reply: Callable[[str], None],
+        shown: str | None,
+    ) -> None:
+        """The copy of the log asked for at step ``shown`` is made (or refused): the session
+        takes it, and ``reply`` says so (a notice too when the step shown changed)."""
+        self._importing = None
+        info: RunInfo | None
+        try:
+            if isinstance(got, MinsegError):
+                raise got
+            with self.session as s:
+                info = s.add_import(order, got)
+                said = views.imported(s, path, info)
+        except MinsegError as exc:
+            said, info = f"✗ {exc}", None
+        reply(said)
+        if shown != self._shown:  # the box that asked is not in view
+            self.notify(said, title="import", severity="information" if info else "error")
+        if info is not None:
+            self._changed()
 
     def use_run(self, name: str | None) -> None:
         """Tasks 11-15 and the model check use run ``name`` (None: the newest complete step
