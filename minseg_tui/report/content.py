@@ -114,6 +114,17 @@ def _reading(value: float | None, unit: str, missing: str = MISSING) -> str:
 NOT_ENTERED = "not entered"
 """A reading of the table the group has not entered."""
 
+EDITED_CELL = "edited by hand in session.json: counts for nothing (see the warnings)"
+"""A reading whose entry session.json holds edited by hand (the warnings say what it holds)."""
+
+
+def _not_there(session: Session, key: str) -> str:
+    """What stands for the reading of ``key`` when it has none in effect: :data:`EDITED_CELL`
+    for an entry edited by hand, else :data:`NOT_ENTERED`."""
+    e = session.entry(key)
+    return EDITED_CELL if e is not None and e.edited else NOT_ENTERED
+
+
 NOT_COMPUTED = "not computed"
 """k_v or f of a row not computed though nothing is missing (the warnings say why); with a
 reading missing, what it needs follows (:func:`_row_value`)."""
@@ -156,7 +167,7 @@ def _answers(session: Session, part: str) -> Section:
                 else {"right": "✓ ", "wrong": "✗ ", "missing": ""}[fb.status] + fb.for_grader
             )
             if e is not None and not e.ok:
-                verdict = f"refused; {own_first.TOLD} {e.message}"
+                verdict = e.edited or f"refused; {own_first.TOLD} {e.message}"
             rows.append((st.title, fld.label, shown.strip() or own_first.NOT_ANSWERED, verdict))
     title = "Preparation" if part == "Preparation" else "Summary and reflections"
     return Section(title, [Table(("step", "question", "answer", "feedback"), tuple(rows))])
@@ -216,7 +227,7 @@ def _table_section(session: Session) -> Section:
     rows = []
     for r in session.table():
         omega = (  # typed: its digits; captured: the mean, as the capture gave it
-            session.reading(f"omega_ss@{r.level:g}") or NOT_ENTERED
+            session.reading(f"omega_ss@{r.level:g}") or _not_there(session, f"omega_ss@{r.level:g}")
             if r.spread is None
             else _reading(r.omega_ss, "rad/s", NOT_ENTERED)
         )
@@ -232,16 +243,17 @@ def _table_section(session: Session) -> Section:
         rows.append(
             (
                 f"{r.level:g} V",
-                session.reading(f"u_ss@{r.level:g}") or NOT_ENTERED,
+                session.reading(f"u_ss@{r.level:g}") or _not_there(session, f"u_ss@{r.level:g}"),
                 omega,
                 window,
-                session.reading(f"i_ss@{r.level:g}") or NOT_ENTERED,
+                session.reading(f"i_ss@{r.level:g}") or _not_there(session, f"i_ss@{r.level:g}"),
                 _row_value(session, "k_v", r, r.k_v, "V s/rad"),
                 _row_value(session, "f", r, r.f, _F_UNIT),
             )
         )
     sec = Section("Steady state (Tasks 2 and 4-9)")
-    sec.blocks.append(f"R = {session.reading('R') or NOT_ENTERED} (Task 2).")
+    R = session.reading("R")
+    sec.blocks.append(f"R = {R} (Task 2)." if R else f"R (Task 2): {_not_there(session, 'R')}.")
     sec.blocks.append(
         "The group's readings (Tasks 4-5) and, in the last two columns, k_v and f that the "
         "program computed from them for each row (Tasks 6 and 9):"
@@ -420,7 +432,9 @@ def _warnings_section(session: Session) -> Section:
         f"see {_STEP_TITLE}, the line T (Task 12) under its table",
     )
     items += [
-        f"refused entry {_where(e.key) or e.key}: {e.text!r} ({own_first.TOLD} {e.message})"
+        f"{_where(e.key) or e.key}: {e.edited}"
+        if e.edited
+        else f"refused entry {_where(e.key) or e.key}: {e.text!r} ({own_first.TOLD} {e.message})"
         for e in session.entries.values()
         if not e.ok
     ]

@@ -8,6 +8,7 @@ refused text displace an accepted one. Pure functions: the session stores and sa
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
@@ -33,7 +34,10 @@ class Entry:
     ``capture`` or ``meter``; at: ISO time; history: earlier (text, at) pairs, oldest first;
     run: for an answer of Tasks 11-15, the run those tasks used when it was given (it is
     judged against the run in use now, which may be another); '' otherwise, or not known (a
-    session of an older program).
+    session of an older program); edited: for an entry whose stored value is not what its
+    text reads as (session.json changed by hand: :func:`check_stored`), the one line saying
+    so and what the file holds; the entry is then not in effect (``ok`` False, no value)
+    until the field is typed again. Never saved: the file keeps what it holds.
 
     A refused text never displaces an accepted one: the accepted entry stays in effect and
     carries the refused attempt in ``refused`` (text, message, at) until something is
@@ -52,6 +56,7 @@ class Entry:
     history: tuple[tuple[str, str], ...] = ()
     refused: tuple[str, str, str] | None = None
     run: str = ""
+    edited: str = ""
 
     @property
     def typed(self) -> str:
@@ -296,6 +301,58 @@ def revise(old: Entry | None, read: Entry, source: str, at: str) -> Entry:
     )
 
 
+HAND_EDITED = "session.json was edited by hand here"
+"""How :func:`check_stored`'s line begins: an entry the program could not have written."""
+
+NOT_JUDGED_UNTIL_TYPED = "it counts for nothing until the field is typed again"
+"""How :func:`check_stored`'s line ends: what becomes of the entry."""
+
+
+def _held(fld: Field, value: float | tuple[int, ...] | None) -> str:
+    """A stored value as the line of :func:`check_stored` says it: a quantity in the unit
+    it is shown in, with every digit the file holds; a choice in its answers' words."""
+    if value is None:
+        return "no value"
+    if isinstance(value, tuple):
+        return choice_words(fld, value) or repr(list(value))
+    if fld.kind == "quantity" and math.isfinite(value):
+        return quantities.format_reading(value, quantities.shown_unit(fld.unit), digits=12)
+    return repr(value)
+
+
+def _agree(a: float | tuple[int, ...] | None, b: float | tuple[int, ...] | None) -> bool:
+    """Whether a stored value and the one its text reads as are the same (floats to a
+    relative 1e-9: rounding, not a change)."""
+    if isinstance(a, float) and isinstance(b, float):
+        return math.isclose(a, b, rel_tol=1e-9, abs_tol=0.0)
+    return a == b
+
+
+def check_stored(e: Entry) -> Entry:
+    """``e`` as a session file holds it, its text read again by :func:`read_entry` (the
+    reading the field gives what is typed in it): the same entry when its stored value is
+    what the text reads as (or it was refused, or it is a text answer, or of no field
+    here), else the entry marked :attr:`Entry.edited` with one line saying what the file
+    holds, out of effect (``ok`` False, no value), so that nothing judges or computes with
+    a value the group never typed. The text, the history and the time are kept."""
+    fld = FIELDS.get(e.key)
+    if fld is None or not e.ok or fld.kind == "text":
+        return e
+    again = read_entry(fld, e.text)
+    if again.ok and _agree(again.value, e.value):
+        return e
+    text = e.text.strip()
+    if again.ok:
+        reads = f"{text!r} reads as {_held(fld, again.value)}"
+    else:
+        reads = f"{text!r} does not read as a value ({again.message})"
+    line = (
+        f"{HAND_EDITED}: it holds the text {text!r} with the value {_held(fld, e.value)}, "
+        f"but {reads}; {NOT_JUDGED_UNTIL_TYPED}"
+    )
+    return replace(e, ok=False, value=None, message=line, refused=None, edited=line)
+
+
 def parsed_values(entries: Mapping[str, Entry]) -> dict[str, object]:
     """Accepted values by key, as checks use them (floats, Formulas, option tuples)."""
     out: dict[str, object] = {}
@@ -313,4 +370,12 @@ def parsed_values(entries: Mapping[str, Entry]) -> dict[str, object]:
     return out
 
 
-__all__ = ["Entry", "parse_choice", "parsed_values", "read_entry", "read_quantity", "revise"]
+__all__ = [
+    "Entry",
+    "check_stored",
+    "parse_choice",
+    "parsed_values",
+    "read_entry",
+    "read_quantity",
+    "revise",
+]

@@ -267,9 +267,11 @@ def compute(
     folder: Path,
     u_ss_table: Sequence[tuple[float, float]] | None = None,
     kept: ResponseFigures | None = None,
+    R_missing: str = "",
 ) -> Results:
     """Tasks 6-15 from R (ohm), the table's complete rows and the run Tasks 11-15 use (its
     log read from ``folder``); every reason a result is missing becomes a problem line.
+    ``R_missing``: why R is None when it is not that nothing was entered (the line said).
 
     ``u_ss_table``: the (u_req, u_ss) pairs (V) of every row with a u_ss, complete or not,
     the mapping K divides by (default: the complete rows'), as the run's u column uses it.
@@ -278,7 +280,7 @@ def compute(
     neither read nor fitted again, J follows from them and the table (``kept_response``)."""
     problems: list[str] = []
     if R is None:
-        problems.append("R is not entered yet (Task 2)")
+        problems.append(R_missing or "R is not entered yet (Task 2)")
     readings = []
     for r in complete_rows:
         wrong = r.problem()

@@ -110,7 +110,7 @@ from minseg_tui.lab.state.compare import (
     read_policy,
     reveal_keys,
 )
-from minseg_tui.lab.state.entries import Entry, parsed_values, read_entry, revise
+from minseg_tui.lab.state.entries import Entry, check_stored, parsed_values, read_entry, revise
 from minseg_tui.lab.state.results import (
     Comparison,
     ModelCheck,
@@ -174,6 +174,11 @@ NO_RUN_YET = "no run recorded yet (Task 10)"
 (the square wave of Task 10 records one)."""
 
 
+EDITED_R = "R (Task 2) counts for nothing: session.json was edited by hand there"
+"""Why nothing is computed from R when its entry was edited by hand (said with the results'
+other missing inputs; the entry's own line says what the file holds)."""
+
+
 class SessionFrozen(RuntimeError):
     """A change asked of a snapshot (:meth:`Session.snapshot`): a program error."""
 
@@ -216,7 +221,12 @@ class Session:
         self._clock = clock
         self.readonly = readonly
         self._entries: dict[str, Entry] = {
-            k: Entry.from_json(k, v) for k, v in data["entries"].items()
+            k: check_stored(Entry.from_json(k, v)) for k, v in data["entries"].items()
+        }
+        # entries marked edited by hand, as the file holds them: saved as they are until the
+        # field is typed again (nothing the file holds is thrown away by opening it)
+        self._as_stored: dict[str, Any] = {
+            k: data["entries"][k] for k, e in self._entries.items() if e.edited
         }
         self._captures: dict[str, Capture] = {
             k: Capture.from_json(v) for k, v in data["captures"].items()
@@ -373,6 +383,7 @@ class Session:
             readonly=True,
         )
         snap._entries = dict(self._entries)  # Entry, Capture and RunInfo are frozen
+        snap._as_stored = dict(self._as_stored)
         snap._captures = dict(self._captures)
         snap._runs = list(self._runs)
         snap._cache = self._cache
@@ -427,7 +438,10 @@ class Session:
             ok = False
         if not self.restore_runs():  # held in memory still; the next save tries again
             ok = False
-        self._data["entries"] = {k: e.to_json() for k, e in self._entries.items()}
+        self._data["entries"] = {
+            k: self._as_stored[k] if k in self._as_stored else e.to_json()
+            for k, e in self._entries.items()
+        }
         self._data["captures"] = {k: c.to_json() for k, c in self._captures.items()}
         self._data["runs"] = [r.to_json() for r in self._runs]
         if not memo:
@@ -656,6 +670,7 @@ class Session:
         if old is None and read.ok and not text.strip():
             return read
         entry = revise(old, read, source, self._clock().isoformat(timespec="seconds"))
+        self._as_stored.pop(key, None)  # typed again: what the hand edit left is history
         if key in ANSWERED_FIRST and entry.ok and entry.refused is None and entry.text.strip():
             # the run it is given on: judged against another, it is said to be judged again
             run = self.response_run()
@@ -680,8 +695,8 @@ class Session:
         dropped."""
         self._writable()
         e = self._entries.get(key)
-        if e is None or (e.ok and e.refused is None):
-            return False
+        if e is None or (e.ok and e.refused is None) or e.edited:
+            return False  # an entry edited by hand stays until the field is typed again
         if e.ok:
             self._entries[key] = replace(e, refused=None)
         else:
@@ -699,6 +714,7 @@ class Session:
             raise KeyError(key)
         self._writable()
         if self._entries.pop(key, None) is not None:
+            self._as_stored.pop(key, None)
             self._changed()
         return None
 
@@ -946,9 +962,11 @@ class Session:
                 self.folder,
                 self.table_pairs(),
                 kept=kept,
+                R_missing=self._R_missing(),
             )
         key = (
             self.value("R"),
+            self._R_missing(),
             tuple(self.readings()),
             tuple(self.table_pairs()),
             run.name if run else None,
@@ -966,8 +984,19 @@ class Session:
 
     def _compute(self) -> Results:
         return compute(
-            self.value("R"), self.readings(), self.response_run(), self.folder, self.table_pairs()
+            self.value("R"),
+            self.readings(),
+            self.response_run(),
+            self.folder,
+            self.table_pairs(),
+            R_missing=self._R_missing(),
         )
+
+    def _R_missing(self) -> str:
+        """Why R is not in effect when it was entered and then edited by hand in the session
+        file (:func:`~minseg_tui.lab.state.entries.check_stored`); '' otherwise."""
+        e = self._entries.get("R")
+        return EDITED_R if e is not None and e.edited else ""
 
     def model_check(self, name: str | None = None) -> ModelCheck:
         """The model check (:func:`minseg_tui.model.check.check`) of run ``name`` (default: the

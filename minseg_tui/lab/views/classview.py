@@ -167,7 +167,8 @@ OMEGA_MIN: float = 0.5
 """Below this the wheel hardly turns, rad/s."""
 
 MARKED: str = (
-    "a slip the lab manual warns about, a refused entry, a value far from the class, or two "
+    "a slip the lab manual warns about, a refused entry, an entry edited by hand in "
+    "session.json, a value far from the class, or two "
     "sessions of the same names"
 )
 """What the class view marks with '!' (a group's :attr:`Group.flags`), in words."""
@@ -457,9 +458,12 @@ def _field_label(key: str) -> str:
 def slip_list(session: Session) -> list[Slip]:
     """The slips the lab manual warns about in ``session``'s readings, each with the
     quantities that rest on the slipped reading; a refused entry is said too (it feeds
-    nothing)."""
+    nothing), and so is an entry edited by hand in session.json
+    (:func:`~minseg_tui.lab.state.entries.check_stored`)."""
     out = [
-        Slip(
+        Slip(f"{_field_label(e.key)}: {e.edited}.")
+        if e.edited
+        else Slip(
             f"a refused entry, {_field_label(e.key)}: {e.text.strip()!r} ({own_first.TOLD} "
             f"{e.message}); nothing is computed from it."
         )

@@ -286,6 +286,8 @@ def _own(session: Session, c: Comparison, unit: str) -> str:
     e = session.entry(c.key)
     if e is None or not e.text.strip():
         return NOT_ANSWERED
+    if e.edited:
+        return f"{NOT_ANSWERED} ({e.edited})"
     if not e.ok:
         return f"{NOT_ANSWERED} ({e.text.strip()!r} was refused; {TOLD} {e.message})"
     if isinstance(c.own, float):
