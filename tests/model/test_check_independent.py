@@ -1322,43 +1322,49 @@ def test_a_coast_with_dry_friction_is_named_although_neither_is_clear_alone():
     assert p["u_c"] == pytest.approx(log.causes["coulomb_friction"], rel=0.05)
 
 
-def test_an_average_named_with_its_partner_is_not_chosen_again_from_the_average_alone():
-    # tuning2 pair seed 920000: a 15-tap average after a 41 ms delay at 10 ms samples. The
-    # first pass reads both within 2 %; an average alone (25 taps) was refused for its
-    # scatter, and the pass that chose again with that test relaxed started from it and
-    # ended on an 18-tap average with a 29 ms pole, no ambiguity said
-    log = make(920000, ("dead_time", "velocity_filter"))
+AVERAGE_WITH_A_PARTNER = [
+    pytest.param(
+        920000,
+        ("dead_time", "velocity_filter"),
+        "delay",
+        # a 15-tap average after a 41 ms delay at 10 ms samples. The first pass reads both
+        # within 2 %; an average alone (25 taps) was refused for its scatter, and the pass
+        # that chose again with that test relaxed started from it and ended on an 18-tap
+        # average with a 29 ms pole, no ambiguity said
+        id="not-chosen-again-from-the-average-alone",
+    ),
+    pytest.param(
+        920005,
+        ("second_pole", "velocity_filter"),
+        "T2",
+        # a 2-tap average with a driver's pole of 121 ms at 10 ms samples. The pole and the
+        # 2-tap average leave 11 % of the plain speed error of a 21-tap average alone, but
+        # the whitened sums of the two stride differently, and in theirs the pair was no
+        # clear gain: the average alone was named, T 12 % long
+        id="judged-on-the-speed-where-the-lengths-differ",
+    ),
+    pytest.param(
+        920005,
+        ("dead_time", "velocity_filter"),
+        "delay",
+        # a 2-tap average after a 76 ms delay at 10 ms samples. The length scan beside the
+        # delay, led by the whitened sums, found 8 taps and a 48 ms delay, which the speed's
+        # scatter refuses, and the delay alone was named; 2 taps and the delay leave 4 % of
+        # the delay's plain speed error alone
+        id="fitted-from-the-short-lengths-when-refused",
+    ),
+]
+"""Tuning2 pairs of an average and a partner (seed, causes, the partner's parameter) that
+s38-wrong's changes to decide.select name right, each with what went wrong before."""
+
+
+@pytest.mark.parametrize(("seed", "causes", "partner"), AVERAGE_WITH_A_PARTNER)
+def test_an_average_and_its_partner_are_named_with_their_lengths(seed, causes, partner):
+    log = make(seed, causes)
     r = check(log.t, log.u, log.omega)
-    assert named(r) == ["dead_time", "velocity_filter"]
+    assert named(r) == list(causes)
     p = r.extended.params
     assert p["taps"] == log.causes["velocity_filter"]
-    assert p["delay"] == pytest.approx(log.causes["dead_time"], rel=0.05)
-    assert p["T"] == pytest.approx(log.T, rel=0.05)
-
-
-def test_a_pole_beside_a_short_average_is_judged_on_the_speed_where_the_lengths_differ():
-    # tuning2 pair seed 920005: a 2-tap average with a driver's pole of 121 ms at 10 ms
-    # samples. The pole and the 2-tap average leave 11 % of the plain speed error of a
-    # 21-tap average alone, but the whitened sums of the two stride differently, and in
-    # theirs the pair was no clear gain: the average alone was named, T 12 % long
-    log = make(920005, ("velocity_filter", "second_pole"))
-    r = check(log.t, log.u, log.omega)
-    assert named(r) == ["second_pole", "velocity_filter"]
-    p = r.extended.params
-    assert p["taps"] == log.causes["velocity_filter"]
-    assert p["T2"] == pytest.approx(log.causes["second_pole"], rel=0.05)
-    assert p["T"] == pytest.approx(log.T, rel=0.05)
-
-
-def test_a_short_average_after_a_delay_is_fitted_from_the_short_lengths_when_refused():
-    # tuning2 pair seed 920005: a 2-tap average after a 76 ms delay at 10 ms samples. The
-    # length scan beside the delay, led by the whitened sums, found 8 taps and a 48 ms delay,
-    # which the speed's scatter refuses, and the delay alone was named; 2 taps and the delay
-    # leave 4 % of the delay's plain speed error alone
-    log = make(920005, ("dead_time", "velocity_filter"))
-    r = check(log.t, log.u, log.omega)
-    assert named(r) == ["dead_time", "velocity_filter"]
-    p = r.extended.params
-    assert p["taps"] == log.causes["velocity_filter"]
-    assert p["delay"] == pytest.approx(log.causes["dead_time"], rel=0.05)
+    other = next(c for c in causes if c != "velocity_filter")
+    assert p[partner] == pytest.approx(log.causes[other], rel=0.05)
     assert p["T"] == pytest.approx(log.T, rel=0.05)

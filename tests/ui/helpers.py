@@ -12,11 +12,13 @@ from __future__ import annotations
 import asyncio
 from collections.abc import Callable
 from contextlib import suppress
+from pathlib import Path
 
 from textual import events
 from textual.color import Color
 from textual.message import Message
 from textual.pilot import Pilot
+from textual.widget import Widget
 from textual.widgets import Input, OptionList
 from textual.worker import WorkerCancelled
 
@@ -25,7 +27,7 @@ from minseg_tui.lab.content.steps import step
 from minseg_tui.lab.state.session import Session
 from minseg_tui.model.plant import Plant, PlantParams
 from minseg_tui.ui.app import LabApp
-from minseg_tui.ui.messages import LinkEventArrived
+from minseg_tui.ui.messages import LinkEventArrived, LogImportRequested
 from minseg_tui.ui.screens.classview import ClassScreen
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.screens.quit import RECORDING_CHOICES, QuitScreen
@@ -475,3 +477,27 @@ async def class_view(pilot: Pilot[object]) -> ClassScreen:
     screen = app.screen
     assert isinstance(screen, ClassScreen)
     return screen
+
+
+def in_step_view(pane: StepPane, widget: Widget) -> bool:
+    """``widget`` lies whole in the part of the step on screen below its heading."""
+    view = pane.scrollable_content_region
+    top = view.y + pane.heading_rows
+    return (
+        widget.region.height > 0 and top <= widget.region.y and widget.region.bottom <= view.bottom
+    )
+
+
+async def import_a_copy(pilot: Pilot[object], folder: Path) -> str:
+    """Import a copy of the run in use, written to ``folder``/log.csv, as the palette's
+    "Import a run log" does (the message its path box posts); the reply said."""
+    app = pilot.app
+    assert isinstance(app, LabApp)
+    with app.session as s:
+        log = s.run_path(s.response_run().name)
+    elsewhere = folder / "log.csv"
+    elsewhere.write_bytes(log.read_bytes())
+    replies: list[str] = []
+    app.screen.post_message(LogImportRequested(str(elsewhere), replies.append))
+    await settle(pilot, lambda: bool(replies))
+    return replies[0]

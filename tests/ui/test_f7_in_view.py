@@ -13,22 +13,11 @@ from textual.widgets import DataTable
 
 from minseg_tui.ui.screens.lab import LabScreen, StepPane
 from minseg_tui.ui.widgets.prose import Prose
-from tests.ui.helpers import TABLE, burst, enter_all, settle, shown, start
+from tests.ui.helpers import TABLE, burst, enter_all, in_step_view, settle, shown, start
 
 OWN = {"own.k_v": "5.3", "own.k_a": "5.3", "own.f": "5.3"}
 """The group's k_v, k_a and f as walk 14's session had them (each judged wrong, its
 comparison and verdict four rows tall under the table)."""
-
-
-def _in_view(pane: StepPane, widget) -> bool:
-    """``widget`` lies whole in the part of the step on screen below its heading."""
-    view = pane.scrollable_content_region
-    top = view.y + pane.heading_rows
-    return (
-        widget.region.height > 0
-        and top <= widget.region.y
-        and widget.region.bottom <= (view.bottom)
-    )
 
 
 @pytest.mark.parametrize("search", ["task 6", "task 7", "task 8", "task 9"])
@@ -65,5 +54,5 @@ async def test_f7_after_the_palette_shows_the_focused_cell_and_its_formula(
         r, c = table.cursor_coordinate
         cell = panel.view.rows[r][c]
         assert str(line.render()) == (cell.formula or f"{cell.text}: measured, no formula")
-        assert _in_view(pane, line), (pane.scroll_y, pane.heading_rows, line.region)
-        assert _in_view(pane, table), (pane.scroll_y, pane.heading_rows, table.region)
+        assert in_step_view(pane, line), (pane.scroll_y, pane.heading_rows, line.region)
+        assert in_step_view(pane, table), (pane.scroll_y, pane.heading_rows, table.region)

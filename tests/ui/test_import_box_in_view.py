@@ -11,18 +11,7 @@ from minseg_tui.ui.panels.model_check import ImportBox
 from minseg_tui.ui.screens.lab import StepPane
 from minseg_tui.ui.widgets.prose import Prose
 from minseg_tui.ui.widgets.textbox import TextBox
-from tests.ui.helpers import settle, shown, start_with_a_run
-
-
-def _in_view(pane: StepPane, widget) -> bool:
-    """``widget`` lies whole in the part of the step on screen below its heading."""
-    view = pane.scrollable_content_region
-    top = view.y + pane.heading_rows
-    return (
-        widget.region.height > 0
-        and top <= widget.region.y
-        and widget.region.bottom <= (view.bottom)
-    )
+from tests.ui.helpers import in_step_view, settle, shown, start_with_a_run
 
 
 async def _palette_import(pilot) -> None:
@@ -46,8 +35,8 @@ async def test_the_palettes_import_box_is_in_view_at_80x24(quiet, tmp_path):
         pane = app.screen.query_one(StepPane)
         box = app.screen.query_one("#import-path", TextBox)
         assert app.focused is box
-        assert _in_view(pane, box), (pane.scroll_y, box.region, pane.scrollable_content_region)
-        assert _in_view(pane, app.screen.query_one(ImportBox))  # its label over it too
+        assert in_step_view(pane, box), (pane.scroll_y, box.region, pane.scrollable_content_region)
+        assert in_step_view(pane, app.screen.query_one(ImportBox))  # its label over it too
         # the path typed and Enter: the answer under the box is seen with it
         log = tmp_path / "elsewhere.csv"
         with app.session as s:
@@ -59,4 +48,4 @@ async def test_the_palettes_import_box_is_in_view_at_80x24(quiet, tmp_path):
         await settle(pilot, lambda: msg.text.startswith("imported"))
         await settle(pilot, lambda: story.text.startswith("run imported-1"))
         await settle(pilot)
-        assert _in_view(pane, box) and _in_view(pane, msg), (pane.scroll_y, msg.region)
+        assert in_step_view(pane, box) and in_step_view(pane, msg), (pane.scroll_y, msg.region)

@@ -12,29 +12,17 @@ from textual.command import CommandList
 from textual.fuzzy import Matcher
 
 from minseg_tui.lab.content.keys import PALETTE
-from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.screens.lab import StepCommands
 from minseg_tui.ui.widgets.textbox import TextBox
 from tests.ui.conftest import quiet_app
-from tests.ui.helpers import settle, start_with_a_run
-
-
-async def _imported(app, pilot, tmp_path) -> None:
-    """A log imported at the model check: the palette then offers "Use run imported-1"."""
-    with app.session as s:
-        log = s.run_path(s.response_run().name)
-    elsewhere = tmp_path / "log.csv"
-    elsewhere.write_bytes(log.read_bytes())
-    replies: list[str] = []
-    app.screen.post_message(LogImportRequested(str(elsewhere), replies.append))
-    await settle(pilot, lambda: bool(replies))
+from tests.ui.helpers import import_a_copy, settle, start_with_a_run
 
 
 async def test_a_runs_entry_ranks_under_a_command_of_the_same_score(tmp_path):
     app = quiet_app(tmp_path / "sessions")
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "task11")
-        await _imported(app, pilot, tmp_path)
+        await import_a_copy(pilot, tmp_path)
         use = "Use run imported-1 for Tasks 11-15"
         # the tie this is about: Textual's matcher scores both alike
         m = Matcher("import")

@@ -13,7 +13,6 @@ from minseg_tui.lab.content.keys import PALETTE
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.views.classview import read_group
 from minseg_tui.report.write import write_report
-from minseg_tui.ui.messages import LogImportRequested
 from minseg_tui.ui.panels.results import ResultsPanel
 from minseg_tui.ui.screens.classview import detail
 from minseg_tui.ui.screens.lab import LabScreen, StepCommands
@@ -28,6 +27,7 @@ from tests.ui.helpers import (
     burst,
     goto,
     heard_notifications,
+    import_a_copy,
     lab_screen,
     settle,
     shown,
@@ -265,13 +265,7 @@ async def test_the_palettes_import_says_tasks_11_to_15_keep_their_run(tmp_path):
         assert entry.help == (
             "Load a log recorded elsewhere into the model check (Tasks 11-15 keep their run)"
         )
-        with app.session as s:
-            log = s.run_path(s.response_run().name)
-        elsewhere = tmp_path / "log.csv"
-        elsewhere.write_bytes(log.read_bytes())
-        replies: list[str] = []
-        app.screen.post_message(LogImportRequested(str(elsewhere), replies.append))
-        await settle(pilot, lambda: bool(replies))
+        await import_a_copy(pilot, tmp_path)
         helps = {t: h for t, _, h in StepCommands(app.screen).entries()}
         assert helps["Use run imported-1 for Tasks 11-15"] == (
             "an imported log: Tasks 11-15 are then judged on it, as the model check is"
