@@ -114,7 +114,7 @@ def _reading(value: float | None, unit: str, missing: str = MISSING) -> str:
 NOT_ENTERED = "not entered"
 """A reading of the table the group has not entered."""
 
-EDITED_CELL = "edited by hand in session.json: counts for nothing (see the warnings)"
+EDITED_CELL = "not what its text reads as in session.json: counts for nothing (see the warnings)"
 """A reading whose entry session.json holds edited by hand (the warnings say what it holds)."""
 
 

@@ -12,6 +12,7 @@ import json
 from minseg_tui.cli import main
 from minseg_tui.lab.state.entries import HAND_EDITED
 from minseg_tui.lab.state.session import EDITED_R
+from minseg_tui.report.content import EDITED_CELL
 from tests.classview.build import group
 
 SAID = (
@@ -30,7 +31,7 @@ def test_a_negative_R_put_in_by_hand_is_said_as_the_session_holds_it(tmp_path, c
     assert main(["report", str(folder)]) == 0
     report = (folder / "report.md").read_text(encoding="utf-8").replace("\u00a0", " ")
     assert f"- Task 2, R: {SAID}\n" in report and f"- {EDITED_R}\n" in report
-    assert "R (Task 2): edited by hand in session.json" in report
+    assert f"R (Task 2): {EDITED_CELL}" in report
     assert "-5.22 Ω" not in report.replace(SAID, "") and "--R" not in report
     capsys.readouterr()
     assert main(["class", "--sessions", str(folder.parent), "--json", "--workers", "1"]) == 0

@@ -301,8 +301,13 @@ def revise(old: Entry | None, read: Entry, source: str, at: str) -> Entry:
     )
 
 
-HAND_EDITED = "session.json was edited by hand here"
-"""How :func:`check_stored`'s line begins: an entry the program could not have written."""
+HAND_EDITED = (
+    "session.json holds a value here that its text does not read as (edited by hand, or saved "
+    "by an older minseg-tui that read the text otherwise)"
+)
+"""How :func:`check_stored`'s line begins: an entry this program would not have written.
+Both causes are named: a reading rule changed since (f typed in mN m s/rad, stop 37) gives
+the same disagreement as a hand edit, and the line must be true of either."""
 
 NOT_JUDGED_UNTIL_TYPED = "it counts for nothing until the field is typed again"
 """How :func:`check_stored`'s line ends: what becomes of the entry."""

@@ -174,7 +174,9 @@ NO_RUN_YET = "no run recorded yet (Task 10)"
 (the square wave of Task 10 records one)."""
 
 
-EDITED_R = "R (Task 2) counts for nothing: session.json was edited by hand there"
+EDITED_R = (
+    "R (Task 2) counts for nothing: session.json holds a value there that its text does not read as"
+)
 """Why nothing is computed from R when its entry was edited by hand (said with the results'
 other missing inputs; the entry's own line says what the file holds)."""
 
