@@ -306,7 +306,8 @@ HAND_EDITED = (
     "by an older minseg-tui that read the text otherwise)"
 )
 """How :func:`check_stored`'s line begins: an entry this program would not have written.
-Both causes are named: a reading rule changed since (f typed in mN m s/rad, stop 37) gives
+Both causes are named: a reading rule changed since (own.f typed bare as "0.00186" was read
+in N m s/rad, and is now refused as ambiguous in its mN m s/rad field) gives
 the same disagreement as a hand edit, and the line must be true of either."""
 
 NOT_JUDGED_UNTIL_TYPED = "it counts for nothing until the field is typed again"
