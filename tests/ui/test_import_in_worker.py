@@ -30,21 +30,28 @@ HOLD_GUARD_S = 60.0
 few keys; reached only when the read holds the UI thread, as before the fix)."""
 
 
-async def test_a_log_is_read_in_a_worker_and_keys_land_meanwhile(quiet, tmp_path, monkeypatch):
-    reading = threading.Event()
-    let_go = threading.Event()
-    held_too_long: list[bool] = []
-    log = tmp_path / "elsewhere.csv"
+class HeldRead:
+    """The import's read of ``log`` held until :attr:`let_go` is set (other runs read as
+    usual: the views'); :attr:`reading` is set once it is held, :attr:`too_long` once the
+    hold's guard ran out."""
 
-    def held_read(*args, **kwargs):
-        if Path(args[0]) != log:  # a run read for a view, not the import's read
-            return read_run_log(*args, **kwargs)
-        reading.set()
-        if not let_go.wait(HOLD_GUARD_S):
-            held_too_long.append(True)
+    def __init__(self, monkeypatch, log: Path) -> None:
+        self.log = log
+        self.reading = threading.Event()
+        self.let_go = threading.Event()
+        self.too_long = False
+        monkeypatch.setattr(runs, "read_run_log", self)
+
+    def __call__(self, *args, **kwargs):
+        if Path(args[0]) == self.log:  # the import's read, not a run read for a view
+            self.reading.set()
+            self.too_long = not self.let_go.wait(HOLD_GUARD_S)
         return read_run_log(*args, **kwargs)
 
-    monkeypatch.setattr(runs, "read_run_log", held_read)
+
+async def test_a_log_is_read_in_a_worker_and_keys_land_meanwhile(quiet, tmp_path, monkeypatch):
+    log = tmp_path / "elsewhere.csv"
+    held = HeldRead(monkeypatch, log)
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "model_check")
@@ -58,7 +65,7 @@ async def test_a_log_is_read_in_a_worker_and_keys_land_meanwhile(quiet, tmp_path
         await settle(pilot, lambda: app.focused is box)
         box.value = str(log)
         await pilot.press("enter")
-        assert await asyncio.to_thread(reading.wait, HOLD_GUARD_S)
+        assert await asyncio.to_thread(held.reading.wait, HOLD_GUARD_S)
         msg = app.screen.query_one("#import-msg", Prose)
         # while the log is being read: the box says so, and keys land
         await pilot.pause()
@@ -68,9 +75,9 @@ async def test_a_log_is_read_in_a_worker_and_keys_land_meanwhile(quiet, tmp_path
         await pilot.press("enter")  # a second log while the first is read: it waits its turn
         await pilot.pause()
         assert msg.text == f"still reading {log}: load {log}-2 once it is in", msg.text
-        let_go.set()
+        held.let_go.set()
         await settle(pilot, lambda: msg.text.startswith("imported"))
-        assert not held_too_long
+        assert not held.too_long
         assert " ".join(msg.text.split()).startswith(f"imported {log} as imported-1 (")
         with app.session as s:
             info = s.check_run()
@@ -93,18 +100,8 @@ async def test_a_log_is_read_in_a_worker_and_keys_land_meanwhile(quiet, tmp_path
 async def test_a_copy_made_after_the_app_stopped_is_not_left_in_runs(quiet, tmp_path, monkeypatch):
     """The app quits while the log is read: the copy then made is a run of no session
     (none took it), and is removed rather than left in runs/ unlisted."""
-    reading = threading.Event()
-    let_go = threading.Event()
     log = tmp_path / "elsewhere.csv"
-
-    def held_read(*args, **kwargs):
-        if Path(args[0]) != log:
-            return read_run_log(*args, **kwargs)
-        reading.set()
-        let_go.wait(HOLD_GUARD_S)
-        return read_run_log(*args, **kwargs)
-
-    monkeypatch.setattr(runs, "read_run_log", held_read)
+    held = HeldRead(monkeypatch, log)
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start_with_a_run(pilot, "model_check")
@@ -116,7 +113,7 @@ async def test_a_copy_made_after_the_app_stopped_is_not_left_in_runs(quiet, tmp_
         await settle(pilot, lambda: app.focused is box)
         box.value = str(log)
         await pilot.press("enter")
-        assert await asyncio.to_thread(reading.wait, HOLD_GUARD_S)
-    let_go.set()  # the app has stopped: the worker reads and copies now
+        assert await asyncio.to_thread(held.reading.wait, HOLD_GUARD_S)
+    held.let_go.set()  # the app has stopped: the worker reads and copies now
     await asyncio.get_running_loop().shutdown_default_executor()  # its thread is done
     assert sorted(os.listdir(folder / "runs")) == ["steps-1.csv"]
