@@ -19,6 +19,7 @@ from minseg_tui.lab.views.check_says import (
     none_named,
     where,
 )
+from minseg_tui.lab.views.check_text import deviation_row
 from minseg_tui.model.check import check
 from minseg_tui.model.check import result as rs
 from minseg_tui.model.check.deviations import Deviation, edge_count, regions
@@ -52,6 +53,12 @@ def test_a_single_rise_is_said_as_the_rise_and_several_by_their_number():
         Deviation("steady_state", 100, 1.42, 0.0),
     ]
     assert where(devs).startswith("the model is worst after the rise: rms 2.255 rad/s")
+    # and the full text's table names its rows in the same words
+    assert [deviation_row(d).split("  ")[1].strip() for d in devs] == [
+        "after the rise",
+        "in steady state",
+    ]
+    assert "after the 3 falls" in deviation_row(Deviation("after_falling_edges", 9, 1.0, 0.0, 3))
 
 
 def test_the_fit_percentage_is_the_lab_assistants_a_student_is_told_what_it_means():

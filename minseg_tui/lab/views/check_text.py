@@ -20,10 +20,12 @@ from minseg_tui.lab.views.check_says import (
     evidence,
     lead_why,
     other,
+    region_words,
     sampling,
     where,
 )
 from minseg_tui.model.check import CheckResult, Gain
+from minseg_tui.model.check.deviations import Deviation
 from minseg_tui.quantities import MISSING, format_number
 
 
@@ -170,6 +172,16 @@ def _over(r: CheckResult) -> str:
     return f"over the {used} of {n} rows the fit used ({n - used} left out, see the anomalies)"
 
 
+def deviation_row(d: Deviation) -> str:
+    """One row of the full text's table of where the model deviates: the region in the
+    words the sentences use ('after the rise' on a log with one, :func:`region_words`),
+    its rows, and the rms and mean of the speed's error there (rad/s)."""
+    return (
+        f"  {region_words(d.region, d.edges):<20} {d.rows:6d} rows  rms {d.rms:.3f} rad/s"
+        f"  mean {d.mean:+.3f} rad/s"
+    )
+
+
 def text(r: CheckResult) -> str:
     """The human report: how the log was sampled, the baseline, where it deviates, the
     cause and its evidence, the extended model, the gain (the figure that means most
@@ -184,11 +196,7 @@ def text(r: CheckResult) -> str:
         f" ({_over(r)})",
         f"Where it deviates: {where(r.deviations)}",
     ]
-    for d in r.deviations:
-        lines.append(
-            f"  {d.region.replace('_', ' '):<20} {d.rows:6d} rows  rms {d.rms:.3f} rad/s"
-            f"  mean {d.mean:+.3f} rad/s"
-        )
+    lines += [deviation_row(d) for d in r.deviations]
     lines.append(f"Cause: {f.cause}")
     lines.append(f"  {evidence(f)}")
     for o in f.others:
