@@ -22,7 +22,7 @@ from minseg_tui.lab.views.check_says import (
 from minseg_tui.lab.views.check_text import deviation_row
 from minseg_tui.model.check import check
 from minseg_tui.model.check import result as rs
-from minseg_tui.model.check.deviations import Deviation, edge_count, regions
+from minseg_tui.model.check.deviations import Deviation, deviations, edge_count, regions
 from tests.model.realcheck import REAL, analyze, on
 
 ONE_RISE = np.array([0.0, 0.0, 4.0, 4.0, 4.0, 4.0])
@@ -38,6 +38,20 @@ def test_edges_are_counted_by_the_kind_of_their_region():
     assert edge_count(ONE_RISE, "after_rising_edges") == 1
     assert edge_count(ONE_RISE, "after_falling_edges") == 0
     assert regions(ONE_RISE, 0.01, 0.01)[3] == 0  # the rows after it are the rise's
+
+
+def test_a_step_whose_rows_the_fit_left_out_is_not_counted():
+    square = np.repeat([0.0, 3.0, 0.0, 3.0, 0.0, 3.0, 0.0], 10)  # 3 rises, 3 falls
+    keep = np.ones(square.size, dtype=bool)
+    keep[21:30] = False  # every row after the second fall (row 20) left out
+    T, ts = 0.01, 0.01
+    assert edge_count(square, "after_falling_edges", T, ts, keep) == 2
+    assert edge_count(square, "after_rising_edges", T, ts, keep) == 3
+    # the region's figures and the count speak of the same rows
+    devs = deviations(square, np.zeros(square.size), T, ts, keep)
+    assert {d.region: d.edges for d in devs}["after_falling_edges"] == 2
+    keep[22:30] = True  # one row of it kept: that fall counts again
+    assert edge_count(square, "after_falling_edges", T, ts, keep) == 3
 
 
 def test_a_single_rise_is_said_as_the_rise_and_several_by_their_number():

@@ -890,7 +890,7 @@ def _miss(
     level = max(fl, noise / 3.0)
     top = float(np.max(np.abs(y))) if y.size else 0.0
     if worst > MISS_NOISE * level and worst > MISS_SHARE * top:
-        return worst, where, level, edge_count(u, where)
+        return worst, where, level, edge_count(u, where, T, samp.ts, keep > 0)
     return None
 
 
