@@ -1,0 +1,53 @@
+"""The model check's words on features of real logs the project had never seen (stop 39,
+/work/coord/UNSEEN39.md), each reproduced on a seeded synthetic log: the real data stay out
+of the repository."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from minseg_tui.lab.views import check_words
+from minseg_tui.model.check import check
+from minseg_tui.model.check.result import Plain
+
+NUM = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
+
+
+def switch_on_glitch_log(seed: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A 9 V step at 2 s logged every 20 ms from a 432-count encoder (t, s; u, V; omega,
+    rad/s), as an ESP32 gearmotor's public log reads: a fast rise (T 30 ms, 60 % of the way)
+    and a slow one (T 0.4 s, the last 10 %), and the two rows right after the step reading
+    16.0 and 16.7 rad/s, 40 % above the 11.5 rad/s the motor settles at (counts from the
+    switch-on, not the wheel)."""
+    rng = np.random.default_rng(seed)
+    ts, cpr, top = 0.02, 432, 11.5
+    t = np.arange(1, 301) * ts
+    u = np.where((t > 2.0) & (t < 6.0 - 1e-9), 9.0, 0.0)
+    fine = np.arange(0.0, 6.0 + 1e-9, 1e-4)
+    after = fine - 2.0
+    w = np.where(after > 0, top * (1 - 0.6 * np.exp(-after / 0.03) - 0.1 * np.exp(-after / 0.4)), 0)
+    counts = np.floor(np.interp(t, fine, np.cumsum(w) * 1e-4) * cpr / (2 * np.pi) + rng.uniform())
+    q = 2 * np.pi / cpr / ts
+    omega = np.diff(np.concatenate([[counts[0]], counts])) * q
+    k = int(np.searchsorted(t, 2.0 + 1e-9))
+    omega[k : k + 2] = np.round(np.array([16.0, 16.7]) / q) * q
+    return t, u, omega
+
+
+def test_a_miss_above_the_noise_with_no_cause_is_not_said_to_follow_within_the_noise():
+    # the report's lead said "follows the measured speed to within its noise (0.32 rad/s
+    # rms): nothing needs adding" where the details said it "misses by 1.1 rad/s rms more
+    # than the noise" (the ESP32 gearmotor log, rmse 1.12 rad/s)
+    t, u, omega = switch_on_glitch_log(1)
+    r = check(t, u, omega, ts=0.02, cpr=432)
+    plain = r.finding.evidence
+    assert r.finding.cause == "none" and r.finding.explained
+    assert isinstance(plain, Plain) and plain.how == "above"
+    (said,) = check_words.lead(r, u)
+    assert "to within its noise" not in said and "nothing needs adding" not in said, said
+    m = re.search(rf"misses the measured speed by ({NUM}) rad/s rms more than its noise", said)
+    assert m is not None, said
+    assert float(m.group(1)) == float(f"{plain.left:.2g}")
+    assert plain.left > 0.5 * plain.level
