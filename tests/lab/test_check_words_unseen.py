@@ -7,10 +7,14 @@ from __future__ import annotations
 import re
 
 import numpy as np
+import pytest
 
+from minseg_tui.lab.content.identify_says import sentence
+from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views import check_words
 from minseg_tui.model.check import check
 from minseg_tui.model.check.result import Plain
+from minseg_tui.model.identify import Reading, identify
 
 NUM = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
 
@@ -51,3 +55,28 @@ def test_a_miss_above_the_noise_with_no_cause_is_not_said_to_follow_within_the_n
     assert m is not None, said
     assert float(m.group(1)) == float(f"{plain.left:.2g}")
     assert plain.left > 0.5 * plain.level
+
+
+def test_identify_names_glitch_rows_after_a_step_and_does_not_call_the_steps_late(tmp_path):
+    # identify said of the ESP32 gearmotor log: "the wheel moves earlier than the logged
+    # steps ... The steps in the log are placed late (a command logged after it acted)", where
+    # the two rows at the step read 16.0 and 16.7 rad/s and the next 7.27 (it settles at 11.5)
+    t, u, omega = switch_on_glitch_log(1)
+    path = tmp_path / "glitch.csv"
+    rows = "".join(f"{a:.3f},{b:.4f},{c:.4f}\n" for a, b, c in zip(t, u, omega, strict=True))
+    path.write_text("# ts: 0.02\n# cpr: 432\nt,u,omega\n" + rows)
+    log = read_run_log(path)
+    r = identify([Reading(9.0, 9.0, 11.5, 50.0)], 5.0, log)
+    said = [sentence(o) for o in r.observations]
+    text = " ".join(said)
+    assert "placed late" not in text and "moves earlier than the logged steps" not in text, text
+    (glitch,) = [s for o, s in zip(r.observations, said, strict=True) if o.code == "edge_glitch"]
+    k = int(np.searchsorted(t, 2.0 + 1e-9))
+    m = re.search(rf"Lines (\d+)-(\d+), right after the step, read ({NUM}), ({NUM}) rad/s", glitch)
+    assert m is not None, glitch
+    # the file's lines: two header lines and the column names before row 0
+    assert (int(m.group(1)), int(m.group(2))) == (k + 4, k + 5)
+    assert [float(m.group(3)), float(m.group(4))] == pytest.approx(omega[k : k + 2], abs=0.06)
+    back = re.search(rf"falls back to ({NUM}) rad/s", glitch)
+    assert back is not None and float(back.group(1)) == pytest.approx(omega[k + 2], abs=0.006)
+    assert float(back.group(1)) < 11.5 < float(m.group(3))

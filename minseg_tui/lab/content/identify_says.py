@@ -29,6 +29,7 @@ from minseg_tui.model.identify.observations import (
     CurrentInAmperes,
     DeadTime,
     DryFriction,
+    EdgeGlitch,
     FrictionTask15,
     GlitchRows,
     KvDisagree,
@@ -328,6 +329,24 @@ def _(o: GlitchRows) -> str:
         "row ever is: switch-on glitches of the logging, not motion. They are left out"
         + (" with the zeroed row before them" if o.zeroed else "")
         + f": the fit starts at {_lines(o.start)}."
+    )
+
+
+@sentence.register
+def _(o: EdgeGlitch) -> str:
+    speeds = ", ".join(format_reading(w, "", 3) for w in o.speeds)
+    n = o.n_rows
+    return (
+        f"{_lines(o.rows).capitalize()}, right after the step, read{'' if n > 1 else 's'} "
+        f"{speeds} rad/s, beyond any speed the rise reaches later (at most "
+        f"{format_reading(o.level, '', 3)} rad/s, a 5-row running median), and the row after {'them' if n > 1 else 'it'} falls back to "
+        f"{format_reading(o.after, '', 3)} rad/s: a motor answering a step does not overshoot "
+        "and fall back within a sample or two, so "
+        + ("these are glitches" if n > 1 else "this is a glitch")
+        + " of the reading at switch-on (counts picked up as the motor is switched), not the "
+        "wheel moving before the step. The fit keeps "
+        + ("them" if n > 1 else "it")
+        + ", which pulls T; read it with care."
     )
 
 

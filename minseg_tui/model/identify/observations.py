@@ -509,6 +509,22 @@ class GlitchRows(Observation):
 
 
 @dataclass(frozen=True)
+class EdgeGlitch(Observation):
+    """Rows right after a step (``rows``) whose speeds (rad/s, ``speeds``) read beyond any
+    speed the rise later reaches (``level``, rad/s: the furthest a 5-row running median of
+    the rows after them reaches up to the next change of the command), after which the speed
+    falls back to ``after`` (rad/s): a glitch of the reading at switch-on
+    (:func:`~minseg_tui.model.identify.risefit.edge_glitches`), kept in the fit."""
+
+    code: ClassVar[str] = "edge_glitch"
+    rows: Lines
+    n_rows: int
+    speeds: tuple[float, ...]
+    level: float
+    after: float
+
+
+@dataclass(frozen=True)
 class LoggingStall(Observation):
     """A row (``at``) after a ``gap`` (s) of ``gap / ts`` sample periods (``ts``, s), left out
     of the fit; ``mended``: the angle rebuilt from the speed column carried it across."""
@@ -739,6 +755,45 @@ def fit_observations(
                 start=_lines(log, [glitches]),
             )
         )
+    if fit.edge_glitches:
+        # runs of consecutive rows, each after its own step
+        runs: list[list[int]] = []
+        for r in fit.edge_glitches:
+            if runs and r == runs[-1][-1] + 1:
+                runs[-1].append(r)
+            else:
+                runs.append([r])
+        w = np.asarray(log.omega, dtype=float)
+        u = np.asarray(log.u, dtype=float)
+        for run in runs:
+            rows = [r + glitches for r in run]
+            after = rows[-1] + 1
+            changes = np.flatnonzero(u[after:] != u[rows[0]])
+            rest = w[after : after + int(changes[0]) if changes.size else w.size]
+            up = 1.0 if w[rows[0]] > w[rows[0] - 1] else -1.0
+            # the furthest the rise later reaches, a 5-row running median (its noise out)
+            top = (
+                float(
+                    up
+                    * np.max(
+                        up
+                        * np.median(
+                            np.stack([rest[j : rest.size - 4 + j] for j in range(5)]), axis=0
+                        )
+                    )
+                )
+                if rest.size >= 5
+                else rise
+            )
+            out.append(
+                EdgeGlitch(
+                    _lines(log, rows),
+                    len(rows),
+                    tuple(float(w[r]) for r in rows),
+                    top,
+                    float(w[after]),
+                )
+            )
     t = log.board_time()
     for r in fit.left_out:
         k = r + glitches
