@@ -15,6 +15,7 @@ from minseg_tui.lab.views import check_words
 from minseg_tui.model.check import check
 from minseg_tui.model.check.result import Plain
 from minseg_tui.model.identify import Reading, identify
+from minseg_tui.model.runlog import RunLog
 
 NUM = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
 
@@ -80,3 +81,39 @@ def test_identify_names_glitch_rows_after_a_step_and_does_not_call_the_steps_lat
     back = re.search(rf"falls back to ({NUM}) rad/s", glitch)
     assert back is not None and float(back.group(1)) == pytest.approx(omega[k + 2], abs=0.006)
     assert float(back.group(1)) < 11.5 < float(m.group(3))
+
+
+def coarse_creeping_log(seed: int) -> RunLog:
+    """A 4.5 V step at 1 s on a wheel read once per motor revolution (a 114.7:1 gearbox:
+    0.0548 rad a count) every 6.3 ms, as a LEGO-and-Arduino pendulum's public log reads: a
+    70 ms dead time, a rise of T 0.25 s to 88 % of 10 rad/s and a creep (T 1.5 s) to the
+    rest; theta in rad, omega the Euler speed of the counts (t, s; u, V; omega, rad/s)."""
+    rng = np.random.default_rng(seed)
+    ts = 0.0063
+    t = np.arange(0.0, 6.4, ts)
+    u = np.where(t >= 1.0, 4.5, 0.0)
+    fine = np.arange(0.0, 6.5, 1e-4)
+    a = fine - 1.07
+    w = np.where(a > 0, 10.0 * (1 - 0.88 * np.exp(-a / 0.25) - 0.12 * np.exp(-a / 1.5)), 0.0)
+    q = 2 * np.pi / 114.7
+    theta = np.floor(np.interp(t, fine, np.cumsum(w) * 1e-4) / q + rng.uniform(0.0, 0.3)) * q
+    omega = np.concatenate([[0.0], np.diff(theta) / ts])
+    return RunLog(t=t, u=u, omega=omega, extra={"theta": theta}, source="coarse.csv")
+
+
+def test_a_dead_time_read_off_a_running_median_says_where_the_first_count_came():
+    # identify said of the LEGO log: "the speed first shows 197.3 ms after the steps", where
+    # its first count came 90.9 ms after them (a 3-row running median drops a lone count)
+    log = coarse_creeping_log(1)
+    r = identify([Reading(4.5, 4.5, 10.0, 50.0)], 5.0, log)
+    (said,) = [sentence(o) for o in r.observations if o.code == "dead_time"]
+    m = re.search(
+        rf"a running median over 3 rows, first shows ({NUM}) ms after the steps; a single "
+        rf"row's speed leaves its level ({NUM}) ms after them",
+        said,
+    )
+    assert m is not None, said
+    step = log.t[int(np.flatnonzero(log.u > 0)[0])]
+    first = log.t[int(np.flatnonzero(log.omega > 0)[0])] - step
+    assert float(m.group(2)) == pytest.approx(1e3 * first, abs=0.05)
+    assert float(m.group(1)) > float(m.group(2)) + 1e3 * 0.0063

@@ -378,7 +378,14 @@ def _(o: DeadTime) -> str:
             " The rows of the rise alone show it"
             + (
                 f" (the speed first shows {format_constant(o.onset, 's')} after the steps)"
-                if o.onset is not None
+                if o.onset is not None and o.first_move is None
+                else (
+                    " (the speed, a running median over 3 rows, first shows "
+                    f"{format_constant(o.onset, 's')} after the steps; a single row's speed "
+                    f"leaves its level {format_constant(o.first_move, 's')} after them, a "
+                    "first count the median drops)"
+                )
+                if o.onset is not None and o.first_move is not None
                 else ""
             )
             + (

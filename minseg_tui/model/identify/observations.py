@@ -543,7 +543,10 @@ class DeadTime(Observation):
     shows, s after the steps, or None); ``creep``: the speed creeps on after the rise
     (:class:`TRowsApart`'s ``creep``), which holds the fit of every row early; without it,
     the fit of every row takes no dead time only because it does not fit them clearly better
-    (a start between coarse counts: tests/model/identgen.py seed 2)."""
+    (a start between coarse counts: tests/model/identgen.py seed 2). ``first_move``: where a
+    row's own speed first leaves its level (s after the steps), when it does more than one
+    sample period before ``onset``, which a 3-row running median reads (a first count alone,
+    as coarse counts give, is dropped by it); None otherwise."""
 
     code: ClassVar[str] = "dead_time"
     dead_time: float
@@ -551,6 +554,7 @@ class DeadTime(Observation):
     from_rise: bool
     onset: float | None
     creep: bool
+    first_move: float | None = None
 
 
 class LateStart(Enum):
@@ -808,7 +812,16 @@ def fit_observations(
     if fit.dead_time > 0:
         out.append(
             DeadTime(
-                fit.dead_time, bound, fit.dead_time_from_rise, fit.onset, creep=creep is not None
+                fit.dead_time,
+                bound,
+                fit.dead_time_from_rise,
+                fit.onset,
+                creep=creep is not None,
+                first_move=fit.first_move
+                if fit.first_move is not None
+                and fit.onset is not None
+                and fit.first_move < fit.onset - bound
+                else None,
             )
         )
     elif fit.shift_on_bound and fit.shift > 0:
