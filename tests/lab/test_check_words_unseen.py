@@ -9,7 +9,7 @@ import re
 import numpy as np
 import pytest
 
-from minseg_tui.lab.content.identify_says import sentence
+from minseg_tui.lab.content.identify_says import sentence, t63_note
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views import check_words
 from minseg_tui.model.check import check
@@ -117,3 +117,52 @@ def test_a_dead_time_read_off_a_running_median_says_where_the_first_count_came()
     first = log.t[int(np.flatnonzero(log.omega > 0)[0])] - step
     assert float(m.group(2)) == pytest.approx(1e3 * first, abs=0.05)
     assert float(m.group(1)) > float(m.group(2)) + 1e3 * 0.0063
+
+
+def driver_speed_log(seed: int, over: int) -> RunLog:
+    """A 7.5 V step at 20 ms on a motor (T 60 ms, 16 rad/s) whose angle a loop without a
+    clock logs in whole degrees every 5.5-7 ms, as an EV3's public ev3dev log reads; the
+    speed column is the angle's mean speed over the last ``over`` intervals (1: over each
+    interval, as the lab logs it; 3: a driver's estimate, a sample late)."""
+    rng = np.random.default_rng(seed)
+    t = np.cumsum(np.concatenate(([0.0], rng.uniform(0.0055, 0.007, 160))))
+    u = np.where(t >= 0.02, 7.5, 0.0)
+    after = np.maximum(t - 0.02, 0.0)
+    angle = 16.0 * (after - 0.06 * (1 - np.exp(-after / 0.06)))
+    theta = np.radians(np.floor(np.degrees(angle)))
+    back = np.maximum(np.arange(t.size) - over, 0)
+    span = np.where(t > t[back], t - t[back], 1.0)
+    omega = (theta - theta[back]) / span
+    return RunLog(t=t, u=u, omega=omega, extra={"theta": theta}, source="ev3.csv")
+
+
+def test_identify_says_when_the_speed_column_runs_behind_the_angle():
+    # identify said of ev3dev's speed attribute "The measured speed is the mean over each
+    # sample interval, so it lags the true speed by half a sample" where that speed runs
+    # 8.8 ms (1.4 samples) behind the logged angle
+    table = [Reading(7.5, 7.5, 16.0, 50.0)]
+    r = identify(table, 5.0, driver_speed_log(3, over=3))
+    said = [sentence(o) for o in r.observations]
+    text = " ".join(said)
+    assert "The measured speed is the mean over each sample interval" not in text, text
+    (lags,) = [s for o, s in zip(r.observations, said, strict=True) if o.code == "speed_lags"]
+    m = re.search(rf"as a speed ({NUM}) ms late would \(({NUM}) sample periods", lags)
+    assert m is not None, lags
+    ts = float(np.median(np.diff(driver_speed_log(3, over=3).t)))
+    assert float(m.group(1)) == pytest.approx(1e3 * ts, rel=0.3)  # a sample behind
+    assert r.step is not None and r.step.T_63_note is not None
+    assert "the logged speed is the mean" not in t63_note(r.step.T_63_note)
+    # the same log with the speed over each interval: nothing said
+    plain = identify(table, 5.0, driver_speed_log(3, over=1))
+    assert "speed_lags" not in [o.code for o in plain.observations]
+
+
+def test_a_63_reading_far_off_by_a_late_speed_column_is_said_so():
+    r = identify([Reading(7.5, 7.5, 16.0, 50.0)], 5.0, driver_speed_log(3, over=7))
+    (said,) = [sentence(o) for o in r.observations if o.code == "T_63_differs"]
+    assert "mean over each sample interval, so it lags" not in said, said
+    m = re.search(rf"speed column runs about ({NUM}) ms behind its angle column", said)
+    assert m is not None, said
+    # the mean over the last 7 intervals is centred 3 intervals behind the last one's
+    ts = float(np.median(np.diff(driver_speed_log(3, over=7).t)))
+    assert float(m.group(1)) == pytest.approx(3e3 * ts, rel=0.2)

@@ -46,6 +46,7 @@ from minseg_tui.model.identify.observations import (
     ShiftLate,
     ShiftMisfit,
     SpeedInRpm,
+    SpeedLags,
     StepsSkipped,
     StepVsTable,
     T63Differs,
@@ -226,8 +227,26 @@ def _(o: TShort) -> str:
     )
 
 
+def _lagging(lag: float) -> str:
+    """The speed column's lag behind the angle column, said for the 63 % reading."""
+    return (
+        f"this log's speed column runs about {format_constant(lag, 's')} behind its angle "
+        "column (see below), more than the half sample of a mean over each interval: the "
+        "reading, taken off that speed, carries the lag; T, fitted to the angle, does not"
+    )
+
+
 def _t63_why(o: T63Differs) -> str:
     T_63, T, dead_time = o.T_63, o.T, o.dead_time
+    if o.lag is not None and o.why in (T63Why.DEAD_TIME, T63Why.LAG):
+        held = (
+            f"The reading counts from the logged step, so it holds the dead time of "
+            f"{format_constant(dead_time, 's')} that T does not; besides, "
+            if o.why is T63Why.DEAD_TIME
+            else ""
+        )
+        said = _lagging(o.lag)
+        return f"{held}{said if held else said[0].upper() + said[1:]}."
     if o.why is T63Why.DEAD_TIME_SHAPE and o.shape is not None and o.noise is not None:
         return (
             f"The reading counts from the logged step, so it holds the dead time of "
@@ -329,6 +348,19 @@ def _(o: GlitchRows) -> str:
         "row ever is: switch-on glitches of the logging, not motion. They are left out"
         + (" with the zeroed row before them" if o.zeroed else "")
         + f": the fit starts at {_lines(o.start)}."
+    )
+
+
+@sentence.register
+def _(o: SpeedLags) -> str:
+    return (
+        "The speed column runs behind the angle column: summed over the sample intervals it "
+        f"falls behind the angle as a speed {format_constant(o.lag, 's')} late would "
+        f"({format_fixed(o.lag / o.ts, 1)} sample periods of {format_reading(o.ts, 'ms', 3)}), "
+        "where the mean speed over each interval would not fall behind at all. So it is a "
+        "filtered or late speed (as a motor driver's own speed estimate), not the angle's "
+        "difference over each interval. T is fitted to the angle and does not carry that lag; "
+        "the 63 % reading, and the model check (analyze), which read the speed column, do."
     )
 
 
@@ -643,13 +675,20 @@ def t63_note(n: T63Note) -> str:
         if n.misfit
         else "the sampling alone moves the reading by "
     )
+    whose = "the model's speed" if n.lag is not None else "the logged speed"
     out += (
         f" Read the same way on the fitted model sampled every {n.ts * 1e3:.3g} ms like this log, it gives "
         f"{format_constant(n.model, 's')}: {delay}{sampled * 1e3:+.1f} ms "
-        "(the logged speed is the mean over each sample interval, half a sample late, and the reading "
+        f"({whose} is the mean over each sample interval, half a sample late, and the reading "
         "joins the samples by straight lines)"
     )
     rest = T_63 - n.model
+    if n.lag is not None:
+        return (
+            out + f", and {rest * 1e3:+.1f} ms is the rest, with the noise of reading single "
+            f"samples: {_lagging(n.lag)}. The least-squares fit models the sampling, so its T "
+            "is the one the model uses."
+        )
     noise = n.noise
     if n.rest is RestWhy.NOISE and noise is not None:
         out += (

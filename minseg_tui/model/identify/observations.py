@@ -283,7 +283,8 @@ class T63Differs(Observation):
     sway it gives a reading of single samples (s), or None (as
     :func:`response_observations` takes them); ``T_ci``: the least-squares T's 95 % interval
     (s) when it holds the 63 % reading too (the log then does not tell the two apart), else
-    None."""
+    None; ``lag``: how late the speed column runs behind the angle column (s,
+    :class:`SpeedLags`), or None."""
 
     code: ClassVar[str] = "T_63_differs"
     T_63: float
@@ -293,6 +294,7 @@ class T63Differs(Observation):
     shape: float | None
     noise: tuple[float, float] | None
     T_ci: tuple[float, float] | None = None
+    lag: float | None = None
 
 
 @dataclass(frozen=True)
@@ -506,6 +508,17 @@ class GlitchRows(Observation):
     n_rows: int
     speeds: tuple[float, ...]
     start: Lines
+
+
+@dataclass(frozen=True)
+class SpeedLags(Observation):
+    """The log's speed column runs ``lag`` (s) behind its angle column
+    (:func:`~minseg_tui.model.runlog.speed_lag`), more than half a sample period ``ts`` (s):
+    it is no mean over each interval but a filtered or late speed."""
+
+    code: ClassVar[str] = "speed_lags"
+    lag: float
+    ts: float
 
 
 @dataclass(frozen=True)
