@@ -417,9 +417,11 @@ def speed_lag(t: ArrayLike, omega: ArrayLike, theta: ArrayLike) -> float | None:
     the sample intervals (each row's speed times its interval) falls behind the angle by the
     speed times this lag, fitted by least squares over the rows where the speed is above half
     its largest. A speed that is the mean over each interval (the angle's difference over it)
-    sums to the angle itself: 0 (the ten logs in ../shared, within 2 us); a filtered speed, or
-    one a driver estimates on its own (ev3dev's ``speed`` attribute: 8.6-13 ms at 6.3-6.5 ms a
-    sample), lags. t: s; omega: rad/s; theta: rad. None when the speed never moves."""
+    sums to the angle itself: 0 (eight of the ten logs in ../shared, within 1 us); a filtered
+    speed, or one a driver estimates on its own (ev3dev's ``speed`` attribute: 8.8-12.7 ms at
+    6.3-6.5 ms a sample), lags. A speed over a nominal period on rows logged further apart
+    sums ahead of the angle, a negative lag (the two n20-12v logs: -9 and -31 ms, their 11 ms
+    rows). t: s; omega: rad/s; theta: rad. None when the speed never moves."""
     tt = np.asarray(t, dtype=float)
     w = np.asarray(omega, dtype=float)
     th = np.asarray(theta, dtype=float)

@@ -429,7 +429,8 @@ def _K_interval(
 LAG_SAMPLES: float = 0.5
 """A speed column that runs behind the angle column by more than this many sample periods
 (:func:`~minseg_tui.model.runlog.speed_lag`) is said to: a mean over each interval runs 0
-behind (the logs in ../shared: within 2 us), ev3dev's speed attribute 1.4-2.0 periods."""
+behind (eight of the logs in ../shared: within 1 us; the n20-12v two, a speed over the
+nominal period on longer rows, run ahead), ev3dev's speed attribute 1.4-1.9 periods."""
 
 
 class RestWhy(Enum):
