@@ -9,6 +9,7 @@ import re
 import numpy as np
 import pytest
 
+from minseg_tui.cli import main
 from minseg_tui.lab.content.identify_says import sentence, t63_note
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views import check_words
@@ -166,3 +167,32 @@ def test_a_63_reading_far_off_by_a_late_speed_column_is_said_so():
     # the mean over the last 7 intervals is centred 3 intervals behind the last one's
     ts = float(np.median(np.diff(driver_speed_log(3, over=7).t)))
     assert float(m.group(1)) == pytest.approx(3e3 * ts, rel=0.2)
+
+
+def test_a_step_in_reverse_is_refused_with_how_to_read_it(tmp_path, capsys):
+    # identify refused ev3dev's run at duty -100 % (0 -> -7.5 V) with "found 0 rising
+    # edge(s), none usable", true but silent on why and on what reads it
+    log = driver_speed_log(3, over=1)
+    path = tmp_path / "reverse.csv"
+    rows = zip(log.t, -log.u, -log.omega, -log.extra["theta"], strict=True)
+    path.write_text(
+        "t,u,omega,theta\n" + "".join(f"{a:.6f},{b:g},{c:.5f},{d:.5f}\n" for a, b, c, d in rows)
+    )
+    table = tmp_path / "table.csv"
+    table.write_text("u_req,u_ss,omega_ss,i_ss\n7.5,7.5,16,50\n")
+    assert main(["identify", str(table), "--R", "5", "--step", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "found 0 rising edge(s), none usable" in err
+    assert err.endswith(
+        "its step goes from 0 to -7.5 V, a run in reverse: identify reads steps up, so flip the "
+        "signs of its voltage, speed and angle columns\n"
+    ), err
+    # and flipped back, it is read
+    path.write_text(
+        "t,u,omega,theta\n"
+        + "".join(
+            f"{a:.6f},{b:g},{c:.5f},{d:.5f}\n"
+            for a, b, c, d in zip(log.t, log.u, log.omega, log.extra["theta"], strict=True)
+        )
+    )
+    assert main(["identify", str(table), "--R", "5", "--step", str(path)]) == 0

@@ -967,10 +967,17 @@ def identify_refusal_words(why: IdentifyRefusal) -> str:
                 f"expected the rows to give a positive k_v (V s/rad), their median is "
                 f"{k_v:.3g}: u_ss - R i_ss is not above 0 on enough rows; check R and i_ss (mA)"
             )
-        case NoRisingEdge(column, after, rising):
+        case NoRisingEdge(column, after, rising, reverse):
+            flip = (
+                f"; its step goes from {reverse[0] + 0.0:g} to {reverse[1]:g} V, a run in reverse: "
+                "identify reads steps up, so flip the signs of its voltage, speed and angle "
+                "columns"
+                if reverse is not None
+                else ""
+            )
             return (
                 f"expected a rising edge in {column} (V) with at least one sample before it "
-                f"and {after} after it; found {rising} rising edge(s), none usable"
+                f"and {after} after it; found {rising} rising edge(s), none usable{flip}"
             )
         case RiseNotFitted():
             return "expected a usable rising edge"

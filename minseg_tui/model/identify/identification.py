@@ -230,8 +230,14 @@ def _response_result(
     windows, skipped = rise_windows(log)
     if not windows:
         cmd, name = command(log)
-        rising = sum(e.rising for e in find_edges(cmd))
-        raise IdentifyRefused(log.source, log.line_of(0), NoRisingEdge(name, MIN_AFTER, rising))
+        edges = find_edges(cmd)
+        rising = sum(e.rising for e in edges)
+        # a step from rest to a negative voltage: the same run in reverse
+        down = [e for e in edges if e.after < 0 and abs(e.before) < 0.1 * abs(e.after)]
+        reverse = (down[0].before, down[0].after) if down and not rising else None
+        raise IdentifyRefused(
+            log.source, log.line_of(0), NoRisingEdge(name, MIN_AFTER, rising, reverse)
+        )
     refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
     if refused:
         raise LogRefused(log.source, None, refused)
