@@ -412,6 +412,29 @@ MAX_GLITCH_ROWS: int = 3
 """Most rows at the start of a log that are taken for switch-on glitches."""
 
 
+def speed_lag(t: ArrayLike, omega: ArrayLike, theta: ArrayLike) -> float | None:
+    """How late (s) a log's speed column runs behind its angle column: the speed summed over
+    the sample intervals (each row's speed times its interval) falls behind the angle by the
+    speed times this lag, fitted by least squares over the rows where the speed is above half
+    its largest. A speed that is the mean over each interval (the angle's difference over it)
+    sums to the angle itself: 0 (eight of the ten logs in ../shared, within 1 us); a filtered
+    speed, or one a driver estimates on its own (ev3dev's ``speed`` attribute: 8.8-12.7 ms at
+    6.3-6.5 ms a sample), lags. A speed over a nominal period on rows logged further apart
+    sums ahead of the angle, a negative lag (the two n20-12v logs: -9 and -31 ms, their 11 ms
+    rows). t: s; omega: rad/s; theta: rad. None when the speed never moves."""
+    tt = np.asarray(t, dtype=float)
+    w = np.asarray(omega, dtype=float)
+    th = np.asarray(theta, dtype=float)
+    if tt.size < 3:
+        return None
+    summed = np.concatenate(([th[0]], th[0] + np.cumsum(w[1:] * np.diff(tt))))
+    moving = np.abs(w) > 0.5 * float(np.max(np.abs(w)))
+    if not np.any(moving) or not float(np.max(np.abs(w))) > 0:
+        return None
+    ww = w[moving]
+    return float(np.dot(th[moving] - summed[moving], ww) / np.dot(ww, ww))
+
+
 def switch_on_glitches(u: ArrayLike, omega: ArrayLike) -> int:
     """How many rows at the very start of a log are switch-on glitches (0 when none).
 

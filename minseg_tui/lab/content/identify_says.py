@@ -29,6 +29,7 @@ from minseg_tui.model.identify.observations import (
     CurrentInAmperes,
     DeadTime,
     DryFriction,
+    EdgeGlitch,
     FrictionTask15,
     GlitchRows,
     KvDisagree,
@@ -45,6 +46,7 @@ from minseg_tui.model.identify.observations import (
     ShiftLate,
     ShiftMisfit,
     SpeedInRpm,
+    SpeedLags,
     StepsSkipped,
     StepVsTable,
     T63Differs,
@@ -225,8 +227,26 @@ def _(o: TShort) -> str:
     )
 
 
+def _lagging(lag: float) -> str:
+    """The speed column's lag behind the angle column, said for the 63 % reading."""
+    return (
+        f"this log's speed column runs about {format_constant(lag, 's')} behind its angle "
+        "column (see below), more than the half sample of a mean over each interval: the "
+        "reading, taken off that speed, carries the lag; T, fitted to the angle, does not"
+    )
+
+
 def _t63_why(o: T63Differs) -> str:
     T_63, T, dead_time = o.T_63, o.T, o.dead_time
+    if o.lag is not None and o.why in (T63Why.DEAD_TIME, T63Why.LAG):
+        held = (
+            f"The reading counts from the logged step, so it holds the dead time of "
+            f"{format_constant(dead_time, 's')} that T does not; besides, "
+            if o.why is T63Why.DEAD_TIME
+            else ""
+        )
+        said = _lagging(o.lag)
+        return f"{held}{said if held else said[0].upper() + said[1:]}."
     if o.why is T63Why.DEAD_TIME_SHAPE and o.shape is not None and o.noise is not None:
         return (
             f"The reading counts from the logged step, so it holds the dead time of "
@@ -332,6 +352,37 @@ def _(o: GlitchRows) -> str:
 
 
 @sentence.register
+def _(o: SpeedLags) -> str:
+    return (
+        "The speed column runs behind the angle column: summed over the sample intervals it "
+        f"falls behind the angle as a speed {format_constant(o.lag, 's')} late would "
+        f"({format_fixed(o.lag / o.ts, 1)} sample periods of {format_reading(o.ts, 'ms', 3)}), "
+        "where the mean speed over each interval would not fall behind at all. So it is a "
+        "filtered or late speed (as a motor driver's own speed estimate), not the angle's "
+        "difference over each interval. T is fitted to the angle and does not carry that lag; "
+        "the 63 % reading, and the model check (analyze), which read the speed column, do."
+    )
+
+
+@sentence.register
+def _(o: EdgeGlitch) -> str:
+    speeds = ", ".join(format_reading(w, "", 3) for w in o.speeds)
+    n = o.n_rows
+    return (
+        f"{_lines(o.rows).capitalize()}, right after the step, read{'' if n > 1 else 's'} "
+        f"{speeds} rad/s, beyond any speed the rise reaches later (at most "
+        f"{format_reading(o.level, '', 3)} rad/s, a 5-row running median), and the row after {'them' if n > 1 else 'it'} falls back to "
+        f"{format_reading(o.after, '', 3)} rad/s: a motor answering a step does not overshoot "
+        "and fall back within a sample or two, so "
+        + ("these are glitches" if n > 1 else "this is a glitch")
+        + " of the reading at switch-on (counts picked up as the motor is switched), not the "
+        "wheel moving before the step. The fit keeps "
+        + ("them" if n > 1 else "it")
+        + ", which pulls T; read it with care."
+    )
+
+
+@sentence.register
 def _(o: LoggingStall) -> str:
     return (
         f"{_lines(o.at).capitalize()} comes after a gap of {format_fixed(o.gap * 1e3, 0, 'ms')} in the logging "
@@ -359,7 +410,14 @@ def _(o: DeadTime) -> str:
             " The rows of the rise alone show it"
             + (
                 f" (the speed first shows {format_constant(o.onset, 's')} after the steps)"
-                if o.onset is not None
+                if o.onset is not None and o.first_move is None
+                else (
+                    " (the speed, a running median over 3 rows, first shows "
+                    f"{format_constant(o.onset, 's')} after the steps; a single row's speed "
+                    f"leaves its level {format_constant(o.first_move, 's')} after them, a "
+                    "first count the median drops)"
+                )
+                if o.onset is not None and o.first_move is not None
                 else ""
             )
             + (
@@ -617,13 +675,20 @@ def t63_note(n: T63Note) -> str:
         if n.misfit
         else "the sampling alone moves the reading by "
     )
+    whose = "the model's speed" if n.lag is not None else "the logged speed"
     out += (
         f" Read the same way on the fitted model sampled every {n.ts * 1e3:.3g} ms like this log, it gives "
         f"{format_constant(n.model, 's')}: {delay}{sampled * 1e3:+.1f} ms "
-        "(the logged speed is the mean over each sample interval, half a sample late, and the reading "
+        f"({whose} is the mean over each sample interval, half a sample late, and the reading "
         "joins the samples by straight lines)"
     )
     rest = T_63 - n.model
+    if n.lag is not None:
+        return (
+            out + f", and {rest * 1e3:+.1f} ms is the rest, with the noise of reading single "
+            f"samples: {_lagging(n.lag)}. The least-squares fit models the sampling, so its T "
+            "is the one the model uses."
+        )
     noise = n.noise
     if n.rest is RestWhy.NOISE and noise is not None:
         out += (
@@ -902,10 +967,17 @@ def identify_refusal_words(why: IdentifyRefusal) -> str:
                 f"expected the rows to give a positive k_v (V s/rad), their median is "
                 f"{k_v:.3g}: u_ss - R i_ss is not above 0 on enough rows; check R and i_ss (mA)"
             )
-        case NoRisingEdge(column, after, rising):
+        case NoRisingEdge(column, after, rising, reverse):
+            flip = (
+                f"; its step goes from {reverse[0] + 0.0:g} to {reverse[1]:g} V, a run in reverse: "
+                "identify reads steps up, so flip the signs of its voltage, speed and angle "
+                "columns"
+                if reverse is not None
+                else ""
+            )
             return (
                 f"expected a rising edge in {column} (V) with at least one sample before it "
-                f"and {after} after it; found {rising} rising edge(s), none usable"
+                f"and {after} after it; found {rising} rising edge(s), none usable{flip}"
             )
         case RiseNotFitted():
             return "expected a usable rising edge"

@@ -306,6 +306,17 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
             "this stretch out."
         )
     named = r.finding.cause != "none"
+    plain = r.finding.evidence if isinstance(r.finding.evidence, Plain) else None
+    if not named and plain is not None and plain.how in ("above", "turning"):
+        # no cause is clear, yet the miss stands above the noise: never "to within its noise"
+        left = plain.left_turning if plain.how == "turning" else plain.left
+        where = "where the wheel turns " if plain.how == "turning" else ""
+        return (
+            f"{model[0].upper()}{model[1:]} misses the measured speed {where}by "
+            f"{format_value(left, 'rad/s', 2)} rms more than its noise "
+            f"({format_value(plain.level, 'rad/s', 2)}), and none of the effects the check "
+            "knows is clear enough to name (the details say more)."
+        )
     if not named:
         if r.finding.explained:
             # the noise is an rms: about a third of the samples lie beyond it, so never "±"

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 
 import numpy as np
@@ -21,6 +21,8 @@ from minseg_tui.model.identify.lsq import t975
 from minseg_tui.model.identify.observations import (
     FRICTION_APART,
     Observation,
+    SpeedLags,
+    T63Differs,
     creep_after_rise,
     fit_observations,
     friction_observations,
@@ -55,6 +57,7 @@ from minseg_tui.model.runlog import (
     command,
     find_edges,
     problem,
+    speed_lag,
     switch_on_glitches,
 )
 
@@ -227,8 +230,14 @@ def _response_result(
     windows, skipped = rise_windows(log)
     if not windows:
         cmd, name = command(log)
-        rising = sum(e.rising for e in find_edges(cmd))
-        raise IdentifyRefused(log.source, log.line_of(0), NoRisingEdge(name, MIN_AFTER, rising))
+        edges = find_edges(cmd)
+        rising = sum(e.rising for e in edges)
+        # a step from rest to a negative voltage: the same run in reverse
+        down = [e for e in edges if e.after < 0 and abs(e.before) < 0.1 * abs(e.after)]
+        reverse = (down[0].before, down[0].after) if down and not rising else None
+        raise IdentifyRefused(
+            log.source, log.line_of(0), NoRisingEdge(name, MIN_AFTER, rising, reverse)
+        )
     refused = problem(log.board_time(), log.u, log.omega)  # the fit runs on the board's clock
     if refused:
         raise LogRefused(log.source, None, refused)
@@ -239,6 +248,9 @@ def _response_result(
     theta, angle_source = log.angle()
     if not np.ptp(theta) > 0:  # nothing to fit: the least squares would divide by zero
         raise LogRefused(log.source, None, StillAngle(angle_source))
+    # a speed column that runs behind the angle column is no mean over each interval
+    lag = speed_lag(log.t, log.omega, theta) if angle_source.column == "theta" else None
+    lagging = lag if lag is not None and lag > LAG_SAMPLES * log.ts else None
     fit = fit_time_constant(log)
     if fit is None:  # cannot happen with usable windows; keeps the types honest
         raise IdentifyRefused(log.source, None, RiseNotFitted())
@@ -299,6 +311,7 @@ def _response_result(
             bool(fit.left_out),
             fit.shift_on_bound,
             noise,
+            lagging,
         ),
         dead_time=fit.dead_time,
         glitch_rows=glitches,
@@ -330,6 +343,11 @@ def _response_result(
     )
     observations += fit_observations(whole_log, glitches, fit, result.T_determined, every)
     observations += friction_observations(K, u_ss, result.u_c, result.K_above_u_c, U_TASK15)
+    if lagging is not None:
+        observations = [
+            replace(o, lag=lagging) if isinstance(o, T63Differs) else o for o in observations
+        ]
+        observations.append(SpeedLags(lagging, log.ts))
     return result, observations
 
 
@@ -414,6 +432,13 @@ def _K_interval(
     return (K - half, K + half)
 
 
+LAG_SAMPLES: float = 0.5
+"""A speed column that runs behind the angle column by more than this many sample periods
+(:func:`~minseg_tui.model.runlog.speed_lag`) is said to: a mean over each interval runs 0
+behind (eight of the logs in ../shared: within 1 us; the n20-12v two, a speed over the
+nominal period on longer rows, run ahead), ev3dev's speed attribute 1.4-1.9 periods."""
+
+
 class RestWhy(Enum):
     """What the part of the 63 % reading that sampling the fitted model does not give is:
     WHOLE: nothing worth saying (the sampling is the whole difference); NOISE: the noise of
@@ -437,7 +462,8 @@ class T63Note:
     ``ts`` (s) like the log (None when not taken: then only the difference is said), with the
     ``dead_time`` (s) of the model; ``misfit``: the steps' time shift ended on its bound;
     ``rest``: what the part the model does not give is; ``noise``: the speed's scatter
-    (rad/s) and the sway it gives a reading of single samples (s), or None."""
+    (rad/s) and the sway it gives a reading of single samples (s), or None; ``lag``: how late
+    the log's speed column runs behind its angle column (s, :data:`LAG_SAMPLES`), or None."""
 
     T_63: float
     T: float
@@ -447,6 +473,7 @@ class T63Note:
     misfit: bool
     rest: RestWhy
     noise: tuple[float, float] | None
+    lag: float | None = None
 
 
 def _T_63_note(
@@ -458,6 +485,7 @@ def _T_63_note(
     stalled: bool = False,
     misfit: bool = False,
     noise: tuple[float, float] | None = None,
+    lag: float | None = None,
 ) -> T63Note | None:
     """How far the manual's 63 % reading is from the least-squares T, and why (the dead time
     ``dead_time``, s, is part of it when the model has one; ``stalled``: rows of a logging
@@ -482,7 +510,7 @@ def _T_63_note(
                 rest = RestWhy.SHAPE
             else:
                 rest = RestWhy.STALL if stalled else RestWhy.SINGLE
-    return T63Note(T_63, T, ts, T_63_model, dead_time, misfit, rest, noise)
+    return T63Note(T_63, T, ts, T_63_model, dead_time, misfit, rest, noise, lag)
 
 
 def identify(

@@ -283,7 +283,8 @@ class T63Differs(Observation):
     sway it gives a reading of single samples (s), or None (as
     :func:`response_observations` takes them); ``T_ci``: the least-squares T's 95 % interval
     (s) when it holds the 63 % reading too (the log then does not tell the two apart), else
-    None."""
+    None; ``lag``: how late the speed column runs behind the angle column (s,
+    :class:`SpeedLags`), or None."""
 
     code: ClassVar[str] = "T_63_differs"
     T_63: float
@@ -293,6 +294,7 @@ class T63Differs(Observation):
     shape: float | None
     noise: tuple[float, float] | None
     T_ci: tuple[float, float] | None = None
+    lag: float | None = None
 
 
 @dataclass(frozen=True)
@@ -509,6 +511,33 @@ class GlitchRows(Observation):
 
 
 @dataclass(frozen=True)
+class SpeedLags(Observation):
+    """The log's speed column runs ``lag`` (s) behind its angle column
+    (:func:`~minseg_tui.model.runlog.speed_lag`), more than half a sample period ``ts`` (s):
+    it is no mean over each interval but a filtered or late speed."""
+
+    code: ClassVar[str] = "speed_lags"
+    lag: float
+    ts: float
+
+
+@dataclass(frozen=True)
+class EdgeGlitch(Observation):
+    """Rows right after a step (``rows``) whose speeds (rad/s, ``speeds``) read beyond any
+    speed the rise later reaches (``level``, rad/s: the furthest a 5-row running median of
+    the rows after them reaches up to the next change of the command), after which the speed
+    falls back to ``after`` (rad/s): a glitch of the reading at switch-on
+    (:func:`~minseg_tui.model.identify.risefit.edge_glitches`), kept in the fit."""
+
+    code: ClassVar[str] = "edge_glitch"
+    rows: Lines
+    n_rows: int
+    speeds: tuple[float, ...]
+    level: float
+    after: float
+
+
+@dataclass(frozen=True)
 class LoggingStall(Observation):
     """A row (``at``) after a ``gap`` (s) of ``gap / ts`` sample periods (``ts``, s), left out
     of the fit; ``mended``: the angle rebuilt from the speed column carried it across."""
@@ -527,7 +556,10 @@ class DeadTime(Observation):
     shows, s after the steps, or None); ``creep``: the speed creeps on after the rise
     (:class:`TRowsApart`'s ``creep``), which holds the fit of every row early; without it,
     the fit of every row takes no dead time only because it does not fit them clearly better
-    (a start between coarse counts: tests/model/identgen.py seed 2)."""
+    (a start between coarse counts: tests/model/identgen.py seed 2). ``first_move``: where a
+    row's own speed first leaves its level (s after the steps), when it does more than one
+    sample period before ``onset``, which a 3-row running median reads (a first count alone,
+    as coarse counts give, is dropped by it); None otherwise."""
 
     code: ClassVar[str] = "dead_time"
     dead_time: float
@@ -535,6 +567,7 @@ class DeadTime(Observation):
     from_rise: bool
     onset: float | None
     creep: bool
+    first_move: float | None = None
 
 
 class LateStart(Enum):
@@ -739,6 +772,45 @@ def fit_observations(
                 start=_lines(log, [glitches]),
             )
         )
+    if fit.edge_glitches:
+        # runs of consecutive rows, each after its own step
+        runs: list[list[int]] = []
+        for r in fit.edge_glitches:
+            if runs and r == runs[-1][-1] + 1:
+                runs[-1].append(r)
+            else:
+                runs.append([r])
+        w = np.asarray(log.omega, dtype=float)
+        u = np.asarray(log.u, dtype=float)
+        for run in runs:
+            rows = [r + glitches for r in run]
+            after = rows[-1] + 1
+            changes = np.flatnonzero(u[after:] != u[rows[0]])
+            rest = w[after : after + int(changes[0]) if changes.size else w.size]
+            up = 1.0 if w[rows[0]] > w[rows[0] - 1] else -1.0
+            # the furthest the rise later reaches, a 5-row running median (its noise out)
+            top = (
+                float(
+                    up
+                    * np.max(
+                        up
+                        * np.median(
+                            np.stack([rest[j : rest.size - 4 + j] for j in range(5)]), axis=0
+                        )
+                    )
+                )
+                if rest.size >= 5
+                else rise
+            )
+            out.append(
+                EdgeGlitch(
+                    _lines(log, rows),
+                    len(rows),
+                    tuple(float(w[r]) for r in rows),
+                    top,
+                    float(w[after]),
+                )
+            )
     t = log.board_time()
     for r in fit.left_out:
         k = r + glitches
@@ -753,7 +825,16 @@ def fit_observations(
     if fit.dead_time > 0:
         out.append(
             DeadTime(
-                fit.dead_time, bound, fit.dead_time_from_rise, fit.onset, creep=creep is not None
+                fit.dead_time,
+                bound,
+                fit.dead_time_from_rise,
+                fit.onset,
+                creep=creep is not None,
+                first_move=fit.first_move
+                if fit.first_move is not None
+                and fit.onset is not None
+                and fit.first_move < fit.onset - bound
+                else None,
             )
         )
     elif fit.shift_on_bound and fit.shift > 0:

@@ -76,11 +76,13 @@ class MedianKvNotPositive:
 class NoRisingEdge:
     """A run log whose command ``column`` (u_req, else u) has no usable rising edge: one
     with at least a sample before it and ``after`` samples after it. ``rising`` is how many
-    rising edges it has, none usable."""
+    rising edges it has, none usable; ``reverse``: with none, the levels (V) of its first
+    step from rest into negative voltage, a run in reverse (None otherwise)."""
 
     column: str
     after: int
     rising: int
+    reverse: tuple[float, float] | None = None
 
 
 @dataclass(frozen=True)

@@ -170,7 +170,9 @@ class TimeConstantFit:
     read from (then interpolated onto other instants) is not in it; start_free_ci: where the
     dead time is held at the earliest start the rise's rows allow (``dead_time_from_rise``),
     T's 95 % interval (s) with that start fitted too, which ``ci`` then holds (None
-    otherwise).
+    otherwise); edge_glitches: rows (0-based) right after a step whose speed reads beyond
+    any the rise later reaches and then falls back (:func:`edge_glitches`): a glitch of the
+    reading at switch-on, kept in the fit but not taken for the wheel moving before the step.
     """
 
     T: float
@@ -213,6 +215,7 @@ class TimeConstantFit:
     rise_fit: TimeConstantFit | None = None
     every_row_T: float | None = None
     counts_hidden: bool = False
+    edge_glitches: tuple[int, ...] = ()
     start_free_ci: tuple[float, float] | None = None
 
 
@@ -577,6 +580,7 @@ def _fit(
 
     n_w = rises_fit.rows.size
     sigma_w = math.sqrt(rises_fit.rss / max(n_w - rises_fit.n_params, 1))
+    glitched = edge_glitches(log, windows)
     common: dict[str, Any] = dict(
         shift_bound=bound,
         T_range=T_range,
@@ -584,7 +588,9 @@ def _fit(
         onset=onset,
         first_move=first_move,
         dead_time_sought=bool(sought) or (prior is not None and prior.dead_time_sought),
-        moved_before_rise=_moved_before(log, windows, 0.0, at_edge=True) > STILL_SHARE,
+        moved_before_rise=_moved_before(log, windows, 0.0, at_edge=True, skip=glitched)
+        > STILL_SHARE,
+        edge_glitches=glitched,
         counts_hidden=hidden and clusters.size < FEW_CLUSTERS,
     )
     if whole is not None:
@@ -857,13 +863,65 @@ def _onset(
     return float(np.median(found)) if found else None
 
 
+EDGE_GLITCH_ROWS: int = 3
+"""At most this many rows from a step's own row on can be a glitch of the reading at
+switch-on (:func:`edge_glitches`), as at the start of a log (runlog.MAX_GLITCH_ROWS)."""
+
+
+def edge_glitches(log: RunLog, windows: list[RiseWindow]) -> tuple[int, ...]:
+    """The rows (0-based), from each step's own row on, whose speed reads beyond any speed
+    the rise later reaches and after which the speed falls back below the level it settles
+    to: a motor answering a step cannot overshoot and fall back within a sample or two, so
+    these rows are the reading's (counts picked up at switch-on), not the wheel's.
+
+    A row counts when its speed lies beyond the rise's final level (the median of the last
+    quarter of its rows) in the step's direction by more than any later row (a 5-row running
+    median, from :data:`EDGE_GLITCH_ROWS` rows after the step) ever does, and by more than
+    three times the scatter of that final level; only an unbroken run from the step's own row
+    or the next counts, at most :data:`EDGE_GLITCH_ROWS` rows, and the row after the run must
+    read below the final level."""
+    w = np.asarray(log.omega, dtype=float)
+    out: list[int] = []
+    for win in windows:
+        k = win.edge.start
+        w0, w1 = _levels(w, win)
+        if w1 == w0:
+            continue
+        up = 1.0 if w1 > w0 else -1.0
+        rest = w[k + EDGE_GLITCH_ROWS : win.post_last + 1]
+        tail = win.post_last - max((win.post_last - k) // 4, 1)
+        if rest.size < 10 or tail - k < 2 * EDGE_GLITCH_ROWS:
+            continue
+        smooth = np.median(np.stack([rest[j : rest.size - 4 + j] for j in range(5)]), axis=0)
+        later = max(float(np.max(up * (smooth - w1))), 0.0)
+        scatter = float(np.std(w[tail : win.post_last + 1]))
+        beyond = up * (w[k : k + EDGE_GLITCH_ROWS + 2] - w1) > max(later, 3.0 * scatter, 1e-9)
+        first = 0 if beyond[0] else 1
+        n = first
+        while n < EDGE_GLITCH_ROWS + first and beyond[n]:
+            n += 1
+        if n > first and up * (w[k + n] - w1) < 0:
+            out.extend(range(k + first, k + n))
+    return tuple(out)
+
+
 def _moved_before(
-    log: RunLog, windows: list[RiseWindow], until: float, at_edge: bool = False
+    log: RunLog,
+    windows: list[RiseWindow],
+    until: float,
+    at_edge: bool = False,
+    skip: tuple[int, ...] = (),
 ) -> float:
     """The median over the rises of the largest share of the speed's change reached
     on the rows up to ``until`` (s) after each step (``at_edge``: on the step's own row and
-    the one before, whose speeds were measured before the step acts)."""
+    the one before, whose speeds were measured before the step acts); ``skip``: rows that are
+    glitches of the reading (:func:`edge_glitches`), whose speed says nothing of the wheel."""
     w = np.asarray(log.omega, dtype=float)
+    if skip:
+        # a glitch row stands in for the speed of the row before it
+        w = w.copy()
+        for r in sorted(skip):
+            w[r] = w[r - 1]
     smooth = _smooth(w)
     t = log.board_time()
     shares = []
