@@ -1,0 +1,72 @@
+"""Walk 18's defects (/work/coord/WALK18.md), at 80x24 with Pilot on real session folders.
+
+D1: the report said nowhere near its top what a grader needs: which of the group's values of
+Tasks 11-15 were changed after the program showed its own, which were shown before the group
+answered (Ctrl+R), and which checked answers were first given wrong; the first two stood only in
+the last column of one table, the third nowhere (only in session.json's history)."""
+
+from __future__ import annotations
+
+from minseg_tui.report.write import write_report
+from minseg_tui.ui.app import LabApp
+from minseg_tui.ui.config import UiConfig
+from tests.ui.conftest import DATE
+from tests.ui.fakes import QuietDevice
+from tests.ui.helpers import (
+    TABLE,
+    enter_all,
+    goto,
+    record_response_run,
+    settle,
+    start,
+    type_in,
+)
+
+
+def _report_app(root) -> LabApp:
+    """The app on the device double, with the report's writer (F8)."""
+    dev = QuietDevice(seed=1)
+    cfg = UiConfig(device="auto", sessions=root, today=DATE, animations=False, refresh=0)
+    return LabApp(cfg, lambda spec: dev, lambda session: write_report(session).paths)
+
+
+def _first_section(md: str) -> tuple[str, str]:
+    """The title and the text of the report's first section."""
+    title, _, rest = md.split("\n## ", 1)[1].partition("\n")
+    return title, rest.split("\n## ", 1)[0]
+
+
+async def test_the_report_begins_with_what_a_grader_needs(tmp_path):
+    """D1: Prep 4 '0,37' (✗) then '0,632'; Task 11 K '1.73' (7.8 rad/s over the requested
+    4.5 V: ✗, the computed 1.940 shown under it) then '1,94'; Task 12 Ctrl+R, then T. F8: the
+    report's first section, before the warnings, names all three."""
+    app = _report_app(tmp_path)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "prep4")
+        await type_in(pilot, "prep4.fraction", "0,37")
+        await type_in(pilot, "prep4.fraction", "0,632")
+        enter_all(app, TABLE)
+        with app.session as s:
+            record_response_run(s)
+        await goto(pilot, "task11")
+        await type_in(pilot, "own.omega_step", "7,8")
+        await type_in(pilot, "own.K", "1.73")
+        await type_in(pilot, "own.K", "1,94")
+        await goto(pilot, "task12")
+        await pilot.press("ctrl+r")
+        await settle(pilot)
+        await type_in(pilot, "own.T", "57 ms")
+        with app.session as s:
+            folder = s.folder
+        await pilot.press("f8")
+        await settle(pilot, lambda: bool(app.exported))
+    md = (folder / "report.md").read_text(encoding="utf-8")
+    title, first = _first_section(md)
+    assert title == "For the grader", title
+    words = " ".join(first.split())
+    assert "K (Task 11): '1.73' when the computed values were shown" in words, words
+    assert "changed to '1,94'" in words, words
+    assert "T (Task 12): revealed before answering" in words, words
+    assert "Preparation 4, y(T) / (K c): '0,37'" in words and "now '0,632'" in words, words
+    assert md.index("## For the grader") < md.index("## Warnings")
