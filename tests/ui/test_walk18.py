@@ -3,22 +3,27 @@
 D1: the report said nowhere near its top what a grader needs: which of the group's values of
 Tasks 11-15 were changed after the program showed its own, which were shown before the group
 answered (Ctrl+R), and which checked answers were first given wrong; the first two stood only in
-the last column of one table, the third nowhere (only in session.json's history)."""
+the last column of one table, the third nowhere (only in session.json's history). D2: a
+reading typed into the row of one voltage while the motor ran at another was stored without a
+word."""
 
 from __future__ import annotations
 
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
+from minseg_tui.ui.widgets.fields import FieldRow
 from tests.ui.conftest import DATE
 from tests.ui.fakes import QuietDevice
 from tests.ui.helpers import (
     TABLE,
+    burst,
     enter_all,
     goto,
     record_response_run,
     settle,
     start,
+    stored_text,
     type_in,
 )
 
@@ -70,3 +75,31 @@ async def test_the_report_begins_with_what_a_grader_needs(tmp_path):
     assert "T (Task 12): revealed before answering" in words, words
     assert "Preparation 4, y(T) / (K c): '0,37'" in words and "now '0,632'" in words, words
     assert md.index("## For the grader") < md.index("## Warnings")
+
+
+def _row(app: LabApp, key: str) -> FieldRow:
+    return next(r for r in app.screen.query(FieldRow) if r.field.key == key)
+
+
+async def test_a_reading_typed_into_the_row_of_another_voltage_is_said_so(quiet):
+    """D2: Task 4 left the motor at 4.5 V; on Task 5 the keys land in 'i_ss at 2.5 V' and the
+    meter reads the 4.5 V current: '37,2 Enter' was stored there with nothing said. Now a line
+    under the entry says the motor runs at 4.5 V, not 2.5 V; F3 to 2.5 V and the reading
+    typed there stands without it."""
+    app = quiet()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task4")
+        await burst(pilot, "f3", "f3", "f3")  # 2.5, 3.5, 4.5 V
+        assert app.requested == 4.5
+        await goto(pilot, "task5")
+        await burst(pilot, *"37,2", "enter")
+        row = _row(app, "i_ss@2.5")
+        said = " ".join(row.message.split())
+        assert "! typed while the motor runs at 4.5 V, not 2.5 V" in said, said
+        await burst(pilot, "f3")  # 2.5 V: the keys on its row, its text ready to replace
+        assert app.requested == 2.5
+        await burst(pilot, *"29,8", "enter")
+        said = " ".join(row.message.split())
+        assert stored_text(app, "i_ss@2.5") == "29,8"
+        assert "motor runs at" not in said, said
