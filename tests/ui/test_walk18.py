@@ -5,16 +5,19 @@ Tasks 11-15 were changed after the program showed its own, which were shown befo
 answered (Ctrl+R), and which checked answers were first given wrong; the first two stood only in
 the last column of one table, the third nowhere (only in session.json's history). D2: a
 reading typed into the row of one voltage while the motor ran at another was stored without a
-word."""
+word. D5: a run stopped with F2 showed its bar at 0 %."""
 
 from __future__ import annotations
+
+import pytest
+from textual.widgets import ProgressBar
 
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.widgets.fields import FieldRow
 from tests.ui.conftest import DATE
-from tests.ui.fakes import QuietDevice
+from tests.ui.fakes import QuietDevice, square_wave_stream
 from tests.ui.helpers import (
     TABLE,
     burst,
@@ -23,7 +26,9 @@ from tests.ui.helpers import (
     record_response_run,
     settle,
     start,
+    start_run_on,
     stored_text,
+    taken,
     type_in,
 )
 
@@ -103,3 +108,25 @@ async def test_a_reading_typed_into_the_row_of_another_voltage_is_said_so(quiet)
         said = " ".join(row.message.split())
         assert stored_text(app, "i_ss@2.5") == "29,8"
         assert "motor runs at" not in said, said
+
+
+async def test_a_run_stopped_with_f2_keeps_its_bar_where_it_stopped(tmp_path):
+    """D5: Task 10, F5, 2 s of the 12 s run recorded ('18 %'), F2: the bar fell to 0 % while
+    the line under it said the run's samples were kept. It stays at the share recorded."""
+    dev = QuietDevice(seed=1)
+    cfg = UiConfig(device="auto", sessions=tmp_path, today=DATE, animations=False, refresh=0)
+    app = LabApp(cfg, lambda spec: dev)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await start(pilot)
+        await goto(pilot, "task10", focus=None)
+        seq = await start_run_on(pilot, dev)
+        dev.feed(square_wave_stream(seq, (seq + 1) * 25_000, 2.0))
+        await taken(pilot, seq + 80)
+        bar = app.screen.query_one("#run-progress", ProgressBar)
+        recorded = bar.percentage
+        assert recorded is not None and 0.1 < recorded < 0.3, recorded
+        await pilot.press("f2")
+        await settle(pilot, lambda: app.run_progress is not None and not app.run_progress.recording)
+        await settle(pilot)
+        assert "samples kept" in app.run_progress.text, app.run_progress.text
+        assert bar.percentage == pytest.approx(recorded, abs=0.02), bar.percentage
