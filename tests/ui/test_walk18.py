@@ -5,18 +5,21 @@ Tasks 11-15 were changed after the program showed its own, which were shown befo
 answered (Ctrl+R), and which checked answers were first given wrong; the first two stood only in
 the last column of one table, the third nowhere (only in session.json's history). D2: a
 reading typed into the row of one voltage while the motor ran at another was stored without a
-word. D5: a run stopped with F2 showed its bar at 0 %."""
+word. D5: a run stopped with F2 showed its bar at 0 %. D6: the start screen listed a session
+in use by its folder's name (with the names as first misspelt), not by its names."""
 
 from __future__ import annotations
 
 import pytest
-from textual.widgets import ProgressBar
+from textual.widgets import OptionList, ProgressBar
 
+from minseg_tui.lab.state.session import Session
 from minseg_tui.report.write import write_report
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
 from minseg_tui.ui.widgets.fields import FieldRow
-from tests.ui.conftest import DATE
+from tests.seeded import Clock
+from tests.ui.conftest import DATE, quiet_app
 from tests.ui.fakes import QuietDevice, square_wave_stream
 from tests.ui.helpers import (
     TABLE,
@@ -130,3 +133,22 @@ async def test_a_run_stopped_with_f2_keeps_its_bar_where_it_stopped(tmp_path):
         await settle(pilot)
         assert "samples kept" in app.run_progress.text, app.run_progress.text
         assert bar.percentage == pytest.approx(recorded, abs=0.02), bar.percentage
+
+
+async def test_a_session_in_use_is_listed_by_its_names_not_its_folder(tmp_path):
+    """D6: a group's names mended (Ctrl+P "Correct the group's names": "Osar B" to "Oskar B"),
+    its session open in one window; the start screen of another listed it as
+    "sessions/2026-11-28-maja-k-osar-b-leila-n: in use by another minseg-tui (pid …)": the
+    folder, with the old spelling, where every other row shows date, names and step."""
+    s = Session.create(tmp_path, ["Maja K", "Osar B", "Leila N"], date="2026-11-28", clock=Clock())
+    s.set_members(["Maja K", "Oskar B", "Leila N"])
+    try:
+        app = quiet_app(tmp_path)
+        async with app.run_test(size=(80, 24)) as pilot:
+            await settle(pilot, lambda: bool(app.screen.query("#sessions")))
+            listed = app.screen.query_one("#sessions", OptionList)
+            row = " ".join(str(listed.get_option_at_index(0).prompt).split())
+    finally:
+        s.close()
+    assert "2026-11-28 Maja K, Oskar B, Leila N at Preparation 1" in row, row
+    assert "in use by another minseg-tui" in row and "osar" not in row, row
