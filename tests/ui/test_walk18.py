@@ -6,28 +6,33 @@ answered (Ctrl+R), and which checked answers were first given wrong; the first t
 the last column of one table, the third nowhere (only in session.json's history). D2: a
 reading typed into the row of one voltage while the motor ran at another was stored without a
 word. D5: a run stopped with F2 showed its bar at 0 %. D6: the start screen listed a session
-in use by its folder's name (with the names as first misspelt), not by its names."""
+in use by its folder's name (with the names as first misspelt), not by its names. Walk 17's
+D2 left: a pick refused in a read-only session was said with ✗, the mark of a wrong answer."""
 
 from __future__ import annotations
 
 import pytest
-from textual.widgets import OptionList, ProgressBar
+from textual.widgets import DataTable, OptionList, ProgressBar
 
 from minseg_tui.lab.state.session import Session
-from minseg_tui.report.write import write_report
+from minseg_tui.report.write import write_class, write_report
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
+from minseg_tui.ui.screens.lab import LabScreen
 from minseg_tui.ui.widgets.fields import FieldRow
 from tests.seeded import Clock
 from tests.ui.conftest import DATE, quiet_app
 from tests.ui.fakes import QuietDevice, square_wave_stream
 from tests.ui.helpers import (
     TABLE,
+    answering,
     burst,
+    class_view,
     enter_all,
     goto,
     record_response_run,
     settle,
+    shown,
     start,
     start_run_on,
     stored_text,
@@ -152,3 +157,33 @@ async def test_a_session_in_use_is_listed_by_its_names_not_its_folder(tmp_path):
         s.close()
     assert "2026-11-28 Maja K, Oskar B, Leila N at Preparation 1" in row, row
     assert "in use by another minseg-tui" in row and "osar" not in row, row
+
+
+async def test_a_pick_refused_in_a_read_only_session_is_not_marked_wrong(tmp_path):
+    """Walk 17's D2, what was left (re-checked in walk 18): in a session opened read-only from
+    the class view, a pick on the Summary is refused and the group's answer shown again, but
+    the refusal began '✗ this session is open read-only', ✗ being the mark of a wrong
+    answer, under an answer that is right."""
+    root = tmp_path / "sessions"
+    s = Session.create(root, ["Mira K", "Jonas P"], date="2026-11-28", clock=Clock())
+    s.choose("summary.1", [1])  # "a system": right
+    s.go_to("summary")
+    s.close()
+    dev = QuietDevice(seed=1)
+    cfg = UiConfig(device="auto", sessions=root, today=DATE, animations=False, refresh=0)
+    app = LabApp(cfg, lambda spec: dev, None, write_class)
+    async with app.run_test(size=(80, 24)) as pilot:
+        screen = await class_view(pilot)
+        await settle(pilot, lambda: app.focused is screen.query_one(DataTable))
+        await burst(pilot, "enter")
+        await settle(pilot, lambda: isinstance(app.screen, LabScreen) and shown(app))
+        await goto(pilot, "summary")
+        row = _row(app, "summary.1")
+        await burst(pilot, "shift+tab")
+        await settle(pilot, lambda: answering(app) is row.answers)
+        await burst(pilot, "up", "enter")
+        await settle(pilot)
+        said = row.message.strip()
+        assert "read-only" in said and "not stored" in said, said
+        assert not said.startswith("✗"), said
+        assert row.answers is not None and row.answers.chosen == (1,)

@@ -1508,7 +1508,9 @@ class LabScreen(StatusScreen):
         if self.readonly:
             with self.session as s:
                 stored = views.chosen(s, row.field.key)
-                row.show_result(EntryView(False, f"{views.read_only(s)}: not stored"))
+                # said without ✗, the mark of a wrong answer: the group's answer under it is
+                # not judged by this (walk 18, walk 17's D2 left)
+                row.show_result(EntryView(True, f"{views.read_only(s)}: not stored"))
             # the list shows what the group answered, not the pick just refused (walk 17's
             # D2: the lab assistant saw 'a signal' picked where the group had 'a system')
             row.show_chosen(stored)
