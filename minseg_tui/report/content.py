@@ -451,14 +451,17 @@ def _grader_section(session: Session) -> Section:
     early = own_first.revealed_early(session)
     changed = own_first.changed_after_shown(session)
     first = own_first.wrong_before(session)
+    gap = own_first.shown_gap(session)  # a session of an older program: "none" not known
+
+    def listed(said: list[str]) -> str:
+        if not gap:
+            return "; ".join(said) if said else "none"
+        return "; ".join([*said, gap]) if said else gap
+
     items = [
         f"Steps: {_steps_line(session)}.",
-        "Computed values shown before the group answered (Tasks 11-15): "
-        + ("; ".join(early) if early else "none")
-        + ".",
-        "Answers changed after the program showed its values (Tasks 11-15): "
-        + ("; ".join(changed) if changed else "none")
-        + ".",
+        f"Computed values shown before the group answered (Tasks 11-15): {listed(early)}.",
+        f"Answers changed after the program showed its values (Tasks 11-15): {listed(changed)}.",
         "Checked answers first given wrong, then changed (the preparations and the summary; "
         "the program's verdict on the first, as it judges it now): "
         + ("; ".join(first) if first else "none")

@@ -11,10 +11,14 @@ D2 left: a pick refused in a read-only session was said with ✗, the mark of a 
 
 from __future__ import annotations
 
+import shutil
+from pathlib import Path
+
 import pytest
 from textual.widgets import DataTable, OptionList, ProgressBar
 
 from minseg_tui.lab.state.session import Session
+from minseg_tui.report import content, markdown
 from minseg_tui.report.write import write_class, write_report
 from minseg_tui.ui.app import LabApp
 from minseg_tui.ui.config import UiConfig
@@ -187,3 +191,20 @@ async def test_a_pick_refused_in_a_read_only_session_is_not_marked_wrong(tmp_pat
         assert "read-only" in said and "not stored" in said, said
         assert not said.startswith("✗"), said
         assert row.answers is not None and row.answers.chosen == (1,)
+
+
+def test_the_graders_lists_of_what_was_shown_say_not_known_for_an_older_session(tmp_path):
+    """D1, the other side: a session begun with an older program, which did not record what
+    the group was shown, is not said to have had 'none' shown before answering or changed
+    after; the first section says since when the record runs."""
+    folder = tmp_path / "schema1"
+    shutil.copytree(Path(__file__).parents[1] / "lab" / "old_sessions" / "schema1", folder)
+    with Session.open(folder) as s:
+        assert s.shown_since is not None and s.shown_since > s.created
+        md = markdown.render(content.build(s))
+    title, first = _first_section(md)
+    words = " ".join(first.split())
+    assert title == "For the grader"
+    assert "answered (Tasks 11-15): none" not in words, words
+    assert "values (Tasks 11-15): none" not in words, words
+    assert words.count("the session was begun with an older program") == 2, words

@@ -534,6 +534,22 @@ def run_changed(session: Session, before: str | None) -> str:
     )
 
 
+def shown_gap(session: Session) -> str:
+    """Why the lists of what the group was shown (:func:`revealed_early`,
+    :func:`changed_after_shown`) may leave something out: the session was begun with an older
+    program (recorded since a later time, or not at all), or its file is damaged; '' when
+    the session recorded it from its start."""
+    since = session.shown_since
+    if since is None:
+        return _not_known(session)
+    if since > session.created:
+        return (
+            f"recorded since {when(since)} only: the session was begun with an older program, "
+            "which did not record it"
+        )
+    return DAMAGED if session.damaged else ""
+
+
 def revealed_early(session: Session) -> list[str]:
     """The values of Tasks 11-15 the group's screen showed before the group answered (a lab
     assistant's reveal, the lab's policy, the model check), each as :func:`shown` says it:
@@ -618,6 +634,7 @@ __all__ = [
     "TOLD",
     "OwnRow",
     "changed_after_shown",
+    "shown_gap",
     "policy_in_force",
     "revealed_early",
     "run_changed",
