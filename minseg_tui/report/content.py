@@ -420,6 +420,56 @@ def _label(label: str) -> str:
     return own_first.GROUPS + label[4:] if label.startswith("your ") else label
 
 
+GRADER_TITLE = "For the grader"
+"""The report's first section: what a grader of many reports reads first."""
+
+
+def _steps_line(session: Session) -> str:
+    """The steps as the group's list of steps marks them, in one line: "31 of 33 steps done
+    (✓); ✗ answered but wrong: Task 13; not begun: Summary and reflections (section 3.2)"."""
+    by: dict[str, list[str]] = {}
+    for st in lab_steps.STEPS:
+        status = session.step_status(st.id)
+        if status != "info":
+            by.setdefault(status, []).append(st.title.split(":")[0])
+    n = sum(len(v) for v in by.values())
+    said = [f"{len(by.get('done', []))} of {n} steps done ({views.MARK['done']})"]
+    said += [
+        f"{mark} {words}: {', '.join(by[status])}"
+        for status, mark, words in views.STATUS_MARKS
+        if status != "done" and by.get(status)
+    ]
+    if by.get("todo"):
+        said.append(f"not begun: {', '.join(by['todo'])}")
+    return "; ".join(said)
+
+
+def _grader_section(session: Session) -> Section:
+    """What decides a grade, first: the steps' marks, the values shown to the group before it
+    answered, the answers changed after the program showed its value, and the checked
+    answers first given wrong (each in full further down)."""
+    early = own_first.revealed_early(session)
+    changed = own_first.changed_after_shown(session)
+    first = own_first.wrong_before(session)
+    gap = own_first.shown_gap(session)  # a session of an older program: "none" not known
+
+    def listed(said: list[str]) -> str:
+        if not gap:
+            return "; ".join(said) if said else "none"
+        return "; ".join([*said, gap]) if said else gap
+
+    items = [
+        f"Steps: {_steps_line(session)}.",
+        f"Computed values shown before the group answered (Tasks 11-15): {listed(early)}.",
+        f"Answers changed after the program showed its values (Tasks 11-15): {listed(changed)}.",
+        "Checked answers first given wrong, then changed (the preparations and the summary; "
+        "the program's verdict on the first, as it judges it now): "
+        + ("; ".join(first) if first else "none")
+        + ".",
+    ]
+    return Section(GRADER_TITLE, [items])
+
+
 def _warnings_section(session: Session) -> Section:
     res = session.results()
     # the findings on the two readings of T give the facts; why the two differ is said once,
@@ -769,6 +819,7 @@ def build(session: Session) -> Report:
     """The report of ``session`` (computed now from its entries and runs)."""
     members = ", ".join(session.members) or "(no names)"
     sections = [
+        _grader_section(session),
         _warnings_section(session),
         _answers(session, "Preparation"),
         _board_section(session),

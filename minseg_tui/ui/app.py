@@ -1028,8 +1028,11 @@ class LabApp(App[None]):
                 changed = own_first.run_changed(s, self._used_before)
         if changed:
             self.notify(changed, title="Tasks 11-15", severity="warning", timeout=20)
+        # a run cut short keeps its bar where it stopped (walk 18, D5: it fell to 0 % beside
+        # "run steps-1: 95 samples kept")
+        reached = self.run_progress.fraction if self.run_progress is not None else 0.0
         self.run_progress = RunProgress(
-            1.0 if outcome.why == "done" else 0.0, f"{said}: {kept}", False
+            1.0 if outcome.why == "done" else reached, f"{said}: {kept}", False
         )
         self.lab_changed.publish(None)
 

@@ -18,13 +18,16 @@ from datetime import datetime, timedelta
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import identify_says
+from minseg_tui.lab.content.answers import check_answer
+from minseg_tui.lab.content.expr import Formula
 from minseg_tui.lab.content.keys import USE_RUN, key_name
 from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.needs import needs
-from minseg_tui.lab.content.steps import STEPS, RunPlan
+from minseg_tui.lab.content.steps import FIELDS, STEPS, RunPlan
 from minseg_tui.lab.content.u_ss_says import u_ss_words
 from minseg_tui.lab.state import compare as lab_compare
 from minseg_tui.lab.state import shown as lab_shown
+from minseg_tui.lab.state.entries import choice_words, parsed_values, read_entry
 from minseg_tui.lab.state.results import Comparison, Results
 from minseg_tui.lab.state.session import Session
 from minseg_tui.lab.state.shown import PolicyRecord
@@ -531,6 +534,97 @@ def run_changed(session: Session, before: str | None) -> str:
     )
 
 
+def shown_gap(session: Session) -> str:
+    """Why the lists of what the group was shown (:func:`revealed_early`,
+    :func:`changed_after_shown`) may leave something out: the session was begun with an older
+    program (recorded since a later time, or not at all), or its file is damaged; '' when
+    the session recorded it from its start."""
+    since = session.shown_since
+    if since is None:
+        return _not_known(session)
+    if since > session.created:
+        return (
+            f"recorded since {when(since)} only: the session was begun with an older program, "
+            "which did not record it"
+        )
+    return DAMAGED if session.damaged else ""
+
+
+def revealed_early(session: Session) -> list[str]:
+    """The values of Tasks 11-15 the group's screen showed before the group answered (a lab
+    assistant's reveal, the lab's policy, the model check), each as :func:`shown` says it:
+    "T (Task 12): revealed before answering: shown with Ctrl+R, …; answered …"."""
+    recs = session.shown()
+    out = []
+    for key in lab_compare.ANSWERED_FIRST:
+        rec = recs.get(key)
+        if key in session.revealed() or (rec is not None and rec.answer is None):
+            out.append(f"{TASK[key]}: {shown(session, key)}")
+    return out
+
+
+def changed_after_shown(session: Session) -> list[str]:
+    """The group's values of Tasks 11-15 changed after the program showed its value for them:
+    the answer in place when it was shown, when, and the answer now ("K (Task 11): '1.72'
+    when the computed values were shown on Tasks 11-15, 2026-11-28 21:02:21 UTC; changed
+    to '1,91', 2026-11-28 21:02:23 UTC"). A value changed before anything was shown is the
+    group's own second thought and not listed."""
+    recs = session.shown()
+    out = []
+    for key in lab_compare.ANSWERED_FIRST:
+        rec, e = recs.get(key), session.entry(key)
+        if rec is None or rec.answer is None or e is None or not e.ok:
+            continue
+        now = e.text.strip()
+        if now and now != rec.answer:
+            by = _BY.get(rec.by, rec.by)
+            out.append(
+                f"{TASK[key]}: {rec.answer!r} when the computed values were shown {by}, "
+                f"{when(rec.at)}; changed to {now!r}, {when(e.at)}"
+            )
+    return out
+
+
+def wrong_before(session: Session) -> list[str]:
+    """Checked answers (the preparations, the summary's questions) whose earlier text, in the
+    entry's history, the program judges wrong, with the answer now: "Preparation 4, y(T) /
+    (K c): '0,37' (0.368 is the part still missing …), 2026-11-28 20:58:54 UTC; now
+    '0,632'". Judged as the program judges it now, against the group's other entries now;
+    refused texts (a unit slip) are no answers and not listed; nor are the steps of a list
+    ticked one answer at a time (each tick is stored), whose first ticks are no answer."""
+    values = session.parsed()
+    out = []
+    for st in STEPS:
+        for chk in st.checks:
+            fld, e = FIELDS[chk.key], session.entry(chk.key)
+            if e is None or not e.ok or fld.multiple:
+                continue
+            for text, at in e.history:
+                read = read_entry(fld, text)
+                if not read.ok or text.strip() == e.text.strip():
+                    continue
+                answer = parsed_values({chk.key: read}).get(chk.key)
+                if isinstance(answer, Formula) and not fld.names:
+                    answer = answer.value({})
+                fb = check_answer(chk, answer, values)
+                if fb.status != "wrong":
+                    continue
+                said = (
+                    choice_words(fld, read.value)
+                    if isinstance(read.value, tuple)
+                    else repr(text.strip())
+                )
+                now = (
+                    choice_words(fld, e.value)
+                    if isinstance(e.value, tuple)
+                    else repr(e.text.strip())
+                )
+                where = f"{st.title.split(':')[0]}, {fld.label}"
+                out.append(f"{where}: {said} ({fb.for_grader}), {when(at)}; now {now}")
+                break
+    return out
+
+
 __all__ = [
     "GROUPS",
     "NOT_ANSWERED",
@@ -539,11 +633,15 @@ __all__ = [
     "TASK",
     "TOLD",
     "OwnRow",
+    "changed_after_shown",
+    "shown_gap",
     "policy_in_force",
+    "revealed_early",
     "run_changed",
     "run_used",
     "shown",
     "step_rows",
     "table_rows",
     "when",
+    "wrong_before",
 ]

@@ -162,6 +162,35 @@ class EntryView:
     feedback: str = ""
 
 
+ROW_READINGS: tuple[str, ...] = ("u_ss", "omega_ss", "i_ss")
+"""The readings of the table's rows, one row per requested voltage ('i_ss@2.5')."""
+
+SAME_LEVEL = 0.05
+"""Two requested voltages closer than this (V) are the same row's."""
+
+
+def typed_at_another_level(key: str, requested: float | None) -> str:
+    """The line under a reading of one row (u_ss, omega_ss or i_ss at L V) typed while the
+    motor runs at another requested voltage: 'typed while the motor runs at 4.5 V, not 2.5 V:
+    a reading taken now is the 4.5 V one (F3 steps to the next voltage)'; '' for any other
+    field, with the motor off (``requested`` None or 0), or at the row's own voltage. Said, not
+    stored: the session does not know what the motor ran at when a value was typed (walk 18,
+    D2: the meter's 4.5 V current went into the 2.5 V row without a word)."""
+    name, at, level = key.partition("@")
+    if not at or name not in ROW_READINGS or not requested:
+        return ""
+    try:
+        row = float(level)
+    except ValueError:
+        return ""
+    if abs(requested - row) < SAME_LEVEL:
+        return ""
+    return (
+        f"typed while the motor runs at {requested:g} V, not {row:g} V: a reading taken now is "
+        f"the {requested:g} V one ({key_name('set_voltage')} steps to the next voltage)"
+    )
+
+
 STATUS_MARKS: tuple[tuple[str, str, str], ...] = (
     ("done", "✓", "done"),
     ("wrong", "✗", "answered but wrong"),

@@ -13,6 +13,7 @@ import asyncio
 import contextlib
 import re
 from collections.abc import Awaitable, Callable, Sequence
+from dataclasses import replace
 from functools import partial
 from inspect import isawaitable
 from pathlib import Path
@@ -994,6 +995,11 @@ class LabScreen(StatusScreen):
         self._undone: dict[str, list[str]] = {}
         """By field key, the answers Ctrl+Z took back, newest last: what Ctrl+Y brings
         forward again (until another answer is stored in the field)."""
+        self._elsewhere: dict[str, tuple[str, str]] = {}
+        """Readings typed into one voltage's row while the motor ran at another: the text
+        typed and the line said under it (:func:`views.typed_at_another_level`), said as long
+        as that text stands there (not stored: the session does not know the motor's voltage
+        when a value was typed)."""
         self.shown = asyncio.Event()
         """Set once the first step is on screen and focused (the app waits for it before it
         hands on the keys typed after the Enter that opened the lab)."""
@@ -1259,10 +1265,15 @@ class LabScreen(StatusScreen):
             for row in pane.rows():
                 text = views.typed(s, row.field.key)
                 row.held = views.held(s, row.field.key)
+                key = row.field.key
                 if row.sent is not None and text != row.sent:
-                    row.lab_changed(text, views.entry(s, row.field.key))
-                elif (result := views.entry(s, row.field.key)) is not None:
-                    row.update_result(result)  # a warning another row raised or cleared
+                    result = views.entry(s, key)
+                    row.lab_changed(
+                        text, self._said_elsewhere(key, text, result) if result else None
+                    )
+                elif (result := views.entry(s, key)) is not None:
+                    # a warning another row raised or cleared
+                    row.update_result(self._said_elsewhere(key, text, result))
         panel = pane.panel
         if isinstance(panel, ViewPanel):
             self._load(panel)
@@ -1403,7 +1414,12 @@ class LabScreen(StatusScreen):
             s.enter(key, text)
             result = views.entry(s, key) or EntryView(True)
             row.held = views.held(s, key)
-        row.show_result(result)
+        elsewhere = views.typed_at_another_level(key, self.requested) if text.strip() else ""
+        if elsewhere:
+            self._elsewhere[key] = (text, elsewhere)
+        else:
+            self._elsewhere.pop(key, None)
+        row.show_result(self._said_elsewhere(key, text, result))
         self._judged_now(row)
         if not submitted and before.strip() and row.held != before:
             # an answer replaced by leaving the field, not by Enter (a stray key, say): said,
@@ -1416,6 +1432,14 @@ class LabScreen(StatusScreen):
             )
         self._changed()
         return result
+
+    def _said_elsewhere(self, key: str, text: str, result: EntryView) -> EntryView:
+        """``result`` with the line of :attr:`_elsewhere` added while ``text``, the text that
+        stands in ``key``, is the reading it was said of (and accepted)."""
+        typed, line = self._elsewhere.get(key, ("", ""))
+        if not line or not result.ok or typed != text or line in result.warnings:
+            return result
+        return replace(result, warnings=(*result.warnings, line))
 
     def _restore(self, row: FieldRow, how: Restoring) -> None:
         """Escape in an entry: a refused text the lab keeps there is dropped with its refusal
@@ -1484,7 +1508,9 @@ class LabScreen(StatusScreen):
         if self.readonly:
             with self.session as s:
                 stored = views.chosen(s, row.field.key)
-                row.show_result(EntryView(False, f"{views.read_only(s)}: not stored"))
+                # said without ✗, the mark of a wrong answer: the group's answer under it is
+                # not judged by this (walk 18, walk 17's D2 left)
+                row.show_result(EntryView(True, f"{views.read_only(s)}: not stored"))
             # the list shows what the group answered, not the pick just refused (walk 17's
             # D2: the lab assistant saw 'a signal' picked where the group had 'a system')
             row.show_chosen(stored)

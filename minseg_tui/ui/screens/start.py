@@ -135,11 +135,16 @@ class StartScreen(StatusScreen):
     def _label(s: SessionInfo) -> str:
         """A saved session's row: its date, names and step (why it cannot be opened, if so)."""
         why = why_closed(s)
+        row = f"{s.date}  {', '.join(s.members) or '(no names)'}  at {step_name(s.last_step)}"
+        if why and not s.damaged:
+            # in use, not damaged: its names and step are read, so the row says them, as
+            # every other row does (walk 18, D6: the folder's name, spelt as first typed)
+            return f"{row}: {why}"
         if why:
             return f"{s.path}: {why}" + (
                 " (Enter opens it read-only)" if s.damaged and s.runs_left is None else ""
             )
-        return f"{s.date}  {', '.join(s.members) or '(no names)'}  at {step_name(s.last_step)}"
+        return row
 
     def request(self) -> StartScreen.NewSession | StartScreen.Resume | None:
         """What Enter asks for where the focus is: a new session (in the names' or the date's
