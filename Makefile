@@ -14,7 +14,7 @@ AVR    ?= 1
 unexport PYTHONDONTWRITEBYTECODE
 
 .PHONY: run test test-stages lint typecheck pytest snapshot-update firmware firmware-sim \
-	firmware-host-binary firmware-host-test firmware-hex bench clean
+	firmware-host-binary firmware-host-test firmware-hex bench clean test-times
 
 # The virtualenv's own pip (Python 3.11's: 23.x) installs the package as it is (an editable
 # install from pyproject.toml needs pip 21.3): it is upgraded first only when older. The
@@ -55,6 +55,13 @@ TEST_TMPDIR ?= $(shell test -d /dev/shm -a -w /dev/shm && echo /dev/shm)
 
 pytest: $(STAMP) firmware-host-binary
 	$(if $(TEST_TMPDIR),TMPDIR=$(TEST_TMPDIR) )$(PY) -m pytest -q -n $(PYTEST_WORKERS) --dist loadgroup $(PYTEST_ARGS)
+
+# Where pytest's time goes: pytest as `make test` runs it (PYTEST_ARGS too) with tests/timing.py,
+# which prints per worker the time it sat idle at the end, per folder the wall and CPU seconds,
+# and the tests that used the most CPU. On a shared machine compare CPU seconds: a test's wall
+# time there is mostly waiting for a core.
+test-times:
+	@$(MAKE) --no-print-directory pytest PYTEST_ARGS="-p tests.timing $(PYTEST_ARGS)"
 
 # Re-pin the screens after a change meant to alter them; review the SVG diffs before committing.
 snapshot-update: $(STAMP)
