@@ -173,6 +173,13 @@ def read_quantity(fld: Field, text: str) -> Parsed:
             label=fld.label,
             allow_negative=fld.allow_negative,
             allow_zero=fld.allow_zero,
+            within=None
+            if fld.meter is None
+            else (
+                fld.meter.lo,
+                fld.meter.hi,
+                f"a multimeter {fld.meter.setting} shows, {fld.meter.words}",
+            ),
         )
 
     try:
