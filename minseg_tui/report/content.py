@@ -438,6 +438,7 @@ def _warnings_section(session: Session) -> Section:
         for e in session.entries.values()
         if not e.ok
     ]
+    items += [f"{_where(e.key) or e.key}: {e.older}" for e in session.entries.values() if e.older]
     items += [
         f"refused entry {_where(e.key) or e.key}: {e.refused[0]!r} ({own_first.TOLD} {e.refused[1]}; "
         f"the answer in effect stays {e.text!r})"
