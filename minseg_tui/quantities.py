@@ -51,7 +51,7 @@ import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
-from decimal import Decimal
+from decimal import Decimal, InvalidOperation
 
 from minseg_tui.errors import InputError
 
@@ -496,11 +496,14 @@ def parse_quantity(
     if m is None:
         return _raise(refuse(f"{stripped!r} is not a number"))
     mant = m.group("mant").replace(",", ".")
-    exact = Decimal(
-        ("-" if m.group("sign") == "-" else "")
-        + mant
-        + (f"e{m.group('exp')}" if m.group("exp") else "")
-    )
+    try:
+        exact = Decimal(
+            ("-" if m.group("sign") == "-" else "")
+            + mant
+            + (f"e{m.group('exp')}" if m.group("exp") else "")
+        )
+    except InvalidOperation:  # an exponent beyond any Decimal's (1e999999999999999999)
+        return _raise(refuse(f"{stripped!r} is not a finite number"))
     number = float(exact)
     rest = m.group("rest").strip()
     if not math.isfinite(number):

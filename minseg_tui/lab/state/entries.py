@@ -241,9 +241,24 @@ def _no_choice(fld: Field, text: str) -> str:
     return f"{text.strip()!r} names none of the answers: " + ", ".join(map(repr, fld.options))
 
 
+MAX_TYPED = 200
+"""Most characters read in a field that takes a value, a formula or a choice (the lab's
+longest answer, Preparation 15's formula, has about 30): a longer text, pasted by mistake,
+is refused at once without being read (s39 attack: 10 kB pasted into a formula field took
+10 s to refuse, in the screen's thread, or ended in a RecursionError or a MemoryError)."""
+
+
 def read_entry(fld: Field, text: str) -> Entry:
     """``text`` typed in field ``fld``, read: accepted with its value, unit, note and
     plausibility warnings, or refused with the one-line message (no time, source, history)."""
+    if fld.kind != "text" and len(text.strip()) > MAX_TYPED:
+        return Entry(
+            fld.key,
+            text,
+            ok=False,
+            message=f"{fld.label}: {len(text.strip())} characters, more than any answer here "
+            f"(at most {MAX_TYPED}): pasted by mistake? Nothing was read from it",
+        )
     if fld.kind == "text":
         if fld.compare == "model" and text.strip():
             # a model that cannot be read as an equation is refused, the text kept to mend
@@ -493,6 +508,7 @@ def parsed_values(entries: Mapping[str, Entry]) -> dict[str, object]:
 
 
 __all__ = [
+    "MAX_TYPED",
     "OLDER_READINGS",
     "Entry",
     "OlderReading",
