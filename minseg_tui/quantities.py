@@ -26,7 +26,8 @@ Accepted, for every field:
 Refused, with a message saying what was expected:
 
 - empty text, text that is not a number, ``nan``, ``inf``, a number too large to be finite,
-  or one far beyond any value of its quantity in this lab (:data:`CEILING`: ``1e308`` V);
+  or one far beyond any value of its quantity in this lab (:data:`CEILING`: ``1e308`` V),
+  or, for a meter's reading, one outside what the meter shows (``within``: ``1e9`` Ω);
 - two numbers (``4.7 5.2``, ``1,234.5``, ``4.7.1``);
 - a unit of another quantity (``4.7 V`` for a current) or an unknown unit;
 - a prefix without its unit: ``3k`` is refused (write ``3 kΩ``), because a lone letter
@@ -50,7 +51,7 @@ import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
-from decimal import Decimal
+from decimal import Decimal, InvalidOperation
 
 from minseg_tui.errors import InputError
 
@@ -472,10 +473,14 @@ def parse_quantity(
     label: str = "",
     allow_negative: bool = False,
     allow_zero: bool = True,
+    within: tuple[float, float, str] | None = None,
 ) -> Parsed:
     """Read ``text`` as a quantity for a field whose form unit is ``unit``; value in SI.
 
     ``unit`` is a display symbol from :data:`UNITS` (``"mA"``, ``"V"``, ``"Ω"``, ...).
+    ``within``: for an instrument's reading, the magnitudes (SI, low and high) it can show
+    and that span in words (``"a multimeter on Ω shows, 1 mΩ to 500 MΩ"``); a nonzero value
+    outside it is refused with those words, in place of the quantity's :data:`CEILING`.
     Raises :class:`EntryRefused` (an InputError naming ``label``) with a one-line message.
     """
     form = UNITS[unit]
@@ -491,11 +496,14 @@ def parse_quantity(
     if m is None:
         return _raise(refuse(f"{stripped!r} is not a number"))
     mant = m.group("mant").replace(",", ".")
-    exact = Decimal(
-        ("-" if m.group("sign") == "-" else "")
-        + mant
-        + (f"e{m.group('exp')}" if m.group("exp") else "")
-    )
+    try:
+        exact = Decimal(
+            ("-" if m.group("sign") == "-" else "")
+            + mant
+            + (f"e{m.group('exp')}" if m.group("exp") else "")
+        )
+    except InvalidOperation:  # an exponent beyond any Decimal's (1e999999999999999999)
+        return _raise(refuse(f"{stripped!r} is not a finite number"))
     number = float(exact)
     rest = m.group("rest").strip()
     if not math.isfinite(number):
@@ -539,6 +547,8 @@ def parse_quantity(
     if not math.isfinite(value):  # 1e308 kΩ: finite as typed, not in the form's SI unit
         return _raise(refuse(f"{stripped!r} is not a finite number in {form.symbol}"))
     ceiling, in_words = CEILING[form.quantity]
+    if within is not None and value != 0 and not within[0] <= abs(value) <= within[1]:
+        return _raise(refuse(f"{stripped!r} is outside the range {within[2]}"))
     if abs(value) > ceiling:
         return _raise(
             refuse(

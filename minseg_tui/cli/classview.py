@@ -19,7 +19,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from minseg_tui.cli.output import not_stdio, one_line, print_json
+from minseg_tui.cli.output import folder, not_stdio, one_line, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.store import os_reason
 from minseg_tui.lab.views import classread
@@ -36,12 +36,22 @@ from minseg_tui.lab.views.classview import (
 from minseg_tui.quantities import MISSING
 
 
+def _workers(text: str) -> int:
+    """--workers as a whole number (argparse said 'invalid int value: 'abc'')."""
+    try:
+        return int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"expected a whole number of at least 1, got {text!r}"
+        ) from None
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Arguments of `minseg-tui class`."""
     parser.add_argument(
         "--sessions",
         metavar="DIR",
-        type=Path,
+        type=folder,
         default=Path("sessions"),
         help="folder holding the groups' sessions (default: ./sessions)",
     )
@@ -49,14 +59,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--out",
         metavar="DIR",
-        type=Path,
+        type=folder,
         default=None,
         help="also write class.md, class.html and class.csv into DIR (made if needed)",
     )
     parser.add_argument(
         "--workers",
         metavar="N",
-        type=int,
+        type=_workers,
         default=None,
         help="processes for the sessions not read before (default: the CPUs; 1: none)",
     )

@@ -8,6 +8,7 @@ written as null, the JSON for "no value".
 
 from __future__ import annotations
 
+import argparse
 import errno
 import json
 import math
@@ -71,6 +72,15 @@ def one_stdin(*inputs: tuple[str, str | Stdin | None]) -> None:
             None,
             "stdin can be read only once: give all but one of these as a file",
         )
+
+
+def folder(text: str) -> Path:
+    """An argument naming a folder (argparse's ``type``): '' is refused, since Path('') is
+    '.', the folder the command was started in (s39 attack: ``class --out ''`` wrote the
+    class report there without a word)."""
+    if not text:
+        raise argparse.ArgumentTypeError("expected a folder, got ''")
+    return Path(text)
 
 
 def not_stdio(name: str | Path, flag: str, what: str, why: str = "") -> None:

@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from minseg_tui.cli.output import not_stdio
+from minseg_tui.cli.output import folder, not_stdio
 from minseg_tui.errors import InputError
 from minseg_tui.lab.saving.store import SessionDamaged, os_reason, resolve
 from minseg_tui.lab.state.session import Session
@@ -27,7 +27,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--sessions",
         metavar="DIR",
-        type=Path,
+        type=folder,
         default=Path("sessions"),
         help="folder holding the sessions (default: ./sessions)",
     )
@@ -35,6 +35,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Write the report; 0 on success (InputError -> exit 2 via the CLI, one line)."""
+    if not args.session:  # Path('') is '.': the folder the command was started in
+        raise InputError("SESSION", None, "expected a session folder or a session id, got ''")
     not_stdio(args.session, "SESSION", "a session folder or a session id")
     not_stdio(args.sessions, "--sessions", "the folder holding the sessions")
     folder = resolve(args.session, args.sessions)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import sys
 from pathlib import Path
 
 from minseg_tui.cli.output import not_stdio
@@ -39,6 +40,16 @@ def run(args: argparse.Namespace) -> int:
     if os.path.lexists(sessions) and not sessions.is_dir():
         raise InputError(str(sessions), None, "--sessions must be a folder")
     list_sessions(sessions)  # a folder that cannot be listed: one line, exit 2
+    for name, stream in (("stdin", sys.stdin), ("stderr", sys.stderr)):
+        # the app reads keys from stdin and draws on stderr: without a terminal it drew
+        # into a file (or a pipe) and waited for keys for ever (s39 attack)
+        if stream is None or not stream.isatty():
+            raise InputError(
+                name,
+                None,
+                "is not a terminal: the lab assistant runs in one; without a terminal use "
+                "identify, analyze, report or class",
+            )
     device = "sim" if args.sim else (args.port or "auto")
     app = make_app(
         UiConfig(device=device, sessions=sessions),

@@ -201,7 +201,10 @@ def _out_of_range(name: str, opt: Option, value: float, raw: object) -> str | No
     if opt.lo <= value <= opt.hi:
         return None
     if opt.kind is int:
-        return f"option {name}: expected an integer from {opt.lo:.0f} to {opt.hi:.0f}, got {raw!r}"
+        # int(), not :.0f: 2**63 - 1 as a float is 2**63, a bound the option does not take
+        return (
+            f"option {name}: expected an integer from {int(opt.lo)} to {int(opt.hi)}, got {raw!r}"
+        )
     if opt.path.startswith("faults."):
         return f"option {name}: expected a probability from 0 to 1, got {raw!r}"
     return f"option {name}: expected a number from {opt.lo:g} to {opt.hi:g}, got {raw!r}"

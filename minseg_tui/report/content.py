@@ -488,6 +488,7 @@ def _warnings_section(session: Session) -> Section:
         for e in session.entries.values()
         if not e.ok
     ]
+    items += [f"{_where(e.key) or e.key}: {e.older}" for e in session.entries.values() if e.older]
     items += [
         f"refused entry {_where(e.key) or e.key}: {e.refused[0]!r} ({own_first.TOLD} {e.refused[1]}; "
         f"the answer in effect stays {e.text!r})"
@@ -786,10 +787,12 @@ def _runs_section(session: Session) -> Section:
     )
     for r in session.runs:
         log = logs[r.name]
+        changed = session.run_changed(r.name)  # the one rule: the lab and the class view's
         if not isinstance(log, RunLog):
             sec.blocks.append(f"Run {r.name} cannot be read: {log}")
+            if changed:  # cut short after the recording: said as the class view says it
+                sec.blocks.append(changed.text[0].upper() + changed.text[1:] + ".")
             continue
-        changed = session.run_changed(r.name)  # the one rule: the lab and the class view's
         if changed:
             sec.blocks.append(changed.text[0].upper() + changed.text[1:] + ".")
         sec.blocks.append(_run_figure(log, r.name))

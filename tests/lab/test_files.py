@@ -83,7 +83,11 @@ def test_table_round_trip(tmp_path):
         ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8,0\n", "t.csv:2:", "expected i_ss > 0 mA"),
         ("u_req,u_ss,omega_ss,i_ss\n2.5,2,05,3.8,30\n", "t.csv:2:", "decimal comma"),
         ("u_req,u_ss,omega_ss,i_ss\n2.5,2.05,3.8\n", "t.csv:2:", "expected 4 fields"),
-        ("u_req;u_ss;omega_ss;i_ss\n2.5;2.05;3.8;30\n", "t.csv:1:", "got semicolons"),
+        (
+            "u_req;u_ss;omega_ss;i_ss\n2.5;2.05;3.8;30\n3,5;3,05;5,8;34\n",
+            "t.csv:3:",
+            "expected one decimal mark in a file separated by semicolons",
+        ),
         ("u_req,u_ss,u_ss,omega_ss,i_ss\n1,2,3,4,5\n", "t.csv:1:", "'u_ss' appears twice"),
     ],
 )

@@ -44,6 +44,28 @@ LEVELS: tuple[float, ...] = (2.5, 3.5, 4.5)
 
 
 @dataclass(frozen=True)
+class Shows:
+    """What a handheld multimeter can show on one setting, in magnitude (SI): from ``lo`` to
+    ``hi``, ``words`` that span as the refusal says it. A reading outside it is no reading of
+    the meter (beyond ``hi`` it shows OL; below ``lo``, 0): a slip of the keyboard, refused."""
+
+    setting: str
+    lo: float
+    hi: float
+    words: str
+
+
+METER_OHMS = Shows("on Ω", 1e-3, 500e6, "1 mΩ to 500 MΩ")
+"""R (Task 2): the finest resolution of a handheld meter's lowest Ω range to its highest."""
+
+METER_VOLTS = Shows("on V=", 1e-6, 1000.0, "1 µV to 1000 V")
+"""u_ss (Tasks 4-5): the finest resolution of the mV range to the top of the V= range."""
+
+METER_AMPS = Shows("on mA or A", 1e-8, 20.0, "0.01 µA to 20 A")
+"""i_ss (Task 5): the finest resolution of the µA range to the top of the A input."""
+
+
+@dataclass(frozen=True)
 class Field:
     """One thing to enter.
 
@@ -52,7 +74,8 @@ class Field:
     of :data:`minseg_tui.quantities.UNITS`; a bare number is read in it); names: the
     names a formula may use; options: the choices; compare: for a student's own reading,
     the path of the computed value in :meth:`Session.results` to show beside it
-    (``"step.K"``); level: the requested voltage (V) of a table field.
+    (``"step.K"``); level: the requested voltage (V) of a table field; meter: for a
+    multimeter's reading, what the meter can show (a value outside it is refused).
     """
 
     key: str
@@ -69,6 +92,7 @@ class Field:
     optional: bool = False
     compare: str = ""
     level: float | None = None
+    meter: Shows | None = None
 
 
 @dataclass(frozen=True)
@@ -522,6 +546,7 @@ def _u_ss(level: float) -> Field:
         unit="V",
         level=level,
         hint="multimeter on V=, between M1A and M1B",
+        meter=METER_VOLTS,
         plausible=(
             Plausible(
                 level - 1.5,
@@ -561,6 +586,7 @@ def _i_ss(level: float) -> Field:
         unit="mA",
         level=level,
         hint="multimeter on mA, in series through the jumper pins",
+        meter=METER_AMPS,
         plausible=(
             Plausible(
                 0.005,
@@ -603,6 +629,7 @@ _LAB: tuple[Step, ...] = (
                 "R",
                 unit="Ω",
                 plausible=(_R_PLAUSIBLE,),
+                meter=METER_OHMS,
                 hint="multimeter on Ω, M1A-M1B, board unpowered",
             ),
         ),
@@ -940,6 +967,7 @@ __all__ = [
     "STEPS",
     "STEP_INDEX",
     "Check",
+    "Shows",
     "Feedback",
     "Field",
     "RunPlan",

@@ -10,12 +10,20 @@ input), and a pipe or device that sends nothing for PIPE_WAIT_S (a FIFO nobody w
 A number is plain decimal notation, ``[+-]digits[.digits][e[+-]digits]``: Python's float()
 also reads ``3_6``, ``nan``, ``infinity`` and non-ASCII digits, which no lab file holds.
 Every refusal is an InputError naming the file, the line and what was expected.
+
+A file whose header is separated by semicolons (what a German or Swedish spreadsheet
+writes: ``t;u;omega`` and ``0,025;4,5;3,61``) is read as the comma file it stands for,
+with decimal commas read as points, when that is unambiguous: the whole file uses one
+decimal mark. A file with both (``2,5`` on one line, ``1.250`` on another, or
+``1.234,5`` in one field) is refused: with semicolons a point may be a thousands
+separator.
 """
 
 from __future__ import annotations
 
 import contextlib
 import csv
+import io
 import os
 import re
 import select
@@ -307,6 +315,8 @@ class _Reader:
         self.block_rows = 0
         self.block_numeric = True  # every text in the block is made of number characters
         self.rows = 0
+        self.semicolons = False  # the header is separated by semicolons: see decomma
+        self.marks: dict[str, tuple[int, str]] = {}  # decimal mark -> (line, field) first seen
 
     # -- one line at a time ----------------------------------------------------------------
     def line(self, number: int, line: str) -> None:
@@ -318,6 +328,11 @@ class _Reader:
             if m and not self.header:
                 self.metadata[m.group(1)] = m.group(2)
                 self.metadata_lines[m.group(1)] = number
+            return
+        if not self.header and ";" in stripped and "," not in stripped:
+            self.semicolons = True
+            fields = [f.strip() for f in next(csv.reader([stripped], delimiter=";"))]
+            self.header_row(number, fields)
             return
         if '"' in stripped:  # quoted fields are rare: the csv module only for them
             fields = [f.strip() for f in next(csv.reader([stripped]))]
@@ -366,14 +381,62 @@ class _Reader:
             self.flush()
         return True
 
+    # -- a semicolon file -------------------------------------------------------------------
+    def decomma(self, first: int, text: str) -> str:
+        """Lines of a semicolon file (numbered from ``first``) as the comma file they stand
+        for: decimal commas read as points, semicolons as commas. InputError when the file
+        uses both decimal marks (a point may then be a thousands separator)."""
+        if "#" not in text and '"' not in text and not ("." in text and "," in text):
+            for mark in ".,":
+                at = text.find(mark)
+                if at >= 0:
+                    start = text.rfind("\n", 0, at) + 1
+                    end = text.find("\n", at)
+                    line = text[start : end if end >= 0 else len(text)]
+                    self.decimal_mark(first + text.count("\n", 0, at), mark, line.split(";"))
+            return text.replace(",", ".").replace(";", ",")
+        out: list[str] = []
+        for number, line in enumerate(text.split("\n"), start=first):
+            if line.strip().startswith("#") or not line.strip():
+                out.append(line)
+                continue
+            fields = next(csv.reader([line], delimiter=";")) if '"' in line else line.split(";")
+            for mark in ".,":
+                if any(mark in f for f in fields):
+                    self.decimal_mark(number, mark, fields)
+            buffer = io.StringIO()
+            csv.writer(buffer, lineterminator="").writerow(f.replace(",", ".") for f in fields)
+            out.append(buffer.getvalue())
+        return "\n".join(out)
+
+    def decimal_mark(self, number: int, mark: str, fields: list[str]) -> None:
+        """Note that line ``number`` (its ``fields``) uses the decimal ``mark``; refuse it
+        when the file has used the other one, or a field holds both."""
+        both = next((f.strip() for f in fields if "." in f and "," in f), None)
+        field = both or next(f.strip() for f in fields if mark in f)
+        self.marks.setdefault(mark, (number, field))
+        if both is None and len(self.marks) < 2:
+            return
+        other = "," if mark == "." else "."
+        at, seen = self.marks.get(other, (number, field))
+        if both is not None:
+            said = f"'{field}' has both a point and a comma"
+        else:
+            said = (
+                f"'{field}' has a decimal {'point' if mark == '.' else 'comma'}, and line {at} "
+                f"a decimal {'point' if other == '.' else 'comma'} ('{seen}')"
+            )
+        raise InputError(
+            self.source,
+            number,
+            f"expected one decimal mark in a file separated by semicolons; {said}, and a "
+            "point may be a thousands separator there: save it again with one of them",
+        )
+
     # -- checks ----------------------------------------------------------------------------
     def header_row(self, number: int, fields: list[str]) -> None:
         self.header, self.header_line = [f.lower() for f in fields], number
         where = (self.source, number)
-        if len(self.header) == 1 and ";" in self.header[0]:
-            raise InputError(
-                *where, f"expected columns separated by commas ('{self.expected}'), got semicolons"
-            )
         seen: set[str] = set()
         for name in self.header:
             if not name:
@@ -499,6 +562,8 @@ def read_csv(
                 line, _, text = text.partition("\n")
                 reader.line(first, line)
                 first += 1
+            if reader.semicolons and text:
+                text = reader.decomma(first, text)
             if reader.plain_rows(first, text):
                 continue
             for number, line in enumerate(text.split("\n"), start=first):

@@ -739,16 +739,19 @@ def changed_file(folder: Path, run: RunInfo) -> ChangedFile | None:
             held = len(read_run_log(path, require_step=False))
         except InputError:
             held = None
-        if held is not None and held != run.samples:
+        if held is None and run.sha256:  # cut short (a stick pulled out?) or spoiled
+            how = "it no longer reads as a run log, so nothing is computed from it"
+        elif held is not None and held != run.samples:
             how = f"it holds {held} samples where {run.samples} were recorded"
         elif run.sha256:
             how = f"it holds the {run.samples} samples recorded, but not the bytes written"
         else:
             how = ""
+        uses = "" if held is None else "; what is computed from it uses the file as it is now"
         said = (
             ChangedFile(
                 f"run {run.name}: its file {run.file} was changed after the recording (edited "
-                f"by hand?): {how}; what is computed from it uses the file as it is now",
+                f"by hand?): {how}{uses}",
                 edited=True,
             )
             if how

@@ -576,6 +576,5 @@ def resolve(session: str, root: Path) -> Path:
     q = Path(root) / session
     if (q / SESSION_FILE).exists():
         return q
-    raise SessionMissing(
-        session, None, f"no session found (looked for {p / SESSION_FILE} and {q / SESSION_FILE})"
-    )
+    looked = f"{p / SESSION_FILE}" + ("" if q == p else f" and {q / SESSION_FILE}")
+    raise SessionMissing(session, None, f"no session found (looked for {looked})")

@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
+from datetime import datetime
 from typing import Any
 
 from minseg_tui import quantities
@@ -19,7 +20,7 @@ from minseg_tui.errors import InputError
 from minseg_tui.lab.content.answers import read_formula
 from minseg_tui.lab.content.expr import formula_fault, parse_formula
 from minseg_tui.lab.content.model_eq import ModelUnreadable, read_model
-from minseg_tui.lab.content.steps import FIELDS, Field
+from minseg_tui.lab.content.steps import FIELDS, LEVELS, Field
 from minseg_tui.quantities import EntryRefused, Parsed, lookup_unit, parse_quantity
 
 
@@ -37,7 +38,10 @@ class Entry:
     session of an older program); edited: for an entry whose stored value is not what its
     text reads as (session.json changed by hand: :func:`check_stored`), the one line saying
     so and what the file holds; the entry is then not in effect (``ok`` False, no value)
-    until the field is typed again. Never saved: the file keeps what it holds.
+    until the field is typed again; older: for an entry whose stored value is what an older
+    minseg-tui read its text as, under a reading rule changed since (:data:`OLDER_READINGS`),
+    the one line saying so; the entry stays in effect with that value, as the group saw it
+    judged. Neither is saved: the file keeps what it holds.
 
     A refused text never displaces an accepted one: the accepted entry stays in effect and
     carries the refused attempt in ``refused`` (text, message, at) until something is
@@ -57,6 +61,7 @@ class Entry:
     refused: tuple[str, str, str] | None = None
     run: str = ""
     edited: str = ""
+    older: str = ""
 
     @property
     def typed(self) -> str:
@@ -173,6 +178,13 @@ def read_quantity(fld: Field, text: str) -> Parsed:
             label=fld.label,
             allow_negative=fld.allow_negative,
             allow_zero=fld.allow_zero,
+            within=None
+            if fld.meter is None
+            else (
+                fld.meter.lo,
+                fld.meter.hi,
+                f"a multimeter {fld.meter.setting} shows, {fld.meter.words}",
+            ),
         )
 
     try:
@@ -229,9 +241,24 @@ def _no_choice(fld: Field, text: str) -> str:
     return f"{text.strip()!r} names none of the answers: " + ", ".join(map(repr, fld.options))
 
 
+MAX_TYPED = 200
+"""Most characters read in a field that takes a value, a formula or a choice (the lab's
+longest answer, Preparation 15's formula, has about 30): a longer text, pasted by mistake,
+is refused at once without being read (s39 attack: 10 kB pasted into a formula field took
+10 s to refuse, in the screen's thread, or ended in a RecursionError or a MemoryError)."""
+
+
 def read_entry(fld: Field, text: str) -> Entry:
     """``text`` typed in field ``fld``, read: accepted with its value, unit, note and
     plausibility warnings, or refused with the one-line message (no time, source, history)."""
+    if fld.kind != "text" and len(text.strip()) > MAX_TYPED:
+        return Entry(
+            fld.key,
+            text,
+            ok=False,
+            message=f"{fld.label}: {len(text.strip())} characters, more than any answer here "
+            f"(at most {MAX_TYPED}): pasted by mistake? Nothing was read from it",
+        )
     if fld.kind == "text":
         if fld.compare == "model" and text.strip():
             # a model that cannot be read as an equation is refused, the text kept to mend
@@ -306,9 +333,108 @@ HAND_EDITED = (
     "by an older minseg-tui that read the text otherwise)"
 )
 """How :func:`check_stored`'s line begins: an entry this program would not have written.
-Both causes are named: a reading rule changed since (own.f typed bare as "0.00186" was read
-in N m s/rad, and is now refused as ambiguous in its mN m s/rad field) gives
-the same disagreement as a hand edit, and the line must be true of either."""
+Both causes are named: a reading rule changed since that is not one of
+:data:`OLDER_READINGS` gives the same disagreement as a hand edit, and the line must be true
+of either."""
+
+
+@dataclass(frozen=True)
+class OlderReading:
+    """A reading rule an older minseg-tui had for the fields ``keys``, changed by ``commit``
+    (committed at ``until``, ISO): ``read`` gives what that program read a text as (SI; None
+    where the rule does not decide), ``how`` says the rule in words."""
+
+    keys: tuple[str, ...]
+    commit: str
+    until: str
+    how: str
+    read: Callable[[Field, str], float | None]
+
+
+def _bare_in(unit: str) -> Callable[[Field, str], float | None]:
+    """A bare number (a decimal point or comma, an exponent) read in ``unit``."""
+
+    def read(fld: Field, text: str) -> float | None:
+        t = text.strip().replace(",", ".", 1)
+        if quantities.NUMBER.match(t) is None:
+            return None
+        return float(t) * quantities.UNITS[unit].scale
+
+    return read
+
+
+def _without_range(fld: Field, text: str) -> float | None:
+    """The text read as now, without the range of what a multimeter shows."""
+    try:
+        return parse_quantity(
+            text,
+            fld.unit,
+            allow_negative=fld.allow_negative,
+            allow_zero=fld.allow_zero,
+        ).value
+    except InputError:
+        return None
+
+
+OLDER_READINGS: tuple[OlderReading, ...] = (
+    OlderReading(
+        ("own.f",),
+        "840d117",
+        "2026-11-27T02:04:36+00:00",
+        "a bare number was read in mN m s/rad, the field's unit",
+        _bare_in("mN m s/rad"),
+    ),
+    OlderReading(
+        ("own.T",),
+        "0c668f1",
+        "2026-11-27T17:30:34+00:00",
+        "a bare number was read in s, the field's unit then",
+        _bare_in("s"),
+    ),
+    OlderReading(
+        ("R", *(f"{q}@{lv:g}" for q in ("u_ss", "i_ss") for lv in LEVELS)),
+        "b092299",
+        "2026-11-28T21:02:52+00:00",
+        "a reading outside what a multimeter shows was taken, with a warning",
+        _without_range,
+    ),
+)
+"""The reading rules changed since a session could have been saved, by which a stored value
+that disagrees with its text now is told from a hand edit: an older minseg-tui read
+own.f typed bare as "0.00186" as 0.00186 mN m s/rad (it asks which unit now), own.T typed
+bare as "0.057" as 0.057 s (it asks now: T is in ms), and an R of 1e9 Ω as 1e9 Ω (refused
+now: no multimeter shows it). An instructor grading such a session sees what the group saw
+judged, said as such."""
+
+
+def _older(fld: Field, e: Entry, again: Entry) -> str:
+    """The line saying that ``e``'s stored value is what an older program read its text as
+    (``again``: how it reads now), or '' when no older rule gives that value at that time."""
+    if not isinstance(e.value, float):
+        return ""
+    try:
+        at = datetime.fromisoformat(e.at)
+    except ValueError:
+        return ""
+    for rule in OLDER_READINGS:
+        if e.key not in rule.keys or at.tzinfo is None:
+            continue
+        until = datetime.fromisoformat(rule.until)
+        if at >= until:
+            continue
+        then = rule.read(fld, e.text)
+        if then is None or not _agree(then, e.value):
+            continue
+        if again.ok:
+            now = f"this one reads it as {_held(fld, again.value)}"
+        else:
+            now = f"this one refuses it ({again.message.removeprefix(f'{fld.label}: ')})"
+        return (
+            f"read by an older minseg-tui (before {until:%d %b %Y %H:%M} UTC) as {_held(fld, e.value)}: "
+            f"{rule.how}, where {now}; kept as it was read then, until the field is typed again"
+        )
+    return ""
+
 
 NOT_JUDGED_UNTIL_TYPED = "it counts for nothing until the field is typed again"
 """How :func:`check_stored`'s line ends: what becomes of the entry."""
@@ -338,15 +464,20 @@ def check_stored(e: Entry) -> Entry:
     """``e`` as a session file holds it, its text read again by :func:`read_entry` (the
     reading the field gives what is typed in it): the same entry when its stored value is
     what the text reads as (or it was refused, or it is a text answer, or of no field
-    here), else the entry marked :attr:`Entry.edited` with one line saying what the file
-    holds, out of effect (``ok`` False, no value), so that nothing judges or computes with
-    a value the group never typed. The text, the history and the time are kept."""
+    here); the entry marked :attr:`Entry.older`, in effect with its value, when that value
+    is what an older minseg-tui read the text as (:data:`OLDER_READINGS`, typed before the
+    rule changed); else the entry marked :attr:`Entry.edited` with one line saying what the
+    file holds, out of effect (``ok`` False, no value), so that nothing judges or computes
+    with a value the group never typed. The text, the history and the time are kept."""
     fld = FIELDS.get(e.key)
     if fld is None or not e.ok or fld.kind == "text":
         return e
     again = read_entry(fld, e.text)
     if again.ok and _agree(again.value, e.value):
         return e
+    older = _older(fld, e, again)
+    if older:
+        return replace(e, older=older)
     text = e.text.strip()
     if again.ok:
         reads = f"{text!r} reads as {_held(fld, again.value)}"
@@ -377,7 +508,10 @@ def parsed_values(entries: Mapping[str, Entry]) -> dict[str, object]:
 
 
 __all__ = [
+    "MAX_TYPED",
+    "OLDER_READINGS",
     "Entry",
+    "OlderReading",
     "check_stored",
     "parse_choice",
     "parsed_values",

@@ -136,8 +136,15 @@ def _now() -> datetime:
     return datetime.now(UTC)
 
 
+SLUG_MAX = 80
+"""Most characters of a session folder's name made from the date and the names (a file
+name may have 255 bytes: a group that typed 300 characters of names got 'cannot make a
+session folder here (File name too long)', s39 attack); the names are kept whole in the
+session file."""
+
+
 def _slug(text: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
+    return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")[:SLUG_MAX].rstrip("-")
 
 
 class _Cache:

@@ -696,6 +696,7 @@ def _row(folder: Path, session: Session) -> Group:
         notes=(
             *(n for n in (run_note(session.response_run()),) if n),
             *(c.text for c in changed if not c.edited),
+            *(f"{_field_label(e.key)}: {e.older}." for e in session.entries.values() if e.older),
         ),
         check_on=check_on(session),
         typed={q.key: e.typed for q in QUANTITIES if q.reading and (e := session.entry(q.key))},

@@ -325,6 +325,8 @@ def under_entry(session: Session, c: Comparison) -> str:
 def _verdict(e: Entry, feedback: str) -> EntryView:
     if e.edited:  # session.json edited by hand: what it holds, not judged
         return EntryView(False, e.edited, (), feedback)
+    if e.older and not e.refused:  # as an older program read it, said so
+        return EntryView(True, e.older, tuple(e.warnings), feedback)
     if e.refused:  # a refused attempt over an accepted entry: say so, and what still counts
         fld = FIELDS.get(e.key)
         if fld is not None and fld.options and isinstance(e.value, tuple):
