@@ -37,7 +37,11 @@ class Entry:
     session of an older program); edited: for an entry whose stored value is not what its
     text reads as (session.json changed by hand: :func:`check_stored`), the one line saying
     so and what the file holds; the entry is then not in effect (``ok`` False, no value)
-    until the field is typed again. Never saved: the file keeps what it holds.
+    until the field is typed again. Never saved: the file keeps what it holds. meter: for a
+    reading of Tasks 2, 4 and 5 typed on the virtual MinSeg, the values (SI, each once,
+    ascending) its multimeter showed for that field while the group was on its step (the
+    session's record, :meth:`~minseg_tui.lab.state.session.Session.note_meter`), which the
+    reading is judged against; () on a real board, or when the meter had shown nothing yet.
 
     A refused text never displaces an accepted one: the accepted entry stays in effect and
     carries the refused attempt in ``refused`` (text, message, at) until something is
@@ -57,6 +61,7 @@ class Entry:
     refused: tuple[str, str, str] | None = None
     run: str = ""
     edited: str = ""
+    meter: tuple[float, ...] = ()
 
     @property
     def typed(self) -> str:
@@ -80,6 +85,8 @@ class Entry:
             out["refused"] = list(self.refused)
         if self.run:
             out["run"] = self.run
+        if self.meter:
+            out["meter"] = list(self.meter)
         return out
 
     @classmethod
@@ -106,6 +113,7 @@ class Entry:
             if d.get("refused")
             else None,
             run=str(d.get("run", "")),
+            meter=tuple(float(x) for x in d.get("meter", [])),
         )
 
 

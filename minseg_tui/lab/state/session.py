@@ -50,6 +50,7 @@ from numpy.typing import ArrayLike
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import answers
+from minseg_tui.lab.content import meter as lab_meter
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.expr import Formula
 from minseg_tui.lab.content.identify_says import sentence, u_ss_not_entered
@@ -126,6 +127,7 @@ from minseg_tui.lab.state.results import (
 from minseg_tui.lab.state.shown import PolicyRecord, Shown
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
+from minseg_tui.model.plant import MeterReading
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import format_number, format_reading, shown_unit
 
@@ -235,6 +237,10 @@ class Session:
         }
         self._runs: list[RunInfo] = [RunInfo.from_json(r) for r in data["runs"]]
         self._cache = _Cache()
+        self._meter_seen: dict[str, tuple[float, ...]] = {}
+        """What the virtual multimeter last showed for each reading field (SI, the newest
+        :data:`~minseg_tui.lab.content.meter.KEPT`), while this program runs: it is saved
+        with the entry typed (:attr:`Entry.meter`), never on its own."""
         self.frozen = False
         """A snapshot (:meth:`snapshot`): it reads as the session did, and changes nothing."""
         self._run_version = 0
@@ -673,6 +679,10 @@ class Session:
             return read
         entry = revise(old, read, source, self._clock().isoformat(timespec="seconds"))
         self._as_stored.pop(key, None)  # typed again: what the hand edit left is history
+        seen = self._meter_seen.get(key)
+        if seen and entry.ok and entry.refused is None and source == "typed":
+            # what the virtual meter showed when the group typed it: the fact it is judged by
+            entry = replace(entry, meter=tuple(sorted(set(seen))))
         if key in ANSWERED_FIRST and entry.ok and entry.refused is None and entry.text.strip():
             # the run it is given on: judged against another, it is said to be judged again
             run = self.response_run()
@@ -689,6 +699,25 @@ class Session:
             self._run_version += 1  # the runs' applied voltage follows the table when read
         self._changed()
         return entry
+
+    def note_meter(
+        self, step_id: str, requested: float | None, held: float, reading: MeterReading
+    ) -> None:
+        """What the virtual multimeter shows now, while step ``step_id`` is shown, the request
+        ``requested`` V (None: none, or the square wave) standing for ``held`` s: kept for the
+        step's reading fields it is a reading of (R on Task 2; u_ss and i_ss of the voltage
+        requested, once it has stood :data:`~minseg_tui.lab.content.meter.SETTLE_S`), so that
+        a value typed there is judged against what the meter showed (:meth:`enter`). Kept in
+        memory only; nothing is saved. On a real board it is never called: nothing changes."""
+        if step_id not in STEP_INDEX:
+            return
+        for fld in lab_steps.step(step_id).fields:
+            if fld.unit not in lab_meter.DISPLAYS:
+                continue
+            if fld.level is not None and (requested != fld.level or held < lab_meter.SETTLE_S):
+                continue
+            seen = (*self._meter_seen.get(fld.key, ()), lab_meter.shown(fld.unit, reading))
+            self._meter_seen[fld.key] = seen[-lab_meter.KEPT :]
 
     def withdraw_refused(self, key: str) -> bool:
         """Escape in field ``key``: the refused text shown there is dropped (the group took
@@ -736,6 +765,17 @@ class Session:
                 if isinstance(answer, Formula) and not FIELDS[chk.key].names:
                     answer = answer.value({})
                 out.append(answers.check_answer(chk, answer, values))
+            out += self._meter_verdicts(lab_steps.step(sid))
+        return out
+
+    def _meter_verdicts(self, st: Step) -> list[Feedback]:
+        """The readings of step ``st`` typed while the virtual multimeter was shown, each judged
+        against what it showed (:attr:`Entry.meter`); none on a real board."""
+        out = []
+        for fld in st.fields:
+            e = self._entries.get(fld.key)
+            if e is not None and e.meter and e.ok and isinstance(e.value, float):
+                out.append(lab_meter.judge(fld, e.value, e.text, e.meter))
         return out
 
     def step_status(self, step_id: str) -> str:
@@ -747,7 +787,9 @@ class Session:
         entry stored with a warning the program itself gives, e.g. a u_ss above the requested
         voltage, which the driver cannot give, or a value right the group's way that rests on
         one of theirs marked wrong, Task 14's model with their wrong T: not done until the
-        group looks again; a wrong answer stays ``wrong``), ``started`` also for a step of
+        group looks again; a wrong answer stays ``wrong``; a reading of Tasks 2, 4 and 5 that
+        is not what the virtual multimeter showed makes its step ``wrong`` at once, the
+        others not yet typed), ``started`` also for a step of
         Tasks 11-15 with one of its own values given and another not (Task 11's K),
         ``unjudged`` (a step of the
         group's own values, Tasks 6-9 and 11-15, answered, one of them stored but not judged
@@ -768,6 +810,8 @@ class Session:
             return "started" if any(k in got for k in st.done_when) else "todo"
         if not st.fields:
             return "info"
+        if any(fb.status == "wrong" for fb in self._meter_verdicts(st)):
+            return "wrong"  # a reading not what the virtual meter showed: said at once
         answered = bool(required) and all(
             self._entries.get(f.key) is not None and self._entries[f.key].ok for f in required
         )
