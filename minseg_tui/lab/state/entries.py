@@ -309,14 +309,18 @@ def revise(old: Entry | None, read: Entry, source: str, at: str) -> Entry:
     )
 
 
-HAND_EDITED = (
-    "session.json holds a value here that its text does not read as (edited by hand, or saved "
-    "by an older minseg-tui that read the text otherwise)"
-)
-"""How :func:`check_stored`'s line begins: an entry this program would not have written.
-Both causes are named: a reading rule changed since (own.f typed bare as "0.00186" was read
-in N m s/rad, and is now refused as ambiguous in its mN m s/rad field) gives
-the same disagreement as a hand edit, and the line must be true of either."""
+NOT_AS_READ_WHY = "edited by hand, or saved by an older minseg-tui that read the text otherwise"
+"""Why session.json can hold an entry whose value its text does not read as: both causes are
+named, since a reading rule changed since (own.f typed bare as "0.00186" was read in N m s/rad,
+and is now refused as ambiguous in its mN m s/rad field) gives the same disagreement as a hand
+edit, and every line saying it must be true of either."""
+
+HAND_EDITED = f"session.json holds a value here that its text does not read as ({NOT_AS_READ_WHY})"
+"""How :func:`check_stored`'s line begins: an entry this program would not have written."""
+
+NOT_AS_READ = f"an entry whose value in session.json its text does not read as ({NOT_AS_READ_WHY})"
+"""Such an entry named in a list (the class view's legend of what it marks '!'), in the same
+words as :data:`HAND_EDITED`."""
 
 NOT_JUDGED_UNTIL_TYPED = "it counts for nothing until the field is typed again"
 """How :func:`check_stored`'s line ends: what becomes of the entry."""
@@ -385,6 +389,9 @@ def parsed_values(entries: Mapping[str, Entry]) -> dict[str, object]:
 
 
 __all__ = [
+    "HAND_EDITED",
+    "NOT_AS_READ",
+    "NOT_AS_READ_WHY",
     "Entry",
     "check_stored",
     "parse_choice",
