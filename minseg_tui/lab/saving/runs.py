@@ -42,6 +42,7 @@ import numpy as np
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.u_ss_says import u_ss_words
+from minseg_tui.lab.saving.csvread import metadata_key
 from minseg_tui.lab.saving.files import read_run_log, write_run_log
 from minseg_tui.lab.saving.schema import PARTIAL_HEADER
 from minseg_tui.lab.saving.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
@@ -614,6 +615,70 @@ def pasted_path(text: str) -> Path:
 
 _BOM = b"\xef\xbb\xbf"
 
+IMPORTED_FROM = "imported_from"
+"""The metadata key of an imported run's copy that names the file it was imported from."""
+
+EARLIER_FROM = "earlier_imported_from"
+"""What a log's own ``# imported_from:`` line is renamed to in its copy (a run imported once
+more, from another session's runs/, say): the copy's ``imported_from`` names this import,
+and the older source is kept as such, under this name."""
+
+_PREAMBLE_MOST = 1 << 20
+"""Most bytes of the lines before a log's header held back to look for its own
+``# imported_from:`` line (a line longer than this is no metadata line anyone wrote)."""
+
+
+def _line_text(line: bytes) -> str:
+    return line.decode("utf-8", "replace").strip()
+
+
+def _renamed(line: bytes) -> bytes:
+    """``line`` with a log's own ``# imported_from:`` key renamed :data:`EARLIER_FROM` (as
+    :func:`~minseg_tui.lab.saving.csvread.metadata_key` reads the key); any other line as it
+    is."""
+    if metadata_key(_line_text(line)) != IMPORTED_FROM:
+        return line
+    at = line.index(IMPORTED_FROM.encode())  # the key: only '#' and spaces stand before it
+    return line[:at] + EARLIER_FROM.encode() + line[at + len(IMPORTED_FROM) :]
+
+
+class _Preamble:
+    """The bytes of a log as its copy is written: until the header row (the first line that
+    is neither blank nor a comment), each line with a log's own ``# imported_from:`` renamed
+    :data:`EARLIER_FROM`; from there on, the bytes as they are."""
+
+    def __init__(self) -> None:
+        self.open = True
+        self._held = b""
+
+    def feed(self, chunk: bytes) -> bytes:
+        """What of ``chunk`` (and what was held back before it) goes into the copy now."""
+        if not self.open:
+            return chunk
+        data, start, out = self._held + chunk, 0, []
+        while self.open:
+            nl = data.find(b"\n", start)
+            if nl < 0:
+                break
+            line = data[start : nl + 1]
+            text = _line_text(line)
+            if text and not text.startswith("#"):
+                self.open = False  # the header row: the rest as it is
+                break
+            out.append(_renamed(line))
+            start = nl + 1
+        self._held = data[start:]
+        if not self.open or len(self._held) > _PREAMBLE_MOST:
+            self.open = False
+            out.append(self._held)
+            self._held = b""
+        return b"".join(out)
+
+    def end(self) -> bytes:
+        """What is still held back at the end of the log (a last line without a newline)."""
+        held, self._held = self._held, b""
+        return _renamed(held) if self.open else held
+
 
 def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
     """Copy the run log at ``path`` (checked by read_run_log; InputError with file and line
@@ -622,14 +687,18 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
 
     The copy is the very bytes read and checked, as they are read (s38 attack: a 227 MB log
     read in 39 s was then formatted and written again: 44 s more, 2.7 GB at the peak), after one
-    ``# imported_from:`` line (a BOM at its start is left out: it would stand mid-file); it
-    is written to a temporary file and renamed into place, as the session's files are."""
+    ``# imported_from:`` line naming ``path`` (a BOM at its start is left out: it would stand
+    mid-file; a log's own ``# imported_from:`` line before its header, a copy of a run
+    imported before, is kept renamed :data:`EARLIER_FROM`, so that the copy names where this
+    import came from); it is written to a temporary file and renamed into place, as the
+    session's files are. The run's SHA-256 is of the bytes written."""
     refuse_special(Path(path), "a run log file")
     file = f"{RUNS_DIR}/{name}.csv"
     target = folder / file
     tmp = target.with_name(f".{target.name}.{os.getpid()}.build")
     digest = hashlib.sha256()
     first = True
+    preamble = _Preamble()
 
     def put(data: bytes) -> None:
         view = memoryview(data)
@@ -642,7 +711,7 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
         if first and chunk.startswith(_BOM):
             chunk = chunk[len(_BOM) :]
         first = False
-        put(chunk)
+        put(preamble.feed(chunk))
 
     try:
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_CLOEXEC, 0o644)
@@ -651,8 +720,9 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
     try:
         try:
             source = " ".join(str(path).split())
-            put(f"# imported_from: {source}\n".encode("utf-8", "replace"))
+            put(f"# {IMPORTED_FROM}: {source}\n".encode("utf-8", "replace"))
             log = read_run_log(Path(path), tee=tee)
+            put(preamble.end())
             os.fsync(fd)
         finally:
             os.close(fd)
