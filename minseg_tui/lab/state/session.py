@@ -71,6 +71,7 @@ from minseg_tui.lab.saving.runs import (
     PARTIAL_SUFFIX,
     RESPONSE_KINDS,
     ChangedFile,
+    LogCache,
     RawRun,
     Recorder,
     RunInfo,
@@ -158,6 +159,9 @@ class _Cache:
         self.kept_lock = threading.Lock()
         """Held while a part is merged into :attr:`kept` (the results and the model check
         may be computed by two workers at once: neither part is lost)."""
+        self.logs = LogCache()
+        """The run logs read, each parsed once while its file stays as it was (an import's
+        copy held as the import read it)."""
 
 
 READ_ONLY = "this session was opened read-only"
@@ -1009,6 +1013,7 @@ class Session:
                 self.table_pairs(),
                 kept=kept,
                 R_missing=self._R_missing(),
+                logs=self._cache.logs,
             )
         key = (
             self.value("R"),
@@ -1036,6 +1041,7 @@ class Session:
             self.folder,
             self.table_pairs(),
             R_missing=self._R_missing(),
+            logs=self._cache.logs,
         )
 
     def _R_missing(self) -> str:
@@ -1064,7 +1070,7 @@ class Session:
         if cached is not None:
             return cached
         table = self.table_pairs()
-        result = check_run(self.folder, run, table)
+        result = check_run(self.folder, run, table, logs=self._cache.logs)
         self._cache.checks = {key: result}
         self._note_kept(run, table, check=result)
         return result
@@ -1293,7 +1299,7 @@ class Session:
         an unknown run, InputError if its file is damaged."""
         for r in self._runs:
             if r.name == name:
-                return read_run(self.folder, r, self.table_pairs())
+                return read_run(self.folder, r, self.table_pairs(), logs=self._cache.logs)
         raise KeyError(name)
 
     def run_changed(self, name: str) -> ChangedFile | None:
@@ -1597,6 +1603,7 @@ class Session:
             path=pasted_path(str(path)),
             name=self._new_name("imported"),
             started=self._clock().isoformat(timespec="seconds"),
+            logs=self._cache.logs,
         )
 
     def add_import(self, order: ImportOrder, got: RunInfo | OSError) -> RunInfo:
@@ -1611,6 +1618,7 @@ class Session:
                 f"cannot copy the log here ({os_reason(got)})",
             )
         if order.folder != self.folder or any(r.name == got.name for r in self._runs):
+            self._cache.logs.drop(order.folder / got.file)
             raise SessionNotWritable(  # moved, or the name taken, while the copy was made
                 str(self.folder / RUNS_DIR), None, "the session changed while the log was read"
             )
@@ -1625,12 +1633,14 @@ class Session:
 @dataclass(frozen=True)
 class ImportOrder:
     """A run log to copy into a session: from ``path`` into ``folder``/runs as run ``name``,
-    begun at ``started`` (ISO 8601)."""
+    begun at ``started`` (ISO 8601); ``logs``: the session's logs read, given the copy's as
+    the import read it."""
 
     folder: Path
     path: Path
     name: str
     started: str
+    logs: LogCache | None = None
 
 
 def copy_import(order: ImportOrder) -> RunInfo | OSError:
@@ -1639,7 +1649,7 @@ def copy_import(order: ImportOrder) -> RunInfo | OSError:
     is refused; the OSError when the copy cannot be written, for :meth:`Session.add_import`
     to say."""
     try:
-        return import_log(order.folder, order.path, order.name, order.started)
+        return import_log(order.folder, order.path, order.name, order.started, order.logs)
     except OSError as exc:
         return exc
 

@@ -1629,7 +1629,9 @@ class LabScreen(StatusScreen):
             if arrived:
                 raise
         if not arrived and isinstance(got, RunInfo):  # the screen or app gone: no run of
-            with contextlib.suppress(OSError):  # a session, so no file in its runs/
+            if order.logs is not None:  # a session, so no file in its runs/, nor its log held
+                order.logs.drop(order.folder / got.file)
+            with contextlib.suppress(OSError):
                 (order.folder / got.file).unlink()
 
     def _imported(
