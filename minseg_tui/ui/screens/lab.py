@@ -20,7 +20,7 @@ from typing import Literal, TypeVar
 
 from textual import events, on, work
 from textual.actions import SkipAction
-from textual.app import ComposeResult
+from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Horizontal, Vertical
@@ -927,6 +927,17 @@ class NoMatch(Provider):
         )
 
 
+def _not_taken(order: ImportOrder, got: RunInfo | OSError | MinsegError) -> None:
+    """The copy made for ``order`` that no session took (its screen or the app gone): removed
+    from runs/, and its log no longer held."""
+    if not isinstance(got, RunInfo):
+        return
+    if order.logs is not None:
+        order.logs.drop(order.folder / got.file)
+    with contextlib.suppress(OSError):
+        (order.folder / got.file).unlink()
+
+
 class LabScreen(StatusScreen):
     """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves.
 
@@ -1602,37 +1613,44 @@ class LabScreen(StatusScreen):
             return
         self._importing = event.path
         event.reply(f"reading {event.path} ...")
-        self._copy(order, event.path, event.reply, self._shown)
+        self._copy(self.app, order, event.path, event.reply, self._shown)
 
     @work(thread=True, group="import", name="import a run log")
     def _copy(
-        self, order: ImportOrder, path: str, reply: Callable[[str], None], shown: str | None
+        self,
+        app: App[object],
+        order: ImportOrder,
+        path: str,
+        reply: Callable[[str], None],
+        shown: str | None,
     ) -> None:
         """Worker: read, check and copy the log of ``order`` (no session touched), then hand
-        what became of it to :meth:`_imported`."""
+        what became of it to :meth:`_imported`, on the UI thread, where the screen is known
+        to be there or not: a copy that arrives after the lab screen closed (the app running
+        on) or the app stopped is a run of no session, and is removed, nothing said. ``app``:
+        the app, as the UI thread had it (a screen closed meanwhile no longer finds it)."""
         got: RunInfo | OSError | MinsegError
         try:
             got = copy_import(order)
         except MinsegError as exc:
             got = exc
-        arrived = False
+        settled = False
 
         def deliver() -> None:
-            nonlocal arrived
-            arrived = True
-            self._imported(order, got, path, reply, shown)
+            nonlocal settled
+            settled = True
+            if self.is_attached:
+                self._imported(order, got, path, reply, shown)
+            else:  # the screen closed while the log was read: not said on another screen
+                _not_taken(order, got)
 
         try:
-            if not get_current_worker().is_cancelled:
-                self.app.call_from_thread(deliver)
+            app.call_from_thread(deliver)
         except RuntimeError:  # the app gone meanwhile
-            if arrived:
+            if settled:
                 raise
-        if not arrived and isinstance(got, RunInfo):  # the screen or app gone: no run of
-            if order.logs is not None:  # a session, so no file in its runs/, nor its log held
-                order.logs.drop(order.folder / got.file)
-            with contextlib.suppress(OSError):
-                (order.folder / got.file).unlink()
+        if not settled:
+            _not_taken(order, got)
 
     def _imported(
         self,
