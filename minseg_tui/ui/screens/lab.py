@@ -25,6 +25,7 @@ from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
+from textual.css.scalar import Scalar
 from textual.geometry import Region
 from textual.reactive import reactive
 from textual.screen import Screen
@@ -1104,6 +1105,15 @@ class LabScreen(StatusScreen):
         if low != self.has_class("-notices-top"):
             self.set_class(low, "-notices-top")
             return  # the notices move: looked at again once laid out there
+        # a notice never taller than the rows between the status line (or, on top, the
+        # step's title) and the footer: one of 27 rows at 80x24 rose over the status line
+        # at the bottom, its title and first rows out of the screen, and on top it ran
+        # under the footer; cut, it shows its beginning, the title with it
+        top = rack.styles.margin.top if rack is not None and low else 0
+        room = max(self.size.height - 2 - top, 3)
+        for toast in self._toasts():
+            if toast.styles.max_height != Scalar.from_number(room):
+                toast.styles.max_height = room
         toasts = [t.region for t in self._toasts()]
         if len(toasts) == self._crowded:
             return  # the oldest is on its way out
