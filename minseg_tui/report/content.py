@@ -274,6 +274,17 @@ def _table_section(session: Session) -> Section:
     )
     if any(r.window for r in session.table()):
         sec.blocks.append(CAPTURE_CLOCK)
+    misread = [
+        f"✗ {lab_steps.FIELDS[fb.key].label}: {fb.for_grader}"
+        for st in ("task2", "task4", "task5")
+        for fb in session.feedback(st)
+        if fb.status == "wrong" and fb.key in lab_steps.FIELDS
+    ]
+    if misread:  # the virtual MinSeg's meter was read by the program too: a slip is known
+        sec.blocks.append(
+            "Readings that are not what the virtual multimeter showed while the group was on "
+            "their step: " + "; ".join(misread) + "."
+        )
     if res.identification is not None:
         sec.blocks.append("The motor constants, the group's own value first:")
         sec.blocks.append(

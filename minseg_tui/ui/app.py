@@ -566,6 +566,7 @@ class LabApp(App[None]):
         worker = get_current_worker()
         next_meter = 0.0
         u_req: float | None = 0.0
+        since = time.monotonic()  # when the request u_req began
         while not worker.is_cancelled and not self._stop.wait(STREAM_PERIOD):
             batch = device.samples()
             events = device.events()
@@ -591,6 +592,7 @@ class LabApp(App[None]):
                 self.post_message(SamplesArrived(replace(device.stats), self.live.total))
             if device.u_req != u_req:
                 u_req = device.u_req
+                since = time.monotonic()
                 self.post_message(MotorKnown(u_req))
             for ev in events:
                 self.post_message(LinkEventArrived(ev))
@@ -603,7 +605,7 @@ class LabApp(App[None]):
                     reading = device.meter()
                 except MinsegError:
                     reading = None
-                self.post_message(MeterRead(reading))
+                self.post_message(MeterRead(reading, u_req, now - since))
 
     @on(SamplesArrived)
     def _samples(self, event: SamplesArrived) -> None:
@@ -633,7 +635,14 @@ class LabApp(App[None]):
 
     @on(MeterRead)
     def _meter_read(self, event: MeterRead) -> None:
+        """Show the virtual multimeter's reading, and have the session note it for the step
+        shown: a reading typed there is judged against what the meter showed."""
         self.meter = event.reading
+        if event.reading is None or self.session is None or not self._meter_wanted:
+            return
+        with self.session as s:
+            if not s.readonly:
+                s.note_meter(self._step_id, event.requested, event.held, event.reading)
 
     @on(MotorKnown)
     def _motor_known(self, event: MotorKnown) -> None:

@@ -57,9 +57,12 @@ class LinkEventArrived(Message):
 
 @dataclass
 class MeterRead(Message):
-    """The virtual multimeter now (None: it did not answer)."""
+    """The virtual multimeter now (None: it did not answer), read while the board was asked
+    for ``requested`` V (None: no steady request, a square wave) and had been for ``held`` s."""
 
     reading: MeterReading | None
+    requested: float | None = None
+    held: float = 0.0
 
     def can_replace(self, message: Message) -> bool:
         return isinstance(message, MeterRead)

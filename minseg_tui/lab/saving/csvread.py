@@ -54,6 +54,15 @@ _NUMBER_FIELD_BYTES = b"0123456789.eE+-\n,"
 _INTEGER_BYTES = b"0123456789+-\n"
 _NOT_SEPARATORS = bytes(b for b in range(256) if b not in b",\n")
 _META = re.compile(r"^#\s*([A-Za-z_][\w.-]*)\s*[:=]\s*(.*?)\s*$")
+
+
+def metadata_key(line: str) -> str | None:
+    """The key of a ``# key: value`` line as :func:`read_csv` takes it before the header
+    (``line`` stripped or not), else None."""
+    m = _META.match(line.strip())
+    return m.group(1) if m else None
+
+
 _CHUNK = 1 << 20
 
 

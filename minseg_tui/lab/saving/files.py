@@ -294,24 +294,32 @@ def read_run_log(
         t=t, u=u, omega=omega, extra=extra, metadata=f.metadata, source=f.source, lines=lines
     )
     if require_step:
-        cmd, name = command(log)
-        edges = find_edges(cmd)
-        if not edges:
-            lo, hi = float(np.min(cmd)), float(np.max(cmd))
-            raise InputError(
-                f.source,
-                int(lines[0]),
-                f"expected a step in {name} (V) from here on; it stays between {lo:g} and {hi:g} V "
-                f"up to line {lines[-1]}",
-            )
-        if name != "u" and not np.any(u):
-            raise InputError(
-                f.source,
-                int(lines[edges[0].start]),
-                "expected u (V, the voltage on the motor) to follow the steps of u_req, the "
-                "first here; it is 0 V on every row (was u left unrecorded?)",
-            )
+        check_step(log)
     return log
+
+
+def check_step(log: RunLog) -> None:
+    """What :func:`read_run_log` refuses with ``require_step`` in a log it read (InputError
+    naming file and line): a command (u_req, else u) that never steps, or u 0 V on every row
+    while u_req steps."""
+    cmd, name = command(log)
+    edges = find_edges(cmd)
+    line = log.line_of
+    if not edges:
+        lo, hi = float(np.min(cmd)), float(np.max(cmd))
+        raise InputError(
+            log.source,
+            line(0),
+            f"expected a step in {name} (V) from here on; it stays between {lo:g} and {hi:g} V "
+            f"up to line {line(len(log) - 1)}",
+        )
+    if name != "u" and not np.any(log.u):
+        raise InputError(
+            log.source,
+            line(edges[0].start),
+            "expected u (V, the voltage on the motor) to follow the steps of u_req, the "
+            "first here; it is 0 V on every row (was u left unrecorded?)",
+        )
 
 
 def _format_column(values: NDArray[Any]) -> list[str]:

@@ -30,10 +30,12 @@ import hashlib
 import json
 import os
 import stat
+import threading
 import time
 from array import array
+from collections import OrderedDict
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -42,7 +44,8 @@ import numpy as np
 from minseg_tui.device.samples import SampleBatch
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.u_ss_says import u_ss_words
-from minseg_tui.lab.saving.files import read_run_log, write_run_log
+from minseg_tui.lab.saving.csvread import metadata_key
+from minseg_tui.lab.saving.files import check_step, read_run_log, write_run_log
 from minseg_tui.lab.saving.schema import PARTIAL_HEADER
 from minseg_tui.lab.saving.store import RUNS_DIR, atomic_write_bytes, fsync_dir, read_regular
 from minseg_tui.model.identify import u_ss_at
@@ -536,17 +539,96 @@ def refuse_special(path: Path, expected: str) -> None:
         raise InputError(str(path), None, f"expected {expected}; this is {what}, not read")
 
 
+LOGS_HELD = 512 * 2**20
+"""Most bytes of run logs (their columns as read) a :class:`LogCache` holds."""
+
+
+def _identity(path: Path) -> tuple[int, ...] | None:
+    """The identity of the file at ``path`` as it stands (device, inode, size, change
+    times), None when it cannot be looked at."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return (st.st_dev, st.st_ino, st.st_size, st.st_mtime_ns, st.st_ctime_ns)
+
+
+def _held_bytes(log: RunLog) -> int:
+    """What ``log``'s columns (and lines) take in memory, bytes."""
+    arrays = [log.t, log.u, log.omega, *log.extra.values()]
+    if log.lines is not None:
+        arrays.append(log.lines)
+    return sum(int(np.asarray(a).nbytes) for a in arrays)
+
+
+class LogCache:
+    """Run logs as read from their files, by path, each under the file's identity as it was
+    read (a file changed since is read again): a log is parsed once while it stays
+    unchanged, not at every view, check and figure that reads it (an import of 1.9 million
+    rows was parsed again by the model check, and its view a third time). The newest logs
+    up to :data:`LOGS_HELD` bytes are held, the newest always. Threads may share it."""
+
+    def __init__(self, most: int = LOGS_HELD) -> None:
+        self.most = most
+        self._lock = threading.Lock()
+        self._logs: OrderedDict[str, tuple[tuple[int, ...], RunLog, int]] = OrderedDict()
+
+    def read(self, path: Path) -> RunLog:
+        """The log in the file at ``path``, parsed by :func:`read_run_log` (no step asked:
+        :func:`~minseg_tui.lab.saving.files.check_step` says that) unless it is held
+        unchanged. InputError as read_run_log says it."""
+        ident = _identity(path)
+        with self._lock:
+            got = self._logs.get(str(path))
+            if got is not None and ident is not None and got[0] == ident:
+                self._logs.move_to_end(str(path))
+                return got[1]
+        log = read_run_log(path, require_step=False)
+        if ident is not None and _identity(path) == ident:  # unchanged while it was read
+            self.hold(path, log, ident)
+        return log
+
+    def drop(self, path: Path) -> None:
+        """Hold nothing for the file at ``path`` any more (an import's copy removed)."""
+        with self._lock:
+            self._logs.pop(str(path), None)
+
+    def hold(self, path: Path, log: RunLog, ident: tuple[int, ...] | None = None) -> None:
+        """Hold ``log`` as what the file at ``path`` reads as while it has the identity
+        ``ident`` (default: as it stands now)."""
+        ident = ident if ident is not None else _identity(path)
+        if ident is None:
+            return
+        size = _held_bytes(log)
+        with self._lock:
+            self._logs[str(path)] = (ident, log, size)
+            self._logs.move_to_end(str(path))
+            total = sum(v[2] for v in self._logs.values())
+            while total > self.most and len(self._logs) > 1:
+                total -= self._logs.popitem(last=False)[1][2]
+
+
 def read_run(
-    folder: Path, run: RunInfo, table: Sequence[tuple[float, float]], require_step: bool = False
+    folder: Path,
+    run: RunInfo,
+    table: Sequence[tuple[float, float]],
+    require_step: bool = False,
+    logs: LogCache | None = None,
 ) -> RunLog:
     """Run ``run`` of the session in ``folder`` read back, its u column the applied voltage
     from ``table`` for a recorded run (:func:`applied_log`), as it stands for an imported
     one. InputError (file and line) when its file is damaged (or, with ``require_step``,
     holds no step); at once, without a read, when it is not a regular file (a FIFO put in
-    its place waited 10 s at every read: s37 attack)."""
+    its place waited 10 s at every read: s37 attack). ``logs``: where a log read before is
+    held (the session's), so that an unchanged file is not parsed again."""
     path = folder / run.file
     refuse_special(path, "the run's log file")
-    log = read_run_log(path, require_step=require_step)
+    if logs is None:
+        log = read_run_log(path, require_step=require_step)
+    else:
+        log = logs.read(path)
+        if require_step:
+            check_step(log)
     return log if run.kind == "imported" else applied_log(log, table)
 
 
@@ -614,22 +696,94 @@ def pasted_path(text: str) -> Path:
 
 _BOM = b"\xef\xbb\xbf"
 
+IMPORTED_FROM = "imported_from"
+"""The metadata key of an imported run's copy that names the file it was imported from."""
 
-def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
+EARLIER_FROM = "earlier_imported_from"
+"""What a log's own ``# imported_from:`` line is renamed to in its copy (a run imported once
+more, from another session's runs/, say): the copy's ``imported_from`` names this import,
+and the older source is kept as such, under this name."""
+
+_PREAMBLE_MOST = 1 << 20
+"""Most bytes of the lines before a log's header held back to look for its own
+``# imported_from:`` line (a line longer than this is no metadata line anyone wrote)."""
+
+
+def _line_text(line: bytes) -> str:
+    return line.decode("utf-8", "replace").strip()
+
+
+def _renamed(line: bytes) -> bytes:
+    """``line`` with a log's own ``# imported_from:`` key renamed :data:`EARLIER_FROM` (as
+    :func:`~minseg_tui.lab.saving.csvread.metadata_key` reads the key); any other line as it
+    is."""
+    if metadata_key(_line_text(line)) != IMPORTED_FROM:
+        return line
+    at = line.index(IMPORTED_FROM.encode())  # the key: only '#' and spaces stand before it
+    return line[:at] + EARLIER_FROM.encode() + line[at + len(IMPORTED_FROM) :]
+
+
+class _Preamble:
+    """The bytes of a log as its copy is written: until the header row (the first line that
+    is neither blank nor a comment), each line with a log's own ``# imported_from:`` renamed
+    :data:`EARLIER_FROM`; from there on, the bytes as they are."""
+
+    def __init__(self) -> None:
+        self.open = True
+        self._held = b""
+
+    def feed(self, chunk: bytes) -> bytes:
+        """What of ``chunk`` (and what was held back before it) goes into the copy now."""
+        if not self.open:
+            return chunk
+        data, start, out = self._held + chunk, 0, []
+        while self.open:
+            nl = data.find(b"\n", start)
+            if nl < 0:
+                break
+            line = data[start : nl + 1]
+            text = _line_text(line)
+            if text and not text.startswith("#"):
+                self.open = False  # the header row: the rest as it is
+                break
+            out.append(_renamed(line))
+            start = nl + 1
+        self._held = data[start:]
+        if not self.open or len(self._held) > _PREAMBLE_MOST:
+            self.open = False
+            out.append(self._held)
+            self._held = b""
+        return b"".join(out)
+
+    def end(self) -> bytes:
+        """What is still held back at the end of the log (a last line without a newline)."""
+        held, self._held = self._held, b""
+        return _renamed(held) if self.open else held
+
+
+def import_log(
+    folder: Path, path: Path, name: str, started: str, logs: LogCache | None = None
+) -> RunInfo:
     """Copy the run log at ``path`` (checked by read_run_log; InputError with file and line
     if it is not one; at once for a FIFO or a device) into ``folder/runs/<name>.csv``; its
     record. OSError when the copy cannot be written (nothing is left behind).
 
     The copy is the very bytes read and checked, as they are read (s38 attack: a 227 MB log
     read in 39 s was then formatted and written again: 44 s more, 2.7 GB at the peak), after one
-    ``# imported_from:`` line (a BOM at its start is left out: it would stand mid-file); it
-    is written to a temporary file and renamed into place, as the session's files are."""
+    ``# imported_from:`` line naming ``path`` (a BOM at its start is left out: it would stand
+    mid-file; a log's own ``# imported_from:`` line before its header, a copy of a run
+    imported before, is kept renamed :data:`EARLIER_FROM`, so that the copy names where this
+    import came from); it is written to a temporary file and renamed into place, as the
+    session's files are. The run's SHA-256 is of the bytes written. ``logs``: given the log
+    as its copy reads (the same columns, its lines one further on, the metadata naming this
+    import), so that what reads the run next does not parse it again."""
     refuse_special(Path(path), "a run log file")
     file = f"{RUNS_DIR}/{name}.csv"
     target = folder / file
     tmp = target.with_name(f".{target.name}.{os.getpid()}.build")
     digest = hashlib.sha256()
     first = True
+    preamble = _Preamble()
 
     def put(data: bytes) -> None:
         view = memoryview(data)
@@ -642,7 +796,7 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
         if first and chunk.startswith(_BOM):
             chunk = chunk[len(_BOM) :]
         first = False
-        put(chunk)
+        put(preamble.feed(chunk))
 
     try:
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC | os.O_CLOEXEC, 0o644)
@@ -651,8 +805,9 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
     try:
         try:
             source = " ".join(str(path).split())
-            put(f"# imported_from: {source}\n".encode("utf-8", "replace"))
+            put(f"# {IMPORTED_FROM}: {source}\n".encode("utf-8", "replace"))
             log = read_run_log(Path(path), tee=tee)
+            put(preamble.end())
             os.fsync(fd)
         finally:
             os.close(fd)
@@ -662,6 +817,9 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
             os.unlink(tmp)
         raise
     fsync_dir(target.parent)
+    written = source.encode("utf-8", "replace").decode("utf-8")  # as the copy's line reads
+    if logs is not None and EARLIER_FROM not in log.metadata:
+        logs.hold(target, _as_copied(log, target, written))
     return RunInfo(
         name=name,
         file=file,
@@ -672,6 +830,17 @@ def import_log(folder: Path, path: Path, name: str, started: str) -> RunInfo:
         started=started,
         sha256=digest.hexdigest(),
     )
+
+
+def _as_copied(log: RunLog, target: Path, source: str) -> RunLog:
+    """``log``, read from the file imported, as its copy at ``target`` reads: the line naming
+    the import before the rest (every line one further on), its own ``# imported_from:``
+    renamed :data:`EARLIER_FROM` (:class:`_Preamble`)."""
+    meta = {IMPORTED_FROM: source}
+    for key, value in log.metadata.items():
+        meta[EARLIER_FROM if key == IMPORTED_FROM else key] = value
+    lines = log.lines + 1 if log.lines is not None else None
+    return replace(log, metadata=meta, source=str(target), lines=lines)
 
 
 # -- a run's file changed after it was written ------------------------------------------------

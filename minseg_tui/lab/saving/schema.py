@@ -331,6 +331,7 @@ ENTRY = Record(
         "history": ListOf(Pair((Text(), Text()))),
         "refused": OneOf((None, Pair((Text(), Text(), Text())))),
         "run": Text(),
+        "meter": ListOf(Number()),
     },
 )
 """One entry (:meth:`minseg_tui.lab.state.entries.Entry.to_json`)."""

@@ -41,7 +41,11 @@ class Entry:
     until the field is typed again; older: for an entry whose stored value is what an older
     minseg-tui read its text as, under a reading rule changed since (:data:`OLDER_READINGS`),
     the one line saying so; the entry stays in effect with that value, as the group saw it
-    judged. Neither is saved: the file keeps what it holds.
+    judged. Neither is saved: the file keeps what it holds. meter: for a
+    reading of Tasks 2, 4 and 5 typed on the virtual MinSeg, the values (SI, each once,
+    ascending) its multimeter showed for that field while the group was on its step (the
+    session's record, :meth:`~minseg_tui.lab.state.session.Session.note_meter`), which the
+    reading is judged against; () on a real board, or when the meter had shown nothing yet.
 
     A refused text never displaces an accepted one: the accepted entry stays in effect and
     carries the refused attempt in ``refused`` (text, message, at) until something is
@@ -62,6 +66,7 @@ class Entry:
     run: str = ""
     edited: str = ""
     older: str = ""
+    meter: tuple[float, ...] = ()
 
     @property
     def typed(self) -> str:
@@ -85,6 +90,8 @@ class Entry:
             out["refused"] = list(self.refused)
         if self.run:
             out["run"] = self.run
+        if self.meter:
+            out["meter"] = list(self.meter)
         return out
 
     @classmethod
@@ -111,6 +118,7 @@ class Entry:
             if d.get("refused")
             else None,
             run=str(d.get("run", "")),
+            meter=tuple(float(x) for x in d.get("meter", [])),
         )
 
 
@@ -328,14 +336,17 @@ def revise(old: Entry | None, read: Entry, source: str, at: str) -> Entry:
     )
 
 
-HAND_EDITED = (
-    "session.json holds a value here that its text does not read as (edited by hand, or saved "
-    "by an older minseg-tui that read the text otherwise)"
-)
-"""How :func:`check_stored`'s line begins: an entry this program would not have written.
-Both causes are named: a reading rule changed since that is not one of
-:data:`OLDER_READINGS` gives the same disagreement as a hand edit, and the line must be true
-of either."""
+NOT_AS_READ_WHY = "edited by hand, or saved by an older minseg-tui that read the text otherwise"
+"""Why session.json can hold an entry whose value its text does not read as: both causes are
+named, since a reading rule changed since that is not one of :data:`OLDER_READINGS` gives the same
+disagreement as a hand edit, and every line saying it must be true of either."""
+
+HAND_EDITED = f"session.json holds a value here that its text does not read as ({NOT_AS_READ_WHY})"
+"""How :func:`check_stored`'s line begins: an entry this program would not have written."""
+
+NOT_AS_READ = f"an entry whose value in session.json its text does not read as ({NOT_AS_READ_WHY})"
+"""Such an entry named in a list (the class view's legend of what it marks '!'), in the same
+words as :data:`HAND_EDITED`."""
 
 
 @dataclass(frozen=True)
@@ -508,7 +519,10 @@ def parsed_values(entries: Mapping[str, Entry]) -> dict[str, object]:
 
 
 __all__ = [
+    "HAND_EDITED",
     "MAX_TYPED",
+    "NOT_AS_READ",
+    "NOT_AS_READ_WHY",
     "OLDER_READINGS",
     "Entry",
     "OlderReading",

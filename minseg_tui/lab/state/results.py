@@ -20,7 +20,7 @@ from minseg_tui.lab.content import identify_says
 from minseg_tui.lab.content.log_says import log_refusal, refusal_words
 from minseg_tui.lab.content.u_ss_says import zero_volt_refusal
 from minseg_tui.lab.saving.kept import CheckFigures, ResponseFigures
-from minseg_tui.lab.saving.runs import RunInfo, read_run
+from minseg_tui.lab.saving.runs import LogCache, RunInfo, read_run
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import (
     U_TASK15,
@@ -268,6 +268,7 @@ def compute(
     u_ss_table: Sequence[tuple[float, float]] | None = None,
     kept: ResponseFigures | None = None,
     R_missing: str = "",
+    logs: LogCache | None = None,
 ) -> Results:
     """Tasks 6-15 from R (ohm), the table's complete rows and the run Tasks 11-15 use (its
     log read from ``folder``); every reason a result is missing becomes a problem line.
@@ -277,7 +278,8 @@ def compute(
     the mapping K divides by (default: the complete rows'), as the run's u column uses it.
     ``kept``: Tasks 11-13's numbers of ``run`` as the session file keeps them (computed
     from this very log and table, :func:`minseg_tui.lab.saving.kept.read`): the run is then
-    neither read nor fitted again, J follows from them and the table (``kept_response``)."""
+    neither read nor fitted again, J follows from them and the table (``kept_response``).
+    ``logs``: the logs read before (:func:`~minseg_tui.lab.saving.runs.read_run`)."""
     problems: list[str] = []
     if R is None:
         problems.append(R_missing or "R is not entered yet (Task 2)")
@@ -297,7 +299,7 @@ def compute(
     if run is not None and kept is None:
         try:
             table = [(r.u_req, r.u_ss) for r in complete_rows] if u_ss_table is None else u_ss_table
-            log = read_run(folder, run, table, require_step=True)
+            log = read_run(folder, run, table, require_step=True, logs=logs)
         except InputError as exc:
             problems.append(f"run {run.name} cannot be used: {exc}")
     read = run is not None and (log is not None or kept is not None)
@@ -352,14 +354,18 @@ def compute(
 
 
 def check_run(
-    folder: Path, run: RunInfo, u_ss_table: Sequence[tuple[float, float]] = ()
+    folder: Path,
+    run: RunInfo,
+    u_ss_table: Sequence[tuple[float, float]] = (),
+    logs: LogCache | None = None,
 ) -> ModelCheck:
     """The model check (:func:`minseg_tui.model.check.check`) of ``run``, read from ``folder``
     (its applied voltage mapped through ``u_ss_table``, the (u_req, u_ss) pairs in V), told
     the log's ``# cpr:`` and ``# omega_over:`` when its header says (a recorded run's
-    does); a run that cannot be read or checked gives the reason in one line."""
+    does); a run that cannot be read or checked gives the reason in one line. ``logs``: the
+    logs read before (:func:`~minseg_tui.lab.saving.runs.read_run`)."""
     try:
-        log = read_run(folder, run, u_ss_table, require_step=True)
+        log = read_run(folder, run, u_ss_table, require_step=True, logs=logs)
         result = check(
             log.t, log.u, log.omega, ts=run.ts, cpr=log.declared_cpr, omega_over=log.omega_over
         )

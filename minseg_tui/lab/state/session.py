@@ -50,6 +50,7 @@ from numpy.typing import ArrayLike
 
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content import answers
+from minseg_tui.lab.content import meter as lab_meter
 from minseg_tui.lab.content import steps as lab_steps
 from minseg_tui.lab.content.expr import Formula
 from minseg_tui.lab.content.identify_says import sentence, u_ss_not_entered
@@ -70,6 +71,7 @@ from minseg_tui.lab.saving.runs import (
     PARTIAL_SUFFIX,
     RESPONSE_KINDS,
     ChangedFile,
+    LogCache,
     RawRun,
     Recorder,
     RunInfo,
@@ -126,6 +128,7 @@ from minseg_tui.lab.state.results import (
 from minseg_tui.lab.state.shown import PolicyRecord, Shown
 from minseg_tui.lock import FileLock
 from minseg_tui.model.identify import Reading
+from minseg_tui.model.plant import MeterReading
 from minseg_tui.model.runlog import RunLog
 from minseg_tui.quantities import format_number, format_reading, shown_unit
 
@@ -163,6 +166,9 @@ class _Cache:
         self.kept_lock = threading.Lock()
         """Held while a part is merged into :attr:`kept` (the results and the model check
         may be computed by two workers at once: neither part is lost)."""
+        self.logs = LogCache()
+        """The run logs read, each parsed once while its file stays as it was (an import's
+        copy held as the import read it)."""
 
 
 READ_ONLY = "this session was opened read-only"
@@ -242,6 +248,10 @@ class Session:
         }
         self._runs: list[RunInfo] = [RunInfo.from_json(r) for r in data["runs"]]
         self._cache = _Cache()
+        self._meter_seen: dict[str, tuple[float, ...]] = {}
+        """What the virtual multimeter last showed for each reading field (SI, the newest
+        :data:`~minseg_tui.lab.content.meter.KEPT`), while this program runs: it is saved
+        with the entry typed (:attr:`Entry.meter`), never on its own."""
         self.frozen = False
         """A snapshot (:meth:`snapshot`): it reads as the session did, and changes nothing."""
         self._run_version = 0
@@ -680,6 +690,10 @@ class Session:
             return read
         entry = revise(old, read, source, self._clock().isoformat(timespec="seconds"))
         self._as_stored.pop(key, None)  # typed again: what the hand edit left is history
+        seen = self._meter_seen.get(key)
+        if seen and entry.ok and entry.refused is None and source == "typed":
+            # what the virtual meter showed when the group typed it: the fact it is judged by
+            entry = replace(entry, meter=tuple(sorted(set(seen))))
         if key in ANSWERED_FIRST and entry.ok and entry.refused is None and entry.text.strip():
             # the run it is given on: judged against another, it is said to be judged again
             run = self.response_run()
@@ -696,6 +710,25 @@ class Session:
             self._run_version += 1  # the runs' applied voltage follows the table when read
         self._changed()
         return entry
+
+    def note_meter(
+        self, step_id: str, requested: float | None, held: float, reading: MeterReading
+    ) -> None:
+        """What the virtual multimeter shows now, while step ``step_id`` is shown, the request
+        ``requested`` V (None: none, or the square wave) standing for ``held`` s: kept for the
+        step's reading fields it is a reading of (R on Task 2; u_ss and i_ss of the voltage
+        requested, once it has stood :data:`~minseg_tui.lab.content.meter.SETTLE_S`), so that
+        a value typed there is judged against what the meter showed (:meth:`enter`). Kept in
+        memory only; nothing is saved. On a real board it is never called: nothing changes."""
+        if step_id not in STEP_INDEX:
+            return
+        for fld in lab_steps.step(step_id).fields:
+            if fld.unit not in lab_meter.DISPLAYS:
+                continue
+            if fld.level is not None and (requested != fld.level or held < lab_meter.SETTLE_S):
+                continue
+            seen = (*self._meter_seen.get(fld.key, ()), lab_meter.shown(fld.unit, reading))
+            self._meter_seen[fld.key] = seen[-lab_meter.KEPT :]
 
     def withdraw_refused(self, key: str) -> bool:
         """Escape in field ``key``: the refused text shown there is dropped (the group took
@@ -743,6 +776,17 @@ class Session:
                 if isinstance(answer, Formula) and not FIELDS[chk.key].names:
                     answer = answer.value({})
                 out.append(answers.check_answer(chk, answer, values))
+            out += self._meter_verdicts(lab_steps.step(sid))
+        return out
+
+    def _meter_verdicts(self, st: Step) -> list[Feedback]:
+        """The readings of step ``st`` typed while the virtual multimeter was shown, each judged
+        against what it showed (:attr:`Entry.meter`); none on a real board."""
+        out = []
+        for fld in st.fields:
+            e = self._entries.get(fld.key)
+            if e is not None and e.meter and e.ok and isinstance(e.value, float):
+                out.append(lab_meter.judge(fld, e.value, e.text, e.meter))
         return out
 
     def step_status(self, step_id: str) -> str:
@@ -754,7 +798,9 @@ class Session:
         entry stored with a warning the program itself gives, e.g. a u_ss above the requested
         voltage, which the driver cannot give, or a value right the group's way that rests on
         one of theirs marked wrong, Task 14's model with their wrong T: not done until the
-        group looks again; a wrong answer stays ``wrong``), ``started`` also for a step of
+        group looks again; a wrong answer stays ``wrong``; a reading of Tasks 2, 4 and 5 that
+        is not what the virtual multimeter showed makes its step ``wrong`` at once, the
+        others not yet typed), ``started`` also for a step of
         Tasks 11-15 with one of its own values given and another not (Task 11's K),
         ``unjudged`` (a step of the
         group's own values, Tasks 6-9 and 11-15, answered, one of them stored but not judged
@@ -775,6 +821,8 @@ class Session:
             return "started" if any(k in got for k in st.done_when) else "todo"
         if not st.fields:
             return "info"
+        if any(fb.status == "wrong" for fb in self._meter_verdicts(st)):
+            return "wrong"  # a reading not what the virtual meter showed: said at once
         answered = bool(required) and all(
             self._entries.get(f.key) is not None and self._entries[f.key].ok for f in required
         )
@@ -972,6 +1020,7 @@ class Session:
                 self.table_pairs(),
                 kept=kept,
                 R_missing=self._R_missing(),
+                logs=self._cache.logs,
             )
         key = (
             self.value("R"),
@@ -999,6 +1048,7 @@ class Session:
             self.folder,
             self.table_pairs(),
             R_missing=self._R_missing(),
+            logs=self._cache.logs,
         )
 
     def _R_missing(self) -> str:
@@ -1027,7 +1077,7 @@ class Session:
         if cached is not None:
             return cached
         table = self.table_pairs()
-        result = check_run(self.folder, run, table)
+        result = check_run(self.folder, run, table, logs=self._cache.logs)
         self._cache.checks = {key: result}
         self._note_kept(run, table, check=result)
         return result
@@ -1256,7 +1306,7 @@ class Session:
         an unknown run, InputError if its file is damaged."""
         for r in self._runs:
             if r.name == name:
-                return read_run(self.folder, r, self.table_pairs())
+                return read_run(self.folder, r, self.table_pairs(), logs=self._cache.logs)
         raise KeyError(name)
 
     def run_changed(self, name: str) -> ChangedFile | None:
@@ -1560,6 +1610,7 @@ class Session:
             path=pasted_path(str(path)),
             name=self._new_name("imported"),
             started=self._clock().isoformat(timespec="seconds"),
+            logs=self._cache.logs,
         )
 
     def add_import(self, order: ImportOrder, got: RunInfo | OSError) -> RunInfo:
@@ -1574,6 +1625,7 @@ class Session:
                 f"cannot copy the log here ({os_reason(got)})",
             )
         if order.folder != self.folder or any(r.name == got.name for r in self._runs):
+            self._cache.logs.drop(order.folder / got.file)
             raise SessionNotWritable(  # moved, or the name taken, while the copy was made
                 str(self.folder / RUNS_DIR), None, "the session changed while the log was read"
             )
@@ -1588,12 +1640,14 @@ class Session:
 @dataclass(frozen=True)
 class ImportOrder:
     """A run log to copy into a session: from ``path`` into ``folder``/runs as run ``name``,
-    begun at ``started`` (ISO 8601)."""
+    begun at ``started`` (ISO 8601); ``logs``: the session's logs read, given the copy's as
+    the import read it."""
 
     folder: Path
     path: Path
     name: str
     started: str
+    logs: LogCache | None = None
 
 
 def copy_import(order: ImportOrder) -> RunInfo | OSError:
@@ -1602,7 +1656,7 @@ def copy_import(order: ImportOrder) -> RunInfo | OSError:
     is refused; the OSError when the copy cannot be written, for :meth:`Session.add_import`
     to say."""
     try:
-        return import_log(order.folder, order.path, order.name, order.started)
+        return import_log(order.folder, order.path, order.name, order.started, order.logs)
     except OSError as exc:
         return exc
 

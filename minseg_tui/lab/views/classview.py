@@ -44,6 +44,7 @@ from minseg_tui.lab.saving.store import (
     names_key,
 )
 from minseg_tui.lab.state.compare import STEP_LEVEL, K_by_request
+from minseg_tui.lab.state.entries import NOT_AS_READ
 from minseg_tui.lab.state.results import Results
 from minseg_tui.lab.state.session import NO_RUN_YET, Session
 from minseg_tui.lab.views import own_first
@@ -167,9 +168,8 @@ OMEGA_MIN: float = 0.5
 """Below this the wheel hardly turns, rad/s."""
 
 MARKED: str = (
-    "a slip the lab manual warns about, a refused entry, an entry edited by hand in "
-    "session.json, a value far from the class, or two "
-    "sessions of the same names"
+    f"a slip the lab manual warns about, a refused entry, {NOT_AS_READ}, a value far from the "
+    "class, or two sessions of the same names"
 )
 """What the class view marks with '!' (a group's :attr:`Group.flags`), in words."""
 
@@ -458,7 +458,7 @@ def _field_label(key: str) -> str:
 def slip_list(session: Session) -> list[Slip]:
     """The slips the lab manual warns about in ``session``'s readings, each with the
     quantities that rest on the slipped reading; a refused entry is said too (it feeds
-    nothing), and so is an entry edited by hand in session.json
+    nothing), and so is an entry whose value in session.json its text does not read as
     (:func:`~minseg_tui.lab.state.entries.check_stored`)."""
     out = [
         Slip(f"{_field_label(e.key)}: {e.edited}.")

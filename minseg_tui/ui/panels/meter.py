@@ -5,13 +5,12 @@ from __future__ import annotations
 from textual.reactive import reactive
 from textual.widgets import Static
 
+from minseg_tui.lab.content.meter import DISPLAYS, shown, text
 from minseg_tui.model.plant import MeterReading
-from minseg_tui.quantities import format_fixed
 from minseg_tui.ui.device import DeviceInfo
 
-MODES: dict[str, str] = {"Ω": "on Ω", "V": "on V=", "mA": "on mA, jumper out"}
-"""The multimeter's setting for an entry of each unit (Tasks 2, 4 and 5, as their steps say):
-a meter shows the one quantity it is set to measure, the current only where the jumper is out."""
+MODES: dict[str, str] = {unit: d.mode for unit, d in DISPLAYS.items()}
+"""The multimeter's setting for an entry of each unit (:data:`~minseg_tui.lab.content.meter.DISPLAYS`)."""
 
 
 class MeterPanel(Static):
@@ -34,11 +33,6 @@ class MeterPanel(Static):
         head = "multimeter (virtual, M1A-M1B" + (f", {MODES[self.unit]}" if self.unit else "")
         if m is None:
             return f"{head}): reading…"
-        shown = {
-            "V": format_fixed(m.u_A, 2, "V"),
-            "mA": format_fixed(m.i * 1000, 1, "mA"),
-            "Ω": format_fixed(m.R, 1, "Ω"),
-        }
         if self.unit:
-            return f"{head}) · {shown[self.unit]}"
-        return f"{head}): " + " · ".join(shown.values())
+            return f"{head}) · {text(self.unit, shown(self.unit, m))}"
+        return f"{head}): " + " · ".join(text(u, shown(u, m)) for u in ("V", "mA", "Ω"))

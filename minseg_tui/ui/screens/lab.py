@@ -21,11 +21,12 @@ from typing import Literal, TypeVar
 
 from textual import events, on, work
 from textual.actions import SkipAction
-from textual.app import ComposeResult
+from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Horizontal, Vertical
 from textual.css.query import NoMatches
+from textual.css.scalar import Scalar
 from textual.geometry import Region
 from textual.reactive import reactive
 from textual.screen import Screen
@@ -928,6 +929,17 @@ class NoMatch(Provider):
         )
 
 
+def _not_taken(order: ImportOrder, got: RunInfo | OSError | MinsegError) -> None:
+    """The copy made for ``order`` that no session took (its screen or the app gone): removed
+    from runs/, and its log no longer held."""
+    if not isinstance(got, RunInfo):
+        return
+    if order.logs is not None:
+        order.logs.drop(order.folder / got.file)
+    with contextlib.suppress(OSError):
+        (order.folder / got.file).unlink()
+
+
 class LabScreen(StatusScreen):
     """Navigator + step pane. PgUp/PgDn or the list move between steps; every entry autosaves.
 
@@ -1099,6 +1111,15 @@ class LabScreen(StatusScreen):
         if low != self.has_class("-notices-top"):
             self.set_class(low, "-notices-top")
             return  # the notices move: looked at again once laid out there
+        # a notice never taller than the rows between the status line (or, on top, the
+        # step's title) and the footer: one of 27 rows at 80x24 rose over the status line
+        # at the bottom, its title and first rows out of the screen, and on top it ran
+        # under the footer; cut, it shows its beginning, the title with it
+        top = rack.styles.margin.top if rack is not None and low else 0
+        room = max(self.size.height - 2 - top, 3)
+        for toast in self._toasts():
+            if toast.styles.max_height != Scalar.from_number(room):
+                toast.styles.max_height = room
         toasts = [t.region for t in self._toasts()]
         if len(toasts) == self._crowded:
             return  # the oldest is on its way out
@@ -1628,35 +1649,44 @@ class LabScreen(StatusScreen):
             return
         self._importing = event.path
         event.reply(f"reading {event.path} ...")
-        self._copy(order, event.path, event.reply, self._shown)
+        self._copy(self.app, order, event.path, event.reply, self._shown)
 
     @work(thread=True, group="import", name="import a run log")
     def _copy(
-        self, order: ImportOrder, path: str, reply: Callable[[str], None], shown: str | None
+        self,
+        app: App[object],
+        order: ImportOrder,
+        path: str,
+        reply: Callable[[str], None],
+        shown: str | None,
     ) -> None:
         """Worker: read, check and copy the log of ``order`` (no session touched), then hand
-        what became of it to :meth:`_imported`."""
+        what became of it to :meth:`_imported`, on the UI thread, where the screen is known
+        to be there or not: a copy that arrives after the lab screen closed (the app running
+        on) or the app stopped is a run of no session, and is removed, nothing said. ``app``:
+        the app, as the UI thread had it (a screen closed meanwhile no longer finds it)."""
         got: RunInfo | OSError | MinsegError
         try:
             got = copy_import(order)
         except MinsegError as exc:
             got = exc
-        arrived = False
+        settled = False
 
         def deliver() -> None:
-            nonlocal arrived
-            arrived = True
-            self._imported(order, got, path, reply, shown)
+            nonlocal settled
+            settled = True
+            if self.is_attached:
+                self._imported(order, got, path, reply, shown)
+            else:  # the screen closed while the log was read: not said on another screen
+                _not_taken(order, got)
 
         try:
-            if not get_current_worker().is_cancelled:
-                self.app.call_from_thread(deliver)
+            app.call_from_thread(deliver)
         except RuntimeError:  # the app gone meanwhile
-            if arrived:
+            if settled:
                 raise
-        if not arrived and isinstance(got, RunInfo):  # the screen or app gone: no run of
-            with contextlib.suppress(OSError):  # a session, so no file in its runs/
-                (order.folder / got.file).unlink()
+        if not settled:
+            _not_taken(order, got)
 
     def _imported(
         self,
