@@ -13,7 +13,7 @@ from minseg_tui.lab.content.meter import SETTLE_S
 from minseg_tui.lab.state.session import Session
 from minseg_tui.ui.messages import MeterRead
 from tests.ui.fakes import QuietDevice
-from tests.ui.helpers import Heard, goto, nav_mark, settle, start, type_in
+from tests.ui.helpers import GUARD, Heard, goto, nav_mark, settle, start, type_in
 
 
 class Meter(Heard):
@@ -116,7 +116,13 @@ async def test_on_a_real_board_nothing_changes(quiet):
         await start(pilot)
         await goto(pilot, "task2")
         turns = device.reads
-        await settle(pilot, lambda: device.reads >= turns + 3)  # a virtual meter was read by now
+        for _ in range(GUARD):  # the stream worker turns on its own clock: wait for 3 turns
+            if device.reads >= turns + 3:  # a virtual meter would have been read by now
+                break
+            await pilot.pause(0.01)
+        else:
+            raise AssertionError("the stream worker never turned 3 times")
+        await settle(pilot)
         row = await type_in(pilot, "R", "3,5 ohms")
         assert "virtual multimeter" not in str(row.query_one(".field-msg").render())
         assert nav_mark(app, "task2") == "✓"
