@@ -983,6 +983,7 @@ from tests.model.physics_gen import (  # noqa: E402
     FRESH_SEEDS,
     HELD_OUT_SEEDS,
     TUNING2_SEEDS,
+    TUNING3_SEEDS,
     TUNING_SEEDS,
     make,
 )
@@ -1163,6 +1164,11 @@ def main() -> None:
         help="the second tuning range (physics_gen.TUNING2_SEEDS, 920000 on), to look at log by log",
     )
     ap.add_argument(
+        "--tuning3",
+        action="store_true",
+        help="the third tuning range (physics_gen.TUNING3_SEEDS, 930000 on), to look at log by log",
+    )
+    ap.add_argument(
         "--fresh",
         action="store_true",
         help="the fresh held-out seeds (physics_gen.FRESH_SEEDS): counts only, no --verbose",
@@ -1170,15 +1176,17 @@ def main() -> None:
     ap.add_argument("--only", choices=["pairs", "touches", "singles"])
     ap.add_argument("--verbose", action="store_true")
     a = ap.parse_args()
-    if a.fresh and (a.tuning or a.tuning2 or a.verbose):
-        ap.error("--fresh prints counts only: not with --tuning, --tuning2 or --verbose")
-    if a.tuning and a.tuning2:
-        ap.error("one range at a time: --tuning or --tuning2")
+    if a.fresh and (a.tuning or a.tuning2 or a.tuning3 or a.verbose):
+        ap.error("--fresh prints counts only: not with --tuning, --tuning2, --tuning3 or --verbose")
+    if a.tuning + a.tuning2 + a.tuning3 > 1:
+        ap.error("one range at a time: --tuning, --tuning2 or --tuning3")
     base = (
         TUNING_SEEDS.start
         if a.tuning
         else TUNING2_SEEDS.start
         if a.tuning2
+        else TUNING3_SEEDS.start
+        if a.tuning3
         else FRESH_SEEDS.start
         if a.fresh
         else HELD_OUT_SEEDS.start
@@ -1188,6 +1196,8 @@ def main() -> None:
         if a.tuning
         else "tuning2"
         if a.tuning2
+        else "tuning3"
+        if a.tuning3
         else "FRESH HELD-OUT"
         if a.fresh
         else "HELD-OUT"
