@@ -20,9 +20,11 @@ from minseg_tui.model.check.decide import (
     compare,
     effect,
     ranked,
+    raw_ratio,
     rivals,
     select,
     speed_range,
+    split,
     swapped,
     unsure,
 )
@@ -655,7 +657,14 @@ def _report(
         for c in CANDIDATES
         if c.claim is not None and c.cause in ext.causes and c.claim.rival not in ext.causes
     }
-    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full, alts)
+    splits = {
+        frozenset(f.causes): raw_ratio(head, f, sel.chosen)
+        for f, _ in alts
+        if split(head, f, sel.chosen)
+    }
+    finding = _finding(
+        sel, base, ext, order, log, samp, noise, level, miss, unjudged, full, alts, splits
+    )
     finding = _plain_words(finding, swaps)
 
     # anomalies, against the model the finding settles on
@@ -1008,6 +1017,7 @@ def _finding(
     unjudged: dict[str, Lacks],
     full: Problem,
     alts: list[tuple[Fit, float]] | None = None,
+    splits: dict[frozenset[str], float] | None = None,
 ) -> Finding:
     floor = samp.floor if samp.count_from is CountFrom.CPR else None
     taps = ext.effects.taps
@@ -1099,8 +1109,11 @@ def _finding(
     for f, ratio in alts or []:
         causes = list(f.causes)
         ambiguous.append(causes)
+        squared = (splits or {}).get(frozenset(causes), 0.0)
         compared: Compared = (
-            "whitened"
+            "split"
+            if squared > 0.0
+            else "whitened"
             if f.effects.taps == ext.effects.taps
             else "squared"
             if ratio >= 1.0
@@ -1115,7 +1128,7 @@ def _finding(
             Caveat(
                 "cannot_tell",
                 causes[0],
-                Untold(tuple(order), tuple(causes), ratio, compared, moves),
+                Untold(tuple(order), tuple(causes), ratio, compared, moves, squared),
             )
         )
     if ambiguous:
