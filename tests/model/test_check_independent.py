@@ -11,6 +11,7 @@ from typing import ClassVar
 import numpy as np
 import pytest
 
+from minseg_tui.lab.content.log_says import refusal_words
 from minseg_tui.lab.views.check_says import (
     anomaly,
     as_json,
@@ -24,6 +25,7 @@ from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.check.decide import Reason
 from minseg_tui.model.check.effects import BY_CAUSE
+from minseg_tui.model.runlog import LogRefused, SpeedStill
 from tests.model.physics_gen import (
     FRESH_SEEDS,
     HELD_OUT_SEEDS,
@@ -1430,3 +1432,18 @@ def test_a_rival_the_speed_itself_prefers_is_named_when_the_whitened_margin_is_t
     assert f"{f.ratio:.2f} times the whitened residual" in words
     assert f"{f.squared:.2f} times the squared speed error of the first" in words
     assert f"{f.squared:.2f} times" in caveat_plain(split[0])
+
+
+def test_a_wheel_that_moves_only_in_its_switch_on_glitch_is_refused():
+    # tuning3 pair seed 930000 of dry friction and a cap: the friction is above what the
+    # capped current can drive, so the wheel never turns; one glitch row at the start reads
+    # 159 rad/s. The glitch repaired, the speed is 0 on every row, and the check named
+    # 'none' with T 3.3 ms and K 0, a model of a wheel it never saw turn. The check reads
+    # the first two rows as the glitch (row 1 the fast one), as its start_glitch note does
+    log = make(930000, ("coulomb_friction", "current_limit"))
+    assert np.flatnonzero(log.omega).tolist() == [1]
+    with pytest.raises(LogRefused) as e:
+        check(log.t, log.u, log.omega)
+    assert e.value.why == SpeedStill(0.0, 2)
+    words = refusal_words(e.value.why)
+    assert words.endswith("omega stays at 0 rad/s after the first 2 rows, a switch-on glitch")

@@ -80,7 +80,7 @@ from minseg_tui.model.check.result import (
 )
 from minseg_tui.model.check.sampling import CountFrom, Sampling, sampling, scatter
 from minseg_tui.model.optimize import golden
-from minseg_tui.model.runlog import LogRefused, problem
+from minseg_tui.model.runlog import LogRefused, SpeedStill, problem
 
 FloatArray = NDArray[np.float64]
 
@@ -117,11 +117,14 @@ def check(
     if refused:
         raise LogRefused("", None, refused)
     ts = float(np.median(np.diff(t))) if ts is None else float(ts)
+    glitch = an.start_glitch(u, y)
+    if glitch and float(np.ptp(y[glitch:])) == 0.0:
+        # the wheel never turns: only the glitch rows moved (dry friction above a cap)
+        raise LogRefused("", None, SpeedStill(float(y[glitch]), glitch))
     samp = sampling(t, u, y, ts, cpr, omega_over)
     notes: list[an.Anomaly] = []
     y_raw = y
     pre = np.ones(y.size)  # rows left out before anything is fitted (a switch-on glitch)
-    glitch = an.start_glitch(u, y)
     if glitch:
         notes.append(an.glitch_anomaly(t, y, glitch))
         y = y.copy()
