@@ -959,6 +959,48 @@ the 38 found: the earliest 6.7 ms late (0.27 of a sample; the bar 0.25), the lea
 the edges' scatter 5.44 robust sigmas (LATE_SPREAD 5: the thin one, unchanged), their rows
 miss by 4.28-34 times the noise (bar 3), the shift takes 49-98 % away (bar 40 %: 900003
 had 33 %, chosen knowing it), once shifted at most 2.06 times the other edges (LATE_FIT 3).
+
+s39-wrong (50a73be -> this branch; changed on a third tuning range only, --tuning3: pairs
+930000-930014, looked at log by log with tuning2's; the fresh range run once, at the end,
+counts only). tuning3 before: 26 of 225 confidently wrong, of these kinds: an average's
+length read long beside friction, a pole or a cap (5: 14-23 taps read 19-36, T or a_max off);
+T and T2 swapped (3: two beside a delay, one beside an average); a delay beside a cap read as a
+pole or an average (3, the pair's own fit ending far off); a cap never named beside a pole or a
+coast (3); friction above the cap, so the wheel never turns (2: one refused, one named 'none'
+with T 3.3 ms on a still wheel with one glitch row); a coast with friction or a delay never
+fitted (2); a short average beside a pole named a long average alone (2); a delay beside
+friction named a pole at a whitened margin of 1.106 (1); a spurious delay beside friction and
+a coupling (1); a delay beside an average named a pole (1); a cap beside an average named with
+a spurious pole and 10 taps for 20 (1); a pole on the coupling beside a cap named a delay (1);
+a T2 29 % short beside a cap (1). Changed: a try beside the model so far whose added cause barely acts (refused as
+within a sample, below the noise or too small) but fits clearly better is the same model from
+a deeper valley, and the model's causes are fitted again from it (decide._idle_found); of two
+lags that fit alike in either order (within 0.1 %) the faster is the extra pole
+(decide._faster_pole); a rival with the same average up to 1.15 x AMBIGUOUS_RATIO of the
+whitened residual that misses the speed itself less is named as one the log cannot tell apart,
+its words saying the two measures disagree (decide.AMBIGUOUS_SPLIT, compared 'split').
+tuning3 pairs: right 78.7 -> 81.3 %, right or honestly ambiguous 87.6 -> 90.2 %, ambiguous in
+all 9.8 -> 9.8 %, confidently wrong 11.6 -> 8.9 % (26 -> 20): 8 verdicts changed, none lost
+(6 confidently wrong -> right or honestly ambiguous: 930001, 930004, the three swaps, and an
+average's 19 taps for 14 beside a cap; 1 honestly ambiguous -> right, an average's 31 taps for
+22; 1 honestly ambiguous with its T2 mended). tuning2: every
+verdict the same (right 80.7 %, right or honestly ambiguous 94.0 %, ambiguous in all 15.3 %,
+confidently wrong 4.0 %, 6 of 150). Fresh (--fresh --seeds 5 --touch-seeds 5, the brief's
+figures on 50a73be -> this): pairs right or honestly ambiguous 90.7 -> 93.3 % (right 82.7 %,
+honestly ambiguous 10.7 %), ambiguous in all 9.3 -> 10.7 %, confidently wrong 7 -> 5 of 75
+(9.3 -> 6.7 %), 0 disturbances, 0 false late steps. Old held-out (--seeds 5 --touch-seeds
+5): pairs right 80.0 %, honestly ambiguous 14.7 %, ambiguous in all 16.0 %, confidently wrong
+3 of 75 (4.0 %), 0 disturbances, as NOTE38 gives them; singles 34 of 35 named alone and touched
+20 of 20 (neither run on 50a73be). Fresh singles 33 of 35 named alone (params 32), as stop 38
+gave them. benchmarks/model_check.py --seeds 10 --skip-hour: single causes 70 of 70, 0 false
+alarms of 10. benchmarks/false_anomalies.py held-out (130 logs): 0 false anomalies, as before.
+The ten real logs and six probes: analyze's text byte-identical (also after 229f09f, which
+refuses tuning3's friction-above-cap log 930000, named 'none' before, as a still wheel after
+its glitch rows; a refusal counts as wrong here, so no figure moves). The 5 % target
+is still missed on the fresh range (6.7 %) and on tuning3 (8.9 %). The largest family left on
+tuning3 is an average read long (5 of the 20: 27-36 taps for 22-23 beside a pole or a cap, and
+8-14 for 3-8 named alone beside a pole); likely because the length is scanned by whitened sums,
+whose stride is the length (not measured).
 """
 
 from __future__ import annotations
@@ -983,6 +1025,7 @@ from tests.model.physics_gen import (  # noqa: E402
     FRESH_SEEDS,
     HELD_OUT_SEEDS,
     TUNING2_SEEDS,
+    TUNING3_SEEDS,
     TUNING_SEEDS,
     make,
 )
@@ -1163,6 +1206,11 @@ def main() -> None:
         help="the second tuning range (physics_gen.TUNING2_SEEDS, 920000 on), to look at log by log",
     )
     ap.add_argument(
+        "--tuning3",
+        action="store_true",
+        help="the third tuning range (physics_gen.TUNING3_SEEDS, 930000 on), to look at log by log",
+    )
+    ap.add_argument(
         "--fresh",
         action="store_true",
         help="the fresh held-out seeds (physics_gen.FRESH_SEEDS): counts only, no --verbose",
@@ -1170,15 +1218,17 @@ def main() -> None:
     ap.add_argument("--only", choices=["pairs", "touches", "singles"])
     ap.add_argument("--verbose", action="store_true")
     a = ap.parse_args()
-    if a.fresh and (a.tuning or a.tuning2 or a.verbose):
-        ap.error("--fresh prints counts only: not with --tuning, --tuning2 or --verbose")
-    if a.tuning and a.tuning2:
-        ap.error("one range at a time: --tuning or --tuning2")
+    if a.fresh and (a.tuning or a.tuning2 or a.tuning3 or a.verbose):
+        ap.error("--fresh prints counts only: not with --tuning, --tuning2, --tuning3 or --verbose")
+    if a.tuning + a.tuning2 + a.tuning3 > 1:
+        ap.error("one range at a time: --tuning, --tuning2 or --tuning3")
     base = (
         TUNING_SEEDS.start
         if a.tuning
         else TUNING2_SEEDS.start
         if a.tuning2
+        else TUNING3_SEEDS.start
+        if a.tuning3
         else FRESH_SEEDS.start
         if a.fresh
         else HELD_OUT_SEEDS.start
@@ -1188,6 +1238,8 @@ def main() -> None:
         if a.tuning
         else "tuning2"
         if a.tuning2
+        else "tuning3"
+        if a.tuning3
         else "FRESH HELD-OUT"
         if a.fresh
         else "HELD-OUT"

@@ -356,9 +356,11 @@ class PeriodOutOfRange:
 
 @dataclass(frozen=True)
 class SpeedStill:
-    """A speed that never changes: ``omega`` (rad/s) on every row."""
+    """A speed that never changes: ``omega`` (rad/s) on every row, or on every row after the
+    first ``glitch`` rows, a switch-on glitch (0: none)."""
 
     omega: float
+    glitch: int = 0
 
 
 LogProblem: TypeAlias = (

@@ -85,6 +85,12 @@ def refusal_words(why: Refusal) -> str:
                 f"expected a sample period between {lo * 1e3:g} ms and {hi:g} s, got "
                 f"{period:.3g} s (is t in seconds?)"
             )
+        case SpeedStill(omega, glitch) if glitch:
+            first = "row" if glitch == 1 else f"{glitch} rows"
+            return (
+                "expected the speed to change after the voltage changes; omega stays at "
+                f"{omega:g} rad/s after the first {first}, a switch-on glitch"
+            )
         case SpeedStill(omega):
             return (
                 "expected the speed to change after the voltage changes; omega stays at "

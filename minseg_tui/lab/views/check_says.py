@@ -441,6 +441,9 @@ def _untold(f: rs.Untold) -> str:
         "squared_less": f"the second misses the speed itself slightly less ({f.ratio:.2f} times "
         "the squared speed error of the first; their averages differ, so their "
         "whitened residuals, where the first is ahead, cannot be compared)",
+        "split": f"the second leaves {f.ratio:.2f} times the whitened residual of the first, yet "
+        f"misses the speed itself less ({f.squared:.2f} times the squared speed error of the "
+        "first), so the two measures disagree on which fits better",
     }[f.compared]
     extra = [c for c in f.other if c not in f.named]
     if f.moves > 0.0 and len(extra) == 1:
@@ -1310,6 +1313,12 @@ def caveat_plain(c: rs.Caveat) -> str:
                 f"it the model's error is {f.ratio:.2f} times as large, and it changes the "
                 f"simulated speed by {100 * f.moves:.2g} % of the largest speed at most, about "
                 "what any model of a real motor misses by; "
+                f"{what_would_tell(f.named, f.other, plain=True)}."
+            )
+        if f.compared == "split":
+            return (
+                f"This run cannot tell {named} from {other}: by one measure the second's error "
+                f"is {f.ratio:.2f} times the first's, by another {f.squared:.2f} times; "
                 f"{what_would_tell(f.named, f.other, plain=True)}."
             )
         return (

@@ -20,9 +20,11 @@ from minseg_tui.model.check.decide import (
     compare,
     effect,
     ranked,
+    raw_ratio,
     rivals,
     select,
     speed_range,
+    split,
     swapped,
     unsure,
 )
@@ -78,7 +80,7 @@ from minseg_tui.model.check.result import (
 )
 from minseg_tui.model.check.sampling import CountFrom, Sampling, sampling, scatter
 from minseg_tui.model.optimize import golden
-from minseg_tui.model.runlog import LogRefused, problem
+from minseg_tui.model.runlog import LogRefused, SpeedStill, problem
 
 FloatArray = NDArray[np.float64]
 
@@ -115,11 +117,14 @@ def check(
     if refused:
         raise LogRefused("", None, refused)
     ts = float(np.median(np.diff(t))) if ts is None else float(ts)
+    glitch = an.start_glitch(u, y)
+    if glitch and float(np.ptp(y[glitch:])) == 0.0:
+        # the wheel never turns: only the glitch rows moved (dry friction above a cap)
+        raise LogRefused("", None, SpeedStill(float(y[glitch]), glitch))
     samp = sampling(t, u, y, ts, cpr, omega_over)
     notes: list[an.Anomaly] = []
     y_raw = y
     pre = np.ones(y.size)  # rows left out before anything is fitted (a switch-on glitch)
-    glitch = an.start_glitch(u, y)
     if glitch:
         notes.append(an.glitch_anomaly(t, y, glitch))
         y = y.copy()
@@ -655,7 +660,14 @@ def _report(
         for c in CANDIDATES
         if c.claim is not None and c.cause in ext.causes and c.claim.rival not in ext.causes
     }
-    finding = _finding(sel, base, ext, order, log, samp, noise, level, miss, unjudged, full, alts)
+    splits = {
+        frozenset(f.causes): raw_ratio(head, f, sel.chosen)
+        for f, _ in alts
+        if split(head, f, sel.chosen)
+    }
+    finding = _finding(
+        sel, base, ext, order, log, samp, noise, level, miss, unjudged, full, alts, splits
+    )
     finding = _plain_words(finding, swaps)
 
     # anomalies, against the model the finding settles on
@@ -1008,6 +1020,7 @@ def _finding(
     unjudged: dict[str, Lacks],
     full: Problem,
     alts: list[tuple[Fit, float]] | None = None,
+    splits: dict[frozenset[str], float] | None = None,
 ) -> Finding:
     floor = samp.floor if samp.count_from is CountFrom.CPR else None
     taps = ext.effects.taps
@@ -1099,8 +1112,11 @@ def _finding(
     for f, ratio in alts or []:
         causes = list(f.causes)
         ambiguous.append(causes)
+        squared = (splits or {}).get(frozenset(causes), 0.0)
         compared: Compared = (
-            "whitened"
+            "split"
+            if squared > 0.0
+            else "whitened"
             if f.effects.taps == ext.effects.taps
             else "squared"
             if ratio >= 1.0
@@ -1115,7 +1131,7 @@ def _finding(
             Caveat(
                 "cannot_tell",
                 causes[0],
-                Untold(tuple(order), tuple(causes), ratio, compared, moves),
+                Untold(tuple(order), tuple(causes), ratio, compared, moves, squared),
             )
         )
     if ambiguous:

@@ -233,10 +233,11 @@ class Unjudged:
     why: Lacks
 
 
-Compared = Literal["whitened", "squared", "squared_less"]
+Compared = Literal["whitened", "squared", "squared_less", "split"]
 """How two models the log cannot tell apart were compared: by their whitened residuals
 (same average), or by their squared speed errors (their averages differ), the second
-ahead there ('squared_less') or not ('squared')."""
+ahead there ('squared_less') or not ('squared'); 'split': same average, the second behind
+on the whitened residuals and ahead on the squared speed errors."""
 
 
 @dataclass(frozen=True)
@@ -252,6 +253,9 @@ class Untold:
     """When ``other`` is ``named`` with one cause more that was left out as too small: the
     most that cause moves the simulated speed (held over 9 samples) as a share of the
     largest speed the model reaches (0: not that kind)."""
+    squared: float = 0.0
+    """When ``compared`` is 'split': the second's squared speed error over the first's
+    (under 1; 0: not that kind)."""
 
 
 @dataclass(frozen=True)
