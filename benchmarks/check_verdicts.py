@@ -15,6 +15,8 @@ that gives the same numbers by construction shows none differ); the CPU is check
 
 SETS (the logs of each benchmark, the same seeds):
   tuning-pairs      model_check_independent.py --tuning --seeds 10: every pair, seeds 0-9;
+  tuning2-pairs     model_check_independent.py --tuning2 --seeds 10: every pair, seeds
+                    920000-920009;
   held-out-pairs    model_check_independent.py --seeds 5: every pair, seeds 900000-900004;
   held-out-singles  its singles (none and each cause), seeds 900500-900504;
   held-out-touches  its hands on the wheel, seeds 901000-901004 (logs with a touch);
@@ -55,6 +57,7 @@ from tests.model import physics_gen as gen  # noqa: E402
 
 SETS = (
     "tuning-pairs",
+    "tuning2-pairs",
     "held-out-pairs",
     "held-out-singles",
     "held-out-touches",
@@ -68,9 +71,12 @@ Log = Any
 
 def logs(which: str) -> Iterator[tuple[str, Callable[[], Log]]]:
     """(key, a maker of the log) of every log of one set."""
-    if which in ("tuning-pairs", "held-out-pairs"):
-        base = gen.TUNING_SEEDS.start if which == "tuning-pairs" else gen.HELD_OUT_SEEDS.start
-        n = 10 if which == "tuning-pairs" else 5
+    if which in ("tuning-pairs", "tuning2-pairs", "held-out-pairs"):
+        base = {
+            "tuning-pairs": gen.TUNING_SEEDS.start,
+            "tuning2-pairs": gen.TUNING2_SEEDS.start,
+        }.get(which, gen.HELD_OUT_SEEDS.start)
+        n = 5 if which == "held-out-pairs" else 10
         for a, b in itertools.combinations(gen.CAUSES, 2):
             for s in range(base, base + n):
                 yield f"{which} {a}+{b} {s}", partial(gen.make, s, (a, b))
