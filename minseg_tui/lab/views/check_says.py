@@ -201,9 +201,14 @@ def anomaly(a: an.Anomaly) -> str:
         )
     if isinstance(f, an.Creep):
         word = "creeps up" if a.size > 0 else "sags"
+        # identify reads a creep over another window (from 4 of its rise's T): say this one
         return (
             f"after each step has settled the speed still {word} by about {abs(a.size):.1f} % "
-            "over the rest of the step (warming up, a battery or a load that changes); "
+            f"over the rest of the step, read from {format_number(f.after, 2)} s after the "
+            "step, where the check's chosen model has settled (past "
+            f"{an.CREEP_SETTLE:g} of its time constants, with any delay, and "
+            f"{an.CREEP_MIN_ROWS} samples), to its end (warming up, a battery or a load that "
+            "changes); "
             "no first-order model does that, so it is not counted as a cause"
         )
     if isinstance(f, an.LateStep):
