@@ -17,15 +17,13 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-import numpy as np
-
 from minseg_tui.cli.output import input_file, not_stdio, open_output, output_file, print_json
 from minseg_tui.errors import InputError
 from minseg_tui.lab.content.identify_says import check_T_beside
 from minseg_tui.lab.content.log_says import refusal_words
 from minseg_tui.lab.saving.files import read_run_log
-from minseg_tui.lab.views.check_says import as_json, in_words
-from minseg_tui.lab.views.check_text import ANOMALIES, CAVEATS, text
+from minseg_tui.lab.views.check_says import as_json, in_words, late_speed
+from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
 from minseg_tui.model.identify import (
     IdentifyRefused,
@@ -33,10 +31,8 @@ from minseg_tui.model.identify import (
     ZeroVoltRefusal,
     response_observed,
 )
-from minseg_tui.model.identify.identification import LAG_SAMPLES
 from minseg_tui.model.identify.observations import Observation, TRowsApart
-from minseg_tui.model.runlog import LogRefused, RunLog, problem, speed_lag
-from minseg_tui.quantities import format_constant
+from minseg_tui.model.runlog import LogRefused, RunLog, problem
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -76,18 +72,19 @@ def write_predictions(path: str, r: CheckResult) -> None:
             w.writerow([repr(float(v)) for v in row])
 
 
-def in_words_text(r: CheckResult) -> str:
+def in_words_text(r: CheckResult, lag: float | None = None) -> str:
     """The check's text (:func:`minseg_tui.lab.views.check_text.text`) with its headings naming the
     cause, the other causes and the extended model in words ("Cause: dry friction",
     "Extended model (first order + dry friction)"), not by their contract names, which stay
-    in ``--json``."""
+    in ``--json``. ``lag`` (s): how late the log's speed column runs behind its angle column
+    (:func:`~minseg_tui.lab.views.check_says.late_speed`), None when it does not."""
     f, e = r.finding, r.extended
     heads = {f"Cause: {f.cause}": f"Cause: {in_words(f.cause)}"}
     heads[f"Extended model ({e.model}):"] = f"Extended model ({in_words(e.model)}):"
     for o in f.others:
         heads[f"  also: {o.cause} ("] = f"  also: {in_words(o.cause)} ("
     out = []
-    for line in text(r).split("\n"):
+    for line in text(r, lag).split("\n"):
         for old, new in heads.items():
             if line == old or (old.endswith((":", "(")) and line.startswith(old)):
                 line = new + line[len(old) :]
@@ -128,46 +125,8 @@ def run(args: argparse.Namespace) -> int:
         out["speed_lag"] = lag
         print_json(out, indent=2)
     else:
-        print(with_lag(with_identify(in_words_text(result), beside), lag))
+        print(with_identify(in_words_text(result, lag), beside))
     return 0
-
-
-def late_speed(log: RunLog) -> float | None:
-    """How late (s) the log's speed column runs behind its theta column, when more than
-    :data:`~minseg_tui.model.identify.identification.LAG_SAMPLES` sample periods (the median
-    interval); None otherwise or without a theta column. The check reads the speed column
-    alone, so it cannot see this itself."""
-    if "theta" not in log.extra or len(log) < 3:
-        return None
-    lag = speed_lag(log.t, log.omega, log.extra["theta"])
-    ts = float(np.median(np.diff(np.asarray(log.t, dtype=float))))
-    return lag if lag is not None and lag > LAG_SAMPLES * ts else None
-
-
-def with_lag(text: str, lag: float | None) -> str:
-    """The check's text with a caveat when its speed column runs ``lag`` (s) behind the
-    log's angle column (:func:`late_speed`): a delay or a filter the check finds there may be
-    the speed's reading, not the motor."""
-    if lag is None:
-        return text
-    said = (
-        f"  - the speed column runs about {format_constant(lag, 's')} behind the log's angle "
-        "column (theta): summed over the sample intervals it falls behind the angle as a "
-        "speed that late would, where a mean speed over each interval would not. The check "
-        "reads the speed column only, so a delay or a filter it finds may be the speed's "
-        "reading (a filtered speed, as a driver's own estimate), not the motor; identify fits "
-        "the angle"
-    )
-    lines = text.split("\n")
-    if CAVEATS in lines:
-        at = lines.index(CAVEATS) + 1
-        while at < len(lines) and lines[at].startswith("  "):
-            at += 1
-        lines.insert(at, said)
-    else:
-        at = lines.index(ANOMALIES) if ANOMALIES in lines else len(lines)
-        lines[at:at] = [CAVEATS, said]
-    return "\n".join(lines)
 
 
 @dataclass(frozen=True)

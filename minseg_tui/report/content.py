@@ -737,15 +737,18 @@ def _model_check_section(session: Session) -> Section | None:
     except (InputError, KeyError):
         log = None
     u = np.asarray(log.u, float) if log is not None and len(log) == np.asarray(r.t).size else None
+    lag = check_says.late_speed(log) if log is not None else None  # its speed behind its angle
     # as on the screen: the run and what the close-up shows, then the sentences about it
     elsewhere = views.check_elsewhere(session, mc.run)  # an import at the model check
     of = f" (a log imported at the model check; {elsewhere})" if elsewhere else ""
     sec.blocks.append(f"Run {mc.run}{of}, {check_words.close_up_title(r)}.")
-    sec.blocks.append(check_words.join(check_words.lead(r, u)))
+    sec.blocks.append(check_words.join(check_words.lead(r, u, lag)))
     sec.blocks.append(_model_check_figures(mc.run, r, log))
     # the details as the screen's fold gives them, each figure with what it measures and
     # why it matters; here the intervals too, and the figures in a table
-    told = check_words.details(r, "".join(_two_fits(session, mc.run, r.baseline.params, u)), True)
+    told = check_words.details(
+        r, "".join(_two_fits(session, mc.run, r.baseline.params, u)), True, lag
+    )
     details = Fold("Details")
     details.blocks.extend(told.said)
     e, named = r.extended, r.finding.cause != "none"

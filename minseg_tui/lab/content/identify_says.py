@@ -570,6 +570,14 @@ def _creeping(o: TRowsApart, creep: tuple[float, float]) -> str:
         f"{'up' if creep[1] > creep[0] else 'down'}, from "
         f"{format_number(creep[0], 3)} to {format_number(creep[1], 3)} rad/s by the end "
         "of the step"
+        + (
+            # analyze's creep reads another window (from its own settling): say this one
+            f" (the means of the first and the last tenth of the rows read from "
+            f"{format_number(o.creep_span[0], 3)} s after the step, {o.span:g} T after the "
+            f"wheel answers, to {format_number(o.creep_span[1], 3)} s after it)"
+            if o.creep_span is not None
+            else ""
+        )
     )
 
 
@@ -612,6 +620,25 @@ def _(o: TRowsApart) -> str:
             "difference. There the wheel slows down more slowly than one time constant of its "
             "rise gives (it coasts at zero command, or dry friction slows it), a shape the "
             "first-order model misses. The 95 % interval of T spans both fits. Read T with care."
+        )
+    if o.levels is not None and (o.levels[0] - o.levels[1]) * (o.rise_T - o.T) > 0:
+        # a Pololu Balboa log, flat after its rise (14.6-14.7 rad/s from 0.23 s to 3.6 s):
+        # "the rise and the speed after it do not follow one time constant" was said where
+        # the rise's 11 rows alone reached for 15.0 rad/s and every row held 14.65
+        rise_w, every_w = (format_number(x, 3) for x in o.levels)
+        return (
+            f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "
+            f"edge alone give {format_constant(o.rise_T, 's')} (95 % "
+            f"{format_interval(o.rise_ci[0] * 1e3, o.rise_ci[1] * 1e3, 'ms')}) with a steady "
+            f"speed of {rise_w} rad/s, all the rows the fit uses {format_constant(o.T, 's')} "
+            f"with {every_w} rad/s: the speed after the rise holds level, and the later rows, "
+            "long after the rise, hold it "
+            f"{'below' if o.levels[1] < o.levels[0] else 'above'} the level the rise's rows "
+            "alone reach for; a first-order rise starts at its steady speed over T, so the "
+            f"same start with a {'lower' if o.levels[1] < o.levels[0] else 'higher'} steady "
+            f"speed takes a {'shorter' if o.T < o.rise_T else 'longer'} T. The 95 % interval "
+            "of T spans "
+            "both fits. Read T with care."
         )
     return (
         f"T depends on which rows are fitted: the rows up to {o.span:g} T after each "

@@ -31,7 +31,9 @@ from minseg_tui.model.check.deviations import Deviation
 from minseg_tui.model.check.evidence import Lack, Lacks
 from minseg_tui.model.check.figures import CloseUp, Lead, Window
 from minseg_tui.model.check.sampling import CountFrom, Sampling
-from minseg_tui.quantities import format_number
+from minseg_tui.model.identify.identification import LAG_SAMPLES
+from minseg_tui.model.runlog import RunLog, speed_lag
+from minseg_tui.quantities import format_constant, format_number
 
 W = TypeVar("W")
 
@@ -199,9 +201,14 @@ def anomaly(a: an.Anomaly) -> str:
         )
     if isinstance(f, an.Creep):
         word = "creeps up" if a.size > 0 else "sags"
+        # identify reads a creep over another window (from 4 of its rise's T): say this one
         return (
             f"after each step has settled the speed still {word} by about {abs(a.size):.1f} % "
-            "over the rest of the step (warming up, a battery or a load that changes); "
+            f"over the rest of the step, read from {format_number(f.after, 2)} s after the "
+            "step, where the check's chosen model has settled (past "
+            f"{an.CREEP_SETTLE:g} of its time constants, with any delay, and "
+            f"{an.CREEP_MIN_ROWS} samples), to its end (warming up, a battery or a load that "
+            "changes); "
             "no first-order model does that, so it is not counted as a cause"
         )
     if isinstance(f, an.LateStep):
@@ -1077,10 +1084,57 @@ FEW_UNEVEN = 3
 was taken (:func:`sampling` says the choice is assumed)."""
 
 
-def sampling(s: Sampling) -> str:
-    """One sentence on the sample times and the speed column."""
+def late_speed(log: RunLog) -> float | None:
+    """How late (s) the log's speed column runs behind its theta column
+    (:func:`~minseg_tui.model.runlog.speed_lag`), when more than
+    :data:`~minseg_tui.model.identify.identification.LAG_SAMPLES` sample periods (the median
+    interval); None otherwise or without a theta column. The check reads the speed column
+    alone, so it cannot see this itself."""
+    if "theta" not in log.extra or len(log) < 3:
+        return None
+    lag = speed_lag(log.t, log.omega, log.extra["theta"])
+    ts = float(np.median(np.diff(np.asarray(log.t, dtype=float))))
+    return lag if lag is not None and lag > LAG_SAMPLES * ts else None
+
+
+def speed_lag_said(lag: float) -> str:
+    """What the check cannot say on a log whose speed column runs ``lag`` (s) behind its
+    angle column (:func:`late_speed`): one wording for ``analyze``'s caveats, the screen's
+    details and the report's (an EV3 under ev3dev, whose speed is the driver's own estimate:
+    8.8 / 12.7 ms behind, where the check named a 16 / 21 ms delay)."""
+    return (
+        f"the speed column runs about {format_constant(lag, 's')} behind the log's angle "
+        "column (theta): summed over the sample intervals it falls behind the angle as a "
+        "speed that late would, where a mean speed over each interval would not. The check "
+        "reads the speed column only, so a delay or a filter it finds may be the speed's "
+        "reading (a filtered speed, as a driver's own estimate), not the motor"
+    )
+
+
+def sampling(s: Sampling, lag: float | None = None) -> str:
+    """One sentence on the sample times and the speed column; ``lag`` (s): how late the
+    log's speed column runs behind its angle column (:func:`late_speed`), None when not: then
+    its speed is no mean over an interval, whatever the data fit better."""
     times = every(s)
-    if s.how != "even":
+    if s.how != "even" and lag is not None and s.coarse is None:
+        # ev3dev's speed attribute fits "over its own interval" better than "over the nominal
+        # period", yet it is neither: "(detected from the data)" was said of it
+        over, other = ("its own interval", "the nominal period")[:: 1 if s.over_interval else -1]
+        why = (
+            "as the header says"
+            if s.how == "header"
+            else f"which fits the data better than {other}"
+        )
+        if not s.regular:
+            times += (
+                ": a loop without a fixed clock; the long intervals are jitter, not lost samples"
+            )
+        times += (
+            f"; each row's speed is simulated as the mean over {over} ({why}), but the speed "
+            f"column is no such mean: it runs about {format_constant(lag, 's')} behind the "
+            "angle column (below)"
+        )
+    elif s.how != "even":
         over = "its own interval" if s.over_interval else "the nominal period"
         src = "as the header says" if s.how == "header" else "detected from the data"
         if s.how == "detected" and s.uneven < FEW_UNEVEN:

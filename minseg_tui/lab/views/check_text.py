@@ -22,6 +22,7 @@ from minseg_tui.lab.views.check_says import (
     other,
     region_words,
     sampling,
+    speed_lag_said,
     where,
 )
 from minseg_tui.model.check import CheckResult, Gain
@@ -182,14 +183,16 @@ def deviation_row(d: Deviation) -> str:
     )
 
 
-def text(r: CheckResult) -> str:
+def text(r: CheckResult, lag: float | None = None) -> str:
     """The human report: how the log was sampled, the baseline, where it deviates, the
     cause and its evidence, the extended model, the gain (the figure that means most
-    first, and why), what the check cannot say, the anomalies."""
+    first, and why), what the check cannot say, the anomalies. ``lag`` (s): how late the
+    log's speed column runs behind its angle column
+    (:func:`~minseg_tui.lab.views.check_says.late_speed`), None when it does not."""
     b, e, f, g = r.baseline, r.extended, r.finding, r.gain
     lines = []
     if r.sampling is not None:
-        lines.append(f"Log: {sampling(r.sampling)}")
+        lines.append(f"Log: {sampling(r.sampling, lag)}")
     lines += [
         f"Baseline (first order): {params(b.params, b.intervals)}",
         f"  simulated on the measured input: rmse {b.rmse:.3f} rad/s, fit {b.fit_percent:.1f} %"
@@ -241,9 +244,12 @@ def text(r: CheckResult) -> str:
         else ""
     )
     lines.append("  " + "; ".join(rest) + f" (rms, noise and fit figures {_over(r)}{held})")
-    if f.caveats:
+    cannot = [caveat(c) for c in f.caveats]
+    if lag is not None:
+        cannot.append(f"{speed_lag_said(lag)}; identify fits the angle")
+    if cannot:
         lines.append(CAVEATS)
-        lines.extend(f"  - {caveat(c)}" for c in f.caveats)
+        lines.extend(f"  - {c}" for c in cannot)
     if r.anomalies:
         lines.append(ANOMALIES)
         lines.extend(f"  - {anomaly(a)}" for a in r.anomalies)

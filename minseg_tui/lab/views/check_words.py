@@ -36,6 +36,7 @@ from minseg_tui.lab.views.check_says import (
     lost_plain,
     none_named,
     shown,
+    speed_lag_said,
     uncertain,
 )
 from minseg_tui.lab.views.check_text import FIGURES, GAIN_DIGITS, figure, figure_words, stem
@@ -226,6 +227,16 @@ stop (a log with no step down to 0: 'the wheel stops sooner' would not be of it)
 DELAY = "a delay: the motor answers about {delay} after the command, as if the voltage arrived late"
 """A dead time told to a student, with its size (345 ms read 'a little after' on a log)."""
 
+LATE_READING = (
+    "a delay: the logged speed answers about {delay} after the command; but this log's speed "
+    "column itself runs about {lag} behind its angle column, so {part} of that delay may be "
+    "the speed reading's, not the motor's"
+)
+"""A dead time told to a student when the log's speed column runs ``lag`` behind its angle
+column (:func:`~minseg_tui.lab.views.check_says.late_speed`): the delay is of the logged
+speed, and the reading's own lag may be most of it (an EV3 under ev3dev: 8.8 of 16 ms), so
+the motor's delay is not stated as fact."""
+
 POLE_WAYS: dict[str, tuple[str, str]] = {
     "filtered": (
         "a lag in the speed reading: the logged speed is filtered, so it follows the wheel "
@@ -265,15 +276,21 @@ was said on a micromouse log where it would stand in for an 18 ms delay, far lon
 small motor's winding takes (:data:`~minseg_tui.lab.views.check_says.WINDING_LAG_MAX`)."""
 
 
-def everyday(r: CheckResult) -> str:
+def everyday(r: CheckResult, lag: float | None = None) -> str:
     """The cause of ``r`` in everyday words, true of this log: dry friction by what the log
-    shows of it (a stop, or settled speeds), a delay with its size, a second pole by where it
-    acts."""
+    shows of it (a stop, or settled speeds), a delay with its size (of the logged speed, with
+    the part the reading may take, when the speed column runs ``lag`` s behind the angle
+    column), a second pole by where it acts."""
     f = r.finding
     e = f.evidence
     shown = e.shown if isinstance(e, Because) else None
     if f.cause == "coulomb_friction" and isinstance(shown, FrictionLevels):
         return FRICTION_LEVELS.format(u_c=format_value(shown.uc, "V", 2))
+    if f.cause == "dead_time" and "delay" in r.extended.params and lag is not None:
+        delay = r.extended.params["delay"]
+        said = format_value(lag * 1e3, "ms", 2)
+        part = f"about {said}" if lag < delay else "all"
+        return LATE_READING.format(delay=_later(delay), lag=said, part=part)
     if f.cause == "dead_time" and "delay" in r.extended.params:
         return DELAY.format(delay=_later(r.extended.params["delay"]))
     if f.cause == "second_pole" and isinstance(shown, Pole) and shown.way in POLE_WAYS:
@@ -294,9 +311,11 @@ def short(cause: str, because: object) -> str:
     return SHORT.get(cause, cause)
 
 
-def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
+def _what_is_wrong(r: CheckResult, m: Moment | None, lag: float | None = None) -> str:
     """Sentence 1: what the first-order model gets wrong in the close-up; the model is
-    named (:func:`simulated`) so that no group takes it for its own."""
+    named (:func:`simulated`) so that no group takes it for its own. What the log's speed
+    reads is said of the logged speed, not the wheel, where the speed averages (a velocity
+    filter) or runs ``lag`` s behind the angle column."""
     model = simulated(r)
     cu = r.close_up
     if cu is not None and cu.cause == "disturbance":
@@ -340,13 +359,13 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
         else f"the voltage steps from {format_value(m.u_from, 'V', 3)} to {format_value(m.u_to, 'V', 3)} at t = {_at(m.edge)}"
     )
     after = _later(m.at - m.edge)
-    if m.still and abs(m.first_order) > abs(m.measured):
+    if m.still and abs(m.first_order) > abs(m.measured) and lag is None:
         return (
             f"After {step}, the wheel stands still {after} later; {model} says it still "
             f"turns at {_w(m.first_order)} then."
         )
     # an averaged speed lags the wheel: say what the log reads, not what the wheel does
-    logged = r.finding.cause == "velocity_filter"
+    logged = r.finding.cause == "velocity_filter" or lag is not None
     wheel = (
         ("the logged speed has not moved yet" if logged else "the wheel has not moved yet")
         if m.kind == "rise" and _w(m.measured) == _w(0.0)
@@ -359,16 +378,17 @@ def _what_is_wrong(r: CheckResult, m: Moment | None) -> str:
     return f"After {step}, {after} later {wheel} where {model} says {_w(m.first_order)}."
 
 
-def _cause(r: CheckResult) -> str:
-    """Sentence 2: the likely cause in everyday words (and what the log cannot tell it from)."""
+def _cause(r: CheckResult, lag: float | None = None) -> str:
+    """Sentence 2: the likely cause in everyday words (and what the log cannot tell it from);
+    ``lag``: as :func:`everyday`."""
     f = r.finding
     if f.cause == "none":
         return ""
     text = (
         f"Possible cause, uncertain (it only just clears the check's bar, and a few rows more "
-        f"or fewer could change that): {everyday(r)}."
+        f"or fewer could change that): {everyday(r, lag)}."
         if uncertain(f)
-        else f"Likely cause: {everyday(r)}."
+        else f"Likely cause: {everyday(r, lag)}."
     )
     also = [short(o.cause, o.evidence) for o in f.others]
     if also:
@@ -414,13 +434,16 @@ def _gain(r: CheckResult) -> str:
     )
 
 
-def lead(r: CheckResult, u: ArrayLike | None) -> tuple[str, ...]:
+def lead(r: CheckResult, u: ArrayLike | None, lag: float | None = None) -> tuple[str, ...]:
     """The two or three sentences a student reads first: what the first-order model gets
     wrong at the step the close-up shows, the likely cause in everyday words, and how much
     better the extended model does (one figure). ``u``: the run's input (V, one per row of
-    ``r.t``), or None when it cannot be read (then the first sentence is general)."""
+    ``r.t``), or None when it cannot be read (then the first sentence is general). ``lag``
+    (s): how late the log's speed column runs behind its angle column
+    (:func:`~minseg_tui.lab.views.check_says.late_speed`), None when it does not: then what
+    the speed reads is the logged speed's, and a delay partly the reading's."""
     m = moment(r, u)
-    return tuple(s for s in (_what_is_wrong(r, m), _cause(r), _gain(r)) if s)
+    return tuple(s for s in (_what_is_wrong(r, m, lag), _cause(r, lag), _gain(r)) if s)
 
 
 def close_up_title(r: CheckResult) -> str:
@@ -616,14 +639,23 @@ def _evidence_plain(r: CheckResult) -> list[str]:
     return out
 
 
-def _extended_plain(r: CheckResult, intervals: bool) -> str:
-    """The extended model told to a student: its parameters, what each one it adds is."""
+LATE_READING_DELAY = (
+    "how late the logged speed answers the command (the motor's own delay and the speed "
+    "reading's lag together)"
+)
+"""What a delay is, told to a student, on a log whose speed column runs behind its angle
+column (:data:`LATE_READING`)."""
+
+
+def _extended_plain(r: CheckResult, intervals: bool, lag: float | None = None) -> str:
+    """The extended model told to a student: its parameters, what each one it adds is (a
+    delay as :data:`LATE_READING_DELAY` where the speed column runs ``lag`` s behind the
+    angle column)."""
     e = r.extended
     if r.finding.cause == "none":
         return "Extended model: none needed; the simple model is enough for this run."
-    adds = [
-        f"{k} is {PARAM_MEANS[k]}" for k in e.params if k not in ("T", "K") and k in PARAM_MEANS
-    ]
+    means = PARAM_MEANS if lag is None else {**PARAM_MEANS, "delay": LATE_READING_DELAY}
+    adds = [f"{k} is {means[k]}" for k in e.params if k not in ("T", "K") and k in means]
     return (
         f"The extended model, {in_words(e.model, plain=True)}: "
         f"{params(e.params, e.intervals if intervals else None)}"
@@ -725,13 +757,18 @@ class Details:
         return tuple(out)
 
 
-def details(r: CheckResult, two_fits_said: str = "", intervals: bool = False) -> Details:
+def details(
+    r: CheckResult, two_fits_said: str = "", intervals: bool = False, lag: float | None = None
+) -> Details:
     """The details a student opens after the lead (the screen's fold, the report's): each
     figure said with what it measures and why it matters; the simple model the check fitted
     (``two_fits_said``: why its T is not Tasks 11-12's, '' when not of one run), the figure
     that leads, the evidence, the extended model (its 95 % intervals when ``intervals``),
     the other figures, the noise, what the run cannot show and what stands out in the log.
-    The CLI's specialist text is :func:`minseg_tui.lab.views.check_text.text`."""
+    ``lag`` (s): how late the log's speed column runs behind its angle column
+    (:func:`~minseg_tui.lab.views.check_says.late_speed`), said under what the run cannot
+    show in ``analyze``'s words; None when it does not. The CLI's specialist text is
+    :func:`minseg_tui.lab.views.check_text.text`."""
     b = r.baseline
     said = [
         "The simple model, the first-order line on the plots, is the first-order model the "
@@ -745,10 +782,13 @@ def details(r: CheckResult, two_fits_said: str = "", intervals: bool = False) ->
         said.append(two_fits_said)
     said += [x for x in (_lead_plain(r),) if x]
     said += _evidence_plain(r)
-    said.append(_extended_plain(r, intervals))
+    said.append(_extended_plain(r, intervals, lag))
     said += [x for x in (_others_plain(r), _noise_plain(r)) if x]
     return Details(
         tuple(said),
-        tuple(caveat_plain(c) for c in r.finding.caveats),
+        (
+            *(caveat_plain(c) for c in r.finding.caveats),
+            *((f"{_cap(speed_lag_said(lag))}.",) if lag is not None else ()),
+        ),
         tuple(f"{_cap(anomaly(a))}." for a in r.anomalies),
     )

@@ -1346,9 +1346,12 @@ def check(session: Session) -> CheckView:
     cu = r.close_up
     window = slice(cu.start, cu.end) if cu is not None else slice(0, 0)
     u: FloatArray | None = None  # unread: the story says less about the close-up's step
+    lag: float | None = None  # how late its speed column runs behind its angle column (s)
     if mc.run is not None:
         try:
-            u = np.asarray(session.load_run(mc.run).u, dtype=np.float64)
+            log = session.load_run(mc.run)
+            u = np.asarray(log.u, dtype=np.float64)
+            lag = check_says.late_speed(log)
         except (InputError, KeyError):
             u = None
     res = session.results()
@@ -1380,9 +1383,9 @@ def check(session: Session) -> CheckView:
         close_what=check_says.close_up_what(cu) if cu is not None else "",
         noise=cu.noise if cu is not None else r.gain.noise_floor,
         cause_words=in_words("+".join([f.cause, *(o.cause for o in f.others)]), plain=True),
-        story=check_words.lead(r, u),
+        story=check_words.lead(r, u, lag),
         close_title=check_words.close_up_title(r),
-        details=check_words.details(r, two_fits).blocks(),
+        details=check_words.details(r, two_fits, lag=lag).blocks(),
         two_fits=two_fits,
         other_T=check_words.other_T(st.T) if two_fits and st is not None else "",
         # T and K of another run than Tasks 11-15's are none of their computed values

@@ -83,7 +83,19 @@ class WildSample:
 
 @dataclass(frozen=True)
 class Creep:
-    """A creep after the rise: its size (%, signed: + creeps up) is the anomaly's own."""
+    """A creep after the rise: its size (%, signed: + creeps up) is the anomaly's own;
+    ``after``: how long after each step (s) the rows it is read over begin (where the model
+    has settled: :data:`CREEP_SETTLE` of its time constants with its delay, and at least
+    :data:`CREEP_MIN_ROWS` samples), to the step's end."""
+
+    after: float = 0.0
+
+
+CREEP_SETTLE: float = 5.0
+"""A creep is read from this many time constants (with the delay) after each step..."""
+
+CREEP_MIN_ROWS: int = 3
+"""... and from at least this many samples after it."""
 
 
 @dataclass(frozen=True)
@@ -316,7 +328,7 @@ def creep(
     """A slow creep of the speed in the settled part of the driven stretches, if clear."""
     change = np.flatnonzero(np.diff(u) != 0) + 1
     bounds = np.concatenate(([0], change, [u.size]))
-    settle = max(3, int(np.ceil(5 * T / ts)) + 1)
+    settle = max(CREEP_MIN_ROWS, int(np.ceil(CREEP_SETTLE * T / ts)) + 1)
     slopes, rel, tstat = [], [], []
     noise = robust_sigma(np.diff(residual)) / np.sqrt(2.0)
     for a, b in zip(bounds[:-1], bounds[1:], strict=True):
@@ -348,7 +360,7 @@ def creep(
             None,
             100 * mean_rel,
             "%",
-            Creep(),
+            Creep(settle * ts),
         )
     return None
 
