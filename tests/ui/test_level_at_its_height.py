@@ -1,5 +1,5 @@
 """Walk 18's D3: on Task 12 at 80x24 the 63 % level is drawn at its own height, one braille
-dot high and merged with the speed's dots, not as a dashed text row (1.5 rad/s a row): a
+dot high, leaving the cells the speed passes through to the speed, not as a dashed text row (1.5 rad/s a row): a
 group reading T where the speed meets the line read it 4 columns (10 ms, -19 %) early."""
 
 from __future__ import annotations
@@ -24,21 +24,17 @@ def _area(lines: list[str]) -> tuple[int, int, int, int]:
 
 
 def _level(lines: list[str]) -> tuple[int, int]:
-    """The (text row, dot row from the top) of the line drawn across the whole data area:
-    the dot row every cell of a row has (the marks of the cursor and the input aside)."""
+    """The (text row, dot row from the top) of the line drawn across the data area: the one
+    dot row that all but a few cells of a text row have (the cells the speed passes through
+    are the speed's, the marks of the cursor and the input aside)."""
     r0, r1, c0, c1 = _area(lines)
+    width = c1 - c0 + 1
     found = [
         (r, d)
         for r in range(r0, r1 + 1)
         for d, bits in enumerate(DOT_ROW_BITS)
-        if all(
-            (b := _braille(lines[r][c])) is None
-            and lines[r][c] != " "
-            or b is not None
-            and b & bits == bits
-            for c in range(c0, c1 + 1)
-        )
-        and sum(_braille(lines[r][c]) is not None for c in range(c0, c1 + 1)) > (c1 - c0) // 2
+        if sum((b := _braille(lines[r][c])) is not None and b == bits for c in range(c0, c1 + 1))
+        > 0.75 * width
     ]
     assert len(found) == 1, ("no level drawn at a dot row's height", found, lines[r0 : r1 + 1])
     return found[0]
@@ -47,7 +43,7 @@ def _level(lines: list[str]) -> tuple[int, int]:
 def _meets(lines: list[str], row: int, dot: int) -> float:
     """Where the plotted speed crosses the level, as read off the plot: half-way between the
     last column where all its dots lie under the level's dot row and the first where one lies
-    above it (the dots on the level's own row merge with it)."""
+    above it (dots on the level's own row are the speed's or the level's alike)."""
     r0, _, c0, c1 = _area(lines)
     level = 4 * row + dot
     under, above = None, None

@@ -112,10 +112,11 @@ def level_dot_row(value: float, lo: float, hi: float, rows: int) -> tuple[int, i
 
 def draw_levels(text: Text, levels: Sequence[tuple[float, str]], ylim: tuple[float, float]) -> None:
     """Draw each level (value, colour) of ``levels`` into the plot ``text`` plotext built, in
-    place: one row of braille dots at the value's own height across the data area, merged
-    with the dots of the lines there (a curve crossing it shows where it meets it, within
-    a dot row); a cell holding another mark (the cursor, a time line, the input's dots) is
-    left as it is. A cell the level alone fills gets the level's colour."""
+    place: one row of braille dots at the value's own height across the data area, in the
+    level's colour, in the empty cells only: a cell a line passes through stays that line's,
+    so a curve crossing the level is seen whole, rising to the level's height where it
+    meets it (merged into the level's cells, the speed's dots a row under the level read as
+    touching it 3 columns early; a braille trace drawn by plotext over the curve hid it)."""
     plain = text.plain
     lines = plain.split("\n")
     top = next((k for k, ln in enumerate(lines) if "┌" in ln and "┐" in ln), None)
@@ -139,8 +140,6 @@ def draw_levels(text: Text, levels: Sequence[tuple[float, str]], ylim: tuple[flo
             if ch == " ":
                 chars[k] = chr(BRAILLE_BASE | dots)
                 paint.append((k, colour))
-            elif BRAILLE_BASE <= ord(ch) <= BRAILLE_BASE + 0xFF:
-                chars[k] = chr(ord(ch) | dots)
     text.plain = "".join(chars)
     for k, colour in paint:
         text.stylize(colour, k, k + 1)
