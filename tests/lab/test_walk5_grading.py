@@ -73,10 +73,10 @@ def test_an_answer_with_nothing_to_compare_it_with_is_stored_not_ticked(tmp_path
         assert s.enter("own.T", "57").ok
         assert s.step_status("task12") == "unjudged"
         view = views.entry(s, "own.T")
-        # what the value it is judged by waits for, and where (walk 8, D7)
+        # what the value it is judged by waits for, and where (walk 8, D7); the 63 % reading
+        # needs only the run's speed, no u_ss (walk 18, D4)
         assert view is not None and view.feedback == (
-            "○ stored, not judged yet: the value to compare with needs a step run (Task 10) "
-            "and u_ss at the steps' voltage (Task 4)"
+            "○ stored, not judged yet: the value to compare with needs a step run (Task 10)"
         )
         assert s.enter("own.f", "1,855").ok
         assert s.step_status("table") == "unjudged"

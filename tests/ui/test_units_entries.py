@@ -112,7 +112,8 @@ async def test_the_zoom_note_names_f9_as_the_footer_does(quiet):
 
 async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(quiet):
     """It said '0 rising steps': it meant steps with results, which need a u_ss (walk 10,
-    D4: not the whole table of Tasks 4-9, as it then said)."""
+    D4: not the whole table of Tasks 4-9, as it then said). The rises and T need only the
+    speed (walk 18, D4): K says it waits for u_ss."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await start(pilot)
@@ -121,7 +122,12 @@ async def test_a_run_before_the_table_is_filled_says_why_there_are_no_results(qu
         await goto(pilot, "task11")
         await settle(pilot)
         note = str(app.screen.query_one("#zoom-note").render())
-        assert "0 rises" not in note and "needs u_ss at the steps' voltage (Task 4)" in note
+        assert "0 rises" not in note and "rise 1 of 4" in note, note  # T needs no u_ss
+        lines = str(app.screen.query_one("#results-lines").render())
+        assert (
+            "K, J, the model and omega at 5 V: not yet, needs u_ss at the steps' voltage (Task 4)"
+            in lines
+        )
         enter_all(app, TABLE)
         await goto(pilot, "table")
         await goto(pilot, "task11")

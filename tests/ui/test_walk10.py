@@ -117,8 +117,13 @@ async def test_task11_with_a_run_and_no_u_ss_asks_for_the_u_ss_alone(quiet):
     async with app.run_test(size=(80, 24)) as pilot:
         await _task11_with_a_run_alone(pilot)
         note, lines = _text(app, "#zoom-note"), _text(app, "#results-lines")
-        assert note.endswith("no results yet: needs u_ss at the steps' voltage (Task 4)"), note
-        assert lines == "no step result yet: needs u_ss at the steps' voltage (Task 4)", lines
+        # the rises and the speed's readings need no u_ss (walk 18, D4); K alone waits for it
+        assert "rise 1 of 4" in note, note
+        assert (
+            "K, J, the model and omega at 5 V: not yet, needs u_ss at the steps' voltage (Task 4)"
+            in lines
+            and "R (Task 2)" not in lines
+        ), lines
         with app.session as s:
             s.enter("u_ss@4.5", "4,05")
         await goto(pilot, "task12")
@@ -130,22 +135,22 @@ async def test_task11_with_a_run_and_no_u_ss_asks_for_the_u_ss_alone(quiet):
 async def test_ctrl_r_with_nothing_computed_records_nothing_and_says_so(quiet):
     """D5 (walk 10, walk 3): Ctrl+R on Task 11 with a run but no u_ss showed dashes, said
     'computed values shown', and the session recorded both values as shown then; the report
-    later said they were revealed at that time. Now nothing is recorded, the notice says
-    what is missing; once u_ss is in, Ctrl+R shows and records them (and the comparisons
-    say so, with no notice)."""
+    later said they were revealed at that time. Now only what is computed is shown and
+    recorded: omega_ss in the steps, from the speed alone (walk 18, D4); K once u_ss is in,
+    when Ctrl+R shows and records it (and the comparisons say so, with no notice)."""
     app = quiet()
     async with app.run_test(size=(80, 24)) as pilot:
         await _task11_with_a_run_alone(pilot)
         said = heard_notifications(app)
         await pilot.press("ctrl+r")
         await settle(pilot)
-        assert said == [
-            "nothing to show yet: what this step computes needs u_ss at the steps' voltage "
-            "(Task 4); press Ctrl+R again once it is there"
-        ], said
-        assert "revealed before answering" not in _text(app, "#compare")
+        # omega_ss in the steps needs only the speed (walk 18, D4): it is shown and recorded;
+        # K, which divides by u_ss, is neither
+        assert said == [], said
+        assert "K = " not in _text(app, "#results-lines")
         with app.session as s:
-            assert s.shown() == {} and s.revealed() == set()
+            assert s.revealed() == {"own.omega_step"}
+            assert {k: v.by for k, v in s.shown().items()} == {"own.omega_step": "reveal"}
             s.enter("u_ss@4.5", "4,05")
         await goto(pilot, "task12")
         await goto(pilot, "task11")
@@ -153,7 +158,7 @@ async def test_ctrl_r_with_nothing_computed_records_nothing_and_says_so(quiet):
         await settle(pilot)
         # said in the step's comparisons, not in a notice over the step (issue 20)
         assert "revealed before answering (Ctrl+R): the report says so" in _text(app, "#compare")
-        assert len(said) == 1, said
+        assert said == [], said
         assert "K = " in _text(app, "#results-lines")
         with app.session as s:
             assert s.revealed() == {"own.omega_step", "own.K"}

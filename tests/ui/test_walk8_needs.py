@@ -18,12 +18,13 @@ WITHOUT_R = {k: v for k, v in TABLE.items() if k != "R"}
 
 
 def test_every_derived_value_names_the_readings_it_waits_for():
-    """The one table of inputs, followed down to the readings: J waits for the run, the u_ss
-    the run's K and T divide by, and R;
+    """The one table of inputs, followed down to the readings: J waits for the run, R and a
+    row; the run's K for the u_ss it divides by, its T for nothing else;
     a row without i_ss waits for it alone once R and another row are there."""
     nothing = missing("J", lambda name: False)
-    assert nothing[:3] == ("run", "u_ss@steps", "R")
+    assert nothing[:3] == ("run", "R", "row")  # the row's u_ss: not one for T (walk 18, D4)
     assert missing("K", lambda name: False) == ("run", "u_ss@steps")  # not R: walk 10, D4
+    assert missing("T", lambda name: False) == ("run",)  # the speed alone: walk 18, D4
     assert "i_ss" in missing("k_v@row", lambda name: name != "i_ss")
     assert missing("f@row", lambda name: name != "i_ss") == ("i_ss",)
     assert missing("k_v", lambda name: True) == ()

@@ -58,7 +58,8 @@ NEEDS: dict[str, tuple[str, ...]] = {
     "f": ("k_a", "row"),
     "f@row": ("omega_ss", "i_ss", "k_a"),
     "K": ("run", "u_ss@steps"),
-    "T": ("run", "u_ss@steps"),
+    "T": ("run",),
+    "omega_step": ("run",),
     "J": ("T", "R", "k_v", "k_a", "f"),
     "model": ("K", "T"),
     "omega_5": ("K",),
@@ -69,8 +70,9 @@ NEEDS: dict[str, tuple[str, ...]] = {
 }
 """Each derived value and what it is computed from: inputs (:data:`INPUTS`) or other derived
 values. ``k_v@row``, ``f@row``: a row's own (k_v = (u_ss - R i_ss) / omega_ss, f = k_a i_ss
-/ omega_ss); ``k_v``, ``k_a``, ``f``: the final ones (medians over the complete rows); K, T
-(Tasks 11-12) from the step run and the u_ss it ran at (neither R nor i_ss: walk 10, D4), J (Task 13) from T and the table's constants, the model
+/ omega_ss); ``k_v``, ``k_a``, ``f``: the final ones (medians over the complete rows); K
+(Task 11) from the step run and the u_ss it ran at (neither R nor i_ss: walk 10, D4); T
+and omega_ss in the steps (Tasks 11-12) from the run's speed alone (walk 18, D4); J (Task 13) from T and the table's constants, the model
 (Task 14) and omega at 5 V (Task 15) from K and T. ``*@yours``: the same worked out the
 group's way (K from their omega_ss in the steps, J and the model from their T or the 63 %
 reading, omega at 5 V from their K), as Tasks 11-15 compare the group's values."""

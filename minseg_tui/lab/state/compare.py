@@ -26,7 +26,7 @@ from minseg_tui.lab.content.model_eq import read_model
 from minseg_tui.lab.content.steps import FIELDS, Field, RunPlan
 from minseg_tui.lab.saving.kept import ResponseFigures
 from minseg_tui.lab.saving.store import read_regular
-from minseg_tui.lab.state.results import Comparison, Results
+from minseg_tui.lab.state.results import Comparison, Results, response_figures
 from minseg_tui.model.identify import U_TASK15, ResponseResult
 from minseg_tui.model.motor import inertia_from_time_constant
 from minseg_tui.quantities import (
@@ -245,6 +245,12 @@ def two_T(T: float, T_63: float | None, whose: str = "your", dead_time: float = 
     )
 
 
+SPEED_ONLY: frozenset[str] = frozenset({"own.omega_step", "own.T"})
+"""The group's values whose computed ones need only the run's speed, no u_ss (walk 18, D4):
+compared with :attr:`~minseg_tui.lab.state.results.Results.speed_only` when the table has
+no u_ss yet."""
+
+
 def two_T_of(step: ResponseResult, whose: str = "your") -> str:
     """:func:`two_T` of a step result."""
     return two_T(step.T, step.T_63, whose, step.dead_time)
@@ -287,6 +293,9 @@ def compare_fields(
     for fld in fields:
         if not fld.compare:
             continue
+        st = res.step
+        if st is None and fld.key in SPEED_ONLY and res.speed_only is not None:
+            st = response_figures(res.speed_only)  # T needs only the speed (walk 18, D4)
         T_used: float | None = None
         own: float | str | None = text(fld.key) if fld.kind == "text" else value(fld.key)
         computed: float | str | None = res.lookup(fld.compare)

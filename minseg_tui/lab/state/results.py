@@ -115,6 +115,11 @@ class Results:
     """Those of :attr:`problems` that keep the table's k_v, k_a and f (and so J) from being
     computed (R not entered, no complete row, a row left out): not why the run gives no K
     or T, which need only the run and a u_ss (walk 10, D4)."""
+    speed_only: ResponseResult | None = None
+    """The run's rises and T (the 63 % reading and the least squares) from its speed alone,
+    when the table has no u_ss yet to map the requested voltage to the one on the motor:
+    T needs no u_ss (walk 18, D4), but its K (and u_ss, J, the model, omega at 5 V) here are
+    of the requested voltage, none of Tasks 11-15's: only the rises and T are to be read."""
 
     @property
     def run_problems(self) -> tuple[str, ...]:
@@ -311,6 +316,14 @@ def compute(
         """The table cannot give Tasks 6-9: the run's Tasks 11-12 alone, which need neither
         R nor k_v (the plot, omega_ss, K and the 63 % reading)."""
         name = run.name if run and read else None
+        if log is not None and not pairs:
+            try:  # u_ss is the requested voltage here: only the rises and T are kept
+                speed = response_alone(log, [])
+            except (IdentifyRefused, LogRefused, ZeroVoltRefusal, ArithmeticError, ValueError):
+                speed = None  # why is said once a u_ss lets the step be worked out
+            return Results(
+                None, name, tuple(problems), table_problems=table_problems, speed_only=speed
+            )
         if log is None or not pairs:
             return Results(None, name, tuple(problems), table_problems=table_problems)
         try:

@@ -700,7 +700,7 @@ _DERIVED: dict[str, str] = {
     "own.k_v": "k_v",
     "own.k_a": "k_a",
     "own.f": "f",
-    "own.omega_step": "K",
+    "own.omega_step": "omega_step",
     "own.K": "K",
     "own.T": "T",
     "own.J": "J",
@@ -1252,6 +1252,42 @@ def results(session: Session, step_id: str) -> ResultsView:
             for k in lab_compare.ANSWERED_FIRST
             if k not in conceal and (k != "own.J" or ident is not None)
         )
+    elif res.speed_only is not None:
+        # no u_ss yet: omega_ss in the steps, T and the rises need only the speed; K (which
+        # divides by u_ss) and what follows from it wait (walk 18, D4)
+        sp = res.speed_only
+        conceal = hidden(session)
+        here = {f.key for f in step(step_id).fields}
+
+        def speed_line(key: str, line: str, what: str, task: str) -> str:
+            if key not in conceal:
+                return line
+            if key in here:
+                return f"{what}: shown once you enter yours ({REVEAL_KEY}: lab assistant)"
+            return f"{what}: shown once you enter yours on {task}"
+
+        lines += [
+            speed_line(
+                "own.omega_step",
+                f"omega_ss in the steps = {format_quantity(sp.omega_ss, 'rad/s')}",
+                "omega_ss in the steps",
+                "Task 11",
+            ),
+            speed_line(
+                "own.T",
+                f"T (63 %) = {format_quantity(sp.T_63, shown_unit('s'))}   "
+                f"T (least squares) = {format_quantity(sp.T, shown_unit('s'))}"
+                f"{_ci(sp.T_ci, 's') if sp.T_determined else f', 95 % interval {NOT_DETERMINED}'}",
+                "T",
+                "Task 12",
+            ),
+            *([lab_compare.two_T_of(sp)] if "own.T" not in conceal else []),
+            "K, J, the model and omega at 5 V: not yet, "
+            + lab_needs.needs(waits_for(session, "K"))
+            + "; omega_ss and T need only the speed",
+        ]
+        rises = tuple(rise_zoom(s, sp.T, log.ts if log is not None else 0.0) for s in sp.rises)
+        shows = frozenset({"own.omega_step", "own.T"} - conceal)
     # without a step result, the table's problems are not why (K and T need only the run and a
     # u_ss: ``waiting`` says what is missing); with one, J's line points to them
     problems = list(res.problems if st_run is not None else res.run_problems)

@@ -24,7 +24,7 @@ from minseg_tui.quantities import SPEED_AXIS, TIME_AXIS, axis_label, format_cons
 from minseg_tui.ui.keys import PanelKeys, key_hint
 from minseg_tui.ui.messages import RevealRequested
 from minseg_tui.ui.panels.view_panel import ViewPanel
-from minseg_tui.ui.widgets.plots import Trace, TracePlot
+from minseg_tui.ui.widgets.plots import LEVEL, Trace, TracePlot
 from minseg_tui.ui.widgets.prose import Prose
 
 CURSOR_JUMP = 5
@@ -216,7 +216,7 @@ class ResultsPanel(ViewPanel[ResultsView], PanelKeys):
         lo, hi = z0 - w.t0, z1 - w.t0
         if x.size and self.step.id == "task11":
             hi = float(x[-1])  # to its last sample, not a column past it
-        traces.append(Trace([lo, hi], [w.level, w.level], "63 %", "-"))
+        traces.append(Trace([lo, hi], [w.level, w.level], "63 %", LEVEL))
         read_T = "own.T" not in v.hidden  # the crossing is Task 12's answer
         if w.T_63 is not None and read_T:
             traces.append(Trace([w.T_63, w.T_63], [w.omega0, w.level], "crossing", "|"))

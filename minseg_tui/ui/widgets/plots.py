@@ -35,6 +35,7 @@ GLYPHS: dict[str, str] = {
     "-": "--",
     "|": "|",
     "┆": "┆",
+    "level": "⠒⠒",
 }
 """How the legend shows each marker (what the trace looks like on the plot)."""
 
@@ -81,8 +82,68 @@ def drawn(tr: Trace) -> tuple[list[float], list[float]]:
     return x, y
 
 
-GUIDES = frozenset({"-", "|", "┆"})
+GUIDES = frozenset({"-", "|", "┆", "level"})
 """Markers of lines that guide the eye (a level, a time, a noise band): drawn under the data."""
+
+LEVEL = "level"
+"""The marker of a level drawn one braille dot high at its own height (:func:`draw_levels`),
+not a text row: a dashed 63 % line filled a whole row (1.5 rad/s at 80x24), so the speed
+'met' it 4 columns (10 ms) before it reached the level (walk 18, D3)."""
+
+BRAILLE_BASE = 0x2800
+"""The empty braille cell; its dots are bits of the code point."""
+
+DOT_ROW_BITS = (0x01 | 0x08, 0x02 | 0x10, 0x04 | 0x20, 0x40 | 0x80)
+"""The bits of both dots of each of a braille cell's four dot rows, from the top."""
+
+
+def level_dot_row(value: float, lo: float, hi: float, rows: int) -> tuple[int, int] | None:
+    """The (text row from the top, dot row from the top within it) where plotext puts a
+    braille point of ``value`` on a y axis ``lo``..``hi`` of ``rows`` text rows (plotext:
+    dot row floor(0.5 + (4 rows - 1) (value - lo) / (hi - lo)) from the bottom); None off
+    the plot."""
+    if not hi > lo or rows < 1 or not math.isfinite(value):
+        return None
+    dot = math.floor(round(0.5 + (4 * rows - 1) * (value - lo) / (hi - lo), 8))
+    if not 0 <= dot < 4 * rows:
+        return None
+    return rows - 1 - dot // 4, 3 - dot % 4
+
+
+def draw_levels(text: Text, levels: Sequence[tuple[float, str]], ylim: tuple[float, float]) -> None:
+    """Draw each level (value, colour) of ``levels`` into the plot ``text`` plotext built, in
+    place: one row of braille dots at the value's own height across the data area, in the
+    level's colour, in the empty cells only: a cell a line passes through stays that line's,
+    so a curve crossing the level is seen whole, rising to the level's height where it
+    meets it (merged into the level's cells, the speed's dots a row under the level read as
+    touching it 3 columns early; a braille trace drawn by plotext over the curve hid it)."""
+    plain = text.plain
+    lines = plain.split("\n")
+    top = next((k for k, ln in enumerate(lines) if "┌" in ln and "┐" in ln), None)
+    bottom = next((k for k, ln in enumerate(lines) if "└" in ln and "┘" in ln), None)
+    if top is None or bottom is None or bottom - top < 2:
+        return
+    first, last = lines[top].index("┌") + 1, lines[top].rindex("┐") - 1
+    starts = [0]
+    for ln in lines[:-1]:
+        starts.append(starts[-1] + len(ln) + 1)
+    chars = list(plain)
+    paint: list[tuple[int, str]] = []
+    for value, colour in levels:
+        at = level_dot_row(value, ylim[0], ylim[1], bottom - top - 1)
+        if at is None:
+            continue
+        row, dots = top + 1 + at[0], DOT_ROW_BITS[at[1]]
+        for col in range(first, last + 1):
+            k = starts[row] + col
+            ch = chars[k]
+            if ch == " ":
+                chars[k] = chr(BRAILLE_BASE | dots)
+                paint.append((k, colour))
+    text.plain = "".join(chars)
+    for k, colour in paint:
+        text.stylize(colour, k, k + 1)
+
 
 MOST_TICKS = 4
 """Most intervals between the labelled ticks of an axis (so at most five labels)."""
@@ -279,6 +340,11 @@ class Canvas(PlotextPlot):
         self.xlim: tuple[float, float] | None = None
         self._drawn: Hashable = None
         """What :meth:`draw` last handed plotext (the key of its build in :data:`_built`)."""
+        self._levels: list[tuple[float, str]] = []
+        """The levels (value, colour) of the traces of marker :data:`LEVEL`, drawn over
+        plotext's build (:func:`draw_levels`)."""
+        self._ylim: tuple[float, float] | None = None
+        """The y axis' limits handed plotext last (None: not laid out)."""
 
     def on_mount(self) -> None:
         super().on_mount()
@@ -340,9 +406,13 @@ class Canvas(PlotextPlot):
         # (a level, a marker line: '-' and '|'), then the data, which must show where it
         # crosses them (a dashed 63 % line hid the speed at its crossing); each trace keeps
         # its place in the list for its colour
+        self._levels, self._ylim = [], None
         for k in drawing_order(self.traces):
             tr = self.traces[k]
-            if len(tr.x):
+            if len(tr.x) and tr.marker == LEVEL:  # drawn by our own code (_build)
+                ys += [v for v in tr.y if math.isfinite(v)]
+                self._levels.append((float(tr.y[0]), _colour(k, tr)[1].removeprefix("ansi_")))
+            elif len(tr.x):
                 x, y = drawn(tr)
                 if self.size.width:
                     x, y = thin(x, y, POINTS_PER_COLUMN * self.size.width)
@@ -361,6 +431,7 @@ class Canvas(PlotextPlot):
         rows = self.size.height - 3 - bool(self._title) - bool(self._xlabel or self._ylabel)
         if ys and rows >= 2:  # laid out: the rows are known (drawn again on a resize)
             lo, hi, at = row_ticks(min(ys), max(ys), rows)
+            self._ylim = (lo, hi)
             plt.ylim(lo, hi)
             plt.yticks(at, format_ticks(at))
             if xs:
@@ -423,6 +494,8 @@ class Canvas(PlotextPlot):
         if text is None:
             built = super().render()
             assert isinstance(built, Text)
+            if self._levels and self._ylim is not None:
+                draw_levels(built, self._levels, self._ylim)
             _built[key] = text = built
             while len(_built) > BUILDS_KEPT:
                 _built.popitem(last=False)
