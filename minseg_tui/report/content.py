@@ -316,10 +316,14 @@ def _step_section(session: Session) -> Section:
     if s is None:
         # what the run's results wait for (a run, a u_ss), and why a run gave none; not the
         # table's R and rows, which only J needs (walk 10, D4)
-        why = needs(views.waits_for(session, "K"))
-        said = [*res.run_problems, why] if why else list(res.run_problems)
-        sec.blocks.append("No step result yet" + (": " + "; ".join(said) if said else "") + ".")
-        return sec
+        if res.speed_only is None:
+            why = needs(views.waits_for(session, "K"))
+            said = [*res.run_problems, why] if why else list(res.run_problems)
+            sec.blocks.append("No step result yet" + (": " + "; ".join(said) if said else "") + ".")
+            return sec
+        # omega_ss and T need only the run, as the screen shows them (walk 18, D4)
+        s = res.speed_only
+        sec.blocks.append(views.speed_only_waits(session) + ".")
     rows = own_first.step_rows(session)
     sec.blocks.append(
         "Each value the group worked out, first as the group gave it, then the group's way "

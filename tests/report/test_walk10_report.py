@@ -30,8 +30,17 @@ def test_a_run_without_u_ss_names_only_the_u_ss_as_missing(tmp_path: Path) -> No
     the run and a u_ss to divide by."""
     with Session.create(tmp_path, ["Per A", "Kim"], date="2026-11-27", clock=Clock()) as s:
         record_square_wave(s, seed=21)
-        line = _no_step_result(_report(s))
-        assert line == "No step result yet: needs u_ss at the steps' voltage (Task 4).", line
+        section = _section(_report(s), STEP)
+        # omega_ss and T need only the run: they stand, as on Tasks 11-12 (walk 18, D4);
+        # what waits names only the u_ss
+        assert (
+            "K, J, the model and omega at 5 V: not yet, needs u_ss at the steps' voltage "
+            "(Task 4); omega_ss and T need only the speed." in section
+        ), section
+        assert "No step result yet" not in section
+        (table,) = _tables(section)
+        assert [r[0] for r in table[1:]] == ["omega_ss in the steps (Task 11)", "T (Task 12)"]
+        assert "ms (95 %" in _row(table, "T (Task 12)")["the program's value (least squares)"]
         s.enter("u_ss@4.5", "4.05 V")  # and then there are results, R and i_ss still empty
         md = _report(s)
     assert "No step result yet" not in _section(md, STEP)

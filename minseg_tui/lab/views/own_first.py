@@ -388,7 +388,8 @@ def table_rows(session: Session, results: Results | None = None) -> tuple[OwnRow
 
 def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow, ...]:
     """Tasks 11-15, the group's value first (:data:`STEP_HEADER`): the group's way beside
-    the program's least-squares value, with why they differ; empty without a step result.
+    the program's least-squares value, with why they differ; before u_ss is given, the rows
+    of omega_ss and T alone (they need only the run); empty without a step result.
     ``results``: those to compare with (default: the session's own); with the numbers the
     session file keeps (the class view), the program's values are those, without intervals."""
     res = session.results() if results is None else results
@@ -397,12 +398,17 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
     kept = res.kept_response if st is None else None
     if st is None and kept is None:
         st = res.response  # the run alone (the table gives no k_v): J waits, the rest stands
-    if st is None and kept is None:
+    speed = res.speed_only if st is None and kept is None else None
+    if st is None and kept is None and speed is None:
         return ()
 
     def program(key: str, unit: str) -> str:
         """The program's value of field ``key`` in ``unit``, and how it was had."""
         q = format_quantity
+        if speed is not None:  # no u_ss yet: only omega_ss and T (walk 18, D4)
+            if key == "own.omega_step":
+                return f"{q(speed.omega_ss, unit)} (the median fitted steady speed of the rises)"
+            return f"{q(speed.T, unit)} ({_interval(speed.T_ci, speed.T_determined, unit)})"
         if st is None:
             return _kept(key, unit)
         if key == "own.omega_step":
@@ -452,6 +458,8 @@ def step_rows(session: Session, results: Results | None = None) -> tuple[OwnRow,
         if step.part != "Results":
             continue
         for c in session.comparisons(step.id, res, GROUPS):
+            if speed is not None and c.key not in lab_compare.SPEED_ONLY:
+                continue
             unit = _unit(session, c)
             own = _own(session, c, unit)
             computed = _value(c.computed, unit)

@@ -711,6 +711,16 @@ _DERIVED: dict[str, str] = {
 values is compared with."""
 
 
+def speed_only_waits(session: Session) -> str:
+    """What Tasks 11-15 wait for while the run gives omega_ss and T but no u_ss is given
+    (walk 18, D4): the screen's line and the report's."""
+    return (
+        "K, J, the model and omega at 5 V: not yet, "
+        + lab_needs.needs(waits_for(session, "K"))
+        + "; omega_ss and T need only the speed"
+    )
+
+
 def waits_for(session: Session, key: str, row: TableRow | None = None) -> tuple[str, ...]:
     """The inputs (:data:`~minseg_tui.lab.content.needs.INPUTS` keys) the value that field
     ``key`` (own.k_v, ...) or derived value ``key`` (k_v, J, k_v@row with ``row``, ...) is
@@ -1282,9 +1292,7 @@ def results(session: Session, step_id: str) -> ResultsView:
                 "Task 12",
             ),
             *([lab_compare.two_T_of(sp)] if "own.T" not in conceal else []),
-            "K, J, the model and omega at 5 V: not yet, "
-            + lab_needs.needs(waits_for(session, "K"))
-            + "; omega_ss and T need only the speed",
+            speed_only_waits(session),
         ]
         rises = tuple(rise_zoom(s, sp.T, log.ts if log is not None else 0.0) for s in sp.rises)
         shows = frozenset({"own.omega_step", "own.T"} - conceal)
