@@ -711,6 +711,19 @@ _DERIVED: dict[str, str] = {
 values is compared with."""
 
 
+def _unless_concealed(
+    conceal: set[str], step_id: str, key: str, line: str, what: str, task: str
+) -> str:
+    """``line`` (a result of Tasks 11-15, field ``key``), or, while it is concealed until the
+    group answers, what it waits for: the group's answer on step ``step_id`` (with the lab
+    assistant's key) or on ``task``."""
+    if key not in conceal:
+        return line
+    if key in {f.key for f in step(step_id).fields}:
+        return f"{what}: shown once you enter yours ({REVEAL_KEY}: lab assistant)"
+    return f"{what}: shown once you enter yours on {task}"
+
+
 def speed_only_waits(session: Session) -> str:
     """What Tasks 11-15 wait for while the run gives omega_ss and T but no u_ss is given
     (walk 18, D4): the screen's line and the report's."""
@@ -1195,13 +1208,8 @@ def results(session: Session, step_id: str) -> ResultsView:
         conceal = hidden(session)
 
         def shown(key: str, line: str, what: str, task: str) -> str:
-            if key not in conceal:
-                return line
-            if key in keys_here:
-                return f"{what}: shown once you enter yours ({REVEAL_KEY}: lab assistant)"
-            return f"{what}: shown once you enter yours on {task}"
+            return _unless_concealed(conceal, step_id, key, line, what, task)
 
-        keys_here = {f.key for f in step(step_id).fields}
         lines += [
             shown(
                 "own.omega_step",
@@ -1267,14 +1275,9 @@ def results(session: Session, step_id: str) -> ResultsView:
         # divides by u_ss) and what follows from it wait (walk 18, D4)
         sp = res.speed_only
         conceal = hidden(session)
-        here = {f.key for f in step(step_id).fields}
 
         def speed_line(key: str, line: str, what: str, task: str) -> str:
-            if key not in conceal:
-                return line
-            if key in here:
-                return f"{what}: shown once you enter yours ({REVEAL_KEY}: lab assistant)"
-            return f"{what}: shown once you enter yours on {task}"
+            return _unless_concealed(conceal, step_id, key, line, what, task)
 
         lines += [
             speed_line(

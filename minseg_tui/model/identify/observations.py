@@ -14,6 +14,7 @@ from enum import Enum
 from typing import ClassVar
 
 import numpy as np
+from numpy.typing import NDArray
 
 from minseg_tui.model.identify.risefit import RISE_SPAN, Rise, TimeConstantFit
 from minseg_tui.model.identify.rises import rise_windows
@@ -681,6 +682,66 @@ CREEP_SHARE: float = 0.03
 the first and the last tenth of the rows after the rise's own (:class:`TRowsApart`)."""
 
 
+@dataclass(frozen=True)
+class _AfterRise:
+    """The first rise of a log, for :func:`creep_after_rise` and :func:`holds_level`: board
+    times t (s) and speeds w (rad/s) of the rows the fit used, the step's row k, the rise's own
+    rows (up to :data:`RISE_SPAN` rise_T after the wheel answers) and the rows after them up to
+    the next edge, with the first and last tenth of those rows' mean speeds and the median
+    speed before the step (rad/s)."""
+
+    t: NDArray[np.float64]
+    w: NDArray[np.float64]
+    k: int
+    rise_rows: NDArray[np.int64]
+    later: NDArray[np.int64]
+    first: float
+    last: float
+    before: float
+
+    @property
+    def creeps(self) -> bool:
+        """The speed moves by more than :data:`CREEP_SHARE` of the rise between the first and
+        the last tenth of the rows after the rise's own."""
+        return abs(self.last - self.first) > CREEP_SHARE * abs(self.first - self.before)
+
+    @property
+    def holds(self) -> bool:
+        """The speed moves by at most that share: it holds level (neither, on a NaN)."""
+        return abs(self.last - self.first) <= CREEP_SHARE * abs(self.first - self.before)
+
+
+def _after_rise(log: RunLog, fit: TimeConstantFit) -> _AfterRise | None:
+    """:class:`_AfterRise` of ``log``'s first rise under ``fit``, or None where the fit has no
+    rise_T, the log no rise window, or fewer than 20 rows follow the rise's own."""
+    if fit.rise_T is None:
+        return None
+    t = log.board_time()
+    w = np.asarray(log.omega, dtype=float)
+    windows, _ = rise_windows(log)
+    if not windows:
+        return None
+    win = windows[0]
+    k = win.edge.start
+    start = float(t[k]) + max(fit.dead_time, fit.shift, 0.0)
+    rows = np.arange(k + 1, int(win.post_last) + 1)
+    own = t[rows] <= start + RISE_SPAN * fit.rise_T
+    later = rows[~own]
+    if later.size < 20:
+        return None
+    tenth = later.size // 10
+    return _AfterRise(
+        t,
+        w,
+        k,
+        rows[own],
+        later,
+        float(np.mean(w[later[:tenth]])),  # means: a count's steps alternate
+        float(np.mean(w[later[-tenth:]])),
+        float(np.median(w[win.pre_from : k + 1])),
+    )
+
+
 def creep_after_rise(
     log: RunLog, fit: TimeConstantFit
 ) -> tuple[tuple[float, float], float, tuple[float, float]] | None:
@@ -689,36 +750,18 @@ def creep_after_rise(
     come (see :class:`TRowsApart`), or None. ``log``: the rows the fit used."""
     if fit.rise_T is None or not fit.T > fit.rise_T:
         return None
-    t = log.board_time()
-    w = np.asarray(log.omega, dtype=float)
-    model = np.full(t.size, np.nan)
-    model[1:] = np.diff(fit.predicted) / np.diff(t)
-    windows, _ = rise_windows(log)
-    if not windows:
+    r = _after_rise(log, fit)
+    if r is None or r.rise_rows.size < 5 or not r.creeps:
         return None
-    win = windows[0]
-    k = win.edge.start
-    start = float(t[k]) + max(fit.dead_time, fit.shift, 0.0)
-    end = int(win.post_last)
-    rise_rows = np.arange(k + 1, end + 1)
-    rise_rows = rise_rows[t[rise_rows] <= start + RISE_SPAN * fit.rise_T]
-    later = np.arange(k + 1, end + 1)
-    later = later[t[later] > start + RISE_SPAN * fit.rise_T]
-    if rise_rows.size < 5 or later.size < 20:
-        return None
-    tenth = later.size // 10
-    first = float(np.mean(w[later[:tenth]]))  # means: a count's steps alternate
-    last = float(np.mean(w[later[-tenth:]]))
-    before = float(np.median(w[win.pre_from : k + 1]))
-    if not abs(last - first) > CREEP_SHARE * abs(first - before):
-        return None
-    gap = w[rise_rows] - model[rise_rows]
+    model = np.full(r.t.size, np.nan)
+    model[1:] = np.diff(fit.predicted) / np.diff(r.t)
+    gap = r.w[r.rise_rows] - model[r.rise_rows]
     gap = gap[np.isfinite(gap)]
     if gap.size < 5:
         return None
     means = np.convolve(gap, np.ones(5) / 5.0, mode="valid")
-    after = (float(t[later[0]] - t[k]), float(t[later[-1]] - t[k]))
-    return (first, last), float(np.max(np.abs(means))), after
+    after = (float(r.t[r.later[0]] - r.t[r.k]), float(r.t[r.later[-1]] - r.t[r.k]))
+    return (r.first, r.last), float(np.max(np.abs(means))), after
 
 
 def holds_level(log: RunLog, fit: TimeConstantFit) -> bool:
@@ -726,25 +769,8 @@ def holds_level(log: RunLog, fit: TimeConstantFit) -> bool:
     the wheel answers to the next edge) holds level: the means of their first and last tenth
     differ by at most :data:`CREEP_SHARE` of the rise (at least 20 such rows). ``log``: the
     rows the fit used."""
-    if fit.rise_T is None:
-        return False
-    t = log.board_time()
-    w = np.asarray(log.omega, dtype=float)
-    windows, _ = rise_windows(log)
-    if not windows:
-        return False
-    win = windows[0]
-    k = win.edge.start
-    start = float(t[k]) + max(fit.dead_time, fit.shift, 0.0)
-    later = np.arange(k + 1, int(win.post_last) + 1)
-    later = later[t[later] > start + RISE_SPAN * fit.rise_T]
-    if later.size < 20:
-        return False
-    tenth = later.size // 10
-    first = float(np.mean(w[later[:tenth]]))
-    last = float(np.mean(w[later[-tenth:]]))
-    before = float(np.median(w[win.pre_from : k + 1]))
-    return abs(last - first) <= CREEP_SHARE * abs(first - before)
+    r = _after_rise(log, fit)
+    return r is not None and r.holds
 
 
 def _levels(
