@@ -448,8 +448,12 @@ class StepPane(FieldForm):
             y = min(max(self.scroll_y, end - view.height, bottom - view.height), top)
             if y > 0:
                 y = min(y, max(top - HEADING_ROWS, 0))
-            self.scroll_to(y=y, animate=False, immediate=True)
+            # the regions stay those of the scroll measured at until the screen draws the
+            # new one: the next placing waits for that draw, as for another placing's scroll
+            # (measured at once, the second placing read the entry at scroll 20 where the
+            # screen had drawn it at 11, and put it 9 rows above the view: 1 run in 6)
             seen[0] = self.scroll_y
+            self.scroll_to(y=y, animate=False, immediate=True)
             if again:  # once more when the layout has settled
                 self.call_after_refresh(place, False)
 
