@@ -1,10 +1,13 @@
 """Tests that read ../shared/data carry the ``shared_data`` mark. Where that folder is absent
 they are not run and the session ends with one line saying so; with CI=true they fail."""
 
+import atexit
 import gc
 import hashlib
 import os
 import pickle
+import shutil
+import tempfile
 import threading
 from collections.abc import Iterator
 from pathlib import Path
@@ -36,6 +39,21 @@ test costs 2 s more, and no collector at all saves those 2.7 s for 2.3 times the
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "shared_data: reads ../shared/data (real motor logs)")
     gc.set_threshold(*GC_THRESHOLDS)
+    _own_port_locks()
+
+
+def _own_port_locks() -> None:
+    """Each test process (each pytest-xdist worker, and the programs its tests start) keeps
+    the lock files of the ports it opens in a folder of its own (``XDG_RUNTIME_DIR``, which
+    :func:`minseg_tui.device.port.lock_path` reads). A port's lock is named after its path,
+    and the pseudo-terminals the tests open as boards are numbered by the system: a lock on
+    /dev/pts/0 still held on one worker made a new board of the other worker, given
+    /dev/pts/0 again, 'in use by minseg-tui (pid N)' (once, in a full run with one core busy
+    at stop 39). Within one worker the locks work as on a lab PC, and the tests of them see
+    them."""
+    folder = tempfile.mkdtemp(prefix="minseg-tui-locks-")
+    os.environ["XDG_RUNTIME_DIR"] = folder
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
 
 
 def pytest_collection_finish(session: pytest.Session) -> None:
