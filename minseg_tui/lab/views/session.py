@@ -1203,13 +1203,13 @@ def results(session: Session, step_id: str) -> ResultsView:
     rises: tuple[RiseZoom, ...] = ()
     shows: frozenset[str] = frozenset()
     st_run = res.response_result
+    conceal = hidden(session)
+
+    def shown(key: str, line: str, what: str, task: str) -> str:
+        return _unless_concealed(conceal, step_id, key, line, what, task)
+
     if st_run is not None:
         st = st_run
-        conceal = hidden(session)
-
-        def shown(key: str, line: str, what: str, task: str) -> str:
-            return _unless_concealed(conceal, step_id, key, line, what, task)
-
         lines += [
             shown(
                 "own.omega_step",
@@ -1274,19 +1274,14 @@ def results(session: Session, step_id: str) -> ResultsView:
         # no u_ss yet: omega_ss in the steps, T and the rises need only the speed; K (which
         # divides by u_ss) and what follows from it wait (walk 18, D4)
         sp = res.speed_only
-        conceal = hidden(session)
-
-        def speed_line(key: str, line: str, what: str, task: str) -> str:
-            return _unless_concealed(conceal, step_id, key, line, what, task)
-
         lines += [
-            speed_line(
+            shown(
                 "own.omega_step",
                 f"omega_ss in the steps = {format_quantity(sp.omega_ss, 'rad/s')}",
                 "omega_ss in the steps",
                 "Task 11",
             ),
-            speed_line(
+            shown(
                 "own.T",
                 f"T (63 %) = {format_quantity(sp.T_63, shown_unit('s'))}   "
                 f"T (least squares) = {format_quantity(sp.T, shown_unit('s'))}"
