@@ -124,15 +124,16 @@ def test_a_dead_time_read_off_a_running_median_says_where_the_first_count_came()
     assert float(m.group(1)) > float(m.group(2)) + 1e3 * 0.0063
 
 
-def driver_speed_log(seed: int, over: int) -> RunLog:
-    """A 7.5 V step at 20 ms on a motor (T 60 ms, 16 rad/s) whose angle a loop without a
-    clock logs in whole degrees every 5.5-7 ms, as an EV3's public ev3dev log reads; the
-    speed column is the angle's mean speed over the last ``over`` intervals (1: over each
-    interval, as the lab logs it; 3: a driver's estimate, a sample late)."""
+def driver_speed_log(seed: int, over: int, delay: float = 0.0) -> RunLog:
+    """A 7.5 V step at 20 ms on a motor (T 60 ms, 16 rad/s) that answers ``delay`` s after
+    it, whose angle a loop without a clock logs in whole degrees every 5.5-7 ms, as an EV3's
+    public ev3dev log reads; the speed column is the angle's mean speed over the last
+    ``over`` intervals (1: over each interval, as the lab logs it; 3: a driver's estimate,
+    a sample late)."""
     rng = np.random.default_rng(seed)
     t = np.cumsum(np.concatenate(([0.0], rng.uniform(0.0055, 0.007, 160))))
     u = np.where(t >= 0.02, 7.5, 0.0)
-    after = np.maximum(t - 0.02, 0.0)
+    after = np.maximum(t - 0.02 - delay, 0.0)
     angle = 16.0 * (after - 0.06 * (1 - np.exp(-after / 0.06)))
     theta = np.radians(np.floor(np.degrees(angle)))
     back = np.maximum(np.arange(t.size) - over, 0)
@@ -225,20 +226,11 @@ def test_analyze_says_when_the_speed_column_runs_behind_the_angle(tmp_path, caps
 
 
 def late_driver_log(seed: int, over: int) -> RunLog:
-    """As :func:`driver_speed_log` (over ``over`` intervals), on a motor that answers 10 ms
+    """:func:`driver_speed_log` (over ``over`` intervals) on a motor that answers 10 ms
     after the step: an EV3 under ev3dev, where the check names a delay that the speed
     column's own lag makes about a sample longer (16 ms on the public log, its speed 8.8 ms
     behind its angle)."""
-    rng = np.random.default_rng(seed)
-    t = np.cumsum(np.concatenate(([0.0], rng.uniform(0.0055, 0.007, 160))))
-    u = np.where(t >= 0.02, 7.5, 0.0)
-    after = np.maximum(t - 0.03, 0.0)
-    angle = 16.0 * (after - 0.06 * (1 - np.exp(-after / 0.06)))
-    theta = np.radians(np.floor(np.degrees(angle)))
-    back = np.maximum(np.arange(t.size) - over, 0)
-    span = np.where(t > t[back], t - t[back], 1.0)
-    omega = (theta - theta[back]) / span
-    return RunLog(t=t, u=u, omega=omega, extra={"theta": theta}, source="ev3.csv")
+    return driver_speed_log(seed, over, delay=0.01)
 
 
 def write_log(path, log: RunLog) -> None:
