@@ -20,10 +20,9 @@ from minseg_tui.lab.views.check_says import (
     where,
 )
 from minseg_tui.lab.views.check_text import deviation_row
-from minseg_tui.model.check import check
 from minseg_tui.model.check import result as rs
 from minseg_tui.model.check.deviations import Deviation, deviations, edge_count, regions
-from tests.model.realcheck import REAL, analyze, on
+from tests.model.realcheck import REAL, analyze, ev3_gap, on
 
 ONE_RISE = np.array([0.0, 0.0, 4.0, 4.0, 4.0, 4.0])
 """A step up and nothing else: one rising edge, no falling one."""
@@ -114,12 +113,7 @@ def test_a_cause_just_over_the_bar_is_uncertain_in_the_students_words_too(tmp_pa
     # ev3-large-duty100 with its data rows 74-76 dropped names a cap at 25.3 %, 0.3 points
     # over the bar (tests/model/test_check_real.py): the full text calls it uncertain, so the
     # lead the screen and the report show must not call it the likely cause
-    lines = (REAL / "ev3-large-duty100" / "step.csv").read_text().splitlines()
-    head = next(i for i, x in enumerate(lines) if not x.startswith("#"))
-    path = tmp_path / "ev3-gap.csv"
-    path.write_text("\n".join(lines[: head + 75] + lines[head + 78 :]) + "\n")
-    log = read_run_log(path)
-    r = check(log.t, log.u, log.omega, ts=float(log.metadata["ts"]), cpr=log.declared_cpr)
+    log, r = ev3_gap(tmp_path)
     assert r.finding.cause == "current_limit"
     assert "the cause is uncertain" in evidence(r.finding)
     lead = " ".join(check_words.lead(r, log.u))

@@ -4,12 +4,14 @@ supports, tests/lab/test_check_plain.py the student's words on four of them. Eac
 share an xdist group (:func:`on`), so one worker checks it once."""
 
 from functools import cache
+from pathlib import Path
 
 import pytest
 
 from minseg_tui.lab.saving.files import read_run_log
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
+from minseg_tui.model.runlog import RunLog
 from tests.shared_data import SHARED_DATA
 
 REAL = SHARED_DATA / "real-motors"
@@ -50,3 +52,15 @@ def on(*names: str) -> pytest.MarkDecorator:
 def logs(*names: str) -> list[object]:
     """``names`` as parameters, each in its log's xdist group (:func:`on`)."""
     return [pytest.param(n, marks=on(n)) for n in names]
+
+
+def ev3_gap(folder: Path) -> tuple[RunLog, CheckResult]:
+    """ev3-large-duty100 with its data rows 74-76 dropped (REAL37's 'gap' variant), written in
+    ``folder``, and its check: a current cap named 0.3 points over the bar, a toss-up."""
+    lines = (REAL / "ev3-large-duty100" / "step.csv").read_text().splitlines()
+    head = next(i for i, x in enumerate(lines) if not x.startswith("#"))
+    path = folder / "ev3-gap.csv"
+    path.write_text("\n".join(lines[: head + 75] + lines[head + 78 :]) + "\n")
+    log = read_run_log(path)
+    r = check(log.t, log.u, log.omega, ts=float(log.metadata["ts"]), cpr=log.declared_cpr)
+    return log, r

@@ -29,7 +29,7 @@ from minseg_tui.lab.views.check_says import (
 )
 from minseg_tui.lab.views.check_text import text
 from minseg_tui.model.check import CheckResult, check
-from tests.model.realcheck import LOGS, PROBES, REAL, analyze, logs, on
+from tests.model.realcheck import LOGS, PROBES, REAL, analyze, ev3_gap, logs, on
 
 pytestmark = pytest.mark.shared_data
 
@@ -534,12 +534,7 @@ def test_a_cause_just_over_the_bar_is_said_to_be_uncertain(tmp_path):
     # REAL37's 'gap' variant) it names a cap at 25.3 %, and with rows 73-75 dropped none again:
     # the share moves by points with a few rows, so a cause named 0.3 points over the bar is a
     # toss-up, and the text says so (it said the cause as sure as any)
-    lines = (REAL / "ev3-large-duty100" / "step.csv").read_text().splitlines()
-    head = next(i for i, x in enumerate(lines) if not x.startswith("#"))
-    path = tmp_path / "ev3-gap.csv"
-    path.write_text("\n".join(lines[: head + 75] + lines[head + 78 :]) + "\n")
-    log = read_run_log(path)
-    r = check(log.t, log.u, log.omega, ts=float(log.metadata["ts"]), cpr=log.declared_cpr)
+    log, r = ev3_gap(tmp_path)
     assert r.finding.cause == "current_limit"
     assert 0.25 <= r.finding.evidence.reduction < 0.26
     said = evidence(r.finding)
