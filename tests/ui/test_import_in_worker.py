@@ -49,6 +49,18 @@ class HeldRead:
         return read_run_log(*args, **kwargs)
 
 
+async def importing(pilot, log: Path) -> TextBox:
+    """Ask the lab screen (the model check) to import ``log``, as typed into its path box;
+    the box."""
+    app = pilot.app
+    box = app.screen.query_one("#import-path", TextBox)
+    box.focus()
+    await settle(pilot, lambda: app.focused is box)
+    box.value = str(log)
+    await pilot.press("enter")
+    return box
+
+
 async def test_a_log_is_read_in_a_worker_and_keys_land_meanwhile(quiet, tmp_path, monkeypatch):
     log = tmp_path / "elsewhere.csv"
     held = HeldRead(monkeypatch, log)
@@ -60,11 +72,7 @@ async def test_a_log_is_read_in_a_worker_and_keys_land_meanwhile(quiet, tmp_path
         # a log as another program writes it: a BOM, \r\n, a comment, full precision
         body = recorded.decode("utf-8").replace("\n", "\r\n")
         log.write_bytes(b"\xef\xbb\xbf# written elsewhere\r\n" + body.encode("utf-8"))
-        box = app.screen.query_one("#import-path", TextBox)
-        box.focus()
-        await settle(pilot, lambda: app.focused is box)
-        box.value = str(log)
-        await pilot.press("enter")
+        box = await importing(pilot, log)
         assert await asyncio.to_thread(held.reading.wait, HOLD_GUARD_S)
         msg = app.screen.query_one("#import-msg", Prose)
         # while the log is being read: the box says so, and keys land
@@ -108,11 +116,7 @@ async def test_a_copy_made_after_the_app_stopped_is_not_left_in_runs(quiet, tmp_
         with app.session as s:
             log.write_bytes(s.run_path(s.response_run().name).read_bytes())
             folder = s.folder
-        box = app.screen.query_one("#import-path", TextBox)
-        box.focus()
-        await settle(pilot, lambda: app.focused is box)
-        box.value = str(log)
-        await pilot.press("enter")
+        await importing(pilot, log)
         assert await asyncio.to_thread(held.reading.wait, HOLD_GUARD_S)
     held.let_go.set()  # the app has stopped: the worker reads and copies now
     await asyncio.get_running_loop().shutdown_default_executor()  # its thread is done

@@ -13,9 +13,8 @@ import threading
 import pytest
 
 from minseg_tui.ui.screens.help import HelpScreen
-from minseg_tui.ui.widgets.textbox import TextBox
 from tests.ui.helpers import heard_notifications, settle, start_with_a_run
-from tests.ui.test_import_in_worker import HOLD_GUARD_S, HeldRead
+from tests.ui.test_import_in_worker import HOLD_GUARD_S, HeldRead, importing
 
 
 class Handed:
@@ -42,16 +41,6 @@ class Handed:
         app.call_from_thread = handed
 
 
-async def _importing(pilot, log) -> None:
-    """Ask the lab screen (the model check) to import ``log``."""
-    app = pilot.app
-    box = app.screen.query_one("#import-path", TextBox)
-    box.focus()
-    await settle(pilot, lambda: app.focused is box)
-    box.value = str(log)
-    await pilot.press("enter")
-
-
 @pytest.mark.parametrize("when", ["reading", "handing over"])
 @pytest.mark.parametrize("what", ["a log", "a refused log"])
 async def test_a_lab_screen_closed_mid_import(quiet, tmp_path, monkeypatch, when, what):
@@ -66,7 +55,7 @@ async def test_a_lab_screen_closed_mid_import(quiet, tmp_path, monkeypatch, when
             recorded = s.run_path(s.response_run().name).read_bytes()
             folder = s.folder
         log.write_bytes(recorded if what == "a log" else b"t,u,omega\n0,0,x\n")
-        await _importing(pilot, log)
+        await importing(pilot, log)
         assert await asyncio.to_thread(held.reading.wait, HOLD_GUARD_S)
         if when == "handing over":
             held.let_go.set()
@@ -95,7 +84,7 @@ async def test_an_import_done_under_help_is_taken(quiet, tmp_path, monkeypatch):
         await start_with_a_run(pilot, "model_check")
         with app.session as s:
             log.write_bytes(s.run_path(s.response_run().name).read_bytes())
-        await _importing(pilot, log)
+        await importing(pilot, log)
         assert await asyncio.to_thread(held.reading.wait, HOLD_GUARD_S)
         await pilot.press("f1")
         await settle(pilot, lambda: isinstance(app.screen, HelpScreen))
