@@ -1075,6 +1075,35 @@ class EdgeTrain:
     res: np.ndarray
     rng: np.random.Generator
 
+    def late(self, res: np.ndarray | None = None, *delay: float) -> list:
+        """model.check's late steps found in residual ``res`` (default :attr:`res`), against
+        a model with the dead time ``delay`` (s) when given."""
+        from minseg_tui.model.check import anomalies as an
+
+        res = self.res if res is None else res
+        keep = np.ones(self.t.size, bool)
+        return an.late_steps(
+            self.t,
+            self.u,
+            res,
+            self.d_shift,
+            self.shift,
+            self.ts,
+            self.T,
+            self.pred,
+            0.0,
+            keep,
+            *delay,
+        )
+
+    def unshiftable(self, rows: np.ndarray, rms: float) -> np.ndarray:
+        """A miss of ``rms`` rad/s on ``rows`` that no shift of the edges explains (a draw
+        of :attr:`rng` orthogonal to :attr:`d_shift` there)."""
+        miss = self.rng.normal(0.0, 1.0, rows.size)
+        d = self.d_shift[rows]
+        miss -= d * float(miss @ d) / float(d @ d)
+        return rms * miss / np.sqrt(np.mean(miss**2))
+
 
 def _edge_train(seed: int, scatter: float) -> EdgeTrain:
     K, n = 10.0, 12 * 40 + 20
@@ -1114,14 +1143,10 @@ def test_an_edge_out_of_line_with_the_scatter_of_every_edge_is_no_late_step(scat
     # other edges' scatter (model.synth's late steps: 5.6-29 robust sigmas of it); here
     # the same edge 4 ms out of line among edges that scatter by 0.3 ms (reported) and by
     # 1.5 ms (the model's miss, not reported)
-    from minseg_tui.model.check import anomalies as an
-
     e = _edge_train(11, scatter)
-    t, u, edges, pred, d_shift, res = e.t, e.u, e.edges, e.pred, e.d_shift, e.res
-    ts, T, shift, n = EdgeTrain.ts, EdgeTrain.T, EdgeTrain.shift, t.size
-    found = an.late_steps(t, u, res, d_shift, shift, ts, T, pred, 0.0, np.ones(n, bool))
+    found = e.late()
     if scatter < 0.001:
-        assert [a.row for a in found] == [int(edges[6])]
+        assert [a.row for a in found] == [int(e.edges[6])]
     else:
         assert found == []
 
@@ -1136,18 +1161,11 @@ def test_a_miss_a_shift_only_trims_is_no_late_step(miss):
     # late leaves the model right but for the timing (model.synth's late steps: at most
     # 2.1 times). Here an edge 4 ms late, with (not reported) and without (reported) a
     # miss of 0.5 rad/s rms that no shift explains (orthogonal to it) on its rows
-    from minseg_tui.model.check import anomalies as an
-
     e = _edge_train(12, 0.0003)
-    t, u, edges, pred, d_shift, res, rng = e.t, e.u, e.edges, e.pred, e.d_shift, e.res, e.rng
-    ts, T, shift, n = EdgeTrain.ts, EdgeTrain.T, EdgeTrain.shift, t.size
-    rows = np.arange(edges[6], edges[6] + 15)
-    other = rng.normal(0.0, 1.0, rows.size)
-    d = d_shift[rows]
-    other -= d * float(other @ d) / float(d @ d)  # no shift explains it
-    res[rows] += miss * other / np.sqrt(np.mean(other**2))
-    found = an.late_steps(t, u, res, d_shift, shift, ts, T, pred, 0.0, np.ones(n, bool))
-    assert [a.row for a in found] == ([] if miss else [int(edges[6])])
+    rows = np.arange(e.edges[6], e.edges[6] + 15)
+    e.res[rows] += e.unshiftable(rows, miss)
+    found = e.late()
+    assert [a.row for a in found] == ([] if miss else [int(e.edges[6])])
 
 
 @pytest.mark.parametrize("delay", [0.0, 0.005])
@@ -1159,17 +1177,14 @@ def test_an_edge_that_looks_early_is_no_late_step_unless_the_model_has_a_delay(d
     # and the lag every edge has is what the median takes away. Only against a model with a
     # dead time can a step on time look early (by up to that delay). Here edge 6's residual
     # is that of a step 4 ms late, mirrored: 4 ms early
-    from minseg_tui.model.check import anomalies as an
-
     e = _edge_train(11, 0.0003)
-    t, u, edges, pred, d_shift, res = e.t, e.u, e.edges, e.pred, e.d_shift, e.res.copy()
-    ts, T, shift, n = EdgeTrain.ts, EdgeTrain.T, EdgeTrain.shift, t.size
-    late = an.late_steps(t, u, res, d_shift, shift, ts, T, pred, 0.0, np.ones(n, bool))
+    edges, res = e.edges, e.res.copy()
+    late = e.late(res)
     assert [a.row for a in late] == [int(edges[6])] and late[0].size > 3.0  # the premise
     rows = np.arange(edges[6], edges[7])
     res[rows] = -res[rows]
     more = (delay,) if delay else ()  # the model's dead time, s
-    found = an.late_steps(t, u, res, d_shift, shift, ts, T, pred, 0.0, np.ones(n, bool), *more)
+    found = e.late(res, *more)
     if delay:
         assert [a.row for a in found] == [int(edges[6])] and found[0].size < -3.0
     else:
@@ -1186,18 +1201,12 @@ def test_a_shift_that_takes_a_third_of_a_miss_away_is_no_late_step(other):
     # late (about 0.55 rad/s rms over its rows) and every edge has a miss no shift explains,
     # 0.4 rad/s rms, edge 6 ``other``: 0.45 (the shift takes 65 % away: reported) or 0.9 (31 %,
     # its shifted rows within 2.3 times the other edges' miss: not)
-    from minseg_tui.model.check import anomalies as an
-
     e = _edge_train(12, 0.0003)
-    t, u, edges, pred, d_shift, res, rng = e.t, e.u, e.edges, e.pred, e.d_shift, e.res, e.rng
-    ts, T, shift, n = EdgeTrain.ts, EdgeTrain.T, EdgeTrain.shift, t.size
+    edges = e.edges
     for k, edge in enumerate(edges.tolist()):
         rows = np.arange(edge, edge + 15)
-        miss = rng.normal(0.0, 1.0, rows.size)
-        d = d_shift[rows]
-        miss -= d * float(miss @ d) / float(d @ d)  # no shift explains it
-        res[rows] += (other if k == 6 else 0.4) * miss / np.sqrt(np.mean(miss**2))
-    found = an.late_steps(t, u, res, d_shift, shift, ts, T, pred, 0.0, np.ones(n, bool))
+        e.res[rows] += e.unshiftable(rows, other if k == 6 else 0.4)
+    found = e.late()
     assert [a.row for a in found] == ([int(edges[6])] if other < 0.6 else [])
 
 
@@ -1209,14 +1218,9 @@ def test_a_shift_of_a_miss_within_the_noise_is_no_late_step(noise):
     # (a speed from timed edges lags as the wheel slows). model.synth's true late steps miss by
     # 4.3-34 times it. Here edge 6 acts 4 ms late under noise of 0.02 rad/s (reported) and
     # 0.25 rad/s (its rows miss by under 3 times the noise: not)
-    from minseg_tui.model.check import anomalies as an
-
     e = _edge_train(13, 0.0003)
-    t, u, edges, pred, d_shift = e.t, e.u, e.edges, e.pred, e.d_shift
-    ts, T, shift, n = EdgeTrain.ts, EdgeTrain.T, EdgeTrain.shift, t.size
-    res = e.res + e.rng.normal(0.0, noise, n)
-    found = an.late_steps(t, u, res, d_shift, shift, ts, T, pred, 0.0, np.ones(n, bool))
-    assert [a.row for a in found] == ([int(edges[6])] if noise < 0.1 else [])
+    found = e.late(e.res + e.rng.normal(0.0, noise, e.t.size))
+    assert [a.row for a in found] == ([int(e.edges[6])] if noise < 0.1 else [])
 
 
 def test_a_hands_fence_is_run_on_to_the_next_step_not_across_it():
